@@ -1,0 +1,14 @@
+//! # exactcheck-core
+//!
+//! The mathematics of exactcheck, written once and generic over the scalar: the scalar ladder
+//! ([`scalar`]), vectors ([`vector`]), the Bernstein/Bezier toolkit ([`bernstein`], [`bezier`])
+//! and the constructions of the source papers. This crate knows no number type beyond the
+//! primitive `f64` instantiation of the ladder; exact and symbolic scalars live in
+//! `exactcheck-exact`, fast float kernels in `exactcheck-float`.
+#![warn(missing_docs)]
+
+pub mod scalar;
+pub mod vector;
+
+pub use scalar::{binomial, Field, OrderedField, Ring, Sign, Sqrt, ZeroDivisor};
+pub use vector::{Hom4, Vec3};

@@ -1,0 +1,10 @@
+//! # exactcheck-exact
+//!
+//! Exact scalars for exactcheck and the procedures built on them: [`PlainRational`], the
+//! unoptimised num-rational baseline; the fast exact rational field; and (later) square-root
+//! fields, polynomials, finite fields and the proof engines.
+#![warn(missing_docs)]
+
+pub mod plain;
+
+pub use plain::PlainRational;

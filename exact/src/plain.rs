@@ -1,0 +1,128 @@
+//! `PlainRational`: num-rational's `BigRational` on the scalar ladder, unchanged.
+//!
+//! The orphan rule forbids implementing `exactcheck-core`'s traits for `BigRational` itself, so
+//! this is a transparent newtype. It is the baseline the fast [`crate::Rational`] is measured and
+//! cross-checked against: every operation is num-rational's own (a full gcd normalisation after
+//! each addition and multiplication).
+
+use exactcheck_core::{Field, OrderedField, Ring, ZeroDivisor};
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::{One, Signed, Zero};
+use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
+
+/// num-rational's `BigRational` as a scalar of the ladder (the unoptimised baseline).
+#[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Default)]
+pub struct PlainRational(pub BigRational);
+
+impl From<BigRational> for PlainRational {
+    fn from(q: BigRational) -> Self {
+        PlainRational(q)
+    }
+}
+
+impl From<PlainRational> for BigRational {
+    fn from(q: PlainRational) -> Self {
+        q.0
+    }
+}
+
+impl std::fmt::Display for PlainRational {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        std::fmt::Display::fmt(&self.0, f)
+    }
+}
+
+macro_rules! plain_binop {
+    ($tr:ident, $m:ident, $atr:ident, $am:ident) => {
+        impl $tr for PlainRational {
+            type Output = PlainRational;
+            fn $m(self, rhs: PlainRational) -> PlainRational {
+                PlainRational(self.0.$m(rhs.0))
+            }
+        }
+        impl<'a> $tr<&'a PlainRational> for PlainRational {
+            type Output = PlainRational;
+            fn $m(self, rhs: &'a PlainRational) -> PlainRational {
+                PlainRational(self.0.$m(&rhs.0))
+            }
+        }
+        impl<'a> $tr<&'a PlainRational> for &'a PlainRational {
+            type Output = PlainRational;
+            fn $m(self, rhs: &'a PlainRational) -> PlainRational {
+                PlainRational((&self.0).$m(&rhs.0))
+            }
+        }
+        impl $atr for PlainRational {
+            fn $am(&mut self, rhs: PlainRational) {
+                self.0.$am(rhs.0)
+            }
+        }
+        impl<'a> $atr<&'a PlainRational> for PlainRational {
+            fn $am(&mut self, rhs: &'a PlainRational) {
+                self.0.$am(&rhs.0)
+            }
+        }
+    };
+}
+
+plain_binop!(Add, add, AddAssign, add_assign);
+plain_binop!(Sub, sub, SubAssign, sub_assign);
+plain_binop!(Mul, mul, MulAssign, mul_assign);
+plain_binop!(Div, div, DivAssign, div_assign);
+
+impl Neg for PlainRational {
+    type Output = PlainRational;
+    fn neg(self) -> PlainRational {
+        PlainRational(-self.0)
+    }
+}
+
+impl Ring for PlainRational {
+    fn zero() -> Self {
+        PlainRational(BigRational::zero())
+    }
+    fn one() -> Self {
+        PlainRational(BigRational::one())
+    }
+    fn from_i64(n: i64) -> Self {
+        PlainRational(BigRational::from_integer(BigInt::from(n)))
+    }
+    fn is_zero(&self) -> bool {
+        self.0.is_zero()
+    }
+    fn add_ref(&self, rhs: &Self) -> Self {
+        PlainRational(&self.0 + &rhs.0)
+    }
+    fn sub_ref(&self, rhs: &Self) -> Self {
+        PlainRational(&self.0 - &rhs.0)
+    }
+    fn mul_ref(&self, rhs: &Self) -> Self {
+        PlainRational(&self.0 * &rhs.0)
+    }
+    fn neg_ref(&self) -> Self {
+        PlainRational(-&self.0)
+    }
+}
+
+impl Field for PlainRational {
+    fn inv(&self) -> Result<Self, ZeroDivisor> {
+        if self.0.is_zero() {
+            Err(ZeroDivisor)
+        } else {
+            Ok(PlainRational(self.0.recip()))
+        }
+    }
+}
+
+impl OrderedField for PlainRational {
+    fn sign(&self) -> exactcheck_core::Sign {
+        if self.0.is_positive() {
+            exactcheck_core::Sign::Positive
+        } else if self.0.is_negative() {
+            exactcheck_core::Sign::Negative
+        } else {
+            exactcheck_core::Sign::Zero
+        }
+    }
+}
