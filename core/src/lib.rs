@@ -7,6 +7,8 @@
 //! `exactcheck-exact`, fast float kernels in `exactcheck-float`.
 #![warn(missing_docs)]
 
+pub mod bernstein;
+pub mod bezier;
 pub mod scalar;
 pub mod vector;
 

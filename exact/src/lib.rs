@@ -5,6 +5,7 @@
 //! fields, polynomials, finite fields and the proof engines.
 #![warn(missing_docs)]
 
+pub mod gcd;
 pub mod plain;
 
 pub use plain::PlainRational;

@@ -1,0 +1,1 @@
+//! bernstein (being written)

@@ -1,0 +1,1 @@
+//! bezier (being written)

@@ -1,0 +1,1 @@
+//! Greatest common divisors for the exact rational type (being written).
