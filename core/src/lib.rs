@@ -9,8 +9,11 @@
 
 pub mod bernstein;
 pub mod bezier;
+pub mod cylinder_sphere;
 pub mod scalar;
 pub mod vector;
 
+pub use bernstein::{Bernstein, ShapeError};
+pub use bezier::{BezierCurve, RationalBezierCurve, TensorPatch};
 pub use scalar::{binomial, Field, OrderedField, Ring, Sign, Sqrt, ZeroDivisor};
 pub use vector::{Hom4, Vec3};

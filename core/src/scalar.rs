@@ -147,9 +147,10 @@ pub enum Sign {
     Positive,
 }
 
-impl Sign {
+impl Mul for Sign {
+    type Output = Sign;
     /// The sign of a product of elements with these signs.
-    pub fn mul(self, other: Sign) -> Sign {
+    fn mul(self, other: Sign) -> Sign {
         match (self, other) {
             (Sign::Zero, _) | (_, Sign::Zero) => Sign::Zero,
             (a, b) if a == b => Sign::Positive,
@@ -288,9 +289,9 @@ mod tests {
 
     #[test]
     fn sign_product() {
-        assert_eq!(Sign::Negative.mul(Sign::Negative), Sign::Positive);
-        assert_eq!(Sign::Zero.mul(Sign::Negative), Sign::Zero);
-        assert_eq!(Sign::Positive.mul(Sign::Negative), Sign::Negative);
+        assert_eq!(Sign::Negative * Sign::Negative, Sign::Positive);
+        assert_eq!(Sign::Zero * Sign::Negative, Sign::Zero);
+        assert_eq!(Sign::Positive * Sign::Negative, Sign::Negative);
     }
 
     #[test]

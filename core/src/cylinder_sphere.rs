@@ -1,0 +1,115 @@
+//! Cylinder / sphere intersection (Spaeth 2003, seeds 000 and 001; SPEC §2).
+//!
+//! A cylinder of radius `r` about the z axis through `(a, b, 0)` is rotated by `gamma` in the y-z
+//! plane and by `beta` in the x-z plane; its points are `R_y(beta) R_x(gamma) (a + r cos t,
+//! b + r sin t, u)` (4). Substituting into the sphere `|x - (d,e,f)|^2 = R^2` (6) gives the monic
+//! quadratic `u^2 + 2 A(t) u + B(t) = 0` (8); real points exist where the discriminant
+//! `A(t)^2 - B(t)` is non-negative (11).
+//!
+//! Angles enter as points `(cos, sin)` of the unit circle, never as radians, so the formulas are
+//! polynomial and run exactly over any [`Ring`]; [`unit_circle_point`] gives the rational points.
+//!
+//! The coefficients below are the ones obtained by multiplying out the rotation product, with
+//! `u` collected: this is *not* the printed (9), whose last term has the opposite sign (the
+//! catalogue's `spaeth.eq9` claim decides that).
+
+use crate::scalar::{Field, Ring, ZeroDivisor};
+use crate::vector::Vec3;
+
+/// A point `(cos, sin)` of the unit circle standing for an angle.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Angle<T> {
+    /// The cosine.
+    pub cos: T,
+    /// The sine.
+    pub sin: T,
+}
+
+/// The rational point `((1 - tau^2)/(1 + tau^2), 2 tau/(1 + tau^2))` of the unit circle.
+///
+/// # Errors
+/// [`ZeroDivisor`] when `1 + tau^2 = 0` (impossible over an ordered field).
+pub fn unit_circle_point<T: Field>(tau: &T) -> Result<Angle<T>, ZeroDivisor> {
+    let t2 = tau.square();
+    let inv = (T::one() + &t2).inv()?;
+    Ok(Angle {
+        cos: (T::one() - &t2) * &inv,
+        sin: tau.scale_i64(2) * &inv,
+    })
+}
+
+/// A cylinder (axis point `(a, b)` before rotation, radius `r`, rotations `beta`, `gamma`) and a
+/// sphere (centre, radius), SPEC §2.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CylinderSphere<T> {
+    /// x of the axis point before rotation.
+    pub a: T,
+    /// y of the axis point before rotation.
+    pub b: T,
+    /// Cylinder radius.
+    pub r: T,
+    /// Rotation in the x-z plane.
+    pub beta: Angle<T>,
+    /// Rotation in the y-z plane.
+    pub gamma: Angle<T>,
+    /// Sphere centre `(d, e, f)`.
+    pub center: Vec3<T>,
+    /// Sphere radius.
+    pub radius: T,
+}
+
+impl<T: Ring> CylinderSphere<T> {
+    /// `(A(t), B(t))` of `u^2 + 2 A u + B = 0` at the circle point `(cos t, sin t)`.
+    pub fn coefficients_at(&self, cos_t: &T, sin_t: &T) -> (T, T) {
+        let (cb, sb) = (&self.beta.cos, &self.beta.sin);
+        let (cg, sg) = (&self.gamma.cos, &self.gamma.sin);
+        let x = self.a.add_ref(&self.r.mul_ref(cos_t));
+        let y = self.b.add_ref(&self.r.mul_ref(sin_t));
+        let sgsb = sg.mul_ref(sb);
+        let cgsb = cg.mul_ref(sb);
+        let u = cb.mul_ref(&x) - &self.center.x;
+        let v = cg.mul_ref(&y) - sgsb.mul_ref(&x) - &self.center.y;
+        let w = sg.mul_ref(&y) + cgsb.mul_ref(&x) + &self.center.z;
+        let a = sb.mul_ref(&u) + sg.mul_ref(cb).mul_ref(&v) - cg.mul_ref(cb).mul_ref(&w);
+        let b = u.square() + v.square() + w.square() - self.radius.square();
+        (a, b)
+    }
+
+    /// The discriminant `A(t)^2 - B(t)` at `(cos t, sin t)`: real points exist where it is `>= 0`.
+    pub fn discriminant_at(&self, cos_t: &T, sin_t: &T) -> T {
+        let (a, b) = self.coefficients_at(cos_t, sin_t);
+        a.square() - b
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn axis_aligned_cylinder_through_sphere_centre() {
+        // beta = gamma = 0, cylinder x^2 + y^2 = 25, sphere centre (1,0,0), R = 7 (Example 1):
+        // A = 0 and B = (5 cos t - 1)^2 + 25 sin^2 t - 49 = -23 - 10 cos t.
+        let cs = CylinderSphere {
+            a: 0.0,
+            b: 0.0,
+            r: 5.0,
+            beta: Angle { cos: 1.0, sin: 0.0 },
+            gamma: Angle { cos: 1.0, sin: 0.0 },
+            center: Vec3::new(1.0, 0.0, 0.0),
+            radius: 7.0,
+        };
+        for (c, s) in [(1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.6, 0.8)] {
+            let (a, b) = cs.coefficients_at(&c, &s);
+            assert_eq!(a, 0.0);
+            assert_eq!(b, -23.0 - 10.0 * c);
+        }
+    }
+
+    #[test]
+    fn rational_circle_points() {
+        let p = unit_circle_point(&0.5f64).unwrap();
+        assert!((p.cos - 0.6).abs() < 1e-15 && (p.sin - 0.8).abs() < 1e-15);
+        assert!(unit_circle_point(&0.0f64).is_ok());
+    }
+}

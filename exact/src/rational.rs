@@ -1,0 +1,820 @@
+//! `Rational`: the fast exact rational field.
+//!
+//! # Representation
+//! A rational is kept in canonical form, always: denominator positive, numerator and denominator
+//! coprime, zero as `0/1`. Two tiers hold it:
+//!
+//! * **inline** — numerator and denominator as `i128` (both of magnitude below `2^127`), no heap;
+//! * **big** — numerator `BigInt`, denominator `BigUint` (num-bigint), used only when a value does
+//!   not fit inline. Results that fit inline again are moved back ("demoted"), so the tier is
+//!   itself canonical and `==` compares representations.
+//!
+//! # Algorithms
+//! Addition and multiplication follow Henrici and Knuth (TAOCP vol. 2, 4.5.1), as GMP's `mpq`
+//! does: instead of multiplying out and reducing by one big gcd, they take gcds of the
+//! denominators (addition) or of crossed numerator/denominator pairs (multiplication) and divide
+//! them out first, so every gcd is taken of operands at most as large as the inputs, the common
+//! cases (an integer operand, equal denominators, coprime denominators) take no gcd at all, and
+//! the result needs no final reduction. The gcds themselves come from [`crate::gcd`]: word-size
+//! binary gcds inline, and for big operands a division step then Lehmer's algorithm, never
+//! num-integer's bit-by-bit binary gcd.
+//!
+//! Everything converts to and from num-rational's `BigRational` ([`Rational::to_big_rational`],
+//! `From<BigRational>`), which stays the public big-number base.
+
+use crate::gcd::{gcd_biguint, gcd_u128};
+use exactcheck_core::{Field, OrderedField, Ring, Sign, ZeroDivisor};
+use num_bigint::{BigInt, BigUint, Sign as BigSign};
+use num_rational::BigRational;
+use num_traits::{One, Signed, ToPrimitive, Zero};
+use std::cmp::Ordering;
+use std::fmt;
+use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
+use std::str::FromStr;
+
+/// An exact rational number, always in canonical form (see the module documentation).
+#[derive(Clone, PartialEq, Eq, Hash)]
+pub struct Rational(Repr);
+
+#[derive(Clone, PartialEq, Eq, Hash)]
+enum Repr {
+    /// `num / den` with `0 < den <= i128::MAX`, `|num| <= i128::MAX`, `gcd(|num|, den) = 1`.
+    Small(i128, i128),
+    /// `num / den`, coprime, `den > 0`, and not representable as `Small`.
+    Big(Box<BigParts>),
+}
+
+#[derive(Clone, PartialEq, Eq, Hash)]
+struct BigParts {
+    num: BigInt,
+    den: BigUint,
+}
+
+/// Whether `|x|` is small enough for the inline tier (`i128::MIN` is excluded so that negation
+/// never overflows).
+#[inline]
+fn fits(x: i128) -> bool {
+    x != i128::MIN
+}
+
+impl Rational {
+    /// Zero.
+    pub const ZERO: Rational = Rational(Repr::Small(0, 1));
+    /// One.
+    pub const ONE: Rational = Rational(Repr::Small(1, 1));
+
+    /// The integer `n`.
+    pub fn from_integer(n: i64) -> Rational {
+        Rational(Repr::Small(n as i128, 1))
+    }
+
+    /// `num / den` reduced to canonical form, or [`ZeroDivisor`] when `den == 0`.
+    pub fn new(num: i64, den: i64) -> Result<Rational, ZeroDivisor> {
+        if den == 0 {
+            return Err(ZeroDivisor);
+        }
+        Ok(Self::reduce_small(num as i128, den as i128))
+    }
+
+    /// `num / den` for `i128` parts, canonicalised.
+    ///
+    /// # Errors
+    /// [`ZeroDivisor`] when `den == 0`.
+    pub fn from_i128_ratio(num: i128, den: i128) -> Result<Rational, ZeroDivisor> {
+        if den == 0 {
+            return Err(ZeroDivisor);
+        }
+        if fits(num) && fits(den) {
+            Ok(Self::reduce_small(num, den))
+        } else {
+            Ok(Self::from_big_parts(BigInt::from(num), BigInt::from(den)))
+        }
+    }
+
+    /// Reduces `num / den` (`den != 0`, neither `i128::MIN`) to canonical form.
+    fn reduce_small(num: i128, den: i128) -> Rational {
+        debug_assert!(den != 0 && fits(num) && fits(den));
+        let (num, den) = if den < 0 { (-num, -den) } else { (num, den) };
+        if num == 0 {
+            return Rational::ZERO;
+        }
+        let g = gcd_u128(num.unsigned_abs(), den as u128) as i128;
+        Rational(Repr::Small(num / g, den / g))
+    }
+
+    /// Canonical form of `num / den` from big parts with `den != 0` (reduces by their gcd).
+    fn from_big_parts(num: BigInt, den: BigInt) -> Rational {
+        debug_assert!(!den.is_zero());
+        let (sign, den_mag) = match den.sign() {
+            BigSign::Minus => (-1, den.into_parts().1),
+            _ => (1, den.into_parts().1),
+        };
+        let num = if sign < 0 { -num } else { num };
+        if num.is_zero() {
+            return Rational::ZERO;
+        }
+        let g = gcd_biguint(num.magnitude(), &den_mag);
+        if g.is_one() {
+            Self::from_coprime(num, den_mag)
+        } else {
+            let num = num / BigInt::from_biguint(BigSign::Plus, g.clone());
+            Self::from_coprime(num, den_mag / g)
+        }
+    }
+
+    /// Wraps coprime parts (`den > 0`), choosing the inline tier when they fit.
+    fn from_coprime(num: BigInt, den: BigUint) -> Rational {
+        debug_assert!(!den.is_zero());
+        if den.bits() <= 127 && num.magnitude().bits() <= 127 {
+            // Both fit: |x| < 2^127, so the conversions cannot fail.
+            let n = num.to_i128().unwrap_or_default();
+            let d = den.to_i128().unwrap_or(1);
+            Rational(Repr::Small(n, d))
+        } else {
+            Rational(Repr::Big(Box::new(BigParts { num, den })))
+        }
+    }
+
+    /// Whether the value is held inline (no heap); exposed for tests and benchmarks.
+    pub fn is_inline(&self) -> bool {
+        matches!(self.0, Repr::Small(..))
+    }
+
+    /// The numerator (sign carrier) as a `BigInt`.
+    pub fn numer(&self) -> BigInt {
+        match &self.0 {
+            Repr::Small(n, _) => BigInt::from(*n),
+            Repr::Big(b) => b.num.clone(),
+        }
+    }
+
+    /// The (positive) denominator as a `BigInt`.
+    pub fn denom(&self) -> BigInt {
+        match &self.0 {
+            Repr::Small(_, d) => BigInt::from(*d),
+            Repr::Big(b) => BigInt::from_biguint(BigSign::Plus, b.den.clone()),
+        }
+    }
+
+    /// Whether the value is an integer (denominator 1).
+    pub fn is_integer(&self) -> bool {
+        match &self.0 {
+            Repr::Small(_, d) => *d == 1,
+            Repr::Big(b) => b.den.is_one(),
+        }
+    }
+
+    /// The value as num-rational's `BigRational`.
+    pub fn to_big_rational(&self) -> BigRational {
+        BigRational::new_raw(self.numer(), self.denom())
+    }
+
+    /// Whether the internal representation is canonical (coprime parts, positive denominator,
+    /// inline exactly when it fits). Always true for values built through the public API; used
+    /// by the property tests after every operation.
+    pub fn is_canonical(&self) -> bool {
+        match &self.0 {
+            Repr::Small(n, d) => {
+                *d > 0
+                    && fits(*n)
+                    && fits(*d)
+                    && (if *n == 0 { *d == 1 } else { gcd_u128(n.unsigned_abs(), *d as u128) == 1 })
+            }
+            Repr::Big(b) => {
+                !b.den.is_zero()
+                    && !b.num.is_zero()
+                    && (b.den.bits() > 127 || b.num.magnitude().bits() > 127)
+                    && gcd_biguint(b.num.magnitude(), &b.den).is_one()
+            }
+        }
+    }
+
+    /// The numerator and denominator as big integers, borrowed where possible.
+    fn big_parts(&self) -> (std::borrow::Cow<'_, BigInt>, std::borrow::Cow<'_, BigUint>) {
+        use std::borrow::Cow;
+        match &self.0 {
+            Repr::Small(n, d) => (Cow::Owned(BigInt::from(*n)), Cow::Owned(BigUint::from(*d as u128))),
+            Repr::Big(b) => (Cow::Borrowed(&b.num), Cow::Borrowed(&b.den)),
+        }
+    }
+
+    /// The sign.
+    pub fn signum(&self) -> Sign {
+        let positive = match &self.0 {
+            Repr::Small(n, _) => match n.cmp(&0) {
+                Ordering::Equal => return Sign::Zero,
+                o => o == Ordering::Greater,
+            },
+            Repr::Big(b) => b.num.is_positive(),
+        };
+        if positive {
+            Sign::Positive
+        } else {
+            Sign::Negative
+        }
+    }
+
+    /// `1 / self`, or [`ZeroDivisor`].
+    pub fn recip(&self) -> Result<Rational, ZeroDivisor> {
+        match &self.0 {
+            Repr::Small(0, _) => Err(ZeroDivisor),
+            Repr::Small(n, d) => Ok(if *n < 0 {
+                Rational(Repr::Small(-*d, -*n))
+            } else {
+                Rational(Repr::Small(*d, *n))
+            }),
+            Repr::Big(b) => {
+                let (sign, mag) = (b.num.sign(), b.num.magnitude().clone());
+                let num = BigInt::from_biguint(sign, b.den.clone());
+                Ok(Self::from_coprime(num, mag))
+            }
+        }
+    }
+
+    // ------------------------------------------------------------------ arithmetic kernels
+
+    fn add_impl(&self, rhs: &Rational) -> Rational {
+        if let (Repr::Small(a, b), Repr::Small(c, d)) = (&self.0, &rhs.0) {
+            if let Some(r) = add_small(*a, *b, *c, *d) {
+                return r;
+            }
+        }
+        if self.is_zero_value() {
+            return rhs.clone();
+        }
+        if rhs.is_zero_value() {
+            return self.clone();
+        }
+        let (a, b) = self.big_parts();
+        let (c, d) = rhs.big_parts();
+        add_big(&a, &b, &c, &d)
+    }
+
+    fn mul_impl(&self, rhs: &Rational) -> Rational {
+        if let (Repr::Small(a, b), Repr::Small(c, d)) = (&self.0, &rhs.0) {
+            if let Some(r) = mul_small(*a, *b, *c, *d) {
+                return r;
+            }
+        }
+        if self.is_zero_value() || rhs.is_zero_value() {
+            return Rational::ZERO;
+        }
+        let (a, b) = self.big_parts();
+        let (c, d) = rhs.big_parts();
+        mul_big(&a, &b, &c, &d)
+    }
+
+    fn neg_impl(&self) -> Rational {
+        match &self.0 {
+            Repr::Small(n, d) => Rational(Repr::Small(-*n, *d)),
+            Repr::Big(b) => Rational(Repr::Big(Box::new(BigParts { num: -&b.num, den: b.den.clone() }))),
+        }
+    }
+
+    fn neg_in_place(&mut self) {
+        match &mut self.0 {
+            Repr::Small(n, _) => *n = -*n,
+            Repr::Big(b) => {
+                let num = std::mem::take(&mut b.num);
+                b.num = -num;
+            }
+        }
+    }
+
+    fn is_zero_value(&self) -> bool {
+        matches!(self.0, Repr::Small(0, _))
+    }
+
+    /// `self / rhs`, or [`ZeroDivisor`].
+    pub fn checked_div(&self, rhs: &Rational) -> Result<Rational, ZeroDivisor> {
+        Ok(self.mul_impl(&rhs.recip()?))
+    }
+
+    fn cmp_impl(&self, rhs: &Rational) -> Ordering {
+        let (sa, sb) = (self.signum(), rhs.signum());
+        if sa != sb {
+            return sa.cmp(&sb);
+        }
+        if let (Repr::Small(a, b), Repr::Small(c, d)) = (&self.0, &rhs.0) {
+            if let (Some(l), Some(r)) = (a.checked_mul(*d), c.checked_mul(*b)) {
+                return l.cmp(&r);
+            }
+        }
+        let (a, b) = self.big_parts();
+        let (c, d) = rhs.big_parts();
+        let l = a.as_ref() * BigInt::from_biguint(BigSign::Plus, d.into_owned());
+        let r = c.as_ref() * BigInt::from_biguint(BigSign::Plus, b.into_owned());
+        l.cmp(&r)
+    }
+
+    /// `self^e` for an integer exponent (negative exponents invert).
+    ///
+    /// # Errors
+    /// [`ZeroDivisor`] for `0^e` with `e < 0`.
+    pub fn powi(&self, e: i32) -> Result<Rational, ZeroDivisor> {
+        let p = Ring::pow(self, e.unsigned_abs());
+        if e < 0 {
+            p.recip()
+        } else {
+            Ok(p)
+        }
+    }
+}
+
+/// `a/b + c/d` on the inline tier by Henrici's method; `None` on overflow.
+#[inline]
+fn add_small(a: i128, b: i128, c: i128, d: i128) -> Option<Rational> {
+    if b == 1 && d == 1 {
+        let s = a.checked_add(c)?;
+        return fits(s).then_some(Rational(Repr::Small(s, 1)));
+    }
+    if a == 0 {
+        return Some(Rational(Repr::Small(c, d)));
+    }
+    if c == 0 {
+        return Some(Rational(Repr::Small(a, b)));
+    }
+    if b == d {
+        // Same denominator: one gcd of the sum against it.
+        let s = a.checked_add(c)?;
+        if s == 0 {
+            return Some(Rational::ZERO);
+        }
+        if !fits(s) {
+            return None;
+        }
+        let g = gcd_u128(s.unsigned_abs(), b as u128) as i128;
+        return Some(Rational(Repr::Small(s / g, b / g)));
+    }
+    if d == 1 {
+        // a/b + c = (a + c b)/b, already reduced.
+        let n = c.checked_mul(b)?.checked_add(a)?;
+        return fits(n).then_some(Rational(Repr::Small(n, b)));
+    }
+    if b == 1 {
+        let n = a.checked_mul(d)?.checked_add(c)?;
+        return fits(n).then_some(Rational(Repr::Small(n, d)));
+    }
+    let g = gcd_u128(b as u128, d as u128) as i128;
+    if g == 1 {
+        let n = a.checked_mul(d)?.checked_add(c.checked_mul(b)?)?;
+        let den = b.checked_mul(d)?;
+        if n == 0 {
+            return Some(Rational::ZERO);
+        }
+        return (fits(n) && fits(den)).then_some(Rational(Repr::Small(n, den)));
+    }
+    let (b1, d1) = (b / g, d / g);
+    let t = a.checked_mul(d1)?.checked_add(c.checked_mul(b1)?)?;
+    if t == 0 {
+        return Some(Rational::ZERO);
+    }
+    if !fits(t) {
+        return None;
+    }
+    let g2 = gcd_u128(t.unsigned_abs(), g as u128) as i128;
+    let den = b1.checked_mul(d / g2)?;
+    fits(den).then_some(Rational(Repr::Small(t / g2, den)))
+}
+
+/// `(a/b) (c/d)` on the inline tier by Henrici's method; `None` on overflow.
+#[inline]
+fn mul_small(a: i128, b: i128, c: i128, d: i128) -> Option<Rational> {
+    if a == 0 || c == 0 {
+        return Some(Rational::ZERO);
+    }
+    let g1 = if d == 1 { 1 } else { gcd_u128(a.unsigned_abs(), d as u128) as i128 };
+    let g2 = if b == 1 { 1 } else { gcd_u128(c.unsigned_abs(), b as u128) as i128 };
+    let n = (a / g1).checked_mul(c / g2)?;
+    let den = (b / g2).checked_mul(d / g1)?;
+    (fits(n) && fits(den)).then_some(Rational(Repr::Small(n, den)))
+}
+
+fn to_signed(x: BigUint) -> BigInt {
+    BigInt::from_biguint(BigSign::Plus, x)
+}
+
+/// `a/b + c/d` on big parts by Knuth's method (TAOCP 4.5.1): gcds only of the denominators and of
+/// the new numerator against their (usually small) common factor.
+fn add_big(a: &BigInt, b: &BigUint, c: &BigInt, d: &BigUint) -> Rational {
+    if b == d {
+        let s = a + c;
+        if s.is_zero() {
+            return Rational::ZERO;
+        }
+        let g = gcd_biguint(s.magnitude(), b);
+        return if g.is_one() {
+            Rational::from_coprime(s, b.clone())
+        } else {
+            Rational::from_coprime(s / to_signed(g.clone()), b / g)
+        };
+    }
+    let g = gcd_biguint(b, d);
+    if g.is_one() {
+        let n = a * to_signed(d.clone()) + c * to_signed(b.clone());
+        if n.is_zero() {
+            return Rational::ZERO;
+        }
+        return Rational::from_coprime(n, b * d);
+    }
+    let b1 = b / &g;
+    let d1 = d / &g;
+    let t = a * to_signed(d1) + c * to_signed(b1.clone());
+    if t.is_zero() {
+        return Rational::ZERO;
+    }
+    let g2 = gcd_biguint(t.magnitude(), &g);
+    if g2.is_one() {
+        Rational::from_coprime(t, b1 * d)
+    } else {
+        let den = b1 * (d / &g2);
+        Rational::from_coprime(t / to_signed(g2), den)
+    }
+}
+
+/// `(a/b)(c/d)` on big parts by Henrici's method: cancel `gcd(a, d)` and `gcd(c, b)` first.
+fn mul_big(a: &BigInt, b: &BigUint, c: &BigInt, d: &BigUint) -> Rational {
+    let g1 = gcd_biguint(a.magnitude(), d);
+    let g2 = gcd_biguint(c.magnitude(), b);
+    let (a1, d1) = if g1.is_one() {
+        (a.clone(), d.clone())
+    } else {
+        (a / to_signed(g1.clone()), d / &g1)
+    };
+    let (c1, b1) = if g2.is_one() {
+        (c.clone(), b.clone())
+    } else {
+        (c / to_signed(g2.clone()), b / &g2)
+    };
+    Rational::from_coprime(a1 * c1, b1 * d1)
+}
+
+// ---------------------------------------------------------------------- operator plumbing
+
+macro_rules! forward_binop {
+    ($tr:ident, $m:ident, $atr:ident, $am:ident, |$x:ident, $y:ident| $body:expr) => {
+        impl<'a, 'b> $tr<&'b Rational> for &'a Rational {
+            type Output = Rational;
+            #[inline]
+            fn $m(self, rhs: &'b Rational) -> Rational {
+                let ($x, $y) = (self, rhs);
+                $body
+            }
+        }
+        impl<'b> $tr<&'b Rational> for Rational {
+            type Output = Rational;
+            #[inline]
+            fn $m(self, rhs: &'b Rational) -> Rational {
+                (&self).$m(rhs)
+            }
+        }
+        impl<'a> $tr<Rational> for &'a Rational {
+            type Output = Rational;
+            #[inline]
+            fn $m(self, rhs: Rational) -> Rational {
+                self.$m(&rhs)
+            }
+        }
+        impl $tr<Rational> for Rational {
+            type Output = Rational;
+            #[inline]
+            fn $m(self, rhs: Rational) -> Rational {
+                (&self).$m(&rhs)
+            }
+        }
+        impl<'b> $atr<&'b Rational> for Rational {
+            #[inline]
+            fn $am(&mut self, rhs: &'b Rational) {
+                *self = $tr::$m(&*self, rhs);
+            }
+        }
+        impl $atr<Rational> for Rational {
+            #[inline]
+            fn $am(&mut self, rhs: Rational) {
+                *self = $tr::$m(&*self, &rhs);
+            }
+        }
+    };
+}
+
+forward_binop!(Add, add, AddAssign, add_assign, |x, y| x.add_impl(y));
+forward_binop!(Sub, sub, SubAssign, sub_assign, |x, y| x.add_impl(&y.neg_impl()));
+forward_binop!(Mul, mul, MulAssign, mul_assign, |x, y| x.mul_impl(y));
+forward_binop!(Div, div, DivAssign, div_assign, |x, y| match x.checked_div(y) {
+    Ok(q) => q,
+    Err(_) => panic!("Rational division by zero (use Field::checked_div to handle it)"),
+});
+
+impl Neg for Rational {
+    type Output = Rational;
+    #[inline]
+    fn neg(mut self) -> Rational {
+        self.neg_in_place();
+        self
+    }
+}
+
+impl Neg for &Rational {
+    type Output = Rational;
+    #[inline]
+    fn neg(self) -> Rational {
+        self.neg_impl()
+    }
+}
+
+impl PartialOrd for Rational {
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl Ord for Rational {
+    fn cmp(&self, other: &Self) -> Ordering {
+        self.cmp_impl(other)
+    }
+}
+
+impl Default for Rational {
+    fn default() -> Self {
+        Rational::ZERO
+    }
+}
+
+impl Ring for Rational {
+    #[inline]
+    fn zero() -> Self {
+        Rational::ZERO
+    }
+    #[inline]
+    fn one() -> Self {
+        Rational::ONE
+    }
+    #[inline]
+    fn from_i64(n: i64) -> Self {
+        Rational::from_integer(n)
+    }
+    #[inline]
+    fn is_zero(&self) -> bool {
+        self.is_zero_value()
+    }
+    #[inline]
+    fn is_one(&self) -> bool {
+        matches!(self.0, Repr::Small(1, 1))
+    }
+    #[inline]
+    fn add_ref(&self, rhs: &Self) -> Self {
+        self.add_impl(rhs)
+    }
+    #[inline]
+    fn sub_ref(&self, rhs: &Self) -> Self {
+        self - rhs
+    }
+    #[inline]
+    fn mul_ref(&self, rhs: &Self) -> Self {
+        self.mul_impl(rhs)
+    }
+    #[inline]
+    fn neg_ref(&self) -> Self {
+        self.neg_impl()
+    }
+    fn square(&self) -> Self {
+        // (n/d)^2 is already reduced: no gcd at all.
+        match &self.0 {
+            Repr::Small(n, d) => {
+                if let (Some(nn), Some(dd)) = (n.checked_mul(*n), d.checked_mul(*d)) {
+                    if fits(nn) && fits(dd) {
+                        return Rational(Repr::Small(nn, dd));
+                    }
+                }
+                let (n, d) = (BigInt::from(*n), BigUint::from(*d as u128));
+                Rational::from_coprime(&n * &n, &d * &d)
+            }
+            Repr::Big(b) => Rational::from_coprime(&b.num * &b.num, &b.den * &b.den),
+        }
+    }
+}
+
+impl Field for Rational {
+    fn inv(&self) -> Result<Self, ZeroDivisor> {
+        self.recip()
+    }
+    fn checked_div(&self, rhs: &Self) -> Result<Self, ZeroDivisor> {
+        Rational::checked_div(self, rhs)
+    }
+    fn from_ratio(num: i64, den: i64) -> Result<Self, ZeroDivisor> {
+        Rational::new(num, den)
+    }
+}
+
+impl OrderedField for Rational {
+    fn sign(&self) -> Sign {
+        self.signum()
+    }
+}
+
+// ---------------------------------------------------------------------- conversions
+
+impl From<i64> for Rational {
+    fn from(n: i64) -> Self {
+        Rational::from_integer(n)
+    }
+}
+
+impl From<i32> for Rational {
+    fn from(n: i32) -> Self {
+        Rational::from_integer(n as i64)
+    }
+}
+
+impl From<BigInt> for Rational {
+    fn from(n: BigInt) -> Self {
+        let (sign, mag) = n.into_parts();
+        Rational::from_coprime(BigInt::from_biguint(sign, mag), BigUint::one())
+    }
+}
+
+impl From<&BigRational> for Rational {
+    fn from(q: &BigRational) -> Self {
+        // num-rational keeps its values reduced, but `new_raw` can build others: reduce.
+        Rational::from_big_parts(q.numer().clone(), q.denom().clone())
+    }
+}
+
+impl From<BigRational> for Rational {
+    fn from(q: BigRational) -> Self {
+        let (n, d) = q.into_raw();
+        Rational::from_big_parts(n, d)
+    }
+}
+
+impl From<&Rational> for BigRational {
+    fn from(q: &Rational) -> Self {
+        q.to_big_rational()
+    }
+}
+
+impl From<Rational> for BigRational {
+    fn from(q: Rational) -> Self {
+        q.to_big_rational()
+    }
+}
+
+impl fmt::Display for Rational {
+    /// `n` for integers, `n/d` otherwise (the number syntax of DESIGN.md).
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match &self.0 {
+            Repr::Small(n, 1) => write!(f, "{n}"),
+            Repr::Small(n, d) => write!(f, "{n}/{d}"),
+            Repr::Big(b) if b.den.is_one() => write!(f, "{}", b.num),
+            Repr::Big(b) => write!(f, "{}/{}", b.num, b.den),
+        }
+    }
+}
+
+impl fmt::Debug for Rational {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        fmt::Display::fmt(self, f)
+    }
+}
+
+/// The error of parsing a [`Rational`] from text.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum ParseRationalError {
+    /// The text is not of the form `n`, `n/d` or a decimal `i.f`.
+    #[error("malformed rational number {0:?}: expected an integer, a fraction n/d or a decimal")]
+    Malformed(String),
+    /// The denominator is zero.
+    #[error("division by zero in {0:?}")]
+    ZeroDenominator(String),
+}
+
+impl FromStr for Rational {
+    type Err = ParseRationalError;
+
+    /// Parses `-12`, `3/4`, `-0.125` (a decimal is the exact fraction it denotes), with optional
+    /// surrounding white space.
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        let t = s.trim();
+        let bad = || ParseRationalError::Malformed(s.to_string());
+        let int = |x: &str| -> Result<BigInt, ParseRationalError> {
+            let digits = x.strip_prefix(['-', '+']).unwrap_or(x);
+            if digits.is_empty() || !digits.bytes().all(|c| c.is_ascii_digit()) {
+                return Err(bad());
+            }
+            x.parse::<BigInt>().map_err(|_| bad())
+        };
+        if let Some((n, d)) = t.split_once('/') {
+            let (n, d) = (int(n.trim())?, int(d.trim())?);
+            if d.is_zero() {
+                return Err(ParseRationalError::ZeroDenominator(s.to_string()));
+            }
+            return Ok(Rational::from_big_parts(n, d));
+        }
+        if let Some((i, frac)) = t.split_once('.') {
+            if frac.is_empty() || !frac.bytes().all(|c| c.is_ascii_digit()) {
+                return Err(bad());
+            }
+            let negative = i.starts_with('-');
+            let ipart = if i == "-" || i == "+" || i.is_empty() { BigInt::zero() } else { int(i)? };
+            let scale = BigInt::from(10u32).pow(frac.len() as u32);
+            let f = frac.parse::<BigInt>().map_err(|_| bad())?;
+            let mag = ipart.abs() * &scale + f;
+            let num = if negative { -mag } else { mag };
+            return Ok(Rational::from_big_parts(num, scale));
+        }
+        Ok(Rational::from(int(t)?))
+    }
+}
+
+/// Exact sum of many rationals by pairwise (balanced) summation, which keeps the operands of each
+/// addition of similar size (the big gcds then cost about as much as one at the top level).
+pub fn sum_pairwise(mut values: Vec<Rational>) -> Rational {
+    if values.is_empty() {
+        return Rational::ZERO;
+    }
+    while values.len() > 1 {
+        let mut next = Vec::with_capacity(values.len().div_ceil(2));
+        let mut it = values.into_iter();
+        while let Some(x) = it.next() {
+            match it.next() {
+                Some(y) => next.push(x + &y),
+                None => next.push(x),
+            }
+        }
+        values = next;
+    }
+    values.pop().unwrap_or(Rational::ZERO)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn q(n: i64, d: i64) -> Rational {
+        Rational::new(n, d).unwrap()
+    }
+
+    #[test]
+    fn canonical_construction() {
+        assert_eq!(q(6, -4), q(-3, 2));
+        assert_eq!(q(0, -7), Rational::ZERO);
+        assert!(q(6, -4).is_canonical());
+        assert_eq!(Rational::new(1, 0), Err(ZeroDivisor));
+    }
+
+    #[test]
+    fn small_arithmetic() {
+        assert_eq!(q(1, 3) + q(1, 6), q(1, 2));
+        assert_eq!(q(1, 3) - q(1, 3), Rational::ZERO);
+        assert_eq!(q(2, 3) * q(9, 4), q(3, 2));
+        assert_eq!(q(2, 3) / q(4, 9), q(3, 2));
+        assert_eq!(q(-5, 7).recip(), Ok(q(-7, 5)));
+        assert!(q(-1, 2) < q(1, 3));
+        assert!(q(1, 3) > q(1, 4));
+    }
+
+    #[test]
+    fn overflow_promotes_and_demotes() {
+        let big = Rational::from_i128_ratio(i128::MAX, 3).unwrap();
+        assert!(big.is_inline());
+        let sq = big.square();
+        assert!(!sq.is_inline());
+        assert!(sq.is_canonical());
+        let back = &sq / &big;
+        assert!(back.is_inline());
+        assert_eq!(back, big);
+        let m = Rational::from_i128_ratio(i128::MIN, 1).unwrap();
+        assert!(!m.is_inline());
+        assert!(m.is_canonical());
+        assert_eq!(-(-m.clone()), m);
+    }
+
+    #[test]
+    fn parse_and_print() {
+        for s in ["0", "-12", "3/4", "-7/9"] {
+            assert_eq!(s.parse::<Rational>().unwrap().to_string(), s);
+        }
+        assert_eq!("0.125".parse::<Rational>().unwrap(), q(1, 8));
+        assert_eq!("-0.5".parse::<Rational>().unwrap(), q(-1, 2));
+        assert_eq!("6/-4".parse::<Rational>().unwrap(), q(-3, 2));
+        assert!(matches!("1/0".parse::<Rational>(), Err(ParseRationalError::ZeroDenominator(_))));
+        for bad in ["", "1/", "a", "1.2.3", "--1", "1.", "0x10"] {
+            assert!(bad.parse::<Rational>().is_err(), "{bad:?} parsed");
+        }
+    }
+
+    #[test]
+    fn big_rational_round_trip() {
+        let x: Rational = "123456789012345678901234567890123456789012345/98765432109876543210987".parse().unwrap();
+        assert!(!x.is_inline());
+        let b = x.to_big_rational();
+        assert_eq!(Rational::from(b), x);
+    }
+
+    #[test]
+    fn pairwise_sum() {
+        let v: Vec<Rational> = (1..=10).map(|k| q(1, k * (k + 1))).collect();
+        assert_eq!(sum_pairwise(v), q(10, 11));
+        assert_eq!(sum_pairwise(vec![]), Rational::ZERO);
+    }
+}

@@ -1,0 +1,121 @@
+//! Property tests of the fast `Rational` against num-rational's `BigRational` (the independent
+//! reference): every operation agrees and leaves a canonical value; the field laws hold. The
+//! generator covers both tiers and the boundary between them (values near 2^127).
+
+use exactcheck_core::{Field, OrderedField, Ring, Sign};
+use exactcheck_exact::{PlainRational, Rational, RationalScalar};
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::{Signed, Zero};
+use proptest::prelude::*;
+
+/// Integers of assorted sizes: tiny, word-sized, near the inline limit, and multi-limb.
+fn int() -> impl Strategy<Value = BigInt> {
+    prop_oneof![
+        (-20i64..20).prop_map(BigInt::from),
+        any::<i64>().prop_map(BigInt::from),
+        any::<i128>().prop_map(BigInt::from),
+        (any::<i128>(), -3i32..3).prop_map(|(x, k)| (BigInt::from(1) << 127) * k + x),
+        proptest::collection::vec(any::<u32>(), 1..12).prop_map(|d| {
+            BigInt::from_slice(num_bigint::Sign::Plus, &d) * if d[0] & 1 == 0 { 1 } else { -1 }
+        }),
+    ]
+}
+
+fn nonzero_int() -> impl Strategy<Value = BigInt> {
+    int().prop_map(|x| if x.is_zero() { BigInt::from(7) } else { x })
+}
+
+/// Rationals with shared factors between numerators and denominators, so cancellations happen.
+fn big_rational() -> impl Strategy<Value = BigRational> {
+    (int(), nonzero_int(), prop_oneof![Just(1i64), 2i64..50, any::<i64>()]).prop_map(|(n, d, k)| {
+        let k = BigInt::from(if k == 0 { 1 } else { k });
+        BigRational::new(n * &k, d * k)
+    })
+}
+
+fn rational() -> impl Strategy<Value = (Rational, BigRational)> {
+    big_rational().prop_map(|b| (Rational::from(&b), b))
+}
+
+fn check(r: &Rational, b: &BigRational) -> Result<(), TestCaseError> {
+    prop_assert!(r.is_canonical(), "not canonical: {r:?}");
+    prop_assert_eq!(&r.to_big_rational(), b);
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(2000))]
+
+    #[test]
+    fn operations_match_big_rational((x, bx) in rational(), (y, by) in rational()) {
+        check(&x, &bx)?;
+        check(&(&x + &y), &(&bx + &by))?;
+        check(&(&x - &y), &(&bx - &by))?;
+        check(&(&x * &y), &(&bx * &by))?;
+        check(&x.square(), &(&bx * &bx))?;
+        check(&-&x, &-&bx)?;
+        if by.is_zero() {
+            prop_assert!(x.checked_div(&y).is_err());
+        } else {
+            check(&(&x / &y), &(&bx / &by))?;
+        }
+        prop_assert_eq!(x.cmp(&y), bx.cmp(&by));
+        prop_assert_eq!(x == y, bx == by);
+        let expected_sign = if bx.is_positive() { Sign::Positive } else if bx.is_negative() { Sign::Negative } else { Sign::Zero };
+        prop_assert_eq!(x.sign(), expected_sign);
+    }
+
+    #[test]
+    fn assign_operators_match((x, bx) in rational(), (y, by) in rational()) {
+        let mut s = x.clone(); s += &y; check(&s, &(&bx + &by))?;
+        let mut d = x.clone(); d -= y.clone(); check(&d, &(&bx - &by))?;
+        let mut m = x.clone(); m *= &y; check(&m, &(&bx * &by))?;
+    }
+
+    #[test]
+    fn field_laws((x, _) in rational(), (y, _) in rational(), (z, _) in rational()) {
+        prop_assert_eq!((&x + &y) + &z, &x + (&y + &z));
+        prop_assert_eq!((&x * &y) * &z, &x * (&y * &z));
+        prop_assert_eq!(&x + &y, &y + &x);
+        prop_assert_eq!(&x * &y, &y * &x);
+        prop_assert_eq!(&x * (&y + &z), &x * &y + &x * &z);
+        prop_assert_eq!(&x - &x, Rational::zero());
+        prop_assert_eq!(&x + Rational::zero(), x.clone());
+        prop_assert_eq!(&x * Rational::one(), x.clone());
+        if !x.is_zero() {
+            prop_assert_eq!(&x * x.inv().unwrap(), Rational::one());
+        } else {
+            prop_assert!(x.inv().is_err());
+        }
+    }
+
+    #[test]
+    fn text_round_trip((x, _) in rational()) {
+        let back: Rational = x.to_string().parse().unwrap();
+        prop_assert_eq!(back, x);
+    }
+
+    #[test]
+    fn plain_rational_agrees((x, bx) in rational(), (y, by) in rational()) {
+        let (px, py) = (PlainRational(bx), PlainRational(by));
+        let fast = (&x * &y + &x - &y).to_big_rational();
+        let plain = (px.clone() * &py + &px - &py).to_big_rational();
+        prop_assert_eq!(fast, plain);
+        prop_assert_eq!(Rational::from_big_rational(&px.to_big_rational()), x);
+    }
+}
+
+#[test]
+fn tier_boundary() {
+    // 2^127 - 1 is the largest inline magnitude; one more goes to the big tier and back.
+    let max = Rational::from_i128_ratio(i128::MAX, 1).unwrap();
+    assert!(max.is_inline());
+    let over = &max + Rational::one();
+    assert!(!over.is_inline() && over.is_canonical());
+    let back = &over - Rational::one();
+    assert!(back.is_inline());
+    assert_eq!(back, max);
+    let neg = -&over;
+    assert!(!neg.is_inline() && neg.is_canonical());
+}
