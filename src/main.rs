@@ -1,1 +1,7 @@
-fn main() {}
+//! `exactcheck`: the command-line tool. See the README for the commands.
+
+use std::process::ExitCode;
+
+fn main() -> ExitCode {
+    exactcheck::cli::main()
+}

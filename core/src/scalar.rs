@@ -116,7 +116,11 @@ pub trait Ring:
 /// The `/` operator may panic on a zero divisor, as the number types it is implemented for do;
 /// code that handles user input calls [`Field::inv`] or [`Field::checked_div`], which report it.
 pub trait Field:
-    Ring + Div<Output = Self> + for<'a> Div<&'a Self, Output = Self> + DivAssign + for<'a> DivAssign<&'a Self>
+    Ring
+    + Div<Output = Self>
+    + for<'a> Div<&'a Self, Output = Self>
+    + DivAssign
+    + for<'a> DivAssign<&'a Self>
 {
     /// The multiplicative inverse, or [`ZeroDivisor`] for zero.
     fn inv(&self) -> Result<Self, ZeroDivisor>;

@@ -84,14 +84,22 @@ impl<T: Field> Vec3<T> {
 impl<T: Ring> Add for &Vec3<T> {
     type Output = Vec3<T>;
     fn add(self, rhs: Self) -> Vec3<T> {
-        Vec3::new(self.x.add_ref(&rhs.x), self.y.add_ref(&rhs.y), self.z.add_ref(&rhs.z))
+        Vec3::new(
+            self.x.add_ref(&rhs.x),
+            self.y.add_ref(&rhs.y),
+            self.z.add_ref(&rhs.z),
+        )
     }
 }
 
 impl<T: Ring> Sub for &Vec3<T> {
     type Output = Vec3<T>;
     fn sub(self, rhs: Self) -> Vec3<T> {
-        Vec3::new(self.x.sub_ref(&rhs.x), self.y.sub_ref(&rhs.y), self.z.sub_ref(&rhs.z))
+        Vec3::new(
+            self.x.sub_ref(&rhs.x),
+            self.y.sub_ref(&rhs.y),
+            self.z.sub_ref(&rhs.z),
+        )
     }
 }
 

@@ -1,1 +1,156 @@
-fn main() {}
+//! `gcd_biguint` against num-integer's `Integer::gcd` (Stein's binary algorithm) on pairs of
+//! pseudo-random numbers with a common factor, at 2 to 6000 64-bit limbs.
+
+use std::hint::black_box;
+use std::time::{Duration, Instant};
+
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, SamplingMode};
+use exactcheck_exact::gcd::{gcd_biguint, gcd_u128, gcd_u64};
+use num_bigint::BigUint;
+use num_integer::Integer;
+
+/// splitmix64, for reproducible pseudo-random limbs.
+fn splitmix(state: &mut u64) -> u64 {
+    *state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
+    let mut z = *state;
+    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    z ^ (z >> 31)
+}
+
+fn random_biguint(limbs: usize, state: &mut u64) -> BigUint {
+    let digits: Vec<u32> = (0..2 * limbs).map(|_| splitmix(state) as u32).collect();
+    BigUint::new(digits)
+}
+
+/// Two numbers of about `limbs` limbs sharing a random common factor of about a quarter of
+/// that size.
+fn pair(limbs: usize, seed: u64) -> (BigUint, BigUint) {
+    let mut st = seed;
+    let lg = (limbs / 4).max(1);
+    let lx = limbs.saturating_sub(lg).max(1);
+    let g = random_biguint(lg, &mut st);
+    let x = random_biguint(lx, &mut st);
+    let y = random_biguint(lx, &mut st);
+    (x * &g, y * &g)
+}
+
+fn bench_gcd(c: &mut Criterion) {
+    let mut group = c.benchmark_group("gcd");
+    for &limbs in &[2usize, 16, 128, 1024, 6000] {
+        let (a, b) = pair(limbs, 0x1234_5678 ^ limbs as u64);
+        assert_eq!(gcd_biguint(&a, &b), {
+            if limbs <= 1024 {
+                a.gcd(&b)
+            } else {
+                gcd_biguint(&a, &b)
+            }
+        });
+        if limbs >= 128 {
+            group.sample_size(10);
+            group.sampling_mode(SamplingMode::Flat);
+            group.warm_up_time(Duration::from_millis(500));
+            group.measurement_time(Duration::from_secs(3));
+        } else {
+            group.sample_size(50);
+            group.sampling_mode(SamplingMode::Auto);
+            group.warm_up_time(Duration::from_millis(500));
+            group.measurement_time(Duration::from_secs(2));
+        }
+        group.bench_with_input(
+            BenchmarkId::new("exactcheck", limbs),
+            &(&a, &b),
+            |bch, (a, b)| bch.iter(|| gcd_biguint(black_box(a), black_box(b))),
+        );
+        // num-integer is quadratic with a large constant: time one call first and skip it
+        // above 1024 limbs when a single call takes more than 2 s.
+        let start = Instant::now();
+        let expected = a.gcd(&b);
+        let once = start.elapsed();
+        assert_eq!(expected, gcd_biguint(&a, &b));
+        if limbs > 1024 && once > Duration::from_secs(2) {
+            eprintln!("gcd/num-integer/{limbs}: skipped, one call took {once:?}");
+            continue;
+        }
+        if limbs > 1024 {
+            group.measurement_time(once * 12);
+        }
+        group.bench_with_input(
+            BenchmarkId::new("num-integer", limbs),
+            &(&a, &b),
+            |bch, (a, b)| bch.iter(|| black_box(a).gcd(black_box(b))),
+        );
+    }
+    group.finish();
+}
+
+/// Machine-word gcds on 4096 pairs with a random common factor (about a quarter of the bits);
+/// many distinct pairs, so that the branch predictor cannot learn them.
+fn bench_words(c: &mut Criterion) {
+    let mut st = 0xabcd_ef01_u64;
+    let p64: Vec<(u64, u64)> = (0..4096)
+        .map(|_| {
+            let g = splitmix(&mut st) >> 48;
+            ((splitmix(&mut st) >> 16) * g, (splitmix(&mut st) >> 16) * g)
+        })
+        .collect();
+    let p128: Vec<(u128, u128)> = (0..4096)
+        .map(|_| {
+            let g = u128::from(splitmix(&mut st) >> 32);
+            let x = u128::from(splitmix(&mut st)) << 32 | u128::from(splitmix(&mut st) >> 32);
+            let y = u128::from(splitmix(&mut st)) << 32 | u128::from(splitmix(&mut st) >> 32);
+            (x * g, y * g)
+        })
+        .collect();
+    let mut group = c.benchmark_group("gcd_words_x4096");
+    group.warm_up_time(Duration::from_millis(500));
+    group.measurement_time(Duration::from_secs(2));
+    group.bench_function("u64/exactcheck", |bch| {
+        bch.iter(|| {
+            p64.iter()
+                .fold(0, |acc, &(a, b)| acc ^ gcd_u64(black_box(a), b))
+        })
+    });
+    group.bench_function("u64/num-integer", |bch| {
+        bch.iter(|| {
+            p64.iter()
+                .fold(0, |acc, &(a, b)| acc ^ black_box(a).gcd(&b))
+        })
+    });
+    group.bench_function("u128/exactcheck", |bch| {
+        bch.iter(|| {
+            p128.iter()
+                .fold(0, |acc, &(a, b)| acc ^ gcd_u128(black_box(a), b))
+        })
+    });
+    group.bench_function("u128/num-integer", |bch| {
+        bch.iter(|| {
+            p128.iter()
+                .fold(0, |acc, &(a, b)| acc ^ black_box(a).gcd(&b))
+        })
+    });
+    group.finish();
+}
+
+/// Two random 350,000-bit numbers (no planted common factor: the full Euclidean descent).
+fn bench_350k_bits(c: &mut Criterion) {
+    let mut st = 0x350_000;
+    let limbs = 5469; // 350,016 bits, minus 16
+    let mut a = random_biguint(limbs, &mut st) >> 16u32;
+    let mut b = random_biguint(limbs, &mut st) >> 16u32;
+    a.set_bit(349_999, true);
+    b.set_bit(349_999, true);
+    assert_eq!(a.bits(), 350_000);
+    let mut group = c.benchmark_group("gcd_350000_bits");
+    group.sample_size(10);
+    group.sampling_mode(SamplingMode::Flat);
+    group.warm_up_time(Duration::from_millis(500));
+    group.measurement_time(Duration::from_secs(3));
+    group.bench_function("exactcheck", |bch| {
+        bch.iter(|| gcd_biguint(black_box(&a), black_box(&b)))
+    });
+    group.finish();
+}
+
+criterion_group!(benches, bench_gcd, bench_words, bench_350k_bits);
+criterion_main!(benches);

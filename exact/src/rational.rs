@@ -178,7 +178,11 @@ impl Rational {
                 *d > 0
                     && fits(*n)
                     && fits(*d)
-                    && (if *n == 0 { *d == 1 } else { gcd_u128(n.unsigned_abs(), *d as u128) == 1 })
+                    && (if *n == 0 {
+                        *d == 1
+                    } else {
+                        gcd_u128(n.unsigned_abs(), *d as u128) == 1
+                    })
             }
             Repr::Big(b) => {
                 !b.den.is_zero()
@@ -193,7 +197,10 @@ impl Rational {
     fn big_parts(&self) -> (std::borrow::Cow<'_, BigInt>, std::borrow::Cow<'_, BigUint>) {
         use std::borrow::Cow;
         match &self.0 {
-            Repr::Small(n, d) => (Cow::Owned(BigInt::from(*n)), Cow::Owned(BigUint::from(*d as u128))),
+            Repr::Small(n, d) => (
+                Cow::Owned(BigInt::from(*n)),
+                Cow::Owned(BigUint::from(*d as u128)),
+            ),
             Repr::Big(b) => (Cow::Borrowed(&b.num), Cow::Borrowed(&b.den)),
         }
     }
@@ -267,7 +274,10 @@ impl Rational {
     fn neg_impl(&self) -> Rational {
         match &self.0 {
             Repr::Small(n, d) => Rational(Repr::Small(-*n, *d)),
-            Repr::Big(b) => Rational(Repr::Big(Box::new(BigParts { num: -&b.num, den: b.den.clone() }))),
+            Repr::Big(b) => Rational(Repr::Big(Box::new(BigParts {
+                num: -&b.num,
+                den: b.den.clone(),
+            }))),
         }
     }
 
@@ -383,8 +393,16 @@ fn mul_small(a: i128, b: i128, c: i128, d: i128) -> Option<Rational> {
     if a == 0 || c == 0 {
         return Some(Rational::ZERO);
     }
-    let g1 = if d == 1 { 1 } else { gcd_u128(a.unsigned_abs(), d as u128) as i128 };
-    let g2 = if b == 1 { 1 } else { gcd_u128(c.unsigned_abs(), b as u128) as i128 };
+    let g1 = if d == 1 {
+        1
+    } else {
+        gcd_u128(a.unsigned_abs(), d as u128) as i128
+    };
+    let g2 = if b == 1 {
+        1
+    } else {
+        gcd_u128(c.unsigned_abs(), b as u128) as i128
+    };
     let n = (a / g1).checked_mul(c / g2)?;
     let den = (b / g2).checked_mul(d / g1)?;
     (fits(n) && fits(den)).then_some(Rational(Repr::Small(n, den)))
@@ -498,12 +516,19 @@ macro_rules! forward_binop {
 }
 
 forward_binop!(Add, add, AddAssign, add_assign, |x, y| x.add_impl(y));
-forward_binop!(Sub, sub, SubAssign, sub_assign, |x, y| x.add_impl(&y.neg_impl()));
+forward_binop!(Sub, sub, SubAssign, sub_assign, |x, y| x
+    .add_impl(&y.neg_impl()));
 forward_binop!(Mul, mul, MulAssign, mul_assign, |x, y| x.mul_impl(y));
-forward_binop!(Div, div, DivAssign, div_assign, |x, y| match x.checked_div(y) {
-    Ok(q) => q,
-    Err(_) => panic!("Rational division by zero (use Field::checked_div to handle it)"),
-});
+forward_binop!(
+    Div,
+    div,
+    DivAssign,
+    div_assign,
+    |x, y| match x.checked_div(y) {
+        Ok(q) => q,
+        Err(_) => panic!("Rational division by zero (use Field::checked_div to handle it)"),
+    }
+);
 
 impl Neg for Rational {
     type Output = Rational;
@@ -715,7 +740,11 @@ impl FromStr for Rational {
                 return Err(bad());
             }
             let negative = i.starts_with('-');
-            let ipart = if i == "-" || i == "+" || i.is_empty() { BigInt::zero() } else { int(i)? };
+            let ipart = if i == "-" || i == "+" || i.is_empty() {
+                BigInt::zero()
+            } else {
+                int(i)?
+            };
             let scale = BigInt::from(10u32).pow(frac.len() as u32);
             let f = frac.parse::<BigInt>().map_err(|_| bad())?;
             let mag = ipart.abs() * &scale + f;
@@ -797,7 +826,10 @@ mod tests {
         assert_eq!("0.125".parse::<Rational>().unwrap(), q(1, 8));
         assert_eq!("-0.5".parse::<Rational>().unwrap(), q(-1, 2));
         assert_eq!("6/-4".parse::<Rational>().unwrap(), q(-3, 2));
-        assert!(matches!("1/0".parse::<Rational>(), Err(ParseRationalError::ZeroDenominator(_))));
+        assert!(matches!(
+            "1/0".parse::<Rational>(),
+            Err(ParseRationalError::ZeroDenominator(_))
+        ));
         for bad in ["", "1/", "a", "1.2.3", "--1", "1.", "0x10"] {
             assert!(bad.parse::<Rational>().is_err(), "{bad:?} parsed");
         }
@@ -805,7 +837,9 @@ mod tests {
 
     #[test]
     fn big_rational_round_trip() {
-        let x: Rational = "123456789012345678901234567890123456789012345/98765432109876543210987".parse().unwrap();
+        let x: Rational = "123456789012345678901234567890123456789012345/98765432109876543210987"
+            .parse()
+            .unwrap();
         assert!(!x.is_inline());
         let b = x.to_big_rational();
         assert_eq!(Rational::from(b), x);

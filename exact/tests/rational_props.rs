@@ -28,10 +28,15 @@ fn nonzero_int() -> impl Strategy<Value = BigInt> {
 
 /// Rationals with shared factors between numerators and denominators, so cancellations happen.
 fn big_rational() -> impl Strategy<Value = BigRational> {
-    (int(), nonzero_int(), prop_oneof![Just(1i64), 2i64..50, any::<i64>()]).prop_map(|(n, d, k)| {
-        let k = BigInt::from(if k == 0 { 1 } else { k });
-        BigRational::new(n * &k, d * k)
-    })
+    (
+        int(),
+        nonzero_int(),
+        prop_oneof![Just(1i64), 2i64..50, any::<i64>()],
+    )
+        .prop_map(|(n, d, k)| {
+            let k = BigInt::from(if k == 0 { 1 } else { k });
+            BigRational::new(n * &k, d * k)
+        })
 }
 
 fn rational() -> impl Strategy<Value = (Rational, BigRational)> {

@@ -1,1 +1,36 @@
-//! float
+//! # exactcheck-float
+//!
+//! The `f64` side of exactcheck and the float-vs-exact regression harness.
+//!
+//! * [`convert`] — exact `f64 -> BigRational`, correctly rounded `BigRational -> f64`, [`ulp`],
+//!   and the error measures [`ulps_error`] and [`rel_error`], all computed exactly.
+//! * [`scalar`] — [`ExactScalar`], what the harness needs of an exact number type, implemented
+//!   for [`exactcheck_exact::PlainRational`].
+//! * [`rng`] and [`gen`] — a seeded xoshiro256** generator and the input generators
+//!   ([`UniformBox`], [`LogUniform`], [`NearDegenerate`] around [`Fixed`] or [`Diagonal`] points).
+//! * [`harness`] — [`regress`]: a [`Formula`] written once generic over the scalar is run in
+//!   `f64` and exactly on the same random inputs; the [`Report`] gives max/median/mean errors in
+//!   ulps and relative terms, threshold counts, and the worst inputs, shrunk to short
+//!   reproducible cases. This is the model of CGAL's `Kernel_checker`: two kernels, every
+//!   disagreement reported with its inputs.
+//!
+//! Tolerances live here and only here: the exact crates decide, this crate measures how far
+//! float code strays from their decisions.
+#![warn(missing_docs)]
+
+pub mod convert;
+pub mod gen;
+pub mod harness;
+pub mod report;
+pub mod rng;
+pub mod scalar;
+
+pub use convert::{
+    binary_exponent, f64_to_rational, pow2, rational_to_f64, rel_error, round_to_bits,
+    significant_bits, ulp, ulps_error,
+};
+pub use gen::{Diagonal, Fixed, GenError, InputGen, LogUniform, NearDegenerate, UniformBox};
+pub use harness::{check, regress, sample_inputs, CaseError, Formula, Options, RegressError};
+pub use report::{Case, Report, ThresholdCount, WorstCase};
+pub use rng::Rng;
+pub use scalar::ExactScalar;

@@ -1,0 +1,314 @@
+//! The result of a regression run: plain data with public fields (so the CLI can emit JSON)
+//! and a readable `Display`.
+//!
+//! Exact numbers are kept as strings in the workspace's exact syntax (`n` or `n/d`, lowest
+//! terms), so they can be fed back as exact input; their nearest doubles sit beside them.
+//! `Display` abbreviates long exact values (a dyadic `n/d` reads `n/2^k`, very long numerals are
+//! elided); the fields always hold them in full.
+
+use std::fmt;
+
+/// One compared input vector: the inputs, both evaluations and their errors.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Case {
+    /// The inputs as doubles (`Debug` formatting of `f64` round-trips them exactly).
+    pub inputs: Vec<f64>,
+    /// The same inputs as exact rationals, `n` or `n/d`.
+    pub inputs_exact: Vec<String>,
+    /// The exact outputs, `n` or `n/d`.
+    pub exact_outputs: Vec<String>,
+    /// The exact outputs rounded to the nearest doubles.
+    pub exact_outputs_f64: Vec<f64>,
+    /// The float outputs; `None` when the float evaluation reported a zero divisor.
+    pub float_outputs: Option<Vec<f64>>,
+    /// Each output's error in ulps of the exact value (see [`crate::ulps_error`]).
+    pub ulps_per_output: Vec<f64>,
+    /// Each output's relative error (see [`crate::rel_error`]).
+    pub rel_per_output: Vec<f64>,
+    /// The largest error in ulps over the outputs (infinite for a float failure).
+    pub ulps: f64,
+    /// The largest relative error over the outputs (infinite for a float failure).
+    pub rel: f64,
+    /// Whether the float side failed: a zero divisor, a NaN or infinite output, or a different
+    /// number of outputs than the exact side.
+    pub float_failure: bool,
+}
+
+/// A kept worst case of a run, with its shrunk form.
+#[derive(Clone, Debug, PartialEq)]
+pub struct WorstCase {
+    /// The sample index: [`crate::sample_inputs`]`(gen, seed, index)` regenerates the inputs.
+    pub index: usize,
+    /// The case as sampled.
+    pub original: Case,
+    /// The shrunk case (equal to `original` when nothing simpler stayed bad enough); `None`
+    /// when shrinking was off or the original error was 0.
+    pub shrunk: Option<Case>,
+    /// How many simplifications were accepted.
+    pub shrink_steps: usize,
+    /// How many candidate inputs were evaluated while shrinking.
+    pub shrink_evaluations: usize,
+}
+
+/// How many compared samples exceeded an error level.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ThresholdCount {
+    /// The level, in ulps.
+    pub ulps: f64,
+    /// The number of compared samples whose error is strictly greater.
+    pub count: usize,
+}
+
+/// The result of [`crate::regress`].
+///
+/// A sample's error is the largest over its outputs. Statistics are over the compared samples
+/// (float failures included, with infinite error) and read 0 when none was compared.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Report {
+    /// The formula's name.
+    pub formula: String,
+    /// The generator's description.
+    pub generator: String,
+    /// The number of inputs.
+    pub arity: usize,
+    /// The number of samples drawn.
+    pub samples: usize,
+    /// The seed of the run.
+    pub seed: u64,
+    /// Samples evaluated on both sides and compared.
+    pub compared: usize,
+    /// Samples skipped because the exact evaluation reported a zero divisor (outside the domain).
+    pub domain_errors: usize,
+    /// Samples skipped because the generator gave a wrong number of inputs or a non-finite one.
+    pub invalid_inputs: usize,
+    /// Compared samples where the float side failed (infinite error).
+    pub float_failures: usize,
+    /// The largest error in ulps.
+    pub max_ulps: f64,
+    /// The median error in ulps (the mean of the two middle values for an even count).
+    pub median_ulps: f64,
+    /// The mean error in ulps over the samples with a finite error.
+    pub mean_ulps: f64,
+    /// The largest relative error.
+    pub max_rel: f64,
+    /// The median relative error.
+    pub median_rel: f64,
+    /// The largest error in ulps of each output separately.
+    pub max_ulps_per_output: Vec<f64>,
+    /// The number of samples above each of [`crate::Options::thresholds`].
+    pub above: Vec<ThresholdCount>,
+    /// The worst cases, worst first (larger ulps error, then larger relative error, then the
+    /// earlier sample).
+    pub worst: Vec<WorstCase>,
+}
+
+/// An error measure for humans: `inf`, plain decimals in a middle range, scientific otherwise.
+pub(crate) fn fmt_measure(v: f64) -> String {
+    if v.is_nan() {
+        "NaN".into()
+    } else if v.is_infinite() {
+        if v > 0.0 { "inf" } else { "-inf" }.into()
+    } else if v == 0.0 {
+        "0".into()
+    } else if (1e-3..1e5).contains(&v.abs()) {
+        let s = format!("{v:.3}");
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        format!("{v:.3e}")
+    }
+}
+
+/// An exact value for humans: `n/2^k` for dyadic denominators, long numerals elided.
+fn fmt_exact(s: &str) -> String {
+    fn elide(digits: &str) -> String {
+        const KEEP: usize = 12;
+        let n = digits.trim_start_matches('-').len();
+        if n <= 2 * KEEP + 6 {
+            digits.to_string()
+        } else {
+            format!(
+                "{}...{}[{n} digits]",
+                &digits[..KEEP + usize::from(digits.starts_with('-'))],
+                &digits[digits.len() - KEEP..]
+            )
+        }
+    }
+    match s.split_once('/') {
+        None => elide(s),
+        Some((n, d)) => {
+            let d_big = d.parse::<num_bigint::BigUint>().ok();
+            let pow = d_big.as_ref().and_then(|b| {
+                let k = b.trailing_zeros()?;
+                (b.count_ones() == 1 && k > 10).then_some(k)
+            });
+            match pow {
+                Some(k) => format!("{}/2^{k}", elide(n)),
+                None => format!("{}/{}", elide(n), elide(d)),
+            }
+        }
+    }
+}
+
+fn list(items: impl IntoIterator<Item = String>) -> String {
+    let v: Vec<String> = items.into_iter().collect();
+    format!("[{}]", v.join(", "))
+}
+
+fn write_case(f: &mut fmt::Formatter<'_>, c: &Case, indent: &str) -> fmt::Result {
+    writeln!(
+        f,
+        "{indent}inputs        {}",
+        list(c.inputs.iter().map(|x| format!("{x:?}")))
+    )?;
+    writeln!(
+        f,
+        "{indent}  exactly     {}",
+        list(c.inputs_exact.iter().map(|s| fmt_exact(s)))
+    )?;
+    writeln!(
+        f,
+        "{indent}exact output  {}",
+        list(c.exact_outputs.iter().map(|s| fmt_exact(s)))
+    )?;
+    writeln!(
+        f,
+        "{indent}  nearest     {}",
+        list(c.exact_outputs_f64.iter().map(|x| format!("{x:?}")))
+    )?;
+    match &c.float_outputs {
+        Some(v) => writeln!(
+            f,
+            "{indent}float output  {}",
+            list(v.iter().map(|x| format!("{x:?}")))
+        ),
+        None => writeln!(f, "{indent}float output  (division by zero)"),
+    }
+}
+
+impl fmt::Display for WorstCase {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let o = &self.original;
+        writeln!(
+            f,
+            "sample {}: {} ulps, relative {}{}",
+            self.index,
+            fmt_measure(o.ulps),
+            fmt_measure(o.rel),
+            if o.float_failure {
+                " (float failure)"
+            } else {
+                ""
+            }
+        )?;
+        write_case(f, o, "    ")?;
+        if let Some(s) = &self.shrunk {
+            let bits: u32 = s
+                .inputs
+                .iter()
+                .map(|&x| crate::convert::significant_bits(x))
+                .sum();
+            writeln!(
+                f,
+                "  shrunk ({} steps, {} evaluations, {bits} significant bits in all): {} ulps, relative {}{}",
+                self.shrink_steps,
+                self.shrink_evaluations,
+                fmt_measure(s.ulps),
+                fmt_measure(s.rel),
+                if s.float_failure { " (float failure)" } else { "" }
+            )?;
+            write_case(f, s, "    ")?;
+        }
+        Ok(())
+    }
+}
+
+impl fmt::Display for Report {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        writeln!(f, "regress `{}` ({} inputs)", self.formula, self.arity)?;
+        writeln!(f, "  inputs: {}", self.generator)?;
+        writeln!(
+            f,
+            "  {} samples, seed {}: {} compared, {} outside the exact domain, {} float failures, {} invalid inputs",
+            self.samples,
+            self.seed,
+            self.compared,
+            self.domain_errors,
+            self.float_failures,
+            self.invalid_inputs
+        )?;
+        writeln!(
+            f,
+            "  error in ulps: max {}, median {}, mean {} (finite errors)",
+            fmt_measure(self.max_ulps),
+            fmt_measure(self.median_ulps),
+            fmt_measure(self.mean_ulps)
+        )?;
+        if self.max_ulps_per_output.len() > 1 {
+            writeln!(
+                f,
+                "  max ulps per output: {}",
+                list(self.max_ulps_per_output.iter().map(|&u| fmt_measure(u)))
+            )?;
+        }
+        writeln!(
+            f,
+            "  relative error: max {}, median {}",
+            fmt_measure(self.max_rel),
+            fmt_measure(self.median_rel)
+        )?;
+        if !self.above.is_empty() {
+            let parts: Vec<String> = self
+                .above
+                .iter()
+                .map(|t| {
+                    let pct = if self.compared == 0 {
+                        0.0
+                    } else {
+                        100.0 * t.count as f64 / self.compared as f64
+                    };
+                    format!("> {} ulps: {} ({pct:.1}%)", fmt_measure(t.ulps), t.count)
+                })
+                .collect();
+            writeln!(f, "  {}", parts.join(", "))?;
+        }
+        if !self.worst.is_empty() {
+            writeln!(
+                f,
+                "  worst {} (inputs reproducible with sample_inputs(gen, {}, sample)):",
+                self.worst.len(),
+                self.seed
+            )?;
+            for (i, w) in self.worst.iter().enumerate() {
+                write!(f, "  {}. {w}", i + 1)?;
+            }
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn measures_read_well() {
+        assert_eq!(fmt_measure(f64::INFINITY), "inf");
+        assert_eq!(fmt_measure(0.0), "0");
+        assert_eq!(fmt_measure(0.5), "0.5");
+        assert_eq!(fmt_measure(12.0), "12");
+        assert_eq!(fmt_measure(8589934592.0), "8.590e9");
+        assert_eq!(fmt_measure(1.1e-16), "1.100e-16");
+    }
+
+    #[test]
+    fn exact_values_read_well() {
+        assert_eq!(fmt_exact("3/4"), "3/4");
+        assert_eq!(fmt_exact("-7"), "-7");
+        assert_eq!(fmt_exact("5/4096"), "5/2^12");
+        let long = format!("-{}", "9".repeat(40));
+        assert_eq!(fmt_exact(&long), "-999999999999...999999999999[40 digits]");
+        let d = num_bigint::BigUint::from(1u8) << 100usize;
+        assert_eq!(fmt_exact(&format!("1/{d}")), "1/2^100");
+        assert_eq!(fmt_exact("1/3"), "1/3");
+    }
+}

@@ -1,0 +1,131 @@
+//! The command line: parsing (clap) and dispatch. Every error a user can cause is reported as one
+//! line on standard error with exit status 2; nothing a user types makes the tool panic.
+
+use crate::w2;
+use clap::{Parser, Subcommand, ValueEnum};
+use exactcheck_exact::{PlainRational, Rational, RationalScalar};
+use std::process::ExitCode;
+
+/// Verify geometry formulas exactly: prove them, check them on exact instances, and regress float
+/// code against exact results.
+#[derive(Debug, Parser)]
+#[command(name = "exactcheck", version, about)]
+pub struct Cli {
+    /// What to do.
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// The subcommands.
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Run a benchmark workload and print its check values and time.
+    Bench {
+        /// Which workload.
+        #[command(subcommand)]
+        workload: Workload,
+    },
+    /// Regress a built-in f64 kernel against exact results on seeded random inputs.
+    Regress(crate::regress::RegressArgs),
+}
+
+/// The benchmark workloads (see `../shared/anchors` for the same workloads in other tools).
+#[derive(Debug, Subcommand)]
+pub enum Workload {
+    /// W2: the exact Spaeth discriminant at N rational parameters.
+    W2 {
+        /// Number of parameters T_k = k/1000 - 50, k = 0..N-1.
+        #[arg(long, default_value_t = 100_000)]
+        n: usize,
+        /// eval: evaluate only; tree: plus a pairwise exact sum; seq: plus a sequential exact sum.
+        #[arg(long, value_enum, default_value_t = w2::Mode::Eval)]
+        mode: w2::Mode,
+        /// The exact rational type: the fast `Rational`, or num-rational's plain `BigRational`.
+        #[arg(long, value_enum, default_value_t = ScalarChoice::Fast)]
+        scalar: ScalarChoice,
+        /// Print one JSON line (as the anchor scripts do) instead of text.
+        #[arg(long)]
+        json: bool,
+    },
+}
+
+/// The exact rational types a benchmark can run on.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum ScalarChoice {
+    /// exactcheck's `Rational` (inline tier, Knuth/Henrici arithmetic, Lehmer gcd).
+    Fast,
+    /// num-rational's `BigRational`, unchanged (the baseline).
+    Plain,
+}
+
+/// Parses the command line, runs it, and maps errors to exit status 2.
+pub fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match run(cli) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("exactcheck: error: {e}");
+            ExitCode::from(2)
+        }
+    }
+}
+
+/// Runs a parsed command line.
+pub fn run(cli: Cli) -> Result<(), crate::Error> {
+    match cli.command {
+        Command::Bench {
+            workload:
+                Workload::W2 {
+                    n,
+                    mode,
+                    scalar,
+                    json,
+                },
+        } => {
+            let text = match scalar {
+                ScalarChoice::Fast => bench_w2::<Rational>(n, mode, "fast", json),
+                ScalarChoice::Plain => bench_w2::<PlainRational>(n, mode, "plain", json),
+            };
+            println!("{text}");
+            Ok(())
+        }
+        Command::Regress(args) => crate::regress::run(&args),
+    }
+}
+
+fn bench_w2<T: RationalScalar>(n: usize, mode: w2::Mode, scalar: &str, json: bool) -> String {
+    let out = w2::run::<T>(n, mode);
+    let checks = out.sum.as_ref().map(w2::check_values);
+    let mode_name = format!("{mode:?}").to_lowercase();
+    if json {
+        let mut s = format!(
+            "{{\"tool\": \"exactcheck\", \"scalar\": \"{scalar}\", \"mode\": \"{mode_name}\", \"N\": {n}, \"seconds\": {}, \"samples_per_s\": {}, \"count_nonneg\": {}",
+            out.seconds,
+            n as f64 / out.seconds,
+            out.count_nonneg
+        );
+        if let Some(c) = &checks {
+            s += &format!(
+                ", \"sum_num_digits\": {}, \"sum_den_digits\": {}, \"sum_num_mod_p\": {}, \"sum_den_mod_p\": {}, \"sum_approx\": {:?}",
+                c.num_digits, c.den_digits, c.num_mod_p, c.den_mod_p, c.approx
+            );
+        }
+        s + "}"
+    } else {
+        let mut s = format!(
+            "W2 (exact Spaeth discriminant), N = {n}, mode {mode_name}, scalar {scalar}\n  parameters with disc >= 0: {}\n",
+            out.count_nonneg
+        );
+        if let Some(c) = &checks {
+            s += &format!(
+                "  exact sum: numerator {} digits, denominator {} digits\n  numerator mod 1e9+7 = {}, denominator mod 1e9+7 = {}\n  value ~ {:?}\n",
+                c.num_digits, c.den_digits, c.num_mod_p, c.den_mod_p, c.approx
+            );
+        }
+        s + &format!(
+            "  time: {:.3} s ({:.0} parameters/s)",
+            out.seconds,
+            n as f64 / out.seconds
+        )
+    }
+}

@@ -1,0 +1,13 @@
+//! # exactcheck
+//!
+//! The command-line tool and the claim catalogue of exactcheck. The mathematics lives in
+//! `exactcheck-core` (generic over the scalar), the exact scalars in `exactcheck-exact`, the f64
+//! side and the float-vs-exact harness in `exactcheck-float`.
+#![warn(missing_docs)]
+
+pub mod cli;
+pub mod error;
+pub mod regress;
+pub mod w2;
+
+pub use error::Error;

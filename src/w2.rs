@@ -1,0 +1,196 @@
+//! Workload W2: the exact Spaeth discriminant at many rational parameters (the benchmark of the
+//! exact rational field; `exactcheck bench w2`, `benches/w2.rs`, anchors `w2_rational.py`).
+//!
+//! Cylinder about the axis point `(1/3, -2/7)`, radius 5, rotations `cos b = 3/5, sin b = 4/5`,
+//! `cos g = 5/13, sin g = -12/13`; sphere centre `(1, 2, 4)`, radius 5. At `T_k = k/1000 - 50`,
+//! `k = 0..N-1`, the angle is the rational circle point of `T_k` and the value is
+//! `disc = A^2 - B` ([`exactcheck_core::cylinder_sphere`]).
+
+use exactcheck_core::cylinder_sphere::{unit_circle_point, Angle, CylinderSphere};
+use exactcheck_core::{Field, Ring, Sign, Vec3};
+use exactcheck_exact::RationalScalar;
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_rational::BigRational;
+use num_traits::{Signed, ToPrimitive};
+use std::time::Instant;
+
+/// How the discriminants are consumed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Mode {
+    /// Evaluate every discriminant and count the non-negative ones.
+    Eval,
+    /// As `eval`, then sum all values exactly by pairwise (balanced) summation.
+    Tree,
+    /// Accumulate `s += disc` sequentially (the sum grows with every step).
+    Seq,
+}
+
+fn q<T: Field>(n: i64, d: i64) -> T {
+    // The constants below have non-zero denominators.
+    T::from_ratio(n, d).unwrap_or_else(|_| T::zero())
+}
+
+/// The W2 configuration over any field.
+pub fn problem<T: Field>() -> CylinderSphere<T> {
+    CylinderSphere {
+        a: q(1, 3),
+        b: q(-2, 7),
+        r: T::from_i64(5),
+        beta: Angle {
+            cos: q(3, 5),
+            sin: q(4, 5),
+        },
+        gamma: Angle {
+            cos: q(5, 13),
+            sin: q(-12, 13),
+        },
+        center: Vec3::from_i64(1, 2, 4),
+        radius: T::from_i64(5),
+    }
+}
+
+/// The parameter `T_k = k/1000 - 50`.
+pub fn parameter<T: Field>(k: usize) -> T {
+    q::<T>(k as i64, 1000) - T::from_i64(50)
+}
+
+/// `disc(T)` for the W2 configuration.
+pub fn discriminant<T: Field>(cs: &CylinderSphere<T>, tau: &T) -> T {
+    // 1 + T^2 > 0 for every rational T.
+    match unit_circle_point(tau) {
+        Ok(p) => cs.discriminant_at(&p.cos, &p.sin),
+        Err(_) => T::zero(),
+    }
+}
+
+/// What a W2 run computed.
+#[derive(Clone, Debug)]
+pub struct Outcome<T> {
+    /// Parameters with `disc >= 0`.
+    pub count_nonneg: usize,
+    /// The exact sum of all discriminants (modes `tree` and `seq`).
+    pub sum: Option<T>,
+    /// Seconds spent in the timed region (evaluation and summation).
+    pub seconds: f64,
+}
+
+/// Runs W2 with `n` parameters in the given mode over the scalar `T`, timing the same region as
+/// the anchor scripts (evaluation and summation, not the check values).
+pub fn run<T: Field + exactcheck_core::OrderedField>(n: usize, mode: Mode) -> Outcome<T> {
+    let cs = problem::<T>();
+    let start = Instant::now();
+    let mut count_nonneg = 0;
+    let mut count = |d: &T| {
+        if d.sign() != Sign::Negative {
+            count_nonneg += 1;
+        }
+    };
+    let sum = match mode {
+        Mode::Eval => {
+            for k in 0..n {
+                count(&discriminant(&cs, &parameter::<T>(k)));
+            }
+            None
+        }
+        Mode::Seq => {
+            let mut s = T::zero();
+            for k in 0..n {
+                let d = discriminant(&cs, &parameter::<T>(k));
+                count(&d);
+                s += d;
+            }
+            Some(s)
+        }
+        Mode::Tree => {
+            let mut values = Vec::with_capacity(n);
+            for k in 0..n {
+                let d = discriminant(&cs, &parameter::<T>(k));
+                count(&d);
+                values.push(d);
+            }
+            Some(pairwise_sum(values))
+        }
+    };
+    let seconds = start.elapsed().as_secs_f64();
+    Outcome {
+        count_nonneg,
+        sum,
+        seconds,
+    }
+}
+
+/// Pairwise (balanced) summation, as the anchors' `tree` mode does.
+pub fn pairwise_sum<T: Ring>(mut values: Vec<T>) -> T {
+    while values.len() > 1 {
+        let mut next = Vec::with_capacity(values.len().div_ceil(2));
+        let mut it = values.into_iter();
+        while let Some(x) = it.next() {
+            next.push(match it.next() {
+                Some(y) => x + y,
+                None => x,
+            });
+        }
+        values = next;
+    }
+    values.pop().unwrap_or_else(T::zero)
+}
+
+/// The check values of an exact sum, as the anchor scripts print them.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CheckValues {
+    /// Decimal digits of `|numerator|`.
+    pub num_digits: usize,
+    /// Decimal digits of the denominator.
+    pub den_digits: usize,
+    /// Numerator mod 1e9+7 (non-negative residue).
+    pub num_mod_p: u64,
+    /// Denominator mod 1e9+7.
+    pub den_mod_p: u64,
+    /// The value as f64 (for orientation only).
+    pub approx: f64,
+}
+
+const P: u64 = 1_000_000_007;
+
+/// The check values of an exact sum.
+pub fn check_values<T: RationalScalar>(sum: &T) -> CheckValues {
+    let big: BigRational = sum.to_big_rational();
+    let (n, d) = (big.numer(), big.denom());
+    let p = BigInt::from(P);
+    let residue = |x: &BigInt| x.mod_floor(&p).to_u64().unwrap_or(0);
+    CheckValues {
+        num_digits: n.abs().to_string().len(),
+        den_digits: d.to_string().len(),
+        num_mod_p: residue(n),
+        den_mod_p: residue(d),
+        approx: big.to_f64().unwrap_or(f64::NAN),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use exactcheck_exact::{PlainRational, Rational};
+
+    #[test]
+    fn fast_and_plain_rationals_agree() {
+        for mode in [Mode::Eval, Mode::Seq, Mode::Tree] {
+            let a = run::<Rational>(300, mode);
+            let b = run::<PlainRational>(300, mode);
+            assert_eq!(a.count_nonneg, b.count_nonneg);
+            assert_eq!(
+                a.sum.map(|s| s.to_big_rational()),
+                b.sum.map(|s| s.to_big_rational())
+            );
+        }
+    }
+
+    #[test]
+    fn tree_and_seq_sums_agree() {
+        let t = run::<Rational>(500, Mode::Tree).sum.unwrap();
+        let s = run::<Rational>(500, Mode::Seq).sum.unwrap();
+        assert_eq!(t, s);
+        assert!(t.is_canonical());
+    }
+}
