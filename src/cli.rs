@@ -19,6 +19,16 @@ pub struct Cli {
 /// The subcommands.
 #[derive(Debug, Subcommand)]
 pub enum Command {
+    /// Check the built-in claim catalogue (every statement of the source papers) and print each
+    /// verdict with its method and evidence. Exit 0 when every verdict is the expected one.
+    Verify {
+        /// Print a JSON array (objects with id, verdict, method, evidence, ...) instead of a table.
+        #[arg(long)]
+        json: bool,
+        /// Only the claims whose id starts with this prefix (e.g. `juttler`).
+        #[arg(long)]
+        only: Option<String>,
+    },
     /// Run a benchmark workload and print its check values and time.
     Bench {
         /// Which workload.
@@ -62,7 +72,7 @@ pub enum ScalarChoice {
 pub fn main() -> ExitCode {
     let cli = Cli::parse();
     match run(cli) {
-        Ok(()) => ExitCode::SUCCESS,
+        Ok(code) => code,
         Err(e) => {
             eprintln!("exactcheck: error: {e}");
             ExitCode::from(2)
@@ -71,8 +81,22 @@ pub fn main() -> ExitCode {
 }
 
 /// Runs a parsed command line.
-pub fn run(cli: Cli) -> Result<(), crate::Error> {
+pub fn run(cli: Cli) -> Result<ExitCode, crate::Error> {
     match cli.command {
+        Command::Verify { json, only } => {
+            let rows = crate::claims::verify(only.as_deref())?;
+            if json {
+                let arr: Vec<_> = rows.iter().map(|r| r.to_json()).collect();
+                println!("{}", serde_json::Value::Array(arr));
+            } else {
+                println!("{}", crate::claims::table(&rows));
+            }
+            Ok(if rows.iter().all(|r| r.as_expected()) {
+                ExitCode::SUCCESS
+            } else {
+                ExitCode::from(1)
+            })
+        }
         Command::Bench {
             workload:
                 Workload::W2 {
@@ -87,9 +111,9 @@ pub fn run(cli: Cli) -> Result<(), crate::Error> {
                 ScalarChoice::Plain => bench_w2::<PlainRational>(n, mode, "plain", json),
             };
             println!("{text}");
-            Ok(())
+            Ok(ExitCode::SUCCESS)
         }
-        Command::Regress(args) => crate::regress::run(&args),
+        Command::Regress(args) => crate::regress::run(&args).map(|()| ExitCode::SUCCESS),
     }
 }
 

@@ -5,9 +5,15 @@
 //! side and the float-vs-exact harness in `exactcheck-float`.
 #![warn(missing_docs)]
 
+pub mod claims;
 pub mod cli;
 pub mod error;
 pub mod regress;
 pub mod w2;
 
 pub use error::Error;
+
+/// The README's examples, compiled and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;

@@ -10,6 +10,7 @@
 pub mod bernstein;
 pub mod bezier;
 pub mod cylinder_sphere;
+pub mod quadric;
 pub mod scalar;
 pub mod vector;
 

@@ -5,8 +5,12 @@
 //! fields, polynomials, finite fields and the proof engines.
 #![warn(missing_docs)]
 
+pub mod expr;
 pub mod gcd;
+pub mod modp;
 pub mod plain;
+pub mod poly;
+pub mod radical;
 pub mod rational;
 pub mod traits;
 

@@ -79,6 +79,13 @@ pub trait Formula {
     ///
     /// Divide with `checked_div` / `inv` and `?` (see the module docs); do not panic.
     fn eval<T: OrderedField>(&self, x: &[T]) -> Result<Vec<T>, ZeroDivisor>;
+
+    /// The float side: by default the same generic [`Formula::eval`] at `f64`. Override it to
+    /// regress existing float code (not written generically) against the generic exact
+    /// reference `eval`; it must compute the same mathematical function.
+    fn eval_f64(&self, x: &[f64]) -> Result<Vec<f64>, ZeroDivisor> {
+        self.eval::<f64>(x)
+    }
 }
 
 impl<F: Formula + ?Sized> Formula for &F {
@@ -90,6 +97,9 @@ impl<F: Formula + ?Sized> Formula for &F {
     }
     fn eval<T: OrderedField>(&self, x: &[T]) -> Result<Vec<T>, ZeroDivisor> {
         (**self).eval(x)
+    }
+    fn eval_f64(&self, x: &[f64]) -> Result<Vec<f64>, ZeroDivisor> {
+        (**self).eval_f64(x)
     }
 }
 
@@ -230,7 +240,7 @@ fn evaluate<E: ExactScalar>(
         .eval(&exact_in)
         .map_err(|ZeroDivisor| CaseError::OutsideDomain)?;
     let exact: Vec<BigRational> = exact_out.iter().map(E::to_big_rational).collect();
-    let float = formula.eval::<f64>(x).ok();
+    let float = formula.eval_f64(x).ok();
     let failure = match &float {
         Some(f) => f.len() != exact.len() || f.iter().any(|v| !v.is_finite()),
         None => true,

@@ -1,0 +1,1 @@
+//! Polynomial expressions: parser and printer (being written).

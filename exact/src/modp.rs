@@ -1,0 +1,1 @@
+//! Integers modulo 2^61 - 1 (being written).

@@ -1,0 +1,1 @@
+//! Sparse multivariate polynomials (being written).

@@ -1,0 +1,1 @@
+//! Square-root extensions of Q (being written).

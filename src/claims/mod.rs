@@ -1,0 +1,193 @@
+//! The claim catalogue: every statement of `../shared/SPEC.md` §6 with its printed form (as
+//! data), the check that decides it, and the verdict the catalogue expects.
+//!
+//! A verdict is only ever the result of a computation:
+//! * **proved** — the residual expanded to zero over polynomials (modulo the declared relations);
+//! * **holds** — zero on exact instances and/or random evaluations modulo a prime, with the
+//!   error bound stated in the evidence;
+//! * **fails** — an exact counter-example, the residual's value there, and the corrected form.
+//!
+//! One module per source document.
+
+pub mod juttler;
+
+use serde_json::{json, Value};
+use std::fmt;
+use std::time::Instant;
+
+/// The verdict on a claim.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Verdict {
+    /// True for all inputs: the residual expanded to zero.
+    Proved,
+    /// True on every exact instance and random evaluation tried (error bound stated).
+    Holds,
+    /// False: an exact counter-example was found.
+    Fails,
+}
+
+impl fmt::Display for Verdict {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Verdict::Proved => "proved",
+            Verdict::Holds => "holds",
+            Verdict::Fails => "fails",
+        })
+    }
+}
+
+/// What a check found.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Outcome {
+    /// The verdict.
+    pub verdict: Verdict,
+    /// How it was decided (e.g. "symbolic expansion over Q[p0..p3]").
+    pub method: String,
+    /// The evidence: term counts, instance counts and error bounds, or the counter-example, the
+    /// residual there and the corrected form.
+    pub evidence: String,
+}
+
+/// A claim of the catalogue.
+pub struct Claim {
+    /// The stable identifier of SPEC §6.
+    pub id: &'static str,
+    /// The statement as printed in the source (data, never "fixed" silently).
+    pub statement: &'static str,
+    /// The verdict the catalogue expects (what `verify` compares against).
+    pub expected: Verdict,
+    /// The computation that decides the claim.
+    pub check: fn() -> Result<Outcome, String>,
+}
+
+/// The whole catalogue, in SPEC order.
+pub fn catalogue() -> Vec<Claim> {
+    juttler::claims()
+}
+
+/// A checked claim.
+pub struct Checked {
+    /// The claim.
+    pub id: &'static str,
+    /// The printed statement.
+    pub statement: &'static str,
+    /// The expected verdict.
+    pub expected: Verdict,
+    /// What the check found, or why it could not run.
+    pub outcome: Result<Outcome, String>,
+    /// Seconds the check took.
+    pub seconds: f64,
+}
+
+impl Checked {
+    /// Whether the verdict is the one the catalogue expects.
+    pub fn as_expected(&self) -> bool {
+        matches!(&self.outcome, Ok(o) if o.verdict == self.expected)
+    }
+
+    /// The JSON object of DESIGN.md (`id`, `verdict`, `method`, `evidence`, plus more).
+    pub fn to_json(&self) -> Value {
+        match &self.outcome {
+            Ok(o) => json!({
+                "id": self.id,
+                "verdict": o.verdict.to_string(),
+                "method": o.method,
+                "evidence": o.evidence,
+                "expected": self.expected.to_string(),
+                "as_expected": self.as_expected(),
+                "statement": self.statement,
+                "seconds": self.seconds,
+            }),
+            Err(e) => json!({
+                "id": self.id,
+                "verdict": "error",
+                "method": "",
+                "evidence": e,
+                "expected": self.expected.to_string(),
+                "as_expected": false,
+                "statement": self.statement,
+                "seconds": self.seconds,
+            }),
+        }
+    }
+}
+
+/// Checks every claim whose id starts with `prefix` (all when `None`).
+///
+/// # Errors
+/// When a prefix is given and no claim id starts with it.
+pub fn verify(prefix: Option<&str>) -> Result<Vec<Checked>, crate::Error> {
+    let claims: Vec<Claim> = catalogue()
+        .into_iter()
+        .filter(|c| prefix.is_none_or(|p| c.id.starts_with(p)))
+        .collect();
+    if claims.is_empty() {
+        let known: Vec<&str> = catalogue().iter().map(|c| c.id).collect();
+        return Err(crate::Error::Usage(format!(
+            "no claim id starts with {:?} (claims: {})",
+            prefix.unwrap_or(""),
+            known.join(", ")
+        )));
+    }
+    Ok(claims
+        .into_iter()
+        .map(|c| {
+            let start = Instant::now();
+            let outcome = (c.check)();
+            Checked {
+                id: c.id,
+                statement: c.statement,
+                expected: c.expected,
+                outcome,
+                seconds: start.elapsed().as_secs_f64(),
+            }
+        })
+        .collect())
+}
+
+/// The readable table of `verify`: id, verdict, method, evidence (wrapped), and a summary line.
+pub fn table(rows: &[Checked]) -> String {
+    let idw = rows.iter().map(|r| r.id.len()).max().unwrap_or(2).max(2);
+    let mut s = format!(
+        "{:idw$}  {:8}  {:38}  evidence\n",
+        "id", "verdict", "method"
+    );
+    for r in rows {
+        let (verdict, method, evidence) = match &r.outcome {
+            Ok(o) => (o.verdict.to_string(), o.method.clone(), o.evidence.clone()),
+            Err(e) => ("error".to_string(), String::new(), e.clone()),
+        };
+        let mark = if r.as_expected() {
+            ""
+        } else {
+            "  << expected "
+        };
+        let mut lines = evidence.lines();
+        s += &format!(
+            "{:idw$}  {:8}  {:38}  {}{}{}\n",
+            r.id,
+            verdict,
+            method,
+            lines.next().unwrap_or(""),
+            mark,
+            if r.as_expected() {
+                String::new()
+            } else {
+                r.expected.to_string()
+            }
+        );
+        for l in lines {
+            s += &format!("{:idw$}  {:8}  {:38}  {}\n", "", "", "", l);
+        }
+    }
+    let ok = rows.iter().filter(|r| r.as_expected()).count();
+    s += &format!("{} claims, {} as expected", rows.len(), ok);
+    for v in [Verdict::Proved, Verdict::Holds, Verdict::Fails] {
+        let n = rows
+            .iter()
+            .filter(|r| matches!(&r.outcome, Ok(o) if o.verdict == v))
+            .count();
+        s += &format!(", {n} {v}");
+    }
+    s
+}
