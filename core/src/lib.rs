@@ -10,8 +10,10 @@
 pub mod bernstein;
 pub mod bezier;
 pub mod cylinder_sphere;
+pub mod linalg;
 pub mod quadric;
 pub mod scalar;
+pub mod sphere_interpolation;
 pub mod vector;
 
 pub use bernstein::{Bernstein, ShapeError};

@@ -4,7 +4,8 @@
 //! (5), the hyperbolic paraboloid H is `h0 h3 = h1 h2` (6). Every map here is division-free, so
 //! it runs over any [`Ring`] — over polynomials it proves the identities by expansion.
 
-use crate::scalar::Ring;
+use crate::bernstein::Bernstein;
+use crate::scalar::{Field, Ring};
 use crate::vector::Hom4;
 
 /// The quadratic form of the unit sphere K (5): `k0^2 - k1^2 - k2^2 - k3^2` (zero on K).
@@ -45,9 +46,116 @@ pub fn dietz<T: Ring>(q: &Hom4<T>) -> Hom4<T> {
     )
 }
 
+/// The stereographic projection sigma (10) of the plane P (`p3 = 0`) onto K from the centre
+/// `z = (1, 0, 0, 1)`: `sigma(p) = (p0^2+p1^2+p2^2, 2 p0 p1, 2 p0 p2, p1^2+p2^2-p0^2)`.
+/// (`p3` is ignored: sigma is defined on P.)
+pub fn sigma<T: Ring>(p: &Hom4<T>) -> Hom4<T> {
+    let [p0, p1, p2, _] = &p.0;
+    let (s0, s1, s2) = (p0.square(), p1.square(), p2.square());
+    let two = T::from_i64(2);
+    Hom4::new(
+        s0.add_ref(&s1) + &s2,
+        p0.mul_ref(p1) * &two,
+        p0.mul_ref(p2) * &two,
+        s1 + &s2 - &s0,
+    )
+}
+
+/// The inverse of sigma as printed: `sigma^-1(k) = (k0 - k3, k1, k2, 0)` (SPEC §1).
+pub fn sigma_inverse<T: Ring>(k: &Hom4<T>) -> Hom4<T> {
+    let [k0, k1, k2, k3] = &k.0;
+    Hom4::new(k0.sub_ref(k3), k1.clone(), k2.clone(), T::zero())
+}
+
+/// theta (11): `theta(p) = (p0^2+p3^2, p0 p1 - p2 p3, p0 p2 + p1 p3, 0)`; delta = sigma o theta
+/// (Satz 3).
+pub fn theta<T: Ring>(p: &Hom4<T>) -> Hom4<T> {
+    let [p0, p1, p2, p3] = &p.0;
+    Hom4::new(
+        p0.square() + p3.square(),
+        p0.mul_ref(p1) - p2.mul_ref(p3),
+        p0.mul_ref(p2) + p1.mul_ref(p3),
+        T::zero(),
+    )
+}
+
+/// The point `lambda (p0, p1, p2, 0) + mu (0, p2, -p1, p0)` of the line (12), the theta-preimage
+/// of `p = (p0, p1, p2, 0)` (Lemma 4).
+pub fn theta_preimage_point<T: Ring>(p: &Hom4<T>, lambda: &T, mu: &T) -> Hom4<T> {
+    let [p0, p1, p2, _] = &p.0;
+    Hom4::new(
+        lambda.mul_ref(p0),
+        lambda.mul_ref(p1) + mu.mul_ref(p2),
+        lambda.mul_ref(p2) - mu.mul_ref(p1),
+        mu.mul_ref(p0),
+    )
+}
+
+/// psi (15), the generalized stereographic projection onto H; the same map as [`dietz`].
+pub fn psi<T: Ring>(q: &Hom4<T>) -> Hom4<T> {
+    dietz(q)
+}
+
+/// tau (16), the stereographic projection of the plane R (`q3 = q0`) onto H from
+/// `c = (0, 0, 0, 1)`: `tau(q) = (q0^2, q0 q1, q0 q2, q1 q2)`.
+pub fn tau<T: Ring>(q: &Hom4<T>) -> Hom4<T> {
+    let [q0, q1, q2, _] = &q.0;
+    Hom4::new(q0.square(), q0.mul_ref(q1), q0.mul_ref(q2), q1.mul_ref(q2))
+}
+
+/// alpha (17): `alpha(q) = (q0 q3, q1 q3, q0 q2, q0 q3)`; psi = tau o alpha (Satz 9).
+pub fn alpha<T: Ring>(q: &Hom4<T>) -> Hom4<T> {
+    let [q0, q1, q2, q3] = &q.0;
+    let q0q3 = q0.mul_ref(q3);
+    Hom4::new(q0q3.clone(), q1.mul_ref(q3), q0.mul_ref(q2), q0q3)
+}
+
+/// The point `lambda (q0, q1, q2, q0) + mu (q0, q1, 0, 0)` of the line (18), the alpha-preimage
+/// of `q = (q0, q1, q2, q0)` (Lemma 10).
+pub fn alpha_preimage_point<T: Ring>(q: &Hom4<T>, lambda: &T, mu: &T) -> Hom4<T> {
+    let [q0, q1, q2, _] = &q.0;
+    let lm = lambda.add_ref(mu);
+    Hom4::new(
+        lm.mul_ref(q0),
+        lm.mul_ref(q1),
+        lambda.mul_ref(q2),
+        lambda.mul_ref(q0),
+    )
+}
+
+/// The delta-image (Satz 1) of a rational curve given by the Bernstein forms of its four
+/// homogeneous coordinates, all of degree n: the four coordinates of degree 2n of the image on
+/// K, by the product rule.
+///
+/// # Panics
+/// When the four inputs differ in degree (callers build them with one degree).
+pub fn lebesgue_curve<T: Field>(x: &[Bernstein<T>; 4]) -> [Bernstein<T>; 4] {
+    let sq: Vec<Bernstein<T>> = x.iter().map(|c| c.mul(c)).collect();
+    let prod = |a: usize, b: usize| x[a].mul(&x[b]).scale(&T::from_i64(2));
+    let add = |a: &Bernstein<T>, b: &Bernstein<T>| a.checked_add(b).expect("equal degrees");
+    let sub = |a: &Bernstein<T>, b: &Bernstein<T>| a.checked_sub(b).expect("equal degrees");
+    [
+        add(&add(&sq[0], &sq[1]), &add(&sq[2], &sq[3])),
+        sub(&prod(0, 1), &prod(2, 3)),
+        add(&prod(0, 2), &prod(1, 3)),
+        sub(&add(&sq[1], &sq[2]), &add(&sq[0], &sq[3])),
+    ]
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn maps_on_a_sample_point() {
+        let p = Hom4([1.0, 2.0, 3.0, 0.0]);
+        // Satz 2 at one point: delta on p3 = 0 is sigma.
+        assert_eq!(sigma(&p), lebesgue(&p));
+        assert!(sigma_inverse(&sigma(&p)).proj_eq(&p));
+        let q = Hom4([2.0, -1.0, 3.0, 5.0]);
+        assert!(sigma(&theta(&q)).proj_eq(&lebesgue(&q)));
+        assert!(tau(&alpha(&q)).proj_eq(&psi(&q)));
+    }
 
     #[test]
     fn pythagorean_quadruples() {
