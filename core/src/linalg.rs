@@ -177,11 +177,11 @@ impl<T: Field> Matrix<T> {
             return Err(MatrixError::Shape);
         }
         let mut aug = Matrix::zeros(self.rows, self.cols + 1);
-        for i in 0..self.rows {
+        for (i, bi) in b.iter().enumerate() {
             for j in 0..self.cols {
                 aug.set(i, j, self.get(i, j).clone());
             }
-            aug.set(i, self.cols, b[i].clone());
+            aug.set(i, self.cols, bi.clone());
         }
         let (r, pivots) = aug.rref();
         if pivots.last() == Some(&self.cols) {

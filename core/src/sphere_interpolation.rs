@@ -17,7 +17,7 @@ use crate::bernstein::Bernstein;
 use crate::bezier::RationalBezierCurve;
 use crate::linalg::Matrix;
 use crate::quadric::{lebesgue, lebesgue_curve, sigma, sigma_inverse, sphere_form};
-use crate::scalar::{Field, Ring};
+use crate::scalar::Field;
 use crate::vector::Hom4;
 
 /// Why an interpolation problem was rejected.
@@ -266,6 +266,7 @@ pub fn sigma_degree<T: Field>(points: &[Hom4<T>], params: &[T]) -> Option<usize>
 mod tests {
     use super::*;
     use crate::bernstein::test_support::Q;
+    use crate::scalar::Ring;
 
     fn q(n: i128) -> Q {
         Q::new(n, 1)
