@@ -29,6 +29,21 @@ pub enum Command {
         #[arg(long)]
         only: Option<String>,
     },
+    /// Solve one problem given in JSON (a file, or `-` / nothing for standard input) and print
+    /// the answer in JSON. Kinds and fields: see the README.
+    Solve {
+        /// The problem file; `-` or absent: standard input.
+        file: Option<String>,
+        /// Exact arithmetic (the default); JSON floating-point literals are refused.
+        #[arg(long, conflicts_with_all = ["float", "both"])]
+        exact: bool,
+        /// f64 arithmetic (JSON floating-point literals accepted), where the kind allows it.
+        #[arg(long, conflicts_with = "both")]
+        float: bool,
+        /// Exact and f64 side by side, where the kind allows it.
+        #[arg(long)]
+        both: bool,
+    },
     /// Run a benchmark workload and print its check values and time.
     Bench {
         /// Which workload.
@@ -111,6 +126,19 @@ pub fn run(cli: Cli) -> Result<ExitCode, crate::Error> {
                 ScalarChoice::Plain => bench_w2::<PlainRational>(n, mode, "plain", json),
             };
             println!("{text}");
+            Ok(ExitCode::SUCCESS)
+        }
+        Command::Solve { file, exact: _, float, both } => {
+            let mode = if both {
+                crate::solve::Mode::Both
+            } else if float {
+                crate::solve::Mode::Float
+            } else {
+                crate::solve::Mode::Exact
+            };
+            let text = crate::solve::read_problem(file.as_deref())?;
+            let answer = crate::solve::solve(&text, mode)?;
+            println!("{answer:#}");
             Ok(ExitCode::SUCCESS)
         }
         Command::Regress(args) => crate::regress::run(&args).map(|()| ExitCode::SUCCESS),

@@ -7,4 +7,16 @@ pub enum Error {
     /// An argument value is out of range or inconsistent.
     #[error("{0}")]
     Usage(String),
+    /// A problem file or expression is malformed or describes degenerate input; the message
+    /// names the field or position.
+    #[error("{0}")]
+    Input(String),
+    /// Reading a file failed.
+    #[error("cannot read {path}: {source}")]
+    Io {
+        /// The path (or `-` for standard input).
+        path: String,
+        /// The underlying error.
+        source: std::io::Error,
+    },
 }

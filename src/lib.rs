@@ -9,6 +9,7 @@ pub mod claims;
 pub mod cli;
 pub mod error;
 pub mod regress;
+pub mod solve;
 pub mod w2;
 
 pub use error::Error;
