@@ -1,8 +1,12 @@
 //! # exactcheck-exact
 //!
-//! Exact scalars for exactcheck and the procedures built on them: [`PlainRational`], the
-//! unoptimised num-rational baseline; [`Rational`], the fast exact rational field; and (later) square-root
-//! fields, polynomials, finite fields and the proof engines.
+//! Exact scalars for exactcheck and the procedures built on them:
+//! * [`Rational`], the fast exact rational field, and [`PlainRational`], the unoptimised
+//!   num-rational baseline it is measured and cross-checked against;
+//! * [`Radical`], square-root extensions of Q with exact sign, and [`ComplexRadical`] with
+//!   `sqrt(-1)`;
+//! * [`ModP`], integers modulo the Mersenne prime 2^61 - 1, for randomized identity tests;
+//! * sparse multivariate polynomials ([`poly`]) and their expression syntax ([`expr`]).
 #![warn(missing_docs)]
 
 pub mod expr;
@@ -14,6 +18,8 @@ pub mod radical;
 pub mod rational;
 pub mod traits;
 
+pub use modp::ModP;
 pub use plain::PlainRational;
+pub use radical::{ComplexRadical, ParseRadicalError, Radical, Radicand};
 pub use rational::{sum_pairwise, ParseRationalError, Rational};
 pub use traits::RationalScalar;
