@@ -29,6 +29,9 @@ pub enum Command {
         #[arg(long)]
         only: Option<String>,
     },
+    /// Prove a polynomial identity LHS = RHS, for all values or modulo relations (`--where`):
+    /// `proved`, or `fails` with an exact counter-example and what the sides differ by.
+    Prove(crate::prove_cmd::ProveArgs),
     /// Solve one problem given in JSON (a file, or `-` / nothing for standard input) and print
     /// the answer in JSON. Kinds and fields: see the README.
     Solve {
@@ -128,7 +131,12 @@ pub fn run(cli: Cli) -> Result<ExitCode, crate::Error> {
             println!("{text}");
             Ok(ExitCode::SUCCESS)
         }
-        Command::Solve { file, exact: _, float, both } => {
+        Command::Solve {
+            file,
+            exact: _,
+            float,
+            both,
+        } => {
             let mode = if both {
                 crate::solve::Mode::Both
             } else if float {
@@ -141,6 +149,7 @@ pub fn run(cli: Cli) -> Result<ExitCode, crate::Error> {
             println!("{answer:#}");
             Ok(ExitCode::SUCCESS)
         }
+        Command::Prove(args) => crate::prove_cmd::run(&args),
         Command::Regress(args) => crate::regress::run(&args).map(|()| ExitCode::SUCCESS),
     }
 }

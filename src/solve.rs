@@ -47,10 +47,16 @@ pub fn read_problem(path: Option<&str>) -> Result<String, Error> {
             let mut s = String::new();
             std::io::stdin()
                 .read_to_string(&mut s)
-                .map_err(|source| Error::Io { path: "-".into(), source })?;
+                .map_err(|source| Error::Io {
+                    path: "-".into(),
+                    source,
+                })?;
             Ok(s)
         }
-        Some(p) => std::fs::read_to_string(p).map_err(|source| Error::Io { path: p.into(), source }),
+        Some(p) => std::fs::read_to_string(p).map_err(|source| Error::Io {
+            path: p.into(),
+            source,
+        }),
     }
 }
 
@@ -60,8 +66,11 @@ pub fn read_problem(path: Option<&str>) -> Result<String, Error> {
 /// [`Error::Input`] naming the field for malformed JSON, an unknown kind, wrong arity, bad
 /// numbers, division by zero or degenerate geometry.
 pub fn solve(text: &str, mode: Mode) -> Result<Value, Error> {
-    let v: Value = serde_json::from_str(text).map_err(|e| Error::Input(format!("malformed JSON: {e}")))?;
-    let obj = v.as_object().ok_or_else(|| Error::Input("the problem must be a JSON object".into()))?;
+    let v: Value =
+        serde_json::from_str(text).map_err(|e| Error::Input(format!("malformed JSON: {e}")))?;
+    let obj = v
+        .as_object()
+        .ok_or_else(|| Error::Input("the problem must be a JSON object".into()))?;
     let kind = obj
         .get("kind")
         .ok_or_else(|| Error::Input("missing field \"kind\"".into()))?
@@ -70,11 +79,19 @@ pub fn solve(text: &str, mode: Mode) -> Result<Value, Error> {
     match KINDS.iter().find(|(k, _)| *k == kind) {
         None => {
             let known: Vec<&str> = KINDS.iter().map(|(k, _)| *k).collect();
-            Err(Error::Input(format!("unknown kind {kind:?} (kinds: {})", known.join(", "))))
+            Err(Error::Input(format!(
+                "unknown kind {kind:?} (kinds: {})",
+                known.join(", ")
+            )))
         }
         Some((_, false)) => Err(Error::Input(format!(
             "kind {kind:?} is not answered by this version yet (answered: {})",
-            KINDS.iter().filter(|k| k.1).map(|k| k.0).collect::<Vec<_>>().join(", ")
+            KINDS
+                .iter()
+                .filter(|k| k.1)
+                .map(|k| k.0)
+                .collect::<Vec<_>>()
+                .join(", ")
         ))),
         Some(_) => match kind {
             "sphere_interpolation" => sphere_interpolation(obj, mode),
@@ -107,9 +124,14 @@ fn array<'a>(obj: &'a Map<String, Value>, field: &str) -> Result<&'a Vec<Value>,
 }
 
 fn vec3(v: &Value, field: &str) -> Result<Vec3<Radical>, Error> {
-    let a = v.as_array().ok_or_else(|| Error::Input(format!("{field}: expected an array of 3 numbers")))?;
+    let a = v
+        .as_array()
+        .ok_or_else(|| Error::Input(format!("{field}: expected an array of 3 numbers")))?;
     if a.len() != 3 {
-        return Err(Error::Input(format!("{field}: expected 3 coordinates, found {}", a.len())));
+        return Err(Error::Input(format!(
+            "{field}: expected 3 coordinates, found {}",
+            a.len()
+        )));
     }
     Ok(Vec3::new(
         exact_number(&a[0], &format!("{field}[0]"))?,
@@ -148,12 +170,20 @@ fn sphere_interpolation(obj: &Map<String, Value>, mode: Mode) -> Result<Value, E
     }
     let pts = array(obj, "points")?;
     let prm = array(obj, "params")?;
-    let points: Vec<Vec3<Radical>> =
-        pts.iter().enumerate().map(|(i, p)| vec3(p, &format!("points[{i}]"))).collect::<Result<_, _>>()?;
-    let params: Vec<Radical> =
-        prm.iter().enumerate().map(|(i, t)| exact_number(t, &format!("params[{i}]"))).collect::<Result<_, _>>()?;
+    let points: Vec<Vec3<Radical>> = pts
+        .iter()
+        .enumerate()
+        .map(|(i, p)| vec3(p, &format!("points[{i}]")))
+        .collect::<Result<_, _>>()?;
+    let params: Vec<Radical> = prm
+        .iter()
+        .enumerate()
+        .map(|(i, t)| exact_number(t, &format!("params[{i}]")))
+        .collect::<Result<_, _>>()?;
     // Rational input runs over the (faster) rationals; radicals over the radical field.
-    let rational = points.iter().all(|p| p.x.is_rational() && p.y.is_rational() && p.z.is_rational())
+    let rational = points
+        .iter()
+        .all(|p| p.x.is_rational() && p.y.is_rational() && p.z.is_rational())
         && params.iter().all(Radical::is_rational);
     if rational {
         let r = |x: &Radical| x.to_rational().unwrap_or_default();
@@ -175,7 +205,10 @@ fn interpolation_answer<T: Printable>(points: &[Vec3<T>], params: &[T]) -> Resul
         None => Value::Null,
     };
     // The exact check the answer promises: at each parameter the curve is the given point.
-    let passes = hom.iter().zip(params).all(|(k, t)| r.curve.eval_hom(t).proj_eq(k));
+    let passes = hom
+        .iter()
+        .zip(params)
+        .all(|(k, t)| r.curve.eval_hom(t).proj_eq(k));
     Ok(json!({
         "kind": "sphere_interpolation",
         "mode": "exact",

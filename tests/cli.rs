@@ -112,7 +112,12 @@ fn solve_stdin(problem: &str, extra: &[&str]) -> Output {
         .stderr(std::process::Stdio::piped())
         .spawn()
         .expect("the binary runs");
-    child.stdin.take().expect("stdin").write_all(problem.as_bytes()).expect("write");
+    child
+        .stdin
+        .take()
+        .expect("stdin")
+        .write_all(problem.as_bytes())
+        .expect("write");
     child.wait_with_output().expect("finishes")
 }
 
@@ -121,21 +126,44 @@ fn solve_sphere_interpolation_passes_through_the_points() {
     use exactcheck_core::{Hom4, RationalBezierCurve, Vec3};
     use exactcheck_exact::radical::Radical;
     let cases = [
-        (r#"[["9/11","6/11","-2/11"],["1/3","-2/3","2/3"]]"#, r#"[0, 1]"#),
-        (r#"[["9/11","6/11","-2/11"],["1/3","-2/3","2/3"],[0,0,1],["3/5","4/5",0]]"#, r#"[0,"1/3","2/3",1]"#),
-        (r#"[["9/11","6/11","-2/11"],["1/3","-2/3","2/3"],[0,0,-1],["3/5","4/5",0],["2/7","3/7","6/7"]]"#, r#"[0,"1/4","1/2","3/4",1]"#),
-        (r#"[["1/sqrt(2)","1/sqrt(2)",0],[0,"sqrt(3)/2","1/2"],[1,0,0]]"#, r#"[0,"1/2",1]"#),
+        (
+            r#"[["9/11","6/11","-2/11"],["1/3","-2/3","2/3"]]"#,
+            r#"[0, 1]"#,
+        ),
+        (
+            r#"[["9/11","6/11","-2/11"],["1/3","-2/3","2/3"],[0,0,1],["3/5","4/5",0]]"#,
+            r#"[0,"1/3","2/3",1]"#,
+        ),
+        (
+            r#"[["9/11","6/11","-2/11"],["1/3","-2/3","2/3"],[0,0,-1],["3/5","4/5",0],["2/7","3/7","6/7"]]"#,
+            r#"[0,"1/4","1/2","3/4",1]"#,
+        ),
+        (
+            r#"[["1/sqrt(2)","1/sqrt(2)",0],[0,"sqrt(3)/2","1/2"],[1,0,0]]"#,
+            r#"[0,"1/2",1]"#,
+        ),
     ];
     for (points, params) in cases {
-        let problem = format!(r#"{{"kind":"sphere_interpolation","points":{points},"params":{params}}}"#);
+        let problem =
+            format!(r#"{{"kind":"sphere_interpolation","points":{points},"params":{params}}}"#);
         let o = solve_stdin(&problem, &[]);
         assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
         let answer: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON");
         assert_eq!(answer["kind"], "sphere_interpolation");
         assert_eq!(answer["mode"], "exact");
         // Rebuild the curve from the printed exact numbers and evaluate it at each parameter.
-        let num = |v: &serde_json::Value| v.as_str().expect("string").parse::<Radical>().expect("parses back");
-        let weights: Vec<Radical> = answer["weights"].as_array().unwrap().iter().map(num).collect();
+        let num = |v: &serde_json::Value| {
+            v.as_str()
+                .expect("string")
+                .parse::<Radical>()
+                .expect("parses back")
+        };
+        let weights: Vec<Radical> = answer["weights"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(num)
+            .collect();
         let pts: Vec<Vec3<Radical>> = answer["points"]
             .as_array()
             .unwrap()
@@ -152,9 +180,18 @@ fn solve_sphere_interpolation_passes_through_the_points() {
             serde_json::Value::String(s) => s.parse::<Radical>().unwrap(),
             other => other.as_i64().unwrap().into(),
         };
-        for (p, t) in given.as_array().unwrap().iter().zip(given_params.as_array().unwrap()) {
+        for (p, t) in given
+            .as_array()
+            .unwrap()
+            .iter()
+            .zip(given_params.as_array().unwrap())
+        {
             let a = p.as_array().unwrap();
-            let k = Hom4::from_point(&Vec3::new(as_exact(&a[0]), as_exact(&a[1]), as_exact(&a[2])));
+            let k = Hom4::from_point(&Vec3::new(
+                as_exact(&a[0]),
+                as_exact(&a[1]),
+                as_exact(&a[2]),
+            ));
             assert!(curve.eval_hom(&as_exact(t)).proj_eq(&k), "{problem}");
         }
         let degree = answer["degree"].as_u64().unwrap();
@@ -171,12 +208,30 @@ fn solve_rejects_bad_problems_with_status_2() {
         (r#"{"kind":"nope"}"#, "unknown kind"),
         (r#"not json"#, "malformed JSON"),
         (r#"{"points":[]}"#, "missing field \"kind\""),
-        (r#"{"kind":"sphere_interpolation","points":[[0.5,0.5,0]],"params":[0]}"#, "floating-point"),
-        (r#"{"kind":"sphere_interpolation","points":[[1,1,0]],"params":[0]}"#, "not on the unit sphere"),
-        (r#"{"kind":"sphere_interpolation","points":[[1,0,0],[0,1,0]],"params":[0,0]}"#, "are equal"),
-        (r#"{"kind":"sphere_interpolation","points":[["1/0",0,0]],"params":[0]}"#, "division by zero"),
-        (r#"{"kind":"sphere_interpolation","points":[[1,0]],"params":[0]}"#, "expected 3 coordinates"),
-        (r#"{"kind":"sphere_interpolation","points":[[1,0,0]],"params":[0,1]}"#, "1 points but 2 parameters"),
+        (
+            r#"{"kind":"sphere_interpolation","points":[[0.5,0.5,0]],"params":[0]}"#,
+            "floating-point",
+        ),
+        (
+            r#"{"kind":"sphere_interpolation","points":[[1,1,0]],"params":[0]}"#,
+            "not on the unit sphere",
+        ),
+        (
+            r#"{"kind":"sphere_interpolation","points":[[1,0,0],[0,1,0]],"params":[0,0]}"#,
+            "are equal",
+        ),
+        (
+            r#"{"kind":"sphere_interpolation","points":[["1/0",0,0]],"params":[0]}"#,
+            "division by zero",
+        ),
+        (
+            r#"{"kind":"sphere_interpolation","points":[[1,0]],"params":[0]}"#,
+            "expected 3 coordinates",
+        ),
+        (
+            r#"{"kind":"sphere_interpolation","points":[[1,0,0]],"params":[0,1]}"#,
+            "1 points but 2 parameters",
+        ),
     ] {
         let o = solve_stdin(problem, &[]);
         assert_eq!(o.status.code(), Some(2), "{problem}");

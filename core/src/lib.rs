@@ -19,4 +19,4 @@ pub mod vector;
 pub use bernstein::{Bernstein, ShapeError};
 pub use bezier::{BezierCurve, RationalBezierCurve, TensorPatch};
 pub use scalar::{binomial, Field, OrderedField, Ring, Sign, Sqrt, ZeroDivisor};
-pub use vector::{Hom4, Vec3};
+pub use vector::{det4, Hom4, Vec3};

@@ -241,9 +241,19 @@ pub fn sigma_degree<T: Field>(points: &[Hom4<T>], params: &[T]) -> Option<usize>
             if p.is_zero() {
                 // k = z, the centre: its sigma-preimage is the line at infinity x0 = 0 of P.
                 let (o, z) = (T::one(), T::zero());
-                conditions(&mut rows, &[vec![z.clone(), o.clone(), z.clone()], vec![z.clone(), z, o]], t, m);
+                conditions(
+                    &mut rows,
+                    &[vec![z.clone(), o.clone(), z.clone()], vec![z.clone(), z, o]],
+                    t,
+                    m,
+                );
             } else {
-                conditions(&mut rows, &[vec![p.0[0].clone(), p.0[1].clone(), p.0[2].clone()]], t, m);
+                conditions(
+                    &mut rows,
+                    &[vec![p.0[0].clone(), p.0[1].clone(), p.0[2].clone()]],
+                    t,
+                    m,
+                );
             }
         }
         let ns = Matrix::from_rows(rows)

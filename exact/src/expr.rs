@@ -1,1 +1,967 @@
-//! Polynomial expressions: parser and printer (being written).
+//! Polynomial expressions: a parser to an AST with positions, the conversion of the AST to a
+//! [`Poly`] over any coefficient type implementing [`Coefficient`], and a printer.
+//!
+//! # Syntax
+//! ```text
+//! sum      := product (('+' | '-') product)*
+//! product  := unary (('*' | '/') unary)*
+//! unary    := ('-' | '+') unary | power
+//! power    := atom ('^' exponent)?
+//! exponent := atom ('^' exponent)?          (right-associative; no sign)
+//! atom     := number | variable | 'sqrt' '(' sum ')' | '(' sum ')'
+//! number   := [0-9]+ ('.' [0-9]+)?           (a decimal is exact: 0.1 = 1/10)
+//! variable := [A-Za-z_][A-Za-z0-9_]*          (except the reserved word sqrt)
+//! ```
+//! White space may appear between tokens. `^` binds tighter than unary minus (`-x^2 = -(x^2)`)
+//! and is right-associative (`x^2^3 = x^8`); its exponent must evaluate to a non-negative integer
+//! constant (at most [`MAX_EXPONENT`]). Fractions are divisions of numbers (`3/4*x`), and in
+//! general a division is allowed only by an expression that evaluates to a non-zero constant.
+//! `sqrt(...)` takes a constant and needs a coefficient field that has the root (over
+//! [`Rational`], only of perfect squares).
+//!
+//! # Conversion
+//! [`Expr::to_poly`] expands bottom-up with the fast polynomial arithmetic of [`crate::poly`]:
+//! sums are added pairwise (balanced), the factors of a product multiplied smallest first with
+//! the constant factors folded into one scalar, powers by binary powering. Variables are looked
+//! up (and added) in a [`Vars`] table, in order of first appearance.
+//!
+//! # Errors
+//! Every error is an [`ExprError`] with the byte position of the offending token or
+//! sub-expression, e.g. `unexpected ')' at 14: expected a number, a variable or '('`. No input
+//! makes the parser or the conversion panic: nesting is limited to [`MAX_DEPTH`] levels and
+//! exponents that would overflow are reported.
+
+use crate::poly::{Poly, Vars};
+use crate::rational::Rational;
+use exactcheck_core::{binomial, Ring};
+use num_traits::{Signed, ToPrimitive};
+use std::fmt;
+use std::str::FromStr;
+
+/// The deepest nesting of parentheses, signs and exponents the parser accepts.
+pub const MAX_DEPTH: usize = 256;
+
+/// The largest exponent accepted after `^`.
+pub const MAX_EXPONENT: u32 = 10_000;
+
+// ------------------------------------------------------------------------------ coefficients
+
+/// What the conversion needs of a coefficient type: the image of a rational number, inverses (for
+/// division by constants) and square roots (for `sqrt`).
+///
+/// Implemented here for [`Rational`]; a square-root field or a finite field implements it beside
+/// its definition (`impl exactcheck_exact::expr::Coefficient for ...`).
+pub trait Coefficient: Ring {
+    /// The image of a rational number, `None` if it has none (e.g. a denominator divisible by the
+    /// characteristic).
+    fn from_rational(q: &Rational) -> Option<Self>;
+    /// The inverse, `None` for zero (or any non-invertible element).
+    fn try_inverse(&self) -> Option<Self>;
+    /// A square root in the type, `None` if there is none.
+    fn try_sqrt(&self) -> Option<Self>;
+    /// Appended to the error message when [`Coefficient::try_sqrt`] fails (e.g. which field
+    /// would have the root); empty by default.
+    fn sqrt_hint() -> &'static str {
+        ""
+    }
+}
+
+impl Coefficient for Rational {
+    fn from_rational(q: &Rational) -> Option<Self> {
+        Some(q.clone())
+    }
+    fn try_inverse(&self) -> Option<Self> {
+        self.recip().ok()
+    }
+    /// The non-negative root of a rational whose numerator and denominator are perfect squares.
+    fn try_sqrt(&self) -> Option<Self> {
+        let (n, d) = (self.numer(), self.denom());
+        if n.is_negative() {
+            return None;
+        }
+        let (rn, rd) = (n.sqrt(), d.sqrt());
+        if &rn * &rn == n && &rd * &rd == d {
+            Some(Rational::from(num_rational::BigRational::new(rn, rd)))
+        } else {
+            None
+        }
+    }
+    fn sqrt_hint() -> &'static str {
+        " (it is irrational: a radical coefficient field is needed)"
+    }
+}
+
+// ------------------------------------------------------------------------------ AST
+
+/// `+` or `-` in a sum.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum AddOp {
+    /// Addition.
+    Plus,
+    /// Subtraction.
+    Minus,
+}
+
+/// `*` or `/` in a product.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum MulOp {
+    /// Multiplication.
+    Times,
+    /// Division (by a non-zero constant).
+    Divide,
+}
+
+/// A parsed expression: a node and the byte position where it starts in the source.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Expr {
+    /// What the node is.
+    pub kind: ExprKind,
+    /// The byte offset of its first token in the source (0 for built nodes, if one likes).
+    pub pos: usize,
+}
+
+/// The kinds of [`Expr`] nodes. Sums and products are n-ary, so long chains stay shallow.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ExprKind {
+    /// A number (the parser produces non-negative integers and decimals).
+    Number(Rational),
+    /// A variable by name.
+    Var(String),
+    /// Unary minus.
+    Neg(Box<Expr>),
+    /// `t_0 op_1 t_1 op_2 t_2 ...`; the first operator applies to the first term (the parser
+    /// always gives `Plus` there).
+    Sum(Vec<(AddOp, Expr)>),
+    /// `f_0 op_1 f_1 ...`; the first operator applies to the first factor (`Divide` there means
+    /// `1 / f_0`; the parser always gives `Times`).
+    Product(Vec<(MulOp, Expr)>),
+    /// `base ^ exponent`.
+    Pow(Box<Expr>, Box<Expr>),
+    /// `sqrt(arg)`.
+    Sqrt(Box<Expr>),
+}
+
+impl Expr {
+    /// A node at position 0 (for building expressions in code).
+    pub fn new(kind: ExprKind) -> Self {
+        Expr { kind, pos: 0 }
+    }
+}
+
+// ------------------------------------------------------------------------------ errors
+
+/// An error of parsing or converting an expression, with the byte position it refers to.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum ExprError {
+    /// A token that does not fit the grammar.
+    #[error("unexpected {found} at {pos}: expected {expected}")]
+    Unexpected {
+        /// Byte position of the token.
+        pos: usize,
+        /// The token, quoted (or `end of input`).
+        found: String,
+        /// What would have fitted.
+        expected: &'static str,
+    },
+    /// Division by an expression that is not constant.
+    #[error("division by a non-constant expression at {pos}")]
+    NonConstantDivisor {
+        /// Byte position of the divisor.
+        pos: usize,
+    },
+    /// Division by an expression that evaluates to zero.
+    #[error("division by zero at {pos}")]
+    DivisionByZero {
+        /// Byte position of the divisor.
+        pos: usize,
+    },
+    /// An exponent that is not a non-negative integer constant.
+    #[error("exponent at {pos} must be a non-negative integer constant, found {found}")]
+    BadExponent {
+        /// Byte position of the exponent.
+        pos: usize,
+        /// The exponent (its expression, or its value).
+        found: String,
+    },
+    /// An exponent above [`MAX_EXPONENT`].
+    #[error("exponent {exponent} at {pos} is too large (at most {max})")]
+    ExponentTooLarge {
+        /// Byte position of the exponent.
+        pos: usize,
+        /// Its value.
+        exponent: String,
+        /// The limit, [`MAX_EXPONENT`].
+        max: u32,
+    },
+    /// A power or product whose exponents would exceed `u32::MAX`.
+    #[error("exponent overflow at {pos}: a variable's exponent would exceed {max}", max = u32::MAX)]
+    ExponentOverflow {
+        /// Byte position of the power or product.
+        pos: usize,
+    },
+    /// `sqrt` of an expression that is not constant.
+    #[error("sqrt of a non-constant expression at {pos}")]
+    NonConstantSqrt {
+        /// Byte position of the argument.
+        pos: usize,
+    },
+    /// `sqrt` of a constant whose root is not in the coefficient field.
+    #[error("sqrt({arg}) at {pos} does not lie in the coefficient field{hint}")]
+    NoSqrt {
+        /// Byte position of the `sqrt`.
+        pos: usize,
+        /// The argument, printed.
+        arg: String,
+        /// The coefficient type's hint ([`Coefficient::sqrt_hint`]).
+        hint: &'static str,
+    },
+    /// A number with no image in the coefficient ring.
+    #[error("the number {number} at {pos} has no image in the coefficient ring")]
+    Unrepresentable {
+        /// Byte position of the number.
+        pos: usize,
+        /// The number.
+        number: String,
+    },
+    /// Nesting deeper than [`MAX_DEPTH`].
+    #[error("expression nested too deeply at {pos} (more than {max} levels)")]
+    TooDeep {
+        /// Byte position where the limit was hit.
+        pos: usize,
+        /// The limit, [`MAX_DEPTH`].
+        max: usize,
+    },
+}
+
+impl ExprError {
+    /// The byte position the error refers to.
+    pub fn position(&self) -> usize {
+        match self {
+            ExprError::Unexpected { pos, .. }
+            | ExprError::NonConstantDivisor { pos }
+            | ExprError::DivisionByZero { pos }
+            | ExprError::BadExponent { pos, .. }
+            | ExprError::ExponentTooLarge { pos, .. }
+            | ExprError::ExponentOverflow { pos }
+            | ExprError::NonConstantSqrt { pos }
+            | ExprError::NoSqrt { pos, .. }
+            | ExprError::Unrepresentable { pos, .. }
+            | ExprError::TooDeep { pos, .. } => *pos,
+        }
+    }
+}
+
+// ------------------------------------------------------------------------------ lexer
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Tok {
+    Num,
+    Ident,
+    Plus,
+    Minus,
+    Star,
+    Slash,
+    Caret,
+    LParen,
+    RParen,
+    End,
+    Bad(char),
+}
+
+#[derive(Clone, Copy, Debug)]
+struct Token {
+    tok: Tok,
+    start: usize,
+    end: usize,
+}
+
+const EXPECT_OPERAND: &str = "a number, a variable or '('";
+const EXPECT_EXPONENT: &str = "a non-negative integer exponent (a number or '(')";
+
+struct Parser<'a> {
+    src: &'a str,
+    cur: Token,
+    depth: usize,
+}
+
+impl<'a> Parser<'a> {
+    fn new(src: &'a str) -> Self {
+        let mut p = Parser {
+            src,
+            cur: Token {
+                tok: Tok::End,
+                start: 0,
+                end: 0,
+            },
+            depth: 0,
+        };
+        p.cur = p.lex(0);
+        p
+    }
+
+    /// The token starting at or after byte `at` (skipping white space).
+    fn lex(&self, at: usize) -> Token {
+        let rest = &self.src[at..];
+        let Some((off, ch)) = rest.char_indices().find(|(_, c)| !c.is_whitespace()) else {
+            return Token {
+                tok: Tok::End,
+                start: self.src.len(),
+                end: self.src.len(),
+            };
+        };
+        let start = at + off;
+        let bytes = self.src.as_bytes();
+        let run = |mut i: usize, ok: fn(u8) -> bool| {
+            while i < bytes.len() && ok(bytes[i]) {
+                i += 1;
+            }
+            i
+        };
+        let (tok, end) = match ch {
+            '0'..='9' => {
+                let mut end = run(start, |b| b.is_ascii_digit());
+                if end + 1 < bytes.len() && bytes[end] == b'.' && bytes[end + 1].is_ascii_digit() {
+                    end = run(end + 1, |b| b.is_ascii_digit());
+                }
+                (Tok::Num, end)
+            }
+            'A'..='Z' | 'a'..='z' | '_' => (
+                Tok::Ident,
+                run(start, |b| b.is_ascii_alphanumeric() || b == b'_'),
+            ),
+            '+' => (Tok::Plus, start + 1),
+            '-' => (Tok::Minus, start + 1),
+            '*' => (Tok::Star, start + 1),
+            '/' => (Tok::Slash, start + 1),
+            '^' => (Tok::Caret, start + 1),
+            '(' => (Tok::LParen, start + 1),
+            ')' => (Tok::RParen, start + 1),
+            c => (Tok::Bad(c), start + c.len_utf8()),
+        };
+        Token { tok, start, end }
+    }
+
+    fn bump(&mut self) {
+        self.cur = self.lex(self.cur.end);
+    }
+
+    fn text(&self, t: Token) -> &'a str {
+        &self.src[t.start..t.end]
+    }
+
+    fn unexpected(&self, expected: &'static str) -> ExprError {
+        let t = self.cur;
+        let found = match t.tok {
+            Tok::End => "end of input".to_string(),
+            Tok::Bad(c) => format!("character '{}'", c.escape_debug()),
+            _ => format!("'{}'", self.text(t)),
+        };
+        ExprError::Unexpected {
+            pos: t.start,
+            found,
+            expected,
+        }
+    }
+
+    fn enter(&mut self) -> Result<(), ExprError> {
+        self.depth += 1;
+        if self.depth > MAX_DEPTH {
+            return Err(ExprError::TooDeep {
+                pos: self.cur.start,
+                max: MAX_DEPTH,
+            });
+        }
+        Ok(())
+    }
+
+    fn leave(&mut self) {
+        self.depth -= 1;
+    }
+
+    fn parse_all(mut self) -> Result<Expr, ExprError> {
+        let e = self.parse_sum()?;
+        if self.cur.tok != Tok::End {
+            return Err(self.unexpected("an operator or end of input"));
+        }
+        Ok(e)
+    }
+
+    fn parse_sum(&mut self) -> Result<Expr, ExprError> {
+        let first = self.parse_product()?;
+        if !matches!(self.cur.tok, Tok::Plus | Tok::Minus) {
+            return Ok(first);
+        }
+        let pos = first.pos;
+        let mut items = vec![(AddOp::Plus, first)];
+        while let Tok::Plus | Tok::Minus = self.cur.tok {
+            let op = if self.cur.tok == Tok::Plus {
+                AddOp::Plus
+            } else {
+                AddOp::Minus
+            };
+            self.bump();
+            items.push((op, self.parse_product()?));
+        }
+        Ok(Expr {
+            kind: ExprKind::Sum(items),
+            pos,
+        })
+    }
+
+    fn parse_product(&mut self) -> Result<Expr, ExprError> {
+        let first = self.parse_unary()?;
+        if !matches!(self.cur.tok, Tok::Star | Tok::Slash) {
+            return Ok(first);
+        }
+        let pos = first.pos;
+        let mut items = vec![(MulOp::Times, first)];
+        while let Tok::Star | Tok::Slash = self.cur.tok {
+            let op = if self.cur.tok == Tok::Star {
+                MulOp::Times
+            } else {
+                MulOp::Divide
+            };
+            self.bump();
+            items.push((op, self.parse_unary()?));
+        }
+        Ok(Expr {
+            kind: ExprKind::Product(items),
+            pos,
+        })
+    }
+
+    fn parse_unary(&mut self) -> Result<Expr, ExprError> {
+        self.enter()?;
+        let r = match self.cur.tok {
+            Tok::Minus | Tok::Plus => {
+                let (pos, neg) = (self.cur.start, self.cur.tok == Tok::Minus);
+                self.bump();
+                self.parse_unary().map(|e| {
+                    if neg {
+                        Expr {
+                            kind: ExprKind::Neg(Box::new(e)),
+                            pos,
+                        }
+                    } else {
+                        e
+                    }
+                })
+            }
+            _ => self.parse_power(),
+        };
+        self.leave();
+        r
+    }
+
+    fn parse_power(&mut self) -> Result<Expr, ExprError> {
+        let base = self.parse_atom(EXPECT_OPERAND)?;
+        self.parse_power_tail(base)
+    }
+
+    /// `'^' exponent` after `base`, if present.
+    fn parse_power_tail(&mut self, base: Expr) -> Result<Expr, ExprError> {
+        if self.cur.tok != Tok::Caret {
+            return Ok(base);
+        }
+        self.bump();
+        self.enter()?;
+        let exp = self.parse_atom(EXPECT_EXPONENT);
+        let exp = exp.and_then(|e| self.parse_power_tail(e));
+        self.leave();
+        let pos = base.pos;
+        Ok(Expr {
+            kind: ExprKind::Pow(Box::new(base), Box::new(exp?)),
+            pos,
+        })
+    }
+
+    fn parse_atom(&mut self, expected: &'static str) -> Result<Expr, ExprError> {
+        let t = self.cur;
+        match t.tok {
+            Tok::Num => {
+                let text = self.text(t);
+                let q = Rational::from_str(text).map_err(|_| self.unexpected(expected))?;
+                self.bump();
+                Ok(Expr {
+                    kind: ExprKind::Number(q),
+                    pos: t.start,
+                })
+            }
+            Tok::Ident if self.text(t) == "sqrt" => {
+                self.bump();
+                if self.cur.tok != Tok::LParen {
+                    return Err(self.unexpected("'(' after sqrt"));
+                }
+                let arg = self.parse_parenthesized()?;
+                Ok(Expr {
+                    kind: ExprKind::Sqrt(Box::new(arg)),
+                    pos: t.start,
+                })
+            }
+            Tok::Ident => {
+                self.bump();
+                Ok(Expr {
+                    kind: ExprKind::Var(self.text(t).to_string()),
+                    pos: t.start,
+                })
+            }
+            Tok::LParen => self.parse_parenthesized(),
+            _ => Err(self.unexpected(expected)),
+        }
+    }
+
+    /// `'(' sum ')'`, the current token being `(`.
+    /// The expression's position becomes that of the `(`.
+    fn parse_parenthesized(&mut self) -> Result<Expr, ExprError> {
+        self.enter()?;
+        let open = self.cur.start;
+        self.bump();
+        let inner = self.parse_sum();
+        self.leave();
+        let inner = inner?;
+        if self.cur.tok != Tok::RParen {
+            return Err(self.unexpected("an operator or ')'"));
+        }
+        self.bump();
+        Ok(Expr { pos: open, ..inner })
+    }
+}
+
+/// Parses an expression to its AST.
+///
+/// # Errors
+/// [`ExprError::Unexpected`] for text that does not fit the grammar, [`ExprError::TooDeep`]
+/// beyond [`MAX_DEPTH`] levels of nesting.
+pub fn parse_expr(text: &str) -> Result<Expr, ExprError> {
+    Parser::new(text).parse_all()
+}
+
+impl FromStr for Expr {
+    type Err = ExprError;
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        parse_expr(s)
+    }
+}
+
+/// Parses an expression and expands it to a polynomial over `C`, looking variables up (and
+/// adding new ones) in `vars`.
+///
+/// # Errors
+/// Every [`ExprError`]: syntax, division by a non-constant or by zero, bad exponents, `sqrt`
+/// outside the coefficient field.
+pub fn parse_poly<C: Coefficient>(text: &str, vars: &mut Vars) -> Result<Poly<C>, ExprError> {
+    parse_expr(text)?.to_poly(vars)
+}
+
+// ------------------------------------------------------------------------------ conversion
+
+impl Expr {
+    /// The polynomial this expression denotes, over `C`; variables are looked up (and added) in
+    /// `vars`.
+    ///
+    /// # Errors
+    /// Division by a non-constant expression or by zero, exponents that are not non-negative
+    /// integer constants (or exceed [`MAX_EXPONENT`], or overflow), `sqrt` of a non-constant or
+    /// of a constant whose root is not in `C`, numbers with no image in `C`.
+    pub fn to_poly<C: Coefficient>(&self, vars: &mut Vars) -> Result<Poly<C>, ExprError> {
+        match &self.kind {
+            ExprKind::Number(q) => {
+                C::from_rational(q)
+                    .map(Poly::constant)
+                    .ok_or_else(|| ExprError::Unrepresentable {
+                        pos: self.pos,
+                        number: q.to_string(),
+                    })
+            }
+            ExprKind::Var(name) => Ok(Poly::var(vars.var(name))),
+            ExprKind::Neg(x) => Ok(-x.to_poly::<C>(vars)?),
+            ExprKind::Sum(items) => {
+                let mut parts = Vec::with_capacity(items.len());
+                for (op, x) in items {
+                    let p = x.to_poly::<C>(vars)?;
+                    parts.push(match op {
+                        AddOp::Plus => p,
+                        AddOp::Minus => -p,
+                    });
+                }
+                Ok(Poly::sum(parts))
+            }
+            ExprKind::Product(items) => {
+                let (a, b) = product_pair(items, self.pos, vars)?;
+                a.checked_mul(&b)
+                    .ok_or(ExprError::ExponentOverflow { pos: self.pos })
+            }
+            ExprKind::Pow(base, exp) => {
+                let k = exponent_value(exp)?;
+                let b = base.to_poly::<C>(vars)?;
+                b.checked_pow(k)
+                    .ok_or(ExprError::ExponentOverflow { pos: self.pos })
+            }
+            ExprKind::Sqrt(arg) => {
+                let p = arg.to_poly::<C>(vars)?;
+                let c = p
+                    .constant_value()
+                    .ok_or(ExprError::NonConstantSqrt { pos: arg.pos })?;
+                c.try_sqrt()
+                    .map(Poly::constant)
+                    .ok_or_else(|| ExprError::NoSqrt {
+                        pos: self.pos,
+                        arg: arg.to_string(),
+                        hint: C::sqrt_hint(),
+                    })
+            }
+        }
+    }
+}
+
+/// A product's value as two factors `(a, b)`, `b` the largest factor and `a` the product of the
+/// others (multiplied smallest first, with the constant factors folded into the smallest).
+fn product_pair<C: Coefficient>(
+    items: &[(MulOp, Expr)],
+    pos: usize,
+    vars: &mut Vars,
+) -> Result<(Poly<C>, Poly<C>), ExprError> {
+    let mut scalar = C::one();
+    let mut factors: Vec<Poly<C>> = Vec::new();
+    for (op, x) in items {
+        let p = x.to_poly::<C>(vars)?;
+        match (op, p.constant_value()) {
+            (MulOp::Times, Some(c)) => scalar *= c,
+            (MulOp::Times, None) => factors.push(p),
+            (MulOp::Divide, None) => return Err(ExprError::NonConstantDivisor { pos: x.pos }),
+            (MulOp::Divide, Some(c)) => match c.try_inverse() {
+                Some(inv) => scalar *= inv,
+                None => return Err(ExprError::DivisionByZero { pos: x.pos }),
+            },
+        }
+    }
+    // Smallest first; the scalar goes into the smallest factor.
+    factors.sort_by_key(Poly::len);
+    let Some(b) = factors.pop() else {
+        return Ok((Poly::constant(scalar), Poly::one()));
+    };
+    let mut it = factors.into_iter();
+    let Some(first) = it.next() else {
+        return Ok((Poly::constant(scalar), b));
+    };
+    let mut a = first.scale(&scalar);
+    for f in it {
+        a = a
+            .checked_mul(&f)
+            .ok_or(ExprError::ExponentOverflow { pos })?;
+    }
+    Ok((a, b))
+}
+
+/// The value of an exponent expression: a non-negative integer constant up to [`MAX_EXPONENT`].
+fn exponent_value(e: &Expr) -> Result<u32, ExprError> {
+    let p: Poly<Rational> = e.to_poly(&mut Vars::new())?;
+    let bad = |found: String| ExprError::BadExponent { pos: e.pos, found };
+    let q = p.constant_value().ok_or_else(|| bad(e.to_string()))?;
+    if !q.is_integer() || q.numer().is_negative() {
+        return Err(bad(q.to_string()));
+    }
+    match q.numer().to_u32() {
+        Some(k) if k <= MAX_EXPONENT => Ok(k),
+        _ => Err(ExprError::ExponentTooLarge {
+            pos: e.pos,
+            exponent: q.to_string(),
+            max: MAX_EXPONENT,
+        }),
+    }
+}
+
+// ------------------------------------------------------------------------------ printing
+
+/// Binding strength of a node when printed (higher binds tighter).
+fn precedence(e: &Expr) -> u8 {
+    match e.kind {
+        ExprKind::Sum(_) => 1,
+        ExprKind::Product(_) => 2,
+        ExprKind::Neg(_) => 3,
+        ExprKind::Pow(..) => 4,
+        ExprKind::Number(_) | ExprKind::Var(_) | ExprKind::Sqrt(_) => 5,
+    }
+}
+
+/// Writes `e`, in parentheses when it binds less tightly than `min`.
+fn write_at(f: &mut fmt::Formatter<'_>, e: &Expr, min: u8) -> fmt::Result {
+    if precedence(e) < min {
+        write!(f, "({e})")
+    } else {
+        write!(f, "{e}")
+    }
+}
+
+impl fmt::Display for Expr {
+    /// The expression in the syntax of the module documentation, with the parentheses it needs;
+    /// the output parses back to an expression with the same value.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match &self.kind {
+            ExprKind::Number(q) => {
+                if q.is_integer() && !q.numer().is_negative() {
+                    write!(f, "{q}")
+                } else {
+                    write!(f, "({q})")
+                }
+            }
+            ExprKind::Var(name) => f.write_str(name),
+            ExprKind::Neg(x) => {
+                f.write_str("-")?;
+                write_at(f, x, 3)
+            }
+            ExprKind::Sum(items) => {
+                for (k, (op, x)) in items.iter().enumerate() {
+                    match (k, op) {
+                        (0, AddOp::Plus) => {}
+                        (0, AddOp::Minus) => f.write_str("-")?,
+                        (_, AddOp::Plus) => f.write_str(" + ")?,
+                        (_, AddOp::Minus) => f.write_str(" - ")?,
+                    }
+                    write_at(f, x, 2)?;
+                }
+                Ok(())
+            }
+            ExprKind::Product(items) => {
+                for (k, (op, x)) in items.iter().enumerate() {
+                    match (k, op) {
+                        (0, MulOp::Times) => {}
+                        (0, MulOp::Divide) => f.write_str("1/")?,
+                        (_, MulOp::Times) => f.write_str("*")?,
+                        (_, MulOp::Divide) => f.write_str("/")?,
+                    }
+                    write_at(f, x, 3)?;
+                }
+                Ok(())
+            }
+            ExprKind::Pow(base, exp) => {
+                write_at(f, base, 5)?;
+                f.write_str("^")?;
+                // Right-associative: a power may stand bare as the exponent.
+                match exp.kind {
+                    ExprKind::Pow(..) => write!(f, "{exp}"),
+                    _ => write_at(f, exp, 5),
+                }
+            }
+            ExprKind::Sqrt(x) => write!(f, "sqrt({x})"),
+        }
+    }
+}
+
+// ------------------------------------------------------------------------------ workload W1
+
+/// Workload W1 as text: Chiang's ruled-surface / plane theorem (SPEC §4), x component, as the two
+/// sides of a polynomial identity in `t, a, b, c, d, px0.., py0.., pz0.., qx0.., qy0.., qz0..`,
+/// exactly as `shared/anchors/w1_text.py M N` prints them:
+///
+/// * LHS `(N.V(t)) Bx(t) - (N.B(t) + d) Vx(t)` with the Bernstein forms written unexpanded,
+///   `C(n,j)*t^j*(1-t)^(n-j)`;
+/// * RHS `sum_k B_k^{m+n}(t) P_kx` with the theorem's `P_k` and `phi(m,n,i,j)` as reduced
+///   fractions `p/q`.
+///
+/// For `(m, n) = (8, 13)` the pair is about 9.5 kB over 74 variables, and both sides expand to
+/// 5,841 terms.
+///
+/// # Panics
+/// When `m + n > 67` (binomial coefficients beyond `u64`).
+pub fn w1_text(m: u32, n: u32) -> (String, String) {
+    let bern = |deg: u32, i: u32| format!("{}*t^{}*(1-t)^{}", binomial(deg, i), i, deg - i);
+    let dot_q = |i: u32| format!("(a*qx{i}+b*qy{i}+c*qz{i})");
+    let dot_p = |j: u32| format!("(a*px{j}+b*py{j}+c*pz{j}+d)");
+    let join = |v: Vec<String>| v.join("+");
+    let nv = format!(
+        "({})",
+        join(
+            (0..=m)
+                .map(|i| format!("{}*{}", bern(m, i), dot_q(i)))
+                .collect()
+        )
+    );
+    let bx = format!(
+        "({})",
+        join((0..=n).map(|j| format!("{}*px{j}", bern(n, j))).collect())
+    );
+    let nb = format!(
+        "({})",
+        join(
+            (0..=n)
+                .map(|j| format!("{}*{}", bern(n, j), dot_p(j)))
+                .collect()
+        )
+    );
+    let vx = format!(
+        "({})",
+        join((0..=m).map(|i| format!("{}*qx{i}", bern(m, i))).collect())
+    );
+    let lhs = format!("{nv}*{bx}-{nb}*{vx}");
+    let mut terms = Vec::new();
+    for k in 0..=m + n {
+        let mut inner = Vec::new();
+        for i in k.saturating_sub(n)..=k.min(m) {
+            let j = k - i;
+            let (num, den) = (binomial(m, i) * binomial(n, j), binomial(m + n, k));
+            let g = num_integer::gcd(num, den);
+            inner.push(format!(
+                "{}/{}*({}*px{j}-{}*qx{i})",
+                num / g,
+                den / g,
+                dot_q(i),
+                dot_p(j)
+            ));
+        }
+        terms.push(format!("{}*({})", bern(m + n, k), join(inner)));
+    }
+    (lhs, join(terms))
+}
+
+// ------------------------------------------------------------------------------ tests
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    type P = Poly<Rational>;
+
+    fn poly(s: &str, vars: &mut Vars) -> P {
+        parse_poly(s, vars).unwrap_or_else(|e| panic!("{s:?}: {e}"))
+    }
+
+    fn err(s: &str) -> String {
+        match parse_poly::<Rational>(s, &mut Vars::new()) {
+            Ok(p) => panic!("{s:?} parsed to {p:?}"),
+            Err(e) => e.to_string(),
+        }
+    }
+
+    #[test]
+    fn precedence_and_associativity() {
+        let mut v = Vars::new();
+        let x = poly("x", &mut v);
+        assert_eq!(poly("-x^2", &mut v), -x.square());
+        assert_eq!(poly("x^2^3", &mut v), x.pow(8));
+        assert_eq!(poly("(x^2)^3", &mut v), x.pow(6));
+        assert_eq!(poly("2^3^2", &mut v), P::from_i64(512));
+        assert_eq!(poly("1 - 2 - 3", &mut v), P::from_i64(-4));
+        assert_eq!(poly("12/3/2", &mut v), P::from_i64(2));
+        assert_eq!(poly("3/4*x*4", &mut v), x.scale_i64(3));
+        assert_eq!(poly(" 0.1 * 10 ", &mut v), P::one());
+        assert_eq!(poly("x^(1+1)", &mut v), x.square());
+        assert_eq!(poly("x^0", &mut v), P::one());
+        assert_eq!(poly("--x", &mut v), x);
+        assert_eq!(poly("+x", &mut v), x);
+        assert_eq!(poly("sqrt(9/4)*2", &mut v), P::from_i64(3));
+        assert_eq!(poly("x/(1+1)*2", &mut v), x);
+    }
+
+    #[test]
+    fn error_messages() {
+        assert_eq!(
+            err("(a + b) * (c))"),
+            "unexpected ')' at 13: expected an operator or end of input"
+        );
+        assert_eq!(
+            err("1 + )"),
+            "unexpected ')' at 4: expected a number, a variable or '('"
+        );
+        assert_eq!(err("x/y"), "division by a non-constant expression at 2");
+        assert_eq!(err("x/(1-1)"), "division by zero at 2");
+        assert_eq!(
+            err("sqrt(2)"),
+            "sqrt(2) at 0 does not lie in the coefficient field (it is irrational: a radical \
+             coefficient field is needed)"
+        );
+        assert_eq!(err("sqrt(x)"), "sqrt of a non-constant expression at 4");
+        assert_eq!(
+            err("sqrt + 1"),
+            "unexpected '+' at 5: expected '(' after sqrt"
+        );
+        assert_eq!(
+            err("x^-1"),
+            "unexpected '-' at 2: expected a non-negative integer exponent (a number or '(')"
+        );
+        assert_eq!(
+            err("x^(1/2)"),
+            "exponent at 2 must be a non-negative integer constant, found 1/2"
+        );
+        assert_eq!(
+            err("x^y"),
+            "exponent at 2 must be a non-negative integer constant, found y"
+        );
+        assert_eq!(
+            err("x^10001"),
+            "exponent 10001 at 2 is too large (at most 10000)"
+        );
+        assert_eq!(
+            err("1 # 2"),
+            "unexpected character '#' at 2: expected an operator or end of input"
+        );
+        assert_eq!(
+            err(""),
+            "unexpected end of input at 0: expected a number, a variable or '('"
+        );
+        assert_eq!(
+            err("1."),
+            "unexpected character '.' at 1: expected an operator or end of input"
+        );
+        assert_eq!(
+            err("(1"),
+            "unexpected end of input at 2: expected an operator or ')'"
+        );
+        assert!(err(&"(".repeat(1000)).starts_with("expression nested too deeply"));
+        assert!(err(&"-".repeat(1000)).starts_with("expression nested too deeply"));
+        let deep_pow = format!("x{}", "^1".repeat(1000));
+        assert!(err(&deep_pow).starts_with("expression nested too deeply"));
+        assert!(err("((x^10000)^10000)^10000").starts_with("exponent overflow at 0"));
+    }
+
+    #[test]
+    fn expression_printing_round_trips() {
+        for s in [
+            "-x^2",
+            "(a + b)*(c - d)/3",
+            "x^2^3",
+            "(x^2)^3",
+            "-(a - b)",
+            "a - -b",
+            "a*-b",
+            "sqrt(4)*x + 0.25",
+            "2*(x + 1)^3 - 1/2*y",
+        ] {
+            let e = parse_expr(s).unwrap();
+            let printed = e.to_string();
+            let mut v1 = Vars::new();
+            let mut v2 = Vars::new();
+            let p1: P = e.to_poly(&mut v1).unwrap();
+            let p2: P = parse_poly(&printed, &mut v2).unwrap();
+            assert_eq!(v1, v2, "{s} -> {printed}");
+            assert_eq!(p1, p2, "{s} -> {printed}");
+        }
+    }
+
+    #[test]
+    fn w1_text_matches_the_anchor() {
+        let (lhs, rhs) = w1_text(2, 3);
+        assert_eq!(
+            lhs,
+            "(1*t^0*(1-t)^2*(a*qx0+b*qy0+c*qz0)+2*t^1*(1-t)^1*(a*qx1+b*qy1+c*qz1)+1*t^2*(1-t)^0*\
+             (a*qx2+b*qy2+c*qz2))*(1*t^0*(1-t)^3*px0+3*t^1*(1-t)^2*px1+3*t^2*(1-t)^1*px2+1*t^3*\
+             (1-t)^0*px3)-(1*t^0*(1-t)^3*(a*px0+b*py0+c*pz0+d)+3*t^1*(1-t)^2*(a*px1+b*py1+c*pz1+d)\
+             +3*t^2*(1-t)^1*(a*px2+b*py2+c*pz2+d)+1*t^3*(1-t)^0*(a*px3+b*py3+c*pz3+d))*(1*t^0*\
+             (1-t)^2*qx0+2*t^1*(1-t)^1*qx1+1*t^2*(1-t)^0*qx2)"
+        );
+        assert!(rhs.starts_with("1*t^0*(1-t)^5*(1/1*((a*qx0+b*qy0+c*qz0)*px0-(a*px0+b*py0+c*pz0+d)*qx0))+5*t^1*(1-t)^4*(3/5*("));
+        let (l, r) = w1_text(8, 13);
+        // `w1_text.py 8 13 | wc -c` gives 9500: both lines and their newlines.
+        assert_eq!(l.len() + r.len() + 2, 9500);
+    }
+
+    #[test]
+    fn w1_small_identity() {
+        let (lhs, rhs) = w1_text(2, 3);
+        let mut v = Vars::new();
+        let l = poly(&lhs, &mut v);
+        let r = poly(&rhs, &mut v);
+        assert_eq!(l, r);
+        assert_eq!(v.len(), 26);
+    }
+}

@@ -14,6 +14,7 @@ pub mod gcd;
 pub mod modp;
 pub mod plain;
 pub mod poly;
+pub mod prove;
 pub mod radical;
 pub mod rational;
 pub mod traits;

@@ -1985,3 +1985,30 @@ mod tests {
         assert!(matches!("é".parse::<Radical>(), Err(E::Unexpected { .. })));
     }
 }
+
+impl crate::expr::Coefficient for Radical {
+    fn from_rational(q: &Rational) -> Option<Self> {
+        Some(Radical::from(q))
+    }
+    fn try_inverse(&self) -> Option<Self> {
+        self.inv().ok()
+    }
+    fn try_sqrt(&self) -> Option<Self> {
+        Sqrt::sqrt(self)
+    }
+    fn sqrt_hint() -> &'static str {
+        " (no square root in the square-root field: negative, or not denestable)"
+    }
+}
+
+impl crate::expr::Coefficient for ComplexRadical {
+    fn from_rational(q: &Rational) -> Option<Self> {
+        Some(ComplexRadical::from(q.clone()))
+    }
+    fn try_inverse(&self) -> Option<Self> {
+        self.inv().ok()
+    }
+    fn try_sqrt(&self) -> Option<Self> {
+        self.principal_sqrt()
+    }
+}

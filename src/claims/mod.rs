@@ -9,6 +9,7 @@
 //!
 //! One module per source document.
 
+pub mod engine;
 pub mod juttler;
 
 use serde_json::{json, Value};

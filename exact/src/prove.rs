@@ -1,0 +1,172 @@
+//! The proof engine: decide a polynomial identity `residual = 0` exactly, for all values of its
+//! variables, or for all values satisfying declared relations.
+//!
+//! * **proved** — the residual expands to the zero polynomial, or its normal form modulo a
+//!   Gröbner basis of the relations is zero (then it vanishes wherever the relations hold);
+//! * **fails** — the normal form is non-zero and an exact point is found where the relations hold
+//!   and the residual does not vanish; the point, the residual there and the normal form (what the
+//!   two sides really differ by) are reported;
+//! * **undecided** — the normal form is non-zero but no such point was found (possible only with
+//!   relations other than unit circles: a non-zero normal form means "not in the ideal", which
+//!   is not always "false at some real point").
+//!
+//! Points on unit circles `c^2 + s^2 = 1` are taken as rational points
+//! `((1 - tau^2)/(1 + tau^2), 2 tau/(1 + tau^2))`, so the search stays exact.
+
+use crate::expr::Coefficient;
+use crate::poly::{groebner, Poly, Var};
+use crate::Rational;
+use exactcheck_core::{Field, Ring};
+
+/// The decision on an identity.
+#[derive(Clone, Debug)]
+pub enum Decision<C> {
+    /// The residual is zero (modulo the relations).
+    Proved {
+        /// Terms of the expanded residual before reduction (0 when it expanded to zero outright).
+        expanded_terms: usize,
+    },
+    /// A counter-example: relations hold, the residual does not vanish.
+    Fails {
+        /// The normal form of the residual modulo the relations.
+        normal_form: Poly<C>,
+        /// The point: a value for every variable (by index).
+        point: Vec<(Var, Rational)>,
+        /// The residual's value there (non-zero).
+        value: C,
+    },
+    /// Non-zero normal form, but no point on the relations' variety was found.
+    Undecided {
+        /// The normal form of the residual modulo the relations.
+        normal_form: Poly<C>,
+    },
+}
+
+/// Splits relations into unit-circle pairs `c^2 + s^2 - 1` (recognised up to sign) and others.
+pub fn unit_circle_pairs<C: Field>(relations: &[Poly<C>]) -> (Vec<(Var, Var)>, Vec<Poly<C>>) {
+    let mut pairs = Vec::new();
+    let mut others = Vec::new();
+    for r in relations {
+        match circle_pair(r) {
+            Some(p)
+                if !pairs
+                    .iter()
+                    .any(|&(c, s): &(Var, Var)| [c, s].contains(&p.0) || [c, s].contains(&p.1)) =>
+            {
+                pairs.push(p)
+            }
+            _ => others.push(r.clone()),
+        }
+    }
+    (pairs, others)
+}
+
+fn circle_pair<C: Field>(r: &Poly<C>) -> Option<(Var, Var)> {
+    if r.len() != 3 {
+        return None;
+    }
+    let mut squares = Vec::new();
+    let mut constant = None;
+    let mut square_coeff = None;
+    for (m, c) in r.terms() {
+        let e = m.exponents();
+        match e.as_slice() {
+            [] => constant = Some(c.clone()),
+            [(v, 2)] => {
+                if square_coeff.get_or_insert_with(|| c.clone()) != c {
+                    return None;
+                }
+                squares.push(*v);
+            }
+            _ => return None,
+        }
+    }
+    let (k, a) = (constant?, square_coeff?);
+    // a c^2 + a s^2 - a = 0.
+    if squares.len() == 2 && k == a.neg_ref() {
+        Some((squares[0], squares[1]))
+    } else {
+        None
+    }
+}
+
+/// A small deterministic generator (SplitMix64) for the counter-example search.
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+    /// A small rational `n/d`, `|n| <= 9`, `1 <= d <= 4`.
+    fn small(&mut self) -> Rational {
+        let n = (self.next() % 19) as i64 - 9;
+        let d = (self.next() % 4) as i64 + 1;
+        Rational::new(n, d).unwrap_or(Rational::ZERO)
+    }
+}
+
+/// Decides `residual = 0` modulo `relations` (see the module documentation). `nvars` is the
+/// number of variables in use (indices `0..nvars`).
+pub fn decide<C: Field + Coefficient>(
+    residual: &Poly<C>,
+    relations: &[Poly<C>],
+    nvars: usize,
+) -> Decision<C> {
+    let expanded_terms = residual.len();
+    if residual.is_zero() {
+        return Decision::Proved { expanded_terms: 0 };
+    }
+    let (pairs, others) = unit_circle_pairs(relations);
+    let mut nf = residual.reduce_unit_circle(&pairs);
+    if !others.is_empty() && !nf.is_zero() {
+        let mut all: Vec<Poly<C>> = others.clone();
+        all.extend(
+            relations
+                .iter()
+                .filter(|r| circle_pair(r).is_some())
+                .cloned(),
+        );
+        let basis = groebner(&all);
+        nf = nf.reduce(&basis);
+    }
+    if nf.is_zero() {
+        return Decision::Proved { expanded_terms };
+    }
+    if !others.is_empty() {
+        return Decision::Undecided { normal_form: nf };
+    }
+    // Search an exact point: circle pairs from rational tau, the rest small rationals.
+    let mut rng = Rng(0x5EED);
+    for _ in 0..200 {
+        let mut point: Vec<Rational> = (0..nvars).map(|_| rng.small()).collect();
+        for &(c, s) in &pairs {
+            let tau = rng.small();
+            let t2 = tau.square();
+            let den = (Rational::ONE + &t2).recip().unwrap_or(Rational::ONE);
+            point[c as usize] = (Rational::ONE - &t2) * &den;
+            point[s as usize] = tau.scale_i64(2) * &den;
+        }
+        let values: Vec<C> = point
+            .iter()
+            .map(|q| C::from_rational(q).unwrap_or_else(C::zero))
+            .collect();
+        let value = residual.eval(&values, |c| c.clone());
+        if !value.is_zero() {
+            let point = point
+                .into_iter()
+                .enumerate()
+                .map(|(i, q)| (i as Var, q))
+                .collect();
+            return Decision::Fails {
+                normal_form: nf,
+                point,
+                value,
+            };
+        }
+    }
+    Decision::Undecided { normal_form: nf }
+}

@@ -1,0 +1,110 @@
+//! Helpers shared by the claim modules: printed formulas (kept as text, as printed) turned into
+//! polynomials, and identities decided by the proof engine of `exactcheck-exact`.
+
+use super::{Outcome, Verdict};
+use exactcheck_core::{Field, Hom4};
+use exactcheck_exact::expr::{parse_poly, Coefficient};
+use exactcheck_exact::poly::{Poly, Vars};
+use exactcheck_exact::prove::{decide, Decision};
+use std::fmt::Display;
+
+/// A polynomial context: named variables and the polynomials of the printed formulas.
+pub struct Symbols {
+    /// The variable names.
+    pub vars: Vars,
+}
+
+impl Symbols {
+    /// A context with these variables declared first (so their indices are 0, 1, ...).
+    pub fn new(names: &[&str]) -> Self {
+        Symbols {
+            vars: Vars::from_names(names.iter().copied()),
+        }
+    }
+
+    /// The polynomial of a printed formula.
+    pub fn parse<C: Coefficient>(&mut self, printed: &str) -> Result<Poly<C>, String> {
+        parse_poly::<C>(printed, &mut self.vars)
+            .map_err(|e| format!("printed formula {printed:?}: {e}"))
+    }
+
+    /// A homogeneous 4-vector of printed coordinates.
+    pub fn hom4<C: Coefficient>(&mut self, printed: [&str; 4]) -> Result<Hom4<Poly<C>>, String> {
+        Ok(Hom4::new(
+            self.parse(printed[0])?,
+            self.parse(printed[1])?,
+            self.parse(printed[2])?,
+            self.parse(printed[3])?,
+        ))
+    }
+
+    /// The variables `name0 .. name3` as a homogeneous 4-vector.
+    pub fn hom4_vars<C: Coefficient>(&mut self, name: &str) -> Hom4<Poly<C>> {
+        let v = |i: usize, vars: &mut Vars| vars.poly::<C>(&format!("{name}{i}"));
+        Hom4::new(
+            v(0, &mut self.vars),
+            v(1, &mut self.vars),
+            v(2, &mut self.vars),
+            v(3, &mut self.vars),
+        )
+    }
+}
+
+/// Decides that every residual is zero (modulo `relations`): `proved` when all expand to zero,
+/// `fails` with the counter-example of the first that does not.
+pub fn prove_all<C: Field + Coefficient + Display>(
+    sym: &Symbols,
+    residuals: &[(&str, Poly<C>)],
+    relations: &[Poly<C>],
+    method: &str,
+) -> Outcome {
+    let mut terms = 0;
+    for (what, r) in residuals {
+        match decide(r, relations, sym.vars.len()) {
+            Decision::Proved { expanded_terms } => terms += expanded_terms,
+            Decision::Fails { normal_form, point, value } => {
+                let at: Vec<String> = point
+                    .iter()
+                    .filter(|(v, _)| r.variables().contains(v))
+                    .map(|(v, q)| format!("{} = {q}", sym.vars.name(*v).unwrap_or("?")))
+                    .collect();
+                return Outcome {
+                    verdict: Verdict::Fails,
+                    method: method.into(),
+                    evidence: format!(
+                        "{what} is not zero: at {} it is {value}; it reduces to {}",
+                        at.join(", "),
+                        normal_form.display(&sym.vars)
+                    ),
+                };
+            }
+            Decision::Undecided { normal_form } => {
+                return Outcome {
+                    verdict: Verdict::Fails,
+                    method: method.into(),
+                    evidence: format!(
+                        "{what} reduces to {} (not in the ideal of the relations; no real counter-example searched)",
+                        normal_form.display(&sym.vars)
+                    ),
+                }
+            }
+        }
+    }
+    let extra = if residuals.len() > 1 {
+        format!(" ({} residuals in all)", residuals.len())
+    } else {
+        String::new()
+    };
+    Outcome {
+        verdict: Verdict::Proved,
+        method: method.into(),
+        evidence: if terms == 0 {
+            format!("{} expands to 0{extra}", residuals[0].0)
+        } else {
+            format!(
+                "{} reduces to 0 ({terms} terms before reduction){extra}",
+                residuals[0].0
+            )
+        },
+    }
+}
