@@ -142,6 +142,74 @@ pub fn lebesgue_curve<T: Field>(x: &[Bernstein<T>; 4]) -> [Bernstein<T>; 4] {
     ]
 }
 
+/// The delta-image of a curve (Satz 1), division-free: for homogeneous Bernstein coordinates
+/// `x_a` of degree n, the *scaled* coefficients `e_k = C(2n, k) * (k-th Bernstein coefficient)`
+/// of the four image coordinates (see [`Bernstein::mul_scaled`]). Runs over any [`Ring`], so it
+/// also runs over polynomials (a symbolic proof of Satz 1).
+pub fn lebesgue_curve_scaled<T: Ring>(x: &[Bernstein<T>; 4]) -> [Vec<T>; 4] {
+    let prod = |a: usize, b: usize| x[a].mul_scaled(&x[b]);
+    let combine = |terms: &[(i64, Vec<T>)]| -> Vec<T> {
+        let n = terms[0].1.len();
+        (0..n)
+            .map(|k| {
+                let mut acc = T::zero();
+                for (c, v) in terms {
+                    acc += v[k].scale_i64(*c);
+                }
+                acc
+            })
+            .collect()
+    };
+    let (s0, s1, s2, s3) = (prod(0, 0), prod(1, 1), prod(2, 2), prod(3, 3));
+    [
+        combine(&[(1, s0.clone()), (1, s1.clone()), (1, s2.clone()), (1, s3.clone())]),
+        combine(&[(2, prod(0, 1)), (-2, prod(2, 3))]),
+        combine(&[(2, prod(0, 2)), (2, prod(1, 3))]),
+        combine(&[(1, s1), (1, s2), (-1, s0), (-1, s3)]),
+    ]
+}
+
+/// The delta-image of a tensor-product patch of degree (m, n) given by its net of homogeneous
+/// control vectors `net[i][j]` (Satz 1 for surfaces), division-free: the net of degree (2m, 2n)
+/// scaled by `C(2m, k) C(2n, l)` at `(k, l)`.
+pub fn lebesgue_patch_scaled<T: Ring>(net: &[Vec<Hom4<T>>]) -> Vec<Vec<Hom4<T>>> {
+    let m = net.len().saturating_sub(1);
+    let n = net.first().map_or(0, |r| r.len().saturating_sub(1));
+    let c = |n: usize, k: usize| crate::scalar::binomial(n as u32, k as u32) as i64;
+    // Products of coordinates a, b of the net, scaled: sum over i+i'=k, j+j'=l.
+    let prod = |a: usize, b: usize| -> Vec<Vec<T>> {
+        let mut out = vec![vec![T::zero(); 2 * n + 1]; 2 * m + 1];
+        for i in 0..=m {
+            for j in 0..=n {
+                for i2 in 0..=m {
+                    for j2 in 0..=n {
+                        let w = c(m, i) * c(m, i2) * c(n, j) * c(n, j2);
+                        let t = net[i][j].0[a].mul_ref(&net[i2][j2].0[b]).scale_i64(w);
+                        out[i + i2][j + j2] += t;
+                    }
+                }
+            }
+        }
+        out
+    };
+    let p: Vec<Vec<Vec<Vec<T>>>> = (0..4).map(|a| (0..4).map(|b| prod(a, b)).collect()).collect();
+    (0..=2 * m)
+        .map(|k| {
+            (0..=2 * n)
+                .map(|l| {
+                    let e = |a: usize, b: usize| p[a][b][k][l].clone();
+                    Hom4::new(
+                        e(0, 0) + e(1, 1) + e(2, 2) + e(3, 3),
+                        (e(0, 1) - e(2, 3)).scale_i64(2),
+                        (e(0, 2) + e(1, 3)).scale_i64(2),
+                        e(1, 1) + e(2, 2) - e(0, 0) - e(3, 3),
+                    )
+                })
+                .collect()
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

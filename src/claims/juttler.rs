@@ -53,6 +53,7 @@ pub fn claims() -> Vec<Claim> {
     vec![
         claim!("juttler.lebesgue", Proved, "(7) k0 = p0^2+p1^2+p2^2+p3^2, k1 = 2p0p1 - 2p2p3, k2 = 2p0p2 + 2p1p3, k3 = p1^2+p2^2-p0^2-p3^2 satisfies (5) k0^2 = k1^2 + k2^2 + k3^2 for all p", lebesgue_claim),
         claim!("juttler.dietz", Proved, "(8) h0 = q0q3, h1 = q1q3, h2 = q0q2, h3 = q1q2 satisfies (6) h0 h3 = h1 h2 for all q", dietz_claim),
+        claim!("juttler.satz1", Proved, "Satz 1: delta maps a rational Bezier curve of degree n to one of degree 2n on K (control points by the product rule), a patch of degree (m,n) to one of degree (2m,2n)", satz1),
         claim!("juttler.satz2", Proved, "Satz 2: delta restricted to p3 = 0 equals sigma (10) = (p0^2+p1^2+p2^2, 2p0p1, 2p0p2, p1^2+p2^2-p0^2)", satz2),
         claim!("juttler.sigma_inverse", Proved, "sigma^-1(k) = (k0 - k3, k1, k2, 0) inverts sigma (projectively)", sigma_inverse_claim),
         claim!("juttler.satz3", Proved, "Satz 3: delta = sigma o theta with theta (11) = (p0^2+p3^2, p0p1 - p2p3, p0p2 + p1p3, 0)", satz3),
@@ -62,6 +63,7 @@ pub fn claims() -> Vec<Claim> {
         claim!("juttler.satz8", Proved, "Satz 8: psi restricted to the plane q3 = q0 equals tau (16) = (q0^2, q0q1, q0q2, q1q2)", satz8),
         claim!("juttler.satz9", Proved, "Satz 9: psi = tau o alpha with alpha (17) = (q0q3, q1q3, q0q2, q0q3)", satz9),
         claim!("juttler.lemma10", Proved, "Lemma 10: the alpha-preimage of q = (q0,q1,q2,q0) is the line lambda (q0,q1,q2,q0) + mu (q0,q1,0,0) (18)", lemma10),
+        claim!("juttler.interpolation", Holds, "interpolation on K by rational curves reduces to a homogeneous linear system (and works), with fewer degrees than plain stereographic projection", interpolation),
         claim!("juttler.satz11", Proved, "Satz 11: every line (18) meets both real focal lines (1,lambda,0,0) and (0,0,1,mu)", satz11),
     ]
 }
@@ -130,7 +132,9 @@ fn lebesgue_claim() -> Result<Outcome, String> {
         &printed,
         &derived,
     ));
-    Ok(decide(&sym, &res, &[], "symbolic expansion over Q[p0..p3]"))
+    let mut out = decide(&sym, &res, &[], "symbolic expansion over Q[p0..p3]");
+    out.evidence = format!("{}; {}", out.evidence, converse("K")?);
+    Ok(out)
 }
 
 fn dietz_claim() -> Result<Outcome, String> {
@@ -146,7 +150,9 @@ fn dietz_claim() -> Result<Outcome, String> {
         &printed,
         &derived,
     ));
-    Ok(decide(&sym, &res, &[], "symbolic expansion over Q[q0..q3]"))
+    let mut out = decide(&sym, &res, &[], "symbolic expansion over Q[q0..q3]");
+    out.evidence = format!("{}; {}", out.evidence, converse("H")?);
+    Ok(out)
 }
 
 fn satz2() -> Result<Outcome, String> {
@@ -442,4 +448,193 @@ fn satz11() -> Result<Outcome, String> {
         &[],
         "symbolic expansion over Q[q0,q1,q2]",
     ))
+}
+
+/// Satz 1: the delta-image of a degree-n curve is a degree-2n curve on K, with control points
+/// from the product rule; of a bilinear patch, a biquadratic patch. Symbolic in the control
+/// vectors and the parameters, for n = 1, 2, 3 and the (1,1) patch.
+pub(super) fn satz1() -> Result<Outcome, String> {
+    use exactcheck_core::quadric::{lebesgue_curve_scaled, lebesgue_patch_scaled};
+    use exactcheck_core::{binomial, Bernstein, TensorPatch};
+    let mut sym = Symbols::new(&["t", "u", "v"]);
+    let mut res: Vec<(String, P)> = Vec::new();
+    let inv_binom = |n: usize, k: usize| P::constant(Rational::new(1, binomial(n as u32, k as u32) as i64).unwrap_or(Rational::ONE));
+    for n in 1..=3usize {
+        let x: [Bernstein<P>; 4] = std::array::from_fn(|a| {
+            Bernstein::new((0..=n).map(|i| sym.vars.poly::<Rational>(&format!("c{n}_{i}_{a}"))).collect())
+        });
+        let t = sym.vars.poly::<Rational>("t");
+        let scaled = lebesgue_curve_scaled(&x);
+        let image: Vec<Bernstein<P>> = scaled
+            .iter()
+            .map(|e| Bernstein::new(e.iter().enumerate().map(|(k, c)| c.clone() * inv_binom(2 * n, k)).collect()))
+            .collect();
+        if image.iter().any(|b| b.degree() != 2 * n) {
+            return Err(format!("image of degree {n} is not of degree {}", 2 * n));
+        }
+        let at_t = Hom4::new(image[0].eval(&t), image[1].eval(&t), image[2].eval(&t), image[3].eval(&t));
+        let direct = lebesgue(&Hom4::new(x[0].eval(&t), x[1].eval(&t), x[2].eval(&t), x[3].eval(&t)));
+        res.extend(equal_coordinates(&format!("degree {n}: product-rule control points vs delta(x(t))"), &at_t, &direct));
+        res.push((format!("degree {n}: image on K"), sphere_form(&at_t)));
+    }
+    // Bilinear patch -> biquadratic patch.
+    let net: Vec<Vec<Hom4<P>>> = (0..2)
+        .map(|i| {
+            (0..2)
+                .map(|j| Hom4(std::array::from_fn(|a| sym.vars.poly::<Rational>(&format!("n_{i}{j}_{a}")))))
+                .collect()
+        })
+        .collect();
+    let (u, v) = (sym.vars.poly::<Rational>("u"), sym.vars.poly::<Rational>("v"));
+    let scaled = lebesgue_patch_scaled(&net);
+    let image_net: Vec<Vec<Hom4<P>>> = scaled
+        .iter()
+        .enumerate()
+        .map(|(k, row)| row.iter().enumerate().map(|(l, h)| h.scale(&(inv_binom(2, k) * inv_binom(2, l)))).collect())
+        .collect();
+    let image = TensorPatch::try_new(image_net).map_err(|e| e.to_string())?;
+    if image.degrees() != (2, 2) {
+        return Err("the image of the bilinear patch is not biquadratic".into());
+    }
+    let bilinear = TensorPatch::try_new(net).map_err(|e| e.to_string())?;
+    let direct = lebesgue(&bilinear.eval_hom(&u, &v));
+    let at_uv = image.eval_hom(&u, &v);
+    res.extend(equal_coordinates("patch: product-rule net vs delta(x(u,v))", &at_uv, &direct));
+    res.push(("patch: image on K".into(), sphere_form(&at_uv)));
+    let mut out = decide(&sym, &res, &[], "symbolic expansion over Q[control vectors, t, u, v]");
+    if out.verdict == Verdict::Proved {
+        out.evidence = format!(
+            "for n = 1, 2, 3 the product-rule control points of degree 2n give delta(x(t)) identically and lie on K; the bilinear patch maps to the biquadratic one ({} residuals expanded to 0)",
+            res.len()
+        );
+    }
+    Ok(out)
+}
+
+/// A small deterministic generator for exact random instances (SplitMix64).
+pub(super) struct Rng(pub u64);
+
+impl Rng {
+    pub(super) fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+    /// An integer in `-k..=k`.
+    pub(super) fn int(&mut self, k: i64) -> i64 {
+        (self.next() % (2 * k as u64 + 1)) as i64 - k
+    }
+    /// A random homogeneous point with integer coordinates in `-k..=k`, not zero.
+    pub(super) fn hom4(&mut self, k: i64) -> Hom4<Rational> {
+        loop {
+            let h = Hom4(std::array::from_fn(|_| Rational::from_integer(self.int(k))));
+            if !h.is_zero() {
+                return h;
+            }
+        }
+    }
+}
+
+/// Interpolation on K is a linear problem (and works): random exact points of K (Lebesgue
+/// images of random integer points) at random distinct parameters.
+pub(super) fn interpolation() -> Result<Outcome, String> {
+    use exactcheck_core::sphere_interpolation::interpolate;
+    let mut rng = Rng(0x1A7E);
+    let mut runs = 0;
+    let mut table = Vec::new();
+    for count in 1..=7usize {
+        let mut delta_degrees = Vec::new();
+        let mut sigma_degrees = Vec::new();
+        for _ in 0..4 {
+            let points: Vec<Hom4<Rational>> = (0..count)
+                .map(|_| loop {
+                    let k = lebesgue(&rng.hom4(6));
+                    if !k.0[0].is_zero() {
+                        break k;
+                    }
+                })
+                .collect();
+            let mut params: Vec<Rational> = Vec::new();
+            while params.len() < count {
+                let t = Rational::new(rng.int(50), 50).unwrap_or(Rational::ZERO);
+                if !params.contains(&t) {
+                    params.push(t);
+                }
+            }
+            let r = interpolate(&points, &params).map_err(|e| format!("{count} points: {e}"))?;
+            // Exact checks: through every point at its parameter, and on K identically.
+            for (k, t) in points.iter().zip(&params) {
+                if !r.curve.eval_hom(t).proj_eq(k) {
+                    return Ok(Outcome {
+                        verdict: Verdict::Fails,
+                        method: "exact linear algebra over Q".into(),
+                        evidence: format!("the curve for {count} points misses a point at t = {t}"),
+                    });
+                }
+            }
+            let c = r.curve.hom_coordinates();
+            let form = c[0].mul(&c[0]).checked_sub(&c[1].mul(&c[1])).and_then(|f| f.checked_sub(&c[2].mul(&c[2]))).and_then(|f| f.checked_sub(&c[3].mul(&c[3]))).map_err(|e| e.to_string())?;
+            if form.coeffs().iter().any(|x| !x.is_zero()) {
+                return Ok(Outcome {
+                    verdict: Verdict::Fails,
+                    method: "exact linear algebra over Q".into(),
+                    evidence: format!("the curve for {count} points leaves K"),
+                });
+            }
+            delta_degrees.push(r.degree);
+            sigma_degrees.push(r.sigma_degree);
+            runs += 1;
+        }
+        let d = delta_degrees.iter().max().copied().unwrap_or(0);
+        let s = sigma_degrees.iter().flatten().max().copied();
+        table.push(format!("N={count}: {d} vs {}", s.map_or("none".into(), |s| s.to_string())));
+    }
+    Ok(Outcome {
+        verdict: Verdict::Holds,
+        method: "exact linear algebra over Q (nullspace), exact checks".into(),
+        evidence: format!(
+            "{runs} random instances (1..7 points of K at random parameters): each curve passes through every point and lies on K; image degree with delta vs plain sigma: {}",
+            table.join(", ")
+        ),
+    })
+}
+
+/// The converses of (7) and (8) on exact points: every random rational point of K (of H) has a
+/// preimage under delta (psi), found on its projecting line (12) (line (18)).
+pub(super) fn converse(which: &str) -> Result<String, String> {
+    let mut rng = Rng(if which == "K" { 0xC0 } else { 0xC1 });
+    let mut n = 0;
+    for _ in 0..200 {
+        let x = rng.hom4(9);
+        if which == "K" {
+            let k = lebesgue(&x);
+            let line = exactcheck_core::sphere_interpolation::preimage_line(&k);
+            let (l, m) = (Rational::from_integer(rng.int(5)), Rational::from_integer(rng.int(5)));
+            let p = line[0].scale(&l).add(&line[1].scale(&m));
+            if p.is_zero() || lebesgue(&p).is_zero() {
+                continue;
+            }
+            if !lebesgue(&p).proj_eq(&k) {
+                return Err(format!("no preimage on the projecting line of {k:?}"));
+            }
+        } else {
+            let h = dietz(&x);
+            if h.0[0].is_zero() {
+                continue;
+            }
+            let q = Hom4::new(h.0[0].clone(), h.0[1].clone(), h.0[2].clone(), h.0[0].clone());
+            let (l, m) = (Rational::from_integer(rng.int(5)), Rational::from_integer(rng.int(5)));
+            let p = alpha_preimage_point(&q, &l, &m);
+            if p.is_zero() || psi(&p).is_zero() {
+                continue;
+            }
+            if !psi(&p).proj_eq(&h) {
+                return Err(format!("no preimage on the projecting line of {h:?}"));
+            }
+        }
+        n += 1;
+    }
+    Ok(format!("converse: {n} random rational points of {which} all have preimages on their projecting lines"))
 }
