@@ -26,9 +26,83 @@ pub struct ProveArgs {
     /// A relation `A = B` the variables satisfy (repeatable), e.g. `c^2 + s^2 = 1`.
     #[arg(long = "where", value_name = "RELATION")]
     pub relations: Vec<String>,
+    /// Instead of expanding, evaluate both sides at K random points modulo the prime
+    /// 2^61 - 1 (fast on huge expressions): `holds` with the Schwartz-Zippel error bound, or
+    /// `fails`. Relations must be unit circles `c^2 + s^2 = 1`.
+    #[arg(long, value_name = "K")]
+    pub random: Option<u32>,
+    /// Seed of the random points of `--random`.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
     /// Print one JSON object instead of text.
     #[arg(long)]
     pub json: bool,
+}
+
+fn collect_vars(e: &Expr, out: &mut Vec<String>) {
+    use exactcheck_exact::expr::ExprKind;
+    match &e.kind {
+        ExprKind::Number(_) => {}
+        ExprKind::Var(v) => {
+            if !out.contains(v) {
+                out.push(v.clone());
+            }
+        }
+        ExprKind::Neg(x) | ExprKind::Sqrt(x) => collect_vars(x, out),
+        ExprKind::Pow(a, b) => {
+            collect_vars(a, out);
+            collect_vars(b, out);
+        }
+        ExprKind::Sum(ts) => ts.iter().for_each(|(_, t)| collect_vars(t, out)),
+        ExprKind::Product(fs) => fs.iter().for_each(|(_, f)| collect_vars(f, out)),
+    }
+}
+
+/// `prove --random K`: randomized identity testing modulo p, no expansion.
+fn random_test(args: &ProveArgs, trials: u32, lhs: &Expr, rhs: &Expr, relations: &[(Expr, Expr)]) -> Result<ExitCode, Error> {
+    use exactcheck_exact::prove::{random_identity_test, unit_circle_pairs, RandomDecision};
+    if trials == 0 {
+        return Err(Error::Usage("--random needs at least 1 point".into()));
+    }
+    let mut vars = Vars::new();
+    let mut rels = Vec::new();
+    for (i, (a, b)) in relations.iter().enumerate() {
+        let a = to_poly::<Rational>(a, &mut vars, &format!("--where #{}", i + 1))?;
+        let b = to_poly::<Rational>(b, &mut vars, &format!("--where #{}", i + 1))?;
+        rels.push(a - b);
+    }
+    let (pairs, others) = unit_circle_pairs(&rels);
+    if !others.is_empty() {
+        return Err(Error::Usage("--random supports only unit-circle relations 'c^2 + s^2 = 1'".into()));
+    }
+    let name = |v| vars.name(v).unwrap_or("?").to_string();
+    let circles: Vec<(String, String)> = pairs.iter().map(|&(c, s)| (name(c), name(s))).collect();
+    let mut names = Vec::new();
+    collect_vars(lhs, &mut names);
+    collect_vars(rhs, &mut names);
+    let decision = random_identity_test(lhs, rhs, &names, &circles, trials, args.seed).map_err(Error::Input)?;
+    let method = format!("evaluation at {trials} random points modulo 2^61 - 1 (seed {})", args.seed);
+    let (verdict, evidence, code) = match &decision {
+        RandomDecision::Holds { degree, log2_bound, .. } => (
+            "holds",
+            format!("LHS - RHS vanishes at all {trials} points; total degree <= {degree}, so a false identity passes with probability <= 2^{log2_bound:.1}"),
+            ExitCode::SUCCESS,
+        ),
+        RandomDecision::Fails { point, value } => (
+            "fails",
+            format!(
+                "LHS - RHS = {value} (mod p) at {}; run without --random for an exact counter-example",
+                point.iter().map(|(v, x)| format!("{v} = {x}")).collect::<Vec<_>>().join(", ")
+            ),
+            ExitCode::from(1),
+        ),
+    };
+    if args.json {
+        println!("{}", json!({"verdict": verdict, "method": method, "evidence": evidence}));
+    } else {
+        println!("{verdict}: {evidence} [{method}]");
+    }
+    Ok(code)
 }
 
 fn parse(text: &str, what: &str) -> Result<Expr, Error> {
@@ -59,6 +133,10 @@ pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
             parse(parts[0], &format!("--where #{} left side", i + 1))?,
             parse(parts[1], &format!("--where #{} right side", i + 1))?,
         ));
+    }
+    if let Some(k) = args.random {
+        let zero = parse("0", "RHS")?;
+        return random_test(args, k, &lhs, rhs.as_ref().unwrap_or(&zero), &relations);
     }
     // Radicals need the radical coefficient field; everything else runs over Q.
     let radical = std::iter::once(&args.lhs)

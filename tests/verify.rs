@@ -120,3 +120,26 @@ fn prove_rejects_bad_input_with_status_2() {
         assert!(!err.contains("panicked"));
     }
 }
+
+#[test]
+fn prove_random_mod_p() {
+    let o = exactcheck(&["prove", "c^2*x^3 + s^2*x^3 - x", "x^3 - x", "--where", "c^2 + s^2 = 1", "--random", "4", "--json"]);
+    assert!(o.status.success());
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["verdict"], "holds");
+    assert!(v["evidence"].as_str().unwrap().contains("probability <= 2^-"));
+    let o = exactcheck(&["prove", "c^2*x^3 - s^2*x^3 - x", "x^3 - x", "--where", "c^2 + s^2 = 1", "--random", "4"]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&o.stdout).starts_with("fails"));
+    // W1 for (m, n) = (4, 6) as text: holds mod p, and proved by expansion.
+    let (lhs, rhs) = exactcheck_exact::expr::w1_text(4, 6);
+    let o = exactcheck(&["prove", &lhs, &rhs, "--random", "3"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stdout));
+    let o = exactcheck(&["prove", &lhs, &rhs]);
+    assert!(String::from_utf8_lossy(&o.stdout).starts_with("proved"));
+    // A perturbed coefficient (the anchors' --negative) fails both ways.
+    let bad = rhs.replacen("1/1*", "8/7*", 1);
+    assert_ne!(bad, rhs);
+    assert_eq!(exactcheck(&["prove", &lhs, &bad, "--random", "3"]).status.code(), Some(1));
+    assert_eq!(exactcheck(&["prove", &lhs, &bad]).status.code(), Some(1));
+}

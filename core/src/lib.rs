@@ -11,6 +11,7 @@ pub mod bernstein;
 pub mod bezier;
 pub mod cylinder_sphere;
 pub mod linalg;
+pub mod miquel;
 pub mod quadric;
 pub mod scalar;
 pub mod sphere_interpolation;

@@ -170,3 +170,148 @@ pub fn decide<C: Field + Coefficient>(
     }
     Decision::Undecided { normal_form: nf }
 }
+
+// ------------------------------------------------------------------ randomized identity testing
+
+use crate::expr::{AddOp, Expr, ExprKind, MulOp};
+use crate::modp::{schwartz_zippel_log2_bound, ModP, SplitMix64};
+use std::collections::HashMap;
+
+/// An upper bound on the total degree of the polynomial an expression denotes (`None` where it
+/// is not a polynomial expression: a non-constant divisor or exponent, or a square root of a
+/// non-constant).
+pub fn degree_bound(e: &Expr) -> Option<u64> {
+    match &e.kind {
+        ExprKind::Number(_) => Some(0),
+        ExprKind::Var(_) => Some(1),
+        ExprKind::Neg(x) => degree_bound(x),
+        ExprKind::Sum(ts) => ts.iter().map(|(_, t)| degree_bound(t)).try_fold(0, |a, d| Some(a.max(d?))),
+        ExprKind::Product(fs) => fs.iter().try_fold(0u64, |a, (op, f)| {
+            let d = degree_bound(f)?;
+            match op {
+                MulOp::Times => a.checked_add(d),
+                MulOp::Divide if d == 0 => Some(a),
+                MulOp::Divide => None,
+            }
+        }),
+        ExprKind::Pow(b, x) => {
+            if degree_bound(x)? != 0 {
+                return None;
+            }
+            let k = constant_exponent(x)?;
+            degree_bound(b)?.checked_mul(k)
+        }
+        ExprKind::Sqrt(x) => (degree_bound(x)? == 0).then_some(0),
+    }
+}
+
+fn constant_exponent(e: &Expr) -> Option<u64> {
+    match &e.kind {
+        ExprKind::Number(q) if q.is_integer() => q.numer().try_into().ok(),
+        _ => None,
+    }
+}
+
+/// Evaluates an expression at a point modulo p = 2^61 - 1, without expanding it.
+///
+/// # Errors
+/// A message for a variable without a value, a divisor that vanishes mod p, a non-constant or
+/// negative exponent, or a square root (no square roots are taken mod p).
+pub fn eval_modp(e: &Expr, point: &HashMap<String, ModP>) -> Result<ModP, String> {
+    Ok(match &e.kind {
+        ExprKind::Number(q) => ModP::from_rational(q).map_err(|_| format!("the number {q} has a denominator divisible by p"))?,
+        ExprKind::Var(v) => *point.get(v).ok_or_else(|| format!("no value for {v}"))?,
+        ExprKind::Neg(x) => -eval_modp(x, point)?,
+        ExprKind::Sum(ts) => {
+            let mut acc = ModP::ZERO;
+            for (op, t) in ts {
+                let v = eval_modp(t, point)?;
+                match op {
+                    AddOp::Plus => acc += v,
+                    AddOp::Minus => acc -= v,
+                }
+            }
+            acc
+        }
+        ExprKind::Product(fs) => {
+            let mut acc = ModP::ONE;
+            for (op, f) in fs {
+                let v = eval_modp(f, point)?;
+                match op {
+                    MulOp::Times => acc *= v,
+                    MulOp::Divide => acc *= v.inv().map_err(|_| "a divisor vanishes modulo p".to_string())?,
+                }
+            }
+            acc
+        }
+        ExprKind::Pow(b, x) => {
+            let k = constant_exponent(x).ok_or("exponents must be non-negative integer constants")?;
+            eval_modp(b, point)?.pow_u64(k)
+        }
+        ExprKind::Sqrt(_) => return Err("square roots are not available modulo p (use exact expansion)".into()),
+    })
+}
+
+/// The outcome of a randomized identity test.
+#[derive(Clone, Debug, PartialEq)]
+pub enum RandomDecision {
+    /// Zero at every random point: a non-zero residual would vanish at all of them with
+    /// probability at most `2^log2_bound` (Schwartz–Zippel).
+    Holds {
+        /// Points tried.
+        trials: u32,
+        /// The total-degree bound used.
+        degree: u64,
+        /// log2 of the error probability bound.
+        log2_bound: f64,
+    },
+    /// Non-zero at a point modulo p: the identity is false (over Q as well).
+    Fails {
+        /// The point, as residues.
+        point: Vec<(String, ModP)>,
+        /// The residual there.
+        value: ModP,
+    },
+}
+
+/// Tests `lhs = rhs` at `trials` random points modulo p = 2^61 - 1 (variables on unit circles
+/// `(c, s)` are drawn as `((1 - tau^2)/(1 + tau^2), 2 tau/(1 + tau^2))`), without expanding.
+///
+/// # Errors
+/// A message when the expressions are not polynomial or cannot be evaluated modulo p.
+pub fn random_identity_test(
+    lhs: &Expr,
+    rhs: &Expr,
+    variables: &[String],
+    circles: &[(String, String)],
+    trials: u32,
+    seed: u64,
+) -> Result<RandomDecision, String> {
+    let d = degree_bound(lhs)
+        .zip(degree_bound(rhs))
+        .map(|(a, b)| a.max(b))
+        .ok_or("the expressions are not polynomials (non-constant divisor or exponent)")?;
+    // Clearing the denominators (1 + tau^2) of circle points at most doubles the degree.
+    let degree = if circles.is_empty() { d } else { 2 * d };
+    let mut rng = SplitMix64::new(seed);
+    for _ in 0..trials {
+        let mut point: HashMap<String, ModP> = variables.iter().map(|v| (v.clone(), ModP::random(&mut rng))).collect();
+        for (c, s) in circles {
+            let (cv, sv) = loop {
+                let tau = ModP::random(&mut rng);
+                if let Ok(inv) = (ModP::ONE + tau * tau).inv() {
+                    break ((ModP::ONE - tau * tau) * inv, (tau + tau) * inv);
+                }
+            };
+            point.insert(c.clone(), cv);
+            point.insert(s.clone(), sv);
+        }
+        let value = eval_modp(lhs, &point)? - eval_modp(rhs, &point)?;
+        if value != ModP::ZERO {
+            let mut point: Vec<(String, ModP)> = point.into_iter().collect();
+            point.sort_by(|a, b| a.0.cmp(&b.0));
+            return Ok(RandomDecision::Fails { point, value });
+        }
+    }
+    Ok(RandomDecision::Holds { trials, degree, log2_bound: schwartz_zippel_log2_bound(degree, trials) })
+}
