@@ -59,7 +59,13 @@ fn collect_vars(e: &Expr, out: &mut Vec<String>) {
 }
 
 /// `prove --random K`: randomized identity testing modulo p, no expansion.
-fn random_test(args: &ProveArgs, trials: u32, lhs: &Expr, rhs: &Expr, relations: &[(Expr, Expr)]) -> Result<ExitCode, Error> {
+fn random_test(
+    args: &ProveArgs,
+    trials: u32,
+    lhs: &Expr,
+    rhs: &Expr,
+    relations: &[(Expr, Expr)],
+) -> Result<ExitCode, Error> {
     use exactcheck_exact::prove::{random_identity_test, unit_circle_pairs, RandomDecision};
     if trials == 0 {
         return Err(Error::Usage("--random needs at least 1 point".into()));
@@ -73,15 +79,21 @@ fn random_test(args: &ProveArgs, trials: u32, lhs: &Expr, rhs: &Expr, relations:
     }
     let (pairs, others) = unit_circle_pairs(&rels);
     if !others.is_empty() {
-        return Err(Error::Usage("--random supports only unit-circle relations 'c^2 + s^2 = 1'".into()));
+        return Err(Error::Usage(
+            "--random supports only unit-circle relations 'c^2 + s^2 = 1'".into(),
+        ));
     }
     let name = |v| vars.name(v).unwrap_or("?").to_string();
     let circles: Vec<(String, String)> = pairs.iter().map(|&(c, s)| (name(c), name(s))).collect();
     let mut names = Vec::new();
     collect_vars(lhs, &mut names);
     collect_vars(rhs, &mut names);
-    let decision = random_identity_test(lhs, rhs, &names, &circles, trials, args.seed).map_err(Error::Input)?;
-    let method = format!("evaluation at {trials} random points modulo 2^61 - 1 (seed {})", args.seed);
+    let decision = random_identity_test(lhs, rhs, &names, &circles, trials, args.seed)
+        .map_err(Error::Input)?;
+    let method = format!(
+        "evaluation at {trials} random points modulo 2^61 - 1 (seed {})",
+        args.seed
+    );
     let (verdict, evidence, code) = match &decision {
         RandomDecision::Holds { degree, log2_bound, .. } => (
             "holds",
@@ -98,7 +110,10 @@ fn random_test(args: &ProveArgs, trials: u32, lhs: &Expr, rhs: &Expr, relations:
         ),
     };
     if args.json {
-        println!("{}", json!({"verdict": verdict, "method": method, "evidence": evidence}));
+        println!(
+            "{}",
+            json!({"verdict": verdict, "method": method, "evidence": evidence})
+        );
     } else {
         println!("{verdict}: {evidence} [{method}]");
     }

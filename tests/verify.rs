@@ -8,23 +8,50 @@ fn every_claim_gets_its_expected_verdict() {
     let rows = verify(None).expect("the catalogue is not empty");
     assert!(rows.len() >= 14);
     for r in &rows {
-        let o = r.outcome.as_ref().unwrap_or_else(|e| panic!("{}: {e}", r.id));
+        let o = r
+            .outcome
+            .as_ref()
+            .unwrap_or_else(|e| panic!("{}: {e}", r.id));
         assert_eq!(o.verdict, r.expected, "{}: {}", r.id, o.evidence);
         assert!(!o.method.is_empty() && !o.evidence.is_empty(), "{}", r.id);
     }
-    for id in ["juttler.lebesgue", "juttler.dietz", "juttler.satz1", "juttler.satz5", "juttler.lemma4"] {
+    for id in [
+        "juttler.lebesgue",
+        "juttler.dietz",
+        "juttler.satz1",
+        "juttler.satz5",
+        "juttler.lemma4",
+    ] {
         let r = rows.iter().find(|r| r.id == id).expect(id);
-        assert_eq!(r.outcome.as_ref().map(|o| o.verdict).ok(), Some(Verdict::Proved), "{id}");
+        assert_eq!(
+            r.outcome.as_ref().map(|o| o.verdict).ok(),
+            Some(Verdict::Proved),
+            "{id}"
+        );
     }
 }
 
 #[test]
 fn every_spec_juttler_id_is_in_the_catalogue() {
-    let ids: Vec<&str> = exactcheck::claims::catalogue().iter().map(|c| c.id).collect();
+    let ids: Vec<&str> = exactcheck::claims::catalogue()
+        .iter()
+        .map(|c| c.id)
+        .collect();
     for id in [
-        "juttler.lebesgue", "juttler.dietz", "juttler.satz1", "juttler.satz2", "juttler.sigma_inverse",
-        "juttler.satz3", "juttler.lemma4", "juttler.satz5", "juttler.focal_absolute", "juttler.interpolation",
-        "juttler.satz8", "juttler.satz9", "juttler.lemma10", "juttler.satz11",
+        "juttler.lebesgue",
+        "juttler.dietz",
+        "juttler.satz1",
+        "juttler.satz2",
+        "juttler.sigma_inverse",
+        "juttler.satz3",
+        "juttler.lemma4",
+        "juttler.satz5",
+        "juttler.focal_absolute",
+        "juttler.interpolation",
+        "juttler.satz8",
+        "juttler.satz9",
+        "juttler.lemma10",
+        "juttler.satz11",
     ] {
         assert!(ids.contains(&id), "{id} missing");
     }
@@ -35,7 +62,10 @@ fn every_spec_juttler_id_is_in_the_catalogue() {
 }
 
 fn exactcheck(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_exactcheck")).args(args).output().expect("runs")
+    Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+        .args(args)
+        .output()
+        .expect("runs")
 }
 
 #[test]
@@ -70,21 +100,50 @@ fn prove_identities_typed_as_text() {
     assert!(String::from_utf8_lossy(&lebesgue.stdout).starts_with("proved"));
     let dietz = exactcheck(&["prove", "(q0*q3)*(q1*q2) - (q1*q3)*(q0*q2)"]);
     assert!(dietz.status.success());
-    let circle = exactcheck(&["prove", "c^2 x^3 + s^2 x^3 - x", "x^3 - x", "--where", "c^2 + s^2 = 1"]);
+    let circle = exactcheck(&[
+        "prove",
+        "c^2 x^3 + s^2 x^3 - x",
+        "x^3 - x",
+        "--where",
+        "c^2 + s^2 = 1",
+    ]);
     // Juxtaposition is not multiplication in the syntax: this must be a clear error, status 2.
     assert_eq!(circle.status.code(), Some(2));
-    let circle = exactcheck(&["prove", "c^2*x^3 + s^2*x^3 - x", "x^3 - x", "--where", "c^2 + s^2 = 1"]);
-    assert!(circle.status.success(), "{}", String::from_utf8_lossy(&circle.stdout));
+    let circle = exactcheck(&[
+        "prove",
+        "c^2*x^3 + s^2*x^3 - x",
+        "x^3 - x",
+        "--where",
+        "c^2 + s^2 = 1",
+    ]);
+    assert!(
+        circle.status.success(),
+        "{}",
+        String::from_utf8_lossy(&circle.stdout)
+    );
 }
 
 #[test]
 fn prove_reports_a_counter_example_for_a_flipped_sign() {
-    let o = exactcheck(&["prove", "c^2*x^3 - s^2*x^3 - x", "x^3 - x", "--where", "c^2 + s^2 = 1", "--json"]);
+    let o = exactcheck(&[
+        "prove",
+        "c^2*x^3 - s^2*x^3 - x",
+        "x^3 - x",
+        "--where",
+        "c^2 + s^2 = 1",
+        "--json",
+    ]);
     assert_eq!(o.status.code(), Some(1));
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON");
     assert_eq!(v["verdict"], "fails");
     // The point satisfies the relation exactly and the residual there is the reported value.
-    let q = |name: &str| v["point"][name].as_str().unwrap().parse::<exactcheck_exact::Rational>().unwrap();
+    let q = |name: &str| {
+        v["point"][name]
+            .as_str()
+            .unwrap()
+            .parse::<exactcheck_exact::Rational>()
+            .unwrap()
+    };
     let (c, s, x) = (q("c"), q("s"), q("x"));
     use exactcheck_core::Ring;
     assert_eq!(c.square() + s.square(), exactcheck_exact::Rational::ONE);
@@ -123,12 +182,32 @@ fn prove_rejects_bad_input_with_status_2() {
 
 #[test]
 fn prove_random_mod_p() {
-    let o = exactcheck(&["prove", "c^2*x^3 + s^2*x^3 - x", "x^3 - x", "--where", "c^2 + s^2 = 1", "--random", "4", "--json"]);
+    let o = exactcheck(&[
+        "prove",
+        "c^2*x^3 + s^2*x^3 - x",
+        "x^3 - x",
+        "--where",
+        "c^2 + s^2 = 1",
+        "--random",
+        "4",
+        "--json",
+    ]);
     assert!(o.status.success());
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     assert_eq!(v["verdict"], "holds");
-    assert!(v["evidence"].as_str().unwrap().contains("probability <= 2^-"));
-    let o = exactcheck(&["prove", "c^2*x^3 - s^2*x^3 - x", "x^3 - x", "--where", "c^2 + s^2 = 1", "--random", "4"]);
+    assert!(v["evidence"]
+        .as_str()
+        .unwrap()
+        .contains("probability <= 2^-"));
+    let o = exactcheck(&[
+        "prove",
+        "c^2*x^3 - s^2*x^3 - x",
+        "x^3 - x",
+        "--where",
+        "c^2 + s^2 = 1",
+        "--random",
+        "4",
+    ]);
     assert_eq!(o.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&o.stdout).starts_with("fails"));
     // W1 for (m, n) = (4, 6) as text: holds mod p, and proved by expansion.
@@ -140,6 +219,11 @@ fn prove_random_mod_p() {
     // A perturbed coefficient (the anchors' --negative) fails both ways.
     let bad = rhs.replacen("1/1*", "8/7*", 1);
     assert_ne!(bad, rhs);
-    assert_eq!(exactcheck(&["prove", &lhs, &bad, "--random", "3"]).status.code(), Some(1));
+    assert_eq!(
+        exactcheck(&["prove", &lhs, &bad, "--random", "3"])
+            .status
+            .code(),
+        Some(1)
+    );
     assert_eq!(exactcheck(&["prove", &lhs, &bad]).status.code(), Some(1));
 }

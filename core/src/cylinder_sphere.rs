@@ -82,6 +82,59 @@ impl<T: Ring> CylinderSphere<T> {
     }
 }
 
+/// `R_y(beta) v` with `R_y = [[cos b, 0, sin b], [0, 1, 0], [-sin b, 0, cos b]]` (4).
+pub fn rotate_y<T: Ring>(beta: &Angle<T>, v: &Vec3<T>) -> Vec3<T> {
+    Vec3::new(
+        beta.cos.mul_ref(&v.x) + beta.sin.mul_ref(&v.z),
+        v.y.clone(),
+        beta.cos.mul_ref(&v.z) - beta.sin.mul_ref(&v.x),
+    )
+}
+
+/// `R_x(gamma) v` with `R_x = [[1, 0, 0], [0, cos g, sin g], [0, -sin g, cos g]]` (4).
+pub fn rotate_x<T: Ring>(gamma: &Angle<T>, v: &Vec3<T>) -> Vec3<T> {
+    Vec3::new(
+        v.x.clone(),
+        gamma.cos.mul_ref(&v.y) + gamma.sin.mul_ref(&v.z),
+        gamma.cos.mul_ref(&v.z) - gamma.sin.mul_ref(&v.y),
+    )
+}
+
+impl<T: Ring> CylinderSphere<T> {
+    /// The unrotated cylinder point `(a + r cos t, b + r sin t, u)` (3).
+    pub fn base_point(&self, cos_t: &T, sin_t: &T, u: &T) -> Vec3<T> {
+        Vec3::new(
+            self.a.add_ref(&self.r.mul_ref(cos_t)),
+            self.b.add_ref(&self.r.mul_ref(sin_t)),
+            u.clone(),
+        )
+    }
+
+    /// The cylinder point of (4) as printed: `R_y(beta) R_x(gamma) (a + r cos t, b + r sin t, u)`.
+    pub fn point_printed_order(&self, cos_t: &T, sin_t: &T, u: &T) -> Vec3<T> {
+        rotate_y(
+            &self.beta,
+            &rotate_x(&self.gamma, &self.base_point(cos_t, sin_t, u)),
+        )
+    }
+
+    /// The cylinder point with the rotations in the other order,
+    /// `R_x(gamma) R_y(beta) (a + r cos t, b + r sin t, u)`: the parametrization the rest of the
+    /// paper ((5), (7)-(11)) and [`CylinderSphere::coefficients_at`] use.
+    pub fn point(&self, cos_t: &T, sin_t: &T, u: &T) -> Vec3<T> {
+        rotate_x(
+            &self.gamma,
+            &rotate_y(&self.beta, &self.base_point(cos_t, sin_t, u)),
+        )
+    }
+
+    /// `F(t, u) = |x(t, u) - (d, e, f)|^2 - R^2` for the cylinder point [`CylinderSphere::point`].
+    pub fn sphere_residual(&self, cos_t: &T, sin_t: &T, u: &T) -> T {
+        let x = self.point(cos_t, sin_t, u);
+        (&x - &self.center).norm_squared() - self.radius.square()
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -75,7 +75,10 @@ impl core::fmt::Display for Degeneracy {
                 write!(f, "the two circles through corner {corner} coincide")
             }
             Degeneracy::Tangent { corner } => {
-                write!(f, "the two circles through corner {corner} are tangent there")
+                write!(
+                    f,
+                    "the two circles through corner {corner} are tangent there"
+                )
             }
         }
     }
@@ -344,7 +347,12 @@ mod tests {
 
     #[test]
     fn sphere_patch_matches_the_curve_images() {
-        let corners = [h([1, 0, 0, 0]), h([1, 1, 0, 0]), h([1, 1, 1, 1]), h([2, 0, 1, -1])];
+        let corners = [
+            h([1, 0, 0, 0]),
+            h([1, 1, 0, 0]),
+            h([1, 1, 1, 1]),
+            h([2, 0, 1, -1]),
+        ];
         let bil = bilinear_patch(&corners);
         assert_eq!(bil.corners().map(Hom4::clone), corners);
         let sph = lebesgue_patch(&bil);
@@ -354,7 +362,10 @@ mod tests {
         }
         for (a, b) in bil.boundary_curves().iter().zip(sph.boundary_curves()) {
             let image = lebesgue_curve(&a.hom_coordinates());
-            assert_eq!(RationalBezierCurve::from_hom_coordinates(&image).unwrap(), b);
+            assert_eq!(
+                RationalBezierCurve::from_hom_coordinates(&image).unwrap(),
+                b
+            );
         }
         // The patch lies on K, and is the delta-image pointwise.
         for (u, v) in [(Q::new(1, 3), Q::new(2, 5)), (Q::new(-1, 2), Q::int(3))] {
@@ -368,7 +379,12 @@ mod tests {
     fn miquel_by_hand() {
         // The bilinear patch on the unit square of the plane p3 = 0 maps by sigma (Satz 2): its
         // boundary lines are lines of P, whose images are circles through the pole z.
-        let corners = [h([1, 0, 0, 0]), h([1, 1, 0, 0]), h([1, 1, 1, 0]), h([1, 0, 1, 0])];
+        let corners = [
+            h([1, 0, 0, 0]),
+            h([1, 1, 0, 0]),
+            h([1, 1, 1, 0]),
+            h([1, 0, 1, 0]),
+        ];
         let conf = miquel_configuration(&lebesgue_patch(&bilinear_patch(&corners))).unwrap();
         // Every boundary circle passes through z, so every second point is z = (1, 0, 0, 1).
         for q in &conf.second {
@@ -406,6 +422,9 @@ mod tests {
                 checked += 1;
             }
         }
-        assert!(checked >= 10, "only {checked} non-degenerate random patches");
+        assert!(
+            checked >= 10,
+            "only {checked} non-degenerate random patches"
+        );
     }
 }

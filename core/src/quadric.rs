@@ -162,7 +162,12 @@ pub fn lebesgue_curve_scaled<T: Ring>(x: &[Bernstein<T>; 4]) -> [Vec<T>; 4] {
     };
     let (s0, s1, s2, s3) = (prod(0, 0), prod(1, 1), prod(2, 2), prod(3, 3));
     [
-        combine(&[(1, s0.clone()), (1, s1.clone()), (1, s2.clone()), (1, s3.clone())]),
+        combine(&[
+            (1, s0.clone()),
+            (1, s1.clone()),
+            (1, s2.clone()),
+            (1, s3.clone()),
+        ]),
         combine(&[(2, prod(0, 1)), (-2, prod(2, 3))]),
         combine(&[(2, prod(0, 2)), (2, prod(1, 3))]),
         combine(&[(1, s1), (1, s2), (-1, s0), (-1, s3)]),
@@ -192,7 +197,9 @@ pub fn lebesgue_patch_scaled<T: Ring>(net: &[Vec<Hom4<T>>]) -> Vec<Vec<Hom4<T>>>
         }
         out
     };
-    let p: Vec<Vec<Vec<Vec<T>>>> = (0..4).map(|a| (0..4).map(|b| prod(a, b)).collect()).collect();
+    let p: Vec<Vec<Vec<Vec<T>>>> = (0..4)
+        .map(|a| (0..4).map(|b| prod(a, b)).collect())
+        .collect();
     (0..=2 * m)
         .map(|k| {
             (0..=2 * n)

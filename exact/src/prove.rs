@@ -185,7 +185,10 @@ pub fn degree_bound(e: &Expr) -> Option<u64> {
         ExprKind::Number(_) => Some(0),
         ExprKind::Var(_) => Some(1),
         ExprKind::Neg(x) => degree_bound(x),
-        ExprKind::Sum(ts) => ts.iter().map(|(_, t)| degree_bound(t)).try_fold(0, |a, d| Some(a.max(d?))),
+        ExprKind::Sum(ts) => ts
+            .iter()
+            .map(|(_, t)| degree_bound(t))
+            .try_fold(0, |a, d| Some(a.max(d?))),
         ExprKind::Product(fs) => fs.iter().try_fold(0u64, |a, (op, f)| {
             let d = degree_bound(f)?;
             match op {
@@ -219,7 +222,8 @@ fn constant_exponent(e: &Expr) -> Option<u64> {
 /// negative exponent, or a square root (no square roots are taken mod p).
 pub fn eval_modp(e: &Expr, point: &HashMap<String, ModP>) -> Result<ModP, String> {
     Ok(match &e.kind {
-        ExprKind::Number(q) => ModP::from_rational(q).map_err(|_| format!("the number {q} has a denominator divisible by p"))?,
+        ExprKind::Number(q) => ModP::from_rational(q)
+            .map_err(|_| format!("the number {q} has a denominator divisible by p"))?,
         ExprKind::Var(v) => *point.get(v).ok_or_else(|| format!("no value for {v}"))?,
         ExprKind::Neg(x) => -eval_modp(x, point)?,
         ExprKind::Sum(ts) => {
@@ -239,16 +243,23 @@ pub fn eval_modp(e: &Expr, point: &HashMap<String, ModP>) -> Result<ModP, String
                 let v = eval_modp(f, point)?;
                 match op {
                     MulOp::Times => acc *= v,
-                    MulOp::Divide => acc *= v.inv().map_err(|_| "a divisor vanishes modulo p".to_string())?,
+                    MulOp::Divide => {
+                        acc *= v
+                            .inv()
+                            .map_err(|_| "a divisor vanishes modulo p".to_string())?
+                    }
                 }
             }
             acc
         }
         ExprKind::Pow(b, x) => {
-            let k = constant_exponent(x).ok_or("exponents must be non-negative integer constants")?;
+            let k =
+                constant_exponent(x).ok_or("exponents must be non-negative integer constants")?;
             eval_modp(b, point)?.pow_u64(k)
         }
-        ExprKind::Sqrt(_) => return Err("square roots are not available modulo p (use exact expansion)".into()),
+        ExprKind::Sqrt(_) => {
+            return Err("square roots are not available modulo p (use exact expansion)".into())
+        }
     })
 }
 
@@ -295,7 +306,10 @@ pub fn random_identity_test(
     let degree = if circles.is_empty() { d } else { 2 * d };
     let mut rng = SplitMix64::new(seed);
     for _ in 0..trials {
-        let mut point: HashMap<String, ModP> = variables.iter().map(|v| (v.clone(), ModP::random(&mut rng))).collect();
+        let mut point: HashMap<String, ModP> = variables
+            .iter()
+            .map(|v| (v.clone(), ModP::random(&mut rng)))
+            .collect();
         for (c, s) in circles {
             let (cv, sv) = loop {
                 let tau = ModP::random(&mut rng);
@@ -313,5 +327,9 @@ pub fn random_identity_test(
             return Ok(RandomDecision::Fails { point, value });
         }
     }
-    Ok(RandomDecision::Holds { trials, degree, log2_bound: schwartz_zippel_log2_bound(degree, trials) })
+    Ok(RandomDecision::Holds {
+        trials,
+        degree,
+        log2_bound: schwartz_zippel_log2_bound(degree, trials),
+    })
 }

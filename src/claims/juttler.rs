@@ -458,39 +458,78 @@ pub(super) fn satz1() -> Result<Outcome, String> {
     use exactcheck_core::{binomial, Bernstein, TensorPatch};
     let mut sym = Symbols::new(&["t", "u", "v"]);
     let mut res: Vec<(String, P)> = Vec::new();
-    let inv_binom = |n: usize, k: usize| P::constant(Rational::new(1, binomial(n as u32, k as u32) as i64).unwrap_or(Rational::ONE));
+    let inv_binom = |n: usize, k: usize| {
+        P::constant(Rational::new(1, binomial(n as u32, k as u32) as i64).unwrap_or(Rational::ONE))
+    };
     for n in 1..=3usize {
         let x: [Bernstein<P>; 4] = std::array::from_fn(|a| {
-            Bernstein::new((0..=n).map(|i| sym.vars.poly::<Rational>(&format!("c{n}_{i}_{a}"))).collect())
+            Bernstein::new(
+                (0..=n)
+                    .map(|i| sym.vars.poly::<Rational>(&format!("c{n}_{i}_{a}")))
+                    .collect(),
+            )
         });
         let t = sym.vars.poly::<Rational>("t");
         let scaled = lebesgue_curve_scaled(&x);
         let image: Vec<Bernstein<P>> = scaled
             .iter()
-            .map(|e| Bernstein::new(e.iter().enumerate().map(|(k, c)| c.clone() * inv_binom(2 * n, k)).collect()))
+            .map(|e| {
+                Bernstein::new(
+                    e.iter()
+                        .enumerate()
+                        .map(|(k, c)| c.clone() * inv_binom(2 * n, k))
+                        .collect(),
+                )
+            })
             .collect();
         if image.iter().any(|b| b.degree() != 2 * n) {
             return Err(format!("image of degree {n} is not of degree {}", 2 * n));
         }
-        let at_t = Hom4::new(image[0].eval(&t), image[1].eval(&t), image[2].eval(&t), image[3].eval(&t));
-        let direct = lebesgue(&Hom4::new(x[0].eval(&t), x[1].eval(&t), x[2].eval(&t), x[3].eval(&t)));
-        res.extend(equal_coordinates(&format!("degree {n}: product-rule control points vs delta(x(t))"), &at_t, &direct));
+        let at_t = Hom4::new(
+            image[0].eval(&t),
+            image[1].eval(&t),
+            image[2].eval(&t),
+            image[3].eval(&t),
+        );
+        let direct = lebesgue(&Hom4::new(
+            x[0].eval(&t),
+            x[1].eval(&t),
+            x[2].eval(&t),
+            x[3].eval(&t),
+        ));
+        res.extend(equal_coordinates(
+            &format!("degree {n}: product-rule control points vs delta(x(t))"),
+            &at_t,
+            &direct,
+        ));
         res.push((format!("degree {n}: image on K"), sphere_form(&at_t)));
     }
     // Bilinear patch -> biquadratic patch.
     let net: Vec<Vec<Hom4<P>>> = (0..2)
         .map(|i| {
             (0..2)
-                .map(|j| Hom4(std::array::from_fn(|a| sym.vars.poly::<Rational>(&format!("n_{i}{j}_{a}")))))
+                .map(|j| {
+                    Hom4(std::array::from_fn(|a| {
+                        sym.vars.poly::<Rational>(&format!("n_{i}{j}_{a}"))
+                    }))
+                })
                 .collect()
         })
         .collect();
-    let (u, v) = (sym.vars.poly::<Rational>("u"), sym.vars.poly::<Rational>("v"));
+    let (u, v) = (
+        sym.vars.poly::<Rational>("u"),
+        sym.vars.poly::<Rational>("v"),
+    );
     let scaled = lebesgue_patch_scaled(&net);
     let image_net: Vec<Vec<Hom4<P>>> = scaled
         .iter()
         .enumerate()
-        .map(|(k, row)| row.iter().enumerate().map(|(l, h)| h.scale(&(inv_binom(2, k) * inv_binom(2, l)))).collect())
+        .map(|(k, row)| {
+            row.iter()
+                .enumerate()
+                .map(|(l, h)| h.scale(&(inv_binom(2, k) * inv_binom(2, l))))
+                .collect()
+        })
         .collect();
     let image = TensorPatch::try_new(image_net).map_err(|e| e.to_string())?;
     if image.degrees() != (2, 2) {
@@ -499,9 +538,18 @@ pub(super) fn satz1() -> Result<Outcome, String> {
     let bilinear = TensorPatch::try_new(net).map_err(|e| e.to_string())?;
     let direct = lebesgue(&bilinear.eval_hom(&u, &v));
     let at_uv = image.eval_hom(&u, &v);
-    res.extend(equal_coordinates("patch: product-rule net vs delta(x(u,v))", &at_uv, &direct));
+    res.extend(equal_coordinates(
+        "patch: product-rule net vs delta(x(u,v))",
+        &at_uv,
+        &direct,
+    ));
     res.push(("patch: image on K".into(), sphere_form(&at_uv)));
-    let mut out = decide(&sym, &res, &[], "symbolic expansion over Q[control vectors, t, u, v]");
+    let mut out = decide(
+        &sym,
+        &res,
+        &[],
+        "symbolic expansion over Q[control vectors, t, u, v]",
+    );
     if out.verdict == Verdict::Proved {
         out.evidence = format!(
             "for n = 1, 2, 3 the product-rule control points of degree 2n give delta(x(t)) identically and lie on K; the bilinear patch maps to the biquadratic one ({} residuals expanded to 0)",
@@ -575,7 +623,12 @@ pub(super) fn interpolation() -> Result<Outcome, String> {
                 }
             }
             let c = r.curve.hom_coordinates();
-            let form = c[0].mul(&c[0]).checked_sub(&c[1].mul(&c[1])).and_then(|f| f.checked_sub(&c[2].mul(&c[2]))).and_then(|f| f.checked_sub(&c[3].mul(&c[3]))).map_err(|e| e.to_string())?;
+            let form = c[0]
+                .mul(&c[0])
+                .checked_sub(&c[1].mul(&c[1]))
+                .and_then(|f| f.checked_sub(&c[2].mul(&c[2])))
+                .and_then(|f| f.checked_sub(&c[3].mul(&c[3])))
+                .map_err(|e| e.to_string())?;
             if form.coeffs().iter().any(|x| !x.is_zero()) {
                 return Ok(Outcome {
                     verdict: Verdict::Fails,
@@ -589,7 +642,10 @@ pub(super) fn interpolation() -> Result<Outcome, String> {
         }
         let d = delta_degrees.iter().max().copied().unwrap_or(0);
         let s = sigma_degrees.iter().flatten().max().copied();
-        table.push(format!("N={count}: {d} vs {}", s.map_or("none".into(), |s| s.to_string())));
+        table.push(format!(
+            "N={count}: {d} vs {}",
+            s.map_or("none".into(), |s| s.to_string())
+        ));
     }
     Ok(Outcome {
         verdict: Verdict::Holds,
@@ -611,7 +667,10 @@ pub(super) fn converse(which: &str) -> Result<String, String> {
         if which == "K" {
             let k = lebesgue(&x);
             let line = exactcheck_core::sphere_interpolation::preimage_line(&k);
-            let (l, m) = (Rational::from_integer(rng.int(5)), Rational::from_integer(rng.int(5)));
+            let (l, m) = (
+                Rational::from_integer(rng.int(5)),
+                Rational::from_integer(rng.int(5)),
+            );
             let p = line[0].scale(&l).add(&line[1].scale(&m));
             if p.is_zero() || lebesgue(&p).is_zero() {
                 continue;
@@ -624,8 +683,16 @@ pub(super) fn converse(which: &str) -> Result<String, String> {
             if h.0[0].is_zero() {
                 continue;
             }
-            let q = Hom4::new(h.0[0].clone(), h.0[1].clone(), h.0[2].clone(), h.0[0].clone());
-            let (l, m) = (Rational::from_integer(rng.int(5)), Rational::from_integer(rng.int(5)));
+            let q = Hom4::new(
+                h.0[0].clone(),
+                h.0[1].clone(),
+                h.0[2].clone(),
+                h.0[0].clone(),
+            );
+            let (l, m) = (
+                Rational::from_integer(rng.int(5)),
+                Rational::from_integer(rng.int(5)),
+            );
             let p = alpha_preimage_point(&q, &l, &m);
             if p.is_zero() || psi(&p).is_zero() {
                 continue;

@@ -11,6 +11,7 @@
 
 pub mod engine;
 pub mod juttler;
+pub mod spaeth;
 
 use serde_json::{json, Value};
 use std::fmt;
@@ -63,7 +64,9 @@ pub struct Claim {
 
 /// The whole catalogue, in SPEC order.
 pub fn catalogue() -> Vec<Claim> {
-    juttler::claims()
+    let mut all = juttler::claims();
+    all.extend(spaeth::claims());
+    all
 }
 
 /// A checked claim.

@@ -1,0 +1,313 @@
+//! Claims of Spaeth's cylinder/sphere paper (seeds 000 and 001, SPEC §2).
+//!
+//! The printed equations (4), (5), (7), (9), (10), (11) are kept as text (ASCII transliterations
+//! of the printed formulas: `cb, sb` for cos/sin beta, `cg, sg` for gamma, `ct, st` for t) and
+//! checked against the derivation in `exactcheck_core::cylinder_sphere`, symbolically modulo
+//! `cos^2 + sin^2 = 1` for each angle. Where a printed formula does not match, the claim fails
+//! with an exact counter-example (rational angles), and a corrected text — itself proved equal to
+//! the derivation — is reported.
+
+use super::engine::{prove_all, Symbols};
+use super::{Claim, Outcome, Verdict};
+use exactcheck_core::cylinder_sphere::{Angle, CylinderSphere};
+use exactcheck_core::{Ring, Vec3};
+use exactcheck_exact::poly::{unit_circle_relation, Poly};
+use exactcheck_exact::Rational;
+
+type P = Poly<Rational>;
+
+const VARS: [&str; 15] = [
+    "a", "b", "r", "d", "e", "f", "R", "u", "ct", "st", "cb", "sb", "cg", "sg", "D",
+];
+
+/// (5) as printed.
+const EQ5: [&str; 3] = [
+    "cb*(a + r*ct) + u*sb",
+    "cg*(b + r*st) + sg*(-sb*(a + r*ct) + u*cb)",
+    "-sg*(b + r*st) + cg*(-sb*(a + r*ct) + u*cb)",
+];
+/// (4) multiplied out, as the corrected (5) would have to read for the product order printed in (4).
+const EQ5_CORRECTED: [&str; 3] = [
+    "cb*(a + r*ct) + sb*(-sg*(b + r*st) + cg*u)",
+    "cg*(b + r*st) + sg*u",
+    "-sb*(a + r*ct) + cb*(-sg*(b + r*st) + cg*u)",
+];
+/// (7) as printed.
+const EQ7: &str = "(cb*(a + r*ct) + u*sb - d)^2 + (cg*(b + r*st) + sg*(-sb*(a + r*ct) + u*cb) - e)^2 + (-sg*(b + r*st) + cg*(-sb*(a + r*ct) + u*cb) - f)^2 - R^2";
+/// (9) as printed.
+const EQ9: &str = "sb*(cb*(a + r*ct) - d) + sg*cb*(cg*(b + r*st) - sg*sb*(a + r*ct) - e) + cg*cb*(sg*(b + r*st) + cg*sb*(a + r*ct) + f)";
+/// (9) with the sign of the last term corrected.
+const EQ9_CORRECTED: &str = "sb*(cb*(a + r*ct) - d) + sg*cb*(cg*(b + r*st) - sg*sb*(a + r*ct) - e) - cg*cb*(sg*(b + r*st) + cg*sb*(a + r*ct) + f)";
+/// (10) as printed.
+const EQ10: &str = "(cb*(a + r*ct) - d)^2 + (cg*(b + r*st) - sg*sb*(a + r*ct) - e)^2 + (sg*(b + r*st) + cg*sb*(a + r*ct) + f)^2";
+/// (10) with the missing `- R^2`.
+const EQ10_CORRECTED: &str = "(cb*(a + r*ct) - d)^2 + (cg*(b + r*st) - sg*sb*(a + r*ct) - e)^2 + (sg*(b + r*st) + cg*sb*(a + r*ct) + f)^2 - R^2";
+
+macro_rules! claim {
+    ($id:literal, $expected:ident, $statement:literal, $check:ident) => {
+        Claim {
+            id: $id,
+            statement: $statement,
+            expected: Verdict::$expected,
+            check: $check,
+        }
+    };
+}
+
+/// The symbolic `spaeth.*` claims.
+pub fn claims() -> Vec<Claim> {
+    vec![
+        claim!("spaeth.eq5", Fails, "(4) (x,y,z) = Ry(beta) Rx(gamma) (a + r cos t, b + r sin t, u), multiplied out, is (5): x = cos b (a + r cos t) + u sin b, y = cos g (b + r sin t) + sin g (-sin b (a + r cos t) + u cos b), z = -sin g (b + r sin t) + cos g (-sin b (a + r cos t) + u cos b)", eq5),
+        claim!("spaeth.eq7", Proved, "(5) substituted into (6) is (7): F(t,u) = [cos b (a + r cos t) + u sin b - d]^2 + [cos g (b + r sin t) + sin g (-sin b (a + r cos t) + u cos b) - e]^2 + [-sin g (b + r sin t) + cos g (-sin b (a + r cos t) + u cos b) - f]^2 - R^2", eq7),
+        claim!("spaeth.eq8", Proved, "(8) F(u,t) = u^2 + 2 A(t) u + B(t): F is a monic quadratic in u", eq8),
+        claim!("spaeth.eq9", Fails, "(9) A(t) = sin b [cos b (a + r cos t) - d] + sin g cos b [cos g (b + r sin t) - sin g sin b (a + r cos t) - e] + cos g cos b [sin g (b + r sin t) + cos g sin b (a + r cos t) + f]", eq9),
+        claim!("spaeth.eq10", Fails, "(10) B(t) = [cos b (a + r cos t) - d]^2 + [cos g (b + r sin t) - sin g sin b (a + r cos t) - e]^2 + [sin g (b + r sin t) + cos g sin b (a + r cos t) + f]^2", eq10),
+        claim!("spaeth.eq11", Proved, "(11) the roots of (8) are u_1,2(t) = -A(t) +- sqrt(A(t)^2 - B(t))", eq11),
+    ]
+}
+
+const METHOD: &str = "symbolic expansion modulo cos^2 + sin^2 = 1 (t, beta, gamma)";
+
+struct Setup {
+    sym: Symbols,
+    relations: Vec<P>,
+    cs: CylinderSphere<P>,
+    ct: P,
+    st: P,
+    u: P,
+}
+
+fn setup() -> Setup {
+    let mut sym = Symbols::new(&VARS);
+    let mut v = |n: &str| sym.vars.poly::<Rational>(n);
+    let cs = CylinderSphere {
+        a: v("a"),
+        b: v("b"),
+        r: v("r"),
+        beta: Angle {
+            cos: v("cb"),
+            sin: v("sb"),
+        },
+        gamma: Angle {
+            cos: v("cg"),
+            sin: v("sg"),
+        },
+        center: Vec3::new(v("d"), v("e"), v("f")),
+        radius: v("R"),
+    };
+    let (ct, st, u) = (v("ct"), v("st"), v("u"));
+    let var = |n: &str| sym.vars.get(n).unwrap_or_default();
+    let relations = vec![
+        unit_circle_relation(var("ct"), var("st")),
+        unit_circle_relation(var("cb"), var("sb")),
+        unit_circle_relation(var("cg"), var("sg")),
+    ];
+    Setup {
+        sym,
+        relations,
+        cs,
+        ct,
+        st,
+        u,
+    }
+}
+
+/// F's coefficients in u: `(F(0), F(1), F(-1))` give `F2 = (F(1) + F(-1))/2 - F(0)`,
+/// `F1 = (F(1) - F(-1))/2`.
+fn coefficients_in_u(s: &mut Setup, f: &P) -> Result<(P, P, P), String> {
+    let u = s.sym.vars.get("u").ok_or("no u")?;
+    if f.degree_in(u) > 2 {
+        return Err("F has degree > 2 in u".into());
+    }
+    let at = |x: i64| f.substitute(u, &P::from_i64(x));
+    let half = P::constant(Rational::new(1, 2).map_err(|e| e.to_string())?);
+    let (f0, fp, fm) = (at(0), at(1), at(-1));
+    let f2 = (fp.clone() + &fm) * &half - &f0;
+    let f1 = (fp - fm) * &half;
+    Ok((f2, f1, f0))
+}
+
+fn residuals_of(label: &str, a: &[P], b: &[P]) -> Vec<(String, P)> {
+    a.iter()
+        .zip(b)
+        .enumerate()
+        .map(|(i, (x, y))| (format!("{label}, coordinate {i}"), x.clone() - y))
+        .collect()
+}
+
+fn run(s: &Setup, residuals: &[(String, P)]) -> Outcome {
+    let r: Vec<(&str, P)> = residuals
+        .iter()
+        .map(|(w, p)| (w.as_str(), p.clone()))
+        .collect();
+    prove_all(&s.sym, &r, &s.relations, METHOD)
+}
+
+/// Checks a failing printed formula: the failure (with its counter-example) from the printed
+/// residuals, plus the proof that the corrected text matches the derivation.
+fn with_correction(
+    s: &Setup,
+    printed: &[(String, P)],
+    corrected: &[(String, P)],
+    correction: &str,
+) -> Outcome {
+    let mut out = run(s, printed);
+    if out.verdict == Verdict::Fails {
+        let fixed = run(s, corrected);
+        out.evidence = if fixed.verdict == Verdict::Proved {
+            format!(
+                "{}. Corrected form (proved equal to the derivation): {correction}",
+                out.evidence
+            )
+        } else {
+            format!(
+                "{}. (The candidate correction does not match either: {})",
+                out.evidence, fixed.evidence
+            )
+        };
+    }
+    out
+}
+
+fn eq5() -> Result<Outcome, String> {
+    let mut s = setup();
+    let printed: Vec<P> = EQ5
+        .iter()
+        .map(|t| s.sym.parse(t))
+        .collect::<Result<_, _>>()?;
+    let corrected: Vec<P> = EQ5_CORRECTED
+        .iter()
+        .map(|t| s.sym.parse(t))
+        .collect::<Result<_, _>>()?;
+    let product = s.cs.point_printed_order(&s.ct, &s.st, &s.u).into_array();
+    let reversed = s.cs.point(&s.ct, &s.st, &s.u).into_array();
+    let printed_res = residuals_of("(5) as printed - Ry(beta) Rx(gamma) v", &printed, &product);
+    let corrected_res = residuals_of("corrected (5) - Ry(beta) Rx(gamma) v", &corrected, &product);
+    let mut out = with_correction(
+        &s,
+        &printed_res,
+        &corrected_res,
+        &format!(
+            "x = {}, y = {}, z = {}",
+            EQ5_CORRECTED[0], EQ5_CORRECTED[1], EQ5_CORRECTED[2]
+        ),
+    );
+    // What (5) is instead: the product in the other order.
+    let other = run(
+        &s,
+        &residuals_of("(5) - Rx(gamma) Ry(beta) v", &printed, &reversed),
+    );
+    if out.verdict == Verdict::Fails && other.verdict == Verdict::Proved {
+        out.evidence += ". The printed (5) is exactly Rx(gamma) Ry(beta) v (proved): the matrices of (4) are multiplied in the opposite order; (7)-(11) follow (5)";
+    }
+    Ok(out)
+}
+
+fn eq7() -> Result<Outcome, String> {
+    let mut s = setup();
+    let printed_f = s.sym.parse(EQ7)?;
+    let x: Vec<P> = EQ5
+        .iter()
+        .map(|t| s.sym.parse(t))
+        .collect::<Result<_, _>>()?;
+    let x = Vec3::new(x[0].clone(), x[1].clone(), x[2].clone());
+    let substituted = (&x - &s.cs.center).norm_squared() - s.cs.radius.square();
+    Ok(run(
+        &s,
+        &[(
+            "(7) as printed - |(5) - (d,e,f)|^2 + R^2".into(),
+            printed_f - substituted,
+        )],
+    ))
+}
+
+fn eq8() -> Result<Outcome, String> {
+    let mut s = setup();
+    let f = s.sym.parse(EQ7)?;
+    let (f2, _, _) = coefficients_in_u(&mut s, &f)?;
+    Ok(run(
+        &s,
+        &[("coefficient of u^2 in (7), minus 1".into(), f2 - P::one())],
+    ))
+}
+
+fn eq9() -> Result<Outcome, String> {
+    let mut s = setup();
+    let f = s.sym.parse(EQ7)?;
+    let (_, f1, _) = coefficients_in_u(&mut s, &f)?;
+    let half = P::constant(Rational::new(1, 2).map_err(|e| e.to_string())?);
+    let a_derived = f1 * &half;
+    let printed = s.sym.parse(EQ9)?;
+    let corrected = s.sym.parse(EQ9_CORRECTED)?;
+    let core_a = s.cs.coefficients_at(&s.ct, &s.st).0;
+    Ok(with_correction(
+        &s,
+        &[(
+            "(9) as printed - (half the u-coefficient of (7))".into(),
+            printed - &a_derived,
+        )],
+        &[
+            (
+                "corrected (9) - (half the u-coefficient of (7))".into(),
+                corrected - &a_derived,
+            ),
+            (
+                "core A(t) - (half the u-coefficient of (7))".into(),
+                core_a - &a_derived,
+            ),
+        ],
+        &format!("A(t) = {EQ9_CORRECTED} (the last term's sign is -)"),
+    ))
+}
+
+fn eq10() -> Result<Outcome, String> {
+    let mut s = setup();
+    let f = s.sym.parse(EQ7)?;
+    let (_, _, f0) = coefficients_in_u(&mut s, &f)?;
+    let printed = s.sym.parse(EQ10)?;
+    let corrected = s.sym.parse(EQ10_CORRECTED)?;
+    let core_b = s.cs.coefficients_at(&s.ct, &s.st).1;
+    Ok(with_correction(
+        &s,
+        &[(
+            "(10) as printed - (the u-free term of (7))".into(),
+            printed - &f0,
+        )],
+        &[
+            (
+                "corrected (10) - (the u-free term of (7))".into(),
+                corrected - &f0,
+            ),
+            ("core B(t) - (the u-free term of (7))".into(), core_b - &f0),
+        ],
+        &format!("B(t) = {EQ10_CORRECTED} (the printed (10) lacks - R^2, which (8) needs)"),
+    ))
+}
+
+fn eq11() -> Result<Outcome, String> {
+    // A, B, D atomic: u = -A + s D with D^2 = A^2 - B solves u^2 + 2 A u + B = 0 for s = +-1,
+    // and the two roots have sum -2A and product B (Vieta), so they are all the roots.
+    let mut sym = Symbols::new(&["A", "B", "D"]);
+    let (a, b, d) = (
+        sym.vars.poly::<Rational>("A"),
+        sym.vars.poly::<Rational>("B"),
+        sym.vars.poly::<Rational>("D"),
+    );
+    let relation = d.square() - a.square() + &b;
+    let two = P::from_i64(2);
+    let root = |sign: i64| d.scale_i64(sign) - &a;
+    let (u1, u2) = (root(1), root(-1));
+    let f = |u: &P| u.square() + two.clone() * &a * u + &b;
+    let residuals = vec![
+        ("F(-A + sqrt(A^2 - B))", f(&u1)),
+        ("F(-A - sqrt(A^2 - B))", f(&u2)),
+        ("u1 + u2 + 2A", u1.clone() + &u2 + two.clone() * &a),
+        ("u1 u2 - B", u1 * &u2 - &b),
+    ];
+    Ok(prove_all(
+        &sym,
+        &residuals,
+        &[relation],
+        "symbolic expansion modulo D^2 = A^2 - B",
+    ))
+}
