@@ -75,6 +75,29 @@ pub enum Workload {
         #[arg(long)]
         json: bool,
     },
+    /// W3: f64 sampling of the Spaeth discriminant on the grid t_i = i 2 pi / N.
+    W3 {
+        /// Number of samples.
+        #[arg(long, default_value_t = 10_000_000)]
+        n: usize,
+        /// How the samples are evaluated.
+        #[arg(long, value_enum, default_value_t = W3Variant::Coef)]
+        variant: W3Variant,
+        /// Print one JSON line instead of text.
+        #[arg(long)]
+        json: bool,
+    },
+}
+
+/// The variants of W3.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum W3Variant {
+    /// Precomputed trigonometric coefficients, all cores.
+    Coef,
+    /// Precomputed coefficients, one thread.
+    CoefSerial,
+    /// The derived formulas evaluated per sample with `sin_cos`, one thread (the baseline).
+    Direct,
 }
 
 /// The exact rational types a benchmark can run on.
@@ -114,6 +137,13 @@ pub fn run(cli: Cli) -> Result<ExitCode, crate::Error> {
             } else {
                 ExitCode::from(1)
             })
+        }
+        Command::Bench { workload: Workload::W3 { n, variant, json } } => {
+            if n == 0 {
+                return Err(crate::Error::Usage("--n must be at least 1".into()));
+            }
+            println!("{}", crate::w2::bench_w3(n, variant, json));
+            Ok(ExitCode::SUCCESS)
         }
         Command::Bench {
             workload:

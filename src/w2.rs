@@ -168,6 +168,38 @@ pub fn check_values<T: RationalScalar>(sum: &T) -> CheckValues {
     }
 }
 
+/// Runs W3 (f64 sampling of the same configuration as W2, on the grid `t_i = i 2 pi / n`) and
+/// formats the result like `w3_numpy.py` (one JSON line) or as text.
+pub fn bench_w3(n: usize, variant: crate::cli::W3Variant, json: bool) -> String {
+    use crate::cli::W3Variant;
+    use exactcheck_float::sampler::{sweep_direct, DiscSampler};
+    let cs = problem::<f64>();
+    let start = Instant::now();
+    let summary = match variant {
+        W3Variant::Coef => DiscSampler::new(&cs).sweep(n),
+        W3Variant::CoefSerial => DiscSampler::new(&cs).sweep_serial(n),
+        W3Variant::Direct => sweep_direct(&cs, n),
+    };
+    let seconds = start.elapsed().as_secs_f64();
+    let name = format!("{variant:?}").to_lowercase();
+    if json {
+        format!(
+            "{{\"tool\": \"exactcheck\", \"variant\": \"{name}\", \"N\": {n}, \"seconds\": {seconds}, \"samples_per_s\": {}, \"count_nonneg\": {}, \"sum_sqrt\": \"{:?}\", \"threads\": {}}}",
+            n as f64 / seconds,
+            summary.count_nonneg,
+            summary.sum_sqrt,
+            rayon::current_num_threads()
+        )
+    } else {
+        format!(
+            "W3 (f64 Spaeth discriminant), N = {n}, variant {name}\n  samples with disc >= 0: {}\n  sum of sqrt(disc): {:?}\n  time: {seconds:.4} s ({:.1} M samples/s)",
+            summary.count_nonneg,
+            summary.sum_sqrt,
+            n as f64 / seconds / 1e6
+        )
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -135,6 +135,49 @@ impl<T: Ring> CylinderSphere<T> {
     }
 }
 
+/// `A(t)` and `B(t)` as trigonometric polynomials:
+/// `A = a0 + a1 cos t + a2 sin t`,
+/// `B = b0 + b1 cos t + b2 sin t + b3 cos^2 t + b4 cos t sin t + b5 sin^2 t`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TrigCoefficients<T> {
+    /// `a0, a1, a2`.
+    pub a: [T; 3],
+    /// `b0 .. b5`.
+    pub b: [T; 6],
+}
+
+impl<T: Field> CylinderSphere<T> {
+    /// The coefficients of `A` and `B` in `(cos t, sin t)`, obtained exactly from
+    /// [`CylinderSphere::coefficients_at`] by evaluation at six points (A and B are polynomials of
+    /// degree 1 and 2 in `(c, s)`, so six values determine them; the points need not lie on the
+    /// circle). The same code gives exact coefficients over an exact field and f64 ones over f64.
+    pub fn trig_coefficients(&self) -> TrigCoefficients<T> {
+        let v = |c: i64, s: i64| self.coefficients_at(&T::from_i64(c), &T::from_i64(s));
+        let ((a00, b00), (a10, b10), (a01, b01)) = (v(0, 0), v(1, 0), v(0, 1));
+        let ((_, bm0), (_, b0m), (_, b11)) = (v(-1, 0), v(0, -1), v(1, 1));
+        let half = T::from_i64(2).inv().unwrap_or_else(|_| T::zero());
+        let b1 = (b10.sub_ref(&bm0)).mul_ref(&half);
+        let b3 = (b10.add_ref(&bm0)).mul_ref(&half) - &b00;
+        let b2 = (b01.sub_ref(&b0m)).mul_ref(&half);
+        let b5 = (b01.add_ref(&b0m)).mul_ref(&half) - &b00;
+        let b4 = b11 - &b00 - &b1 - &b2 - &b3 - &b5;
+        TrigCoefficients { a: [a00.clone(), a10 - &a00, a01 - &a00], b: [b00, b1, b2, b3, b4, b5] }
+    }
+}
+
+impl<T: Ring> TrigCoefficients<T> {
+    /// `(A, B)` at `(cos t, sin t)`.
+    pub fn eval(&self, c: &T, s: &T) -> (T, T) {
+        let a = self.a[0].add_ref(&self.a[1].mul_ref(c)) + self.a[2].mul_ref(s);
+        let b = self.b[0].add_ref(&self.b[1].mul_ref(c))
+            + self.b[2].mul_ref(s)
+            + self.b[3].mul_ref(&c.square())
+            + self.b[4].mul_ref(&c.mul_ref(s))
+            + self.b[5].mul_ref(&s.square());
+        (a, b)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -23,6 +23,7 @@ pub mod gen;
 pub mod harness;
 pub mod report;
 pub mod rng;
+pub mod sampler;
 pub mod scalar;
 
 pub use convert::{
