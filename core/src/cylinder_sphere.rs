@@ -13,7 +13,7 @@
 //! `u` collected: this is *not* the printed (9), whose last term has the opposite sign (the
 //! catalogue's `spaeth.eq9` claim decides that).
 
-use crate::scalar::{Field, Ring, ZeroDivisor};
+use crate::scalar::{Field, OrderedField, Ring, Sign, ZeroDivisor};
 use crate::vector::Vec3;
 
 /// A point `(cos, sin)` of the unit circle standing for an angle.
@@ -178,6 +178,95 @@ impl<T: Ring> TrigCoefficients<T> {
     }
 }
 
+impl<T: Ring> TrigCoefficients<T> {
+    /// The discriminant in the rational circle parameter: with `cos t = (1 - tau^2)/(1 + tau^2)`,
+    /// `sin t = 2 tau/(1 + tau^2)`, `P(tau) = (1 + tau^2)^2 (A^2 - B)` is a polynomial of degree
+    /// at most 4; its coefficients, lowest first. `P` has the sign of the discriminant at every
+    /// `t != pi`; its `tau^4` coefficient is the discriminant at `t = pi` (`tau -> infinity`).
+    pub fn discriminant_in_tau(&self) -> [T; 5] {
+        // (1 + tau^2) A = at + 2 a2 tau + bt tau^2 with at = a0 + a1, bt = a0 - a1.
+        let [a0, a1, a2] = &self.a;
+        let at = [a0.add_ref(a1), a2.scale_i64(2), a0.sub_ref(a1)];
+        // (1 + tau^2)^2 B, from (1+tau^2)^2, (1-tau^2)(1+tau^2), 2tau(1+tau^2), (1-tau^2)^2,
+        // 2tau(1-tau^2), 4tau^2.
+        let basis: [[i64; 5]; 6] = [
+            [1, 0, 2, 0, 1],
+            [1, 0, 0, 0, -1],
+            [0, 2, 0, 2, 0],
+            [1, 0, -2, 0, 1],
+            [0, 2, 0, -2, 0],
+            [0, 0, 4, 0, 0],
+        ];
+        let mut p: [T; 5] = core::array::from_fn(|_| T::zero());
+        for (coef, row) in self.b.iter().zip(basis.iter()) {
+            for (k, m) in row.iter().enumerate() {
+                if *m != 0 {
+                    p[k] -= coef.scale_i64(*m);
+                }
+            }
+        }
+        for i in 0..3 {
+            for j in 0..3 {
+                p[i + j] += at[i].mul_ref(&at[j]);
+            }
+        }
+        p
+    }
+}
+
+/// How a sphere and a cylinder surface lie to each other.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Contact {
+    /// No common point.
+    Disjoint,
+    /// They touch: `|delta - r| = R` (delta the distance of the centre from the axis).
+    Tangent,
+    /// They cross along a curve.
+    Crossing,
+}
+
+impl<T: OrderedField> CylinderSphere<T> {
+    /// The axis of the rotated cylinder: its point `Rx(gamma) Ry(beta) (a, b, 0)` and its unit
+    /// direction `Rx(gamma) Ry(beta) (0, 0, 1)` (the parametrization of (5)).
+    pub fn axis(&self) -> (Vec3<T>, Vec3<T>) {
+        let p = rotate_x(&self.gamma, &rotate_y(&self.beta, &Vec3::new(self.a.clone(), self.b.clone(), T::zero())));
+        let d = rotate_x(&self.gamma, &rotate_y(&self.beta, &Vec3::new(T::zero(), T::zero(), T::one())));
+        (p, d)
+    }
+
+    /// `delta^2`, the squared distance of the sphere centre from the cylinder axis
+    /// (`|(c - q) x a|^2` with the axis direction `a` of unit length, as in (2)).
+    pub fn axis_distance_squared(&self) -> T {
+        let (q, a) = self.axis();
+        (&self.center - &q).cross(&a).norm_squared()
+    }
+
+    /// The exact decision from the distance of the centre to the axis: the surfaces meet iff the
+    /// distance of the centre from the cylinder surface, `|delta - r|`, is at most `R`. Decided
+    /// with squares only (`delta` itself may be irrational): `delta <= r + R` iff
+    /// `delta^2 <= (r + R)^2`, and `delta >= r - R` iff `r <= R` or `delta^2 >= (r - R)^2`.
+    /// Assumes `r > 0`, `R > 0` and `(cos, sin)` on the unit circle for both angles.
+    pub fn contact_by_distance(&self) -> Contact {
+        let d2 = self.axis_distance_squared();
+        let (r, big_r) = (self.r.abs(), self.radius.abs());
+        let outer = r.add_ref(&big_r).square();
+        let inner = r.sub_ref(&big_r);
+        match d2.sub_ref(&outer).sign() {
+            Sign::Positive => return Contact::Disjoint,
+            Sign::Zero => return Contact::Tangent,
+            Sign::Negative => {}
+        }
+        if inner.sign() != Sign::Positive {
+            return Contact::Crossing;
+        }
+        match d2.sub_ref(&inner.square()).sign() {
+            Sign::Negative => Contact::Disjoint,
+            Sign::Zero => Contact::Tangent,
+            Sign::Positive => Contact::Crossing,
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -200,6 +289,49 @@ mod tests {
             assert_eq!(a, 0.0);
             assert_eq!(b, -23.0 - 10.0 * c);
         }
+    }
+
+    #[test]
+    fn contact_cases() {
+        let one = Angle { cos: 1.0, sin: 0.0 };
+        let cs = |c: (f64, f64, f64), r: f64| CylinderSphere {
+            a: 0.0,
+            b: 0.0,
+            r: 5.0,
+            beta: one.clone(),
+            gamma: one.clone(),
+            center: Vec3::new(c.0, c.1, c.2),
+            radius: r,
+        };
+        // Spaeth's examples 1 and 3.
+        assert_eq!(cs((1.0, 0.0, 0.0), 7.0).contact_by_distance(), Contact::Crossing);
+        assert_eq!(cs((6.0, 7.0, 8.0), 1.0).contact_by_distance(), Contact::Disjoint);
+        // Touching from outside (delta = 8 = r + R) and from inside (delta = 2 = r - R).
+        assert_eq!(cs((8.0, 0.0, 3.0), 3.0).contact_by_distance(), Contact::Tangent);
+        assert_eq!(cs((2.0, 0.0, 0.0), 3.0).contact_by_distance(), Contact::Tangent);
+        assert_eq!(cs((1.0, 0.0, 0.0), 3.0).contact_by_distance(), Contact::Disjoint);
+    }
+
+    #[test]
+    fn discriminant_polynomial_matches_pointwise() {
+        let cs = CylinderSphere {
+            a: 0.5,
+            b: -0.25,
+            r: 5.0,
+            beta: Angle { cos: 0.6, sin: 0.8 },
+            gamma: Angle { cos: 0.8, sin: -0.6 },
+            center: Vec3::new(1.0, 2.0, 4.0),
+            radius: 5.0,
+        };
+        let p = cs.trig_coefficients().discriminant_in_tau();
+        for tau in [-3.0, -0.5, 0.0, 0.25, 2.0] {
+            let pt = unit_circle_point(&tau).unwrap();
+            let d = cs.discriminant_at(&pt.cos, &pt.sin);
+            let w = (1.0 + tau * tau) * (1.0 + tau * tau);
+            let poly: f64 = p.iter().rev().fold(0.0, |acc, c| acc * tau + c);
+            assert!((poly - w * d).abs() < 1e-9 * (1.0 + poly.abs()), "{tau}: {poly} vs {}", w * d);
+        }
+        assert!((p[4] - cs.discriminant_at(&-1.0, &0.0)).abs() < 1e-9);
     }
 
     #[test]
