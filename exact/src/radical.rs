@@ -1846,6 +1846,33 @@ impl FromStr for ComplexRadical {
 
 // ====================================================================== unit tests
 
+impl crate::expr::Coefficient for Radical {
+    fn from_rational(q: &Rational) -> Option<Self> {
+        Some(Radical::from(q))
+    }
+    fn try_inverse(&self) -> Option<Self> {
+        self.inv().ok()
+    }
+    fn try_sqrt(&self) -> Option<Self> {
+        Sqrt::sqrt(self)
+    }
+    fn sqrt_hint() -> &'static str {
+        " (no square root in the square-root field: negative, or not denestable)"
+    }
+}
+
+impl crate::expr::Coefficient for ComplexRadical {
+    fn from_rational(q: &Rational) -> Option<Self> {
+        Some(ComplexRadical::from(q.clone()))
+    }
+    fn try_inverse(&self) -> Option<Self> {
+        self.inv().ok()
+    }
+    fn try_sqrt(&self) -> Option<Self> {
+        self.principal_sqrt()
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -1983,32 +2010,5 @@ mod tests {
             Err(E::Unexpected { .. })
         ));
         assert!(matches!("é".parse::<Radical>(), Err(E::Unexpected { .. })));
-    }
-}
-
-impl crate::expr::Coefficient for Radical {
-    fn from_rational(q: &Rational) -> Option<Self> {
-        Some(Radical::from(q))
-    }
-    fn try_inverse(&self) -> Option<Self> {
-        self.inv().ok()
-    }
-    fn try_sqrt(&self) -> Option<Self> {
-        Sqrt::sqrt(self)
-    }
-    fn sqrt_hint() -> &'static str {
-        " (no square root in the square-root field: negative, or not denestable)"
-    }
-}
-
-impl crate::expr::Coefficient for ComplexRadical {
-    fn from_rational(q: &Rational) -> Option<Self> {
-        Some(ComplexRadical::from(q.clone()))
-    }
-    fn try_inverse(&self) -> Option<Self> {
-        self.inv().ok()
-    }
-    fn try_sqrt(&self) -> Option<Self> {
-        self.principal_sqrt()
     }
 }
