@@ -9,6 +9,7 @@
 //! * sparse multivariate polynomials ([`poly`]) and their expression syntax ([`expr`]).
 #![warn(missing_docs)]
 
+pub mod cylinder_sphere;
 pub mod expr;
 pub mod gcd;
 pub mod modp;
@@ -18,6 +19,7 @@ pub mod prove;
 pub mod radical;
 pub mod rational;
 pub mod traits;
+pub mod univariate;
 
 pub use modp::ModP;
 pub use plain::PlainRational;
