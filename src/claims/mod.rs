@@ -66,6 +66,7 @@ pub struct Claim {
 pub fn catalogue() -> Vec<Claim> {
     let mut all = juttler::claims();
     all.extend(spaeth::claims());
+    all.extend(spaeth::example_claims());
     all
 }
 
