@@ -11,6 +11,7 @@ pub mod error;
 pub mod prove_cmd;
 pub mod regress;
 pub mod solve;
+pub mod solve_cs;
 pub mod w2;
 
 pub use error::Error;

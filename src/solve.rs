@@ -31,7 +31,7 @@ const KINDS: [(&str, bool); 7] = [
     ("ruled_plane", false),
     ("ruled_line", false),
     ("plane_plane", false),
-    ("cylinder_sphere", false),
+    ("cylinder_sphere", true),
     ("conic", false),
     ("ph_offset", false),
 ];
@@ -95,13 +95,14 @@ pub fn solve(text: &str, mode: Mode) -> Result<Value, Error> {
         ))),
         Some(_) => match kind {
             "sphere_interpolation" => sphere_interpolation(obj, mode),
+            "cylinder_sphere" => crate::solve_cs::cylinder_sphere(obj, mode),
             _ => unreachable!("every answered kind is dispatched"),
         },
     }
 }
 
 /// An exact number of the problem: a JSON integer or a string in the number syntax.
-fn exact_number(v: &Value, field: &str) -> Result<Radical, Error> {
+pub(crate) fn exact_number(v: &Value, field: &str) -> Result<Radical, Error> {
     match v {
         Value::Number(n) if n.is_i64() => Ok(Radical::from(n.as_i64().unwrap_or_default())),
         Value::Number(n) if n.is_u64() => n
@@ -116,14 +117,14 @@ fn exact_number(v: &Value, field: &str) -> Result<Radical, Error> {
     }
 }
 
-fn array<'a>(obj: &'a Map<String, Value>, field: &str) -> Result<&'a Vec<Value>, Error> {
+pub(crate) fn array<'a>(obj: &'a Map<String, Value>, field: &str) -> Result<&'a Vec<Value>, Error> {
     obj.get(field)
         .ok_or_else(|| Error::Input(format!("missing field {field:?}")))?
         .as_array()
         .ok_or_else(|| Error::Input(format!("{field:?} must be an array")))
 }
 
-fn vec3(v: &Value, field: &str) -> Result<Vec3<Radical>, Error> {
+pub(crate) fn vec3(v: &Value, field: &str) -> Result<Vec3<Radical>, Error> {
     let a = v
         .as_array()
         .ok_or_else(|| Error::Input(format!("{field}: expected an array of 3 numbers")))?;
@@ -141,7 +142,7 @@ fn vec3(v: &Value, field: &str) -> Result<Vec3<Radical>, Error> {
 }
 
 /// The output form of an exact number: the string (round-trips as input).
-fn out<T: Display>(x: &T) -> Value {
+pub(crate) fn out<T: Display>(x: &T) -> Value {
     Value::String(x.to_string())
 }
 

@@ -254,3 +254,72 @@ fn bench_w3_matches_the_numpy_anchor() {
         assert!((sum - 13229714.773764007).abs() < 1e-9 * sum, "{variant}: {sum}");
     }
 }
+
+fn cylinder_sphere_problem(beta: &str, gamma: &str, center: &str, radius: &str) -> String {
+    format!(
+        r#"{{"kind":"cylinder_sphere","cylinder":{{"axis_point":[0,0],"radius":5,"beta":{beta},"gamma":{gamma}}},"sphere":{{"center":{center},"radius":{radius}}},"samples":8}}"#
+    )
+}
+
+#[test]
+fn solve_cylinder_sphere_spaeth_examples() {
+    let zero = r#"{"cos":1,"sin":0}"#;
+    let answer = |problem: String| -> serde_json::Value {
+        let o = solve_stdin(&problem, &[]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        serde_json::from_slice(&o.stdout).unwrap()
+    };
+    // Example 3: no intersection, by both exact methods.
+    let e3 = answer(cylinder_sphere_problem(zero, zero, "[6,7,8]", "1"));
+    assert_eq!(e3["intersects"], false);
+    assert_eq!(e3["contact_by_axis_distance"], "disjoint");
+    assert_eq!(e3["points"].as_array().unwrap().len(), 0);
+    // Examples 1 and 2 (2 with its radians taken as rational rotations): points on both surfaces.
+    let e1 = answer(cylinder_sphere_problem(zero, zero, "[1,0,0]", "7"));
+    let e2 = answer(cylinder_sphere_problem(r#"{"radians":1}"#, r#"{"radians":-1}"#, "[1,2,4]", "5"));
+    for e in [&e1, &e2] {
+        assert_eq!(e["intersects"], true);
+        assert_eq!(e["methods_agree"], true);
+        assert!(!e["points"].as_array().unwrap().is_empty());
+        assert_eq!(e["all_points_on_both_surfaces"], true);
+    }
+    assert_eq!(e1["components"], 2);
+    assert!(e2["approximated_angles"].as_array().unwrap().len() == 2);
+    // Example 1's exact points re-parsed and checked independently: x^2 + y^2 = 25 and
+    // (x-1)^2 + y^2 + z^2 = 49.
+    use exactcheck_core::Ring;
+    use exactcheck_exact::Radical;
+    for p in e1["points"].as_array().unwrap() {
+        let c: Vec<Radical> = p["exact"].as_array().unwrap().iter().map(|x| x.as_str().unwrap().parse().unwrap()).collect();
+        assert_eq!(c[0].square() + c[1].square(), Radical::from(25));
+        let x1 = c[0].clone() - Radical::from(1);
+        assert_eq!(x1.square() + c[1].square() + c[2].square(), Radical::from(49));
+    }
+    // A sphere touching the cylinder from outside: one tangency point, exactly (5, 0, 3).
+    let t = answer(cylinder_sphere_problem(zero, zero, "[8,0,3]", "3"));
+    assert_eq!(t["contact"], "tangent");
+    assert_eq!(t["contact_by_axis_distance"], "tangent");
+    let tp = t["tangent_points"].as_array().unwrap();
+    assert_eq!(tp.len(), 1);
+    assert_eq!(tp[0]["point"], serde_json::json!(["5", "0", "3"]));
+    assert_eq!(tp[0]["on_both_surfaces"], true);
+}
+
+#[test]
+fn solve_cylinder_sphere_rejects_bad_input() {
+    for (problem, needle) in [
+        (cylinder_sphere_problem(r#"{"cos":1,"sin":1}"#, r#"{"cos":1,"sin":0}"#, "[1,0,0]", "7"), "cos^2 + sin^2"),
+        (cylinder_sphere_problem(r#"{"cos":1,"sin":0}"#, r#"{"cos":1,"sin":0}"#, "[1,0,0]", "0"), "sphere.radius must be positive"),
+        (cylinder_sphere_problem(r#"{"cos":1,"sin":0}"#, r#"{"cos":1,"sin":0}"#, "[1,0]", "7"), "sphere.center"),
+        (cylinder_sphere_problem(r#"{"cos":1}"#, r#"{"cos":1,"sin":0}"#, "[1,0,0]", "7"), "cylinder.beta.sin"),
+        (cylinder_sphere_problem(r#"{"cos":"sqrt(2)/2","sin":"sqrt(2)/2"}"#, r#"{"cos":1,"sin":0}"#, "[1,0,0]", "7"), "irrational"),
+    ] {
+        let o = solve_stdin(&problem, &[]);
+        assert_eq!(o.status.code(), Some(2), "{problem}");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(err.contains(needle), "{problem}: {err}");
+    }
+    // Float mode accepts radians and float literals.
+    let o = solve_stdin(&cylinder_sphere_problem(r#"{"radians":1.0}"#, r#"{"radians":-1.0}"#, "[1.0,2.0,4.0]", "5.0"), &["--float"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+}

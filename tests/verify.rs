@@ -32,7 +32,7 @@ fn every_claim_gets_its_expected_verdict() {
 }
 
 #[test]
-fn every_spec_juttler_id_is_in_the_catalogue() {
+fn every_spec_juttler_and_spaeth_id_is_in_the_catalogue() {
     let ids: Vec<&str> = exactcheck::claims::catalogue()
         .iter()
         .map(|c| c.id)

@@ -214,6 +214,16 @@ impl<T: Ring> TrigCoefficients<T> {
     }
 }
 
+impl<T: Ring> CylinderSphere<T> {
+    /// The axis point and unit direction as in [`CylinderSphere::axis`], for any ring (no order
+    /// needed; e.g. over polynomials).
+    pub fn axis_polynomial(&self) -> (Vec3<T>, Vec3<T>) {
+        let p = rotate_x(&self.gamma, &rotate_y(&self.beta, &Vec3::new(self.a.clone(), self.b.clone(), T::zero())));
+        let d = rotate_x(&self.gamma, &rotate_y(&self.beta, &Vec3::new(T::zero(), T::zero(), T::one())));
+        (p, d)
+    }
+}
+
 /// How a sphere and a cylinder surface lie to each other.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Contact {
@@ -229,9 +239,7 @@ impl<T: OrderedField> CylinderSphere<T> {
     /// The axis of the rotated cylinder: its point `Rx(gamma) Ry(beta) (a, b, 0)` and its unit
     /// direction `Rx(gamma) Ry(beta) (0, 0, 1)` (the parametrization of (5)).
     pub fn axis(&self) -> (Vec3<T>, Vec3<T>) {
-        let p = rotate_x(&self.gamma, &rotate_y(&self.beta, &Vec3::new(self.a.clone(), self.b.clone(), T::zero())));
-        let d = rotate_x(&self.gamma, &rotate_y(&self.beta, &Vec3::new(T::zero(), T::zero(), T::one())));
-        (p, d)
+        self.axis_polynomial()
     }
 
     /// `delta^2`, the squared distance of the sphere centre from the cylinder axis

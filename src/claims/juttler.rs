@@ -5,6 +5,7 @@
 //! properties are proved by expanding residuals over polynomial rings.
 
 use super::engine::{prove_all, Symbols};
+use super::juttler_geometry::{circle_preimage, line_image, line_preimage, plane_lines, satz7};
 use super::{Claim, Outcome, Verdict};
 use exactcheck_core::quadric::{
     alpha, alpha_preimage_point, dietz, lebesgue, paraboloid_form, psi, sigma, sigma_inverse,
@@ -60,10 +61,15 @@ pub fn claims() -> Vec<Claim> {
         claim!("juttler.lemma4", Proved, "Lemma 4: the theta-preimage of p = (p0,p1,p2,0) is the line lambda (p0,p1,p2,0) + mu (0,p2,-p1,p0) (12)", lemma4),
         claim!("juttler.satz5", Proved, "Satz 5: every line (12) meets both focal lines xi (1,0,0,i) + zeta (0,1,-i,0) and xi (1,0,0,-i) + zeta (0,1,i,0) (13); lambda = 1, mu = +-i gives the meeting points", satz5),
         claim!("juttler.focal_absolute", Proved, "the focal lines (13) lie on the absolute quadric x0^2+x1^2+x2^2+x3^2 = 0 (14)", focal_absolute),
+        claim!("juttler.circle_preimage", Proved, "the preimage of a circle of P under theta (so the delta-preimage of a circle of K not through z) is a hyperboloid of one sheet", circle_preimage),
+        claim!("juttler.line_preimage", Proved, "the preimage of a line of P under theta (so the delta-preimage of a circle of K through z) is a hyperbolic paraboloid", line_preimage),
+        claim!("juttler.line_image", Proved, "the theta-image of a non-projecting line is a circle or a line of P; its delta-image is a circle on K", line_image),
+        claim!("juttler.plane_lines", Proved, "every plane contains exactly one projecting line (12); the lines of the plane map (theta, delta) to the circles through one fixed point, the image of that projecting line", plane_lines),
         claim!("juttler.satz8", Proved, "Satz 8: psi restricted to the plane q3 = q0 equals tau (16) = (q0^2, q0q1, q0q2, q1q2)", satz8),
         claim!("juttler.satz9", Proved, "Satz 9: psi = tau o alpha with alpha (17) = (q0q3, q1q3, q0q2, q0q3)", satz9),
         claim!("juttler.lemma10", Proved, "Lemma 10: the alpha-preimage of q = (q0,q1,q2,q0) is the line lambda (q0,q1,q2,q0) + mu (q0,q1,0,0) (18)", lemma10),
         claim!("juttler.interpolation", Holds, "interpolation on K by rational curves reduces to a homogeneous linear system (and works), with fewer degrees than plain stereographic projection", interpolation),
+        claim!("juttler.satz7", Holds, "Satz 7 (Dietz): if a biquadratic Bezier patch y(u,v) lies on K, with boundary circles y(0,v), y(u,0), y(1,v), y(u,1) meeting at the corners p_i and second points q_i, then p1, q2, p3, q4 lie on a circle (and q1, p2, q3, p4) — Miquel's theorem", satz7),
         claim!("juttler.satz11", Proved, "Satz 11: every line (18) meets both real focal lines (1,lambda,0,0) and (0,0,1,mu)", satz11),
     ]
 }

@@ -11,6 +11,7 @@
 
 pub mod engine;
 pub mod juttler;
+pub mod juttler_geometry;
 pub mod spaeth;
 
 use serde_json::{json, Value};
