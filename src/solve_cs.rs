@@ -6,7 +6,7 @@
 //! are computed in the square-root field, so each lies exactly on both surfaces (checked and
 //! reported). Float mode evaluates the same generic formulas in f64.
 
-use crate::solve::{array, exact_number, out, vec3, Mode};
+use crate::solve::{array, exact_number, out, Mode};
 use crate::Error;
 use exactcheck_core::cylinder_sphere::{unit_circle_point, Angle, Contact, CylinderSphere};
 use exactcheck_core::{Field, OrderedField, Ring, Sign, Vec3};
@@ -23,12 +23,12 @@ fn object<'a>(v: &'a Value, path: &str) -> Result<&'a Map<String, Value>, Error>
     v.as_object().ok_or_else(|| Error::Input(format!("\"{path}\" must be an object")))
 }
 
-fn rational(v: &Value, path: &str) -> Result<Rational, Error> {
+pub(crate) fn rational(v: &Value, path: &str) -> Result<Rational, Error> {
     let x = exact_number(v, path)?;
     x.to_rational().ok_or_else(|| Error::Input(format!("{path}: {x} is irrational; cylinder_sphere needs rational input in exact mode (angles as rational points {{cos, sin}} of the unit circle)")))
 }
 
-fn float(v: &Value, path: &str) -> Result<f64, Error> {
+pub(crate) fn float(v: &Value, path: &str) -> Result<f64, Error> {
     match v {
         Value::Number(n) => n.as_f64().ok_or_else(|| Error::Input(format!("{path}: not a number"))),
         other => Ok(exact_number(other, path)?.to_f64()),
@@ -37,7 +37,7 @@ fn float(v: &Value, path: &str) -> Result<f64, Error> {
 
 /// An angle given exactly `{cos, sin}` or as `{radians}`; `approx` notes a radians input taken
 /// as a nearby rational point.
-fn exact_angle(v: &Value, path: &str, notes: &mut Vec<Value>) -> Result<Angle<Rational>, Error> {
+pub(crate) fn exact_angle(v: &Value, path: &str, notes: &mut Vec<Value>) -> Result<Angle<Rational>, Error> {
     let o = object(v, path)?;
     if let Some(r) = o.get("radians") {
         let theta = float(r, &format!("{path}.radians"))?;
@@ -56,7 +56,7 @@ fn exact_angle(v: &Value, path: &str, notes: &mut Vec<Value>) -> Result<Angle<Ra
     Ok(Angle { cos: c, sin: s })
 }
 
-fn float_angle(v: &Value, path: &str) -> Result<Angle<f64>, Error> {
+pub(crate) fn float_angle(v: &Value, path: &str) -> Result<Angle<f64>, Error> {
     let o = object(v, path)?;
     if let Some(r) = o.get("radians") {
         let t = float(r, &format!("{path}.radians"))?;
@@ -70,12 +70,12 @@ fn float_angle(v: &Value, path: &str) -> Result<Angle<f64>, Error> {
     Ok(Angle { cos: c, sin: s })
 }
 
-struct Input<T> {
-    cs: CylinderSphere<T>,
+pub(crate) struct Input<T> {
+    pub(crate) cs: CylinderSphere<T>,
     samples: usize,
 }
 
-fn read<T: Field + OrderedField>(
+pub(crate) fn read<T: Field + OrderedField>(
     obj: &Map<String, Value>,
     num: &dyn Fn(&Value, &str) -> Result<T, Error>,
     angle: &mut dyn FnMut(&Value, &str) -> Result<Angle<T>, Error>,

@@ -14,7 +14,7 @@
 use crate::univariate::{Bound, Interval, RootInterval, UPoly};
 use crate::Rational;
 use exactcheck_core::cylinder_sphere::{Contact, CylinderSphere};
-use exactcheck_core::{OrderedField, Ring, Sign};
+use exactcheck_core::{OrderedField, Sign};
 
 /// What the exact analysis found.
 #[derive(Clone, Debug)]
