@@ -408,21 +408,34 @@ impl<'a> Parser<'a> {
         })
     }
 
+    /// Whether the current token can begin a factor written by juxtaposition (`2x`, `x y`,
+    /// `(a+b)(a-b)`, `c^2 x^3`): implicit multiplication, binding like `*`.
+    fn starts_implicit_factor(&self) -> bool {
+        matches!(self.cur.tok, Tok::Num | Tok::Ident | Tok::LParen)
+    }
+
     fn parse_product(&mut self) -> Result<Expr, ExprError> {
         let first = self.parse_unary()?;
-        if !matches!(self.cur.tok, Tok::Star | Tok::Slash) {
+        if !matches!(self.cur.tok, Tok::Star | Tok::Slash) && !self.starts_implicit_factor() {
             return Ok(first);
         }
         let pos = first.pos;
         let mut items = vec![(MulOp::Times, first)];
-        while let Tok::Star | Tok::Slash = self.cur.tok {
-            let op = if self.cur.tok == Tok::Star {
-                MulOp::Times
-            } else {
-                MulOp::Divide
-            };
-            self.bump();
-            items.push((op, self.parse_unary()?));
+        loop {
+            match self.cur.tok {
+                Tok::Star | Tok::Slash => {
+                    let op = if self.cur.tok == Tok::Star {
+                        MulOp::Times
+                    } else {
+                        MulOp::Divide
+                    };
+                    self.bump();
+                    items.push((op, self.parse_unary()?));
+                }
+                // A juxtaposed factor takes no sign of its own: `x -y` stays a difference.
+                _ if self.starts_implicit_factor() => items.push((MulOp::Times, self.parse_power()?)),
+                _ => break,
+            }
         }
         Ok(Expr {
             kind: ExprKind::Product(items),

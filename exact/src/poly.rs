@@ -30,18 +30,30 @@
 //! monomial order, and multiplying monomials is adding words. The top bit of every field is a
 //! guard bit that stays clear (exponents below `2^(bits-1)`), which makes divisibility one
 //! subtraction per word. A polynomial uses as many words as its highest variable needs; operands
-//! of different widths are repacked to a common one. Before a product is formed, a bound on its
+//! of different layouts are repacked to a common one. Before a product is formed, a bound on its
 //! exponents (from the OR of all exponent words) picks a field width in which no field can
-//! overflow, so the multiplication kernels never check. Exponents are limited to `u32::MAX`.
+//! overflow, so the kernels never check. Exponents are limited to `u32::MAX` (the operators
+//! panic beyond; [`Poly::checked_mul`] and [`Poly::checked_pow`] report it).
 //!
 //! # Algorithms
-//! * Addition and subtraction merge the two sorted term lists.
+//! * Addition and subtraction merge the two sorted term lists (monomials of up to 16 words are
+//!   compared and copied as fixed-size arrays). Sums of many large polynomials ([`Poly::sum`])
+//!   are one k-way heap merge.
 //! * Multiplication by a single term shifts and scales (the order is a monoid order, so the
-//!   result is still sorted). Otherwise it is Johnson's heap algorithm with the chained stream
-//!   insertion of Monagan and Pearce ("Sparse polynomial division using a heap", 2011): a heap of
-//!   at most `min(#f, #g)` streams yields the products in decreasing order, equal monomials are
-//!   accumulated as they leave the heap, and the result is born sorted, with no per-term
-//!   allocation. Squaring runs the same heap over the pairs `i <= j` only (half the products).
+//!   result is still sorted). Otherwise the exponents of the two operands are first re-packed
+//!   into **compact keys**: each variable gets just the bits its largest exponent in the product
+//!   needs (a Kronecker substitution that keeps the order). Then:
+//!   - when the box of possible product exponents is small (at most 4 cells per term product,
+//!     and `2^22` cells), products are accumulated in a dense array indexed by mixed radix, and
+//!     the touched cells sorted once (dense few-variable products);
+//!   - otherwise by Johnson's heap algorithm with the chained stream insertion of Monagan and
+//!     Pearce ("Sparse polynomial division using a heap", 2011): a heap of at most
+//!     `min(#f, #g)` streams yields the products in decreasing order, equal monomials are
+//!     accumulated as they leave the heap, and the result is born sorted, with no per-term
+//!     allocation. With one-word keys (W1: 74 variables in 10 words become one key word) the
+//!     heap holds the keys themselves. Squaring runs the heap over the pairs `i <= j` only.
+//!
+//!   Full monomials are formed once per output term.
 //! * Powers by binary powering (squarings and multiplications); a single term is raised directly.
 //! * Normal forms ([`Poly::reduce`]) by multivariate division with a heap of pending monomials
 //!   and a hash map of their coefficients: every monomial leaves the heap once, already final. For
@@ -52,6 +64,12 @@
 //!   (coprime leading monomials; the chain criterion), the normal pair selection strategy, and a
 //!   final inter-reduction: the result is the unique reduced Gröbner basis, so [`Poly::reduce`]
 //!   against it is a canonical normal form.
+//!
+//! # Performance
+//! W1 (SPEC §4 at `(m, n) = (8, 13)`: a 9.5 kB expression pair over 74 variables, 5,841 terms)
+//! parses, expands and compares in about 5 ms on the project machine, python-flint's
+//! `fmpq_mpoly` takes 7.4 ms, SymPy 3.3 s (`exact/benches/poly.rs`). A large share of the time
+//! is coefficient arithmetic in [`crate::Rational`].
 
 use exactcheck_core::{Field, Ring};
 use std::borrow::Cow;
@@ -474,7 +492,7 @@ impl<C> Poly<C> {
 
     /// Whether there is no variable (zero or a non-zero constant).
     pub fn is_constant(&self) -> bool {
-        self.len() == 0 || (self.len() == 1 && self.mono(0).iter().all(|&w| w == 0))
+        self.is_empty() || (self.len() == 1 && self.mono(0).iter().all(|&w| w == 0))
     }
 
     /// The number of variables the packed monomials have room for up to the highest one that
@@ -699,22 +717,23 @@ impl<C: Ring> Poly<C> {
         }
     }
 
-    /// The coefficient of the monomial `prod x_v^e` for the pairs `(v, e)` (zero if absent).
+    /// The coefficient of the monomial `prod x_v^e` for the pairs `(v, e)` (zero if absent; a
+    /// variable may repeat: exponents add).
     pub fn coefficient(&self, exponents: &[(Var, u32)]) -> C {
-        let probe = Poly::monomial(C::one(), exponents);
-        let Some(m) = probe.leading_term().map(|(m, _)| m.exponents()) else {
-            return C::zero();
-        };
-        // Pack the probe in our shape (if it does not fit, it is not a monomial of ours).
+        let mut m: std::collections::BTreeMap<usize, u64> = std::collections::BTreeMap::new();
+        for &(v, e) in exponents {
+            *m.entry(v as usize).or_insert(0) += e as u64;
+        }
+        // Pack it in our shape (if it does not fit, it is not a monomial of ours).
         let mut key = vec![0u64; self.shape.words];
-        for &(v, e) in &m {
-            let v = v as usize;
-            if v >= self.shape.words * self.shape.per_word()
-                || e as u64 >= 1 << (self.shape.bits - 1)
-            {
+        for (v, e) in m {
+            if e == 0 {
+                continue;
+            }
+            if v >= self.shape.words * self.shape.per_word() || e >= 1 << (self.shape.bits - 1) {
                 return C::zero();
             }
-            self.shape.set(&mut key, v, e as u64);
+            self.shape.set(&mut key, v, e);
         }
         // Binary search in the decreasing list.
         let (mut lo, mut hi) = (0, self.len());
@@ -819,6 +838,9 @@ impl<C: Ring> Poly<C> {
     }
 
     /// The polynomial with `var` replaced by `value`.
+    ///
+    /// # Panics
+    /// When an exponent of the result would exceed `u32::MAX`.
     pub fn substitute(&self, var: Var, value: &Poly<C>) -> Poly<C> {
         let v = var as usize;
         // Split self = sum_k x^k P_k; removing x^k keeps each P_k sorted.
@@ -856,12 +878,96 @@ impl<C: Ring> Poly<C> {
         Poly::sum(sums)
     }
 
+    /// The sum of many polynomials. Few or small summands are added pairwise (balanced, which
+    /// keeps the merges of similar sizes); many large ones in one pass, a k-way merge by a heap
+    /// on compact one-word keys (as in multiplication) that writes every term once.
+    pub fn sum(polys: Vec<Poly<C>>) -> Poly<C> {
+        let mut polys: Vec<Poly<C>> = polys.into_iter().filter(|p| !p.is_empty()).collect();
+        match polys.len() {
+            0 => return Poly::zero(),
+            1 => return polys.pop().unwrap_or_else(Poly::zero),
+            n if n <= 4 || polys.iter().map(Poly::len).sum::<usize>() < 256 => {
+                return Poly::sum_pairwise(polys)
+            }
+            _ => {}
+        }
+        let bits = polys.iter().map(|p| p.shape.bits).max().unwrap_or(8);
+        let words = if polys.iter().all(|p| p.shape.bits == bits) {
+            polys.iter().map(|p| p.shape.words).max().unwrap_or(0)
+        } else {
+            Shape::words_for(bits, polys.iter().map(Poly::nvars_used).max().unwrap_or(0))
+        };
+        let shape = Shape { bits, words };
+        let cap = words * shape.per_word();
+        let mut need = vec![0u64; cap];
+        for p in &polys {
+            let e = p.exps_in(shape);
+            for (n, m) in need.iter_mut().zip(max_exps(shape, &e, p.len(), cap)) {
+                *n = (*n).max(m);
+            }
+        }
+        let (k, place) = key_layout(&need);
+        if k > 1 {
+            return Poly::sum_pairwise(polys);
+        }
+        let total: usize = polys.iter().map(Poly::len).sum();
+        let mut exps_of = Vec::with_capacity(polys.len());
+        let mut keys_of = Vec::with_capacity(polys.len());
+        let mut coeffs_of = Vec::with_capacity(polys.len());
+        for p in polys {
+            let n = p.len();
+            let (e, c) = p.into_parts(shape);
+            keys_of.push(make_keys(shape, &e, n, 1, &place));
+            exps_of.push(e);
+            coeffs_of.push(c.into_iter());
+        }
+        let w = words;
+        let mut pos = vec![0usize; keys_of.len()];
+        let mut heap: Vec<(u64, u32)> = Vec::with_capacity(keys_of.len());
+        for (p, keys) in keys_of.iter().enumerate() {
+            push1(&mut heap, (keys[0], p as u32));
+        }
+        let mut out_e: Vec<u64> = Vec::with_capacity(total * w);
+        let mut out_c: Vec<C> = Vec::with_capacity(total);
+        // Takes the root's next coefficient and moves its summand on.
+        let mut step = |heap: &mut Vec<(u64, u32)>, pos: &mut Vec<usize>| -> C {
+            let p = heap[0].1 as usize;
+            let c = coeffs_of[p].next().unwrap_or_else(C::zero);
+            pos[p] += 1;
+            match keys_of[p].get(pos[p]) {
+                Some(&key) => heap[0].0 = key,
+                None => {
+                    let last = heap.pop().unwrap_or((0, 0));
+                    if heap.is_empty() {
+                        return c;
+                    }
+                    heap[0] = last;
+                }
+            }
+            sift_down1(heap);
+            c
+        };
+        while let Some(&(key, p)) = heap.first() {
+            let (p, i) = (p as usize, pos[p as usize]);
+            let mut acc = step(&mut heap, &mut pos);
+            while heap.first().is_some_and(|t| t.0 == key) {
+                acc += step(&mut heap, &mut pos);
+            }
+            if !acc.is_zero() {
+                out_e.extend_from_slice(&exps_of[p][i * w..(i + 1) * w]);
+                out_c.push(acc);
+            }
+        }
+        Poly {
+            shape,
+            exps: out_e,
+            coeffs: out_c,
+        }
+    }
+
     /// The sum of many polynomials, added pairwise (balanced), which keeps the merges of similar
     /// sizes.
-    pub fn sum(mut polys: Vec<Poly<C>>) -> Poly<C> {
-        if polys.is_empty() {
-            return Poly::zero();
-        }
+    fn sum_pairwise(mut polys: Vec<Poly<C>>) -> Poly<C> {
         while polys.len() > 1 {
             let mut next = Vec::with_capacity(polys.len().div_ceil(2));
             let mut it = polys.into_iter();
@@ -1097,15 +1203,33 @@ impl<C: Ring> Poly<C> {
                 max_exps(shape, &be, rhs.len(), cap),
             );
             let need: Vec<u64> = ma.iter().zip(&mb).map(|(x, y)| x + y).collect();
-            let (k, place) = key_layout(&need);
-            let ak = make_keys(shape, &ae, self.len(), k, &place);
-            let bk = make_keys(shape, &be, rhs.len(), k, &place);
-            let a = (&ae[..], &ak[..], &self.coeffs[..]);
-            let b = (&be[..], &bk[..], &rhs.coeffs[..]);
-            if self.len() <= rhs.len() {
-                with_key_words!(k, mul_heap::<C>(k, w, a, b))
+            let (small, large) = if self.len() <= rhs.len() {
+                ((&ae[..], &self.coeffs[..]), (&be[..], &rhs.coeffs[..]))
             } else {
-                with_key_words!(k, mul_heap::<C>(k, w, b, a))
+                ((&be[..], &rhs.coeffs[..]), (&ae[..], &self.coeffs[..]))
+            };
+            let products = (self.len() as u64).saturating_mul(rhs.len() as u64);
+            let limit = DENSE_MAX_CELLS.min(products.saturating_mul(4));
+            if let Some((cells, strides)) = dense_strides(&need, limit) {
+                let fi = dense_indices(shape, small.0, small.1.len(), &strides);
+                let gi = dense_indices(shape, large.0, large.1.len(), &strides);
+                mul_dense(
+                    w,
+                    cells as usize,
+                    (small.0, &fi, small.1),
+                    (large.0, &gi, large.1),
+                )
+            } else {
+                let (k, place) = key_layout(&need);
+                let fk = make_keys(shape, small.0, small.1.len(), k, &place);
+                let gk = make_keys(shape, large.0, large.1.len(), k, &place);
+                let f = (small.0, &fk[..], small.1);
+                let g = (large.0, &gk[..], large.1);
+                if k == 1 {
+                    mul_heap1(w, f, g)
+                } else {
+                    with_key_words!(k, mul_heap::<C>(k, w, f, g))
+                }
             }
         };
         Poly {
@@ -1126,10 +1250,20 @@ impl<C: Ring> Poly<C> {
             .iter()
             .map(|m| 2 * m)
             .collect();
-        let (k, place) = key_layout(&need);
-        let keys = make_keys(shape, &e, self.len(), k, &place);
-        let f = (&e[..], &keys[..], &self.coeffs[..]);
-        let (exps, coeffs) = with_key_words!(k, square_heap::<C>(k, shape.words, f));
+        let n = self.len() as u64;
+        let (exps, coeffs) = match dense_strides(&need, DENSE_MAX_CELLS.min(n * n * 4)) {
+            Some((cells, strides)) => {
+                let idx = dense_indices(shape, &e, self.len(), &strides);
+                let f = (&e[..], &idx[..], &self.coeffs[..]);
+                mul_dense(shape.words, cells as usize, f, f)
+            }
+            None => {
+                let (k, place) = key_layout(&need);
+                let keys = make_keys(shape, &e, self.len(), k, &place);
+                let f = (&e[..], &keys[..], &self.coeffs[..]);
+                with_key_words!(k, square_heap::<C>(k, shape.words, f))
+            }
+        };
         Poly {
             shape,
             exps,
@@ -1558,6 +1692,171 @@ fn mul_heap<C: Ring, const K: usize>(
         if !acc.is_zero() {
             push_sum(&mut out_e, &fe[i * w..(i + 1) * w], &ge[j * w..(j + 1) * w]);
             out_c.push(acc);
+        }
+    }
+    (out_e, out_c)
+}
+
+/// [`mul_heap`] for one-word keys, the common case: the heap holds `(key, stream)` pairs, so
+/// comparisons touch no other memory, and a stream that continues replaces the root in place
+/// (one sift instead of a pop and a push).
+fn mul_heap1<C: Ring>(
+    w: usize,
+    (fe, fk, fc): (&[u64], &[u64], &[C]),
+    (ge, gk, gc): (&[u64], &[u64], &[C]),
+) -> (Vec<u64>, Vec<C>) {
+    let (nf, ng) = (fc.len(), gc.len());
+    let mut js = vec![0u32; nf];
+    let mut heap: Vec<(u64, u32)> = Vec::with_capacity(nf);
+    let cap = (nf * ng).min(4 * (nf + ng) + 1024);
+    let mut out_e: Vec<u64> = Vec::with_capacity(cap * w);
+    let mut out_c: Vec<C> = Vec::with_capacity(cap);
+    heap.push((fk[0].wrapping_add(gk[0]), 0));
+
+    // Takes the root's product and moves its stream on; returns the product.
+    let step = |heap: &mut Vec<(u64, u32)>, js: &mut Vec<u32>| -> C {
+        let (_, s) = heap[0];
+        let i = s as usize;
+        let j = js[i] as usize;
+        let p = fc[i].mul_ref(&gc[j]);
+        if j + 1 < ng {
+            js[i] = (j + 1) as u32;
+            heap[0] = (fk[i].wrapping_add(gk[j + 1]), s);
+            sift_down1(heap);
+        } else {
+            let last = heap.pop().unwrap_or((0, 0));
+            if !heap.is_empty() {
+                heap[0] = last;
+                sift_down1(heap);
+            }
+        }
+        if j == 0 && i + 1 < nf {
+            push1(heap, (fk[i + 1].wrapping_add(gk[0]), (i + 1) as u32));
+        }
+        p
+    };
+
+    while let Some(&(key, s)) = heap.first() {
+        let (i, j) = (s as usize, js[s as usize] as usize);
+        let mut acc = step(&mut heap, &mut js);
+        while heap.first().is_some_and(|t| t.0 == key) {
+            acc += step(&mut heap, &mut js);
+        }
+        if !acc.is_zero() {
+            push_sum(&mut out_e, &fe[i * w..(i + 1) * w], &ge[j * w..(j + 1) * w]);
+            out_c.push(acc);
+        }
+    }
+    (out_e, out_c)
+}
+
+/// Restores the max-heap order below the root.
+#[inline(always)]
+fn sift_down1(h: &mut [(u64, u32)]) {
+    let n = h.len();
+    let x = h[0];
+    let mut pos = 0;
+    loop {
+        let l = 2 * pos + 1;
+        if l >= n {
+            break;
+        }
+        let c = if l + 1 < n && h[l + 1].0 > h[l].0 {
+            l + 1
+        } else {
+            l
+        };
+        if h[c].0 > x.0 {
+            h[pos] = h[c];
+            pos = c;
+        } else {
+            break;
+        }
+    }
+    h[pos] = x;
+}
+
+/// Inserts into the max-heap.
+#[inline(always)]
+fn push1(h: &mut Vec<(u64, u32)>, x: (u64, u32)) {
+    let mut pos = h.len();
+    h.push(x);
+    while pos > 0 {
+        let parent = (pos - 1) / 2;
+        if x.0 > h[parent].0 {
+            h[pos] = h[parent];
+            pos = parent;
+        } else {
+            break;
+        }
+    }
+    h[pos] = x;
+}
+
+/// The largest exponent box a dense product may use (cells of 4 bytes).
+const DENSE_MAX_CELLS: u64 = 1 << 22;
+
+/// Mixed-radix indices for a dense product: variable `v` gets radix `need[v] + 1`, the lowest
+/// variable the smallest stride, so indices order like the monomials. `None` when the box
+/// (the product of the radices) exceeds `limit`.
+fn dense_strides(need: &[u64], limit: u64) -> Option<(u64, Vec<u64>)> {
+    let mut stride = 1u64;
+    let mut strides = vec![0u64; need.len()];
+    for (v, &n) in need.iter().enumerate() {
+        if n == 0 {
+            continue;
+        }
+        strides[v] = stride;
+        stride = stride.checked_mul(n + 1).filter(|&b| b <= limit)?;
+    }
+    Some((stride, strides))
+}
+
+/// The mixed-radix index of every monomial.
+fn dense_indices(shape: Shape, e: &[u64], n: usize, strides: &[u64]) -> Vec<u64> {
+    let w = shape.words;
+    (0..n)
+        .map(|i| {
+            let mut idx = 0;
+            shape.for_each(&e[i * w..(i + 1) * w], |v, x| idx += x * strides[v]);
+            idx
+        })
+        .collect()
+}
+
+/// Multiplication by accumulation in a dense box of exponents (for products whose exponent box
+/// is not much larger than the number of term products, as in dense few-variable products):
+/// each product goes to its cell by mixed-radix index, the touched cells are sorted once.
+fn mul_dense<C: Ring>(
+    w: usize,
+    cells: usize,
+    (fe, fi, fc): (&[u64], &[u64], &[C]),
+    (ge, gi, gc): (&[u64], &[u64], &[C]),
+) -> (Vec<u64>, Vec<C>) {
+    let mut cell = vec![0u32; cells];
+    // (index, i, j, coefficient) of every distinct product monomial.
+    let mut touched: Vec<(u64, u32, u32, C)> = Vec::with_capacity((fc.len() + gc.len()) * 4);
+    for (i, (a, ia)) in fc.iter().zip(fi).enumerate() {
+        for (j, (b, ib)) in gc.iter().zip(gi).enumerate() {
+            let idx = ia + ib;
+            let p = a.mul_ref(b);
+            match cell[idx as usize] {
+                0 => {
+                    touched.push((idx, i as u32, j as u32, p));
+                    cell[idx as usize] = touched.len() as u32;
+                }
+                t => touched[t as usize - 1].3 += p,
+            }
+        }
+    }
+    touched.sort_unstable_by_key(|x| std::cmp::Reverse(x.0));
+    let mut out_e = Vec::with_capacity(touched.len() * w);
+    let mut out_c = Vec::with_capacity(touched.len());
+    for (_, i, j, c) in touched {
+        if !c.is_zero() {
+            let (i, j) = (i as usize, j as usize);
+            push_sum(&mut out_e, &fe[i * w..(i + 1) * w], &ge[j * w..(j + 1) * w]);
+            out_c.push(c);
         }
     }
     (out_e, out_c)
@@ -2321,6 +2620,78 @@ mod tests {
         assert_eq!(sq.variables().len(), 40);
         assert_eq!(sq.total_degree(), 2);
         assert!(sq.is_canonical());
+    }
+
+    /// The product by all pairwise term products, sorted and combined by `from_terms`.
+    fn naive_mul(a: &P, b: &P) -> P {
+        let mut terms = Vec::new();
+        for (ma, ca) in a.terms() {
+            for (mb, cb) in b.terms() {
+                let mut m = ma.exponents();
+                m.extend(mb.exponents());
+                terms.push((m, ca.mul_ref(cb)));
+            }
+        }
+        P::from_terms(terms)
+    }
+
+    /// A pseudo-random sparse polynomial: `n` terms over `nvars` variables, `per` variables per
+    /// term with exponents below `emax`.
+    fn sparse(seed: u64, n: usize, nvars: u32, per: usize, emax: u32) -> P {
+        let mut st = seed;
+        let mut next = move || {
+            st = st
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (st >> 33) as u32
+        };
+        let terms: Vec<(Vec<(Var, u32)>, Rational)> = (0..n)
+            .map(|_| {
+                let m = (0..per).map(|_| (next() % nvars, next() % emax)).collect();
+                (m, q(next() as i64 % 19 - 9))
+            })
+            .collect();
+        P::from_terms(terms)
+    }
+
+    #[test]
+    fn every_multiplication_kernel_agrees_with_the_naive_product() {
+        let dense = (x(0) + x(1) + P::from_i64(2)).pow(5);
+        let cases = [
+            // Dense box.
+            (dense.clone(), (x(0) - x(1) + P::one()).pow(4)),
+            // Sparse, one-word keys.
+            (sparse(1, 30, 40, 3, 2), sparse(2, 25, 40, 3, 2)),
+            // Two-word keys.
+            (sparse(3, 30, 40, 4, 4), sparse(4, 30, 40, 4, 4)),
+            // Many key words (run-time width).
+            (sparse(5, 20, 60, 8, 60), sparse(6, 20, 60, 8, 60)),
+            // 16-bit fields.
+            (sparse(7, 10, 9, 3, 300), sparse(8, 12, 9, 3, 300)),
+        ];
+        for (a, b) in &cases {
+            let fast = a * b;
+            assert!(fast.is_canonical());
+            assert_eq!(fast, naive_mul(a, b));
+            assert_eq!(a.square(), naive_mul(a, a));
+            assert_eq!(a.square(), a * a);
+        }
+    }
+
+    #[test]
+    fn large_sums_agree_with_repeated_addition() {
+        for (nvars, per, emax) in [(40, 3, 2), (60, 8, 60)] {
+            let parts: Vec<P> = (0..7).map(|i| sparse(i, 80, nvars, per, emax)).collect();
+            let folded = parts.iter().fold(P::zero(), |a, b| a + b);
+            let mut with_cancellation = parts.clone();
+            with_cancellation.push(-parts[3].clone());
+            let s = P::sum(parts);
+            assert!(s.is_canonical());
+            assert_eq!(s, folded);
+            let c = P::sum(with_cancellation);
+            assert!(c.is_canonical());
+            assert_eq!(c, &folded - &sparse(3, 80, nvars, per, emax));
+        }
     }
 
     #[test]

@@ -403,8 +403,11 @@ fn mul_small(a: i128, b: i128, c: i128, d: i128) -> Option<Rational> {
     } else {
         gcd_u128(c.unsigned_abs(), b as u128) as i128
     };
-    let n = (a / g1).checked_mul(c / g2)?;
-    let den = (b / g2).checked_mul(d / g1)?;
+    // Divide only where a factor cancels: i128 division is the expensive part.
+    let (a, d) = if g1 == 1 { (a, d) } else { (a / g1, d / g1) };
+    let (c, b) = if g2 == 1 { (c, b) } else { (c / g2, b / g2) };
+    let n = a.checked_mul(c)?;
+    let den = b.checked_mul(d)?;
     (fits(n) && fits(den)).then_some(Rational(Repr::Small(n, den)))
 }
 
