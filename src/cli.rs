@@ -55,6 +55,12 @@ pub enum Command {
     },
     /// Regress a built-in f64 kernel against exact results on seeded random inputs.
     Regress(crate::regress::RegressArgs),
+    // --- plot (src/plot.rs) ---
+    /// Draw Spaeth's cylinder/sphere intersection as an SVG figure: the t-u diagram (the
+    /// paper's Fig. 2 / 3) or a 3D view, for `spaeth --example N` or a `cylinder_sphere` problem
+    /// file.
+    Plot(crate::plot::PlotArgs),
+    // --- end plot ---
 }
 
 /// The benchmark workloads (see `../shared/anchors` for the same workloads in other tools).
@@ -138,7 +144,9 @@ pub fn run(cli: Cli) -> Result<ExitCode, crate::Error> {
                 ExitCode::from(1)
             })
         }
-        Command::Bench { workload: Workload::W3 { n, variant, json } } => {
+        Command::Bench {
+            workload: Workload::W3 { n, variant, json },
+        } => {
             if n == 0 {
                 return Err(crate::Error::Usage("--n must be at least 1".into()));
             }
@@ -181,6 +189,9 @@ pub fn run(cli: Cli) -> Result<ExitCode, crate::Error> {
         }
         Command::Prove(args) => crate::prove_cmd::run(&args),
         Command::Regress(args) => crate::regress::run(&args).map(|()| ExitCode::SUCCESS),
+        // --- plot (src/plot.rs) ---
+        Command::Plot(args) => crate::plot::run(&args).map(|()| ExitCode::SUCCESS),
+        // --- end plot ---
     }
 }
 

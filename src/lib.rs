@@ -8,6 +8,7 @@
 pub mod claims;
 pub mod cli;
 pub mod error;
+pub mod plot;
 pub mod prove_cmd;
 pub mod regress;
 pub mod solve;

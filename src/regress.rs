@@ -170,7 +170,10 @@ pub struct SignErrors {
 /// one on the same f64 inputs.
 pub fn sign_errors(samples: usize, seed: u64) -> SignErrors {
     let mut rng = exactcheck_float::Rng::new(seed ^ 0x7A46);
-    let mut out = SignErrors { samples, ..SignErrors::default() };
+    let mut out = SignErrors {
+        samples,
+        ..SignErrors::default()
+    };
     for _ in 0..samples {
         let a = rng.uniform(-5.0, 5.0);
         let b = rng.uniform(-5.0, 5.0);
@@ -182,17 +185,52 @@ pub fn sign_errors(samples: usize, seed: u64) -> SignErrors {
         let eps = 10f64.powf(-rng.uniform(6.0, 15.0)) * rng.uniform(-1.0, 1.0);
         let radius = delta - r + eps;
         let tau = 10f64.powf(-rng.uniform(2.0, 8.0)) * rng.uniform(-1.0, 1.0);
-        let Ok(beta) = unit_circle_point(&tb) else { continue };
-        let Ok(gamma) = unit_circle_point(&tg) else { continue };
-        let base = CylinderSphere { a, b, r, beta, gamma, center: Vec3::new(0.0, 0.0, 0.0), radius };
+        let Ok(beta) = unit_circle_point(&tb) else {
+            continue;
+        };
+        let Ok(gamma) = unit_circle_point(&tg) else {
+            continue;
+        };
+        let base = CylinderSphere {
+            a,
+            b,
+            r,
+            beta,
+            gamma,
+            center: Vec3::new(0.0, 0.0, 0.0),
+            radius,
+        };
         let (q, dir) = base.axis();
-        let e1 = CylinderSphere { a: 1.0, b: 0.0, ..base.clone() }.axis().0 - CylinderSphere { a: 0.0, b: 0.0, ..base.clone() }.axis().0;
-        let c = Vec3::new(q.x + delta * e1.x + h * dir.x, q.y + delta * e1.y + h * dir.y, q.z + delta * e1.z + h * dir.z);
+        let e1 = CylinderSphere {
+            a: 1.0,
+            b: 0.0,
+            ..base.clone()
+        }
+        .axis()
+        .0 - CylinderSphere {
+            a: 0.0,
+            b: 0.0,
+            ..base.clone()
+        }
+        .axis()
+        .0;
+        let c = Vec3::new(
+            q.x + delta * e1.x + h * dir.x,
+            q.y + delta * e1.y + h * dir.y,
+            q.z + delta * e1.z + h * dir.z,
+        );
         let inputs = [a, b, r, tb, tg, c.x, c.y, c.z, radius, tau];
-        let Ok(float) = CylinderSphereKernel.eval::<f64>(&inputs) else { continue };
-        let exact_in: Option<Vec<Rational>> = inputs.iter().map(|x| Rational::from_f64_exact(*x)).collect();
+        let Ok(float) = CylinderSphereKernel.eval::<f64>(&inputs) else {
+            continue;
+        };
+        let exact_in: Option<Vec<Rational>> = inputs
+            .iter()
+            .map(|x| Rational::from_f64_exact(*x))
+            .collect();
         let Some(exact_in) = exact_in else { continue };
-        let Ok(exact) = CylinderSphereKernel.eval::<Rational>(&exact_in) else { continue };
+        let Ok(exact) = CylinderSphereKernel.eval::<Rational>(&exact_in) else {
+            continue;
+        };
         let (fd, ed) = (float[2], exact[2].to_big_rational());
         use num_traits::Signed;
         if ed.is_zero_value() {

@@ -16,11 +16,13 @@ use exactcheck_exact::{Radical, Rational};
 use serde_json::{json, Map, Value};
 
 fn field<'a>(obj: &'a Map<String, Value>, name: &str, path: &str) -> Result<&'a Value, Error> {
-    obj.get(name).ok_or_else(|| Error::Input(format!("missing field \"{path}{name}\"")))
+    obj.get(name)
+        .ok_or_else(|| Error::Input(format!("missing field \"{path}{name}\"")))
 }
 
 fn object<'a>(v: &'a Value, path: &str) -> Result<&'a Map<String, Value>, Error> {
-    v.as_object().ok_or_else(|| Error::Input(format!("\"{path}\" must be an object")))
+    v.as_object()
+        .ok_or_else(|| Error::Input(format!("\"{path}\" must be an object")))
 }
 
 pub(crate) fn rational(v: &Value, path: &str) -> Result<Rational, Error> {
@@ -30,14 +32,20 @@ pub(crate) fn rational(v: &Value, path: &str) -> Result<Rational, Error> {
 
 pub(crate) fn float(v: &Value, path: &str) -> Result<f64, Error> {
     match v {
-        Value::Number(n) => n.as_f64().ok_or_else(|| Error::Input(format!("{path}: not a number"))),
+        Value::Number(n) => n
+            .as_f64()
+            .ok_or_else(|| Error::Input(format!("{path}: not a number"))),
         other => Ok(exact_number(other, path)?.to_f64()),
     }
 }
 
 /// An angle given exactly `{cos, sin}` or as `{radians}`; `approx` notes a radians input taken
 /// as a nearby rational point.
-pub(crate) fn exact_angle(v: &Value, path: &str, notes: &mut Vec<Value>) -> Result<Angle<Rational>, Error> {
+pub(crate) fn exact_angle(
+    v: &Value,
+    path: &str,
+    notes: &mut Vec<Value>,
+) -> Result<Angle<Rational>, Error> {
     let o = object(v, path)?;
     if let Some(r) = o.get("radians") {
         let theta = float(r, &format!("{path}.radians"))?;
@@ -48,10 +56,19 @@ pub(crate) fn exact_angle(v: &Value, path: &str, notes: &mut Vec<Value>) -> Resu
         notes.push(json!({"field": path, "radians": theta, "rational_tau": tau.to_string(), "cos": angle.cos.to_string(), "sin": angle.sin.to_string(), "deviation_radians": dev}));
         return Ok(angle);
     }
-    let c = rational(field(o, "cos", &format!("{path}."))?, &format!("{path}.cos"))?;
-    let s = rational(field(o, "sin", &format!("{path}."))?, &format!("{path}.sin"))?;
+    let c = rational(
+        field(o, "cos", &format!("{path}."))?,
+        &format!("{path}.cos"),
+    )?;
+    let s = rational(
+        field(o, "sin", &format!("{path}."))?,
+        &format!("{path}.sin"),
+    )?;
     if c.square() + s.square() != Rational::ONE {
-        return Err(Error::Input(format!("{path}: cos^2 + sin^2 = {} != 1", c.square() + s.square())));
+        return Err(Error::Input(format!(
+            "{path}: cos^2 + sin^2 = {} != 1",
+            c.square() + s.square()
+        )));
     }
     Ok(Angle { cos: c, sin: s })
 }
@@ -60,15 +77,33 @@ pub(crate) fn float_angle(v: &Value, path: &str) -> Result<Angle<f64>, Error> {
     let o = object(v, path)?;
     if let Some(r) = o.get("radians") {
         let t = float(r, &format!("{path}.radians"))?;
-        return Ok(Angle { cos: t.cos(), sin: t.sin() });
+        return Ok(Angle {
+            cos: t.cos(),
+            sin: t.sin(),
+        });
     }
-    let c = float(field(o, "cos", &format!("{path}."))?, &format!("{path}.cos"))?;
-    let s = float(field(o, "sin", &format!("{path}."))?, &format!("{path}.sin"))?;
+    let c = float(
+        field(o, "cos", &format!("{path}."))?,
+        &format!("{path}.cos"),
+    )?;
+    let s = float(
+        field(o, "sin", &format!("{path}."))?,
+        &format!("{path}.sin"),
+    )?;
     if ((c * c + s * s) - 1.0).abs() > 1e-9 {
-        return Err(Error::Input(format!("{path}: cos^2 + sin^2 = {} is not 1", c * c + s * s)));
+        return Err(Error::Input(format!(
+            "{path}: cos^2 + sin^2 = {} is not 1",
+            c * c + s * s
+        )));
     }
     Ok(Angle { cos: c, sin: s })
 }
+
+/// Reads an angle field (exact `{cos, sin}` / `{radians}`, or f64).
+type AngleReader<'a, T> = dyn FnMut(&Value, &str) -> Result<Angle<T>, Error> + 'a;
+
+/// A point with coordinates `p + q sqrt(D)` as text, and its f64 approximation.
+type QuadPoint = ([String; 3], [f64; 3]);
 
 pub(crate) struct Input<T> {
     pub(crate) cs: CylinderSphere<T>,
@@ -78,13 +113,16 @@ pub(crate) struct Input<T> {
 pub(crate) fn read<T: Field + OrderedField>(
     obj: &Map<String, Value>,
     num: &dyn Fn(&Value, &str) -> Result<T, Error>,
-    angle: &mut dyn FnMut(&Value, &str) -> Result<Angle<T>, Error>,
+    angle: &mut AngleReader<'_, T>,
 ) -> Result<Input<T>, Error> {
     let cyl = object(field(obj, "cylinder", "")?, "cylinder")?;
     let sph = object(field(obj, "sphere", "")?, "sphere")?;
     let axis = array(cyl, "axis_point").map_err(|e| Error::Input(format!("cylinder.{e}")))?;
     if axis.len() != 2 {
-        return Err(Error::Input(format!("cylinder.axis_point: expected [a, b], found {} numbers", axis.len())));
+        return Err(Error::Input(format!(
+            "cylinder.axis_point: expected [a, b], found {} numbers",
+            axis.len()
+        )));
     }
     let a = num(&axis[0], "cylinder.axis_point[0]")?;
     let b = num(&axis[1], "cylinder.axis_point[1]")?;
@@ -92,11 +130,20 @@ pub(crate) fn read<T: Field + OrderedField>(
     let beta = angle(field(cyl, "beta", "cylinder.")?, "cylinder.beta")?;
     let gamma = angle(field(cyl, "gamma", "cylinder.")?, "cylinder.gamma")?;
     let c = field(sph, "center", "sphere.")?;
-    let ca = c.as_array().ok_or_else(|| Error::Input("sphere.center: expected 3 numbers".into()))?;
+    let ca = c
+        .as_array()
+        .ok_or_else(|| Error::Input("sphere.center: expected 3 numbers".into()))?;
     if ca.len() != 3 {
-        return Err(Error::Input(format!("sphere.center: expected 3 coordinates, found {}", ca.len())));
+        return Err(Error::Input(format!(
+            "sphere.center: expected 3 coordinates, found {}",
+            ca.len()
+        )));
     }
-    let center = Vec3::new(num(&ca[0], "sphere.center[0]")?, num(&ca[1], "sphere.center[1]")?, num(&ca[2], "sphere.center[2]")?);
+    let center = Vec3::new(
+        num(&ca[0], "sphere.center[0]")?,
+        num(&ca[1], "sphere.center[1]")?,
+        num(&ca[2], "sphere.center[2]")?,
+    );
     let radius = num(field(sph, "radius", "sphere.")?, "sphere.radius")?;
     if r.sign() != Sign::Positive {
         return Err(Error::Input("cylinder.radius must be positive".into()));
@@ -106,9 +153,24 @@ pub(crate) fn read<T: Field + OrderedField>(
     }
     let samples = match obj.get("samples") {
         None => 12,
-        Some(v) => v.as_u64().filter(|n| (1..=10_000).contains(n)).ok_or_else(|| Error::Input("samples must be an integer from 1 to 10000".into()))? as usize,
+        Some(v) => v
+            .as_u64()
+            .filter(|n| (1..=10_000).contains(n))
+            .ok_or_else(|| Error::Input("samples must be an integer from 1 to 10000".into()))?
+            as usize,
     };
-    Ok(Input { cs: CylinderSphere { a, b, r, beta, gamma, center, radius }, samples })
+    Ok(Input {
+        cs: CylinderSphere {
+            a,
+            b,
+            r,
+            beta,
+            gamma,
+            center,
+            radius,
+        },
+        samples,
+    })
 }
 
 /// `{cylinder, sphere, samples}` → the answer (exact, float, or both).
@@ -124,7 +186,10 @@ pub fn cylinder_sphere(obj: &Map<String, Value>, mode: Mode) -> Result<Value, Er
     }
 }
 
-fn trig_json<T: std::fmt::Display>(c: &exactcheck_core::cylinder_sphere::TrigCoefficients<T>, f: impl Fn(&T) -> Value) -> Value {
+fn trig_json<T: std::fmt::Display>(
+    c: &exactcheck_core::cylinder_sphere::TrigCoefficients<T>,
+    f: impl Fn(&T) -> Value,
+) -> Value {
     json!({
         "A": {"basis": ["1", "cos t", "sin t"], "coefficients": c.a.iter().map(&f).collect::<Vec<_>>()},
         "B": {"basis": ["1", "cos t", "sin t", "cos^2 t", "cos t sin t", "sin^2 t"], "coefficients": c.b.iter().map(&f).collect::<Vec<_>>()},
@@ -133,7 +198,9 @@ fn trig_json<T: std::fmt::Display>(c: &exactcheck_core::cylinder_sphere::TrigCoe
 
 fn exact(obj: &Map<String, Value>) -> Result<Value, Error> {
     let mut notes = Vec::new();
-    let input = read::<Rational>(obj, &|v, p| rational(v, p), &mut |v, p| exact_angle(v, p, &mut notes))?;
+    let input = read::<Rational>(obj, &|v, p| rational(v, p), &mut |v, p| {
+        exact_angle(v, p, &mut notes)
+    })?;
     let cs = input.cs;
     let analysis = analyze(&cs);
     let by_distance = cs.contact_by_distance();
@@ -151,7 +218,9 @@ fn exact(obj: &Map<String, Value>) -> Result<Value, Error> {
     }
     for iv in &analysis.nonnegative {
         let mid = match (&iv.lo, &iv.hi) {
-            (Bound::Root(a), Bound::Root(b)) => (a.midpoint() + b.midpoint()) * Rational::new(1, 2).unwrap_or(Rational::ONE),
+            (Bound::Root(a), Bound::Root(b)) => {
+                (a.midpoint() + b.midpoint()) * Rational::new(1, 2).unwrap_or(Rational::ONE)
+            }
             (Bound::NegInf, Bound::Root(b)) => b.lo.clone() - Rational::ONE,
             (Bound::Root(a), Bound::PosInf) => a.hi.clone() + Rational::ONE,
             _ => Rational::ZERO,
@@ -161,14 +230,21 @@ fn exact(obj: &Map<String, Value>) -> Result<Value, Error> {
     taus.sort();
     taus.dedup();
     let point_json = |x: &Vec3<Radical>| json!([out(&x.x), out(&x.y), out(&x.z)]);
-    let approx_json = |x: &Vec3<Radical>| json!([x.x.to_f64() + 0.0, x.y.to_f64() + 0.0, x.z.to_f64() + 0.0]);
+    let approx_json =
+        |x: &Vec3<Radical>| json!([x.x.to_f64() + 0.0, x.y.to_f64() + 0.0, x.z.to_f64() + 0.0]);
     let lift = |q: &Rational| Radical::from(q);
     let rcs = CylinderSphere {
         a: lift(&cs.a),
         b: lift(&cs.b),
         r: lift(&cs.r),
-        beta: Angle { cos: lift(&cs.beta.cos), sin: lift(&cs.beta.sin) },
-        gamma: Angle { cos: lift(&cs.gamma.cos), sin: lift(&cs.gamma.sin) },
+        beta: Angle {
+            cos: lift(&cs.beta.cos),
+            sin: lift(&cs.beta.sin),
+        },
+        gamma: Angle {
+            cos: lift(&cs.gamma.cos),
+            sin: lift(&cs.gamma.sin),
+        },
         center: cs.center.map(lift),
         radius: lift(&cs.radius),
     };
@@ -185,7 +261,9 @@ fn exact(obj: &Map<String, Value>) -> Result<Value, Error> {
         if p.sign_at(tau) == Sign::Negative {
             continue;
         }
-        let Ok(angle) = unit_circle_point(tau) else { continue };
+        let Ok(angle) = unit_circle_point(tau) else {
+            continue;
+        };
         let (a, b) = cs.coefficients_at(&angle.cos, &angle.sin);
         let disc = a.square() - &b;
         let Some(root) = Radical::sqrt_rational(&disc) else {
@@ -205,7 +283,11 @@ fn exact(obj: &Map<String, Value>) -> Result<Value, Error> {
         };
         let (c, s) = (lift(&angle.cos), lift(&angle.sin));
         let minus_a = lift(&a).neg_ref();
-        let us: Vec<Radical> = if disc.is_zero() { vec![minus_a] } else { vec![minus_a.sub_ref(&root), minus_a.add_ref(&root)] };
+        let us: Vec<Radical> = if disc.is_zero() {
+            vec![minus_a]
+        } else {
+            vec![minus_a.sub_ref(&root), minus_a.add_ref(&root)]
+        };
         let mut pts = Vec::new();
         for u in &us {
             let x = rcs.point(&c, &s, u);
@@ -220,15 +302,28 @@ fn exact(obj: &Map<String, Value>) -> Result<Value, Error> {
             "u": us.iter().map(out).collect::<Vec<_>>(),
             "points": pts.iter().map(point_json).collect::<Vec<_>>(),
         }));
-        points.extend(pts.iter().map(|x| json!({"exact": point_json(x), "approx": approx_json(x)})));
+        points.extend(
+            pts.iter()
+                .map(|x| json!({"exact": point_json(x), "approx": approx_json(x)})),
+        );
     }
     // Tangency points.
     let mut tangent_points = Vec::new();
     for tp in &analysis.tangent_params {
         let (angle, exact_tau) = match tp {
-            None => (Angle { cos: Rational::from_integer(-1), sin: Rational::ZERO }, Some("infinity (t = pi)".to_string())),
+            None => (
+                Angle {
+                    cos: Rational::from_integer(-1),
+                    sin: Rational::ZERO,
+                },
+                Some("infinity (t = pi)".to_string()),
+            ),
             Some(ri) => match ri.exact_value() {
-                Some(v) => (unit_circle_point(v).map_err(|_| Error::Input("bad tangency parameter".into()))?, Some(v.to_string())),
+                Some(v) => (
+                    unit_circle_point(v)
+                        .map_err(|_| Error::Input("bad tangency parameter".into()))?,
+                    Some(v.to_string()),
+                ),
                 None => {
                     let refined = p.refine(ri, &Rational::new(1, 1 << 40).unwrap_or(Rational::ONE));
                     tangent_points.push(json!({"tau_interval": [refined.lo.to_string(), refined.hi.to_string()], "approx": {"tau": refined.to_f64()}}));
@@ -241,6 +336,21 @@ fn exact(obj: &Map<String, Value>) -> Result<Value, Error> {
         all_on_both &= on_both(&x);
         tangent_points.push(json!({"tau": exact_tau, "point": point_json(&x), "approx": approx_json(&x), "on_both_surfaces": on_both(&x)}));
     }
+    // Endpoints to the requested precision (optional field "precision": a positive width).
+    let width = match obj.get("precision") {
+        None => None,
+        Some(v) => {
+            let w = rational(v, "precision")?;
+            if w.sign() != Sign::Positive {
+                return Err(Error::Input("precision must be positive".into()));
+            }
+            Some(w)
+        }
+    };
+    let refine = |r: &exactcheck_exact::univariate::RootInterval| match &width {
+        Some(w) if !r.is_exact() => p.refine(r, w),
+        _ => r.clone(),
+    };
     let intervals: Vec<Value> = analysis
         .nonnegative
         .iter()
@@ -250,7 +360,10 @@ fn exact(obj: &Map<String, Value>) -> Result<Value, Error> {
                 Bound::PosInf => json!("+inf"),
                 Bound::Root(r) => match r.exact_value() {
                     Some(v) => json!(v.to_string()),
-                    None => json!({"interval": [r.lo.to_string(), r.hi.to_string()], "approx": r.to_f64()}),
+                    None => {
+                        let r = refine(r);
+                        json!({"interval": [r.lo.to_string(), r.hi.to_string()], "approx": r.to_f64()})
+                    }
                 },
             };
             json!([b(&iv.lo), b(&iv.hi)])
@@ -266,7 +379,7 @@ fn exact(obj: &Map<String, Value>) -> Result<Value, Error> {
         "methods_agree": analysis.contact == by_distance,
         "components": analysis.components,
         "tangent_points": tangent_points,
-        "coefficients": trig_json(&coeffs, |x| out(x)),
+        "coefficients": trig_json(&coeffs, out),
         "parametrization": {
             "angle": "cos t = (1 - tau^2)/(1 + tau^2), sin t = 2*tau/(1 + tau^2) (tau = infinity at t = pi)",
             "u": "-A(t) +- sqrt(P(tau))/(1 + tau^2)",
@@ -294,7 +407,10 @@ fn float_answer(obj: &Map<String, Value>) -> Result<Value, Error> {
     for k in 0..n {
         let t = std::f64::consts::TAU * k as f64 / n as f64;
         let (s, c) = t.sin_cos();
-        let u: Vec<f64> = sampler.roots(t).map(|(a, b)| vec![a, b]).unwrap_or_default();
+        let u: Vec<f64> = sampler
+            .roots(t)
+            .map(|(a, b)| vec![a, b])
+            .unwrap_or_default();
         let points: Vec<[f64; 3]> = u.iter().map(|u| cs.point(&c, &s, u).into_array()).collect();
         samples.push(json!({"t": t, "cos": c, "sin": s, "u": u, "points": points}));
     }
@@ -318,7 +434,7 @@ fn quadratic_points(
     angle: &Angle<Rational>,
     a: &Rational,
     disc: &Rational,
-) -> (Vec<([String; 3], [f64; 3])>, bool) {
+) -> (Vec<QuadPoint>, bool) {
     use exactcheck_exact::poly::Poly;
     type P = Poly<Rational>;
     let k = |q: &Rational| P::constant(q.clone());
@@ -328,8 +444,14 @@ fn quadratic_points(
         a: k(&cs.a),
         b: k(&cs.b),
         r: k(&cs.r),
-        beta: Angle { cos: k(&cs.beta.cos), sin: k(&cs.beta.sin) },
-        gamma: Angle { cos: k(&cs.gamma.cos), sin: k(&cs.gamma.sin) },
+        beta: Angle {
+            cos: k(&cs.beta.cos),
+            sin: k(&cs.beta.sin),
+        },
+        gamma: Angle {
+            cos: k(&cs.gamma.cos),
+            sin: k(&cs.gamma.sin),
+        },
         center: cs.center.map(k),
         radius: k(&cs.radius),
     };
@@ -346,7 +468,11 @@ fn quadratic_points(
         let coord = |c: &P| {
             let p0 = c.coefficient(&[]);
             let p1 = c.coefficient(&[(0, 1)]);
-            let text = if p1.is_zero() { p0.to_string() } else { format!("{p0} + {p1}*sqrt({disc})") };
+            let text = if p1.is_zero() {
+                p0.to_string()
+            } else {
+                format!("{p0} + {p1}*sqrt({disc})")
+            };
             let f = |q: &Rational| exactcheck_float::rational_to_f64(&q.to_big_rational());
             (text, f(&p0) + f(&p1) * sqrt_d)
         };

@@ -251,7 +251,10 @@ fn bench_w3_matches_the_numpy_anchor() {
         let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON");
         assert_eq!(v["count_nonneg"], 3415478, "{variant}");
         let sum: f64 = v["sum_sqrt"].as_str().unwrap().parse().unwrap();
-        assert!((sum - 13229714.773764007).abs() < 1e-9 * sum, "{variant}: {sum}");
+        assert!(
+            (sum - 13229714.773764007).abs() < 1e-9 * sum,
+            "{variant}: {sum}"
+        );
     }
 }
 
@@ -276,7 +279,12 @@ fn solve_cylinder_sphere_spaeth_examples() {
     assert_eq!(e3["points"].as_array().unwrap().len(), 0);
     // Examples 1 and 2 (2 with its radians taken as rational rotations): points on both surfaces.
     let e1 = answer(cylinder_sphere_problem(zero, zero, "[1,0,0]", "7"));
-    let e2 = answer(cylinder_sphere_problem(r#"{"radians":1}"#, r#"{"radians":-1}"#, "[1,2,4]", "5"));
+    let e2 = answer(cylinder_sphere_problem(
+        r#"{"radians":1}"#,
+        r#"{"radians":-1}"#,
+        "[1,2,4]",
+        "5",
+    ));
     for e in [&e1, &e2] {
         assert_eq!(e["intersects"], true);
         assert_eq!(e["methods_agree"], true);
@@ -290,10 +298,18 @@ fn solve_cylinder_sphere_spaeth_examples() {
     use exactcheck_core::Ring;
     use exactcheck_exact::Radical;
     for p in e1["points"].as_array().unwrap() {
-        let c: Vec<Radical> = p["exact"].as_array().unwrap().iter().map(|x| x.as_str().unwrap().parse().unwrap()).collect();
+        let c: Vec<Radical> = p["exact"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|x| x.as_str().unwrap().parse().unwrap())
+            .collect();
         assert_eq!(c[0].square() + c[1].square(), Radical::from(25));
         let x1 = c[0].clone() - Radical::from(1);
-        assert_eq!(x1.square() + c[1].square() + c[2].square(), Radical::from(49));
+        assert_eq!(
+            x1.square() + c[1].square() + c[2].square(),
+            Radical::from(49)
+        );
     }
     // A sphere touching the cylinder from outside: one tangency point, exactly (5, 0, 3).
     let t = answer(cylinder_sphere_problem(zero, zero, "[8,0,3]", "3"));
@@ -308,11 +324,41 @@ fn solve_cylinder_sphere_spaeth_examples() {
 #[test]
 fn solve_cylinder_sphere_rejects_bad_input() {
     for (problem, needle) in [
-        (cylinder_sphere_problem(r#"{"cos":1,"sin":1}"#, r#"{"cos":1,"sin":0}"#, "[1,0,0]", "7"), "cos^2 + sin^2"),
-        (cylinder_sphere_problem(r#"{"cos":1,"sin":0}"#, r#"{"cos":1,"sin":0}"#, "[1,0,0]", "0"), "sphere.radius must be positive"),
-        (cylinder_sphere_problem(r#"{"cos":1,"sin":0}"#, r#"{"cos":1,"sin":0}"#, "[1,0]", "7"), "sphere.center"),
-        (cylinder_sphere_problem(r#"{"cos":1}"#, r#"{"cos":1,"sin":0}"#, "[1,0,0]", "7"), "cylinder.beta.sin"),
-        (cylinder_sphere_problem(r#"{"cos":"sqrt(2)/2","sin":"sqrt(2)/2"}"#, r#"{"cos":1,"sin":0}"#, "[1,0,0]", "7"), "irrational"),
+        (
+            cylinder_sphere_problem(
+                r#"{"cos":1,"sin":1}"#,
+                r#"{"cos":1,"sin":0}"#,
+                "[1,0,0]",
+                "7",
+            ),
+            "cos^2 + sin^2",
+        ),
+        (
+            cylinder_sphere_problem(
+                r#"{"cos":1,"sin":0}"#,
+                r#"{"cos":1,"sin":0}"#,
+                "[1,0,0]",
+                "0",
+            ),
+            "sphere.radius must be positive",
+        ),
+        (
+            cylinder_sphere_problem(r#"{"cos":1,"sin":0}"#, r#"{"cos":1,"sin":0}"#, "[1,0]", "7"),
+            "sphere.center",
+        ),
+        (
+            cylinder_sphere_problem(r#"{"cos":1}"#, r#"{"cos":1,"sin":0}"#, "[1,0,0]", "7"),
+            "cylinder.beta.sin",
+        ),
+        (
+            cylinder_sphere_problem(
+                r#"{"cos":"sqrt(2)/2","sin":"sqrt(2)/2"}"#,
+                r#"{"cos":1,"sin":0}"#,
+                "[1,0,0]",
+                "7",
+            ),
+            "irrational",
+        ),
     ] {
         let o = solve_stdin(&problem, &[]);
         assert_eq!(o.status.code(), Some(2), "{problem}");
@@ -320,6 +366,14 @@ fn solve_cylinder_sphere_rejects_bad_input() {
         assert!(err.contains(needle), "{problem}: {err}");
     }
     // Float mode accepts radians and float literals.
-    let o = solve_stdin(&cylinder_sphere_problem(r#"{"radians":1.0}"#, r#"{"radians":-1.0}"#, "[1.0,2.0,4.0]", "5.0"), &["--float"]);
+    let o = solve_stdin(
+        &cylinder_sphere_problem(
+            r#"{"radians":1.0}"#,
+            r#"{"radians":-1.0}"#,
+            "[1.0,2.0,4.0]",
+            "5.0",
+        ),
+        &["--float"],
+    );
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
 }

@@ -108,8 +108,18 @@ fn prove_identities_typed_as_text() {
         "c^2 + s^2 = 1",
     ]);
     // As the identity is usually written: juxtaposition multiplies.
-    assert!(circle.status.success(), "{}", String::from_utf8_lossy(&circle.stdout));
-    let flipped = exactcheck(&["prove", "c^2 x^3 - s^2 x^3 - x", "x^3 - x", "--where", "c^2 + s^2 = 1"]);
+    assert!(
+        circle.status.success(),
+        "{}",
+        String::from_utf8_lossy(&circle.stdout)
+    );
+    let flipped = exactcheck(&[
+        "prove",
+        "c^2 x^3 - s^2 x^3 - x",
+        "x^3 - x",
+        "--where",
+        "c^2 + s^2 = 1",
+    ]);
     assert_eq!(flipped.status.code(), Some(1));
     let circle = exactcheck(&[
         "prove",

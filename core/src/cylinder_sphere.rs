@@ -161,7 +161,10 @@ impl<T: Field> CylinderSphere<T> {
         let b2 = (b01.sub_ref(&b0m)).mul_ref(&half);
         let b5 = (b01.add_ref(&b0m)).mul_ref(&half) - &b00;
         let b4 = b11 - &b00 - &b1 - &b2 - &b3 - &b5;
-        TrigCoefficients { a: [a00.clone(), a10 - &a00, a01 - &a00], b: [b00, b1, b2, b3, b4, b5] }
+        TrigCoefficients {
+            a: [a00.clone(), a10 - &a00, a01 - &a00],
+            b: [b00, b1, b2, b3, b4, b5],
+        }
     }
 }
 
@@ -218,8 +221,17 @@ impl<T: Ring> CylinderSphere<T> {
     /// The axis point and unit direction as in [`CylinderSphere::axis`], for any ring (no order
     /// needed; e.g. over polynomials).
     pub fn axis_polynomial(&self) -> (Vec3<T>, Vec3<T>) {
-        let p = rotate_x(&self.gamma, &rotate_y(&self.beta, &Vec3::new(self.a.clone(), self.b.clone(), T::zero())));
-        let d = rotate_x(&self.gamma, &rotate_y(&self.beta, &Vec3::new(T::zero(), T::zero(), T::one())));
+        let p = rotate_x(
+            &self.gamma,
+            &rotate_y(
+                &self.beta,
+                &Vec3::new(self.a.clone(), self.b.clone(), T::zero()),
+            ),
+        );
+        let d = rotate_x(
+            &self.gamma,
+            &rotate_y(&self.beta, &Vec3::new(T::zero(), T::zero(), T::one())),
+        );
         (p, d)
     }
 }
@@ -312,12 +324,27 @@ mod tests {
             radius: r,
         };
         // Spaeth's examples 1 and 3.
-        assert_eq!(cs((1.0, 0.0, 0.0), 7.0).contact_by_distance(), Contact::Crossing);
-        assert_eq!(cs((6.0, 7.0, 8.0), 1.0).contact_by_distance(), Contact::Disjoint);
+        assert_eq!(
+            cs((1.0, 0.0, 0.0), 7.0).contact_by_distance(),
+            Contact::Crossing
+        );
+        assert_eq!(
+            cs((6.0, 7.0, 8.0), 1.0).contact_by_distance(),
+            Contact::Disjoint
+        );
         // Touching from outside (delta = 8 = r + R) and from inside (delta = 2 = r - R).
-        assert_eq!(cs((8.0, 0.0, 3.0), 3.0).contact_by_distance(), Contact::Tangent);
-        assert_eq!(cs((2.0, 0.0, 0.0), 3.0).contact_by_distance(), Contact::Tangent);
-        assert_eq!(cs((1.0, 0.0, 0.0), 3.0).contact_by_distance(), Contact::Disjoint);
+        assert_eq!(
+            cs((8.0, 0.0, 3.0), 3.0).contact_by_distance(),
+            Contact::Tangent
+        );
+        assert_eq!(
+            cs((2.0, 0.0, 0.0), 3.0).contact_by_distance(),
+            Contact::Tangent
+        );
+        assert_eq!(
+            cs((1.0, 0.0, 0.0), 3.0).contact_by_distance(),
+            Contact::Disjoint
+        );
     }
 
     #[test]
@@ -327,7 +354,10 @@ mod tests {
             b: -0.25,
             r: 5.0,
             beta: Angle { cos: 0.6, sin: 0.8 },
-            gamma: Angle { cos: 0.8, sin: -0.6 },
+            gamma: Angle {
+                cos: 0.8,
+                sin: -0.6,
+            },
             center: Vec3::new(1.0, 2.0, 4.0),
             radius: 5.0,
         };
@@ -337,7 +367,11 @@ mod tests {
             let d = cs.discriminant_at(&pt.cos, &pt.sin);
             let w = (1.0 + tau * tau) * (1.0 + tau * tau);
             let poly: f64 = p.iter().rev().fold(0.0, |acc, c| acc * tau + c);
-            assert!((poly - w * d).abs() < 1e-9 * (1.0 + poly.abs()), "{tau}: {poly} vs {}", w * d);
+            assert!(
+                (poly - w * d).abs() < 1e-9 * (1.0 + poly.abs()),
+                "{tau}: {poly} vs {}",
+                w * d
+            );
         }
         assert!((p[4] - cs.discriminant_at(&-1.0, &0.0)).abs() < 1e-9);
     }

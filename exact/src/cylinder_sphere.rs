@@ -45,7 +45,10 @@ pub fn analyze(cs: &CylinderSphere<Rational>) -> Analysis {
         return Analysis {
             discriminant: p,
             sign_at_pi,
-            nonnegative: vec![Interval { lo: Bound::NegInf, hi: Bound::PosInf }],
+            nonnegative: vec![Interval {
+                lo: Bound::NegInf,
+                hi: Bound::PosInf,
+            }],
             contact: Contact::Tangent,
             components: 1,
             tangent_params: Vec::new(),
@@ -53,10 +56,12 @@ pub fn analyze(cs: &CylinderSphere<Rational>) -> Analysis {
     }
     let nonnegative = p.nonnegative_set();
     let touching = p.touching_points();
-    let mut tangent_params: Vec<Option<RootInterval>> = touching.iter().map(|r| Some(r.interval.clone())).collect();
+    let mut tangent_params: Vec<Option<RootInterval>> =
+        touching.iter().map(|r| Some(r.interval.clone())).collect();
     // t = pi: the tau^4 coefficient; it is an isolated touching point when the discriminant is 0
     // there and negative on both sides (i.e. for large |tau|).
-    let ends_negative = p.sign_at_pos_inf() == Sign::Negative && p.sign_at_neg_inf() == Sign::Negative;
+    let ends_negative =
+        p.sign_at_pos_inf() == Sign::Negative && p.sign_at_neg_inf() == Sign::Negative;
     if sign_at_pi == Sign::Zero && (p.degree() < 4) && ends_negative {
         tangent_params.push(None);
     }
@@ -72,8 +77,12 @@ pub fn analyze(cs: &CylinderSphere<Rational>) -> Analysis {
     // Components on the circle: the tau-intervals, with the two unbounded ones joined through
     // t = pi when the discriminant is >= 0 there.
     let mut arcs = nonnegative.len();
-    let unbounded_lo = nonnegative.first().is_some_and(|i| matches!(i.lo, Bound::NegInf));
-    let unbounded_hi = nonnegative.last().is_some_and(|i| matches!(i.hi, Bound::PosInf));
+    let unbounded_lo = nonnegative
+        .first()
+        .is_some_and(|i| matches!(i.lo, Bound::NegInf));
+    let unbounded_hi = nonnegative
+        .last()
+        .is_some_and(|i| matches!(i.hi, Bound::PosInf));
     let whole_line = arcs == 1 && unbounded_lo && unbounded_hi;
     if arcs >= 2 && unbounded_lo && unbounded_hi && sign_at_pi != Sign::Negative {
         arcs -= 1;
@@ -88,7 +97,14 @@ pub fn analyze(cs: &CylinderSphere<Rational>) -> Analysis {
     } else {
         arcs
     };
-    Analysis { discriminant: p, sign_at_pi, nonnegative, contact, components, tangent_params }
+    Analysis {
+        discriminant: p,
+        sign_at_pi,
+        nonnegative,
+        contact,
+        components,
+        tangent_params,
+    }
 }
 
 #[cfg(test)]
@@ -102,7 +118,10 @@ mod tests {
     }
 
     fn axis_aligned(center: (i64, i64, i64), radius: i64) -> CylinderSphere<Rational> {
-        let zero = Angle { cos: q(1), sin: q(0) };
+        let zero = Angle {
+            cos: q(1),
+            sin: q(0),
+        };
         CylinderSphere {
             a: q(0),
             b: q(0),
@@ -131,7 +150,12 @@ mod tests {
         assert_eq!(a.tangent_params.len(), 1);
         assert_eq!(a.components, 1);
         // At t = 0 (tau = 0): the point (5, 0, 3).
-        assert_eq!(a.tangent_params[0].as_ref().and_then(|r| r.exact_value().cloned()), Some(Rational::ZERO));
+        assert_eq!(
+            a.tangent_params[0]
+                .as_ref()
+                .and_then(|r| r.exact_value().cloned()),
+            Some(Rational::ZERO)
+        );
         // Touching at t = pi: centre (-8, 0, 3).
         let b = analyze(&axis_aligned((-8, 0, 3), 3));
         assert_eq!(b.contact, Contact::Tangent);
@@ -140,7 +164,14 @@ mod tests {
 
     #[test]
     fn agrees_with_the_distance_method_on_the_examples() {
-        for (c, r) in [((1, 0, 0), 7), ((6, 7, 8), 1), ((8, 0, 3), 3), ((2, 0, 0), 3), ((1, 0, 0), 3), ((4, 4, 0), 2)] {
+        for (c, r) in [
+            ((1, 0, 0), 7),
+            ((6, 7, 8), 1),
+            ((8, 0, 3), 3),
+            ((2, 0, 0), 3),
+            ((1, 0, 0), 3),
+            ((4, 4, 0), 2),
+        ] {
             let cs = axis_aligned(c, r);
             assert_eq!(analyze(&cs).contact, cs.contact_by_distance(), "{c:?} {r}");
         }

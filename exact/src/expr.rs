@@ -433,7 +433,9 @@ impl<'a> Parser<'a> {
                     items.push((op, self.parse_unary()?));
                 }
                 // A juxtaposed factor takes no sign of its own: `x -y` stays a difference.
-                _ if self.starts_implicit_factor() => items.push((MulOp::Times, self.parse_power()?)),
+                _ if self.starts_implicit_factor() => {
+                    items.push((MulOp::Times, self.parse_power()?))
+                }
                 _ => break,
             }
         }

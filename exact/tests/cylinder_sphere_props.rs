@@ -3,7 +3,7 @@
 //! discriminant as a polynomial in the circle parameter (exact real root isolation).
 
 use exactcheck_core::cylinder_sphere::{unit_circle_point, Angle, Contact, CylinderSphere};
-use exactcheck_core::{Ring, Vec3};
+use exactcheck_core::Vec3;
 use exactcheck_exact::cylinder_sphere::analyze;
 use exactcheck_exact::Rational;
 use proptest::prelude::*;
@@ -18,14 +18,25 @@ fn positive() -> impl Strategy<Value = Rational> {
 
 fn angle() -> impl Strategy<Value = Angle<Rational>> {
     prop_oneof![
-        Just(Angle { cos: Rational::ONE, sin: Rational::ZERO }),
+        Just(Angle {
+            cos: Rational::ONE,
+            sin: Rational::ZERO
+        }),
         rat().prop_map(|tau| unit_circle_point(&tau).unwrap()),
     ]
 }
 
 fn config() -> impl Strategy<Value = CylinderSphere<Rational>> {
-    (rat(), rat(), positive(), angle(), angle(), (rat(), rat(), rat()), positive()).prop_map(
-        |(a, b, r, beta, gamma, (d, e, f), radius)| CylinderSphere {
+    (
+        rat(),
+        rat(),
+        positive(),
+        angle(),
+        angle(),
+        (rat(), rat(), rat()),
+        positive(),
+    )
+        .prop_map(|(a, b, r, beta, gamma, (d, e, f), radius)| CylinderSphere {
             a,
             b,
             r,
@@ -33,8 +44,7 @@ fn config() -> impl Strategy<Value = CylinderSphere<Rational>> {
             gamma,
             center: Vec3::new(d, e, f),
             radius,
-        },
-    )
+        })
 }
 
 /// A configuration whose sphere touches the cylinder: the centre at a rational distance delta
@@ -46,14 +56,26 @@ fn tangent_config() -> impl Strategy<Value = CylinderSphere<Rational>> {
         }
         let (q, dir) = cs.axis();
         let e1 = {
-            let probe = CylinderSphere { a: Rational::ONE, b: Rational::ZERO, ..cs.clone() };
+            let probe = CylinderSphere {
+                a: Rational::ONE,
+                b: Rational::ZERO,
+                ..cs.clone()
+            };
             let (q1, _) = probe.axis();
-            let probe0 = CylinderSphere { a: Rational::ZERO, b: Rational::ZERO, ..cs.clone() };
+            let probe0 = CylinderSphere {
+                a: Rational::ZERO,
+                b: Rational::ZERO,
+                ..cs.clone()
+            };
             let (q0, _) = probe0.axis();
             &q1 - &q0
         };
         cs.center = q.add_scaled(&delta, &e1).add_scaled(&h, &dir);
-        cs.radius = if delta > cs.r { &delta - &cs.r } else { &cs.r - &delta };
+        cs.radius = if delta > cs.r {
+            &delta - &cs.r
+        } else {
+            &cs.r - &delta
+        };
         Some(cs)
     })
 }

@@ -75,7 +75,10 @@ impl DiscSampler {
                 sum += d.sqrt();
             }
         }
-        GridSummary { count_nonneg: count, sum_sqrt: sum }
+        GridSummary {
+            count_nonneg: count,
+            sum_sqrt: sum,
+        }
     }
 
     /// Sweeps the grid `t_i = i 2 pi / n`, `i = 0..n`, on all cores.
@@ -91,17 +94,24 @@ impl DiscSampler {
     /// The same sweep on the calling thread only.
     pub fn sweep_serial(&self, n: usize) -> GridSummary {
         let dt = std::f64::consts::TAU / n as f64;
-        let parts: Vec<GridSummary> =
-            (0..n.div_ceil(CHUNK)).map(|k| self.chunk(k * CHUNK, ((k + 1) * CHUNK).min(n), dt)).collect();
+        let parts: Vec<GridSummary> = (0..n.div_ceil(CHUNK))
+            .map(|k| self.chunk(k * CHUNK, ((k + 1) * CHUNK).min(n), dt))
+            .collect();
         combine(&parts)
     }
 }
 
 fn combine(parts: &[GridSummary]) -> GridSummary {
-    parts.iter().fold(GridSummary { count_nonneg: 0, sum_sqrt: 0.0 }, |acc, p| GridSummary {
-        count_nonneg: acc.count_nonneg + p.count_nonneg,
-        sum_sqrt: acc.sum_sqrt + p.sum_sqrt,
-    })
+    parts.iter().fold(
+        GridSummary {
+            count_nonneg: 0,
+            sum_sqrt: 0.0,
+        },
+        |acc, p| GridSummary {
+            count_nonneg: acc.count_nonneg + p.count_nonneg,
+            sum_sqrt: acc.sum_sqrt + p.sum_sqrt,
+        },
+    )
 }
 
 /// The baseline: a plain per-sample evaluation of the derived formulas
@@ -121,7 +131,10 @@ pub fn sweep_direct(cs: &CylinderSphere<f64>, n: usize) -> GridSummary {
                     sum += d.sqrt();
                 }
             }
-            GridSummary { count_nonneg: count, sum_sqrt: sum }
+            GridSummary {
+                count_nonneg: count,
+                sum_sqrt: sum,
+            }
         })
         .collect();
     combine(&parts)
@@ -138,8 +151,14 @@ mod tests {
             a: 1.0 / 3.0,
             b: -2.0 / 7.0,
             r: 5.0,
-            beta: Angle { cos: 3.0 / 5.0, sin: 4.0 / 5.0 },
-            gamma: Angle { cos: 5.0 / 13.0, sin: -12.0 / 13.0 },
+            beta: Angle {
+                cos: 3.0 / 5.0,
+                sin: 4.0 / 5.0,
+            },
+            gamma: Angle {
+                cos: 5.0 / 13.0,
+                sin: -12.0 / 13.0,
+            },
             center: Vec3::new(1.0, 2.0, 4.0),
             radius: 5.0,
         }

@@ -316,8 +316,8 @@ fn eq11() -> Result<Outcome, String> {
 
 use exactcheck_core::cylinder_sphere::{unit_circle_point, Contact, TrigCoefficients};
 use exactcheck_exact::cylinder_sphere::{analyze, Analysis};
-use exactcheck_float::sampler::DiscSampler;
 use exactcheck_float::rational_to_f64;
+use exactcheck_float::sampler::DiscSampler;
 
 /// The numeric examples and the sampling claim.
 pub fn example_claims() -> Vec<Claim> {
@@ -333,27 +333,42 @@ fn q(n: i64, d: i64) -> Rational {
     Rational::new(n, d).unwrap_or(Rational::ZERO)
 }
 
-fn example(center: (i64, i64, i64), radius: i64, beta: Angle<Rational>, gamma: Angle<Rational>) -> CylinderSphere<Rational> {
+fn example(
+    center: (i64, i64, i64),
+    radius: i64,
+    beta: Angle<Rational>,
+    gamma: Angle<Rational>,
+) -> CylinderSphere<Rational> {
     CylinderSphere {
         a: Rational::ZERO,
         b: Rational::ZERO,
         r: Rational::from_integer(5),
         beta,
         gamma,
-        center: Vec3::new(Rational::from_integer(center.0), Rational::from_integer(center.1), Rational::from_integer(center.2)),
+        center: Vec3::new(
+            Rational::from_integer(center.0),
+            Rational::from_integer(center.1),
+            Rational::from_integer(center.2),
+        ),
         radius: Rational::from_integer(radius),
     }
 }
 
 fn zero_angle() -> Angle<Rational> {
-    Angle { cos: Rational::ONE, sin: Rational::ZERO }
+    Angle {
+        cos: Rational::ONE,
+        sin: Rational::ZERO,
+    }
 }
 
 /// The f64 sampler of an exact configuration (coefficients rounded once).
 fn sampler(cs: &CylinderSphere<Rational>) -> DiscSampler {
     let c = cs.trig_coefficients();
     let f = |x: &Rational| rational_to_f64(&x.to_big_rational());
-    DiscSampler::from_coefficients(&TrigCoefficients { a: c.a.each_ref().map(f), b: c.b.each_ref().map(f) })
+    DiscSampler::from_coefficients(&TrigCoefficients {
+        a: c.a.each_ref().map(f),
+        b: c.b.each_ref().map(f),
+    })
 }
 
 /// The sign of the discriminant at `t = k * step` degrees, k = 0 .. 360/step, in f64 as the
@@ -361,7 +376,9 @@ fn sampler(cs: &CylinderSphere<Rational>) -> DiscSampler {
 fn sampled(cs: &CylinderSphere<Rational>, step_degrees: u32) -> (usize, usize) {
     let s = sampler(cs);
     let n = (360 / step_degrees) as usize;
-    let real = (0..n).filter(|k| s.discriminant((*k as f64 * step_degrees as f64).to_radians()) >= 0.0).count();
+    let real = (0..n)
+        .filter(|k| s.discriminant((*k as f64 * step_degrees as f64).to_radians()) >= 0.0)
+        .count();
     (real, n)
 }
 
@@ -374,12 +391,20 @@ fn describe(a: &Analysis) -> String {
             None => format!("~{:.6}", r.to_f64()),
         },
     };
-    let set: Vec<String> = a.nonnegative.iter().map(|i| format!("[{}, {}]", bound(&i.lo), bound(&i.hi))).collect();
+    let set: Vec<String> = a
+        .nonnegative
+        .iter()
+        .map(|i| format!("[{}, {}]", bound(&i.lo), bound(&i.hi)))
+        .collect();
     format!(
         "exact: {:?}, {} component(s), discriminant >= 0 for tau in {}, at t = pi {:?}",
         a.contact,
         a.components,
-        if set.is_empty() { "no interval".into() } else { set.join(" u ") },
+        if set.is_empty() {
+            "no interval".into()
+        } else {
+            set.join(" u ")
+        },
         a.sign_at_pi
     )
 }
@@ -402,7 +427,11 @@ fn example1() -> Result<Outcome, String> {
     let (real, n) = sampled(&cs, 10);
     let all_real = a.contact == Contact::Crossing && covers_everything(&a);
     let a_zero = coeffs.a.iter().all(Ring::is_zero);
-    let verdict = if all_real && a_zero && real == n { Verdict::Holds } else { Verdict::Fails };
+    let verdict = if all_real && a_zero && real == n {
+        Verdict::Holds
+    } else {
+        Verdict::Fails
+    };
     Ok(Outcome {
         verdict,
         method: EX_METHOD.into(),
@@ -444,20 +473,34 @@ fn example2() -> Result<Outcome, String> {
     let cs = example((1, 2, 4), 5, beta, gamma);
     let a = analyze(&cs);
     let some_not_all = a.contact == Contact::Crossing
-        && !(a.nonnegative.len() == 1 && a.nonnegative[0].to_string().contains("-inf") && a.nonnegative[0].to_string().contains("+inf"));
+        && !(a.nonnegative.len() == 1
+            && a.nonnegative[0].to_string().contains("-inf")
+            && a.nonnegative[0].to_string().contains("+inf"));
     // The printed configuration in f64 radians.
     let fcs = CylinderSphere {
         a: 0.0,
         b: 0.0,
         r: 5.0,
-        beta: exactcheck_core::cylinder_sphere::Angle { cos: 1f64.cos(), sin: 1f64.sin() },
-        gamma: exactcheck_core::cylinder_sphere::Angle { cos: (-1f64).cos(), sin: (-1f64).sin() },
+        beta: exactcheck_core::cylinder_sphere::Angle {
+            cos: 1f64.cos(),
+            sin: 1f64.sin(),
+        },
+        gamma: exactcheck_core::cylinder_sphere::Angle {
+            cos: (-1f64).cos(),
+            sin: (-1f64).sin(),
+        },
         center: Vec3::new(1.0, 2.0, 4.0),
         radius: 5.0,
     };
     let s = DiscSampler::new(&fcs);
-    let real = (0..36).filter(|k| s.discriminant((*k as f64 * 10.0).to_radians()) >= 0.0).count();
-    let verdict = if some_not_all && real > 0 && real < 36 && a.components >= 1 { Verdict::Holds } else { Verdict::Fails };
+    let real = (0..36)
+        .filter(|k| s.discriminant((*k as f64 * 10.0).to_radians()) >= 0.0)
+        .count();
+    let verdict = if some_not_all && real > 0 && real < 36 && a.components >= 1 {
+        Verdict::Holds
+    } else {
+        Verdict::Fails
+    };
     Ok(Outcome {
         verdict,
         method: EX_METHOD.into(),
@@ -473,7 +516,8 @@ fn example3() -> Result<Outcome, String> {
     let a = analyze(&cs);
     let by_distance = cs.contact_by_distance();
     let (real, n) = sampled(&cs, 10);
-    let verdict = if a.contact == Contact::Disjoint && by_distance == Contact::Disjoint && real == 0 {
+    let verdict = if a.contact == Contact::Disjoint && by_distance == Contact::Disjoint && real == 0
+    {
         Verdict::Holds
     } else {
         Verdict::Fails
@@ -489,7 +533,11 @@ fn example3() -> Result<Outcome, String> {
 /// 5 and a sphere whose centre lies at distance `5 + R - eps` from the axis in the direction of
 /// the rational angle with `tau = tau0`, so it crosses the cylinder in a small loop around that
 /// angle.
-pub fn sampling_config(tau0: &Rational, radius: &Rational, eps: &Rational) -> CylinderSphere<Rational> {
+pub fn sampling_config(
+    tau0: &Rational,
+    radius: &Rational,
+    eps: &Rational,
+) -> CylinderSphere<Rational> {
     let dir = unit_circle_point(tau0).unwrap_or_else(|_| zero_angle());
     let delta = Rational::from_integer(5) + radius - eps;
     CylinderSphere {
@@ -498,7 +546,11 @@ pub fn sampling_config(tau0: &Rational, radius: &Rational, eps: &Rational) -> Cy
         r: Rational::from_integer(5),
         beta: zero_angle(),
         gamma: zero_angle(),
-        center: Vec3::new(dir.cos * &delta, dir.sin * &delta, Rational::from_integer(3)),
+        center: Vec3::new(
+            dir.cos * &delta,
+            dir.sin * &delta,
+            Rational::from_integer(3),
+        ),
         radius: radius.clone(),
     }
 }

@@ -1,0 +1,276 @@
+//! End-to-end tests of `exactcheck plot`: the SVG figures of Spaeth's examples and of problem
+//! files, and the one-line errors (exit status 2).
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+/// A fresh directory under the system temp dir, removed when dropped.
+struct TempDir(PathBuf);
+
+impl TempDir {
+    fn new(tag: &str) -> TempDir {
+        static COUNTER: AtomicUsize = AtomicUsize::new(0);
+        let nanos = std::time::SystemTime::now()
+            .duration_since(std::time::UNIX_EPOCH)
+            .map_or(0, |d| d.as_nanos());
+        let dir = std::env::temp_dir().join(format!(
+            "exactcheck-plot-{tag}-{}-{nanos}-{}",
+            std::process::id(),
+            COUNTER.fetch_add(1, Ordering::Relaxed)
+        ));
+        std::fs::create_dir_all(&dir).expect("create temp dir");
+        TempDir(dir)
+    }
+
+    fn path(&self, name: &str) -> PathBuf {
+        self.0.join(name)
+    }
+}
+
+impl Drop for TempDir {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+fn exactcheck(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+        .args(args)
+        .output()
+        .expect("run exactcheck")
+}
+
+fn plot(args: &[&str], out: &Path) -> String {
+    let mut all: Vec<&str> = vec!["plot"];
+    all.extend_from_slice(args);
+    let out_str = out.to_str().expect("utf-8 temp path");
+    all.extend_from_slice(&["-o", out_str]);
+    let o = exactcheck(&all);
+    assert!(
+        o.status.success(),
+        "{all:?}: {}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(stdout.lines().count(), 1, "one line: {stdout}");
+    assert!(stdout.starts_with("wrote "), "{stdout}");
+    std::fs::read_to_string(out).expect("the SVG was written")
+}
+
+/// Well-formed enough: starts with `<svg`, one `<svg` and one `</svg>` at the end, and every
+/// element that is opened is closed (a simple tag-stack check; no comments or CDATA are written).
+fn check_svg(svg: &str) {
+    assert!(svg.starts_with("<svg"), "{}", &svg[..svg.len().min(80)]);
+    assert_eq!(svg.matches("<svg").count(), 1);
+    assert_eq!(svg.matches("</svg>").count(), 1);
+    assert!(svg.trim_end().ends_with("</svg>"));
+    assert!(svg.contains("viewBox=\"0 0 "));
+    let mut stack: Vec<String> = Vec::new();
+    let mut rest = svg;
+    while let Some(i) = rest.find('<') {
+        let after = &rest[i + 1..];
+        let end = after.find('>').expect("unterminated tag");
+        let tag = &after[..end];
+        // Attribute values are escaped: no raw '<' inside a tag.
+        assert!(!tag.contains('<'), "raw < inside a tag: {tag}");
+        if let Some(name) = tag.strip_prefix('/') {
+            assert_eq!(
+                stack.pop().as_deref(),
+                Some(name.trim()),
+                "mismatched </{name}>"
+            );
+        } else if !tag.ends_with('/') {
+            let name = tag.split_whitespace().next().unwrap_or_default();
+            stack.push(name.to_string());
+        }
+        rest = &after[end + 1..];
+    }
+    assert!(stack.is_empty(), "unclosed: {stack:?}");
+    // Text is escaped: a bare '&' is always an entity.
+    for (i, _) in svg.match_indices('&') {
+        let ent = &svg[i..svg.len().min(i + 7)];
+        assert!(
+            ["&amp;", "&lt;", "&gt;", "&quot;", "&apos;"]
+                .iter()
+                .any(|e| ent.starts_with(e)),
+            "bare & at {i}: {ent}"
+        );
+    }
+}
+
+/// The polylines of the intersection curve (class `curve ...`) with a non-empty point list.
+fn curve_polylines(svg: &str) -> usize {
+    svg.match_indices("<polyline class=\"curve")
+        .filter(|(i, _)| {
+            let tag = &svg[*i..*i + svg[*i..].find('>').unwrap_or(0)];
+            tag.split("points=\"")
+                .nth(1)
+                .is_some_and(|p| p.split('"').next().is_some_and(|p| p.contains(',')))
+        })
+        .count()
+}
+
+#[test]
+fn spaeth_examples_in_both_views() {
+    let dir = TempDir::new("examples");
+    for n in ["1", "2", "3"] {
+        for view in ["tu", "3d"] {
+            let out = dir.path(&format!("example{n}_{view}.svg"));
+            let svg = plot(&["spaeth", "--example", n, "--view", view], &out);
+            check_svg(&svg);
+            assert!(svg.contains(&format!("Spaeth Example {n}")));
+            let curves = curve_polylines(&svg);
+            if n == "3" {
+                assert_eq!(curves, 0, "example 3 has no curve ({view})");
+            } else {
+                assert!(
+                    curves >= 2,
+                    "example {n} ({view}): {curves} curve polylines"
+                );
+            }
+            assert!(svg.contains("Legend"));
+        }
+    }
+}
+
+#[test]
+fn tu_diagram_details() {
+    let dir = TempDir::new("tu");
+    // Example 1: two branches over the whole circle, every 10-degree sample real (37 with 360).
+    let e1 = plot(&["spaeth", "--example", "1"], &dir.path("e1.svg"));
+    assert_eq!(curve_polylines(&e1), 2);
+    assert_eq!(e1.matches("class=\"dot\"").count(), 2 * 37 + 1); // + the legend's dot
+    assert!(!e1.contains("class=\"hollow\""));
+    assert!(e1.contains("real for every t"));
+    assert!(e1.contains("Fig. 2"));
+    // Example 2: one real t-interval, its two exact ends marked, the rational rotations stated.
+    let e2 = plot(&["spaeth", "--example", "2"], &dir.path("e2.svg"));
+    assert!(e2.contains("Fig. 3"));
+    assert!(e2.contains("rational rotations"));
+    assert_eq!(e2.matches("class=\"end\"").count(), 2 + 1); // two ends + the legend
+    assert!(e2.contains("class=\"hollow\""));
+    // Example 3: only hollow samples.
+    let e3 = plot(&["spaeth", "--example", "3"], &dir.path("e3.svg"));
+    assert!(!e3.contains("class=\"dot\""));
+    assert_eq!(e3.matches("class=\"hollow\"").count(), 37 + 1);
+}
+
+#[test]
+fn problem_files() {
+    let dir = TempDir::new("files");
+    let problem = dir.path("touch & go.json");
+    // Touching from outside at t = 0 (Example-1 cylinder, sphere centre (8,0,3), R = 3).
+    std::fs::write(
+        &problem,
+        r#"{"kind":"cylinder_sphere","cylinder":{"axis_point":[0,0],"radius":5,"beta":{"cos":1,"sin":0},"gamma":{"cos":1,"sin":0}},"sphere":{"center":[8,0,3],"radius":3}}"#,
+    )
+    .unwrap();
+    let p = problem.to_str().unwrap();
+    let svg = plot(&[p], &dir.path("touch.svg"));
+    check_svg(&svg);
+    assert!(svg.contains("touch &amp; go.json"), "the name is escaped");
+    assert!(svg.contains("class=\"tangent\""));
+    assert!(svg.contains("touching at t = 0°"));
+    check_svg(&plot(&[p, "--view", "3d"], &dir.path("touch3d.svg")));
+    // Radians and float literals: drawn in f64, the exact line says why there is none or how
+    // the radians were taken.
+    let radians = dir.path("radians.json");
+    std::fs::write(
+        &radians,
+        r#"{"kind":"cylinder_sphere","cylinder":{"axis_point":[0,0],"radius":5,"beta":{"radians":1},"gamma":{"radians":-1}},"sphere":{"center":[1,2,4],"radius":5}}"#,
+    )
+    .unwrap();
+    let svg = plot(&[radians.to_str().unwrap()], &dir.path("radians.svg"));
+    assert!(svg.contains("radians taken as rational rotations"));
+    assert!(curve_polylines(&svg) >= 2);
+    let floats = dir.path("floats.json");
+    std::fs::write(
+        &floats,
+        r#"{"kind":"cylinder_sphere","cylinder":{"axis_point":[0.0,0.0],"radius":5.0,"beta":{"radians":1.0},"gamma":{"radians":-1.0}},"sphere":{"center":[1.0,2.0,4.0],"radius":5.0}}"#,
+    )
+    .unwrap();
+    let svg = plot(&[floats.to_str().unwrap()], &dir.path("floats.svg"));
+    check_svg(&svg);
+    assert!(svg.contains("no exact analysis"));
+    assert!(curve_polylines(&svg) >= 2);
+}
+
+fn assert_error(args: &[&str], needle: &str) {
+    let o = exactcheck(args);
+    assert_eq!(o.status.code(), Some(2), "{args:?}");
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains(needle), "{args:?}: {err}");
+    assert!(o.stdout.is_empty(), "{args:?}");
+}
+
+#[test]
+fn errors_have_status_2() {
+    let dir = TempDir::new("errors");
+    let out = dir.path("x.svg");
+    let out = out.to_str().unwrap();
+    assert_error(
+        &["plot", "spaeth", "--example", "4", "-o", out],
+        "unknown example 4",
+    );
+    assert_error(&["plot", "spaeth", "-o", out], "--example");
+    assert_error(&["plot", "spaeth", "--example", "1"], "--output");
+    assert_error(
+        &[
+            "plot",
+            "spaeth",
+            "--example",
+            "1",
+            "--view",
+            "side",
+            "-o",
+            out,
+        ],
+        "side",
+    );
+    let missing = dir.path("missing.json");
+    assert_error(
+        &["plot", missing.to_str().unwrap(), "-o", out],
+        "cannot read",
+    );
+    let other = dir.path("other.json");
+    std::fs::write(
+        &other,
+        r#"{"kind":"sphere_interpolation","points":[],"params":[]}"#,
+    )
+    .unwrap();
+    assert_error(
+        &["plot", other.to_str().unwrap(), "-o", out],
+        "cylinder_sphere",
+    );
+    let broken = dir.path("broken.json");
+    std::fs::write(&broken, "{not json").unwrap();
+    assert_error(
+        &["plot", broken.to_str().unwrap(), "-o", out],
+        "malformed JSON",
+    );
+    let bad = dir.path("bad.json");
+    std::fs::write(
+        &bad,
+        r#"{"kind":"cylinder_sphere","cylinder":{"axis_point":[0,0],"radius":5,"beta":{"cos":1,"sin":0},"gamma":{"cos":1,"sin":0}},"sphere":{"center":[1,0],"radius":7}}"#,
+    )
+    .unwrap();
+    assert_error(&["plot", bad.to_str().unwrap(), "-o", out], "sphere.center");
+    assert_error(
+        &["plot", other.to_str().unwrap(), "--example", "1", "-o", out],
+        "--example",
+    );
+    let unwritable = dir.path("no/such/dir/x.svg");
+    assert_error(
+        &[
+            "plot",
+            "spaeth",
+            "--example",
+            "1",
+            "-o",
+            unwritable.to_str().unwrap(),
+        ],
+        "cannot write",
+    );
+    assert!(!Path::new(out).exists(), "nothing written on errors");
+}
