@@ -66,19 +66,7 @@ impl DiscSampler {
     }
 
     fn chunk(&self, lo: usize, hi: usize, dt: f64) -> GridSummary {
-        let mut count = 0;
-        let mut sum = 0.0;
-        for i in lo..hi {
-            let d = self.discriminant(i as f64 * dt);
-            if d >= 0.0 {
-                count += 1;
-                sum += d.sqrt();
-            }
-        }
-        GridSummary {
-            count_nonneg: count,
-            sum_sqrt: sum,
-        }
+        chunk_with(lo, hi, dt, |t| self.discriminant(t))
     }
 
     /// Sweeps the grid `t_i = i 2 pi / n`, `i = 0..n`, on all cores.
@@ -101,6 +89,23 @@ impl DiscSampler {
     }
 }
 
+/// Counts and sums over the samples `lo..hi` of the grid, for any discriminant function.
+fn chunk_with(lo: usize, hi: usize, dt: f64, disc: impl Fn(f64) -> f64) -> GridSummary {
+    let mut count = 0;
+    let mut sum = 0.0;
+    for i in lo..hi {
+        let d = disc(i as f64 * dt);
+        if d >= 0.0 {
+            count += 1;
+            sum += d.sqrt();
+        }
+    }
+    GridSummary {
+        count_nonneg: count,
+        sum_sqrt: sum,
+    }
+}
+
 fn combine(parts: &[GridSummary]) -> GridSummary {
     parts.iter().fold(
         GridSummary {
@@ -118,24 +123,13 @@ fn combine(parts: &[GridSummary]) -> GridSummary {
 /// ([`CylinderSphere::coefficients_at`]) with `sin_cos`, one thread, no precomputed coefficients.
 pub fn sweep_direct(cs: &CylinderSphere<f64>, n: usize) -> GridSummary {
     let dt = std::f64::consts::TAU / n as f64;
+    let disc = |t: f64| {
+        let (s, c) = t.sin_cos();
+        let (a, b) = cs.coefficients_at(&c, &s);
+        a * a - b
+    };
     let parts: Vec<GridSummary> = (0..n.div_ceil(CHUNK))
-        .map(|k| {
-            let mut count = 0;
-            let mut sum = 0.0;
-            for i in k * CHUNK..((k + 1) * CHUNK).min(n) {
-                let (s, c) = (i as f64 * dt).sin_cos();
-                let (a, b) = cs.coefficients_at(&c, &s);
-                let d = a * a - b;
-                if d >= 0.0 {
-                    count += 1;
-                    sum += d.sqrt();
-                }
-            }
-            GridSummary {
-                count_nonneg: count,
-                sum_sqrt: sum,
-            }
-        })
+        .map(|k| chunk_with(k * CHUNK, ((k + 1) * CHUNK).min(n), dt, disc))
         .collect();
     combine(&parts)
 }

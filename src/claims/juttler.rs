@@ -38,17 +38,6 @@ const TAU_PRINTED: [&str; 4] = ["q0^2", "q0*q1", "q0*q2", "q1*q2"];
 /// (17) as printed.
 const ALPHA_PRINTED: [&str; 4] = ["q0*q3", "q1*q3", "q0*q2", "q0*q3"];
 
-macro_rules! claim {
-    ($id:literal, $expected:ident, $statement:literal, $check:ident) => {
-        Claim {
-            id: $id,
-            statement: $statement,
-            expected: Verdict::$expected,
-            check: $check,
-        }
-    };
-}
-
 /// The `juttler.*` claims.
 pub fn claims() -> Vec<Claim> {
     vec![

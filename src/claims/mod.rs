@@ -9,6 +9,18 @@
 //!
 //! One module per source document.
 
+/// A catalogue entry: `claim!(id, ExpectedVerdict, "statement as printed", check_fn)`.
+macro_rules! claim {
+    ($id:literal, $expected:ident, $statement:literal, $check:ident) => {
+        Claim {
+            id: $id,
+            statement: $statement,
+            expected: Verdict::$expected,
+            check: $check,
+        }
+    };
+}
+
 pub mod engine;
 pub mod juttler;
 pub mod juttler_geometry;

@@ -43,17 +43,6 @@ const EQ10: &str = "(cb*(a + r*ct) - d)^2 + (cg*(b + r*st) - sg*sb*(a + r*ct) - 
 /// (10) with the missing `- R^2`.
 const EQ10_CORRECTED: &str = "(cb*(a + r*ct) - d)^2 + (cg*(b + r*st) - sg*sb*(a + r*ct) - e)^2 + (sg*(b + r*st) + cg*sb*(a + r*ct) + f)^2 - R^2";
 
-macro_rules! claim {
-    ($id:literal, $expected:ident, $statement:literal, $check:ident) => {
-        Claim {
-            id: $id,
-            statement: $statement,
-            expected: Verdict::$expected,
-            check: $check,
-        }
-    };
-}
-
 /// The symbolic `spaeth.*` claims.
 pub fn claims() -> Vec<Claim> {
     vec![
