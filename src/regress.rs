@@ -146,9 +146,88 @@ pub fn run(args: &RegressArgs) -> Result<(), Error> {
     };
     println!("{report}");
     if args.kernel == Kernel::CylinderSphere {
+        println!("{}", root_errors(&gen, args.samples, args.seed).text());
         println!("{}", sign_errors_near_tangency(args.samples, args.seed));
     }
     Ok(())
+}
+
+/// Errors of the f64 roots `u = -A +- sqrt(A^2 - B)` against the exact roots.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct RootErrors {
+    /// Samples where both the f64 and the exact discriminant are >= 0.
+    pub compared: usize,
+    /// Largest error in ulps over both roots.
+    pub max_ulps: f64,
+    /// Median (over samples) of the larger of the two roots' errors.
+    pub median_ulps: f64,
+    /// The inputs of the worst sample.
+    pub worst: Vec<f64>,
+}
+
+impl RootErrors {
+    fn text(&self) -> String {
+        format!(
+            "roots u = -A +- sqrt(A^2 - B), f64 vs exact (sqrt to 256 bits) on {} samples with real roots:\n  max {:.3} ulps, median {:.3} ulps; worst inputs {:?}",
+            self.compared, self.max_ulps, self.median_ulps, self.worst
+        )
+    }
+}
+
+/// `sqrt(q)` for a rational `q >= 0` to 256 fractional bits (an error far below an f64 ulp of
+/// the roots): `floor(sqrt(n d 2^512)) / (d 2^256)`.
+fn sqrt_256(q: &num_rational::BigRational) -> num_rational::BigRational {
+    use num_bigint::BigInt;
+    let scale = BigInt::from(1) << 512u32;
+    let root = (q.numer() * q.denom() * scale).sqrt();
+    num_rational::BigRational::new(root, q.denom() * (BigInt::from(1) << 256u32))
+}
+
+/// The f64 roots of the cylinder/sphere quadratic against the exact roots, on the samples of
+/// the regression's generator (same seed, same inputs).
+pub fn root_errors(gen: &impl InputGen, samples: usize, seed: u64) -> RootErrors {
+    use num_traits::Signed;
+    let mut per_sample = Vec::new();
+    let mut out = RootErrors::default();
+    for i in 0..samples {
+        let inputs = exactcheck_float::sample_inputs(gen, seed, i);
+        let Ok(f) = CylinderSphereKernel.eval::<f64>(&inputs) else {
+            continue;
+        };
+        let exact_in: Option<Vec<Rational>> = inputs
+            .iter()
+            .map(|x| Rational::from_f64_exact(*x))
+            .collect();
+        let Some(exact_in) = exact_in else { continue };
+        let Ok(e) = CylinderSphereKernel.eval::<Rational>(&exact_in) else {
+            continue;
+        };
+        let (a_e, d_e) = (e[0].to_big_rational(), e[2].to_big_rational());
+        if f[2] < 0.0 || d_e.is_negative() {
+            continue;
+        }
+        let root = sqrt_256(&d_e);
+        let sf = f[2].sqrt();
+        let mut worst_here: f64 = 0.0;
+        for sign in [-1.0, 1.0] {
+            let u_f = -f[0] + sign * sf;
+            let u_e = if sign < 0.0 {
+                -&a_e - &root
+            } else {
+                -&a_e + &root
+            };
+            worst_here = worst_here.max(exactcheck_float::ulps_error(u_f, &u_e));
+        }
+        if worst_here > out.max_ulps {
+            out.max_ulps = worst_here;
+            out.worst = inputs.clone();
+        }
+        per_sample.push(worst_here);
+        out.compared += 1;
+    }
+    per_sample.sort_by(f64::total_cmp);
+    out.median_ulps = per_sample.get(per_sample.len() / 2).copied().unwrap_or(0.0);
+    out
 }
 
 /// Counts of the sign experiment near tangency.
@@ -267,6 +346,32 @@ fn sign_errors_near_tangency(samples: usize, seed: u64) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn root_errors_are_measured() {
+        let gen = generator(Kernel::CylinderSphere).unwrap();
+        let r = root_errors(&gen, 500, 3);
+        assert!(r.compared > 20, "{r:?}");
+        assert!(r.max_ulps >= r.median_ulps && r.median_ulps >= 0.0);
+        // Roots of well-separated quadratics are accurate to a few ulps in most samples.
+        assert!(r.median_ulps < 16.0, "{r:?}");
+        assert_eq!(r, root_errors(&gen, 500, 3));
+    }
+
+    #[test]
+    fn sqrt_to_256_bits() {
+        let two = num_rational::BigRational::from_integer(2.into());
+        let s = sqrt_256(&two);
+        let err = (&s * &s - &two).abs();
+        assert!(
+            err < num_rational::BigRational::new(1.into(), num_bigint::BigInt::from(1) << 250u32)
+        );
+        let nine_quarters = num_rational::BigRational::new(9.into(), 4.into());
+        assert_eq!(
+            sqrt_256(&nine_quarters),
+            num_rational::BigRational::new(3.into(), 2.into())
+        );
+    }
 
     #[test]
     fn sign_errors_near_tangency_are_found_deterministically() {
