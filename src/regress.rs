@@ -360,6 +360,7 @@ mod tests {
 
     #[test]
     fn sqrt_to_256_bits() {
+        use num_traits::Signed;
         let two = num_rational::BigRational::from_integer(2.into());
         let s = sqrt_256(&two);
         let err = (&s * &s - &two).abs();
