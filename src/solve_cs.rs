@@ -266,45 +266,53 @@ fn exact(obj: &Map<String, Value>) -> Result<Value, Error> {
         };
         let (a, b) = cs.coefficients_at(&angle.cos, &angle.sin);
         let disc = a.square() - &b;
-        let Some(root) = Radical::sqrt_rational(&disc) else {
-            // The radicand cannot be certified square-free: compute in Q(w), w^2 = disc.
-            let (pts, ok) = quadratic_points(&cs, &angle, &a, &disc);
-            all_on_both &= ok;
-            samples.push(json!({
-                "tau": tau.to_string(),
-                "cos": out(&angle.cos),
-                "sin": out(&angle.sin),
-                "t_degrees": 2.0 * exactcheck_float::rational_to_f64(&tau.to_big_rational()).atan().to_degrees(),
-                "u": [format!("{} - sqrt({disc})", a.neg_ref()), format!("{} + sqrt({disc})", a.neg_ref())],
-                "points": pts.iter().map(|p| json!(p.0)).collect::<Vec<_>>(),
-            }));
-            points.extend(pts.iter().map(|p| json!({"exact": p.0, "approx": p.1})));
-            continue;
-        };
-        let (c, s) = (lift(&angle.cos), lift(&angle.sin));
-        let minus_a = lift(&a).neg_ref();
-        let us: Vec<Radical> = if disc.is_zero() {
-            vec![minus_a]
-        } else {
-            vec![minus_a.sub_ref(&root), minus_a.add_ref(&root)]
-        };
-        let mut pts = Vec::new();
-        for u in &us {
-            let x = rcs.point(&c, &s, u);
-            all_on_both &= on_both(&x);
-            pts.push(x);
-        }
+        // u and the points: in the radical field, or in Q(w), w^2 = disc, when the radicand
+        // cannot be certified square-free.
+        let (us, exact_pts, approx_pts): (Vec<Value>, Vec<Value>, Vec<Value>) =
+            match Radical::sqrt_rational(&disc) {
+                None => {
+                    let (pts, ok) = quadratic_points(&cs, &angle, &a, &disc);
+                    all_on_both &= ok;
+                    let minus_a = a.neg_ref();
+                    (
+                        vec![
+                            json!(format!("{minus_a} - sqrt({disc})")),
+                            json!(format!("{minus_a} + sqrt({disc})")),
+                        ],
+                        pts.iter().map(|p| json!(p.0)).collect(),
+                        pts.iter().map(|p| json!(p.1)).collect(),
+                    )
+                }
+                Some(root) => {
+                    let (c, s) = (lift(&angle.cos), lift(&angle.sin));
+                    let minus_a = lift(&a).neg_ref();
+                    let us: Vec<Radical> = if disc.is_zero() {
+                        vec![minus_a]
+                    } else {
+                        vec![minus_a.sub_ref(&root), minus_a.add_ref(&root)]
+                    };
+                    let pts: Vec<Vec3<Radical>> = us.iter().map(|u| rcs.point(&c, &s, u)).collect();
+                    all_on_both &= pts.iter().all(&on_both);
+                    (
+                        us.iter().map(out).collect(),
+                        pts.iter().map(point_json).collect(),
+                        pts.iter().map(approx_json).collect(),
+                    )
+                }
+            };
         samples.push(json!({
             "tau": tau.to_string(),
             "cos": out(&angle.cos),
             "sin": out(&angle.sin),
             "t_degrees": 2.0 * exactcheck_float::rational_to_f64(&tau.to_big_rational()).atan().to_degrees(),
-            "u": us.iter().map(out).collect::<Vec<_>>(),
-            "points": pts.iter().map(point_json).collect::<Vec<_>>(),
+            "u": us,
+            "points": exact_pts.clone(),
         }));
         points.extend(
-            pts.iter()
-                .map(|x| json!({"exact": point_json(x), "approx": approx_json(x)})),
+            exact_pts
+                .into_iter()
+                .zip(approx_pts)
+                .map(|(e, a)| json!({"exact": e, "approx": a})),
         );
     }
     // Tangency points.

@@ -7,7 +7,7 @@
 //! `disc = A^2 - B` ([`exactcheck_core::cylinder_sphere`]).
 
 use exactcheck_core::cylinder_sphere::{unit_circle_point, Angle, CylinderSphere};
-use exactcheck_core::{Field, Ring, Sign, Vec3};
+use exactcheck_core::{pairwise_sum, Field, Sign, Vec3};
 use exactcheck_exact::RationalScalar;
 use num_bigint::BigInt;
 use num_integer::Integer;
@@ -118,22 +118,6 @@ pub fn run<T: Field + exactcheck_core::OrderedField>(n: usize, mode: Mode) -> Ou
         sum,
         seconds,
     }
-}
-
-/// Pairwise (balanced) summation, as the anchors' `tree` mode does.
-pub fn pairwise_sum<T: Ring>(mut values: Vec<T>) -> T {
-    while values.len() > 1 {
-        let mut next = Vec::with_capacity(values.len().div_ceil(2));
-        let mut it = values.into_iter();
-        while let Some(x) = it.next() {
-            next.push(match it.next() {
-                Some(y) => x + y,
-                None => x,
-            });
-        }
-        values = next;
-    }
-    values.pop().unwrap_or_else(T::zero)
 }
 
 /// The check values of an exact sum, as the anchor scripts print them.

@@ -19,5 +19,5 @@ pub mod vector;
 
 pub use bernstein::{Bernstein, ShapeError};
 pub use bezier::{BezierCurve, RationalBezierCurve, TensorPatch};
-pub use scalar::{binomial, Field, OrderedField, Ring, Sign, Sqrt, ZeroDivisor};
+pub use scalar::{binomial, pairwise_sum, Field, OrderedField, Ring, Sign, Sqrt, ZeroDivisor};
 pub use vector::{det4, Hom4, Vec3};

@@ -202,6 +202,24 @@ pub fn sum<'a, T: Ring + 'a>(items: impl IntoIterator<Item = &'a T>) -> T {
     acc
 }
 
+/// `sum_i a_i` by pairwise (balanced) summation: the operands of each addition stay of similar
+/// size, which keeps exact sums of many rationals fast (the big gcds then cost about as much as
+/// one at the top level). Zero for an empty list.
+pub fn pairwise_sum<T: Ring>(mut values: Vec<T>) -> T {
+    while values.len() > 1 {
+        let mut next = Vec::with_capacity(values.len().div_ceil(2));
+        let mut it = values.into_iter();
+        while let Some(x) = it.next() {
+            next.push(match it.next() {
+                Some(y) => x + y,
+                None => x,
+            });
+        }
+        values = next;
+    }
+    values.pop().unwrap_or_else(T::zero)
+}
+
 /// The binomial coefficient `C(n, k)` as an integer (0 when `k > n`).
 ///
 /// # Panics

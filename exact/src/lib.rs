@@ -24,5 +24,5 @@ pub mod univariate;
 pub use modp::ModP;
 pub use plain::PlainRational;
 pub use radical::{ComplexRadical, ParseRadicalError, Radical, Radicand};
-pub use rational::{sum_pairwise, ParseRationalError, Rational};
+pub use rational::{ParseRationalError, Rational};
 pub use traits::RationalScalar;

@@ -90,23 +90,11 @@ fn circle_pair<C: Field>(r: &Poly<C>) -> Option<(Var, Var)> {
     }
 }
 
-/// A small deterministic generator (SplitMix64) for the counter-example search.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    /// A small rational `n/d`, `|n| <= 9`, `1 <= d <= 4`.
-    fn small(&mut self) -> Rational {
-        let n = (self.next() % 19) as i64 - 9;
-        let d = (self.next() % 4) as i64 + 1;
-        Rational::new(n, d).unwrap_or(Rational::ZERO)
-    }
+/// A small rational `n/d`, `|n| <= 9`, `1 <= d <= 4`, for the counter-example search.
+fn small_rational(rng: &mut crate::modp::SplitMix64) -> Rational {
+    let n = (rng.next_u64() % 19) as i64 - 9;
+    let d = (rng.next_u64() % 4) as i64 + 1;
+    Rational::new(n, d).unwrap_or(Rational::ZERO)
 }
 
 /// Decides `residual = 0` modulo `relations` (see the module documentation). `nvars` is the
@@ -140,11 +128,11 @@ pub fn decide<C: Field + Coefficient>(
         return Decision::Undecided { normal_form: nf };
     }
     // Search an exact point: circle pairs from rational tau, the rest small rationals.
-    let mut rng = Rng(0x5EED);
+    let mut rng = crate::modp::SplitMix64::new(0x5EED);
     for _ in 0..200 {
-        let mut point: Vec<Rational> = (0..nvars).map(|_| rng.small()).collect();
+        let mut point: Vec<Rational> = (0..nvars).map(|_| small_rational(&mut rng)).collect();
         for &(c, s) in &pairs {
-            let tau = rng.small();
+            let tau = small_rational(&mut rng);
             let t2 = tau.square();
             let den = (Rational::ONE + &t2).recip().unwrap_or(Rational::ONE);
             point[c as usize] = (Rational::ONE - &t2) * &den;

@@ -758,26 +758,6 @@ impl FromStr for Rational {
     }
 }
 
-/// Exact sum of many rationals by pairwise (balanced) summation, which keeps the operands of each
-/// addition of similar size (the big gcds then cost about as much as one at the top level).
-pub fn sum_pairwise(mut values: Vec<Rational>) -> Rational {
-    if values.is_empty() {
-        return Rational::ZERO;
-    }
-    while values.len() > 1 {
-        let mut next = Vec::with_capacity(values.len().div_ceil(2));
-        let mut it = values.into_iter();
-        while let Some(x) = it.next() {
-            match it.next() {
-                Some(y) => next.push(x + &y),
-                None => next.push(x),
-            }
-        }
-        values = next;
-    }
-    values.pop().unwrap_or(Rational::ZERO)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -851,7 +831,10 @@ mod tests {
     #[test]
     fn pairwise_sum() {
         let v: Vec<Rational> = (1..=10).map(|k| q(1, k * (k + 1))).collect();
-        assert_eq!(sum_pairwise(v), q(10, 11));
-        assert_eq!(sum_pairwise(vec![]), Rational::ZERO);
+        assert_eq!(exactcheck_core::pairwise_sum(v), q(10, 11));
+        assert_eq!(
+            exactcheck_core::pairwise_sum(Vec::<Rational>::new()),
+            Rational::ZERO
+        );
     }
 }

@@ -2,10 +2,11 @@
 //! polynomials, and identities decided by the proof engine of `exactcheck-exact`.
 
 use super::{Outcome, Verdict};
-use exactcheck_core::{Field, Hom4};
+use exactcheck_core::{Field, Hom4, Ring};
 use exactcheck_exact::expr::{parse_poly, Coefficient};
 use exactcheck_exact::poly::{Poly, Vars};
 use exactcheck_exact::prove::{decide, Decision};
+use exactcheck_exact::Rational;
 use std::fmt::Display;
 
 /// A polynomial context: named variables and the polynomials of the printed formulas.
@@ -106,5 +107,54 @@ pub fn prove_all<C: Field + Coefficient + Display>(
                 residuals[0].0
             )
         },
+    }
+}
+
+/// The seeded generator of the catalogue's exact random instances: SplitMix64
+/// ([`exactcheck_exact::modp::SplitMix64`]) with helpers for small exact values.
+pub struct Rng(exactcheck_exact::modp::SplitMix64);
+
+impl Rng {
+    /// A generator started from `seed` (same seed, same instances).
+    pub fn new(seed: u64) -> Rng {
+        Rng(exactcheck_exact::modp::SplitMix64::new(seed))
+    }
+    /// The next 64 pseudo-random bits.
+    pub fn next_u64(&mut self) -> u64 {
+        self.0.next_u64()
+    }
+    /// Uniform in `lo..=hi`.
+    pub fn int(&mut self, lo: i64, hi: i64) -> i64 {
+        lo + (self.next_u64() % (hi - lo + 1) as u64) as i64
+    }
+    /// `n / d` with `|n| <= r`, `1 <= d <= den`.
+    pub fn rational(&mut self, r: i64, den: i64) -> Rational {
+        let n = self.int(-r, r);
+        let d = self.int(1, den);
+        Rational::new(n, d).unwrap_or(Rational::ZERO)
+    }
+    /// A non-zero rational as [`Rng::rational`].
+    pub fn nonzero(&mut self, r: i64, den: i64) -> Rational {
+        loop {
+            let q = self.rational(r, den);
+            if !q.is_zero() {
+                return q;
+            }
+        }
+    }
+    /// A homogeneous vector of integers in `-r..=r` (possibly zero).
+    pub fn hom4(&mut self, r: i64) -> Hom4<Rational> {
+        Hom4(core::array::from_fn(|_| {
+            Rational::from_integer(self.int(-r, r))
+        }))
+    }
+    /// A non-zero homogeneous vector of integers in `-r..=r`.
+    pub fn nonzero_hom4(&mut self, r: i64) -> Hom4<Rational> {
+        loop {
+            let h = self.hom4(r);
+            if !h.is_zero() {
+                return h;
+            }
+        }
     }
 }

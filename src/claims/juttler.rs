@@ -4,7 +4,7 @@
 //! `exactcheck_core::quadric` are the independent derivation they are compared against, and the
 //! properties are proved by expanding residuals over polynomial rings.
 
-use super::engine::{prove_all, Symbols};
+use super::engine::{prove_all, Rng, Symbols};
 use super::juttler_geometry::{circle_preimage, line_image, line_preimage, plane_lines, satz7};
 use super::{Claim, Outcome, Verdict};
 use exactcheck_core::quadric::{
@@ -554,37 +554,11 @@ pub(super) fn satz1() -> Result<Outcome, String> {
     Ok(out)
 }
 
-/// A small deterministic generator for exact random instances (SplitMix64).
-pub(super) struct Rng(pub u64);
-
-impl Rng {
-    pub(super) fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    /// An integer in `-k..=k`.
-    pub(super) fn int(&mut self, k: i64) -> i64 {
-        (self.next() % (2 * k as u64 + 1)) as i64 - k
-    }
-    /// A random homogeneous point with integer coordinates in `-k..=k`, not zero.
-    pub(super) fn hom4(&mut self, k: i64) -> Hom4<Rational> {
-        loop {
-            let h = Hom4(std::array::from_fn(|_| Rational::from_integer(self.int(k))));
-            if !h.is_zero() {
-                return h;
-            }
-        }
-    }
-}
-
 /// Interpolation on K is a linear problem (and works): random exact points of K (Lebesgue
 /// images of random integer points) at random distinct parameters.
 pub(super) fn interpolation() -> Result<Outcome, String> {
     use exactcheck_core::sphere_interpolation::interpolate;
-    let mut rng = Rng(0x1A7E);
+    let mut rng = Rng::new(0x1A7E);
     let mut runs = 0;
     let mut table = Vec::new();
     for count in 1..=7usize {
@@ -593,7 +567,7 @@ pub(super) fn interpolation() -> Result<Outcome, String> {
         for _ in 0..4 {
             let points: Vec<Hom4<Rational>> = (0..count)
                 .map(|_| loop {
-                    let k = lebesgue(&rng.hom4(6));
+                    let k = lebesgue(&rng.nonzero_hom4(6));
                     if !k.0[0].is_zero() {
                         break k;
                     }
@@ -601,7 +575,7 @@ pub(super) fn interpolation() -> Result<Outcome, String> {
                 .collect();
             let mut params: Vec<Rational> = Vec::new();
             while params.len() < count {
-                let t = Rational::new(rng.int(50), 50).unwrap_or(Rational::ZERO);
+                let t = Rational::new(rng.int(-50, 50), 50).unwrap_or(Rational::ZERO);
                 if !params.contains(&t) {
                     params.push(t);
                 }
@@ -655,16 +629,16 @@ pub(super) fn interpolation() -> Result<Outcome, String> {
 /// The converses of (7) and (8) on exact points: every random rational point of K (of H) has a
 /// preimage under delta (psi), found on its projecting line (12) (line (18)).
 pub(super) fn converse(which: &str) -> Result<String, String> {
-    let mut rng = Rng(if which == "K" { 0xC0 } else { 0xC1 });
+    let mut rng = Rng::new(if which == "K" { 0xC0 } else { 0xC1 });
     let mut n = 0;
     for _ in 0..200 {
-        let x = rng.hom4(9);
+        let x = rng.nonzero_hom4(9);
         if which == "K" {
             let k = lebesgue(&x);
             let line = exactcheck_core::sphere_interpolation::preimage_line(&k);
             let (l, m) = (
-                Rational::from_integer(rng.int(5)),
-                Rational::from_integer(rng.int(5)),
+                Rational::from_integer(rng.int(-5, 5)),
+                Rational::from_integer(rng.int(-5, 5)),
             );
             let p = line[0].scale(&l).add(&line[1].scale(&m));
             if p.is_zero() || lebesgue(&p).is_zero() {
@@ -685,8 +659,8 @@ pub(super) fn converse(which: &str) -> Result<String, String> {
                 h.0[0].clone(),
             );
             let (l, m) = (
-                Rational::from_integer(rng.int(5)),
-                Rational::from_integer(rng.int(5)),
+                Rational::from_integer(rng.int(-5, 5)),
+                Rational::from_integer(rng.int(-5, 5)),
             );
             let p = alpha_preimage_point(&q, &l, &m);
             if p.is_zero() || psi(&p).is_zero() {

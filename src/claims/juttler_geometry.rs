@@ -6,7 +6,7 @@
 //! rings (via [`prove_all`]), signs of symbolic minors read off their terms, and exact instances
 //! over [`Rational`] drawn by a seeded SplitMix64 (deterministic).
 
-use super::engine::{prove_all, Symbols};
+use super::engine::{prove_all, Rng, Symbols};
 use super::{Outcome, Verdict};
 use exactcheck_core::bernstein::Bernstein;
 use exactcheck_core::linalg::{Inertia, Matrix};
@@ -69,42 +69,6 @@ fn prove(
         Ok(residuals.len())
     } else {
         Err(Stop::Decided(o))
-    }
-}
-
-/// SplitMix64: a small deterministic generator for the exact random instances.
-struct SplitMix64(u64);
-
-impl SplitMix64 {
-    fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    /// Uniform in `lo..=hi`.
-    fn int(&mut self, lo: i64, hi: i64) -> i64 {
-        lo + (self.next_u64() % (hi - lo + 1) as u64) as i64
-    }
-    /// `n / d` with `|n| <= r`, `1 <= d <= den`.
-    fn rational(&mut self, r: i64, den: i64) -> Q {
-        let n = self.int(-r, r);
-        let d = self.int(1, den);
-        Q::new(n, d).unwrap_or(Q::ZERO)
-    }
-    /// A non-zero rational as [`SplitMix64::rational`].
-    fn nonzero(&mut self, r: i64, den: i64) -> Q {
-        loop {
-            let q = self.rational(r, den);
-            if !q.is_zero() {
-                return q;
-            }
-        }
-    }
-    /// A homogeneous vector of integers in `-r..=r`.
-    fn hom4(&mut self, r: i64) -> Hom4<Q> {
-        Hom4(core::array::from_fn(|_| Q::from_integer(self.int(-r, r))))
     }
 }
 
@@ -494,7 +458,7 @@ fn circle_preimage_inner() -> Result<Outcome, Stop> {
     }
 
     // Exact instances: Q(x) = C(theta(x)) / theta(x)_0 polarized in bases where theta(x)_0 != 0.
-    let mut rng = SplitMix64(0x0C12_C1E5);
+    let mut rng = Rng::new(0x0C12_C1E5);
     let basis = [
         unit(0),
         unit(0).add(&unit(1)),
@@ -645,7 +609,7 @@ fn line_preimage_inner() -> Result<Outcome, Stop> {
     let inf_ok = matches!(definite_sign(&sum_minor), Some((Sign::Negative, ref v)) if only_ab(v));
     let symbolic = det_ok && iso_ok && inf_ok;
 
-    let mut rng = SplitMix64(0x0011_004E);
+    let mut rng = Rng::new(0x0011_004E);
     let basis: Vec<Hom4<Q>> = (0..4).map(unit).collect();
     for _ in 0..LINES {
         let (la, lb, lc) = loop {
@@ -816,7 +780,7 @@ fn line_image_inner() -> Result<Outcome, Stop> {
     let in_ideal = prove(&sym, &minors, &[g1.clone(), g2.clone()], METHOD)?;
 
     // Exact instances via lebesgue_curve.
-    let mut rng = SplitMix64(0x0011_1A6E);
+    let mut rng = Rng::new(0x0011_1A6E);
     let mut general = 0;
     let mut skipped = 0;
     while general < IMAGE_LINES {
@@ -1036,7 +1000,7 @@ fn plane_lines_inner() -> Result<Outcome, Stop> {
     }
 
     // Exact instances.
-    let mut rng = SplitMix64(0x0091_A4E5);
+    let mut rng = Rng::new(0x0091_A4E5);
     let mut lines_checked = 0;
     let mut skipped = 0;
     let mut planes_done = 0;
@@ -1088,7 +1052,7 @@ fn plane_lines_inner() -> Result<Outcome, Stop> {
         let mut tries = 0;
         while done < LINES_PER_PLANE && tries < 10 * LINES_PER_PLANE {
             tries += 1;
-            let pick = |rng: &mut SplitMix64| {
+            let pick = |rng: &mut Rng| {
                 let mut v = Hom4::new(Q::ZERO, Q::ZERO, Q::ZERO, Q::ZERO);
                 for basis in &in_plane {
                     v = v.add(&basis.scale(&Q::from_integer(rng.int(-5, 5))));
@@ -1235,7 +1199,7 @@ pub fn satz7() -> Result<Outcome, String> {
 
 fn satz7_inner() -> Result<Outcome, Stop> {
     const METHOD: &str = "exact random biquadratic patches on K (delta-images of bilinear patches)";
-    let mut rng = SplitMix64(0x0005_A727);
+    let mut rng = Rng::new(0x0005_A727);
     let mut good = 0;
     let mut degenerate = 0;
     let mut coincident = 0;
@@ -1387,7 +1351,7 @@ mod tests {
 
     /// A configuration with known non-degenerate corners.
     fn sample() -> MiquelInstance {
-        let mut rng = SplitMix64(42);
+        let mut rng = Rng::new(42);
         loop {
             let corners: [Hom4<Q>; 4] = core::array::from_fn(|_| rng.hom4(4));
             if let Ok(i) = miquel_instance(&corners) {
