@@ -19,7 +19,6 @@ use exactcheck_core::{Sign, Vec3};
 use exactcheck_exact::cylinder_sphere::analyze;
 use exactcheck_exact::univariate::{Bound, RootInterval, UPoly};
 use exactcheck_exact::Rational;
-use exactcheck_float::rational_to_f64;
 use exactcheck_float::sampler::DiscSampler;
 use serde_json::Value;
 use std::f64::consts::TAU;
@@ -124,7 +123,7 @@ struct ExactInfo {
 }
 
 fn to_f64(q: &Rational) -> f64 {
-    rational_to_f64(&q.to_big_rational())
+    q.to_f64()
 }
 
 fn float_config(cs: &CylinderSphere<Rational>) -> CylinderSphere<f64> {

@@ -304,7 +304,7 @@ fn exact(obj: &Map<String, Value>) -> Result<Value, Error> {
             "tau": tau.to_string(),
             "cos": out(&angle.cos),
             "sin": out(&angle.sin),
-            "t_degrees": 2.0 * exactcheck_float::rational_to_f64(&tau.to_big_rational()).atan().to_degrees(),
+            "t_degrees": 2.0 * tau.to_f64().atan().to_degrees(),
             "u": us,
             "points": exact_pts.clone(),
         }));
@@ -464,7 +464,7 @@ fn quadratic_points(
         radius: k(&cs.radius),
     };
     let (axis_q, axis_d) = pcs.axis_polynomial();
-    let sqrt_d = exactcheck_float::rational_to_f64(&disc.to_big_rational()).sqrt();
+    let sqrt_d = disc.to_f64().sqrt();
     let mut ok = true;
     let mut pts = Vec::new();
     for sign in [-1i64, 1] {
@@ -481,7 +481,7 @@ fn quadratic_points(
             } else {
                 format!("{p0} + {p1}*sqrt({disc})")
             };
-            let f = |q: &Rational| exactcheck_float::rational_to_f64(&q.to_big_rational());
+            let f = |q: &Rational| q.to_f64();
             (text, f(&p0) + f(&p1) * sqrt_d)
         };
         let (cx, cy, cz) = (coord(&x.x), coord(&x.y), coord(&x.z));

@@ -652,27 +652,19 @@ impl<T: OrderedField> Bernstein<T> {
 pub(crate) mod test_support {
     use crate::scalar::{Field, Ring, ZeroDivisor};
 
-    /// xorshift64* — deterministic, good enough to spread test cases.
-    pub struct Rng(u64);
+    /// The workspace's seeded generator, with the two draws these tests use.
+    pub struct Rng(crate::rng::Rng);
 
     impl Rng {
         pub fn new(seed: u64) -> Self {
-            Rng(seed.max(1))
-        }
-        pub fn next_u64(&mut self) -> u64 {
-            let mut x = self.0;
-            x ^= x >> 12;
-            x ^= x << 25;
-            x ^= x >> 27;
-            self.0 = x;
-            x.wrapping_mul(0x2545_F491_4F6C_DD1D)
+            Rng(crate::rng::Rng::new(seed))
         }
         /// Uniform in `lo..=hi`.
         pub fn int(&mut self, lo: i64, hi: i64) -> i64 {
-            lo + (self.next_u64() % ((hi - lo + 1) as u64)) as i64
+            lo + self.0.below((hi - lo + 1) as u64) as i64
         }
         pub fn below(&mut self, n: usize) -> usize {
-            (self.next_u64() % n as u64) as usize
+            self.0.below(n as u64) as usize
         }
     }
 

@@ -13,11 +13,13 @@ pub mod cylinder_sphere;
 pub mod linalg;
 pub mod miquel;
 pub mod quadric;
+pub mod rng;
 pub mod scalar;
 pub mod sphere_interpolation;
 pub mod vector;
 
 pub use bernstein::{Bernstein, ShapeError};
 pub use bezier::{BezierCurve, RationalBezierCurve, TensorPatch};
+pub use rng::Rng;
 pub use scalar::{binomial, pairwise_sum, Field, OrderedField, Ring, Sign, Sqrt, ZeroDivisor};
 pub use vector::{det4, Hom4, Vec3};

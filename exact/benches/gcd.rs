@@ -5,28 +5,20 @@ use std::hint::black_box;
 use std::time::{Duration, Instant};
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, SamplingMode};
+use exactcheck_core::Rng;
 use exactcheck_exact::gcd::{gcd_biguint, gcd_u128, gcd_u64};
 use num_bigint::BigUint;
 use num_integer::Integer;
 
-/// splitmix64, for reproducible pseudo-random limbs.
-fn splitmix(state: &mut u64) -> u64 {
-    *state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
-    let mut z = *state;
-    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-    z ^ (z >> 31)
-}
-
-fn random_biguint(limbs: usize, state: &mut u64) -> BigUint {
-    let digits: Vec<u32> = (0..2 * limbs).map(|_| splitmix(state) as u32).collect();
+fn random_biguint(limbs: usize, state: &mut Rng) -> BigUint {
+    let digits: Vec<u32> = (0..2 * limbs).map(|_| state.next_u64() as u32).collect();
     BigUint::new(digits)
 }
 
 /// Two numbers of about `limbs` limbs sharing a random common factor of about a quarter of
 /// that size.
 fn pair(limbs: usize, seed: u64) -> (BigUint, BigUint) {
-    let mut st = seed;
+    let mut st = Rng::new(seed);
     let lg = (limbs / 4).max(1);
     let lx = limbs.saturating_sub(lg).max(1);
     let g = random_biguint(lg, &mut st);
@@ -87,18 +79,18 @@ fn bench_gcd(c: &mut Criterion) {
 /// Machine-word gcds on 4096 pairs with a random common factor (about a quarter of the bits);
 /// many distinct pairs, so that the branch predictor cannot learn them.
 fn bench_words(c: &mut Criterion) {
-    let mut st = 0xabcd_ef01_u64;
+    let mut st = Rng::new(0xabcd_ef01_u64);
     let p64: Vec<(u64, u64)> = (0..4096)
         .map(|_| {
-            let g = splitmix(&mut st) >> 48;
-            ((splitmix(&mut st) >> 16) * g, (splitmix(&mut st) >> 16) * g)
+            let g = st.next_u64() >> 48;
+            ((st.next_u64() >> 16) * g, (st.next_u64() >> 16) * g)
         })
         .collect();
     let p128: Vec<(u128, u128)> = (0..4096)
         .map(|_| {
-            let g = u128::from(splitmix(&mut st) >> 32);
-            let x = u128::from(splitmix(&mut st)) << 32 | u128::from(splitmix(&mut st) >> 32);
-            let y = u128::from(splitmix(&mut st)) << 32 | u128::from(splitmix(&mut st) >> 32);
+            let g = u128::from(st.next_u64() >> 32);
+            let x = u128::from(st.next_u64()) << 32 | u128::from(st.next_u64() >> 32);
+            let y = u128::from(st.next_u64()) << 32 | u128::from(st.next_u64() >> 32);
             (x * g, y * g)
         })
         .collect();
@@ -134,7 +126,7 @@ fn bench_words(c: &mut Criterion) {
 
 /// Two random 350,000-bit numbers (no planted common factor: the full Euclidean descent).
 fn bench_350k_bits(c: &mut Criterion) {
-    let mut st = 0x350_000;
+    let mut st = Rng::new(0x350_000);
     let limbs = 5469; // 350,016 bits, minus 16
     let mut a = random_biguint(limbs, &mut st) >> 16u32;
     let mut b = random_biguint(limbs, &mut st) >> 16u32;

@@ -16,11 +16,11 @@
 //! with no division. Rationals map in by `n · d^-1` ([`ModP::from_rational`]), which is a ring
 //! homomorphism on the rationals whose denominator is prime to `p`.
 //!
-//! Random points come from [`SplitMix64`], a small seeded generator (no dependency), so that
-//! every randomized verdict is reproducible from its seed.
+//! Random points come from the workspace's one seeded generator, [`exactcheck_core::Rng`], so
+//! that every randomized verdict is reproducible from its seed.
 
 use crate::rational::Rational;
-use exactcheck_core::{Field, Ring, ZeroDivisor};
+use exactcheck_core::{Field, Ring, Rng, ZeroDivisor};
 use num_bigint::{BigInt, Sign as BigSign};
 use std::fmt;
 use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
@@ -32,13 +32,14 @@ pub const P: u64 = (1u64 << 61) - 1;
 ///
 /// ```
 /// use exactcheck_core::Ring;
-/// use exactcheck_exact::modp::{schwartz_zippel_bound, ModP, SplitMix64};
+/// use exactcheck_core::Rng;
+/// use exactcheck_exact::modp::{schwartz_zippel_bound, ModP};
 ///
 /// // (x + y)^2 - (x^2 + 2xy + y^2) vanishes at 20 random points: if it were a non-zero
 /// // polynomial (of degree 2), that would happen with probability at most (2/p)^20.
-/// let mut rng = SplitMix64::new(7);
+/// let mut rng = Rng::new(7);
 /// for _ in 0..20 {
-///     let (x, y) = (rng.next_mod_p(), rng.next_mod_p());
+///     let (x, y) = (ModP::random(&mut rng), ModP::random(&mut rng));
 ///     let residual = (x + y).square() - (x * x + ModP::from_i64(2) * x * y + y * y);
 ///     assert!(residual.is_zero());
 /// }
@@ -129,7 +130,7 @@ impl ModP {
     }
 
     /// A uniformly random element drawn from `rng`.
-    pub fn random(rng: &mut SplitMix64) -> ModP {
+    pub fn random(rng: &mut Rng) -> ModP {
         // Rejection sampling on 61 bits: only the value P itself (probability 2^-61) is redrawn.
         loop {
             let x = rng.next_u64() >> 3;
@@ -212,34 +213,6 @@ pub fn schwartz_zippel_log2_bound(total_degree: u64, trials: u32) -> f64 {
     }
     let per_point = (total_degree as f64 / P as f64).min(1.0);
     trials as f64 * per_point.log2()
-}
-
-/// SplitMix64 (Steele, Lea and Flood 2014): a tiny seeded pseudo-random generator, enough for
-/// drawing evaluation points; every seed gives a reproducible stream.
-#[derive(Clone, Debug)]
-pub struct SplitMix64 {
-    state: u64,
-}
-
-impl SplitMix64 {
-    /// A generator started from `seed`.
-    pub fn new(seed: u64) -> SplitMix64 {
-        SplitMix64 { state: seed }
-    }
-
-    /// The next 64 pseudo-random bits.
-    pub fn next_u64(&mut self) -> u64 {
-        self.state = self.state.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.state;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-
-    /// The next uniformly random element of `Z/pZ`.
-    pub fn next_mod_p(&mut self) -> ModP {
-        ModP::random(self)
-    }
 }
 
 // ---------------------------------------------------------------------- operator plumbing
@@ -450,11 +423,11 @@ mod tests {
 
     #[test]
     fn generator_is_reproducible() {
-        let mut a = SplitMix64::new(42);
-        let mut b = SplitMix64::new(42);
+        let mut a = Rng::new(42);
+        let mut b = Rng::new(42);
         for _ in 0..10 {
-            let x = a.next_mod_p();
-            assert_eq!(x, b.next_mod_p());
+            let x = ModP::random(&mut a);
+            assert_eq!(x, ModP::random(&mut b));
             assert!(x.value() < P);
         }
     }

@@ -16,7 +16,7 @@
 use crate::expr::Coefficient;
 use crate::poly::{groebner, Poly, Var};
 use crate::Rational;
-use exactcheck_core::{Field, Ring};
+use exactcheck_core::{Field, Ring, Rng};
 
 /// The decision on an identity.
 #[derive(Clone, Debug)]
@@ -91,7 +91,7 @@ fn circle_pair<C: Field>(r: &Poly<C>) -> Option<(Var, Var)> {
 }
 
 /// A small rational `n/d`, `|n| <= 9`, `1 <= d <= 4`, for the counter-example search.
-fn small_rational(rng: &mut crate::modp::SplitMix64) -> Rational {
+fn small_rational(rng: &mut Rng) -> Rational {
     let n = (rng.next_u64() % 19) as i64 - 9;
     let d = (rng.next_u64() % 4) as i64 + 1;
     Rational::new(n, d).unwrap_or(Rational::ZERO)
@@ -128,7 +128,7 @@ pub fn decide<C: Field + Coefficient>(
         return Decision::Undecided { normal_form: nf };
     }
     // Search an exact point: circle pairs from rational tau, the rest small rationals.
-    let mut rng = crate::modp::SplitMix64::new(0x5EED);
+    let mut rng = Rng::new(0x5EED);
     for _ in 0..200 {
         let mut point: Vec<Rational> = (0..nvars).map(|_| small_rational(&mut rng)).collect();
         for &(c, s) in &pairs {
@@ -162,7 +162,7 @@ pub fn decide<C: Field + Coefficient>(
 // ------------------------------------------------------------------ randomized identity testing
 
 use crate::expr::{AddOp, Expr, ExprKind, MulOp};
-use crate::modp::{schwartz_zippel_log2_bound, ModP, SplitMix64};
+use crate::modp::{schwartz_zippel_log2_bound, ModP};
 use std::collections::HashMap;
 
 /// An upper bound on the total degree of the polynomial an expression denotes (`None` where it
@@ -292,7 +292,7 @@ pub fn random_identity_test(
         .ok_or("the expressions are not polynomials (non-constant divisor or exponent)")?;
     // Clearing the denominators (1 + tau^2) of circle points at most doubles the degree.
     let degree = if circles.is_empty() { d } else { 2 * d };
-    let mut rng = SplitMix64::new(seed);
+    let mut rng = Rng::new(seed);
     for _ in 0..trials {
         let mut point: HashMap<String, ModP> = variables
             .iter()

@@ -650,7 +650,7 @@ impl Radical {
         self.terms
             .iter()
             .map(|(m, c)| {
-                let cf = rational_to_f64(c);
+                let cf = c.to_f64();
                 if m.is_one() {
                     cf
                 } else {
@@ -866,11 +866,9 @@ impl Radical {
     fn sign_filter(&self) -> Option<Sign> {
         let (mut sum, mut mag) = (0.0f64, 0.0f64);
         for (m, c) in &self.terms {
-            let (n, d) = (c.numer(), c.denom());
-            if n.bits() >= 1000 || d.bits() >= 1000 {
-                return None;
-            }
-            let cf = n.to_f64()? / d.to_f64()?;
+            // Correctly rounded (no allocation for inline values); a huge or tiny value is
+            // rejected below as not normal.
+            let cf = c.to_f64();
             let t = if m.is_one() {
                 cf
             } else {
@@ -999,21 +997,6 @@ impl Radical {
         }
         self
     }
-}
-
-/// A rational as an `f64`, also for numerators and denominators beyond the `f64` range.
-fn rational_to_f64(c: &Rational) -> f64 {
-    let (n, d) = (c.numer(), c.denom());
-    let (nb, db) = (n.bits(), d.bits());
-    if nb < 1000 && db < 1000 {
-        return n.to_f64().unwrap_or(f64::NAN) / d.to_f64().unwrap_or(f64::NAN);
-    }
-    let (ns, ds) = (nb.saturating_sub(64), db.saturating_sub(64));
-    let nf = (n >> ns).to_f64().unwrap_or(f64::NAN);
-    let df = (d >> ds).to_f64().unwrap_or(f64::NAN);
-    let e = (ns as i64 - ds as i64).clamp(-4000, 4000) as i32;
-    // Two half steps so that intermediate powers of two stay in range.
-    nf / df * 2f64.powi(e / 2) * 2f64.powi(e - e / 2)
 }
 
 // ====================================================================== operator plumbing

@@ -140,6 +140,18 @@ impl Rational {
         matches!(self.0, Repr::Small(..))
     }
 
+    /// The double nearest to the value (ties to even, gradual underflow, overflow to `±inf`):
+    /// the workspace's one correctly rounded conversion, [`crate::to_f64::rational_to_f64`],
+    /// with a fast path where numerator and denominator are exact doubles (then one IEEE
+    /// division is the correctly rounded quotient).
+    pub fn to_f64(&self) -> f64 {
+        const EXACT: i128 = 1 << 53;
+        match &self.0 {
+            Repr::Small(n, d) if n.abs() <= EXACT && *d <= EXACT => *n as f64 / *d as f64,
+            _ => crate::to_f64::rational_to_f64(&self.to_big_rational()),
+        }
+    }
+
     /// The numerator (sign carrier) as a `BigInt`.
     pub fn numer(&self) -> BigInt {
         match &self.0 {

@@ -52,7 +52,7 @@ use crate::Rational;
 use exactcheck_core::{Ring, Sign, ZeroDivisor};
 use num_bigint::BigInt;
 use num_integer::Integer;
-use num_traits::{One, ToPrimitive};
+use num_traits::One;
 use std::cmp::Ordering;
 use std::fmt;
 use std::ops::{Add, AddAssign, Mul, MulAssign, Neg, Sub, SubAssign};
@@ -158,10 +158,6 @@ fn sign_neg(s: Sign) -> Sign {
         Sign::Zero => Sign::Zero,
         Sign::Positive => Sign::Negative,
     }
-}
-
-fn rational_to_f64(x: &Rational) -> f64 {
-    x.to_big_rational().to_f64().unwrap_or(f64::NAN)
 }
 
 // ------------------------------------------------------------------------------ UPoly basics
@@ -1219,7 +1215,7 @@ impl RootInterval {
 
     /// A floating-point approximation of the midpoint, **for display only**.
     pub fn to_f64(&self) -> f64 {
-        rational_to_f64(&self.midpoint())
+        self.midpoint().to_f64()
     }
 }
 

@@ -12,7 +12,7 @@
 //!
 //! Constructors validate their parameters and return a [`GenError`] instead of panicking.
 
-use crate::rng::Rng;
+use exactcheck_core::Rng;
 
 /// Invalid parameters for a built-in generator.
 #[derive(Clone, Debug, PartialEq, Eq)]

@@ -42,8 +42,8 @@ use crate::convert::{
 };
 use crate::gen::InputGen;
 use crate::report::{Case, Report, ThresholdCount, WorstCase};
-use crate::rng::Rng;
 use crate::scalar::ExactScalar;
+use exactcheck_core::Rng;
 use exactcheck_core::{OrderedField, ZeroDivisor};
 use num_rational::BigRational;
 use std::cmp::Ordering;

@@ -6,7 +6,7 @@
 //!   and the error measures [`ulps_error`] and [`rel_error`], all computed exactly.
 //! * [`scalar`] — [`ExactScalar`], what the harness needs of an exact number type, implemented
 //!   for [`exactcheck_exact::PlainRational`].
-//! * [`rng`] and [`gen`] — a seeded xoshiro256** generator and the input generators
+//! * [`gen`] — the input generators, drawing from the workspace's one generator [`Rng`]
 //!   ([`UniformBox`], [`LogUniform`], [`NearDegenerate`] around [`Fixed`] or [`Diagonal`] points).
 //! * [`harness`] — [`regress`]: a [`Formula`] written once generic over the scalar is run in
 //!   `f64` and exactly on the same random inputs; the [`Report`] gives max/median/mean errors in
@@ -22,7 +22,6 @@ pub mod convert;
 pub mod gen;
 pub mod harness;
 pub mod report;
-pub mod rng;
 pub mod sampler;
 pub mod scalar;
 
@@ -30,8 +29,8 @@ pub use convert::{
     binary_exponent, f64_to_rational, pow2, rational_to_f64, rel_error, round_to_bits,
     significant_bits, ulp, ulps_error,
 };
+pub use exactcheck_core::rng::{self, Rng};
 pub use gen::{Diagonal, Fixed, GenError, InputGen, LogUniform, NearDegenerate, UniformBox};
 pub use harness::{check, regress, sample_inputs, CaseError, Formula, Options, RegressError};
 pub use report::{Case, Report, ThresholdCount, WorstCase};
-pub use rng::Rng;
 pub use scalar::ExactScalar;

@@ -110,14 +110,14 @@ pub fn prove_all<C: Field + Coefficient + Display>(
     }
 }
 
-/// The seeded generator of the catalogue's exact random instances: SplitMix64
-/// ([`exactcheck_exact::modp::SplitMix64`]) with helpers for small exact values.
-pub struct Rng(exactcheck_exact::modp::SplitMix64);
+/// The seeded generator of the catalogue's exact random instances: the workspace's one generator
+/// ([`exactcheck_core::Rng`]) with helpers for small exact values.
+pub struct Rng(exactcheck_core::Rng);
 
 impl Rng {
     /// A generator started from `seed` (same seed, same instances).
     pub fn new(seed: u64) -> Rng {
-        Rng(exactcheck_exact::modp::SplitMix64::new(seed))
+        Rng(exactcheck_core::Rng::new(seed))
     }
     /// The next 64 pseudo-random bits.
     pub fn next_u64(&mut self) -> u64 {
@@ -125,7 +125,7 @@ impl Rng {
     }
     /// Uniform in `lo..=hi`.
     pub fn int(&mut self, lo: i64, hi: i64) -> i64 {
-        lo + (self.next_u64() % (hi - lo + 1) as u64) as i64
+        lo + self.0.below((hi - lo + 1) as u64) as i64
     }
     /// `n / d` with `|n| <= r`, `1 <= d <= den`.
     pub fn rational(&mut self, r: i64, den: i64) -> Rational {

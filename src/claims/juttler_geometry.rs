@@ -4,7 +4,7 @@
 //!
 //! Each check decides its claim by computation: symbolic identities expanded over polynomial
 //! rings (via [`prove_all`]), signs of symbolic minors read off their terms, and exact instances
-//! over [`Rational`] drawn by a seeded SplitMix64 (deterministic).
+//! over [`Rational`] drawn by the workspace's seeded generator (deterministic).
 
 use super::engine::{prove_all, Rng, Symbols};
 use super::{Outcome, Verdict};

@@ -305,7 +305,6 @@ fn eq11() -> Result<Outcome, String> {
 
 use exactcheck_core::cylinder_sphere::{unit_circle_point, Contact, TrigCoefficients};
 use exactcheck_exact::cylinder_sphere::{analyze, Analysis};
-use exactcheck_float::rational_to_f64;
 use exactcheck_float::sampler::DiscSampler;
 
 /// The numeric examples and the sampling claim.
@@ -353,7 +352,7 @@ fn zero_angle() -> Angle<Rational> {
 /// The f64 sampler of an exact configuration (coefficients rounded once).
 fn sampler(cs: &CylinderSphere<Rational>) -> DiscSampler {
     let c = cs.trig_coefficients();
-    let f = |x: &Rational| rational_to_f64(&x.to_big_rational());
+    let f = |x: &Rational| x.to_f64();
     DiscSampler::from_coefficients(&TrigCoefficients {
         a: c.a.each_ref().map(f),
         b: c.b.each_ref().map(f),
@@ -452,7 +451,7 @@ pub fn rational_angle(theta: f64, max_den: i64) -> (Angle<Rational>, Rational, f
     }
     let tau = q(h1, k1);
     let angle = unit_circle_point(&tau).unwrap_or_else(|_| zero_angle());
-    let back = 2.0 * rational_to_f64(&tau.to_big_rational()).atan();
+    let back = 2.0 * tau.to_f64().atan();
     (angle, tau, back - theta)
 }
 

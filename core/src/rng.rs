@@ -1,4 +1,8 @@
-//! A small seeded random number generator: xoshiro256** seeded through SplitMix64.
+//! The workspace's one seeded random number generator: xoshiro256** seeded through SplitMix64.
+//!
+//! Every crate draws from this type (the regression harness, the catalogue's exact instances, the
+//! counter-example search and the evaluation points of randomized identity tests); it lives in
+//! `core` because it knows no number type.
 //!
 //! Written here rather than taken from a crate so that a regression report stays reproducible
 //! from its seed forever: the stream is fixed by this file (and pinned by known-answer tests),
