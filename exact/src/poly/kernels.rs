@@ -1,0 +1,807 @@
+//! The arithmetic kernels: sorted merges for sums, and for products a heap merge of the rows
+//! `f_i * g` over packed keys (specialised for 1 to 4 key words), a dense accumulator when the
+//! exponent box is small, and a squaring heap that visits each unordered pair once.
+
+use super::*;
+use exactcheck_core::Ring;
+use std::cmp::Ordering;
+
+/// Calls `$f::<C, K>` with the key width as a constant for 1 to 4 words, `K = 0` (run time)
+/// otherwise.
+macro_rules! with_key_words {
+    ($k:expr, $f:ident::<$c:ty>($($arg:expr),*)) => {
+        match $k {
+            1 => $f::<$c, 1>($($arg),*),
+            2 => $f::<$c, 2>($($arg),*),
+            3 => $f::<$c, 3>($($arg),*),
+            4 => $f::<$c, 4>($($arg),*),
+            _ => $f::<$c, 0>($($arg),*),
+        }
+    };
+}
+
+impl<C: Ring> Poly<C> {
+    /// `self + rhs` (or `self - rhs` when `negate`), borrowing both.
+    pub(super) fn add_impl(&self, rhs: &Self, negate: bool) -> Self {
+        if rhs.is_empty() {
+            return self.clone();
+        }
+        if self.is_empty() {
+            return if negate { rhs.neg_impl() } else { rhs.clone() };
+        }
+        let shape = self.common_shape(rhs);
+        merge(
+            shape,
+            &self.exps_in(shape),
+            self.coeffs.iter().cloned(),
+            &rhs.exps_in(shape),
+            rhs.coeffs.iter().cloned(),
+            negate,
+        )
+    }
+
+    /// `self + rhs` (or `self - rhs` when `negate`), consuming both.
+    pub(super) fn add_owned(self, rhs: Self, negate: bool) -> Self {
+        if rhs.is_empty() {
+            return self;
+        }
+        if self.is_empty() {
+            return if negate { rhs.neg_owned() } else { rhs };
+        }
+        let shape = self.common_shape(&rhs);
+        let (ae, ac) = self.into_parts(shape);
+        let (be, bc) = rhs.into_parts(shape);
+        merge(shape, &ae, ac.into_iter(), &be, bc.into_iter(), negate)
+    }
+
+    /// The packed monomials in shape `to` and the coefficients, without copying when the shape
+    /// is already right.
+    pub(super) fn into_parts(self, to: Shape) -> (Vec<u64>, Vec<C>) {
+        let exps = if to == self.shape {
+            self.exps
+        } else {
+            repack(&self.exps, self.coeffs.len(), self.shape, to)
+        };
+        (exps, self.coeffs)
+    }
+
+    /// `self + rhs` (or `self - rhs` when `negate`), consuming `self` only.
+    pub(super) fn add_left_owned(self, rhs: &Self, negate: bool) -> Self {
+        if rhs.is_empty() {
+            return self;
+        }
+        if self.is_empty() {
+            return if negate { rhs.neg_impl() } else { rhs.clone() };
+        }
+        let shape = self.common_shape(rhs);
+        let be = rhs.exps_in(shape);
+        let (ae, ac) = self.into_parts(shape);
+        merge(
+            shape,
+            &ae,
+            ac.into_iter(),
+            &be,
+            rhs.coeffs.iter().cloned(),
+            negate,
+        )
+    }
+
+    pub(super) fn neg_impl(&self) -> Self {
+        Poly {
+            shape: self.shape,
+            exps: self.exps.clone(),
+            coeffs: self.coeffs.iter().map(Ring::neg_ref).collect(),
+        }
+    }
+
+    pub(super) fn neg_owned(mut self) -> Self {
+        for c in &mut self.coeffs {
+            let v = std::mem::replace(c, C::zero());
+            *c = -v;
+        }
+        self
+    }
+
+    /// The shape of the product of `self` and `rhs`: a field width in which no exponent of the
+    /// product overflows.
+    ///
+    /// # Panics
+    /// When an exponent of the product exceeds `u32::MAX`.
+    pub(super) fn product_shape(&self, rhs: &Self) -> Shape {
+        let mut bits = self.shape.bits.max(rhs.shape.bits);
+        let need = self.exp_bound() + rhs.exp_bound();
+        if need >= 1 << (bits - 1) {
+            // The cheap bound does not fit: take the exact largest sum per variable.
+            let (a, b) = (self.max_exponents(), rhs.max_exponents());
+            let exact = (0..a.len().max(b.len()))
+                .map(|v| a.get(v).copied().unwrap_or(0) + b.get(v).copied().unwrap_or(0))
+                .max()
+                .unwrap_or(0);
+            let need_bits = bits_for(exact).expect("exponent overflow: above u32::MAX");
+            bits = bits.max(need_bits);
+        }
+        if bits == self.shape.bits && bits == rhs.shape.bits {
+            Shape {
+                bits,
+                words: self.shape.words.max(rhs.shape.words),
+            }
+        } else {
+            let nv = self.nvars_used().max(rhs.nvars_used());
+            Shape {
+                bits,
+                words: Shape::words_for(bits, nv),
+            }
+        }
+    }
+
+    pub(super) fn mul_impl(&self, rhs: &Self) -> Self {
+        if self.is_empty() || rhs.is_empty() {
+            return Poly::zero();
+        }
+        let shape = self.product_shape(rhs);
+        let (ae, be) = (self.exps_in(shape), rhs.exps_in(shape));
+        let w = shape.words;
+        let (exps, coeffs) = if self.len() == 1 {
+            mul_term(w, &be, &rhs.coeffs, &ae, &self.coeffs[0])
+        } else if rhs.len() == 1 {
+            mul_term(w, &ae, &self.coeffs, &be, &rhs.coeffs[0])
+        } else {
+            let cap = w * shape.per_word();
+            let (ma, mb) = (
+                max_exps(shape, &ae, self.len(), cap),
+                max_exps(shape, &be, rhs.len(), cap),
+            );
+            let need: Vec<u64> = ma.iter().zip(&mb).map(|(x, y)| x + y).collect();
+            let (small, large) = if self.len() <= rhs.len() {
+                ((&ae[..], &self.coeffs[..]), (&be[..], &rhs.coeffs[..]))
+            } else {
+                ((&be[..], &rhs.coeffs[..]), (&ae[..], &self.coeffs[..]))
+            };
+            let products = (self.len() as u64).saturating_mul(rhs.len() as u64);
+            let limit = DENSE_MAX_CELLS.min(products.saturating_mul(4));
+            if let Some((cells, strides)) = dense_strides(&need, limit) {
+                let fi = dense_indices(shape, small.0, small.1.len(), &strides);
+                let gi = dense_indices(shape, large.0, large.1.len(), &strides);
+                mul_dense(
+                    w,
+                    cells as usize,
+                    (small.0, &fi, small.1),
+                    (large.0, &gi, large.1),
+                )
+            } else {
+                let (k, place) = key_layout(&need);
+                let fk = make_keys(shape, small.0, small.1.len(), k, &place);
+                let gk = make_keys(shape, large.0, large.1.len(), k, &place);
+                let f = (small.0, &fk[..], small.1);
+                let g = (large.0, &gk[..], large.1);
+                if k == 1 {
+                    mul_heap1(w, f, g)
+                } else {
+                    with_key_words!(k, mul_heap::<C>(k, w, f, g))
+                }
+            }
+        };
+        Poly {
+            shape,
+            exps,
+            coeffs,
+        }
+    }
+
+    pub(super) fn square_impl(&self) -> Self {
+        if self.len() <= 1 {
+            return self.pow_term(2);
+        }
+        let shape = self.product_shape(self);
+        let e = self.exps_in(shape);
+        let cap = shape.words * shape.per_word();
+        let need: Vec<u64> = max_exps(shape, &e, self.len(), cap)
+            .iter()
+            .map(|m| 2 * m)
+            .collect();
+        let n = self.len() as u64;
+        let (exps, coeffs) = match dense_strides(&need, DENSE_MAX_CELLS.min(n * n * 4)) {
+            Some((cells, strides)) => {
+                let idx = dense_indices(shape, &e, self.len(), &strides);
+                let f = (&e[..], &idx[..], &self.coeffs[..]);
+                mul_dense(shape.words, cells as usize, f, f)
+            }
+            None => {
+                let (k, place) = key_layout(&need);
+                let keys = make_keys(shape, &e, self.len(), k, &place);
+                let f = (&e[..], &keys[..], &self.coeffs[..]);
+                with_key_words!(k, square_heap::<C>(k, shape.words, f))
+            }
+        };
+        Poly {
+            shape,
+            exps,
+            coeffs,
+        }
+    }
+}
+
+/// `c^e` by binary powering.
+pub(super) fn pow_coeff<C: Ring>(c: &C, mut e: u64) -> C {
+    let mut acc = C::one();
+    let mut base = c.clone();
+    while e > 0 {
+        if e & 1 == 1 {
+            acc *= &base;
+        }
+        e >>= 1;
+        if e > 0 {
+            base = base.square();
+        }
+    }
+    acc
+}
+
+/// Merges two sorted term lists of the same shape.
+pub(super) fn merge<C: Ring>(
+    shape: Shape,
+    ae: &[u64],
+    ac: impl Iterator<Item = C>,
+    be: &[u64],
+    bc: impl Iterator<Item = C>,
+    negate: bool,
+) -> Poly<C> {
+    macro_rules! by_words {
+        ($($n:literal)*) => {
+            match shape.words {
+                $($n => merge_words::<C, $n>($n, ae, ac, be, bc, negate),)*
+                w => merge_words::<C, 0>(w, ae, ac, be, bc, negate),
+            }
+        };
+    }
+    // Word counts as constants up to 16 (128 variables at 8 bits): compares and copies of
+    // monomials then compile to straight-line code.
+    let (exps, coeffs) = by_words!(1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16);
+    Poly {
+        shape,
+        exps,
+        coeffs,
+    }
+}
+
+/// [`merge`] with `W` words per monomial (`W = 0`: `w`, at run time).
+pub(super) fn merge_words<C: Ring, const W: usize>(
+    w: usize,
+    ae: &[u64],
+    mut ac: impl Iterator<Item = C>,
+    be: &[u64],
+    mut bc: impl Iterator<Item = C>,
+    negate: bool,
+) -> (Vec<u64>, Vec<C>) {
+    let w = if W == 0 { w } else { W };
+    let (na, nb) = (ae.len() / w.max(1), be.len() / w.max(1));
+    // With zero words both lists are single constants.
+    let (na, nb) = if w == 0 { (1, 1) } else { (na, nb) };
+    let mut exps = Vec::with_capacity(ae.len() + be.len());
+    let mut coeffs = Vec::with_capacity(na + nb);
+    let (mut i, mut j) = (0, 0);
+    let mut a_next = ac.next();
+    let mut b_next = bc.next();
+    while let (Some(_), Some(_)) = (&a_next, &b_next) {
+        let (ma, mb) = (&ae[i * w..(i + 1) * w], &be[j * w..(j + 1) * w]);
+        match cmp_mono(ma, mb) {
+            Ordering::Greater => {
+                exps.extend_from_slice(ma);
+                coeffs.extend(a_next.take());
+                a_next = ac.next();
+                i += 1;
+            }
+            Ordering::Less => {
+                exps.extend_from_slice(mb);
+                let b = b_next.take().unwrap_or_else(C::zero);
+                coeffs.push(if negate { -b } else { b });
+                b_next = bc.next();
+                j += 1;
+            }
+            Ordering::Equal => {
+                let a = a_next.take().unwrap_or_else(C::zero);
+                let b = b_next.take().unwrap_or_else(C::zero);
+                let s = if negate { a - b } else { a + b };
+                if !s.is_zero() {
+                    exps.extend_from_slice(ma);
+                    coeffs.push(s);
+                }
+                a_next = ac.next();
+                b_next = bc.next();
+                i += 1;
+                j += 1;
+            }
+        }
+    }
+    while let Some(a) = a_next {
+        exps.extend_from_slice(&ae[i * w..(i + 1) * w]);
+        coeffs.push(a);
+        a_next = ac.next();
+        i += 1;
+    }
+    while let Some(b) = b_next {
+        exps.extend_from_slice(&be[j * w..(j + 1) * w]);
+        coeffs.push(if negate { -b } else { b });
+        b_next = bc.next();
+        j += 1;
+    }
+    (exps, coeffs)
+}
+
+/// `g * (m, c)`: a term times a sorted list stays sorted.
+pub(super) fn mul_term<C: Ring>(
+    w: usize,
+    ge: &[u64],
+    gc: &[C],
+    m: &[u64],
+    c: &C,
+) -> (Vec<u64>, Vec<C>) {
+    let mut exps = Vec::with_capacity(ge.len());
+    let mut coeffs = Vec::with_capacity(gc.len());
+    let mut buf = vec![0u64; w];
+    for (j, g) in gc.iter().enumerate() {
+        let p = g.mul_ref(c);
+        if !p.is_zero() {
+            add_mono(&mut buf, &ge[j * w..(j + 1) * w], m);
+            exps.extend_from_slice(&buf);
+            coeffs.push(p);
+        }
+    }
+    (exps, coeffs)
+}
+
+/// A binary max-heap of stream indices, keyed by the monomials in `slots` (`w` words each).
+pub(super) struct Heap {
+    pub(super) h: Vec<u32>,
+}
+
+impl Heap {
+    pub(super) fn with_capacity(n: usize) -> Self {
+        Heap {
+            h: Vec::with_capacity(n),
+        }
+    }
+
+    #[inline(always)]
+    pub(super) fn gt(slots: &[u64], w: usize, a: u32, b: u32) -> bool {
+        let (a, b) = (a as usize, b as usize);
+        cmp_mono(&slots[a * w..(a + 1) * w], &slots[b * w..(b + 1) * w]) == Ordering::Greater
+    }
+
+    #[inline]
+    pub(super) fn peek(&self) -> Option<u32> {
+        self.h.first().copied()
+    }
+
+    #[inline(always)]
+    pub(super) fn push(&mut self, x: u32, slots: &[u64], w: usize) {
+        let mut pos = self.h.len();
+        self.h.push(x);
+        while pos > 0 {
+            let parent = (pos - 1) / 2;
+            if Self::gt(slots, w, x, self.h[parent]) {
+                self.h[pos] = self.h[parent];
+                pos = parent;
+            } else {
+                break;
+            }
+        }
+        self.h[pos] = x;
+    }
+
+    #[inline(always)]
+    pub(super) fn pop(&mut self, slots: &[u64], w: usize) -> Option<u32> {
+        let top = *self.h.first()?;
+        let last = self.h.pop()?;
+        let n = self.h.len();
+        if n == 0 {
+            return Some(top);
+        }
+        let mut pos = 0;
+        loop {
+            let l = 2 * pos + 1;
+            if l >= n {
+                break;
+            }
+            let r = l + 1;
+            let c = if r < n && Self::gt(slots, w, self.h[r], self.h[l]) {
+                r
+            } else {
+                l
+            };
+            if Self::gt(slots, w, self.h[c], last) {
+                self.h[pos] = self.h[c];
+                pos = c;
+            } else {
+                break;
+            }
+        }
+        self.h[pos] = last;
+        Some(top)
+    }
+}
+
+/// The largest exponent of every variable over `n` monomials (`cap` variables).
+pub(super) fn max_exps(shape: Shape, e: &[u64], n: usize, cap: usize) -> Vec<u64> {
+    let w = shape.words;
+    let mut m = vec![0u64; cap];
+    for i in 0..n {
+        shape.for_each(&e[i * w..(i + 1) * w], |v, x| m[v] = m[v].max(x));
+    }
+    m
+}
+
+/// Compact keys for the monomials of a product: every variable gets just the bits that its
+/// largest exponent in the product needs (`need[v]`, a Kronecker substitution), packed from the
+/// lowest variable up without crossing word boundaries, so that comparing keys as multi-word
+/// integers (most significant word last) is still the monomial order and adding keys never
+/// carries. When the operands have few low-degree variables (W1: 74 variables in 10 words) the
+/// keys take one or two words, and the heap compares those instead of whole monomials.
+///
+/// Returns the number of key words and the place `(word, shift)` of every variable.
+pub(super) fn key_layout(need: &[u64]) -> (usize, Vec<(usize, u32)>) {
+    let mut place = vec![(0usize, 0u32); need.len()];
+    let (mut word, mut shift) = (0usize, 0u32);
+    for (v, &s) in need.iter().enumerate() {
+        if s == 0 {
+            continue;
+        }
+        let width = 64 - s.leading_zeros();
+        if shift + width > 64 {
+            word += 1;
+            shift = 0;
+        }
+        place[v] = (word, shift);
+        shift += width;
+    }
+    (word + 1, place)
+}
+
+/// The keys (`k` words each) of `n` monomials in the layout `place`.
+pub(super) fn make_keys(
+    shape: Shape,
+    e: &[u64],
+    n: usize,
+    k: usize,
+    place: &[(usize, u32)],
+) -> Vec<u64> {
+    let w = shape.words;
+    let mut keys = vec![0u64; n * k];
+    for i in 0..n {
+        let key = &mut keys[i * k..(i + 1) * k];
+        shape.for_each(&e[i * w..(i + 1) * w], |v, x| {
+            let (kw, sh) = place[v];
+            key[kw] |= x << sh;
+        });
+    }
+    keys
+}
+
+/// `out += a + b` for monomials of `w` words.
+#[inline(always)]
+pub(super) fn push_sum(out: &mut Vec<u64>, a: &[u64], b: &[u64]) {
+    out.extend(a.iter().zip(b).map(|(x, y)| x.wrapping_add(*y)));
+}
+
+/// Johnson's heap multiplication of two sorted term lists (`f` the shorter, both with at least
+/// two terms), with Monagan–Pearce chained stream insertion: stream `i` is `f_i * g_j` for
+/// increasing `j`, and stream `i + 1` enters the heap when stream `i` leaves its first term; the
+/// heap thus holds at most one entry per stream and yields the products in decreasing order,
+/// equal monomials are accumulated as they leave it, and the result is born sorted. The heap
+/// orders the compact keys of [`key_layout`] (`k` words, `K` if non-zero); the full monomials
+/// (`w` words) are formed once per output term.
+pub(super) fn mul_heap<C: Ring, const K: usize>(
+    k: usize,
+    w: usize,
+    (fe, fk, fc): (&[u64], &[u64], &[C]),
+    (ge, gk, gc): (&[u64], &[u64], &[C]),
+) -> (Vec<u64>, Vec<C>) {
+    let k = if K == 0 { k } else { K };
+    let (nf, ng) = (fc.len(), gc.len());
+    let mut slots = vec![0u64; nf * k];
+    let mut js = vec![0usize; nf];
+    let mut heap = Heap::with_capacity(nf);
+    let cap = (nf * ng).min(4 * (nf + ng) + 1024);
+    let mut out_e: Vec<u64> = Vec::with_capacity(cap * w);
+    let mut out_c: Vec<C> = Vec::with_capacity(cap);
+    let mut cur = vec![0u64; k];
+    add_mono(&mut slots[0..k], &fk[0..k], &gk[0..k]);
+    heap.push(0, &slots, k);
+
+    // Moves stream i past its current term and (re)inserts what follows.
+    let advance = |i: usize, slots: &mut Vec<u64>, js: &mut Vec<usize>, heap: &mut Heap| {
+        let j = js[i];
+        if j == 0 && i + 1 < nf {
+            let n = i + 1;
+            js[n] = 0;
+            add_mono(
+                &mut slots[n * k..(n + 1) * k],
+                &fk[n * k..(n + 1) * k],
+                &gk[0..k],
+            );
+            heap.push(n as u32, slots, k);
+        }
+        if j + 1 < ng {
+            js[i] = j + 1;
+            add_mono(
+                &mut slots[i * k..(i + 1) * k],
+                &fk[i * k..(i + 1) * k],
+                &gk[(j + 1) * k..(j + 2) * k],
+            );
+            heap.push(i as u32, slots, k);
+        }
+    };
+
+    while let Some(i) = heap.pop(&slots, k) {
+        let i = i as usize;
+        let j = js[i];
+        cur.copy_from_slice(&slots[i * k..(i + 1) * k]);
+        let mut acc = fc[i].mul_ref(&gc[j]);
+        advance(i, &mut slots, &mut js, &mut heap);
+        while let Some(top) = heap.peek() {
+            let t = top as usize;
+            if slots[t * k..(t + 1) * k] != cur[..] {
+                break;
+            }
+            heap.pop(&slots, k);
+            acc += fc[t].mul_ref(&gc[js[t]]);
+            advance(t, &mut slots, &mut js, &mut heap);
+        }
+        if !acc.is_zero() {
+            push_sum(&mut out_e, &fe[i * w..(i + 1) * w], &ge[j * w..(j + 1) * w]);
+            out_c.push(acc);
+        }
+    }
+    (out_e, out_c)
+}
+
+/// [`mul_heap`] for one-word keys, the common case: the heap holds `(key, stream)` pairs, so
+/// comparisons touch no other memory, and a stream that continues replaces the root in place
+/// (one sift instead of a pop and a push).
+pub(super) fn mul_heap1<C: Ring>(
+    w: usize,
+    (fe, fk, fc): (&[u64], &[u64], &[C]),
+    (ge, gk, gc): (&[u64], &[u64], &[C]),
+) -> (Vec<u64>, Vec<C>) {
+    let (nf, ng) = (fc.len(), gc.len());
+    let mut js = vec![0u32; nf];
+    let mut heap: Vec<(u64, u32)> = Vec::with_capacity(nf);
+    let cap = (nf * ng).min(4 * (nf + ng) + 1024);
+    let mut out_e: Vec<u64> = Vec::with_capacity(cap * w);
+    let mut out_c: Vec<C> = Vec::with_capacity(cap);
+    heap.push((fk[0].wrapping_add(gk[0]), 0));
+
+    // Takes the root's product and moves its stream on; returns the product.
+    let step = |heap: &mut Vec<(u64, u32)>, js: &mut Vec<u32>| -> C {
+        let (_, s) = heap[0];
+        let i = s as usize;
+        let j = js[i] as usize;
+        let p = fc[i].mul_ref(&gc[j]);
+        if j + 1 < ng {
+            js[i] = (j + 1) as u32;
+            heap[0] = (fk[i].wrapping_add(gk[j + 1]), s);
+            sift_down1(heap);
+        } else {
+            let last = heap.pop().unwrap_or((0, 0));
+            if !heap.is_empty() {
+                heap[0] = last;
+                sift_down1(heap);
+            }
+        }
+        if j == 0 && i + 1 < nf {
+            push1(heap, (fk[i + 1].wrapping_add(gk[0]), (i + 1) as u32));
+        }
+        p
+    };
+
+    while let Some(&(key, s)) = heap.first() {
+        let (i, j) = (s as usize, js[s as usize] as usize);
+        let mut acc = step(&mut heap, &mut js);
+        while heap.first().is_some_and(|t| t.0 == key) {
+            acc += step(&mut heap, &mut js);
+        }
+        if !acc.is_zero() {
+            push_sum(&mut out_e, &fe[i * w..(i + 1) * w], &ge[j * w..(j + 1) * w]);
+            out_c.push(acc);
+        }
+    }
+    (out_e, out_c)
+}
+
+/// Restores the max-heap order below the root.
+#[inline(always)]
+pub(super) fn sift_down1(h: &mut [(u64, u32)]) {
+    let n = h.len();
+    let x = h[0];
+    let mut pos = 0;
+    loop {
+        let l = 2 * pos + 1;
+        if l >= n {
+            break;
+        }
+        let c = if l + 1 < n && h[l + 1].0 > h[l].0 {
+            l + 1
+        } else {
+            l
+        };
+        if h[c].0 > x.0 {
+            h[pos] = h[c];
+            pos = c;
+        } else {
+            break;
+        }
+    }
+    h[pos] = x;
+}
+
+/// Inserts into the max-heap.
+#[inline(always)]
+pub(super) fn push1(h: &mut Vec<(u64, u32)>, x: (u64, u32)) {
+    let mut pos = h.len();
+    h.push(x);
+    while pos > 0 {
+        let parent = (pos - 1) / 2;
+        if x.0 > h[parent].0 {
+            h[pos] = h[parent];
+            pos = parent;
+        } else {
+            break;
+        }
+    }
+    h[pos] = x;
+}
+
+/// The largest exponent box a dense product may use (cells of 4 bytes).
+pub(super) const DENSE_MAX_CELLS: u64 = 1 << 22;
+
+/// Mixed-radix indices for a dense product: variable `v` gets radix `need[v] + 1`, the lowest
+/// variable the smallest stride, so indices order like the monomials. `None` when the box
+/// (the product of the radices) exceeds `limit`.
+pub(super) fn dense_strides(need: &[u64], limit: u64) -> Option<(u64, Vec<u64>)> {
+    let mut stride = 1u64;
+    let mut strides = vec![0u64; need.len()];
+    for (v, &n) in need.iter().enumerate() {
+        if n == 0 {
+            continue;
+        }
+        strides[v] = stride;
+        stride = stride.checked_mul(n + 1).filter(|&b| b <= limit)?;
+    }
+    Some((stride, strides))
+}
+
+/// The mixed-radix index of every monomial.
+pub(super) fn dense_indices(shape: Shape, e: &[u64], n: usize, strides: &[u64]) -> Vec<u64> {
+    let w = shape.words;
+    (0..n)
+        .map(|i| {
+            let mut idx = 0;
+            shape.for_each(&e[i * w..(i + 1) * w], |v, x| idx += x * strides[v]);
+            idx
+        })
+        .collect()
+}
+
+/// Multiplication by accumulation in a dense box of exponents (for products whose exponent box
+/// is not much larger than the number of term products, as in dense few-variable products):
+/// each product goes to its cell by mixed-radix index, the touched cells are sorted once.
+pub(super) fn mul_dense<C: Ring>(
+    w: usize,
+    cells: usize,
+    (fe, fi, fc): (&[u64], &[u64], &[C]),
+    (ge, gi, gc): (&[u64], &[u64], &[C]),
+) -> (Vec<u64>, Vec<C>) {
+    let mut cell = vec![0u32; cells];
+    // (index, i, j, coefficient) of every distinct product monomial.
+    let mut touched: Vec<(u64, u32, u32, C)> = Vec::with_capacity((fc.len() + gc.len()) * 4);
+    for (i, (a, ia)) in fc.iter().zip(fi).enumerate() {
+        for (j, (b, ib)) in gc.iter().zip(gi).enumerate() {
+            let idx = ia + ib;
+            let p = a.mul_ref(b);
+            match cell[idx as usize] {
+                0 => {
+                    touched.push((idx, i as u32, j as u32, p));
+                    cell[idx as usize] = touched.len() as u32;
+                }
+                t => touched[t as usize - 1].3 += p,
+            }
+        }
+    }
+    touched.sort_unstable_by_key(|x| std::cmp::Reverse(x.0));
+    let mut out_e = Vec::with_capacity(touched.len() * w);
+    let mut out_c = Vec::with_capacity(touched.len());
+    for (_, i, j, c) in touched {
+        if !c.is_zero() {
+            let (i, j) = (i as usize, j as usize);
+            push_sum(&mut out_e, &fe[i * w..(i + 1) * w], &ge[j * w..(j + 1) * w]);
+            out_c.push(c);
+        }
+    }
+    (out_e, out_c)
+}
+
+/// Squaring with the heap over the pairs `i <= j` (at least two terms): stream `i` is
+/// `f_i * f_j` for `j = i, i+1, ...`; stream `i + 1` enters when `(i, i + 1)` leaves. Products
+/// with `i < j` count twice. Keys as in [`mul_heap`].
+pub(super) fn square_heap<C: Ring, const K: usize>(
+    k: usize,
+    w: usize,
+    (fe, fk, fc): (&[u64], &[u64], &[C]),
+) -> (Vec<u64>, Vec<C>) {
+    let k = if K == 0 { k } else { K };
+    let n = fc.len();
+    let mut slots = vec![0u64; n * k];
+    let mut js = vec![0usize; n];
+    let mut heap = Heap::with_capacity(n);
+    let cap = (n * n).min(8 * n + 1024);
+    let mut out_e: Vec<u64> = Vec::with_capacity(cap * w);
+    let mut out_c: Vec<C> = Vec::with_capacity(cap);
+    let mut cur = vec![0u64; k];
+    add_mono(&mut slots[0..k], &fk[0..k], &fk[0..k]);
+    heap.push(0, &slots, k);
+
+    let advance = |i: usize, slots: &mut Vec<u64>, js: &mut Vec<usize>, heap: &mut Heap| {
+        let j = js[i];
+        if j == i + 1 && i + 1 < n {
+            let m = i + 1;
+            js[m] = m;
+            add_mono(
+                &mut slots[m * k..(m + 1) * k],
+                &fk[m * k..(m + 1) * k],
+                &fk[m * k..(m + 1) * k],
+            );
+            heap.push(m as u32, slots, k);
+        }
+        if j + 1 < n {
+            js[i] = j + 1;
+            add_mono(
+                &mut slots[i * k..(i + 1) * k],
+                &fk[i * k..(i + 1) * k],
+                &fk[(j + 1) * k..(j + 2) * k],
+            );
+            heap.push(i as u32, slots, k);
+        }
+    };
+    // Diagonal products go to `diag`, off-diagonal ones (to be doubled) to `off`.
+    let take = |i: usize, j: usize, diag: &mut Option<C>, off: &mut Option<C>| {
+        let (slot, p) = if i == j {
+            (diag, fc[i].square())
+        } else {
+            (off, fc[i].mul_ref(&fc[j]))
+        };
+        match slot {
+            Some(a) => *a += p,
+            None => *slot = Some(p),
+        }
+    };
+
+    while let Some(i) = heap.pop(&slots, k) {
+        let i = i as usize;
+        let j = js[i];
+        cur.copy_from_slice(&slots[i * k..(i + 1) * k]);
+        let mut diag: Option<C> = None;
+        let mut off: Option<C> = None;
+        take(i, j, &mut diag, &mut off);
+        advance(i, &mut slots, &mut js, &mut heap);
+        while let Some(top) = heap.peek() {
+            let t = top as usize;
+            if slots[t * k..(t + 1) * k] != cur[..] {
+                break;
+            }
+            heap.pop(&slots, k);
+            take(t, js[t], &mut diag, &mut off);
+            advance(t, &mut slots, &mut js, &mut heap);
+        }
+        let acc = match (diag, off) {
+            (Some(d), Some(o)) => d + o.add_ref(&o),
+            (Some(d), None) => d,
+            (None, Some(o)) => o.add_ref(&o),
+            (None, None) => continue,
+        };
+        if !acc.is_zero() {
+            push_sum(&mut out_e, &fe[i * w..(i + 1) * w], &fe[j * w..(j + 1) * w]);
+            out_c.push(acc);
+        }
+    }
+    (out_e, out_c)
+}

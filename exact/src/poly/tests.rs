@@ -1,0 +1,203 @@
+//! Unit tests of the polynomial module.
+
+use super::reduce::divide;
+use super::*;
+use crate::Rational;
+
+type P = Poly<Rational>;
+
+fn q(n: i64) -> Rational {
+    Rational::from_integer(n)
+}
+
+fn x(i: Var) -> P {
+    P::var(i)
+}
+
+#[test]
+fn constants_need_no_variables() {
+    assert!(P::zero().is_zero());
+    assert_eq!(P::one().len(), 1);
+    assert_eq!(P::from_i64(0), P::zero());
+    assert_eq!(P::from_i64(3) * P::from_i64(4), P::from_i64(12));
+    assert!(P::one().is_one());
+    assert!(P::from_i64(-2).is_constant());
+}
+
+#[test]
+fn order_is_lex_with_higher_index_larger() {
+    let p = x(0).pow(5) + x(1);
+    assert_eq!(p.leading_term().unwrap().0.exponents(), vec![(1, 1)]);
+    let p = x(0) * x(2) + x(1) * x(1) * x(0);
+    assert_eq!(
+        p.leading_term().unwrap().0.exponents(),
+        vec![(0, 1), (2, 1)]
+    );
+    assert!(p.is_canonical());
+}
+
+#[test]
+fn binomial_expansion() {
+    let p = (x(0) + x(1)).pow(5);
+    assert_eq!(p.len(), 6);
+    assert_eq!(p.coefficient(&[(0, 2), (1, 3)]), q(10));
+    assert_eq!(p.coefficient(&[(0, 7)]), q(0));
+    assert!(p.is_canonical());
+    let sq = (x(0) - x(1) + P::one()).square();
+    assert_eq!(sq, (x(0) - x(1) + P::one()) * (x(0) - x(1) + P::one()));
+}
+
+#[test]
+fn field_width_grows_on_demand() {
+    let p = (x(0) + P::one()).pow(100);
+    assert_eq!(p.degree_in(0), 100);
+    let r = p.square();
+    assert_eq!(r.degree_in(0), 200);
+    assert!(r.is_canonical());
+    assert_eq!(r.shape.bits, 16);
+    let big = x(3).pow(70_000) * x(3).pow(70_000);
+    assert_eq!(big.degree_in(3), 140_000);
+    assert!(big.is_canonical());
+    let huge = x(1).pow(u32::MAX / 2) * x(1).pow(u32::MAX / 2);
+    assert_eq!(huge.degree_in(1), u32::MAX - 1);
+    // Mixed widths add up correctly.
+    let s = big.clone() + x(3) - big;
+    assert_eq!(s, x(3));
+}
+
+#[test]
+fn many_variables_span_words() {
+    let p: P = (0..40).map(x).fold(P::zero(), |a, b| a + b);
+    let sq = p.square();
+    assert_eq!(sq.len(), 40 * 41 / 2);
+    assert_eq!(sq.coefficient(&[(3, 1), (39, 1)]), q(2));
+    assert_eq!(sq.coefficient(&[(17, 2)]), q(1));
+    assert_eq!(sq.variables().len(), 40);
+    assert_eq!(sq.total_degree(), 2);
+    assert!(sq.is_canonical());
+}
+
+/// The product by all pairwise term products, sorted and combined by `from_terms`.
+fn naive_mul(a: &P, b: &P) -> P {
+    let mut terms = Vec::new();
+    for (ma, ca) in a.terms() {
+        for (mb, cb) in b.terms() {
+            let mut m = ma.exponents();
+            m.extend(mb.exponents());
+            terms.push((m, ca.mul_ref(cb)));
+        }
+    }
+    P::from_terms(terms)
+}
+
+/// A pseudo-random sparse polynomial: `n` terms over `nvars` variables, `per` variables per
+/// term with exponents below `emax`.
+fn sparse(seed: u64, n: usize, nvars: u32, per: usize, emax: u32) -> P {
+    let mut st = seed;
+    let mut next = move || {
+        st = st
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (st >> 33) as u32
+    };
+    let terms: Vec<(Vec<(Var, u32)>, Rational)> = (0..n)
+        .map(|_| {
+            let m = (0..per).map(|_| (next() % nvars, next() % emax)).collect();
+            (m, q(next() as i64 % 19 - 9))
+        })
+        .collect();
+    P::from_terms(terms)
+}
+
+#[test]
+fn every_multiplication_kernel_agrees_with_the_naive_product() {
+    let dense = (x(0) + x(1) + P::from_i64(2)).pow(5);
+    let cases = [
+        // Dense box.
+        (dense.clone(), (x(0) - x(1) + P::one()).pow(4)),
+        // Sparse, one-word keys.
+        (sparse(1, 30, 40, 3, 2), sparse(2, 25, 40, 3, 2)),
+        // Two-word keys.
+        (sparse(3, 30, 40, 4, 4), sparse(4, 30, 40, 4, 4)),
+        // Many key words (run-time width).
+        (sparse(5, 20, 60, 8, 60), sparse(6, 20, 60, 8, 60)),
+        // 16-bit fields.
+        (sparse(7, 10, 9, 3, 300), sparse(8, 12, 9, 3, 300)),
+    ];
+    for (a, b) in &cases {
+        let fast = a * b;
+        assert!(fast.is_canonical());
+        assert_eq!(fast, naive_mul(a, b));
+        assert_eq!(a.square(), naive_mul(a, a));
+        assert_eq!(a.square(), a * a);
+    }
+}
+
+#[test]
+fn large_sums_agree_with_repeated_addition() {
+    for (nvars, per, emax) in [(40, 3, 2), (60, 8, 60)] {
+        let parts: Vec<P> = (0..7).map(|i| sparse(i, 80, nvars, per, emax)).collect();
+        let folded = parts.iter().fold(P::zero(), |a, b| a + b);
+        let mut with_cancellation = parts.clone();
+        with_cancellation.push(-parts[3].clone());
+        let s = P::sum(parts);
+        assert!(s.is_canonical());
+        assert_eq!(s, folded);
+        let c = P::sum(with_cancellation);
+        assert!(c.is_canonical());
+        assert_eq!(c, &folded - &sparse(3, 80, nvars, per, emax));
+    }
+}
+
+#[test]
+fn unit_circle_reduction() {
+    // c = x0, s = x1: s^2 -> 1 - c^2.
+    let (c, s, t) = (x(0), x(1), x(2));
+    let rel = unit_circle_relation::<Rational>(0, 1);
+    let f = c.square() * t.pow(3) + s.square() * t.pow(3) - t.clone();
+    assert_eq!(f.reduce(std::slice::from_ref(&rel)), t.pow(3) - t);
+    let g = s.pow(5);
+    let want = s.clone() * (P::one() - c.square()).pow(2);
+    assert_eq!(g.reduce_unit_circle(&[(0, 1)]), want);
+    // The general division agrees with the closed form.
+    let h = s.pow(4) * c.clone() + s.pow(3) + P::from_i64(2);
+    let shape = h.widened_shape(8, 2);
+    let by_division = divide(&h, &[&rel], shape).ok().unwrap();
+    assert_eq!(by_division, h.reduce(&[rel]));
+}
+
+#[test]
+fn small_groebner_by_hand() {
+    // x = x1 > y = x0. <x^2 - y, x y - 1> has the reduced lex basis {y^3 - 1, x - y^2}.
+    let (y, xx) = (x(0), x(1));
+    let g = groebner(&[xx.square() - y.clone(), xx.clone() * &y - P::one()]);
+    assert_eq!(g, vec![y.pow(3) - P::one(), xx.clone() - y.square()]);
+    // Normal forms modulo the basis.
+    assert_eq!(xx.pow(3).reduce(&g), P::one());
+    assert!((xx.square() - y.clone()).reduce(&g).is_zero());
+    assert_eq!(
+        groebner(&[xx.clone(), P::one() + xx.clone()]),
+        vec![P::one()]
+    );
+}
+
+#[test]
+fn substitute_and_eval() {
+    let p = x(0).square() * x(1) + x(1) - P::from_i64(3);
+    let r = p.substitute(0, &(x(1) + P::one()));
+    assert_eq!(r, (x(1) + P::one()).square() * x(1) + x(1) - P::from_i64(3));
+    let v = p.eval(&[q(2), q(5)], Clone::clone);
+    assert_eq!(v, q(22));
+}
+
+#[test]
+fn printing() {
+    let vars = Vars::from_names(["c", "s", "x"]);
+    let p = unit_circle_relation::<Rational>(0, 1);
+    assert_eq!(p.display(&vars).to_string(), "s^2 + c^2 - 1");
+    let h = Rational::new(-3, 4).unwrap();
+    let p = P::monomial(h, &[(2, 2), (0, 1)]) - x(1) + P::constant(Rational::new(1, 2).unwrap());
+    assert_eq!(p.display(&vars).to_string(), "-3/4*c*x^2 - s + 1/2");
+    assert_eq!(P::zero().display(&vars).to_string(), "0");
+    assert_eq!(format!("{:?}", x(4)), "_x4");
+}

@@ -1,0 +1,165 @@
+//! Dense univariate polynomials over [`Rational`] and exact real root isolation.
+//!
+//! The question this module answers for the rest of the workspace is SPEC §2's: with the rational
+//! circle parameter `tau`, the discriminant `A(t)^2 - B(t)` of Spaeth's cylinder/sphere
+//! intersection, times `(1 + tau^2)^2`, is a polynomial `D(tau)` with rational coefficients, and the
+//! surfaces meet exactly where `D >= 0`. [`UPoly::nonnegative_set`] describes that set exactly, as a
+//! union of closed intervals whose finite endpoints are real roots of `D`, each isolated by a
+//! [`RootInterval`] with rational endpoints (or given exactly, when the root is rational).
+//! Nothing here uses floating point for a decision.
+//!
+//! A caveat for SPEC §2's callers: `tau = tan(t/2)` misses `t = pi`. The sign there is the sign
+//! of the limit of `D(tau) / (1 + tau^2)^2` as `tau -> inf`, i.e. of the coefficient of `tau^4`
+//! (zero if the degree dropped below 4); check it separately.
+//!
+//! # Representation
+//! A [`UPoly`] is the vector of its coefficients from the constant term up, without trailing
+//! zeros (the zero polynomial is the empty vector), so the representation is canonical and `==`
+//! is equality of polynomials. [`UPoly`] implements [`Ring`].
+//!
+//! # Algorithms
+//! * Division with remainder over Q; gcds by Euclid's algorithm in which every remainder is
+//!   replaced by its primitive part (integer coefficients with gcd 1, see [`UPoly::content`]):
+//!   the *primitive remainder sequence*, which keeps the coefficients as small as the remainders'
+//!   true sizes instead of letting the denominators grow as in the plain rational sequence.
+//! * Square-free parts `p / gcd(p, p')` and Yun's square-free decomposition
+//!   ([`UPoly::square_free_decomposition`]); root multiplicities come from the latter.
+//! * Sturm sequences, likewise normalised to primitive polynomials (positive factors only, which
+//!   leaves every sign, hence every sign-variation count, unchanged). Counting uses the Sturm
+//!   sequence of the square-free part: the number of distinct roots in `(a, b]` is
+//!   `V(a) - V(b)`, also when `a` or `b` is a root.
+//! * Isolation by bisection of `(-2^k, 2^k)`, with `2^k` above Cauchy's root bound, driven by
+//!   Sturm counts; a midpoint that is a root is recorded exactly and the bisection continues
+//!   from non-roots on either side of it (so no interval ever ends at a root). Afterwards every
+//!   interval is tested for a *rational* root: if the primitive square-free part has leading coefficient `l`,
+//!   a rational root `p/q` has `q | l` (rational root theorem), so `l * root` is an integer;
+//!   bisecting until the interval is shorter than `1/l` leaves at most one candidate `k / l`,
+//!   which is evaluated exactly. Hence [`RootInterval::is_exact`] holds **exactly when the root is
+//!   rational**.
+//! * Refinement ([`UPoly::refine`]) bisects on the sign of the square-free part, which changes
+//!   across every isolated root.
+//! * The sign on each gap between consecutive roots ([`UPoly::sign_chart`]) follows from the
+//!   leading coefficient and the multiplicities, without further evaluation.
+//!
+//! # Limits
+//! Dense representation: fine for the low degrees of the workspace (the discriminants are of
+//! degree at most 4), usable into the tens; Sturm sequences cost `O(n^2)` polynomial
+//! operations. Isolation of irrational roots bisects about `log2(l * 2^k)` times per root, `l` as
+//! above, so a square-free part with a huge leading coefficient makes it slower, never wrong.
+
+mod isolate;
+#[cfg(test)]
+mod tests;
+mod upoly;
+
+pub use isolate::sign_variations;
+pub use upoly::UPolyDisplay;
+
+use crate::poly::Var;
+use crate::Rational;
+use exactcheck_core::{Ring, Sign};
+use num_bigint::BigInt;
+use num_integer::Integer;
+
+/// The largest degree [`UPoly::from_poly`] accepts (the representation is dense).
+pub const MAX_FROM_POLY_DEGREE: u32 = 1 << 16;
+
+/// A dense univariate polynomial with [`Rational`] coefficients, in canonical form (see the
+/// module documentation).
+#[derive(Clone, PartialEq, Eq, Hash, Default)]
+pub struct UPoly {
+    /// Coefficients from degree 0 up; the last one (if any) is non-zero.
+    coeffs: Vec<Rational>,
+}
+
+/// The error of [`UPoly::from_poly`].
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum FromPolyError {
+    /// A variable other than the requested one occurs.
+    #[error("the polynomial is not univariate: variable #{0} occurs besides the requested one")]
+    OtherVariable(Var),
+    /// The degree exceeds [`MAX_FROM_POLY_DEGREE`].
+    #[error("degree {0} is too large for a dense univariate polynomial")]
+    DegreeTooLarge(u32),
+}
+
+/// An isolating interval of one real root of a polynomial.
+///
+/// Either `lo == hi`, and the root is exactly that rational number, or `lo < hi`, and the root
+/// lies in the **open** interval `(lo, hi)`, which contains no other root; then neither endpoint
+/// is a root. The intervals returned by [`UPoly::isolate_roots`] are exact exactly when the root
+/// is rational.
+#[derive(Clone, PartialEq, Eq, Hash)]
+pub struct RootInterval {
+    /// The lower end.
+    pub lo: Rational,
+    /// The upper end (`>= lo`).
+    pub hi: Rational,
+}
+
+/// A real root with its multiplicity.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct Root {
+    /// The isolating interval.
+    pub interval: RootInterval,
+    /// The multiplicity (`>= 1`).
+    pub multiplicity: u32,
+}
+
+/// The signs of a polynomial along the real line: its distinct real roots, increasing, and its
+/// (constant) sign on each gap between them.
+///
+/// `gaps.len() == roots.len() + 1`: `gaps[0]` is the sign on `(-inf, root 0)`, `gaps[i]` on
+/// `(root i-1, root i)`, the last on `(last root, +inf)`. For the zero polynomial `roots` is
+/// empty and `gaps == [Sign::Zero]`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SignChart {
+    /// The distinct real roots, increasing.
+    pub roots: Vec<Root>,
+    /// The sign on each open gap.
+    pub gaps: Vec<Sign>,
+}
+
+/// An end of an [`Interval`]: an infinity or a real root.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub enum Bound {
+    /// Minus infinity (the interval is unbounded below).
+    NegInf,
+    /// A real root of the polynomial the interval was computed for (included in the interval).
+    Root(RootInterval),
+    /// Plus infinity (the interval is unbounded above).
+    PosInf,
+}
+
+/// A closed interval of the real line, possibly unbounded or a single point: the set of `x` with
+/// `lo <= x <= hi` (a finite end is included, an infinite end is not a point).
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct Interval {
+    /// The lower end ([`Bound::NegInf`] or a root).
+    pub lo: Bound,
+    /// The upper end (a root or [`Bound::PosInf`]).
+    pub hi: Bound,
+}
+
+// ------------------------------------------------------------------------------ small helpers
+
+fn half() -> Rational {
+    Rational::new(1, 2).unwrap_or(Rational::ONE)
+}
+
+fn midpoint(a: &Rational, b: &Rational) -> Rational {
+    a.add_ref(b) * half()
+}
+
+/// `floor(x)` as an integer.
+fn floor(x: &Rational) -> BigInt {
+    x.numer().div_floor(&x.denom())
+}
+
+fn sign_neg(s: Sign) -> Sign {
+    match s {
+        Sign::Negative => Sign::Positive,
+        Sign::Zero => Sign::Zero,
+        Sign::Positive => Sign::Negative,
+    }
+}
