@@ -12,6 +12,7 @@ pub mod bezier;
 pub mod cylinder_sphere;
 pub mod linalg;
 pub mod miquel;
+pub mod ops;
 pub mod quadric;
 pub mod rng;
 pub mod scalar;
