@@ -21,6 +21,7 @@ pub mod rational;
 pub mod to_f64;
 pub mod traits;
 pub mod univariate;
+pub mod w1;
 
 pub use modp::ModP;
 pub use plain::PlainRational;

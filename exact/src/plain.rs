@@ -9,7 +9,6 @@ use exactcheck_core::{Field, OrderedField, Ring, ZeroDivisor};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
-use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 
 /// num-rational's `BigRational` as a scalar of the ladder (the unoptimised baseline).
 #[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Default)]
@@ -33,49 +32,22 @@ impl std::fmt::Display for PlainRational {
     }
 }
 
-macro_rules! plain_binop {
-    ($tr:ident, $m:ident, $atr:ident, $am:ident) => {
-        impl $tr for PlainRational {
-            type Output = PlainRational;
-            fn $m(self, rhs: PlainRational) -> PlainRational {
-                PlainRational(self.0.$m(rhs.0))
-            }
-        }
-        impl<'a> $tr<&'a PlainRational> for PlainRational {
-            type Output = PlainRational;
-            fn $m(self, rhs: &'a PlainRational) -> PlainRational {
-                PlainRational(self.0.$m(&rhs.0))
-            }
-        }
-        impl<'a> $tr<&'a PlainRational> for &'a PlainRational {
-            type Output = PlainRational;
-            fn $m(self, rhs: &'a PlainRational) -> PlainRational {
-                PlainRational((&self.0).$m(&rhs.0))
-            }
-        }
-        impl $atr for PlainRational {
-            fn $am(&mut self, rhs: PlainRational) {
-                self.0.$am(rhs.0)
-            }
-        }
-        impl<'a> $atr<&'a PlainRational> for PlainRational {
-            fn $am(&mut self, rhs: &'a PlainRational) {
-                self.0.$am(&rhs.0)
-            }
-        }
-    };
-}
-
-plain_binop!(Add, add, AddAssign, add_assign);
-plain_binop!(Sub, sub, SubAssign, sub_assign);
-plain_binop!(Mul, mul, MulAssign, mul_assign);
-plain_binop!(Div, div, DivAssign, div_assign);
-
-impl Neg for PlainRational {
-    type Output = PlainRational;
-    fn neg(self) -> PlainRational {
-        PlainRational(-self.0)
-    }
+// The num-rational operators in all their forms (owned ones reuse storage), as the baseline does.
+exactcheck_core::ring_ops! {
+    impl[] PlainRational;
+    Neg::neg: |a| PlainRational(-&a.0), owned |a| PlainRational(-a.0);
+    Add::add, AddAssign::add_assign: |a, b| PlainRational(&a.0 + &b.0),
+        owned |a, b| PlainRational(a.0 + &b.0),
+        by_value |a, b| PlainRational(a.0 + b.0);
+    Sub::sub, SubAssign::sub_assign: |a, b| PlainRational(&a.0 - &b.0),
+        owned |a, b| PlainRational(a.0 - &b.0),
+        by_value |a, b| PlainRational(a.0 - b.0);
+    Mul::mul, MulAssign::mul_assign: |a, b| PlainRational(&a.0 * &b.0),
+        owned |a, b| PlainRational(a.0 * &b.0),
+        by_value |a, b| PlainRational(a.0 * b.0);
+    Div::div, DivAssign::div_assign: |a, b| PlainRational(&a.0 / &b.0),
+        owned |a, b| PlainRational(a.0 / &b.0),
+        by_value |a, b| PlainRational(a.0 / b.0);
 }
 
 impl Ring for PlainRational {

@@ -27,9 +27,9 @@ use exactcheck_core::{Field, OrderedField, Ring, Sign, ZeroDivisor};
 use num_bigint::{BigInt, BigUint, Sign as BigSign};
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
+use std::borrow::Cow;
 use std::cmp::Ordering;
 use std::fmt;
-use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 use std::str::FromStr;
 
 /// An exact rational number, always in canonical form (see the module documentation).
@@ -206,8 +206,7 @@ impl Rational {
     }
 
     /// The numerator and denominator as big integers, borrowed where possible.
-    fn big_parts(&self) -> (std::borrow::Cow<'_, BigInt>, std::borrow::Cow<'_, BigUint>) {
-        use std::borrow::Cow;
+    fn big_parts(&self) -> (Cow<'_, BigInt>, Cow<'_, BigUint>) {
         match &self.0 {
             Repr::Small(n, d) => (
                 Cow::Owned(BigInt::from(*n)),
@@ -266,7 +265,26 @@ impl Rational {
         }
         let (a, b) = self.big_parts();
         let (c, d) = rhs.big_parts();
-        add_big(&a, &b, &c, &d)
+        add_big(&a, &b, &c, &d, false)
+    }
+
+    /// `self - rhs` directly (not `self + (-rhs)`, which would copy a big `rhs` to negate it).
+    fn sub_impl(&self, rhs: &Rational) -> Rational {
+        if let (Repr::Small(a, b), Repr::Small(c, d)) = (&self.0, &rhs.0) {
+            // `fits` excludes i128::MIN, so `-c` cannot overflow.
+            if let Some(r) = add_small(*a, *b, -*c, *d) {
+                return r;
+            }
+        }
+        if rhs.is_zero_value() {
+            return self.clone();
+        }
+        if self.is_zero_value() {
+            return rhs.neg_impl();
+        }
+        let (a, b) = self.big_parts();
+        let (c, d) = rhs.big_parts();
+        add_big(&a, &b, &c, &d, true)
     }
 
     fn mul_impl(&self, rhs: &Rational) -> Rational {
@@ -427,11 +445,18 @@ fn to_signed(x: BigUint) -> BigInt {
     BigInt::from_biguint(BigSign::Plus, x)
 }
 
-/// `a/b + c/d` on big parts by Knuth's method (TAOCP 4.5.1): gcds only of the denominators and of
-/// the new numerator against their (usually small) common factor.
-fn add_big(a: &BigInt, b: &BigUint, c: &BigInt, d: &BigUint) -> Rational {
+/// `x * y` for a signed `x` and an unsigned `y`, without copying `y` into a `BigInt`.
+fn mul_signed(x: &BigInt, y: &BigUint) -> BigInt {
+    BigInt::from_biguint(x.sign(), x.magnitude() * y)
+}
+
+/// `a/b + c/d` (`a/b - c/d` when `sub`) on big parts by Knuth's method (TAOCP 4.5.1): gcds only
+/// of the denominators and of the new numerator against their (usually small) common factor.
+/// Borrows every operand; only the result's parts are allocated.
+fn add_big(a: &BigInt, b: &BigUint, c: &BigInt, d: &BigUint, sub: bool) -> Rational {
+    let combine = |x: BigInt, y: BigInt| if sub { x - y } else { x + y };
     if b == d {
-        let s = a + c;
+        let s = if sub { a - c } else { a + c };
         if s.is_zero() {
             return Rational::ZERO;
         }
@@ -444,7 +469,7 @@ fn add_big(a: &BigInt, b: &BigUint, c: &BigInt, d: &BigUint) -> Rational {
     }
     let g = gcd_biguint(b, d);
     if g.is_one() {
-        let n = a * to_signed(d.clone()) + c * to_signed(b.clone());
+        let n = combine(mul_signed(a, d), mul_signed(c, b));
         if n.is_zero() {
             return Rational::ZERO;
         }
@@ -452,7 +477,7 @@ fn add_big(a: &BigInt, b: &BigUint, c: &BigInt, d: &BigUint) -> Rational {
     }
     let b1 = b / &g;
     let d1 = d / &g;
-    let t = a * to_signed(d1) + c * to_signed(b1.clone());
+    let t = combine(mul_signed(a, &d1), mul_signed(c, &b1));
     if t.is_zero() {
         return Rational::ZERO;
     }
@@ -465,101 +490,42 @@ fn add_big(a: &BigInt, b: &BigUint, c: &BigInt, d: &BigUint) -> Rational {
     }
 }
 
-/// `(a/b)(c/d)` on big parts by Henrici's method: cancel `gcd(a, d)` and `gcd(c, b)` first.
+/// `x / g`, borrowing `x` when `g` is one.
+fn div_unless_one<'a>(x: &'a BigUint, g: &BigUint) -> Cow<'a, BigUint> {
+    if g.is_one() {
+        Cow::Borrowed(x)
+    } else {
+        Cow::Owned(x / g)
+    }
+}
+
+/// `(a/b)(c/d)` on big parts by Henrici's method: cancel `gcd(a, d)` and `gcd(c, b)` first. The
+/// magnitudes are multiplied borrowed (no copy when a gcd is one) and the sign applied last.
 fn mul_big(a: &BigInt, b: &BigUint, c: &BigInt, d: &BigUint) -> Rational {
     let g1 = gcd_biguint(a.magnitude(), d);
     let g2 = gcd_biguint(c.magnitude(), b);
-    let (a1, d1) = if g1.is_one() {
-        (a.clone(), d.clone())
-    } else {
-        (a / to_signed(g1.clone()), d / &g1)
-    };
-    let (c1, b1) = if g2.is_one() {
-        (c.clone(), b.clone())
-    } else {
-        (c / to_signed(g2.clone()), b / &g2)
-    };
-    Rational::from_coprime(a1 * c1, b1 * d1)
+    let (a1, d1) = (div_unless_one(a.magnitude(), &g1), div_unless_one(d, &g1));
+    let (c1, b1) = (div_unless_one(c.magnitude(), &g2), div_unless_one(b, &g2));
+    let num = BigInt::from_biguint(a.sign() * c.sign(), a1.as_ref() * c1.as_ref());
+    Rational::from_coprime(num, b1.as_ref() * d1.as_ref())
 }
 
 // ---------------------------------------------------------------------- operator plumbing
 
-macro_rules! forward_binop {
-    ($tr:ident, $m:ident, $atr:ident, $am:ident, |$x:ident, $y:ident| $body:expr) => {
-        impl<'a, 'b> $tr<&'b Rational> for &'a Rational {
-            type Output = Rational;
-            #[inline]
-            fn $m(self, rhs: &'b Rational) -> Rational {
-                let ($x, $y) = (self, rhs);
-                $body
-            }
-        }
-        impl<'b> $tr<&'b Rational> for Rational {
-            type Output = Rational;
-            #[inline]
-            fn $m(self, rhs: &'b Rational) -> Rational {
-                (&self).$m(rhs)
-            }
-        }
-        impl<'a> $tr<Rational> for &'a Rational {
-            type Output = Rational;
-            #[inline]
-            fn $m(self, rhs: Rational) -> Rational {
-                self.$m(&rhs)
-            }
-        }
-        impl $tr<Rational> for Rational {
-            type Output = Rational;
-            #[inline]
-            fn $m(self, rhs: Rational) -> Rational {
-                (&self).$m(&rhs)
-            }
-        }
-        impl<'b> $atr<&'b Rational> for Rational {
-            #[inline]
-            fn $am(&mut self, rhs: &'b Rational) {
-                *self = $tr::$m(&*self, rhs);
-            }
-        }
-        impl $atr<Rational> for Rational {
-            #[inline]
-            fn $am(&mut self, rhs: Rational) {
-                *self = $tr::$m(&*self, &rhs);
-            }
-        }
+exactcheck_core::ring_ops! {
+    impl[] Rational;
+    Neg::neg: |x| x.neg_impl(), owned |x| {
+        let mut x = x;
+        x.neg_in_place();
+        x
     };
-}
-
-forward_binop!(Add, add, AddAssign, add_assign, |x, y| x.add_impl(y));
-forward_binop!(Sub, sub, SubAssign, sub_assign, |x, y| x
-    .add_impl(&y.neg_impl()));
-forward_binop!(Mul, mul, MulAssign, mul_assign, |x, y| x.mul_impl(y));
-forward_binop!(
-    Div,
-    div,
-    DivAssign,
-    div_assign,
-    |x, y| match x.checked_div(y) {
+    Add::add, AddAssign::add_assign: |x, y| x.add_impl(y);
+    Sub::sub, SubAssign::sub_assign: |x, y| x.sub_impl(y);
+    Mul::mul, MulAssign::mul_assign: |x, y| x.mul_impl(y);
+    Div::div, DivAssign::div_assign: |x, y| match x.checked_div(y) {
         Ok(q) => q,
         Err(_) => panic!("Rational division by zero (use Field::checked_div to handle it)"),
-    }
-);
-
-impl Neg for Rational {
-    type Output = Rational;
-    #[inline]
-    fn neg(mut self) -> Rational {
-        self.neg_in_place();
-        self
-    }
-}
-
-impl Neg for &Rational {
-    type Output = Rational;
-    #[inline]
-    fn neg(self) -> Rational {
-        self.neg_impl()
-    }
+    };
 }
 
 impl PartialOrd for Rational {
@@ -607,7 +573,7 @@ impl Ring for Rational {
     }
     #[inline]
     fn sub_ref(&self, rhs: &Self) -> Self {
-        self - rhs
+        self.sub_impl(rhs)
     }
     #[inline]
     fn mul_ref(&self, rhs: &Self) -> Self {

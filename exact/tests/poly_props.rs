@@ -4,9 +4,10 @@
 //! the workspace proves with them (SPEC §1 Lebesgue (7) and Dietz (8), SPEC §2 unit-circle
 //! reduction, SPEC §4 Chiang's theorem as workload W1).
 
-use exactcheck_core::{binomial, Ring};
+use exactcheck_core::Ring;
 use exactcheck_exact::expr::{parse_expr, parse_poly, w1_text, AddOp, Expr, ExprKind, MulOp};
 use exactcheck_exact::poly::{groebner, unit_circle_relation, Poly, Var, Vars};
+use exactcheck_exact::w1::ring_residuals;
 use exactcheck_exact::Rational;
 use proptest::prelude::*;
 
@@ -427,68 +428,12 @@ fn w1_prints_and_parses_back() {
     assert_eq!(back, l);
 }
 
-/// W1 built with the Ring API, as `w1_identity.py`'s flint backend does; returns the x-component
-/// residual and the weight residual.
-fn w1_ring(m: u32, n: u32, negative: bool) -> (P, P) {
-    let mut vars = Vars::new();
-    let mut v = |name: String| -> P { vars.poly(&name) };
-    let (t, a, b, c, d) = (
-        v("t".into()),
-        v("a".into()),
-        v("b".into()),
-        v("c".into()),
-        v("d".into()),
-    );
-    let mut seq = |s: &str, k: u32| (0..=k).map(|j| v(format!("{s}{j}"))).collect::<Vec<P>>();
-    let (px, py, pz) = (seq("px", n), seq("py", n), seq("pz", n));
-    let (qx, qy, qz) = (seq("qx", m), seq("qy", m), seq("qz", m));
-    let one = P::one();
-    let bern = |deg: u32, k: u32| {
-        P::from_i64(binomial(deg, k) as i64) * t.pow(k) * (&one - &t).pow(deg - k)
-    };
-    let bez =
-        |deg: u32, cp: &[P]| P::sum((0..=deg).map(|j| bern(deg, j) * &cp[j as usize]).collect());
-    let (bx, by, bz) = (bez(n, &px), bez(n, &py), bez(n, &pz));
-    let (vx, vy, vz) = (bez(m, &qx), bez(m, &qy), bez(m, &qz));
-    let nv = &a * &vx + &b * &vy + &c * &vz;
-    let nb = &a * &bx + &b * &by + &c * &bz;
-    let p_lhs = &nv * &bx - (nb + &d) * &vx;
-    let nq: Vec<P> = (0..=m as usize)
-        .map(|i| &a * &qx[i] + &b * &qy[i] + &c * &qz[i])
-        .collect();
-    let np: Vec<P> = (0..=n as usize)
-        .map(|j| &a * &px[j] + &b * &py[j] + &c * &pz[j])
-        .collect();
-    let mut p_rhs = Vec::new();
-    let mut q_rhs = Vec::new();
-    for k in 0..=m + n {
-        let (mut pt, mut wt) = (Vec::new(), Vec::new());
-        for i in k.saturating_sub(n)..=k.min(m) {
-            let j = k - i;
-            let mut phi = q(
-                (binomial(m, i) * binomial(n, j)) as i64,
-                binomial(m + n, k) as i64,
-            );
-            if negative && i == 0 && j == 0 {
-                phi += q(1, 7);
-            }
-            let phi = P::constant(phi);
-            let (i, j) = (i as usize, j as usize);
-            pt.push(&phi * &(&nq[i] * &px[j] - (&np[j] + &d) * &qx[i]));
-            wt.push(&phi * &nq[i]);
-        }
-        p_rhs.push(bern(m + n, k) * P::sum(pt));
-        q_rhs.push(bern(m + n, k) * P::sum(wt));
-    }
-    (p_lhs - P::sum(p_rhs), nv - P::sum(q_rhs))
-}
-
 #[test]
 fn w1_identity_with_the_ring_api() {
     for (m, n) in [(2, 3), (4, 6), (8, 13)] {
-        let (dp, dq) = w1_ring(m, n, false);
+        let (dp, dq) = ring_residuals(m, n, false);
         assert!(dp.is_zero() && dq.is_zero(), "({m},{n})");
-        let (dp, dq) = w1_ring(m, n, true);
+        let (dp, dq) = ring_residuals(m, n, true);
         assert!(!dp.is_zero() && !dq.is_zero(), "({m},{n}) --negative");
     }
 }

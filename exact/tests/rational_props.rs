@@ -111,6 +111,92 @@ proptest! {
     }
 }
 
+/// Big rationals only: multi-limb numerators and denominators with shared factors (the paths of
+/// `add_big`/`mul_big` and the direct subtraction), and, with `mixed`, one inline operand.
+fn multi_limb() -> impl Strategy<Value = BigRational> {
+    let limbs = || proptest::collection::vec(any::<u32>(), 5..12);
+    (limbs(), limbs(), any::<bool>(), 1u64..1 << 40).prop_map(|(n, d, neg, k)| {
+        let sign = if neg {
+            num_bigint::Sign::Minus
+        } else {
+            num_bigint::Sign::Plus
+        };
+        let n = BigInt::from_slice(sign, &n) * k;
+        let d = BigInt::from_slice(num_bigint::Sign::Plus, &d) * k + 1;
+        BigRational::new(n, d)
+    })
+}
+
+fn fast_and_plain(b: &BigRational) -> (Rational, PlainRational) {
+    (Rational::from(b), PlainRational(b.clone()))
+}
+
+/// The fast result is canonical and equals the plain one.
+fn same(fast: &Rational, plain: &PlainRational) -> Result<(), TestCaseError> {
+    prop_assert!(fast.is_canonical(), "not canonical: {fast:?}");
+    prop_assert_eq!(fast.to_big_rational(), plain.to_big_rational());
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(500))]
+
+    /// Subtraction and multiplication in every operand form, on big and mixed-tier inputs,
+    /// against `PlainRational`: `x - y` is computed directly (no negated copy of `y`) and
+    /// `mul_big` multiplies borrowed magnitudes, so each form must still give canonical values.
+    #[test]
+    fn big_sub_and_mul_match_plain(
+        bx in multi_limb(),
+        by in multi_limb(),
+        small in any::<i64>(),
+        shared in any::<bool>(),
+    ) {
+        // With `shared`, y has x's denominator (the equal-denominator path of add_big).
+        let by = if shared { BigRational::new(by.numer().clone(), bx.denom().clone()) } else { by };
+        let (x, px) = fast_and_plain(&bx);
+        let (y, py) = fast_and_plain(&by);
+        let (z, pz) = fast_and_plain(&BigRational::from_integer(BigInt::from(small)));
+        for (a, pa, b, pb) in [(&x, &px, &y, &py), (&x, &px, &z, &pz), (&z, &pz, &x, &px), (&x, &px, &x, &px)] {
+            same(&(a - b), &(pa.clone() - pb))?;
+            same(&(a.clone() - b), &(pa.clone() - pb))?;
+            same(&(a.clone() - b.clone()), &(pa.clone() - pb))?;
+            same(&(a * b), &(pa.clone() * pb))?;
+            same(&(a.clone() * b.clone()), &(pa.clone() * pb))?;
+            same(&a.sub_ref(b), &(pa.clone() - pb))?;
+            let mut d = a.clone();
+            d -= b;
+            same(&d, &(pa.clone() - pb))?;
+            let mut m = a.clone();
+            m *= b.clone();
+            same(&m, &(pa.clone() * pb))?;
+        }
+        prop_assert!((&x - &x).is_zero());
+        prop_assert_eq!(&(&x - &y) + &y, x.clone());
+    }
+}
+
+#[test]
+fn big_products_cancel_crossed_factors() {
+    // (p/q) * (q/p) with multi-limb coprime p, q: both crossed gcds are the whole operands.
+    let p: BigInt = (BigInt::from(1) << 200) + 1;
+    let q: BigInt = (BigInt::from(1) << 199) - 1;
+    let x = Rational::from(&BigRational::new(p.clone(), q.clone()));
+    let y = Rational::from(&BigRational::new(q, p));
+    let one = &x * &y;
+    assert!(one.is_inline() && one == Rational::one());
+    // and a product with gcds of one keeps every factor.
+    let z = Rational::from(&BigRational::new(
+        BigInt::from(3),
+        (BigInt::from(1) << 130) + 7,
+    ));
+    let xz = &x * &z;
+    assert!(xz.is_canonical());
+    assert_eq!(
+        xz.to_big_rational(),
+        x.to_big_rational() * z.to_big_rational()
+    );
+}
+
 #[test]
 fn tier_boundary() {
     // 2^127 - 1 is the largest inline magnitude; one more goes to the big tier and back.

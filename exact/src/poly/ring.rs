@@ -7,7 +7,6 @@ use std::borrow::Cow;
 use std::cmp::Ordering;
 use std::collections::HashMap;
 use std::fmt;
-use std::ops::{Add, AddAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 
 // ------------------------------------------------------------------------------------ Poly
 
@@ -816,69 +815,14 @@ impl<C: Ring> Ring for Poly<C> {
     }
 }
 
-impl<C: Ring> Neg for Poly<C> {
-    type Output = Poly<C>;
-    fn neg(self) -> Poly<C> {
-        self.neg_owned()
-    }
+exactcheck_core::ring_ops! {
+    impl[C: Ring] Poly<C>;
+    Neg::neg: |a| a.neg_impl(), owned |a| a.neg_owned();
+    Add::add, AddAssign::add_assign: |a, b| a.add_impl(b, false),
+        owned |a, b| a.add_left_owned(b, false),
+        by_value |a, b| a.add_owned(b, false);
+    Sub::sub, SubAssign::sub_assign: |a, b| a.add_impl(b, true),
+        owned |a, b| a.add_left_owned(b, true),
+        by_value |a, b| a.add_owned(b, true);
+    Mul::mul, MulAssign::mul_assign: |a, b| a.mul_impl(b);
 }
-
-impl<C: Ring> Neg for &Poly<C> {
-    type Output = Poly<C>;
-    fn neg(self) -> Poly<C> {
-        self.neg_impl()
-    }
-}
-
-macro_rules! poly_binop {
-    ($tr:ident, $m:ident, $atr:ident, $am:ident, |$a:ident, $b:ident|
-        owned: $owned:expr, left_owned: $left:expr, borrowed: $borrowed:expr) => {
-        impl<C: Ring> $tr<Poly<C>> for Poly<C> {
-            type Output = Poly<C>;
-            fn $m(self, rhs: Poly<C>) -> Poly<C> {
-                let ($a, $b) = (self, rhs);
-                $owned
-            }
-        }
-        impl<C: Ring> $tr<&Poly<C>> for Poly<C> {
-            type Output = Poly<C>;
-            fn $m(self, rhs: &Poly<C>) -> Poly<C> {
-                let ($a, $b) = (self, rhs);
-                $left
-            }
-        }
-        impl<C: Ring> $tr<&Poly<C>> for &Poly<C> {
-            type Output = Poly<C>;
-            fn $m(self, rhs: &Poly<C>) -> Poly<C> {
-                let ($a, $b) = (self, rhs);
-                $borrowed
-            }
-        }
-        impl<C: Ring> $tr<Poly<C>> for &Poly<C> {
-            type Output = Poly<C>;
-            fn $m(self, rhs: Poly<C>) -> Poly<C> {
-                let ($a, $b) = (self, &rhs);
-                $borrowed
-            }
-        }
-        impl<C: Ring> $atr<Poly<C>> for Poly<C> {
-            fn $am(&mut self, rhs: Poly<C>) {
-                let lhs = std::mem::take(self);
-                *self = $tr::$m(lhs, rhs);
-            }
-        }
-        impl<C: Ring> $atr<&Poly<C>> for Poly<C> {
-            fn $am(&mut self, rhs: &Poly<C>) {
-                let lhs = std::mem::take(self);
-                *self = $tr::$m(lhs, rhs);
-            }
-        }
-    };
-}
-
-poly_binop!(Add, add, AddAssign, add_assign, |a, b|
-    owned: a.add_owned(b, false), left_owned: a.add_left_owned(b, false), borrowed: a.add_impl(b, false));
-poly_binop!(Sub, sub, SubAssign, sub_assign, |a, b|
-    owned: a.add_owned(b, true), left_owned: a.add_left_owned(b, true), borrowed: a.add_impl(b, true));
-poly_binop!(Mul, mul, MulAssign, mul_assign, |a, b|
-    owned: a.mul_impl(&b), left_owned: a.mul_impl(b), borrowed: a.mul_impl(b));

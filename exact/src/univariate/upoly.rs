@@ -6,7 +6,7 @@ use crate::poly::Poly;
 use exactcheck_core::ZeroDivisor;
 use num_traits::One;
 use std::fmt;
-use std::ops::{Add, AddAssign, Mul, MulAssign, Neg, Sub, SubAssign};
+use std::ops::Mul;
 
 // ------------------------------------------------------------------------------ UPoly basics
 
@@ -472,61 +472,12 @@ impl fmt::Debug for UPoly {
 
 // ------------------------------------------------------------------------------ operators
 
-macro_rules! upoly_binop {
-    ($tr:ident, $m:ident, $atr:ident, $am:ident, $k:ident) => {
-        impl<'a, 'b> $tr<&'b UPoly> for &'a UPoly {
-            type Output = UPoly;
-            fn $m(self, rhs: &'b UPoly) -> UPoly {
-                self.$k(rhs)
-            }
-        }
-        impl<'b> $tr<&'b UPoly> for UPoly {
-            type Output = UPoly;
-            fn $m(self, rhs: &'b UPoly) -> UPoly {
-                self.$k(rhs)
-            }
-        }
-        impl<'a> $tr<UPoly> for &'a UPoly {
-            type Output = UPoly;
-            fn $m(self, rhs: UPoly) -> UPoly {
-                self.$k(&rhs)
-            }
-        }
-        impl $tr<UPoly> for UPoly {
-            type Output = UPoly;
-            fn $m(self, rhs: UPoly) -> UPoly {
-                self.$k(&rhs)
-            }
-        }
-        impl<'b> $atr<&'b UPoly> for UPoly {
-            fn $am(&mut self, rhs: &'b UPoly) {
-                *self = self.$k(rhs);
-            }
-        }
-        impl $atr<UPoly> for UPoly {
-            fn $am(&mut self, rhs: UPoly) {
-                *self = self.$k(&rhs);
-            }
-        }
-    };
-}
-
-upoly_binop!(Add, add, AddAssign, add_assign, add_impl);
-upoly_binop!(Sub, sub, SubAssign, sub_assign, sub_impl);
-upoly_binop!(Mul, mul, MulAssign, mul_assign, mul_impl);
-
-impl Neg for UPoly {
-    type Output = UPoly;
-    fn neg(self) -> UPoly {
-        self.neg_impl()
-    }
-}
-
-impl Neg for &UPoly {
-    type Output = UPoly;
-    fn neg(self) -> UPoly {
-        self.neg_impl()
-    }
+exactcheck_core::ring_ops! {
+    impl[] UPoly;
+    Neg::neg: |a| a.neg_impl();
+    Add::add, AddAssign::add_assign: |a, b| a.add_impl(b);
+    Sub::sub, SubAssign::sub_assign: |a, b| a.sub_impl(b);
+    Mul::mul, MulAssign::mul_assign: |a, b| a.mul_impl(b);
 }
 
 impl Mul<&Rational> for &UPoly {
