@@ -4,7 +4,7 @@
 //! the workspace proves with them (SPEC §1 Lebesgue (7) and Dietz (8), SPEC §2 unit-circle
 //! reduction, SPEC §4 Chiang's theorem as workload W1).
 
-use exactcheck_core::Ring;
+use exactcheck_core::{Ring, Rng};
 use exactcheck_exact::expr::{parse_expr, parse_poly, w1_text, AddOp, Expr, ExprKind, MulOp};
 use exactcheck_exact::poly::{groebner, unit_circle_relation, Poly, Var, Vars};
 use exactcheck_exact::w1::ring_residuals;
@@ -79,6 +79,66 @@ fn naive_mul(a: &P, b: &P) -> P {
         }
     }
     P::from_terms(terms)
+}
+
+/// A pseudo-random sparse polynomial: `n` terms over `nvars` variables, `per` variables per
+/// term with exponents below `emax`.
+fn sparse(seed: u64, n: usize, nvars: u32, per: usize, emax: u32) -> P {
+    let mut rng = Rng::new(seed);
+    let terms: Vec<(Vec<(Var, u32)>, Rational)> = (0..n)
+        .map(|_| {
+            let m = (0..per)
+                .map(|_| {
+                    (
+                        rng.below(nvars.into()) as Var,
+                        rng.below(emax.into()) as u32,
+                    )
+                })
+                .collect();
+            (m, int(rng.below(19) as i64 - 9))
+        })
+        .collect();
+    P::from_terms(terms)
+}
+
+#[test]
+fn every_multiplication_kernel_agrees_with_the_naive_product() {
+    let dense = (P::var(0) + P::var(1) + P::from_i64(2)).pow(5);
+    let cases = [
+        // Dense box.
+        (dense.clone(), (P::var(0) - P::var(1) + P::one()).pow(4)),
+        // Sparse, one-word keys.
+        (sparse(1, 30, 40, 3, 2), sparse(2, 25, 40, 3, 2)),
+        // Two-word keys.
+        (sparse(3, 30, 40, 4, 4), sparse(4, 30, 40, 4, 4)),
+        // Many key words (run-time width).
+        (sparse(5, 20, 60, 8, 60), sparse(6, 20, 60, 8, 60)),
+        // 16-bit fields.
+        (sparse(7, 10, 9, 3, 300), sparse(8, 12, 9, 3, 300)),
+    ];
+    for (a, b) in &cases {
+        let fast = a * b;
+        assert!(fast.is_canonical());
+        assert_eq!(fast, naive_mul(a, b));
+        assert_eq!(a.square(), naive_mul(a, a));
+        assert_eq!(a.square(), a * a);
+    }
+}
+
+#[test]
+fn large_sums_agree_with_repeated_addition() {
+    for (nvars, per, emax) in [(40, 3, 2), (60, 8, 60)] {
+        let parts: Vec<P> = (0..7).map(|i| sparse(i, 80, nvars, per, emax)).collect();
+        let folded = parts.iter().fold(P::zero(), |a, b| a + b);
+        let mut with_cancellation = parts.clone();
+        with_cancellation.push(-parts[3].clone());
+        let s = P::sum(parts);
+        assert!(s.is_canonical());
+        assert_eq!(s, folded);
+        let c = P::sum(with_cancellation);
+        assert!(c.is_canonical());
+        assert_eq!(c, &folded - &sparse(3, 80, nvars, per, emax));
+    }
 }
 
 proptest! {

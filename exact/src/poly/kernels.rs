@@ -483,6 +483,26 @@ pub(super) fn push_sum(out: &mut Vec<u64>, a: &[u64], b: &[u64]) {
     out.extend(a.iter().zip(b).map(|(x, y)| x.wrapping_add(*y)));
 }
 
+/// Sets stream `i`'s slot to the key of the term product `f_i g_j` (keys `k` words wide in
+/// `fk`, `gk`) and pushes the stream on the heap.
+#[inline]
+fn push_product(
+    heap: &mut Heap,
+    slots: &mut [u64],
+    k: usize,
+    fk: &[u64],
+    i: usize,
+    gk: &[u64],
+    j: usize,
+) {
+    add_mono(
+        &mut slots[i * k..(i + 1) * k],
+        &fk[i * k..(i + 1) * k],
+        &gk[j * k..(j + 1) * k],
+    );
+    heap.push(i as u32, slots, k);
+}
+
 /// Johnson's heap multiplication of two sorted term lists (`f` the shorter, both with at least
 /// two terms), with Monagan–Pearce chained stream insertion: stream `i` is `f_i * g_j` for
 /// increasing `j`, and stream `i + 1` enters the heap when stream `i` leaves its first term; the
@@ -514,21 +534,11 @@ pub(super) fn mul_heap<C: Ring, const K: usize>(
         if j == 0 && i + 1 < nf {
             let n = i + 1;
             js[n] = 0;
-            add_mono(
-                &mut slots[n * k..(n + 1) * k],
-                &fk[n * k..(n + 1) * k],
-                &gk[0..k],
-            );
-            heap.push(n as u32, slots, k);
+            push_product(heap, slots, k, fk, n, gk, 0);
         }
         if j + 1 < ng {
             js[i] = j + 1;
-            add_mono(
-                &mut slots[i * k..(i + 1) * k],
-                &fk[i * k..(i + 1) * k],
-                &gk[(j + 1) * k..(j + 2) * k],
-            );
-            heap.push(i as u32, slots, k);
+            push_product(heap, slots, k, fk, i, gk, j + 1);
         }
     };
 
@@ -745,21 +755,11 @@ pub(super) fn square_heap<C: Ring, const K: usize>(
         if j == i + 1 && i + 1 < n {
             let m = i + 1;
             js[m] = m;
-            add_mono(
-                &mut slots[m * k..(m + 1) * k],
-                &fk[m * k..(m + 1) * k],
-                &fk[m * k..(m + 1) * k],
-            );
-            heap.push(m as u32, slots, k);
+            push_product(heap, slots, k, fk, m, fk, m);
         }
         if j + 1 < n {
             js[i] = j + 1;
-            add_mono(
-                &mut slots[i * k..(i + 1) * k],
-                &fk[i * k..(i + 1) * k],
-                &fk[(j + 1) * k..(j + 2) * k],
-            );
-            heap.push(i as u32, slots, k);
+            push_product(heap, slots, k, fk, i, fk, j + 1);
         }
     };
     // Diagonal products go to `diag`, off-diagonal ones (to be doubled) to `off`.
