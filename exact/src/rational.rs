@@ -127,8 +127,8 @@ impl Rational {
         debug_assert!(!den.is_zero());
         if den.bits() <= 127 && num.magnitude().bits() <= 127 {
             // Both fit: |x| < 2^127, so the conversions cannot fail.
-            let n = num.to_i128().unwrap_or_default();
-            let d = den.to_i128().unwrap_or(1);
+            let n = num.to_i128().expect("|num| < 2^127 fits in i128");
+            let d = den.to_i128().expect("den < 2^127 fits in i128");
             Rational(Repr::Small(n, d))
         } else {
             Rational(Repr::Big(Box::new(BigParts { num, den })))
@@ -251,28 +251,13 @@ impl Rational {
 
     // ------------------------------------------------------------------ arithmetic kernels
 
-    fn add_impl(&self, rhs: &Rational) -> Rational {
-        if let (Repr::Small(a, b), Repr::Small(c, d)) = (&self.0, &rhs.0) {
-            if let Some(r) = add_small(*a, *b, *c, *d) {
-                return r;
-            }
-        }
-        if self.is_zero_value() {
-            return rhs.clone();
-        }
-        if rhs.is_zero_value() {
-            return self.clone();
-        }
-        let (a, b) = self.big_parts();
-        let (c, d) = rhs.big_parts();
-        add_big(&a, &b, &c, &d, false)
-    }
-
-    /// `self - rhs` directly (not `self + (-rhs)`, which would copy a big `rhs` to negate it).
-    fn sub_impl(&self, rhs: &Rational) -> Rational {
+    /// `self + rhs`, or `self - rhs` when `sub`: subtraction directly, not as `self + (-rhs)`,
+    /// which would copy a big `rhs` to negate it.
+    #[inline]
+    fn add_impl(&self, rhs: &Rational, sub: bool) -> Rational {
         if let (Repr::Small(a, b), Repr::Small(c, d)) = (&self.0, &rhs.0) {
             // `fits` excludes i128::MIN, so `-c` cannot overflow.
-            if let Some(r) = add_small(*a, *b, -*c, *d) {
+            if let Some(r) = add_small(*a, *b, if sub { -*c } else { *c }, *d) {
                 return r;
             }
         }
@@ -280,11 +265,11 @@ impl Rational {
             return self.clone();
         }
         if self.is_zero_value() {
-            return rhs.neg_impl();
+            return if sub { rhs.neg_impl() } else { rhs.clone() };
         }
         let (a, b) = self.big_parts();
         let (c, d) = rhs.big_parts();
-        add_big(&a, &b, &c, &d, true)
+        add_big(&a, &b, &c, &d, sub)
     }
 
     fn mul_impl(&self, rhs: &Rational) -> Rational {
@@ -519,8 +504,8 @@ exactcheck_core::ring_ops! {
         x.neg_in_place();
         x
     };
-    Add::add, AddAssign::add_assign: |x, y| x.add_impl(y);
-    Sub::sub, SubAssign::sub_assign: |x, y| x.sub_impl(y);
+    Add::add, AddAssign::add_assign: |x, y| x.add_impl(y, false);
+    Sub::sub, SubAssign::sub_assign: |x, y| x.add_impl(y, true);
     Mul::mul, MulAssign::mul_assign: |x, y| x.mul_impl(y);
     Div::div, DivAssign::div_assign: |x, y| match x.checked_div(y) {
         Ok(q) => q,
@@ -569,11 +554,11 @@ impl Ring for Rational {
     }
     #[inline]
     fn add_ref(&self, rhs: &Self) -> Self {
-        self.add_impl(rhs)
+        self.add_impl(rhs, false)
     }
     #[inline]
     fn sub_ref(&self, rhs: &Self) -> Self {
-        self.sub_impl(rhs)
+        self.add_impl(rhs, true)
     }
     #[inline]
     fn mul_ref(&self, rhs: &Self) -> Self {

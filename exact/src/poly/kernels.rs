@@ -389,6 +389,17 @@ impl Heap {
         self.h[pos] = x;
     }
 
+    /// Pops the top stream when its key equals `key`: the next term of the current monomial.
+    #[inline]
+    pub(super) fn pop_if_key(&mut self, slots: &[u64], w: usize, key: &[u64]) -> Option<usize> {
+        let t = self.peek()? as usize;
+        if slots[t * w..(t + 1) * w] != *key {
+            return None;
+        }
+        self.pop(slots, w);
+        Some(t)
+    }
+
     #[inline(always)]
     pub(super) fn pop(&mut self, slots: &[u64], w: usize) -> Option<u32> {
         let top = *self.h.first()?;
@@ -483,6 +494,15 @@ pub(super) fn push_sum(out: &mut Vec<u64>, a: &[u64], b: &[u64]) {
     out.extend(a.iter().zip(b).map(|(x, y)| x.wrapping_add(*y)));
 }
 
+/// The state of a heap merge over `n` streams `f_i * g` with `k`-word keys: the streams' current
+/// keys (`slots`), their positions in `g` (`js`), and the heap, holding stream 0 at `f_0 g_0`.
+fn start_streams(n: usize, k: usize, fk: &[u64], gk: &[u64]) -> (Vec<u64>, Vec<usize>, Heap) {
+    let mut slots = vec![0u64; n * k];
+    let mut heap = Heap::with_capacity(n);
+    push_product(&mut heap, &mut slots, k, fk, 0, gk, 0);
+    (slots, vec![0usize; n], heap)
+}
+
 /// Sets stream `i`'s slot to the key of the term product `f_i g_j` (keys `k` words wide in
 /// `fk`, `gk`) and pushes the stream on the heap.
 #[inline]
@@ -518,15 +538,11 @@ pub(super) fn mul_heap<C: Ring, const K: usize>(
 ) -> (Vec<u64>, Vec<C>) {
     let k = if K == 0 { k } else { K };
     let (nf, ng) = (fc.len(), gc.len());
-    let mut slots = vec![0u64; nf * k];
-    let mut js = vec![0usize; nf];
-    let mut heap = Heap::with_capacity(nf);
+    let (mut slots, mut js, mut heap) = start_streams(nf, k, fk, gk);
     let cap = (nf * ng).min(4 * (nf + ng) + 1024);
     let mut out_e: Vec<u64> = Vec::with_capacity(cap * w);
     let mut out_c: Vec<C> = Vec::with_capacity(cap);
     let mut cur = vec![0u64; k];
-    add_mono(&mut slots[0..k], &fk[0..k], &gk[0..k]);
-    heap.push(0, &slots, k);
 
     // Moves stream i past its current term and (re)inserts what follows.
     let advance = |i: usize, slots: &mut Vec<u64>, js: &mut Vec<usize>, heap: &mut Heap| {
@@ -548,12 +564,7 @@ pub(super) fn mul_heap<C: Ring, const K: usize>(
         cur.copy_from_slice(&slots[i * k..(i + 1) * k]);
         let mut acc = fc[i].mul_ref(&gc[j]);
         advance(i, &mut slots, &mut js, &mut heap);
-        while let Some(top) = heap.peek() {
-            let t = top as usize;
-            if slots[t * k..(t + 1) * k] != cur[..] {
-                break;
-            }
-            heap.pop(&slots, k);
+        while let Some(t) = heap.pop_if_key(&slots, k, &cur) {
             acc += fc[t].mul_ref(&gc[js[t]]);
             advance(t, &mut slots, &mut js, &mut heap);
         }
@@ -740,15 +751,11 @@ pub(super) fn square_heap<C: Ring, const K: usize>(
 ) -> (Vec<u64>, Vec<C>) {
     let k = if K == 0 { k } else { K };
     let n = fc.len();
-    let mut slots = vec![0u64; n * k];
-    let mut js = vec![0usize; n];
-    let mut heap = Heap::with_capacity(n);
+    let (mut slots, mut js, mut heap) = start_streams(n, k, fk, fk);
     let cap = (n * n).min(8 * n + 1024);
     let mut out_e: Vec<u64> = Vec::with_capacity(cap * w);
     let mut out_c: Vec<C> = Vec::with_capacity(cap);
     let mut cur = vec![0u64; k];
-    add_mono(&mut slots[0..k], &fk[0..k], &fk[0..k]);
-    heap.push(0, &slots, k);
 
     let advance = |i: usize, slots: &mut Vec<u64>, js: &mut Vec<usize>, heap: &mut Heap| {
         let j = js[i];
@@ -783,12 +790,7 @@ pub(super) fn square_heap<C: Ring, const K: usize>(
         let mut off: Option<C> = None;
         take(i, j, &mut diag, &mut off);
         advance(i, &mut slots, &mut js, &mut heap);
-        while let Some(top) = heap.peek() {
-            let t = top as usize;
-            if slots[t * k..(t + 1) * k] != cur[..] {
-                break;
-            }
-            heap.pop(&slots, k);
+        while let Some(t) = heap.pop_if_key(&slots, k, &cur) {
             take(t, js[t], &mut diag, &mut off);
             advance(t, &mut slots, &mut js, &mut heap);
         }

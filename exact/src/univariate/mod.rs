@@ -144,7 +144,7 @@ pub struct Interval {
 // ------------------------------------------------------------------------------ small helpers
 
 fn half() -> Rational {
-    Rational::new(1, 2).unwrap_or(Rational::ONE)
+    Rational::new(1, 2).expect("2 is not zero")
 }
 
 fn midpoint(a: &Rational, b: &Rational) -> Rational {

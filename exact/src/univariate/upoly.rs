@@ -157,7 +157,7 @@ impl UPoly {
         match self.coeffs.last() {
             None => UPoly::zero(),
             Some(lc) if lc.is_one() => self.clone(),
-            Some(lc) => self.scale(&lc.recip().unwrap_or(Rational::ONE)),
+            Some(lc) => self.scale(&lc.recip().expect("the leading coefficient is not zero")),
         }
     }
 
@@ -180,7 +180,10 @@ impl UPoly {
                 den_lcm = &den_lcm / g * d;
             }
         }
-        Rational::from(BigInt::from(num_gcd)) * Rational::from(den_lcm).recip().unwrap_or_default()
+        Rational::from(BigInt::from(num_gcd))
+            * Rational::from(den_lcm)
+                .recip()
+                .expect("a product of denominators is not zero")
     }
 
     /// The primitive part `self / content`: integer coefficients with gcd 1 and the sign of
@@ -190,7 +193,7 @@ impl UPoly {
         if c.is_zero() || c.is_one() {
             return self.clone();
         }
-        self.scale(&c.recip().unwrap_or(Rational::ONE))
+        self.scale(&c.recip().expect("the content checked non-zero above"))
     }
 
     /// `self * x^k`.
