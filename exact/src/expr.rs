@@ -1,39 +1,79 @@
-//! Polynomial expressions: a parser to an AST with positions, the conversion of the AST to a
-//! [`Poly`] over any coefficient type implementing [`Coefficient`], and a printer.
+//! Expressions: the one grammar for every textual number or polynomial in the workspace. A parser
+//! to an AST with positions, the conversion of the AST to a [`Poly`] over any coefficient type
+//! implementing [`Coefficient`], the exact evaluation of constant expressions
+//! ([`Expr::eval_constant`]) and a printer.
+//!
+//! Every entry point reads text through [`parse_expr`]: `prove` and the claim catalogue (via
+//! [`parse_poly`]), and the `FromStr` of [`Rational`], [`crate::Radical`] and
+//! [`crate::ComplexRadical`] (every number string of `solve`), which parse and then evaluate the
+//! constant expression exactly in their type. So `"2 sqrt(4)"`, `"1e3"` and `"(2+sqrt(2))/3"` mean
+//! the same everywhere, and the limits below hold for every input. The parser is hand-written
+//! recursive descent: the grammar is small, and positions, the juxtaposition rule, the lexing of
+//! scientific notation and the error messages are easier to control than with a generator.
 //!
 //! # Syntax
 //! ```text
 //! sum      := product (('+' | '-') product)*
-//! product  := unary (('*' | '/') unary)*
+//! product  := unary (('*' | '/') unary | implicit)*
+//! implicit := power                          (juxtaposition, not starting with a number)
 //! unary    := ('-' | '+') unary | power
 //! power    := atom ('^' exponent)?
-//! exponent := atom ('^' exponent)?          (right-associative; no sign)
+//! exponent := ('-' | '+') exponent | atom ('^' exponent)?   (right-associative)
 //! atom     := number | variable | 'sqrt' '(' sum ')' | '(' sum ')'
-//! number   := [0-9]+ ('.' [0-9]+)?           (a decimal is exact: 0.1 = 1/10)
-//! variable := [A-Za-z_][A-Za-z0-9_]*          (except the reserved word sqrt)
+//! number   := [0-9]+ ('.' [0-9]+)? ([eE] [+-]? [0-9]+)?
+//! variable := [A-Za-z_][A-Za-z0-9_]*          (not followed by '('; not the word sqrt)
 //! ```
-//! White space may appear between tokens. `^` binds tighter than unary minus (`-x^2 = -(x^2)`)
-//! and is right-associative (`x^2^3 = x^8`); its exponent must evaluate to a non-negative integer
-//! constant (at most [`MAX_EXPONENT`]). Fractions are divisions of numbers (`3/4*x`), and in
-//! general a division is allowed only by an expression that evaluates to a non-zero constant.
-//! `sqrt(...)` takes a constant and needs a coefficient field that has the root (over
-//! [`Rational`], only of perfect squares).
+//! White space may appear between tokens.
+//!
+//! * **Numbers are exact**: a decimal is the fraction it denotes (`0.1 = 1/10`), and scientific
+//!   notation is read exactly (`1e3 = 1000`, `2.5e-3 = 1/400`, `1E+5`, `5e0`). The exponent
+//!   belongs to the number only when `e`/`E` follows the digits directly and is followed by an
+//!   optional sign and at least one digit; otherwise `2e` is the product `2*e` of the number 2
+//!   and the variable `e`, and `2e+x` is `2*e + x`.
+//! * **Juxtaposition multiplies**, binding like `*`: `2x`, `2 sqrt(2)`, `x y`, `(a+b)(a-b)`,
+//!   `c^2 x^3`. A juxtaposed factor takes no sign of its own (`x -y` is a difference) and may not
+//!   start with a number (`2 3` and `x 2` are errors: write `*`).
+//! * **Functions**: the only function is `sqrt`. A name followed by `(` is a function call, so
+//!   `sin(x)` is the error `unknown function 'sin'` rather than the product `sin*(x)`; write the
+//!   `*` for a product (`x*(y+1)`).
+//! * `^` binds tighter than unary minus (`-x^2 = -(x^2)`) and is right-associative
+//!   (`x^2^3 = x^8`). Its exponent must evaluate to an integer constant with absolute value at
+//!   most [`MAX_EXPONENT`]; it may carry a sign (`2^-3 = 1/8`), but a negative exponent needs a
+//!   non-zero constant base. Likewise a division is allowed only by an expression that evaluates
+//!   to a non-zero constant (`3/4*x`).
+//! * `sqrt(...)` takes a constant and needs a coefficient type that has the root (over
+//!   [`Rational`], only of perfect squares; [`crate::Radical`] denests; [`crate::ComplexRadical`]
+//!   takes the principal root).
+//! * A variable in a constant context ([`Expr::eval_constant`]) is an error naming it, except
+//!   the names the target type defines ([`Coefficient::named_constant`]: `i` for
+//!   [`crate::ComplexRadical`]).
+//!
+//! # Limits
+//! No input makes the parser, the conversion or the evaluation panic or allocate without bound:
+//! * nesting of parentheses, signs and exponents: at most [`MAX_DEPTH`] levels;
+//! * `^` exponents: `|k| <= ` [`MAX_EXPONENT`]; a variable's exponent must fit in `u32`;
+//! * the decimal exponent of a number: `|e| <= ` [`MAX_DECIMAL_EXPONENT`];
+//! * every constant (a number, a folded constant, a polynomial coefficient) has at most
+//!   [`MAX_CONSTANT_BITS`] bits. Powers are **predicted** before they are computed (the size of
+//!   `c^k` is at least `k` times that of `c`, [`Coefficient::size_bits`]), and every product
+//!   and power is checked after it is computed, so no intermediate result exceeds about twice the
+//!   limit: `((2^10000)^10000)^10000` is refused at once.
 //!
 //! # Conversion
 //! [`Expr::to_poly`] expands bottom-up with the fast polynomial arithmetic of [`crate::poly`]:
 //! sums are added pairwise (balanced), the factors of a product multiplied smallest first with
 //! the constant factors folded into one scalar, powers by binary powering. Variables are looked
-//! up (and added) in a [`Vars`] table, in order of first appearance.
+//! up (and added) in a [`Vars`] table, in order of first appearance. [`Expr::eval_constant`]
+//! evaluates a constant expression in any [`Coefficient`] type with the same rules and limits.
 //!
 //! # Errors
 //! Every error is an [`ExprError`] with the byte position of the offending token or
-//! sub-expression, e.g. `unexpected ')' at 14: expected a number, a variable or '('`. No input
-//! makes the parser or the conversion panic: nesting is limited to [`MAX_DEPTH`] levels and
-//! exponents that would overflow are reported.
+//! sub-expression, e.g. `unexpected ')' at 14: expected a number, a variable or '('`.
 
 use crate::poly::{Poly, Vars};
 use crate::rational::Rational;
 use exactcheck_core::{binomial, Ring};
+use num_bigint::{BigInt, BigUint};
 use num_traits::{Signed, ToPrimitive};
 use std::fmt;
 use std::str::FromStr;
@@ -41,8 +81,15 @@ use std::str::FromStr;
 /// The deepest nesting of parentheses, signs and exponents the parser accepts.
 pub const MAX_DEPTH: usize = 256;
 
-/// The largest exponent accepted after `^`.
+/// The largest absolute value of an exponent after `^`.
 pub const MAX_EXPONENT: u32 = 10_000;
+
+/// The largest absolute value of the decimal exponent of a number (`1e100000`).
+pub const MAX_DECIMAL_EXPONENT: u32 = 100_000;
+
+/// The largest size in bits of any constant: a number, a folded constant expression, or a
+/// coefficient of a polynomial built by [`Expr::to_poly`] (about 301,000 decimal digits).
+pub const MAX_CONSTANT_BITS: u64 = 1_000_000;
 
 // ------------------------------------------------------------------------------ coefficients
 
@@ -64,6 +111,24 @@ pub trait Coefficient: Ring {
     fn sqrt_hint() -> &'static str {
         ""
     }
+    /// A lower bound for the size in bits of the value that grows linearly under powers:
+    /// `size_bits(x^k) >= k * size_bits(x)` (for a rational `n/d`,
+    /// `floor(log2 |n|) + floor(log2 d)`; 0 for zero and units such as `±1`). The size limit
+    /// [`MAX_CONSTANT_BITS`] predicts powers with it and checks results against it. The default,
+    /// 0, suits types of fixed size (a finite field), which need no limit.
+    fn size_bits(&self) -> u64 {
+        0
+    }
+    /// The value of a name in a constant expression ([`Expr::eval_constant`]), `None` for a name
+    /// the type does not define (the default: every name). [`crate::ComplexRadical`] defines `i`.
+    fn named_constant(_name: &str) -> Option<Self> {
+        None
+    }
+}
+
+/// `floor(log2 |n|)`, 0 for zero.
+pub(crate) fn log2_floor(n: &BigInt) -> u64 {
+    n.bits().saturating_sub(1)
 }
 
 impl Coefficient for Rational {
@@ -88,6 +153,9 @@ impl Coefficient for Rational {
     }
     fn sqrt_hint() -> &'static str {
         " (it is irrational: a radical coefficient field is needed)"
+    }
+    fn size_bits(&self) -> u64 {
+        log2_floor(&self.numer()) + log2_floor(&self.denom())
     }
 }
 
@@ -183,8 +251,8 @@ pub enum ExprError {
         /// The exponent (its expression, or its value).
         found: String,
     },
-    /// An exponent above [`MAX_EXPONENT`].
-    #[error("exponent {exponent} at {pos} is too large (at most {max})")]
+    /// An exponent whose absolute value exceeds [`MAX_EXPONENT`].
+    #[error("exponent {exponent} at {pos} is too large (absolute value at most {max})")]
     ExponentTooLarge {
         /// Byte position of the exponent.
         pos: usize,
@@ -192,6 +260,57 @@ pub enum ExprError {
         exponent: String,
         /// The limit, [`MAX_EXPONENT`].
         max: u32,
+    },
+    /// A negative exponent of a base that is not a non-zero constant.
+    #[error(
+        "negative exponent at {pos}: only a non-zero constant can be raised to a negative power"
+    )]
+    NegativeExponent {
+        /// Byte position of the exponent.
+        pos: usize,
+    },
+    /// A name followed by `(` that is not a known function.
+    #[error(
+        "unknown function '{name}' at {pos}: the only function is sqrt (write '{name}*(...)' \
+         for a product)"
+    )]
+    UnknownFunction {
+        /// Byte position of the name.
+        pos: usize,
+        /// The name.
+        name: String,
+    },
+    /// A variable where a constant is required ([`Expr::eval_constant`]).
+    #[error("variable '{name}' at {pos} where a constant number is expected{hint}")]
+    NotConstant {
+        /// Byte position of the variable.
+        pos: usize,
+        /// Its name.
+        name: String,
+        /// A hint for names that are constants elsewhere (`i`).
+        hint: &'static str,
+    },
+    /// A number whose decimal exponent exceeds [`MAX_DECIMAL_EXPONENT`] in absolute value.
+    #[error(
+        "decimal exponent {exponent} at {pos} is out of range (absolute value at most {max}, \
+         MAX_DECIMAL_EXPONENT)"
+    )]
+    DecimalExponentTooLarge {
+        /// Byte position of the number.
+        pos: usize,
+        /// The exponent as written.
+        exponent: String,
+        /// The limit, [`MAX_DECIMAL_EXPONENT`].
+        max: u32,
+    },
+    /// A constant (a number, a folded constant or a polynomial coefficient) that would exceed
+    /// [`MAX_CONSTANT_BITS`] bits.
+    #[error("constant too large at {pos}: more than {max} bits (limit MAX_CONSTANT_BITS)")]
+    ConstantTooLarge {
+        /// Byte position of the number, product or power.
+        pos: usize,
+        /// The limit, [`MAX_CONSTANT_BITS`].
+        max: u64,
     },
     /// A power or product whose exponents would exceed `u32::MAX`.
     #[error("exponent overflow at {pos}: a variable's exponent would exceed {max}", max = u32::MAX)]
@@ -243,6 +362,11 @@ impl ExprError {
             | ExprError::BadExponent { pos, .. }
             | ExprError::ExponentTooLarge { pos, .. }
             | ExprError::ExponentOverflow { pos }
+            | ExprError::NegativeExponent { pos }
+            | ExprError::UnknownFunction { pos, .. }
+            | ExprError::NotConstant { pos, .. }
+            | ExprError::DecimalExponentTooLarge { pos, .. }
+            | ExprError::ConstantTooLarge { pos, .. }
             | ExprError::NonConstantSqrt { pos }
             | ExprError::NoSqrt { pos, .. }
             | ExprError::Unrepresentable { pos, .. }
@@ -276,7 +400,7 @@ struct Token {
 }
 
 const EXPECT_OPERAND: &str = "a number, a variable or '('";
-const EXPECT_EXPONENT: &str = "a non-negative integer exponent (a number or '(')";
+const EXPECT_EXPONENT: &str = "an integer exponent (a number, a sign or '(')";
 
 struct Parser<'a> {
     src: &'a str,
@@ -322,6 +446,17 @@ impl<'a> Parser<'a> {
                 let mut end = run(start, |b| b.is_ascii_digit());
                 if end + 1 < bytes.len() && bytes[end] == b'.' && bytes[end + 1].is_ascii_digit() {
                     end = run(end + 1, |b| b.is_ascii_digit());
+                }
+                // A decimal exponent: `e`/`E`, an optional sign, at least one digit. Otherwise
+                // the `e` starts a name (`2e` = 2*e).
+                if end < bytes.len() && matches!(bytes[end], b'e' | b'E') {
+                    let mut d = end + 1;
+                    if d < bytes.len() && matches!(bytes[d], b'+' | b'-') {
+                        d += 1;
+                    }
+                    if d < bytes.len() && bytes[d].is_ascii_digit() {
+                        end = run(d, |b| b.is_ascii_digit());
+                    }
                 }
                 (Tok::Num, end)
             }
@@ -409,9 +544,10 @@ impl<'a> Parser<'a> {
     }
 
     /// Whether the current token can begin a factor written by juxtaposition (`2x`, `x y`,
-    /// `(a+b)(a-b)`, `c^2 x^3`): implicit multiplication, binding like `*`.
+    /// `(a+b)(a-b)`, `c^2 x^3`): implicit multiplication, binding like `*`. A number cannot:
+    /// `2 3` or `x 2` is more likely a typo than a product, so it stays an error.
     fn starts_implicit_factor(&self) -> bool {
-        matches!(self.cur.tok, Tok::Num | Tok::Ident | Tok::LParen)
+        matches!(self.cur.tok, Tok::Ident | Tok::LParen)
     }
 
     fn parse_product(&mut self) -> Result<Expr, ExprError> {
@@ -479,23 +615,45 @@ impl<'a> Parser<'a> {
             return Ok(base);
         }
         self.bump();
-        self.enter()?;
-        let exp = self.parse_atom(EXPECT_EXPONENT);
-        let exp = exp.and_then(|e| self.parse_power_tail(e));
-        self.leave();
+        let exp = self.parse_exponent()?;
         let pos = base.pos;
         Ok(Expr {
-            kind: ExprKind::Pow(Box::new(base), Box::new(exp?)),
+            kind: ExprKind::Pow(Box::new(base), Box::new(exp)),
             pos,
         })
+    }
+
+    /// `exponent := ('-' | '+') exponent | atom ('^' exponent)?`.
+    fn parse_exponent(&mut self) -> Result<Expr, ExprError> {
+        self.enter()?;
+        let r = match self.cur.tok {
+            Tok::Minus | Tok::Plus => {
+                let (pos, neg) = (self.cur.start, self.cur.tok == Tok::Minus);
+                self.bump();
+                self.parse_exponent().map(|e| {
+                    if neg {
+                        Expr {
+                            kind: ExprKind::Neg(Box::new(e)),
+                            pos,
+                        }
+                    } else {
+                        e
+                    }
+                })
+            }
+            _ => self
+                .parse_atom(EXPECT_EXPONENT)
+                .and_then(|e| self.parse_power_tail(e)),
+        };
+        self.leave();
+        r
     }
 
     fn parse_atom(&mut self, expected: &'static str) -> Result<Expr, ExprError> {
         let t = self.cur;
         match t.tok {
             Tok::Num => {
-                let text = self.text(t);
-                let q = Rational::from_str(text).map_err(|_| self.unexpected(expected))?;
+                let q = number_value(self.text(t), t.start)?;
                 self.bump();
                 Ok(Expr {
                     kind: ExprKind::Number(q),
@@ -515,6 +673,12 @@ impl<'a> Parser<'a> {
             }
             Tok::Ident => {
                 self.bump();
+                if self.cur.tok == Tok::LParen {
+                    return Err(ExprError::UnknownFunction {
+                        pos: t.start,
+                        name: self.text(t).to_string(),
+                    });
+                }
                 Ok(Expr {
                     kind: ExprKind::Var(self.text(t).to_string()),
                     pos: t.start,
@@ -539,6 +703,73 @@ impl<'a> Parser<'a> {
         }
         self.bump();
         Ok(Expr { pos: open, ..inner })
+    }
+}
+
+/// The exact value of a number token (`12`, `0.25`, `2.5e-3`), within [`MAX_DECIMAL_EXPONENT`]
+/// and [`MAX_CONSTANT_BITS`].
+fn number_value(text: &str, pos: usize) -> Result<Rational, ExprError> {
+    let (mantissa, exponent) = match text.find(['e', 'E']) {
+        Some(k) => (&text[..k], Some(&text[k + 1..])),
+        None => (text, None),
+    };
+    let (int, frac) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+    let e10: i64 = match exponent {
+        None => 0,
+        Some(e) => {
+            let too_large = || ExprError::DecimalExponentTooLarge {
+                pos,
+                exponent: e.to_string(),
+                max: MAX_DECIMAL_EXPONENT,
+            };
+            let v: i64 = e.parse().map_err(|_| too_large())?;
+            if v.unsigned_abs() > u64::from(MAX_DECIMAL_EXPONENT) {
+                return Err(too_large());
+            }
+            v
+        }
+    };
+    let too_large = ExprError::ConstantTooLarge {
+        pos,
+        max: MAX_CONSTANT_BITS,
+    };
+    // The value is digits * 10^(e10 - frac.len()); every decimal digit is more than 3.3 bits,
+    // so a literal with more digits than the limit allows is refused before it is converted.
+    let all = format!("{int}{frac}");
+    let significant = all.trim_start_matches('0');
+    let scale = e10 - frac.len() as i64;
+    let max_digits = (MAX_CONSTANT_BITS as f64 / std::f64::consts::LOG2_10) as u64 + 1;
+    if significant.len() as u64 + scale.unsigned_abs() > max_digits {
+        return Err(too_large);
+    }
+    if significant.is_empty() {
+        return Ok(Rational::ZERO);
+    }
+    let m: BigUint = significant
+        .parse()
+        .expect("a number token is a non-empty string of decimal digits");
+    let m = BigInt::from(m);
+    let p = BigInt::from(10u32).pow(
+        u32::try_from(scale.unsigned_abs()).expect("bounded by MAX_DECIMAL_EXPONENT and digits"),
+    );
+    let q = if scale >= 0 {
+        Rational::from(m * p)
+    } else {
+        Rational::from(num_rational::BigRational::new(m, p))
+    };
+    check_constant(&q, pos)?;
+    Ok(q)
+}
+
+/// `Err(ConstantTooLarge)` when `c` has more than [`MAX_CONSTANT_BITS`] bits.
+fn check_constant<C: Coefficient>(c: &C, pos: usize) -> Result<(), ExprError> {
+    if c.size_bits() > MAX_CONSTANT_BITS {
+        Err(ExprError::ConstantTooLarge {
+            pos,
+            max: MAX_CONSTANT_BITS,
+        })
+    } else {
+        Ok(())
     }
 }
 
@@ -575,9 +806,10 @@ impl Expr {
     /// `vars`.
     ///
     /// # Errors
-    /// Division by a non-constant expression or by zero, exponents that are not non-negative
-    /// integer constants (or exceed [`MAX_EXPONENT`], or overflow), `sqrt` of a non-constant or
-    /// of a constant whose root is not in `C`, numbers with no image in `C`.
+    /// Division by a non-constant expression or by zero, exponents that are not integer
+    /// constants (or exceed [`MAX_EXPONENT`], or overflow, or are negative on a non-constant
+    /// base), `sqrt` of a non-constant or of a constant whose root is not in `C`, numbers with no
+    /// image in `C`, coefficients beyond [`MAX_CONSTANT_BITS`].
     pub fn to_poly<C: Coefficient>(&self, vars: &mut Vars) -> Result<Poly<C>, ExprError> {
         match &self.kind {
             ExprKind::Number(q) => {
@@ -603,30 +835,170 @@ impl Expr {
             }
             ExprKind::Product(items) => {
                 let (a, b) = product_pair(items, self.pos, vars)?;
-                a.checked_mul(&b)
-                    .ok_or(ExprError::ExponentOverflow { pos: self.pos })
+                let p = a
+                    .checked_mul(&b)
+                    .ok_or(ExprError::ExponentOverflow { pos: self.pos })?;
+                check_coefficients(&p, self.pos)?;
+                Ok(p)
             }
             ExprKind::Pow(base, exp) => {
                 let k = exponent_value(exp)?;
                 let b = base.to_poly::<C>(vars)?;
-                b.checked_pow(k)
-                    .ok_or(ExprError::ExponentOverflow { pos: self.pos })
+                if let Some(c) = b.constant_value() {
+                    return Ok(Poly::constant(constant_power(c, k, self.pos, exp.pos)?));
+                }
+                let k =
+                    u32::try_from(k).map_err(|_| ExprError::NegativeExponent { pos: exp.pos })?;
+                // The coefficient of a vertex monomial of the Newton polytope of b^k is the k-th
+                // power of b's, so predict with the largest coefficient before expanding.
+                let largest = b.coefficients().iter().map(C::size_bits).max();
+                if largest.unwrap_or(0).saturating_mul(u64::from(k)) > MAX_CONSTANT_BITS {
+                    return Err(ExprError::ConstantTooLarge {
+                        pos: self.pos,
+                        max: MAX_CONSTANT_BITS,
+                    });
+                }
+                let p = b
+                    .checked_pow(k)
+                    .ok_or(ExprError::ExponentOverflow { pos: self.pos })?;
+                check_coefficients(&p, self.pos)?;
+                Ok(p)
             }
             ExprKind::Sqrt(arg) => {
                 let p = arg.to_poly::<C>(vars)?;
                 let c = p
                     .constant_value()
                     .ok_or(ExprError::NonConstantSqrt { pos: arg.pos })?;
-                c.try_sqrt()
-                    .map(Poly::constant)
-                    .ok_or_else(|| ExprError::NoSqrt {
-                        pos: self.pos,
-                        arg: arg.to_string(),
-                        hint: C::sqrt_hint(),
-                    })
+                sqrt_of(c, self.pos, arg).map(Poly::constant)
             }
         }
     }
+
+    /// The exact value of a constant expression in `C`: numbers, `sqrt`, `+ - * /` and integer
+    /// powers, with the limits of the module documentation. A name is looked up with
+    /// [`Coefficient::named_constant`] (`i` for [`crate::ComplexRadical`]); any other variable
+    /// is an error naming it and its position.
+    ///
+    /// ```
+    /// use exactcheck_exact::{expr::parse_expr, Radical, Rational};
+    ///
+    /// let q: Rational = parse_expr("2.5e-3 + 1/2^2").unwrap().eval_constant().unwrap();
+    /// assert_eq!(q, Rational::new(101, 400).unwrap());
+    /// let r: Radical = parse_expr("2 sqrt(8)").unwrap().eval_constant().unwrap();
+    /// assert_eq!(r.to_string(), "4*sqrt(2)");
+    /// let e = parse_expr("1 + x").unwrap().eval_constant::<Rational>().unwrap_err();
+    /// assert_eq!(e.to_string(), "variable 'x' at 4 where a constant number is expected");
+    /// ```
+    ///
+    /// # Errors
+    /// A variable, division by zero, a bad exponent, a square root not in `C`, a number with no
+    /// image in `C`, a constant beyond [`MAX_CONSTANT_BITS`].
+    pub fn eval_constant<C: Coefficient>(&self) -> Result<C, ExprError> {
+        match &self.kind {
+            ExprKind::Number(q) => C::from_rational(q).ok_or_else(|| ExprError::Unrepresentable {
+                pos: self.pos,
+                number: q.to_string(),
+            }),
+            ExprKind::Var(name) => C::named_constant(name).ok_or_else(|| ExprError::NotConstant {
+                pos: self.pos,
+                name: name.clone(),
+                hint: if name == "i" {
+                    " (the imaginary unit i exists only for complex numbers)"
+                } else {
+                    ""
+                },
+            }),
+            ExprKind::Neg(x) => Ok(-x.eval_constant::<C>()?),
+            ExprKind::Sum(items) => {
+                let mut acc = C::zero();
+                for (op, x) in items {
+                    let v = x.eval_constant::<C>()?;
+                    match op {
+                        AddOp::Plus => acc += v,
+                        AddOp::Minus => acc -= v,
+                    }
+                    check_constant(&acc, self.pos)?;
+                }
+                Ok(acc)
+            }
+            ExprKind::Product(items) => {
+                let mut acc = C::one();
+                for (op, x) in items {
+                    let v = x.eval_constant::<C>()?;
+                    match op {
+                        MulOp::Times => acc *= v,
+                        MulOp::Divide => match v.try_inverse() {
+                            Some(inv) => acc *= inv,
+                            None => return Err(ExprError::DivisionByZero { pos: x.pos }),
+                        },
+                    }
+                    check_constant(&acc, self.pos)?;
+                }
+                Ok(acc)
+            }
+            ExprKind::Pow(base, exp) => {
+                let k = exponent_value(exp)?;
+                let b = base.eval_constant::<C>()?;
+                constant_power(b, k, self.pos, exp.pos)
+            }
+            ExprKind::Sqrt(arg) => sqrt_of(arg.eval_constant::<C>()?, self.pos, arg),
+        }
+    }
+}
+
+/// The square root of the constant `c` (the value of `arg`, in `sqrt` at `pos`).
+fn sqrt_of<C: Coefficient>(c: C, pos: usize, arg: &Expr) -> Result<C, ExprError> {
+    c.try_sqrt().ok_or_else(|| ExprError::NoSqrt {
+        pos,
+        arg: arg.to_string(),
+        hint: C::sqrt_hint(),
+    })
+}
+
+/// `c^k` for a constant `c` and `|k| <= MAX_EXPONENT`, by binary powering with the size limit:
+/// refused at once when `k * size_bits(c)` exceeds [`MAX_CONSTANT_BITS`] (a lower bound of the
+/// result's size), and checked after every multiplication, so no intermediate value exceeds
+/// about twice the limit. `pos` is the power's position, `exp_pos` its exponent's.
+fn constant_power<C: Coefficient>(
+    c: C,
+    k: i64,
+    pos: usize,
+    exp_pos: usize,
+) -> Result<C, ExprError> {
+    let base = if k < 0 {
+        c.try_inverse()
+            .ok_or(ExprError::DivisionByZero { pos: exp_pos })?
+    } else {
+        c
+    };
+    let mut e = k.unsigned_abs();
+    if base.size_bits().saturating_mul(e) > MAX_CONSTANT_BITS {
+        return Err(ExprError::ConstantTooLarge {
+            pos,
+            max: MAX_CONSTANT_BITS,
+        });
+    }
+    let mut acc = C::one();
+    let mut sq = base;
+    while e > 0 {
+        if e & 1 == 1 {
+            acc = acc.mul_ref(&sq);
+            check_constant(&acc, pos)?;
+        }
+        e >>= 1;
+        if e > 0 {
+            sq = sq.square();
+            check_constant(&sq, pos)?;
+        }
+    }
+    Ok(acc)
+}
+
+/// `Err(ConstantTooLarge)` when a coefficient of `p` exceeds [`MAX_CONSTANT_BITS`].
+fn check_coefficients<C: Coefficient>(p: &Poly<C>, pos: usize) -> Result<(), ExprError> {
+    p.coefficients()
+        .iter()
+        .try_for_each(|c| check_constant(c, pos))
 }
 
 /// A product's value as two factors `(a, b)`, `b` the largest factor and `a` the product of the
@@ -649,6 +1021,7 @@ fn product_pair<C: Coefficient>(
                 None => return Err(ExprError::DivisionByZero { pos: x.pos }),
             },
         }
+        check_constant(&scalar, pos)?;
     }
     // Smallest first; the scalar goes into the smallest factor.
     factors.sort_by_key(Poly::len);
@@ -664,20 +1037,24 @@ fn product_pair<C: Coefficient>(
         a = a
             .checked_mul(&f)
             .ok_or(ExprError::ExponentOverflow { pos })?;
+        check_coefficients(&a, pos)?;
     }
     Ok((a, b))
 }
 
-/// The value of an exponent expression: a non-negative integer constant up to [`MAX_EXPONENT`].
-fn exponent_value(e: &Expr) -> Result<u32, ExprError> {
-    let p: Poly<Rational> = e.to_poly(&mut Vars::new())?;
+/// The value of an exponent expression: an integer constant with `|k| <= MAX_EXPONENT`.
+fn exponent_value(e: &Expr) -> Result<i64, ExprError> {
     let bad = |found: String| ExprError::BadExponent { pos: e.pos, found };
-    let q = p.constant_value().ok_or_else(|| bad(e.to_string()))?;
-    if !q.is_integer() || q.numer().is_negative() {
+    let q: Rational = match e.eval_constant() {
+        Ok(q) => q,
+        Err(ExprError::NotConstant { .. }) => return Err(bad(e.to_string())),
+        Err(err) => return Err(err),
+    };
+    if !q.is_integer() {
         return Err(bad(q.to_string()));
     }
-    match q.numer().to_u32() {
-        Some(k) if k <= MAX_EXPONENT => Ok(k),
+    match q.numer().to_i64() {
+        Some(k) if k.unsigned_abs() <= u64::from(MAX_EXPONENT) => Ok(k),
         _ => Err(ExprError::ExponentTooLarge {
             pos: e.pos,
             exponent: q.to_string(),
@@ -892,8 +1269,13 @@ mod tests {
         );
         assert_eq!(
             err("x^-1"),
-            "unexpected '-' at 2: expected a non-negative integer exponent (a number or '(')"
+            "negative exponent at 2: only a non-zero constant can be raised to a negative power"
         );
+        assert_eq!(
+            err("x^*2"),
+            "unexpected '*' at 2: expected an integer exponent (a number, a sign or '(')"
+        );
+        assert_eq!(err("0^-1"), "division by zero at 2");
         assert_eq!(
             err("x^(1/2)"),
             "exponent at 2 must be a non-negative integer constant, found 1/2"
@@ -904,7 +1286,11 @@ mod tests {
         );
         assert_eq!(
             err("x^10001"),
-            "exponent 10001 at 2 is too large (at most 10000)"
+            "exponent 10001 at 2 is too large (absolute value at most 10000)"
+        );
+        assert_eq!(
+            err("2^-10001"),
+            "exponent -10001 at 2 is too large (absolute value at most 10000)"
         );
         assert_eq!(
             err("1 # 2"),
@@ -930,6 +1316,115 @@ mod tests {
     }
 
     #[test]
+    fn scientific_notation_and_juxtaposition() {
+        let mut v = Vars::new();
+        // Regression: "1e3" was the product 1*e3 of a variable e3, "1e5" likewise.
+        assert_eq!(poly("1e3", &mut v), P::from_i64(1000));
+        assert_eq!(poly("1e5", &mut v), P::from_i64(100_000));
+        assert!(v.is_empty(), "no variable e3 or e5: {v:?}");
+        let x = poly("x", &mut v);
+        assert_eq!(poly("x + 2.5e-3", &mut v), poly("x + 0.0025", &mut v));
+        assert_eq!(
+            poly("2.5e-3", &mut v),
+            P::constant(Rational::new(1, 400).unwrap())
+        );
+        assert_eq!(poly("1E+5", &mut v), P::from_i64(100_000));
+        assert_eq!(poly("5e0", &mut v), P::from_i64(5));
+        assert_eq!(poly("2e3x", &mut v), x.scale_i64(2000));
+        // Without digits after it, `e` is a variable: 2e = 2*e, 2e+x = 2*e + x.
+        let e = poly("e", &mut v);
+        assert_eq!(poly("2e", &mut v), e.scale_i64(2));
+        assert_eq!(poly("2e+x", &mut v), e.scale_i64(2) + x.clone());
+        assert_eq!(poly("2E-x", &mut v), poly("2*E - x", &mut v));
+        assert_eq!(poly("2 sqrt(4) x", &mut v), x.scale_i64(4));
+        assert_eq!(poly("(x+1)(x-1)", &mut v), x.square() - P::one());
+        assert_eq!(poly("2^-2*4x", &mut v), x);
+        assert_eq!(
+            err("1e100001"),
+            "decimal exponent 100001 at 0 is out of range (absolute value at most 100000, \
+             MAX_DECIMAL_EXPONENT)"
+        );
+        assert_eq!(
+            err("1e99999999999999999999999"),
+            "decimal exponent 99999999999999999999999 at 0 is out of range (absolute value at \
+             most 100000, MAX_DECIMAL_EXPONENT)"
+        );
+        // A number may not be juxtaposed after a factor: `2 3` is a typo, not 6.
+        assert_eq!(
+            err("2 3"),
+            "unexpected '3' at 2: expected an operator or end of input"
+        );
+        assert_eq!(
+            err("x 2"),
+            "unexpected '2' at 2: expected an operator or end of input"
+        );
+    }
+
+    #[test]
+    fn unknown_functions_are_errors() {
+        // Regression: `sin(x)` was the product sin*x of a variable sin.
+        assert_eq!(
+            err("sin(x)"),
+            "unknown function 'sin' at 0: the only function is sqrt (write 'sin*(...)' for a \
+             product)"
+        );
+        assert_eq!(
+            err("2 sin(2x)"),
+            "unknown function 'sin' at 2: the only function is sqrt (write 'sin*(...)' for a \
+             product)"
+        );
+        assert!(err("x (y+1)").starts_with("unknown function 'x' at 0"));
+        let mut v = Vars::new();
+        assert_eq!(poly("x*(y+1)", &mut v), poly("x y + x", &mut v));
+    }
+
+    #[test]
+    fn constant_size_limits() {
+        let too_large = "constant too large at 0: more than 1000000 bits (limit MAX_CONSTANT_BITS)";
+        // Regression: this aborted the process allocating; now refused before computing.
+        assert_eq!(err("((2^10000)^10000)^10000"), too_large);
+        assert_eq!(err("(2^10000)^10000"), too_large);
+        assert_eq!(err("(3/2^10000)^10000 x"), too_large);
+        assert_eq!(err("(2^10000 x + 1)^10000"), too_large);
+        // The limit is on bits: 2^999999 fits, 2^1000001 does not.
+        let mut v = Vars::new();
+        assert!(parse_poly::<Rational>("(2^1000)^999 * 2^999", &mut v).is_ok());
+        assert!(err("(2^1000)^1000 * 2^1000").starts_with("constant too large"));
+        assert!(err("(2^1000 x)^1000 * (2^1000 y)^1000").starts_with("constant too large"));
+        let long = "9".repeat(301_100);
+        assert!(err(&long).starts_with("constant too large at 0"));
+        assert!(err("1e-100000 * 1e-100000 * 1e-100000 * 1e-100000").starts_with("constant too"));
+        // The evaluator has the same limits.
+        let e = parse_expr("((2^1024)^1024)^1024").unwrap();
+        assert_eq!(
+            e.eval_constant::<Rational>().unwrap_err().to_string(),
+            too_large
+        );
+        // An exponent is a constant expression too, evaluated with the limits.
+        assert!(err("x^((2^10000)^10000)").starts_with("constant too large at 2"));
+    }
+
+    #[test]
+    fn constant_evaluation() {
+        let ev = |s: &str| parse_expr(s).unwrap().eval_constant::<Rational>();
+        assert_eq!(ev("3/4 - 1/4").unwrap(), Rational::new(1, 2).unwrap());
+        assert_eq!(ev("(1/2)^-3 + 2^0").unwrap(), Rational::from_integer(9));
+        assert_eq!(ev("2 sqrt(1e4)").unwrap(), Rational::from_integer(200));
+        assert_eq!(
+            ev("1 + y^2").unwrap_err().to_string(),
+            "variable 'y' at 4 where a constant number is expected"
+        );
+        assert_eq!(
+            ev("1/(2-2)").unwrap_err().to_string(),
+            "division by zero at 2"
+        );
+        assert_eq!(
+            ev("2^x").unwrap_err().to_string(),
+            "exponent at 2 must be a non-negative integer constant, found x"
+        );
+    }
+
+    #[test]
     fn expression_printing_round_trips() {
         for s in [
             "-x^2",
@@ -941,6 +1436,8 @@ mod tests {
             "a*-b",
             "sqrt(4)*x + 0.25",
             "2*(x + 1)^3 - 1/2*y",
+            "2^-3*x + 2.5e-3",
+            "(1/2)^-(1+1)",
         ] {
             let e = parse_expr(s).unwrap();
             let printed = e.to_string();
