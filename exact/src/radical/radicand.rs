@@ -7,6 +7,7 @@
 use crate::gcd::{gcd_biguint_u64, gcd_u64};
 use crate::rational::Rational;
 use num_bigint::{BigInt, BigUint, Sign as BigSign};
+use num_integer::Integer;
 use num_traits::{One, ToPrimitive, Zero};
 use std::cmp::Ordering;
 use std::fmt;
@@ -418,6 +419,35 @@ pub(super) fn rem_u64(n: &BigUint, p: u64) -> u64 {
         .fold(0u64, |r, d| ((r << 32) | d as u64) % p)
 }
 
+/// Divides the largest power of the prime `p` out of `c` (`c > 0`) and returns its exponent `e`,
+/// with `O(log e)` big divisions: find the largest `J` with `p^(2^J) | c` by repeated squaring,
+/// then divide by `p^(2^j)` for `j = J, J-1, ..., 0` where it still divides (each at most once,
+/// since `e < 2^(J+1)`). Dividing by `p` once per factor would take `e` passes over `c`
+/// (`2^999000 * 3` never finished).
+pub(super) fn remove_prime_power(c: &mut BigUint, p: u64) -> u32 {
+    let mut pows = vec![BigUint::from(p)];
+    loop {
+        let last = pows.last().expect("starts non-empty");
+        if last.bits() * 2 > c.bits() + 1 {
+            break;
+        }
+        let sq = last * last;
+        if !(&*c % &sq).is_zero() {
+            break;
+        }
+        pows.push(sq);
+    }
+    let mut e = 0u32;
+    for (j, pj) in pows.iter().enumerate().rev() {
+        let (q, r) = c.div_rem(pj);
+        if r.is_zero() {
+            *c = q;
+            e += 1 << j;
+        }
+    }
+    e
+}
+
 /// Trial-division bound for radicands beyond 64 bits.
 pub(super) const TRIAL_BOUND: u64 = 1 << 20;
 
@@ -452,11 +482,7 @@ pub(super) fn square_free_big(n: &BigUint) -> Option<(BigUint, Radicand)> {
             return finish(s, free_primes, v);
         }
         if rem_u64(&c, p) == 0 {
-            let mut e = 0u32;
-            while rem_u64(&c, p) == 0 {
-                c /= p;
-                e += 1;
-            }
+            let e = remove_prime_power(&mut c, p);
             s *= BigUint::from(p).pow(e / 2);
             if e % 2 == 1 {
                 free_primes.push(p);

@@ -1,10 +1,11 @@
 //! Unit tests of the radicand factoring, the field and parsing into it.
 
-use super::radicand::{is_prime_u64, square_free_big, square_free_u64};
+use super::radicand::{is_prime_u64, remove_prime_power, square_free_big, square_free_u64};
 use super::*;
 use crate::radical::radicand::integer_u64;
 use exactcheck_core::{OrderedField, Ring, Sign};
 use num_bigint::BigUint;
+use num_traits::One;
 
 fn r(s: &str) -> Radical {
     s.parse().unwrap_or_else(|e| panic!("{s:?}: {e}"))
@@ -139,4 +140,22 @@ fn one_grammar_regressions() {
         "sqrt((2^1024)^1024*2)/1000".parse::<Radical>(),
         Err(ExprError::ConstantTooLarge { .. })
     ));
+}
+
+#[test]
+fn big_prime_powers_are_removed_in_few_passes() {
+    let mut c = BigUint::from(3u32).pow(1001) * 7u32;
+    assert_eq!(remove_prime_power(&mut c, 3), 1001);
+    assert_eq!(c, BigUint::from(7u32));
+    let mut c = BigUint::from(5u32);
+    assert_eq!(remove_prime_power(&mut c, 5), 1);
+    assert_eq!(c, BigUint::one());
+    // Regression: `sqrt(2^999000 * 3)` divided by 2 once per pass (a million passes over a
+    // million bits) and never finished; the square part is now found at once.
+    let n = (BigUint::one() << 999_000u32) * 3u32;
+    let (s, f) = square_free_big(&n).expect("certified");
+    assert_eq!(s, BigUint::one() << 499_500u32);
+    assert_eq!(f.as_u64(), Some(3));
+    let x: Radical = "sqrt((2^1000)^999*3)/(2^500)^999".parse().unwrap();
+    assert_eq!(x, Radical::sqrt_of(3));
 }
