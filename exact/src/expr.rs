@@ -119,6 +119,11 @@ pub trait Coefficient: Ring {
     fn size_bits(&self) -> u64 {
         0
     }
+    /// Whether [`Coefficient::size_bits`] is at most `max`; a type may answer faster than by
+    /// computing the size (every coefficient of every product is checked).
+    fn size_within(&self, max: u64) -> bool {
+        self.size_bits() <= max
+    }
     /// The value of a name in a constant expression ([`Expr::eval_constant`]), `None` for a name
     /// the type does not define (the default: every name). [`crate::ComplexRadical`] defines `i`.
     fn named_constant(_name: &str) -> Option<Self> {
@@ -156,6 +161,10 @@ impl Coefficient for Rational {
     }
     fn size_bits(&self) -> u64 {
         log2_floor(&self.numer()) + log2_floor(&self.denom())
+    }
+    /// Inline values (two machine words) are far below any limit used here.
+    fn size_within(&self, max: u64) -> bool {
+        (self.is_inline() && max >= 256) || self.size_bits() <= max
     }
 }
 
@@ -763,7 +772,7 @@ fn number_value(text: &str, pos: usize) -> Result<Rational, ExprError> {
 
 /// `Err(ConstantTooLarge)` when `c` has more than [`MAX_CONSTANT_BITS`] bits.
 fn check_constant<C: Coefficient>(c: &C, pos: usize) -> Result<(), ExprError> {
-    if c.size_bits() > MAX_CONSTANT_BITS {
+    if !c.size_within(MAX_CONSTANT_BITS) {
         Err(ExprError::ConstantTooLarge {
             pos,
             max: MAX_CONSTANT_BITS,

@@ -212,6 +212,11 @@ impl Coefficient for Radical {
             .max()
             .unwrap_or(0)
     }
+    fn size_within(&self, max: u64) -> bool {
+        self.terms()
+            .iter()
+            .all(|(m, c)| c.size_within(max.saturating_sub(m.to_biguint().bits() / 2)))
+    }
 }
 
 impl Coefficient for ComplexRadical {
