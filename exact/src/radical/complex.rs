@@ -203,7 +203,7 @@ impl From<Rational> for ComplexRadical {
 
 impl fmt::Display for ComplexRadical {
     /// `re + im*i` in the number syntax: `1/2 - sqrt(3)/2*i`, `(1 + sqrt(2))*i`, `i`, `-i`; a
-    /// real value prints as a [`Radical`]. [`FromStr`] reads it back.
+    /// real value prints as a [`Radical`]. [`FromStr`](std::str::FromStr) reads it back.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         if self.im.is_zero() {
             return fmt::Display::fmt(&self.re, f);

@@ -14,7 +14,7 @@ use std::fmt;
 
 // ====================================================================== radicands
 
-/// A positive square-free integer, the `m` of a basis element `sqrt(m)` of a [`Radical`]
+/// A positive square-free integer, the `m` of a basis element `sqrt(m)` of a [`Radical`](super::Radical)
 /// (`1` for the rational part).
 ///
 /// Held inline when it fits a `u64`. Larger radicands (products of several large ones) are held
