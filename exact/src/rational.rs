@@ -668,56 +668,22 @@ impl fmt::Debug for Rational {
     }
 }
 
-/// The error of parsing a [`Rational`] from text.
-#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
-pub enum ParseRationalError {
-    /// The text is not of the form `n`, `n/d` or a decimal `i.f`.
-    #[error("malformed rational number {0:?}: expected an integer, a fraction n/d or a decimal")]
-    Malformed(String),
-    /// The denominator is zero.
-    #[error("division by zero in {0:?}")]
-    ZeroDenominator(String),
-}
+/// The error of parsing a [`Rational`] from text: the expression error of the one grammar
+/// ([`crate::expr`]), with the position of the problem. The name is kept for callers.
+pub type ParseRationalError = crate::expr::ExprError;
 
 impl FromStr for Rational {
     type Err = ParseRationalError;
 
-    /// Parses `-12`, `3/4`, `-0.125` (a decimal is the exact fraction it denotes), with optional
-    /// surrounding white space.
+    /// Parses a constant expression of the one grammar of [`crate::expr`] and evaluates it
+    /// exactly: `-12`, `3/4`, `-0.125` (a decimal is the exact fraction it denotes), `2.5e-3`
+    /// (`= 1/400`), `2^-3`, `sqrt(9/4)`; white space is allowed between tokens.
+    ///
+    /// # Errors
+    /// A syntax error, a variable (`"a"`), division by zero, an irrational `sqrt`, or a constant
+    /// beyond the limits of [`crate::expr`], each with its position.
     fn from_str(s: &str) -> Result<Self, Self::Err> {
-        let t = s.trim();
-        let bad = || ParseRationalError::Malformed(s.to_string());
-        let int = |x: &str| -> Result<BigInt, ParseRationalError> {
-            let digits = x.strip_prefix(['-', '+']).unwrap_or(x);
-            if digits.is_empty() || !digits.bytes().all(|c| c.is_ascii_digit()) {
-                return Err(bad());
-            }
-            x.parse::<BigInt>().map_err(|_| bad())
-        };
-        if let Some((n, d)) = t.split_once('/') {
-            let (n, d) = (int(n.trim())?, int(d.trim())?);
-            if d.is_zero() {
-                return Err(ParseRationalError::ZeroDenominator(s.to_string()));
-            }
-            return Ok(Rational::from_big_parts(n, d));
-        }
-        if let Some((i, frac)) = t.split_once('.') {
-            if frac.is_empty() || !frac.bytes().all(|c| c.is_ascii_digit()) {
-                return Err(bad());
-            }
-            let negative = i.starts_with('-');
-            let ipart = if i == "-" || i == "+" || i.is_empty() {
-                BigInt::zero()
-            } else {
-                int(i)?
-            };
-            let scale = BigInt::from(10u32).pow(frac.len() as u32);
-            let f = frac.parse::<BigInt>().map_err(|_| bad())?;
-            let mag = ipart.abs() * &scale + f;
-            let num = if negative { -mag } else { mag };
-            return Ok(Rational::from_big_parts(num, scale));
-        }
-        Ok(Rational::from(int(t)?))
+        crate::expr::parse_expr(s)?.eval_constant()
     }
 }
 
@@ -774,11 +740,31 @@ mod tests {
         assert_eq!("6/-4".parse::<Rational>().unwrap(), q(-3, 2));
         assert!(matches!(
             "1/0".parse::<Rational>(),
-            Err(ParseRationalError::ZeroDenominator(_))
+            Err(ParseRationalError::DivisionByZero { pos: 2 })
         ));
-        for bad in ["", "1/", "a", "1.2.3", "--1", "1.", "0x10"] {
+        for bad in ["", "1/", "a", "1.2.3", "1.", "0x10", "2 3", "1e", "sin(1)"] {
             assert!(bad.parse::<Rational>().is_err(), "{bad:?} parsed");
         }
+        // The one grammar: signs, products, powers and perfect-square roots are constants too.
+        assert_eq!("--1".parse::<Rational>().unwrap(), q(1, 1));
+        assert_eq!(" 2^-3 ".parse::<Rational>().unwrap(), q(1, 8));
+        assert_eq!("sqrt(9/4)".parse::<Rational>().unwrap(), q(3, 2));
+    }
+
+    #[test]
+    fn scientific_notation_is_exact() {
+        // Regression: the old parser had no exponents ("1e3" was malformed, "5e0" rejected).
+        assert_eq!("1e3".parse::<Rational>().unwrap(), q(1000, 1));
+        assert_eq!("2.5e-3".parse::<Rational>().unwrap(), q(1, 400));
+        assert_eq!("1E+5".parse::<Rational>().unwrap(), q(100_000, 1));
+        assert_eq!("5e0".parse::<Rational>().unwrap(), q(5, 1));
+        assert_eq!("-0.0e7".parse::<Rational>().unwrap(), Rational::ZERO);
+        assert_eq!(
+            "1e100001".parse::<Rational>().unwrap_err().to_string(),
+            "decimal exponent 100001 at 0 is out of range (absolute value at most 100000, \
+             MAX_DECIMAL_EXPONENT)"
+        );
+        assert!("1e-100000".parse::<Rational>().is_ok());
     }
 
     #[test]

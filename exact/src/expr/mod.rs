@@ -1,0 +1,396 @@
+//! Expressions: the one grammar for every textual number or polynomial in the workspace. A parser
+//! to an AST with positions, the conversion of the AST to a [`Poly`](crate::poly::Poly) over any coefficient type
+//! implementing [`Coefficient`], the exact evaluation of constant expressions
+//! ([`Expr::eval_constant`]) and a printer.
+//!
+//! Every entry point reads text through [`parse_expr`]: `prove` and the claim catalogue (via
+//! [`parse_poly`]), and the `FromStr` of [`Rational`], [`crate::Radical`] and
+//! [`crate::ComplexRadical`] (every number string of `solve`), which parse and then evaluate the
+//! constant expression exactly in their type. So `"2 sqrt(4)"`, `"1e3"` and `"(2+sqrt(2))/3"` mean
+//! the same everywhere, and the limits below hold for every input. The parser is hand-written
+//! recursive descent: the grammar is small, and positions, the juxtaposition rule, the lexing of
+//! scientific notation and the error messages are easier to control than with a generator.
+//!
+//! # Syntax
+//! ```text
+//! sum      := product (('+' | '-') product)*
+//! product  := unary (('*' | '/') unary | implicit)*
+//! implicit := power                          (juxtaposition, not starting with a number)
+//! unary    := ('-' | '+') unary | power
+//! power    := atom ('^' exponent)?
+//! exponent := ('-' | '+') exponent | atom ('^' exponent)?   (right-associative)
+//! atom     := number | variable | 'sqrt' '(' sum ')' | '(' sum ')'
+//! number   := [0-9]+ ('.' [0-9]+)? ([eE] [+-]? [0-9]+)?
+//! variable := [A-Za-z_][A-Za-z0-9_]*          (not followed by '('; not the word sqrt)
+//! ```
+//! White space may appear between tokens.
+//!
+//! * **Numbers are exact**: a decimal is the fraction it denotes (`0.1 = 1/10`), and scientific
+//!   notation is read exactly (`1e3 = 1000`, `2.5e-3 = 1/400`, `1E+5`, `5e0`). The exponent
+//!   belongs to the number only when `e`/`E` follows the digits directly and is followed by an
+//!   optional sign and at least one digit; otherwise `2e` is the product `2*e` of the number 2
+//!   and the variable `e`, and `2e+x` is `2*e + x`.
+//! * **Juxtaposition multiplies**, binding like `*`: `2x`, `2 sqrt(2)`, `x y`, `(a+b)(a-b)`,
+//!   `c^2 x^3`. A juxtaposed factor takes no sign of its own (`x -y` is a difference) and may not
+//!   start with a number (`2 3` and `x 2` are errors: write `*`).
+//! * **Functions**: the only function is `sqrt`. A name followed by `(` is a function call, so
+//!   `sin(x)` is the error `unknown function 'sin'` rather than the product `sin*(x)`; write the
+//!   `*` for a product (`x*(y+1)`).
+//! * `^` binds tighter than unary minus (`-x^2 = -(x^2)`) and is right-associative
+//!   (`x^2^3 = x^8`). Its exponent must evaluate to an integer constant with absolute value at
+//!   most [`MAX_EXPONENT`]; it may carry a sign (`2^-3 = 1/8`), but a negative exponent needs a
+//!   non-zero constant base. Likewise a division is allowed only by an expression that evaluates
+//!   to a non-zero constant (`3/4*x`).
+//! * `sqrt(...)` takes a constant and needs a coefficient type that has the root (over
+//!   [`Rational`], only of perfect squares; [`crate::Radical`] denests; [`crate::ComplexRadical`]
+//!   takes the principal root).
+//! * A variable in a constant context ([`Expr::eval_constant`]) is an error naming it, except
+//!   the names the target type defines ([`Coefficient::named_constant`]: `i` for
+//!   [`crate::ComplexRadical`]).
+//!
+//! # Limits
+//! No input makes the parser, the conversion or the evaluation panic or allocate without bound:
+//! * nesting of parentheses, signs and exponents: at most [`MAX_DEPTH`] levels;
+//! * `^` exponents: `|k| <= ` [`MAX_EXPONENT`]; a variable's exponent must fit in `u32`;
+//! * the decimal exponent of a number: `|e| <= ` [`MAX_DECIMAL_EXPONENT`];
+//! * every constant (a number, a folded constant, a polynomial coefficient) has at most
+//!   [`MAX_CONSTANT_BITS`] bits. Powers are **predicted** before they are computed (the size of
+//!   `c^k` is at least `k` times that of `c`, [`Coefficient::size_bits`]), and every product
+//!   and power is checked after it is computed, so no intermediate result exceeds about twice the
+//!   limit: `((2^10000)^10000)^10000` is refused at once.
+//!
+//! # Conversion
+//! [`Expr::to_poly`] expands bottom-up with the fast polynomial arithmetic of [`crate::poly`]:
+//! sums are added pairwise (balanced), the factors of a product multiplied smallest first with
+//! the constant factors folded into one scalar, powers by binary powering. Variables are looked
+//! up (and added) in a [`Vars`](crate::poly::Vars) table, in order of first appearance. [`Expr::eval_constant`]
+//! evaluates a constant expression in any [`Coefficient`] type with the same rules and limits.
+//!
+//! # Layout
+//! Here: the limits, the [`Coefficient`] trait, the AST and the errors; `parse`: the lexer and
+//! the parser; `eval`: the conversion to polynomials and the constant evaluator with the size
+//! limits; `print`: the printer; `w1`: the text of workload W1.
+//!
+//! # Errors
+//! Every error is an [`ExprError`] with the byte position of the offending token or
+//! sub-expression, e.g. `unexpected ')' at 14: expected a number, a variable or '('`.
+use crate::rational::Rational;
+use exactcheck_core::Ring;
+use num_bigint::BigInt;
+use num_traits::Signed;
+
+mod eval;
+mod parse;
+mod print;
+#[cfg(test)]
+mod tests;
+mod w1;
+
+pub use parse::{parse_expr, parse_poly};
+pub use w1::w1_text;
+
+/// The deepest nesting of parentheses, signs and exponents the parser accepts.
+pub const MAX_DEPTH: usize = 256;
+
+/// The largest absolute value of an exponent after `^`.
+pub const MAX_EXPONENT: u32 = 10_000;
+
+/// The largest absolute value of the decimal exponent of a number (`1e100000`).
+pub const MAX_DECIMAL_EXPONENT: u32 = 100_000;
+
+/// The largest size in bits of any constant: a number, a folded constant expression, or a
+/// coefficient of a polynomial built by [`Expr::to_poly`] (about 301,000 decimal digits).
+pub const MAX_CONSTANT_BITS: u64 = 1_000_000;
+
+// ------------------------------------------------------------------------------ coefficients
+
+/// What the conversion needs of a coefficient type: the image of a rational number, inverses (for
+/// division by constants) and square roots (for `sqrt`).
+///
+/// Implemented here for [`Rational`]; a square-root field or a finite field implements it beside
+/// its definition (`impl exactcheck_exact::expr::Coefficient for ...`).
+pub trait Coefficient: Ring {
+    /// The image of a rational number, `None` if it has none (e.g. a denominator divisible by the
+    /// characteristic).
+    fn from_rational(q: &Rational) -> Option<Self>;
+    /// The inverse, `None` for zero (or any non-invertible element).
+    fn try_inverse(&self) -> Option<Self>;
+    /// A square root in the type, `None` if there is none.
+    fn try_sqrt(&self) -> Option<Self>;
+    /// Appended to the error message when [`Coefficient::try_sqrt`] fails (e.g. which field
+    /// would have the root); empty by default.
+    fn sqrt_hint() -> &'static str {
+        ""
+    }
+    /// A lower bound for the size in bits of the value that grows linearly under powers:
+    /// `size_bits(x^k) >= k * size_bits(x)` (for a rational `n/d`,
+    /// `floor(log2 |n|) + floor(log2 d)`; 0 for zero and units such as `±1`). The size limit
+    /// [`MAX_CONSTANT_BITS`] predicts powers with it and checks results against it. The default,
+    /// 0, suits types of fixed size (a finite field), which need no limit.
+    fn size_bits(&self) -> u64 {
+        0
+    }
+    /// Whether [`Coefficient::size_bits`] is at most `max`; a type may answer faster than by
+    /// computing the size (every coefficient of every product is checked).
+    fn size_within(&self, max: u64) -> bool {
+        self.size_bits() <= max
+    }
+    /// The value of a name in a constant expression ([`Expr::eval_constant`]), `None` for a name
+    /// the type does not define (the default: every name). [`crate::ComplexRadical`] defines `i`.
+    fn named_constant(_name: &str) -> Option<Self> {
+        None
+    }
+}
+
+/// `floor(log2 |n|)`, 0 for zero.
+pub(crate) fn log2_floor(n: &BigInt) -> u64 {
+    n.bits().saturating_sub(1)
+}
+
+impl Coefficient for Rational {
+    fn from_rational(q: &Rational) -> Option<Self> {
+        Some(q.clone())
+    }
+    fn try_inverse(&self) -> Option<Self> {
+        self.recip().ok()
+    }
+    /// The non-negative root of a rational whose numerator and denominator are perfect squares.
+    fn try_sqrt(&self) -> Option<Self> {
+        let (n, d) = (self.numer(), self.denom());
+        if n.is_negative() {
+            return None;
+        }
+        let (rn, rd) = (n.sqrt(), d.sqrt());
+        if &rn * &rn == n && &rd * &rd == d {
+            Some(Rational::from(num_rational::BigRational::new(rn, rd)))
+        } else {
+            None
+        }
+    }
+    fn sqrt_hint() -> &'static str {
+        " (it is irrational: a radical coefficient field is needed)"
+    }
+    fn size_bits(&self) -> u64 {
+        log2_floor(&self.numer()) + log2_floor(&self.denom())
+    }
+    /// Inline values (two machine words) are far below any limit used here.
+    fn size_within(&self, max: u64) -> bool {
+        (self.is_inline() && max >= 256) || self.size_bits() <= max
+    }
+}
+
+// ------------------------------------------------------------------------------ AST
+
+/// `+` or `-` in a sum.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum AddOp {
+    /// Addition.
+    Plus,
+    /// Subtraction.
+    Minus,
+}
+
+/// `*` or `/` in a product.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum MulOp {
+    /// Multiplication.
+    Times,
+    /// Division (by a non-zero constant).
+    Divide,
+}
+
+/// A parsed expression: a node and the byte position where it starts in the source.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Expr {
+    /// What the node is.
+    pub kind: ExprKind,
+    /// The byte offset of its first token in the source (0 for built nodes, if one likes).
+    pub pos: usize,
+}
+
+/// The kinds of [`Expr`] nodes. Sums and products are n-ary, so long chains stay shallow.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ExprKind {
+    /// A number (the parser produces non-negative integers and decimals).
+    Number(Rational),
+    /// A variable by name.
+    Var(String),
+    /// Unary minus.
+    Neg(Box<Expr>),
+    /// `t_0 op_1 t_1 op_2 t_2 ...`; the first operator applies to the first term (the parser
+    /// always gives `Plus` there).
+    Sum(Vec<(AddOp, Expr)>),
+    /// `f_0 op_1 f_1 ...`; the first operator applies to the first factor (`Divide` there means
+    /// `1 / f_0`; the parser always gives `Times`).
+    Product(Vec<(MulOp, Expr)>),
+    /// `base ^ exponent`.
+    Pow(Box<Expr>, Box<Expr>),
+    /// `sqrt(arg)`.
+    Sqrt(Box<Expr>),
+}
+
+impl Expr {
+    /// A node at position 0 (for building expressions in code).
+    pub fn new(kind: ExprKind) -> Self {
+        Expr { kind, pos: 0 }
+    }
+}
+
+// ------------------------------------------------------------------------------ errors
+
+/// An error of parsing or converting an expression, with the byte position it refers to.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum ExprError {
+    /// A token that does not fit the grammar.
+    #[error("unexpected {found} at {pos}: expected {expected}")]
+    Unexpected {
+        /// Byte position of the token.
+        pos: usize,
+        /// The token, quoted (or `end of input`).
+        found: String,
+        /// What would have fitted.
+        expected: &'static str,
+    },
+    /// Division by an expression that is not constant.
+    #[error("division by a non-constant expression at {pos}")]
+    NonConstantDivisor {
+        /// Byte position of the divisor.
+        pos: usize,
+    },
+    /// Division by an expression that evaluates to zero.
+    #[error("division by zero at {pos}")]
+    DivisionByZero {
+        /// Byte position of the divisor.
+        pos: usize,
+    },
+    /// An exponent that is not a non-negative integer constant.
+    #[error("exponent at {pos} must be a non-negative integer constant, found {found}")]
+    BadExponent {
+        /// Byte position of the exponent.
+        pos: usize,
+        /// The exponent (its expression, or its value).
+        found: String,
+    },
+    /// An exponent whose absolute value exceeds [`MAX_EXPONENT`].
+    #[error("exponent {exponent} at {pos} is too large (absolute value at most {max})")]
+    ExponentTooLarge {
+        /// Byte position of the exponent.
+        pos: usize,
+        /// Its value.
+        exponent: String,
+        /// The limit, [`MAX_EXPONENT`].
+        max: u32,
+    },
+    /// A negative exponent of a base that is not a non-zero constant.
+    #[error(
+        "negative exponent at {pos}: only a non-zero constant can be raised to a negative power"
+    )]
+    NegativeExponent {
+        /// Byte position of the exponent.
+        pos: usize,
+    },
+    /// A name followed by `(` that is not a known function.
+    #[error(
+        "unknown function '{name}' at {pos}: the only function is sqrt (write '{name}*(...)' \
+         for a product)"
+    )]
+    UnknownFunction {
+        /// Byte position of the name.
+        pos: usize,
+        /// The name.
+        name: String,
+    },
+    /// A variable where a constant is required ([`Expr::eval_constant`]).
+    #[error("variable '{name}' at {pos} where a constant number is expected{hint}")]
+    NotConstant {
+        /// Byte position of the variable.
+        pos: usize,
+        /// Its name.
+        name: String,
+        /// A hint for names that are constants elsewhere (`i`).
+        hint: &'static str,
+    },
+    /// A number whose decimal exponent exceeds [`MAX_DECIMAL_EXPONENT`] in absolute value.
+    #[error(
+        "decimal exponent {exponent} at {pos} is out of range (absolute value at most {max}, \
+         MAX_DECIMAL_EXPONENT)"
+    )]
+    DecimalExponentTooLarge {
+        /// Byte position of the number.
+        pos: usize,
+        /// The exponent as written.
+        exponent: String,
+        /// The limit, [`MAX_DECIMAL_EXPONENT`].
+        max: u32,
+    },
+    /// A constant (a number, a folded constant or a polynomial coefficient) that would exceed
+    /// [`MAX_CONSTANT_BITS`] bits.
+    #[error("constant too large at {pos}: more than {max} bits (limit MAX_CONSTANT_BITS)")]
+    ConstantTooLarge {
+        /// Byte position of the number, product or power.
+        pos: usize,
+        /// The limit, [`MAX_CONSTANT_BITS`].
+        max: u64,
+    },
+    /// A power or product whose exponents would exceed `u32::MAX`.
+    #[error("exponent overflow at {pos}: a variable's exponent would exceed {max}", max = u32::MAX)]
+    ExponentOverflow {
+        /// Byte position of the power or product.
+        pos: usize,
+    },
+    /// `sqrt` of an expression that is not constant.
+    #[error("sqrt of a non-constant expression at {pos}")]
+    NonConstantSqrt {
+        /// Byte position of the argument.
+        pos: usize,
+    },
+    /// `sqrt` of a constant whose root is not in the coefficient field.
+    #[error("sqrt({arg}) at {pos} does not lie in the coefficient field{hint}")]
+    NoSqrt {
+        /// Byte position of the `sqrt`.
+        pos: usize,
+        /// The argument, printed.
+        arg: String,
+        /// The coefficient type's hint ([`Coefficient::sqrt_hint`]).
+        hint: &'static str,
+    },
+    /// A number with no image in the coefficient ring.
+    #[error("the number {number} at {pos} has no image in the coefficient ring")]
+    Unrepresentable {
+        /// Byte position of the number.
+        pos: usize,
+        /// The number.
+        number: String,
+    },
+    /// Nesting deeper than [`MAX_DEPTH`].
+    #[error("expression nested too deeply at {pos} (more than {max} levels)")]
+    TooDeep {
+        /// Byte position where the limit was hit.
+        pos: usize,
+        /// The limit, [`MAX_DEPTH`].
+        max: usize,
+    },
+}
+
+impl ExprError {
+    /// The byte position the error refers to.
+    pub fn position(&self) -> usize {
+        match self {
+            ExprError::Unexpected { pos, .. }
+            | ExprError::NonConstantDivisor { pos }
+            | ExprError::DivisionByZero { pos }
+            | ExprError::BadExponent { pos, .. }
+            | ExprError::ExponentTooLarge { pos, .. }
+            | ExprError::ExponentOverflow { pos }
+            | ExprError::NegativeExponent { pos }
+            | ExprError::UnknownFunction { pos, .. }
+            | ExprError::NotConstant { pos, .. }
+            | ExprError::DecimalExponentTooLarge { pos, .. }
+            | ExprError::ConstantTooLarge { pos, .. }
+            | ExprError::NonConstantSqrt { pos }
+            | ExprError::NoSqrt { pos, .. }
+            | ExprError::Unrepresentable { pos, .. }
+            | ExprError::TooDeep { pos, .. } => *pos,
+        }
+    }
+}

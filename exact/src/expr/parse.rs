@@ -1,0 +1,412 @@
+//! The lexer and the recursive-descent parser of the grammar in the module documentation, and
+//! the exact value of number tokens (decimals, scientific notation).
+
+use super::eval::check_constant;
+use super::*;
+use crate::poly::{Poly, Vars};
+use num_bigint::BigUint;
+use std::str::FromStr;
+
+// ------------------------------------------------------------------------------ lexer
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Tok {
+    Num,
+    Ident,
+    Plus,
+    Minus,
+    Star,
+    Slash,
+    Caret,
+    LParen,
+    RParen,
+    End,
+    Bad(char),
+}
+
+#[derive(Clone, Copy, Debug)]
+struct Token {
+    tok: Tok,
+    start: usize,
+    end: usize,
+}
+
+const EXPECT_OPERAND: &str = "a number, a variable or '('";
+const EXPECT_EXPONENT: &str = "an integer exponent (a number, a sign or '(')";
+
+struct Parser<'a> {
+    src: &'a str,
+    cur: Token,
+    depth: usize,
+}
+
+impl<'a> Parser<'a> {
+    fn new(src: &'a str) -> Self {
+        let mut p = Parser {
+            src,
+            cur: Token {
+                tok: Tok::End,
+                start: 0,
+                end: 0,
+            },
+            depth: 0,
+        };
+        p.cur = p.lex(0);
+        p
+    }
+
+    /// The token starting at or after byte `at` (skipping white space).
+    fn lex(&self, at: usize) -> Token {
+        let rest = &self.src[at..];
+        let Some((off, ch)) = rest.char_indices().find(|(_, c)| !c.is_whitespace()) else {
+            return Token {
+                tok: Tok::End,
+                start: self.src.len(),
+                end: self.src.len(),
+            };
+        };
+        let start = at + off;
+        let bytes = self.src.as_bytes();
+        let run = |mut i: usize, ok: fn(u8) -> bool| {
+            while i < bytes.len() && ok(bytes[i]) {
+                i += 1;
+            }
+            i
+        };
+        let (tok, end) = match ch {
+            '0'..='9' => {
+                let mut end = run(start, |b| b.is_ascii_digit());
+                if end + 1 < bytes.len() && bytes[end] == b'.' && bytes[end + 1].is_ascii_digit() {
+                    end = run(end + 1, |b| b.is_ascii_digit());
+                }
+                // A decimal exponent: `e`/`E`, an optional sign, at least one digit. Otherwise
+                // the `e` starts a name (`2e` = 2*e).
+                if end < bytes.len() && matches!(bytes[end], b'e' | b'E') {
+                    let mut d = end + 1;
+                    if d < bytes.len() && matches!(bytes[d], b'+' | b'-') {
+                        d += 1;
+                    }
+                    if d < bytes.len() && bytes[d].is_ascii_digit() {
+                        end = run(d, |b| b.is_ascii_digit());
+                    }
+                }
+                (Tok::Num, end)
+            }
+            'A'..='Z' | 'a'..='z' | '_' => (
+                Tok::Ident,
+                run(start, |b| b.is_ascii_alphanumeric() || b == b'_'),
+            ),
+            '+' => (Tok::Plus, start + 1),
+            '-' => (Tok::Minus, start + 1),
+            '*' => (Tok::Star, start + 1),
+            '/' => (Tok::Slash, start + 1),
+            '^' => (Tok::Caret, start + 1),
+            '(' => (Tok::LParen, start + 1),
+            ')' => (Tok::RParen, start + 1),
+            c => (Tok::Bad(c), start + c.len_utf8()),
+        };
+        Token { tok, start, end }
+    }
+
+    fn bump(&mut self) {
+        self.cur = self.lex(self.cur.end);
+    }
+
+    fn text(&self, t: Token) -> &'a str {
+        &self.src[t.start..t.end]
+    }
+
+    fn unexpected(&self, expected: &'static str) -> ExprError {
+        let t = self.cur;
+        let found = match t.tok {
+            Tok::End => "end of input".to_string(),
+            Tok::Bad(c) => format!("character '{}'", c.escape_debug()),
+            _ => format!("'{}'", self.text(t)),
+        };
+        ExprError::Unexpected {
+            pos: t.start,
+            found,
+            expected,
+        }
+    }
+
+    fn enter(&mut self) -> Result<(), ExprError> {
+        self.depth += 1;
+        if self.depth > MAX_DEPTH {
+            return Err(ExprError::TooDeep {
+                pos: self.cur.start,
+                max: MAX_DEPTH,
+            });
+        }
+        Ok(())
+    }
+
+    fn leave(&mut self) {
+        self.depth -= 1;
+    }
+
+    fn parse_all(mut self) -> Result<Expr, ExprError> {
+        let e = self.parse_sum()?;
+        if self.cur.tok != Tok::End {
+            return Err(self.unexpected("an operator or end of input"));
+        }
+        Ok(e)
+    }
+
+    fn parse_sum(&mut self) -> Result<Expr, ExprError> {
+        let first = self.parse_product()?;
+        if !matches!(self.cur.tok, Tok::Plus | Tok::Minus) {
+            return Ok(first);
+        }
+        let pos = first.pos;
+        let mut items = vec![(AddOp::Plus, first)];
+        while let Tok::Plus | Tok::Minus = self.cur.tok {
+            let op = if self.cur.tok == Tok::Plus {
+                AddOp::Plus
+            } else {
+                AddOp::Minus
+            };
+            self.bump();
+            items.push((op, self.parse_product()?));
+        }
+        Ok(Expr {
+            kind: ExprKind::Sum(items),
+            pos,
+        })
+    }
+
+    /// Whether the current token can begin a factor written by juxtaposition (`2x`, `x y`,
+    /// `(a+b)(a-b)`, `c^2 x^3`): implicit multiplication, binding like `*`. A number cannot:
+    /// `2 3` or `x 2` is more likely a typo than a product, so it stays an error.
+    fn starts_implicit_factor(&self) -> bool {
+        matches!(self.cur.tok, Tok::Ident | Tok::LParen)
+    }
+
+    fn parse_product(&mut self) -> Result<Expr, ExprError> {
+        let first = self.parse_unary()?;
+        if !matches!(self.cur.tok, Tok::Star | Tok::Slash) && !self.starts_implicit_factor() {
+            return Ok(first);
+        }
+        let pos = first.pos;
+        let mut items = vec![(MulOp::Times, first)];
+        loop {
+            match self.cur.tok {
+                Tok::Star | Tok::Slash => {
+                    let op = if self.cur.tok == Tok::Star {
+                        MulOp::Times
+                    } else {
+                        MulOp::Divide
+                    };
+                    self.bump();
+                    items.push((op, self.parse_unary()?));
+                }
+                // A juxtaposed factor takes no sign of its own: `x -y` stays a difference.
+                _ if self.starts_implicit_factor() => {
+                    items.push((MulOp::Times, self.parse_power()?))
+                }
+                _ => break,
+            }
+        }
+        Ok(Expr {
+            kind: ExprKind::Product(items),
+            pos,
+        })
+    }
+
+    /// `unary := ('-' | '+') unary | power`.
+    fn parse_unary(&mut self) -> Result<Expr, ExprError> {
+        self.parse_signed(Self::parse_power)
+    }
+
+    /// Signs in front of what `rest` parses: `('-' | '+') signed | rest` (unary minus and
+    /// signed exponents share it).
+    fn parse_signed(
+        &mut self,
+        rest: fn(&mut Self) -> Result<Expr, ExprError>,
+    ) -> Result<Expr, ExprError> {
+        self.enter()?;
+        let r = match self.cur.tok {
+            Tok::Minus | Tok::Plus => {
+                let (pos, neg) = (self.cur.start, self.cur.tok == Tok::Minus);
+                self.bump();
+                self.parse_signed(rest).map(|e| {
+                    if neg {
+                        Expr {
+                            kind: ExprKind::Neg(Box::new(e)),
+                            pos,
+                        }
+                    } else {
+                        e
+                    }
+                })
+            }
+            _ => rest(self),
+        };
+        self.leave();
+        r
+    }
+
+    fn parse_power(&mut self) -> Result<Expr, ExprError> {
+        let base = self.parse_atom(EXPECT_OPERAND)?;
+        self.parse_power_tail(base)
+    }
+
+    /// `'^' exponent` after `base`, if present.
+    fn parse_power_tail(&mut self, base: Expr) -> Result<Expr, ExprError> {
+        if self.cur.tok != Tok::Caret {
+            return Ok(base);
+        }
+        self.bump();
+        let exp = self.parse_exponent()?;
+        let pos = base.pos;
+        Ok(Expr {
+            kind: ExprKind::Pow(Box::new(base), Box::new(exp)),
+            pos,
+        })
+    }
+
+    /// `exponent := ('-' | '+') exponent | atom ('^' exponent)?`.
+    fn parse_exponent(&mut self) -> Result<Expr, ExprError> {
+        self.parse_signed(|p| {
+            let base = p.parse_atom(EXPECT_EXPONENT)?;
+            p.parse_power_tail(base)
+        })
+    }
+
+    fn parse_atom(&mut self, expected: &'static str) -> Result<Expr, ExprError> {
+        let t = self.cur;
+        match t.tok {
+            Tok::Num => {
+                let q = number_value(self.text(t), t.start)?;
+                self.bump();
+                Ok(Expr {
+                    kind: ExprKind::Number(q),
+                    pos: t.start,
+                })
+            }
+            Tok::Ident if self.text(t) == "sqrt" => {
+                self.bump();
+                if self.cur.tok != Tok::LParen {
+                    return Err(self.unexpected("'(' after sqrt"));
+                }
+                let arg = self.parse_parenthesized()?;
+                Ok(Expr {
+                    kind: ExprKind::Sqrt(Box::new(arg)),
+                    pos: t.start,
+                })
+            }
+            Tok::Ident => {
+                self.bump();
+                if self.cur.tok == Tok::LParen {
+                    return Err(ExprError::UnknownFunction {
+                        pos: t.start,
+                        name: self.text(t).to_string(),
+                    });
+                }
+                Ok(Expr {
+                    kind: ExprKind::Var(self.text(t).to_string()),
+                    pos: t.start,
+                })
+            }
+            Tok::LParen => self.parse_parenthesized(),
+            _ => Err(self.unexpected(expected)),
+        }
+    }
+
+    /// `'(' sum ')'`, the current token being `(`.
+    /// The expression's position becomes that of the `(`.
+    fn parse_parenthesized(&mut self) -> Result<Expr, ExprError> {
+        self.enter()?;
+        let open = self.cur.start;
+        self.bump();
+        let inner = self.parse_sum();
+        self.leave();
+        let inner = inner?;
+        if self.cur.tok != Tok::RParen {
+            return Err(self.unexpected("an operator or ')'"));
+        }
+        self.bump();
+        Ok(Expr { pos: open, ..inner })
+    }
+}
+
+/// The exact value of a number token (`12`, `0.25`, `2.5e-3`), within [`MAX_DECIMAL_EXPONENT`]
+/// and [`MAX_CONSTANT_BITS`].
+fn number_value(text: &str, pos: usize) -> Result<Rational, ExprError> {
+    let (mantissa, exponent) = match text.find(['e', 'E']) {
+        Some(k) => (&text[..k], Some(&text[k + 1..])),
+        None => (text, None),
+    };
+    let (int, frac) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+    let e10: i64 = match exponent {
+        None => 0,
+        Some(e) => {
+            let too_large = || ExprError::DecimalExponentTooLarge {
+                pos,
+                exponent: e.to_string(),
+                max: MAX_DECIMAL_EXPONENT,
+            };
+            let v: i64 = e.parse().map_err(|_| too_large())?;
+            if v.unsigned_abs() > u64::from(MAX_DECIMAL_EXPONENT) {
+                return Err(too_large());
+            }
+            v
+        }
+    };
+    let too_large = ExprError::ConstantTooLarge {
+        pos,
+        max: MAX_CONSTANT_BITS,
+    };
+    // The value is digits * 10^(e10 - frac.len()); every decimal digit is more than 3.3 bits,
+    // so a literal with more digits than the limit allows is refused before it is converted.
+    let all = format!("{int}{frac}");
+    let significant = all.trim_start_matches('0');
+    let scale = e10 - frac.len() as i64;
+    let max_digits = (MAX_CONSTANT_BITS as f64 / std::f64::consts::LOG2_10) as u64 + 1;
+    if significant.len() as u64 + scale.unsigned_abs() > max_digits {
+        return Err(too_large);
+    }
+    if significant.is_empty() {
+        return Ok(Rational::ZERO);
+    }
+    let m: BigUint = significant
+        .parse()
+        .expect("a number token is a non-empty string of decimal digits");
+    let m = BigInt::from(m);
+    let p = BigInt::from(10u32).pow(
+        u32::try_from(scale.unsigned_abs()).expect("bounded by MAX_DECIMAL_EXPONENT and digits"),
+    );
+    let q = if scale >= 0 {
+        Rational::from(m * p)
+    } else {
+        Rational::from(num_rational::BigRational::new(m, p))
+    };
+    check_constant(&q, pos)?;
+    Ok(q)
+}
+
+/// Parses an expression to its AST.
+///
+/// # Errors
+/// [`ExprError::Unexpected`] for text that does not fit the grammar, [`ExprError::TooDeep`]
+/// beyond [`MAX_DEPTH`] levels of nesting.
+pub fn parse_expr(text: &str) -> Result<Expr, ExprError> {
+    Parser::new(text).parse_all()
+}
+
+impl FromStr for Expr {
+    type Err = ExprError;
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        parse_expr(s)
+    }
+}
+
+/// Parses an expression and expands it to a polynomial over `C`, looking variables up (and
+/// adding new ones) in `vars`.
+///
+/// # Errors
+/// Every [`ExprError`]: syntax, division by a non-constant or by zero, bad exponents, `sqrt`
+/// outside the coefficient field.
+pub fn parse_poly<C: Coefficient>(text: &str, vars: &mut Vars) -> Result<Poly<C>, ExprError> {
+    parse_expr(text)?.to_poly(vars)
+}

@@ -1,0 +1,81 @@
+//! Printing an [`Expr`] in the syntax it was parsed from, with the parentheses it needs.
+
+use super::*;
+use std::fmt;
+
+// ------------------------------------------------------------------------------ printing
+
+/// Binding strength of a node when printed (higher binds tighter).
+fn precedence(e: &Expr) -> u8 {
+    match e.kind {
+        ExprKind::Sum(_) => 1,
+        ExprKind::Product(_) => 2,
+        ExprKind::Neg(_) => 3,
+        ExprKind::Pow(..) => 4,
+        ExprKind::Number(_) | ExprKind::Var(_) | ExprKind::Sqrt(_) => 5,
+    }
+}
+
+/// Writes `e`, in parentheses when it binds less tightly than `min`.
+fn write_at(f: &mut fmt::Formatter<'_>, e: &Expr, min: u8) -> fmt::Result {
+    if precedence(e) < min {
+        write!(f, "({e})")
+    } else {
+        write!(f, "{e}")
+    }
+}
+
+impl fmt::Display for Expr {
+    /// The expression in the syntax of the module documentation, with the parentheses it needs;
+    /// the output parses back to an expression with the same value.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match &self.kind {
+            ExprKind::Number(q) => {
+                if q.is_integer() && !q.numer().is_negative() {
+                    write!(f, "{q}")
+                } else {
+                    write!(f, "({q})")
+                }
+            }
+            ExprKind::Var(name) => f.write_str(name),
+            ExprKind::Neg(x) => {
+                f.write_str("-")?;
+                write_at(f, x, 3)
+            }
+            ExprKind::Sum(items) => {
+                for (k, (op, x)) in items.iter().enumerate() {
+                    match (k, op) {
+                        (0, AddOp::Plus) => {}
+                        (0, AddOp::Minus) => f.write_str("-")?,
+                        (_, AddOp::Plus) => f.write_str(" + ")?,
+                        (_, AddOp::Minus) => f.write_str(" - ")?,
+                    }
+                    write_at(f, x, 2)?;
+                }
+                Ok(())
+            }
+            ExprKind::Product(items) => {
+                for (k, (op, x)) in items.iter().enumerate() {
+                    match (k, op) {
+                        (0, MulOp::Times) => {}
+                        (0, MulOp::Divide) => f.write_str("1/")?,
+                        (_, MulOp::Times) => f.write_str("*")?,
+                        (_, MulOp::Divide) => f.write_str("/")?,
+                    }
+                    write_at(f, x, 3)?;
+                }
+                Ok(())
+            }
+            ExprKind::Pow(base, exp) => {
+                write_at(f, base, 5)?;
+                f.write_str("^")?;
+                // Right-associative: a power may stand bare as the exponent.
+                match exp.kind {
+                    ExprKind::Pow(..) => write!(f, "{exp}"),
+                    _ => write_at(f, exp, 5),
+                }
+            }
+            ExprKind::Sqrt(x) => write!(f, "sqrt({x})"),
+        }
+    }
+}

@@ -1,0 +1,269 @@
+//! Unit tests of the parser, the conversion, the evaluator and the printer.
+
+use super::*;
+use crate::poly::{Poly, Vars};
+
+type P = Poly<Rational>;
+
+fn poly(s: &str, vars: &mut Vars) -> P {
+    parse_poly(s, vars).unwrap_or_else(|e| panic!("{s:?}: {e}"))
+}
+
+fn err(s: &str) -> String {
+    match parse_poly::<Rational>(s, &mut Vars::new()) {
+        Ok(p) => panic!("{s:?} parsed to {p:?}"),
+        Err(e) => e.to_string(),
+    }
+}
+
+#[test]
+fn precedence_and_associativity() {
+    let mut v = Vars::new();
+    let x = poly("x", &mut v);
+    assert_eq!(poly("-x^2", &mut v), -x.square());
+    assert_eq!(poly("x^2^3", &mut v), x.pow(8));
+    assert_eq!(poly("(x^2)^3", &mut v), x.pow(6));
+    assert_eq!(poly("2^3^2", &mut v), P::from_i64(512));
+    assert_eq!(poly("1 - 2 - 3", &mut v), P::from_i64(-4));
+    assert_eq!(poly("12/3/2", &mut v), P::from_i64(2));
+    assert_eq!(poly("3/4*x*4", &mut v), x.scale_i64(3));
+    assert_eq!(poly(" 0.1 * 10 ", &mut v), P::one());
+    assert_eq!(poly("x^(1+1)", &mut v), x.square());
+    assert_eq!(poly("x^0", &mut v), P::one());
+    assert_eq!(poly("--x", &mut v), x);
+    assert_eq!(poly("+x", &mut v), x);
+    assert_eq!(poly("sqrt(9/4)*2", &mut v), P::from_i64(3));
+    assert_eq!(poly("x/(1+1)*2", &mut v), x);
+}
+
+#[test]
+fn error_messages() {
+    assert_eq!(
+        err("(a + b) * (c))"),
+        "unexpected ')' at 13: expected an operator or end of input"
+    );
+    assert_eq!(
+        err("1 + )"),
+        "unexpected ')' at 4: expected a number, a variable or '('"
+    );
+    assert_eq!(err("x/y"), "division by a non-constant expression at 2");
+    assert_eq!(err("x/(1-1)"), "division by zero at 2");
+    assert_eq!(
+        err("sqrt(2)"),
+        "sqrt(2) at 0 does not lie in the coefficient field (it is irrational: a radical \
+         coefficient field is needed)"
+    );
+    assert_eq!(err("sqrt(x)"), "sqrt of a non-constant expression at 4");
+    assert_eq!(
+        err("sqrt + 1"),
+        "unexpected '+' at 5: expected '(' after sqrt"
+    );
+    assert_eq!(
+        err("x^-1"),
+        "negative exponent at 2: only a non-zero constant can be raised to a negative power"
+    );
+    assert_eq!(
+        err("x^*2"),
+        "unexpected '*' at 2: expected an integer exponent (a number, a sign or '(')"
+    );
+    assert_eq!(err("0^-1"), "division by zero at 2");
+    assert_eq!(
+        err("x^(1/2)"),
+        "exponent at 2 must be a non-negative integer constant, found 1/2"
+    );
+    assert_eq!(
+        err("x^y"),
+        "exponent at 2 must be a non-negative integer constant, found y"
+    );
+    assert_eq!(
+        err("x^10001"),
+        "exponent 10001 at 2 is too large (absolute value at most 10000)"
+    );
+    assert_eq!(
+        err("2^-10001"),
+        "exponent -10001 at 2 is too large (absolute value at most 10000)"
+    );
+    assert_eq!(
+        err("1 # 2"),
+        "unexpected character '#' at 2: expected an operator or end of input"
+    );
+    assert_eq!(
+        err(""),
+        "unexpected end of input at 0: expected a number, a variable or '('"
+    );
+    assert_eq!(
+        err("1."),
+        "unexpected character '.' at 1: expected an operator or end of input"
+    );
+    assert_eq!(
+        err("(1"),
+        "unexpected end of input at 2: expected an operator or ')'"
+    );
+    assert!(err(&"(".repeat(1000)).starts_with("expression nested too deeply"));
+    assert!(err(&"-".repeat(1000)).starts_with("expression nested too deeply"));
+    let deep_pow = format!("x{}", "^1".repeat(1000));
+    assert!(err(&deep_pow).starts_with("expression nested too deeply"));
+    assert!(err("((x^10000)^10000)^10000").starts_with("exponent overflow at 0"));
+}
+
+#[test]
+fn scientific_notation_and_juxtaposition() {
+    let mut v = Vars::new();
+    // Regression: "1e3" was the product 1*e3 of a variable e3, "1e5" likewise.
+    assert_eq!(poly("1e3", &mut v), P::from_i64(1000));
+    assert_eq!(poly("1e5", &mut v), P::from_i64(100_000));
+    assert!(v.is_empty(), "no variable e3 or e5: {v:?}");
+    let x = poly("x", &mut v);
+    assert_eq!(poly("x + 2.5e-3", &mut v), poly("x + 0.0025", &mut v));
+    assert_eq!(
+        poly("2.5e-3", &mut v),
+        P::constant(Rational::new(1, 400).unwrap())
+    );
+    assert_eq!(poly("1E+5", &mut v), P::from_i64(100_000));
+    assert_eq!(poly("5e0", &mut v), P::from_i64(5));
+    assert_eq!(poly("2e3x", &mut v), x.scale_i64(2000));
+    // Without digits after it, `e` is a variable: 2e = 2*e, 2e+x = 2*e + x.
+    let e = poly("e", &mut v);
+    assert_eq!(poly("2e", &mut v), e.scale_i64(2));
+    assert_eq!(poly("2e+x", &mut v), e.scale_i64(2) + x.clone());
+    assert_eq!(poly("2E-x", &mut v), poly("2*E - x", &mut v));
+    assert_eq!(poly("2 sqrt(4) x", &mut v), x.scale_i64(4));
+    assert_eq!(poly("(x+1)(x-1)", &mut v), x.square() - P::one());
+    assert_eq!(poly("2^-2*4x", &mut v), x);
+    assert_eq!(
+        err("1e100001"),
+        "decimal exponent 100001 at 0 is out of range (absolute value at most 100000, \
+         MAX_DECIMAL_EXPONENT)"
+    );
+    assert_eq!(
+        err("1e99999999999999999999999"),
+        "decimal exponent 99999999999999999999999 at 0 is out of range (absolute value at \
+         most 100000, MAX_DECIMAL_EXPONENT)"
+    );
+    // A number may not be juxtaposed after a factor: `2 3` is a typo, not 6.
+    assert_eq!(
+        err("2 3"),
+        "unexpected '3' at 2: expected an operator or end of input"
+    );
+    assert_eq!(
+        err("x 2"),
+        "unexpected '2' at 2: expected an operator or end of input"
+    );
+}
+
+#[test]
+fn unknown_functions_are_errors() {
+    // Regression: `sin(x)` was the product sin*x of a variable sin.
+    assert_eq!(
+        err("sin(x)"),
+        "unknown function 'sin' at 0: the only function is sqrt (write 'sin*(...)' for a \
+         product)"
+    );
+    assert_eq!(
+        err("2 sin(2x)"),
+        "unknown function 'sin' at 2: the only function is sqrt (write 'sin*(...)' for a \
+         product)"
+    );
+    assert!(err("x (y+1)").starts_with("unknown function 'x' at 0"));
+    let mut v = Vars::new();
+    assert_eq!(poly("x*(y+1)", &mut v), poly("x y + x", &mut v));
+}
+
+#[test]
+fn constant_size_limits() {
+    let too_large = "constant too large at 0: more than 1000000 bits (limit MAX_CONSTANT_BITS)";
+    // Regression: this aborted the process allocating; now refused before computing.
+    assert_eq!(err("((2^10000)^10000)^10000"), too_large);
+    assert_eq!(err("(2^10000)^10000"), too_large);
+    assert_eq!(err("(3/2^10000)^10000 x"), too_large);
+    assert_eq!(err("(2^10000 x + 1)^10000"), too_large);
+    // The limit is on bits: 2^999999 fits, 2^1000001 does not.
+    let mut v = Vars::new();
+    assert!(parse_poly::<Rational>("(2^1000)^999 * 2^999", &mut v).is_ok());
+    assert!(err("(2^1000)^1000 * 2^1000").starts_with("constant too large"));
+    assert!(err("(2^1000 x)^1000 * (2^1000 y)^1000").starts_with("constant too large"));
+    let long = "9".repeat(301_100);
+    assert!(err(&long).starts_with("constant too large at 0"));
+    assert!(err("1e-100000 * 1e-100000 * 1e-100000 * 1e-100000").starts_with("constant too"));
+    // The evaluator has the same limits.
+    let e = parse_expr("((2^1024)^1024)^1024").unwrap();
+    assert_eq!(
+        e.eval_constant::<Rational>().unwrap_err().to_string(),
+        too_large
+    );
+    // An exponent is a constant expression too, evaluated with the limits.
+    assert!(err("x^((2^10000)^10000)").starts_with("constant too large at 2"));
+}
+
+#[test]
+fn constant_evaluation() {
+    let ev = |s: &str| parse_expr(s).unwrap().eval_constant::<Rational>();
+    assert_eq!(ev("3/4 - 1/4").unwrap(), Rational::new(1, 2).unwrap());
+    assert_eq!(ev("(1/2)^-3 + 2^0").unwrap(), Rational::from_integer(9));
+    assert_eq!(ev("2 sqrt(1e4)").unwrap(), Rational::from_integer(200));
+    assert_eq!(
+        ev("1 + y^2").unwrap_err().to_string(),
+        "variable 'y' at 4 where a constant number is expected"
+    );
+    assert_eq!(
+        ev("1/(2-2)").unwrap_err().to_string(),
+        "division by zero at 2"
+    );
+    assert_eq!(
+        ev("2^x").unwrap_err().to_string(),
+        "exponent at 2 must be a non-negative integer constant, found x"
+    );
+}
+
+#[test]
+fn expression_printing_round_trips() {
+    for s in [
+        "-x^2",
+        "(a + b)*(c - d)/3",
+        "x^2^3",
+        "(x^2)^3",
+        "-(a - b)",
+        "a - -b",
+        "a*-b",
+        "sqrt(4)*x + 0.25",
+        "2*(x + 1)^3 - 1/2*y",
+        "2^-3*x + 2.5e-3",
+        "(1/2)^-(1+1)",
+    ] {
+        let e = parse_expr(s).unwrap();
+        let printed = e.to_string();
+        let mut v1 = Vars::new();
+        let mut v2 = Vars::new();
+        let p1: P = e.to_poly(&mut v1).unwrap();
+        let p2: P = parse_poly(&printed, &mut v2).unwrap();
+        assert_eq!(v1, v2, "{s} -> {printed}");
+        assert_eq!(p1, p2, "{s} -> {printed}");
+    }
+}
+
+#[test]
+fn w1_text_matches_the_anchor() {
+    let (lhs, rhs) = w1_text(2, 3);
+    assert_eq!(
+        lhs,
+        "(1*t^0*(1-t)^2*(a*qx0+b*qy0+c*qz0)+2*t^1*(1-t)^1*(a*qx1+b*qy1+c*qz1)+1*t^2*(1-t)^0*\
+         (a*qx2+b*qy2+c*qz2))*(1*t^0*(1-t)^3*px0+3*t^1*(1-t)^2*px1+3*t^2*(1-t)^1*px2+1*t^3*\
+         (1-t)^0*px3)-(1*t^0*(1-t)^3*(a*px0+b*py0+c*pz0+d)+3*t^1*(1-t)^2*(a*px1+b*py1+c*pz1+d)\
+         +3*t^2*(1-t)^1*(a*px2+b*py2+c*pz2+d)+1*t^3*(1-t)^0*(a*px3+b*py3+c*pz3+d))*(1*t^0*\
+         (1-t)^2*qx0+2*t^1*(1-t)^1*qx1+1*t^2*(1-t)^0*qx2)"
+    );
+    assert!(rhs.starts_with("1*t^0*(1-t)^5*(1/1*((a*qx0+b*qy0+c*qz0)*px0-(a*px0+b*py0+c*pz0+d)*qx0))+5*t^1*(1-t)^4*(3/5*("));
+    let (l, r) = w1_text(8, 13);
+    // `w1_text.py 8 13 | wc -c` gives 9500: both lines and their newlines.
+    assert_eq!(l.len() + r.len() + 2, 9500);
+}
+
+#[test]
+fn w1_small_identity() {
+    let (lhs, rhs) = w1_text(2, 3);
+    let mut v = Vars::new();
+    let l = poly(&lhs, &mut v);
+    let r = poly(&rhs, &mut v);
+    assert_eq!(l, r);
+    assert_eq!(v.len(), 26);
+}

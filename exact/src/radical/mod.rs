@@ -1,0 +1,239 @@
+//! `Radical`: the multi-quadratic numbers, exact sums `sum_m c_m sqrt(m)` over Q; and
+//! `ComplexRadical`, the same with `i = sqrt(-1)` adjoined.
+//!
+//! # Where they are used
+//! * SPEC.md §4 (Chiang, seed 004): Example 4 has control vectors with `sqrt 2` and `sqrt 6`, and
+//!   Table 1 (the conic sections of the cone) has weights `1/sqrt 2`, `1 + sqrt 2` and planes with
+//!   normal `(1, 1, sqrt 2)`; the ruled-surface formulas run over [`Radical`] to reproduce them
+//!   exactly. Roots of quadratics (poles, parameters `t = 1/sqrt 2`) are exact [`Radical`]s too,
+//!   through [`Sqrt`].
+//! * SPEC.md §1 (Juttler, Satz 5): the complex focal lines `xi (1,0,0,i) + zeta (0,1,-i,0)` of
+//!   the elliptic linear congruence need `i`; they are checked over [`ComplexRadical`].
+//! * DESIGN.md, "Numbers in JSON": input strings such as `"1/sqrt(2)"` or `"(2+sqrt(2))/3"` are
+//!   parsed by [`Radical`]'s `FromStr` (the one grammar of [`crate::expr`], evaluated exactly), and answers are printed by its `Display` in the same syntax
+//!   (the output parses back to the same value).
+//!
+//! # Canonical form
+//! A [`Radical`] is a list of terms `(m, c_m)` meaning `c_m sqrt(m)`, where
+//! * each radicand `m` ([`Radicand`]) is a positive **square-free** integer, `m = 1` standing for
+//!   the rational part;
+//! * the list is **sorted by strictly increasing `m`**;
+//! * **no coefficient is zero** (zero is the empty list), and every coefficient is a canonical
+//!   [`Rational`].
+//!
+//! The square roots of distinct square-free integers are linearly independent over Q
+//! (Besicovitch 1940), so this representation is unique: `==` is equality of numbers and the
+//! derived `Hash` is consistent with it. No context (no fixed field `Q(sqrt d)`) is needed: the
+//! product rule `sqrt(m1) sqrt(m2) = g sqrt((m1/g)(m2/g))`, `g = gcd(m1, m2)`, keeps the basis
+//! closed, so numbers built from any radicals combine freely (`Q(sqrt 2, sqrt 6) = Q(sqrt 2,
+//! sqrt 3)` needs no declaration).
+//!
+//! # Algorithms
+//! Field operations split a number along one radical: choose an integer `q > 1` that divides or is
+//! coprime to every radicand present (a "coprime-basis" element; found by gcd refinement, no
+//! factoring) and write `x = a + b sqrt(q)` with `a`, `b` free of `sqrt(q)`. Since `q` is coprime
+//! to the radicands of `a` and `b`, `sqrt(q)` is not in the field they generate (Kummer theory),
+//! so `a^2 - q b^2 != 0` for `x != 0`. Then
+//! * **inverse**: `x^-1 = (a - b sqrt q) / (a^2 - q b^2)`, recursing on the norm, which has one
+//!   radical fewer, until it is rational;
+//! * **sign** (exact): if `sign a` and `sign b` agree or one is zero, that is the sign; otherwise it
+//!   is `sign(a) sign(a^2 - q b^2)`, the norm's sign being decided recursively. A floating-point
+//!   filter with a rigorous error bound answers first when the value is clearly away from zero
+//!   (as CGAL's filtered predicates do); [`Radical::sign_exact`] skips it;
+//! * **square root**: of a rational `n/d`, `sqrt(n d)/d` after extracting the square part of `n`
+//!   and `d` (trial division, then Miller–Rabin and Pollard's rho for 64-bit cofactors); of
+//!   `x = a + b sqrt q`, denesting: if the norm `a^2 - q b^2` has a square root `n` in the field of
+//!   `a` and `b`, then `sqrt x = sqrt((a + n)/2) + sign(b) sqrt((a - n)/2)`, recursively; otherwise
+//!   `sqrt x` is not multi-quadratic at all. Every root is verified (`y >= 0`, `y^2 == x`)
+//!   before it is returned.
+//!
+//! Costs grow with the number `k` of independent radicals (the recursions branch up to three ways
+//! per level), which is tiny in this workspace (`k <= 3`).
+//!
+//! # Layout
+//! * `radicand`: [`Radicand`] and square-free factoring (number theory on 64-bit integers);
+//! * `field`: [`Radical`], the multi-quadratic field (arithmetic, sign, square roots, printing);
+//! * `complex`: [`ComplexRadical`];
+//! * here: the operator plumbing shared by both number types, and parsing (`FromStr`), which
+//!   evaluates an expression of [`crate::expr`] in the number type.
+
+use crate::expr::{parse_expr, Coefficient, ExprError};
+use crate::rational::Rational;
+use exactcheck_core::{Field, Sqrt};
+use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
+use std::str::FromStr;
+
+// ====================================================================== operator plumbing
+
+macro_rules! binop {
+    ($t:ty, $tr:ident, $m:ident, $atr:ident, $am:ident, $own:ident, $borrow:ident) => {
+        impl<'b> $tr<&'b $t> for $t {
+            type Output = $t;
+            fn $m(self, rhs: &'b $t) -> $t {
+                <$t>::$own(self, rhs)
+            }
+        }
+        impl $tr<$t> for $t {
+            type Output = $t;
+            fn $m(self, rhs: $t) -> $t {
+                <$t>::$own(self, &rhs)
+            }
+        }
+        impl<'a, 'b> $tr<&'b $t> for &'a $t {
+            type Output = $t;
+            fn $m(self, rhs: &'b $t) -> $t {
+                <$t>::$borrow(self, rhs)
+            }
+        }
+        impl<'a> $tr<$t> for &'a $t {
+            type Output = $t;
+            fn $m(self, rhs: $t) -> $t {
+                <$t>::$borrow(self, &rhs)
+            }
+        }
+        impl<'b> $atr<&'b $t> for $t {
+            fn $am(&mut self, rhs: &'b $t) {
+                *self = <$t>::$own(std::mem::take(self), rhs);
+            }
+        }
+        impl $atr<$t> for $t {
+            fn $am(&mut self, rhs: $t) {
+                *self = <$t>::$own(std::mem::take(self), &rhs);
+            }
+        }
+    };
+}
+
+macro_rules! field_ops {
+    ($t:ty) => {
+        binop!($t, Add, add, AddAssign, add_assign, add_owned, add_borrowed);
+        binop!($t, Sub, sub, SubAssign, sub_assign, sub_owned, sub_borrowed);
+        binop!($t, Mul, mul, MulAssign, mul_assign, mul_owned, mul_borrowed);
+        binop!($t, Div, div, DivAssign, div_assign, div_owned, div_borrowed);
+        impl Neg for $t {
+            type Output = $t;
+            fn neg(self) -> $t {
+                self.neg_in_place()
+            }
+        }
+        impl Neg for &$t {
+            type Output = $t;
+            fn neg(self) -> $t {
+                self.neg_borrowed()
+            }
+        }
+    };
+}
+
+mod complex;
+mod field;
+mod radicand;
+#[cfg(test)]
+mod tests;
+
+pub use complex::ComplexRadical;
+pub use field::Radical;
+pub use radicand::Radicand;
+
+field_ops!(Radical);
+field_ops!(ComplexRadical);
+
+// ====================================================================== parsing
+
+/// The error of parsing a [`Radical`] or [`ComplexRadical`]: the expression error of the one
+/// grammar ([`crate::expr`]), with the position of the problem. The name is kept for callers.
+///
+/// ```
+/// use exactcheck_exact::radical::{ParseRadicalError as E, Radical};
+///
+/// let parse = |s: &str| s.parse::<Radical>().unwrap_err();
+/// assert!(matches!(parse("2 * * 3"), E::Unexpected { pos: 4, .. }));
+/// assert!(matches!(parse("cos(1)"), E::UnknownFunction { pos: 0, .. }));
+/// assert!(matches!(parse("1/(2 - 2)"), E::DivisionByZero { pos: 2 }));
+/// assert!(matches!(parse("sqrt(-2)"), E::NoSqrt { pos: 0, .. }));
+/// assert_eq!(
+///     parse("x + 1").to_string(),
+///     "variable 'x' at 0 where a constant number is expected"
+/// );
+/// ```
+pub type ParseRadicalError = ExprError;
+
+impl FromStr for Radical {
+    type Err = ParseRadicalError;
+
+    /// Parses a constant expression of the one grammar of [`crate::expr`] and evaluates it
+    /// exactly: integers, decimals (`0.1` is exactly 1/10), scientific notation (`2.5e-3` is
+    /// 1/400), `sqrt(...)` of any expression with a multi-quadratic root, `+ - * /`,
+    /// juxtaposition (`2 sqrt(2)`), unary signs, parentheses and integer powers `^k`
+    /// (`|k| <=` [`crate::expr::MAX_EXPONENT`]) — e.g. `"1/sqrt(2)"`, `"(2+sqrt(2))/3"`,
+    /// `"sqrt(3 - 2*sqrt(2))"`, `"-3/4"`.
+    ///
+    /// # Errors
+    /// An [`ExprError`] naming the problem and its position: malformed input, a variable
+    /// (including `i`: use [`ComplexRadical`]), an unknown function, division by zero, a square
+    /// root not in the type (`sqrt(-1)`, `sqrt(sqrt(2))`), a constant beyond the size limit.
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        parse_expr(s)?.eval_constant()
+    }
+}
+
+impl FromStr for ComplexRadical {
+    type Err = ParseRadicalError;
+
+    /// Parses the syntax of [`Radical`]'s `FromStr` with the imaginary unit as `i` or
+    /// `sqrt(-1)`; `sqrt` takes the principal root (`sqrt(-4) = 2*i`).
+    ///
+    /// # Errors
+    /// As for [`Radical`]; `sqrt(z)` fails when the principal root of `z` is not a Gaussian
+    /// multi-quadratic number.
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        parse_expr(s)?.eval_constant()
+    }
+}
+
+impl Coefficient for Radical {
+    fn from_rational(q: &Rational) -> Option<Self> {
+        Some(Radical::from(q))
+    }
+    fn try_inverse(&self) -> Option<Self> {
+        self.inv().ok()
+    }
+    fn try_sqrt(&self) -> Option<Self> {
+        Sqrt::sqrt(self)
+    }
+    fn sqrt_hint() -> &'static str {
+        " (no square root in the square-root field: negative, or not denestable)"
+    }
+    /// The largest size of a term `c sqrt(m)`: `size_bits(c) + floor(log2 m) / 2`.
+    fn size_bits(&self) -> u64 {
+        self.terms()
+            .iter()
+            .map(|(m, c)| c.size_bits() + m.to_biguint().bits().saturating_sub(1) / 2)
+            .max()
+            .unwrap_or(0)
+    }
+    fn size_within(&self, max: u64) -> bool {
+        self.terms()
+            .iter()
+            .all(|(m, c)| c.size_within(max.saturating_sub(m.to_biguint().bits() / 2)))
+    }
+}
+
+impl Coefficient for ComplexRadical {
+    fn from_rational(q: &Rational) -> Option<Self> {
+        Some(ComplexRadical::from(q.clone()))
+    }
+    fn try_inverse(&self) -> Option<Self> {
+        self.inv().ok()
+    }
+    fn try_sqrt(&self) -> Option<Self> {
+        self.principal_sqrt()
+    }
+    fn size_bits(&self) -> u64 {
+        self.re.size_bits().max(self.im.size_bits())
+    }
+    /// `i`, the imaginary unit.
+    fn named_constant(name: &str) -> Option<Self> {
+        (name == "i").then(ComplexRadical::i)
+    }
+}
