@@ -147,13 +147,36 @@ impl Svg {
 
 /// Ticks at the multiples of a "nice" step (1, 2 or 5 times a power of ten) giving about
 /// `target` intervals over `[lo, hi]`, extended outwards to whole steps: `(ticks, step)`.
+///
+/// Any finite range works: a zero-width range is widened to `lo -+ max(|lo|, 1)`; a range
+/// narrower than f64 resolves at its magnitude (relative width below `1e-12`, or an absolute
+/// width below `1e-290`, e.g. the subnormal sphere radii of a valid problem file) is widened
+/// to that width about its centre, so the step is a normal number. A range so wide that
+/// whole multiples of the step do not fit in f64 (near `f64::MAX`) gets ticks at its two ends
+/// only. The tick count is bounded by `4 target + 5` whatever the input. Non-finite bounds give
+/// no ticks (and a NaN step).
 pub fn nice_ticks(lo: f64, hi: f64, target: usize) -> (Vec<f64>, f64) {
-    let (lo, hi) = if hi > lo {
-        (lo, hi)
-    } else {
-        (lo - 1.0, lo + 1.0)
-    };
-    let raw = (hi - lo) / target.max(1) as f64;
+    if !(lo.is_finite() && hi.is_finite()) {
+        return (Vec::new(), f64::NAN);
+    }
+    let target = target.clamp(2, 1000);
+    let (mut lo, mut hi) = if lo <= hi { (lo, hi) } else { (hi, lo) };
+    let finite = |x: f64| x.clamp(-f64::MAX, f64::MAX);
+    if hi == lo {
+        let half = lo.abs().max(1.0);
+        (lo, hi) = (finite(lo - half), finite(lo + half));
+    }
+    let scale = lo.abs().max(hi.abs());
+    let min_width = (scale * 1e-12).max(1e-290);
+    // Halves first: `hi - lo` itself can overflow.
+    if hi / 2.0 - lo / 2.0 < min_width / 2.0 {
+        let centre = lo / 2.0 + hi / 2.0;
+        (lo, hi) = (
+            finite(centre - min_width / 2.0),
+            finite(centre + min_width / 2.0),
+        );
+    }
+    let raw = (hi / 2.0 - lo / 2.0) / target as f64 * 2.0;
     let mag = 10f64.powf(raw.log10().floor());
     let norm = raw / mag;
     let step = mag
@@ -166,15 +189,35 @@ pub fn nice_ticks(lo: f64, hi: f64, target: usize) -> (Vec<f64>, f64) {
         } else {
             10.0
         };
-    let first = (lo / step + 1e-9).floor() as i64;
-    let last = (hi / step - 1e-9).ceil() as i64;
-    ((first..=last).map(|k| k as f64 * step).collect(), step)
+    let first = (lo / step + 1e-9).floor();
+    let last = (hi / step - 1e-9).ceil();
+    let fits = step.is_finite()
+        && step > 0.0
+        && first.is_finite()
+        && last.is_finite()
+        && last - first <= (4 * target + 4) as f64
+        && (first * step).is_finite()
+        && (last * step).is_finite();
+    if fits {
+        let ticks: Vec<f64> = (first as i64..=last as i64)
+            .map(|k| k as f64 * step)
+            .collect();
+        return (ticks, step);
+    }
+    (vec![lo, hi], hi / 2.0 - lo / 2.0)
 }
 
-/// A tick label: as many decimals as the step needs.
+/// A tick label: as many decimals as the step needs; scientific notation where that would be
+/// more than 6 decimals or the value has 16 or more digits.
 pub(super) fn tick_label(x: f64, step: f64) -> String {
-    let decimals = (-step.log10().floor()).max(0.0) as usize;
-    short(x, decimals)
+    if step.is_finite() && step >= 1e-6 && x.abs() < 1e15 {
+        let decimals = (-step.log10().floor()).max(0.0) as usize;
+        short(x, decimals)
+    } else if x == 0.0 {
+        "0".into()
+    } else {
+        format!("{x:.3e}").replace('-', "−")
+    }
 }
 
 /// A short decimal: at most `decimals` places, trailing zeros dropped, no `-0`.

@@ -40,6 +40,50 @@ fn ticks() {
     assert!(nice_ticks(2.0, 2.0, 4).0.len() >= 2);
 }
 
+/// Ticks for any finite range: few, finite, increasing, covering the range, with a positive
+/// step. Old: a subnormal range (a sphere radius of 1/10^323) gave a zero step and a range of
+/// `i64::MIN..=i64::MAX` ticks, "capacity overflow".
+#[test]
+fn ticks_for_any_finite_range() {
+    let tiny = 1e-323;
+    let cases = [
+        (-tiny, tiny),
+        (0.0, tiny),
+        (3.0, 3.0 + 4.0 * f64::EPSILON),
+        (0.0, 0.0),
+        (-0.0, 0.0),
+        (tiny, tiny),
+        (f64::MAX, f64::MAX),
+        (-f64::MAX, f64::MAX),
+        (0.0, f64::MAX),
+        (-f64::MAX, -f64::MAX / 2.0),
+        (1e300, 1e300 * (1.0 + 1e-15)),
+        (-1e-300, 1e-300),
+        (5.0, -5.0),
+        (f64::MIN_POSITIVE, 2.0 * f64::MIN_POSITIVE),
+    ];
+    for (lo, hi) in cases {
+        for target in [0, 1, 6, 1000, usize::MAX] {
+            let (t, step) = nice_ticks(lo, hi, target);
+            let what = format!("[{lo:e}, {hi:e}] target {target}: {t:?} step {step:e}");
+            assert!(t.len() >= 2 && t.len() <= 4 * 1000 + 5, "{what}");
+            assert!(step.is_finite() && step > 0.0, "{what}");
+            assert!(t.iter().all(|x| x.is_finite()), "{what}");
+            assert!(t.windows(2).all(|w| w[0] < w[1]), "{what}");
+            assert!(t[0] <= lo.min(hi) && t[t.len() - 1] >= hi.max(lo), "{what}");
+            assert!(t.iter().all(|&x| !tick_label(x, step).is_empty()), "{what}");
+        }
+    }
+    // Non-finite bounds give no ticks rather than a loop or a panic.
+    assert!(nice_ticks(f64::NAN, 1.0, 6).0.is_empty());
+    assert!(nice_ticks(0.0, f64::INFINITY, 6).0.is_empty());
+    // A subnormal range is drawn at the smallest width f64 resolves here, about its centre.
+    let (t, step) = nice_ticks(-tiny, tiny, 6);
+    assert!((1e-292..=1e-290).contains(&step), "{step:e}");
+    assert!(t.len() <= 10, "{t:?}");
+    assert_eq!(tick_label(2e-7, 1e-7), "2.000e−7");
+}
+
 #[test]
 fn angles_from_tau() {
     assert_eq!(tau_degrees(0.0), 0.0);
