@@ -25,6 +25,8 @@ use exactcheck_exact::Rational;
 use exactcheck_float::sampler::DiscSampler;
 use serde_json::Value;
 use std::f64::consts::TAU;
+use std::io::Write as _;
+use std::process::ExitCode;
 
 mod figure;
 mod scene;
@@ -52,7 +54,8 @@ pub struct PlotArgs {
     /// The figure: the t-u diagram (the paper's Fig. 2 / 3) or a 3D view.
     #[arg(long, value_enum, default_value_t = View::Tu)]
     pub view: View,
-    /// The SVG file to write.
+    /// The SVG file to write; `-`: standard output (the summary line then goes to standard
+    /// error).
     #[arg(short = 'o', long = "output", value_name = "FILE.svg")]
     pub output: String,
 }
@@ -72,8 +75,8 @@ pub enum View {
 /// # Errors
 /// [`Error::Usage`] for an unknown example, a missing or misplaced `--example`, or an output
 /// path that cannot be written; [`Error::Io`] / [`Error::Input`] for an unreadable or malformed
-/// problem file or one of another kind.
-pub fn run(args: &PlotArgs) -> Result<(), Error> {
+/// problem file or one of another kind; [`Error::Output`] when standard output fails.
+pub fn run(args: &PlotArgs) -> Result<ExitCode, Error> {
     let scene = match (args.source.as_str(), args.example) {
         ("spaeth", Some(n)) => spaeth_scene(n)?,
         ("spaeth", None) => {
@@ -91,11 +94,20 @@ pub fn run(args: &PlotArgs) -> Result<(), Error> {
         View::Tu => (tu_diagram(&scene), "t-u diagram"),
         View::ThreeD => (view_3d(&scene), "3D view"),
     };
-    std::fs::write(&args.output, &svg)
-        .map_err(|e| Error::Usage(format!("cannot write {}: {e}", args.output)))?;
-    println!(
+    let to_stdout = args.output == "-";
+    if to_stdout {
+        crate::output::print(&svg)?;
+    } else {
+        std::fs::write(&args.output, &svg)
+            .map_err(|e| Error::Usage(format!("cannot write {}: {e}", args.output)))?;
+    }
+    let summary = format!(
         "wrote {}: {what} of {}{} ({} bytes of SVG)",
-        args.output,
+        if to_stdout {
+            "standard output"
+        } else {
+            &args.output
+        },
         scene.name,
         match (args.view, scene.figure) {
             (View::Tu, Some(f)) => format!(" (the paper's {f})"),
@@ -103,5 +115,11 @@ pub fn run(args: &PlotArgs) -> Result<(), Error> {
         },
         svg.len()
     );
-    Ok(())
+    if to_stdout {
+        // The SVG owns standard output; a failing standard error has nowhere to be reported.
+        let _ = writeln!(std::io::stderr(), "{summary}");
+    } else {
+        crate::output::println(summary)?;
+    }
+    Ok(ExitCode::SUCCESS)
 }
