@@ -1,10 +1,20 @@
 //! The command line: parsing (clap) and dispatch. Every error a user can cause is reported as one
-//! line on standard error with exit status 2; nothing a user types makes the tool panic.
+//! line on standard error with exit status 2 (a usage error adds one hint line); nothing a user
+//! types makes the tool panic, and a closed standard output ends the run quietly (status 0).
+//!
+//! This module depends on the commands, never the reverse: each command module exposes its
+//! arguments and `run(&Args) -> Result<ExitCode, Error>` ([`crate::verify_cmd`],
+//! [`crate::prove_cmd`], [`crate::bench`], [`crate::regress`], [`crate::plot`]); shared argument
+//! types live in [`crate::args`], the output writer in [`crate::output`].
 
-use crate::w2;
-use clap::{Parser, Subcommand, ValueEnum};
-use exactcheck_exact::{PlainRational, Rational, RationalScalar};
+use clap::error::ErrorKind;
+use clap::{CommandFactory, Parser, Subcommand};
+use std::ffi::OsString;
+use std::io::Write as _;
 use std::process::ExitCode;
+
+pub use crate::args::ScalarChoice;
+pub use crate::bench::{W3Variant, Workload};
 
 /// Verify geometry formulas exactly: prove them, check them on exact instances, and regress float
 /// code against exact results.
@@ -21,14 +31,7 @@ pub struct Cli {
 pub enum Command {
     /// Check the built-in claim catalogue (every statement of the source papers) and print each
     /// verdict with its method and evidence. Exit 0 when every verdict is the expected one.
-    Verify {
-        /// Print a JSON array (objects with id, verdict, method, evidence, ...) instead of a table.
-        #[arg(long)]
-        json: bool,
-        /// Only the claims whose id starts with this prefix (e.g. `juttler`).
-        #[arg(long)]
-        only: Option<String>,
-    },
+    Verify(crate::verify_cmd::VerifyArgs),
     /// Prove a polynomial identity LHS = RHS, for all values or modulo relations (`--where`):
     /// `proved`, or `fails` with an exact counter-example and what the sides differ by.
     Prove(crate::prove_cmd::ProveArgs),
@@ -48,14 +51,10 @@ pub enum Command {
         both: bool,
     },
     /// Run a benchmark workload and print its check values and time.
-    Bench {
-        /// Which workload.
-        #[command(subcommand)]
-        workload: Workload,
-    },
+    Bench(crate::bench::BenchArgs),
     /// Regress a built-in f64 kernel against exact results on seeded random inputs.
     Regress(crate::regress::RegressArgs),
-    // --- plot (src/plot.rs) ---
+    // --- plot (src/plot/) ---
     /// Draw Spaeth's cylinder/sphere intersection as an SVG figure: the t-u diagram (the
     /// paper's Fig. 2 / 3) or a 3D view, for `spaeth --example N` or a `cylinder_sphere` problem
     /// file.
@@ -63,112 +62,183 @@ pub enum Command {
     // --- end plot ---
 }
 
-/// The benchmark workloads (see `../shared/anchors` for the same workloads in other tools).
-#[derive(Debug, Subcommand)]
-pub enum Workload {
-    /// W2: the exact Spaeth discriminant at N rational parameters.
-    W2 {
-        /// Number of parameters T_k = k/1000 - 50, k = 0..N-1.
-        #[arg(long, default_value_t = 100_000)]
-        n: usize,
-        /// eval: evaluate only; tree: plus a pairwise exact sum; seq: plus a sequential exact sum.
-        #[arg(long, value_enum, default_value_t = w2::Mode::Eval)]
-        mode: w2::Mode,
-        /// The exact rational type: the fast `Rational`, or num-rational's plain `BigRational`.
-        #[arg(long, value_enum, default_value_t = ScalarChoice::Fast)]
-        scalar: ScalarChoice,
-        /// Print one JSON line (as the anchor scripts do) instead of text.
-        #[arg(long)]
-        json: bool,
-    },
-    /// W3: f64 sampling of the Spaeth discriminant on the grid t_i = i 2 pi / N.
-    W3 {
-        /// Number of samples.
-        #[arg(long, default_value_t = 10_000_000)]
-        n: usize,
-        /// How the samples are evaluated.
-        #[arg(long, value_enum, default_value_t = W3Variant::Coef)]
-        variant: W3Variant,
-        /// Print one JSON line instead of text.
-        #[arg(long)]
-        json: bool,
-    },
-}
-
-/// The variants of W3.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum W3Variant {
-    /// Precomputed trigonometric coefficients, all cores.
-    Coef,
-    /// Precomputed coefficients, one thread.
-    CoefSerial,
-    /// The derived formulas evaluated per sample with `sin_cos`, one thread (the baseline).
-    Direct,
-}
-
-/// The exact rational types a benchmark can run on.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum ScalarChoice {
-    /// exactcheck's `Rational` (inline tier, Knuth/Henrici arithmetic, Lehmer gcd).
-    Fast,
-    /// num-rational's `BigRational`, unchanged (the baseline).
-    Plain,
-}
-
-/// Parses the command line, runs it, and maps errors to exit status 2.
+/// Parses the command line, runs it, and maps errors to exit status 2 (a broken pipe on
+/// standard output to status 0, silently).
 pub fn main() -> ExitCode {
-    let cli = Cli::parse();
+    let args: Vec<OsString> = std::env::args_os().collect();
+    let cli = match parse(&args) {
+        Ok(cli) => cli,
+        Err(code) => return code,
+    };
     match run(cli) {
         Ok(code) => code,
+        Err(e) if e.is_broken_pipe() => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("exactcheck: error: {e}");
+            report(&[format!("exactcheck: error: {e}")]);
             ExitCode::from(2)
         }
     }
 }
 
+/// Writes lines to standard error; a failing standard error has nowhere to be reported.
+fn report(lines: &[String]) {
+    let mut err = std::io::stderr().lock();
+    for l in lines {
+        let _ = writeln!(err, "{l}");
+    }
+}
+
+/// What a command line that does not parse produces.
+#[derive(Debug, PartialEq, Eq)]
+pub enum ParseFailure {
+    /// Help or version text to print on standard output (exit status 0).
+    Text(String),
+    /// A usage error: one line naming what is wrong and one hint line (exit status 2).
+    Usage {
+        /// What is wrong (clap's first line, without its `error: ` prefix).
+        message: String,
+        /// What to do: clap's tip if it has one, else where the help is.
+        hint: String,
+    },
+}
+
+/// Parses `args` (the program name first) without printing anything.
+///
+/// # Errors
+/// [`ParseFailure`]: help or version text, or a usage error shortened to one line plus a hint
+/// (clap's own messages are 3-16 lines with the usage and a help pointer). An argument that is
+/// not valid UTF-8 is named: by the option it is the value of, or by its position.
+pub fn try_parse(args: &[OsString]) -> Result<Cli, ParseFailure> {
+    if let Some(message) = non_utf8_argument(args) {
+        return Err(ParseFailure::Usage {
+            hint: "arguments must be valid UTF-8".into(),
+            message,
+        });
+    }
+    let e = match Cli::try_parse_from(args) {
+        Ok(cli) => return Ok(cli),
+        Err(e) => e,
+    };
+    let text = e.render().to_string();
+    if matches!(e.kind(), ErrorKind::DisplayHelp | ErrorKind::DisplayVersion) {
+        return Err(ParseFailure::Text(text));
+    }
+    let path = subcommand_path(args);
+    let help = format!("see `exactcheck{} --help`", path.concat());
+    let message = if e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
+        format!("`exactcheck{}` needs a subcommand", path.concat())
+    } else {
+        // clap's first paragraph, on one line (a list such as the missing arguments follows
+        // its heading on the next lines).
+        let first: Vec<&str> = text
+            .lines()
+            .map(str::trim)
+            .skip_while(|l| l.is_empty())
+            .take_while(|l| !l.is_empty())
+            .collect();
+        let first = first.join(" ");
+        match first.strip_prefix("error: ") {
+            Some(rest) => rest.to_string(),
+            None if first.is_empty() => format!("invalid command line ({})", e.kind()),
+            None => first,
+        }
+    };
+    let hint = text
+        .lines()
+        .map(str::trim)
+        .find_map(|l| l.strip_prefix("tip: "))
+        .map_or(help.clone(), |tip| format!("{tip}; {help}"));
+    Err(ParseFailure::Usage { message, hint })
+}
+
+/// [`try_parse`], printing help or a usage error; `Err` holds the exit status.
+fn parse(args: &[OsString]) -> Result<Cli, ExitCode> {
+    match try_parse(args) {
+        Ok(cli) => Ok(cli),
+        Err(ParseFailure::Text(text)) => match crate::output::print(text) {
+            Err(e) if !e.is_broken_pipe() => {
+                report(&[format!("exactcheck: error: {e}")]);
+                Err(ExitCode::from(2))
+            }
+            _ => Err(ExitCode::SUCCESS),
+        },
+        Err(ParseFailure::Usage { message, hint }) => {
+            let e = crate::Error::Usage(message);
+            report(&[
+                format!("exactcheck: error: {e}"),
+                format!("exactcheck: hint: {hint}"),
+            ]);
+            Err(ExitCode::from(2))
+        }
+    }
+}
+
+/// The subcommands named in `args` (e.g. `[" bench", " w2"]`), each with a leading space.
+fn subcommand_path(args: &[OsString]) -> Vec<String> {
+    let mut cmd = Cli::command();
+    let mut path = Vec::new();
+    for a in args.iter().skip(1) {
+        let a = a.to_string_lossy();
+        if a.starts_with('-') {
+            continue;
+        }
+        let Some(sub) = cmd.find_subcommand(a.as_ref()).cloned() else {
+            break;
+        };
+        path.push(format!(" {}", sub.get_name()));
+        cmd = sub;
+    }
+    path
+}
+
+/// The first argument that is not valid UTF-8, named: "the value of --only" when it follows
+/// (or is joined by `=` to) an option that takes a value, else "argument N".
+fn non_utf8_argument(args: &[OsString]) -> Option<String> {
+    let i = (1..args.len()).find(|&i| args[i].to_str().is_none())?;
+    let lossy = args[i].to_string_lossy();
+    let shown = format!("{lossy:?}").replace('\u{FFFD}', "\\u{FFFD}");
+    let joined = lossy
+        .strip_prefix("--")
+        .and_then(|l| l.split_once('='))
+        .map(|(name, _)| format!("--{name}"));
+    let previous = (i > 1)
+        .then(|| args[i - 1].to_str())
+        .flatten()
+        .filter(|p| p.starts_with('-') && !p.contains('=') && option_takes_value(args, p))
+        .map(str::to_string);
+    Some(match joined.or(previous) {
+        Some(opt) => format!("the value of {opt} is not valid UTF-8: {shown}"),
+        None => format!("argument {i} is not valid UTF-8: {shown}"),
+    })
+}
+
+/// Whether `opt` (`--name` or `-x`) is an option taking a value of the subcommand in `args`.
+fn option_takes_value(args: &[OsString], opt: &str) -> bool {
+    let mut cmd = Cli::command();
+    for name in subcommand_path(args) {
+        match cmd.find_subcommand(name.trim()).cloned() {
+            Some(sub) => cmd = sub,
+            None => break,
+        }
+    }
+    let found = cmd.get_arguments().any(|a| {
+        let named = match opt.strip_prefix("--") {
+            Some(long) => a.get_long() == Some(long),
+            None => opt.len() == 2 && a.get_short() == opt.chars().nth(1),
+        };
+        named && a.get_action().takes_values()
+    });
+    found
+}
+
 /// Runs a parsed command line.
+///
+/// # Errors
+/// The command's error; [`crate::Error::Output`] when standard output fails.
 pub fn run(cli: Cli) -> Result<ExitCode, crate::Error> {
     match cli.command {
-        Command::Verify { json, only } => {
-            let rows = crate::claims::verify(only.as_deref())?;
-            if json {
-                let arr: Vec<_> = rows.iter().map(|r| r.to_json()).collect();
-                println!("{}", serde_json::Value::Array(arr));
-            } else {
-                println!("{}", crate::claims::table(&rows));
-            }
-            Ok(if rows.iter().all(|r| r.as_expected()) {
-                ExitCode::SUCCESS
-            } else {
-                ExitCode::from(1)
-            })
-        }
-        Command::Bench {
-            workload: Workload::W3 { n, variant, json },
-        } => {
-            if n == 0 {
-                return Err(crate::Error::Usage("--n must be at least 1".into()));
-            }
-            println!("{}", crate::w2::bench_w3(n, variant, json));
-            Ok(ExitCode::SUCCESS)
-        }
-        Command::Bench {
-            workload:
-                Workload::W2 {
-                    n,
-                    mode,
-                    scalar,
-                    json,
-                },
-        } => {
-            let text = match scalar {
-                ScalarChoice::Fast => bench_w2::<Rational>(n, mode, "fast", json),
-                ScalarChoice::Plain => bench_w2::<PlainRational>(n, mode, "plain", json),
-            };
-            println!("{text}");
-            Ok(ExitCode::SUCCESS)
-        }
+        Command::Verify(args) => crate::verify_cmd::run(&args),
+        Command::Bench(args) => crate::bench::run(&args),
         Command::Solve {
             file,
             exact: _,
@@ -184,50 +254,77 @@ pub fn run(cli: Cli) -> Result<ExitCode, crate::Error> {
             };
             let text = crate::solve::read_problem(file.as_deref())?;
             let answer = crate::solve::solve(&text, mode)?;
-            println!("{answer:#}");
+            crate::output::println(format_args!("{answer:#}"))?;
             Ok(ExitCode::SUCCESS)
         }
         Command::Prove(args) => crate::prove_cmd::run(&args),
-        Command::Regress(args) => crate::regress::run(&args).map(|()| ExitCode::SUCCESS),
-        // --- plot (src/plot.rs) ---
-        Command::Plot(args) => crate::plot::run(&args).map(|()| ExitCode::SUCCESS),
+        Command::Regress(args) => crate::regress::run(&args),
+        // --- plot (src/plot/) ---
+        Command::Plot(args) => crate::plot::run(&args),
         // --- end plot ---
     }
 }
 
-fn bench_w2<T: RationalScalar>(n: usize, mode: w2::Mode, scalar: &str, json: bool) -> String {
-    let out = w2::run::<T>(n, mode);
-    let checks = out.sum.as_ref().map(w2::check_values);
-    let mode_name = format!("{mode:?}").to_lowercase();
-    if json {
-        let mut s = format!(
-            "{{\"tool\": \"exactcheck\", \"scalar\": \"{scalar}\", \"mode\": \"{mode_name}\", \"N\": {n}, \"seconds\": {}, \"samples_per_s\": {}, \"count_nonneg\": {}",
-            out.seconds,
-            n as f64 / out.seconds,
-            out.count_nonneg
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn args(a: &[&str]) -> Vec<OsString> {
+        std::iter::once("exactcheck")
+            .chain(a.iter().copied())
+            .map(OsString::from)
+            .collect()
+    }
+
+    #[test]
+    fn usage_errors_are_one_line_and_a_hint() {
+        let Err(ParseFailure::Usage { message, hint }) = try_parse(&args(&["verify", "--nope"]))
+        else {
+            panic!("a usage error");
+        };
+        assert_eq!(message, "unexpected argument '--nope' found");
+        assert!(!message.contains('\n') && !hint.contains('\n'));
+        assert!(hint.ends_with("see `exactcheck verify --help`"), "{hint}");
+        let Err(ParseFailure::Usage { message, hint }) = try_parse(&args(&["bench"])) else {
+            panic!("a usage error");
+        };
+        assert_eq!(message, "`exactcheck bench` needs a subcommand");
+        assert_eq!(hint, "see `exactcheck bench --help`");
+        assert!(matches!(
+            try_parse(&args(&["--help"])),
+            Err(ParseFailure::Text(t)) if t.contains("Usage:")
+        ));
+        assert!(try_parse(&args(&["bench", "w2", "--n", "7"])).is_ok());
+        let Err(ParseFailure::Usage { message, .. }) = try_parse(&args(&["regress"])) else {
+            panic!("a usage error");
+        };
+        assert_eq!(
+            message,
+            "the following required arguments were not provided: <KERNEL>"
         );
-        if let Some(c) = &checks {
-            s += &format!(
-                ", \"sum_num_digits\": {}, \"sum_den_digits\": {}, \"sum_num_mod_p\": {}, \"sum_den_mod_p\": {}, \"sum_approx\": {:?}",
-                c.num_digits, c.den_digits, c.num_mod_p, c.den_mod_p, c.approx
-            );
-        }
-        s + "}"
-    } else {
-        let mut s = format!(
-            "W2 (exact Spaeth discriminant), N = {n}, mode {mode_name}, scalar {scalar}\n  parameters with disc >= 0: {}\n",
-            out.count_nonneg
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn invalid_utf8_names_the_argument() {
+        use std::os::unix::ffi::OsStringExt;
+        let bad = OsString::from_vec(b"caf\xe9".to_vec());
+        let mut a = args(&["verify", "--only"]);
+        a.push(bad.clone());
+        assert_eq!(
+            non_utf8_argument(&a).unwrap(),
+            "the value of --only is not valid UTF-8: \"caf\\u{FFFD}\""
         );
-        if let Some(c) = &checks {
-            s += &format!(
-                "  exact sum: numerator {} digits, denominator {} digits\n  numerator mod 1e9+7 = {}, denominator mod 1e9+7 = {}\n  value ~ {:?}\n",
-                c.num_digits, c.den_digits, c.num_mod_p, c.den_mod_p, c.approx
-            );
-        }
-        s + &format!(
-            "  time: {:.3} s ({:.0} parameters/s)",
-            out.seconds,
-            n as f64 / out.seconds
-        )
+        let mut a = args(&["plot"]);
+        a.push(bad);
+        assert_eq!(
+            non_utf8_argument(&a).unwrap(),
+            "argument 2 is not valid UTF-8: \"caf\\u{FFFD}\""
+        );
+        let mut a = args(&["verify"]);
+        a.push(OsString::from_vec(b"--only=\xff".to_vec()));
+        assert!(non_utf8_argument(&a)
+            .unwrap()
+            .starts_with("the value of --only is not valid UTF-8"));
     }
 }

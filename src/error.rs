@@ -1,7 +1,7 @@
 //! The tool's error type: every variant is one line naming what is wrong.
 
 /// An error the user can cause (bad input, impossible request). The CLI prints it as one line and
-/// exits with status 2.
+/// exits with status 2 (a broken pipe on standard output ends the run quietly with status 0).
 #[derive(Debug, thiserror::Error)]
 pub enum Error {
     /// An argument value is out of range or inconsistent.
@@ -19,4 +19,24 @@ pub enum Error {
         /// The underlying error.
         source: std::io::Error,
     },
+    /// Writing standard output failed (see [`crate::output`]).
+    #[error("cannot write standard output: {}", io_message(.0))]
+    Output(std::io::Error),
+}
+
+impl Error {
+    /// Whether this is a write to a closed pipe (the reader went away, as `head` does): the CLI
+    /// then ends quietly with exit status 0.
+    pub fn is_broken_pipe(&self) -> bool {
+        matches!(self, Error::Output(e) if e.kind() == std::io::ErrorKind::BrokenPipe)
+    }
+}
+
+/// The operating system's message without the " (os error N)" suffix.
+fn io_message(e: &std::io::Error) -> String {
+    let s = e.to_string();
+    match s.rfind(" (os error ") {
+        Some(i) if s.ends_with(')') => s[..i].to_string(),
+        _ => s,
+    }
 }

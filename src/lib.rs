@@ -5,14 +5,18 @@
 //! side and the float-vs-exact harness in `exactcheck-float`.
 #![warn(missing_docs)]
 
+pub mod args;
+pub mod bench;
 pub mod claims;
 pub mod cli;
 pub mod error;
+pub mod output;
 pub mod plot;
 pub mod prove_cmd;
 pub mod regress;
 pub mod solve;
 pub mod solve_cs;
+pub mod verify_cmd;
 pub mod w2;
 
 pub use error::Error;

@@ -2,8 +2,14 @@
 //! harness of `exactcheck-float`. Each kernel is a formula of `exactcheck-core` written once,
 //! generic over the scalar, run in f64 and exactly on the same seeded inputs.
 
+use crate::args::{check_count, ScalarChoice};
 use crate::Error;
 use clap::{Args, ValueEnum};
+use std::process::ExitCode;
+
+/// The largest `--samples` (each sample is evaluated exactly, about 0.8 ms on one core for
+/// `cylinder_sphere`: the maximum is minutes of work).
+pub const MAX_SAMPLES: usize = 1_000_000;
 use exactcheck_core::cylinder_sphere::{unit_circle_point, CylinderSphere};
 use exactcheck_core::{BezierCurve, OrderedField, Vec3, ZeroDivisor};
 use exactcheck_exact::{PlainRational, Rational};
@@ -15,7 +21,7 @@ pub struct RegressArgs {
     /// The kernel to regress.
     #[arg(value_enum)]
     pub kernel: Kernel,
-    /// Number of random input vectors.
+    /// Number of random input vectors (at most 1,000,000).
     #[arg(long, default_value_t = 10_000)]
     pub samples: usize,
     /// Seed of the input generator (every reported case is reproducible from it).
@@ -25,8 +31,8 @@ pub struct RegressArgs {
     #[arg(long, default_value_t = 3)]
     pub worst: usize,
     /// The exact scalar of the reference side.
-    #[arg(long, value_enum, default_value_t = crate::cli::ScalarChoice::Fast)]
-    pub scalar: crate::cli::ScalarChoice,
+    #[arg(long, value_enum, default_value_t = ScalarChoice::Fast)]
+    pub scalar: ScalarChoice,
 }
 
 /// The built-in kernels.
@@ -127,29 +133,27 @@ fn run_kernel<E: ExactScalar>(
 }
 
 /// Runs `exactcheck regress` and prints the report.
-pub fn run(args: &RegressArgs) -> Result<(), Error> {
-    if args.samples == 0 {
-        return Err(Error::Usage("--samples must be at least 1".into()));
-    }
+///
+/// # Errors
+/// [`Error::Usage`] for `--samples` outside `1..=MAX_SAMPLES`; [`Error::Output`] when standard
+/// output fails.
+pub fn run(args: &RegressArgs) -> Result<ExitCode, Error> {
+    check_count("--samples", args.samples, MAX_SAMPLES, "")?;
     let gen = generator(args.kernel)?;
     let options = Options {
         worst: args.worst,
         ..Options::default()
     };
     let report = match args.scalar {
-        crate::cli::ScalarChoice::Fast => {
-            run_kernel::<Rational>(args.kernel, &gen, args, &options)?
-        }
-        crate::cli::ScalarChoice::Plain => {
-            run_kernel::<PlainRational>(args.kernel, &gen, args, &options)?
-        }
+        ScalarChoice::Fast => run_kernel::<Rational>(args.kernel, &gen, args, &options)?,
+        ScalarChoice::Plain => run_kernel::<PlainRational>(args.kernel, &gen, args, &options)?,
     };
-    println!("{report}");
+    crate::output::println(report)?;
     if args.kernel == Kernel::CylinderSphere {
-        println!("{}", root_errors(&gen, args.samples, args.seed).text());
-        println!("{}", sign_errors_near_tangency(args.samples, args.seed));
+        crate::output::println(root_errors(&gen, args.samples, args.seed).text())?;
+        crate::output::println(sign_errors_near_tangency(args.samples, args.seed))?;
     }
-    Ok(())
+    Ok(ExitCode::SUCCESS)
 }
 
 /// Errors of the f64 roots `u = -A +- sqrt(A^2 - B)` against the exact roots.

@@ -27,8 +27,7 @@ pub enum Mode {
 }
 
 fn q<T: Field>(n: i64, d: i64) -> T {
-    // The constants below have non-zero denominators.
-    T::from_ratio(n, d).unwrap_or_else(|_| T::zero())
+    T::from_ratio(n, d).expect("W2's constants and parameters have non-zero denominators")
 }
 
 /// The W2 configuration over any field.
@@ -57,11 +56,8 @@ pub fn parameter<T: Field>(k: usize) -> T {
 
 /// `disc(T)` for the W2 configuration.
 pub fn discriminant<T: Field>(cs: &CylinderSphere<T>, tau: &T) -> T {
-    // 1 + T^2 > 0 for every rational T.
-    match unit_circle_point(tau) {
-        Ok(p) => cs.discriminant_at(&p.cos, &p.sin),
-        Err(_) => T::zero(),
-    }
+    let p = unit_circle_point(tau).expect("1 + T^2 > 0 for every rational T");
+    cs.discriminant_at(&p.cos, &p.sin)
 }
 
 /// What a W2 run computed.
@@ -142,45 +138,17 @@ pub fn check_values<T: RationalScalar>(sum: &T) -> CheckValues {
     let big: BigRational = sum.to_big_rational();
     let (n, d) = (big.numer(), big.denom());
     let p = BigInt::from(P);
-    let residue = |x: &BigInt| x.mod_floor(&p).to_u64().unwrap_or(0);
+    let residue = |x: &BigInt| {
+        x.mod_floor(&p)
+            .to_u64()
+            .expect("a residue mod 1e9+7 fits in u64")
+    };
     CheckValues {
         num_digits: n.abs().to_string().len(),
         den_digits: d.to_string().len(),
         num_mod_p: residue(n),
         den_mod_p: residue(d),
         approx: big.to_f64().unwrap_or(f64::NAN),
-    }
-}
-
-/// Runs W3 (f64 sampling of the same configuration as W2, on the grid `t_i = i 2 pi / n`) and
-/// formats the result like `w3_numpy.py` (one JSON line) or as text.
-pub fn bench_w3(n: usize, variant: crate::cli::W3Variant, json: bool) -> String {
-    use crate::cli::W3Variant;
-    use exactcheck_float::sampler::{sweep_direct, DiscSampler};
-    let cs = problem::<f64>();
-    let start = Instant::now();
-    let summary = match variant {
-        W3Variant::Coef => DiscSampler::new(&cs).sweep(n),
-        W3Variant::CoefSerial => DiscSampler::new(&cs).sweep_serial(n),
-        W3Variant::Direct => sweep_direct(&cs, n),
-    };
-    let seconds = start.elapsed().as_secs_f64();
-    let name = format!("{variant:?}").to_lowercase();
-    if json {
-        format!(
-            "{{\"tool\": \"exactcheck\", \"variant\": \"{name}\", \"N\": {n}, \"seconds\": {seconds}, \"samples_per_s\": {}, \"count_nonneg\": {}, \"sum_sqrt\": \"{:?}\", \"threads\": {}}}",
-            n as f64 / seconds,
-            summary.count_nonneg,
-            summary.sum_sqrt,
-            rayon::current_num_threads()
-        )
-    } else {
-        format!(
-            "W3 (f64 Spaeth discriminant), N = {n}, variant {name}\n  samples with disc >= 0: {}\n  sum of sqrt(disc): {:?}\n  time: {seconds:.4} s ({:.1} M samples/s)",
-            summary.count_nonneg,
-            summary.sum_sqrt,
-            n as f64 / seconds / 1e6
-        )
     }
 }
 

@@ -274,3 +274,25 @@ fn errors_have_status_2() {
     );
     assert!(!Path::new(out).exists(), "nothing written on errors");
 }
+
+#[test]
+fn subnormal_sphere_radius_draws_without_overflow() {
+    // Old: "capacity overflow" in the tick computation (the u-range is subnormal in f64).
+    let dir = TempDir::new("tiny");
+    for (i, centre) in ["[8,0,3]", "[0,0,0]"].iter().enumerate() {
+        let problem = dir.path(&format!("tiny{i}.json"));
+        std::fs::write(
+            &problem,
+            format!(
+                r#"{{"kind":"cylinder_sphere","cylinder":{{"axis_point":[0,0],"radius":5,"beta":{{"cos":1,"sin":0}},"gamma":{{"cos":1,"sin":0}}}},"sphere":{{"center":{centre},"radius":"1/10^323"}}}}"#
+            ),
+        )
+        .unwrap();
+        let p = problem.to_str().unwrap();
+        check_svg(&plot(&[p], &dir.path(&format!("tiny{i}.svg"))));
+        check_svg(&plot(
+            &[p, "--view", "3d"],
+            &dir.path(&format!("tiny{i}3d.svg")),
+        ));
+    }
+}

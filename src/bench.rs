@@ -1,0 +1,186 @@
+//! `exactcheck bench`: the benchmark workloads W2 (the exact Spaeth discriminant at N rational
+//! parameters, [`crate::w2`]) and W3 (f64 sampling of the same discriminant), timed and printed
+//! with their check values as text or as the one JSON line the anchor scripts print.
+//!
+//! Each workload's `--n` has a documented maximum ([`MAX_W2_EVAL_N`], [`MAX_W2_TREE_N`],
+//! [`MAX_W2_SEQ_N`], [`MAX_W3_N`]), chosen from measured rates on a 2-core machine (eval about
+//! 200,000 parameters/s; tree stores every value and its balanced sum of 10^6 values takes
+//! minutes; seq's running sum grows with every step, about 4,000 parameters/s at 2*10^4; W3
+//! about 10^8 samples/s): a larger value is a one-line error naming the flag and the limit,
+//! never an allocation or a loop proportional to an unchecked number.
+
+use crate::args::{check_count, ScalarChoice};
+use crate::w2;
+use crate::Error;
+use clap::{Args, Subcommand, ValueEnum};
+use exactcheck_exact::{PlainRational, Rational, RationalScalar};
+use exactcheck_float::sampler::{sweep_direct, DiscSampler};
+use std::process::ExitCode;
+use std::time::Instant;
+
+/// The largest `bench w2 --n` in mode `eval` (about a minute).
+pub const MAX_W2_EVAL_N: usize = 10_000_000;
+/// The largest `bench w2 --n` in mode `tree` (every value is kept; a few minutes).
+pub const MAX_W2_TREE_N: usize = 1_000_000;
+/// The largest `bench w2 --n` in mode `seq` (the running sum grows; minutes).
+pub const MAX_W2_SEQ_N: usize = 100_000;
+/// The largest `bench w3 --n` (seconds on all cores).
+pub const MAX_W3_N: usize = 1_000_000_000;
+
+/// Arguments of `exactcheck bench`.
+#[derive(Debug, Args)]
+pub struct BenchArgs {
+    /// Which workload.
+    #[command(subcommand)]
+    pub workload: Workload,
+}
+
+/// The benchmark workloads (see `../shared/anchors` for the same workloads in other tools).
+#[derive(Debug, Subcommand)]
+pub enum Workload {
+    /// W2: the exact Spaeth discriminant at N rational parameters.
+    W2 {
+        /// Number of parameters T_k = k/1000 - 50, k = 0..N-1 (at most 10,000,000 with
+        /// `eval`, 1,000,000 with `tree`, 100,000 with `seq`).
+        #[arg(long, default_value_t = 100_000)]
+        n: usize,
+        /// eval: evaluate only; tree: plus a pairwise exact sum; seq: plus a sequential exact sum.
+        #[arg(long, value_enum, default_value_t = w2::Mode::Eval)]
+        mode: w2::Mode,
+        /// The exact rational type: the fast `Rational`, or num-rational's plain `BigRational`.
+        #[arg(long, value_enum, default_value_t = ScalarChoice::Fast)]
+        scalar: ScalarChoice,
+        /// Print one JSON line (as the anchor scripts do) instead of text.
+        #[arg(long)]
+        json: bool,
+    },
+    /// W3: f64 sampling of the Spaeth discriminant on the grid t_i = i 2 pi / N.
+    W3 {
+        /// Number of samples (at most 1,000,000,000).
+        #[arg(long, default_value_t = 10_000_000)]
+        n: usize,
+        /// How the samples are evaluated.
+        #[arg(long, value_enum, default_value_t = W3Variant::Coef)]
+        variant: W3Variant,
+        /// Print one JSON line instead of text.
+        #[arg(long)]
+        json: bool,
+    },
+}
+
+/// The variants of W3.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum W3Variant {
+    /// Precomputed trigonometric coefficients, all cores.
+    Coef,
+    /// Precomputed coefficients, one thread.
+    CoefSerial,
+    /// The derived formulas evaluated per sample with `sin_cos`, one thread (the baseline).
+    Direct,
+}
+
+/// The largest `--n` of W2 in `mode`, and how the error names it.
+pub fn max_w2_n(mode: w2::Mode) -> (usize, &'static str) {
+    match mode {
+        w2::Mode::Eval => (MAX_W2_EVAL_N, " with --mode eval"),
+        w2::Mode::Tree => (MAX_W2_TREE_N, " with --mode tree"),
+        w2::Mode::Seq => (MAX_W2_SEQ_N, " with --mode seq"),
+    }
+}
+
+/// Runs `exactcheck bench` and prints the result.
+///
+/// # Errors
+/// [`Error::Usage`] for `--n` outside its range; [`Error::Output`] when standard output fails.
+pub fn run(args: &BenchArgs) -> Result<ExitCode, Error> {
+    let text = match args.workload {
+        Workload::W3 { n, variant, json } => {
+            let n = check_count("--n", n, MAX_W3_N, "")?;
+            bench_w3(n, variant, json)
+        }
+        Workload::W2 {
+            n,
+            mode,
+            scalar,
+            json,
+        } => {
+            let (max, context) = max_w2_n(mode);
+            let n = check_count("--n", n, max, context)?;
+            match scalar {
+                ScalarChoice::Fast => bench_w2::<Rational>(n, mode, "fast", json),
+                ScalarChoice::Plain => bench_w2::<PlainRational>(n, mode, "plain", json),
+            }
+        }
+    };
+    crate::output::println(text)?;
+    Ok(ExitCode::SUCCESS)
+}
+
+/// Runs W3 (f64 sampling of the same configuration as W2, on the grid `t_i = i 2 pi / n`) and
+/// formats the result like `w3_numpy.py` (one JSON line) or as text.
+pub fn bench_w3(n: usize, variant: W3Variant, json: bool) -> String {
+    let cs = w2::problem::<f64>();
+    let start = Instant::now();
+    let summary = match variant {
+        W3Variant::Coef => DiscSampler::new(&cs).sweep(n),
+        W3Variant::CoefSerial => DiscSampler::new(&cs).sweep_serial(n),
+        W3Variant::Direct => sweep_direct(&cs, n),
+    };
+    let seconds = start.elapsed().as_secs_f64();
+    let name = format!("{variant:?}").to_lowercase();
+    if json {
+        format!(
+            "{{\"tool\": \"exactcheck\", \"variant\": \"{name}\", \"N\": {n}, \"seconds\": {seconds}, \"samples_per_s\": {}, \"count_nonneg\": {}, \"sum_sqrt\": \"{:?}\", \"threads\": {}}}",
+            n as f64 / seconds,
+            summary.count_nonneg,
+            summary.sum_sqrt,
+            rayon::current_num_threads()
+        )
+    } else {
+        format!(
+            "W3 (f64 Spaeth discriminant), N = {n}, variant {name}\n  samples with disc >= 0: {}\n  sum of sqrt(disc): {:?}\n  time: {seconds:.4} s ({:.1} M samples/s)",
+            summary.count_nonneg,
+            summary.sum_sqrt,
+            n as f64 / seconds / 1e6
+        )
+    }
+}
+
+/// Runs W2 with `n` parameters over the scalar `T` and formats it like `w2_rational.py` (one
+/// JSON line) or as text.
+pub fn bench_w2<T: RationalScalar>(n: usize, mode: w2::Mode, scalar: &str, json: bool) -> String {
+    let out = w2::run::<T>(n, mode);
+    let checks = out.sum.as_ref().map(w2::check_values);
+    let mode_name = format!("{mode:?}").to_lowercase();
+    if json {
+        let mut s = format!(
+            "{{\"tool\": \"exactcheck\", \"scalar\": \"{scalar}\", \"mode\": \"{mode_name}\", \"N\": {n}, \"seconds\": {}, \"samples_per_s\": {}, \"count_nonneg\": {}",
+            out.seconds,
+            n as f64 / out.seconds,
+            out.count_nonneg
+        );
+        if let Some(c) = &checks {
+            s += &format!(
+                ", \"sum_num_digits\": {}, \"sum_den_digits\": {}, \"sum_num_mod_p\": {}, \"sum_den_mod_p\": {}, \"sum_approx\": {:?}",
+                c.num_digits, c.den_digits, c.num_mod_p, c.den_mod_p, c.approx
+            );
+        }
+        s + "}"
+    } else {
+        let mut s = format!(
+            "W2 (exact Spaeth discriminant), N = {n}, mode {mode_name}, scalar {scalar}\n  parameters with disc >= 0: {}\n",
+            out.count_nonneg
+        );
+        if let Some(c) = &checks {
+            s += &format!(
+                "  exact sum: numerator {} digits, denominator {} digits\n  numerator mod 1e9+7 = {}, denominator mod 1e9+7 = {}\n  value ~ {:?}\n",
+                c.num_digits, c.den_digits, c.num_mod_p, c.den_mod_p, c.approx
+            );
+        }
+        s + &format!(
+            "  time: {:.3} s ({:.0} parameters/s)",
+            out.seconds,
+            n as f64 / out.seconds
+        )
+    }
+}

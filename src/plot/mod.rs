@@ -1,0 +1,125 @@
+//! `exactcheck plot`: SVG figures of Spaeth's cylinder/sphere intersection (SPEC §2).
+//!
+//! Two views of one configuration (one of the paper's examples, or a `cylinder_sphere` problem
+//! file as read by `solve`):
+//! * the **t-u diagram** (the paper's Fig. 2 and 3, which the seeds do not contain): the branches
+//!   `u1(t) <= u2(t)` of `u^2 + 2 A(t) u + B(t) = 0` over `t` in degrees, sampled densely in f64
+//!   ([`DiscSampler::roots`]) and broken where the discriminant is negative; the paper's
+//!   10-degree samples as dots; the ends of the real t-intervals and the touching points from
+//!   the **exact** analysis ([`analyze`], Sturm on the tau-quartic) as markers;
+//! * a **3D view**: an orthographic projection of the cylinder and sphere wireframes and the
+//!   intersection curve, drawn back to front.
+//!
+//! The SVG is written by hand ([`Svg`]), every text and attribute value escaped ([`escape`]).
+//!
+//! Layout: `scene` (the configurations and the f64 sampling), `svg` (the writer and ticks),
+//! `figure` (style, title block, legend), `tu` (the t-u diagram), `view3d` (the 3D view).
+
+use crate::Error;
+use clap::{Args, ValueEnum};
+use exactcheck_core::cylinder_sphere::{rotate_x, rotate_y, Angle, CylinderSphere};
+use exactcheck_core::{Sign, Vec3};
+use exactcheck_exact::cylinder_sphere::analyze;
+use exactcheck_exact::univariate::{Bound, RootInterval, UPoly};
+use exactcheck_exact::Rational;
+use exactcheck_float::sampler::DiscSampler;
+use serde_json::Value;
+use std::f64::consts::TAU;
+use std::io::Write as _;
+use std::process::ExitCode;
+
+mod figure;
+mod scene;
+mod svg;
+#[cfg(test)]
+mod tests;
+mod tu;
+mod view3d;
+
+use figure::*;
+use scene::*;
+pub use svg::{escape, nice_ticks, Svg};
+use svg::{short, tick_label, Points, N};
+use tu::tu_diagram;
+use view3d::view_3d;
+
+/// Arguments of `exactcheck plot`.
+#[derive(Debug, Args)]
+pub struct PlotArgs {
+    /// `spaeth` (with `--example N`) or a `cylinder_sphere` problem file (the format of `solve`).
+    pub source: String,
+    /// Which of Spaeth's examples to draw (1, 2 or 3), with `spaeth`.
+    #[arg(long, value_name = "N")]
+    pub example: Option<u32>,
+    /// The figure: the t-u diagram (the paper's Fig. 2 / 3) or a 3D view.
+    #[arg(long, value_enum, default_value_t = View::Tu)]
+    pub view: View,
+    /// The SVG file to write; `-`: standard output (the summary line then goes to standard
+    /// error).
+    #[arg(short = 'o', long = "output", value_name = "FILE.svg")]
+    pub output: String,
+}
+
+/// The figures `plot` draws.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum View {
+    /// The t-u diagram: t in degrees against the roots u1 <= u2.
+    Tu,
+    /// An orthographic 3D view of cylinder, sphere and intersection curve.
+    #[value(name = "3d")]
+    ThreeD,
+}
+
+/// Runs `exactcheck plot`: draws the figure, writes it and prints one line.
+///
+/// # Errors
+/// [`Error::Usage`] for an unknown example, a missing or misplaced `--example`, or an output
+/// path that cannot be written; [`Error::Io`] / [`Error::Input`] for an unreadable or malformed
+/// problem file or one of another kind; [`Error::Output`] when standard output fails.
+pub fn run(args: &PlotArgs) -> Result<ExitCode, Error> {
+    let scene = match (args.source.as_str(), args.example) {
+        ("spaeth", Some(n)) => spaeth_scene(n)?,
+        ("spaeth", None) => {
+            return Err(Error::Usage("plot spaeth needs --example 1, 2 or 3".into()))
+        }
+        (_, Some(_)) => {
+            return Err(Error::Usage(format!(
+                "--example goes with `plot spaeth`, not with a problem file ({})",
+                args.source
+            )))
+        }
+        (path, None) => file_scene(path)?,
+    };
+    let (svg, what) = match args.view {
+        View::Tu => (tu_diagram(&scene), "t-u diagram"),
+        View::ThreeD => (view_3d(&scene), "3D view"),
+    };
+    let to_stdout = args.output == "-";
+    if to_stdout {
+        crate::output::print(&svg)?;
+    } else {
+        std::fs::write(&args.output, &svg)
+            .map_err(|e| Error::Usage(format!("cannot write {}: {e}", args.output)))?;
+    }
+    let summary = format!(
+        "wrote {}: {what} of {}{} ({} bytes of SVG)",
+        if to_stdout {
+            "standard output"
+        } else {
+            &args.output
+        },
+        scene.name,
+        match (args.view, scene.figure) {
+            (View::Tu, Some(f)) => format!(" (the paper's {f})"),
+            _ => String::new(),
+        },
+        svg.len()
+    );
+    if to_stdout {
+        // The SVG owns standard output; a failing standard error has nowhere to be reported.
+        let _ = writeln!(std::io::stderr(), "{summary}");
+    } else {
+        crate::output::println(summary)?;
+    }
+    Ok(ExitCode::SUCCESS)
+}

@@ -1,0 +1,298 @@
+//! The command line under hostile use (issue 16): a closed or full standard output, counts far
+//! out of range, usage errors, invalid UTF-8 in arguments, `plot -o -`. Each case pins the old
+//! failure (a panic, an abort, minutes of silence, a 3-16 line message, a file named `-`).
+
+use std::io::Write as _;
+use std::path::PathBuf;
+use std::process::{Command, Output, Stdio};
+use std::time::{Duration, Instant};
+
+fn bin() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+}
+
+fn exactcheck(args: &[&str]) -> Output {
+    bin().args(args).output().expect("run exactcheck")
+}
+
+/// A fresh directory under the system temp dir, removed when dropped.
+struct TempDir(PathBuf);
+
+impl TempDir {
+    fn new(tag: &str) -> TempDir {
+        let nanos = std::time::SystemTime::now()
+            .duration_since(std::time::UNIX_EPOCH)
+            .map_or(0, |d| d.as_nanos());
+        let dir = std::env::temp_dir().join(format!(
+            "exactcheck-robust-{tag}-{}-{nanos}",
+            std::process::id()
+        ));
+        std::fs::create_dir_all(&dir).expect("create temp dir");
+        TempDir(dir)
+    }
+}
+
+impl Drop for TempDir {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+const PROBLEM: &str = r#"{"kind":"cylinder_sphere","cylinder":{"axis_point":[0,0],"radius":5,"beta":{"cos":1,"sin":0},"gamma":{"cos":1,"sin":0}},"sphere":{"center":[8,0,3],"radius":3}}"#;
+
+/// Every command this crate's CLI writes standard output for (prove's output is written in
+/// `prove_cmd`), with the standard input it reads.
+fn commands() -> Vec<(Vec<&'static str>, &'static str)> {
+    vec![
+        (vec!["verify", "--only", "spaeth"], ""),
+        (vec!["verify", "--only", "spaeth", "--json"], ""),
+        (vec!["bench", "w2", "--n", "50"], ""),
+        (vec!["bench", "w3", "--n", "1000", "--json"], ""),
+        (vec!["regress", "cylinder-sphere", "--samples", "20"], ""),
+        (vec!["plot", "spaeth", "--example", "2", "-o", "-"], ""),
+        (vec!["solve", "-"], PROBLEM),
+    ]
+}
+
+/// Runs `args` with standard output connected to `stdout`, feeding `input`.
+fn run_with_stdout(args: &[&str], input: &str, stdout: Stdio) -> std::process::Child {
+    let mut child = bin()
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(stdout)
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("spawn exactcheck");
+    let mut stdin = child.stdin.take().expect("stdin");
+    stdin.write_all(input.as_bytes()).expect("write stdin");
+    drop(stdin);
+    child
+}
+
+#[test]
+fn a_closed_stdout_ends_quietly_with_status_0() {
+    // Old: "failed printing to stdout: Broken pipe", a panic (status 101).
+    for (args, input) in commands() {
+        let mut child = run_with_stdout(&args, input, Stdio::piped());
+        // The reader goes away before anything is written, as `head -1` does after one line.
+        drop(child.stdout.take());
+        let o = child.wait_with_output().expect("wait");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(!err.contains("panicked"), "{args:?}: {err}");
+        assert_eq!(o.status.code(), Some(0), "{args:?}: {err}");
+        assert!(!err.contains("error"), "{args:?}: {err}");
+    }
+}
+
+#[test]
+fn verify_piped_into_head_reads_one_line_and_exits_0() {
+    let mut child = run_with_stdout(&["verify"], "", Stdio::piped());
+    let mut out = child.stdout.take().expect("stdout");
+    let mut first = Vec::new();
+    let mut byte = [0u8; 1];
+    while std::io::Read::read(&mut out, &mut byte).expect("read") == 1 && byte[0] != b'\n' {
+        first.push(byte[0]);
+    }
+    drop(out);
+    let o = child.wait_with_output().expect("wait");
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        String::from_utf8_lossy(&first).starts_with("id "),
+        "{first:?}"
+    );
+    assert!(!err.contains("panicked"), "{err}");
+    // The table is written in one piece: it either fit into the pipe (exit 0 or 1 by the
+    // verdicts) or hit the closed pipe (exit 0); never the panic's 101 or an error line.
+    assert!(
+        matches!(o.status.code(), Some(0 | 1)),
+        "{:?}: {err}",
+        o.status
+    );
+}
+
+#[cfg(target_os = "linux")]
+#[test]
+fn a_full_stdout_is_one_line_and_status_2() {
+    // Old: a panic, "failed printing to stdout: No space left on device".
+    for (args, input) in commands() {
+        let full = std::fs::OpenOptions::new()
+            .write(true)
+            .open("/dev/full")
+            .expect("/dev/full");
+        let child = run_with_stdout(&args, input, Stdio::from(full));
+        let o = child.wait_with_output().expect("wait");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+        // plot -o - also reports what it wrote on standard error; the error is the last line.
+        assert_eq!(
+            err.lines().last(),
+            Some("exactcheck: error: cannot write standard output: No space left on device"),
+            "{args:?}: {err}"
+        );
+        assert!(!err.contains("panicked"), "{args:?}: {err}");
+    }
+}
+
+#[test]
+fn counts_out_of_range_are_one_line_naming_flag_and_limit() {
+    for (args, message) in [
+        // Old: exit 0 (while w3 --n 0 exited 2).
+        (
+            &["bench", "w2", "--n", "0"][..],
+            "--n must be between 1 and 10000000 with --mode eval (got 0)",
+        ),
+        (
+            &["bench", "w3", "--n", "0"][..],
+            "--n must be between 1 and 1000000000 (got 0)",
+        ),
+        // Old: capacity overflow (a panic).
+        (
+            &[
+                "bench",
+                "w2",
+                "--n",
+                "18446744073709551615",
+                "--mode",
+                "tree",
+            ][..],
+            "--n must be between 1 and 1000000 with --mode tree (got 18446744073709551615)",
+        ),
+        // Old: aborted allocating.
+        (
+            &["bench", "w3", "--n", "100000000000000"][..],
+            "--n must be between 1 and 1000000000 (got 100000000000000)",
+        ),
+        (
+            &["bench", "w2", "--n", "100000000", "--mode", "tree"][..],
+            "--n must be between 1 and 1000000 with --mode tree (got 100000000)",
+        ),
+        // Old: ran silently for minutes.
+        (
+            &["bench", "w2", "--n", "1000000000000"][..],
+            "--n must be between 1 and 10000000 with --mode eval (got 1000000000000)",
+        ),
+        (
+            &["bench", "w2", "--n", "100001", "--mode", "seq"][..],
+            "--n must be between 1 and 100000 with --mode seq (got 100001)",
+        ),
+        (
+            &["bench", "w3", "--n", "1000000000000"][..],
+            "--n must be between 1 and 1000000000 (got 1000000000000)",
+        ),
+        (
+            &["regress", "cylinder-sphere", "--samples", "1000000000000"][..],
+            "--samples must be between 1 and 1000000 (got 1000000000000)",
+        ),
+        (
+            &["regress", "bezier-cubic", "--samples", "0"][..],
+            "--samples must be between 1 and 1000000 (got 0)",
+        ),
+    ] {
+        let start = Instant::now();
+        let o = exactcheck(args);
+        assert!(start.elapsed() < Duration::from_secs(10), "{args:?}");
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        assert_eq!(
+            String::from_utf8_lossy(&o.stderr),
+            format!("exactcheck: error: {message}\n"),
+            "{args:?}"
+        );
+        assert!(o.stdout.is_empty());
+    }
+    // The limits themselves are accepted.
+    let o = exactcheck(&["bench", "w2", "--n", "1", "--mode", "tree"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+}
+
+#[test]
+fn usage_errors_are_one_line_plus_a_hint_for_every_subcommand() {
+    // Old: 3-16 lines (usage, help pointer, lists).
+    for args in [
+        &["frobnicate"][..],
+        &[][..],
+        &["verify", "--nope"][..],
+        &["verify", "--only"][..],
+        &["prove", "x", "x", "--random", "many"][..],
+        &["prove"][..],
+        &["solve", "--float", "--both"][..],
+        &["solve", "a", "b"][..],
+        &["bench"][..],
+        &["bench", "w4"][..],
+        &["bench", "w2", "--mode", "fastest"][..],
+        &["bench", "w2", "--n", "-3"][..],
+        &["bench", "w2", "--n", "18446744073709551616"][..],
+        &["bench", "w3", "--variant", "gpu"][..],
+        &["regress"][..],
+        &["regress", "no-such-kernel"][..],
+        &["regress", "bezier-cubic", "--seed", "x"][..],
+        &["plot"][..],
+        &["plot", "spaeth", "--view", "4d", "-o", "x.svg"][..],
+        &["plot", "spaeth", "--example", "2"][..],
+    ] {
+        let o = exactcheck(args);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+        let lines: Vec<&str> = err.lines().collect();
+        assert_eq!(lines.len(), 2, "{args:?}: {err}");
+        assert!(
+            lines[0].starts_with("exactcheck: error: "),
+            "{args:?}: {err}"
+        );
+        assert!(
+            lines[1].starts_with("exactcheck: hint: "),
+            "{args:?}: {err}"
+        );
+        assert!(lines[1].contains("--help`"), "{args:?}: {err}");
+        assert!(o.stdout.is_empty(), "{args:?}");
+    }
+    let o = exactcheck(&["bench", "w2", "--bogus"]);
+    assert_eq!(
+        String::from_utf8_lossy(&o.stderr).lines().next(),
+        Some("exactcheck: error: unexpected argument '--bogus' found")
+    );
+    assert!(String::from_utf8_lossy(&o.stderr).contains("see `exactcheck bench w2 --help`"));
+    // Help is not an error: standard output, status 0.
+    let o = exactcheck(&["bench", "--help"]);
+    assert_eq!(o.status.code(), Some(0));
+    assert!(String::from_utf8_lossy(&o.stdout).contains("Usage:"));
+}
+
+#[cfg(unix)]
+#[test]
+fn invalid_utf8_in_an_argument_names_it() {
+    use std::os::unix::ffi::OsStrExt;
+    let bad = std::ffi::OsStr::from_bytes(b"caf\xe9");
+    // Old: "invalid UTF-8 was detected in one or more arguments" and the usage.
+    let o = bin()
+        .args(["verify", "--only"])
+        .arg(bad)
+        .output()
+        .expect("run");
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(
+        err.lines().next(),
+        Some("exactcheck: error: the value of --only is not valid UTF-8: \"caf\\u{FFFD}\"")
+    );
+    let o = bin().args(["plot"]).arg(bad).output().expect("run");
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr)
+        .starts_with("exactcheck: error: argument 2 is not valid UTF-8"));
+}
+
+#[test]
+fn plot_to_dash_writes_standard_output_not_a_file() {
+    // Old: wrote a file named `-`.
+    let dir = TempDir::new("dash");
+    let o = bin()
+        .args(["plot", "spaeth", "--example", "1", "-o", "-"])
+        .current_dir(&dir.0)
+        .output()
+        .expect("run");
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let svg = String::from_utf8_lossy(&o.stdout);
+    assert!(svg.starts_with("<svg"), "{}", &svg[..svg.len().min(80)]);
+    assert!(svg.trim_end().ends_with("</svg>"));
+    assert!(!dir.0.join("-").exists(), "a file named - was written");
+    assert!(String::from_utf8_lossy(&o.stderr).starts_with("wrote standard output: t-u diagram"));
+}
