@@ -12,7 +12,6 @@ pub mod plot;
 pub mod prove_cmd;
 pub mod regress;
 pub mod solve;
-pub mod solve_cs;
 pub mod w2;
 
 pub use error::Error;
