@@ -168,7 +168,7 @@ fn big_json_integers_are_read_exactly() {
     // Issue 16: 10^23 was called a floating-point literal, a 400-digit integer "out of range".
     let big = format!("1{}", "0".repeat(23));
     let a = answer(
-        &cylinder_sphere(ZERO, &format!("[{big},0,0]"), &format!("{big}"), ""),
+        &cylinder_sphere(ZERO, &format!("[{big},0,0]"), &big, ""),
         &[],
     );
     // delta = 10^23 = R: the centre is at distance R from the axis, r = 5 < R: crossing.

@@ -293,7 +293,8 @@ impl<T: Ring> CylinderSphere<T> {
 pub enum Contact {
     /// No common point.
     Disjoint,
-    /// They touch: `|delta - r| = R` (delta the distance of the centre from the axis).
+    /// They touch without crossing: `|delta - r| = R` with `delta != R - r` (delta the distance
+    /// of the centre from the axis; one point), or `delta = 0` and `R = r` (a whole circle).
     Tangent,
     /// They cross along a curve.
     Crossing,

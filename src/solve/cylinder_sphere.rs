@@ -383,6 +383,9 @@ struct Sample {
     points: Vec<[String; 3]>,
 }
 
+/// A point exactly as text, and its f64 approximation.
+type PointText = ([String; 3], [f64; 3]);
+
 #[derive(Debug, Serialize)]
 struct CurvePoint {
     exact: [String; 3],
@@ -530,36 +533,35 @@ fn exact(text: &str) -> Result<ExactAnswer, Error> {
         let disc = a.square() - &b;
         // u and the points: in the radical field, or in Q(w), w^2 = disc, when the radicand
         // cannot be certified square-free.
-        let (us, pts): (Vec<String>, Vec<([String; 3], [f64; 3])>) =
-            match Radical::sqrt_rational(&disc) {
-                None => {
-                    let (pts, ok) = quadratic_points(&cs, &angle, &a, &disc);
-                    all_on_both &= ok;
-                    let minus_a = a.neg_ref();
-                    (
-                        vec![
-                            format!("{minus_a} - sqrt({disc})"),
-                            format!("{minus_a} + sqrt({disc})"),
-                        ],
-                        pts,
-                    )
-                }
-                Some(root) => {
-                    let (c, s) = (lift(&angle.cos), lift(&angle.sin));
-                    let minus_a = lift(&a).neg_ref();
-                    let us: Vec<Radical> = if disc.is_zero() {
-                        vec![minus_a]
-                    } else {
-                        vec![minus_a.sub_ref(&root), minus_a.add_ref(&root)]
-                    };
-                    let pts: Vec<Vec3<Radical>> = us.iter().map(|u| rcs.point(&c, &s, u)).collect();
-                    all_on_both &= pts.iter().all(|x| on_both(&rcs, x));
-                    (
-                        us.iter().map(ToString::to_string).collect(),
-                        pts.iter().map(|x| (strings(x), approx3(x))).collect(),
-                    )
-                }
-            };
+        let (us, pts): (Vec<String>, Vec<PointText>) = match Radical::sqrt_rational(&disc) {
+            None => {
+                let (pts, ok) = quadratic_points(&cs, &angle, &a, &disc);
+                all_on_both &= ok;
+                let minus_a = a.neg_ref();
+                (
+                    vec![
+                        format!("{minus_a} - sqrt({disc})"),
+                        format!("{minus_a} + sqrt({disc})"),
+                    ],
+                    pts,
+                )
+            }
+            Some(root) => {
+                let (c, s) = (lift(&angle.cos), lift(&angle.sin));
+                let minus_a = lift(&a).neg_ref();
+                let us: Vec<Radical> = if disc.is_zero() {
+                    vec![minus_a]
+                } else {
+                    vec![minus_a.sub_ref(&root), minus_a.add_ref(&root)]
+                };
+                let pts: Vec<Vec3<Radical>> = us.iter().map(|u| rcs.point(&c, &s, u)).collect();
+                all_on_both &= pts.iter().all(|x| on_both(&rcs, x));
+                (
+                    us.iter().map(ToString::to_string).collect(),
+                    pts.iter().map(|x| (strings(x), approx3(x))).collect(),
+                )
+            }
+        };
         samples.push(Sample {
             tau: tau.to_string(),
             cos: angle.cos.to_string(),
@@ -763,7 +765,7 @@ fn quadratic_points(
     angle: &Angle<Rational>,
     a: &Rational,
     disc: &Rational,
-) -> (Vec<([String; 3], [f64; 3])>, bool) {
+) -> (Vec<PointText>, bool) {
     use exactcheck_exact::poly::Poly;
     type P = Poly<Rational>;
     let k = |q: &Rational| P::constant(q.clone());
