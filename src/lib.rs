@@ -15,7 +15,6 @@ pub mod plot;
 pub mod prove_cmd;
 pub mod regress;
 pub mod solve;
-pub mod solve_cs;
 pub mod verify_cmd;
 pub mod w2;
 

@@ -1,10 +1,14 @@
 //! Cylinder / sphere intersection (Spaeth 2003, seeds 000 and 001; SPEC §2).
 //!
-//! A cylinder of radius `r` about the z axis through `(a, b, 0)` is rotated by `gamma` in the y-z
-//! plane and by `beta` in the x-z plane; its points are `R_y(beta) R_x(gamma) (a + r cos t,
-//! b + r sin t, u)` (4). Substituting into the sphere `|x - (d,e,f)|^2 = R^2` (6) gives the monic
-//! quadratic `u^2 + 2 A(t) u + B(t) = 0` (8); real points exist where the discriminant
-//! `A(t)^2 - B(t)` is non-negative (11).
+//! A cylinder of radius `r` about the z axis through `(a, b, 0)` is rotated by `beta` in the x-z
+//! plane and then by `gamma` in the y-z plane: its points are
+//! `R_x(gamma) R_y(beta) (a + r cos t, b + r sin t, u)` ([`CylinderSphere::point`]; this is (5)
+//! multiplied out, the order the paper's (7)-(11) use). The paper's (4) prints the product the
+//! other way round, `R_y(beta) R_x(gamma)`; that order is kept only as
+//! [`CylinderSphere::point_printed_order`] for the catalogue's `spaeth.eq5` claim.
+//! Substituting the point into the sphere `|x - (d,e,f)|^2 = R^2` (6) gives the monic quadratic
+//! `u^2 + 2 A(t) u + B(t) = 0` (8); real points exist where the discriminant `D(t) = A(t)^2 - B(t)`
+//! is non-negative (11).
 //!
 //! Angles enter as points `(cos, sin)` of the unit circle, never as radians, so the formulas are
 //! polynomial and run exactly over any [`Ring`]; [`unit_circle_point`] gives the rational points.
@@ -12,6 +16,26 @@
 //! The coefficients below are the ones obtained by multiplying out the rotation product, with
 //! `u` collected: this is *not* the printed (9), whose last term has the opposite sign (the
 //! catalogue's `spaeth.eq9` claim decides that).
+//!
+//! **Tangency.** Write `F(t, u) = |x(t, u) - c|^2 - R^2 = u^2 + 2 A u + B`. The cylinder
+//! parametrization is regular (`r > 0`) and the sphere's gradient `2 (x - c)` does not vanish on
+//! it (`R > 0`), so the surfaces touch at a common point exactly when the sphere's normal is
+//! orthogonal to both tangents `x_t`, `x_u`, i.e. when `F_t = F_u = 0` there: the point is a
+//! singular point of the curve `F = 0` in the `(t, u)` plane. `F_u = 0` gives `u = -A(t)`, and
+//! then `F = 0` and `F_t = 0` say `D(t) = 0` and `D'(t) = 0`: **the touching points are the
+//! multiple roots of the discriminant**, one point `u = -A(t)` each, and if `D` vanishes
+//! identically the surfaces touch along the whole curve `u = -A(t)`. Geometrically the sphere's
+//! normal line at a touching point is the cylinder's normal line, which meets the axis at a right
+//! angle; so
+//! * `delta = r + R` (outside) or `delta = r - R > 0` (inside the cylinder): one touching point,
+//!   and nothing else in common;
+//! * `delta = R - r > 0`: the curve is a figure eight whose two loops cross at one touching point;
+//! * `delta = 0` and `R = r`: the sphere touches along the whole circle of the axis height of its
+//!   centre ([`Touching::Circle`]);
+//!
+//! where `delta` is the distance of the centre from the axis. [`CylinderSphere::touching_by_distance`]
+//! decides this from `delta`; the exact analysis in `exactcheck-exact` finds the same points from the
+//! multiple roots of the discriminant, and a property test compares the two.
 
 use crate::scalar::{Field, OrderedField, Ring, Sign, ZeroDivisor};
 use crate::vector::Vec3;
@@ -56,6 +80,32 @@ pub struct CylinderSphere<T> {
     pub center: Vec3<T>,
     /// Sphere radius.
     pub radius: T,
+}
+
+impl<T> Angle<T> {
+    /// The same angle with each coordinate converted by `f`.
+    pub fn map<U>(&self, mut f: impl FnMut(&T) -> U) -> Angle<U> {
+        Angle {
+            cos: f(&self.cos),
+            sin: f(&self.sin),
+        }
+    }
+}
+
+impl<T> CylinderSphere<T> {
+    /// The same configuration with every number converted by `f` (e.g. `Rational` to `f64`, or
+    /// into the radical field or a polynomial ring): the one place that lists the fields.
+    pub fn map<U>(&self, mut f: impl FnMut(&T) -> U) -> CylinderSphere<U> {
+        CylinderSphere {
+            a: f(&self.a),
+            b: f(&self.b),
+            r: f(&self.r),
+            beta: self.beta.map(&mut f),
+            gamma: self.gamma.map(&mut f),
+            center: self.center.map(&mut f),
+            radius: f(&self.radius),
+        }
+    }
 }
 
 impl<T: Ring> CylinderSphere<T> {
@@ -155,7 +205,9 @@ impl<T: Field> CylinderSphere<T> {
         let v = |c: i64, s: i64| self.coefficients_at(&T::from_i64(c), &T::from_i64(s));
         let ((a00, b00), (a10, b10), (a01, b01)) = (v(0, 0), v(1, 0), v(0, 1));
         let ((_, bm0), (_, b0m), (_, b11)) = (v(-1, 0), v(0, -1), v(1, 1));
-        let half = T::from_i64(2).inv().unwrap_or_else(|_| T::zero());
+        let half = T::from_i64(2)
+            .inv()
+            .expect("trig_coefficients needs a field where 2 is invertible");
         let b1 = (b10.sub_ref(&bm0)).mul_ref(&half);
         let b3 = (b10.add_ref(&bm0)).mul_ref(&half) - &b00;
         let b2 = (b01.sub_ref(&b0m)).mul_ref(&half);
@@ -241,7 +293,8 @@ impl<T: Ring> CylinderSphere<T> {
 pub enum Contact {
     /// No common point.
     Disjoint,
-    /// They touch: `|delta - r| = R` (delta the distance of the centre from the axis).
+    /// They touch without crossing: `|delta - r| = R` with `delta != R - r` (delta the distance
+    /// of the centre from the axis; one point), or `delta = 0` and `R = r` (a whole circle).
     Tangent,
     /// They cross along a curve.
     Crossing,
@@ -262,9 +315,11 @@ impl<T: OrderedField> CylinderSphere<T> {
     }
 
     /// The exact decision from the distance of the centre to the axis: the surfaces meet iff the
-    /// distance of the centre from the cylinder surface, `|delta - r|`, is at most `R`. Decided
-    /// with squares only (`delta` itself may be irrational): `delta <= r + R` iff
-    /// `delta^2 <= (r + R)^2`, and `delta >= r - R` iff `r <= R` or `delta^2 >= (r - R)^2`.
+    /// distance of the centre from the cylinder surface, `|delta - r|`, is at most `R`; they touch
+    /// without crossing when it equals `R` (`delta = r + R`, `delta = r - R > 0`) or when the
+    /// sphere sits on the axis with `R = r` (touching along a circle). Decided with squares only
+    /// (`delta` itself may be irrational): `delta <= r + R` iff `delta^2 <= (r + R)^2`, and
+    /// `delta >= r - R` iff `r <= R` or `delta^2 >= (r - R)^2`.
     /// Assumes `r > 0`, `R > 0` and `(cos, sin)` on the unit circle for both angles.
     pub fn contact_by_distance(&self) -> Contact {
         let d2 = self.axis_distance_squared();
@@ -276,14 +331,134 @@ impl<T: OrderedField> CylinderSphere<T> {
             Sign::Zero => return Contact::Tangent,
             Sign::Negative => {}
         }
-        if inner.sign() != Sign::Positive {
-            return Contact::Crossing;
+        match inner.sign() {
+            // R > r: the cylinder passes through the sphere.
+            Sign::Negative => Contact::Crossing,
+            // R = r: crossing unless the centre is on the axis, where the equator touches.
+            Sign::Zero => match d2.sign() {
+                Sign::Zero => Contact::Tangent,
+                _ => Contact::Crossing,
+            },
+            Sign::Positive => match d2.sub_ref(&inner.square()).sign() {
+                Sign::Negative => Contact::Disjoint,
+                Sign::Zero => Contact::Tangent,
+                Sign::Positive => Contact::Crossing,
+            },
         }
-        match d2.sub_ref(&inner.square()).sign() {
-            Sign::Negative => Contact::Disjoint,
-            Sign::Zero => Contact::Tangent,
-            Sign::Positive => Contact::Crossing,
+    }
+
+    /// Where the surfaces touch (have parallel normals at a common point), from `delta` alone
+    /// (see the module doc): one point when `delta^2 = (r + R)^2`, or `delta^2 = (r - R)^2 > 0`;
+    /// a whole circle when `delta = 0` and `R = r`; otherwise none.
+    pub fn touching_by_distance(&self) -> Touching {
+        let d2 = self.axis_distance_squared();
+        let (r, big_r) = (self.r.abs(), self.radius.abs());
+        let outer = r.add_ref(&big_r).square();
+        let inner = r.sub_ref(&big_r).square();
+        if d2.is_zero() && inner.is_zero() {
+            Touching::Circle
+        } else if d2 == outer || (d2 == inner && !d2.is_zero()) {
+            Touching::Point
+        } else {
+            Touching::None
         }
+    }
+}
+
+/// Where a sphere and a cylinder touch (normals parallel at a common point).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Touching {
+    /// Nowhere.
+    None,
+    /// At exactly one point (`delta = r + R`, `delta = |r - R| > 0`).
+    Point,
+    /// Along the whole circle of the cylinder at the height of the centre (`delta = 0`, `R = r`).
+    Circle,
+}
+
+/// Spaeth's numeric examples (section 4 of the paper): the cylinder `r = 5` about the z axis
+/// (`a = b = 0`), the sphere's centre and radius, and the rotations as printed, in radians
+/// (Example 2's `beta = 1`, `gamma = -1` have no rational point of the unit circle, so each caller
+/// says how it takes them: `f64` cos/sin, or a nearby rational point).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SpaethExample {
+    /// 1, 2 or 3.
+    pub number: u32,
+    /// The sphere centre `(d, e, f)`.
+    pub center: [i64; 3],
+    /// The sphere radius `R`.
+    pub radius: i64,
+    /// `beta` in radians as printed.
+    pub beta_radians: f64,
+    /// `gamma` in radians as printed.
+    pub gamma_radians: f64,
+}
+
+/// The cylinder radius of all of Spaeth's examples.
+pub const SPAETH_CYLINDER_RADIUS: i64 = 5;
+
+/// Spaeth's Examples 1, 2 and 3, as printed.
+pub const SPAETH_EXAMPLES: [SpaethExample; 3] = [
+    SpaethExample {
+        number: 1,
+        center: [1, 0, 0],
+        radius: 7,
+        beta_radians: 0.0,
+        gamma_radians: 0.0,
+    },
+    SpaethExample {
+        number: 2,
+        center: [1, 2, 4],
+        radius: 5,
+        beta_radians: 1.0,
+        gamma_radians: -1.0,
+    },
+    SpaethExample {
+        number: 3,
+        center: [6, 7, 8],
+        radius: 1,
+        beta_radians: 0.0,
+        gamma_radians: 0.0,
+    },
+];
+
+impl SpaethExample {
+    /// Example `n` (1, 2 or 3).
+    pub fn get(n: u32) -> Option<&'static SpaethExample> {
+        SPAETH_EXAMPLES.iter().find(|e| e.number == n)
+    }
+
+    /// The configuration over `T`; `angle` turns the printed radians into a point of the unit
+    /// circle (it is called for non-zero angles only: a zero angle is `(1, 0)` exactly).
+    pub fn config<T: Ring>(&self, mut angle: impl FnMut(f64) -> Angle<T>) -> CylinderSphere<T> {
+        let mut rotation = |theta: f64| {
+            if theta == 0.0 {
+                Angle {
+                    cos: T::one(),
+                    sin: T::zero(),
+                }
+            } else {
+                angle(theta)
+            }
+        };
+        let [d, e, f] = self.center;
+        CylinderSphere {
+            a: T::zero(),
+            b: T::zero(),
+            r: T::from_i64(SPAETH_CYLINDER_RADIUS),
+            beta: rotation(self.beta_radians),
+            gamma: rotation(self.gamma_radians),
+            center: Vec3::new(T::from_i64(d), T::from_i64(e), T::from_i64(f)),
+            radius: T::from_i64(self.radius),
+        }
+    }
+
+    /// The configuration in `f64` with the printed radians.
+    pub fn float_config(&self) -> CylinderSphere<f64> {
+        self.config(|theta| Angle {
+            cos: theta.cos(),
+            sin: theta.sin(),
+        })
     }
 }
 
@@ -345,6 +520,75 @@ mod tests {
             cs((1.0, 0.0, 0.0), 3.0).contact_by_distance(),
             Contact::Disjoint
         );
+    }
+
+    #[test]
+    fn on_the_axis_with_equal_radii_the_surfaces_touch_along_a_circle() {
+        // Issue 15: centre (0,0,3) on the axis of the r = 5 cylinder, R = 5. The old decision
+        // answered Crossing (it took r - R <= 0 as "the cylinder passes through the sphere").
+        let one = Angle { cos: 1.0, sin: 0.0 };
+        let cs = |c: (f64, f64, f64), radius: f64| CylinderSphere {
+            a: 0.0,
+            b: 0.0,
+            r: 5.0,
+            beta: one.clone(),
+            gamma: one.clone(),
+            center: Vec3::new(c.0, c.1, c.2),
+            radius,
+        };
+        let on_axis = cs((0.0, 0.0, 3.0), 5.0);
+        assert_ne!(on_axis.contact_by_distance(), Contact::Crossing);
+        assert_eq!(on_axis.contact_by_distance(), Contact::Tangent);
+        assert_eq!(on_axis.touching_by_distance(), Touching::Circle);
+        // Off the axis with R = r: a crossing, no touching.
+        assert_eq!(
+            cs((1.0, 0.0, 3.0), 5.0).contact_by_distance(),
+            Contact::Crossing
+        );
+        assert_eq!(
+            cs((1.0, 0.0, 3.0), 5.0).touching_by_distance(),
+            Touching::None
+        );
+        // R = r + delta: crossing, and the figure eight touches at its crossing point.
+        let eight = cs((2.0, 0.0, 0.0), 7.0);
+        assert_eq!(eight.contact_by_distance(), Contact::Crossing);
+        assert_eq!(eight.touching_by_distance(), Touching::Point);
+        // R = delta - r (outside) and R = r - delta (inside): one point.
+        assert_eq!(
+            cs((8.0, 0.0, 3.0), 3.0).touching_by_distance(),
+            Touching::Point
+        );
+        assert_eq!(
+            cs((2.0, 0.0, 0.0), 3.0).touching_by_distance(),
+            Touching::Point
+        );
+        // On the axis with R != r: no touching (R > r crosses in two circles, R < r is inside).
+        assert_eq!(
+            cs((0.0, 0.0, 0.0), 7.0).touching_by_distance(),
+            Touching::None
+        );
+        assert_eq!(
+            cs((0.0, 0.0, 0.0), 3.0).contact_by_distance(),
+            Contact::Disjoint
+        );
+    }
+
+    #[test]
+    fn map_converts_every_field_and_the_examples_are_as_printed() {
+        let e2 = SpaethExample::get(2).unwrap().float_config();
+        assert_eq!(e2.center, Vec3::new(1.0, 2.0, 4.0));
+        assert_eq!((e2.r, e2.radius), (5.0, 5.0));
+        assert_eq!(e2.beta.cos, 1f64.cos());
+        assert_eq!(e2.gamma.sin, (-1f64).sin());
+        let doubled = e2.map(|x| 2.0 * x);
+        assert_eq!(doubled.center, Vec3::new(2.0, 4.0, 8.0));
+        assert_eq!(doubled.gamma.sin, 2.0 * (-1f64).sin());
+        assert_eq!((doubled.a, doubled.r, doubled.radius), (0.0, 10.0, 10.0));
+        let e1 = SpaethExample::get(1)
+            .unwrap()
+            .config::<f64>(|_| unreachable!("no rotation"));
+        assert_eq!(e1.beta, Angle { cos: 1.0, sin: 0.0 });
+        assert!(SpaethExample::get(4).is_none());
     }
 
     #[test]

@@ -10,11 +10,21 @@
 //!
 //! This is the second, independent decision method; the first is the distance of the centre from
 //! the axis ([`CylinderSphere::contact_by_distance`]). The two must agree.
+//!
+//! The surfaces touch exactly at the multiple roots of the discriminant (module doc of
+//! [`exactcheck_core::cylinder_sphere`]: `D = D' = 0` is `F_t = F_u = 0`, parallel normals at a
+//! common point). Since `1 + tau^2 > 0`, the multiple real roots of `D` on `t != pi` are the
+//! multiple real roots of `P`, found with their multiplicities by the square-free decomposition;
+//! `t = pi` (`tau = infinity`) is a multiple root when `P` loses two degrees (`p4 = p3 = 0`, i.e.
+//! `s^4 P(1/s)` has a double root at `s = 0`). Whether the discriminant is `<= 0` or `>= 0`
+//! around such a root does not matter: an isolated touching point and the crossing point of a
+//! figure eight are both found. `P = 0` identically means every point of the curve `u = -A(t)`
+//! is a touching point: the touching circle.
 
 use crate::univariate::{Bound, Interval, RootInterval, UPoly};
 use crate::Rational;
-use exactcheck_core::cylinder_sphere::{Contact, CylinderSphere};
-use exactcheck_core::{OrderedField, Sign};
+use exactcheck_core::cylinder_sphere::{Contact, CylinderSphere, Touching};
+use exactcheck_core::{OrderedField, Ring, Sign};
 
 /// What the exact analysis found.
 #[derive(Clone, Debug)]
@@ -29,9 +39,27 @@ pub struct Analysis {
     pub contact: Contact,
     /// Connected components of the intersection curve (a touching point counts as one).
     pub components: usize,
-    /// Parameters of isolated touching points (`P = 0` with `P < 0` around), as root intervals;
-    /// `None` in the list stands for `t = pi`.
+    /// Parameters of every touching point (the multiple roots of `P`, whether the curve is
+    /// isolated there or crosses itself), as root intervals; `None` in the list stands for
+    /// `t = pi`. Empty when the surfaces touch along a circle ([`Analysis::touching_circle`]).
     pub tangent_params: Vec<Option<RootInterval>>,
+    /// The discriminant vanishes identically: the surfaces touch along the whole circle
+    /// `u = -A(t)`.
+    pub touching_circle: bool,
+}
+
+impl Analysis {
+    /// Where the surfaces touch, by this method (to compare with
+    /// [`CylinderSphere::touching_by_distance`]): a circle, or as many points as
+    /// [`Analysis::tangent_params`] lists (`Point` for one; the geometry allows at most one).
+    pub fn touching(&self) -> Option<Touching> {
+        match (self.touching_circle, self.tangent_params.len()) {
+            (true, 0) => Some(Touching::Circle),
+            (false, 0) => Some(Touching::None),
+            (false, 1) => Some(Touching::Point),
+            _ => None,
+        }
+    }
 }
 
 /// Analyzes the intersection exactly.
@@ -52,17 +80,19 @@ pub fn analyze(cs: &CylinderSphere<Rational>) -> Analysis {
             contact: Contact::Tangent,
             components: 1,
             tangent_params: Vec::new(),
+            touching_circle: true,
         };
     }
     let nonnegative = p.nonnegative_set();
-    let touching = p.touching_points();
-    let mut tangent_params: Vec<Option<RootInterval>> =
-        touching.iter().map(|r| Some(r.interval.clone())).collect();
-    // t = pi: the tau^4 coefficient; it is an isolated touching point when the discriminant is 0
-    // there and negative on both sides (i.e. for large |tau|).
-    let ends_negative =
-        p.sign_at_pos_inf() == Sign::Negative && p.sign_at_neg_inf() == Sign::Negative;
-    if sign_at_pi == Sign::Zero && (p.degree() < 4) && ends_negative {
+    // Every multiple root of P is a touching point (D = D' = 0), isolated or not.
+    let mut tangent_params: Vec<Option<RootInterval>> = p
+        .roots()
+        .into_iter()
+        .filter(|r| r.multiplicity >= 2)
+        .map(|r| Some(r.interval))
+        .collect();
+    // t = pi is a multiple root when s^4 P(1/s) has a double root at s = 0: p4 = p3 = 0.
+    if p.coeff(4).is_zero() && p.coeff(3).is_zero() {
         tangent_params.push(None);
     }
     let positive = p.positive_somewhere() || sign_at_pi == Sign::Positive;
@@ -104,6 +134,7 @@ pub fn analyze(cs: &CylinderSphere<Rational>) -> Analysis {
         contact,
         components,
         tangent_params,
+        touching_circle: false,
     }
 }
 
@@ -135,10 +166,15 @@ mod tests {
 
     #[test]
     fn spaeth_examples_1_and_3() {
-        let e1 = analyze(&axis_aligned((1, 0, 0), 7));
+        let example = |n| {
+            exactcheck_core::cylinder_sphere::SpaethExample::get(n)
+                .expect("examples 1 and 3")
+                .config::<Rational>(|_| unreachable!("examples 1 and 3 are not rotated"))
+        };
+        let e1 = analyze(&example(1));
         assert_eq!(e1.contact, Contact::Crossing);
         assert_eq!(e1.components, 2);
-        let e3 = analyze(&axis_aligned((6, 7, 8), 1));
+        let e3 = analyze(&example(3));
         assert_eq!(e3.contact, Contact::Disjoint);
         assert_eq!(e3.components, 0);
     }
@@ -163,6 +199,40 @@ mod tests {
     }
 
     #[test]
+    fn touching_is_reported_completely() {
+        // Issue 15: centre (0,0,3) on the axis, R = r = 5. The discriminant vanishes identically:
+        // the surfaces touch along the circle u = 3 (the old answer listed no touching at all).
+        let circle = analyze(&axis_aligned((0, 0, 3), 5));
+        assert_eq!(circle.contact, Contact::Tangent);
+        assert!(circle.touching_circle);
+        assert_eq!(circle.touching(), Some(Touching::Circle));
+        // R = r + delta (centre (-2,0,0), R = 7): u^2 = 20 (1 - cos t), a figure eight whose
+        // crossing point (5, 0, 0), at t = 0, is a touching point (P = 40 tau^2 (1 + tau^2) >= 0
+        // on both sides of the double root; the old code listed only roots with P < 0 around and
+        // so reported none).
+        let eight = analyze(&axis_aligned((-2, 0, 0), 7));
+        assert_eq!(eight.contact, Contact::Crossing);
+        assert_eq!(eight.components, 1);
+        assert_eq!(eight.tangent_params.len(), 1);
+        assert_eq!(
+            eight.tangent_params[0]
+                .as_ref()
+                .and_then(|r| r.exact_value().cloned()),
+            Some(Rational::ZERO)
+        );
+        // The same at t = pi (the issue's example, centre (2,0,0): touching at (-5, 0, 0)).
+        let eight_pi = analyze(&axis_aligned((2, 0, 0), 7));
+        assert_eq!(eight_pi.tangent_params, vec![None]);
+        // A plain crossing and a disjoint pair have none.
+        assert!(analyze(&axis_aligned((1, 0, 0), 7))
+            .tangent_params
+            .is_empty());
+        assert!(analyze(&axis_aligned((6, 7, 8), 1))
+            .tangent_params
+            .is_empty());
+    }
+
+    #[test]
     fn agrees_with_the_distance_method_on_the_examples() {
         for (c, r) in [
             ((1, 0, 0), 7),
@@ -171,9 +241,15 @@ mod tests {
             ((2, 0, 0), 3),
             ((1, 0, 0), 3),
             ((4, 4, 0), 2),
+            ((0, 0, 3), 5),
+            ((2, 0, 0), 7),
+            ((0, 0, 0), 7),
+            ((0, 0, 0), 3),
         ] {
             let cs = axis_aligned(c, r);
-            assert_eq!(analyze(&cs).contact, cs.contact_by_distance(), "{c:?} {r}");
+            let a = analyze(&cs);
+            assert_eq!(a.contact, cs.contact_by_distance(), "{c:?} {r}");
+            assert_eq!(a.touching(), Some(cs.touching_by_distance()), "{c:?} {r}");
         }
     }
 }

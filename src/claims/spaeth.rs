@@ -303,7 +303,9 @@ fn eq11() -> Result<Outcome, String> {
 
 // ------------------------------------------------------------------ examples and sampling
 
-use exactcheck_core::cylinder_sphere::{unit_circle_point, Contact, TrigCoefficients};
+use exactcheck_core::cylinder_sphere::{
+    unit_circle_point, Contact, SpaethExample, TrigCoefficients,
+};
 use exactcheck_exact::cylinder_sphere::{analyze, Analysis};
 use exactcheck_float::sampler::DiscSampler;
 
@@ -321,25 +323,11 @@ fn q(n: i64, d: i64) -> Rational {
     Rational::new(n, d).unwrap_or(Rational::ZERO)
 }
 
-fn example(
-    center: (i64, i64, i64),
-    radius: i64,
-    beta: Angle<Rational>,
-    gamma: Angle<Rational>,
-) -> CylinderSphere<Rational> {
-    CylinderSphere {
-        a: Rational::ZERO,
-        b: Rational::ZERO,
-        r: Rational::from_integer(5),
-        beta,
-        gamma,
-        center: Vec3::new(
-            Rational::from_integer(center.0),
-            Rational::from_integer(center.1),
-            Rational::from_integer(center.2),
-        ),
-        radius: Rational::from_integer(radius),
-    }
+/// Spaeth's Example `n` from the shared fixture, its radians taken as rational rotations.
+fn example(n: u32) -> CylinderSphere<Rational> {
+    SpaethExample::get(n)
+        .expect("Spaeth's examples are 1, 2 and 3")
+        .config(|theta| rational_angle(theta, 1000).0)
 }
 
 fn zero_angle() -> Angle<Rational> {
@@ -409,7 +397,7 @@ fn covers_everything(a: &Analysis) -> bool {
 const EX_METHOD: &str = "exact decision (Sturm on the tau-quartic) + f64 sampling as printed";
 
 fn example1() -> Result<Outcome, String> {
-    let cs = example((1, 0, 0), 7, zero_angle(), zero_angle());
+    let cs = example(1);
     let a = analyze(&cs);
     let coeffs = cs.trig_coefficients();
     let (real, n) = sampled(&cs, 10);
@@ -456,30 +444,17 @@ pub fn rational_angle(theta: f64, max_den: i64) -> (Angle<Rational>, Rational, f
 }
 
 fn example2() -> Result<Outcome, String> {
-    let (beta, tb, db) = rational_angle(1.0, 1000);
-    let (gamma, tg, dg) = rational_angle(-1.0, 1000);
-    let cs = example((1, 2, 4), 5, beta, gamma);
+    let printed = SpaethExample::get(2).expect("Spaeth's example 2");
+    let (_, tb, db) = rational_angle(printed.beta_radians, 1000);
+    let (_, tg, dg) = rational_angle(printed.gamma_radians, 1000);
+    let cs = example(2);
     let a = analyze(&cs);
     let some_not_all = a.contact == Contact::Crossing
         && !(a.nonnegative.len() == 1
             && a.nonnegative[0].to_string().contains("-inf")
             && a.nonnegative[0].to_string().contains("+inf"));
     // The printed configuration in f64 radians.
-    let fcs = CylinderSphere {
-        a: 0.0,
-        b: 0.0,
-        r: 5.0,
-        beta: exactcheck_core::cylinder_sphere::Angle {
-            cos: 1f64.cos(),
-            sin: 1f64.sin(),
-        },
-        gamma: exactcheck_core::cylinder_sphere::Angle {
-            cos: (-1f64).cos(),
-            sin: (-1f64).sin(),
-        },
-        center: Vec3::new(1.0, 2.0, 4.0),
-        radius: 5.0,
-    };
+    let fcs = printed.float_config();
     let s = DiscSampler::new(&fcs);
     let real = (0..36)
         .filter(|k| s.discriminant((*k as f64 * 10.0).to_radians()) >= 0.0)
@@ -500,7 +475,7 @@ fn example2() -> Result<Outcome, String> {
 }
 
 fn example3() -> Result<Outcome, String> {
-    let cs = example((6, 7, 8), 1, zero_angle(), zero_angle());
+    let cs = example(3);
     let a = analyze(&cs);
     let by_distance = cs.contact_by_distance();
     let (real, n) = sampled(&cs, 10);

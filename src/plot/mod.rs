@@ -17,13 +17,12 @@
 
 use crate::Error;
 use clap::{Args, ValueEnum};
-use exactcheck_core::cylinder_sphere::{rotate_x, rotate_y, Angle, CylinderSphere};
+use exactcheck_core::cylinder_sphere::{rotate_x, rotate_y, Angle, CylinderSphere, SpaethExample};
 use exactcheck_core::{Sign, Vec3};
 use exactcheck_exact::cylinder_sphere::analyze;
 use exactcheck_exact::univariate::{Bound, RootInterval, UPoly};
 use exactcheck_exact::Rational;
 use exactcheck_float::sampler::DiscSampler;
-use serde_json::Value;
 use std::f64::consts::TAU;
 use std::io::Write as _;
 use std::process::ExitCode;

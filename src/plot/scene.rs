@@ -40,71 +40,26 @@ pub(super) fn to_f64(q: &Rational) -> f64 {
     q.to_f64()
 }
 
-pub(super) fn float_config(cs: &CylinderSphere<Rational>) -> CylinderSphere<f64> {
-    let angle = |a: &Angle<Rational>| Angle {
-        cos: to_f64(&a.cos),
-        sin: to_f64(&a.sin),
-    };
-    CylinderSphere {
-        a: to_f64(&cs.a),
-        b: to_f64(&cs.b),
-        r: to_f64(&cs.r),
-        beta: angle(&cs.beta),
-        gamma: angle(&cs.gamma),
-        center: cs.center.map(to_f64),
-        radius: to_f64(&cs.radius),
-    }
-}
-
-/// Spaeth's examples (r = 5, axis through the origin), rebuilt from the printed values.
+/// Spaeth's examples (r = 5, axis through the origin), rebuilt from the printed values
+/// (`exactcheck_core::cylinder_sphere::SPAETH_EXAMPLES`).
 pub(super) fn spaeth_scene(n: u32) -> Result<Scene, Error> {
-    let int = Rational::from_integer;
-    let zero = || Angle {
-        cos: Rational::ONE,
-        sin: Rational::ZERO,
+    let ex = SpaethExample::get(n).ok_or_else(|| {
+        Error::Usage(format!(
+            "unknown example {n}: Spaeth's examples are 1, 2 and 3"
+        ))
+    })?;
+    let exact = ex.config(|theta| crate::claims::spaeth::rational_angle(theta, 1000).0);
+    let float = ex.float_config();
+    let figure = match n {
+        1 => Some("Fig. 2"),
+        2 => Some("Fig. 3"),
+        _ => None,
     };
-    let config = |center: (i64, i64, i64), radius: i64, beta, gamma| CylinderSphere {
-        a: Rational::ZERO,
-        b: Rational::ZERO,
-        r: int(5),
-        beta,
-        gamma,
-        center: Vec3::new(int(center.0), int(center.1), int(center.2)),
-        radius: int(radius),
-    };
-    let (exact, float, figure, note) = match n {
-        1 | 3 => {
-            let cs = if n == 1 {
-                config((1, 0, 0), 7, zero(), zero())
-            } else {
-                config((6, 7, 8), 1, zero(), zero())
-            };
-            let f = float_config(&cs);
-            (cs, f, (n == 1).then_some("Fig. 2"), None)
-        }
-        2 => {
-            let (beta, tb, db) = crate::claims::spaeth::rational_angle(1.0, 1000);
-            let (gamma, tg, dg) = crate::claims::spaeth::rational_angle(-1.0, 1000);
-            let cs = config((1, 2, 4), 5, beta, gamma);
-            let mut f = float_config(&cs);
-            f.beta = Angle {
-                cos: 1f64.cos(),
-                sin: 1f64.sin(),
-            };
-            f.gamma = Angle {
-                cos: (-1f64).cos(),
-                sin: (-1f64).sin(),
-            };
-            let note =
-                format!("rational rotations τβ = {tb}, τγ = {tg} (off by {db:.1e}, {dg:.1e} rad)");
-            (cs, f, Some("Fig. 3"), Some(note))
-        }
-        _ => {
-            return Err(Error::Usage(format!(
-                "unknown example {n}: Spaeth's examples are 1, 2 and 3"
-            )))
-        }
-    };
+    let note = (n == 2).then(|| {
+        let (_, tb, db) = crate::claims::spaeth::rational_angle(ex.beta_radians, 1000);
+        let (_, tg, dg) = crate::claims::spaeth::rational_angle(ex.gamma_radians, 1000);
+        format!("rational rotations τβ = {tb}, τγ = {tg} (off by {db:.1e}, {dg:.1e} rad)")
+    });
     Ok(Scene {
         name: format!("Spaeth Example {n}"),
         figure,
@@ -119,35 +74,22 @@ pub(super) fn spaeth_scene(n: u32) -> Result<Scene, Error> {
 /// A `cylinder_sphere` problem file, read as `solve` reads it: in f64 for the curves and exactly
 /// (when the file is exact input) for the markers.
 pub(super) fn file_scene(path: &str) -> Result<Scene, Error> {
-    use crate::solve_cs::{exact_angle, float, float_angle, rational, read};
     let text = crate::solve::read_problem(Some(path))?;
-    let v: Value = serde_json::from_str(&text)
-        .map_err(|e| Error::Input(format!("{path}: malformed JSON: {e}")))?;
-    let obj = v
-        .as_object()
-        .ok_or_else(|| Error::Input(format!("{path}: the problem must be a JSON object")))?;
-    let kind = obj.get("kind").and_then(Value::as_str);
-    if kind != Some("cylinder_sphere") {
+    let in_file = |e: Error| Error::Input(format!("{path}: {e}"));
+    let kind = crate::solve::problem_kind(&text).map_err(in_file)?;
+    if kind != "cylinder_sphere" {
         return Err(Error::Input(format!(
-            "{path}: plot draws problems of kind \"cylinder_sphere\" only (found {})",
-            kind.map_or_else(|| "no kind".to_string(), |k| format!("kind {k:?}"))
+            "{path}: plot draws problems of kind \"cylinder_sphere\" only (found kind {kind:?})"
         )));
     }
-    let fcs = read::<f64>(obj, &|v, p| float(v, p), &mut |v, p| float_angle(v, p))?.cs;
-    let mut notes = Vec::new();
-    let exact = read::<Rational>(obj, &|v, p| rational(v, p), &mut |v, p| {
-        exact_angle(v, p, &mut notes)
-    });
+    let configs = crate::solve::cylinder_sphere::configurations(&text).map_err(in_file)?;
+    let fcs = configs.float;
+    let exact = configs.exact;
+    let notes = configs.approximated_angles;
     let note = (!notes.is_empty()).then(|| {
         let taus: Vec<String> = notes
             .iter()
-            .map(|n| {
-                format!(
-                    "{}: τ = {}",
-                    n["field"].as_str().unwrap_or("?"),
-                    n["rational_tau"].as_str().unwrap_or("?")
-                )
-            })
+            .map(|n| format!("{}: τ = {}", n.field, n.rational_tau))
             .collect();
         format!("radians taken as rational rotations ({})", taus.join(", "))
     });
@@ -160,7 +102,7 @@ pub(super) fn file_scene(path: &str) -> Result<Scene, Error> {
         config: describe(&fcs),
         float: fcs,
         exact: exact
-            .map(|i| exact_info(&i.cs))
+            .map(|cs| exact_info(&cs))
             .map_err(|e| format!("no exact analysis: {e}")),
         note_float: None,
         note_exact: note,

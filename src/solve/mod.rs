@@ -1,0 +1,241 @@
+//! `exactcheck solve [FILE|-]`: one problem in JSON, the answer in JSON (DESIGN.md, "The solve
+//! contract").
+//!
+//! The contract is a set of types: each kind has an input struct read with serde derive
+//! (`deny_unknown_fields`, so a misspelt or extra field is an error naming it; a repeated field
+//! is an error too), numbers read exactly by the deserializers of [`number`], and an answer
+//! struct serialized as the JSON output. `serde_path_to_error` prefixes every error with the
+//! field path (`cylinder.beta.cos: ...`). A UTF-8 byte-order mark at the start is skipped. The
+//! JSON Schema of each kind's input is generated from the same types ([`schema`]) and committed
+//! as `docs/schema/<kind>.json` (a test keeps the files current).
+//!
+//! Adding a kind is one file: a module with an input type, an answer type and an
+//! implementation of [`Kind`], plus its line in [`kinds`].
+
+pub mod cylinder_sphere;
+pub mod number;
+pub mod sphere_interpolation;
+
+use crate::Error;
+use schemars::JsonSchema;
+use serde::de::DeserializeOwned;
+use serde::Serialize;
+use serde_json::Value;
+
+/// How numbers are read and computed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Mode {
+    /// Exact arithmetic; JSON floating literals are refused.
+    Exact,
+    /// f64 arithmetic; JSON floating literals are accepted, non-finite values refused.
+    Float,
+    /// Both, side by side.
+    Both,
+}
+
+/// One kind of problem: its name, its input type (whose schema is published) and its solver.
+pub trait Kind {
+    /// The value of the problem's `"kind"` field.
+    const NAME: &'static str;
+    /// The input as exact mode reads it; its JSON Schema is `docs/schema/<NAME>.json`.
+    type Input: DeserializeOwned + JsonSchema;
+    /// Reads the problem text (the kind is already checked) and answers it.
+    ///
+    /// # Errors
+    /// [`Error::Input`] naming the field for bad input or degenerate geometry.
+    fn answer(text: &str, mode: Mode) -> Result<Value, Error>;
+}
+
+/// A kind of DESIGN.md and, when this version answers it, how.
+#[derive(Clone, Copy)]
+pub struct KindEntry {
+    /// The kind's name.
+    pub name: &'static str,
+    /// The solver, or `None`: recognised, not answered yet.
+    solver: Option<Solver>,
+}
+
+#[derive(Clone, Copy)]
+struct Solver {
+    answer: fn(&str, Mode) -> Result<Value, Error>,
+    schema: fn() -> schemars::Schema,
+}
+
+fn schema_of<T: JsonSchema>() -> schemars::Schema {
+    schemars::schema_for!(T)
+}
+
+fn answered<K: Kind>() -> KindEntry {
+    KindEntry {
+        name: K::NAME,
+        solver: Some(Solver {
+            answer: K::answer,
+            schema: schema_of::<K::Input>,
+        }),
+    }
+}
+
+fn recognised(name: &'static str) -> KindEntry {
+    KindEntry { name, solver: None }
+}
+
+/// The kinds of DESIGN.md, in its order, with the ones this version answers.
+pub fn kinds() -> [KindEntry; 7] {
+    [
+        answered::<sphere_interpolation::SphereInterpolation>(),
+        recognised("ruled_plane"),
+        recognised("ruled_line"),
+        recognised("plane_plane"),
+        answered::<cylinder_sphere::CylinderSphereKind>(),
+        recognised("conic"),
+        recognised("ph_offset"),
+    ]
+}
+
+impl KindEntry {
+    /// Whether this version answers the kind.
+    pub fn is_answered(&self) -> bool {
+        self.solver.is_some()
+    }
+}
+
+fn answered_names() -> String {
+    kinds()
+        .iter()
+        .filter(|k| k.is_answered())
+        .map(|k| k.name)
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+fn find_kind(kind: &str) -> Result<Solver, Error> {
+    let all = kinds();
+    match all.iter().find(|k| k.name == kind) {
+        None => Err(Error::Input(format!(
+            "unknown kind {kind:?} (kinds: {})",
+            all.iter().map(|k| k.name).collect::<Vec<_>>().join(", ")
+        ))),
+        Some(KindEntry { solver: None, .. }) => Err(Error::Input(format!(
+            "kind {kind:?} is not answered by this version yet (answered: {})",
+            answered_names()
+        ))),
+        Some(KindEntry {
+            solver: Some(s), ..
+        }) => Ok(*s),
+    }
+}
+
+/// Reads a problem from a file (`-` or none: standard input).
+///
+/// # Errors
+/// [`Error::Io`] when the file cannot be read.
+pub fn read_problem(path: Option<&str>) -> Result<String, Error> {
+    use std::io::Read;
+    match path {
+        None | Some("-") => {
+            let mut s = String::new();
+            std::io::stdin()
+                .read_to_string(&mut s)
+                .map_err(|source| Error::Io {
+                    path: "-".into(),
+                    source,
+                })?;
+            Ok(s)
+        }
+        Some(p) => std::fs::read_to_string(p).map_err(|source| Error::Io {
+            path: p.into(),
+            source,
+        }),
+    }
+}
+
+/// The text without a leading UTF-8 byte-order mark.
+fn without_bom(text: &str) -> &str {
+    text.strip_prefix('\u{feff}').unwrap_or(text)
+}
+
+/// The problem's `"kind"`.
+///
+/// # Errors
+/// [`Error::Input`] for malformed JSON, a non-object, a missing or non-string kind.
+pub fn problem_kind(text: &str) -> Result<String, Error> {
+    let v: Value = serde_json::from_str(without_bom(text))
+        .map_err(|e| Error::Input(format!("malformed JSON: {e}")))?;
+    let obj = v
+        .as_object()
+        .ok_or_else(|| Error::Input("the problem must be a JSON object".into()))?;
+    Ok(obj
+        .get("kind")
+        .ok_or_else(|| Error::Input("missing field \"kind\"".into()))?
+        .as_str()
+        .ok_or_else(|| Error::Input("\"kind\" must be a string".into()))?
+        .to_string())
+}
+
+/// Reads a problem into its input type; every error is one line naming the field path.
+///
+/// # Errors
+/// [`Error::Input`]: `malformed JSON: ...` for syntax errors, `PATH: ...` for everything the
+/// types refuse (unknown or repeated fields, wrong types, bad numbers).
+pub fn parse<T: DeserializeOwned>(text: &str) -> Result<T, Error> {
+    let mut de = serde_json::Deserializer::from_str(without_bom(text));
+    let value: T = serde_path_to_error::deserialize(&mut de).map_err(|e| {
+        let path = e.path().to_string();
+        let inner = e.into_inner();
+        if inner.is_syntax() || inner.is_eof() {
+            Error::Input(format!("malformed JSON: {inner}"))
+        } else if path == "." {
+            Error::Input(inner.to_string())
+        } else {
+            Error::Input(format!("{path}: {inner}"))
+        }
+    })?;
+    de.end()
+        .map_err(|e| Error::Input(format!("malformed JSON: {e}")))?;
+    Ok(value)
+}
+
+/// A serialized answer as a JSON value.
+pub(crate) fn to_json<T: Serialize>(answer: &T) -> Value {
+    serde_json::to_value(answer).expect("answers hold only strings, numbers, booleans and arrays")
+}
+
+/// Solves one problem given as JSON text.
+///
+/// # Errors
+/// [`Error::Input`] naming the field for malformed JSON, an unknown kind, wrong arity, bad
+/// numbers, division by zero or degenerate geometry.
+pub fn solve(text: &str, mode: Mode) -> Result<Value, Error> {
+    let kind = problem_kind(text)?;
+    let solver = find_kind(&kind)?;
+    (solver.answer)(without_bom(text), mode)
+}
+
+/// The JSON Schema of a kind's input, pretty-printed with a final newline (the content of
+/// `docs/schema/<kind>.json`).
+///
+/// # Errors
+/// [`Error::Usage`] for an unknown kind or one not answered yet (it has no schema).
+pub fn schema(kind: &str) -> Result<String, Error> {
+    let solver = find_kind(kind).map_err(|e| Error::Usage(e.to_string()))?;
+    let text = serde_json::to_string_pretty(&(solver.schema)()).expect("a schema is plain JSON");
+    Ok(text + "\n")
+}
+
+/// An exact scalar the answers can be printed from.
+pub(crate) trait Printable: exactcheck_core::OrderedField + std::fmt::Display {
+    /// The nearest f64, with `-0` printed as `0`.
+    fn approx(&self) -> f64;
+}
+
+impl Printable for exactcheck_exact::Rational {
+    fn approx(&self) -> f64 {
+        self.to_f64() + 0.0
+    }
+}
+
+impl Printable for exactcheck_exact::Radical {
+    fn approx(&self) -> f64 {
+        self.to_f64() + 0.0
+    }
+}

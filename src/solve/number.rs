@@ -1,0 +1,313 @@
+//! Numbers of the `solve` contract, read exactly.
+//!
+//! A number in a problem is a JSON integer (of any size: the workspace enables serde_json's
+//! `arbitrary_precision`, so the digits arrive as written and are parsed exactly, never through
+//! `i64`/`f64`), or a string in the exact syntax, parsed by the workspace's expression parser
+//! (`Radical::from_str`; `"-3/4"`, `"0.1"` = 1/10, `"1/sqrt(2)"`, `"2^-10"`). A JSON floating-point
+//! literal (`0.1`, `1e+23`) is refused in exact mode, because JSON gives it no exact meaning
+//! most readers agree on; the message suggests the string that means the written decimal
+//! exactly (built from the literal's own digits, so it parses).
+//!
+//! The deserializers are hand-written (`Deserialize` impls reading one [`serde_json::Value`])
+//! because the decision depends on *how* the number was written (integer token, floating token,
+//! string), which serde's typed visitors forget; each error they raise is one line, and the
+//! caller's `serde_path_to_error` puts the field path in front of it.
+//!
+//! * [`ExactNumber`]: any exact number (radical field).
+//! * [`RationalNumber`]: an exact rational (irrational input is refused).
+//! * [`FloatNumber`]: `--float` input: integers, floating literals and exact strings, converted
+//!   to the nearest `f64`; non-finite results (`"10^400"`, `1e400`) are refused.
+//! * [`Radians`]: an angle in radians (approximate by nature: floating literals are accepted in
+//!   every mode), finite.
+
+use exactcheck_exact::{Radical, Rational};
+use schemars::{json_schema, JsonSchema, Schema, SchemaGenerator};
+use serde::de::{Deserialize, Deserializer, Error as _};
+use serde_json::Value;
+use std::borrow::Cow;
+
+/// How a number was written in the problem.
+enum Written {
+    /// A JSON integer token, its digits as written.
+    Integer(String),
+    /// A JSON floating-point token (with `.`, `e` or `E`), as written.
+    Float(String),
+    /// A JSON string.
+    Text(String),
+}
+
+/// What a number field expects, for type errors.
+const EXPECTED: &str =
+    "a number: a JSON integer or a string in the exact syntax such as \"-3/4\" or \"sqrt(2)/2\"";
+
+fn written<'de, D: Deserializer<'de>>(d: D) -> Result<Written, D::Error> {
+    match Value::deserialize(d)? {
+        Value::Number(n) => {
+            let t = n.to_string();
+            Ok(if t.contains(['.', 'e', 'E']) {
+                Written::Float(t)
+            } else {
+                Written::Integer(t)
+            })
+        }
+        Value::String(s) => Ok(Written::Text(s)),
+        other => Err(D::Error::custom(format!(
+            "expected {EXPECTED}, found {}",
+            kind_of(&other)
+        ))),
+    }
+}
+
+fn kind_of(v: &Value) -> &'static str {
+    match v {
+        Value::Null => "null",
+        Value::Bool(_) => "a boolean",
+        Value::Number(_) => "a number",
+        Value::String(_) => "a string",
+        Value::Array(_) => "an array",
+        Value::Object(_) => "an object",
+    }
+}
+
+fn parse_radical(text: &str) -> Result<Radical, String> {
+    text.parse::<Radical>()
+        .map_err(|e| format!("{text:?}: {e}"))
+}
+
+/// The exact value of a JSON floating-point literal, written in the exact string syntax: a plain
+/// decimal for moderate exponents (`2.5e-3` -> `0.0025`, `1e+23` -> `100000000000000000000000`),
+/// `digits*10^k` or `digits/10^k` beyond, nested powers past the parser's exponent limit of 1024.
+/// `None` only for exponents beyond about a million, which the syntax cannot write.
+pub fn exact_decimal(literal: &str) -> Option<String> {
+    let (sign, body) = match literal.strip_prefix('-') {
+        Some(rest) => ("-", rest),
+        None => ("", literal),
+    };
+    let (mantissa, exponent) = match body.find(['e', 'E']) {
+        Some(i) => (&body[..i], body[i + 1..].parse::<i64>().ok()?),
+        None => (body, 0),
+    };
+    let (int_part, frac_part) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+    let mut digits = format!("{int_part}{frac_part}");
+    let k = exponent.checked_sub(i64::try_from(frac_part.len()).ok()?)?;
+    let trimmed = digits.trim_start_matches('0');
+    if trimmed.is_empty() {
+        return Some("0".into());
+    }
+    digits = trimmed.to_string();
+    let len = i64::try_from(digits.len()).ok()?;
+    let text = if (0..=30).contains(&k) {
+        format!("{digits}{}", "0".repeat(k as usize))
+    } else if (-30..0).contains(&k) {
+        if len > -k {
+            let cut = (len + k) as usize;
+            format!("{}.{}", &digits[..cut], &digits[cut..])
+        } else {
+            format!("0.{}{digits}", "0".repeat((-k - len) as usize))
+        }
+    } else {
+        let (op, e) = if k > 0 { ('*', k) } else { ('/', -k) };
+        let power = if e <= 1024 {
+            format!("10^{e}")
+        } else if e / 1024 <= 1024 {
+            format!("((10^1024)^{}*10^{})", e / 1024, e % 1024)
+        } else {
+            return None;
+        };
+        format!("{digits}{op}{power}")
+    };
+    Some(format!("{sign}{text}"))
+}
+
+fn float_refused(literal: &str) -> String {
+    match exact_decimal(literal) {
+        Some(s) => format!(
+            "{literal} is a JSON floating-point literal, which exact mode refuses; write the exact value as a string, \"{s}\", or use --float"
+        ),
+        None => format!(
+            "{literal} is a JSON floating-point literal, which exact mode refuses, and its exponent is beyond what the exact syntax can write; use --float"
+        ),
+    }
+}
+
+/// An exact number of the problem (the radical field).
+#[derive(Clone, Debug, PartialEq)]
+pub struct ExactNumber(pub Radical);
+
+impl<'de> Deserialize<'de> for ExactNumber {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        match written(d)? {
+            Written::Integer(t) | Written::Text(t) => {
+                parse_radical(&t).map(ExactNumber).map_err(D::Error::custom)
+            }
+            Written::Float(t) => Err(D::Error::custom(float_refused(&t))),
+        }
+    }
+}
+
+impl JsonSchema for ExactNumber {
+    fn schema_name() -> Cow<'static, str> {
+        "ExactNumber".into()
+    }
+
+    fn json_schema(_: &mut SchemaGenerator) -> Schema {
+        json_schema!({
+            "description": "An exact number: a JSON integer of any size, or a string in the exact syntax (integers, fractions \"-3/4\", decimals \"0.1\" meaning 1/10, \"sqrt(k)\", + - * / ^, parentheses). JSON floating-point literals are refused in exact mode (accepted with --float).",
+            "anyOf": [{"type": "integer"}, {"type": "string"}]
+        })
+    }
+}
+
+/// An exact rational number of the problem.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RationalNumber(pub Rational);
+
+impl<'de> Deserialize<'de> for RationalNumber {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let ExactNumber(x) = ExactNumber::deserialize(d)?;
+        x.to_rational().map(RationalNumber).ok_or_else(|| {
+            D::Error::custom(format!(
+                "{x} is irrational; this kind needs rational input in exact mode (angles as rational points {{cos, sin}} of the unit circle)"
+            ))
+        })
+    }
+}
+
+impl JsonSchema for RationalNumber {
+    fn schema_name() -> Cow<'static, str> {
+        "RationalNumber".into()
+    }
+
+    fn json_schema(_: &mut SchemaGenerator) -> Schema {
+        json_schema!({
+            "description": "An exact rational number: a JSON integer of any size, or a string in the exact syntax whose value is rational (\"-3/4\", \"0.1\", \"sqrt(4)/3\"). JSON floating-point literals are refused in exact mode (accepted with --float).",
+            "anyOf": [{"type": "integer"}, {"type": "string"}]
+        })
+    }
+}
+
+/// The nearest `f64` of a number written in any form; an error if it is not finite.
+fn finite_f64(w: Written) -> Result<f64, String> {
+    let (x, text) = match w {
+        Written::Float(t) => (t.parse::<f64>().map_err(|e| format!("{t}: {e}"))?, t),
+        Written::Integer(t) | Written::Text(t) => (parse_radical(&t)?.to_f64(), t),
+    };
+    if x.is_finite() {
+        Ok(x)
+    } else {
+        Err(format!(
+            "{text} is not a finite f64 (f64 computation cannot represent it); use exact mode"
+        ))
+    }
+}
+
+/// A number of a `--float` problem, as the nearest finite `f64`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FloatNumber(pub f64);
+
+impl<'de> Deserialize<'de> for FloatNumber {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        finite_f64(written(d)?)
+            .map(FloatNumber)
+            .map_err(D::Error::custom)
+    }
+}
+
+impl JsonSchema for FloatNumber {
+    fn schema_name() -> Cow<'static, str> {
+        "FloatNumber".into()
+    }
+
+    fn json_schema(_: &mut SchemaGenerator) -> Schema {
+        json_schema!({
+            "description": "A number for f64 computation: any JSON number or a string in the exact syntax, rounded to the nearest f64, which must be finite.",
+            "anyOf": [{"type": "number"}, {"type": "string"}]
+        })
+    }
+}
+
+/// An angle in radians (any JSON number or an exact string), finite.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Radians(pub f64);
+
+impl<'de> Deserialize<'de> for Radians {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        finite_f64(written(d)?)
+            .map(Radians)
+            .map_err(D::Error::custom)
+    }
+}
+
+impl JsonSchema for Radians {
+    fn schema_name() -> Cow<'static, str> {
+        "Radians".into()
+    }
+
+    fn json_schema(_: &mut SchemaGenerator) -> Schema {
+        json_schema!({
+            "description": "An angle in radians: any JSON number (floating literals accepted in every mode, since radians are approximate) or a string in the exact syntax; it must be finite as an f64.",
+            "anyOf": [{"type": "number"}, {"type": "string"}]
+        })
+    }
+}
+
+/// A fixed number `N` of values of `T`: a JSON array whose wrong length is reported as
+/// "expected N coordinates, found M".
+#[derive(Clone, Debug, PartialEq)]
+pub struct Coords<T, const N: usize>(pub [T; N]);
+
+impl<'de, T: Deserialize<'de>, const N: usize> Deserialize<'de> for Coords<T, N> {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let v = Vec::<T>::deserialize(d)?;
+        let found = v.len();
+        <[T; N]>::try_from(v)
+            .map(Coords)
+            .map_err(|_| D::Error::custom(format!("expected {N} coordinates, found {found}")))
+    }
+}
+
+impl<T: JsonSchema, const N: usize> JsonSchema for Coords<T, N> {
+    fn schema_name() -> Cow<'static, str> {
+        format!("Coords{N}_{}", T::schema_name()).into()
+    }
+
+    fn json_schema(generator: &mut SchemaGenerator) -> Schema {
+        let item = generator.subschema_for::<T>();
+        json_schema!({
+            "type": "array",
+            "items": item,
+            "minItems": N,
+            "maxItems": N
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn float_literal_suggestions_mean_the_written_decimal_and_parse() {
+        for (literal, want) in [
+            ("0.5", "0.5"),
+            ("-2.5e-3", "-0.0025"),
+            ("1e+23", "100000000000000000000000"),
+            ("1E23", "100000000000000000000000"),
+            ("12.50", "12.50"),
+            ("0.0", "0"),
+            ("3e-40", "3/10^40"),
+            ("7e300", "7*10^300"),
+            ("1e5000", "1*((10^1024)^4*10^904)"),
+        ] {
+            let s = exact_decimal(literal).expect("writable");
+            assert_eq!(s, want, "{literal}");
+            let value: Radical = s.parse().unwrap_or_else(|e| panic!("{s}: {e}"));
+            if let Ok(x) = literal.parse::<f64>() {
+                if x.is_finite() && x != 0.0 {
+                    assert!((value.to_f64() - x).abs() <= 1e-12 * x.abs(), "{literal}");
+                }
+            }
+        }
+        assert_eq!(exact_decimal("1e99999999"), None);
+    }
+}
