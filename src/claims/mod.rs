@@ -220,3 +220,42 @@ pub fn table(rows: &[Checked]) -> String {
     }
     s
 }
+
+#[cfg(test)]
+mod verdict_tests {
+    use super::engine::{prove_all, Symbols};
+    use super::*;
+    use exactcheck_exact::poly::Poly;
+    use exactcheck_exact::Rational;
+
+    #[test]
+    fn undecided_is_its_own_verdict_and_never_as_expected() {
+        // Old wrong answer: the engine's Undecided became `fails`.
+        let mut sym = Symbols::new(&["x", "y"]);
+        let x: Poly<Rational> = sym.parse("x").unwrap();
+        let rel: Poly<Rational> = sym.parse("x^2 + y^2").unwrap();
+        let o = prove_all(&sym, &[("x", x.clone())], &[rel], "test");
+        assert_eq!(o.verdict, Verdict::Undecided, "{}", o.evidence);
+        assert_eq!(o.verdict.to_string(), "undecided");
+        let checked = Checked {
+            id: "t",
+            statement: "",
+            expected: Verdict::Undecided,
+            outcome: Ok(o),
+            seconds: 0.0,
+        };
+        assert!(!checked.as_expected());
+        assert_eq!(checked.to_json()["verdict"], "undecided");
+        assert!(table(&[checked]).ends_with("1 undecided"));
+        // Inconsistent relations are undecided too, never proved.
+        let one: Poly<Rational> = sym.parse("1").unwrap();
+        let o = prove_all(&sym, &[("x", x)], &[one], "test");
+        assert_eq!(o.verdict, Verdict::Undecided);
+        assert!(o.evidence.contains("inconsistent"));
+    }
+
+    #[test]
+    fn no_claim_expects_undecided() {
+        assert!(catalogue().iter().all(|c| c.expected != Verdict::Undecided));
+    }
+}

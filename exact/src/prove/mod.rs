@@ -123,7 +123,7 @@ pub enum Decision<C: PointField> {
         /// The normal form of the residual modulo the relations.
         normal_form: Poly<C>,
         /// The point: a value for every variable (by index).
-        point: Vec<(Var, Radical)>,
+        point: RadicalPoint,
         /// The residual's value there (non-zero).
         value: C::Value,
     },
@@ -390,7 +390,7 @@ pub fn decide_in<C: PointField>(
         })
         .unwrap_or_else(|| Decision::Undecided {
             searched: format!(
-                "{SEARCH_ATTEMPTS} exact candidate points (small rationals in the domains{}{}) were checked, none satisfies the relations{} with a non-zero residual",
+                "{SEARCH_ATTEMPTS} exact candidate points (small rationals, inside the domains if any{}{}) were checked, none satisfies the relations{} with a non-zero residual",
                 if pairs.is_empty() { "" } else { ", rational points of the unit circles" },
                 if others.is_empty() && pairs.is_empty() {
                     ""
@@ -403,6 +403,9 @@ pub fn decide_in<C: PointField>(
         }))
 }
 
+/// A point: a value for every variable (by index).
+pub type RadicalPoint = Vec<(Var, Radical)>;
+
 /// The counter-example search of the module documentation: a verified point and the residual's
 /// value there, or `None`.
 fn search<C: PointField>(
@@ -412,7 +415,7 @@ fn search<C: PointField>(
     others: &[Poly<C>],
     dom: &[Domain],
     nvars: usize,
-) -> Option<(Vec<(Var, Radical)>, C::Value)> {
+) -> Option<(RadicalPoint, C::Value)> {
     // Relations as real radical polynomials, for solving (those with non-real coefficients are
     // only checked).
     let real = |r: &Poly<C>| -> Option<Poly<Radical>> {
