@@ -199,7 +199,10 @@ pub fn size_bound(e: &Expr) -> Result<SizeBound, BoundError> {
         }
         ExprKind::Pow(b, x) => {
             let k = constant_exponent(x).ok_or_else(|| {
-                BoundError::Input("exponents must be non-negative integer numbers".into())
+                BoundError::Input(
+                    "exponents must be integer numbers from 0 to 2^64 - 1 in --random mode"
+                        .into(),
+                )
             })?;
             let b = size_bound(b)?;
             SizeBound {
