@@ -32,8 +32,10 @@ pub enum Command {
     /// Check the built-in claim catalogue (every statement of the source papers) and print each
     /// verdict with its method and evidence. Exit 0 when every verdict is the expected one.
     Verify(crate::verify_cmd::VerifyArgs),
-    /// Prove a polynomial identity LHS = RHS, for all values or modulo relations (`--where`):
-    /// `proved`, or `fails` with an exact counter-example and what the sides differ by.
+    /// Prove a polynomial identity LHS = RHS, for all values, modulo relations or inside
+    /// domains (`--where`): `proved`; `fails` with an exact counter-example and what the sides
+    /// differ by; or `undecided` when neither is found. `--random K`: `holds`/`fails`/`undecided`
+    /// with a proved error bound.
     Prove(crate::prove_cmd::ProveArgs),
     /// Solve one problem given in JSON (a file, or `-` / nothing for standard input) and print
     /// the answer in JSON. Kinds and fields: see the README.

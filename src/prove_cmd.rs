@@ -1,16 +1,23 @@
-//! `exactcheck prove 'LHS' ['RHS'] [--where 'A = B' ...]`: the user's own polynomial identities.
+//! `exactcheck prove 'LHS' ['RHS'] [--where 'A = B' | --where 'r > 0' ...] [--random K]`: the
+//! user's own polynomial identities.
 //!
 //! Both sides (and each relation) are parsed in the expression syntax (numbers, `sqrt(k)`,
 //! variables, `+ - * / ^`, parentheses), expanded, and `LHS - RHS` is reduced modulo the
-//! relations (unit circles `c^2 + s^2 = 1` in closed form, others by a Gröbner basis). Exit
-//! status: 0 proved, 1 fails or undecided, 2 bad input.
+//! relations (unit circles `c^2 + s^2 = 1` in closed form, others by a Gröbner basis); see
+//! `exactcheck_exact::prove`. A `--where` with `<`, `<=`, `>` or `>=` is a domain (`r > 0`,
+//! `0 <= t <= 1`, constant bounds only): counter-examples are searched inside the domains.
+//! Inconsistent relations (`1 = 2`; `x = 1` and `x = 2`) are an input error. `--random K`
+//! evaluates instead at K random points modulo a prime drawn at random per run
+//! (`exactcheck_exact::prove::random`, which proves the printed error bound). Exit status:
+//! 0 proved or holds, 1 fails or undecided, 2 bad input.
 
 use crate::Error;
 use clap::Args;
-use exactcheck_core::Field;
 use exactcheck_exact::expr::{parse_expr, Coefficient, Expr};
-use exactcheck_exact::poly::{Poly, Vars};
-use exactcheck_exact::prove::{decide, Decision};
+use exactcheck_exact::poly::{Poly, Var, Vars};
+use exactcheck_exact::prove::{
+    decide_in, DecideError, Decision, Domain, PointField, HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
+};
 use exactcheck_exact::{Radical, Rational};
 use serde_json::json;
 use std::fmt::Display;
@@ -19,24 +26,126 @@ use std::process::ExitCode;
 /// Arguments of `exactcheck prove`.
 #[derive(Debug, Args)]
 pub struct ProveArgs {
-    /// The left-hand side.
+    /// The left-hand side (a leading minus is part of the expression: '-x^2').
+    #[arg(allow_hyphen_values = true)]
     pub lhs: String,
     /// The right-hand side (default 0).
+    #[arg(allow_hyphen_values = true)]
     pub rhs: Option<String>,
-    /// A relation `A = B` the variables satisfy (repeatable), e.g. `c^2 + s^2 = 1`.
-    #[arg(long = "where", value_name = "RELATION")]
+    /// A relation `A = B` the variables satisfy, e.g. `c^2 + s^2 = 1`, or a domain with constant
+    /// bounds, e.g. `r > 0`, `0 <= t <= 1`, `R >= 1/2` (repeatable; one domain per variable).
+    /// Inconsistent relations are an error.
+    #[arg(long = "where", value_name = "RELATION", allow_hyphen_values = true)]
     pub relations: Vec<String>,
-    /// Instead of expanding, evaluate both sides at K random points modulo the prime
-    /// 2^61 - 1 (fast on huge expressions): `holds` with the Schwartz-Zippel error bound, or
-    /// `fails`. Relations must be unit circles `c^2 + s^2 = 1`.
+    /// Instead of expanding, evaluate both sides at K random points (1 to 100000) modulo a prime
+    /// drawn at random from [2^62, 2^63) for this run: `fails` at a non-zero point, `holds`
+    /// when the proved error bound is below 2^-30, else `undecided` with the bound. Relations
+    /// must be unit circles `c^2 + s^2 = 1`; no domains, no sqrt.
     #[arg(long, value_name = "K")]
-    pub random: Option<u32>,
-    /// Seed of the random points of `--random`.
-    #[arg(long, default_value_t = 1)]
-    pub seed: u64,
+    pub random: Option<u64>,
+    /// Seed of `--random` (default: a fresh random seed, printed, per run).
+    #[arg(long)]
+    pub seed: Option<u64>,
     /// Print one JSON object instead of text.
     #[arg(long)]
     pub json: bool,
+}
+
+/// A `--where` argument: a relation or a domain.
+enum Where {
+    Relation(Expr, Expr),
+    Domain(String, Domain),
+}
+
+/// Parses `--where #i` (`what` names it): `A = B`, or a chain `a < v`, `v >= a`, `a <= v < b`
+/// with a variable `v` and constants `a`, `b`.
+fn parse_where(text: &str, what: &str) -> Result<Where, Error> {
+    // Split at the comparison operators.
+    let mut parts = Vec::new();
+    let mut ops = Vec::new();
+    let mut rest = text;
+    while let Some(i) = rest.find(['<', '>']) {
+        parts.push(&rest[..i]);
+        let strict = !rest[i + 1..].starts_with('=');
+        ops.push((rest.as_bytes()[i] == b'<', strict));
+        rest = &rest[i + if strict { 1 } else { 2 }..];
+    }
+    parts.push(rest);
+    if ops.is_empty() {
+        let sides: Vec<&str> = text.split('=').collect();
+        if sides.len() != 2 {
+            return Err(Error::Input(format!(
+                "{what}: {text:?} must have the form 'A = B' (one '='), or a domain such as 'r > 0' or '0 <= t <= 1'"
+            )));
+        }
+        return Ok(Where::Relation(
+            parse(sides[0], &format!("{what} left side"))?,
+            parse(sides[1], &format!("{what} right side"))?,
+        ));
+    }
+    let bad = |why: &str| {
+        Error::Input(format!(
+            "{what}: {text:?} is not a domain ({why}); write e.g. 'r > 0', 'R >= 1/2' or '0 <= t <= 1'"
+        ))
+    };
+    if parts.iter().any(|p| p.contains('=')) {
+        return Err(bad("'=' mixed with '<' or '>'"));
+    }
+    if ops.len() > 2 || (ops.len() == 2 && ops[0].0 != ops[1].0) {
+        return Err(bad("at most two bounds, both '<' or both '>'"));
+    }
+    let exprs = parts
+        .iter()
+        .map(|p| parse(p, what))
+        .collect::<Result<Vec<Expr>, Error>>()?;
+    let var_at: Vec<usize> = exprs
+        .iter()
+        .enumerate()
+        .filter(|(_, e)| matches!(e.kind, exactcheck_exact::expr::ExprKind::Var(_)))
+        .map(|(i, _)| i)
+        .collect();
+    let vi = match (var_at.as_slice(), ops.len()) {
+        ([i], 1) => *i,
+        ([1], 2) => 1,
+        _ => {
+            return Err(bad(
+                "one side must be a single variable, the other(s) constants",
+            ))
+        }
+    };
+    let exactcheck_exact::expr::ExprKind::Var(name) = &exprs[vi].kind else {
+        unreachable!("vi indexes a variable (var_at holds only variables)")
+    };
+    let name = name.clone();
+    let constant = |e: &Expr| -> Result<Rational, Error> {
+        let mut scratch = Vars::new();
+        let p = e
+            .to_poly::<Rational>(&mut scratch)
+            .map_err(|err| Error::Input(format!("{what}: {err}")))?;
+        if !scratch.is_empty() {
+            return Err(bad("bounds must be constants"));
+        }
+        Ok(p.constant_value()
+            .expect("a polynomial without variables is a constant"))
+    };
+    let mut domain = Domain::all();
+    for (k, &(less, strict)) in ops.iter().enumerate() {
+        // parts[k] op parts[k + 1].
+        let (other, var_left) = if k + 1 == vi {
+            (k, false)
+        } else {
+            (k + 1, true)
+        };
+        let c = constant(&exprs[other])?;
+        // var_left: v op c; else c op v. `less` with v on the left is an upper bound.
+        let upper = less == var_left;
+        if upper {
+            domain.upper = Some((c, strict));
+        } else {
+            domain.lower = Some((c, strict));
+        }
+    }
+    Ok(Where::Domain(name, domain))
 }
 
 fn collect_vars(e: &Expr, out: &mut Vec<String>) {
@@ -58,17 +167,36 @@ fn collect_vars(e: &Expr, out: &mut Vec<String>) {
     }
 }
 
-/// `prove --random K`: randomized identity testing modulo p, no expansion.
+/// A fresh seed from the operating system's randomness (the keys of std's `RandomState`).
+fn fresh_seed() -> u64 {
+    use std::hash::{BuildHasher, Hasher};
+    let mut h = std::collections::hash_map::RandomState::new().build_hasher();
+    h.write_u64(0x5EED);
+    h.finish()
+}
+
+/// `prove --random K`: randomized identity testing modulo a random prime, no expansion.
 fn random_test(
     args: &ProveArgs,
-    trials: u32,
+    trials: u64,
     lhs: &Expr,
     rhs: &Expr,
     relations: &[(Expr, Expr)],
+    has_domains: bool,
 ) -> Result<ExitCode, Error> {
     use exactcheck_exact::prove::{random_identity_test, unit_circle_pairs, RandomDecision};
-    if trials == 0 {
-        return Err(Error::Usage("--random needs at least 1 point".into()));
+    let trials = match u32::try_from(trials) {
+        Ok(k) if (1..=MAX_RANDOM_TRIALS).contains(&k) => k,
+        _ => {
+            return Err(Error::Usage(format!(
+                "--random takes 1 to {MAX_RANDOM_TRIALS} points, not {trials}"
+            )))
+        }
+    };
+    if has_domains {
+        return Err(Error::Usage(
+            "--random does not take domains ('r > 0'); run without --random".into(),
+        ));
     }
     let mut vars = Vars::new();
     let mut rels = Vec::new();
@@ -83,37 +211,84 @@ fn random_test(
             "--random supports only unit-circle relations 'c^2 + s^2 = 1'".into(),
         ));
     }
-    let name = |v| vars.name(v).unwrap_or("?").to_string();
+    let name = |v: Var| {
+        vars.name(v)
+            .expect("relation variables are in the table")
+            .to_string()
+    };
     let circles: Vec<(String, String)> = pairs.iter().map(|&(c, s)| (name(c), name(s))).collect();
     let mut names = Vec::new();
     collect_vars(lhs, &mut names);
     collect_vars(rhs, &mut names);
-    let decision = random_identity_test(lhs, rhs, &names, &circles, trials, args.seed)
-        .map_err(Error::Input)?;
+    let seed = args.seed.unwrap_or_else(fresh_seed);
+    let decision =
+        random_identity_test(lhs, rhs, &names, &circles, trials, seed).map_err(Error::Input)?;
+    let report = match &decision {
+        RandomDecision::Holds { report, .. }
+        | RandomDecision::Undecided { report, .. }
+        | RandomDecision::Fails { report, .. } => report,
+    };
     let method = format!(
-        "evaluation at {trials} random points modulo 2^61 - 1 (seed {})",
-        args.seed
+        "evaluation at {trials} random points modulo the random prime p = {} (seed {seed}{})",
+        report.prime,
+        if report.redrawn > 0 {
+            format!(", {} primes dividing a divisor redrawn", report.redrawn)
+        } else {
+            String::new()
+        }
     );
+    let show = |l: f64| {
+        if l == f64::NEG_INFINITY {
+            "0".to_string()
+        } else {
+            // Rounded up, so the printed bound is still a bound.
+            format!("2^{:.1}", (l * 10.0).ceil() / 10.0)
+        }
+    };
+    let mut log2 = None;
     let (verdict, evidence, code) = match &decision {
-        RandomDecision::Holds { degree, log2_bound, .. } => (
-            "holds",
-            format!("LHS - RHS vanishes at all {trials} points; total degree <= {degree}, so a false identity passes with probability <= 2^{log2_bound:.1}"),
-            ExitCode::SUCCESS,
-        ),
-        RandomDecision::Fails { point, value } => (
+        RandomDecision::Holds { bound, log2_bound, .. } => {
+            log2 = Some(*log2_bound);
+            (
+                "holds",
+                format!(
+                    "LHS - RHS vanishes at all {trials} points; with LHS - RHS = F/D ({bound}), a false identity passes with probability <= {} (below the threshold 2^{HOLDS_THRESHOLD_LOG2})",
+                    show(*log2_bound)
+                ),
+                ExitCode::SUCCESS,
+            )
+        }
+        RandomDecision::Undecided { bound, log2_bound, .. } => {
+            log2 = Some(*log2_bound);
+            let why = match bound {
+                Some(b) => format!(
+                    "with LHS - RHS = F/D ({b}) the error bound is {}, not below the threshold 2^{HOLDS_THRESHOLD_LOG2}",
+                    show(*log2_bound)
+                ),
+                None => "the size and degree bounds of LHS - RHS do not fit in 64 bits, so no error bound can be given".to_string(),
+            };
+            (
+                "undecided",
+                format!("LHS - RHS vanishes at all {trials} points, but {why}; use more points (--random up to {MAX_RANDOM_TRIALS}) or exact mode (no --random)"),
+                ExitCode::from(1),
+            )
+        }
+        RandomDecision::Fails { point, value, .. } => (
             "fails",
             format!(
-                "LHS - RHS = {value} (mod p) at {}; run without --random for an exact counter-example",
+                "LHS - RHS = {value} (mod p) at {}, so it is not zero; run without --random for an exact counter-example",
                 point.iter().map(|(v, x)| format!("{v} = {x}")).collect::<Vec<_>>().join(", ")
             ),
             ExitCode::from(1),
         ),
     };
     if args.json {
-        println!(
-            "{}",
-            json!({"verdict": verdict, "method": method, "evidence": evidence})
-        );
+        let mut obj = json!({"verdict": verdict, "method": method, "evidence": evidence,
+            "seed": seed, "prime": report.prime});
+        if let Some(l) = log2 {
+            obj["log2_error_bound"] = if l.is_finite() { json!(l) } else { json!(null) };
+        }
+        println!("{obj}");
     } else {
         println!("{verdict}: {evidence} [{method}]");
     }
@@ -127,8 +302,8 @@ fn parse(text: &str, what: &str) -> Result<Expr, Error> {
 /// Runs `exactcheck prove`.
 ///
 /// # Errors
-/// [`Error::Input`] for a malformed expression or relation, a division by zero or by a
-/// non-constant.
+/// [`Error::Input`] for a malformed expression, relation or domain, a division by zero or by a
+/// non-constant, inconsistent relations; [`Error::Usage`] for a bad `--random` request.
 pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
     let lhs = parse(&args.lhs, "LHS")?;
     let rhs = match &args.rhs {
@@ -136,22 +311,34 @@ pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
         None => None,
     };
     let mut relations = Vec::new();
+    let mut domains: Vec<(String, Domain, String)> = Vec::new();
     for (i, r) in args.relations.iter().enumerate() {
-        let parts: Vec<&str> = r.split('=').collect();
-        if parts.len() != 2 {
-            return Err(Error::Input(format!(
-                "--where #{}: {r:?} must have the form 'A = B' (one '=')",
-                i + 1
-            )));
+        let what = format!("--where #{}", i + 1);
+        match parse_where(r, &what)? {
+            Where::Relation(a, b) => relations.push((a, b)),
+            Where::Domain(v, d) => {
+                if d.is_empty() {
+                    return Err(Error::Input(format!("{what}: the domain {r:?} is empty")));
+                }
+                if domains.iter().any(|(w, _, _)| *w == v) {
+                    return Err(Error::Input(format!(
+                        "{what}: {v} already has a domain (give both bounds in one, e.g. '0 <= {v} <= 1')"
+                    )));
+                }
+                domains.push((v, d, r.clone()));
+            }
         }
-        relations.push((
-            parse(parts[0], &format!("--where #{} left side", i + 1))?,
-            parse(parts[1], &format!("--where #{} right side", i + 1))?,
-        ));
     }
     if let Some(k) = args.random {
         let zero = parse("0", "RHS")?;
-        return random_test(args, k, &lhs, rhs.as_ref().unwrap_or(&zero), &relations);
+        return random_test(
+            args,
+            k,
+            &lhs,
+            rhs.as_ref().unwrap_or(&zero),
+            &relations,
+            !domains.is_empty(),
+        );
     }
     // Radicals need the radical coefficient field; everything else runs over Q.
     let radical = std::iter::once(&args.lhs)
@@ -159,9 +346,9 @@ pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
         .chain(&args.relations)
         .any(|s| s.contains("sqrt"));
     if radical {
-        prove_over::<Radical>(args, &lhs, rhs.as_ref(), &relations)
+        prove_over::<Radical>(args, &lhs, rhs.as_ref(), &relations, &domains)
     } else {
-        prove_over::<Rational>(args, &lhs, rhs.as_ref(), &relations)
+        prove_over::<Rational>(args, &lhs, rhs.as_ref(), &relations, &domains)
     }
 }
 
@@ -170,11 +357,12 @@ fn to_poly<C: Coefficient>(e: &Expr, vars: &mut Vars, what: &str) -> Result<Poly
         .map_err(|err| Error::Input(format!("{what}: {err}")))
 }
 
-fn prove_over<C: Field + Coefficient + Display>(
+fn prove_over<C: PointField + Display>(
     args: &ProveArgs,
     lhs: &Expr,
     rhs: Option<&Expr>,
     relations: &[(Expr, Expr)],
+    domains: &[(String, Domain, String)],
 ) -> Result<ExitCode, Error> {
     let mut vars = Vars::new();
     let l = to_poly::<C>(lhs, &mut vars, "LHS")?;
@@ -188,19 +376,58 @@ fn prove_over<C: Field + Coefficient + Display>(
         let b = to_poly::<C>(b, &mut vars, &format!("--where #{}", i + 1))?;
         rels.push(a - b);
     }
+    let mut doms: Vec<(Var, Domain)> = Vec::new();
+    for (v, d, text) in domains {
+        let var = vars.get(v).ok_or_else(|| {
+            Error::Input(format!(
+                "--where {text:?}: {v} does not occur in the identity or its relations"
+            ))
+        })?;
+        doms.push((var, d.clone()));
+    }
+    let name = |v: Var| {
+        vars.name(v)
+            .expect("the engine reports only variables of the table")
+            .to_string()
+    };
     let residual = l - r;
-    let modulo = if args.relations.is_empty() {
+    let conditions: Vec<&str> = args.relations.iter().map(String::as_str).collect();
+    let modulo = if relations.is_empty() {
         String::new()
     } else {
-        format!(" modulo {}", args.relations.join(", "))
+        let rel_texts: Vec<&str> = conditions
+            .iter()
+            .copied()
+            .filter(|t| !t.contains(['<', '>']))
+            .collect();
+        format!(" modulo {}", rel_texts.join(", "))
     };
-    let decision = decide(&residual, &rels, vars.len());
+    let within = if domains.is_empty() {
+        String::new()
+    } else {
+        let d: Vec<&str> = domains.iter().map(|(_, _, t)| t.as_str()).collect();
+        format!(" for {}", d.join(", "))
+    };
+    let decision = decide_in(&residual, &rels, &doms, vars.len()).map_err(|e| match e {
+        DecideError::Inconsistent => Error::Input(format!(
+            "--where: the relations {} are inconsistent (their Groebner basis contains a non-zero constant): no point satisfies them, so nothing can be proved from them",
+            modulo.trim_start_matches(" modulo ")
+        )),
+        DecideError::EmptyDomain(v) => Error::Input(format!("--where: the domain of {} is empty", name(v))),
+        DecideError::DuplicateDomain(v) => Error::Input(format!("--where: {} has two domains", name(v))),
+        DecideError::UnknownVariable(v) => Error::Input(format!("--where: a domain names variable #{v}, which is not in use")),
+    })?;
     let (verdict, code) = match &decision {
         Decision::Proved { .. } => ("proved", ExitCode::SUCCESS),
         Decision::Fails { .. } => ("fails", ExitCode::from(1)),
         Decision::Undecided { .. } => ("undecided", ExitCode::from(1)),
     };
     let terms = residual.len();
+    let shown = |v: &Var| {
+        residual.variables().contains(v)
+            || rels.iter().any(|r| r.variables().contains(v))
+            || doms.iter().any(|(w, _)| w == v)
+    };
     let evidence = match &decision {
         Decision::Proved { expanded_terms } if *expanded_terms == 0 => {
             "LHS - RHS expands to 0".to_string()
@@ -208,28 +435,36 @@ fn prove_over<C: Field + Coefficient + Display>(
         Decision::Proved { expanded_terms } => {
             format!("LHS - RHS expands to {expanded_terms} terms, which reduce to 0{modulo}")
         }
-        Decision::Fails { normal_form, point, value } => {
+        Decision::Fails {
+            normal_form,
+            point,
+            value,
+        } => {
             let at: Vec<String> = point
                 .iter()
-                .filter(|(v, _)| residual.variables().contains(v) || rels.iter().any(|r| r.variables().contains(v)))
-                .map(|(v, q)| format!("{} = {q}", vars.name(*v).unwrap_or("?")))
+                .filter(|(v, _)| shown(v))
+                .map(|(v, q)| format!("{} = {q}", name(*v)))
                 .collect();
             format!(
-                "at {} LHS - RHS = {value}; LHS - RHS reduces{modulo} to {}, so LHS = RHS + ({})",
+                "at {}{} LHS - RHS = {value}; LHS - RHS reduces{modulo} to {}, so LHS = RHS + ({})",
                 at.join(", "),
+                if relations.is_empty() { "" } else { " (where the relations hold)" },
                 normal_form.display(&vars),
                 normal_form.display(&vars)
             )
         }
-        Decision::Undecided { normal_form } => format!(
-            "LHS - RHS reduces{modulo} to {} (not zero), but no point satisfying the relations was found where it is non-zero",
+        Decision::Undecided {
+            normal_form,
+            searched,
+        } => format!(
+            "LHS - RHS reduces{modulo} to {} (not zero), but no point{within} where it is non-zero was found: {searched}",
             normal_form.display(&vars)
         ),
     };
     if args.json {
         let mut obj = json!({
             "verdict": verdict,
-            "method": format!("symbolic expansion over {}[{}]{}", if std::any::type_name::<C>().contains("Radical") { "Q(sqrt)" } else { "Q" }, vars.names().join(","), modulo),
+            "method": format!("symbolic expansion over {}[{}]{modulo}{within}", if std::any::type_name::<C>().contains("Radical") { "Q(sqrt)" } else { "Q" }, vars.names().join(",")),
             "evidence": evidence,
             "residual_terms": terms,
         });
@@ -241,12 +476,8 @@ fn prove_over<C: Field + Coefficient + Display>(
         {
             obj["point"] = point
                 .iter()
-                .map(|(v, q)| {
-                    (
-                        vars.name(*v).unwrap_or("?").to_string(),
-                        json!(q.to_string()),
-                    )
-                })
+                .filter(|(v, _)| shown(v))
+                .map(|(v, q)| (name(*v), json!(q.to_string())))
                 .collect::<serde_json::Map<_, _>>()
                 .into();
             obj["value"] = json!(value.to_string());

@@ -377,3 +377,188 @@ fn solve_cylinder_sphere_rejects_bad_input() {
     );
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
 }
+
+// ------------------------------------------------------------------------------- prove
+
+fn prove_json(args: &[&str]) -> (Option<i32>, serde_json::Value) {
+    let mut all = vec!["prove"];
+    all.extend_from_slice(args);
+    all.push("--json");
+    let o = exactcheck(&all);
+    let v = serde_json::from_slice(&o.stdout)
+        .unwrap_or_else(|_| panic!("{args:?}: not JSON: {}", stdout(&o)));
+    (o.status.code(), v)
+}
+
+fn stderr_line(args: &[&str]) -> String {
+    let o = exactcheck(args);
+    assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stdout(&o));
+    let err = String::from_utf8_lossy(&o.stderr).into_owned();
+    assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+    assert!(!err.contains("panicked"), "{args:?}: {err}");
+    err
+}
+
+#[test]
+fn prove_random_is_sound_for_multiples_of_the_old_prime() {
+    // Old wrong answers: all three said `holds` (fixed modulus 2^61 - 1).
+    for (lhs, rhs, k) in [
+        ("2305843009213693951*x", "0", "5"),
+        ("x + 2305843009213693951", "x", "20"),
+        ("x^2305843009213693951", "x", "20"),
+        (
+            "2305843009213693951*2305843009213693921*2305843009213693907*x",
+            "0",
+            "3",
+        ),
+        (
+            "4611686018427388039*4611686018427388073*4611686018427388081*4611686018427388091*x",
+            "0",
+            "3",
+        ),
+    ] {
+        let (code, v) = prove_json(&[lhs, rhs, "--random", k]);
+        assert_eq!(v["verdict"], "fails", "{lhs}: {v}");
+        assert_eq!(code, Some(1));
+        let p = v["prime"].as_u64().unwrap();
+        assert!(p >= 1 << 62, "{v}");
+    }
+    // A true identity holds, with the bound, the seed and the prime printed; a seed reproduces.
+    let args = [
+        "(x+y)^3",
+        "x^3 + 3*x^2*y + 3*x*y^2 + y^3",
+        "--random",
+        "3",
+        "--seed",
+        "11",
+    ];
+    let (code, v) = prove_json(&args);
+    assert_eq!(
+        (code, v["verdict"].as_str()),
+        (Some(0), Some("holds")),
+        "{v}"
+    );
+    assert_eq!(v["seed"], 11);
+    assert!(v["log2_error_bound"].as_f64().unwrap() < -30.0);
+    assert_eq!(prove_json(&args).1, v);
+    let text = stdout(&exactcheck(&["prove", "x", "x", "--random", "2"]));
+    assert!(text.starts_with("holds") && text.contains("seed") && text.contains("prime"));
+}
+
+#[test]
+fn prove_random_says_undecided_when_the_bound_is_weak() {
+    // Degree 2^61: one bit per point; 10 points are not enough for `holds`.
+    let (code, v) = prove_json(&["0*x^2305843009213693951", "0", "--random", "10"]);
+    assert_eq!(
+        (code, v["verdict"].as_str()),
+        (Some(1), Some("undecided")),
+        "{v}"
+    );
+    assert!(v["evidence"].as_str().unwrap().contains("more points"));
+    // Bounds beyond 64 bits never wrap.
+    let (code, v) = prove_json(&[
+        "0*((x^4294967296)^4294967296)^4294967296",
+        "0",
+        "--random",
+        "3",
+    ]);
+    assert_eq!(
+        (code, v["verdict"].as_str()),
+        (Some(1), Some("undecided")),
+        "{v}"
+    );
+}
+
+#[test]
+fn prove_random_limits_are_one_line_errors() {
+    // Old: `--random 4294967295` ran four billion trials.
+    assert!(stderr_line(&["prove", "x", "x", "--random", "4294967295"]).contains("100000"));
+    assert!(stderr_line(&["prove", "x", "x", "--random", "0"]).contains("100000"));
+    assert!(stderr_line(&["prove", "sqrt(2)*x", "0", "--random", "3"]).contains("without --random"));
+    stderr_line(&["prove", "x", "0", "--random", "3", "--where", "x > 0"]);
+    stderr_line(&["prove", "x", "0", "--random", "3", "--where", "x*y = 1"]);
+}
+
+#[test]
+fn prove_inconsistent_relations_are_errors() {
+    // Old wrong answers: both said `proved`.
+    assert!(stderr_line(&["prove", "x", "0", "--where", "1 = 2"]).contains("inconsistent"));
+    assert!(
+        stderr_line(&["prove", "x", "0", "--where", "x = 1", "--where", "x = 2"])
+            .contains("inconsistent")
+    );
+}
+
+#[test]
+fn prove_fails_at_a_point_of_the_relations() {
+    // Old: `undecided` for both.
+    let (code, v) = prove_json(&["c^2 + s^2", "1", "--where", "c^2 + s^2 = 2"]);
+    assert_eq!(
+        (code, v["verdict"].as_str()),
+        (Some(1), Some("fails")),
+        "{v}"
+    );
+    let c: exactcheck_exact::Radical = v["point"]["c"].as_str().unwrap().parse().unwrap();
+    let s: exactcheck_exact::Radical = v["point"]["s"].as_str().unwrap().parse().unwrap();
+    use exactcheck_core::Ring;
+    assert_eq!(c.square() + s.square(), exactcheck_exact::Radical::from(2));
+    assert_eq!(v["value"], "1");
+    let (code, v) = prove_json(&["x", "1", "--where", "x = 2"]);
+    assert_eq!(
+        (code, v["verdict"].as_str()),
+        (Some(1), Some("fails")),
+        "{v}"
+    );
+    assert_eq!(v["point"]["x"], "2");
+    // No real point where the residual is non-zero: undecided, saying what was searched.
+    let (code, v) = prove_json(&["x", "0", "--where", "x^2 + y^2 = 0"]);
+    assert_eq!(
+        (code, v["verdict"].as_str()),
+        (Some(1), Some("undecided")),
+        "{v}"
+    );
+    assert!(
+        v["evidence"].as_str().unwrap().contains("searched")
+            || v["evidence"].as_str().unwrap().contains("checked")
+    );
+}
+
+#[test]
+fn prove_domains_keep_counter_examples_inside() {
+    let (code, v) = prove_json(&["r + R", "0", "--where", "r > 0", "--where", "R >= 1/2"]);
+    assert_eq!(
+        (code, v["verdict"].as_str()),
+        (Some(1), Some("fails")),
+        "{v}"
+    );
+    let r: exactcheck_exact::Rational = v["point"]["r"].as_str().unwrap().parse().unwrap();
+    let big_r: exactcheck_exact::Rational = v["point"]["R"].as_str().unwrap().parse().unwrap();
+    assert!(r > exactcheck_exact::Rational::ZERO);
+    assert!(big_r >= exactcheck_exact::Rational::new(1, 2).unwrap());
+    let (_, v) = prove_json(&["t - t^2", "0", "--where", "0 <= t <= 1"]);
+    let t: exactcheck_exact::Rational = v["point"]["t"].as_str().unwrap().parse().unwrap();
+    assert!(t > exactcheck_exact::Rational::ZERO && t < exactcheck_exact::Rational::ONE);
+    // x^2 = 4 with x < 0 fails at -2 only.
+    let (_, v) = prove_json(&["x", "2", "--where", "x^2 = 4", "--where", "x < 0"]);
+    assert_eq!(v["point"]["x"], "-2", "{v}");
+    // Bad domains: one line, status 2.
+    for bad in ["2 < x < 1", "x > y", "x >= 1 = 2", "0 < x > 1", "x < z"] {
+        stderr_line(&["prove", "x", "0", "--where", bad]);
+    }
+    stderr_line(&["prove", "x", "0", "--where", "x > 0", "--where", "x < 1"]);
+}
+
+#[test]
+fn prove_accepts_a_leading_minus() {
+    // Old: clap took '-x^2' for an option and printed a usage error.
+    let o = exactcheck(&["prove", "-x^2", "-(x^2)"]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert!(stdout(&o).starts_with("proved"));
+    let o = exactcheck(&["prove", "x", "0", "--where", "-x = 1"]);
+    assert!(stdout(&o).starts_with("fails"), "{}", stdout(&o));
+}

@@ -5,7 +5,8 @@
 //!   num-rational baseline it is measured and cross-checked against;
 //! * [`Radical`], square-root extensions of Q with exact sign, and [`ComplexRadical`] with
 //!   `sqrt(-1)`;
-//! * [`ModP`], integers modulo the Mersenne prime 2^61 - 1, for randomized identity tests;
+//! * [`ModP`], integers modulo the Mersenne prime 2^61 - 1, and [`modp::PrimeField`], integers
+//!   modulo a prime chosen at run time (randomized identity tests, [`prove::random`]);
 //! * sparse multivariate polynomials ([`poly`]) and their expression syntax ([`expr`]).
 #![warn(missing_docs)]
 

@@ -18,6 +18,18 @@
 //!
 //! Random points come from the workspace's one seeded generator, [`exactcheck_core::Rng`], so
 //! that every randomized verdict is reproducible from its seed.
+//!
+//! # A prime chosen at random: [`PrimeField`]
+//! A fixed modulus is unsound for `prove --random`: `(2^61 - 1) x` is zero modulo `2^61 - 1`
+//! although it is not zero over Q. [`PrimeField`] is `Z/pZ` for a modulus chosen at run time,
+//! [`PrimeField::random_62`] draws it uniformly from the primes in `[2^62, 2^63)` (uniform
+//! candidates, rejected unless prime: the accepted value is uniform over the primes), and
+//! [`is_prime_u64`] is a deterministic Miller–Rabin test (the first twelve primes as bases are a
+//! proof of primality for every `n < 3.3 · 10^24`, Sorenson and Webster 2015). Elements are plain
+//! `u64` residues in `0..p`, and the arithmetic lives on the context value (`field.mul(a, b)`):
+//! with `p < 2^63` a sum of two residues fits in a `u64` and a product in a `u128`. It is written
+//! here rather than taken from a crate because the workspace needs only these few operations and
+//! must control the sampling to state its error bound (see `prove::random`).
 
 use crate::rational::Rational;
 use exactcheck_core::{Field, Ring, Rng, ZeroDivisor};
@@ -369,9 +381,245 @@ impl fmt::Debug for ModP {
     }
 }
 
+// ------------------------------------------------------------------ runtime prime modulus
+
+/// `n` is prime (deterministic for every `u64`: Miller–Rabin to the bases 2, 3, ..., 37).
+pub fn is_prime_u64(n: u64) -> bool {
+    const BASES: [u64; 12] = [2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37];
+    if n < 2 {
+        return false;
+    }
+    for p in BASES {
+        if n % p == 0 {
+            return n == p;
+        }
+    }
+    let mulm = |a: u64, b: u64| (a as u128 * b as u128 % n as u128) as u64;
+    let powm = |mut b: u64, mut e: u64| {
+        let mut acc = 1u64;
+        while e > 0 {
+            if e & 1 == 1 {
+                acc = mulm(acc, b);
+            }
+            b = mulm(b, b);
+            e >>= 1;
+        }
+        acc
+    };
+    let s = (n - 1).trailing_zeros();
+    let d = (n - 1) >> s;
+    'bases: for a in BASES {
+        let mut x = powm(a, d);
+        if x == 1 || x == n - 1 {
+            continue;
+        }
+        for _ in 1..s {
+            x = mulm(x, x);
+            if x == n - 1 {
+                continue 'bases;
+            }
+        }
+        return false;
+    }
+    true
+}
+
+/// The prime field `Z/pZ` for a modulus `p` chosen at run time (an odd prime below `2^63`).
+/// Elements are `u64` residues in `0..p`; the operations are methods of the field value.
+///
+/// ```
+/// use exactcheck_exact::modp::PrimeField;
+/// let f = PrimeField::new(1_000_000_007).unwrap();
+/// let x = f.from_i64(-3);
+/// assert_eq!(f.mul(x, f.inv(x).unwrap()), 1);
+/// assert!(PrimeField::new(1_000_000_008).is_none());
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PrimeField {
+    p: u64,
+}
+
+impl PrimeField {
+    /// The field of an odd prime `p < 2^63`; `None` otherwise.
+    pub fn new(p: u64) -> Option<PrimeField> {
+        (p > 2 && p < 1 << 63 && is_prime_u64(p)).then_some(PrimeField { p })
+    }
+
+    /// A prime drawn uniformly from the primes in `[2^62, 2^63)`: uniform 62-bit offsets are
+    /// drawn until one gives a prime, so every prime of the range is equally likely.
+    pub fn random_62(rng: &mut Rng) -> PrimeField {
+        loop {
+            let candidate = (1u64 << 62) | (rng.next_u64() >> 2);
+            if is_prime_u64(candidate) {
+                return PrimeField { p: candidate };
+            }
+        }
+    }
+
+    /// The modulus `p`.
+    pub fn modulus(&self) -> u64 {
+        self.p
+    }
+
+    /// A uniformly random element.
+    pub fn random(&self, rng: &mut Rng) -> u64 {
+        rng.below(self.p)
+    }
+
+    /// `a + b`.
+    #[inline]
+    pub fn add(&self, a: u64, b: u64) -> u64 {
+        let s = a + b; // < 2^64 since both are below p < 2^63
+        if s >= self.p {
+            s - self.p
+        } else {
+            s
+        }
+    }
+
+    /// `a - b`.
+    #[inline]
+    pub fn sub(&self, a: u64, b: u64) -> u64 {
+        if a >= b {
+            a - b
+        } else {
+            a + (self.p - b)
+        }
+    }
+
+    /// `-a`.
+    #[inline]
+    pub fn neg(&self, a: u64) -> u64 {
+        if a == 0 {
+            0
+        } else {
+            self.p - a
+        }
+    }
+
+    /// `a b`.
+    #[inline]
+    pub fn mul(&self, a: u64, b: u64) -> u64 {
+        (a as u128 * b as u128 % self.p as u128) as u64
+    }
+
+    /// `a^e`.
+    pub fn pow(&self, mut a: u64, mut e: u64) -> u64 {
+        let mut acc = 1 % self.p;
+        while e > 0 {
+            if e & 1 == 1 {
+                acc = self.mul(acc, a);
+            }
+            a = self.mul(a, a);
+            e >>= 1;
+        }
+        acc
+    }
+
+    /// The inverse, or [`ZeroDivisor`] for zero.
+    pub fn inv(&self, a: u64) -> Result<u64, ZeroDivisor> {
+        if a == 0 {
+            return Err(ZeroDivisor);
+        }
+        // Extended Euclid; r_i ≡ t_i a (mod p), all magnitudes below p < 2^63.
+        let (mut r0, mut r1) = (self.p as i128, a as i128);
+        let (mut t0, mut t1) = (0i128, 1i128);
+        while r1 != 0 {
+            let q = r0 / r1;
+            (r0, r1) = (r1, r0 - q * r1);
+            (t0, t1) = (t1, t0 - q * t1);
+        }
+        debug_assert_eq!(r0, 1);
+        Ok(t0.rem_euclid(self.p as i128) as u64)
+    }
+
+    /// The residue of a signed integer.
+    pub fn from_i64(&self, n: i64) -> u64 {
+        let r = n.unsigned_abs() % self.p;
+        if n < 0 {
+            self.neg(r)
+        } else {
+            r
+        }
+    }
+
+    /// The residue of a big integer.
+    pub fn from_bigint(&self, n: &BigInt) -> u64 {
+        let r = (n.magnitude() % self.p)
+            .iter_u64_digits()
+            .next()
+            .unwrap_or(0);
+        if n.sign() == BigSign::Minus {
+            self.neg(r)
+        } else {
+            r
+        }
+    }
+
+    /// The image `n d^-1` of `n / d`.
+    ///
+    /// # Errors
+    /// [`ZeroDivisor`] when `p` divides the denominator.
+    pub fn from_rational(&self, q: &Rational) -> Result<u64, ZeroDivisor> {
+        let n = self.from_bigint(&q.numer());
+        if q.is_integer() {
+            return Ok(n);
+        }
+        Ok(self.mul(n, self.inv(self.from_bigint(&q.denom()))?))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn miller_rabin_against_trial_division() {
+        let trial = |n: u64| n >= 2 && (2..).take_while(|d| d * d <= n).all(|d| n % d != 0);
+        for n in 0..5000u64 {
+            assert_eq!(is_prime_u64(n), trial(n), "{n}");
+        }
+        assert!(is_prime_u64(P));
+        assert!(is_prime_u64((1 << 62) + 135)); // the smallest prime above 2^62
+        assert!(!is_prime_u64(3_215_031_751)); // strong pseudoprime to 2, 3, 5, 7
+        assert!(!is_prime_u64(3_825_123_056_546_413_051)); // spsp to bases 2..23
+        assert!(!is_prime_u64(P * 3));
+    }
+
+    #[test]
+    fn prime_field_arithmetic() {
+        let mut rng = Rng::new(5);
+        let f = PrimeField::random_62(&mut rng);
+        let p = f.modulus();
+        assert!((1u64 << 62..1u64 << 63).contains(&p) && is_prime_u64(p));
+        let a = p - 1;
+        assert_eq!(f.mul(a, a), 1);
+        assert_eq!(f.add(a, a), p - 2);
+        assert_eq!(f.sub(1, 2), p - 1);
+        assert_eq!(f.pow(3, p - 1), 1);
+        let x = f.random(&mut rng);
+        if x != 0 {
+            assert_eq!(f.mul(x, f.inv(x).unwrap()), 1);
+        }
+        assert_eq!(f.inv(0), Err(ZeroDivisor));
+        let big = BigInt::from(p) * BigInt::from(p) - 5;
+        assert_eq!(f.from_bigint(&big), p - 5);
+        assert_eq!(f.from_bigint(&-big), 5);
+        assert_eq!(
+            f.from_i64(i64::MIN),
+            ((i64::MIN as i128).rem_euclid(p as i128)) as u64
+        );
+        let bad = Rational::from(num_rational::BigRational::new(1.into(), BigInt::from(p)));
+        assert_eq!(f.from_rational(&bad), Err(ZeroDivisor));
+        let half = Rational::new(1, 2).unwrap();
+        assert_eq!(
+            f.add(
+                f.from_rational(&half).unwrap(),
+                f.from_rational(&half).unwrap()
+            ),
+            1
+        );
+    }
 
     #[test]
     fn reduction_edges() {

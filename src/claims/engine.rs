@@ -2,10 +2,10 @@
 //! polynomials, and identities decided by the proof engine of `exactcheck-exact`.
 
 use super::{Outcome, Verdict};
-use exactcheck_core::{Field, Hom4, Ring};
+use exactcheck_core::{Hom4, Ring};
 use exactcheck_exact::expr::{parse_poly, Coefficient};
-use exactcheck_exact::poly::{Poly, Vars};
-use exactcheck_exact::prove::{decide, Decision};
+use exactcheck_exact::poly::{Poly, Var, Vars};
+use exactcheck_exact::prove::{decide_in, Decision, Domain, PointField};
 use exactcheck_exact::Rational;
 use std::fmt::Display;
 
@@ -52,22 +52,56 @@ impl Symbols {
 }
 
 /// Decides that every residual is zero (modulo `relations`): `proved` when all expand to zero,
-/// `fails` with the counter-example of the first that does not.
-pub fn prove_all<C: Field + Coefficient + Display>(
+/// `fails` with the counter-example of the first that does not, `undecided` when the engine
+/// finds neither (or the relations are inconsistent). [`prove_all_in`] without domains.
+pub fn prove_all<C: PointField + Display>(
     sym: &Symbols,
     residuals: &[(&str, Poly<C>)],
     relations: &[Poly<C>],
     method: &str,
 ) -> Outcome {
+    prove_all_in(sym, residuals, relations, &[], method)
+}
+
+/// [`prove_all`] for the variables' values in `domains` (e.g. radii `> 0`): counter-examples are
+/// searched inside the domains only.
+pub fn prove_all_in<C: PointField + Display>(
+    sym: &Symbols,
+    residuals: &[(&str, Poly<C>)],
+    relations: &[Poly<C>],
+    domains: &[(Var, Domain)],
+    method: &str,
+) -> Outcome {
+    let name = |v: Var| {
+        sym.vars
+            .name(v)
+            .expect("the engine reports only variables of the context")
+    };
+    let undecided = |evidence: String| Outcome {
+        verdict: Verdict::Undecided,
+        method: method.into(),
+        evidence,
+    };
     let mut terms = 0;
     for (what, r) in residuals {
-        match decide(r, relations, sym.vars.len()) {
+        let decision = match decide_in(r, relations, domains, sym.vars.len()) {
+            Ok(d) => d,
+            Err(e) => return undecided(format!("{what}: {e}")),
+        };
+        match decision {
             Decision::Proved { expanded_terms } => terms += expanded_terms,
-            Decision::Fails { normal_form, point, value } => {
+            Decision::Fails {
+                normal_form,
+                point,
+                value,
+            } => {
                 let at: Vec<String> = point
                     .iter()
-                    .filter(|(v, _)| r.variables().contains(v))
-                    .map(|(v, q)| format!("{} = {q}", sym.vars.name(*v).unwrap_or("?")))
+                    .filter(|(v, _)| {
+                        r.variables().contains(v)
+                            || relations.iter().any(|q| q.variables().contains(v))
+                    })
+                    .map(|(v, q)| format!("{} = {q}", name(*v)))
                     .collect();
                 return Outcome {
                     verdict: Verdict::Fails,
@@ -79,15 +113,14 @@ pub fn prove_all<C: Field + Coefficient + Display>(
                     ),
                 };
             }
-            Decision::Undecided { normal_form } => {
-                return Outcome {
-                    verdict: Verdict::Fails,
-                    method: method.into(),
-                    evidence: format!(
-                        "{what} reduces to {} (not in the ideal of the relations; no real counter-example searched)",
-                        normal_form.display(&sym.vars)
-                    ),
-                }
+            Decision::Undecided {
+                normal_form,
+                searched,
+            } => {
+                return undecided(format!(
+                    "{what} reduces to {} (not in the ideal of the relations), but no real counter-example was found: {searched}",
+                    normal_form.display(&sym.vars)
+                ))
             }
         }
     }

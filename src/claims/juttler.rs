@@ -12,7 +12,6 @@ use exactcheck_core::quadric::{
     sphere_form, tau, theta, theta_preimage_point,
 };
 use exactcheck_core::{det4, Hom4, Ring};
-use exactcheck_exact::expr::Coefficient;
 use exactcheck_exact::poly::Poly;
 use exactcheck_exact::{ComplexRadical, Rational};
 
@@ -101,7 +100,7 @@ where
         .collect())
 }
 
-fn decide<C: exactcheck_core::Field + Coefficient + std::fmt::Display>(
+fn decide<C: exactcheck_exact::prove::PointField + std::fmt::Display>(
     sym: &Symbols,
     residuals: &[(String, Poly<C>)],
     relations: &[Poly<C>],

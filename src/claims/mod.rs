@@ -5,7 +5,9 @@
 //! * **proved** — the residual expanded to zero over polynomials (modulo the declared relations);
 //! * **holds** — zero on exact instances and/or random evaluations modulo a prime, with the
 //!   error bound stated in the evidence;
-//! * **fails** — an exact counter-example, the residual's value there, and the corrected form.
+//! * **fails** — an exact counter-example, the residual's value there, and the corrected form;
+//! * **undecided** — neither (e.g. a non-zero normal form modulo relations without a real point
+//!   found): reported as such, never counted as expected.
 //!
 //! One module per source document.
 
@@ -39,6 +41,9 @@ pub enum Verdict {
     Holds,
     /// False: an exact counter-example was found.
     Fails,
+    /// Not decided: the computation found neither a proof nor a counter-example (the evidence
+    /// says what was tried). Never an expected verdict of the catalogue.
+    Undecided,
 }
 
 impl fmt::Display for Verdict {
@@ -47,6 +52,7 @@ impl fmt::Display for Verdict {
             Verdict::Proved => "proved",
             Verdict::Holds => "holds",
             Verdict::Fails => "fails",
+            Verdict::Undecided => "undecided",
         })
     }
 }
@@ -100,7 +106,7 @@ pub struct Checked {
 impl Checked {
     /// Whether the verdict is the one the catalogue expects.
     pub fn as_expected(&self) -> bool {
-        matches!(&self.outcome, Ok(o) if o.verdict == self.expected)
+        matches!(&self.outcome, Ok(o) if o.verdict == self.expected && o.verdict != Verdict::Undecided)
     }
 
     /// The JSON object of DESIGN.md (`id`, `verdict`, `method`, `evidence`, plus more).
@@ -200,7 +206,12 @@ pub fn table(rows: &[Checked]) -> String {
     }
     let ok = rows.iter().filter(|r| r.as_expected()).count();
     s += &format!("{} claims, {} as expected", rows.len(), ok);
-    for v in [Verdict::Proved, Verdict::Holds, Verdict::Fails] {
+    for v in [
+        Verdict::Proved,
+        Verdict::Holds,
+        Verdict::Fails,
+        Verdict::Undecided,
+    ] {
         let n = rows
             .iter()
             .filter(|r| matches!(&r.outcome, Ok(o) if o.verdict == v))
@@ -208,4 +219,43 @@ pub fn table(rows: &[Checked]) -> String {
         s += &format!(", {n} {v}");
     }
     s
+}
+
+#[cfg(test)]
+mod verdict_tests {
+    use super::engine::{prove_all, Symbols};
+    use super::*;
+    use exactcheck_exact::poly::Poly;
+    use exactcheck_exact::Rational;
+
+    #[test]
+    fn undecided_is_its_own_verdict_and_never_as_expected() {
+        // Old wrong answer: the engine's Undecided became `fails`.
+        let mut sym = Symbols::new(&["x", "y"]);
+        let x: Poly<Rational> = sym.parse("x").unwrap();
+        let rel: Poly<Rational> = sym.parse("x^2 + y^2").unwrap();
+        let o = prove_all(&sym, &[("x", x.clone())], &[rel], "test");
+        assert_eq!(o.verdict, Verdict::Undecided, "{}", o.evidence);
+        assert_eq!(o.verdict.to_string(), "undecided");
+        let checked = Checked {
+            id: "t",
+            statement: "",
+            expected: Verdict::Undecided,
+            outcome: Ok(o),
+            seconds: 0.0,
+        };
+        assert!(!checked.as_expected());
+        assert_eq!(checked.to_json()["verdict"], "undecided");
+        assert!(table(&[checked]).ends_with("1 undecided"));
+        // Inconsistent relations are undecided too, never proved.
+        let one: Poly<Rational> = sym.parse("1").unwrap();
+        let o = prove_all(&sym, &[("x", x)], &[one], "test");
+        assert_eq!(o.verdict, Verdict::Undecided);
+        assert!(o.evidence.contains("inconsistent"));
+    }
+
+    #[test]
+    fn no_claim_expects_undecided() {
+        assert!(catalogue().iter().all(|c| c.expected != Verdict::Undecided));
+    }
 }

@@ -1,0 +1,618 @@
+//! The proof engine: decide a polynomial identity `residual = 0` exactly, for all values of its
+//! variables, or for all values satisfying declared relations and lying in declared domains.
+//!
+//! * **proved** — the residual expands to the zero polynomial, or its normal form modulo a
+//!   Gröbner basis of the relations is zero (then it vanishes wherever the relations hold, in
+//!   particular inside any domains);
+//! * **fails** — the normal form is non-zero and an exact real point is found that lies in the
+//!   domains, where every relation vanishes and the residual does not; the point (rational, or in
+//!   the square-root field [`Radical`]), the residual there and the normal form (what the two
+//!   sides really differ by) are reported;
+//! * **undecided** — the normal form is non-zero but the search found no such point. A non-zero
+//!   normal form only says "not in the ideal of the relations", which is not always "false at
+//!   some real point in the domains" (`x^2 + y^2 = 0` has the single real point 0, a domain may
+//!   exclude every point where the residual is non-zero), so this is reported, never a verdict.
+//!
+//! Inconsistent relations (the reduced Gröbner basis contains a non-zero constant, i.e. the
+//! relations have no common complex point, e.g. `1 = 2` or `x = 1, x = 2`) and malformed domains
+//! (empty, a variable out of range or given twice) are a [`DecideError`]: anything would follow
+//! from them, so nothing is decided.
+//!
+//! # The counter-example search
+//! Each attempt builds a point variable by variable, every value exact:
+//! 1. every variable gets a small rational drawn from its domain (`n/d`, `|n| <= 9`, `d <= 4`,
+//!    without a domain; else from the box, see [`Domain`]);
+//! 2. on even attempts (and always when all relations are unit circles), each unit circle
+//!    `c^2 + s^2 = 1` is given the rational point `((1 - tau^2)/(1 + tau^2), 2 tau/(1 + tau^2))`
+//!    for a small rational `tau`; on odd attempts the circles are treated like other relations;
+//! 3. the remaining relations are solved one variable at a time: a relation whose only
+//!    unassigned variable is `v`, after substituting the values fixed so far, is a univariate
+//!    polynomial; its roots are taken exactly — linear roots, real roots of quadratics
+//!    (`(-b ± sqrt(b^2 - 4ac)) / 2a`, in [`Radical`] when the discriminant is rational) and
+//!    rational roots of higher degrees with rational coefficients (isolated by
+//!    [`crate::univariate`]) — and one root inside `v`'s domain is chosen at random; when no
+//!    relation is univariate, the next variable of some relation keeps its drawn value;
+//! 4. the point is then *verified* exactly: every relation evaluates to zero, every value lies
+//!    in its domain, and the residual (not the normal form) is non-zero. Only a verified point is
+//!    reported.
+//!
+//! The search is deterministic (fixed seed) so that verdicts are reproducible; it makes
+//! [`SEARCH_ATTEMPTS`] attempts.
+
+pub mod random;
+
+pub use random::{
+    random_identity_test, size_bound, RandomDecision, RandomReport, SizeBound,
+    HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
+};
+
+use crate::expr::Coefficient;
+use crate::poly::{groebner, Poly, Var};
+use crate::univariate::UPoly;
+use crate::{ComplexRadical, Radical, Rational};
+use exactcheck_core::{Field, Ring, Rng};
+use std::fmt;
+
+/// Attempts of the counter-example search.
+pub const SEARCH_ATTEMPTS: usize = 200;
+
+/// A coefficient field the counter-example search can evaluate at real points with coordinates
+/// in [`Radical`]: the values of its polynomials there lie in [`PointField::Value`].
+pub trait PointField: Field + Coefficient {
+    /// The field of the values at radical points (the coefficients adjoined the radicals).
+    type Value: Field + fmt::Display + fmt::Debug + Clone;
+    /// A coefficient as a value.
+    fn lift(&self) -> Self::Value;
+    /// A coordinate as a value.
+    fn lift_radical(r: &Radical) -> Self::Value;
+    /// The coefficient as a real radical, `None` when it is not real (then relations with it are
+    /// not solved, only checked).
+    fn to_radical(&self) -> Option<Radical>;
+}
+
+impl PointField for Rational {
+    type Value = Radical;
+    fn lift(&self) -> Radical {
+        Radical::from(self)
+    }
+    fn lift_radical(r: &Radical) -> Radical {
+        r.clone()
+    }
+    fn to_radical(&self) -> Option<Radical> {
+        Some(Radical::from(self))
+    }
+}
+
+impl PointField for Radical {
+    type Value = Radical;
+    fn lift(&self) -> Radical {
+        self.clone()
+    }
+    fn lift_radical(r: &Radical) -> Radical {
+        r.clone()
+    }
+    fn to_radical(&self) -> Option<Radical> {
+        Some(self.clone())
+    }
+}
+
+impl PointField for ComplexRadical {
+    type Value = ComplexRadical;
+    fn lift(&self) -> ComplexRadical {
+        self.clone()
+    }
+    fn lift_radical(r: &Radical) -> ComplexRadical {
+        ComplexRadical::from(r.clone())
+    }
+    fn to_radical(&self) -> Option<Radical> {
+        self.is_real().then(|| self.re.clone())
+    }
+}
+
+/// The decision on an identity.
+#[derive(Clone, Debug)]
+pub enum Decision<C: PointField> {
+    /// The residual is zero (modulo the relations).
+    Proved {
+        /// Terms of the expanded residual before reduction (0 when it expanded to zero outright).
+        expanded_terms: usize,
+    },
+    /// A counter-example: the point lies in the domains, the relations hold, the residual does
+    /// not vanish (all verified exactly).
+    Fails {
+        /// The normal form of the residual modulo the relations.
+        normal_form: Poly<C>,
+        /// The point: a value for every variable (by index).
+        point: RadicalPoint,
+        /// The residual's value there (non-zero).
+        value: C::Value,
+    },
+    /// Non-zero normal form, but no point in the domains and on the relations' variety was found
+    /// where the residual is non-zero.
+    Undecided {
+        /// The normal form of the residual modulo the relations.
+        normal_form: Poly<C>,
+        /// What was searched, in words.
+        searched: String,
+    },
+}
+
+/// The range of a variable: optional lower and upper bounds, each with a flag "strict".
+///
+/// `Domain { lower: Some((0, true)), upper: None }` is `v > 0`; `lower: Some((0, false)), upper:
+/// Some((1, false))` is `0 <= v <= 1`. Sampling draws from the box: with both bounds
+/// `lo + (hi - lo) k/16` (`k` in `1..16`, the ends too when not strict), with one bound
+/// `lo + n/d` or `hi - n/d` (`n/d` a small positive rational, or 0 when not strict).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Domain {
+    /// The lower bound and whether it is strict (`>`), if any.
+    pub lower: Option<(Rational, bool)>,
+    /// The upper bound and whether it is strict (`<`), if any.
+    pub upper: Option<(Rational, bool)>,
+}
+
+impl Domain {
+    /// The whole real line.
+    pub fn all() -> Domain {
+        Domain::default()
+    }
+
+    /// Whether no real number satisfies the bounds.
+    pub fn is_empty(&self) -> bool {
+        match (&self.lower, &self.upper) {
+            (Some((lo, ls)), Some((hi, hs))) => lo > hi || (lo == hi && (*ls || *hs)),
+            _ => false,
+        }
+    }
+
+    /// Whether `x` satisfies the bounds (exactly).
+    pub fn contains(&self, x: &Radical) -> bool {
+        let above = match &self.lower {
+            None => true,
+            Some((lo, strict)) => {
+                let lo = Radical::from(lo);
+                if *strict {
+                    *x > lo
+                } else {
+                    *x >= lo
+                }
+            }
+        };
+        let below = match &self.upper {
+            None => true,
+            Some((hi, strict)) => {
+                let hi = Radical::from(hi);
+                if *strict {
+                    *x < hi
+                } else {
+                    *x <= hi
+                }
+            }
+        };
+        above && below
+    }
+
+    /// A value of the domain (see the type's documentation); unbounded: [`small_rational`].
+    fn sample(&self, rng: &mut Rng) -> Rational {
+        let small_positive = |rng: &mut Rng, strict: bool| loop {
+            let n = rng.below(10) as i64;
+            let d = rng.below(4) as i64 + 1;
+            if n > 0 || !strict {
+                return Rational::new(n, d).expect("the denominator is at least 1");
+            }
+        };
+        match (&self.lower, &self.upper) {
+            (None, None) => small_rational(rng),
+            (Some((lo, strict)), None) => lo + &small_positive(rng, *strict),
+            (None, Some((hi, strict))) => hi - &small_positive(rng, *strict),
+            (Some((lo, ls)), Some((hi, hs))) => {
+                let k = loop {
+                    let k = rng.below(17) as i64;
+                    if !((k == 0 && *ls) || (k == 16 && *hs)) {
+                        break k;
+                    }
+                };
+                let frac = Rational::new(k, 16).expect("16 is not zero");
+                lo + &((hi - lo) * &frac)
+            }
+        }
+    }
+}
+
+impl fmt::Display for Domain {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let op = |strict: bool| if strict { "<" } else { "<=" };
+        match (&self.lower, &self.upper) {
+            (None, None) => write!(f, "any value"),
+            (Some((lo, s)), None) => write!(f, "{lo} {} v", op(*s)),
+            (None, Some((hi, s))) => write!(f, "v {} {hi}", op(*s)),
+            (Some((lo, ls)), Some((hi, hs))) => write!(f, "{lo} {} v {} {hi}", op(*ls), op(*hs)),
+        }
+    }
+}
+
+/// Why nothing was decided.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum DecideError {
+    /// The relations have no common (complex) point: their Gröbner basis contains a non-zero
+    /// constant.
+    Inconsistent,
+    /// A domain no real number satisfies (e.g. `1 < v < 0`).
+    EmptyDomain(Var),
+    /// Two domains for one variable.
+    DuplicateDomain(Var),
+    /// A domain for a variable index outside `0..nvars`.
+    UnknownVariable(Var),
+}
+
+impl fmt::Display for DecideError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            DecideError::Inconsistent => f.write_str(
+                "the relations are inconsistent (their Groebner basis contains a non-zero constant): no point satisfies them, so nothing can be decided",
+            ),
+            DecideError::EmptyDomain(v) => write!(f, "the domain of variable #{v} is empty"),
+            DecideError::DuplicateDomain(v) => {
+                write!(f, "variable #{v} has two domains (give both bounds in one)")
+            }
+            DecideError::UnknownVariable(v) => {
+                write!(f, "a domain names variable #{v}, which is not in use")
+            }
+        }
+    }
+}
+
+impl std::error::Error for DecideError {}
+
+/// Splits relations into unit-circle pairs `c^2 + s^2 - 1` (recognised up to sign) and others.
+pub fn unit_circle_pairs<C: Field>(relations: &[Poly<C>]) -> (Vec<(Var, Var)>, Vec<Poly<C>>) {
+    let mut pairs = Vec::new();
+    let mut others = Vec::new();
+    for r in relations {
+        match circle_pair(r) {
+            Some(p)
+                if !pairs
+                    .iter()
+                    .any(|&(c, s): &(Var, Var)| [c, s].contains(&p.0) || [c, s].contains(&p.1)) =>
+            {
+                pairs.push(p)
+            }
+            _ => others.push(r.clone()),
+        }
+    }
+    (pairs, others)
+}
+
+fn circle_pair<C: Field>(r: &Poly<C>) -> Option<(Var, Var)> {
+    if r.len() != 3 {
+        return None;
+    }
+    let mut squares = Vec::new();
+    let mut constant = None;
+    let mut square_coeff = None;
+    for (m, c) in r.terms() {
+        let e = m.exponents();
+        match e.as_slice() {
+            [] => constant = Some(c.clone()),
+            [(v, 2)] => {
+                if square_coeff.get_or_insert_with(|| c.clone()) != c {
+                    return None;
+                }
+                squares.push(*v);
+            }
+            _ => return None,
+        }
+    }
+    let (k, a) = (constant?, square_coeff?);
+    // a c^2 + a s^2 - a = 0.
+    if squares.len() == 2 && k == a.neg_ref() {
+        Some((squares[0], squares[1]))
+    } else {
+        None
+    }
+}
+
+/// A small rational `n/d`, `|n| <= 9`, `1 <= d <= 4`, for the counter-example search.
+fn small_rational(rng: &mut Rng) -> Rational {
+    let n = (rng.next_u64() % 19) as i64 - 9;
+    let d = (rng.next_u64() % 4) as i64 + 1;
+    Rational::new(n, d).expect("the denominator is at least 1")
+}
+
+/// Decides `residual = 0` modulo `relations` for all values (see the module documentation):
+/// [`decide_in`] without domains. `nvars` is the number of variables in use (`0..nvars`).
+///
+/// # Errors
+/// [`DecideError::Inconsistent`] for inconsistent relations.
+pub fn decide<C: PointField>(
+    residual: &Poly<C>,
+    relations: &[Poly<C>],
+    nvars: usize,
+) -> Result<Decision<C>, DecideError> {
+    decide_in(residual, relations, &[], nvars)
+}
+
+/// Decides `residual = 0` modulo `relations` for the values in `domains` (variables without a
+/// domain range over all reals); see the module documentation.
+///
+/// # Errors
+/// [`DecideError`] for inconsistent relations, an empty domain, two domains for one variable or
+/// a domain for a variable outside `0..nvars`.
+pub fn decide_in<C: PointField>(
+    residual: &Poly<C>,
+    relations: &[Poly<C>],
+    domains: &[(Var, Domain)],
+    nvars: usize,
+) -> Result<Decision<C>, DecideError> {
+    let mut dom = vec![Domain::all(); nvars];
+    let mut seen = vec![false; nvars];
+    for (v, d) in domains {
+        let i = *v as usize;
+        if i >= nvars {
+            return Err(DecideError::UnknownVariable(*v));
+        }
+        if seen[i] {
+            return Err(DecideError::DuplicateDomain(*v));
+        }
+        if d.is_empty() {
+            return Err(DecideError::EmptyDomain(*v));
+        }
+        seen[i] = true;
+        dom[i] = d.clone();
+    }
+    let (pairs, others) = unit_circle_pairs(relations);
+    // Distinct unit circles alone always have common points; anything else is checked.
+    let basis = if others.is_empty() {
+        Vec::new()
+    } else {
+        let basis = groebner(relations);
+        if basis.iter().any(|b| b.is_constant() && !b.is_zero()) {
+            return Err(DecideError::Inconsistent);
+        }
+        basis
+    };
+    let expanded_terms = residual.len();
+    if residual.is_zero() {
+        return Ok(Decision::Proved { expanded_terms: 0 });
+    }
+    let mut nf = residual.reduce_unit_circle(&pairs);
+    if !basis.is_empty() && !nf.is_zero() {
+        nf = nf.reduce(&basis);
+    }
+    if nf.is_zero() {
+        return Ok(Decision::Proved { expanded_terms });
+    }
+    Ok(search(residual, relations, &pairs, &others, &dom, nvars)
+        .map(|(point, value)| Decision::Fails {
+            normal_form: nf.clone(),
+            point,
+            value,
+        })
+        .unwrap_or_else(|| Decision::Undecided {
+            searched: format!(
+                "{SEARCH_ATTEMPTS} exact candidate points (small rationals, inside the domains if any{}{}) were checked, none satisfies the relations{} with a non-zero residual",
+                if pairs.is_empty() { "" } else { ", rational points of the unit circles" },
+                if others.is_empty() && pairs.is_empty() {
+                    ""
+                } else {
+                    ", relations solved one variable at a time: rational roots and real roots of quadratics"
+                },
+                if dom.iter().any(|d| *d != Domain::all()) { " in the domains" } else { "" },
+            ),
+            normal_form: nf,
+        }))
+}
+
+/// A point: a value for every variable (by index).
+pub type RadicalPoint = Vec<(Var, Radical)>;
+
+/// The counter-example search of the module documentation: a verified point and the residual's
+/// value there, or `None`.
+fn search<C: PointField>(
+    residual: &Poly<C>,
+    relations: &[Poly<C>],
+    pairs: &[(Var, Var)],
+    others: &[Poly<C>],
+    dom: &[Domain],
+    nvars: usize,
+) -> Option<(RadicalPoint, C::Value)> {
+    // Relations as real radical polynomials, for solving (those with non-real coefficients are
+    // only checked).
+    let real = |r: &Poly<C>| -> Option<Poly<Radical>> {
+        r.coefficients()
+            .iter()
+            .all(|c| c.to_radical().is_some())
+            .then(|| r.map_coeffs(|c| c.to_radical().expect("checked to be real above")))
+    };
+    let all_real: Vec<Poly<Radical>> = relations.iter().filter_map(real).collect();
+    let others_real: Vec<Poly<Radical>> = others.iter().filter_map(real).collect();
+    let mut rng = Rng::new(0x5EED);
+    for attempt in 0..SEARCH_ATTEMPTS {
+        let base: Vec<Rational> = (0..nvars).map(|v| dom[v].sample(&mut rng)).collect();
+        let mut point: Vec<Option<Radical>> = vec![None; nvars];
+        let use_tau = attempt % 2 == 0 || others.is_empty();
+        let to_solve = if use_tau {
+            for &(c, s) in pairs {
+                let tau = small_rational(&mut rng);
+                let t2 = tau.square();
+                let den = (Rational::ONE + &t2)
+                    .recip()
+                    .expect("1 + tau^2 >= 1 is not zero");
+                point[c as usize] = Some(Radical::from((Rational::ONE - &t2) * &den));
+                point[s as usize] = Some(Radical::from(tau.scale_i64(2) * &den));
+            }
+            &others_real
+        } else {
+            &all_real
+        };
+        if !solve_relations(to_solve, &base, dom, &mut point, &mut rng) {
+            continue;
+        }
+        let values: Vec<Radical> = point
+            .into_iter()
+            .zip(base)
+            .map(|(p, b)| p.unwrap_or_else(|| Radical::from(b)))
+            .collect();
+        if !values.iter().zip(dom).all(|(x, d)| d.contains(x)) {
+            continue;
+        }
+        let lifted: Vec<C::Value> = values.iter().map(C::lift_radical).collect();
+        if !relations.iter().all(|r| r.eval(&lifted, C::lift).is_zero()) {
+            continue;
+        }
+        let value = residual.eval(&lifted, C::lift);
+        if !value.is_zero() {
+            let point = values
+                .into_iter()
+                .enumerate()
+                .map(|(i, q)| (i as Var, q))
+                .collect();
+            return Some((point, value));
+        }
+    }
+    None
+}
+
+/// Step 3 of the search: fixes variables of `rels` one at a time (solving univariate relations,
+/// else keeping the drawn `base` value). `false` when a univariate relation has no usable root
+/// in its variable's domain.
+fn solve_relations(
+    rels: &[Poly<Radical>],
+    base: &[Rational],
+    dom: &[Domain],
+    point: &mut [Option<Radical>],
+    rng: &mut Rng,
+) -> bool {
+    if rels.is_empty() {
+        return true;
+    }
+    loop {
+        let mut progress = false;
+        let mut open_var = None;
+        for r in rels {
+            let mut q = r.clone();
+            for v in r.variables() {
+                if let Some(x) = &point[v as usize] {
+                    q = q.substitute(v, &Poly::constant(x.clone()));
+                }
+            }
+            let vars = q.variables();
+            match vars.as_slice() {
+                [] => {}
+                [v] => {
+                    let roots: Vec<Radical> = real_roots(&q, *v)
+                        .into_iter()
+                        .filter(|x| dom[*v as usize].contains(x))
+                        .collect();
+                    if roots.is_empty() {
+                        return false;
+                    }
+                    let pick = rng.below(roots.len() as u64) as usize;
+                    point[*v as usize] = Some(roots[pick].clone());
+                    progress = true;
+                }
+                [v, ..] => {
+                    open_var.get_or_insert(*v);
+                }
+            }
+        }
+        if !progress {
+            match open_var {
+                Some(v) => point[v as usize] = Some(Radical::from(&base[v as usize])),
+                None => return true,
+            }
+        }
+    }
+}
+
+/// Real roots of a polynomial in the one variable `v` found exactly: linear roots, real roots of
+/// quadratics with a rational discriminant, rational roots when the coefficients are rational.
+fn real_roots(q: &Poly<Radical>, v: Var) -> Vec<Radical> {
+    let deg = q.degree_in(v) as usize;
+    let mut coeffs = vec![Radical::zero(); deg + 1];
+    for (m, c) in q.terms() {
+        coeffs[m.exponent(v) as usize] = c.clone();
+    }
+    match deg {
+        0 => Vec::new(),
+        1 => coeffs[1]
+            .inv()
+            .map(|i| vec![-(&coeffs[0] * &i)])
+            .unwrap_or_default(),
+        2 => {
+            let (a, b, c) = (&coeffs[2], &coeffs[1], &coeffs[0]);
+            let disc = b * b - &(a * c).scale(&Rational::from_integer(4));
+            let Some(sq) = disc.to_rational().and_then(|d| Radical::sqrt_rational(&d)) else {
+                return Vec::new();
+            };
+            let Ok(den) = a.scale(&Rational::from_integer(2)).inv() else {
+                return Vec::new();
+            };
+            let mut roots = vec![(-b - &sq) * &den];
+            if !sq.is_zero() {
+                roots.push((-b + &sq) * &den);
+            }
+            roots
+        }
+        _ => {
+            let Some(rat) = coeffs
+                .iter()
+                .map(Radical::to_rational)
+                .collect::<Option<Vec<Rational>>>()
+            else {
+                return Vec::new();
+            };
+            UPoly::from_coeffs(rat)
+                .roots()
+                .into_iter()
+                .filter_map(|r| r.interval.exact_value().cloned())
+                .map(Radical::from)
+                .collect()
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::expr::parse_poly;
+    use crate::poly::Vars;
+
+    fn p(text: &str, vars: &mut Vars) -> Poly<Rational> {
+        parse_poly(text, vars).unwrap()
+    }
+
+    #[test]
+    fn quadratic_roots_are_exact() {
+        let mut vars = Vars::from_names(["x"]);
+        let q = p("x^2 - 2", &mut vars).map_coeffs(|c| Radical::from(c));
+        let roots = real_roots(&q, 0);
+        assert_eq!(roots.len(), 2);
+        for r in roots {
+            assert!((&r * &r - Radical::from(2)).is_zero());
+        }
+        let cubic = p("x^3 - 1/8", &mut vars).map_coeffs(|c| Radical::from(c));
+        assert_eq!(
+            real_roots(&cubic, 0),
+            vec![Radical::from(Rational::new(1, 2).unwrap())]
+        );
+    }
+
+    #[test]
+    fn domains() {
+        let d = Domain {
+            lower: Some((Rational::ZERO, true)),
+            upper: Some((Rational::ONE, false)),
+        };
+        assert!(!d.contains(&Radical::zero()) && d.contains(&Radical::one()));
+        let mut rng = Rng::new(3);
+        for _ in 0..100 {
+            assert!(d.contains(&Radical::from(d.sample(&mut rng))));
+        }
+        let empty = Domain {
+            lower: Some((Rational::ONE, false)),
+            upper: Some((Rational::ONE, true)),
+        };
+        assert!(empty.is_empty());
+    }
+}

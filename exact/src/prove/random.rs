@@ -1,0 +1,531 @@
+//! Randomized identity testing (`prove --random K`): evaluate `LHS - RHS` at `K` random points
+//! modulo a prime drawn at random for the run, without expanding anything, and bound the
+//! probability that a false identity passes — for every input, not only for inputs whose
+//! coefficients happen to be prime to a fixed modulus.
+//!
+//! # Why the prime is random
+//! With a fixed prime `p` the test is blind to every identity over Q whose difference has all
+//! coefficients divisible by `p` (`(2^61 - 1) x = 0` modulo `2^61 - 1`), and to exponents that
+//! Fermat reduces (`x^p = x` modulo `p`). Here `p` is drawn uniformly from the primes in
+//! `[2^62, 2^63)` ([`PrimeField::random_62`]) from the run's seed.
+//!
+//! # The bound
+//! Write `LHS - RHS = F / D` with `F` in `Z[x]` and `D` a positive integer. [`size_bound`]
+//! computes from the expression tree, without expanding, numbers `L`, `L_D`, `d` with
+//! `log2 ||F||_1 <= L`, `log2 D <= L_D` and `deg F <= d` (`||F||_1` is the sum of the absolute
+//! values of the coefficients), by structural induction, each rule being the triangle inequality
+//! and `||F G||_1 <= ||F||_1 ||G||_1`:
+//! * a number `n/d` (lowest terms): `F = n`, `D = d`: `L = bits(|n|)`, `L_D = bits(d)` (0 for
+//!   `d = 1`);
+//!   a variable: `L = L_D = 0`, degree 1; a negation changes nothing;
+//! * a sum of `m` terms `F_i / D_i`: `F = sum_i F_i prod_{j != i} D_j`, `D = prod D_j`, so
+//!   `L = ceil(log2 m) + max_i (L_i + sum_{j != i} L_Dj)` (for two terms
+//!   `max(L_F + L_DG, L_G + L_DF) + 1`), `L_D = sum L_Dj`, degree the maximum;
+//! * a product: `L = sum L_i`, `L_D = sum L_Di`, degree the sum; a division by a constant
+//!   `c = F_c / D_c` (`F_c` an integer, degree 0) multiplies by `D_c / F_c`: `L += L_Dc`,
+//!   `L_D += L_c` (`|F_c| <= 2^L_c`); division by a non-constant is refused;
+//! * a power `b^k` (`k` a non-negative integer literal): `k L_b`, `k L_Db`, `k d_b`.
+//!
+//! All of these are checked `u64` operations; an overflow makes the test report `undecided`
+//! (it never wraps). Square roots are refused in random mode (`sqrt(k)` has no canonical image
+//! modulo `p` — either root could be taken, and `k` need not be a square at all — and this
+//! module does not prove a bound for it): run without `--random`, which expands over the exact
+//! square-root field.
+//!
+//! A unit circle `c^2 + s^2 = 1` is sampled as `c = (1 - t^2)/(1 + t^2)`, `s = 2t/(1 + t^2)`
+//! with `t` uniform among the residues where `1 + t^2 != 0`. Then
+//! `G(t, x) = F(c(t), s(t), x) prod_i (1 + t_i^2)^d` is a polynomial; a monomial
+//! `c^a s^b m` becomes `(1 - t^2)^a (2t)^b (1 + t^2)^{d - a - b} m`, of 1-norm at most `2^d` and
+//! degree at most `2d + deg m`, so with `k` circles `||G||_1 <= 2^{dk} ||F||_1` and
+//! `deg G <= d (1 + 2k)`. If the identity is false modulo the circles, `G != 0` over Q (its
+//! rational-function image is non-zero).
+//!
+//! **Theorem.** Let the identity be false (modulo the unit circles), `L' = L + dk`,
+//! `d' = d(1 + 2k)`, and `N` the number of primes in `[2^62, 2^63)`. The probability that all
+//! `K` points give zero is at most
+//!
+//! `floor(L'/62) / (N - floor(L_D/62)) + (d' / (2^62 - 2k))^K`.
+//!
+//! *Proof.* (1) The prime. Primes `p` that divide `D` are detected: some constant divisor or
+//! denominator has no inverse modulo `p` (the tree is evaluated with exactly the inversions
+//! whose product is `D`); such a prime is discarded and a new one drawn, so the prime used is
+//! uniform over the primes of the range not dividing `D`. `D < 2^{L_D}` has at most
+//! `floor(L_D/62)` prime factors `>= 2^62` (their product is at most `D`), so at least
+//! `N - floor(L_D/62)` primes remain. `G` has a non-zero integer coefficient of absolute value at
+//! most `||G||_1 <= 2^{L'}`, which likewise has at most `floor(L'/62)` prime factors in the
+//! range; only those primes can make `G` vanish identically modulo `p`. (2) The points. For `p`
+//! with `G mod p != 0`, `G` has at most `d' p^{n-1}` zeros among the `p^n` points of `F_p^n`
+//! (Schwartz–Zippel). Each circle parameter avoids at most 2 residues, so the points are uniform
+//! on a set of at least `p^n (1 - 2/p)^k >= p^n (1 - 2k/p)` points, and one of them is a zero of
+//! `G` with probability at most `d' / (p - 2k) <= d' / (2^62 - 2k)`; the `K` points are
+//! independent. At a point, the evaluated value is `G / (D prod (1 + t_i^2)^d)` with an
+//! invertible denominator, so it is zero exactly when `G` is. ∎
+//!
+//! `N > 2^56`: by Rosser and Schoenfeld (1962), `x / ln x < pi(x) < 1.25506 x / ln x` for
+//! `x >= 17`, so `N = pi(2^63) - pi(2^62) > 2^63 / (63 ln 2) - 1.25506 · 2^62 / (62 ln 2)
+//! = 2^62 (2 / 43.6683 - 1.25506 / 42.9752) > 2^62 (0.045800 - 0.029205) = 2^62 · 0.016595
+//! > 2^62 · 2^-5.92 > 2^56`. The bound uses `N = 2^56`.
+//!
+//! A non-zero value at a point is a proof that the identity is false (over Q, and modulo the
+//! circles: a multiple of `c^2 + s^2 - 1` with integer coefficients vanishes at every circle point
+//! modulo every `p`). The verdict `holds` is given only when the bound is below
+//! `2^HOLDS_THRESHOLD_LOG2` ([`HOLDS_THRESHOLD_LOG2`] `= -30`); otherwise `undecided` with the bound.
+
+use crate::expr::{AddOp, Expr, ExprKind, MulOp};
+use crate::modp::PrimeField;
+use exactcheck_core::Rng;
+use std::collections::HashMap;
+use std::fmt;
+
+/// `holds` only when the error bound is below `2^HOLDS_THRESHOLD_LOG2`.
+pub const HOLDS_THRESHOLD_LOG2: f64 = -30.0;
+
+/// The most random points one run may evaluate.
+pub const MAX_RANDOM_TRIALS: u32 = 100_000;
+
+/// Primes are redrawn at most this often when one divides a constant divisor; after that the
+/// divisor is (with overwhelming probability) zero, which is an error.
+const MAX_PRIME_REDRAWS: u32 = 64;
+
+/// `log2 N` for the lower bound `N = 2^56` on the number of primes in `[2^62, 2^63)`.
+const LOG2_PRIMES: u32 = 56;
+
+/// Bounds on `F / D` for an expression (see the module documentation).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SizeBound {
+    /// `log2 ||F||_1 <= num_bits`.
+    pub num_bits: u64,
+    /// `log2 D <= den_bits`.
+    pub den_bits: u64,
+    /// `deg F <= degree`.
+    pub degree: u64,
+}
+
+/// Why [`size_bound`] gave no bound.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum BoundError {
+    /// Not a polynomial expression this test handles (the message says why).
+    Input(String),
+    /// A bound does not fit in 64 bits.
+    Overflow,
+}
+
+fn bits_of(n: &num_bigint::BigInt) -> u64 {
+    n.bits()
+}
+
+fn ceil_log2(m: usize) -> u64 {
+    (usize::BITS - m.saturating_sub(1).leading_zeros()) as u64
+}
+
+fn constant_exponent(e: &Expr) -> Option<u64> {
+    match &e.kind {
+        ExprKind::Number(q) if q.is_integer() => q.numer().try_into().ok(),
+        _ => None,
+    }
+}
+
+/// The structural bounds of the module documentation for one expression.
+///
+/// # Errors
+/// [`BoundError::Input`] for a square root, a non-constant divisor or a non-literal exponent;
+/// [`BoundError::Overflow`] when a bound exceeds `u64`.
+pub fn size_bound(e: &Expr) -> Result<SizeBound, BoundError> {
+    let of = BoundError::Overflow;
+    Ok(match &e.kind {
+        ExprKind::Number(q) => SizeBound {
+            num_bits: bits_of(&q.numer()),
+            den_bits: if q.is_integer() {
+                0
+            } else {
+                bits_of(&q.denom())
+            },
+            degree: 0,
+        },
+        ExprKind::Var(_) => SizeBound {
+            num_bits: 0,
+            den_bits: 0,
+            degree: 1,
+        },
+        ExprKind::Neg(x) => size_bound(x)?,
+        ExprKind::Sum(ts) => {
+            let parts = ts
+                .iter()
+                .map(|(_, t)| size_bound(t))
+                .collect::<Result<Vec<_>, _>>()?;
+            let den_bits = parts
+                .iter()
+                .try_fold(0u64, |a, b| a.checked_add(b.den_bits))
+                .ok_or(of.clone())?;
+            let mut num = 0u64;
+            for b in &parts {
+                // L_i + sum_{j != i} L_Dj = L_i + (L_D - L_Di).
+                let v = b
+                    .num_bits
+                    .checked_add(den_bits - b.den_bits)
+                    .ok_or(of.clone())?;
+                num = num.max(v);
+            }
+            SizeBound {
+                num_bits: num.checked_add(ceil_log2(parts.len())).ok_or(of)?,
+                den_bits,
+                degree: parts.iter().map(|b| b.degree).max().unwrap_or(0),
+            }
+        }
+        ExprKind::Product(fs) => {
+            let mut acc = SizeBound {
+                num_bits: 0,
+                den_bits: 0,
+                degree: 0,
+            };
+            for (op, f) in fs {
+                let b = size_bound(f)?;
+                let (num, den) = match op {
+                    MulOp::Times => {
+                        acc.degree = acc.degree.checked_add(b.degree).ok_or(of.clone())?;
+                        (b.num_bits, b.den_bits)
+                    }
+                    MulOp::Divide if b.degree == 0 => (b.den_bits, b.num_bits),
+                    MulOp::Divide => {
+                        return Err(BoundError::Input(
+                            "a division by a non-constant is not a polynomial".into(),
+                        ))
+                    }
+                };
+                acc.num_bits = acc.num_bits.checked_add(num).ok_or(of.clone())?;
+                acc.den_bits = acc.den_bits.checked_add(den).ok_or(of.clone())?;
+            }
+            acc
+        }
+        ExprKind::Pow(b, x) => {
+            let k = constant_exponent(x).ok_or_else(|| {
+                BoundError::Input(
+                    "exponents must be integer numbers from 0 to 2^64 - 1 in --random mode"
+                        .into(),
+                )
+            })?;
+            let b = size_bound(b)?;
+            SizeBound {
+                num_bits: b.num_bits.checked_mul(k).ok_or(of.clone())?,
+                den_bits: b.den_bits.checked_mul(k).ok_or(of.clone())?,
+                degree: b.degree.checked_mul(k).ok_or(of)?,
+            }
+        }
+        ExprKind::Sqrt(_) => {
+            return Err(BoundError::Input(
+                "sqrt is not supported by --random (no error bound is proved for square roots modulo p); run without --random for the exact square-root field".into(),
+            ))
+        }
+    })
+}
+
+/// Why an evaluation modulo `p` stopped.
+enum EvalError {
+    /// A constant divisor or a denominator is divisible by `p`.
+    NotInvertible,
+    /// A malformed expression (message).
+    Input(String),
+}
+
+fn eval(e: &Expr, f: &PrimeField, point: &HashMap<String, u64>) -> Result<u64, EvalError> {
+    Ok(match &e.kind {
+        ExprKind::Number(q) => f.from_rational(q).map_err(|_| EvalError::NotInvertible)?,
+        ExprKind::Var(v) => *point
+            .get(v)
+            .ok_or_else(|| EvalError::Input(format!("no value for {v}")))?,
+        ExprKind::Neg(x) => f.neg(eval(x, f, point)?),
+        ExprKind::Sum(ts) => {
+            let mut acc = 0;
+            for (op, t) in ts {
+                let v = eval(t, f, point)?;
+                acc = match op {
+                    AddOp::Plus => f.add(acc, v),
+                    AddOp::Minus => f.sub(acc, v),
+                };
+            }
+            acc
+        }
+        ExprKind::Product(fs) => {
+            let mut acc = 1;
+            for (op, x) in fs {
+                let v = eval(x, f, point)?;
+                acc = match op {
+                    MulOp::Times => f.mul(acc, v),
+                    MulOp::Divide => f.mul(acc, f.inv(v).map_err(|_| EvalError::NotInvertible)?),
+                };
+            }
+            acc
+        }
+        ExprKind::Pow(b, x) => {
+            let k = constant_exponent(x).ok_or_else(|| {
+                EvalError::Input("exponents must be non-negative integer numbers".into())
+            })?;
+            f.pow(eval(b, f, point)?, k)
+        }
+        ExprKind::Sqrt(_) => {
+            return Err(EvalError::Input(
+                "sqrt is not supported by --random; run without --random".into(),
+            ))
+        }
+    })
+}
+
+/// What a random test did, for the evidence.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RandomReport {
+    /// The seed of the run.
+    pub seed: u64,
+    /// The prime used.
+    pub prime: u64,
+    /// Primes discarded because they divide a constant divisor.
+    pub redrawn: u32,
+    /// Points evaluated.
+    pub trials: u32,
+}
+
+/// The outcome of a randomized identity test.
+#[derive(Clone, Debug, PartialEq)]
+pub enum RandomDecision {
+    /// Zero at every point, and the error bound is below the threshold.
+    Holds {
+        /// The run.
+        report: RandomReport,
+        /// The bounds `L'`, `L_D`, `d'` used.
+        bound: SizeBound,
+        /// log2 of the error probability bound (below [`HOLDS_THRESHOLD_LOG2`]).
+        log2_bound: f64,
+    },
+    /// Zero at every point, but the bound is not small enough (or could not be computed).
+    Undecided {
+        /// The run.
+        report: RandomReport,
+        /// The bounds used (`None` when they overflow).
+        bound: Option<SizeBound>,
+        /// log2 of the error probability bound (at most 0).
+        log2_bound: f64,
+    },
+    /// Non-zero at a point modulo p: the identity is false (over Q as well).
+    Fails {
+        /// The run.
+        report: RandomReport,
+        /// The point, as residues modulo the prime.
+        point: Vec<(String, u64)>,
+        /// The residual there.
+        value: u64,
+    },
+}
+
+/// `log2(floor(L'/62) / (2^56 - floor(L_D/62)) + (d'/(2^62 - 2k))^K)`, rounded up (0 when the
+/// bound is not below 1).
+pub fn log2_error_bound(bound: &SizeBound, circles: usize, trials: u32) -> f64 {
+    let bad_primes = (bound.num_bits / 62) as f64;
+    let excluded = (bound.den_bits / 62) as f64;
+    let n = 2f64.powi(LOG2_PRIMES as i32);
+    if excluded >= n {
+        return 0.0;
+    }
+    let prime_term = bad_primes / (n - excluded);
+    let per_point = bound.degree as f64 / (2f64.powi(62) - 2.0 * circles as f64);
+    if prime_term >= 1.0 || per_point >= 1.0 {
+        return 0.0;
+    }
+    let l1 = if bad_primes == 0.0 {
+        f64::NEG_INFINITY
+    } else {
+        prime_term.log2()
+    };
+    let l2 = if bound.degree == 0 {
+        f64::NEG_INFINITY
+    } else {
+        trials as f64 * per_point.log2()
+    };
+    let (hi, lo) = if l1 >= l2 { (l1, l2) } else { (l2, l1) };
+    if hi == f64::NEG_INFINITY {
+        return f64::NEG_INFINITY;
+    }
+    // log2(2^hi + 2^lo), plus a margin that covers the floating-point rounding.
+    let sum = hi + (1.0 + (lo - hi).exp2()).log2();
+    (sum + 1e-9 * sum.abs().max(1.0)).min(0.0)
+}
+
+/// Tests `lhs = rhs` at `trials` random points modulo a random prime (see the module
+/// documentation); variables on unit circles `(c, s)` are drawn on the circle.
+///
+/// # Errors
+/// A message for `trials` outside `1..=MAX_RANDOM_TRIALS`, a square root, a non-polynomial
+/// expression, or a constant divisor that is zero (modulo [`MAX_PRIME_REDRAWS`] random primes).
+pub fn random_identity_test(
+    lhs: &Expr,
+    rhs: &Expr,
+    variables: &[String],
+    circles: &[(String, String)],
+    trials: u32,
+    seed: u64,
+) -> Result<RandomDecision, String> {
+    if !(1..=MAX_RANDOM_TRIALS).contains(&trials) {
+        return Err(format!(
+            "--random takes 1 to {MAX_RANDOM_TRIALS} points, not {trials}"
+        ));
+    }
+    let k = circles.len() as u64;
+    let bound = match (size_bound(lhs), size_bound(rhs)) {
+        (Err(BoundError::Input(m)), _) | (_, Err(BoundError::Input(m))) => return Err(m),
+        (Ok(l), Ok(r)) => (|| {
+            let num = (l.num_bits.checked_add(r.den_bits)?)
+                .max(r.num_bits.checked_add(l.den_bits)?)
+                .checked_add(1)?;
+            let degree = l.degree.max(r.degree);
+            Some(SizeBound {
+                num_bits: num.checked_add(degree.checked_mul(k)?)?,
+                den_bits: l.den_bits.checked_add(r.den_bits)?,
+                degree: degree.checked_mul(k.checked_mul(2)?.checked_add(1)?)?,
+            })
+        })(),
+        _ => None,
+    };
+    let mut rng = Rng::new(seed);
+    let mut redrawn = 0;
+    'prime: loop {
+        let field = PrimeField::random_62(&mut rng);
+        let report = RandomReport {
+            seed,
+            prime: field.modulus(),
+            redrawn,
+            trials,
+        };
+        for _ in 0..trials {
+            let mut point: HashMap<String, u64> = variables
+                .iter()
+                .map(|v| (v.clone(), field.random(&mut rng)))
+                .collect();
+            for (c, s) in circles {
+                let (cv, sv) = loop {
+                    let t = field.random(&mut rng);
+                    let t2 = field.mul(t, t);
+                    if let Ok(inv) = field.inv(field.add(1, t2)) {
+                        break (
+                            field.mul(field.sub(1, t2), inv),
+                            field.mul(field.add(t, t), inv),
+                        );
+                    }
+                };
+                point.insert(c.clone(), cv);
+                point.insert(s.clone(), sv);
+            }
+            let value = match (eval(lhs, &field, &point), eval(rhs, &field, &point)) {
+                (Ok(a), Ok(b)) => field.sub(a, b),
+                (Err(EvalError::Input(m)), _) | (_, Err(EvalError::Input(m))) => return Err(m),
+                _ => {
+                    redrawn += 1;
+                    if redrawn > MAX_PRIME_REDRAWS {
+                        return Err(format!(
+                            "a divisor is zero modulo {MAX_PRIME_REDRAWS} random primes above 2^62: it is zero"
+                        ));
+                    }
+                    continue 'prime;
+                }
+            };
+            if value != 0 {
+                let mut point: Vec<(String, u64)> = point.into_iter().collect();
+                point.sort_by(|a, b| a.0.cmp(&b.0));
+                return Ok(RandomDecision::Fails {
+                    report,
+                    point,
+                    value,
+                });
+            }
+        }
+        return Ok(match bound {
+            Some(b) => {
+                let log2_bound = log2_error_bound(&b, circles.len(), trials);
+                if log2_bound < HOLDS_THRESHOLD_LOG2 {
+                    RandomDecision::Holds {
+                        report,
+                        bound: b,
+                        log2_bound,
+                    }
+                } else {
+                    RandomDecision::Undecided {
+                        report,
+                        bound: Some(b),
+                        log2_bound,
+                    }
+                }
+            }
+            None => RandomDecision::Undecided {
+                report,
+                bound: None,
+                log2_bound: 0.0,
+            },
+        });
+    }
+}
+
+impl fmt::Display for SizeBound {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "log2 ||F||_1 <= {}, log2 D <= {}, degree <= {}",
+            self.num_bits, self.den_bits, self.degree
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::expr::parse_expr;
+
+    fn bound(text: &str) -> SizeBound {
+        size_bound(&parse_expr(text).unwrap()).unwrap()
+    }
+
+    #[test]
+    fn structural_bounds() {
+        assert_eq!(
+            bound("2305843009213693951*x"),
+            SizeBound {
+                num_bits: 61,
+                den_bits: 0,
+                degree: 1
+            }
+        );
+        let b = bound("(x + 3)^4 / 5");
+        assert_eq!((b.num_bits, b.den_bits, b.degree), (4 * 3, 3, 4));
+        let b = bound("x/3 + y/5");
+        // max(0 + 3, 0 + 2) + 1.
+        assert_eq!((b.num_bits, b.den_bits), (4, 5));
+        assert!(matches!(
+            size_bound(&parse_expr("sqrt(2) x").unwrap()),
+            Err(BoundError::Input(_))
+        ));
+        assert!(matches!(
+            size_bound(&parse_expr("1/x").unwrap()),
+            Err(BoundError::Input(_))
+        ));
+    }
+
+    #[test]
+    fn error_bound_arithmetic() {
+        let b = SizeBound {
+            num_bits: 62 * 4,
+            den_bits: 0,
+            degree: 0,
+        };
+        // 4 / 2^56 = 2^-54.
+        assert!((log2_error_bound(&b, 0, 5) + 54.0).abs() < 1e-6);
+        let b = SizeBound {
+            num_bits: 10,
+            den_bits: 0,
+            degree: 1 << 52,
+        };
+        // (2^52 / 2^62)^3 = 2^-30.
+        assert!((log2_error_bound(&b, 0, 3) + 30.0).abs() < 1e-6);
+        let b = SizeBound {
+            num_bits: 10,
+            den_bits: 0,
+            degree: u64::MAX,
+        };
+        assert_eq!(log2_error_bound(&b, 0, 100), 0.0);
+    }
+}
