@@ -10,9 +10,11 @@
 pub mod bernstein;
 pub mod bezier;
 pub mod cylinder_sphere;
+pub mod inertia;
 pub mod linalg;
 pub mod miquel;
 pub mod quadric;
+pub mod rational_angle;
 pub mod rng;
 pub mod scalar;
 pub mod sphere_interpolation;
