@@ -219,12 +219,6 @@ mod tests {
     fn plane_lines_is_proved() {
         expect(plane_lines(), Verdict::Proved);
     }
-
-    #[test]
-    fn satz7_holds() {
-        let o = expect(satz7(), Verdict::Holds);
-        assert!(o.evidence.contains("200"), "{}", o.evidence);
-    }
 }
 
 #[cfg(test)]
