@@ -989,7 +989,7 @@ fn degree_verdict(rows: &[DegreeRow]) -> Outcome {
             verdict: Verdict::Fails,
             method: "exact interpolation by both constructions, degrees compared".into(),
             evidence: format!(
-                "counter-example: N = {} points, the delta-construction needs image degree {} and plain stereographic projection {} (not fewer). {summary}. Corrected claim: fewer degrees than plain stereographic projection only for the N listed first (at N = 2 both need a circle, degree 2)",
+                "counter-example: N = {} points, the delta-construction needs image degree {} and plain stereographic projection {} (not fewer). {summary}. Corrected claim: fewer degrees than plain stereographic projection only for the N listed first",
                 r.n, r.delta, r.sigma_polynomial
             ),
         },
