@@ -26,15 +26,16 @@ pub struct RationalAngle<T> {
     pub tau: (i64, i64),
     /// The parameter as a field element.
     pub tau_value: T,
-    /// `2 atan(num/den) - theta` in radians (f64, for reporting).
+    /// `2 atan(num/den) - theta` in radians, reduced modulo `2 pi` to `[-pi, pi]` (f64, for
+    /// reporting).
     pub deviation: f64,
 }
 
 /// Why no rational angle was produced.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum RationalAngleError {
-    /// The angle is not finite or not in the open interval `(-pi, pi)`, where `tan(theta/2)` is
-    /// finite.
+    /// The angle, or `tan(theta/2)`, is not a finite number (or too large for an `i64`
+    /// numerator).
     OutOfRange(f64),
     /// `max_den` is below 1.
     BadDenominatorBound(i64),
@@ -44,7 +45,7 @@ impl core::fmt::Display for RationalAngleError {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         match self {
             RationalAngleError::OutOfRange(t) => {
-                write!(f, "angle {t} is not a finite number in (-pi, pi)")
+                write!(f, "angle {t} has no finite rational parameter tan(theta/2)")
             }
             RationalAngleError::BadDenominatorBound(d) => {
                 write!(f, "denominator bound {d} is below 1")
@@ -99,20 +100,26 @@ pub fn best_convergent(x: f64, max_den: i64) -> Result<(i64, i64), RationalAngle
 /// The rational point of the unit circle whose parameter `tau` is the best convergent of
 /// `tan(theta/2)` with denominator at most `max_den` (see the module documentation).
 ///
+/// Any finite angle is accepted (angles differing by `2 pi` give the same point; near `pi`
+/// the parameter is large and the point approaches `(-1, 0)`, which has no parameter).
+///
 /// # Errors
-/// When `theta` is not a finite angle in `(-pi, pi)` or `max_den < 1`.
+/// When `theta` is not finite, `tan(theta/2)` does not fit an `i64` numerator, or
+/// `max_den < 1`.
 pub fn rational_angle<T: Field>(
     theta: f64,
     max_den: i64,
 ) -> Result<RationalAngle<T>, RationalAngleError> {
-    if !theta.is_finite() || theta.abs() >= core::f64::consts::PI {
+    if !theta.is_finite() {
         return Err(RationalAngleError::OutOfRange(theta));
     }
     let (h, k) = best_convergent((theta / 2.0).tan(), max_den)?;
     let tau_value = T::from_ratio(h, k).map_err(|_| RationalAngleError::BadDenominatorBound(k))?;
     // 1 + tau^2 > 0 for real tau: unit_circle_point cannot divide by zero here.
     let angle = unit_circle_point(&tau_value).expect("1 + tau^2 is positive for a real tau");
-    let deviation = 2.0 * (h as f64 / k as f64).atan() - theta;
+    let raw = 2.0 * (h as f64 / k as f64).atan() - theta;
+    let tau = core::f64::consts::TAU;
+    let deviation = raw - tau * (raw / tau).round();
     Ok(RationalAngle {
         angle,
         tau: (h, k),
@@ -156,11 +163,16 @@ mod tests {
     }
 
     #[test]
-    fn rejects_angles_without_a_finite_parameter() {
+    fn rejects_angles_without_a_finite_parameter_and_wraps_the_rest() {
         assert!(matches!(
-            rational_angle::<f64>(core::f64::consts::PI, 10),
+            rational_angle::<f64>(f64::NAN, 10),
             Err(RationalAngleError::OutOfRange(_))
         ));
+        // Angles beyond pi wrap around: 3 pi / 2 is -pi / 2 (tau = -1).
+        let r = rational_angle::<f64>(1.5 * core::f64::consts::PI, 10).unwrap();
+        assert_eq!(r.tau, (-1, 1));
+        assert!(r.deviation.abs() < 1e-12);
+        assert!((r.angle.cos - 0.0).abs() < 1e-15 && (r.angle.sin + 1.0).abs() < 1e-15);
         assert!(matches!(
             rational_angle::<f64>(f64::INFINITY, 10),
             Err(RationalAngleError::OutOfRange(_))
