@@ -19,8 +19,9 @@ pub struct Cli {
 /// The subcommands.
 #[derive(Debug, Subcommand)]
 pub enum Command {
-    /// Check the built-in claim catalogue (every statement of the source papers) and print each
-    /// verdict with its method and evidence. Exit 0 when every verdict is the expected one.
+    /// Check the built-in claim catalogue (the juttler.* and spaeth.* claims of SPEC §6; planes.*
+    /// and chiang.* are not implemented yet) and print each verdict with its method and
+    /// evidence. Exit 0 when every verdict is the expected one.
     Verify {
         /// Print a JSON array (objects with id, verdict, method, evidence, ...) instead of a table.
         #[arg(long)]
