@@ -227,7 +227,12 @@ fn degrees_along_line() -> Result<LineDegrees, Stop> {
         let Ok(conf) = miquel_configuration(&patch) else {
             continue;
         };
-        let deg = |h: &Hom4<P>| h.0.iter().map(P::total_degree).max().unwrap_or(0);
+        let deg = |h: &Hom4<P>| {
+            h.0.iter()
+                .map(P::total_degree)
+                .max()
+                .expect("four coordinates")
+        };
         let [d1, d2] = conf.miquel_determinants();
         return Ok(LineDegrees {
             corners: conf.corners.each_ref().map(deg),
