@@ -29,8 +29,9 @@ pub struct Cli {
 /// The subcommands.
 #[derive(Debug, Subcommand)]
 pub enum Command {
-    /// Check the built-in claim catalogue (every statement of the source papers) and print each
-    /// verdict with its method and evidence. Exit 0 when every verdict is the expected one.
+    /// Check the built-in claim catalogue (the juttler.* and spaeth.* claims of SPEC §6; planes.*
+    /// and chiang.* are not implemented yet) and print each verdict with its method and
+    /// evidence. Exit 0 when every verdict is the expected one.
     Verify(crate::verify_cmd::VerifyArgs),
     /// Prove a polynomial identity LHS = RHS, for all values, modulo relations or inside
     /// domains (`--where`): `proved`; `fails` with an exact counter-example and what the sides

@@ -10,10 +10,12 @@
 pub mod bernstein;
 pub mod bezier;
 pub mod cylinder_sphere;
+pub mod inertia;
 pub mod linalg;
 pub mod miquel;
 pub mod ops;
 pub mod quadric;
+pub mod rational_angle;
 pub mod rng;
 pub mod scalar;
 pub mod sphere_interpolation;

@@ -19,6 +19,7 @@ pub mod poly;
 pub mod prove;
 pub mod radical;
 pub mod rational;
+pub mod symbolic;
 pub mod to_f64;
 pub mod traits;
 pub mod univariate;

@@ -7,11 +7,12 @@
 //! with an exact counter-example (rational angles), and a corrected text — itself proved equal to
 //! the derivation — is reported.
 
-use super::engine::{prove_all, Symbols};
+use super::engine::{prove_all, prove_all_in, Symbols};
 use super::{Claim, Outcome, Verdict};
 use exactcheck_core::cylinder_sphere::{Angle, CylinderSphere};
 use exactcheck_core::{Ring, Vec3};
-use exactcheck_exact::poly::{unit_circle_relation, Poly};
+use exactcheck_exact::poly::{unit_circle_relation, Poly, Var};
+use exactcheck_exact::prove::Domain;
 use exactcheck_exact::Rational;
 
 type P = Poly<Rational>;
@@ -57,48 +58,123 @@ pub fn claims() -> Vec<Claim> {
 
 const METHOD: &str = "symbolic expansion modulo cos^2 + sin^2 = 1 (t, beta, gamma)";
 
+/// The domain of one variable of the printed formulas, as data: the engine's
+/// [`Domain`] (bounds, strict or not) with the variable's name and the geometric reason.
+#[derive(Clone, Debug, PartialEq)]
+pub struct DomainDecl {
+    /// The variable's name (one of the declared variables).
+    pub var: &'static str,
+    /// The bounds, as the proof engine takes them.
+    pub domain: Domain,
+    /// Why (the geometry).
+    pub why: &'static str,
+}
+
+impl DomainDecl {
+    /// The domain as text, e.g. `r > 0`.
+    pub fn text(&self) -> String {
+        let mut parts = Vec::new();
+        if let Some((l, strict)) = &self.domain.lower {
+            parts.push(format!(
+                "{} {} {l}",
+                self.var,
+                if *strict { ">" } else { ">=" }
+            ));
+        }
+        if let Some((u, strict)) = &self.domain.upper {
+            parts.push(format!(
+                "{} {} {u}",
+                self.var,
+                if *strict { "<" } else { "<=" }
+            ));
+        }
+        parts.join(", ")
+    }
+}
+
+/// The geometric domains of the variables of (4)-(11): the radii are positive. (The angles are
+/// points of the unit circle through the relations `cos^2 + sin^2 = 1`; the offsets `a, b`, the
+/// centre `d, e, f` and the height `u` are unrestricted; the paper restricts no parameter to
+/// [0, 1].)
+pub fn domains() -> Vec<DomainDecl> {
+    let positive = || Domain {
+        lower: Some((Rational::ZERO, true)),
+        upper: None,
+    };
+    vec![
+        DomainDecl {
+            var: "r",
+            domain: positive(),
+            why: "the cylinder radius",
+        },
+        DomainDecl {
+            var: "R",
+            domain: positive(),
+            why: "the sphere radius",
+        },
+    ]
+}
+
 struct Setup {
     sym: Symbols,
     relations: Vec<P>,
+    /// The declared domains with their variables.
+    domains: Vec<(Var, Domain)>,
     cs: CylinderSphere<P>,
     ct: P,
     st: P,
     u: P,
 }
 
-fn setup() -> Setup {
-    let mut sym = Symbols::new(&VARS);
-    let mut v = |n: &str| sym.vars.poly::<Rational>(n);
+/// The index of a declared variable; a misspelled name is an error (it used to become
+/// variable 0, `a`, silently).
+fn declared(sym: &Symbols, name: &str) -> Result<Var, String> {
+    sym.vars.get(name).ok_or_else(|| {
+        format!(
+            "variable {name:?} is not declared (declared: {})",
+            VARS.join(", ")
+        )
+    })
+}
+
+fn setup() -> Result<Setup, String> {
+    let sym = Symbols::new(&VARS);
+    let v = |n: &str| declared(&sym, n).map(P::var);
     let cs = CylinderSphere {
-        a: v("a"),
-        b: v("b"),
-        r: v("r"),
+        a: v("a")?,
+        b: v("b")?,
+        r: v("r")?,
         beta: Angle {
-            cos: v("cb"),
-            sin: v("sb"),
+            cos: v("cb")?,
+            sin: v("sb")?,
         },
         gamma: Angle {
-            cos: v("cg"),
-            sin: v("sg"),
+            cos: v("cg")?,
+            sin: v("sg")?,
         },
-        center: Vec3::new(v("d"), v("e"), v("f")),
-        radius: v("R"),
+        center: Vec3::new(v("d")?, v("e")?, v("f")?),
+        radius: v("R")?,
     };
-    let (ct, st, u) = (v("ct"), v("st"), v("u"));
-    let var = |n: &str| sym.vars.get(n).unwrap_or_default();
+    let (ct, st, u) = (v("ct")?, v("st")?, v("u")?);
+    let var = |n: &str| declared(&sym, n);
     let relations = vec![
-        unit_circle_relation(var("ct"), var("st")),
-        unit_circle_relation(var("cb"), var("sb")),
-        unit_circle_relation(var("cg"), var("sg")),
+        unit_circle_relation(var("ct")?, var("st")?),
+        unit_circle_relation(var("cb")?, var("sb")?),
+        unit_circle_relation(var("cg")?, var("sg")?),
     ];
-    Setup {
+    let domains = domains()
+        .into_iter()
+        .map(|d| Ok((var(d.var)?, d.domain)))
+        .collect::<Result<_, String>>()?;
+    Ok(Setup {
         sym,
         relations,
+        domains,
         cs,
         ct,
         st,
         u,
-    }
+    })
 }
 
 /// F's coefficients in u: `(F(0), F(1), F(-1))` give `F2 = (F(1) + F(-1))/2 - F(0)`,
@@ -124,12 +200,14 @@ fn residuals_of(label: &str, a: &[P], b: &[P]) -> Vec<(String, P)> {
         .collect()
 }
 
-fn run(s: &Setup, residuals: &[(String, P)]) -> Outcome {
+/// Decides the residuals; a counter-example lies in the declared domains (the radii are
+/// positive) as well as on the unit circles.
+fn run(s: &Setup, residuals: &[(String, P)]) -> Result<Outcome, String> {
     let r: Vec<(&str, P)> = residuals
         .iter()
         .map(|(w, p)| (w.as_str(), p.clone()))
         .collect();
-    prove_all(&s.sym, &r, &s.relations, METHOD)
+    Ok(prove_all_in(&s.sym, &r, &s.relations, &s.domains, METHOD))
 }
 
 /// Checks a failing printed formula: the failure (with its counter-example) from the printed
@@ -139,10 +217,10 @@ fn with_correction(
     printed: &[(String, P)],
     corrected: &[(String, P)],
     correction: &str,
-) -> Outcome {
-    let mut out = run(s, printed);
+) -> Result<Outcome, String> {
+    let mut out = run(s, printed)?;
     if out.verdict == Verdict::Fails {
-        let fixed = run(s, corrected);
+        let fixed = run(s, corrected)?;
         out.evidence = if fixed.verdict == Verdict::Proved {
             format!(
                 "{}. Corrected form (proved equal to the derivation): {correction}",
@@ -155,11 +233,11 @@ fn with_correction(
             )
         };
     }
-    out
+    Ok(out)
 }
 
 fn eq5() -> Result<Outcome, String> {
-    let mut s = setup();
+    let mut s = setup()?;
     let printed: Vec<P> = EQ5
         .iter()
         .map(|t| s.sym.parse(t))
@@ -180,12 +258,12 @@ fn eq5() -> Result<Outcome, String> {
             "x = {}, y = {}, z = {}",
             EQ5_CORRECTED[0], EQ5_CORRECTED[1], EQ5_CORRECTED[2]
         ),
-    );
+    )?;
     // What (5) is instead: the product in the other order.
     let other = run(
         &s,
         &residuals_of("(5) - Rx(gamma) Ry(beta) v", &printed, &reversed),
-    );
+    )?;
     if out.verdict == Verdict::Fails && other.verdict == Verdict::Proved {
         out.evidence += ". The printed (5) is exactly Rx(gamma) Ry(beta) v (proved): the matrices of (4) are multiplied in the opposite order; (7)-(11) follow (5)";
     }
@@ -193,7 +271,7 @@ fn eq5() -> Result<Outcome, String> {
 }
 
 fn eq7() -> Result<Outcome, String> {
-    let mut s = setup();
+    let mut s = setup()?;
     let printed_f = s.sym.parse(EQ7)?;
     let x: Vec<P> = EQ5
         .iter()
@@ -201,27 +279,27 @@ fn eq7() -> Result<Outcome, String> {
         .collect::<Result<_, _>>()?;
     let x = Vec3::new(x[0].clone(), x[1].clone(), x[2].clone());
     let substituted = (&x - &s.cs.center).norm_squared() - s.cs.radius.square();
-    Ok(run(
+    run(
         &s,
         &[(
             "(7) as printed - |(5) - (d,e,f)|^2 + R^2".into(),
             printed_f - substituted,
         )],
-    ))
+    )
 }
 
 fn eq8() -> Result<Outcome, String> {
-    let mut s = setup();
+    let mut s = setup()?;
     let f = s.sym.parse(EQ7)?;
     let (f2, _, _) = coefficients_in_u(&mut s, &f)?;
-    Ok(run(
+    run(
         &s,
         &[("coefficient of u^2 in (7), minus 1".into(), f2 - P::one())],
-    ))
+    )
 }
 
 fn eq9() -> Result<Outcome, String> {
-    let mut s = setup();
+    let mut s = setup()?;
     let f = s.sym.parse(EQ7)?;
     let (_, f1, _) = coefficients_in_u(&mut s, &f)?;
     let half = P::constant(Rational::new(1, 2).map_err(|e| e.to_string())?);
@@ -229,7 +307,7 @@ fn eq9() -> Result<Outcome, String> {
     let printed = s.sym.parse(EQ9)?;
     let corrected = s.sym.parse(EQ9_CORRECTED)?;
     let core_a = s.cs.coefficients_at(&s.ct, &s.st).0;
-    Ok(with_correction(
+    with_correction(
         &s,
         &[(
             "(9) as printed - (half the u-coefficient of (7))".into(),
@@ -246,17 +324,17 @@ fn eq9() -> Result<Outcome, String> {
             ),
         ],
         &format!("A(t) = {EQ9_CORRECTED} (the last term's sign is -)"),
-    ))
+    )
 }
 
 fn eq10() -> Result<Outcome, String> {
-    let mut s = setup();
+    let mut s = setup()?;
     let f = s.sym.parse(EQ7)?;
     let (_, _, f0) = coefficients_in_u(&mut s, &f)?;
     let printed = s.sym.parse(EQ10)?;
     let corrected = s.sym.parse(EQ10_CORRECTED)?;
     let core_b = s.cs.coefficients_at(&s.ct, &s.st).1;
-    Ok(with_correction(
+    with_correction(
         &s,
         &[(
             "(10) as printed - (the u-free term of (7))".into(),
@@ -270,7 +348,7 @@ fn eq10() -> Result<Outcome, String> {
             ("core B(t) - (the u-free term of (7))".into(), core_b - &f0),
         ],
         &format!("B(t) = {EQ10_CORRECTED} (the printed (10) lacks - R^2, which (8) needs)"),
-    ))
+    )
 }
 
 fn eq11() -> Result<Outcome, String> {
@@ -319,8 +397,9 @@ pub fn example_claims() -> Vec<Claim> {
     ]
 }
 
+/// `n / d` for the constant, non-zero denominators of this module.
 fn q(n: i64, d: i64) -> Rational {
-    Rational::new(n, d).unwrap_or(Rational::ZERO)
+    Rational::new(n, d).expect("a non-zero constant denominator")
 }
 
 /// Spaeth's Example `n` from the shared fixture, its radians taken as rational rotations.
@@ -419,28 +498,17 @@ fn example1() -> Result<Outcome, String> {
 }
 
 /// The rational point of the unit circle nearest (by a convergent of tan(theta/2)) to an angle
-/// in radians, with its deviation: how exact code takes a printed angle in radians.
+/// in radians, with its parameter tau and deviation: how exact code takes a printed angle in
+/// radians. Kept for the callers in `plot` and `solve_cs`; the mathematics (and the fallible
+/// API) is [`exactcheck_core::rational_angle::rational_angle`].
+///
+/// # Panics
+/// When `theta` is not finite or `max_den < 1` (the callers pass finite angles, checked where
+/// they come from user input, and constant bounds).
 pub fn rational_angle(theta: f64, max_den: i64) -> (Angle<Rational>, Rational, f64) {
-    // Best rational approximation of tau = tan(theta/2) with denominator <= max_den.
-    let x = (theta / 2.0).tan();
-    let (mut h0, mut h1, mut k0, mut k1) = (0i64, 1i64, 1i64, 0i64);
-    let mut v = x;
-    for _ in 0..40 {
-        let a = v.floor();
-        let (h2, k2) = (a as i64 * h1 + h0, a as i64 * k1 + k0);
-        if k2 > max_den || k2 <= 0 {
-            break;
-        }
-        (h0, h1, k0, k1) = (h1, h2, k1, k2);
-        if (v - a).abs() < 1e-15 {
-            break;
-        }
-        v = 1.0 / (v - a);
-    }
-    let tau = q(h1, k1);
-    let angle = unit_circle_point(&tau).unwrap_or_else(|_| zero_angle());
-    let back = 2.0 * tau.to_f64().atan();
-    (angle, tau, back - theta)
+    let r = exactcheck_core::rational_angle::rational_angle::<Rational>(theta, max_den)
+        .expect("rational_angle needs a finite angle and max_den >= 1");
+    (r.angle, r.tau_value, r.deviation)
 }
 
 fn example2() -> Result<Outcome, String> {
@@ -501,7 +569,7 @@ pub fn sampling_config(
     radius: &Rational,
     eps: &Rational,
 ) -> CylinderSphere<Rational> {
-    let dir = unit_circle_point(tau0).unwrap_or_else(|_| zero_angle());
+    let dir = unit_circle_point(tau0).expect("1 + tau^2 > 0 for a rational tau");
     let delta = Rational::from_integer(5) + radius - eps;
     CylinderSphere {
         a: Rational::ZERO,
@@ -551,4 +619,73 @@ fn sampling() -> Result<Outcome, String> {
         method: "search over exact configurations; exact decision vs f64 sampling".into(),
         evidence: "no configuration of the searched family fooled the sampling".into(),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use exactcheck_exact::Radical;
+
+    #[test]
+    fn a_misspelled_variable_is_an_error() {
+        // Old behaviour: `vars.get(n).unwrap_or_default()` made "cT" silently variable 0 (a).
+        let sym = Symbols::new(&VARS);
+        let e = declared(&sym, "cT").unwrap_err();
+        assert!(e.contains("\"cT\" is not declared"), "{e}");
+        assert_eq!(declared(&sym, "ct").unwrap(), sym.vars.get("ct").unwrap());
+        assert_ne!(declared(&sym, "st").unwrap(), 0);
+    }
+
+    #[test]
+    fn radii_are_positive() {
+        let d = domains();
+        let names: Vec<&str> = d.iter().map(|d| d.var).collect();
+        assert_eq!(names, ["r", "R"]);
+        for d in &d {
+            assert!(VARS.contains(&d.var));
+            assert!(d.domain.contains(&Radical::from(&q(1, 2))));
+            assert!(!d.domain.contains(&Radical::zero()));
+            assert!(!d.domain.contains(&Radical::from(&q(-1, 1))));
+        }
+        assert_eq!(d[0].text(), "r > 0");
+    }
+
+    /// Regression: without domains the counter-examples of eq5 and eq10 had r = -1 and
+    /// R = -1/2, outside the geometry. The search now stays inside r > 0, R > 0.
+    #[test]
+    fn counter_examples_stay_inside_the_domains() {
+        use exactcheck_exact::prove::{decide, decide_in, Decision};
+        let s = setup().unwrap();
+        let rv = declared(&s.sym, "r").unwrap();
+        let r_of = |d: Decision<Rational>| match d {
+            Decision::Fails { point, .. } => point.into_iter().find(|(v, _)| *v == rv).unwrap().1,
+            _ => panic!("r + 1 is not identically zero"),
+        };
+        // r + 1 vanishes only at r = -1: with the domain, the point has r > 0.
+        let residual = s.cs.r.clone() + P::from_i64(1);
+        let free = r_of(decide(&residual, &s.relations, s.sym.vars.len()).unwrap());
+        let inside =
+            r_of(decide_in(&residual, &s.relations, &s.domains, s.sym.vars.len()).unwrap());
+        assert!(inside > Radical::zero(), "{inside}");
+        assert!(s
+            .domains
+            .iter()
+            .all(|(v, d)| *v != rv || d.contains(&inside)));
+        assert_ne!(
+            free,
+            Radical::from(&q(-1, 1)),
+            "r = -1 is not a counter-example of r + 1"
+        );
+        for (f, name) in [(eq5 as fn() -> _, "r"), (eq10, "R")] {
+            let e = f().unwrap().evidence;
+            assert!(!e.contains(&format!("{name} = -")), "{e}");
+        }
+    }
+
+    #[test]
+    fn the_failing_equations_fail_inside_the_domains() {
+        for f in [eq5, eq9, eq10] {
+            assert_eq!(f().unwrap().verdict, Verdict::Fails);
+        }
+    }
 }

@@ -7,6 +7,11 @@
 use super::engine::{prove_all, Rng, Symbols};
 use super::juttler_geometry::{circle_preimage, line_image, line_preimage, plane_lines, satz7};
 use super::{Claim, Outcome, Verdict};
+
+mod converse;
+mod interpolation;
+
+use converse::{converse_h, converse_k};
 use exactcheck_core::quadric::{
     alpha, alpha_preimage_point, dietz, lebesgue, paraboloid_form, psi, sigma, sigma_inverse,
     sphere_form, tau, theta, theta_preimage_point,
@@ -14,6 +19,7 @@ use exactcheck_core::quadric::{
 use exactcheck_core::{det4, Hom4, Ring};
 use exactcheck_exact::poly::Poly;
 use exactcheck_exact::{ComplexRadical, Rational};
+use interpolation::{interpolation, interpolation_degree};
 
 type P = Poly<Rational>;
 
@@ -56,7 +62,8 @@ pub fn claims() -> Vec<Claim> {
         claim!("juttler.satz8", Proved, "Satz 8: psi restricted to the plane q3 = q0 equals tau (16) = (q0^2, q0q1, q0q2, q1q2)", satz8),
         claim!("juttler.satz9", Proved, "Satz 9: psi = tau o alpha with alpha (17) = (q0q3, q1q3, q0q2, q0q3)", satz9),
         claim!("juttler.lemma10", Proved, "Lemma 10: the alpha-preimage of q = (q0,q1,q2,q0) is the line lambda (q0,q1,q2,q0) + mu (q0,q1,0,0) (18)", lemma10),
-        claim!("juttler.interpolation", Holds, "interpolation on K by rational curves reduces to a homogeneous linear system (and works), with fewer degrees than plain stereographic projection", interpolation),
+        claim!("juttler.interpolation", Holds, "interpolation on K by rational curves reduces to a homogeneous linear system (and works)", interpolation),
+        claim!("juttler.interpolation_degree", Fails, "the interpolating curves on K need fewer degrees than with plain stereographic projection", interpolation_degree),
         claim!("juttler.satz7", Holds, "Satz 7 (Dietz): if a biquadratic Bezier patch y(u,v) lies on K, with boundary circles y(0,v), y(u,0), y(1,v), y(u,1) meeting at the corners p_i and second points q_i, then p1, q2, p3, q4 lie on a circle (and q1, p2, q3, p4) — Miquel's theorem", satz7),
         claim!("juttler.satz11", Proved, "Satz 11: every line (18) meets both real focal lines (1,lambda,0,0) and (0,0,1,mu)", satz11),
     ]
@@ -127,7 +134,7 @@ fn lebesgue_claim() -> Result<Outcome, String> {
         &derived,
     ));
     let mut out = decide(&sym, &res, &[], "symbolic expansion over Q[p0..p3]");
-    out.evidence = format!("{}; {}", out.evidence, converse("K")?);
+    out.evidence = format!("{}; {}", out.evidence, converse_k()?);
     Ok(out)
 }
 
@@ -145,7 +152,7 @@ fn dietz_claim() -> Result<Outcome, String> {
         &derived,
     ));
     let mut out = decide(&sym, &res, &[], "symbolic expansion over Q[q0..q3]");
-    out.evidence = format!("{}; {}", out.evidence, converse("H")?);
+    out.evidence = format!("{}; {}", out.evidence, converse_h()?);
     Ok(out)
 }
 
@@ -453,7 +460,8 @@ pub(super) fn satz1() -> Result<Outcome, String> {
     let mut sym = Symbols::new(&["t", "u", "v"]);
     let mut res: Vec<(String, P)> = Vec::new();
     let inv_binom = |n: usize, k: usize| {
-        P::constant(Rational::new(1, binomial(n as u32, k as u32) as i64).unwrap_or(Rational::ONE))
+        let b = i64::try_from(binomial(n as u32, k as u32)).expect("C(6, k) fits in i64");
+        P::constant(Rational::new(1, b).expect("a binomial coefficient is non-zero"))
     };
     for n in 1..=3usize {
         let x: [Bernstein<P>; 4] = std::array::from_fn(|a| {
@@ -551,125 +559,4 @@ pub(super) fn satz1() -> Result<Outcome, String> {
         );
     }
     Ok(out)
-}
-
-/// Interpolation on K is a linear problem (and works): random exact points of K (Lebesgue
-/// images of random integer points) at random distinct parameters.
-pub(super) fn interpolation() -> Result<Outcome, String> {
-    use exactcheck_core::sphere_interpolation::interpolate;
-    let mut rng = Rng::new(0x1A7E);
-    let mut runs = 0;
-    let mut table = Vec::new();
-    for count in 1..=7usize {
-        let mut delta_degrees = Vec::new();
-        let mut sigma_degrees = Vec::new();
-        for _ in 0..4 {
-            let points: Vec<Hom4<Rational>> = (0..count)
-                .map(|_| loop {
-                    let k = lebesgue(&rng.nonzero_hom4(6));
-                    if !k.0[0].is_zero() {
-                        break k;
-                    }
-                })
-                .collect();
-            let mut params: Vec<Rational> = Vec::new();
-            while params.len() < count {
-                let t = Rational::new(rng.int(-50, 50), 50).unwrap_or(Rational::ZERO);
-                if !params.contains(&t) {
-                    params.push(t);
-                }
-            }
-            let r = interpolate(&points, &params).map_err(|e| format!("{count} points: {e}"))?;
-            // Exact checks: through every point at its parameter, and on K identically.
-            for (k, t) in points.iter().zip(&params) {
-                if !r.curve.eval_hom(t).proj_eq(k) {
-                    return Ok(Outcome {
-                        verdict: Verdict::Fails,
-                        method: "exact linear algebra over Q".into(),
-                        evidence: format!("the curve for {count} points misses a point at t = {t}"),
-                    });
-                }
-            }
-            let c = r.curve.hom_coordinates();
-            let form = c[0]
-                .mul(&c[0])
-                .checked_sub(&c[1].mul(&c[1]))
-                .and_then(|f| f.checked_sub(&c[2].mul(&c[2])))
-                .and_then(|f| f.checked_sub(&c[3].mul(&c[3])))
-                .map_err(|e| e.to_string())?;
-            if form.coeffs().iter().any(|x| !x.is_zero()) {
-                return Ok(Outcome {
-                    verdict: Verdict::Fails,
-                    method: "exact linear algebra over Q".into(),
-                    evidence: format!("the curve for {count} points leaves K"),
-                });
-            }
-            delta_degrees.push(r.degree);
-            sigma_degrees.push(r.sigma_degree);
-            runs += 1;
-        }
-        let d = delta_degrees.iter().max().copied().unwrap_or(0);
-        let s = sigma_degrees.iter().flatten().max().copied();
-        table.push(format!(
-            "N={count}: {d} vs {}",
-            s.map_or("none".into(), |s| s.to_string())
-        ));
-    }
-    Ok(Outcome {
-        verdict: Verdict::Holds,
-        method: "exact linear algebra over Q (nullspace), exact checks".into(),
-        evidence: format!(
-            "{runs} random instances (1..7 points of K at random parameters): each curve passes through every point and lies on K; image degree with delta vs plain sigma: {}",
-            table.join(", ")
-        ),
-    })
-}
-
-/// The converses of (7) and (8) on exact points: every random rational point of K (of H) has a
-/// preimage under delta (psi), found on its projecting line (12) (line (18)).
-pub(super) fn converse(which: &str) -> Result<String, String> {
-    let mut rng = Rng::new(if which == "K" { 0xC0 } else { 0xC1 });
-    let mut n = 0;
-    for _ in 0..200 {
-        let x = rng.nonzero_hom4(9);
-        if which == "K" {
-            let k = lebesgue(&x);
-            let line = exactcheck_core::sphere_interpolation::preimage_line(&k);
-            let (l, m) = (
-                Rational::from_integer(rng.int(-5, 5)),
-                Rational::from_integer(rng.int(-5, 5)),
-            );
-            let p = line[0].scale(&l).add(&line[1].scale(&m));
-            if p.is_zero() || lebesgue(&p).is_zero() {
-                continue;
-            }
-            if !lebesgue(&p).proj_eq(&k) {
-                return Err(format!("no preimage on the projecting line of {k:?}"));
-            }
-        } else {
-            let h = dietz(&x);
-            if h.0[0].is_zero() {
-                continue;
-            }
-            let q = Hom4::new(
-                h.0[0].clone(),
-                h.0[1].clone(),
-                h.0[2].clone(),
-                h.0[0].clone(),
-            );
-            let (l, m) = (
-                Rational::from_integer(rng.int(-5, 5)),
-                Rational::from_integer(rng.int(-5, 5)),
-            );
-            let p = alpha_preimage_point(&q, &l, &m);
-            if p.is_zero() || psi(&p).is_zero() {
-                continue;
-            }
-            if !psi(&p).proj_eq(&h) {
-                return Err(format!("no preimage on the projecting line of {h:?}"));
-            }
-        }
-        n += 1;
-    }
-    Ok(format!("converse: {n} random rational points of {which} all have preimages on their projecting lines"))
 }
