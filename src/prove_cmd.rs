@@ -288,9 +288,9 @@ fn random_test(
         if let Some(l) = log2 {
             obj["log2_error_bound"] = if l.is_finite() { json!(l) } else { json!(null) };
         }
-        println!("{obj}");
+        crate::output::println(&obj)?;
     } else {
-        println!("{verdict}: {evidence} [{method}]");
+        crate::output::println(format_args!("{verdict}: {evidence} [{method}]"))?;
     }
     Ok(code)
 }
@@ -483,9 +483,9 @@ fn prove_over<C: PointField + Display>(
             obj["value"] = json!(value.to_string());
             obj["normal_form"] = json!(normal_form.display(&vars).to_string());
         }
-        println!("{obj}");
+        crate::output::println(&obj)?;
     } else {
-        println!("{verdict}: {evidence}");
+        crate::output::println(format_args!("{verdict}: {evidence}"))?;
     }
     Ok(code)
 }

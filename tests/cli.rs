@@ -562,3 +562,28 @@ fn prove_accepts_a_leading_minus() {
     let o = exactcheck(&["prove", "x", "0", "--where", "-x = 1"]);
     assert!(stdout(&o).starts_with("fails"), "{}", stdout(&o));
 }
+
+/// Regression (issue 15): input outside the grammar was misread as variables and juxtaposition
+/// (`1e3` as the variable `e3`, `sin(2x)` as `sin*(2x)`) and answered `fails`. Scientific
+/// notation is now read exactly; an unknown function is a one-line error, exit 2.
+#[test]
+fn prove_reads_scientific_notation_and_refuses_unknown_functions() {
+    for (lhs, rhs) in [
+        ("1e3", "1000"),
+        ("1e5", "100000"),
+        ("x + 2.5e-3", "x + 0.0025"),
+        ("1E+5 x", "100000 x"),
+    ] {
+        let (code, v) = prove_json(&[lhs, rhs]);
+        assert_eq!(code, Some(0), "{lhs} = {rhs}: {v}");
+        assert_eq!(v["verdict"], "proved", "{lhs} = {rhs}: {v}");
+    }
+    for args in [["sin(x)", "x"], ["sin(2x)", "2 sin(x) cos(x)"]] {
+        let o = exactcheck(&["prove", args[0], args[1]]);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        assert!(o.stdout.is_empty(), "{args:?}: no verdict may be printed");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+        assert!(err.contains("unknown function 'sin'"), "{err}");
+    }
+}

@@ -51,6 +51,8 @@ fn commands() -> Vec<(Vec<&'static str>, &'static str)> {
         (vec!["regress", "cylinder-sphere", "--samples", "20"], ""),
         (vec!["plot", "spaeth", "--example", "2", "-o", "-"], ""),
         (vec!["solve", "-"], PROBLEM),
+        (vec!["prove", "(x+y)^2", "x^2 + 2x y + y^2"], ""),
+        (vec!["prove", "x", "x", "--random", "3", "--json"], ""),
     ]
 }
 

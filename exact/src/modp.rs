@@ -35,7 +35,6 @@ use crate::rational::Rational;
 use exactcheck_core::{Field, Ring, Rng, ZeroDivisor};
 use num_bigint::{BigInt, Sign as BigSign};
 use std::fmt;
-use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 
 /// The modulus, the Mersenne prime `2^61 - 1`.
 pub const P: u64 = (1u64 << 61) - 1;
@@ -229,51 +228,6 @@ pub fn schwartz_zippel_log2_bound(total_degree: u64, trials: u32) -> f64 {
 
 // ---------------------------------------------------------------------- operator plumbing
 
-macro_rules! modp_binop {
-    ($tr:ident, $m:ident, $atr:ident, $am:ident, $imp:ident) => {
-        impl $tr for ModP {
-            type Output = ModP;
-            #[inline]
-            fn $m(self, rhs: ModP) -> ModP {
-                self.$imp(rhs)
-            }
-        }
-        impl<'b> $tr<&'b ModP> for ModP {
-            type Output = ModP;
-            #[inline]
-            fn $m(self, rhs: &'b ModP) -> ModP {
-                self.$imp(*rhs)
-            }
-        }
-        impl<'a> $tr<ModP> for &'a ModP {
-            type Output = ModP;
-            #[inline]
-            fn $m(self, rhs: ModP) -> ModP {
-                (*self).$imp(rhs)
-            }
-        }
-        impl<'a, 'b> $tr<&'b ModP> for &'a ModP {
-            type Output = ModP;
-            #[inline]
-            fn $m(self, rhs: &'b ModP) -> ModP {
-                (*self).$imp(*rhs)
-            }
-        }
-        impl $atr for ModP {
-            #[inline]
-            fn $am(&mut self, rhs: ModP) {
-                *self = self.$imp(rhs);
-            }
-        }
-        impl<'b> $atr<&'b ModP> for ModP {
-            #[inline]
-            fn $am(&mut self, rhs: &'b ModP) {
-                *self = self.$imp(*rhs);
-            }
-        }
-    };
-}
-
 impl ModP {
     #[inline]
     fn div_impl(self, rhs: ModP) -> ModP {
@@ -284,25 +238,13 @@ impl ModP {
     }
 }
 
-modp_binop!(Add, add, AddAssign, add_assign, add_impl);
-modp_binop!(Sub, sub, SubAssign, sub_assign, sub_impl);
-modp_binop!(Mul, mul, MulAssign, mul_assign, mul_impl);
-modp_binop!(Div, div, DivAssign, div_assign, div_impl);
-
-impl Neg for ModP {
-    type Output = ModP;
-    #[inline]
-    fn neg(self) -> ModP {
-        ModP(if self.0 == 0 { 0 } else { P - self.0 })
-    }
-}
-
-impl Neg for &ModP {
-    type Output = ModP;
-    #[inline]
-    fn neg(self) -> ModP {
-        -*self
-    }
+exactcheck_core::ring_ops! {
+    impl[] ModP;
+    Neg::neg: |a| ModP(if a.0 == 0 { 0 } else { P - a.0 });
+    Add::add, AddAssign::add_assign: |a, b| a.add_impl(*b);
+    Sub::sub, SubAssign::sub_assign: |a, b| a.sub_impl(*b);
+    Mul::mul, MulAssign::mul_assign: |a, b| a.mul_impl(*b);
+    Div::div, DivAssign::div_assign: |a, b| a.div_impl(*b);
 }
 
 impl Ring for ModP {

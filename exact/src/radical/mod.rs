@@ -60,70 +60,9 @@
 use crate::expr::{parse_expr, Coefficient, ExprError};
 use crate::rational::Rational;
 use exactcheck_core::{Field, Sqrt};
-use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 use std::str::FromStr;
 
 // ====================================================================== operator plumbing
-
-macro_rules! binop {
-    ($t:ty, $tr:ident, $m:ident, $atr:ident, $am:ident, $own:ident, $borrow:ident) => {
-        impl<'b> $tr<&'b $t> for $t {
-            type Output = $t;
-            fn $m(self, rhs: &'b $t) -> $t {
-                <$t>::$own(self, rhs)
-            }
-        }
-        impl $tr<$t> for $t {
-            type Output = $t;
-            fn $m(self, rhs: $t) -> $t {
-                <$t>::$own(self, &rhs)
-            }
-        }
-        impl<'a, 'b> $tr<&'b $t> for &'a $t {
-            type Output = $t;
-            fn $m(self, rhs: &'b $t) -> $t {
-                <$t>::$borrow(self, rhs)
-            }
-        }
-        impl<'a> $tr<$t> for &'a $t {
-            type Output = $t;
-            fn $m(self, rhs: $t) -> $t {
-                <$t>::$borrow(self, &rhs)
-            }
-        }
-        impl<'b> $atr<&'b $t> for $t {
-            fn $am(&mut self, rhs: &'b $t) {
-                *self = <$t>::$own(std::mem::take(self), rhs);
-            }
-        }
-        impl $atr<$t> for $t {
-            fn $am(&mut self, rhs: $t) {
-                *self = <$t>::$own(std::mem::take(self), &rhs);
-            }
-        }
-    };
-}
-
-macro_rules! field_ops {
-    ($t:ty) => {
-        binop!($t, Add, add, AddAssign, add_assign, add_owned, add_borrowed);
-        binop!($t, Sub, sub, SubAssign, sub_assign, sub_owned, sub_borrowed);
-        binop!($t, Mul, mul, MulAssign, mul_assign, mul_owned, mul_borrowed);
-        binop!($t, Div, div, DivAssign, div_assign, div_owned, div_borrowed);
-        impl Neg for $t {
-            type Output = $t;
-            fn neg(self) -> $t {
-                self.neg_in_place()
-            }
-        }
-        impl Neg for &$t {
-            type Output = $t;
-            fn neg(self) -> $t {
-                self.neg_borrowed()
-            }
-        }
-    };
-}
 
 mod complex;
 mod field;
@@ -135,8 +74,23 @@ pub use complex::ComplexRadical;
 pub use field::Radical;
 pub use radicand::Radicand;
 
-field_ops!(Radical);
-field_ops!(ComplexRadical);
+exactcheck_core::ring_ops! {
+    impl[] Radical;
+    Neg::neg: |a| a.neg_borrowed(), owned |a| a.neg_in_place();
+    Add::add, AddAssign::add_assign: |a, b| a.add_borrowed(b), owned |a, b| a.add_owned(b);
+    Sub::sub, SubAssign::sub_assign: |a, b| a.sub_borrowed(b), owned |a, b| a.sub_owned(b);
+    Mul::mul, MulAssign::mul_assign: |a, b| a.mul_borrowed(b), owned |a, b| a.mul_owned(b);
+    Div::div, DivAssign::div_assign: |a, b| a.div_borrowed(b), owned |a, b| a.div_owned(b);
+}
+
+exactcheck_core::ring_ops! {
+    impl[] ComplexRadical;
+    Neg::neg: |a| a.neg_borrowed(), owned |a| a.neg_in_place();
+    Add::add, AddAssign::add_assign: |a, b| a.add_borrowed(b), owned |a, b| a.add_owned(b);
+    Sub::sub, SubAssign::sub_assign: |a, b| a.sub_borrowed(b), owned |a, b| a.sub_owned(b);
+    Mul::mul, MulAssign::mul_assign: |a, b| a.mul_borrowed(b), owned |a, b| a.mul_owned(b);
+    Div::div, DivAssign::div_assign: |a, b| a.div_borrowed(b), owned |a, b| a.div_owned(b);
+}
 
 // ====================================================================== parsing
 
