@@ -486,18 +486,22 @@ mod tests {
         }
     }
 
-    #[test]
-    fn contact_cases() {
+    /// The r = 5 cylinder about the z axis and a sphere of radius `radius` at `c`.
+    fn cs(c: (f64, f64, f64), radius: f64) -> CylinderSphere<f64> {
         let one = Angle { cos: 1.0, sin: 0.0 };
-        let cs = |c: (f64, f64, f64), r: f64| CylinderSphere {
+        CylinderSphere {
             a: 0.0,
             b: 0.0,
             r: 5.0,
             beta: one.clone(),
-            gamma: one.clone(),
+            gamma: one,
             center: Vec3::new(c.0, c.1, c.2),
-            radius: r,
-        };
+            radius,
+        }
+    }
+
+    #[test]
+    fn contact_cases() {
         // Spaeth's examples 1 and 3.
         assert_eq!(
             cs((1.0, 0.0, 0.0), 7.0).contact_by_distance(),
@@ -526,16 +530,6 @@ mod tests {
     fn on_the_axis_with_equal_radii_the_surfaces_touch_along_a_circle() {
         // Issue 15: centre (0,0,3) on the axis of the r = 5 cylinder, R = 5. The old decision
         // answered Crossing (it took r - R <= 0 as "the cylinder passes through the sphere").
-        let one = Angle { cos: 1.0, sin: 0.0 };
-        let cs = |c: (f64, f64, f64), radius: f64| CylinderSphere {
-            a: 0.0,
-            b: 0.0,
-            r: 5.0,
-            beta: one.clone(),
-            gamma: one.clone(),
-            center: Vec3::new(c.0, c.1, c.2),
-            radius,
-        };
         let on_axis = cs((0.0, 0.0, 3.0), 5.0);
         assert_ne!(on_axis.contact_by_distance(), Contact::Crossing);
         assert_eq!(on_axis.contact_by_distance(), Contact::Tangent);

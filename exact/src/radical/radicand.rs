@@ -5,6 +5,7 @@
 //! well by these textbook algorithms.
 
 use crate::gcd::{gcd_biguint_u64, gcd_u64};
+use crate::modp::is_prime_u64;
 use crate::rational::Rational;
 use num_bigint::{BigInt, BigUint, Sign as BigSign};
 use num_integer::Integer;
@@ -263,54 +264,14 @@ pub(super) fn integer_u64(v: u64) -> Rational {
 }
 
 // ====================================================================== number theory
+//
+// Primality is `crate::modp::is_prime_u64` (deterministic Miller–Rabin), shared with the random
+// primes of `prove --random`.
 
 /// `a b mod m`.
 #[inline]
 pub(super) fn mul_mod(a: u64, b: u64, m: u64) -> u64 {
     ((a as u128 * b as u128) % m as u128) as u64
-}
-
-pub(super) fn pow_mod(mut a: u64, mut e: u64, m: u64) -> u64 {
-    let mut acc = 1 % m;
-    a %= m;
-    while e > 0 {
-        if e & 1 == 1 {
-            acc = mul_mod(acc, a, m);
-        }
-        a = mul_mod(a, a, m);
-        e >>= 1;
-    }
-    acc
-}
-
-/// Deterministic Miller–Rabin for 64-bit integers (the first twelve prime bases suffice below
-/// 3.3 · 10^24).
-pub(super) fn is_prime_u64(n: u64) -> bool {
-    const BASES: [u64; 12] = [2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37];
-    if n < 2 {
-        return false;
-    }
-    for p in BASES {
-        if n % p == 0 {
-            return n == p;
-        }
-    }
-    let s = (n - 1).trailing_zeros();
-    let d = (n - 1) >> s;
-    'bases: for a in BASES {
-        let mut x = pow_mod(a, d, n);
-        if x == 1 || x == n - 1 {
-            continue;
-        }
-        for _ in 1..s {
-            x = mul_mod(x, x, n);
-            if x == n - 1 {
-                continue 'bases;
-            }
-        }
-        return false;
-    }
-    true
 }
 
 /// A non-trivial factor of an odd composite `n` with no prime factor below 2^10, by Pollard's rho

@@ -1,7 +1,8 @@
 //! Unit tests of the radicand factoring, the field and parsing into it.
 
-use super::radicand::{is_prime_u64, remove_prime_power, square_free_big, square_free_u64};
+use super::radicand::{remove_prime_power, square_free_big, square_free_u64};
 use super::*;
+use crate::modp::is_prime_u64;
 use crate::radical::radicand::integer_u64;
 use exactcheck_core::{OrderedField, Ring, Sign};
 use num_bigint::BigUint;
