@@ -164,7 +164,7 @@ impl Rng {
     pub fn rational(&mut self, r: i64, den: i64) -> Rational {
         let n = self.int(-r, r);
         let d = self.int(1, den);
-        Rational::new(n, d).unwrap_or(Rational::ZERO)
+        Rational::new(n, d).expect("the denominator d >= 1 is not zero")
     }
     /// A non-zero rational as [`Rng::rational`].
     pub fn nonzero(&mut self, r: i64, den: i64) -> Rational {

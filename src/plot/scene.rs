@@ -148,7 +148,7 @@ pub(super) fn root_degrees(p: &UPoly, ri: &RootInterval) -> f64 {
     match ri.exact_value() {
         Some(v) => tau_degrees(to_f64(v)),
         None => {
-            let width = Rational::new(1, 1 << 40).unwrap_or(Rational::ONE);
+            let width = Rational::new(1, 1 << 40).expect("2^40 is not zero");
             tau_degrees(p.refine(ri, &width).to_f64())
         }
     }
