@@ -52,6 +52,10 @@ pub enum Command {
         /// Exact and f64 side by side, where the kind allows it.
         #[arg(long)]
         both: bool,
+        /// Print the JSON Schema of KIND's problem input (the files of `docs/schema/`) instead
+        /// of solving.
+        #[arg(long, value_name = "KIND", conflicts_with_all = ["file", "exact", "float", "both"])]
+        schema: Option<String>,
     },
     /// Run a benchmark workload and print its check values and time.
     Bench(crate::bench::BenchArgs),
@@ -247,7 +251,12 @@ pub fn run(cli: Cli) -> Result<ExitCode, crate::Error> {
             exact: _,
             float,
             both,
+            schema,
         } => {
+            if let Some(kind) = schema {
+                crate::output::print(crate::solve::schema(&kind)?)?;
+                return Ok(ExitCode::SUCCESS);
+            }
             let mode = if both {
                 crate::solve::Mode::Both
             } else if float {

@@ -372,3 +372,28 @@ fn committed_schemas_are_current() {
     }
     assert_eq!(n, 2);
 }
+
+/// `solve --schema KIND` prints the committed schema file; an unknown kind is a one-line error.
+#[test]
+fn solve_schema_flag_prints_the_committed_schema() {
+    let bin = env!("CARGO_BIN_EXE_exactcheck");
+    for kind in ["sphere_interpolation", "cylinder_sphere"] {
+        let o = std::process::Command::new(bin)
+            .args(["solve", "--schema", kind])
+            .output()
+            .unwrap();
+        assert_eq!(o.status.code(), Some(0), "{kind}");
+        let committed = std::fs::read_to_string(format!(
+            "{}/docs/schema/{kind}.json",
+            env!("CARGO_MANIFEST_DIR")
+        ))
+        .unwrap();
+        assert_eq!(String::from_utf8_lossy(&o.stdout), committed, "{kind}");
+    }
+    let o = std::process::Command::new(bin)
+        .args(["solve", "--schema", "no_such_kind"])
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(2));
+    assert_eq!(String::from_utf8_lossy(&o.stderr).trim_end().lines().count(), 1);
+}
