@@ -395,5 +395,11 @@ fn solve_schema_flag_prints_the_committed_schema() {
         .output()
         .unwrap();
     assert_eq!(o.status.code(), Some(2));
-    assert_eq!(String::from_utf8_lossy(&o.stderr).trim_end().lines().count(), 1);
+    assert_eq!(
+        String::from_utf8_lossy(&o.stderr)
+            .trim_end()
+            .lines()
+            .count(),
+        1
+    );
 }
