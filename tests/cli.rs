@@ -1,5 +1,8 @@
 //! End-to-end tests of the `exactcheck` binary: output contracts and exit statuses.
 
+mod common;
+
+use common::solve_stdin;
 use std::process::{Command, Output};
 
 fn exactcheck(args: &[&str]) -> Output {
@@ -100,25 +103,6 @@ fn bad_input_is_one_line_and_status_2() {
     }
     let o = exactcheck(&["regress", "cylinder-sphere", "--samples", "0"]);
     assert_eq!(String::from_utf8_lossy(&o.stderr).lines().count(), 1);
-}
-
-fn solve_stdin(problem: &str, extra: &[&str]) -> Output {
-    use std::io::Write;
-    let mut child = Command::new(env!("CARGO_BIN_EXE_exactcheck"))
-        .arg("solve")
-        .args(extra)
-        .stdin(std::process::Stdio::piped())
-        .stdout(std::process::Stdio::piped())
-        .stderr(std::process::Stdio::piped())
-        .spawn()
-        .expect("the binary runs");
-    child
-        .stdin
-        .take()
-        .expect("stdin")
-        .write_all(problem.as_bytes())
-        .expect("write");
-    child.wait_with_output().expect("finishes")
 }
 
 #[test]
@@ -367,7 +351,7 @@ fn solve_cylinder_sphere_rejects_bad_input() {
     }
     // Float mode accepts radians and float literals.
     let o = solve_stdin(
-        &cylinder_sphere_problem(
+        cylinder_sphere_problem(
             r#"{"radians":1.0}"#,
             r#"{"radians":-1.0}"#,
             "[1.0,2.0,4.0]",
