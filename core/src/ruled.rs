@@ -370,8 +370,8 @@ mod tests {
         let sub = s.substitution(&plane);
         let thm = s.plane_section_scaled(&plane);
         for (k, h) in thm.iter().enumerate() {
-            for a in 0..4 {
-                assert!((h.0[a] - sub[a][k]).abs() < 1e-12, "k={k} a={a}");
+            for (a, coordinate) in sub.iter().enumerate() {
+                assert!((h.0[a] - coordinate[k]).abs() < 1e-12, "k={k} a={a}");
             }
         }
     }
