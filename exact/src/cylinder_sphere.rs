@@ -3,7 +3,7 @@
 //! Angles are rational points of the unit circle; the curve parameter is the rational circle
 //! parameter `tau` (`cos t = (1 - tau^2)/(1 + tau^2)`, `sin t = 2 tau/(1 + tau^2)`, `tau = infinity`
 //! at `t = pi`). Real points exist where `P(tau) = (1 + tau^2)^2 (A^2 - B) >= 0`
-//! ([`TrigCoefficients::discriminant_in_tau`]); the set is found by exact real root isolation
+//! ([`TrigCoefficients::discriminant_in_tau`](exactcheck_core::cylinder_sphere::TrigCoefficients::discriminant_in_tau)); the set is found by exact real root isolation
 //! ([`crate::univariate`]), never by sampling. On it the curve is
 //! `x(tau, +-) = point(cos t, sin t, u)`, `u = -A(t) +- sqrt(P(tau))/(1 + tau^2)`: rational functions
 //! of tau plus one square root.
