@@ -147,6 +147,28 @@ pub fn unit_roots<T: OrderedField>(
     Ok(isolate_square_free(&q))
 }
 
+/// The roots in `[0, 1]` of a polynomial **already known to be square-free** and non-zero (for
+/// example the output of [`square_free`], or a square-free part computed by a faster gcd of
+/// the caller's own, as `exactcheck_exact::univariate` does with its primitive remainder
+/// sequence): step 2 onwards of the module's algorithm, without the gcd.
+///
+/// # Panics
+/// When `q` is the zero polynomial. A `q` with a multiple root in `[0, 1]` breaks the
+/// termination argument: in debug builds this is checked (by a gcd) and panics; in release
+/// builds the subdivision around the multiple root does not end.
+pub fn unit_roots_square_free<T: OrderedField>(q: &Bernstein<T>) -> Vec<IsolatedRoot<T>> {
+    assert!(!q.is_zero(), "unit_roots_square_free: the zero polynomial");
+    debug_assert!(
+        {
+            let a = trim(q.to_power());
+            let d = derivative(&a);
+            d.is_empty() || poly_gcd(&a, &d).len() == 1
+        },
+        "unit_roots_square_free: the polynomial is not square-free"
+    );
+    isolate_square_free(q)
+}
+
 /// Narrow an isolated root of p to width <= `width` (bisection on the square-free part, exact
 /// midpoint hits become Exact).
 ///

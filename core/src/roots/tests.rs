@@ -232,3 +232,17 @@ fn a_line_has_its_root_exact() {
         "{fine:?}"
     );
 }
+
+#[test]
+fn square_free_entry_point_matches() {
+    let p = bern(&[q(1, 3), q(1, 3), q(1, 2), q(5, 6)]);
+    let sqf = square_free(&p).unwrap();
+    assert_eq!(sqf.degree(), 3);
+    assert_eq!(unit_roots_square_free(&sqf), unit_roots(&p).unwrap());
+}
+
+#[test]
+#[should_panic(expected = "zero polynomial")]
+fn square_free_entry_point_rejects_zero() {
+    unit_roots_square_free(&Bernstein::constant(q(0, 1), 2));
+}
