@@ -47,11 +47,14 @@
 //! operations. Isolation of irrational roots bisects about `log2(l * 2^k)` times per root, `l` as
 //! above, so a square-free part with a huge leading coefficient makes it slower, never wrong.
 
+mod bernstein_roots;
 mod isolate;
 #[cfg(test)]
 mod tests;
 mod upoly;
 
+pub use bernstein_roots::UnitRootMethod;
+pub use exactcheck_core::roots::{IsolatedRoot, ZeroPolynomial};
 pub use isolate::sign_variations;
 pub use upoly::UPolyDisplay;
 
