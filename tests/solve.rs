@@ -272,12 +272,7 @@ fn errors_name_the_field_path() {
         &["missing field `cylinder`"],
     );
     refused(r#"[1,2]"#, &[], &["must be a JSON object"]);
-    for kind in [
-        "ruled_plane",
-        "ruled_line",
-        "conic",
-        "ph_offset",
-    ] {
+    for kind in ["ruled_plane", "ruled_line", "conic", "ph_offset"] {
         refused(
             &format!(r#"{{"kind":"{kind}"}}"#),
             &[],
