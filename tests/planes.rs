@@ -190,6 +190,17 @@ fn degenerate_and_malformed_planes() {
     let o = solve_cli(pp("[1,2,3]", "[0,0,1]", "[0,0,0]", "[1,1,1]"), &["--float"]);
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("planes[1].normal: zero vector"));
+    // An f64 length that overflows: the normal cannot be normalised as the function requires.
+    let o = solve_cli(
+        pp(r#"["10^200","10^200",0]"#, "[0,0,1]", "[0,0,1]", "[1,1,1]"),
+        &["--float"],
+    );
+    let err = String::from_utf8_lossy(&o.stderr).into_owned();
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("planes[0].normal: its f64 length is inf"),
+        "{err}"
+    );
     refused(
         &pp("[1,2]", "[0,0,1]", "[0,0,1]", "[1,1,1]"),
         &["planes[0].normal", "expected 3 coordinates, found 2"],

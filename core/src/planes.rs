@@ -36,14 +36,14 @@
 //! # Forms
 //! * [`nearest_point_hom`]: the division-free homogeneous form `(numerator, G)` for any
 //!   [`Ring`], so that the construction can be proved over polynomials;
-//! * [`intersect`]: the divided form for a [`Field`], with the cases decided exactly (for exact
-//!   fields): [`PlanePair::Line`], [`PlanePair::Parallel`], [`PlanePair::Coincident`],
+//! * [`intersect`]: the divided form for an [`OrderedField`], with the cases decided exactly (for
+//!   exact fields): [`PlanePair::Line`], [`PlanePair::Parallel`], [`PlanePair::Coincident`],
 //!   [`PlanePair::ZeroNormal`].
 //!
 //! Hand-written because it is three lines of vector algebra whose derivation is the point; no
 //! geometry crate computes it over exact or symbolic scalars.
 
-use crate::scalar::{Field, Ring};
+use crate::scalar::{OrderedField, Ring};
 use crate::vector::Vec3;
 
 /// A plane in normal form: the points `x` with `normal . x = normal . point`.
@@ -138,10 +138,16 @@ pub enum PlanePair<T> {
 
 /// The intersection of two planes, every case decided by exact zero tests (for exact fields).
 ///
-/// Parallel normals (`n1 x n2 = 0`) give [`PlanePair::Coincident`] when the second plane's
-/// point lies on the first plane (`n1 . P2 = d1`; with `n2 = k n1` the second plane is then
-/// `n1 . x = n1 . P2`, the same plane), else [`PlanePair::Parallel`].
-pub fn intersect<T: Field>(p1: &Plane<T>, p2: &Plane<T>) -> PlanePair<T> {
+/// Parallel normals give [`PlanePair::Coincident`] when the second plane's point lies on the
+/// first plane (`n1 . P2 = d1`; with `n2 = k n1` the second plane is then `n1 . x = n1 . P2`,
+/// the same plane), else [`PlanePair::Parallel`]. The normals are parallel exactly when the
+/// denominator `G = |n1 x n2|^2` is zero: in an ordered field a sum of squares vanishes only
+/// when every term does. Deciding on `G` itself (rather than on `n1 x n2`) means the division
+/// that follows can never meet a zero divisor, also in `f64` where `G` may underflow to 0 for a
+/// tiny non-zero cross product (that case is then reported as parallel). Over fields that are
+/// not ordered (integers modulo p) `G` can vanish for non-parallel normals, and the point
+/// nearest the origin is not defined; hence the `OrderedField` bound.
+pub fn intersect<T: OrderedField>(p1: &Plane<T>, p2: &Plane<T>) -> PlanePair<T> {
     if p1.normal.is_zero() {
         return PlanePair::ZeroNormal {
             which: Which::First,
@@ -152,21 +158,20 @@ pub fn intersect<T: Field>(p1: &Plane<T>, p2: &Plane<T>) -> PlanePair<T> {
             which: Which::Second,
         };
     }
-    let q = direction(p1, p2);
-    if q.is_zero() {
+    let (numerator, g) = nearest_point_hom(p1, p2);
+    if g.is_zero() {
         return if p1.residual(&p2.point).is_zero() {
             PlanePair::Coincident
         } else {
             PlanePair::Parallel
         };
     }
-    let (numerator, g) = nearest_point_hom(p1, p2);
     let point = numerator
         .div_scalar(&g)
-        .expect("|n1 x n2|^2 != 0 over a field when n1 x n2 != 0 (a sum of squares of an exact non-zero vector)");
+        .expect("G = |n1 x n2|^2 was just tested to be non-zero");
     PlanePair::Line {
         point,
-        direction: q,
+        direction: direction(p1, p2),
     }
 }
 
@@ -193,6 +198,17 @@ mod tests {
             }
             other => panic!("{other:?}"),
         }
+    }
+
+    #[test]
+    fn an_underflowing_gram_determinant_is_not_a_division_by_zero() {
+        // n1 x n2 = (0, 0, 1e-170) is not zero in f64, but |n1 x n2|^2 = 1e-340 underflows to 0.
+        // The old decision on n1 x n2 went on to divide by G = 0 and panicked in `expect`; the
+        // decision on G reports the (numerically) parallel planes instead.
+        let a = Plane::new(Vec3::new(1e-170, 0.0, 0.0), Vec3::zero());
+        let b = Plane::new(Vec3::new(0.0, 1.0, 0.0), Vec3::zero());
+        assert!(!direction(&a, &b).is_zero());
+        assert_eq!(intersect(&a, &b), PlanePair::Coincident);
     }
 
     #[test]

@@ -233,22 +233,24 @@ fn exact(text: &str) -> Result<ExactAnswer, Error> {
     }
 }
 
-fn unit_f64(n: &Vec3<f64>) -> V3 {
+/// The normal normalised the JavaScript way, `V3.Scale(n, 1/V3.Length(n))`; an error naming the
+/// field when its f64 length is 0 or not finite (`|n|^2` underflows or overflows), where the
+/// normalised vector would be NaN or zero.
+fn unit_f64(n: &Vec3<f64>, i: usize) -> Result<V3, Error> {
     let v = [n.x, n.y, n.z];
-    scale(&v, 1.0 / length(&v))
+    let l = length(&v);
+    if !(l.is_finite() && l > 0.0) {
+        return Err(Error::Input(format!(
+            "planes[{i}].normal: its f64 length is {l}, so it cannot be normalised in f64 as the published function requires; use exact mode"
+        )));
+    }
+    Ok(scale(&v, 1.0 / l))
 }
 
 fn float_answer(text: &str) -> Result<FloatAnswer, Error> {
     let input: Input<FloatNumber> = parse(text)?;
     let [p1, p2] = planes(&input, |x| x.0)?;
-    let (n1, n2) = (unit_f64(&p1.normal), unit_f64(&p2.normal));
-    for (i, n) in [n1, n2].iter().enumerate() {
-        if !n.iter().all(|c| c.is_finite()) {
-            return Err(Error::Input(format!(
-                "planes[{i}].normal: its length is not a finite non-zero f64, so it cannot be normalised in f64; use exact mode"
-            )));
-        }
-    }
+    let (n1, n2) = (unit_f64(&p1.normal, 0)?, unit_f64(&p2.normal, 1)?);
     let pt = |p: &Vec3<f64>| [p.x, p.y, p.z];
     let result = interction_line_of_2_areas(&pt(&p1.point), &n1, &pt(&p2.point), &n2);
     Ok(FloatAnswer {
