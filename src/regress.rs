@@ -165,7 +165,7 @@ pub fn run(args: &RegressArgs) -> Result<ExitCode, Error> {
                 "regress plane-plane runs on the fast exact rationals only (--scalar fast)".into(),
             ));
         }
-        let report = planes::run(args.samples, args.seed);
+        let report = planes::run(args.samples, args.seed, args.worst);
         if args.json {
             crate::output::println(
                 serde_json::to_string_pretty(&report.to_json()).expect("a report is plain JSON"),

@@ -355,12 +355,14 @@ fn regress_report_puts_a_planted_near_parallel_case_in_the_worst_bin() {
         [-2.0, 7.0, 1.0],
     );
     cases.push((1000, planted));
-    let r = report(5, cases);
+    let r = report(5, cases, 3);
     assert_eq!(r.measured, 301);
     let worst = r.worst_bin().expect("bins");
     assert_eq!(worst.count, 1, "{r}");
     assert_eq!(worst.worst.map(|w| w.0), Some(1000), "{r}");
     assert!((1e-8..1e-6).contains(&worst.hi), "{r}");
+    assert_eq!(r.worst.len(), 3);
+    assert_eq!(r.worst[0].0, 1000, "{r}");
     // The well-conditioned bins stay small; the planted case is far above them.
     let others = r
         .bins

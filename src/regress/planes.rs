@@ -235,6 +235,9 @@ pub struct PlaneReport {
     pub non_finite_results: usize,
     /// The decade bins, widest angles first.
     pub bins: Vec<Bin>,
+    /// The worst cases overall (largest point error, then largest direction error, then the
+    /// earlier index), at most the number asked for.
+    pub worst: Vec<(usize, PlaneCase, Measured)>,
 }
 
 fn median(v: &mut [f64]) -> f64 {
@@ -250,8 +253,12 @@ fn median(v: &mut [f64]) -> f64 {
     }
 }
 
-/// Measures the given cases `(index, case)` and bins them.
-pub fn report(seed: u64, cases: impl IntoIterator<Item = (usize, PlaneCase)>) -> PlaneReport {
+/// Measures the given cases `(index, case)`, bins them and keeps the `worst` worst.
+pub fn report(
+    seed: u64,
+    cases: impl IntoIterator<Item = (usize, PlaneCase)>,
+    worst: usize,
+) -> PlaneReport {
     let mut per_bin: Vec<Vec<(usize, PlaneCase, Measured)>> = vec![Vec::new(); BINS];
     let (mut skipped, mut null_results) = (0, 0);
     for (i, case) in cases {
@@ -264,6 +271,14 @@ pub fn report(seed: u64, cases: impl IntoIterator<Item = (usize, PlaneCase)>) ->
         }
     }
     let measured = per_bin.iter().map(Vec::len).sum();
+    let mut all: Vec<(usize, PlaneCase, Measured)> = per_bin.iter().flatten().copied().collect();
+    all.sort_by(|a, b| {
+        b.2.point_ulps
+            .total_cmp(&a.2.point_ulps)
+            .then(b.2.direction_ulps.total_cmp(&a.2.direction_ulps))
+            .then(a.0.cmp(&b.0))
+    });
+    all.truncate(worst);
     let bins: Vec<Bin> = per_bin
         .into_iter()
         .enumerate()
@@ -307,12 +322,13 @@ pub fn report(seed: u64, cases: impl IntoIterator<Item = (usize, PlaneCase)>) ->
         null_results,
         non_finite_results,
         bins,
+        worst: all,
     }
 }
 
-/// `samples` cases of the sweep with this seed, measured and binned.
-pub fn run(samples: usize, seed: u64) -> PlaneReport {
-    report(seed, (0..samples).map(|i| (i, sample_case(seed, i))))
+/// `samples` cases of the sweep with this seed, measured and binned, with the `worst` worst.
+pub fn run(samples: usize, seed: u64, worst: usize) -> PlaneReport {
+    report(seed, (0..samples).map(|i| (i, sample_case(seed, i))), worst)
 }
 
 impl PlaneReport {
@@ -348,6 +364,13 @@ impl PlaneReport {
                 "direction_max_ulps": finite_or_null(b.direction_max),
                 "direction_median_ulps": finite_or_null(b.direction_median),
                 "worst": b.worst.map(|(i, c)| json!({"index": i, "inputs": case(&c)})),
+            })).collect::<Vec<_>>(),
+            "worst": self.worst.iter().map(|(i, c, m)| json!({
+                "index": i,
+                "angle": m.angle,
+                "point_ulps": finite_or_null(m.point_ulps),
+                "direction_ulps": finite_or_null(m.direction_ulps),
+                "inputs": case(c),
             })).collect::<Vec<_>>(),
         })
     }
@@ -417,19 +440,23 @@ impl fmt::Display for PlaneReport {
                 num(b.direction_median)
             )?;
         }
-        if let Some(b) = self.worst_bin() {
-            if let Some((i, c)) = b.worst {
-                write!(
-                    f,
-                    "  worst point error {} ulps at sample {i} (seed {}): P1 = {:?}, n1 = {:?}, P2 = {:?}, n2 = {:?}",
-                    num(b.point_max),
-                    self.seed,
-                    c.p1,
-                    c.n1,
-                    c.p2,
-                    c.n2
-                )?;
-            }
+        write!(
+            f,
+            "  worst cases (by point error, then direction error; reproduce with the seed {} and the sample index):",
+            self.seed
+        )?;
+        for (i, c, m) in &self.worst {
+            write!(
+                f,
+                "\n    sample {i}: angle {:.3e} rad, Q {} ulps, q {} ulps; P1 = {:?}, n1 = {:?}, P2 = {:?}, n2 = {:?}",
+                m.angle,
+                num(m.point_ulps),
+                num(m.direction_ulps),
+                c.p1,
+                c.n1,
+                c.p2,
+                c.n2
+            )?;
         }
         Ok(())
     }
@@ -454,6 +481,19 @@ mod tests {
         let a = sample_case(7, 3);
         assert_eq!(a, sample_case(7, 3));
         assert!((length(&a.n1) - 1.0).abs() < 1e-15 && (length(&a.n2) - 1.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn worst_cases_are_reproducible_from_seed_and_index() {
+        let r = run(300, 4, 2);
+        assert_eq!(r.measured + r.skipped, 300);
+        assert_eq!(r.worst.len(), 2);
+        for (i, c, m) in &r.worst {
+            assert_eq!(*c, sample_case(4, *i));
+            assert_eq!(measure(c), Some(*m));
+        }
+        assert!(r.worst[0].2.point_ulps >= r.worst[1].2.point_ulps);
+        assert_eq!(r, run(300, 4, 2));
     }
 
     #[test]
