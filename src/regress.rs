@@ -1,6 +1,9 @@
 //! `exactcheck regress KERNEL`: built-in f64 kernels regressed against exact results with the
 //! harness of `exactcheck-float`. Each kernel is a formula of `exactcheck-core` written once,
-//! generic over the scalar, run in f64 and exactly on the same seeded inputs.
+//! generic over the scalar, run in f64 and exactly on the same seeded inputs; `plane-plane`
+//! ([`planes`]) regresses the published JavaScript port against the exact construction instead.
+
+pub mod planes;
 
 use crate::args::{check_count, ScalarChoice};
 use crate::Error;
@@ -33,6 +36,9 @@ pub struct RegressArgs {
     /// The exact scalar of the reference side.
     #[arg(long, value_enum, default_value_t = ScalarChoice::Fast)]
     pub scalar: ScalarChoice,
+    /// Print the report as JSON (plane-plane only).
+    #[arg(long)]
+    pub json: bool,
 }
 
 /// The built-in kernels.
@@ -45,6 +51,10 @@ pub enum Kernel {
     /// De Casteljau evaluation of a cubic Bezier curve in space (SPEC §0).
     #[value(alias = "bezier_cubic")]
     BezierCubic,
+    /// The published JavaScript `InterctionLineOf2Areas` (SPEC §3) against the exact two-plane
+    /// construction, binned by the angle between the normals (90 degrees down to 1e-12 rad).
+    #[value(alias = "plane_plane")]
+    PlanePlane,
 }
 
 /// The cylinder/sphere kernel. Inputs: axis point `a, b`, radius `r`, the rotations as rational
@@ -104,6 +114,11 @@ fn generator(kernel: Kernel) -> Result<UniformBox, Error> {
             ],
             vec![10.0, 10.0, 10.0, 3.0, 3.0, 10.0, 10.0, 10.0, 15.0, 50.0],
         ),
+        Kernel::PlanePlane => {
+            return Err(Error::Usage(
+                "plane-plane has its own sweep (regress::planes), not a uniform box".into(),
+            ))
+        }
         Kernel::BezierCubic => {
             let mut lo = vec![-10.0; 12];
             let mut hi = vec![10.0; 12];
@@ -128,6 +143,11 @@ fn run_kernel<E: ExactScalar>(
         Kernel::BezierCubic => {
             regress::<E>(&BezierCubicKernel, gen, args.samples, args.seed, options)
         }
+        Kernel::PlanePlane => {
+            return Err(Error::Usage(
+                "plane-plane is not a harness formula (see regress::planes)".into(),
+            ))
+        }
     };
     report.map_err(|e| Error::Usage(e.to_string()))
 }
@@ -139,6 +159,27 @@ fn run_kernel<E: ExactScalar>(
 /// output fails.
 pub fn run(args: &RegressArgs) -> Result<ExitCode, Error> {
     check_count("--samples", args.samples, MAX_SAMPLES, "")?;
+    if args.kernel == Kernel::PlanePlane {
+        if args.scalar != ScalarChoice::Fast {
+            return Err(Error::Usage(
+                "regress plane-plane runs on the fast exact rationals only (--scalar fast)".into(),
+            ));
+        }
+        let report = planes::run(args.samples, args.seed, args.worst);
+        if args.json {
+            crate::output::println(
+                serde_json::to_string_pretty(&report.to_json()).expect("a report is plain JSON"),
+            )?;
+        } else {
+            crate::output::println(report)?;
+        }
+        return Ok(ExitCode::SUCCESS);
+    }
+    if args.json {
+        return Err(Error::Usage(
+            "--json is available for regress plane-plane only".into(),
+        ));
+    }
     let gen = generator(args.kernel)?;
     let options = Options {
         worst: args.worst,

@@ -14,6 +14,7 @@ pub mod inertia;
 pub mod linalg;
 pub mod miquel;
 pub mod ops;
+pub mod planes;
 pub mod quadric;
 pub mod rational_angle;
 pub mod rng;

@@ -14,6 +14,9 @@
 //!   reproducible cases. This is the model of CGAL's `Kernel_checker`: two kernels, every
 //!   disagreement reported with its inputs.
 //!
+//! * [`wabis`] — the published JavaScript `InterctionLineOf2Areas` (SPEC §3) ported to `f64`
+//!   operation for operation: the float code under test of `regress plane-plane`.
+//!
 //! Tolerances live here and only here: the exact crates decide, this crate measures how far
 //! float code strays from their decisions.
 #![warn(missing_docs)]
@@ -24,6 +27,7 @@ pub mod harness;
 pub mod report;
 pub mod sampler;
 pub mod scalar;
+pub mod wabis;
 
 pub use convert::{
     binary_exponent, f64_to_rational, pow2, rational_to_f64, rel_error, round_to_bits,

@@ -3,8 +3,9 @@
 //!
 //! Coverage of `../shared/SPEC.md` §6: every `juttler.*` id (seed 002) and every `spaeth.*` id
 //! (seeds 000, 001) is implemented, plus `juttler.interpolation_degree`, the degree comparison
-//! split off from the sentence of `juttler.interpolation` (it is not an id of §6). The
-//! `planes.*` and `chiang.*` ids of §6 are **not implemented yet**; `verify` does not check them.
+//! split off from the sentence of `juttler.interpolation` (it is not an id of §6), and the
+//! `planes.*` id (seed 003). The `chiang.*` ids of §6 are **not implemented yet**; `verify` does
+//! not check them.
 //!
 //! A verdict is only ever the result of a computation:
 //! * **proved** — the residual expanded to zero over polynomials (modulo the declared relations);
@@ -31,6 +32,7 @@ macro_rules! claim {
 pub mod engine;
 pub mod juttler;
 pub mod juttler_geometry;
+pub mod planes;
 pub mod spaeth;
 
 use serde_json::{json, Value};
@@ -92,6 +94,7 @@ pub fn catalogue() -> Vec<Claim> {
     let mut all = juttler::claims();
     all.extend(spaeth::claims());
     all.extend(spaeth::example_claims());
+    all.extend(planes::claims());
     all
 }
 

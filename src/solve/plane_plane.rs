@@ -1,0 +1,318 @@
+//! `solve` kind `plane_plane` (SPEC §3, seed 003): the intersection line of two planes given in
+//! normal form `{normal, point}`.
+//!
+//! Exact mode reads the numbers into the radical field (so `"sqrt(2)/2"` is exact) and runs the
+//! construction of `exactcheck_core::planes`, which needs no unit normals: the outcome (`line`,
+//! `parallel`, `coincident`) is decided by exact zero tests, the point is the one nearest the
+//! origin, `Q = [(d1|n2|^2 - d2 n1.n2) n1 + (d2|n1|^2 - d1 n1.n2) n2] / |n1 x n2|^2`, and the
+//! direction is `n1 x n2`. The unit direction `(n1 x n2)/sqrt(k)`, `k = |n1 x n2|^2`, is given
+//! exactly when `sqrt(k)` lies in the radical field (always for rational `k` whose factoring
+//! succeeds), otherwise as the exact expression `c/sqrt(k)` of each coordinate, flagged by
+//! `unit_direction_in_field: false`. The answer reports the exact checks that the point lies on
+//! both planes and that it is the point nearest the origin (`Q . direction = 0`).
+//!
+//! `--float` runs the **published JavaScript** (`exactcheck_float::wabis`, the code under test),
+//! after normalising the normals in f64 as the function requires; it returns a unit direction
+//! oriented `n2 x n1` as published, and `null` (outcome `parallel`) for parallel *and* coincident
+//! planes, which it does not tell apart. `--both` gives the exact answer with the float one
+//! under `float`.
+//!
+//! A zero normal is an input error naming the field (`planes[1].normal: zero vector`).
+
+use super::number::{Coords, ExactNumber, FloatNumber};
+use super::{parse, to_json, Kind, Mode};
+use crate::Error;
+use exactcheck_core::planes::{intersect, Plane, PlanePair};
+use exactcheck_core::{Ring, Sqrt, Vec3};
+use exactcheck_exact::Radical;
+use exactcheck_float::wabis::{interction_line_of_2_areas, length, scale, V3};
+use schemars::{json_schema, JsonSchema, Schema, SchemaGenerator};
+use serde::de::{Deserializer, Error as _};
+use serde::{Deserialize, Serialize};
+use serde_json::Value;
+use std::borrow::Cow;
+
+// ------------------------------------------------------------------ input
+
+/// The problem, with numbers of type `N` ([`ExactNumber`] in exact mode, [`FloatNumber`] with
+/// `--float`).
+#[derive(Debug, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+#[schemars(
+    title = "plane_plane",
+    description = "Two planes in normal form {normal, point} (SPEC §3): how they meet (line, parallel, coincident), the point of the line nearest the origin, the direction n1 x n2 and the unit direction. Normals need not be unit vectors. Exact mode reads exact numbers (radicals allowed); --float runs the published JavaScript InterctionLineOf2Areas ported to f64."
+)]
+pub struct Input<N> {
+    /// `"plane_plane"`.
+    #[schemars(extend("const" = "plane_plane"))]
+    pub kind: String,
+    /// Exactly two planes.
+    pub planes: Pair<PlaneInput<N>>,
+}
+
+/// A plane `normal . x = normal . point`.
+#[derive(Debug, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct PlaneInput<N> {
+    /// A non-zero normal vector (any length).
+    pub normal: Coords<N, 3>,
+    /// A point of the plane.
+    pub point: Coords<N, 3>,
+}
+
+/// Exactly two values: a JSON array whose wrong length is reported as
+/// "expected 2 planes, found M".
+#[derive(Debug)]
+pub struct Pair<T>(pub [T; 2]);
+
+impl<'de, T: Deserialize<'de>> Deserialize<'de> for Pair<T> {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let v = Vec::<T>::deserialize(d)?;
+        let found = v.len();
+        <[T; 2]>::try_from(v)
+            .map(Pair)
+            .map_err(|_| D::Error::custom(format!("expected 2 planes, found {found}")))
+    }
+}
+
+impl<T: JsonSchema> JsonSchema for Pair<T> {
+    fn schema_name() -> Cow<'static, str> {
+        format!("Pair_{}", T::schema_name()).into()
+    }
+
+    fn json_schema(generator: &mut SchemaGenerator) -> Schema {
+        let item = generator.subschema_for::<T>();
+        json_schema!({
+            "type": "array",
+            "items": item,
+            "minItems": 2,
+            "maxItems": 2
+        })
+    }
+}
+
+/// The two planes with numbers mapped by `num`; a zero normal is an error naming the field.
+fn planes<N, T: Ring>(input: &Input<N>, num: impl Fn(&N) -> T) -> Result<[Plane<T>; 2], Error> {
+    let v = |c: &Coords<N, 3>| Vec3::new(num(&c.0[0]), num(&c.0[1]), num(&c.0[2]));
+    let mut out = Vec::with_capacity(2);
+    for (i, p) in input.planes.0.iter().enumerate() {
+        let plane = Plane::new(v(&p.normal), v(&p.point));
+        if plane.normal.is_zero() {
+            return Err(Error::Input(format!("planes[{i}].normal: zero vector")));
+        }
+        out.push(plane);
+    }
+    Ok(out
+        .try_into()
+        .expect("Pair holds exactly two planes, each pushed or returned as an error"))
+}
+
+// ------------------------------------------------------------------ answers
+
+/// The exact answer.
+#[derive(Debug, Serialize)]
+struct ExactAnswer {
+    kind: &'static str,
+    mode: &'static str,
+    /// `line`, `parallel` or `coincident`.
+    outcome: &'static str,
+    /// The point of the line nearest the origin (`null` without a line).
+    point: Option<[String; 3]>,
+    /// `n1 x n2`.
+    direction: Option<[String; 3]>,
+    /// `direction / |direction|`: radicals, or expressions `c/sqrt(k)` (see
+    /// `unit_direction_in_field`).
+    unit_direction: Option<[String; 3]>,
+    /// Whether `unit_direction` is given as numbers of the radical field.
+    unit_direction_in_field: Option<bool>,
+    /// Exact check: the point satisfies both plane equations.
+    on_both_planes: Option<bool>,
+    /// Exact check: `point . direction = 0`, so the point is the one nearest the origin.
+    nearest_to_origin: Option<bool>,
+    approx: Option<Approx>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    float: Option<FloatAnswer>,
+}
+
+#[derive(Debug, Serialize)]
+struct Approx {
+    point: [f64; 3],
+    direction: [f64; 3],
+    unit_direction: [f64; 3],
+}
+
+/// The answer of the published JavaScript.
+#[derive(Debug, Serialize)]
+struct FloatAnswer {
+    kind: &'static str,
+    mode: &'static str,
+    /// What was run.
+    method: &'static str,
+    /// `line`, or `parallel` when the function returned `null` (also for coincident planes).
+    outcome: &'static str,
+    /// The published `Q`.
+    point: Option<[f64; 3]>,
+    /// The published `q`: `n2 x n1` normalised.
+    unit_direction: Option<[f64; 3]>,
+}
+
+const FLOAT_METHOD: &str = "the published JavaScript InterctionLineOf2Areas ported to f64 operation for operation (exactcheck_float::wabis), after normalising each normal in f64 (V3.Scale(n, 1/V3.Length(n))) as it requires; q is n2 x n1 normalised; null (parallel or coincident planes) is outcome parallel";
+
+fn strings(v: &Vec3<Radical>) -> [String; 3] {
+    [v.x.to_string(), v.y.to_string(), v.z.to_string()]
+}
+
+fn approx(v: &Vec3<Radical>) -> [f64; 3] {
+    [v.x.to_f64() + 0.0, v.y.to_f64() + 0.0, v.z.to_f64() + 0.0]
+}
+
+fn exact(text: &str) -> Result<ExactAnswer, Error> {
+    let input: Input<ExactNumber> = parse(text)?;
+    let [p1, p2] = planes(&input, |x| x.0.clone())?;
+    let none = |outcome| ExactAnswer {
+        kind: "plane_plane",
+        mode: "exact",
+        outcome,
+        point: None,
+        direction: None,
+        unit_direction: None,
+        unit_direction_in_field: None,
+        on_both_planes: None,
+        nearest_to_origin: None,
+        approx: None,
+        float: None,
+    };
+    match intersect(&p1, &p2) {
+        PlanePair::Parallel => Ok(none("parallel")),
+        PlanePair::Coincident => Ok(none("coincident")),
+        PlanePair::ZeroNormal { which } => Err(Error::Input(format!(
+            "planes[{}].normal: zero vector",
+            which.index()
+        ))),
+        PlanePair::Line { point, direction } => {
+            let k = direction.norm_squared();
+            let (unit, in_field) = match k.sqrt() {
+                Some(root) => {
+                    let u = direction
+                        .div_scalar(&root)
+                        .expect("sqrt(|q|^2) != 0 for the non-zero direction of a line");
+                    (strings(&u), true)
+                }
+                None => (
+                    direction
+                        .map(|c| {
+                            if c.is_zero() {
+                                "0".to_string()
+                            } else {
+                                format!("({c})/sqrt({k})")
+                            }
+                        })
+                        .into_array(),
+                    false,
+                ),
+            };
+            let norm = k.to_f64().sqrt();
+            let dir_f = approx(&direction);
+            Ok(ExactAnswer {
+                point: Some(strings(&point)),
+                direction: Some(strings(&direction)),
+                unit_direction: Some(unit),
+                unit_direction_in_field: Some(in_field),
+                on_both_planes: Some(
+                    p1.residual(&point).is_zero() && p2.residual(&point).is_zero(),
+                ),
+                nearest_to_origin: Some(point.dot(&direction).is_zero()),
+                approx: Some(Approx {
+                    point: approx(&point),
+                    direction: dir_f,
+                    unit_direction: dir_f.map(|c| c / norm + 0.0),
+                }),
+                ..none("line")
+            })
+        }
+    }
+}
+
+/// The normal normalised the JavaScript way, `V3.Scale(n, 1/V3.Length(n))`; an error naming the
+/// field when its f64 length is 0 or not finite (`|n|^2` underflows or overflows), where the
+/// normalised vector would be NaN or zero.
+fn unit_f64(n: &Vec3<f64>, i: usize) -> Result<V3, Error> {
+    let v = [n.x, n.y, n.z];
+    let l = length(&v);
+    if !(l.is_finite() && l > 0.0) {
+        return Err(Error::Input(format!(
+            "planes[{i}].normal: its f64 length is {l}, so it cannot be normalised in f64 as the published function requires; use exact mode"
+        )));
+    }
+    Ok(scale(&v, 1.0 / l))
+}
+
+fn float_answer(text: &str) -> Result<FloatAnswer, Error> {
+    let input: Input<FloatNumber> = parse(text)?;
+    let [p1, p2] = planes(&input, |x| x.0)?;
+    let (n1, n2) = (unit_f64(&p1.normal, 0)?, unit_f64(&p2.normal, 1)?);
+    let pt = |p: &Vec3<f64>| [p.x, p.y, p.z];
+    let result = interction_line_of_2_areas(&pt(&p1.point), &n1, &pt(&p2.point), &n2);
+    Ok(FloatAnswer {
+        kind: "plane_plane",
+        mode: "float",
+        method: FLOAT_METHOD,
+        outcome: if result.is_some() { "line" } else { "parallel" },
+        point: result.map(|(q, _)| q.map(|c| c + 0.0)),
+        unit_direction: result.map(|(_, q)| q.map(|c| c + 0.0)),
+    })
+}
+
+/// The kind.
+pub struct PlanePlaneKind;
+
+impl Kind for PlanePlaneKind {
+    const NAME: &'static str = "plane_plane";
+    type Input = Input<ExactNumber>;
+
+    fn answer(text: &str, mode: Mode) -> Result<Value, Error> {
+        match mode {
+            Mode::Exact => Ok(to_json(&exact(text)?)),
+            Mode::Float => Ok(to_json(&float_answer(text)?)),
+            Mode::Both => {
+                let mut e = exact(text)?;
+                e.float = Some(float_answer(text)?);
+                Ok(to_json(&e))
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn radical_unit_direction_and_expression_fallback() {
+        // x = 0 and y = 0 with the normals (1, 0, 0), (1, 1, 0): direction (0, 0, 1).
+        let a = exact(r#"{"kind":"plane_plane","planes":[{"normal":[1,0,0],"point":[0,0,0]},{"normal":[1,1,0],"point":[0,0,0]}]}"#).unwrap();
+        assert_eq!(a.unit_direction, Some(["0".into(), "0".into(), "1".into()]));
+        // Direction (1, 1, 1) has norm sqrt(3): exact in the field.
+        let b = exact(r#"{"kind":"plane_plane","planes":[{"normal":[1,-1,0],"point":[1,0,0]},{"normal":[0,1,-1],"point":[0,0,2]}]}"#).unwrap();
+        assert_eq!(b.unit_direction_in_field, Some(true));
+        assert_eq!(b.unit_direction.unwrap()[0], "sqrt(3)/3");
+        assert_eq!(b.on_both_planes, Some(true));
+        assert_eq!(b.nearest_to_origin, Some(true));
+        // n1 = (1, 0, 0), n2 = (0, 1, 1 + sqrt(2)): k = 1 + (1 + sqrt(2))^2 = 4 + 2 sqrt(2), whose
+        // square root is not multi-quadratic (its norm 16 - 8 = 8 is not a square).
+        let c = exact(r#"{"kind":"plane_plane","planes":[{"normal":[1,0,0],"point":[0,0,0]},{"normal":[0,1,"1+sqrt(2)"],"point":[0,0,0]}]}"#).unwrap();
+        assert_eq!(c.unit_direction_in_field, Some(false));
+        let u = c.unit_direction.unwrap();
+        assert_eq!(
+            u,
+            [
+                "0".to_string(),
+                "(-1 - sqrt(2))/sqrt(4 + 2*sqrt(2))".into(),
+                "(1)/sqrt(4 + 2*sqrt(2))".into()
+            ]
+        );
+        let ap = c.approx.unwrap();
+        let n: f64 = ap.unit_direction.iter().map(|x| x * x).sum();
+        assert!((n - 1.0).abs() < 1e-12, "{ap:?}");
+    }
+}
