@@ -3,8 +3,10 @@
 //!
 //! Coverage of `../shared/SPEC.md` §6: every `juttler.*` id (seed 002) and every `spaeth.*` id
 //! (seeds 000, 001) is implemented, plus `juttler.interpolation_degree`, the degree comparison
-//! split off from the sentence of `juttler.interpolation` (it is not an id of §6). The
-//! `planes.*` and `chiang.*` ids of §6 are **not implemented yet**; `verify` does not check them.
+//! split off from the sentence of `juttler.interpolation` (it is not an id of §6), and
+//! `chiang.theorem`, `chiang.corollary1`, `chiang.corollary2`, `chiang.corollary5` and
+//! `chiang.example4` (seed 004). The other `chiang.*` ids and the `planes.*` ids of §6 are **not
+//! implemented yet**; `verify` does not check them.
 //!
 //! A verdict is only ever the result of a computation:
 //! * **proved** — the residual expanded to zero over polynomials (modulo the declared relations);
@@ -28,6 +30,7 @@ macro_rules! claim {
     };
 }
 
+pub mod chiang;
 pub mod engine;
 pub mod juttler;
 pub mod juttler_geometry;
@@ -92,6 +95,7 @@ pub fn catalogue() -> Vec<Claim> {
     let mut all = juttler::claims();
     all.extend(spaeth::claims());
     all.extend(spaeth::example_claims());
+    all.extend(chiang::claims());
     all
 }
 

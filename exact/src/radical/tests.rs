@@ -172,6 +172,12 @@ fn common_denominator_printing() {
     let x = r("-1/2 + sqrt(2)/3");
     assert_eq!(x.to_string_over_common_denominator(), "(-3 + 2*sqrt(2))/6");
     assert_eq!(r(&x.to_string_over_common_denominator()), x);
-    assert_eq!(r("-sqrt(2)/2").to_string_over_common_denominator(), "-sqrt(2)/2");
-    assert_eq!(r("1 + sqrt(2)").to_string_over_common_denominator(), "1 + sqrt(2)");
+    assert_eq!(
+        r("-sqrt(2)/2").to_string_over_common_denominator(),
+        "-sqrt(2)/2"
+    );
+    assert_eq!(
+        r("1 + sqrt(2)").to_string_over_common_denominator(),
+        "1 + sqrt(2)"
+    );
 }
