@@ -300,7 +300,7 @@ fn witness(
         .collect();
     used.sort();
     used.dedup();
-    let mut rng = Rng::new(0xC41A_4C);
+    let mut rng = Rng::new(0x00C4_1A4C);
     for _ in 0..2000 {
         let mut point = vec![Rational::ZERO; sym.vars.len()];
         for v in &used {

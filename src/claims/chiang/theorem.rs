@@ -173,7 +173,7 @@ fn parameters() -> Vec<Rational> {
 }
 
 fn random_instances() -> Result<InstanceReport, String> {
-    let mut rng = Rng::new(0xC4_1A_46);
+    let mut rng = Rng::new(0x00C4_1A46);
     let ts = parameters();
     let mut report = InstanceReport {
         instances: 0,
