@@ -3,9 +3,11 @@
 //!
 //! Coverage of `../shared/SPEC.md` §6: every `juttler.*` id (seed 002) and every `spaeth.*` id
 //! (seeds 000, 001) is implemented, plus `juttler.interpolation_degree`, the degree comparison
-//! split off from the sentence of `juttler.interpolation` (it is not an id of §6), and the
-//! `planes.*` id (seed 003). The `chiang.*` ids of §6 are **not implemented yet**; `verify` does
-//! not check them.
+//! split off from the sentence of `juttler.interpolation` (it is not an id of §6), the `planes.*`
+//! id (seed 003) and the `chiang.*` ids of the ruled-surface half of seed 004 (`chiang.theorem`,
+//! `chiang.corollary1/2/5`, `chiang.example4`, `chiang.line`, `chiang.vicinity`). The conic, offset
+//! and PH ids (`chiang.offset`, `chiang.conic_*`, `chiang.ph_*`) are **not implemented yet**;
+//! `verify` does not check them.
 //!
 //! A verdict is only ever the result of a computation:
 //! * **proved** — the residual expanded to zero over polynomials (modulo the declared relations);
@@ -29,6 +31,7 @@ macro_rules! claim {
     };
 }
 
+pub mod chiang;
 pub mod engine;
 pub mod juttler;
 pub mod juttler_geometry;
@@ -95,6 +98,7 @@ pub fn catalogue() -> Vec<Claim> {
     all.extend(spaeth::claims());
     all.extend(spaeth::example_claims());
     all.extend(planes::claims());
+    all.extend(chiang::claims());
     all
 }
 

@@ -630,6 +630,26 @@ impl fmt::Display for Radical {
     }
 }
 
+impl Radical {
+    /// The number over one common denominator: `(2*sqrt(2) + sqrt(6))/3` where `Display` writes
+    /// `2*sqrt(2)/3 + sqrt(6)/3`. The denominator `D` is the lcm of the coefficients'
+    /// denominators; with one term, or `D = 1`, this is `Display`. Parses back to the same value.
+    pub fn to_string_over_common_denominator(&self) -> String {
+        use num_integer::Integer;
+        if self.terms.len() < 2 {
+            return self.to_string();
+        }
+        let d = self
+            .terms
+            .iter()
+            .fold(BigInt::one(), |acc, (_, c)| acc.lcm(&c.denom()));
+        if d.is_one() {
+            return self.to_string();
+        }
+        format!("({})/{d}", self.scale(&Rational::from(d.clone())))
+    }
+}
+
 impl fmt::Debug for Radical {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         fmt::Display::fmt(self, f)

@@ -160,3 +160,24 @@ fn big_prime_powers_are_removed_in_few_passes() {
     let x: Radical = "sqrt((2^1000)^999*3)/(2^500)^999".parse().unwrap();
     assert_eq!(x, Radical::sqrt_of(3));
 }
+
+#[test]
+fn common_denominator_printing() {
+    let w1 = r("(2*sqrt(2) + sqrt(6))/3");
+    assert_eq!(w1.to_string(), "2*sqrt(2)/3 + sqrt(6)/3");
+    assert_eq!(
+        w1.to_string_over_common_denominator(),
+        "(2*sqrt(2) + sqrt(6))/3"
+    );
+    let x = r("-1/2 + sqrt(2)/3");
+    assert_eq!(x.to_string_over_common_denominator(), "(-3 + 2*sqrt(2))/6");
+    assert_eq!(r(&x.to_string_over_common_denominator()), x);
+    assert_eq!(
+        r("-sqrt(2)/2").to_string_over_common_denominator(),
+        "-sqrt(2)/2"
+    );
+    assert_eq!(
+        r("1 + sqrt(2)").to_string_over_common_denominator(),
+        "1 + sqrt(2)"
+    );
+}

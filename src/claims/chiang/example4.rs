@@ -1,0 +1,416 @@
+//! `chiang.example4`: every printed decimal of Example 4 against the exact curve in
+//! `Q(sqrt 2, sqrt 6)`.
+//!
+//! The curve is `RuledSurface::plane_section` of `chiang_example4(sqrt 2, sqrt 6)` over
+//! [`Radical`] (exact). A printed decimal with `d` digits after the point is *correctly rounded*
+//! when the exact value lies in `[printed - 10^-d / 2, printed + 10^-d / 2]`; the two comparisons
+//! are exact (the ordered field [`Radical`]). The exact decimal shown is itself certified: the
+//! integer nearest to `x 10^p` is checked by exact comparisons with its half-integer neighbours.
+//!
+//! For a printed value that is not correctly rounded, candidate explanations are *computed*
+//! (each gives a value; the printed digits are then tested against it, rounded or truncated
+//! toward zero, exactly as above):
+//! * the exact value, truncated instead of rounded;
+//! * the theorem's formulas evaluated with `sqrt 2 = 1.41`, `sqrt 6 = 2.45` (the printed weights),
+//!   or with `sqrt 2 = 1.414`, `sqrt 6 = 2.449`, in exact rational arithmetic;
+//! * the exact value's radical form `a + b sqrt 2 + c sqrt 3 + e sqrt 6` evaluated with
+//!   `sqrt 2 = 1.41`, `sqrt 3 = 1.73`, `sqrt 6 = 2.45` (e.g. `r0 = -sqrt(2)/2 = -1.41/2`);
+//! * the weighted points `w_k r_k` (exact, or with `sqrt 2 = 1.41`, `sqrt 6 = 2.45`) divided by
+//!   the printed, rounded weight.
+
+use super::{Outcome, Verdict};
+use exactcheck_core::ruled::chiang_example4;
+use exactcheck_core::{Field, Ring, Vec3};
+use exactcheck_exact::{Radical, Rational};
+
+/// The printed weights `w0..w3`.
+pub const PRINTED_WEIGHTS: [&str; 4] = ["1.41", "1.76", "2.10", "2.45"];
+/// The printed points `r0..r3`.
+pub const PRINTED_POINTS: [[&str; 3]; 4] = [
+    ["-0.705", "0.705", "0"],
+    ["-0.0341", "0.721", "0"],
+    ["0.3", "1.07", "0"],
+    ["-0.409", "1.60", "0"],
+];
+
+/// One printed value against the exact one.
+#[derive(Clone, Debug)]
+pub struct Example4Row {
+    /// `w0`, ..., `r3.z`.
+    pub name: String,
+    /// The printed digits.
+    pub printed: String,
+    /// The exact value.
+    pub exact: Radical,
+    /// The exact value over a common denominator, e.g. `(2*sqrt(2) + sqrt(6))/3`.
+    pub exact_text: String,
+    /// The exact value correctly rounded to 6 places (certified).
+    pub exact_decimal: String,
+    /// `printed - exact`, to about 3 significant digits (certified rounding).
+    pub deviation: String,
+    /// Whether the printed digits are the exact value correctly rounded.
+    pub correctly_rounded: bool,
+    /// For a wrong value: the computed hypotheses (module doc) that reproduce the printed digits.
+    pub reproduced_by: Vec<String>,
+}
+
+fn rational(text: &str) -> Result<Rational, String> {
+    text.parse::<Rational>()
+        .map_err(|e| format!("printed decimal {text:?}: {e}"))
+}
+
+fn places(text: &str) -> u32 {
+    text.split_once('.').map_or(0, |(_, f)| f.len() as u32)
+}
+
+fn pow10(p: u32) -> Rational {
+    Rational::from_integer(10i64.pow(p))
+}
+
+fn inv_pow10(p: u32) -> Rational {
+    pow10(p).inv().expect("10^p is not zero")
+}
+
+fn radical(q: &Rational) -> Radical {
+    Radical::from(q.clone())
+}
+
+/// Is `v` rounded to `p` places the printed value?
+fn rounds_to(v: &Radical, printed: &Rational, p: u32) -> bool {
+    let half = inv_pow10(p).mul_ref(&Rational::new(1, 2).expect("2 != 0"));
+    radical(&printed.sub_ref(&half)) <= *v && *v <= radical(&printed.add_ref(&half))
+}
+
+/// Is `v` truncated toward zero to `p` places the printed value?
+fn truncates_to(v: &Radical, printed: &Rational, p: u32) -> bool {
+    let ulp = inv_pow10(p);
+    let pr = radical(printed);
+    if printed.signum() == exactcheck_core::Sign::Positive
+        || (printed.is_zero() && *v >= Radical::default())
+    {
+        pr <= *v && *v < radical(&printed.add_ref(&ulp))
+    } else {
+        radical(&printed.sub_ref(&ulp)) < *v && *v <= pr
+    }
+}
+
+/// `x` correctly rounded to `p` places, certified by exact comparisons.
+fn decimal(x: &Radical, p: u32) -> String {
+    let xs = x.scale(&pow10(p));
+    let mut c = xs.to_f64().round() as i64;
+    loop {
+        let lo = radical(&Rational::new(2 * c - 1, 2).expect("2 != 0"));
+        let hi = radical(&Rational::new(2 * c + 1, 2).expect("2 != 0"));
+        if xs < lo {
+            c -= 1;
+        } else if xs >= hi {
+            c += 1;
+        } else {
+            break;
+        }
+    }
+    let unit = 10i64.pow(p);
+    let sign = if c < 0 { "-" } else { "" };
+    let a = c.abs();
+    if p == 0 {
+        format!("{sign}{a}")
+    } else {
+        format!("{sign}{}.{:0w$}", a / unit, a % unit, w = p as usize)
+    }
+}
+
+/// `x` to about three significant digits, with its sign.
+fn deviation_text(x: &Radical) -> String {
+    if x.is_zero() {
+        return "0".into();
+    }
+    let magnitude = x.to_f64().abs().log10().floor() as i32;
+    let p = (2 - magnitude).clamp(0, 12) as u32;
+    let s = decimal(x, p);
+    if s.starts_with('-') {
+        s
+    } else {
+        format!("+{s}")
+    }
+}
+
+/// The 16 values `w0..w3, r0.x, r0.y, r0.z, ..., r3.z` of a curve (a point `None` where the
+/// weight is zero).
+fn values<T: Field>(weights: &[T], points: &[Option<Vec3<T>>]) -> Vec<Option<T>> {
+    let mut out: Vec<Option<T>> = weights.iter().cloned().map(Some).collect();
+    for p in points {
+        match p {
+            Some(v) => out.extend([Some(v.x.clone()), Some(v.y.clone()), Some(v.z.clone())]),
+            None => out.extend([None, None, None]),
+        }
+    }
+    out
+}
+
+fn names() -> Vec<String> {
+    let mut n: Vec<String> = (0..4).map(|k| format!("w{k}")).collect();
+    for k in 0..4 {
+        for a in ["x", "y", "z"] {
+            n.push(format!("r{k}.{a}"));
+        }
+    }
+    n
+}
+
+fn printed_texts() -> Vec<&'static str> {
+    let mut t: Vec<&str> = PRINTED_WEIGHTS.to_vec();
+    for p in PRINTED_POINTS {
+        t.extend(p);
+    }
+    t
+}
+
+/// A computed explanation: a name and the 16 values it gives (`None`: not applicable).
+struct Hypothesis {
+    name: String,
+    values: Vec<Option<Radical>>,
+}
+
+fn with_rounded_roots(s2: &str, s6: &str) -> Result<Hypothesis, String> {
+    let (surface, plane) = chiang_example4(rational(s2)?, rational(s6)?);
+    let curve = surface.plane_section(&plane);
+    Ok(Hypothesis {
+        name: format!("the formulas with sqrt 2 = {s2}, sqrt 6 = {s6}"),
+        values: values(&curve.weights(), &curve.points())
+            .into_iter()
+            .map(|v| v.map(|q| radical(&q)))
+            .collect(),
+    })
+}
+
+/// `w_k r_k` divided by the printed weight.
+fn over_printed_weights<T: Field>(
+    name: &str,
+    control: &[exactcheck_core::Hom4<T>],
+    lift: impl Fn(&T) -> Radical,
+) -> Result<Hypothesis, String> {
+    let mut values = vec![None; 4];
+    for (k, h) in control.iter().enumerate() {
+        let w = radical(&rational(PRINTED_WEIGHTS[k])?);
+        for a in 1..4 {
+            values.push(Some(
+                lift(&h.0[a])
+                    .checked_div(&w)
+                    .map_err(|_| "a printed weight is zero".to_string())?,
+            ));
+        }
+    }
+    Ok(Hypothesis {
+        name: name.into(),
+        values,
+    })
+}
+
+/// The exact radical form evaluated with `sqrt 2 = 1.41`, `sqrt 3 = 1.73`, `sqrt 6 = 2.45`.
+fn radical_form_rounded(x: &Radical) -> Option<Radical> {
+    let mut sum = Rational::ZERO;
+    for (m, c) in x.terms() {
+        let root = match m.as_u64()? {
+            1 => Rational::from_integer(1),
+            2 => rational("1.41").ok()?,
+            3 => rational("1.73").ok()?,
+            6 => rational("2.45").ok()?,
+            _ => return None,
+        };
+        sum = sum.add_ref(&c.mul_ref(&root));
+    }
+    Some(radical(&sum))
+}
+
+/// The table of Example 4: every printed value against the exact one (module doc).
+///
+/// # Errors
+/// A printed decimal that does not parse (data error), a zero weight.
+pub fn example4_table() -> Result<Vec<Example4Row>, String> {
+    let (surface, plane) = chiang_example4(Radical::sqrt_of(2), Radical::sqrt_of(6));
+    let curve = surface.plane_section(&plane);
+    let exact = values(&curve.weights(), &curve.points());
+    let (rs, rp) = chiang_example4(rational("1.41")?, rational("2.45")?);
+    let rounded_control = rs.plane_section(&rp).into_control();
+    let hypotheses = vec![
+        Hypothesis {
+            name: "the exact value".into(),
+            values: exact.clone(),
+        },
+        with_rounded_roots("1.41", "2.45")?,
+        with_rounded_roots("1.414", "2.449")?,
+        Hypothesis {
+            name: "the exact radical form with sqrt 2 = 1.41, sqrt 3 = 1.73, sqrt 6 = 2.45".into(),
+            values: exact
+                .iter()
+                .map(|v| v.as_ref().and_then(radical_form_rounded))
+                .collect(),
+        },
+        over_printed_weights(
+            "w_k r_k (exact) divided by the printed w_k",
+            curve.control(),
+            Radical::clone,
+        )?,
+        over_printed_weights(
+            "w_k r_k with sqrt 2 = 1.41, sqrt 6 = 2.45 divided by the printed w_k",
+            &rounded_control,
+            radical,
+        )?,
+    ];
+    let mut rows = Vec::new();
+    for (i, (name, text)) in names().into_iter().zip(printed_texts()).enumerate() {
+        let x = exact[i]
+            .clone()
+            .ok_or_else(|| format!("{name}: the exact weight is zero"))?;
+        let printed = rational(text)?;
+        let p = places(text);
+        let correctly_rounded = rounds_to(&x, &printed, p);
+        let mut reproduced_by = Vec::new();
+        if !correctly_rounded {
+            for h in &hypotheses {
+                let Some(v) = &h.values[i] else { continue };
+                if h.name != "the exact value" && rounds_to(v, &printed, p) {
+                    reproduced_by.push(format!("{} (rounded)", h.name));
+                }
+                if truncates_to(v, &printed, p) {
+                    reproduced_by.push(format!("{} (truncated)", h.name));
+                }
+            }
+        }
+        rows.push(Example4Row {
+            name,
+            printed: text.into(),
+            exact_text: x.to_string_over_common_denominator(),
+            exact_decimal: decimal(&x, 6),
+            deviation: deviation_text(&radical(&printed).sub_ref(&x)),
+            correctly_rounded,
+            reproduced_by,
+            exact: x,
+        });
+    }
+    Ok(rows)
+}
+
+/// The table as Markdown (what `README_chiang.md` shows).
+pub fn example4_markdown(rows: &[Example4Row]) -> String {
+    let mut s = String::from(
+        "| value | printed | exact | exact decimal | deviation (printed - exact) | correctly rounded? |\n| --- | --- | --- | --- | --- | --- |\n",
+    );
+    for r in rows {
+        let verdict = if r.correctly_rounded {
+            "yes".to_string()
+        } else if r.reproduced_by.is_empty() {
+            "**no** (no tested hypothesis reproduces it)".to_string()
+        } else {
+            format!("**no**; reproduced by {}", r.reproduced_by.join("; "))
+        };
+        s.push_str(&format!(
+            "| {} | {} | `{}` | {} | {} | {} |\n",
+            r.name, r.printed, r.exact_text, r.exact_decimal, r.deviation, verdict
+        ));
+    }
+    s
+}
+
+/// The claim `chiang.example4`.
+pub fn check() -> Result<Outcome, String> {
+    let rows = example4_table()?;
+    let wrong: Vec<&Example4Row> = rows.iter().filter(|r| !r.correctly_rounded).collect();
+    let row_text = |r: &Example4Row| {
+        format!(
+            "{}: printed {}, exact {} = {}, deviation {}",
+            r.name, r.printed, r.exact_text, r.exact_decimal, r.deviation
+        )
+    };
+    let table: Vec<String> = rows
+        .iter()
+        .map(|r| {
+            format!(
+                "{} [{}]",
+                row_text(r),
+                if r.correctly_rounded {
+                    "correctly rounded"
+                } else {
+                    "not correctly rounded"
+                }
+            )
+        })
+        .collect();
+    let evidence = if wrong.is_empty() {
+        format!(
+            "all {} printed values are the exact values correctly rounded. Table: {}",
+            rows.len(),
+            table.join("; ")
+        )
+    } else {
+        let explained: Vec<String> = wrong
+            .iter()
+            .map(|r| {
+                format!(
+                    "{} — {}",
+                    row_text(r),
+                    if r.reproduced_by.is_empty() {
+                        "reproduced by none of the tested hypotheses".to_string()
+                    } else {
+                        format!("reproduced by {}", r.reproduced_by.join(" and by "))
+                    }
+                )
+            })
+            .collect();
+        format!(
+            "{} of {} printed values are not the exact value correctly rounded to the printed digits: {}. Table: {}",
+            wrong.len(),
+            rows.len(),
+            explained.join("; "),
+            table.join("; ")
+        )
+    };
+    Ok(Outcome {
+        verdict: if wrong.is_empty() {
+            Verdict::Holds
+        } else {
+            Verdict::Fails
+        },
+        method: "exact arithmetic in Q(sqrt 2, sqrt 6) (Radical); each printed decimal compared exactly with its rounding interval; explanations computed (exact rational arithmetic with rounded roots, truncation, division by the printed weights)".into(),
+        evidence,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn r(s: &str) -> Radical {
+        s.parse().unwrap()
+    }
+
+    #[test]
+    fn rounding_intervals_are_exact() {
+        let q = |s: &str| s.parse::<Rational>().unwrap();
+        // sqrt 2 = 1.41421...: rounds to 1.41 and 1.414, not to 1.42; truncates to 1.41.
+        assert!(rounds_to(&r("sqrt(2)"), &q("1.41"), 2));
+        assert!(rounds_to(&r("sqrt(2)"), &q("1.414"), 3));
+        assert!(!rounds_to(&r("sqrt(2)"), &q("1.42"), 2));
+        assert!(truncates_to(&r("sqrt(2)"), &q("1.41"), 2));
+        assert!(!truncates_to(&r("sqrt(2)"), &q("1.42"), 2));
+        // -sqrt(2)/2 = -0.7071...: rounds to -0.707, truncates to -0.707, never to -0.705.
+        assert!(rounds_to(&r("-sqrt(2)/2"), &q("-0.707"), 3));
+        assert!(truncates_to(&r("-sqrt(2)/2"), &q("-0.707"), 3));
+        assert!(!rounds_to(&r("-sqrt(2)/2"), &q("-0.705"), 3));
+        assert!(!truncates_to(&r("-sqrt(2)/2"), &q("-0.705"), 3));
+        // Boundaries: 0.125 rounds to 0.12 and 0.13 (inclusive interval), truncates to 0.12.
+        assert!(rounds_to(&r("1/8"), &q("0.12"), 2));
+        assert!(rounds_to(&r("1/8"), &q("0.13"), 2));
+        assert!(truncates_to(&r("1/8"), &q("0.12"), 2));
+        assert!(!truncates_to(&r("1/8"), &q("0.13"), 2));
+    }
+
+    #[test]
+    fn certified_decimals() {
+        assert_eq!(decimal(&r("sqrt(2)"), 6), "1.414214");
+        assert_eq!(decimal(&r("-sqrt(2)/2"), 3), "-0.707");
+        assert_eq!(decimal(&r("2/3"), 0), "1");
+        assert_eq!(deviation_text(&r("-0.705 + sqrt(2)/2")), "+0.00211");
+        assert_eq!(deviation_text(&Radical::default()), "0");
+    }
+}

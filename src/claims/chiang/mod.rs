@@ -1,0 +1,345 @@
+//! Claims of Chiang's ruled-surface / plane paper (seed 004, SPEC §4): the Theorem, Corollaries
+//! 1, 2 and 5, and Example 4.
+//!
+//! The construction itself lives in `exactcheck_core::ruled` (generic over the scalar); here it is
+//! instantiated over the polynomial ring `Q[p_jx, ..., q_iz, a, b, c, d, t]` of the proof engine
+//! (symbolic proofs), over [`Rational`] (random exact instances) and over
+//! [`exactcheck_exact::Radical`] (Example 4 in `Q(sqrt 2, sqrt 6)`).
+//!
+//! * `theorem` — the printed sums `(w_k, w_k r_k)` against the proof's substitution
+//!   `C(t) = [(N.V) B - (N.B + d) V] / (N.V)`, coefficient by coefficient and as an identity in a
+//!   symbolic `t`, for every `m <= 4, n <= 6`; then random exact instances up to `(12, 20)`.
+//! * `corollaries` — the printed formulas, kept as text (ASCII transliterations) and parsed by the
+//!   engine, against the substitution of the proof for the plane `z = 0`. Printed formulas are
+//!   quotients (`r_k = (1/w_k) [...]`, `p_k - (p_kz / q_0z) q_0`), which the engine's polynomial
+//!   parser refuses, so they are read as *fractions* `N / D` of polynomials (a small evaluator of
+//!   the engine's expression tree, [`fraction`]); a printed `N / D` equals a derived `H / W`
+//!   exactly when the polynomial `N W - H D` is zero (cross-multiplication; both denominators are
+//!   non-zero polynomials). A non-zero residual is turned into an exact rational counter-example
+//!   where both denominators are non-zero and the two values differ ([`compare`]).
+//! * `example4` — the curve in `Q(sqrt 2, sqrt 6)`, every printed decimal judged exactly.
+//!
+//! Hand-written: the fraction evaluator (the engine proves polynomial identities; the corollaries
+//! print quotients, and cross-multiplying by hand would mean rewriting the printed text).
+
+mod corollaries;
+mod example4;
+mod theorem;
+
+pub use corollaries::{
+    corollary1_with, corollary2_with, corollary5_with, Corollary5Text, COROLLARY1_POINT_TERM,
+    COROLLARY1_WEIGHT_TERM, COROLLARY2_POINT, COROLLARY5,
+};
+pub use example4::{
+    example4_markdown, example4_table, Example4Row, PRINTED_POINTS, PRINTED_WEIGHTS,
+};
+pub use theorem::{check_size, SizeReport, RANDOM_SIZES, SYMBOLIC_MAX};
+
+use super::engine::{Rng, Symbols};
+use super::{Claim, Outcome, Verdict};
+use exactcheck_core::ruled::RuledSurface;
+use exactcheck_core::{Ring, Vec3};
+use exactcheck_exact::expr::{parse_expr, AddOp, Expr, ExprKind, MulOp};
+use exactcheck_exact::poly::{Poly, Vars};
+use exactcheck_exact::Rational;
+
+type P = Poly<Rational>;
+
+/// The `chiang.*` claims of this module (SPEC §6), statements as printed.
+pub fn claims() -> Vec<Claim> {
+    vec![
+        claim!("chiang.theorem", Proved, "Theorem (intersection with aX+bY+cZ+d=0): S(s,t) = B(t) + s V(t) meets the plane in a rational Bezier curve of degree m+n with w_k = (a b c) . (sum_{i=0}^{k} phi(m,n,i,k-i) q_i), r_k = (1/w_k) sum_{i=0}^{k} phi(m,n,i,k-i) ((a b c d).(q_i 0) p_{k-i} - (a b c d).(p_{k-i} 1) q_i), k = 0..m+n, phi(m,n,i,j) = C(m,i) C(n,j) / C(m+n,i+j)", theorem_claim),
+        claim!("chiang.corollary1", Proved, "Corollary 1 (Z=0 plane): w_k = sum_{i=0}^{k} phi(m,n,i,k-i) q_iz, r_k = (1/w_k) sum_{i=0}^{k} phi(m,n,i,k-i) (q_iz p_{k-i} - p_{k-i}z q_i), k = 0..m+n; r_kz = 0", corollary1_claim),
+        claim!("chiang.corollary2", Proved, "Corollary 2 (m=0, cylinder, Z=0 plane): r_k = p_k - (p_kz/q0z) q0, k = 0..n; all weights w_i equal q0z, so the curve is a (polynomial) Bezier curve", corollary2_claim),
+        claim!("chiang.corollary5", Proved, "Corollary 5 (m=1, n=2, Z=0 plane): w0 = q0z, w1 = (1/3)(2q0z+q1z), w2 = (1/3)(q0z+2q1z), w3 = q1z, r0 = (1/w0)[(q0z, -p0z).(p0,q0)], r1 = (1/(3w1))[(q1z, 2q0z, -2p1z, -p0z).(p0,p1,q0,q1)], r2 = (1/(3w2))[(2q1z, q0z, -p2z, -2p1z).(p1,p2,q0,q1)], r3 = (1/w3)[(q1z, -p2z).(p2,q1)]", corollary5_claim),
+        claim!("chiang.example4", Fails, "Example 4 (m=1, n=2): p0=(0,0,-1), p1=(1,1,-1), p2=(0,2,-1), q0=(-1,1,sqrt 2), q1=(-1,-1,sqrt 6), Z=0 plane: w0=1.41, w1=1.76, w2=2.10, w3=2.45, r0=(-0.705, 0.705, 0), r1=(-0.0341, 0.721, 0), r2=(0.3, 1.07, 0), r3=(-0.409, 1.60, 0)", example4_claim),
+    ]
+}
+
+fn theorem_claim() -> Result<Outcome, String> {
+    theorem::check()
+}
+
+fn corollary1_claim() -> Result<Outcome, String> {
+    corollary1_with(COROLLARY1_WEIGHT_TERM, COROLLARY1_POINT_TERM)
+}
+
+fn corollary2_claim() -> Result<Outcome, String> {
+    corollary2_with(COROLLARY2_POINT)
+}
+
+fn corollary5_claim() -> Result<Outcome, String> {
+    corollary5_with(&COROLLARY5)
+}
+
+fn example4_claim() -> Result<Outcome, String> {
+    example4::check()
+}
+
+// ------------------------------------------------------------------------ symbolic surfaces
+
+/// The ruled surface with symbolic control points `p_j = (pjx, pjy, pjz)` (degree `n`) and
+/// control vectors `q_i = (qix, qiy, qiz)` (degree `m`).
+fn symbolic_surface(sym: &mut Symbols, m: usize, n: usize) -> RuledSurface<P> {
+    let mut point = |name: String| {
+        Vec3::new(
+            sym.vars.poly::<Rational>(&format!("{name}x")),
+            sym.vars.poly::<Rational>(&format!("{name}y")),
+            sym.vars.poly::<Rational>(&format!("{name}z")),
+        )
+    };
+    let base = (0..=n).map(|j| point(format!("p{j}"))).collect();
+    let directions = (0..=m).map(|i| point(format!("q{i}"))).collect();
+    RuledSurface::from_control(base, directions).expect("n + 1 >= 1 points, m + 1 >= 1 vectors")
+}
+
+/// A rational constant as a polynomial.
+fn constant(q: Rational) -> P {
+    P::constant(q)
+}
+
+// ------------------------------------------------------------------------ printed fractions
+
+/// A quotient `num / den` of polynomials; `den` is never the zero polynomial.
+#[derive(Clone, Debug)]
+pub struct Fraction {
+    /// The numerator.
+    pub num: P,
+    /// The denominator (not the zero polynomial).
+    pub den: P,
+}
+
+impl Fraction {
+    fn poly(p: P) -> Fraction {
+        Fraction {
+            num: p,
+            den: <P as Ring>::one(),
+        }
+    }
+
+    fn add(&self, other: &Fraction, minus: bool) -> Fraction {
+        let rhs = if minus {
+            other.num.neg_ref()
+        } else {
+            other.num.clone()
+        };
+        if self.den == other.den {
+            return Fraction {
+                num: self.num.add_ref(&rhs),
+                den: self.den.clone(),
+            };
+        }
+        Fraction {
+            num: self
+                .num
+                .mul_ref(&other.den)
+                .add_ref(&rhs.mul_ref(&self.den)),
+            den: self.den.mul_ref(&other.den),
+        }
+    }
+
+    fn mul(&self, other: &Fraction) -> Fraction {
+        Fraction {
+            num: self.num.mul_ref(&other.num),
+            den: self.den.mul_ref(&other.den),
+        }
+    }
+
+    fn div(&self, other: &Fraction) -> Result<Fraction, String> {
+        if other.num.is_zero() {
+            return Err("division by an expression that is identically zero".into());
+        }
+        Ok(Fraction {
+            num: self.num.mul_ref(&other.den),
+            den: self.den.mul_ref(&other.num),
+        })
+    }
+}
+
+/// The printed formula `text` (the engine's expression syntax) as a [`Fraction`]; a name listed
+/// in `defs` (e.g. `w1`, the printed weight that a printed point divides by) stands for its
+/// fraction, every other name is a variable of `sym`.
+///
+/// # Errors
+/// A syntax error, a `sqrt`, a non-integer or negative exponent, a division by zero.
+pub fn fraction(
+    text: &str,
+    sym: &mut Symbols,
+    defs: &[(String, Fraction)],
+) -> Result<Fraction, String> {
+    let e = parse_expr(text).map_err(|e| format!("printed formula {text:?}: {e}"))?;
+    to_fraction(&e, &mut sym.vars, defs).map_err(|e| format!("printed formula {text:?}: {e}"))
+}
+
+fn to_fraction(e: &Expr, vars: &mut Vars, defs: &[(String, Fraction)]) -> Result<Fraction, String> {
+    match &e.kind {
+        ExprKind::Number(q) => Ok(Fraction::poly(constant(q.clone()))),
+        ExprKind::Var(name) => Ok(match defs.iter().find(|(n, _)| n == name) {
+            Some((_, f)) => f.clone(),
+            None => Fraction::poly(P::var(vars.var(name))),
+        }),
+        ExprKind::Neg(x) => {
+            let f = to_fraction(x, vars, defs)?;
+            Ok(Fraction {
+                num: f.num.neg_ref(),
+                den: f.den,
+            })
+        }
+        ExprKind::Sum(items) => {
+            let mut acc = Fraction::poly(P::zero());
+            for (op, x) in items {
+                acc = acc.add(&to_fraction(x, vars, defs)?, *op == AddOp::Minus);
+            }
+            Ok(acc)
+        }
+        ExprKind::Product(items) => {
+            let mut acc = Fraction::poly(<P as Ring>::one());
+            for (op, x) in items {
+                let f = to_fraction(x, vars, defs)?;
+                acc = match op {
+                    MulOp::Times => acc.mul(&f),
+                    MulOp::Divide => acc.div(&f)?,
+                };
+            }
+            Ok(acc)
+        }
+        ExprKind::Pow(base, exp) => {
+            let k: Rational = exp.eval_constant().map_err(|e| e.to_string())?;
+            let k = k
+                .to_string()
+                .parse::<u32>()
+                .map_err(|_| format!("exponent {k} is not a small non-negative integer"))?;
+            let b = to_fraction(base, vars, defs)?;
+            let mut acc = Fraction::poly(<P as Ring>::one());
+            for _ in 0..k {
+                acc = acc.mul(&b);
+            }
+            Ok(acc)
+        }
+        ExprKind::Sqrt(_) => Err("sqrt in a printed formula of the corollaries".into()),
+    }
+}
+
+/// One printed formula against its derivation.
+pub struct Comparison {
+    /// What it is, e.g. `r1.x (m=1, n=2)`.
+    pub label: String,
+    /// The printed text (data), in the engine's syntax.
+    pub printed: String,
+    /// The derivation's value.
+    pub derived: Fraction,
+}
+
+/// The result of [`compare`]: all equal, or the first mismatch with an exact counter-example.
+pub enum Compared {
+    /// Every printed fraction equals its derivation; the total number of terms of the
+    /// cross-multiplied sides that cancelled.
+    Equal {
+        /// Terms of `N W` and `H D`, summed over all comparisons.
+        terms: usize,
+    },
+    /// The first mismatch: the evidence (counter-example, both values, the derived form).
+    Mismatch(String),
+    /// A non-zero residual without a counter-example found (never expected).
+    NoWitness(String),
+}
+
+/// Decides every comparison: printed `N / D` against derived `H / W` by `N W - H D = 0`; on the
+/// first non-zero residual, a rational point (small numerators and denominators, deterministic)
+/// where `D != 0`, `W != 0` and the two values differ.
+///
+/// # Errors
+/// A printed text that does not parse.
+pub fn compare(
+    sym: &mut Symbols,
+    defs: &[(String, Fraction)],
+    comparisons: &[Comparison],
+) -> Result<Compared, String> {
+    let mut terms = 0;
+    for c in comparisons {
+        let printed = fraction(&c.printed, sym, defs)?;
+        let left = printed.num.mul_ref(&c.derived.den);
+        let right = c.derived.num.mul_ref(&printed.den);
+        terms += left.len() + right.len();
+        let residual = left.sub_ref(&right);
+        if residual.is_zero() {
+            continue;
+        }
+        let derived_text = format!(
+            "({}) / ({})",
+            c.derived.num.display(&sym.vars),
+            c.derived.den.display(&sym.vars)
+        );
+        return Ok(match witness(sym, &printed, &c.derived, &residual) {
+            Some((at, p, d)) => Compared::Mismatch(format!(
+                "{} as printed, {}, is not the derivation's: counter-example {at}: printed {p}, derived {d}; derived form: {} = {derived_text}",
+                c.label, c.printed, c.label
+            )),
+            None => Compared::NoWitness(format!(
+                "{} as printed, {}, differs from the derivation {derived_text} (residual {}), but no rational point separating them was found",
+                c.label,
+                c.printed,
+                residual.display(&sym.vars)
+            )),
+        });
+    }
+    Ok(Compared::Equal { terms })
+}
+
+/// A rational point where both denominators are non-zero and the printed and derived values
+/// differ: `(assignment, printed value, derived value)`.
+fn witness(
+    sym: &Symbols,
+    printed: &Fraction,
+    derived: &Fraction,
+    residual: &P,
+) -> Option<(String, Rational, Rational)> {
+    let mut used: Vec<_> = [residual, &printed.den, &derived.den]
+        .iter()
+        .flat_map(|p| p.variables())
+        .collect();
+    used.sort();
+    used.dedup();
+    let mut rng = Rng::new(0x00C4_1A4C);
+    for _ in 0..2000 {
+        let mut point = vec![Rational::ZERO; sym.vars.len()];
+        for v in &used {
+            point[*v as usize] = rng.rational(9, 4);
+        }
+        let at = |p: &P| p.eval(&point, |c| c.clone());
+        let (pd, dd) = (at(&printed.den), at(&derived.den));
+        if pd.is_zero() || dd.is_zero() {
+            continue;
+        }
+        let pv = at(&printed.num).checked_div(&pd).expect("checked non-zero");
+        let dv = at(&derived.num).checked_div(&dd).expect("checked non-zero");
+        if pv != dv {
+            let assignment: Vec<String> = used
+                .iter()
+                .map(|v| {
+                    format!(
+                        "{} = {}",
+                        sym.vars.name(*v).expect("a variable of the context"),
+                        point[*v as usize]
+                    )
+                })
+                .collect();
+            return Some((assignment.join(", "), pv, dv));
+        }
+    }
+    None
+}
+
+/// An outcome from a [`Compared`] (with the method and the evidence of the equal case).
+fn outcome(compared: Compared, method: &str, proved: impl FnOnce(usize) -> String) -> Outcome {
+    let (verdict, evidence) = match compared {
+        Compared::Equal { terms } => (Verdict::Proved, proved(terms)),
+        Compared::Mismatch(e) => (Verdict::Fails, e),
+        Compared::NoWitness(e) => (Verdict::Undecided, e),
+    };
+    Outcome {
+        verdict,
+        method: method.into(),
+        evidence,
+    }
+}
