@@ -28,6 +28,7 @@ macro_rules! claim {
     };
 }
 
+pub mod chiang_line;
 pub mod engine;
 pub mod juttler;
 pub mod juttler_geometry;
@@ -92,6 +93,7 @@ pub fn catalogue() -> Vec<Claim> {
     let mut all = juttler::claims();
     all.extend(spaeth::claims());
     all.extend(spaeth::example_claims());
+    all.extend(chiang_line::claims());
     all
 }
 
