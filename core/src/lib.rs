@@ -17,6 +17,7 @@ pub mod ops;
 pub mod quadric;
 pub mod rational_angle;
 pub mod rng;
+pub mod roots;
 pub mod ruled;
 pub mod scalar;
 pub mod sphere_interpolation;
