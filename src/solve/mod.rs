@@ -14,6 +14,7 @@
 
 pub mod cylinder_sphere;
 pub mod number;
+pub mod ruled_line;
 pub mod sphere_interpolation;
 
 use crate::Error;
@@ -84,7 +85,7 @@ pub fn kinds() -> [KindEntry; 7] {
     [
         answered::<sphere_interpolation::SphereInterpolation>(),
         recognised("ruled_plane"),
-        recognised("ruled_line"),
+        answered::<ruled_line::RuledLine>(),
         recognised("plane_plane"),
         answered::<cylinder_sphere::CylinderSphereKind>(),
         recognised("conic"),
