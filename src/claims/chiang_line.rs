@@ -87,7 +87,7 @@ fn scaled_to_power(coeffs: &[P], t: &P) -> P {
     let one_minus = P::one() - t;
     let mut out = P::zero();
     for (k, c) in coeffs.iter().enumerate() {
-        out = out + c.clone() * t.pow(k as u32) * one_minus.pow((degree - k) as u32);
+        out += c.clone() * t.pow(k as u32) * one_minus.pow((degree - k) as u32);
     }
     out
 }
@@ -99,7 +99,7 @@ fn bezier_power(controls: &[P], t: &P) -> P {
     let mut out = P::zero();
     for (j, c) in controls.iter().enumerate() {
         let b = P::from_i64(binomial(n as u32, j as u32) as i64);
-        out = out + b * c.clone() * t.pow(j as u32) * one_minus.pow((n - j) as u32);
+        out += b * c.clone() * t.pow(j as u32) * one_minus.pow((n - j) as u32);
     }
     out
 }
