@@ -32,6 +32,7 @@ macro_rules! claim {
 }
 
 pub mod chiang;
+pub mod chiang_line;
 pub mod engine;
 pub mod juttler;
 pub mod juttler_geometry;
@@ -99,6 +100,7 @@ pub fn catalogue() -> Vec<Claim> {
     all.extend(spaeth::example_claims());
     all.extend(planes::claims());
     all.extend(chiang::claims());
+    all.extend(chiang_line::claims());
     all
 }
 

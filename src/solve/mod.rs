@@ -15,6 +15,7 @@
 pub mod cylinder_sphere;
 pub mod number;
 pub mod plane_plane;
+pub mod ruled_line;
 pub mod sphere_interpolation;
 
 use crate::Error;
@@ -85,7 +86,7 @@ pub fn kinds() -> [KindEntry; 7] {
     [
         answered::<sphere_interpolation::SphereInterpolation>(),
         recognised("ruled_plane"),
-        recognised("ruled_line"),
+        answered::<ruled_line::RuledLine>(),
         answered::<plane_plane::PlanePlaneKind>(),
         answered::<cylinder_sphere::CylinderSphereKind>(),
         recognised("conic"),
