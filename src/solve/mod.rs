@@ -14,6 +14,7 @@
 
 pub mod cylinder_sphere;
 pub mod number;
+pub mod ruled_plane;
 pub mod sphere_interpolation;
 
 use crate::Error;
@@ -83,7 +84,7 @@ fn recognised(name: &'static str) -> KindEntry {
 pub fn kinds() -> [KindEntry; 7] {
     [
         answered::<sphere_interpolation::SphereInterpolation>(),
-        recognised("ruled_plane"),
+        answered::<ruled_plane::RuledPlane>(),
         recognised("ruled_line"),
         recognised("plane_plane"),
         answered::<cylinder_sphere::CylinderSphereKind>(),
