@@ -56,7 +56,7 @@
 use super::number::{Coords, ExactNumber, FloatNumber};
 use super::{parse, to_json, Kind, Mode};
 use crate::Error;
-use exactcheck_core::ruled::{PlaneSection, Plane, RuledSurface};
+use exactcheck_core::ruled::{Plane, PlaneSection, RuledSurface};
 use exactcheck_core::{Bernstein, OrderedField, RationalBezierCurve, Ring, Sign, Vec3};
 use exactcheck_exact::univariate::UPoly;
 use exactcheck_exact::{Radical, Radicand, Rational};
@@ -115,8 +115,7 @@ fn problem<N, T: OrderedField>(
     }
     if input.directions.is_empty() {
         return Err(Error::Input(
-            "directions: at least one control vector is needed (m + 1 vectors for degree m)"
-                .into(),
+            "directions: at least one control vector is needed (m + 1 vectors for degree m)".into(),
         ));
     }
     let (n, m) = (input.base.len() - 1, input.directions.len() - 1);
@@ -132,7 +131,8 @@ fn problem<N, T: OrderedField>(
         return Err(Error::Input("plane: normal (a, b, c) is zero".into()));
     }
     let width = match &input.precision {
-        None => T::one().checked_div(&T::from_i64(2).pow(DEFAULT_WIDTH_LOG2))
+        None => T::one()
+            .checked_div(&T::from_i64(2).pow(DEFAULT_WIDTH_LOG2))
             .expect("2^32 != 0"),
         Some(w) => {
             let w = num(w);
@@ -241,7 +241,11 @@ fn derivative<T: Ring>(p: &[T]) -> Vec<T> {
 /// Quotient and remainder of `a` by `b` (`b` trimmed, non-empty).
 fn div_rem<T: OrderedField>(a: &[T], b: &[T]) -> (Vec<T>, Vec<T>) {
     let mut r = trimmed(a);
-    let lead = b.last().expect("a non-zero divisor").inv().expect("trimmed");
+    let lead = b
+        .last()
+        .expect("a non-zero divisor")
+        .inv()
+        .expect("trimmed");
     if r.len() < b.len() {
         return (Vec::new(), r);
     }
@@ -335,7 +339,13 @@ fn unit_zeros<T: SectionScalar>(p: &[T], width: &T) -> Vec<Zero<T>> {
         .collect()
 }
 
-fn subdivide<T: SectionScalar>(b: &Bernstein<T>, lo: T, hi: T, depth: usize, out: &mut Vec<Zero<T>>) {
+fn subdivide<T: SectionScalar>(
+    b: &Bernstein<T>,
+    lo: T,
+    hi: T,
+    depth: usize,
+    out: &mut Vec<Zero<T>>,
+) {
     let v = b.sign_changes();
     if v == 0 {
         return;
@@ -453,9 +463,7 @@ fn compute<T: SectionScalar>(surface: &RuledSurface<T>, plane: &Plane<T>, width:
     let (outcome, poles, rulings) = match surface.classify_plane(plane) {
         PlaneSection::Curve(_) => {
             let w = trimmed(&weight.to_power());
-            let coords: Vec<Vec<T>> = (1..4)
-                .map(|a| curve.hom_coordinate(a).to_power())
-                .collect();
+            let coords: Vec<Vec<T>> = (1..4).map(|a| curve.hom_coordinate(a).to_power()).collect();
             let off = offset.to_power();
             let poles = unit_zeros(&w, width)
                 .into_iter()
@@ -574,7 +582,11 @@ fn three<T, V>(p: &Vec3<T>, v: &impl Fn(&T) -> V) -> [V; 3] {
     [v(&p.x), v(&p.y), v(&p.z)]
 }
 
-fn render<T: SectionScalar, V>(s: &Section<T>, mode: &'static str, v: impl Fn(&T) -> V) -> Answer<V> {
+fn render<T: SectionScalar, V>(
+    s: &Section<T>,
+    mode: &'static str,
+    v: impl Fn(&T) -> V,
+) -> Answer<V> {
     let weights = s.curve.weights();
     let points = s.curve.points();
     let weighted: Vec<Vec3<T>> = s
@@ -667,7 +679,11 @@ fn float_answer(text: &str) -> Result<Answer<f64>, Error> {
     let (surface, plane, width) = problem(&input, |x| x.0)?;
     let s = compute(&surface, &plane, &width);
     let answer = render(&s, "float", |x: &f64| *x + 0.0);
-    let finite = answer.weighted_points.iter().flatten().all(|x| x.is_finite())
+    let finite = answer
+        .weighted_points
+        .iter()
+        .flatten()
+        .all(|x| x.is_finite())
         && answer.weights.iter().all(|x| x.is_finite());
     if !finite {
         return Err(Error::Input(
