@@ -68,7 +68,7 @@ use serde_json::Value;
 pub const MAX_DEGREE: usize = 60;
 
 /// Default width of the isolating intervals of irrational poles.
-const DEFAULT_WIDTH_LOG2: u32 = 32;
+const DEFAULT_WIDTH_LOG2: u32 = 50;
 
 /// Subdivision depth at which float mode stops and reports an interval as one pole.
 const FLOAT_DEPTH: usize = 60;
@@ -94,7 +94,7 @@ pub struct Input<N> {
     /// The plane `[a, b, c, d]`: `a x + b y + c z + d = 0`, `(a, b, c) != 0`.
     pub plane: Coords<N, 4>,
     /// The width to which the isolating intervals of irrational poles and rulings are refined
-    /// (positive; default 2^-32).
+    /// (positive; default 2^-50, so `approx` is good to about 1e-15).
     pub precision: Option<N>,
 }
 
@@ -133,7 +133,7 @@ fn problem<N, T: OrderedField>(
     let width = match &input.precision {
         None => T::one()
             .checked_div(&T::from_i64(2).pow(DEFAULT_WIDTH_LOG2))
-            .expect("2^32 != 0"),
+            .expect("2^50 != 0"),
         Some(w) => {
             let w = num(w);
             if w.sign() != Sign::Positive {
