@@ -16,6 +16,7 @@ pub mod cylinder_sphere;
 pub mod number;
 pub mod plane_plane;
 pub mod ruled_line;
+pub mod ruled_plane;
 pub mod sphere_interpolation;
 
 use crate::Error;
@@ -85,7 +86,7 @@ fn recognised(name: &'static str) -> KindEntry {
 pub fn kinds() -> [KindEntry; 7] {
     [
         answered::<sphere_interpolation::SphereInterpolation>(),
-        recognised("ruled_plane"),
+        answered::<ruled_plane::RuledPlane>(),
         answered::<ruled_line::RuledLine>(),
         answered::<plane_plane::PlanePlaneKind>(),
         answered::<cylinder_sphere::CylinderSphereKind>(),

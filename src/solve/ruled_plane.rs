@@ -1,0 +1,771 @@
+//! `solve` kind `ruled_plane` (Chiang's Theorem 1, SPEC §4): the section of the ruled surface
+//! `S(s,t) = B(t) + s V(t)` by the plane `N.x + d = 0` as a rational Bezier curve of degree
+//! `m + n`, with its degenerate cases as typed outcomes and its poles isolated exactly.
+//!
+//! # The answer
+//! The homogeneous control vectors `(w_k, w_k r_k)` are Chiang's sums
+//! ([`exactcheck_core::ruled::RuledSurface::plane_section`], division-free), so a zero weight is
+//! a point at infinity (`points[k] = null`) and `weighted_points[k] = w_k r_k` is always defined.
+//! The outcome is decided exactly ([`exactcheck_core::ruled::RuledSurface::classify_plane`]):
+//!
+//! * `curve`: the weight polynomial `N.V(t)` (degree `m`) is not identically zero. Its zeros in
+//!   `[0, 1]` are the *poles* (rulings parallel to the plane): each is given by an interval
+//!   `[lo, hi]` of rationals isolating it (`lo = hi` and `exact` when the pole is rational), its
+//!   multiplicity as a zero of `N.V`, `ruling_in_plane` (the offset `N.B + d` vanishes there too:
+//!   the whole ruling lies in the plane) and `removable` (the factor `(t - t0)^mult` divides all
+//!   four homogeneous coordinates, so the curve stays finite at `t0`).
+//! * `parallel_rulings`: `N.V = 0` identically, `N.B + d` not: every ruling is parallel to the
+//!   plane; the section is the set of rulings at the zeros of `N.B + d` in `[0, 1]`
+//!   (`rulings_in_plane`, each with `s` free), possibly none.
+//! * `surface_in_plane`: both vanish identically.
+//!
+//! `ruling_parameter` gives `s(t) = -(N.B(t) + d) / (N.V(t))` as Bernstein coefficients of its
+//! numerator (degree `n`) and denominator (degree `m`): the section point at `t` is `S(s(t), t)`.
+//!
+//! # Root isolation (hand-written here)
+//! The zeros in `[0, 1]` are isolated by Descartes' rule of signs in Bernstein form with
+//! de Casteljau bisection, on the square-free part `p / gcd(p, p')` (plain Euclid over the
+//! exact field, power basis): a piece with no sign change in its Bernstein coefficients has no
+//! zero inside, one with exactly one sign change and non-zero end coefficients exactly one
+//! (Vincent / Collins–Akritas: on square-free input every piece reaches 0 or 1 after finitely
+//! many bisections, so this terminates); a zero value at a bisection point or an end of `[0, 1]`
+//! is recorded exactly. Rational zeros are then made exact: writing the coefficients in the basis
+//! `sqrt(k)` of the radical field, `p = sum_k sqrt(k) p_k(t)` with rational `p_k`, a rational
+//! `t0` is a zero of `p` iff it is a common zero of all `p_k`, i.e. a zero of the rational
+//! polynomial `G = gcd_k p_k`, whose rational zeros Sturm isolation (`UPoly::isolate_roots`)
+//! returns exactly; each is placed in the one isolating interval that contains it. A question
+//! "does `f` vanish at the zero `t0` of `p` isolated by `(lo, hi)`" is decided exactly by
+//! `g = gcd(p, f)`: its zeros in `[lo, hi]` are zeros of `p`, so `t0` is a zero of `f` iff the
+//! square-free part of `g` changes sign between `lo` and `hi`. Multiplicities follow from the
+//! derivatives. This is hand-written because the workspace's exact root isolation
+//! (`exactcheck_exact::univariate`) works over `Q` only, and the poles of a radical surface are
+//! zeros of polynomials with coefficients in `Q(sqrt 2, sqrt 6, ...)`.
+//!
+//! # Float mode
+//! `--float` runs the same generic code in `f64`: the classification's zero tests are exact
+//! comparisons with `0.0`, and the poles come from the same Descartes subdivision, cut off at
+//! depth 60 (an interval still holding several sign changes there is reported as one pole).
+//! That is a heuristic: it can miss a double pole perturbed off the axis or report a
+//! cluster as one; `ruling_in_plane`, `multiplicity` and `removable` need exact gcds and are
+//! given in exact mode only.
+//!
+//! # Limits
+//! `m + n <= 60` ([`MAX_DEGREE`]): the product rule uses binomial coefficients `C(m+n, k)` in
+//! 64-bit integers, which overflow beyond `m + n = 67`.
+
+use super::number::{Coords, ExactNumber, FloatNumber};
+use super::{parse, to_json, Kind, Mode};
+use crate::Error;
+use exactcheck_core::ruled::{Plane, PlaneSection, RuledSurface};
+use exactcheck_core::{Bernstein, OrderedField, RationalBezierCurve, Ring, Sign, Vec3};
+use exactcheck_exact::univariate::UPoly;
+use exactcheck_exact::{Radical, Radicand, Rational};
+use schemars::JsonSchema;
+use serde::{Deserialize, Serialize};
+use serde_json::Value;
+
+/// The largest `m + n` (degree of the section) accepted.
+pub const MAX_DEGREE: usize = 60;
+
+/// Default width of the isolating intervals of irrational poles.
+const DEFAULT_WIDTH_LOG2: u32 = 50;
+
+/// Subdivision depth at which float mode stops and reports an interval as one pole.
+const FLOAT_DEPTH: usize = 60;
+
+// ------------------------------------------------------------------ input
+
+/// The problem, with numbers of type `N` ([`ExactNumber`] in exact mode, [`FloatNumber`] with
+/// `--float`).
+#[derive(Debug, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+#[schemars(
+    title = "ruled_plane",
+    description = "Chiang's Theorem 1: the section of the ruled surface S(s,t) = B(t) + s V(t) (B a Bezier curve of degree n, V a Bezier direction field of degree m, m + n <= 60) by the plane a x + b y + c z + d = 0, as a rational Bezier curve of degree m + n, with the degenerate cases (parallel rulings, surface in the plane) and the poles in [0,1] decided exactly. Exact mode reads exact numbers (sqrt allowed); --float any finite number."
+)]
+pub struct Input<N> {
+    /// `"ruled_plane"`.
+    #[schemars(extend("const" = "ruled_plane"))]
+    pub kind: String,
+    /// The control points `p_0..p_n` of the base curve `B` (at least one).
+    pub base: Vec<Coords<N, 3>>,
+    /// The control vectors `q_0..q_m` of the direction field `V` (at least one).
+    pub directions: Vec<Coords<N, 3>>,
+    /// The plane `[a, b, c, d]`: `a x + b y + c z + d = 0`, `(a, b, c) != 0`.
+    pub plane: Coords<N, 4>,
+    /// The width to which the isolating intervals of irrational poles and rulings are refined
+    /// (positive; default 2^-50, so `approx` is good to about 1e-15).
+    pub precision: Option<N>,
+}
+
+/// The surface, the plane and the width, checked.
+fn problem<N, T: OrderedField>(
+    input: &Input<N>,
+    num: impl Fn(&N) -> T,
+) -> Result<(RuledSurface<T>, Plane<T>, T), Error> {
+    let points = |list: &[Coords<N, 3>]| -> Vec<Vec3<T>> {
+        list.iter()
+            .map(|Coords([x, y, z])| Vec3::new(num(x), num(y), num(z)))
+            .collect()
+    };
+    if input.base.is_empty() {
+        return Err(Error::Input(
+            "base: at least one control point is needed (n + 1 points for degree n)".into(),
+        ));
+    }
+    if input.directions.is_empty() {
+        return Err(Error::Input(
+            "directions: at least one control vector is needed (m + 1 vectors for degree m)".into(),
+        ));
+    }
+    let (n, m) = (input.base.len() - 1, input.directions.len() - 1);
+    if m + n > MAX_DEGREE {
+        return Err(Error::Input(format!(
+            "base, directions: degree m + n = {m} + {n} = {} exceeds the limit {MAX_DEGREE}",
+            m + n
+        )));
+    }
+    let Coords([a, b, c, d]) = &input.plane;
+    let plane = Plane::new(num(a), num(b), num(c), num(d));
+    if plane.normal.is_zero() {
+        return Err(Error::Input("plane: normal (a, b, c) is zero".into()));
+    }
+    let width = match &input.precision {
+        None => T::one()
+            .checked_div(&T::from_i64(2).pow(DEFAULT_WIDTH_LOG2))
+            .expect("2^50 != 0"),
+        Some(w) => {
+            let w = num(w);
+            if w.sign() != Sign::Positive {
+                return Err(Error::Input("precision: must be positive".into()));
+            }
+            w
+        }
+    };
+    let surface = RuledSurface::from_control(points(&input.base), points(&input.directions))
+        .expect("both lists were checked non-empty");
+    Ok((surface, plane, width))
+}
+
+// ------------------------------------------------------------------ scalars
+
+/// A scalar the section is computed in: exact ([`Rational`], [`Radical`]) or `f64`.
+pub(crate) trait SectionScalar: OrderedField + std::fmt::Debug {
+    /// Whether zero tests are exact (decides the depth cut-off and the exact-only fields).
+    const EXACT: bool;
+    /// The nearest f64 (`-0` as `0`).
+    fn approx(&self) -> f64;
+    /// The rational number as a scalar.
+    fn from_rational(q: &Rational) -> Self;
+    /// The rational components `p_k` of `p = sum_k sqrt(k) p_k` (power coefficients), or `None`
+    /// when the scalar has no exact decomposition (f64).
+    fn rational_components(p: &[Self]) -> Option<Vec<Vec<Rational>>>;
+}
+
+impl SectionScalar for Rational {
+    const EXACT: bool = true;
+    fn approx(&self) -> f64 {
+        self.to_f64() + 0.0
+    }
+    fn from_rational(q: &Rational) -> Self {
+        q.clone()
+    }
+    fn rational_components(p: &[Self]) -> Option<Vec<Vec<Rational>>> {
+        Some(vec![p.to_vec()])
+    }
+}
+
+impl SectionScalar for Radical {
+    const EXACT: bool = true;
+    fn approx(&self) -> f64 {
+        self.to_f64() + 0.0
+    }
+    fn from_rational(q: &Rational) -> Self {
+        Radical::from(q)
+    }
+    fn rational_components(p: &[Self]) -> Option<Vec<Vec<Rational>>> {
+        let mut parts: Vec<(Radicand, Vec<Rational>)> = Vec::new();
+        for (i, c) in p.iter().enumerate() {
+            for (radicand, q) in c.terms() {
+                let slot = match parts.iter().position(|(r, _)| r == radicand) {
+                    Some(k) => k,
+                    None => {
+                        parts.push((radicand.clone(), vec![Rational::ZERO; p.len()]));
+                        parts.len() - 1
+                    }
+                };
+                parts[slot].1[i] = q.clone();
+            }
+        }
+        Some(parts.into_iter().map(|(_, v)| v).collect())
+    }
+}
+
+impl SectionScalar for f64 {
+    const EXACT: bool = false;
+    fn approx(&self) -> f64 {
+        self + 0.0
+    }
+    fn from_rational(q: &Rational) -> Self {
+        q.to_f64()
+    }
+    fn rational_components(_: &[Self]) -> Option<Vec<Vec<Rational>>> {
+        None
+    }
+}
+
+// ------------------------------------------------------------------ polynomials (power basis)
+
+fn trimmed<T: Ring>(p: &[T]) -> Vec<T> {
+    let mut v = p.to_vec();
+    while v.last().is_some_and(Ring::is_zero) {
+        v.pop();
+    }
+    v
+}
+
+fn horner<T: Ring>(p: &[T], t: &T) -> T {
+    p.iter()
+        .rev()
+        .fold(T::zero(), |acc, c| acc.mul_ref(t).add_ref(c))
+}
+
+fn derivative<T: Ring>(p: &[T]) -> Vec<T> {
+    p.iter()
+        .enumerate()
+        .skip(1)
+        .map(|(i, c)| c.scale_i64(i as i64))
+        .collect()
+}
+
+/// Quotient and remainder of `a` by `b` (`b` trimmed, non-empty).
+fn div_rem<T: OrderedField>(a: &[T], b: &[T]) -> (Vec<T>, Vec<T>) {
+    let mut r = trimmed(a);
+    let lead = b
+        .last()
+        .expect("a non-zero divisor")
+        .inv()
+        .expect("trimmed");
+    if r.len() < b.len() {
+        return (Vec::new(), r);
+    }
+    let mut q = vec![T::zero(); r.len() - b.len() + 1];
+    while r.len() >= b.len() {
+        let shift = r.len() - b.len();
+        let f = r.last().expect("non-empty").mul_ref(&lead);
+        for (i, c) in b.iter().enumerate() {
+            r[shift + i] = r[shift + i].sub_ref(&f.mul_ref(c));
+        }
+        // The leading coefficient cancels exactly (in f64 too, by construction).
+        r.pop();
+        q[shift] = f;
+        r = trimmed(&r);
+    }
+    (q, r)
+}
+
+/// The monic gcd (empty when both are zero).
+fn gcd<T: OrderedField>(a: &[T], b: &[T]) -> Vec<T> {
+    let (mut a, mut b) = (trimmed(a), trimmed(b));
+    while !b.is_empty() {
+        let (_, r) = div_rem(&a, &b);
+        a = b;
+        b = r;
+    }
+    match a.last() {
+        None => a,
+        Some(l) => {
+            let inv = l.inv().expect("trimmed");
+            a.iter().map(|c| c.mul_ref(&inv)).collect()
+        }
+    }
+}
+
+/// `p / gcd(p, p')` (p trimmed, degree >= 1).
+fn square_free<T: OrderedField>(p: &[T]) -> Vec<T> {
+    let g = gcd(p, &derivative(p));
+    if g.len() <= 1 {
+        return p.to_vec();
+    }
+    div_rem(p, &g).0
+}
+
+// ------------------------------------------------------------------ isolation
+
+/// A zero in `[0, 1]`: exactly, or in the open interval `(lo, hi)` where the square-free part
+/// of the polynomial has opposite non-zero signs at the ends.
+#[derive(Clone, Debug, PartialEq)]
+enum Zero<T> {
+    Exact(T),
+    Between(T, T),
+}
+
+fn half<T: OrderedField>() -> T {
+    T::from_ratio(1, 2).expect("2 != 0")
+}
+
+/// The distinct zeros in `[0, 1]` of the polynomial with power coefficients `p` (not identically
+/// zero), increasing, each refined to width `<= width`.
+fn unit_zeros<T: SectionScalar>(p: &[T], width: &T) -> Vec<Zero<T>> {
+    let p = trimmed(p);
+    assert!(!p.is_empty(), "unit_zeros: the zero polynomial");
+    if p.len() == 1 {
+        return Vec::new();
+    }
+    let q = square_free(&p);
+    let mut out = Vec::new();
+    if horner(&q, &T::zero()).is_zero() {
+        out.push(Zero::Exact(T::zero()));
+    }
+    let b = Bernstein::from_power(&q).expect("a non-empty polynomial");
+    subdivide(&b, T::zero(), T::one(), 0, &mut out);
+    if horner(&q, &T::one()).is_zero() {
+        out.push(Zero::Exact(T::one()));
+    }
+    let rational = rational_zeros::<T>(&p);
+    out.into_iter()
+        .map(|z| match z {
+            Zero::Between(lo, hi) => {
+                match rational.iter().find(|r| {
+                    (r.sub_ref(&lo)).sign() == Sign::Positive
+                        && (hi.sub_ref(r)).sign() == Sign::Positive
+                }) {
+                    Some(r) => Zero::Exact(r.clone()),
+                    None => refine(&q, lo, hi, width),
+                }
+            }
+            exact => exact,
+        })
+        .collect()
+}
+
+fn subdivide<T: SectionScalar>(
+    b: &Bernstein<T>,
+    lo: T,
+    hi: T,
+    depth: usize,
+    out: &mut Vec<Zero<T>>,
+) {
+    let v = b.sign_changes();
+    if v == 0 {
+        return;
+    }
+    let c = b.coeffs();
+    let ends = !c[0].is_zero() && !c[c.len() - 1].is_zero();
+    if (v == 1 && ends) || (!T::EXACT && depth >= FLOAT_DEPTH) {
+        out.push(Zero::Between(lo, hi));
+        return;
+    }
+    let mid = lo.add_ref(&hi).mul_ref(&half());
+    let (l, r) = b.split(&half());
+    let at_mid = l.coeffs().last().expect("non-empty").is_zero();
+    subdivide(&l, lo, mid.clone(), depth + 1, out);
+    if at_mid {
+        out.push(Zero::Exact(mid.clone()));
+    }
+    subdivide(&r, mid, hi, depth + 1, out);
+}
+
+/// Bisection of `(lo, hi)` on the square-free `q` down to width `<= width`.
+fn refine<T: SectionScalar>(q: &[T], mut lo: T, mut hi: T, width: &T) -> Zero<T> {
+    let s_lo = horner(q, &lo).sign();
+    // f64: stop when the midpoint no longer moves.
+    for _ in 0..if T::EXACT { usize::MAX } else { 200 } {
+        if hi.sub_ref(&lo).sub_ref(width).sign() != Sign::Positive {
+            break;
+        }
+        let mid = lo.add_ref(&hi).mul_ref(&half());
+        match horner(q, &mid).sign() {
+            Sign::Zero => return Zero::Exact(mid),
+            s if s == s_lo => lo = mid,
+            _ => hi = mid,
+        }
+    }
+    Zero::Between(lo, hi)
+}
+
+/// The rational zeros in `[0, 1]` of `p` (module doc): the exact zeros of the gcd of its
+/// rational components.
+fn rational_zeros<T: SectionScalar>(p: &[T]) -> Vec<T> {
+    let Some(parts) = T::rational_components(p) else {
+        return Vec::new();
+    };
+    let mut g = UPoly::zero();
+    for part in parts {
+        g = g.gcd(&UPoly::from_coeffs(part));
+    }
+    g.isolate_roots()
+        .into_iter()
+        .filter(|ri| ri.is_exact() && ri.lo >= Rational::ZERO && ri.lo <= Rational::ONE)
+        .map(|ri| T::from_rational(&ri.lo))
+        .collect()
+}
+
+/// Whether `f` vanishes at the zero `z` of `p` (exact scalars; module doc).
+fn vanishes_at<T: SectionScalar>(f: &[T], p: &[T], z: &Zero<T>) -> bool {
+    match z {
+        Zero::Exact(t) => horner(f, t).is_zero(),
+        Zero::Between(lo, hi) => {
+            let f = trimmed(f);
+            if f.is_empty() {
+                return true;
+            }
+            let g = gcd(p, &f);
+            if g.len() <= 1 {
+                return false;
+            }
+            let gs = square_free(&g);
+            horner(&gs, lo).sign() != horner(&gs, hi).sign()
+        }
+    }
+}
+
+/// The multiplicity of `f` at the zero `z` of `p`, counted up to `cap`.
+fn multiplicity<T: SectionScalar>(f: &[T], p: &[T], z: &Zero<T>, cap: usize) -> usize {
+    let mut f = trimmed(f);
+    let mut k = 0;
+    while k < cap && (f.is_empty() || vanishes_at(&f, p, z)) {
+        if f.is_empty() {
+            return cap;
+        }
+        k += 1;
+        f = trimmed(&derivative(&f));
+    }
+    k
+}
+
+// ------------------------------------------------------------------ the computation
+
+/// A pole, computed.
+struct PoleData<T> {
+    zero: Zero<T>,
+    /// `(multiplicity, ruling_in_plane, removable)`, exact scalars only.
+    exact: Option<(usize, bool, bool)>,
+}
+
+/// The section, computed in `T`.
+struct Section<T> {
+    m: usize,
+    n: usize,
+    outcome: &'static str,
+    curve: RationalBezierCurve<T>,
+    weight: Bernstein<T>,
+    offset: Bernstein<T>,
+    poles: Option<Vec<PoleData<T>>>,
+    rulings: Option<Vec<Zero<T>>>,
+}
+
+fn compute<T: SectionScalar>(surface: &RuledSurface<T>, plane: &Plane<T>, width: &T) -> Section<T> {
+    let (m, n) = surface.degrees();
+    let weight = surface.normal_component(plane);
+    let offset = surface.offset(plane);
+    let curve = surface.plane_section(plane);
+    let (outcome, poles, rulings) = match surface.classify_plane(plane) {
+        PlaneSection::Curve(_) => {
+            let w = trimmed(&weight.to_power());
+            let coords: Vec<Vec<T>> = (1..4).map(|a| curve.hom_coordinate(a).to_power()).collect();
+            let off = offset.to_power();
+            let poles = unit_zeros(&w, width)
+                .into_iter()
+                .map(|zero| {
+                    let exact = T::EXACT.then(|| {
+                        let mult = multiplicity(&w, &w, &zero, usize::MAX);
+                        let in_plane = vanishes_at(&off, &w, &zero);
+                        let removable = coords
+                            .iter()
+                            .all(|x| multiplicity(x, &w, &zero, mult) >= mult);
+                        (mult, in_plane, removable)
+                    });
+                    PoleData { zero, exact }
+                })
+                .collect();
+            ("curve", Some(poles), None)
+        }
+        PlaneSection::ParallelRulings { offset } => (
+            "parallel_rulings",
+            None,
+            Some(unit_zeros(&offset.to_power(), width)),
+        ),
+        PlaneSection::SurfaceInPlane => ("surface_in_plane", None, None),
+    };
+    Section {
+        m,
+        n,
+        outcome,
+        curve,
+        weight,
+        offset,
+        poles,
+        rulings,
+    }
+}
+
+// ------------------------------------------------------------------ answers
+
+/// A parameter in `[0, 1]`: an isolating interval, its midpoint, and the value when exact.
+#[derive(Debug, Serialize)]
+struct Parameter<V> {
+    interval: [V; 2],
+    approx: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    exact: Option<V>,
+}
+
+/// A pole of the curve.
+#[derive(Debug, Serialize)]
+struct Pole<V> {
+    #[serde(flatten)]
+    t: Parameter<V>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    multiplicity: Option<usize>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    ruling_in_plane: Option<bool>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    removable: Option<bool>,
+}
+
+/// `s(t) = -(N.B(t) + d) / (N.V(t))` in Bernstein form.
+#[derive(Debug, Serialize)]
+struct RulingParameter<V> {
+    formula: &'static str,
+    basis: &'static str,
+    numerator: Vec<V>,
+    denominator: Vec<V>,
+}
+
+#[derive(Debug, Serialize)]
+struct Approx {
+    weights: Vec<f64>,
+    points: Vec<Option<[f64; 3]>>,
+    weighted_points: Vec<[f64; 3]>,
+}
+
+/// The answer, with numbers of type `V` (exact strings, or f64 with `--float`).
+#[derive(Debug, Serialize)]
+struct Answer<V> {
+    kind: &'static str,
+    mode: &'static str,
+    outcome: &'static str,
+    m: usize,
+    n: usize,
+    degree: usize,
+    weights: Vec<V>,
+    points: Vec<Option<[V; 3]>>,
+    weighted_points: Vec<[V; 3]>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    poles: Option<Vec<Pole<V>>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    rulings_in_plane: Option<Vec<Parameter<V>>>,
+    ruling_parameter: RulingParameter<V>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    approx: Option<Approx>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    float: Option<Box<Answer<f64>>>,
+}
+
+fn parameter<T: SectionScalar, V>(z: &Zero<T>, v: &impl Fn(&T) -> V) -> Parameter<V> {
+    match z {
+        Zero::Exact(t) => Parameter {
+            interval: [v(t), v(t)],
+            approx: t.approx(),
+            exact: Some(v(t)),
+        },
+        Zero::Between(lo, hi) => Parameter {
+            interval: [v(lo), v(hi)],
+            approx: lo.add_ref(hi).mul_ref(&half()).approx(),
+            exact: None,
+        },
+    }
+}
+
+fn three<T, V>(p: &Vec3<T>, v: &impl Fn(&T) -> V) -> [V; 3] {
+    [v(&p.x), v(&p.y), v(&p.z)]
+}
+
+fn render<T: SectionScalar, V>(
+    s: &Section<T>,
+    mode: &'static str,
+    v: impl Fn(&T) -> V,
+) -> Answer<V> {
+    let weights = s.curve.weights();
+    let points = s.curve.points();
+    let weighted: Vec<Vec3<T>> = s
+        .curve
+        .control()
+        .iter()
+        .map(|h| Vec3::new(h.0[1].clone(), h.0[2].clone(), h.0[3].clone()))
+        .collect();
+    let approx = T::EXACT.then(|| Approx {
+        weights: weights.iter().map(SectionScalar::approx).collect(),
+        points: points
+            .iter()
+            .map(|p| p.as_ref().map(|p| three(p, &SectionScalar::approx)))
+            .collect(),
+        weighted_points: weighted
+            .iter()
+            .map(|p| three(p, &SectionScalar::approx))
+            .collect(),
+    });
+    Answer {
+        kind: "ruled_plane",
+        mode,
+        outcome: s.outcome,
+        m: s.m,
+        n: s.n,
+        degree: s.m + s.n,
+        weights: weights.iter().map(&v).collect(),
+        points: points
+            .iter()
+            .map(|p| p.as_ref().map(|p| three(p, &v)))
+            .collect(),
+        weighted_points: weighted.iter().map(|p| three(p, &v)).collect(),
+        poles: s.poles.as_ref().map(|poles| {
+            poles
+                .iter()
+                .map(|p| Pole {
+                    t: parameter(&p.zero, &v),
+                    multiplicity: p.exact.map(|e| e.0),
+                    ruling_in_plane: p.exact.map(|e| e.1),
+                    removable: p.exact.map(|e| e.2),
+                })
+                .collect()
+        }),
+        rulings_in_plane: s
+            .rulings
+            .as_ref()
+            .map(|r| r.iter().map(|z| parameter(z, &v)).collect()),
+        ruling_parameter: RulingParameter {
+            formula: "s(t) = -(N.B(t) + d) / (N.V(t)) = numerator(t) / denominator(t)",
+            basis: "Bernstein on [0, 1]: numerator of degree n, denominator of degree m",
+            numerator: s.offset.coeffs().iter().map(|c| v(&c.neg_ref())).collect(),
+            denominator: s.weight.coeffs().iter().map(&v).collect(),
+        },
+        approx,
+        float: None,
+    }
+}
+
+fn exact_answer<T: SectionScalar + std::fmt::Display>(
+    input: &Input<ExactNumber>,
+    lift: impl Fn(&Radical) -> T,
+) -> Result<Answer<String>, Error> {
+    let (surface, plane, width) = problem(input, |x| lift(&x.0))?;
+    let s = compute(&surface, &plane, &width);
+    Ok(render(&s, "exact", ToString::to_string))
+}
+
+fn exact(text: &str) -> Result<Answer<String>, Error> {
+    let input: Input<ExactNumber> = parse(text)?;
+    let all = input
+        .base
+        .iter()
+        .chain(&input.directions)
+        .flat_map(|c| c.0.iter())
+        .chain(input.plane.0.iter())
+        .chain(input.precision.iter());
+    // Rational input runs over the (faster) rationals; radicals over the radical field.
+    if all.into_iter().all(|x| x.0.is_rational()) {
+        exact_answer(&input, |x| {
+            x.to_rational()
+                .expect("is_rational was checked for every number")
+        })
+    } else {
+        exact_answer(&input, Clone::clone)
+    }
+}
+
+fn float_answer(text: &str) -> Result<Answer<f64>, Error> {
+    let input: Input<FloatNumber> = parse(text)?;
+    let (surface, plane, width) = problem(&input, |x| x.0)?;
+    let s = compute(&surface, &plane, &width);
+    let answer = render(&s, "float", |x: &f64| *x + 0.0);
+    let finite = answer
+        .weighted_points
+        .iter()
+        .flatten()
+        .all(|x| x.is_finite())
+        && answer.weights.iter().all(|x| x.is_finite());
+    if !finite {
+        return Err(Error::Input(
+            "the f64 computation overflows for these numbers; use exact mode".into(),
+        ));
+    }
+    Ok(answer)
+}
+
+/// The kind.
+pub struct RuledPlane;
+
+impl Kind for RuledPlane {
+    const NAME: &'static str = "ruled_plane";
+    type Input = Input<ExactNumber>;
+
+    fn answer(text: &str, mode: Mode) -> Result<Value, Error> {
+        match mode {
+            Mode::Exact => Ok(to_json(&exact(text)?)),
+            Mode::Float => Ok(to_json(&float_answer(text)?)),
+            Mode::Both => {
+                let mut e = exact(text)?;
+                e.float = Some(Box::new(float_answer(text)?));
+                Ok(to_json(&e))
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn q(s: &str) -> Rational {
+        s.parse().expect("a rational")
+    }
+
+    #[test]
+    fn rational_zeros_are_exact_and_irrational_ones_isolated() {
+        // (t - 1/3)^2 (t^2 - 1/2): a double rational zero and 1/sqrt 2.
+        let p = UPoly::from_roots(&[q("1/3"), q("1/3")]).mul_ref(&UPoly::from_coeffs(vec![
+            q("-1/2"),
+            Rational::ZERO,
+            Rational::ONE,
+        ]));
+        let width = q("1/1000000");
+        let z = unit_zeros(p.coeffs(), &width);
+        assert_eq!(z.len(), 2, "{z:?}");
+        assert_eq!(z[0], Zero::Exact(q("1/3")));
+        match &z[1] {
+            Zero::Between(lo, hi) => {
+                assert!(lo.square() < q("1/2") && hi.square() > q("1/2"));
+                assert!(hi.sub_ref(lo) <= width);
+            }
+            other => panic!("{other:?}"),
+        }
+        let pc = p.coeffs().to_vec();
+        assert_eq!(multiplicity(&pc, &pc, &z[0], usize::MAX), 2);
+        assert_eq!(multiplicity(&pc, &pc, &z[1], usize::MAX), 1);
+    }
+
+    #[test]
+    fn zeros_at_the_ends_and_at_bisection_points() {
+        // t (t - 1/2)(t - 1)(t - 3/4)(t - 2)
+        let p = UPoly::from_roots(&[q("0"), q("1/2"), q("1"), q("3/4"), q("2")]);
+        let z = unit_zeros(p.coeffs(), &q("1/1024"));
+        let want: Vec<Zero<Rational>> = ["0", "1/2", "3/4", "1"]
+            .iter()
+            .map(|s| Zero::Exact(q(s)))
+            .collect();
+        assert_eq!(z, want);
+    }
+
+    #[test]
+    fn radical_coefficients_with_a_rational_zero() {
+        // sqrt(2) (t - 2/5) (t + 1): the zero 2/5 is exact.
+        let s2 = Radical::sqrt_of(2);
+        let p: Vec<Radical> = [q("-2/5"), q("3/5"), q("1")]
+            .iter()
+            .map(|c| Radical::from(c).mul_ref(&s2))
+            .collect();
+        let z = unit_zeros(&p, &Radical::from(q("1/1000")));
+        assert_eq!(z, vec![Zero::Exact(Radical::from(q("2/5")))]);
+    }
+}
