@@ -285,10 +285,7 @@ fn example4() -> String {
     // Legend and the exact values.
     let rows: Vec<(String, Sym)> = vec![
         ("surface above z = 0".into(), Sym::Line("srf")),
-        (
-            "surface below z = 0".into(),
-            Sym::Line("srf-below"),
-        ),
+        ("surface below z = 0".into(), Sym::Line("srf-below")),
         ("plane z = 0".into(), Sym::Line("plane-key")),
         ("section curve (exact)".into(), Sym::Line("section")),
         ("control polygon r0..r3".into(), Sym::Line("cpoly")),
