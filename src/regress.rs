@@ -10,6 +10,8 @@ use crate::Error;
 use clap::{Args, ValueEnum};
 use std::process::ExitCode;
 
+pub mod ruled;
+
 /// The largest `--samples` (each sample is evaluated exactly, about 0.8 ms on one core for
 /// `cylinder_sphere`: the maximum is minutes of work).
 pub const MAX_SAMPLES: usize = 1_000_000;
@@ -36,7 +38,7 @@ pub struct RegressArgs {
     /// The exact scalar of the reference side.
     #[arg(long, value_enum, default_value_t = ScalarChoice::Fast)]
     pub scalar: ScalarChoice,
-    /// Print the report as JSON (plane-plane only).
+    /// Print the report(s) as one JSON document instead of text.
     #[arg(long)]
     pub json: bool,
 }
@@ -55,6 +57,11 @@ pub enum Kernel {
     /// construction, binned by the angle between the normals (90 degrees down to 1e-12 rad).
     #[value(alias = "plane_plane")]
     PlanePlane,
+    /// Chiang's plane section of a ruled surface (weights and control points, SPEC §4) for
+    /// (m, n) = (1, 2), (2, 3), (3, 5), on random and near-degenerate surfaces
+    /// ([`ruled`]).
+    #[value(alias = "ruled_plane")]
+    RuledPlane,
 }
 
 /// The cylinder/sphere kernel. Inputs: axis point `a, b`, radius `r`, the rotations as rational
@@ -126,6 +133,11 @@ fn generator(kernel: Kernel) -> Result<UniformBox, Error> {
             hi.push(1.0);
             UniformBox::new(lo, hi)
         }
+        Kernel::RuledPlane => {
+            return Err(Error::Usage(
+                "ruled-plane draws from its own generators (regress::ruled)".into(),
+            ))
+        }
     };
     gen.map_err(|e| Error::Usage(format!("input generator: {e}")))
 }
@@ -146,6 +158,11 @@ fn run_kernel<E: ExactScalar>(
         Kernel::PlanePlane => {
             return Err(Error::Usage(
                 "plane-plane is not a harness formula (see regress::planes)".into(),
+            ))
+        }
+        Kernel::RuledPlane => {
+            return Err(Error::Usage(
+                "ruled-plane runs several generators (regress::ruled::rows)".into(),
             ))
         }
     };
@@ -175,20 +192,48 @@ pub fn run(args: &RegressArgs) -> Result<ExitCode, Error> {
         }
         return Ok(ExitCode::SUCCESS);
     }
-    if args.json {
-        return Err(Error::Usage(
-            "--json is available for regress plane-plane only".into(),
-        ));
-    }
-    let gen = generator(args.kernel)?;
     let options = Options {
         worst: args.worst,
         ..Options::default()
     };
+    if args.kernel == Kernel::RuledPlane {
+        let rows = match args.scalar {
+            ScalarChoice::Fast => ruled::rows::<Rational>(args.samples, args.seed, &options)?,
+            ScalarChoice::Plain => ruled::rows::<PlainRational>(args.samples, args.seed, &options)?,
+        };
+        if args.json {
+            crate::output::println(format_args!("{:#}", ruled::rows_json(&rows)))?;
+        } else {
+            crate::output::println(ruled::text(&rows, args.seed))?;
+        }
+        return Ok(ExitCode::SUCCESS);
+    }
+    let gen = generator(args.kernel)?;
     let report = match args.scalar {
         ScalarChoice::Fast => run_kernel::<Rational>(args.kernel, &gen, args, &options)?,
         ScalarChoice::Plain => run_kernel::<PlainRational>(args.kernel, &gen, args, &options)?,
     };
+    if args.json {
+        let mut doc = serde_json::json!({ "report": ruled::report_json(&report) });
+        if args.kernel == Kernel::CylinderSphere {
+            let r = root_errors(&gen, args.samples, args.seed);
+            let s = sign_errors(args.samples, args.seed);
+            doc["roots"] = serde_json::json!({
+                "compared": r.compared,
+                "max_ulps": r.max_ulps,
+                "median_ulps": r.median_ulps,
+                "worst": r.worst,
+            });
+            doc["signs_near_tangency"] = serde_json::json!({
+                "samples": s.samples,
+                "false_real": s.false_real,
+                "false_empty": s.false_empty,
+                "exact_zero": s.exact_zero,
+            });
+        }
+        crate::output::println(format_args!("{doc:#}"))?;
+        return Ok(ExitCode::SUCCESS);
+    }
     crate::output::println(report)?;
     if args.kernel == Kernel::CylinderSphere {
         crate::output::println(root_errors(&gen, args.samples, args.seed).text())?;

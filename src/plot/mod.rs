@@ -27,6 +27,7 @@ use std::f64::consts::TAU;
 use std::io::Write as _;
 use std::process::ExitCode;
 
+pub mod chiang;
 mod figure;
 mod scene;
 mod svg;
@@ -45,12 +46,15 @@ use view3d::view_3d;
 /// Arguments of `exactcheck plot`.
 #[derive(Debug, Args)]
 pub struct PlotArgs {
-    /// `spaeth` (with `--example N`) or a `cylinder_sphere` problem file (the format of `solve`).
+    /// `spaeth` (with `--example N`), `chiang` (with `--example 4`: Chiang's ruled surface, the
+    /// plane z = 0, the exact section curve and its control polygon, one 3D figure) or a
+    /// `cylinder_sphere` problem file (the format of `solve`).
     pub source: String,
-    /// Which of Spaeth's examples to draw (1, 2 or 3), with `spaeth`.
+    /// Which example to draw: Spaeth's 1, 2 or 3 with `spaeth`; 4 with `chiang`.
     #[arg(long, value_name = "N")]
     pub example: Option<u32>,
-    /// The figure: the t-u diagram (the paper's Fig. 2 / 3) or a 3D view.
+    /// The figure of a cylinder/sphere: the t-u diagram (the paper's Fig. 2 / 3) or a 3D view
+    /// (`chiang` has one figure, a 3D view, whatever `--view` says).
     #[arg(long, value_enum, default_value_t = View::Tu)]
     pub view: View,
     /// The SVG file to write; `-`: standard output (the summary line then goes to standard
@@ -76,6 +80,14 @@ pub enum View {
 /// path that cannot be written; [`Error::Io`] / [`Error::Input`] for an unreadable or malformed
 /// problem file or one of another kind; [`Error::Output`] when standard output fails.
 pub fn run(args: &PlotArgs) -> Result<ExitCode, Error> {
+    if args.source == "chiang" {
+        let svg = chiang::figure(args.example)?;
+        return emit(
+            &args.output,
+            &svg,
+            "Chiang Example 4 (ruled surface, plane z = 0, exact section curve, control polygon)",
+        );
+    }
     let scene = match (args.source.as_str(), args.example) {
         ("spaeth", Some(n)) => spaeth_scene(n)?,
         ("spaeth", None) => {
@@ -83,7 +95,7 @@ pub fn run(args: &PlotArgs) -> Result<ExitCode, Error> {
         }
         (_, Some(_)) => {
             return Err(Error::Usage(format!(
-                "--example goes with `plot spaeth`, not with a problem file ({})",
+                "--example goes with `plot spaeth` or `plot chiang`, not with a problem file ({})",
                 args.source
             )))
         }
@@ -93,25 +105,29 @@ pub fn run(args: &PlotArgs) -> Result<ExitCode, Error> {
         View::Tu => (tu_diagram(&scene), "t-u diagram"),
         View::ThreeD => (view_3d(&scene), "3D view"),
     };
-    let to_stdout = args.output == "-";
-    if to_stdout {
-        crate::output::print(&svg)?;
-    } else {
-        std::fs::write(&args.output, &svg)
-            .map_err(|e| Error::Usage(format!("cannot write {}: {e}", args.output)))?;
-    }
-    let summary = format!(
-        "wrote {}: {what} of {}{} ({} bytes of SVG)",
-        if to_stdout {
-            "standard output"
-        } else {
-            &args.output
-        },
+    let what = format!(
+        "{what} of {}{}",
         scene.name,
         match (args.view, scene.figure) {
             (View::Tu, Some(f)) => format!(" (the paper's {f})"),
             _ => String::new(),
-        },
+        }
+    );
+    emit(&args.output, &svg, &what)
+}
+
+/// Writes `svg` to `output` (`-`: standard output) and prints the summary line "wrote ...".
+fn emit(output: &str, svg: &str, what: &str) -> Result<ExitCode, Error> {
+    let to_stdout = output == "-";
+    if to_stdout {
+        crate::output::print(svg)?;
+    } else {
+        std::fs::write(output, svg)
+            .map_err(|e| Error::Usage(format!("cannot write {output}: {e}")))?;
+    }
+    let summary = format!(
+        "wrote {}: {what} ({} bytes of SVG)",
+        if to_stdout { "standard output" } else { output },
         svg.len()
     );
     if to_stdout {

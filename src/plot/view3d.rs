@@ -10,14 +10,14 @@ const AZIMUTH: f64 = -60.0;
 const ELEVATION: f64 = -25.0;
 
 /// Orthographic projection: screen right, screen up and the direction towards the viewer.
-struct Camera {
+pub(super) struct Camera {
     right: Vec3<f64>,
     up: Vec3<f64>,
     toward: Vec3<f64>,
 }
 
 impl Camera {
-    fn new(azimuth: f64, elevation: f64) -> Camera {
+    pub(super) fn new(azimuth: f64, elevation: f64) -> Camera {
         let (sa, ca) = azimuth.to_radians().sin_cos();
         let (se, ce) = elevation.to_radians().sin_cos();
         Camera {
@@ -28,11 +28,11 @@ impl Camera {
     }
 
     /// `(x, y)` on the image plane (y up).
-    fn project(&self, p: &Vec3<f64>) -> (f64, f64) {
+    pub(super) fn project(&self, p: &Vec3<f64>) -> (f64, f64) {
         (p.dot(&self.right), p.dot(&self.up))
     }
 
-    fn depth(&self, p: &Vec3<f64>) -> f64 {
+    pub(super) fn depth(&self, p: &Vec3<f64>) -> f64 {
         p.dot(&self.toward)
     }
 }

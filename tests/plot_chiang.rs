@@ -1,0 +1,166 @@
+//! End-to-end tests of `exactcheck plot chiang --example 4`: the SVG is produced, well-formed,
+//! holds the surface, the plane, the exact section curve and the control polygon, matches the
+//! committed `docs/chiang_example4.svg`, and other example numbers are one-line errors (exit 2).
+
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+/// A fresh file path under the system temp dir, removed when dropped.
+struct TempFile(PathBuf);
+
+impl TempFile {
+    fn new(tag: &str) -> TempFile {
+        let nanos = std::time::SystemTime::now()
+            .duration_since(std::time::UNIX_EPOCH)
+            .map_or(0, |d| d.as_nanos());
+        TempFile(std::env::temp_dir().join(format!(
+            "exactcheck-plot-chiang-{tag}-{}-{nanos}.svg",
+            std::process::id()
+        )))
+    }
+}
+
+impl Drop for TempFile {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_file(&self.0);
+    }
+}
+
+fn exactcheck(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+        .args(args)
+        .output()
+        .expect("run exactcheck")
+}
+
+/// Well-formed: one `<svg>` root, every opened element closed in order, no raw `<` inside a
+/// tag, every `&` an entity.
+fn check_svg(svg: &str) {
+    assert!(svg.starts_with("<svg"), "{}", &svg[..svg.len().min(80)]);
+    assert_eq!(svg.matches("<svg").count(), 1);
+    assert!(svg.trim_end().ends_with("</svg>"));
+    let mut stack: Vec<String> = Vec::new();
+    let mut rest = svg;
+    while let Some(i) = rest.find('<') {
+        let after = &rest[i + 1..];
+        let end = after.find('>').expect("unterminated tag");
+        let tag = &after[..end];
+        assert!(!tag.contains('<'), "raw < inside a tag: {tag}");
+        if let Some(name) = tag.strip_prefix('/') {
+            assert_eq!(stack.pop().as_deref(), Some(name.trim()), "</{name}>");
+        } else if !tag.ends_with('/') {
+            stack.push(
+                tag.split_whitespace()
+                    .next()
+                    .unwrap_or_default()
+                    .to_string(),
+            );
+        }
+        rest = &after[end + 1..];
+    }
+    assert!(stack.is_empty(), "unclosed: {stack:?}");
+    for (i, _) in svg.match_indices('&') {
+        let ent = &svg[i..svg.len().min(i + 7)];
+        assert!(
+            ["&amp;", "&lt;", "&gt;", "&quot;", "&apos;"]
+                .iter()
+                .any(|e| ent.starts_with(e)),
+            "bare & at {i}: {ent}"
+        );
+    }
+}
+
+/// The number of points of the first `<polyline class="CLASS" points="...">`.
+fn polyline_points(svg: &str, class: &str) -> usize {
+    let key = format!("<polyline class=\"{class}\" points=\"");
+    let i = svg
+        .find(&key)
+        .unwrap_or_else(|| panic!("no polyline {class}"));
+    let pts = svg[i + key.len()..].split('"').next().unwrap_or_default();
+    pts.split_whitespace().count()
+}
+
+#[test]
+fn example_4_figure_is_written_and_well_formed() {
+    let out = TempFile::new("file");
+    let path = out.0.to_str().expect("utf-8 temp path");
+    let o = exactcheck(&["plot", "chiang", "--example", "4", "-o", path]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(stdout.lines().count(), 1, "{stdout}");
+    assert!(
+        stdout.starts_with(&format!("wrote {path}: Chiang Example 4")),
+        "{stdout}"
+    );
+    let svg = std::fs::read_to_string(&out.0).expect("the SVG was written");
+    check_svg(&svg);
+    // The plane, the surface on both sides of it, the exact curve (97 samples), the control
+    // polygon (4 points) and its 4 labelled points with the weights.
+    assert_eq!(svg.matches("<polygon class=\"plane\"").count(), 1);
+    assert!(svg.matches("<polyline class=\"srf\"").count() >= 9);
+    assert!(svg.matches("<polyline class=\"srf-below\"").count() >= 9);
+    assert_eq!(polyline_points(&svg, "section"), 97);
+    assert_eq!(polyline_points(&svg, "cpoly"), 4);
+    assert_eq!(svg.matches("<circle class=\"cpt\"").count(), 4);
+    for label in [
+        "r0 (w0 = 1.414)",
+        "r3 (w3 = 2.449)",
+        "w0 = sqrt(2)",
+        "w3 = sqrt(6)",
+    ] {
+        assert!(svg.contains(label), "missing {label}");
+    }
+    // The exact weights w1, w2 as radicals, and r0 = (-1/sqrt 2, 1/sqrt 2, 0) in decimals.
+    assert!(svg.contains("w1 = 2*sqrt(2)/3 + sqrt(6)/3"));
+    assert!(svg.contains("w2 = sqrt(2)/3 + 2*sqrt(6)/3"));
+    assert!(svg.contains("r0 = (−0.7071, 0.7071, 0)"));
+}
+
+#[test]
+fn committed_figure_is_current() {
+    let o = exactcheck(&["plot", "chiang", "--example", "4", "-o", "-"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let svg = String::from_utf8(o.stdout).expect("utf-8 SVG");
+    check_svg(&svg);
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        stderr.starts_with("wrote standard output: Chiang Example 4"),
+        "{stderr}"
+    );
+    let committed = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/chiang_example4.svg"),
+    )
+    .expect("docs/chiang_example4.svg is committed");
+    assert!(
+        committed == svg,
+        "docs/chiang_example4.svg is stale: regenerate it with `exactcheck plot chiang --example 4 -o docs/chiang_example4.svg`"
+    );
+}
+
+#[test]
+fn other_examples_are_one_line_errors() {
+    for (args, needle) in [
+        (
+            &["plot", "chiang", "--example", "3", "-o", "-"][..],
+            "unknown example 3",
+        ),
+        (
+            &["plot", "chiang", "--example", "0", "-o", "-"][..],
+            "unknown example 0",
+        ),
+        (
+            &["plot", "chiang", "-o", "-"][..],
+            "plot chiang needs --example 4",
+        ),
+    ] {
+        let o = exactcheck(args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        assert!(o.stdout.is_empty(), "{args:?}");
+        let stderr = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(stderr.lines().count(), 1, "{stderr}");
+        assert!(
+            stderr.contains(needle) && stderr.contains("--example 4"),
+            "{stderr}"
+        );
+    }
+}
