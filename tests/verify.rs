@@ -3,9 +3,9 @@
 use exactcheck::claims::{verify, Verdict};
 use std::process::Command;
 
-/// The ids of SPEC §6 that the catalogue implements (all `juttler.*` and `spaeth.*` ids, and
-/// `planes.wabis`).
-const SPEC_IDS: [&str; 30] = [
+/// The ids of SPEC §6 that the catalogue implements (all `juttler.*` and `spaeth.*` ids,
+/// `planes.wabis` and the ruled-surface `chiang.*` ids).
+const SPEC_IDS: [&str; 37] = [
     "juttler.lebesgue",
     "juttler.dietz",
     "juttler.satz1",
@@ -36,6 +36,13 @@ const SPEC_IDS: [&str; 30] = [
     "spaeth.example2",
     "spaeth.example3",
     "planes.wabis",
+    "chiang.theorem",
+    "chiang.corollary1",
+    "chiang.corollary2",
+    "chiang.corollary5",
+    "chiang.example4",
+    "chiang.line",
+    "chiang.vicinity",
 ];
 
 /// Catalogue ids that are not ids of SPEC §6 (documented in `claims`' module doc).

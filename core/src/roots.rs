@@ -126,9 +126,9 @@ impl std::error::Error for ZeroPolynomial {}
 /// # Errors
 /// [`ZeroPolynomial`] when `p` is identically zero.
 ///
-/// # Panics
-/// Only for an inexact scalar (`f64`): when two roots cannot be separated before the midpoint
-/// of an interval rounds to one of its ends.
+/// For an inexact scalar (`f64`), an interval whose midpoint rounds to one of its ends cannot be
+/// halved: it is returned as a `Between` cluster that may hold several roots (or, after
+/// rounding, none) — the float result is a heuristic, never a panic.
 ///
 /// ```
 /// use exactcheck_core::bernstein::Bernstein;
@@ -375,11 +375,13 @@ fn isolate_square_free<T: OrderedField>(q: &Bernstein<T>) -> Vec<IsolatedRoot<T>
             continue;
         }
         let m = midpoint(&a, &b);
-        assert!(
-            a < m && m < b,
-            "unit_roots: the midpoint of an isolating interval rounds to an end point \
-             (inexact scalar such as f64): roots too close to separate"
-        );
+        if !(a < m && m < b) {
+            // Only an inexact scalar (f64) gets here: the interval cannot be halved any more,
+            // so its roots cannot be separated. Report the cluster as one interval (it may hold
+            // several roots or none) instead of failing; exact scalars always halve.
+            out.push(IsolatedRoot::Between(a, b));
+            continue;
+        }
         let (left, right) = poly.split(&half);
         let root_at_m = left.coeffs()[left.degree()].is_zero();
         stack.push(Work::Interval(m.clone(), b, right));

@@ -246,3 +246,21 @@ fn square_free_entry_point_matches() {
 fn square_free_entry_point_rejects_zero() {
     unit_roots_square_free(&Bernstein::constant(q(0, 1), 2));
 }
+
+/// Regression: two f64 roots closer than the spacing of doubles near 1/2 used to panic
+/// ("the midpoint rounds to an end point"); they are now one `Between` cluster around 1/2.
+#[test]
+fn f64_inseparable_roots_are_a_cluster_not_a_panic() {
+    let e = 2f64.powi(-60);
+    // (t - 1/2)(t - 1/2 - e) in Bernstein form of degree 2 from its power coefficients.
+    let p = Bernstein::from_power(&[0.5 * (0.5 + e), -(1.0 + e), 1.0]).unwrap();
+    let roots = unit_roots(&p).unwrap();
+    assert!(!roots.is_empty());
+    for r in &roots {
+        let (lo, hi) = match r {
+            IsolatedRoot::Exact(x) => (*x, *x),
+            IsolatedRoot::Between(a, b) => (*a, *b),
+        };
+        assert!(lo <= 0.5 + 1e-9 && hi >= 0.5 - 1e-9, "{r:?}");
+    }
+}
