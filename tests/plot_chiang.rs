@@ -26,48 +26,15 @@ impl Drop for TempFile {
     }
 }
 
+#[path = "common/svg.rs"]
+mod svg;
+use svg::check_svg;
+
 fn exactcheck(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_exactcheck"))
         .args(args)
         .output()
         .expect("run exactcheck")
-}
-
-/// Well-formed: one `<svg>` root, every opened element closed in order, no raw `<` inside a
-/// tag, every `&` an entity.
-fn check_svg(svg: &str) {
-    assert!(svg.starts_with("<svg"), "{}", &svg[..svg.len().min(80)]);
-    assert_eq!(svg.matches("<svg").count(), 1);
-    assert!(svg.trim_end().ends_with("</svg>"));
-    let mut stack: Vec<String> = Vec::new();
-    let mut rest = svg;
-    while let Some(i) = rest.find('<') {
-        let after = &rest[i + 1..];
-        let end = after.find('>').expect("unterminated tag");
-        let tag = &after[..end];
-        assert!(!tag.contains('<'), "raw < inside a tag: {tag}");
-        if let Some(name) = tag.strip_prefix('/') {
-            assert_eq!(stack.pop().as_deref(), Some(name.trim()), "</{name}>");
-        } else if !tag.ends_with('/') {
-            stack.push(
-                tag.split_whitespace()
-                    .next()
-                    .unwrap_or_default()
-                    .to_string(),
-            );
-        }
-        rest = &after[end + 1..];
-    }
-    assert!(stack.is_empty(), "unclosed: {stack:?}");
-    for (i, _) in svg.match_indices('&') {
-        let ent = &svg[i..svg.len().min(i + 7)];
-        assert!(
-            ["&amp;", "&lt;", "&gt;", "&quot;", "&apos;"]
-                .iter()
-                .any(|e| ent.starts_with(e)),
-            "bare & at {i}: {ent}"
-        );
-    }
 }
 
 /// The number of points of the first `<polyline class="CLASS" points="...">`.

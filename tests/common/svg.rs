@@ -1,0 +1,43 @@
+//! The SVG well-formedness check shared by the plot tests (`#[path]`-included, so crates
+//! that do not plot do not compile it).
+
+/// Well-formed enough: starts with `<svg`, one `<svg` and one `</svg>` at the end, and every
+/// element that is opened is closed (a simple tag-stack check; no comments or CDATA are written).
+pub fn check_svg(svg: &str) {
+    assert!(svg.starts_with("<svg"), "{}", &svg[..svg.len().min(80)]);
+    assert_eq!(svg.matches("<svg").count(), 1);
+    assert_eq!(svg.matches("</svg>").count(), 1);
+    assert!(svg.trim_end().ends_with("</svg>"));
+    assert!(svg.contains("viewBox=\"0 0 "));
+    let mut stack: Vec<String> = Vec::new();
+    let mut rest = svg;
+    while let Some(i) = rest.find('<') {
+        let after = &rest[i + 1..];
+        let end = after.find('>').expect("unterminated tag");
+        let tag = &after[..end];
+        // Attribute values are escaped: no raw '<' inside a tag.
+        assert!(!tag.contains('<'), "raw < inside a tag: {tag}");
+        if let Some(name) = tag.strip_prefix('/') {
+            assert_eq!(
+                stack.pop().as_deref(),
+                Some(name.trim()),
+                "mismatched </{name}>"
+            );
+        } else if !tag.ends_with('/') {
+            let name = tag.split_whitespace().next().unwrap_or_default();
+            stack.push(name.to_string());
+        }
+        rest = &after[end + 1..];
+    }
+    assert!(stack.is_empty(), "unclosed: {stack:?}");
+    // Text is escaped: a bare '&' is always an entity.
+    for (i, _) in svg.match_indices('&') {
+        let ent = &svg[i..svg.len().min(i + 7)];
+        assert!(
+            ["&amp;", "&lt;", "&gt;", "&quot;", "&apos;"]
+                .iter()
+                .any(|e| ent.starts_with(e)),
+            "bare & at {i}: {ent}"
+        );
+    }
+}
