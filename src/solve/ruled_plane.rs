@@ -22,32 +22,25 @@
 //! `ruling_parameter` gives `s(t) = -(N.B(t) + d) / (N.V(t))` as Bernstein coefficients of its
 //! numerator (degree `n`) and denominator (degree `m`): the section point at `t` is `S(s(t), t)`.
 //!
-//! # Root isolation (hand-written here)
-//! The zeros in `[0, 1]` are isolated by Descartes' rule of signs in Bernstein form with
-//! de Casteljau bisection, on the square-free part `p / gcd(p, p')` (plain Euclid over the
-//! exact field, power basis): a piece with no sign change in its Bernstein coefficients has no
-//! zero inside, one with exactly one sign change and non-zero end coefficients exactly one
-//! (Vincent / Collins–Akritas: on square-free input every piece reaches 0 or 1 after finitely
-//! many bisections, so this terminates); a zero value at a bisection point or an end of `[0, 1]`
-//! is recorded exactly. Rational zeros are then made exact: writing the coefficients in the basis
-//! `sqrt(k)` of the radical field, `p = sum_k sqrt(k) p_k(t)` with rational `p_k`, a rational
-//! `t0` is a zero of `p` iff it is a common zero of all `p_k`, i.e. a zero of the rational
-//! polynomial `G = gcd_k p_k`, whose rational zeros Sturm isolation (`UPoly::isolate_roots`)
-//! returns exactly; each is placed in the one isolating interval that contains it. A question
-//! "does `f` vanish at the zero `t0` of `p` isolated by `(lo, hi)`" is decided exactly by
-//! `g = gcd(p, f)`: its zeros in `[lo, hi]` are zeros of `p`, so `t0` is a zero of `f` iff the
-//! square-free part of `g` changes sign between `lo` and `hi`. Multiplicities follow from the
-//! derivatives. This is hand-written because the workspace's exact root isolation
-//! (`exactcheck_exact::univariate`) works over `Q` only, and the poles of a radical surface are
-//! zeros of polynomials with coefficients in `Q(sqrt 2, sqrt 6, ...)`.
+//! # Root isolation
+//! The zeros in `[0, 1]` are isolated by the workspace's generic Bernstein–Descartes subdivision
+//! on the square-free part ([`exactcheck_core::roots`], any ordered field, so radical
+//! coefficients too), refined to `precision`. Rational zeros are then made exact: writing the
+//! coefficients in the basis `sqrt(k)` of the radical field, `p = sum_k sqrt(k) p_k(t)` with
+//! rational `p_k`, a rational `t0` is a zero of `p` iff it is a common zero of all `p_k`, i.e. a
+//! zero of the rational polynomial `G = gcd_k p_k`, whose rational zeros Sturm isolation
+//! (`UPoly::isolate_roots`) returns exactly; each is placed in the one isolating interval that
+//! contains it. "How often does `f` vanish at the zero `t0` of `p` isolated by `(lo, hi)`" is
+//! decided exactly on `g = gcd(p, f)`: its zeros are zeros of `p`, so `(lo, hi)` isolates at most
+//! `t0` among them, and the multiplicity of `t0` in `g` is `min(mult_p, mult_f)`
+//! ([`exactcheck_core::roots::multiplicity`]).
 //!
 //! # Float mode
 //! `--float` runs the same generic code in `f64`: the classification's zero tests are exact
-//! comparisons with `0.0`, and the poles come from the same Descartes subdivision, cut off at
-//! depth 60 (an interval still holding several sign changes there is reported as one pole).
-//! That is a heuristic: it can miss a double pole perturbed off the axis or report a
-//! cluster as one; `ruling_in_plane`, `multiplicity` and `removable` need exact gcds and are
-//! given in exact mode only.
+//! comparisons with `0.0`, and the poles come from the same subdivision, which stops where f64
+//! cannot halve an interval (such an interval is reported as one pole). That is a heuristic: it
+//! can miss a double pole perturbed off the axis or report a cluster as one; `ruling_in_plane`,
+//! `multiplicity` and `removable` need exact gcds and are given in exact mode only.
 //!
 //! # Limits
 //! `m + n <= 60` ([`MAX_DEGREE`]): the product rule uses binomial coefficients `C(m+n, k)` in
@@ -56,8 +49,9 @@
 use super::number::{Coords, ExactNumber, FloatNumber};
 use super::{parse, to_json, Kind, Mode};
 use crate::Error;
+use exactcheck_core::roots::{self, IsolatedRoot};
 use exactcheck_core::ruled::{Plane, PlaneSection, RuledSurface};
-use exactcheck_core::{Bernstein, OrderedField, RationalBezierCurve, Ring, Sign, Vec3};
+use exactcheck_core::{Bernstein, OrderedField, RationalBezierCurve, Sign, Vec3};
 use exactcheck_exact::univariate::UPoly;
 use exactcheck_exact::{Radical, Radicand, Rational};
 use schemars::JsonSchema;
@@ -69,9 +63,6 @@ pub const MAX_DEGREE: usize = 60;
 
 /// Default width of the isolating intervals of irrational poles.
 const DEFAULT_WIDTH_LOG2: u32 = 50;
-
-/// Subdivision depth at which float mode stops and reports an interval as one pole.
-const FLOAT_DEPTH: usize = 60;
 
 // ------------------------------------------------------------------ input
 
@@ -214,174 +205,25 @@ impl SectionScalar for f64 {
     }
 }
 
-// ------------------------------------------------------------------ polynomials (power basis)
-
-fn trimmed<T: Ring>(p: &[T]) -> Vec<T> {
-    let mut v = p.to_vec();
-    while v.last().is_some_and(Ring::is_zero) {
-        v.pop();
-    }
-    v
-}
-
-fn horner<T: Ring>(p: &[T], t: &T) -> T {
-    p.iter()
-        .rev()
-        .fold(T::zero(), |acc, c| acc.mul_ref(t).add_ref(c))
-}
-
-fn derivative<T: Ring>(p: &[T]) -> Vec<T> {
-    p.iter()
-        .enumerate()
-        .skip(1)
-        .map(|(i, c)| c.scale_i64(i as i64))
-        .collect()
-}
-
-/// Quotient and remainder of `a` by `b` (`b` trimmed, non-empty).
-fn div_rem<T: OrderedField>(a: &[T], b: &[T]) -> (Vec<T>, Vec<T>) {
-    let mut r = trimmed(a);
-    let lead = b
-        .last()
-        .expect("a non-zero divisor")
-        .inv()
-        .expect("trimmed");
-    if r.len() < b.len() {
-        return (Vec::new(), r);
-    }
-    let mut q = vec![T::zero(); r.len() - b.len() + 1];
-    while r.len() >= b.len() {
-        let shift = r.len() - b.len();
-        let f = r.last().expect("non-empty").mul_ref(&lead);
-        for (i, c) in b.iter().enumerate() {
-            r[shift + i] = r[shift + i].sub_ref(&f.mul_ref(c));
-        }
-        // The leading coefficient cancels exactly (in f64 too, by construction).
-        r.pop();
-        q[shift] = f;
-        r = trimmed(&r);
-    }
-    (q, r)
-}
-
-/// The monic gcd (empty when both are zero).
-fn gcd<T: OrderedField>(a: &[T], b: &[T]) -> Vec<T> {
-    let (mut a, mut b) = (trimmed(a), trimmed(b));
-    while !b.is_empty() {
-        let (_, r) = div_rem(&a, &b);
-        a = b;
-        b = r;
-    }
-    match a.last() {
-        None => a,
-        Some(l) => {
-            let inv = l.inv().expect("trimmed");
-            a.iter().map(|c| c.mul_ref(&inv)).collect()
-        }
-    }
-}
-
-/// `p / gcd(p, p')` (p trimmed, degree >= 1).
-fn square_free<T: OrderedField>(p: &[T]) -> Vec<T> {
-    let g = gcd(p, &derivative(p));
-    if g.len() <= 1 {
-        return p.to_vec();
-    }
-    div_rem(p, &g).0
-}
-
 // ------------------------------------------------------------------ isolation
 
-/// A zero in `[0, 1]`: exactly, or in the open interval `(lo, hi)` where the square-free part
-/// of the polynomial has opposite non-zero signs at the ends.
-#[derive(Clone, Debug, PartialEq)]
-enum Zero<T> {
-    Exact(T),
-    Between(T, T),
-}
-
-fn half<T: OrderedField>() -> T {
-    T::from_ratio(1, 2).expect("2 != 0")
-}
-
-/// The distinct zeros in `[0, 1]` of the polynomial with power coefficients `p` (not identically
-/// zero), increasing, each refined to width `<= width`.
-fn unit_zeros<T: SectionScalar>(p: &[T], width: &T) -> Vec<Zero<T>> {
-    let p = trimmed(p);
-    assert!(!p.is_empty(), "unit_zeros: the zero polynomial");
-    if p.len() == 1 {
-        return Vec::new();
-    }
-    let q = square_free(&p);
-    let mut out = Vec::new();
-    if horner(&q, &T::zero()).is_zero() {
-        out.push(Zero::Exact(T::zero()));
-    }
-    let b = Bernstein::from_power(&q).expect("a non-empty polynomial");
-    subdivide(&b, T::zero(), T::one(), 0, &mut out);
-    if horner(&q, &T::one()).is_zero() {
-        out.push(Zero::Exact(T::one()));
-    }
-    let rational = rational_zeros::<T>(&p);
-    out.into_iter()
-        .map(|z| match z {
-            Zero::Between(lo, hi) => {
-                match rational.iter().find(|r| {
-                    (r.sub_ref(&lo)).sign() == Sign::Positive
-                        && (hi.sub_ref(r)).sign() == Sign::Positive
-                }) {
-                    Some(r) => Zero::Exact(r.clone()),
-                    None => refine(&q, lo, hi, width),
-                }
-            }
-            exact => exact,
+/// The distinct zeros in `[0, 1]` of `p` (not identically zero), increasing, rational ones
+/// exact, irrational ones refined to width `<= width` (module doc).
+fn unit_zeros<T: SectionScalar>(p: &Bernstein<T>, width: &T) -> Vec<IsolatedRoot<T>> {
+    let found = roots::unit_roots(p).expect("unit_zeros: the caller passes a non-zero polynomial");
+    let rational = rational_zeros::<T>(&p.to_power());
+    found
+        .into_iter()
+        .map(|z| match &z {
+            IsolatedRoot::Between(lo, hi) => match rational.iter().find(|r| {
+                r.sub_ref(lo).sign() == Sign::Positive && hi.sub_ref(r).sign() == Sign::Positive
+            }) {
+                Some(r) => IsolatedRoot::Exact(r.clone()),
+                None => roots::refine(p, &z, width),
+            },
+            IsolatedRoot::Exact(_) => z,
         })
         .collect()
-}
-
-fn subdivide<T: SectionScalar>(
-    b: &Bernstein<T>,
-    lo: T,
-    hi: T,
-    depth: usize,
-    out: &mut Vec<Zero<T>>,
-) {
-    let v = b.sign_changes();
-    if v == 0 {
-        return;
-    }
-    let c = b.coeffs();
-    let ends = !c[0].is_zero() && !c[c.len() - 1].is_zero();
-    if (v == 1 && ends) || (!T::EXACT && depth >= FLOAT_DEPTH) {
-        out.push(Zero::Between(lo, hi));
-        return;
-    }
-    let mid = lo.add_ref(&hi).mul_ref(&half());
-    let (l, r) = b.split(&half());
-    let at_mid = l.coeffs().last().expect("non-empty").is_zero();
-    subdivide(&l, lo, mid.clone(), depth + 1, out);
-    if at_mid {
-        out.push(Zero::Exact(mid.clone()));
-    }
-    subdivide(&r, mid, hi, depth + 1, out);
-}
-
-/// Bisection of `(lo, hi)` on the square-free `q` down to width `<= width`.
-fn refine<T: SectionScalar>(q: &[T], mut lo: T, mut hi: T, width: &T) -> Zero<T> {
-    let s_lo = horner(q, &lo).sign();
-    // f64: stop when the midpoint no longer moves.
-    for _ in 0..if T::EXACT { usize::MAX } else { 200 } {
-        if hi.sub_ref(&lo).sub_ref(width).sign() != Sign::Positive {
-            break;
-        }
-        let mid = lo.add_ref(&hi).mul_ref(&half());
-        match horner(q, &mid).sign() {
-            Sign::Zero => return Zero::Exact(mid),
-            s if s == s_lo => lo = mid,
-            _ => hi = mid,
-        }
-    }
-    Zero::Between(lo, hi)
 }
 
 /// The rational zeros in `[0, 1]` of `p` (module doc): the exact zeros of the gcd of its
@@ -401,44 +243,25 @@ fn rational_zeros<T: SectionScalar>(p: &[T]) -> Vec<T> {
         .collect()
 }
 
-/// Whether `f` vanishes at the zero `z` of `p` (exact scalars; module doc).
-fn vanishes_at<T: SectionScalar>(f: &[T], p: &[T], z: &Zero<T>) -> bool {
-    match z {
-        Zero::Exact(t) => horner(f, t).is_zero(),
-        Zero::Between(lo, hi) => {
-            let f = trimmed(f);
-            if f.is_empty() {
-                return true;
-            }
-            let g = gcd(p, &f);
-            if g.len() <= 1 {
-                return false;
-            }
-            let gs = square_free(&g);
-            horner(&gs, lo).sign() != horner(&gs, hi).sign()
-        }
+/// The multiplicity of the zero `z` of `p` (isolated for `p`) as a zero of `f`, capped at its
+/// multiplicity in `p`: its multiplicity in `gcd(p, f)` (module doc). Exact scalars only.
+fn common_multiplicity<T: SectionScalar>(
+    p: &Bernstein<T>,
+    f: &Bernstein<T>,
+    z: &IsolatedRoot<T>,
+) -> usize {
+    if f.is_zero() {
+        return roots::multiplicity(p, z);
     }
-}
-
-/// The multiplicity of `f` at the zero `z` of `p`, counted up to `cap`.
-fn multiplicity<T: SectionScalar>(f: &[T], p: &[T], z: &Zero<T>, cap: usize) -> usize {
-    let mut f = trimmed(f);
-    let mut k = 0;
-    while k < cap && (f.is_empty() || vanishes_at(&f, p, z)) {
-        if f.is_empty() {
-            return cap;
-        }
-        k += 1;
-        f = trimmed(&derivative(&f));
-    }
-    k
+    let g = roots::gcd(&[p.clone(), f.clone()]).expect("f is not zero");
+    roots::multiplicity(&g, z)
 }
 
 // ------------------------------------------------------------------ the computation
 
 /// A pole, computed.
 struct PoleData<T> {
-    zero: Zero<T>,
+    zero: IsolatedRoot<T>,
     /// `(multiplicity, ruling_in_plane, removable)`, exact scalars only.
     exact: Option<(usize, bool, bool)>,
 }
@@ -452,7 +275,7 @@ struct Section<T> {
     weight: Bernstein<T>,
     offset: Bernstein<T>,
     poles: Option<Vec<PoleData<T>>>,
-    rulings: Option<Vec<Zero<T>>>,
+    rulings: Option<Vec<IsolatedRoot<T>>>,
 }
 
 fn compute<T: SectionScalar>(surface: &RuledSurface<T>, plane: &Plane<T>, width: &T) -> Section<T> {
@@ -462,18 +285,16 @@ fn compute<T: SectionScalar>(surface: &RuledSurface<T>, plane: &Plane<T>, width:
     let curve = surface.plane_section(plane);
     let (outcome, poles, rulings) = match surface.classify_plane(plane) {
         PlaneSection::Curve(_) => {
-            let w = trimmed(&weight.to_power());
-            let coords: Vec<Vec<T>> = (1..4).map(|a| curve.hom_coordinate(a).to_power()).collect();
-            let off = offset.to_power();
-            let poles = unit_zeros(&w, width)
+            let coords: Vec<Bernstein<T>> = (1..4).map(|a| curve.hom_coordinate(a)).collect();
+            let poles = unit_zeros(&weight, width)
                 .into_iter()
                 .map(|zero| {
                     let exact = T::EXACT.then(|| {
-                        let mult = multiplicity(&w, &w, &zero, usize::MAX);
-                        let in_plane = vanishes_at(&off, &w, &zero);
+                        let mult = roots::multiplicity(&weight, &zero);
+                        let in_plane = common_multiplicity(&weight, &offset, &zero) > 0;
                         let removable = coords
                             .iter()
-                            .all(|x| multiplicity(x, &w, &zero, mult) >= mult);
+                            .all(|x| common_multiplicity(&weight, x, &zero) >= mult);
                         (mult, in_plane, removable)
                     });
                     PoleData { zero, exact }
@@ -481,11 +302,9 @@ fn compute<T: SectionScalar>(surface: &RuledSurface<T>, plane: &Plane<T>, width:
                 .collect();
             ("curve", Some(poles), None)
         }
-        PlaneSection::ParallelRulings { offset } => (
-            "parallel_rulings",
-            None,
-            Some(unit_zeros(&offset.to_power(), width)),
-        ),
+        PlaneSection::ParallelRulings { offset } => {
+            ("parallel_rulings", None, Some(unit_zeros(&offset, width)))
+        }
         PlaneSection::SurfaceInPlane => ("surface_in_plane", None, None),
     };
     Section {
@@ -563,16 +382,16 @@ struct Answer<V> {
     float: Option<Box<Answer<f64>>>,
 }
 
-fn parameter<T: SectionScalar, V>(z: &Zero<T>, v: &impl Fn(&T) -> V) -> Parameter<V> {
+fn parameter<T: SectionScalar, V>(z: &IsolatedRoot<T>, v: &impl Fn(&T) -> V) -> Parameter<V> {
     match z {
-        Zero::Exact(t) => Parameter {
+        IsolatedRoot::Exact(t) => Parameter {
             interval: [v(t), v(t)],
             approx: t.approx(),
             exact: Some(v(t)),
         },
-        Zero::Between(lo, hi) => Parameter {
+        IsolatedRoot::Between(lo, hi) => Parameter {
             interval: [v(lo), v(hi)],
-            approx: lo.add_ref(hi).mul_ref(&half()).approx(),
+            approx: z.midpoint().approx(),
             exact: None,
         },
     }
@@ -716,6 +535,7 @@ impl Kind for RuledPlane {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use exactcheck_core::Ring;
 
     fn q(s: &str) -> Rational {
         s.parse().expect("a rational")
@@ -730,29 +550,31 @@ mod tests {
             Rational::ONE,
         ]));
         let width = q("1/1000000");
-        let z = unit_zeros(p.coeffs(), &width);
+        let z = unit_zeros(&p.to_bernstein(), &width);
         assert_eq!(z.len(), 2, "{z:?}");
-        assert_eq!(z[0], Zero::Exact(q("1/3")));
+        assert_eq!(z[0], IsolatedRoot::Exact(q("1/3")));
         match &z[1] {
-            Zero::Between(lo, hi) => {
+            IsolatedRoot::Between(lo, hi) => {
                 assert!(lo.square() < q("1/2") && hi.square() > q("1/2"));
                 assert!(hi.sub_ref(lo) <= width);
             }
             other => panic!("{other:?}"),
         }
-        let pc = p.coeffs().to_vec();
-        assert_eq!(multiplicity(&pc, &pc, &z[0], usize::MAX), 2);
-        assert_eq!(multiplicity(&pc, &pc, &z[1], usize::MAX), 1);
+        let b = p.to_bernstein();
+        assert_eq!(roots::multiplicity(&b, &z[0]), 2);
+        assert_eq!(roots::multiplicity(&b, &z[1]), 1);
+        assert_eq!(common_multiplicity(&b, &b.derivative(), &z[0]), 1);
+        assert_eq!(common_multiplicity(&b, &b.derivative(), &z[1]), 0);
     }
 
     #[test]
     fn zeros_at_the_ends_and_at_bisection_points() {
         // t (t - 1/2)(t - 1)(t - 3/4)(t - 2)
         let p = UPoly::from_roots(&[q("0"), q("1/2"), q("1"), q("3/4"), q("2")]);
-        let z = unit_zeros(p.coeffs(), &q("1/1024"));
-        let want: Vec<Zero<Rational>> = ["0", "1/2", "3/4", "1"]
+        let z = unit_zeros(&p.to_bernstein(), &q("1/1024"));
+        let want: Vec<IsolatedRoot<Rational>> = ["0", "1/2", "3/4", "1"]
             .iter()
-            .map(|s| Zero::Exact(q(s)))
+            .map(|s| IsolatedRoot::Exact(q(s)))
             .collect();
         assert_eq!(z, want);
     }
@@ -765,7 +587,10 @@ mod tests {
             .iter()
             .map(|c| Radical::from(c).mul_ref(&s2))
             .collect();
-        let z = unit_zeros(&p, &Radical::from(q("1/1000")));
-        assert_eq!(z, vec![Zero::Exact(Radical::from(q("2/5")))]);
+        let z = unit_zeros(
+            &Bernstein::from_power(&p).expect("three coefficients"),
+            &Radical::from(q("1/1000")),
+        );
+        assert_eq!(z, vec![IsolatedRoot::Exact(Radical::from(q("2/5")))]);
     }
 }
