@@ -1,7 +1,7 @@
 //! Writing a command's standard output without panicking.
 //!
 //! `println!` panics when standard output is closed or full ("failed printing to stdout"). The
-//! commands write through [`println`] / [`print`] instead, which return the failure as
+//! commands write through [`println()`] / [`print()`] instead, which return the failure as
 //! [`Error::Output`]: [`crate::cli::main`] ends quietly with exit status 0 on a broken pipe
 //! (the reader, e.g. `head -1`, has what it wanted; Rust ignores `SIGPIPE`, so the write returns
 //! `EPIPE`) and reports any other failure as one line, "cannot write standard output: No space
@@ -25,7 +25,7 @@ pub fn println(text: impl Display) -> Result<(), Error> {
 /// Writes `text` (no newline added) to standard output and flushes it.
 ///
 /// # Errors
-/// As [`println`].
+/// As [`println()`].
 pub fn print(text: impl Display) -> Result<(), Error> {
     let mut out = io::stdout().lock();
     write!(out, "{text}")
@@ -37,7 +37,7 @@ pub fn print(text: impl Display) -> Result<(), Error> {
 /// [`Error::Output`] (the writer stands for standard output).
 ///
 /// # Errors
-/// As [`println`].
+/// As [`println()`].
 pub fn write_line(out: &mut impl Write, text: impl Display) -> Result<(), Error> {
     writeln!(out, "{text}")
         .and_then(|()| out.flush())

@@ -219,7 +219,7 @@ pub fn refine<T: OrderedField>(
     IsolatedRoot::Between(lo, hi)
 }
 
-/// The common real roots in [0,1] of several polynomials (via their gcd), isolated.
+/// The common real roots in [0, 1] of several polynomials (via their gcd), isolated.
 ///
 /// Zero polynomials in the list impose no condition.
 ///

@@ -229,7 +229,7 @@ fn line_symbolic() -> Result<(Outcome, usize), String> {
 
 /// The degree construction: `B = (0, g, 0)`, `V = (0, 1, f)` on the x axis, `g` with roots
 /// `1..n / (m+n+1)`, `f` with roots `n+1..m+n / (m+n+1)`. Returns the number of distinct roots
-/// found in [0,1] and checks every one is an intersection point.
+/// found in [0, 1] and checks every one is an intersection point.
 fn degree_attained(m: usize, n: usize) -> Result<usize, String> {
     let k = (m + n + 1) as i64;
     let g = UPoly::from_roots(&(1..=n as i64).map(|i| q(i, k)).collect::<Vec<_>>());
@@ -277,7 +277,7 @@ fn degree_attained(m: usize, n: usize) -> Result<usize, String> {
 }
 
 /// Random lines through two chosen surface points: both parameters are found exactly among the
-/// roots in [0,1], and every rational root's point is on both. Returns (instances, roots).
+/// roots in [0, 1], and every rational root's point is on both. Returns (instances, roots).
 fn line_instances(seed: u64, count: usize) -> Result<(usize, usize), String> {
     let mut rng = Rng::new(seed);
     let mut roots_seen = 0;
@@ -442,7 +442,7 @@ fn vicinity_counterexamples() -> [VicinityCase; 2] {
     ]
 }
 
-/// Common roots in [0,1] of polynomials over Q (their gcd), exact when rational.
+/// Common roots in [0, 1] of polynomials over Q (their gcd), exact when rational.
 fn common_roots(ps: &[UPoly]) -> Option<Vec<RootInterval>> {
     let nonzero: Vec<&UPoly> = ps.iter().filter(|p| !p.is_zero()).collect();
     let first = nonzero.first()?;
@@ -453,7 +453,7 @@ fn common_roots(ps: &[UPoly]) -> Option<Vec<RootInterval>> {
     Some(unit_roots(&g))
 }
 
-/// The corrected test for the origin: a common root `t` in [0,1] of all three components of
+/// The corrected test for the origin: a common root `t` in [0, 1] of all three components of
 /// `B x V` with `V(t) != 0`, or `B(t) = 0`. (Rational common roots only: an irrational one is
 /// reported as an error, never guessed; the counter-examples have rational data and roots.)
 fn origin_on_surface(s: &RuledSurface<Rational>) -> Result<bool, String> {

@@ -353,7 +353,7 @@ pub fn log2_error_bound(bound: &SizeBound, circles: usize, trials: u32) -> f64 {
 ///
 /// # Errors
 /// A message for `trials` outside `1..=MAX_RANDOM_TRIALS`, a square root, a non-polynomial
-/// expression, or a constant divisor that is zero (modulo [`MAX_PRIME_REDRAWS`] random primes).
+/// expression, or a constant divisor that is zero (modulo `MAX_PRIME_REDRAWS` random primes).
 pub fn random_identity_test(
     lhs: &Expr,
     rhs: &Expr,
