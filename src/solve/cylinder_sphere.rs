@@ -12,7 +12,7 @@
 //! refuses non-finite input and overflowing coefficients.
 
 use super::number::{Coords, FloatNumber, Radians, RationalNumber};
-use super::{parse, to_json, Kind, Mode};
+use super::{by_mode, parse, Kind, Mode};
 use crate::Error;
 use exactcheck_core::cylinder_sphere::{
     unit_circle_point, Angle, Contact, CylinderSphere, TrigCoefficients,
@@ -443,15 +443,7 @@ impl Kind for CylinderSphereKind {
     type Input = Input<RationalNumber>;
 
     fn answer(text: &str, mode: Mode) -> Result<Value, Error> {
-        match mode {
-            Mode::Exact => Ok(to_json(&exact(text)?)),
-            Mode::Float => Ok(to_json(&float_answer(text)?)),
-            Mode::Both => {
-                let mut e = exact(text)?;
-                e.float = Some(float_answer(text)?);
-                Ok(to_json(&e))
-            }
-        }
+        by_mode(text, mode, exact, float_answer, |e, f| e.float = Some(f))
     }
 }
 

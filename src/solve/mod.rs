@@ -49,6 +49,29 @@ pub trait Kind {
     fn answer(text: &str, mode: Mode) -> Result<Value, Error>;
 }
 
+/// [`Kind::answer`] for a kind with an exact and a float solver: the exact answer, the float
+/// one, or (`--both`) the exact answer with the float one attached by `attach`.
+///
+/// # Errors
+/// What the solvers return.
+pub(crate) fn by_mode<E: Serialize, F: Serialize>(
+    text: &str,
+    mode: Mode,
+    exact: fn(&str) -> Result<E, Error>,
+    float: fn(&str) -> Result<F, Error>,
+    attach: fn(&mut E, F),
+) -> Result<Value, Error> {
+    match mode {
+        Mode::Exact => Ok(to_json(&exact(text)?)),
+        Mode::Float => Ok(to_json(&float(text)?)),
+        Mode::Both => {
+            let mut answer = exact(text)?;
+            attach(&mut answer, float(text)?);
+            Ok(to_json(&answer))
+        }
+    }
+}
+
 /// A kind of DESIGN.md and, when this version answers it, how.
 #[derive(Clone, Copy)]
 pub struct KindEntry {

@@ -20,7 +20,7 @@
 //! A zero normal is an input error naming the field (`planes[1].normal: zero vector`).
 
 use super::number::{Coords, ExactNumber, FloatNumber};
-use super::{parse, to_json, Kind, Mode};
+use super::{by_mode, parse, Kind, Mode};
 use crate::Error;
 use exactcheck_core::planes::{intersect, Plane, PlanePair};
 use exactcheck_core::{Ring, Sqrt, Vec3};
@@ -271,15 +271,7 @@ impl Kind for PlanePlaneKind {
     type Input = Input<ExactNumber>;
 
     fn answer(text: &str, mode: Mode) -> Result<Value, Error> {
-        match mode {
-            Mode::Exact => Ok(to_json(&exact(text)?)),
-            Mode::Float => Ok(to_json(&float_answer(text)?)),
-            Mode::Both => {
-                let mut e = exact(text)?;
-                e.float = Some(float_answer(text)?);
-                Ok(to_json(&e))
-            }
-        }
+        by_mode(text, mode, exact, float_answer, |e, f| e.float = Some(f))
     }
 }
 

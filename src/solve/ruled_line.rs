@@ -39,7 +39,7 @@
 //! generic root isolation); no crate solves it exactly.
 
 use super::number::{Coords, ExactNumber, FloatNumber};
-use super::{parse, to_json, Kind, Mode, Printable};
+use super::{by_mode, parse, Kind, Mode, Printable};
 use crate::Error;
 use exactcheck_core::roots::{
     gcd, multiplicity, refine, square_free, unit_roots, IsolatedRoot, ZeroPolynomial,
@@ -584,14 +584,8 @@ impl Kind for RuledLine {
     type Input = Input<ExactNumber>;
 
     fn answer(text: &str, mode: Mode) -> Result<Value, Error> {
-        match mode {
-            Mode::Exact => Ok(to_json(&exact_answer(text)?)),
-            Mode::Float => Ok(to_json(&float_answer(text)?)),
-            Mode::Both => {
-                let mut e = exact_answer(text)?;
-                e.float = Some(Box::new(float_answer(text)?));
-                Ok(to_json(&e))
-            }
-        }
+        by_mode(text, mode, exact_answer, float_answer, |e, f| {
+            e.float = Some(Box::new(f))
+        })
     }
 }

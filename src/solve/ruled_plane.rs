@@ -47,7 +47,7 @@
 //! 64-bit integers, which overflow beyond `m + n = 67`.
 
 use super::number::{Coords, ExactNumber, FloatNumber};
-use super::{parse, to_json, Kind, Mode};
+use super::{by_mode, parse, Kind, Mode};
 use crate::Error;
 use exactcheck_core::roots::{self, IsolatedRoot};
 use exactcheck_core::ruled::{Plane, PlaneSection, RuledSurface};
@@ -520,15 +520,9 @@ impl Kind for RuledPlane {
     type Input = Input<ExactNumber>;
 
     fn answer(text: &str, mode: Mode) -> Result<Value, Error> {
-        match mode {
-            Mode::Exact => Ok(to_json(&exact(text)?)),
-            Mode::Float => Ok(to_json(&float_answer(text)?)),
-            Mode::Both => {
-                let mut e = exact(text)?;
-                e.float = Some(Box::new(float_answer(text)?));
-                Ok(to_json(&e))
-            }
-        }
+        by_mode(text, mode, exact, float_answer, |e, f| {
+            e.float = Some(Box::new(f))
+        })
     }
 }
 
