@@ -1,49 +1,11 @@
 //! End-to-end tests of `exactcheck plot`: the SVG figures of Spaeth's examples and of problem
 //! files, and the one-line errors (exit status 2).
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::path::Path;
 
-/// A fresh directory under the system temp dir, removed when dropped.
-struct TempDir(PathBuf);
-
-impl TempDir {
-    fn new(tag: &str) -> TempDir {
-        static COUNTER: AtomicUsize = AtomicUsize::new(0);
-        let nanos = std::time::SystemTime::now()
-            .duration_since(std::time::UNIX_EPOCH)
-            .map_or(0, |d| d.as_nanos());
-        let dir = std::env::temp_dir().join(format!(
-            "exactcheck-plot-{tag}-{}-{nanos}-{}",
-            std::process::id(),
-            COUNTER.fetch_add(1, Ordering::Relaxed)
-        ));
-        std::fs::create_dir_all(&dir).expect("create temp dir");
-        TempDir(dir)
-    }
-
-    fn path(&self, name: &str) -> PathBuf {
-        self.0.join(name)
-    }
-}
-
-impl Drop for TempDir {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
-    }
-}
-
-#[path = "common/svg.rs"]
-mod svg;
-use svg::check_svg;
-
-fn exactcheck(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_exactcheck"))
-        .args(args)
-        .output()
-        .expect("run exactcheck")
-}
+#[path = "common/plot_support.rs"]
+mod plot_support;
+use plot_support::{check_svg, exactcheck, TempDir};
 
 fn plot(args: &[&str], out: &Path) -> String {
     let mut all: Vec<&str> = vec!["plot"];

@@ -2,40 +2,9 @@
 //! holds the surface, the plane, the exact section curve and the control polygon, matches the
 //! committed `docs/chiang_example4.svg`, and other example numbers are one-line errors (exit 2).
 
-use std::path::PathBuf;
-use std::process::{Command, Output};
-
-/// A fresh file path under the system temp dir, removed when dropped.
-struct TempFile(PathBuf);
-
-impl TempFile {
-    fn new(tag: &str) -> TempFile {
-        let nanos = std::time::SystemTime::now()
-            .duration_since(std::time::UNIX_EPOCH)
-            .map_or(0, |d| d.as_nanos());
-        TempFile(std::env::temp_dir().join(format!(
-            "exactcheck-plot-chiang-{tag}-{}-{nanos}.svg",
-            std::process::id()
-        )))
-    }
-}
-
-impl Drop for TempFile {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_file(&self.0);
-    }
-}
-
-#[path = "common/svg.rs"]
-mod svg;
-use svg::check_svg;
-
-fn exactcheck(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_exactcheck"))
-        .args(args)
-        .output()
-        .expect("run exactcheck")
-}
+#[path = "common/plot_support.rs"]
+mod plot_support;
+use plot_support::{check_svg, exactcheck, TempDir};
 
 /// The number of points of the first `<polyline class="CLASS" points="...">`.
 fn polyline_points(svg: &str, class: &str) -> usize {
@@ -49,8 +18,9 @@ fn polyline_points(svg: &str, class: &str) -> usize {
 
 #[test]
 fn example_4_figure_is_written_and_well_formed() {
-    let out = TempFile::new("file");
-    let path = out.0.to_str().expect("utf-8 temp path");
+    let dir = TempDir::new("chiang");
+    let file = dir.path("example4.svg");
+    let path = file.to_str().expect("utf-8 temp path");
     let o = exactcheck(&["plot", "chiang", "--example", "4", "-o", path]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let stdout = String::from_utf8_lossy(&o.stdout);
@@ -59,7 +29,7 @@ fn example_4_figure_is_written_and_well_formed() {
         stdout.starts_with(&format!("wrote {path}: Chiang Example 4")),
         "{stdout}"
     );
-    let svg = std::fs::read_to_string(&out.0).expect("the SVG was written");
+    let svg = std::fs::read_to_string(&file).expect("the SVG was written");
     check_svg(&svg);
     // The plane, the surface on both sides of it, the exact curve (97 samples), the control
     // polygon (4 points) and its 4 labelled points with the weights.

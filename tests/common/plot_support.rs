@@ -1,5 +1,46 @@
-//! The SVG well-formedness check shared by the plot tests (`#[path]`-included, so crates
-//! that do not plot do not compile it).
+//! What the plot tests share (`#[path]`-included, so crates that do not plot do not compile
+//! it): a temporary directory, the binary, and the SVG well-formedness check.
+
+use std::path::PathBuf;
+use std::process::{Command, Output};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+/// A fresh directory under the system temp dir, removed when dropped.
+pub struct TempDir(PathBuf);
+
+impl TempDir {
+    pub fn new(tag: &str) -> TempDir {
+        static COUNTER: AtomicUsize = AtomicUsize::new(0);
+        let nanos = std::time::SystemTime::now()
+            .duration_since(std::time::UNIX_EPOCH)
+            .map_or(0, |d| d.as_nanos());
+        let dir = std::env::temp_dir().join(format!(
+            "exactcheck-plot-{tag}-{}-{nanos}-{}",
+            std::process::id(),
+            COUNTER.fetch_add(1, Ordering::Relaxed)
+        ));
+        std::fs::create_dir_all(&dir).expect("create temp dir");
+        TempDir(dir)
+    }
+
+    pub fn path(&self, name: &str) -> PathBuf {
+        self.0.join(name)
+    }
+}
+
+impl Drop for TempDir {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+/// Runs the binary with `args`.
+pub fn exactcheck(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+        .args(args)
+        .output()
+        .expect("run exactcheck")
+}
 
 /// Well-formed enough: starts with `<svg`, one `<svg` and one `</svg>` at the end, and every
 /// element that is opened is closed (a simple tag-stack check; no comments or CDATA are written).
