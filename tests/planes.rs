@@ -133,14 +133,7 @@ fn random_exact_lines_lie_on_both_planes_nearest_the_origin() {
 
 /// The same problem through the CLI, exit status and one-line errors.
 fn refused(problem: &str, needles: &[&str]) {
-    let o = solve_cli(problem, &[]);
-    let err = String::from_utf8_lossy(&o.stderr).into_owned();
-    assert_eq!(o.status.code(), Some(2), "{problem}: {err}");
-    assert_eq!(err.lines().count(), 1, "{problem}: {err}");
-    assert!(o.stdout.is_empty());
-    for n in needles {
-        assert!(err.contains(n), "{problem}: {err:?} lacks {n:?}");
-    }
+    common::refused(problem, &[], needles);
 }
 
 fn outcome(problem: &str, flags: &[&str]) -> Value {

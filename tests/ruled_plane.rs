@@ -4,6 +4,7 @@
 
 mod common;
 
+use common::refused;
 use common::solve_stdin;
 use exactcheck::solve::{solve, Mode};
 use exactcheck_core::{Bernstein, Field, OrderedField, Ring, Rng, Sign, Vec3};
@@ -438,18 +439,6 @@ fn the_degree_limit_is_accepted_up_to_and_refused_beyond() {
     // m + n = 1 + 60 = 61: refused.
     let p = problem(&line(61), &line(2), "[1,1,1,-3]");
     refused(&p, &[], &["base, directions", "m + n = 1 + 60 = 61"]);
-}
-
-/// Exit status 2 and one line on stderr containing every needle.
-fn refused(problem: &str, extra: &[&str], needles: &[&str]) {
-    let o = solve_stdin(problem.as_bytes(), extra);
-    let err = String::from_utf8_lossy(&o.stderr).into_owned();
-    assert_eq!(o.status.code(), Some(2), "{problem}: {err}");
-    assert_eq!(err.lines().count(), 1, "{problem}: {err}");
-    assert!(o.stdout.is_empty(), "{problem}");
-    for n in needles {
-        assert!(err.contains(n), "{problem}: {err:?} lacks {n:?}");
-    }
 }
 
 #[test]

@@ -5,6 +5,7 @@
 use std::path::{Path, PathBuf};
 mod common;
 
+use common::refused;
 use common::solve_stdin as solve;
 
 fn golden_dir() -> PathBuf {
@@ -89,19 +90,6 @@ fn answer(problem: &str, extra: &[&str]) -> serde_json::Value {
         String::from_utf8_lossy(&o.stderr)
     );
     serde_json::from_slice(&o.stdout).expect("JSON answer")
-}
-
-/// Exit status 2 and one line on stderr containing every needle; returns the line.
-fn refused(problem: &str, extra: &[&str], needles: &[&str]) -> String {
-    let o = solve(problem.as_bytes(), extra);
-    let err = String::from_utf8_lossy(&o.stderr).into_owned();
-    assert_eq!(o.status.code(), Some(2), "{problem}: {err}");
-    assert_eq!(err.lines().count(), 1, "{problem}: {err}");
-    assert!(o.stdout.is_empty(), "{problem}");
-    for n in needles {
-        assert!(err.contains(n), "{problem}: {err:?} lacks {n:?}");
-    }
-    err
 }
 
 #[test]

@@ -22,3 +22,18 @@ pub fn solve_stdin(problem: impl AsRef<[u8]>, extra: &[&str]) -> Output {
         .expect("write");
     child.wait_with_output().expect("finishes")
 }
+
+/// Runs `exactcheck solve EXTRA...` on `problem` and asserts the refusal contract: exit status 2,
+/// nothing on standard output, one line on standard error containing every needle; returns it.
+#[allow(dead_code)] // each test crate includes this module; not all of them test refusals
+pub fn refused(problem: &str, extra: &[&str], needles: &[&str]) -> String {
+    let o = solve_stdin(problem.as_bytes(), extra);
+    let err = String::from_utf8_lossy(&o.stderr).into_owned();
+    assert_eq!(o.status.code(), Some(2), "{problem}: {err}");
+    assert_eq!(err.lines().count(), 1, "{problem}: {err}");
+    assert!(o.stdout.is_empty(), "{problem}");
+    for n in needles {
+        assert!(err.contains(n), "{problem}: {err:?} lacks {n:?}");
+    }
+    err
+}
