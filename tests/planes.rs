@@ -7,7 +7,7 @@
 mod common;
 
 use common::solve_stdin as solve_cli;
-use exactcheck::regress::planes::{bin_of, measure, report, PlaneCase};
+use exactcheck::regress::planes::{bin_of, measure, normal_at_angle, report, PlaneCase};
 use exactcheck::solve::{solve, Mode};
 use exactcheck_core::planes::{intersect, Plane, PlanePair};
 use exactcheck_core::{Field, Ring, Rng, Vec3};
@@ -249,14 +249,7 @@ fn well_conditioned() -> impl Strategy<Value = (PlaneCase, f64)> {
         })
         .prop_map(|(a, b, theta, p1, p2)| {
             let n1 = unit(a);
-            let k = exactcheck_float::wabis::scalar_prod(&b, &n1);
-            let w = unit([b[0] - k * n1[0], b[1] - k * n1[1], b[2] - k * n1[2]]);
-            let (c, s) = (theta.cos(), theta.sin());
-            let n2 = unit([
-                c * n1[0] + s * w[0],
-                c * n1[1] + s * w[1],
-                c * n1[2] + s * w[2],
-            ]);
+            let n2 = normal_at_angle(&n1, &b, theta);
             (PlaneCase { p1, n1, p2, n2 }, theta)
         })
 }
@@ -317,14 +310,7 @@ fn regress_report_puts_a_planted_near_parallel_case_in_the_worst_bin() {
     let mut cases = Vec::new();
     let make = |a: V3, b: V3, theta: f64, p1: V3, p2: V3| {
         let n1 = unit(a);
-        let k = exactcheck_float::wabis::scalar_prod(&b, &n1);
-        let w = unit([b[0] - k * n1[0], b[1] - k * n1[1], b[2] - k * n1[2]]);
-        let (c, s) = (theta.cos(), theta.sin());
-        let n2 = unit([
-            c * n1[0] + s * w[0],
-            c * n1[1] + s * w[1],
-            c * n1[2] + s * w[2],
-        ]);
+        let n2 = normal_at_angle(&n1, &b, theta);
         PlaneCase { p1, n1, p2, n2 }
     };
     let mut v3 = |lo: f64, hi: f64| [draw(lo, hi), draw(lo, hi), draw(lo, hi)];

@@ -83,26 +83,38 @@ fn f64_unit(v: &V3) -> V3 {
     scale(v, 1.0 / length(v))
 }
 
+/// `b - (b . n1) n1`: the part of `b` orthogonal to the unit vector `n1` (f64).
+fn orthogonal_part(b: &V3, n1: &V3) -> V3 {
+    let k = b[0] * n1[0] + b[1] * n1[1] + b[2] * n1[2];
+    [b[0] - k * n1[0], b[1] - k * n1[1], b[2] - k * n1[2]]
+}
+
+/// The unit normal at the angle `theta` from the unit normal `n1`, turned towards `b` (which must
+/// not be parallel to `n1`): `unit(cos(theta) n1 + sin(theta) w)` with `w` the normalised part of
+/// `b` orthogonal to `n1`, all in f64 (the sweep's and the tests' one construction).
+pub fn normal_at_angle(n1: &V3, b: &V3, theta: f64) -> V3 {
+    let w = f64_unit(&orthogonal_part(b, n1));
+    let (c, s) = (theta.cos(), theta.sin());
+    f64_unit(&[
+        c * n1[0] + s * w[0],
+        c * n1[1] + s * w[1],
+        c * n1[2] + s * w[2],
+    ])
+}
+
 /// Sample `index` of the sweep with this seed (module documentation).
 pub fn sample_case(seed: u64, index: usize) -> PlaneCase {
     let mut rng = Rng::for_sample(seed, index as u64);
     let n1 = random_unit(&mut rng);
-    let w = loop {
+    let v = loop {
         let v = random_unit(&mut rng);
-        let k = v[0] * n1[0] + v[1] * n1[1] + v[2] * n1[2];
-        let o = [v[0] - k * n1[0], v[1] - k * n1[1], v[2] - k * n1[2]];
-        if length(&o) > 0.1 {
-            break f64_unit(&o);
+        if length(&orthogonal_part(&v, &n1)) > 0.1 {
+            break v;
         }
     };
     let (hi, lo) = (ANGLE_RANGE.0.log10(), ANGLE_RANGE.1.log10());
     let theta = 10f64.powf(rng.uniform(lo, hi));
-    let (c, s) = (theta.cos(), theta.sin());
-    let n2 = f64_unit(&[
-        c * n1[0] + s * w[0],
-        c * n1[1] + s * w[1],
-        c * n1[2] + s * w[2],
-    ]);
+    let n2 = normal_at_angle(&n1, &v, theta);
     let mut point = || {
         [
             rng.uniform(-10.0, 10.0),
