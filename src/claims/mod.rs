@@ -37,6 +37,7 @@ pub mod engine;
 pub mod juttler;
 pub mod juttler_geometry;
 pub mod planes;
+pub mod printed;
 pub mod spaeth;
 
 use serde_json::{json, Value};
