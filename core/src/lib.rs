@@ -14,6 +14,7 @@ pub mod inertia;
 pub mod linalg;
 pub mod miquel;
 pub mod ops;
+pub mod ph;
 pub mod planes;
 pub mod quadric;
 pub mod rational_angle;
@@ -27,5 +28,7 @@ pub mod vector;
 pub use bernstein::{Bernstein, ShapeError};
 pub use bezier::{BezierCurve, RationalBezierCurve, TensorPatch};
 pub use rng::Rng;
-pub use scalar::{binomial, pairwise_sum, Field, OrderedField, Ring, Sign, Sqrt, ZeroDivisor};
+pub use scalar::{
+    binomial, pairwise_sum, Field, OrderedField, QAlgebra, Ring, Sign, Sqrt, ZeroDivisor,
+};
 pub use vector::{det4, Hom4, Vec3};

@@ -111,6 +111,22 @@ pub trait Ring:
     }
 }
 
+/// A ring containing the rationals (a Q-algebra): every [`Field`] (blanket implementation) and the
+/// polynomial rings over one. Constructions that divide only by integers (integrating a
+/// hodograph, the `1/C(n,k)` of a Bernstein product) are written once over it, so the same code
+/// runs on numbers and, for symbolic proofs, on polynomials.
+pub trait QAlgebra: Ring {
+    /// `1/n`, or [`ZeroDivisor`] when `n` is not invertible (zero, or a multiple of a finite
+    /// characteristic).
+    fn inv_u64(n: u64) -> Result<Self, ZeroDivisor>;
+}
+
+impl<T: Field> QAlgebra for T {
+    fn inv_u64(n: u64) -> Result<Self, ZeroDivisor> {
+        crate::bernstein::from_u64::<T>(n).inv()
+    }
+}
+
 /// A field: a [`Ring`] in which every non-zero element has an inverse.
 ///
 /// The `/` operator may panic on a zero divisor, as the number types it is implemented for do;

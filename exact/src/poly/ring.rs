@@ -776,6 +776,12 @@ impl<C: Ring> From<C> for Poly<C> {
     }
 }
 
+impl<C: exactcheck_core::QAlgebra> exactcheck_core::QAlgebra for Poly<C> {
+    fn inv_u64(n: u64) -> Result<Self, exactcheck_core::ZeroDivisor> {
+        C::inv_u64(n).map(Poly::constant)
+    }
+}
+
 impl<C: Ring> Ring for Poly<C> {
     fn zero() -> Self {
         Poly::zero()
