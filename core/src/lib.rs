@@ -9,6 +9,7 @@
 
 pub mod bernstein;
 pub mod bezier;
+pub mod conic;
 pub mod cylinder_sphere;
 pub mod inertia;
 pub mod linalg;
