@@ -5,9 +5,9 @@
 //! (seeds 000, 001) is implemented, plus `juttler.interpolation_degree`, the degree comparison
 //! split off from the sentence of `juttler.interpolation` (it is not an id of §6), the `planes.*`
 //! id (seed 003) and the `chiang.*` ids of the ruled-surface half of seed 004 (`chiang.theorem`,
-//! `chiang.corollary1/2/5`, `chiang.example4`, `chiang.line`, `chiang.vicinity`). The conic, offset
-//! and PH ids (`chiang.offset`, `chiang.conic_*`, `chiang.ph_*`) are **not implemented yet**;
-//! `verify` does not check them.
+//! `chiang.corollary1/2/5`, `chiang.example4`, `chiang.line`, `chiang.vicinity`) and the conic ids
+//! `chiang.conic_table`, `chiang.conic_type` ([`chiang_conic`]). The offset and PH ids
+//! (`chiang.offset`, `chiang.ph_*`) are **not implemented yet**; `verify` does not check them.
 //!
 //! A verdict is only ever the result of a computation:
 //! * **proved** — the residual expanded to zero over polynomials (modulo the declared relations);
@@ -32,6 +32,7 @@ macro_rules! claim {
 }
 
 pub mod chiang;
+pub mod chiang_conic;
 pub mod chiang_line;
 pub mod engine;
 pub mod juttler;
@@ -101,6 +102,7 @@ pub fn catalogue() -> Vec<Claim> {
     all.extend(spaeth::example_claims());
     all.extend(planes::claims());
     all.extend(chiang::claims());
+    all.extend(chiang_conic::claims());
     all.extend(chiang_line::claims());
     all
 }
