@@ -16,7 +16,8 @@
 //! * a control point is equal or different (points are invariant under weight scaling);
 //! * the poles `C-(t) = inf`: every printed parameter is a zero of the derived weight polynomial
 //!   in `[0, 1]` (exact evaluation at the printed radical), and every derived pole (an isolating
-//!   interval from `exactcheck_core::roots`, or the exact root) holds exactly one printed value.
+//!   interval from `exactcheck_core::roots`, narrowed to width `<= 1/1024`, or the exact root)
+//!   holds exactly one printed value.
 //!   `C+` has no printed poles: its derived poles are reported, not judged;
 //! * the normal: the printed control points `r0+, r1+, r2+` span a plane with this normal;
 //! * the plane equation: it is the plane through `(1, 1, 1)` with the printed normal (the
@@ -47,7 +48,7 @@ use super::{Claim, Outcome, Verdict};
 use exactcheck_core::conic::{
     angle_rule, bezier_type, ConePiece, ConeSection, ConicType, DegenerateConic, SectionType,
 };
-use exactcheck_core::roots::IsolatedRoot;
+use exactcheck_core::roots::{refine, IsolatedRoot};
 use exactcheck_core::ruled::Plane;
 use exactcheck_core::{Field, Ring, Rng, Vec3};
 use exactcheck_exact::{Radical, Rational};
@@ -362,7 +363,7 @@ fn proportional(u: &[Radical], v: &[Radical]) -> bool {
     (0..u.len()).all(|i| (i + 1..u.len()).all(|j| u[i].mul_ref(&v[j]) == u[j].mul_ref(&v[i])))
 }
 
-/// The printed poles against the derived ones (module doc); `Ok(problems)`.
+/// The printed poles against the derived ones (module doc): the problems found (none: equal).
 fn judge_poles(
     printed: &[Radical],
     printed_text: &[&str],
@@ -402,6 +403,16 @@ fn judge_poles(
         ));
     }
     problems
+}
+
+/// The isolating intervals narrowed to width `<= 1/1024` (for the reader; the matching with the
+/// printed values is exact either way).
+fn refined_poles(
+    weight: &exactcheck_core::Bernstein<Radical>,
+    poles: &[IsolatedRoot<Radical>],
+) -> Vec<IsolatedRoot<Radical>> {
+    let width = Radical::from_ratio(1, 1024).expect("1024 != 0");
+    poles.iter().map(|p| refine(weight, p, &width)).collect()
 }
 
 /// The rows of one piece: weights (with the common-scale test) and points.
@@ -589,9 +600,10 @@ pub fn table_rows(table: &[PrintedColumn]) -> Result<Vec<TableRow>, String> {
             .map(|t| num(t))
             .collect::<Result<Vec<_>, _>>()?;
         let weight = minus_piece.curve.weight_polynomial();
-        let problems = judge_poles(&printed_poles, col.poles_minus, &minus_piece.poles, &weight);
+        let derived_minus = refined_poles(&weight, &minus_piece.poles);
+        let problems = judge_poles(&printed_poles, col.poles_minus, &derived_minus, &weight);
         let mut notes = vec![format!(
-            "w-(t) = {} (1-t)^2 + 2 ({}) t(1-t) + {} t^2",
+            "w-(t) = ({}) (1-t)^2 + 2 ({}) t(1-t) + ({}) t^2",
             weight.coeffs()[0],
             weight.coeffs()[1],
             weight.coeffs()[2]
@@ -607,7 +619,7 @@ pub fn table_rows(table: &[PrintedColumn]) -> Result<Vec<TableRow>, String> {
             column: col.name,
             entry: "C-(t) = inf".into(),
             printed: printed_poles_text(col.poles_minus),
-            derived: poles_text(&minus_piece.poles),
+            derived: poles_text(&derived_minus),
             judgement: if problems.is_empty() {
                 Judgement::Equal
             } else {
@@ -620,7 +632,7 @@ pub fn table_rows(table: &[PrintedColumn]) -> Result<Vec<TableRow>, String> {
             column: col.name,
             entry: "C+(t) = inf".into(),
             printed: "(not printed)".into(),
-            derived: poles_text(&plus.poles),
+            derived: poles_text(&refined_poles(&plus.curve.weight_polynomial(), &plus.poles)),
             judgement: Judgement::NotPrinted,
             derived_value: Vec::new(),
             notes: Vec::new(),
