@@ -227,6 +227,10 @@ fn the_markdown_table_has_every_entry() {
         md.contains("| hyperbola | w1- | `-sqrt(2)` | `-sqrt(2)` | equal;"),
         "{md}"
     );
+    assert!(
+        md.contains("w-(t) = (1 + sqrt(2)) (1-t)^2 + 2 (-1 - sqrt(2)) t(1-t) + (1 + sqrt(2)) t^2"),
+        "{md}"
+    );
 }
 
 #[test]
