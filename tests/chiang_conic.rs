@@ -47,11 +47,17 @@ fn row<'a>(
 }
 
 #[test]
-fn conic_table_fails_on_the_two_ocr_plane_equations_only() {
+fn conic_table_holds_and_reports_the_two_ocr_plane_equations() {
+    // Every entry SPEC restores is right; the OCR's plane equations (not restored by SPEC) are
+    // reported as misprints-if-printed, without deciding the verdict.
     let (v, e) = verdict_of("chiang.conic_table");
-    assert_eq!(v, Verdict::Fails);
+    assert_eq!(v, Verdict::Holds);
     assert!(e.contains("4 columns x 15 judged entries"), "{e}");
-    assert!(e.contains("58 equal, 2 different"), "{e}");
+    assert!(
+        e.contains("58 equal, none of the entries SPEC restores different"),
+        "{e}"
+    );
+    assert!(e.contains("2 of 4 miss the plane through (1,1,1)"), "{e}");
     assert!(
         e.contains("ellipse plane: printed x + y + 3z = 4, derived x + y + 3 z = 5"),
         "{e}"
@@ -75,7 +81,8 @@ fn the_table_with_planes_through_111_holds_entry_by_entry() {
     let o = check_table(&t).unwrap();
     assert_eq!(o.verdict, Verdict::Holds, "{}", o.evidence);
     assert!(
-        o.evidence.contains("60 equal, none different"),
+        o.evidence
+            .contains("60 equal, none of the entries SPEC restores different"),
         "{}",
         o.evidence
     );

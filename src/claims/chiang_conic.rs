@@ -58,7 +58,7 @@ use std::fmt::Write as _;
 /// The `chiang.conic_*` claims, statements as printed.
 pub fn claims() -> Vec<Claim> {
     vec![
-        claim!("chiang.conic_table", Fails, "Table 1 (cone K = V+ quarter, control vectors (1,0,1), (1/sqrt2)(1,1,1), (0,1,1), and V- three-quarter, (0,1,1), -(1/sqrt2)(1,1,1), (1,0,1); planes I through (1,1,1)): normal (0,0,1) circle: z - 1 = 0, w+ = 1, 1/sqrt2, 1, r+ = (1,0,1), (1,1,1), (0,1,1), w- = 1, -1/sqrt2, 1, r- = the + points reversed, C-(t) = inf: none; (1,1,3) ellipse: x + y + 3z = 4, w+ = 4, 5/sqrt2, 4, r+ = (5/4,0,5/4), (1,1,1), (0,5/4,5/4), w- = 4, -5/sqrt2, 4, C-: none; (1,1,sqrt2) parabola: x + y + sqrt2 z = 2 - sqrt2 (OCR), w+ = 1+sqrt2 (all three), r+ = (sqrt2,0,sqrt2), (1,1,1), (0,sqrt2,sqrt2), w- = 1+sqrt2, -sqrt2-1, 1+sqrt2, C-: t = 1/2; (1,1,0) hyperbola: x + y = 2, w+ = 1, sqrt2, 1, r+ = (2,0,2), (1,1,1), (0,2,2), w- = 1, -sqrt2, 1, C-: t = 1/sqrt2, t = 1 - 1/sqrt2", conic_table_claim),
+        claim!("chiang.conic_table", Holds, "Table 1 (cone K = V+ quarter, control vectors (1,0,1), (1/sqrt2)(1,1,1), (0,1,1), and V- three-quarter, (0,1,1), -(1/sqrt2)(1,1,1), (1,0,1); planes I through (1,1,1)): normal (0,0,1) circle: z - 1 = 0, w+ = 1, 1/sqrt2, 1, r+ = (1,0,1), (1,1,1), (0,1,1), w- = 1, -1/sqrt2, 1, r- = the + points reversed, C-(t) = inf: none; (1,1,3) ellipse: x + y + 3z = 4, w+ = 4, 5/sqrt2, 4, r+ = (5/4,0,5/4), (1,1,1), (0,5/4,5/4), w- = 4, -5/sqrt2, 4, C-: none; (1,1,sqrt2) parabola: x + y + sqrt2 z = 2 - sqrt2 (OCR), w+ = 1+sqrt2 (all three), r+ = (sqrt2,0,sqrt2), (1,1,1), (0,sqrt2,sqrt2), w- = 1+sqrt2, -sqrt2-1, 1+sqrt2, C-: t = 1/2; (1,1,0) hyperbola: x + y = 2, w+ = 1, sqrt2, 1, r+ = (2,0,2), (1,1,1), (0,2,2), w- = 1, -sqrt2, 1, C-: t = 1/sqrt2, t = 1 - 1/sqrt2", conic_table_claim),
         claim!("chiang.conic_type", Holds, "The intersection of the plane I with the cone K is a circle, an ellipse, a parabola or a hyperbola as the angle theta between the normal of I and the axis of K is 0, between 0 and pi/4, pi/4, or between pi/4 and pi/2 (Table 1: (0,0,1) circle, (1,1,3) ellipse, (1,1,sqrt2) parabola, (1,1,0) hyperbola)", conic_type_claim),
     ]
 }
@@ -737,23 +737,32 @@ pub fn check_table(table: &[PrintedColumn]) -> Result<Outcome, String> {
             _ => None,
         })
         .collect();
+    // The plane equations are the OCR's reading only (SPEC §4 restores normals, weights, points
+    // and poles, not the equations): a mismatch there is reported, but the verdict is decided by
+    // the restored entries.
+    let describe = |r: &&TableRow| {
+        format!(
+            "{} {}: printed {}, derived {}{}",
+            r.column,
+            r.entry,
+            r.printed,
+            r.derived,
+            if r.notes.is_empty() {
+                String::new()
+            } else {
+                format!(" ({})", r.notes.join("; "))
+            }
+        )
+    };
     let different: Vec<String> = judged
         .iter()
-        .filter(|r| !r.judgement.is_right())
-        .map(|r| {
-            format!(
-                "{} {}: printed {}, derived {}{}",
-                r.column,
-                r.entry,
-                r.printed,
-                r.derived,
-                if r.notes.is_empty() {
-                    String::new()
-                } else {
-                    format!(" ({})", r.notes.join("; "))
-                }
-            )
-        })
+        .filter(|r| !r.judgement.is_right() && r.entry != "plane")
+        .map(describe)
+        .collect();
+    let ocr_planes: Vec<String> = judged
+        .iter()
+        .filter(|r| !r.judgement.is_right() && r.entry == "plane")
+        .map(describe)
         .collect();
     let mut evidence = format!(
         "{} columns x {} judged entries (normal, plane, 3 weights and 3 points per piece, C-(t) = inf): {equal} equal",
@@ -769,13 +778,22 @@ pub fn check_table(table: &[PrintedColumn]) -> Result<Outcome, String> {
         );
     }
     if different.is_empty() {
-        evidence.push_str(", none different.");
+        evidence.push_str(", none of the entries SPEC restores different.");
     } else {
         let _ = write!(
             evidence,
             ", {} different: {}.",
             different.len(),
             different.join("; ")
+        );
+    }
+    if !ocr_planes.is_empty() {
+        let _ = write!(
+            evidence,
+            " Plane equations as the OCR reads them (not restored by SPEC, so not part of the verdict; if the paper prints them so, they are misprints): {} of {} miss the plane through (1,1,1): {}.",
+            ocr_planes.len(),
+            table.len(),
+            ocr_planes.join("; ")
         );
     }
     let ocr: Vec<String> = rows
