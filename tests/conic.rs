@@ -12,7 +12,7 @@ mod common;
 
 use common::{refused, solve_stdin};
 use exactcheck::solve::{solve, Mode};
-use exactcheck_core::{Bernstein, Field, OrderedField, Ring, Rng, Sign, Vec3};
+use exactcheck_core::{Bernstein, OrderedField, Ring, Rng, Sign, Vec3};
 use exactcheck_exact::{Radical, Rational};
 use serde_json::Value;
 

@@ -20,8 +20,13 @@
 //! finite control points. The curve is broken where the weight changes sign (a pole: the curve
 //! passes through infinity) and clipped to the panel. Every pole is marked: a simple pole
 //! (hyperbola) by its asymptote `X'(t0)/W'(t0) + s X(t0)` and a marker where the asymptote leaves
-//! the panel in the direction `X(t0)`; a double pole (parabola) by an arrow from the panel's
-//! centre in the direction in which the curve escapes, `sign(W near t0) X(t0)`.
+//! the panel in the direction `X(t0)`; a double pole (parabola) by an arrow from the
+//! centroid of the piece's finite control points in the direction in which the curve escapes,
+//! `sign(W near t0) X(t0)`.
+//!
+//! The SVG is written with the workspace's own small writer ([`Svg`], hand-written for the
+//! reasons given in `svg.rs`); the segment clipping (Liang–Barsky) is a dozen lines written
+//! here rather than a geometry dependency.
 
 use super::figure::{circle, header};
 use super::svg::{short, Points, Svg, N};
@@ -209,12 +214,10 @@ fn clip(a: (f64, f64), b: (f64, f64), bx: Box2) -> Option<((f64, f64), (f64, f64
             }
         }
     }
-    (t0 <= t1).then(|| {
-        (
-            (a.0 + t0 * dx, a.1 + t0 * dy),
-            (a.0 + t1 * dx, a.1 + t1 * dy),
-        )
-    })
+    (t0 <= t1).then_some((
+        (a.0 + t0 * dx, a.1 + t0 * dy),
+        (a.0 + t1 * dx, a.1 + t1 * dy),
+    ))
 }
 
 /// Runs of a polyline clipped to the box.
@@ -639,7 +642,7 @@ pub fn table1() -> (String, usize) {
 /// # Errors
 /// As `solve conic` for the file's content.
 pub fn file(path: &str, text_in: &str) -> Result<(String, usize), Error> {
-    let (c, _) = exact_section(text_in).map_err(|e| Error::Input(format!("{path}: {e}")))?;
+    let c = exact_section(text_in).map_err(|e| Error::Input(format!("{path}: {e}")))?;
     if let SectionType::Degenerate(_) = c.angle {
         return Err(Error::Input(format!(
             "{path}: the plane passes through the apex ({}): plot draws proper conics only; `solve` names the rulings",

@@ -600,11 +600,10 @@ fn exact(text: &str) -> Result<Answer<String>, Error> {
     let (plane, width) = problem(&input, |x| x.0.clone())?;
     let c = compute(plane, &width)?;
     let by_angle = c.angle;
-    for p in &c.pieces {
+    for (p, cone) in c.pieces.iter().zip(["+", "-"]) {
         if p.bezier != Some(by_angle) {
             return Err(Error::Input(format!(
-                "internal error: the angle rule says {by_angle} but the weights of piece {} say {}; this is a bug, please report this plane",
-                if std::ptr::eq(p, &c.pieces[0]) { "+" } else { "-" },
+                "internal error: the angle rule says {by_angle} but the weights of piece {cone} say {}; this is a bug, please report this plane",
                 p.bezier.map_or("no conic", SectionType::name)
             )));
         }
@@ -676,12 +675,10 @@ impl Kind for ConicKind {
 ///
 /// # Errors
 /// As `solve`.
-pub(crate) fn exact_section(text: &str) -> Result<(Computed<Radical>, SectionType), Error> {
+pub(crate) fn exact_section(text: &str) -> Result<Computed<Radical>, Error> {
     let input: Input<ExactNumber> = parse(text)?;
     let (plane, width) = problem(&input, |x| x.0.clone())?;
-    let c = compute(plane, &width)?;
-    let t = c.angle;
-    Ok((c, t))
+    compute(plane, &width)
 }
 
 #[cfg(test)]
