@@ -28,6 +28,7 @@ use std::io::Write as _;
 use std::process::ExitCode;
 
 pub mod chiang;
+pub mod conics;
 mod figure;
 mod scene;
 mod svg;
@@ -47,8 +48,9 @@ use view3d::view_3d;
 #[derive(Debug, Args)]
 pub struct PlotArgs {
     /// `spaeth` (with `--example N`), `chiang` (with `--example 4`: Chiang's ruled surface, the
-    /// plane z = 0, the exact section curve and its control polygon, one 3D figure) or a
-    /// `cylinder_sphere` problem file (the format of `solve`).
+    /// plane z = 0, the exact section curve and its control polygon, one 3D figure), `conics`
+    /// (the four cone sections of Chiang's Table 1, one panel each) or a `cylinder_sphere` or
+    /// `conic` problem file (the format of `solve`).
     pub source: String,
     /// Which example to draw: Spaeth's 1, 2 or 3 with `spaeth`; 4 with `chiang`.
     #[arg(long, value_name = "N")]
@@ -87,6 +89,31 @@ pub fn run(args: &PlotArgs) -> Result<ExitCode, Error> {
             &svg,
             "Chiang Example 4 (ruled surface, plane z = 0, exact section curve, control polygon)",
         );
+    }
+    if args.source == "conics" {
+        if args.example.is_some() {
+            return Err(Error::Usage(
+                "plot conics draws the four planes of Chiang's Table 1 and takes no --example"
+                    .into(),
+            ));
+        }
+        let (svg, _) = conics::table1();
+        return emit(
+            &args.output,
+            &svg,
+            "Chiang Table 1 (four cone sections, control polygons, poles)",
+        );
+    }
+    if args.example.is_none() && !["spaeth", "chiang"].contains(&args.source.as_str()) {
+        let text = crate::solve::read_problem(Some(&args.source))?;
+        if crate::solve::problem_kind(&text).is_ok_and(|k| k == "conic") {
+            let (svg, _) = conics::file(&args.source, &text)?;
+            return emit(
+                &args.output,
+                &svg,
+                &format!("cone section of {}", args.source),
+            );
+        }
     }
     let scene = match (args.source.as_str(), args.example) {
         ("spaeth", Some(n)) => spaeth_scene(n)?,

@@ -12,6 +12,7 @@
 //! Adding a kind is one file: a module with an input type, an answer type and an
 //! implementation of [`Kind`], plus its line in [`kinds`].
 
+pub mod conic;
 pub mod cylinder_sphere;
 pub mod number;
 pub mod plane_plane;
@@ -113,7 +114,7 @@ pub fn kinds() -> [KindEntry; 7] {
         answered::<ruled_line::RuledLine>(),
         answered::<plane_plane::PlanePlaneKind>(),
         answered::<cylinder_sphere::CylinderSphereKind>(),
-        recognised("conic"),
+        answered::<conic::ConicKind>(),
         recognised("ph_offset"),
     ]
 }

@@ -62,7 +62,7 @@ use serde_json::Value;
 pub const MAX_DEGREE: usize = 60;
 
 /// Default width of the isolating intervals of irrational poles.
-const DEFAULT_WIDTH_LOG2: u32 = 50;
+pub(crate) const DEFAULT_WIDTH_LOG2: u32 = 50;
 
 // ------------------------------------------------------------------ input
 
@@ -209,7 +209,7 @@ impl SectionScalar for f64 {
 
 /// The distinct zeros in `[0, 1]` of `p` (not identically zero), increasing, rational ones
 /// exact, irrational ones refined to width `<= width` (module doc).
-fn unit_zeros<T: SectionScalar>(p: &Bernstein<T>, width: &T) -> Vec<IsolatedRoot<T>> {
+pub(crate) fn unit_zeros<T: SectionScalar>(p: &Bernstein<T>, width: &T) -> Vec<IsolatedRoot<T>> {
     let found = roots::unit_roots(p).expect("unit_zeros: the caller passes a non-zero polynomial");
     let rational = rational_zeros::<T>(&p.to_power());
     found

@@ -1,0 +1,670 @@
+//! `exactcheck plot conics`: the four sections of the cone `x^2 + y^2 = z^2` of Chiang's
+//! Table 1 (SPEC §4), one panel each; `exactcheck plot FILE.json` draws one `conic` problem the
+//! same way.
+//!
+//! # What is exact and what is f64
+//! The sections are computed exactly ([`crate::solve::conic`], the code behind `solve conic`,
+//! over `Q(sqrt 2, ...)`): the weights, the homogeneous control vectors, the poles (isolated
+//! exactly) and the type decided by the angle rule and by the weights. Only then are the
+//! homogeneous control vectors converted to f64 and the rational quadratic
+//! `X(t) / W(t) = sum B_k(t) w_k r_k / sum B_k(t) w_k` evaluated for drawing, at 601 uniform
+//! parameters plus parameters approaching each pole geometrically (`t0 +- 10^-j`), so the curve
+//! reaches the panel's edge.
+//!
+//! # The panel
+//! Each section is drawn in its plane's own orthonormal coordinates: origin the foot of the
+//! perpendicular from the apex, `u` the horizontal direction `z x N` (or the x axis for a
+//! horizontal plane), `v = N x u` (upwards in the plane), equal scale on both axes. Both cone
+//! pieces in two colours (`V+` the quarter, `V-` the three-quarter cone), each with its control
+//! polygon (a point at infinity, `w_k = 0`, becomes the ray towards its direction) and its
+//! finite control points. The curve is broken where the weight changes sign (a pole: the curve
+//! passes through infinity) and clipped to the panel. Every pole is marked: a simple pole
+//! (hyperbola) by its asymptote `X'(t0)/W'(t0) + s X(t0)` and a marker where the asymptote leaves
+//! the panel in the direction `X(t0)`; a double pole (parabola) by an arrow from the
+//! centroid of the piece's finite control points in the direction in which the curve escapes,
+//! `sign(W near t0) X(t0)`.
+//!
+//! The SVG is written with the workspace's own small writer ([`Svg`], hand-written for the
+//! reasons given in `svg.rs`); the segment clipping (Liang–Barsky) is a dozen lines written
+//! here rather than a geometry dependency.
+
+use super::figure::{circle, header};
+use super::svg::{short, Points, Svg, N};
+use crate::solve::conic::{compute, exact_section, Computed};
+use crate::Error;
+use exactcheck_core::conic::{table1_planes, SectionType};
+use exactcheck_core::Vec3;
+use exactcheck_exact::{Radical, Rational};
+
+const STYLE: &str = "
+.panel-frame{fill:#fcfcfc;stroke:#888;stroke-width:1}
+.ptitle{font-size:15px;font-weight:bold;fill:#222}
+.psub{font-size:11.5px;fill:#444}
+.sec-plus{fill:none;stroke:#1f5fbf;stroke-width:2.6;stroke-linejoin:round;stroke-linecap:round}
+.sec-minus{fill:none;stroke:#e0620d;stroke-width:2.6;stroke-linejoin:round;stroke-linecap:round}
+.cpoly-plus{fill:none;stroke:#1f5fbf;stroke-width:1.1;stroke-dasharray:6 4}
+.cpoly-minus{fill:none;stroke:#e0620d;stroke-width:1.1;stroke-dasharray:2 3}
+.cpt-plus{fill:#1f5fbf;stroke:#fff;stroke-width:1}
+.cpt-minus{fill:#e0620d;stroke:#fff;stroke-width:1}
+.asym{stroke:#8e24aa;stroke-width:1.1;stroke-dasharray:7 3 2 3}
+.pole{fill:#fff;stroke:#8e24aa;stroke-width:2}
+.polelabel{font-size:11px;fill:#8e24aa}
+.axes2{stroke:#ccc;stroke-width:0.8}
+";
+
+/// Panel size in the four-panel figure, and the gap between panels.
+const PANEL_W: f64 = 470.0;
+const PANEL_H: f64 = 420.0;
+/// Panel size of a one-panel figure.
+const SINGLE_W: f64 = 920.0;
+const SINGLE_H: f64 = 640.0;
+const GAP: f64 = 20.0;
+/// Uniform samples per piece.
+const SAMPLES: usize = 600;
+
+/// One section in f64, ready to draw.
+struct PanelData {
+    title: String,
+    sub: [String; 2],
+    /// Per piece: weights, weighted points (3D), pole parameters with multiplicity.
+    pieces: [PieceF; 2],
+    /// Plane frame: origin, u, v.
+    frame: [[f64; 3]; 3],
+}
+
+struct PieceF {
+    w: [f64; 3],
+    wp: [[f64; 3]; 3],
+    poles: Vec<(f64, usize)>,
+}
+
+fn f(x: &Radical) -> f64 {
+    x.to_f64()
+}
+
+fn dot(a: &[f64; 3], b: &[f64; 3]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+fn cross(a: &[f64; 3], b: &[f64; 3]) -> [f64; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+fn unit(a: [f64; 3]) -> [f64; 3] {
+    let n = dot(&a, &a).sqrt();
+    [a[0] / n, a[1] / n, a[2] / n]
+}
+
+fn vec_f(v: &Vec3<Radical>) -> [f64; 3] {
+    [f(&v.x), f(&v.y), f(&v.z)]
+}
+
+/// The f64 drawing data of an exactly computed section.
+fn panel_data(c: &Computed<Radical>, title: String, sub: [String; 2]) -> PanelData {
+    let n = vec_f(&c.plane.normal);
+    let d = f(&c.plane.d);
+    let nn = dot(&n, &n);
+    let origin = [-d * n[0] / nn, -d * n[1] / nn, -d * n[2] / nn];
+    let horizontal =
+        c.plane.normal.x == Radical::default() && c.plane.normal.y == Radical::default();
+    let u = if horizontal {
+        [1.0, 0.0, 0.0]
+    } else {
+        unit([-n[1], n[0], 0.0])
+    };
+    let v = cross(&unit(n), &u);
+    let piece = |k: usize| {
+        let p = &c.pieces[k];
+        let ctrl = p.curve.control();
+        let w = [f(&ctrl[0].0[0]), f(&ctrl[1].0[0]), f(&ctrl[2].0[0])];
+        let wp = [0, 1, 2].map(|i| [f(&ctrl[i].0[1]), f(&ctrl[i].0[2]), f(&ctrl[i].0[3])]);
+        let poles = p
+            .poles
+            .iter()
+            .map(|q| {
+                (
+                    q.zero.midpoint().to_f64(),
+                    q.multiplicity.expect("exact mode gives multiplicities"),
+                )
+            })
+            .collect();
+        PieceF { w, wp, poles }
+    };
+    PanelData {
+        title,
+        sub,
+        pieces: [piece(0), piece(1)],
+        frame: [origin, u, v],
+    }
+}
+
+impl PanelData {
+    /// Plane coordinates of a 3D point.
+    fn to2(&self, p: &[f64; 3]) -> (f64, f64) {
+        let q = [
+            p[0] - self.frame[0][0],
+            p[1] - self.frame[0][1],
+            p[2] - self.frame[0][2],
+        ];
+        (dot(&q, &self.frame[1]), dot(&q, &self.frame[2]))
+    }
+
+    /// Plane coordinates of a 3D direction.
+    fn dir2(&self, p: &[f64; 3]) -> (f64, f64) {
+        (dot(p, &self.frame[1]), dot(p, &self.frame[2]))
+    }
+}
+
+impl PieceF {
+    /// `(W(t), X(t))` and the derivatives `(W'(t), X'(t))`.
+    fn hom(&self, t: f64) -> (f64, [f64; 3], f64, [f64; 3]) {
+        let b = [(1.0 - t) * (1.0 - t), 2.0 * t * (1.0 - t), t * t];
+        let db = [-2.0 * (1.0 - t), 2.0 - 4.0 * t, 2.0 * t];
+        let comb = |c: &[f64; 3], x: &dyn Fn(usize) -> f64| c[0] * x(0) + c[1] * x(1) + c[2] * x(2);
+        let w = comb(&b, &|k| self.w[k]);
+        let dw = comb(&db, &|k| self.w[k]);
+        let x = [0, 1, 2].map(|a| comb(&b, &|k| self.wp[k][a]));
+        let dx = [0, 1, 2].map(|a| comb(&db, &|k| self.wp[k][a]));
+        (w, x, dw, dx)
+    }
+
+    /// The sample parameters: uniform, plus geometric approaches to each pole.
+    fn params(&self) -> Vec<f64> {
+        let mut ts: Vec<f64> = (0..=SAMPLES).map(|k| k as f64 / SAMPLES as f64).collect();
+        for &(t0, _) in &self.poles {
+            for j in 2..=12 {
+                let h = 10f64.powi(-j);
+                ts.extend([t0 - h, t0 + h, t0 - 3.0 * h, t0 + 3.0 * h]);
+            }
+        }
+        ts.retain(|t| (0.0..=1.0).contains(t));
+        ts.sort_by(f64::total_cmp);
+        ts.dedup();
+        ts
+    }
+}
+
+/// The axis-aligned view box in plane coordinates: `(xmin, xmax, ymin, ymax)`.
+type Box2 = (f64, f64, f64, f64);
+
+/// The part of the segment `a b` inside the box (Liang–Barsky), if any.
+fn clip(a: (f64, f64), b: (f64, f64), bx: Box2) -> Option<((f64, f64), (f64, f64))> {
+    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+    let (mut t0, mut t1) = (0.0f64, 1.0f64);
+    for (p, q) in [
+        (-dx, a.0 - bx.0),
+        (dx, bx.1 - a.0),
+        (-dy, a.1 - bx.2),
+        (dy, bx.3 - a.1),
+    ] {
+        if p == 0.0 {
+            if q < 0.0 {
+                return None;
+            }
+        } else {
+            let r = q / p;
+            if p < 0.0 {
+                t0 = t0.max(r);
+            } else {
+                t1 = t1.min(r);
+            }
+        }
+    }
+    (t0 <= t1).then_some((
+        (a.0 + t0 * dx, a.1 + t0 * dy),
+        (a.0 + t1 * dx, a.1 + t1 * dy),
+    ))
+}
+
+/// Runs of a polyline clipped to the box.
+fn clip_polyline(pts: &[(f64, f64)], bx: Box2) -> Vec<Vec<(f64, f64)>> {
+    let mut runs: Vec<Vec<(f64, f64)>> = Vec::new();
+    let mut run: Vec<(f64, f64)> = Vec::new();
+    for w in pts.windows(2) {
+        match clip(w[0], w[1], bx) {
+            Some((p, q)) => {
+                if run.last() != Some(&p) {
+                    if run.len() > 1 {
+                        runs.push(std::mem::take(&mut run));
+                    }
+                    run.clear();
+                    run.push(p);
+                }
+                run.push(q);
+                if q != w[1] {
+                    runs.push(std::mem::take(&mut run));
+                }
+            }
+            None => {
+                if run.len() > 1 {
+                    runs.push(std::mem::take(&mut run));
+                }
+                run.clear();
+            }
+        }
+    }
+    if run.len() > 1 {
+        runs.push(run);
+    }
+    runs
+}
+
+/// Where the ray from `p` (inside the box) in direction `d` leaves the box.
+fn exit_point(p: (f64, f64), d: (f64, f64), bx: Box2) -> (f64, f64) {
+    let big = 4.0 * ((bx.1 - bx.0) + (bx.3 - bx.2));
+    let len = (d.0 * d.0 + d.1 * d.1).sqrt().max(f64::MIN_POSITIVE);
+    let far = (p.0 + big * d.0 / len, p.1 + big * d.1 / len);
+    clip(p, far, bx).map_or(p, |(_, q)| q)
+}
+
+/// The pieces' curves as polylines in plane coordinates, broken at the poles.
+fn curves(data: &PanelData) -> [Vec<Vec<(f64, f64)>>; 2] {
+    [0, 1].map(|k| {
+        let piece = &data.pieces[k];
+        let mut runs: Vec<Vec<(f64, f64)>> = Vec::new();
+        let mut run = Vec::new();
+        let mut last_sign = 0.0;
+        for t in piece.params() {
+            let (w, x, _, _) = piece.hom(t);
+            let sign = if w > 0.0 {
+                1.0
+            } else if w < 0.0 {
+                -1.0
+            } else {
+                0.0
+            };
+            if sign == 0.0 || sign != last_sign {
+                if run.len() > 1 {
+                    runs.push(std::mem::take(&mut run));
+                }
+                run.clear();
+            }
+            last_sign = sign;
+            if sign != 0.0 {
+                run.push(data.to2(&[x[0] / w, x[1] / w, x[2] / w]));
+            }
+        }
+        if run.len() > 1 {
+            runs.push(run);
+        }
+        runs
+    })
+}
+
+/// The view box: the finite control points and the curve points not too far from them,
+/// padded, with equal scales for the given aspect `width / height`.
+fn view_box(data: &PanelData, curves: &[Vec<Vec<(f64, f64)>>; 2], aspect: f64) -> Box2 {
+    let mut pts: Vec<(f64, f64)> = Vec::new();
+    for p in &data.pieces {
+        for k in 0..3 {
+            if p.w[k] != 0.0 {
+                let w = p.w[k];
+                pts.push(data.to2(&[p.wp[k][0] / w, p.wp[k][1] / w, p.wp[k][2] / w]));
+            }
+        }
+    }
+    let reach = pts
+        .iter()
+        .map(|p| p.0.abs().max(p.1.abs()))
+        .fold(1.0f64, f64::max)
+        * 2.5;
+    for (piece, runs) in data.pieces.iter().zip(curves) {
+        let bounded = piece.poles.is_empty();
+        pts.extend(
+            runs.iter()
+                .flatten()
+                .filter(|p| bounded || (p.0.abs() <= reach && p.1.abs() <= reach)),
+        );
+    }
+    let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
+    for p in &pts {
+        x0 = x0.min(p.0);
+        x1 = x1.max(p.0);
+        y0 = y0.min(p.1);
+        y1 = y1.max(p.1);
+    }
+    if pts.is_empty() {
+        (x0, x1, y0, y1) = (-1.0, 1.0, -1.0, 1.0);
+    }
+    let pad = 0.12 * (x1 - x0).max(y1 - y0).max(1e-9);
+    let (mut x0, mut x1, mut y0, mut y1) = (x0 - pad, x1 + pad, y0 - pad, y1 + pad);
+    let (w, h) = (x1 - x0, y1 - y0);
+    if w / h < aspect {
+        let grow = (aspect * h - w) / 2.0;
+        x0 -= grow;
+        x1 += grow;
+    } else {
+        let grow = (w / aspect - h) / 2.0;
+        y0 -= grow;
+        y1 += grow;
+    }
+    (x0, x1, y0, y1)
+}
+
+/// Draws one panel with its top-left corner at `(px, py)`; returns the number of pole markers.
+fn panel(svg: &mut Svg, data: &PanelData, (px, py): (f64, f64), (pw, ph): (f64, f64)) -> usize {
+    svg.open("g", &[("class", &"panel")]);
+    svg.leaf(
+        "rect",
+        &[
+            ("class", &"panel-frame"),
+            ("x", &N(px)),
+            ("y", &N(py)),
+            ("width", &N(pw)),
+            ("height", &N(ph)),
+        ],
+    );
+    svg.text(px + 12.0, py + 22.0, &data.title, &[("class", &"ptitle")]);
+    svg.text(px + 12.0, py + 40.0, &data.sub[0], &[("class", &"psub")]);
+    svg.text(px + 12.0, py + 56.0, &data.sub[1], &[("class", &"psub")]);
+    let (ax, ay, aw, ah) = (px + 10.0, py + 66.0, pw - 20.0, ph - 76.0);
+    let curves = curves(data);
+    let bx = view_box(data, &curves, aw / ah);
+    let scale = aw / (bx.1 - bx.0);
+    let screen = |p: (f64, f64)| (ax + (p.0 - bx.0) * scale, ay + (bx.3 - p.1) * scale);
+    // The plane's axes through the foot of the perpendicular from the apex.
+    for seg in [((bx.0, 0.0), (bx.1, 0.0)), ((0.0, bx.2), (0.0, bx.3))] {
+        if let Some((a, b)) = clip(seg.0, seg.1, bx) {
+            svg.line(screen(a), screen(b), &[("class", &"axes2")]);
+        }
+    }
+    let class = ["plus", "minus"];
+    let mut markers = 0;
+    for k in 0..2 {
+        let piece = &data.pieces[k];
+        // The control polygon: segments between finite points, rays towards points at infinity.
+        let pt = |i: usize| -> Option<(f64, f64)> {
+            let w = piece.w[i];
+            (w != 0.0)
+                .then(|| data.to2(&[piece.wp[i][0] / w, piece.wp[i][1] / w, piece.wp[i][2] / w]))
+        };
+        let mut poly: Vec<Vec<(f64, f64)>> = Vec::new();
+        for i in 0..2 {
+            match (pt(i), pt(i + 1)) {
+                (Some(a), Some(b)) => poly.push(vec![a, b]),
+                (Some(a), None) => {
+                    poly.push(vec![a, exit_point(a, data.dir2(&piece.wp[i + 1]), bx)]);
+                }
+                (None, Some(b)) => {
+                    poly.push(vec![b, exit_point(b, data.dir2(&piece.wp[i]), bx)]);
+                }
+                (None, None) => {}
+            }
+        }
+        for seg in poly {
+            for run in clip_polyline(&seg, bx) {
+                let s: Vec<(f64, f64)> = run.into_iter().map(screen).collect();
+                svg.leaf(
+                    "polyline",
+                    &[
+                        ("class", &format!("cpoly-{}", class[k])),
+                        ("points", &Points(&s)),
+                    ],
+                );
+            }
+        }
+        for run in &curves[k] {
+            for clipped in clip_polyline(run, bx) {
+                let s: Vec<(f64, f64)> = clipped.into_iter().map(screen).collect();
+                svg.leaf(
+                    "polyline",
+                    &[
+                        ("class", &format!("sec-{}", class[k])),
+                        ("points", &Points(&s)),
+                    ],
+                );
+            }
+        }
+        for i in 0..3 {
+            if let Some(p) = pt(i) {
+                if p.0 >= bx.0 && p.0 <= bx.1 && p.1 >= bx.2 && p.1 <= bx.3 {
+                    let (x, y) = screen(p);
+                    circle(svg, x, y, 4.0, &format!("cpt-{}", class[k]));
+                }
+            }
+        }
+    }
+    // The poles.
+    let centre = ((bx.0 + bx.1) / 2.0, (bx.2 + bx.3) / 2.0);
+    for k in 0..2 {
+        let piece = &data.pieces[k];
+        for &(t0, mult) in &piece.poles {
+            let (_, x, dw, dx) = piece.hom(t0);
+            let dir = data.dir2(&x);
+            let tip = if mult == 1 && dw != 0.0 {
+                let a = data.to2(&[dx[0] / dw, dx[1] / dw, dx[2] / dw]);
+                let big = 4.0 * ((bx.1 - bx.0) + (bx.3 - bx.2));
+                let len = (dir.0 * dir.0 + dir.1 * dir.1)
+                    .sqrt()
+                    .max(f64::MIN_POSITIVE);
+                let (p, q) = (
+                    (a.0 - big * dir.0 / len, a.1 - big * dir.1 / len),
+                    (a.0 + big * dir.0 / len, a.1 + big * dir.1 / len),
+                );
+                match clip(p, q, bx) {
+                    Some((p, q)) => {
+                        svg.line(screen(p), screen(q), &[("class", &"asym")]);
+                        q
+                    }
+                    None => exit_point(centre, dir, bx),
+                }
+            } else {
+                // A double pole: the direction in which the curve escapes.
+                let near = piece
+                    .hom((t0 + 1e-3).min(1.0))
+                    .0
+                    .max(piece.hom((t0 - 1e-3).max(0.0)).0);
+                let s = if near < 0.0 { -1.0 } else { 1.0 };
+                let d = (s * dir.0, s * dir.1);
+                // From the centroid of the piece's finite control points (near the vertex).
+                let finite: Vec<(f64, f64)> = (0..3)
+                    .filter(|&i| piece.w[i] != 0.0)
+                    .map(|i| {
+                        let w = piece.w[i];
+                        data.to2(&[piece.wp[i][0] / w, piece.wp[i][1] / w, piece.wp[i][2] / w])
+                    })
+                    .collect();
+                let anchor = if finite.is_empty() {
+                    centre
+                } else {
+                    let n = finite.len() as f64;
+                    let c = finite
+                        .iter()
+                        .fold((0.0, 0.0), |a, p| (a.0 + p.0, a.1 + p.1));
+                    ((c.0 / n).clamp(bx.0, bx.1), (c.1 / n).clamp(bx.2, bx.3))
+                };
+                let q = exit_point(anchor, d, bx);
+                svg.line(screen(anchor), screen(q), &[("class", &"asym")]);
+                q
+            };
+            let (x, y) = screen(tip);
+            let (x, y) = (
+                x.clamp(ax + 8.0, ax + aw - 8.0),
+                y.clamp(ay + 8.0, ay + ah - 8.0),
+            );
+            circle(svg, x, y, 6.0, "pole");
+            let label = format!("C{}(t) = ∞ at t ≈ {}", ["+", "−"][k], short(t0, 4));
+            let lx = if x > ax + aw / 2.0 {
+                x - 150.0
+            } else {
+                x + 10.0
+            };
+            let ly = if y < ay + 20.0 { y + 18.0 } else { y - 9.0 };
+            svg.text(lx, ly, &label, &[("class", &"polelabel")]);
+            markers += 1;
+        }
+    }
+    svg.close();
+    markers
+}
+
+fn legend_row(svg: &mut Svg, x: f64, y: f64, width: f64) {
+    let rows: [(&str, &str, bool); 6] = [
+        ("sec-plus", "C+ (quarter cone V+)", false),
+        ("sec-minus", "C− (three-quarter cone V−)", false),
+        ("cpoly-plus", "control polygon of C+", false),
+        ("cpoly-minus", "control polygon of C−", false),
+        ("asym", "asymptote / escape direction", false),
+        ("pole key", "pole (weight = 0)", true),
+    ];
+    let (mut cx, mut y) = (x, y);
+    for (class, label, dot) in rows {
+        let step = 30.0 + 7.0 * label.chars().count() as f64 + 18.0;
+        if cx + step > width && cx > x {
+            cx = x;
+            y += 22.0;
+        }
+        if dot {
+            circle(svg, cx + 12.0, y, 6.0, class);
+        } else {
+            svg.line((cx, y), (cx + 24.0, y), &[("class", &class)]);
+        }
+        svg.text(cx + 30.0, y + 4.0, label, &[("class", &"legend")]);
+        cx += step;
+    }
+}
+
+/// Draws panels in a grid of `cols` columns under a header; returns the SVG and the number of
+/// pole markers.
+fn draw(panels: &[PanelData], cols: usize, title: &str, lines: &[String]) -> (String, usize) {
+    let rows = panels.len().div_ceil(cols);
+    let (pw, ph) = if panels.len() == 1 {
+        (SINGLE_W, SINGLE_H)
+    } else {
+        (PANEL_W, PANEL_H)
+    };
+    let width = GAP + cols as f64 * (pw + GAP);
+    let top_guess = 34.0 + 18.0 * lines.len() as f64 + 14.0;
+    let height = top_guess + rows as f64 * (ph + GAP) + 62.0;
+    let mut svg = Svg::new(width, height, title);
+    let top = header(&mut svg, title, lines);
+    svg.open("style", &[]);
+    svg.buf.push_str(STYLE);
+    svg.close();
+    let mut markers = 0;
+    for (i, p) in panels.iter().enumerate() {
+        let (c, r) = (i % cols, i / cols);
+        markers += panel(
+            &mut svg,
+            p,
+            (GAP + c as f64 * (pw + GAP), top + r as f64 * (ph + GAP)),
+            (pw, ph),
+        );
+    }
+    legend_row(
+        &mut svg,
+        GAP + 4.0,
+        top + rows as f64 * (ph + GAP) + 12.0,
+        width,
+    );
+    (svg.finish(), markers)
+}
+
+/// Short text of an exact number (the exact form when short, else a decimal).
+fn text(x: &Radical) -> String {
+    let s = x.to_string();
+    if s.len() <= 14 {
+        // sqrt(k) -> √k
+        let mut out = String::new();
+        let mut rest = s.as_str();
+        while let Some(i) = rest.find("sqrt(") {
+            out.push_str(&rest[..i]);
+            let after = &rest[i + 5..];
+            let close = after.find(')').expect("the printer closes every sqrt(");
+            out.push('√');
+            out.push_str(&after[..close]);
+            rest = &after[close + 1..];
+        }
+        out.push_str(rest);
+        out
+    } else {
+        short(x.to_f64(), 4)
+    }
+}
+
+fn describe_type(c: &Computed<Radical>) -> String {
+    let t = c.angle;
+    let both = c.pieces.iter().all(|p| p.bezier == Some(t));
+    format!(
+        "{}{}",
+        t.name(),
+        if both {
+            " (angle rule = weights)"
+        } else {
+            " (angle rule; the weights disagree)"
+        }
+    )
+}
+
+fn weights_line(c: &Computed<Radical>) -> String {
+    let w = |k: usize| {
+        c.pieces[k]
+            .curve
+            .weights()
+            .iter()
+            .map(text)
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    format!("w+ = {}; w− = {}", w(0), w(1))
+}
+
+/// The four sections of Table 1, and the number of pole markers drawn.
+pub fn table1() -> (String, usize) {
+    let width = Radical::from(Rational::new(1, 1 << 40).expect("2^40 != 0"));
+    let names = ["(0, 0, 1)", "(1, 1, 3)", "(1, 1, √2)", "(1, 1, 0)"];
+    let panels: Vec<PanelData> = table1_planes(&Radical::sqrt_of(2))
+        .into_iter()
+        .zip(names)
+        .map(|(plane, name)| {
+            let c = compute(plane, &width).expect("Table 1's normals are not zero");
+            let sub = format!("normal {name} through (1, 1, 1)");
+            panel_data(&c, describe_type(&c), [sub, weights_line(&c)])
+        })
+        .collect();
+    draw(
+        &panels,
+        2,
+        "Chiang Table 1: the cone x² + y² = z² cut by four planes",
+        &[
+            "each section as two rational quadratic Bézier pieces: C+ on V+ (the quarter cone), C− on V− (the other three quarters)".into(),
+            "weights, control points and poles exact (solve conic, Q(√2)); type by the angle rule and by the weights; drawn in f64 in each plane's own coordinates".into(),
+        ],
+    )
+}
+
+/// One `conic` problem file as a one-panel figure, and the number of pole markers.
+///
+/// # Errors
+/// As `solve conic` for the file's content.
+pub fn file(path: &str, text_in: &str) -> Result<(String, usize), Error> {
+    let c = exact_section(text_in).map_err(|e| Error::Input(format!("{path}: {e}")))?;
+    if let SectionType::Degenerate(_) = c.angle {
+        return Err(Error::Input(format!(
+            "{path}: the plane passes through the apex ({}): plot draws proper conics only; `solve` names the rulings",
+            c.angle.name()
+        )));
+    }
+    let n = &c.plane.normal;
+    let sub = format!(
+        "plane ({})x + ({})y + ({})z + ({}) = 0",
+        text(&n.x),
+        text(&n.y),
+        text(&n.z),
+        text(&c.plane.d)
+    );
+    let name = std::path::Path::new(path)
+        .file_name()
+        .map_or_else(|| path.to_string(), |f| f.to_string_lossy().into_owned());
+    let panels = [panel_data(&c, describe_type(&c), [sub, weights_line(&c)])];
+    Ok(draw(
+        &panels,
+        1,
+        &format!("The cone x² + y² = z² cut by the plane of {name}"),
+        &["C+ on V+, C− on V−; exact section (solve conic), drawn in f64 in the plane's own coordinates".into()],
+    ))
+}

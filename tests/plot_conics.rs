@@ -1,0 +1,145 @@
+//! End-to-end tests of `exactcheck plot conics` and `exactcheck plot FILE.json` for a `conic`
+//! problem: the SVG is written and well-formed, has one panel per section with both pieces,
+//! their control polygons and finite control points, one pole marker per exact pole of the
+//! `solve conic` answers, labels with the type, and matches the committed `docs/conics.svg`.
+
+#[path = "common/plot_support.rs"]
+mod plot_support;
+use exactcheck::solve::{solve, Mode};
+use plot_support::{check_svg, exactcheck, TempDir};
+
+const TABLE1: [&str; 4] = ["[0,0,1]", "[1,1,3]", "[1,1,\"sqrt(2)\"]", "[1,1,0]"];
+
+/// The number of poles `solve conic` finds for the plane through (1,1,1) with this normal.
+fn exact_poles(problem: &str) -> usize {
+    let a = solve(problem, Mode::Exact).expect("an answer");
+    a["pieces"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| p["poles"].as_array().unwrap().len())
+        .sum()
+}
+
+/// The panels' SVG text (each `<g class="panel">` up to its `</g>`).
+fn panels(svg: &str) -> Vec<&str> {
+    svg.split("<g class=\"panel\"")
+        .skip(1)
+        .map(|p| p.split("</g>").next().unwrap_or_default())
+        .collect()
+}
+
+fn table1_problem(normal: &str) -> String {
+    format!(r#"{{"kind":"conic","normal":{normal},"point":[1,1,1]}}"#)
+}
+
+#[test]
+fn table1_figure_is_written_with_four_panels_and_the_exact_poles() {
+    let dir = TempDir::new("conics");
+    let file = dir.path("conics.svg");
+    let path = file.to_str().expect("utf-8 temp path");
+    let o = exactcheck(&["plot", "conics", "-o", path]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(stdout.lines().count(), 1, "{stdout}");
+    assert!(
+        stdout.starts_with(&format!("wrote {path}: Chiang Table 1")),
+        "{stdout}"
+    );
+    let svg = std::fs::read_to_string(&file).expect("the SVG was written");
+    check_svg(&svg);
+    assert_eq!(svg.matches("<g class=\"panel\"").count(), 4);
+    // Each panel: both pieces drawn, their control polygons, their finite control points
+    // (all 3 + 3 are finite in Table 1; a point outside a panel would not be drawn).
+    let panels = panels(&svg);
+    for (panel, ty) in panels
+        .iter()
+        .zip(["circle", "ellipse", "parabola", "hyperbola"])
+    {
+        assert!(
+            panel.contains(&format!(">{ty} (angle rule = weights)")),
+            "{ty}"
+        );
+        for class in ["sec-plus", "sec-minus", "cpoly-plus", "cpoly-minus"] {
+            assert!(
+                panel.contains(&format!("<polyline class=\"{class}\"")),
+                "{ty}: {class}"
+            );
+        }
+        assert_eq!(
+            panel.matches("<circle class=\"cpt-plus\"").count(),
+            3,
+            "{ty}"
+        );
+        assert_eq!(
+            panel.matches("<circle class=\"cpt-minus\"").count(),
+            3,
+            "{ty}"
+        );
+    }
+    // One marker per exact pole: none for the circle and the ellipse, the parabola's double
+    // pole t = 1/2, the hyperbola's two.
+    let per_panel: Vec<usize> = TABLE1
+        .iter()
+        .map(|n| exact_poles(&table1_problem(n)))
+        .collect();
+    assert_eq!(per_panel, vec![0, 0, 1, 2]);
+    for (panel, want) in panels.iter().zip(&per_panel) {
+        assert_eq!(panel.matches("<circle class=\"pole\"").count(), *want);
+        assert_eq!(panel.matches("class=\"asym\"").count(), *want);
+    }
+    // The hyperbola's poles at 1 - 1/sqrt 2 and 1/sqrt 2, the parabola's at 1/2.
+    for label in ["t ≈ 0.2929", "t ≈ 0.7071", "t ≈ 0.5"] {
+        assert!(svg.contains(label), "missing {label}");
+    }
+    assert!(svg.contains("w+ = 4, 5*√2/2, 4"), "the ellipse's weights");
+}
+
+#[test]
+fn committed_figure_is_current() {
+    let o = exactcheck(&["plot", "conics", "-o", "-"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let svg = String::from_utf8(o.stdout).expect("utf-8 SVG");
+    check_svg(&svg);
+    let committed = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/conics.svg"),
+    )
+    .expect("docs/conics.svg is committed");
+    assert!(
+        committed == svg,
+        "docs/conics.svg is stale: regenerate it with `exactcheck plot conics -o docs/conics.svg`"
+    );
+}
+
+#[test]
+fn a_conic_problem_file_is_one_panel() {
+    let dir = TempDir::new("conic-file");
+    let problem = dir.path("h.json");
+    let text = r#"{"kind":"conic","normal":["1/2","sqrt(3)",1],"point":["sqrt(2)",0,"-1/3"]}"#;
+    std::fs::write(&problem, text).unwrap();
+    let o = exactcheck(&["plot", problem.to_str().unwrap(), "-o", "-"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let svg = String::from_utf8(o.stdout).unwrap();
+    check_svg(&svg);
+    assert_eq!(svg.matches("<g class=\"panel\"").count(), 1);
+    assert!(svg.contains(">hyperbola (angle rule = weights)"));
+    assert_eq!(
+        svg.matches("<circle class=\"pole\"").count(),
+        exact_poles(text)
+    );
+    // A plane through the apex and a zero normal are one-line errors (exit 2).
+    for (bad, needle) in [
+        (r#"{"kind":"conic","plane":[1,1,0,0]}"#, "through the apex"),
+        (r#"{"kind":"conic","plane":[0,0,0,1]}"#, "zero vector"),
+    ] {
+        std::fs::write(&problem, bad).unwrap();
+        let o = exactcheck(&["plot", problem.to_str().unwrap(), "-o", "-"]);
+        assert_eq!(o.status.code(), Some(2), "{bad}");
+        assert!(o.stdout.is_empty());
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(err.contains(needle) && err.contains("h.json"), "{err}");
+    }
+    let o = exactcheck(&["plot", "conics", "--example", "1", "-o", "-"]);
+    assert_eq!(o.status.code(), Some(2));
+}
