@@ -5,9 +5,9 @@
 //! (seeds 000, 001) is implemented, plus `juttler.interpolation_degree`, the degree comparison
 //! split off from the sentence of `juttler.interpolation` (it is not an id of §6), the `planes.*`
 //! id (seed 003) and the `chiang.*` ids of the ruled-surface half of seed 004 (`chiang.theorem`,
-//! `chiang.corollary1/2/5`, `chiang.example4`, `chiang.line`, `chiang.vicinity`). The conic, offset
-//! and PH ids (`chiang.offset`, `chiang.conic_*`, `chiang.ph_*`) are **not implemented yet**;
-//! `verify` does not check them.
+//! `chiang.corollary1/2/5`, `chiang.example4`, `chiang.line`, `chiang.vicinity`) and the offset and
+//! PH ids (`chiang.offset`, `chiang.ph_*`, module `chiang_ph`). The conic ids (`chiang.conic_*`)
+//! are **not implemented yet**; `verify` does not check them.
 //!
 //! A verdict is only ever the result of a computation:
 //! * **proved** — the residual expanded to zero over polynomials (modulo the declared relations);
@@ -33,6 +33,7 @@ macro_rules! claim {
 
 pub mod chiang;
 pub mod chiang_line;
+pub mod chiang_ph;
 pub mod engine;
 pub mod juttler;
 pub mod juttler_geometry;
@@ -102,6 +103,7 @@ pub fn catalogue() -> Vec<Claim> {
     all.extend(planes::claims());
     all.extend(chiang::claims());
     all.extend(chiang_line::claims());
+    all.extend(chiang_ph::claims());
     all
 }
 
