@@ -180,12 +180,15 @@ fn the_offsets_table_has_the_exact_values() {
     assert_eq!(rows.len(), 12);
     let md = ph_offsets_markdown(&rows);
     assert!(md.contains("| 15 | r0.x | 2.96 | `-300/101` | -2.970297 | +5.93 | **no**; neither the exact value nor its magnitude, rounded or truncated |"), "{md}");
-    assert!(md.contains("| 3 | r0.x | 0.594 | `-60/101` | -0.594059 | +1.19 | **no**; reproduced by |exact| correctly rounded (a lost minus sign) |"), "{md}");
+    assert!(md.contains("| 3 | r0.x | 0.594 | `-60/101` | -0.594059 | +1.19 | **no**; reproduced by the magnitude of the exact value correctly rounded (a lost minus sign) |"), "{md}");
     assert!(
         md.contains("| 15 | r0.y | 14.7 | `1485/101` | 14.702970 | -0.00297 | yes |"),
         "{md}"
     );
+    // Every row has exactly the table's 7 cells (no '|' inside a cell).
+    assert!(md.lines().all(|l| l.matches('|').count() == 8), "{md}");
     let w = weights_markdown().unwrap();
+    assert!(w.lines().all(|l| l.matches('|').count() == 5), "{w}");
     assert!(
         w.contains("| 15 | 0 | 101 | (-300/101, 1485/101, 15) |"),
         "{w}"

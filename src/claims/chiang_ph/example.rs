@@ -599,9 +599,12 @@ pub fn ph_offsets_rows() -> Result<Vec<OffsetRow>, String> {
                 if exact.signum() == exactcheck_core::Sign::Negative {
                     if rounds_to(&magnitude, &printed, p) {
                         reproduced_by
-                            .push("|exact| correctly rounded (a lost minus sign)".to_string());
+                            .push("the magnitude of the exact value correctly rounded (a lost minus sign)".to_string());
                     } else if truncates_to(&magnitude, &printed, p) {
-                        reproduced_by.push("|exact| truncated (a lost minus sign)".to_string());
+                        reproduced_by.push(
+                            "the magnitude of the exact value truncated (a lost minus sign)"
+                                .to_string(),
+                        );
                     }
                 }
             }
@@ -772,7 +775,10 @@ mod tests {
         assert_eq!(x3.exact, q(-60, 101));
         assert_eq!(
             x3.reproduced_by,
-            vec!["|exact| correctly rounded (a lost minus sign)".to_string()]
+            vec![
+                "the magnitude of the exact value correctly rounded (a lost minus sign)"
+                    .to_string()
+            ]
         );
         assert!(rows
             .iter()

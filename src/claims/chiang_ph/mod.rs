@@ -17,6 +17,11 @@
 //!   of the printed magnitudes), `chiang.ph_radius` (exact smallest radius, exact cusp counts
 //!   two independent ways) and `chiang.ph_offsets` (every printed decimal of the offsets).
 //!
+//! Hand-written here: only the bookkeeping of the claims (the residual list, the enumeration of
+//! the 2^8 sign patterns of the printed normals, the readings of printed decimals); the
+//! mathematics is `exactcheck_core::ph`, the proofs are the engine's, the decimal judgements are
+//! `crate::claims::printed`.
+//!
 //! Self-intersections of the offsets are *not* decided here: [`self_intersection_evidence`]
 //! reports what is decided exactly (the cusps) and says so; an exact self-intersection finder
 //! for rational planar curves is built elsewhere and is to be wired in there.
