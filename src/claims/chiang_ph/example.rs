@@ -503,14 +503,14 @@ pub(super) fn radius_check() -> Result<Outcome, String> {
             ));
         }
     }
-    let c15 = cusps_at(&q(15, 1));
-    let c3 = cusps_at(&q(3, 1));
+    // The self-intersection part goes through `self_intersection_evidence` (the one place
+    // where a self-intersection finder is to be wired in).
     let parts = format!(
-        "As printed: \"smallest radius 12.6\" — {}; \"r < 12.6: no self-intersection\" — at r = 3: {} (and no r below the exact minimum has a cusp), self-intersection not decided here; \"r = 12.6: one cusp\" — {}; \"r > 12.6: self-intersection and two cusps\" — at r = 15: {}{}, self-intersection not decided here",
+        "As printed: \"smallest radius 12.6\" — {}; \"r < 12.6: no self-intersection\" — {} (and no r below the exact minimum has a cusp); \"r = 12.6: one cusp\" — {}; \"r > 12.6: self-intersection and two cusps\" — {}{}",
         if rounded { "correct as a rounding" } else { "wrong" },
-        cusps_text(&c3),
+        self_intersection_evidence(&q(3, 1))?,
         if one_cusp { "holds".into() } else { format!("fails ({})", cusps_text(&at_printed)) },
-        cusps_text(&c15),
+        self_intersection_evidence(&q(15, 1))?,
         if between != rho {
             format!("; but at r = {between} (> 12.6): {}", cusps_text(&cusps_at(&between)))
         } else {
