@@ -4,8 +4,9 @@ use exactcheck::claims::{verify, Verdict};
 use std::process::Command;
 
 /// The ids of SPEC §6 that the catalogue implements (all `juttler.*` and `spaeth.*` ids,
-/// `planes.wabis` and the ruled-surface `chiang.*` ids).
-const SPEC_IDS: [&str; 39] = [
+/// `planes.wabis`, the ruled-surface and conic `chiang.*` ids and the PH ids `chiang.offset`,
+/// `chiang.ph_*`: every id of SPEC §6).
+const SPEC_IDS: [&str; 45] = [
     "juttler.lebesgue",
     "juttler.dietz",
     "juttler.satz1",
@@ -45,6 +46,12 @@ const SPEC_IDS: [&str; 39] = [
     "chiang.conic_type",
     "chiang.line",
     "chiang.vicinity",
+    "chiang.offset",
+    "chiang.ph_degree",
+    "chiang.ph_points",
+    "chiang.ph_normals",
+    "chiang.ph_radius",
+    "chiang.ph_offsets",
 ];
 
 /// Catalogue ids that are not ids of SPEC §6 (documented in `claims`' module doc).
@@ -52,7 +59,7 @@ const EXTRA_IDS: [&str; 1] = ["juttler.interpolation_degree"];
 
 /// The verdict each claim gets, pinned here independently of the catalogue's own expectation
 /// (so changing an expectation in the catalogue alone does not make this test pass).
-const VERDICTS: [(&str, Verdict); 40] = [
+const VERDICTS: [(&str, Verdict); 46] = [
     ("juttler.lebesgue", Verdict::Proved),
     ("juttler.dietz", Verdict::Proved),
     ("juttler.satz1", Verdict::Proved),
@@ -93,6 +100,12 @@ const VERDICTS: [(&str, Verdict); 40] = [
     ("chiang.conic_type", Verdict::Holds),
     ("chiang.line", Verdict::Proved),
     ("chiang.vicinity", Verdict::Fails),
+    ("chiang.offset", Verdict::Proved),
+    ("chiang.ph_degree", Verdict::Proved),
+    ("chiang.ph_points", Verdict::Holds),
+    ("chiang.ph_normals", Verdict::Fails),
+    ("chiang.ph_radius", Verdict::Fails),
+    ("chiang.ph_offsets", Verdict::Fails),
 ];
 
 #[test]

@@ -5,9 +5,9 @@
 //! (seeds 000, 001) is implemented, plus `juttler.interpolation_degree`, the degree comparison
 //! split off from the sentence of `juttler.interpolation` (it is not an id of §6), the `planes.*`
 //! id (seed 003) and the `chiang.*` ids of the ruled-surface half of seed 004 (`chiang.theorem`,
-//! `chiang.corollary1/2/5`, `chiang.example4`, `chiang.line`, `chiang.vicinity`) and the conic ids
-//! `chiang.conic_table`, `chiang.conic_type` ([`chiang_conic`]). The offset and PH ids
-//! (`chiang.offset`, `chiang.ph_*`) are **not implemented yet**; `verify` does not check them.
+//! `chiang.corollary1/2/5`, `chiang.example4`, `chiang.line`, `chiang.vicinity`), the conic ids
+//! `chiang.conic_table`, `chiang.conic_type` ([`chiang_conic`]) and the offset and PH ids
+//! (`chiang.offset`, `chiang.ph_*`, [`chiang_ph`]): every id of §6.
 //!
 //! A verdict is only ever the result of a computation:
 //! * **proved** — the residual expanded to zero over polynomials (modulo the declared relations);
@@ -34,6 +34,7 @@ macro_rules! claim {
 pub mod chiang;
 pub mod chiang_conic;
 pub mod chiang_line;
+pub mod chiang_ph;
 pub mod engine;
 pub mod juttler;
 pub mod juttler_geometry;
@@ -104,6 +105,7 @@ pub fn catalogue() -> Vec<Claim> {
     all.extend(chiang::claims());
     all.extend(chiang_conic::claims());
     all.extend(chiang_line::claims());
+    all.extend(chiang_ph::claims());
     all
 }
 

@@ -43,6 +43,14 @@ pub fn rounds_to(v: &Radical, printed: &Rational, p: u32) -> bool {
     radical(&printed.sub_ref(&half)) <= *v && *v <= radical(&printed.add_ref(&half))
 }
 
+/// Is `v` exactly halfway between two `p`-place decimals, one of them `printed` (a tie: both
+/// roundings are correct, e.g. `12.625 -> 12.6` or `12.7`)?
+pub fn ties(v: &Radical, printed: &Rational, p: u32) -> bool {
+    let half = radical(&inv_pow10(p).mul_ref(&Rational::new(1, 2).expect("2 != 0")));
+    let d = v.sub_ref(&radical(printed));
+    d == half || d == half.neg_ref()
+}
+
 /// Is `v` truncated toward zero to `p` places the printed value?
 pub fn truncates_to(v: &Radical, printed: &Rational, p: u32) -> bool {
     let ulp = inv_pow10(p);
@@ -123,6 +131,11 @@ mod tests {
         assert!(rounds_to(&r("1/8"), &q("0.13"), 2));
         assert!(truncates_to(&r("1/8"), &q("0.12"), 2));
         assert!(!truncates_to(&r("1/8"), &q("0.13"), 2));
+        // Ties: 101/8 = 12.625 is halfway between 12.62 and 12.63 and not a tie at 1 place.
+        assert!(ties(&r("101/8"), &q("12.62"), 2));
+        assert!(ties(&r("101/8"), &q("12.63"), 2));
+        assert!(!ties(&r("101/8"), &q("12.6"), 1));
+        assert!(!ties(&r("sqrt(2)"), &q("1.41"), 2));
     }
 
     #[test]
