@@ -30,9 +30,17 @@
 //! proper, or it retraces itself): the solution set may be a curve, and the error
 //! [`PlanarError::CommonComponent`] says so rather than deciding.
 //!
-//! # Candidate boxes
-//! The distinct roots `rho_1 < ... < rho_m` of `R` in `[0, 1]` are isolated (Sturm,
-//! [`UPoly::unit_roots`]), each by a rational interval `I_k` (open, ends not roots) or exactly.
+//! # Candidate parameters
+//! `R` is far from square-free: it is divisible by high powers of `w` (points at infinity) and
+//! of `S = gcd(x' w - x w', y' w - y w')` (stationary points). These are divided out and `S` put
+//! back once (`candidate_polynomial`), which leaves the roots in `[0, 1]` unchanged and cuts the
+//! degree about in half before the expensive step, the Sturm sequence (for the offsets of
+//! quintic PH curves, 88 to 44). The distinct roots `rho_1 < ... < rho_m` in `[0, 1]` are then
+//! isolated by bisection of `[0, 1]`, each by a rational interval `I_k` (open, ends not roots)
+//! or exactly when a bisection point hits it. The bisection is driven by Descartes' rule of
+//! signs when the candidate polynomial is certified square-free modulo a prime (the usual case,
+//! no remainder sequence needed), else by Sturm sequences of its square-free part
+//! (`isolate_candidates` explains the certificate).
 //! Every self-intersection `s < t` is `(rho_i, rho_j)` for some `i < j`, and, conversely, the box
 //! `I_i x I_j` contains no solution but possibly `(rho_i, rho_j)`: any solution in it has both
 //! coordinates roots of `R`, and `I_i`, `I_j` hold one each. So each pair `i < j` is decided on
@@ -51,7 +59,8 @@
 //!     `I_j`, take the box `P = [c_i - d_i, c_i + d_i] x [c_j - d_j, c_j + d_j]`, which contains
 //!     `(rho_i, rho_j)` at distance at least `d/2` from its sides; check by Sturm counts that
 //!     each side of `P` holds no root of `R` but `rho_i` (resp. `rho_j`) and that its ends are
-//!     not roots. Precondition with `A = J^{-1}`, `J` the exact Jacobian of `(F, G)` at the
+//!     not roots (`P` may reach outside `[0, 1]`, so the count is of the candidate polynomial
+//!     and of `w`, whose roots are the roots of `R`). Precondition with `A = J^{-1}`, `J` the exact Jacobian of `(F, G)` at the
 //!     centre: `(H1, H2) = A (F, G)` has the same zeros and is close to the identity map around
 //!     the root. If `H1` has one strict sign on the left side of `P` and the opposite strict sign
 //!     on the right side, and `H2` likewise on the bottom and top sides (each side's restriction
@@ -75,7 +84,7 @@
 //! sparse [`crate::poly::Poly`].
 
 use crate::univariate::{sign_variations, RootInterval, UPoly};
-use crate::Rational;
+use crate::{ModP, Rational};
 use exactcheck_core::bernstein::Bernstein;
 use exactcheck_core::bezier::RationalBezierCurve;
 use exactcheck_core::{Field, Ring, Sign};
@@ -232,14 +241,18 @@ pub fn self_intersections(
     if resultant.is_zero() {
         return Err(PlanarError::CommonComponent);
     }
-    let stationary = stationary_points(x, y, w);
-    let sqf = resultant.square_free_part().primitive_part();
+    let (stationary_poly, stationary) = stationary_points(x, y, w);
+    let candidates = candidate_polynomial(&resultant, w, &stationary_poly);
+    let (sqf, counter, roots) = isolate_candidates(&candidates);
+    let w_free = w.square_free_part();
     let mut search = Search {
         f,
         g,
-        sturm: sqf.sturm_sequence(),
+        w_sturm: w_free.sturm_sequence(),
+        w_free,
+        counter,
         sqf,
-        roots: unit_roots_exact(&resultant),
+        roots,
     };
     let m = search.roots.len();
     let mut found = Vec::new();
@@ -309,19 +322,256 @@ pub fn self_intersections_xy(
     self_intersections_hom(&[w, x, y], budget)
 }
 
-/// The roots in `[0, 1]` of `gcd(x' w - x w', y' w - y w')`: where `(x/w, y/w)' = 0`.
-fn stationary_points(x: &UPoly, y: &UPoly, w: &UPoly) -> Vec<RootInterval> {
+/// `S = gcd(x' w - x w', y' w - y w')` (primitive) and its roots in `[0, 1]`: where
+/// `(x/w, y/w)' = 0`.
+fn stationary_points(x: &UPoly, y: &UPoly, w: &UPoly) -> (UPoly, Vec<RootInterval>) {
     let wd = w.derivative();
     let fx = x.derivative() * w.clone() - x.clone() * wd.clone();
     let fy = y.derivative() * w.clone() - y.clone() * wd;
     let g = fx.gcd(&fy);
-    // Both zero would make the curve constant, whose F and G vanish identically (caught as a
-    // common component before this is called).
     assert!(
         !g.is_zero(),
         "a constant curve is rejected as a common component first"
     );
-    unit_roots_exact(&g)
+    let roots = unit_roots_exact(&g);
+    (g.primitive_part(), roots)
+}
+
+/// `P = R / (w^a S^b) * S` with `a`, `b` as large as the divisions are exact (`S` from
+/// [`stationary_points`]; the factor `S` put back once when `S` is not constant).
+///
+/// `R` is in practice far from square-free: a root `t0` of `w` (a point of the curve at
+/// infinity) makes `F(., t0)` and `G(., t0)` both multiples of `w(s) / (s - t0)`, and a zero of
+/// `C'` is a multiple root of `R`, so `R = A w^a S^b` with large `a`, `b` (for the offsets of
+/// cubic PH curves, `deg R = 20` with `w^4` and `S^2`; of quintic ones 88, with `w^9` and
+/// `S^2`). Dividing them out before the Sturm sequence, whose cost grows steeply with the
+/// degree, makes the isolation several times faster. Nothing is lost in `[0, 1]`: `w` has no
+/// root there, and the roots of `S` are kept. The roots of `w` outside `[0, 1]` are still roots
+/// of `R`, which the Poincare-Miranda step accounts for ([`Search::isolates_one`]).
+fn candidate_polynomial(resultant: &UPoly, w: &UPoly, stationary: &UPoly) -> UPoly {
+    let mut p = resultant.clone();
+    for d in [w, stationary] {
+        if d.is_constant() {
+            continue;
+        }
+        loop {
+            let (quotient, rest) = p.div_rem(d);
+            if !rest.is_zero() {
+                break;
+            }
+            p = quotient;
+        }
+    }
+    if stationary.is_constant() {
+        p
+    } else {
+        p * stationary.clone()
+    }
+}
+
+/// How root counts of the square-free candidate polynomial are certified.
+enum Counter {
+    /// By its Sturm sequence.
+    Sturm(Vec<UPoly>),
+    /// By Descartes' rule of signs on its Bernstein coefficients over the interval.
+    Descartes,
+}
+
+/// The square-free part of the candidate polynomial `p`, how to count its roots, and its roots
+/// in `[0, 1]`.
+///
+/// The usual case is a square-free `p`, which is certified cheaply modulo the prime
+/// `2^61 - 1`: if the prime divides neither a denominator nor the leading coefficient, then
+/// `deg gcd(p, p') <= deg gcd(p mod q, p' mod q)`, so a constant gcd modulo the prime proves `p`
+/// square-free over Q. Then the roots are isolated by bisection with Descartes' rule
+/// ([`descartes_count`]) and counted the same way, with no Sturm sequence (whose remainder sequence dominated the run time for offsets of degree 13:
+/// 30 of 40 seconds). Otherwise the square-free part comes from the primitive remainder sequence,
+/// and roots are isolated and counted by Sturm sequences.
+fn isolate_candidates(p: &UPoly) -> (UPoly, Counter, Vec<RootInterval>) {
+    if p.is_constant() {
+        return (p.clone(), Counter::Descartes, Vec::new());
+    }
+    if square_free_mod_prime(p) {
+        let sqf = p.primitive_part();
+        let roots = unit_roots_descartes(&sqf);
+        return (sqf, Counter::Descartes, roots);
+    }
+    // The Sturm sequence of p ends in gcd(p, p').
+    let chain = p.sturm_sequence();
+    let repeated = chain.last().expect("p is not zero");
+    let (sqf, sturm) = if repeated.is_constant() {
+        (p.primitive_part(), chain)
+    } else {
+        let (quotient, rest) = p.div_rem(repeated);
+        debug_assert!(rest.is_zero(), "gcd(p, p') divides p");
+        let sqf = quotient.primitive_part();
+        let sturm = sqf.sturm_sequence();
+        (sqf, sturm)
+    };
+    let roots = unit_roots_sturm(&sqf, &sturm);
+    (sqf, Counter::Sturm(sturm), roots)
+}
+
+/// Whether `p` (not constant) is certified square-free by a constant `gcd(p, p')` modulo
+/// `2^61 - 1` (see [`isolate_candidates`]); `false` also when the prime is unlucky.
+fn square_free_mod_prime(p: &UPoly) -> bool {
+    let Ok(mut a) = p
+        .coeffs()
+        .iter()
+        .map(ModP::from_rational)
+        .collect::<Result<Vec<ModP>, _>>()
+    else {
+        return false;
+    };
+    if a.last().is_none_or(|lc| lc.is_zero()) {
+        return false;
+    }
+    let mut b: Vec<ModP> = a
+        .iter()
+        .enumerate()
+        .skip(1)
+        .map(|(k, c)| *c * ModP::from_i64(k as i64))
+        .collect();
+    trim_mod(&mut b);
+    // Euclid over the field of residues.
+    while !b.is_empty() {
+        let inv = b
+            .last()
+            .expect("not empty")
+            .inv()
+            .expect("trimmed: not zero");
+        while a.len() >= b.len() {
+            let factor = *a.last().expect("not shorter than b") * inv;
+            let shift = a.len() - b.len();
+            for (k, c) in b.iter().enumerate() {
+                a[shift + k] -= factor * *c;
+            }
+            a.pop();
+            trim_mod(&mut a);
+            if a.len() < b.len() {
+                break;
+            }
+        }
+        std::mem::swap(&mut a, &mut b);
+    }
+    a.len() == 1
+}
+
+fn trim_mod(v: &mut Vec<ModP>) {
+    while v.last().is_some_and(|c| c.is_zero()) {
+        v.pop();
+    }
+}
+
+/// Descartes' bound for the open interval `(lo, hi)`, `lo < hi`: the sign variations of the
+/// coefficients of `(x + 1)^n p((lo x + hi) / (x + 1))` (the same, up to positive factors, as
+/// the Bernstein coefficients of `p` on `[lo, hi]`, but computed by two compositions, with no
+/// binomial coefficients, so for any degree). It bounds the number of roots in `(lo, hi)`
+/// counted with multiplicity and has the same parity; 0 or 1 is exact.
+fn descartes_count(p: &UPoly, lo: &Rational, hi: &Rational) -> usize {
+    let n = p.degree();
+    // Roots in (lo, hi) -> roots of q in (0, 1).
+    let q = p.compose(&UPoly::from_coeffs(vec![lo.clone(), hi.sub_ref(lo)]));
+    // y^n q(1/y): roots in (1, inf); then x = y - 1: roots in (0, inf).
+    let mut reversed = padded(&q, n);
+    reversed.reverse();
+    let shifted = UPoly::from_coeffs(reversed).compose(&poly_x_plus_one());
+    let signs: Vec<Sign> = shifted
+        .coeffs()
+        .iter()
+        .map(Rational::signum)
+        .filter(|s| *s != Sign::Zero)
+        .collect();
+    signs.windows(2).filter(|w| w[0] != w[1]).count()
+}
+
+fn poly_x_plus_one() -> UPoly {
+    UPoly::from_coeffs(vec![Rational::ONE, Rational::ONE])
+}
+
+/// Whether the square-free `p` has exactly one root in `[lo, hi]`, none at the ends
+/// ([`descartes_count`]).
+fn descartes_one(p: &UPoly, lo: &Rational, hi: &Rational) -> bool {
+    p.sign_at(lo) != Sign::Zero && p.sign_at(hi) != Sign::Zero && descartes_count(p, lo, hi) == 1
+}
+
+/// The distinct roots in `[0, 1]` of the square-free `sqf`, increasing: bisection driven by
+/// [`descartes_count`] (which reaches 0 or 1 on small enough intervals around simple roots, so
+/// the bisection ends), a bisection point that is a root recorded exactly.
+fn unit_roots_descartes(sqf: &UPoly) -> Vec<RootInterval> {
+    let (zero, one) = (Rational::ZERO, Rational::ONE);
+    let is_root = |x: &Rational| sqf.sign_at(x) == Sign::Zero;
+    let mut out: Vec<RootInterval> = [&zero, &one]
+        .into_iter()
+        .filter(|x| is_root(x))
+        .map(|x| RootInterval::exact(x.clone()))
+        .collect();
+    let half = Rational::new(1, 2).expect("2 is not zero");
+    let mut stack = vec![(zero, one)];
+    while let Some((a, b)) = stack.pop() {
+        let count = descartes_count(sqf, &a, &b);
+        if count == 0 {
+            continue;
+        }
+        if count == 1 && !is_root(&a) && !is_root(&b) {
+            out.push(RootInterval { lo: a, hi: b });
+            continue;
+        }
+        let m = a.add_ref(&b) * &half;
+        if is_root(&m) {
+            out.push(RootInterval::exact(m.clone()));
+        }
+        stack.push((m.clone(), b));
+        stack.push((a, m));
+    }
+    out.sort_by(|x, y| x.lo.cmp(&y.lo));
+    out
+}
+
+/// The distinct roots in `[0, 1]` of the square-free `sqf` with the Sturm sequence `sturm`,
+/// increasing: bisection of `[0, 1]` driven by Sturm counts (`V(a) - V(b)` distinct roots in
+/// `(a, b]`), a bisection point that is a root recorded exactly (so roots are exact when a
+/// dyadic bisection point or an end hits them, not whenever they are rational).
+fn unit_roots_sturm(sqf: &UPoly, sturm: &[UPoly]) -> Vec<RootInterval> {
+    let (zero, one) = (Rational::ZERO, Rational::ONE);
+    if sqf.is_constant() {
+        return Vec::new();
+    }
+    let is_root = |x: &Rational| sqf.sign_at(x) == Sign::Zero;
+    let var = |x: &Rational| sign_variations(sturm, x);
+    // The number of roots in the open interval (a, b).
+    let open_count = |b: &Rational, va: usize, vb: usize| va - vb - usize::from(is_root(b));
+    let mut out = Vec::new();
+    if is_root(&zero) {
+        out.push(RootInterval::exact(zero.clone()));
+    }
+    if is_root(&one) {
+        out.push(RootInterval::exact(one.clone()));
+    }
+    let (v0, v1) = (var(&zero), var(&one));
+    let count = open_count(&one, v0, v1);
+    let mut stack = vec![(zero, one, v0, v1, count)];
+    let half = Rational::new(1, 2).expect("2 is not zero");
+    while let Some((a, b, va, vb, count)) = stack.pop() {
+        if count == 0 {
+            continue;
+        }
+        if count == 1 && !is_root(&a) && !is_root(&b) {
+            out.push(RootInterval { lo: a, hi: b });
+            continue;
+        }
+        let m = a.add_ref(&b) * &half;
+        let vm = var(&m);
+        if is_root(&m) {
+            out.push(RootInterval::exact(m.clone()));
+        }
+        let right = open_count(&b, vm, vb);
+        let left = open_count(&m, va, vm);
+        stack.push((m.clone(), b, vm, vb, right));
+        stack.push((a, m, va, vm, left));
+    }
+    out.sort_by(|x, y| x.lo.cmp(&y.lo));
+    out
 }
 
 /// The distinct roots of the non-zero `p` in `[0, 1]`, increasing, isolated with the
@@ -630,8 +880,12 @@ fn newton_interpolate(nodes: &[Rational], mut dd: Vec<Rational>) -> UPoly {
 struct Search {
     f: Dense,
     g: Dense,
+    /// The square-free part of `w` and its Sturm sequence (roots of `w` are roots of `R` that
+    /// [`candidate_polynomial`] removed).
+    w_free: UPoly,
+    w_sturm: Vec<UPoly>,
     sqf: UPoly,
-    sturm: Vec<UPoly>,
+    counter: Counter,
     roots: Vec<RootInterval>,
 }
 
@@ -702,9 +956,6 @@ impl Search {
             (c.sub_ref(&d), c.add_ref(&d))
         };
         let (ps, pt) = (widen(&self.roots[i]), widen(&self.roots[j]));
-        if !self.isolates_one(&ps) || !self.isolates_one(&pt) {
-            return false;
-        }
         let (cs, ct) = (self.roots[i].midpoint(), self.roots[j].midpoint());
         let [fs, ft] = self.f.gradient(&cs, &ct);
         let [gs, gt] = self.g.gradient(&cs, &ct);
@@ -733,14 +984,23 @@ impl Search {
         let h2t = h2.transpose();
         let bottom = edge_sign(&h2t.at_s(&pt.0), &ps.0, &ps.1);
         let top = edge_sign(&h2t.at_s(&pt.1), &ps.0, &ps.1);
-        opposite(bottom, top)
+        // Last, as the most expensive test (a root count of the candidate polynomial, of high
+        // degree): no root of R in the sides of P but rho_i and rho_j.
+        opposite(bottom, top) && self.isolates_one(&ps) && self.isolates_one(&pt)
     }
 
-    /// Whether the closed interval `[lo, hi]` holds exactly one root of `R` and its ends none.
+    /// Whether the closed interval `[lo, hi]` holds exactly one root of `R` and its ends none:
+    /// one root of the candidate polynomial, no root of `w` (module documentation).
     fn isolates_one(&self, (lo, hi): &(Rational, Rational)) -> bool {
-        self.sqf.sign_at(lo) != Sign::Zero
-            && self.sqf.sign_at(hi) != Sign::Zero
-            && sign_variations(&self.sturm, lo) - sign_variations(&self.sturm, hi) == 1
+        let count = |p: &UPoly, chain: &[UPoly]| {
+            (p.sign_at(lo) != Sign::Zero && p.sign_at(hi) != Sign::Zero)
+                .then(|| sign_variations(chain, lo) - sign_variations(chain, hi))
+        };
+        let one = match &self.counter {
+            Counter::Sturm(sturm) => count(&self.sqf, sturm) == Some(1),
+            Counter::Descartes => descartes_one(&self.sqf, lo, hi),
+        };
+        one && (self.w_free.is_constant() || count(&self.w_free, &self.w_sturm) == Some(0))
     }
 
     /// Halves the interval of root `k` (exact when the midpoint is the root).

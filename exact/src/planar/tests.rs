@@ -245,3 +245,40 @@ fn hom_and_bezier_constructors_agree_with_the_power_form() {
     );
     assert_eq!(direct.crossings.len(), 1);
 }
+
+#[test]
+fn square_freeness_is_certified_modulo_the_prime_or_not_at_all() {
+    let simple = UPoly::from_roots(&[q(1, 3), q(1, 2), q(-4, 7)]);
+    assert!(square_free_mod_prime(&simple));
+    let double = UPoly::from_roots(&[q(1, 3), q(1, 3), q(1, 2)]);
+    assert!(!square_free_mod_prime(&double));
+    // The prime dividing a denominator: no image, so no certificate (not a wrong one).
+    let p61 = (1i64 << 61) - 1;
+    let unlucky = UPoly::from_coeffs(vec![q(1, p61), q(1, 1), q(1, 1)]);
+    assert!(!square_free_mod_prime(&unlucky));
+}
+
+#[test]
+fn both_isolation_paths_find_the_same_roots() {
+    // (x - 1/3)^2 (x^2 - 1/2) (x - 3/4)^3 (x - 2): roots 1/3, sqrt(1/2), 3/4 in [0, 1].
+    let base = UPoly::from_roots(&[q(1, 3), q(3, 4), q(2, 1)]) * poly(&[-1, 0, 2]);
+    let repeated = base.clone() * UPoly::from_roots(&[q(1, 3), q(3, 4), q(3, 4)]);
+    let (_, counter, via_sturm) = isolate_candidates(&repeated);
+    assert!(matches!(counter, Counter::Sturm(_)));
+    let (_, counter, via_descartes) = isolate_candidates(&base);
+    assert!(matches!(counter, Counter::Descartes));
+    assert_eq!(via_sturm.len(), 3);
+    assert_eq!(via_descartes.len(), 3);
+    for (a, b) in via_sturm.iter().zip(&via_descartes) {
+        // The same root: the intervals overlap.
+        assert!(a.lo <= b.hi && b.lo <= a.hi, "{a:?} vs {b:?}");
+    }
+    let root =
+        |ri: &RootInterval| poly(&[-1, 0, 2]).sign_at(&ri.lo) * poly(&[-1, 0, 2]).sign_at(&ri.hi);
+    assert_eq!(root(&via_sturm[1]), Sign::Negative);
+    // Counting one root on an interval, both ways.
+    let sqf = base.primitive_part();
+    let (lo, hi) = (q(2, 3), q(72, 100));
+    assert!(descartes_one(&sqf, &lo, &hi));
+    assert!(!descartes_one(&sqf, &q(0, 1), &q(1, 1)));
+}
