@@ -88,6 +88,8 @@ use crate::{ModP, Rational};
 use exactcheck_core::bernstein::Bernstein;
 use exactcheck_core::bezier::RationalBezierCurve;
 use exactcheck_core::{Field, Ring, Sign};
+use num_bigint::BigInt;
+use num_traits::{One, Zero};
 
 #[cfg(test)]
 mod tests;
@@ -495,37 +497,97 @@ fn descartes_one(p: &UPoly, lo: &Rational, hi: &Rational) -> bool {
     p.sign_at(lo) != Sign::Zero && p.sign_at(hi) != Sign::Zero && descartes_count(p, lo, hi) == 1
 }
 
-/// The distinct roots in `[0, 1]` of the square-free `sqf`, increasing: bisection driven by
-/// [`descartes_count`] (which reaches 0 or 1 on small enough intervals around simple roots, so
-/// the bisection ends), a bisection point that is a root recorded exactly.
+/// The distinct roots in `[0, 1]` of the square-free, primitive (integer) `sqf`, increasing:
+/// bisection driven by Descartes' rule (which reaches 0 or 1 on small enough intervals around
+/// simple roots, so the bisection ends), a bisection point that is a root recorded exactly.
+///
+/// The classical integer form of the method (Collins-Akritas): the interval
+/// `[c / 2^k, (c + 1) / 2^k]` carries an integer polynomial `q` with the roots of `sqf` there
+/// mapped to `(0, 1)`; its halves carry `2^n q(x / 2)` and that shifted by 1, and Descartes'
+/// bound is the sign variations of `(x + 1)^n q(1 / (x + 1))` (reversal, shift by 1). Only
+/// integer additions and shifts, no rational normalisation: several times faster than
+/// [`descartes_count`] on the high-degree candidate polynomials.
 fn unit_roots_descartes(sqf: &UPoly) -> Vec<RootInterval> {
+    let n = sqf.degree();
+    let p: Vec<BigInt> = sqf
+        .coeffs()
+        .iter()
+        .map(|c| {
+            assert!(
+                c.is_integer(),
+                "a primitive polynomial has integer coefficients"
+            );
+            c.numer()
+        })
+        .collect();
+    let dyadic = |c: &BigInt, k: u32| {
+        Rational::from(c.clone()) * Rational::from(BigInt::one() << k).recip().expect("2^k")
+    };
     let (zero, one) = (Rational::ZERO, Rational::ONE);
-    let is_root = |x: &Rational| sqf.sign_at(x) == Sign::Zero;
     let mut out: Vec<RootInterval> = [&zero, &one]
         .into_iter()
-        .filter(|x| is_root(x))
+        .filter(|x| sqf.sign_at(x) == Sign::Zero)
         .map(|x| RootInterval::exact(x.clone()))
         .collect();
-    let half = Rational::new(1, 2).expect("2 is not zero");
-    let mut stack = vec![(zero, one)];
-    while let Some((a, b)) = stack.pop() {
-        let count = descartes_count(sqf, &a, &b);
+    let mut stack = vec![(BigInt::zero(), 0u32, p)];
+    while let Some((c, k, q)) = stack.pop() {
+        let mut rev = q.clone();
+        rev.reverse();
+        taylor_shift_one(&mut rev);
+        let count = variations(&rev);
         if count == 0 {
             continue;
         }
-        if count == 1 && !is_root(&a) && !is_root(&b) {
-            out.push(RootInterval { lo: a, hi: b });
+        let ends_not_roots = !q[0].is_zero() && !q.iter().sum::<BigInt>().is_zero();
+        if count == 1 && ends_not_roots {
+            out.push(RootInterval {
+                lo: dyadic(&c, k),
+                hi: dyadic(&(&c + 1), k),
+            });
             continue;
         }
-        let m = a.add_ref(&b) * &half;
-        if is_root(&m) {
-            out.push(RootInterval::exact(m.clone()));
+        // 2^n q(x / 2), without the common power of two.
+        let mut left: Vec<BigInt> = q.iter().enumerate().map(|(i, a)| a << (n - i)).collect();
+        let twos = left
+            .iter()
+            .filter_map(BigInt::trailing_zeros)
+            .min()
+            .unwrap_or(0);
+        for a in &mut left {
+            *a >>= twos;
         }
-        stack.push((m.clone(), b));
-        stack.push((a, m));
+        let mut right = left.clone();
+        taylor_shift_one(&mut right);
+        let mid = BigInt::from(2) * &c + 1;
+        if right[0].is_zero() {
+            out.push(RootInterval::exact(dyadic(&mid, k + 1)));
+        }
+        stack.push((mid, k + 1, right));
+        stack.push((BigInt::from(2) * c, k + 1, left));
     }
     out.sort_by(|x, y| x.lo.cmp(&y.lo));
     out
+}
+
+/// `a(x) <- a(x + 1)` in place (coefficients from the constant term up).
+fn taylor_shift_one(a: &mut [BigInt]) {
+    let n = a.len();
+    for i in 0..n.saturating_sub(1) {
+        for j in (i..n - 1).rev() {
+            let next = a[j + 1].clone();
+            a[j] += next;
+        }
+    }
+}
+
+/// The sign variations of a coefficient sequence (zeros skipped).
+fn variations(a: &[BigInt]) -> usize {
+    let signs: Vec<bool> = a
+        .iter()
+        .filter(|c| !c.is_zero())
+        .map(|c| c.sign() == num_bigint::Sign::Minus)
+        .collect();
+    signs.windows(2).filter(|w| w[0] != w[1]).count()
 }
 
 /// The distinct roots in `[0, 1]` of the square-free `sqf` with the Sturm sequence `sturm`,

@@ -282,3 +282,26 @@ fn both_isolation_paths_find_the_same_roots() {
     assert!(descartes_one(&sqf, &lo, &hi));
     assert!(!descartes_one(&sqf, &q(0, 1), &q(1, 1)));
 }
+
+#[test]
+fn integer_descartes_isolation_agrees_with_the_rational_counts() {
+    let cases = [
+        UPoly::from_roots(&[q(1, 3), q(3, 4), q(2, 1), q(0, 1), q(1, 1), q(1, 2)])
+            * poly(&[-1, 0, 2]),
+        UPoly::from_roots(&[q(1, 1000), q(2, 1000), q(-1, 5)])
+            * poly(&[-1, 0, 0, 3])
+            * poly(&[1, 0, 1]),
+    ];
+    for p in cases {
+        let p = p.primitive_part();
+        let roots = unit_roots_descartes(&p);
+        let expected = p.unit_roots().expect("not zero");
+        assert_eq!(roots.len(), expected.len(), "{p:?}");
+        for (a, b) in roots.iter().zip(&expected) {
+            assert!(a.lo <= b.hi && b.lo <= a.hi, "{a:?} vs {b:?}");
+            if !a.is_exact() {
+                assert!(descartes_one(&p, &a.lo, &a.hi), "{a:?}");
+            }
+        }
+    }
+}
