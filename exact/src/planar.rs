@@ -89,6 +89,7 @@ use exactcheck_core::bernstein::Bernstein;
 use exactcheck_core::bezier::RationalBezierCurve;
 use exactcheck_core::{Field, Ring, Sign};
 use num_bigint::BigInt;
+use num_integer::Integer;
 use num_traits::{One, Zero};
 
 #[cfg(test)]
@@ -757,6 +758,31 @@ impl Dense {
         horner(&self.at_t(t0), s0)
     }
 
+    /// `(c, c p)` with `c > 0` the least common multiple of the denominators, so that `c p` has
+    /// integer coefficients (returned as integers).
+    fn to_integer(&self) -> (Rational, Vec<Vec<BigInt>>) {
+        let lcm = self
+            .c
+            .iter()
+            .flatten()
+            .fold(BigInt::one(), |acc, a| acc.lcm(&a.denom()));
+        let c = Rational::from(lcm);
+        let rows = self
+            .c
+            .iter()
+            .map(|row| {
+                row.iter()
+                    .map(|a| {
+                        let v = a.mul_ref(&c);
+                        debug_assert!(v.is_integer());
+                        v.numer()
+                    })
+                    .collect()
+            })
+            .collect();
+        (c, rows)
+    }
+
     /// `(dp/ds, dp/dt)` at `(s0, t0)`.
     fn gradient(&self, s0: &Rational, t0: &Rational) -> [Rational; 2] {
         let in_s = self.at_t(t0);
@@ -850,30 +876,44 @@ fn edge_sign(p: &UPoly, lo: &Rational, hi: &Rational) -> Option<Sign> {
 
 // ------------------------------------------------------------------------------ resultant
 
-/// `Res_s(f, g)` as a polynomial in `t`, by evaluation of the Sylvester determinant at
-/// `t = 0, ..., N` and Newton interpolation (module documentation).
+/// `Res_s(f, g)` as a polynomial in `t`, by evaluation of the Sylvester determinant at the
+/// integers `t` in `[-N/2, N - N/2]` (centred, to keep the values small) and Newton
+/// interpolation (module documentation). The polynomials are scaled to integer coefficients
+/// first (`c_f f`, `c_g g`), so every determinant is of an integer matrix and is computed
+/// fraction-free (Bareiss); the result is divided by `c_f^n c_g^m` at the end.
 fn resultant_s(f: &Dense, g: &Dense) -> UPoly {
     if f.is_zero() || g.is_zero() {
         return UPoly::zero();
     }
     let (m, n) = (f.deg_s(), g.deg_s());
     let bound = n * f.deg_t() + m * g.deg_t();
-    let nodes: Vec<Rational> = (0..=bound)
-        .map(|k| Rational::from_integer(k as i64))
-        .collect();
+    let (cf, fi) = f.to_integer();
+    let (cg, gi) = g.to_integer();
+    let low = -((bound / 2) as i64);
+    let nodes: Vec<BigInt> = (0..=bound as i64).map(|k| BigInt::from(low + k)).collect();
     let values: Vec<Rational> = nodes
         .iter()
-        .map(|t0| sylvester_det(&f.at_t(t0), &g.at_t(t0)))
+        .map(|t0| {
+            let at = |p: &[Vec<BigInt>]| -> Vec<BigInt> {
+                p.iter()
+                    .map(|row| row.iter().rev().fold(BigInt::zero(), |acc, a| acc * t0 + a))
+                    .collect()
+            };
+            Rational::from(sylvester_det(&at(&fi), &at(&gi)))
+        })
         .collect();
-    newton_interpolate(&nodes, values)
+    let nodes: Vec<Rational> = nodes.into_iter().map(Rational::from).collect();
+    let scale = (0..n).fold(Rational::ONE, |acc, _| acc * &cf)
+        * (0..m).fold(Rational::ONE, |acc, _| acc * &cg);
+    newton_interpolate(&nodes, values).scale(&scale.recip().expect("scales are not zero"))
 }
 
 /// The determinant of the Sylvester matrix of `sum f_i s^i` and `sum g_i s^i` with the formal
-/// degrees `f.len() - 1`, `g.len() - 1`.
-fn sylvester_det(f: &[Rational], g: &[Rational]) -> Rational {
+/// degrees `f.len() - 1`, `g.len() - 1` (integer entries).
+fn sylvester_det(f: &[BigInt], g: &[BigInt]) -> BigInt {
     let (m, n) = (f.len() - 1, g.len() - 1);
     let size = m + n;
-    let mut a = vec![vec![Rational::ZERO; size]; size];
+    let mut a = vec![vec![BigInt::zero(); size]; size];
     for r in 0..n {
         for (k, c) in f.iter().rev().enumerate() {
             a[r][r + k] = c.clone();
@@ -884,36 +924,43 @@ fn sylvester_det(f: &[Rational], g: &[Rational]) -> Rational {
             a[n + r][r + k] = c.clone();
         }
     }
-    determinant(a)
+    bareiss(a)
 }
 
-/// The determinant by Gaussian elimination over Q.
-fn determinant(mut a: Vec<Vec<Rational>>) -> Rational {
+/// The determinant of an integer matrix by Bareiss' fraction-free elimination: after step `k`
+/// every entry is a `(k+1) x (k+1)` minor, so the division by the previous pivot is exact.
+fn bareiss(mut a: Vec<Vec<BigInt>>) -> BigInt {
     let size = a.len();
-    let mut det = Rational::ONE;
-    for col in 0..size {
-        let Some(p) = (col..size).find(|&r| !a[r][col].is_zero()) else {
-            return Rational::ZERO;
-        };
-        if p != col {
-            a.swap(p, col);
-            det = -det;
-        }
-        let pivot = a[col][col].clone();
-        det *= &pivot;
-        let inv = pivot.inv().expect("the pivot is not zero");
-        for r in col + 1..size {
-            if a[r][col].is_zero() {
-                continue;
-            }
-            let factor = a[r][col].mul_ref(&inv);
-            let (top, bottom) = a.split_at_mut(r);
-            for (x, y) in bottom[0][col..].iter_mut().zip(&top[col][col..]) {
-                *x -= &factor.mul_ref(y);
-            }
-        }
+    if size == 0 {
+        return BigInt::one();
     }
-    det
+    let mut negate = false;
+    let mut prev = BigInt::one();
+    for k in 0..size - 1 {
+        if a[k][k].is_zero() {
+            let Some(p) = (k + 1..size).find(|&r| !a[r][k].is_zero()) else {
+                return BigInt::zero();
+            };
+            a.swap(p, k);
+            negate = !negate;
+        }
+        let (top, bottom) = a.split_at_mut(k + 1);
+        let pivot_row = &top[k];
+        for row in bottom.iter_mut() {
+            for j in k + 1..size {
+                let v = &row[j] * &pivot_row[k] - &row[k] * &pivot_row[j];
+                row[j] = v / &prev;
+            }
+            row[k] = BigInt::zero();
+        }
+        prev = pivot_row[k].clone();
+    }
+    let det = a[size - 1][size - 1].clone();
+    if negate {
+        -det
+    } else {
+        det
+    }
 }
 
 /// The polynomial of degree `< nodes.len()` through `(nodes[k], values[k])`.

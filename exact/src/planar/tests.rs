@@ -305,3 +305,20 @@ fn integer_descartes_isolation_agrees_with_the_rational_counts() {
         }
     }
 }
+
+#[test]
+fn bareiss_determinants() {
+    let m = |rows: &[&[i64]]| -> Vec<Vec<BigInt>> {
+        rows.iter()
+            .map(|r| r.iter().map(|&v| BigInt::from(v)).collect())
+            .collect()
+    };
+    // A zero first pivot (one swap); by cofactors along the first row: -2 (1 - 6) + (1 - 2) = 9.
+    assert_eq!(
+        bareiss(m(&[&[0, 2, 1], &[1, 1, 3], &[2, 1, 1]])),
+        BigInt::from(9)
+    );
+    assert_eq!(bareiss(m(&[&[2, 4], &[1, 2]])), BigInt::zero());
+    assert_eq!(bareiss(m(&[&[5]])), BigInt::from(5));
+    assert_eq!(bareiss(Vec::new()), BigInt::one());
+}
