@@ -182,10 +182,10 @@ pub enum PlanarError {
          {bisections} bisections (tangential self-contact or singular point?)"
     )]
     Undecided {
-        /// The last interval of `s`.
-        s: RootInterval,
+        /// The last interval of `s` (boxed to keep the error small).
+        s: Box<RootInterval>,
         /// The last interval of `t`.
-        t: RootInterval,
+        t: Box<RootInterval>,
         /// The bisections spent.
         bisections: u32,
     },
@@ -1032,8 +1032,8 @@ impl Search {
             }
             if bisections == budget.max_bisections {
                 return Err(PlanarError::Undecided {
-                    s: si.clone(),
-                    t: tj.clone(),
+                    s: Box::new(si.clone()),
+                    t: Box::new(tj.clone()),
                     bisections,
                 });
             }
