@@ -23,9 +23,10 @@
 //! `R(t) = Res_s(F, G)`, the Sylvester resultant with respect to `s` (formal degrees), vanishes at
 //! every `t` for which `F(., t)` and `G(., t)` have a common root, so the `t` of every solution is
 //! a root of `R`, and by the symmetry of `F` and `G` so is its `s`. `R` is computed exactly by
-//! evaluation and interpolation: the Sylvester determinant at `t = 0, 1, ..., N` (Gaussian
-//! elimination over Q), `N` the degree bound `deg_s(G) deg_t(F) + deg_s(F) deg_t(G)` of the
-//! determinant, then Newton interpolation. If `R` vanishes identically, `F` and `G` share a
+//! evaluation and interpolation: `F` and `G` scaled to integer coefficients, the Sylvester
+//! determinant at the `N + 1` integers `t` centred on 0 (Bareiss' fraction-free elimination),
+//! `N` the degree bound `deg_s(G) deg_t(F) + deg_s(F) deg_t(G)` of the determinant, then Newton
+//! interpolation and the scale divided out. If `R` vanishes identically, `F` and `G` share a
 //! factor of positive degree in `s` (the curve lies on a line, or the parametrization is not
 //! proper, or it retraces itself): the solution set may be a curve, and the error
 //! [`PlanarError::CommonComponent`] says so rather than deciding.
@@ -34,7 +35,7 @@
 //! `R` is far from square-free: it is divisible by high powers of `w` (points at infinity) and
 //! of `S = gcd(x' w - x w', y' w - y w')` (stationary points). These are divided out and `S` put
 //! back once (`candidate_polynomial`), which leaves the roots in `[0, 1]` unchanged and cuts the
-//! degree about in half before the expensive step, the Sturm sequence (for the offsets of
+//! degree about in half before the expensive step, the root isolation (for the offsets of
 //! quintic PH curves, 88 to 44). The distinct roots `rho_1 < ... < rho_m` in `[0, 1]` are then
 //! isolated by bisection of `[0, 1]`, each by a rational interval `I_k` (open, ends not roots)
 //! or exactly when a bisection point hits it. The bisection is driven by Descartes' rule of
@@ -57,16 +58,17 @@
 //!     strict sign, so that polynomial has no zero in the box;
 //!   - *certification* (Poincare-Miranda): with `c` the midpoints and `d` the widths of `I_i`,
 //!     `I_j`, take the box `P = [c_i - d_i, c_i + d_i] x [c_j - d_j, c_j + d_j]`, which contains
-//!     `(rho_i, rho_j)` at distance at least `d/2` from its sides; check by Sturm counts that
-//!     each side of `P` holds no root of `R` but `rho_i` (resp. `rho_j`) and that its ends are
-//!     not roots (`P` may reach outside `[0, 1]`, so the count is of the candidate polynomial
-//!     and of `w`, whose roots are the roots of `R`). Precondition with `A = J^{-1}`, `J` the exact Jacobian of `(F, G)` at the
-//!     centre: `(H1, H2) = A (F, G)` has the same zeros and is close to the identity map around
-//!     the root. If `H1` has one strict sign on the left side of `P` and the opposite strict sign
+//!     `(rho_i, rho_j)` at distance at least `d/2` from its sides; check by root counts
+//!     (Descartes or Sturm, as for the isolation) that each side of `P` holds no root of `R`
+//!     but `rho_i` (resp. `rho_j`) and that its ends are not roots (`P` may reach outside
+//!     `[0, 1]`, so the count is of the candidate polynomial and of `w`, whose roots together
+//!     are those of `R`). Precondition with `A = J^{-1}`, `J` the exact Jacobian of `(F, G)` at
+//!     the centre: `(H1, H2) = A (F, G)` has the same zeros and is close to the identity map
+//!     around the root. If `H1` has one strict sign on the left side of `P` and the opposite strict sign
 //!     on the right side, and `H2` likewise on the bottom and top sides (each side's restriction
 //!     is a univariate polynomial whose Bernstein coefficients on the side are checked), the
 //!     Poincare-Miranda theorem gives a zero of `(H1, H2)`, hence of `(F, G)`, in `P`. By the
-//!     Sturm counts that zero is `(rho_i, rho_j)`: the self-intersection exists, it is the only
+//!     root counts that zero is `(rho_i, rho_j)`: the self-intersection exists, it is the only
 //!     solution in `P` (uniqueness per box), and `rho_i != rho_j`.
 //!
 //! Exclusion converges for pairs that are not solutions (the Bernstein coefficients on a box
@@ -75,6 +77,14 @@
 //! `(x(s) w(t) - x(t) w(s), y(s) w(t) - y(t) w(s))`, non-singular exactly when the tangents
 //! `C'(s)` and `C'(t)` are not parallel. A tangential self-contact with irrational parameters is
 //! never certified: the budget runs out and [`PlanarError::Undecided`] names the box.
+//!
+//! # Cost
+//! Measured in release builds on this machine (shared): the offsets of Chiang's cubic example,
+//! a few milliseconds each; offsets of random quintic PH curves (degree 9, `deg R` about 88),
+//! 0.1 to 0.3 s; of septic ones (degree 13, `deg R` about 204, candidates of degree about 108),
+//! 2 to 3 s typically and 29 s for one with 18 candidate parameters in `[0, 1]` (153 pairs).
+//! The time goes into the resultant (evaluation at about 290 points of 24 x 24 determinants) and
+//! the isolation of the candidates.
 //!
 //! # Why a dense bivariate type here
 //! `F` and `G` are dense (every `s^i t^j` up to the degree occurs), the procedure needs their
@@ -131,7 +141,7 @@ pub struct Crossing {
     /// An isolating interval of `s`, a root of [`SelfIntersections::resultant`] (exact when
     /// `lo == hi`).
     pub s_interval: RootInterval,
-    /// An isolating interval of `t`, likewise; `s_interval.hi < t_interval.lo` or both exact.
+    /// An isolating interval of `t`, likewise, disjoint from `s_interval` and above it.
     pub t_interval: RootInterval,
     /// How the existence was proved.
     pub certificate: Certificate,
