@@ -15,6 +15,7 @@ pub mod expr;
 pub mod gcd;
 pub mod modp;
 pub mod plain;
+pub mod planar;
 pub mod poly;
 pub mod prove;
 pub mod radical;
