@@ -164,14 +164,20 @@ fn the_radius_and_the_cusps_are_exact() {
     assert!(o
         .evidence
         .contains("Corrected: the smallest radius is 101/8"));
-    // Self-intersection is reported as not decided, the cusps as decided.
+    // Cusps and self-intersections, both decided exactly: none at 3 and 63/5, one crossing at 15.
     let e = self_intersection_evidence(&q("63/5")).unwrap();
     assert!(
-        e.starts_with("r = 63/5: no cusp (decided exactly); self-intersection: not decided here"),
+        e.starts_with("r = 63/5: no cusp and no self-intersection (certified"),
         "{e}"
     );
     let e = self_intersection_evidence(&q("3")).unwrap();
-    assert!(e.contains("no cusp"), "{e}");
+    assert!(e.contains("no cusp and no self-intersection"), "{e}");
+    assert!(o.evidence.contains("r = 15: 2 cusps"), "{}", o.evidence);
+    assert!(
+        o.evidence.contains("1 self-intersection: C(s) = C(t)"),
+        "{}",
+        o.evidence
+    );
 }
 
 #[test]

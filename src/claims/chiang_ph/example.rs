@@ -33,6 +33,7 @@ use crate::claims::{Outcome, Verdict};
 use exactcheck_core::ph::{Cusp, PhCurve, RadiusBound, Side};
 use exactcheck_core::roots::{common_unit_roots, gcd, refine, IsolatedRoot};
 use exactcheck_core::{Bernstein, OrderedField, Ring, Vec3};
+use exactcheck_exact::planar::{self_intersections_xy, Budget};
 use exactcheck_exact::Rational;
 
 /// The printed control points `p1, p2, p3` (seed 004: "p1 = (33, 20/3, 0), p2 = (79/3, 119/3,
@@ -365,19 +366,70 @@ fn cusps_from_offset(
     Ok((roots, g == c))
 }
 
-/// What is decided exactly about the example's `r`-offset toward "self-intersection": the cusp
-/// count with multiplicities. Self-intersection itself is **not** decided here (no exact
-/// self-intersection finder for rational planar curves in this module); the text says so.
+/// The self-intersections of the example's `r`-offset, decided exactly by
+/// [`exactcheck_exact::planar::self_intersections_xy`] (resultant of the divided differences,
+/// every candidate pair excluded or certified): the number of crossings and a sentence with the
+/// cusps, the crossings (parameter intervals, approximate point, certificate) and what was
+/// excluded.
 ///
 /// # Errors
-/// When the cusps cannot be decided (the base curve singular in `[0, 1]`).
-pub fn self_intersection_evidence(r: &Rational) -> Result<String, String> {
+/// When the cusps or the crossings cannot be decided (base curve singular in `[0, 1]`, a
+/// tangential self-contact the finder cannot certify within its budget: named, never guessed).
+pub fn self_intersections_of(r: &Rational) -> Result<(usize, String), String> {
     let curve = example_curve();
     let cusps = cusps_of(&curve, r)?;
-    Ok(format!(
-        "r = {r}: {} (decided exactly); self-intersection: not decided here (it needs an exact self-intersection finder for rational planar curves; the cusp count does not decide it)",
-        cusps_text(&cusps)
+    let found = self_intersections_xy(&curve.offset(r), Budget::default())
+        .map_err(|e| format!("r = {r}: self-intersection not decided: {e}"))?;
+    let n = found.crossings.len();
+    let crossings = if n == 0 {
+        if found.excluded_pairs == 0 {
+            "no self-intersection (certified: the resultant of the divided differences leaves no candidate pair of parameters in [0, 1])".to_string()
+        } else {
+            format!(
+                "no self-intersection (certified: all {} candidate parameter pairs of the resultant excluded exactly)",
+                found.excluded_pairs
+            )
+        }
+    } else {
+        let list: Vec<String> = found
+            .crossings
+            .iter()
+            .map(|c| {
+                format!(
+                    "C(s) = C(t) for s in [{}, {}], t in [{}, {}] (s ~ {:.6}, t ~ {:.6}, at ~ ({:.4}, {:.4}); certificate: {:?})",
+                    c.s_interval.lo,
+                    c.s_interval.hi,
+                    c.t_interval.lo,
+                    c.t_interval.hi,
+                    c.s,
+                    c.t,
+                    c.point[0],
+                    c.point[1],
+                    c.certificate
+                )
+            })
+            .collect();
+        format!(
+            "{n} self-intersection{}: {}",
+            if n == 1 { "" } else { "s" },
+            list.join("; ")
+        )
+    };
+    Ok((
+        n,
+        format!(
+            "r = {r}: {} and {crossings} (both decided exactly)",
+            cusps_text(&cusps)
+        ),
     ))
+}
+
+/// [`self_intersections_of`]'s sentence.
+///
+/// # Errors
+/// As [`self_intersections_of`].
+pub fn self_intersection_evidence(r: &Rational) -> Result<String, String> {
+    self_intersections_of(r).map(|(_, text)| text)
 }
 
 /// The claim `chiang.ph_radius`.
@@ -503,14 +555,27 @@ pub(super) fn radius_check() -> Result<Outcome, String> {
             ));
         }
     }
-    // The self-intersection part goes through `self_intersection_evidence` (the one place
-    // where a self-intersection finder is to be wired in).
+    // Self-intersections, decided exactly (exact::planar): none below the minimum radius, at
+    // least one crossing at r = 15.
+    let (below, below_text) = self_intersections_of(&q(3, 1))?;
+    let (above, above_text) = self_intersections_of(&q(15, 1))?;
+    let (at_printed_crossings, at_printed_text) = self_intersections_of(&printed)?;
+    if below != 0 {
+        failures.push(format!(
+            "\"r < {PRINTED_MIN_RADIUS}: no self-intersection\" fails: {below_text}"
+        ));
+    }
+    if above == 0 {
+        failures.push(format!(
+            "\"r > {PRINTED_MIN_RADIUS}: self-intersection\" fails: {above_text}"
+        ));
+    }
     let parts = format!(
         "As printed: \"smallest radius 12.6\" — {}; \"r < 12.6: no self-intersection\" — {} (and no r below the exact minimum has a cusp); \"r = 12.6: one cusp\" — {}; \"r > 12.6: self-intersection and two cusps\" — {}{}",
         if rounded { "correct as a rounding" } else { "wrong" },
-        self_intersection_evidence(&q(3, 1))?,
-        if one_cusp { "holds".into() } else { format!("fails ({})", cusps_text(&at_printed)) },
-        self_intersection_evidence(&q(15, 1))?,
+        below_text,
+        if one_cusp { "holds".into() } else { format!("fails ({at_printed_text}; {at_printed_crossings} crossing(s))") },
+        above_text,
         if between != rho {
             format!("; but at r = {between} (> 12.6): {}", cusps_text(&cusps_at(&between)))
         } else {
@@ -518,7 +583,7 @@ pub(super) fn radius_check() -> Result<Outcome, String> {
         }
     );
     let corrected = format!(
-        "Corrected: the smallest radius is {rho} = {} at {}; the r-offset has no cusp for r < {rho}, one double cusp (at {}) for r = {rho}, and two simple cusps for r > {rho} (self-intersection not decided here).",
+        "Corrected: the smallest radius is {rho} = {} at {}; the r-offset has no cusp for r < {rho}, one double cusp (at {}) for r = {rho}, and two simple cusps for r > {rho}; self-intersections decided exactly at r = 3 ({below}), r = {printed} ({at_printed_crossings}) and r = 15 ({above}).",
         decimal(&exact, 6),
         attained.join(", "),
         attained.join(", ")
@@ -787,13 +852,16 @@ mod tests {
     }
 
     #[test]
-    fn self_intersection_is_reported_as_not_decided() {
-        let e = self_intersection_evidence(&q(15, 1)).unwrap();
+    fn self_intersections_are_decided_exactly() {
+        let (n, e) = self_intersections_of(&q(15, 1)).unwrap();
+        assert_eq!(n, 1, "{e}");
         assert!(
-            e.contains("2 cusps") && e.contains("not decided here"),
+            e.contains("2 cusps") && e.contains("1 self-intersection: C(s) = C(t)"),
             "{e}"
         );
-        let e = self_intersection_evidence(&q(101, 8)).unwrap();
+        let (n, e) = self_intersections_of(&q(101, 8)).unwrap();
+        assert_eq!(n, 0, "{e}");
         assert!(e.contains("1 cusp: t = 1/2 (multiplicity 2)"), "{e}");
+        assert!(e.contains("no self-intersection (certified"), "{e}");
     }
 }

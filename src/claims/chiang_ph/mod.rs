@@ -22,17 +22,17 @@
 //! mathematics is `exactcheck_core::ph`, the proofs are the engine's, the decimal judgements are
 //! `crate::claims::printed`.
 //!
-//! Self-intersections of the offsets are *not* decided here: [`self_intersection_evidence`]
-//! reports what is decided exactly (the cusps) and says so; an exact self-intersection finder
-//! for rational planar curves is built elsewhere and is to be wired in there.
+//! Self-intersections of the offsets are decided exactly by `exactcheck_exact::planar` (the
+//! resultant of the divided differences, each candidate pair excluded by tensor-Bernstein signs
+//! or certified by Poincare-Miranda): [`self_intersections_of`].
 
 mod example;
 mod offset;
 
 pub use example::{
     ph_normals_with, ph_offsets_markdown, ph_offsets_rows, ph_points_with,
-    self_intersection_evidence, weights_markdown, OffsetRow, PRINTED_MIN_RADIUS, PRINTED_NORMALS,
-    PRINTED_OFFSETS, PRINTED_POINTS, PRINTED_W0,
+    self_intersection_evidence, self_intersections_of, weights_markdown, OffsetRow,
+    PRINTED_MIN_RADIUS, PRINTED_NORMALS, PRINTED_OFFSETS, PRINTED_POINTS, PRINTED_W0,
 };
 pub use offset::{offset_proof, BaseForm, DEGREE_RANDOM_MAX_K, DEGREE_SYMBOLIC_MAX_K};
 
