@@ -14,6 +14,7 @@
 
 pub mod cylinder_sphere;
 pub mod number;
+pub mod ph_offset;
 pub mod plane_plane;
 pub mod ruled_line;
 pub mod ruled_plane;
@@ -114,7 +115,7 @@ pub fn kinds() -> [KindEntry; 7] {
         answered::<plane_plane::PlanePlaneKind>(),
         answered::<cylinder_sphere::CylinderSphereKind>(),
         recognised("conic"),
-        recognised("ph_offset"),
+        answered::<ph_offset::PhOffset>(),
     ]
 }
 
