@@ -195,8 +195,7 @@ fn problem<N, T: SectionScalar>(
     }
     let Coords([x, y]) = &input.start;
     let start = Vec3::new(num(x), num(y), T::zero());
-    let curve = PhCurve::new(u, v, start)
-        .map_err(|e| Error::Input(format!("u, v: {e}")))?;
+    let curve = PhCurve::new(u, v, start).map_err(|e| Error::Input(format!("u, v: {e}")))?;
     let width = match &input.precision {
         Some(p) => {
             let w = num(p);
@@ -265,11 +264,7 @@ fn signed<T: Ring>(side: Side, m: &T) -> T {
 }
 
 /// The parameters where `sigma^2 - 2 r w` vanishes, rational ones exact, the others refined.
-fn cusp_zeros<T: SectionScalar>(
-    curve: &PhCurve<T>,
-    r: &T,
-    width: &T,
-) -> Vec<IsolatedRoot<T>> {
+fn cusp_zeros<T: SectionScalar>(curve: &PhCurve<T>, r: &T, width: &T) -> Vec<IsolatedRoot<T>> {
     unit_zeros(&curve.cusp_polynomial(r), width)
 }
 
@@ -430,7 +425,8 @@ fn radius_tolerance<T: SectionScalar>(curve: &PhCurve<T>, width: &T) -> T {
             }
         }
     }
-    let rel = scale * T::from_rational(&Rational::new(1, 1_000_000_000).expect("a non-zero denominator"));
+    let rel =
+        scale * T::from_rational(&Rational::new(1, 1_000_000_000).expect("a non-zero denominator"));
     if rel > *width {
         rel
     } else {
@@ -581,6 +577,8 @@ struct OffsetOut<V> {
     weights: Vec<V>,
     /// The control points `[x, y, r]` (`null` where the weight is 0).
     points: Vec<Option<[V; 3]>>,
+    /// `w_k` times the control points: always defined (a direction where `w_k = 0`).
+    weighted_points: Vec<[V; 3]>,
     /// `null` on a singular base.
     cusps: Option<Vec<CuspOut<V>>>,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -625,11 +623,9 @@ fn radius_out<T: SectionScalar, V>(r: &Radius<T>, v: &impl Fn(&T) -> V) -> Radiu
     let two = T::from_i64(2);
     let (exact, interval, approx) = match &r.value {
         RadiusBound::Exact(m) => (Some(v(m)), None, m.approx()),
-        RadiusBound::Within(lo, hi) => (
-            None,
-            Some([v(lo), v(hi)]),
-            (lo.add_ref(hi) / two).approx(),
-        ),
+        RadiusBound::Within(lo, hi) => {
+            (None, Some([v(lo), v(hi)]), (lo.add_ref(hi) / two).approx())
+        }
     };
     RadiusOut {
         exact,
@@ -676,6 +672,12 @@ fn offset_out<T: SectionScalar, V>(o: &OffsetData<T>, v: &impl Fn(&T) -> V) -> O
         points: points
             .iter()
             .map(|p| p.as_ref().map(|p| three(p, v)))
+            .collect(),
+        weighted_points: o
+            .curve
+            .control()
+            .iter()
+            .map(|h| [v(&h.0[1]), v(&h.0[2]), v(&h.0[3])])
             .collect(),
         cusps,
         approx: T::EXACT.then(|| OffsetApprox {
@@ -793,7 +795,9 @@ fn float_answer(text: &str) -> Result<Answer<f64>, Error> {
     let input: Input<FloatNumber> = parse(text)?;
     let p = problem(&input, |x| x.0)?;
     let overflow = || {
-        Error::Input("the f64 computation overflows or underflows for these numbers; use exact mode".into())
+        Error::Input(
+            "the f64 computation overflows or underflows for these numbers; use exact mode".into(),
+        )
     };
     // The core code expects the exact facts sigma != 0 and sigma^2 - 2 r w != 0 as polynomials;
     // in f64 the products can underflow to zero or overflow.
@@ -811,10 +815,13 @@ fn float_answer(text: &str) -> Result<Answer<f64>, Error> {
     let finite = |list: &[OffsetOut<f64>]| {
         list.iter().all(|o| {
             o.weights.iter().all(|x| x.is_finite())
-                && o.points.iter().flatten().flatten().all(|x| x.is_finite())
+                && o.weighted_points.iter().flatten().all(|x| x.is_finite())
         })
     };
-    let ok = answer.single.iter().all(|o| finite(std::slice::from_ref(o)))
+    let ok = answer
+        .single
+        .iter()
+        .all(|o| finite(std::slice::from_ref(o)))
         && answer.offsets.as_deref().is_none_or(finite)
         && answer.base.iter().flatten().all(|x| x.is_finite());
     if !ok {
@@ -866,21 +873,23 @@ mod tests {
     }
 
     #[test]
-    fn a_rational_critical_point_off_the_dyadic_grid_is_made_exact() {
-        // u = 1 - 3t, v = 1: sigma = (1 - 3t)^2 + 1, w = 3, rho = sigma^2 / 6 is smallest where
-        // sigma' = 0, at t = 1/3, which dyadic subdivision only encloses.
+    fn a_rational_critical_point_the_subdivision_only_encloses_is_made_exact() {
+        // Found by search: core's min_radius encloses the right side's minimum (its critical
+        // point 1/4 is only enclosed by the subdivision of 2 sigma' w - sigma w'); the rational
+        // zeros of that polynomial make it exact, 9/32, proved by is_min_radius.
         let c = PhCurve::new(
-            Bernstein::new(vec![q("1"), q("-2")]),
-            Bernstein::new(vec![q("1"), q("1")]),
+            Bernstein::new(vec![q("-1/2"), q("-1"), q("-3/2")]),
+            Bernstein::new(vec![q("-3/2"), q("1/2"), q("-3/2")]),
             Vec3::new(q("0"), q("0"), q("0")),
         )
         .unwrap();
         let tol = q("1/1024");
-        let MinRadius { value, .. } = c.min_radius(Side::Left, &tol).unwrap().unwrap();
+        let MinRadius { value, .. } = c.min_radius(Side::Right, &tol).unwrap().unwrap();
         assert!(matches!(value, RadiusBound::Within(..)), "{value:?}");
-        let r = side_radius(&c, Side::Left, &tol, &tol).unwrap();
-        assert_eq!(r.value, RadiusBound::Exact(q("1/6")));
-        assert_eq!(r.at, vec![IsolatedRoot::Exact(q("1/3"))]);
-        assert!(side_radius(&c, Side::Right, &tol, &tol).is_none());
+        let r = side_radius(&c, Side::Right, &tol, &tol).unwrap();
+        assert_eq!(r.value, RadiusBound::Exact(q("9/32")));
+        assert_eq!(r.at, vec![IsolatedRoot::Exact(q("1/4"))]);
+        assert_eq!(r.sides, Sides::Right);
+        assert!(c.is_min_radius(&q("9/32"), Side::Right).unwrap());
     }
 }
