@@ -29,6 +29,7 @@ use std::process::ExitCode;
 
 pub mod chiang;
 mod figure;
+pub mod ph;
 mod scene;
 mod svg;
 #[cfg(test)]
@@ -47,8 +48,9 @@ use view3d::view_3d;
 #[derive(Debug, Args)]
 pub struct PlotArgs {
     /// `spaeth` (with `--example N`), `chiang` (with `--example 4`: Chiang's ruled surface, the
-    /// plane z = 0, the exact section curve and its control polygon, one 3D figure) or a
-    /// `cylinder_sphere` problem file (the format of `solve`).
+    /// plane z = 0, the exact section curve and its control polygon, one 3D figure), `ph`
+    /// (Chiang's PH curve with its offsets at r = 3, 12.6, 15 and their cusps) or a
+    /// `cylinder_sphere` or `ph_offset` problem file (the format of `solve`).
     pub source: String,
     /// Which example to draw: Spaeth's 1, 2 or 3 with `spaeth`; 4 with `chiang`.
     #[arg(long, value_name = "N")]
@@ -88,6 +90,14 @@ pub fn run(args: &PlotArgs) -> Result<ExitCode, Error> {
             "Chiang Example 4 (ruled surface, plane z = 0, exact section curve, control polygon)",
         );
     }
+    if args.source == "ph" {
+        let svg = ph::figure(args.example)?;
+        return emit(
+            &args.output,
+            &svg,
+            "Chiang's PH curve with its offsets at r = 3, 12.6, 15 and their cusps",
+        );
+    }
     let scene = match (args.source.as_str(), args.example) {
         ("spaeth", Some(n)) => spaeth_scene(n)?,
         ("spaeth", None) => {
@@ -99,7 +109,10 @@ pub fn run(args: &PlotArgs) -> Result<ExitCode, Error> {
                 args.source
             )))
         }
-        (path, None) => file_scene(path)?,
+        (path, None) => match ph::file_figure(path)? {
+            Some((svg, what)) => return emit(&args.output, &svg, &what),
+            None => file_scene(path)?,
+        },
     };
     let (svg, what) = match args.view {
         View::Tu => (tu_diagram(&scene), "t-u diagram"),

@@ -767,21 +767,25 @@ fn exact_answer<T: SectionScalar + std::fmt::Display>(
     Ok(render(&compute(p), "exact", ToString::to_string))
 }
 
-fn exact(text: &str) -> Result<Answer<String>, Error> {
-    let input: Input<ExactNumber> = parse(text)?;
+/// Every number of the problem.
+fn numbers(input: &Input<ExactNumber>) -> impl Iterator<Item = &ExactNumber> {
     let radii: Vec<&ExactNumber> = match &input.r {
         Radii::One(r) => vec![r],
         Radii::Many(rs) => rs.iter().collect(),
     };
-    let mut all = input
+    input
         .u
         .iter()
         .chain(&input.v)
         .chain(input.start.0.iter())
         .chain(radii)
-        .chain(input.precision.iter());
+        .chain(input.precision.iter())
+}
+
+fn exact(text: &str) -> Result<Answer<String>, Error> {
+    let input: Input<ExactNumber> = parse(text)?;
     // Rational input runs over the (faster) rationals; radicals over the radical field.
-    if all.all(|x| x.0.is_rational()) {
+    if numbers(&input).all(|x| x.0.is_rational()) {
         exact_answer(&input, |x| {
             x.to_rational()
                 .expect("is_rational was checked for every number")
@@ -828,6 +832,27 @@ fn float_answer(text: &str) -> Result<Answer<f64>, Error> {
         return Err(overflow());
     }
     Ok(answer)
+}
+
+/// A `ph_offset` problem with rational numbers, read and checked as `solve` reads it: the curve
+/// and the distances (for `plot FILE.json`).
+///
+/// # Errors
+/// What `solve` refuses, and [`Error::Input`] for irrational numbers (the figure is computed
+/// over the rationals).
+pub fn rational_problem(text: &str) -> Result<(PhCurve<Rational>, Vec<Rational>), Error> {
+    let input: Input<ExactNumber> = parse(text)?;
+    if let Some(x) = numbers(&input).find(|x| !x.0.is_rational()) {
+        return Err(Error::Input(format!(
+            "{}: plot draws ph_offset problems with rational numbers only (solve answers radical ones)",
+            x.0
+        )));
+    }
+    let p = problem(&input, |x| {
+        x.0.to_rational()
+            .expect("every number was checked rational")
+    })?;
+    Ok((p.curve, p.radii))
 }
 
 /// The kind.
