@@ -52,12 +52,12 @@ fn bern_eval(c: &[Rational], t: &Rational) -> Rational {
     for (i, ci) in c.iter().enumerate() {
         let mut term = ci.clone() * binom(n, i);
         for _ in 0..i {
-            term = term * t.clone();
+            term *= t.clone();
         }
         for _ in 0..n - i {
-            term = term * s.clone();
+            term *= s.clone();
         }
-        acc = acc + term;
+        acc += term;
     }
     acc
 }

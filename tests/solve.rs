@@ -260,13 +260,7 @@ fn errors_name_the_field_path() {
         &["missing field `cylinder`"],
     );
     refused(r#"[1,2]"#, &[], &["must be a JSON object"]);
-    for kind in ["conic"] {
-        refused(
-            &format!(r#"{{"kind":"{kind}"}}"#),
-            &[],
-            &[kind, "not answered"],
-        );
-    }
+    refused(r#"{"kind":"conic"}"#, &[], &["conic", "not answered"]);
 }
 
 #[test]

@@ -113,6 +113,14 @@ fn param(k: i64) -> Rational {
     Rational::new(k, STEPS).expect("STEPS > 0")
 }
 
+/// One offset of the figure: `r`, its runs of samples (broken at poles), its cusps (isolated
+/// parameter, point).
+pub type OffsetDrawing = (
+    Rational,
+    Vec<Vec<(f64, f64)>>,
+    Vec<(IsolatedRoot<Rational>, (f64, f64))>,
+);
+
 /// The exact data of the figure, converted to f64 after the exact computation.
 pub struct Drawing {
     /// The base curve at `t = k / STEPS`.
@@ -121,11 +129,7 @@ pub struct Drawing {
     pub control: Vec<(f64, f64)>,
     /// Per distance: `r`, the offset's runs of samples (broken at poles), its cusps
     /// (parameter, point).
-    pub offsets: Vec<(
-        Rational,
-        Vec<Vec<(f64, f64)>>,
-        Vec<(IsolatedRoot<Rational>, (f64, f64))>,
-    )>,
+    pub offsets: Vec<OffsetDrawing>,
     /// Whether the speed vanishes in `[0, 1]` (then no cusps are computed).
     pub singular: bool,
 }
