@@ -30,6 +30,7 @@ use std::process::ExitCode;
 pub mod chiang;
 pub mod conics;
 mod figure;
+pub mod ph;
 mod scene;
 mod svg;
 #[cfg(test)]
@@ -49,8 +50,9 @@ use view3d::view_3d;
 pub struct PlotArgs {
     /// `spaeth` (with `--example N`), `chiang` (with `--example 4`: Chiang's ruled surface, the
     /// plane z = 0, the exact section curve and its control polygon, one 3D figure), `conics`
-    /// (the four cone sections of Chiang's Table 1, one panel each) or a `cylinder_sphere` or
-    /// `conic` problem file (the format of `solve`).
+    /// (the four cone sections of Chiang's Table 1, one panel each), `ph` (Chiang's PH curve with
+    /// its offsets at r = 3, 12.6, 15 and their cusps) or a `cylinder_sphere`, `conic` or
+    /// `ph_offset` problem file (the format of `solve`).
     pub source: String,
     /// Which example to draw: Spaeth's 1, 2 or 3 with `spaeth`; 4 with `chiang`.
     #[arg(long, value_name = "N")]
@@ -90,6 +92,14 @@ pub fn run(args: &PlotArgs) -> Result<ExitCode, Error> {
             "Chiang Example 4 (ruled surface, plane z = 0, exact section curve, control polygon)",
         );
     }
+    if args.source == "ph" {
+        let svg = ph::figure(args.example)?;
+        return emit(
+            &args.output,
+            &svg,
+            "Chiang's PH curve with its offsets at r = 3, 12.6, 15 and their cusps",
+        );
+    }
     if args.source == "conics" {
         if args.example.is_some() {
             return Err(Error::Usage(
@@ -126,7 +136,10 @@ pub fn run(args: &PlotArgs) -> Result<ExitCode, Error> {
                 args.source
             )))
         }
-        (path, None) => file_scene(path)?,
+        (path, None) => match ph::file_figure(path)? {
+            Some((svg, what)) => return emit(&args.output, &svg, &what),
+            None => file_scene(path)?,
+        },
     };
     let (svg, what) = match args.view {
         View::Tu => (tu_diagram(&scene), "t-u diagram"),

@@ -47,8 +47,8 @@
 //! says so in `type_note` instead of failing. Poles come from the same subdivision, which stops
 //! where f64 cannot halve an interval.
 
+use super::number::{unit_zeros, SectionScalar, DEFAULT_WIDTH_LOG2};
 use super::number::{Coords, ExactNumber, FloatNumber};
-use super::ruled_plane::{unit_zeros, SectionScalar, DEFAULT_WIDTH_LOG2};
 use super::{by_mode, parse, Kind, Mode};
 use crate::Error;
 use exactcheck_core::conic::{cone_surface, ConeSection, DegenerateConic, SectionType};

@@ -15,6 +15,7 @@
 pub mod conic;
 pub mod cylinder_sphere;
 pub mod number;
+pub mod ph_offset;
 pub mod plane_plane;
 pub mod ruled_line;
 pub mod ruled_plane;
@@ -73,13 +74,12 @@ pub(crate) fn by_mode<E: Serialize, F: Serialize>(
     }
 }
 
-/// A kind of DESIGN.md and, when this version answers it, how.
+/// A kind of DESIGN.md and how it is answered.
 #[derive(Clone, Copy)]
 pub struct KindEntry {
     /// The kind's name.
     pub name: &'static str,
-    /// The solver, or `None`: recognised, not answered yet.
-    solver: Option<Solver>,
+    solver: Solver,
 }
 
 #[derive(Clone, Copy)]
@@ -95,18 +95,14 @@ fn schema_of<T: JsonSchema>() -> schemars::Schema {
 fn answered<K: Kind>() -> KindEntry {
     KindEntry {
         name: K::NAME,
-        solver: Some(Solver {
+        solver: Solver {
             answer: K::answer,
             schema: schema_of::<K::Input>,
-        }),
+        },
     }
 }
 
-fn recognised(name: &'static str) -> KindEntry {
-    KindEntry { name, solver: None }
-}
-
-/// The kinds of DESIGN.md, in its order, with the ones this version answers.
+/// The kinds of DESIGN.md, in its order (every one is answered).
 pub fn kinds() -> [KindEntry; 7] {
     [
         answered::<sphere_interpolation::SphereInterpolation>(),
@@ -115,24 +111,8 @@ pub fn kinds() -> [KindEntry; 7] {
         answered::<plane_plane::PlanePlaneKind>(),
         answered::<cylinder_sphere::CylinderSphereKind>(),
         answered::<conic::ConicKind>(),
-        recognised("ph_offset"),
+        answered::<ph_offset::PhOffset>(),
     ]
-}
-
-impl KindEntry {
-    /// Whether this version answers the kind.
-    pub fn is_answered(&self) -> bool {
-        self.solver.is_some()
-    }
-}
-
-fn answered_names() -> String {
-    kinds()
-        .iter()
-        .filter(|k| k.is_answered())
-        .map(|k| k.name)
-        .collect::<Vec<_>>()
-        .join(", ")
 }
 
 fn find_kind(kind: &str) -> Result<Solver, Error> {
@@ -142,13 +122,7 @@ fn find_kind(kind: &str) -> Result<Solver, Error> {
             "unknown kind {kind:?} (kinds: {})",
             all.iter().map(|k| k.name).collect::<Vec<_>>().join(", ")
         ))),
-        Some(KindEntry { solver: None, .. }) => Err(Error::Input(format!(
-            "kind {kind:?} is not answered by this version yet (answered: {})",
-            answered_names()
-        ))),
-        Some(KindEntry {
-            solver: Some(s), ..
-        }) => Ok(*s),
+        Some(k) => Ok(k.solver),
     }
 }
 
@@ -242,7 +216,7 @@ pub fn solve(text: &str, mode: Mode) -> Result<Value, Error> {
 /// `docs/schema/<kind>.json`).
 ///
 /// # Errors
-/// [`Error::Usage`] for an unknown kind or one not answered yet (it has no schema).
+/// [`Error::Usage`] for an unknown kind.
 pub fn schema(kind: &str) -> Result<String, Error> {
     let solver = find_kind(kind).map_err(|e| Error::Usage(e.to_string()))?;
     let text = serde_json::to_string_pretty(&(solver.schema)()).expect("a schema is plain JSON");

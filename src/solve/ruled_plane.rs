@@ -46,23 +46,21 @@
 //! `m + n <= 60` ([`MAX_DEGREE`]): the product rule uses binomial coefficients `C(m+n, k)` in
 //! 64-bit integers, which overflow beyond `m + n = 67`.
 
-use super::number::{Coords, ExactNumber, FloatNumber};
+use super::number::{
+    unit_zeros, Coords, ExactNumber, FloatNumber, SectionScalar, DEFAULT_WIDTH_LOG2,
+};
 use super::{by_mode, parse, Kind, Mode};
 use crate::Error;
 use exactcheck_core::roots::{self, IsolatedRoot};
 use exactcheck_core::ruled::{Plane, PlaneSection, RuledSurface};
 use exactcheck_core::{Bernstein, OrderedField, RationalBezierCurve, Sign, Vec3};
-use exactcheck_exact::univariate::UPoly;
-use exactcheck_exact::{Radical, Radicand, Rational};
+use exactcheck_exact::Radical;
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
 
 /// The largest `m + n` (degree of the section) accepted.
 pub const MAX_DEGREE: usize = 60;
-
-/// Default width of the isolating intervals of irrational poles.
-pub(crate) const DEFAULT_WIDTH_LOG2: u32 = 50;
 
 // ------------------------------------------------------------------ input
 
@@ -138,110 +136,7 @@ fn problem<N, T: OrderedField>(
     Ok((surface, plane, width))
 }
 
-// ------------------------------------------------------------------ scalars
-
-/// A scalar the section is computed in: exact ([`Rational`], [`Radical`]) or `f64`.
-pub(crate) trait SectionScalar: OrderedField + std::fmt::Debug {
-    /// Whether zero tests are exact (decides the depth cut-off and the exact-only fields).
-    const EXACT: bool;
-    /// The nearest f64 (`-0` as `0`).
-    fn approx(&self) -> f64;
-    /// The rational number as a scalar.
-    fn from_rational(q: &Rational) -> Self;
-    /// The rational components `p_k` of `p = sum_k sqrt(k) p_k` (power coefficients), or `None`
-    /// when the scalar has no exact decomposition (f64).
-    fn rational_components(p: &[Self]) -> Option<Vec<Vec<Rational>>>;
-}
-
-impl SectionScalar for Rational {
-    const EXACT: bool = true;
-    fn approx(&self) -> f64 {
-        self.to_f64() + 0.0
-    }
-    fn from_rational(q: &Rational) -> Self {
-        q.clone()
-    }
-    fn rational_components(p: &[Self]) -> Option<Vec<Vec<Rational>>> {
-        Some(vec![p.to_vec()])
-    }
-}
-
-impl SectionScalar for Radical {
-    const EXACT: bool = true;
-    fn approx(&self) -> f64 {
-        self.to_f64() + 0.0
-    }
-    fn from_rational(q: &Rational) -> Self {
-        Radical::from(q)
-    }
-    fn rational_components(p: &[Self]) -> Option<Vec<Vec<Rational>>> {
-        let mut parts: Vec<(Radicand, Vec<Rational>)> = Vec::new();
-        for (i, c) in p.iter().enumerate() {
-            for (radicand, q) in c.terms() {
-                let slot = match parts.iter().position(|(r, _)| r == radicand) {
-                    Some(k) => k,
-                    None => {
-                        parts.push((radicand.clone(), vec![Rational::ZERO; p.len()]));
-                        parts.len() - 1
-                    }
-                };
-                parts[slot].1[i] = q.clone();
-            }
-        }
-        Some(parts.into_iter().map(|(_, v)| v).collect())
-    }
-}
-
-impl SectionScalar for f64 {
-    const EXACT: bool = false;
-    fn approx(&self) -> f64 {
-        self + 0.0
-    }
-    fn from_rational(q: &Rational) -> Self {
-        q.to_f64()
-    }
-    fn rational_components(_: &[Self]) -> Option<Vec<Vec<Rational>>> {
-        None
-    }
-}
-
 // ------------------------------------------------------------------ isolation
-
-/// The distinct zeros in `[0, 1]` of `p` (not identically zero), increasing, rational ones
-/// exact, irrational ones refined to width `<= width` (module doc).
-pub(crate) fn unit_zeros<T: SectionScalar>(p: &Bernstein<T>, width: &T) -> Vec<IsolatedRoot<T>> {
-    let found = roots::unit_roots(p).expect("unit_zeros: the caller passes a non-zero polynomial");
-    let rational = rational_zeros::<T>(&p.to_power());
-    found
-        .into_iter()
-        .map(|z| match &z {
-            IsolatedRoot::Between(lo, hi) => match rational.iter().find(|r| {
-                r.sub_ref(lo).sign() == Sign::Positive && hi.sub_ref(r).sign() == Sign::Positive
-            }) {
-                Some(r) => IsolatedRoot::Exact(r.clone()),
-                None => roots::refine(p, &z, width),
-            },
-            IsolatedRoot::Exact(_) => z,
-        })
-        .collect()
-}
-
-/// The rational zeros in `[0, 1]` of `p` (module doc): the exact zeros of the gcd of its
-/// rational components.
-fn rational_zeros<T: SectionScalar>(p: &[T]) -> Vec<T> {
-    let Some(parts) = T::rational_components(p) else {
-        return Vec::new();
-    };
-    let mut g = UPoly::zero();
-    for part in parts {
-        g = g.gcd(&UPoly::from_coeffs(part));
-    }
-    g.isolate_roots()
-        .into_iter()
-        .filter(|ri| ri.is_exact() && ri.lo >= Rational::ZERO && ri.lo <= Rational::ONE)
-        .map(|ri| T::from_rational(&ri.lo))
-        .collect()
-}
 
 /// The multiplicity of the zero `z` of `p` (isolated for `p`) as a zero of `f`, capped at its
 /// multiplicity in `p`: its multiplicity in `gcd(p, f)` (module doc). Exact scalars only.
@@ -530,6 +425,8 @@ impl Kind for RuledPlane {
 mod tests {
     use super::*;
     use exactcheck_core::Ring;
+    use exactcheck_exact::univariate::UPoly;
+    use exactcheck_exact::Rational;
 
     fn q(s: &str) -> Rational {
         s.parse().expect("a rational")
