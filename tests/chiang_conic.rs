@@ -415,3 +415,16 @@ proptest! {
         assert_section(&plane)?;
     }
 }
+
+/// README.md shows `chiang.conic_table`'s own table verbatim.
+#[test]
+fn readme_table_is_the_checks_output() {
+    let readme =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
+    let table = conic_table_markdown().unwrap();
+    assert!(
+        readme.contains(table.trim()),
+        "README.md's Table 1 is stale; the check prints:\n{table}"
+    );
+    assert!(readme.contains("**Result: `holds`.**"));
+}
