@@ -31,7 +31,11 @@
 //! trigonometry, no floats: a candidate `m` (at an end point, or at an exactly known critical
 //! point of `rho`, a zero of `2 sigma' w - sigma w'`) *is* the minimum exactly when `f_m >= 0` on
 //! `[0, 1]` and vanishes somewhere ([`PhCurve::is_min_radius`]); otherwise the minimum is
-//! enclosed by bisection on `m` to any width. The right side (`w < 0`, negative `r`) is the same
+//! enclosed to any width: `rho` at a parameter near the isolated critical point is an upper bound
+//! within about the square of the distance (rho is flat there); dyadic bisection brackets it by
+//! comparisons, and one exact test of "f_m <= 0 somewhere" (Bernstein subdivision, root isolation
+//! only for a touching zero) certifies the lower end — bisection on `m` with an exact test per
+//! step is the fallback. The right side (`w < 0`, negative `r`) is the same
 //! with `-w`.
 //!
 //! Preconditions are checked, not assumed: `u = v = 0` is refused by [`PhCurve::new`]; where
@@ -40,7 +44,7 @@
 
 use crate::bernstein::{binom, Bernstein};
 use crate::bezier::{BezierCurve, RationalBezierCurve};
-use crate::roots::{common_unit_roots, multiplicity, unit_roots, IsolatedRoot};
+use crate::roots::{common_unit_roots, multiplicity, refine, unit_roots, IsolatedRoot};
 use crate::ruled::{Plane, RuledSurface};
 use crate::scalar::{Field, OrderedField, QAlgebra, Ring, Sign};
 use crate::vector::{Hom4, Vec3};
@@ -366,6 +370,37 @@ fn sign_samples<T: OrderedField>(roots: &[IsolatedRoot<T>]) -> Vec<T> {
     samples
 }
 
+/// Whether `p <= 0` somewhere on `[0, 1]`, by Bernstein subdivision: a piece whose
+/// coefficients are all positive is positive (convex hull property); a non-positive end
+/// coefficient is a non-positive value; other pieces are halved. `None` when `MAX_DEPTH` levels
+/// or `MAX_PIECES` pieces do not decide it — only a zero where `p` touches 0 without changing
+/// sign defeats it (then the control polygon never becomes positive and no sample is negative).
+fn nonpositive_somewhere<T: OrderedField>(p: &Bernstein<T>) -> Option<bool> {
+    const MAX_DEPTH: usize = 80;
+    const MAX_PIECES: usize = 4096;
+    let half = T::one() / T::from_i64(2);
+    let mut stack = vec![(p.clone(), 0usize)];
+    let mut pieces = 0;
+    while let Some((q, depth)) = stack.pop() {
+        let c = q.coeffs();
+        let ends = [&c[0], &c[c.len() - 1]];
+        if ends.iter().any(|e| e.sign() != Sign::Positive) {
+            return Some(true);
+        }
+        if c.iter().all(|x| x.sign() == Sign::Positive) {
+            continue;
+        }
+        pieces += 1;
+        if depth >= MAX_DEPTH || pieces > MAX_PIECES {
+            return None;
+        }
+        let (a, b) = q.split(&half);
+        stack.push((b, depth + 1));
+        stack.push((a, depth + 1));
+    }
+    Some(false)
+}
+
 impl<T: OrderedField> PhCurve<T> {
     /// The parameters of `[0, 1]` where the speed `sigma` vanishes (common zeros of `u` and `v`).
     pub fn speed_zeros(&self) -> Vec<IsolatedRoot<T>> {
@@ -420,12 +455,18 @@ impl<T: OrderedField> PhCurve<T> {
             .all(|t| f.eval(t).sign() != Sign::Negative))
     }
 
-    /// Whether `sigma^2 - 2 m w` (side-signed) has a zero in `[0, 1]`: `m >= rho_min`.
+    /// Whether `sigma^2 - 2 m w` (side-signed) is `<= 0` somewhere in `[0, 1]`: `m >= rho_min`
+    /// (monotone in `m`, as `f_m` decreases where `w > 0`). Decided by Bernstein subdivision
+    /// ([`nonpositive_somewhere`], no gcds), and by exact root isolation when subdivision cannot
+    /// (a touching zero, `m = rho_min` exactly).
     fn reaches(&self, m: &T, side: Side) -> bool {
         let f = self.cusp_polynomial(&side_sign(side, m.clone()));
-        !unit_roots(&f)
-            .expect("not zero where sigma has no zero")
-            .is_empty()
+        nonpositive_somewhere(&f).unwrap_or_else(|| {
+            f.coeffs()[0].sign() != Sign::Positive
+                || !unit_roots(&f)
+                    .expect("not zero where sigma has no zero")
+                    .is_empty()
+        })
     }
 
     /// The smallest radius of curvature on `side`, exactly when it is attained at an end point
@@ -477,11 +518,14 @@ impl<T: OrderedField> PhCurve<T> {
             }
         }
         let crit = self.radius_critical_polynomial();
-        if !crit.is_zero() {
-            for c in unit_roots(&crit).expect("not zero") {
-                if let Some(m) = c.exact().and_then(&rho) {
-                    take(m);
-                }
+        let crit_roots = if crit.is_zero() {
+            Vec::new()
+        } else {
+            unit_roots(&crit).expect("not zero")
+        };
+        for c in &crit_roots {
+            if let Some(m) = c.exact().and_then(&rho) {
+                take(m);
             }
         }
         let Some(mut hi) = hi else {
@@ -495,8 +539,41 @@ impl<T: OrderedField> PhCurve<T> {
                 attained,
             }));
         }
+        // The minimum is at an irrational critical point. rho is flat there (rho' = 0), so rho
+        // at a parameter near the critical point is an upper bound `near_min` (f_m vanishes
+        // there) very close to the minimum: bracketing it by dyadic bisection needs comparisons
+        // only, and one exact test of the bracket's lower end usually finishes the enclosure
+        // (each exact test is a subdivision or a root isolation; plain bisection needs ~50).
+        let mut near_min: Option<T> = None;
+        for c in crit_roots.iter().filter(|c| c.exact().is_none()) {
+            let near = refine(&crit, c, tolerance).midpoint();
+            if let Some(m) = rho(&near) {
+                if near_min.as_ref().is_none_or(|b| m < *b) {
+                    near_min = Some(m);
+                }
+            }
+        }
         let two = T::from_i64(2);
         let mut lo = T::zero();
+        if let Some(b) = &near_min {
+            // Bracket near_min by dyadic bisection (comparisons only), then one exact test of
+            // the lower end: almost always it is below the minimum and the enclosure is done.
+            let (mut a, mut c) = (lo.clone(), hi.clone());
+            while c.sub_ref(&a) > *tolerance {
+                let mid = a.add_ref(&c) / two.clone();
+                if mid >= *b {
+                    c = mid;
+                } else {
+                    a = mid;
+                }
+            }
+            hi = c;
+            if self.reaches(&a, side) {
+                hi = a;
+            } else {
+                lo = a;
+            }
+        }
         while hi.sub_ref(&lo) > *tolerance {
             let mid = lo.add_ref(&hi) / two.clone();
             if self.reaches(&mid, side) {

@@ -143,3 +143,20 @@ fn degenerate_inputs_are_named() {
     assert_eq!(line.offset(&qi(5)).weights(), vec![qi(5), qi(5)]);
     assert!(line.offset_cusps(&qi(5)).unwrap().is_empty());
 }
+
+#[test]
+fn subdivision_decides_the_sign() {
+    let power = |a: &[Q]| Bernstein::from_power(a).unwrap();
+    // (t - 1/2)^2 + 1/100 > 0 on [0, 1]
+    assert_eq!(
+        nonpositive_somewhere(&power(&[q(26, 100), qi(-1), qi(1)])),
+        Some(false)
+    );
+    // (t - 1/2)^2 - 1/100 < 0 near 1/2, positive at the ends
+    assert_eq!(
+        nonpositive_somewhere(&power(&[q(24, 100), qi(-1), qi(1)])),
+        Some(true)
+    );
+    // negative at an end
+    assert_eq!(nonpositive_somewhere(&power(&[qi(-1), qi(3)])), Some(true));
+}
