@@ -105,6 +105,17 @@ pub enum SectionType {
 }
 
 impl SectionType {
+    /// Every section type: the four conics, then the three degenerate sections.
+    pub const ALL: [SectionType; 7] = [
+        SectionType::Conic(ConicType::Circle),
+        SectionType::Conic(ConicType::Ellipse),
+        SectionType::Conic(ConicType::Parabola),
+        SectionType::Conic(ConicType::Hyperbola),
+        SectionType::Degenerate(DegenerateConic::Point),
+        SectionType::Degenerate(DegenerateConic::DoubleLine),
+        SectionType::Degenerate(DegenerateConic::LinePair),
+    ];
+
     /// `circle`, `ellipse`, `parabola`, `hyperbola`, `point`, `double_line`, `line_pair`.
     pub fn name(self) -> &'static str {
         match self {

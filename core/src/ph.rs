@@ -222,18 +222,7 @@ impl<T: QAlgebra> PhCurve<T> {
     /// The control points of `B` (degree `n = 2k + 1`): `p_{i+1} = p_i + h_i / n`.
     pub fn base(&self) -> BezierCurve<T> {
         let [hx, hy] = self.hodograph();
-        let inv_n = T::inv_u64(self.degree() as u64).expect("n >= 1 is invertible");
-        let mut points = vec![self.start.clone()];
-        for (x, y) in hx.coeffs().iter().zip(hy.coeffs()) {
-            let last = points.last().expect("starts with p_0");
-            let next = Vec3::new(
-                last.x.add_ref(&x.mul_ref(&inv_n)),
-                last.y.add_ref(&y.mul_ref(&inv_n)),
-                last.z.clone(),
-            );
-            points.push(next);
-        }
-        BezierCurve::new(points)
+        integrate(&self.start, &hx, &hy)
     }
 
     /// The rotated normal field `V = (-Y', X', sigma)`, degree `n - 1 = 2k`.
@@ -314,6 +303,36 @@ impl<T: QAlgebra> PhCurve<T> {
         let deg = a.degree().max(b.degree());
         sub(&elevate_to(&a, deg), &elevate_to(&b, deg))
     }
+}
+
+/// The planar Bezier curve (in the plane `z = start.z`) whose hodograph has the Bernstein
+/// coefficients `(hx_i, hy_i)`, `i = 0..n-1`, starting at `start`: `p_{i+1} = p_i + h_i / n`.
+/// For any hodograph, PH or not (the claims integrate deliberately wrong ones too).
+///
+/// # Panics
+/// When `hx` and `hy` have different degrees.
+pub fn integrate<T: QAlgebra>(
+    start: &Vec3<T>,
+    hx: &Bernstein<T>,
+    hy: &Bernstein<T>,
+) -> BezierCurve<T> {
+    assert_eq!(
+        hx.degree(),
+        hy.degree(),
+        "integrate: hodograph coordinates of one degree"
+    );
+    let inv_n = T::inv_u64(hx.degree() as u64 + 1).expect("n >= 1 is invertible");
+    let mut points = vec![start.clone()];
+    for (x, y) in hx.coeffs().iter().zip(hy.coeffs()) {
+        let last = points.last().expect("starts with p_0");
+        let next = Vec3::new(
+            last.x.add_ref(&x.mul_ref(&inv_n)),
+            last.y.add_ref(&y.mul_ref(&inv_n)),
+            last.z.clone(),
+        );
+        points.push(next);
+    }
+    BezierCurve::new(points)
 }
 
 /// `p` degree-elevated to `deg >= p.degree()` (exact in a Q-algebra: the elevation formula

@@ -1185,18 +1185,15 @@ pub fn check_types(seed: u64, count: usize) -> Result<Outcome, String> {
             .join(", ")
     };
     let type_counts = counts(
-        [
-            "circle",
-            "ellipse",
-            "parabola",
-            "hyperbola",
-            "point",
-            "double_line",
-            "line_pair",
-        ]
-        .iter()
-        .map(|t| (t.to_string(), per_type.get(t).copied().unwrap_or(0)))
-        .collect(),
+        SectionType::ALL
+            .iter()
+            .map(|t| {
+                (
+                    t.name().to_string(),
+                    per_type.get(t.name()).copied().unwrap_or(0),
+                )
+            })
+            .collect(),
     );
     let kind_counts = counts(
         per_kind

@@ -41,7 +41,7 @@
 use crate::claims::engine::{prove_all, Rng, Symbols};
 use crate::claims::{Outcome, Verdict};
 use exactcheck_core::bezier::BezierCurve;
-use exactcheck_core::ph::PhCurve;
+use exactcheck_core::ph::{integrate, PhCurve};
 use exactcheck_core::roots::gcd;
 use exactcheck_core::ruled::RuledSurface;
 use exactcheck_core::{binomial, Bernstein, Hom4, Ring, Sign, Vec3};
@@ -109,19 +109,7 @@ fn construct(curve: &PhCurve<P>, r: &P, x_shift: i64) -> Construction<P> {
     let [hx, hy] = curve.hodograph();
     let shift = P::constant(Rational::from_integer(x_shift));
     let hx = hx.map(|c| c.add_ref(&shift));
-    let n = curve.degree();
-    let inv_n = P::constant(Rational::new(1, n as i64).expect("n >= 1"));
-    let mut points = vec![curve.start().clone()];
-    for (x, y) in hx.coeffs().iter().zip(hy.coeffs()) {
-        let last = points.last().expect("starts with p_0");
-        let next = Vec3::new(
-            last.x.add_ref(&x.mul_ref(&inv_n)),
-            last.y.add_ref(&y.mul_ref(&inv_n)),
-            last.z.clone(),
-        );
-        points.push(next);
-    }
-    let base = BezierCurve::new(points);
+    let base = integrate(curve.start(), &hx, &hy);
     let normal = BezierCurve::from_coordinates(&hy.map(Ring::neg_ref), &hx, &curve.speed())
         .expect("three coordinates of degree 2k");
     let scaled = RuledSurface::new(base.clone(), normal.clone())
