@@ -580,6 +580,10 @@ struct OffsetOut<V> {
     weighted_points: Vec<[V; 3]>,
     /// `null` on a singular base.
     cusps: Option<Vec<CuspOut<V>>>,
+    /// Exact mode, rational input only: the offset's self-intersections, decided exactly
+    /// ([`self_intersections`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    self_intersections: Option<Value>,
     #[serde(skip_serializing_if = "Option::is_none")]
     approx: Option<OffsetApprox>,
 }
@@ -679,6 +683,7 @@ fn offset_out<T: SectionScalar, V>(o: &OffsetData<T>, v: &impl Fn(&T) -> V) -> O
             .map(|h| [v(&h.0[1]), v(&h.0[2]), v(&h.0[3])])
             .collect(),
         cusps,
+        self_intersections: None,
         approx: T::EXACT.then(|| OffsetApprox {
             weights: weights.iter().map(SectionScalar::approx).collect(),
             points: points.iter().map(|p| p.as_ref().map(approx3)).collect(),
@@ -781,14 +786,69 @@ fn numbers(input: &Input<ExactNumber>) -> impl Iterator<Item = &ExactNumber> {
         .chain(input.precision.iter())
 }
 
+/// The largest base degree whose offsets get `self_intersections` (the exact resultant behind
+/// it grows fast: a septic's offsets take seconds, see `exactcheck_exact::planar`).
+pub const SELF_INTERSECTION_MAX_DEGREE: usize = 5;
+
+/// The offset's self-intersections for `solve`: decided exactly by
+/// [`exactcheck_exact::planar::self_intersections_xy`] (every crossing certified, or certified
+/// none), or why not (a singular base, a degree above [`SELF_INTERSECTION_MAX_DEGREE`], a
+/// contact the finder cannot certify).
+fn self_intersections(curve: &PhCurve<Rational>, r: &Rational) -> Value {
+    use exactcheck_exact::planar::{self_intersections_xy, Budget};
+    let interval = |ri: &exactcheck_exact::univariate::RootInterval| {
+        serde_json::json!({
+            "interval": [ri.lo.to_string(), ri.hi.to_string()],
+            "approx": ri.to_f64(),
+        })
+    };
+    if curve.degree() > SELF_INTERSECTION_MAX_DEGREE {
+        return serde_json::json!({
+            "decided": false,
+            "note": format!("not computed for base degree {} > {SELF_INTERSECTION_MAX_DEGREE} (the exact resultant grows quickly)", curve.degree()),
+        });
+    }
+    if !curve.speed_zeros().is_empty() {
+        return serde_json::json!({
+            "decided": false,
+            "note": "the base curve is singular in [0, 1], so the offset has poles",
+        });
+    }
+    match self_intersections_xy(&curve.offset(r), Budget::default()) {
+        Ok(found) => serde_json::json!({
+            "decided": true,
+            "count": found.crossings.len(),
+            "crossings": found.crossings.iter().map(|c| serde_json::json!({
+                "s": interval(&c.s_interval),
+                "t": interval(&c.t_interval),
+                "point_approx": c.point,
+                "certificate": format!("{:?}", c.certificate),
+            })).collect::<Vec<_>>(),
+        }),
+        Err(e) => serde_json::json!({"decided": false, "note": e.to_string()}),
+    }
+}
+
 fn exact(text: &str) -> Result<Answer<String>, Error> {
     let input: Input<ExactNumber> = parse(text)?;
     // Rational input runs over the (faster) rationals; radicals over the radical field.
     if numbers(&input).all(|x| x.0.is_rational()) {
-        exact_answer(&input, |x| {
+        let mut answer = exact_answer(&input, |x| {
             x.to_rational()
                 .expect("is_rational was checked for every number")
-        })
+        })?;
+        let p = problem(&input, |x| {
+            x.0.to_rational()
+                .expect("is_rational was checked for every number")
+        })?;
+        let outs = answer
+            .single
+            .iter_mut()
+            .chain(answer.offsets.iter_mut().flatten());
+        for (out, r) in outs.zip(&p.radii) {
+            out.self_intersections = Some(self_intersections(&p.curve, r));
+        }
+        Ok(answer)
     } else {
         exact_answer(&input, Clone::clone)
     }
