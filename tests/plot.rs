@@ -164,9 +164,11 @@ fn errors_have_status_2() {
         r#"{"kind":"sphere_interpolation","points":[],"params":[]}"#,
     )
     .unwrap();
+    // The message names every kind plot draws (it said "cylinder_sphere only" after conic and
+    // ph_offset files became drawable).
     assert_error(
         &["plot", other.to_str().unwrap(), "-o", out],
-        "cylinder_sphere",
+        r#"plot draws problem files of kind "cylinder_sphere", "conic" or "ph_offset" (found kind "sphere_interpolation")"#,
     );
     let broken = dir.path("broken.json");
     std::fs::write(&broken, "{not json").unwrap();

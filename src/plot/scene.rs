@@ -79,7 +79,7 @@ pub(super) fn file_scene(path: &str) -> Result<Scene, Error> {
     let kind = crate::solve::problem_kind(&text).map_err(in_file)?;
     if kind != "cylinder_sphere" {
         return Err(Error::Input(format!(
-            "{path}: plot draws problems of kind \"cylinder_sphere\" only (found kind {kind:?})"
+            "{path}: plot draws problem files of kind \"cylinder_sphere\", \"conic\" or \"ph_offset\" (found kind {kind:?})"
         )));
     }
     let configs = crate::solve::cylinder_sphere::configurations(&text).map_err(in_file)?;
