@@ -4,17 +4,7 @@
 
 #[path = "common/plot_support.rs"]
 mod plot_support;
-use plot_support::{check_svg, exactcheck, TempDir};
-
-/// The number of points of the first `<polyline class="CLASS" points="...">`.
-fn polyline_points(svg: &str, class: &str) -> usize {
-    let key = format!("<polyline class=\"{class}\" points=\"");
-    let i = svg
-        .find(&key)
-        .unwrap_or_else(|| panic!("no polyline {class}"));
-    let pts = svg[i + key.len()..].split('"').next().unwrap_or_default();
-    pts.split_whitespace().count()
-}
+use plot_support::{check_svg, exactcheck, polyline_points, TempDir};
 
 #[test]
 fn example_4_figure_is_written_and_well_formed() {

@@ -7,17 +7,7 @@
 mod plot_support;
 use exactcheck_core::ph::chiang_example;
 use exactcheck_exact::Rational;
-use plot_support::{check_svg, exactcheck, TempDir};
-
-/// The number of points of the first `<polyline class="CLASS" points="...">`.
-fn polyline_points(svg: &str, class: &str) -> usize {
-    let key = format!("<polyline class=\"{class}\" points=\"");
-    let i = svg
-        .find(&key)
-        .unwrap_or_else(|| panic!("no polyline {class}"));
-    let pts = svg[i + key.len()..].split('"').next().unwrap_or_default();
-    pts.split_whitespace().count()
-}
+use plot_support::{check_svg, exactcheck, polyline_points, TempDir};
 
 fn exact_cusp_count(radii: &[&str]) -> usize {
     let c = chiang_example::<Rational>();

@@ -44,7 +44,7 @@
 
 use crate::bernstein::{binom, Bernstein};
 use crate::bezier::{BezierCurve, RationalBezierCurve};
-use crate::roots::{common_unit_roots, multiplicity, refine, unit_roots, IsolatedRoot};
+use crate::roots::{common_unit_roots, multiplicity, unit_roots, IsolatedRoot, Refiner};
 use crate::ruled::{Plane, RuledSurface};
 use crate::scalar::{Field, OrderedField, QAlgebra, Ring, Sign};
 use crate::vector::{Hom4, Vec3};
@@ -564,8 +564,9 @@ impl<T: OrderedField> PhCurve<T> {
         // only, and one exact test of the bracket's lower end usually finishes the enclosure
         // (each exact test is a subdivision or a root isolation; plain bisection needs ~50).
         let mut near_min: Option<T> = None;
+        let refiner = Refiner::new(&crit);
         for c in crit_roots.iter().filter(|c| c.exact().is_none()) {
-            let near = refine(&crit, c, tolerance).midpoint();
+            let near = refiner.refine(c, tolerance).midpoint();
             if let Some(m) = rho(&near) {
                 if near_min.as_ref().is_none_or(|b| m < *b) {
                     near_min = Some(m);

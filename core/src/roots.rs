@@ -183,40 +183,64 @@ pub fn refine<T: OrderedField>(
     root: &IsolatedRoot<T>,
     width: &T,
 ) -> IsolatedRoot<T> {
-    assert!(
-        width.sign() == Sign::Positive,
-        "refine: the target width must be positive"
-    );
-    let (lo, hi) = match root {
-        IsolatedRoot::Exact(_) => return root.clone(),
-        IsolatedRoot::Between(lo, hi) => (lo.clone(), hi.clone()),
-    };
-    let Ok(q) = square_free(p) else {
-        return root.clone();
-    };
-    if q.degree() == 1 {
-        // A line: its root is exact (see `isolate_square_free`).
-        let c = q.coeffs();
-        return IsolatedRoot::Exact(c[0].clone() / c[0].sub_ref(&c[1]));
-    }
-    let (mut lo, mut hi) = (lo, hi);
-    let s_lo = q.eval(&lo).sign();
-    while hi.sub_ref(&lo) > *width {
-        let m = midpoint(&lo, &hi);
-        if !(lo < m && m < hi) {
-            break;
-        }
-        let s = q.eval(&m).sign();
-        if s == Sign::Zero {
-            return IsolatedRoot::Exact(m);
-        }
-        if s == s_lo {
-            lo = m;
-        } else {
-            hi = m;
+    Refiner::new(p).refine(root, width)
+}
+
+/// [`refine`] for many roots of one polynomial: its square-free part (a gcd) is computed once,
+/// not once per root.
+pub struct Refiner<T> {
+    /// The square-free part, `None` for the zero polynomial.
+    square_free: Option<Bernstein<T>>,
+}
+
+impl<T: OrderedField> Refiner<T> {
+    /// Prepares the refinement of roots of `p`.
+    pub fn new(p: &Bernstein<T>) -> Self {
+        Refiner {
+            square_free: square_free(p).ok(),
         }
     }
-    IsolatedRoot::Between(lo, hi)
+
+    /// [`refine`] of one root of the polynomial.
+    ///
+    /// # Panics
+    /// When `width` is not positive.
+    pub fn refine(&self, root: &IsolatedRoot<T>, width: &T) -> IsolatedRoot<T> {
+        assert!(
+            width.sign() == Sign::Positive,
+            "refine: the target width must be positive"
+        );
+        let (lo, hi) = match root {
+            IsolatedRoot::Exact(_) => return root.clone(),
+            IsolatedRoot::Between(lo, hi) => (lo.clone(), hi.clone()),
+        };
+        let Some(q) = &self.square_free else {
+            return root.clone();
+        };
+        if q.degree() == 1 {
+            // A line: its root is exact (see `isolate_square_free`).
+            let c = q.coeffs();
+            return IsolatedRoot::Exact(c[0].clone() / c[0].sub_ref(&c[1]));
+        }
+        let (mut lo, mut hi) = (lo, hi);
+        let s_lo = q.eval(&lo).sign();
+        while hi.sub_ref(&lo) > *width {
+            let m = midpoint(&lo, &hi);
+            if !(lo < m && m < hi) {
+                break;
+            }
+            let s = q.eval(&m).sign();
+            if s == Sign::Zero {
+                return IsolatedRoot::Exact(m);
+            }
+            if s == s_lo {
+                lo = m;
+            } else {
+                hi = m;
+            }
+        }
+        IsolatedRoot::Between(lo, hi)
+    }
 }
 
 /// The common real roots in [0, 1] of several polynomials (via their gcd), isolated.

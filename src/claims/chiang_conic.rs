@@ -48,7 +48,7 @@ use super::{Claim, Outcome, Verdict};
 use exactcheck_core::conic::{
     angle_rule, bezier_type, ConePiece, ConeSection, ConicType, DegenerateConic, SectionType,
 };
-use exactcheck_core::roots::{refine, IsolatedRoot};
+use exactcheck_core::roots::{IsolatedRoot, Refiner};
 use exactcheck_core::ruled::Plane;
 use exactcheck_core::{Field, Ring, Rng, Vec3};
 use exactcheck_exact::{Radical, Rational};
@@ -412,7 +412,8 @@ fn refined_poles(
     poles: &[IsolatedRoot<Radical>],
 ) -> Vec<IsolatedRoot<Radical>> {
     let width = Radical::from_ratio(1, 1024).expect("1024 != 0");
-    poles.iter().map(|p| refine(weight, p, &width)).collect()
+    let refiner = Refiner::new(weight);
+    poles.iter().map(|p| refiner.refine(p, &width)).collect()
 }
 
 /// The rows of one piece: weights (with the common-scale test) and points.

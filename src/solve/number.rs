@@ -386,6 +386,7 @@ pub(crate) fn rational_zeros<T: SectionScalar>(p: &[T]) -> Vec<T> {
 pub(crate) fn unit_zeros<T: SectionScalar>(p: &Bernstein<T>, width: &T) -> Vec<IsolatedRoot<T>> {
     let found = roots::unit_roots(p).expect("unit_zeros: the caller passes a non-zero polynomial");
     let rational = rational_zeros::<T>(&p.to_power());
+    let refiner = roots::Refiner::new(p);
     found
         .into_iter()
         .map(|z| match &z {
@@ -393,7 +394,7 @@ pub(crate) fn unit_zeros<T: SectionScalar>(p: &Bernstein<T>, width: &T) -> Vec<I
                 r.sub_ref(lo).sign() == Sign::Positive && hi.sub_ref(r).sign() == Sign::Positive
             }) {
                 Some(r) => IsolatedRoot::Exact(r.clone()),
-                None => roots::refine(p, &z, width),
+                None => refiner.refine(&z, width),
             },
             IsolatedRoot::Exact(_) => z,
         })

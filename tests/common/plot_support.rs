@@ -1,5 +1,5 @@
 //! What the plot tests share (`#[path]`-included, so crates that do not plot do not compile
-//! it): a temporary directory, the binary, and the SVG well-formedness check.
+//! it): a temporary directory, the binary, the SVG well-formedness check and a polyline counter.
 
 use std::path::PathBuf;
 use std::process::{Command, Output};
@@ -81,4 +81,15 @@ pub fn check_svg(svg: &str) {
             "bare & at {i}: {ent}"
         );
     }
+}
+
+/// The number of points of the first `<polyline class="CLASS" points="...">`.
+#[allow(dead_code)] // not every plot test counts polyline points
+pub fn polyline_points(svg: &str, class: &str) -> usize {
+    let key = format!("<polyline class=\"{class}\" points=\"");
+    let i = svg
+        .find(&key)
+        .unwrap_or_else(|| panic!("no polyline {class}"));
+    let pts = svg[i + key.len()..].split('"').next().unwrap_or_default();
+    pts.split_whitespace().count()
 }
