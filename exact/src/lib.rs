@@ -17,6 +17,7 @@ pub mod modp;
 pub mod plain;
 pub mod planar;
 pub mod poly;
+pub mod program;
 pub mod prove;
 pub mod radical;
 pub mod rational;

@@ -1,0 +1,114 @@
+//! Float programs: the one intermediate form of every formula regressed from text — a
+//! `--formula` in the `prove` syntax and an FPCore benchmark — evaluated two ways on the same
+//! inputs:
+//! * **in f64, as written**: each node is one IEEE double operation in the order of the tree
+//!   (literals rounded to the nearest double, `fma` fused, `sqrt` correctly rounded);
+//! * **exactly**: the true real value of the tree at the (exact, dyadic) inputs. Without an
+//!   irrational square root that is a rational computed exactly; with one, it is refined to as
+//!   many bits as the comparison with the double needs (never a float `sqrt`).
+//!
+//! A [`Program`] has inputs (by index), optional `let` slots, an optional precondition (a
+//! [`Cond`] the inputs must satisfy: FPCore's `:pre` beyond interval bounds) and one or more
+//! output trees. It is built by the compilers (`prove` syntax: [`Program::from_expr`]; FPCore: the
+//! FPCore reader) and evaluated by the evaluators of this module's children.
+use crate::rational::Rational;
+
+/// How an integer power is evaluated on the float side.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum PowStyle {
+    /// `x^n` of the `prove` syntax: `n - 1` multiplications from the left (`(x*x)*x`), and for a
+    /// negative `n` one division `1 / x^|n|` after them; `x^0 = 1`.
+    Multiply,
+    /// FPCore's `pow` with an integer exponent: the C library's `pow(x, n)` (Rust's
+    /// `f64::powf`), as a compiled C program would compute it.
+    Libm,
+}
+
+/// A comparison operator.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum CmpOp {
+    /// `<`
+    Lt,
+    /// `<=`
+    Le,
+    /// `>`
+    Gt,
+    /// `>=`
+    Ge,
+    /// `==`
+    Eq,
+    /// `!=`
+    Ne,
+}
+
+/// A node of a float program.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Node {
+    /// Input number `i` (0-based, in the order of [`Program::inputs`]).
+    Input(usize),
+    /// The value bound to `let` slot `i` by an enclosing [`Node::Let`].
+    Slot(usize),
+    /// A literal, exact (`0.1` is `1/10`); the float side rounds it to the nearest double.
+    Const(Rational),
+    /// `-a` (exact on both sides).
+    Neg(Box<Node>),
+    /// `a + b`.
+    Add(Box<Node>, Box<Node>),
+    /// `a - b`.
+    Sub(Box<Node>, Box<Node>),
+    /// `a * b`.
+    Mul(Box<Node>, Box<Node>),
+    /// `a / b`; exact division by zero puts the sample outside the domain.
+    Div(Box<Node>, Box<Node>),
+    /// `sqrt(a)`; the exact root of a negative value puts the sample outside the domain.
+    Sqrt(Box<Node>),
+    /// `|a|`.
+    Abs(Box<Node>),
+    /// `a * b + c`, fused (one rounding) on the float side.
+    Fma(Box<Node>, Box<Node>, Box<Node>),
+    /// `min(a, b)` (C's `fmin`; the exact side has no NaN).
+    Min(Box<Node>, Box<Node>),
+    /// `max(a, b)` (C's `fmax`).
+    Max(Box<Node>, Box<Node>),
+    /// `a^n` for an integer `n` (see [`PowStyle`]); exact `0^n` with `n < 0` is outside the
+    /// domain.
+    Pow(Box<Node>, i32, PowStyle),
+    /// Bind each `(slot, value)` in order (a later value may read an earlier slot: `let*`; for
+    /// FPCore's parallel `let` the compiler renames), then evaluate the body.
+    Let(Vec<(usize, Node)>, Box<Node>),
+    /// `if cond then a else b`; the exact side decides `cond` exactly.
+    If(Box<Cond>, Box<Node>, Box<Node>),
+}
+
+/// A condition of an [`Node::If`] or a precondition.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Cond {
+    /// A constant truth value.
+    Bool(bool),
+    /// `a op b`.
+    Cmp(CmpOp, Node, Node),
+    /// All of them (true when empty).
+    And(Vec<Cond>),
+    /// Any of them (false when empty).
+    Or(Vec<Cond>),
+    /// The negation.
+    Not(Box<Cond>),
+}
+
+/// A float program: named inputs, `let` slots, an optional precondition and the outputs.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Program {
+    /// A short name for reports (the formula text, or FPCore's `:name`).
+    pub name: String,
+    /// The input names, in order: [`Node::Input`] indexes them, and the evaluators take one
+    /// value per name.
+    pub inputs: Vec<String>,
+    /// The number of `let` slots the nodes use (slots are `0..slots`).
+    pub slots: usize,
+    /// A condition on the inputs beyond their sampling intervals (FPCore's `:pre`, less the
+    /// interval bounds taken as the domain); a sample where it is exactly false is outside the
+    /// domain.
+    pub pre: Option<Cond>,
+    /// The outputs (one or more).
+    pub outputs: Vec<Node>,
+}
