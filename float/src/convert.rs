@@ -192,12 +192,63 @@ pub fn rel_error(approx: f64, exact: &BigRational) -> f64 {
     rational_to_f64(&((a - exact).abs() / exact.abs()))
 }
 
+/// `q` in scientific notation with `digits` significant digits, truncated toward zero
+/// (`1.41421e0`): how an approximated exact value is shown (it is marked `~` by the caller).
+pub fn decimal_digits(q: &BigRational, digits: usize) -> String {
+    use num_integer::Integer;
+    if q.is_zero() {
+        return "0".into();
+    }
+    let digits = digits.max(1);
+    let a = q.abs();
+    let ten = BigInt::from(10);
+    let log2 = a.numer().bits() as f64 - a.denom().bits() as f64;
+    let mut e = (log2 * std::f64::consts::LOG10_2).floor() as i64;
+    // floor(a * 10^(digits - 1 - e)), with e corrected until it has exactly `digits` digits.
+    let scaled = |e: i64| {
+        let k = digits as i64 - 1 - e;
+        let p = num_traits::pow(ten.clone(), k.unsigned_abs() as usize);
+        if k >= 0 {
+            (a.numer() * p).div_floor(a.denom())
+        } else {
+            a.numer().div_floor(&(a.denom() * p))
+        }
+    };
+    let lo = num_traits::pow(ten.clone(), digits - 1);
+    let hi = &lo * &ten;
+    let mut t = scaled(e);
+    while t >= hi {
+        e += 1;
+        t = scaled(e);
+    }
+    while t < lo {
+        e -= 1;
+        t = scaled(e);
+    }
+    let s = t.to_string();
+    let sign = if q.is_negative() { "-" } else { "" };
+    if digits == 1 {
+        format!("{sign}{s}e{e}")
+    } else {
+        format!("{sign}{}.{}e{e}", &s[..1], &s[1..])
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
     fn q(n: i64, d: i64) -> BigRational {
         BigRational::new(BigInt::from(n), BigInt::from(d))
+    }
+
+    #[test]
+    fn decimal_digits_truncate() {
+        assert_eq!(decimal_digits(&q(1, 3), 5), "3.3333e-1");
+        assert_eq!(decimal_digits(&q(-2, 1), 3), "-2.00e0");
+        assert_eq!(decimal_digits(&q(999, 1), 2), "9.9e2");
+        assert_eq!(decimal_digits(&q(1000, 1), 1), "1e3");
+        assert_eq!(decimal_digits(&q(0, 1), 4), "0");
     }
 
     #[test]

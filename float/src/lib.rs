@@ -24,9 +24,11 @@
 pub mod convert;
 pub mod gen;
 pub mod harness;
+pub mod json;
 pub mod report;
 pub mod sampler;
 pub mod scalar;
+pub mod summary;
 pub mod wabis;
 
 pub use convert::{
@@ -35,6 +37,9 @@ pub use convert::{
 };
 pub use exactcheck_core::rng::{self, Rng};
 pub use gen::{Diagonal, Fixed, GenError, InputGen, LogUniform, NearDegenerate, UniformBox};
-pub use harness::{check, regress, sample_inputs, CaseError, Formula, Options, RegressError};
-pub use report::{Case, Report, ThresholdCount, WorstCase};
+pub use harness::{
+    check, check_subject, merge, regress, run, sample_inputs, CaseError, ExactValue, FloatSideError,
+    Formula, Generic, MergeError, Options, RegressError, Shard, Subject, Sweep,
+};
+pub use report::{Case, Report, Summary, ThresholdCount, WorstCase};
 pub use scalar::ExactScalar;

@@ -6,36 +6,53 @@
 //! `Display` abbreviates long exact values (a dyadic `n/d` reads `n/2^k`, very long numerals are
 //! elided); the fields always hold them in full.
 
+use crate::harness::Shard;
+use crate::json::{measure, measures, opt_measures};
+use crate::summary::{BitsSum, Distribution};
+use serde::{Deserialize, Serialize};
 use std::fmt;
 
 /// One compared input vector: the inputs, both evaluations and their errors.
-#[derive(Clone, Debug, PartialEq)]
+///
+/// In JSON, non-finite measures read `"inf"` (JSON has no infinity).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Case {
     /// The inputs as doubles (`Debug` formatting of `f64` round-trips them exactly).
+    #[serde(with = "measures")]
     pub inputs: Vec<f64>,
     /// The same inputs as exact rationals, `n` or `n/d`.
     pub inputs_exact: Vec<String>,
-    /// The exact outputs, `n` or `n/d`.
+    /// The exact outputs, `n` or `n/d`; an irrational value refined to a rational
+    /// approximation reads `~` and 30 significant digits (truncated).
     pub exact_outputs: Vec<String>,
     /// The exact outputs rounded to the nearest doubles.
+    #[serde(with = "measures")]
     pub exact_outputs_f64: Vec<f64>,
     /// The float outputs; `None` when the float evaluation reported a zero divisor.
+    #[serde(with = "opt_measures")]
     pub float_outputs: Option<Vec<f64>>,
     /// Each output's error in ulps of the exact value (see [`crate::ulps_error`]).
+    #[serde(with = "measures")]
     pub ulps_per_output: Vec<f64>,
     /// Each output's relative error (see [`crate::rel_error`]).
+    #[serde(with = "measures")]
     pub rel_per_output: Vec<f64>,
     /// The largest error in ulps over the outputs (infinite for a float failure).
+    #[serde(with = "measure")]
     pub ulps: f64,
     /// The largest relative error over the outputs (infinite for a float failure).
+    #[serde(with = "measure")]
     pub rel: f64,
+    /// Herbie's bits of error, the largest over the outputs (64 for a float failure).
+    #[serde(with = "measure")]
+    pub bits: f64,
     /// Whether the float side failed: a zero divisor, a NaN or infinite output, or a different
     /// number of outputs than the exact side.
     pub float_failure: bool,
 }
 
 /// A kept worst case of a run, with its shrunk form.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct WorstCase {
     /// The sample index: [`crate::sample_inputs`]`(gen, seed, index)` regenerates the inputs.
     pub index: usize,
@@ -51,19 +68,33 @@ pub struct WorstCase {
 }
 
 /// How many compared samples exceeded an error level.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct ThresholdCount {
     /// The level, in ulps.
+    #[serde(with = "measure")]
     pub ulps: f64,
     /// The number of compared samples whose error is strictly greater.
     pub count: usize,
 }
 
-/// The result of [`crate::regress`].
+/// The mergeable summaries behind a report's medians and means ([`crate::summary`]).
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct Summary {
+    /// The errors in ulps.
+    pub ulps: Distribution,
+    /// The relative errors.
+    pub rel: Distribution,
+    /// Herbie's bits of error.
+    pub bits: BitsSum,
+}
+
+/// The result of [`crate::regress`] / [`crate::run`], of one shard or of a whole sweep.
 ///
 /// A sample's error is the largest over its outputs. Statistics are over the compared samples
-/// (float failures included, with infinite error) and read 0 when none was compared.
-#[derive(Clone, Debug, PartialEq)]
+/// (float failures included, with infinite error) and read 0 when none was compared. Medians
+/// and means are read from [`Report::summary`] (exact up to [`crate::summary::EXACT_DISTINCT`]
+/// distinct values, then to 8 mantissa bits), so shards merge into the whole.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Report {
     /// The formula's name.
     pub formula: String,
@@ -71,35 +102,98 @@ pub struct Report {
     pub generator: String,
     /// The number of inputs.
     pub arity: usize,
-    /// The number of samples drawn.
+    /// The number of samples of the whole sweep.
     pub samples: usize,
     /// The seed of the run.
     pub seed: u64,
+    /// The part of the sweep this report covers (`None`: all of it).
+    #[serde(with = "shard_text")]
+    pub shard: Option<Shard>,
+    /// The first sample index covered.
+    pub first_sample: usize,
+    /// One past the last sample index covered.
+    pub end_sample: usize,
+    /// How many worst cases were kept at most.
+    pub keep: usize,
     /// Samples evaluated on both sides and compared.
     pub compared: usize,
     /// Samples skipped because the exact evaluation reported a zero divisor (outside the domain).
     pub domain_errors: usize,
     /// Samples skipped because the generator gave a wrong number of inputs or a non-finite one.
     pub invalid_inputs: usize,
+    /// Samples skipped because the exact side could not decide a sign up to its precision cap.
+    pub undecided: usize,
+    /// Compared samples whose exact value was refined (an irrational root) rather than exact.
+    pub refined: usize,
     /// Compared samples where the float side failed (infinite error).
     pub float_failures: usize,
     /// The largest error in ulps.
+    #[serde(with = "measure")]
     pub max_ulps: f64,
     /// The median error in ulps (the mean of the two middle values for an even count).
+    #[serde(with = "measure")]
     pub median_ulps: f64,
     /// The mean error in ulps over the samples with a finite error.
+    #[serde(with = "measure")]
     pub mean_ulps: f64,
     /// The largest relative error.
+    #[serde(with = "measure")]
     pub max_rel: f64,
     /// The median relative error.
+    #[serde(with = "measure")]
     pub median_rel: f64,
+    /// The mean of Herbie's bits of error (`log2(1 + n)`, `n` the doubles between the float
+    /// result and the correctly rounded exact value; 64 for a float failure), as Herbie reports
+    /// a benchmark's error.
+    #[serde(with = "measure")]
+    pub bits_of_error: f64,
+    /// The largest bits of error.
+    #[serde(with = "measure")]
+    pub max_bits: f64,
     /// The largest error in ulps of each output separately.
+    #[serde(with = "measures")]
     pub max_ulps_per_output: Vec<f64>,
     /// The number of samples above each of [`crate::Options::thresholds`].
     pub above: Vec<ThresholdCount>,
     /// The worst cases, worst first (larger ulps error, then larger relative error, then the
     /// earlier sample).
     pub worst: Vec<WorstCase>,
+    /// The mergeable summaries the medians and means are read from.
+    pub summary: Summary,
+}
+
+impl Report {
+    /// Recomputes the medians, the mean and the bits of error from [`Report::summary`].
+    pub fn refresh_statistics(&mut self) {
+        self.median_ulps = self.summary.ulps.median();
+        self.mean_ulps = self.summary.ulps.mean_finite();
+        self.median_rel = self.summary.rel.median();
+        self.bits_of_error = self.summary.bits.mean();
+    }
+
+    /// The report as JSON (non-finite measures as `"inf"`).
+    pub fn to_json(&self) -> serde_json::Value {
+        serde_json::to_value(self).expect("a report serialises to JSON")
+    }
+}
+
+/// `Option<Shard>` as `"I/N"` or `null`.
+mod shard_text {
+    use super::Shard;
+    use serde::{Deserialize, Deserializer, Serializer};
+
+    pub fn serialize<S: Serializer>(v: &Option<Shard>, s: S) -> Result<S::Ok, S::Error> {
+        match v {
+            Some(sh) => s.serialize_str(&sh.to_string()),
+            None => s.serialize_none(),
+        }
+    }
+
+    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Option<Shard>, D::Error> {
+        Option::<String>::deserialize(d)?
+            .map(|t| t.parse().map_err(serde::de::Error::custom))
+            .transpose()
+    }
 }
 
 /// An error measure for humans: `inf`, plain decimals in a middle range, scientific otherwise.
@@ -226,16 +320,33 @@ impl fmt::Display for Report {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         writeln!(f, "regress `{}` ({} inputs)", self.formula, self.arity)?;
         writeln!(f, "  inputs: {}", self.generator)?;
-        writeln!(
+        let covered = match self.shard {
+            Some(s) => format!(
+                "shard {s}: samples {}..{} of {}",
+                self.first_sample, self.end_sample, self.samples
+            ),
+            None => format!("{} samples", self.samples),
+        };
+        write!(
             f,
-            "  {} samples, seed {}: {} compared, {} outside the exact domain, {} float failures, {} invalid inputs",
-            self.samples,
+            "  {covered}, seed {}: {} compared, {} outside the exact domain, {} float failures, {} invalid inputs",
             self.seed,
             self.compared,
             self.domain_errors,
             self.float_failures,
             self.invalid_inputs
         )?;
+        if self.undecided > 0 {
+            write!(f, ", {} undecided", self.undecided)?;
+        }
+        writeln!(f)?;
+        if self.refined > 0 {
+            writeln!(
+                f,
+                "  {} compared samples have an irrational exact value, refined beyond double precision",
+                self.refined
+            )?;
+        }
         writeln!(
             f,
             "  error in ulps: max {}, median {}, mean {} (finite errors)",
@@ -255,6 +366,12 @@ impl fmt::Display for Report {
             "  relative error: max {}, median {}",
             fmt_measure(self.max_rel),
             fmt_measure(self.median_rel)
+        )?;
+        writeln!(
+            f,
+            "  bits of error (Herbie's measure): mean {}, max {}",
+            fmt_measure(self.bits_of_error),
+            fmt_measure(self.max_bits)
         )?;
         if !self.above.is_empty() {
             let parts: Vec<String> = self
