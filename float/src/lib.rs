@@ -14,6 +14,8 @@
 //!   reproducible cases. This is the model of CGAL's `Kernel_checker`: two kernels, every
 //!   disagreement reported with its inputs.
 //!
+//! * [`program`] — [`ProgramRunner`]: the user's own executable (any language) as the float
+//!   side, fed one JSON line of inputs per sample and answering one line of outputs.
 //! * [`wabis`] — the published JavaScript `InterctionLineOf2Areas` (SPEC §3) ported to `f64`
 //!   operation for operation: the float code under test of `regress plane-plane`.
 //!
@@ -24,6 +26,7 @@
 pub mod convert;
 pub mod gen;
 pub mod harness;
+pub mod program;
 pub mod report;
 pub mod sampler;
 pub mod scalar;
@@ -36,5 +39,6 @@ pub use convert::{
 pub use exactcheck_core::rng::{self, Rng};
 pub use gen::{Diagonal, Fixed, GenError, InputGen, LogUniform, NearDegenerate, UniformBox};
 pub use harness::{check, regress, sample_inputs, CaseError, Formula, Options, RegressError};
+pub use program::{ProgramError, ProgramRunner};
 pub use report::{Case, Report, ThresholdCount, WorstCase};
 pub use scalar::ExactScalar;
