@@ -575,8 +575,14 @@ impl ProgramRunner {
                 reason: e.to_string(),
             })?;
         let stdin = child.stdin.take().expect("stdin was configured as a pipe");
-        let stdout = child.stdout.take().expect("stdout was configured as a pipe");
-        let stderr = child.stderr.take().expect("stderr was configured as a pipe");
+        let stdout = child
+            .stdout
+            .take()
+            .expect("stdout was configured as a pipe");
+        let stderr = child
+            .stderr
+            .take()
+            .expect("stderr was configured as a pipe");
 
         let (to_stdin, chunks) = mpsc::channel::<Vec<u8>>();
         thread::spawn(move || write_chunks(stdin, chunks));
@@ -842,7 +848,16 @@ mod tests {
 
     #[test]
     fn input_lines_are_json_with_round_trip_numbers() {
-        let xs = [1.0, -0.0, 1e-300, 1e16, 0.1 + 0.2, 5e-324, f64::MAX, -1.5e-7];
+        let xs = [
+            1.0,
+            -0.0,
+            1e-300,
+            1e16,
+            0.1 + 0.2,
+            5e-324,
+            f64::MAX,
+            -1.5e-7,
+        ];
         let line = input_line(&xs);
         assert_eq!(
             line,
@@ -889,15 +904,7 @@ mod tests {
     #[test]
     fn garbage_answers_are_refused_with_a_reason() {
         for bad in [
-            "hello",
-            "[1, 2",
-            "1, 2]",
-            "[[1, 2]]",
-            "0x1p3",
-            "1e",
-            "1_000",
-            "None",
-            "null",
+            "hello", "[1, 2", "1, 2]", "[[1, 2]]", "0x1p3", "1e", "1_000", "None", "null",
         ] {
             let e = parse_answer(bad).unwrap_err();
             assert!(!e.is_empty(), "{bad}");
