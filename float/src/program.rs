@@ -21,8 +21,9 @@
 //!   values: the harness counts them as float failures, they are not protocol errors.
 //! * The program must **flush** stdout after each answer (`fflush(stdout)` in C,
 //!   `print(..., flush=True)` in Python): a pipe is block-buffered by default, and an answer
-//!   sitting in the program's buffer is never seen (the run then stops at the timeout). Every
-//!   stdout line is an answer; diagnostics go to stderr.
+//!   sitting in the program's buffer is never seen (the run then stops at the timeout). It must
+//!   answer each line as it comes, not after reading all of stdin (stdin stays open for the whole
+//!   run). Every stdout line is an answer, so diagnostics go to stderr.
 //! * At the end exactcheck closes stdin and stops the program.
 //!
 //! # Streaming
@@ -157,7 +158,7 @@ pub enum ProgramError {
         index: usize,
         /// Its inputs.
         inputs: Vec<f64>,
-        /// The answer line (possibly cut at [`MAX_LINE`] bytes).
+        /// The answer line (cut at 1 MiB).
         line: String,
         /// What in it is not a number.
         reason: String,
