@@ -14,6 +14,8 @@
 //!   reproducible cases. This is the model of CGAL's `Kernel_checker`: two kernels, every
 //!   disagreement reported with its inputs.
 //!
+//! * [`program`] — [`ProgramRunner`]: the user's own executable (any language) as the float
+//!   side, fed one JSON line of inputs per sample and answering one line of outputs.
 //! * [`wabis`] — the published JavaScript `InterctionLineOf2Areas` (SPEC §3) ported to `f64`
 //!   operation for operation: the float code under test of `regress plane-plane`.
 //!
@@ -25,6 +27,7 @@ pub mod convert;
 pub mod gen;
 pub mod harness;
 pub mod json;
+pub mod program;
 pub mod report;
 pub mod sampler;
 pub mod scalar;
@@ -41,5 +44,6 @@ pub use harness::{
     check, check_subject, merge, regress, run, sample_inputs, CaseError, ExactValue, FloatSideError,
     Formula, Generic, MergeError, Options, RegressError, Shard, Subject, Sweep,
 };
+pub use program::{ProgramError, ProgramRunner};
 pub use report::{Case, Report, Summary, ThresholdCount, WorstCase};
 pub use scalar::ExactScalar;
