@@ -110,8 +110,9 @@ struct Real<'a> {
     p: u64,
 }
 
+/// `q` if its numerator and denominator have at most [`MAX_CONSTANT_BITS`] bits together.
 fn checked(q: Rational) -> Result<XV, Halt> {
-    if q.size_within(MAX_CONSTANT_BITS) {
+    if q.bits() <= MAX_CONSTANT_BITS {
         Ok(XV::Exact(q))
     } else {
         Err(Halt::TooLarge)
