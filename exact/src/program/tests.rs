@@ -301,6 +301,61 @@ proptest! {
     }
 }
 
+proptest! {
+    /// sqrt of random rationals against an independent integer square root (2^-400 accurate).
+    #[test]
+    fn prop_sqrt_of_rationals_meets_the_contract(a in 1u64..u64::MAX, b in 1u64..u64::MAX) {
+        let x = Rational::from(BigRational::new(a.into(), b.into()));
+        let r = &prog("sqrt(x)").eval_exact(std::slice::from_ref(&x)).unwrap()[0];
+        // sqrt(a/b) = sqrt(a b 4^200) / (b 2^200).
+        let scale = BigInt::one() << 200u32;
+        let root = (BigInt::from(a) * BigInt::from(b) * &scale * &scale).sqrt();
+        let den = BigInt::from(b) * &scale;
+        let t = BigRational::new(root, den.clone());
+        let err = BigRational::new(BigInt::one(), den);
+        assert_contract(r, &t, &err);
+    }
+
+    /// An accurate formula is accurate: the double is within 2 ulps of the reference.
+    #[test]
+    fn prop_accurate_formula_is_close_to_its_reference(x in 0.0f64..1e300) {
+        let p = prog("1/(sqrt(x + 1) + sqrt(x))");
+        let f = p.eval_f64(&[x])[0];
+        let r = &p.eval_exact(&[exact(x)]).unwrap()[0];
+        let diff = (BigRational::from_float(f).unwrap() - &r.value).abs();
+        let ulp = BigRational::from_float(f64::EPSILON).unwrap() * r.value.abs();
+        prop_assert!(diff <= ulp * BigInt::from(2), "x = {}, f = {}", x, f);
+        // The cancelling form is far off for large x, and the reference says so.
+        if x > 1e20 {
+            let d = prog("sqrt(x + 1) - sqrt(x)");
+            let fd = d.eval_f64(&[x])[0];
+            let rd = &d.eval_exact(&[exact(x)]).unwrap()[0];
+            prop_assert!((&rd.value - &r.value).abs() < &r.value / BigInt::from(1u64 << 60));
+            prop_assert_eq!(fd, 0.0);
+        }
+    }
+}
+
+#[test]
+fn hidden_zero_under_a_root_is_exactly_zero() {
+    // sqrt(2)^2 - 2 straddles zero as an enclosure; the radical test says it is 0.
+    let r = &prog("sqrt(sqrt(2)*sqrt(2) - 2) + 1")
+        .eval_exact(&[])
+        .unwrap()[0];
+    assert_eq!(
+        r,
+        &Reference {
+            value: BigRational::one(),
+            exact: true
+        }
+    );
+    // A negative argument hidden below the first precision is outside the domain.
+    assert_eq!(
+        prog("sqrt(sqrt(2)*sqrt(2) - 2 - 2^-1000)").eval_exact(&[]),
+        Err(ExactStop::OutsideDomain)
+    );
+}
+
 #[test]
 fn huge_and_tiny_summands_stay_rigorous() {
     // 2^1000 + 2^-1000 rounded at 64 bits: down gives 2^1000, up gives just above it.
