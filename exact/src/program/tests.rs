@@ -805,3 +805,18 @@ fn throughput() {
         n as f64 / fsecs
     );
 }
+
+#[test]
+fn rational_bits_counts_both_parts_on_both_tiers() {
+    assert_eq!(Rational::ZERO.bits(), 1);
+    assert_eq!(q(-3, 4).bits(), 2 + 3);
+    let big = Rational::from(BigRational::new(BigInt::one() << 200u32, BigInt::from(3)));
+    assert!(!big.is_inline());
+    assert_eq!(big.bits(), 201 + 2);
+    let inline_max = Rational::from(BigRational::new(
+        (BigInt::one() << 126u32) + 1u32,
+        BigInt::from(7),
+    ));
+    assert!(inline_max.is_inline());
+    assert_eq!(inline_max.bits(), 127 + 3);
+}
