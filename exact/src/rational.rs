@@ -152,6 +152,18 @@ impl Rational {
         }
     }
 
+    /// The size in bits: of the numerator's magnitude plus of the denominator (0 for zero counts
+    /// as 0 + 1). Computed without allocating, for size limits checked after every operation.
+    pub fn bits(&self) -> u64 {
+        match &self.0 {
+            Repr::Small(n, d) => {
+                u64::from(128 - n.unsigned_abs().leading_zeros())
+                    + u64::from(128 - (*d as u128).leading_zeros())
+            }
+            Repr::Big(b) => b.num.magnitude().bits() + b.den.bits(),
+        }
+    }
+
     /// The numerator (sign carrier) as a `BigInt`.
     pub fn numer(&self) -> BigInt {
         match &self.0 {

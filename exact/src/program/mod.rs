@@ -11,7 +11,27 @@
 //! [`Cond`] the inputs must satisfy: FPCore's `:pre` beyond interval bounds) and one or more
 //! output trees. It is built by the compilers (`prove` syntax: [`Program::from_expr`]; FPCore: the
 //! FPCore reader) and evaluated by the evaluators of this module's children.
+//!
+//! # Layout
+//! * `compile`: the `prove` syntax to a [`Program`] ([`Program::from_expr`], [`Program::parse`]);
+//! * `walk`: the one tree walk, generic over the arithmetic (a `Domain`);
+//! * `float`: the IEEE double side ([`Program::eval_f64`], [`Program::eval_f64_into`]);
+//! * `real`: the exact side ([`Program::eval_exact`], [`Reference`], [`ExactStop`], the accuracy
+//!   contract [`REL_BITS`]/[`ABS_BITS`] and the precision schedule [`START_PRECISION`] to
+//!   [`MAX_PRECISION`]), with `interval`, its dyadic interval arithmetic.
 use crate::rational::Rational;
+
+mod compile;
+mod float;
+mod interval;
+mod real;
+#[cfg(test)]
+mod tests;
+mod walk;
+
+pub use compile::{CompileError, MAX_POW_EXPONENT};
+pub use float::{pow_f64, STACK_SLOTS};
+pub use real::{ExactStop, Reference, ABS_BITS, MAX_PRECISION, REL_BITS, START_PRECISION};
 
 /// How an integer power is evaluated on the float side.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -111,4 +131,46 @@ pub struct Program {
     pub pre: Option<Cond>,
     /// The outputs (one or more).
     pub outputs: Vec<Node>,
+}
+
+impl Program {
+    /// The number of inputs.
+    pub fn arity(&self) -> usize {
+        self.inputs.len()
+    }
+
+    /// The number of operations: every node of the outputs, the `let` values and the
+    /// precondition except inputs, slots, literals and the `let`/`if` nodes themselves, plus one
+    /// per comparison (`and`/`or`/`not` are free). A measure of the work of one evaluation for
+    /// reports.
+    pub fn operation_count(&self) -> usize {
+        self.outputs.iter().map(node_ops).sum::<usize>() + self.pre.as_ref().map_or(0, cond_ops)
+    }
+}
+
+fn node_ops(n: &Node) -> usize {
+    match n {
+        Node::Input(_) | Node::Slot(_) | Node::Const(_) => 0,
+        Node::Neg(a) | Node::Sqrt(a) | Node::Abs(a) | Node::Pow(a, _, _) => 1 + node_ops(a),
+        Node::Add(a, b)
+        | Node::Sub(a, b)
+        | Node::Mul(a, b)
+        | Node::Div(a, b)
+        | Node::Min(a, b)
+        | Node::Max(a, b) => 1 + node_ops(a) + node_ops(b),
+        Node::Fma(a, b, c) => 1 + node_ops(a) + node_ops(b) + node_ops(c),
+        Node::Let(bindings, body) => {
+            bindings.iter().map(|(_, v)| node_ops(v)).sum::<usize>() + node_ops(body)
+        }
+        Node::If(c, a, b) => cond_ops(c) + node_ops(a) + node_ops(b),
+    }
+}
+
+fn cond_ops(c: &Cond) -> usize {
+    match c {
+        Cond::Bool(_) => 0,
+        Cond::Cmp(_, a, b) => 1 + node_ops(a) + node_ops(b),
+        Cond::And(cs) | Cond::Or(cs) => cs.iter().map(cond_ops).sum(),
+        Cond::Not(c) => cond_ops(c),
+    }
 }

@@ -1,0 +1,169 @@
+//! The float side: a [`Program`] evaluated in IEEE binary64 arithmetic, one rounding per node in
+//! the order of the tree, as a C program compiled without `-ffast-math` computes it.
+//!
+//! * `+ - * /` and `sqrt` are the correctly rounded IEEE operations (`x/0 = ±inf`,
+//!   `sqrt(-1) = NaN`); `fma` is `f64::mul_add` (one rounding); `fmin`/`fmax` are `f64::min`/
+//!   `f64::max` (C's `fmin`/`fmax`: a NaN operand is ignored); `fabs` clears the sign.
+//! * A literal is the double nearest to the exact rational ([`Rational::to_f64`], the workspace's
+//!   one correctly rounded conversion: ties to even, subnormals, overflow to `±inf`).
+//! * `x^n` follows its [`PowStyle`]: `Multiply` is `n - 1` multiplications from the left and for
+//!   `n < 0` one division `1 / x^|n|` after them; `Libm` is the C library's `pow(x, n)`
+//!   (`f64::powf`).
+//! * A comparison involving NaN is false, except `!=`, which is true (IEEE 754).
+//! * The precondition is **not** evaluated here: it is a property of the exact inputs, decided by
+//!   the exact side.
+//!
+//! The evaluation never fails and allocates nothing per node: it is the generic walk of `walk`
+//! over the `Copy` type `f64`, with the `let` slots in a stack array (a heap vector only for
+//! programs with more than [`STACK_SLOTS`] slots).
+use super::walk::{eval_node, Domain};
+use super::{CmpOp, PowStyle, Program};
+use crate::rational::Rational;
+use std::convert::Infallible;
+
+/// Programs with at most this many `let` slots keep them on the stack during a float evaluation.
+pub const STACK_SLOTS: usize = 32;
+
+/// The IEEE double domain over borrowed inputs.
+struct F64<'a> {
+    x: &'a [f64],
+}
+
+impl Domain for F64<'_> {
+    type V = f64;
+    type Stop = Infallible;
+
+    #[inline]
+    fn input(&mut self, i: usize) -> f64 {
+        self.x[i]
+    }
+    #[inline]
+    fn constant(&mut self, q: &Rational) -> Result<f64, Infallible> {
+        Ok(q.to_f64())
+    }
+    #[inline]
+    fn neg(&mut self, a: f64) -> Result<f64, Infallible> {
+        Ok(-a)
+    }
+    #[inline]
+    fn add(&mut self, a: f64, b: f64) -> Result<f64, Infallible> {
+        Ok(a + b)
+    }
+    #[inline]
+    fn sub(&mut self, a: f64, b: f64) -> Result<f64, Infallible> {
+        Ok(a - b)
+    }
+    #[inline]
+    fn mul(&mut self, a: f64, b: f64) -> Result<f64, Infallible> {
+        Ok(a * b)
+    }
+    #[inline]
+    fn div(&mut self, a: f64, b: f64) -> Result<f64, Infallible> {
+        Ok(a / b)
+    }
+    #[inline]
+    fn sqrt(&mut self, a: f64) -> Result<f64, Infallible> {
+        Ok(a.sqrt())
+    }
+    #[inline]
+    fn abs(&mut self, a: f64) -> Result<f64, Infallible> {
+        Ok(a.abs())
+    }
+    #[inline]
+    fn fma(&mut self, a: f64, b: f64, c: f64) -> Result<f64, Infallible> {
+        Ok(a.mul_add(b, c))
+    }
+    #[inline]
+    fn min(&mut self, a: f64, b: f64) -> Result<f64, Infallible> {
+        Ok(a.min(b))
+    }
+    #[inline]
+    fn max(&mut self, a: f64, b: f64) -> Result<f64, Infallible> {
+        Ok(a.max(b))
+    }
+    #[inline]
+    fn pow(&mut self, a: f64, n: i32, style: PowStyle) -> Result<f64, Infallible> {
+        Ok(pow_f64(a, n, style))
+    }
+    #[inline]
+    fn compare(&mut self, op: CmpOp, a: &f64, b: &f64) -> Result<bool, Infallible> {
+        Ok(match op {
+            CmpOp::Lt => a < b,
+            CmpOp::Le => a <= b,
+            CmpOp::Gt => a > b,
+            CmpOp::Ge => a >= b,
+            CmpOp::Eq => a == b,
+            CmpOp::Ne => a != b,
+        })
+    }
+}
+
+/// `a^n` in doubles, per [`PowStyle`].
+pub fn pow_f64(a: f64, n: i32, style: PowStyle) -> f64 {
+    match style {
+        PowStyle::Libm => a.powf(f64::from(n)),
+        PowStyle::Multiply => {
+            if n == 0 {
+                return 1.0;
+            }
+            let mut acc = a;
+            for _ in 1..n.unsigned_abs() {
+                acc *= a;
+            }
+            if n < 0 {
+                1.0 / acc
+            } else {
+                acc
+            }
+        }
+    }
+}
+
+fn unwrap<T>(r: Result<T, Infallible>) -> T {
+    match r {
+        Ok(v) => v,
+        Err(never) => match never {},
+    }
+}
+
+impl Program {
+    /// The outputs evaluated in IEEE doubles at `x` (one value per input), in the order of the
+    /// tree; never fails (see the module documentation of `program::float`).
+    ///
+    /// # Panics
+    /// When `x.len()` is not [`Program::arity`], or on a malformed program (a slot or input
+    /// index out of range; the compilers never build one).
+    pub fn eval_f64(&self, x: &[f64]) -> Vec<f64> {
+        let mut out = Vec::with_capacity(self.outputs.len());
+        self.eval_f64_into(x, &mut out);
+        out
+    }
+
+    /// [`Program::eval_f64`] into a reused vector (cleared first): no allocation once `out` has
+    /// the capacity, for programs with at most [`STACK_SLOTS`] slots.
+    ///
+    /// # Panics
+    /// As [`Program::eval_f64`].
+    pub fn eval_f64_into(&self, x: &[f64], out: &mut Vec<f64>) {
+        assert_eq!(
+            x.len(),
+            self.inputs.len(),
+            "Program::eval_f64: {} values for {} inputs",
+            x.len(),
+            self.inputs.len()
+        );
+        out.clear();
+        let mut d = F64 { x };
+        let mut stack = [0.0f64; STACK_SLOTS];
+        let mut heap;
+        let slots: &mut [f64] = if self.slots <= STACK_SLOTS {
+            &mut stack[..self.slots]
+        } else {
+            heap = vec![0.0; self.slots];
+            &mut heap
+        };
+        for node in &self.outputs {
+            out.push(unwrap(eval_node(&mut d, node, slots)));
+        }
+    }
+}

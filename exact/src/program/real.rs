@@ -1,0 +1,526 @@
+//! The exact side: the true real value of a [`Program`] at rational inputs, as a
+//! [`Reference`] with a guaranteed accuracy, or the reason there is none ([`ExactStop`]).
+//!
+//! # Contract
+//! * `exact == true`: `value` **is** the true value.
+//! * `exact == false`: `|value - true| <= 2^-REL_BITS * |true|` or
+//!   `|value - true| <= 2^-ABS_BITS` ([`REL_BITS`] = 80, [`ABS_BITS`] = 1280). That is enough to
+//!   give the error of a double in ulps to far better than `2^-10` ulps and the correctly rounded
+//!   double of the true value, subnormals included (the smallest subnormal is `2^-1074`).
+//! * [`ExactStop::OutsideDomain`]: exact division by zero, the exact square root of a negative
+//!   number, exact `0^n` with `n < 0`, or a precondition that is exactly false.
+//! * [`ExactStop::Undecided`]: a decision (a comparison of an `if` or of the precondition, the
+//!   sign of a divisor or of a square root's argument) or the output's accuracy could not be
+//!   settled up to [`MAX_PRECISION`] bits, and the exact zero test could not decide. Never a
+//!   guess.
+//! * [`ExactStop::TooLarge`]: an exact intermediate value would exceed
+//!   [`MAX_CONSTANT_BITS`](crate::expr::MAX_CONSTANT_BITS) bits (or an approximate one a binary
+//!   exponent of that size), the limit every constant of the workspace obeys.
+//!
+//! # Algorithm
+//! 1. **Rationals while possible** (the fast path): values are exact [`Rational`]s (the
+//!    workspace's fast rationals, inline `i128` parts when they fit) as long as no irrational
+//!    square root is involved; the square root of a rational that is the square of a rational
+//!    stays exact ([`Coefficient::try_sqrt`]). A program without irrational roots never leaves
+//!    this path and its results are exact.
+//! 2. **Intervals**: an irrational root becomes an enclosure with dyadic endpoints at working
+//!    precision `p` bits (`interval`, rounded outward); interval arithmetic propagates it, and
+//!    rational operands join it as enclosures of themselves. An operation that needs a decision
+//!    the enclosure cannot give (a divisor or a root's argument straddling zero, a comparison of
+//!    overlapping enclosures) stops the pass, as does an output enclosure not narrow enough for
+//!    the contract; the sample is then evaluated again from the start at `2p` bits, from
+//!    [`START_PRECISION`] up to [`MAX_PRECISION`].
+//! 3. **Exact zero test**: intervals can never prove that a quantity is zero. The first time a
+//!    pass is stopped by an undecidable decision (or by an output enclosure around zero), the
+//!    whole program is evaluated in the multi-quadratic field [`crate::Radical`] (exact sums of
+//!    `c sqrt(m)`, whose sign is decidable and whose square roots denest or fail): if every
+//!    root is representable there, every decision is exact and each output is either rational
+//!    (exact) or an irrational radical, refined with intervals until it meets the contract.
+//!    Otherwise refinement goes on, and at the cap the answer is `Undecided`.
+//!
+//! The walk itself is the one generic walk (`walk`) shared with the float side and the radical
+//! fallback.
+use super::interval::Iv;
+use super::walk::{eval_cond, eval_node, Domain};
+use super::{CmpOp, PowStyle, Program};
+use crate::expr::{Coefficient, MAX_CONSTANT_BITS};
+use crate::radical::Radical;
+use crate::rational::Rational;
+use exactcheck_core::{Field, OrderedField, Ring, Sign};
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use std::cmp::Ordering;
+
+/// Relative accuracy of an inexact [`Reference`]: `|value - true| <= 2^-REL_BITS |true|` (or the
+/// absolute bound [`ABS_BITS`]).
+pub const REL_BITS: u32 = 80;
+/// Absolute accuracy of an inexact [`Reference`]: `|value - true| <= 2^-ABS_BITS` (or the
+/// relative bound [`REL_BITS`]).
+pub const ABS_BITS: u32 = 1280;
+/// The working precision (bits) of the first interval pass.
+pub const START_PRECISION: u64 = 128;
+/// The largest working precision (bits); beyond it an undecided sample is [`ExactStop::Undecided`].
+pub const MAX_PRECISION: u64 = 1 << 14;
+
+/// The exact value of an output, or an approximation meeting the contract of `program::real`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Reference {
+    /// The value (exact, or within `2^-REL_BITS` relative or `2^-ABS_BITS` absolute).
+    pub value: BigRational,
+    /// Whether `value` is the true value.
+    pub exact: bool,
+}
+
+/// Why a sample has no exact reference.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, thiserror::Error)]
+pub enum ExactStop {
+    /// The inputs are outside the program's domain (exact division by zero, root of a negative
+    /// number, `0^n` with `n < 0`, or a false precondition).
+    #[error("outside the domain")]
+    OutsideDomain,
+    /// A decision could not be made up to the precision cap (`MAX_PRECISION` bits).
+    #[error("undecided up to the precision cap of {MAX_PRECISION} bits")]
+    Undecided,
+    /// An intermediate value exceeds the size limit (`MAX_CONSTANT_BITS` bits).
+    #[error("an intermediate value exceeds {MAX_CONSTANT_BITS} bits (limit MAX_CONSTANT_BITS)")]
+    TooLarge,
+}
+
+/// A value of the exact evaluation: a rational, or an enclosure of an irrational number.
+#[derive(Clone, Debug)]
+enum XV {
+    Exact(Rational),
+    Approx(Box<Iv>),
+}
+
+/// Why an interval pass stops.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Halt {
+    Outside,
+    TooLarge,
+    /// Try again at a higher precision; `ambiguous`: a decision (not just accuracy) was missing.
+    Refine {
+        ambiguous: bool,
+    },
+}
+
+/// The exact domain at working precision `p`.
+struct Real<'a> {
+    x: &'a [Rational],
+    p: u64,
+}
+
+/// `q` if its numerator and denominator have at most [`MAX_CONSTANT_BITS`] bits together.
+fn checked(q: Rational) -> Result<XV, Halt> {
+    if q.bits() <= MAX_CONSTANT_BITS {
+        Ok(XV::Exact(q))
+    } else {
+        Err(Halt::TooLarge)
+    }
+}
+
+fn approx(iv: Iv) -> Result<XV, Halt> {
+    if iv.max_exponent() > MAX_CONSTANT_BITS {
+        Err(Halt::TooLarge)
+    } else {
+        Ok(XV::Approx(Box::new(iv)))
+    }
+}
+
+const AMBIGUOUS: Halt = Halt::Refine { ambiguous: true };
+
+impl Real<'_> {
+    fn iv(&self, v: &XV) -> Iv {
+        match v {
+            XV::Exact(q) => Iv::from_rational(q, self.p),
+            XV::Approx(iv) => (**iv).clone(),
+        }
+    }
+
+    /// The sign of `v`; `Err(AMBIGUOUS)` if its enclosure straddles zero.
+    fn sign(&self, v: &XV) -> Result<Ordering, Halt> {
+        match v {
+            XV::Exact(q) => Ok(q.cmp(&Rational::ZERO)),
+            XV::Approx(iv) => iv.sign().ok_or(AMBIGUOUS),
+        }
+    }
+}
+
+impl Domain for Real<'_> {
+    type V = XV;
+    type Stop = Halt;
+
+    fn input(&mut self, i: usize) -> XV {
+        XV::Exact(self.x[i].clone())
+    }
+    fn constant(&mut self, q: &Rational) -> Result<XV, Halt> {
+        Ok(XV::Exact(q.clone()))
+    }
+    fn neg(&mut self, a: XV) -> Result<XV, Halt> {
+        Ok(match a {
+            XV::Exact(q) => XV::Exact(-q),
+            XV::Approx(iv) => XV::Approx(Box::new(iv.neg())),
+        })
+    }
+    fn add(&mut self, a: XV, b: XV) -> Result<XV, Halt> {
+        match (&a, &b) {
+            (XV::Exact(x), XV::Exact(y)) => checked(x + y),
+            _ => approx(Iv::add(&self.iv(&a), &self.iv(&b), self.p)),
+        }
+    }
+    fn sub(&mut self, a: XV, b: XV) -> Result<XV, Halt> {
+        match (&a, &b) {
+            (XV::Exact(x), XV::Exact(y)) => checked(x - y),
+            _ => approx(Iv::sub(&self.iv(&a), &self.iv(&b), self.p)),
+        }
+    }
+    fn mul(&mut self, a: XV, b: XV) -> Result<XV, Halt> {
+        match (&a, &b) {
+            (XV::Exact(x), XV::Exact(y)) => checked(x * y),
+            (XV::Exact(z), _) | (_, XV::Exact(z)) if z.is_zero() => Ok(XV::Exact(Rational::ZERO)),
+            _ => approx(Iv::mul(&self.iv(&a), &self.iv(&b), self.p)),
+        }
+    }
+    fn div(&mut self, a: XV, b: XV) -> Result<XV, Halt> {
+        match self.sign(&b)? {
+            Ordering::Equal => return Err(Halt::Outside),
+            Ordering::Less | Ordering::Greater => {}
+        }
+        match (&a, &b) {
+            (XV::Exact(x), XV::Exact(y)) => {
+                checked(x.checked_div(y).expect("the divisor's sign is not zero"))
+            }
+            (XV::Exact(z), _) if z.is_zero() => Ok(XV::Exact(Rational::ZERO)),
+            _ => approx(Iv::div(&self.iv(&a), &self.iv(&b), self.p)),
+        }
+    }
+    fn sqrt(&mut self, a: XV) -> Result<XV, Halt> {
+        match a {
+            XV::Exact(q) => {
+                if q.signum() == Sign::Negative {
+                    return Err(Halt::Outside);
+                }
+                match q.try_sqrt() {
+                    Some(r) => Ok(XV::Exact(r)),
+                    None => approx(Iv::sqrt(&Iv::from_rational(&q, self.p), self.p)),
+                }
+            }
+            XV::Approx(iv) => {
+                if iv.hi.sign() == Ordering::Less {
+                    Err(Halt::Outside)
+                } else if iv.lo.sign() == Ordering::Less {
+                    Err(AMBIGUOUS)
+                } else {
+                    approx(Iv::sqrt(&iv, self.p))
+                }
+            }
+        }
+    }
+    fn abs(&mut self, a: XV) -> Result<XV, Halt> {
+        Ok(match a {
+            XV::Exact(q) => XV::Exact(if q.signum() == Sign::Negative { -q } else { q }),
+            XV::Approx(iv) => XV::Approx(Box::new(iv.abs())),
+        })
+    }
+    fn fma(&mut self, a: XV, b: XV, c: XV) -> Result<XV, Halt> {
+        let ab = self.mul(a, b)?;
+        self.add(ab, c)
+    }
+    fn min(&mut self, a: XV, b: XV) -> Result<XV, Halt> {
+        match (&a, &b) {
+            (XV::Exact(x), XV::Exact(y)) => Ok(XV::Exact(x.min(y).clone())),
+            _ => approx(Iv::min(&self.iv(&a), &self.iv(&b))),
+        }
+    }
+    fn max(&mut self, a: XV, b: XV) -> Result<XV, Halt> {
+        match (&a, &b) {
+            (XV::Exact(x), XV::Exact(y)) => Ok(XV::Exact(x.max(y).clone())),
+            _ => approx(Iv::max(&self.iv(&a), &self.iv(&b))),
+        }
+    }
+    fn pow(&mut self, a: XV, n: i32, _style: PowStyle) -> Result<XV, Halt> {
+        match a {
+            XV::Exact(q) => {
+                if q.is_zero() && n < 0 {
+                    return Err(Halt::Outside);
+                }
+                // size_bits(q^k) >= k size_bits(q): refuse before computing.
+                if q.size_bits().saturating_mul(u64::from(n.unsigned_abs())) > MAX_CONSTANT_BITS {
+                    return Err(Halt::TooLarge);
+                }
+                checked(q.powi(n).expect("0^n with n < 0 is excluded above"))
+            }
+            XV::Approx(iv) => {
+                // Binary powering of the enclosure, then one division for n < 0.
+                let mut e = n.unsigned_abs();
+                let mut acc = XV::Exact(Rational::ONE);
+                let mut sq = XV::Approx(iv);
+                while e > 0 {
+                    if e & 1 == 1 {
+                        acc = self.mul(acc, sq.clone())?;
+                    }
+                    e >>= 1;
+                    if e > 0 {
+                        sq = self.mul(sq.clone(), sq)?;
+                    }
+                }
+                if n < 0 {
+                    self.div(XV::Exact(Rational::ONE), acc)
+                } else {
+                    Ok(acc)
+                }
+            }
+        }
+    }
+    fn compare(&mut self, op: CmpOp, a: &XV, b: &XV) -> Result<bool, Halt> {
+        let ord = match (a, b) {
+            (XV::Exact(x), XV::Exact(y)) => x.cmp(y),
+            _ => Iv::sub(&self.iv(a), &self.iv(b), self.p)
+                .sign()
+                .ok_or(AMBIGUOUS)?,
+        };
+        Ok(holds(op, ord))
+    }
+}
+
+/// Whether `a op b` holds when `a` compares to `b` as `ord`.
+fn holds(op: CmpOp, ord: Ordering) -> bool {
+    match op {
+        CmpOp::Lt => ord == Ordering::Less,
+        CmpOp::Le => ord != Ordering::Greater,
+        CmpOp::Gt => ord == Ordering::Greater,
+        CmpOp::Ge => ord != Ordering::Less,
+        CmpOp::Eq => ord == Ordering::Equal,
+        CmpOp::Ne => ord != Ordering::Equal,
+    }
+}
+
+// ------------------------------------------------------------------ the radical fallback
+
+/// Why the radical evaluation stops.
+enum RadStop {
+    /// Exactly outside the domain.
+    Outside,
+    /// A root that is not multi-quadratic (or not certifiable), or a value beyond the size
+    /// limit: the radical field cannot decide this sample.
+    Unrepresentable,
+}
+
+/// The multi-quadratic field [`Radical`] as an exact domain.
+struct Rad<'a> {
+    x: &'a [Rational],
+}
+
+fn rad_checked(r: Radical) -> Result<Radical, RadStop> {
+    if r.size_within(MAX_CONSTANT_BITS) {
+        Ok(r)
+    } else {
+        Err(RadStop::Unrepresentable)
+    }
+}
+
+impl Domain for Rad<'_> {
+    type V = Radical;
+    type Stop = RadStop;
+
+    fn input(&mut self, i: usize) -> Radical {
+        Radical::from(&self.x[i])
+    }
+    fn constant(&mut self, q: &Rational) -> Result<Radical, RadStop> {
+        Ok(Radical::from(q))
+    }
+    fn neg(&mut self, a: Radical) -> Result<Radical, RadStop> {
+        Ok(-a)
+    }
+    fn add(&mut self, a: Radical, b: Radical) -> Result<Radical, RadStop> {
+        rad_checked(a + b)
+    }
+    fn sub(&mut self, a: Radical, b: Radical) -> Result<Radical, RadStop> {
+        rad_checked(a - b)
+    }
+    fn mul(&mut self, a: Radical, b: Radical) -> Result<Radical, RadStop> {
+        rad_checked(a * b)
+    }
+    fn div(&mut self, a: Radical, b: Radical) -> Result<Radical, RadStop> {
+        let inv = b.inv().map_err(|_| RadStop::Outside)?;
+        rad_checked(a * inv)
+    }
+    fn sqrt(&mut self, a: Radical) -> Result<Radical, RadStop> {
+        if a.sign() == Sign::Negative {
+            return Err(RadStop::Outside);
+        }
+        a.try_sqrt().ok_or(RadStop::Unrepresentable)
+    }
+    fn abs(&mut self, a: Radical) -> Result<Radical, RadStop> {
+        Ok(if a.sign() == Sign::Negative { -a } else { a })
+    }
+    fn fma(&mut self, a: Radical, b: Radical, c: Radical) -> Result<Radical, RadStop> {
+        let ab = self.mul(a, b)?;
+        self.add(ab, c)
+    }
+    fn min(&mut self, a: Radical, b: Radical) -> Result<Radical, RadStop> {
+        Ok(a.min(b))
+    }
+    fn max(&mut self, a: Radical, b: Radical) -> Result<Radical, RadStop> {
+        Ok(a.max(b))
+    }
+    fn pow(&mut self, a: Radical, n: i32, _style: PowStyle) -> Result<Radical, RadStop> {
+        if a.is_zero() && n < 0 {
+            return Err(RadStop::Outside);
+        }
+        if a.size_bits().saturating_mul(u64::from(n.unsigned_abs())) > MAX_CONSTANT_BITS {
+            return Err(RadStop::Unrepresentable);
+        }
+        let p = rad_checked(Ring::pow(&a, n.unsigned_abs()))?;
+        if n < 0 {
+            p.inv().map_err(|_| RadStop::Outside)
+        } else {
+            Ok(p)
+        }
+    }
+    fn compare(&mut self, op: CmpOp, a: &Radical, b: &Radical) -> Result<bool, RadStop> {
+        Ok(holds(op, a.cmp(b)))
+    }
+}
+
+/// An inexact reference to an irrational radical, by interval refinement (the value is not
+/// zero, so the relative contract is reached).
+fn radical_reference(r: &Radical) -> Result<Reference, ExactStop> {
+    if let Some(q) = r.to_rational() {
+        return Ok(Reference {
+            value: q.to_big_rational(),
+            exact: true,
+        });
+    }
+    let mut p = START_PRECISION;
+    loop {
+        let mut sum: Option<Iv> = None;
+        for (m, c) in r.terms() {
+            let root = Iv::sqrt(
+                &Iv::from_rational(&Rational::from(BigInt::from(m.to_biguint())), p),
+                p,
+            );
+            let term = Iv::mul(&Iv::from_rational(c, p), &root, p);
+            sum = Some(match sum {
+                None => term,
+                Some(s) => Iv::add(&s, &term, p),
+            });
+        }
+        let iv = sum.expect("an irrational radical has terms");
+        if iv.narrow(REL_BITS, ABS_BITS) {
+            return Ok(Reference {
+                value: iv.midpoint(),
+                exact: false,
+            });
+        }
+        if p >= MAX_PRECISION {
+            return Err(ExactStop::Undecided);
+        }
+        p *= 2;
+    }
+}
+
+// ------------------------------------------------------------------ entry point
+
+/// The outcome of one interval pass.
+enum Pass {
+    Done(Vec<Reference>),
+    Refine { ambiguous: bool },
+}
+
+impl Program {
+    /// The true values of the outputs at the exact inputs `x` (one per input), exact where
+    /// rational and otherwise to the contract of `program::real` ([`REL_BITS`], [`ABS_BITS`]).
+    ///
+    /// # Errors
+    /// [`ExactStop::OutsideDomain`], [`ExactStop::Undecided`], [`ExactStop::TooLarge`] as
+    /// documented on [`ExactStop`].
+    ///
+    /// # Panics
+    /// When `x.len()` is not [`Program::arity`], or on a malformed program (a slot or input
+    /// index out of range; the compilers never build one).
+    pub fn eval_exact(&self, x: &[Rational]) -> Result<Vec<Reference>, ExactStop> {
+        assert_eq!(
+            x.len(),
+            self.inputs.len(),
+            "Program::eval_exact: {} values for {} inputs",
+            x.len(),
+            self.inputs.len()
+        );
+        let mut p = START_PRECISION;
+        let mut radical_tried = false;
+        loop {
+            let ambiguous = match self.interval_pass(x, p) {
+                Ok(Pass::Done(refs)) => return Ok(refs),
+                Ok(Pass::Refine { ambiguous }) | Err(Halt::Refine { ambiguous }) => ambiguous,
+                Err(Halt::Outside) => return Err(ExactStop::OutsideDomain),
+                Err(Halt::TooLarge) => return Err(ExactStop::TooLarge),
+            };
+            if ambiguous && !radical_tried {
+                radical_tried = true;
+                match self.radical_pass(x) {
+                    Ok(values) => return values.iter().map(radical_reference).collect(),
+                    Err(RadStop::Outside) => return Err(ExactStop::OutsideDomain),
+                    Err(RadStop::Unrepresentable) => {}
+                }
+            }
+            if p >= MAX_PRECISION {
+                return Err(ExactStop::Undecided);
+            }
+            p *= 2;
+        }
+    }
+
+    /// One evaluation at working precision `p`.
+    fn interval_pass(&self, x: &[Rational], p: u64) -> Result<Pass, Halt> {
+        let mut d = Real { x, p };
+        let mut slots = vec![XV::Exact(Rational::ZERO); self.slots];
+        if let Some(pre) = &self.pre {
+            if !eval_cond(&mut d, pre, &mut slots)? {
+                return Err(Halt::Outside);
+            }
+        }
+        let mut refs = Vec::with_capacity(self.outputs.len());
+        for node in &self.outputs {
+            match eval_node(&mut d, node, &mut slots)? {
+                XV::Exact(q) => refs.push(Reference {
+                    value: q.to_big_rational(),
+                    exact: true,
+                }),
+                XV::Approx(iv) => {
+                    if iv.is_point() {
+                        refs.push(Reference {
+                            value: iv.lo.to_big_rational(),
+                            exact: true,
+                        });
+                    } else if iv.narrow(REL_BITS, ABS_BITS) {
+                        refs.push(Reference {
+                            value: iv.midpoint(),
+                            exact: false,
+                        });
+                    } else {
+                        return Ok(Pass::Refine {
+                            ambiguous: iv.sign().is_none(),
+                        });
+                    }
+                }
+            }
+        }
+        Ok(Pass::Done(refs))
+    }
+
+    /// The whole program in the radical field: exact values, or why not.
+    fn radical_pass(&self, x: &[Rational]) -> Result<Vec<Radical>, RadStop> {
+        let mut d = Rad { x };
+        let mut slots = vec![Radical::default(); self.slots];
+        if let Some(pre) = &self.pre {
+            if !eval_cond(&mut d, pre, &mut slots)? {
+                return Err(RadStop::Outside);
+            }
+        }
+        self.outputs
+            .iter()
+            .map(|node| eval_node(&mut d, node, &mut slots))
+            .collect()
+    }
+}
