@@ -112,3 +112,5 @@ pub struct Program {
     /// The outputs (one or more).
     pub outputs: Vec<Node>,
 }
+
+pub mod fpcore;
