@@ -198,13 +198,15 @@ fn parse_one(lx: &mut Lexer<'_>) -> Result<SExpr, FpCoreError> {
             let mut s = String::new();
             loop {
                 match lx.bump() {
-                    None => return Err(error(
-                        lx.pos(),
-                        format!(
+                    None => {
+                        return Err(error(
+                            lx.pos(),
+                            format!(
                             "expected `\"` to end the string at {}:{}, found the end of the input",
                             pos.line, pos.col
                         ),
-                    )),
+                        ))
+                    }
                     Some('"') => return Ok(SExpr::Str(s, pos)),
                     Some('\\') => match lx.bump() {
                         Some('"') => s.push('"'),
