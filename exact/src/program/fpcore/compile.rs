@@ -36,6 +36,9 @@ fn unsupported(op: impl Into<String>) -> Fail {
     Fail::Unsupported(op.into())
 }
 
+/// The `(:key, value)` pairs of a property list.
+type Props<'a> = Vec<(&'a str, &'a SExpr)>;
+
 /// A compiled expression: a number or a truth value.
 #[derive(Clone, Debug)]
 enum Value {
@@ -114,18 +117,13 @@ fn property_pairs(props: &[SExpr]) -> Result<Vec<(&str, &SExpr)>, FpCoreError> {
 /// Checks the rounding-context properties: binary64 and round-to-nearest-even only.
 fn check_context(pairs: &[(&str, &SExpr)]) -> Result<(), Fail> {
     for (key, value) in pairs {
-        match *key {
-            ":precision" | ":type" => {
-                if value.sym() != Some("binary64") {
-                    return Err(unsupported(format!("precision {}", render(value))));
-                }
-            }
-            ":round" => {
-                if value.sym() != Some("nearestEven") {
-                    return Err(unsupported(format!("round {}", render(value))));
-                }
-            }
-            _ => {}
+        let (what, wanted) = match *key {
+            ":precision" | ":type" => ("precision", "binary64"),
+            ":round" => ("round", "nearestEven"),
+            _ => continue,
+        };
+        if value.sym() != Some(wanted) {
+            return Err(unsupported(format!("{what} {}", render(value))));
         }
     }
     Ok(())
@@ -798,7 +796,7 @@ impl Compiler {
 }
 
 /// The expression of `(! props... e)` and its property pairs.
-fn annotation(items: &[SExpr], pos: Pos) -> Result<(&SExpr, Vec<(&str, &SExpr)>), Fail> {
+fn annotation(items: &[SExpr], pos: Pos) -> Result<(&SExpr, Props<'_>), Fail> {
     let Some((e, props)) = items[1..].split_last() else {
         return Err(syntax(pos, "expected an expression in `(! ...)`"));
     };
