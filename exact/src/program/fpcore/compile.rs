@@ -493,7 +493,10 @@ impl Compiler {
                         }
                     }
                 }
-                None => rest.push(self.cond(c)?),
+                None => match self.cond(c)? {
+                    Cond::Bool(true) => {}
+                    other => rest.push(other),
+                },
             }
         }
         Ok(match rest.len() {

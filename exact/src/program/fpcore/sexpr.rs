@@ -22,6 +22,9 @@ use num_traits::{One, Zero};
 /// (decimal: 10^±330, binary: 2^±1100), so this leaves room for any sensible literal.
 pub(crate) const MAX_LITERAL_EXPONENT: i64 = 100_000;
 
+/// The deepest nesting of lists read; the parser and the compiler recurse once per level.
+pub(crate) const MAX_DEPTH: usize = 500;
+
 /// A position in the source: 1-based line and column (columns count characters).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) struct Pos {
@@ -147,13 +150,19 @@ pub(crate) fn parse_all(text: &str) -> Result<Vec<SExpr>, FpCoreError> {
         if lx.peek().is_none() {
             return Ok(out);
         }
-        out.push(parse_one(&mut lx)?);
+        out.push(parse_one(&mut lx, 0)?);
     }
 }
 
-fn parse_one(lx: &mut Lexer<'_>) -> Result<SExpr, FpCoreError> {
+fn parse_one(lx: &mut Lexer<'_>, depth: usize) -> Result<SExpr, FpCoreError> {
     lx.skip_blank();
     let pos = lx.pos();
+    if depth > MAX_DEPTH {
+        return Err(error(
+            pos,
+            format!("expected at most {MAX_DEPTH} nested lists (deeper nesting is refused rather than overflowing the stack)"),
+        ));
+    }
     match lx.peek() {
         None => Err(error(
             pos,
@@ -188,7 +197,7 @@ fn parse_one(lx: &mut Lexer<'_>) -> Result<SExpr, FpCoreError> {
                             ),
                         ))
                     }
-                    Some(_) => items.push(parse_one(lx)?),
+                    Some(_) => items.push(parse_one(lx, depth + 1)?),
                 }
             }
         }

@@ -401,6 +401,16 @@ fn syntax_errors_have_line_column_and_what_was_expected() {
             "{shown}"
         );
     }
+    // Nesting is limited instead of overflowing the stack.
+    let deep = format!(
+        "(FPCore (x) {}x{})",
+        "(- ".repeat(100_000),
+        ")".repeat(100_000)
+    );
+    let e = syntax_error(&deep);
+    assert!(e.message.contains("nested lists"), "{e}");
+    let fine = format!("(FPCore (x) {}x{})", "(- ".repeat(400), ")".repeat(400));
+    assert!(one(&fine).program.is_ok());
     // A later benchmark's syntax error fails the whole file.
     assert!(parse_file("(FPCore (x) x)\n(FPCore (x) (+ x 1 2))").is_err());
     // Mixed number/condition misuse.
@@ -490,6 +500,8 @@ fn pre_bounds_become_the_domain_and_the_rest_the_precondition() {
         bm.program.expect("supported").pre,
         Some(Cond::Cmp(CmpOp::Le, c(1), c(2)))
     );
+    // `TRUE` adds no precondition.
+    assert_eq!(program("(FPCore (x) :pre (and TRUE (>= x 0)) x)").pre, None);
     // Negated literals and `digits` are literals.
     let d = one("(FPCore (x) :pre (<= (- 2) x (digits 3 2 10)) x)").domain;
     assert_eq!(
