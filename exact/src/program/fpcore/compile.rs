@@ -87,21 +87,15 @@ fn list_items(e: &SExpr) -> Option<&[SExpr]> {
 
 /// Splits `props` (the elements of a `!` annotation or of a benchmark after its arguments)
 /// into `(:key, value)` pairs.
-fn property_pairs(props: &[SExpr]) -> Result<Vec<(&str, &SExpr)>, FpCoreError> {
+fn property_pairs(props: &[SExpr]) -> Result<Props<'_>, FpCoreError> {
     let mut out = Vec::new();
     let mut it = props.iter();
     while let Some(key) = it.next() {
-        let name = match key.sym() {
-            Some(k) if k.starts_with(':') && k.len() > 1 => k,
-            _ => {
-                return Err(err(
-                    key.pos(),
-                    format!(
-                        "expected a property `:name value`, found {}",
-                        key.describe()
-                    ),
-                ))
-            }
+        let Some(name) = key.sym().filter(|k| k.starts_with(':') && k.len() > 1) else {
+            // A stray datum where a property name belongs: skipped as metadata, since FPBench's
+            // own suite has one (`:cite (hamming-1987) herbie-2015` in hamming-ch3.fpcore). The
+            // properties that matter (`:pre`, `:precision`, ...) are all `:key value` pairs.
+            continue;
         };
         let Some(value) = it.next() else {
             return Err(err(
@@ -141,6 +135,30 @@ fn literal(e: &SExpr) -> Result<Option<Rational>, FpCoreError> {
         },
         _ => Ok(None),
     }
+}
+
+/// The exact value of a constant expression (literals under `+ - * /`), `None` when `e` is not
+/// one (or divides by zero). Used only to say why a `pow` exponent is unsupported.
+fn constant(e: &SExpr) -> Result<Option<Rational>, FpCoreError> {
+    if let Some(q) = literal(e)? {
+        return Ok(Some(q));
+    }
+    let Some(items) = list_items(e) else {
+        return Ok(None);
+    };
+    let (Some(op), [a, b]) = (items.first().and_then(SExpr::sym), &items[1..]) else {
+        return Ok(None);
+    };
+    let (Some(a), Some(b)) = (constant(a)?, constant(b)?) else {
+        return Ok(None);
+    };
+    Ok(match op {
+        "+" => Some(a + b),
+        "-" => Some(a - b),
+        "*" => Some(a * b),
+        "/" => a.checked_div(&b).ok(),
+        _ => None,
+    })
 }
 
 /// `(digits m e b)` = `m·b^e` exactly.
@@ -677,7 +695,12 @@ impl Compiler {
                         Err(_) => Err(unsupported("pow with an exponent beyond 32 bits")),
                     },
                     Some(_) => Err(unsupported("pow with a non-integer exponent")),
-                    None => Err(unsupported("pow with a non-literal exponent")),
+                    None => match constant(&args[1])? {
+                        Some(q) if !q.is_integer() => {
+                            Err(unsupported("pow with a non-integer exponent"))
+                        }
+                        _ => Err(unsupported("pow with a non-literal exponent")),
+                    },
                 }
             }
             "<" | "<=" | ">" | ">=" | "==" | "!=" => {

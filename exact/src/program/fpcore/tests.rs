@@ -312,6 +312,8 @@ fn unsupported_operations_mark_only_their_benchmark() {
         ("(hypot x y)", "hypot"),
         ("(pow x 0.5)", "pow with a non-integer exponent"),
         ("(pow x y)", "pow with a non-literal exponent"),
+        ("(pow x (/ 1 3))", "pow with a non-integer exponent"),
+        ("(pow x (/ 4 2))", "pow with a non-literal exponent"),
         ("(pow x 1e10)", "pow with an exponent beyond 32 bits"),
         ("(! :precision binary32 (+ x y))", "precision binary32"),
         ("(! :precision real (+ x y))", "precision real"),
@@ -346,7 +348,13 @@ fn unsupported_operations_mark_only_their_benchmark() {
 
 #[test]
 fn syntax_errors_have_line_column_and_what_was_expected() {
-    let cases: [(&str, usize, usize, &str); 12] = [
+    let cases: Vec<(&str, usize, usize, &str)> = vec![
+        (
+            "(FPCore (x) :pre x)",
+            1,
+            13,
+            "expected a value after the property `:pre`",
+        ),
         (
             "(FPCore (x)\n  (+ x 1)",
             2,
@@ -431,6 +439,13 @@ fn comments_strings_and_properties() {
     assert_eq!(bm.line, 2);
     assert_eq!(program(text).outputs[0], Node::Add(b(x(0)), b(c(1))));
     assert!(parse_file("").expect("empty file").is_empty());
+    // A stray datum among the properties is skipped (FPBench's hamming-ch3.fpcore has
+    // `:cite (hamming-1987) herbie-2015`).
+    let bm = one("(FPCore (x) :cite (hamming-1987) herbie-2015 :pre (!= x 0) (/ 1 x))");
+    assert_eq!(
+        bm.program.expect("supported").pre,
+        Some(Cond::Cmp(CmpOp::Ne, x(0), c(0)))
+    );
 }
 
 #[test]
