@@ -1,16 +1,17 @@
 //! The s-expression layer of the FPCore reader: characters -> tokens -> trees, every tree node
 //! carrying the line and column where it starts.
 //!
-//! Tokens (FPCore 2.0, "Syntax"): `(` `)` `[` `]` (brackets are parentheses that must close with
-//! their own kind), strings `"..."` with the escapes `\"` and `\\` (plus the C escapes `\n`,
-//! `\t`, `\r`; any other backslash pair is kept as written), comments from `;` to the end of
-//! the line, and atoms: maximal runs of the remaining characters. An atom is a number when it
-//! matches one of the three number forms of the standard — rational `[+-]?[0-9]+/[0-9]*[1-9][0-9]*`,
-//! decimal `[-+]?([0-9]+(\.[0-9]+)?|\.[0-9]+)(e[-+]?[0-9]+)?` and hexadecimal
-//! `[+-]?0x([0-9a-f]+(\.[0-9a-f]+)?|\.[0-9a-f]+)(p[-+]?[0-9]+)?` (case-insensitive) — and is read
-//! into the exact [`Rational`] it denotes; otherwise it must be a symbol
-//! (`[a-zA-Z~!@$%^&*_\-+=<>.?/:][a-zA-Z0-9~!@$%^&*_\-+=<>.?/:]*`). An atom that starts like a
-//! number but is not one (`1.2.3`, `12abc`) is a syntax error rather than a symbol.
+//! Tokens (FPCore 2.0, "Syntax"): `(` `)` `[` `]` (brackets are parentheses that must close
+//! with their own kind), strings `"..."` with the escapes `\"` and `\\` (plus the C escapes
+//! `\n`, `\t`, `\r`; any other backslash pair is kept as written), comments from `;` to the end
+//! of the line, and atoms: maximal runs of the remaining characters. An atom is a number when
+//! it matches one of the three number forms of the standard — rational
+//! `[+-]?[0-9]+/[0-9]*[1-9][0-9]*`, decimal `[-+]?([0-9]+(\.[0-9]+)?|\.[0-9]+)(e[-+]?[0-9]+)?`
+//! and hexadecimal `[+-]?0x([0-9a-f]+(\.[0-9a-f]+)?|\.[0-9a-f]+)(p[-+]?[0-9]+)?`
+//! (case-insensitive) — and is read into the exact [`Rational`] it denotes; otherwise it must
+//! be a symbol (`[a-zA-Z~!@$%^&*_\-+=<>.?/:][a-zA-Z0-9~!@$%^&*_\-+=<>.?/:]*`, letters also
+//! non-ASCII). An atom that starts like a number but is not one (`1.2.3`, `12abc`) is a syntax
+//! error rather than a symbol. Lists nest at most [`MAX_DEPTH`] deep.
 use super::FpCoreError;
 use crate::rational::Rational;
 use num_bigint::BigInt;
@@ -133,8 +134,11 @@ fn is_delimiter(c: char) -> bool {
     c.is_whitespace() || matches!(c, '(' | ')' | '[' | ']' | '"' | ';')
 }
 
+/// The standard's symbol characters: "letters, digits, or characters from the set
+/// `~!@$%^&*_-+=<>.?/:`" — letters taken in the Unicode sense (some published benchmarks use
+/// Greek names), the standard's regular expression being its ASCII form.
 fn is_symbol_char(c: char) -> bool {
-    c.is_ascii_alphanumeric() || "~!@$%^&*_-+=<>.?/:".contains(c)
+    c.is_alphanumeric() || "~!@$%^&*_-+=<>.?/:".contains(c)
 }
 
 /// Parses the whole text into its top-level s-expressions.

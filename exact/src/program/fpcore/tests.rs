@@ -439,6 +439,10 @@ fn comments_strings_and_properties() {
     assert_eq!(bm.line, 2);
     assert_eq!(program(text).outputs[0], Node::Add(b(x(0)), b(c(1))));
     assert!(parse_file("").expect("empty file").is_empty());
+    // Non-ASCII letters in symbols; other characters are refused.
+    assert_eq!(program("(FPCore (α β) (+ α β))").inputs, vec!["α", "β"]);
+    let e = syntax_error("(FPCore (x) (+ x#y 1))");
+    assert!(e.message.contains("the character `#`"), "{e}");
     // A stray datum among the properties is skipped (FPBench's hamming-ch3.fpcore has
     // `:cite (hamming-1987) herbie-2015`).
     let bm = one("(FPCore (x) :cite (hamming-1987) herbie-2015 :pre (!= x 0) (/ 1 x))");
