@@ -103,12 +103,30 @@ pub struct Domain {
 
 impl Domain {
     /// The generator of these intervals, one per input. Inputs are named `x0`, `x1`, ... in
-    /// [`InputGen::describe`] until [`Domain::with_names`] names them.
+    /// errors and in [`InputGen::describe`] ([`Domain::named`] names them).
     ///
     /// # Errors
     /// When an interval contains no finite double, naming the coordinate.
     pub fn new(intervals: Vec<Interval>) -> Result<Domain, GenError> {
         let names: Vec<String> = (0..intervals.len()).map(|i| format!("x{i}")).collect();
+        Domain::named(intervals, &names)
+    }
+
+    /// The generator of these intervals, one per input, with the inputs' names (for errors and
+    /// [`InputGen::describe`]).
+    ///
+    /// # Errors
+    /// When the number of names is not the number of intervals, or when an interval contains
+    /// no finite double, naming the input.
+    pub fn named(intervals: Vec<Interval>, names: &[String]) -> Result<Domain, GenError> {
+        if names.len() != intervals.len() {
+            return Err(GenError(format!(
+                "{} names for a domain of {} inputs",
+                names.len(),
+                intervals.len()
+            )));
+        }
+        let names = names.to_vec();
         let mut draws = Vec::with_capacity(intervals.len());
         for (i, iv) in intervals.iter().enumerate() {
             let empty = || {
@@ -570,6 +588,16 @@ mod tests {
         ])
         .expect_err("1/3 is not a double");
         assert!(e.0.contains("input 1 (x1)"), "{e}");
+        let e = Domain::named(
+            vec![Interval::UNBOUNDED, iv(cl(3), cl(2))],
+            &names(&["x", "y"]),
+        )
+        .expect_err("3 > 2");
+        assert!(
+            e.0.contains("input 1 (y) has no finite double in [3, 2]"),
+            "{e}"
+        );
+        assert!(Domain::named(vec![Interval::UNBOUNDED], &names(&["x", "y"])).is_err());
         assert!(Domain::new(vec![iv(
             Bound::Open(Rational::ZERO),
             Bound::Open(Rational::ZERO)

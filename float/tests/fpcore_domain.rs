@@ -41,9 +41,7 @@ fn fpcore_preconditions_drive_the_sampler() {
     for bm in &benches {
         let program = bm.program.as_ref().expect("supported");
         assert_eq!(program.pre, None, "all of :pre is interval bounds");
-        let dom = Domain::new(bm.domain.clone())
-            .and_then(|d| d.with_names(&bm.args))
-            .expect("non-empty domain");
+        let dom = Domain::named(bm.domain.clone(), &bm.args).expect("non-empty domain");
         assert_eq!(dom.arity(), bm.args.len());
         for _ in 0..5000 {
             let s = dom.sample(&mut rng);
