@@ -8,6 +8,8 @@
 //!   for [`exactcheck_exact::PlainRational`].
 //! * [`gen`] — the input generators, drawing from the workspace's one generator [`Rng`]
 //!   ([`UniformBox`], [`LogUniform`], [`NearDegenerate`] around [`Fixed`] or [`Diagonal`] points).
+//! * [`domain`] — [`Domain`]: inputs sampled inside exact [`Interval`]s (FPCore's `:pre`,
+//!   `--domain` text read by [`parse_domain`]), one-sided ranges uniformly over the doubles.
 //! * [`harness`] — [`regress`]: a [`Formula`] written once generic over the scalar is run in
 //!   `f64` and exactly on the same random inputs; the [`Report`] gives max/median/mean errors in
 //!   ulps and relative terms, threshold counts, and the worst inputs, shrunk to short
@@ -24,6 +26,7 @@
 #![warn(missing_docs)]
 
 pub mod convert;
+pub mod domain;
 pub mod gen;
 pub mod harness;
 pub mod json;
@@ -38,6 +41,7 @@ pub use convert::{
     binary_exponent, f64_to_rational, pow2, rational_to_f64, rel_error, round_to_bits,
     significant_bits, ulp, ulps_error,
 };
+pub use domain::{parse_domain, Bound, Domain, Interval};
 pub use exactcheck_core::rng::{self, Rng};
 pub use gen::{Diagonal, Fixed, GenError, InputGen, LogUniform, NearDegenerate, UniformBox};
 pub use harness::{

@@ -23,6 +23,7 @@ use crate::rational::Rational;
 
 mod compile;
 mod float;
+pub mod fpcore;
 mod interval;
 mod real;
 #[cfg(test)]

@@ -1,0 +1,869 @@
+//! From s-expressions to [`Benchmark`]s: the benchmark's frame (identifier, arguments,
+//! properties, body), the domain extracted from `:pre`, and the expression compiler with its
+//! scopes (see the parent module for the supported subset).
+use super::sexpr::{pow_rational, Pos, SExpr, MAX_LITERAL_EXPONENT};
+use super::{Benchmark, Bound, FpCoreError, Interval, Unsupported};
+use crate::program::{CmpOp, Cond, Node, PowStyle, Program};
+use crate::rational::Rational;
+use num_bigint::BigInt;
+
+/// Why compiling stopped: a malformed benchmark (an error for the whole file) or a construct
+/// outside the supported subset (only this benchmark).
+enum Fail {
+    Syntax(FpCoreError),
+    Unsupported(String),
+}
+
+impl From<FpCoreError> for Fail {
+    fn from(e: FpCoreError) -> Fail {
+        Fail::Syntax(e)
+    }
+}
+
+fn syntax(pos: Pos, message: impl Into<String>) -> Fail {
+    Fail::Syntax(err(pos, message))
+}
+
+fn err(pos: Pos, message: impl Into<String>) -> FpCoreError {
+    FpCoreError {
+        line: pos.line,
+        col: pos.col,
+        message: message.into(),
+    }
+}
+
+fn unsupported(op: impl Into<String>) -> Fail {
+    Fail::Unsupported(op.into())
+}
+
+/// The `(:key, value)` pairs of a property list.
+type Props<'a> = Vec<(&'a str, &'a SExpr)>;
+
+/// A compiled expression: a number or a truth value.
+#[derive(Clone, Debug)]
+enum Value {
+    Num(Node),
+    Bool(Cond),
+}
+
+/// The mathematical constants of FPCore 2.0 (all irrational or non-finite: unsupported).
+const CONSTANTS: &[&str] = &[
+    "E",
+    "LOG2E",
+    "LOG10E",
+    "LN2",
+    "LN10",
+    "PI",
+    "PI_2",
+    "PI_4",
+    "M_1_PI",
+    "M_2_PI",
+    "M_2_SQRTPI",
+    "SQRT2",
+    "SQRT1_2",
+    "INFINITY",
+    "NAN",
+];
+
+/// A one-line rendering of a datum (for `not supported: precision ...`).
+fn render(e: &SExpr) -> String {
+    match e {
+        SExpr::Num(q, _) => q.to_string(),
+        SExpr::Sym(s, _) => s.clone(),
+        SExpr::Str(s, _) => format!("{s:?}"),
+        SExpr::List(items, _) => {
+            let inner: Vec<String> = items.iter().map(render).collect();
+            format!("({})", inner.join(" "))
+        }
+    }
+}
+
+fn list_items(e: &SExpr) -> Option<&[SExpr]> {
+    match e {
+        SExpr::List(items, _) => Some(items),
+        _ => None,
+    }
+}
+
+/// Splits `props` (the elements of a `!` annotation or of a benchmark after its arguments)
+/// into `(:key, value)` pairs.
+fn property_pairs(props: &[SExpr]) -> Result<Props<'_>, FpCoreError> {
+    let mut out = Vec::new();
+    let mut it = props.iter();
+    while let Some(key) = it.next() {
+        let Some(name) = key.sym().filter(|k| k.starts_with(':') && k.len() > 1) else {
+            // A stray datum where a property name belongs: skipped as metadata, since FPBench's
+            // own suite has one (`:cite (hamming-1987) herbie-2015` in hamming-ch3.fpcore). The
+            // properties that matter (`:pre`, `:precision`, ...) are all `:key value` pairs.
+            continue;
+        };
+        let Some(value) = it.next() else {
+            return Err(err(
+                key.pos(),
+                format!("expected a value after the property `{name}`"),
+            ));
+        };
+        out.push((name, value));
+    }
+    Ok(out)
+}
+
+/// Checks the rounding-context properties: binary64 and round-to-nearest-even only.
+fn check_context(pairs: &[(&str, &SExpr)]) -> Result<(), Fail> {
+    for (key, value) in pairs {
+        let (what, wanted) = match *key {
+            ":precision" | ":type" => ("precision", "binary64"),
+            ":round" => ("round", "nearestEven"),
+            _ => continue,
+        };
+        if value.sym() != Some(wanted) {
+            return Err(unsupported(format!("{what} {}", render(value))));
+        }
+    }
+    Ok(())
+}
+
+/// The value of a literal: a number, `(digits m e b)`, `(- literal)` or `(! props literal)`.
+/// `Ok(None)` when `e` is not a literal.
+fn literal(e: &SExpr) -> Result<Option<Rational>, FpCoreError> {
+    match e {
+        SExpr::Num(q, _) => Ok(Some(q.clone())),
+        SExpr::List(items, pos) => match items.first().and_then(SExpr::sym) {
+            Some("digits") => digits(&items[1..], *pos).map(Some),
+            Some("-") if items.len() == 2 => Ok(literal(&items[1])?.map(|q| -q)),
+            _ => Ok(None),
+        },
+        _ => Ok(None),
+    }
+}
+
+/// The exact value of a constant expression (literals under `+ - * /`), `None` when `e` is not
+/// one (or divides by zero). Used only to say why a `pow` exponent is unsupported.
+fn constant(e: &SExpr) -> Result<Option<Rational>, FpCoreError> {
+    if let Some(q) = literal(e)? {
+        return Ok(Some(q));
+    }
+    let Some(items) = list_items(e) else {
+        return Ok(None);
+    };
+    let (Some(op), [a, b]) = (items.first().and_then(SExpr::sym), &items[1..]) else {
+        return Ok(None);
+    };
+    let (Some(a), Some(b)) = (constant(a)?, constant(b)?) else {
+        return Ok(None);
+    };
+    Ok(match op {
+        "+" => Some(a + b),
+        "-" => Some(a - b),
+        "*" => Some(a * b),
+        "/" => a.checked_div(&b).ok(),
+        _ => None,
+    })
+}
+
+/// `(digits m e b)` = `m·b^e` exactly.
+fn digits(args: &[SExpr], pos: Pos) -> Result<Rational, FpCoreError> {
+    let ints: Vec<BigInt> = args
+        .iter()
+        .filter_map(|a| match a {
+            SExpr::Num(q, _) if q.is_integer() => Some(q.numer()),
+            _ => None,
+        })
+        .collect();
+    if args.len() != 3 || ints.len() != 3 {
+        return Err(err(
+            pos,
+            "expected `(digits m e b)` with three integers (significand, exponent, base)",
+        ));
+    }
+    let exp = i64::try_from(&ints[1])
+        .ok()
+        .filter(|e| e.abs() <= MAX_LITERAL_EXPONENT);
+    let base = u32::try_from(&ints[2]).ok().filter(|&b| b >= 2);
+    match (exp, base) {
+        (Some(e), Some(b)) => Ok(Rational::from(
+            num_rational::BigRational::from_integer(ints[0].clone()) * pow_rational(b, e),
+        )),
+        (None, _) => Err(err(
+            pos,
+            format!("the exponent of `(digits ...)` is beyond ±{MAX_LITERAL_EXPONENT}"),
+        )),
+        (_, None) => Err(err(
+            pos,
+            "the base of `(digits m e b)` must be an integer >= 2",
+        )),
+    }
+}
+
+/// Compiles one top-level s-expression, which must be `(FPCore ...)`.
+pub(super) fn benchmark(tree: &SExpr) -> Result<Benchmark, FpCoreError> {
+    let items = match tree {
+        SExpr::List(items, _) if items.first().and_then(SExpr::sym) == Some("FPCore") => items,
+        other => {
+            return Err(err(
+                other.pos(),
+                format!("expected `(FPCore ...)`, found {}", other.describe()),
+            ))
+        }
+    };
+    let open = tree.pos();
+    let mut k = 1;
+    let ident = match items.get(k) {
+        Some(SExpr::Sym(s, _)) => {
+            k += 1;
+            Some(s.clone())
+        }
+        _ => None,
+    };
+    let arg_list = match items.get(k) {
+        Some(SExpr::List(a, _)) => a,
+        Some(other) => {
+            return Err(err(
+                other.pos(),
+                format!(
+                    "expected the argument list `(x ...)`, found {}",
+                    other.describe()
+                ),
+            ))
+        }
+        None => {
+            return Err(err(
+                open,
+                "expected the argument list `(x ...)` after `FPCore`",
+            ))
+        }
+    };
+    k += 1;
+    let Some((body, props)) = items[k..].split_last() else {
+        return Err(err(
+            open,
+            "expected the benchmark's body after its arguments",
+        ));
+    };
+    if let Some(key) = body.sym().filter(|s| s.starts_with(':')) {
+        return Err(err(
+            body.pos(),
+            format!("expected a value after the property `{key}`, then the benchmark's body"),
+        ));
+    }
+    let props = property_pairs(props)?;
+
+    // Arguments: names, plus the first unsupported annotation if any.
+    let mut args: Vec<String> = Vec::new();
+    let mut arg_unsupported: Option<String> = None;
+    for a in arg_list {
+        let (name, problem) = argument(a)?;
+        if args.contains(&name) {
+            return Err(err(a.pos(), format!("duplicate argument `{name}`")));
+        }
+        args.push(name);
+        if arg_unsupported.is_none() {
+            arg_unsupported = problem;
+        }
+    }
+
+    let mut name = None;
+    let mut pre = None;
+    for (key, value) in &props {
+        match *key {
+            ":name" => {
+                name = Some(match value {
+                    SExpr::Str(s, _) | SExpr::Sym(s, _) => s.clone(),
+                    other => render(other),
+                })
+            }
+            ":pre" => pre = Some(*value),
+            _ => {}
+        }
+    }
+
+    let domain = match pre {
+        Some(p) => domain(p, &args)?,
+        None => vec![Interval::UNBOUNDED; args.len()],
+    };
+
+    let display = name
+        .clone()
+        .or_else(|| ident.clone())
+        .unwrap_or_else(|| format!("FPCore at line {}", open.line));
+    let compiled = match arg_unsupported {
+        Some(op) => Err(unsupported(op)),
+        None => check_context(&props).and_then(|()| {
+            let mut c = Compiler {
+                slots: 0,
+                env: args
+                    .iter()
+                    .enumerate()
+                    .map(|(i, n)| (n.clone(), Value::Num(Node::Input(i))))
+                    .collect(),
+            };
+            let pre = match pre {
+                Some(p) => c.precondition(p, &args)?,
+                None => None,
+            };
+            let outputs = c.outputs(body)?;
+            Ok(Program {
+                name: display,
+                inputs: args.clone(),
+                slots: c.slots,
+                pre,
+                outputs,
+            })
+        }),
+    };
+    let program = match compiled {
+        Ok(p) => Ok(p),
+        Err(Fail::Unsupported(op)) => Err(Unsupported { op }),
+        Err(Fail::Syntax(e)) => return Err(e),
+    };
+    Ok(Benchmark {
+        name,
+        ident,
+        line: open.line,
+        args,
+        program,
+        domain,
+    })
+}
+
+/// One argument: `x`, `(! props x)`, or a tensor `(x dims...)` / `(! props x dims...)`.
+/// Returns the name and what is unsupported about it, if anything.
+fn argument(a: &SExpr) -> Result<(String, Option<String>), FpCoreError> {
+    match a {
+        SExpr::Sym(s, _) => Ok((s.clone(), None)),
+        SExpr::List(items, pos) => {
+            let (props, rest) = if items.first().and_then(SExpr::sym) == Some("!") {
+                // `(! :p v ... name dims...)`: properties come in pairs before the name.
+                let mut j = 1;
+                while items
+                    .get(j)
+                    .and_then(SExpr::sym)
+                    .is_some_and(|s| s.starts_with(':'))
+                {
+                    j += 2;
+                }
+                let j = j.min(items.len());
+                (property_pairs(&items[1..j])?, &items[j..])
+            } else {
+                (Vec::new(), &items[..])
+            };
+            let Some(name) = rest.first().and_then(SExpr::sym) else {
+                return Err(err(*pos, "expected an argument name"));
+            };
+            let mut problem = match check_context(&props) {
+                Err(Fail::Unsupported(op)) => Some(op),
+                _ => None,
+            };
+            if rest.len() > 1 && problem.is_none() {
+                problem = Some("tensor".to_string());
+            }
+            Ok((name.to_string(), problem))
+        }
+        other => Err(err(
+            other.pos(),
+            format!("expected an argument name, found {}", other.describe()),
+        )),
+    }
+}
+
+/// The conjuncts of a precondition: nested `and`s flattened.
+fn conjuncts<'a>(e: &'a SExpr, out: &mut Vec<&'a SExpr>) {
+    if let SExpr::List(items, _) = e {
+        if items.first().and_then(SExpr::sym) == Some("and") {
+            for c in &items[1..] {
+                conjuncts(c, out);
+            }
+            return;
+        }
+    }
+    out.push(e);
+}
+
+fn cmp_op(s: &str) -> Option<CmpOp> {
+    Some(match s {
+        "<" => CmpOp::Lt,
+        "<=" => CmpOp::Le,
+        ">" => CmpOp::Gt,
+        ">=" => CmpOp::Ge,
+        "==" => CmpOp::Eq,
+        "!=" => CmpOp::Ne,
+        _ => return None,
+    })
+}
+
+/// One adjacent pair of an ordered comparison chain of a `:pre` conjunct.
+enum PrePair<'a> {
+    /// `arg op literal`, normalized with the argument on the left.
+    Bound(usize, CmpOp, Rational),
+    /// Anything else: a condition.
+    Other(CmpOp, &'a SExpr, &'a SExpr),
+}
+
+/// The pairs of a comparison-chain conjunct (`None` for any other conjunct, and for `!=`, which
+/// is never an interval bound).
+fn pre_pairs<'a>(e: &'a SExpr, args: &[String]) -> Result<Option<Vec<PrePair<'a>>>, FpCoreError> {
+    let Some(items) = list_items(e) else {
+        return Ok(None);
+    };
+    let Some(op) = items.first().and_then(SExpr::sym).and_then(cmp_op) else {
+        return Ok(None);
+    };
+    if op == CmpOp::Ne || items.len() < 3 {
+        return Ok(None);
+    }
+    let arg = |x: &SExpr| x.sym().and_then(|s| args.iter().position(|a| a == s));
+    let mut out = Vec::new();
+    for w in items[1..].windows(2) {
+        let (a, b) = (&w[0], &w[1]);
+        let pair = match (arg(a), literal(b)?, literal(a)?, arg(b)) {
+            (Some(i), Some(q), _, _) => PrePair::Bound(i, op, q),
+            (_, _, Some(q), Some(i)) => PrePair::Bound(i, flip(op), q),
+            _ => PrePair::Other(op, a, b),
+        };
+        out.push(pair);
+    }
+    Ok(Some(out))
+}
+
+/// `a op b` <=> `b flip(op) a`.
+fn flip(op: CmpOp) -> CmpOp {
+    match op {
+        CmpOp::Lt => CmpOp::Gt,
+        CmpOp::Le => CmpOp::Ge,
+        CmpOp::Gt => CmpOp::Lt,
+        CmpOp::Ge => CmpOp::Le,
+        CmpOp::Eq => CmpOp::Eq,
+        CmpOp::Ne => CmpOp::Ne,
+    }
+}
+
+/// Is `new` a tighter lower bound than `old`?
+fn tighter_lo(new: &Bound, old: &Bound) -> bool {
+    match (new.value(), old.value()) {
+        (None, _) => false,
+        (Some(_), None) => true,
+        (Some(n), Some(o)) => n > o || (n == o && matches!(new, Bound::Open(_))),
+    }
+}
+
+/// Is `new` a tighter upper bound than `old`?
+fn tighter_hi(new: &Bound, old: &Bound) -> bool {
+    match (new.value(), old.value()) {
+        (None, _) => false,
+        (Some(_), None) => true,
+        (Some(n), Some(o)) => n < o || (n == o && matches!(new, Bound::Open(_))),
+    }
+}
+
+/// The sampling intervals given by the interval bounds of `:pre`.
+fn domain(pre: &SExpr, args: &[String]) -> Result<Vec<Interval>, FpCoreError> {
+    let mut dom = vec![Interval::UNBOUNDED; args.len()];
+    let mut cs = Vec::new();
+    conjuncts(pre, &mut cs);
+    for c in cs {
+        for pair in pre_pairs(c, args)?.unwrap_or_default() {
+            let PrePair::Bound(i, op, q) = pair else {
+                continue;
+            };
+            let (lo, hi) = match op {
+                CmpOp::Lt => (None, Some(Bound::Open(q))),
+                CmpOp::Le => (None, Some(Bound::Closed(q))),
+                CmpOp::Gt => (Some(Bound::Open(q)), None),
+                CmpOp::Ge => (Some(Bound::Closed(q)), None),
+                CmpOp::Eq => (Some(Bound::Closed(q.clone())), Some(Bound::Closed(q))),
+                CmpOp::Ne => unreachable!("`!=` is never split into bounds"),
+            };
+            if let Some(lo) = lo {
+                if tighter_lo(&lo, &dom[i].lo) {
+                    dom[i].lo = lo;
+                }
+            }
+            if let Some(hi) = hi {
+                if tighter_hi(&hi, &dom[i].hi) {
+                    dom[i].hi = hi;
+                }
+            }
+        }
+    }
+    Ok(dom)
+}
+
+/// The expression compiler: the slot counter and the scope (innermost binding last).
+struct Compiler {
+    slots: usize,
+    env: Vec<(String, Value)>,
+}
+
+impl Compiler {
+    /// The part of `:pre` that is not interval bounds, as one condition.
+    fn precondition(&mut self, pre: &SExpr, args: &[String]) -> Result<Option<Cond>, Fail> {
+        let mut cs = Vec::new();
+        conjuncts(pre, &mut cs);
+        let mut rest = Vec::new();
+        for c in cs {
+            match pre_pairs(c, args)? {
+                Some(pairs) => {
+                    for pair in pairs {
+                        if let PrePair::Other(op, a, b) = pair {
+                            let a = self.num(a)?;
+                            let b = self.num(b)?;
+                            rest.push(Cond::Cmp(op, a, b));
+                        }
+                    }
+                }
+                None => match self.cond(c)? {
+                    Cond::Bool(true) => {}
+                    other => rest.push(other),
+                },
+            }
+        }
+        Ok(match rest.len() {
+            0 => None,
+            1 => rest.pop(),
+            _ => Some(Cond::And(rest)),
+        })
+    }
+
+    /// The outputs of the body: one, or one per element of a top-level `(array ...)`.
+    fn outputs(&mut self, body: &SExpr) -> Result<Vec<Node>, Fail> {
+        if let SExpr::List(items, _) = body {
+            match items.first().and_then(SExpr::sym) {
+                Some("array") => return items[1..].iter().map(|e| self.num(e)).collect(),
+                Some("!") => {
+                    let (e, pairs) = annotation(items, body.pos())?;
+                    check_context(&pairs)?;
+                    return self.outputs(e);
+                }
+                _ => {}
+            }
+        }
+        match self.expr(body)? {
+            Value::Num(n) => Ok(vec![n]),
+            Value::Bool(_) => Err(unsupported("boolean result")),
+        }
+    }
+
+    fn num(&mut self, e: &SExpr) -> Result<Node, Fail> {
+        match self.expr(e)? {
+            Value::Num(n) => Ok(n),
+            Value::Bool(_) => Err(syntax(
+                e.pos(),
+                format!("expected a number, found a truth value ({})", e.describe()),
+            )),
+        }
+    }
+
+    fn cond(&mut self, e: &SExpr) -> Result<Cond, Fail> {
+        match self.expr(e)? {
+            Value::Bool(c) => Ok(c),
+            Value::Num(_) => Err(syntax(
+                e.pos(),
+                format!("expected a condition, found a number ({})", e.describe()),
+            )),
+        }
+    }
+
+    fn expr(&mut self, e: &SExpr) -> Result<Value, Fail> {
+        match e {
+            SExpr::Num(q, _) => Ok(Value::Num(Node::Const(q.clone()))),
+            SExpr::Str(..) => Err(syntax(
+                e.pos(),
+                format!("expected an expression, found {}", e.describe()),
+            )),
+            SExpr::Sym(s, pos) => {
+                if let Some((_, v)) = self.env.iter().rev().find(|(n, _)| n == s) {
+                    return Ok(v.clone());
+                }
+                match s.as_str() {
+                    "TRUE" => Ok(Value::Bool(Cond::Bool(true))),
+                    "FALSE" => Ok(Value::Bool(Cond::Bool(false))),
+                    c if CONSTANTS.contains(&c) => Err(unsupported(c)),
+                    _ => Err(syntax(*pos, format!("unbound variable `{s}`"))),
+                }
+            }
+            SExpr::List(items, pos) => self.application(items, *pos),
+        }
+    }
+
+    fn application(&mut self, items: &[SExpr], pos: Pos) -> Result<Value, Fail> {
+        let Some(head) = items.first() else {
+            return Err(syntax(pos, "expected an operation, found `()`"));
+        };
+        let Some(op) = head.sym() else {
+            return Err(syntax(
+                head.pos(),
+                format!("expected an operation name, found {}", head.describe()),
+            ));
+        };
+        let args = &items[1..];
+        let arity = |n: usize| -> Result<(), Fail> {
+            if args.len() == n {
+                Ok(())
+            } else {
+                Err(syntax(
+                    pos,
+                    format!(
+                        "`{op}` takes {n} argument{}, found {}",
+                        if n == 1 { "" } else { "s" },
+                        args.len()
+                    ),
+                ))
+            }
+        };
+        let num = |n: Node| Ok(Value::Num(n));
+        match op {
+            "digits" => num(Node::Const(digits(args, pos)?)),
+            "if" => {
+                arity(3)?;
+                let c = self.cond(&args[0])?;
+                let t = self.expr(&args[1])?;
+                let f = self.expr(&args[2])?;
+                match (t, f) {
+                    (Value::Num(t), Value::Num(f)) => {
+                        num(Node::If(Box::new(c), Box::new(t), Box::new(f)))
+                    }
+                    (Value::Bool(t), Value::Bool(f)) => Ok(Value::Bool(Cond::Or(vec![
+                        Cond::And(vec![c.clone(), t]),
+                        Cond::And(vec![Cond::Not(Box::new(c)), f]),
+                    ]))),
+                    _ => Err(syntax(
+                        pos,
+                        "the branches of `if` must both be numbers or both be conditions",
+                    )),
+                }
+            }
+            "let" | "let*" => {
+                arity(2)?;
+                self.let_expr(op == "let*", &args[0], &args[1])
+            }
+            "!" => {
+                let (e, pairs) = annotation(items, pos)?;
+                check_context(&pairs)?;
+                self.expr(e)
+            }
+            "+" | "*" | "/" => {
+                arity(2)?;
+                let (l, r) = (self.num(&args[0])?, self.num(&args[1])?);
+                num(match op {
+                    "+" => Node::Add(Box::new(l), Box::new(r)),
+                    "*" => Node::Mul(Box::new(l), Box::new(r)),
+                    _ => Node::Div(Box::new(l), Box::new(r)),
+                })
+            }
+            "-" => match args.len() {
+                1 => num(Node::Neg(Box::new(self.num(&args[0])?))),
+                2 => {
+                    let (l, r) = (self.num(&args[0])?, self.num(&args[1])?);
+                    num(Node::Sub(Box::new(l), Box::new(r)))
+                }
+                n => Err(syntax(
+                    pos,
+                    format!("`-` takes 1 argument (negation) or 2, found {n}"),
+                )),
+            },
+            "neg" | "sqrt" | "fabs" => {
+                arity(1)?;
+                let a = Box::new(self.num(&args[0])?);
+                num(match op {
+                    "neg" => Node::Neg(a),
+                    "sqrt" => Node::Sqrt(a),
+                    _ => Node::Abs(a),
+                })
+            }
+            "fmin" | "fmax" => {
+                arity(2)?;
+                let (l, r) = (self.num(&args[0])?, self.num(&args[1])?);
+                num(if op == "fmin" {
+                    Node::Min(Box::new(l), Box::new(r))
+                } else {
+                    Node::Max(Box::new(l), Box::new(r))
+                })
+            }
+            "fma" => {
+                arity(3)?;
+                let x = self.num(&args[0])?;
+                let y = self.num(&args[1])?;
+                let z = self.num(&args[2])?;
+                num(Node::Fma(Box::new(x), Box::new(y), Box::new(z)))
+            }
+            "pow" => {
+                arity(2)?;
+                let base = self.num(&args[0])?;
+                match literal(&args[1])? {
+                    Some(q) if q.is_integer() => match i32::try_from(&q.numer()) {
+                        Ok(n) => num(Node::Pow(Box::new(base), n, PowStyle::Libm)),
+                        Err(_) => Err(unsupported("pow with an exponent beyond 32 bits")),
+                    },
+                    Some(_) => Err(unsupported("pow with a non-integer exponent")),
+                    None => match constant(&args[1])? {
+                        Some(q) if !q.is_integer() => {
+                            Err(unsupported("pow with a non-integer exponent"))
+                        }
+                        _ => Err(unsupported("pow with a non-literal exponent")),
+                    },
+                }
+            }
+            "<" | "<=" | ">" | ">=" | "==" | "!=" => {
+                let cmp = cmp_op(op).expect("a comparison");
+                if args.is_empty() {
+                    return Err(syntax(pos, format!("`{op}` takes at least 1 argument")));
+                }
+                let nodes = args
+                    .iter()
+                    .map(|a| self.num(a))
+                    .collect::<Result<Vec<_>, _>>()?;
+                let mut pairs = Vec::new();
+                if cmp == CmpOp::Ne {
+                    for i in 0..nodes.len() {
+                        for j in i + 1..nodes.len() {
+                            pairs.push(Cond::Cmp(cmp, nodes[i].clone(), nodes[j].clone()));
+                        }
+                    }
+                } else {
+                    for w in nodes.windows(2) {
+                        pairs.push(Cond::Cmp(cmp, w[0].clone(), w[1].clone()));
+                    }
+                }
+                Ok(Value::Bool(if pairs.len() == 1 {
+                    pairs.pop().expect("one pair")
+                } else {
+                    Cond::And(pairs)
+                }))
+            }
+            "and" | "or" => {
+                let cs = args
+                    .iter()
+                    .map(|a| self.cond(a))
+                    .collect::<Result<Vec<_>, _>>()?;
+                Ok(Value::Bool(if op == "and" {
+                    Cond::And(cs)
+                } else {
+                    Cond::Or(cs)
+                }))
+            }
+            "not" => {
+                arity(1)?;
+                Ok(Value::Bool(Cond::Not(Box::new(self.cond(&args[0])?))))
+            }
+            // Everything else — transcendental functions, cbrt, hypot (see the module doc),
+            // loops, tensors, casts, predicates on special values, calls of named FPCores —
+            // is outside the supported subset.
+            other => Err(unsupported(other)),
+        }
+    }
+
+    /// `(let ([x e] ...) body)` and `(let* ...)`.
+    fn let_expr(
+        &mut self,
+        sequential: bool,
+        bindings: &SExpr,
+        body: &SExpr,
+    ) -> Result<Value, Fail> {
+        let Some(list) = list_items(bindings) else {
+            return Err(syntax(
+                bindings.pos(),
+                format!(
+                    "expected the bindings `([x e] ...)`, found {}",
+                    bindings.describe()
+                ),
+            ));
+        };
+        let outer = self.env.len();
+        let mut slots: Vec<(usize, Node)> = Vec::new();
+        let mut pending: Vec<(String, Value)> = Vec::new();
+        for binding in list {
+            let (name, value) = match list_items(binding) {
+                Some([SExpr::Sym(n, _), v]) => (n, v),
+                _ => {
+                    return Err(syntax(
+                        binding.pos(),
+                        format!("expected a binding `[x e]`, found {}", binding.describe()),
+                    ))
+                }
+            };
+            if !sequential && pending.iter().any(|(n, _)| n == name) {
+                return Err(syntax(
+                    binding.pos(),
+                    format!("`{name}` is bound twice in one `let`"),
+                ));
+            }
+            let bound = match self.expr(value)? {
+                Value::Num(n) => {
+                    let s = self.slots;
+                    self.slots += 1;
+                    slots.push((s, n));
+                    Value::Num(Node::Slot(s))
+                }
+                Value::Bool(c) => Value::Bool(c),
+            };
+            if sequential {
+                self.env.push((name.clone(), bound));
+            } else {
+                pending.push((name.clone(), bound));
+            }
+        }
+        self.env.extend(pending);
+        let result = self.expr(body);
+        self.env.truncate(outer);
+        Ok(match result? {
+            Value::Num(n) if slots.is_empty() => Value::Num(n),
+            Value::Num(n) => Value::Num(Node::Let(slots, Box::new(n))),
+            // A condition has no `let`: substitute the bound values into it.
+            Value::Bool(c) => {
+                let mut map: Vec<(usize, Node)> = Vec::new();
+                for (s, n) in slots {
+                    let n = subst_node(&n, &map);
+                    map.push((s, n));
+                }
+                Value::Bool(subst_cond(&c, &map))
+            }
+        })
+    }
+}
+
+/// The expression of `(! props... e)` and its property pairs.
+fn annotation(items: &[SExpr], pos: Pos) -> Result<(&SExpr, Props<'_>), Fail> {
+    let Some((e, props)) = items[1..].split_last() else {
+        return Err(syntax(pos, "expected an expression in `(! ...)`"));
+    };
+    Ok((e, property_pairs(props)?))
+}
+
+/// `n` with every `Slot(s)` of `map` replaced by its node.
+fn subst_node(n: &Node, map: &[(usize, Node)]) -> Node {
+    let b = |x: &Node| Box::new(subst_node(x, map));
+    match n {
+        Node::Slot(s) => map
+            .iter()
+            .find(|(t, _)| t == s)
+            .map_or_else(|| n.clone(), |(_, v)| v.clone()),
+        Node::Input(_) | Node::Const(_) => n.clone(),
+        Node::Neg(a) => Node::Neg(b(a)),
+        Node::Add(x, y) => Node::Add(b(x), b(y)),
+        Node::Sub(x, y) => Node::Sub(b(x), b(y)),
+        Node::Mul(x, y) => Node::Mul(b(x), b(y)),
+        Node::Div(x, y) => Node::Div(b(x), b(y)),
+        Node::Sqrt(a) => Node::Sqrt(b(a)),
+        Node::Abs(a) => Node::Abs(b(a)),
+        Node::Fma(x, y, z) => Node::Fma(b(x), b(y), b(z)),
+        Node::Min(x, y) => Node::Min(b(x), b(y)),
+        Node::Max(x, y) => Node::Max(b(x), b(y)),
+        Node::Pow(a, k, style) => Node::Pow(b(a), *k, *style),
+        Node::Let(bs, body) => Node::Let(
+            bs.iter().map(|(s, v)| (*s, subst_node(v, map))).collect(),
+            b(body),
+        ),
+        Node::If(c, x, y) => Node::If(Box::new(subst_cond(c, map)), b(x), b(y)),
+    }
+}
+
+/// `c` with every `Slot(s)` of `map` replaced by its node.
+fn subst_cond(c: &Cond, map: &[(usize, Node)]) -> Cond {
+    match c {
+        Cond::Bool(v) => Cond::Bool(*v),
+        Cond::Cmp(op, x, y) => Cond::Cmp(*op, subst_node(x, map), subst_node(y, map)),
+        Cond::And(cs) => Cond::And(cs.iter().map(|c| subst_cond(c, map)).collect()),
+        Cond::Or(cs) => Cond::Or(cs.iter().map(|c| subst_cond(c, map)).collect()),
+        Cond::Not(c) => Cond::Not(Box::new(subst_cond(c, map))),
+    }
+}

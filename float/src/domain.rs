@@ -1,0 +1,694 @@
+//! Input domains: one exact [`Interval`] per input, and the generator [`Domain`] that samples
+//! doubles inside them — the domain of an FPCore benchmark (from its `:pre`) or of
+//! `regress --formula ... --domain 'x in [-1, 1], y >= 0'` ([`parse_domain`]).
+//!
+//! # Sampling
+//! Each coordinate is drawn independently from the one [`Rng`]:
+//! * **both bounds given**: uniform on the reals between the nearest doubles inside the bounds
+//!   (exactly as [`crate::UniformBox`] draws: [`Rng::uniform`]);
+//! * **a bound missing** (one-sided, or no bound at all): uniform over the *finite doubles* in
+//!   range, i.e. over their ordinal index — the doubles ordered and numbered, `-0` and `+0`
+//!   counted once — as Herbie samples. Every double is equally likely, so every binade
+//!   (`[2^e, 2^(e+1))` holds 2^52 doubles whatever `e`) is equally likely: for `x >= 0` the
+//!   median sample has a binary exponent near the middle of the exponent range (about 2^0),
+//!   not near 1e308 as uniform-on-the-reals sampling would give.
+//!
+//! # Exact bounds
+//! Bounds are rationals. The sampled range of a coordinate is from the smallest double that
+//! satisfies the lower bound (rounding `1/3` up; for an open bound, strictly above it) to the
+//! largest double satisfying the upper bound, decided by exact comparison, so every sample
+//! satisfies its bounds exactly. A range without any double (`(0, 5e-324)`, `[1/3, 1/3]`,
+//! `x >= 1e400`) is a [`GenError`] naming the coordinate.
+use crate::convert::f64_to_rational;
+use crate::gen::{GenError, InputGen};
+use exactcheck_core::Rng;
+use exactcheck_exact::Rational;
+
+pub use exactcheck_exact::program::fpcore::{Bound, Interval};
+
+/// The ordinal index of a double: order-preserving, consecutive for adjacent doubles, `0` for
+/// both zeros.
+fn ordinal(x: f64) -> i64 {
+    let bits = x.abs().to_bits() as i64;
+    if x.is_sign_negative() {
+        -bits
+    } else {
+        bits
+    }
+}
+
+/// The double of ordinal index `k` (the inverse of [`ordinal`], `+0` for `0`).
+fn from_ordinal(k: i64) -> f64 {
+    let mag = f64::from_bits(k.unsigned_abs());
+    if k < 0 {
+        -mag
+    } else {
+        mag
+    }
+}
+
+fn exact(x: f64) -> Rational {
+    Rational::from(f64_to_rational(x).expect("a finite double"))
+}
+
+/// The smallest finite double satisfying the lower bound `b` (`-f64::MAX` when unbounded), or
+/// `None` when no finite double does.
+fn lowest_double(b: &Bound) -> Option<f64> {
+    let (q, strict) = match b {
+        Bound::Unbounded => return Some(-f64::MAX),
+        Bound::Closed(q) => (q, false),
+        Bound::Open(q) => (q, true),
+    };
+    let d = q.to_f64();
+    let d = if d == f64::INFINITY {
+        return None;
+    } else if d == f64::NEG_INFINITY {
+        -f64::MAX
+    } else {
+        d
+    };
+    let e = exact(d);
+    let ok = if strict { &e > q } else { &e >= q };
+    let d = if ok { d } else { from_ordinal(ordinal(d) + 1) };
+    d.is_finite().then_some(d)
+}
+
+/// The largest finite double satisfying the upper bound `b` (`f64::MAX` when unbounded), or
+/// `None` when no finite double does.
+fn highest_double(b: &Bound) -> Option<f64> {
+    let neg = |b: &Bound| match b {
+        Bound::Unbounded => Bound::Unbounded,
+        Bound::Closed(q) => Bound::Closed(-q.clone()),
+        Bound::Open(q) => Bound::Open(-q.clone()),
+    };
+    lowest_double(&neg(b)).map(|d| -d)
+}
+
+/// How one coordinate is drawn.
+#[derive(Clone, Debug, PartialEq)]
+enum Draw {
+    /// Uniform on the reals in `[lo, hi]`.
+    Uniform { lo: f64, hi: f64 },
+    /// Uniform over the doubles of ordinal indices `lo..=hi`.
+    Ordinal { lo: i64, hi: i64 },
+}
+
+/// A generator sampling each input inside its [`Interval`] (see the module doc).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Domain {
+    intervals: Vec<Interval>,
+    draws: Vec<Draw>,
+    names: Vec<String>,
+}
+
+impl Domain {
+    /// The generator of these intervals, one per input. Inputs are named `x0`, `x1`, ... in
+    /// errors and in [`InputGen::describe`] ([`Domain::named`] names them).
+    ///
+    /// # Errors
+    /// When an interval contains no finite double, naming the coordinate.
+    pub fn new(intervals: Vec<Interval>) -> Result<Domain, GenError> {
+        let names: Vec<String> = (0..intervals.len()).map(|i| format!("x{i}")).collect();
+        Domain::named(intervals, &names)
+    }
+
+    /// The generator of these intervals, one per input, with the inputs' names (for errors and
+    /// [`InputGen::describe`]).
+    ///
+    /// # Errors
+    /// When the number of names is not the number of intervals, or when an interval contains
+    /// no finite double, naming the input.
+    pub fn named(intervals: Vec<Interval>, names: &[String]) -> Result<Domain, GenError> {
+        if names.len() != intervals.len() {
+            return Err(GenError(format!(
+                "{} names for a domain of {} inputs",
+                names.len(),
+                intervals.len()
+            )));
+        }
+        let names = names.to_vec();
+        let mut draws = Vec::with_capacity(intervals.len());
+        for (i, iv) in intervals.iter().enumerate() {
+            let empty = || {
+                GenError(format!(
+                    "input {i} ({}) has no finite double in {}",
+                    names[i],
+                    show_interval(iv)
+                ))
+            };
+            let lo = lowest_double(&iv.lo).ok_or_else(empty)?;
+            let hi = highest_double(&iv.hi).ok_or_else(empty)?;
+            if ordinal(lo) > ordinal(hi) {
+                return Err(empty());
+            }
+            let bounded = iv.lo != Bound::Unbounded && iv.hi != Bound::Unbounded;
+            draws.push(if bounded {
+                Draw::Uniform { lo, hi }
+            } else {
+                Draw::Ordinal {
+                    lo: ordinal(lo),
+                    hi: ordinal(hi),
+                }
+            });
+        }
+        Ok(Domain {
+            intervals,
+            draws,
+            names,
+        })
+    }
+
+    /// The same domain with input names for [`InputGen::describe`].
+    ///
+    /// # Errors
+    /// When the number of names is not the number of intervals.
+    pub fn with_names(mut self, names: &[String]) -> Result<Domain, GenError> {
+        if names.len() != self.intervals.len() {
+            return Err(GenError(format!(
+                "{} names for a domain of {} inputs",
+                names.len(),
+                self.intervals.len()
+            )));
+        }
+        self.names = names.to_vec();
+        Ok(self)
+    }
+
+    /// The intervals, one per input.
+    pub fn intervals(&self) -> &[Interval] {
+        &self.intervals
+    }
+}
+
+impl InputGen for Domain {
+    fn arity(&self) -> usize {
+        self.draws.len()
+    }
+
+    fn sample(&self, rng: &mut Rng) -> Vec<f64> {
+        self.draws
+            .iter()
+            .map(|d| match *d {
+                Draw::Uniform { lo, hi } => rng.uniform(lo, hi),
+                Draw::Ordinal { lo, hi } => {
+                    // At most 2 * 0x7FEF_FFFF_FFFF_FFFF + 1 < 2^64 values.
+                    let n = hi.abs_diff(lo) + 1;
+                    let k = lo.wrapping_add(rng.below(n) as i64);
+                    from_ordinal(k)
+                }
+            })
+            .collect()
+    }
+
+    fn describe(&self) -> String {
+        let parts: Vec<String> = self
+            .intervals
+            .iter()
+            .zip(&self.names)
+            .map(|(iv, name)| match (&iv.lo, &iv.hi) {
+                (Bound::Unbounded, Bound::Unbounded) => format!("{name} in all finite doubles"),
+                (lo, Bound::Unbounded) => format!(
+                    "{name} in doubles {} {}",
+                    if matches!(lo, Bound::Open(_)) {
+                        ">"
+                    } else {
+                        ">="
+                    },
+                    show_value(lo.value().expect("bounded"))
+                ),
+                (Bound::Unbounded, hi) => format!(
+                    "{name} in doubles {} {}",
+                    if matches!(hi, Bound::Open(_)) {
+                        "<"
+                    } else {
+                        "<="
+                    },
+                    show_value(hi.value().expect("bounded"))
+                ),
+                _ => format!("{name} in {} (uniform)", show_interval(iv)),
+            })
+            .collect();
+        if parts.is_empty() {
+            "no inputs".to_string()
+        } else {
+            parts.join(", ")
+        }
+    }
+}
+
+/// A bound value: as a double when it is one (`1e15`, `0.5`), else as the exact rational.
+fn show_value(q: &Rational) -> String {
+    let d = q.to_f64();
+    if d.is_finite() && &exact(d) == q {
+        let a = d.abs();
+        if a != 0.0 && !(1e-4..1e6).contains(&a) {
+            format!("{d:e}")
+        } else {
+            format!("{d}")
+        }
+    } else {
+        q.to_string()
+    }
+}
+
+/// `[lo, hi]`, `(lo, inf)`, ...
+fn show_interval(iv: &Interval) -> String {
+    let lo = match &iv.lo {
+        Bound::Unbounded => "(-inf".to_string(),
+        Bound::Closed(q) => format!("[{}", show_value(q)),
+        Bound::Open(q) => format!("({}", show_value(q)),
+    };
+    let hi = match &iv.hi {
+        Bound::Unbounded => "inf)".to_string(),
+        Bound::Closed(q) => format!("{}]", show_value(q)),
+        Bound::Open(q) => format!("{})", show_value(q)),
+    };
+    format!("{lo}, {hi}")
+}
+
+/// Which sides of an input a domain text has bounded so far.
+#[derive(Clone, Copy, Default)]
+struct Seen {
+    lo: bool,
+    hi: bool,
+}
+
+/// Parses a domain text into one [`Interval`] per variable of `vars`.
+///
+/// The text is a comma-separated list of parts, each `NAME in [a, b]` (brackets: `[`/`]`
+/// closed, `(`/`)` open; `inf`, `+inf`, `-inf` for a missing bound) or a one-sided
+/// `NAME >= a`, `NAME > a`, `NAME <= b`, `NAME < b` (a lower and an upper one-sided part may
+/// bound the same variable). Numbers are in the workspace's number syntax, parsed by
+/// [`Rational`]'s `FromStr`: `1e15`, `-2^60`, `1/3`, `0.1` (exactly one tenth). A variable not
+/// mentioned is unbounded on both sides; an empty text bounds nothing.
+///
+/// # Errors
+/// A one-line message naming the part: an unknown variable, a variable bounded twice (on the
+/// same side), an unparsable number, `lo > hi`, or garbage.
+pub fn parse_domain(text: &str, vars: &[String]) -> Result<Vec<Interval>, String> {
+    let mut out = vec![Interval::UNBOUNDED; vars.len()];
+    let mut seen = vec![Seen::default(); vars.len()];
+    for part in split_parts(text) {
+        let part = part.trim();
+        if part.is_empty() {
+            if text.trim().is_empty() {
+                continue;
+            }
+            return Err(format!("domain {text:?}: an empty part between commas"));
+        }
+        let bad = |why: &str| format!("domain part {part:?}: {why}");
+        let name_end = part
+            .find(|c: char| !(c.is_alphanumeric() || c == '_'))
+            .unwrap_or(part.len());
+        let name = &part[..name_end];
+        if name.is_empty() {
+            return Err(bad("expected a variable name"));
+        }
+        let Some(i) = vars.iter().position(|v| v == name) else {
+            return Err(bad(&format!(
+                "unknown variable `{name}` (the variables are {})",
+                vars.join(", ")
+            )));
+        };
+        let rest = part[name_end..].trim_start();
+        let (lo, hi) = if let Some(spec) = rest.strip_prefix("in") {
+            let spec = spec.trim();
+            let (lo, hi) = parse_bracketed(spec).map_err(|why| bad(&why))?;
+            if seen[i].lo || seen[i].hi {
+                return Err(bad(&format!("`{name}` is bounded twice")));
+            }
+            (Some(lo), Some(hi))
+        } else {
+            let (op, value) = [">=", "<=", ">", "<"]
+                .iter()
+                .find_map(|op| rest.strip_prefix(op).map(|v| (*op, v)))
+                .ok_or_else(|| bad("expected `in [a, b]` or a comparison `>= a`, `< b`, ..."))?;
+            let v = parse_number(value.trim()).map_err(|why| bad(&why))?;
+            let Some(v) = v else {
+                return Err(bad("a one-sided bound must be a finite number"));
+            };
+            match op {
+                ">=" => (Some(Bound::Closed(v)), None),
+                ">" => (Some(Bound::Open(v)), None),
+                "<=" => (None, Some(Bound::Closed(v))),
+                _ => (None, Some(Bound::Open(v))),
+            }
+        };
+        if let Some(lo) = lo {
+            if seen[i].lo {
+                return Err(bad(&format!("`{name}` has two lower bounds")));
+            }
+            seen[i].lo = true;
+            out[i].lo = lo;
+        }
+        if let Some(hi) = hi {
+            if seen[i].hi {
+                return Err(bad(&format!("`{name}` has two upper bounds")));
+            }
+            seen[i].hi = true;
+            out[i].hi = hi;
+        }
+        if let (Some(l), Some(h)) = (out[i].lo.value(), out[i].hi.value()) {
+            let open = matches!(out[i].lo, Bound::Open(_)) || matches!(out[i].hi, Bound::Open(_));
+            if l > h || (l == h && open) {
+                return Err(bad(&format!(
+                    "the interval of `{name}` is empty: {}",
+                    show_interval(&out[i])
+                )));
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// The parts of a domain text: split at the commas outside brackets and parentheses.
+fn split_parts(text: &str) -> Vec<&str> {
+    let mut parts = Vec::new();
+    let (mut depth, mut start) = (0i32, 0);
+    for (i, c) in text.char_indices() {
+        match c {
+            '[' | '(' => depth += 1,
+            ']' | ')' => depth -= 1,
+            ',' if depth <= 0 => {
+                parts.push(&text[start..i]);
+                start = i + 1;
+            }
+            _ => {}
+        }
+    }
+    parts.push(&text[start..]);
+    parts
+}
+
+/// `[a, b]`, `(a, b]`, ... into its two bounds.
+fn parse_bracketed(spec: &str) -> Result<(Bound, Bound), String> {
+    let open_lo = match spec.chars().next() {
+        Some('[') => false,
+        Some('(') => true,
+        _ => return Err("expected `[` or `(` after `in`".to_string()),
+    };
+    let open_hi = match spec.chars().last() {
+        Some(']') if spec.len() > 1 => false,
+        Some(')') if spec.len() > 1 => true,
+        _ => return Err("expected the interval to end with `]` or `)`".to_string()),
+    };
+    let inner = &spec[1..spec.len() - 1];
+    // The comma between the bounds: the first one outside parentheses.
+    let mut depth = 0i32;
+    let comma = inner.char_indices().find_map(|(i, c)| {
+        match c {
+            '(' | '[' => depth += 1,
+            ')' | ']' => depth -= 1,
+            ',' if depth == 0 => return Some(i),
+            _ => {}
+        }
+        None
+    });
+    let Some(comma) = comma else {
+        return Err("expected two bounds `a, b` in the interval".to_string());
+    };
+    let lo_text = inner[..comma].trim();
+    let hi_text = inner[comma + 1..].trim();
+    let lo = match parse_number(lo_text)? {
+        Some(v) if open_lo => Bound::Open(v),
+        Some(v) => Bound::Closed(v),
+        None if is_minus_inf(lo_text) => Bound::Unbounded,
+        None => return Err("the lower bound cannot be +inf".to_string()),
+    };
+    let hi = match parse_number(hi_text)? {
+        Some(v) if open_hi => Bound::Open(v),
+        Some(v) => Bound::Closed(v),
+        None if !is_minus_inf(hi_text) => Bound::Unbounded,
+        None => return Err("the upper bound cannot be -inf".to_string()),
+    };
+    Ok((lo, hi))
+}
+
+fn is_minus_inf(s: &str) -> bool {
+    s.starts_with('-')
+}
+
+/// A bound: `Ok(None)` for `inf`, `+inf`, `-inf` (also `infinity`), else the exact number.
+fn parse_number(s: &str) -> Result<Option<Rational>, String> {
+    let unsigned = s.strip_prefix(['+', '-']).unwrap_or(s).trim();
+    if unsigned.eq_ignore_ascii_case("inf") || unsigned.eq_ignore_ascii_case("infinity") {
+        return Ok(None);
+    }
+    if s.is_empty() {
+        return Err("expected a number".to_string());
+    }
+    s.parse::<Rational>()
+        .map(Some)
+        .map_err(|e| format!("`{s}` is not a number ({e})"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::convert::binary_exponent;
+
+    fn q(n: i64, d: i64) -> Rational {
+        Rational::new(n, d).expect("nonzero denominator")
+    }
+
+    fn names(v: &[&str]) -> Vec<String> {
+        v.iter().map(|s| s.to_string()).collect()
+    }
+
+    fn iv(lo: Bound, hi: Bound) -> Interval {
+        Interval { lo, hi }
+    }
+
+    fn cl(n: i64) -> Bound {
+        Bound::Closed(Rational::from_integer(n))
+    }
+
+    #[test]
+    fn ordinals_are_consecutive_and_invertible() {
+        for x in [
+            0.0,
+            5e-324,
+            1.0,
+            f64::MAX,
+            -5e-324,
+            -1.0,
+            -f64::MAX,
+            1.5e-310,
+        ] {
+            assert_eq!(from_ordinal(ordinal(x)), x);
+        }
+        assert_eq!(ordinal(-0.0), 0);
+        assert_eq!(ordinal(5e-324), 1);
+        assert_eq!(ordinal(-5e-324), -1);
+        assert_eq!(from_ordinal(ordinal(1.0) + 1), 1.0 + f64::EPSILON);
+    }
+
+    #[test]
+    fn bounds_round_inward_exactly() {
+        let third = q(1, 3);
+        let lo = lowest_double(&Bound::Closed(third.clone())).expect("a double");
+        let hi = highest_double(&Bound::Closed(third.clone())).expect("a double");
+        assert!(exact(lo) > third && exact(hi) < third);
+        assert_eq!(from_ordinal(ordinal(hi) + 1), lo);
+        assert_eq!(lowest_double(&cl(1)), Some(1.0));
+        assert_eq!(
+            lowest_double(&Bound::Open(Rational::ONE)),
+            Some(1.0 + f64::EPSILON)
+        );
+        assert_eq!(highest_double(&Bound::Open(Rational::ZERO)), Some(-5e-324));
+        assert_eq!(lowest_double(&Bound::Open(Rational::ZERO)), Some(5e-324));
+        let huge: Rational = "10^400".parse().expect("a number");
+        assert_eq!(lowest_double(&Bound::Closed(huge.clone())), None);
+        assert_eq!(highest_double(&Bound::Closed(huge.clone())), Some(f64::MAX));
+        assert_eq!(lowest_double(&Bound::Closed(-huge)), Some(-f64::MAX));
+        assert_eq!(
+            lowest_double(&Bound::Closed(Rational::from(
+                f64_to_rational(f64::MAX).expect("finite")
+            ))),
+            Some(f64::MAX)
+        );
+        assert_eq!(
+            lowest_double(&Bound::Open(Rational::from(
+                f64_to_rational(f64::MAX).expect("finite")
+            ))),
+            None
+        );
+    }
+
+    #[test]
+    fn samples_stay_inside_their_bounds() {
+        let d = Domain::new(vec![
+            iv(Bound::Closed(q(1, 3)), Bound::Closed(q(2, 3))),
+            iv(Bound::Open(Rational::ZERO), Bound::Unbounded),
+            iv(Bound::Unbounded, Bound::Open(q(-1, 10))),
+            iv(Bound::Unbounded, Bound::Unbounded),
+            iv(cl(2), cl(2)),
+            iv(Bound::Open(Rational::ZERO), Bound::Open(q(1, 1_000_000))),
+        ])
+        .expect("non-empty");
+        let mut rng = Rng::new(5);
+        for _ in 0..20_000 {
+            let s = d.sample(&mut rng);
+            assert_eq!(s.len(), 6);
+            assert!(s.iter().all(|v| v.is_finite()));
+            assert!(exact(s[0]) >= q(1, 3) && exact(s[0]) <= q(2, 3), "{}", s[0]);
+            assert!(s[1] > 0.0);
+            assert!(exact(s[2]) < q(-1, 10), "{}", s[2]);
+            assert_eq!(s[4], 2.0);
+            assert!(s[5] > 0.0 && exact(s[5]) < q(1, 1_000_000));
+        }
+    }
+
+    #[test]
+    fn one_sided_bounds_sample_every_binade_alike() {
+        let d = Domain::new(vec![iv(cl(0), Bound::Unbounded)]).expect("non-empty");
+        let mut rng = Rng::new(9);
+        let mut exps: Vec<i32> = (0..4001)
+            .map(|_| {
+                let x = d.sample(&mut rng)[0];
+                assert!(x >= 0.0);
+                binary_exponent(x).unwrap_or(-1075)
+            })
+            .collect();
+        exps.sort_unstable();
+        let median = exps[exps.len() / 2];
+        // Uniform over the doubles in [0, MAX]: the exponents are uniform over the 2046 normal
+        // binades -1022..=1023 (the subnormals are one binade's worth), so the median is near
+        // 0 and the deciles near ±818; uniform on the reals would put nearly every sample at
+        // exponent 1020 or more.
+        assert!((-60..=60).contains(&median), "median exponent {median}");
+        let (d1, d9) = (exps[exps.len() / 10], exps[exps.len() * 9 / 10]);
+        assert!(
+            (-900..-700).contains(&d1) && (700..900).contains(&d9),
+            "{d1} {d9}"
+        );
+        // Both signs when unbounded.
+        let all = Domain::new(vec![Interval::UNBOUNDED]).expect("non-empty");
+        let neg = (0..1000).filter(|_| all.sample(&mut rng)[0] < 0.0).count();
+        assert!((400..600).contains(&neg), "{neg}");
+    }
+
+    #[test]
+    fn bounded_intervals_sample_uniformly_on_the_reals() {
+        let d = Domain::new(vec![iv(
+            cl(1),
+            Bound::Closed("1e15".parse().expect("number")),
+        )])
+        .expect("non-empty");
+        let mut rng = Rng::new(3);
+        let big = (0..1000).filter(|_| d.sample(&mut rng)[0] > 1e14).count();
+        assert!(big > 850, "{big}");
+    }
+
+    #[test]
+    fn empty_ranges_are_errors_naming_the_coordinate() {
+        let e = Domain::new(vec![
+            Interval::UNBOUNDED,
+            iv(Bound::Closed(q(1, 3)), Bound::Closed(q(1, 3))),
+        ])
+        .expect_err("1/3 is not a double");
+        assert!(e.0.contains("input 1 (x1)"), "{e}");
+        let e = Domain::named(
+            vec![Interval::UNBOUNDED, iv(cl(3), cl(2))],
+            &names(&["x", "y"]),
+        )
+        .expect_err("3 > 2");
+        assert!(
+            e.0.contains("input 1 (y) has no finite double in [3, 2]"),
+            "{e}"
+        );
+        assert!(Domain::named(vec![Interval::UNBOUNDED], &names(&["x", "y"])).is_err());
+        assert!(Domain::new(vec![iv(
+            Bound::Open(Rational::ZERO),
+            Bound::Open(Rational::ZERO)
+        )])
+        .is_err());
+        assert!(Domain::new(vec![iv(cl(2), cl(1))]).is_err());
+        assert!(Domain::new(vec![iv(
+            Bound::Closed("10^400".parse().expect("n")),
+            Bound::Unbounded
+        )])
+        .is_err());
+        let d = Domain::new(vec![Interval::UNBOUNDED]).expect("non-empty");
+        assert!(d.with_names(&names(&["a", "b"])).is_err());
+    }
+
+    #[test]
+    fn describe_is_readable() {
+        let d = Domain::new(vec![
+            iv(cl(1), Bound::Closed("1e15".parse().expect("number"))),
+            iv(cl(0), Bound::Unbounded),
+            iv(Bound::Open(q(1, 3)), Bound::Closed(q(1, 2))),
+            iv(Bound::Unbounded, Bound::Open(Rational::ONE)),
+            Interval::UNBOUNDED,
+        ])
+        .expect("non-empty")
+        .with_names(&names(&["x", "y", "z", "w", "v"]))
+        .expect("five names");
+        assert_eq!(
+            d.describe(),
+            "x in [1, 1e15] (uniform), y in doubles >= 0, z in (1/3, 0.5] (uniform), \
+             w in doubles < 1, v in all finite doubles"
+        );
+    }
+
+    #[test]
+    fn parse_domain_reads_every_form() {
+        let vars = names(&["x", "y", "z", "w", "u", "v"]);
+        let d = parse_domain(
+            "x in [-1, 1], y in [0, 1e15], z in (0, inf), w >= 1/3, w < 2^60, u in (-inf, -2^60]",
+            &vars,
+        )
+        .expect("valid");
+        let p2_60 = Rational::from_integer(1 << 60);
+        assert_eq!(
+            d,
+            vec![
+                iv(cl(-1), cl(1)),
+                iv(cl(0), Bound::Closed("1e15".parse().expect("n"))),
+                iv(Bound::Open(Rational::ZERO), Bound::Unbounded),
+                iv(Bound::Closed(q(1, 3)), Bound::Open(p2_60.clone())),
+                iv(Bound::Unbounded, Bound::Closed(-p2_60)),
+                Interval::UNBOUNDED,
+            ]
+        );
+        assert_eq!(
+            parse_domain("", &vars).expect("empty"),
+            vec![Interval::UNBOUNDED; 6]
+        );
+        assert_eq!(
+            parse_domain(" x in [0.1 , 1/2) ", &vars).expect("valid")[0],
+            iv(Bound::Closed(q(1, 10)), Bound::Open(q(1, 2)))
+        );
+    }
+
+    #[test]
+    fn parse_domain_errors_name_the_part() {
+        let vars = names(&["x", "y"]);
+        let cases = [
+            ("q in [0, 1]", "\"q in [0, 1]\": unknown variable `q`"),
+            (
+                "x in [0, 1], x in [2, 3]",
+                "\"x in [2, 3]\": `x` is bounded twice",
+            ),
+            ("x >= 0, x > 1", "\"x > 1\": `x` has two lower bounds"),
+            ("x in [0, 1", "\"x in [0, 1\": expected the interval to end"),
+            ("x in 0, 1]", "expected `[` or `(` after `in`"),
+            ("x in [0 1]", "expected two bounds"),
+            ("x in [a, 1]", "`a` is not a number"),
+            ("x in [2, 1]", "the interval of `x` is empty"),
+            ("x in [1, 1)", "the interval of `x` is empty"),
+            ("x in [inf, 1]", "the lower bound cannot be +inf"),
+            ("x in [0, -inf]", "the upper bound cannot be -inf"),
+            ("x = 3", "expected `in [a, b]` or a comparison"),
+            ("x >= inf", "a one-sided bound must be a finite number"),
+            ("x in [0, 1],, y >= 0", "an empty part between commas"),
+            ("[0, 1]", "expected a variable name"),
+        ];
+        for (text, want) in cases {
+            let e = parse_domain(text, &vars).expect_err(text);
+            assert!(e.contains(want), "{text}: {e}");
+            assert!(!e.contains('\n'));
+        }
+    }
+}
