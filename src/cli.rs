@@ -59,8 +59,11 @@ pub enum Command {
     },
     /// Run a benchmark workload and print its check values and time.
     Bench(crate::bench::BenchArgs),
-    /// Regress a built-in f64 kernel against exact results on seeded random inputs.
+    /// Regress float code against exact results on seeded random inputs: a built-in kernel,
+    /// a formula (--formula), FPCore benchmarks (--fpcore), or your own executable (--program).
     Regress(crate::regress::RegressArgs),
+    /// Merge the JSON shard reports of `regress --shard I/N` into the report of the whole sweep.
+    Merge(crate::regress::sweep::MergeArgs),
     // --- plot (src/plot/) ---
     /// Draw Spaeth's cylinder/sphere intersection as an SVG figure: the t-u diagram (the
     /// paper's Fig. 2 / 3) or a 3D view, for `spaeth --example N` or a `cylinder_sphere` problem
@@ -271,6 +274,7 @@ pub fn run(cli: Cli) -> Result<ExitCode, crate::Error> {
         }
         Command::Prove(args) => crate::prove_cmd::run(&args),
         Command::Regress(args) => crate::regress::run(&args),
+        Command::Merge(args) => crate::regress::sweep::merge_cmd(&args),
         // --- plot (src/plot/) ---
         Command::Plot(args) => crate::plot::run(&args),
         // --- end plot ---
@@ -307,13 +311,14 @@ mod tests {
             Err(ParseFailure::Text(t)) if t.contains("Usage:")
         ));
         assert!(try_parse(&args(&["bench", "w2", "--n", "7"])).is_ok());
-        let Err(ParseFailure::Usage { message, .. }) = try_parse(&args(&["regress"])) else {
+        let Err(ParseFailure::Usage { message, .. }) =
+            try_parse(&args(&["regress", "cylinder-sphere", "--formula", "x"]))
+        else {
             panic!("a usage error");
         };
-        assert_eq!(
-            message,
-            "the following required arguments were not provided: <KERNEL>"
-        );
+        assert!(message.contains("cannot be used with"), "{message}");
+        assert!(try_parse(&args(&["regress", "--shard", "0/2"])).is_err());
+        assert!(try_parse(&args(&["merge"])).is_err());
     }
 
     #[cfg(unix)]

@@ -158,9 +158,10 @@ impl Serialize for crate::summary::BitsSum {
 impl<'de> Deserialize<'de> for crate::summary::BitsSum {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
         let j = BitsSumJson::deserialize(d)?;
-        let units = j.units_2_40.parse::<u128>().map_err(|_| {
-            D::Error::custom(format!("'{}' is not a bits sum", j.units_2_40))
-        })?;
+        let units = j
+            .units_2_40
+            .parse::<u128>()
+            .map_err(|_| D::Error::custom(format!("'{}' is not a bits sum", j.units_2_40)))?;
         Ok(crate::summary::BitsSum {
             units,
             count: j.count,

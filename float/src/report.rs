@@ -23,7 +23,7 @@ pub struct Case {
     /// The same inputs as exact rationals, `n` or `n/d`.
     pub inputs_exact: Vec<String>,
     /// The exact outputs, `n` or `n/d`; an irrational value refined to a rational
-    /// approximation reads `~` and 30 significant digits (truncated).
+    /// approximation reads `~` and 25 significant digits (truncated).
     pub exact_outputs: Vec<String>,
     /// The exact outputs rounded to the nearest doubles.
     #[serde(with = "measures")]
@@ -158,7 +158,9 @@ pub struct Report {
     /// The worst cases, worst first (larger ulps error, then larger relative error, then the
     /// earlier sample).
     pub worst: Vec<WorstCase>,
-    /// The mergeable summaries the medians and means are read from.
+    /// The mergeable summaries the medians and means are read from (in JSON only in shard
+    /// reports, where `merge` needs them).
+    #[serde(default)]
     pub summary: Summary,
 }
 
@@ -171,9 +173,16 @@ impl Report {
         self.bits_of_error = self.summary.bits.mean();
     }
 
-    /// The report as JSON (non-finite measures as `"inf"`).
+    /// The report as JSON (non-finite measures as `"inf"`); the summaries only in a shard's
+    /// report (up to 65,536 values each: what `merge` needs, noise elsewhere).
     pub fn to_json(&self) -> serde_json::Value {
-        serde_json::to_value(self).expect("a report serialises to JSON")
+        let mut v = serde_json::to_value(self).expect("a report serialises to JSON");
+        if self.shard.is_none() {
+            if let Some(o) = v.as_object_mut() {
+                o.remove("summary");
+            }
+        }
+        v
     }
 }
 
@@ -214,6 +223,9 @@ pub(crate) fn fmt_measure(v: f64) -> String {
 
 /// An exact value for humans: `n/2^k` for dyadic denominators, long numerals elided.
 fn fmt_exact(s: &str) -> String {
+    if s.starts_with('~') {
+        return s.to_string();
+    }
     fn elide(digits: &str) -> String {
         const KEEP: usize = 12;
         let n = digits.trim_start_matches('-').len();

@@ -174,7 +174,9 @@ impl Distribution {
         };
         for &(v, n) in entries {
             if v.is_nan() || v < 0.0 || n == 0 {
-                return Err(format!("summary entry ({v}, {n}) is not a value with a count"));
+                return Err(format!(
+                    "summary entry ({v}, {n}) is not a value with a count"
+                ));
             }
             let bits = (v + 0.0).to_bits();
             if collapsed && bucket(bits) != bits {
@@ -196,11 +198,7 @@ pub fn ordinal(x: f64) -> Option<i64> {
         return None;
     }
     let bits = (x + 0.0).to_bits() as i64;
-    Some(if bits < 0 {
-        -(bits & i64::MAX)
-    } else {
-        bits
-    })
+    Some(if bits < 0 { -(bits & i64::MAX) } else { bits })
 }
 
 /// Herbie's bits of error of `approx` against the double nearest to the exact value:

@@ -18,7 +18,10 @@ impl Formula for Mixed {
     }
     fn eval<T: OrderedField>(&self, x: &[T]) -> Result<Vec<T>, ZeroDivisor> {
         let d = x[1].sub_ref(&x[0]);
-        Ok(vec![x[0].add_ref(&x[1]).sub_ref(&x[0]), x[0].checked_div(&d)?])
+        Ok(vec![
+            x[0].add_ref(&x[1]).sub_ref(&x[0]),
+            x[0].checked_div(&d)?,
+        ])
     }
 }
 
@@ -52,7 +55,10 @@ fn four_shards_merge_into_the_single_run() {
         .map(|index| sweep(samples, Some(Shard { index, count: 4 })))
         .collect();
     assert_eq!(
-        shards.iter().map(|r| r.end_sample - r.first_sample).sum::<usize>(),
+        shards
+            .iter()
+            .map(|r| r.end_sample - r.first_sample)
+            .sum::<usize>(),
         samples
     );
     // Through JSON, as the CLI's shard files are.
@@ -71,8 +77,14 @@ fn bad_merges_are_refused() {
     let a = sweep(1000, Some(Shard { index: 1, count: 2 }));
     let b = sweep(1000, Some(Shard { index: 2, count: 2 }));
     let msg = |r: Result<Report, exactcheck_float::MergeError>| r.expect_err("refused").0;
-    assert_eq!(msg(merge(&[a.clone()])), "shard(s) missing: 2/2");
-    assert_eq!(msg(merge(&[a.clone(), a.clone()])), "shard 1/2 is given twice");
+    assert_eq!(
+        msg(merge(std::slice::from_ref(&a))),
+        "shard(s) missing: 2/2"
+    );
+    assert_eq!(
+        msg(merge(&[a.clone(), a.clone()])),
+        "shard 1/2 is given twice"
+    );
     let other = sweep(999, Some(Shard { index: 2, count: 2 }));
     assert!(msg(merge(&[a.clone(), other])).contains("samples 999"));
     let whole = sweep(1000, None);

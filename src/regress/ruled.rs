@@ -332,54 +332,6 @@ pub fn table(rows: &[Row]) -> String {
 }
 
 /// A measure as JSON: a number, or the string `"inf"` (JSON has no infinity).
-fn num(v: f64) -> Value {
-    if v.is_finite() {
-        json!(v)
-    } else {
-        json!("inf")
-    }
-}
-
-/// A harness [`Report`] as JSON: all its fields, measures through `num`.
-pub fn report_json(r: &Report) -> Value {
-    let case = |c: &exactcheck_float::Case| {
-        json!({
-            "inputs": c.inputs.iter().map(|&x| num(x)).collect::<Vec<_>>(),
-            "inputs_exact": c.inputs_exact,
-            "exact_outputs": c.exact_outputs,
-            "exact_outputs_f64": c.exact_outputs_f64.iter().map(|&x| num(x)).collect::<Vec<_>>(),
-            "float_outputs": c.float_outputs.as_ref().map(|v| v.iter().map(|&x| num(x)).collect::<Vec<_>>()),
-            "ulps_per_output": c.ulps_per_output.iter().map(|&x| num(x)).collect::<Vec<_>>(),
-            "ulps": num(c.ulps),
-            "rel": num(c.rel),
-            "float_failure": c.float_failure,
-        })
-    };
-    json!({
-        "formula": r.formula,
-        "generator": r.generator,
-        "arity": r.arity,
-        "samples": r.samples,
-        "seed": r.seed,
-        "compared": r.compared,
-        "domain_errors": r.domain_errors,
-        "invalid_inputs": r.invalid_inputs,
-        "float_failures": r.float_failures,
-        "max_ulps": num(r.max_ulps),
-        "median_ulps": num(r.median_ulps),
-        "mean_ulps": num(r.mean_ulps),
-        "max_rel": num(r.max_rel),
-        "median_rel": num(r.median_rel),
-        "max_ulps_per_output": r.max_ulps_per_output.iter().map(|&x| num(x)).collect::<Vec<_>>(),
-        "above": r.above.iter().map(|t| json!({"ulps": num(t.ulps), "count": t.count})).collect::<Vec<_>>(),
-        "worst": r.worst.iter().map(|w| json!({
-            "index": w.index,
-            "original": case(&w.original),
-            "shrunk": w.shrunk.as_ref().map(case),
-        })).collect::<Vec<_>>(),
-    })
-}
-
 /// The rows as one JSON document.
 pub fn rows_json(rows: &[Row]) -> Value {
     json!({
@@ -388,8 +340,8 @@ pub fn rows_json(rows: &[Row]) -> Value {
             "m": r.m,
             "n": r.n,
             "inputs": r.regime.label(),
-            "weights": report_json(&r.weights),
-            "points": report_json(&r.points),
+            "weights": r.weights.to_json(),
+            "points": r.points.to_json(),
         })).collect::<Vec<_>>(),
     })
 }

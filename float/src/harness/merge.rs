@@ -56,10 +56,14 @@ pub fn merge(reports: &[Report]) -> Result<Report, MergeError> {
         same("samples", first.samples.to_string(), r.samples.to_string())?;
         same("seed", first.seed.to_string(), r.seed.to_string())?;
         same("worst kept", first.keep.to_string(), r.keep.to_string())?;
-        let levels = |r: &Report| format!("{:?}", r.above.iter().map(|t| t.ulps).collect::<Vec<_>>());
+        let levels =
+            |r: &Report| format!("{:?}", r.above.iter().map(|t| t.ulps).collect::<Vec<_>>());
         same("thresholds", levels(first), levels(r))?;
         let Some(s) = r.shard else {
-            return err(format!("report {} is not a shard report (it has no shard I/N)", k + 1));
+            return err(format!(
+                "report {} is not a shard report (it has no shard I/N)",
+                k + 1
+            ));
         };
         same("shard count", count.to_string(), s.count.to_string())?;
         if seen[s.index - 1] {
@@ -117,9 +121,14 @@ pub fn merge(reports: &[Report]) -> Result<Report, MergeError> {
         out.max_rel = out.max_rel.max(r.max_rel);
         out.max_bits = out.max_bits.max(r.max_bits);
         if out.max_ulps_per_output.len() < r.max_ulps_per_output.len() {
-            out.max_ulps_per_output.resize(r.max_ulps_per_output.len(), 0.0);
+            out.max_ulps_per_output
+                .resize(r.max_ulps_per_output.len(), 0.0);
         }
-        for (m, &u) in out.max_ulps_per_output.iter_mut().zip(&r.max_ulps_per_output) {
+        for (m, &u) in out
+            .max_ulps_per_output
+            .iter_mut()
+            .zip(&r.max_ulps_per_output)
+        {
             *m = m.max(u);
         }
         for (t, s) in out.above.iter_mut().zip(&r.above) {

@@ -53,7 +53,6 @@
 //! divide with [`exactcheck_core::Field::checked_div`] or [`exactcheck_core::Field::inv`] and
 //! propagate the [`ZeroDivisor`] with `?`; the harness then counts the sample instead of crashing.
 
-
 mod merge;
 mod shrink;
 
@@ -211,7 +210,6 @@ impl std::fmt::Display for CaseError {
 
 impl std::error::Error for CaseError {}
 
-
 /// The exact value of one output: a rational that is the true value (`exact`), or, for a real
 /// number behind an irrational square root, a rational approximation close enough that the
 /// error of any double against it is the error against the true value to far below an ulp.
@@ -349,12 +347,12 @@ pub(crate) struct Evaluated {
     failure: bool,
 }
 
-/// An exact output for reports: `n` or `n/d` when exact, else `~` and 30 significant digits.
+/// An exact output for reports: `n` or `n/d` when exact, else `~` and 25 significant digits.
 fn exact_text(v: &ExactValue) -> String {
     if v.exact {
         v.value.to_string()
     } else {
-        format!("~{}", crate::convert::decimal_digits(&v.value, 30))
+        format!("~{}", crate::convert::decimal_digits(&v.value, 25))
     }
 }
 
@@ -400,10 +398,7 @@ fn compare(exact: Vec<ExactValue>, float: Option<Vec<f64>>) -> Evaluated {
             Some(&a) => {
                 ulps.push(ulps_error(a, &q.value));
                 rel.push(rel_error(a, &q.value));
-                bits = bits.max(herbie_bits(
-                    a,
-                    crate::convert::rational_to_f64(&q.value),
-                ));
+                bits = bits.max(herbie_bits(a, crate::convert::rational_to_f64(&q.value)));
             }
             None => {
                 ulps.push(f64::INFINITY);
@@ -667,7 +662,9 @@ pub fn run(
             match e {
                 Err(e) => acc.skip(e),
                 Ok(e) => {
-                    let float = floats[k].take().expect("the float side of a defined sample");
+                    let float = floats[k]
+                        .take()
+                        .expect("the float side of a defined sample");
                     let ev = compare(e, float);
                     acc.add(&ev);
                     keep(&mut kept, options.worst, i, x, ev);

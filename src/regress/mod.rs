@@ -1,9 +1,19 @@
-//! `exactcheck regress KERNEL`: built-in f64 kernels regressed against exact results with the
-//! harness of `exactcheck-float`. Each kernel is a formula of `exactcheck-core` written once,
-//! generic over the scalar, run in f64 and exactly on the same seeded inputs; `plane-plane`
-//! ([`planes`]) regresses the published JavaScript port against the exact construction instead.
+//! `exactcheck regress`: float code against exact results on seeded inputs, through the one
+//! harness sweep of `exactcheck-float`. What is regressed:
+//! * a built-in kernel (`regress KERNEL`): a formula of `exactcheck-core` written once, generic
+//!   over the scalar, run in f64 and exactly on the same inputs; `plane-plane` ([`planes`])
+//!   regresses the published JavaScript port against the exact construction with its own
+//!   binned measure, and `ruled-plane` ([`ruled`]) runs the harness on several generators;
+//! * a formula as text (`--formula`), or the benchmarks of an FPCore file (`--fpcore`), compiled
+//!   to a float program ([`text`]);
+//! * with `--program`, the user's own executable as the float side of a formula.
+//!
+//! Any harness sweep can run as a shard (`--shard I/N`, JSON out) and the shards merge
+//! (`exactcheck merge`, [`sweep`]).
 
 pub mod planes;
+pub mod sweep;
+pub mod text;
 
 use crate::args::{check_count, ScalarChoice};
 use crate::Error;
@@ -18,14 +28,48 @@ pub const MAX_SAMPLES: usize = 1_000_000;
 use exactcheck_core::cylinder_sphere::{unit_circle_point, CylinderSphere};
 use exactcheck_core::{BezierCurve, OrderedField, Vec3, ZeroDivisor};
 use exactcheck_exact::{PlainRational, Rational};
-use exactcheck_float::{regress, ExactScalar, Formula, InputGen, Options, Report, UniformBox};
+use exactcheck_float::{
+    ExactScalar, Formula, Generic, InputGen, Options, Report, Sweep, UniformBox,
+};
 
 /// Arguments of `exactcheck regress`.
 #[derive(Debug, Args)]
+#[command(group(clap::ArgGroup::new("subject").required(true).args(["kernel", "formula", "fpcore"])))]
 pub struct RegressArgs {
-    /// The kernel to regress.
+    /// The built-in kernel to regress (or give --formula or --fpcore).
     #[arg(value_enum)]
-    pub kernel: Kernel,
+    pub kernel: Option<Kernel>,
+    /// A formula in the `prove` syntax plus sqrt of any subexpression, e.g.
+    /// 'sqrt(x + 1) - sqrt(x)': evaluated in f64 in the order written and exactly.
+    #[arg(long, conflicts_with_all = ["kernel", "fpcore"])]
+    pub formula: Option<String>,
+    /// The formula's inputs in order, comma-separated (default: in order of appearance).
+    #[arg(long, value_delimiter = ',', requires = "formula")]
+    pub vars: Option<Vec<String>>,
+    /// The input domain of --formula, e.g. 'x in [1, 1e15], y in (0, inf)'. Both bounds
+    /// finite: uniform on the reals; a missing or infinite bound: uniform over the doubles.
+    #[arg(long, requires = "formula")]
+    pub domain: Option<String>,
+    /// An FPCore file: every benchmark in it (or the one --name chooses) is regressed.
+    #[arg(long, value_name = "FILE", conflicts_with = "kernel")]
+    pub fpcore: Option<String>,
+    /// The FPCore benchmark to run (its :name).
+    #[arg(long, requires = "fpcore")]
+    pub name: Option<String>,
+    /// The float side is this executable ('CMD ARGS'): one JSON line of inputs in, one line
+    /// of outputs back per sample (see the README).
+    #[arg(long, value_name = "CMD")]
+    pub program: Option<String>,
+    /// Seconds to wait for each answer of --program.
+    #[arg(long, default_value_t = 10.0, value_name = "SECONDS")]
+    pub program_timeout: f64,
+    /// Run part I of N of the sweep (by sample index) and print its JSON shard report;
+    /// `exactcheck merge` combines the shards.
+    #[arg(long, value_name = "I/N")]
+    pub shard: Option<exactcheck_float::Shard>,
+    /// No progress bar.
+    #[arg(long)]
+    pub quiet: bool,
     /// Number of random input vectors (at most 1,000,000).
     #[arg(long, default_value_t = 10_000)]
     pub samples: usize,
@@ -148,13 +192,31 @@ fn run_kernel<E: ExactScalar>(
     args: &RegressArgs,
     options: &Options,
 ) -> Result<Report, Error> {
+    let sweep = Sweep {
+        samples: args.samples,
+        seed: args.seed,
+        shard: args.shard,
+    };
+    let total = args
+        .shard
+        .map_or(args.samples, |s| s.range(args.samples).len());
+    let progress = sweep::Progress::new(total, "regress", args.quiet || args.json);
+    let tick = |done: usize| progress.update(done);
     let report = match kernel {
-        Kernel::CylinderSphere => {
-            regress::<E>(&CylinderSphereKernel, gen, args.samples, args.seed, options)
-        }
-        Kernel::BezierCubic => {
-            regress::<E>(&BezierCubicKernel, gen, args.samples, args.seed, options)
-        }
+        Kernel::CylinderSphere => exactcheck_float::run(
+            &Generic::<_, E>::new(&CylinderSphereKernel),
+            gen,
+            sweep,
+            options,
+            &tick,
+        ),
+        Kernel::BezierCubic => exactcheck_float::run(
+            &Generic::<_, E>::new(&BezierCubicKernel),
+            gen,
+            sweep,
+            options,
+            &tick,
+        ),
         Kernel::PlanePlane => {
             return Err(Error::Usage(
                 "plane-plane is not a harness formula (see regress::planes)".into(),
@@ -176,7 +238,37 @@ fn run_kernel<E: ExactScalar>(
 /// output fails.
 pub fn run(args: &RegressArgs) -> Result<ExitCode, Error> {
     check_count("--samples", args.samples, MAX_SAMPLES, "")?;
-    if args.kernel == Kernel::PlanePlane {
+    if !(args.program_timeout.is_finite()
+        && args.program_timeout > 0.0
+        && args.program_timeout <= 86_400.0)
+    {
+        return Err(Error::Usage(format!(
+            "--program-timeout must be between 0 and 86400 seconds (got {})",
+            args.program_timeout
+        )));
+    }
+    let kernel = match (&args.kernel, &args.formula, &args.fpcore) {
+        (Some(k), None, None) => *k,
+        (None, Some(f), None) => return text_run(args, f, false),
+        (None, None, Some(path)) => return text_run(args, path, true),
+        _ => {
+            return Err(Error::Usage(
+                "regress needs one of: a KERNEL (cylinder-sphere, bezier-cubic, plane-plane, ruled-plane), --formula EXPR, --fpcore FILE".into(),
+            ))
+        }
+    };
+    if args.program.is_some() {
+        return Err(Error::Usage(
+            "--program is the float side of --formula or --fpcore, not of a built-in kernel".into(),
+        ));
+    }
+    if args.shard.is_some() && matches!(kernel, Kernel::PlanePlane | Kernel::RuledPlane) {
+        return Err(Error::Usage(format!(
+            "--shard applies to harness sweeps (--formula, --fpcore, cylinder-sphere, bezier-cubic); {} has its own sweep",
+            kernel.to_possible_value().map_or_else(String::new, |v| v.get_name().to_string())
+        )));
+    }
+    if kernel == Kernel::PlanePlane {
         if args.scalar != ScalarChoice::Fast {
             return Err(Error::Usage(
                 "regress plane-plane runs on the fast exact rationals only (--scalar fast)".into(),
@@ -196,7 +288,7 @@ pub fn run(args: &RegressArgs) -> Result<ExitCode, Error> {
         worst: args.worst,
         ..Options::default()
     };
-    if args.kernel == Kernel::RuledPlane {
+    if kernel == Kernel::RuledPlane {
         let rows = match args.scalar {
             ScalarChoice::Fast => ruled::rows::<Rational>(args.samples, args.seed, &options)?,
             ScalarChoice::Plain => ruled::rows::<PlainRational>(args.samples, args.seed, &options)?,
@@ -208,14 +300,23 @@ pub fn run(args: &RegressArgs) -> Result<ExitCode, Error> {
         }
         return Ok(ExitCode::SUCCESS);
     }
-    let gen = generator(args.kernel)?;
+    let gen = generator(kernel)?;
     let report = match args.scalar {
-        ScalarChoice::Fast => run_kernel::<Rational>(args.kernel, &gen, args, &options)?,
-        ScalarChoice::Plain => run_kernel::<PlainRational>(args.kernel, &gen, args, &options)?,
+        ScalarChoice::Fast => run_kernel::<Rational>(kernel, &gen, args, &options)?,
+        ScalarChoice::Plain => run_kernel::<PlainRational>(kernel, &gen, args, &options)?,
     };
+    if args.shard.is_some() {
+        let entry = sweep::Entry {
+            name: report.formula.clone(),
+            line: None,
+            outcome: Ok(report),
+        };
+        sweep::print(&[entry], true)?;
+        return Ok(ExitCode::SUCCESS);
+    }
     if args.json {
-        let mut doc = serde_json::json!({ "report": ruled::report_json(&report) });
-        if args.kernel == Kernel::CylinderSphere {
+        let mut doc = serde_json::json!({ "report": report.to_json() });
+        if kernel == Kernel::CylinderSphere {
             let r = root_errors(&gen, args.samples, args.seed);
             let s = sign_errors(args.samples, args.seed);
             doc["roots"] = serde_json::json!({
@@ -235,10 +336,26 @@ pub fn run(args: &RegressArgs) -> Result<ExitCode, Error> {
         return Ok(ExitCode::SUCCESS);
     }
     crate::output::println(report)?;
-    if args.kernel == Kernel::CylinderSphere {
+    if kernel == Kernel::CylinderSphere {
         crate::output::println(root_errors(&gen, args.samples, args.seed).text())?;
         crate::output::println(sign_errors_near_tangency(args.samples, args.seed))?;
     }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// `regress --formula` / `regress --fpcore`.
+fn text_run(args: &RegressArgs, source: &str, fpcore: bool) -> Result<ExitCode, Error> {
+    if args.scalar != ScalarChoice::Fast {
+        return Err(Error::Usage(
+            "--scalar plain applies to the built-in kernels; formulas are evaluated exactly in exactcheck's Rational".into(),
+        ));
+    }
+    let entries = if fpcore {
+        text::fpcore_entries(args, source)?
+    } else {
+        text::formula_entries(args, source)?
+    };
+    sweep::print(&entries, args.json || args.shard.is_some())?;
     Ok(ExitCode::SUCCESS)
 }
 

@@ -1,0 +1,237 @@
+//! Formulas given as text (`--formula`), FPCore benchmarks (`--fpcore`) and the user's own
+//! executable as the float side (`--program`): each becomes a [`Subject`] of the one harness
+//! sweep ([`exactcheck_float::run`]).
+//!
+//! The exact side is [`Program::eval_exact`] (the true real value, irrational roots refined far
+//! beyond double precision); the float side is [`Program::eval_f64`] (the operations in f64 in
+//! the order written) or, with `--program`, the user's executable fed through
+//! [`exactcheck_float::program::ProgramRunner`].
+
+use super::sweep::{Entry, Progress};
+use super::RegressArgs;
+use crate::Error;
+use exactcheck_exact::program::fpcore;
+use exactcheck_exact::program::{ExactStop, Program};
+use exactcheck_exact::Rational;
+use exactcheck_float::domain::{parse_domain, Domain};
+use exactcheck_float::program::ProgramRunner;
+use exactcheck_float::{
+    CaseError, ExactScalar, ExactValue, FloatSideError, InputGen, Options, Subject, Sweep,
+};
+use std::sync::Mutex;
+use std::time::Duration;
+
+/// A float program as a harness subject: exact against f64 (or against an external program).
+pub struct TextSubject<'a> {
+    program: &'a Program,
+    runner: Option<Mutex<ProgramRunner>>,
+}
+
+impl<'a> TextSubject<'a> {
+    /// The program in f64 against its exact value.
+    pub fn new(program: &'a Program) -> TextSubject<'a> {
+        TextSubject {
+            program,
+            runner: None,
+        }
+    }
+
+    /// The external program `command` against the exact value of `program`.
+    ///
+    /// # Errors
+    /// The command cannot be started (one line naming it).
+    pub fn with_program(
+        program: &'a Program,
+        command: &str,
+        timeout: Duration,
+    ) -> Result<TextSubject<'a>, Error> {
+        let runner = ProgramRunner::spawn(
+            command,
+            program.inputs.len(),
+            program.outputs.len(),
+            timeout,
+        )
+        .map_err(|e| Error::Input(e.to_string()))?;
+        Ok(TextSubject {
+            program,
+            runner: Some(Mutex::new(runner)),
+        })
+    }
+}
+
+impl Subject for TextSubject<'_> {
+    fn name(&self) -> String {
+        self.program.name.clone()
+    }
+    fn arity(&self) -> usize {
+        self.program.inputs.len()
+    }
+    fn exact(&self, x: &[f64]) -> Result<Vec<ExactValue>, CaseError> {
+        let exact_in: Vec<Rational> = x
+            .iter()
+            .map(|&v| Rational::from_f64_exact(v))
+            .collect::<Option<_>>()
+            .ok_or(CaseError::InvalidInputs)?;
+        match self.program.eval_exact(&exact_in) {
+            Ok(refs) => Ok(refs
+                .into_iter()
+                .map(|r| ExactValue {
+                    value: r.value,
+                    exact: r.exact,
+                })
+                .collect()),
+            Err(ExactStop::OutsideDomain) => Err(CaseError::OutsideDomain),
+            Err(_) => Err(CaseError::Undecided),
+        }
+    }
+    fn float(&self, index: usize, x: &[f64]) -> Result<Option<Vec<f64>>, FloatSideError> {
+        match &self.runner {
+            None => Ok(Some(self.program.eval_f64(x))),
+            Some(r) => r
+                .lock()
+                .expect("the runner is used from the sweep's thread only")
+                .eval_one(index, x)
+                .map(Some)
+                .map_err(|e| FloatSideError(e.to_string())),
+        }
+    }
+    fn float_batch(
+        &self,
+        first: usize,
+        xs: &[Vec<f64>],
+    ) -> Result<Vec<Option<Vec<f64>>>, FloatSideError> {
+        match &self.runner {
+            None => Ok(xs.iter().map(|x| Some(self.program.eval_f64(x))).collect()),
+            Some(r) => Ok(r
+                .lock()
+                .expect("the runner is used from the sweep's thread only")
+                .eval_batch(first, xs)
+                .map_err(|e| FloatSideError(e.to_string()))?
+                .into_iter()
+                .map(Some)
+                .collect()),
+        }
+    }
+}
+
+/// The harness options of a run.
+fn options(args: &RegressArgs) -> Options {
+    Options {
+        worst: args.worst,
+        ..Options::default()
+    }
+}
+
+/// One sweep of a program over a domain, as an entry.
+fn sweep_entry(
+    args: &RegressArgs,
+    program: &Program,
+    gen: &impl InputGen,
+    line: Option<usize>,
+) -> Result<Entry, Error> {
+    let subject = match &args.program {
+        None => TextSubject::new(program),
+        Some(cmd) => {
+            TextSubject::with_program(program, cmd, Duration::from_secs_f64(args.program_timeout))?
+        }
+    };
+    let sweep = Sweep {
+        samples: args.samples,
+        seed: args.seed,
+        shard: args.shard,
+    };
+    let total = sweep
+        .shard
+        .map_or(args.samples, |s| s.range(args.samples).len());
+    let progress = Progress::new(total, &program.name, args.quiet || args.json);
+    let report = exactcheck_float::run(&subject, gen, sweep, &options(args), &|done| {
+        progress.update(done);
+    })
+    .map_err(|e| Error::Input(e.to_string()))?;
+    Ok(Entry {
+        name: program.name.clone(),
+        line,
+        outcome: Ok(report),
+    })
+}
+
+/// `regress --formula EXPR [--vars ...] [--domain ...]`.
+///
+/// # Errors
+/// The formula or the domain does not parse, or the sweep fails (an external program).
+pub fn formula_entries(args: &RegressArgs, text: &str) -> Result<Vec<Entry>, Error> {
+    let program = Program::parse(text, args.vars.as_deref())
+        .map_err(|e| Error::Input(format!("--formula: {e}")))?;
+    let domain =
+        match &args.domain {
+            Some(d) => parse_domain(d, &program.inputs)
+                .map_err(|e| Error::Input(format!("--domain: {e}")))?,
+            None => parse_domain("", &program.inputs)
+                .map_err(|e| Error::Input(format!("--domain: {e}")))?,
+        };
+    let gen = Domain::named(domain, &program.inputs)
+        .map_err(|e| Error::Input(format!("--domain: {e}")))?;
+    Ok(vec![sweep_entry(args, &program, &gen, None)?])
+}
+
+/// `regress --fpcore FILE [--name NAME]`: every benchmark of the file (or the one named).
+///
+/// # Errors
+/// The file cannot be read or has a syntax error; `--name` names no benchmark; `--program`
+/// with more than one benchmark; a sweep fails (an external program).
+pub fn fpcore_entries(args: &RegressArgs, path: &str) -> Result<Vec<Entry>, Error> {
+    let text = crate::solve::read_problem(Some(path))?;
+    let all = fpcore::parse_file(&text).map_err(|e| Error::Input(format!("{path}: {e}")))?;
+    let label = |b: &fpcore::Benchmark| b.display_name();
+    let chosen: Vec<&fpcore::Benchmark> = match &args.name {
+        None => all.iter().collect(),
+        Some(n) => {
+            let c: Vec<_> = all
+                .iter()
+                .filter(|b| b.name.as_deref() == Some(n))
+                .collect();
+            if c.is_empty() {
+                let names: Vec<String> = all.iter().map(label).collect();
+                return Err(Error::Usage(format!(
+                    "{path} has no FPCore named '{n}' (names: {})",
+                    names.join(", ")
+                )));
+            }
+            c
+        }
+    };
+    if chosen.is_empty() {
+        return Err(Error::Input(format!("{path} contains no FPCore")));
+    }
+    if args.program.is_some() && chosen.len() > 1 {
+        return Err(Error::Usage(format!(
+            "--program runs one benchmark: {path} has {}, choose one with --name",
+            chosen.len()
+        )));
+    }
+    let mut out = Vec::new();
+    for b in chosen {
+        let name = label(b);
+        let entry = match &b.program {
+            Err(unsupported) => Entry {
+                name,
+                line: Some(b.line),
+                outcome: Err(unsupported.to_string()),
+            },
+            Ok(program) => {
+                let mut program = program.clone();
+                program.name = name.clone();
+                match Domain::named(b.domain.clone(), &b.args) {
+                    Err(e) => Entry {
+                        name,
+                        line: Some(b.line),
+                        outcome: Err(format!("no input to sample: {e}")),
+                    },
+                    Ok(gen) => sweep_entry(args, &program, &gen, Some(b.line))?,
+                }
+            }
+        };
+        out.push(entry);
+    }
+    Ok(out)
+}
