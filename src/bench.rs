@@ -27,6 +27,12 @@ pub const MAX_W2_SEQ_N: usize = 100_000;
 /// The largest `bench w3 --n` (seconds on all cores).
 pub const MAX_W3_N: usize = 1_000_000_000;
 
+/// The largest `--n` of `bench formula` (about 300,000 exact evaluations/s per core).
+pub const MAX_FORMULA_N: usize = 10_000_000;
+
+/// The formula of `bench formula` and `scripts/regress_baseline.py`: 11 operations.
+pub const BASELINE_FORMULA: &str = "((x + y) * (z - w) - x * z / (y + 2)) * (w + 1) + x*y";
+
 /// Arguments of `exactcheck bench`.
 #[derive(Debug, Args)]
 pub struct BenchArgs {
@@ -53,6 +59,20 @@ pub enum Workload {
         /// Print one JSON line (as the anchor scripts do) instead of text.
         #[arg(long)]
         json: bool,
+    },
+    /// The exact side of `regress --formula` alone: the 11-operation formula of
+    /// `scripts/regress_baseline.py` evaluated exactly on its inputs (the same seeded doubles),
+    /// with the same check values.
+    Formula {
+        /// Number of samples (at most 10,000,000).
+        #[arg(long, default_value_t = 100_000)]
+        n: usize,
+        /// The seed of the inputs (as `regress --seed`).
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+        /// Evaluate on one core only (default: all cores, as `regress` does).
+        #[arg(long)]
+        serial: bool,
     },
     /// W3: f64 sampling of the Spaeth discriminant on the grid t_i = i 2 pi / N.
     W3 {
@@ -94,6 +114,10 @@ pub fn max_w2_n(mode: w2::Mode) -> (usize, &'static str) {
 /// [`Error::Usage`] for `--n` outside its range; [`Error::Output`] when standard output fails.
 pub fn run(args: &BenchArgs) -> Result<ExitCode, Error> {
     let text = match args.workload {
+        Workload::Formula { n, seed, serial } => {
+            let n = check_count("--n", n, MAX_FORMULA_N, "")?;
+            bench_formula(n, seed, serial)
+        }
         Workload::W3 { n, variant, json } => {
             let n = check_count("--n", n, MAX_W3_N, "")?;
             bench_w3(n, variant, json)
@@ -183,4 +207,61 @@ pub fn bench_w2<T: RationalScalar>(n: usize, mode: w2::Mode, scalar: &str, json:
             n as f64 / out.seconds
         )
     }
+}
+
+/// `bench formula`: the exact side of [`BASELINE_FORMULA`] on `n` samples of four doubles
+/// uniform in [-1, 1] (`sample_inputs(UniformBox::cube(4, -1, 1), seed, i)`, the inputs of
+/// `regress --formula ... --domain 'x in [-1, 1], ...'` and of the Python baseline), timed
+/// (inputs drawn outside the timed region), with the baseline's check values: the sums of the
+/// results' numerators and denominators mod `2^61 - 1`, and the correctly rounded sum of their
+/// correctly rounded doubles.
+pub fn bench_formula(n: usize, seed: u64, serial: bool) -> String {
+    use exactcheck_exact::program::Program;
+    use exactcheck_float::{sample_inputs, ExactScalar, UniformBox};
+    use num_bigint::BigInt;
+    use num_traits::{ToPrimitive, Zero};
+    use rayon::prelude::*;
+    let vars: Vec<String> = ["x", "y", "z", "w"].map(String::from).to_vec();
+    let program = Program::parse(BASELINE_FORMULA, Some(&vars)).expect("the formula parses");
+    let gen = UniformBox::cube(4, -1.0, 1.0).expect("a valid box");
+    let inputs: Vec<Vec<Rational>> = (0..n)
+        .map(|i| {
+            sample_inputs(&gen, seed, i)
+                .iter()
+                .map(|&v| Rational::from_f64_exact(v).expect("finite"))
+                .collect()
+        })
+        .collect();
+    let eval = |x: &Vec<Rational>| {
+        program
+            .eval_exact(x)
+            .ok()
+            .and_then(|r| r.into_iter().next())
+    };
+    let start = Instant::now();
+    let values: Vec<_> = if serial {
+        inputs.iter().map(eval).collect()
+    } else {
+        inputs.par_iter().map(eval).collect()
+    };
+    let seconds = start.elapsed().as_secs_f64();
+    let p = BigInt::from((1u64 << 61) - 1);
+    let (mut num, mut den) = (BigInt::zero(), BigInt::zero());
+    let mut doubles = Vec::with_capacity(n);
+    let mut defined = 0usize;
+    for v in values.into_iter().flatten() {
+        defined += 1;
+        num = (num + v.value.numer()) % &p;
+        den = (den + v.value.denom()) % &p;
+        doubles.push(exactcheck_float::rational_to_f64(&v.value));
+    }
+    let modp = |x: BigInt| ((x % &p + &p) % &p).to_u64().expect("below p");
+    format!(
+        "formula {BASELINE_FORMULA}: {n} samples ({defined} defined) in {seconds:.3} s = {:.0} samples/s on {} thread(s); sum_num_mod_p {}, sum_den_mod_p {}, fsum {:?}",
+        n as f64 / seconds,
+        if serial { 1 } else { rayon::current_num_threads() },
+        modp(num),
+        modp(den),
+        exactcheck_float::convert::fsum(&doubles)
+    )
 }

@@ -571,3 +571,19 @@ fn prove_reads_scientific_notation_and_refuses_unknown_functions() {
         assert!(err.contains("unknown function 'sin'"), "{err}");
     }
 }
+
+/// `bench formula` evaluates the Python baseline's formula on the baseline's inputs: its check
+/// values are those `scripts/regress_baseline.py` computed with `fractions.Fraction` (N = 100,000,
+/// seed 1), so the throughput comparison is of the same work.
+#[test]
+fn bench_formula_matches_the_python_baseline() {
+    let o = exactcheck(&["bench", "formula", "--n", "100000", "--seed", "1"]);
+    assert!(o.status.success());
+    let s = stdout(&o);
+    assert!(
+        s.contains(
+            "sum_num_mod_p 1890083373366259320, sum_den_mod_p 473922923631408103, fsum 56.33278487489465"
+        ),
+        "{s}"
+    );
+}

@@ -161,7 +161,7 @@ pub fn ulp(x: f64) -> f64 {
 /// infinite `approx` has an infinite error; a finite error too large for a double also reads
 /// `inf`.
 pub fn ulps_error(approx: f64, exact: &BigRational) -> f64 {
-    let Some(a) = f64_to_rational(approx) else {
+    let Some((an, ad)) = dyadic_parts(approx) else {
         return f64::INFINITY;
     };
     let rounded = rational_to_f64(exact);
@@ -170,12 +170,36 @@ pub fn ulps_error(approx: f64, exact: &BigRational) -> f64 {
     } else {
         ulp(f64::MAX)
     };
-    // `unit` is a power of two, so its rational form is exact.
-    let Some(unit) = f64_to_rational(unit) else {
+    // `unit` is a power of two `un / ud` with one of them 1.
+    let Some((un, ud)) = dyadic_parts(unit) else {
         return f64::INFINITY;
     };
-    let diff = (a - exact).abs();
-    rational_to_f64(&(diff / unit))
+    // |an/ad - n/d| / (un/ud) = |an d - n ad| ud / (ad d un), never reduced: the one rounding
+    // divides the integers (`rational_to_f64` takes any ratio; a gcd of big operands costs more
+    // than the whole measure).
+    let (n, d) = (exact.numer(), exact.denom());
+    let diff = (&an * d - n * &ad).abs();
+    rational_to_f64(&BigRational::new_raw(diff * ud, ad * d * un))
+}
+
+/// A finite double as an unreduced ratio of integers `(n, 2^k)` or `(n 2^k, 1)`.
+fn dyadic_parts(x: f64) -> Option<(BigInt, BigInt)> {
+    if !x.is_finite() {
+        return None;
+    }
+    let Some((neg, m, e)) = decompose(x) else {
+        return Some((BigInt::zero(), BigInt::one()));
+    };
+    let m = if neg {
+        -BigInt::from(m)
+    } else {
+        BigInt::from(m)
+    };
+    Some(if e >= 0 {
+        (m << e as usize, BigInt::one())
+    } else {
+        (m, BigInt::one() << (-e) as usize)
+    })
 }
 
 /// The relative error `|approx - exact| / |exact|`, computed exactly and rounded once.
@@ -183,13 +207,36 @@ pub fn ulps_error(approx: f64, exact: &BigRational) -> f64 {
 /// When `exact` is zero the error is `0` if `approx` is zero and `inf` otherwise. A NaN or
 /// infinite `approx` has an infinite error.
 pub fn rel_error(approx: f64, exact: &BigRational) -> f64 {
-    let Some(a) = f64_to_rational(approx) else {
+    let Some((an, ad)) = dyadic_parts(approx) else {
         return f64::INFINITY;
     };
     if exact.is_zero() {
-        return if a.is_zero() { 0.0 } else { f64::INFINITY };
+        return if an.is_zero() { 0.0 } else { f64::INFINITY };
     }
-    rational_to_f64(&((a - exact).abs() / exact.abs()))
+    // |an/ad - n/d| / |n/d| = |an d - n ad| / (ad |n|), unreduced (see `ulps_error`).
+    let (n, d) = (exact.numer(), exact.denom());
+    let diff = (&an * d - n * &ad).abs();
+    rational_to_f64(&BigRational::new_raw(diff, ad * n.abs()))
+}
+
+/// The correctly rounded sum of finite doubles (Python's `math.fsum`): each is added exactly as an
+/// integer multiple of `2^-1074`, and the exact sum is rounded once. Non-finite values are skipped.
+pub fn fsum(xs: &[f64]) -> f64 {
+    let mut sum = BigInt::zero();
+    for &x in xs {
+        if let Some((neg, m, e)) = decompose(x) {
+            let v = BigInt::from(m) << (e - MIN_EXP) as usize;
+            if neg {
+                sum -= v;
+            } else {
+                sum += v;
+            }
+        }
+    }
+    rational_to_f64(&BigRational::new_raw(
+        sum,
+        BigInt::one() << (-MIN_EXP) as usize,
+    ))
 }
 
 /// `q` in scientific notation with `digits` significant digits, truncated toward zero
@@ -240,6 +287,14 @@ mod tests {
 
     fn q(n: i64, d: i64) -> BigRational {
         BigRational::new(BigInt::from(n), BigInt::from(d))
+    }
+
+    #[test]
+    fn fsum_rounds_once() {
+        assert_eq!(fsum(&[0.1; 10]), 1.0);
+        assert_eq!(fsum(&[1e100, 1.0, -1e100]), 1.0);
+        assert_eq!(fsum(&[f64::from_bits(1), -f64::from_bits(1), 0.5]), 0.5);
+        assert_eq!(fsum(&[]), 0.0);
     }
 
     #[test]

@@ -657,17 +657,20 @@ pub fn run(
             }
             k = j;
         }
-        for (k, (x, e)) in inputs.into_iter().zip(exact).enumerate() {
-            let i = start + k;
-            match e {
+        // The measures (exact rational arithmetic) on all cores too.
+        let evaluated: Vec<Result<Evaluated, CaseError>> = exact
+            .into_par_iter()
+            .zip(floats.into_par_iter())
+            .map(|(e, float)| {
+                e.map(|e| compare(e, float.expect("the float side of a defined sample")))
+            })
+            .collect();
+        for (k, (x, ev)) in inputs.into_iter().zip(evaluated).enumerate() {
+            match ev {
                 Err(e) => acc.skip(e),
-                Ok(e) => {
-                    let float = floats[k]
-                        .take()
-                        .expect("the float side of a defined sample");
-                    let ev = compare(e, float);
+                Ok(ev) => {
                     acc.add(&ev);
-                    keep(&mut kept, options.worst, i, x, ev);
+                    keep(&mut kept, options.worst, start + k, x, ev);
                 }
             }
         }
