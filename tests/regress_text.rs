@@ -352,4 +352,21 @@ fn bad_formulas_and_domains_are_one_line_errors() {
         &["--program"],
     );
     refused(&["regress", "plane-plane", "--shard", "1/2"], &["--shard"]);
+    // Sample limits: per run, and in all with shards.
+    refused(
+        &["regress", "--formula", "x", "--samples", "200000000"],
+        &["--samples must be between 1 and 100000000 in one run"],
+    );
+    refused(
+        &[
+            "regress",
+            "--formula",
+            "x",
+            "--samples",
+            "200000000",
+            "--shard",
+            "1/1",
+        ],
+        &["shard 1/1", "use more shards"],
+    );
 }

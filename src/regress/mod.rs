@@ -25,6 +25,14 @@ pub mod ruled;
 /// The largest `--samples` (each sample is evaluated exactly, about 0.8 ms on one core for
 /// `cylinder_sphere`: the maximum is minutes of work).
 pub const MAX_SAMPLES: usize = 1_000_000;
+
+/// The largest number of samples one run evaluates of a `--formula` or `--fpcore` sweep (a
+/// float program of a few operations runs at 100,000-300,000 samples/s: minutes of work).
+pub const MAX_TEXT_SAMPLES: usize = 100_000_000;
+
+/// The largest `--samples` of a sharded sweep (each shard's own part stays within the per-run
+/// limit; the harness keeps bounded summaries, so the total costs no memory).
+pub const MAX_SWEEP_SAMPLES: usize = 1_000_000_000_000;
 use exactcheck_core::cylinder_sphere::{unit_circle_point, CylinderSphere};
 use exactcheck_core::{BezierCurve, OrderedField, Vec3, ZeroDivisor};
 use exactcheck_exact::{PlainRational, Rational};
@@ -234,10 +242,40 @@ fn run_kernel<E: ExactScalar>(
 /// Runs `exactcheck regress` and prints the report.
 ///
 /// # Errors
-/// [`Error::Usage`] for `--samples` outside `1..=MAX_SAMPLES`; [`Error::Output`] when standard
+/// [`Error::Usage`] for `--samples` outside `1..=MAX_SAMPLES` (`MAX_TEXT_SAMPLES` for a
+/// formula or FPCore; with `--shard`, `MAX_SWEEP_SAMPLES` in all and the per-run limit per shard); [`Error::Output`] when standard
 /// output fails.
 pub fn run(args: &RegressArgs) -> Result<ExitCode, Error> {
-    check_count("--samples", args.samples, MAX_SAMPLES, "")?;
+    let per_run = if args.formula.is_some() || args.fpcore.is_some() {
+        MAX_TEXT_SAMPLES
+    } else {
+        MAX_SAMPLES
+    };
+    match args.shard {
+        None => {
+            let context = if per_run == MAX_TEXT_SAMPLES {
+                format!(" in one run (with --shard I/N up to {MAX_SWEEP_SAMPLES} in all)")
+            } else {
+                String::new()
+            };
+            check_count("--samples", args.samples, per_run, &context)?;
+        }
+        Some(s) => {
+            check_count(
+                "--samples",
+                args.samples,
+                MAX_SWEEP_SAMPLES,
+                " with --shard",
+            )?;
+            let n = s.range(args.samples).len();
+            if n > per_run {
+                return Err(Error::Usage(format!(
+                    "shard {s} of {} samples has {n}, more than the {per_run} one run evaluates: use more shards",
+                    args.samples
+                )));
+            }
+        }
+    }
     if !(args.program_timeout.is_finite()
         && args.program_timeout > 0.0
         && args.program_timeout <= 86_400.0)

@@ -22,11 +22,11 @@
 //!   `max_i |q_i - u_i| / 2^-52`, in ulps of 1 (the length of both vectors); the angle between
 //!   `q` and `u` is at most `sqrt(3)` times this many units of `2^-52`.
 //!
-//! Hand-written rather than a `Formula` of the float harness: the reference side needs an
-//! irrational unit direction (a square root the harness's exact scalars lack), the float side is
-//! existing non-generic code with its own orientation, and the report is binned by a derived
-//! quantity (the angle), which the harness's flat statistics do not provide. The harness's exact
-//! conversions and ulp measure are reused.
+//! Its own sweep rather than a `Subject` of the float harness: the report is binned by a derived
+//! quantity (the angle between the normals), which the harness's flat statistics do not provide,
+//! and both measures are taken relative to the whole vector (the largest coordinate, the unit
+//! length), not per output as the harness measures. The harness's exact conversions and ulp
+//! measure are reused.
 //!
 //! Each sample is binned by the exact angle between its f64 normals (`asin` of the square root
 //! of `|n1 x n2|^2 / (|n1|^2 |n2|^2)`, computed exactly and rounded once), in decades. Each bin

@@ -531,3 +531,42 @@ fn pre_bounds_become_the_domain_and_the_rest_the_precondition() {
         }]
     );
 }
+
+/// Every supported operation evaluated both ways, after the merge with the evaluators: the f64
+/// side equals the same operations written in Rust, the exact side the value computed by hand.
+#[test]
+fn every_supported_operation_evaluates_both_ways() {
+    let p = program(
+        "(FPCore (a b c)
+           :precision binary64
+           (let* ((s (+ a b)) (d (- s c)) (m (* a (/ b 3))))
+             (let ((t (fma a b (neg c))) (u (fmin a (fmax b c))))
+               (if (and (< a b) (not (== a c)) (or (>= c 0) (!= b 1)))
+                   (+ (+ (+ (fabs d) (sqrt (* s s))) (pow m 2)) (- t u))
+                   (* (digits 3 -1 10) 0.1)))))",
+    );
+    let f = |a: f64, b: f64, c: f64| -> f64 {
+        let s = a + b;
+        let d = s - c;
+        let m = a * (b / 3.0);
+        let t = a.mul_add(b, -c);
+        let u = a.min(b.max(c));
+        if a < b && a != c && (c >= 0.0 || b != 1.0) {
+            ((d.abs() + (s * s).sqrt()) + m.powf(2.0)) + (t - u)
+        } else {
+            0.3 * 0.1
+        }
+    };
+    for (a, b, c) in [(0.5, 3.0, 2.0), (3.0, 0.5, 2.0), (-1.25, 7.5, -0.75)] {
+        assert_eq!(p.eval_f64(&[a, b, c]), vec![f(a, b, c)], "{a} {b} {c}");
+    }
+    // Exactly at (1/2, 3, 2): s = 7/2, d = 3/2, m = 1/2, t = -1/2, u = 1/2:
+    // 3/2 + 7/2 + 1/4 + (-1/2 - 1/2) = 17/4; on the other branch (digits 3 -1 10) * 1/10 = 3/100.
+    let r = |v: f64| Rational::from(num_rational::BigRational::from_float(v).expect("finite"));
+    let exact = p.eval_exact(&[r(0.5), r(3.0), r(2.0)]).expect("defined");
+    assert_eq!(exact.len(), 1);
+    assert!(exact[0].exact);
+    assert_eq!(exact[0].value, q(17, 4).to_big_rational());
+    let other = p.eval_exact(&[r(3.0), r(0.5), r(2.0)]).expect("defined");
+    assert_eq!(other[0].value, q(3, 100).to_big_rational());
+}
