@@ -370,3 +370,21 @@ fn bad_formulas_and_domains_are_one_line_errors() {
         &["shard 1/1", "use more shards"],
     );
 }
+
+/// The README's FPCore table is this run's output, verbatim.
+#[test]
+fn readme_fpcore_table_is_measured() {
+    let o = exactcheck(&[
+        "regress",
+        "--fpcore",
+        &data("suite.fpcore"),
+        "--samples",
+        "2000",
+    ]);
+    assert!(o.status.success());
+    let out = String::from_utf8_lossy(&o.stdout);
+    let table: String = out.lines().take(7).map(|l| format!("{l}\n")).collect();
+    let readme =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).expect("README");
+    assert!(readme.contains(&table), "README lacks\n{table}");
+}

@@ -95,6 +95,25 @@ pub struct RegressArgs {
     pub json: bool,
 }
 
+impl RegressArgs {
+    /// The sweep these arguments ask for (samples, seed, shard).
+    pub fn sweep(&self) -> Sweep {
+        Sweep {
+            samples: self.samples,
+            seed: self.seed,
+            shard: self.shard,
+        }
+    }
+
+    /// The progress bar of this run's part of the sweep (hidden with `--quiet` or `--json`).
+    pub fn progress(&self, label: &str) -> sweep::Progress {
+        let total = self
+            .shard
+            .map_or(self.samples, |s| s.range(self.samples).len());
+        sweep::Progress::new(total, label, self.quiet || self.json)
+    }
+}
+
 /// The built-in kernels.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum Kernel {
@@ -200,15 +219,8 @@ fn run_kernel<E: ExactScalar>(
     args: &RegressArgs,
     options: &Options,
 ) -> Result<Report, Error> {
-    let sweep = Sweep {
-        samples: args.samples,
-        seed: args.seed,
-        shard: args.shard,
-    };
-    let total = args
-        .shard
-        .map_or(args.samples, |s| s.range(args.samples).len());
-    let progress = sweep::Progress::new(total, "regress", args.quiet || args.json);
+    let sweep = args.sweep();
+    let progress = args.progress("regress");
     let tick = |done: usize| progress.update(done);
     let report = match kernel {
         Kernel::CylinderSphere => exactcheck_float::run(

@@ -412,7 +412,9 @@ fn bin_label(b: &Bin) -> String {
     }
 }
 
-fn num(v: f64) -> String {
+/// An error measure in a table cell: `inf`, `0`, two decimals in a middle range, else
+/// scientific with three (the tables of `regress plane-plane` and of an FPCore suite).
+pub fn cell(v: f64) -> String {
     if v.is_infinite() {
         "inf".into()
     } else if v == 0.0 {
@@ -452,10 +454,10 @@ impl fmt::Display for PlaneReport {
                 bin_label(b),
                 b.count,
                 b.non_finite,
-                num(b.point_max),
-                num(b.point_median),
-                num(b.direction_max),
-                num(b.direction_median)
+                cell(b.point_max),
+                cell(b.point_median),
+                cell(b.direction_max),
+                cell(b.direction_median)
             )?;
         }
         write!(
@@ -468,8 +470,8 @@ impl fmt::Display for PlaneReport {
                 f,
                 "\n    sample {i}: angle {:.3e} rad, Q {} ulps, q {} ulps; P1 = {:?}, n1 = {:?}, P2 = {:?}, n2 = {:?}",
                 m.angle,
-                num(m.point_ulps),
-                num(m.direction_ulps),
+                cell(m.point_ulps),
+                cell(m.direction_ulps),
                 c.p1,
                 c.n1,
                 c.p2,

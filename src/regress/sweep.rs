@@ -112,19 +112,6 @@ fn num(x: f64) -> String {
     format!("{x:?}")
 }
 
-/// An error measure in a table cell.
-fn measure(v: f64) -> String {
-    if v.is_infinite() {
-        "inf".into()
-    } else if v == 0.0 {
-        "0".into()
-    } else if (1e-2..1e6).contains(&v) {
-        format!("{v:.2}")
-    } else {
-        format!("{v:.2e}")
-    }
-}
-
 /// The summary table of several entries: name, samples, max and median ulps, Herbie's bits of
 /// error, the worst input.
 pub fn table(entries: &[Entry]) -> String {
@@ -143,8 +130,8 @@ pub fn table(entries: &[Entry]) -> String {
                 e.name.clone(),
                 (r.end_sample - r.first_sample).to_string(),
                 r.compared.to_string(),
-                measure(r.max_ulps),
-                measure(r.median_ulps),
+                super::planes::cell(r.max_ulps),
+                super::planes::cell(r.median_ulps),
                 format!("{:.2}", r.bits_of_error),
                 r.worst.first().map_or("-".into(), |w| {
                     let c = w.shrunk.as_ref().unwrap_or(&w.original);

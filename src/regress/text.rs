@@ -7,7 +7,7 @@
 //! the order written) or, with `--program`, the user's executable fed through
 //! [`exactcheck_float::program::ProgramRunner`].
 
-use super::sweep::{Entry, Progress};
+use super::sweep::Entry;
 use super::RegressArgs;
 use crate::Error;
 use exactcheck_exact::program::fpcore;
@@ -16,7 +16,7 @@ use exactcheck_exact::Rational;
 use exactcheck_float::domain::{parse_domain, Domain};
 use exactcheck_float::program::ProgramRunner;
 use exactcheck_float::{
-    CaseError, ExactScalar, ExactValue, FloatSideError, InputGen, Options, Subject, Sweep,
+    CaseError, ExactScalar, ExactValue, FloatSideError, InputGen, Options, Subject,
 };
 use std::sync::Mutex;
 use std::time::Duration;
@@ -135,16 +135,8 @@ fn sweep_entry(
             TextSubject::with_program(program, cmd, Duration::from_secs_f64(args.program_timeout))?
         }
     };
-    let sweep = Sweep {
-        samples: args.samples,
-        seed: args.seed,
-        shard: args.shard,
-    };
-    let total = sweep
-        .shard
-        .map_or(args.samples, |s| s.range(args.samples).len());
-    let progress = Progress::new(total, &program.name, args.quiet || args.json);
-    let report = exactcheck_float::run(&subject, gen, sweep, &options(args), &|done| {
+    let progress = args.progress(&program.name);
+    let report = exactcheck_float::run(&subject, gen, args.sweep(), &options(args), &|done| {
         progress.update(done);
     })
     .map_err(|e| Error::Input(e.to_string()))?;
