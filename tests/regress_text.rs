@@ -180,16 +180,7 @@ fn fpcore_suites_print_one_table() {
         "300",
         "--json",
     ]));
-    let f = json_of(&exactcheck(&[
-        "regress",
-        "--formula",
-        CANCEL,
-        "--domain",
-        "x in [1, 1e15]",
-        "--samples",
-        "300",
-        "--json",
-    ]));
+    let f = cancel_run("300", &[]);
     for key in [
         "max_ulps",
         "median_ulps",
@@ -214,6 +205,13 @@ fn fpcore_suites_print_one_table() {
 /// The user's program as the float side computes what the formula's f64 side computes, so the
 /// two reports are the same.
 fn program_matches_builtin(cmd: &str) {
+    let builtin = cancel_run("1500", &[]);
+    let external = cancel_run("1500", &["--program", cmd]);
+    assert_eq!(external, builtin, "{cmd}");
+}
+
+/// `regress --formula 'sqrt(x + 1) - sqrt(x)' --domain 'x in [1, 1e15]' --json` with `samples`.
+fn cancel_run(samples: &str, extra: &[&str]) -> Value {
     let base = [
         "regress",
         "--formula",
@@ -221,12 +219,10 @@ fn program_matches_builtin(cmd: &str) {
         "--domain",
         "x in [1, 1e15]",
         "--samples",
-        "1500",
+        samples,
         "--json",
     ];
-    let builtin = json_of(&exactcheck(&base));
-    let external = json_of(&exactcheck(&[&base[..], &["--program", cmd]].concat()));
-    assert_eq!(external, builtin, "{cmd}");
+    json_of(&exactcheck(&[&base[..], extra].concat()))
 }
 
 fn compiled_c() -> String {
