@@ -121,7 +121,8 @@ pub struct Report {
     pub domain_errors: usize,
     /// Samples skipped because the generator gave a wrong number of inputs or a non-finite one.
     pub invalid_inputs: usize,
-    /// Samples skipped because the exact side could not decide a sign up to its precision cap.
+    /// Samples skipped because the exact side could not decide a sign up to its precision cap
+    /// (or an exact intermediate exceeded its size limit).
     pub undecided: usize,
     /// Compared samples whose exact value was refined (an irrational root) rather than exact.
     pub refined: usize,

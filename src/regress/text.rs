@@ -81,7 +81,9 @@ impl Subject for TextSubject<'_> {
                 })
                 .collect()),
             Err(ExactStop::OutsideDomain) => Err(CaseError::OutsideDomain),
-            Err(_) => Err(CaseError::Undecided),
+            // Undecided at the precision cap, or an intermediate beyond MAX_CONSTANT_BITS: no
+            // reference either way, counted as undecided (never guessed).
+            Err(ExactStop::Undecided | ExactStop::TooLarge) => Err(CaseError::Undecided),
         }
     }
     fn float(&self, index: usize, x: &[f64]) -> Result<Option<Vec<f64>>, FloatSideError> {

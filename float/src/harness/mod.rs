@@ -192,7 +192,8 @@ pub enum CaseError {
     /// The exact evaluation reported a zero divisor: the inputs lie outside the domain.
     OutsideDomain,
     /// The exact side could not decide a comparison or a sign (a value that may be exactly
-    /// zero, behind an irrational root) up to its precision cap: counted, never guessed.
+    /// zero, behind an irrational root) up to its precision cap, or an exact intermediate
+    /// exceeded its size limit: counted, never guessed.
     Undecided,
 }
 
@@ -202,7 +203,9 @@ impl std::fmt::Display for CaseError {
             CaseError::InvalidInputs => f.write_str("wrong number of inputs or a non-finite input"),
             CaseError::OutsideDomain => f.write_str("the inputs lie outside the formula's domain"),
             CaseError::Undecided => {
-                f.write_str("the exact side could not decide a sign up to its precision cap")
+                f.write_str(
+                    "the exact side could not decide a sign up to its precision cap, or exceeded its size limit",
+                )
             }
         }
     }
