@@ -384,3 +384,14 @@ fn readme_fpcore_table_is_measured() {
         std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).expect("README");
     assert!(readme.contains(&table), "README lacks\n{table}");
 }
+
+/// The README's program examples are the files the tests run, verbatim.
+#[test]
+fn readme_program_examples_are_the_tested_files() {
+    let readme =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).expect("README");
+    for file in ["cancel.c", "cancel.py"] {
+        let text = std::fs::read_to_string(data(file)).expect("example");
+        assert!(readme.contains(&text), "README lacks {file} verbatim");
+    }
+}

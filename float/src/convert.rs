@@ -161,10 +161,15 @@ pub fn ulp(x: f64) -> f64 {
 /// infinite `approx` has an infinite error; a finite error too large for a double also reads
 /// `inf`.
 pub fn ulps_error(approx: f64, exact: &BigRational) -> f64 {
+    ulps_error_rounded(approx, exact, rational_to_f64(exact))
+}
+
+/// [`ulps_error`] given `rounded = rational_to_f64(exact)` (the harness needs the rounded value
+/// for Herbie's bits too, and rounds once).
+pub(crate) fn ulps_error_rounded(approx: f64, exact: &BigRational, rounded: f64) -> f64 {
     let Some((an, ad)) = dyadic_parts(approx) else {
         return f64::INFINITY;
     };
-    let rounded = rational_to_f64(exact);
     let unit = if rounded.is_finite() {
         ulp(rounded)
     } else {

@@ -145,15 +145,6 @@ impl Distribution {
         }
     }
 
-    /// The number of values strictly greater than `t`.
-    pub fn count_above(&self, t: f64) -> u64 {
-        self.counts
-            .iter()
-            .filter(|(&bits, _)| f64::from_bits(bits) > t)
-            .map(|(_, &n)| n)
-            .sum()
-    }
-
     /// The `(value, count)` pairs in ascending order (for serialisation).
     pub fn entries(&self) -> Vec<(f64, u64)> {
         self.counts
@@ -260,7 +251,6 @@ mod tests {
         }
         assert_eq!(d.median(), 2.5);
         assert_eq!(d.mean_finite(), 2.0);
-        assert_eq!(d.count_above(2.0), 2);
         d.push(-0.0);
         assert_eq!(d.median(), 2.0);
         assert!(!d.is_collapsed());

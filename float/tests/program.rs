@@ -13,21 +13,12 @@ use std::time::{Duration, Instant};
 /// A generous per-answer timeout for programs that do answer (the machine is shared).
 const PATIENT: Duration = Duration::from_secs(30);
 
-/// The README's C example, byte for byte.
-const C_SQRTDIFF: &str = r#"#include <math.h>
-#include <stdio.h>
-int main(void) {
-    double x;
-    while (scanf(" [%lf]", &x) == 1) { printf("%.17g\n", sqrt(x + 1) - sqrt(x)); fflush(stdout); }
-}
-"#;
+/// The README's C example, byte for byte (one file, also regressed end to end through the CLI by
+/// `tests/regress_text.rs`).
+const C_SQRTDIFF: &str = include_str!("../../tests/regress/cancel.c");
 
-/// The README's Python example, byte for byte.
-const PY_SQRTDIFF: &str = r#"import json, math, sys
-for line in sys.stdin:
-    x, = json.loads(line)
-    print(math.sqrt(x + 1) - math.sqrt(x), flush=True)
-"#;
+/// The README's Python example, byte for byte (likewise).
+const PY_SQRTDIFF: &str = include_str!("../../tests/regress/cancel.py");
 
 /// A directory of its own for one test, under cargo's scratch directory for integration tests;
 /// its name has a space so that commands need quoting.

@@ -274,18 +274,21 @@ pub fn merge_cmd(args: &MergeArgs) -> Result<std::process::ExitCode, Error> {
         docs.push(read_document(&text, path).map_err(Error::Input)?);
     }
     let first = &docs[0];
+    for (doc, path) in docs.iter().zip(&args.files) {
+        if doc.len() != first.len() {
+            return Err(Error::Input(format!(
+                "{path} has {} entries, {} has {}",
+                doc.len(),
+                args.files[0],
+                first.len()
+            )));
+        }
+    }
     let mut merged = Vec::new();
     for (k, entry) in first.iter().enumerate() {
         let mut reports = Vec::new();
         for (doc, path) in docs.iter().zip(&args.files) {
-            let Some(e) = doc.get(k) else {
-                return Err(Error::Input(format!(
-                    "{path} has {} entries, {} has {}",
-                    doc.len(),
-                    args.files[0],
-                    first.len()
-                )));
-            };
+            let e = &doc[k];
             if e.name != entry.name || e.line != entry.line {
                 return Err(Error::Input(format!(
                     "{path}: entry {} is '{}', in {} it is '{}'",
@@ -317,16 +320,6 @@ pub fn merge_cmd(args: &MergeArgs) -> Result<std::process::ExitCode, Error> {
             line: entry.line,
             outcome,
         });
-    }
-    for (doc, path) in docs.iter().zip(&args.files) {
-        if doc.len() != first.len() {
-            return Err(Error::Input(format!(
-                "{path} has {} entries, {} has {}",
-                doc.len(),
-                args.files[0],
-                first.len()
-            )));
-        }
     }
     print(&merged, args.json)?;
     Ok(std::process::ExitCode::SUCCESS)

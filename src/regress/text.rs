@@ -156,13 +156,9 @@ fn sweep_entry(
 pub fn formula_entries(args: &RegressArgs, text: &str) -> Result<Vec<Entry>, Error> {
     let program = Program::parse(text, args.vars.as_deref())
         .map_err(|e| Error::Input(format!("--formula: {e}")))?;
-    let domain =
-        match &args.domain {
-            Some(d) => parse_domain(d, &program.inputs)
-                .map_err(|e| Error::Input(format!("--domain: {e}")))?,
-            None => parse_domain("", &program.inputs)
-                .map_err(|e| Error::Input(format!("--domain: {e}")))?,
-        };
+    // No --domain: every input over all finite doubles.
+    let domain = parse_domain(args.domain.as_deref().unwrap_or(""), &program.inputs)
+        .map_err(|e| Error::Input(format!("--domain: {e}")))?;
     let gen = Domain::named(domain, &program.inputs)
         .map_err(|e| Error::Input(format!("--domain: {e}")))?;
     Ok(vec![sweep_entry(args, &program, &gen, None)?])

@@ -58,7 +58,7 @@ mod shrink;
 
 pub use merge::{merge, MergeError};
 
-use crate::convert::{rel_error, ulps_error};
+use crate::convert::{rel_error, ulps_error_rounded};
 use crate::gen::InputGen;
 use crate::report::{Case, Report, Summary, ThresholdCount, WorstCase};
 use crate::scalar::ExactScalar;
@@ -399,9 +399,10 @@ fn compare(exact: Vec<ExactValue>, float: Option<Vec<f64>>) -> Evaluated {
     for (i, q) in exact.iter().enumerate() {
         match float.as_ref().and_then(|f| f.get(i)) {
             Some(&a) => {
-                ulps.push(ulps_error(a, &q.value));
+                let rounded = crate::convert::rational_to_f64(&q.value);
+                ulps.push(ulps_error_rounded(a, &q.value, rounded));
                 rel.push(rel_error(a, &q.value));
-                bits = bits.max(herbie_bits(a, crate::convert::rational_to_f64(&q.value)));
+                bits = bits.max(herbie_bits(a, rounded));
             }
             None => {
                 ulps.push(f64::INFINITY);
@@ -424,16 +425,22 @@ fn compare(exact: Vec<ExactValue>, float: Option<Vec<f64>>) -> Evaluated {
     }
 }
 
+/// The exact side at one input vector, after the check every sample gets: the subject's arity,
+/// finite inputs.
+fn exact_side(subject: &(impl Subject + ?Sized), x: &[f64]) -> Result<Vec<ExactValue>, CaseError> {
+    if x.len() != subject.arity() || x.iter().any(|v| !v.is_finite()) {
+        return Err(CaseError::InvalidInputs);
+    }
+    subject.exact(x)
+}
+
 /// Both sides at one input vector (sample `index`, for the float side's error messages).
 pub(crate) fn evaluate_one(
     subject: &(impl Subject + ?Sized),
     index: usize,
     x: &[f64],
 ) -> Result<Result<Evaluated, CaseError>, FloatSideError> {
-    if x.len() != subject.arity() || x.iter().any(|v| !v.is_finite()) {
-        return Ok(Err(CaseError::InvalidInputs));
-    }
-    let exact = match subject.exact(x) {
+    let exact = match exact_side(subject, x) {
         Ok(e) => e,
         Err(e) => return Ok(Err(e)),
     };
@@ -626,37 +633,35 @@ pub fn run(
         let inputs: Vec<Vec<f64>> = (start..end)
             .map(|i| sample_inputs(gen, sweep.seed, i))
             .collect();
-        let exact: Vec<Result<Vec<ExactValue>, CaseError>> = inputs
-            .par_iter()
-            .map(|x| {
-                if x.len() != subject.arity() || x.iter().any(|v| !v.is_finite()) {
-                    Err(CaseError::InvalidInputs)
-                } else {
-                    subject.exact(x)
-                }
-            })
-            .collect();
+        let exact: Vec<Result<Vec<ExactValue>, CaseError>> =
+            inputs.par_iter().map(|x| exact_side(subject, x)).collect();
         // The float side only where the exact side is defined.
-        let (float_idx, float_in): (Vec<usize>, Vec<Vec<f64>>) = exact
-            .iter()
-            .zip(&inputs)
-            .enumerate()
-            .filter(|(_, (e, _))| e.is_ok())
-            .map(|(k, (_, x))| (k, x.clone()))
-            .unzip();
+        // The float side only where the exact side is defined, in runs of consecutive samples
+        // (slices of the chunk, so the batch's sample labels stay right).
         let mut floats = vec![None; inputs.len()];
-        // Consecutive runs keep the batch's sample labels right.
         let mut k = 0;
-        while k < float_idx.len() {
+        while k < inputs.len() {
+            if exact[k].is_err() {
+                k += 1;
+                continue;
+            }
             let mut j = k + 1;
-            while j < float_idx.len() && float_idx[j] == float_idx[j - 1] + 1 {
+            while j < inputs.len() && exact[j].is_ok() {
                 j += 1;
             }
             let out = subject
-                .float_batch(start + float_idx[k], &float_in[k..j])
+                .float_batch(start + k, &inputs[k..j])
                 .map_err(|e| RegressError::FloatSide(e.0))?;
-            for (m, o) in out.into_iter().enumerate() {
-                floats[float_idx[k + m]] = Some(o);
+            if out.len() != j - k {
+                return Err(RegressError::FloatSide(format!(
+                    "the float side answered {} of the {} samples from sample {}",
+                    out.len(),
+                    j - k,
+                    start + k
+                )));
+            }
+            for (slot, o) in floats[k..j].iter_mut().zip(out) {
+                *slot = Some(o);
             }
             k = j;
         }
