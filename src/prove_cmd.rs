@@ -163,6 +163,7 @@ fn collect_vars(e: &Expr, out: &mut Vec<String>) {
             collect_vars(b, out);
         }
         ExprKind::Sum(ts) => ts.iter().for_each(|(_, t)| collect_vars(t, out)),
+        ExprKind::Call(_, args) => args.iter().for_each(|a| collect_vars(a, out)),
         ExprKind::Product(fs) => fs.iter().for_each(|(_, f)| collect_vars(f, out)),
     }
 }

@@ -841,8 +841,7 @@ pub fn check_table(table: &[PrintedColumn]) -> Result<Outcome, String> {
             Verdict::Fails
         },
         method: "exact derivation in Q(sqrt 2) (Radical): ConeSection of the plane through (1,1,1) with the printed normal; entries compared exactly, weights up to a common factor, poles by exact evaluation and root isolation".into(),
-        evidence,
-    })
+        evidence, erratum: None, })
 }
 
 /// Table 1 as Markdown for the README: printed | derived | judgement, with the computed notes.
@@ -1210,8 +1209,7 @@ pub fn check_types(seed: u64, count: usize) -> Result<Outcome, String> {
         Outcome {
             verdict: Verdict::Holds,
             method: format!("exact sections in Q(sqrt 2, ...) (Radical) of Table 1's planes and {count} seeded random planes"),
-            evidence: format!("{summary}: all on plane and cone. All agree, and each Table 1 column is the type its heading names."),
-        }
+            evidence: format!("{summary}: all on plane and cone. All agree, and each Table 1 column is the type its heading names."), erratum: None, }
     } else {
         Outcome {
             verdict: Verdict::Fails,
@@ -1220,7 +1218,6 @@ pub fn check_types(seed: u64, count: usize) -> Result<Outcome, String> {
                 "{summary}. {} counter-example(s): {}",
                 disagreements.len(),
                 disagreements.join("; ")
-            ),
-        }
+            ), erratum: None, }
     })
 }

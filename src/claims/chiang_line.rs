@@ -392,6 +392,7 @@ fn line() -> Result<Outcome, String> {
                     "construction (m,n)=({m},{n}) has {found} roots in [0,1], not m+n = {}",
                     m + n
                 ),
+                erratum: None,
             });
         }
         attained.push(format!("({m},{n}): {found}"));
@@ -413,8 +414,7 @@ fn line() -> Result<Outcome, String> {
             symbolic.evidence,
             attained.join(", "),
             bound.evidence
-        ),
-    })
+        ), erratum: None, })
 }
 
 /// Counter-example data: a surface, the root the printed test finds, and what the full test says.
@@ -577,6 +577,7 @@ fn vicinity() -> Result<Outcome, String> {
             verdict: Verdict::Undecided,
             method: "symbolic + exact instances".into(),
             evidence: "no counter-example confirmed".into(),
+            erratum: None,
         });
     }
     Ok(Outcome {
@@ -589,8 +590,7 @@ fn vicinity() -> Result<Outcome, String> {
              corrected test: the origin (a point P) is on S iff some t in [0,1] is a common root of all three components of (B - P) x V with V(t) != 0, or B(t) = P",
             found.join("\ncounter-example: "),
             proof.evidence
-        ),
-    })
+        ), erratum: None, })
 }
 
 #[cfg(test)]

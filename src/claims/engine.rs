@@ -81,6 +81,7 @@ pub fn prove_all_in<C: PointField + Display>(
         verdict: Verdict::Undecided,
         method: method.into(),
         evidence,
+        erratum: None,
     };
     let mut terms = 0;
     for (what, r) in residuals {
@@ -110,8 +111,7 @@ pub fn prove_all_in<C: PointField + Display>(
                         "{what} is not zero: at {} it is {value}; it reduces to {}",
                         at.join(", "),
                         normal_form.display(&sym.vars)
-                    ),
-                };
+                    ), erratum: None, };
             }
             Decision::Undecided {
                 normal_form,
@@ -140,6 +140,7 @@ pub fn prove_all_in<C: PointField + Display>(
                 residuals[0].0
             )
         },
+        erratum: None,
     }
 }
 

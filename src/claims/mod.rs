@@ -42,6 +42,7 @@ pub mod planes;
 pub mod printed;
 pub mod spaeth;
 
+use exactcheck_exact::expr::Expr;
 use serde_json::{json, Value};
 use std::fmt;
 use std::time::Instant;
@@ -81,6 +82,39 @@ pub struct Outcome {
     /// The evidence: term counts, instance counts and error bounds, or the counter-example, the
     /// residual there and the corrected form.
     pub evidence: String,
+    /// For a failing printed statement: the printed and the derived correct form, the exact
+    /// counter-example and the residual there, as expression trees (the report's errata and
+    /// `verify --latex`). `None` for the other verdicts.
+    pub erratum: Option<Erratum>,
+}
+
+/// An equation `lhs = rhs` of an erratum, both sides expression trees (printed as text or
+/// LaTeX from the tree).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Equation {
+    /// The left side (often a name: `x`, `A(t)` is written as the variable `A`).
+    pub lhs: Expr,
+    /// The right side.
+    pub rhs: Expr,
+}
+
+/// What a failing claim's printed statement should have said, computed by its check: the
+/// report's errata section and `verify --latex` are made from it.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Erratum {
+    /// The printed formulas that are wrong, as printed (empty when the statement is prose).
+    pub printed: Vec<Equation>,
+    /// The derived correct formulas (proved or computed exactly by the check).
+    pub corrected: Vec<Equation>,
+    /// The correct statement in words, when it is not (only) a formula.
+    pub correction: String,
+    /// The exact counter-example: one `variable = value` per coordinate.
+    pub counter_example: Vec<Equation>,
+    /// The residual at the counter-example (e.g. `printed - derived = 22626/51701`).
+    pub residual: Vec<Equation>,
+    /// LaTeX for variable names (`cb` -> `\\cos\\beta`); names not listed are printed by the
+    /// LaTeX printer's default rules.
+    pub notation: Vec<(String, String)>,
 }
 
 /// A claim of the catalogue.

@@ -296,8 +296,7 @@ fn wabis() -> Result<Outcome, String> {
         evidence: format!(
             "Published (relations |n1|^2 = 1, |n2|^2 = 1; denominator 1 - r^2 cleared): {}. Exact construction Q = N/G, q = n1 x n2 (no relations): {}. {verdict_on_non_unit}: {counter}",
             unit.evidence, exact.evidence
-        ),
-    })
+        ), erratum: None, })
 }
 
 #[cfg(test)]

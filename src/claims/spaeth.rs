@@ -493,8 +493,7 @@ fn example1() -> Result<Outcome, String> {
         evidence: format!(
             "{}; A(t) = 0 identically (so u2 = -u1): {a_zero}; f64 at 10-degree steps: {real}/{n} samples real",
             describe(&a)
-        ),
-    })
+        ), erratum: None, })
 }
 
 /// The rational point of the unit circle nearest (by a convergent of tan(theta/2)) to an angle
@@ -538,8 +537,7 @@ fn example2() -> Result<Outcome, String> {
         evidence: format!(
             "rational rotations tau_beta = {tb}, tau_gamma = {tg} (angles off by {db:.1e} and {dg:.1e} rad); {}; f64 with the printed radians at 10-degree steps: {real}/36 samples real",
             describe(&a)
-        ),
-    })
+        ), erratum: None, })
 }
 
 fn example3() -> Result<Outcome, String> {
@@ -556,8 +554,7 @@ fn example3() -> Result<Outcome, String> {
     Ok(Outcome {
         verdict,
         method: EX_METHOD.into(),
-        evidence: format!("{}; by the axis distance: {by_distance:?}; f64 at 10-degree steps: {real}/{n} samples real", describe(&a)),
-    })
+        evidence: format!("{}; by the axis distance: {by_distance:?}; f64 at 10-degree steps: {real}/{n} samples real", describe(&a)), erratum: None, })
 }
 
 /// The configuration family searched by `spaeth.sampling`: the axis-aligned cylinder of radius
@@ -610,14 +607,14 @@ fn sampling() -> Result<Outcome, String> {
                     cs.center.y,
                     cs.center.z,
                     describe(&a)
-                ),
-            });
+                ), erratum: None, });
         }
     }
     Ok(Outcome {
         verdict: Verdict::Holds,
         method: "search over exact configurations; exact decision vs f64 sampling".into(),
         evidence: "no configuration of the searched family fooled the sampling".into(),
+        erratum: None,
     })
 }
 

@@ -156,6 +156,66 @@ pub fn run(args: &PlotArgs) -> Result<ExitCode, Error> {
     emit(&args.output, &svg, &what)
 }
 
+/// A figure of the built-in catalogue, as the report shows it.
+#[derive(Clone, Debug)]
+pub struct Figure {
+    /// A stable identifier (`spaeth.example1.tu`), also the figure's anchor in the report.
+    pub id: String,
+    /// The source paper: the claim-id prefix its claims share (`spaeth`, `chiang`).
+    pub source: &'static str,
+    /// The caption.
+    pub title: String,
+    /// The SVG document.
+    pub svg: String,
+}
+
+/// Every figure of the built-in catalogue, in a fixed order: Spaeth's examples 1-3 (t-u diagram
+/// and 3D view each), Chiang's Example 4, Table 1's four cone sections and the PH curve's offsets.
+///
+/// # Errors
+/// When a figure cannot be drawn (an internal error of the catalogue's data).
+pub fn catalogue_figures() -> Result<Vec<Figure>, Error> {
+    let mut out = Vec::new();
+    for n in 1..=3 {
+        let scene = spaeth_scene(n)?;
+        let fig = scene
+            .figure
+            .map_or(String::new(), |f| format!(" (the paper's {f})"));
+        out.push(Figure {
+            id: format!("spaeth.example{n}.tu"),
+            source: "spaeth",
+            title: format!("t-u diagram of {}{fig}", scene.name),
+            svg: tu_diagram(&scene),
+        });
+        out.push(Figure {
+            id: format!("spaeth.example{n}.3d"),
+            source: "spaeth",
+            title: format!("3D view of {}", scene.name),
+            svg: view_3d(&scene),
+        });
+    }
+    out.push(Figure {
+        id: "chiang.example4".into(),
+        source: "chiang",
+        title: "Chiang Example 4: ruled surface, plane z = 0, exact section curve, control polygon"
+            .into(),
+        svg: chiang::figure(Some(4))?,
+    });
+    out.push(Figure {
+        id: "chiang.conic_table".into(),
+        source: "chiang",
+        title: "Chiang Table 1: four cone sections, control polygons, poles".into(),
+        svg: conics::table1().0,
+    });
+    out.push(Figure {
+        id: "chiang.ph_offsets".into(),
+        source: "chiang",
+        title: "Chiang's PH curve with its offsets at r = 3, 12.6, 15 and their cusps".into(),
+        svg: ph::figure(None)?,
+    });
+    Ok(out)
+}
+
 /// Writes `svg` to `output` (`-`: standard output) and prints the summary line "wrote ...".
 fn emit(output: &str, svg: &str, what: &str) -> Result<ExitCode, Error> {
     let to_stdout = output == "-";

@@ -77,6 +77,10 @@ impl Expr {
                     .ok_or(ExprError::NonConstantSqrt { pos: arg.pos })?;
                 sqrt_of(c, self.pos, arg).map(Poly::constant)
             }
+            ExprKind::Call(name, _) => Err(ExprError::UnknownFunction {
+                pos: self.pos,
+                name: name.clone(),
+            }),
         }
     }
 
@@ -148,6 +152,10 @@ impl Expr {
                 constant_power(b, k, self.pos, exp.pos)
             }
             ExprKind::Sqrt(arg) => sqrt_of(arg.eval_constant::<C>()?, self.pos, arg),
+            ExprKind::Call(name, _) => Err(ExprError::UnknownFunction {
+                pos: self.pos,
+                name: name.clone(),
+            }),
         }
     }
 }

@@ -86,7 +86,7 @@ mod print;
 mod tests;
 mod w1;
 
-pub use parse::{parse_expr, parse_poly};
+pub use parse::{parse_expr, parse_expr_with_calls, parse_poly};
 pub use w1::w1_text;
 
 /// The deepest nesting of parentheses, signs and exponents the parser accepts.
@@ -227,6 +227,10 @@ pub enum ExprKind {
     Pow(Box<Expr>, Box<Expr>),
     /// `sqrt(arg)`.
     Sqrt(Box<Expr>),
+    /// `name(arg, ...)`: a function call, produced only by [`parse_expr_with_calls`] and
+    /// resolved by its caller; the conversions to polynomials and constants refuse it
+    /// ([`ExprError::UnknownFunction`]).
+    Call(String, Vec<Expr>),
 }
 
 impl Expr {

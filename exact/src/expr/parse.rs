@@ -20,6 +20,7 @@ enum Tok {
     Caret,
     LParen,
     RParen,
+    Comma,
     End,
     Bad(char),
 }
@@ -38,12 +39,15 @@ struct Parser<'a> {
     src: &'a str,
     cur: Token,
     depth: usize,
+    /// Whether `name(arg, ...)` is read as an [`ExprKind::Call`] ([`parse_expr_with_calls`]).
+    calls: bool,
 }
 
 impl<'a> Parser<'a> {
-    fn new(src: &'a str) -> Self {
+    fn new(src: &'a str, calls: bool) -> Self {
         let mut p = Parser {
             src,
+            calls,
             cur: Token {
                 tok: Tok::End,
                 start: 0,
@@ -103,6 +107,7 @@ impl<'a> Parser<'a> {
             '^' => (Tok::Caret, start + 1),
             '(' => (Tok::LParen, start + 1),
             ')' => (Tok::RParen, start + 1),
+            ',' => (Tok::Comma, start + 1),
             c => (Tok::Bad(c), start + c.len_utf8()),
         };
         Token { tok, start, end }
@@ -297,6 +302,13 @@ impl<'a> Parser<'a> {
             }
             Tok::Ident => {
                 self.bump();
+                if self.cur.tok == Tok::LParen && self.calls {
+                    let args = self.parse_arguments()?;
+                    return Ok(Expr {
+                        kind: ExprKind::Call(self.text(t).to_string(), args),
+                        pos: t.start,
+                    });
+                }
                 if self.cur.tok == Tok::LParen {
                     return Err(ExprError::UnknownFunction {
                         pos: t.start,
@@ -310,6 +322,32 @@ impl<'a> Parser<'a> {
             }
             Tok::LParen => self.parse_parenthesized(),
             _ => Err(self.unexpected(expected)),
+        }
+    }
+
+    /// `'(' sum (',' sum)* ')'`, the current token being `(`: the arguments of a call.
+    fn parse_arguments(&mut self) -> Result<Vec<Expr>, ExprError> {
+        self.enter()?;
+        let args = self.parse_argument_list();
+        self.leave();
+        args
+    }
+
+    fn parse_argument_list(&mut self) -> Result<Vec<Expr>, ExprError> {
+        self.bump();
+        let mut args = vec![self.parse_sum()?];
+        loop {
+            match self.cur.tok {
+                Tok::Comma => {
+                    self.bump();
+                    args.push(self.parse_sum()?);
+                }
+                Tok::RParen => {
+                    self.bump();
+                    return Ok(args);
+                }
+                _ => return Err(self.unexpected("an operator, ',' or ')'")),
+            }
         }
     }
 
@@ -391,7 +429,19 @@ fn number_value(text: &str, pos: usize) -> Result<Rational, ExprError> {
 /// [`ExprError::Unexpected`] for text that does not fit the grammar, [`ExprError::TooDeep`]
 /// beyond [`MAX_DEPTH`] levels of nesting.
 pub fn parse_expr(text: &str) -> Result<Expr, ExprError> {
-    Parser::new(text).parse_all()
+    Parser::new(text, false).parse_all()
+}
+
+/// [`parse_expr`] for a grammar with function calls: `name(arg, ...)` (a name directly followed
+/// by `(`, at least one argument, arguments separated by `,`) is an [`ExprKind::Call`], which
+/// the caller resolves (the claims files define `dot`, `cross`, `bezier`, ...); `sqrt(x)` stays
+/// [`ExprKind::Sqrt`]. The conversions of this module ([`Expr::to_poly`],
+/// [`Expr::eval_constant`]) refuse a call that is left unresolved.
+///
+/// # Errors
+/// As [`parse_expr`].
+pub fn parse_expr_with_calls(text: &str) -> Result<Expr, ExprError> {
+    Parser::new(text, true).parse_all()
 }
 
 impl FromStr for Expr {

@@ -12,7 +12,7 @@ fn precedence(e: &Expr) -> u8 {
         ExprKind::Product(_) => 2,
         ExprKind::Neg(_) => 3,
         ExprKind::Pow(..) => 4,
-        ExprKind::Number(_) | ExprKind::Var(_) | ExprKind::Sqrt(_) => 5,
+        ExprKind::Number(_) | ExprKind::Var(_) | ExprKind::Sqrt(_) | ExprKind::Call(..) => 5,
     }
 }
 
@@ -76,6 +76,16 @@ impl fmt::Display for Expr {
                 }
             }
             ExprKind::Sqrt(x) => write!(f, "sqrt({x})"),
+            ExprKind::Call(name, args) => {
+                write!(f, "{name}(")?;
+                for (k, a) in args.iter().enumerate() {
+                    if k > 0 {
+                        f.write_str(", ")?;
+                    }
+                    write!(f, "{a}")?;
+                }
+                f.write_str(")")
+            }
         }
     }
 }

@@ -267,3 +267,32 @@ fn w1_small_identity() {
     assert_eq!(l, r);
     assert_eq!(v.len(), 26);
 }
+
+#[test]
+fn calls_only_in_the_call_grammar() {
+    let e = parse_expr_with_calls("dot(u, cross(v, w)) + sqrt(2) x").unwrap();
+    assert_eq!(e.to_string(), "dot(u, cross(v, w)) + sqrt(2)*x");
+    assert!(matches!(
+        &e.kind,
+        ExprKind::Sum(ts) if matches!(&ts[0].1.kind, ExprKind::Call(n, a) if n == "dot" && a.len() == 2)
+    ));
+    // The plain grammar still refuses calls, and an unresolved call does not convert.
+    assert!(matches!(
+        parse_expr("dot(u, v)"),
+        Err(ExprError::UnknownFunction { pos: 0, .. })
+    ));
+    let mut vars = Vars::new();
+    assert!(matches!(
+        e.to_poly::<Rational>(&mut vars),
+        Err(ExprError::UnknownFunction { pos: 0, .. })
+    ));
+    assert!(matches!(
+        parse_expr_with_calls("f(x,)"),
+        Err(ExprError::Unexpected { pos: 4, .. })
+    ));
+    assert!(matches!(
+        parse_expr_with_calls("f(x y"),
+        Err(ExprError::Unexpected { .. })
+    ));
+    assert!(parse_expr_with_calls("f()").is_err());
+}

@@ -164,6 +164,12 @@ fn compile(e: &Expr, vars: &mut Vars) -> Result<Node, CompileError> {
         ExprKind::Var(name) => Node::Input(vars.index(name, e.pos)?),
         ExprKind::Neg(a) => Node::Neg(Box::new(compile(a, vars)?)),
         ExprKind::Sqrt(a) => Node::Sqrt(Box::new(compile(a, vars)?)),
+        ExprKind::Call(name, _) => {
+            return Err(CompileError::Expr(ExprError::UnknownFunction {
+                pos: e.pos,
+                name: name.clone(),
+            }))
+        }
         ExprKind::Sum(items) => {
             let mut acc: Option<Node> = None;
             for (op, t) in items {

@@ -211,6 +211,11 @@ pub fn size_bound(e: &Expr) -> Result<SizeBound, BoundError> {
                 degree: b.degree.checked_mul(k).ok_or(of)?,
             }
         }
+        ExprKind::Call(name, _) => {
+            return Err(BoundError::Input(format!(
+                "unknown function '{name}': the only function is sqrt"
+            )))
+        }
         ExprKind::Sqrt(_) => {
             return Err(BoundError::Input(
                 "sqrt is not supported by --random (no error bound is proved for square roots modulo p); run without --random for the exact square-root field".into(),
@@ -261,6 +266,11 @@ fn eval(e: &Expr, f: &PrimeField, point: &HashMap<String, u64>) -> Result<u64, E
                 EvalError::Input("exponents must be non-negative integer numbers".into())
             })?;
             f.pow(eval(b, f, point)?, k)
+        }
+        ExprKind::Call(name, _) => {
+            return Err(EvalError::Input(format!(
+                "unknown function '{name}': the only function is sqrt"
+            )))
         }
         ExprKind::Sqrt(_) => {
             return Err(EvalError::Input(

@@ -126,6 +126,7 @@ fn side_failure(e: String) -> Outcome {
         verdict: Verdict::Fails,
         method: METHOD.into(),
         evidence: e,
+        erratum: None,
     }
 }
 
@@ -181,8 +182,7 @@ pub fn corollary1_with(weight_term: &str, point_term: &str) -> Result<Outcome, S
         method: METHOD.into(),
         evidence: format!(
             "the printed sums equal the derivation for every (m, n) with m <= 4, n <= 6: {comparisons_total} formulas (w_k and the three coordinates of r_k), {terms_total} terms cancelled after cross-multiplication; the side statement r_kz = 0 holds identically (every printed z sum expands to 0)"
-        ),
-    })
+        ), erratum: None, })
 }
 
 /// Corollary 2 with the given printed point formula (the claim uses [`COROLLARY2_POINT`]), for
@@ -230,8 +230,7 @@ pub fn corollary2_with(point: &str) -> Result<Outcome, String> {
         method: METHOD.into(),
         evidence: format!(
             "for m = 0 and every n <= 6 the printed r_k equal the derivation and every derived weight is q0z: {comparisons_total} formulas, {terms_total} terms cancelled after cross-multiplication; with all weights equal (and q0z != 0, the paper's general case) the rational curve is the polynomial Bezier curve with control points r_k; r_kz = 0 identically"
-        ),
-    })
+        ), erratum: None, })
 }
 
 /// Corollary 5 with the given printed formulas (the claim uses [`COROLLARY5`]).

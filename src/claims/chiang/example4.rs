@@ -295,6 +295,5 @@ pub fn check() -> Result<Outcome, String> {
             Verdict::Fails
         },
         method: "exact arithmetic in Q(sqrt 2, sqrt 6) (Radical); each printed decimal compared exactly with its rounding interval; explanations computed (exact rational arithmetic with rounded roots, truncation, division by the printed weights)".into(),
-        evidence,
-    })
+        evidence, erratum: None, })
 }

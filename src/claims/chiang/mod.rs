@@ -217,6 +217,9 @@ fn to_fraction(e: &Expr, vars: &mut Vars, defs: &[(String, Fraction)]) -> Result
             Ok(acc)
         }
         ExprKind::Sqrt(_) => Err("sqrt in a printed formula of the corollaries".into()),
+        ExprKind::Call(name, _) => Err(format!(
+            "function {name} in a printed formula of the corollaries"
+        )),
     }
 }
 
@@ -341,5 +344,6 @@ fn outcome(compared: Compared, method: &str, proved: impl FnOnce(usize) -> Strin
         verdict,
         method: method.into(),
         evidence,
+        erratum: None,
     }
 }

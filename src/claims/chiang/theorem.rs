@@ -239,6 +239,7 @@ pub fn check() -> Result<Outcome, String> {
                     verdict: Verdict::Fails,
                     method: METHOD.into(),
                     evidence: f,
+                    erratum: None,
                 });
             }
             sizes += 1;
@@ -253,6 +254,7 @@ pub fn check() -> Result<Outcome, String> {
             verdict: Verdict::Fails,
             method: METHOD.into(),
             evidence: f,
+            erratum: None,
         });
     }
     let instances = match random_instances() {
@@ -262,6 +264,7 @@ pub fn check() -> Result<Outcome, String> {
                 verdict: Verdict::Fails,
                 method: METHOD.into(),
                 evidence: e,
+                erratum: None,
             })
         }
     };
@@ -281,6 +284,5 @@ pub fn check() -> Result<Outcome, String> {
             parameters().len(),
             instances.points,
             instances.poles,
-        ),
-    })
+        ), erratum: None, })
 }

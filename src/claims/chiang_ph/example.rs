@@ -130,6 +130,7 @@ pub fn ph_points_with(printed: &[[&str; 3]; 3]) -> Result<Outcome, String> {
                 "all 9 printed entries equal the derived ones exactly: {}",
                 table.join("; ")
             ),
+            erratum: None,
         }
     } else {
         Outcome {
@@ -141,6 +142,7 @@ pub fn ph_points_with(printed: &[[&str; 3]; 3]) -> Result<Outcome, String> {
                 mismatches.join("; "),
                 table.join("; ")
             ),
+            erratum: None,
         }
     })
 }
@@ -288,8 +290,7 @@ pub fn ph_normals_with(printed: &[[&str; 3]; 3]) -> Result<Outcome, String> {
             Verdict::Fails
         },
         method: "exact rational arithmetic: V's control vectors (-h_iy, h_ix, sigma_i) from the hodograph and speed coefficients; every sign pattern of the printed non-zero entries compared with the left and the right normal fields".into(),
-        evidence,
-    })
+        evidence, erratum: None, })
 }
 
 // ------------------------------------------------------------------------------ ph_radius
@@ -448,6 +449,7 @@ pub(super) fn radius_check() -> Result<Outcome, String> {
             verdict: Verdict::Undecided,
             method: "exact root isolation".into(),
             evidence: format!("the smallest radius was only enclosed: {:?}", left.value),
+            erratum: None,
         });
     };
     let attained: Vec<String> = left.attained.iter().map(root_text).collect();
@@ -515,8 +517,7 @@ pub(super) fn radius_check() -> Result<Outcome, String> {
                     "r = {label}: the cusp polynomial gives {} but the offset's derivative vanishes at {} (monic gcd equal to the cusp polynomial: {same})",
                     cusps_text(&cusps),
                     roots.iter().map(root_text).collect::<Vec<_>>().join(", ")
-                ),
-            });
+                ), erratum: None, });
         }
         lines.push(format!(
             "r = {label}: {}; cross-check: the offset's derivative numerators W X' - X W', W Y' - Y W' have monic gcd equal to sigma^2 - 2 r w and {} common zero(s) in [0, 1]",
@@ -604,8 +605,7 @@ pub(super) fn radius_check() -> Result<Outcome, String> {
             Verdict::Fails
         },
         method: "exact: smallest radius by PhCurve::min_radius (candidate certified by root isolation of sigma^2 - 2 m w); cusps = zeros of sigma^2 - 2 r w with multiplicity, cross-checked by the gcd of the rational offset's derivative numerators".into(),
-        evidence,
-    })
+        evidence, erratum: None, })
 }
 
 // ------------------------------------------------------------------------------ ph_offsets
@@ -815,8 +815,7 @@ pub(super) fn offsets_check() -> Result<Outcome, String> {
             Verdict::Fails
         },
         method: "exact rational offsets (Chiang's theorem on the PH curve's ruled surface); each printed decimal compared exactly with its rounding interval; readings computed (truncation, magnitude)".into(),
-        evidence,
-    })
+        evidence, erratum: None, })
 }
 
 #[cfg(test)]

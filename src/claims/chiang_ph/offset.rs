@@ -359,6 +359,7 @@ pub(super) fn offset_check() -> Result<Outcome, String> {
                 verdict: Verdict::Fails,
                 method: "exact random instances over Q".into(),
                 evidence: e,
+                erratum: None,
             })
         }
     };
@@ -368,8 +369,7 @@ pub(super) fn offset_check() -> Result<Outcome, String> {
         evidence: format!(
             "residuals per case: the section in the cutting plane, weight = sigma, displacement r(-Y', X')/sigma horizontally and r vertically, perpendicular to B', length exactly r, on the left, restrictions (1), (2), (3), X'^2 + Y'^2 = sigma^2; {}. Exact instances: {curves} random PH curves of degree 3, 5, 7, 9 with random rational start and r; at {points} rational parameters the offset point is at height r, horizontal distance exactly r, perpendicular to B', on the side of the sign of r, V at 45 degrees; the Field section (plane_section) equals the Q-algebra sums (offset_control) on every instance",
             proved.join("; ")
-        ),
-    })
+        ), erratum: None, })
 }
 
 /// One degree report.
@@ -517,6 +517,7 @@ pub(super) fn degree_check() -> Result<Outcome, String> {
                         verdict: Verdict::Fails,
                         method: "symbolic degree count and exact instances".into(),
                         evidence: e,
+                        erratum: None,
                     })
                 }
             }
@@ -533,8 +534,7 @@ pub(super) fn degree_check() -> Result<Outcome, String> {
         evidence: format!(
             "V has degree n - 1 and the r-offset degree 2n - 1, both attained; a non-zero value at one exact instance proves the leading coefficient and the resultant of the coordinates are not identically zero, so the degrees are the generic ones. {}",
             lines.join(". ")
-        ),
-    })
+        ), erratum: None, })
 }
 
 #[cfg(test)]

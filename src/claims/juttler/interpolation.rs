@@ -155,6 +155,7 @@ pub(super) fn interpolation() -> Result<Outcome, String> {
                 verdict: Verdict::Fails,
                 method: METHOD.into(),
                 evidence,
+                erratum: None,
             })
         }
     };
@@ -176,8 +177,7 @@ pub(super) fn interpolation() -> Result<Outcome, String> {
             INTERPOLATION_N.start(),
             INTERPOLATION_N.end(),
             degrees.join(", ")
-        ),
-    })
+        ), erratum: None, })
 }
 
 /// The verdict on "fewer degrees than plain stereographic projection" from the computed rows:
@@ -239,13 +239,11 @@ fn degree_verdict(rows: &[DegreeRow]) -> Outcome {
             evidence: format!(
                 "counter-example: N = {} points, the delta-construction needs image degree {} and plain stereographic projection {} (not fewer). {summary}. Corrected claim: fewer degrees than plain stereographic projection only for the N listed first",
                 r.n, r.delta, r.sigma_polynomial
-            ),
-        },
+            ), erratum: None, },
         None => Outcome {
             verdict: Verdict::Holds,
             method: "exact interpolation by both constructions, degrees compared".into(),
-            evidence: summary,
-        },
+            evidence: summary, erratum: None, },
     }
 }
 

@@ -197,6 +197,5 @@ fn circle_preimage_inner() -> Result<Outcome, Stop> {
         method: format!("symbolic expansion + Jacobi signs + exact inertia on {CIRCLES} random circles"),
         evidence: format!(
             "C(theta(p)) = (p0^2+p3^2) Q(p) with Q = {q_text} ({proved} identities expanded to 0, incl. Q = (lambda^2+mu^2) C(P) on the line (12) of every P, so Q = 0 is the union of the projecting lines of the circle; the factor p0^2+p3^2 vanishes only on x0 = x3 = 0, where theta is undefined and Q = p1^2+p2^2 != 0); {symbolic_text}; exact inertia (2,2,0) of Q and indefinite non-degenerate restriction to p0 = 0 on all {CIRCLES} random circles, each with a point of a preimage line on Q"
-        ),
-    })
+        ), erratum: None, })
 }

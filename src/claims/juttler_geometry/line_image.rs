@@ -196,6 +196,5 @@ fn line_image_inner() -> Result<Outcome, Stop> {
         ),
         evidence: format!(
             "for the line lambda A + mu B: delta = lambda^2 K20 + lambda mu K11 + mu^2 K02 lies on K and in the plane N = (m03-m12, m02-m13, -(m01+m23), m03+m12); cross3(K20,K11,K02) = 4 G N with G = (m01-m23)^2 + (m02+m13)^2; N != 0 for every line by m01^2+m02^2 = m01 l_c + m02 l_b + (l_d^2-l_a^2)/4; the lines (12) have g1 = g2 = 0 and image the single point sigma(p) ({proved} identities expanded to 0); the {in_ideal} 2x2 minors of (K20,K11,K02) reduce to 0 modulo (g1, g2) (G = 0 gives a point image, so the line lies in a delta-fibre: projecting). So a line is non-projecting iff G != 0 iff its image spans the plane N, a plane section of K: a circle. Exact instances (lebesgue_curve): {IMAGE_LINES} random non-projecting lines have rank-3 images on K, the 1-dimensional plane nullspace equals N and cuts K in a real circle (n0^2 < n1^2+n2^2+n3^2) ({skipped} draws skipped as dependent or projecting); {PROJECTING} projecting lines (random bases of (12)) have rank-1 images = sigma(p)"
-        ),
-    })
+        ), erratum: None, })
 }

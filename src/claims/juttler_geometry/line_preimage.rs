@@ -129,6 +129,5 @@ fn line_preimage_inner() -> Result<Outcome, Stop> {
         evidence: format!(
             "Q = a T1 + b T2 + c T0 = {} ({proved} identities expanded to 0, incl. Q = P0 (lambda^2+mu^2) L(P) on the line (12) of P); {symbolic_text}; on p0 = 0, Q = p3 (b p1 - a p2 + c p3): one of the two lines at infinity is x0 = x3 = 0, where theta is undefined; exact inertia (2,2,0) and (1,1,1) at infinity on all {LINES} random lines",
             quadric.display(&sym.vars)
-        ),
-    })
+        ), erratum: None, })
 }

@@ -71,6 +71,7 @@ fn fails(method: &str, evidence: String) -> Stop {
         verdict: Verdict::Fails,
         method: method.into(),
         evidence,
+        erratum: None,
     })
 }
 

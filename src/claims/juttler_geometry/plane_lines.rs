@@ -284,6 +284,5 @@ fn plane_lines_inner() -> Result<Outcome, Stop> {
             p_of_u.0[1].display(&sym.vars),
             p_of_u.0[2].display(&sym.vars),
             cross[0].display(&sym.vars)
-        ),
-    })
+        ), erratum: None, })
 }

@@ -297,8 +297,7 @@ fn satz7_outcome(c: &Satz7Counts, d: &LineDegrees) -> Result<Outcome, Stop> {
             list(&d.corners),
             list(&d.second),
             d.corners[0] + d.second[1] + d.corners[2] + d.second[3],
-        ),
-    })
+        ), erratum: None, })
 }
 
 #[cfg(test)]
