@@ -85,7 +85,7 @@ pub struct Outcome {
     /// For a failing printed statement: the printed and the derived correct form, the exact
     /// counter-example and the residual there, as expression trees (the report's errata and
     /// `verify --latex`). `None` for the other verdicts.
-    pub erratum: Option<Erratum>,
+    pub erratum: Option<Box<Erratum>>,
 }
 
 /// An equation `lhs = rhs` of an erratum, both sides expression trees (printed as text or
