@@ -116,7 +116,7 @@ fn every_claim_gets_its_expected_verdict() {
         .iter()
         .map(|c| c.id)
         .collect();
-    assert_eq!(rows.iter().map(|r| r.id).collect::<Vec<_>>(), ids);
+    assert_eq!(rows.iter().map(|r| r.id.as_str()).collect::<Vec<_>>(), ids);
     for r in &rows {
         let o = r
             .outcome
@@ -127,7 +127,7 @@ fn every_claim_gets_its_expected_verdict() {
         assert!(!o.method.is_empty() && !o.evidence.is_empty(), "{}", r.id);
         let pinned = VERDICTS
             .iter()
-            .find(|(id, _)| *id == r.id)
+            .find(|(id, _)| *id == r.id.as_str())
             .unwrap_or_else(|| panic!("{}: no pinned verdict in this test", r.id));
         assert_eq!(o.verdict, pinned.1, "{}: {}", r.id, o.evidence);
     }

@@ -143,12 +143,15 @@ pub fn catalogue() -> Vec<Claim> {
     all
 }
 
-/// A checked claim.
+/// A checked claim (of the built-in catalogue or of a claims file).
 pub struct Checked {
-    /// The claim.
-    pub id: &'static str,
+    /// The claim's id.
+    pub id: String,
+    /// The source it belongs to (the report filters by it): the id's prefix before the first
+    /// `.` for the catalogue (`spaeth`), the file's paper name for a claims file.
+    pub source: String,
     /// The printed statement.
-    pub statement: &'static str,
+    pub statement: String,
     /// The expected verdict.
     pub expected: Verdict,
     /// What the check found, or why it could not run.
@@ -213,8 +216,9 @@ pub fn verify(prefix: Option<&str>) -> Result<Vec<Checked>, crate::Error> {
             let start = Instant::now();
             let outcome = (c.check)();
             Checked {
-                id: c.id,
-                statement: c.statement,
+                id: c.id.to_string(),
+                source: c.id.split('.').next().unwrap_or(c.id).to_string(),
+                statement: c.statement.to_string(),
                 expected: c.expected,
                 outcome,
                 seconds: start.elapsed().as_secs_f64(),
@@ -292,8 +296,9 @@ mod verdict_tests {
         assert_eq!(o.verdict, Verdict::Undecided, "{}", o.evidence);
         assert_eq!(o.verdict.to_string(), "undecided");
         let checked = Checked {
-            id: "t",
-            statement: "",
+            id: "t".into(),
+            source: "t".into(),
+            statement: String::new(),
             expected: Verdict::Undecided,
             outcome: Ok(o),
             seconds: 0.0,
