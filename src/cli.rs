@@ -29,17 +29,20 @@ pub struct Cli {
 /// The subcommands.
 #[derive(Debug, Subcommand)]
 pub enum Command {
-    /// Check the built-in claim catalogue (the juttler.* and spaeth.* claims of SPEC §6; planes.*
-    /// and chiang.* are not implemented yet) and print each verdict with its method and
-    /// evidence. Exit 0 when every verdict is the expected one.
+    /// Check the built-in claim catalogue (every claim of SPEC §6: juttler.*, spaeth.*, planes.*,
+    /// chiang.*) and print each verdict with its method and evidence. Exit 0 when every verdict is
+    /// the expected one.
+    #[command(after_help = VERIFY_EXAMPLES)]
     Verify(crate::verify_cmd::VerifyArgs),
     /// Prove a polynomial identity LHS = RHS, for all values, modulo relations or inside
     /// domains (`--where`): `proved`; `fails` with an exact counter-example and what the sides
     /// differ by; or `undecided` when neither is found. `--random K`: `holds`/`fails`/`undecided`
     /// with a proved error bound.
+    #[command(after_help = PROVE_EXAMPLES)]
     Prove(crate::prove_cmd::ProveArgs),
     /// Solve one problem given in JSON (a file, or `-` / nothing for standard input) and print
     /// the answer in JSON. Kinds and fields: see the README.
+    #[command(after_help = SOLVE_EXAMPLES)]
     Solve {
         /// The problem file; `-` or absent: standard input.
         file: Option<String>,
@@ -58,19 +61,53 @@ pub enum Command {
         schema: Option<String>,
     },
     /// Run a benchmark workload and print its check values and time.
+    #[command(after_help = BENCH_EXAMPLES)]
     Bench(crate::bench::BenchArgs),
     /// Regress float code against exact results on seeded random inputs: a built-in kernel,
     /// a formula (--formula), FPCore benchmarks (--fpcore), or your own executable (--program).
+    #[command(after_help = REGRESS_EXAMPLES)]
     Regress(crate::regress::RegressArgs),
     /// Merge the JSON shard reports of `regress --shard I/N` into the report of the whole sweep.
+    #[command(after_help = MERGE_EXAMPLES)]
     Merge(crate::regress::sweep::MergeArgs),
     // --- plot (src/plot/) ---
     /// Draw Spaeth's cylinder/sphere intersection as an SVG figure: the t-u diagram (the
     /// paper's Fig. 2 / 3) or a 3D view, for `spaeth --example N` or a `cylinder_sphere` problem
     /// file.
+    #[command(after_help = PLOT_EXAMPLES)]
     Plot(crate::plot::PlotArgs),
     // --- end plot ---
 }
+
+// The examples of every subcommand's `--help` (a test parses each `exactcheck ...` line).
+const VERIFY_EXAMPLES: &str = "Examples:
+  exactcheck verify
+  exactcheck verify --only spaeth --json";
+const PROVE_EXAMPLES: &str = "Examples:
+  exactcheck prove '(a+b)^2' 'a^2 + 2 a b + b^2'
+  exactcheck prove 'c^2 x^3 + s^2 x^3 - x' 'x^3 - x' --where 'c^2 + s^2 = 1'
+  exactcheck prove 'x^2 + 1' '2 x' --where 'x >= 0'
+  exactcheck prove '(x+y)^20' '(y+x)^20' --random 20 --seed 7";
+const SOLVE_EXAMPLES: &str = "Examples:
+  exactcheck solve tests/solve_golden/cs_example1.json
+  exactcheck solve --both tests/solve_golden/conic_table1_ellipse.json
+  exactcheck solve --schema cylinder_sphere";
+const BENCH_EXAMPLES: &str = "Examples:
+  exactcheck bench w2 --n 2000 --mode seq
+  exactcheck bench w3 --n 10000000
+  exactcheck bench formula --n 100000";
+const REGRESS_EXAMPLES: &str = "Examples:
+  exactcheck regress cylinder-sphere --samples 100000
+  exactcheck regress --formula 'sqrt(x+1) - sqrt(x)' --domain 'x in [1, 1e15]'
+  exactcheck regress --fpcore tests/regress/suite.fpcore
+  exactcheck regress --formula 'sqrt(x+1) - sqrt(x)' --domain 'x in [1, 1e15]' --program 'python3 tests/regress/cancel.py'
+  exactcheck regress --formula 'x*x - 1' --samples 1000000 --shard 1/4 > shard1.json";
+const MERGE_EXAMPLES: &str = "Examples:
+  exactcheck merge shard1.json shard2.json shard3.json shard4.json";
+const PLOT_EXAMPLES: &str = "Examples:
+  exactcheck plot spaeth --example 2 --view 3d -o spaeth2.svg
+  exactcheck plot conics -o conics.svg
+  exactcheck plot tests/solve_golden/cs_example1.json -o cs.svg";
 
 /// Parses the command line, runs it, and maps errors to exit status 2 (a broken pipe on
 /// standard output to status 0, silently).
@@ -319,6 +356,32 @@ mod tests {
         assert!(message.contains("cannot be used with"), "{message}");
         assert!(try_parse(&args(&["regress", "--shard", "0/2"])).is_err());
         assert!(try_parse(&args(&["merge"])).is_err());
+    }
+
+    /// Every `exactcheck ...` line of every subcommand's `--help` examples is a valid command
+    /// line (so an example cannot rot when an option is renamed).
+    #[test]
+    fn help_examples_parse() {
+        let mut seen = 0;
+        for sub in Cli::command().get_subcommands() {
+            let help = sub
+                .get_after_help()
+                .unwrap_or_else(|| panic!("`{}` has no examples", sub.get_name()))
+                .to_string();
+            for line in help.lines().map(str::trim) {
+                let Some(rest) = line.strip_prefix("exactcheck ") else {
+                    continue;
+                };
+                let rest = rest.split(" > ").next().expect("split yields one piece");
+                let words = shlex::split(rest).unwrap_or_else(|| panic!("{line}: quoting"));
+                let words: Vec<&str> = words.iter().map(String::as_str).collect();
+                if let Err(e) = try_parse(&args(&words)) {
+                    panic!("the example `{line}` does not parse: {e:?}");
+                }
+                seen += 1;
+            }
+        }
+        assert!(seen >= 20, "{seen} examples");
     }
 
     #[cfg(unix)]
