@@ -70,6 +70,10 @@ pub enum Command {
     /// file.
     Plot(crate::plot::PlotArgs),
     // --- end plot ---
+    /// Write the verification report, one self-contained HTML page DIR/index.html: the verdict
+    /// of every claim, the errata, the figures and the float-vs-exact regressions (e.g.
+    /// `exactcheck report -o out`).
+    Report(crate::report::ReportArgs),
 }
 
 /// Parses the command line, runs it, and maps errors to exit status 2 (a broken pipe on
@@ -278,6 +282,7 @@ pub fn run(cli: Cli) -> Result<ExitCode, crate::Error> {
         // --- plot (src/plot/) ---
         Command::Plot(args) => crate::plot::run(&args),
         // --- end plot ---
+        Command::Report(args) => crate::report::run(&args),
     }
 }
 
