@@ -229,7 +229,7 @@ fn harness_table(caption: &str, reports: &[(&str, &Report)]) -> Table {
             "median ulps",
             "bits of error: mean",
             "bits: max",
-            "worst input (shrunk)",
+            "worst input",
         ]
         .map(String::from)
         .to_vec(),
@@ -237,13 +237,22 @@ fn harness_table(caption: &str, reports: &[(&str, &Report)]) -> Table {
             .iter()
             .map(|(name, r)| {
                 let worst = r.worst.first().map_or_else(String::new, |w| {
-                    let case = w.shrunk.as_ref().unwrap_or(&w.original);
-                    format!(
-                        "sample {}: {} ulps at {}",
-                        w.index,
-                        cell(case.ulps),
-                        inputs(&case.inputs)
-                    )
+                    let o = &w.original;
+                    match &w.shrunk {
+                        Some(sh) if sh.inputs != o.inputs => format!(
+                            "sample {} ({} ulps), shrunk to {} ({} ulps)",
+                            w.index,
+                            cell(o.ulps),
+                            inputs(&sh.inputs),
+                            cell(sh.ulps)
+                        ),
+                        _ => format!(
+                            "sample {}: {} ulps at {}",
+                            w.index,
+                            cell(o.ulps),
+                            inputs(&o.inputs)
+                        ),
+                    }
                 });
                 vec![
                     (*name).to_string(),

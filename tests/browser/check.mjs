@@ -145,7 +145,7 @@ try {
     await page.setViewportSize({ width: 1280, height: 1600 });
     await page.screenshot({ path: o.top, fullPage: false });
   }
-  console.log(`browser: ${facts.rows} rows, ${facts.errata ? facts.errata.length : 0} errata, ${facts.figures.length} figures rendered, ${facts.regressions} regression tables; KaTeX rendered ${rendered} line(s) (${latexLines.length} from ${o.latex}); screenshot ${o.screenshot}`);
+  console.log(`browser: ${facts.rows} rows, ${facts.errata ? facts.errata.length : 0} errata, ${facts.figures.filter((f) => f.width > 0 && f.height > 0).length} of ${facts.figures.length} figures rendered, ${facts.regressions} regression tables; KaTeX rendered ${rendered} line(s) (${latexLines.length} from ${o.latex}); screenshot ${o.screenshot}`);
 } finally {
   await browser.close();
   rmSync(profile, { recursive: true, force: true });
