@@ -73,6 +73,10 @@ pub enum Command {
     /// Write the verification report, one self-contained HTML page DIR/index.html: the verdict
     /// of every claim, the errata, the figures and the float-vs-exact regressions (e.g.
     /// `exactcheck report -o out`).
+    #[command(after_help = "Examples:
+  exactcheck report -o out
+  exactcheck report -o out --samples 5000 --seed 7
+  exactcheck report paper.toml -o paper-report")]
     Report(crate::report::ReportArgs),
 }
 
