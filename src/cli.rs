@@ -77,6 +77,14 @@ pub enum Command {
     #[command(after_help = PLOT_EXAMPLES)]
     Plot(crate::plot::PlotArgs),
     // --- end plot ---
+    /// Write the verification report, one self-contained HTML page DIR/index.html: the verdict
+    /// of every claim, the errata, the figures and the float-vs-exact regressions (e.g.
+    /// `exactcheck report -o out`).
+    #[command(after_help = "Examples:
+  exactcheck report -o out
+  exactcheck report -o out --samples 5000 --seed 7
+  exactcheck report paper.toml -o paper-report")]
+    Report(crate::report::ReportArgs),
 }
 
 // The examples of every subcommand's `--help` (a test parses each `exactcheck ...` line).
@@ -315,6 +323,7 @@ pub fn run(cli: Cli) -> Result<ExitCode, crate::Error> {
         // --- plot (src/plot/) ---
         Command::Plot(args) => crate::plot::run(&args),
         // --- end plot ---
+        Command::Report(args) => crate::report::run(&args),
     }
 }
 

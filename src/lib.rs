@@ -14,6 +14,7 @@ pub mod output;
 pub mod plot;
 pub mod prove_cmd;
 pub mod regress;
+pub mod report;
 pub mod solve;
 pub mod verify_cmd;
 pub mod w2;

@@ -184,7 +184,12 @@ impl Formula for BezierCubicKernel {
     }
 }
 
-fn generator(kernel: Kernel) -> Result<UniformBox, Error> {
+/// The input box of a uniform-box kernel (`cylinder-sphere`, `bezier-cubic`); the report's
+/// regression summaries sample the same inputs.
+///
+/// # Errors
+/// [`Error::Usage`] for `plane-plane` and `ruled-plane`, which have their own generators.
+pub fn generator(kernel: Kernel) -> Result<UniformBox, Error> {
     let gen = match kernel {
         Kernel::CylinderSphere => UniformBox::new(
             vec![

@@ -1,0 +1,258 @@
+//! `exactcheck report [FILE] -o DIR`: the verification report as one self-contained HTML page,
+//! `DIR/index.html`, to send to a colleague or an editor.
+//!
+//! The page ([`html`]) holds, in order:
+//! * a header: what was checked, the command line, the date (UTC), exactcheck's version, the
+//!   git commit and rustc it was built with, the num-bigint and num-rational versions the build
+//!   locked (`build.rs`), the machine ([`meta`]);
+//! * the verdict table of every claim (`#verdicts`, rows with `data-source`/`data-verdict`,
+//!   filterable by source and verdict with a small inline script; without JavaScript every row
+//!   shows);
+//! * the errata (`#errata`): every claim whose check found the printed statement false, with
+//!   the printed and the correct form, the exact counter-example and the residual there from
+//!   the check's [`crate::claims::Erratum`] (or its evidence when the check gives none);
+//! * for the built-in catalogue, every figure of [`crate::plot::catalogue_figures`] inline as
+//!   SVG, ids and style rules isolated per figure ([`inline_svg`]), and the float-vs-exact
+//!   regression summaries of the four built-in kernels on `--samples` seeded samples
+//!   ([`regress`]).
+//!
+//! Nothing is loaded from the network: the style sheet and the script are inline, the fonts
+//! are the system's, and the page's content security policy forbids every other load.
+
+pub mod html;
+pub mod inline_svg;
+pub mod meta;
+pub mod regress;
+
+use crate::claims::Checked;
+use crate::Error;
+use clap::Args;
+use std::io::IsTerminal;
+use std::path::Path;
+use std::process::ExitCode;
+use std::time::Duration;
+
+/// The largest `--samples` of `report` (the regressions are its slowest part: the ruled-plane
+/// kernel runs 12 sweeps of this many samples).
+pub const MAX_REPORT_SAMPLES: usize = 200_000;
+
+/// Arguments of `exactcheck report`.
+#[derive(Debug, Args)]
+pub struct ReportArgs {
+    /// A claims file (TOML or JSON) to check instead of the built-in catalogue.
+    pub file: Option<String>,
+    /// The directory to write `index.html` into (created when missing).
+    #[arg(short = 'o', long = "output", value_name = "DIR")]
+    pub output: String,
+    /// Samples of each float-vs-exact regression (of each shape and regime for ruled-plane),
+    /// at most 200,000. The whole report takes about 15 s on two busy cores with the default.
+    #[arg(long, default_value_t = 1000)]
+    pub samples: usize,
+    /// Seed of the regressions' inputs.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// No progress bar (it is shown only when standard error is a terminal).
+    #[arg(long)]
+    pub quiet: bool,
+}
+
+/// The claims of `file` checked, or of the built-in catalogue when `None`.
+///
+/// # Errors
+/// [`Error::Input`] for a claims file until the claims-file reader is merged; the catalogue's
+/// own errors otherwise.
+pub fn checked_claims(file: Option<&str>) -> Result<Vec<Checked>, Error> {
+    match file {
+        None => crate::claims::verify(None),
+        // integration: crate::claimfile::{load, check}
+        Some(path) => Err(Error::Input(format!(
+            "{path}: claims files arrive with helper F's module (crate::claimfile); `exactcheck report` without FILE reports the built-in catalogue"
+        ))),
+    }
+}
+
+/// Prepares the output directory `dir`: creates it when missing.
+///
+/// # Errors
+/// [`Error::Usage`] when `dir` exists and is not a directory, or cannot be created.
+pub fn prepare_dir(dir: &str) -> Result<(), Error> {
+    let path = Path::new(dir);
+    if path.exists() && !path.is_dir() {
+        return Err(Error::Usage(format!(
+            "-o {dir}: is a file, not a directory (the report writes DIR/index.html)"
+        )));
+    }
+    std::fs::create_dir_all(path)
+        .map_err(|e| Error::Usage(format!("cannot create the directory {dir}: {e}")))
+}
+
+/// The progress of the report's steps on standard error (hidden unless it is a terminal).
+struct Steps {
+    bar: Option<indicatif::ProgressBar>,
+}
+
+impl Steps {
+    fn new(count: u64, quiet: bool) -> Steps {
+        let bar = (!quiet && std::io::stderr().is_terminal()).then(|| {
+            let bar = indicatif::ProgressBar::new(count);
+            if let Ok(style) = indicatif::ProgressStyle::with_template(
+                "{spinner} [{bar:24}] {pos}/{len} {msg} ({elapsed})",
+            ) {
+                bar.set_style(style.progress_chars("=> "));
+            }
+            bar.enable_steady_tick(Duration::from_millis(120));
+            bar
+        });
+        Steps { bar }
+    }
+
+    /// Starts the step described by `what`.
+    fn start(&self, what: &str) {
+        if let Some(bar) = &self.bar {
+            bar.set_message(what.to_string());
+        }
+    }
+
+    /// Ends the current step.
+    fn done(&self) {
+        if let Some(bar) = &self.bar {
+            bar.inc(1);
+        }
+    }
+}
+
+impl Drop for Steps {
+    fn drop(&mut self) {
+        if let Some(bar) = &self.bar {
+            bar.finish_and_clear();
+        }
+    }
+}
+
+/// Runs `exactcheck report`: checks the claims, draws the figures, runs the regressions,
+/// writes `DIR/index.html` and prints one summary line. Exit status 0 once the page is written
+/// (the page itself says which verdicts are not the expected ones).
+///
+/// # Errors
+/// [`Error::Usage`] for `--samples` out of range or an output directory that is a file or
+/// cannot be written; the claims file's errors; [`Error::Output`] when standard output fails.
+pub fn run(args: &ReportArgs) -> Result<ExitCode, Error> {
+    crate::args::check_count("--samples", args.samples, MAX_REPORT_SAMPLES, "")?;
+    prepare_dir(&args.output)?;
+    let argv: Vec<std::ffi::OsString> = std::env::args_os().collect();
+    let meta = meta::Meta::now(&argv);
+    let catalogue = args.file.is_none();
+    let steps = Steps::new(
+        if catalogue {
+            2 + regress::KERNELS.len() as u64
+        } else {
+            1
+        },
+        args.quiet,
+    );
+
+    steps.start(match &args.file {
+        None => "checking the built-in catalogue",
+        Some(_) => "checking the claims file",
+    });
+    let rows = checked_claims(args.file.as_deref())?;
+    steps.done();
+
+    let (figures, regressions, subject, note) = if catalogue {
+        steps.start("drawing the figures");
+        let figures = crate::plot::catalogue_figures()?;
+        steps.done();
+        let mut summaries = Vec::new();
+        for kernel in regress::KERNELS {
+            steps.start(&format!("regress {kernel} ({} samples)", args.samples));
+            summaries.push(regress::summary(kernel, args.samples, args.seed)?);
+            steps.done();
+        }
+        let mut sources: Vec<&str> = Vec::new();
+        for r in &rows {
+            if !sources.contains(&r.source.as_str()) {
+                sources.push(&r.source);
+            }
+        }
+        (
+            figures,
+            summaries,
+            format!("the built-in claim catalogue ({})", sources.join(", ")),
+            None,
+        )
+    } else {
+        let path = args.file.as_deref().unwrap_or_default();
+        let mut papers: Vec<&str> = Vec::new();
+        for r in &rows {
+            if !papers.contains(&r.source.as_str()) {
+                papers.push(&r.source);
+            }
+        }
+        (
+            Vec::new(),
+            Vec::new(),
+            format!("the claims file {path} (paper: {})", papers.join(", ")),
+            Some(
+                "Figures and float-vs-exact regressions belong to the built-in catalogue (run `exactcheck report` without FILE)."
+                    .to_string(),
+            ),
+        )
+    };
+    drop(steps);
+
+    let page = html::page(&html::Page {
+        subject,
+        meta: &meta,
+        rows: &rows,
+        figures: &figures,
+        regressions: &regressions,
+        note,
+    })?;
+    let index = Path::new(&args.output).join("index.html");
+    std::fs::write(&index, page)
+        .map_err(|e| Error::Usage(format!("cannot write {}: {e}", index.display())))?;
+    let errata = rows.iter().filter(|r| html::is_erratum(r)).count();
+    crate::output::println(format_args!(
+        "wrote {}: {} claims ({errata} errata), {} figures, {} regression summaries",
+        index.display(),
+        rows.len(),
+        figures.len(),
+        regressions.len()
+    ))?;
+    Ok(ExitCode::SUCCESS)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_output_that_is_a_file_is_refused() {
+        let dir =
+            std::env::temp_dir().join(format!("exactcheck-report-unit-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let file = dir.join("plain");
+        std::fs::write(&file, "x").unwrap();
+        let e = prepare_dir(file.to_str().unwrap()).unwrap_err().to_string();
+        assert!(
+            e.contains("is a file, not a directory") && !e.contains('\n'),
+            "{e}"
+        );
+        let sub = dir.join("a/b");
+        prepare_dir(sub.to_str().unwrap()).unwrap();
+        assert!(sub.is_dir());
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn a_claims_file_is_refused_until_the_reader_arrives() {
+        let Err(e) = checked_claims(Some("paper.toml")) else {
+            panic!("a claims file is refused");
+        };
+        let e = e.to_string();
+        assert!(
+            e.starts_with("paper.toml: claims files arrive with helper F's module"),
+            "{e}"
+        );
+    }
+}
