@@ -531,9 +531,13 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<Outcome, Fault> {
                 let at: Vec<String> = point.iter().map(|(v, q)| format!("{v} = {q}")).collect();
                 let nf = normal_form.display(&vars).to_string();
                 let mut evidence = format!(
-                    "{}at {}{} LHS - RHS = {value}; LHS - RHS reduces{modulo} to {nf}",
+                    "{}{}{} LHS - RHS = {value}; LHS - RHS reduces{modulo} to {nf}",
                     coordinate(k),
-                    at.join(", "),
+                    if at.is_empty() {
+                        "everywhere".to_string()
+                    } else {
+                        format!("at {}", at.join(", "))
+                    },
                     if rels.is_empty() { "" } else { " (where the relations hold)" },
                 );
                 let mut counter_example = Vec::new();
