@@ -245,9 +245,6 @@ pub fn build(c: &RawClaim, defs: &RefCell<Defs>) -> Built<Check> {
                         "an instances claim needs random = K or at = [...] (or both)".into(),
                     ));
                 }
-                if c.name.is_some() {
-                    names(lhs.len())?;
-                }
                 Check::Instances {
                     lhs,
                     rhs,

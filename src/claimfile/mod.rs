@@ -77,7 +77,7 @@ use crate::Error;
 use defs::{DefText, Defs};
 use exactcheck_exact::expr::{parse_expr_with_calls, Expr};
 use kinds::{Check, Fault};
-use read::{Format, Index};
+use read::Format;
 use serde_json::Value;
 use std::cell::RefCell;
 use std::collections::HashMap;
@@ -283,7 +283,6 @@ pub fn parse(text: &str, file: &str, default_name: &str) -> Result<ClaimsFile, E
             check,
         });
     }
-    let _: &Index = &index;
     Ok(ClaimsFile {
         path: file.to_string(),
         paper,
