@@ -238,7 +238,8 @@ impl Defs {
         Ok(value)
     }
 
-    fn is_defined(&self, name: &str) -> bool {
+    /// Whether `name` is defined.
+    pub fn is_defined(&self, name: &str) -> bool {
         self.entries.iter().any(|(n, _)| n == name)
     }
 

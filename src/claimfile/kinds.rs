@@ -219,6 +219,15 @@ pub fn build(c: &RawClaim, defs: &RefCell<Defs>) -> Built<Check> {
                 for (k, point) in c.at.iter().flatten().enumerate() {
                     let mut values = Vec::new();
                     for (var, v) in point {
+                        if defs.borrow().is_defined(var) {
+                            return Err((
+                                "at",
+                                format!(
+                                    "instance {}: {var} is a defined name, not a variable (give the variables its definition uses)",
+                                    k + 1
+                                ),
+                            ));
+                        }
                         let text = match v {
                             Value::String(s) => s.clone(),
                             Value::Number(n) => n.to_string(),

@@ -432,5 +432,11 @@ printed = "1.76"
         let e = load_str(json, "p.json").err().expect("an error");
         assert!(e.contains("p.json:3:") && e.contains("key expr"), "{e}");
         assert!(e.contains("twice") || e.contains("duplicate"), "{e}");
+        let text = "[define]\nA = \"x + 1\"\n\n[[claim]]\nid = \"i\"\nkind = \"instances\"\nlhs = \"A\"\nrhs = \"x + 1\"\nat = [{ A = 2 }]\n";
+        let e = load_str(text, "p.toml").err().expect("an error");
+        assert!(
+            e.starts_with("p.toml:9: claim \"i\": key at: instance 1: A is a defined name"),
+            "{e}"
+        );
     }
 }
