@@ -51,15 +51,30 @@ pub struct ProveArgs {
     pub json: bool,
 }
 
-/// A `--where` argument: a relation or a domain.
-enum Where {
+/// A `--where` argument (or a claims file's `where` entry): a relation or a domain.
+pub enum Where {
+    /// `A = B`.
     Relation(Expr, Expr),
+    /// A variable's bounds.
     Domain(String, Domain),
 }
 
 /// Parses `--where #i` (`what` names it): `A = B`, or a chain `a < v`, `v >= a`, `a <= v < b`
 /// with a variable `v` and constants `a`, `b`.
 fn parse_where(text: &str, what: &str) -> Result<Where, Error> {
+    parse_where_with(text, what, &parse)
+}
+
+/// [`parse_where`] with the expression parser given (the claims files resolve their
+/// definitions and functions in it): `parse(text, what)`.
+///
+/// # Errors
+/// [`Error::Input`] naming `what` for a malformed relation or domain.
+pub fn parse_where_with(
+    text: &str,
+    what: &str,
+    parse: &dyn Fn(&str, &str) -> Result<Expr, Error>,
+) -> Result<Where, Error> {
     // Split at the comparison operators.
     let mut parts = Vec::new();
     let mut ops = Vec::new();
@@ -169,7 +184,7 @@ fn collect_vars(e: &Expr, out: &mut Vec<String>) {
 }
 
 /// A fresh seed from the operating system's randomness (the keys of std's `RandomState`).
-fn fresh_seed() -> u64 {
+pub fn fresh_seed() -> u64 {
     use std::hash::{BuildHasher, Hasher};
     let mut h = std::collections::hash_map::RandomState::new().build_hasher();
     h.write_u64(0x5EED);

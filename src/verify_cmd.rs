@@ -1,12 +1,22 @@
-//! `exactcheck verify`: the claim catalogue's verdicts as a table or JSON.
+//! `exactcheck verify [FILE]`: the verdicts of the built-in claim catalogue, or of a claims file
+//! ([`crate::claimfile`]), as a table or JSON.
 
 use crate::Error;
 use clap::Args;
+use std::path::PathBuf;
 use std::process::ExitCode;
 
 /// Arguments of `exactcheck verify`.
 #[derive(Debug, Args)]
+#[command(after_help = "Examples:
+  exactcheck verify                          the built-in catalogue
+  exactcheck verify --only spaeth --json     Spaeth's claims as JSON
+  exactcheck verify examples/spaeth.toml     the claims of a file (TOML or JSON; see the README)
+
+Exit status: 0 when every claim has its expected verdict, 1 otherwise, 2 for a bad file or argument.")]
 pub struct VerifyArgs {
+    /// A claims file (`.toml` or `.json`): check its claims instead of the built-in catalogue.
+    pub file: Option<PathBuf>,
     /// Print a JSON array (objects with id, verdict, method, evidence, ...) instead of a table.
     #[arg(long)]
     pub json: bool,
@@ -18,9 +28,17 @@ pub struct VerifyArgs {
 /// Runs `exactcheck verify`: exit status 0 when every verdict is the expected one, else 1.
 ///
 /// # Errors
-/// [`Error::Usage`] for a prefix no claim has; [`Error::Output`] when standard output fails.
+/// [`Error::Usage`] for a prefix no claim has; [`Error::Io`] / [`Error::Input`] for a claims
+/// file that cannot be read or is malformed (one line with file, line and key);
+/// [`Error::Output`] when standard output fails.
 pub fn run(args: &VerifyArgs) -> Result<ExitCode, Error> {
-    let rows = crate::claims::verify(args.only.as_deref())?;
+    let rows = match &args.file {
+        None => crate::claims::verify(args.only.as_deref())?,
+        Some(path) => {
+            let file = crate::claimfile::load(path)?;
+            crate::claimfile::check(&file, args.only.as_deref())?
+        }
+    };
     if args.json {
         let arr: Vec<_> = rows.iter().map(|r| r.to_json()).collect();
         crate::output::println(serde_json::Value::Array(arr))?;

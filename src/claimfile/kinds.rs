@@ -1,0 +1,1103 @@
+//! The four kinds of claims: reading their keys into a [`Check`] (formulas resolved) and
+//! deciding it with the engines the rest of the tool uses — `exactcheck_exact::prove::decide_in`
+//! (as `prove`), `prove::random_identity_test` (as `prove --random`), [`crate::claims::printed`]
+//! (printed decimals) and [`crate::solve::solve`] (the exact solvers).
+
+use super::defs::{self, Defs};
+use super::name_expr;
+use super::read::{present_keys, RawClaim};
+use crate::claims::{printed, Equation, Erratum, Outcome, Verdict};
+use crate::prove_cmd::{parse_where_with, Where};
+use crate::Error;
+use exactcheck_core::Ring;
+use exactcheck_exact::expr::{parse_expr, AddOp, Coefficient, Expr, ExprKind};
+use exactcheck_exact::poly::{Poly, Var, Vars};
+use exactcheck_exact::prove::{
+    decide_in, random_identity_test, unit_circle_pairs, DecideError, Decision, Domain, PointField,
+    RandomDecision, HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
+};
+use exactcheck_exact::{Radical, Rational};
+use serde_json::Value;
+use std::cell::RefCell;
+use std::fmt::Display;
+
+/// Why a check could not give a verdict.
+pub enum Fault {
+    /// The file is at fault: the key and what is wrong.
+    Input(&'static str, String),
+    /// The check itself failed (reported as the claim's error, not as a bad file).
+    Internal(String),
+}
+
+type Built<T> = Result<T, (&'static str, String)>;
+
+/// Relations and domains of `where` / `domains`.
+#[derive(Default)]
+pub struct Conditions {
+    relations: Vec<(Expr, Expr)>,
+    relation_texts: Vec<String>,
+    domains: Vec<(String, Domain, String)>,
+}
+
+/// A claim ready to be decided.
+pub enum Check {
+    /// `identity`.
+    Identity {
+        lhs: Vec<Expr>,
+        rhs: Vec<Expr>,
+        names: Vec<Expr>,
+        conditions: Conditions,
+        radical: bool,
+        corrected: Option<Vec<Expr>>,
+    },
+    /// `value`.
+    Value {
+        expr: Expr,
+        name: Option<Expr>,
+        printed: Vec<String>,
+    },
+    /// `instances`.
+    Instances {
+        lhs: Vec<Expr>,
+        rhs: Vec<Expr>,
+        conditions: Conditions,
+        random: Option<u32>,
+        seed: Option<u64>,
+        at: Vec<Vec<(String, Expr)>>,
+    },
+    /// `solve`.
+    Solve {
+        problem: String,
+        fields: Vec<(String, Value)>,
+    },
+}
+
+const IDENTITY_KEYS: [&str; 7] = [
+    "name",
+    "lhs",
+    "rhs",
+    "where",
+    "domains",
+    "field",
+    "corrected",
+];
+const VALUE_KEYS: [&str; 3] = ["name", "expr", "printed"];
+const INSTANCES_KEYS: [&str; 6] = ["lhs", "rhs", "where", "random", "seed", "at"];
+const SOLVE_KEYS: [&str; 2] = ["problem", "expect_fields"];
+
+fn key_name(k: &str) -> &'static str {
+    IDENTITY_KEYS
+        .iter()
+        .chain(&VALUE_KEYS)
+        .chain(&INSTANCES_KEYS)
+        .chain(&SOLVE_KEYS)
+        .chain(&["kind"])
+        .find(|x| **x == k)
+        .copied()
+        .unwrap_or("kind")
+}
+
+/// Reads a claim's keys for its kind.
+pub fn build(c: &RawClaim, defs: &RefCell<Defs>) -> Built<Check> {
+    let allowed: &[&str] = match c.kind.as_str() {
+        "identity" => &IDENTITY_KEYS,
+        "value" => &VALUE_KEYS,
+        "instances" => &INSTANCES_KEYS,
+        "solve" => &SOLVE_KEYS,
+        other => {
+            return Err((
+                "kind",
+                format!("unknown kind {other:?} (identity, value, instances, solve)"),
+            ))
+        }
+    };
+    if let Some(k) = present_keys(c).into_iter().find(|k| !allowed.contains(k)) {
+        return Err((
+            key_name(k),
+            format!(
+                "kind {} does not take this key (its keys: {})",
+                c.kind,
+                allowed.join(", ")
+            ),
+        ));
+    }
+    let resolve = |key: &'static str, text: &str| -> Built<Vec<Expr>> {
+        defs.borrow_mut()
+            .resolve_text(text)
+            .map(|v| v.components())
+            .map_err(|e| (key, e.message))
+    };
+    let required = |key: &'static str, v: &Option<String>| -> Built<String> {
+        v.clone()
+            .ok_or((key, format!("missing (kind {} needs it)", c.kind)))
+    };
+    let same_shape = |key: &'static str, a: &[Expr], b: &[Expr], what: &str| -> Built<()> {
+        if a.len() == b.len() {
+            Ok(())
+        } else {
+            let shape = |n: usize| {
+                if n == 1 {
+                    "a scalar".to_string()
+                } else {
+                    format!("a vector of {n}")
+                }
+            };
+            Err((
+                key,
+                format!("{} but {what} is {}", shape(b.len()), shape(a.len())),
+            ))
+        }
+    };
+    let names = |n: usize| -> Built<Vec<Expr>> {
+        let list = c.name.as_ref().map(|n| n.list()).unwrap_or_default();
+        if !list.is_empty() && list.len() != n {
+            return Err(("name", format!("{} names for {n} coordinates", list.len())));
+        }
+        list.iter()
+            .map(|t| name_expr(t).map_err(|e| ("name", e)))
+            .collect()
+    };
+    Ok(match c.kind.as_str() {
+        "identity" | "instances" => {
+            let lhs = resolve("lhs", &required("lhs", &c.lhs)?)?;
+            let rhs = resolve("rhs", c.rhs.as_deref().unwrap_or("0"))?;
+            same_shape("rhs", &lhs, &rhs, "lhs")?;
+            let conditions = conditions(c, defs)?;
+            if c.kind == "identity" {
+                let corrected = match &c.corrected {
+                    Some(t) => {
+                        let x = resolve("corrected", t)?;
+                        same_shape("corrected", &lhs, &x, "lhs")?;
+                        Some(x)
+                    }
+                    None => None,
+                };
+                let radical = match c.field.as_deref() {
+                    Some("rational") => false,
+                    Some("radical") => true,
+                    None => lhs
+                        .iter()
+                        .chain(&rhs)
+                        .chain(corrected.iter().flatten())
+                        .chain(conditions.relations.iter().flat_map(|(a, b)| [a, b]))
+                        .any(defs::has_sqrt),
+                    Some(o) => {
+                        return Err(("field", format!("unknown field {o:?} (rational, radical)")))
+                    }
+                };
+                Check::Identity {
+                    names: names(lhs.len())?,
+                    lhs,
+                    rhs,
+                    conditions,
+                    radical,
+                    corrected,
+                }
+            } else {
+                if !conditions.domains.is_empty() {
+                    return Err((
+                        "where",
+                        "instances take relations only (no domains such as 'r > 0')".into(),
+                    ));
+                }
+                let random = match c.random {
+                    None => None,
+                    Some(k) => match u32::try_from(k) {
+                        Ok(k) if (1..=MAX_RANDOM_TRIALS).contains(&k) => Some(k),
+                        _ => {
+                            return Err((
+                                "random",
+                                format!("takes 1 to {MAX_RANDOM_TRIALS} points, not {k}"),
+                            ))
+                        }
+                    },
+                };
+                if c.seed.is_some() && random.is_none() {
+                    return Err(("seed", "a seed needs random = K".into()));
+                }
+                let mut at = Vec::new();
+                for (k, point) in c.at.iter().flatten().enumerate() {
+                    let mut values = Vec::new();
+                    for (var, v) in point {
+                        if defs.borrow().is_defined(var) {
+                            return Err((
+                                "at",
+                                format!(
+                                    "instance {}: {var} is a defined name, not a variable (give the variables its definition uses)",
+                                    k + 1
+                                ),
+                            ));
+                        }
+                        let text = match v {
+                            Value::String(s) => s.clone(),
+                            Value::Number(n) => n.to_string(),
+                            _ => {
+                                return Err((
+                                    "at",
+                                    format!(
+                                        "instance {}: {var} must be a number or a string",
+                                        k + 1
+                                    ),
+                                ))
+                            }
+                        };
+                        let e = defs.borrow_mut().resolve_scalar(&text).map_err(|e| {
+                            ("at", format!("instance {}: {var}: {}", k + 1, e.message))
+                        })?;
+                        values.push((var.clone(), e));
+                    }
+                    at.push(values);
+                }
+                if random.is_none() && at.is_empty() {
+                    return Err((
+                        "lhs",
+                        "an instances claim needs random = K or at = [...] (or both)".into(),
+                    ));
+                }
+                Check::Instances {
+                    lhs,
+                    rhs,
+                    conditions,
+                    random,
+                    seed: c.seed,
+                    at,
+                }
+            }
+        }
+        "value" => {
+            let expr = defs
+                .borrow_mut()
+                .resolve_scalar(&required("expr", &c.expr)?)
+                .map_err(|e| ("expr", e.message))?;
+            let printed = c
+                .printed
+                .as_ref()
+                .ok_or(("printed", "missing (kind value needs it)".to_string()))?
+                .list();
+            if printed.is_empty() {
+                return Err(("printed", "give at least one printed decimal".into()));
+            }
+            for p in &printed {
+                printed::rational(p).map_err(|e| ("printed", e))?;
+            }
+            Check::Value {
+                expr,
+                name: names(1)?.pop(),
+                printed,
+            }
+        }
+        "solve" => {
+            let problem = match c
+                .problem
+                .as_ref()
+                .ok_or(("problem", "missing (kind solve needs it)".to_string()))?
+            {
+                Value::String(s) => s.clone(),
+                v @ Value::Object(_) => v.to_string(),
+                _ => {
+                    return Err((
+                        "problem",
+                        "a problem is a table (an object) or a string of JSON".into(),
+                    ))
+                }
+            };
+            crate::solve::problem_kind(&problem).map_err(|e| ("problem", e.to_string()))?;
+            let fields: Vec<(String, Value)> = c
+                .expect_fields
+                .as_ref()
+                .ok_or(("expect_fields", "missing (kind solve needs it)".to_string()))?
+                .iter()
+                .map(|(k, v)| (k.clone(), v.clone()))
+                .collect();
+            if fields.is_empty() {
+                return Err(("expect_fields", "give at least one expected field".into()));
+            }
+            Check::Solve { problem, fields }
+        }
+        _ => unreachable!("the kind was checked above"),
+    })
+}
+
+/// `where` and `domains`, parsed as `prove --where` parses them.
+fn conditions(c: &RawClaim, defs: &RefCell<Defs>) -> Built<Conditions> {
+    let mut out = Conditions::default();
+    let parse = |text: &str, what: &str| -> Result<Expr, Error> {
+        defs.borrow_mut()
+            .resolve_scalar(text)
+            .map_err(|e| Error::Input(format!("{what}: {}", e.message)))
+    };
+    let lists: [(&'static str, &Option<Vec<String>>); 2] =
+        [("where", &c.where_), ("domains", &c.domains)];
+    for (key, list) in lists {
+        for (i, text) in list.iter().flatten().enumerate() {
+            let what = format!("entry {}", i + 1);
+            match parse_where_with(text, &what, &parse).map_err(|e| (key, e.to_string()))? {
+                Where::Relation(a, b) => {
+                    if key == "domains" {
+                        return Err((
+                            key,
+                            format!(
+                                "{what}: {text:?} is a relation, not a domain (put it under where)"
+                            ),
+                        ));
+                    }
+                    out.relations.push((a, b));
+                    out.relation_texts.push(text.clone());
+                }
+                Where::Domain(v, d) => {
+                    if d.is_empty() {
+                        return Err((key, format!("{what}: the domain {text:?} is empty")));
+                    }
+                    if out.domains.iter().any(|(w, _, _)| *w == v) {
+                        return Err((
+                            key,
+                            format!("{what}: {v} already has a domain (give both bounds in one, e.g. '0 <= {v} <= 1')"),
+                        ));
+                    }
+                    out.domains.push((v, d, text.clone()));
+                }
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// Decides a claim.
+pub fn run(check: &Check, notation: &[(String, String)]) -> Result<Outcome, Fault> {
+    let mut out = match check {
+        Check::Identity { radical: true, .. } => identity::<Radical>(check)?,
+        Check::Identity { .. } => identity::<Rational>(check)?,
+        Check::Value {
+            expr,
+            name,
+            printed,
+        } => value(expr, name.as_ref(), printed)?,
+        Check::Instances { .. } => instances(check)?,
+        Check::Solve { problem, fields } => solve(problem, fields)?,
+    };
+    if let Some(e) = out.erratum.as_mut() {
+        e.notation = notation.to_vec();
+    }
+    Ok(out)
+}
+
+fn num(q: Rational) -> Expr {
+    Expr::new(ExprKind::Number(q))
+}
+
+fn difference(a: &Expr, b: &Expr) -> Expr {
+    Expr::new(ExprKind::Sum(vec![
+        (AddOp::Plus, a.clone()),
+        (AddOp::Minus, b.clone()),
+    ]))
+}
+
+fn var(name: &str) -> Expr {
+    Expr::new(ExprKind::Var(name.to_string()))
+}
+
+/// An exact value printed by its type, read back as an expression tree.
+fn value_expr(v: &impl Display) -> Result<Expr, Fault> {
+    let text = v.to_string();
+    parse_expr(&text)
+        .map_err(|e| Fault::Internal(format!("the exact value {text} does not read back: {e}")))
+}
+
+fn to_poly<C: Coefficient>(e: &Expr, vars: &mut Vars, key: &'static str) -> Result<Poly<C>, Fault> {
+    e.to_poly::<C>(vars)
+        .map_err(|err| Fault::Input(key, err.to_string()))
+}
+
+fn identity<C: PointField + Display>(check: &Check) -> Result<Outcome, Fault> {
+    let Check::Identity {
+        lhs,
+        rhs,
+        names,
+        conditions,
+        corrected,
+        ..
+    } = check
+    else {
+        unreachable!("identity() is called for identity claims")
+    };
+    let mut vars = Vars::new();
+    let mut residuals = Vec::new();
+    let mut rhs_polys = Vec::new();
+    for (l, r) in lhs.iter().zip(rhs) {
+        let l = to_poly::<C>(l, &mut vars, "lhs")?;
+        let r = to_poly::<C>(r, &mut vars, "rhs")?;
+        residuals.push(l - &r);
+        rhs_polys.push(r);
+    }
+    let corrected_polys = match corrected {
+        Some(xs) => Some(
+            xs.iter()
+                .map(|x| to_poly::<C>(x, &mut vars, "corrected"))
+                .collect::<Result<Vec<_>, _>>()?,
+        ),
+        None => None,
+    };
+    let mut rels = Vec::new();
+    for (a, b) in &conditions.relations {
+        rels.push(to_poly::<C>(a, &mut vars, "where")? - to_poly::<C>(b, &mut vars, "where")?);
+    }
+    let mut doms: Vec<(Var, Domain)> = Vec::new();
+    for (v, d, text) in &conditions.domains {
+        let var = vars.get(v).ok_or_else(|| {
+            Fault::Input(
+                "where",
+                format!("{text:?}: {v} does not occur in the identity or its relations"),
+            )
+        })?;
+        doms.push((var, d.clone()));
+    }
+    let modulo = if conditions.relation_texts.is_empty() {
+        String::new()
+    } else {
+        format!(" modulo {}", conditions.relation_texts.join(", "))
+    };
+    let within = if conditions.domains.is_empty() {
+        String::new()
+    } else {
+        let d: Vec<&str> = conditions
+            .domains
+            .iter()
+            .map(|(_, _, t)| t.as_str())
+            .collect();
+        format!(" for {}", d.join(", "))
+    };
+    let field = if std::any::type_name::<C>().contains("Radical") {
+        "Q(sqrt)"
+    } else {
+        "Q"
+    };
+    let method = format!(
+        "symbolic expansion over {field}[{}]{modulo}{within}",
+        vars.names().join(",")
+    );
+    let decide = |p: &Poly<C>| -> Result<Decision<C>, Fault> {
+        decide_in(p, &rels, &doms, vars.len()).map_err(|e| {
+            Fault::Input(
+                "where",
+                match e {
+                    DecideError::Inconsistent => format!(
+                        "the relations{modulo} are inconsistent (no point satisfies them, so nothing can be proved from them)"
+                    ),
+                    other => other.to_string(),
+                },
+            )
+        })
+    };
+    let name = |v: Var| {
+        vars.name(v)
+            .expect("the engine reports only variables of the table")
+            .to_string()
+    };
+    let coordinate = |k: usize| {
+        if lhs.len() == 1 {
+            String::new()
+        } else {
+            format!("coordinate {}: ", k + 1)
+        }
+    };
+    let mut terms = 0;
+    for (k, res) in residuals.iter().enumerate() {
+        match decide(res)? {
+            Decision::Proved { expanded_terms } => terms += expanded_terms,
+            Decision::Undecided {
+                normal_form,
+                searched,
+            } => {
+                return Ok(Outcome {
+                    verdict: Verdict::Undecided,
+                    method,
+                    evidence: format!(
+                        "{}LHS - RHS reduces{modulo} to {} (not zero), but no point{within} where it is non-zero was found: {searched}",
+                        coordinate(k),
+                        normal_form.display(&vars)
+                    ),
+                    erratum: None,
+                })
+            }
+            Decision::Fails {
+                normal_form,
+                point,
+                value,
+            } => {
+                let shown = |v: &Var| {
+                    res.variables().contains(v)
+                        || rels.iter().any(|r| r.variables().contains(v))
+                        || doms.iter().any(|(w, _)| w == v)
+                };
+                let point: Vec<(String, Radical)> = point
+                    .into_iter()
+                    .filter(|(v, _)| shown(v))
+                    .map(|(v, q)| (name(v), q))
+                    .collect();
+                let at: Vec<String> = point.iter().map(|(v, q)| format!("{v} = {q}")).collect();
+                let nf = normal_form.display(&vars).to_string();
+                let mut evidence = format!(
+                    "{}{}{} LHS - RHS = {value}; LHS - RHS reduces{modulo} to {nf}",
+                    coordinate(k),
+                    if at.is_empty() {
+                        "everywhere".to_string()
+                    } else {
+                        format!("at {}", at.join(", "))
+                    },
+                    if rels.is_empty() { "" } else { " (where the relations hold)" },
+                );
+                let mut counter_example = Vec::new();
+                for (v, q) in &point {
+                    counter_example.push(Equation {
+                        lhs: var(v),
+                        rhs: value_expr(q)?,
+                    });
+                }
+                let printed: Vec<Equation> = if names.is_empty() {
+                    lhs.iter()
+                        .zip(rhs)
+                        .map(|(l, r)| Equation {
+                            lhs: l.clone(),
+                            rhs: r.clone(),
+                        })
+                        .collect()
+                } else {
+                    names
+                        .iter()
+                        .zip(lhs)
+                        .map(|(n, l)| Equation {
+                            lhs: n.clone(),
+                            rhs: l.clone(),
+                        })
+                        .collect()
+                };
+                let mut erratum = Erratum {
+                    printed,
+                    correction: format!("LHS - RHS reduces{modulo} to {nf}, so LHS = RHS + ({nf})"),
+                    counter_example,
+                    residual: vec![Equation {
+                        lhs: difference(&lhs[k], &rhs[k]),
+                        rhs: value_expr(&value)?,
+                    }],
+                    ..Erratum::default()
+                };
+                if let (Some(cp), Some(cx)) = (&corrected_polys, corrected) {
+                    let mut failed = None;
+                    for (j, (c, r)) in cp.iter().zip(&rhs_polys).enumerate() {
+                        match decide(&(c.clone() - r))? {
+                            Decision::Proved { .. } => {}
+                            Decision::Fails { value, .. } => {
+                                failed = Some(format!("{}it differs from RHS by {value} at a point", coordinate(j)));
+                                break;
+                            }
+                            Decision::Undecided { normal_form, .. } => {
+                                failed = Some(format!(
+                                    "{}corrected - RHS reduces to {} (undecided)",
+                                    coordinate(j),
+                                    normal_form.display(&vars)
+                                ));
+                                break;
+                            }
+                        }
+                    }
+                    match failed {
+                        None => {
+                            let shown: Vec<String> = cx.iter().map(ToString::to_string).collect();
+                            evidence += &format!(
+                                ". Corrected form (proved equal to RHS{modulo}{within}): {}",
+                                shown.join(", ")
+                            );
+                            erratum.corrected = cx
+                                .iter()
+                                .enumerate()
+                                .map(|(j, x)| match names.get(j) {
+                                    Some(n) => Equation {
+                                        lhs: n.clone(),
+                                        rhs: x.clone(),
+                                    },
+                                    None => Equation {
+                                        lhs: x.clone(),
+                                        rhs: rhs[j].clone(),
+                                    },
+                                })
+                                .collect();
+                            erratum.correction = format!(
+                                "the corrected form is proved equal to RHS{modulo}; the printed LHS differs from RHS by {nf}"
+                            );
+                        }
+                        Some(why) => {
+                            evidence +=
+                                &format!(". (The given correction does not match RHS either: {why})");
+                        }
+                    }
+                }
+                return Ok(Outcome {
+                    verdict: Verdict::Fails,
+                    method,
+                    evidence,
+                    erratum: Some(Box::new(erratum)),
+                });
+            }
+        }
+    }
+    let n = residuals.len();
+    Ok(Outcome {
+        verdict: Verdict::Proved,
+        method,
+        evidence: match (terms, n) {
+            (0, 1) => "LHS - RHS expands to 0".to_string(),
+            (0, n) => format!("LHS - RHS expands to 0 in each of the {n} coordinates"),
+            (t, 1) => format!("LHS - RHS expands to {t} terms, which reduce to 0{modulo}"),
+            (t, n) => format!(
+                "LHS - RHS expands to {t} terms in the {n} coordinates, which reduce to 0{modulo}"
+            ),
+        },
+        erratum: None,
+    })
+}
+
+fn value(expr: &Expr, name: Option<&Expr>, printed_list: &[String]) -> Result<Outcome, Fault> {
+    let v: Radical = expr
+        .eval_constant::<Radical>()
+        .map_err(|e| Fault::Input("expr", e.to_string()))?;
+    let mut notes = Vec::new();
+    let mut all_exact = true;
+    let mut wrong = Vec::new();
+    let max_places = printed_list
+        .iter()
+        .map(|p| printed::places(p))
+        .max()
+        .unwrap_or(0);
+    for p in printed_list {
+        let q = printed::rational(p).map_err(|e| Fault::Input("printed", e))?;
+        let places = printed::places(p);
+        let qr = printed::radical(&q);
+        if qr == v {
+            notes.push(format!("{p} is the exact value"));
+            continue;
+        }
+        all_exact = false;
+        let correct = printed::decimal(&v, places);
+        if printed::rounds_to(&v, &q, places) {
+            notes.push(if printed::ties(&v, &q, places) {
+                format!("{p}: a correct rounding to {places} places (a tie: both neighbours are)")
+            } else {
+                format!("{p}: correctly rounded to {places} places")
+            });
+        } else {
+            let dev = qr.sub_ref(&v);
+            let how = if printed::truncates_to(&v, &q, places) {
+                " (truncated, not rounded)"
+            } else {
+                ""
+            };
+            notes.push(format!(
+                "{p}: wrong{how}; correctly rounded to {places} places it is {correct} (printed - exact = {})",
+                printed::deviation_text(&dev)
+            ));
+            wrong.push((p.clone(), q, correct, dev));
+        }
+    }
+    let verdict = if !wrong.is_empty() {
+        Verdict::Fails
+    } else if all_exact {
+        Verdict::Proved
+    } else {
+        Verdict::Holds
+    };
+    let shown = printed::decimal(&v, max_places + 4);
+    let evidence = format!("exact value {v} = {shown}...; {}", notes.join("; "));
+    let erratum = if wrong.is_empty() {
+        None
+    } else {
+        let label = name.cloned().unwrap_or_else(|| expr.clone());
+        let mut e = Erratum {
+            correction: format!("the exact value is {v} = {shown}..."),
+            ..Erratum::default()
+        };
+        for (_, q, correct, dev) in &wrong {
+            e.printed.push(Equation {
+                lhs: label.clone(),
+                rhs: num(q.clone()),
+            });
+            let c = printed::rational(correct).map_err(Fault::Internal)?;
+            e.corrected.push(Equation {
+                lhs: label.clone(),
+                rhs: num(c),
+            });
+            e.residual.push(Equation {
+                lhs: difference(&num(q.clone()), &label),
+                rhs: value_expr(dev)?,
+            });
+        }
+        Some(Box::new(e))
+    };
+    Ok(Outcome {
+        verdict,
+        method: "exact evaluation in Q(sqrt); printed decimals judged exactly".into(),
+        evidence,
+        erratum,
+    })
+}
+
+fn instances(check: &Check) -> Result<Outcome, Fault> {
+    let Check::Instances {
+        lhs,
+        rhs,
+        conditions,
+        random,
+        seed,
+        at,
+    } = check
+    else {
+        unreachable!("instances() is called for instances claims")
+    };
+    let mut names = Vec::new();
+    for e in lhs.iter().chain(rhs) {
+        defs::variables(e, &mut names);
+    }
+    for (a, b) in &conditions.relations {
+        defs::variables(a, &mut names);
+        defs::variables(b, &mut names);
+    }
+    // Exact instances.
+    for (k, point) in at.iter().enumerate() {
+        let missing: Vec<&String> = names
+            .iter()
+            .filter(|n| !point.iter().any(|(v, _)| v == *n))
+            .collect();
+        if !missing.is_empty() {
+            return Err(Fault::Input(
+                "at",
+                format!(
+                    "instance {} gives no value to {}",
+                    k + 1,
+                    missing
+                        .iter()
+                        .map(|s| s.as_str())
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                ),
+            ));
+        }
+        let eval = |e: &Expr| -> Result<Radical, Fault> {
+            let mut x = e.clone();
+            for (v, val) in point {
+                x = defs::substitute(&x, v, val);
+            }
+            x.eval_constant::<Radical>()
+                .map_err(|err| Fault::Input("at", format!("instance {}: {err}", k + 1)))
+        };
+        for (i, (a, b)) in conditions.relations.iter().enumerate() {
+            if eval(a)? != eval(b)? {
+                return Err(Fault::Input(
+                    "at",
+                    format!(
+                        "instance {} does not satisfy the relation {:?}",
+                        k + 1,
+                        conditions.relation_texts[i]
+                    ),
+                ));
+            }
+        }
+        for (c, (l, r)) in lhs.iter().zip(rhs).enumerate() {
+            let d = eval(l)?.sub_ref(&eval(r)?);
+            if !d.is_zero() {
+                let coords = if lhs.len() == 1 {
+                    String::new()
+                } else {
+                    format!(" (coordinate {})", c + 1)
+                };
+                let shown: Vec<String> = point.iter().map(|(v, x)| format!("{v} = {x}")).collect();
+                let erratum = Erratum {
+                    printed: vec![Equation {
+                        lhs: l.clone(),
+                        rhs: r.clone(),
+                    }],
+                    correction: format!("LHS - RHS = {d} at instance {}", k + 1),
+                    counter_example: point
+                        .iter()
+                        .map(|(v, x)| Equation {
+                            lhs: var(v),
+                            rhs: x.clone(),
+                        })
+                        .collect(),
+                    residual: vec![Equation {
+                        lhs: difference(l, r),
+                        rhs: value_expr(&d)?,
+                    }],
+                    ..Erratum::default()
+                };
+                return Ok(Outcome {
+                    verdict: Verdict::Fails,
+                    method: "exact evaluation at the given instances".into(),
+                    evidence: format!(
+                        "at instance {} ({}) LHS - RHS = {d}{coords}, not zero",
+                        k + 1,
+                        shown.join(", ")
+                    ),
+                    erratum: Some(Box::new(erratum)),
+                });
+            }
+        }
+    }
+    let exact_note = if at.is_empty() {
+        String::new()
+    } else {
+        format!("LHS - RHS is exactly 0 at all {} given instances", at.len())
+    };
+    let Some(trials) = *random else {
+        return Ok(Outcome {
+            verdict: Verdict::Holds,
+            method: "exact evaluation at the given instances".into(),
+            evidence: exact_note,
+            erratum: None,
+        });
+    };
+    // Random evaluation modulo a random prime (prove --random).
+    let mut vars = Vars::new();
+    let mut rels = Vec::new();
+    for (a, b) in &conditions.relations {
+        rels.push(
+            to_poly::<Rational>(a, &mut vars, "where")?
+                - to_poly::<Rational>(b, &mut vars, "where")?,
+        );
+    }
+    let (pairs, others) = unit_circle_pairs(&rels);
+    if !others.is_empty() {
+        return Err(Fault::Input(
+            "where",
+            "random evaluation supports only unit-circle relations 'c^2 + s^2 = 1'".into(),
+        ));
+    }
+    let vname = |v: Var| {
+        vars.name(v)
+            .expect("relation variables are in the table")
+            .to_string()
+    };
+    let circles: Vec<(String, String)> = pairs.iter().map(|&(c, s)| (vname(c), vname(s))).collect();
+    let seed = seed.unwrap_or_else(crate::prove_cmd::fresh_seed);
+    let show = |l: f64| {
+        if l == f64::NEG_INFINITY {
+            "0".to_string()
+        } else {
+            format!("2^{:.1}", (l * 10.0).ceil() / 10.0)
+        }
+    };
+    let mut worst = f64::NEG_INFINITY;
+    let mut prime = 0;
+    let mut undecided = None;
+    for (c, (l, r)) in lhs.iter().zip(rhs).enumerate() {
+        let d = random_identity_test(l, r, &names, &circles, trials, seed)
+            .map_err(|e| Fault::Input("lhs", e))?;
+        let coords = if lhs.len() == 1 {
+            String::new()
+        } else {
+            format!(" (coordinate {})", c + 1)
+        };
+        match d {
+            RandomDecision::Holds {
+                report, log2_bound, ..
+            } => {
+                prime = report.prime;
+                worst = worst.max(log2_bound);
+            }
+            RandomDecision::Undecided {
+                report, log2_bound, ..
+            } => {
+                prime = report.prime;
+                worst = worst.max(log2_bound);
+                undecided.get_or_insert(coords);
+            }
+            RandomDecision::Fails {
+                report,
+                point,
+                value,
+            } => {
+                let at: Vec<String> = point.iter().map(|(v, x)| format!("{v} = {x}")).collect();
+                let erratum = Erratum {
+                    printed: vec![Equation {
+                        lhs: l.clone(),
+                        rhs: r.clone(),
+                    }],
+                    correction: format!(
+                        "LHS - RHS = {value} (mod p = {}) at {}: not zero modulo p, so not zero over Q",
+                        report.prime,
+                        at.join(", ")
+                    ),
+                    ..Erratum::default()
+                };
+                return Ok(Outcome {
+                    verdict: Verdict::Fails,
+                    method: format!(
+                        "evaluation at {trials} random points modulo the random prime p = {} (seed {seed})",
+                        report.prime
+                    ),
+                    evidence: format!(
+                        "LHS - RHS = {value} (mod p) at {}{coords}, so it is not zero{}",
+                        at.join(", "),
+                        if exact_note.is_empty() { String::new() } else { format!("; {exact_note}") }
+                    ),
+                    erratum: Some(Box::new(erratum)),
+                });
+            }
+        }
+    }
+    let method =
+        format!(
+        "evaluation at {trials} random points modulo the random prime p = {prime} (seed {seed}){}",
+        if at.is_empty() { "" } else { " and exact instances" }
+    );
+    let extra = if exact_note.is_empty() {
+        String::new()
+    } else {
+        format!("; {exact_note}")
+    };
+    Ok(match undecided {
+        None => Outcome {
+            verdict: Verdict::Holds,
+            method,
+            evidence: format!(
+                "LHS - RHS vanishes at all {trials} points; a false identity passes with probability <= {} (proved bound, below the threshold 2^{HOLDS_THRESHOLD_LOG2}){extra}",
+                show(worst)
+            ),
+            erratum: None,
+        },
+        Some(coords) => Outcome {
+            verdict: Verdict::Undecided,
+            method,
+            evidence: format!(
+                "LHS - RHS vanishes at all {trials} points, but the error bound{coords} is {}, not below 2^{HOLDS_THRESHOLD_LOG2}; use more points (random up to {MAX_RANDOM_TRIALS}){extra}",
+                show(worst)
+            ),
+            erratum: None,
+        },
+    })
+}
+
+/// A field of an answer: by JSON pointer (`/a/0`) or dotted path (`a.0`).
+fn lookup<'a>(answer: &'a Value, path: &str) -> Option<&'a Value> {
+    if path.starts_with('/') {
+        return answer.pointer(path);
+    }
+    let mut v = answer;
+    for seg in path.split('.') {
+        v = match v {
+            Value::Object(m) => m.get(seg)?,
+            Value::Array(a) => a.get(seg.parse::<usize>().ok()?)?,
+            _ => return None,
+        };
+    }
+    Some(v)
+}
+
+/// An exact number of a JSON value (a number or a numeric string).
+fn exact_number(v: &Value) -> Option<Radical> {
+    match v {
+        Value::Number(n) => n.to_string().parse().ok(),
+        Value::String(s) => s.parse().ok(),
+        _ => None,
+    }
+}
+
+/// Whether an answer's value is the expected one: equal JSON, or equal exact numbers, or
+/// arrays/objects equal element by element in that sense.
+fn matches(expected: &Value, got: &Value) -> bool {
+    match (expected, got) {
+        (Value::Array(a), Value::Array(b)) => {
+            a.len() == b.len() && a.iter().zip(b).all(|(x, y)| matches(x, y))
+        }
+        (Value::Object(a), Value::Object(b)) => {
+            a.len() == b.len()
+                && a.iter()
+                    .all(|(k, x)| b.get(k).is_some_and(|y| matches(x, y)))
+        }
+        _ if expected == got => true,
+        _ => match (exact_number(expected), exact_number(got)) {
+            (Some(x), Some(y)) => x == y,
+            _ => false,
+        },
+    }
+}
+
+fn solve(problem: &str, fields: &[(String, Value)]) -> Result<Outcome, Fault> {
+    let answer = crate::solve::solve(problem, crate::solve::Mode::Exact)
+        .map_err(|e| Fault::Input("problem", e.to_string()))?;
+    let kind = answer
+        .get("kind")
+        .and_then(Value::as_str)
+        .unwrap_or("?")
+        .to_string();
+    let mut matched = Vec::new();
+    let mut mismatched = Vec::new();
+    let mut e = Erratum::default();
+    for (path, expected) in fields {
+        match lookup(&answer, path) {
+            Some(got) if matches(expected, got) => matched.push(format!("{path} = {expected}")),
+            Some(got) => {
+                mismatched.push(format!("{path} is {got}, not {expected}"));
+                if let (Some(x), Some(y)) = (exact_number(expected), exact_number(got)) {
+                    let label = var(&path
+                        .trim_start_matches('/')
+                        .replace(|c: char| !c.is_ascii_alphanumeric(), "_"));
+                    e.printed.push(Equation {
+                        lhs: label.clone(),
+                        rhs: value_expr(&x)?,
+                    });
+                    e.corrected.push(Equation {
+                        lhs: label,
+                        rhs: value_expr(&y)?,
+                    });
+                }
+            }
+            None => mismatched.push(format!("{path} is not in the answer (expected {expected})")),
+        }
+    }
+    let method = format!("the exact solver (solve, kind {kind}) on the given configuration");
+    if mismatched.is_empty() {
+        return Ok(Outcome {
+            verdict: Verdict::Holds,
+            method,
+            evidence: format!(
+                "the exact answer has every expected field: {}",
+                matched.join(", ")
+            ),
+            erratum: None,
+        });
+    }
+    e.correction = format!("the exact solver finds: {}", mismatched.join("; "));
+    Ok(Outcome {
+        verdict: Verdict::Fails,
+        method,
+        evidence: format!(
+            "{}{}",
+            mismatched.join("; "),
+            if matched.is_empty() {
+                String::new()
+            } else {
+                format!(" (matched: {})", matched.join(", "))
+            }
+        ),
+        erratum: Some(Box::new(e)),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use serde_json::json;
+
+    #[test]
+    fn answer_fields_compare_exactly() {
+        let a = json!({"type": "parabola", "plane": ["1", "sqrt(2)"], "n": 3, "ok": false});
+        assert!(matches(&json!("parabola"), lookup(&a, "type").unwrap()));
+        assert!(matches(
+            &json!([1, "2/sqrt(2)"]),
+            lookup(&a, "plane").unwrap()
+        ));
+        assert!(matches(&json!("6/2"), lookup(&a, "/n").unwrap()));
+        assert!(!matches(&json!(true), lookup(&a, "ok").unwrap()));
+        assert!(matches(&json!(1), lookup(&a, "plane.0").unwrap()));
+        assert!(lookup(&a, "plane.2").is_none());
+    }
+}

@@ -1,0 +1,238 @@
+//! Claims files (`exactcheck verify FILE`): the example of Spaeth's paper gives the built-in
+//! catalogue's verdicts, a misprinted copy fails with a counter-example and an erratum, and
+//! every class of bad file is one line naming the file, the line and the key (exit status 2).
+
+use exactcheck::claimfile;
+use exactcheck::claims::{self, Verdict};
+use exactcheck_exact::Rational;
+use std::collections::HashMap;
+use std::path::Path;
+use std::process::{Command, Output};
+
+fn root() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+fn exactcheck(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+        .args(args)
+        .current_dir(root())
+        .output()
+        .expect("the binary runs")
+}
+
+fn verdicts(path: &str) -> Vec<(String, Option<Verdict>)> {
+    let file = claimfile::load(&root().join(path)).expect("the file loads");
+    claimfile::check(&file, None)
+        .expect("the file checks")
+        .into_iter()
+        .map(|r| (r.id, r.outcome.ok().map(|o| o.verdict)))
+        .collect()
+}
+
+#[test]
+fn the_spaeth_file_reproduces_the_catalogue() {
+    let file = verdicts("examples/spaeth.toml");
+    let catalogue: HashMap<String, Option<Verdict>> = claims::verify(Some("spaeth"))
+        .unwrap()
+        .into_iter()
+        .map(|r| (r.id, r.outcome.ok().map(|o| o.verdict)))
+        .collect();
+    for id in [
+        "spaeth.eq5",
+        "spaeth.eq7",
+        "spaeth.eq8",
+        "spaeth.eq9",
+        "spaeth.eq10",
+        "spaeth.eq11",
+        "spaeth.example1",
+        "spaeth.example2",
+        "spaeth.example3",
+    ] {
+        assert!(file.iter().any(|(i, _)| i == id), "{id} is in the file");
+    }
+    for (id, verdict) in &file {
+        let expected = catalogue
+            .get(id)
+            .unwrap_or_else(|| panic!("{id} is a catalogue id"));
+        assert!(verdict.is_some(), "{id} has a verdict");
+        assert_eq!(verdict, expected, "{id}: file vs catalogue");
+    }
+    let out = exactcheck(&["verify", "examples/spaeth.toml"]);
+    assert_eq!(out.status.code(), Some(0), "{out:?}");
+    let table = String::from_utf8(out.stdout).unwrap();
+    assert!(table.contains(&format!(
+        "{} claims, {} as expected",
+        file.len(),
+        file.len()
+    )));
+}
+
+#[test]
+fn the_small_examples_hold() {
+    for path in ["examples/mypaper.toml", "tests/claims_file/mypaper.json"] {
+        let out = exactcheck(&["verify", path, "--json"]);
+        assert_eq!(out.status.code(), Some(0), "{path}: {out:?}");
+        let rows: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        for r in rows.as_array().unwrap() {
+            assert_eq!(r["as_expected"], true, "{r}");
+            for key in ["id", "verdict", "method", "evidence"] {
+                assert!(r[key].is_string(), "{key} in {r}");
+            }
+        }
+    }
+    let v = verdicts("tests/claims_file/mypaper.json");
+    let got: Vec<Option<Verdict>> = v.into_iter().map(|(_, v)| v).collect();
+    use Verdict::*;
+    assert_eq!(got, [Some(Proved), Some(Fails), Some(Fails), Some(Fails)]);
+    let only = exactcheck(&["verify", "examples/mypaper.toml", "--only", "mypaper.eq3"]);
+    assert_eq!(only.status.code(), Some(0));
+    assert!(String::from_utf8(only.stdout)
+        .unwrap()
+        .contains("1 claims, 1 as expected"));
+    let none = exactcheck(&["verify", "examples/mypaper.toml", "--only", "nope"]);
+    assert_eq!(none.status.code(), Some(2));
+}
+
+#[test]
+fn a_misprint_fails_with_a_counter_example_and_an_erratum() {
+    let example = std::fs::read_to_string(root().join("examples/spaeth.toml")).unwrap();
+    let fixture =
+        std::fs::read_to_string(root().join("tests/claims_file/spaeth_misprint.toml")).unwrap();
+    // The fixture is the example with one misprint (and a header saying so).
+    let printed = "(-sg*(b + r*st) + cg*(-sb*(a + r*ct) + u*cb) - f)^2 - R^2\"";
+    let misprint = "(-sg*(b + r*st) + cg*(-sb*(a + r*ct) + u*cb) - f)^2 + R^2\"";
+    assert_eq!(example.matches(printed).count(), 1);
+    let body = fixture
+        .split_once("# Spaeth's cylinder/sphere paper")
+        .map(|(_, b)| format!("# Spaeth's cylinder/sphere paper{b}"))
+        .unwrap();
+    assert_eq!(body, example.replace(printed, misprint));
+
+    let file = claimfile::load(&root().join("tests/claims_file/spaeth_misprint.toml")).unwrap();
+    let rows = claimfile::check(&file, Some("spaeth.eq7")).unwrap();
+    let o = rows[0].outcome.as_ref().unwrap();
+    // Old answer (as printed in the paper): proved.
+    assert_eq!(o.verdict, Verdict::Fails, "{}", o.evidence);
+    assert!(!rows[0].as_expected());
+    assert!(o.evidence.starts_with("at "), "{}", o.evidence);
+    let e = o.erratum.as_ref().expect("a failing claim has an erratum");
+    assert!(!e.printed.is_empty());
+    assert!(!e.counter_example.is_empty());
+    assert_eq!(e.residual.len(), 1);
+    assert!(e.correction.contains("R^2"), "{}", e.correction);
+    assert!(e
+        .notation
+        .iter()
+        .any(|(n, l)| n == "cb" && l == "\\cos\\beta"));
+    // The residual's value is the printed one minus the derivation, 2 R^2, at the point.
+    let r = e
+        .counter_example
+        .iter()
+        .find(|q| q.lhs.to_string() == "R")
+        .expect("R is in the counter-example");
+    let r: Rational = r.rhs.to_string().parse().unwrap();
+    let value: Rational = e.residual[0].rhs.to_string().parse().unwrap();
+    assert_eq!(value, Rational::from_integer(2) * r.clone() * r);
+
+    let out = exactcheck(&["verify", "tests/claims_file/spaeth_misprint.toml", "--json"]);
+    assert_eq!(out.status.code(), Some(1));
+    let rows: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let eq7 = rows
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|r| r["id"] == "spaeth.eq7")
+        .unwrap();
+    assert_eq!(eq7["verdict"], "fails");
+    assert_eq!(eq7["as_expected"], false);
+}
+
+#[test]
+fn bad_files_are_one_line_with_file_line_and_key() {
+    let cases = [
+        (
+            "syntax_error.toml",
+            4,
+            "claim \"bad.syntax\": key lhs: unexpected ')' at 13",
+        ),
+        ("toml_syntax.toml", 4, "TOML: "),
+        (
+            "unknown_key.toml",
+            5,
+            "claim \"bad.key\": key rsh: unknown field `rsh`",
+        ),
+        (
+            "missing_key.toml",
+            1,
+            "claim \"bad.missing\": key lhs: missing",
+        ),
+        (
+            "duplicate_id.toml",
+            8,
+            "claim \"bad.dup\": key id: duplicate id (first at line 2)",
+        ),
+        (
+            "unknown_kind.toml",
+            3,
+            "claim \"bad.kind\": key kind: unknown kind \"theorem\"",
+        ),
+        (
+            "wrong_key_for_kind.toml",
+            6,
+            "claim \"bad.kindkey\": key rhs: kind value does not take",
+        ),
+        (
+            "unknown_function.toml",
+            4,
+            "claim \"bad.function\": key lhs: unknown function 'sin' at 0",
+        ),
+        (
+            "wrong_arity.toml",
+            7,
+            "claim \"bad.arity\": key lhs: cross at 0 takes 2 arguments, not 1",
+        ),
+        (
+            "vector_for_scalar.toml",
+            7,
+            "claim \"bad.vector\": key expr: a vector of 3 where a scalar is expected",
+        ),
+        (
+            "cycle.toml",
+            2,
+            "define: key A: the definitions refer to themselves: A -> B -> C -> A",
+        ),
+        (
+            "inconsistent.toml",
+            6,
+            "claim \"bad.relations\": key where: the relations",
+        ),
+        (
+            "unknown_key.json",
+            7,
+            "claim \"bad.json\": key printd: unknown field `printd`",
+        ),
+        (
+            "bad_expression.json",
+            6,
+            "claim \"bad.json_expr\": key expr: unexpected end of input",
+        ),
+        ("json_syntax.json", 4, "claim #1: JSON: expected `,` or `}`"),
+    ];
+    for (name, line, what) in cases {
+        let path = format!("tests/claims_file/{name}");
+        let out = exactcheck(&["verify", &path]);
+        let err = String::from_utf8(out.stderr).unwrap();
+        assert_eq!(out.status.code(), Some(2), "{name}: {err}");
+        assert!(out.stdout.is_empty(), "{name}");
+        assert!(!err.contains("panicked"), "{name}: {err}");
+        assert_eq!(err.lines().count(), 1, "{name}: {err}");
+        let prefix = format!("exactcheck: error: {path}:{line}: {what}");
+        assert!(err.starts_with(&prefix), "{name}:\n{err}\nwanted {prefix}");
+    }
+    let out = exactcheck(&["verify", "tests/claims_file/no_such_file.toml"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8(out.stderr)
+        .unwrap()
+        .contains("cannot read"));
+}
