@@ -224,6 +224,8 @@ fn example4() -> String {
         });
         chart
             .configure_axes()
+            .axis_panel_style(PANEL.filled())
+            .bold_grid_style(RGBColor(0xdd, 0xdd, 0xdd))
             .light_grid_style(RGBColor(0xee, 0xee, 0xee))
             .max_light_lines(2)
             .label_style(font(12.0, GREY_TEXT))

@@ -58,6 +58,8 @@ pub const SPHERE: RGBColor = RGBColor(0x5b, 0x93, 0xc9);
 pub const SPHERE_BACK: RGBColor = RGBColor(0xa9, 0xc8, 0xe6);
 /// The sphere's disc and the plane z = 0 (translucent).
 pub const SKY: RGBColor = RGBColor(0xbc, 0xd7, 0xf0);
+/// The back panels of a 3D chart's axis box.
+pub const PANEL: RGBColor = RGBColor(0xf6, 0xf6, 0xf6);
 /// Guide lines.
 pub const GUIDE: RGBColor = RGBColor(0x99, 0x99, 0x99);
 

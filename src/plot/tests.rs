@@ -166,3 +166,45 @@ fn runs_are_closed_at_the_boundary() {
         }
     }
 }
+
+/// Every figure of the catalogue (what the report inlines): unique ids, a caption naming the
+/// paper's example, and an SVG document with a size, a viewBox and the caption as its title.
+#[test]
+fn catalogue_figures_are_documents() {
+    let figs = catalogue_figures().expect("the catalogue draws");
+    let ids: Vec<&str> = figs.iter().map(|f| f.id.as_str()).collect();
+    assert_eq!(
+        ids,
+        [
+            "spaeth.example1.tu",
+            "spaeth.example1.3d",
+            "spaeth.example2.tu",
+            "spaeth.example2.3d",
+            "spaeth.example3.tu",
+            "spaeth.example3.3d",
+            "chiang.example4",
+            "chiang.conic_table",
+            "chiang.ph_offsets"
+        ]
+    );
+    for f in &figs {
+        let head = f.svg.lines().next().unwrap_or_default();
+        assert!(head.starts_with("<svg width=\""), "{}: {head}", f.id);
+        let size: Vec<&str> = head.split('"').collect();
+        let (w, h) = (size[1], size[3]);
+        assert!(w.parse::<u32>().is_ok_and(|w| w > 0), "{}", f.id);
+        assert!(h.parse::<u32>().is_ok_and(|h| h > 0), "{}", f.id);
+        assert!(
+            head.contains(&format!("viewBox=\"0 0 {w} {h}\"")),
+            "{}",
+            f.id
+        );
+        assert!(f
+            .svg
+            .lines()
+            .nth(1)
+            .is_some_and(|l| l.starts_with("<title>")));
+        assert!(f.svg.trim_end().ends_with("</svg>"), "{}", f.id);
+        assert!(!f.svg.contains("NaN") && !f.svg.contains("inf"), "{}", f.id);
+    }
+}
