@@ -5,7 +5,8 @@ use std::path::Path;
 
 #[path = "common/plot_support.rs"]
 mod plot_support;
-use plot_support::{check_svg, exactcheck, TempDir};
+use exactcheck::plot::style::{hex, BLUE, INK, ORANGE, PURPLE};
+use plot_support::{check_svg, elements, exactcheck, find, polylines, TempDir};
 
 fn plot(args: &[&str], out: &Path) -> String {
     let mut all: Vec<&str> = vec!["plot"];
@@ -24,16 +25,35 @@ fn plot(args: &[&str], out: &Path) -> String {
     std::fs::read_to_string(out).expect("the SVG was written")
 }
 
-/// The polylines of the intersection curve (class `curve ...`) with a non-empty point list.
+/// The polylines of the intersection curve (branch colours, more than the 2 points of a legend
+/// line or a dash).
 fn curve_polylines(svg: &str) -> usize {
-    svg.match_indices("<polyline class=\"curve")
-        .filter(|(i, _)| {
-            let tag = &svg[*i..*i + svg[*i..].find('>').unwrap_or(0)];
-            tag.split("points=\"")
-                .nth(1)
-                .is_some_and(|p| p.split('"').next().is_some_and(|p| p.contains(',')))
+    [BLUE, ORANGE]
+        .iter()
+        .flat_map(|c| {
+            elements(svg)
+                .into_iter()
+                .filter(|e| e.name == "polyline" && e.attr("stroke") == Some(&hex(*c)))
+                .map(|e| e.points().len())
+                .collect::<Vec<_>>()
         })
+        .filter(|&n| n > 2)
         .count()
+}
+
+/// The circles filled with `colour` (markers and legend dots).
+fn filled_circles(svg: &str, colour: &str) -> usize {
+    find(&elements(svg), "circle", &[("fill", colour)]).len()
+}
+
+/// The circles with a `colour` rim and no fill (hollow markers and rings).
+fn rings(svg: &str, colour: &str) -> usize {
+    find(
+        &elements(svg),
+        "circle",
+        &[("fill", "none"), ("stroke", colour)],
+    )
+    .len()
 }
 
 #[test]
@@ -63,22 +83,48 @@ fn spaeth_examples_in_both_views() {
 fn tu_diagram_details() {
     let dir = TempDir::new("tu");
     // Example 1: two branches over the whole circle, every 10-degree sample real (37 with 360).
+    let ink = hex(INK);
     let e1 = plot(&["spaeth", "--example", "1"], &dir.path("e1.svg"));
     assert_eq!(curve_polylines(&e1), 2);
-    assert_eq!(e1.matches("class=\"dot\"").count(), 2 * 37 + 1); // + the legend's dot
-    assert!(!e1.contains("class=\"hollow\""));
+    assert_eq!(filled_circles(&e1, &ink), 2 * 37 + 1); // + the legend's dot
+    assert_eq!(rings(&e1, &ink), 0);
     assert!(e1.contains("real for every t"));
     assert!(e1.contains("Fig. 2"));
     // Example 2: one real t-interval, its two exact ends marked, the rational rotations stated.
     let e2 = plot(&["spaeth", "--example", "2"], &dir.path("e2.svg"));
     assert!(e2.contains("Fig. 3"));
     assert!(e2.contains("rational rotations"));
-    assert_eq!(e2.matches("class=\"end\"").count(), 2 + 1); // two ends + the legend
-    assert!(e2.contains("class=\"hollow\""));
+    // The exact ends: vertical ticks (2 points, same x) of the ink colour, two and the legend's.
+    let ends: Vec<Vec<(f64, f64)>> = find(
+        &elements(&e2),
+        "polyline",
+        &[("stroke", ink.as_str()), ("stroke-width", "2")],
+    )
+    .iter()
+    .map(|e| e.points())
+    .collect();
+    assert_eq!(ends.len(), 2 + 1, "{ends:?}");
+    assert!(ends.iter().all(|p| p.len() == 2 && p[0].0 == p[1].0));
+    assert!(rings(&e2, &ink) > 1);
+    // Each end is drawn at its exact angle: at the x of its label (24.64°, 151.81°), which is
+    // written 4 pixels right of the guide line.
+    for label in ["24.64°", "151.81°"] {
+        let all = elements(&e2);
+        let text = all
+            .iter()
+            .find(|e| e.name == "text" && e.text == label)
+            .unwrap_or_else(|| panic!("no label {label}"));
+        let x = text.num("x") - 4.0;
+        assert!(
+            ends.iter().any(|p| (p[0].0 - x).abs() <= 1.0),
+            "no end at {label} (x = {x}): {ends:?}"
+        );
+    }
     // Example 3: only hollow samples.
     let e3 = plot(&["spaeth", "--example", "3"], &dir.path("e3.svg"));
-    assert!(!e3.contains("class=\"dot\""));
-    assert_eq!(e3.matches("class=\"hollow\"").count(), 37 + 1);
+    assert_eq!(filled_circles(&e3, &ink), 0);
+    assert_eq!(rings(&e3, &ink), 37 + 1);
+    assert_eq!(polylines(&e3, &hex(BLUE), 2), Vec::<usize>::new());
 }
 
 #[test]
@@ -95,8 +141,25 @@ fn problem_files() {
     let svg = plot(&[p], &dir.path("touch.svg"));
     check_svg(&svg);
     assert!(svg.contains("touch &amp; go.json"), "the name is escaped");
-    assert!(svg.contains("class=\"tangent\""));
     assert!(svg.contains("touching at t = 0°"));
+    // The touching point: one diamond (and the legend's), on the guide at t = 0 (the left edge
+    // of the plot, where the 0° tick label is centred).
+    let all = elements(&svg);
+    let diamonds = find(&all, "polygon", &[("fill", hex(PURPLE).as_str())]);
+    assert_eq!(diamonds.len(), 1 + 1);
+    let zero = all
+        .iter()
+        .find(|e| e.name == "text" && e.text == "0°")
+        .expect("the 0° tick label");
+    let xs: Vec<f64> = diamonds[0].points().iter().map(|p| p.0).collect();
+    let centre = (xs.iter().copied().fold(f64::MAX, f64::min)
+        + xs.iter().copied().fold(f64::MIN, f64::max))
+        / 2.0;
+    assert!(
+        (centre - zero.num("x")).abs() <= 1.0,
+        "{centre} vs {}",
+        zero.num("x")
+    );
     check_svg(&plot(&[p, "--view", "3d"], &dir.path("touch3d.svg")));
     // Radians and float literals: drawn in f64, the exact line says why there is none or how
     // the radians were taken.

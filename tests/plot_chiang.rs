@@ -4,7 +4,8 @@
 
 #[path = "common/plot_support.rs"]
 mod plot_support;
-use plot_support::{check_svg, exactcheck, polyline_points, TempDir};
+use exactcheck::plot::style::{hex, GREEN, RED, SKY, WIRE, WIRE_BACK};
+use plot_support::{check_svg, elements, exactcheck, find, polylines, TempDir};
 
 #[test]
 fn example_4_figure_is_written_and_well_formed() {
@@ -23,12 +24,22 @@ fn example_4_figure_is_written_and_well_formed() {
     check_svg(&svg);
     // The plane, the surface on both sides of it, the exact curve (97 samples), the control
     // polygon (4 points) and its 4 labelled points with the weights.
-    assert_eq!(svg.matches("<polygon class=\"plane\"").count(), 1);
-    assert!(svg.matches("<polyline class=\"srf\"").count() >= 9);
-    assert!(svg.matches("<polyline class=\"srf-below\"").count() >= 9);
-    assert_eq!(polyline_points(&svg, "section"), 97);
-    assert_eq!(polyline_points(&svg, "cpoly"), 4);
-    assert_eq!(svg.matches("<circle class=\"cpt\"").count(), 4);
+    let all = elements(&svg);
+    assert_eq!(
+        find(&all, "polygon", &[("fill", hex(SKY).as_str())]).len(),
+        1
+    );
+    // 9 inner rulings and 7 inner s-curves reach above the plane (and the legend's line).
+    assert!(polylines(&svg, &hex(WIRE), 1).len() > 9);
+    // Below the plane: dashed, many short pieces.
+    assert!(polylines(&svg, &hex(WIRE_BACK), 1).len() >= 9 * 3);
+    // The section: one polyline of the 97 exact samples (the legend's line has 2 points).
+    assert_eq!(polylines(&svg, &hex(RED), 3), vec![97, 2]);
+    assert_eq!(polylines(&svg, &hex(GREEN), 1), vec![4, 2]);
+    assert_eq!(
+        find(&all, "circle", &[("fill", hex(GREEN).as_str())]).len(),
+        4
+    );
     for label in [
         "r0 (w0 = 1.414)",
         "r3 (w3 = 2.449)",

@@ -5,8 +5,10 @@
 
 #[path = "common/plot_support.rs"]
 mod plot_support;
+use exactcheck::plot::conics::FRAME;
+use exactcheck::plot::style::{hex, BLUE, ORANGE, PURPLE};
 use exactcheck::solve::{solve, Mode};
-use plot_support::{check_svg, exactcheck, TempDir};
+use plot_support::{check_svg, elements, exactcheck, Elem, TempDir};
 
 const TABLE1: [&str; 4] = ["[0,0,1]", "[1,1,3]", "[1,1,\"sqrt(2)\"]", "[1,1,0]"];
 
@@ -21,12 +23,37 @@ fn exact_poles(problem: &str) -> usize {
         .sum()
 }
 
-/// The panels' SVG text (each `<g class="panel">` up to its `</g>`).
-fn panels(svg: &str) -> Vec<&str> {
-    svg.split("<g class=\"panel\"")
-        .skip(1)
-        .map(|p| p.split("</g>").next().unwrap_or_default())
-        .collect()
+/// The panels: each frame (a rect stroked in the frame colour) with the elements whose
+/// representative point lies inside it, in document order.
+fn panels(svg: &str) -> Vec<Vec<Elem>> {
+    let all = elements(svg);
+    let frame = hex(FRAME);
+    let boxes: Vec<(f64, f64, f64, f64)> = all
+        .iter()
+        .filter(|e| e.name == "rect" && e.attr("stroke") == Some(frame.as_str()))
+        .map(|e| (e.num("x"), e.num("y"), e.num("width"), e.num("height")))
+        .collect();
+    let mut out: Vec<Vec<Elem>> = boxes.iter().map(|_| Vec::new()).collect();
+    for e in all {
+        if e.name == "svg" || e.name == "title" {
+            continue;
+        }
+        let (x, y) = e.at();
+        if let Some(k) = boxes
+            .iter()
+            .position(|b| x >= b.0 && x <= b.0 + b.2 && y >= b.1 && y <= b.1 + b.3)
+        {
+            out[k].push(e);
+        }
+    }
+    out
+}
+
+fn count(panel: &[Elem], name: &str, want: &[(&str, &str)]) -> usize {
+    panel
+        .iter()
+        .filter(|e| e.name == name && e.has(want))
+        .count()
 }
 
 fn table1_problem(normal: &str) -> String {
@@ -48,34 +75,30 @@ fn table1_figure_is_written_with_four_panels_and_the_exact_poles() {
     );
     let svg = std::fs::read_to_string(&file).expect("the SVG was written");
     check_svg(&svg);
-    assert_eq!(svg.matches("<g class=\"panel\"").count(), 4);
-    // Each panel: both pieces drawn, their control polygons, their finite control points
-    // (all 3 + 3 are finite in Table 1; a point outside a panel would not be drawn).
     let panels = panels(&svg);
+    assert_eq!(panels.len(), 4);
+    // Each panel: both pieces drawn (3 pixels wide), their control polygons (1 pixel), their
+    // finite control points (all 3 + 3 are finite in Table 1; a point outside a panel would
+    // not be drawn).
+    let (blue, orange, purple) = (hex(BLUE), hex(ORANGE), hex(PURPLE));
     for (panel, ty) in panels
         .iter()
         .zip(["circle", "ellipse", "parabola", "hyperbola"])
     {
+        let want = format!("{ty} (angle rule = weights)");
         assert!(
-            panel.contains(&format!(">{ty} (angle rule = weights)")),
+            panel.iter().any(|e| e.name == "text" && e.text == want),
             "{ty}"
         );
-        for class in ["sec-plus", "sec-minus", "cpoly-plus", "cpoly-minus"] {
-            assert!(
-                panel.contains(&format!("<polyline class=\"{class}\"")),
-                "{ty}: {class}"
-            );
+        for c in [&blue, &orange] {
+            for w in ["3", "1"] {
+                assert!(
+                    count(panel, "polyline", &[("stroke", c), ("stroke-width", w)]) > 0,
+                    "{ty}: {c} width {w}"
+                );
+            }
+            assert_eq!(count(panel, "circle", &[("fill", c)]), 3, "{ty}: {c}");
         }
-        assert_eq!(
-            panel.matches("<circle class=\"cpt-plus\"").count(),
-            3,
-            "{ty}"
-        );
-        assert_eq!(
-            panel.matches("<circle class=\"cpt-minus\"").count(),
-            3,
-            "{ty}"
-        );
     }
     // One marker per exact pole: none for the circle and the ellipse, the parabola's double
     // pole t = 1/2, the hyperbola's two.
@@ -85,8 +108,10 @@ fn table1_figure_is_written_with_four_panels_and_the_exact_poles() {
         .collect();
     assert_eq!(per_panel, vec![0, 0, 1, 2]);
     for (panel, want) in panels.iter().zip(&per_panel) {
-        assert_eq!(panel.matches("<circle class=\"pole\"").count(), *want);
-        assert_eq!(panel.matches("class=\"asym\"").count(), *want);
+        let rings = count(panel, "circle", &[("fill", "none"), ("stroke", &purple)]);
+        assert_eq!(rings, *want);
+        let asymptotes = count(panel, "polyline", &[("stroke", &purple)]);
+        assert_eq!(asymptotes, *want);
     }
     // The hyperbola's poles at 1 - 1/sqrt 2 and 1/sqrt 2, the parabola's at 1/2.
     for label in ["t ≈ 0.2929", "t ≈ 0.7071", "t ≈ 0.5"] {
@@ -121,10 +146,18 @@ fn a_conic_problem_file_is_one_panel() {
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let svg = String::from_utf8(o.stdout).unwrap();
     check_svg(&svg);
-    assert_eq!(svg.matches("<g class=\"panel\"").count(), 1);
-    assert!(svg.contains(">hyperbola (angle rule = weights)"));
+    let panels = panels(&svg);
+    assert_eq!(panels.len(), 1);
+    assert!(panels[0]
+        .iter()
+        .any(|e| e.name == "text" && e.text == "hyperbola (angle rule = weights)"));
+    let purple = hex(PURPLE);
     assert_eq!(
-        svg.matches("<circle class=\"pole\"").count(),
+        count(
+            &panels[0],
+            "circle",
+            &[("fill", "none"), ("stroke", &purple)]
+        ),
         exact_poles(text)
     );
     // A plane through the apex and a zero normal are one-line errors (exit 2).

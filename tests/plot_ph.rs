@@ -5,9 +5,10 @@
 
 #[path = "common/plot_support.rs"]
 mod plot_support;
+use exactcheck::plot::style::{hex, CUSP, GREEN, INK, OFFSETS};
 use exactcheck_core::ph::chiang_example;
 use exactcheck_exact::Rational;
-use plot_support::{check_svg, exactcheck, polyline_points, TempDir};
+use plot_support::{check_svg, elements, exactcheck, find, polylines, TempDir};
 
 fn exact_cusp_count(radii: &[&str]) -> usize {
     let c = chiang_example::<Rational>();
@@ -37,16 +38,13 @@ fn ph_figure_is_written_and_well_formed() {
     let svg = std::fs::read_to_string(&file).expect("the SVG was written");
     check_svg(&svg);
     // The curve (193 exact samples), the control polygon (4 points), three offsets.
-    assert_eq!(polyline_points(&svg, "base"), 193);
-    assert_eq!(polyline_points(&svg, "cpoly"), 4);
-    for class in ["off0", "off1", "off2"] {
-        assert_eq!(polyline_points(&svg, class), 193, "{class}");
-        assert_eq!(
-            svg.matches(&format!("<polyline class=\"{class}\"")).count(),
-            1
-        );
+    // (Each list ends with the legend's 2-point line.)
+    assert_eq!(polylines(&svg, &hex(INK), 3), vec![193, 2]);
+    assert_eq!(polylines(&svg, &hex(GREEN), 1), vec![4, 2]);
+    for c in &OFFSETS[..3] {
+        assert_eq!(polylines(&svg, &hex(*c), 2), vec![193, 2], "{}", hex(*c));
     }
-    assert!(!svg.contains("<polyline class=\"off3\""));
+    assert!(polylines(&svg, &hex(OFFSETS[3]), 2).is_empty());
     for label in [
         "r = 3",
         "r = 12.6",
@@ -60,7 +58,7 @@ fn ph_figure_is_written_and_well_formed() {
     let cusps = exact_cusp_count(&["3", "63/5", "15"]);
     assert_eq!(cusps, 2);
     assert_eq!(
-        svg.matches("<circle class=\"cusp\"").count(),
+        find(&elements(&svg), "circle", &[("fill", hex(CUSP).as_str())]).len(),
         cusps + 1,
         "markers and the legend dot"
     );
@@ -91,8 +89,11 @@ fn a_ph_offset_problem_file_is_drawn() {
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let svg = String::from_utf8(o.stdout).expect("utf-8 SVG");
     check_svg(&svg);
-    assert_eq!(polyline_points(&svg, "cpoly"), 6, "a quintic");
-    assert!(svg.contains("<polyline class=\"off1\""), "two distances");
+    assert_eq!(polylines(&svg, &hex(GREEN), 1)[0], 6, "a quintic");
+    assert!(
+        polylines(&svg, &hex(OFFSETS[1]), 2).len() > 1,
+        "two distances"
+    );
     // A singular base: drawn, its offsets broken at the pole, no cusps computed.
     let o = exactcheck(&["plot", &format!("{golden}ph_singular.json"), "-o", "-"]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));

@@ -14,38 +14,31 @@
 //!   1/((1-t) sqrt 2 + t sqrt 6)` is the ruling parameter of the section, so the patch covers
 //!   the section with room on both sides of the plane.
 //!
-//! # Drawing order
-//! An orthographic view from above the plane (elevation 28°): the parts of the surface below
-//! the plane are drawn first (lighter), then the translucent plane, then the parts above it, then
-//! the curve and the control polygon, which lie in the plane. Surface polylines are split where
+//! # Drawing
+//! A `plotters` 3D chart (`build_cartesian_3d`, world `z` as its vertical axis, one cube so the
+//! scales are equal) seen from above the plane. `plotters` draws in the order given, with no
+//! hidden-line removal, and none is needed here: the parts of the surface below the plane are
+//! drawn first (lighter, dashed), then the translucent plane, then the parts above it, then the
+//! curve and the control polygon, which lie in the plane. Surface polylines are split where
 //! they cross `z = 0` (at the linearly interpolated crossing), so nothing needs a depth sort.
 
-use super::figure::{circle, header, legend, Sym};
-use super::svg::{short, Points, Svg};
-use super::view3d::Camera;
+use super::spaeth::cube;
+use super::style::*;
 use crate::Error;
 use exactcheck_core::ruled::{chiang_example4, RuledSurface};
 use exactcheck_core::Vec3;
 use exactcheck_exact::{Radical, Rational};
+use plotters::coord::CoordTranslate;
+use plotters::prelude::{
+    ChartBuilder, Color, DashedLineSeries, EmptyElement, LineSeries, Polygon, RGBColor, Text,
+};
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-/// Azimuth and elevation of the view direction (degrees).
-const AZIMUTH: f64 = -58.0;
-const ELEVATION: f64 = 28.0;
+/// Yaw and pitch of `plotters`' 3D projection (radians): from above the plane.
+const YAW: f64 = 0.6;
+const PITCH: f64 = 0.45;
 /// Samples of the exact curve (`t = k / CURVE_STEPS`).
 const CURVE_STEPS: i64 = 96;
-
-const STYLE: &str = "
-.srf{fill:none;stroke:#6d6d6d;stroke-width:0.9}
-.srf-below{fill:none;stroke:#b5b5b5;stroke-width:0.8;stroke-dasharray:4 3}
-.srf-edge{fill:none;stroke:#333;stroke-width:1.4}
-.srf-edge-below{fill:none;stroke:#9a9a9a;stroke-width:1.2;stroke-dasharray:4 3}
-.plane{fill:#bcd7f0;fill-opacity:0.45;stroke:#2f6da3;stroke-width:1.2}
-.plane-key{stroke:#bcd7f0;stroke-width:10}
-.section{fill:none;stroke:#c62828;stroke-width:3;stroke-linejoin:round;stroke-linecap:round}
-.cpoly{fill:none;stroke:#1b5e20;stroke-width:1.4;stroke-dasharray:6 4}
-.cpt{fill:#1b5e20;stroke:#fff;stroke-width:1}
-.clabel{font-size:12px;fill:#1b5e20}
-";
 
 /// The exact data of the figure: the section's weights (as radicals), control points and
 /// sampled curve (converted to f64 after the exact computation).
@@ -141,20 +134,12 @@ pub fn figure(example: Option<u32>) -> Result<String, Error> {
 fn example4() -> String {
     let exact = exact_section();
     let (surface, _) = chiang_example4(2f64.sqrt(), 6f64.sqrt());
-    let (width, height) = (1000.0, 700.0);
     let title = "Chiang Example 4: ruled surface ∩ plane z = 0";
-    let mut svg = Svg::new(width, height, title);
     let lines = [
         "S(s,t) = B(t) + s V(t); B: p0 = (0,0,−1), p1 = (1,1,−1), p2 = (0,2,−1); V: q0 = (−1,1,√2), q1 = (−1,−1,√6)".to_string(),
         "section: Chiang's Theorem 1, a rational cubic, computed exactly in Q(√2, √6); surface patch in f64".to_string(),
-        format!("orthographic view, azimuth {AZIMUTH}°, elevation {ELEVATION}°"),
+        "plotters 3D chart (z vertical); below the plane, the plane, above it, then the curve in it".to_string(),
     ];
-    let top = header(&mut svg, title, &lines) + 4.0;
-    svg.open("style", &[]);
-    svg.buf.push_str(STYLE);
-    svg.close();
-    let (x0, y0, w, h) = (20.0, top, 690.0, height - top - 16.0);
-    let cam = Camera::new(AZIMUTH, ELEVATION);
 
     // The patch: t in [0, 1], s in [0, s_hi].
     let s_max = (0..=100)
@@ -185,7 +170,6 @@ fn example4() -> String {
             split_at_plane(&pts, &mut below, &mut above);
         }
     }
-
     // The plane: a rectangle around the patch's (and the polygon's) x-y extent.
     let control: Vec<Vec3<f64>> = exact
         .points
@@ -197,13 +181,14 @@ fn example4() -> String {
             )
         })
         .collect();
-    let all3: Vec<&Vec3<f64>> = below
+    let all3: Vec<Vec3<f64>> = below
         .iter()
         .chain(&above)
         .chain(&edge_below)
         .chain(&edge_above)
         .flatten()
         .chain(&control)
+        .cloned()
         .collect();
     let (mut xl, mut xh, mut yl, mut yh) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
     for p in &all3 {
@@ -219,97 +204,119 @@ fn example4() -> String {
         Vec3::new(xh + m, yh + m, 0.0),
         Vec3::new(xl - m, yh + m, 0.0),
     ];
+    let mut box_pts = all3.clone();
+    box_pts.extend(rect.iter().cloned());
+    let (lo, hi) = cube(&box_pts);
 
-    // Fit everything to the drawing area.
-    let mut proj: Vec<(f64, f64)> = all3.iter().map(|p| cam.project(p)).collect();
-    proj.extend(rect.iter().map(|p| cam.project(p)));
-    let (bx0, bx1) = proj
-        .iter()
-        .fold((f64::MAX, f64::MIN), |(a, b), p| (a.min(p.0), b.max(p.0)));
-    let (by0, by1) = proj
-        .iter()
-        .fold((f64::MAX, f64::MIN), |(a, b), p| (a.min(p.1), b.max(p.1)));
-    let scale = 0.94 * (w / (bx1 - bx0)).min(h / (by1 - by0));
-    let (cx, cy) = (0.5 * (bx0 + bx1), 0.5 * (by0 + by1));
-    let screen = |p: &Vec3<f64>| {
-        let (x, y) = cam.project(p);
-        (
-            x0 + w / 2.0 + (x - cx) * scale,
-            y0 + h / 2.0 - (y - cy) * scale,
-        )
-    };
-    let poly = |svg: &mut Svg, pts: &[Vec3<f64>], class: &str| {
-        let s: Vec<(f64, f64)> = pts.iter().map(screen).collect();
-        svg.leaf("polyline", &[("class", &class), ("points", &Points(&s))]);
-    };
-    for r in &below {
-        poly(&mut svg, r, "srf-below");
-    }
-    for r in &edge_below {
-        poly(&mut svg, r, "srf-edge-below");
-    }
-    let rect_s: Vec<(f64, f64)> = rect.iter().map(screen).collect();
-    svg.leaf(
-        "polygon",
-        &[("class", &"plane"), ("points", &Points(&rect_s))],
-    );
-    for r in &above {
-        poly(&mut svg, r, "srf");
-    }
-    for r in &edge_above {
-        poly(&mut svg, r, "srf-edge");
-    }
-    poly(&mut svg, &control, "cpoly");
-    poly(&mut svg, &exact.curve, "section");
-    // Labels pushed away from the polygon's centre (screen space), so they do not overlap it.
-    let cs: Vec<(f64, f64)> = control.iter().map(screen).collect();
-    let n = cs.len() as f64;
-    let (mx, my) = cs
-        .iter()
-        .fold((0.0, 0.0), |(a, b), p| (a + p.0 / n, b + p.1 / n));
-    for (k, ((x, y), wk)) in cs.iter().zip(&exact.weights).enumerate() {
-        circle(&mut svg, *x, *y, 4.2, "cpt");
-        let (dx, dy) = (x - mx, y - my);
-        let len = dx.hypot(dy).max(1e-9);
-        let (lx, ly) = (x + 16.0 * dx / len, y + 16.0 * dy / len + 4.0);
-        let anchor = if dx < 0.0 { "end" } else { "start" };
-        let label = format!("r{k} (w{k} = {})", short(wk.to_f64(), 3));
-        svg.text(
-            lx,
-            ly,
-            &label,
-            &[("class", &"clabel"), ("text-anchor", &anchor)],
-        );
-    }
+    render((1000, 720), title, |root| {
+        let body = header(root, title, &lines)?;
+        let (plot, side) = body.split_horizontally(700);
+        let mut chart = ChartBuilder::on(&plot).margin(14).build_cartesian_3d(
+            lo.0..hi.0,
+            lo.1..hi.1,
+            lo.2..hi.2,
+        )?;
+        chart.with_projection(|mut p| {
+            p.yaw = YAW;
+            p.pitch = PITCH;
+            p.scale = 0.85;
+            p.into_matrix()
+        });
+        chart
+            .configure_axes()
+            .axis_panel_style(PANEL.filled())
+            .bold_grid_style(RGBColor(0xdd, 0xdd, 0xdd))
+            .light_grid_style(RGBColor(0xee, 0xee, 0xee))
+            .max_light_lines(2)
+            .label_style(font(12.0, GREY_TEXT))
+            .draw()?;
+        let xyz = |p: &Vec3<f64>| (p.x, p.z, p.y);
+        for r in &below {
+            chart.draw_series(DashedLineSeries::new(
+                r.iter().map(xyz),
+                4,
+                3,
+                WIRE_BACK.stroke_width(1),
+            ))?;
+        }
+        for r in &edge_below {
+            chart.draw_series(DashedLineSeries::new(
+                r.iter().map(xyz),
+                4,
+                3,
+                GUIDE.stroke_width(2),
+            ))?;
+        }
+        chart.draw_series(std::iter::once(Polygon::new(
+            rect.iter().map(xyz).collect::<Vec<_>>(),
+            SKY.mix(0.5).filled(),
+        )))?;
+        for r in &above {
+            chart.draw_series(LineSeries::new(r.iter().map(xyz), WIRE.stroke_width(1)))?;
+        }
+        for r in &edge_above {
+            chart.draw_series(LineSeries::new(r.iter().map(xyz), INK.stroke_width(2)))?;
+        }
+        chart.draw_series(LineSeries::new(
+            control.iter().map(xyz),
+            GREEN.stroke_width(1),
+        ))?;
+        chart.draw_series(LineSeries::new(
+            exact.curve.iter().map(xyz),
+            RED.stroke_width(3),
+        ))?;
+        // Labels pushed away from the polygon's centre (screen space), so they do not overlap it.
+        let coord = chart.as_coord_spec();
+        let cs: Vec<(i32, i32)> = control.iter().map(|p| coord.translate(&xyz(p))).collect();
+        let n = cs.len() as f64;
+        let (mx, my) = cs.iter().fold((0.0, 0.0), |(a, b), p| {
+            (a + f64::from(p.0) / n, b + f64::from(p.1) / n)
+        });
+        for (k, ((p, (x, y)), wk)) in control.iter().zip(&cs).zip(&exact.weights).enumerate() {
+            chart.plotting_area().draw(&dot(xyz(p), 5, GREEN))?;
+            let (dx, dy) = (f64::from(*x) - mx, f64::from(*y) - my);
+            let len = dx.hypot(dy).max(1e-9);
+            let (lx, ly) = (18.0 * dx / len, 18.0 * dy / len);
+            let anchor = if dx < 0.0 { HPos::Right } else { HPos::Left };
+            let label = format!("r{k} (w{k} = {})", short(wk.to_f64(), 3));
+            chart.plotting_area().draw(
+                &(EmptyElement::at(xyz(p))
+                    + Text::new(
+                        label,
+                        (lx.round() as i32, ly.round() as i32),
+                        font(14.0, GREEN).pos(Pos::new(anchor, VPos::Center)),
+                    )),
+            )?;
+        }
 
-    // Legend and the exact values.
-    let rows: Vec<(String, Sym)> = vec![
-        ("surface above z = 0".into(), Sym::Line("srf")),
-        ("surface below z = 0".into(), Sym::Line("srf-below")),
-        ("plane z = 0".into(), Sym::Line("plane-key")),
-        ("section curve (exact)".into(), Sym::Line("section")),
-        ("control polygon r0..r3".into(), Sym::Line("cpoly")),
-    ];
-    let mut notes = vec!["exact control points r_k (decimals):".to_string()];
-    for (k, p) in control.iter().enumerate() {
+        // Legend and the exact values.
+        let rows: Vec<(String, Sym)> = vec![
+            ("surface above z = 0".into(), Sym::Line(WIRE, 1)),
+            ("surface below z = 0".into(), Sym::Dashed(WIRE_BACK, 1)),
+            ("plane z = 0".into(), Sym::Band(SKY)),
+            ("section curve (exact)".into(), Sym::Line(RED, 3)),
+            ("control polygon r0..r3".into(), Sym::Line(GREEN, 1)),
+        ];
+        let mut notes = vec!["exact control points r_k (decimals):".to_string()];
+        for (k, p) in control.iter().enumerate() {
+            notes.push(format!(
+                "  r{k} = ({}, {}, {})",
+                short(p.x, 4),
+                short(p.y, 4),
+                short(p.z, 4)
+            ));
+        }
+        notes.push("weights w_k (exact, labels rounded):".to_string());
+        for (k, wk) in exact.weights.iter().enumerate() {
+            notes.push(format!("  w{k} = {wk} ≈ {}", short(wk.to_f64(), 4)));
+        }
+        notes.push(format!("patch: t in [0, 1], s in [0, {}]", short(s_hi, 3)));
         notes.push(format!(
-            "  r{k} = ({}, {}, {})",
-            short(p.x, 4),
-            short(p.y, 4),
-            short(p.z, 4)
+            "rulings t = k/10; curve: {} exact samples",
+            CURVE_STEPS + 1
         ));
-    }
-    notes.push("weights w_k (exact, labels rounded):".to_string());
-    for (k, wk) in exact.weights.iter().enumerate() {
-        notes.push(format!("  w{k} = {wk} ≈ {}", short(wk.to_f64(), 4)));
-    }
-    notes.push(format!("patch: t in [0, 1], s in [0, {}]", short(s_hi, 3)));
-    notes.push(format!(
-        "rulings t = k/10; curve: {} exact samples",
-        CURVE_STEPS + 1
-    ));
-    legend(&mut svg, x0 + w + 40.0, y0 + 10.0, &rows, &notes);
-    svg.finish()
+        legend(&side, &rows, &notes)
+    })
 }
 
 #[cfg(test)]

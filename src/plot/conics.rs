@@ -24,41 +24,34 @@
 //! centroid of the piece's finite control points in the direction in which the curve escapes,
 //! `sign(W near t0) X(t0)`.
 //!
-//! The SVG is written with the workspace's own small writer ([`Svg`], hand-written for the
-//! reasons given in `svg.rs`); the segment clipping (Liang–Barsky) is a dozen lines written
-//! here rather than a geometry dependency.
+//! Each panel is a `plotters` 2D chart on its own area (a grid of areas under the caption, the
+//! legend row under them), its ranges chosen so both axes have one scale. The curves, control
+//! polygons and asymptotes are clipped to the panel here (Liang–Barsky, a dozen lines rather
+//! than a geometry dependency): `plotters`' SVG backend writes every point it is given, and a
+//! curve through a pole has points far outside.
 
-use super::figure::{circle, header};
-use super::svg::{short, Points, Svg, N};
+use super::style::*;
 use crate::solve::conic::{compute, exact_section, Computed};
 use crate::Error;
 use exactcheck_core::conic::{table1_planes, SectionType};
 use exactcheck_core::Vec3;
 use exactcheck_exact::{Radical, Rational};
+use plotters::coord::types::RangedCoordf64;
+use plotters::prelude::{
+    Cartesian2d, ChartBuilder, ChartContext, Color, EmptyElement, LineSeries, RGBColor, Rectangle,
+    SVGBackend, ShapeStyle, Text,
+};
 
-const STYLE: &str = "
-.panel-frame{fill:#fcfcfc;stroke:#888;stroke-width:1}
-.ptitle{font-size:15px;font-weight:bold;fill:#222}
-.psub{font-size:11.5px;fill:#444}
-.sec-plus{fill:none;stroke:#1f5fbf;stroke-width:2.6;stroke-linejoin:round;stroke-linecap:round}
-.sec-minus{fill:none;stroke:#e0620d;stroke-width:2.6;stroke-linejoin:round;stroke-linecap:round}
-.cpoly-plus{fill:none;stroke:#1f5fbf;stroke-width:1.1;stroke-dasharray:6 4}
-.cpoly-minus{fill:none;stroke:#e0620d;stroke-width:1.1;stroke-dasharray:2 3}
-.cpt-plus{fill:#1f5fbf;stroke:#fff;stroke-width:1}
-.cpt-minus{fill:#e0620d;stroke:#fff;stroke-width:1}
-.asym{stroke:#8e24aa;stroke-width:1.1;stroke-dasharray:7 3 2 3}
-.pole{fill:#fff;stroke:#8e24aa;stroke-width:2}
-.polelabel{font-size:11px;fill:#8e24aa}
-.axes2{stroke:#ccc;stroke-width:0.8}
-";
+/// The panels' frames (the tests find the panels by it).
+pub const FRAME: RGBColor = RGBColor(0x88, 0x88, 0x88);
 
 /// Panel size in the four-panel figure, and the gap between panels.
-const PANEL_W: f64 = 470.0;
-const PANEL_H: f64 = 420.0;
+const PANEL_W: u32 = 470;
+const PANEL_H: u32 = 420;
 /// Panel size of a one-panel figure.
-const SINGLE_W: f64 = 920.0;
-const SINGLE_H: f64 = 640.0;
-const GAP: f64 = 20.0;
+const SINGLE_W: u32 = 920;
+const SINGLE_H: u32 = 640;
+const GAP: u32 = 20;
 /// Uniform samples per piece.
 const SAMPLES: usize = 600;
 
@@ -82,7 +75,7 @@ fn f(x: &Radical) -> f64 {
     x.to_f64()
 }
 
-fn dot(a: &[f64; 3], b: &[f64; 3]) -> f64 {
+fn dot3(a: &[f64; 3], b: &[f64; 3]) -> f64 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
@@ -95,7 +88,7 @@ fn cross(a: &[f64; 3], b: &[f64; 3]) -> [f64; 3] {
 }
 
 fn unit(a: [f64; 3]) -> [f64; 3] {
-    let n = dot(&a, &a).sqrt();
+    let n = dot3(&a, &a).sqrt();
     [a[0] / n, a[1] / n, a[2] / n]
 }
 
@@ -107,7 +100,7 @@ fn vec_f(v: &Vec3<Radical>) -> [f64; 3] {
 fn panel_data(c: &Computed<Radical>, title: String, sub: [String; 2]) -> PanelData {
     let n = vec_f(&c.plane.normal);
     let d = f(&c.plane.d);
-    let nn = dot(&n, &n);
+    let nn = dot3(&n, &n);
     let origin = [-d * n[0] / nn, -d * n[1] / nn, -d * n[2] / nn];
     let horizontal =
         c.plane.normal.x == Radical::default() && c.plane.normal.y == Radical::default();
@@ -150,12 +143,12 @@ impl PanelData {
             p[1] - self.frame[0][1],
             p[2] - self.frame[0][2],
         ];
-        (dot(&q, &self.frame[1]), dot(&q, &self.frame[2]))
+        (dot3(&q, &self.frame[1]), dot3(&q, &self.frame[2]))
     }
 
     /// Plane coordinates of a 3D direction.
     fn dir2(&self, p: &[f64; 3]) -> (f64, f64) {
-        (dot(p, &self.frame[1]), dot(p, &self.frame[2]))
+        (dot3(p, &self.frame[1]), dot3(p, &self.frame[2]))
     }
 }
 
@@ -345,34 +338,41 @@ fn view_box(data: &PanelData, curves: &[Vec<Vec<(f64, f64)>>; 2], aspect: f64) -
     (x0, x1, y0, y1)
 }
 
-/// Draws one panel with its top-left corner at `(px, py)`; returns the number of pole markers.
-fn panel(svg: &mut Svg, data: &PanelData, (px, py): (f64, f64), (pw, ph): (f64, f64)) -> usize {
-    svg.open("g", &[("class", &"panel")]);
-    svg.leaf(
-        "rect",
-        &[
-            ("class", &"panel-frame"),
-            ("x", &N(px)),
-            ("y", &N(py)),
-            ("width", &N(pw)),
-            ("height", &N(ph)),
-        ],
-    );
-    svg.text(px + 12.0, py + 22.0, &data.title, &[("class", &"ptitle")]);
-    svg.text(px + 12.0, py + 40.0, &data.sub[0], &[("class", &"psub")]);
-    svg.text(px + 12.0, py + 56.0, &data.sub[1], &[("class", &"psub")]);
-    let (ax, ay, aw, ah) = (px + 10.0, py + 66.0, pw - 20.0, ph - 76.0);
+/// Draws one panel on `area`; returns the number of pole markers.
+fn panel(area: &Area<'_>, data: &PanelData) -> Result<usize, DrawErr> {
+    let (pw, ph) = area.dim_in_pixel();
+    let (pw, ph) = (pw as i32, ph as i32);
+    area.draw(&Rectangle::new(
+        [(0, 0), (pw - 1, ph - 1)],
+        RGBColor(0xfc, 0xfc, 0xfc).filled(),
+    ))?;
+    area.draw(&Rectangle::new(
+        [(0, 0), (pw - 1, ph - 1)],
+        FRAME.stroke_width(1),
+    ))?;
+    text(area, &data.title, (12, 8), &bold(18.0, INK))?;
+    text(area, &data.sub[0], (12, 30), &font(14.0, GREY_TEXT))?;
+    text(area, &data.sub[1], (12, 47), &font(14.0, GREY_TEXT))?;
+    let inner = area.margin(68, 10, 10, 10);
+    let (aw, ah) = inner.dim_in_pixel();
     let curves = curves(data);
-    let bx = view_box(data, &curves, aw / ah);
-    let scale = aw / (bx.1 - bx.0);
-    let screen = |p: (f64, f64)| (ax + (p.0 - bx.0) * scale, ay + (bx.3 - p.1) * scale);
+    let bx = view_box(data, &curves, f64::from(aw) / f64::from(ah));
+    let scale = f64::from(aw) / (bx.1 - bx.0);
+    let mut chart = ChartBuilder::on(&inner).build_cartesian_2d(bx.0..bx.1, bx.2..bx.3)?;
+    let line = |chart: &mut Chart<'_, '_>, pts: Vec<(f64, f64)>, style: ShapeStyle| {
+        chart.draw_series(LineSeries::new(pts, style)).map(|_| ())
+    };
     // The plane's axes through the foot of the perpendicular from the apex.
     for seg in [((bx.0, 0.0), (bx.1, 0.0)), ((0.0, bx.2), (0.0, bx.3))] {
         if let Some((a, b)) = clip(seg.0, seg.1, bx) {
-            svg.line(screen(a), screen(b), &[("class", &"axes2")]);
+            line(
+                &mut chart,
+                vec![a, b],
+                RGBColor(0xcc, 0xcc, 0xcc).stroke_width(1),
+            )?;
         }
     }
-    let class = ["plus", "minus"];
+    let colour = [BLUE, ORANGE];
     let mut markers = 0;
     for k in 0..2 {
         let piece = &data.pieces[k];
@@ -397,39 +397,25 @@ fn panel(svg: &mut Svg, data: &PanelData, (px, py): (f64, f64), (pw, ph): (f64, 
         }
         for seg in poly {
             for run in clip_polyline(&seg, bx) {
-                let s: Vec<(f64, f64)> = run.into_iter().map(screen).collect();
-                svg.leaf(
-                    "polyline",
-                    &[
-                        ("class", &format!("cpoly-{}", class[k])),
-                        ("points", &Points(&s)),
-                    ],
-                );
+                line(&mut chart, run, colour[k].stroke_width(1))?;
             }
         }
         for run in &curves[k] {
             for clipped in clip_polyline(run, bx) {
-                let s: Vec<(f64, f64)> = clipped.into_iter().map(screen).collect();
-                svg.leaf(
-                    "polyline",
-                    &[
-                        ("class", &format!("sec-{}", class[k])),
-                        ("points", &Points(&s)),
-                    ],
-                );
+                line(&mut chart, clipped, colour[k].stroke_width(3))?;
             }
         }
         for i in 0..3 {
             if let Some(p) = pt(i) {
                 if p.0 >= bx.0 && p.0 <= bx.1 && p.1 >= bx.2 && p.1 <= bx.3 {
-                    let (x, y) = screen(p);
-                    circle(svg, x, y, 4.0, &format!("cpt-{}", class[k]));
+                    chart.plotting_area().draw(&dot(p, 5, colour[k]))?;
                 }
             }
         }
     }
     // The poles.
     let centre = ((bx.0 + bx.1) / 2.0, (bx.2 + bx.3) / 2.0);
+    let inset = 8.0 / scale;
     for k in 0..2 {
         let piece = &data.pieces[k];
         for &(t0, mult) in &piece.poles {
@@ -447,7 +433,7 @@ fn panel(svg: &mut Svg, data: &PanelData, (px, py): (f64, f64), (pw, ph): (f64, 
                 );
                 match clip(p, q, bx) {
                     Some((p, q)) => {
-                        svg.line(screen(p), screen(q), &[("class", &"asym")]);
+                        line(&mut chart, vec![p, q], PURPLE.stroke_width(1))?;
                         q
                     }
                     None => exit_point(centre, dir, bx),
@@ -478,94 +464,69 @@ fn panel(svg: &mut Svg, data: &PanelData, (px, py): (f64, f64), (pw, ph): (f64, 
                     ((c.0 / n).clamp(bx.0, bx.1), (c.1 / n).clamp(bx.2, bx.3))
                 };
                 let q = exit_point(anchor, d, bx);
-                svg.line(screen(anchor), screen(q), &[("class", &"asym")]);
+                line(&mut chart, vec![anchor, q], PURPLE.stroke_width(1))?;
                 q
             };
-            let (x, y) = screen(tip);
-            let (x, y) = (
-                x.clamp(ax + 8.0, ax + aw - 8.0),
-                y.clamp(ay + 8.0, ay + ah - 8.0),
+            let tip = (
+                tip.0.clamp(bx.0 + inset, bx.1 - inset),
+                tip.1.clamp(bx.2 + inset, bx.3 - inset),
             );
-            circle(svg, x, y, 6.0, "pole");
+            chart.plotting_area().draw(&ring(tip, 6, PURPLE))?;
             let label = format!("C{}(t) = ∞ at t ≈ {}", ["+", "−"][k], short(t0, 4));
-            let lx = if x > ax + aw / 2.0 {
-                x - 150.0
-            } else {
-                x + 10.0
-            };
-            let ly = if y < ay + 20.0 { y + 18.0 } else { y - 9.0 };
-            svg.text(lx, ly, &label, &[("class", &"polelabel")]);
+            let dx = if tip.0 > centre.0 { -170 } else { 10 };
+            let dy = if tip.1 > bx.3 - 3.0 * inset { 10 } else { -24 };
+            chart
+                .plotting_area()
+                .draw(&(EmptyElement::at(tip) + Text::new(label, (dx, dy), font(13.5, PURPLE))))?;
             markers += 1;
         }
     }
-    svg.close();
-    markers
+    Ok(markers)
 }
 
-fn legend_row(svg: &mut Svg, x: f64, y: f64, width: f64) {
-    let rows: [(&str, &str, bool); 6] = [
-        ("sec-plus", "C+ (quarter cone V+)", false),
-        ("sec-minus", "C− (three-quarter cone V−)", false),
-        ("cpoly-plus", "control polygon of C+", false),
-        ("cpoly-minus", "control polygon of C−", false),
-        ("asym", "asymptote / escape direction", false),
-        ("pole key", "pole (weight = 0)", true),
-    ];
-    let (mut cx, mut y) = (x, y);
-    for (class, label, dot) in rows {
-        let step = 30.0 + 7.0 * label.chars().count() as f64 + 18.0;
-        if cx + step > width && cx > x {
-            cx = x;
-            y += 22.0;
-        }
-        if dot {
-            circle(svg, cx + 12.0, y, 6.0, class);
-        } else {
-            svg.line((cx, y), (cx + 24.0, y), &[("class", &class)]);
-        }
-        svg.text(cx + 30.0, y + 4.0, label, &[("class", &"legend")]);
-        cx += step;
-    }
-}
+/// A panel's chart.
+type Chart<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
 
-/// Draws panels in a grid of `cols` columns under a header; returns the SVG and the number of
-/// pole markers.
+/// Draws panels in a grid of `cols` columns under a header, with a legend row under them;
+/// returns the SVG and the number of pole markers.
 fn draw(panels: &[PanelData], cols: usize, title: &str, lines: &[String]) -> (String, usize) {
-    let rows = panels.len().div_ceil(cols);
+    let rows = panels.len().div_ceil(cols) as u32;
     let (pw, ph) = if panels.len() == 1 {
         (SINGLE_W, SINGLE_H)
     } else {
         (PANEL_W, PANEL_H)
     };
-    let width = GAP + cols as f64 * (pw + GAP);
-    let top_guess = 34.0 + 18.0 * lines.len() as f64 + 14.0;
-    let height = top_guess + rows as f64 * (ph + GAP) + 62.0;
-    let mut svg = Svg::new(width, height, title);
-    let top = header(&mut svg, title, lines);
-    svg.open("style", &[]);
-    svg.buf.push_str(STYLE);
-    svg.close();
+    let width = GAP + cols as u32 * (pw + GAP);
+    let top = 46 + 18 * lines.len() as u32 + 10;
+    let height = top + rows * (ph + GAP) + 70;
     let mut markers = 0;
-    for (i, p) in panels.iter().enumerate() {
-        let (c, r) = (i % cols, i / cols);
-        markers += panel(
-            &mut svg,
-            p,
-            (GAP + c as f64 * (pw + GAP), top + r as f64 * (ph + GAP)),
-            (pw, ph),
-        );
-    }
-    legend_row(
-        &mut svg,
-        GAP + 4.0,
-        top + rows as f64 * (ph + GAP) + 12.0,
-        width,
-    );
-    (svg.finish(), markers)
+    let svg = render((width, height), title, |root| {
+        let body = header(root, title, lines)?;
+        for (i, p) in panels.iter().enumerate() {
+            let (c, r) = ((i % cols) as u32, (i / cols) as u32);
+            let (x, y) = (GAP + c * (pw + GAP), r * (ph + GAP));
+            let area = body.clone().shrink((x, y), (pw, ph));
+            markers += panel(&area, p)?;
+        }
+        let strip = body
+            .clone()
+            .shrink((GAP, rows * (ph + GAP)), (width - 2 * GAP, 60));
+        legend_row(
+            &strip,
+            &[
+                ("C+ (quarter cone V+)".into(), Sym::Line(BLUE, 3)),
+                ("C− (three-quarter cone V−)".into(), Sym::Line(ORANGE, 3)),
+                ("control polygons (thin)".into(), Sym::Line(BLUE, 1)),
+                ("asymptote / escape direction".into(), Sym::Line(PURPLE, 1)),
+                ("pole (weight = 0)".into(), Sym::Ring(PURPLE)),
+            ],
+        )
+    });
+    (svg, markers)
 }
 
 /// Short text of an exact number (the exact form when short, else a decimal).
-fn text(x: &Radical) -> String {
+fn exact_text(x: &Radical) -> String {
     let s = x.to_string();
     if s.len() <= 14 {
         // sqrt(k) -> √k
@@ -606,7 +567,7 @@ fn weights_line(c: &Computed<Radical>) -> String {
             .curve
             .weights()
             .iter()
-            .map(text)
+            .map(exact_text)
             .collect::<Vec<_>>()
             .join(", ")
     };
@@ -652,10 +613,10 @@ pub fn file(path: &str, text_in: &str) -> Result<(String, usize), Error> {
     let n = &c.plane.normal;
     let sub = format!(
         "plane ({})x + ({})y + ({})z + ({}) = 0",
-        text(&n.x),
-        text(&n.y),
-        text(&n.z),
-        text(&c.plane.d)
+        exact_text(&n.x),
+        exact_text(&n.y),
+        exact_text(&n.z),
+        exact_text(&c.plane.d)
     );
     let name = std::path::Path::new(path)
         .file_name()

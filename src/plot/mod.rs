@@ -1,24 +1,26 @@
-//! `exactcheck plot`: SVG figures of Spaeth's cylinder/sphere intersection (SPEC §2).
+//! `exactcheck plot`: the SVG figures of the catalogue's papers and of problem files, drawn
+//! with `plotters` (its SVG backend, `SVGBackend::with_string`), one module per paper:
+//! * `spaeth` — Spaeth's cylinder/sphere intersection (SPEC §2): the t-u diagram (the paper's
+//!   Fig. 2 and 3; a 2D chart) and a 3D view (a `plotters` 3D chart, drawn back to front);
+//! * [`chiang`] — Chiang's Example 4: the ruled surface, the plane z = 0 and the exact section
+//!   curve with its control polygon (a 3D chart);
+//! * [`conics`] — Chiang's Table 1: the four cone sections, one 2D chart per panel;
+//! * [`ph`] — Chiang's PH curve with its offsets and their cusps (a 2D chart).
 //!
-//! Two views of one configuration (one of the paper's examples, or a `cylinder_sphere` problem
-//! file as read by `solve`):
-//! * the **t-u diagram** (the paper's Fig. 2 and 3, which the seeds do not contain): the branches
-//!   `u1(t) <= u2(t)` of `u^2 + 2 A(t) u + B(t) = 0` over `t` in degrees, sampled densely in f64
-//!   ([`DiscSampler::roots`]) and broken where the discriminant is negative; the paper's
-//!   10-degree samples as dots; the ends of the real t-intervals and the touching points from
-//!   the **exact** analysis ([`analyze`], Sturm on the tau-quartic) as markers;
-//! * a **3D view**: an orthographic projection of the cylinder and sphere wireframes and the
-//!   intersection curve, drawn back to front.
+//! What a figure shows is computed first, exactly where the paper's statement is exact (the
+//! markers of the t-u diagram by Sturm on the tau-quartic in `scene`, Chiang's sections over
+//! `Q(sqrt 2, sqrt 6)`, the PH offsets over `Q`), and only converted to f64 to be drawn; the
+//! dense curves of the t-u diagram and the 3D views are f64 samplings. [`style`] holds what the
+//! figures share (palette, caption, legend, markers, fixed-tick axes), so a new figure is a
+//! scene plus a few dozen lines of chart.
 //!
-//! The SVG is written by hand ([`Svg`]), every text and attribute value escaped ([`escape`]).
-//!
-//! Layout: `scene` (the configurations and the f64 sampling), `svg` (the writer and ticks),
-//! `figure` (style, title block, legend), `tu` (the t-u diagram), `view3d` (the 3D view).
+//! Layout: `scene` (Spaeth's configurations, their exact analysis and the f64 sampling),
+//! `style`, and the four figure modules.
 
 use crate::Error;
 use clap::{Args, ValueEnum};
-use exactcheck_core::cylinder_sphere::{rotate_x, rotate_y, Angle, CylinderSphere, SpaethExample};
-use exactcheck_core::{Sign, Vec3};
+use exactcheck_core::cylinder_sphere::{Angle, CylinderSphere, SpaethExample};
+use exactcheck_core::Sign;
 use exactcheck_exact::cylinder_sphere::analyze;
 use exactcheck_exact::univariate::{Bound, RootInterval, UPoly};
 use exactcheck_exact::Rational;
@@ -29,21 +31,17 @@ use std::process::ExitCode;
 
 pub mod chiang;
 pub mod conics;
-mod figure;
 pub mod ph;
 mod scene;
-mod svg;
+mod spaeth;
+pub mod style;
 #[cfg(test)]
 mod tests;
-mod tu;
-mod view3d;
 
-use figure::*;
 use scene::*;
-pub use svg::{escape, nice_ticks, Svg};
-use svg::{short, tick_label, Points, N};
-use tu::tu_diagram;
-use view3d::view_3d;
+use spaeth::{tu_diagram, view_3d};
+use style::short;
+pub use style::{escape, nice_ticks};
 
 /// Arguments of `exactcheck plot`.
 #[derive(Debug, Args)]

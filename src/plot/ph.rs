@@ -14,37 +14,21 @@
 //!   drawn at the offset point of the isolating interval's midpoint (interval widths are below
 //!   `2^-50` after refinement), one marker per cusp; the legend gives their parameters.
 //!
-//! The plot is written with the house SVG writer ([`Svg`]) and nice ticks on both axes at one
-//! common scale (a circle stays a circle).
+//! The plot is a `plotters` 2D chart with nice ticks ([`nice_ticks`]) on both axes at one common
+//! scale (a circle stays a circle: the ranges are widened to the plotting area's aspect).
 
-use super::figure::{circle, header, legend, Sym};
-use super::svg::{nice_ticks, short, tick_label, Points, Svg, N};
+use super::style::*;
 use crate::Error;
 use exactcheck_core::ph::{chiang_example, PhCurve};
 use exactcheck_core::roots::{refine, IsolatedRoot};
 use exactcheck_core::Vec3;
 use exactcheck_exact::Rational;
+use plotters::prelude::{
+    ChartBuilder, Color, EmptyElement, LineSeries, RGBColor, Text, TRANSPARENT,
+};
 
 /// Samples per curve (`t = k / STEPS`).
 const STEPS: i64 = 192;
-
-const STYLE: &str = "
-.base{fill:none;stroke:#111;stroke-width:2.6;stroke-linejoin:round}
-.cpoly{fill:none;stroke:#1b5e20;stroke-width:1.3;stroke-dasharray:6 4}
-.cpt{fill:#1b5e20;stroke:#fff;stroke-width:1}
-.clabel{font-size:12px;fill:#1b5e20}
-.off0{fill:none;stroke:#1f5fbf;stroke-width:2;stroke-linejoin:round}
-.off1{fill:none;stroke:#e0620d;stroke-width:2;stroke-linejoin:round}
-.off2{fill:none;stroke:#8e24aa;stroke-width:2;stroke-linejoin:round}
-.off3{fill:none;stroke:#00897b;stroke-width:2;stroke-linejoin:round}
-.off4{fill:none;stroke:#c62828;stroke-width:2;stroke-linejoin:round}
-.off5{fill:none;stroke:#6d4c41;stroke-width:2;stroke-linejoin:round}
-.olabel{font-size:12.5px;fill:#333}
-.cusp{fill:#d50000;stroke:#fff;stroke-width:1.2}
-";
-
-/// The classes of the offsets, cycled.
-const OFFSET_CLASSES: [&str; 6] = ["off0", "off1", "off2", "off3", "off4", "off5"];
 
 /// The SVG of `plot ph`.
 ///
@@ -185,15 +169,6 @@ pub fn drawing(curve: &PhCurve<Rational>, radii: &[Rational]) -> Drawing {
 
 fn draw(title: &str, lines: &[String], curve: &PhCurve<Rational>, radii: &[Rational]) -> String {
     let d = drawing(curve, radii);
-    let (width, height) = (1060.0, 760.0);
-    let mut svg = Svg::new(width, height, title);
-    let top = header(&mut svg, title, lines) + 6.0;
-    svg.open("style", &[]);
-    svg.buf.push_str(STYLE);
-    svg.close();
-    // The plot area and one common scale.
-    let (x0, y0) = (70.0, top);
-    let (w, h) = (700.0, height - top - 50.0);
     let all = d
         .base
         .iter()
@@ -206,112 +181,100 @@ fn draw(title: &str, lines: &[String], curve: &PhCurve<Rational>, radii: &[Ratio
         yl = yl.min(y);
         yh = yh.max(y);
     }
-    let (xt, xs) = nice_ticks(xl, xh, 7);
-    let (yt, ys) = nice_ticks(yl, yh, 7);
-    let (xl, xh) = (xl.min(xt[0]), xh.max(*xt.last().expect("ticks")));
-    let (yl, yh) = (yl.min(yt[0]), yh.max(*yt.last().expect("ticks")));
-    let scale = (w / (xh - xl)).min(h / (yh - yl));
-    let sx = |x: f64| x0 + (x - xl) * scale;
-    let sy = |y: f64| y0 + h - (y - yl) * scale;
-    let screen = |&(x, y): &(f64, f64)| (sx(x), sy(y));
-    // Frame, grid and ticks.
-    let (fx1, fy0) = (sx(xh), sy(yh));
-    for &t in &xt {
-        svg.line((sx(t), fy0), (sx(t), sy(yl)), &[("class", &"grid")]);
-        svg.text(
-            sx(t),
-            sy(yl) + 18.0,
-            &tick_label(t, xs),
-            &[("class", &"tick"), ("text-anchor", &"middle")],
-        );
-    }
-    for &t in &yt {
-        svg.line((sx(xl), sy(t)), (fx1, sy(t)), &[("class", &"grid")]);
-        svg.text(
-            sx(xl) - 8.0,
-            sy(t) + 4.0,
-            &tick_label(t, ys),
-            &[("class", &"tick"), ("text-anchor", &"end")],
-        );
-    }
-    svg.leaf(
-        "rect",
-        &[
-            ("class", &"frame"),
-            ("x", &N(sx(xl))),
-            ("y", &N(fy0)),
-            ("width", &N(fx1 - sx(xl))),
-            ("height", &N(sy(yl) - fy0)),
-        ],
-    );
-    svg.text(
-        (sx(xl) + fx1) / 2.0,
-        sy(yl) + 38.0,
-        "x",
-        &[("class", &"axlabel"), ("text-anchor", &"middle")],
-    );
-    svg.text(
-        sx(xl) - 48.0,
-        (fy0 + sy(yl)) / 2.0,
-        "y",
-        &[("class", &"axlabel")],
-    );
-    // Offsets, then the control polygon and the curve on top, then the cusps.
-    let mut rows: Vec<(String, Sym)> = vec![
-        ("PH curve B(t) (exact)".into(), Sym::Line("base")),
-        ("control polygon".into(), Sym::Line("cpoly")),
-    ];
-    for (i, (r, runs, _)) in d.offsets.iter().enumerate() {
-        let class = OFFSET_CLASSES[i % OFFSET_CLASSES.len()];
-        for run in runs {
-            let s: Vec<(f64, f64)> = run.iter().map(screen).collect();
-            svg.leaf("polyline", &[("class", &class), ("points", &Points(&s))]);
+    let (xaxis, yaxis) = (Ticked::nice(xl, xh, 7), Ticked::nice(yl, yh, 7));
+    render((1060, 780), title, |root| {
+        let body = header(root, title, lines)?;
+        let (plot, side) = body.split_horizontally(760);
+        // One common scale (a circle stays a circle): the tick ranges widened to the plotting
+        // area's aspect.
+        let (margin, xlab, ylab) = (12, 44, 60);
+        let (pw, ph) = plot.dim_in_pixel();
+        let aspect = f64::from(pw - 2 * margin - ylab) / f64::from(ph - 2 * margin - xlab);
+        let (xr, yr) = equal_scale(xaxis.range, yaxis.range, aspect);
+        let mut chart = ChartBuilder::on(&plot)
+            .margin(margin)
+            .x_label_area_size(xlab)
+            .y_label_area_size(ylab)
+            .build_cartesian_2d(
+                Ticked {
+                    range: xr,
+                    ..xaxis.clone()
+                },
+                Ticked {
+                    range: yr,
+                    ..yaxis.clone()
+                },
+            )?;
+        chart
+            .configure_mesh()
+            .light_line_style(TRANSPARENT)
+            .bold_line_style(RGBColor(0xe4, 0xe4, 0xe4))
+            .x_desc("x")
+            .y_desc("y")
+            .label_style(font(15.0, INK))
+            .axis_desc_style(font(17.0, INK))
+            .draw()?;
+        // Offsets, then the control polygon and the curve on top, then the cusps.
+        let mut rows: Vec<(String, Sym)> = vec![
+            ("PH curve B(t) (exact)".into(), Sym::Line(INK, 3)),
+            ("control polygon".into(), Sym::Line(GREEN, 1)),
+        ];
+        for (i, (r, runs, _)) in d.offsets.iter().enumerate() {
+            let c = OFFSETS[i % OFFSETS.len()];
+            for run in runs {
+                chart.draw_series(LineSeries::new(run.iter().copied(), c.stroke_width(2)))?;
+            }
+            if let Some(&end) = runs.last().and_then(|r| r.last()) {
+                chart.plotting_area().draw(
+                    &(EmptyElement::at(end)
+                        + Text::new(
+                            format!("r = {}", short(r.to_f64(), 4)),
+                            (6, -20),
+                            font(15.0, INK),
+                        )),
+                )?;
+            }
+            rows.push((
+                format!("offset r = {r} (≈ {})", short(r.to_f64(), 4)),
+                Sym::Line(c, 2),
+            ));
         }
-        if let Some(&(x, y)) = runs.last().and_then(|r| r.last()) {
-            svg.text(
-                sx(x) + 6.0,
-                sy(y) - 6.0,
-                &format!("r = {}", short(r.to_f64(), 4)),
-                &[("class", &"olabel")],
-            );
+        chart.draw_series(LineSeries::new(
+            d.control.iter().copied(),
+            GREEN.stroke_width(1),
+        ))?;
+        chart.draw_series(LineSeries::new(d.base.iter().copied(), INK.stroke_width(3)))?;
+        for (k, p) in d.control.iter().enumerate() {
+            chart.plotting_area().draw(&dot(*p, 5, GREEN))?;
+            chart.plotting_area().draw(
+                &(EmptyElement::at(*p) + Text::new(format!("p{k}"), (7, -22), font(14.0, GREEN))),
+            )?;
         }
-        rows.push((
-            format!("offset r = {r} (≈ {})", short(r.to_f64(), 4)),
-            Sym::Line(class),
-        ));
-    }
-    let cs: Vec<(f64, f64)> = d.control.iter().map(screen).collect();
-    svg.leaf("polyline", &[("class", &"cpoly"), ("points", &Points(&cs))]);
-    let bs: Vec<(f64, f64)> = d.base.iter().map(screen).collect();
-    svg.leaf("polyline", &[("class", &"base"), ("points", &Points(&bs))]);
-    for (k, (x, y)) in cs.iter().enumerate() {
-        circle(&mut svg, *x, *y, 4.2, "cpt");
-        svg.text(x + 7.0, y - 7.0, &format!("p{k}"), &[("class", &"clabel")]);
-    }
-    let mut notes = vec!["control points (exact):".to_string()];
-    for (k, p) in curve.base().control_points().iter().enumerate() {
-        notes.push(format!("  p{k} = ({}, {})", p.x, p.y));
-    }
-    let mut cusp_count = 0;
-    for (r, _, cusps) in &d.offsets {
-        for (t, (x, y)) in cusps {
-            circle(&mut svg, sx(*x), sy(*y), 5.5, "cusp");
-            cusp_count += 1;
-            let at = match t.exact() {
-                Some(t) => format!("t = {t}"),
-                None => format!("t ≈ {}", short(t.midpoint().to_f64(), 6)),
-            };
-            notes.push(format!("cusp of r = {r}: {at}"));
+        let mut notes = vec!["control points (exact):".to_string()];
+        for (k, p) in curve.base().control_points().iter().enumerate() {
+            notes.push(format!("  p{k} = ({}, {})", p.x, p.y));
         }
-    }
-    if d.singular {
-        notes.push("the speed vanishes in [0, 1]: singular base, no cusps computed".into());
-    } else {
-        notes.push(format!("{cusp_count} cusp(s) in all, counted exactly"));
-    }
-    rows.push(("cusp (exact parameter)".into(), Sym::Dot("cusp")));
-    legend(&mut svg, x0 + w + 60.0, y0 + 10.0, &rows, &notes);
-    svg.finish()
+        let mut cusp_count = 0;
+        for (r, _, cusps) in &d.offsets {
+            for (t, p) in cusps {
+                chart.plotting_area().draw(&dot(*p, 6, CUSP))?;
+                cusp_count += 1;
+                let at = match t.exact() {
+                    Some(t) => format!("t = {t}"),
+                    None => format!("t ≈ {}", short(t.midpoint().to_f64(), 6)),
+                };
+                notes.push(format!("cusp of r = {r}: {at}"));
+            }
+        }
+        if d.singular {
+            notes.push("the speed vanishes in [0, 1]: singular base,".into());
+            notes.push("no cusps computed".into());
+        } else {
+            notes.push(format!("{cusp_count} cusp(s) in all, counted exactly"));
+        }
+        rows.push(("cusp (exact parameter)".into(), Sym::Dot(CUSP)));
+        legend(&side, &rows, &notes)
+    })
 }
 
 #[cfg(test)]

@@ -1,6 +1,7 @@
 //! Unit tests of the plot modules.
 
 use super::*;
+use style::tick_label;
 
 #[test]
 fn escaping() {
@@ -10,15 +11,40 @@ fn escaping() {
     );
     assert_eq!(escape("plain °√ text"), "plain °√ text");
     assert_eq!(escape("bell\u{7}tab\t"), "bell\u{FFFD}tab\t");
-    let mut svg = Svg::new(10.0, 10.0, "<T&>");
-    svg.text(1.0, 2.0, "x<y", &[("class", &"a\"b")]);
-    let out = svg.finish();
-    assert!(out.contains("<title>&lt;T&amp;&gt;</title>"), "{out}");
+    // A page: the title escaped after the <svg> tag, text escaped and cleaned by plotters' writer.
+    let out = style::render((10, 10), "<T&>", |root| {
+        style::text(root, "x<y\u{1}", (1, 2), &style::font(10.0, style::INK))
+    });
     assert!(
-        out.contains(r#"<text x="1" y="2" class="a&quot;b">x&lt;y</text>"#),
+        out.starts_with("<svg width=\"10\" height=\"10\" viewBox=\"0 0 10 10\""),
         "{out}"
     );
+    assert!(out.contains(">\n<title>&lt;T&amp;&gt;</title>\n"), "{out}");
+    assert!(out.contains("x&lt;y\u{FFFD}"), "{out}");
     assert!(out.trim_end().ends_with("</svg>"));
+}
+
+/// The axis of fixed ticks: the key points are the ticks inside the range, the labels follow
+/// the step, far-off values saturate instead of wrapping round.
+#[test]
+fn ticked_axis() {
+    use plotters::coord::ranged1d::{Ranged, ValueFormatter};
+    let a = style::Ticked::nice(-7.0, 7.0, 6);
+    assert_eq!(a.range, (-8.0, 8.0));
+    assert_eq!(
+        a.key_points(100usize),
+        vec![-8.0, -6.0, -4.0, -2.0, 0.0, 2.0, 4.0, 6.0, 8.0]
+    );
+    assert_eq!(a.map(&-8.0, (0, 160)), 0);
+    assert_eq!(a.map(&2.0, (0, 160)), 100);
+    assert_eq!(a.map(&1e300, (0, 160)), 1_000_000);
+    assert_eq!(a.format_ext(&-6.0), "−6");
+    let t = style::Ticked {
+        range: (0.0, 360.0),
+        ticks: vec![0.0, 30.0, 400.0],
+        step: 30.0,
+    };
+    assert_eq!(t.key_points(5usize), vec![0.0, 30.0]);
 }
 
 #[test]
@@ -138,5 +164,47 @@ fn runs_are_closed_at_the_boundary() {
         if last[0] < TAU - 1e-9 {
             assert!((last[1] - last[2]).abs() < 1e-3, "{last:?}");
         }
+    }
+}
+
+/// Every figure of the catalogue (what the report inlines): unique ids, a caption naming the
+/// paper's example, and an SVG document with a size, a viewBox and the caption as its title.
+#[test]
+fn catalogue_figures_are_documents() {
+    let figs = catalogue_figures().expect("the catalogue draws");
+    let ids: Vec<&str> = figs.iter().map(|f| f.id.as_str()).collect();
+    assert_eq!(
+        ids,
+        [
+            "spaeth.example1.tu",
+            "spaeth.example1.3d",
+            "spaeth.example2.tu",
+            "spaeth.example2.3d",
+            "spaeth.example3.tu",
+            "spaeth.example3.3d",
+            "chiang.example4",
+            "chiang.conic_table",
+            "chiang.ph_offsets"
+        ]
+    );
+    for f in &figs {
+        let head = f.svg.lines().next().unwrap_or_default();
+        assert!(head.starts_with("<svg width=\""), "{}: {head}", f.id);
+        let size: Vec<&str> = head.split('"').collect();
+        let (w, h) = (size[1], size[3]);
+        assert!(w.parse::<u32>().is_ok_and(|w| w > 0), "{}", f.id);
+        assert!(h.parse::<u32>().is_ok_and(|h| h > 0), "{}", f.id);
+        assert!(
+            head.contains(&format!("viewBox=\"0 0 {w} {h}\"")),
+            "{}",
+            f.id
+        );
+        assert!(f
+            .svg
+            .lines()
+            .nth(1)
+            .is_some_and(|l| l.starts_with("<title>")));
+        assert!(f.svg.trim_end().ends_with("</svg>"), "{}", f.id);
+        assert!(!f.svg.contains("NaN") && !f.svg.contains("inf"), "{}", f.id);
     }
 }
