@@ -64,10 +64,10 @@ pub struct ReportArgs {
 pub fn checked_claims(file: Option<&str>) -> Result<Vec<Checked>, Error> {
     match file {
         None => crate::claims::verify(None),
-        // integration: crate::claimfile::{load, check}
-        Some(path) => Err(Error::Input(format!(
-            "{path}: claims files arrive with helper F's module (crate::claimfile); `exactcheck report` without FILE reports the built-in catalogue"
-        ))),
+        Some(path) => {
+            let file = crate::claimfile::load(Path::new(path))?;
+            crate::claimfile::check(&file, None)
+        }
     }
 }
 
@@ -245,14 +245,14 @@ mod tests {
     }
 
     #[test]
-    fn a_claims_file_is_refused_until_the_reader_arrives() {
-        let Err(e) = checked_claims(Some("paper.toml")) else {
-            panic!("a claims file is refused");
+    fn a_claims_file_is_checked_by_the_claims_file_reader() {
+        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/mypaper.toml");
+        let rows = checked_claims(Some(path)).expect("the example file checks");
+        assert_eq!(rows.len(), 5);
+        assert!(rows.iter().all(|r| r.source == "mypaper"));
+        let Err(e) = checked_claims(Some("no/such/paper.toml")) else {
+            panic!("a missing file is an error");
         };
-        let e = e.to_string();
-        assert!(
-            e.starts_with("paper.toml: claims files arrive with helper F's module"),
-            "{e}"
-        );
+        assert!(e.to_string().contains("no/such/paper.toml"), "{e}");
     }
 }
