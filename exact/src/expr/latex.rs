@@ -17,8 +17,9 @@
 //! * `\sqrt{..}`, `x^{k}`; `\left( .. \right)` only where precedence needs it: a sum as a factor
 //!   or operand, a negative term after `+`/`-` or as a later factor, any compound base of a
 //!   power;
-//! * a function call `f(a, b)` ([`ExprKind::Call`]) is `\operatorname{f}\left(a, b\right)`, and a
-//!   call with the empty name is a tuple, `\left(a, b\right)` (a vector in an erratum);
+//! * a function call `f(a, b)` ([`ExprKind::Call`]) is `\operatorname{f}\left(a, b\right)` (or,
+//!   when the notation lists `f`, its entry: `r_{0}\left(3\right)`), and a call with the empty
+//!   name is a tuple, `\left(a, b\right)` (a vector in an erratum);
 //! * an equation is `lhs = rhs` ([`equation_to_latex`]).
 //!
 //! # Names
@@ -570,6 +571,8 @@ pub(super) fn layout(e: &Expr, n: &Notation) -> Layout {
             let args_l = fenced(row(inner));
             if name.is_empty() {
                 args_l
+            } else if let Some(sym) = n.entries.get(name) {
+                Layout::Row(vec![symbol_layout(sym), Layout::Op(Op::Apply), args_l])
             } else {
                 Layout::Row(vec![
                     Layout::Func(name.clone()),
@@ -768,6 +771,9 @@ mod tests {
         assert_eq!(tex("sqrt(2)"), "\\sqrt{2}");
         assert_eq!(tex("3 sqrt(2)/2"), "\\frac{3\\,\\sqrt{2}}{2}");
         assert_eq!(tex("f(x, y)"), "\\operatorname{f}\\left(x, y\\right)");
+        let r0 = Notation::from_pairs([("r0", "r_0")]).unwrap();
+        let call = parse_expr_with_calls("r0(3)").unwrap();
+        assert_eq!(to_latex(&call, &r0), "r_{0}\\left(3\\right)");
         assert_eq!(tex("p0 q1"), "p_{0}\\,q_{1}");
         assert_eq!(
             to_latex(
