@@ -20,6 +20,10 @@ pub struct VerifyArgs {
     /// Print a JSON array (objects with id, verdict, method, evidence, ...) instead of a table.
     #[arg(long)]
     pub json: bool,
+    /// Print the errata of the failing claims as LaTeX math (a `%` comment line per part, one
+    /// line per equation, no `$`) instead of a table.
+    #[arg(long, conflicts_with = "json")]
+    pub latex: bool,
     /// Only the claims whose id starts with this prefix (e.g. `juttler`).
     #[arg(long)]
     pub only: Option<String>,
@@ -42,6 +46,8 @@ pub fn run(args: &VerifyArgs) -> Result<ExitCode, Error> {
     if args.json {
         let arr: Vec<_> = rows.iter().map(|r| r.to_json()).collect();
         crate::output::println(serde_json::Value::Array(arr))?;
+    } else if args.latex {
+        crate::output::println(crate::claims::latex::document(&rows).trim_end())?;
     } else {
         crate::output::println(crate::claims::table(&rows))?;
     }

@@ -43,9 +43,11 @@
 //! (`exactcheck_exact::univariate`), because the check must be exact.
 
 use super::engine::{prove_all, Rng, Symbols};
-use super::{Claim, Outcome, Verdict};
+use super::{Claim, Equation, Erratum, Outcome, Verdict};
 use exactcheck_core::ruled::RuledSurface;
 use exactcheck_core::{binomial, Bernstein, Field, Ring, Vec3};
+use exactcheck_exact::expr::Expr;
+use exactcheck_exact::poly::CoeffExpr;
 use exactcheck_exact::poly::{Poly, Var};
 use exactcheck_exact::univariate::{RootInterval, UPoly};
 use exactcheck_exact::Rational;
@@ -539,6 +541,7 @@ fn vicinity() -> Result<Outcome, String> {
     }
     // The counter-examples.
     let mut found = Vec::new();
+    let mut first: Option<Erratum> = None;
     for case in vicinity_counterexamples() {
         let s = &case.surface;
         let [cx, cy, cz] = s.vicinity_polynomials(&Vec3::zero());
@@ -557,6 +560,9 @@ fn vicinity() -> Result<Outcome, String> {
             continue;
         }
         let cross = b.cross(&v);
+        if first.is_none() {
+            first = Some(vicinity_erratum(&sym, &t, &b, &v, &cross)?);
+        }
         let dist2 = if v.is_zero() {
             b.norm_squared()
         } else {
@@ -590,7 +596,60 @@ fn vicinity() -> Result<Outcome, String> {
              corrected test: the origin (a point P) is on S iff some t in [0,1] is a common root of all three components of (B - P) x V with V(t) != 0, or B(t) = P",
             found.join("\ncounter-example: "),
             proof.evidence
-        ), erratum: None, })
+        ),
+        erratum: first.map(Box::new),
+    })
+}
+
+/// The erratum of `chiang.vicinity` at the first counter-example: the printed equations, the
+/// corrected test (all three components of `B x V`, computed from symbolic vectors), the point
+/// `t` with `B(t)`, `V(t)`, and the component the printed test leaves out, `(B x V)_z`, there.
+fn vicinity_erratum(
+    sym: &Symbols,
+    t: &Rational,
+    b: &Vec3<Rational>,
+    v: &Vec3<Rational>,
+    cross: &Vec3<Rational>,
+) -> Result<Erratum, String> {
+    let mut sym = Symbols {
+        vars: sym.vars.clone(),
+    };
+    let mut vec = |c: &str| -> Result<Vec3<P>, String> {
+        Ok(Vec3::new(
+            sym.parse(&format!("{c}x"))?,
+            sym.parse(&format!("{c}y"))?,
+            sym.parse(&format!("{c}z"))?,
+        ))
+    };
+    let (bs, vs) = (vec("B")?, vec("V")?);
+    let components = bs.cross(&vs).into_array();
+    let zero = || Expr::number(Rational::ZERO);
+    let tuple = |w: &Vec3<Rational>| Expr::tuple(vec![w.x.to_expr(), w.y.to_expr(), w.z.to_expr()]);
+    let printed = VICINITY_EQ
+        .iter()
+        .map(|e| Equation::parse(e, "0"))
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(Erratum {
+        printed,
+        corrected: components
+            .iter()
+            .map(|c| Equation::new(c.to_expr(&sym.vars), zero()))
+            .collect(),
+        correction: "the origin (a point P) is on the ruled surface iff some t in [0,1] is a common root of all three components of (B - P) x V with V(t) != 0, or B(t) = P; the two printed equations imply the third only where Vz(t) != 0".into(),
+        counter_example: vec![
+            Equation::named("t", t.to_expr()),
+            Equation::named("B", tuple(b)),
+            Equation::named("V", tuple(v)),
+        ],
+        residual: vec![Equation::new(
+            components[2].to_expr(&sym.vars),
+            cross.z.to_expr(),
+        )],
+        notation: ["B", "V"]
+            .iter()
+            .flat_map(|c| ["x", "y", "z"].map(|a| (format!("{c}{a}"), format!("{c}_{a}"))))
+            .collect(),
+    })
 }
 
 #[cfg(test)]

@@ -1,10 +1,10 @@
 //! Helpers shared by the claim modules: printed formulas (kept as text, as printed) turned into
 //! polynomials, and identities decided by the proof engine of `exactcheck-exact`.
 
-use super::{Outcome, Verdict};
+use super::{Equation, Erratum, Outcome, Verdict};
 use exactcheck_core::{Hom4, Ring};
-use exactcheck_exact::expr::{parse_poly, Coefficient};
-use exactcheck_exact::poly::{Poly, Var, Vars};
+use exactcheck_exact::expr::{parse_poly, Coefficient, Expr};
+use exactcheck_exact::poly::{CoeffExpr, Poly, Var, Vars};
 use exactcheck_exact::prove::{decide_in, Decision, Domain, PointField};
 use exactcheck_exact::Rational;
 use std::fmt::Display;
@@ -54,24 +54,34 @@ impl Symbols {
 /// Decides that every residual is zero (modulo `relations`): `proved` when all expand to zero,
 /// `fails` with the counter-example of the first that does not, `undecided` when the engine
 /// finds neither (or the relations are inconsistent). [`prove_all_in`] without domains.
-pub fn prove_all<C: PointField + Display>(
+pub fn prove_all<C: PointField + Display + CoeffExpr>(
     sym: &Symbols,
     residuals: &[(&str, Poly<C>)],
     relations: &[Poly<C>],
     method: &str,
-) -> Outcome {
+) -> Outcome
+where
+    C::Value: CoeffExpr,
+{
     prove_all_in(sym, residuals, relations, &[], method)
 }
 
 /// [`prove_all`] for the variables' values in `domains` (e.g. radii `> 0`): counter-examples are
 /// searched inside the domains only.
-pub fn prove_all_in<C: PointField + Display>(
+///
+/// On `fails` the outcome carries an [`Erratum`] with the exact counter-example (`name = value`
+/// for every variable of the residual and the relations) and the residual there (its normal form
+/// modulo the relations `= value`); the caller adds the printed and the corrected forms.
+pub fn prove_all_in<C: PointField + Display + CoeffExpr>(
     sym: &Symbols,
     residuals: &[(&str, Poly<C>)],
     relations: &[Poly<C>],
     domains: &[(Var, Domain)],
     method: &str,
-) -> Outcome {
+) -> Outcome
+where
+    C::Value: CoeffExpr,
+{
     let name = |v: Var| {
         sym.vars
             .name(v)
@@ -96,14 +106,28 @@ pub fn prove_all_in<C: PointField + Display>(
                 point,
                 value,
             } => {
-                let at: Vec<String> = point
+                let shown: Vec<&(Var, _)> = point
                     .iter()
                     .filter(|(v, _)| {
                         r.variables().contains(v)
                             || relations.iter().any(|q| q.variables().contains(v))
                     })
+                    .collect();
+                let at: Vec<String> = shown
+                    .iter()
                     .map(|(v, q)| format!("{} = {q}", name(*v)))
                     .collect();
+                let erratum = Erratum {
+                    counter_example: shown
+                        .iter()
+                        .map(|(v, q)| Equation::new(Expr::var(name(*v)), q.to_expr()))
+                        .collect(),
+                    residual: vec![Equation::new(
+                        normal_form.to_expr(&sym.vars),
+                        value.to_expr(),
+                    )],
+                    ..Erratum::default()
+                };
                 return Outcome {
                     verdict: Verdict::Fails,
                     method: method.into(),
@@ -111,7 +135,9 @@ pub fn prove_all_in<C: PointField + Display>(
                         "{what} is not zero: at {} it is {value}; it reduces to {}",
                         at.join(", "),
                         normal_form.display(&sym.vars)
-                    ), erratum: None, };
+                    ),
+                    erratum: Some(Box::new(erratum)),
+                };
             }
             Decision::Undecided {
                 normal_form,

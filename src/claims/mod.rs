@@ -38,11 +38,12 @@ pub mod chiang_ph;
 pub mod engine;
 pub mod juttler;
 pub mod juttler_geometry;
+pub mod latex;
 pub mod planes;
 pub mod printed;
 pub mod spaeth;
 
-use exactcheck_exact::expr::Expr;
+use exactcheck_exact::expr::{equation_to_latex, parse_expr, Expr, Notation};
 use serde_json::{json, Value};
 use std::fmt;
 use std::time::Instant;
@@ -98,6 +99,42 @@ pub struct Equation {
     pub rhs: Expr,
 }
 
+impl Equation {
+    /// `lhs = rhs`.
+    pub fn new(lhs: Expr, rhs: Expr) -> Self {
+        Equation { lhs, rhs }
+    }
+
+    /// The equation of two printed (or derived) texts in the expression syntax.
+    ///
+    /// # Errors
+    /// A text that does not parse (named in the message).
+    pub fn parse(lhs: &str, rhs: &str) -> Result<Self, String> {
+        let p = |t: &str| parse_expr(t).map_err(|e| format!("formula {t:?}: {e}"));
+        Ok(Equation::new(p(lhs)?, p(rhs)?))
+    }
+
+    /// The variable `name` equal to the expression `rhs`.
+    pub fn named(name: &str, rhs: Expr) -> Self {
+        Equation::new(Expr::var(name), rhs)
+    }
+
+    /// `lhs = rhs` in the expression syntax.
+    pub fn text(&self) -> String {
+        format!("{} = {}", self.lhs, self.rhs)
+    }
+
+    /// `lhs = rhs` as LaTeX math.
+    pub fn latex(&self, notation: &Notation) -> String {
+        equation_to_latex(&self.lhs, &self.rhs, notation)
+    }
+
+    /// `{ "text": .., "latex": .. }` for `verify --json`.
+    pub fn to_json(&self, notation: &Notation) -> Value {
+        json!({ "text": self.text(), "latex": self.latex(notation) })
+    }
+}
+
 /// What a failing claim's printed statement should have said, computed by its check: the
 /// report's errata section and `verify --latex` are made from it.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -115,6 +152,46 @@ pub struct Erratum {
     /// LaTeX for variable names (`cb` -> `\\cos\\beta`); names not listed are printed by the
     /// LaTeX printer's default rules.
     pub notation: Vec<(String, String)>,
+}
+
+impl Erratum {
+    /// The notation of the erratum's names for the printers.
+    ///
+    /// # Panics
+    /// When an entry is outside the LaTeX subset of [`Notation::set`]: the entries are written
+    /// by the claim modules, and a test checks every erratum of the catalogue.
+    pub fn notation(&self) -> Notation {
+        Notation::from_pairs(self.notation.iter().map(|(a, b)| (a, b)))
+            .expect("the claim modules write notation entries in the accepted LaTeX subset")
+    }
+
+    /// The erratum's parts: role and equations (`printed`, `corrected`, `counter-example`,
+    /// `residual`), the empty ones left out.
+    pub fn parts(&self) -> Vec<(&'static str, &[Equation])> {
+        [
+            ("printed", &self.printed[..]),
+            ("corrected", &self.corrected[..]),
+            ("counter-example", &self.counter_example[..]),
+            ("residual", &self.residual[..]),
+        ]
+        .into_iter()
+        .filter(|(_, e)| !e.is_empty())
+        .collect()
+    }
+
+    /// The JSON object of `verify --json`: `printed`, `corrected`, `counter_example`,
+    /// `residual` (arrays of `{ "text", "latex" }`) and `correction`.
+    pub fn to_json(&self) -> Value {
+        let n = self.notation();
+        let eqs = |v: &[Equation]| Value::Array(v.iter().map(|e| e.to_json(&n)).collect());
+        json!({
+            "printed": eqs(&self.printed),
+            "corrected": eqs(&self.corrected),
+            "counter_example": eqs(&self.counter_example),
+            "residual": eqs(&self.residual),
+            "correction": self.correction,
+        })
+    }
 }
 
 /// A claim of the catalogue.
@@ -166,19 +243,26 @@ impl Checked {
         matches!(&self.outcome, Ok(o) if o.verdict == self.expected && o.verdict != Verdict::Undecided)
     }
 
-    /// The JSON object of DESIGN.md (`id`, `verdict`, `method`, `evidence`, plus more).
+    /// The JSON object of DESIGN.md (`id`, `verdict`, `method`, `evidence`, plus more), with
+    /// `erratum` ([`Erratum::to_json`]) when the check filled one.
     pub fn to_json(&self) -> Value {
         match &self.outcome {
-            Ok(o) => json!({
-                "id": self.id,
-                "verdict": o.verdict.to_string(),
-                "method": o.method,
-                "evidence": o.evidence,
-                "expected": self.expected.to_string(),
-                "as_expected": self.as_expected(),
-                "statement": self.statement,
-                "seconds": self.seconds,
-            }),
+            Ok(o) => {
+                let mut v = json!({
+                    "id": self.id,
+                    "verdict": o.verdict.to_string(),
+                    "method": o.method,
+                    "evidence": o.evidence,
+                    "expected": self.expected.to_string(),
+                    "as_expected": self.as_expected(),
+                    "statement": self.statement,
+                    "seconds": self.seconds,
+                });
+                if let Some(e) = &o.erratum {
+                    v["erratum"] = e.to_json();
+                }
+                v
+            }
             Err(e) => json!({
                 "id": self.id,
                 "verdict": "error",

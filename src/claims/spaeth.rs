@@ -8,7 +8,7 @@
 //! the derivation — is reported.
 
 use super::engine::{prove_all, prove_all_in, Symbols};
-use super::{Claim, Outcome, Verdict};
+use super::{Claim, Equation, Outcome, Verdict};
 use exactcheck_core::cylinder_sphere::{Angle, CylinderSphere};
 use exactcheck_core::{Ring, Vec3};
 use exactcheck_exact::poly::{unit_circle_relation, Poly, Var};
@@ -43,6 +43,16 @@ const EQ9_CORRECTED: &str = "sb*(cb*(a + r*ct) - d) + sg*cb*(cg*(b + r*st) - sg*
 const EQ10: &str = "(cb*(a + r*ct) - d)^2 + (cg*(b + r*st) - sg*sb*(a + r*ct) - e)^2 + (sg*(b + r*st) + cg*sb*(a + r*ct) + f)^2";
 /// (10) with the missing `- R^2`.
 const EQ10_CORRECTED: &str = "(cb*(a + r*ct) - d)^2 + (cg*(b + r*st) - sg*sb*(a + r*ct) - e)^2 + (sg*(b + r*st) + cg*sb*(a + r*ct) + f)^2 - R^2";
+
+/// The LaTeX of the transliterated names, for the errata.
+pub const NOTATION: [(&str, &str); 6] = [
+    ("cb", "\\cos\\beta"),
+    ("sb", "\\sin\\beta"),
+    ("cg", "\\cos\\gamma"),
+    ("sg", "\\sin\\gamma"),
+    ("ct", "\\cos t"),
+    ("st", "\\sin t"),
+];
 
 /// The symbolic `spaeth.*` claims.
 pub fn claims() -> Vec<Claim> {
@@ -210,23 +220,47 @@ fn run(s: &Setup, residuals: &[(String, P)]) -> Result<Outcome, String> {
     Ok(prove_all_in(&s.sym, &r, &s.relations, &s.domains, METHOD))
 }
 
+/// A printed or corrected formula of an erratum: the name it defines and its text.
+type Form<'a> = (&'a str, &'a str);
+
 /// Checks a failing printed formula: the failure (with its counter-example) from the printed
-/// residuals, plus the proof that the corrected text matches the derivation.
+/// residuals, plus the proof that the corrected text matches the derivation. The erratum gets the
+/// printed forms, and the corrected forms when they are proved.
 fn with_correction(
     s: &Setup,
     printed: &[(String, P)],
     corrected: &[(String, P)],
     correction: &str,
+    forms: (&[Form], &[Form]),
 ) -> Result<Outcome, String> {
     let mut out = run(s, printed)?;
     if out.verdict == Verdict::Fails {
         let fixed = run(s, corrected)?;
+        let equations = |f: &[Form]| {
+            f.iter()
+                .map(|(lhs, rhs)| Equation::parse(lhs, rhs))
+                .collect::<Result<Vec<_>, _>>()
+        };
+        let erratum = out.erratum.get_or_insert_with(Default::default);
+        erratum.printed = equations(forms.0)?;
+        erratum.notation = NOTATION
+            .iter()
+            .map(|(a, b)| (a.to_string(), b.to_string()))
+            .collect();
         out.evidence = if fixed.verdict == Verdict::Proved {
+            erratum.corrected = equations(forms.1)?;
+            erratum.correction = correction.to_string();
+            let text: Vec<String> = erratum.corrected.iter().map(Equation::text).collect();
             format!(
-                "{}. Corrected form (proved equal to the derivation): {correction}",
-                out.evidence
+                "{}. Corrected form (proved equal to the derivation): {} ({correction})",
+                out.evidence,
+                text.join(", ")
             )
         } else {
+            erratum.correction = format!(
+                "the candidate correction does not match the derivation either: {}",
+                fixed.evidence
+            );
             format!(
                 "{}. (The candidate correction does not match either: {})",
                 out.evidence, fixed.evidence
@@ -250,14 +284,14 @@ fn eq5() -> Result<Outcome, String> {
     let reversed = s.cs.point(&s.ct, &s.st, &s.u).into_array();
     let printed_res = residuals_of("(5) as printed - Ry(beta) Rx(gamma) v", &printed, &product);
     let corrected_res = residuals_of("corrected (5) - Ry(beta) Rx(gamma) v", &corrected, &product);
+    let names = ["x", "y", "z"];
+    let forms = |f: [&'static str; 3]| -> Vec<Form<'static>> { names.into_iter().zip(f).collect() };
     let mut out = with_correction(
         &s,
         &printed_res,
         &corrected_res,
-        &format!(
-            "x = {}, y = {}, z = {}",
-            EQ5_CORRECTED[0], EQ5_CORRECTED[1], EQ5_CORRECTED[2]
-        ),
+        "(5) is (4) multiplied out in the order printed in (4), Ry(beta) Rx(gamma) v",
+        (&forms(EQ5), &forms(EQ5_CORRECTED)),
     )?;
     // What (5) is instead: the product in the other order.
     let other = run(
@@ -266,6 +300,9 @@ fn eq5() -> Result<Outcome, String> {
     )?;
     if out.verdict == Verdict::Fails && other.verdict == Verdict::Proved {
         out.evidence += ". The printed (5) is exactly Rx(gamma) Ry(beta) v (proved): the matrices of (4) are multiplied in the opposite order; (7)-(11) follow (5)";
+        if let Some(e) = out.erratum.as_mut() {
+            e.correction += "; the printed (5) is exactly Rx(gamma) Ry(beta) v (proved): the matrices of (4) are multiplied in the opposite order";
+        }
     }
     Ok(out)
 }
@@ -323,7 +360,8 @@ fn eq9() -> Result<Outcome, String> {
                 core_a - &a_derived,
             ),
         ],
-        &format!("A(t) = {EQ9_CORRECTED} (the last term's sign is -)"),
+        "the last term's sign is -",
+        (&[("A", EQ9)], &[("A", EQ9_CORRECTED)]),
     )
 }
 
@@ -347,7 +385,8 @@ fn eq10() -> Result<Outcome, String> {
             ),
             ("core B(t) - (the u-free term of (7))".into(), core_b - &f0),
         ],
-        &format!("B(t) = {EQ10_CORRECTED} (the printed (10) lacks - R^2, which (8) needs)"),
+        "the printed (10) lacks - R^2, which (8) needs",
+        (&[("B", EQ10)], &[("B", EQ10_CORRECTED)]),
     )
 }
 
@@ -583,6 +622,52 @@ pub fn sampling_config(
     }
 }
 
+/// The erratum of `spaeth.sampling` from the configuration found: its exact data (radii, centre,
+/// the centre's distance `delta` from the axis and direction `tau`), and `delta - (r + R)`, whose
+/// sign decides exactly (negative: the surfaces cross) where no sample was real.
+fn sampling_erratum(
+    cs: &CylinderSphere<Rational>,
+    tau: &Rational,
+    eps: &Rational,
+    n5: usize,
+    n10: usize,
+) -> Result<super::Erratum, String> {
+    use exactcheck_exact::expr::{AddOp, Expr, ExprKind};
+    let delta = cs.r.clone() + &cs.radius - eps;
+    if delta.square() != cs.axis_distance_squared() {
+        return Err(format!(
+            "the sampling configuration's centre is not at distance {delta} from the axis"
+        ));
+    }
+    let value = |q: &Rational| Expr::number(q.clone());
+    let sum = |items: Vec<(AddOp, Expr)>| Expr::new(ExprKind::Sum(items));
+    Ok(super::Erratum {
+        correction: format!(
+            "a fixed angular step that finds no root does not prove that there is no intersection: in the counter-example the surfaces cross, yet none of the {n5} samples at 5 degrees and {n10} at 10 degrees is real; decide exactly (the axis distance: |delta - r| <= R, or the sign of the tau-quartic by Sturm), or bound the step by the curve's extent"
+        ),
+        counter_example: vec![
+            Equation::named("r", value(&cs.r)),
+            Equation::named("R", value(&cs.radius)),
+            Equation::named("tau", value(tau)),
+            Equation::named("delta", value(&delta)),
+            Equation::named("d", value(&cs.center.x)),
+            Equation::named("e", value(&cs.center.y)),
+            Equation::named("f", value(&cs.center.z)),
+        ],
+        residual: vec![Equation::new(
+            sum(vec![
+                (AddOp::Plus, Expr::var("delta")),
+                (
+                    AddOp::Minus,
+                    sum(vec![(AddOp::Plus, Expr::var("r")), (AddOp::Plus, Expr::var("R"))]),
+                ),
+            ]),
+            value(&(delta.clone() - &cs.r - &cs.radius)),
+        )],
+        ..super::Erratum::default()
+    })
+}
+
 fn sampling() -> Result<Outcome, String> {
     // Aim between two 5-degree samples (2.5 degrees: tau0 ~ tan(1.25 deg)), shrink the overlap
     // until both samplings miss; the exact analysis must still see the crossing.
@@ -607,7 +692,9 @@ fn sampling() -> Result<Outcome, String> {
                     cs.center.y,
                     cs.center.z,
                     describe(&a)
-                ), erratum: None, });
+                ),
+                erratum: Some(Box::new(sampling_erratum(&cs, &tau0, &eps, n5, n10)?)),
+            });
         }
     }
     Ok(Outcome {

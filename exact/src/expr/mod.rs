@@ -69,7 +69,8 @@
 //! # Layout
 //! Here: the limits, the [`Coefficient`] trait, the AST and the errors; `parse`: the lexer and
 //! the parser; `eval`: the conversion to polynomials and the constant evaluator with the size
-//! limits; `print`: the printer; `w1`: the text of workload W1.
+//! limits; `print`: the printer; `latex`: LaTeX ([`to_latex`]) with a [`Notation`] for names, from
+//! a layout shared with `mathml` ([`to_mathml`]); `w1`: the text of workload W1.
 //!
 //! # Errors
 //! Every error is an [`ExprError`] with the byte position of the offending token or
@@ -80,12 +81,16 @@ use num_bigint::BigInt;
 use num_traits::Signed;
 
 mod eval;
+mod latex;
+mod mathml;
 mod parse;
 mod print;
 #[cfg(test)]
 mod tests;
 mod w1;
 
+pub use latex::{equation_to_latex, to_latex, Notation};
+pub use mathml::{equation_to_mathml, to_mathml};
 pub use parse::{parse_expr, parse_expr_with_calls, parse_poly};
 pub use w1::w1_text;
 
@@ -229,7 +234,8 @@ pub enum ExprKind {
     Sqrt(Box<Expr>),
     /// `name(arg, ...)`: a function call, produced only by [`parse_expr_with_calls`] and
     /// resolved by its caller; the conversions to polynomials and constants refuse it
-    /// ([`ExprError::UnknownFunction`]).
+    /// ([`ExprError::UnknownFunction`]). With the empty name it is a tuple `(a, b, ...)`
+    /// ([`Expr::tuple`]: a vector in an erratum), printed but never parsed.
     Call(String, Vec<Expr>),
 }
 
@@ -237,6 +243,25 @@ impl Expr {
     /// A node at position 0 (for building expressions in code).
     pub fn new(kind: ExprKind) -> Self {
         Expr { kind, pos: 0 }
+    }
+
+    /// The variable `name`.
+    pub fn var(name: &str) -> Self {
+        Expr::new(ExprKind::Var(name.to_string()))
+    }
+
+    /// The number `q` (a negative `q` is built as the negation of `|q|`, as the parser would).
+    pub fn number(q: Rational) -> Self {
+        if q.signum() == exactcheck_core::Sign::Negative {
+            Expr::new(ExprKind::Neg(Box::new(Expr::new(ExprKind::Number(-q)))))
+        } else {
+            Expr::new(ExprKind::Number(q))
+        }
+    }
+
+    /// The tuple `(items...)`: a call with the empty name (a vector, e.g. a control point).
+    pub fn tuple(items: Vec<Expr>) -> Self {
+        Expr::new(ExprKind::Call(String::new(), items))
     }
 }
 

@@ -6,6 +6,10 @@
 //! is **proved** when its residual expands to the zero polynomial. Because the representation is
 //! canonical, that test is `residual.is_zero()`.
 //!
+//! # Expressions
+//! [`Poly::to_expr`] turns a polynomial back into an [`crate::expr::Expr`] (coefficients through
+//! [`CoeffExpr`]), so derived polynomials print as formulas, in LaTeX and MathML too.
+//!
 //! # Variables
 //! A variable is an index ([`Var`], a `u32`); polynomials store no names. The [`Vars`] table maps
 //! names to indices for the parser ([`crate::expr`]) and the printer ([`Poly::display`]).
@@ -78,10 +82,12 @@ mod reduce;
 mod ring;
 #[cfg(test)]
 mod tests;
+mod to_expr;
 
 pub use display::PolyDisplay;
 pub use reduce::{groebner, unit_circle_relation};
 pub use ring::{Monomial, Poly, Terms};
+pub use to_expr::CoeffExpr;
 
 use exactcheck_core::Ring;
 use kernels::*;

@@ -22,8 +22,11 @@ use super::{Outcome, Verdict};
 use crate::claims::printed::{
     decimal, deviation_text, places, radical, rational, rounds_to, truncates_to,
 };
+use crate::claims::{Equation, Erratum};
 use exactcheck_core::ruled::chiang_example4;
 use exactcheck_core::{Field, Ring, Vec3};
+use exactcheck_exact::expr::{AddOp, Expr, ExprKind};
+use exactcheck_exact::poly::CoeffExpr;
 use exactcheck_exact::{Radical, Rational};
 
 /// The printed weights `w0..w3`.
@@ -295,5 +298,68 @@ pub fn check() -> Result<Outcome, String> {
             Verdict::Fails
         },
         method: "exact arithmetic in Q(sqrt 2, sqrt 6) (Radical); each printed decimal compared exactly with its rounding interval; explanations computed (exact rational arithmetic with rounded roots, truncation, division by the printed weights)".into(),
-        evidence, erratum: None, })
+        erratum: (!wrong.is_empty()).then(|| Box::new(example4_erratum(&wrong))),
+        evidence,
+    })
+}
+
+/// The erratum of `chiang.example4`: each wrong printed value (its rational value) and the exact
+/// value, the example's data (control points and vectors, exact), and `printed - exact` for each.
+fn example4_erratum(wrong: &[&Example4Row]) -> Erratum {
+    let var = |r: &Example4Row| r.name.replace('.', "_");
+    let (surface, _) = chiang_example4(Radical::sqrt_of(2), Radical::sqrt_of(6));
+    let tuple = |v: &Vec3<Radical>| Expr::tuple(vec![v.x.to_expr(), v.y.to_expr(), v.z.to_expr()]);
+    let mut counter_example: Vec<Equation> = surface
+        .base()
+        .control_points()
+        .iter()
+        .enumerate()
+        .map(|(j, p)| Equation::named(&format!("p{j}"), tuple(p)))
+        .collect();
+    counter_example.extend(
+        surface
+            .directions()
+            .control_points()
+            .iter()
+            .enumerate()
+            .map(|(i, q)| Equation::named(&format!("q{i}"), tuple(q))),
+    );
+    let printed = |r: &Example4Row| {
+        rational(&r.printed).expect("the printed digits were read as a rational by the table")
+    };
+    Erratum {
+        printed: wrong
+            .iter()
+            .map(|r| Equation::named(&var(r), printed(r).to_expr()))
+            .collect(),
+        corrected: wrong
+            .iter()
+            .map(|r| Equation::named(&var(r), r.exact.to_expr()))
+            .collect(),
+        correction: {
+            let parts: Vec<String> = wrong
+                .iter()
+                .map(|r| format!("{} = {} (printed {})", r.name, r.exact_decimal, r.printed))
+                .collect();
+            format!(
+                "the exact values correctly rounded to 6 places: {}",
+                parts.join(", ")
+            )
+        },
+        counter_example,
+        residual: wrong
+            .iter()
+            .map(|r| {
+                let p = radical(&printed(r));
+                Equation::new(
+                    Expr::new(ExprKind::Sum(vec![
+                        (AddOp::Plus, p.to_expr()),
+                        (AddOp::Minus, Expr::var(&var(r))),
+                    ])),
+                    p.sub_ref(&r.exact).to_expr(),
+                )
+            })
+            .collect(),
+        notation: Vec::new(),
+    }
 }

@@ -29,11 +29,13 @@ use super::{example_curve, q};
 use crate::claims::printed::{
     decimal, deviation_text, inv_pow10, places, radical, rational, rounds_to, ties, truncates_to,
 };
-use crate::claims::{Outcome, Verdict};
+use crate::claims::{Equation, Erratum, Outcome, Verdict};
 use exactcheck_core::ph::{Cusp, PhCurve, RadiusBound, Side};
 use exactcheck_core::roots::{common_unit_roots, gcd, refine, IsolatedRoot};
 use exactcheck_core::{Bernstein, OrderedField, Ring, Vec3};
+use exactcheck_exact::expr::{AddOp, Expr, ExprKind, MulOp};
 use exactcheck_exact::planar::{self_intersections_xy, Budget};
+use exactcheck_exact::poly::CoeffExpr;
 use exactcheck_exact::Rational;
 
 /// The printed control points `p1, p2, p3` (seed 004: "p1 = (33, 20/3, 0), p2 = (79/3, 119/3,
@@ -290,7 +292,55 @@ pub fn ph_normals_with(printed: &[[&str; 3]; 3]) -> Result<Outcome, String> {
             Verdict::Fails
         },
         method: "exact rational arithmetic: V's control vectors (-h_iy, h_ix, sigma_i) from the hodograph and speed coefficients; every sign pattern of the printed non-zero entries compared with the left and the right normal fields".into(),
-        evidence, erratum: None, })
+        erratum: (wrong > 0 || !all45).then(|| {
+            let differ: Vec<usize> = (0..3).filter(|&i| p[i] != left[i]).collect();
+            let hodograph = (0..3).map(|i| {
+                Equation::named(
+                    &format!("h{i}"),
+                    Expr::tuple(vec![hx.coeffs()[i].to_expr(), hy.coeffs()[i].to_expr()]),
+                )
+            });
+            let speed =
+                (0..3).map(|i| Equation::named(&format!("sigma{i}"), sigma.coeffs()[i].to_expr()));
+            Box::new(Erratum {
+                printed: differ
+                    .iter()
+                    .map(|&i| Equation::named(&format!("q{i}"), tuple3(&p[i])))
+                    .collect(),
+                corrected: differ
+                    .iter()
+                    .map(|&i| Equation::named(&format!("q{i}"), tuple3(&left[i])))
+                    .collect(),
+                correction: format!(
+                    "the control vectors of the rotated normal field V(t) = (-Y'(t), X'(t), sigma(t)) are (-h_iy, h_ix, sigma_i) from the hodograph and speed coefficients; {} of 3 printed vectors differ from them ({})",
+                    differ.len(),
+                    if magnitudes_equal { "only in signs" } else { "in magnitudes too" }
+                ),
+                counter_example: hodograph.chain(speed).collect(),
+                residual: differ
+                    .iter()
+                    .map(|&i| {
+                        let diff: [Rational; 3] =
+                            std::array::from_fn(|k| p[i][k].sub_ref(&left[i][k]));
+                        Equation::new(
+                            Expr::new(ExprKind::Sum(vec![
+                                (AddOp::Plus, tuple3(&p[i])),
+                                (AddOp::Minus, tuple3(&left[i])),
+                            ])),
+                            tuple3(&diff),
+                        )
+                    })
+                    .collect(),
+                notation: Vec::new(),
+            })
+        }),
+        evidence,
+    })
+}
+
+/// A triple as a tuple expression.
+fn tuple3(p: &[Rational; 3]) -> Expr {
+    Expr::tuple(p.iter().map(CoeffExpr::to_expr).collect())
 }
 
 // ------------------------------------------------------------------------------ ph_radius
@@ -605,7 +655,32 @@ pub(super) fn radius_check() -> Result<Outcome, String> {
             Verdict::Fails
         },
         method: "exact: smallest radius by PhCurve::min_radius (candidate certified by root isolation of sigma^2 - 2 m w); cusps = zeros of sigma^2 - 2 r w with multiplicity, cross-checked by the gcd of the rational offset's derivative numerators".into(),
-        evidence, erratum: None, })
+        erratum: (!failures.is_empty()).then(|| {
+            let int = |k: usize| Expr::number(Rational::from_integer(k as i64));
+            Box::new(Erratum {
+                printed: vec![Equation::named("rho_min", printed.to_expr())],
+                corrected: vec![Equation::named("rho_min", rho.to_expr())],
+                correction: corrected
+                    .strip_prefix("Corrected: ")
+                    .unwrap_or(&corrected)
+                    .to_string(),
+                counter_example: vec![
+                    Equation::named("r", printed.to_expr()),
+                    Equation::named("n_cusps", int(at_printed.len())),
+                    Equation::named("n_crossings", int(at_printed_crossings)),
+                ],
+                residual: vec![Equation::new(
+                    Expr::new(ExprKind::Sum(vec![
+                        (AddOp::Plus, Expr::var("rho_min")),
+                        (AddOp::Minus, Expr::var("r")),
+                    ])),
+                    rho.sub_ref(&printed).to_expr(),
+                )],
+                notation: vec![("rho_min".into(), "\\rho_{min}".into())],
+            })
+        }),
+        evidence,
+    })
 }
 
 // ------------------------------------------------------------------------------ ph_offsets
@@ -815,7 +890,105 @@ pub(super) fn offsets_check() -> Result<Outcome, String> {
             Verdict::Fails
         },
         method: "exact rational offsets (Chiang's theorem on the PH curve's ruled surface); each printed decimal compared exactly with its rounding interval; readings computed (truncation, magnitude)".into(),
-        evidence, erratum: None, })
+        erratum: (wrong > 0)
+            .then(|| offsets_erratum(&rows, &points, &q0, &sigma0))
+            .transpose()?
+            .map(Box::new),
+        evidence,
+    })
+}
+
+/// The erratum of `chiang.ph_offsets`: for every printed `r` with a wrong value the printed and
+/// the exact first control point `r0(r)`, the formula it follows (`p0 + (r / sigma_0) q0`, with
+/// the computed data), the first wrong value as the counter-example and `printed - exact` for
+/// each wrong value.
+fn offsets_erratum(
+    rows: &[OffsetRow],
+    p0: &Vec3<Rational>,
+    q0: &Vec3<Rational>,
+    sigma0: &Rational,
+) -> Result<Erratum, String> {
+    let wrong: Vec<&OffsetRow> = rows.iter().filter(|r| !r.correctly_rounded).collect();
+    let mut rs: Vec<&str> = wrong.iter().map(|r| r.r.as_str()).collect();
+    rs.dedup();
+    let tuple = |v: &Vec3<Rational>| tuple3(&coords(v));
+    let at = |r: &str| -> Result<Expr, String> {
+        Ok(Expr::new(ExprKind::Call(
+            "r0".into(),
+            vec![rational(r)?.to_expr()],
+        )))
+    };
+    let point = |r: &str, exact: bool| -> Result<Expr, String> {
+        let coords = ["r0.x", "r0.y", "r0.z"].map(|name| {
+            rows.iter()
+                .find(|row| row.r == r && row.name == name)
+                .ok_or_else(|| format!("r = {r}: no row {name}"))
+                .and_then(|row| {
+                    if exact {
+                        Ok(row.exact.to_expr())
+                    } else {
+                        rational(&row.printed).map(|q| q.to_expr())
+                    }
+                })
+        });
+        Ok(Expr::tuple(coords.into_iter().collect::<Result<_, _>>()?))
+    };
+    let mut printed = Vec::new();
+    let mut corrected = vec![Equation::new(
+        Expr::new(ExprKind::Call("r0".into(), vec![Expr::var("r")])),
+        Expr::new(ExprKind::Sum(vec![
+            (AddOp::Plus, tuple(p0)),
+            (
+                AddOp::Plus,
+                Expr::new(ExprKind::Product(vec![
+                    (MulOp::Times, Expr::var("r")),
+                    (MulOp::Divide, sigma0.to_expr()),
+                    (MulOp::Times, tuple(q0)),
+                ])),
+            ),
+        ])),
+    )];
+    for r in &rs {
+        printed.push(Equation::new(at(r)?, point(r, false)?));
+        corrected.push(Equation::new(at(r)?, point(r, true)?));
+    }
+    let first = wrong.first().ok_or("no wrong value")?;
+    let residual = wrong
+        .iter()
+        .map(|row| {
+            let p = rational(&row.printed)?;
+            Ok(Equation::new(
+                Expr::new(ExprKind::Sum(vec![
+                    (AddOp::Plus, p.to_expr()),
+                    (AddOp::Minus, row.exact.to_expr()),
+                ])),
+                p.sub_ref(&row.exact).to_expr(),
+            ))
+        })
+        .collect::<Result<Vec<_>, String>>()?;
+    let parts: Vec<String> = wrong
+        .iter()
+        .map(|r| {
+            format!(
+                "for r = {}, {} = {} (printed {})",
+                r.r, r.name, r.exact_decimal, r.printed
+            )
+        })
+        .collect();
+    Ok(Erratum {
+        printed,
+        corrected,
+        correction: format!(
+            "the exact values correctly rounded to 6 places: {}",
+            parts.join("; ")
+        ),
+        counter_example: vec![
+            Equation::named("r", rational(&first.r)?.to_expr()),
+            Equation::named(&first.name.replace('.', "_"), first.exact.to_expr()),
+        ],
+        residual,
+        notation: vec![("r0".into(), "r_0".into())],
+    })
 }
 
 #[cfg(test)]

@@ -6,6 +6,8 @@
 
 use super::converse::stereographic_point;
 use super::*;
+use crate::claims::{Equation, Erratum};
+use exactcheck_exact::expr::{AddOp, Expr, ExprKind};
 
 /// The numbers of points `N` and the point sets per `N` of the interpolation claims.
 const INTERPOLATION_N: core::ops::RangeInclusive<usize> = 2..=8;
@@ -239,11 +241,46 @@ fn degree_verdict(rows: &[DegreeRow]) -> Outcome {
             evidence: format!(
                 "counter-example: N = {} points, the delta-construction needs image degree {} and plain stereographic projection {} (not fewer). {summary}. Corrected claim: fewer degrees than plain stereographic projection only for the N listed first",
                 r.n, r.delta, r.sigma_polynomial
-            ), erratum: None, },
+            ),
+            erratum: Some(Box::new(degree_erratum(r, &list(&|n| fewer(n, &plain)), &ns))),
+        },
         None => Outcome {
             verdict: Verdict::Holds,
             method: "exact interpolation by both constructions, degrees compared".into(),
             evidence: summary, erratum: None, },
+    }
+}
+
+/// The erratum of `juttler.interpolation_degree` from the computed degrees: the counter-example
+/// instance (`N`, both image degrees), the difference of the degrees there, and the statement
+/// restricted to the N where it held on every instance.
+fn degree_erratum(r: &DegreeRow, fewer_for: &str, ns: &[usize]) -> Erratum {
+    let int = |k: usize| Expr::number(Rational::from_integer(k as i64));
+    let tried: Vec<String> = ns.iter().map(|n| n.to_string()).collect();
+    Erratum {
+        correction: format!(
+            "the interpolating curves on K need fewer degrees than with plain stereographic projection only for N in {{{fewer_for}}} (of N = {} tried); for N = {} points the delta-construction needs image degree {}, plain stereographic projection {}",
+            tried.join(", "),
+            r.n,
+            r.delta,
+            r.sigma_polynomial
+        ),
+        counter_example: vec![
+            Equation::named("N", int(r.n)),
+            Equation::named("deg_delta", int(r.delta)),
+            Equation::named("deg_sigma", int(r.sigma_polynomial)),
+        ],
+        residual: vec![Equation::new(
+            Expr::new(ExprKind::Sum(vec![
+                (AddOp::Plus, Expr::var("deg_sigma")),
+                (AddOp::Minus, Expr::var("deg_delta")),
+            ])),
+            Expr::number(
+                Rational::from_integer(r.sigma_polynomial as i64)
+                    - Rational::from_integer(r.delta as i64),
+            ),
+        )],
+        ..Erratum::default()
     }
 }
 

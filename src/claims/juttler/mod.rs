@@ -107,12 +107,17 @@ where
         .collect())
 }
 
-fn decide<C: exactcheck_exact::prove::PointField + std::fmt::Display>(
+fn decide<
+    C: exactcheck_exact::prove::PointField + std::fmt::Display + exactcheck_exact::poly::CoeffExpr,
+>(
     sym: &Symbols,
     residuals: &[(String, Poly<C>)],
     relations: &[Poly<C>],
     method: &str,
-) -> Outcome {
+) -> Outcome
+where
+    C::Value: exactcheck_exact::poly::CoeffExpr,
+{
     let r: Vec<(&str, Poly<C>)> = residuals
         .iter()
         .map(|(w, p)| (w.as_str(), p.clone()))

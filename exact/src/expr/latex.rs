@@ -1,0 +1,838 @@
+//! LaTeX from expression trees, with a [`Notation`] for variable names.
+//!
+//! # One layout, two printers
+//! An [`Expr`] is first turned into a small **layout tree** (`Layout`: rows, numbers,
+//! identifiers, operators, fractions, roots, scripts, parentheses) in which every decision about
+//! the mathematics is taken once: which products become fractions, where the precedence of the
+//! operators needs parentheses, where a thin space and where a `\cdot` separates factors, how a
+//! power of `cos beta` is written (`\cos^{2}\beta`). The LaTeX printer here ([`to_latex`]) and the
+//! MathML printer ([`super::to_mathml`]) only spell that layout, so the two always show the same
+//! formula.
+//!
+//! # Printing rules
+//! * a number `n/d` is `\frac{n}{d}`, its sign outside (`-\frac{3}{4}`); integers as digits;
+//! * a product with divisions is `\frac{numerator}{denominator}` (the sign of a leading negative
+//!   factor pulled in front); the factors of a product are juxtaposed with a thin space `\,`,
+//!   except that a factor starting with a number is separated by `\cdot` (`2\cdot 3`, `x\cdot 2`);
+//! * `\sqrt{..}`, `x^{k}`; `\left( .. \right)` only where precedence needs it: a sum as a factor
+//!   or operand, a negative term after `+`/`-` or as a later factor, any compound base of a
+//!   power;
+//! * a function call `f(a, b)` ([`ExprKind::Call`]) is `\operatorname{f}\left(a, b\right)` (or,
+//!   when the notation lists `f`, its entry: `r_{0}\left(3\right)`), and a call with the empty
+//!   name is a tuple, `\left(a, b\right)` (a vector in an erratum);
+//! * an equation is `lhs = rhs` ([`equation_to_latex`]).
+//!
+//! # Names
+//! [`Notation`] maps a variable name to LaTeX (`cb` -> `\cos\beta`). The LaTeX given for a name
+//! is read into a small structured form (function names, Greek letters, identifiers, digits,
+//! one subscript), so MathML is derived from the same entry. Unlisted names follow default rules:
+//! Greek letter names (`beta` -> `\beta`, `Gamma` -> `\Gamma`), trailing digits as a subscript
+//! (`p0` -> `p_{0}`, `q12` -> `q_{12}`), `a_b` -> `a_{b}` (with `q0_x` -> `q_{0,x}`), one letter as
+//! is, any other name as an italic word (`\mathit{ab}`).
+//!
+//! Hand-written: the two output languages are tiny and fixed, and the layout decisions above are
+//! the point of the module; a general typesetting crate would not know the notation of the papers.
+
+use super::{AddOp, Expr, ExprKind, MulOp};
+use crate::rational::Rational;
+use exactcheck_core::Sign;
+use std::collections::HashMap;
+
+// ------------------------------------------------------------------------------ names
+
+/// Function names LaTeX has a command for (`\cos`); others print as `\operatorname{..}`.
+const FUNCTIONS: [&str; 12] = [
+    "sin", "cos", "tan", "cot", "sec", "csc", "log", "ln", "exp", "det", "min", "max",
+];
+
+/// Greek letters by name with their Unicode characters (for MathML). `omicron` is absent: LaTeX
+/// has no command for it.
+const GREEK: [(&str, char); 35] = [
+    ("alpha", 'α'),
+    ("beta", 'β'),
+    ("gamma", 'γ'),
+    ("delta", 'δ'),
+    ("epsilon", 'ϵ'),
+    ("zeta", 'ζ'),
+    ("eta", 'η'),
+    ("theta", 'θ'),
+    ("iota", 'ι'),
+    ("kappa", 'κ'),
+    ("lambda", 'λ'),
+    ("mu", 'μ'),
+    ("nu", 'ν'),
+    ("xi", 'ξ'),
+    ("pi", 'π'),
+    ("rho", 'ρ'),
+    ("sigma", 'σ'),
+    ("tau", 'τ'),
+    ("upsilon", 'υ'),
+    ("phi", 'ϕ'),
+    ("chi", 'χ'),
+    ("psi", 'ψ'),
+    ("omega", 'ω'),
+    ("varphi", 'φ'),
+    ("vartheta", 'ϑ'),
+    ("Gamma", 'Γ'),
+    ("Delta", 'Δ'),
+    ("Theta", 'Θ'),
+    ("Lambda", 'Λ'),
+    ("Xi", 'Ξ'),
+    ("Pi", 'Π'),
+    ("Sigma", 'Σ'),
+    ("Upsilon", 'Υ'),
+    ("Phi", 'Φ'),
+    ("Omega", 'Ω'),
+];
+
+/// The Unicode character of a Greek letter name.
+pub(super) fn greek_char(name: &str) -> Option<char> {
+    GREEK.iter().find(|(n, _)| *n == name).map(|(_, c)| *c)
+}
+
+/// One piece of a variable's printed name.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(super) enum Glyph {
+    /// An upright function name applied to what follows (`\cos`, `\operatorname{arc}`).
+    Function(String),
+    /// A Greek letter by name (`beta`).
+    Greek(String),
+    /// An italic identifier: one letter, or a word (`\mathit{ab}`).
+    Ident(String),
+    /// Upright digits.
+    Digits(String),
+    /// A comma (between two parts of a subscript).
+    Comma,
+}
+
+/// A variable's printed name: glyphs, and a subscript on the last of them.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(super) struct Symbol {
+    pub(super) body: Vec<Glyph>,
+    pub(super) sub: Vec<Glyph>,
+}
+
+/// How variable names are printed: explicit entries (name -> LaTeX, read into a structured form
+/// so that MathML comes from the same entry) and the default rules of the module documentation
+/// for every other name.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Notation {
+    entries: HashMap<String, Symbol>,
+}
+
+impl Notation {
+    /// No entries: every name by the default rules.
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// A notation with these entries ([`Notation::set`] for each).
+    ///
+    /// # Errors
+    /// The first entry whose LaTeX is outside the accepted subset.
+    pub fn from_pairs<N: AsRef<str>, L: AsRef<str>>(
+        pairs: impl IntoIterator<Item = (N, L)>,
+    ) -> Result<Self, String> {
+        let mut n = Notation::new();
+        for (name, latex) in pairs {
+            n.set(name.as_ref(), latex.as_ref())?;
+        }
+        Ok(n)
+    }
+
+    /// Prints the variable `name` as `latex`, which may use: letters and digits, Greek letters
+    /// (`\beta`), function names (`\cos`, `\operatorname{arc}`), `\mathit{word}`, one subscript
+    /// `_{..}` (or `_x`) at the end, and spaces.
+    ///
+    /// # Errors
+    /// A command or character outside that subset, or an empty form.
+    pub fn set(&mut self, name: &str, latex: &str) -> Result<(), String> {
+        let sym =
+            parse_symbol(latex).map_err(|e| format!("notation for {name:?}: {e} in {latex:?}"))?;
+        self.entries.insert(name.to_string(), sym);
+        Ok(())
+    }
+
+    /// The structured name of a variable (its entry, or the default rules).
+    pub(super) fn symbol(&self, name: &str) -> Symbol {
+        self.entries
+            .get(name)
+            .cloned()
+            .unwrap_or_else(|| default_symbol(name))
+    }
+
+    /// The LaTeX of a variable name.
+    pub fn latex(&self, name: &str) -> String {
+        let mut out = String::new();
+        write_latex(&symbol_layout(&self.symbol(name)), &mut out);
+        out
+    }
+}
+
+/// The default rules (module documentation).
+fn default_symbol(name: &str) -> Symbol {
+    if let Some(k) = name.find('_').filter(|&k| k > 0 && k + 1 < name.len()) {
+        let base = default_symbol(&name[..k]);
+        let rest = default_symbol(&name[k + 1..]);
+        let mut sub = base.sub;
+        if !sub.is_empty() {
+            sub.push(Glyph::Comma);
+        }
+        sub.extend(rest.body);
+        if !rest.sub.is_empty() {
+            sub.push(Glyph::Comma);
+            sub.extend(rest.sub);
+        }
+        return Symbol {
+            body: base.body,
+            sub,
+        };
+    }
+    let stem = name.trim_end_matches(|c: char| c.is_ascii_digit());
+    if !stem.is_empty() && stem.len() < name.len() && !stem.ends_with('_') {
+        let base = default_symbol(stem);
+        let mut sub = base.sub;
+        if !sub.is_empty() {
+            sub.push(Glyph::Comma);
+        }
+        sub.push(Glyph::Digits(name[stem.len()..].to_string()));
+        return Symbol {
+            body: base.body,
+            sub,
+        };
+    }
+    let glyph = if greek_char(name).is_some() {
+        Glyph::Greek(name.to_string())
+    } else if name.chars().all(|c| c.is_ascii_digit()) && !name.is_empty() {
+        Glyph::Digits(name.to_string())
+    } else {
+        Glyph::Ident(name.to_string())
+    };
+    Symbol {
+        body: vec![glyph],
+        sub: Vec::new(),
+    }
+}
+
+/// Reads the LaTeX subset of [`Notation::set`].
+fn parse_symbol(latex: &str) -> Result<Symbol, String> {
+    let mut body = Vec::new();
+    let mut sub = Vec::new();
+    let mut rest = latex;
+    while let Some(c) = rest.chars().next() {
+        if c.is_whitespace() {
+            rest = &rest[c.len_utf8()..];
+        } else if c == '_' {
+            if !sub.is_empty() || body.is_empty() {
+                return Err("a subscript without a base or a second subscript".into());
+            }
+            let after = &rest[1..];
+            let (inner, tail) = if let Some(inner) = after.strip_prefix('{') {
+                let end = inner.find('}').ok_or("an unclosed '{'")?;
+                (&inner[..end], &inner[end + 1..])
+            } else {
+                let ch = after.chars().next().ok_or("an empty subscript")?;
+                (&after[..ch.len_utf8()], &after[ch.len_utf8()..])
+            };
+            let s = parse_symbol(inner)?;
+            if !s.sub.is_empty() {
+                return Err("a nested subscript".into());
+            }
+            sub = s.body;
+            rest = tail;
+        } else if !sub.is_empty() {
+            return Err("text after the subscript".into());
+        } else if let Some(after) = rest.strip_prefix('\\') {
+            let word_len = after
+                .find(|c: char| !c.is_ascii_alphabetic())
+                .unwrap_or(after.len());
+            let word = &after[..word_len];
+            let tail = &after[word_len..];
+            if word == "operatorname" || word == "mathit" {
+                let inner = tail.strip_prefix('{').ok_or("'{' expected")?;
+                let end = inner.find('}').ok_or("an unclosed '{'")?;
+                let text = &inner[..end];
+                if text.is_empty() || !text.chars().all(|c| c.is_ascii_alphanumeric()) {
+                    return Err(format!("the word {text:?}"));
+                }
+                body.push(if word == "mathit" {
+                    Glyph::Ident(text.into())
+                } else {
+                    Glyph::Function(text.into())
+                });
+                rest = &inner[end + 1..];
+            } else if FUNCTIONS.contains(&word) {
+                body.push(Glyph::Function(word.into()));
+                rest = tail;
+            } else if greek_char(word).is_some() {
+                body.push(Glyph::Greek(word.into()));
+                rest = tail;
+            } else if word.is_empty() && tail.starts_with(',') {
+                rest = &tail[1..];
+            } else {
+                return Err(format!("the command \\{word}"));
+            }
+        } else if c.is_ascii_alphabetic() {
+            body.push(Glyph::Ident(c.to_string()));
+            rest = &rest[1..];
+        } else if c.is_ascii_digit() {
+            let end = rest
+                .find(|c: char| !c.is_ascii_digit())
+                .unwrap_or(rest.len());
+            body.push(Glyph::Digits(rest[..end].into()));
+            rest = &rest[end..];
+        } else if c == ',' {
+            body.push(Glyph::Comma);
+            rest = &rest[1..];
+        } else {
+            return Err(format!("the character {c:?}"));
+        }
+    }
+    if body.is_empty() {
+        return Err("an empty name".into());
+    }
+    Ok(Symbol { body, sub })
+}
+
+// ------------------------------------------------------------------------------ layout
+
+/// An operator or separator of the layout.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Op {
+    Plus,
+    Minus,
+    /// `\cdot` between factors.
+    Dot,
+    /// Juxtaposition: a thin space in LaTeX, invisible times in MathML.
+    Juxtapose,
+    /// Function application after a function name (no LaTeX; `&#x2061;` in MathML).
+    Apply,
+    Equals,
+    Comma,
+    /// A comma inside a name (`q_{0,x}`).
+    TightComma,
+}
+
+/// The layout tree both printers spell (module documentation).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(super) enum Layout {
+    Row(Vec<Layout>),
+    /// Digits.
+    Num(String),
+    /// An italic identifier (one letter or a word).
+    Ident(String),
+    /// A Greek letter by name.
+    Greek(String),
+    /// An upright function name.
+    Func(String),
+    Op(Op),
+    Frac(Box<Layout>, Box<Layout>),
+    Sqrt(Box<Layout>),
+    Sup(Box<Layout>, Box<Layout>),
+    Sub(Box<Layout>, Box<Layout>),
+    /// In parentheses.
+    Fenced(Box<Layout>),
+}
+
+fn glyph_layout(g: &Glyph) -> Layout {
+    match g {
+        Glyph::Function(f) => Layout::Func(f.clone()),
+        Glyph::Greek(n) => Layout::Greek(n.clone()),
+        Glyph::Ident(s) => Layout::Ident(s.clone()),
+        Glyph::Digits(d) => Layout::Num(d.clone()),
+        Glyph::Comma => Layout::Op(Op::TightComma),
+    }
+}
+
+/// Glyphs in a row, a function name followed by the application operator.
+fn glyphs_layout(glyphs: &[Glyph]) -> Vec<Layout> {
+    let mut out = Vec::new();
+    for (k, g) in glyphs.iter().enumerate() {
+        out.push(glyph_layout(g));
+        if matches!(g, Glyph::Function(_)) && k + 1 < glyphs.len() {
+            out.push(Layout::Op(Op::Apply));
+        }
+    }
+    out
+}
+
+fn row(mut items: Vec<Layout>) -> Layout {
+    if items.len() == 1 {
+        items.pop().expect("one item")
+    } else {
+        Layout::Row(items)
+    }
+}
+
+/// The layout of a name, with an optional exponent (a function-led name takes the exponent on
+/// the function: `\cos^{2}\beta`).
+fn symbol_layout_pow(sym: &Symbol, exponent: Option<Layout>) -> Layout {
+    let mut body = glyphs_layout(&sym.body);
+    if !sym.sub.is_empty() {
+        let last = body.pop().expect("a symbol has a body");
+        body.push(Layout::Sub(
+            Box::new(last),
+            Box::new(row(glyphs_layout(&sym.sub))),
+        ));
+    }
+    match exponent {
+        None => row(body),
+        Some(e) => {
+            if matches!(sym.body.first(), Some(Glyph::Function(_))) && sym.body.len() > 1 {
+                let f = body.remove(0);
+                body.insert(0, Layout::Sup(Box::new(f), Box::new(e)));
+                row(body)
+            } else if body.len() == 1 {
+                Layout::Sup(Box::new(body.pop().expect("one item")), Box::new(e))
+            } else {
+                Layout::Sup(Box::new(Layout::Fenced(Box::new(row(body)))), Box::new(e))
+            }
+        }
+    }
+}
+
+fn symbol_layout(sym: &Symbol) -> Layout {
+    symbol_layout_pow(sym, None)
+}
+
+/// Whether the printed expression begins with a minus sign.
+fn starts_with_minus(e: &Expr) -> bool {
+    match &e.kind {
+        ExprKind::Neg(_) => true,
+        ExprKind::Number(q) => q.signum() == Sign::Negative,
+        ExprKind::Sum(items) => items
+            .first()
+            .is_some_and(|(op, x)| *op == AddOp::Minus || starts_with_minus(x)),
+        ExprKind::Product(items) => items
+            .first()
+            .is_some_and(|(op, x)| *op == MulOp::Times && starts_with_minus(x)),
+        _ => false,
+    }
+}
+
+/// Whether the printed expression begins with a digit (then a preceding factor is separated by
+/// `\cdot`).
+fn starts_with_number(e: &Expr) -> bool {
+    match &e.kind {
+        ExprKind::Number(_) => true,
+        ExprKind::Pow(b, _) => starts_with_number(b),
+        ExprKind::Product(items) => {
+            // A product with divisions is a fraction: it starts with its bar, not a digit.
+            items.iter().all(|(op, _)| *op == MulOp::Times)
+                && items.first().is_some_and(|(_, x)| starts_with_number(x))
+        }
+        _ => false,
+    }
+}
+
+fn number_layout(q: &Rational) -> Layout {
+    let neg = q.signum() == Sign::Negative;
+    let (n, d) = (q.numer(), q.denom());
+    let n = if neg { -n } else { n };
+    let mag = if q.is_integer() {
+        Layout::Num(n.to_string())
+    } else {
+        Layout::Frac(
+            Box::new(Layout::Num(n.to_string())),
+            Box::new(Layout::Num(d.to_string())),
+        )
+    };
+    if neg {
+        Layout::Row(vec![Layout::Op(Op::Minus), mag])
+    } else {
+        mag
+    }
+}
+
+fn fenced(l: Layout) -> Layout {
+    Layout::Fenced(Box::new(l))
+}
+
+/// Factors juxtaposed (`\,`, or `\cdot` before a number); sums and later negative factors in
+/// parentheses.
+fn factors_layout(factors: &[&Expr], n: &Notation) -> Layout {
+    let mut out = Vec::new();
+    for (k, f) in factors.iter().enumerate() {
+        let l = layout(f, n);
+        let needs = matches!(f.kind, ExprKind::Sum(_)) || (k > 0 && starts_with_minus(f));
+        if k > 0 {
+            out.push(Layout::Op(if starts_with_number(f) && !needs {
+                Op::Dot
+            } else {
+                Op::Juxtapose
+            }));
+        }
+        out.push(if needs { fenced(l) } else { l });
+    }
+    row(out)
+}
+
+/// The layout of an expression (module documentation).
+pub(super) fn layout(e: &Expr, n: &Notation) -> Layout {
+    match &e.kind {
+        ExprKind::Number(q) => number_layout(q),
+        ExprKind::Var(name) => symbol_layout(&n.symbol(name)),
+        ExprKind::Neg(x) => {
+            let inner = layout(x, n);
+            let needs = matches!(x.kind, ExprKind::Sum(_)) || starts_with_minus(x);
+            Layout::Row(vec![
+                Layout::Op(Op::Minus),
+                if needs { fenced(inner) } else { inner },
+            ])
+        }
+        ExprKind::Sum(items) => {
+            let mut out = Vec::new();
+            for (k, (op, x)) in items.iter().enumerate() {
+                match (k, op) {
+                    (0, AddOp::Plus) => {}
+                    (_, AddOp::Plus) => out.push(Layout::Op(Op::Plus)),
+                    (_, AddOp::Minus) => out.push(Layout::Op(Op::Minus)),
+                }
+                let l = layout(x, n);
+                let needs = matches!(x.kind, ExprKind::Sum(_))
+                    || ((k > 0 || *op == AddOp::Minus) && starts_with_minus(x));
+                out.push(if needs { fenced(l) } else { l });
+            }
+            row(out)
+        }
+        ExprKind::Product(items) => {
+            let num: Vec<&Expr> = items
+                .iter()
+                .filter(|(op, _)| *op == MulOp::Times)
+                .map(|(_, x)| x)
+                .collect();
+            let den: Vec<&Expr> = items
+                .iter()
+                .filter(|(op, _)| *op == MulOp::Divide)
+                .map(|(_, x)| x)
+                .collect();
+            if den.is_empty() {
+                return factors_layout(&num, n);
+            }
+            // Pull the sign of a leading negative factor in front of the fraction.
+            let mut num = num;
+            let mut negated = None;
+            let mut negative = false;
+            if let Some(first) = num.first() {
+                match &first.kind {
+                    ExprKind::Neg(x) => {
+                        negative = true;
+                        num[0] = x;
+                    }
+                    ExprKind::Number(q) if q.signum() == Sign::Negative => {
+                        negative = true;
+                        negated = Some(Expr::new(ExprKind::Number(-q.clone())));
+                    }
+                    _ => {}
+                }
+            }
+            if let Some(abs) = &negated {
+                num[0] = abs;
+            }
+            let one = Expr::new(ExprKind::Number(Rational::from_integer(1)));
+            let num_l = if num.is_empty() || (num.len() == 1 && is_one(num[0])) {
+                layout(&one, n)
+            } else if num.len() == 1 {
+                layout(num[0], n)
+            } else {
+                factors_layout(&num, n)
+            };
+            let den_l = if den.len() == 1 {
+                layout(den[0], n)
+            } else {
+                factors_layout(&den, n)
+            };
+            let frac = Layout::Frac(Box::new(num_l), Box::new(den_l));
+            if negative {
+                Layout::Row(vec![Layout::Op(Op::Minus), frac])
+            } else {
+                frac
+            }
+        }
+        ExprKind::Pow(base, exp) => {
+            let e = layout(exp, n);
+            if let ExprKind::Var(name) = &base.kind {
+                return symbol_layout_pow(&n.symbol(name), Some(e));
+            }
+            let b = layout(base, n);
+            let simple = matches!(&base.kind, ExprKind::Number(q) if q.is_integer() && q.signum() != Sign::Negative)
+                || matches!(base.kind, ExprKind::Call(..));
+            Layout::Sup(Box::new(if simple { b } else { fenced(b) }), Box::new(e))
+        }
+        ExprKind::Sqrt(x) => Layout::Sqrt(Box::new(layout(x, n))),
+        ExprKind::Call(name, args) => {
+            let mut inner = Vec::new();
+            for (k, a) in args.iter().enumerate() {
+                if k > 0 {
+                    inner.push(Layout::Op(Op::Comma));
+                }
+                inner.push(layout(a, n));
+            }
+            let args_l = fenced(row(inner));
+            if name.is_empty() {
+                args_l
+            } else if let Some(sym) = n.entries.get(name) {
+                Layout::Row(vec![symbol_layout(sym), Layout::Op(Op::Apply), args_l])
+            } else {
+                Layout::Row(vec![
+                    Layout::Func(name.clone()),
+                    Layout::Op(Op::Apply),
+                    args_l,
+                ])
+            }
+        }
+    }
+}
+
+fn is_one(e: &Expr) -> bool {
+    matches!(&e.kind, ExprKind::Number(q) if q.is_integer() && q.numer() == 1.into())
+}
+
+// ------------------------------------------------------------------------------ LaTeX
+
+/// Appends `s`, with a space when `out` ends in a control word and `s` starts with a letter
+/// (`\cos t`, not `\cost`).
+fn push_tex(out: &mut String, s: &str) {
+    if s.starts_with(|c: char| c.is_ascii_alphabetic()) {
+        let tail = out.trim_end_matches(|c: char| c.is_ascii_alphabetic());
+        if tail.len() < out.len() && tail.ends_with('\\') {
+            out.push(' ');
+        }
+    }
+    out.push_str(s);
+}
+
+fn escape_word(s: &str) -> String {
+    s.replace('_', "\\_")
+}
+
+fn write_latex(l: &Layout, out: &mut String) {
+    match l {
+        Layout::Row(items) => items.iter().for_each(|x| write_latex(x, out)),
+        Layout::Num(d) => push_tex(out, d),
+        Layout::Ident(s) => {
+            if s.chars().count() == 1 {
+                push_tex(out, s)
+            } else {
+                push_tex(out, &format!("\\mathit{{{}}}", escape_word(s)))
+            }
+        }
+        Layout::Greek(g) => push_tex(out, &format!("\\{g}")),
+        Layout::Func(f) => {
+            if FUNCTIONS.contains(&f.as_str()) {
+                push_tex(out, &format!("\\{f}"))
+            } else {
+                push_tex(out, &format!("\\operatorname{{{}}}", escape_word(f)))
+            }
+        }
+        Layout::Op(op) => out.push_str(match op {
+            Op::Plus => " + ",
+            Op::Minus => {
+                if out.is_empty() || out.ends_with(['{', '(', ' ']) {
+                    "-"
+                } else {
+                    " - "
+                }
+            }
+            Op::Dot => " \\cdot ",
+            Op::Juxtapose => "\\,",
+            Op::Apply => "",
+            Op::Equals => " = ",
+            Op::Comma => ", ",
+            Op::TightComma => ",",
+        }),
+        Layout::Frac(a, b) => {
+            out.push_str("\\frac{");
+            write_latex(a, out);
+            out.push_str("}{");
+            write_latex(b, out);
+            out.push('}');
+        }
+        Layout::Sqrt(x) => {
+            out.push_str("\\sqrt{");
+            write_latex(x, out);
+            out.push('}');
+        }
+        Layout::Sup(b, e) => {
+            write_latex(b, out);
+            out.push_str("^{");
+            write_latex(e, out);
+            out.push('}');
+        }
+        Layout::Sub(b, s) => {
+            write_latex(b, out);
+            out.push_str("_{");
+            write_latex(s, out);
+            out.push('}');
+        }
+        Layout::Fenced(x) => {
+            out.push_str("\\left(");
+            write_latex(x, out);
+            out.push_str("\\right)");
+        }
+    }
+}
+
+/// The expression as LaTeX math (no `$`), names by `notation` (module documentation).
+pub fn to_latex(e: &Expr, notation: &Notation) -> String {
+    let mut out = String::new();
+    write_latex(&layout(e, notation), &mut out);
+    out
+}
+
+/// The equation `lhs = rhs` as LaTeX math.
+pub fn equation_to_latex(lhs: &Expr, rhs: &Expr, notation: &Notation) -> String {
+    let mut out = String::new();
+    write_latex(&equation_layout(lhs, rhs, notation), &mut out);
+    out
+}
+
+pub(super) fn equation_layout(lhs: &Expr, rhs: &Expr, n: &Notation) -> Layout {
+    Layout::Row(vec![layout(lhs, n), Layout::Op(Op::Equals), layout(rhs, n)])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::expr::parse_expr_with_calls;
+
+    fn tex(s: &str) -> String {
+        to_latex(&parse_expr_with_calls(s).expect("parses"), &Notation::new())
+    }
+
+    fn spaeth() -> Notation {
+        Notation::from_pairs([
+            ("cb", "\\cos\\beta"),
+            ("sb", "\\sin\\beta"),
+            ("ct", "\\cos t"),
+        ])
+        .expect("valid notation")
+    }
+
+    #[test]
+    fn default_names() {
+        let n = Notation::new();
+        assert_eq!(n.latex("beta"), "\\beta");
+        assert_eq!(n.latex("Gamma"), "\\Gamma");
+        assert_eq!(n.latex("p0"), "p_{0}");
+        assert_eq!(n.latex("q12"), "q_{12}");
+        assert_eq!(n.latex("a_b"), "a_{b}");
+        assert_eq!(n.latex("q0_x"), "q_{0,x}");
+        assert_eq!(n.latex("x_beta"), "x_{\\beta}");
+        assert_eq!(n.latex("beta2"), "\\beta_{2}");
+        assert_eq!(n.latex("x"), "x");
+        assert_eq!(n.latex("ab"), "\\mathit{ab}");
+        assert_eq!(n.latex("_x3"), "\\mathit{\\_x}_{3}");
+    }
+
+    #[test]
+    fn notation_entries_and_errors() {
+        let n = spaeth();
+        assert_eq!(n.latex("cb"), "\\cos\\beta");
+        assert_eq!(n.latex("ct"), "\\cos t");
+        let m = Notation::from_pairs([("w", "\\operatorname{arc} w_{0}"), ("k", "\\mathit{ab}")])
+            .expect("valid");
+        assert_eq!(m.latex("w"), "\\operatorname{arc}w_{0}");
+        assert_eq!(m.latex("k"), "\\mathit{ab}");
+        let bad = Notation::from_pairs([("x", "\\frac{1}{2}")]).unwrap_err();
+        assert_eq!(
+            bad,
+            "notation for \"x\": the command \\frac in \"\\\\frac{1}{2}\""
+        );
+        assert!(Notation::from_pairs([("x", "")]).is_err());
+        assert!(Notation::from_pairs([("x", "a_{1}_{2}")]).is_err());
+        assert!(Notation::from_pairs([("x", "a$")]).is_err());
+    }
+
+    #[test]
+    fn every_node_kind() {
+        assert_eq!(tex("3"), "3");
+        assert_eq!(tex("0.75"), "\\frac{3}{4}");
+        assert_eq!(
+            to_latex(
+                &Expr::number(Rational::new(-3, 4).unwrap()),
+                &Notation::new()
+            ),
+            "-\\frac{3}{4}"
+        );
+        assert_eq!(tex("x"), "x");
+        assert_eq!(tex("-x"), "-x");
+        assert_eq!(tex("a + b - c"), "a + b - c");
+        assert_eq!(tex("-a + b"), "-a + b");
+        assert_eq!(tex("2 x y"), "2\\,x\\,y");
+        assert_eq!(tex("2*3"), "2 \\cdot 3");
+        assert_eq!(tex("x*2"), "x \\cdot 2");
+        assert_eq!(tex("x/2"), "\\frac{x}{2}");
+        assert_eq!(tex("3 x y/4"), "\\frac{3\\,x\\,y}{4}");
+        assert_eq!(tex("(a + b)/(2*3)"), "\\frac{a + b}{2 \\cdot 3}");
+        assert_eq!(tex("-x/2"), "-\\frac{x}{2}");
+        assert_eq!(tex("x^2"), "x^{2}");
+        assert_eq!(tex("x^(k+1)"), "x^{k + 1}");
+        assert_eq!(tex("sqrt(2)"), "\\sqrt{2}");
+        assert_eq!(tex("3 sqrt(2)/2"), "\\frac{3\\,\\sqrt{2}}{2}");
+        assert_eq!(tex("f(x, y)"), "\\operatorname{f}\\left(x, y\\right)");
+        let r0 = Notation::from_pairs([("r0", "r_0")]).unwrap();
+        let call = parse_expr_with_calls("r0(3)").unwrap();
+        assert_eq!(to_latex(&call, &r0), "r_{0}\\left(3\\right)");
+        assert_eq!(tex("p0 q1"), "p_{0}\\,q_{1}");
+        assert_eq!(
+            to_latex(
+                &Expr::tuple(vec![
+                    Expr::number(Rational::from_integer(-20)),
+                    Expr::var("y")
+                ]),
+                &Notation::new()
+            ),
+            "\\left(-20, y\\right)"
+        );
+        assert_eq!(
+            equation_to_latex(
+                &Expr::var("x"),
+                &parse_expr_with_calls("a/2").unwrap(),
+                &Notation::new()
+            ),
+            "x = \\frac{a}{2}"
+        );
+    }
+
+    #[test]
+    fn precedence() {
+        assert_eq!(tex("(a + b) c"), "\\left(a + b\\right)\\,c");
+        assert_eq!(tex("a - (b - c)"), "a - \\left(b - c\\right)");
+        assert_eq!(tex("a + (-b)"), "a + \\left(-b\\right)");
+        assert_eq!(tex("a - -b"), "a - \\left(-b\\right)");
+        assert_eq!(tex("a*(-b)"), "a\\,\\left(-b\\right)");
+        assert_eq!(tex("-(a + b)"), "-\\left(a + b\\right)");
+        assert_eq!(tex("--a"), "-\\left(-a\\right)");
+        assert_eq!(tex("-a b"), "-a\\,b");
+        assert_eq!(tex("(a + b)^2"), "\\left(a + b\\right)^{2}");
+        assert_eq!(tex("(a b)^2"), "\\left(a\\,b\\right)^{2}");
+        assert_eq!(tex("(-a)^2"), "\\left(-a\\right)^{2}");
+        assert_eq!(tex("-a^2"), "-a^{2}");
+        assert_eq!(tex("(1/2)^2"), "\\left(\\frac{1}{2}\\right)^{2}");
+        assert_eq!(tex("2^3"), "2^{3}");
+        assert_eq!(tex("x^2^3"), "x^{2^{3}}");
+        assert_eq!(tex("(x^2)^3"), "\\left(x^{2}\\right)^{3}");
+        assert_eq!(tex("sqrt(2)^2"), "\\left(\\sqrt{2}\\right)^{2}");
+        assert_eq!(tex("x*2^k"), "x \\cdot 2^{k}");
+        assert_eq!(tex("a + b c - d/2"), "a + b\\,c - \\frac{d}{2}");
+    }
+
+    #[test]
+    fn names_with_functions() {
+        let n = spaeth();
+        let e = parse_expr_with_calls("cb*(a + r*ct) + u*sb").unwrap();
+        assert_eq!(
+            to_latex(&e, &n),
+            "\\cos\\beta\\,\\left(a + r\\,\\cos t\\right) + u\\,\\sin\\beta"
+        );
+        let e = parse_expr_with_calls("cb^2 + ct^2 + p0^2 + ab^3").unwrap();
+        assert_eq!(
+            to_latex(&e, &n),
+            "\\cos^{2}\\beta + \\cos^{2}t + p_{0}^{2} + \\mathit{ab}^{3}"
+        );
+        let two = Notation::from_pairs([("w", "u v")]).unwrap();
+        let e = parse_expr_with_calls("w^2").unwrap();
+        assert_eq!(to_latex(&e, &two), "\\left(uv\\right)^{2}");
+    }
+}
