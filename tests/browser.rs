@@ -63,19 +63,16 @@ fn the_report_renders_in_chromium() {
         .output()
         .unwrap();
     let stderr = String::from_utf8_lossy(&verify.stderr);
-    // integration: E's verify --latex. Until it is merged `verify` refuses the flag; the KaTeX
-    // step then renders its fixed known-good line only.
-    if verify.status.code() == Some(2) && stderr.contains("'--latex'") {
-        eprintln!("verify --latex is not available yet: KaTeX renders the known-good line only");
-        std::fs::write(&latex, "").unwrap();
-    } else {
-        assert!(
-            verify.status.code() == Some(0),
-            "verify --latex: {:?} {stderr}",
-            verify.status
-        );
-        std::fs::write(&latex, &verify.stdout).unwrap();
-    }
+    assert!(
+        verify.status.code() == Some(0),
+        "verify --latex: {:?} {stderr}",
+        verify.status
+    );
+    assert!(
+        verify.stdout.iter().filter(|&&b| b == b'\n').count() >= 20,
+        "verify --latex printed too little"
+    );
+    std::fs::write(&latex, &verify.stdout).unwrap();
 
     let claims = catalogue();
     let failing: Vec<&str> = claims
@@ -110,7 +107,7 @@ fn the_report_renders_in_chromium() {
     let size = std::fs::metadata(&screenshot).unwrap().len();
     assert!(size > 10_000, "a {size}-byte screenshot is not the page");
     eprintln!(
-        "screenshots: {} (full page), {} (top, as docs/report.png)",
+        "screenshots: {} (full page), {} (top, as docs/report.png; -errata.png and -figures.png beside it)",
         screenshot.display(),
         top.display()
     );

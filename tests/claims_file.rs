@@ -218,6 +218,11 @@ fn bad_files_are_one_line_with_file_line_and_key() {
             "claim \"bad.json_expr\": key expr: unexpected end of input",
         ),
         ("json_syntax.json", 4, "claim #1: JSON: expected `,` or `}`"),
+        (
+            "bad_latex.toml",
+            7,
+            "claim \"bad.latex\": key latex.s: notation s = \"\\\\input{/etc/passwd}\": the command \\input is not accepted",
+        ),
     ];
     for (name, line, what) in cases {
         let path = format!("tests/claims_file/{name}");

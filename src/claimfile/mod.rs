@@ -300,7 +300,11 @@ fn notation_of(
     let mut out = Vec::new();
     for (k, v) in table.into_iter().flatten() {
         match v.as_str() {
-            Some(s) => out.push((k.clone(), s.to_string())),
+            // Checked here, so the erratum's notation is known to be valid when it is printed.
+            Some(s) => match exactcheck_exact::expr::Notation::new().set(k, s) {
+                Ok(()) => out.push((k.clone(), s.to_string())),
+                Err(e) => return Err(fail(&format!("{path}.{k}"), e)),
+            },
             None => {
                 return Err(fail(
                     &format!("{path}.{k}"),

@@ -12,6 +12,7 @@ use super::regress::{Summary, Table};
 use crate::claims::{Checked, Equation, Verdict};
 use crate::plot::{escape, Figure};
 use crate::Error;
+use exactcheck_exact::expr::{equation_to_mathml, Notation};
 use std::fmt::Write as _;
 
 /// Everything the page shows.
@@ -201,23 +202,23 @@ fn long_text(text: &str) -> String {
     )
 }
 
-/// `lhs = rhs` of an erratum's equation, as text in `<code>`.
-fn equation(e: &Equation) -> String {
-    // integration: E's to_mathml
+/// `lhs = rhs` of an erratum's equation: MathML (rendered by the browser, no script or font),
+/// then the LaTeX to paste into an erratum, both printed from the expression trees.
+fn equation(e: &Equation, notation: &Notation) -> String {
     format!(
-        "<code>{} = {}</code>",
-        escape(&e.lhs.to_string()),
-        escape(&e.rhs.to_string())
+        "{}<code class=\"tex\" title=\"LaTeX\">{}</code>",
+        equation_to_mathml(&e.lhs, &e.rhs, notation),
+        escape(&e.latex(notation))
     )
 }
 
-fn equations(s: &mut String, label: &str, eqs: &[Equation]) {
+fn equations(s: &mut String, label: &str, eqs: &[Equation], notation: &Notation) {
     if eqs.is_empty() {
         return;
     }
     let _ = write!(s, "<dt>{label}</dt><dd><ul class=\"eqs\">");
     for e in eqs {
-        let _ = write!(s, "<li>{}</li>", equation(e));
+        let _ = write!(s, "<li>{}</li>", equation(e, notation));
     }
     s.push_str("</ul></dd>\n");
 }
@@ -245,9 +246,10 @@ fn errata(s: &mut String, rows: &[Checked]) {
         );
         match &o.erratum {
             Some(e) => {
+                let notation = e.notation();
                 s.push_str("<dl class=\"erratum-forms\">\n");
-                equations(s, "printed form", &e.printed);
-                equations(s, "correct form", &e.corrected);
+                equations(s, "printed form", &e.printed, &notation);
+                equations(s, "correct form", &e.corrected, &notation);
                 if !e.correction.is_empty() {
                     let _ = writeln!(
                         s,
@@ -255,8 +257,8 @@ fn errata(s: &mut String, rows: &[Checked]) {
                         escape(&e.correction)
                     );
                 }
-                equations(s, "counter-example", &e.counter_example);
-                equations(s, "residual there", &e.residual);
+                equations(s, "counter-example", &e.counter_example, &notation);
+                equations(s, "residual there", &e.residual, &notation);
                 s.push_str("</dl>\n");
                 let _ = writeln!(
                     s,
@@ -400,7 +402,9 @@ dl.erratum-forms{display:grid;grid-template-columns:max-content 1fr;gap:4px 14px
 dl.erratum-forms dt{color:var(--muted)}
 dl.erratum-forms dd{margin:0}
 ul.eqs{margin:0;padding:0;list-style:none}
-ul.eqs li{margin:1px 0}
+ul.eqs li{margin:4px 0}
+ul.eqs math{display:block;text-align:left;margin:2px 0;font-size:1.1em}
+code.tex{display:block;color:#555;font-size:.85em;white-space:pre-wrap;overflow-wrap:anywhere}
 figure{margin:16px 0;border:1px solid var(--line);padding:8px}
 figure .svg svg{max-width:100%;height:auto;display:block;margin:0 auto}
 figcaption{color:var(--muted);margin-top:6px}
@@ -506,7 +510,15 @@ mod tests {
         // Both failing claims are errata, the one without an erratum with its evidence.
         assert_eq!(html.matches("<article class=\"erratum\"").count(), 2);
         assert!(html.contains("id=\"erratum-b-three\""));
-        assert!(html.contains("<code>y = x^2 - 1</code>"), "{html}");
+        // The erratum's equation as MathML (from the tree) with its LaTeX under it.
+        assert!(
+            html.contains("<math display=\"block\"><mrow><mi>y</mi><mo>=</mo>"),
+            "{html}"
+        );
+        assert!(
+            html.contains("<code class=\"tex\" title=\"LaTeX\">y = x^{2} - 1</code>"),
+            "{html}"
+        );
         assert!(html.contains("&lt;with markup &amp; quotes&quot;&gt;"));
         assert!(!html.contains("<with markup"));
         assert!(html.contains("<details><summary>line one</summary>"));

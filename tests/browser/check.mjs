@@ -10,7 +10,8 @@
 // has an empty bounding box (not rendered); filters that do not filter. Every line of the LaTeX
 // file (the output of `verify --latex`) and a fixed known-good line are rendered with KaTeX
 // (throwOnError: true): a parse error fails. Then a full-page screenshot is saved (and, with
-// --top, one of the top of the page at 1280x1600 for the README).
+// --top, one of the top of the page at 1280x1600 for the README, and TOP-errata.png,
+// TOP-figures.png: the first 1400 px of those sections).
 import { chromium } from 'playwright-core';
 import katex from 'katex';
 import { readFileSync, mkdtempSync, rmSync } from 'node:fs';
@@ -38,7 +39,7 @@ const problems = [];
 // KaTeX: a fixed known-good line (so this step always renders something), then every
 // non-empty line of verify --latex.
 const KNOWN_GOOD = String.raw`x = \frac{-b \pm \sqrt{b^{2} - 4ac}}{2a}, \quad \cos\beta = \frac{1 - \tau^{2}}{1 + \tau^{2}}`;
-const latexLines = readFileSync(o.latex, 'utf8').split('\n').map((l) => l.trim()).filter((l) => l !== '');
+const latexLines = readFileSync(o.latex, 'utf8').split('\n').map((l) => l.trim()).filter((l) => l !== '' && !l.startsWith('%')); // '%' lines: the document's comments (id, verdict, part)
 let rendered = 0;
 for (const [i, line] of [[0, KNOWN_GOOD], ...latexLines.map((l, j) => [j + 1, l])]) {
   try {
@@ -101,6 +102,15 @@ try {
       figures,
       duplicateIds: ids.filter((id, i) => ids.indexOf(id) !== i),
       regressions: document.querySelectorAll('#regressions table.regress').length,
+      // Every erratum's formulas are MathML, rendered natively: each <math> must take space.
+      maths: [...document.querySelectorAll('#errata math')].map((m) => {
+        const r = m.getBoundingClientRect();
+        return { claim: m.closest('article')?.dataset.claim, width: r.width, height: r.height };
+      }),
+      erratumFormulas: [...document.querySelectorAll('#errata article.erratum')].map((a) => ({
+        claim: a.dataset.claim,
+        formulas: a.querySelectorAll('math').length,
+      })),
     };
   });
 
@@ -120,6 +130,12 @@ try {
   }
   for (const f of facts.figures) {
     if (!(f.width > 0 && f.height > 0)) problems.push(`figure ${f.id}: empty bounding box (not rendered)`);
+  }
+  for (const m of facts.maths) {
+    if (!(m.width > 0 && m.height > 0)) problems.push(`erratum ${m.claim}: a MathML formula did not render`);
+  }
+  for (const e of facts.erratumFormulas) {
+    if (e.formulas === 0) problems.push(`erratum ${e.claim}: no formula (counter-example or residual)`);
   }
   if (facts.duplicateIds.length) problems.push(`duplicate ids: ${[...new Set(facts.duplicateIds)].join(', ')}`);
   if (Number(o.figures) > 0 && facts.regressions === 0) problems.push('no regression table');
@@ -144,8 +160,20 @@ try {
   if (o.top) {
     await page.setViewportSize({ width: 1280, height: 1600 });
     await page.screenshot({ path: o.top, fullPage: false });
+    // The top 1400 px of the errata and of the figures, beside TOP.png (the README shows them).
+    for (const section of ['errata', 'figures']) {
+      const box = await page.evaluate((id) => {
+        const r = document.getElementById(id).getBoundingClientRect();
+        return { y: r.top + window.scrollY, height: r.height };
+      }, section);
+      await page.screenshot({
+        path: o.top.replace(/\.png$/, `-${section}.png`),
+        fullPage: true,
+        clip: { x: 0, y: box.y, width: 1280, height: Math.min(1400, box.height) },
+      });
+    }
   }
-  console.log(`browser: ${facts.rows} rows, ${facts.errata ? facts.errata.length : 0} errata, ${facts.figures.filter((f) => f.width > 0 && f.height > 0).length} of ${facts.figures.length} figures rendered, ${facts.regressions} regression tables; KaTeX rendered ${rendered} line(s) (${latexLines.length} from ${o.latex}); screenshot ${o.screenshot}`);
+  console.log(`browser: ${facts.rows} rows, ${facts.errata ? facts.errata.length : 0} errata, ${facts.figures.filter((f) => f.width > 0 && f.height > 0).length} of ${facts.figures.length} figures rendered, ${facts.regressions} regression tables, ${facts.maths.length} MathML formulas; KaTeX rendered ${rendered} line(s) (${latexLines.length} from ${o.latex}); screenshot ${o.screenshot}`);
 } finally {
   await browser.close();
   rmSync(profile, { recursive: true, force: true });

@@ -147,8 +147,7 @@ impl Notation {
     /// # Errors
     /// A command or character outside that subset, or an empty form.
     pub fn set(&mut self, name: &str, latex: &str) -> Result<(), String> {
-        let sym =
-            parse_symbol(latex).map_err(|e| format!("notation for {name:?}: {e} in {latex:?}"))?;
+        let sym = parse_symbol(latex).map_err(|e| format!("notation {name} = {latex:?}: {e}"))?;
         self.entries.insert(name.to_string(), sym);
         Ok(())
     }
@@ -270,7 +269,9 @@ fn parse_symbol(latex: &str) -> Result<Symbol, String> {
             } else if word.is_empty() && tail.starts_with(',') {
                 rest = &tail[1..];
             } else {
-                return Err(format!("the command \\{word}"));
+                return Err(format!(
+                    "the command \\{word} is not accepted (letters, digits, Greek letters, function names such as \\cos, \\mathit{{..}} and one subscript are)"
+                ));
             }
         } else if c.is_ascii_alphabetic() {
             body.push(Glyph::Ident(c.to_string()));
@@ -737,7 +738,9 @@ mod tests {
         let bad = Notation::from_pairs([("x", "\\frac{1}{2}")]).unwrap_err();
         assert_eq!(
             bad,
-            "notation for \"x\": the command \\frac in \"\\\\frac{1}{2}\""
+            "notation x = \"\\\\frac{1}{2}\": the command \\frac is not accepted (letters, \
+             digits, Greek letters, function names such as \\cos, \\mathit{..} and one \
+             subscript are)"
         );
         assert!(Notation::from_pairs([("x", "")]).is_err());
         assert!(Notation::from_pairs([("x", "a_{1}_{2}")]).is_err());

@@ -45,7 +45,8 @@ fn write(l: &Layout, out: &mut String) {
             Op::Minus => "<mo>\u{2212}</mo>",
             Op::Dot => "<mo>\u{22c5}</mo>",
             Op::Juxtapose => "<mo>\u{2062}</mo>",
-            Op::Apply => "<mo>\u{2061}</mo>",
+            // A thin space after a function name, as LaTeX puts after `\cos` (`cos t`, not `cost`).
+            Op::Apply => "<mo rspace=\"0.1667em\">\u{2061}</mo>",
             Op::Equals => "<mo>=</mo>",
             Op::Comma | Op::TightComma => "<mo>,</mo>",
         }),
@@ -132,7 +133,7 @@ mod tests {
         );
         assert_eq!(
             ml("f(x)", &n),
-            "<math display=\"block\"><mrow><mi mathvariant=\"normal\">f</mi><mo>\u{2061}</mo>\
+            "<math display=\"block\"><mrow><mi mathvariant=\"normal\">f</mi><mo rspace=\"0.1667em\">\u{2061}</mo>\
              <mrow><mo>(</mo><mi>x</mi><mo>)</mo></mrow></mrow></math>"
         );
     }
@@ -143,7 +144,7 @@ mod tests {
         assert_eq!(
             ml("cb^2", &n),
             "<math display=\"block\"><mrow><msup><mi mathvariant=\"normal\">cos</mi><mn>2</mn>\
-             </msup><mo>\u{2061}</mo><mi>β</mi></mrow></math>"
+             </msup><mo rspace=\"0.1667em\">\u{2061}</mo><mi>β</mi></mrow></math>"
         );
         assert_eq!(
             equation_to_mathml(&Expr::var("x"), &Expr::var("y"), &Notation::new()),
