@@ -44,6 +44,51 @@ pub fn write_line(out: &mut impl Write, text: impl Display) -> Result<(), Error>
         .map_err(Error::Output)
 }
 
+/// The progress of a command's steps (claims checked, figures drawn, sweeps run) on standard
+/// error: a bar on a terminal, nothing when standard error is piped or `quiet` is set.
+pub struct Steps {
+    bar: Option<indicatif::ProgressBar>,
+}
+
+impl Steps {
+    /// A bar of `count` steps; hidden when `quiet` or when standard error is not a terminal.
+    pub fn new(count: u64, quiet: bool) -> Steps {
+        let bar = (!quiet && io::IsTerminal::is_terminal(&io::stderr())).then(|| {
+            let bar = indicatif::ProgressBar::new(count);
+            if let Ok(style) = indicatif::ProgressStyle::with_template(
+                "{spinner} [{bar:24}] {pos}/{len} {msg} ({elapsed})",
+            ) {
+                bar.set_style(style.progress_chars("=> "));
+            }
+            bar.enable_steady_tick(std::time::Duration::from_millis(120));
+            bar
+        });
+        Steps { bar }
+    }
+
+    /// Starts the step described by `what`.
+    pub fn start(&self, what: &str) {
+        if let Some(bar) = &self.bar {
+            bar.set_message(what.to_string());
+        }
+    }
+
+    /// Ends the current step.
+    pub fn done(&self) {
+        if let Some(bar) = &self.bar {
+            bar.inc(1);
+        }
+    }
+}
+
+impl Drop for Steps {
+    fn drop(&mut self) {
+        if let Some(bar) = &self.bar {
+            bar.finish_and_clear();
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

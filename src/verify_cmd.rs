@@ -37,10 +37,10 @@ pub struct VerifyArgs {
 /// [`Error::Output`] when standard output fails.
 pub fn run(args: &VerifyArgs) -> Result<ExitCode, Error> {
     let rows = match &args.file {
-        None => crate::claims::verify(args.only.as_deref())?,
+        None => crate::claims::verify_with(args.only.as_deref(), false)?,
         Some(path) => {
             let file = crate::claimfile::load(path)?;
-            crate::claimfile::check(&file, args.only.as_deref())?
+            crate::claimfile::check_with(&file, args.only.as_deref(), false)?
         }
     };
     if args.json {

@@ -73,6 +73,8 @@ fn the_small_examples_hold() {
     for path in ["examples/mypaper.toml", "tests/claims_file/mypaper.json"] {
         let out = exactcheck(&["verify", path, "--json"]);
         assert_eq!(out.status.code(), Some(0), "{path}: {out:?}");
+        // Standard error is a pipe here: no progress bar, nothing at all.
+        assert!(out.stderr.is_empty(), "{path}: {out:?}");
         let rows: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
         for r in rows.as_array().unwrap() {
             assert_eq!(r["as_expected"], true, "{r}");

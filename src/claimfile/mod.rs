@@ -323,6 +323,19 @@ fn notation_of(
 /// claim and key) for what only checking finds wrong in the file: inconsistent relations, an
 /// instance off the relations or missing a variable, a `solve` problem the solver refuses.
 pub fn check(file: &ClaimsFile, only: Option<&str>) -> Result<Vec<Checked>, Error> {
+    check_with(file, only, true)
+}
+
+/// [`check`], showing a progress bar on standard error unless `quiet` (or it is not a
+/// terminal).
+///
+/// # Errors
+/// As [`check`].
+pub fn check_with(
+    file: &ClaimsFile,
+    only: Option<&str>,
+    quiet: bool,
+) -> Result<Vec<Checked>, Error> {
     let chosen: Vec<&FileClaim> = file
         .claims
         .iter()
@@ -338,9 +351,13 @@ pub fn check(file: &ClaimsFile, only: Option<&str>) -> Result<Vec<Checked>, Erro
         )));
     }
     let mut rows = Vec::new();
+    let steps = crate::output::Steps::new(chosen.len() as u64, quiet);
     for c in chosen {
+        steps.start(&c.id);
         let start = Instant::now();
-        let outcome = match kinds::run(&c.check, &c.notation) {
+        let run = kinds::run(&c.check, &c.notation);
+        steps.done();
+        let outcome = match run {
             Ok(o) => Ok(o),
             Err(Fault::Internal(m)) => Err(m),
             Err(Fault::Input(key, m)) => {

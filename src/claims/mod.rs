@@ -282,6 +282,15 @@ impl Checked {
 /// # Errors
 /// When a prefix is given and no claim id starts with it.
 pub fn verify(prefix: Option<&str>) -> Result<Vec<Checked>, crate::Error> {
+    verify_with(prefix, true)
+}
+
+/// [`verify`], showing a progress bar on standard error unless `quiet` (or it is not a
+/// terminal).
+///
+/// # Errors
+/// As [`verify`].
+pub fn verify_with(prefix: Option<&str>, quiet: bool) -> Result<Vec<Checked>, crate::Error> {
     let claims: Vec<Claim> = catalogue()
         .into_iter()
         .filter(|c| prefix.is_none_or(|p| c.id.starts_with(p)))
@@ -294,11 +303,14 @@ pub fn verify(prefix: Option<&str>) -> Result<Vec<Checked>, crate::Error> {
             known.join(", ")
         )));
     }
+    let steps = crate::output::Steps::new(claims.len() as u64, quiet);
     Ok(claims
         .into_iter()
         .map(|c| {
+            steps.start(c.id);
             let start = Instant::now();
             let outcome = (c.check)();
+            steps.done();
             Checked {
                 id: c.id.to_string(),
                 source: c.id.split('.').next().unwrap_or(c.id).to_string(),

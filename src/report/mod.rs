@@ -27,10 +27,8 @@ pub mod regress;
 use crate::claims::Checked;
 use crate::Error;
 use clap::Args;
-use std::io::IsTerminal;
 use std::path::Path;
 use std::process::ExitCode;
-use std::time::Duration;
 
 /// The largest `--samples` of `report` (the regressions are its slowest part: the ruled-plane
 /// kernel runs 12 sweeps of this many samples).
@@ -86,49 +84,6 @@ pub fn prepare_dir(dir: &str) -> Result<(), Error> {
         .map_err(|e| Error::Usage(format!("cannot create the directory {dir}: {e}")))
 }
 
-/// The progress of the report's steps on standard error (hidden unless it is a terminal).
-struct Steps {
-    bar: Option<indicatif::ProgressBar>,
-}
-
-impl Steps {
-    fn new(count: u64, quiet: bool) -> Steps {
-        let bar = (!quiet && std::io::stderr().is_terminal()).then(|| {
-            let bar = indicatif::ProgressBar::new(count);
-            if let Ok(style) = indicatif::ProgressStyle::with_template(
-                "{spinner} [{bar:24}] {pos}/{len} {msg} ({elapsed})",
-            ) {
-                bar.set_style(style.progress_chars("=> "));
-            }
-            bar.enable_steady_tick(Duration::from_millis(120));
-            bar
-        });
-        Steps { bar }
-    }
-
-    /// Starts the step described by `what`.
-    fn start(&self, what: &str) {
-        if let Some(bar) = &self.bar {
-            bar.set_message(what.to_string());
-        }
-    }
-
-    /// Ends the current step.
-    fn done(&self) {
-        if let Some(bar) = &self.bar {
-            bar.inc(1);
-        }
-    }
-}
-
-impl Drop for Steps {
-    fn drop(&mut self) {
-        if let Some(bar) = &self.bar {
-            bar.finish_and_clear();
-        }
-    }
-}
-
 /// Runs `exactcheck report`: checks the claims, draws the figures, runs the regressions,
 /// writes `DIR/index.html` and prints one summary line. Exit status 0 once the page is written
 /// (the page itself says which verdicts are not the expected ones).
@@ -142,7 +97,7 @@ pub fn run(args: &ReportArgs) -> Result<ExitCode, Error> {
     let argv: Vec<std::ffi::OsString> = std::env::args_os().collect();
     let meta = meta::Meta::now(&argv);
     let catalogue = args.file.is_none();
-    let steps = Steps::new(
+    let steps = crate::output::Steps::new(
         if catalogue {
             2 + regress::KERNELS.len() as u64
         } else {
