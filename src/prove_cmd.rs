@@ -163,26 +163,6 @@ pub fn parse_where_with(
     Ok(Where::Domain(name, domain))
 }
 
-fn collect_vars(e: &Expr, out: &mut Vec<String>) {
-    use exactcheck_exact::expr::ExprKind;
-    match &e.kind {
-        ExprKind::Number(_) => {}
-        ExprKind::Var(v) => {
-            if !out.contains(v) {
-                out.push(v.clone());
-            }
-        }
-        ExprKind::Neg(x) | ExprKind::Sqrt(x) => collect_vars(x, out),
-        ExprKind::Pow(a, b) => {
-            collect_vars(a, out);
-            collect_vars(b, out);
-        }
-        ExprKind::Sum(ts) => ts.iter().for_each(|(_, t)| collect_vars(t, out)),
-        ExprKind::Call(_, args) => args.iter().for_each(|a| collect_vars(a, out)),
-        ExprKind::Product(fs) => fs.iter().for_each(|(_, f)| collect_vars(f, out)),
-    }
-}
-
 /// A fresh seed from the operating system's randomness (the keys of std's `RandomState`).
 pub fn fresh_seed() -> u64 {
     use std::hash::{BuildHasher, Hasher};
@@ -234,8 +214,8 @@ fn random_test(
     };
     let circles: Vec<(String, String)> = pairs.iter().map(|&(c, s)| (name(c), name(s))).collect();
     let mut names = Vec::new();
-    collect_vars(lhs, &mut names);
-    collect_vars(rhs, &mut names);
+    lhs.collect_variables(&mut names);
+    rhs.collect_variables(&mut names);
     let seed = args.seed.unwrap_or_else(fresh_seed);
     let decision =
         random_identity_test(lhs, rhs, &names, &circles, trials, seed).map_err(Error::Input)?;

@@ -676,26 +676,6 @@ pub fn has_sqrt(e: &Expr) -> bool {
     }
 }
 
-/// The free variables of a tree, in order of first appearance.
-pub fn variables(e: &Expr, out: &mut Vec<String>) {
-    match &e.kind {
-        ExprKind::Number(_) => {}
-        ExprKind::Var(v) => {
-            if !out.contains(v) {
-                out.push(v.clone());
-            }
-        }
-        ExprKind::Neg(x) | ExprKind::Sqrt(x) => variables(x, out),
-        ExprKind::Pow(x, k) => {
-            variables(x, out);
-            variables(k, out);
-        }
-        ExprKind::Sum(ts) => ts.iter().for_each(|(_, t)| variables(t, out)),
-        ExprKind::Product(fs) => fs.iter().for_each(|(_, t)| variables(t, out)),
-        ExprKind::Call(_, args) => args.iter().for_each(|a| variables(a, out)),
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -754,11 +754,11 @@ fn instances(check: &Check) -> Result<Outcome, Fault> {
     };
     let mut names = Vec::new();
     for e in lhs.iter().chain(rhs) {
-        defs::variables(e, &mut names);
+        e.collect_variables(&mut names);
     }
     for (a, b) in &conditions.relations {
-        defs::variables(a, &mut names);
-        defs::variables(b, &mut names);
+        a.collect_variables(&mut names);
+        b.collect_variables(&mut names);
     }
     // Exact instances.
     for (k, point) in at.iter().enumerate() {

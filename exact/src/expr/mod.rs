@@ -245,6 +245,28 @@ impl Expr {
         Expr { kind, pos: 0 }
     }
 
+    /// Appends the variables of the tree to `out`, in order of first appearance, each once
+    /// (names already in `out` are not repeated): the one walk `prove` and the claims files use
+    /// to name the variables of their sides.
+    pub fn collect_variables(&self, out: &mut Vec<String>) {
+        match &self.kind {
+            ExprKind::Number(_) => {}
+            ExprKind::Var(v) => {
+                if !out.contains(v) {
+                    out.push(v.clone());
+                }
+            }
+            ExprKind::Neg(x) | ExprKind::Sqrt(x) => x.collect_variables(out),
+            ExprKind::Pow(a, b) => {
+                a.collect_variables(out);
+                b.collect_variables(out);
+            }
+            ExprKind::Sum(ts) => ts.iter().for_each(|(_, t)| t.collect_variables(out)),
+            ExprKind::Product(fs) => fs.iter().for_each(|(_, f)| f.collect_variables(out)),
+            ExprKind::Call(_, args) => args.iter().for_each(|a| a.collect_variables(out)),
+        }
+    }
+
     /// The variable `name`.
     pub fn var(name: &str) -> Self {
         Expr::new(ExprKind::Var(name.to_string()))
