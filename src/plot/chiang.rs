@@ -29,9 +29,7 @@ use exactcheck_core::ruled::{chiang_example4, RuledSurface};
 use exactcheck_core::Vec3;
 use exactcheck_exact::{Radical, Rational};
 use plotters::coord::CoordTranslate;
-use plotters::prelude::{
-    ChartBuilder, Color, DashedLineSeries, EmptyElement, LineSeries, Polygon, RGBColor, Text,
-};
+use plotters::prelude::{Color, DashedLineSeries, EmptyElement, LineSeries, Polygon, Text};
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 /// Yaw and pitch of `plotters`' 3D projection (radians): from above the plane.
@@ -211,25 +209,7 @@ fn example4() -> String {
     render((1000, 720), title, |root| {
         let body = header(root, title, &lines)?;
         let (plot, side) = body.split_horizontally(700);
-        let mut chart = ChartBuilder::on(&plot).margin(14).build_cartesian_3d(
-            lo.0..hi.0,
-            lo.1..hi.1,
-            lo.2..hi.2,
-        )?;
-        chart.with_projection(|mut p| {
-            p.yaw = YAW;
-            p.pitch = PITCH;
-            p.scale = 0.85;
-            p.into_matrix()
-        });
-        chart
-            .configure_axes()
-            .axis_panel_style(PANEL.filled())
-            .bold_grid_style(RGBColor(0xdd, 0xdd, 0xdd))
-            .light_grid_style(RGBColor(0xee, 0xee, 0xee))
-            .max_light_lines(2)
-            .label_style(font(12.0, GREY_TEXT))
-            .draw()?;
+        let mut chart = chart_3d(&plot, 14, lo, hi, (YAW, PITCH, 0.85))?;
         let xyz = |p: &Vec3<f64>| (p.x, p.z, p.y);
         for r in &below {
             chart.draw_series(DashedLineSeries::new(

@@ -323,25 +323,7 @@ pub(super) fn view_3d(scene: &Scene) -> String {
             ])
             .collect();
         let (lo3, hi3) = cube(&corners);
-        let mut chart = ChartBuilder::on(&plot).margin(16).build_cartesian_3d(
-            lo3.0..hi3.0,
-            lo3.1..hi3.1,
-            lo3.2..hi3.2,
-        )?;
-        chart.with_projection(|mut p| {
-            p.yaw = YAW;
-            p.pitch = PITCH;
-            p.scale = 0.8;
-            p.into_matrix()
-        });
-        chart
-            .configure_axes()
-            .axis_panel_style(PANEL.filled())
-            .bold_grid_style(RGBColor(0xdd, 0xdd, 0xdd))
-            .light_grid_style(RGBColor(0xee, 0xee, 0xee))
-            .max_light_lines(2)
-            .label_style(font(12.0, GREY_TEXT))
-            .draw()?;
+        let mut chart = chart_3d(&plot, 16, lo3, hi3, (YAW, PITCH, 0.8))?;
         let toward = toward_viewer(chart.as_coord_spec(), lo3, hi3);
         let mut prims: Vec<Prim> = Vec::new();
         let front = |t: f64| (e1.dot(&toward) * t.cos() + e2.dot(&toward) * t.sin()) > 0.0;

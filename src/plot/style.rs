@@ -12,9 +12,50 @@
 //! the colours here are public so the tests find an element by its colour
 //! ([`hex`] gives the attribute value `plotters` writes).
 
+use plotters::coord::ranged3d::Cartesian3d;
+use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::fmt::Write as _;
+
+/// A 3D chart of an SVG page (the box of [`chart_3d`]).
+pub type Chart3d<'a, 'b> =
+    ChartContext<'a, SVGBackend<'b>, Cartesian3d<RangedCoordf64, RangedCoordf64, RangedCoordf64>>;
+
+/// The 3D chart every surface view uses: the box `lo..hi` on `area` with `margin` pixels, seen
+/// from `view = (yaw, pitch, scale)` of `plotters`' projection, with light back panels, a grey
+/// grid and grey axis labels (drawn).
+///
+/// # Errors
+/// When `plotters` cannot draw the axes.
+pub fn chart_3d<'a, 'b>(
+    area: &'a Area<'b>,
+    margin: u32,
+    lo: (f64, f64, f64),
+    hi: (f64, f64, f64),
+    (yaw, pitch, scale): (f64, f64, f64),
+) -> Result<Chart3d<'a, 'b>, DrawErr> {
+    let mut chart = ChartBuilder::on(area).margin(margin).build_cartesian_3d(
+        lo.0..hi.0,
+        lo.1..hi.1,
+        lo.2..hi.2,
+    )?;
+    chart.with_projection(|mut p| {
+        p.yaw = yaw;
+        p.pitch = pitch;
+        p.scale = scale;
+        p.into_matrix()
+    });
+    chart
+        .configure_axes()
+        .axis_panel_style(PANEL.filled())
+        .bold_grid_style(RGBColor(0xdd, 0xdd, 0xdd))
+        .light_grid_style(RGBColor(0xee, 0xee, 0xee))
+        .max_light_lines(2)
+        .label_style(font(12.0, GREY_TEXT))
+        .draw()?;
+    Ok(chart)
+}
 
 /// A drawing area of an SVG page.
 pub type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
