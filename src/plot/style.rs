@@ -218,16 +218,27 @@ pub enum Sym {
     Ring(RGBColor),
 }
 
+/// A circle of radius `r` pixels filled with `fill` and rimmed with `rim` `width` pixels wide:
+/// the one shape behind [`dot`], [`hollow`] and [`ring`].
+fn circle_marker<'b, DB: DrawingBackend + 'b, C: Clone + 'b>(
+    at: C,
+    r: i32,
+    fill: RGBColor,
+    (rim, width): (RGBColor, u32),
+) -> DynElement<'b, DB, C> {
+    let e = EmptyElement::at(at)
+        + Circle::new((0, 0), r, fill.filled())
+        + Circle::new((0, 0), r, rim.stroke_width(width));
+    e.into_dyn()
+}
+
 /// A filled dot with a white rim, as a pixel-relative element.
 pub fn dot<'b, DB: DrawingBackend + 'b, C: Clone + 'b>(
     at: C,
     r: i32,
     c: RGBColor,
 ) -> DynElement<'b, DB, C> {
-    let e = EmptyElement::at(at)
-        + Circle::new((0, 0), r, c.filled())
-        + Circle::new((0, 0), r, WHITE.stroke_width(1));
-    e.into_dyn()
+    circle_marker(at, r, c, (WHITE, 1))
 }
 
 /// A hollow dot (white fill, coloured rim).
@@ -236,10 +247,7 @@ pub fn hollow<'b, DB: DrawingBackend + 'b, C: Clone + 'b>(
     r: i32,
     c: RGBColor,
 ) -> DynElement<'b, DB, C> {
-    let e = EmptyElement::at(at)
-        + Circle::new((0, 0), r, WHITE.filled())
-        + Circle::new((0, 0), r, c.stroke_width(1));
-    e.into_dyn()
+    circle_marker(at, r, WHITE, (c, 1))
 }
 
 /// A ring: white inside, a coloured rim 2 pixels wide.
@@ -248,10 +256,7 @@ pub fn ring<'b, DB: DrawingBackend + 'b, C: Clone + 'b>(
     r: i32,
     c: RGBColor,
 ) -> DynElement<'b, DB, C> {
-    let e = EmptyElement::at(at)
-        + Circle::new((0, 0), r, WHITE.filled())
-        + Circle::new((0, 0), r, c.stroke_width(2));
-    e.into_dyn()
+    circle_marker(at, r, WHITE, (c, 2))
 }
 
 /// A diamond of half-diagonal `r` pixels.

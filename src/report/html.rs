@@ -225,11 +225,20 @@ fn equations(s: &mut String, label: &str, eqs: &[Equation], notation: &Notation)
 
 fn errata(s: &mut String, rows: &[Checked]) {
     let failing: Vec<&Checked> = rows.iter().filter(|r| is_erratum(r)).collect();
+    // Counted, not assumed: a failing claim without a structured counter-example (e.g. a
+    // `solve` claim of a file whose field differs) is shown with its evidence.
+    let with_point = failing
+        .iter()
+        .filter(|r| {
+            matches!(&r.outcome, Ok(o) if o.erratum.as_ref().is_some_and(|e| !e.counter_example.is_empty()))
+        })
+        .count();
     let _ = write!(
         s,
-        "<section id=\"errata\">\n<h2>Errata</h2>\n<p>{} printed statement{} found false, each with an exact counter-example.</p>\n",
+        "<section id=\"errata\">\n<h2>Errata</h2>\n<p>{} printed statement{} found false, {} of them with an exact counter-example below.</p>\n",
         failing.len(),
-        if failing.len() == 1 { "" } else { "s" }
+        if failing.len() == 1 { "" } else { "s" },
+        with_point
     );
     for r in failing {
         let Ok(o) = &r.outcome else {
