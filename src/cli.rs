@@ -24,6 +24,13 @@ pub struct Cli {
     /// What to do.
     #[command(subcommand)]
     pub command: Command,
+    /// Raise or lower a resource limit for this run, e.g. `--limit depth=1000` (repeatable;
+    /// `exactcheck limits` lists every limit with its value).
+    #[arg(long = "limit", value_name = "NAME=VALUE", global = true, action = clap::ArgAction::Append)]
+    pub limits: Vec<String>,
+    /// End the command with an error (exit status 2) when it has not finished after SECONDS.
+    #[arg(long, value_name = "SECONDS", global = true)]
+    pub timeout: Option<f64>,
 }
 
 /// The subcommands.
@@ -85,6 +92,14 @@ pub enum Command {
   exactcheck report -o out --samples 5000 --seed 7
   exactcheck report paper.toml -o paper-report")]
     Report(crate::report::ReportArgs),
+    /// List the resource limits (sizes, depths, counts, memory) with their values and defaults;
+    /// `--limit NAME=VALUE` before or after any subcommand changes one for that run.
+    #[command(after_help = LIMITS_EXAMPLES)]
+    Limits {
+        /// Print the list as JSON.
+        #[arg(long)]
+        json: bool,
+    },
 }
 
 // The examples of every subcommand's `--help` (a test parses each `exactcheck ...` line).
@@ -110,6 +125,10 @@ const REGRESS_EXAMPLES: &str = "Examples:
   exactcheck regress --fpcore tests/regress/suite.fpcore
   exactcheck regress --formula 'sqrt(x+1) - sqrt(x)' --domain 'x in [1, 1e15]' --program 'python3 tests/regress/cancel.py'
   exactcheck regress --formula 'x*x - 1' --samples 1000000 --shard 1/4 > shard1.json";
+const LIMITS_EXAMPLES: &str = "Examples:
+  exactcheck limits
+  exactcheck limits --limit depth=1000 --json
+  exactcheck prove '(x+y)^3000' 0 --limit terms=5000 --timeout 10";
 const MERGE_EXAMPLES: &str = "Examples:
   exactcheck merge shard1.json shard2.json shard3.json shard4.json";
 const PLOT_EXAMPLES: &str = "Examples:
@@ -129,6 +148,7 @@ pub fn main() -> ExitCode {
         Ok(code) => code,
         Err(e) if e.is_broken_pipe() => ExitCode::SUCCESS,
         Err(e) => {
+            crate::budget::clear_progress();
             report(&[format!("exactcheck: error: {e}")]);
             ExitCode::from(2)
         }
@@ -291,7 +311,20 @@ fn option_takes_value(args: &[OsString], opt: &str) -> bool {
 /// # Errors
 /// The command's error; [`crate::Error::Output`] when standard output fails.
 pub fn run(cli: Cli) -> Result<ExitCode, crate::Error> {
+    for arg in &cli.limits {
+        exactcheck_core::limits::set_from_str(arg).map_err(crate::Error::Usage)?;
+    }
+    crate::budget::enforce_memory_limit();
+    if let Some(seconds) = cli.timeout {
+        crate::budget::start_timeout(seconds)?;
+    }
+    match &cli.command {
+        Command::Prove(_) => crate::budget::start_progress("prove"),
+        Command::Solve { .. } => crate::budget::start_progress("solve"),
+        _ => {}
+    }
     match cli.command {
+        Command::Limits { json } => print_limits(json),
         Command::Verify(args) => crate::verify_cmd::run(&args),
         Command::Bench(args) => crate::bench::run(&args),
         Command::Solve {
@@ -325,6 +358,41 @@ pub fn run(cli: Cli) -> Result<ExitCode, crate::Error> {
         // --- end plot ---
         Command::Report(args) => crate::report::run(&args),
     }
+}
+
+/// `exactcheck limits`: every limit, its value in force, its default and what it bounds.
+fn print_limits(json: bool) -> Result<ExitCode, crate::Error> {
+    let all = exactcheck_core::limits::all();
+    if json {
+        let list: Vec<serde_json::Value> = all
+            .iter()
+            .map(|l| {
+                serde_json::json!({
+                    "name": l.name(), "value": l.get(), "default": l.default_value(),
+                    "unit": l.unit(), "what": l.what(),
+                })
+            })
+            .collect();
+        crate::output::println(serde_json::Value::Array(list))?;
+    } else {
+        let mut text = format!("{:<16} {:>12} {:>12}  what\n", "limit", "value", "default");
+        for l in all {
+            let unit = if l.unit().is_empty() {
+                String::new()
+            } else {
+                format!(" ({})", l.unit())
+            };
+            text.push_str(&format!(
+                "{:<16} {:>12} {:>12}  {}{unit}\n",
+                l.name(),
+                l.get(),
+                l.default_value(),
+                l.what()
+            ));
+        }
+        crate::output::print(text)?;
+    }
+    Ok(ExitCode::SUCCESS)
 }
 
 #[cfg(test)]

@@ -19,6 +19,10 @@ pub enum Error {
         /// The underlying error.
         source: std::io::Error,
     },
+    /// A size, depth or count went past a named limit of [`exactcheck_core::limits`]; the
+    /// message names the limit, its value and the flag that raises it.
+    #[error("{0}")]
+    Limit(#[from] exactcheck_core::limits::LimitError),
     /// Writing standard output failed (see [`crate::output`]).
     #[error("cannot write standard output: {}", io_message(.0))]
     Output(std::io::Error),

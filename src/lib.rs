@@ -7,6 +7,7 @@
 
 pub mod args;
 pub mod bench;
+pub mod budget;
 pub mod claimfile;
 pub mod claims;
 pub mod cli;

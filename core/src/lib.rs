@@ -12,6 +12,7 @@ pub mod bezier;
 pub mod conic;
 pub mod cylinder_sphere;
 pub mod inertia;
+pub mod limits;
 pub mod linalg;
 pub mod miquel;
 pub mod ops;

@@ -148,10 +148,7 @@ impl FileClaim {
 /// `FILE:LINE: claim "ID": key KEY: WHAT` for anything wrong in it.
 pub fn load(path: &Path) -> Result<ClaimsFile, Error> {
     let shown = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|source| Error::Io {
-        path: shown.clone(),
-        source,
-    })?;
+    let text = crate::solve::read_problem(Some(&shown))?;
     let stem = path
         .file_stem()
         .map_or_else(|| shown.clone(), |s| s.to_string_lossy().into_owned());

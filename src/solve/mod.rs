@@ -126,28 +126,43 @@ fn find_kind(kind: &str) -> Result<Solver, Error> {
     }
 }
 
-/// Reads a problem from a file (`-` or none: standard input).
+/// Reads an input file (`-` or none: standard input) as UTF-8 text, at most the `file-size`
+/// limit of bytes: the one reader of every command's input files.
 ///
 /// # Errors
-/// [`Error::Io`] when the file cannot be read.
+/// [`Error::Io`] when the file cannot be read or is not UTF-8; [`Error::Limit`] when it is
+/// larger than the `file-size` limit (read no further than the limit).
 pub fn read_problem(path: Option<&str>) -> Result<String, Error> {
     use std::io::Read;
-    match path {
-        None | Some("-") => {
-            let mut s = String::new();
-            std::io::stdin()
-                .read_to_string(&mut s)
-                .map_err(|source| Error::Io {
-                    path: "-".into(),
-                    source,
-                })?;
-            Ok(s)
-        }
-        Some(p) => std::fs::read_to_string(p).map_err(|source| Error::Io {
-            path: p.into(),
-            source,
-        }),
+    let limit = &exactcheck_core::limits::FILE_SIZE;
+    let shown = path.unwrap_or("-");
+    let io = |source| Error::Io {
+        path: shown.into(),
+        source,
+    };
+    let reader: Box<dyn Read> = match path {
+        None | Some("-") => Box::new(std::io::stdin()),
+        Some(p) => Box::new(std::fs::File::open(p).map_err(io)?),
+    };
+    let mut bytes = Vec::new();
+    reader
+        .take(limit.get().saturating_add(1))
+        .read_to_end(&mut bytes)
+        .map_err(io)?;
+    if bytes.len() as u64 > limit.get() {
+        return Err(Error::Limit(
+            limit.exceeded(format!("{shown}: more than {} bytes", limit.get())),
+        ));
     }
+    String::from_utf8(bytes).map_err(|e| {
+        io(std::io::Error::new(
+            std::io::ErrorKind::InvalidData,
+            format!(
+                "not UTF-8 (invalid byte at offset {})",
+                e.utf8_error().valid_up_to()
+            ),
+        ))
+    })
 }
 
 /// The text without a leading UTF-8 byte-order mark.

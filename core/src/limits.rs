@@ -1,0 +1,274 @@
+//! Resource limits: the one registry of every bound exactcheck puts on what an input may make it
+//! do (sizes, depths, degrees, counts, steps, memory).
+//!
+//! Exact arithmetic on user-supplied formulas has no natural ceiling: a short input can ask for a
+//! number of a billion digits, a field of 2^25 dimensions or a Groebner basis that never ends. So
+//! every place where work or memory grows with the input checks it against a named [`Limit`]
+//! *before* the work is done, and fails with a [`LimitError`] that names the limit, its value and
+//! how to raise it (`--limit NAME=VALUE` on the command line). The defaults are generous for real
+//! formulas and keep every run within seconds and far below 2 GB.
+//!
+//! The values are process-wide atomics: set once at start-up from the command line (or by a test
+//! binary before it starts work), read with relaxed loads at the checks. Nothing here knows a
+//! number type; a check takes the measured size as a `u64`.
+
+use std::fmt;
+use std::sync::atomic::{AtomicU64, Ordering};
+
+/// One named limit: a bound on a size, a depth or a count of work.
+#[derive(Debug)]
+pub struct Limit {
+    name: &'static str,
+    what: &'static str,
+    unit: &'static str,
+    default: u64,
+    value: AtomicU64,
+}
+
+impl Limit {
+    const fn new(
+        name: &'static str,
+        what: &'static str,
+        unit: &'static str,
+        default: u64,
+    ) -> Limit {
+        Limit {
+            name,
+            what,
+            unit,
+            default,
+            value: AtomicU64::new(default),
+        }
+    }
+
+    /// The name used on the command line (`--limit NAME=VALUE`), e.g. `depth`.
+    pub fn name(&self) -> &'static str {
+        self.name
+    }
+
+    /// What is limited, as a noun phrase (`nesting depth of an expression or a document`).
+    pub fn what(&self) -> &'static str {
+        self.what
+    }
+
+    /// The unit of the value (`levels`, `bits`, `MB`, ...).
+    pub fn unit(&self) -> &'static str {
+        self.unit
+    }
+
+    /// The built-in value.
+    pub fn default_value(&self) -> u64 {
+        self.default
+    }
+
+    /// The value in force.
+    pub fn get(&self) -> u64 {
+        self.value.load(Ordering::Relaxed)
+    }
+
+    /// The value in force, as a `usize` (saturating on 32-bit targets).
+    pub fn get_usize(&self) -> usize {
+        usize::try_from(self.get()).unwrap_or(usize::MAX)
+    }
+
+    /// Sets the value for the rest of the process.
+    pub fn set(&self, value: u64) {
+        self.value.store(value, Ordering::Relaxed);
+    }
+
+    /// Restores the built-in value.
+    pub fn reset(&self) {
+        self.set(self.default);
+    }
+
+    /// `Ok` when `actual` is within the limit (`actual <= value`).
+    ///
+    /// # Errors
+    /// A [`LimitError`] naming this limit, its value and `actual`.
+    pub fn check(&'static self, actual: u64) -> Result<(), LimitError> {
+        if actual <= self.get() {
+            Ok(())
+        } else {
+            Err(self.exceeded(actual.to_string()))
+        }
+    }
+
+    /// [`Limit::check`] for a `usize` measure.
+    ///
+    /// # Errors
+    /// As [`Limit::check`].
+    pub fn check_usize(&'static self, actual: usize) -> Result<(), LimitError> {
+        self.check(u64::try_from(actual).unwrap_or(u64::MAX))
+    }
+
+    /// The error for a measure found beyond this limit; `actual` says how far (`"257"`,
+    /// `"more than 1000000"`).
+    pub fn exceeded(&'static self, actual: impl Into<String>) -> LimitError {
+        LimitError {
+            limit: self,
+            value: self.get(),
+            actual: actual.into(),
+        }
+    }
+}
+
+/// A limit was exceeded. Displayed as one line: what, how much, the limit and its value, and the
+/// flag that raises it.
+#[derive(Debug, Clone)]
+pub struct LimitError {
+    /// The limit.
+    pub limit: &'static Limit,
+    /// Its value when the check failed.
+    pub value: u64,
+    /// The measure found (`"257"`, `"more than 1000000"`).
+    pub actual: String,
+}
+
+impl PartialEq for LimitError {
+    fn eq(&self, other: &LimitError) -> bool {
+        std::ptr::eq(self.limit, other.limit)
+            && self.value == other.value
+            && self.actual == other.actual
+    }
+}
+
+impl Eq for LimitError {}
+
+impl fmt::Display for LimitError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let l = self.limit;
+        let unit = if l.unit.is_empty() {
+            String::new()
+        } else {
+            format!(" {}", l.unit)
+        };
+        write!(
+            f,
+            "{} exceeds the limit {} = {}{unit} (found {}; raise it with --limit {}=N)",
+            l.what, l.name, self.value, self.actual, l.name
+        )
+    }
+}
+
+impl std::error::Error for LimitError {}
+
+macro_rules! limits {
+    ($($(#[$doc:meta])* $id:ident = ($name:literal, $what:literal, $unit:literal, $default:expr);)*) => {
+        $($(#[$doc])* pub static $id: Limit = Limit::new($name, $what, $unit, $default);)*
+        /// Every limit, in the order of the README's table.
+        pub fn all() -> &'static [&'static Limit] {
+            static ALL: &[&Limit] = &[$(&$id),*];
+            ALL
+        }
+    };
+}
+
+limits! {
+    /// Size of an input file or of standard input, in bytes.
+    FILE_SIZE = ("file-size", "input size", "bytes", 8 << 20);
+    /// Nesting depth of an expression (parentheses, signs, powers, calls) and of a JSON or TOML
+    /// document (arrays and objects).
+    DEPTH = ("depth", "nesting depth", "levels", 256);
+    /// Decimal digits of a number written in the input, counting a decimal exponent
+    /// (`1e5000` has 5001).
+    DIGITS = ("digits", "digits of a number", "digits", 10_000);
+    /// Absolute value of an exponent after `^`.
+    EXPONENT = ("exponent", "exponent", "", 10_000);
+    /// Size in bits of any exact constant: a folded constant expression, a polynomial
+    /// coefficient, an exact intermediate.
+    CONSTANT_BITS = ("constant-bits", "size of a constant", "bits", 1_000_000);
+    /// Distinct square-free radicands in one square-root field (its dimension over Q is 2^k).
+    RADICANDS = ("radicands", "number of distinct square roots", "", 10);
+    /// Distinct variables of one polynomial.
+    VARIABLES = ("variables", "number of variables", "", 1_000);
+    /// Terms of one polynomial during expansion.
+    TERMS = ("terms", "number of polynomial terms", "", 1_000_000);
+    /// Total degree of one polynomial during expansion.
+    DEGREE = ("degree", "polynomial degree", "", 100_000);
+    /// S-polynomial reductions of one Groebner basis computation.
+    GROEBNER_STEPS = ("groebner-steps", "Groebner basis steps", "", 5_000);
+    /// Elements of one Groebner basis.
+    GROEBNER_BASIS = ("groebner-basis", "Groebner basis size", "polynomials", 500);
+    /// Bisection or refinement steps spent on one real root.
+    BISECTION = ("bisection", "refinement steps for one root", "", 100_000);
+    /// Bits of precision asked of an isolated root (`precision` = 2^-bits).
+    PRECISION_BITS = ("precision-bits", "precision asked", "bits", 100_000);
+    /// Samples of one `solve` answer or one built-in regression run.
+    SAMPLES = ("samples", "number of samples", "", 1_000_000);
+    /// Heap memory of the whole process, in MB (enforced by the command-line tool's allocator).
+    MEMORY = ("memory", "memory in use", "MB", 1_536);
+}
+
+/// The limit called `name`.
+pub fn find(name: &str) -> Option<&'static Limit> {
+    all().iter().copied().find(|l| l.name == name)
+}
+
+/// Sets a limit from `NAME=VALUE` (the argument of `--limit`); the value is a non-negative
+/// integer, `_` allowed between digits.
+///
+/// # Errors
+/// One line naming an unknown limit (with the known names) or a value that is not an integer.
+pub fn set_from_str(arg: &str) -> Result<&'static Limit, String> {
+    let (name, value) = arg
+        .split_once('=')
+        .ok_or_else(|| format!("--limit takes NAME=VALUE, not `{arg}`"))?;
+    let name = name.trim();
+    let limit = find(name).ok_or_else(|| {
+        let names: Vec<&str> = all().iter().map(|l| l.name).collect();
+        format!(
+            "--limit: no limit named `{name}` (limits: {})",
+            names.join(", ")
+        )
+    })?;
+    let digits: String = value.trim().chars().filter(|&c| c != '_').collect();
+    let v: u64 = digits
+        .parse()
+        .map_err(|_| format!("--limit {name}: `{value}` is not a non-negative integer"))?;
+    limit.set(v);
+    Ok(limit)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_are_unique_and_found() {
+        for l in all() {
+            assert!(std::ptr::eq(find(l.name()).unwrap(), *l));
+            assert_eq!(all().iter().filter(|m| m.name() == l.name()).count(), 1);
+        }
+        assert!(find("nonsense").is_none());
+    }
+
+    #[test]
+    fn the_message_names_the_limit_its_value_and_the_flag() {
+        // A private limit, so that the process-wide ones are not disturbed under parallel tests.
+        static L: Limit = Limit::new("test-depth", "nesting depth", "levels", 3);
+        assert!(L.check(3).is_ok());
+        let e = L.check(4).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "nesting depth exceeds the limit test-depth = 3 levels (found 4; raise it with --limit test-depth=N)"
+        );
+        L.set(4);
+        assert!(L.check(4).is_ok());
+        L.reset();
+        assert_eq!(L.get(), 3);
+    }
+
+    #[test]
+    fn set_from_str_rejects_unknown_names_and_bad_values() {
+        assert!(set_from_str("depth").unwrap_err().contains("NAME=VALUE"));
+        assert!(set_from_str("nope=3")
+            .unwrap_err()
+            .contains("no limit named `nope`"));
+        assert!(set_from_str("depth=-1")
+            .unwrap_err()
+            .contains("not a non-negative integer"));
+        assert!(set_from_str("depth=1x")
+            .unwrap_err()
+            .contains("not a non-negative integer"));
+    }
+}

@@ -1,0 +1,264 @@
+//! The command's budget in memory and time: the backstops behind the named size limits of
+//! [`exactcheck_core::limits`].
+//!
+//! The size limits stop a computation *before* it grows (a constant of too many bits, too many
+//! terms, too deep a nesting) with an error naming the limit. What they cannot foresee is
+//! guarded here, for the command-line tool only:
+//!
+//! - **Memory.** [`Accounting`] is the binary's global allocator: the system allocator plus a
+//!   count of the bytes in use. An allocation that would take the count past the `memory` limit
+//!   (1,536 MB by default) ends the process at once with one line naming the limit and exit
+//!   status 2, instead of the runtime's "memory allocation of N bytes failed" abort (or the
+//!   kernel's OOM killer). The count is one relaxed atomic add per allocation and free; the
+//!   message is written without allocating (the allocator cannot call back into itself).
+//! - **Time.** `--timeout SECONDS` starts a watchdog thread ([`start_timeout`]) that ends the
+//!   process with one line and exit status 2 when the command has not finished in time.
+//! - **Progress.** A long `prove` or `solve` shows the seconds spent on standard error when that
+//!   is a terminal ([`start_progress`]); [`crate::output`] clears the line before writing.
+//!
+//! Hand-written because no crate does this: allocator-limiting crates (`cap`, `stats_alloc`)
+//! return a null pointer past the cap, which the runtime turns into an abort with exit status 134
+//! and a two-line message; exactcheck's contract is one line and exit status 2.
+
+use exactcheck_core::limits;
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::io::IsTerminal as _;
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::Mutex;
+use std::time::{Duration, Instant};
+
+/// Bytes handed out by the allocator and not yet freed.
+static IN_USE: AtomicUsize = AtomicUsize::new(0);
+/// The most bytes [`Accounting`] lets be in use; `usize::MAX` (no cap) until
+/// [`enforce_memory_limit`] sets it.
+static CAP: AtomicUsize = AtomicUsize::new(usize::MAX);
+
+/// The global allocator of the `exactcheck` binary: [`System`] plus the byte count checked
+/// against the `memory` limit.
+pub struct Accounting;
+
+impl Accounting {
+    /// Counts `size` more bytes in use; past the cap, ends the process (exit status 2).
+    fn grow(size: usize) {
+        let before = IN_USE.fetch_add(size, Ordering::Relaxed);
+        if before.saturating_add(size) > CAP.load(Ordering::Relaxed) {
+            out_of_memory();
+        }
+    }
+
+    fn shrink(size: usize) {
+        IN_USE.fetch_sub(size, Ordering::Relaxed);
+    }
+}
+
+// SAFETY: every method forwards to `System` with the same arguments; the accounting only
+// observes sizes and never changes what is allocated.
+unsafe impl GlobalAlloc for Accounting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        Accounting::grow(layout.size());
+        // SAFETY: the caller's contract for `alloc` is `System`'s.
+        let p = unsafe { System.alloc(layout) };
+        if p.is_null() {
+            Accounting::shrink(layout.size());
+        }
+        p
+    }
+
+    unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
+        Accounting::grow(layout.size());
+        // SAFETY: as for `alloc`.
+        let p = unsafe { System.alloc_zeroed(layout) };
+        if p.is_null() {
+            Accounting::shrink(layout.size());
+        }
+        p
+    }
+
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        // SAFETY: `ptr` was allocated by `System` with `layout` (every allocation goes there).
+        unsafe { System.dealloc(ptr, layout) };
+        Accounting::shrink(layout.size());
+    }
+
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        let old = layout.size();
+        if new_size > old {
+            Accounting::grow(new_size - old);
+        }
+        // SAFETY: as for `dealloc`; `new_size` satisfies `realloc`'s contract by the caller's.
+        let p = unsafe { System.realloc(ptr, layout, new_size) };
+        if p.is_null() {
+            if new_size > old {
+                Accounting::shrink(new_size - old);
+            }
+        } else if new_size < old {
+            Accounting::shrink(old - new_size);
+        }
+        p
+    }
+}
+
+/// Caps the bytes in use at the `memory` limit (in MB). Called once by the CLI after the
+/// `--limit` flags are read.
+pub fn enforce_memory_limit() {
+    let mb = limits::MEMORY.get();
+    let bytes = usize::try_from(mb.saturating_mul(1 << 20)).unwrap_or(usize::MAX);
+    CAP.store(bytes, Ordering::Relaxed);
+}
+
+/// Bytes in use now (counted only when [`Accounting`] is the global allocator).
+pub fn bytes_in_use() -> usize {
+    IN_USE.load(Ordering::Relaxed)
+}
+
+/// A fixed buffer for formatting a message without allocating.
+struct StackText {
+    buf: [u8; 256],
+    len: usize,
+}
+
+impl std::fmt::Write for StackText {
+    fn write_str(&mut self, s: &str) -> std::fmt::Result {
+        let room = self.buf.len() - self.len;
+        let n = s.len().min(room);
+        self.buf[self.len..self.len + n].copy_from_slice(&s.as_bytes()[..n]);
+        self.len += n;
+        Ok(())
+    }
+}
+
+/// Writes one line to standard error and ends the process with exit status 2, running no
+/// destructors and allocating nothing.
+fn die(args: std::fmt::Arguments<'_>) -> ! {
+    let mut text = StackText {
+        buf: [0; 256],
+        len: 0,
+    };
+    let _ = std::fmt::write(&mut text, args);
+    exit_with(&text.buf[..text.len])
+}
+
+#[cfg(unix)]
+fn exit_with(line: &[u8]) -> ! {
+    // SAFETY: `write` reads `line.len()` bytes of a live buffer; `_exit` never returns.
+    unsafe {
+        let _ = libc::write(2, line.as_ptr().cast(), line.len());
+        libc::_exit(2)
+    }
+}
+
+#[cfg(not(unix))]
+fn exit_with(line: &[u8]) -> ! {
+    use std::io::Write as _;
+    let _ = std::io::stderr().write_all(line);
+    std::process::exit(2)
+}
+
+#[cold]
+fn out_of_memory() -> ! {
+    let l = &limits::MEMORY;
+    die(format_args!(
+        "exactcheck: error: {} exceeds the limit {} = {} {} (raise it with --limit {}=N)\n",
+        l.what(),
+        l.name(),
+        l.get(),
+        l.unit(),
+        l.name()
+    ))
+}
+
+/// Ends the process with one line and exit status 2 when `seconds` have passed.
+///
+/// # Errors
+/// A `seconds` that is not a positive finite number.
+pub fn start_timeout(seconds: f64) -> Result<(), crate::Error> {
+    if !(seconds.is_finite() && seconds > 0.0 && seconds <= 1e9) {
+        return Err(crate::Error::Usage(format!(
+            "--timeout must be a number of seconds between 0 and 1e9 (got {seconds})"
+        )));
+    }
+    let budget = Duration::from_secs_f64(seconds);
+    std::thread::Builder::new()
+        .name("timeout".into())
+        .spawn(move || {
+            std::thread::sleep(budget);
+            clear_progress();
+            die(format_args!(
+                "exactcheck: error: the command did not finish within --timeout {seconds} s\n"
+            ))
+        })
+        .map_err(|e| crate::Error::Usage(format!("--timeout: cannot start its timer: {e}")))?;
+    Ok(())
+}
+
+/// Whether the progress line is on screen (guarded so that it is cleared exactly once).
+static PROGRESS: Mutex<bool> = Mutex::new(false);
+/// Set when the command's output begins: no progress line after that.
+static PROGRESS_DONE: AtomicBool = AtomicBool::new(false);
+
+/// Shows "working: WHAT (N s)" on standard error, updated every second, once the command has run
+/// for two seconds; only when standard error is a terminal. Cleared by [`clear_progress`].
+pub fn start_progress(what: &'static str) {
+    if !std::io::stderr().is_terminal() {
+        return;
+    }
+    let start = Instant::now();
+    let _ = std::thread::Builder::new()
+        .name("progress".into())
+        .spawn(move || {
+            std::thread::sleep(Duration::from_secs(2));
+            loop {
+                {
+                    let Ok(mut shown) = PROGRESS.lock() else {
+                        return;
+                    };
+                    if PROGRESS_DONE.load(Ordering::Relaxed) {
+                        return;
+                    }
+                    use std::io::Write as _;
+                    let _ = write!(
+                        std::io::stderr(),
+                        "\r\x1b[Kexactcheck: working: {what} ({} s; --timeout bounds it)",
+                        start.elapsed().as_secs()
+                    );
+                    *shown = true;
+                }
+                std::thread::sleep(Duration::from_secs(1));
+            }
+        });
+}
+
+/// Removes the progress line, if shown, and stops it for good (before output is written).
+pub fn clear_progress() {
+    PROGRESS_DONE.store(true, Ordering::Relaxed);
+    if let Ok(mut shown) = PROGRESS.lock() {
+        if *shown {
+            use std::io::Write as _;
+            let _ = write!(std::io::stderr(), "\r\x1b[K");
+            *shown = false;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn stack_text_truncates_instead_of_allocating() {
+        let mut t = StackText {
+            buf: [0; 256],
+            len: 0,
+        };
+        let long = "x".repeat(300);
+        let _ = std::fmt::write(&mut t, format_args!("{long}"));
+        assert_eq!(t.len, 256);
+    }
+
+    #[test]
+    fn timeouts_must_be_positive_and_finite() {
+        for bad in [0.0, -1.0, f64::NAN, f64::INFINITY, 2e9] {
+            assert!(start_timeout(bad).is_err(), "{bad}");
+        }
+    }
+}
