@@ -298,3 +298,105 @@ fn plot_to_dash_writes_standard_output_not_a_file() {
     assert!(!dir.0.join("-").exists(), "a file named - was written");
     assert!(String::from_utf8_lossy(&o.stderr).starts_with("wrote standard output: t-u diagram"));
 }
+
+/// The one line on standard error of a run that must fail with status 2.
+fn one_error_line(o: &Output) -> String {
+    assert_eq!(o.status.code(), Some(2), "{o:?}");
+    let err = String::from_utf8_lossy(&o.stderr).into_owned();
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(!err.contains("panicked"), "{err}");
+    err.trim_end().to_string()
+}
+
+#[test]
+fn limit_flags_are_checked_and_listed() {
+    let e = one_error_line(&exactcheck(&["prove", "x", "x", "--limit", "nope=3"]));
+    assert!(
+        e.starts_with("exactcheck: error: --limit: no limit named `nope` (limits: file-size, "),
+        "{e}"
+    );
+    let e = one_error_line(&exactcheck(&["--limit", "depth=deep", "prove", "x", "x"]));
+    assert_eq!(
+        e,
+        "exactcheck: error: --limit depth: `deep` is not a non-negative integer"
+    );
+    let e = one_error_line(&exactcheck(&["prove", "x", "x", "--limit", "depth"]));
+    assert!(e.contains("--limit takes NAME=VALUE"), "{e}");
+    // `limits` lists every limit of the registry, with a value changed by --limit.
+    let o = exactcheck(&["limits", "--json", "--limit", "depth=1_000"]);
+    assert!(o.status.success());
+    let list: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON");
+    let list = list.as_array().expect("an array");
+    assert_eq!(list.len(), exactcheck_core::limits::all().len());
+    for (entry, limit) in list.iter().zip(exactcheck_core::limits::all()) {
+        assert_eq!(entry["name"], limit.name());
+        assert_eq!(entry["default"], limit.default_value());
+        let value = if limit.name() == "depth" {
+            1000
+        } else {
+            limit.default_value()
+        };
+        assert_eq!(entry["value"], value, "{}", limit.name());
+    }
+}
+
+#[test]
+fn the_file_size_limit_is_one_line_before_reading_the_rest() {
+    let dir = TempDir::new("size");
+    let path = dir.0.join("big.json");
+    std::fs::write(&path, vec![b' '; 5000]).expect("write");
+    let p = path.to_str().expect("UTF-8 temp path");
+    let e = one_error_line(&exactcheck(&["solve", p, "--limit", "file-size=4096"]));
+    assert!(
+        e.contains("input size exceeds the limit file-size = 4096 bytes")
+            && e.contains("raise it with --limit file-size=N"),
+        "{e}"
+    );
+    // At the limit the file is read (and refused for what it holds, not for its size).
+    let e = one_error_line(&exactcheck(&["solve", p, "--limit", "file-size=5000"]));
+    assert!(!e.contains("file-size"), "{e}");
+}
+
+#[test]
+fn the_memory_limit_ends_the_run_with_one_line_instead_of_an_abort() {
+    // (x0 + ... + x29)^6 has C(35, 6) = 1,623,160 terms: far more than 20 MB.
+    let vars: Vec<String> = (0..30).map(|i| format!("x{i}")).collect();
+    let lhs = format!("({})^6", vars.join("+"));
+    let e = one_error_line(&exactcheck(&[
+        "prove",
+        &lhs,
+        "0",
+        "--limit",
+        "memory=20",
+        "--limit",
+        "terms=100000000",
+    ]));
+    assert_eq!(
+        e,
+        "exactcheck: error: memory in use exceeds the limit memory = 20 MB (raise it with --limit memory=N)"
+    );
+}
+
+#[test]
+fn timeout_ends_a_long_run_with_one_line_and_leaves_a_short_one_alone() {
+    let start = Instant::now();
+    let e = one_error_line(&exactcheck(&[
+        "prove",
+        "(x+y+z)^1000",
+        "0",
+        "--timeout",
+        "0.5",
+    ]));
+    assert_eq!(
+        e,
+        "exactcheck: error: the command did not finish within --timeout 0.5 s"
+    );
+    assert!(start.elapsed() < Duration::from_secs(60));
+    let o = exactcheck(&["prove", "(a+b)^2", "a^2+2a b+b^2", "--timeout", "60"]);
+    assert!(o.status.success(), "{o:?}");
+    for bad in ["0", "-1", "nan", "inf"] {
+        let flag = format!("--timeout={bad}");
+        let e = one_error_line(&exactcheck(&["prove", "x", "x", &flag]));
+        assert!(e.contains("--timeout"), "{e}");
+    }
+}
