@@ -1,6 +1,8 @@
 //! The malformed-input corpus (issue 13): every file of `tests/malformed/` is fed to the command
 //! that reads it, and the answer must be a refusal — exit status 2, exactly one line on standard
-//! error, equal to the case's `.expect` file, no "panicked" anywhere, within the kill-timeout.
+//! error (plus clap's hint line for usage errors), equal to the case's `.expect` file, nothing on
+//! standard output, no "panicked" anywhere, within the kill-timeout, not the memory backstop, and
+//! the named limit for the cases of `LIMITS`.
 //!
 //! The convention (which command reads which file, the `.args` format, `KNOWN_FAILURES`,
 //! blessing) is documented in `tests/malformed/README.md`; [`case_of`] implements it.
@@ -257,6 +259,12 @@ fn judge(
     let Some(line) = error_line(stderr) else {
         return Err(format!("not one line on stderr: {}", r.describe()));
     };
+    if !r.stdout.is_empty() {
+        return Err(format!(
+            "a refusal printed to stdout: {}",
+            shorten(&r.stdout_text())
+        ));
+    }
     // The allocator's memory cap is a backstop (contract of issue 13): an input that reaches it
     // has escaped the named limits, unless the case lowers the cap on purpose.
     let sets_memory = case
