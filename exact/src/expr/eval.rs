@@ -203,7 +203,7 @@ fn binomial_power<C: Coefficient>(b: &Poly<C>, k: u32) -> Result<Option<Poly<C>>
     if bits.saturating_mul(2) > budget_bits {
         return Err(SizeError::Limit(limits::MEMORY.exceeded(format!(
             "a power of {} MB of coefficients, over a quarter of the limit",
-            bits.saturating_mul(2) / 8 >> 20
+            (bits.saturating_mul(2) / 8) >> 20
         ))));
     }
     let (e1, c1) = (&terms[0].0, terms[0].1);

@@ -354,3 +354,37 @@ fn calls_only_in_the_call_grammar() {
     ));
     assert!(parse_expr_with_calls("f()").is_err());
 }
+
+#[test]
+fn powers_of_binomials_by_the_binomial_theorem() {
+    // The binomial path (k + 1 terms from exact ratios) agrees with repeated multiplication,
+    // for monomials in several variables, signs, fractions and big coefficients.
+    let mut v = Vars::new();
+    for (base, k) in [
+        ("2x - 3y/2", 37u32),
+        ("x^3 y - 7", 12),
+        ("x + 1", 2),
+        ("-a b^2 + 2^100 c", 9),
+        ("x^2 + x", 25),
+    ] {
+        let b: Poly<Rational> = parse_poly(base, &mut v).unwrap();
+        let mut want = Poly::one();
+        for _ in 0..k {
+            want *= b.clone();
+        }
+        let got: Poly<Rational> = parse_poly(&format!("({base})^{k}"), &mut v).unwrap();
+        assert_eq!(got, want, "({base})^{k}");
+        assert_eq!(got.len(), k as usize + 1);
+    }
+    // (x+y)^5000: 5001 terms, the middle binomial exact.
+    let p: Poly<Rational> = parse_poly("(x+y)^5000", &mut v).unwrap();
+    assert_eq!(p.len(), 5001);
+    let mid = (1..=2500u32).fold(num_bigint::BigInt::from(1u32), |acc, i| {
+        acc * (5000 - 2500 + i) / i
+    });
+    let (x, y) = (v.get("x").unwrap(), v.get("y").unwrap());
+    assert_eq!(
+        p.coefficient(&[(x, 2500), (y, 2500)]),
+        Rational::from(mid)
+    );
+}
