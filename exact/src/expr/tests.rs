@@ -383,8 +383,5 @@ fn powers_of_binomials_by_the_binomial_theorem() {
         acc * (5000 - 2500 + i) / i
     });
     let (x, y) = (v.get("x").unwrap(), v.get("y").unwrap());
-    assert_eq!(
-        p.coefficient(&[(x, 2500), (y, 2500)]),
-        Rational::from(mid)
-    );
+    assert_eq!(p.coefficient(&[(x, 2500), (y, 2500)]), Rational::from(mid));
 }
