@@ -291,6 +291,27 @@ fn random_test(
     Ok(code)
 }
 
+/// The longest value or polynomial the text verdict prints in full.
+const SHOWN_CHARS: usize = 2_000;
+
+/// `text` for the one-line text verdict: in full up to [`SHOWN_CHARS`] characters, else its
+/// beginning and its length (a counter-example of `(x+y)^5000` is a number of 3,500 digits and
+/// a polynomial of 7 MB); `--json` always has the exact text in full.
+fn abbreviate(text: String) -> String {
+    if text.len() <= SHOWN_CHARS {
+        return text;
+    }
+    let mut cut = SHOWN_CHARS / 2;
+    while !text.is_char_boundary(cut) {
+        cut -= 1;
+    }
+    format!(
+        "{}... [{} characters in all; --json shows it in full]",
+        &text[..cut],
+        text.len()
+    )
+}
+
 fn parse(text: &str, what: &str) -> Result<Expr, Error> {
     parse_expr(text).map_err(|e| Error::Input(format!("{what}: {e}")))
 }
@@ -419,11 +440,14 @@ fn prove_over<C: PointField + Display>(
         Decision::Undecided { .. } => ("undecided", ExitCode::from(1)),
     };
     let terms = residual.len();
-    let shown = |v: &Var| {
-        residual.variables().contains(v)
-            || rels.iter().any(|r| r.variables().contains(v))
-            || doms.iter().any(|(w, _)| w == v)
-    };
+    // The variables a counter-example shows: those of the residual, the relations and the
+    // domains (computed once: per variable it was quadratic in 10,000 variables).
+    let mut shown_vars: std::collections::HashSet<Var> = residual.variables().into_iter().collect();
+    for r in &rels {
+        shown_vars.extend(r.variables());
+    }
+    shown_vars.extend(doms.iter().map(|(w, _)| *w));
+    let shown = |v: &Var| shown_vars.contains(v);
     let evidence = match &decision {
         Decision::Proved { expanded_terms } if *expanded_terms == 0 => {
             "LHS - RHS expands to 0".to_string()
@@ -441,20 +465,29 @@ fn prove_over<C: PointField + Display>(
                 .filter(|(v, _)| shown(v))
                 .map(|(v, q)| format!("{} = {q}", name(*v)))
                 .collect();
-            format!(
-                "at {}{} LHS - RHS = {value}; LHS - RHS reduces{modulo} to {}, so LHS = RHS + ({})",
-                at.join(", "),
-                if relations.is_empty() { "" } else { " (where the relations hold)" },
-                normal_form.display(&vars),
-                normal_form.display(&vars)
-            )
+            let value = abbreviate(value.to_string());
+            let nf = abbreviate(normal_form.display(&vars).to_string());
+            if at.is_empty() {
+                // No variable: the identity is between constants, and their difference is the
+                // counter-example (old: "at  LHS - RHS = ...", an empty point).
+                format!(
+                    "LHS - RHS = {value}, a non-zero constant{}, so LHS = RHS + ({nf})",
+                    if relations.is_empty() { "" } else { " (where the relations hold)" },
+                )
+            } else {
+                format!(
+                    "at {}{} LHS - RHS = {value}; LHS - RHS reduces{modulo} to {nf}, so LHS = RHS + ({nf})",
+                    abbreviate(at.join(", ")),
+                    if relations.is_empty() { "" } else { " (where the relations hold)" },
+                )
+            }
         }
         Decision::Undecided {
             normal_form,
             searched,
         } => format!(
             "LHS - RHS reduces{modulo} to {} (not zero), but no point{within} where it is non-zero was found: {searched}",
-            normal_form.display(&vars)
+            abbreviate(normal_form.display(&vars).to_string())
         ),
     };
     if args.json {

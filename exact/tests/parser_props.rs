@@ -5,9 +5,7 @@
 //! behaviours of the two former grammars.
 
 use exactcheck_core::Ring;
-use exactcheck_exact::expr::{
-    parse_expr, parse_poly, AddOp, Expr, ExprError, ExprKind, MulOp, MAX_CONSTANT_BITS,
-};
+use exactcheck_exact::expr::{parse_expr, parse_poly, AddOp, Expr, ExprError, ExprKind, MulOp};
 use exactcheck_exact::poly::{Poly, Vars};
 use exactcheck_exact::{ComplexRadical, Radical, Rational};
 use num_bigint::BigInt;
@@ -86,18 +84,25 @@ fn unknown_functions_are_errors_everywhere() {
 fn huge_constants_are_refused_before_computing() {
     // Old: `prove '((2^10000)^10000)^10000'` aborted allocating; in a solve string
     // "((2^1024)^1024)^1024" aborted after 13 s.
-    let too_large = format!(
-        "constant too large at 0: more than {MAX_CONSTANT_BITS} bits (limit MAX_CONSTANT_BITS)"
-    );
+    let too_large = "size of a constant exceeds the limit constant-bits = 1000000 bits (found at \
+                     least ";
     for text in [
         "((2^10000)^10000)^10000",
         "((2^1024)^1024)^1024",
         "(2^10000)^10000",
     ] {
         let start = std::time::Instant::now();
-        assert_eq!(via_poly(text).unwrap_err().to_string(), too_large);
-        assert_eq!(text.parse::<Radical>().unwrap_err().to_string(), too_large);
-        assert_eq!(text.parse::<Rational>().unwrap_err().to_string(), too_large);
+        assert!(via_poly(text).unwrap_err().to_string().contains(too_large));
+        assert!(text
+            .parse::<Radical>()
+            .unwrap_err()
+            .to_string()
+            .contains(too_large));
+        assert!(text
+            .parse::<Rational>()
+            .unwrap_err()
+            .to_string()
+            .contains(too_large));
         assert!(
             start.elapsed().as_secs() < 5,
             "{text}: {:?}",
@@ -107,11 +112,11 @@ fn huge_constants_are_refused_before_computing() {
     // Radicals and complex numbers are limited too.
     assert!(matches!(
         "(sqrt(2)*2^1000)^10000".parse::<Radical>(),
-        Err(ExprError::ConstantTooLarge { .. })
+        Err(ExprError::Limit { error, .. }) if error.limit.name() == "constant-bits"
     ));
     assert!(matches!(
         "(2^1000 i)^10000".parse::<ComplexRadical>(),
-        Err(ExprError::ConstantTooLarge { .. })
+        Err(ExprError::Limit { error, .. }) if error.limit.name() == "constant-bits"
     ));
 }
 

@@ -81,7 +81,7 @@ impl Subject for TextSubject<'_> {
                 })
                 .collect()),
             Err(ExactStop::OutsideDomain) => Err(CaseError::OutsideDomain),
-            // Undecided at the precision cap, or an intermediate beyond MAX_CONSTANT_BITS: no
+            // Undecided at the precision cap, or an intermediate beyond the constant-bits limit: no
             // reference either way, counted as undecided (never guessed).
             Err(ExactStop::Undecided | ExactStop::TooLarge) => Err(CaseError::Undecided),
         }

@@ -2,7 +2,7 @@
 //! with the size limits of the module documentation.
 
 use super::*;
-use crate::poly::{Poly, Vars};
+use crate::poly::{Poly, SizeError, Vars};
 use num_traits::ToPrimitive;
 
 // ------------------------------------------------------------------------------ conversion
@@ -13,9 +13,10 @@ impl Expr {
     ///
     /// # Errors
     /// Division by a non-constant expression or by zero, exponents that are not integer
-    /// constants (or exceed [`MAX_EXPONENT`], or overflow, or are negative on a non-constant
-    /// base), `sqrt` of a non-constant or of a constant whose root is not in `C`, numbers with no
-    /// image in `C`, coefficients beyond [`MAX_CONSTANT_BITS`].
+    /// constants (or overflow, or are negative on a non-constant base), `sqrt` of a
+    /// non-constant or of a constant whose root is not in `C`, numbers with no image in `C`,
+    /// and [`ExprError::Limit`] past the `exponent`, `constant-bits`, `variables`, `degree` or
+    /// `terms` limit (see the module documentation).
     pub fn to_poly<C: Coefficient>(&self, vars: &mut Vars) -> Result<Poly<C>, ExprError> {
         match &self.kind {
             ExprKind::Number(q) => {
@@ -26,7 +27,16 @@ impl Expr {
                         number: q.to_string(),
                     })
             }
-            ExprKind::Var(name) => Ok(Poly::var(vars.var(name))),
+            ExprKind::Var(name) => {
+                let v = vars.var(name);
+                limits::VARIABLES
+                    .check(u64::from(v) + 1)
+                    .map_err(|error| ExprError::Limit {
+                        pos: self.pos,
+                        error,
+                    })?;
+                Ok(Poly::var(v))
+            }
             ExprKind::Neg(x) => Ok(-x.to_poly::<C>(vars)?),
             ExprKind::Sum(items) => {
                 let mut parts = Vec::with_capacity(items.len());
@@ -37,13 +47,13 @@ impl Expr {
                         AddOp::Minus => -p,
                     });
                 }
-                Ok(Poly::sum(parts))
+                let p = Poly::sum(parts);
+                check_terms(&p, self.pos)?;
+                Ok(p)
             }
             ExprKind::Product(items) => {
                 let (a, b) = product_pair(items, self.pos, vars)?;
-                let p = a
-                    .checked_mul(&b)
-                    .ok_or(ExprError::ExponentOverflow { pos: self.pos })?;
+                let p = a.try_mul(&b).map_err(|e| size_error(e, self.pos))?;
                 check_coefficients(&p, self.pos)?;
                 Ok(p)
             }
@@ -58,15 +68,17 @@ impl Expr {
                 // The coefficient of a vertex monomial of the Newton polytope of b^k is the k-th
                 // power of b's, so predict with the largest coefficient before expanding.
                 let largest = b.coefficients().iter().map(C::size_bits).max();
-                if largest.unwrap_or(0).saturating_mul(u64::from(k)) > MAX_CONSTANT_BITS {
-                    return Err(ExprError::ConstantTooLarge {
+                let predicted = largest.unwrap_or(0).saturating_mul(u64::from(k));
+                limits::CONSTANT_BITS
+                    .check(predicted)
+                    .map_err(|_| ExprError::Limit {
                         pos: self.pos,
-                        max: MAX_CONSTANT_BITS,
-                    });
-                }
-                let p = b
-                    .checked_pow(k)
-                    .ok_or(ExprError::ExponentOverflow { pos: self.pos })?;
+                        error: limits::CONSTANT_BITS.exceeded(format!("at least {predicted}")),
+                    })?;
+                let p = match binomial_power(&b, k).map_err(|e| size_error(e, self.pos))? {
+                    Some(p) => p,
+                    None => b.try_pow(k).map_err(|e| size_error(e, self.pos))?,
+                };
                 check_coefficients(&p, self.pos)?;
                 Ok(p)
             }
@@ -102,7 +114,7 @@ impl Expr {
     ///
     /// # Errors
     /// A variable, division by zero, a bad exponent, a square root not in `C`, a number with no
-    /// image in `C`, a constant beyond [`MAX_CONSTANT_BITS`].
+    /// image in `C`, [`ExprError::Limit`] past the `exponent` or `constant-bits` limit.
     pub fn eval_constant<C: Coefficient>(&self) -> Result<C, ExprError> {
         match &self.kind {
             ExprKind::Number(q) => C::from_rational(q).ok_or_else(|| ExprError::Unrepresentable {
@@ -160,6 +172,69 @@ impl Expr {
     }
 }
 
+/// `b^k` for a binomial `b = c1 m1 + c2 m2` by the binomial theorem:
+/// `sum_i binom(k, i) c1^i c2^(k-i) m1^i m2^(k-i)`, `k + 1` distinct terms, each binomial from
+/// the previous one by an exact integer ratio. Binary powering would square `b^(k/2)`, about
+/// `k^2/8` products of large coefficients: `(x+y)^5000` took 10 to 25 s that way, a fraction
+/// of a second here. `None` (nothing computed) when `b` is not a binomial, `k < 2`, or a
+/// binomial coefficient has no image in `C`; the limits are those of [`Poly::try_pow`].
+fn binomial_power<C: Coefficient>(b: &Poly<C>, k: u32) -> Result<Option<Poly<C>>, SizeError> {
+    if b.len() != 2 || k < 2 {
+        return Ok(None);
+    }
+    let k64 = u64::from(k);
+    limits::DEGREE.check(b.total_degree().saturating_mul(k64))?;
+    if u64::from(b.max_exponent()) * k64 > u64::from(u32::MAX) {
+        return Err(SizeError::ExponentOverflow);
+    }
+    limits::TERMS.check(k64 + 1)?;
+    let terms: Vec<(Vec<(crate::poly::Var, u32)>, &C)> =
+        b.terms().map(|(m, c)| (m.exponents(), c)).collect();
+    // The coefficients take about (k + 1) (k (s1 + s2) / 2 + k) bits in all (term i has
+    // i s1 + (k - i) s2 bits and a binomial of at most k bits), and so do the powers of c2
+    // kept: predicted against a quarter of the memory limit before any work.
+    let (s1, s2) = (terms[0].1.size_bits(), terms[1].1.size_bits());
+    let bits = (k64 + 1).saturating_mul(k64.saturating_mul(s1.saturating_add(s2)) / 2 + k64);
+    let budget_bits = limits::MEMORY
+        .get()
+        .saturating_mul(1 << 20)
+        .saturating_mul(8)
+        / 4;
+    if bits.saturating_mul(2) > budget_bits {
+        return Err(SizeError::Limit(limits::MEMORY.exceeded(format!(
+            "a power of {} MB of coefficients, over a quarter of the limit",
+            (bits.saturating_mul(2) / 8) >> 20
+        ))));
+    }
+    let (e1, c1) = (&terms[0].0, terms[0].1);
+    let (e2, c2) = (&terms[1].0, terms[1].1);
+    // c2^j for j = 0..=k, so that term i takes c2^(k-i).
+    let mut pow2 = Vec::with_capacity(k as usize + 1);
+    pow2.push(C::one());
+    for j in 1..=k as usize {
+        let next = pow2[j - 1].mul_ref(c2);
+        pow2.push(next);
+    }
+    let mut binom = BigInt::from(1u32);
+    let mut pow1 = C::one();
+    let mut out = Vec::with_capacity(k as usize + 1);
+    for i in 0..=k {
+        let Some(bc) = C::from_rational(&Rational::from(binom.clone())) else {
+            return Ok(None);
+        };
+        let c = bc.mul_ref(&pow1).mul_ref(&pow2[(k - i) as usize]);
+        let mut m: Vec<(crate::poly::Var, u32)> = Vec::with_capacity(e1.len() + e2.len());
+        m.extend(e1.iter().map(|&(v, e)| (v, e * i)));
+        m.extend(e2.iter().map(|&(v, e)| (v, e * (k - i))));
+        out.push((m, c));
+        if i < k {
+            binom = binom * (k - i) / (i + 1);
+            pow1 = pow1.mul_ref(c1);
+        }
+    }
+    Ok(Some(Poly::from_terms(out)))
+}
+
 /// The square root of the constant `c` (the value of `arg`, in `sqrt` at `pos`).
 fn sqrt_of<C: Coefficient>(c: C, pos: usize, arg: &Expr) -> Result<C, ExprError> {
     c.try_sqrt().ok_or_else(|| ExprError::NoSqrt {
@@ -169,9 +244,9 @@ fn sqrt_of<C: Coefficient>(c: C, pos: usize, arg: &Expr) -> Result<C, ExprError>
     })
 }
 
-/// `c^k` for a constant `c` and `|k| <= MAX_EXPONENT`, by binary powering with the size limit:
-/// refused at once when `k * size_bits(c)` exceeds [`MAX_CONSTANT_BITS`] (a lower bound of the
-/// result's size), and checked after every multiplication, so no intermediate value exceeds
+/// `c^k` for a constant `c` and `|k|` within the `exponent` limit, by binary powering with the
+/// size limit: refused at once when `k * size_bits(c)` exceeds `constant-bits` (a lower bound of
+/// the result's size), and checked after every multiplication, so no intermediate value exceeds
 /// about twice the limit. `pos` is the power's position, `exp_pos` its exponent's.
 fn constant_power<C: Coefficient>(
     c: C,
@@ -186,10 +261,11 @@ fn constant_power<C: Coefficient>(
         c
     };
     let mut e = k.unsigned_abs();
-    if base.size_bits().saturating_mul(e) > MAX_CONSTANT_BITS {
-        return Err(ExprError::ConstantTooLarge {
+    let predicted = base.size_bits().saturating_mul(e);
+    if predicted > limits::CONSTANT_BITS.get() {
+        return Err(ExprError::Limit {
             pos,
-            max: MAX_CONSTANT_BITS,
+            error: limits::CONSTANT_BITS.exceeded(format!("at least {predicted}")),
         });
     }
     let mut acc = C::one();
@@ -208,7 +284,7 @@ fn constant_power<C: Coefficient>(
     Ok(acc)
 }
 
-/// `Err(ConstantTooLarge)` when a coefficient of `p` exceeds [`MAX_CONSTANT_BITS`].
+/// The `constant-bits` limit on every coefficient of `p`.
 fn check_coefficients<C: Coefficient>(p: &Poly<C>, pos: usize) -> Result<(), ExprError> {
     p.coefficients()
         .iter()
@@ -248,15 +324,13 @@ fn product_pair<C: Coefficient>(
     };
     let mut a = first.scale(&scalar);
     for f in it {
-        a = a
-            .checked_mul(&f)
-            .ok_or(ExprError::ExponentOverflow { pos })?;
+        a = a.try_mul(&f).map_err(|e| size_error(e, pos))?;
         check_coefficients(&a, pos)?;
     }
     Ok((a, b))
 }
 
-/// The value of an exponent expression: an integer constant with `|k| <= MAX_EXPONENT`.
+/// The value of an exponent expression: an integer constant within the `exponent` limit.
 fn exponent_value(e: &Expr) -> Result<i64, ExprError> {
     let bad = |found: String| ExprError::BadExponent { pos: e.pos, found };
     let q: Rational = match e.eval_constant() {
@@ -267,24 +341,45 @@ fn exponent_value(e: &Expr) -> Result<i64, ExprError> {
     if !q.is_integer() {
         return Err(bad(q.to_string()));
     }
+    let limit = |found: String| ExprError::Limit {
+        pos: e.pos,
+        error: limits::EXPONENT.exceeded(found),
+    };
     match q.numer().to_i64() {
-        Some(k) if k.unsigned_abs() <= u64::from(MAX_EXPONENT) => Ok(k),
-        _ => Err(ExprError::ExponentTooLarge {
-            pos: e.pos,
-            exponent: q.to_string(),
-            max: MAX_EXPONENT,
-        }),
+        Some(k) => {
+            limits::EXPONENT
+                .check(k.unsigned_abs())
+                .map_err(|_| limit(k.unsigned_abs().to_string()))?;
+            Ok(k)
+        }
+        None => Err(limit(format!("an integer of {} bits", q.numer().bits()))),
     }
 }
 
-/// `Err(ConstantTooLarge)` when `c` has more than [`MAX_CONSTANT_BITS`] bits.
+/// The `constant-bits` limit on the constant `c`.
 pub(super) fn check_constant<C: Coefficient>(c: &C, pos: usize) -> Result<(), ExprError> {
-    if !c.size_within(MAX_CONSTANT_BITS) {
-        Err(ExprError::ConstantTooLarge {
+    let max = limits::CONSTANT_BITS.get();
+    if !c.size_within(max) {
+        Err(ExprError::Limit {
             pos,
-            max: MAX_CONSTANT_BITS,
+            error: limits::CONSTANT_BITS.exceeded(format!("more than {max}")),
         })
     } else {
         Ok(())
+    }
+}
+
+/// The `terms` limit on the terms of `p` (a sum: its terms were not counted as produced).
+fn check_terms<C: Coefficient>(p: &Poly<C>, pos: usize) -> Result<(), ExprError> {
+    limits::TERMS
+        .check_usize(p.len())
+        .map_err(|error| ExprError::Limit { pos, error })
+}
+
+/// A refused product or power as an error at `pos`.
+fn size_error(e: SizeError, pos: usize) -> ExprError {
+    match e {
+        SizeError::ExponentOverflow => ExprError::ExponentOverflow { pos },
+        SizeError::Limit(error) => ExprError::Limit { pos, error },
     }
 }

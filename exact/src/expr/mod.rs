@@ -38,7 +38,7 @@
 //!   `*` for a product (`x*(y+1)`).
 //! * `^` binds tighter than unary minus (`-x^2 = -(x^2)`) and is right-associative
 //!   (`x^2^3 = x^8`). Its exponent must evaluate to an integer constant with absolute value at
-//!   most [`MAX_EXPONENT`]; it may carry a sign (`2^-3 = 1/8`), but a negative exponent needs a
+//!   most the `exponent` limit ([`limits::EXPONENT`]); it may carry a sign (`2^-3 = 1/8`), but a negative exponent needs a
 //!   non-zero constant base. Likewise a division is allowed only by an expression that evaluates
 //!   to a non-zero constant (`3/4*x`).
 //! * `sqrt(...)` takes a constant and needs a coefficient type that has the root (over
@@ -49,15 +49,27 @@
 //!   [`crate::ComplexRadical`]).
 //!
 //! # Limits
-//! No input makes the parser, the conversion or the evaluation panic or allocate without bound:
-//! * nesting of parentheses, signs and exponents: at most [`MAX_DEPTH`] levels;
-//! * `^` exponents: `|k| <= ` [`MAX_EXPONENT`]; a variable's exponent must fit in `u32`;
-//! * the decimal exponent of a number: `|e| <= ` [`MAX_DECIMAL_EXPONENT`];
-//! * every constant (a number, a folded constant, a polynomial coefficient) has at most
-//!   [`MAX_CONSTANT_BITS`] bits. Powers are **predicted** before they are computed (the size of
-//!   `c^k` is at least `k` times that of `c`, [`Coefficient::size_bits`]), and every product
-//!   and power is checked after it is computed, so no intermediate result exceeds about twice the
-//!   limit: `((2^10000)^10000)^10000` is refused at once.
+//! No input makes the parser, the conversion or the evaluation panic or allocate without bound.
+//! Every bound is a named limit of the one registry [`exactcheck_core::limits`] (raised on the
+//! command line with `--limit NAME=VALUE`), read where it is checked, and exceeding it is the one
+//! error [`ExprError::Limit`] with the position:
+//! * `depth`: nesting of parentheses, signs and exponents;
+//! * `digits`: the digits written in a number plus the absolute value of its decimal exponent
+//!   (`1e5000` counts 5001: the value has that many digits);
+//! * `exponent`: `|k|` of a `^` exponent; a variable's exponent must also fit in `u32`;
+//! * `constant-bits`: every constant (a number, a folded constant, a polynomial coefficient).
+//!   Powers are **predicted** before they are computed (the size of `c^k` is at least `k` times
+//!   that of `c`, [`Coefficient::size_bits`]), and every product and power is checked after it
+//!   is computed, so no intermediate result exceeds about twice the limit:
+//!   `((2^10000)^10000)^10000` is refused at once;
+//! * `variables`: the index of a new variable (the packed monomials are dense in the index, so
+//!   the index, not only the count, sets the memory of every term);
+//! * `degree`: the total degree of a product or power, predicted (the degrees add, a power
+//!   multiplies) before it is expanded;
+//! * `terms`: the terms of every polynomial, counted as a product's terms are produced
+//!   ([`Poly::try_mul`](crate::poly::Poly::try_mul)), so an expansion stops at the limit
+//!   instead of first allocating the whole result; a product whose terms would take more than
+//!   a quarter of the `memory` limit (many variables make every term large) stops there too.
 //!
 //! # Conversion
 //! [`Expr::to_poly`] expands bottom-up with the fast polynomial arithmetic of [`crate::poly`]:
@@ -76,6 +88,7 @@
 //! Every error is an [`ExprError`] with the byte position of the offending token or
 //! sub-expression, e.g. `unexpected ')' at 14: expected a number, a variable or '('`.
 use crate::rational::Rational;
+use exactcheck_core::limits::{self, LimitError};
 use exactcheck_core::Ring;
 use num_bigint::BigInt;
 use num_traits::Signed;
@@ -93,19 +106,6 @@ pub use latex::{equation_to_latex, to_latex, Notation};
 pub use mathml::{equation_to_mathml, to_mathml};
 pub use parse::{parse_expr, parse_expr_with_calls, parse_poly};
 pub use w1::w1_text;
-
-/// The deepest nesting of parentheses, signs and exponents the parser accepts.
-pub const MAX_DEPTH: usize = 256;
-
-/// The largest absolute value of an exponent after `^`.
-pub const MAX_EXPONENT: u32 = 10_000;
-
-/// The largest absolute value of the decimal exponent of a number (`1e100000`).
-pub const MAX_DECIMAL_EXPONENT: u32 = 100_000;
-
-/// The largest size in bits of any constant: a number, a folded constant expression, or a
-/// coefficient of a polynomial built by [`Expr::to_poly`] (about 301,000 decimal digits).
-pub const MAX_CONSTANT_BITS: u64 = 1_000_000;
 
 // ------------------------------------------------------------------------------ coefficients
 
@@ -130,7 +130,7 @@ pub trait Coefficient: Ring {
     /// A lower bound for the size in bits of the value that grows linearly under powers:
     /// `size_bits(x^k) >= k * size_bits(x)` (for a rational `n/d`,
     /// `floor(log2 |n|) + floor(log2 d)`; 0 for zero and units such as `±1`). The size limit
-    /// [`MAX_CONSTANT_BITS`] predicts powers with it and checks results against it. The default,
+    /// `constant-bits` ([`limits::CONSTANT_BITS`]) predicts powers with it and checks results against it. The default,
     /// 0, suits types of fixed size (a finite field), which need no limit.
     fn size_bits(&self) -> u64 {
         0
@@ -322,16 +322,6 @@ pub enum ExprError {
         /// The exponent (its expression, or its value).
         found: String,
     },
-    /// An exponent whose absolute value exceeds [`MAX_EXPONENT`].
-    #[error("exponent {exponent} at {pos} is too large (absolute value at most {max})")]
-    ExponentTooLarge {
-        /// Byte position of the exponent.
-        pos: usize,
-        /// Its value.
-        exponent: String,
-        /// The limit, [`MAX_EXPONENT`].
-        max: u32,
-    },
     /// A negative exponent of a base that is not a non-zero constant.
     #[error(
         "negative exponent at {pos}: only a non-zero constant can be raised to a negative power"
@@ -360,28 +350,6 @@ pub enum ExprError {
         name: String,
         /// A hint for names that are constants elsewhere (`i`).
         hint: &'static str,
-    },
-    /// A number whose decimal exponent exceeds [`MAX_DECIMAL_EXPONENT`] in absolute value.
-    #[error(
-        "decimal exponent {exponent} at {pos} is out of range (absolute value at most {max}, \
-         MAX_DECIMAL_EXPONENT)"
-    )]
-    DecimalExponentTooLarge {
-        /// Byte position of the number.
-        pos: usize,
-        /// The exponent as written.
-        exponent: String,
-        /// The limit, [`MAX_DECIMAL_EXPONENT`].
-        max: u32,
-    },
-    /// A constant (a number, a folded constant or a polynomial coefficient) that would exceed
-    /// [`MAX_CONSTANT_BITS`] bits.
-    #[error("constant too large at {pos}: more than {max} bits (limit MAX_CONSTANT_BITS)")]
-    ConstantTooLarge {
-        /// Byte position of the number, product or power.
-        pos: usize,
-        /// The limit, [`MAX_CONSTANT_BITS`].
-        max: u64,
     },
     /// A power or product whose exponents would exceed `u32::MAX`.
     #[error("exponent overflow at {pos}: a variable's exponent would exceed {max}", max = u32::MAX)]
@@ -413,13 +381,17 @@ pub enum ExprError {
         /// The number.
         number: String,
     },
-    /// Nesting deeper than [`MAX_DEPTH`].
-    #[error("expression nested too deeply at {pos} (more than {max} levels)")]
-    TooDeep {
-        /// Byte position where the limit was hit.
+    /// A named limit of [`exactcheck_core::limits`] exceeded at `pos`: the nesting depth, the
+    /// digits of a number, an exponent, the size of a constant, the number of variables, the
+    /// terms or the degree of a polynomial. One line, e.g. `at 4: size of a constant exceeds the
+    /// limit constant-bits = 1000000 bits (found more than 1000000; raise it with --limit
+    /// constant-bits=N)`.
+    #[error("at {pos}: {error}")]
+    Limit {
+        /// Byte position of the token, number, product or power.
         pos: usize,
-        /// The limit, [`MAX_DEPTH`].
-        max: usize,
+        /// Which limit, its value and what was found.
+        error: LimitError,
     },
 }
 
@@ -431,17 +403,14 @@ impl ExprError {
             | ExprError::NonConstantDivisor { pos }
             | ExprError::DivisionByZero { pos }
             | ExprError::BadExponent { pos, .. }
-            | ExprError::ExponentTooLarge { pos, .. }
             | ExprError::ExponentOverflow { pos }
             | ExprError::NegativeExponent { pos }
             | ExprError::UnknownFunction { pos, .. }
             | ExprError::NotConstant { pos, .. }
-            | ExprError::DecimalExponentTooLarge { pos, .. }
-            | ExprError::ConstantTooLarge { pos, .. }
             | ExprError::NonConstantSqrt { pos }
             | ExprError::NoSqrt { pos, .. }
             | ExprError::Unrepresentable { pos, .. }
-            | ExprError::TooDeep { pos, .. } => *pos,
+            | ExprError::Limit { pos, .. } => *pos,
         }
     }
 }

@@ -137,13 +137,12 @@ impl<'a> Parser<'a> {
 
     fn enter(&mut self) -> Result<(), ExprError> {
         self.depth += 1;
-        if self.depth > MAX_DEPTH {
-            return Err(ExprError::TooDeep {
+        limits::DEPTH
+            .check_usize(self.depth)
+            .map_err(|error| ExprError::Limit {
                 pos: self.cur.start,
-                max: MAX_DEPTH,
-            });
-        }
-        Ok(())
+                error,
+            })
     }
 
     fn leave(&mut self) {
@@ -368,41 +367,38 @@ impl<'a> Parser<'a> {
     }
 }
 
-/// The exact value of a number token (`12`, `0.25`, `2.5e-3`), within [`MAX_DECIMAL_EXPONENT`]
-/// and [`MAX_CONSTANT_BITS`].
+/// The exact value of a number token (`12`, `0.25`, `2.5e-3`), within the `digits` limit (the
+/// digits written plus the absolute value of the decimal exponent) and the `constant-bits` limit.
 fn number_value(text: &str, pos: usize) -> Result<Rational, ExprError> {
+    let limit = |error| ExprError::Limit { pos, error };
     let (mantissa, exponent) = match text.find(['e', 'E']) {
         Some(k) => (&text[..k], Some(&text[k + 1..])),
         None => (text, None),
     };
     let (int, frac) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+    let written = (int.len() + frac.len()) as u64;
+    // The lexer gives an optional sign and at least one digit; an exponent beyond i64 is far
+    // beyond any limit.
     let e10: i64 = match exponent {
         None => 0,
-        Some(e) => {
-            let too_large = || ExprError::DecimalExponentTooLarge {
-                pos,
-                exponent: e.to_string(),
-                max: MAX_DECIMAL_EXPONENT,
-            };
-            let v: i64 = e.parse().map_err(|_| too_large())?;
-            if v.unsigned_abs() > u64::from(MAX_DECIMAL_EXPONENT) {
-                return Err(too_large());
-            }
-            v
-        }
+        Some(e) => e.parse().map_err(|_| {
+            limit(limits::DIGITS.exceeded(format!("more than {}", i64::MAX.unsigned_abs())))
+        })?,
     };
-    let too_large = ExprError::ConstantTooLarge {
-        pos,
-        max: MAX_CONSTANT_BITS,
-    };
+    limits::DIGITS
+        .check(written.saturating_add(e10.unsigned_abs()))
+        .map_err(limit)?;
     // The value is digits * 10^(e10 - frac.len()); every decimal digit is more than 3.3 bits,
-    // so a literal with more digits than the limit allows is refused before it is converted.
+    // so a literal with more digits than the size limit allows is refused before it is
+    // converted.
+    let max_bits = limits::CONSTANT_BITS.get();
+    let too_large = || limit(limits::CONSTANT_BITS.exceeded(format!("more than {max_bits}")));
     let all = format!("{int}{frac}");
     let significant = all.trim_start_matches('0');
     let scale = e10 - frac.len() as i64;
-    let max_digits = (MAX_CONSTANT_BITS as f64 / std::f64::consts::LOG2_10) as u64 + 1;
-    if significant.len() as u64 + scale.unsigned_abs() > max_digits {
-        return Err(too_large);
+    let max_digits = (max_bits as f64 / std::f64::consts::LOG2_10) as u64 + 1;
+    if (significant.len() as u64).saturating_add(scale.unsigned_abs()) > max_digits {
+        return Err(too_large());
     }
     if significant.is_empty() {
         return Ok(Rational::ZERO);
@@ -411,9 +407,7 @@ fn number_value(text: &str, pos: usize) -> Result<Rational, ExprError> {
         .parse()
         .expect("a number token is a non-empty string of decimal digits");
     let m = BigInt::from(m);
-    let p = BigInt::from(10u32).pow(
-        u32::try_from(scale.unsigned_abs()).expect("bounded by MAX_DECIMAL_EXPONENT and digits"),
-    );
+    let p = BigInt::from(10u32).pow(u32::try_from(scale.unsigned_abs()).map_err(|_| too_large())?);
     let q = if scale >= 0 {
         Rational::from(m * p)
     } else {
@@ -426,8 +420,8 @@ fn number_value(text: &str, pos: usize) -> Result<Rational, ExprError> {
 /// Parses an expression to its AST.
 ///
 /// # Errors
-/// [`ExprError::Unexpected`] for text that does not fit the grammar, [`ExprError::TooDeep`]
-/// beyond [`MAX_DEPTH`] levels of nesting.
+/// [`ExprError::Unexpected`] for text that does not fit the grammar, [`ExprError::Limit`]
+/// beyond the `depth` limit of nesting or the `digits` or `constant-bits` limit of a number.
 pub fn parse_expr(text: &str) -> Result<Expr, ExprError> {
     Parser::new(text, false).parse_all()
 }

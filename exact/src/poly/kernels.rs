@@ -135,16 +135,25 @@ impl<C: Ring> Poly<C> {
     }
 
     pub(super) fn mul_impl(&self, rhs: &Self) -> Self {
+        self.mul_capped(rhs, |_| usize::MAX)
+            .expect("a product without a cap on its terms always completes")
+    }
+
+    /// `self * rhs`, or `None` as soon as the product has more than `max(words)` terms (`words`
+    /// being the words of one packed monomial of the product): the kernels count the terms as
+    /// they produce them, so a product past the cap stops there instead of finishing.
+    pub(super) fn mul_capped(&self, rhs: &Self, max: impl Fn(usize) -> usize) -> Option<Self> {
         if self.is_empty() || rhs.is_empty() {
-            return Poly::zero();
+            return Some(Poly::zero());
         }
         let shape = self.product_shape(rhs);
+        let max = max(shape.words);
         let (ae, be) = (self.exps_in(shape), rhs.exps_in(shape));
         let w = shape.words;
         let (exps, coeffs) = if self.len() == 1 {
-            mul_term(w, &be, &rhs.coeffs, &ae, &self.coeffs[0])
+            mul_term(w, &be, &rhs.coeffs, &ae, &self.coeffs[0], max)
         } else if rhs.len() == 1 {
-            mul_term(w, &ae, &self.coeffs, &be, &rhs.coeffs[0])
+            mul_term(w, &ae, &self.coeffs, &be, &rhs.coeffs[0], max)
         } else {
             let cap = w * shape.per_word();
             let (ma, mb) = (
@@ -167,6 +176,7 @@ impl<C: Ring> Poly<C> {
                     cells as usize,
                     (small.0, &fi, small.1),
                     (large.0, &gi, large.1),
+                    max,
                 )
             } else {
                 let (k, place) = key_layout(&need);
@@ -175,24 +185,31 @@ impl<C: Ring> Poly<C> {
                 let f = (small.0, &fk[..], small.1);
                 let g = (large.0, &gk[..], large.1);
                 if k == 1 {
-                    mul_heap1(w, f, g)
+                    mul_heap1(w, f, g, max)
                 } else {
-                    with_key_words!(k, mul_heap::<C>(k, w, f, g))
+                    with_key_words!(k, mul_heap::<C>(k, w, f, g, max))
                 }
             }
-        };
-        Poly {
+        }?;
+        Some(Poly {
             shape,
             exps,
             coeffs,
-        }
+        })
     }
 
     pub(super) fn square_impl(&self) -> Self {
+        self.square_capped(|_| usize::MAX)
+            .expect("a square without a cap on its terms always completes")
+    }
+
+    /// `self^2`, or `None` past `max(words)` terms (as [`Poly::mul_capped`]).
+    pub(super) fn square_capped(&self, max: impl Fn(usize) -> usize) -> Option<Self> {
         if self.len() <= 1 {
-            return self.pow_term(2);
+            return Some(self.pow_term(2));
         }
         let shape = self.product_shape(self);
+        let max = max(shape.words);
         let e = self.exps_in(shape);
         let cap = shape.words * shape.per_word();
         let need: Vec<u64> = max_exps(shape, &e, self.len(), cap)
@@ -204,20 +221,20 @@ impl<C: Ring> Poly<C> {
             Some((cells, strides)) => {
                 let idx = dense_indices(shape, &e, self.len(), &strides);
                 let f = (&e[..], &idx[..], &self.coeffs[..]);
-                mul_dense(shape.words, cells as usize, f, f)
+                mul_dense(shape.words, cells as usize, f, f, max)
             }
             None => {
                 let (k, place) = key_layout(&need);
                 let keys = make_keys(shape, &e, self.len(), k, &place);
                 let f = (&e[..], &keys[..], &self.coeffs[..]);
-                with_key_words!(k, square_heap::<C>(k, shape.words, f))
+                with_key_words!(k, square_heap::<C>(k, shape.words, f, max))
             }
-        };
-        Poly {
+        }?;
+        Some(Poly {
             shape,
             exps,
             coeffs,
-        }
+        })
     }
 }
 
@@ -335,7 +352,11 @@ pub(super) fn mul_term<C: Ring>(
     gc: &[C],
     m: &[u64],
     c: &C,
-) -> (Vec<u64>, Vec<C>) {
+    max: usize,
+) -> Option<(Vec<u64>, Vec<C>)> {
+    if gc.len() > max {
+        return None;
+    }
     let mut exps = Vec::with_capacity(ge.len());
     let mut coeffs = Vec::with_capacity(gc.len());
     let mut buf = vec![0u64; w];
@@ -347,7 +368,7 @@ pub(super) fn mul_term<C: Ring>(
             coeffs.push(p);
         }
     }
-    (exps, coeffs)
+    Some((exps, coeffs))
 }
 
 /// A binary max-heap of stream indices, keyed by the monomials in `slots` (`w` words each).
@@ -535,11 +556,14 @@ pub(super) fn mul_heap<C: Ring, const K: usize>(
     w: usize,
     (fe, fk, fc): (&[u64], &[u64], &[C]),
     (ge, gk, gc): (&[u64], &[u64], &[C]),
-) -> (Vec<u64>, Vec<C>) {
+    max: usize,
+) -> Option<(Vec<u64>, Vec<C>)> {
     let k = if K == 0 { k } else { K };
     let (nf, ng) = (fc.len(), gc.len());
     let (mut slots, mut js, mut heap) = start_streams(nf, k, fk, gk);
-    let cap = (nf * ng).min(4 * (nf + ng) + 1024);
+    let cap = (nf * ng)
+        .min(4 * (nf + ng) + 1024)
+        .min(max.saturating_add(1));
     let mut out_e: Vec<u64> = Vec::with_capacity(cap * w);
     let mut out_c: Vec<C> = Vec::with_capacity(cap);
     let mut cur = vec![0u64; k];
@@ -571,9 +595,12 @@ pub(super) fn mul_heap<C: Ring, const K: usize>(
         if !acc.is_zero() {
             push_sum(&mut out_e, &fe[i * w..(i + 1) * w], &ge[j * w..(j + 1) * w]);
             out_c.push(acc);
+            if out_c.len() > max {
+                return None;
+            }
         }
     }
-    (out_e, out_c)
+    Some((out_e, out_c))
 }
 
 /// [`mul_heap`] for one-word keys, the common case: the heap holds `(key, stream)` pairs, so
@@ -583,11 +610,14 @@ pub(super) fn mul_heap1<C: Ring>(
     w: usize,
     (fe, fk, fc): (&[u64], &[u64], &[C]),
     (ge, gk, gc): (&[u64], &[u64], &[C]),
-) -> (Vec<u64>, Vec<C>) {
+    max: usize,
+) -> Option<(Vec<u64>, Vec<C>)> {
     let (nf, ng) = (fc.len(), gc.len());
     let mut js = vec![0u32; nf];
     let mut heap: Vec<(u64, u32)> = Vec::with_capacity(nf);
-    let cap = (nf * ng).min(4 * (nf + ng) + 1024);
+    let cap = (nf * ng)
+        .min(4 * (nf + ng) + 1024)
+        .min(max.saturating_add(1));
     let mut out_e: Vec<u64> = Vec::with_capacity(cap * w);
     let mut out_c: Vec<C> = Vec::with_capacity(cap);
     heap.push((fk[0].wrapping_add(gk[0]), 0));
@@ -624,9 +654,12 @@ pub(super) fn mul_heap1<C: Ring>(
         if !acc.is_zero() {
             push_sum(&mut out_e, &fe[i * w..(i + 1) * w], &ge[j * w..(j + 1) * w]);
             out_c.push(acc);
+            if out_c.len() > max {
+                return None;
+            }
         }
     }
-    (out_e, out_c)
+    Some((out_e, out_c))
 }
 
 /// Restores the max-heap order below the root.
@@ -711,7 +744,8 @@ pub(super) fn mul_dense<C: Ring>(
     cells: usize,
     (fe, fi, fc): (&[u64], &[u64], &[C]),
     (ge, gi, gc): (&[u64], &[u64], &[C]),
-) -> (Vec<u64>, Vec<C>) {
+    max: usize,
+) -> Option<(Vec<u64>, Vec<C>)> {
     let mut cell = vec![0u32; cells];
     // (index, i, j, coefficient) of every distinct product monomial.
     let mut touched: Vec<(u64, u32, u32, C)> = Vec::with_capacity((fc.len() + gc.len()) * 4);
@@ -721,6 +755,12 @@ pub(super) fn mul_dense<C: Ring>(
             let p = a.mul_ref(b);
             match cell[idx as usize] {
                 0 => {
+                    // Cancellation can leave fewer terms, but not more: a dense product is
+                    // small (its box at most DENSE_MAX_CELLS), so counting touched cells is
+                    // the cheap prediction.
+                    if touched.len() >= max {
+                        return None;
+                    }
                     touched.push((idx, i as u32, j as u32, p));
                     cell[idx as usize] = touched.len() as u32;
                 }
@@ -738,7 +778,7 @@ pub(super) fn mul_dense<C: Ring>(
             out_c.push(c);
         }
     }
-    (out_e, out_c)
+    Some((out_e, out_c))
 }
 
 /// Squaring with the heap over the pairs `i <= j` (at least two terms): stream `i` is
@@ -748,11 +788,12 @@ pub(super) fn square_heap<C: Ring, const K: usize>(
     k: usize,
     w: usize,
     (fe, fk, fc): (&[u64], &[u64], &[C]),
-) -> (Vec<u64>, Vec<C>) {
+    max: usize,
+) -> Option<(Vec<u64>, Vec<C>)> {
     let k = if K == 0 { k } else { K };
     let n = fc.len();
     let (mut slots, mut js, mut heap) = start_streams(n, k, fk, fk);
-    let cap = (n * n).min(8 * n + 1024);
+    let cap = (n * n).min(8 * n + 1024).min(max.saturating_add(1));
     let mut out_e: Vec<u64> = Vec::with_capacity(cap * w);
     let mut out_c: Vec<C> = Vec::with_capacity(cap);
     let mut cur = vec![0u64; k];
@@ -803,7 +844,10 @@ pub(super) fn square_heap<C: Ring, const K: usize>(
         if !acc.is_zero() {
             push_sum(&mut out_e, &fe[i * w..(i + 1) * w], &fe[j * w..(j + 1) * w]);
             out_c.push(acc);
+            if out_c.len() > max {
+                return None;
+            }
         }
     }
-    (out_e, out_c)
+    Some((out_e, out_c))
 }

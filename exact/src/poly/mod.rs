@@ -86,7 +86,7 @@ mod to_expr;
 
 pub use display::PolyDisplay;
 pub use reduce::{groebner, unit_circle_relation};
-pub use ring::{Monomial, Poly, Terms};
+pub use ring::{Monomial, Poly, SizeError, Terms};
 pub use to_expr::CoeffExpr;
 
 use exactcheck_core::Ring;

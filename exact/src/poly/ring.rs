@@ -2,6 +2,7 @@
 //! ring operations (forwarded to the kernels in `kernels`).
 
 use super::*;
+use exactcheck_core::limits::{self, LimitError};
 use exactcheck_core::Ring;
 use std::borrow::Cow;
 use std::cmp::Ordering;
@@ -479,38 +480,70 @@ impl<C: Ring> Poly<C> {
     /// # Panics
     /// When a variable of the polynomial has no entry in `point`.
     pub fn eval<R: Ring>(&self, point: &[R], coeff: impl Fn(&C) -> R) -> R {
-        // Powers of each variable, computed once up to the degree needed.
-        let degs = self.max_exponents();
-        let powers: Vec<Vec<R>> = degs
-            .iter()
-            .enumerate()
-            .map(|(v, &d)| {
-                let mut p = Vec::with_capacity(d as usize);
-                if d > 0 {
-                    let x = point.get(v).unwrap_or_else(|| {
-                        panic!(
-                            "eval: no value for variable {v} (point has {})",
-                            point.len()
-                        )
-                    });
-                    p.push(x.clone());
-                    for k in 1..d as usize {
-                        let next = p[k - 1].mul_ref(x);
-                        p.push(next);
-                    }
+        // The powers of each variable that occur, computed once: the distinct exponents in
+        // increasing order, each from the previous one times the gap's power by binary powering.
+        // So `x^100000` costs 17 squarings and keeps one value, not a table of every power up
+        // to the degree (which for `x^100000` at 1/2 alone holds 625 MB).
+        let mut used: Vec<Vec<u64>> = Vec::new();
+        for i in 0..self.len() {
+            self.shape.for_each(self.mono(i), |v, e| {
+                if used.len() <= v {
+                    used.resize_with(v + 1, Vec::new);
                 }
-                p
+                used[v].push(e);
+            });
+        }
+        let powers: Vec<Vec<(u64, R)>> = used
+            .into_iter()
+            .enumerate()
+            .map(|(v, mut es)| {
+                es.sort_unstable();
+                es.dedup();
+                if es.is_empty() {
+                    return Vec::new();
+                }
+                let x = point.get(v).unwrap_or_else(|| {
+                    panic!(
+                        "eval: no value for variable {v} (point has {})",
+                        point.len()
+                    )
+                });
+                let mut out: Vec<(u64, R)> = Vec::with_capacity(es.len());
+                for e in es {
+                    let next = match out.last() {
+                        None => power_of(x, e),
+                        Some((prev, p)) if e - prev == 1 => p.mul_ref(x),
+                        Some((prev, p)) => p.mul_ref(&power_of(x, e - prev)),
+                    };
+                    out.push((e, next));
+                }
+                out
             })
             .collect();
-        let mut acc = R::zero();
+        // The terms are summed as a balanced tree (a binary counter of partial sums): adding
+        // exact values costs with their size, and a running sum would be full size from the
+        // start (for rationals, a gcd of the full size per term).
+        let mut partial: Vec<(u32, R)> = Vec::new();
         for i in 0..self.len() {
             let mut t = coeff(&self.coeffs[i]);
             self.shape.for_each(self.mono(i), |v, e| {
-                t *= &powers[v][e as usize - 1];
+                let k = powers[v]
+                    .binary_search_by_key(&e, |(f, _)| *f)
+                    .expect("every exponent that occurs was tabulated above");
+                t *= &powers[v][k].1;
             });
-            acc += t;
+            let mut level = 0;
+            while partial.last().is_some_and(|(l, _)| *l == level) {
+                let (_, s) = partial.pop().expect("checked to be non-empty");
+                t = s + t;
+                level += 1;
+            }
+            partial.push((level, t));
         }
-        acc
+        partial
+            .into_iter()
+            .rev()
+            .fold(R::zero(), |acc, (_, t)| t + acc)
     }
 
     /// The polynomial with `var` replaced by `value`.
@@ -743,6 +776,137 @@ impl<C: Ring> Poly<C> {
             shape,
             exps,
             coeffs: vec![c],
+        }
+    }
+}
+
+/// `x^e` by binary powering (`e >= 1`).
+fn power_of<R: Ring>(x: &R, mut e: u64) -> R {
+    let mut acc: Option<R> = None;
+    let mut sq = x.clone();
+    loop {
+        if e & 1 == 1 {
+            acc = Some(match acc {
+                None => sq.clone(),
+                Some(a) => a.mul_ref(&sq),
+            });
+        }
+        e >>= 1;
+        if e == 0 {
+            return acc.unwrap_or_else(R::one);
+        }
+        sq = sq.square();
+    }
+}
+
+// ------------------------------------------------------------------------------ limited operations
+
+/// Why a product or power within the limits was refused.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum SizeError {
+    /// An exponent of a variable would exceed `u32::MAX`.
+    #[error("a variable's exponent would exceed {max}", max = u32::MAX)]
+    ExponentOverflow,
+    /// A named limit: `degree` (predicted), `terms` (counted as the terms are produced), or
+    /// `memory` (the terms would take more than a quarter of it).
+    #[error(transparent)]
+    Limit(#[from] LimitError),
+}
+
+/// The cap on the terms of a product whose monomials take `words` words: the `terms` limit, and
+/// the number of terms (packed monomial and coefficient) that fit in a quarter of the `memory`
+/// limit. With the flag: whether the memory bound is the smaller one.
+fn term_cap<C>(words: usize) -> (usize, bool) {
+    let per_term = (8 * words + std::mem::size_of::<C>()).max(1);
+    let budget = limits::MEMORY.get_usize().saturating_mul(1 << 20) / 4;
+    let by_memory = budget / per_term;
+    let terms = limits::TERMS.get_usize();
+    (terms.min(by_memory), by_memory < terms)
+}
+
+/// The error for a product stopped at the cap of [`term_cap`].
+fn cap_error<C>(words: usize) -> SizeError {
+    let (cap, by_memory) = term_cap::<C>(words);
+    if by_memory {
+        let per_term = 8 * words + std::mem::size_of::<C>();
+        SizeError::Limit(limits::MEMORY.exceeded(format!(
+            "a polynomial of more than {cap} terms of {per_term} bytes each, over a quarter of the limit"
+        )))
+    } else {
+        SizeError::Limit(limits::TERMS.exceeded(format!("more than {cap}")))
+    }
+}
+
+impl<C: Ring> Poly<C> {
+    /// `self * rhs` within the limits: the total degree of the product (the sum of the degrees)
+    /// is checked against `degree` before any work, and the product's terms are counted as the
+    /// kernels produce them, stopping past `terms` (or past what fits in a quarter of `memory`).
+    ///
+    /// # Errors
+    /// [`SizeError::Limit`] for the `degree`, `terms` or `memory` limit,
+    /// [`SizeError::ExponentOverflow`] for an exponent above `u32::MAX`.
+    pub fn try_mul(&self, rhs: &Self) -> Result<Self, SizeError> {
+        if self.is_empty() || rhs.is_empty() {
+            return Ok(Poly::zero());
+        }
+        limits::DEGREE.check(self.total_degree().saturating_add(rhs.total_degree()))?;
+        if self.exp_bound() + rhs.exp_bound() > MAX_EXP {
+            let (a, b) = (self.max_exponents(), rhs.max_exponents());
+            let worst = (0..a.len().min(b.len()))
+                .map(|v| a[v] + b[v])
+                .max()
+                .unwrap_or(0);
+            if worst > MAX_EXP {
+                return Err(SizeError::ExponentOverflow);
+            }
+        }
+        let words = std::cell::Cell::new(0);
+        self.mul_capped(rhs, |w| {
+            words.set(w);
+            term_cap::<C>(w).0
+        })
+        .ok_or_else(|| cap_error::<C>(words.get()))
+    }
+
+    /// `self^e` within the limits: the degree `e * deg(self)` is checked before any work, every
+    /// squaring and multiplication of the binary powering counts its terms (as
+    /// [`Poly::try_mul`]).
+    ///
+    /// # Errors
+    /// As [`Poly::try_mul`].
+    pub fn try_pow(&self, e: u32) -> Result<Self, SizeError> {
+        let e = u64::from(e);
+        if e == 0 {
+            return Ok(Poly::one());
+        }
+        limits::DEGREE.check(self.total_degree().saturating_mul(e))?;
+        if e > 1 && u64::from(self.max_exponent()) * e > MAX_EXP {
+            return Err(SizeError::ExponentOverflow);
+        }
+        if self.len() <= 1 {
+            return Ok(self.pow_term(e));
+        }
+        let mut e = e;
+        let mut acc: Option<Poly<C>> = None;
+        let mut base = self.clone();
+        loop {
+            if e & 1 == 1 {
+                acc = Some(match acc {
+                    None => base.clone(),
+                    Some(a) => a.try_mul(&base)?,
+                });
+            }
+            e >>= 1;
+            if e == 0 {
+                return Ok(acc.unwrap_or_else(Poly::one));
+            }
+            let words = std::cell::Cell::new(0);
+            base = base
+                .square_capped(|w| {
+                    words.set(w);
+                    term_cap::<C>(w).0
+                })
+                .ok_or_else(|| cap_error::<C>(words.get()))?;
         }
     }
 }

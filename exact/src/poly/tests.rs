@@ -129,3 +129,49 @@ fn printing() {
     assert_eq!(P::zero().display(&vars).to_string(), "0");
     assert_eq!(format!("{:?}", x(4)), "_x4");
 }
+
+#[test]
+fn eval_takes_high_powers_by_squaring() {
+    // Old: the evaluation tabulated x, x^2, ..., x^d (for x^100000 at 1/2, 625 MB); now the
+    // distinct exponents only, each from the previous one by binary powering of the gap.
+    let half = Rational::new(1, 2).unwrap();
+    let p = P::monomial(q(3), &[(0, 100_000)]);
+    let want = Rational::from(num_rational::BigRational::new(
+        num_bigint::BigInt::from(3),
+        num_bigint::BigInt::from(1u32) << 100_000u32,
+    ));
+    assert_eq!(p.eval(std::slice::from_ref(&half), Clone::clone), want);
+    // Agrees with the term-by-term value on a polynomial with gaps, repeats and several
+    // variables (the balanced sum of the terms changes nothing).
+    let p = x(0).pow(7) * x(1).pow(3) + x(0).pow(3) - x(1).pow(10).scale_i64(5) + x(0).pow(12)
+        - P::from_i64(2);
+    let (a, b) = (Rational::new(-3, 2).unwrap(), Rational::new(5, 7).unwrap());
+    let naive = a.pow(7) * b.pow(3) + a.pow(3) - b.pow(10).scale_i64(5) + a.pow(12) - q(2);
+    assert_eq!(p.eval(&[a, b], Clone::clone), naive);
+    assert_eq!(P::zero().eval(&[half], Clone::clone), Rational::ZERO);
+}
+
+#[test]
+fn capped_products_stop_past_the_cap() {
+    // (a0 + ... + a9)(b0 + ... + b9) has 100 terms: within a cap of 100, refused at 99, in
+    // the heap kernel, in the dense kernel and in the squaring kernel alike.
+    let f = P::sum((0..10).map(x).collect());
+    let g = P::sum((10..20).map(x).collect());
+    assert_eq!(f.mul_capped(&g, |_| 100).unwrap(), f.clone() * g.clone());
+    assert!(f.mul_capped(&g, |_| 99).is_none());
+    let (u, v) = (x(0) + P::one(), x(0).pow(10) - P::one());
+    assert_eq!(u.pow(9).mul_capped(&v, |_| 20).unwrap().len(), 20);
+    assert!(u.pow(9).mul_capped(&v, |_| 19).is_none());
+    let sq = f.square_capped(|_| 55).unwrap();
+    assert_eq!(sq, f.clone() * f.clone());
+    assert!(f.square_capped(|_| 54).is_none());
+    // A term times a polynomial.
+    assert!(x(3).mul_capped(&f, |_| 9).is_none());
+    // try_mul and try_pow under the default limits agree with the operators.
+    assert_eq!(f.try_mul(&g).unwrap(), f.clone() * g.clone());
+    assert_eq!(u.try_pow(20).unwrap(), u.pow(20));
+    assert_eq!(
+        x(0).try_pow(u32::MAX).unwrap_err(),
+        SizeError::Limit(exactcheck_core::limits::DEGREE.exceeded(u32::MAX.to_string()))
+    );
+}

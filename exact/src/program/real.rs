@@ -14,8 +14,9 @@
 //!   settled up to [`MAX_PRECISION`] bits, and the exact zero test could not decide. Never a
 //!   guess.
 //! * [`ExactStop::TooLarge`]: an exact intermediate value would exceed
-//!   [`MAX_CONSTANT_BITS`](crate::expr::MAX_CONSTANT_BITS) bits (or an approximate one a binary
-//!   exponent of that size), the limit every constant of the workspace obeys.
+//!   the `constant-bits` limit ([`exactcheck_core::limits::CONSTANT_BITS`]) in bits (or an
+//!   approximate one a binary exponent of that size), the limit every constant of the workspace
+//!   obeys.
 //!
 //! # Algorithm
 //! 1. **Rationals while possible** (the fast path): values are exact [`Rational`]s (the
@@ -43,9 +44,10 @@
 use super::interval::Iv;
 use super::walk::{eval_cond, eval_node, Domain};
 use super::{CmpOp, PowStyle, Program};
-use crate::expr::{Coefficient, MAX_CONSTANT_BITS};
+use crate::expr::Coefficient;
 use crate::radical::Radical;
 use crate::rational::Rational;
+use exactcheck_core::limits;
 use exactcheck_core::{Field, OrderedField, Ring, Sign};
 use num_bigint::BigInt;
 use num_rational::BigRational;
@@ -81,8 +83,8 @@ pub enum ExactStop {
     /// A decision could not be made up to the precision cap (`MAX_PRECISION` bits).
     #[error("undecided up to the precision cap of {MAX_PRECISION} bits")]
     Undecided,
-    /// An intermediate value exceeds the size limit (`MAX_CONSTANT_BITS` bits).
-    #[error("an intermediate value exceeds {MAX_CONSTANT_BITS} bits (limit MAX_CONSTANT_BITS)")]
+    /// An intermediate value exceeds the `constant-bits` limit.
+    #[error("{}", limits::CONSTANT_BITS.exceeded(format!("more than {} in an intermediate value", limits::CONSTANT_BITS.get())))]
     TooLarge,
 }
 
@@ -110,9 +112,9 @@ struct Real<'a> {
     p: u64,
 }
 
-/// `q` if its numerator and denominator have at most [`MAX_CONSTANT_BITS`] bits together.
+/// `q` if its numerator and denominator have at most `constant-bits` bits together.
 fn checked(q: Rational) -> Result<XV, Halt> {
-    if q.bits() <= MAX_CONSTANT_BITS {
+    if q.bits() <= limits::CONSTANT_BITS.get() {
         Ok(XV::Exact(q))
     } else {
         Err(Halt::TooLarge)
@@ -120,7 +122,7 @@ fn checked(q: Rational) -> Result<XV, Halt> {
 }
 
 fn approx(iv: Iv) -> Result<XV, Halt> {
-    if iv.max_exponent() > MAX_CONSTANT_BITS {
+    if iv.max_exponent() > limits::CONSTANT_BITS.get() {
         Err(Halt::TooLarge)
     } else {
         Ok(XV::Approx(Box::new(iv)))
@@ -245,7 +247,9 @@ impl Domain for Real<'_> {
                     return Err(Halt::Outside);
                 }
                 // size_bits(q^k) >= k size_bits(q): refuse before computing.
-                if q.size_bits().saturating_mul(u64::from(n.unsigned_abs())) > MAX_CONSTANT_BITS {
+                if q.size_bits().saturating_mul(u64::from(n.unsigned_abs()))
+                    > limits::CONSTANT_BITS.get()
+                {
                     return Err(Halt::TooLarge);
                 }
                 checked(q.powi(n).expect("0^n with n < 0 is excluded above"))
@@ -312,7 +316,7 @@ struct Rad<'a> {
 }
 
 fn rad_checked(r: Radical) -> Result<Radical, RadStop> {
-    if r.size_within(MAX_CONSTANT_BITS) {
+    if r.size_within(limits::CONSTANT_BITS.get()) {
         Ok(r)
     } else {
         Err(RadStop::Unrepresentable)
@@ -368,7 +372,7 @@ impl Domain for Rad<'_> {
         if a.is_zero() && n < 0 {
             return Err(RadStop::Outside);
         }
-        if a.size_bits().saturating_mul(u64::from(n.unsigned_abs())) > MAX_CONSTANT_BITS {
+        if a.size_bits().saturating_mul(u64::from(n.unsigned_abs())) > limits::CONSTANT_BITS.get() {
             return Err(RadStop::Unrepresentable);
         }
         let p = rad_checked(Ring::pow(&a, n.unsigned_abs()))?;

@@ -709,7 +709,7 @@ fn an_undecidable_equality_is_undecided_not_guessed() {
 
 #[test]
 fn size_limit_is_an_error_not_an_abort() {
-    // (2^-1074)^1024 has more than MAX_CONSTANT_BITS bits.
+    // (2^-1074)^1024 has more than the constant-bits limit (1,000,000 bits).
     assert_eq!(
         prog("x^1024").eval_exact(&[exact(f64::from_bits(1))]),
         Err(ExactStop::TooLarge)

@@ -119,7 +119,7 @@ impl FromStr for Radical {
     /// exactly: integers, decimals (`0.1` is exactly 1/10), scientific notation (`2.5e-3` is
     /// 1/400), `sqrt(...)` of any expression with a multi-quadratic root, `+ - * /`,
     /// juxtaposition (`2 sqrt(2)`), unary signs, parentheses and integer powers `^k`
-    /// (`|k| <=` [`crate::expr::MAX_EXPONENT`]) — e.g. `"1/sqrt(2)"`, `"(2+sqrt(2))/3"`,
+    /// (`|k|` within the `exponent` limit) — e.g. `"1/sqrt(2)"`, `"(2+sqrt(2))/3"`,
     /// `"sqrt(3 - 2*sqrt(2))"`, `"-3/4"`.
     ///
     /// # Errors
