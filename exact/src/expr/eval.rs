@@ -37,7 +37,9 @@ impl Expr {
                         AddOp::Minus => -p,
                     });
                 }
-                Ok(Poly::sum(parts))
+                let p = Poly::sum(parts);
+                check_coefficients(&p, self.pos)?;
+                Ok(p)
             }
             ExprKind::Product(items) => {
                 let (a, b) = product_pair(items, self.pos, vars)?;
@@ -165,7 +167,7 @@ fn sqrt_of<C: Coefficient>(c: C, pos: usize, arg: &Expr) -> Result<C, ExprError>
     c.try_sqrt().ok_or_else(|| ExprError::NoSqrt {
         pos,
         arg: arg.to_string(),
-        hint: C::sqrt_hint(),
+        hint: c.sqrt_hint_for(),
     })
 }
 
@@ -279,6 +281,8 @@ fn exponent_value(e: &Expr) -> Result<i64, ExprError> {
 
 /// `Err(ConstantTooLarge)` when `c` has more than [`MAX_CONSTANT_BITS`] bits.
 pub(super) fn check_constant<C: Coefficient>(c: &C, pos: usize) -> Result<(), ExprError> {
+    c.check_limits()
+        .map_err(|error| ExprError::Limit { pos, error })?;
     if !c.size_within(MAX_CONSTANT_BITS) {
         Err(ExprError::ConstantTooLarge {
             pos,

@@ -127,6 +127,11 @@ pub trait Coefficient: Ring {
     fn sqrt_hint() -> &'static str {
         ""
     }
+    /// The hint for this value's failed [`Coefficient::try_sqrt`] (e.g. that it is negative, or
+    /// out of reach of factoring); [`Coefficient::sqrt_hint`] by default.
+    fn sqrt_hint_for(&self) -> &'static str {
+        Self::sqrt_hint()
+    }
     /// A lower bound for the size in bits of the value that grows linearly under powers:
     /// `size_bits(x^k) >= k * size_bits(x)` (for a rational `n/d`,
     /// `floor(log2 |n|) + floor(log2 d)`; 0 for zero and units such as `±1`). The size limit
@@ -144,6 +149,16 @@ pub trait Coefficient: Ring {
     /// the type does not define (the default: every name). [`crate::ComplexRadical`] defines `i`.
     fn named_constant(_name: &str) -> Option<Self> {
         None
+    }
+    /// Checks the value against the named limits of its type (for
+    /// [`crate::Radical`], the number of independent square roots,
+    /// [`exactcheck_core::limits::RADICANDS`]); called on every folded constant and every
+    /// coefficient of a sum or product, like [`Coefficient::size_within`]. `Ok` by default.
+    ///
+    /// # Errors
+    /// The [`exactcheck_core::limits::LimitError`] of the limit exceeded.
+    fn check_limits(&self) -> Result<(), exactcheck_core::limits::LimitError> {
+        Ok(())
     }
 }
 
@@ -421,6 +436,15 @@ pub enum ExprError {
         /// The limit, [`MAX_DEPTH`].
         max: usize,
     },
+    /// A named limit of [`exactcheck_core::limits`] was exceeded (e.g. `radicands`, checked by
+    /// [`Coefficient::check_limits`]).
+    #[error("at {pos}: {error}")]
+    Limit {
+        /// Byte position of the number, sum, product or power.
+        pos: usize,
+        /// The limit, its value and what was found.
+        error: exactcheck_core::limits::LimitError,
+    },
 }
 
 impl ExprError {
@@ -441,7 +465,8 @@ impl ExprError {
             | ExprError::NonConstantSqrt { pos }
             | ExprError::NoSqrt { pos, .. }
             | ExprError::Unrepresentable { pos, .. }
-            | ExprError::TooDeep { pos, .. } => *pos,
+            | ExprError::TooDeep { pos, .. }
+            | ExprError::Limit { pos, .. } => *pos,
         }
     }
 }

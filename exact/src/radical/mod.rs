@@ -59,7 +59,8 @@
 
 use crate::expr::{parse_expr, Coefficient, ExprError};
 use crate::rational::Rational;
-use exactcheck_core::{Field, Sqrt};
+use exactcheck_core::limits::LimitError;
+use exactcheck_core::{Field, OrderedField, Sign, Sqrt};
 use std::str::FromStr;
 
 // ====================================================================== operator plumbing
@@ -158,6 +159,26 @@ impl Coefficient for Radical {
     fn sqrt_hint() -> &'static str {
         " (no square root in the square-root field: negative, or not denestable)"
     }
+    /// Says which: negative; a positive rational whose square-free part could not be certified
+    /// (names the trial-division bound); or an irrational value that does not denest.
+    fn sqrt_hint_for(&self) -> &'static str {
+        match (self.sign(), self.is_rational()) {
+            (Sign::Negative, _) => " (it is negative: no real square root)",
+            (_, true) => {
+                " (its square-free part is out of reach: a factor beyond 64 bits has no prime \
+                 factor below the trial-division bound 2^20 (2^14 beyond 512 bits) and is not a \
+                 square)"
+            }
+            _ => {
+                " (no square root in the square-root field: not denestable, or a rational met in \
+                 denesting has a factor beyond 64 bits with no prime factor below the \
+                 trial-division bound 2^20)"
+            }
+        }
+    }
+    fn check_limits(&self) -> Result<(), LimitError> {
+        self.check_radicands()
+    }
     /// The largest size of a term `c sqrt(m)`: `size_bits(c) + floor(log2 m) / 2`.
     fn size_bits(&self) -> u64 {
         self.terms()
@@ -189,5 +210,17 @@ impl Coefficient for ComplexRadical {
     /// `i`, the imaginary unit.
     fn named_constant(name: &str) -> Option<Self> {
         (name == "i").then(ComplexRadical::i)
+    }
+    /// The independent square roots of the real and imaginary parts together, against
+    /// [`exactcheck_core::limits::RADICANDS`].
+    fn check_limits(&self) -> Result<(), LimitError> {
+        let max = exactcheck_core::limits::RADICANDS.get_usize();
+        let (re, im) = (self.re.terms(), self.im.terms());
+        let mut radicands = re.iter().chain(im).map(|(m, _)| m).filter(|m| !m.is_one());
+        if radicands.clone().count() <= max {
+            return Ok(());
+        }
+        let k = radicand::independent_count(&mut radicands);
+        exactcheck_core::limits::RADICANDS.check_usize(k)
     }
 }
