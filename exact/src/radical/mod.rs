@@ -47,8 +47,22 @@
 //!   `sqrt x` is not multi-quadratic at all. Every root is verified (`y >= 0`, `y^2 == x`)
 //!   before it is returned.
 //!
-//! Costs grow with the number `k` of independent radicals (the recursions branch up to three ways
-//! per level), which is tiny in this workspace (`k <= 3`).
+//! Costs grow with the number `k` of independent radicals: an element has up to `2^k` terms, a
+//! product up to `4^k` term products, and the inverse and square root recurse through norms
+//! of half the size. The workspace's own formulas have `k <= 3`; input from the command line is
+//! bounded by the limit `radicands` ([`exactcheck_core::limits::RADICANDS`], default 10: the
+//! inverse of ten roots takes well under a second, twelve took 10-16 s, twenty-five asked for
+//! terabytes). The count is [`Radical::independent_radicals`] (the rank of the radicands modulo
+//! squares, through a coprime base, no factoring), checked by the expression evaluator on every
+//! folded constant and coefficient ([`crate::expr::Coefficient::check_limits`]) before the value
+//! is multiplied, inverted or denested.
+//!
+//! The square-free part of a big integer is found by trial division, dividing out each prime's
+//! whole power in `O(log e)` big divisions, and stopping as soon as the cofactor fits 64 bits
+//! (then factored completely) or is a perfect square; the latter is the common case of the norms
+//! met in denesting, where running the trial division to its bound made `sqrt((S10)^2)` take
+//! 3-14 s. A cofactor that is neither, with no prime factor below the bound, is reported as out
+//! of reach naming the bound ([`crate::expr::Coefficient::sqrt_hint_for`]).
 //!
 //! # Layout
 //! * `radicand`: [`Radicand`] and square-free factoring (number theory on 64-bit integers);
