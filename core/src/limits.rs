@@ -186,9 +186,9 @@ limits! {
     /// Total degree of one polynomial during expansion.
     DEGREE = ("degree", "polynomial degree", "", 100_000);
     /// S-polynomial reductions of one Groebner basis computation.
-    GROEBNER_STEPS = ("groebner-steps", "Groebner basis steps", "", 5_000);
+    GROEBNER_STEPS = ("groebner-steps", "Groebner basis steps", "", 150);
     /// Elements of one Groebner basis.
-    GROEBNER_BASIS = ("groebner-basis", "Groebner basis size", "polynomials", 500);
+    GROEBNER_BASIS = ("groebner-basis", "Groebner basis size", "polynomials", 200);
     /// Bisection or refinement steps spent on one real root.
     BISECTION = ("bisection", "refinement steps for one root", "", 100_000);
     /// Bits of precision asked of an isolated root (`precision` = 2^-bits).
@@ -197,6 +197,9 @@ limits! {
     SAMPLES = ("samples", "number of samples", "", 1_000_000);
     /// Heap memory of the whole process, in MB (enforced by the command-line tool's allocator).
     MEMORY = ("memory", "memory in use", "MB", 1_536);
+    /// Size in bits of a coefficient of a new Groebner basis element (the cost of the later
+    /// reductions grows with it).
+    GROEBNER_BITS = ("groebner-bits", "size of a Groebner basis coefficient", "bits", 10_000);
 }
 
 /// The limit called `name`.

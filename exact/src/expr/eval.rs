@@ -49,6 +49,7 @@ impl Expr {
                 }
                 let p = Poly::sum(parts);
                 check_terms(&p, self.pos)?;
+                check_coefficients(&p, self.pos)?;
                 Ok(p)
             }
             ExprKind::Product(items) => {
@@ -240,7 +241,7 @@ fn sqrt_of<C: Coefficient>(c: C, pos: usize, arg: &Expr) -> Result<C, ExprError>
     c.try_sqrt().ok_or_else(|| ExprError::NoSqrt {
         pos,
         arg: arg.to_string(),
-        hint: C::sqrt_hint(),
+        hint: c.sqrt_hint_for(),
     })
 }
 
@@ -358,6 +359,8 @@ fn exponent_value(e: &Expr) -> Result<i64, ExprError> {
 
 /// The `constant-bits` limit on the constant `c`.
 pub(super) fn check_constant<C: Coefficient>(c: &C, pos: usize) -> Result<(), ExprError> {
+    c.check_limits()
+        .map_err(|error| ExprError::Limit { pos, error })?;
     let max = limits::CONSTANT_BITS.get();
     if !c.size_within(max) {
         Err(ExprError::Limit {

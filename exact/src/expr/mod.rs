@@ -127,6 +127,11 @@ pub trait Coefficient: Ring {
     fn sqrt_hint() -> &'static str {
         ""
     }
+    /// The hint for this value's failed [`Coefficient::try_sqrt`] (e.g. that it is negative, or
+    /// out of reach of factoring); [`Coefficient::sqrt_hint`] by default.
+    fn sqrt_hint_for(&self) -> &'static str {
+        Self::sqrt_hint()
+    }
     /// A lower bound for the size in bits of the value that grows linearly under powers:
     /// `size_bits(x^k) >= k * size_bits(x)` (for a rational `n/d`,
     /// `floor(log2 |n|) + floor(log2 d)`; 0 for zero and units such as `±1`). The size limit
@@ -144,6 +149,16 @@ pub trait Coefficient: Ring {
     /// the type does not define (the default: every name). [`crate::ComplexRadical`] defines `i`.
     fn named_constant(_name: &str) -> Option<Self> {
         None
+    }
+    /// Checks the value against the named limits of its type (for
+    /// [`crate::Radical`], the number of independent square roots,
+    /// [`exactcheck_core::limits::RADICANDS`]); called on every folded constant and every
+    /// coefficient of a sum or product, like [`Coefficient::size_within`]. `Ok` by default.
+    ///
+    /// # Errors
+    /// The [`exactcheck_core::limits::LimitError`] of the limit exceeded.
+    fn check_limits(&self) -> Result<(), exactcheck_core::limits::LimitError> {
+        Ok(())
     }
 }
 
@@ -383,7 +398,8 @@ pub enum ExprError {
     },
     /// A named limit of [`exactcheck_core::limits`] exceeded at `pos`: the nesting depth, the
     /// digits of a number, an exponent, the size of a constant, the number of variables, the
-    /// terms or the degree of a polynomial. One line, e.g. `at 4: size of a constant exceeds the
+    /// terms or the degree of a polynomial, the radicands of a coefficient
+    /// ([`Coefficient::check_limits`]). One line, e.g. `at 4: size of a constant exceeds the
     /// limit constant-bits = 1000000 bits (found more than 1000000; raise it with --limit
     /// constant-bits=N)`.
     #[error("at {pos}: {error}")]

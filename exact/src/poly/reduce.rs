@@ -2,9 +2,13 @@
 //! by a list of relations, and reduced Gröbner bases by Buchberger's algorithm.
 
 use super::*;
+use crate::expr::Coefficient;
+use exactcheck_core::limits::{self, LimitError};
 use exactcheck_core::{Field, Ring};
+use num_bigint::BigUint;
+use num_traits::One;
 use std::cmp::Ordering;
-use std::collections::{BinaryHeap, HashMap};
+use std::collections::{BTreeSet, BinaryHeap, HashMap, HashSet};
 
 impl<C: Ring> Poly<C> {
     /// The normal form modulo the unit-circle relations `c^2 + s^2 - 1` of the pairs `(c, s)`:
@@ -18,6 +22,30 @@ impl<C: Ring> Poly<C> {
     /// # Panics
     /// When a variable occurs in two pairs, or `c == s` in a pair.
     pub fn reduce_unit_circle(&self, pairs: &[(Var, Var)]) -> Poly<C> {
+        self.reduce_unit_circle_within(pairs, u64::MAX)
+            .expect("no bound on the number of terms")
+    }
+
+    /// [`Poly::reduce_unit_circle`] for polynomials from the input: the number of terms of the
+    /// result, before like terms merge (`sum over the terms of prod_j (e_j / 2 + 1)` for the
+    /// exponents `e_j` of the sines), is predicted first and checked against
+    /// [`limits::TERMS`], so `s1^10000 s2^10000 s3^10000` is refused before anything is
+    /// allocated.
+    ///
+    /// # Errors
+    /// A [`LimitError`] naming the `terms` limit.
+    ///
+    /// # Panics
+    /// As [`Poly::reduce_unit_circle`].
+    pub fn try_reduce_unit_circle(&self, pairs: &[(Var, Var)]) -> Result<Poly<C>, LimitError> {
+        self.reduce_unit_circle_within(pairs, limits::TERMS.get())
+    }
+
+    fn reduce_unit_circle_within(
+        &self,
+        pairs: &[(Var, Var)],
+        max_terms: u64,
+    ) -> Result<Poly<C>, LimitError> {
         let mut seen = std::collections::HashSet::new();
         for &(c, s) in pairs {
             assert!(
@@ -32,7 +60,20 @@ impl<C: Ring> Poly<C> {
         // Nothing to do unless some term has s^2.
         let reducible = |m: &[u64], sh: Shape| pairs.iter().any(|&(_, s)| sh.get(m, s) >= 2);
         if !(0..self.len()).any(|i| reducible(self.mono(i), self.shape)) {
-            return self.clone();
+            return Ok(self.clone());
+        }
+        // The size of the result before merging, predicted before any work.
+        let mut predicted: u64 = 0;
+        for i in 0..self.len() {
+            let m = self.mono(i);
+            let n = pairs
+                .iter()
+                .map(|&(_, s)| self.shape.get(m, s) / 2 + 1)
+                .fold(1u64, u64::saturating_mul);
+            predicted = predicted.saturating_add(n);
+            if predicted > max_terms {
+                return Err(limits::TERMS.exceeded(format!("more than {max_terms}")));
+            }
         }
         // Room for c and for exponents up to e_c + e_s.
         let nv = pairs.iter().map(|&(c, s)| c.max(s) + 1).max().unwrap_or(0);
@@ -41,25 +82,16 @@ impl<C: Ring> Poly<C> {
         let shape = self.widened_shape(bits, nv);
         let exps = self.exps_in(shape);
         let mono = |i: usize| &exps[i * shape.words..(i + 1) * shape.words];
-        // (1 - c^2)^h = sum_k binom(h, k) (-1)^k c^(2k): signed Pascal rows in C.
-        let hmax = (0..self.len())
-            .flat_map(|i| pairs.iter().map(move |&(_, s)| shape.get(mono(i), s) / 2))
-            .max()
-            .unwrap_or(0) as usize;
-        let mut rows: Vec<Vec<C>> = vec![vec![C::one()]];
-        for h in 1..=hmax {
-            let prev = &rows[h - 1];
-            let row: Vec<C> = (0..=h)
-                .map(|k| {
-                    // signed: r[h][k] = r[h-1][k] - r[h-1][k-1]
-                    let a = prev.get(k).cloned().unwrap_or_else(C::zero);
-                    match k.checked_sub(1).and_then(|j| prev.get(j)) {
-                        Some(b) => a - b,
-                        None => a,
-                    }
-                })
-                .collect();
-            rows.push(row);
+        // (1 - c^2)^h = sum_k binom(h, k) (-1)^k c^(2k): the signed binomial rows, only for the
+        // h that occur (building every row up to the largest h took 3.2 GB for s^10000).
+        let mut rows: HashMap<usize, Vec<C>> = HashMap::new();
+        for i in 0..self.len() {
+            for &(_, s) in &pairs {
+                let h = (shape.get(mono(i), s) / 2) as usize;
+                if h > 0 {
+                    rows.entry(h).or_insert_with(|| signed_binomial_row(h));
+                }
+            }
         }
         let mut out_e: Vec<u64> = Vec::with_capacity(exps.len() * 2);
         let mut out_c: Vec<C> = Vec::with_capacity(self.len() * 2);
@@ -88,7 +120,7 @@ impl<C: Ring> Poly<C> {
                 let mut coeff = self.coeffs[i].clone();
                 for &(c, h, k) in &hs {
                     shape.add(&mut out_e[start..], c, 2 * k as u64);
-                    coeff *= &rows[h][k];
+                    coeff *= &rows[&h][k];
                 }
                 out_c.push(coeff);
                 let mut j = 0;
@@ -105,8 +137,54 @@ impl<C: Ring> Poly<C> {
                 }
             }
         }
-        Poly::from_unsorted(shape, out_e, out_c)
+        Ok(Poly::from_unsorted(shape, out_e, out_c))
     }
+}
+
+/// `binom(h, k) (-1)^k` for `k = 0..=h`, in any ring: each binomial by the multiplicative
+/// formula in big integers (`O(h)` small multiplications and exact divisions), then mapped into
+/// the ring by [`ring_from_biguint`].
+fn signed_binomial_row<C: Ring>(h: usize) -> Vec<C> {
+    let mut b = BigUint::one();
+    let mut row = Vec::with_capacity(h + 1);
+    for k in 0..=h {
+        let c: C = ring_from_biguint(&b);
+        row.push(if k % 2 == 1 { -c } else { c });
+        b = b * BigUint::from(h - k) / BigUint::from(k + 1);
+    }
+    row
+}
+
+/// The image of a non-negative integer in a ring, by binary splitting on its base-2^32 digits
+/// (`n = hi 2^(32 m) + lo`), so that the cost is a few ring products of balanced sizes rather
+/// than one small step per digit.
+fn ring_from_biguint<C: Ring>(n: &BigUint) -> C {
+    let digits: Vec<u32> = n.iter_u32_digits().collect();
+    fn rec<C: Ring>(d: &[u32]) -> C {
+        match d {
+            [] => C::zero(),
+            [x] => C::from_i64(i64::from(*x)),
+            _ => {
+                let m = d.len() / 2;
+                let (lo, hi) = d.split_at(m);
+                // 2^(32 m) by binary powering of 2^32.
+                let mut p = C::one();
+                let mut base = C::from_i64(1 << 32);
+                let mut e = m;
+                while e > 0 {
+                    if e & 1 == 1 {
+                        p = p.mul_ref(&base);
+                    }
+                    e >>= 1;
+                    if e > 0 {
+                        base = base.square();
+                    }
+                }
+                rec::<C>(hi).mul_ref(&p).add_ref(&rec::<C>(lo))
+            }
+        }
+    }
+    rec(&digits)
 }
 
 // ------------------------------------------------------------------------------ normal forms
@@ -335,57 +413,91 @@ pub(super) fn divides_exponents(d: &[(Var, u32)], m: &[(Var, u32)]) -> bool {
     d.iter().all(|(v, e)| mm.get(v).is_some_and(|x| x >= e))
 }
 
+/// A pending S-pair `(i, j)`, `i < j`, ranked for the normal selection strategy: the smallest
+/// lcm of the leading monomials first (total degree, then the monomial order), ties by the
+/// indices (so the order is total and the run deterministic).
+#[derive(PartialEq, Eq, PartialOrd, Ord)]
+struct PairKey {
+    degree: u64,
+    /// One more than the highest variable of the lcm (a higher variable makes a larger
+    /// monomial), so that the vectors compared next have the same length.
+    top: usize,
+    /// The exponents of the lcm, highest variable first: for equal `top`, the lexicographic
+    /// order of these vectors is the monomial order of the module documentation.
+    lcm_desc: Vec<u32>,
+    i: usize,
+    j: usize,
+}
+
+impl PairKey {
+    fn new(lms: &[Vec<(Var, u32)>], i: usize, j: usize) -> PairKey {
+        let l = lcm_exponents(&lms[i], &lms[j]);
+        let nv = l.iter().map(|&(v, _)| v as usize + 1).max().unwrap_or(0);
+        let mut lcm_desc = vec![0u32; nv];
+        for &(v, e) in &l {
+            lcm_desc[nv - 1 - v as usize] = e;
+        }
+        PairKey {
+            degree: l.iter().map(|&(_, e)| u64::from(e)).sum(),
+            top: nv,
+            lcm_desc,
+            i,
+            j,
+        }
+    }
+}
+
 /// The reduced Gröbner basis of the ideal generated by `relations`, in the monomial order of the
-/// module documentation (lex, higher variable index larger), by Buchberger's algorithm.
+/// module documentation (lex, higher variable index larger), by Buchberger's algorithm with the
+/// normal selection strategy and Buchberger's two criteria.
 ///
 /// The result is monic, inter-reduced and sorted by increasing leading monomial; it is unique
 /// for the ideal, and [`Poly::reduce`] against it is a canonical normal form. `[1]` means the
 /// relations are inconsistent; the empty list means they are all zero. Meant for a handful of
-/// small relations (lex bases can grow quickly).
+/// small relations: lex bases can grow doubly exponentially, in the number of elements and in
+/// the size of their coefficients (three dense cubics in x, y, z reach coefficients of 200,000
+/// digits within 42 steps, each step slower than the last), so the run is bounded by three
+/// named limits: [`limits::GROEBNER_STEPS`] (S-polynomials reduced, checked before each),
+/// [`limits::GROEBNER_BASIS`] (elements of the basis, checked before one is added) and
+/// [`limits::GROEBNER_BITS`] (the size [`Coefficient::size_bits`] of every coefficient of a new
+/// element: the cost of the next reductions grows with it).
+///
+/// The pending pairs are kept in a priority queue (a `BTreeSet` ordered by [`PairKey`]), so
+/// selecting the next pair costs `O(log n)`: ranking every pair at every step made 200 linear
+/// relations take more than 20 s.
+///
+/// # Errors
+/// A [`LimitError`] when the computation would exceed one of the two limits.
 ///
 /// # Panics
 /// When an exponent would exceed `u32::MAX`.
-pub fn groebner<C: Field>(relations: &[Poly<C>]) -> Vec<Poly<C>> {
+pub fn groebner<C: Field + Coefficient>(relations: &[Poly<C>]) -> Result<Vec<Poly<C>>, LimitError> {
     let mut g: Vec<Poly<C>> = relations
         .iter()
         .filter(|p| !p.is_empty())
         .map(Poly::make_monic)
         .collect();
     if g.iter().any(Poly::is_constant) {
-        return vec![Poly::one()];
+        return Ok(vec![Poly::one()]);
     }
+    limits::GROEBNER_BASIS.check_usize(g.len())?;
     let lm = |p: &Poly<C>| {
         p.leading_term()
             .map(|(m, _)| m.exponents())
             .unwrap_or_default()
     };
     let mut lms: Vec<Vec<(Var, u32)>> = g.iter().map(lm).collect();
-    let mut pairs: Vec<(usize, usize)> = Vec::new();
+    let mut queue: BTreeSet<PairKey> = BTreeSet::new();
+    let mut pending: HashSet<(usize, usize)> = HashSet::new();
     for j in 0..g.len() {
         for i in 0..j {
-            pairs.push((i, j));
+            queue.insert(PairKey::new(&lms, i, j));
+            pending.insert((i, j));
         }
     }
-    while !pairs.is_empty() {
-        // Normal strategy: the pair with the smallest lcm (total degree, then the order).
-        let keyed: Vec<(u64, Poly<C>)> = pairs
-            .iter()
-            .map(|&(i, j)| {
-                let l = lcm_exponents(&lms[i], &lms[j]);
-                let deg = l.iter().map(|&(_, e)| e as u64).sum();
-                (deg, Poly::<C>::monomial(C::one(), &l))
-            })
-            .collect();
-        let best = (0..pairs.len())
-            .min_by(|&a, &b| {
-                let ((da, ma), (db, mb)) = (&keyed[a], &keyed[b]);
-                da.cmp(db).then_with(|| {
-                    let s = ma.common_shape(mb);
-                    cmp_mono(&ma.exps_in(s), &mb.exps_in(s))
-                })
-            })
-            .unwrap_or(0);
-        let (i, j) = pairs.swap_remove(best);
+    let mut steps: u64 = 0;
+    while let Some(PairKey { i, j, .. }) = queue.pop_first() {
+        pending.remove(&(i, j));
         let l = lcm_exponents(&lms[i], &lms[j]);
         // Criterion 1: coprime leading monomials reduce to zero.
         let deg_l: u32 = l.iter().map(|p| p.1).sum();
@@ -398,27 +510,34 @@ pub fn groebner<C: Field>(relations: &[Poly<C>]) -> Vec<Poly<C>> {
             k != i
                 && k != j
                 && divides_exponents(&lms[k], &l)
-                && !pairs.contains(&(i.min(k), i.max(k)))
-                && !pairs.contains(&(j.min(k), j.max(k)))
+                && !pending.contains(&(i.min(k), i.max(k)))
+                && !pending.contains(&(j.min(k), j.max(k)))
         });
         if chain {
             continue;
         }
+        steps += 1;
+        limits::GROEBNER_STEPS.check(steps)?;
         let si = Poly::monomial(C::one(), &quotient_exponents(&l, &lms[i]));
         let sj = Poly::monomial(C::one(), &quotient_exponents(&l, &lms[j]));
         let s = si * &g[i] - sj * &g[j];
         let r = s.reduce(&g).make_monic();
+        if let Some(bits) = r.coefficients().iter().map(C::size_bits).max() {
+            limits::GROEBNER_BITS.check(bits)?;
+        }
         if r.is_empty() {
             continue;
         }
         if r.is_constant() {
-            return vec![Poly::one()];
+            return Ok(vec![Poly::one()]);
         }
         let k = g.len();
+        limits::GROEBNER_BASIS.check_usize(k + 1)?;
         lms.push(lm(&r));
         g.push(r);
         for i in 0..k {
-            pairs.push((i, k));
+            queue.insert(PairKey::new(&lms, i, k));
+            pending.insert((i, k));
         }
     }
     // Minimal basis: drop elements whose leading monomial another one divides (of equal ones,
@@ -447,7 +566,7 @@ pub fn groebner<C: Field>(relations: &[Poly<C>]) -> Vec<Poly<C>> {
         let s = ma.common_shape(&mb);
         cmp_mono(&ma.exps_in(s), &mb.exps_in(s))
     });
-    basis
+    Ok(basis)
 }
 
 impl<C: Ring> Poly<C> {
@@ -462,4 +581,111 @@ impl<C: Ring> Poly<C> {
             },
         }
     }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::expr::parse_poly;
+    use crate::poly::Vars;
+    use crate::Rational;
+
+    fn polys(texts: &[String], vars: &mut Vars) -> Vec<Poly<Rational>> {
+        texts
+            .iter()
+            .map(|t| parse_poly::<Rational>(t, vars).expect("a polynomial"))
+            .collect()
+    }
+
+    /// Issue 16: three dense cubics in x, y, z did not finish in 300 s (the coefficients of the
+    /// lex basis grow past 200,000 digits); now the coefficient-size limit stops the run.
+    #[test]
+    fn dense_cubics_stop_on_the_coefficient_limit() {
+        let mut vars = Vars::new();
+        let rels = polys(&CUBICS.map(String::from), &mut vars);
+        let e = groebner(&rels).unwrap_err();
+        assert!(std::ptr::eq(e.limit, &limits::GROEBNER_BITS), "{e}");
+        assert!(e.to_string().contains("groebner-bits = 10000 bits"), "{e}");
+    }
+
+    /// Issue 16: 200 relations `vI = I` took more than 20 s (every pair re-ranked at every
+    /// step); with the pair queue they are immediate, and the basis is the relations.
+    #[test]
+    fn two_hundred_linear_relations() {
+        let mut vars = Vars::new();
+        let texts: Vec<String> = (0..200).map(|i| format!("v{i} - {i}")).collect();
+        let rels = polys(&texts, &mut vars);
+        let basis = groebner(&rels).unwrap();
+        assert_eq!(basis.len(), 200);
+        let sum = polys(
+            &[(0..200)
+                .map(|i| format!("v{i}"))
+                .collect::<Vec<_>>()
+                .join(" + ")],
+            &mut vars,
+        );
+        assert_eq!(
+            sum[0].reduce(&basis),
+            Poly::constant(Rational::from_integer(19_900))
+        );
+    }
+
+    /// The pair order is the monomial order: a higher variable beats any power of lower ones.
+    #[test]
+    fn pair_keys_follow_the_monomial_order() {
+        let lms = vec![
+            vec![(0, 5)],
+            vec![(0, 1)],
+            vec![(1, 1)],
+            vec![(0, 2), (1, 2)],
+        ];
+        // lcm x0^5 (degree 5) vs lcm x0 x1 (degree 2): the smaller degree first.
+        assert!(PairKey::new(&lms, 1, 2) < PairKey::new(&lms, 0, 1));
+        let lms = vec![
+            vec![(0, 3)],
+            vec![(0, 1)],
+            vec![(1, 2)],
+            vec![(0, 1), (1, 1)],
+        ];
+        // lcm(x0^3, x0) = x0^3 and lcm(x1^2, x0 x1) = x0 x1^2: both degree 3, x1 is higher.
+        assert!(PairKey::new(&lms, 0, 1) < PairKey::new(&lms, 2, 3));
+    }
+
+    /// `s^10000` modulo `c^2 + s^2 - 1` built every binomial row up to 5000 (3.2 GB); only the
+    /// row used is built now, and the terms limit is checked before the expansion.
+    #[test]
+    fn high_powers_of_the_sine() {
+        let mut vars = Vars::new();
+        let c = vars.var("c");
+        let s = vars.var("s");
+        let p: Poly<Rational> = Poly::var(s).pow(10_000);
+        let r = p.try_reduce_unit_circle(&[(c, s)]).unwrap();
+        assert_eq!(r.len(), 5001);
+        // (1 - c^2)^5000 at c = 0 is 1; the c^2 coefficient is -5000.
+        assert_eq!(
+            r.terms().last().map(|(_, k)| k.clone()),
+            Some(Rational::ONE)
+        );
+        let three: Vec<String> = (0..3).map(|i| format!("s{i}^10000")).collect();
+        let mut pairs = Vec::new();
+        for i in 0..3 {
+            pairs.push((vars.var(&format!("c{i}")), vars.var(&format!("s{i}"))));
+        }
+        let q = polys(&[three.join("*")], &mut vars).remove(0);
+        let e = q.try_reduce_unit_circle(&pairs).unwrap_err();
+        assert!(std::ptr::eq(e.limit, &limits::TERMS), "{e}");
+        assert_eq!(
+            ring_from_biguint::<Rational>(&(BigUint::one() << 200u32)),
+            {
+                let two: Rational = Rational::from_integer(2);
+                two.pow(200)
+            }
+        );
+    }
+
+    const CUBICS: [&str; 3] = [
+        "6 + 7*z + 7*z^2 - 7*z^3 + 9*y + 9*y*z - 5*y*z^2 - 2*y^2 + 6*y^2*z - 2*y^3 + x + 4*x*z - 5*x*z^2 + 4*x*y - 3*x*y*z + x*y^2 + 8*x^2 - 4*x^2*z - 9*x^2*y + 4*x^3",
+        "-3 + z + 7*z^2 - 5*z^3 - 9*y - y*z + y*z^2 - 8*y^2 + y^2*z - 4*y^3 - x + 5*x*z + 6*x*z^2 - 7*x*y + 5*x*y*z - 4*x*y^2 + 5*x^2 - 7*x^2*z + 8*x^2*y - 8*x^3",
+        "8 - 3*z - 3*z^2 + 9*z^3 - y + y*z - 3*y*z^2 + 3*y^2 - 4*y^2*z - 6*y^3 + 2*x + 9*x*z - 8*x*z^2 - 6*x*y - 7*x*y*z - 7*x*y^2 - 6*x^2 + x^2*z - 2*x^2*y + 5*x^3",
+    ];
 }

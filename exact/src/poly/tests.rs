@@ -98,13 +98,13 @@ fn unit_circle_reduction() {
 fn small_groebner_by_hand() {
     // x = x1 > y = x0. <x^2 - y, x y - 1> has the reduced lex basis {y^3 - 1, x - y^2}.
     let (y, xx) = (x(0), x(1));
-    let g = groebner(&[xx.square() - y.clone(), xx.clone() * &y - P::one()]);
+    let g = groebner(&[xx.square() - y.clone(), xx.clone() * &y - P::one()]).unwrap();
     assert_eq!(g, vec![y.pow(3) - P::one(), xx.clone() - y.square()]);
     // Normal forms modulo the basis.
     assert_eq!(xx.pow(3).reduce(&g), P::one());
     assert!((xx.square() - y.clone()).reduce(&g).is_zero());
     assert_eq!(
-        groebner(&[xx.clone(), P::one() + xx.clone()]),
+        groebner(&[xx.clone(), P::one() + xx.clone()]).unwrap(),
         vec![P::one()]
     );
 }

@@ -243,6 +243,14 @@ pub enum DecideError {
     DuplicateDomain(Var),
     /// A domain for a variable index outside `0..nvars`.
     UnknownVariable(Var),
+    /// The Gröbner basis of the relations, or the reduction, exceeded a named limit.
+    Limit(exactcheck_core::limits::LimitError),
+}
+
+impl From<exactcheck_core::limits::LimitError> for DecideError {
+    fn from(e: exactcheck_core::limits::LimitError) -> DecideError {
+        DecideError::Limit(e)
+    }
 }
 
 impl fmt::Display for DecideError {
@@ -258,6 +266,7 @@ impl fmt::Display for DecideError {
             DecideError::UnknownVariable(v) => {
                 write!(f, "a domain names variable #{v}, which is not in use")
             }
+            DecideError::Limit(e) => write!(f, "{e}"),
         }
     }
 }
@@ -365,7 +374,7 @@ pub fn decide_in<C: PointField>(
     let basis = if others.is_empty() {
         Vec::new()
     } else {
-        let basis = groebner(relations);
+        let basis = groebner(relations)?;
         if basis.iter().any(|b| b.is_constant() && !b.is_zero()) {
             return Err(DecideError::Inconsistent);
         }
@@ -375,7 +384,7 @@ pub fn decide_in<C: PointField>(
     if residual.is_zero() {
         return Ok(Decision::Proved { expanded_terms: 0 });
     }
-    let mut nf = residual.reduce_unit_circle(&pairs);
+    let mut nf = residual.try_reduce_unit_circle(&pairs)?;
     if !basis.is_empty() && !nf.is_zero() {
         nf = nf.reduce(&basis);
     }

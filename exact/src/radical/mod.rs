@@ -47,8 +47,22 @@
 //!   `sqrt x` is not multi-quadratic at all. Every root is verified (`y >= 0`, `y^2 == x`)
 //!   before it is returned.
 //!
-//! Costs grow with the number `k` of independent radicals (the recursions branch up to three ways
-//! per level), which is tiny in this workspace (`k <= 3`).
+//! Costs grow with the number `k` of independent radicals: an element has up to `2^k` terms, a
+//! product up to `4^k` term products, and the inverse and square root recurse through norms
+//! of half the size. The workspace's own formulas have `k <= 3`; input from the command line is
+//! bounded by the limit `radicands` ([`exactcheck_core::limits::RADICANDS`], default 10: the
+//! inverse of ten roots takes well under a second, twelve took 10-16 s, twenty-five asked for
+//! terabytes). The count is [`Radical::independent_radicals`] (the rank of the radicands modulo
+//! squares, through a coprime base, no factoring), checked by the expression evaluator on every
+//! folded constant and coefficient ([`crate::expr::Coefficient::check_limits`]) before the value
+//! is multiplied, inverted or denested.
+//!
+//! The square-free part of a big integer is found by trial division, dividing out each prime's
+//! whole power in `O(log e)` big divisions, and stopping as soon as the cofactor fits 64 bits
+//! (then factored completely) or is a perfect square; the latter is the common case of the norms
+//! met in denesting, where running the trial division to its bound made `sqrt((S10)^2)` take
+//! 3-14 s. A cofactor that is neither, with no prime factor below the bound, is reported as out
+//! of reach naming the bound ([`crate::expr::Coefficient::sqrt_hint_for`]).
 //!
 //! # Layout
 //! * `radicand`: [`Radicand`] and square-free factoring (number theory on 64-bit integers);
@@ -59,7 +73,8 @@
 
 use crate::expr::{parse_expr, Coefficient, ExprError};
 use crate::rational::Rational;
-use exactcheck_core::{Field, Sqrt};
+use exactcheck_core::limits::LimitError;
+use exactcheck_core::{Field, OrderedField, Sign, Sqrt};
 use std::str::FromStr;
 
 // ====================================================================== operator plumbing
@@ -158,6 +173,26 @@ impl Coefficient for Radical {
     fn sqrt_hint() -> &'static str {
         " (no square root in the square-root field: negative, or not denestable)"
     }
+    /// Says which: negative; a positive rational whose square-free part could not be certified
+    /// (names the trial-division bound); or an irrational value that does not denest.
+    fn sqrt_hint_for(&self) -> &'static str {
+        match (self.sign(), self.is_rational()) {
+            (Sign::Negative, _) => " (it is negative: no real square root)",
+            (_, true) => {
+                " (its square-free part is out of reach: a factor beyond 64 bits has no prime \
+                 factor below the trial-division bound 2^20 (2^14 beyond 512 bits) and is not a \
+                 square)"
+            }
+            _ => {
+                " (no square root in the square-root field: not denestable, or a rational met in \
+                 denesting has a factor beyond 64 bits with no prime factor below the \
+                 trial-division bound 2^20)"
+            }
+        }
+    }
+    fn check_limits(&self) -> Result<(), LimitError> {
+        self.check_radicands()
+    }
     /// The largest size of a term `c sqrt(m)`: `size_bits(c) + floor(log2 m) / 2`.
     fn size_bits(&self) -> u64 {
         self.terms()
@@ -189,5 +224,17 @@ impl Coefficient for ComplexRadical {
     /// `i`, the imaginary unit.
     fn named_constant(name: &str) -> Option<Self> {
         (name == "i").then(ComplexRadical::i)
+    }
+    /// The independent square roots of the real and imaginary parts together, against
+    /// [`exactcheck_core::limits::RADICANDS`].
+    fn check_limits(&self) -> Result<(), LimitError> {
+        let max = exactcheck_core::limits::RADICANDS.get_usize();
+        let (re, im) = (self.re.terms(), self.im.terms());
+        let mut radicands = re.iter().chain(im).map(|(m, _)| m).filter(|m| !m.is_one());
+        if radicands.clone().count() <= max {
+            return Ok(());
+        }
+        let k = radicand::independent_count(&mut radicands);
+        exactcheck_core::limits::RADICANDS.check_usize(k)
     }
 }

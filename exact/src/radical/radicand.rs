@@ -448,6 +448,14 @@ pub(super) fn square_free_big(n: &BigUint) -> Option<(BigUint, Radicand)> {
             if e % 2 == 1 {
                 free_primes.push(p);
             }
+            // A cofactor that is now a perfect square ends the search: the common case of the
+            // norms met in denesting, which would otherwise run the whole trial division.
+            if c.bits() > 64 {
+                let r = c.sqrt();
+                if &r * &r == c {
+                    return Some((s * r, Radicand::from_factors(free_primes)));
+                }
+            }
         }
         // 2, 3, then the numbers 6k +- 1.
         p = match p {
@@ -465,4 +473,81 @@ pub(super) fn square_free_big(n: &BigUint) -> Option<(BigUint, Radicand)> {
         return Some((s * r, Radicand::from_factors(free_primes)));
     }
     None
+}
+
+// ====================================================================== independent radicals
+
+/// The number of independent square roots among `radicands`: the rank `k` of the subgroup they
+/// generate in `Q* / Q*^2`, so that `Q(sqrt m : m in radicands)` has dimension `2^k` over Q.
+///
+/// Computed without factoring: the 64-bit factors of the radicands are refined by gcds into a
+/// coprime base `B` (pairwise coprime, square-free; every radicand is the product of the base
+/// elements dividing it); distinct products of base elements are distinct square-free integers,
+/// so the base elements are independent modulo squares and `k` is the rank over GF(2) of the
+/// radicands' incidence vectors on `B` (Gaussian elimination on bit sets).
+pub(super) fn independent_count<'a>(radicands: impl Iterator<Item = &'a Radicand>) -> usize {
+    let radicands: Vec<&Radicand> = radicands.filter(|m| !m.is_one()).collect();
+    let mut base: Vec<u64> = Vec::new();
+    for m in &radicands {
+        for &f in m.factors() {
+            refine_base(&mut base, f);
+        }
+    }
+    let words = base.len().div_ceil(64);
+    // Reduced rows, each with its pivot bit (the lowest set bit).
+    let mut rows: Vec<(usize, Vec<u64>)> = Vec::new();
+    for m in &radicands {
+        let mut v = vec![0u64; words];
+        for (i, &b) in base.iter().enumerate() {
+            if m.factors().iter().any(|&f| f % b == 0) {
+                v[i / 64] |= 1 << (i % 64);
+            }
+        }
+        for (pivot, row) in &rows {
+            if v[pivot / 64] >> (pivot % 64) & 1 == 1 {
+                for (x, y) in v.iter_mut().zip(row) {
+                    *x ^= y;
+                }
+            }
+        }
+        let lowest = v
+            .iter()
+            .enumerate()
+            .find(|(_, w)| **w != 0)
+            .map(|(i, w)| i * 64 + w.trailing_zeros() as usize);
+        if let Some(p) = lowest {
+            // Keep the rows fully reduced: clear the new pivot from the earlier rows.
+            for (_, row) in rows.iter_mut() {
+                if row[p / 64] >> (p % 64) & 1 == 1 {
+                    for (x, y) in row.iter_mut().zip(&v) {
+                        *x ^= y;
+                    }
+                }
+            }
+            rows.push((p, v));
+        }
+    }
+    rows.len()
+}
+
+/// Adds the square-free `x > 1` to the pairwise coprime, square-free `base`, splitting elements
+/// that share a factor with it, so that `base` stays a coprime base of everything added.
+fn refine_base(base: &mut Vec<u64>, mut x: u64) {
+    let mut i = 0;
+    while i < base.len() && x > 1 {
+        let b = base[i];
+        let g = gcd_u64(x, b);
+        if g > 1 {
+            // Square-free: g is coprime to b/g and to x/g, and both to every other element.
+            if g < b {
+                base[i] = g;
+                base.push(b / g);
+            }
+            x /= g;
+        }
+        i += 1;
+    }
+    if x > 1 {
+        base.push(x);
+    }
 }

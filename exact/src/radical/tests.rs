@@ -5,7 +5,7 @@ use super::*;
 use crate::modp::is_prime_u64;
 use crate::radical::radicand::integer_u64;
 use exactcheck_core::{OrderedField, Ring, Sign};
-use num_bigint::BigUint;
+use num_bigint::{BigInt, BigUint};
 use num_traits::One;
 
 fn r(s: &str) -> Radical {
@@ -182,5 +182,81 @@ fn common_denominator_printing() {
     assert_eq!(
         r("1 + sqrt(2)").to_string_over_common_denominator(),
         "1 + sqrt(2)"
+    );
+}
+
+/// The sum of the square roots of the first `k` primes.
+fn prime_root_sum(k: usize) -> String {
+    let primes: Vec<u64> = (2u64..)
+        .filter(|&n| (2..n).take_while(|d| d * d <= n).all(|d| n % d != 0))
+        .take(k)
+        .collect();
+    primes
+        .iter()
+        .map(|p| format!("sqrt({p})"))
+        .collect::<Vec<_>>()
+        .join(" + ")
+}
+
+#[test]
+fn independent_radicals_is_the_rank_modulo_squares() {
+    assert_eq!(r("3/4").independent_radicals(), 0);
+    assert_eq!(r("sqrt(6)").independent_radicals(), 1);
+    // One radicand with ten prime factors is one square root.
+    assert_eq!(r("sqrt(6469693230)").independent_radicals(), 1);
+    assert_eq!(
+        r("1 + sqrt(2) + sqrt(3) + sqrt(6)").independent_radicals(),
+        2
+    );
+    // sqrt(6) sqrt(10) = 2 sqrt(15): three radicands, two independent roots.
+    assert_eq!(r("sqrt(6) + sqrt(10) + sqrt(15)").independent_radicals(), 2);
+    assert_eq!(r(&prime_root_sum(7)).independent_radicals(), 7);
+    // Radicands beyond 64 bits (products of 64-bit factors).
+    let big = r("sqrt(18446744073709551557) * sqrt(18446744073709551533) + sqrt(2)");
+    assert_eq!(big.independent_radicals(), 2);
+}
+
+/// Issue 16: `(sqrt(2) + ... + sqrt(97))^8` (25 primes) aborted allocating 5.4 GB and its
+/// inverse asked for 2.2 TB; the sum is now refused, naming the limit, before any product.
+#[test]
+fn many_radicands_are_refused_with_the_limit() {
+    let msg = |s: &str| s.parse::<Radical>().unwrap_err().to_string();
+    let limit = exactcheck_core::limits::RADICANDS.get();
+    assert_eq!(limit, 10, "the test assumes the default");
+    let e = msg(&format!("({})^8", prime_root_sum(25)));
+    assert!(e.contains("the limit radicands = 10 (found 11;"), "{e}");
+    let e = msg(&format!("1/({})", prime_root_sum(12)));
+    assert!(e.contains("the limit radicands = 10"), "{e}");
+    // At the limit: computed.
+    let s = r(&prime_root_sum(10));
+    let inv = s.inv().unwrap();
+    assert_eq!(inv.mul_ref(&s), Radical::one());
+    assert_eq!(inv.independent_radicals(), 10);
+}
+
+/// Issue 16: `sqrt((S10)^2)` took 3.4-14 s (the trial division of every perfect-square norm ran
+/// to its bound); the denesting now finds the root at once.
+#[test]
+fn denesting_a_square_of_ten_roots() {
+    let s = prime_root_sum(10);
+    let y = r(&format!("sqrt(({s})^2)"));
+    assert_eq!(y, r(&s));
+}
+
+/// A cofactor out of reach of the trial division is named as such, not as negative or not
+/// denestable (issue 16).
+#[test]
+fn the_sqrt_message_says_why() {
+    let msg = |s: &str| s.parse::<Radical>().unwrap_err().to_string();
+    // Two primes near 2^80: no factor below the bound, not a square.
+    let e = msg("sqrt(1208925819614629174706189*1208925819614629174706193)");
+    assert!(e.contains("trial-division bound 2^20"), "{e}");
+    assert!(!e.contains("negative"), "{e}");
+    assert!(msg("sqrt(-2)").contains("it is negative"));
+    assert!(msg("sqrt(sqrt(2))").contains("not denestable"));
+    // A huge square part with a small square-free part is extracted (2^10000 * 3).
+    assert_eq!(
+        r("sqrt((2^1000)^10*3)"),
+        Radical::sqrt_of(3).scale(&Rational::from(BigInt::from(2).pow(5000)))
     );
 }
