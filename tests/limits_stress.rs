@@ -32,16 +32,6 @@ use timed::{parallel_map, root, run, Run};
 /// here that HAS a file fails the test, so the list cannot go stale.
 const NOT_YET: &[&str] = &[
     "file-size",
-    "depth",
-    "digits",
-    "exponent",
-    "constant-bits",
-    "radicands",
-    "variables",
-    "terms",
-    "degree",
-    "groebner-steps",
-    "groebner-basis",
     "bisection",
     "precision-bits",
     "samples",
