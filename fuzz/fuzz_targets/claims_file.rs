@@ -10,7 +10,10 @@ use libfuzzer_sys::fuzz_target;
 fn one_line(r: Result<impl Sized, exactcheck::Error>, source: &str) {
     if let Err(e) = r {
         let line = e.to_string();
-        assert!(!line.contains('\n'), "a multi-line error for {source:?}: {line:?}");
+        assert!(
+            !line.contains('\n'),
+            "a multi-line error for {source:?}: {line:?}"
+        );
     }
 }
 

@@ -19,7 +19,11 @@ where
         return;
     };
     let via_text = parse_poly::<C>(source, &mut vars);
-    assert_eq!(via_text.as_ref(), Ok(&p), "parse_poly disagrees with to_poly on {source:?}");
+    assert_eq!(
+        via_text.as_ref(),
+        Ok(&p),
+        "parse_poly disagrees with to_poly on {source:?}"
+    );
     let q = with_raised_limits(|| b.to_poly::<C>(&mut vars));
     assert_eq!(
         q.as_ref(),
@@ -43,7 +47,11 @@ fuzz_target!(|data: &[u8]| {
     let printed2 = again.to_string();
     let third = with_raised_limits(|| parse_expr(&printed2))
         .unwrap_or_else(|err| panic!("{source:?} printed as {printed2:?} does not parse: {err}"));
-    assert_eq!(printed2, third.to_string(), "printing {source:?} does not settle");
+    assert_eq!(
+        printed2,
+        third.to_string(),
+        "printing {source:?} does not settle"
+    );
     if source.contains("sqrt") {
         same_poly::<Radical>(&e, &again, source);
     } else {

@@ -22,7 +22,12 @@ fuzz_target!(|data: &[u8]| {
         let Ok(program) = &b.program else {
             continue;
         };
-        assert_eq!(program.arity(), b.args.len(), "arity of {}", b.display_name());
+        assert_eq!(
+            program.arity(),
+            b.args.len(),
+            "arity of {}",
+            b.display_name()
+        );
         let _ = program.operation_count();
         for shift in 0..3 {
             let exact: Vec<Rational> = (0..program.arity())
@@ -33,9 +38,19 @@ fuzz_target!(|data: &[u8]| {
                 .collect();
             let float: Vec<f64> = exact.iter().map(Rational::to_f64).collect();
             let f = program.eval_f64(&float);
-            assert_eq!(f.len(), program.outputs.len(), "outputs of {}", b.display_name());
+            assert_eq!(
+                f.len(),
+                program.outputs.len(),
+                "outputs of {}",
+                b.display_name()
+            );
             if let Ok(values) = program.eval_exact(&exact) {
-                assert_eq!(values.len(), program.outputs.len(), "outputs of {}", b.display_name());
+                assert_eq!(
+                    values.len(),
+                    program.outputs.len(),
+                    "outputs of {}",
+                    b.display_name()
+                );
             }
         }
     }

@@ -31,6 +31,9 @@ fuzz_target!(|data: &[u8]| {
     };
     if let Err(e) = run(&args) {
         let line = e.to_string();
-        assert!(!line.contains('\n'), "a multi-line error for {args:?}: {line:?}");
+        assert!(
+            !line.contains('\n'),
+            "a multi-line error for {args:?}: {line:?}"
+        );
     }
 });

@@ -58,7 +58,11 @@ fn clear_sign(v: f64, size: f64) -> Option<Sign> {
 fn check_sign(x: &Radical, size: f64, what: &str) {
     assert!(x.is_canonical(), "{what} = {x:?} is not canonical");
     let exact = x.sign();
-    assert_eq!(exact, x.sign_exact(), "sign and sign_exact differ for {what} = {x:?}");
+    assert_eq!(
+        exact,
+        x.sign_exact(),
+        "sign and sign_exact differ for {what} = {x:?}"
+    );
     assert_eq!(exact == Sign::Zero, x.is_zero(), "{what} = {x:?}");
     if let Some(s) = clear_sign(x.to_f64(), size) {
         assert_eq!(exact, s, "{what} = {x:?}: exact sign vs f64 {}", x.to_f64());
@@ -86,18 +90,27 @@ fuzz_target!(|data: &[u8]| {
     let diff = a.sub_ref(&b);
     check_sign(&diff, sa + sb, "a - b");
     assert_eq!(diff.add_ref(&b), a, "(a - b) + b");
-    assert_eq!(a.cmp(&b), match diff.sign() {
-        Sign::Negative => std::cmp::Ordering::Less,
-        Sign::Zero => std::cmp::Ordering::Equal,
-        Sign::Positive => std::cmp::Ordering::Greater,
-    }, "cmp vs sign of a - b");
+    assert_eq!(
+        a.cmp(&b),
+        match diff.sign() {
+            Sign::Negative => std::cmp::Ordering::Less,
+            Sign::Zero => std::cmp::Ordering::Equal,
+            Sign::Positive => std::cmp::Ordering::Greater,
+        },
+        "cmp vs sign of a - b"
+    );
 
     let prod = a.mul_ref(&b);
     assert_eq!(prod, b.mul_ref(&a), "a * b = b * a");
     check_sign(&prod, sa * sb, "a * b");
     let (fa, fb) = (a.to_f64(), b.to_f64());
     if clear_sign(fa, sa).is_some() && clear_sign(fb, sb).is_some() {
-        assert!(close(prod.to_f64(), fa * fb), "a * b = {} vs f64 {}", prod.to_f64(), fa * fb);
+        assert!(
+            close(prod.to_f64(), fa * fb),
+            "a * b = {} vs f64 {}",
+            prod.to_f64(),
+            fa * fb
+        );
     }
     assert_eq!(a.square(), a.mul_ref(&a), "square");
 
@@ -108,16 +121,29 @@ fuzz_target!(|data: &[u8]| {
             assert!(b.mul_ref(&inv).is_one(), "b * b^-1 for b = {b:?}");
             let q = a.checked_div(&b).expect("b is not zero");
             assert_eq!(q.mul_ref(&b), a, "(a / b) * b");
-            assert_eq!(prod.checked_div(&b).expect("b is not zero"), a, "(a * b) / b");
+            assert_eq!(
+                prod.checked_div(&b).expect("b is not zero"),
+                a,
+                "(a * b) / b"
+            );
             if clear_sign(fa, sa).is_some() && clear_sign(fb, sb).is_some() {
-                assert!(close(q.to_f64(), fa / fb), "a / b = {} vs f64 {}", q.to_f64(), fa / fb);
+                assert!(
+                    close(q.to_f64(), fa / fb),
+                    "a / b = {} vs f64 {}",
+                    q.to_f64(),
+                    fa / fb
+                );
             }
         }
     }
 
     // sqrt(a^2) = |a|.
     let root = a.square().sqrt();
-    let abs = if a.sign() == Sign::Negative { a.neg_ref() } else { a.clone() };
+    let abs = if a.sign() == Sign::Negative {
+        a.neg_ref()
+    } else {
+        a.clone()
+    };
     assert_eq!(root.as_ref(), Some(&abs), "sqrt(a^2) for a = {a:?}");
     match a.sqrt() {
         Some(r) => {

@@ -18,7 +18,10 @@ fn check(source: &str, mode: Mode) {
         }
         Err(e) => {
             let line = e.to_string();
-            assert!(!line.contains('\n'), "a multi-line error for {source:?}: {line:?}");
+            assert!(
+                !line.contains('\n'),
+                "a multi-line error for {source:?}: {line:?}"
+            );
         }
     }
 }
