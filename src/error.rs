@@ -5,14 +5,14 @@
 #[derive(Debug, thiserror::Error)]
 pub enum Error {
     /// An argument value is out of range or inconsistent.
-    #[error("{0}")]
+    #[error("{}", one_line(.0))]
     Usage(String),
     /// A problem file or expression is malformed or describes degenerate input; the message
     /// names the field or position.
-    #[error("{0}")]
+    #[error("{}", one_line(.0))]
     Input(String),
     /// Reading a file failed.
-    #[error("cannot read {path}: {source}")]
+    #[error("cannot read {}: {source}", one_line(.path))]
     Io {
         /// The path (or `-` for standard input).
         path: String,
@@ -33,6 +33,27 @@ impl Error {
     /// then ends quietly with exit status 0.
     pub fn is_broken_pipe(&self) -> bool {
         matches!(self, Error::Output(e) if e.kind() == std::io::ErrorKind::BrokenPipe)
+    }
+}
+
+/// `text` with its line breaks (control characters, U+2028, U+2029) escaped (`\n`, `\u{1b}`): messages
+/// quote what the user wrote (a JSON key, a file name), which may contain any character, and an
+/// error stays one line.
+fn one_line(text: &str) -> std::borrow::Cow<'_, str> {
+    let breaks = |c: char| c.is_control() || c == '\u{2028}' || c == '\u{2029}';
+    if text.chars().any(breaks) {
+        text.chars()
+            .map(|c| {
+                if breaks(c) {
+                    c.escape_default().to_string()
+                } else {
+                    c.to_string()
+                }
+            })
+            .collect::<String>()
+            .into()
+    } else {
+        text.into()
     }
 }
 

@@ -1,0 +1,89 @@
+#!/usr/bin/env bash
+# Regenerates the seed corpus fuzz/seeds/<target>/ from the repository: the README's `prove`
+# examples, tests/solve_golden, the claims files of examples/ and tests/claims_file, the FPCore
+# suite of tests/regress, and a few hand-made elements of the radical field. Run from anywhere;
+# the seeds are small and committed, the corpus the fuzzer grows (fuzz/corpus) is not.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+rm -rf fuzz/seeds
+mkdir -p fuzz/seeds/{expr_roundtrip,solve_json,prove,radical,fpcore,claims_file}
+
+python3 - <<'PY'
+import glob, hashlib, os, re, shlex
+
+def put(target, data):
+    if isinstance(data, str):
+        data = data.encode()
+    name = hashlib.sha1(data).hexdigest()[:16]
+    with open(f"fuzz/seeds/{target}/{name}", "wb") as f:
+        f.write(data)
+
+# `exactcheck prove ...` lines of the README (with their continuation lines).
+readme = open("README.md").read().replace("\\\n", " ")
+expressions = set()
+for line in readme.splitlines():
+    line = line.strip()
+    if not line.startswith("exactcheck prove "):
+        continue
+    try:
+        words = shlex.split(line)[2:]
+    except ValueError:
+        continue
+    plain, where, mode = [], [], "e"
+    i = 0
+    while i < len(words):
+        w = words[i]
+        if w == "--where" and i + 1 < len(words):
+            where.append(words[i + 1]); i += 2; continue
+        if w == "--random":
+            mode = "r"; i += 2; continue
+        if w in ("--json", "--seed"):
+            i += 2 if w == "--seed" else 1; continue
+        plain.append(w); i += 1
+    if not plain:
+        continue
+    lhs, rhs = plain[0], (plain[1] if len(plain) > 1 else "")
+    put("prove", "\n".join([mode, lhs, rhs] + where))
+    put("prove", "\n".join(["j", lhs, rhs] + where))
+    for e in [lhs, rhs] + [w for r in where for w in re.split(r"[=<>]+", r)]:
+        if e.strip():
+            expressions.add(e.strip())
+# More expressions: every syntax the README lists.
+expressions |= {
+    "0.1 + 2.5e-3 - 1E+5", "sqrt(2)*sqrt(3) - sqrt(6)", "(x+1)^3", "2x y^2", "-x^2",
+    "-(x^2)", "x/3 - 1/(2*3)", "(sqrt(2)+sqrt(3))^2/5", "((a+b)*(a-b))^2", "1e5",
+    "sqrt(3 - 2*sqrt(2))", "x^0 + 0^0",
+}
+for e in sorted(expressions):
+    put("expr_roundtrip", e)
+put("prove", "e\nsqrt(2)*sqrt(8)\n4")
+put("prove", "e\n(x+y)^3\nx^3+3x^2y+3x y^2+y^3\n0 <= x <= 1")
+put("prove", "r\nc^4 - s^4\nc^2 - s^2\nc^2 + s^2 = 1")
+
+for path in sorted(glob.glob("tests/solve_golden/*.json")):
+    put("solve_json", open(path, "rb").read())
+
+for path in sorted(glob.glob("examples/*.toml") + glob.glob("tests/claims_file/*")):
+    flag = b"j" if path.endswith(".json") else b"t"
+    put("claims_file", flag + open(path, "rb").read())
+
+# The FPCore suite, whole and one benchmark per seed.
+suite = open("tests/regress/suite.fpcore").read()
+put("fpcore", suite)
+for part in re.split(r"\n(?=\(FPCore)", suite):
+    if part.strip():
+        put("fpcore", part)
+
+# Radical elements: a split byte, then (radicand, numerator, denominator) triples.
+for seed in [
+    bytes([3, 1, 1, 0, 2, 1, 0, 1, 255, 0]),
+    bytes([6, 1, 1, 0, 2, 1, 0, 3, 3, 1, 2, 255, 0, 3, 1, 0]),
+    bytes([9, 3, 7, 2, 5, 250, 4, 15, 1, 0, 6, 1, 1, 1, 2, 3]),
+    bytes([0, 1, 1, 0, 2, 255, 0, 3, 2, 5]),
+    bytes([12, 16, 3, 0, 1, 9, 0, 15, 128, 15, 2, 127, 1, 14, 4, 2, 7, 100, 5, 9, 1, 1, 3, 33, 7]),
+]:
+    put("radical", seed)
+PY
+for t in expr_roundtrip solve_json prove radical fpcore claims_file; do
+  echo "$t: $(ls fuzz/seeds/$t | wc -l) seeds"
+done
