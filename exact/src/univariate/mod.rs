@@ -36,8 +36,12 @@
 //!   bisecting until the interval is shorter than `1/l` leaves at most one candidate `k / l`,
 //!   which is evaluated exactly. Hence [`RootInterval::is_exact`] holds **exactly when the root is
 //!   rational**.
-//! * Refinement ([`UPoly::refine`]) bisects on the sign of the square-free part, which changes
-//!   across every isolated root.
+//! * Refinement ([`UPoly::refine`]) narrows the interval on the sign of the square-free part,
+//!   which changes across every isolated root, by Abbott's quadratic interval refinement
+//!   (`exactcheck_core::roots::refine_isolating`: secant predictions on a grid of `N` parts with
+//!   `N` squared on success, a bisection on failure), so a width of `2^-10240` costs a few dozen
+//!   evaluations, not 10,240 bisections; [`UPoly::try_refine`] checks the `bisection` limit
+//!   first.
 //! * The sign on each gap between consecutive roots ([`UPoly::sign_chart`]) follows from the
 //!   leading coefficient and the multiplicities, without further evaluation.
 //!
