@@ -95,20 +95,18 @@ fn extreme_finite_input_answers_with_finite_numbers_or_one_line() {
 
 #[test]
 fn a_non_finite_float_result_is_refused_naming_the_field() {
-    // 1e200 squared overflows inside the plane-plane computation: the answer used to carry a
-    // silent `null` for it (serde_json writes NaN and inf as null).
-    let o = solve_stdin(
-        r#"{"kind":"plane_plane","planes":[{"normal":[1e200,1,0],"point":[0,1e200,0]},{"normal":[0,1e200,1],"point":[1e200,0,0]}]}"#,
-        &["--float"],
-    );
-    let out = String::from_utf8_lossy(&o.stdout);
-    let err = String::from_utf8_lossy(&o.stderr);
-    if o.status.code() == Some(0) {
-        let v: Value = serde_json::from_str(&out).expect("valid JSON");
-        assert!(!has_null_number(&v), "{out}");
-    } else {
-        assert_eq!(o.status.code(), Some(2), "{err}");
-        assert_eq!(err.lines().count(), 1, "{err}");
-        assert!(err.contains("f64"), "{err}");
+    // Finite input whose f64 polynomial overflows: the answer used to carry a silent `null`
+    // for it (serde_json writes NaN and inf as null) with exit status 0.
+    let problem = r#"{"kind":"ruled_line","base":[[0,0,0],["10^200",1,0]],"directions":[[0,0,1],[1,0,"10^200"]],"line":{"point":["10^200",0,0],"direction":[1,"10^200",0]}}"#;
+    for (mode, path) in [("--float", ""), ("--both", "float.")] {
+        let o = solve_stdin(problem.as_bytes(), &[mode]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{mode}: {err}");
+        assert_eq!(
+            err,
+            format!("exactcheck: error: {path}polynomial[0]: the f64 computation overflowed (inf); use exact mode\n"),
+            "{mode}"
+        );
+        assert!(o.stdout.is_empty(), "{mode}");
     }
 }
