@@ -27,15 +27,6 @@ use std::collections::BTreeSet;
 use std::ffi::OsString;
 use timed::{parallel_map, root, run, Run};
 
-/// Limits allowed to have no stress file yet: their files are written by the engineers wiring
-/// them (issue 13). The integrator empties this list once those files are in; a name listed
-/// here that HAS a file fails the test, so the list cannot go stale.
-const NOT_YET: &[&str] = &[
-    "file-size",
-    "bisection",
-    "precision-bits",
-    "samples",
-];
 
 /// The stress directory, relative to the repository root.
 const DIR: &str = "tests/stress";
@@ -104,34 +95,12 @@ fn every_limit_has_a_stress_file() {
     let missing: Vec<&str> = names
         .iter()
         .copied()
-        .filter(|n| !stress_path(n).exists() && !NOT_YET.contains(n))
+        .filter(|n| !stress_path(n).exists())
         .collect();
     if !missing.is_empty() {
         problems.push(format!(
             "no tests/stress/<name>.toml for the limit(s): {}",
             missing.join(", ")
-        ));
-    }
-    let stale: Vec<&str> = NOT_YET
-        .iter()
-        .copied()
-        .filter(|n| stress_path(n).exists())
-        .collect();
-    if !stale.is_empty() {
-        problems.push(format!(
-            "listed in NOT_YET but the stress file exists (remove them from NOT_YET): {}",
-            stale.join(", ")
-        ));
-    }
-    let unknown: Vec<&str> = NOT_YET
-        .iter()
-        .copied()
-        .filter(|n| !names.contains(n))
-        .collect();
-    if !unknown.is_empty() {
-        problems.push(format!(
-            "NOT_YET names no limit of the registry: {}",
-            unknown.join(", ")
         ));
     }
     // A file for no limit is a misspelt or renamed limit.

@@ -183,11 +183,11 @@ fn counts_out_of_range_are_one_line_naming_flag_and_limit() {
         ),
         (
             &["regress", "cylinder-sphere", "--samples", "1000000000000"][..],
-            "--samples must be between 1 and 1000000 (got 1000000000000)",
+            "number of samples exceeds the limit samples = 100000 (found 1000000000000; raise it with --limit samples=N)",
         ),
         (
             &["regress", "bezier-cubic", "--samples", "0"][..],
-            "--samples must be between 1 and 1000000 (got 0)",
+            "--samples must be between 1 and 100000 (got 0)",
         ),
     ] {
         let start = Instant::now();

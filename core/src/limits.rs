@@ -189,17 +189,20 @@ limits! {
     GROEBNER_STEPS = ("groebner-steps", "Groebner basis steps", "", 150);
     /// Elements of one Groebner basis.
     GROEBNER_BASIS = ("groebner-basis", "Groebner basis size", "polynomials", 200);
-    /// Bisection or refinement steps spent on one real root.
-    BISECTION = ("bisection", "refinement steps for one root", "", 100_000);
-    /// Bits of precision asked of an isolated root (`precision` = 2^-bits).
-    PRECISION_BITS = ("precision-bits", "precision asked", "bits", 100_000);
-    /// Samples of one `solve` answer or one built-in regression run.
-    SAMPLES = ("samples", "number of samples", "", 1_000_000);
-    /// Heap memory of the whole process, in MB (enforced by the command-line tool's allocator).
-    MEMORY = ("memory", "memory in use", "MB", 1_536);
     /// Size in bits of a coefficient of a new Groebner basis element (the cost of the later
     /// reductions grows with it).
     GROEBNER_BITS = ("groebner-bits", "size of a Groebner basis coefficient", "bits", 10_000);
+    /// Bisection or refinement steps spent on one real root.
+    BISECTION = ("bisection", "refinement steps for one root", "", 100_000);
+    /// Bits of precision asked of an isolated root (`precision` = 2^-bits).
+    PRECISION_BITS = ("precision-bits", "precision asked", "bits", 1_024);
+    /// Samples of one `solve` answer or one built-in regression run.
+    SAMPLES = ("samples", "number of samples", "", 100_000);
+    /// Points of one `sphere_interpolation` problem (an exact linear system of about 2N x 2N
+    /// with growing rationals: about N^4 work).
+    POINTS = ("points", "number of interpolation points", "", 30);
+    /// Heap memory of the whole process, in MB (enforced by the command-line tool's allocator).
+    MEMORY = ("memory", "memory in use", "MB", 1_536);
 }
 
 /// The limit called `name`.

@@ -12,6 +12,10 @@
 //! The comparison: with the plain stereographic projection sigma (10) the preimages are single
 //! points of the plane P, and a plane curve of degree m through N points at given parameters
 //! needs 3(m+1) - 1 >= 2N, so the image degree 2m grows like 4N/3.
+//!
+//! Cost: the degrees are tried from 0 up, but the degrees whose system has only the zero
+//! solution are found by one elimination in the power basis (`solvable_degrees`) and skipped,
+//! so the work is about three eliminations of a 2N x 2N system instead of one per degree.
 
 use crate::bernstein::Bernstein;
 use crate::bezier::RationalBezierCurve;
@@ -155,6 +159,60 @@ fn conditions<T: Field>(rows: &mut Vec<Vec<T>>, span: &[Vec<T>], t: &T, n: usize
     }
 }
 
+/// For each degree `n < bound`, whether the conditions of degree `n` have a non-zero solution;
+/// from `bound` on they always do (more unknowns than conditions). `lines` are the spans of the
+/// lines (rows of `dim` coordinates) with their parameters.
+///
+/// A solution of degree `n` is a curve `x(t)` of degree `<= n` meeting every line at its
+/// parameter; whether one exists does not depend on the basis. In the power basis the unknowns
+/// of degree `n` are the first `dim (n + 1)` columns of those of any higher degree (the
+/// coefficients of `1, t, ..., t^n`), and Gauss-Jordan elimination chooses its pivots column by
+/// column from the left, so the pivots of one elimination of the widest matrix give the rank of
+/// every degree at once: degree `n` has a solution iff fewer than `dim (n + 1)` pivots lie in
+/// its columns. One elimination replaces one per degree (the cost was about N^6 for N points:
+/// N/2 degrees, each an elimination of a 2N x 2N system with growing rationals).
+fn solvable_degrees<T: Field>(lines: &[(Vec<Vec<T>>, &T)], dim: usize) -> (Vec<bool>, usize) {
+    let mut rows: Vec<(Vec<T>, &T)> = Vec::new();
+    for (span, t) in lines {
+        let Ok(m) = Matrix::from_rows(span.clone()) else {
+            continue;
+        };
+        for u in m.nullspace() {
+            rows.push((u, t));
+        }
+    }
+    // From degree `bound` on, dim (n + 1) > rows: a non-zero solution always exists.
+    let bound = rows.len() / dim;
+    if bound == 0 {
+        return (Vec::new(), 0);
+    }
+    let cols = dim * bound;
+    let matrix: Vec<Vec<T>> = rows
+        .iter()
+        .map(|(u, t)| {
+            let mut row = Vec::with_capacity(cols);
+            let mut power = T::one();
+            for _ in 0..bound {
+                row.extend(u.iter().map(|ua| ua.mul_ref(&power)));
+                power = power.mul_ref(t);
+            }
+            row
+        })
+        .collect();
+    let pivots = Matrix::from_rows(matrix)
+        .map(|m| m.rref().1)
+        .unwrap_or_default();
+    let solvable = (0..bound)
+        .map(|n| pivots.iter().filter(|&&c| c < dim * (n + 1)).count() < dim * (n + 1))
+        .collect();
+    (solvable, bound)
+}
+
+/// Whether degree `n` may have a non-zero solution (see [`solvable_degrees`]).
+fn may_solve((solvable, bound): &(Vec<bool>, usize), n: usize) -> bool {
+    n >= *bound || solvable[n]
+}
+
 /// The curve of degree n from a coefficient vector of length dim (n+1).
 fn curve_of<T: Field>(v: &[T], dim: usize, n: usize) -> Vec<Bernstein<T>> {
     (0..dim)
@@ -192,7 +250,17 @@ pub fn interpolate<T: Field>(
     validate(points, params)?;
     let lines: Vec<[Hom4<T>; 2]> = points.iter().map(preimage_line).collect();
     let max_degree = points.len();
+    let spans: Vec<(Vec<Vec<T>>, &T)> = lines
+        .iter()
+        .zip(params)
+        .map(|(line, t)| (vec![line[0].0.to_vec(), line[1].0.to_vec()], t))
+        .collect();
+    let solvable = solvable_degrees(&spans, 4);
     for n in 0..=max_degree {
+        if !may_solve(&solvable, n) {
+            // Only the zero curve meets every line: no candidate (as the nullspace would say).
+            continue;
+        }
         let mut rows = Vec::new();
         for (line, t) in lines.iter().zip(params) {
             conditions(&mut rows, &[line[0].0.to_vec(), line[1].0.to_vec()], t, n);
@@ -235,7 +303,24 @@ pub fn interpolate<T: Field>(
 /// `k_j` (None if there is none up to m = N).
 pub fn sigma_degree<T: Field>(points: &[Hom4<T>], params: &[T]) -> Option<usize> {
     let pre: Vec<Hom4<T>> = points.iter().map(sigma_inverse).collect();
+    let spans: Vec<(Vec<Vec<T>>, &T)> = pre
+        .iter()
+        .zip(params)
+        .map(|(p, t)| {
+            let (o, z) = (T::one(), T::zero());
+            let span = if p.is_zero() {
+                vec![vec![z.clone(), o.clone(), z.clone()], vec![z.clone(), z, o]]
+            } else {
+                vec![vec![p.0[0].clone(), p.0[1].clone(), p.0[2].clone()]]
+            };
+            (span, t)
+        })
+        .collect();
+    let solvable = solvable_degrees(&spans, 3);
     for m in 0..=points.len() {
+        if !may_solve(&solvable, m) {
+            continue;
+        }
         let mut rows = Vec::new();
         for (p, t) in pre.iter().zip(params) {
             if p.is_zero() {

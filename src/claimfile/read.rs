@@ -261,7 +261,20 @@ fn with_context(context: &str, message: &str) -> String {
     }
 }
 
+/// The document's nesting depth within the `depth` limit (`crate::solve::depth`), checked
+/// before the recursive parsers see it.
+fn check_depth(
+    text: &str,
+    check: fn(&str) -> Result<(), (usize, exactcheck_core::limits::LimitError)>,
+) -> Result<(), ReadError> {
+    check(text).map_err(|(at, e)| ReadError {
+        line: line_in(text, at),
+        message: e.to_string(),
+    })
+}
+
 fn read_toml(text: &str) -> Result<(RawFile, Index), ReadError> {
+    check_depth(text, crate::solve::depth::check_toml)?;
     let syntax = |e: toml::de::Error| {
         let line = e.span().map_or(1, |s| line_in(text, s.start));
         ReadError {
@@ -341,7 +354,10 @@ fn index_toml_value(
 }
 
 fn read_json(text: &str) -> Result<(RawFile, Index), ReadError> {
+    check_depth(text, crate::solve::depth::check_json)?;
     let mut de = serde_json::Deserializer::from_str(text);
+    // The depth was bounded by `check_depth` above.
+    de.disable_recursion_limit();
     let raw: Result<RawFile, _> = serde_path_to_error::deserialize(&mut de);
     let raw = match raw {
         Ok(r) => {

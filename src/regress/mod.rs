@@ -22,9 +22,12 @@ use std::process::ExitCode;
 
 pub mod ruled;
 
-/// The largest `--samples` (each sample is evaluated exactly, about 0.8 ms on one core for
-/// `cylinder_sphere`: the maximum is minutes of work).
-pub const MAX_SAMPLES: usize = 1_000_000;
+/// The largest `--samples` of a built-in kernel: the `samples` limit (each sample is evaluated
+/// exactly, about 0.8 ms on one core for `cylinder_sphere`: the default of 100,000 is about a
+/// minute of work).
+pub fn max_samples() -> usize {
+    exactcheck_core::limits::SAMPLES.get_usize()
+}
 
 /// The largest number of samples one run evaluates of a `--formula` or `--fpcore` sweep (a
 /// float program of a few operations runs at 100,000-300,000 samples/s: minutes of work).
@@ -259,14 +262,21 @@ fn run_kernel<E: ExactScalar>(
 /// Runs `exactcheck regress` and prints the report.
 ///
 /// # Errors
-/// [`Error::Usage`] for `--samples` outside `1..=MAX_SAMPLES` (`MAX_TEXT_SAMPLES` for a
+/// [`Error::Limit`] for a kernel's `--samples` past the `samples` limit; [`Error::Usage`] for
+/// `--samples` outside `1..=max_samples()` (`MAX_TEXT_SAMPLES` for a
 /// formula or FPCore; with `--shard`, `MAX_SWEEP_SAMPLES` in all and the per-run limit per shard); [`Error::Output`] when standard
 /// output fails.
 pub fn run(args: &RegressArgs) -> Result<ExitCode, Error> {
-    let per_run = if args.formula.is_some() || args.fpcore.is_some() {
+    let text = args.formula.is_some() || args.fpcore.is_some();
+    if !text && args.shard.is_none() && args.samples > max_samples() {
+        return Err(Error::Limit(
+            exactcheck_core::limits::SAMPLES.exceeded(args.samples.to_string()),
+        ));
+    }
+    let per_run = if text {
         MAX_TEXT_SAMPLES
     } else {
-        MAX_SAMPLES
+        max_samples()
     };
     match args.shard {
         None => {

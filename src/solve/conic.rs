@@ -145,6 +145,7 @@ fn problem<N, T: ConicScalar>(
             if w.sign() != Sign::Positive {
                 return Err(Error::Input("precision: must be positive".into()));
             }
+            super::number::check_precision(&w)?;
             w
         }
     };

@@ -44,8 +44,8 @@ pub struct Input<N> {
     pub cylinder: CylinderInput<N>,
     /// The sphere.
     pub sphere: SphereInput<N>,
-    /// Number of sample angles (1 to 10000, default 12).
-    #[schemars(range(min = 1, max = 10000))]
+    /// Number of sample angles (at least 1, at most the `samples` limit; default 12).
+    #[schemars(range(min = 1))]
     pub samples: Option<u64>,
     /// The width to which irrational ends of the real tau-intervals are isolated (positive).
     pub precision: Option<N>,
@@ -231,11 +231,10 @@ fn configuration<N, T: OrderedField>(
     }
     let samples = match input.samples {
         None => 12,
-        Some(n) if (1..=10_000).contains(&n) => n as usize,
-        Some(_) => {
-            return Err(Error::Input(
-                "samples must be an integer from 1 to 10000".into(),
-            ))
+        Some(0) => return Err(Error::Input("samples must be at least 1".into())),
+        Some(n) => {
+            exactcheck_core::limits::SAMPLES.check(n)?;
+            usize::try_from(n).expect("within the samples limit, which fits memory")
         }
     };
     Ok((cs, samples))
@@ -481,6 +480,7 @@ fn exact(text: &str) -> Result<ExactAnswer, Error> {
             if w.sign() != Sign::Positive {
                 return Err(Error::Input("precision must be positive".into()));
             }
+            super::number::check_precision(w)?;
             Some(w.clone())
         }
     };
@@ -524,8 +524,16 @@ fn exact(text: &str) -> Result<ExactAnswer, Error> {
         let (a, b) = cs.coefficients_at(&angle.cos, &angle.sin);
         let disc = a.square() - &b;
         // u and the points: in the radical field, or in Q(w), w^2 = disc, when the radicand
-        // cannot be certified square-free.
-        let (us, pts): (Vec<String>, Vec<PointText>) = match Radical::sqrt_rational(&disc) {
+        // cannot be certified square-free or is too big to factor quickly (the square-free
+        // part needs a factorization: a few hundred digits already take seconds).
+        let small =
+            disc.numer().bits() <= MAX_FACTORED_BITS && disc.denom().bits() <= MAX_FACTORED_BITS;
+        let root = if small {
+            Radical::sqrt_rational(&disc)
+        } else {
+            None
+        };
+        let (us, pts): (Vec<String>, Vec<PointText>) = match root {
             None => {
                 let (pts, ok) = quadratic_points(&cs, &angle, &a, &disc);
                 all_on_both &= ok;
@@ -585,7 +593,7 @@ fn exact(text: &str) -> Result<ExactAnswer, Error> {
                 ),
                 None => {
                     let w = Rational::new(1, 1 << 40).expect("2^40 != 0");
-                    let refined = p.refine(ri, &w);
+                    let refined = p.try_refine(ri, &w)?;
                     tangent_points.push(TangentPoint::Isolated {
                         tau_interval: [refined.lo.to_string(), refined.hi.to_string()],
                         approx: TauApprox {
@@ -614,28 +622,30 @@ fn exact(text: &str) -> Result<ExactAnswer, Error> {
     }
     // Interval ends to the requested precision.
     let refine = |r: &RootInterval| match &width {
-        Some(w) if !r.is_exact() => p.refine(r, w),
-        _ => r.clone(),
+        Some(w) if !r.is_exact() => p.try_refine(r, w),
+        _ => Ok(r.clone()),
     };
-    let end = |x: &Bound| match x {
-        Bound::NegInf => End::Exact("-inf".into()),
-        Bound::PosInf => End::Exact("+inf".into()),
-        Bound::Root(r) => match r.exact_value() {
-            Some(v) => End::Exact(v.to_string()),
-            None => {
-                let r = refine(r);
-                End::Isolated {
-                    interval: [r.lo.to_string(), r.hi.to_string()],
-                    approx: r.to_f64(),
+    let end = |x: &Bound| -> Result<End, Error> {
+        Ok(match x {
+            Bound::NegInf => End::Exact("-inf".into()),
+            Bound::PosInf => End::Exact("+inf".into()),
+            Bound::Root(r) => match r.exact_value() {
+                Some(v) => End::Exact(v.to_string()),
+                None => {
+                    let r = refine(r)?;
+                    End::Isolated {
+                        interval: [r.lo.to_string(), r.hi.to_string()],
+                        approx: r.to_f64(),
+                    }
                 }
-            }
-        },
+            },
+        })
     };
     let intervals = analysis
         .nonnegative
         .iter()
-        .map(|iv| [end(&iv.lo), end(&iv.hi)])
-        .collect();
+        .map(|iv| Ok([end(&iv.lo)?, end(&iv.hi)?]))
+        .collect::<Result<_, Error>>()?;
     Ok(ExactAnswer {
         kind: "cylinder_sphere",
         mode: "exact",
@@ -663,6 +673,10 @@ fn exact(text: &str) -> Result<ExactAnswer, Error> {
         float: None,
     })
 }
+
+/// The largest numerator or denominator (in bits) of a sample's discriminant that is factored
+/// to write its square root in the radical field; bigger ones use `Q[w]/(w^2 - D)`.
+const MAX_FACTORED_BITS: u64 = 256;
 
 /// The touching circle of a configuration whose discriminant vanishes identically: centre and
 /// radius from the geometry (the sphere's centre on the axis, the cylinder's radius), `u` from

@@ -14,6 +14,8 @@
 
 pub mod conic;
 pub mod cylinder_sphere;
+pub mod depth;
+pub mod finite;
 pub mod number;
 pub mod ph_offset;
 pub mod plane_plane;
@@ -23,7 +25,7 @@ pub mod sphere_interpolation;
 
 use crate::Error;
 use schemars::JsonSchema;
-use serde::de::DeserializeOwned;
+use serde::de::{Deserialize, DeserializeOwned};
 use serde::Serialize;
 use serde_json::Value;
 
@@ -64,12 +66,12 @@ pub(crate) fn by_mode<E: Serialize, F: Serialize>(
     attach: fn(&mut E, F),
 ) -> Result<Value, Error> {
     match mode {
-        Mode::Exact => Ok(to_json(&exact(text)?)),
-        Mode::Float => Ok(to_json(&float(text)?)),
+        Mode::Exact => to_json(&exact(text)?),
+        Mode::Float => to_json(&float(text)?),
         Mode::Both => {
             let mut answer = exact(text)?;
             attach(&mut answer, float(text)?);
-            Ok(to_json(&answer))
+            to_json(&answer)
         }
     }
 }
@@ -173,9 +175,16 @@ fn without_bom(text: &str) -> &str {
 /// The problem's `"kind"`.
 ///
 /// # Errors
-/// [`Error::Input`] for malformed JSON, a non-object, a missing or non-string kind.
+/// [`Error::Input`] for malformed JSON, a non-object, a missing or non-string kind;
+/// [`Error::Limit`] of `depth` for arrays and objects nested deeper than the limit.
 pub fn problem_kind(text: &str) -> Result<String, Error> {
-    let v: Value = serde_json::from_str(without_bom(text))
+    let text = without_bom(text);
+    depth::check_json(text).map_err(|(_, e)| Error::Limit(e))?;
+    let mut de = serde_json::Deserializer::from_str(text);
+    // The depth was bounded by the scan above (module `depth`).
+    de.disable_recursion_limit();
+    let v = Value::deserialize(&mut de)
+        .and_then(|v| de.end().map(|()| v))
         .map_err(|e| Error::Input(format!("malformed JSON: {e}")))?;
     let obj = v
         .as_object()
@@ -191,10 +200,15 @@ pub fn problem_kind(text: &str) -> Result<String, Error> {
 /// Reads a problem into its input type; every error is one line naming the field path.
 ///
 /// # Errors
+/// [`Error::Limit`] of `depth` for arrays and objects nested deeper than the limit.
 /// [`Error::Input`]: `malformed JSON: ...` for syntax errors, `PATH: ...` for everything the
 /// types refuse (unknown or repeated fields, wrong types, bad numbers).
 pub fn parse<T: DeserializeOwned>(text: &str) -> Result<T, Error> {
-    let mut de = serde_json::Deserializer::from_str(without_bom(text));
+    let text = without_bom(text);
+    depth::check_json(text).map_err(|(_, e)| Error::Limit(e))?;
+    let mut de = serde_json::Deserializer::from_str(text);
+    // The depth was bounded by the scan above (module `depth`).
+    de.disable_recursion_limit();
     let value: T = serde_path_to_error::deserialize(&mut de).map_err(|e| {
         let path = e.path().to_string();
         let inner = e.into_inner();
@@ -211,9 +225,16 @@ pub fn parse<T: DeserializeOwned>(text: &str) -> Result<T, Error> {
     Ok(value)
 }
 
-/// A serialized answer as a JSON value.
-pub(crate) fn to_json<T: Serialize>(answer: &T) -> Value {
-    serde_json::to_value(answer).expect("answers hold only strings, numbers, booleans and arrays")
+/// A serialized answer as a JSON value: the one place answers are serialized, after the check
+/// that every `f64` in it is finite ([`finite`]; JSON has no NaN or infinity, and `serde_json`
+/// would write `null`).
+///
+/// # Errors
+/// [`Error::Input`] naming the field of the first non-finite number.
+pub(crate) fn to_json<T: Serialize>(answer: &T) -> Result<Value, Error> {
+    finite::check(answer).map_err(|e| Error::Input(e.to_string()))?;
+    Ok(serde_json::to_value(answer)
+        .expect("answers hold only strings, finite numbers, booleans and arrays"))
 }
 
 /// Solves one problem given as JSON text.

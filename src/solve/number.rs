@@ -17,6 +17,11 @@
 //! * [`RationalNumber`]: an exact rational (irrational input is refused).
 //! * [`FloatNumber`]: `--float` input: integers, floating literals and exact strings, converted
 //!   to the nearest `f64`; non-finite results (`"10^400"`, `1e400`) are refused.
+//!
+//! Every JSON number literal is checked against the `digits` limit before it is converted (the
+//! digits of an integer, of a floating literal's mantissa); strings are checked by the
+//! expression parser.
+//!
 //! * [`Radians`]: an angle in radians (approximate by nature: floating literals are accepted in
 //!   every mode), finite.
 //!
@@ -51,6 +56,13 @@ fn written<'de, D: Deserializer<'de>>(d: D) -> Result<Written, D::Error> {
     match Value::deserialize(d)? {
         Value::Number(n) => {
             let t = n.to_string();
+            // The digits as written (serde_json's arbitrary_precision keeps them), counted
+            // before any conversion: a float literal's mantissa, an integer's every digit.
+            let mantissa = t.split(['e', 'E']).next().unwrap_or("");
+            let digits = mantissa.bytes().filter(u8::is_ascii_digit).count();
+            exactcheck_core::limits::DIGITS
+                .check_usize(digits)
+                .map_err(D::Error::custom)?;
             Ok(if t.contains(['.', 'e', 'E']) {
                 Written::Float(t)
             } else {
@@ -134,6 +146,29 @@ fn float_refused(literal: &str) -> String {
         None => format!(
             "{literal} is a JSON floating-point literal, which exact mode refuses, and its exponent is beyond what the exact syntax can write; use --float"
         ),
+    }
+}
+
+/// Checks a `precision` (positive) against the `precision-bits` limit: `w >= 2^-bits`.
+///
+/// # Errors
+/// [`Error::Limit`] of `precision-bits` when a finer precision is asked.
+pub(crate) fn check_precision<T: OrderedField>(w: &T) -> Result<(), crate::Error> {
+    let limit = &exactcheck_core::limits::PRECISION_BITS;
+    let bits = limit.get();
+    let cap = u32::try_from(bits).unwrap_or(u32::MAX);
+    let two = T::one() + T::one();
+    // w >= 2^-bits  <=>  w * 2^bits >= 1 (for f64, 2^bits may be +inf: every w passes, and
+    // an f64 precision has at most 1074 bits anyway).
+    if w.mul_ref(&two.pow(cap)) >= T::one() {
+        // Refining a root isolated in an interval of width 1 (the unit interval of the
+        // Bernstein kinds) to w takes at most log2(1/w) halvings: check the `bisection` limit
+        // too, before any work (cylinder_sphere checks its own intervals' widths again).
+        exactcheck_core::roots::halvings_within_limit(&T::one(), w).map_err(crate::Error::Limit)
+    } else {
+        Err(crate::Error::Limit(
+            limit.exceeded(format!("a precision below 2^-{bits}")),
+        ))
     }
 }
 
@@ -306,6 +341,15 @@ pub(crate) trait SectionScalar: OrderedField + std::fmt::Debug {
     /// The rational components `p_k` of `p = sum_k sqrt(k) p_k` (power coefficients), or `None`
     /// when the scalar has no exact decomposition (f64).
     fn rational_components(p: &[Self]) -> Option<Vec<Vec<Rational>>>;
+    /// The nearest integer, where the scalar can find it exactly (rationals), for the
+    /// refinement's grid index (`roots::refine_isolating_with`).
+    fn round(&self) -> Option<Self>;
+}
+
+/// The nearest integer to a rational (halves round up).
+fn round_rational(x: &Rational) -> Rational {
+    let y = x.clone() + Rational::new(1, 2).expect("2 != 0");
+    Rational::from(num_integer::Integer::div_floor(&y.numer(), &y.denom()))
 }
 
 impl SectionScalar for Rational {
@@ -318,6 +362,9 @@ impl SectionScalar for Rational {
     }
     fn rational_components(p: &[Self]) -> Option<Vec<Vec<Rational>>> {
         Some(vec![p.to_vec()])
+    }
+    fn round(&self) -> Option<Self> {
+        Some(round_rational(self))
     }
 }
 
@@ -345,6 +392,10 @@ impl SectionScalar for Radical {
         }
         Some(parts.into_iter().map(|(_, v)| v).collect())
     }
+    fn round(&self) -> Option<Self> {
+        self.to_rational()
+            .map(|q| Radical::from(&round_rational(&q)))
+    }
 }
 
 impl SectionScalar for f64 {
@@ -356,6 +407,9 @@ impl SectionScalar for f64 {
         q.to_f64()
     }
     fn rational_components(_: &[Self]) -> Option<Vec<Vec<Rational>>> {
+        None
+    }
+    fn round(&self) -> Option<Self> {
         None
     }
 }
@@ -394,7 +448,7 @@ pub(crate) fn unit_zeros<T: SectionScalar>(p: &Bernstein<T>, width: &T) -> Vec<I
                 r.sub_ref(lo).sign() == Sign::Positive && hi.sub_ref(r).sign() == Sign::Positive
             }) {
                 Some(r) => IsolatedRoot::Exact(r.clone()),
-                None => refiner.refine(&z, width),
+                None => refiner.refine_with(&z, width, T::round),
             },
             IsolatedRoot::Exact(_) => z,
         })

@@ -201,6 +201,7 @@ fn problem<N, T: SectionScalar>(
             if w.sign() != Sign::Positive {
                 return Err(Error::Input("precision: must be positive".into()));
             }
+            super::number::check_precision(&w)?;
             w
         }
         None => T::from_rational(&default_width()),

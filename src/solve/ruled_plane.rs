@@ -128,6 +128,7 @@ fn problem<N, T: OrderedField>(
             if w.sign() != Sign::Positive {
                 return Err(Error::Input("precision: must be positive".into()));
             }
+            super::number::check_precision(&w)?;
             w
         }
     };

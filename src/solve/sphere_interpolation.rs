@@ -69,6 +69,7 @@ impl Kind for SphereInterpolation {
             ));
         }
         let input: Input = parse(text)?;
+        exactcheck_core::limits::POINTS.check_usize(input.points.len())?;
         let points: Vec<Vec3<Radical>> = input
             .points
             .into_iter()
@@ -91,7 +92,7 @@ impl Kind for SphereInterpolation {
         } else {
             solve(&points, &params)?
         };
-        Ok(to_json(&answer))
+        to_json(&answer)
     }
 }
 

@@ -156,27 +156,6 @@ impl SquareFree {
         out.into_iter().map(|ri| self.exactify(ri)).collect()
     }
 
-    /// Bisects `(lo, hi)` (an isolating interval, `s_lo` the sign at `lo`) once; returns the exact
-    /// root if the midpoint is one.
-    pub(super) fn bisect(
-        &self,
-        lo: &mut Rational,
-        hi: &mut Rational,
-        s_lo: Sign,
-    ) -> Option<Rational> {
-        let m = midpoint(lo, hi);
-        let s = self.poly().sign_at(&m);
-        if s == Sign::Zero {
-            return Some(m);
-        }
-        if s == s_lo {
-            *lo = m;
-        } else {
-            *hi = m;
-        }
-        None
-    }
-
     /// Makes the interval exact if its root is rational (see the module documentation).
     pub(super) fn exactify(&self, ri: RootInterval) -> RootInterval {
         if ri.is_exact() {
@@ -184,13 +163,16 @@ impl SquareFree {
         }
         let p = self.poly();
         let l = p.leading_coefficient(); // a positive integer
-        let s_lo = p.sign_at(&ri.lo);
-        let (mut lo, mut hi) = (ri.lo, ri.hi);
-        while (hi.sub_ref(&lo)).mul_ref(&l) >= Rational::ONE {
-            if let Some(r) = self.bisect(&mut lo, &mut hi, s_lo) {
-                return RootInterval::exact(r);
-            }
+                                         // Narrow the interval below 1/l by quadratic refinement (`refine`): bisection needed
+                                         // log2(l) steps, thousands for coefficients of a thousand digits.
+        let narrow = self.refine(
+            &ri,
+            &(Rational::ONE / l.mul_ref(&Rational::from_integer(2))),
+        );
+        if narrow.is_exact() {
+            return narrow;
         }
+        let RootInterval { lo, hi } = narrow;
         // At most one integer k with lo * l < k < hi * l.
         let k = floor(&lo.mul_ref(&l)) + 1;
         let cand = Rational::from(k) / &l;
@@ -219,13 +201,16 @@ impl SquareFree {
             width.signum() == Sign::Positive,
             "UPoly::refine: the width must be positive"
         );
-        let (mut lo, mut hi) = (ri.lo.clone(), ri.hi.clone());
-        while hi.sub_ref(&lo) > *width {
-            if let Some(r) = self.bisect(&mut lo, &mut hi, s_lo) {
-                return RootInterval::exact(r);
-            }
+        match exactcheck_core::roots::refine_isolating_with(
+            |x| p.eval(x),
+            |x| Some(Rational::from(floor(&(x.add_ref(&half()))))),
+            ri.lo.clone(),
+            ri.hi.clone(),
+            width,
+        ) {
+            IsolatedRoot::Exact(r) => RootInterval::exact(r),
+            IsolatedRoot::Between(lo, hi) => RootInterval { lo, hi },
         }
-        RootInterval { lo, hi }
     }
 
     /// `x` compared with the root isolated by `ri`.
@@ -330,6 +315,25 @@ impl UPoly {
         }
         assert!(!self.is_zero(), "UPoly::refine: the zero polynomial");
         SquareFree::new(self).refine(ri, width)
+    }
+
+    /// [`UPoly::refine`] within the `bisection` limit: the halvings from the width of `ri` down
+    /// to `width` (an upper bound on the refinement steps) are checked before any work.
+    ///
+    /// # Errors
+    /// A [`LimitError`] of `bisection` when more halvings than the limit would be needed.
+    ///
+    /// # Panics
+    /// As [`UPoly::refine`].
+    pub fn try_refine(
+        &self,
+        ri: &RootInterval,
+        width: &Rational,
+    ) -> Result<RootInterval, exactcheck_core::limits::LimitError> {
+        if !ri.is_exact() && width.signum() == Sign::Positive {
+            exactcheck_core::roots::halvings_within_limit(&ri.width(), width)?;
+        }
+        Ok(self.refine(ri, width))
     }
 
     /// The rational `x` compared with the root isolated by `ri` (an isolating interval of a root

@@ -33,19 +33,24 @@
 //!   from non-roots on either side of it (so no interval ever ends at a root). Afterwards every
 //!   interval is tested for a *rational* root: if the primitive square-free part has leading coefficient `l`,
 //!   a rational root `p/q` has `q | l` (rational root theorem), so `l * root` is an integer;
-//!   bisecting until the interval is shorter than `1/l` leaves at most one candidate `k / l`,
-//!   which is evaluated exactly. Hence [`RootInterval::is_exact`] holds **exactly when the root is
+//!   narrowing the interval below `1/(2l)` (by the quadratic refinement below: bisection took
+//!   `log2 l` steps, thousands for coefficients of a thousand digits) leaves at most one
+//!   candidate `k / l`, which is evaluated exactly. Hence [`RootInterval::is_exact`] holds **exactly when the root is
 //!   rational**.
-//! * Refinement ([`UPoly::refine`]) bisects on the sign of the square-free part, which changes
-//!   across every isolated root.
+//! * Refinement ([`UPoly::refine`]) narrows the interval on the sign of the square-free part,
+//!   which changes across every isolated root, by Abbott's quadratic interval refinement
+//!   (`exactcheck_core::roots::refine_isolating`: secant predictions on a grid of `N` parts with
+//!   `N` squared on success, a bisection on failure), so a width of `2^-10240` costs a few dozen
+//!   evaluations, not 10,240 bisections; [`UPoly::try_refine`] checks the `bisection` limit
+//!   first.
 //! * The sign on each gap between consecutive roots ([`UPoly::sign_chart`]) follows from the
 //!   leading coefficient and the multiplicities, without further evaluation.
 //!
 //! # Limits
 //! Dense representation: fine for the low degrees of the workspace (the discriminants are of
 //! degree at most 4), usable into the tens; Sturm sequences cost `O(n^2)` polynomial
-//! operations. Isolation of irrational roots bisects about `log2(l * 2^k)` times per root, `l` as
-//! above, so a square-free part with a huge leading coefficient makes it slower, never wrong.
+//! operations. Isolation bisects about `log2(2^k / sep)` times, `sep` the root separation; the
+//! test for a rational root then refines quadratically to `1/(2l)`, `l` as above.
 
 mod bernstein_roots;
 mod isolate;

@@ -348,3 +348,34 @@ fn large_coefficients() {
     assert_eq!(roots[1], RootInterval::exact(tiny));
     assert_eq!(roots[3], RootInterval::exact(big));
 }
+
+#[test]
+fn refinement_to_ten_thousand_bits_is_quadratic_and_correct() {
+    // x^2 - 2: the positive root refined to 2^-10240 (bisection took 10,240 sign evaluations of
+    // ever longer numbers; quadratic interval refinement takes a few dozen).
+    let f = p(&[-2, 0, 1]);
+    let roots = f.isolate_roots();
+    let r = &roots[1];
+    let w = Rational::ONE / Rational::from_integer(2).pow(10_240);
+    let fine = f.refine(r, &w);
+    assert!(fine.width() <= w);
+    let two = Rational::from_integer(2);
+    assert!(fine.lo.mul_ref(&fine.lo) < two && fine.hi.mul_ref(&fine.hi) > two);
+    // The limit is checked before the work: 2^-200000 asks more halvings than the default.
+    let tiny = Rational::ONE / Rational::from_integer(2).pow(200_000);
+    let e = f.try_refine(r, &tiny).unwrap_err();
+    assert!(e.to_string().contains("the limit bisection"), "{e}");
+}
+
+#[test]
+fn isolation_with_a_huge_leading_coefficient_makes_rational_roots_exact() {
+    // (10^600 x - 1)(x^2 - 3): making the rational root 10^-600 exact bisected about 2,000
+    // times below 1/l; the refinement now narrows the interval quadratically.
+    let big = Rational::from_integer(10).pow(600);
+    let f =
+        UPoly::from_coeffs(vec![Rational::from_integer(-1), big.clone()]).mul_ref(&p(&[-3, 0, 1]));
+    let roots = f.isolate_roots();
+    assert_eq!(roots.len(), 3);
+    assert_eq!(roots[1].exact_value(), Some(&(Rational::ONE / big)));
+    assert!(!roots[0].is_exact() && !roots[2].is_exact());
+}
