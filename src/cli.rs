@@ -29,7 +29,12 @@ pub struct Cli {
     #[arg(long = "limit", value_name = "NAME=VALUE", global = true, action = clap::ArgAction::Append)]
     pub limits: Vec<String>,
     /// End the command with an error (exit status 2) when it has not finished after SECONDS.
-    #[arg(long, value_name = "SECONDS", global = true, allow_negative_numbers = true)]
+    #[arg(
+        long,
+        value_name = "SECONDS",
+        global = true,
+        allow_negative_numbers = true
+    )]
     pub timeout: Option<f64>,
 }
 

@@ -41,20 +41,43 @@ impl Error {
 /// error stays one line.
 fn one_line(text: &str) -> std::borrow::Cow<'_, str> {
     let breaks = |c: char| c.is_control() || c == '\u{2028}' || c == '\u{2029}';
-    if text.chars().any(breaks) {
-        text.chars()
-            .map(|c| {
-                if breaks(c) {
-                    c.escape_default().to_string()
-                } else {
-                    c.to_string()
-                }
-            })
-            .collect::<String>()
-            .into()
-    } else {
-        text.into()
+    let long = text
+        .split(' ')
+        .any(|w| w.chars().count() > MAX_ECHOED_CHARS);
+    if !long && !text.chars().any(breaks) {
+        return text.into();
     }
+    let escaped: String = text
+        .chars()
+        .map(|c| {
+            if breaks(c) {
+                c.escape_default().to_string()
+            } else {
+                c.to_string()
+            }
+        })
+        .collect();
+    escaped
+        .split(' ')
+        .map(shorten_word)
+        .collect::<Vec<_>>()
+        .join(" ")
+        .into()
+}
+
+/// The longest word of an error message shown in full: an input echoed in a message (a
+/// 200,000-character expression, a 30,000-digit number) is shortened to its two ends.
+const MAX_ECHOED_CHARS: usize = 120;
+
+/// `word` itself, or its first 60 and last 20 characters around `...` with its length.
+fn shorten_word(word: &str) -> std::borrow::Cow<'_, str> {
+    let n = word.chars().count();
+    if n <= MAX_ECHOED_CHARS {
+        return word.into();
+    }
+    let head: String = word.chars().take(60).collect();
+    let tail: String = word.chars().skip(n - 20).collect();
+    format!("{head}...{tail} [{n} characters]").into()
 }
 
 /// The operating system's message without the " (os error N)" suffix.
@@ -63,5 +86,25 @@ fn io_message(e: &std::io::Error) -> String {
     match s.rfind(" (os error ") {
         Some(i) if s.ends_with(')') => s[..i].to_string(),
         _ => s,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn long_echoed_input_is_shortened_to_its_ends() {
+        let deep = format!("\"{}1{}\"", "(".repeat(200_000), ")".repeat(200_000));
+        let e = Error::Input(format!("normal[2]: {deep}: at 257: too deep"));
+        let shown = e.to_string();
+        assert!(shown.len() < 200, "{shown}");
+        assert!(shown.starts_with("normal[2]: \"((((("), "{shown}");
+        assert!(
+            shown.ends_with("))))\": [400004 characters] at 257: too deep"),
+            "{shown}"
+        );
+        let short = Error::Input("x: \"1/2\" is fine".into());
+        assert_eq!(short.to_string(), "x: \"1/2\" is fine");
     }
 }

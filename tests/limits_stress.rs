@@ -27,7 +27,6 @@ use std::collections::BTreeSet;
 use std::ffi::OsString;
 use timed::{parallel_map, root, run, Run};
 
-
 /// The stress directory, relative to the repository root.
 const DIR: &str = "tests/stress";
 

@@ -197,6 +197,34 @@ pub fn problem_kind(text: &str) -> Result<String, Error> {
         .to_string())
 }
 
+/// The `radicands` limit on all the exact numbers of a problem together: each may be within
+/// it while the field the answer is computed in (spanned by all of them) is not. Strings that do
+/// not parse are left to the kind's reader, which names their field.
+///
+/// # Errors
+/// [`Error::Limit`] of `radicands`.
+fn check_radicands_together(text: &str) -> Result<(), Error> {
+    fn strings<'a>(v: &'a Value, out: &mut Vec<&'a str>) {
+        match v {
+            Value::String(s) => out.push(s),
+            Value::Array(items) => items.iter().for_each(|x| strings(x, out)),
+            Value::Object(map) => map.values().for_each(|x| strings(x, out)),
+            _ => {}
+        }
+    }
+    let mut de = serde_json::Deserializer::from_str(without_bom(text));
+    // The depth was bounded by `problem_kind`'s scan.
+    de.disable_recursion_limit();
+    let Ok(v) = Value::deserialize(&mut de) else {
+        return Ok(());
+    };
+    let mut texts = Vec::new();
+    strings(&v, &mut texts);
+    let values: Vec<exactcheck_exact::Radical> =
+        texts.iter().filter_map(|s| s.parse().ok()).collect();
+    exactcheck_exact::Radical::check_radicands_together(&values).map_err(Error::Limit)
+}
+
 /// Reads a problem into its input type; every error is one line naming the field path.
 ///
 /// # Errors
@@ -244,6 +272,7 @@ pub(crate) fn to_json<T: Serialize>(answer: &T) -> Result<Value, Error> {
 /// numbers, division by zero or degenerate geometry.
 pub fn solve(text: &str, mode: Mode) -> Result<Value, Error> {
     let kind = problem_kind(text)?;
+    check_radicands_together(text)?;
     let solver = find_kind(&kind)?;
     (solver.answer)(without_bom(text), mode)
 }

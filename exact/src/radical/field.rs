@@ -192,6 +192,28 @@ impl Radical {
         limits::RADICANDS.check_usize(self.independent_radicals())
     }
 
+    /// `Ok` when all of `values` together have at most [`limits::RADICANDS`] independent
+    /// square roots: the size of the field a computation combining them works in (each value
+    /// may be within the limit while their sum or product is not).
+    ///
+    /// # Errors
+    /// The [`LimitError`] of `radicands`.
+    pub fn check_radicands_together<'a>(
+        values: impl IntoIterator<Item = &'a Radical>,
+    ) -> Result<(), LimitError> {
+        let mut all: Vec<&Radicand> = values
+            .into_iter()
+            .flat_map(|v| v.terms.iter().map(|(m, _)| m))
+            .filter(|m| !m.is_one())
+            .collect();
+        all.sort();
+        all.dedup();
+        if all.len() <= limits::RADICANDS.get_usize() {
+            return Ok(());
+        }
+        limits::RADICANDS.check_usize(independent_count(all.into_iter()))
+    }
+
     /// The sign, decided exactly without the floating-point filter (for tests and benchmarks;
     /// [`OrderedField::sign`] gives the same answer, usually faster).
     pub fn sign_exact(&self) -> Sign {

@@ -11,7 +11,8 @@
 //! (case-insensitive) — and is read into the exact [`Rational`] it denotes; otherwise it must
 //! be a symbol (`[a-zA-Z~!@$%^&*_\-+=<>.?/:][a-zA-Z0-9~!@$%^&*_\-+=<>.?/:]*`, letters also
 //! non-ASCII). An atom that starts like a number but is not one (`1.2.3`, `12abc`) is a syntax
-//! error rather than a symbol. Lists nest at most [`MAX_DEPTH`] deep.
+//! error rather than a symbol. Lists nest at most the `depth` limit deep
+//! ([`exactcheck_core::limits::DEPTH`]): the parser and the compiler recurse once per level.
 use super::FpCoreError;
 use crate::rational::Rational;
 use num_bigint::BigInt;
@@ -22,9 +23,6 @@ use num_traits::{One, Zero};
 /// into an exact fraction, and `1e1000000000` would not fit in memory. Doubles need `|e| <= 1100`
 /// (decimal: 10^±330, binary: 2^±1100), so this leaves room for any sensible literal.
 pub(crate) const MAX_LITERAL_EXPONENT: i64 = 100_000;
-
-/// The deepest nesting of lists read; the parser and the compiler recurse once per level.
-pub(crate) const MAX_DEPTH: usize = 500;
 
 /// A position in the source: 1-based line and column (columns count characters).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -161,11 +159,8 @@ pub(crate) fn parse_all(text: &str) -> Result<Vec<SExpr>, FpCoreError> {
 fn parse_one(lx: &mut Lexer<'_>, depth: usize) -> Result<SExpr, FpCoreError> {
     lx.skip_blank();
     let pos = lx.pos();
-    if depth > MAX_DEPTH {
-        return Err(error(
-            pos,
-            format!("expected at most {MAX_DEPTH} nested lists (deeper nesting is refused rather than overflowing the stack)"),
-        ));
+    if let Err(e) = exactcheck_core::limits::DEPTH.check_usize(depth) {
+        return Err(error(pos, e.to_string()));
     }
     match lx.peek() {
         None => Err(error(
