@@ -359,6 +359,12 @@ fn the_file_size_limit_is_one_line_before_reading_the_rest() {
 
 #[test]
 fn the_memory_limit_ends_the_run_with_one_line_instead_of_an_abort() {
+    // The allocator's backstop, where no size is predicted: the whole catalogue in 2 MB.
+    let e = one_error_line(&exactcheck(&["--limit", "memory=2", "verify"]));
+    assert_eq!(
+        e,
+        "exactcheck: error: memory in use exceeds the limit memory = 2 MB (raise it with --limit memory=N)"
+    );
     // (x0 + ... + x29)^6 has C(35, 6) = 1,623,160 terms: far more than 20 MB.
     let vars: Vec<String> = (0..30).map(|i| format!("x{i}")).collect();
     let lhs = format!("({})^6", vars.join("+"));
@@ -371,9 +377,13 @@ fn the_memory_limit_ends_the_run_with_one_line_instead_of_an_abort() {
         "--limit",
         "terms=100000000",
     ]));
-    assert_eq!(
-        e,
-        "exactcheck: error: memory in use exceeds the limit memory = 20 MB (raise it with --limit memory=N)"
+    // The expansion predicts its size against a quarter of the limit and stops first; the
+    // allocator's backstop would end the run with the same limit named.
+    assert!(
+        e.starts_with("exactcheck: error: ")
+            && e.contains("memory in use exceeds the limit memory = 20 MB")
+            && e.contains("raise it with --limit memory=N"),
+        "{e}"
     );
 }
 
@@ -399,4 +409,43 @@ fn timeout_ends_a_long_run_with_one_line_and_leaves_a_short_one_alone() {
         let e = one_error_line(&exactcheck(&["prove", "x", "x", &flag]));
         assert!(e.contains("--timeout"), "{e}");
     }
+}
+
+/// The README's table of limits lists every limit of the registry with its default (so the
+/// documentation cannot drift from the code).
+#[test]
+fn the_readme_lists_every_limit_with_its_default() {
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md"))
+        .expect("read README.md");
+    let section = readme
+        .split("### Resource limits")
+        .nth(1)
+        .expect("a Resource limits section");
+    let rows: Vec<(String, u64)> = section
+        .lines()
+        .take_while(|l| !l.starts_with("## "))
+        .filter_map(|l| {
+            let cells: Vec<&str> = l.split('|').map(str::trim).collect();
+            let name = cells.get(1)?.strip_prefix('`')?.strip_suffix('`')?;
+            let digits: String = cells
+                .get(2)?
+                .split(['(', ' '])
+                .next()?
+                .chars()
+                .filter(|c| *c != ',')
+                .collect();
+            let value = if name == "file-size" {
+                8 << 20
+            } else {
+                digits.parse().ok()?
+            };
+            Some((name.to_string(), value))
+        })
+        .collect();
+    let expected: Vec<(String, u64)> = exactcheck_core::limits::all()
+        .iter()
+        .map(|l| (l.name().to_string(), l.default_value()))
+        .collect();
+    assert_eq!(rows, expected);
+    assert!(section.contains("| `file-size` | 8 MiB (8,388,608 bytes) |"));
 }

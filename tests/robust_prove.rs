@@ -213,3 +213,13 @@ fn a_power_of_sine_modulo_the_circle_is_decided_or_a_limit() {
     );
     assert!(!err.contains("panicked"), "{err}");
 }
+
+#[test]
+fn the_counter_example_search_solves_for_the_variable_of_lowest_degree() {
+    // Found by the `prove` fuzz target: the search fixed c and s and isolated every real root of
+    // a degree-2222 polynomial in pN (40 s). It now fixes pN and c and solves a quadratic in s.
+    let (code, out, err) = run(&["prove", "x*s", "0", "--where", "pN^2222-c^4 + s^2 = 1"]);
+    assert_eq!(code, 1, "{out}{err}");
+    assert!(out.starts_with("fails: at "), "{out}");
+    assert!(out.contains("(where the relations hold)"), "{out}");
+}

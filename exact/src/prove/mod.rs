@@ -520,8 +520,15 @@ fn solve_relations(
                     point[*v as usize] = Some(roots[pick].clone());
                     progress = true;
                 }
-                [v, ..] => {
-                    open_var.get_or_insert(*v);
+                [_, _, ..] => {
+                    // Fix the variable of highest degree first, so that the one solved for
+                    // last has a low degree (`p^2222 - c^4 + s^2 = 1`: fix p, then c, solve a
+                    // quadratic in s).
+                    let highest = *vars
+                        .iter()
+                        .max_by_key(|&&v| q.degree_in(v))
+                        .expect("two or more variables");
+                    open_var.get_or_insert(highest);
                 }
             }
         }
@@ -534,8 +541,13 @@ fn solve_relations(
     }
 }
 
+/// The highest degree of a one-variable relation whose rational roots the counter-example
+/// search isolates.
+const MAX_SEARCH_DEGREE: usize = 64;
+
 /// Real roots of a polynomial in the one variable `v` found exactly: linear roots, real roots of
-/// quadratics with a rational discriminant, rational roots when the coefficients are rational.
+/// quadratics with a rational discriminant, rational roots when the coefficients are rational
+/// (up to degree [`MAX_SEARCH_DEGREE`]).
 fn real_roots(q: &Poly<Radical>, v: Var) -> Vec<Radical> {
     let deg = q.degree_in(v) as usize;
     let mut coeffs = vec![Radical::zero(); deg + 1];
@@ -563,6 +575,9 @@ fn real_roots(q: &Poly<Radical>, v: Var) -> Vec<Radical> {
             }
             roots
         }
+        // Isolating every real root of a high-degree polynomial costs far more than this search
+        // gains from it (the search fixes high-degree variables first, so this is rare).
+        d if d > MAX_SEARCH_DEGREE => Vec::new(),
         _ => {
             let Some(rat) = coeffs
                 .iter()
