@@ -4,45 +4,16 @@
 //! abort allocating gigabytes, minutes of work, a misleading message) and asserts a correct
 //! answer or one line naming the limit, exit status 2, within a generous kill timeout.
 
-use std::io::Read;
-use std::process::{Command, Output, Stdio};
-use std::time::{Duration, Instant};
+#[path = "common/timed.rs"]
+mod timed;
 
-/// Runs exactcheck with `args`, killed after 120 s (a hang fails the test; no time is asserted).
-/// The output is drained by threads while the child runs (an answer can exceed a pipe buffer).
-fn run(args: &[String]) -> Output {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_exactcheck"))
-        .args(args)
-        .stdin(Stdio::null())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("run exactcheck");
-    let drain = |mut r: Box<dyn Read + Send>| {
-        std::thread::spawn(move || {
-            let mut v = Vec::new();
-            r.read_to_end(&mut v).expect("read a pipe");
-            v
-        })
-    };
-    let out = drain(Box::new(child.stdout.take().expect("stdout")));
-    let err = drain(Box::new(child.stderr.take().expect("stderr")));
-    let start = Instant::now();
-    let status = loop {
-        if let Some(status) = child.try_wait().expect("poll") {
-            break status;
-        }
-        if start.elapsed() > Duration::from_secs(120) {
-            child.kill().expect("kill");
-            panic!("exactcheck {args:?} ran for more than 120 s");
-        }
-        std::thread::sleep(Duration::from_millis(20));
-    };
-    Output {
-        status,
-        stdout: out.join().expect("stdout reader"),
-        stderr: err.join().expect("stderr reader"),
-    }
+/// Runs exactcheck with `args` under the shared kill-timeout (a hang fails the test; no time is
+/// asserted).
+fn run(args: &[String]) -> timed::Run {
+    let os: Vec<std::ffi::OsString> = args.iter().map(Into::into).collect();
+    let r = timed::run(&os, None);
+    assert!(!r.timed_out, "exactcheck {args:?}: {}", r.describe());
+    r
 }
 
 fn args(a: &[&str]) -> Vec<String> {
@@ -53,7 +24,7 @@ fn args(a: &[&str]) -> Vec<String> {
 fn refused(a: &[String], needle: &str) -> String {
     let out = run(a);
     let err = String::from_utf8_lossy(&out.stderr).to_string();
-    assert_eq!(out.status.code(), Some(2), "{a:?}: {err}");
+    assert_eq!(out.status, Some(2), "{a:?}: {err}");
     assert_eq!(err.trim_end().lines().count(), 1, "{a:?}: {err}");
     assert!(err.contains(needle), "{a:?}: {err}");
     assert!(!err.contains("panicked"), "{err}");
@@ -64,7 +35,7 @@ fn refused(a: &[String], needle: &str) -> String {
 fn answered(a: &[String], code: i32) -> String {
     let out = run(a);
     let err = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(code), "{a:?}: {err}");
+    assert_eq!(out.status, Some(code), "{a:?}: {err}");
     assert!(
         !err.contains("panicked") && !err.contains("exceeds the limit"),
         "{err}"

@@ -4,41 +4,16 @@
 //! work, an empty point, a variable read from a number). No test asserts a time; a generous
 //! kill-timeout keeps a regression from hanging the suite.
 
-use std::io::Read as _;
-use std::process::{Command, Stdio};
-use std::time::{Duration, Instant};
+#[path = "common/timed.rs"]
+mod timed;
 
-/// Exit status, standard output and standard error of `exactcheck ARGS`, killed after 120 s.
+/// Exit status, standard output and standard error of `exactcheck ARGS`, under the shared
+/// kill-timeout (a hang fails the test; no time is asserted).
 fn run(args: &[&str]) -> (i32, String, String) {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_exactcheck"))
-        .args(args)
-        .stdin(Stdio::null())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("spawn exactcheck");
-    let mut out = child.stdout.take().expect("stdout");
-    let mut err = child.stderr.take().expect("stderr");
-    let reader = std::thread::spawn(move || {
-        let mut s = String::new();
-        out.read_to_string(&mut s).expect("read stdout");
-        s
-    });
-    let mut stderr = String::new();
-    err.read_to_string(&mut stderr).expect("read stderr");
-    let start = Instant::now();
-    let status = loop {
-        if let Some(status) = child.try_wait().expect("wait for exactcheck") {
-            break status;
-        }
-        if start.elapsed() > Duration::from_secs(120) {
-            child.kill().expect("kill exactcheck");
-            panic!("exactcheck {args:?} still runs after 120 s");
-        }
-        std::thread::sleep(Duration::from_millis(20));
-    };
-    let stdout = reader.join().expect("stdout reader");
-    (status.code().unwrap_or(-1), stdout, stderr)
+    let os: Vec<std::ffi::OsString> = args.iter().map(Into::into).collect();
+    let r = timed::run(&os, None);
+    assert!(!r.timed_out, "exactcheck {args:?}: {}", r.describe());
+    (r.status.unwrap_or(-1), r.stdout_text(), r.stderr_text())
 }
 
 /// Asserts exit status 2 and exactly one line on standard error containing `needle`.
