@@ -699,17 +699,23 @@ impl<C: Ring> Poly<C> {
     /// `self * rhs`, or `None` when an exponent of the product would exceed `u32::MAX` (where
     /// `*` panics).
     pub fn checked_mul(&self, rhs: &Self) -> Option<Self> {
-        if self.exp_bound() + rhs.exp_bound() > MAX_EXP {
-            let (a, b) = (self.max_exponents(), rhs.max_exponents());
-            let worst = (0..a.len().min(b.len()))
-                .map(|v| a[v] + b[v])
-                .max()
-                .unwrap_or(0);
-            if worst > MAX_EXP && !self.is_empty() && !rhs.is_empty() {
-                return None;
-            }
+        if self.product_exponent_overflows(rhs) {
+            return None;
         }
         Some(self.mul_impl(rhs))
+    }
+
+    /// Whether an exponent of `self * rhs` would exceed `u32::MAX` (neither factor zero).
+    fn product_exponent_overflows(&self, rhs: &Self) -> bool {
+        if self.is_empty() || rhs.is_empty() || self.exp_bound() + rhs.exp_bound() <= MAX_EXP {
+            return false;
+        }
+        let (a, b) = (self.max_exponents(), rhs.max_exponents());
+        let worst = (0..a.len().min(b.len()))
+            .map(|v| a[v] + b[v])
+            .max()
+            .unwrap_or(0);
+        worst > MAX_EXP
     }
 
     /// `self^e`, or `None` when an exponent of the power would exceed `u32::MAX` (where
@@ -850,15 +856,8 @@ impl<C: Ring> Poly<C> {
             return Ok(Poly::zero());
         }
         limits::DEGREE.check(self.total_degree().saturating_add(rhs.total_degree()))?;
-        if self.exp_bound() + rhs.exp_bound() > MAX_EXP {
-            let (a, b) = (self.max_exponents(), rhs.max_exponents());
-            let worst = (0..a.len().min(b.len()))
-                .map(|v| a[v] + b[v])
-                .max()
-                .unwrap_or(0);
-            if worst > MAX_EXP {
-                return Err(SizeError::ExponentOverflow);
-            }
+        if self.product_exponent_overflows(rhs) {
+            return Err(SizeError::ExponentOverflow);
         }
         let words = std::cell::Cell::new(0);
         self.mul_capped(rhs, |w| {
