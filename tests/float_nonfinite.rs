@@ -7,7 +7,7 @@
 
 mod common;
 
-use common::solve_stdin;
+use common::{has_null_number, solve_stdin};
 use serde_json::Value;
 
 /// Every problem of every float kind with the number `x` in its most sensitive places.
@@ -32,19 +32,6 @@ fn problems(x: &str) -> Vec<String> {
         format!(r#"{{"kind":"conic","plane":[1,1,{x},{x}]}}"#),
         format!(r#"{{"kind":"ph_offset","u":[{x},1],"v":[1,{x}],"start":[0,{x}],"r":[{x},1]}}"#),
     ]
-}
-
-/// Whether the JSON holds a `null` inside an array that has numbers (a NaN serde_json wrote).
-fn has_null_number(v: &Value) -> bool {
-    match v {
-        Value::Array(a) => {
-            let numbers = a.iter().any(Value::is_number);
-            a.iter()
-                .any(|x| (numbers && x.is_null()) || has_null_number(x))
-        }
-        Value::Object(o) => o.values().any(has_null_number),
-        _ => false,
-    }
 }
 
 #[test]

@@ -7,6 +7,9 @@
 //! The numbers are small integers and a few rational points of the unit circle and sphere, so
 //! that degenerate configurations (which need exact coincidences) come up often.
 
+mod common;
+
+use common::has_null_number;
 use exactcheck::solve::{solve, Mode};
 use exactcheck::Error;
 use proptest::prelude::*;
@@ -50,21 +53,6 @@ fn run(text: &str, verify: impl Fn(&Value, Mode)) -> Option<Value> {
         }
     }
     exact
-}
-
-/// Whether a number-valued field holds `null`: the guard of `solve::finite` makes every f64
-/// finite, so `null` appears only where the contract has an optional value; a `null` inside an
-/// array of numbers would be a NaN written by serde_json.
-fn has_null_number(v: &Value) -> bool {
-    match v {
-        Value::Array(a) => {
-            let numbers = a.iter().any(Value::is_number);
-            a.iter()
-                .any(|x| (numbers && x.is_null()) || has_null_number(x))
-        }
-        Value::Object(o) => o.values().any(has_null_number),
-        _ => false,
-    }
 }
 
 fn int() -> impl Strategy<Value = i64> {
