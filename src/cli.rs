@@ -121,6 +121,8 @@ const SOLVE_EXAMPLES: &str = "Examples:
   exactcheck solve --both tests/solve_golden/conic_table1_ellipse.json
   exactcheck solve --schema cylinder_sphere";
 const BENCH_EXAMPLES: &str = "Examples:
+  exactcheck bench w1 --m 8 --n 13
+  exactcheck bench dense --k 8
   exactcheck bench w2 --n 2000 --mode seq
   exactcheck bench w3 --n 10000000
   exactcheck bench formula --n 100000";

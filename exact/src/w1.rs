@@ -29,6 +29,29 @@ use exactcheck_core::{binomial, Ring};
 /// # Panics
 /// When `m + n > 62` (binomial coefficients beyond `i64`).
 pub fn ring_residuals(m: u32, n: u32, negative: bool) -> (Poly<Rational>, Poly<Rational>) {
+    let w = ring_identity(m, n, negative);
+    (w.x_residual, w.weight_residual)
+}
+
+/// W1 built with the [`Ring`] API: both residuals and the size of the expanded left-hand side
+/// (the `lhs_x_terms` check value of `shared/anchors/w1_identity.py`).
+#[derive(Clone, Debug)]
+pub struct RingIdentity {
+    /// `LHS - RHS` of the x component (zero unless `negative`).
+    pub x_residual: Poly<Rational>,
+    /// `LHS - RHS` of the weight (zero unless `negative`).
+    pub weight_residual: Poly<Rational>,
+    /// The number of terms of the expanded x-component left-hand side.
+    pub lhs_x_terms: usize,
+    /// The number of variables (`5 + 3 (m + 1) + 3 (n + 1)`).
+    pub variables: usize,
+}
+
+/// [`ring_residuals`] with the anchors' other check values (see [`RingIdentity`]).
+///
+/// # Panics
+/// When `m + n > 62` (binomial coefficients beyond `i64`).
+pub fn ring_identity(m: u32, n: u32, negative: bool) -> RingIdentity {
     type P = Poly<Rational>;
     let mut vars = Vars::new();
     let mut v = |name: String| -> P { vars.poly(&name) };
@@ -80,7 +103,13 @@ pub fn ring_residuals(m: u32, n: u32, negative: bool) -> (Poly<Rational>, Poly<R
         p_rhs.push(bern(m + n, k) * P::sum(pt));
         q_rhs.push(bern(m + n, k) * P::sum(wt));
     }
-    (p_lhs - P::sum(p_rhs), nv - P::sum(q_rhs))
+    let lhs_x_terms = p_lhs.len();
+    RingIdentity {
+        x_residual: p_lhs - P::sum(p_rhs),
+        weight_residual: nv - P::sum(q_rhs),
+        lhs_x_terms,
+        variables: vars.len(),
+    }
 }
 
 #[cfg(test)]

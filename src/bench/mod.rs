@@ -1,4 +1,5 @@
-//! `exactcheck bench`: the benchmark workloads W2 (the exact Spaeth discriminant at N rational
+//! `exactcheck bench`: the benchmark workloads W1 (Chiang's theorem proved by expansion, and
+//! the dense product `f (f + 1)`; [`w1`]), W2 (the exact Spaeth discriminant at N rational
 //! parameters, [`crate::w2`]) and W3 (f64 sampling of the same discriminant), timed and printed
 //! with their check values as text or as the one JSON line the anchor scripts print.
 //!
@@ -17,6 +18,8 @@ use exactcheck_exact::{PlainRational, Rational, RationalScalar};
 use exactcheck_float::sampler::{sweep_direct, DiscSampler};
 use std::process::ExitCode;
 use std::time::Instant;
+
+pub mod w1;
 
 /// The largest `bench w2 --n` in mode `eval` (about a minute).
 pub const MAX_W2_EVAL_N: usize = 10_000_000;
@@ -44,6 +47,34 @@ pub struct BenchArgs {
 /// The benchmark workloads (see `../shared/anchors` for the same workloads in other tools).
 #[derive(Debug, Subcommand)]
 pub enum Workload {
+    /// W1: Chiang's ruled-surface/plane theorem at degrees (m, n), built and expanded as
+    /// `shared/anchors/w1_identity.py` does, both residuals tested for zero.
+    W1 {
+        /// Degree of the directrix curve V (at least 1; m + n at most 48).
+        #[arg(long, default_value_t = 8)]
+        m: u32,
+        /// Degree of the curve B (at least 1; m + n at most 48).
+        #[arg(long, default_value_t = 13)]
+        n: u32,
+        /// Perturb phi(0, 0) by 1/7, as `w1_identity.py --negative`: must not prove.
+        #[arg(long)]
+        negative: bool,
+        /// Print one JSON line (as the anchor scripts do) instead of text.
+        #[arg(long)]
+        json: bool,
+    },
+    /// The dense product f (f + 1), f = (1 + x1 + ... + xV)^K (Fateman's benchmark).
+    Dense {
+        /// The power K (at most 30).
+        #[arg(long, default_value_t = 8)]
+        k: usize,
+        /// The number of variables V (at most 8).
+        #[arg(long, default_value_t = 4)]
+        vars: usize,
+        /// Print one JSON line instead of text.
+        #[arg(long)]
+        json: bool,
+    },
     /// W2: the exact Spaeth discriminant at N rational parameters.
     W2 {
         /// Number of parameters T_k = k/1000 - 50, k = 0..N-1 (at most 10,000,000 with
@@ -114,6 +145,13 @@ pub fn max_w2_n(mode: w2::Mode) -> (usize, &'static str) {
 /// [`Error::Usage`] for `--n` outside its range; [`Error::Output`] when standard output fails.
 pub fn run(args: &BenchArgs) -> Result<ExitCode, Error> {
     let text = match args.workload {
+        Workload::W1 {
+            m,
+            n,
+            negative,
+            json,
+        } => w1::bench_w1(m, n, negative, json)?,
+        Workload::Dense { k, vars, json } => w1::bench_dense(k, vars, json)?,
         Workload::Formula { n, seed, serial } => {
             let n = check_count("--n", n, MAX_FORMULA_N, "")?;
             bench_formula(n, seed, serial)
