@@ -140,6 +140,17 @@ impl Rational {
         matches!(self.0, Repr::Small(..))
     }
 
+    /// The canonical numerator and denominator when the value is held inline (both of magnitude
+    /// below `2^127`, denominator positive, coprime), without allocating; `None` for the big tier.
+    /// For kernels with machine-word fast paths (e.g. integer coefficients of polynomials).
+    #[inline]
+    pub fn inline_parts(&self) -> Option<(i128, i128)> {
+        match self.0 {
+            Repr::Small(n, d) => Some((n, d)),
+            Repr::Big(_) => None,
+        }
+    }
+
     /// The double nearest to the value (ties to even, gradual underflow, overflow to `±inf`):
     /// the workspace's one correctly rounded conversion, [`crate::to_f64::rational_to_f64`],
     /// with a fast path where numerator and denominator are exact doubles (then one IEEE
@@ -713,6 +724,14 @@ mod tests {
         assert_eq!(q(0, -7), Rational::ZERO);
         assert!(q(6, -4).is_canonical());
         assert_eq!(Rational::new(1, 0), Err(ZeroDivisor));
+    }
+
+    #[test]
+    fn inline_parts_are_the_canonical_pair() {
+        assert_eq!(q(6, -4).inline_parts(), Some((-3, 2)));
+        assert_eq!(Rational::ZERO.inline_parts(), Some((0, 1)));
+        let big = Rational::from(BigInt::from(1) << 200u32);
+        assert_eq!(big.inline_parts(), None);
     }
 
     #[test]
