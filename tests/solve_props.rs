@@ -252,3 +252,17 @@ fn repeated_parameters_and_points_off_the_sphere_are_typed_errors() {
     .unwrap_err();
     assert!(e.to_string().contains("not on the unit sphere"), "{e}");
 }
+
+/// Found by the `ph_offset` property: u = 0, v = (-1, -3, 0) vanish together at t = 1, which the
+/// f64 singular-base heuristic missed, and the float answer panicked evaluating the offset at the
+/// cusp t = 1 (weight exactly zero). Exact mode says `singular_base`; float mode now reports it.
+#[test]
+fn float_ph_offset_with_a_missed_singular_end_is_an_input_error() {
+    let text = r#"{"kind":"ph_offset","u":[0,0,0],"v":[-1,-3,0],"start":[0,0],"r":[0],"precision":"1/1024"}"#;
+    let exact = solve(text, Mode::Exact).expect("exact mode answers");
+    assert_eq!(exact["outcome"], "singular_base");
+    let e = solve(text, Mode::Float).unwrap_err();
+    assert!(matches!(e, Error::Input(_)), "{e:?}");
+    assert!(e.to_string().contains("singular"), "{e}");
+    run(text, |_, _| {});
+}
