@@ -1,0 +1,416 @@
+#!/usr/bin/env python3
+"""exactcheck side by side with SymPy, SymEngine, python-flint, gmpy2 and numpy: workloads W1-W4.
+
+Usage: python3 scripts/compare.py [--reps K] [--only W1,W2,...] [--quick] [--python PY]
+                                  [--markdown FILE] [--json FILE] [--max-seconds S]
+
+Normally started by `scripts/compare.sh`, which builds exactcheck and the anchors' virtual
+environment first. Every workload runs in exactcheck (`exactcheck bench ... --json`) and in each
+anchor script (`scripts/anchors/*.py`), K times each in the same run (default 5; a run that takes
+longer than 5 s is not repeated), and:
+
+* the check values of every run must agree with every other tool's (exact fields equal; W3's
+  sum within 1e-12 relative; W4's root counts equal, every interval at most 2^-53 wide, the i-th
+  intervals of any two tools overlapping). A disagreement is an error (exit 1): a fast wrong
+  answer is not a result.
+* the table gives the median of each tool's own timed region (the anchors' `seconds` /
+  `total_s`: the workload without interpreter start-up and imports) and the ratio
+  exactcheck / tool (below 1: exactcheck is faster); exactcheck's whole-process medians are kept
+  in the JSON results beside them.
+* the targets of issue 14 are evaluated from the same medians and printed as met / not met.
+
+A tool that exceeds --max-seconds (default 120) on one run is stopped and shown as `> S s` at
+that size and skipped at the larger sizes of the same workload.
+"""
+import argparse, datetime, json, os, platform, statistics, subprocess, sys, time
+from fractions import Fraction
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ANCHORS = os.path.join(ROOT, "scripts", "anchors")
+SHARED = os.path.join(ROOT, "..", "shared", "anchors")
+BIN = os.path.join(ROOT, "target", "release", "exactcheck")
+
+p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+p.add_argument("--reps", type=int, default=5)
+p.add_argument("--only", default="W1,W1d,W2,W3,W4,verify",
+               help="comma-separated subset of W1, W1d (dense product), W2, W3, W4, verify")
+p.add_argument("--quick", action="store_true", help="2 repetitions, the large sizes left out")
+p.add_argument("--python", default=os.path.join(ROOT, ".venv-anchors", "bin", "python"))
+p.add_argument("--markdown", help="also write the tables to this file")
+p.add_argument("--json", help="also write every run's results to this file")
+p.add_argument("--max-seconds", type=float, default=120.0)
+args = p.parse_args()
+if args.quick:
+    args.reps = min(args.reps, 2)
+ONLY = set(args.only.split(","))
+
+
+def fail(msg):
+    print("compare: " + msg, file=sys.stderr)
+    sys.exit(1)
+
+
+if not os.access(BIN, os.X_OK):
+    fail(f"{BIN} is missing: run `cargo build --release` (scripts/compare.sh does)")
+if not os.access(args.python, os.X_OK):
+    fail(f"{args.python} is missing: run scripts/compare.sh (it creates the virtual environment)")
+
+# The vendored anchors must be the shared ones where those are present.
+if os.path.isdir(SHARED):
+    for name in sorted(os.listdir(SHARED)):
+        if name.endswith(".py"):
+            mine = os.path.join(ANCHORS, name)
+            if not os.path.exists(mine) or open(mine).read() != open(os.path.join(SHARED, name)).read():
+                print(f"compare: warning: scripts/anchors/{name} differs from ../shared/anchors/{name}",
+                      file=sys.stderr)
+
+
+class TimedOut(Exception):
+    pass
+
+
+def run(cmd):
+    """Runs one command; returns (its JSON line, whole-process seconds)."""
+    t0 = time.perf_counter()
+    try:
+        out = subprocess.run(cmd, capture_output=True, text=True, timeout=args.max_seconds)
+    except subprocess.TimeoutExpired:
+        raise TimedOut()
+    wall = time.perf_counter() - t0
+    if out.returncode != 0:
+        fail(f"`{' '.join(cmd)}` failed (exit {out.returncode}): {out.stderr.strip()[-500:]}")
+    lines = [l for l in out.stdout.strip().splitlines() if l.startswith("{")]
+    if not lines:
+        fail(f"`{' '.join(cmd)}` printed no JSON line")
+    return json.loads(lines[-1]), wall
+
+
+def anchor(script, *a):
+    return [args.python, os.path.join(ANCHORS, script), *map(str, a)]
+
+
+def ec(*a):
+    return [BIN, "bench", *map(str, a), "--json"]
+
+
+# ------------------------------------------------------------------------- agreement rules
+
+def exact_fields(*names):
+    def check(ref, other):
+        for n in names:
+            if ref.get(n) != other.get(n):
+                return f"{n}: {ref.get(n)!r} vs {other.get(n)!r}"
+        return None
+    return check
+
+
+def w3_check(ref, other):
+    if ref["count_nonneg"] != other["count_nonneg"]:
+        return f"count_nonneg: {ref['count_nonneg']} vs {other['count_nonneg']}"
+    a, b = float(ref["sum_sqrt"]), float(other["sum_sqrt"])
+    if abs(a - b) > 1e-12 * abs(b):
+        return f"sum_sqrt: {a!r} vs {b!r} (relative difference {abs(a - b) / abs(b):.2e} > 1e-12)"
+    return None
+
+
+W4_WIDTH = Fraction(1, 2 ** 53)
+
+
+def w4_intervals(r):
+    ivs = [(Fraction(lo), Fraction(hi)) for lo, hi in r["roots"]]
+    if len(ivs) != r["real_roots"]:
+        return None, f"{r['tool']}: real_roots {r['real_roots']} but {len(ivs)} intervals"
+    for lo, hi in ivs:
+        if not lo <= hi or hi - lo > W4_WIDTH:
+            return None, f"{r['tool']}: interval [{lo}, {hi}] wider than 2^-53 or reversed"
+    for (a, b), (c, d) in zip(ivs, ivs[1:]):
+        if not b < c:
+            return None, f"{r['tool']}: intervals [{a}, {b}] and [{c}, {d}] not disjoint and sorted"
+    return ivs, None
+
+
+def w4_check(ref, other):
+    if ref["real_roots"] != other["real_roots"]:
+        return f"real_roots: {ref['real_roots']} vs {other['real_roots']}"
+    x, err = w4_intervals(ref)
+    if err:
+        return err
+    y, err = w4_intervals(other)
+    if err:
+        return err
+    for i, ((a, b), (c, d)) in enumerate(zip(x, y)):
+        if b < c or d < a:
+            return f"root {i}: [{a}, {b}] and [{c}, {d}] do not overlap"
+    return None
+
+
+# ------------------------------------------------------------------------- the workloads
+# Each workload: title, reference tool for the ratios, time field, agreement rule, and sizes,
+# each with the commands of every tool.
+
+W1_SIZES = [(2, 3), (4, 6), (8, 13), (13, 21)]
+W1_TOOLS = ["flint", "symengine", "sympyring", "sympy"]
+W2_RUNS = [("eval", 2000), ("tree", 2000), ("seq", 2000), ("seq", 10000), ("eval", 100000),
+           ("tree", 100000), ("seq", 100000)]
+W4_RUNS = [("wilkinson", 20), ("wilkinson", 40), ("random", 50), ("random", 100),
+           ("mignotte", 20), ("mignotte", 40)]
+if args.quick:
+    W2_RUNS = [r for r in W2_RUNS if r[1] <= 10000]
+
+WORKLOADS = []
+if "W1" in ONLY:
+    WORKLOADS.append(dict(
+        id="W1", title="W1: Chiang's theorem proved by expansion (build + expand + zero test)",
+        time="total_s", check=exact_fields("lhs_x_terms", "nvars", "x_identity_zero", "weight_identity_zero"),
+        sizes=[(f"(m, n) = ({m}, {n})", [("exactcheck", ec("w1", "--m", m, "--n", n))]
+                + [(t, anchor("w1_identity.py", t, m, n)) for t in W1_TOOLS]) for m, n in W1_SIZES]))
+if "W1d" in ONLY:
+    WORKLOADS.append(dict(
+        id="W1d", title="W1 dense: f (f + 1), f = (1 + x1 + x2 + x3 + x4)^k (the product alone)",
+        time="seconds", check=exact_fields("terms", "coeff_sum", "max_coeff"),
+        sizes=[(f"k = {k}", [("exactcheck", ec("dense", "--k", k, "--vars", 4))]
+                + [(t, anchor("w1_dense.py", t, k, 4)) for t in ("flint", "flint-z", "symengine", "sympy")])
+               for k in ((8, 12) if args.quick else (8, 12, 16))]))
+if "W2" in ONLY:
+    CHECK2 = exact_fields("count_nonneg", "sum_num_digits", "sum_den_digits", "sum_num_mod_p", "sum_den_mod_p")
+    WORKLOADS.append(dict(
+        id="W2", title="W2: exact Spaeth discriminant at N rational parameters (evaluation, and the sums)",
+        time="seconds", check=CHECK2,
+        sizes=[(f"{mode}, N = {n:,}", [("exactcheck", ec("w2", "--mode", mode, "--n", n))]
+                + [(t, anchor("w2_rational.py", t, mode, n)) for t in ("gmpy2", "flint")]
+                + ([("fraction", anchor("w2_rational.py", "fraction", mode, n))] if n <= 10000 else []))
+               for mode, n in W2_RUNS]))
+if "W3" in ONLY:
+    WORKLOADS.append(dict(
+        id="W3", title="W3: f64 sampling of the Spaeth discriminant, N = 10,000,000",
+        time="seconds", check=w3_check,
+        sizes=[("N = 10,000,000", [("exactcheck", ec("w3", "--n", 10_000_000))]
+                + [(f"numpy {v}", anchor("w3_numpy.py", v, 10_000_000)) for v in ("chunked", "coef", "full")])]))
+if "W4" in ONLY:
+    WORKLOADS.append(dict(
+        id="W4", title="W4: all real roots isolated to width 2^-53",
+        time="seconds", check=w4_check,
+        sizes=[(f"{fam} {d}", [("exactcheck", ec("w4", "--family", fam, "--degree", d))]
+                + [(t, anchor("w4_roots.py", t, fam, d)) for t in ("flint", "sympy")])
+               for fam, d in W4_RUNS]))
+
+# ------------------------------------------------------------------------- running
+
+results = {}      # (workload id, size label, tool) -> dict(times, walls, json)
+versions = {}
+skipped = set()   # (workload id, tool) that timed out at a smaller size
+
+
+def median(xs):
+    return statistics.median(xs) if xs else None
+
+
+for w in WORKLOADS:
+    for label, tools in w["sizes"]:
+        ref_json = None
+        for tool, cmd in tools:
+            key = (w["id"], label, tool)
+            if (w["id"], tool) in skipped:
+                results[key] = dict(skipped=True)
+                continue
+            times, walls, last = [], [], None
+            try:
+                for rep in range(args.reps):
+                    r, wall = run(cmd)
+                    times.append(float(r[w["time"]]))
+                    walls.append(wall)
+                    if last is not None:
+                        err = w["check"](last, r)
+                        if err:
+                            fail(f"{w['id']} {label}: {tool} disagrees with its own earlier run: {err}")
+                    last = r
+                    if wall > 5.0:
+                        break
+            except TimedOut:
+                skipped.add((w["id"], tool))
+                results[key] = dict(timed_out=True)
+                print(f"{w['id']:4} {label:22} {tool:18} > {args.max_seconds:g} s (stopped)", file=sys.stderr)
+                continue
+            if ref_json is None:
+                ref_json = last
+            else:
+                err = w["check"](ref_json, last)
+                if err:
+                    fail(f"{w['id']} {label}: {tool} disagrees with {tools[0][0]}: {err}")
+            if "version" in last:
+                versions[tool.split()[0]] = last["version"]
+            results[key] = dict(times=times, walls=walls, json=last)
+            print(f"{w['id']:4} {label:22} {tool:18} median {median(times):.6f} s  (whole process {median(walls):.3f} s, {len(times)} runs)",
+                  file=sys.stderr)
+
+verify_walls = []
+if "verify" in ONLY:
+    for _ in range(args.reps):
+        t0 = time.perf_counter()
+        out = subprocess.run([BIN, "verify"], capture_output=True, text=True)
+        verify_walls.append(time.perf_counter() - t0)
+        if out.returncode != 0:
+            fail(f"`exactcheck verify` exited {out.returncode}")
+    print(f"verify (whole catalogue, whole process): median {median(verify_walls):.3f} s", file=sys.stderr)
+
+# ------------------------------------------------------------------------- tables
+
+
+def fmt_time(t):
+    if t is None:
+        return "-"
+    if t >= 1:
+        return f"{t:.2f} s"
+    if t >= 1e-3:
+        return f"{t * 1e3:.2f} ms"
+    return f"{t * 1e6:.0f} us"
+
+
+def cell(w, label, tool):
+    r = results.get((w["id"], label, tool))
+    if r is None:
+        return "-"
+    if r.get("timed_out"):
+        return f"> {args.max_seconds:g} s"
+    if r.get("skipped"):
+        return "(skipped)"
+    return fmt_time(median(r["times"]))
+
+
+def ratio(w, label, tool, ref="exactcheck"):
+    a = results.get((w["id"], label, ref), {})
+    b = results.get((w["id"], label, tool), {})
+    if "times" not in a:
+        return None
+    if b.get("timed_out"):
+        return ("<", median(a["times"]) / args.max_seconds)
+    if "times" not in b:
+        return None
+    return ("=", median(a["times"]) / median(b["times"]))
+
+
+def fmt_ratio(rt):
+    if rt is None:
+        return ""
+    op, x = rt
+    s = f"{x:.3g}x" if x >= 0.01 else f"{x:.1e}x"
+    return (" (< " if op == "<" else " (") + s + ")"
+
+
+def git_rev():
+    try:
+        return subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"], capture_output=True,
+                              text=True).stdout.strip()
+    except OSError:
+        return "?"
+
+
+def cpu():
+    try:
+        for line in open("/proc/cpuinfo"):
+            if line.startswith("model name"):
+                return line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    return platform.processor() or platform.machine()
+
+
+rustc = subprocess.run(["rustc", "--version"], capture_output=True, text=True).stdout.strip()
+lines = []
+lines.append(f"Measured {datetime.date.today().isoformat()} by `scripts/compare.sh` on {cpu()}, "
+             f"{os.cpu_count()} cores, {platform.system()} {platform.release()}; exactcheck {git_rev()} "
+             f"({rustc}); {args.reps} runs per cell, medians of each tool's timed region; ratio = "
+             "exactcheck / tool (below 1: exactcheck faster).")
+lines.append("")
+lines.append("Versions: " + "; ".join(f"{k} {v}" for k, v in sorted(versions.items()) if k != "exactcheck"))
+for w in WORKLOADS:
+    tools = [t for t, _ in w["sizes"][0][1]]
+    for _, ts in w["sizes"]:
+        for t, _ in ts:
+            if t not in tools:
+                tools.append(t)
+    lines.append("")
+    lines.append(f"**{w['title']}**")
+    lines.append("")
+    lines.append("| size | " + " | ".join(tools) + " |")
+    lines.append("| --- | " + " | ".join("---:" for _ in tools) + " |")
+    for label, _ in w["sizes"]:
+        cells = []
+        for t in tools:
+            c = cell(w, label, t)
+            if t != "exactcheck" and c not in ("-", "(skipped)"):
+                c += fmt_ratio(ratio(w, label, t))
+            cells.append(c)
+        lines.append(f"| {label} | " + " | ".join(cells) + " |")
+if verify_walls:
+    lines.append("")
+    lines.append(f"`exactcheck verify` (the whole built-in catalogue, whole process): median {fmt_time(median(verify_walls))}.")
+
+# ------------------------------------------------------------------------- targets (issue 14)
+targets = []
+
+
+def target(desc, ok, measured):
+    targets.append((desc, ok, measured))
+
+
+def rt(wid, label, tool):
+    w = next((w for w in WORKLOADS if w["id"] == wid), None)
+    return ratio(w, label, tool) if w else None
+
+
+def check_ratio(desc, wid, label, tool, op, bound):
+    r = rt(wid, label, tool)
+    if r is None:
+        return
+    x = r[1]
+    ok = x <= bound if op == "<=" else (1 / x) >= bound
+    shown = f"{x:.3g}x" if op == "<=" else f"{1 / x:.3g}x faster"
+    if r[0] == "<":
+        # the other tool was stopped: the ratio is a bound (exactcheck / stop time)
+        shown = f"< {x:.3g}x (stopped)" if op == "<=" else f"> {1 / x:.3g}x faster (stopped)"
+    target(desc, ok, shown)
+
+
+if "W1" in ONLY:
+    for m, n in W1_SIZES:
+        check_ratio(f"W1 ({m}, {n}) >= 100x SymPy", "W1", f"(m, n) = ({m}, {n})", "sympy", ">=", 100)
+    for m, n in [(8, 13), (13, 21)]:
+        check_ratio(f"W1 ({m}, {n}) <= 1.0x python-flint", "W1", f"(m, n) = ({m}, {n})", "flint", "<=", 1.0)
+if "W1d" in ONLY:
+    check_ratio("dense product k = 8 <= 3x python-flint (fmpq_mpoly)", "W1d", "k = 8", "flint", "<=", 3.0)
+if "W2" in ONLY:
+    for mode in ("eval", "tree", "seq"):
+        check_ratio(f"W2 {mode} N = 2,000 <= 1.0x gmpy2", "W2", f"{mode}, N = 2,000", "gmpy2", "<=", 1.0)
+    check_ratio("W2 seq N = 10,000 <= 1.2x gmpy2", "W2", "seq, N = 10,000", "gmpy2", "<=", 1.2)
+if "W3" in ONLY:
+    w = next(w for w in WORKLOADS if w["id"] == "W3")
+    label = w["sizes"][0][0]
+    best = min((median(results[(w["id"], label, t)]["times"]), t) for t, _ in w["sizes"][0][1]
+               if t.startswith("numpy") and "times" in results.get((w["id"], label, t), {}))
+    mine = median(results[(w["id"], label, "exactcheck")]["times"])
+    target(f"W3 >= 10x numpy's best variant ({best[1]})", best[0] / mine >= 10, f"{best[0] / mine:.3g}x faster")
+if "W4" in ONLY:
+    for fam, d in W4_RUNS:
+        check_ratio(f"W4 {fam} {d} >= 100x SymPy", "W4", f"{fam} {d}", "sympy", ">=", 100)
+        check_ratio(f"W4 {fam} {d} within 3x python-flint", "W4", f"{fam} {d}", "flint", "<=", 3.0)
+if verify_walls:
+    target("verify of the whole catalogue < 1 s", median(verify_walls) < 1.0, fmt_time(median(verify_walls)))
+
+if targets:
+    lines.append("")
+    lines.append("| target (issue 14) | measured | met |")
+    lines.append("| --- | --- | --- |")
+    for desc, ok, measured in targets:
+        lines.append(f"| {desc} | {measured} | {'yes' if ok else '**no**'} |")
+
+text = "\n".join(lines)
+print(text)
+if args.markdown:
+    with open(args.markdown, "w") as f:
+        f.write(text + "\n")
+if args.json:
+    with open(args.json, "w") as f:
+        json.dump({"versions": versions, "verify_walls": verify_walls,
+                   "results": [dict(workload=k[0], size=k[1], tool=k[2], **v) for k, v in results.items()]},
+                  f, indent=1)
