@@ -9,8 +9,10 @@
 //!   count of the bytes in use. An allocation that would take the count past the `memory` limit
 //!   (1,536 MB by default) ends the process at once with one line naming the limit and exit
 //!   status 2, instead of the runtime's "memory allocation of N bytes failed" abort (or the
-//!   kernel's OOM killer). The count is one relaxed atomic add per allocation and free; the
-//!   message is written without allocating (the allocator cannot call back into itself).
+//!   kernel's OOM killer). Each thread keeps its own balance and adds it to the shared count
+//!   once it exceeds 256 kB either way (so the cores do not contend for one counter; the cap
+//!   holds to within 256 kB per thread); the message is written without allocating (the
+//!   allocator cannot call back into itself).
 //! - **Time.** `--timeout SECONDS` starts a watchdog thread ([`start_timeout`]) that ends the
 //!   process with one line and exit status 2 when the command has not finished in time.
 //! - **Progress.** A long `prove` or `solve` shows the seconds spent on standard error when that
@@ -22,16 +24,33 @@
 
 use exactcheck_core::limits;
 use std::alloc::{GlobalAlloc, Layout, System};
+use std::cell::Cell;
 use std::io::IsTerminal as _;
-use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicIsize, AtomicUsize, Ordering};
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
-/// Bytes handed out by the allocator and not yet freed.
-static IN_USE: AtomicUsize = AtomicUsize::new(0);
+/// Bytes handed out by the allocator and not yet freed, up to each thread's unflushed balance
+/// (at most [`SLACK`] bytes per thread either way).
+/// Signed: a thread may flush the free of memory whose allocation another thread has not
+/// flushed yet.
+static IN_USE: AtomicIsize = AtomicIsize::new(0);
 /// The most bytes [`Accounting`] lets be in use; `usize::MAX` (no cap) until
 /// [`enforce_memory_limit`] sets it.
 static CAP: AtomicUsize = AtomicUsize::new(usize::MAX);
+
+/// How far a thread's own balance may drift before it is added to [`IN_USE`] (and checked
+/// against the cap). Counting every allocation in the one shared atomic made all cores write the
+/// same cache line; with a per-thread balance the shared counter is touched about once per
+/// 256 kB allocated or freed, and the cap is enforced to within `SLACK` bytes per thread.
+const SLACK: isize = 256 << 10;
+
+thread_local! {
+    /// This thread's allocations minus frees not yet added to [`IN_USE`]. A `const`-initialised
+    /// `Cell` of a plain integer: no destructor is registered and nothing is allocated, so the
+    /// allocator may use it. A thread that ends leaves its balance (below `SLACK`) uncounted.
+    static BALANCE: Cell<isize> = const { Cell::new(0) };
+}
 
 /// The global allocator of the `exactcheck` binary: [`System`] plus the byte count checked
 /// against the `memory` limit.
@@ -39,15 +58,48 @@ pub struct Accounting;
 
 impl Accounting {
     /// Counts `size` more bytes in use; past the cap, ends the process (exit status 2).
+    #[inline]
     fn grow(size: usize) {
-        let before = IN_USE.fetch_add(size, Ordering::Relaxed);
-        if before.saturating_add(size) > CAP.load(Ordering::Relaxed) {
-            out_of_memory();
+        let size = isize::try_from(size).unwrap_or(isize::MAX);
+        let flush = BALANCE
+            .try_with(|b| {
+                let v = b.get().saturating_add(size);
+                if v > SLACK {
+                    b.set(0);
+                    Some(v)
+                } else {
+                    b.set(v);
+                    None
+                }
+            })
+            // During thread teardown the balance is gone: count directly.
+            .unwrap_or(Some(size));
+        if let Some(v) = flush {
+            let now = IN_USE.fetch_add(v, Ordering::Relaxed).saturating_add(v);
+            if usize::try_from(now).is_ok_and(|now| now > CAP.load(Ordering::Relaxed)) {
+                out_of_memory();
+            }
         }
     }
 
+    #[inline]
     fn shrink(size: usize) {
-        IN_USE.fetch_sub(size, Ordering::Relaxed);
+        let size = isize::try_from(size).unwrap_or(isize::MAX);
+        let flush = BALANCE
+            .try_with(|b| {
+                let v = b.get().saturating_sub(size);
+                if v < -SLACK {
+                    b.set(0);
+                    Some(v)
+                } else {
+                    b.set(v);
+                    None
+                }
+            })
+            .unwrap_or(Some(-size));
+        if let Some(v) = flush {
+            IN_USE.fetch_add(v, Ordering::Relaxed);
+        }
     }
 }
 
@@ -108,7 +160,7 @@ pub fn enforce_memory_limit() {
 
 /// Bytes in use now (counted only when [`Accounting`] is the global allocator).
 pub fn bytes_in_use() -> usize {
-    IN_USE.load(Ordering::Relaxed)
+    usize::try_from(IN_USE.load(Ordering::Relaxed)).unwrap_or(0)
 }
 
 /// A fixed buffer for formatting a message without allocating.
