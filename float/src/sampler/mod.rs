@@ -5,6 +5,13 @@
 //! then evaluated in batches over many `t`, on all cores (rayon). The grid is cut into fixed
 //! chunks whose partial results are combined in chunk order, so the result does not depend on the
 //! number of threads.
+//!
+//! Two sweeps of the grid `t_i = i 2 pi / n`:
+//! * [`DiscSampler::sweep`] (and `sweep_serial`), the reference: `f64::sin_cos` per sample, one
+//!   running sum per chunk;
+//! * [`DiscSampler::sweep_addition`] (and `sweep_addition_serial`), the fast kernel of
+//!   [`addition`]: angle addition per block (one `sin_cos` per 512 samples), discriminants and
+//!   square roots in vectorized lanes, within the error bounds derived there of the reference.
 
 use exactcheck_core::cylinder_sphere::{CylinderSphere, TrigCoefficients};
 use rayon::prelude::*;
