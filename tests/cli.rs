@@ -229,10 +229,17 @@ fn solve_rejects_bad_problems_with_status_2() {
 fn bench_w3_matches_the_numpy_anchor() {
     // w3_numpy.py (all variants) prints count_nonneg 3415478 and sum_sqrt 13229714.773764007 at
     // N = 10,000,000; the sum depends on the last bits of each sqrt, so compare to 1e-9.
-    for variant in ["coef", "coef-serial", "direct"] {
+    for variant in [
+        "addition",
+        "addition-serial",
+        "coef",
+        "coef-serial",
+        "direct",
+    ] {
         let o = exactcheck(&["bench", "w3", "--variant", variant, "--json"]);
         assert!(o.status.success());
         let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON");
+        assert_eq!(v["variant"], variant);
         assert_eq!(v["count_nonneg"], 3415478, "{variant}");
         let sum: f64 = v["sum_sqrt"].as_str().unwrap().parse().unwrap();
         assert!(
@@ -240,6 +247,10 @@ fn bench_w3_matches_the_numpy_anchor() {
             "{variant}: {sum}"
         );
     }
+    // The default variant is the angle-addition kernel.
+    let o = exactcheck(&["bench", "w3", "--n", "1000", "--json"]);
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON");
+    assert_eq!(v["variant"], "addition");
 }
 
 fn cylinder_sphere_problem(beta: &str, gamma: &str, center: &str, radius: &str) -> String {

@@ -5,9 +5,20 @@
 //! then evaluated in batches over many `t`, on all cores (rayon). The grid is cut into fixed
 //! chunks whose partial results are combined in chunk order, so the result does not depend on the
 //! number of threads.
+//!
+//! Two sweeps of the grid `t_i = i 2 pi / n`:
+//! * [`DiscSampler::sweep`] (and `sweep_serial`), the reference: `f64::sin_cos` per sample, one
+//!   running sum per chunk;
+//! * [`DiscSampler::sweep_addition`] (and `sweep_addition_serial`), the fast kernel of
+//!   [`addition`]: angle addition per block (one `sin_cos` per 512 samples), discriminants and
+//!   square roots in vectorized lanes, within the error bounds derived there of the reference.
 
 use exactcheck_core::cylinder_sphere::{CylinderSphere, TrigCoefficients};
 use rayon::prelude::*;
+
+pub mod addition;
+
+pub use addition::{sum_depth, sum_error_bound, AngleTable, KernelPath, BLOCK, LANES, TRIG_ERROR};
 
 /// Samples per chunk (cache-sized; also the unit of the deterministic reduction).
 pub const CHUNK: usize = 1 << 14;
@@ -40,7 +51,7 @@ impl DiscSampler {
     }
 
     /// `(A, B)` at `(cos t, sin t)`.
-    #[inline]
+    #[inline(always)]
     pub fn ab(&self, c: f64, s: f64) -> (f64, f64) {
         let [a0, a1, a2] = self.a;
         let [b0, b1, b2, b3, b4, b5] = self.b;
@@ -49,12 +60,18 @@ impl DiscSampler {
         (a, b)
     }
 
+    /// The discriminant `A^2 - B` at `(cos t, sin t)` (the operations every sweep uses).
+    #[inline(always)]
+    pub fn disc_cs(&self, c: f64, s: f64) -> f64 {
+        let (a, b) = self.ab(c, s);
+        a * a - b
+    }
+
     /// The discriminant `A^2 - B` at the angle `t` (radians).
     #[inline]
     pub fn discriminant(&self, t: f64) -> f64 {
         let (s, c) = t.sin_cos();
-        let (a, b) = self.ab(c, s);
-        a * a - b
+        self.disc_cs(c, s)
     }
 
     /// The roots `u = -A +- sqrt(A^2 - B)` at `t`, if real.
@@ -140,7 +157,8 @@ mod tests {
     use exactcheck_core::cylinder_sphere::Angle;
     use exactcheck_core::Vec3;
 
-    fn w3() -> CylinderSphere<f64> {
+    /// The W3 configuration (`w2::problem` of the CLI, in f64).
+    pub(super) fn w3() -> CylinderSphere<f64> {
         CylinderSphere {
             a: 1.0 / 3.0,
             b: -2.0 / 7.0,
