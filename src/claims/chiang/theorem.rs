@@ -173,12 +173,15 @@ fn parameters() -> Vec<Rational> {
     ts
 }
 
+/// One drawn instance: `(m, n)`, its index among the instances of that size, surface and plane.
+type Drawn = (usize, usize, usize, RuledSurface<Rational>, Plane<Rational>);
+
 fn random_instances() -> Result<InstanceReport, String> {
     let mut rng = Rng::new(0x00C4_1A46);
     let ts = parameters();
     // Drawn in order from the one generator, checked in parallel, read in order (the first
     // failure in drawing order is the one reported).
-    let drawn: Vec<(usize, usize, usize, RuledSurface<Rational>, Plane<Rational>)> = RANDOM_SIZES
+    let drawn: Vec<Drawn> = RANDOM_SIZES
         .iter()
         .flat_map(|&(m, n)| (0..INSTANCES_PER_SIZE).map(move |i| (m, n, i)))
         .map(|(m, n, instance)| {
