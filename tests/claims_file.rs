@@ -243,3 +243,87 @@ fn bad_files_are_one_line_with_file_line_and_key() {
         .unwrap()
         .contains("cannot read"));
 }
+
+/// Runs `f` on a rayon pool of `threads` threads (the claims and their instances are checked on
+/// the pool the caller runs in).
+fn on_threads<R: Send>(threads: usize, f: impl FnOnce() -> R + Send) -> R {
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .expect("a thread pool")
+        .install(f)
+}
+
+/// Claims are checked in parallel, but a fault of the file found while checking is reported
+/// for the first faulty claim in file order, whatever the number of threads; within a claim,
+/// the first faulty instance is the one named.
+#[test]
+fn the_first_fault_in_file_order_is_reported_on_any_number_of_threads() {
+    let text = r#"
+[[claim]]
+id = "a"
+kind = "identity"
+lhs = "(x + y)^2"
+rhs = "x^2 + 2*x*y + y^2"
+
+[[claim]]
+id = "b"
+kind = "instances"
+lhs = "x + y"
+rhs = "y + x"
+at = [{ x = 1, y = 2 }, { x = 1 }, { y = 3 }]
+
+[[claim]]
+id = "c"
+kind = "identity"
+lhs = "(x + y)^8"
+rhs = "(y + x)^8"
+
+[[claim]]
+id = "d"
+kind = "instances"
+lhs = "c"
+rhs = "c"
+where = ["c^2 + s^2 = 1"]
+at = [{ c = 1, s = 1 }]
+"#;
+    let file = claimfile::parse(text, "p.toml", "p").expect("the file loads");
+    let expected = "p.toml:13: claim \"b\": key at: instance 2 gives no value to y";
+    for threads in [1, 2, 4, 8] {
+        for _ in 0..5 {
+            let e = on_threads(threads, || claimfile::check(&file, None))
+                .err()
+                .expect("a fault of the file");
+            assert_eq!(e.to_string(), expected, "{threads} threads");
+        }
+    }
+    // Without b, d's fault is the first.
+    let e = on_threads(4, || claimfile::check(&file, Some("d")))
+        .err()
+        .expect("a fault of the file");
+    assert!(
+        e.to_string()
+            .contains("claim \"d\": key at: instance 1 does not satisfy"),
+        "{e}"
+    );
+}
+
+/// The rows of a claims file, as JSON without the times, on 1 and on several threads.
+#[test]
+fn claims_file_rows_do_not_depend_on_the_number_of_threads() {
+    let file = claimfile::load(&root().join("examples/spaeth.toml")).expect("the file loads");
+    let rows = |threads: usize| -> Vec<serde_json::Value> {
+        on_threads(threads, || claimfile::check(&file, None))
+            .expect("the file checks")
+            .iter()
+            .map(|r| {
+                let mut v = r.to_json();
+                v.as_object_mut().expect("an object").remove("seconds");
+                v
+            })
+            .collect()
+    };
+    let one = rows(1);
+    assert!(one.len() >= 9);
+    assert_eq!(one, rows(4));
+}

@@ -341,3 +341,111 @@ fn prove_random_mod_p() {
     );
     assert_eq!(exactcheck(&["prove", &lhs, &bad]).status.code(), Some(1));
 }
+
+fn exactcheck_on_threads(threads: &str, args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+        .args(args)
+        .env("RAYON_NUM_THREADS", threads)
+        .output()
+        .expect("runs")
+}
+
+/// The lines of `chiang.theorem`'s row with the digits taken out: its evidence reports measured
+/// milliseconds (the only timing in the table); every other line is compared as it is.
+fn without_times(text: &str) -> String {
+    text.lines()
+        .map(|l| {
+            if l.starts_with("chiang.theorem ") {
+                l.chars().filter(|c| !c.is_ascii_digit()).collect()
+            } else {
+                l.to_string()
+            }
+        })
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+/// The claims run in parallel, but `verify`, `verify --json` and `verify --latex` print the
+/// same bytes on one thread and on several (times aside: `seconds` and the theorem's measured
+/// milliseconds), in catalogue order.
+#[test]
+fn verify_output_does_not_depend_on_the_number_of_threads() {
+    let text = |threads| {
+        let o = exactcheck_on_threads(threads, &["verify"]);
+        assert!(o.status.success(), "{threads} threads");
+        without_times(&String::from_utf8_lossy(&o.stdout))
+    };
+    let one = text("1");
+    assert!(one.contains("46 claims, 46 as expected"), "{one}");
+    assert_eq!(one, text("3"));
+    let json = |threads| {
+        let o = exactcheck_on_threads(threads, &["verify", "--json"]);
+        let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON array");
+        v.as_array()
+            .expect("array")
+            .iter()
+            .map(|c| {
+                let mut c = c.clone();
+                c.as_object_mut().expect("object").remove("seconds");
+                if c["id"] == "chiang.theorem" {
+                    let e = c["evidence"].as_str().expect("evidence");
+                    c["evidence"] = without_times(&format!("chiang.theorem {e}")).into();
+                }
+                c
+            })
+            .collect::<Vec<_>>()
+    };
+    let one = json("1");
+    let ids: Vec<&str> = one.iter().map(|c| c["id"].as_str().unwrap()).collect();
+    let catalogue: Vec<&str> = exactcheck::claims::catalogue()
+        .iter()
+        .map(|c| c.id)
+        .collect();
+    assert_eq!(ids, catalogue);
+    assert_eq!(one, json("4"));
+    let latex = |threads| exactcheck_on_threads(threads, &["verify", "--latex"]).stdout;
+    assert_eq!(latex("1"), latex("2"));
+}
+
+/// `--limit` is read by the claims on rayon's worker threads (every claim runs on one): a
+/// limit too low for the printed formulas makes the same claims errors naming it, on one
+/// thread and on several.
+#[test]
+fn worker_threads_see_the_limits() {
+    let rows = |threads| {
+        let o = exactcheck_on_threads(
+            threads,
+            &[
+                "verify", "--only", "juttler", "--json", "--limit", "terms=3",
+            ],
+        );
+        assert_eq!(
+            o.status.code(),
+            Some(1),
+            "{threads} threads: not as expected"
+        );
+        let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON array");
+        v.as_array()
+            .expect("array")
+            .iter()
+            .map(|c| (c["id"].clone(), c["verdict"].clone(), c["evidence"].clone()))
+            .collect::<Vec<_>>()
+    };
+    let many = rows("4");
+    let limited: Vec<_> = many
+        .iter()
+        .filter(|(_, v, e)| {
+            v == "error"
+                && e.as_str()
+                    .unwrap()
+                    .contains("exceeds the limit terms = 3 (found 4")
+        })
+        .map(|(id, _, _)| id.as_str().unwrap())
+        .collect();
+    assert!(limited.contains(&"juttler.lebesgue"), "{many:?}");
+    assert!(limited.contains(&"juttler.satz2"), "{many:?}");
+    assert_eq!(many, rows("1"));
+    // The default limit: no error.
+    let o = exactcheck_on_threads("4", &["verify", "--only", "juttler.lebesgue"]);
+    assert!(o.status.success());
+}

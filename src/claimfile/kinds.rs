@@ -17,6 +17,7 @@ use exactcheck_exact::prove::{
     RandomDecision, HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
 };
 use exactcheck_exact::{Radical, Rational};
+use rayon::prelude::*;
 use serde_json::Value;
 use std::cell::RefCell;
 use std::fmt::Display;
@@ -760,8 +761,10 @@ fn instances(check: &Check) -> Result<Outcome, Fault> {
         a.collect_variables(&mut names);
         b.collect_variables(&mut names);
     }
-    // Exact instances.
-    for (k, point) in at.iter().enumerate() {
+    // Exact instances: independent, so checked in parallel, then read in order (the first
+    // instance with a fault of the file or a non-zero residual is the one reported, as when
+    // they ran one after another).
+    let instance = |k: usize, point: &Vec<(String, Expr)>| -> Result<Option<Outcome>, Fault> {
         let missing: Vec<&String> = names
             .iter()
             .filter(|n| !point.iter().any(|(v, _)| v == *n))
@@ -828,7 +831,7 @@ fn instances(check: &Check) -> Result<Outcome, Fault> {
                     }],
                     ..Erratum::default()
                 };
-                return Ok(Outcome {
+                return Ok(Some(Outcome {
                     verdict: Verdict::Fails,
                     method: "exact evaluation at the given instances".into(),
                     evidence: format!(
@@ -837,8 +840,19 @@ fn instances(check: &Check) -> Result<Outcome, Fault> {
                         shown.join(", ")
                     ),
                     erratum: Some(Box::new(erratum)),
-                });
+                }));
             }
+        }
+        Ok(None)
+    };
+    let found: Vec<Result<Option<Outcome>, Fault>> = at
+        .par_iter()
+        .enumerate()
+        .map(|(k, point)| instance(k, point))
+        .collect();
+    for f in found {
+        if let Some(outcome) = f? {
+            return Ok(outcome);
         }
     }
     let exact_note = if at.is_empty() {
@@ -887,9 +901,14 @@ fn instances(check: &Check) -> Result<Outcome, Fault> {
     let mut worst = f64::NEG_INFINITY;
     let mut prime = 0;
     let mut undecided = None;
-    for (c, (l, r)) in lhs.iter().zip(rhs).enumerate() {
-        let d = random_identity_test(l, r, &names, &circles, trials, seed)
-            .map_err(|e| Fault::Input("lhs", e))?;
+    // The coordinates are tested in parallel and read in order.
+    let decisions: Vec<Result<RandomDecision, String>> = lhs
+        .par_iter()
+        .zip(rhs.par_iter())
+        .map(|(l, r)| random_identity_test(l, r, &names, &circles, trials, seed))
+        .collect();
+    for (c, ((l, r), d)) in lhs.iter().zip(rhs).zip(decisions).enumerate() {
+        let d = d.map_err(|e| Fault::Input("lhs", e))?;
         let coords = if lhs.len() == 1 {
             String::new()
         } else {

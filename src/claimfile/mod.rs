@@ -72,16 +72,18 @@ pub mod defs;
 mod kinds;
 mod read;
 
-use crate::claims::{Checked, Verdict};
+use crate::claims::{Checked, Outcome, Verdict};
 use crate::Error;
 use defs::{DefText, Defs};
 use exactcheck_exact::expr::{parse_expr_with_calls, Expr};
 use kinds::{Check, Fault};
+use rayon::prelude::*;
 use read::Format;
 use serde_json::Value;
 use std::cell::RefCell;
 use std::collections::HashMap;
 use std::path::Path;
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
 
 /// A claims file, read and resolved: every formula is parsed and its definitions substituted.
@@ -347,13 +349,34 @@ pub fn check_with(
             ids.join(", ")
         )));
     }
-    let mut rows = Vec::new();
     let steps = crate::output::Steps::new(chosen.len() as u64, quiet);
-    for c in chosen {
-        steps.start(&c.id);
-        let start = Instant::now();
-        let run = kinds::run(&c.check, &c.notation);
-        steps.done();
+    // The claims are independent: checked in parallel on rayon's pool, then read in file order.
+    // A fault of the file found while checking is reported for the first such claim in file
+    // order (as when the claims ran one after another): once claim `i` has found one, claims
+    // after `i` that have not started are skipped (their rows are never read), claims before
+    // `i` still run.
+    let first_fault = AtomicUsize::new(usize::MAX);
+    let runs: Vec<Option<(Result<Outcome, Fault>, f64)>> = chosen
+        .par_iter()
+        .enumerate()
+        .with_max_len(1)
+        .map(|(i, c)| {
+            if i > first_fault.load(Ordering::Relaxed) {
+                return None;
+            }
+            steps.start(&c.id);
+            let start = Instant::now();
+            let run = kinds::run(&c.check, &c.notation);
+            steps.done();
+            if matches!(run, Err(Fault::Input(..))) {
+                first_fault.fetch_min(i, Ordering::Relaxed);
+            }
+            Some((run, start.elapsed().as_secs_f64()))
+        })
+        .collect();
+    let mut rows = Vec::new();
+    for (c, run) in chosen.iter().zip(runs) {
+        let (run, seconds) = run.expect("every claim before the first fault was checked");
         let outcome = match run {
             Ok(o) => Ok(o),
             Err(Fault::Internal(m)) => Err(m),
@@ -372,7 +395,7 @@ pub fn check_with(
             statement: c.statement.clone(),
             expected: c.expected(verdict),
             outcome,
-            seconds: start.elapsed().as_secs_f64(),
+            seconds,
         });
     }
     Ok(rows)

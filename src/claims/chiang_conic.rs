@@ -45,13 +45,16 @@
 //! are `exactcheck_core::conic`'s, computed over the exact field.
 
 use super::{Claim, Outcome, Verdict};
+use exactcheck_core::bezier::RationalBezierCurve;
 use exactcheck_core::conic::{
-    angle_rule, bezier_type, ConePiece, ConeSection, ConicType, DegenerateConic, SectionType,
+    angle_rule, bezier_type, ConePiece, ConeSection, ConicType, DegenerateConic, SectionPiece,
+    SectionType,
 };
 use exactcheck_core::roots::{IsolatedRoot, Refiner};
 use exactcheck_core::ruled::Plane;
-use exactcheck_core::{Field, Ring, Rng, Vec3};
+use exactcheck_core::{Field, Hom4, Ring, Rng, Vec3};
 use exactcheck_exact::{Radical, Rational};
+use rayon::prelude::*;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 
@@ -1009,7 +1012,7 @@ pub fn random_plane(rng: &mut Rng, kind: PlaneKind, through_apex: bool) -> Plane
 }
 
 /// What [`check_section`] found for one plane.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct SectionReport {
     /// The type by the angle rule.
     pub angle_rule: SectionType,
@@ -1049,9 +1052,75 @@ pub fn expected_rulings(t: SectionType) -> usize {
 /// The section of `plane` decided three ways, and its points checked at [`SAMPLE_T`] (module
 /// doc).
 ///
+/// The points are checked in homogeneous coordinates: at `t = n/d` the curve's homogeneous point
+/// times `d^deg` is `H = sum_k C(deg, k) n^k (d - n)^(deg - k) c_k` (integer multiples of the
+/// control vectors `c_k = (w_k, w_k r_k)`, no product of two radicals), a pole where its weight
+/// `W` is zero, and the point `(X, Y, Z) / W` is on the plane and on the cone exactly when
+/// `N . (X, Y, Z) + d W = 0` and `X^2 + Y^2 - Z^2 = 0` (`W != 0`). This avoids the inverse of a
+/// radical weight per point, the slow part of [`check_section_reference`] (the affine
+/// substitution, kept as the reference the tests compare with); the point is made affine only
+/// to be printed when it is off.
+///
 /// # Errors
 /// The zero normal.
 pub fn check_section(plane: &Plane<Radical>) -> Result<SectionReport, String> {
+    check_section_with(plane, |piece, plane, n, d| {
+        let h = scaled_hom(&piece.curve, n, d);
+        let [w, x, y, z] = &h.0;
+        if w.is_zero() {
+            return None; // a pole
+        }
+        let on_plane = plane
+            .normal
+            .dot(&Vec3::new(x.clone(), y.clone(), z.clone()))
+            .add_ref(&plane.d.mul_ref(w))
+            .is_zero();
+        let on_cone = x.square().add_ref(&y.square()) == z.square();
+        Some((on_plane, on_cone))
+    })
+}
+
+/// The reference for [`check_section`]: each curve point made affine (`C(t) = (X, Y, Z) / W`)
+/// and substituted into the plane and into `x^2 + y^2 - z^2`, as the claim's evidence words it.
+///
+/// # Errors
+/// The zero normal.
+pub fn check_section_reference(plane: &Plane<Radical>) -> Result<SectionReport, String> {
+    check_section_with(plane, |piece, plane, n, d| {
+        let t = Radical::from_ratio(n, d).expect("d != 0");
+        let p = piece.curve.eval(&t).ok()?; // None at a pole
+        let on_plane = plane.value(&p).is_zero();
+        let on_cone = p.x.square().add_ref(&p.y.square()) == p.z.square();
+        Some((on_plane, on_cone))
+    })
+}
+
+/// `d^deg` times the homogeneous point of `curve` at `t = n / d` (`d > 0`): the Bernstein sum
+/// with the integer factors `C(deg, k) n^k (d - n)^(deg - k)`.
+fn scaled_hom(curve: &RationalBezierCurve<Radical>, n: i64, d: i64) -> Hom4<Radical> {
+    let control = curve.control();
+    let deg = control.len() - 1;
+    let (n, m) = (Rational::from_integer(n), Rational::from_integer(d - n));
+    let mut h: Hom4<Radical> = Hom4(core::array::from_fn(|_| Radical::zero()));
+    let mut binom: i64 = 1;
+    for (k, c) in control.iter().enumerate() {
+        let factor = Rational::from_integer(binom)
+            .mul_ref(&n.pow(k as u32))
+            .mul_ref(&m.pow((deg - k) as u32));
+        for (slot, x) in h.0.iter_mut().zip(&c.0) {
+            *slot = slot.add_ref(&x.scale(&factor));
+        }
+        // C(deg, k + 1) = C(deg, k) (deg - k) / (k + 1), exact in integers.
+        binom = binom * (deg - k) as i64 / (k as i64 + 1);
+    }
+    h
+}
+
+/// A point test: `(on plane, on cone)` of a piece's point at `t = n / d`, `None` at a pole.
+type PointTest = fn(&SectionPiece<Radical>, &Plane<Radical>, i64, i64) -> Option<(bool, bool)>;
+
+/// [`check_section`] with the point test given.
+fn check_section_with(plane: &Plane<Radical>, test: PointTest) -> Result<SectionReport, String> {
     let section = ConeSection::new(plane.clone(), &inv_sqrt2()).map_err(|e| e.to_string())?;
     let rule = angle_rule(plane).map_err(|e| e.to_string())?;
     let bezier = [
@@ -1071,14 +1140,16 @@ pub fn check_section(plane: &Plane<Radical>) -> Result<SectionReport, String> {
     let mut off = Vec::new();
     for piece in &section.pieces {
         for (n, d) in SAMPLE_T {
-            let t = Radical::from_ratio(n, d).expect("d != 0");
-            let Ok(p) = piece.curve.eval(&t) else {
+            let Some((on_plane, on_cone)) = test(piece, plane, n, d) else {
                 continue; // a pole
             };
             points_checked += 1;
-            let on_plane = plane.value(&p).is_zero();
-            let on_cone = p.x.square().add_ref(&p.y.square()) == p.z.square();
             if !(on_plane && on_cone) {
+                let t = Radical::from_ratio(n, d).expect("d != 0");
+                let p = piece
+                    .curve
+                    .eval(&t)
+                    .expect("the point test found a non-zero weight");
                 off.push(format!(
                     "C{}({n}/{d}) = {} is {}",
                     piece.piece.sign(),
@@ -1134,11 +1205,31 @@ pub fn check_types(seed: u64, count: usize) -> Result<Outcome, String> {
     let mut disagreements = Vec::new();
     let mut table_text = Vec::new();
     let through = Vec3::new(Radical::one(), Radical::one(), Radical::one());
+    let mut table_planes = Vec::new();
     for col in &TABLE1 {
         let n = vec3(&col.normal)?;
         let d = n.dot(&through).neg_ref();
-        let plane = Plane::new(n.x, n.y, n.z, d);
-        let r = check_section(&plane)?;
+        table_planes.push(Plane::new(n.x, n.y, n.z, d));
+    }
+    // The planes are drawn in order from the one generator, then checked in parallel (each
+    // section is independent); the reports are read in order, so the evidence and the first
+    // error do not depend on the number of threads.
+    let mut rng = Rng::new(seed);
+    let random: Vec<(PlaneKind, Plane<Radical>)> = (0..count)
+        .map(|i| {
+            let kind = PlaneKind::ALL[i % PlaneKind::ALL.len()];
+            let apex = (i / PlaneKind::ALL.len()) % 4 == 3;
+            (kind, random_plane(&mut rng, kind, apex))
+        })
+        .collect();
+    let reports: Vec<Result<SectionReport, String>> = table_planes
+        .par_iter()
+        .chain(random.par_iter().map(|(_, p)| p))
+        .map(check_section)
+        .collect();
+    let mut reports = reports.into_iter();
+    for (col, plane) in TABLE1.iter().zip(&table_planes) {
+        let r = reports.next().expect("one report per plane")?;
         let named = r.angle_rule.to_string() == col.name;
         table_text.push(format!(
             "{} {}: {}",
@@ -1150,20 +1241,17 @@ pub fn check_types(seed: u64, count: usize) -> Result<Outcome, String> {
             disagreements.push(format!(
                 "Table 1 column {} (plane {}): {}",
                 col.name,
-                plane_text(&plane),
+                plane_text(plane),
                 report_text(&r)
             ));
         }
     }
-    let mut rng = Rng::new(seed);
     let mut per_type: BTreeMap<&'static str, usize> = BTreeMap::new();
     let mut per_kind: BTreeMap<PlaneKind, usize> = BTreeMap::new();
     let (mut agreeing, mut points) = (0usize, 0usize);
-    for i in 0..count {
-        let kind = PlaneKind::ALL[i % PlaneKind::ALL.len()];
-        let apex = (i / PlaneKind::ALL.len()) % 4 == 3;
-        let plane = random_plane(&mut rng, kind, apex);
-        let r = check_section(&plane)?;
+    for ((kind, plane), r) in random.iter().zip(reports) {
+        let kind = *kind;
+        let r = r?;
         *per_type.entry(r.angle_rule.name()).or_default() += 1;
         *per_kind.entry(kind).or_default() += 1;
         points += r.points_checked;
@@ -1172,7 +1260,7 @@ pub fn check_types(seed: u64, count: usize) -> Result<Outcome, String> {
         } else {
             disagreements.push(format!(
                 "random plane {} ({}): {}",
-                plane_text(&plane),
+                plane_text(plane),
                 kind.name(),
                 report_text(&r)
             ));
@@ -1220,4 +1308,72 @@ pub fn check_types(seed: u64, count: usize) -> Result<Outcome, String> {
                 disagreements.join("; ")
             ), erratum: None, }
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The homogeneous point test against the affine reference, on Table 1 and on planes of
+    /// every generator (through the apex and not), and on planes the curves do not lie in.
+    #[test]
+    fn homogeneous_points_agree_with_the_affine_reference() {
+        let mut rng = Rng::new(7);
+        let through = Vec3::new(Radical::one(), Radical::one(), Radical::one());
+        let mut planes: Vec<Plane<Radical>> = TABLE1
+            .iter()
+            .map(|col| {
+                let n = vec3(&col.normal).expect("Table 1 parses");
+                let d = n.dot(&through).neg_ref();
+                Plane::new(n.x, n.y, n.z, d)
+            })
+            .collect();
+        for i in 0..140 {
+            let kind = PlaneKind::ALL[i % PlaneKind::ALL.len()];
+            planes.push(random_plane(&mut rng, kind, i % 4 == 3));
+        }
+        for plane in &planes {
+            let fast = check_section(plane).expect("non-zero normal");
+            let reference = check_section_reference(plane).expect("non-zero normal");
+            assert_eq!(fast, reference, "{}", plane_text(plane));
+        }
+    }
+
+    #[test]
+    fn scaled_hom_is_d_to_the_degree_times_the_point() {
+        let mut rng = Rng::new(11);
+        for i in 0..30 {
+            let plane = random_plane(&mut rng, PlaneKind::ALL[i % 7], false);
+            let section = ConeSection::new(plane, &inv_sqrt2()).expect("non-zero normal");
+            for piece in &section.pieces {
+                let deg = piece.curve.control().len() as u32 - 1;
+                for (n, d) in SAMPLE_T {
+                    let t = Radical::from_ratio(n, d).expect("d != 0");
+                    let scale = Radical::from(Rational::from_integer(d).pow(deg));
+                    let expected = Hom4(piece.curve.eval_hom(&t).0.map(|x| x.mul_ref(&scale)));
+                    assert_eq!(scaled_hom(&piece.curve, n, d), expected, "t = {n}/{d}");
+                }
+            }
+        }
+    }
+
+    /// A point test that finds every point off reports the affine point, as the reference
+    /// would print it (the failure text is made from `eval`, not from the scaled point).
+    #[test]
+    fn off_points_are_printed_affine() {
+        let plane = Plane::new(
+            Radical::zero(),
+            Radical::zero(),
+            Radical::one(),
+            Radical::from(-1i64),
+        );
+        let r = check_section_with(&plane, |_, _, _, _| Some((true, false))).unwrap();
+        assert_eq!(r.off.len(), r.points_checked);
+        assert!(
+            r.off[0].starts_with("C+(0/1) = (1, 0, 1) is off the cone"),
+            "{}",
+            r.off[0]
+        );
+        assert!(!r.agrees());
+    }
 }

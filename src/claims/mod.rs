@@ -44,6 +44,7 @@ pub mod printed;
 pub mod spaeth;
 
 use exactcheck_exact::expr::{equation_to_latex, parse_expr, Expr, Notation};
+use rayon::prelude::*;
 use serde_json::{json, Value};
 use std::fmt;
 use std::time::Instant;
@@ -288,6 +289,11 @@ pub fn verify(prefix: Option<&str>) -> Result<Vec<Checked>, crate::Error> {
 /// [`verify`], showing a progress bar on standard error unless `quiet` (or it is not a
 /// terminal).
 ///
+/// The claims run in parallel on rayon's global pool (`RAYON_NUM_THREADS` sets its size); the
+/// rows come back in catalogue order whatever the number of threads. The workers read the same
+/// process-wide `--limit` values (atomics of `exactcheck_core::limits`) and allocate through the
+/// same counting allocator as the main thread.
+///
 /// # Errors
 /// As [`verify`].
 pub fn verify_with(prefix: Option<&str>, quiet: bool) -> Result<Vec<Checked>, crate::Error> {
@@ -304,8 +310,12 @@ pub fn verify_with(prefix: Option<&str>, quiet: bool) -> Result<Vec<Checked>, cr
         )));
     }
     let steps = crate::output::Steps::new(claims.len() as u64, quiet);
+    // The claims are independent: each is a task of rayon's pool (`with_max_len(1)`: one claim
+    // per task, so a long claim never holds a queue of short ones). `collect` keeps catalogue
+    // order, so the rows, and every output made from them, do not depend on the thread count.
     Ok(claims
-        .into_iter()
+        .par_iter()
+        .with_max_len(1)
         .map(|c| {
             steps.start(c.id);
             let start = Instant::now();

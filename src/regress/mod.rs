@@ -457,42 +457,22 @@ fn sqrt_256(q: &num_rational::BigRational) -> num_rational::BigRational {
 
 /// The f64 roots of the cylinder/sphere quadratic against the exact roots, on the samples of
 /// the regression's generator (same seed, same inputs).
-pub fn root_errors(gen: &impl InputGen, samples: usize, seed: u64) -> RootErrors {
-    use num_traits::Signed;
+///
+/// The samples are independent (each is drawn from the seed and its index): measured in
+/// parallel, then folded in index order, so the worst sample (the first of the largest error)
+/// and the median do not depend on the number of threads.
+pub fn root_errors(gen: &(impl InputGen + Sync), samples: usize, seed: u64) -> RootErrors {
+    use rayon::prelude::*;
+    let measured: Vec<Option<(f64, Vec<f64>)>> = (0..samples)
+        .into_par_iter()
+        .map(|i| root_error(gen, seed, i))
+        .collect();
     let mut per_sample = Vec::new();
     let mut out = RootErrors::default();
-    for i in 0..samples {
-        let inputs = exactcheck_float::sample_inputs(gen, seed, i);
-        let Ok(f) = CylinderSphereKernel.eval::<f64>(&inputs) else {
-            continue;
-        };
-        let exact_in: Option<Vec<Rational>> = inputs
-            .iter()
-            .map(|x| Rational::from_f64_exact(*x))
-            .collect();
-        let Some(exact_in) = exact_in else { continue };
-        let Ok(e) = CylinderSphereKernel.eval::<Rational>(&exact_in) else {
-            continue;
-        };
-        let (a_e, d_e) = (e[0].to_big_rational(), e[2].to_big_rational());
-        if f[2] < 0.0 || d_e.is_negative() {
-            continue;
-        }
-        let root = sqrt_256(&d_e);
-        let sf = f[2].sqrt();
-        let mut worst_here: f64 = 0.0;
-        for sign in [-1.0, 1.0] {
-            let u_f = -f[0] + sign * sf;
-            let u_e = if sign < 0.0 {
-                -&a_e - &root
-            } else {
-                -&a_e + &root
-            };
-            worst_here = worst_here.max(exactcheck_float::ulps_error(u_f, &u_e));
-        }
+    for (worst_here, inputs) in measured.into_iter().flatten() {
         if worst_here > out.max_ulps {
             out.max_ulps = worst_here;
-            out.worst = inputs.clone();
+            out.worst = inputs;
         }
         per_sample.push(worst_here);
         out.compared += 1;
@@ -500,6 +480,36 @@ pub fn root_errors(gen: &impl InputGen, samples: usize, seed: u64) -> RootErrors
     per_sample.sort_by(f64::total_cmp);
     out.median_ulps = per_sample.get(per_sample.len() / 2).copied().unwrap_or(0.0);
     out
+}
+
+/// The larger error of the two f64 roots of sample `i` in ulps, with its inputs; `None` for a
+/// sample that is skipped (outside the domain, or no real roots in f64 or exactly).
+fn root_error(gen: &impl InputGen, seed: u64, i: usize) -> Option<(f64, Vec<f64>)> {
+    use num_traits::Signed;
+    let inputs = exactcheck_float::sample_inputs(gen, seed, i);
+    let f = CylinderSphereKernel.eval::<f64>(&inputs).ok()?;
+    let exact_in: Vec<Rational> = inputs
+        .iter()
+        .map(|x| Rational::from_f64_exact(*x))
+        .collect::<Option<_>>()?;
+    let e = CylinderSphereKernel.eval::<Rational>(&exact_in).ok()?;
+    let (a_e, d_e) = (e[0].to_big_rational(), e[2].to_big_rational());
+    if f[2] < 0.0 || d_e.is_negative() {
+        return None;
+    }
+    let root = sqrt_256(&d_e);
+    let sf = f[2].sqrt();
+    let mut worst_here: f64 = 0.0;
+    for sign in [-1.0, 1.0] {
+        let u_f = -f[0] + sign * sf;
+        let u_e = if sign < 0.0 {
+            -&a_e - &root
+        } else {
+            -&a_e + &root
+        };
+        worst_here = worst_here.max(exactcheck_float::ulps_error(u_f, &u_e));
+    }
+    Some((worst_here, inputs))
 }
 
 /// Counts of the sign experiment near tangency.
@@ -520,81 +530,96 @@ pub struct SignErrors {
 /// with `|eps|` log-uniform in `[1e-15, 1e-6]`, and tau log-uniform near 0. The f64 discriminant's sign is compared with the exact
 /// one on the same f64 inputs.
 pub fn sign_errors(samples: usize, seed: u64) -> SignErrors {
+    use rayon::prelude::*;
     let mut rng = exactcheck_float::Rng::new(seed ^ 0x7A46);
+    // The configurations are drawn in order from the one generator (every draw of a sample is
+    // made before anything can skip it), then compared in parallel and counted.
+    let drawn: Vec<[f64; 9]> = (0..samples)
+        .map(|_| {
+            let a = rng.uniform(-5.0, 5.0);
+            let b = rng.uniform(-5.0, 5.0);
+            let r = rng.uniform(1.0, 6.0);
+            let (tb, tg) = (rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0));
+            let delta = r + rng.uniform(0.5, 5.0);
+            let h = rng.uniform(-3.0, 3.0);
+            // Log-uniform scales, so the exact discriminant ranges down to where f64 error
+            // competes.
+            let eps = 10f64.powf(-rng.uniform(6.0, 15.0)) * rng.uniform(-1.0, 1.0);
+            let tau = 10f64.powf(-rng.uniform(2.0, 8.0)) * rng.uniform(-1.0, 1.0);
+            [a, b, r, tb, tg, delta, h, eps, tau]
+        })
+        .collect();
+    let counts: Vec<[usize; 3]> = drawn.par_iter().map(sign_error).collect();
     let mut out = SignErrors {
         samples,
         ..SignErrors::default()
     };
-    for _ in 0..samples {
-        let a = rng.uniform(-5.0, 5.0);
-        let b = rng.uniform(-5.0, 5.0);
-        let r = rng.uniform(1.0, 6.0);
-        let (tb, tg) = (rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0));
-        let delta = r + rng.uniform(0.5, 5.0);
-        let h = rng.uniform(-3.0, 3.0);
-        // Log-uniform scales, so the exact discriminant ranges down to where f64 error competes.
-        let eps = 10f64.powf(-rng.uniform(6.0, 15.0)) * rng.uniform(-1.0, 1.0);
-        let radius = delta - r + eps;
-        let tau = 10f64.powf(-rng.uniform(2.0, 8.0)) * rng.uniform(-1.0, 1.0);
-        let Ok(beta) = unit_circle_point(&tb) else {
-            continue;
-        };
-        let Ok(gamma) = unit_circle_point(&tg) else {
-            continue;
-        };
-        let base = CylinderSphere {
-            a,
-            b,
-            r,
-            beta,
-            gamma,
-            center: Vec3::new(0.0, 0.0, 0.0),
-            radius,
-        };
-        let (q, dir) = base.axis();
-        let e1 = CylinderSphere {
-            a: 1.0,
-            b: 0.0,
-            ..base.clone()
-        }
-        .axis()
-        .0 - CylinderSphere {
-            a: 0.0,
-            b: 0.0,
-            ..base.clone()
-        }
-        .axis()
-        .0;
-        let c = Vec3::new(
-            q.x + delta * e1.x + h * dir.x,
-            q.y + delta * e1.y + h * dir.y,
-            q.z + delta * e1.z + h * dir.z,
-        );
-        let inputs = [a, b, r, tb, tg, c.x, c.y, c.z, radius, tau];
-        let Ok(float) = CylinderSphereKernel.eval::<f64>(&inputs) else {
-            continue;
-        };
-        let exact_in: Option<Vec<Rational>> = inputs
-            .iter()
-            .map(|x| Rational::from_f64_exact(*x))
-            .collect();
-        let Some(exact_in) = exact_in else { continue };
-        let Ok(exact) = CylinderSphereKernel.eval::<Rational>(&exact_in) else {
-            continue;
-        };
-        let (fd, ed) = (float[2], exact[2].to_big_rational());
-        use num_traits::Signed;
-        if ed.is_zero_value() {
-            out.exact_zero += 1;
-        }
-        if fd >= 0.0 && ed.is_negative() {
-            out.false_real += 1;
-        }
-        if fd < 0.0 && !ed.is_negative() {
-            out.false_empty += 1;
-        }
+    for [zero, real, empty] in counts {
+        out.exact_zero += zero;
+        out.false_real += real;
+        out.false_empty += empty;
     }
     out
+}
+
+/// One configuration of [`sign_errors`]: `[exact zero, false real, false empty]` as 0 or 1.
+fn sign_error(&[a, b, r, tb, tg, delta, h, eps, tau]: &[f64; 9]) -> [usize; 3] {
+    use num_traits::Signed;
+    let radius = delta - r + eps;
+    let Ok(beta) = unit_circle_point(&tb) else {
+        return [0; 3];
+    };
+    let Ok(gamma) = unit_circle_point(&tg) else {
+        return [0; 3];
+    };
+    let base = CylinderSphere {
+        a,
+        b,
+        r,
+        beta,
+        gamma,
+        center: Vec3::new(0.0, 0.0, 0.0),
+        radius,
+    };
+    let (q, dir) = base.axis();
+    let e1 = CylinderSphere {
+        a: 1.0,
+        b: 0.0,
+        ..base.clone()
+    }
+    .axis()
+    .0 - CylinderSphere {
+        a: 0.0,
+        b: 0.0,
+        ..base.clone()
+    }
+    .axis()
+    .0;
+    let c = Vec3::new(
+        q.x + delta * e1.x + h * dir.x,
+        q.y + delta * e1.y + h * dir.y,
+        q.z + delta * e1.z + h * dir.z,
+    );
+    let inputs = [a, b, r, tb, tg, c.x, c.y, c.z, radius, tau];
+    let Ok(float) = CylinderSphereKernel.eval::<f64>(&inputs) else {
+        return [0; 3];
+    };
+    let exact_in: Option<Vec<Rational>> = inputs
+        .iter()
+        .map(|x| Rational::from_f64_exact(*x))
+        .collect();
+    let Some(exact_in) = exact_in else {
+        return [0; 3];
+    };
+    let Ok(exact) = CylinderSphereKernel.eval::<Rational>(&exact_in) else {
+        return [0; 3];
+    };
+    let (fd, ed) = (float[2], exact[2].to_big_rational());
+    [
+        usize::from(ed.is_zero_value()),
+        usize::from(fd >= 0.0 && ed.is_negative()),
+        usize::from(fd < 0.0 && !ed.is_negative()),
+    ]
 }
 
 trait ZeroValue {
@@ -628,6 +653,23 @@ mod tests {
         // Roots of well-separated quadratics are accurate to a few ulps in most samples.
         assert!(r.median_ulps < 16.0, "{r:?}");
         assert_eq!(r, root_errors(&gen, 500, 3));
+    }
+
+    /// The samples are measured in parallel: one thread and several give the same counts,
+    /// worst sample and median.
+    #[test]
+    fn root_and_sign_errors_do_not_depend_on_the_number_of_threads() {
+        let gen = generator(Kernel::CylinderSphere).unwrap();
+        let on = |threads: usize| {
+            rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .unwrap()
+                .install(|| (root_errors(&gen, 700, 9), sign_errors(3000, 9)))
+        };
+        let one = on(1);
+        assert!(one.0.compared > 20 && one.1.samples == 3000, "{one:?}");
+        assert_eq!(one, on(4));
     }
 
     #[test]

@@ -26,6 +26,7 @@ use crate::claims::engine::{Rng, Symbols};
 use exactcheck_core::ruled::{Plane, RuledSurface};
 use exactcheck_core::{Ring, Vec3};
 use exactcheck_exact::Rational;
+use rayon::prelude::*;
 use std::time::Instant;
 
 /// The symbolic range: every `m <= SYMBOLIC_MAX.0`, `n <= SYMBOLIC_MAX.1` (SPEC §4).
@@ -172,50 +173,84 @@ fn parameters() -> Vec<Rational> {
     ts
 }
 
+/// One drawn instance: `(m, n)`, its index among the instances of that size, surface and plane.
+type Drawn = (usize, usize, usize, RuledSurface<Rational>, Plane<Rational>);
+
 fn random_instances() -> Result<InstanceReport, String> {
     let mut rng = Rng::new(0x00C4_1A46);
     let ts = parameters();
+    // Drawn in order from the one generator, checked in parallel, read in order (the first
+    // failure in drawing order is the one reported).
+    let drawn: Vec<Drawn> = RANDOM_SIZES
+        .iter()
+        .flat_map(|&(m, n)| (0..INSTANCES_PER_SIZE).map(move |i| (m, n, i)))
+        .map(|(m, n, instance)| {
+            let (surface, plane) = random_surface(&mut rng, m, n);
+            (m, n, instance, surface, plane)
+        })
+        .collect();
+    let counts: Vec<Result<(usize, usize), String>> = drawn
+        .par_iter()
+        .with_max_len(1)
+        .map(|(m, n, instance, surface, plane)| {
+            instance_points(*m, *n, *instance, surface, plane, &ts)
+        })
+        .collect();
     let mut report = InstanceReport {
         instances: 0,
         points: 0,
         poles: 0,
     };
-    for &(m, n) in &RANDOM_SIZES {
-        for instance in 0..INSTANCES_PER_SIZE {
-            let (surface, plane) = random_surface(&mut rng, m, n);
-            let curve = surface.plane_section(&plane);
-            if curve.degree() != m + n {
-                return Err(format!(
-                    "(m, n) = ({m}, {n}): the section has degree {}",
-                    curve.degree()
-                ));
-            }
-            for t in &ts {
-                match (curve.eval(t), surface.section_parameter(&plane, t)) {
-                    (Ok(x), Ok(s)) => {
-                        let on_plane = plane.value(&x);
-                        let on_surface = surface.eval(&s, t);
-                        if !on_plane.is_zero() || on_surface != x {
-                            return Err(format!(
-                                "(m, n) = ({m}, {n}), instance {instance}, t = {t}: the curve point {x:?} has plane value {on_plane} and the surface point there is {on_surface:?}"
-                            ));
-                        }
-                        report.points += 1;
-                    }
-                    (Err(_), Err(_)) => report.poles += 1,
-                    (c, s) => {
-                        return Err(format!(
-                            "(m, n) = ({m}, {n}), instance {instance}, t = {t}: the curve is {} there but the surface parameter is {}",
-                            if c.is_ok() { "finite" } else { "at infinity" },
-                            if s.is_ok() { "finite" } else { "undefined" }
-                        ))
-                    }
-                }
-            }
-            report.instances += 1;
-        }
+    for c in counts {
+        let (points, poles) = c?;
+        report.points += points;
+        report.poles += poles;
+        report.instances += 1;
     }
     Ok(report)
+}
+
+/// One instance of [`random_instances`]: `(points, poles)` at the parameters `ts`, or the
+/// failure.
+fn instance_points(
+    m: usize,
+    n: usize,
+    instance: usize,
+    surface: &RuledSurface<Rational>,
+    plane: &Plane<Rational>,
+    ts: &[Rational],
+) -> Result<(usize, usize), String> {
+    let (mut points, mut poles) = (0, 0);
+    let curve = surface.plane_section(plane);
+    if curve.degree() != m + n {
+        return Err(format!(
+            "(m, n) = ({m}, {n}): the section has degree {}",
+            curve.degree()
+        ));
+    }
+    for t in ts {
+        match (curve.eval(t), surface.section_parameter(plane, t)) {
+            (Ok(x), Ok(s)) => {
+                let on_plane = plane.value(&x);
+                let on_surface = surface.eval(&s, t);
+                if !on_plane.is_zero() || on_surface != x {
+                    return Err(format!(
+                        "(m, n) = ({m}, {n}), instance {instance}, t = {t}: the curve point {x:?} has plane value {on_plane} and the surface point there is {on_surface:?}"
+                    ));
+                }
+                points += 1;
+            }
+            (Err(_), Err(_)) => poles += 1,
+            (c, s) => {
+                return Err(format!(
+                    "(m, n) = ({m}, {n}), instance {instance}, t = {t}: the curve is {} there but the surface parameter is {}",
+                    if c.is_ok() { "finite" } else { "at infinity" },
+                    if s.is_ok() { "finite" } else { "undefined" }
+                ))
+            }
+        }
+    }
+    Ok((points, poles))
 }
 
 fn size_text(r: &SizeReport) -> String {
@@ -228,27 +263,44 @@ fn size_text(r: &SizeReport) -> String {
 /// The claim `chiang.theorem`.
 pub fn check() -> Result<Outcome, String> {
     const METHOD: &str = "symbolic expansion over Q[p_j, q_i, a, b, c, d, t] for m <= 4, n <= 6 (sums vs Bernstein-product substitution, and the identity in t against de Casteljau at symbolic t); exact rational instances up to (12, 20)";
-    let start = Instant::now();
+    // The sizes are independent: checked in parallel (the next size and the exact instances
+    // alongside), then read in order, so the first failure reported is the first in (m, n)
+    // order whatever the number of threads.
+    let sizes: Vec<(usize, usize)> = (0..=SYMBOLIC_MAX.0)
+        .flat_map(|m| (0..=SYMBOLIC_MAX.1).map(move |n| (m, n)))
+        .collect();
+    let ((reports, symbolic_ms), (next, instances)) = rayon::join(
+        || {
+            let start = Instant::now();
+            let reports: Vec<SizeReport> = sizes
+                .par_iter()
+                .with_max_len(1)
+                .map(|&(m, n)| check_size(m, n))
+                .collect();
+            (reports, start.elapsed().as_secs_f64() * 1000.0)
+        },
+        || {
+            rayon::join(
+                || check_size(SYMBOLIC_MAX.0 + 1, SYMBOLIC_MAX.1 + 1),
+                random_instances,
+            )
+        },
+    );
     let mut last = None;
     let mut sizes = 0;
-    for m in 0..=SYMBOLIC_MAX.0 {
-        for n in 0..=SYMBOLIC_MAX.1 {
-            let r = check_size(m, n);
-            if let Some(f) = r.failure {
-                return Ok(Outcome {
-                    verdict: Verdict::Fails,
-                    method: METHOD.into(),
-                    evidence: f,
-                    erratum: None,
-                });
-            }
-            sizes += 1;
-            last = Some(r);
+    for r in reports {
+        if let Some(f) = r.failure {
+            return Ok(Outcome {
+                verdict: Verdict::Fails,
+                method: METHOD.into(),
+                evidence: f,
+                erratum: None,
+            });
         }
+        sizes += 1;
+        last = Some(r);
     }
-    let symbolic_ms = start.elapsed().as_secs_f64() * 1000.0;
     let last = last.expect("at least one size");
-    let next = check_size(SYMBOLIC_MAX.0 + 1, SYMBOLIC_MAX.1 + 1);
     if let Some(f) = next.failure {
         return Ok(Outcome {
             verdict: Verdict::Fails,
@@ -257,7 +309,7 @@ pub fn check() -> Result<Outcome, String> {
             erratum: None,
         });
     }
-    let instances = match random_instances() {
+    let instances = match instances {
         Ok(r) => r,
         Err(e) => {
             return Ok(Outcome {

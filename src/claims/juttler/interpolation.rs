@@ -8,6 +8,7 @@ use super::converse::stereographic_point;
 use super::*;
 use crate::claims::{Equation, Erratum};
 use exactcheck_exact::expr::{AddOp, Expr, ExprKind};
+use rayon::prelude::*;
 
 /// The numbers of points `N` and the point sets per `N` of the interpolation claims.
 const INTERPOLATION_N: core::ops::RangeInclusive<usize> = 2..=8;
@@ -87,13 +88,35 @@ fn plain_sigma_degree(points: &[Hom4<Rational>], params: &[Rational]) -> Result<
     Err("no polynomial interpolant below degree N (parameters not distinct?)".into())
 }
 
+/// What one interpolation instance gave: its row, a curve that misses a point or leaves K
+/// (the evidence of `fails`), or an error.
+type InstanceResult<T = DegreeRow> = Result<Result<T, String>, String>;
+
+/// The interpolation instances, shared by `juttler.interpolation` and
+/// `juttler.interpolation_degree` (the same instances decide both: computing them twice only
+/// doubled the time): the first claim to finish computing them stores the result for the
+/// process, later calls read it. Never waits: a call while another one is computing (on another
+/// thread, or on this one, as rayon runs a stolen task inside a parallel loop) computes them
+/// itself, so there is no lock to deadlock on; the computation is deterministic, so either
+/// result is the same.
+fn interpolation_rows() -> InstanceResult<Vec<DegreeRow>> {
+    static ROWS: std::sync::OnceLock<InstanceResult<Vec<DegreeRow>>> = std::sync::OnceLock::new();
+    if let Some(rows) = ROWS.get() {
+        return rows.clone();
+    }
+    let rows = compute_interpolation_rows();
+    let _ = ROWS.set(rows.clone());
+    rows
+}
+
 /// Runs the interpolation instances: for each `N` several point sets of K (inverse
 /// stereographic images of random rationals, so `k0 != k3`) at random distinct parameters.
-/// `Ok(Err(evidence))` when a curve misses a point or leaves K.
-fn interpolation_rows() -> Result<Result<Vec<DegreeRow>, String>, String> {
-    use exactcheck_core::sphere_interpolation::interpolate;
+/// `Ok(Err(evidence))` when a curve misses a point or leaves K. The instances are drawn in
+/// order from the one generator, computed in parallel and read in order: the first failure in
+/// drawing order is the one reported, whatever the number of threads.
+fn compute_interpolation_rows() -> InstanceResult<Vec<DegreeRow>> {
     let mut rng = Rng::new(0x1A7E);
-    let mut rows = Vec::new();
+    let mut drawn = Vec::new();
     for n in INTERPOLATION_N {
         for _ in 0..INTERPOLATION_SETS {
             let points: Vec<Hom4<Rational>> = (0..n)
@@ -106,33 +129,55 @@ fn interpolation_rows() -> Result<Result<Vec<DegreeRow>, String>, String> {
                     params.push(t);
                 }
             }
-            let r = interpolate(&points, &params).map_err(|e| format!("{n} points: {e}"))?;
-            for (k, t) in points.iter().zip(&params) {
-                if !r.curve.eval_hom(t).proj_eq(k) {
-                    return Ok(Err(format!(
-                        "the curve for {n} points misses {k:?} at t = {t}"
-                    )));
-                }
-            }
-            let c = r.curve.hom_coordinates();
-            let form = c[0]
-                .mul(&c[0])
-                .checked_sub(&c[1].mul(&c[1]))
-                .and_then(|f| f.checked_sub(&c[2].mul(&c[2])))
-                .and_then(|f| f.checked_sub(&c[3].mul(&c[3])))
-                .map_err(|e| e.to_string())?;
-            if form.coeffs().iter().any(|x| !x.is_zero()) {
-                return Ok(Err(format!("the curve for {n} points leaves K")));
-            }
-            rows.push(DegreeRow {
-                n,
-                delta: r.degree,
-                sigma_rational: r.sigma_degree,
-                sigma_polynomial: plain_sigma_degree(&points, &params)?,
-            });
+            drawn.push((n, points, params));
+        }
+    }
+    let results: Vec<InstanceResult> = drawn
+        .par_iter()
+        .with_max_len(1)
+        .map(|(n, points, params)| interpolation_instance(*n, points, params))
+        .collect();
+    let mut rows = Vec::new();
+    for r in results {
+        match r? {
+            Ok(row) => rows.push(row),
+            Err(evidence) => return Ok(Err(evidence)),
         }
     }
     Ok(Ok(rows))
+}
+
+/// One instance of [`compute_interpolation_rows`].
+fn interpolation_instance(
+    n: usize,
+    points: &[Hom4<Rational>],
+    params: &[Rational],
+) -> InstanceResult {
+    use exactcheck_core::sphere_interpolation::interpolate;
+    let r = interpolate(points, params).map_err(|e| format!("{n} points: {e}"))?;
+    for (k, t) in points.iter().zip(params) {
+        if !r.curve.eval_hom(t).proj_eq(k) {
+            return Ok(Err(format!(
+                "the curve for {n} points misses {k:?} at t = {t}"
+            )));
+        }
+    }
+    let c = r.curve.hom_coordinates();
+    let form = c[0]
+        .mul(&c[0])
+        .checked_sub(&c[1].mul(&c[1]))
+        .and_then(|f| f.checked_sub(&c[2].mul(&c[2])))
+        .and_then(|f| f.checked_sub(&c[3].mul(&c[3])))
+        .map_err(|e| e.to_string())?;
+    if form.coeffs().iter().any(|x| !x.is_zero()) {
+        return Ok(Err(format!("the curve for {n} points leaves K")));
+    }
+    Ok(Ok(DegreeRow {
+        n,
+        delta: r.degree,
+        sigma_rational: r.sigma_degree,
+        sigma_polynomial: plain_sigma_degree(points, params)?,
+    }))
 }
 
 /// `2` or `2..4`: the values of a column over the instances of one N.
