@@ -12,6 +12,7 @@
 
 pub mod cylinder_sphere;
 pub mod expr;
+pub mod bigint;
 pub mod gcd;
 pub mod modp;
 pub mod plain;
