@@ -1,6 +1,6 @@
 //! Linear-time kernels on little-endian 64-bit limb slices: remainder by one limb, exact
 //! division by one limb, and the linear combination `A*m1 ± B*m2` of two big numbers with
-//! one-limb multipliers.
+//! one-limb multipliers, fused into one pass.
 //!
 //! These are the operations of adding a word-sized rational `c/d` to a big one `a/b` by
 //! Henrici's method ([`crate::rational`]): `b mod d`, `b / g` (exact, `g = gcd(b, d)`),
@@ -10,8 +10,8 @@
 //! the big operand and one hardware (or `u128` library) division per limb, which profiled at
 //! roughly four times GMP's cost per limb. num-bigint keeps `BigInt`/`BigUint` as the public
 //! types; no maintained crate with a compatible licence offers these kernels on its limbs (GMP
-//! bindings are LGPL and C), so they are written here, on the limbs read from
-//! `BigUint::iter_u64_digits`/`to_u64_digits`.
+//! bindings are LGPL and C), so they are written here, on the limbs read by
+//! `BigUint::to_u64_digits`.
 //!
 //! # Algorithms
 //! * **Remainder by a limb `d < 2^61`** ([`rem_1`]): the folding method of GMP's
@@ -28,8 +28,10 @@
 //!   `mpn_divexact_1`: the quotient is produced from the least significant limb upwards as
 //!   `q_i = (x_i - borrow) * d^(-1) mod 2^64` — multiplications only; the factor `2^s` of an
 //!   even divisor is shifted out on the fly.
-//! * **Linear combination** ([`lin_comb`]): one pass with a two-limb carry (a signed one for
-//!   differences, negated by a two's-complement pass when the result is negative).
+//! * **The fused addition pass** ([`add_word_pass`]): one pass over both big operands computes
+//!   the exact quotient `b/g` limb by limb, the linear combination `a (d/g) ± c (b/g)` with a
+//!   signed two-limb carry (negated by a two's-complement pass when the result is negative),
+//!   and the new denominator `b (d/g)`.
 //!
 //! Every kernel is tested against num-bigint's `%`, `/`, `*` and `+`/`-` (module tests).
 
@@ -51,7 +53,7 @@ pub fn rem_1(x: &[u64], d: u64) -> u64 {
     if d < FOLD_MAX {
         rem_1_fold(x, d)
     } else {
-        rem_1_preinv(x, d)
+        rem_1_preinv(x.iter().copied(), d)
     }
 }
 
@@ -67,26 +69,26 @@ fn rem_1_fold(x: &[u64], d: u64) -> u64 {
     }
     let m = |a: u64, b: u64| u128::from(a) * u128::from(b);
     let (mut rh, mut rl) = (0u64, 0u64);
-    let n = x.len();
-    let k = n % 4;
-    // Leading partial block of k limbs: (rh, rl) = 0, so the fold is the plain weighted sum.
-    if k > 0 {
-        let mut s = 0u128;
-        for j in 0..k {
-            s += m(x[n - k + j], c[j]);
-        }
+    // Blocks of four limbs from the most significant end, then the k < 4 least significant
+    // limbs, folded with the weights of a k-limb block.
+    let mut blocks = x.rchunks_exact(4);
+    for w in blocks.by_ref() {
+        let s = u128::from(w[0])
+            + m(w[1], c[1])
+            + m(w[2], c[2])
+            + m(w[3], c[3])
+            + m(rl, c[4])
+            + m(rh, c[5]);
         rh = (s >> 64) as u64;
         rl = s as u64;
     }
-    let mut i = n - k;
-    while i >= 4 {
-        i -= 4;
-        let s = u128::from(x[i])
-            + m(x[i + 1], c[1])
-            + m(x[i + 2], c[2])
-            + m(x[i + 3], c[3])
-            + m(rl, c[4])
-            + m(rh, c[5]);
+    let low = blocks.remainder();
+    let k = low.len();
+    if k > 0 {
+        let mut s = m(rl, c[k]) + m(rh, c[k + 1]);
+        for (j, &w) in low.iter().enumerate() {
+            s += m(w, c[j]);
+        }
         rh = (s >> 64) as u64;
         rl = s as u64;
     }
@@ -121,27 +123,33 @@ fn div_2by1(u1: u64, u0: u64, d: u64, v: u64) -> (u64, u64) {
 
 /// `x mod d` for any `d >= 2` by division with a precomputed reciprocal, one limb per step:
 /// the stream `x 2^s` is divided by the normalised `d 2^s` and the remainder shifted back.
-fn rem_1_preinv(x: &[u64], d: u64) -> u64 {
+fn rem_1_preinv<I>(x: I, d: u64) -> u64
+where
+    I: DoubleEndedIterator<Item = u64> + ExactSizeIterator,
+{
     let s = d.leading_zeros();
     let dn = d << s;
     let v = reciprocal(dn);
-    let n = x.len();
-    if n == 0 {
+    let mut x = x.rev();
+    let Some(top) = x.next() else {
         return 0;
-    }
+    };
     if s == 0 {
-        let mut r = 0u64;
-        for &w in x.iter().rev() {
+        let mut r = div_2by1(0, top, dn, v).1;
+        for w in x {
             r = div_2by1(r, w, dn, v).1;
         }
         return r;
     }
-    // r starts as the s bits shifted out of the top limb (< 2^s <= 2^63 <= dn).
-    let mut r = x[n - 1] >> (64 - s);
-    for i in (0..n).rev() {
-        let lo = if i > 0 { x[i - 1] >> (64 - s) } else { 0 };
-        r = div_2by1(r, x[i] << s | lo, dn, v).1;
+    // r starts as the s bits shifted out of the top limb (< 2^s <= 2^63 <= dn); each step
+    // divides the next limb of the stream x 2^s.
+    let mut r = top >> (64 - s);
+    let mut cur = top;
+    for w in x {
+        r = div_2by1(r, cur << s | w >> (64 - s), dn, v).1;
+        cur = w;
     }
+    r = div_2by1(r, cur << s, dn, v).1;
     r >> s
 }
 
@@ -168,87 +176,125 @@ pub fn divexact_1(x: &[u64], d: u64) -> Vec<u64> {
     let s = d.trailing_zeros();
     let odd = d >> s;
     let inv = inverse_mod_2_64(odd);
-    let n = x.len();
-    let mut out = Vec::with_capacity(n);
+    let mut out = vec![0u64; x.len()];
     let mut c = 0u64;
-    for i in 0..n {
-        let y = if s == 0 {
-            x[i]
-        } else {
-            let next = if i + 1 < n { x[i + 1] << (64 - s) } else { 0 };
-            x[i] >> s | next
-        };
+    let mut step = |y: u64, q: &mut u64| {
         let (l, borrow) = y.overflowing_sub(c);
-        let q = l.wrapping_mul(inv);
-        out.push(q);
-        c = ((u128::from(q) * u128::from(odd)) >> 64) as u64 + u64::from(borrow);
-    }
-    trim(&mut out);
-    out
-}
-
-/// `x * m` (no leading zero limbs).
-pub fn mul_1(x: &[u64], m: u64) -> Vec<u64> {
-    let mut out = Vec::with_capacity(x.len() + 1);
-    let mut carry = 0u64;
-    for &w in x {
-        let p = u128::from(w) * u128::from(m) + u128::from(carry);
-        out.push(p as u64);
-        carry = (p >> 64) as u64;
-    }
-    out.push(carry);
-    trim(&mut out);
-    out
-}
-
-/// The signed linear combination `(-1)^an A m1 + (-1)^bn B m2` of two numbers given by limbs,
-/// as `(magnitude limbs without leading zeros, negative)`; zero is `(vec![], false)`.
-pub fn lin_comb(a: &[u64], an: bool, m1: u64, b: &[u64], bn: bool, m2: u64) -> (Vec<u64>, bool) {
-    let n = a.len().max(b.len());
-    let limb = |x: &[u64], i: usize| x.get(i).copied().unwrap_or(0);
-    let mut out = Vec::with_capacity(n + 3);
-    if an == bn {
-        // Magnitudes add. Carry < 2^66: the high halves of two products plus a small carry.
-        let mut carry = 0u128;
-        for i in 0..n {
-            let p = u128::from(limb(a, i)) * u128::from(m1);
-            let q = u128::from(limb(b, i)) * u128::from(m2);
-            let lo = u128::from(p as u64) + u128::from(q as u64) + carry;
-            out.push(lo as u64);
-            carry = (p >> 64) + (q >> 64) + (lo >> 64);
+        *q = l.wrapping_mul(inv);
+        c = ((u128::from(*q) * u128::from(odd)) >> 64) as u64 + u64::from(borrow);
+    };
+    if s == 0 {
+        for (q, &w) in out.iter_mut().zip(x) {
+            step(w, q);
         }
-        out.push(carry as u64);
-        out.push((carry >> 64) as u64);
-        trim(&mut out);
-        let negative = an && !out.is_empty();
-        return (out, negative);
+    } else if let Some((&top, _)) = x.split_last() {
+        // The stream x / 2^s: each limb takes its high bits from the next one.
+        for (q, w) in out.iter_mut().zip(x.windows(2)) {
+            step(w[0] >> s | w[1] << (64 - s), q);
+        }
+        if let Some(q) = out.last_mut() {
+            step(top >> s, q);
+        }
     }
-    // Magnitudes subtract: D = A m1 - B m2 with a signed carry (|carry| < 2^65).
-    let mut carry = 0i128;
+    trim(&mut out);
+    out
+}
+
+/// The fused pass of adding a word-sized rational to a big one (see
+/// [`crate::rational`]): for `g | b` and `g | d`, returns `t = ±A (d/g) ± (b/g) cm` (signs
+/// `an`, `cn`, as `(magnitude, negative)`) and `den = B (d/g)`, reading `A` and `B` once. The
+/// quotient `b/g` is produced limb by limb by exact division as the pass goes.
+/// The operands are taken as owned limb vectors (the caller's copies), zero-extended in place.
+pub fn add_word_pass(
+    mut az: Vec<u64>,
+    an: bool,
+    mut bz: Vec<u64>,
+    cn: bool,
+    cm: u64,
+    d: u64,
+    g: u64,
+) -> (Vec<u64>, bool, Vec<u64>) {
+    let n = az.len().max(bz.len());
+    // Equal length n (b with one more zero limb, read by the shift).
+    az.resize(n, 0);
+    bz.resize(n + 1, 0);
+    let mut t = vec![0u64; n + 2];
+    let mut den = vec![0u64; n + 1];
+    let carry = if an == cn {
+        add_word_loop::<false>(&az, &bz, &mut t, &mut den, cm, d, g)
+    } else {
+        add_word_loop::<true>(&az, &bz, &mut t, &mut den, cm, d, g)
+    };
+    trim(&mut den);
+    t[n] = carry as u64;
+    t[n + 1] = (carry >> 64) as u64;
+    let t_negative = carry < 0;
+    if t_negative {
+        negate_twos_complement(&mut t);
+    }
+    trim(&mut t);
+    // The sign: an when A d1 dominates (or magnitudes were added), cn otherwise.
+    let negative = !t.is_empty() && if t_negative { cn } else { an };
+    (t, negative, den)
+}
+
+/// The loop of [`add_word_pass`] on `a` (n limbs), `b` (n + 1 limbs, the last zero), writing
+/// the n low limbs of `t` and the n + 1 limbs of `den`; returns the final signed carry of `t`.
+#[inline(always)]
+fn add_word_loop<const SUB: bool>(
+    a: &[u64],
+    b: &[u64],
+    t: &mut [u64],
+    den: &mut [u64],
+    cm: u64,
+    d: u64,
+    g: u64,
+) -> i128 {
+    let n = a.len();
+    let (a, b, t) = (&a[..n], &b[..n + 1], &mut t[..n]);
+    let d1 = d / g;
+    let s = g.trailing_zeros();
+    let odd = g >> s;
+    let inv = inverse_mod_2_64(odd);
+    let (mut c, mut den_carry, mut carry) = (0u64, 0u64, 0i128);
     for i in 0..n {
-        let p = u128::from(limb(a, i)) * u128::from(m1);
-        let q = u128::from(limb(b, i)) * u128::from(m2);
-        let lo = i128::from(p as u64) - i128::from(q as u64) + carry;
-        out.push(lo as u64);
-        carry = (p >> 64) as i128 - (q >> 64) as i128 + (lo >> 64);
+        let bw = b[i];
+        // den = B d1.
+        let p = u128::from(bw) * u128::from(d1) + u128::from(den_carry);
+        den[i] = p as u64;
+        den_carry = (p >> 64) as u64;
+        // b1 = b / g, exactly (Jebelean), on the stream b / 2^s.
+        let y = if s == 0 { bw } else { bw >> s | b[i + 1] << (64 - s) };
+        let (l, borrow) = y.overflowing_sub(c);
+        let q1 = l.wrapping_mul(inv);
+        c = ((u128::from(q1) * u128::from(odd)) >> 64) as u64 + u64::from(borrow);
+        // t = A d1 +- b1 cm with a signed carry (|carry| < 2^66).
+        let p = u128::from(a[i]) * u128::from(d1);
+        let q = u128::from(q1) * u128::from(cm);
+        let lo = if SUB {
+            i128::from(p as u64) - i128::from(q as u64) + carry
+        } else {
+            i128::from(p as u64) + i128::from(q as u64) + carry
+        };
+        t[i] = lo as u64;
+        carry = if SUB {
+            (p >> 64) as i128 - (q >> 64) as i128 + (lo >> 64)
+        } else {
+            (p >> 64) as i128 + (q >> 64) as i128 + (lo >> 64)
+        };
     }
-    // The carry as two two's-complement limbs: D = out + carry 2^(64 n) exactly.
-    out.push(carry as u64);
-    out.push((carry >> 64) as u64);
-    let d_negative = carry < 0;
-    if d_negative {
-        // |D| = -D: two's complement of the (n + 2)-limb representation.
-        let mut add = true;
-        for w in out.iter_mut() {
-            let (v, o) = (!*w).overflowing_add(u64::from(add));
-            *w = v;
-            add = o;
-        }
+    den[n] = den_carry;
+    carry
+}
+
+/// In-place two's complement negation of a limb vector (its value modulo `2^(64 len)`).
+fn negate_twos_complement(x: &mut [u64]) {
+    let mut add = true;
+    for w in x.iter_mut() {
+        let (v, o) = (!*w).overflowing_add(u64::from(add));
+        *w = v;
+        add = o;
     }
-    trim(&mut out);
-    // The sign of the result: an when A m1 dominates (D > 0), bn when B m2 does.
-    let negative = !out.is_empty() && if d_negative { bn } else { an };
-    (out, negative)
 }
 
 /// Removes leading (most significant) zero limbs.
@@ -261,10 +307,10 @@ pub fn trim(x: &mut Vec<u64>) {
 
 /// The [`BigUint`] with the given limbs (least significant first).
 pub fn biguint_from_limbs(limbs: &[u64]) -> BigUint {
-    let mut digits = Vec::with_capacity(2 * limbs.len());
-    for &w in limbs {
-        digits.push(w as u32);
-        digits.push((w >> 32) as u32);
+    let mut digits = vec![0u32; 2 * limbs.len()];
+    for (pair, &w) in digits.chunks_exact_mut(2).zip(limbs) {
+        pair[0] = w as u32;
+        pair[1] = (w >> 32) as u32;
     }
     BigUint::new(digits)
 }
@@ -307,7 +353,8 @@ mod tests {
             prop_assert_eq!(BigUint::from(rem_1(&x, d)), expected.clone());
             // Both methods on every divisor below the folding bound.
             if d >= 2 && d < FOLD_MAX {
-                prop_assert_eq!(BigUint::from(rem_1_preinv(&x, d)), expected);
+                prop_assert_eq!(BigUint::from(rem_1_preinv(x.iter().copied(), d)), expected);
+                prop_assert_eq!(rem_1(&big.to_u64_digits(), d), rem_1(&x, d));
             }
         }
 
@@ -318,34 +365,23 @@ mod tests {
             prop_assert_eq!(biguint_from_limbs(&got), &x / BigUint::from(d));
             prop_assert!(got.last() != Some(&0));
         }
+    }
 
+    proptest! {
         #[test]
-        fn prop_mul_1(x in arb_limbs(30), m in any::<u64>()) {
-            let got = mul_1(&x, m);
-            prop_assert_eq!(biguint_from_limbs(&got), biguint_from_limbs(&x) * BigUint::from(m));
-            prop_assert!(got.last() != Some(&0));
-        }
-
-        #[test]
-        fn prop_lin_comb(
-            a in arb_limbs(20), an in any::<bool>(), m1 in any::<u64>(),
-            b in arb_limbs(20), bn in any::<bool>(), m2 in any::<u64>(), s in 0u32..64
+        fn prop_add_word_pass(
+            a in arb_limbs(20), an in any::<bool>(), b1 in arb_limbs(20), cn in any::<bool>(),
+            cm in any::<u64>(), d1 in arb_divisor(), g in arb_divisor()
         ) {
-            let (m1, m2) = (m1 >> s, m2);
-            let expected = signed(&a, an) * BigInt::from(m1) + signed(&b, bn) * BigInt::from(m2);
-            let (mag, neg) = lin_comb(&a, an, m1, &b, bn, m2);
-            prop_assert!(mag.last() != Some(&0));
-            prop_assert!(!(mag.is_empty() && neg));
-            prop_assert_eq!(signed(&mag, neg), expected);
-        }
-
-        #[test]
-        fn prop_lin_comb_cancelling(a in arb_limbs(20), an in any::<bool>(), m in 1u64..u64::MAX, d in arb_limbs(3)) {
-            // A m - (A m + small) m / m style near-cancellation: B = A (same multiplier) +- d.
-            let b: Vec<u64> = limbs(&(biguint_from_limbs(&a) + biguint_from_limbs(&d)));
-            let expected = signed(&a, an) * BigInt::from(m) + signed(&b, !an) * BigInt::from(m);
-            let (mag, neg) = lin_comb(&a, an, m, &b, !an, m);
-            prop_assert_eq!(signed(&mag, neg), expected);
+            // b = b1 g and d = d1 g, so that g divides both, as the caller guarantees.
+            let Some(d) = d1.checked_mul(g) else { return Ok(()); };
+            let b = limbs(&(biguint_from_limbs(&b1) * BigUint::from(g)));
+            let (t, tn, den) = add_word_pass(a.clone(), an, b.clone(), cn, cm, d, g);
+            let expected = signed(&a, an) * BigInt::from(d1) + signed(&b1, cn) * BigInt::from(cm);
+            prop_assert!(t.last() != Some(&0) && den.last() != Some(&0));
+            prop_assert!(!(t.is_empty() && tn));
+            prop_assert_eq!(signed(&t, tn), expected);
+            prop_assert_eq!(biguint_from_limbs(&den), biguint_from_limbs(&b) * BigUint::from(d1));
         }
     }
 
@@ -354,13 +390,24 @@ mod tests {
         assert_eq!(rem_1(&[], 7), 0);
         assert_eq!(rem_1(&[5], 1), 0);
         assert_eq!(rem_1(&[u64::MAX; 9], u64::MAX), 0);
-        assert_eq!(rem_1(&[u64::MAX; 9], (1 << 61) - 1), rem_1_preinv(&[u64::MAX; 9], (1 << 61) - 1));
+        assert_eq!(
+            rem_1(&[u64::MAX; 9], (1 << 61) - 1),
+            rem_1_preinv([u64::MAX; 9].into_iter(), (1 << 61) - 1)
+        );
         assert_eq!(divexact_1(&[], 3), Vec::<u64>::new());
         assert_eq!(divexact_1(&[0, 1], 1 << 63), vec![2]);
-        assert_eq!(mul_1(&[1, 2], 0), Vec::<u64>::new());
-        assert_eq!(lin_comb(&[3], false, 2, &[6], true, 1), (vec![], false));
-        assert_eq!(lin_comb(&[3], false, 2, &[7], true, 1), (vec![1], true));
-        assert_eq!(lin_comb(&[], true, 2, &[], true, 1), (vec![], false));
+        let pass = |a: &[u64], an, b: &[u64], cn, cm, d, g| {
+            let (t, tn, _) = add_word_pass(a.to_vec(), an, b.to_vec(), cn, cm, d, g);
+            (t, tn)
+        };
+        assert_eq!(pass(&[3], false, &[6], true, 1, 2, 1), (vec![], false));
+        assert_eq!(pass(&[3], false, &[7], true, 1, 2, 1), (vec![1], true));
+        assert_eq!(pass(&[], true, &[], true, 1, 2, 1), (vec![], false));
+        // 3*(6/3) - (9/3)*1 = 3 and den = 9*2.
+        assert_eq!(
+            add_word_pass(vec![3], false, vec![9], true, 1, 6, 3),
+            (vec![3], false, vec![18])
+        );
     }
 
     #[test]

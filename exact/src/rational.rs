@@ -526,31 +526,28 @@ fn add_big(a: &BigInt, b: &BigUint, c: &BigInt, d: &BigUint, sub: bool) -> Ratio
 /// * otherwise, `t = a (d/g) + c (b/g)`, `g2 = gcd(t, g) = gcd(g, t mod g)`, and the result is
 ///   `(t/g2) / ((b/g)(d/g2))` (TAOCP 4.5.1).
 ///
-/// Every big operation is one linear pass: a folding remainder, an exact division, a fused
-/// linear combination, a multiplication by a limb. [`add_big`] is the reference it replaces.
+/// The big operands are copied out as limbs once; then one folding remainder pass for `g`, one fused
+/// pass ([`bigint::add_word_pass`]) for `t` and `b (d/g)`, one remainder pass over `t` when
+/// `g > 1`, and two exact divisions only when `g2 > 1`. [`add_big`] is the reference it
+/// replaces (tested against it).
 fn add_big_word(a: &BigInt, b: &BigUint, c: i128, d: i128) -> Option<Rational> {
     let cm = u64::try_from(c.unsigned_abs()).ok()?;
     let d = u64::try_from(d).ok()?;
     debug_assert!(d > 0);
-    let al = a.magnitude().to_u64_digits();
-    let bl = b.to_u64_digits();
     let (an, cn) = (a.sign() == BigSign::Minus, c < 0);
+    let (al, bl) = (a.magnitude().to_u64_digits(), b.to_u64_digits());
     let g = gcd_u64(d, bigint::rem_1(&bl, d));
-    let (t, tn, den) = if g == 1 {
-        let (t, tn) = bigint::lin_comb(&al, an, d, &bl, cn, cm);
-        (t, tn, bigint::mul_1(&bl, d))
+    let (t, tn, den) = bigint::add_word_pass(al, an, bl, cn, cm, d, g);
+    if t.is_empty() {
+        return Some(Rational::ZERO);
+    }
+    // t = a (d/g) + c (b/g) and den = b (d/g) = (b/g) d; with g2 = gcd(t, g) (which divides d)
+    // the result is (t/g2) / ((b/g)(d/g2)).
+    let g2 = if g == 1 { 1 } else { gcd_u64(g, bigint::rem_1(&t, g)) };
+    let (t, den) = if g2 == 1 {
+        (t, den)
     } else {
-        let b1 = bigint::divexact_1(&bl, g);
-        let (t, tn) = bigint::lin_comb(&al, an, d / g, &b1, cn, cm);
-        if t.is_empty() {
-            return Some(Rational::ZERO);
-        }
-        let g2 = gcd_u64(g, bigint::rem_1(&t, g));
-        if g2 == 1 {
-            (t, tn, bigint::mul_1(&b1, d))
-        } else {
-            (bigint::divexact_1(&t, g2), tn, bigint::mul_1(&b1, d / g2))
-        }
+        (bigint::divexact_1(&t, g2), bigint::divexact_1(&den, g2))
     };
     if t.is_empty() {
         return Some(Rational::ZERO);
