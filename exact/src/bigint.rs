@@ -218,16 +218,16 @@ pub fn add_word_pass(
     // Equal length n (b with one more zero limb, read by the shift).
     az.resize(n, 0);
     bz.resize(n + 1, 0);
-    let mut t = vec![0u64; n + 2];
-    let mut den = vec![0u64; n + 1];
+    let mut t = Vec::with_capacity(n + 2);
+    let mut den = Vec::with_capacity(n + 1);
     let carry = if an == cn {
         add_word_loop::<false>(&az, &bz, &mut t, &mut den, cm, d, g)
     } else {
         add_word_loop::<true>(&az, &bz, &mut t, &mut den, cm, d, g)
     };
     trim(&mut den);
-    t[n] = carry as u64;
-    t[n + 1] = (carry >> 64) as u64;
+    t.push(carry as u64);
+    t.push((carry >> 64) as u64);
     let t_negative = carry < 0;
     if t_negative {
         negate_twos_complement(&mut t);
@@ -238,20 +238,20 @@ pub fn add_word_pass(
     (t, negative, den)
 }
 
-/// The loop of [`add_word_pass`] on `a` (n limbs), `b` (n + 1 limbs, the last zero), writing
+/// The loop of [`add_word_pass`] on `a` (n limbs), `b` (n + 1 limbs, the last zero), pushing
 /// the n low limbs of `t` and the n + 1 limbs of `den`; returns the final signed carry of `t`.
 #[inline(always)]
 fn add_word_loop<const SUB: bool>(
     a: &[u64],
     b: &[u64],
-    t: &mut [u64],
-    den: &mut [u64],
+    t: &mut Vec<u64>,
+    den: &mut Vec<u64>,
     cm: u64,
     d: u64,
     g: u64,
 ) -> i128 {
     let n = a.len();
-    let (a, b, t) = (&a[..n], &b[..n + 1], &mut t[..n]);
+    let (a, b) = (&a[..n], &b[..n + 1]);
     let d1 = d / g;
     let s = g.trailing_zeros();
     let odd = g >> s;
@@ -261,10 +261,14 @@ fn add_word_loop<const SUB: bool>(
         let bw = b[i];
         // den = B d1.
         let p = u128::from(bw) * u128::from(d1) + u128::from(den_carry);
-        den[i] = p as u64;
+        den.push(p as u64);
         den_carry = (p >> 64) as u64;
         // b1 = b / g, exactly (Jebelean), on the stream b / 2^s.
-        let y = if s == 0 { bw } else { bw >> s | b[i + 1] << (64 - s) };
+        let y = if s == 0 {
+            bw
+        } else {
+            bw >> s | b[i + 1] << (64 - s)
+        };
         let (l, borrow) = y.overflowing_sub(c);
         let q1 = l.wrapping_mul(inv);
         c = ((u128::from(q1) * u128::from(odd)) >> 64) as u64 + u64::from(borrow);
@@ -276,14 +280,14 @@ fn add_word_loop<const SUB: bool>(
         } else {
             i128::from(p as u64) + i128::from(q as u64) + carry
         };
-        t[i] = lo as u64;
+        t.push(lo as u64);
         carry = if SUB {
             (p >> 64) as i128 - (q >> 64) as i128 + (lo >> 64)
         } else {
             (p >> 64) as i128 + (q >> 64) as i128 + (lo >> 64)
         };
     }
-    den[n] = den_carry;
+    den.push(den_carry);
     carry
 }
 
@@ -352,7 +356,7 @@ mod tests {
             let expected = &big % BigUint::from(d);
             prop_assert_eq!(BigUint::from(rem_1(&x, d)), expected.clone());
             // Both methods on every divisor below the folding bound.
-            if d >= 2 && d < FOLD_MAX {
+            if (2..FOLD_MAX).contains(&d) {
                 prop_assert_eq!(BigUint::from(rem_1_preinv(x.iter().copied(), d)), expected);
                 prop_assert_eq!(rem_1(&big.to_u64_digits(), d), rem_1(&x, d));
             }
@@ -416,8 +420,19 @@ mod tests {
         let mut st = Rng::new(99);
         let x: Vec<u64> = (0..100_000).map(|_| st.next_u64()).collect();
         let big = biguint_from_limbs(&x);
-        for d in [3u64, 1_000_000_007, (1 << 61) - 1, (1 << 61) + 1, u64::MAX, 1 << 40] {
-            assert_eq!(BigUint::from(rem_1(&x, d)), &big % BigUint::from(d), "d = {d}");
+        for d in [
+            3u64,
+            1_000_000_007,
+            (1 << 61) - 1,
+            (1 << 61) + 1,
+            u64::MAX,
+            1 << 40,
+        ] {
+            assert_eq!(
+                BigUint::from(rem_1(&x, d)),
+                &big % BigUint::from(d),
+                "d = {d}"
+            );
             let prod = &big * BigUint::from(d);
             assert_eq!(biguint_from_limbs(&divexact_1(&limbs(&prod), d)), big);
         }

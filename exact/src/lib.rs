@@ -10,9 +10,9 @@
 //! * sparse multivariate polynomials ([`poly`]) and their expression syntax ([`expr`]).
 #![warn(missing_docs)]
 
+pub mod bigint;
 pub mod cylinder_sphere;
 pub mod expr;
-pub mod bigint;
 pub mod gcd;
 pub mod modp;
 pub mod plain;

@@ -300,8 +300,7 @@ impl Rational {
             }
             (Repr::Small(c, d), Repr::Big(y)) => {
                 // x + y, or x - y = -(y - x).
-                if let Some(mut r) = add_big_word(&y.num, &y.den, if sub { -*c } else { *c }, *d)
-                {
+                if let Some(mut r) = add_big_word(&y.num, &y.den, if sub { -*c } else { *c }, *d) {
                     if sub {
                         r.neg_in_place();
                     }
@@ -543,7 +542,11 @@ fn add_big_word(a: &BigInt, b: &BigUint, c: i128, d: i128) -> Option<Rational> {
     }
     // t = a (d/g) + c (b/g) and den = b (d/g) = (b/g) d; with g2 = gcd(t, g) (which divides d)
     // the result is (t/g2) / ((b/g)(d/g2)).
-    let g2 = if g == 1 { 1 } else { gcd_u64(g, bigint::rem_1(&t, g)) };
+    let g2 = if g == 1 {
+        1
+    } else {
+        gcd_u64(g, bigint::rem_1(&t, g))
+    };
     let (t, den) = if g2 == 1 {
         (t, den)
     } else {
@@ -554,7 +557,10 @@ fn add_big_word(a: &BigInt, b: &BigUint, c: i128, d: i128) -> Option<Rational> {
     }
     let sign = if tn { BigSign::Minus } else { BigSign::Plus };
     let num = BigInt::from_biguint(sign, bigint::biguint_from_limbs(&t));
-    Some(Rational::from_coprime(num, bigint::biguint_from_limbs(&den)))
+    Some(Rational::from_coprime(
+        num,
+        bigint::biguint_from_limbs(&den),
+    ))
 }
 
 /// `x / g`, borrowing `x` when `g` is one.
