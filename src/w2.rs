@@ -171,6 +171,20 @@ mod tests {
     }
 
     #[test]
+    fn seq_sum_matches_the_anchors_at_2000() {
+        // The running sum grows to 12,783 digits through the big + word-sized addition kernel;
+        // the check values are those printed by gmpy2, FLINT and Fraction
+        // (scripts/anchors/w2_rational.py TOOL seq 2000).
+        let out = run::<Rational>(2000, Mode::Seq);
+        assert_eq!(out.count_nonneg, 0);
+        let cv = check_values(&out.sum.expect("seq mode returns the sum"));
+        assert_eq!(
+            (cv.num_digits, cv.den_digits, cv.num_mod_p, cv.den_mod_p),
+            (12_783, 12_779, 288_945_042, 303_592_070)
+        );
+    }
+
+    #[test]
     fn tree_and_seq_sums_agree() {
         let t = run::<Rational>(500, Mode::Tree).sum.unwrap();
         let s = run::<Rational>(500, Mode::Seq).sum.unwrap();

@@ -6,6 +6,7 @@ use std::time::{Duration, Instant};
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, SamplingMode};
 use exactcheck_core::Rng;
+use exactcheck_exact::bigint::rem_1;
 use exactcheck_exact::gcd::{gcd_biguint, gcd_u128, gcd_u64};
 use num_bigint::BigUint;
 use num_integer::Integer;
@@ -144,5 +145,37 @@ fn bench_350k_bits(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, bench_gcd, bench_words, bench_350k_bits);
+/// Remainder of a big number by one limb (the step that starts every big-by-word gcd and the
+/// addition of a word-sized rational to a big one): the folding kernel `bigint::rem_1`
+/// against num-bigint's `&BigUint % u64`, at 10^4, 10^5 and 10^6 bits, for a 48-bit divisor
+/// (the size of W2's denominators) and a full 64-bit one.
+fn bench_rem_1(c: &mut Criterion) {
+    let mut group = c.benchmark_group("rem_1");
+    group.warm_up_time(Duration::from_millis(300));
+    group.measurement_time(Duration::from_secs(2));
+    let mut st = Rng::new(0x4e3);
+    for bits in [10_000usize, 100_000, 1_000_000] {
+        let x = random_biguint(bits.div_ceil(64), &mut st);
+        let limbs = x.to_u64_digits();
+        for d in [0xb7e1_5162_8aed_u64, 0xf3a9_52c1_0d7b_4e65] {
+            assert_eq!(BigUint::from(rem_1(&limbs, d)), &x % d);
+            let id = format!("{bits}/{}bit", 64 - d.leading_zeros());
+            group.bench_with_input(BenchmarkId::new("exactcheck", &id), &d, |bch, &d| {
+                bch.iter(|| rem_1(black_box(&limbs), d))
+            });
+            group.bench_with_input(BenchmarkId::new("num-bigint", &id), &d, |bch, &d| {
+                bch.iter(|| black_box(&x) % d)
+            });
+        }
+    }
+    group.finish();
+}
+
+criterion_group!(
+    benches,
+    bench_gcd,
+    bench_words,
+    bench_350k_bits,
+    bench_rem_1
+);
 criterion_main!(benches);

@@ -127,7 +127,7 @@ pub fn gcd_biguint_u64(a: &BigUint, b: u64) -> Option<u64> {
     }
     let r = match fit_u64(a) {
         Some(w) => w,
-        None => rem_limbs_u64(a.iter_u64_digits(), b),
+        None => crate::bigint::rem_1(&a.to_u64_digits(), b),
     };
     Some(gcd_u64(b, r))
 }
@@ -160,7 +160,7 @@ pub fn gcd_biguint(a: &BigUint, b: &BigUint) -> BigUint {
     if let Some(bw) = fit_u64(b) {
         let r = match fit_u64(a) {
             Some(aw) => aw % bw,
-            None => rem_limbs_u64(a.iter_u64_digits(), bw),
+            None => crate::bigint::rem_1(&a.to_u64_digits(), bw),
         };
         return BigUint::from(gcd_u64(bw, r));
     }
@@ -202,8 +202,9 @@ fn fit_u128(x: &BigUint) -> Option<u128> {
     }
 }
 
-/// `x mod d` for a number given by its 64-bit limbs, least significant first (`d != 0`).
-#[inline]
+/// `x mod d` for a number given by its 64-bit limbs, least significant first (`d != 0`), one
+/// `u128` remainder per limb: the reference for [`crate::bigint::rem_1`], which replaced it.
+#[cfg(test)]
 fn rem_limbs_u64<I: DoubleEndedIterator<Item = u64>>(limbs: I, d: u64) -> u64 {
     if d == 0 {
         return 0;
@@ -398,7 +399,7 @@ fn lehmer_gcd(mut a: Vec<u64>, mut b: Vec<u64>) -> BigUint {
         }
         if b.len() == 1 {
             let bw = b[0];
-            let r = rem_limbs_u64(a.iter().copied(), bw);
+            let r = crate::bigint::rem_1(&a, bw);
             return BigUint::from(gcd_u64(bw, r));
         }
         let n = a.len();
@@ -472,6 +473,12 @@ mod tests {
     }
 
     proptest! {
+        #[test]
+        fn prop_rem_1_matches_reference(v in prop::collection::vec(any::<u64>(), 0..20), d in 1u64..u64::MAX, s in 0u32..64) {
+            let d = (d >> s).max(1);
+            prop_assert_eq!(crate::bigint::rem_1(&v, d), rem_limbs_u64(v.iter().copied(), d));
+        }
+
         #[test]
         fn prop_gcd_u64(a in any::<u64>(), b in any::<u64>()) {
             prop_assert_eq!(gcd_u64(a, b), naive_gcd_u64(a, b));

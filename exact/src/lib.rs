@@ -10,6 +10,7 @@
 //! * sparse multivariate polynomials ([`poly`]) and their expression syntax ([`expr`]).
 #![warn(missing_docs)]
 
+pub mod bigint;
 pub mod cylinder_sphere;
 pub mod expr;
 pub mod gcd;

@@ -22,7 +22,8 @@
 //! Everything converts to and from num-rational's `BigRational` ([`Rational::to_big_rational`],
 //! `From<BigRational>`), which stays the public big-number base.
 
-use crate::gcd::{gcd_biguint, gcd_u128};
+use crate::bigint;
+use crate::gcd::{gcd_biguint, gcd_u128, gcd_u64};
 use exactcheck_core::{Field, OrderedField, Ring, Sign, ZeroDivisor};
 use num_bigint::{BigInt, BigUint, Sign as BigSign};
 use num_rational::BigRational;
@@ -290,6 +291,24 @@ impl Rational {
         if self.is_zero_value() {
             return if sub { rhs.neg_impl() } else { rhs.clone() };
         }
+        // A big operand and a word-sized one (the running sum of W2 `seq`): limb kernels.
+        match (&self.0, &rhs.0) {
+            (Repr::Big(x), Repr::Small(c, d)) => {
+                if let Some(r) = add_big_word(&x.num, &x.den, if sub { -*c } else { *c }, *d) {
+                    return r;
+                }
+            }
+            (Repr::Small(c, d), Repr::Big(y)) => {
+                // x + y, or x - y = -(y - x).
+                if let Some(mut r) = add_big_word(&y.num, &y.den, if sub { -*c } else { *c }, *d) {
+                    if sub {
+                        r.neg_in_place();
+                    }
+                    return r;
+                }
+            }
+            _ => {}
+        }
         let (a, b) = self.big_parts();
         let (c, d) = rhs.big_parts();
         add_big(&a, &b, &c, &d, sub)
@@ -496,6 +515,52 @@ fn add_big(a: &BigInt, b: &BigUint, c: &BigInt, d: &BigUint, sub: bool) -> Ratio
         let den = b1 * (d / &g2);
         Rational::from_coprime(t / to_signed(g2), den)
     }
+}
+
+/// `a/b + c/d` for a big `a/b` and a word-sized `c/d` (`|c| < 2^64`, `0 < d < 2^64`, both
+/// canonical) by Henrici's method on the limb kernels of [`crate::bigint`]; `None` when `c/d`
+/// is not word-sized. With `g = gcd(b, d) = gcd(d, b mod d)`:
+///
+/// * `g = 1`: `(a d + c b) / (b d)`, already reduced;
+/// * otherwise, `t = a (d/g) + c (b/g)`, `g2 = gcd(t, g) = gcd(g, t mod g)`, and the result is
+///   `(t/g2) / ((b/g)(d/g2))` (TAOCP 4.5.1).
+///
+/// The big operands are copied out as limbs once; then one folding remainder pass for `g`, one fused
+/// pass ([`bigint::add_word_pass`]) for `t` and `b (d/g)`, one remainder pass over `t` when
+/// `g > 1`, and two exact divisions only when `g2 > 1`. [`add_big`] is the reference it
+/// replaces (tested against it).
+fn add_big_word(a: &BigInt, b: &BigUint, c: i128, d: i128) -> Option<Rational> {
+    let cm = u64::try_from(c.unsigned_abs()).ok()?;
+    let d = u64::try_from(d).ok()?;
+    debug_assert!(d > 0);
+    let (an, cn) = (a.sign() == BigSign::Minus, c < 0);
+    let (al, bl) = (a.magnitude().to_u64_digits(), b.to_u64_digits());
+    let g = gcd_u64(d, bigint::rem_1(&bl, d));
+    let (t, tn, den) = bigint::add_word_pass(al, an, bl, cn, cm, d, g);
+    if t.is_empty() {
+        return Some(Rational::ZERO);
+    }
+    // t = a (d/g) + c (b/g) and den = b (d/g) = (b/g) d; with g2 = gcd(t, g) (which divides d)
+    // the result is (t/g2) / ((b/g)(d/g2)).
+    let g2 = if g == 1 {
+        1
+    } else {
+        gcd_u64(g, bigint::rem_1(&t, g))
+    };
+    let (t, den) = if g2 == 1 {
+        (t, den)
+    } else {
+        (bigint::divexact_1(&t, g2), bigint::divexact_1(&den, g2))
+    };
+    if t.is_empty() {
+        return Some(Rational::ZERO);
+    }
+    let sign = if tn { BigSign::Minus } else { BigSign::Plus };
+    let num = BigInt::from_biguint(sign, bigint::biguint_from_limbs(&t));
+    Some(Rational::from_coprime(
+        num,
+        bigint::biguint_from_limbs(&den),
+    ))
 }
 
 /// `x / g`, borrowing `x` when `g` is one.
@@ -807,6 +872,82 @@ mod tests {
         assert!(!x.is_inline());
         let b = x.to_big_rational();
         assert_eq!(Rational::from(b), x);
+    }
+
+    /// A big rational `n / (den_factor * m)` from seeded random limbs (canonicalised).
+    fn random_big(st: &mut exactcheck_core::Rng, limbs: usize, den_factor: u64) -> BigRational {
+        let mut rnd = |k: usize| {
+            let v: Vec<u64> = (0..k).map(|_| st.next_u64()).collect();
+            crate::bigint::biguint_from_limbs(&v)
+        };
+        let n = BigInt::from(rnd(limbs)) * if limbs % 2 == 0 { 1 } else { -1 };
+        let d = BigInt::from(rnd(limbs)) * den_factor + 1u32;
+        BigRational::new(n, d * den_factor)
+    }
+
+    #[test]
+    fn big_plus_word_matches_reference() {
+        // The limb-kernel path (add_big_word) against add_big and num-rational, with shared
+        // denominator factors so that g = gcd(b, d) and g2 = gcd(t, g) are non-trivial.
+        let mut st = exactcheck_core::Rng::new(0xadd);
+        let words: [(i64, i64); 12] = [
+            (1, 1),
+            (-1, 1),
+            (7, 30),
+            (-11, 60),
+            (1, 2),
+            (5, 4096),
+            (-3, 1 << 40),
+            (i64::MAX, 1),
+            (i64::MIN + 1, 3),
+            (13, 2_147_483_647),
+            (-1, 9_007_199_254_740_881),
+            (1_000_000_007, 999_999_999_999),
+        ];
+        for limbs in [3usize, 4, 5, 40] {
+            for factor in [1u64, 6, 30, 1 << 20, 2_147_483_647] {
+                let x = random_big(&mut st, limbs, factor);
+                let fx = Rational::from(x.clone());
+                assert!(!fx.is_inline());
+                for (n, d) in words {
+                    let y = BigRational::new(n.into(), d.into());
+                    let fy = q(n, d);
+                    let (xb, xd) = fx.big_parts();
+                    let (yb, yd) = fy.big_parts();
+                    for sub in [false, true] {
+                        let expected = if sub { &x - &y } else { &x + &y };
+                        let got = fx.add_impl(&fy, sub);
+                        assert!(got.is_canonical(), "{x} {y} {sub}");
+                        assert_eq!(got.to_big_rational(), expected, "{x} +- {y}");
+                        let reference = add_big(&xb, &xd, &yb, &yd, sub);
+                        assert_eq!(got, reference);
+                        // Word operand first: y + x and y - x.
+                        let back = fy.add_impl(&fx, sub);
+                        let expected = if sub { &y - &x } else { &y + &x };
+                        assert!(back.is_canonical());
+                        assert_eq!(back.to_big_rational(), expected);
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn big_plus_word_cancels_and_demotes() {
+        // x + w where the sum is zero, an integer, or fits inline again.
+        let big = Rational::from_i128_ratio(i128::MAX, 7).unwrap().square();
+        assert!(!big.is_inline());
+        let w = q(1, 49);
+        let s = &big + &w;
+        assert_eq!(&s - &w, big);
+        assert_eq!(&(&s - &big) - &w, Rational::ZERO);
+        // Big integer minus a word integer, and a big value whose difference is inline.
+        let two64 = Rational::from(BigInt::from(1) << 127u32);
+        assert!(!two64.is_inline());
+        let d = &two64 - &q(1, 1);
+        assert!(d.is_inline());
+        assert_eq!(d.inline_parts(), Some((i128::MAX, 1)));
+        assert_eq!(&q(1, 1) - &two64, -d);
     }
 
     #[test]
