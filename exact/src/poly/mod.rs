@@ -83,11 +83,15 @@ mod ring;
 #[cfg(test)]
 mod tests;
 mod to_expr;
+#[cfg(test)]
+mod word_tests;
+mod words;
 
 pub use display::PolyDisplay;
 pub use reduce::{groebner, unit_circle_relation};
 pub use ring::{Monomial, Poly, SizeError, Terms};
 pub use to_expr::CoeffExpr;
+pub use words::{WordCoefficients, WordSum};
 
 use exactcheck_core::Ring;
 use kernels::*;
