@@ -161,7 +161,8 @@ impl<C: Ring> Poly<C> {
             } else {
                 ((&be[..], rhs), (&ae[..], self))
             };
-            let plan = ProductPlan::new(shape, small.0, small.1.len(), Some(large.0), large.1.len());
+            let plan =
+                ProductPlan::new(shape, small.0, small.1.len(), Some(large.0), large.1.len());
             plan.run_coeffs(&small.1.coeffs, &large.1.coeffs, max)
         }?;
         Some(Poly {
@@ -261,10 +262,15 @@ enum How {
         gi: Vec<u64>,
     },
     /// A heap over keys of `k` words.
-    Heap { k: usize, fk: Vec<u64>, gk: Vec<u64> },
+    Heap {
+        k: usize,
+        fk: Vec<u64>,
+        gk: Vec<u64>,
+    },
 }
 
-/// The largest dense accumulator array the word kernels use directly (bytes).
+/// The largest dense box the word kernels accumulate in directly (bytes of accumulators; one
+/// slab of it is in use at a time).
 const DIRECT_MAX_BYTES: usize = 1 << 25;
 
 impl<'a> ProductPlan<'a> {
@@ -313,12 +319,7 @@ impl<'a> ProductPlan<'a> {
 
     /// The product on coefficients of type `C`: in machine words when `C` has word hooks and
     /// both coefficient lists fit ([`super::words`]), else in `C`'s own arithmetic.
-    fn run_coeffs<C: Ring>(
-        &self,
-        fc: &[C],
-        gc: &[C],
-        max: usize,
-    ) -> Option<(Vec<u64>, Vec<C>)> {
+    fn run_coeffs<C: Ring>(&self, fc: &[C], gc: &[C], max: usize) -> Option<(Vec<u64>, Vec<C>)> {
         if let Some(h) = word_hooks::<C>() {
             if let Some((fw, fd)) = (h.to_words)(fc) {
                 let g = if self.ge.is_none() {
@@ -356,20 +357,15 @@ impl<'a> ProductPlan<'a> {
     {
         let (exps, sums) = match &self.how {
             How::Dense {
-                cells, strides, fi, gi,
+                cells,
+                strides,
+                fi,
+                gi,
             } if (*cells as usize).saturating_mul(std::mem::size_of::<A::Acc>())
                 <= DIRECT_MAX_BYTES =>
             {
                 let gi = if self.ge.is_some() { gi } else { fi };
-                mul_dense_direct::<A>(
-                    self.shape,
-                    *cells as usize,
-                    strides,
-                    &self.need,
-                    (fi, fc),
-                    (gi, gc),
-                    max,
-                )?
+                mul_dense_direct::<A>(self.shape, strides, &self.need, (fi, fc), (gi, gc), max)?
             }
             _ => self.run::<A>(fc, gc, max)?,
         };
@@ -386,17 +382,9 @@ impl<'a> ProductPlan<'a> {
         let w = self.shape.words;
         let ge = self.ge.unwrap_or(self.fe);
         match &self.how {
-            How::Dense {
-                cells, fi, gi, ..
-            } => {
+            How::Dense { cells, fi, gi, .. } => {
                 let gi = if self.ge.is_some() { gi } else { fi };
-                mul_dense::<A>(
-                    w,
-                    *cells as usize,
-                    (self.fe, fi, fc),
-                    (ge, gi, gc),
-                    max,
-                )
+                mul_dense::<A>(w, *cells as usize, (self.fe, fi, fc), (ge, gi, gc), max)
             }
             How::Heap { k, fk, gk } => {
                 let f = (self.fe, &fk[..], fc);
@@ -630,13 +618,23 @@ impl Heap {
     }
 }
 
-/// The largest exponent of every variable over `n` monomials (`cap` variables).
+/// The largest exponent of every variable over `n` monomials (`cap` variables): a field-wise
+/// maximum of the packed words (SWAR: with the guard bits clear, `((x | H) - m) & H` marks the
+/// fields where `x >= m` without borrows between fields), the fields read out once at the end.
 pub(super) fn max_exps(shape: Shape, e: &[u64], n: usize, cap: usize) -> Vec<u64> {
     let w = shape.words;
-    let mut m = vec![0u64; cap];
+    let h = shape.guard();
+    let field = shape.mask();
+    let mut acc = vec![0u64; w];
     for i in 0..n {
-        shape.for_each(&e[i * w..(i + 1) * w], |v, x| m[v] = m[v].max(x));
+        for (m, &x) in acc.iter_mut().zip(&e[i * w..(i + 1) * w]) {
+            let ge = ((x | h).wrapping_sub(*m)) & h;
+            let mask = (ge >> (shape.bits - 1)).wrapping_mul(field);
+            *m = (x & mask) | (*m & !mask);
+        }
     }
+    let mut m = vec![0u64; cap];
+    shape.for_each(&acc, |v, x| m[v] = x);
     m
 }
 
@@ -925,8 +923,7 @@ pub(super) fn mul_dense<A: Arith>(
 ) -> Option<(Vec<u64>, Vec<A::Acc>)> {
     let mut cell = vec![0u32; cells];
     // (index, i, j, coefficient) of every distinct product monomial.
-    let mut touched: Vec<(u64, u32, u32, A::Acc)> =
-        Vec::with_capacity((fc.len() + gc.len()) * 4);
+    let mut touched: Vec<(u64, u32, u32, A::Acc)> = Vec::with_capacity((fc.len() + gc.len()) * 4);
     for (i, (a, ia)) in fc.iter().zip(fi).enumerate() {
         for (j, (b, ib)) in gc.iter().zip(gi).enumerate() {
             let idx = ia + ib;
@@ -1028,14 +1025,16 @@ pub(super) fn square_heap<A: Arith, const K: usize>(
     Some((out_e, out_c))
 }
 
-/// Multiplication in word arithmetic directly in a dense array of accumulators, one per cell of
-/// the exponent box (for boxes of at most [`DIRECT_MAX_BYTES`]): every term product is one
-/// multiply-add at its mixed-radix index, and scanning the array from the top yields the
-/// result sorted, with each monomial decoded from its index (`strides`, radices `need + 1`).
-/// Cells that cancel to zero are skipped like untouched ones.
+/// Multiplication in word arithmetic directly in dense arrays of accumulators over the
+/// exponent box (for boxes of at most [`DIRECT_MAX_BYTES`]), one slab at a time: the output is
+/// formed for each exponent `t` of the top variable (the one with the largest stride) from the
+/// highest down, from the pairs of term groups whose top exponents add up to `t` (the factors
+/// are sorted, so each group is a run of terms). Every term product is one multiply-add into
+/// the slab (`stride` cells, small enough to stay in cache), and scanning the slab from the top
+/// yields the result sorted, each monomial decoded from its mixed-radix index (`strides`,
+/// radices `need + 1`). Cells that cancel to zero are skipped like untouched ones.
 pub(super) fn mul_dense_direct<A: WordArith>(
     shape: Shape,
-    cells: usize,
     strides: &[u64],
     need: &[u64],
     (fi, fc): (&[u64], &[i64]),
@@ -1045,38 +1044,78 @@ pub(super) fn mul_dense_direct<A: WordArith>(
 where
     A::Acc: Copy,
 {
-    let mut acc = vec![A::ZERO; cells];
-    let gmax = gi.iter().copied().max().unwrap_or(0) as usize;
-    for (a, &ia) in fc.iter().zip(fi) {
-        // Every index of this row is below `ia + gmax + 1 <= cells`.
-        let row = &mut acc[ia as usize..ia as usize + gmax + 1];
-        for (b, &ib) in gc.iter().zip(gi) {
-            A::add_mul(&mut row[ib as usize], a, b);
-        }
-    }
     let radices: Vec<(usize, u64, u64)> = need
         .iter()
         .enumerate()
         .filter(|&(_, &n)| n > 0)
         .map(|(v, &n)| (v, strides[v], n + 1))
         .collect();
+    // The top variable: the largest stride (the last variable in use).
+    let &(_, slab, top_radix) = radices
+        .last()
+        .expect("a product of two polynomials of two terms or more has a variable");
+    let slab = slab as usize;
+    // Runs of equal top exponent: (top exponent, start, end), for f and by exponent for g.
+    let runs = |idx: &[u64]| -> Vec<(usize, usize, usize)> {
+        let mut out: Vec<(usize, usize, usize)> = Vec::new();
+        for (k, &x) in idx.iter().enumerate() {
+            let t = (x / slab as u64) as usize;
+            match out.last_mut() {
+                Some(r) if r.0 == t => r.2 = k + 1,
+                _ => out.push((t, k, k + 1)),
+            }
+        }
+        out
+    };
+    let low =
+        |idx: &[u64]| -> Vec<usize> { idx.iter().map(|&x| (x % slab as u64) as usize).collect() };
+    let (fr, gr) = (runs(fi), runs(gi));
+    let (fl, gl) = (low(fi), low(gi));
+    let mut g_of: Vec<Option<(usize, usize, usize)>> = vec![None; top_radix as usize];
+    for &(t, a, b) in &gr {
+        let top = gl[a..b].iter().copied().max().unwrap_or(0);
+        g_of[t] = Some((a, b, top));
+    }
+    let mut acc = vec![A::ZERO; slab];
     let w = shape.words;
     let mut out_e = Vec::new();
     let mut out_c = Vec::new();
     let mut m = vec![0u64; w];
-    for (idx, c) in acc.iter().enumerate().rev() {
-        if A::is_zero(c) {
+    for t in (0..top_radix as usize).rev() {
+        let mut touched = false;
+        for &(ta, fa, fb) in &fr {
+            let Some(Some((ga, gb, gtop))) = t.checked_sub(ta).map(|tb| g_of[tb]) else {
+                continue;
+            };
+            touched = true;
+            let (gcs, gls) = (&gc[ga..gb], &gl[ga..gb]);
+            for (a, &la) in fc[fa..fb].iter().zip(&fl[fa..fb]) {
+                // Every cell of this row is below `la + gtop + 1 <= slab`.
+                let row = &mut acc[la..la + gtop + 1];
+                for (b, &lb) in gcs.iter().zip(gls) {
+                    A::add_mul(&mut row[lb], a, b);
+                }
+            }
+        }
+        if !touched {
             continue;
         }
-        if out_c.len() >= max {
-            return None;
+        for (lo, c) in acc.iter_mut().enumerate().rev() {
+            if A::is_zero(c) {
+                continue;
+            }
+            if out_c.len() >= max {
+                return None;
+            }
+            let idx = (t * slab + lo) as u64;
+            m.fill(0);
+            for &(v, stride, radix) in &radices {
+                shape.set(&mut m, v, (idx / stride) % radix);
+            }
+            out_e.extend_from_slice(&m);
+            out_c.push(*c);
+            *c = A::ZERO;
         }
-        m.fill(0);
-        for &(v, stride, radix) in &radices {
-            shape.set(&mut m, v, (idx as u64 / stride) % radix);
-        }
-        out_e.extend_from_slice(&m);
-        out_c.push(*c);
     }
     Some((out_e, out_c))
 }

@@ -27,9 +27,7 @@ fn arb_coeff() -> impl Strategy<Value = Rational> {
         )
         .expect("1 is not zero")),
         // Beyond 2^127 (big tier).
-        (any::<i64>(), 64u32..100).prop_map(|(x, s)| Rational::from(
-            (BigInt::from(x) << s) + 1
-        )),
+        (any::<i64>(), 64u32..100).prop_map(|(x, s)| Rational::from((BigInt::from(x) << s) + 1)),
         // Small rationals (a common denominator in words).
         (-50i64..=50, 1i64..=12).prop_map(|(n, d)| Rational::new(n, d).expect("d >= 1")),
         // A rational with a big denominator.
@@ -56,7 +54,10 @@ fn arb_poly(nvars: u32, emax: u32, terms: usize) -> impl Strategy<Value = P> {
 
 /// Small integer coefficients only (every product in the word kernels).
 fn arb_int_poly(nvars: u32, emax: u32, terms: usize, cmax: i64) -> impl Strategy<Value = P> {
-    let term = (prop::collection::vec(0..=emax, nvars as usize), -cmax..=cmax);
+    let term = (
+        prop::collection::vec(0..=emax, nvars as usize),
+        -cmax..=cmax,
+    );
     prop::collection::vec(term, 1..=terms).prop_map(|ts| {
         P::from_terms(ts.into_iter().map(|(es, c)| {
             let m: Vec<(Var, u32)> = es
@@ -166,7 +167,10 @@ fn accumulators_hold_extreme_sums() {
 fn power_with_a_big_rational_content() {
     let mut vars = Vars::new();
     let p: P = parse_poly("(2*5e-070(a+b)*(a-2))^52", &mut vars).expect("parses");
-    let (a, b) = (P::var(vars.get("a").unwrap()), P::var(vars.get("b").unwrap()));
+    let (a, b) = (
+        P::var(vars.get("a").unwrap()),
+        P::var(vars.get("b").unwrap()),
+    );
     let base = (&a + &b) * (&a - P::from_i64(2));
     let mut reference = P::one();
     for _ in 0..52 {
@@ -179,4 +183,33 @@ fn power_with_a_big_rational_content() {
     // And through the Ring API.
     let q = (base.scale(&c)).pow(52);
     assert_eq!(q, reference);
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 200, ..ProptestConfig::default() })]
+
+    /// The field-wise (SWAR) maximum of the packed exponents against a per-variable scan.
+    #[test]
+    fn max_exps_matches_a_scan(f in arb_poly(12, 300, 10)) {
+        let cap = f.shape.words * f.shape.per_word();
+        let fast = max_exps(f.shape, &f.exps, f.len(), cap);
+        let mut slow = vec![0u64; cap];
+        for (m, _) in f.terms() {
+            for (v, e) in m.exponents() {
+                slow[v as usize] = slow[v as usize].max(u64::from(e));
+            }
+        }
+        prop_assert_eq!(fast, slow);
+    }
+
+    /// Dense products of several slabs (top exponents up to 7) with cancellation.
+    #[test]
+    fn slab_products_agree(
+        f in arb_int_poly(3, 7, 60, 3),
+        g in arb_int_poly(3, 7, 60, 3),
+    ) {
+        check_product(&f, &g)?;
+        let h = &f * &(-&g);
+        prop_assert_eq!(&h + &(&f * &g), P::zero());
+    }
 }

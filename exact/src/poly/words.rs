@@ -224,7 +224,10 @@ fn rational_content_impl(q: &[Rational]) -> Option<(Rational, Vec<Rational>)> {
     }
     let prim = q
         .iter()
-        .map(|c| c.checked_div(&content).expect("the content of a non-zero list is not zero"))
+        .map(|c| {
+            c.checked_div(&content)
+                .expect("the content of a non-zero list is not zero")
+        })
         .collect();
     Some((content, prim))
 }
