@@ -393,7 +393,17 @@ impl<'a> ProductPlan<'a> {
                 } else {
                     let g = (ge, &gk[..], gc);
                     if *k == 1 {
-                        mul_heap1::<A>(w, f, g, max)
+                        mul_heap1::<A, u64>(w, f, g, max)
+                    } else if *k == 2 {
+                        // Two key words as one u128 (most significant word last): adding keys
+                        // never carries between words, so u128 addition and order agree.
+                        let wide = |keys: &[u64]| -> Vec<u128> {
+                            keys.chunks_exact(2)
+                                .map(|p| (u128::from(p[1]) << 64) | u128::from(p[0]))
+                                .collect()
+                        };
+                        let (fk2, gk2) = (wide(fk), wide(gk));
+                        mul_heap1::<A, u128>(w, (f.0, &fk2[..], f.2), (ge, &gk2[..], gc), max)
                     } else {
                         with_key_words!(*k, mul_heap::<A>(*k, w, f, g, max))
                     }
@@ -576,10 +586,10 @@ impl Heap {
     }
 
     /// Pops the top stream when its key equals `key`: the next term of the current monomial.
-    #[inline]
+    #[inline(always)]
     pub(super) fn pop_if_key(&mut self, slots: &[u64], w: usize, key: &[u64]) -> Option<usize> {
         let t = self.peek()? as usize;
-        if slots[t * w..(t + 1) * w] != *key {
+        if cmp_mono(&slots[t * w..(t + 1) * w], key) != Ordering::Equal {
             return None;
         }
         self.pop(slots, w);
@@ -701,7 +711,7 @@ fn start_streams(n: usize, k: usize, fk: &[u64], gk: &[u64]) -> (Vec<u64>, Vec<u
 
 /// Sets stream `i`'s slot to the key of the term product `f_i g_j` (keys `k` words wide in
 /// `fk`, `gk`) and pushes the stream on the heap.
-#[inline]
+#[inline(always)]
 fn push_product(
     heap: &mut Heap,
     slots: &mut [u64],
@@ -778,43 +788,60 @@ pub(super) fn mul_heap<A: Arith, const K: usize>(
     Some((out_e, out_c))
 }
 
-/// [`mul_heap`] for one-word keys, the common case: the heap holds `(key, stream)` pairs, so
-/// comparisons touch no other memory, and a stream that continues replaces the root in place
-/// (one sift instead of a pop and a push).
-pub(super) fn mul_heap1<A: Arith>(
+/// A heap key of one or two words held as one integer (`u64`, `u128`).
+pub(super) trait HeapKey: Copy + Ord {
+    fn plus(self, other: Self) -> Self;
+}
+impl HeapKey for u64 {
+    #[inline(always)]
+    fn plus(self, other: u64) -> u64 {
+        self.wrapping_add(other)
+    }
+}
+impl HeapKey for u128 {
+    #[inline(always)]
+    fn plus(self, other: u128) -> u128 {
+        self.wrapping_add(other)
+    }
+}
+
+/// [`mul_heap`] for keys of one or two words, the common cases: the heap holds `(key, stream)`
+/// pairs, so comparisons touch no other memory, and a stream that continues replaces the root
+/// in place (one sift instead of a pop and a push).
+pub(super) fn mul_heap1<A: Arith, Key: HeapKey>(
     w: usize,
-    (fe, fk, fc): (&[u64], &[u64], &[A::In]),
-    (ge, gk, gc): (&[u64], &[u64], &[A::In]),
+    (fe, fk, fc): (&[u64], &[Key], &[A::In]),
+    (ge, gk, gc): (&[u64], &[Key], &[A::In]),
     max: usize,
 ) -> Option<(Vec<u64>, Vec<A::Acc>)> {
     let (nf, ng) = (fc.len(), gc.len());
     let mut js = vec![0u32; nf];
-    let mut heap: Vec<(u64, u32)> = Vec::with_capacity(nf);
+    let mut heap: Vec<(Key, u32)> = Vec::with_capacity(nf);
     let cap = (nf * ng)
         .min(4 * (nf + ng) + 1024)
         .min(max.saturating_add(1));
     let mut out_e: Vec<u64> = Vec::with_capacity(cap * w);
     let mut out_c: Vec<A::Acc> = Vec::with_capacity(cap);
-    heap.push((fk[0].wrapping_add(gk[0]), 0));
+    heap.push((fk[0].plus(gk[0]), 0));
 
     // Takes the root's term product `(i, j)` and moves its stream on; returns `(i, j)`.
-    let step = |heap: &mut Vec<(u64, u32)>, js: &mut Vec<u32>| -> (usize, usize) {
+    let step = |heap: &mut Vec<(Key, u32)>, js: &mut Vec<u32>| -> (usize, usize) {
         let (_, s) = heap[0];
         let i = s as usize;
         let j = js[i] as usize;
         if j + 1 < ng {
             js[i] = (j + 1) as u32;
-            heap[0] = (fk[i].wrapping_add(gk[j + 1]), s);
+            heap[0] = (fk[i].plus(gk[j + 1]), s);
             sift_down1(heap);
         } else {
-            let last = heap.pop().unwrap_or((0, 0));
+            let last = heap.pop().expect("the root exists");
             if !heap.is_empty() {
                 heap[0] = last;
                 sift_down1(heap);
             }
         }
         if j == 0 && i + 1 < nf {
-            push1(heap, (fk[i + 1].wrapping_add(gk[0]), (i + 1) as u32));
+            push1(heap, (fk[i + 1].plus(gk[0]), (i + 1) as u32));
         }
         (i, j)
     };
@@ -839,7 +866,7 @@ pub(super) fn mul_heap1<A: Arith>(
 
 /// Restores the max-heap order below the root.
 #[inline(always)]
-pub(super) fn sift_down1(h: &mut [(u64, u32)]) {
+pub(super) fn sift_down1<Key: Copy + Ord>(h: &mut [(Key, u32)]) {
     let n = h.len();
     let x = h[0];
     let mut pos = 0;
@@ -865,7 +892,7 @@ pub(super) fn sift_down1(h: &mut [(u64, u32)]) {
 
 /// Inserts into the max-heap.
 #[inline(always)]
-pub(super) fn push1(h: &mut Vec<(u64, u32)>, x: (u64, u32)) {
+pub(super) fn push1<Key: Copy + Ord>(h: &mut Vec<(Key, u32)>, x: (Key, u32)) {
     let mut pos = h.len();
     h.push(x);
     while pos > 0 {

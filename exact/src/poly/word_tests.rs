@@ -213,3 +213,18 @@ proptest! {
         prop_assert_eq!(&h + &(&f * &g), P::zero());
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 100, ..ProptestConfig::default() })]
+
+    /// Keys of two words (the `u128` heap) and of three (the slot heap).
+    #[test]
+    fn wide_key_products_agree(
+        f in arb_poly(30, 6, 8),
+        g in arb_poly(30, 6, 8),
+        h in arb_poly(45, 6, 8),
+    ) {
+        check_product(&f, &g)?;
+        check_product(&f, &h)?;
+    }
+}
