@@ -161,9 +161,14 @@ impl WordCoefficients for ModP {
     }
 }
 
+/// [`WordCoefficients::to_words`] as a function pointer.
+type ToWords<C> = fn(&[C]) -> Option<(Vec<i64>, i64)>;
+/// A content split (see [`content_of`]) as a function pointer.
+type ContentSplit<C> = fn(&[C]) -> Option<(C, Vec<C>)>;
+
 /// The word hooks of one coefficient type, as plain function pointers.
 pub(super) struct WordHooks<C> {
-    pub(super) to_words: fn(&[C]) -> Option<(Vec<i64>, i64)>,
+    pub(super) to_words: ToWords<C>,
     pub(super) from_word_sum: fn(WordSum, i128) -> C,
 }
 
@@ -198,10 +203,9 @@ pub(super) fn word_hooks<C: Ring>() -> Option<WordHooks<C>> {
 /// The content of a polynomial with rational coefficients, for powers: `c = gcd(numerators) /
 /// lcm(denominators)` (positive) and the primitive integer coefficients `c_i / c`; `None` when
 /// `c = 1` or `C` is not `Rational`.
-pub(super) fn content_of<C: Ring>(coeffs: &Vec<C>) -> Option<(C, Vec<C>)> {
-    let q = (coeffs as &dyn Any).downcast_ref::<Vec<Rational>>()?;
-    let (c, prim) = rational_content_impl(q)?;
-    cast::<(Rational, Vec<Rational>), (C, Vec<C>)>((c, prim))
+pub(super) fn content_of<C: Ring>(coeffs: &[C]) -> Option<(C, Vec<C>)> {
+    let split: ContentSplit<Rational> = rational_content_impl;
+    cast::<ContentSplit<Rational>, ContentSplit<C>>(split)?(coeffs)
 }
 
 fn rational_content_impl(q: &[Rational]) -> Option<(Rational, Vec<Rational>)> {
