@@ -36,8 +36,13 @@ impl std::error::Error for ZeroDivisor {}
 ///
 /// Enough for every statement in homogeneous (projective) form; division-free code written
 /// against `Ring` can be instantiated with a polynomial ring, which is what makes a proof symbolic.
+///
+/// Every ring is `'static` (owns its data): kernels generic over `Ring` may then recognise a
+/// concrete type by its `TypeId` and take a faster specialised path (the polynomial products of
+/// `exactcheck_exact::poly` do so for machine-word coefficients), with no number-type detail here.
 pub trait Ring:
-    Clone
+    'static
+    + Clone
     + PartialEq
     + Debug
     + Add<Output = Self>

@@ -1,13 +1,14 @@
 //! Workload W1 (Chiang's ruled-surface / plane theorem, SPEC §4, as a polynomial identity) at
-//! `(m, n) = (2, 3), (4, 6), (8, 13)`:
+//! `(m, n) = (2, 3), (4, 6), (8, 13), (13, 21)`:
 //!
 //! * `w1_text`: parse both sides of `w1_text(m, n)` (the text of `shared/anchors/w1_text.py`),
 //!   expand them and compare — the whole `exactcheck prove` path;
 //! * `w1_ring`: the identity built with the `Ring` API as `shared/anchors/w1_identity.py`'s flint
 //!   backend builds it (x component and weight, `exactcheck_exact::w1::ring_residuals`),
 //!   residuals checked for zero;
-//! * `fateman`: a generic dense multiplication, `f * (f + 1)` with `f = (1 + x + y + z + w)^8`
-//!   (495 terms each, 245,025 term products), for comparison with other systems.
+//! * `fateman`: a generic dense multiplication, `f * (f + 1)` with `f = (1 + x + y + z + w)^k`
+//!   for `k = 8, 12, 16` (at `k = 8` 495 terms each, 245,025 term products; `exactcheck bench
+//!   dense` and `scripts/anchors/w1_dense.py` time the same product), checked before timing.
 //!
 //! Anchors on the same machine: `w1_identity.py flint 8 13` and `... sympy 8 13`.
 
@@ -23,7 +24,7 @@ use exactcheck_exact::Rational;
 
 type P = Poly<Rational>;
 
-const SIZES: [(u32, u32); 3] = [(2, 3), (4, 6), (8, 13)];
+const SIZES: [(u32, u32); 4] = [(2, 3), (4, 6), (8, 13), (13, 21)];
 
 /// W1 from text: parse, expand, compare.
 fn w1_text_proves(lhs: &str, rhs: &str) -> bool {
@@ -66,20 +67,37 @@ fn bench_w1(c: &mut Criterion) {
     group.finish();
 }
 
-fn bench_fateman(c: &mut Criterion) {
+/// `f (f + 1)` with `f = (1 + x + y + z + w)^k`.
+fn dense_factors(k: u32) -> (P, P) {
     let mut vars = Vars::new();
     let mut f: P = P::one();
     for name in ["x", "y", "z", "w"] {
         f += vars.poly::<Rational>(name);
     }
-    let f = f.pow(8);
+    let f = f.pow(k);
     let g = &f + &P::one();
-    assert_eq!(f.len(), 495);
+    (f, g)
+}
+
+fn bench_fateman(c: &mut Criterion) {
     let mut group = c.benchmark_group("fateman");
     group.sample_size(20);
-    group.bench_function("8", |bch| {
-        bch.iter(|| black_box(black_box(&f) * black_box(&g)).len())
-    });
+    for k in [8u32, 12, 16] {
+        let (f, g) = dense_factors(k);
+        // Check values before timing: C(2k + 4, 4) terms (every monomial of degree <= 2k in
+        // four variables), and the coefficient sum f(1) (f(1) + 1) = 5^k (5^k + 1).
+        let h = &f * &g;
+        let terms = (1..=4u64).fold(1u64, |acc, i| acc * (2 * k as u64 + i) / i);
+        assert_eq!(h.len() as u64, terms);
+        let five = Rational::from_integer(5)
+            .powi(k as i32)
+            .expect("5 is not zero");
+        let sum = h.coefficients().iter().fold(Rational::zero(), |s, c| s + c);
+        assert_eq!(sum, five.mul_ref(&five.add_ref(&Rational::one())));
+        group.bench_function(k.to_string(), |bch| {
+            bch.iter(|| black_box(black_box(&f) * black_box(&g)).len())
+        });
+    }
     group.finish();
 }
 

@@ -2,6 +2,7 @@
 //! `f_i * g` over packed keys (specialised for 1 to 4 key words), a dense accumulator when the
 //! exponent box is small, and a squaring heap that visits each unordered pair once.
 
+use super::words::*;
 use super::*;
 use exactcheck_core::Ring;
 use std::cmp::Ordering;
@@ -155,41 +156,14 @@ impl<C: Ring> Poly<C> {
         } else if rhs.len() == 1 {
             mul_term(w, &ae, &self.coeffs, &be, &rhs.coeffs[0], max)
         } else {
-            let cap = w * shape.per_word();
-            let (ma, mb) = (
-                max_exps(shape, &ae, self.len(), cap),
-                max_exps(shape, &be, rhs.len(), cap),
-            );
-            let need: Vec<u64> = ma.iter().zip(&mb).map(|(x, y)| x + y).collect();
             let (small, large) = if self.len() <= rhs.len() {
-                ((&ae[..], &self.coeffs[..]), (&be[..], &rhs.coeffs[..]))
+                ((&ae[..], self), (&be[..], rhs))
             } else {
-                ((&be[..], &rhs.coeffs[..]), (&ae[..], &self.coeffs[..]))
+                ((&be[..], rhs), (&ae[..], self))
             };
-            let products = (self.len() as u64).saturating_mul(rhs.len() as u64);
-            let limit = DENSE_MAX_CELLS.min(products.saturating_mul(4));
-            if let Some((cells, strides)) = dense_strides(&need, limit) {
-                let fi = dense_indices(shape, small.0, small.1.len(), &strides);
-                let gi = dense_indices(shape, large.0, large.1.len(), &strides);
-                mul_dense(
-                    w,
-                    cells as usize,
-                    (small.0, &fi, small.1),
-                    (large.0, &gi, large.1),
-                    max,
-                )
-            } else {
-                let (k, place) = key_layout(&need);
-                let fk = make_keys(shape, small.0, small.1.len(), k, &place);
-                let gk = make_keys(shape, large.0, large.1.len(), k, &place);
-                let f = (small.0, &fk[..], small.1);
-                let g = (large.0, &gk[..], large.1);
-                if k == 1 {
-                    mul_heap1(w, f, g, max)
-                } else {
-                    with_key_words!(k, mul_heap::<C>(k, w, f, g, max))
-                }
-            }
+            let plan =
+                ProductPlan::new(shape, small.0, small.1.len(), Some(large.0), large.1.len());
+            plan.run_coeffs(&small.1.coeffs, &large.1.coeffs, max)
         }?;
         Some(Poly {
             shape,
@@ -211,30 +185,231 @@ impl<C: Ring> Poly<C> {
         let shape = self.product_shape(self);
         let max = max(shape.words);
         let e = self.exps_in(shape);
-        let cap = shape.words * shape.per_word();
-        let need: Vec<u64> = max_exps(shape, &e, self.len(), cap)
-            .iter()
-            .map(|m| 2 * m)
-            .collect();
-        let n = self.len() as u64;
-        let (exps, coeffs) = match dense_strides(&need, DENSE_MAX_CELLS.min(n * n * 4)) {
-            Some((cells, strides)) => {
-                let idx = dense_indices(shape, &e, self.len(), &strides);
-                let f = (&e[..], &idx[..], &self.coeffs[..]);
-                mul_dense(shape.words, cells as usize, f, f, max)
-            }
-            None => {
-                let (k, place) = key_layout(&need);
-                let keys = make_keys(shape, &e, self.len(), k, &place);
-                let f = (&e[..], &keys[..], &self.coeffs[..]);
-                with_key_words!(k, square_heap::<C>(k, shape.words, f, max))
-            }
-        }?;
+        let plan = ProductPlan::new(shape, &e, self.len(), None, self.len());
+        let (exps, coeffs) = plan.run_coeffs(&self.coeffs, &self.coeffs, max)?;
         Some(Poly {
             shape,
             exps,
             coeffs,
         })
+    }
+
+    /// The reference product: the kernels on the coefficient type's own arithmetic, never the
+    /// machine-word kernels of [`super::words`] (for tests against them).
+    #[cfg(test)]
+    pub(super) fn mul_reference(&self, rhs: &Self) -> Self {
+        if self.len() <= 1 || rhs.len() <= 1 {
+            return self.mul_impl(rhs);
+        }
+        let shape = self.product_shape(rhs);
+        let (ae, be) = (self.exps_in(shape), rhs.exps_in(shape));
+        let (small, large) = if self.len() <= rhs.len() {
+            ((&ae[..], self), (&be[..], rhs))
+        } else {
+            ((&be[..], rhs), (&ae[..], self))
+        };
+        let plan = ProductPlan::new(shape, small.0, small.1.len(), Some(large.0), large.1.len());
+        let (exps, coeffs) = plan
+            .run::<Generic<C>>(&small.1.coeffs, &large.1.coeffs, usize::MAX)
+            .expect("no cap");
+        Poly {
+            shape,
+            exps,
+            coeffs,
+        }
+    }
+
+    /// The reference square (as [`Poly::mul_reference`]).
+    #[cfg(test)]
+    pub(super) fn square_reference(&self) -> Self {
+        if self.len() <= 1 {
+            return self.pow_term(2);
+        }
+        let shape = self.product_shape(self);
+        let e = self.exps_in(shape);
+        let plan = ProductPlan::new(shape, &e, self.len(), None, self.len());
+        let (exps, coeffs) = plan
+            .run::<Generic<C>>(&self.coeffs, &self.coeffs, usize::MAX)
+            .expect("no cap");
+        Poly {
+            shape,
+            exps,
+            coeffs,
+        }
+    }
+}
+
+/// How a product of two polynomials of at least two terms each (or a square) is formed: the
+/// packed monomials, and either the mixed-radix indices of a dense product or the compact keys
+/// of a heap product. The coefficients come separately, in the kernels' arithmetic.
+pub(super) struct ProductPlan<'a> {
+    shape: Shape,
+    /// The shorter factor's monomials.
+    fe: &'a [u64],
+    /// The longer factor's monomials (`None`: a square).
+    ge: Option<&'a [u64]>,
+    /// The largest exponent of every variable in the product.
+    need: Vec<u64>,
+    how: How,
+}
+
+enum How {
+    /// A dense box of `cells` cells, the strides, and the factors' cell indices.
+    Dense {
+        cells: u64,
+        strides: Vec<u64>,
+        fi: Vec<u64>,
+        gi: Vec<u64>,
+    },
+    /// A heap over keys of `k` words.
+    Heap {
+        k: usize,
+        fk: Vec<u64>,
+        gk: Vec<u64>,
+    },
+}
+
+/// The largest dense box the word kernels accumulate in directly (bytes of accumulators; one
+/// slab of it is in use at a time).
+const DIRECT_MAX_BYTES: usize = 1 << 25;
+
+impl<'a> ProductPlan<'a> {
+    /// The plan for `f g` (`ge = Some`, `f` the shorter) or `f^2` (`ge = None`).
+    fn new(shape: Shape, fe: &'a [u64], nf: usize, ge: Option<&'a [u64]>, ng: usize) -> Self {
+        let cap = shape.words * shape.per_word();
+        let ma = max_exps(shape, fe, nf, cap);
+        let need: Vec<u64> = match ge {
+            Some(ge) => {
+                let mb = max_exps(shape, ge, ng, cap);
+                ma.iter().zip(&mb).map(|(x, y)| x + y).collect()
+            }
+            None => ma.iter().map(|m| 2 * m).collect(),
+        };
+        let products = (nf as u64).saturating_mul(ng as u64);
+        let limit = DENSE_MAX_CELLS.min(products.saturating_mul(4));
+        let how = if let Some((cells, strides)) = dense_strides(&need, limit) {
+            let fi = dense_indices(shape, fe, nf, &strides);
+            let gi = match ge {
+                Some(ge) => dense_indices(shape, ge, ng, &strides),
+                None => Vec::new(),
+            };
+            How::Dense {
+                cells,
+                strides,
+                fi,
+                gi,
+            }
+        } else {
+            let (k, place) = key_layout(&need);
+            let fk = make_keys(shape, fe, nf, k, &place);
+            let gk = match ge {
+                Some(ge) => make_keys(shape, ge, ng, k, &place),
+                None => Vec::new(),
+            };
+            How::Heap { k, fk, gk }
+        };
+        ProductPlan {
+            shape,
+            fe,
+            ge,
+            need,
+            how,
+        }
+    }
+
+    /// The product on coefficients of type `C`: in machine words when `C` has word hooks and
+    /// both coefficient lists fit ([`super::words`]), else in `C`'s own arithmetic.
+    fn run_coeffs<C: Ring>(&self, fc: &[C], gc: &[C], max: usize) -> Option<(Vec<u64>, Vec<C>)> {
+        if let Some(h) = word_hooks::<C>() {
+            if let Some((fw, fd)) = (h.to_words)(fc) {
+                let g = if self.ge.is_none() {
+                    None
+                } else {
+                    Some((h.to_words)(gc))
+                };
+                let (gw, gd) = match &g {
+                    None => (&fw, fd),
+                    Some(Some((gw, gd))) => (gw, *gd),
+                    Some(None) => return self.run::<Generic<C>>(fc, gc, max),
+                };
+                let d = fd as i128 * gd as i128;
+                let back = |x: WordSum| (h.from_word_sum)(x, d);
+                return match accumulator_for(&fw, gw) {
+                    0 => self.run_words::<W64, C>(&fw, gw, max, back),
+                    1 => self.run_words::<W128, C>(&fw, gw, max, back),
+                    _ => self.run_words::<W192, C>(&fw, gw, max, back),
+                };
+            }
+        }
+        self.run::<Generic<C>>(fc, gc, max)
+    }
+
+    /// The product in word arithmetic `A`, converted back by `back`.
+    fn run_words<A: WordArith, C>(
+        &self,
+        fc: &[i64],
+        gc: &[i64],
+        max: usize,
+        back: impl Fn(WordSum) -> C,
+    ) -> Option<(Vec<u64>, Vec<C>)>
+    where
+        A::Acc: Copy,
+    {
+        let (exps, sums) = match &self.how {
+            How::Dense {
+                cells,
+                strides,
+                fi,
+                gi,
+            } if (*cells as usize).saturating_mul(std::mem::size_of::<A::Acc>())
+                <= DIRECT_MAX_BYTES =>
+            {
+                let gi = if self.ge.is_some() { gi } else { fi };
+                mul_dense_direct::<A>(self.shape, strides, &self.need, (fi, fc), (gi, gc), max)?
+            }
+            _ => self.run::<A>(fc, gc, max)?,
+        };
+        Some((exps, sums.into_iter().map(|x| back(A::sum(x))).collect()))
+    }
+
+    /// The product in arithmetic `A` by the planned kernel.
+    pub(super) fn run<A: Arith>(
+        &self,
+        fc: &[A::In],
+        gc: &[A::In],
+        max: usize,
+    ) -> Option<(Vec<u64>, Vec<A::Acc>)> {
+        let w = self.shape.words;
+        let ge = self.ge.unwrap_or(self.fe);
+        match &self.how {
+            How::Dense { cells, fi, gi, .. } => {
+                let gi = if self.ge.is_some() { gi } else { fi };
+                mul_dense::<A>(w, *cells as usize, (self.fe, fi, fc), (ge, gi, gc), max)
+            }
+            How::Heap { k, fk, gk } => {
+                let f = (self.fe, &fk[..], fc);
+                if self.ge.is_none() {
+                    with_key_words!(*k, square_heap::<A>(*k, w, f, max))
+                } else {
+                    let g = (ge, &gk[..], gc);
+                    if *k == 1 {
+                        mul_heap1::<A, u64>(w, f, g, max)
+                    } else if *k == 2 {
+                        // Two key words as one u128 (most significant word last): adding keys
+                        // never carries between words, so u128 addition and order agree.
+                        let wide = |keys: &[u64]| -> Vec<u128> {
+                            keys.chunks_exact(2)
+                                .map(|p| (u128::from(p[1]) << 64) | u128::from(p[0]))
+                                .collect()
+                        };
+                        let (fk2, gk2) = (wide(fk), wide(gk));
+                        mul_heap1::<A, u128>(w, (f.0, &fk2[..], f.2), (ge, &gk2[..], gc), max)
+                    } else {
+                        with_key_words!(*k, mul_heap::<A>(*k, w, f, g, max))
+                    }
+                }
+            }
+        }
     }
 }
 
@@ -411,10 +586,10 @@ impl Heap {
     }
 
     /// Pops the top stream when its key equals `key`: the next term of the current monomial.
-    #[inline]
+    #[inline(always)]
     pub(super) fn pop_if_key(&mut self, slots: &[u64], w: usize, key: &[u64]) -> Option<usize> {
         let t = self.peek()? as usize;
-        if slots[t * w..(t + 1) * w] != *key {
+        if cmp_mono(&slots[t * w..(t + 1) * w], key) != Ordering::Equal {
             return None;
         }
         self.pop(slots, w);
@@ -453,13 +628,23 @@ impl Heap {
     }
 }
 
-/// The largest exponent of every variable over `n` monomials (`cap` variables).
+/// The largest exponent of every variable over `n` monomials (`cap` variables): a field-wise
+/// maximum of the packed words (SWAR: with the guard bits clear, `((x | H) - m) & H` marks the
+/// fields where `x >= m` without borrows between fields), the fields read out once at the end.
 pub(super) fn max_exps(shape: Shape, e: &[u64], n: usize, cap: usize) -> Vec<u64> {
     let w = shape.words;
-    let mut m = vec![0u64; cap];
+    let h = shape.guard();
+    let field = shape.mask();
+    let mut acc = vec![0u64; w];
     for i in 0..n {
-        shape.for_each(&e[i * w..(i + 1) * w], |v, x| m[v] = m[v].max(x));
+        for (m, &x) in acc.iter_mut().zip(&e[i * w..(i + 1) * w]) {
+            let ge = ((x | h).wrapping_sub(*m)) & h;
+            let mask = (ge >> (shape.bits - 1)).wrapping_mul(field);
+            *m = (x & mask) | (*m & !mask);
+        }
     }
+    let mut m = vec![0u64; cap];
+    shape.for_each(&acc, |v, x| m[v] = x);
     m
 }
 
@@ -526,7 +711,7 @@ fn start_streams(n: usize, k: usize, fk: &[u64], gk: &[u64]) -> (Vec<u64>, Vec<u
 
 /// Sets stream `i`'s slot to the key of the term product `f_i g_j` (keys `k` words wide in
 /// `fk`, `gk`) and pushes the stream on the heap.
-#[inline]
+#[inline(always)]
 fn push_product(
     heap: &mut Heap,
     slots: &mut [u64],
@@ -551,13 +736,13 @@ fn push_product(
 /// equal monomials are accumulated as they leave it, and the result is born sorted. The heap
 /// orders the compact keys of [`key_layout`] (`k` words, `K` if non-zero); the full monomials
 /// (`w` words) are formed once per output term.
-pub(super) fn mul_heap<C: Ring, const K: usize>(
+pub(super) fn mul_heap<A: Arith, const K: usize>(
     k: usize,
     w: usize,
-    (fe, fk, fc): (&[u64], &[u64], &[C]),
-    (ge, gk, gc): (&[u64], &[u64], &[C]),
+    (fe, fk, fc): (&[u64], &[u64], &[A::In]),
+    (ge, gk, gc): (&[u64], &[u64], &[A::In]),
     max: usize,
-) -> Option<(Vec<u64>, Vec<C>)> {
+) -> Option<(Vec<u64>, Vec<A::Acc>)> {
     let k = if K == 0 { k } else { K };
     let (nf, ng) = (fc.len(), gc.len());
     let (mut slots, mut js, mut heap) = start_streams(nf, k, fk, gk);
@@ -565,7 +750,7 @@ pub(super) fn mul_heap<C: Ring, const K: usize>(
         .min(4 * (nf + ng) + 1024)
         .min(max.saturating_add(1));
     let mut out_e: Vec<u64> = Vec::with_capacity(cap * w);
-    let mut out_c: Vec<C> = Vec::with_capacity(cap);
+    let mut out_c: Vec<A::Acc> = Vec::with_capacity(cap);
     let mut cur = vec![0u64; k];
 
     // Moves stream i past its current term and (re)inserts what follows.
@@ -586,13 +771,13 @@ pub(super) fn mul_heap<C: Ring, const K: usize>(
         let i = i as usize;
         let j = js[i];
         cur.copy_from_slice(&slots[i * k..(i + 1) * k]);
-        let mut acc = fc[i].mul_ref(&gc[j]);
+        let mut acc = A::mul(&fc[i], &gc[j]);
         advance(i, &mut slots, &mut js, &mut heap);
         while let Some(t) = heap.pop_if_key(&slots, k, &cur) {
-            acc += fc[t].mul_ref(&gc[js[t]]);
+            A::add_mul(&mut acc, &fc[t], &gc[js[t]]);
             advance(t, &mut slots, &mut js, &mut heap);
         }
-        if !acc.is_zero() {
+        if !A::is_zero(&acc) {
             push_sum(&mut out_e, &fe[i * w..(i + 1) * w], &ge[j * w..(j + 1) * w]);
             out_c.push(acc);
             if out_c.len() > max {
@@ -603,55 +788,72 @@ pub(super) fn mul_heap<C: Ring, const K: usize>(
     Some((out_e, out_c))
 }
 
-/// [`mul_heap`] for one-word keys, the common case: the heap holds `(key, stream)` pairs, so
-/// comparisons touch no other memory, and a stream that continues replaces the root in place
-/// (one sift instead of a pop and a push).
-pub(super) fn mul_heap1<C: Ring>(
+/// A heap key of one or two words held as one integer (`u64`, `u128`).
+pub(super) trait HeapKey: Copy + Ord {
+    fn plus(self, other: Self) -> Self;
+}
+impl HeapKey for u64 {
+    #[inline(always)]
+    fn plus(self, other: u64) -> u64 {
+        self.wrapping_add(other)
+    }
+}
+impl HeapKey for u128 {
+    #[inline(always)]
+    fn plus(self, other: u128) -> u128 {
+        self.wrapping_add(other)
+    }
+}
+
+/// [`mul_heap`] for keys of one or two words, the common cases: the heap holds `(key, stream)`
+/// pairs, so comparisons touch no other memory, and a stream that continues replaces the root
+/// in place (one sift instead of a pop and a push).
+pub(super) fn mul_heap1<A: Arith, Key: HeapKey>(
     w: usize,
-    (fe, fk, fc): (&[u64], &[u64], &[C]),
-    (ge, gk, gc): (&[u64], &[u64], &[C]),
+    (fe, fk, fc): (&[u64], &[Key], &[A::In]),
+    (ge, gk, gc): (&[u64], &[Key], &[A::In]),
     max: usize,
-) -> Option<(Vec<u64>, Vec<C>)> {
+) -> Option<(Vec<u64>, Vec<A::Acc>)> {
     let (nf, ng) = (fc.len(), gc.len());
     let mut js = vec![0u32; nf];
-    let mut heap: Vec<(u64, u32)> = Vec::with_capacity(nf);
+    let mut heap: Vec<(Key, u32)> = Vec::with_capacity(nf);
     let cap = (nf * ng)
         .min(4 * (nf + ng) + 1024)
         .min(max.saturating_add(1));
     let mut out_e: Vec<u64> = Vec::with_capacity(cap * w);
-    let mut out_c: Vec<C> = Vec::with_capacity(cap);
-    heap.push((fk[0].wrapping_add(gk[0]), 0));
+    let mut out_c: Vec<A::Acc> = Vec::with_capacity(cap);
+    heap.push((fk[0].plus(gk[0]), 0));
 
-    // Takes the root's product and moves its stream on; returns the product.
-    let step = |heap: &mut Vec<(u64, u32)>, js: &mut Vec<u32>| -> C {
+    // Takes the root's term product `(i, j)` and moves its stream on; returns `(i, j)`.
+    let step = |heap: &mut Vec<(Key, u32)>, js: &mut Vec<u32>| -> (usize, usize) {
         let (_, s) = heap[0];
         let i = s as usize;
         let j = js[i] as usize;
-        let p = fc[i].mul_ref(&gc[j]);
         if j + 1 < ng {
             js[i] = (j + 1) as u32;
-            heap[0] = (fk[i].wrapping_add(gk[j + 1]), s);
+            heap[0] = (fk[i].plus(gk[j + 1]), s);
             sift_down1(heap);
         } else {
-            let last = heap.pop().unwrap_or((0, 0));
+            let last = heap.pop().expect("the root exists");
             if !heap.is_empty() {
                 heap[0] = last;
                 sift_down1(heap);
             }
         }
         if j == 0 && i + 1 < nf {
-            push1(heap, (fk[i + 1].wrapping_add(gk[0]), (i + 1) as u32));
+            push1(heap, (fk[i + 1].plus(gk[0]), (i + 1) as u32));
         }
-        p
+        (i, j)
     };
 
-    while let Some(&(key, s)) = heap.first() {
-        let (i, j) = (s as usize, js[s as usize] as usize);
-        let mut acc = step(&mut heap, &mut js);
+    while let Some(&(key, _)) = heap.first() {
+        let (i, j) = step(&mut heap, &mut js);
+        let mut acc = A::mul(&fc[i], &gc[j]);
         while heap.first().is_some_and(|t| t.0 == key) {
-            acc += step(&mut heap, &mut js);
+            let (s, t) = step(&mut heap, &mut js);
+            A::add_mul(&mut acc, &fc[s], &gc[t]);
         }
-        if !acc.is_zero() {
+        if !A::is_zero(&acc) {
             push_sum(&mut out_e, &fe[i * w..(i + 1) * w], &ge[j * w..(j + 1) * w]);
             out_c.push(acc);
             if out_c.len() > max {
@@ -664,7 +866,7 @@ pub(super) fn mul_heap1<C: Ring>(
 
 /// Restores the max-heap order below the root.
 #[inline(always)]
-pub(super) fn sift_down1(h: &mut [(u64, u32)]) {
+pub(super) fn sift_down1<Key: Copy + Ord>(h: &mut [(Key, u32)]) {
     let n = h.len();
     let x = h[0];
     let mut pos = 0;
@@ -690,7 +892,7 @@ pub(super) fn sift_down1(h: &mut [(u64, u32)]) {
 
 /// Inserts into the max-heap.
 #[inline(always)]
-pub(super) fn push1(h: &mut Vec<(u64, u32)>, x: (u64, u32)) {
+pub(super) fn push1<Key: Copy + Ord>(h: &mut Vec<(Key, u32)>, x: (Key, u32)) {
     let mut pos = h.len();
     h.push(x);
     while pos > 0 {
@@ -739,20 +941,19 @@ pub(super) fn dense_indices(shape: Shape, e: &[u64], n: usize, strides: &[u64]) 
 /// Multiplication by accumulation in a dense box of exponents (for products whose exponent box
 /// is not much larger than the number of term products, as in dense few-variable products):
 /// each product goes to its cell by mixed-radix index, the touched cells are sorted once.
-pub(super) fn mul_dense<C: Ring>(
+pub(super) fn mul_dense<A: Arith>(
     w: usize,
     cells: usize,
-    (fe, fi, fc): (&[u64], &[u64], &[C]),
-    (ge, gi, gc): (&[u64], &[u64], &[C]),
+    (fe, fi, fc): (&[u64], &[u64], &[A::In]),
+    (ge, gi, gc): (&[u64], &[u64], &[A::In]),
     max: usize,
-) -> Option<(Vec<u64>, Vec<C>)> {
+) -> Option<(Vec<u64>, Vec<A::Acc>)> {
     let mut cell = vec![0u32; cells];
     // (index, i, j, coefficient) of every distinct product monomial.
-    let mut touched: Vec<(u64, u32, u32, C)> = Vec::with_capacity((fc.len() + gc.len()) * 4);
+    let mut touched: Vec<(u64, u32, u32, A::Acc)> = Vec::with_capacity((fc.len() + gc.len()) * 4);
     for (i, (a, ia)) in fc.iter().zip(fi).enumerate() {
         for (j, (b, ib)) in gc.iter().zip(gi).enumerate() {
             let idx = ia + ib;
-            let p = a.mul_ref(b);
             match cell[idx as usize] {
                 0 => {
                     // Cancellation can leave fewer terms, but not more: a dense product is
@@ -761,10 +962,10 @@ pub(super) fn mul_dense<C: Ring>(
                     if touched.len() >= max {
                         return None;
                     }
-                    touched.push((idx, i as u32, j as u32, p));
+                    touched.push((idx, i as u32, j as u32, A::mul(a, b)));
                     cell[idx as usize] = touched.len() as u32;
                 }
-                t => touched[t as usize - 1].3 += p,
+                t => A::add_mul(&mut touched[t as usize - 1].3, a, b),
             }
         }
     }
@@ -772,7 +973,7 @@ pub(super) fn mul_dense<C: Ring>(
     let mut out_e = Vec::with_capacity(touched.len() * w);
     let mut out_c = Vec::with_capacity(touched.len());
     for (_, i, j, c) in touched {
-        if !c.is_zero() {
+        if !A::is_zero(&c) {
             let (i, j) = (i as usize, j as usize);
             push_sum(&mut out_e, &fe[i * w..(i + 1) * w], &ge[j * w..(j + 1) * w]);
             out_c.push(c);
@@ -784,18 +985,18 @@ pub(super) fn mul_dense<C: Ring>(
 /// Squaring with the heap over the pairs `i <= j` (at least two terms): stream `i` is
 /// `f_i * f_j` for `j = i, i+1, ...`; stream `i + 1` enters when `(i, i + 1)` leaves. Products
 /// with `i < j` count twice. Keys as in [`mul_heap`].
-pub(super) fn square_heap<C: Ring, const K: usize>(
+pub(super) fn square_heap<A: Arith, const K: usize>(
     k: usize,
     w: usize,
-    (fe, fk, fc): (&[u64], &[u64], &[C]),
+    (fe, fk, fc): (&[u64], &[u64], &[A::In]),
     max: usize,
-) -> Option<(Vec<u64>, Vec<C>)> {
+) -> Option<(Vec<u64>, Vec<A::Acc>)> {
     let k = if K == 0 { k } else { K };
     let n = fc.len();
     let (mut slots, mut js, mut heap) = start_streams(n, k, fk, fk);
     let cap = (n * n).min(8 * n + 1024).min(max.saturating_add(1));
     let mut out_e: Vec<u64> = Vec::with_capacity(cap * w);
-    let mut out_c: Vec<C> = Vec::with_capacity(cap);
+    let mut out_c: Vec<A::Acc> = Vec::with_capacity(cap);
     let mut cur = vec![0u64; k];
 
     let advance = |i: usize, slots: &mut Vec<u64>, js: &mut Vec<usize>, heap: &mut Heap| {
@@ -811,15 +1012,11 @@ pub(super) fn square_heap<C: Ring, const K: usize>(
         }
     };
     // Diagonal products go to `diag`, off-diagonal ones (to be doubled) to `off`.
-    let take = |i: usize, j: usize, diag: &mut Option<C>, off: &mut Option<C>| {
-        let (slot, p) = if i == j {
-            (diag, fc[i].square())
-        } else {
-            (off, fc[i].mul_ref(&fc[j]))
-        };
+    let take = |i: usize, j: usize, diag: &mut Option<A::Acc>, off: &mut Option<A::Acc>| {
+        let slot = if i == j { diag } else { off };
         match slot {
-            Some(a) => *a += p,
-            None => *slot = Some(p),
+            Some(a) => A::add_mul(a, &fc[i], &fc[j]),
+            None => *slot = Some(A::mul(&fc[i], &fc[j])),
         }
     };
 
@@ -827,8 +1024,8 @@ pub(super) fn square_heap<C: Ring, const K: usize>(
         let i = i as usize;
         let j = js[i];
         cur.copy_from_slice(&slots[i * k..(i + 1) * k]);
-        let mut diag: Option<C> = None;
-        let mut off: Option<C> = None;
+        let mut diag: Option<A::Acc> = None;
+        let mut off: Option<A::Acc> = None;
         take(i, j, &mut diag, &mut off);
         advance(i, &mut slots, &mut js, &mut heap);
         while let Some(t) = heap.pop_if_key(&slots, k, &cur) {
@@ -836,17 +1033,115 @@ pub(super) fn square_heap<C: Ring, const K: usize>(
             advance(t, &mut slots, &mut js, &mut heap);
         }
         let acc = match (diag, off) {
-            (Some(d), Some(o)) => d + o.add_ref(&o),
+            (Some(mut d), Some(o)) => {
+                A::add(&mut d, A::double(o));
+                d
+            }
             (Some(d), None) => d,
-            (None, Some(o)) => o.add_ref(&o),
+            (None, Some(o)) => A::double(o),
             (None, None) => continue,
         };
-        if !acc.is_zero() {
+        if !A::is_zero(&acc) {
             push_sum(&mut out_e, &fe[i * w..(i + 1) * w], &fe[j * w..(j + 1) * w]);
             out_c.push(acc);
             if out_c.len() > max {
                 return None;
             }
+        }
+    }
+    Some((out_e, out_c))
+}
+
+/// Multiplication in word arithmetic directly in dense arrays of accumulators over the
+/// exponent box (for boxes of at most [`DIRECT_MAX_BYTES`]), one slab at a time: the output is
+/// formed for each exponent `t` of the top variable (the one with the largest stride) from the
+/// highest down, from the pairs of term groups whose top exponents add up to `t` (the factors
+/// are sorted, so each group is a run of terms). Every term product is one multiply-add into
+/// the slab (`stride` cells, small enough to stay in cache), and scanning the slab from the top
+/// yields the result sorted, each monomial decoded from its mixed-radix index (`strides`,
+/// radices `need + 1`). Cells that cancel to zero are skipped like untouched ones.
+pub(super) fn mul_dense_direct<A: WordArith>(
+    shape: Shape,
+    strides: &[u64],
+    need: &[u64],
+    (fi, fc): (&[u64], &[i64]),
+    (gi, gc): (&[u64], &[i64]),
+    max: usize,
+) -> Option<(Vec<u64>, Vec<A::Acc>)>
+where
+    A::Acc: Copy,
+{
+    let radices: Vec<(usize, u64, u64)> = need
+        .iter()
+        .enumerate()
+        .filter(|&(_, &n)| n > 0)
+        .map(|(v, &n)| (v, strides[v], n + 1))
+        .collect();
+    // The top variable: the largest stride (the last variable in use).
+    let &(_, slab, top_radix) = radices
+        .last()
+        .expect("a product of two polynomials of two terms or more has a variable");
+    let slab = slab as usize;
+    // Runs of equal top exponent: (top exponent, start, end), for f and by exponent for g.
+    let runs = |idx: &[u64]| -> Vec<(usize, usize, usize)> {
+        let mut out: Vec<(usize, usize, usize)> = Vec::new();
+        for (k, &x) in idx.iter().enumerate() {
+            let t = (x / slab as u64) as usize;
+            match out.last_mut() {
+                Some(r) if r.0 == t => r.2 = k + 1,
+                _ => out.push((t, k, k + 1)),
+            }
+        }
+        out
+    };
+    let low =
+        |idx: &[u64]| -> Vec<usize> { idx.iter().map(|&x| (x % slab as u64) as usize).collect() };
+    let (fr, gr) = (runs(fi), runs(gi));
+    let (fl, gl) = (low(fi), low(gi));
+    let mut g_of: Vec<Option<(usize, usize, usize)>> = vec![None; top_radix as usize];
+    for &(t, a, b) in &gr {
+        let top = gl[a..b].iter().copied().max().unwrap_or(0);
+        g_of[t] = Some((a, b, top));
+    }
+    let mut acc = vec![A::ZERO; slab];
+    let w = shape.words;
+    let mut out_e = Vec::new();
+    let mut out_c = Vec::new();
+    let mut m = vec![0u64; w];
+    for t in (0..top_radix as usize).rev() {
+        let mut touched = false;
+        for &(ta, fa, fb) in &fr {
+            let Some(Some((ga, gb, gtop))) = t.checked_sub(ta).map(|tb| g_of[tb]) else {
+                continue;
+            };
+            touched = true;
+            let (gcs, gls) = (&gc[ga..gb], &gl[ga..gb]);
+            for (a, &la) in fc[fa..fb].iter().zip(&fl[fa..fb]) {
+                // Every cell of this row is below `la + gtop + 1 <= slab`.
+                let row = &mut acc[la..la + gtop + 1];
+                for (b, &lb) in gcs.iter().zip(gls) {
+                    A::add_mul(&mut row[lb], a, b);
+                }
+            }
+        }
+        if !touched {
+            continue;
+        }
+        for (lo, c) in acc.iter_mut().enumerate().rev() {
+            if A::is_zero(c) {
+                continue;
+            }
+            if out_c.len() >= max {
+                return None;
+            }
+            let idx = (t * slab + lo) as u64;
+            m.fill(0);
+            for &(v, stride, radix) in &radices {
+                shape.set(&mut m, v, (idx / stride) % radix);
+            }
+            out_e.extend_from_slice(&m);
+            out_c.push(*c);
+            *c = A::ZERO;
         }
     }
     Some((out_e, out_c))

@@ -58,7 +58,18 @@
 //!     heap holds the keys themselves. Squaring runs the heap over the pairs `i <= j` only.
 //!
 //!   Full monomials are formed once per output term.
+//!
+//!   The kernels are generic over their coefficient arithmetic. For `Rational` and `ModP`
+//!   coefficients (the [`WordCoefficients`] hook, `words`) a product first writes both
+//!   coefficient lists as 63-bit integers over a common denominator and, when that succeeds,
+//!   runs the same kernels on `i64` words with `i64`, `i128` or 192-bit accumulators chosen by a
+//!   bound on every partial sum (no overflow checks in the loops), converting back once per
+//!   output term; dense products then accumulate directly in an array over the exponent box and
+//!   read it back in order (no sort). Other coefficient types, and lists that do not fit, take
+//!   the generic path.
 //! * Powers by binary powering (squarings and multiplications); a single term is raised directly.
+//!   A rational polynomial with a content `c != 1` is raised as `c^k P^k` with `P` primitive
+//!   integer, so a big rational content never rides through the expansion.
 //! * Normal forms ([`Poly::reduce`]) by multivariate division with a heap of pending monomials
 //!   and a hash map of their coefficients: every monomial leaves the heap once, already final. For
 //!   independent unit-circle relations `c_i^2 + s_i^2 - 1` (a Gröbner basis in any order) there
@@ -83,11 +94,15 @@ mod ring;
 #[cfg(test)]
 mod tests;
 mod to_expr;
+#[cfg(test)]
+mod word_tests;
+mod words;
 
 pub use display::PolyDisplay;
 pub use reduce::{groebner, unit_circle_relation};
 pub use ring::{Monomial, Poly, SizeError, Terms};
 pub use to_expr::CoeffExpr;
+pub use words::{WordCoefficients, WordSum};
 
 use exactcheck_core::Ring;
 use kernels::*;

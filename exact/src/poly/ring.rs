@@ -735,6 +735,9 @@ impl<C: Ring> Poly<C> {
         if self.len() <= 1 {
             return self.pow_term(e);
         }
+        if let Some((c, prim)) = self.split_content() {
+            return prim.pow_u64(e).scale(&pow_coeff(&c, e));
+        }
         let mut acc = Poly::one();
         let mut base = self.clone();
         loop {
@@ -747,6 +750,21 @@ impl<C: Ring> Poly<C> {
             }
             base = base.square_impl();
         }
+    }
+
+    /// `self = c * P` with a primitive integer `P` when the coefficients are rationals whose
+    /// content `c` is not 1 (see [`super::words`]); `None` otherwise. Powers expand `P^e` and
+    /// scale by `c^e` once, so a big rational content never rides through the expansion.
+    pub(super) fn split_content(&self) -> Option<(C, Self)> {
+        let (c, coeffs) = super::words::content_of(&self.coeffs)?;
+        Some((
+            c,
+            Poly {
+                shape: self.shape,
+                exps: self.exps.clone(),
+                coeffs,
+            },
+        ))
     }
 
     /// `self^e` for zero or a single term.
@@ -884,6 +902,10 @@ impl<C: Ring> Poly<C> {
         }
         if self.len() <= 1 {
             return Ok(self.pow_term(e));
+        }
+        if let Some((c, prim)) = self.split_content() {
+            let e32 = u32::try_from(e).expect("e came from a u32");
+            return Ok(prim.try_pow(e32)?.scale(&pow_coeff(&c, e)));
         }
         let mut e = e;
         let mut acc: Option<Poly<C>> = None;

@@ -1,0 +1,402 @@
+//! Machine-word coefficient kernels: the hook that lets the generic product kernels multiply
+//! `Rational` and `ModP` coefficients as `i64` and accumulate them in `i64`, `i128` or 192 bits.
+//!
+//! # The hook
+//! [`WordCoefficients`] is implemented by the coefficient types that have a machine-word image:
+//! [`WordCoefficients::to_words`] writes a coefficient list as integers `n_i` of at most 63 bits
+//! over one common denominator `d` (`c_i = n_i / d`; for a rational list `d` is the lcm of the
+//! denominators, so a polynomial with a small rational content rides along as FLINT's
+//! `fmpq_mpoly` stores it, content times an integer polynomial), and
+//! [`WordCoefficients::from_word_sum`] turns an exact integer sum `n` (at most 192 bits) over a
+//! denominator back into a coefficient, once per output term. `Poly<C>` stays generic over
+//! `C: Ring`; the kernels ask [`word_hooks`] for the hooks of `C`, which recognises the
+//! implementing types by their `TypeId` (every `Ring` is `'static`) and hands back plain function
+//! pointers, so there is no `unsafe`, no specialisation, and other coefficient types (radicals,
+//! polynomials) take the generic path unchanged. The number-type details stay in `exact`.
+//!
+//! # The accumulators
+//! Every output coefficient of `f g` is a sum of at most `min(#f, #g)` term products, so
+//! `B = max|F| max|G| min(#f, #g)` bounds every partial sum. With `B < 2^63` the kernels sum in
+//! `i64` ([`W64`]), with `B < 2^127` in `i128` ([`W128`]), and otherwise in a signed 192-bit
+//! `(hi: i64, lo: u128)` pair ([`W192`], the three-limb accumulation of FLINT's `mpoly`
+//! kernels): each product of two 63-bit words is below `2^126`, and at most `2^64` of them sum
+//! below `2^190`. No accumulator can overflow, so the kernels never check. Coefficients that do
+//! not fit (a numerator or the common denominator beyond 63 bits) send the whole product to the
+//! generic path on the coefficient type itself.
+//!
+//! Why hand-written: the coefficient kernels are the inner loops of every expansion; a generic
+//! big-number type cannot know that a bound keeps all sums in one or two machine words.
+
+use crate::gcd::gcd_u64;
+use crate::{ModP, Rational};
+use exactcheck_core::{Field, Ring};
+use num_bigint::BigInt;
+use std::any::Any;
+use std::marker::PhantomData;
+
+/// A signed integer of 192 bits, `hi * 2^128 + lo` (`lo` read unsigned): the exact value of a
+/// word kernel's accumulator.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct WordSum {
+    /// The high part (signed).
+    pub hi: i64,
+    /// The low 128 bits.
+    pub lo: u128,
+}
+
+impl WordSum {
+    /// The value `x`.
+    #[inline]
+    pub fn from_i128(x: i128) -> WordSum {
+        WordSum {
+            hi: if x < 0 { -1 } else { 0 },
+            lo: x as u128,
+        }
+    }
+
+    /// The value as an `i128`, if it fits.
+    #[inline]
+    pub fn to_i128(self) -> Option<i128> {
+        let x = self.lo as i128;
+        ((self.hi == 0 && x >= 0) || (self.hi == -1 && x < 0)).then_some(x)
+    }
+
+    /// The value as a big integer.
+    pub fn to_bigint(self) -> BigInt {
+        (BigInt::from(self.hi) << 128) + BigInt::from(self.lo)
+    }
+
+    /// `self += p`.
+    #[inline(always)]
+    fn add_i128(&mut self, p: i128) {
+        // lo + (p as u128) = lo + p + 2^128 [p < 0]; a carry out adds 2^128.
+        let (s, carry) = self.lo.overflowing_add(p as u128);
+        self.lo = s;
+        self.hi = self.hi.wrapping_add(carry as i64 - (p < 0) as i64);
+    }
+
+    /// `self += x`.
+    #[inline(always)]
+    fn add(&mut self, x: WordSum) {
+        let (s, carry) = self.lo.overflowing_add(x.lo);
+        self.lo = s;
+        self.hi = self.hi.wrapping_add(x.hi).wrapping_add(carry as i64);
+    }
+}
+
+/// Coefficient types with a machine-word image, for the product kernels (see the module
+/// documentation).
+pub trait WordCoefficients: Ring {
+    /// The coefficients as integers `n_i` over one common denominator `d >= 1`
+    /// (`c_i = n_i / d`), every `|n_i| < 2^63` (`i64::MIN` excluded) and `d < 2^63`; `None` when
+    /// that is not possible (the product then takes the generic path).
+    fn to_words(coeffs: &[Self]) -> Option<(Vec<i64>, i64)>;
+
+    /// The coefficient `n / d` (`d >= 1`, a product of two denominators of
+    /// [`WordCoefficients::to_words`]).
+    fn from_word_sum(n: WordSum, d: i128) -> Self;
+}
+
+impl WordCoefficients for Rational {
+    fn to_words(coeffs: &[Rational]) -> Option<(Vec<i64>, i64)> {
+        let mut l: i64 = 1;
+        for c in coeffs {
+            let (_, d) = c.inline_parts()?;
+            if d != 1 {
+                let d = i64::try_from(d).ok()?;
+                let g = gcd_u64(l as u64, d as u64) as i64;
+                l = (l / g).checked_mul(d)?;
+            }
+        }
+        let mut out = Vec::with_capacity(coeffs.len());
+        for c in coeffs {
+            let (n, d) = c.inline_parts()?;
+            let scaled = if l == 1 {
+                n
+            } else {
+                n.checked_mul(l as i128 / d)?
+            };
+            out.push(i64::try_from(scaled).ok().filter(|&x| x != i64::MIN)?);
+        }
+        Some((out, l))
+    }
+
+    fn from_word_sum(n: WordSum, d: i128) -> Rational {
+        match n.to_i128() {
+            Some(x) if d == 1 => match i64::try_from(x) {
+                Ok(s) => Rational::from_integer(s),
+                Err(_) => Rational::from_i128_ratio(x, 1).expect("1 is not zero"),
+            },
+            Some(x) => Rational::from_i128_ratio(x, d).expect("word denominators are >= 1"),
+            None => {
+                let q = Rational::from(n.to_bigint());
+                if d == 1 {
+                    q
+                } else {
+                    let d = Rational::from_i128_ratio(d, 1).expect("1 is not zero");
+                    q.checked_div(&d).expect("word denominators are >= 1")
+                }
+            }
+        }
+    }
+}
+
+impl WordCoefficients for ModP {
+    fn to_words(coeffs: &[ModP]) -> Option<(Vec<i64>, i64)> {
+        // Residues are below 2^61.
+        Some((coeffs.iter().map(|c| c.value() as i64).collect(), 1))
+    }
+
+    fn from_word_sum(n: WordSum, d: i128) -> ModP {
+        // 2^128 = 2^(2*61 + 6) = 2^6 modulo 2^61 - 1.
+        let v = ModP::from_u128(n.lo) + ModP::from_i64(n.hi) * ModP::new(64);
+        if d == 1 {
+            v
+        } else {
+            let d = ModP::from_u128(d as u128);
+            v * d
+                .inv()
+                .expect("the modulus divides no word denominator (ModP's are all 1)")
+        }
+    }
+}
+
+/// [`WordCoefficients::to_words`] as a function pointer.
+type ToWords<C> = fn(&[C]) -> Option<(Vec<i64>, i64)>;
+/// A content split (see [`content_of`]) as a function pointer.
+type ContentSplit<C> = fn(&[C]) -> Option<(C, Vec<C>)>;
+
+/// The word hooks of one coefficient type, as plain function pointers.
+pub(super) struct WordHooks<C> {
+    pub(super) to_words: ToWords<C>,
+    pub(super) from_word_sum: fn(WordSum, i128) -> C,
+}
+
+impl<C> Clone for WordHooks<C> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+impl<C> Copy for WordHooks<C> {}
+
+/// `t` as a `U` when `T` and `U` are the same type.
+fn cast<T: 'static, U: 'static>(t: T) -> Option<U> {
+    let mut slot = Some(t);
+    (&mut slot as &mut dyn Any)
+        .downcast_mut::<Option<U>>()
+        .and_then(Option::take)
+}
+
+/// The word hooks of `C` when it implements [`WordCoefficients`] (`Rational`, `ModP`), `None`
+/// for every other coefficient type.
+pub(super) fn word_hooks<C: Ring>() -> Option<WordHooks<C>> {
+    fn of<W: WordCoefficients>() -> WordHooks<W> {
+        WordHooks {
+            to_words: W::to_words,
+            from_word_sum: W::from_word_sum,
+        }
+    }
+    cast::<WordHooks<Rational>, WordHooks<C>>(of::<Rational>())
+        .or_else(|| cast::<WordHooks<ModP>, WordHooks<C>>(of::<ModP>()))
+}
+
+/// The content of a polynomial with rational coefficients, for powers: `c = gcd(numerators) /
+/// lcm(denominators)` (positive) and the primitive integer coefficients `c_i / c`; `None` when
+/// `c = 1` or `C` is not `Rational`.
+pub(super) fn content_of<C: Ring>(coeffs: &[C]) -> Option<(C, Vec<C>)> {
+    let split: ContentSplit<Rational> = rational_content_impl;
+    cast::<ContentSplit<Rational>, ContentSplit<C>>(split)?(coeffs)
+}
+
+fn rational_content_impl(q: &[Rational]) -> Option<(Rational, Vec<Rational>)> {
+    use num_integer::Integer;
+    use num_traits::{One, Zero};
+    if q.is_empty() {
+        return None;
+    }
+    let mut g = BigInt::zero();
+    let mut l = BigInt::one();
+    for c in q {
+        g = g.gcd(&c.numer());
+        if !c.is_integer() {
+            l = l.lcm(&c.denom());
+        }
+    }
+    let content = Rational::from(g) / Rational::from(l);
+    if content.is_one() {
+        return None;
+    }
+    let prim = q
+        .iter()
+        .map(|c| {
+            c.checked_div(&content)
+                .expect("the content of a non-zero list is not zero")
+        })
+        .collect();
+    Some((content, prim))
+}
+
+// ------------------------------------------------------------------------------ arithmetic
+
+/// The coefficient arithmetic of a product kernel: inputs `In`, exact partial sums `Acc`.
+pub(super) trait Arith {
+    type In;
+    type Acc: Clone;
+    fn mul(a: &Self::In, b: &Self::In) -> Self::Acc;
+    fn add_mul(acc: &mut Self::Acc, a: &Self::In, b: &Self::In);
+    fn add(acc: &mut Self::Acc, x: Self::Acc);
+    fn double(x: Self::Acc) -> Self::Acc;
+    fn is_zero(x: &Self::Acc) -> bool;
+}
+
+/// The generic arithmetic: the ring's own operations.
+pub(super) struct Generic<C>(PhantomData<C>);
+
+impl<C: Ring> Arith for Generic<C> {
+    type In = C;
+    type Acc = C;
+    #[inline(always)]
+    fn mul(a: &C, b: &C) -> C {
+        a.mul_ref(b)
+    }
+    #[inline(always)]
+    fn add_mul(acc: &mut C, a: &C, b: &C) {
+        *acc += a.mul_ref(b);
+    }
+    #[inline(always)]
+    fn add(acc: &mut C, x: C) {
+        *acc += x;
+    }
+    #[inline(always)]
+    fn double(x: C) -> C {
+        x.add_ref(&x)
+    }
+    #[inline(always)]
+    fn is_zero(x: &C) -> bool {
+        x.is_zero()
+    }
+}
+
+/// Word arithmetic: `i64` inputs, an accumulator with an exact [`WordSum`] and a zero.
+pub(super) trait WordArith: Arith<In = i64, Acc: Copy> {
+    const ZERO: Self::Acc;
+    fn sum(x: Self::Acc) -> WordSum;
+}
+
+/// `i64` accumulators (every partial sum below `2^63`).
+pub(super) struct W64;
+/// `i128` accumulators (every partial sum below `2^127`).
+pub(super) struct W128;
+/// 192-bit accumulators.
+pub(super) struct W192;
+
+impl Arith for W64 {
+    type In = i64;
+    type Acc = i64;
+    #[inline(always)]
+    fn mul(a: &i64, b: &i64) -> i64 {
+        a * b
+    }
+    #[inline(always)]
+    fn add_mul(acc: &mut i64, a: &i64, b: &i64) {
+        *acc += a * b;
+    }
+    #[inline(always)]
+    fn add(acc: &mut i64, x: i64) {
+        *acc += x;
+    }
+    #[inline(always)]
+    fn double(x: i64) -> i64 {
+        2 * x
+    }
+    #[inline(always)]
+    fn is_zero(x: &i64) -> bool {
+        *x == 0
+    }
+}
+
+impl WordArith for W64 {
+    const ZERO: i64 = 0;
+    fn sum(x: i64) -> WordSum {
+        WordSum::from_i128(x as i128)
+    }
+}
+
+impl Arith for W128 {
+    type In = i64;
+    type Acc = i128;
+    #[inline(always)]
+    fn mul(a: &i64, b: &i64) -> i128 {
+        *a as i128 * *b as i128
+    }
+    #[inline(always)]
+    fn add_mul(acc: &mut i128, a: &i64, b: &i64) {
+        *acc += *a as i128 * *b as i128;
+    }
+    #[inline(always)]
+    fn add(acc: &mut i128, x: i128) {
+        *acc += x;
+    }
+    #[inline(always)]
+    fn double(x: i128) -> i128 {
+        2 * x
+    }
+    #[inline(always)]
+    fn is_zero(x: &i128) -> bool {
+        *x == 0
+    }
+}
+
+impl WordArith for W128 {
+    const ZERO: i128 = 0;
+    fn sum(x: i128) -> WordSum {
+        WordSum::from_i128(x)
+    }
+}
+
+impl Arith for W192 {
+    type In = i64;
+    type Acc = WordSum;
+    #[inline(always)]
+    fn mul(a: &i64, b: &i64) -> WordSum {
+        WordSum::from_i128(*a as i128 * *b as i128)
+    }
+    #[inline(always)]
+    fn add_mul(acc: &mut WordSum, a: &i64, b: &i64) {
+        acc.add_i128(*a as i128 * *b as i128);
+    }
+    #[inline(always)]
+    fn add(acc: &mut WordSum, x: WordSum) {
+        acc.add(x);
+    }
+    #[inline(always)]
+    fn double(x: WordSum) -> WordSum {
+        let mut y = x;
+        y.add(x);
+        y
+    }
+    #[inline(always)]
+    fn is_zero(x: &WordSum) -> bool {
+        x.hi == 0 && x.lo == 0
+    }
+}
+
+impl WordArith for W192 {
+    const ZERO: WordSum = WordSum { hi: 0, lo: 0 };
+    fn sum(x: WordSum) -> WordSum {
+        x
+    }
+}
+
+/// Which accumulator a product needs: `B = max|F| max|G| min(#f, #g)` (see the module
+/// documentation); 0 for `i64`, 1 for `i128`, 2 for 192 bits.
+pub(super) fn accumulator_for(f: &[i64], g: &[i64]) -> u8 {
+    let max = |v: &[i64]| v.iter().map(|x| x.unsigned_abs()).max().unwrap_or(0) as u128;
+    let n = f.len().min(g.len()) as u128;
+    let bound = (max(f) * max(g)).checked_mul(n);
+    match bound {
+        Some(b) if b < 1 << 63 => 0,
+        Some(b) if b < 1 << 127 => 1,
+        _ => 2,
+    }
+}
