@@ -266,3 +266,24 @@ fn float_ph_offset_with_a_missed_singular_end_is_an_input_error() {
     assert!(e.to_string().contains("singular"), "{e}");
     run(text, |_, _| {});
 }
+
+/// Found by the `ruled_line` property: the line lies on the surface and the ruling at t = 0 is
+/// parallel to it, so `lambda_at_ends` is `[null, 3]` in both modes — a defined "nowhere or
+/// everywhere", not a NaN written as `null` (the property's null check now knows the field).
+#[test]
+fn ruled_line_on_the_surface_with_a_parallel_end_ruling() {
+    let text = r#"{"kind":"ruled_line","base":[[-1,-3,2]],"directions":[[-2,-1,-1],[2,-1,1]],"line":{"point":[1,2,3],"direction":[-2,-1,-1]}}"#;
+    for mode in [Mode::Exact, Mode::Float] {
+        let v = solve(text, mode).expect("answers");
+        assert_eq!(v["outcome"], "line_on_surface", "{mode:?}");
+        assert!(v["lambda_at_ends"][0].is_null(), "{mode:?}");
+        assert_eq!(
+            v["lambda_at_ends"][1]
+                .as_f64()
+                .or_else(|| v["lambda_at_ends"][1].as_str().and_then(|s| s.parse().ok())),
+            Some(3.0),
+            "{mode:?}"
+        );
+    }
+    run(text, |_, _| {});
+}

@@ -465,7 +465,8 @@ struct AnswerOut<S> {
     /// `parallel_to_every_ruling`: the roots `t` whose ruling is the line (`null`: every ruling).
     #[serde(skip_serializing_if = "Option::is_none")]
     rulings_on_line: Option<Option<Vec<ParamOut<S>>>>,
-    /// `line_on_surface`: `lambda` of the meeting points of the rulings `t = 0` and `t = 1`.
+    /// `line_on_surface`: `lambda` of the meeting points of the rulings `t = 0` and `t = 1`
+    /// (`null` at an end whose ruling is parallel to the line, so meets it nowhere or everywhere).
     #[serde(skip_serializing_if = "Option::is_none")]
     lambda_at_ends: Option<[Option<S>; 2]>,
     #[serde(skip_serializing_if = "Option::is_none")]
