@@ -511,98 +511,104 @@ impl Refiner<'_> {
         (p, d)
     }
 
-    /// Refines `(lo, hi)` (end signs `s_lo`, `-s_lo`) to width at most `w`.
+    /// Refines `(lo, hi)` (end signs `s_lo`, `-s_lo`) to width at most `w`: filtered bisection,
+    /// then safeguarded Newton steps with a final two-point verification (module documentation).
     fn refine(&self, lo: Rational, hi: Rational, s_lo: Sign, w: &Rational) -> RootInterval {
         let (mut lo, mut hi) = (lo, hi);
         if hi.sub_ref(&lo) <= *w {
             return RootInterval { lo, hi };
         }
-        // h = 2^-kk, the largest power of two with 4h <= w.
+        // h = 2^-kk, the largest power of two with 4h <= w (h = 1 when w >= 4).
         let mut kk: u64 = 0;
-        {
-            let mut h4 = Rational::from_integer(4);
-            while h4 > *w {
-                h4 = h4 * half();
-                kk += 1;
-            }
+        let mut h4 = Rational::from_integer(4);
+        while h4 > *w {
+            h4 = h4 * half();
+            kk += 1;
         }
+        let scale = (kk as f64).exp2();
         let s_hi = sign_neg(s_lo);
+        // The last exact evaluation (x, q(x) 2^(k n), q'(x) 2^(k (n-1))).
         let mut newton: Option<(Dyadic, BigInt, BigInt)> = None;
-        let mut force_bisect = false;
+        // The size of the last step in units of h (Newton correction or half bracket).
+        let mut last_step = f64::INFINITY;
         let mut filter_ok = true;
         loop {
             let width = hi.sub_ref(&lo);
             if width <= *w {
                 return RootInterval { lo, hi };
             }
-            // Candidate Newton point on the grid 2^-kk.
-            let mut next: Option<Dyadic> = None;
-            let mut verify: Option<BigInt> = None;
-            if let (false, Some((x, p, d))) = (force_bisect, &newton) {
-                if let (Some((pm, pe)), Some((dm, de))) = (approx(p), approx(d)) {
-                    // delta 2^kk = p / (d 2^x.exp) 2^kk
+            let width_h = width.to_f64() * scale;
+            // The Newton correction t = (q / q') 2^kk from the last exact evaluation, and the
+            // Newton point g = x 2^kk - t on the grid h.
+            let mut proposal: Option<(f64, BigInt)> = None;
+            if let Some((x, p, d)) = newton.take() {
+                if let (Some((pm, pe)), Some((dm, de))) = (approx(&p), approx(&d)) {
                     let e = pe - de + kk as i64 - x.exp as i64;
                     if e < 62 {
                         let t = (pm / dm) * (e as f64).exp2();
-                        if t.abs() < 9.0e18 {
-                            let t = t.round() as i64;
-                            let g = (&x.num << (kk - x.exp)) - t;
-                            if t.unsigned_abs() <= 1 << 10 {
-                                verify = Some(g);
-                            } else {
-                                next = Some(Dyadic { num: g, exp: kk });
+                        if t.abs() < 4.0e18 {
+                            let g = (&x.num << (kk - x.exp)) - (t.round() as i64);
+                            proposal = Some((t.abs(), g));
+                        }
+                    }
+                }
+            }
+            let mut next: Option<Dyadic> = None;
+            if let Some((t, g)) = proposal {
+                if t <= 1024.0 {
+                    // Converged: certify [g - 2h, g + 2h] by the signs at its ends.
+                    let a = Dyadic {
+                        num: &g - 2,
+                        exp: kk,
+                    };
+                    let b = Dyadic {
+                        num: g + 2,
+                        exp: kk,
+                    };
+                    let (ar, br) = (a.to_rational(), b.to_rational());
+                    let mut left_ok = true;
+                    if ar > lo && ar < hi {
+                        let (p, d) = self.eval_exact(&a);
+                        match sign_of(&p) {
+                            Sign::Zero => return RootInterval::exact(ar),
+                            s if s == s_lo => lo = ar,
+                            _ => {
+                                hi = ar;
+                                left_ok = false;
                             }
                         }
+                        newton = Some((a, p, d));
                     }
-                }
-            }
-            if let Some(g) = verify {
-                let a = Dyadic {
-                    num: &g - 2,
-                    exp: kk,
-                };
-                let b = Dyadic {
-                    num: &g + 2,
-                    exp: kk,
-                };
-                let (ar, br) = (a.to_rational(), b.to_rational());
-                let mut ok = true;
-                if ar > lo && ar < hi {
-                    let (p, d) = self.eval_exact(&a);
-                    match sign_of(&p) {
-                        Sign::Zero => return RootInterval::exact(ar),
-                        s if s == s_lo => lo = ar,
-                        _ => {
-                            hi = ar;
-                            ok = false;
+                    if left_ok && br > lo && br < hi {
+                        let (p, d) = self.eval_exact(&b);
+                        match sign_of(&p) {
+                            Sign::Zero => return RootInterval::exact(br),
+                            s if s == s_hi => hi = br,
+                            _ => lo = br,
                         }
+                        newton = Some((b, p, d));
                     }
-                    newton = Some((a, p, d));
-                }
-                if ok && br > lo && br < hi {
-                    let (p, d) = self.eval_exact(&b);
-                    match sign_of(&p) {
-                        Sign::Zero => return RootInterval::exact(br),
-                        s if s == s_hi => hi = br,
-                        _ => lo = br,
+                    if hi.sub_ref(&lo) > *w {
+                        // The verification failed: bisect next.
+                        newton = None;
+                        last_step = f64::INFINITY;
                     }
-                    newton = Some((b, p, d));
+                    continue;
                 }
-                force_bisect = hi.sub_ref(&lo) > *w;
-                continue;
+                let gd = Dyadic { num: g, exp: kk };
+                let gr = gd.to_rational();
+                if t <= last_step / 2.0 && gr > lo && gr < hi {
+                    last_step = t;
+                    next = Some(gd);
+                }
             }
-            let was_newton = next.is_some();
             let x = match next {
-                Some(g)
-                    if {
-                        let gr = g.to_rational();
-                        gr > lo && gr < hi
-                    } =>
-                {
-                    g
-                }
-                _ => {
-                    // A dyadic point in the middle half: 2^-e <= width / 4.
+                Some(g) => g,
+                None => {
+                    last_step = width_h / 2.0;
+                    // A dyadic point in the middle half: 2^-e <= width / 4, so
+                    // floor(mid 2^e) / 2^e > mid - 2^-e >= mid - width / 4 > lo, and e <= kk
+                    // because 2^-kk <= w / 4 < width / 4.
                     let mid = midpoint(&lo, &hi);
                     let mut e = 0u64;
                     let mut step = Rational::ONE;
@@ -611,14 +617,11 @@ impl Refiner<'_> {
                         step = step * half();
                         e += 1;
                     }
-                    // floor(mid 2^e) / 2^e > mid - 2^-e >= mid - width / 4 > lo, and e <= kk
-                    // because 2^-kk <= w / 4 < width / 4.
                     Dyadic::floor_of(&mid, e)
                 }
             };
             let xr = x.to_rational();
             debug_assert!(xr > lo && xr < hi);
-            let before = width;
             let s = match filter_ok.then(|| self.filtered_sign(&x)).flatten() {
                 Some(s) => s,
                 None => {
@@ -634,7 +637,6 @@ impl Refiner<'_> {
                 s if s == s_lo => lo = xr,
                 _ => hi = xr,
             }
-            force_bisect = was_newton && hi.sub_ref(&lo) * Rational::from_integer(2) > before;
         }
     }
 }
@@ -664,7 +666,8 @@ pub fn integer_real_roots(coeffs: &[BigInt]) -> Result<Vec<RootInterval>, ZeroPo
 }
 
 /// [`integer_real_roots`], each interval refined to width at most `width` (see the module
-/// documentation; a root hit by an evaluation point is exact).
+/// documentation; a root hit by an evaluation point is exact). Unlike the isolating intervals,
+/// which may share an end, the refined intervals are disjoint as closed intervals.
 ///
 /// # Errors
 /// [`ZeroPolynomial`] for the zero polynomial.
@@ -685,22 +688,33 @@ pub fn integer_real_roots_to(
     let roots = isolate_square_free(&q);
     let refiner = Refiner::new(&q);
     let k = roots.len();
-    Ok(roots
-        .into_iter()
-        .enumerate()
-        .map(|(i, ri)| {
-            if ri.is_exact() {
-                return ri;
+    let mut out: Vec<RootInterval> = Vec::with_capacity(k);
+    for (i, ri) in roots.into_iter().enumerate() {
+        if ri.is_exact() {
+            out.push(ri);
+            continue;
+        }
+        // The sign right of root i is (-1)^(k-1-i) (positive leading coefficient).
+        let s_right = if (k - 1 - i) % 2 == 0 {
+            Sign::Positive
+        } else {
+            Sign::Negative
+        };
+        let s_lo = sign_neg(s_right);
+        let r = refiner.refine(ri.lo, ri.hi, s_lo, width);
+        // Isolating intervals may share an end (a subdivision point); the closed refined
+        // intervals must not: narrow the left one until its upper end moves (its root is
+        // strictly below the shared end).
+        if let Some(prev) = out.last_mut() {
+            while !prev.is_exact() && prev.hi == r.lo {
+                let s_prev = sign_neg(s_lo);
+                let half_width = prev.width() * half();
+                *prev = refiner.refine(prev.lo.clone(), prev.hi.clone(), s_prev, &half_width);
             }
-            // The sign right of root i is (-1)^(k-1-i) (positive leading coefficient).
-            let s_right = if (k - 1 - i) % 2 == 0 {
-                Sign::Positive
-            } else {
-                Sign::Negative
-            };
-            refiner.refine(ri.lo, ri.hi, sign_neg(s_right), width)
-        })
-        .collect())
+        }
+        out.push(r);
+    }
+    Ok(out)
 }
 
 /// The primitive square-free part, `None` for non-zero constants.
@@ -755,5 +769,128 @@ impl UPoly {
             return Vec::new();
         }
         integer_real_roots_to(&self.integer_coefficients(), width).expect("not the zero polynomial")
+    }
+}
+
+#[cfg(test)]
+mod unit_tests {
+    use super::*;
+    use exactcheck_core::bernstein::Bernstein;
+    use exactcheck_core::Rng;
+
+    fn bigs(c: &[i64]) -> Vec<BigInt> {
+        c.iter().map(|&x| BigInt::from(x)).collect()
+    }
+
+    fn rationals(c: &[BigInt]) -> Vec<Rational> {
+        c.iter().cloned().map(Rational::from).collect()
+    }
+
+    /// `a` is a positive multiple of `b` (coefficientwise, zeros included).
+    fn positive_multiple(a: &[BigInt], b: &[Rational]) {
+        assert_eq!(a.len(), b.len());
+        let mut ratio: Option<Rational> = None;
+        for (x, y) in a.iter().zip(b) {
+            assert_eq!(x.is_zero(), y.is_zero(), "{a:?} vs {b:?}");
+            if !y.is_zero() {
+                let r = Rational::from(x.clone()) / y.clone();
+                assert_eq!(r.signum(), Sign::Positive);
+                if let Some(q) = &ratio {
+                    assert_eq!(&r, q);
+                }
+                ratio = Some(r);
+            }
+        }
+    }
+
+    fn random_poly(rng: &mut Rng, n: usize) -> Vec<BigInt> {
+        let mut c: Vec<BigInt> = (0..=n)
+            .map(|_| BigInt::from(rng.below(2001) as i64 - 1000))
+            .collect();
+        if c[n].is_zero() {
+            c[n] = BigInt::one();
+        }
+        c
+    }
+
+    #[test]
+    fn integer_bernstein_form_and_split_match_the_rational_ones() {
+        let mut rng = Rng::new(14);
+        for n in 1..=12 {
+            let p = random_poly(&mut rng, n);
+            let b = to_bernstein_integer(&p);
+            let exact = Bernstein::from_power(&rationals(&p)).expect("non-empty");
+            positive_multiple(&b, exact.coeffs());
+            let (l, r) = split_half(&b);
+            let (el, er) = exact.split(&half());
+            positive_multiple(&l, el.coeffs());
+            positive_multiple(&r, er.coeffs());
+        }
+    }
+
+    #[test]
+    fn modular_square_free_test() {
+        // (x - 1)^2 (x + 2) is not square-free: never "proved".
+        assert!(!is_square_free_mod_p(&bigs(&[2, -3, 0, 1])));
+        assert!(is_square_free_mod_p(&bigs(&[1, 0, 1])));
+        assert!(is_square_free_mod_p(&super::super::w4::wilkinson(30)));
+        // The square-free part of (x - 1)^2 (x + 2) is x^2 + x - 2.
+        assert_eq!(
+            square_free_integer(&bigs(&[-4, 6, 0, -2])),
+            bigs(&[-2, 1, 1])
+        );
+    }
+
+    #[test]
+    fn the_filter_never_contradicts_the_exact_sign() {
+        let mut rng = Rng::new(53);
+        let polys = [
+            super::super::w4::wilkinson(20),
+            super::super::w4::mignotte(30),
+            super::super::w4::random(40),
+            random_poly(&mut rng, 25),
+        ];
+        let mut decided = 0;
+        for q in &polys {
+            let r = Refiner::new(q);
+            for _ in 0..400 {
+                let exp = rng.below(60);
+                let num = BigInt::from(rng.below(1 << 62) as i64 - (1 << 61)) >> (62 - exp.min(62));
+                let x = Dyadic { num, exp };
+                let (p, _) = r.eval_exact(&x);
+                if let Some(s) = r.filtered_sign(&x) {
+                    decided += 1;
+                    assert_eq!(s, sign_of(&p), "{x:?}");
+                }
+                let xr = x.to_rational();
+                let v = upoly_of(q).eval(&xr);
+                assert_eq!(sign_of(&p), v.signum());
+            }
+        }
+        assert!(decided > 100, "the filter decided only {decided} signs");
+    }
+
+    fn upoly_of(q: &[BigInt]) -> UPoly {
+        UPoly::from_coeffs(rationals(q))
+    }
+
+    #[test]
+    fn refinement_brackets_roots_of_close_pairs() {
+        // Roots 1/3 and 1/3 + 2^-40.
+        let third = Rational::new(1, 3).expect("3");
+        let p = UPoly::from_roots(&[
+            Rational::new(1, 3).expect("3"),
+            Rational::new(1, 3).expect("3")
+                + Rational::from(BigInt::one()) / Rational::from(BigInt::one() << 40u32),
+        ]);
+        let w = super::super::w4::target_width();
+        let roots = p.isolate_real_roots_to(&w);
+        assert_eq!(roots.len(), 2);
+        assert!(roots[0].hi < roots[1].lo);
+        for r in &roots {
+            assert!(r.is_exact() || r.width() <= w);
+        }
+        assert!(roots[0].lo <= third && third <= roots[0].hi);
+        assert!(roots[1].lo > third);
     }
 }
