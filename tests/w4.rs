@@ -226,7 +226,7 @@ proptest! {
         }
         for (a, b, m) in factors {
             for _ in 0..m {
-                p = p * UPoly::from_i64_coeffs(&[-b, a]);
+                p *= UPoly::from_i64_coeffs(&[-b, a]);
             }
         }
         if p.degree() > 30 {

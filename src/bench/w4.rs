@@ -96,7 +96,7 @@ fn describe(r: &RootInterval) -> String {
     let mut ten_k = Rational::from(BigInt::from(10u32).pow(16));
     while k < 400 && w.mul_ref(&ten_k) < Rational::ONE {
         k += 1;
-        ten_k = ten_k * Rational::from_integer(10);
+        ten_k *= Rational::from_integer(10);
     }
     format!("{} (width {:.1e})", decimal(&r.lo, k), w.to_f64())
 }

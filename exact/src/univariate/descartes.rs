@@ -522,7 +522,7 @@ impl Refiner<'_> {
         let mut kk: u64 = 0;
         let mut h4 = Rational::from_integer(4);
         while h4 > *w {
-            h4 = h4 * half();
+            h4 *= half();
             kk += 1;
         }
         let scale = (kk as f64).exp2();
@@ -614,7 +614,7 @@ impl Refiner<'_> {
                     let mut step = Rational::ONE;
                     let quarter = width.mul_ref(&Rational::new(1, 4).expect("4 != 0"));
                     while step > quarter {
-                        step = step * half();
+                        step *= half();
                         e += 1;
                     }
                     Dyadic::floor_of(&mid, e)
