@@ -3,9 +3,13 @@
 //! `(t - k/(d+1))` (d roots in [0, 1], close together at degree 40) and on seeded random integer
 //! polynomials (coefficients in [-100, 100], few roots in [0, 1]). The faster method is the
 //! default of `UPoly::unit_roots`; the measured table is in README_roots.md.
+//!
+//! The group `w4` times issue 14's W4 at the six comparison sizes (`w4::solve`: all real roots
+//! isolated by Descartes' rule and refined to width 2^-53), each root count asserted first.
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use exactcheck_core::Rng;
+use exactcheck_exact::univariate::w4::{self, Family};
 use exactcheck_exact::univariate::{UPoly, UnitRootMethod};
 use exactcheck_exact::Rational;
 use std::time::Duration;
@@ -57,5 +61,30 @@ fn bench(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, bench);
+fn bench_w4(c: &mut Criterion) {
+    let mut g = c.benchmark_group("w4");
+    g.sample_size(10);
+    g.warm_up_time(Duration::from_millis(300));
+    g.measurement_time(Duration::from_secs(2));
+    for (family, degree, count) in [
+        (Family::Wilkinson, 20, 20),
+        (Family::Wilkinson, 40, 40),
+        (Family::Random, 50, 4),
+        (Family::Random, 100, 2),
+        (Family::Mignotte, 20, 4),
+        (Family::Mignotte, 40, 4),
+    ] {
+        let coeffs = family.polynomial(degree);
+        // The check value (the same count in python-flint and SymPy) before timing.
+        assert_eq!(w4::solve(&coeffs).len(), count, "{family:?} {degree}");
+        g.bench_with_input(
+            BenchmarkId::new(family.name(), degree),
+            &coeffs,
+            |b, coeffs| b.iter(|| w4::solve(coeffs)),
+        );
+    }
+    g.finish();
+}
+
+criterion_group!(benches, bench, bench_w4);
 criterion_main!(benches);

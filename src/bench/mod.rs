@@ -20,6 +20,7 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 pub mod w1;
+pub mod w4;
 
 /// The largest `bench w2 --n` in mode `eval` (about a minute).
 pub const MAX_W2_EVAL_N: usize = 10_000_000;
@@ -119,6 +120,18 @@ pub enum Workload {
         #[arg(long)]
         json: bool,
     },
+    /// W4: all real roots of an integer polynomial isolated to width 2^-53 (Descartes' rule).
+    W4 {
+        /// The family of polynomials.
+        #[arg(long, value_enum)]
+        family: w4::W4Family,
+        /// The degree (at least 1, at most 2000).
+        #[arg(long)]
+        degree: usize,
+        /// Print one JSON line (as `scripts/anchors/w4_roots.py`) instead of text.
+        #[arg(long)]
+        json: bool,
+    },
 }
 
 /// The variants of W3.
@@ -159,6 +172,11 @@ pub fn run(args: &BenchArgs) -> Result<ExitCode, Error> {
             json,
         } => w1::bench_w1(m, n, negative, json)?,
         Workload::Dense { k, vars, json } => w1::bench_dense(k, vars, json)?,
+        Workload::W4 {
+            family,
+            degree,
+            json,
+        } => w4::bench_w4(family, degree, json)?,
         Workload::Formula { n, seed, serial } => {
             let n = check_count("--n", n, MAX_FORMULA_N, "")?;
             bench_formula(n, seed, serial)

@@ -53,12 +53,15 @@
 //! test for a rational root then refines quadratically to `1/(2l)`, `l` as above.
 
 mod bernstein_roots;
+mod descartes;
 mod isolate;
 #[cfg(test)]
 mod tests;
 mod upoly;
+pub mod w4;
 
 pub use bernstein_roots::UnitRootMethod;
+pub use descartes::{integer_real_roots, integer_real_roots_to, MAX_DESCARTES_DEGREE};
 pub use exactcheck_core::roots::{IsolatedRoot, ZeroPolynomial};
 pub use isolate::sign_variations;
 pub use upoly::UPolyDisplay;

@@ -1,0 +1,896 @@
+//! Real root isolation of integer polynomials on the whole real line by Descartes' rule of signs
+//! (Vincent–Collins–Akritas bisection in the Bernstein basis, on integers), and refinement of
+//! the isolating intervals to a given width by filtered exact sign evaluation at dyadic points
+//! with Newton steps.
+//!
+//! # Isolation
+//! 1. **Primitive square-free part.** The input is made primitive with a positive leading
+//!    coefficient. It is square-free when `gcd(q mod p, q' mod p) = 1` over `F_p` for a prime `p`
+//!    that divides neither the leading coefficient of `q` nor that of `q'`: then the resultant
+//!    `Res(q, q')` (which reduces modulo `p` to the resultant of the reductions, the degrees being
+//!    kept) is non-zero modulo `p`, hence non-zero, hence `gcd(q, q') = 1` over `Q`. Three 61/62-bit
+//!    primes are tried ([`is_square_free_mod_p`], `O(n^2)` word operations); only when all fail
+//!    (a repeated root, or a resultant divisible by all three) is the exact square-free part
+//!    computed by the primitive remainder sequence ([`UPoly::square_free_part`]).
+//! 2. **Four unit problems.** The real line minus `{-1, 0, 1}` is covered by `(0, 1)`, `(1, inf)`,
+//!    `(-1, 0)` and `(-inf, -1)`; the roots of `q` there are the roots in `(0, 1)` of `q(x)`,
+//!    `x^n q(1/x)`, `q(-x)` and `x^n q(-1/x)`. The points `0, 1, -1` are tested exactly. An
+//!    interval `(0, b)` of the two reciprocal problems maps to `(1/b, B)` (resp. `(-B, -1/b)`) with
+//!    `B` a power of two above Cauchy's bound `1 + max |a_i / a_n|`, so every interval is bounded.
+//! 3. **Bernstein form on integers.** The Bernstein coefficients `b_i` of a degree-`n`
+//!    polynomial on `[0, 1]` are `c_{n-i} / C(n, i)`, `c` the coefficients of `(1 + y)^n p(1/(1 + y))`
+//!    (reversal, then a Taylor shift by 1: `n(n+1)/2` additions). Multiplied by
+//!    `L = lcm_i C(n, i)` (about `1.44 n` bits) they are integers. Subdivision at `1/2` is de
+//!    Casteljau's scheme without the halvings (`B^(k)_i = B^(k-1)_i + B^(k-1)_{i+1}`, `n(n+1)/2`
+//!    additions); the halves are `2^(n-i) B^(i)_0` and `2^i B^(n-i)_i` (both `2^n` times the true
+//!    coefficients, so integers), divided by their common power of two.
+//! 4. **Descartes' rule.** The number `V` of sign changes of the Bernstein coefficients (zeros
+//!    skipped) bounds the number of roots in the *open* interval and has its parity; an end
+//!    point that is a root only removes a zero coefficient. `V = 0`: no root; `V = 1` with
+//!    non-zero end coefficients: one root, the ends are not roots; otherwise split. A zero middle
+//!    value `B^(n)_0` is an exact dyadic root. Termination on square-free input follows from the
+//!    one- and two-circle theorems (see [`exactcheck_core::roots`]): the depth is
+//!    `O(log(1 / sep))`.
+//!
+//! The Bernstein form costs one `O(n^2)` pass per subdivision against two Taylor shifts per node
+//! in the classical monomial VCA (one for the test, one for the right child), and its sign count
+//! is free. The coefficients grow by `n` bits per level either way.
+//!
+//! # Refinement
+//! Each isolating interval `(lo, hi)` of the square-free `q` has known end signs (all roots are
+//! simple: the sign right of the `i`-th of `K` roots is `sgn(lc) (-1)^(K-1-i)`), so no end point
+//! is evaluated. Points are dyadic `m = c / 2^k`, with `k` at most `K` where `h = 2^-K` is the
+//! largest power of two with `4h <= width`.
+//! * **Filtered sign.** `q(m)` in `f64` by Horner's scheme, with `s = sum |a_i| |m|^i` computed
+//!   alongside. The coefficients and `m` are rounded once (relative error `u = 2^-53` each, twice
+//!   that allowed for the integer conversion), Horner adds `2n` roundings, so
+//!   `|fl(q(m)) - q(m)| <= gamma_{3n+3} * s * (1 + gamma_{2n})` with `gamma_k = k u / (1 - k u)`
+//!   (Higham, *Accuracy and Stability*, 5.1), plus at most `2n * 2^-1074` from underflow. The
+//!   filter decides when `|fl(q(m))| > (3n + 6) 2^-52 s + 2^-1000`, which exceeds that bound
+//!   (for `n < 2^40`); it declines when `s` is not finite or `m` or its numerator has more than
+//!   1000 bits. Otherwise the exact sign is the sign of the integer
+//!   `q(c / 2^k) 2^(kn) = sum a_i c^i 2^(k(n-i))` (Horner on big integers).
+//! * **Bisection** at a dyadic point near the middle while the filter decides.
+//! * **Newton with verification.** Where it cannot, the exact evaluation also gives
+//!   `q'(m) 2^(k(n-1))`, and the Newton point `g = m - q(m)/q'(m)` (ratio in `f64`, rounded to
+//!   the grid `h`) is the next evaluation point when it lies inside the bracket (a bisection
+//!   otherwise, and after a Newton step that did not halve the bracket). Once the Newton
+//!   correction is below `2^10 h`, the two grid points `g -/+ 2h` are evaluated exactly: signs
+//!   `(sgn(lo), sgn(hi))` certify `[g - 2h, g + 2h]`, of width `4h <= width`. Every bracket
+//!   update is an exact sign, so the result is certified whatever the `f64` steps did; a zero
+//!   value is an exact root.
+//!
+//! # Which isolator where
+//! [`UPoly::isolate_roots`] (Sturm bisection over `Rational`) stays the workspace's default: it
+//! promises an exact interval **exactly when the root is rational**, which callers
+//! (`planar`, `solve`) rely on, and the workspace's polynomials are of degree at most a few
+//! dozen, where Sturm sequences are cheap. The Descartes isolator is for large degrees
+//! ([`UPoly::real_roots_descartes`], [`UPoly::isolate_real_roots_to`], the W4 benchmark): an
+//! interval is exact when a split or refinement point hits the root, not for every rational
+//! root.
+//!
+//! Hand-written because the workspace has no arbitrary-precision interval arithmetic or
+//! polynomial library beyond num-bigint; the kernels (Taylor shift, de Casteljau, Horner) are a
+//! few lines each.
+
+use super::*;
+use num_bigint::Sign as BigSign;
+use num_traits::{One, Signed, ToPrimitive, Zero};
+
+/// Largest degree accepted by the Descartes isolator (the coefficients grow by `n` bits per
+/// subdivision level and every level costs `O(n^2)` big-integer additions).
+pub const MAX_DESCARTES_DEGREE: usize = 1 << 14;
+
+// ------------------------------------------------------------------------------ square-free
+
+/// Three primes below `2^62` for the modular square-freeness test.
+const PRIMES: [u64; 3] = [
+    (1 << 61) - 1,
+    4_611_686_018_427_387_847,
+    4_611_686_018_427_387_817,
+];
+
+fn mul_mod(a: u64, b: u64, p: u64) -> u64 {
+    ((a as u128 * b as u128) % p as u128) as u64
+}
+
+fn pow_mod(mut a: u64, mut e: u64, p: u64) -> u64 {
+    let mut r = 1u64;
+    while e > 0 {
+        if e & 1 == 1 {
+            r = mul_mod(r, a, p);
+        }
+        a = mul_mod(a, a, p);
+        e >>= 1;
+    }
+    r
+}
+
+fn big_mod(x: &BigInt, p: u64) -> u64 {
+    let r = (x % BigInt::from(p))
+        .to_i128()
+        .expect("a remainder modulo a 62-bit prime fits in i128");
+    r.rem_euclid(p as i128) as u64
+}
+
+/// The degree of `gcd(a, b)` over `F_p` (both non-zero, trailing zeros trimmed).
+fn gcd_degree_mod_p(mut a: Vec<u64>, mut b: Vec<u64>, p: u64) -> usize {
+    fn trim(v: &mut Vec<u64>) {
+        while v.last() == Some(&0) {
+            v.pop();
+        }
+    }
+    trim(&mut a);
+    trim(&mut b);
+    if a.len() < b.len() {
+        std::mem::swap(&mut a, &mut b);
+    }
+    while !b.is_empty() {
+        // a <- a mod b
+        let db = b.len() - 1;
+        let inv = pow_mod(b[db], p - 2, p);
+        while a.len() > db {
+            let top = a.len() - 1;
+            let f = mul_mod(a[top], inv, p);
+            if f != 0 {
+                let shift = top - db;
+                for (j, &bj) in b.iter().enumerate() {
+                    let t = mul_mod(f, bj, p);
+                    let x = &mut a[shift + j];
+                    *x = if *x >= t { *x - t } else { *x + p - t };
+                }
+            }
+            debug_assert_eq!(a[top], 0);
+            a.pop();
+            trim(&mut a);
+        }
+        std::mem::swap(&mut a, &mut b);
+    }
+    a.len().saturating_sub(1)
+}
+
+/// Whether `gcd(q mod p, q' mod p) = 1` over `F_p` for one of three primes keeping the degrees of
+/// `q` and `q'`: a proof that the integer polynomial `q` (degree >= 1) is square-free (see the
+/// module documentation). `false` means "not proved", not "not square-free".
+pub(super) fn is_square_free_mod_p(q: &[BigInt]) -> bool {
+    let n = q.len() - 1;
+    PRIMES.iter().any(|&p| {
+        let a: Vec<u64> = q.iter().map(|c| big_mod(c, p)).collect();
+        let d: Vec<u64> = (1..=n).map(|i| mul_mod(a[i], i as u64 % p, p)).collect();
+        if a[n] == 0 || d[n - 1] == 0 {
+            return false;
+        }
+        gcd_degree_mod_p(a, d, p) == 0
+    })
+}
+
+/// The primitive square-free part with a positive leading coefficient, as integers.
+fn square_free_integer(coeffs: &[BigInt]) -> Vec<BigInt> {
+    let mut q: Vec<BigInt> = coeffs.to_vec();
+    let g = q
+        .iter()
+        .fold(BigInt::zero(), |g, c| num_integer::Integer::gcd(&g, c));
+    if !g.is_one() {
+        for c in &mut q {
+            *c /= &g;
+        }
+    }
+    if q.last().is_some_and(|c| c.is_negative()) {
+        for c in &mut q {
+            *c = -&*c;
+        }
+    }
+    if q.len() <= 2 || is_square_free_mod_p(&q) {
+        return q;
+    }
+    let u = UPoly::from_coeffs(q.iter().cloned().map(Rational::from).collect());
+    let s = u.square_free_part().primitive_part();
+    let mut out: Vec<BigInt> = s
+        .coeffs()
+        .iter()
+        .map(|c| {
+            debug_assert!(c.is_integer());
+            c.numer()
+        })
+        .collect();
+    if out.last().is_some_and(|c| c.is_negative()) {
+        for c in &mut out {
+            *c = -&*c;
+        }
+    }
+    out
+}
+
+// ------------------------------------------------------------------------------ Bernstein
+
+/// Number of sign changes, zeros skipped.
+fn variations(b: &[BigInt]) -> usize {
+    let mut last = BigSign::NoSign;
+    let mut n = 0;
+    for c in b {
+        let s = c.sign();
+        if s == BigSign::NoSign {
+            continue;
+        }
+        if last != BigSign::NoSign && s != last {
+            n += 1;
+        }
+        last = s;
+    }
+    n
+}
+
+/// `p(x + 1)` in place (`n(n+1)/2` additions).
+fn taylor_shift_1(a: &mut [BigInt]) {
+    let n = a.len() - 1;
+    for i in 0..n {
+        for j in (i..n).rev() {
+            let (lo, hi) = a.split_at_mut(j + 1);
+            lo[j] += &hi[0];
+        }
+    }
+}
+
+/// `L * b_i`: the Bernstein coefficients on `[0, 1]` of the polynomial `p` (degree exactly
+/// `n = p.len() - 1` is not required: a zero leading coefficient is allowed), times
+/// `L = lcm_i C(n, i)`.
+fn to_bernstein_integer(p: &[BigInt]) -> Vec<BigInt> {
+    let n = p.len() - 1;
+    let mut c: Vec<BigInt> = p.iter().rev().cloned().collect();
+    taylor_shift_1(&mut c);
+    let mut binom = vec![BigInt::one(); n + 1];
+    for i in 1..=n {
+        binom[i] = &binom[i - 1] * BigInt::from(n - i + 1) / BigInt::from(i);
+    }
+    let l = binom
+        .iter()
+        .fold(BigInt::one(), |l, b| num_integer::Integer::lcm(&l, b));
+    (0..=n).map(|i| &c[n - i] * (&l / &binom[i])).collect()
+}
+
+/// Divides all coefficients by their common power of two.
+fn remove_common_twos(b: &mut [BigInt]) {
+    let tz = b
+        .iter()
+        .filter_map(|c| c.trailing_zeros())
+        .min()
+        .unwrap_or(0);
+    if tz > 0 {
+        for c in b.iter_mut() {
+            *c >>= tz;
+        }
+    }
+}
+
+/// de Casteljau at `1/2` on integers: the two halves, each `2^n` times the true coefficients,
+/// over their common power of two.
+fn split_half(b: &[BigInt]) -> (Vec<BigInt>, Vec<BigInt>) {
+    let n = b.len() - 1;
+    let mut work = b.to_vec();
+    let mut left = Vec::with_capacity(n + 1);
+    let mut right = vec![BigInt::zero(); n + 1];
+    left.push(&b[0] << n);
+    right[n] = &b[n] << n;
+    for k in 1..=n {
+        for i in 0..=n - k {
+            let (lo, hi) = work.split_at_mut(i + 1);
+            lo[i] += &hi[0];
+        }
+        left.push(&work[0] << (n - k));
+        right[n - k] = &work[n - k] << (n - k);
+    }
+    remove_common_twos(&mut left);
+    remove_common_twos(&mut right);
+    (left, right)
+}
+
+/// A root of a unit problem: `Exact(c, j)` is `c / 2^j`; `Open(c, j)` the open interval
+/// `(c / 2^j, (c + 1) / 2^j)`.
+enum UnitRoot {
+    Exact(BigInt, u64),
+    Open(BigInt, u64),
+}
+
+/// The roots in the open interval `(0, 1)` of the square-free integer polynomial `p` (given by
+/// its coefficients; the degree may be below `p.len() - 1`).
+fn unit_roots(p: &[BigInt]) -> Vec<UnitRoot> {
+    let mut out = Vec::new();
+    if p.len() < 2 {
+        return out;
+    }
+    let b = to_bernstein_integer(p);
+    let mut stack = vec![(b, BigInt::zero(), 0u64)];
+    while let Some((b, c, j)) = stack.pop() {
+        let v = variations(&b);
+        if v == 0 {
+            continue;
+        }
+        let n = b.len() - 1;
+        if v == 1 && !b[0].is_zero() && !b[n].is_zero() {
+            out.push(UnitRoot::Open(c, j));
+            continue;
+        }
+        let (left, right) = split_half(&b);
+        let c2: BigInt = &c << 1;
+        if right[0].is_zero() {
+            out.push(UnitRoot::Exact(&c2 + 1, j + 1));
+        }
+        stack.push((right, &c2 + 1, j + 1));
+        stack.push((left, c2, j + 1));
+    }
+    out
+}
+
+// ------------------------------------------------------------------------------ isolation
+
+fn pow2(k: u64) -> Rational {
+    Rational::from(BigInt::one() << k)
+}
+
+fn dyadic(c: &BigInt, j: u64) -> Rational {
+    Rational::from(c.clone()) / pow2(j)
+}
+
+/// A power of two `B` strictly above Cauchy's bound `1 + max |a_i / a_n|`.
+fn root_bound(q: &[BigInt]) -> Rational {
+    let n = q.len() - 1;
+    let bm = q[..n].iter().map(|c| c.bits()).max().unwrap_or(0) as i64;
+    let bn = q[n].bits() as i64;
+    pow2((bm + 2 - bn).max(1) as u64)
+}
+
+/// Isolating intervals of all real roots of the primitive square-free `q` (degree >= 1,
+/// positive leading coefficient), sorted.
+fn isolate_square_free(q: &[BigInt]) -> Vec<RootInterval> {
+    let n = q.len() - 1;
+    let bound = root_bound(q);
+    let mut out: Vec<RootInterval> = Vec::new();
+    if q[0].is_zero() {
+        out.push(RootInterval::exact(Rational::ZERO));
+    }
+    let sum: BigInt = q.iter().sum();
+    if sum.is_zero() {
+        out.push(RootInterval::exact(Rational::ONE));
+    }
+    let alt: BigInt = q
+        .iter()
+        .enumerate()
+        .map(|(i, c)| if i % 2 == 1 { -c } else { c.clone() })
+        .sum();
+    if alt.is_zero() {
+        out.push(RootInterval::exact(-Rational::ONE));
+    }
+    let neg: Vec<BigInt> = q
+        .iter()
+        .enumerate()
+        .map(|(i, c)| if i % 2 == 1 { -c } else { c.clone() })
+        .collect();
+    let rev: Vec<BigInt> = q.iter().rev().cloned().collect();
+    let rev_neg: Vec<BigInt> = neg.iter().rev().cloned().collect();
+    debug_assert_eq!(rev.len(), n + 1);
+    // (polynomial, map of a unit interval (a, b) to the original coordinate)
+    for (which, p) in [&q.to_vec(), &rev, &neg, &rev_neg].into_iter().enumerate() {
+        for r in unit_roots(p) {
+            let ri = match r {
+                UnitRoot::Exact(c, j) => {
+                    let x = dyadic(&c, j);
+                    RootInterval::exact(match which {
+                        0 => x,
+                        1 => x.recip().expect("a unit root is positive"),
+                        2 => -x,
+                        _ => -x.recip().expect("a unit root is positive"),
+                    })
+                }
+                UnitRoot::Open(c, j) => {
+                    let a = dyadic(&c, j);
+                    let b = dyadic(&(&c + 1), j);
+                    let inv = |x: &Rational| {
+                        if x.is_zero() {
+                            bound.clone()
+                        } else {
+                            x.recip().expect("checked non-zero")
+                        }
+                    };
+                    match which {
+                        0 => RootInterval { lo: a, hi: b },
+                        1 => RootInterval {
+                            lo: inv(&b),
+                            hi: inv(&a),
+                        },
+                        2 => RootInterval { lo: -b, hi: -a },
+                        _ => RootInterval {
+                            lo: -inv(&a),
+                            hi: -inv(&b),
+                        },
+                    }
+                }
+            };
+            out.push(ri);
+        }
+    }
+    out.sort_by(|x, y| x.lo.cmp(&y.lo));
+    out
+}
+
+// ------------------------------------------------------------------------------ refinement
+
+/// A dyadic number `num / 2^exp`.
+#[derive(Clone, Debug)]
+struct Dyadic {
+    num: BigInt,
+    exp: u64,
+}
+
+impl Dyadic {
+    fn to_rational(&self) -> Rational {
+        dyadic(&self.num, self.exp)
+    }
+
+    /// The dyadic `floor(x 2^e) / 2^e`.
+    fn floor_of(x: &Rational, e: u64) -> Dyadic {
+        let scaled = x.mul_ref(&pow2(e));
+        Dyadic {
+            num: floor(&scaled),
+            exp: e,
+        }
+    }
+
+    fn to_f64(&self) -> Option<f64> {
+        if self.exp > 1000 || self.num.bits() > 1000 {
+            return None;
+        }
+        Some(self.num.to_f64()? * (-(self.exp as f64)).exp2())
+    }
+}
+
+/// The prepared square-free polynomial of the refinement.
+struct Refiner<'a> {
+    q: &'a [BigInt],
+    qf: Option<Vec<f64>>,
+}
+
+/// `(m, e)` with `x ~ m 2^e`, `m` in `[2^63, 2^64)` as `f64` (`None` for zero).
+fn approx(x: &BigInt) -> Option<(f64, i64)> {
+    let bits = x.bits();
+    if bits == 0 {
+        return None;
+    }
+    let shift = bits.saturating_sub(64);
+    let top = (x.magnitude() >> shift)
+        .to_u64()
+        .expect("at most 64 bits remain");
+    let m = top as f64;
+    Some((if x.is_negative() { -m } else { m }, shift as i64))
+}
+
+impl Refiner<'_> {
+    fn new(q: &[BigInt]) -> Refiner<'_> {
+        let qf: Option<Vec<f64>> = q
+            .iter()
+            .map(|c| c.to_f64().filter(|f| f.is_finite()))
+            .collect();
+        Refiner { q, qf }
+    }
+
+    /// The sign of `q(x)` from `f64` arithmetic when the error bound of the module
+    /// documentation allows it.
+    fn filtered_sign(&self, x: &Dyadic) -> Option<Sign> {
+        let qf = self.qf.as_ref()?;
+        let xf = x.to_f64()?;
+        let n = qf.len() - 1;
+        let ax = xf.abs();
+        let mut r = qf[n];
+        let mut s = qf[n].abs();
+        for &c in qf[..n].iter().rev() {
+            r = r * xf + c;
+            s = s * ax + c.abs();
+        }
+        if !s.is_finite() {
+            return None;
+        }
+        let bound = (3 * n + 6) as f64 * f64::EPSILON * s + (-1000f64).exp2();
+        if r > bound {
+            Some(Sign::Positive)
+        } else if r < -bound {
+            Some(Sign::Negative)
+        } else {
+            None
+        }
+    }
+
+    /// `(q(x) 2^(k n), q'(x) 2^(k (n-1)))` for `x = c / 2^k`.
+    fn eval_exact(&self, x: &Dyadic) -> (BigInt, BigInt) {
+        let q = self.q;
+        let n = q.len() - 1;
+        let mut p = q[n].clone();
+        let mut d = BigInt::zero();
+        for (i, a) in q[..n].iter().enumerate().rev() {
+            d = d * &x.num + &p;
+            p = p * &x.num + (a << (x.exp * (n - i) as u64));
+        }
+        (p, d)
+    }
+
+    /// Refines `(lo, hi)` (end signs `s_lo`, `-s_lo`) to width at most `w`: filtered bisection,
+    /// then safeguarded Newton steps with a final two-point verification (module documentation).
+    fn refine(&self, lo: Rational, hi: Rational, s_lo: Sign, w: &Rational) -> RootInterval {
+        let (mut lo, mut hi) = (lo, hi);
+        if hi.sub_ref(&lo) <= *w {
+            return RootInterval { lo, hi };
+        }
+        // h = 2^-kk, the largest power of two with 4h <= w (h = 1 when w >= 4).
+        let mut kk: u64 = 0;
+        let mut h4 = Rational::from_integer(4);
+        while h4 > *w {
+            h4 *= half();
+            kk += 1;
+        }
+        let scale = (kk as f64).exp2();
+        let s_hi = sign_neg(s_lo);
+        // The last exact evaluation (x, q(x) 2^(k n), q'(x) 2^(k (n-1))).
+        let mut newton: Option<(Dyadic, BigInt, BigInt)> = None;
+        // The size of the last step in units of h (Newton correction or half bracket).
+        let mut last_step = f64::INFINITY;
+        let mut filter_ok = true;
+        loop {
+            let width = hi.sub_ref(&lo);
+            if width <= *w {
+                return RootInterval { lo, hi };
+            }
+            let width_h = width.to_f64() * scale;
+            // The Newton correction t = (q / q') 2^kk from the last exact evaluation, and the
+            // Newton point g = x 2^kk - t on the grid h.
+            let mut proposal: Option<(f64, BigInt)> = None;
+            if let Some((x, p, d)) = newton.take() {
+                if let (Some((pm, pe)), Some((dm, de))) = (approx(&p), approx(&d)) {
+                    let e = pe - de + kk as i64 - x.exp as i64;
+                    if e < 62 {
+                        let t = (pm / dm) * (e as f64).exp2();
+                        if t.abs() < 4.0e18 {
+                            let g = (&x.num << (kk - x.exp)) - (t.round() as i64);
+                            proposal = Some((t.abs(), g));
+                        }
+                    }
+                }
+            }
+            let mut next: Option<Dyadic> = None;
+            if let Some((t, g)) = proposal {
+                if t <= 1024.0 {
+                    // Converged: certify [g - 2h, g + 2h] by the signs at its ends.
+                    let a = Dyadic {
+                        num: &g - 2,
+                        exp: kk,
+                    };
+                    let b = Dyadic {
+                        num: g + 2,
+                        exp: kk,
+                    };
+                    let (ar, br) = (a.to_rational(), b.to_rational());
+                    let mut left_ok = true;
+                    if ar > lo && ar < hi {
+                        let (p, d) = self.eval_exact(&a);
+                        match sign_of(&p) {
+                            Sign::Zero => return RootInterval::exact(ar),
+                            s if s == s_lo => lo = ar,
+                            _ => {
+                                hi = ar;
+                                left_ok = false;
+                            }
+                        }
+                        newton = Some((a, p, d));
+                    }
+                    if left_ok && br > lo && br < hi {
+                        let (p, d) = self.eval_exact(&b);
+                        match sign_of(&p) {
+                            Sign::Zero => return RootInterval::exact(br),
+                            s if s == s_hi => hi = br,
+                            _ => lo = br,
+                        }
+                        newton = Some((b, p, d));
+                    }
+                    if hi.sub_ref(&lo) > *w {
+                        // The verification failed: bisect next.
+                        newton = None;
+                        last_step = f64::INFINITY;
+                    }
+                    continue;
+                }
+                let gd = Dyadic { num: g, exp: kk };
+                let gr = gd.to_rational();
+                if t <= last_step / 2.0 && gr > lo && gr < hi {
+                    last_step = t;
+                    next = Some(gd);
+                }
+            }
+            let x = match next {
+                Some(g) => g,
+                None => {
+                    last_step = width_h / 2.0;
+                    // A dyadic point in the middle half: 2^-e <= width / 4, so
+                    // floor(mid 2^e) / 2^e > mid - 2^-e >= mid - width / 4 > lo, and e <= kk
+                    // because 2^-kk <= w / 4 < width / 4.
+                    let mid = midpoint(&lo, &hi);
+                    let mut e = 0u64;
+                    let mut step = Rational::ONE;
+                    let quarter = width.mul_ref(&Rational::new(1, 4).expect("4 != 0"));
+                    while step > quarter {
+                        step *= half();
+                        e += 1;
+                    }
+                    Dyadic::floor_of(&mid, e)
+                }
+            };
+            let xr = x.to_rational();
+            debug_assert!(xr > lo && xr < hi);
+            let s = match filter_ok.then(|| self.filtered_sign(&x)).flatten() {
+                Some(s) => s,
+                None => {
+                    filter_ok = false;
+                    let (p, d) = self.eval_exact(&x);
+                    let s = sign_of(&p);
+                    newton = Some((x, p, d));
+                    s
+                }
+            };
+            match s {
+                Sign::Zero => return RootInterval::exact(xr),
+                s if s == s_lo => lo = xr,
+                _ => hi = xr,
+            }
+        }
+    }
+}
+
+fn sign_of(x: &BigInt) -> Sign {
+    match x.sign() {
+        BigSign::Minus => Sign::Negative,
+        BigSign::NoSign => Sign::Zero,
+        BigSign::Plus => Sign::Positive,
+    }
+}
+
+// ------------------------------------------------------------------------------ public API
+
+/// Isolating intervals of the distinct real roots of the integer polynomial with these
+/// coefficients (constant term first), by Descartes' rule (module documentation): sorted,
+/// pairwise disjoint, each an exact dyadic or reciprocal-of-dyadic root or an open interval
+/// holding exactly one root with non-root ends. Empty for constants.
+///
+/// # Errors
+/// [`ZeroPolynomial`] for the zero polynomial.
+///
+/// # Panics
+/// Beyond [`MAX_DESCARTES_DEGREE`].
+pub fn integer_real_roots(coeffs: &[BigInt]) -> Result<Vec<RootInterval>, ZeroPolynomial> {
+    Ok(prepare(coeffs)?.map_or_else(Vec::new, |q| isolate_square_free(&q)))
+}
+
+/// [`integer_real_roots`], each interval refined to width at most `width` (see the module
+/// documentation; a root hit by an evaluation point is exact). Unlike the isolating intervals,
+/// which may share an end, the refined intervals are disjoint as closed intervals.
+///
+/// # Errors
+/// [`ZeroPolynomial`] for the zero polynomial.
+///
+/// # Panics
+/// When `width <= 0`, or beyond [`MAX_DESCARTES_DEGREE`].
+pub fn integer_real_roots_to(
+    coeffs: &[BigInt],
+    width: &Rational,
+) -> Result<Vec<RootInterval>, ZeroPolynomial> {
+    assert!(
+        width.signum() == Sign::Positive,
+        "integer_real_roots_to: the width must be positive"
+    );
+    let Some(q) = prepare(coeffs)? else {
+        return Ok(Vec::new());
+    };
+    let roots = isolate_square_free(&q);
+    let refiner = Refiner::new(&q);
+    let k = roots.len();
+    let mut out: Vec<RootInterval> = Vec::with_capacity(k);
+    for (i, ri) in roots.into_iter().enumerate() {
+        if ri.is_exact() {
+            out.push(ri);
+            continue;
+        }
+        // The sign right of root i is (-1)^(k-1-i) (positive leading coefficient).
+        let s_right = if (k - 1 - i) % 2 == 0 {
+            Sign::Positive
+        } else {
+            Sign::Negative
+        };
+        let s_lo = sign_neg(s_right);
+        let r = refiner.refine(ri.lo, ri.hi, s_lo, width);
+        // Isolating intervals may share an end (a subdivision point); the closed refined
+        // intervals must not: narrow the left one until its upper end moves (its root is
+        // strictly below the shared end).
+        if let Some(prev) = out.last_mut() {
+            while !prev.is_exact() && prev.hi == r.lo {
+                let s_prev = sign_neg(s_lo);
+                let half_width = prev.width() * half();
+                *prev = refiner.refine(prev.lo.clone(), prev.hi.clone(), s_prev, &half_width);
+            }
+        }
+        out.push(r);
+    }
+    Ok(out)
+}
+
+/// The primitive square-free part, `None` for non-zero constants.
+fn prepare(coeffs: &[BigInt]) -> Result<Option<Vec<BigInt>>, ZeroPolynomial> {
+    let len = coeffs.len() - coeffs.iter().rev().take_while(|c| c.is_zero()).count();
+    if len == 0 {
+        return Err(ZeroPolynomial);
+    }
+    assert!(
+        len - 1 <= MAX_DESCARTES_DEGREE,
+        "the Descartes isolator accepts degrees up to {MAX_DESCARTES_DEGREE}"
+    );
+    if len == 1 {
+        return Ok(None);
+    }
+    Ok(Some(square_free_integer(&coeffs[..len])))
+}
+
+impl UPoly {
+    /// The coefficients of the primitive integer multiple `self / content` (see
+    /// [`UPoly::content`]).
+    pub fn integer_coefficients(&self) -> Vec<BigInt> {
+        self.primitive_part()
+            .coeffs()
+            .iter()
+            .map(|c| {
+                debug_assert!(c.is_integer());
+                c.numer()
+            })
+            .collect()
+    }
+
+    /// Isolating intervals of all distinct real roots by Descartes' rule of signs (the
+    /// module documentation of `descartes`; [`integer_real_roots`]): sorted, pairwise disjoint,
+    /// the [`RootInterval`] contract; exact when a subdivision point hits the root (not
+    /// necessarily for every rational root, unlike [`UPoly::isolate_roots`]). Empty for
+    /// constants and for the zero polynomial.
+    pub fn real_roots_descartes(&self) -> Vec<RootInterval> {
+        if self.is_constant() {
+            return Vec::new();
+        }
+        integer_real_roots(&self.integer_coefficients()).expect("not the zero polynomial")
+    }
+
+    /// [`UPoly::real_roots_descartes`] with every interval refined to width at most `width`
+    /// ([`integer_real_roots_to`]).
+    ///
+    /// # Panics
+    /// When `width <= 0`.
+    pub fn isolate_real_roots_to(&self, width: &Rational) -> Vec<RootInterval> {
+        if self.is_constant() {
+            return Vec::new();
+        }
+        integer_real_roots_to(&self.integer_coefficients(), width).expect("not the zero polynomial")
+    }
+}
+
+#[cfg(test)]
+mod unit_tests {
+    use super::*;
+    use exactcheck_core::bernstein::Bernstein;
+    use exactcheck_core::Rng;
+
+    fn bigs(c: &[i64]) -> Vec<BigInt> {
+        c.iter().map(|&x| BigInt::from(x)).collect()
+    }
+
+    fn rationals(c: &[BigInt]) -> Vec<Rational> {
+        c.iter().cloned().map(Rational::from).collect()
+    }
+
+    /// `a` is a positive multiple of `b` (coefficientwise, zeros included).
+    fn positive_multiple(a: &[BigInt], b: &[Rational]) {
+        assert_eq!(a.len(), b.len());
+        let mut ratio: Option<Rational> = None;
+        for (x, y) in a.iter().zip(b) {
+            assert_eq!(x.is_zero(), y.is_zero(), "{a:?} vs {b:?}");
+            if !y.is_zero() {
+                let r = Rational::from(x.clone()) / y.clone();
+                assert_eq!(r.signum(), Sign::Positive);
+                if let Some(q) = &ratio {
+                    assert_eq!(&r, q);
+                }
+                ratio = Some(r);
+            }
+        }
+    }
+
+    fn random_poly(rng: &mut Rng, n: usize) -> Vec<BigInt> {
+        let mut c: Vec<BigInt> = (0..=n)
+            .map(|_| BigInt::from(rng.below(2001) as i64 - 1000))
+            .collect();
+        if c[n].is_zero() {
+            c[n] = BigInt::one();
+        }
+        c
+    }
+
+    #[test]
+    fn integer_bernstein_form_and_split_match_the_rational_ones() {
+        let mut rng = Rng::new(14);
+        for n in 1..=12 {
+            let p = random_poly(&mut rng, n);
+            let b = to_bernstein_integer(&p);
+            let exact = Bernstein::from_power(&rationals(&p)).expect("non-empty");
+            positive_multiple(&b, exact.coeffs());
+            let (l, r) = split_half(&b);
+            let (el, er) = exact.split(&half());
+            positive_multiple(&l, el.coeffs());
+            positive_multiple(&r, er.coeffs());
+        }
+    }
+
+    #[test]
+    fn modular_square_free_test() {
+        // (x - 1)^2 (x + 2) is not square-free: never "proved".
+        assert!(!is_square_free_mod_p(&bigs(&[2, -3, 0, 1])));
+        assert!(is_square_free_mod_p(&bigs(&[1, 0, 1])));
+        assert!(is_square_free_mod_p(&super::super::w4::wilkinson(30)));
+        // The square-free part of (x - 1)^2 (x + 2) is x^2 + x - 2.
+        assert_eq!(
+            square_free_integer(&bigs(&[-4, 6, 0, -2])),
+            bigs(&[-2, 1, 1])
+        );
+    }
+
+    #[test]
+    fn the_filter_never_contradicts_the_exact_sign() {
+        let mut rng = Rng::new(53);
+        let polys = [
+            super::super::w4::wilkinson(20),
+            super::super::w4::mignotte(30),
+            super::super::w4::random(40),
+            random_poly(&mut rng, 25),
+        ];
+        let mut decided = 0;
+        for q in &polys {
+            let r = Refiner::new(q);
+            for _ in 0..400 {
+                let exp = rng.below(60);
+                let num = BigInt::from(rng.below(1 << 62) as i64 - (1 << 61)) >> (62 - exp.min(62));
+                let x = Dyadic { num, exp };
+                let (p, _) = r.eval_exact(&x);
+                if let Some(s) = r.filtered_sign(&x) {
+                    decided += 1;
+                    assert_eq!(s, sign_of(&p), "{x:?}");
+                }
+                let xr = x.to_rational();
+                let v = upoly_of(q).eval(&xr);
+                assert_eq!(sign_of(&p), v.signum());
+            }
+        }
+        assert!(decided > 100, "the filter decided only {decided} signs");
+    }
+
+    fn upoly_of(q: &[BigInt]) -> UPoly {
+        UPoly::from_coeffs(rationals(q))
+    }
+
+    #[test]
+    fn refinement_brackets_roots_of_close_pairs() {
+        // Roots 1/3 and 1/3 + 2^-40.
+        let third = Rational::new(1, 3).expect("3");
+        let p = UPoly::from_roots(&[
+            Rational::new(1, 3).expect("3"),
+            Rational::new(1, 3).expect("3")
+                + Rational::from(BigInt::one()) / Rational::from(BigInt::one() << 40u32),
+        ]);
+        let w = super::super::w4::target_width();
+        let roots = p.isolate_real_roots_to(&w);
+        assert_eq!(roots.len(), 2);
+        assert!(roots[0].hi < roots[1].lo);
+        for r in &roots {
+            assert!(r.is_exact() || r.width() <= w);
+        }
+        assert!(roots[0].lo <= third && third <= roots[0].hi);
+        assert!(roots[1].lo > third);
+    }
+}
