@@ -20,7 +20,7 @@ longer than 5 s is not repeated), and:
 * the targets of issue 14 are evaluated from the same medians and printed as met / not met.
 
 A tool that exceeds --max-seconds (default 120) on one run is stopped and shown as `> S s` at
-that size and skipped at the larger sizes of the same workload.
+that size and skipped at the larger sizes of the same series (W1, W1d, each W2 mode; not in W4).
 """
 import argparse, datetime, json, os, platform, statistics, subprocess, sys, time
 from fractions import Fraction
@@ -201,7 +201,18 @@ if "W4" in ONLY:
 
 results = {}      # (workload id, size label, tool) -> dict(times, walls, json)
 versions = {}
-skipped = set()   # (workload id, tool) that timed out at a smaller size
+skipped = set()   # (workload id, series, tool) that timed out at a smaller size
+
+
+def series(w, label):
+    """The sizes a timeout carries over to: the same W2 mode, or the whole of W1 and W1d. None
+    in W4, where difficulty is not monotone in the degree (SymPy needs minutes at Mignotte 20
+    and a tenth of a second at Mignotte 40)."""
+    if w["id"] == "W2":
+        return label.split(",")[0]
+    if w["id"] == "W4":
+        return label
+    return ""
 
 
 def median(xs):
@@ -213,7 +224,7 @@ for w in WORKLOADS:
         ref_json = None
         for tool, cmd in tools:
             key = (w["id"], label, tool)
-            if (w["id"], tool) in skipped:
+            if (w["id"], series(w, label), tool) in skipped:
                 results[key] = dict(skipped=True)
                 continue
             times, walls, last = [], [], None
@@ -230,7 +241,7 @@ for w in WORKLOADS:
                     if wall > 5.0:
                         break
             except TimedOut:
-                skipped.add((w["id"], tool))
+                skipped.add((w["id"], series(w, label), tool))
                 results[key] = dict(timed_out=True)
                 print(f"{w['id']:4} {label:22} {tool:18} > {args.max_seconds:g} s (stopped)", file=sys.stderr)
                 continue
