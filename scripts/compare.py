@@ -336,7 +336,8 @@ lines.append(f"Measured {datetime.date.today().isoformat()} by `scripts/compare.
              f"({rustc}); {args.reps} runs per cell, medians of each tool's timed region; ratio = "
              "exactcheck / tool (below 1: exactcheck faster).")
 lines.append("")
-lines.append("Versions: " + "; ".join(f"{k} {v}" for k, v in sorted(versions.items()) if k != "exactcheck"))
+named = sorted({v if v[:1].isalpha() else f"{k} {v}" for k, v in versions.items() if k != "exactcheck"})
+lines.append("Versions: " + "; ".join(named))
 for w in WORKLOADS:
     tools = [t for t, _ in w["sizes"][0][1]]
     for _, ts in w["sizes"]:
