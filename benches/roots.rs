@@ -9,7 +9,7 @@
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use exactcheck_core::Rng;
-use exactcheck_exact::univariate::w4::{self, Family};
+use exactcheck_exact::univariate::w4;
 use exactcheck_exact::univariate::{UPoly, UnitRootMethod};
 use exactcheck_exact::Rational;
 use std::time::Duration;
@@ -66,14 +66,7 @@ fn bench_w4(c: &mut Criterion) {
     g.sample_size(10);
     g.warm_up_time(Duration::from_millis(300));
     g.measurement_time(Duration::from_secs(2));
-    for (family, degree, count) in [
-        (Family::Wilkinson, 20, 20),
-        (Family::Wilkinson, 40, 40),
-        (Family::Random, 50, 4),
-        (Family::Random, 100, 2),
-        (Family::Mignotte, 20, 4),
-        (Family::Mignotte, 40, 4),
-    ] {
+    for (family, degree, count) in w4::COMPARISON {
         let coeffs = family.polynomial(degree);
         // The check value (the same count in python-flint and SymPy) before timing.
         assert_eq!(w4::solve(&coeffs).len(), count, "{family:?} {degree}");

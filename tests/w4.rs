@@ -94,14 +94,7 @@ fn bigs(c: &[i64]) -> Vec<BigInt> {
 #[test]
 fn comparison_sizes_have_the_pinned_root_counts() {
     // The check values of the comparison: python-flint and SymPy find the same counts.
-    for (family, degree, count) in [
-        (Family::Wilkinson, 20, 20),
-        (Family::Wilkinson, 40, 40),
-        (Family::Random, 50, 4),
-        (Family::Random, 100, 2),
-        (Family::Mignotte, 20, 4),
-        (Family::Mignotte, 40, 4),
-    ] {
+    for (family, degree, count) in w4::COMPARISON {
         let roots = w4::solve(&family.polynomial(degree));
         assert_eq!(roots.len(), count, "{family:?} {degree}");
         let w = w4::target_width();

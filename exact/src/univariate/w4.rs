@@ -24,6 +24,18 @@ use num_traits::{One, Zero};
 /// The largest degree of the W4 families accepted by the `bench w4` command.
 pub const MAX_W4_DEGREE: usize = 2000;
 
+/// The instances of the side-by-side comparison (`scripts/compare.py`) with their check value,
+/// the number of real roots (python-flint and SymPy find the same): `(family, degree, roots)`.
+/// One list for the criterion benchmark and the tests that pin the counts.
+pub const COMPARISON: [(Family, usize, usize); 6] = [
+    (Family::Wilkinson, 20, 20),
+    (Family::Wilkinson, 40, 40),
+    (Family::Random, 50, 4),
+    (Family::Random, 100, 2),
+    (Family::Mignotte, 20, 4),
+    (Family::Mignotte, 40, 4),
+];
+
 /// The three W4 families.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Family {
