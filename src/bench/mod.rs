@@ -1,13 +1,16 @@
 //! `exactcheck bench`: the benchmark workloads W1 (Chiang's theorem proved by expansion, and
 //! the dense product `f (f + 1)`; [`w1`]), W2 (the exact Spaeth discriminant at N rational
-//! parameters, [`crate::w2`]) and W3 (f64 sampling of the same discriminant), timed and printed
-//! with their check values as text or as the one JSON line the anchor scripts print.
+//! parameters, [`crate::w2`]), W3 (f64 sampling of the same discriminant) and W4 (real roots
+//! of integer polynomials isolated to width 2^-53; [`w4`]), timed and printed with their check
+//! values as text or as the one JSON line the anchor scripts print (`scripts/compare.py` runs
+//! them beside the anchors).
 //!
 //! Each workload's `--n` has a documented maximum ([`MAX_W2_EVAL_N`], [`MAX_W2_TREE_N`],
 //! [`MAX_W2_SEQ_N`], [`MAX_W3_N`]), chosen from measured rates on a 2-core machine (eval about
 //! 200,000 parameters/s; tree stores every value and its balanced sum of 10^6 values takes
 //! minutes; seq's running sum grows with every step, about 4,000 parameters/s at 2*10^4; W3
-//! about 10^8 samples/s): a larger value is a one-line error naming the flag and the limit,
+//! about 10^8 samples/s with `sin_cos` per sample, about 10^9 with the default `addition`
+//! kernel): a larger value is a one-line error naming the flag and the limit,
 //! never an allocation or a loop proportional to an unchecked number.
 
 use crate::args::{check_count, ScalarChoice};
