@@ -314,19 +314,14 @@ fn chunk_generic(s: &DiscSampler, table: &AngleTable, lo: usize, hi: usize) -> G
 impl DiscSampler {
     /// Sweeps the grid `t_i = i 2 pi / n` with the angle-addition kernel, on all cores, on the
     /// fastest [`KernelPath`]. Within the bounds of the module doc of the reference
-    /// [`DiscSampler::sweep`]; independent of the number of threads.
-    ///
-    /// # Panics
-    /// If `n` is 0.
+    /// [`DiscSampler::sweep`]; independent of the number of threads. An empty grid (`n = 0`)
+    /// gives the empty summary, as the reference does.
     pub fn sweep_addition(&self, n: usize) -> GridSummary {
         self.sweep_addition_with(n, KernelPath::detect(), true)
             .expect("the detected path is available")
     }
 
     /// [`DiscSampler::sweep_addition`] on the calling thread only (the same result).
-    ///
-    /// # Panics
-    /// If `n` is 0.
     pub fn sweep_addition_serial(&self, n: usize) -> GridSummary {
         self.sweep_addition_with(n, KernelPath::detect(), false)
             .expect("the detected path is available")
@@ -334,9 +329,6 @@ impl DiscSampler {
 
     /// The angle-addition sweep on a given path, on all cores (`parallel`) or on this thread;
     /// `None` if this CPU does not run `path`.
-    ///
-    /// # Panics
-    /// If `n` is 0.
     pub fn sweep_addition_with(
         &self,
         n: usize,
@@ -345,6 +337,9 @@ impl DiscSampler {
     ) -> Option<GridSummary> {
         if !path.is_available() {
             return None;
+        }
+        if n == 0 {
+            return Some(combine(&[]));
         }
         let table = AngleTable::new(n);
         let chunk = |k: usize| path.chunk(self, &table, k * CHUNK, ((k + 1) * CHUNK).min(n));
@@ -449,6 +444,14 @@ mod tests {
         262_147,
         1_000_003,
     ];
+
+    #[test]
+    fn an_empty_grid_is_the_empty_summary_as_in_the_reference() {
+        let s = DiscSampler::new(&w3());
+        assert_eq!(s.sweep_addition(0), s.sweep(0));
+        assert_eq!(s.sweep_addition_serial(0), s.sweep(0));
+        assert_eq!(s.sweep(0).count_nonneg, 0);
+    }
 
     /// The reference `(cos t_i, sin t_i)`: libm at `t_i = fl(i dt)`.
     fn reference_cs(dt: f64, i: usize) -> (f64, f64) {
