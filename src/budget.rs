@@ -179,15 +179,41 @@ impl std::fmt::Write for StackText {
     }
 }
 
+/// Set by the first thread that ends the process.
+static ENDING: AtomicBool = AtomicBool::new(false);
+
 /// Writes one line to standard error and ends the process with exit status 2, running no
-/// destructors and allocating nothing.
+/// destructors and allocating nothing. Only the first caller writes: with claims checked on
+/// several threads, two of them can pass the memory cap at once (or the watchdog fire while a
+/// thread passes it), and the contract is one line. The others wait for the exit.
 fn die(args: std::fmt::Arguments<'_>) -> ! {
+    if ENDING.swap(true, Ordering::SeqCst) {
+        wait_for_exit()
+    }
     let mut text = StackText {
         buf: [0; 256],
         len: 0,
     };
     let _ = std::fmt::write(&mut text, args);
     exit_with(&text.buf[..text.len])
+}
+
+/// Blocks this thread, allocating nothing, while another thread ends the process.
+#[cfg(unix)]
+fn wait_for_exit() -> ! {
+    loop {
+        // SAFETY: `pause` only suspends the calling thread until a signal arrives.
+        unsafe {
+            libc::pause();
+        }
+    }
+}
+
+#[cfg(not(unix))]
+fn wait_for_exit() -> ! {
+    loop {
+        std::thread::sleep(Duration::from_secs(1));
+    }
 }
 
 #[cfg(unix)]
