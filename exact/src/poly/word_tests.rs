@@ -36,10 +36,15 @@ fn arb_coeff() -> impl Strategy<Value = Rational> {
     ]
 }
 
-/// A polynomial in up to `nvars` variables with exponents up to `emax`; the coefficients all of
-/// one size class or mixed.
-fn arb_poly(nvars: u32, emax: u32, terms: usize) -> impl Strategy<Value = P> {
-    let term = (prop::collection::vec(0..=emax, nvars as usize), arb_coeff());
+/// A polynomial in up to `nvars` variables with exponents up to `emax` and coefficients drawn
+/// from `coeff`.
+fn arb_poly_with(
+    nvars: u32,
+    emax: u32,
+    terms: usize,
+    coeff: impl Strategy<Value = Rational>,
+) -> impl Strategy<Value = P> {
+    let term = (prop::collection::vec(0..=emax, nvars as usize), coeff);
     prop::collection::vec(term, 1..=terms).prop_map(|ts| {
         P::from_terms(ts.into_iter().map(|(es, c)| {
             let m: Vec<(Var, u32)> = es
@@ -52,22 +57,19 @@ fn arb_poly(nvars: u32, emax: u32, terms: usize) -> impl Strategy<Value = P> {
     })
 }
 
+/// The coefficients all of one size class or mixed.
+fn arb_poly(nvars: u32, emax: u32, terms: usize) -> impl Strategy<Value = P> {
+    arb_poly_with(nvars, emax, terms, arb_coeff())
+}
+
 /// Small integer coefficients only (every product in the word kernels).
 fn arb_int_poly(nvars: u32, emax: u32, terms: usize, cmax: i64) -> impl Strategy<Value = P> {
-    let term = (
-        prop::collection::vec(0..=emax, nvars as usize),
-        -cmax..=cmax,
-    );
-    prop::collection::vec(term, 1..=terms).prop_map(|ts| {
-        P::from_terms(ts.into_iter().map(|(es, c)| {
-            let m: Vec<(Var, u32)> = es
-                .into_iter()
-                .enumerate()
-                .map(|(v, e)| (v as Var, e))
-                .collect();
-            (m, Rational::from_integer(c))
-        }))
-    })
+    arb_poly_with(
+        nvars,
+        emax,
+        terms,
+        (-cmax..=cmax).prop_map(Rational::from_integer),
+    )
 }
 
 fn check_product(f: &P, g: &P) -> Result<(), TestCaseError> {
