@@ -203,21 +203,13 @@ fn square_free_integer(coeffs: &[BigInt]) -> Vec<BigInt> {
 
 // ------------------------------------------------------------------------------ Bernstein
 
-/// Number of sign changes, zeros skipped.
+/// Number of sign changes, zeros skipped (the Sturm code's [`isolate::count_variations`]).
 fn variations(b: &[BigInt]) -> usize {
-    let mut last = BigSign::NoSign;
-    let mut n = 0;
-    for c in b {
-        let s = c.sign();
-        if s == BigSign::NoSign {
-            continue;
-        }
-        if last != BigSign::NoSign && s != last {
-            n += 1;
-        }
-        last = s;
-    }
-    n
+    isolate::count_variations(b.iter().map(|c| match c.sign() {
+        BigSign::Minus => Sign::Negative,
+        BigSign::NoSign => Sign::Zero,
+        BigSign::Plus => Sign::Positive,
+    }))
 }
 
 /// `p(x + 1)` in place (`n(n+1)/2` additions).
