@@ -97,3 +97,39 @@ fn a_non_finite_float_result_is_refused_naming_the_field() {
         assert!(o.stdout.is_empty(), "{mode}");
     }
 }
+
+#[test]
+fn an_exact_answer_beyond_f64s_range_is_kept_with_its_approximations_listed() {
+    // Exact input 10^400: the exact answer is the answer; its f64 twins are infinite. It used to
+    // be refused whole ("approx.point[0]: ... not finite"); now they are `null` and listed.
+    let problem = r#"{"kind":"plane_plane","planes":[{"normal":[1,1,0],"point":[1,0,0]},{"normal":[0,"sqrt(2)","sqrt(2)"],"point":[0,0,"10^400"]}]}"#;
+    for mode in ["--exact", "--both"] {
+        let o = solve_stdin(problem.as_bytes(), &[mode]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        if mode == "--both" {
+            // The float part cannot read 10^400: refused when read, naming the field.
+            assert_eq!(o.status.code(), Some(2), "{mode}: {err}");
+            assert!(err.contains("planes[1].point[2]"), "{err}");
+            continue;
+        }
+        assert_eq!(o.status.code(), Some(0), "{mode}: {err}");
+        let v: Value = serde_json::from_slice(&o.stdout).expect("valid JSON");
+        assert_eq!(
+            v["approx_out_of_range"],
+            serde_json::json!(["approx.point[0]", "approx.point[1]", "approx.point[2]"])
+        );
+        assert_eq!(v["approx"]["point"], serde_json::json!([null, null, null]));
+        // The exact point is there, with 400-digit coordinates, and the finite twins too.
+        let x = v["point"][0].as_str().expect("an exact coordinate");
+        assert!(x.len() > 400 && x.starts_with("-9999"), "{x}");
+        assert!(v["approx"]["direction"][0].is_number());
+        assert!(!has_null_number(&v));
+    }
+    // Without the list the same nulls would be findings of the test helper.
+    let o = solve_stdin(problem.as_bytes(), &["--exact"]);
+    let mut v: Value = serde_json::from_slice(&o.stdout).expect("valid JSON");
+    v["approx"]["point"][1] = Value::from(1.5);
+    assert!(has_null_number(&v), "a listed path that is not null");
+    v.as_object_mut().expect("an object").remove("approx_out_of_range");
+    assert!(has_null_number(&v));
+}

@@ -8,10 +8,17 @@
 //! with one line naming the field and what went wrong, so `solve` answers with an error
 //! (exit 2) instead of a confident answer holding `null`.
 //!
+//! One exception, when the caller allows it ([`Approx::Listed`], exact answers): an infinite
+//! number under a field named `approx` is the f64 twin of an exact value beyond f64's range
+//! (`"-10^400"`). The exact value is the answer, so it is not refused: the infinity is
+//! collected (its path returned by [`check`]), written as `null`, and the answer lists every
+//! such path in `approx_out_of_range`, so the `null` is not silent. A NaN is never accepted.
+//!
 //! Hand-written: serde has no "visit every float" hook, and `serde_json`'s own serializers
 //! turn non-finite numbers into `null` without an error.
 
 use serde::ser::{self, Serialize};
+use std::cell::RefCell;
 use std::fmt;
 
 /// A non-finite number at a path, as one line.
@@ -32,15 +39,33 @@ impl ser::Error for NonFinite {
     }
 }
 
-/// Checks that every `f64`/`f32` in `value` is finite.
+/// What [`check`] does with an infinite number under a field named `approx`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Approx {
+    /// Refuse it, like any other non-finite number (float answers: there the `approx` numbers
+    /// are the computation's own).
+    Refused,
+    /// Accept it and return its path (exact answers: the twin of an exact value beyond f64's
+    /// range). Paths under a top-level `float` field (the float part of `--both`) are still
+    /// refused.
+    Listed,
+}
+
+/// Checks that every `f64`/`f32` in `value` is finite, except (with [`Approx::Listed`]) the
+/// infinite approximations of exact values, whose paths it returns in order.
 ///
 /// # Errors
 /// [`NonFinite`]: `PATH: the f64 computation overflowed (inf); use exact mode` (or `produced
-/// NaN`; for a field under `approx`, the approximation of an exact value out of f64's range).
-pub fn check<T: Serialize + ?Sized>(value: &T) -> Result<(), NonFinite> {
+/// NaN`; for a field under `approx` with [`Approx::Refused`], the approximation of an exact
+/// value out of f64's range).
+pub fn check<T: Serialize + ?Sized>(value: &T, approx: Approx) -> Result<Vec<String>, NonFinite> {
+    let listed = RefCell::new(Vec::new());
     value.serialize(Checker {
         path: String::new(),
-    })
+        approx,
+        listed: &listed,
+    })?;
+    Ok(listed.into_inner())
 }
 
 fn join(prefix: &str, name: &str) -> String {
@@ -51,14 +76,35 @@ fn join(prefix: &str, name: &str) -> String {
     }
 }
 
-/// The serializer: the path of the value it is given.
-struct Checker {
+/// The serializer: the path of the value it is given, the rule for `approx` infinities and
+/// the list of those accepted.
+struct Checker<'a> {
     path: String,
+    approx: Approx,
+    listed: &'a RefCell<Vec<String>>,
 }
 
-impl Checker {
+impl<'a> Checker<'a> {
+    /// The checker of a value at `path`, with this one's rule and list.
+    fn at(&self, path: String) -> Checker<'a> {
+        Checker {
+            path,
+            approx: self.approx,
+            listed: self.listed,
+        }
+    }
+
     fn float(self, v: f64) -> Result<(), NonFinite> {
         if v.is_finite() {
+            return Ok(());
+        }
+        let under_approx = self.path.split('.').any(|s| s.starts_with("approx"));
+        if v.is_infinite()
+            && under_approx
+            && self.approx == Approx::Listed
+            && self.path.split(['.', '[']).next() != Some("float")
+        {
+            self.listed.borrow_mut().push(self.path);
             return Ok(());
         }
         let path = if self.path.is_empty() {
@@ -72,7 +118,7 @@ impl Checker {
             format!("{}inf", if v < 0.0 { "-" } else { "" })
         };
         Err(NonFinite(
-            if self.path.split('.').any(|s| s.starts_with("approx")) {
+            if under_approx {
                 format!("{path}: the f64 approximation of an exact value is not finite ({what})")
             } else if v.is_nan() {
                 format!("{path}: the f64 computation produced NaN; use exact mode")
@@ -83,45 +129,43 @@ impl Checker {
     }
 }
 
-/// The elements of a sequence, map or struct under `prefix`.
-struct Compound {
-    prefix: String,
+/// The elements of a sequence, map or struct under the path of `parent`.
+struct Compound<'a> {
+    parent: Checker<'a>,
     index: usize,
     key: Option<String>,
 }
 
-impl Compound {
-    fn new(prefix: String) -> Compound {
+impl<'a> Compound<'a> {
+    fn new(parent: Checker<'a>) -> Compound<'a> {
         Compound {
-            prefix,
+            parent,
             index: 0,
             key: None,
         }
     }
 
     fn element<T: Serialize + ?Sized>(&mut self, value: &T) -> Result<(), NonFinite> {
-        let path = format!("{}[{}]", self.prefix, self.index);
+        let path = format!("{}[{}]", self.parent.path, self.index);
         self.index += 1;
-        value.serialize(Checker { path })
+        value.serialize(self.parent.at(path))
     }
 
     fn field<T: Serialize + ?Sized>(&mut self, name: &str, value: &T) -> Result<(), NonFinite> {
-        value.serialize(Checker {
-            path: join(&self.prefix, name),
-        })
+        value.serialize(self.parent.at(join(&self.parent.path, name)))
     }
 }
 
-impl ser::Serializer for Checker {
+impl<'a> ser::Serializer for Checker<'a> {
     type Ok = ();
     type Error = NonFinite;
-    type SerializeSeq = Compound;
-    type SerializeTuple = Compound;
-    type SerializeTupleStruct = Compound;
-    type SerializeTupleVariant = Compound;
-    type SerializeMap = Compound;
-    type SerializeStruct = Compound;
-    type SerializeStructVariant = Compound;
+    type SerializeSeq = Compound<'a>;
+    type SerializeTuple = Compound<'a>;
+    type SerializeTupleStruct = Compound<'a>;
+    type SerializeTupleVariant = Compound<'a>;
+    type SerializeMap = Compound<'a>;
+    type SerializeStruct = Compound<'a>;
+    type SerializeStructVariant = Compound<'a>;
 
     fn serialize_bool(self, _: bool) -> Result<(), NonFinite> {
         Ok(())
@@ -205,18 +249,17 @@ impl ser::Serializer for Checker {
         variant: &'static str,
         value: &T,
     ) -> Result<(), NonFinite> {
-        value.serialize(Checker {
-            path: join(&self.path, variant),
-        })
+        let path = join(&self.path, variant);
+        value.serialize(self.at(path))
     }
-    fn serialize_seq(self, _: Option<usize>) -> Result<Compound, NonFinite> {
-        Ok(Compound::new(self.path))
+    fn serialize_seq(self, _: Option<usize>) -> Result<Compound<'a>, NonFinite> {
+        Ok(Compound::new(self))
     }
-    fn serialize_tuple(self, _: usize) -> Result<Compound, NonFinite> {
-        Ok(Compound::new(self.path))
+    fn serialize_tuple(self, _: usize) -> Result<Compound<'a>, NonFinite> {
+        Ok(Compound::new(self))
     }
-    fn serialize_tuple_struct(self, _: &'static str, _: usize) -> Result<Compound, NonFinite> {
-        Ok(Compound::new(self.path))
+    fn serialize_tuple_struct(self, _: &'static str, _: usize) -> Result<Compound<'a>, NonFinite> {
+        Ok(Compound::new(self))
     }
     fn serialize_tuple_variant(
         self,
@@ -224,14 +267,15 @@ impl ser::Serializer for Checker {
         _: u32,
         variant: &'static str,
         _: usize,
-    ) -> Result<Compound, NonFinite> {
-        Ok(Compound::new(join(&self.path, variant)))
+    ) -> Result<Compound<'a>, NonFinite> {
+        let path = join(&self.path, variant);
+        Ok(Compound::new(self.at(path)))
     }
-    fn serialize_map(self, _: Option<usize>) -> Result<Compound, NonFinite> {
-        Ok(Compound::new(self.path))
+    fn serialize_map(self, _: Option<usize>) -> Result<Compound<'a>, NonFinite> {
+        Ok(Compound::new(self))
     }
-    fn serialize_struct(self, _: &'static str, _: usize) -> Result<Compound, NonFinite> {
-        Ok(Compound::new(self.path))
+    fn serialize_struct(self, _: &'static str, _: usize) -> Result<Compound<'a>, NonFinite> {
+        Ok(Compound::new(self))
     }
     fn serialize_struct_variant(
         self,
@@ -239,12 +283,13 @@ impl ser::Serializer for Checker {
         _: u32,
         variant: &'static str,
         _: usize,
-    ) -> Result<Compound, NonFinite> {
-        Ok(Compound::new(join(&self.path, variant)))
+    ) -> Result<Compound<'a>, NonFinite> {
+        let path = join(&self.path, variant);
+        Ok(Compound::new(self.at(path)))
     }
 }
 
-impl ser::SerializeSeq for Compound {
+impl ser::SerializeSeq for Compound<'_> {
     type Ok = ();
     type Error = NonFinite;
     fn serialize_element<T: Serialize + ?Sized>(&mut self, value: &T) -> Result<(), NonFinite> {
@@ -255,7 +300,7 @@ impl ser::SerializeSeq for Compound {
     }
 }
 
-impl ser::SerializeTuple for Compound {
+impl ser::SerializeTuple for Compound<'_> {
     type Ok = ();
     type Error = NonFinite;
     fn serialize_element<T: Serialize + ?Sized>(&mut self, value: &T) -> Result<(), NonFinite> {
@@ -266,7 +311,7 @@ impl ser::SerializeTuple for Compound {
     }
 }
 
-impl ser::SerializeTupleStruct for Compound {
+impl ser::SerializeTupleStruct for Compound<'_> {
     type Ok = ();
     type Error = NonFinite;
     fn serialize_field<T: Serialize + ?Sized>(&mut self, value: &T) -> Result<(), NonFinite> {
@@ -277,7 +322,7 @@ impl ser::SerializeTupleStruct for Compound {
     }
 }
 
-impl ser::SerializeTupleVariant for Compound {
+impl ser::SerializeTupleVariant for Compound<'_> {
     type Ok = ();
     type Error = NonFinite;
     fn serialize_field<T: Serialize + ?Sized>(&mut self, value: &T) -> Result<(), NonFinite> {
@@ -288,7 +333,7 @@ impl ser::SerializeTupleVariant for Compound {
     }
 }
 
-impl ser::SerializeMap for Compound {
+impl ser::SerializeMap for Compound<'_> {
     type Ok = ();
     type Error = NonFinite;
     fn serialize_key<T: Serialize + ?Sized>(&mut self, key: &T) -> Result<(), NonFinite> {
@@ -309,7 +354,7 @@ impl ser::SerializeMap for Compound {
     }
 }
 
-impl ser::SerializeStruct for Compound {
+impl ser::SerializeStruct for Compound<'_> {
     type Ok = ();
     type Error = NonFinite;
     fn serialize_field<T: Serialize + ?Sized>(
@@ -324,7 +369,7 @@ impl ser::SerializeStruct for Compound {
     }
 }
 
-impl ser::SerializeStructVariant for Compound {
+impl ser::SerializeStructVariant for Compound<'_> {
     type Ok = ();
     type Error = NonFinite;
     fn serialize_field<T: Serialize + ?Sized>(
@@ -367,23 +412,77 @@ mod tests {
             maybe: None,
             approx: vec![[1.0, 2.0]],
         };
-        assert!(check(&x).is_ok());
+        assert_eq!(check(&x, Approx::Refused).unwrap(), Vec::<String>::new());
         x.coefficients.a[1] = f64::INFINITY;
         assert_eq!(
-            check(&x).unwrap_err().to_string(),
+            check(&x, Approx::Refused).unwrap_err().to_string(),
             "coefficients.a[1]: the f64 computation overflowed (inf); use exact mode"
         );
         x.coefficients.a[1] = 0.0;
         x.maybe = Some(f64::NAN);
         assert_eq!(
-            check(&x).unwrap_err().to_string(),
+            check(&x, Approx::Refused).unwrap_err().to_string(),
             "maybe: the f64 computation produced NaN; use exact mode"
         );
         x.maybe = None;
         x.approx[0][1] = f64::NEG_INFINITY;
         assert_eq!(
-            check(&x).unwrap_err().to_string(),
+            check(&x, Approx::Refused).unwrap_err().to_string(),
             "approx[0][1]: the f64 approximation of an exact value is not finite (-inf)"
+        );
+    }
+
+    #[test]
+    fn exact_answers_list_infinite_approximations_and_refuse_the_rest() {
+        let mut x = Answer {
+            name: "x",
+            coefficients: Inner { a: vec![1.0] },
+            maybe: None,
+            approx: vec![[1.0, f64::NEG_INFINITY], [f64::INFINITY, 0.0]],
+        };
+        assert_eq!(
+            check(&x, Approx::Listed).unwrap(),
+            vec!["approx[0][1]".to_string(), "approx[1][0]".to_string()]
+        );
+        // Refused where the numbers are the f64 computation's own.
+        assert_eq!(
+            check(&x, Approx::Refused).unwrap_err().to_string(),
+            "approx[0][1]: the f64 approximation of an exact value is not finite (-inf)"
+        );
+        // A NaN is never an approximation of an exact value.
+        x.approx[1][1] = f64::NAN;
+        assert_eq!(
+            check(&x, Approx::Listed).unwrap_err().to_string(),
+            "approx[1][1]: the f64 approximation of an exact value is not finite (NaN)"
+        );
+        // Nor is an infinity outside `approx`.
+        x.approx[1][1] = 0.0;
+        x.coefficients.a[0] = f64::INFINITY;
+        assert_eq!(
+            check(&x, Approx::Listed).unwrap_err().to_string(),
+            "coefficients.a[0]: the f64 computation overflowed (inf); use exact mode"
+        );
+    }
+
+    #[test]
+    fn the_float_part_of_both_is_refused() {
+        #[derive(Serialize)]
+        struct Both {
+            approx: f64,
+            float: Answer,
+        }
+        let both = Both {
+            approx: f64::INFINITY,
+            float: Answer {
+                name: "f",
+                coefficients: Inner { a: vec![] },
+                maybe: None,
+                approx: vec![[f64::INFINITY, 0.0]],
+            },
+        };
+        assert_eq!(
+            check(&both, Approx::Listed).unwrap_err().to_string(),
+            "float.approx[0][0]: the f64 approximation of an exact value is not finite (inf)"
         );
     }
 }

@@ -66,12 +66,12 @@ pub(crate) fn by_mode<E: Serialize, F: Serialize>(
     attach: fn(&mut E, F),
 ) -> Result<Value, Error> {
     match mode {
-        Mode::Exact => to_json(&exact(text)?),
-        Mode::Float => to_json(&float(text)?),
+        Mode::Exact => to_json(&exact(text)?, mode),
+        Mode::Float => to_json(&float(text)?, mode),
         Mode::Both => {
             let mut answer = exact(text)?;
             attach(&mut answer, float(text)?);
-            to_json(&answer)
+            to_json(&answer, mode)
         }
     }
 }
@@ -255,14 +255,34 @@ pub fn parse<T: DeserializeOwned>(text: &str) -> Result<T, Error> {
 
 /// A serialized answer as a JSON value: the one place answers are serialized, after the check
 /// that every `f64` in it is finite ([`finite`]; JSON has no NaN or infinity, and `serde_json`
-/// would write `null`).
+/// would write `null`). With `mode` [`Mode::Exact`] or [`Mode::Both`], an infinite `approx` twin
+/// of an exact value (beyond f64's range) is kept as `null` and its path listed in the answer's
+/// `approx_out_of_range`; every other non-finite number is an error.
 ///
 /// # Errors
-/// [`Error::Input`] naming the field of the first non-finite number.
-pub(crate) fn to_json<T: Serialize>(answer: &T) -> Result<Value, Error> {
-    finite::check(answer).map_err(|e| Error::Input(e.to_string()))?;
-    Ok(serde_json::to_value(answer)
-        .expect("answers hold only strings, finite numbers, booleans and arrays"))
+/// [`Error::Input`] naming the field of the first non-finite number that is refused.
+pub(crate) fn to_json<T: Serialize>(answer: &T, mode: Mode) -> Result<Value, Error> {
+    let approx = match mode {
+        Mode::Float => finite::Approx::Refused,
+        Mode::Exact | Mode::Both => finite::Approx::Listed,
+    };
+    let out_of_range = finite::check(answer, approx).map_err(|e| Error::Input(e.to_string()))?;
+    let mut value = serde_json::to_value(answer)
+        .expect("answers hold only strings, finite numbers, infinite approximations (null), booleans and arrays");
+    if !out_of_range.is_empty() {
+        match value.as_object_mut() {
+            Some(object) => {
+                object.insert("approx_out_of_range".into(), out_of_range.into());
+            }
+            None => {
+                return Err(Error::Input(format!(
+                    "{}: the f64 approximation of an exact value is out of f64's range",
+                    out_of_range[0]
+                )))
+            }
+        }
+    }
+    Ok(value)
 }
 
 /// Solves one problem given as JSON text.

@@ -92,7 +92,7 @@ impl Kind for SphereInterpolation {
         } else {
             solve(&points, &params)?
         };
-        to_json(&answer)
+        to_json(&answer, mode)
     }
 }
 

@@ -43,18 +43,51 @@ pub fn refused(problem: &str, extra: &[&str], needles: &[&str]) -> String {
 /// `ruled_line`'s `lambda_at_ends` is exempt: there `null` is the contract's "this end's ruling is
 /// parallel to the line" beside a number for the other end (found by `solve_props` on
 /// `base [[-1,-3,2]]`, directions `[[-2,-1,-1],[2,-1,1]]`, line direction `(-2,-1,-1)`).
+/// The `approx` paths an exact answer lists in `approx_out_of_range` (f64 twins of exact values
+/// beyond f64's range, written as `null` on purpose) are exempt as well; a listed path that is
+/// not `null` in the answer counts as a finding.
 #[allow(dead_code)] // not every test crate that includes this module reads answers
 pub fn has_null_number(v: &serde_json::Value) -> bool {
+    let mut v = v.clone();
+    if let Some(listed) = v.get("approx_out_of_range").cloned() {
+        for path in listed.as_array().into_iter().flatten() {
+            match path.as_str().and_then(|p| pointer_mut(&mut v, p)) {
+                Some(x) if x.is_null() => *x = serde_json::Value::from(0),
+                _ => return true,
+            }
+        }
+    }
+    null_beside_number(&v)
+}
+
+#[allow(dead_code)]
+/// The value at a path as `solve::finite` writes it (`approx.point[0]`, `poles[1].approx`).
+fn pointer_mut<'a>(v: &'a mut serde_json::Value, path: &str) -> Option<&'a mut serde_json::Value> {
+    let mut cur = v;
+    for part in path.split('.') {
+        let (key, rest) = part.split_at(part.find('[').unwrap_or(part.len()));
+        if !key.is_empty() {
+            cur = cur.get_mut(key)?;
+        }
+        for index in rest.split(['[', ']']).filter(|s| !s.is_empty()) {
+            cur = cur.get_mut(index.parse::<usize>().ok()?)?;
+        }
+    }
+    Some(cur)
+}
+
+#[allow(dead_code)]
+fn null_beside_number(v: &serde_json::Value) -> bool {
     use serde_json::Value;
     match v {
         Value::Array(a) => {
             let numbers = a.iter().any(Value::is_number);
             a.iter()
-                .any(|x| (numbers && x.is_null()) || has_null_number(x))
+                .any(|x| (numbers && x.is_null()) || null_beside_number(x))
         }
         Value::Object(o) => o
             .iter()
-            .any(|(k, x)| k != "lambda_at_ends" && has_null_number(x)),
+            .any(|(k, x)| k != "lambda_at_ends" && null_beside_number(x)),
         _ => false,
     }
 }
