@@ -433,7 +433,8 @@ fn prove_over<C: PointField + Display>(
         DecideError::EmptyDomain(v) => Error::Input(format!("--where: the domain of {} is empty", name(v))),
         DecideError::DuplicateDomain(v) => Error::Input(format!("--where: {} has two domains", name(v))),
         DecideError::UnknownVariable(v) => Error::Input(format!("--where: a domain names variable #{v}, which is not in use")),
-        DecideError::Limit(e) => Error::Limit(e),
+        // The limits of a Groebner basis of the relations: say which part of the command.
+        DecideError::Limit(e) => Error::Input(format!("--where: {e}")),
     })?;
     let (verdict, code) = match &decision {
         Decision::Proved { .. } => ("proved", ExitCode::SUCCESS),

@@ -130,6 +130,8 @@ fn an_exact_answer_beyond_f64s_range_is_kept_with_its_approximations_listed() {
     let mut v: Value = serde_json::from_slice(&o.stdout).expect("valid JSON");
     v["approx"]["point"][1] = Value::from(1.5);
     assert!(has_null_number(&v), "a listed path that is not null");
-    v.as_object_mut().expect("an object").remove("approx_out_of_range");
+    v.as_object_mut()
+        .expect("an object")
+        .remove("approx_out_of_range");
     assert!(has_null_number(&v));
 }

@@ -133,7 +133,7 @@ fn dense_cubic_relations_stop_on_a_limit() {
         a.push("--where".into());
         a.push(c.into());
     }
-    refused(&a, "the limit groebner-bits = 10000 bits");
+    refused(&a, "--where: size of a Groebner basis coefficient exceeds the limit groebner-bits = 10000 bits");
 }
 
 /// 200 relations `vI = I` took more than 20 s (every pair re-ranked at every step).

@@ -117,15 +117,13 @@ impl<'a> Checker<'a> {
         } else {
             format!("{}inf", if v < 0.0 { "-" } else { "" })
         };
-        Err(NonFinite(
-            if under_approx {
-                format!("{path}: the f64 approximation of an exact value is not finite ({what})")
-            } else if v.is_nan() {
-                format!("{path}: the f64 computation produced NaN; use exact mode")
-            } else {
-                format!("{path}: the f64 computation overflowed ({what}); use exact mode")
-            },
-        ))
+        Err(NonFinite(if under_approx {
+            format!("{path}: the f64 approximation of an exact value is not finite ({what})")
+        } else if v.is_nan() {
+            format!("{path}: the f64 computation produced NaN; use exact mode")
+        } else {
+            format!("{path}: the f64 computation overflowed ({what}); use exact mode")
+        }))
     }
 }
 
