@@ -455,8 +455,22 @@ pub fn square_free<T: OrderedField>(p: &Bernstein<T>) -> Result<Bernstein<T>, Ze
         return Err(ZeroPolynomial);
     }
     let d = derivative(&a);
-    let g = if d.is_empty() {
+    let g = if d.len() <= 1 {
+        // Degree at most 1: square-free.
         vec![T::one()]
+    } else if a.len() == 3 {
+        // A quadratic c + b t + a t^2 is square-free exactly when its discriminant is not
+        // zero (`gcd(p, p')` is `p` at `t = -b / 2a`, which is `-disc / 4a`); otherwise its
+        // square-free part is `t + b / 2a`. Three products instead of a gcd with inverses (the
+        // weights of the conic sections are quadratics over the radical field).
+        let disc = a[1]
+            .mul_ref(&a[1])
+            .sub_ref(&T::from_i64(4).mul_ref(&a[0]).mul_ref(&a[2]));
+        if disc.is_zero() {
+            vec![a[1].clone() / T::from_i64(2).mul_ref(&a[2]), T::one()]
+        } else {
+            vec![T::one()]
+        }
     } else {
         poly_gcd(&a, &d)
     };

@@ -264,3 +264,47 @@ fn f64_inseparable_roots_are_a_cluster_not_a_panic() {
         assert!(lo <= 0.5 + 1e-9 && hi >= 0.5 - 1e-9, "{r:?}");
     }
 }
+
+/// The quadratic shortcut of [`square_free`] (a discriminant test) gives the gcd's answer: on
+/// every quadratic with small rational coefficients, including the double roots, the degree-2
+/// Bernstein forms of lines and constants, and leading coefficients of either sign.
+#[test]
+fn square_free_of_a_quadratic_is_the_gcds() {
+    let vals: Vec<Q> = [-3, -2, -1, 0, 1, 2, 4]
+        .iter()
+        .flat_map(|&n| [q(n, 1), q(n, 3)])
+        .collect();
+    let mut double = 0;
+    for a in &vals {
+        for b in &vals {
+            for c in &vals {
+                let power = [a.clone(), b.clone(), c.clone()];
+                let Ok(p) = Bernstein::from_power(&power) else {
+                    continue;
+                };
+                let trimmed = trim(power.to_vec());
+                if trimmed.is_empty() {
+                    assert_eq!(square_free(&p), Err(ZeroPolynomial));
+                    continue;
+                }
+                let reference = Bernstein::from_power(&square_free_of_power(&trimmed)).unwrap();
+                let got = square_free(&p).unwrap();
+                // The same polynomial up to a constant factor: the same monic power form.
+                assert_eq!(
+                    trim(got.to_power()).len(),
+                    trim(reference.to_power()).len(),
+                    "{power:?}"
+                );
+                assert_eq!(
+                    monic(&trim(got.to_power())),
+                    monic(&trim(reference.to_power())),
+                    "{power:?}"
+                );
+                if trimmed.len() == 3 && got.degree() == 1 {
+                    double += 1;
+                }
+            }
+        }
+    }
+    assert!(double > 0, "the double roots were reached");
+}
