@@ -278,7 +278,7 @@ fn square_free_of_a_quadratic_is_the_gcds() {
     for a in &vals {
         for b in &vals {
             for c in &vals {
-                let power = [a.clone(), b.clone(), c.clone()];
+                let power = [*a, *b, *c];
                 let Ok(p) = Bernstein::from_power(&power) else {
                     continue;
                 };
