@@ -321,6 +321,63 @@ pub fn run(cli: Cli) -> Result<ExitCode, crate::Error> {
     for arg in &cli.limits {
         exactcheck_core::limits::set_from_str(arg).map_err(crate::Error::Usage)?;
     }
+    let stack = stack_for_depth()?;
+    // Rayon's workers check claims and samples, which walk expressions too. Built once per
+    // process: a second build (tests calling `run` again) keeps the first pool, so it fails,
+    // which is harmless.
+    let _ = rayon::ThreadPoolBuilder::new()
+        .stack_size(stack)
+        .build_global();
+    let worker = std::thread::Builder::new()
+        .name("exactcheck".into())
+        .stack_size(stack)
+        .spawn(move || run_command(cli))
+        .map_err(|e| {
+            crate::Error::Usage(format!(
+                "cannot reserve {} MiB of stack for --limit depth={} ({e}); lower the depth limit",
+                stack >> 20,
+                exactcheck_core::limits::DEPTH.get()
+            ))
+        })?;
+    match worker.join() {
+        Ok(result) => result,
+        Err(panic) => std::panic::resume_unwind(panic),
+    }
+}
+
+/// The largest value of the `depth` limit: every nesting level of an expression or document
+/// costs stack in the recursive parser, evaluator and destructor, and the stack is reserved
+/// for the whole limit up front ([`STACK_PER_LEVEL`]).
+pub const MAX_DEPTH: u64 = 65_536;
+
+/// Stack reserved per level of the `depth` limit, on top of [`BASE_STACK`]. The deepest path
+/// measured (nested parentheses in `prove`: parse, expand, drop) needs about 2 KiB per level;
+/// this is eight times that, and `tests/robust_cli.rs` runs every deep path at [`MAX_DEPTH`].
+pub const STACK_PER_LEVEL: usize = 16 << 10;
+
+/// Stack of the command's thread and of rayon's workers below any depth (the main thread's
+/// usual 8 MiB).
+const BASE_STACK: usize = 8 << 20;
+
+/// The stack the `depth` limit in force needs (only reserved address space: pages are
+/// committed as they are touched).
+///
+/// # Errors
+/// [`crate::Error::Usage`] when the limit is above [`MAX_DEPTH`]: deeper nesting would
+/// overflow the stack, which aborts the process instead of answering with an error.
+fn stack_for_depth() -> Result<usize, crate::Error> {
+    let depth = exactcheck_core::limits::DEPTH.get();
+    if depth > MAX_DEPTH {
+        return Err(crate::Error::Usage(format!(
+            "--limit depth: at most {MAX_DEPTH} levels (found {depth}): every level needs stack"
+        )));
+    }
+    // At most 65,536 * 16 KiB = 1 GiB, which fits a usize on every supported target.
+    Ok(BASE_STACK + depth as usize * STACK_PER_LEVEL)
+}
+
+/// The command itself, on the thread [`run`] gives it.
+fn run_command(cli: Cli) -> Result<ExitCode, crate::Error> {
     crate::budget::enforce_memory_limit();
     if let Some(seconds) = cli.timeout {
         crate::budget::start_timeout(seconds)?;

@@ -449,3 +449,60 @@ fn the_readme_lists_every_limit_with_its_default() {
     assert_eq!(rows, expected);
     assert!(section.contains("| `file-size` | 8 MiB (8,388,608 bytes) |"));
 }
+
+/// Raising `depth` used to abort the process on deep input ("thread 'main' has overflowed its
+/// stack", status 134 at 8,000 nested parentheses with `--limit depth=30000`): the command now
+/// runs on a stack reserved for the limit in force, and the limit has a maximum.
+#[test]
+fn deep_input_at_the_largest_depth_limit_answers_instead_of_overflowing_the_stack() {
+    let max = exactcheck::cli::MAX_DEPTH;
+    let depth = format!("depth={max}");
+    // Each parenthesis is two levels (the group and its expression).
+    let n = (max as usize - 2) / 2;
+    let deep = format!("{}x{}", "(".repeat(n), ")".repeat(n));
+    let o = exactcheck(&["prove", &deep, "x", "--limit", &depth]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert!(String::from_utf8_lossy(&o.stdout).contains("proved"));
+    // A claims file, checked on rayon's workers.
+    let dir = TempDir::new("deep");
+    let file = dir.0.join("deep.toml");
+    let negs = "-".repeat(2000);
+    std::fs::write(
+        &file,
+        format!(
+            "[paper]\nname = \"p\"\ntitle = \"t\"\n[[claim]]\nid = \"p.a\"\nstatement = \"s\"\nkind = \"identity\"\nlhs = \"{deep}\"\nrhs = \"x\"\n[[claim]]\nid = \"p.b\"\nstatement = \"s\"\nkind = \"identity\"\nlhs = \"{negs}x\"\nrhs = \"x\"\n"
+        ),
+    )
+    .expect("write the claims file");
+    let o = exactcheck(&[
+        "verify",
+        file.to_str().expect("UTF-8 path"),
+        "--limit",
+        &depth,
+    ]);
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{out}{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert!(out.contains("2 claims, 2 as expected, 2 proved"), "{out}");
+    // Above the maximum: one line, before anything is read.
+    let e = one_error_line(&exactcheck(&[
+        "prove",
+        "x",
+        "x",
+        "--limit",
+        &format!("depth={}", max + 1),
+    ]));
+    assert_eq!(
+        e,
+        format!("exactcheck: error: --limit depth: at most {max} levels (found {}): every level needs stack", max + 1)
+    );
+}
