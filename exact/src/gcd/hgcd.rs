@@ -28,7 +28,7 @@
 //! (`s' = floor(n'/2) + 1`). Then `M^-1 (a; b) = (α B^p + x; β B^p + y)` with
 //! `x = ±(m11 a_lo - m01 b_lo)`, `y = ±(m00 b_lo - m10 a_lo)`, `|x|, |y| < B^(n' - s') B^p <=
 //! B^(s'-1+p)`, so both new operands exceed `B^(s'+p) - B^(s'+p-1) >= B^(s'+p-1)`: they stay
-//! positive (the subtraction in [`Mat::adjust`] cannot underflow) and large. `hgcd(a, b)` of
+//! positive (the subtraction in `Mat::adjust` cannot underflow) and large. `hgcd(a, b)` of
 //! `n` limbs therefore runs (GMP's `mpn_hgcd`):
 //!
 //! 1. `hgcd` on the leading `n - p` limbs, `p = floor(n/2)`, applied to the whole numbers by
@@ -40,7 +40,7 @@
 //!    and about `s + 1` limbs long; the matrices multiply;
 //! 4. single steps until the pair is reduced.
 //!
-//! Below [`Tuning::hgcd_base`] limbs only step 4 runs: that is the base case, quadratic but
+//! Below `HgcdTuning::hgcd_base` limbs only step 4 runs: that is the base case, quadratic but
 //! with Lehmer's double-word steps. The cost is `H(n) = 2 H(n/2) + O(M(n))`, i.e.
 //! `O(M(n) log n)` with `M` the multiplication cost (num-bigint's Karatsuba and Toom-3).
 //!
@@ -57,12 +57,20 @@
 //!
 //! # The gcd
 //!
-//! [`gcd_subquadratic`] repeats: order `a >= b`; below [`Tuning::gcd_lehmer_below`] limbs hand
+//! [`gcd_hgcd_tuned`] repeats: order `a >= b`; below `HgcdTuning::gcd_lehmer_below` limbs hand
 //! over to [`super::gcd_lehmer`]; if `a` is more than a limb longer than `b`, one division
-//! step; otherwise `hgcd` of the leading `n - p` limbs (`p = floor(n/3)`, see
-//! [`Tuning::split`]), applied to the whole numbers by the lemma, or, when that pair is already
-//! reduced, one Euclidean step. Every pass shrinks the operands, and the gcd is unchanged
-//! because every matrix is unimodular.
+//! step; otherwise `hgcd` of the leading `n - p` limbs (`p = floor(2n/3)` as in GMP's
+//! `mpn_gcd`, measured best against `0` and `floor(n/3)`; `HgcdTuning::split`), applied to the
+//! whole numbers by the lemma, or, when that pair is already reduced, one Euclidean step. Every
+//! pass shrinks the operands, and the gcd is unchanged because every matrix is unimodular.
+//!
+//! # Where it pays
+//!
+//! num-bigint's multiplication (Karatsuba, Toom-3) is several times slower than GMP's, and the
+//! Lehmer steps above are fast (double-word simulation, fused update), so the crossover is
+//! late: about 300,000 bits ([`super::HGCD_GCD_THRESHOLD`]), against a few hundred limbs in
+//! GMP. At 10^6 bits the half-gcd takes about 0.6 of Lehmer's time, and the ratio keeps falling
+//! (`O(M(n) log n)` against `O(n^2)`).
 //!
 //! Why hand-written: num-integer's `Integer::gcd` for `BigUint` is Stein's binary algorithm
 //! (quadratic, with a large constant) and num-bigint has no subquadratic gcd; GMP's is C
@@ -79,23 +87,28 @@ use super::{
     from_limbs, gcd_lehmer, lehmer_simulate_min, lehmer_update, top128, trim, Cosequences,
 };
 
-/// The size parameters of the algorithm, in 64-bit limbs; [`TUNING`] holds the measured ones,
-/// the tests use small ones so that the recursion runs deep on small numbers.
-#[derive(Clone, Copy, Debug)]
-pub(super) struct Tuning {
-    /// `hgcd` of operands of at most this many limbs runs the steps alone (the base case).
-    pub(super) hgcd_base: usize,
-    /// [`gcd_subquadratic`] hands over to Lehmer once the smaller operand is shorter.
-    pub(super) gcd_lehmer_below: usize,
-    /// [`gcd_subquadratic`] runs `hgcd` on the leading `n - floor(n * split / 3)` limbs.
-    pub(super) split: usize,
+/// The size parameters of the half-gcd algorithm, in 64-bit limbs. [`HGCD_TUNING`] holds the
+/// measured ones (used by [`super::gcd_biguint`] and [`half_gcd`]); the tests use small ones so
+/// that the recursion runs deep on small numbers, and the benchmarks compare others.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct HgcdTuning {
+    /// `hgcd` of operands of at most this many limbs runs the single steps alone (the base
+    /// case).
+    pub hgcd_base: usize,
+    /// [`gcd_hgcd_tuned`] hands over to [`super::gcd_lehmer`] once the smaller operand has
+    /// fewer limbs.
+    pub gcd_lehmer_below: usize,
+    /// [`gcd_hgcd_tuned`] runs `hgcd` on the leading `n - floor(n * split / 3)` limbs of its
+    /// `n`-limb operands (0, 1 or 2; larger values count as 2).
+    pub split: usize,
 }
 
-/// The measured tuning (criterion, `exact/benches/gcd.rs`, group `hgcd_vs_lehmer`).
-pub(super) const TUNING: Tuning = Tuning {
-    hgcd_base: 60,
+/// The measured tuning (criterion, `exact/benches/gcd.rs`, groups `hgcd_vs_lehmer` and
+/// `hgcd_tuning`).
+pub const HGCD_TUNING: HgcdTuning = HgcdTuning {
+    hgcd_base: 150,
     gcd_lehmer_below: super::HGCD_GCD_THRESHOLD,
-    split: 1,
+    split: 2,
 };
 
 /// The result of [`half_gcd`]: `(a, b) = M (a', b')`.
@@ -117,11 +130,11 @@ pub struct HalfGcd {
 /// `a', b' >= 2^(64 s)` and `|a' - b'| < 2^(64 s)`. Returns `None` when `(a, b)` admits no
 /// reduction step (`min(a, b) < 2^(64 s)` or `|a - b| < 2^(64 s)`).
 pub fn half_gcd(a: &BigUint, b: &BigUint) -> Option<HalfGcd> {
-    half_gcd_tuned(a, b, TUNING)
+    half_gcd_tuned(a, b, HGCD_TUNING)
 }
 
 /// [`half_gcd`] with explicit size parameters.
-pub(super) fn half_gcd_tuned(a: &BigUint, b: &BigUint, t: Tuning) -> Option<HalfGcd> {
+pub(super) fn half_gcd_tuned(a: &BigUint, b: &BigUint, t: HgcdTuning) -> Option<HalfGcd> {
     let (mut a, mut b) = (a.clone(), b.clone());
     let m = hgcd(&mut a, &mut b, t)?;
     let [m00, m01, m10, m11] = m.e.map(|e| from_limbs(&e));
@@ -133,8 +146,11 @@ pub(super) fn half_gcd_tuned(a: &BigUint, b: &BigUint, t: Tuning) -> Option<Half
     })
 }
 
-/// The subquadratic gcd (see the module documentation), `gcd(0, 0) = 0`.
-pub(super) fn gcd_subquadratic(a: &BigUint, b: &BigUint, t: Tuning) -> BigUint {
+/// The subquadratic gcd (see the module documentation) with explicit size parameters,
+/// `gcd(0, 0) = 0`: [`super::gcd_biguint`] is this with [`HGCD_TUNING`] above
+/// [`super::HGCD_GCD_THRESHOLD`] limbs. Public for the benchmarks, which force the half-gcd
+/// path at every size with a small `gcd_lehmer_below`.
+pub fn gcd_hgcd_tuned(a: &BigUint, b: &BigUint, t: HgcdTuning) -> BigUint {
     let (mut a, mut b) = (a.clone(), b.clone());
     loop {
         if a < b {
@@ -151,7 +167,7 @@ pub(super) fn gcd_subquadratic(a: &BigUint, b: &BigUint, t: Tuning) -> BigUint {
             a = mem::replace(&mut b, r);
             continue;
         }
-        let p = n * t.split / 3;
+        let p = n * t.split.min(2) / 3;
         if reduce(&mut a, &mut b, p, t).is_none() {
             let r = &a % &b;
             a = mem::replace(&mut b, r);
@@ -177,7 +193,7 @@ fn split(x: &BigUint, p: usize) -> (BigUint, BigUint) {
 
 /// `hgcd` in place: when a reduction step is possible, reduces `(a, b)` (see [`half_gcd`])
 /// and returns `M`; otherwise leaves `a, b` unchanged and returns `None`.
-fn hgcd(a: &mut BigUint, b: &mut BigUint, t: Tuning) -> Option<Mat> {
+fn hgcd(a: &mut BigUint, b: &mut BigUint, t: HgcdTuning) -> Option<Mat> {
     let n = nlimbs(a).max(nlimbs(b));
     let s = n / 2 + 1;
     let mut m = Mat::identity();
@@ -214,7 +230,7 @@ fn hgcd(a: &mut BigUint, b: &mut BigUint, t: Tuning) -> Option<Mat> {
 
 /// `hgcd` of the leading limbs `a >> 64 p`, `b >> 64 p`, applied to the whole numbers by
 /// Möller's lemma; `None` (and `a, b` unchanged) when the leading limbs admit no step.
-fn reduce(a: &mut BigUint, b: &mut BigUint, p: usize, t: Tuning) -> Option<Mat> {
+fn reduce(a: &mut BigUint, b: &mut BigUint, p: usize, t: HgcdTuning) -> Option<Mat> {
     if p == 0 {
         return hgcd(a, b, t);
     }

@@ -36,7 +36,8 @@
 //! are the Lehmer steps above, kept above a floor (`lehmer_simulate_min`) and accumulated into
 //! a cosequence matrix.
 //!
-//! Nothing here panics and there is no `unsafe`; `gcd(0, 0) = 0`.
+//! There is no `unsafe`, and nothing panics but the half-gcd's two `expect`s on a broken
+//! invariant (a negative operand, which Möller's lemma rules out); `gcd(0, 0) = 0`.
 
 use num_bigint::{BigInt, BigUint};
 use num_traits::Zero;
@@ -49,12 +50,12 @@ const U128_REM_THRESHOLD: u32 = 32;
 const COSEQ_MAX: u64 = (1 << 63) - 1;
 
 pub mod hgcd;
-pub use hgcd::{half_gcd, HalfGcd};
+pub use hgcd::{gcd_hgcd_tuned, half_gcd, HalfGcd, HgcdTuning, HGCD_TUNING};
 
 /// Limbs (64 bits) that both operands of [`gcd_biguint`] must have for the half-gcd path;
 /// below it Lehmer's algorithm is faster (measured with criterion, `exact/benches/gcd.rs`,
 /// group `hgcd_vs_lehmer`).
-pub const HGCD_GCD_THRESHOLD: usize = 200;
+pub const HGCD_GCD_THRESHOLD: usize = 4700;
 
 /// Greatest common divisor of two `u64` (binary gcd; `gcd_u64(0, 0) == 0`).
 ///
@@ -168,7 +169,7 @@ pub fn gcd_bigint_abs(a: &BigInt, b: &BigInt) -> BigUint {
 /// half-gcd has brought the operands below that size, it is [`gcd_lehmer`].
 pub fn gcd_biguint(a: &BigUint, b: &BigUint) -> BigUint {
     if a.bits().min(b.bits()) >= 64 * HGCD_GCD_THRESHOLD as u64 {
-        return hgcd::gcd_subquadratic(a, b, hgcd::TUNING);
+        return gcd_hgcd_tuned(a, b, HGCD_TUNING);
     }
     gcd_lehmer(a, b)
 }

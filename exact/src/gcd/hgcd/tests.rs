@@ -9,20 +9,27 @@ use exactcheck_core::Rng;
 use num_bigint::BigInt;
 use proptest::prelude::*;
 
-/// Tunings exercised: the measured one and small ones that recurse deeply.
-const TUNINGS: [Tuning; 4] = [
-    TUNING,
-    Tuning {
+/// The measured tuning with the half-gcd path forced at every size (`gcd_biguint` takes it only
+/// from `HGCD_GCD_THRESHOLD` limbs on).
+const FORCED: HgcdTuning = HgcdTuning {
+    gcd_lehmer_below: 2,
+    ..HGCD_TUNING
+};
+
+/// Tunings exercised: the measured one (forced) and small ones that recurse deeply.
+const TUNINGS: [HgcdTuning; 4] = [
+    FORCED,
+    HgcdTuning {
         hgcd_base: 2,
         gcd_lehmer_below: 3,
         split: 0,
     },
-    Tuning {
+    HgcdTuning {
         hgcd_base: 3,
         gcd_lehmer_below: 4,
         split: 1,
     },
-    Tuning {
+    HgcdTuning {
         hgcd_base: 8,
         gcd_lehmer_below: 10,
         split: 2,
@@ -64,7 +71,7 @@ fn fibonacci(k: u64) -> BigUint {
 
 /// Checks every promise of `half_gcd_tuned` on `(a, b)`; for `generic` operands (random, no
 /// huge quotient at the reduction floor) also that the reduced pair has about half the size.
-fn check_hgcd(a: &BigUint, b: &BigUint, t: Tuning, generic: bool) {
+fn check_hgcd(a: &BigUint, b: &BigUint, t: HgcdTuning, generic: bool) {
     let n = nlimbs(a).max(nlimbs(b));
     let s = n / 2 + 1;
     let floor = BigUint::one() << (64 * s);
@@ -103,8 +110,8 @@ fn check_hgcd(a: &BigUint, b: &BigUint, t: Tuning, generic: bool) {
 fn check_gcd(a: &BigUint, b: &BigUint) -> BigUint {
     let expected = gcd_lehmer(a, b);
     for t in TUNINGS {
-        assert_eq!(gcd_subquadratic(a, b, t), expected, "{t:?}");
-        assert_eq!(gcd_subquadratic(b, a, t), expected, "{t:?}");
+        assert_eq!(gcd_hgcd_tuned(a, b, t), expected, "{t:?}");
+        assert_eq!(gcd_hgcd_tuned(b, a, t), expected, "{t:?}");
     }
     assert_eq!(gcd_biguint(a, b), expected);
     expected
@@ -197,17 +204,17 @@ fn gcd_random_sizes_against_lehmer() {
 
 #[test]
 fn gcd_1e4_and_1e5_bits_against_lehmer() {
-    // The measured tuning (gcd_biguint) on 10^4 and 10^5 bits; planted factors of several sizes.
+    // The measured tuning, forced, on 10^4 and 10^5 bits; planted factors of several sizes.
     let mut st = Rng::new(0x1e5);
     for bits in [10_000u64, 100_000] {
         let (a, b) = (random_bits(bits, &mut st), random_bits(bits, &mut st));
-        assert_eq!(gcd_biguint(&a, &b), gcd_lehmer(&a, &b));
+        assert_eq!(gcd_hgcd_tuned(&a, &b, FORCED), gcd_lehmer(&a, &b));
         for gbits in [64u64, bits / 10, bits / 2, 9 * bits / 10] {
             let g = random_bits(gbits, &mut st);
             let x = random_bits(bits - gbits, &mut st);
             let y = random_bits(bits - gbits - 17, &mut st);
             let (a, b) = (&x * &g, &y * &g);
-            let d = gcd_biguint(&a, &b);
+            let d = gcd_hgcd_tuned(&a, &b, FORCED);
             assert_eq!(d, gcd_lehmer(&a, &b));
             assert!((&d % &g).is_zero());
         }
@@ -215,12 +222,13 @@ fn gcd_1e4_and_1e5_bits_against_lehmer() {
     // Unequal sizes: 10^5 against 6 * 10^4 bits.
     let g = random_bits(5_000, &mut st);
     let (a, b) = (random_bits(95_000, &mut st) * &g, random_bits(55_000, &mut st) * &g);
-    assert_eq!(gcd_biguint(&a, &b), gcd_lehmer(&a, &b));
+    assert_eq!(gcd_hgcd_tuned(&a, &b, FORCED), gcd_lehmer(&a, &b));
 }
 
 #[test]
 fn gcd_1e6_bits_against_lehmer() {
-    // 10^6 bits: one coprime-looking random pair and one with a planted 300,000-bit factor.
+    // 10^6 bits (gcd_biguint takes the half-gcd path): one random pair and one with a planted
+    // 300,000-bit factor.
     let mut st = Rng::new(0x1e6);
     let (a, b) = (random_bits(1_000_000, &mut st), random_bits(1_000_000, &mut st));
     assert_eq!(gcd_biguint(&a, &b), gcd_lehmer(&a, &b));
@@ -237,11 +245,16 @@ fn gcd_fibonacci_worst_case() {
     // All quotients 1: consecutive Fibonacci numbers are coprime, and gcd(F(m), F(n)) =
     // F(gcd(m, n)). F(300000) has about 208,000 bits.
     let one = BigUint::one();
+    let gcd = |a: &BigUint, b: &BigUint| gcd_hgcd_tuned(a, b, FORCED);
     let (f, g) = fibonacci_pair(300_000);
+    assert_eq!(gcd(&f, &g), one);
+    assert_eq!(gcd(&g, &f), one);
+    assert_eq!(gcd(&fibonacci(300_000), &fibonacci(240_000)), fibonacci(60_000));
+    assert_eq!(gcd(&fibonacci(299_997), &fibonacci(200_000)), fibonacci(1));
+    // Above the threshold: F(500000) has about 347,000 bits.
+    let (f, g) = fibonacci_pair(500_000);
+    assert!(f.bits() > 64 * crate::gcd::HGCD_GCD_THRESHOLD as u64);
     assert_eq!(gcd_biguint(&f, &g), one);
-    assert_eq!(gcd_biguint(&g, &f), one);
-    assert_eq!(gcd_biguint(&fibonacci(300_000), &fibonacci(240_000)), fibonacci(60_000));
-    assert_eq!(gcd_biguint(&fibonacci(299_997), &fibonacci(200_000)), fibonacci(1));
     let (f, g) = fibonacci_pair(9_000);
     assert_eq!(check_gcd(&f, &g), one);
     assert_eq!(check_gcd(&fibonacci(9_000), &fibonacci(6_000)), fibonacci(3_000));
@@ -303,9 +316,7 @@ proptest! {
         let mut st = Rng::new(seed);
         let g = random_biguint(lg, &mut st) | BigUint::one();
         let (a, b) = (random_biguint(la, &mut st) * &g, random_biguint(lb, &mut st) * &g);
-        let expected = gcd_lehmer(&a, &b);
-        prop_assert_eq!(gcd_subquadratic(&a, &b, TUNINGS[t]), expected.clone());
-        prop_assert_eq!(gcd_biguint(&a, &b), expected);
+        prop_assert_eq!(gcd_hgcd_tuned(&a, &b, TUNINGS[t]), gcd_lehmer(&a, &b));
     }
 
     #[test]
