@@ -98,7 +98,10 @@ fn planted_pair(bits: u64, seed: u64) -> (BigUint, BigUint, BigUint) {
     let a = random_bits(bits - bits / 8, &mut st) * &g;
     let b = random_bits(bits - bits / 8 - 3, &mut st) * &g;
     let d = gcd_lehmer(&a, &b);
-    assert!((&d % &g) == BigUint::from(0u32), "the planted factor divides the gcd");
+    assert!(
+        (&d % &g) == BigUint::from(0u32),
+        "the planted factor divides the gcd"
+    );
     (a, b, d)
 }
 
@@ -108,7 +111,9 @@ const FORCED: HgcdTuning = HgcdTuning {
     ..HGCD_TUNING
 };
 
-fn slow_group_settings(group: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>) {
+fn slow_group_settings(
+    group: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
+) {
     group.sample_size(10);
     group.sampling_mode(SamplingMode::Flat);
     group.warm_up_time(Duration::from_millis(300));
@@ -125,12 +130,16 @@ fn bench_hgcd_vs_lehmer(c: &mut Criterion) {
         let (a, b, d) = planted_pair(bits, 0x4ec0 ^ bits);
         assert_eq!(gcd_hgcd_tuned(&a, &b, FORCED), d);
         assert_eq!(gcd_biguint(&a, &b), d);
-        group.bench_with_input(BenchmarkId::new("lehmer", bits), &(&a, &b), |bch, (a, b)| {
-            bch.iter(|| gcd_lehmer(black_box(a), black_box(b)))
-        });
-        group.bench_with_input(BenchmarkId::new("half-gcd", bits), &(&a, &b), |bch, (a, b)| {
-            bch.iter(|| gcd_hgcd_tuned(black_box(a), black_box(b), FORCED))
-        });
+        group.bench_with_input(
+            BenchmarkId::new("lehmer", bits),
+            &(&a, &b),
+            |bch, (a, b)| bch.iter(|| gcd_lehmer(black_box(a), black_box(b))),
+        );
+        group.bench_with_input(
+            BenchmarkId::new("half-gcd", bits),
+            &(&a, &b),
+            |bch, (a, b)| bch.iter(|| gcd_hgcd_tuned(black_box(a), black_box(b), FORCED)),
+        );
         group.bench_with_input(
             BenchmarkId::new("gcd_biguint", bits),
             &(&a, &b),
@@ -150,12 +159,16 @@ fn bench_hgcd_crossover(c: &mut Criterion) {
     for bits in [150_000u64, 200_000, 300_000, 400_000, 500_000] {
         let (a, b) = (random_bits(bits, &mut st), random_bits(bits, &mut st));
         assert_eq!(gcd_hgcd_tuned(&a, &b, FORCED), gcd_lehmer(&a, &b));
-        group.bench_with_input(BenchmarkId::new("lehmer", bits), &(&a, &b), |bch, (a, b)| {
-            bch.iter(|| gcd_lehmer(black_box(a), black_box(b)))
-        });
-        group.bench_with_input(BenchmarkId::new("half-gcd", bits), &(&a, &b), |bch, (a, b)| {
-            bch.iter(|| gcd_hgcd_tuned(black_box(a), black_box(b), FORCED))
-        });
+        group.bench_with_input(
+            BenchmarkId::new("lehmer", bits),
+            &(&a, &b),
+            |bch, (a, b)| bch.iter(|| gcd_lehmer(black_box(a), black_box(b))),
+        );
+        group.bench_with_input(
+            BenchmarkId::new("half-gcd", bits),
+            &(&a, &b),
+            |bch, (a, b)| bch.iter(|| gcd_hgcd_tuned(black_box(a), black_box(b), FORCED)),
+        );
     }
     group.finish();
 }

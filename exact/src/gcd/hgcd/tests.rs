@@ -89,18 +89,37 @@ fn check_hgcd(a: &BigUint, b: &BigUint, t: HgcdTuning, generic: bool) {
             let det = BigInt::from(m00 * m11) - BigInt::from(m01 * m10);
             assert_eq!(det, BigInt::from(h.det), "det M");
             assert!(h.det == 1 || h.det == -1);
-            assert_eq!(&(m00 * &h.a + m01 * &h.b), a, "M (a', b') = (a, b), first row");
-            assert_eq!(&(m10 * &h.a + m11 * &h.b), b, "M (a', b') = (a, b), second row");
+            assert_eq!(
+                &(m00 * &h.a + m01 * &h.b),
+                a,
+                "M (a', b') = (a, b), first row"
+            );
+            assert_eq!(
+                &(m10 * &h.a + m11 * &h.b),
+                b,
+                "M (a', b') = (a, b), second row"
+            );
             assert!(h.a >= floor && h.b >= floor, "a', b' >= B^s");
             assert!(diff(&h.a, &h.b) < floor, "|a' - b'| < B^s");
             let bound = BigUint::one() << (64 * (n - s));
             for m in [m00, m01, m10, m11] {
                 assert!(m < &bound, "entries of M below B^(n-s)");
             }
-            assert_ne!((m00, m01, m10, m11), (&BigUint::one(), &BigUint::zero(), &BigUint::zero(), &BigUint::one()));
+            assert_ne!(
+                (m00, m01, m10, m11),
+                (
+                    &BigUint::one(),
+                    &BigUint::zero(),
+                    &BigUint::zero(),
+                    &BigUint::one()
+                )
+            );
             if generic {
                 // Half the size: a', b' have at most s + 1 limbs.
-                assert!(nlimbs(&h.a).max(nlimbs(&h.b)) <= s + 1, "reduced to about half");
+                assert!(
+                    nlimbs(&h.a).max(nlimbs(&h.b)) <= s + 1,
+                    "reduced to about half"
+                );
             }
         }
     }
@@ -151,7 +170,12 @@ fn hgcd_invariants_special() {
         let b = random_biguint(30, &mut st);
         let q = random_biguint(25, &mut st);
         check_hgcd(&(&b * &q + random_biguint(20, &mut st)), &b, t, false);
-        check_hgcd(&((&one << 3000u32) * 3u32), &((&one << 2900u32) * 5u32), t, false);
+        check_hgcd(
+            &((&one << 3000u32) * 3u32),
+            &((&one << 2900u32) * 5u32),
+            t,
+            false,
+        );
     }
 }
 
@@ -166,8 +190,16 @@ fn hgcd_reduces_along_the_euclidean_remainders() {
         let b = random_biguint(lb, &mut st);
         for t in TUNINGS {
             let h = half_gcd_tuned(&a, &b, t).expect("random operands are reducible");
-            let (hi, lo) = if h.a >= h.b { (&h.a, &h.b) } else { (&h.b, &h.a) };
-            let (mut r0, mut r1) = if a >= b { (a.clone(), b.clone()) } else { (b.clone(), a.clone()) };
+            let (hi, lo) = if h.a >= h.b {
+                (&h.a, &h.b)
+            } else {
+                (&h.b, &h.a)
+            };
+            let (mut r0, mut r1) = if a >= b {
+                (a.clone(), b.clone())
+            } else {
+                (b.clone(), a.clone())
+            };
             let found = loop {
                 if (&r0, &r1) == (hi, lo) || (&(&r0 + &r1), &r0) == (hi, lo) {
                     break true;
@@ -221,7 +253,10 @@ fn gcd_1e4_and_1e5_bits_against_lehmer() {
     }
     // Unequal sizes: 10^5 against 6 * 10^4 bits.
     let g = random_bits(5_000, &mut st);
-    let (a, b) = (random_bits(95_000, &mut st) * &g, random_bits(55_000, &mut st) * &g);
+    let (a, b) = (
+        random_bits(95_000, &mut st) * &g,
+        random_bits(55_000, &mut st) * &g,
+    );
     assert_eq!(gcd_hgcd_tuned(&a, &b, FORCED), gcd_lehmer(&a, &b));
 }
 
@@ -230,7 +265,10 @@ fn gcd_1e6_bits_against_lehmer() {
     // 10^6 bits (gcd_biguint takes the half-gcd path): one random pair and one with a planted
     // 300,000-bit factor.
     let mut st = Rng::new(0x1e6);
-    let (a, b) = (random_bits(1_000_000, &mut st), random_bits(1_000_000, &mut st));
+    let (a, b) = (
+        random_bits(1_000_000, &mut st),
+        random_bits(1_000_000, &mut st),
+    );
     assert_eq!(gcd_biguint(&a, &b), gcd_lehmer(&a, &b));
     let g = random_bits(300_000, &mut st);
     let (x, y) = (random_bits(700_000, &mut st), random_bits(699_950, &mut st));
@@ -249,7 +287,10 @@ fn gcd_fibonacci_worst_case() {
     let (f, g) = fibonacci_pair(300_000);
     assert_eq!(gcd(&f, &g), one);
     assert_eq!(gcd(&g, &f), one);
-    assert_eq!(gcd(&fibonacci(300_000), &fibonacci(240_000)), fibonacci(60_000));
+    assert_eq!(
+        gcd(&fibonacci(300_000), &fibonacci(240_000)),
+        fibonacci(60_000)
+    );
     assert_eq!(gcd(&fibonacci(299_997), &fibonacci(200_000)), fibonacci(1));
     // Above the threshold: F(500000) has about 347,000 bits.
     let (f, g) = fibonacci_pair(500_000);
@@ -257,7 +298,10 @@ fn gcd_fibonacci_worst_case() {
     assert_eq!(gcd_biguint(&f, &g), one);
     let (f, g) = fibonacci_pair(9_000);
     assert_eq!(check_gcd(&f, &g), one);
-    assert_eq!(check_gcd(&fibonacci(9_000), &fibonacci(6_000)), fibonacci(3_000));
+    assert_eq!(
+        check_gcd(&fibonacci(9_000), &fibonacci(6_000)),
+        fibonacci(3_000)
+    );
 }
 
 #[test]
@@ -295,13 +339,19 @@ fn gcd_special_operands() {
         assert_eq!(check_gcd(&x, &BigUint::zero()), x);
         // Powers of two times odd numbers: the gcd is the smaller power of two times the gcd
         // of the odd parts.
-        let (u, v) = (random_bits(bits, &mut st) | &one, random_bits(bits, &mut st) | &one);
+        let (u, v) = (
+            random_bits(bits, &mut st) | &one,
+            random_bits(bits, &mut st) | &one,
+        );
         let g_odd = gcd_lehmer(&u, &v);
         for (i, j) in [(0u64, 5000u64), (4321, 64), (bits, bits + 1)] {
             let d = check_gcd(&(&u << i), &(&v << j));
             assert_eq!(d, &g_odd << i.min(j));
         }
-        assert_eq!(check_gcd(&(&one << bits), &(&one << (bits / 2))), &one << (bits / 2));
+        assert_eq!(
+            check_gcd(&(&one << bits), &(&one << (bits / 2))),
+            &one << (bits / 2)
+        );
     }
 }
 
@@ -335,9 +385,13 @@ fn simulate_min_keeps_the_floor() {
     let mut st = Rng::new(0x51a);
     for _ in 0..3000 {
         let t1 = (u128::from(st.next_u64()) << 64 | u128::from(st.next_u64())) | 1 << 127;
-        let t2 = (u128::from(st.next_u64()) << 64 | u128::from(st.next_u64())) >> (st.next_u64() % 8);
+        let t2 =
+            (u128::from(st.next_u64()) << 64 | u128::from(st.next_u64())) >> (st.next_u64() % 8);
         let (t1, t2) = (t1.max(t2), t1.min(t2));
-        assert_eq!(super::super::lehmer_simulate(t1, t2), lehmer_simulate_min(t1, t2, 0));
+        assert_eq!(
+            super::super::lehmer_simulate(t1, t2),
+            lehmer_simulate_min(t1, t2, 0)
+        );
         let min = 1u128 << (st.next_u64() % 126) | 1 << 63;
         if let Some(c) = lehmer_simulate_min(t1, t2, min) {
             let (ia, ib) = (BigInt::from(t1), BigInt::from(t2));
