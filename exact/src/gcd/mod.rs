@@ -341,8 +341,9 @@ fn coseq_next(x: u64, q: u64, y: u64) -> Option<u64> {
 /// Simulates the Euclidean algorithm on the leading 128 bits `t1 >= t2` of `A >= B` (taken at
 /// the same shift), certifying each quotient with Collins' condition and stopping before a
 /// cosequence exceeds 64 bits. Returns `None` when not a single quotient could be certified.
+#[inline(always)]
 fn lehmer_simulate(t1: u128, t2: u128) -> Option<Cosequences> {
-    lehmer_simulate_min(t1, t2, 0)
+    simulate::<false>(t1, t2, 0)
 }
 
 /// [`lehmer_simulate`] that moreover keeps every simulated remainder it returns at least
@@ -350,6 +351,14 @@ fn lehmer_simulate(t1: u128, t2: u128) -> Option<Cosequences> {
 /// half-gcd's steps use this to keep both operands above `2^(64 s)`, see [`hgcd`]). With
 /// `min = 0` it is exactly [`lehmer_simulate`].
 fn lehmer_simulate_min(t1: u128, t2: u128, min: u128) -> Option<Cosequences> {
+    simulate::<true>(t1, t2, min)
+}
+
+/// The simulation behind [`lehmer_simulate`] (`FLOOR = false`: `min` ignored, the check
+/// compiled out) and [`lehmer_simulate_min`]; inlined into both so that Lehmer's loop keeps
+/// its tight code.
+#[inline(always)]
+fn simulate<const FLOOR: bool>(t1: u128, t2: u128, min: u128) -> Option<Cosequences> {
     let (mut a1, mut a2) = (t1, t2);
     // Rows of magnitudes (u, v) of r_{k-1}, r_k, r_{k+1} = ±(u*A - v*B) after k steps.
     let (mut u0, mut u1, mut u2): (u64, u64, u64) = (0, 1, 0);
@@ -361,7 +370,7 @@ fn lehmer_simulate_min(t1: u128, t2: u128, min: u128) -> Option<Cosequences> {
             break;
         }
         let (q, r) = divrem_u128(a1, a2);
-        if r < min {
+        if FLOOR && r < min {
             // Steps 1..k are certified and their remainders r_k >= r_{k+1} (= a1, a2) are at
             // least `min` (r_{k+1} was checked when it was computed; r_k >= r_{k+1}).
             if k == 0 {
