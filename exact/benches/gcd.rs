@@ -1,5 +1,7 @@
 //! `gcd_biguint` against num-integer's `Integer::gcd` (Stein's binary algorithm) on pairs of
-//! pseudo-random numbers with a common factor, at 2 to 6000 64-bit limbs.
+//! pseudo-random numbers with a common factor, at 2 to 6000 64-bit limbs; the half-gcd against
+//! Lehmer's algorithm at 10^3 to 10^6 bits and around their crossover (which sets
+//! `HGCD_GCD_THRESHOLD`), and the half-gcd's own size parameters.
 
 use std::hint::black_box;
 use std::time::{Duration, Instant};
@@ -7,7 +9,10 @@ use std::time::{Duration, Instant};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, SamplingMode};
 use exactcheck_core::Rng;
 use exactcheck_exact::bigint::rem_1;
-use exactcheck_exact::gcd::{gcd_biguint, gcd_u128, gcd_u64};
+use exactcheck_exact::gcd::{
+    gcd_biguint, gcd_hgcd_tuned, gcd_lehmer, gcd_u128, gcd_u64, HgcdTuning, HGCD_GCD_THRESHOLD,
+    HGCD_TUNING,
+};
 use num_bigint::BigUint;
 use num_integer::Integer;
 
@@ -73,6 +78,121 @@ fn bench_gcd(c: &mut Criterion) {
             &(&a, &b),
             |bch, (a, b)| bch.iter(|| black_box(a).gcd(black_box(b))),
         );
+    }
+    group.finish();
+}
+
+/// A random number of exactly `bits` bits.
+fn random_bits(bits: u64, st: &mut Rng) -> BigUint {
+    let limbs = bits.div_ceil(64) as usize;
+    let mut x = random_biguint(limbs, st) >> (64 * limbs as u64 - bits);
+    x.set_bit(bits - 1, true);
+    x
+}
+
+/// Two `bits`-bit numbers with a planted common factor of `bits / 8` bits, and their gcd by
+/// Lehmer's algorithm, checked to be a multiple of the factor.
+fn planted_pair(bits: u64, seed: u64) -> (BigUint, BigUint, BigUint) {
+    let mut st = Rng::new(seed);
+    let g = random_bits(bits / 8, &mut st);
+    let a = random_bits(bits - bits / 8, &mut st) * &g;
+    let b = random_bits(bits - bits / 8 - 3, &mut st) * &g;
+    let d = gcd_lehmer(&a, &b);
+    assert!(
+        (&d % &g) == BigUint::from(0u32),
+        "the planted factor divides the gcd"
+    );
+    (a, b, d)
+}
+
+/// The half-gcd path forced at every size.
+const FORCED: HgcdTuning = HgcdTuning {
+    gcd_lehmer_below: 2,
+    ..HGCD_TUNING
+};
+
+fn slow_group_settings(
+    group: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
+) {
+    group.sample_size(10);
+    group.sampling_mode(SamplingMode::Flat);
+    group.warm_up_time(Duration::from_millis(300));
+    group.measurement_time(Duration::from_secs(3));
+}
+
+/// Lehmer's algorithm (`gcd_lehmer`) against the half-gcd (`gcd_hgcd_tuned` with the measured
+/// tuning, forced at every size) and the dispatching `gcd_biguint`, at 10^3 to 10^6 bits, on
+/// pairs with a planted common factor; every result is checked against Lehmer's before timing.
+fn bench_hgcd_vs_lehmer(c: &mut Criterion) {
+    let mut group = c.benchmark_group("hgcd_vs_lehmer");
+    slow_group_settings(&mut group);
+    for bits in [1_000u64, 10_000, 100_000, 1_000_000] {
+        let (a, b, d) = planted_pair(bits, 0x4ec0 ^ bits);
+        assert_eq!(gcd_hgcd_tuned(&a, &b, FORCED), d);
+        assert_eq!(gcd_biguint(&a, &b), d);
+        group.bench_with_input(
+            BenchmarkId::new("lehmer", bits),
+            &(&a, &b),
+            |bch, (a, b)| bch.iter(|| gcd_lehmer(black_box(a), black_box(b))),
+        );
+        group.bench_with_input(
+            BenchmarkId::new("half-gcd", bits),
+            &(&a, &b),
+            |bch, (a, b)| bch.iter(|| gcd_hgcd_tuned(black_box(a), black_box(b), FORCED)),
+        );
+        group.bench_with_input(
+            BenchmarkId::new("gcd_biguint", bits),
+            &(&a, &b),
+            |bch, (a, b)| bch.iter(|| gcd_biguint(black_box(a), black_box(b))),
+        );
+    }
+    group.finish();
+}
+
+/// Around the crossover: random pairs (no planted factor, the full descent) from 150,000 to
+/// 500,000 bits, Lehmer against the forced half-gcd; `HGCD_GCD_THRESHOLD` is where they meet.
+fn bench_hgcd_crossover(c: &mut Criterion) {
+    let mut group = c.benchmark_group("hgcd_crossover");
+    slow_group_settings(&mut group);
+    eprintln!("HGCD_GCD_THRESHOLD = {HGCD_GCD_THRESHOLD} limbs");
+    let mut st = Rng::new(0xc805);
+    for bits in [150_000u64, 200_000, 300_000, 400_000, 500_000] {
+        let (a, b) = (random_bits(bits, &mut st), random_bits(bits, &mut st));
+        assert_eq!(gcd_hgcd_tuned(&a, &b, FORCED), gcd_lehmer(&a, &b));
+        group.bench_with_input(
+            BenchmarkId::new("lehmer", bits),
+            &(&a, &b),
+            |bch, (a, b)| bch.iter(|| gcd_lehmer(black_box(a), black_box(b))),
+        );
+        group.bench_with_input(
+            BenchmarkId::new("half-gcd", bits),
+            &(&a, &b),
+            |bch, (a, b)| bch.iter(|| gcd_hgcd_tuned(black_box(a), black_box(b), FORCED)),
+        );
+    }
+    group.finish();
+}
+
+/// The half-gcd's own parameters at 300,000 bits: the base-case size (`hgcd_base`, limbs) and
+/// the split of the gcd's outer loop (`split`: hgcd on the leading `n - floor(n split / 3)`
+/// limbs).
+fn bench_hgcd_tuning(c: &mut Criterion) {
+    let mut group = c.benchmark_group("hgcd_tuning");
+    slow_group_settings(&mut group);
+    let (a, b, d) = planted_pair(300_000, 0x7e4e);
+    for hgcd_base in [40usize, 100, 150, 250] {
+        for split in [0usize, 1, 2] {
+            let t = HgcdTuning {
+                hgcd_base,
+                gcd_lehmer_below: 2,
+                split,
+            };
+            assert_eq!(gcd_hgcd_tuned(&a, &b, t), d);
+            let id = format!("base{hgcd_base}/split{split}");
+            group.bench_with_input(BenchmarkId::new("half-gcd", id), &t, |bch, &t| {
+                bch.iter(|| gcd_hgcd_tuned(black_box(&a), black_box(&b), t))
+            });
+        }
     }
     group.finish();
 }
@@ -176,6 +296,9 @@ criterion_group!(
     bench_gcd,
     bench_words,
     bench_350k_bits,
-    bench_rem_1
+    bench_rem_1,
+    bench_hgcd_vs_lehmer,
+    bench_hgcd_crossover,
+    bench_hgcd_tuning
 );
 criterion_main!(benches);

@@ -2,14 +2,18 @@
 //!
 //! num-integer's `Integer::gcd` for `BigUint` is Stein's binary algorithm: about one
 //! subtract-and-shift pass over the whole number per bit of the inputs, which makes it
-//! quadratic with a large constant. This module provides:
+//! quadratic with a large constant, and num-bigint has no subquadratic gcd. This module
+//! provides:
 //!
 //! * [`gcd_u64`] and [`gcd_u128`]: binary gcds on machine words (with a remainder step first
 //!   when the operands differ much in size, and [`gcd_u128`] dropping to [`gcd_u64`] as soon as
 //!   both operands fit in 64 bits);
-//! * [`gcd_biguint`], the main entry point: word-sized shortcuts, one division step when the
-//!   operands differ in size by more than a limb, and otherwise Lehmer's algorithm on 64-bit
-//!   limbs;
+//! * [`gcd_biguint`], the main entry point: the subquadratic half-gcd algorithm ([`hgcd`],
+//!   [`half_gcd`]) when both operands have at least [`HGCD_GCD_THRESHOLD`] limbs, and below
+//!   that [`gcd_lehmer`];
+//! * [`gcd_lehmer`]: word-sized shortcuts, one division step when the operands differ in size
+//!   by more than a limb, and otherwise Lehmer's algorithm on 64-bit limbs (quadratic; the
+//!   reference the half-gcd path is tested against);
 //! * [`gcd_biguint_u64`] and [`gcd_bigint_abs`], conveniences built on those.
 //!
 //! # Lehmer's algorithm
@@ -23,7 +27,17 @@
 //! quotient (a huge quotient, or operands agreeing on all their leading bits) one plain
 //! Euclidean step `A, B = B, A mod B` is done with num-bigint's division.
 //!
-//! Nothing here panics and there is no `unsafe`; `gcd(0, 0) = 0`.
+//! # Half-gcd
+//!
+//! Lehmer's algorithm still costs `O(n^2)` for `n`-limb operands. Above
+//! [`HGCD_GCD_THRESHOLD`] limbs [`gcd_biguint`] uses Schönhage's half-gcd in Möller's
+//! formulation (the one of GMP's `mpn_hgcd`), `O(M(n) log n)` with `M(n)` the cost of
+//! num-bigint's multiplication: see the [`hgcd`] module. Its base case and its single steps
+//! are the Lehmer steps above, kept above a floor (`lehmer_simulate_min`) and accumulated into
+//! a cosequence matrix.
+//!
+//! There is no `unsafe`, and nothing panics but the half-gcd's two `expect`s on a broken
+//! invariant (a negative operand, which Möller's lemma rules out); `gcd(0, 0) = 0`.
 
 use num_bigint::{BigInt, BigUint};
 use num_traits::Zero;
@@ -34,6 +48,14 @@ const U64_REM_THRESHOLD: u32 = 16;
 const U128_REM_THRESHOLD: u32 = 32;
 /// Bound on the cosequences of a Lehmer step, so that the fused update fits in `i128`.
 const COSEQ_MAX: u64 = (1 << 63) - 1;
+
+pub mod hgcd;
+pub use hgcd::{gcd_hgcd_tuned, half_gcd, HalfGcd, HgcdTuning, HGCD_TUNING};
+
+/// Limbs (64 bits) that both operands of [`gcd_biguint`] must have for the half-gcd path;
+/// below it Lehmer's algorithm is faster (measured with criterion, `exact/benches/gcd.rs`,
+/// group `hgcd_vs_lehmer`).
+pub const HGCD_GCD_THRESHOLD: usize = 4700;
 
 /// Greatest common divisor of two `u64` (binary gcd; `gcd_u64(0, 0) == 0`).
 ///
@@ -142,13 +164,26 @@ pub fn gcd_bigint_abs(a: &BigInt, b: &BigInt) -> BigUint {
 /// Greatest common divisor of two [`BigUint`]s (`gcd(0, 0) = 0`); a drop-in, much faster
 /// replacement for num-integer's `Integer::gcd`.
 ///
+/// When both operands have at least [`HGCD_GCD_THRESHOLD`] limbs (64 bits each) this is the
+/// subquadratic half-gcd algorithm ([`hgcd`]); otherwise, and for what is left once the
+/// half-gcd has brought the operands below that size, it is [`gcd_lehmer`].
+pub fn gcd_biguint(a: &BigUint, b: &BigUint) -> BigUint {
+    if a.bits().min(b.bits()) >= 64 * HGCD_GCD_THRESHOLD as u64 {
+        return gcd_hgcd_tuned(a, b, HGCD_TUNING);
+    }
+    gcd_lehmer(a, b)
+}
+
+/// Greatest common divisor of two [`BigUint`]s (`gcd(0, 0) = 0`) by Lehmer's algorithm: the
+/// quadratic reference for [`gcd_biguint`], which uses it below [`HGCD_GCD_THRESHOLD`] limbs.
+///
 /// * a zero operand: the other one is returned;
 /// * an operand that fits in one 64-bit limb: a single-limb remainder, then [`gcd_u64`];
 /// * both operands fitting in 128 bits: [`gcd_u128`];
 /// * bit lengths differing by more than 64: one division step `a % b` first;
 /// * otherwise Lehmer's algorithm on 64-bit limbs (see the module documentation), finished by
 ///   a word-sized gcd.
-pub fn gcd_biguint(a: &BigUint, b: &BigUint) -> BigUint {
+pub fn gcd_lehmer(a: &BigUint, b: &BigUint) -> BigUint {
     if a.is_zero() {
         return b.clone();
     }
@@ -306,7 +341,24 @@ fn coseq_next(x: u64, q: u64, y: u64) -> Option<u64> {
 /// Simulates the Euclidean algorithm on the leading 128 bits `t1 >= t2` of `A >= B` (taken at
 /// the same shift), certifying each quotient with Collins' condition and stopping before a
 /// cosequence exceeds 64 bits. Returns `None` when not a single quotient could be certified.
+#[inline(always)]
 fn lehmer_simulate(t1: u128, t2: u128) -> Option<Cosequences> {
+    simulate::<false>(t1, t2, 0)
+}
+
+/// [`lehmer_simulate`] that moreover keeps every simulated remainder it returns at least
+/// `min`: it stops before the first quotient whose remainder would fall below `min` (the
+/// half-gcd's steps use this to keep both operands above `2^(64 s)`, see [`hgcd`]). With
+/// `min = 0` it is exactly [`lehmer_simulate`].
+fn lehmer_simulate_min(t1: u128, t2: u128, min: u128) -> Option<Cosequences> {
+    simulate::<true>(t1, t2, min)
+}
+
+/// The simulation behind [`lehmer_simulate`] (`FLOOR = false`: `min` ignored, the check
+/// compiled out) and [`lehmer_simulate_min`]; inlined into both so that Lehmer's loop keeps
+/// its tight code.
+#[inline(always)]
+fn simulate<const FLOOR: bool>(t1: u128, t2: u128, min: u128) -> Option<Cosequences> {
     let (mut a1, mut a2) = (t1, t2);
     // Rows of magnitudes (u, v) of r_{k-1}, r_k, r_{k+1} = ±(u*A - v*B) after k steps.
     let (mut u0, mut u1, mut u2): (u64, u64, u64) = (0, 1, 0);
@@ -318,6 +370,20 @@ fn lehmer_simulate(t1: u128, t2: u128) -> Option<Cosequences> {
             break;
         }
         let (q, r) = divrem_u128(a1, a2);
+        if FLOOR && r < min {
+            // Steps 1..k are certified and their remainders r_k >= r_{k+1} (= a1, a2) are at
+            // least `min` (r_{k+1} was checked when it was computed; r_k >= r_{k+1}).
+            if k == 0 {
+                return None;
+            }
+            return Some(Cosequences {
+                x1: u1,
+                y1: v1,
+                x2: u2,
+                y2: v2,
+                odd: k % 2 == 1,
+            });
+        }
         // v2 >= 1, so a quotient above COSEQ_MAX always overflows the cosequences.
         let Ok(q) = u64::try_from(q) else {
             break;
