@@ -73,6 +73,7 @@
 //! polynomial library beyond num-bigint; the kernels (Taylor shift, de Casteljau, Horner) are a
 //! few lines each.
 
+use super::limbs::Limbs;
 use super::*;
 use num_bigint::Sign as BigSign;
 use num_traits::{One, Signed, ToPrimitive, Zero};
@@ -230,14 +231,24 @@ fn to_bernstein_integer(p: &[BigInt]) -> Vec<BigInt> {
     let n = p.len() - 1;
     let mut c: Vec<BigInt> = p.iter().rev().cloned().collect();
     taylor_shift_1(&mut c);
-    let mut binom = vec![BigInt::one(); n + 1];
-    for i in 1..=n {
-        binom[i] = &binom[i - 1] * BigInt::from(n - i + 1) / BigInt::from(i);
+    // L = lcm_i C(n, i) = lcm(1, ..., n + 1) / (n + 1), and the multipliers m_i = L / C(n, i)
+    // by m_{i+1} = m_i (i + 1) / (n - i) (exact: both are integers), word divisions only.
+    let mut l = BigInt::one();
+    for k in 2..=(n as u64 + 1) {
+        let g = num_integer::Integer::gcd(&rem_small(&l, k), &k);
+        l *= k / g;
     }
-    let l = binom
-        .iter()
-        .fold(BigInt::one(), |l, b| num_integer::Integer::lcm(&l, b));
-    (0..=n).map(|i| &c[n - i] * (&l / &binom[i])).collect()
+    l /= n as u64 + 1;
+    let mut m = l;
+    let mut out = Vec::with_capacity(n + 1);
+    for i in 0..=n {
+        out.push(&c[n - i] * &m);
+        if i < n {
+            m *= i as u64 + 1;
+            m /= (n - i) as u64;
+        }
+    }
+    out
 }
 
 /// Divides all coefficients by their common power of two.
@@ -292,22 +303,81 @@ enum UnitRoot {
 /// The roots in the open interval `(0, 1)` of the square-free integer polynomial `p` (given by
 /// its coefficients; the degree may be below `p.len() - 1`). With `pairs`, a node with two sign
 /// variations and equal end signs is first offered to [`split_close_pair`].
-fn unit_roots(p: &[BigInt], pairs: bool) -> Vec<UnitRoot> {
-    let mut out = Vec::new();
+fn unit_roots(p: &[BigInt], opts: Options) -> Vec<UnitRoot> {
     if p.len() < 2 {
-        return out;
+        return Vec::new();
     }
     let b = to_bernstein_integer(p);
+    if opts.limbs {
+        unit_roots_from(Limbs::from_bigints(&b), p, opts.pairs)
+    } else {
+        unit_roots_from(b, p, opts.pairs)
+    }
+}
+
+/// The integer Bernstein coefficients of a subdivision node: `BigInt`s (the reference) or
+/// fixed-width limbs ([`Limbs`]).
+trait NodeCoeffs: Sized {
+    fn degree(&self) -> usize;
+    fn sign_at(&self, i: usize) -> Sign;
+    fn halves(&self) -> (Self, Self);
+    fn bigints(&self) -> Vec<BigInt>;
+    fn variations(&self) -> usize {
+        isolate::count_variations((0..=self.degree()).map(|i| self.sign_at(i)))
+    }
+}
+
+impl NodeCoeffs for Vec<BigInt> {
+    fn degree(&self) -> usize {
+        self.len() - 1
+    }
+    fn sign_at(&self, i: usize) -> Sign {
+        sign_of(&self[i])
+    }
+    fn halves(&self) -> (Self, Self) {
+        split_half(self)
+    }
+    fn bigints(&self) -> Vec<BigInt> {
+        self.clone()
+    }
+    fn variations(&self) -> usize {
+        variations(self)
+    }
+}
+
+impl NodeCoeffs for Limbs {
+    fn degree(&self) -> usize {
+        self.len() - 1
+    }
+    fn sign_at(&self, i: usize) -> Sign {
+        match self.sign(i) {
+            -1 => Sign::Negative,
+            0 => Sign::Zero,
+            _ => Sign::Positive,
+        }
+    }
+    fn halves(&self) -> (Self, Self) {
+        self.split_half()
+    }
+    fn bigints(&self) -> Vec<BigInt> {
+        self.to_bigints()
+    }
+}
+
+/// The subdivision of [`unit_roots`] from the root node's coefficients `b`.
+fn unit_roots_from<C: NodeCoeffs>(b: C, p: &[BigInt], pairs: bool) -> Vec<UnitRoot> {
+    let mut out = Vec::new();
     let mut pair_splitter: Option<PairSplitter> = None;
     let mut stack = vec![(b, BigInt::zero(), 0u64)];
     while let Some((b, c, j)) = stack.pop() {
-        let v = variations(&b);
+        let v = b.variations();
         if v == 0 {
             continue;
         }
-        let n = b.len() - 1;
-        if v == 1 && !b[0].is_zero() && !b[n].is_zero() {
-            let estimate = bernstein_root_estimate(&b)
+        let n = b.degree();
+        let (s0, sn) = (b.sign_at(0), b.sign_at(n));
+        if v == 1 && s0 != Sign::Zero && sn != Sign::Zero {
+            let estimate = bernstein_root_estimate(&b.bigints())
                 .and_then(rational_of_f64)
                 .map(|t| (Rational::from(c.clone()) + t) / pow2(j));
             out.push(UnitRoot::Open {
@@ -317,9 +387,9 @@ fn unit_roots(p: &[BigInt], pairs: bool) -> Vec<UnitRoot> {
             });
             continue;
         }
-        if pairs && v == 2 && j >= 2 && !b[0].is_zero() && b[0].sign() == b[n].sign() {
+        if pairs && v == 2 && j >= 2 && s0 != Sign::Zero && s0 == sn {
             let splitter = pair_splitter.get_or_insert_with(|| PairSplitter::new(p));
-            if let Some((x, delta)) = splitter.split(&c, j, sign_of(&b[0])) {
+            if let Some((x, delta)) = splitter.split(&c, j, s0) {
                 let (a, m, e) = (dyadic(&c, j), x.to_rational(), dyadic(&(&c + 1), j));
                 let d = delta.and_then(rational_of_f64);
                 out.push(UnitRoot::Open {
@@ -335,9 +405,9 @@ fn unit_roots(p: &[BigInt], pairs: bool) -> Vec<UnitRoot> {
                 continue;
             }
         }
-        let (left, right) = split_half(&b);
+        let (left, right) = b.halves();
         let c2: BigInt = &c << 1;
-        if right[0].is_zero() {
+        if right.sign_at(0) == Sign::Zero {
             out.push(UnitRoot::Exact(&c2 + 1, j + 1));
         }
         stack.push((right, &c2 + 1, j + 1));
@@ -695,7 +765,7 @@ struct Isolated {
 /// Isolating intervals of all real roots of the primitive square-free `q` (degree >= 1,
 /// positive leading coefficient), sorted. `pairs`: whether close pairs are split at a point of
 /// opposite sign ([`PairSplitter`]) rather than by subdivision alone.
-fn isolate_square_free(q: &[BigInt], pairs: bool) -> Vec<Isolated> {
+fn isolate_square_free(q: &[BigInt], opts: Options) -> Vec<Isolated> {
     let n = q.len() - 1;
     let bound = root_bound(q);
     let mut out: Vec<Isolated> = Vec::new();
@@ -723,7 +793,7 @@ fn isolate_square_free(q: &[BigInt], pairs: bool) -> Vec<Isolated> {
     let rev_neg: Vec<BigInt> = neg.iter().rev().cloned().collect();
     debug_assert_eq!(rev.len(), n + 1);
     for (which, p) in [q, &rev[..], &neg[..], &rev_neg[..]].into_iter().enumerate() {
-        for r in unit_roots(p, pairs) {
+        for r in unit_roots(p, opts) {
             let item = match r {
                 UnitRoot::Exact(c, j) => {
                     let x = dyadic(&c, j);
@@ -901,12 +971,8 @@ impl Refiner<'_> {
             }
         }
         // h = 2^-kk, the largest power of two with 4h <= w (h = 1 when w >= 4).
-        let mut kk: u64 = 0;
-        let mut h4 = Rational::from_integer(4);
-        while h4 > *w {
-            h4 *= half();
-            kk += 1;
-        }
+        // The least k >= 0 with 4 2^-k <= w: 2 - k <= floor(log2 w).
+        let kk: u64 = (2 - floor_log2(w)).max(0) as u64;
         let scale = (kk as f64).exp2();
         let s_hi = sign_neg(s_lo);
         // The last exact evaluation (x, q(x) 2^(k n), q'(x) 2^(k (n-1))).
@@ -992,13 +1058,8 @@ impl Refiner<'_> {
                     // floor(mid 2^e) / 2^e > mid - 2^-e >= mid - width / 4 > lo, and e <= kk
                     // because 2^-kk <= w / 4 < width / 4.
                     let mid = midpoint(&lo, &hi);
-                    let mut e = 0u64;
-                    let mut step = Rational::ONE;
-                    let quarter = width.mul_ref(&Rational::new(1, 4).expect("4 != 0"));
-                    while step > quarter {
-                        step *= half();
-                        e += 1;
-                    }
+                    // The least e >= 0 with 2^-e <= width / 4.
+                    let e = (2 - floor_log2(&width)).max(0) as u64;
                     Dyadic::floor_of(&mid, e)
                 }
             };
@@ -1020,6 +1081,24 @@ impl Refiner<'_> {
                 _ => hi = xr,
             }
         }
+    }
+}
+
+/// `floor(log2 x)` for a positive rational `x`.
+fn floor_log2(x: &Rational) -> i64 {
+    let (u, v) = (x.numer(), x.denom());
+    debug_assert!(u.sign() == BigSign::Plus);
+    // 2^(bu - 1) <= u < 2^bu and likewise v: log2 x lies in (b - 1, b + 1), b = bu - bv.
+    let b = u.bits() as i64 - v.bits() as i64;
+    let at_least_2b = if b >= 0 {
+        u >= (v << b as u64)
+    } else {
+        (u << (-b) as u64) >= v
+    };
+    if at_least_2b {
+        b
+    } else {
+        b - 1
     }
 }
 
@@ -1059,7 +1138,7 @@ fn sign_of(x: &BigInt) -> Sign {
 /// Beyond [`MAX_DESCARTES_DEGREE`].
 pub fn integer_real_roots(coeffs: &[BigInt]) -> Result<Vec<RootInterval>, ZeroPolynomial> {
     Ok(prepare(coeffs)?.map_or_else(Vec::new, |q| {
-        isolate_square_free(&q, true)
+        isolate_square_free(&q, Options::FAST)
             .into_iter()
             .map(|i| i.ri)
             .collect()
@@ -1096,6 +1175,8 @@ struct Options {
     rationals: bool,
     /// The refinement starts with a window of the target width around the estimate.
     windows: bool,
+    /// The subdivision on fixed-width limbs ([`Limbs`]) instead of `BigInt`s.
+    limbs: bool,
 }
 
 impl Options {
@@ -1103,12 +1184,14 @@ impl Options {
         pairs: true,
         rationals: true,
         windows: true,
+        limbs: true,
     };
     #[cfg(test)]
     const REFERENCE: Options = Options {
         pairs: false,
         rationals: false,
         windows: false,
+        limbs: false,
     };
 }
 
@@ -1121,7 +1204,7 @@ fn real_roots_to_with(
     let Some(q) = prepare(coeffs)? else {
         return Ok(Vec::new());
     };
-    let roots = isolate_square_free(&q, opts.pairs);
+    let roots = isolate_square_free(&q, opts);
     let refiner = Refiner::new(&q);
     let k = roots.len();
     let mut out: Vec<RootInterval> = Vec::with_capacity(k);
@@ -1272,9 +1355,66 @@ mod unit_tests {
             let exact = Bernstein::from_power(&rationals(&p)).expect("non-empty");
             positive_multiple(&b, exact.coeffs());
             let (l, r) = split_half(&b);
+            // The fixed-width kernel is the BigInt one exactly, twice over.
+            let (ll, lr) = Limbs::from_bigints(&b).split_half();
+            assert_eq!(ll.to_bigints(), l);
+            assert_eq!(lr.to_bigints(), r);
+            let (lll, llr) = ll.split_half();
+            assert_eq!((lll.to_bigints(), llr.to_bigints()), split_half(&l));
             let (el, er) = exact.split(&half());
             positive_multiple(&l, el.coeffs());
             positive_multiple(&r, er.coeffs());
+        }
+    }
+
+    #[test]
+    fn limb_kernel_matches_bigint_kernel_on_wide_numbers() {
+        let mut rng = Rng::new(4141);
+        for n in [1usize, 2, 5, 20, 41, 70] {
+            for bits in [3u32, 63, 64, 65, 130, 400] {
+                let p: Vec<BigInt> = (0..=n)
+                    .map(|_| {
+                        let x = (BigInt::from(rng.below(1 << 62)) << (bits.saturating_sub(62)))
+                            + BigInt::from(rng.below(1 << 20));
+                        if rng.below(2) == 0 {
+                            -x
+                        } else {
+                            x
+                        }
+                    })
+                    .collect();
+                let b = to_bernstein_integer(&p);
+                let mut big = b.clone();
+                let mut limbs = Limbs::from_bigints(&b);
+                assert_eq!(limbs.to_bigints(), b);
+                // Down one path of ten levels, alternating sides.
+                for level in 0..10 {
+                    let (bl, br) = split_half(&big);
+                    let (ll, lr) = limbs.split_half();
+                    assert_eq!(ll.to_bigints(), bl, "n {n}, bits {bits}, level {level}");
+                    assert_eq!(lr.to_bigints(), br, "n {n}, bits {bits}, level {level}");
+                    (big, limbs) = if level % 2 == 0 { (bl, ll) } else { (br, lr) };
+                    for i in 0..=n {
+                        assert_eq!(limbs.sign_at(i), sign_of(&big[i]));
+                    }
+                }
+            }
+        }
+        // The multipliers L / C(n, i) by the recurrence equal the lcm of the binomials over
+        // each binomial.
+        for n in [1usize, 6, 30, 61] {
+            let p: Vec<BigInt> = (0..=n).map(|i| BigInt::from(i as i64 - 3)).collect();
+            let mut binom = vec![BigInt::one(); n + 1];
+            for i in 1..=n {
+                binom[i] = &binom[i - 1] * BigInt::from(n - i + 1) / BigInt::from(i);
+            }
+            let l = binom
+                .iter()
+                .fold(BigInt::one(), |l, b| num_integer::Integer::lcm(&l, b));
+            let mut c: Vec<BigInt> = p.iter().rev().cloned().collect();
+            taylor_shift_1(&mut c);
+            let expect: Vec<BigInt> = (0..=n).map(|i| &c[n - i] * (&l / &binom[i])).collect();
+            assert_eq!(to_bernstein_integer(&p), expect);
         }
     }
 
