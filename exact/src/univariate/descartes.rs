@@ -321,7 +321,8 @@ trait NodeCoeffs: Sized {
     fn degree(&self) -> usize;
     fn sign_at(&self, i: usize) -> Sign;
     fn halves(&self) -> (Self, Self);
-    fn bigints(&self) -> Vec<BigInt>;
+    /// The numbers times a common power of two, in `f64` (approximately: for estimates only).
+    fn scaled_f64s(&self) -> Vec<f64>;
     fn variations(&self) -> usize {
         isolate::count_variations((0..=self.degree()).map(|i| self.sign_at(i)))
     }
@@ -337,8 +338,9 @@ impl NodeCoeffs for Vec<BigInt> {
     fn halves(&self) -> (Self, Self) {
         split_half(self)
     }
-    fn bigints(&self) -> Vec<BigInt> {
-        self.clone()
+    fn scaled_f64s(&self) -> Vec<f64> {
+        let shift = self.iter().map(|c| c.bits()).max().unwrap_or(0).saturating_sub(60);
+        self.iter().map(|c| scaled_f64(c, shift)).collect()
     }
     fn variations(&self) -> usize {
         variations(self)
@@ -359,8 +361,8 @@ impl NodeCoeffs for Limbs {
     fn halves(&self) -> (Self, Self) {
         self.split_half()
     }
-    fn bigints(&self) -> Vec<BigInt> {
-        self.to_bigints()
+    fn scaled_f64s(&self) -> Vec<f64> {
+        self.scaled_f64s()
     }
 }
 
@@ -377,7 +379,7 @@ fn unit_roots_from<C: NodeCoeffs>(b: C, p: &[BigInt], pairs: bool) -> Vec<UnitRo
         let n = b.degree();
         let (s0, sn) = (b.sign_at(0), b.sign_at(n));
         if v == 1 && s0 != Sign::Zero && sn != Sign::Zero {
-            let estimate = bernstein_root_estimate(&b.bigints())
+            let estimate = bernstein_root_estimate(b.scaled_f64s())
                 .and_then(rational_of_f64)
                 .map(|t| (Rational::from(c.clone()) + t) / pow2(j));
             out.push(UnitRoot::Open {
@@ -456,16 +458,14 @@ fn scaled_f64(x: &BigInt, shift: u64) -> f64 {
 /// evaluated with every power at most 1. Only a candidate generator for
 /// [`recognise_rational`] (nothing is decided on it); `None` beyond degree 1000 (the binomials
 /// leave the `f64` range).
-fn bernstein_root_estimate(b: &[BigInt]) -> Option<f64> {
-    let n = b.len() - 1;
+fn bernstein_root_estimate(mut g: Vec<f64>) -> Option<f64> {
+    let n = g.len().checked_sub(1)?;
     if n > 1000 || n == 0 {
         return None;
     }
-    let shift = b.iter().map(|c| c.bits()).max()?.saturating_sub(60);
-    let mut g = Vec::with_capacity(n + 1);
     let mut binom = 1f64;
-    for (i, c) in b.iter().enumerate() {
-        g.push(scaled_f64(c, shift) * binom);
+    for (i, x) in g.iter_mut().enumerate() {
+        *x *= binom;
         binom = binom * (n - i) as f64 / (i + 1) as f64;
     }
     if !g.iter().all(|x| x.is_finite()) {
@@ -485,13 +485,17 @@ fn bernstein_root_estimate(b: &[BigInt]) -> Option<f64> {
         return None;
     }
     let mut side = 0i8;
+    let mut slow = 0;
     for _ in 0..200 {
-        if c - a <= 4.0 * f64::EPSILON * c {
+        let width = c - a;
+        if width <= 1e-17 || width <= 4.0 * f64::EPSILON * c {
             break;
         }
         let mut m = (a * fc - c * fa) / (fc - fa);
-        if !(m > a && m < c) {
+        // A bisection after two steps that did not halve the bracket.
+        if !(m > a && m < c) || slow >= 2 {
             m = 0.5 * (a + c);
+            slow = 0;
         }
         let fm = f(m);
         if fm == 0.0 {
@@ -514,6 +518,11 @@ fn bernstein_root_estimate(b: &[BigInt]) -> Option<f64> {
                 fa *= 0.5;
             }
             side = 1;
+        }
+        if c - a > 0.5 * width {
+            slow += 1;
+        } else {
+            slow = 0;
         }
     }
     Some(0.5 * (a + c))
@@ -955,14 +964,56 @@ impl Refiner<'_> {
         }
         // With an estimate e of the root: first the window [e - w/2, e + w/2] (exact signs at
         // its ends, each inside the bracket).
+        // A miss on one side is followed by points at e -/+ (2^k - 1/2) w, k = 1, 2, ..., 6,
+        // on that side, until the sign flips (the estimate is usually off by a few w).
         if let Some(e) = estimate {
             let hw = w.mul_ref(&half());
+            let mut below = false;
+            let mut above = false;
             for x in [e.sub_ref(&hw), e.add_ref(&hw)] {
                 if x > lo && x < hi {
                     match sign_at_rational(self.q, &x) {
                         Sign::Zero => return RootInterval::exact(x),
                         s if s == s_lo => lo = x,
-                        _ => hi = x,
+                        _ => {
+                            hi = x;
+                            below = lo < e;
+                        }
+                    }
+                }
+            }
+            if !below && hi > e && lo > e {
+                above = true;
+            }
+            let mut step = w.add_ref(w);
+            for _ in 0..6 {
+                if hi.sub_ref(&lo) <= step {
+                    break;
+                }
+                let x = if below {
+                    e.sub_ref(&step.sub_ref(&hw))
+                } else if above {
+                    e.add_ref(&step.sub_ref(&hw))
+                } else {
+                    break;
+                };
+                step = step.add_ref(&step);
+                if !(x > lo && x < hi) {
+                    break;
+                }
+                match sign_at_rational(self.q, &x) {
+                    Sign::Zero => return RootInterval::exact(x),
+                    s if s == s_lo => {
+                        lo = x;
+                        if below {
+                            break;
+                        }
+                    }
+                    _ => {
+                        hi = x;
+                        if above {
+                            break;
+                        }
                     }
                 }
             }
@@ -1398,6 +1449,18 @@ mod unit_tests {
                         assert_eq!(limbs.sign_at(i), sign_of(&big[i]));
                     }
                 }
+            }
+        }
+        // The f64 images of the limbs and of the BigInts agree up to a common power of two.
+        for bits in [5u32, 64, 200] {
+            let b: Vec<BigInt> = (0..9)
+                .map(|i| (BigInt::from(i * 7919 - 30000) << bits) - BigInt::from(i))
+                .collect();
+            let (x, y) = (Limbs::from_bigints(&b).scaled_f64s(), b.scaled_f64s());
+            let ratio = x[0] / y[0];
+            assert_eq!(ratio, ratio.log2().round().exp2(), "a power of two");
+            for (u, v) in x.iter().zip(&y) {
+                assert!((u - v * ratio).abs() <= 1e-15 * u.abs().max(1e-300), "{u} {v}");
             }
         }
         // The multipliers L / C(n, i) by the recurrence equal the lcm of the binomials over

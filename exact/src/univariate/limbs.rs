@@ -110,6 +110,7 @@ impl Limbs {
     }
 
     /// The numbers as `BigInt`s.
+    #[cfg(test)]
     pub(super) fn to_bigints(&self) -> Vec<BigInt> {
         self.d
             .chunks(self.w)
@@ -213,5 +214,49 @@ impl Limbs {
             Limbs { w, d: left }.normalise(),
             Limbs { w, d: right }.normalise(),
         )
+    }
+}
+
+impl Limbs {
+    /// The numbers times `2^-s` in `f64`, `s` common (the largest lands near `2^64`), from the
+    /// two leading limbs of each magnitude: a relative error below `2^-52` each; for estimates
+    /// only (nothing is decided on them).
+    pub(super) fn scaled_f64s(&self) -> Vec<f64> {
+        let w = self.w;
+        let mut scratch = vec![0u64; w];
+        let mut mags: Vec<(bool, f64, usize)> = Vec::with_capacity(self.len());
+        for x in self.d.chunks(w) {
+            let neg = (x[w - 1] as i64) < 0;
+            let m: &[u64] = if neg {
+                let mut carry = true;
+                for (d, &l) in scratch.iter_mut().zip(x) {
+                    let (v, c) = (!l).overflowing_add(carry as u64);
+                    *d = v;
+                    carry = c;
+                }
+                &scratch
+            } else {
+                x
+            };
+            match m.iter().rposition(|&l| l != 0) {
+                None => mags.push((false, 0.0, 0)),
+                Some(t) => {
+                    let lo = if t > 0 { m[t - 1] } else { 0 };
+                    let v = m[t] as f64 * 18446744073709551616.0 + lo as f64;
+                    mags.push((neg, v, t));
+                }
+            }
+        }
+        let top = mags.iter().map(|&(_, _, t)| t).max().unwrap_or(0);
+        mags.into_iter()
+            .map(|(neg, v, t)| {
+                let x = v * (64.0 * (t as f64 - top as f64) - 64.0).exp2();
+                if neg {
+                    -x
+                } else {
+                    x
+                }
+            })
+            .collect()
     }
 }
