@@ -230,7 +230,14 @@ fn taylor_shift_1(a: &mut [BigInt]) {
 fn to_bernstein_integer(p: &[BigInt]) -> Vec<BigInt> {
     let n = p.len() - 1;
     let mut c: Vec<BigInt> = p.iter().rev().cloned().collect();
-    taylor_shift_1(&mut c);
+    if n >= 8 {
+        // On fixed-width limbs (the coefficients of p(x + 1) have at most n more bits).
+        let mut l = Limbs::from_bigints_with_room(&c, n + 1);
+        l.taylor_shift_1();
+        c = l.to_bigints();
+    } else {
+        taylor_shift_1(&mut c);
+    }
     // L = lcm_i C(n, i) = lcm(1, ..., n + 1) / (n + 1), and the multipliers m_i = L / C(n, i)
     // by m_{i+1} = m_i (i + 1) / (n - i) (exact: both are integers), word divisions only.
     let mut l = BigInt::one();
@@ -935,6 +942,11 @@ impl Refiner<'_> {
         }
     }
 
+    /// `q(x) 2^(k n)` for `x = c / 2^k`.
+    fn value_exact(&self, x: &Dyadic) -> BigInt {
+        PairSplitter::eval(self.q, x)
+    }
+
     /// `(q(x) 2^(k n), q'(x) 2^(k (n-1)))` for `x = c / 2^k`.
     fn eval_exact(&self, x: &Dyadic) -> (BigInt, BigInt) {
         let q = self.q;
@@ -962,55 +974,63 @@ impl Refiner<'_> {
         if hi.sub_ref(&lo) <= *w {
             return RootInterval { lo, hi };
         }
-        // With an estimate e of the root: first the window [e - w/2, e + w/2] (exact signs at
-        // its ends, each inside the bracket).
-        // A miss on one side is followed by points at e -/+ (2^k - 1/2) w, k = 1, 2, ..., 6,
-        // on that side, until the sign flips (the estimate is usually off by a few w).
+        // The least k >= 0 with 4 2^-k <= w: 2 - k <= floor(log2 w).
+        let kk: u64 = (2 - floor_log2(w)).max(0) as u64;
+        // With an estimate e of the root, rounded to the grid h = 2^-kk: first the window
+        // [e - 2h, e + 2h] (width 4h <= w; exact signs at its ends, each inside the bracket).
+        // A miss on one side is followed by the grid points e -/+ 2^m 2h, m = 1, 2, ..., 6, on
+        // that side, until the sign flips (the estimate is usually off by a few h).
         if let Some(e) = estimate {
-            let hw = w.mul_ref(&half());
+            let scaled = e.mul_ref(&pow2(kk));
+            let en = floor(&scaled.add_ref(&half()));
+            let at = |k: i64| Dyadic {
+                num: &en + BigInt::from(k),
+                exp: kk,
+            };
             let mut below = false;
             let mut above = false;
-            for x in [e.sub_ref(&hw), e.add_ref(&hw)] {
-                if x > lo && x < hi {
-                    match sign_at_rational(self.q, &x) {
-                        Sign::Zero => return RootInterval::exact(x),
-                        s if s == s_lo => lo = x,
+            for k in [-2i64, 2] {
+                let x = at(k);
+                let xr = x.to_rational();
+                if xr > lo && xr < hi {
+                    match sign_of(&self.value_exact(&x)) {
+                        Sign::Zero => return RootInterval::exact(xr),
+                        s if s == s_lo => {
+                            lo = xr;
+                            above = k == 2;
+                        }
                         _ => {
-                            hi = x;
-                            below = lo < e;
+                            hi = xr;
+                            below = k == -2;
                         }
                     }
                 }
             }
-            if !below && hi > e && lo > e {
-                above = true;
-            }
-            let mut step = w.add_ref(w);
+            let mut m: i64 = 4;
             for _ in 0..6 {
-                if hi.sub_ref(&lo) <= step {
-                    break;
-                }
-                let x = if below {
-                    e.sub_ref(&step.sub_ref(&hw))
+                let k = if below {
+                    -m
                 } else if above {
-                    e.add_ref(&step.sub_ref(&hw))
+                    m
                 } else {
                     break;
                 };
-                step = step.add_ref(&step);
-                if !(x > lo && x < hi) {
+                m *= 2;
+                let x = at(k);
+                let xr = x.to_rational();
+                if !(xr > lo && xr < hi) {
                     break;
                 }
-                match sign_at_rational(self.q, &x) {
-                    Sign::Zero => return RootInterval::exact(x),
+                match sign_of(&self.value_exact(&x)) {
+                    Sign::Zero => return RootInterval::exact(xr),
                     s if s == s_lo => {
-                        lo = x;
+                        lo = xr;
                         if below {
                             break;
                         }
                     }
                     _ => {
-                        hi = x;
+                        hi = xr;
                         if above {
                             break;
                         }
@@ -1022,8 +1042,6 @@ impl Refiner<'_> {
             }
         }
         // h = 2^-kk, the largest power of two with 4h <= w (h = 1 when w >= 4).
-        // The least k >= 0 with 4 2^-k <= w: 2 - k <= floor(log2 w).
-        let kk: u64 = (2 - floor_log2(w)).max(0) as u64;
         let scale = (kk as f64).exp2();
         let s_hi = sign_neg(s_lo);
         // The last exact evaluation (x, q(x) 2^(k n), q'(x) 2^(k (n-1))).
@@ -1155,6 +1173,7 @@ fn floor_log2(x: &Rational) -> i64 {
 
 /// The exact sign of the integer polynomial `q` at the rational `x = u / v` (`v > 0`): the sign
 /// of `sum q_i u^i v^(n-i)`.
+#[cfg(test)]
 fn sign_at_rational(q: &[BigInt], x: &Rational) -> Sign {
     let (u, v) = (x.numer(), x.denom());
     let n = q.len() - 1;
@@ -1462,6 +1481,17 @@ mod unit_tests {
             for (u, v) in x.iter().zip(&y) {
                 assert!((u - v * ratio).abs() <= 1e-15 * u.abs().max(1e-300), "{u} {v}");
             }
+        }
+        // The Taylor shift on limbs is the BigInt one.
+        for n in [8usize, 20, 57] {
+            let c: Vec<BigInt> = (0..=n)
+                .map(|i| (BigInt::from(i as i64 * 977 - 20_000) << (i * 3)) - 5)
+                .collect();
+            let mut reference = c.clone();
+            taylor_shift_1(&mut reference);
+            let mut l = Limbs::from_bigints_with_room(&c, n + 1);
+            l.taylor_shift_1();
+            assert_eq!(l.to_bigints(), reference);
         }
         // The multipliers L / C(n, i) by the recurrence equal the lcm of the binomials over
         // each binomial.

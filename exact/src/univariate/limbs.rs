@@ -86,7 +86,12 @@ fn signed_bits(x: &[u64]) -> usize {
 impl Limbs {
     /// The numbers `b`, each in the least common number of limbs.
     pub(super) fn from_bigints(b: &[BigInt]) -> Limbs {
-        let bits = b.iter().map(|c| c.bits() as usize + 1).max().unwrap_or(1);
+        Limbs::from_bigints_with_room(b, 0)
+    }
+
+    /// The numbers `b` in a common number of limbs with room for `extra` more bits.
+    pub(super) fn from_bigints_with_room(b: &[BigInt], extra: usize) -> Limbs {
+        let bits = b.iter().map(|c| c.bits() as usize + 1).max().unwrap_or(1) + extra;
         let w = bits.div_ceil(64).max(1);
         let mut d = Vec::with_capacity(w * b.len());
         for c in b {
@@ -110,7 +115,6 @@ impl Limbs {
     }
 
     /// The numbers as `BigInt`s.
-    #[cfg(test)]
     pub(super) fn to_bigints(&self) -> Vec<BigInt> {
         self.d
             .chunks(self.w)
@@ -183,6 +187,20 @@ impl Limbs {
             self.resized(need)
         } else {
             self
+        }
+    }
+
+    /// `a(x + 1)` in place for the polynomial with these coefficients (constant term first),
+    /// `n(n+1)/2` additions; the caller leaves room for `n` more bits
+    /// ([`Limbs::from_bigints_with_room`]).
+    pub(super) fn taylor_shift_1(&mut self) {
+        let w = self.w;
+        let n = self.len() - 1;
+        for i in 0..n {
+            for j in (i..n).rev() {
+                let (lo, hi) = self.d.split_at_mut((j + 1) * w);
+                add_assign(&mut lo[j * w..], &hi[..w]);
+            }
         }
     }
 
