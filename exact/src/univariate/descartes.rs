@@ -36,6 +36,44 @@
 //! in the classical monomial VCA (one for the test, one for the right child), and its sign count
 //! is free. The coefficients grow by `n` bits per level either way.
 //!
+//! The multipliers `L / C(n, i)` come from `L = lcm(1, ..., n + 1) / (n + 1)` (the lcm of a row
+//! of Pascal's triangle) and `m_{i+1} = m_i (i + 1) / (n - i)` (an exact division by a word, both
+//! sides being integers), with no big-integer lcm or division.
+//! 5. **Fixed-width limbs.** The subdivision and the Taylor shift run on [`Limbs`]: every
+//!    coefficient of a node in the same number of 64-bit two's complement limbs, one flat vector,
+//!    additions as carry chains in place; the width is fixed before each split for `max bits +
+//!    n + 1` bits, which no entry of the triangle can exceed (module `limbs`). The `BigInt`
+//!    kernels are kept ([`split_half`], `taylor_shift_1`) and the tests assert equality.
+//! 6. **Close pairs.** On a node with `V = 2` whose end values have the same sign `s` (depth at
+//!    least 2), a point `c` strictly inside with `sgn q(c) = -s` separates the node: each half
+//!    has a sign change at its ends, hence a root, and the node has at most `V = 2` roots, so
+//!    each half holds exactly one and is an isolating interval. `c` is sought as the critical
+//!    point between the pair: Newton's method on `q'` in `f64` from the middle (abandoned when
+//!    it leaves the node), then exact Newton steps `c - q'(c) / q''(c)` on dyadics, the
+//!    precision doubling each step (quadratic convergence), up to 4096 bits, abandoned when a
+//!    step grows or leaves the node; each `c` is tested by the exact sign of `q(c)`. Only the
+//!    exact sign certifies; when no `c` is found the node is subdivided as before. The attempt
+//!    is made only when the `f64` estimate `sqrt(2 |q / q''|)` of the half-distance of the pair
+//!    at the critical point is below `1/256` of the node width (a pair bisection would not
+//!    separate in a few levels). Mignotte's `x^40 - 2 (10 x - 1)^2`, whose pair at `1/10` is
+//!    `1.4e-21` apart, is separated at depth 2 instead of about 70 levels. The same estimate
+//!    `c -/+ delta` starts the refinement of the two halves.
+//!
+//! # Rational roots
+//! A rational root `u / v` (lowest terms) of the primitive `q` has `v | lc(q)` and `u | a_k`,
+//! `a_k` the lowest non-zero coefficient (rational root theorem). For every subdivision leaf an
+//! `f64` estimate of its root is computed from the leaf's Bernstein coefficients (locally well
+//! conditioned, unlike the power basis: Illinois regula falsi on `B(t) / (1 - t)^n` and
+//! `B(t) / t^n`, every power at most 1; degree at most 1000). Its continued-fraction convergents
+//! `u / v` are the candidates (Legendre: a rational within `1 / (2 v^2)` of the estimate is one
+//! of them): a candidate inside the isolating interval that passes the two divisibility tests
+//! (word remainders) is a root exactly when `v x - u` divides `q`, decided by synthetic
+//! division (exact word divisions, stopping at the first remainder). A root found is returned
+//! as the exact point `[u/v, u/v]`, like the Sturm isolator's, and divided out of the
+//! polynomial the later candidates are tested against. Nothing is decided on the estimate: an
+//! irrational root fails the tests (almost always at the divisibility, without an exact
+//! evaluation) and is refined as below.
+//!
 //! # Refinement
 //! Each isolating interval `(lo, hi)` of the square-free `q` has known end signs (all roots are
 //! simple: the sign right of the `i`-th of `K` roots is `sgn(lc) (-1)^(K-1-i)`), so no end point
@@ -50,6 +88,10 @@
 //!   (for `n < 2^40`); it declines when `s` is not finite or `m` or its numerator has more than
 //!   1000 bits. Otherwise the exact sign is the sign of the integer
 //!   `q(c / 2^k) 2^(kn) = sum a_i c^i 2^(k(n-i))` (Horner on big integers).
+//! * **Estimate window.** With an estimate `e` of the root (the leaf's, above), first the grid
+//!   points `e -/+ 2h` (`e` rounded to the grid `h`) are evaluated exactly; when the root is
+//!   outside that window, points `2^m 2h` away on its side (`m = 1, ..., 6`) until the sign
+//!   flips. Every point only updates the bracket by its exact sign.
 //! * **Bisection** at a dyadic point near the middle while the filter decides.
 //! * **Newton with verification.** Where it cannot, the exact evaluation also gives
 //!   `q'(m) 2^(k(n-1))`, and the Newton point `g = m - q(m)/q'(m)` (ratio in `f64`, rounded to
@@ -66,8 +108,13 @@
 //! (`planar`, `solve`) rely on, and the workspace's polynomials are of degree at most a few
 //! dozen, where Sturm sequences are cheap. The Descartes isolator is for large degrees
 //! ([`UPoly::real_roots_descartes`], [`UPoly::isolate_real_roots_to`], the W4 benchmark): an
-//! interval is exact when a split or refinement point hits the root, not for every rational
-//! root.
+//! isolating interval is exact when a split point hits the root; the refined intervals
+//! ([`integer_real_roots_to`]) are exact also for the rational roots recognised above (in
+//! practice every rational root with a denominator below about `2^26`, degree at most 1000),
+//! which is not a promise for every rational root.
+//!
+//! The accelerations (limbs, close pairs, rational roots, estimate windows) can be switched off
+//! one by one (`Options`); the tests run both and compare them with the Sturm isolator.
 //!
 //! Hand-written because the workspace has no arbitrary-precision interval arithmetic or
 //! polynomial library beyond num-bigint; the kernels (Taylor shift, de Casteljau, Horner) are a
@@ -346,7 +393,12 @@ impl NodeCoeffs for Vec<BigInt> {
         split_half(self)
     }
     fn scaled_f64s(&self) -> Vec<f64> {
-        let shift = self.iter().map(|c| c.bits()).max().unwrap_or(0).saturating_sub(60);
+        let shift = self
+            .iter()
+            .map(|c| c.bits())
+            .max()
+            .unwrap_or(0)
+            .saturating_sub(60);
         self.iter().map(|c| scaled_f64(c, shift)).collect()
     }
     fn variations(&self) -> usize {
@@ -568,22 +620,33 @@ fn rem_small(x: &BigInt, m: u64) -> u64 {
         .expect("a remainder modulo a u64 fits in u64")
 }
 
-/// Whether `q x - p` divides the integer polynomial `a` (`q > 0`): synthetic division with every
-/// quotient coefficient an exact integer division, stopping at the first remainder.
-fn linear_factor_divides(a: &[BigInt], p: i64, q: i64) -> bool {
+/// The quotient `a / (q x - p)` when `q x - p` divides the integer polynomial `a` (`q > 0`):
+/// synthetic division with every quotient coefficient an exact integer division by the word
+/// `q`, stopping at the first non-zero remainder.
+fn divide_by_linear_factor(a: &[BigInt], p: i64, q: i64) -> Option<Vec<BigInt>> {
     let n = a.len() - 1;
-    let (pb, qb) = (BigInt::from(p), BigInt::from(q));
+    let qu = q as u64;
     // a = (q x - p) s: a_n = q s_{n-1}, a_k = q s_{k-1} - p s_k, a_0 = -p s_0.
+    let mut quotient = vec![BigInt::zero(); n];
     let mut s = BigInt::zero();
     for k in (1..=n).rev() {
-        let t = &a[k] + &pb * &s;
-        let (quot, rem) = num_integer::Integer::div_rem(&t, &qb);
-        if !rem.is_zero() {
-            return false;
+        s *= p;
+        s += &a[k];
+        if rem_small(&s, qu) != 0 {
+            return None;
         }
-        s = quot;
+        s /= qu;
+        quotient[k - 1] = s.clone();
     }
-    (&a[0] + &pb * &s).is_zero()
+    s *= p;
+    s += &a[0];
+    s.is_zero().then_some(quotient)
+}
+
+/// Whether `q x - p` divides `a` ([`divide_by_linear_factor`]).
+#[cfg(test)]
+fn linear_factor_divides(a: &[BigInt], p: i64, q: i64) -> bool {
+    divide_by_linear_factor(a, p, q).is_some()
 }
 
 /// The rational root in the open interval `(lo, hi)` of the primitive square-free `q`, found
@@ -591,7 +654,18 @@ fn linear_factor_divides(a: &[BigInt], p: i64, q: i64) -> bool {
 /// documentation, "Rational roots"): a convergent is tried when it lies in the interval and
 /// passes the rational root theorem's tests `q | lc`, `p | a_k` (`a_k` the lowest non-zero
 /// coefficient); it is a root exactly when `q x - p` divides the polynomial.
+#[cfg(test)]
 fn recognise_rational(poly: &[BigInt], est: f64, lo: &Rational, hi: &Rational) -> Option<Rational> {
+    recognise_rational_deflating(poly, est, lo, hi).map(|(r, _)| r)
+}
+
+/// [`recognise_rational`] with the quotient `poly / (q x - p)` of the root found.
+fn recognise_rational_deflating(
+    poly: &[BigInt],
+    est: f64,
+    lo: &Rational,
+    hi: &Rational,
+) -> Option<(Rational, Vec<BigInt>)> {
     let n = poly.len() - 1;
     let lc = &poly[n];
     let low = poly.iter().find(|c| !c.is_zero())?;
@@ -600,8 +674,10 @@ fn recognise_rational(poly: &[BigInt], est: f64, lo: &Rational, hi: &Rational) -
             continue;
         }
         let r = Rational::new(p, q).expect("q > 0");
-        if r > *lo && r < *hi && linear_factor_divides(poly, p, q) {
-            return Some(r);
+        if r > *lo && r < *hi {
+            if let Some(quotient) = divide_by_linear_factor(poly, p, q) {
+                return Some((r, quotient));
+            }
         }
     }
     None
@@ -641,7 +717,12 @@ impl PairSplitter {
         if d2.is_empty() {
             d2.push(BigInt::zero());
         }
-        let shift = p.iter().map(|c| c.bits()).max().unwrap_or(0).saturating_sub(60);
+        let shift = p
+            .iter()
+            .map(|c| c.bits())
+            .max()
+            .unwrap_or(0)
+            .saturating_sub(60);
         let pf = p.iter().map(|c| scaled_f64(c, shift)).collect();
         let d1f = d1.iter().map(|c| scaled_f64(c, shift)).collect();
         let d2f = d2.iter().map(|c| scaled_f64(c, shift)).collect();
@@ -690,7 +771,7 @@ impl PairSplitter {
             }
         }
         let delta_f = (2.0 * (horner(&self.pf, x) / horner(&self.d2f, x)).abs()).sqrt();
-        if !(delta_f < (hi_f - lo_f) / 256.0) {
+        if delta_f.is_nan() || delta_f >= (hi_f - lo_f) / 256.0 {
             return None;
         }
         // x as an exact dyadic, then exact Newton steps.
@@ -714,7 +795,8 @@ impl PairSplitter {
                         let ex = e0 - e2 - 2 * k as i64;
                         let half_ex = ex.div_euclid(2);
                         let odd = ex.rem_euclid(2) as f64;
-                        let d = (2.0 * (m0 / m2).abs() * odd.exp2()).sqrt() * (half_ex as f64).exp2();
+                        let d =
+                            (2.0 * (m0 / m2).abs() * odd.exp2()).sqrt() * (half_ex as f64).exp2();
                         (d.is_finite() && d > 0.0).then_some(d)
                     }
                     _ => None,
@@ -808,7 +890,10 @@ fn isolate_square_free(q: &[BigInt], opts: Options) -> Vec<Isolated> {
     let rev: Vec<BigInt> = q.iter().rev().cloned().collect();
     let rev_neg: Vec<BigInt> = neg.iter().rev().cloned().collect();
     debug_assert_eq!(rev.len(), n + 1);
-    for (which, p) in [q, &rev[..], &neg[..], &rev_neg[..]].into_iter().enumerate() {
+    for (which, p) in [q, &rev[..], &neg[..], &rev_neg[..]]
+        .into_iter()
+        .enumerate()
+    {
         for r in unit_roots(p, opts) {
             let item = match r {
                 UnitRoot::Exact(c, j) => {
@@ -1232,7 +1317,7 @@ pub fn integer_real_roots_to(
         width.signum() == Sign::Positive,
         "integer_real_roots_to: the width must be positive"
     );
-    Ok(real_roots_to_with(coeffs, width, Options::FAST)?)
+    real_roots_to_with(coeffs, width, Options::FAST)
 }
 
 /// Which of the accelerations of the module documentation run; [`Options::FAST`] is the public
@@ -1276,6 +1361,9 @@ fn real_roots_to_with(
     };
     let roots = isolate_square_free(&q, opts);
     let refiner = Refiner::new(&q);
+    // The rational roots found so far divided out: the later candidates are tested against a
+    // polynomial of lower degree (its roots are the remaining roots of q, all simple).
+    let mut deflated: Vec<BigInt> = q.clone();
     let k = roots.len();
     let mut out: Vec<RootInterval> = Vec::with_capacity(k);
     for (i, iso) in roots.into_iter().enumerate() {
@@ -1285,9 +1373,14 @@ fn real_roots_to_with(
             continue;
         }
         if let (true, Some(est)) = (opts.rationals, &estimate) {
-            if let Some(r) = recognise_rational(&q, est.to_f64(), &ri.lo, &ri.hi) {
-                out.push(RootInterval::exact(r));
-                continue;
+            if deflated.len() >= 2 {
+                if let Some((r, quotient)) =
+                    recognise_rational_deflating(&deflated, est.to_f64(), &ri.lo, &ri.hi)
+                {
+                    deflated = quotient;
+                    out.push(RootInterval::exact(r));
+                    continue;
+                }
             }
         }
         // The sign right of root i is (-1)^(k-1-i) (positive leading coefficient).
@@ -1305,13 +1398,7 @@ fn real_roots_to_with(
             while !prev.is_exact() && prev.hi == r.lo {
                 let s_prev = sign_neg(s_lo);
                 let half_width = prev.width() * half();
-                *prev = refiner.refine(
-                    prev.lo.clone(),
-                    prev.hi.clone(),
-                    s_prev,
-                    &half_width,
-                    None,
-                );
+                *prev = refiner.refine(prev.lo.clone(), prev.hi.clone(), s_prev, &half_width, None);
             }
         }
         out.push(r);
@@ -1378,8 +1465,8 @@ impl UPoly {
 mod unit_tests {
     use super::*;
     use exactcheck_core::bernstein::Bernstein;
-    use exactcheck_core::Sign;
     use exactcheck_core::Rng;
+    use exactcheck_core::Sign;
 
     fn bigs(c: &[i64]) -> Vec<BigInt> {
         c.iter().map(|&x| BigInt::from(x)).collect()
@@ -1464,8 +1551,8 @@ mod unit_tests {
                     assert_eq!(ll.to_bigints(), bl, "n {n}, bits {bits}, level {level}");
                     assert_eq!(lr.to_bigints(), br, "n {n}, bits {bits}, level {level}");
                     (big, limbs) = if level % 2 == 0 { (bl, ll) } else { (br, lr) };
-                    for i in 0..=n {
-                        assert_eq!(limbs.sign_at(i), sign_of(&big[i]));
+                    for (i, c) in big.iter().enumerate() {
+                        assert_eq!(limbs.sign_at(i), sign_of(c));
                     }
                 }
             }
@@ -1479,7 +1566,10 @@ mod unit_tests {
             let ratio = x[0] / y[0];
             assert_eq!(ratio, ratio.log2().round().exp2(), "a power of two");
             for (u, v) in x.iter().zip(&y) {
-                assert!((u - v * ratio).abs() <= 1e-15 * u.abs().max(1e-300), "{u} {v}");
+                assert!(
+                    (u - v * ratio).abs() <= 1e-15 * u.abs().max(1e-300),
+                    "{u} {v}"
+                );
             }
         }
         // The Taylor shift on limbs is the BigInt one.
@@ -1632,7 +1722,11 @@ mod unit_tests {
                     roots.push((q, r));
                 }
             }
-            let rest: &[i64] = if round % 3 == 0 { &[-3, 0, 1] } else { &[2, 0, 1] };
+            let rest: &[i64] = if round % 3 == 0 {
+                &[-3, 0, 1]
+            } else {
+                &[2, 0, 1]
+            };
             let c = product(&roots, rest);
             let fast = both(&c, &w);
             let exact = fast.iter().filter(|r| r.is_exact()).count();
@@ -1652,17 +1746,30 @@ mod unit_tests {
         let c = bigs(&[-2, 0, 1]);
         let lo = Rational::from_integer(1);
         let hi = Rational::from_integer(2);
-        assert_eq!(recognise_rational(&c, std::f64::consts::SQRT_2, &lo, &hi), None);
+        assert_eq!(
+            recognise_rational(&c, std::f64::consts::SQRT_2, &lo, &hi),
+            None
+        );
         // 3 x^2 - 2 x - 1 = (3 x + 1)(x - 1): an estimate near -1/3 finds it, one near 1 too.
         let c = bigs(&[-1, -2, 3]);
         let third = Rational::new(-1, 3).expect("3");
         assert_eq!(
-            recognise_rational(&c, -0.333_333_3, &Rational::from_integer(-1), &Rational::ZERO),
+            recognise_rational(
+                &c,
+                -0.333_333_3,
+                &Rational::from_integer(-1),
+                &Rational::ZERO
+            ),
             Some(third)
         );
         // A candidate outside the interval is not returned.
         assert_eq!(
-            recognise_rational(&c, -0.333_333_3, &Rational::ZERO, &Rational::from_integer(2)),
+            recognise_rational(
+                &c,
+                -0.333_333_3,
+                &Rational::ZERO,
+                &Rational::from_integer(2)
+            ),
             None
         );
         assert!(linear_factor_divides(&c, -1, 3));
@@ -1702,7 +1809,9 @@ mod unit_tests {
         // opposite sign and lies strictly inside.
         let p = super::super::w4::mignotte(30);
         let s = PairSplitter::new(&p);
-        let (x, delta) = s.split(&BigInt::from(1), 4, Sign::Negative).expect("a pair");
+        let (x, delta) = s
+            .split(&BigInt::from(1), 4, Sign::Negative)
+            .expect("a pair");
         let xr = x.to_rational();
         assert!(xr > Rational::new(1, 16).expect("16") && xr < Rational::new(1, 8).expect("8"));
         assert_eq!(sign_at_rational(&p, &xr), Sign::Positive);

@@ -155,9 +155,7 @@ impl Limbs {
             } else {
                 0
             };
-            for t in 0..w {
-                d.push(if t < self.w { x[t] } else { fill });
-            }
+            d.extend(x.iter().copied().chain(std::iter::repeat(fill)).take(w));
         }
         Limbs { w, d }
     }
