@@ -890,10 +890,18 @@ fn isolate_square_free(q: &[BigInt], opts: Options) -> Vec<Isolated> {
     let rev: Vec<BigInt> = q.iter().rev().cloned().collect();
     let rev_neg: Vec<BigInt> = neg.iter().rev().cloned().collect();
     debug_assert_eq!(rev.len(), n + 1);
+    // Descartes' rule of signs on the power basis: no sign variation among the coefficients of
+    // q(x) (of q(-x)) means no positive (negative) root, and both unit problems of that side
+    // are skipped.
+    let positive = variations(q) > 0;
+    let negative = variations(&neg) > 0;
     for (which, p) in [q, &rev[..], &neg[..], &rev_neg[..]]
         .into_iter()
         .enumerate()
     {
+        if (which < 2 && !positive) || (which >= 2 && !negative) {
+            continue;
+        }
         for r in unit_roots(p, opts) {
             let item = match r {
                 UnitRoot::Exact(c, j) => {
