@@ -212,12 +212,30 @@ pub(super) fn is_square_free_mod_p(q: &[BigInt]) -> bool {
     })
 }
 
+/// The gcd of the integers `q` (non-negative): each step reduces the next number modulo the
+/// running gcd first (a word remainder while the gcd fits in a word), and stops at 1.
+fn content(q: &[BigInt]) -> BigInt {
+    let mut g = BigInt::zero();
+    for c in q {
+        if g.is_one() {
+            break;
+        }
+        if c.is_zero() {
+            continue;
+        }
+        g = match g.to_u64() {
+            Some(0) => c.abs(),
+            Some(w) => BigInt::from(num_integer::Integer::gcd(&w, &rem_small(c, w))),
+            None => num_integer::Integer::gcd(&g, &(c % &g)),
+        };
+    }
+    g
+}
+
 /// The primitive square-free part with a positive leading coefficient, as integers.
 fn square_free_integer(coeffs: &[BigInt]) -> Vec<BigInt> {
     let mut q: Vec<BigInt> = coeffs.to_vec();
-    let g = q
-        .iter()
-        .fold(BigInt::zero(), |g, c| num_integer::Integer::gcd(&g, c));
+    let g = content(&q);
     if !g.is_one() {
         for c in &mut q {
             *c /= &g;
@@ -1607,6 +1625,23 @@ mod unit_tests {
             let expect: Vec<BigInt> = (0..=n).map(|i| &c[n - i] * (&l / &binom[i])).collect();
             assert_eq!(to_bernstein_integer(&p), expect);
         }
+    }
+
+    #[test]
+    fn content_is_the_gcd() {
+        let mut rng = Rng::new(99);
+        for _ in 0..50 {
+            let k = BigInt::from(rng.below(1 << 40) + 1) * BigInt::from(rng.below(1 << 40) + 1);
+            let c: Vec<BigInt> = (0..6)
+                .map(|_| &k * BigInt::from(rng.below(2001) as i64 - 1000))
+                .collect();
+            let expect = c
+                .iter()
+                .fold(BigInt::zero(), |g, x| num_integer::Integer::gcd(&g, x));
+            assert_eq!(content(&c), expect);
+        }
+        assert_eq!(content(&bigs(&[0, 0])), BigInt::zero());
+        assert_eq!(content(&bigs(&[0, -6, 0, 9])), BigInt::from(3));
     }
 
     #[test]

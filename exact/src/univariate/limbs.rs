@@ -27,11 +27,12 @@ pub(super) struct Limbs {
 /// `a += b` over equal-length limb slices (two's complement, the carry out dropped).
 #[inline]
 fn add_assign(a: &mut [u64], b: &[u64]) {
-    let mut carry = 0u64;
+    let mut carry = false;
     for (x, &y) in a.iter_mut().zip(b) {
-        let s = *x as u128 + y as u128 + carry as u128;
-        *x = s as u64;
-        carry = (s >> 64) as u64;
+        let (s1, c1) = x.overflowing_add(y);
+        let (s2, c2) = s1.overflowing_add(carry as u64);
+        *x = s2;
+        carry = c1 | c2;
     }
 }
 
