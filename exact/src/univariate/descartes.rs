@@ -36,6 +36,44 @@
 //! in the classical monomial VCA (one for the test, one for the right child), and its sign count
 //! is free. The coefficients grow by `n` bits per level either way.
 //!
+//! The multipliers `L / C(n, i)` come from `L = lcm(1, ..., n + 1) / (n + 1)` (the lcm of a row
+//! of Pascal's triangle) and `m_{i+1} = m_i (i + 1) / (n - i)` (an exact division by a word, both
+//! sides being integers), with no big-integer lcm or division.
+//! 5. **Fixed-width limbs.** The subdivision and the Taylor shift run on [`Limbs`]: every
+//!    coefficient of a node in the same number of 64-bit two's complement limbs, one flat vector,
+//!    additions as carry chains in place; the width is fixed before each split for `max bits +
+//!    n + 1` bits, which no entry of the triangle can exceed (module `limbs`). The `BigInt`
+//!    kernels are kept ([`split_half`], `taylor_shift_1`) and the tests assert equality.
+//! 6. **Close pairs.** On a node with `V = 2` whose end values have the same sign `s` (depth at
+//!    least 2), a point `c` strictly inside with `sgn q(c) = -s` separates the node: each half
+//!    has a sign change at its ends, hence a root, and the node has at most `V = 2` roots, so
+//!    each half holds exactly one and is an isolating interval. `c` is sought as the critical
+//!    point between the pair: Newton's method on `q'` in `f64` from the middle (abandoned when
+//!    it leaves the node), then exact Newton steps `c - q'(c) / q''(c)` on dyadics, the
+//!    precision doubling each step (quadratic convergence), up to 4096 bits, abandoned when a
+//!    step grows or leaves the node; each `c` is tested by the exact sign of `q(c)`. Only the
+//!    exact sign certifies; when no `c` is found the node is subdivided as before. The attempt
+//!    is made only when the `f64` estimate `sqrt(2 |q / q''|)` of the half-distance of the pair
+//!    at the critical point is below `1/256` of the node width (a pair bisection would not
+//!    separate in a few levels). Mignotte's `x^40 - 2 (10 x - 1)^2`, whose pair at `1/10` is
+//!    `1.4e-21` apart, is separated at depth 2 instead of about 70 levels. The same estimate
+//!    `c -/+ delta` starts the refinement of the two halves.
+//!
+//! # Rational roots
+//! A rational root `u / v` (lowest terms) of the primitive `q` has `v | lc(q)` and `u | a_k`,
+//! `a_k` the lowest non-zero coefficient (rational root theorem). For every subdivision leaf an
+//! `f64` estimate of its root is computed from the leaf's Bernstein coefficients (locally well
+//! conditioned, unlike the power basis: Illinois regula falsi on `B(t) / (1 - t)^n` and
+//! `B(t) / t^n`, every power at most 1; degree at most 1000). Its continued-fraction convergents
+//! `u / v` are the candidates (Legendre: a rational within `1 / (2 v^2)` of the estimate is one
+//! of them): a candidate inside the isolating interval that passes the two divisibility tests
+//! (word remainders) is a root exactly when `v x - u` divides `q`, decided by synthetic
+//! division (exact word divisions, stopping at the first remainder). A root found is returned
+//! as the exact point `[u/v, u/v]`, like the Sturm isolator's, and divided out of the
+//! polynomial the later candidates are tested against. Nothing is decided on the estimate: an
+//! irrational root fails the tests (almost always at the divisibility, without an exact
+//! evaluation) and is refined as below.
+//!
 //! # Refinement
 //! Each isolating interval `(lo, hi)` of the square-free `q` has known end signs (all roots are
 //! simple: the sign right of the `i`-th of `K` roots is `sgn(lc) (-1)^(K-1-i)`), so no end point
@@ -50,6 +88,10 @@
 //!   (for `n < 2^40`); it declines when `s` is not finite or `m` or its numerator has more than
 //!   1000 bits. Otherwise the exact sign is the sign of the integer
 //!   `q(c / 2^k) 2^(kn) = sum a_i c^i 2^(k(n-i))` (Horner on big integers).
+//! * **Estimate window.** With an estimate `e` of the root (the leaf's, above), first the grid
+//!   points `e -/+ 2h` (`e` rounded to the grid `h`) are evaluated exactly; when the root is
+//!   outside that window, points `2^m 2h` away on its side (`m = 1, ..., 6`) until the sign
+//!   flips. Every point only updates the bracket by its exact sign.
 //! * **Bisection** at a dyadic point near the middle while the filter decides.
 //! * **Newton with verification.** Where it cannot, the exact evaluation also gives
 //!   `q'(m) 2^(k(n-1))`, and the Newton point `g = m - q(m)/q'(m)` (ratio in `f64`, rounded to
@@ -66,13 +108,19 @@
 //! (`planar`, `solve`) rely on, and the workspace's polynomials are of degree at most a few
 //! dozen, where Sturm sequences are cheap. The Descartes isolator is for large degrees
 //! ([`UPoly::real_roots_descartes`], [`UPoly::isolate_real_roots_to`], the W4 benchmark): an
-//! interval is exact when a split or refinement point hits the root, not for every rational
-//! root.
+//! isolating interval is exact when a split point hits the root; the refined intervals
+//! ([`integer_real_roots_to`]) are exact also for the rational roots recognised above (in
+//! practice every rational root with a denominator below about `2^26`, degree at most 1000),
+//! which is not a promise for every rational root.
+//!
+//! The accelerations (limbs, close pairs, rational roots, estimate windows) can be switched off
+//! one by one (`Options`); the tests run both and compare them with the Sturm isolator.
 //!
 //! Hand-written because the workspace has no arbitrary-precision interval arithmetic or
 //! polynomial library beyond num-bigint; the kernels (Taylor shift, de Casteljau, Horner) are a
 //! few lines each.
 
+use super::limbs::Limbs;
 use super::*;
 use num_bigint::Sign as BigSign;
 use num_traits::{One, Signed, ToPrimitive, Zero};
@@ -164,12 +212,30 @@ pub(super) fn is_square_free_mod_p(q: &[BigInt]) -> bool {
     })
 }
 
+/// The gcd of the integers `q` (non-negative): each step reduces the next number modulo the
+/// running gcd first (a word remainder while the gcd fits in a word), and stops at 1.
+fn content(q: &[BigInt]) -> BigInt {
+    let mut g = BigInt::zero();
+    for c in q {
+        if g.is_one() {
+            break;
+        }
+        if c.is_zero() {
+            continue;
+        }
+        g = match g.to_u64() {
+            Some(0) => c.abs(),
+            Some(w) => BigInt::from(num_integer::Integer::gcd(&w, &rem_small(c, w))),
+            None => num_integer::Integer::gcd(&g, &(c % &g)),
+        };
+    }
+    g
+}
+
 /// The primitive square-free part with a positive leading coefficient, as integers.
 fn square_free_integer(coeffs: &[BigInt]) -> Vec<BigInt> {
     let mut q: Vec<BigInt> = coeffs.to_vec();
-    let g = q
-        .iter()
-        .fold(BigInt::zero(), |g, c| num_integer::Integer::gcd(&g, c));
+    let g = content(&q);
     if !g.is_one() {
         for c in &mut q {
             *c /= &g;
@@ -229,15 +295,32 @@ fn taylor_shift_1(a: &mut [BigInt]) {
 fn to_bernstein_integer(p: &[BigInt]) -> Vec<BigInt> {
     let n = p.len() - 1;
     let mut c: Vec<BigInt> = p.iter().rev().cloned().collect();
-    taylor_shift_1(&mut c);
-    let mut binom = vec![BigInt::one(); n + 1];
-    for i in 1..=n {
-        binom[i] = &binom[i - 1] * BigInt::from(n - i + 1) / BigInt::from(i);
+    if n >= 8 {
+        // On fixed-width limbs (the coefficients of p(x + 1) have at most n more bits).
+        let mut l = Limbs::from_bigints_with_room(&c, n + 1);
+        l.taylor_shift_1();
+        c = l.to_bigints();
+    } else {
+        taylor_shift_1(&mut c);
     }
-    let l = binom
-        .iter()
-        .fold(BigInt::one(), |l, b| num_integer::Integer::lcm(&l, b));
-    (0..=n).map(|i| &c[n - i] * (&l / &binom[i])).collect()
+    // L = lcm_i C(n, i) = lcm(1, ..., n + 1) / (n + 1), and the multipliers m_i = L / C(n, i)
+    // by m_{i+1} = m_i (i + 1) / (n - i) (exact: both are integers), word divisions only.
+    let mut l = BigInt::one();
+    for k in 2..=(n as u64 + 1) {
+        let g = num_integer::Integer::gcd(&rem_small(&l, k), &k);
+        l *= k / g;
+    }
+    l /= n as u64 + 1;
+    let mut m = l;
+    let mut out = Vec::with_capacity(n + 1);
+    for i in 0..=n {
+        out.push(&c[n - i] * &m);
+        if i < n {
+            m *= i as u64 + 1;
+            m /= (n - i) as u64;
+        }
+    }
+    out
 }
 
 /// Divides all coefficients by their common power of two.
@@ -276,41 +359,498 @@ fn split_half(b: &[BigInt]) -> (Vec<BigInt>, Vec<BigInt>) {
     (left, right)
 }
 
-/// A root of a unit problem: `Exact(c, j)` is `c / 2^j`; `Open(c, j)` the open interval
-/// `(c / 2^j, (c + 1) / 2^j)`.
+/// A root of a unit problem: `Exact(c, j)` is `c / 2^j`; `Open` an open interval `(a, b)` with
+/// dyadic ends holding exactly one root, with an estimate of the root when there is one: for
+/// a subdivision leaf from its Bernstein coefficients ([`bernstein_root_estimate`]), for the
+/// halves of a split pair from the parabola through the split point ([`PairSplitter`]).
 enum UnitRoot {
     Exact(BigInt, u64),
-    Open(BigInt, u64),
+    Open {
+        a: Rational,
+        b: Rational,
+        estimate: Option<Rational>,
+    },
 }
 
 /// The roots in the open interval `(0, 1)` of the square-free integer polynomial `p` (given by
-/// its coefficients; the degree may be below `p.len() - 1`).
-fn unit_roots(p: &[BigInt]) -> Vec<UnitRoot> {
-    let mut out = Vec::new();
+/// its coefficients; the degree may be below `p.len() - 1`). With `pairs`, a node with two sign
+/// variations and equal end signs is first offered to [`split_close_pair`].
+fn unit_roots(p: &[BigInt], opts: Options) -> Vec<UnitRoot> {
     if p.len() < 2 {
-        return out;
+        return Vec::new();
     }
     let b = to_bernstein_integer(p);
+    if opts.limbs {
+        unit_roots_from(Limbs::from_bigints(&b), p, opts.pairs)
+    } else {
+        unit_roots_from(b, p, opts.pairs)
+    }
+}
+
+/// The integer Bernstein coefficients of a subdivision node: `BigInt`s (the reference) or
+/// fixed-width limbs ([`Limbs`]).
+trait NodeCoeffs: Sized {
+    fn degree(&self) -> usize;
+    fn sign_at(&self, i: usize) -> Sign;
+    fn halves(&self) -> (Self, Self);
+    /// The numbers times a common power of two, in `f64` (approximately: for estimates only).
+    fn scaled_f64s(&self) -> Vec<f64>;
+    fn variations(&self) -> usize {
+        isolate::count_variations((0..=self.degree()).map(|i| self.sign_at(i)))
+    }
+}
+
+impl NodeCoeffs for Vec<BigInt> {
+    fn degree(&self) -> usize {
+        self.len() - 1
+    }
+    fn sign_at(&self, i: usize) -> Sign {
+        sign_of(&self[i])
+    }
+    fn halves(&self) -> (Self, Self) {
+        split_half(self)
+    }
+    fn scaled_f64s(&self) -> Vec<f64> {
+        let shift = self
+            .iter()
+            .map(|c| c.bits())
+            .max()
+            .unwrap_or(0)
+            .saturating_sub(60);
+        self.iter().map(|c| scaled_f64(c, shift)).collect()
+    }
+    fn variations(&self) -> usize {
+        variations(self)
+    }
+}
+
+impl NodeCoeffs for Limbs {
+    fn degree(&self) -> usize {
+        self.len() - 1
+    }
+    fn sign_at(&self, i: usize) -> Sign {
+        match self.sign(i) {
+            -1 => Sign::Negative,
+            0 => Sign::Zero,
+            _ => Sign::Positive,
+        }
+    }
+    fn halves(&self) -> (Self, Self) {
+        self.split_half()
+    }
+    fn scaled_f64s(&self) -> Vec<f64> {
+        self.scaled_f64s()
+    }
+}
+
+/// The subdivision of [`unit_roots`] from the root node's coefficients `b`.
+fn unit_roots_from<C: NodeCoeffs>(b: C, p: &[BigInt], pairs: bool) -> Vec<UnitRoot> {
+    let mut out = Vec::new();
+    let mut pair_splitter: Option<PairSplitter> = None;
     let mut stack = vec![(b, BigInt::zero(), 0u64)];
     while let Some((b, c, j)) = stack.pop() {
-        let v = variations(&b);
+        let v = b.variations();
         if v == 0 {
             continue;
         }
-        let n = b.len() - 1;
-        if v == 1 && !b[0].is_zero() && !b[n].is_zero() {
-            out.push(UnitRoot::Open(c, j));
+        let n = b.degree();
+        let (s0, sn) = (b.sign_at(0), b.sign_at(n));
+        if v == 1 && s0 != Sign::Zero && sn != Sign::Zero {
+            let estimate = bernstein_root_estimate(b.scaled_f64s())
+                .and_then(rational_of_f64)
+                .map(|t| (Rational::from(c.clone()) + t) / pow2(j));
+            out.push(UnitRoot::Open {
+                a: dyadic(&c, j),
+                b: dyadic(&(&c + 1), j),
+                estimate,
+            });
             continue;
         }
-        let (left, right) = split_half(&b);
+        if pairs && v == 2 && j >= 2 && s0 != Sign::Zero && s0 == sn {
+            let splitter = pair_splitter.get_or_insert_with(|| PairSplitter::new(p));
+            if let Some((x, delta)) = splitter.split(&c, j, s0) {
+                let (a, m, e) = (dyadic(&c, j), x.to_rational(), dyadic(&(&c + 1), j));
+                let d = delta.and_then(rational_of_f64);
+                out.push(UnitRoot::Open {
+                    a,
+                    b: m.clone(),
+                    estimate: d.as_ref().map(|d| m.sub_ref(d)),
+                });
+                out.push(UnitRoot::Open {
+                    estimate: d.as_ref().map(|d| m.add_ref(d)),
+                    a: m,
+                    b: e,
+                });
+                continue;
+            }
+        }
+        let (left, right) = b.halves();
         let c2: BigInt = &c << 1;
-        if right[0].is_zero() {
+        if right.sign_at(0) == Sign::Zero {
             out.push(UnitRoot::Exact(&c2 + 1, j + 1));
         }
         stack.push((right, &c2 + 1, j + 1));
         stack.push((left, c2, j + 1));
     }
     out
+}
+
+/// The finite `f64` `x` as an exact rational.
+fn rational_of_f64(x: f64) -> Option<Rational> {
+    if !x.is_finite() {
+        return None;
+    }
+    if x == 0.0 {
+        return Some(Rational::ZERO);
+    }
+    let bits = x.to_bits();
+    let exp = ((bits >> 52) & 0x7ff) as i64;
+    let frac = bits & ((1u64 << 52) - 1);
+    let (m, e) = if exp == 0 {
+        (frac, -1074)
+    } else {
+        (frac | (1u64 << 52), exp - 1075)
+    };
+    let m = Rational::from(BigInt::from(m));
+    let r = if e >= 0 {
+        m * pow2(e as u64)
+    } else {
+        m / pow2((-e) as u64)
+    };
+    Some(if x < 0.0 { -r } else { r })
+}
+
+/// `x 2^-shift` in `f64` for an integer `x` (approximately; `0` on underflow).
+fn scaled_f64(x: &BigInt, shift: u64) -> f64 {
+    match approx(x) {
+        None => 0.0,
+        Some((m, e)) => m * ((e - shift as i64) as f64).exp2(),
+    }
+}
+
+/// An `f64` estimate of the root in `(0, 1)` of the Bernstein polynomial with these
+/// coefficients (one sign variation, non-zero ends): Illinois regula falsi on
+/// `B(t) / (1 - t)^n = sum b_i C(n, i) s^i`, `s = t / (1 - t)`, for `t <= 1/2` and on
+/// `B(t) / t^n` (Horner in `(1 - t) / t`) above, a continuous function with the sign of `B`
+/// evaluated with every power at most 1. Only a candidate generator for
+/// [`recognise_rational`] (nothing is decided on it); `None` beyond degree 1000 (the binomials
+/// leave the `f64` range).
+fn bernstein_root_estimate(mut g: Vec<f64>) -> Option<f64> {
+    let n = g.len().checked_sub(1)?;
+    if n > 1000 || n == 0 {
+        return None;
+    }
+    let mut binom = 1f64;
+    for (i, x) in g.iter_mut().enumerate() {
+        *x *= binom;
+        binom = binom * (n - i) as f64 / (i + 1) as f64;
+    }
+    if !g.iter().all(|x| x.is_finite()) {
+        return None;
+    }
+    let f = |t: f64| -> f64 {
+        if t <= 0.5 {
+            let s = t / (1.0 - t);
+            g.iter().rev().fold(0.0, |acc, &gi| acc * s + gi)
+        } else {
+            let u = (1.0 - t) / t;
+            g.iter().fold(0.0, |acc, &gi| acc * u + gi)
+        }
+    };
+    let (mut a, mut fa, mut c, mut fc) = (0.0f64, g[0], 1.0f64, g[n]);
+    if fa == 0.0 || fc == 0.0 || (fa > 0.0) == (fc > 0.0) {
+        return None;
+    }
+    let mut side = 0i8;
+    let mut slow = 0;
+    for _ in 0..200 {
+        let width = c - a;
+        if width <= 1e-17 || width <= 4.0 * f64::EPSILON * c {
+            break;
+        }
+        let mut m = (a * fc - c * fa) / (fc - fa);
+        // A bisection after two steps that did not halve the bracket.
+        if !(m > a && m < c) || slow >= 2 {
+            m = 0.5 * (a + c);
+            slow = 0;
+        }
+        let fm = f(m);
+        if fm == 0.0 {
+            return Some(m);
+        }
+        if !fm.is_finite() {
+            return None;
+        }
+        if (fm > 0.0) == (fa > 0.0) {
+            a = m;
+            fa = fm;
+            if side == -1 {
+                fc *= 0.5;
+            }
+            side = -1;
+        } else {
+            c = m;
+            fc = fm;
+            if side == 1 {
+                fa *= 0.5;
+            }
+            side = 1;
+        }
+        if c - a > 0.5 * width {
+            slow += 1;
+        } else {
+            slow = 0;
+        }
+    }
+    Some(0.5 * (a + c))
+}
+
+/// The continued-fraction convergents `p / q` of `x` with `0 < q <= 2^40` (at most 64).
+fn convergents(x: f64) -> Vec<(i64, i64)> {
+    let mut out = Vec::new();
+    if !x.is_finite() || x.abs() > 1e15 {
+        return out;
+    }
+    let (mut h1, mut h2, mut k1, mut k2) = (1i128, 0i128, 0i128, 1i128);
+    let mut y = x;
+    for _ in 0..64 {
+        let a = y.floor();
+        let ai = a as i128;
+        let (h, k) = (ai * h1 + h2, ai * k1 + k2);
+        if k > 1 << 40 || h.abs() > 1 << 62 {
+            break;
+        }
+        out.push((h as i64, k as i64));
+        let frac = y - a;
+        if frac <= 0.0 || (h as f64 / k as f64 - x).abs() <= 2.0 * f64::EPSILON * x.abs() {
+            break;
+        }
+        y = 1.0 / frac;
+        (h2, h1, k2, k1) = (h1, h, k1, k);
+    }
+    out
+}
+
+/// `x mod m` for `m > 0` (non-negative).
+fn rem_small(x: &BigInt, m: u64) -> u64 {
+    (x.magnitude() % m)
+        .to_u64()
+        .expect("a remainder modulo a u64 fits in u64")
+}
+
+/// The quotient `a / (q x - p)` when `q x - p` divides the integer polynomial `a` (`q > 0`):
+/// synthetic division with every quotient coefficient an exact integer division by the word
+/// `q`, stopping at the first non-zero remainder.
+fn divide_by_linear_factor(a: &[BigInt], p: i64, q: i64) -> Option<Vec<BigInt>> {
+    let n = a.len() - 1;
+    let qu = q as u64;
+    // a = (q x - p) s: a_n = q s_{n-1}, a_k = q s_{k-1} - p s_k, a_0 = -p s_0.
+    let mut quotient = vec![BigInt::zero(); n];
+    let mut s = BigInt::zero();
+    for k in (1..=n).rev() {
+        s *= p;
+        s += &a[k];
+        if rem_small(&s, qu) != 0 {
+            return None;
+        }
+        s /= qu;
+        quotient[k - 1] = s.clone();
+    }
+    s *= p;
+    s += &a[0];
+    s.is_zero().then_some(quotient)
+}
+
+/// Whether `q x - p` divides `a` ([`divide_by_linear_factor`]).
+#[cfg(test)]
+fn linear_factor_divides(a: &[BigInt], p: i64, q: i64) -> bool {
+    divide_by_linear_factor(a, p, q).is_some()
+}
+
+/// The rational root in the open interval `(lo, hi)` of the primitive square-free `q`, found
+/// among the continued-fraction convergents `p / q` of the estimate `est` (module
+/// documentation, "Rational roots"): a convergent is tried when it lies in the interval and
+/// passes the rational root theorem's tests `q | lc`, `p | a_k` (`a_k` the lowest non-zero
+/// coefficient); it is a root exactly when `q x - p` divides the polynomial.
+#[cfg(test)]
+fn recognise_rational(poly: &[BigInt], est: f64, lo: &Rational, hi: &Rational) -> Option<Rational> {
+    recognise_rational_deflating(poly, est, lo, hi).map(|(r, _)| r)
+}
+
+/// [`recognise_rational`] with the quotient `poly / (q x - p)` of the root found.
+fn recognise_rational_deflating(
+    poly: &[BigInt],
+    est: f64,
+    lo: &Rational,
+    hi: &Rational,
+) -> Option<(Rational, Vec<BigInt>)> {
+    let n = poly.len() - 1;
+    let lc = &poly[n];
+    let low = poly.iter().find(|c| !c.is_zero())?;
+    for (p, q) in convergents(est) {
+        if p == 0 || rem_small(lc, q as u64) != 0 || rem_small(low, p.unsigned_abs()) != 0 {
+            continue;
+        }
+        let r = Rational::new(p, q).expect("q > 0");
+        if r > *lo && r < *hi {
+            if let Some(quotient) = divide_by_linear_factor(poly, p, q) {
+                return Some((r, quotient));
+            }
+        }
+    }
+    None
+}
+
+/// Separates a close root pair (module documentation, "Close pairs"): on the dyadic node
+/// `(c / 2^j, (c + 1) / 2^j)` of a unit problem `p`, where Descartes' bound is 2 and the end
+/// signs are both `s`, a point strictly inside at which `p` has the sign `-s`, found by Newton's
+/// method on `p'` (in `f64`, then exact dyadic steps doubling the precision) and verified by an
+/// exact sign. `None` when none was found (the node is then subdivided).
+struct PairSplitter {
+    p: Vec<BigInt>,
+    pf: Vec<f64>,
+    d1: Vec<BigInt>,
+    d2: Vec<BigInt>,
+    d1f: Vec<f64>,
+    d2f: Vec<f64>,
+}
+
+/// The precision cap (bits after the binary point) of the exact Newton steps.
+const PAIR_MAX_BITS: u64 = 4096;
+
+impl PairSplitter {
+    fn new(p: &[BigInt]) -> PairSplitter {
+        let deriv = |a: &[BigInt]| -> Vec<BigInt> {
+            a.iter()
+                .enumerate()
+                .skip(1)
+                .map(|(i, c)| c * BigInt::from(i))
+                .collect()
+        };
+        let mut d1 = deriv(p);
+        if d1.is_empty() {
+            d1.push(BigInt::zero());
+        }
+        let mut d2 = deriv(&d1);
+        if d2.is_empty() {
+            d2.push(BigInt::zero());
+        }
+        let shift = p
+            .iter()
+            .map(|c| c.bits())
+            .max()
+            .unwrap_or(0)
+            .saturating_sub(60);
+        let pf = p.iter().map(|c| scaled_f64(c, shift)).collect();
+        let d1f = d1.iter().map(|c| scaled_f64(c, shift)).collect();
+        let d2f = d2.iter().map(|c| scaled_f64(c, shift)).collect();
+        PairSplitter {
+            p: p.to_vec(),
+            pf,
+            d1,
+            d2,
+            d1f,
+            d2f,
+        }
+    }
+
+    /// `a(x) 2^(k deg)` for `x = m / 2^k` (`deg = a.len() - 1`).
+    fn eval(a: &[BigInt], x: &Dyadic) -> BigInt {
+        let n = a.len() - 1;
+        let mut v = a[n].clone();
+        for (i, c) in a[..n].iter().enumerate().rev() {
+            v = v * &x.num + (c << (x.exp * (n - i) as u64));
+        }
+        v
+    }
+
+    /// The split point and, when it can be computed, the estimate `delta = sqrt(2 |p(x) /
+    /// p''(x)|)` of the distance from it to either root (the roots of the parabola through the
+    /// split point, which is a near-critical point). Only attempted when the `f64` value of
+    /// `delta` at the `f64` critical point is below `1/256` of the node width (a pair that
+    /// subdivision would not separate in a few levels).
+    fn split(&self, c: &BigInt, j: u64, s: Sign) -> Option<(Dyadic, Option<f64>)> {
+        let horner = |a: &[f64], x: f64| a.iter().rev().fold(0.0, |acc, &ai| acc * x + ai);
+        let scale = (-(j as f64)).exp2();
+        let (lo_f, hi_f) = (c.to_f64()? * scale, (c.to_f64()? + 1.0) * scale);
+        let mut x = 0.5 * (lo_f + hi_f);
+        for _ in 0..60 {
+            let step = horner(&self.d1f, x) / horner(&self.d2f, x);
+            if !step.is_finite() {
+                return None;
+            }
+            let next = x - step;
+            if !(next > lo_f && next < hi_f) {
+                return None;
+            }
+            x = next;
+            if step.abs() <= 4.0 * f64::EPSILON * x.abs() {
+                break;
+            }
+        }
+        let delta_f = (2.0 * (horner(&self.pf, x) / horner(&self.d2f, x)).abs()).sqrt();
+        if delta_f.is_nan() || delta_f >= (hi_f - lo_f) / 256.0 {
+            return None;
+        }
+        // x as an exact dyadic, then exact Newton steps.
+        let mut k: u64 = 60u64.max(j + 8);
+        let mut xd = Dyadic {
+            num: BigInt::from((x * (k as f64).exp2()).round() as i128),
+            exp: k,
+        };
+        if !(xd.num > (c << (k - j)) && xd.num < ((c + 1) << (k - j))) {
+            return None;
+        }
+        let mut last_step: Option<BigInt> = None;
+        loop {
+            let pv = Self::eval(&self.p, &xd);
+            let v = sign_of(&pv);
+            if v == sign_neg(s) {
+                let p2 = Self::eval(&self.d2, &xd);
+                let delta = match (approx(&pv), approx(&p2)) {
+                    (Some((m0, e0)), Some((m2, e2))) => {
+                        // p / p'' = (m0 / m2) 2^(e0 - e2 - 2k).
+                        let ex = e0 - e2 - 2 * k as i64;
+                        let half_ex = ex.div_euclid(2);
+                        let odd = ex.rem_euclid(2) as f64;
+                        let d =
+                            (2.0 * (m0 / m2).abs() * odd.exp2()).sqrt() * (half_ex as f64).exp2();
+                        (d.is_finite() && d > 0.0).then_some(d)
+                    }
+                    _ => None,
+                };
+                return Some((xd, delta));
+            }
+            if v == Sign::Zero || 2 * k > PAIR_MAX_BITS {
+                // An exact root is not a split point of this kind (the subdivision finds it).
+                return None;
+            }
+            // Newton on p': x - p'(x) / p''(x) at precision 2k.
+            let p1 = Self::eval(&self.d1, &xd); // p'(x) 2^(k (n-1))
+            let p2 = Self::eval(&self.d2, &xd); // p''(x) 2^(k (n-2))
+            if p2.is_zero() {
+                return None;
+            }
+            let kk = 2 * k;
+            // step 2^kk = p'/p'' 2^kk = p1 2^(kk - k) / p2 (p1 / p2 carries one factor 2^k).
+            let step = (&p1 << (kk - k)) / &p2;
+            let num = (&xd.num << (kk - k)) - &step;
+            let (lo_n, hi_n) = (c << (kk - j), (c + 1) << (kk - j));
+            if !(num > lo_n && num < hi_n) {
+                return None;
+            }
+            // Quadratic convergence: the step must shrink (in the finer unit, by far more than
+            // the factor 2^k of the unit change).
+            if let Some(prev) = &last_step {
+                if step.magnitude() > &(prev.magnitude() << (kk - k)) {
+                    return None;
+                }
+            }
+            last_step = Some(step);
+            xd = Dyadic { num, exp: kk };
+            k = kk;
+        }
+    }
 }
 
 // ------------------------------------------------------------------------------ isolation
@@ -331,51 +871,67 @@ fn root_bound(q: &[BigInt]) -> Rational {
     pow2((bm + 2 - bn).max(1) as u64)
 }
 
+/// An isolating interval with an estimate of its root when there is one (for
+/// [`recognise_rational`] and the first window of the refinement).
+struct Isolated {
+    ri: RootInterval,
+    estimate: Option<Rational>,
+}
+
 /// Isolating intervals of all real roots of the primitive square-free `q` (degree >= 1,
-/// positive leading coefficient), sorted.
-fn isolate_square_free(q: &[BigInt]) -> Vec<RootInterval> {
+/// positive leading coefficient), sorted. `pairs`: whether close pairs are split at a point of
+/// opposite sign ([`PairSplitter`]) rather than by subdivision alone.
+fn isolate_square_free(q: &[BigInt], opts: Options) -> Vec<Isolated> {
     let n = q.len() - 1;
     let bound = root_bound(q);
-    let mut out: Vec<RootInterval> = Vec::new();
+    let mut out: Vec<Isolated> = Vec::new();
+    let exact = |x: Rational| Isolated {
+        ri: RootInterval::exact(x),
+        estimate: None,
+    };
     if q[0].is_zero() {
-        out.push(RootInterval::exact(Rational::ZERO));
+        out.push(exact(Rational::ZERO));
     }
     let sum: BigInt = q.iter().sum();
     if sum.is_zero() {
-        out.push(RootInterval::exact(Rational::ONE));
-    }
-    let alt: BigInt = q
-        .iter()
-        .enumerate()
-        .map(|(i, c)| if i % 2 == 1 { -c } else { c.clone() })
-        .sum();
-    if alt.is_zero() {
-        out.push(RootInterval::exact(-Rational::ONE));
+        out.push(exact(Rational::ONE));
     }
     let neg: Vec<BigInt> = q
         .iter()
         .enumerate()
         .map(|(i, c)| if i % 2 == 1 { -c } else { c.clone() })
         .collect();
+    let alt: BigInt = neg.iter().sum();
+    if alt.is_zero() {
+        out.push(exact(-Rational::ONE));
+    }
     let rev: Vec<BigInt> = q.iter().rev().cloned().collect();
     let rev_neg: Vec<BigInt> = neg.iter().rev().cloned().collect();
     debug_assert_eq!(rev.len(), n + 1);
-    // (polynomial, map of a unit interval (a, b) to the original coordinate)
-    for (which, p) in [&q.to_vec(), &rev, &neg, &rev_neg].into_iter().enumerate() {
-        for r in unit_roots(p) {
-            let ri = match r {
+    // Descartes' rule of signs on the power basis: no sign variation among the coefficients of
+    // q(x) (of q(-x)) means no positive (negative) root, and both unit problems of that side
+    // are skipped.
+    let positive = variations(q) > 0;
+    let negative = variations(&neg) > 0;
+    for (which, p) in [q, &rev[..], &neg[..], &rev_neg[..]]
+        .into_iter()
+        .enumerate()
+    {
+        if (which < 2 && !positive) || (which >= 2 && !negative) {
+            continue;
+        }
+        for r in unit_roots(p, opts) {
+            let item = match r {
                 UnitRoot::Exact(c, j) => {
                     let x = dyadic(&c, j);
-                    RootInterval::exact(match which {
+                    exact(match which {
                         0 => x,
                         1 => x.recip().expect("a unit root is positive"),
                         2 => -x,
                         _ => -x.recip().expect("a unit root is positive"),
                     })
                 }
-                UnitRoot::Open(c, j) => {
-                    let a = dyadic(&c, j);
-                    let b = dyadic(&(&c + 1), j);
+                UnitRoot::Open { a, b, estimate } => {
                     let inv = |x: &Rational| {
                         if x.is_zero() {
                             bound.clone()
@@ -383,7 +939,7 @@ fn isolate_square_free(q: &[BigInt]) -> Vec<RootInterval> {
                             x.recip().expect("checked non-zero")
                         }
                     };
-                    match which {
+                    let ri = match which {
                         0 => RootInterval { lo: a, hi: b },
                         1 => RootInterval {
                             lo: inv(&b),
@@ -394,13 +950,20 @@ fn isolate_square_free(q: &[BigInt]) -> Vec<RootInterval> {
                             lo: -inv(&a),
                             hi: -inv(&b),
                         },
-                    }
+                    };
+                    let estimate = estimate.filter(|x| !x.is_zero()).map(|x| match which {
+                        0 => x,
+                        1 => x.recip().expect("non-zero"),
+                        2 => -x,
+                        _ => -x.recip().expect("non-zero"),
+                    });
+                    Isolated { ri, estimate }
                 }
             };
-            out.push(ri);
+            out.push(item);
         }
     }
-    out.sort_by(|x, y| x.lo.cmp(&y.lo));
+    out.sort_by(|x, y| x.ri.lo.cmp(&y.ri.lo));
     out
 }
 
@@ -490,6 +1053,11 @@ impl Refiner<'_> {
         }
     }
 
+    /// `q(x) 2^(k n)` for `x = c / 2^k`.
+    fn value_exact(&self, x: &Dyadic) -> BigInt {
+        PairSplitter::eval(self.q, x)
+    }
+
     /// `(q(x) 2^(k n), q'(x) 2^(k (n-1)))` for `x = c / 2^k`.
     fn eval_exact(&self, x: &Dyadic) -> (BigInt, BigInt) {
         let q = self.q;
@@ -505,18 +1073,86 @@ impl Refiner<'_> {
 
     /// Refines `(lo, hi)` (end signs `s_lo`, `-s_lo`) to width at most `w`: filtered bisection,
     /// then safeguarded Newton steps with a final two-point verification (module documentation).
-    fn refine(&self, lo: Rational, hi: Rational, s_lo: Sign, w: &Rational) -> RootInterval {
+    fn refine(
+        &self,
+        lo: Rational,
+        hi: Rational,
+        s_lo: Sign,
+        w: &Rational,
+        estimate: Option<Rational>,
+    ) -> RootInterval {
         let (mut lo, mut hi) = (lo, hi);
         if hi.sub_ref(&lo) <= *w {
             return RootInterval { lo, hi };
         }
-        // h = 2^-kk, the largest power of two with 4h <= w (h = 1 when w >= 4).
-        let mut kk: u64 = 0;
-        let mut h4 = Rational::from_integer(4);
-        while h4 > *w {
-            h4 *= half();
-            kk += 1;
+        // The least k >= 0 with 4 2^-k <= w: 2 - k <= floor(log2 w).
+        let kk: u64 = (2 - floor_log2(w)).max(0) as u64;
+        // With an estimate e of the root, rounded to the grid h = 2^-kk: first the window
+        // [e - 2h, e + 2h] (width 4h <= w; exact signs at its ends, each inside the bracket).
+        // A miss on one side is followed by the grid points e -/+ 2^m 2h, m = 1, 2, ..., 6, on
+        // that side, until the sign flips (the estimate is usually off by a few h).
+        if let Some(e) = estimate {
+            let scaled = e.mul_ref(&pow2(kk));
+            let en = floor(&scaled.add_ref(&half()));
+            let at = |k: i64| Dyadic {
+                num: &en + BigInt::from(k),
+                exp: kk,
+            };
+            let mut below = false;
+            let mut above = false;
+            for k in [-2i64, 2] {
+                let x = at(k);
+                let xr = x.to_rational();
+                if xr > lo && xr < hi {
+                    match sign_of(&self.value_exact(&x)) {
+                        Sign::Zero => return RootInterval::exact(xr),
+                        s if s == s_lo => {
+                            lo = xr;
+                            above = k == 2;
+                        }
+                        _ => {
+                            hi = xr;
+                            below = k == -2;
+                        }
+                    }
+                }
+            }
+            let mut m: i64 = 4;
+            for _ in 0..6 {
+                let k = if below {
+                    -m
+                } else if above {
+                    m
+                } else {
+                    break;
+                };
+                m *= 2;
+                let x = at(k);
+                let xr = x.to_rational();
+                if !(xr > lo && xr < hi) {
+                    break;
+                }
+                match sign_of(&self.value_exact(&x)) {
+                    Sign::Zero => return RootInterval::exact(xr),
+                    s if s == s_lo => {
+                        lo = xr;
+                        if below {
+                            break;
+                        }
+                    }
+                    _ => {
+                        hi = xr;
+                        if above {
+                            break;
+                        }
+                    }
+                }
+            }
+            if hi.sub_ref(&lo) <= *w {
+                return RootInterval { lo, hi };
+            }
         }
+        // h = 2^-kk, the largest power of two with 4h <= w (h = 1 when w >= 4).
         let scale = (kk as f64).exp2();
         let s_hi = sign_neg(s_lo);
         // The last exact evaluation (x, q(x) 2^(k n), q'(x) 2^(k (n-1))).
@@ -602,13 +1238,8 @@ impl Refiner<'_> {
                     // floor(mid 2^e) / 2^e > mid - 2^-e >= mid - width / 4 > lo, and e <= kk
                     // because 2^-kk <= w / 4 < width / 4.
                     let mid = midpoint(&lo, &hi);
-                    let mut e = 0u64;
-                    let mut step = Rational::ONE;
-                    let quarter = width.mul_ref(&Rational::new(1, 4).expect("4 != 0"));
-                    while step > quarter {
-                        step *= half();
-                        e += 1;
-                    }
+                    // The least e >= 0 with 2^-e <= width / 4.
+                    let e = (2 - floor_log2(&width)).max(0) as u64;
                     Dyadic::floor_of(&mid, e)
                 }
             };
@@ -633,6 +1264,39 @@ impl Refiner<'_> {
     }
 }
 
+/// `floor(log2 x)` for a positive rational `x`.
+fn floor_log2(x: &Rational) -> i64 {
+    let (u, v) = (x.numer(), x.denom());
+    debug_assert!(u.sign() == BigSign::Plus);
+    // 2^(bu - 1) <= u < 2^bu and likewise v: log2 x lies in (b - 1, b + 1), b = bu - bv.
+    let b = u.bits() as i64 - v.bits() as i64;
+    let at_least_2b = if b >= 0 {
+        u >= (v << b as u64)
+    } else {
+        (u << (-b) as u64) >= v
+    };
+    if at_least_2b {
+        b
+    } else {
+        b - 1
+    }
+}
+
+/// The exact sign of the integer polynomial `q` at the rational `x = u / v` (`v > 0`): the sign
+/// of `sum q_i u^i v^(n-i)`.
+#[cfg(test)]
+fn sign_at_rational(q: &[BigInt], x: &Rational) -> Sign {
+    let (u, v) = (x.numer(), x.denom());
+    let n = q.len() - 1;
+    let mut acc = q[n].clone();
+    let mut vpow = BigInt::one();
+    for a in q[..n].iter().rev() {
+        vpow *= &v;
+        acc = acc * &u + a * &vpow;
+    }
+    sign_of(&acc)
+}
+
 fn sign_of(x: &BigInt) -> Sign {
     match x.sign() {
         BigSign::Minus => Sign::Negative,
@@ -654,7 +1318,12 @@ fn sign_of(x: &BigInt) -> Sign {
 /// # Panics
 /// Beyond [`MAX_DESCARTES_DEGREE`].
 pub fn integer_real_roots(coeffs: &[BigInt]) -> Result<Vec<RootInterval>, ZeroPolynomial> {
-    Ok(prepare(coeffs)?.map_or_else(Vec::new, |q| isolate_square_free(&q)))
+    Ok(prepare(coeffs)?.map_or_else(Vec::new, |q| {
+        isolate_square_free(&q, Options::FAST)
+            .into_iter()
+            .map(|i| i.ri)
+            .collect()
+    }))
 }
 
 /// [`integer_real_roots`], each interval refined to width at most `width` (see the module
@@ -674,17 +1343,71 @@ pub fn integer_real_roots_to(
         width.signum() == Sign::Positive,
         "integer_real_roots_to: the width must be positive"
     );
+    real_roots_to_with(coeffs, width, Options::FAST)
+}
+
+/// Which of the accelerations of the module documentation run; [`Options::FAST`] is the public
+/// behaviour, the others are the references of the tests.
+#[derive(Clone, Copy, Debug)]
+struct Options {
+    /// Close pairs split at a point of opposite sign ([`PairSplitter`]).
+    pairs: bool,
+    /// Rational roots recognised from the leaf estimates ([`recognise_rational`]).
+    rationals: bool,
+    /// The refinement starts with a window of the target width around the estimate.
+    windows: bool,
+    /// The subdivision on fixed-width limbs ([`Limbs`]) instead of `BigInt`s.
+    limbs: bool,
+}
+
+impl Options {
+    const FAST: Options = Options {
+        pairs: true,
+        rationals: true,
+        windows: true,
+        limbs: true,
+    };
+    #[cfg(test)]
+    const REFERENCE: Options = Options {
+        pairs: false,
+        rationals: false,
+        windows: false,
+        limbs: false,
+    };
+}
+
+/// [`integer_real_roots_to`] with a choice of accelerations.
+fn real_roots_to_with(
+    coeffs: &[BigInt],
+    width: &Rational,
+    opts: Options,
+) -> Result<Vec<RootInterval>, ZeroPolynomial> {
     let Some(q) = prepare(coeffs)? else {
         return Ok(Vec::new());
     };
-    let roots = isolate_square_free(&q);
+    let roots = isolate_square_free(&q, opts);
     let refiner = Refiner::new(&q);
+    // The rational roots found so far divided out: the later candidates are tested against a
+    // polynomial of lower degree (its roots are the remaining roots of q, all simple).
+    let mut deflated: Vec<BigInt> = q.clone();
     let k = roots.len();
     let mut out: Vec<RootInterval> = Vec::with_capacity(k);
-    for (i, ri) in roots.into_iter().enumerate() {
+    for (i, iso) in roots.into_iter().enumerate() {
+        let Isolated { ri, estimate } = iso;
         if ri.is_exact() {
             out.push(ri);
             continue;
+        }
+        if let (true, Some(est)) = (opts.rationals, &estimate) {
+            if deflated.len() >= 2 {
+                if let Some((r, quotient)) =
+                    recognise_rational_deflating(&deflated, est.to_f64(), &ri.lo, &ri.hi)
+                {
+                    deflated = quotient;
+                    out.push(RootInterval::exact(r));
+                    continue;
+                }
+            }
         }
         // The sign right of root i is (-1)^(k-1-i) (positive leading coefficient).
         let s_right = if (k - 1 - i) % 2 == 0 {
@@ -693,7 +1416,7 @@ pub fn integer_real_roots_to(
             Sign::Negative
         };
         let s_lo = sign_neg(s_right);
-        let r = refiner.refine(ri.lo, ri.hi, s_lo, width);
+        let r = refiner.refine(ri.lo, ri.hi, s_lo, width, estimate.filter(|_| opts.windows));
         // Isolating intervals may share an end (a subdivision point); the closed refined
         // intervals must not: narrow the left one until its upper end moves (its root is
         // strictly below the shared end).
@@ -701,7 +1424,7 @@ pub fn integer_real_roots_to(
             while !prev.is_exact() && prev.hi == r.lo {
                 let s_prev = sign_neg(s_lo);
                 let half_width = prev.width() * half();
-                *prev = refiner.refine(prev.lo.clone(), prev.hi.clone(), s_prev, &half_width);
+                *prev = refiner.refine(prev.lo.clone(), prev.hi.clone(), s_prev, &half_width, None);
             }
         }
         out.push(r);
@@ -769,6 +1492,7 @@ mod unit_tests {
     use super::*;
     use exactcheck_core::bernstein::Bernstein;
     use exactcheck_core::Rng;
+    use exactcheck_core::Sign;
 
     fn bigs(c: &[i64]) -> Vec<BigInt> {
         c.iter().map(|&x| BigInt::from(x)).collect()
@@ -814,10 +1538,110 @@ mod unit_tests {
             let exact = Bernstein::from_power(&rationals(&p)).expect("non-empty");
             positive_multiple(&b, exact.coeffs());
             let (l, r) = split_half(&b);
+            // The fixed-width kernel is the BigInt one exactly, twice over.
+            let (ll, lr) = Limbs::from_bigints(&b).split_half();
+            assert_eq!(ll.to_bigints(), l);
+            assert_eq!(lr.to_bigints(), r);
+            let (lll, llr) = ll.split_half();
+            assert_eq!((lll.to_bigints(), llr.to_bigints()), split_half(&l));
             let (el, er) = exact.split(&half());
             positive_multiple(&l, el.coeffs());
             positive_multiple(&r, er.coeffs());
         }
+    }
+
+    #[test]
+    fn limb_kernel_matches_bigint_kernel_on_wide_numbers() {
+        let mut rng = Rng::new(4141);
+        for n in [1usize, 2, 5, 20, 41, 70] {
+            for bits in [3u32, 63, 64, 65, 130, 400] {
+                let p: Vec<BigInt> = (0..=n)
+                    .map(|_| {
+                        let x = (BigInt::from(rng.below(1 << 62)) << (bits.saturating_sub(62)))
+                            + BigInt::from(rng.below(1 << 20));
+                        if rng.below(2) == 0 {
+                            -x
+                        } else {
+                            x
+                        }
+                    })
+                    .collect();
+                let b = to_bernstein_integer(&p);
+                let mut big = b.clone();
+                let mut limbs = Limbs::from_bigints(&b);
+                assert_eq!(limbs.to_bigints(), b);
+                // Down one path of ten levels, alternating sides.
+                for level in 0..10 {
+                    let (bl, br) = split_half(&big);
+                    let (ll, lr) = limbs.split_half();
+                    assert_eq!(ll.to_bigints(), bl, "n {n}, bits {bits}, level {level}");
+                    assert_eq!(lr.to_bigints(), br, "n {n}, bits {bits}, level {level}");
+                    (big, limbs) = if level % 2 == 0 { (bl, ll) } else { (br, lr) };
+                    for (i, c) in big.iter().enumerate() {
+                        assert_eq!(limbs.sign_at(i), sign_of(c));
+                    }
+                }
+            }
+        }
+        // The f64 images of the limbs and of the BigInts agree up to a common power of two.
+        for bits in [5u32, 64, 200] {
+            let b: Vec<BigInt> = (0..9)
+                .map(|i| (BigInt::from(i * 7919 - 30000) << bits) - BigInt::from(i))
+                .collect();
+            let (x, y) = (Limbs::from_bigints(&b).scaled_f64s(), b.scaled_f64s());
+            let ratio = x[0] / y[0];
+            assert_eq!(ratio, ratio.log2().round().exp2(), "a power of two");
+            for (u, v) in x.iter().zip(&y) {
+                assert!(
+                    (u - v * ratio).abs() <= 1e-15 * u.abs().max(1e-300),
+                    "{u} {v}"
+                );
+            }
+        }
+        // The Taylor shift on limbs is the BigInt one.
+        for n in [8usize, 20, 57] {
+            let c: Vec<BigInt> = (0..=n)
+                .map(|i| (BigInt::from(i as i64 * 977 - 20_000) << (i * 3)) - 5)
+                .collect();
+            let mut reference = c.clone();
+            taylor_shift_1(&mut reference);
+            let mut l = Limbs::from_bigints_with_room(&c, n + 1);
+            l.taylor_shift_1();
+            assert_eq!(l.to_bigints(), reference);
+        }
+        // The multipliers L / C(n, i) by the recurrence equal the lcm of the binomials over
+        // each binomial.
+        for n in [1usize, 6, 30, 61] {
+            let p: Vec<BigInt> = (0..=n).map(|i| BigInt::from(i as i64 - 3)).collect();
+            let mut binom = vec![BigInt::one(); n + 1];
+            for i in 1..=n {
+                binom[i] = &binom[i - 1] * BigInt::from(n - i + 1) / BigInt::from(i);
+            }
+            let l = binom
+                .iter()
+                .fold(BigInt::one(), |l, b| num_integer::Integer::lcm(&l, b));
+            let mut c: Vec<BigInt> = p.iter().rev().cloned().collect();
+            taylor_shift_1(&mut c);
+            let expect: Vec<BigInt> = (0..=n).map(|i| &c[n - i] * (&l / &binom[i])).collect();
+            assert_eq!(to_bernstein_integer(&p), expect);
+        }
+    }
+
+    #[test]
+    fn content_is_the_gcd() {
+        let mut rng = Rng::new(99);
+        for _ in 0..50 {
+            let k = BigInt::from(rng.below(1 << 40) + 1) * BigInt::from(rng.below(1 << 40) + 1);
+            let c: Vec<BigInt> = (0..6)
+                .map(|_| &k * BigInt::from(rng.below(2001) as i64 - 1000))
+                .collect();
+            let expect = c
+                .iter()
+                .fold(BigInt::zero(), |g, x| num_integer::Integer::gcd(&g, x));
+            assert_eq!(content(&c), expect);
+        }
+        assert_eq!(content(&bigs(&[0, 0])), BigInt::zero());
+        assert_eq!(content(&bigs(&[0, -6, 0, 9])), BigInt::from(3));
     }
 
     #[test]
@@ -864,6 +1688,255 @@ mod unit_tests {
 
     fn upoly_of(q: &[BigInt]) -> UPoly {
         UPoly::from_coeffs(rationals(q))
+    }
+
+    /// Checks `found` (refined to width `w`) against the Sturm isolation of `c`: the same count,
+    /// sorted and disjoint closed intervals, each of width at most `w` and overlapping exactly
+    /// one Sturm interval, each exact one a root, each open one with end values of opposite
+    /// non-zero signs of the square-free part.
+    fn check_refined_against_sturm(c: &[BigInt], found: &[RootInterval], w: &Rational) {
+        check_against_sturm_with(c, found, w, true);
+    }
+
+    /// `strict`: the closed intervals are disjoint (refined); otherwise they may share an end
+    /// (isolating intervals).
+    fn check_against_sturm_with(c: &[BigInt], found: &[RootInterval], w: &Rational, strict: bool) {
+        let p = upoly_of(c);
+        let sturm = p.isolate_roots();
+        assert_eq!(found.len(), sturm.len(), "{p}: {found:?} vs {sturm:?}");
+        let sqf = p.square_free_part();
+        for pair in found.windows(2) {
+            assert!(
+                pair[0].hi < pair[1].lo || (!strict && pair[0].hi == pair[1].lo),
+                "{pair:?} of {p}"
+            );
+        }
+        for (f, s) in found.iter().zip(&sturm) {
+            assert!(f.width() <= *w, "{f:?} of {p} wider than {w}");
+            if f.is_exact() {
+                assert!(p.eval(&f.lo).is_zero(), "{f:?} is not a root of {p}");
+                assert!(s.lo <= f.lo && f.lo <= s.hi, "{f:?} vs {s:?} of {p}");
+            } else {
+                let (a, b) = (sqf.sign_at(&f.lo), sqf.sign_at(&f.hi));
+                assert!(a != Sign::Zero && b != Sign::Zero && a != b, "{f:?} of {p}");
+                let lo = f.lo.clone().max(s.lo.clone());
+                let hi = f.hi.clone().min(s.hi.clone());
+                assert!(lo <= hi, "{f:?} vs {s:?} of {p}");
+            }
+        }
+    }
+
+    fn product(factors: &[(i64, i64)], rest: &[i64]) -> Vec<BigInt> {
+        let mut p = UPoly::from_i64_coeffs(rest);
+        for &(q, r) in factors {
+            p *= UPoly::from_i64_coeffs(&[-r, q]);
+        }
+        p.integer_coefficients()
+    }
+
+    /// Runs the fast and the reference isolator, checks both against Sturm, returns the fast
+    /// answer.
+    fn both(c: &[BigInt], w: &Rational) -> Vec<RootInterval> {
+        let fast = real_roots_to_with(c, w, Options::FAST).expect("non-zero");
+        let reference = real_roots_to_with(c, w, Options::REFERENCE).expect("non-zero");
+        check_refined_against_sturm(c, &fast, w);
+        check_refined_against_sturm(c, &reference, w);
+        let coarse = integer_real_roots(c).expect("non-zero");
+        check_against_sturm_with(c, &coarse, &Rational::from(BigInt::one() << 4000u32), false);
+        fast
+    }
+
+    #[test]
+    fn rational_roots_are_recognised_exactly() {
+        let w = super::super::w4::target_width();
+        let mut rng = Rng::new(1414);
+        for round in 0..24 {
+            // Distinct rational roots r / q with denominators up to 60, some dividing a small
+            // leading coefficient, some dyadic, some at 0 and +-1, times an irreducible
+            // quadratic (x^2 + 2 or x^2 - 3: irrational or complex roots).
+            let k = 1 + rng.below(9) as usize;
+            let mut roots: Vec<(i64, i64)> = Vec::new();
+            while roots.len() < k {
+                let q = 1 + rng.below(if round % 2 == 0 { 60 } else { 8 }) as i64;
+                let r = rng.below(8 * q as u64 + 1) as i64 - 4 * q;
+                let g = num_integer::Integer::gcd(&r, &q);
+                let (r, q) = (r / g.max(1), q / g.max(1));
+                if !roots.contains(&(q, r)) {
+                    roots.push((q, r));
+                }
+            }
+            let rest: &[i64] = if round % 3 == 0 {
+                &[-3, 0, 1]
+            } else {
+                &[2, 0, 1]
+            };
+            let c = product(&roots, rest);
+            let fast = both(&c, &w);
+            let exact = fast.iter().filter(|r| r.is_exact()).count();
+            assert_eq!(exact, roots.len(), "{roots:?}: {fast:?}");
+        }
+        // The Wilkinson products: every root exact.
+        for n in [5usize, 20, 40] {
+            let fast = both(&super::super::w4::wilkinson(n), &w);
+            assert!(fast.iter().all(RootInterval::is_exact), "wilkinson({n})");
+        }
+    }
+
+    #[test]
+    fn recognition_needs_the_divisibility_and_the_exact_test() {
+        // x^2 - 2 (roots +-sqrt 2): the convergents 3/2, 7/5, 17/12, ... of sqrt 2 pass
+        // neither p | 2 with q | 1 nor the exact test: nothing is recognised.
+        let c = bigs(&[-2, 0, 1]);
+        let lo = Rational::from_integer(1);
+        let hi = Rational::from_integer(2);
+        assert_eq!(
+            recognise_rational(&c, std::f64::consts::SQRT_2, &lo, &hi),
+            None
+        );
+        // 3 x^2 - 2 x - 1 = (3 x + 1)(x - 1): an estimate near -1/3 finds it, one near 1 too.
+        let c = bigs(&[-1, -2, 3]);
+        let third = Rational::new(-1, 3).expect("3");
+        assert_eq!(
+            recognise_rational(
+                &c,
+                -0.333_333_3,
+                &Rational::from_integer(-1),
+                &Rational::ZERO
+            ),
+            Some(third)
+        );
+        // A candidate outside the interval is not returned.
+        assert_eq!(
+            recognise_rational(
+                &c,
+                -0.333_333_3,
+                &Rational::ZERO,
+                &Rational::from_integer(2)
+            ),
+            None
+        );
+        assert!(linear_factor_divides(&c, -1, 3));
+        assert!(linear_factor_divides(&c, 1, 1));
+        assert!(!linear_factor_divides(&c, 1, 3));
+        assert_eq!(convergents(0.75), vec![(0, 1), (1, 1), (3, 4)]);
+    }
+
+    #[test]
+    fn close_pairs_are_split_and_agree_with_the_reference() {
+        let w = super::super::w4::target_width();
+        // Mignotte-type x^n - 2 (a x - 1)^2 with other parameters, and (x - a)(x - a - eps) g.
+        for (n, a) in [(12usize, 7i64), (25, 10), (33, 3), (40, 13), (50, 10)] {
+            let mut c = vec![BigInt::zero(); n + 1];
+            c[n] += 1;
+            c[2] -= 2 * a * a;
+            c[1] += 4 * a;
+            c[0] -= 2;
+            // Both checked against Sturm (4 real roots for even n, 3 for odd n).
+            let fast = both(&c, &w);
+            assert_eq!(fast.len(), 4 - n % 2, "n {n}, a {a}");
+        }
+        for e in [20u32, 45, 70, 120] {
+            let a = Rational::new(2, 7).expect("7");
+            let eps = Rational::from(BigInt::one()) / Rational::from(BigInt::one() << e);
+            let g = UPoly::from_i64_coeffs(&[5, -1, 0, 3, 0, 1]);
+            let p = UPoly::from_roots(&[a.clone(), a + eps]) * g;
+            let fast = both(&p.integer_coefficients(), &w);
+            assert_eq!(fast.len(), 3, "eps 2^-{e}");
+        }
+    }
+
+    #[test]
+    fn pair_splitter_verifies_its_point() {
+        // x^2 - 2 (4 x - 1)^2 on the node (0, 1/2) at depth 1, ends negative... use the
+        // Mignotte polynomial x^30 - 2 (10 x - 1)^2 on (1/16, 1/8): the split point has the
+        // opposite sign and lies strictly inside.
+        let p = super::super::w4::mignotte(30);
+        let s = PairSplitter::new(&p);
+        let (x, delta) = s
+            .split(&BigInt::from(1), 4, Sign::Negative)
+            .expect("a pair");
+        let xr = x.to_rational();
+        assert!(xr > Rational::new(1, 16).expect("16") && xr < Rational::new(1, 8).expect("8"));
+        assert_eq!(sign_at_rational(&p, &xr), Sign::Positive);
+        let d = delta.expect("an estimate");
+        assert!(d > 0.0 && d < 1e-10, "{d}");
+        // x^2 + 1 shifted: (8x - 1)^2 + 1 has no real root; V may be 2 but no split point.
+        let q = bigs(&[2, -16, 64]);
+        let s = PairSplitter::new(&q);
+        assert!(s.split(&BigInt::from(0), 2, Sign::Positive).is_none());
+    }
+
+    #[test]
+    fn random_polynomials_agree_with_the_reference() {
+        let w = super::super::w4::target_width();
+        let mut rng = Rng::new(77);
+        for n in [1usize, 2, 3, 7, 15, 31] {
+            for _ in 0..4 {
+                let c = random_poly(&mut rng, n);
+                both(&c, &w);
+            }
+        }
+        // Repeated roots (the square-free part), roots at 0 and +-1, huge and tiny coefficients.
+        let cases = [
+            product(&[(1, 0), (1, 1), (1, -1), (3, 1), (3, 1), (2, 1)], &[1]),
+            product(&[(7, 3), (7, 3), (7, 3), (1, 5)], &[1, 1, 1]),
+            product(&[(1, 1 << 40), (1 << 40, 1), (3, -(1 << 35))], &[1]),
+            bigs(&[-(1 << 62), 0, 0, 0, 0, 0, 0, 0, 0, 0, 1]),
+            bigs(&[1, 0, 0, -(1 << 62)]),
+        ];
+        for c in &cases {
+            both(c, &w);
+        }
+        for (family, degree, count) in super::super::w4::COMPARISON {
+            let c = family.polynomial(degree);
+            let fast = real_roots_to_with(&c, &w, Options::FAST).expect("non-zero");
+            assert_eq!(fast.len(), count);
+            if degree <= 50 {
+                check_refined_against_sturm(&c, &fast, &w);
+            }
+        }
+    }
+
+    /// One comparison instance through the fast path: the pinned count, width and order (one
+    /// test per instance, so each can be profiled alone: `valgrind --tool=callgrind
+    /// target/release/deps/exactcheck_exact-* --exact univariate::descartes::unit_tests::w4_wilkinson_20`).
+    fn w4_instance(index: usize) {
+        let (family, degree, count) = super::super::w4::COMPARISON[index];
+        let w = super::super::w4::target_width();
+        let roots = super::super::w4::solve(&family.polynomial(degree));
+        assert_eq!(roots.len(), count);
+        assert!(roots.iter().all(|r| r.width() <= w));
+        assert!(roots.windows(2).all(|p| p[0].hi < p[1].lo));
+    }
+
+    #[test]
+    fn w4_wilkinson_20() {
+        w4_instance(0);
+    }
+
+    #[test]
+    fn w4_wilkinson_40() {
+        w4_instance(1);
+    }
+
+    #[test]
+    fn w4_random_50() {
+        w4_instance(2);
+    }
+
+    #[test]
+    fn w4_random_100() {
+        w4_instance(3);
+    }
+
+    #[test]
+    fn w4_mignotte_20() {
+        w4_instance(4);
+    }
+
+    #[test]
+    fn w4_mignotte_40() {
+        w4_instance(5);
     }
 
     #[test]

@@ -55,6 +55,7 @@
 mod bernstein_roots;
 mod descartes;
 mod isolate;
+mod limbs;
 #[cfg(test)]
 mod tests;
 mod upoly;
