@@ -89,6 +89,7 @@
 mod display;
 mod kernels;
 mod layout;
+mod power;
 mod reduce;
 mod ring;
 #[cfg(test)]

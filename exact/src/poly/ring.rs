@@ -738,6 +738,9 @@ impl<C: Ring> Poly<C> {
         if let Some((c, prim)) = self.split_content() {
             return prim.pow_u64(e).scale(&pow_coeff(&c, e));
         }
+        if let Some(p) = self.pow_by_recurrence(e, |_| usize::MAX) {
+            return p.expect("a power without a cap on its terms always completes");
+        }
         let mut acc = Poly::one();
         let mut base = self.clone();
         loop {
@@ -906,6 +909,14 @@ impl<C: Ring> Poly<C> {
         if let Some((c, prim)) = self.split_content() {
             let e32 = u32::try_from(e).expect("e came from a u32");
             return Ok(prim.try_pow(e32)?.scale(&pow_coeff(&c, e)));
+        }
+        let words = std::cell::Cell::new(0);
+        let capped = self.pow_by_recurrence(e, |w| {
+            words.set(w);
+            term_cap::<C>(w).0
+        });
+        if let Some(p) = capped {
+            return p.ok_or_else(|| cap_error::<C>(words.get()));
         }
         let mut e = e;
         let mut acc: Option<Poly<C>> = None;

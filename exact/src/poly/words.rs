@@ -180,7 +180,7 @@ impl<C> Clone for WordHooks<C> {
 impl<C> Copy for WordHooks<C> {}
 
 /// `t` as a `U` when `T` and `U` are the same type.
-fn cast<T: 'static, U: 'static>(t: T) -> Option<U> {
+pub(super) fn cast<T: 'static, U: 'static>(t: T) -> Option<U> {
     let mut slot = Some(t);
     (&mut slot as &mut dyn Any)
         .downcast_mut::<Option<U>>()
