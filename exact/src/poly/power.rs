@@ -129,9 +129,9 @@ fn recurrence_of<C: Ring>() -> Option<RecurrenceFn<C>> {
 
 // ------------------------------------------------------------------------------ cost model
 
-/// `C(n + k, k)` as a float (saturating to infinity).
+/// `C(n, k)` as a float (saturating to infinity).
 fn binomial(n: u64, k: u64) -> f64 {
-    let k = k.min(n);
+    let k = k.min(n - k.min(n));
     let mut r = 1f64;
     for i in 0..k {
         r = r * (n - i) as f64 / (i + 1) as f64;
@@ -156,11 +156,25 @@ fn terms_bound(t: usize, nvars: usize, degree: u64, max_exps: &[u64], k: u64) ->
 
 /// Whether the recurrence is predicted cheaper than binary powering for `p^e`.
 fn recurrence_preferred<C: Ring>(p: &Poly<C>, e: u64) -> bool {
+    // A square is one squaring: t (t + 1) / 2 products, against the recurrence's t N_2 >= t^2
+    // steps.
+    if e <= 2 {
+        return false;
+    }
     let t = p.len();
     let max_exps = p.max_exponents();
     let nvars = max_exps.iter().filter(|&&d| d > 0).count();
     let degree = p.total_degree();
-    let n = |k: u64| terms_bound(t, nvars, degree, &max_exps, k);
+    // The bounds for the few exponents binary powering meets, computed once each.
+    let memo = std::cell::RefCell::new(Vec::<(u64, f64)>::new());
+    let n = |k: u64| -> f64 {
+        if let Some(&(_, v)) = memo.borrow().iter().find(|(j, _)| *j == k) {
+            return v;
+        }
+        let v = terms_bound(t, nvars, degree, &max_exps, k);
+        memo.borrow_mut().push((k, v));
+        v
+    };
     let cells = |k: u64| -> f64 {
         max_exps
             .iter()

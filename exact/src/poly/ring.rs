@@ -727,7 +727,8 @@ impl<C: Ring> Poly<C> {
         Some(self.pow_u64(e as u64))
     }
 
-    /// `self^e` for a 64-bit exponent.
+    /// `self^e` for a 64-bit exponent: a single term directly, the content split off, then the
+    /// power recurrence or binary powering as the cost model of `power` chooses.
     pub(super) fn pow_u64(&self, mut e: u64) -> Self {
         if e == 0 {
             return Poly::one();
@@ -888,9 +889,9 @@ impl<C: Ring> Poly<C> {
         .ok_or_else(|| cap_error::<C>(words.get()))
     }
 
-    /// `self^e` within the limits: the degree `e * deg(self)` is checked before any work, every
-    /// squaring and multiplication of the binary powering counts its terms (as
-    /// [`Poly::try_mul`]).
+    /// `self^e` within the limits: the degree `e * deg(self)` is checked before any work; the
+    /// power recurrence counts the power's terms as it produces them, and every squaring and
+    /// multiplication of binary powering counts its own (as [`Poly::try_mul`]).
     ///
     /// # Errors
     /// As [`Poly::try_mul`].
