@@ -47,7 +47,9 @@
 //! not zero, so it is invertible). Other coefficient types take binary powering.
 //!
 //! # The choice
-//! Binary powering costs the sum of its squarings and multiplications, `N_a N_b` coefficient
+//! Squares, and powers too small to matter (at most [`SMALL_POWER`] recurrence steps by the
+//! multiset bound below), are binary powering without further estimates. Otherwise binary
+//! powering costs the sum of its squarings and multiplications, `N_a N_b` coefficient
 //! products each (`N (N + 1) / 2` for a square), each priced by what the kernels will do: a word
 //! product when both operands' coefficients fit in 63 bits (bounded by `k log2 sum |a_i|` bits
 //! for `P^k`; always for `ModP`), a big one otherwise, plus a heap level per `log2` of the
@@ -88,6 +90,10 @@ const WORD_NS: f64 = 4.0;
 const BIG_NS: f64 = 45.0;
 const HEAP_NS: f64 = 4.0;
 const RECURRENCE_NS: f64 = 40.0;
+
+/// Below this many recurrence steps (`t C(t - 1 + e, e)`, a bound) a power is binary powering
+/// without estimates: both take microseconds.
+const SMALL_POWER: f64 = 4096.0;
 
 /// A power by the recurrence: `None` when it does not apply to `C` or this base, `Some(None)`
 /// past the cap on the terms.
@@ -161,7 +167,12 @@ fn recurrence_preferred<C: Ring>(p: &Poly<C>, e: u64) -> bool {
     if e <= 2 {
         return false;
     }
+    // A small power either way (at most a few thousand products whichever runs): not worth
+    // the estimates below, which cost about as much.
     let t = p.len();
+    if t as f64 * binomial(t as u64 - 1 + e, e) <= SMALL_POWER {
+        return false;
+    }
     let max_exps = p.max_exponents();
     let nvars = max_exps.iter().filter(|&&d| d > 0).count();
     let degree = p.total_degree();
