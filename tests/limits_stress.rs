@@ -234,8 +234,10 @@ fn every_stress_file_is_for_a_limit_and_well_formed() {
 #[test]
 fn timeout_ends_a_long_run_with_one_line_and_changes_nothing_on_a_fast_one() {
     let os = |args: &[&str]| -> Vec<OsString> { args.iter().map(OsString::from).collect() };
-    // (x+y+z)^200 expands to 20,301 terms with coefficients of about 300 bits: over 30 s here.
-    let slow = os(&["--timeout", "1", "prove", "(x+y+z)^200", "0"]);
+    // (x+y+z)^100 (x-y+2z)^100: two powers of 5,151 terms each (fast, by the power recurrence)
+    // and their product, 26 million products of coefficients of about 200 bits: 17 s here.
+    // ((x+y+z)^200 alone, 30 s by binary powering, takes 0.2 s since the recurrence.)
+    let slow = os(&["--timeout", "1", "prove", "(x+y+z)^100*(x-y+2z)^100", "0"]);
     let fast = ["prove", "(x+y)^3", "x^3 + 3x^2 y + 3x y^2 + y^3"];
     let mut fast_timed = os(&fast);
     fast_timed.extend(os(&["--timeout", "1"]));

@@ -67,9 +67,15 @@
 //!   output term; dense products then accumulate directly in an array over the exponent box and
 //!   read it back in order (no sort). Other coefficient types, and lists that do not fit, take
 //!   the generic path.
-//! * Powers by binary powering (squarings and multiplications); a single term is raised directly.
-//!   A rational polynomial with a content `c != 1` is raised as `c^k P^k` with `P` primitive
-//!   integer, so a big rational content never rides through the expansion.
+//! * Powers: a single term is raised directly. A rational polynomial with a content `c != 1` is
+//!   raised as `c^k P^k` with `P` primitive integer, so a big rational content never rides
+//!   through the expansion. Then, for `Rational` and `ModP` coefficients, a cost model
+//!   (`power`) chooses between binary powering (squarings and multiplications) and the power
+//!   recurrence (J. C. P. Miller's, in a multivariate form with a leading term): every
+//!   coefficient of `P^e` from `t - 1` earlier ones and one exact division, one pass linear in
+//!   the output, which wins for high powers of few-term bases (`(t + x^2 + y + 3 x y_x)^74`:
+//!   220,000 word products instead of binary powering's 34 million big ones). Other coefficient
+//!   types take binary powering.
 //! * Normal forms ([`Poly::reduce`]) by multivariate division with a heap of pending monomials
 //!   and a hash map of their coefficients: every monomial leaves the heap once, already final. For
 //!   independent unit-circle relations `c_i^2 + s_i^2 - 1` (a Gröbner basis in any order) there
@@ -89,6 +95,7 @@
 mod display;
 mod kernels;
 mod layout;
+mod power;
 mod reduce;
 mod ring;
 #[cfg(test)]

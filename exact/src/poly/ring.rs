@@ -727,7 +727,8 @@ impl<C: Ring> Poly<C> {
         Some(self.pow_u64(e as u64))
     }
 
-    /// `self^e` for a 64-bit exponent.
+    /// `self^e` for a 64-bit exponent: a single term directly, the content split off, then the
+    /// power recurrence or binary powering as the cost model of `power` chooses.
     pub(super) fn pow_u64(&self, mut e: u64) -> Self {
         if e == 0 {
             return Poly::one();
@@ -737,6 +738,9 @@ impl<C: Ring> Poly<C> {
         }
         if let Some((c, prim)) = self.split_content() {
             return prim.pow_u64(e).scale(&pow_coeff(&c, e));
+        }
+        if let Some(p) = self.pow_by_recurrence(e, |_| usize::MAX) {
+            return p.expect("a power without a cap on its terms always completes");
         }
         let mut acc = Poly::one();
         let mut base = self.clone();
@@ -885,9 +889,9 @@ impl<C: Ring> Poly<C> {
         .ok_or_else(|| cap_error::<C>(words.get()))
     }
 
-    /// `self^e` within the limits: the degree `e * deg(self)` is checked before any work, every
-    /// squaring and multiplication of the binary powering counts its terms (as
-    /// [`Poly::try_mul`]).
+    /// `self^e` within the limits: the degree `e * deg(self)` is checked before any work; the
+    /// power recurrence counts the power's terms as it produces them, and every squaring and
+    /// multiplication of binary powering counts its own (as [`Poly::try_mul`]).
     ///
     /// # Errors
     /// As [`Poly::try_mul`].
@@ -906,6 +910,14 @@ impl<C: Ring> Poly<C> {
         if let Some((c, prim)) = self.split_content() {
             let e32 = u32::try_from(e).expect("e came from a u32");
             return Ok(prim.try_pow(e32)?.scale(&pow_coeff(&c, e)));
+        }
+        let words = std::cell::Cell::new(0);
+        let capped = self.pow_by_recurrence(e, |w| {
+            words.set(w);
+            term_cap::<C>(w).0
+        });
+        if let Some(p) = capped {
+            return p.ok_or_else(|| cap_error::<C>(words.get()));
         }
         let mut e = e;
         let mut acc: Option<Poly<C>> = None;

@@ -230,3 +230,204 @@ proptest! {
         check_product(&f, &h)?;
     }
 }
+
+// ------------------------------------------------------------------------------ powers
+
+/// A base for powers: `terms` terms in up to `nvars` variables.
+fn arb_base(nvars: u32, emax: u32, terms: usize) -> impl Strategy<Value = P> {
+    arb_poly(nvars, emax, terms)
+}
+
+/// A small integer coefficient or a large one of up to 62 bits, either sign.
+fn arb_word_coeff() -> impl Strategy<Value = Rational> {
+    prop_oneof![
+        (-9i64..=9).prop_map(Rational::from_integer),
+        (-(1i64 << 62)..=(1i64 << 62)).prop_map(Rational::from_integer),
+    ]
+}
+
+fn to_modp(p: &P) -> Poly<ModP> {
+    p.map_coeffs(|c| ModP::from_rational(c).unwrap_or(ModP::ONE))
+}
+
+/// `f^k` every way there is against the reference (binary powering on the generic kernels).
+fn check_power(f: &P, k: u32) -> Result<(), TestCaseError> {
+    let reference = f.pow_reference(u64::from(k));
+    let p = f.pow(k);
+    prop_assert!(p.is_canonical());
+    prop_assert_eq!(&p, &reference);
+    prop_assert_eq!(&f.try_pow(k).expect("small"), &reference);
+    if let Some(r) = f.pow_recurrence_forced(u64::from(k)) {
+        prop_assert!(r.is_canonical());
+        prop_assert_eq!(&r, &reference);
+    }
+    Ok(())
+}
+
+fn check_power_modp(f: &Poly<ModP>, k: u32) -> Result<(), TestCaseError> {
+    let reference = f.pow_reference(u64::from(k));
+    prop_assert_eq!(&f.pow(k), &reference);
+    prop_assert_eq!(&f.try_pow(k).expect("small"), &reference);
+    if let Some(r) = f.pow_recurrence_forced(u64::from(k)) {
+        prop_assert!(r.is_canonical());
+        prop_assert_eq!(&r, &reference);
+    }
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 48, ..ProptestConfig::default() })]
+
+    /// Sparse bases of 2 to 4 terms in 1 to 6 variables, every coefficient class (big
+    /// numerators and denominators, so contents split off too), exponents up to 40.
+    #[test]
+    fn sparse_powers_agree(nv in 1u32..=6, f in arb_base(6, 3, 4), k in 0u32..=40) {
+        // Keep the variables below nv.
+        let f = f.map_coeffs(Clone::clone);
+        let f = (nv..6).fold(f, |f, v| f.substitute(v, &P::one()));
+        check_power(&f, k)?;
+    }
+
+    /// Dense small bases (up to 9 terms in 1 to 3 variables), exponents up to 16.
+    #[test]
+    fn dense_powers_agree(f in arb_poly_with(3, 2, 9, arb_word_coeff()), k in 0u32..=16) {
+        check_power(&f, k)?;
+    }
+
+    /// Integer bases whose coefficients pass 2^62 (two-limb multipliers in the recurrence,
+    /// accumulators over several limbs) and negative leading coefficients.
+    #[test]
+    fn word_coefficient_powers_agree(f in arb_poly_with(4, 3, 4, arb_word_coeff()), k in 0u32..=25) {
+        check_power(&f, k)?;
+        check_power(&(-&f), k)?;
+    }
+
+    /// Powers modulo 2^61 - 1 against the reference.
+    #[test]
+    fn modp_powers_agree(f in arb_poly_with(5, 3, 5, arb_word_coeff()), k in 0u32..=40) {
+        check_power_modp(&to_modp(&f), k)?;
+    }
+}
+
+/// The fuzz input `16*(t+ 1*x^2+y+3*x*y_x)^74` (8.4 s by binary powering: its last steps
+/// multiply powers of ~10,000 terms with coefficients beyond 63 bits) at exponent 23: the
+/// parsed power (content split off, recurrence by the cost model) equals the reference.
+#[test]
+fn fuzz_power_shape_matches_the_reference() {
+    let mut vars = Vars::new();
+    let p: P = parse_poly("16*(t+ 1*x^2+y+3*x*y_x)^23", &mut vars).expect("parses");
+    let v = |n: &str| P::var(vars.get(n).expect("a variable of the input"));
+    let base =
+        v("t") + v("x").pow(2) + v("y") + v("x") * v("y_x").scale(&Rational::from_integer(3));
+    assert!(base.recurrence_is_preferred(74));
+    assert!(base.recurrence_is_preferred(23));
+    let reference = base.pow_reference(23).scale(&Rational::from_integer(16));
+    assert!(p.is_canonical());
+    assert_eq!(p.len(), 2600);
+    assert_eq!(p, reference);
+    // The leading coefficient 16 * 3^23 and the pure power of t.
+    let lead = Rational::from(BigInt::from(3).pow(23u32) * 16);
+    assert_eq!(p.coefficient(&[(3, 23), (1, 23)]), lead);
+    assert_eq!(p.coefficient(&[(0, 23)]), Rational::from_integer(16));
+}
+
+/// The weight must separate the leading term when other terms share its top exponent
+/// (`x y`, `y` and `x^3 y^0`: the degree in y ties, x breaks it), and several variables tie.
+#[test]
+fn recurrence_with_ties_in_the_top_variable() {
+    let x = |i: Var| P::var(i);
+    let c = |n: i64| P::from_i64(n);
+    let bases = [
+        x(0) * x(1) + x(1) + x(0).pow(3),
+        x(0) * x(1) * x(2) - c(2) * x(1) * x(2) + c(5) * x(0) * x(2) + x(2) - c(7),
+        c(-3) * x(0).pow(2) * x(1) + x(0) * x(1) - x(1) + c(4) * x(0).pow(5),
+        x(2).pow(3) * x(0) + x(2).pow(3) * x(1) - x(2).pow(3) + x(1).pow(9) * x(0).pow(9),
+    ];
+    for f in &bases {
+        for k in [2u64, 3, 7, 12] {
+            let reference = f.pow_reference(k);
+            let r = f
+                .pow_recurrence_forced(k)
+                .expect("integer word coefficients");
+            assert_eq!(r, reference, "{k}");
+            let m = to_modp(f);
+            assert_eq!(
+                m.pow_recurrence_forced(k).expect("ModP"),
+                m.pow_reference(k),
+                "{k}"
+            );
+        }
+    }
+}
+
+/// The recurrence stops past its cap on the terms (what `try_pow` turns into the `terms` or
+/// `memory` limit), and completes at the cap.
+#[test]
+fn recurrence_stops_past_the_cap() {
+    let x = |i: Var| P::var(i);
+    let f = x(0) + x(1) + x(2) + P::one();
+    // (1 + x + y + z)^30 has C(33, 3) = 5456 terms.
+    let reference = f.pow_reference(30);
+    assert_eq!(reference.len(), 5456);
+    assert!(matches!(f.pow_by_recurrence(30, |_| 5455), Some(None)));
+    let at_cap = f
+        .pow_by_recurrence(30, |_| 5456)
+        .expect("chosen")
+        .expect("within the cap");
+    assert_eq!(at_cap, reference);
+    // try_pow under the default limits.
+    assert_eq!(f.try_pow(30).expect("within the limits"), reference);
+}
+
+/// The cost model keeps binary powering where it wins: the square of a many-term sparse base.
+#[test]
+fn cost_model_keeps_binary_powering_for_wide_squares() {
+    let f = P::sum((0..12).map(|i| P::var(i) * P::var(i + 1)).collect());
+    assert!(!f.recurrence_is_preferred(2));
+    assert!(f.recurrence_is_preferred(30));
+}
+
+#[test]
+#[ignore]
+fn calibrate_power_choice() {
+    use std::time::Instant;
+    let x = |i: Var| P::var(i);
+    let c = |n: i64| P::from_i64(n);
+    let fuzz = x(0) + x(1).pow(2) + x(2) + c(3) * x(1) * x(3);
+    let dense4 = c(1) + x(0) + x(1) + x(2) + x(3);
+    let sparse10 = P::sum(
+        (0..10)
+            .map(|i| x(i) * x((i + 3) % 10).pow(2) * c(i as i64 + 1))
+            .collect(),
+    );
+    let uni = P::sum((0..10).map(|i| x(0).pow(i) * c(2 * i as i64 + 1)).collect());
+    let tri = c(7) * x(0).pow(3) * x(1) + c(-5) * x(1).pow(2) + x(0) + c(2);
+    let cases: Vec<(&str, &P, Vec<u64>)> = vec![
+        ("fuzz", &fuzz, vec![10, 20, 37, 50]),
+        ("dense4", &dense4, vec![2, 4, 8, 12, 16]),
+        ("sparse10", &sparse10, vec![2, 3, 4, 6]),
+        ("uni10", &uni, vec![2, 4, 10, 20, 40]),
+        ("tri", &tri, vec![5, 20, 60]),
+    ];
+    for (name, f, es) in cases {
+        for e in es {
+            let time = |g: &dyn Fn() -> P| {
+                let mut best = f64::MAX;
+                let mut r = P::zero();
+                for _ in 0..3 {
+                    let s = Instant::now();
+                    r = g();
+                    best = best.min(s.elapsed().as_secs_f64());
+                }
+                (best, r)
+            };
+            let (tb, rb) = time(&|| f.pow_binary(e));
+            let (tr, rr) = time(&|| f.pow_recurrence_forced(e).unwrap());
+            assert_eq!(rb, rr);
+            println!(
+                "{name:9} e={e:3} terms={:6} binary={:9.3} ms  recurrence={:9.3} ms  ratio b/r={:6.2}  model_prefers_rec={}",
+                rb.len(), tb * 1e3, tr * 1e3, tb / tr, f.recurrence_is_preferred(e)
+            );
+        }
+    }
+}

@@ -180,7 +180,7 @@ impl<C> Clone for WordHooks<C> {
 impl<C> Copy for WordHooks<C> {}
 
 /// `t` as a `U` when `T` and `U` are the same type.
-fn cast<T: 'static, U: 'static>(t: T) -> Option<U> {
+pub(super) fn cast<T: 'static, U: 'static>(t: T) -> Option<U> {
     let mut slot = Some(t);
     (&mut slot as &mut dyn Any)
         .downcast_mut::<Option<U>>()
@@ -290,103 +290,67 @@ pub(super) struct W128;
 /// 192-bit accumulators.
 pub(super) struct W192;
 
-impl Arith for W64 {
-    type In = i64;
-    type Acc = i64;
-    #[inline(always)]
-    fn mul(a: &i64, b: &i64) -> i64 {
-        a * b
-    }
-    #[inline(always)]
-    fn add_mul(acc: &mut i64, a: &i64, b: &i64) {
-        *acc += a * b;
-    }
-    #[inline(always)]
-    fn add(acc: &mut i64, x: i64) {
-        *acc += x;
-    }
-    #[inline(always)]
-    fn double(x: i64) -> i64 {
-        2 * x
-    }
-    #[inline(always)]
-    fn is_zero(x: &i64) -> bool {
-        *x == 0
-    }
+/// The [`Arith`] and [`WordArith`] impls of a word accumulator: its type and zero, one
+/// product widened to it, a product added to it, an accumulator added to it, and its exact
+/// value. The three accumulators differ only there.
+macro_rules! word_arith {
+    ($name:ident, $acc:ty, $zero:expr,
+     mul: |$a:ident, $b:ident| $mul:expr,
+     add_mul: |$u:ident, $c:ident, $d:ident| $add_mul:expr,
+     add: |$x:ident, $y:ident| $add:expr,
+     sum: |$s:ident| $sum:expr) => {
+        impl Arith for $name {
+            type In = i64;
+            type Acc = $acc;
+            #[inline(always)]
+            fn mul($a: &i64, $b: &i64) -> $acc {
+                $mul
+            }
+            #[inline(always)]
+            fn add_mul($u: &mut $acc, $c: &i64, $d: &i64) {
+                $add_mul
+            }
+            #[inline(always)]
+            fn add($x: &mut $acc, $y: $acc) {
+                $add
+            }
+            #[inline(always)]
+            fn double(x: $acc) -> $acc {
+                let mut y = x;
+                Self::add(&mut y, x);
+                y
+            }
+            #[inline(always)]
+            fn is_zero(x: &$acc) -> bool {
+                *x == $zero
+            }
+        }
+
+        impl WordArith for $name {
+            const ZERO: $acc = $zero;
+            fn sum($s: $acc) -> WordSum {
+                $sum
+            }
+        }
+    };
 }
 
-impl WordArith for W64 {
-    const ZERO: i64 = 0;
-    fn sum(x: i64) -> WordSum {
-        WordSum::from_i128(x as i128)
-    }
-}
-
-impl Arith for W128 {
-    type In = i64;
-    type Acc = i128;
-    #[inline(always)]
-    fn mul(a: &i64, b: &i64) -> i128 {
-        *a as i128 * *b as i128
-    }
-    #[inline(always)]
-    fn add_mul(acc: &mut i128, a: &i64, b: &i64) {
-        *acc += *a as i128 * *b as i128;
-    }
-    #[inline(always)]
-    fn add(acc: &mut i128, x: i128) {
-        *acc += x;
-    }
-    #[inline(always)]
-    fn double(x: i128) -> i128 {
-        2 * x
-    }
-    #[inline(always)]
-    fn is_zero(x: &i128) -> bool {
-        *x == 0
-    }
-}
-
-impl WordArith for W128 {
-    const ZERO: i128 = 0;
-    fn sum(x: i128) -> WordSum {
-        WordSum::from_i128(x)
-    }
-}
-
-impl Arith for W192 {
-    type In = i64;
-    type Acc = WordSum;
-    #[inline(always)]
-    fn mul(a: &i64, b: &i64) -> WordSum {
-        WordSum::from_i128(*a as i128 * *b as i128)
-    }
-    #[inline(always)]
-    fn add_mul(acc: &mut WordSum, a: &i64, b: &i64) {
-        acc.add_i128(*a as i128 * *b as i128);
-    }
-    #[inline(always)]
-    fn add(acc: &mut WordSum, x: WordSum) {
-        acc.add(x);
-    }
-    #[inline(always)]
-    fn double(x: WordSum) -> WordSum {
-        let mut y = x;
-        y.add(x);
-        y
-    }
-    #[inline(always)]
-    fn is_zero(x: &WordSum) -> bool {
-        x.hi == 0 && x.lo == 0
-    }
-}
-
-impl WordArith for W192 {
-    const ZERO: WordSum = WordSum { hi: 0, lo: 0 };
-    fn sum(x: WordSum) -> WordSum {
-        x
-    }
-}
+word_arith!(W64, i64, 0,
+    mul: |a, b| a * b,
+    add_mul: |acc, a, b| *acc += a * b,
+    add: |x, y| *x += y,
+    sum: |x| WordSum::from_i128(x as i128));
+word_arith!(W128, i128, 0,
+    mul: |a, b| *a as i128 * *b as i128,
+    add_mul: |acc, a, b| *acc += *a as i128 * *b as i128,
+    add: |x, y| *x += y,
+    sum: |x| WordSum::from_i128(x));
+// A product of two 63-bit words is below 2^126: an i128, added with a carry into the top.
+word_arith!(W192, WordSum, WordSum { hi: 0, lo: 0 },
+    mul: |a, b| WordSum::from_i128(*a as i128 * *b as i128),
+    add_mul: |acc, a, b| acc.add_i128(*a as i128 * *b as i128),
+    add: |x, y| x.add(y),
+    sum: |x| x);
 
 /// Which accumulator a product needs: `B = max|F| max|G| min(#f, #g)` (see the module
 /// documentation); 0 for `i64`, 1 for `i128`, 2 for 192 bits.
