@@ -321,7 +321,13 @@ pub fn run(cli: Cli) -> Result<ExitCode, crate::Error> {
     for arg in &cli.limits {
         exactcheck_core::limits::set_from_str(arg).map_err(crate::Error::Usage)?;
     }
-    let stack = stack_for_depth()?;
+    let Some(stack) = stack_for_depth()? else {
+        // The default depth: the main thread's stack and rayon's defaults are enough, and the
+        // command stays on the main thread (a spawned thread made small benchmarks slower:
+        // W1 (2, 3) took 0.45 ms instead of 0.30 ms, its allocations no longer in glibc's main
+        // arena).
+        return run_command(cli);
+    };
     // Rayon's workers check claims and samples, which walk expressions too. Built once per
     // process: a second build (tests calling `run` again) keeps the first pool, so it fails,
     // which is harmless.
@@ -360,20 +366,25 @@ pub const STACK_PER_LEVEL: usize = 16 << 10;
 const BASE_STACK: usize = 8 << 20;
 
 /// The stack the `depth` limit in force needs (only reserved address space: pages are
-/// committed as they are touched).
+/// committed as they are touched); `None` at or below the default depth, for which the main
+/// thread's and rayon's usual stacks suffice.
 ///
 /// # Errors
 /// [`crate::Error::Usage`] when the limit is above [`MAX_DEPTH`]: deeper nesting would
 /// overflow the stack, which aborts the process instead of answering with an error.
-fn stack_for_depth() -> Result<usize, crate::Error> {
-    let depth = exactcheck_core::limits::DEPTH.get();
+fn stack_for_depth() -> Result<Option<usize>, crate::Error> {
+    let limit = &exactcheck_core::limits::DEPTH;
+    let depth = limit.get();
     if depth > MAX_DEPTH {
         return Err(crate::Error::Usage(format!(
             "--limit depth: at most {MAX_DEPTH} levels (found {depth}): every level needs stack"
         )));
     }
+    if depth <= limit.default_value() {
+        return Ok(None);
+    }
     // At most 65,536 * 16 KiB = 1 GiB, which fits a usize on every supported target.
-    Ok(BASE_STACK + depth as usize * STACK_PER_LEVEL)
+    Ok(Some(BASE_STACK + depth as usize * STACK_PER_LEVEL))
 }
 
 /// The command itself, on the thread [`run`] gives it.
