@@ -322,10 +322,9 @@ pub fn run(cli: Cli) -> Result<ExitCode, crate::Error> {
         exactcheck_core::limits::set_from_str(arg).map_err(crate::Error::Usage)?;
     }
     let Some(stack) = stack_for_depth()? else {
-        // The default depth: the main thread's stack and rayon's defaults are enough, and the
-        // command stays on the main thread (a spawned thread made small benchmarks slower:
-        // W1 (2, 3) took 0.45 ms instead of 0.30 ms, its allocations no longer in glibc's main
-        // arena).
+        // The default depth: the main thread's stack and rayon's defaults are enough, so the
+        // command stays on the main thread and the pool is built lazily, as without a raised
+        // limit it always was.
         return run_command(cli);
     };
     // Rayon's workers check claims and samples, which walk expressions too. Built once per
