@@ -679,19 +679,11 @@ impl<C: Ring> Poly<C> {
     /// The reference power: binary powering on the generic kernels (never the word kernels nor
     /// the recurrence), for tests.
     #[cfg(test)]
-    pub(super) fn pow_reference(&self, mut e: u64) -> Self {
-        let mut acc = Poly::one();
-        let mut base = self.clone();
-        loop {
-            if e & 1 == 1 {
-                acc = acc.mul_reference(&base);
-            }
-            e >>= 1;
-            if e == 0 {
-                return acc;
-            }
-            base = base.square_reference();
+    pub(super) fn pow_reference(&self, e: u64) -> Self {
+        if e == 0 {
+            return Poly::one();
         }
+        super::ring::binary_power(self, e, |a, b| a.mul_reference(b), Poly::square_reference)
     }
 
     /// `self^e` by the recurrence whatever the cost model says, after splitting off the content

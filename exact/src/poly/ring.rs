@@ -729,7 +729,7 @@ impl<C: Ring> Poly<C> {
 
     /// `self^e` for a 64-bit exponent: a single term directly, the content split off, then the
     /// power recurrence or binary powering as the cost model of `power` chooses.
-    pub(super) fn pow_u64(&self, mut e: u64) -> Self {
+    pub(super) fn pow_u64(&self, e: u64) -> Self {
         if e == 0 {
             return Poly::one();
         }
@@ -742,18 +742,7 @@ impl<C: Ring> Poly<C> {
         if let Some(p) = self.pow_by_recurrence(e, |_| usize::MAX) {
             return p.expect("a power without a cap on its terms always completes");
         }
-        let mut acc = Poly::one();
-        let mut base = self.clone();
-        loop {
-            if e & 1 == 1 {
-                acc = acc.mul_ref(&base);
-            }
-            e >>= 1;
-            if e == 0 {
-                return acc;
-            }
-            base = base.square_impl();
-        }
+        binary_power(self, e, |a, b| a.mul_ref(b), Poly::square_impl)
     }
 
     /// `self = c * P` with a primitive integer `P` when the coefficients are rationals whose
@@ -809,21 +798,33 @@ impl<C: Ring> Poly<C> {
 }
 
 /// `x^e` by binary powering (`e >= 1`).
-fn power_of<R: Ring>(x: &R, mut e: u64) -> R {
-    let mut acc: Option<R> = None;
+fn power_of<R: Ring>(x: &R, e: u64) -> R {
+    binary_power(x, e, R::mul_ref, R::square)
+}
+
+/// `x^e` for `e >= 1` by binary powering with the given product and square: the one loop of the
+/// powers (of polynomials, their coefficients, and the generic reference of the tests).
+pub(super) fn binary_power<T: Clone>(
+    x: &T,
+    mut e: u64,
+    mul: impl Fn(&T, &T) -> T,
+    square: impl Fn(&T) -> T,
+) -> T {
+    debug_assert!(e >= 1, "binary_power of the empty product");
+    let mut acc: Option<T> = None;
     let mut sq = x.clone();
     loop {
         if e & 1 == 1 {
             acc = Some(match acc {
                 None => sq.clone(),
-                Some(a) => a.mul_ref(&sq),
+                Some(a) => mul(&a, &sq),
             });
         }
         e >>= 1;
         if e == 0 {
-            return acc.unwrap_or_else(R::one);
+            return acc.unwrap_or(sq);
         }
-        sq = sq.square();
+        sq = square(&sq);
     }
 }
 
