@@ -130,16 +130,7 @@ fn bench_hgcd_vs_lehmer(c: &mut Criterion) {
         let (a, b, d) = planted_pair(bits, 0x4ec0 ^ bits);
         assert_eq!(gcd_hgcd_tuned(&a, &b, FORCED), d);
         assert_eq!(gcd_biguint(&a, &b), d);
-        group.bench_with_input(
-            BenchmarkId::new("lehmer", bits),
-            &(&a, &b),
-            |bch, (a, b)| bch.iter(|| gcd_lehmer(black_box(a), black_box(b))),
-        );
-        group.bench_with_input(
-            BenchmarkId::new("half-gcd", bits),
-            &(&a, &b),
-            |bch, (a, b)| bch.iter(|| gcd_hgcd_tuned(black_box(a), black_box(b), FORCED)),
-        );
+        lehmer_and_half_gcd(&mut group, bits, &a, &b);
         group.bench_with_input(
             BenchmarkId::new("gcd_biguint", bits),
             &(&a, &b),
@@ -147,6 +138,23 @@ fn bench_hgcd_vs_lehmer(c: &mut Criterion) {
         );
     }
     group.finish();
+}
+
+/// Lehmer against the forced half-gcd on one pair, in `group` under `bits`.
+fn lehmer_and_half_gcd(
+    group: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
+    bits: u64,
+    a: &BigUint,
+    b: &BigUint,
+) {
+    group.bench_with_input(BenchmarkId::new("lehmer", bits), &(a, b), |bch, (a, b)| {
+        bch.iter(|| gcd_lehmer(black_box(a), black_box(b)))
+    });
+    group.bench_with_input(
+        BenchmarkId::new("half-gcd", bits),
+        &(a, b),
+        |bch, (a, b)| bch.iter(|| gcd_hgcd_tuned(black_box(a), black_box(b), FORCED)),
+    );
 }
 
 /// Around the crossover: random pairs (no planted factor, the full descent) from 150,000 to
@@ -159,16 +167,7 @@ fn bench_hgcd_crossover(c: &mut Criterion) {
     for bits in [150_000u64, 200_000, 300_000, 400_000, 500_000] {
         let (a, b) = (random_bits(bits, &mut st), random_bits(bits, &mut st));
         assert_eq!(gcd_hgcd_tuned(&a, &b, FORCED), gcd_lehmer(&a, &b));
-        group.bench_with_input(
-            BenchmarkId::new("lehmer", bits),
-            &(&a, &b),
-            |bch, (a, b)| bch.iter(|| gcd_lehmer(black_box(a), black_box(b))),
-        );
-        group.bench_with_input(
-            BenchmarkId::new("half-gcd", bits),
-            &(&a, &b),
-            |bch, (a, b)| bch.iter(|| gcd_hgcd_tuned(black_box(a), black_box(b), FORCED)),
-        );
+        lehmer_and_half_gcd(&mut group, bits, &a, &b);
     }
     group.finish();
 }

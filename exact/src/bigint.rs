@@ -292,7 +292,7 @@ fn add_word_loop<const SUB: bool>(
 }
 
 /// In-place two's complement negation of a limb vector (its value modulo `2^(64 len)`).
-fn negate_twos_complement(x: &mut [u64]) {
+pub fn negate_twos_complement(x: &mut [u64]) {
     let mut add = true;
     for w in x.iter_mut() {
         let (v, o) = (!*w).overflowing_add(u64::from(add));

@@ -506,21 +506,16 @@ impl IntArith {
         }
     }
 
-    /// `x / d` for a magnitude `x` that `d != 0` divides exactly.
+    /// `x / d` for a magnitude `x` that `d != 0` divides exactly (`bigint`'s Jebelean
+    /// division, no division instruction per limb; the exactness, the recurrence's invariant,
+    /// is checked by one folding remainder pass).
     fn div_exact(x: &mut Vec<u64>, d: u64) {
-        let mut rem: u128 = 0;
-        for l in x.iter_mut().rev() {
-            let cur = (rem << 64) | *l as u128;
-            *l = (cur / d as u128) as u64;
-            rem = cur % d as u128;
-        }
         assert_eq!(
-            rem, 0,
+            crate::bigint::rem_1(x, d),
+            0,
             "power recurrence: an inexact division (the powers of an integer polynomial are integer)"
         );
-        while x.last() == Some(&0) {
-            x.pop();
-        }
+        *x = crate::bigint::divexact_1(x, d);
     }
 }
 
@@ -554,17 +549,9 @@ impl RecurrenceArith for IntArith {
         let mut mag = std::mem::take(&mut self.acc);
         let neg = mag.last().is_some_and(|&l| l >> 63 == 1);
         if neg {
-            // Two's complement negation: invert and add one.
-            let mut carry = true;
-            for l in mag.iter_mut() {
-                let (s, c) = (!*l).overflowing_add(carry as u64);
-                *l = s;
-                carry = c;
-            }
+            crate::bigint::negate_twos_complement(&mut mag);
         }
-        while mag.last() == Some(&0) {
-            mag.pop();
-        }
+        crate::bigint::trim(&mut mag);
         let a0 = self.a[0];
         Self::div_exact(&mut mag, a0.unsigned_abs());
         let k_abs = u64::try_from(k.unsigned_abs()).expect("the weights keep k below 2^63");

@@ -411,12 +411,7 @@ impl NodeCoeffs for Vec<BigInt> {
         split_half(self)
     }
     fn scaled_f64s(&self) -> Vec<f64> {
-        let shift = self
-            .iter()
-            .map(|c| c.bits())
-            .max()
-            .unwrap_or(0)
-            .saturating_sub(60);
+        let shift = f64_shift(self);
         self.iter().map(|c| scaled_f64(c, shift)).collect()
     }
     fn variations(&self) -> usize {
@@ -521,6 +516,16 @@ fn rational_of_f64(x: f64) -> Option<Rational> {
 }
 
 /// `x 2^-shift` in `f64` for an integer `x` (approximately; `0` on underflow).
+/// The common shift that brings the largest of `cs` to about 60 bits before [`scaled_f64`],
+/// so that the scaled values stay in `f64`'s range whatever the coefficients' size.
+fn f64_shift(cs: &[BigInt]) -> u64 {
+    cs.iter()
+        .map(BigInt::bits)
+        .max()
+        .unwrap_or(0)
+        .saturating_sub(60)
+}
+
 fn scaled_f64(x: &BigInt, shift: u64) -> f64 {
     match approx(x) {
         None => 0.0,
@@ -735,12 +740,7 @@ impl PairSplitter {
         if d2.is_empty() {
             d2.push(BigInt::zero());
         }
-        let shift = p
-            .iter()
-            .map(|c| c.bits())
-            .max()
-            .unwrap_or(0)
-            .saturating_sub(60);
+        let shift = f64_shift(p);
         let pf = p.iter().map(|c| scaled_f64(c, shift)).collect();
         let d1f = d1.iter().map(|c| scaled_f64(c, shift)).collect();
         let d2f = d2.iter().map(|c| scaled_f64(c, shift)).collect();
