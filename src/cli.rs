@@ -355,9 +355,11 @@ pub fn run(cli: Cli) -> Result<ExitCode, crate::Error> {
 /// for the whole limit up front ([`STACK_PER_LEVEL`]).
 pub const MAX_DEPTH: u64 = 65_536;
 
-/// Stack reserved per level of the `depth` limit, on top of [`BASE_STACK`]. The deepest path
-/// measured (nested parentheses in `prove`: parse, expand, drop) needs about 2 KiB per level;
-/// this is eight times that, and `tests/robust_cli.rs` runs every deep path at [`MAX_DEPTH`].
+/// Stack reserved per level of the `depth` limit, on top of [`BASE_STACK`]. Nested parentheses
+/// in `prove` (parse, expand, drop) need at most about 1 KiB per level: the main thread's 8 MiB
+/// held 4,000 of them (8,000 levels) and overflowed at 8,000. This is sixteen times that;
+/// `tests/robust_cli.rs` runs `prove` and a claims file (parentheses and signs) at
+/// [`MAX_DEPTH`].
 pub const STACK_PER_LEVEL: usize = 16 << 10;
 
 /// Stack of the command's thread and of rayon's workers below any depth (the main thread's
