@@ -28,6 +28,10 @@
 //!   `mpn_divexact_1`: the quotient is produced from the least significant limb upwards as
 //!   `q_i = (x_i - borrow) * d^(-1) mod 2^64` — multiplications only; the factor `2^s` of an
 //!   even divisor is shifted out on the fly.
+//! * **Fixed-width ring operations** ([`hensel_div_1_in_place`], [`mul_1_add_in_place`]):
+//!   the same Jebelean step and a multiply-accumulate by a word, modulo `2^(64 len)` on two's
+//!   complement numbers, for the synthetic division of `univariate::limbs` (exactness is
+//!   certified there by a size argument, not by the kernels).
 //! * **The fused addition pass** ([`add_word_pass`]): one pass over both big operands computes
 //!   the exact quotient `b/g` limb by limb, the linear combination `a (d/g) ± c (b/g)` with a
 //!   signed two-limb carry (negated by a two's-complement pass when the result is negative),
@@ -156,7 +160,7 @@ where
 /// The inverse of an odd `d` modulo `2^64` (Newton's iteration, doubling the correct bits from
 /// the 3 that `d` itself gives).
 #[inline]
-fn inverse_mod_2_64(d: u64) -> u64 {
+pub fn inverse_mod_2_64(d: u64) -> u64 {
     debug_assert!(d & 1 == 1);
     let mut inv = d;
     for _ in 0..5 {
@@ -198,6 +202,48 @@ pub fn divexact_1(x: &[u64], d: u64) -> Vec<u64> {
     }
     trim(&mut out);
     out
+}
+
+/// `x d^(-1) mod 2^(64 len)` in place for an odd `d` with `inv = d^(-1) mod 2^64`
+/// ([`inverse_mod_2_64`]): the 2-adic (Hensel) division of Jebelean's scheme over the whole
+/// fixed width, a ring operation modulo `2^(64 len)`. When `d` divides `x` (read as a two's
+/// complement number that fits) it is the exact quotient; otherwise it is the unique residue
+/// `y` with `y d = x` modulo `2^(64 len)`, which callers must not mistake for a quotient.
+#[inline]
+pub fn hensel_div_1_in_place(x: &mut [u64], d: u64, inv: u64) {
+    debug_assert!(d & 1 == 1 && d.wrapping_mul(inv) == 1);
+    let mut c = 0u64;
+    for w in x.iter_mut() {
+        let (l, borrow) = w.overflowing_sub(c);
+        let q = l.wrapping_mul(inv);
+        *w = q;
+        c = ((u128::from(q) * u128::from(d)) >> 64) as u64 + u64::from(borrow);
+    }
+}
+
+/// `acc + x m` (or `acc - x m` with `sub`) modulo `2^(64 len)`, in place, for equal-length
+/// slices: two's complement numbers times a word.
+#[inline]
+pub fn mul_1_add_in_place(acc: &mut [u64], x: &[u64], m: u64, sub: bool) {
+    debug_assert_eq!(acc.len(), x.len());
+    let mut carry = 0u64;
+    let mut borrow = false;
+    for (a, &w) in acc.iter_mut().zip(x) {
+        let p = u128::from(w) * u128::from(m) + u128::from(carry);
+        carry = (p >> 64) as u64;
+        let lo = p as u64;
+        if sub {
+            let (d1, b1) = a.overflowing_sub(lo);
+            let (d2, b2) = d1.overflowing_sub(u64::from(borrow));
+            *a = d2;
+            borrow = b1 | b2;
+        } else {
+            let (s1, c1) = a.overflowing_add(lo);
+            let (s2, c2) = s1.overflowing_add(u64::from(borrow));
+            *a = s2;
+            borrow = c1 | c2;
+        }
+    }
 }
 
 /// The fused pass of adding a word-sized rational to a big one (see
@@ -368,6 +414,49 @@ mod tests {
             let got = divexact_1(&limbs(&x), d);
             prop_assert_eq!(biguint_from_limbs(&got), &x / BigUint::from(d));
             prop_assert!(got.last() != Some(&0));
+        }
+
+        /// The Hensel division is the ring division modulo 2^(64 len): y d = x there, and
+        /// y is the exact quotient when d divides x.
+        #[test]
+        fn prop_hensel_div_1(x in prop::collection::vec(any::<u64>(), 1..8), d in arb_divisor()) {
+            let d = d | 1;
+            let inv = inverse_mod_2_64(d);
+            let modulus = BigUint::from(1u8) << (64 * x.len());
+            let mut y = x.clone();
+            hensel_div_1_in_place(&mut y, d, inv);
+            prop_assert_eq!(
+                biguint_from_limbs(&y) * BigUint::from(d) % &modulus,
+                biguint_from_limbs(&x)
+            );
+            // An exact multiple: the true quotient.
+            let q = biguint_from_limbs(&x) >> 64;
+            let mut m = limbs(&(&q * BigUint::from(d)));
+            m.resize(x.len() + 1, 0);
+            hensel_div_1_in_place(&mut m, d, inv);
+            let mut expected = limbs(&q);
+            expected.resize(x.len() + 1, 0);
+            prop_assert_eq!(m, expected);
+        }
+
+        /// acc +- x m modulo 2^(64 len).
+        #[test]
+        fn prop_mul_1_add(
+            acc in prop::collection::vec(any::<u64>(), 1..8),
+            seed in any::<u64>(),
+            m in any::<u64>(),
+            sub in any::<bool>(),
+        ) {
+            let x: Vec<u64> = acc.iter().map(|&a| a.rotate_left(17) ^ seed).collect();
+            let modulus = BigInt::from(BigUint::from(1u8) << (64 * acc.len()));
+            let expected = {
+                let (a, b) = (signed(&acc, false), signed(&x, false) * BigInt::from(m));
+                let v = if sub { a - b } else { a + b };
+                ((v % &modulus) + &modulus) % &modulus
+            };
+            let mut got = acc.clone();
+            mul_1_add_in_place(&mut got, &x, m, sub);
+            prop_assert_eq!(signed(&got, false), expected);
         }
     }
 

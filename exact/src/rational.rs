@@ -575,6 +575,10 @@ fn div_unless_one<'a>(x: &'a BigUint, g: &BigUint) -> Cow<'a, BigUint> {
 /// `(a/b)(c/d)` on big parts by Henrici's method: cancel `gcd(a, d)` and `gcd(c, b)` first. The
 /// magnitudes are multiplied borrowed (no copy when a gcd is one) and the sign applied last.
 fn mul_big(a: &BigInt, b: &BigUint, c: &BigInt, d: &BigUint) -> Rational {
+    if b.is_one() && d.is_one() {
+        // Integers (the coefficients of primitive polynomials): nothing to cancel.
+        return Rational::from_coprime(a * c, b.clone());
+    }
     let g1 = gcd_biguint(a.magnitude(), d);
     let g2 = gcd_biguint(c.magnitude(), b);
     let (a1, d1) = (div_unless_one(a.magnitude(), &g1), div_unless_one(d, &g1));

@@ -40,7 +40,7 @@
 //! invariant (a negative operand, which Möller's lemma rules out); `gcd(0, 0) = 0`.
 
 use num_bigint::{BigInt, BigUint};
-use num_traits::Zero;
+use num_traits::{One, Zero};
 
 /// Leading-zero difference above which [`gcd_u64`] starts with a remainder step.
 const U64_REM_THRESHOLD: u32 = 16;
@@ -189,6 +189,9 @@ pub fn gcd_lehmer(a: &BigUint, b: &BigUint) -> BigUint {
     }
     if b.is_zero() {
         return a.clone();
+    }
+    if a.is_one() || b.is_one() {
+        return BigUint::one();
     }
     let (a, b) = if a >= b { (a, b) } else { (b, a) };
     // Here a >= b > 0.

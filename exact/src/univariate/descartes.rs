@@ -138,30 +138,31 @@ const PRIMES: [u64; 3] = [
     4_611_686_018_427_387_817,
 ];
 
+/// Multiplication modulo one of the [`PRIMES`]: Mersenne folding for `2^61 - 1`
+/// ([`ModP`](crate::modp::ModP)), a `u128` remainder for the others.
+#[inline]
 fn mul_mod(a: u64, b: u64, p: u64) -> u64 {
-    ((a as u128 * b as u128) % p as u128) as u64
-}
-
-fn pow_mod(mut a: u64, mut e: u64, p: u64) -> u64 {
-    let mut r = 1u64;
-    while e > 0 {
-        if e & 1 == 1 {
-            r = mul_mod(r, a, p);
-        }
-        a = mul_mod(a, a, p);
-        e >>= 1;
+    if p == crate::modp::P {
+        crate::modp::ModP::from_u128(u128::from(a) * u128::from(b)).value()
+    } else {
+        (u128::from(a) * u128::from(b) % u128::from(p)) as u64
     }
-    r
 }
 
+/// `x mod p` for an integer `x` (non-negative result).
 fn big_mod(x: &BigInt, p: u64) -> u64 {
-    let r = (x % BigInt::from(p))
-        .to_i128()
-        .expect("a remainder modulo a 62-bit prime fits in i128");
-    r.rem_euclid(p as i128) as u64
+    let r = rem_small(x, p);
+    if x.is_negative() && r != 0 {
+        p - r
+    } else {
+        r
+    }
 }
 
-/// The degree of `gcd(a, b)` over `F_p` (both non-zero, trailing zeros trimmed).
+/// The degree of `gcd(a, b)` over `F_p` (both non-zero, trailing zeros trimmed). Euclid's
+/// algorithm without inverses: `a <- lc(b) a - lc(a) x^k b` cancels the leading term of `a`
+/// and multiplies the gcd by the unit `lc(b)` only, so the degrees are those of the monic
+/// remainder sequence.
 fn gcd_degree_mod_p(mut a: Vec<u64>, mut b: Vec<u64>, p: u64) -> usize {
     fn trim(v: &mut Vec<u64>) {
         while v.last() == Some(&0) {
@@ -174,19 +175,19 @@ fn gcd_degree_mod_p(mut a: Vec<u64>, mut b: Vec<u64>, p: u64) -> usize {
         std::mem::swap(&mut a, &mut b);
     }
     while !b.is_empty() {
-        // a <- a mod b
+        // a <- a mod b (up to a unit factor)
         let db = b.len() - 1;
-        let inv = pow_mod(b[db], p - 2, p);
+        let lb = b[db];
         while a.len() > db {
             let top = a.len() - 1;
-            let f = mul_mod(a[top], inv, p);
-            if f != 0 {
-                let shift = top - db;
-                for (j, &bj) in b.iter().enumerate() {
-                    let t = mul_mod(f, bj, p);
-                    let x = &mut a[shift + j];
-                    *x = if *x >= t { *x - t } else { *x + p - t };
-                }
+            let f = a[top];
+            let shift = top - db;
+            for x in &mut a[..shift] {
+                *x = mul_mod(*x, lb, p);
+            }
+            for (x, &bj) in a[shift..].iter_mut().zip(&b) {
+                let (u, t) = (mul_mod(*x, lb, p), mul_mod(f, bj, p));
+                *x = if u >= t { u - t } else { u + p - t };
             }
             debug_assert_eq!(a[top], 0);
             a.pop();
@@ -570,14 +571,22 @@ fn bernstein_root_estimate(mut g: Vec<f64>) -> Option<f64> {
     let mut slow = 0;
     for _ in 0..200 {
         let width = c - a;
-        if width <= 1e-17 || width <= 4.0 * f64::EPSILON * c {
+        // The ulp scale of the bracket (t is in (0, 1)).
+        let tol = 8.0 * f64::EPSILON * c;
+        if width <= 2.0 * tol || width <= 1e-17 {
             break;
         }
         let mut m = (a * fc - c * fa) / (fc - fa);
-        // A bisection after two steps that did not halve the bracket.
-        if !(m > a && m < c) || slow >= 2 {
+        if slow >= 2 || m.is_nan() {
+            // A bisection after two steps that did not halve the bracket.
             m = 0.5 * (a + c);
             slow = 0;
+        } else if m - a < tol || !(m > a) {
+            // Regula falsi converges from one side and, near the root, lands on the end point
+            // it converges to: a point a few ulps inside closes the bracket there.
+            m = a + tol;
+        } else if c - m < tol || !(m < c) {
+            m = c - tol;
         }
         let fm = f(m);
         if fm == 0.0 {
@@ -638,14 +647,14 @@ fn convergents(x: f64) -> Vec<(i64, i64)> {
 
 /// `x mod m` for `m > 0` (non-negative).
 fn rem_small(x: &BigInt, m: u64) -> u64 {
-    (x.magnitude() % m)
-        .to_u64()
-        .expect("a remainder modulo a u64 fits in u64")
+    crate::bigint::rem_1(&x.magnitude().to_u64_digits(), m)
 }
 
 /// The quotient `a / (q x - p)` when `q x - p` divides the integer polynomial `a` (`q > 0`):
 /// synthetic division with every quotient coefficient an exact integer division by the word
-/// `q`, stopping at the first non-zero remainder.
+/// `q`, stopping at the first non-zero remainder. The reference of the tests for the limb
+/// kernel [`Limbs::divide_by_linear`].
+#[cfg(test)]
 fn divide_by_linear_factor(a: &[BigInt], p: i64, q: i64) -> Option<Vec<BigInt>> {
     let n = a.len() - 1;
     let qu = q as u64;
@@ -679,31 +688,55 @@ fn linear_factor_divides(a: &[BigInt], p: i64, q: i64) -> bool {
 /// coefficient); it is a root exactly when `q x - p` divides the polynomial.
 #[cfg(test)]
 fn recognise_rational(poly: &[BigInt], est: f64, lo: &Rational, hi: &Rational) -> Option<Rational> {
-    recognise_rational_deflating(poly, est, lo, hi).map(|(r, _)| r)
+    let mut r = RationalRoots::new(poly);
+    r.recognise(est, lo, hi)
 }
 
-/// [`recognise_rational`] with the quotient `poly / (q x - p)` of the root found.
-fn recognise_rational_deflating(
-    poly: &[BigInt],
-    est: f64,
-    lo: &Rational,
-    hi: &Rational,
-) -> Option<(Rational, Vec<BigInt>)> {
-    let n = poly.len() - 1;
-    let lc = &poly[n];
-    let low = poly.iter().find(|c| !c.is_zero())?;
-    for (p, q) in convergents(est) {
-        if p == 0 || rem_small(lc, q as u64) != 0 || rem_small(low, p.unsigned_abs()) != 0 {
-            continue;
-        }
-        let r = Rational::new(p, q).expect("q > 0");
-        if r > *lo && r < *hi {
-            if let Some(quotient) = divide_by_linear_factor(poly, p, q) {
-                return Some((r, quotient));
-            }
+/// The rational-root recognition of one polynomial (module documentation, "Rational roots"):
+/// the polynomial with the roots found so far divided out, in fixed-width limbs wide enough
+/// for every factor ([`super::limbs::linear_factor_width`]), and the magnitudes of the
+/// original leading and lowest non-zero coefficients for the rational root theorem's filters.
+struct RationalRoots {
+    deflated: Limbs,
+    lc: Vec<u64>,
+    low: Vec<u64>,
+}
+
+impl RationalRoots {
+    /// For the primitive square-free `q` (degree >= 1).
+    fn new(q: &[BigInt]) -> RationalRoots {
+        let w = super::limbs::linear_factor_width(q);
+        let low = q.iter().find(|c| !c.is_zero()).expect("q is not zero");
+        RationalRoots {
+            deflated: Limbs::from_bigints_width(q, w),
+            lc: q[q.len() - 1].magnitude().to_u64_digits(),
+            low: low.magnitude().to_u64_digits(),
         }
     }
-    None
+
+    /// The rational root in `(lo, hi)` among the convergents of `est`, divided out of the
+    /// polynomial when found.
+    fn recognise(&mut self, est: f64, lo: &Rational, hi: &Rational) -> Option<Rational> {
+        if self.deflated.len() < 2 {
+            return None;
+        }
+        for (p, q) in convergents(est) {
+            if p == 0
+                || crate::bigint::rem_1(&self.lc, q as u64) != 0
+                || crate::bigint::rem_1(&self.low, p.unsigned_abs()) != 0
+            {
+                continue;
+            }
+            let r = Rational::new(p, q).expect("q > 0");
+            if r > *lo && r < *hi {
+                if let Some(quotient) = self.deflated.divide_by_linear(p, q) {
+                    self.deflated = quotient;
+                    return Some(r);
+                }
+            }
+        }
+        None
+    }
 }
 
 /// Separates a close root pair (module documentation, "Close pairs"): on the dyadic node
@@ -1389,7 +1422,7 @@ fn real_roots_to_with(
     let refiner = Refiner::new(&q);
     // The rational roots found so far divided out: the later candidates are tested against a
     // polynomial of lower degree (its roots are the remaining roots of q, all simple).
-    let mut deflated: Vec<BigInt> = q.clone();
+    let mut rationals = RationalRoots::new(&q);
     let k = roots.len();
     let mut out: Vec<RootInterval> = Vec::with_capacity(k);
     for (i, iso) in roots.into_iter().enumerate() {
@@ -1399,14 +1432,9 @@ fn real_roots_to_with(
             continue;
         }
         if let (true, Some(est)) = (opts.rationals, &estimate) {
-            if deflated.len() >= 2 {
-                if let Some((r, quotient)) =
-                    recognise_rational_deflating(&deflated, est.to_f64(), &ri.lo, &ri.hi)
-                {
-                    deflated = quotient;
-                    out.push(RootInterval::exact(r));
-                    continue;
-                }
+            if let Some(r) = rationals.recognise(est.to_f64(), &ri.lo, &ri.hi) {
+                out.push(RootInterval::exact(r));
+                continue;
             }
         }
         // The sign right of root i is (-1)^(k-1-i) (positive leading coefficient).
@@ -1819,6 +1847,71 @@ mod unit_tests {
         assert!(linear_factor_divides(&c, 1, 1));
         assert!(!linear_factor_divides(&c, 1, 3));
         assert_eq!(convergents(0.75), vec![(0, 1), (1, 1), (3, 4)]);
+    }
+
+    /// The limb synthetic division ([`Limbs::divide_by_linear`]) against the `BigInt` one:
+    /// products `(q x - p) g` with random `g` (coefficients up to 200 bits, both parities of
+    /// `q` and `p`, signs, words near 2^63) give the quotient `g`, and other linear factors
+    /// are refused exactly when the reference refuses them.
+    #[test]
+    fn limb_division_agrees_with_the_bigint_reference() {
+        let mut rng = Rng::new(2611);
+        let word = |rng: &mut Rng| -> i64 {
+            match rng.below(4) {
+                0 => 1 + rng.below(7) as i64,
+                1 => 1 + rng.below(1 << 20) as i64,
+                2 => (rng.next_u64() >> 1) as i64,
+                _ => i64::MAX - rng.below(5) as i64,
+            }
+        };
+        for round in 0..400 {
+            let deg = 1 + rng.below(12) as usize;
+            let bits = [3u64, 64, 200][round % 3];
+            let g: Vec<BigInt> = (0..=deg)
+                .map(|_| {
+                    let mut x = BigInt::from(rng.next_u64());
+                    for _ in 0..bits / 64 {
+                        x = (x << 64u32) + BigInt::from(rng.next_u64());
+                    }
+                    x >>= (64 - bits % 64) % 64;
+                    if rng.below(2) == 0 {
+                        -x
+                    } else {
+                        x
+                    }
+                })
+                .collect();
+            if g[deg].is_zero() {
+                continue;
+            }
+            let (mut p, mut q) = (word(&mut rng), word(&mut rng));
+            let gc = num_integer::Integer::gcd(&p, &q);
+            (p, q) = (p / gc, q / gc);
+            if rng.below(2) == 0 {
+                p = -p;
+            }
+            // a = (q x - p) g.
+            let mut a = vec![BigInt::zero(); deg + 2];
+            for (i, c) in g.iter().enumerate() {
+                a[i + 1] += c * q;
+                a[i] -= c * p;
+            }
+            let w = super::super::limbs::linear_factor_width(&a);
+            let l = Limbs::from_bigints_width(&a, w);
+            let got = l
+                .divide_by_linear(p, q)
+                .expect("a true factor is certified");
+            assert_eq!(got.to_bigints(), g, "round {round}: ({q} x - {p})");
+            // Other candidates: the reference decides.
+            for (p2, q2) in [(p + 1, q), (p, q + 2), (p + q, q), (1, 1), (-1, 2)] {
+                if p2 == 0 || q2 <= 0 || num_integer::Integer::gcd(&p2, &q2) != 1 {
+                    continue;
+                }
+                let expected = divide_by_linear_factor(&a, p2, q2);
+                let got = l.divide_by_linear(p2, q2).map(|x| x.to_bigints());
+                assert_eq!(got, expected, "round {round}: ({q2} x - {p2})");
+            }
+        }
     }
 
     #[test]

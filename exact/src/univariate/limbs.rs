@@ -276,3 +276,106 @@ impl Limbs {
             .collect()
     }
 }
+
+// ------------------------------------------------------------------------ linear factors
+
+/// The limb count with which [`Limbs::divide_by_linear`] can certify every linear factor of
+/// the integer polynomial `a` (not zero, degree `n`): every factor `g` of `a` over `Z` has
+/// `|g|_inf <= |g|_1 <= 2^(deg g) |a|_2 <= 2^n sqrt(n + 1) max |a_i|` (Mignotte's bound, the
+/// leading coefficient of `g` dividing that of `a`), so its coefficients have at most
+/// `B = bits(max |a_i|) + n + ceil(log2(n + 1) / 2)` bits; the division's certificate needs
+/// 67 more, and a sign bit.
+pub(super) fn linear_factor_width(a: &[BigInt]) -> usize {
+    let n = a.len().saturating_sub(1);
+    let bits = a.iter().map(|c| c.bits() as usize).max().unwrap_or(0);
+    let log_half = (usize::BITS - n.leading_zeros()) as usize / 2 + 1;
+    (bits + n + log_half + 67 + 1).div_ceil(64)
+}
+
+impl Limbs {
+    /// The numbers `b` in exactly `w` limbs each.
+    ///
+    /// # Panics
+    /// If a number needs more than `64 w` bits (sign included).
+    pub(super) fn from_bigints_width(b: &[BigInt], w: usize) -> Limbs {
+        let l = Limbs::from_bigints(b);
+        assert!(
+            l.w <= w,
+            "from_bigints_width: a number needs more than {w} limbs"
+        );
+        l.resized(w)
+    }
+
+    /// The quotient `a / (q x - p)` of the polynomial `a` with these coefficients (constant
+    /// term first, degree `n >= 1`) when `q x - p` divides it over `Z` (`q > 0`, `p != 0`,
+    /// `gcd(p, q) = 1`), `None` otherwise; the quotient has `n` coefficients of the same
+    /// width.
+    ///
+    /// Synthetic division in the ring `Z / 2^(64 w)`, where every step is a multiply-add by a
+    /// word and a Hensel division ([`crate::bigint::hensel_div_1_in_place`]): by `q` from the
+    /// top (`s_(n-1) = a_n / q`, `s_(k-1) = (a_k + p s_k) / q`, then `a_0 + p s_0 = 0` checked)
+    /// when `q` is odd, else by `-p` from the bottom (`s_0 = a_0 / (-p)`,
+    /// `s_k = (q s_(k-1) - a_k) / p`, then `q s_(n-1) = a_n` checked); `p` and `q` are coprime,
+    /// so one of them is odd, hence invertible modulo `2^(64 w)`. The checks make
+    /// `(q x - p) s = a` hold modulo `2^(64 w)`. **Certificate:** when moreover every `s_k`
+    /// (read as two's complement) has at most `64 w - 66` bits, both sides of that congruence
+    /// lie in `(-2^(64 w - 1), 2^(64 w - 1))` (`|q s_(k-1) - p s_k| < 2^(64 w - 3)`, and `a`'s
+    /// coefficients fit in `w` limbs), so they are equal over `Z`. Conversely, when `q x - p`
+    /// divides `a`, the ring quotient is the integer quotient (the division by an invertible
+    /// element is unique), which fits when `w` is at least [`linear_factor_width`]`(a)`: no
+    /// divisor is missed at that width.
+    pub(super) fn divide_by_linear(&self, p: i64, q: i64) -> Option<Limbs> {
+        use crate::bigint::{hensel_div_1_in_place, inverse_mod_2_64, mul_1_add_in_place};
+        let (w, len) = (self.w, self.len());
+        assert!(
+            q > 0 && p != 0 && len >= 2,
+            "divide_by_linear: q > 0, p != 0, degree >= 1"
+        );
+        let n = len - 1;
+        let (pm, qm) = (p.unsigned_abs(), q as u64);
+        let mut s = vec![0u64; n * w];
+        if qm & 1 == 1 {
+            let inv = inverse_mod_2_64(qm);
+            // s_(k-1) = (a_k + p s_k) / q, s_n = 0.
+            for k in (1..=n).rev() {
+                let (lo, hi) = s.split_at_mut(k * w);
+                let t = &mut lo[(k - 1) * w..];
+                t.copy_from_slice(self.get(k));
+                if k < n {
+                    mul_1_add_in_place(t, &hi[..w], pm, p < 0);
+                }
+                hensel_div_1_in_place(t, qm, inv);
+            }
+            let mut r = self.get(0).to_vec();
+            mul_1_add_in_place(&mut r, &s[..w], pm, p < 0);
+            if r.iter().any(|&l| l != 0) {
+                return None;
+            }
+        } else {
+            debug_assert!(pm & 1 == 1, "p and q are coprime");
+            let inv = inverse_mod_2_64(pm);
+            // s_k = (q s_(k-1) - a_k) / p, s_(-1) = 0.
+            for k in 0..n {
+                let (lo, hi) = s.split_at_mut(k * w);
+                let t = &mut hi[..w];
+                t.fill(0);
+                if k > 0 {
+                    mul_1_add_in_place(t, &lo[(k - 1) * w..], qm, false);
+                }
+                mul_1_add_in_place(t, self.get(k), 1, true);
+                hensel_div_1_in_place(t, pm, inv);
+                if p < 0 {
+                    super::super::bigint::negate_twos_complement(t);
+                }
+            }
+            let mut r = self.get(n).to_vec();
+            mul_1_add_in_place(&mut r, &s[(n - 1) * w..], qm, true);
+            if r.iter().any(|&l| l != 0) {
+                return None;
+            }
+        }
+        s.chunks(w)
+            .all(|x| signed_bits(x) <= 64 * w - 66)
+            .then_some(Limbs { w, d: s })
+    }
+}
