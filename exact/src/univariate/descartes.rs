@@ -581,11 +581,11 @@ fn bernstein_root_estimate(mut g: Vec<f64>) -> Option<f64> {
             // A bisection after two steps that did not halve the bracket.
             m = 0.5 * (a + c);
             slow = 0;
-        } else if m - a < tol || !(m > a) {
+        } else if m - a < tol {
             // Regula falsi converges from one side and, near the root, lands on the end point
             // it converges to: a point a few ulps inside closes the bracket there.
             m = a + tol;
-        } else if c - m < tol || !(m < c) {
+        } else if c - m < tol {
             m = c - tol;
         }
         let fm = f(m);
