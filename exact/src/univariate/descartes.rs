@@ -1849,6 +1849,21 @@ mod unit_tests {
         assert_eq!(convergents(0.75), vec![(0, 1), (1, 1), (3, 4)]);
     }
 
+    /// `BigInt`s through limbs and back: signs, zero, `-2^(64k)`, `2^(64k) - 1`, with room.
+    #[test]
+    fn limbs_round_trip() {
+        let mut cs: Vec<BigInt> = vec![BigInt::zero(), BigInt::one(), -BigInt::one()];
+        for k in [1u32, 2, 3] {
+            let p = BigInt::one() << (64 * k);
+            cs.extend([p.clone(), -p.clone(), &p - 1, 1 - &p, -(&p >> 1u32)]);
+        }
+        for extra in [0, 1, 63, 64, 200] {
+            let l = Limbs::from_bigints_with_room(&cs, extra);
+            assert_eq!(l.to_bigints(), cs, "room {extra}");
+        }
+        assert_eq!(Limbs::from_bigints_width(&cs, 6).to_bigints(), cs);
+    }
+
     /// The limb synthetic division ([`Limbs::divide_by_linear`]) against the `BigInt` one:
     /// products `(q x - p) g` with random `g` (coefficients up to 200 bits, both parities of
     /// `q` and `p`, signs, words near 2^63) give the quotient `g`, and other linear factors

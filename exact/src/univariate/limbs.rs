@@ -93,22 +93,13 @@ impl Limbs {
     pub(super) fn from_bigints_with_room(b: &[BigInt], extra: usize) -> Limbs {
         let bits = b.iter().map(|c| c.bits() as usize + 1).max().unwrap_or(1) + extra;
         let w = bits.div_ceil(64).max(1);
-        let mut d = Vec::with_capacity(w * b.len());
-        for c in b {
-            let bytes = c.to_signed_bytes_le();
-            let fill = if c.sign() == num_bigint::Sign::Minus {
-                0xff
-            } else {
-                0
-            };
-            for t in 0..w {
-                let mut limb = [fill; 8];
-                for (k, byte) in limb.iter_mut().enumerate() {
-                    if let Some(&v) = bytes.get(t * 8 + k) {
-                        *byte = v;
-                    }
-                }
-                d.push(u64::from_le_bytes(limb));
+        let mut d = vec![0u64; w * b.len()];
+        for (c, x) in b.iter().zip(d.chunks_mut(w)) {
+            for (limb, digit) in x.iter_mut().zip(c.magnitude().iter_u64_digits()) {
+                *limb = digit;
+            }
+            if c.sign() == num_bigint::Sign::Minus {
+                crate::bigint::negate_twos_complement(x);
             }
         }
         Limbs { w, d }
@@ -116,11 +107,21 @@ impl Limbs {
 
     /// The numbers as `BigInt`s.
     pub(super) fn to_bigints(&self) -> Vec<BigInt> {
+        let mut mag = vec![0u64; self.w];
         self.d
             .chunks(self.w)
             .map(|x| {
-                let bytes: Vec<u8> = x.iter().flat_map(|l| l.to_le_bytes()).collect();
-                BigInt::from_signed_bytes_le(&bytes)
+                let neg = (x[self.w - 1] as i64) < 0;
+                mag.copy_from_slice(x);
+                if neg {
+                    crate::bigint::negate_twos_complement(&mut mag);
+                }
+                let m = BigInt::from(crate::bigint::biguint_from_limbs(&mag));
+                if neg {
+                    -m
+                } else {
+                    m
+                }
             })
             .collect()
     }
