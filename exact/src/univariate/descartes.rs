@@ -535,86 +535,93 @@ fn scaled_f64(x: &BigInt, shift: u64) -> f64 {
 }
 
 /// An `f64` estimate of the root in `(0, 1)` of the Bernstein polynomial with these
-/// coefficients (one sign variation, non-zero ends): Illinois regula falsi on
+/// coefficients (one sign variation, non-zero ends): safeguarded Newton (Newton inside a
+/// bracket, bisection when a step leaves it or does not halve the step before last) on
 /// `B(t) / (1 - t)^n = sum b_i C(n, i) s^i`, `s = t / (1 - t)`, for `t <= 1/2` and on
-/// `B(t) / t^n` (Horner in `(1 - t) / t`) above, a continuous function with the sign of `B`
-/// evaluated with every power at most 1. Only a candidate generator for
-/// [`recognise_rational`] (nothing is decided on it); `None` beyond degree 1000 (the binomials
-/// leave the `f64` range).
+/// `B(t) / t^n` (Horner in `(1 - t) / t`) above, a smooth function with the sign of `B`
+/// evaluated with every power at most 1, from the control polygon's crossing of the axis.
+/// Only a candidate generator for [`recognise_rational`] and the refinement's first window
+/// (nothing is decided on it); `None` beyond degree 1000 (the binomials leave the `f64` range).
 fn bernstein_root_estimate(mut g: Vec<f64>) -> Option<f64> {
     let n = g.len().checked_sub(1)?;
     if n > 1000 || n == 0 {
         return None;
     }
+    let (mut a, fa0, mut c, fc0) = (0.0f64, g[0], 1.0f64, g[n]);
+    if !(fa0.is_finite() && fc0.is_finite())
+        || fa0 == 0.0
+        || fc0 == 0.0
+        || (fa0 > 0.0) == (fc0 > 0.0)
+    {
+        return None;
+    }
+    // The control polygon (i / n, b_i) crosses the axis once (one sign variation).
+    let mut x = 0.5;
+    if let Some(k) = (0..n).find(|&k| g[k] != 0.0 && (g[k] > 0.0) != (g[k + 1] > 0.0)) {
+        let cross = (k as f64 + g[k] / (g[k] - g[k + 1])) / n as f64;
+        if cross > 0.0 && cross < 1.0 {
+            x = cross;
+        }
+    }
     let mut binom = 1f64;
-    for (i, x) in g.iter_mut().enumerate() {
-        *x *= binom;
+    for (i, v) in g.iter_mut().enumerate() {
+        *v *= binom;
         binom = binom * (n - i) as f64 / (i + 1) as f64;
     }
-    if !g.iter().all(|x| x.is_finite()) {
+    if !g.iter().all(|v| v.is_finite()) {
         return None;
     }
-    let f = |t: f64| -> f64 {
+    // The function and its derivative in t.
+    let eval = |t: f64| -> (f64, f64) {
         if t <= 0.5 {
-            let s = t / (1.0 - t);
-            g.iter().rev().fold(0.0, |acc, &gi| acc * s + gi)
+            let w = 1.0 - t;
+            let s = t / w;
+            let (mut p, mut dp) = (0.0, 0.0);
+            for &gi in g.iter().rev() {
+                dp = dp * s + p;
+                p = p * s + gi;
+            }
+            (p, dp / (w * w))
         } else {
             let u = (1.0 - t) / t;
-            g.iter().fold(0.0, |acc, &gi| acc * u + gi)
+            let (mut q, mut dq) = (0.0, 0.0);
+            for &gi in &g {
+                dq = dq * u + q;
+                q = q * u + gi;
+            }
+            (q, -dq / (t * t))
         }
     };
-    let (mut a, mut fa, mut c, mut fc) = (0.0f64, g[0], 1.0f64, g[n]);
-    if fa == 0.0 || fc == 0.0 || (fa > 0.0) == (fc > 0.0) {
-        return None;
-    }
-    let mut side = 0i8;
-    let mut slow = 0;
+    let negative_left = fa0 < 0.0;
+    let (mut step, mut step_before) = (c - a, c - a);
     for _ in 0..200 {
-        let width = c - a;
-        // The ulp scale of the bracket (t is in (0, 1)).
-        let tol = 8.0 * f64::EPSILON * c;
-        if width <= 2.0 * tol || width <= 1e-17 {
-            break;
+        let (f, df) = eval(x);
+        if f == 0.0 {
+            return Some(x);
         }
-        let mut m = (a * fc - c * fa) / (fc - fa);
-        if slow >= 2 || m.is_nan() {
-            // A bisection after two steps that did not halve the bracket.
-            m = 0.5 * (a + c);
-            slow = 0;
-        } else if m - a < tol {
-            // Regula falsi converges from one side and, near the root, lands on the end point
-            // it converges to: a point a few ulps inside closes the bracket there.
-            m = a + tol;
-        } else if c - m < tol {
-            m = c - tol;
-        }
-        let fm = f(m);
-        if fm == 0.0 {
-            return Some(m);
-        }
-        if !fm.is_finite() {
+        if !f.is_finite() {
             return None;
         }
-        if (fm > 0.0) == (fa > 0.0) {
-            a = m;
-            fa = fm;
-            if side == -1 {
-                fc *= 0.5;
-            }
-            side = -1;
+        if (f < 0.0) == negative_left {
+            a = x;
         } else {
-            c = m;
-            fc = fm;
-            if side == 1 {
-                fa *= 0.5;
-            }
-            side = 1;
+            c = x;
         }
-        if c - a > 0.5 * width {
-            slow += 1;
+        if c - a <= 16.0 * f64::EPSILON * c {
+            return Some(0.5 * (a + c));
+        }
+        let newton = x - f / df;
+        if (newton - x).abs() <= 4.0 * f64::EPSILON * x.abs() {
+            return Some(newton);
+        }
+        let next = if newton > a && newton < c && (newton - x).abs() < 0.5 * step_before {
+            newton
         } else {
-            slow = 0;
-        }
+            0.5 * (a + c)
+        };
+        step_before = step;
+        step = (next - x).abs();
+        x = next;
     }
     Some(0.5 * (a + c))
 }
