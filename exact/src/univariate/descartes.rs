@@ -120,6 +120,8 @@
 //! polynomial library beyond num-bigint; the kernels (Taylor shift, de Casteljau, Horner) are a
 //! few lines each.
 
+mod filtered;
+
 use super::limbs::Limbs;
 use super::*;
 use num_bigint::Sign as BigSign;
@@ -380,10 +382,13 @@ fn unit_roots(p: &[BigInt], opts: Options) -> Vec<UnitRoot> {
         return Vec::new();
     }
     let b = to_bernstein_integer(p);
-    if opts.limbs {
-        unit_roots_from(Limbs::from_bigints(&b), p, opts.pairs)
+    let root = (BigInt::zero(), 0);
+    if opts.filtered && p.len() - 1 <= filtered::MAX_FILTERED_DEGREE {
+        filtered::unit_roots_filtered(&b, p, opts.pairs).0
+    } else if opts.limbs {
+        unit_roots_from(Limbs::from_bigints(&b), p, opts.pairs, root)
     } else {
-        unit_roots_from(b, p, opts.pairs)
+        unit_roots_from(b, p, opts.pairs, root)
     }
 }
 
@@ -438,11 +443,18 @@ impl NodeCoeffs for Limbs {
     }
 }
 
-/// The subdivision of [`unit_roots`] from the root node's coefficients `b`.
-fn unit_roots_from<C: NodeCoeffs>(b: C, p: &[BigInt], pairs: bool) -> Vec<UnitRoot> {
+/// The subdivision of [`unit_roots`] below the node `start = (c, j)`, the interval
+/// `(c / 2^j, (c + 1) / 2^j)`, from that node's coefficients `b` (the whole unit interval is
+/// `(0, 0)`; the filtered subdivision hands nodes over with their own `(c, j)`).
+fn unit_roots_from<C: NodeCoeffs>(
+    b: C,
+    p: &[BigInt],
+    pairs: bool,
+    start: (BigInt, u64),
+) -> Vec<UnitRoot> {
     let mut out = Vec::new();
     let mut pair_splitter: Option<PairSplitter> = None;
-    let mut stack = vec![(b, BigInt::zero(), 0u64)];
+    let mut stack = vec![(b, start.0, start.1)];
     while let Some((b, c, j)) = stack.pop() {
         let v = b.variations();
         if v == 0 {
@@ -451,31 +463,13 @@ fn unit_roots_from<C: NodeCoeffs>(b: C, p: &[BigInt], pairs: bool) -> Vec<UnitRo
         let n = b.degree();
         let (s0, sn) = (b.sign_at(0), b.sign_at(n));
         if v == 1 && s0 != Sign::Zero && sn != Sign::Zero {
-            let estimate = bernstein_root_estimate(b.scaled_f64s())
-                .and_then(rational_of_f64)
-                .map(|t| (Rational::from(c.clone()) + t) / pow2(j));
-            out.push(UnitRoot::Open {
-                a: dyadic(&c, j),
-                b: dyadic(&(&c + 1), j),
-                estimate,
-            });
+            out.push(leaf_root(&c, j, b.scaled_f64s()));
             continue;
         }
         if pairs && v == 2 && j >= 2 && s0 != Sign::Zero && s0 == sn {
             let splitter = pair_splitter.get_or_insert_with(|| PairSplitter::new(p));
-            if let Some((x, delta)) = splitter.split(&c, j, s0) {
-                let (a, m, e) = (dyadic(&c, j), x.to_rational(), dyadic(&(&c + 1), j));
-                let d = delta.and_then(rational_of_f64);
-                out.push(UnitRoot::Open {
-                    a,
-                    b: m.clone(),
-                    estimate: d.as_ref().map(|d| m.sub_ref(d)),
-                });
-                out.push(UnitRoot::Open {
-                    estimate: d.as_ref().map(|d| m.add_ref(d)),
-                    a: m,
-                    b: e,
-                });
+            if let Some(split) = splitter.split(&c, j, s0) {
+                out.extend(pair_roots(&c, j, split));
                 continue;
             }
         }
@@ -488,6 +482,38 @@ fn unit_roots_from<C: NodeCoeffs>(b: C, p: &[BigInt], pairs: bool) -> Vec<UnitRo
         stack.push((left, c2, j + 1));
     }
     out
+}
+
+/// The isolating leaf `(c / 2^j, (c + 1) / 2^j)` with the estimate of its root from the node's
+/// Bernstein coefficients `g` in `f64` (any common positive scale).
+fn leaf_root(c: &BigInt, j: u64, g: Vec<f64>) -> UnitRoot {
+    let estimate = bernstein_root_estimate(g)
+        .and_then(rational_of_f64)
+        .map(|t| (Rational::from(c.clone()) + t) / pow2(j));
+    UnitRoot::Open {
+        a: dyadic(c, j),
+        b: dyadic(&(c + 1), j),
+        estimate,
+    }
+}
+
+/// The two isolating halves of the node `(c, j)` split at the point `x` of a close pair, with
+/// the estimates `x -/+ delta` ([`PairSplitter::split`]).
+fn pair_roots(c: &BigInt, j: u64, (x, delta): (Dyadic, Option<f64>)) -> [UnitRoot; 2] {
+    let (a, m, e) = (dyadic(c, j), x.to_rational(), dyadic(&(c + 1), j));
+    let d = delta.and_then(rational_of_f64);
+    [
+        UnitRoot::Open {
+            a,
+            b: m.clone(),
+            estimate: d.as_ref().map(|d| m.sub_ref(d)),
+        },
+        UnitRoot::Open {
+            estimate: d.as_ref().map(|d| m.add_ref(d)),
+            a: m,
+            b: e,
+        },
+    ]
 }
 
 /// The finite `f64` `x` as an exact rational.
@@ -1358,6 +1384,9 @@ struct Options {
     windows: bool,
     /// The subdivision on fixed-width limbs ([`Limbs`]) instead of `BigInt`s.
     limbs: bool,
+    /// The subdivision on `f64` with a rigorous error bound, exact where that cannot decide
+    /// ([`filtered`]; degrees up to [`filtered::MAX_FILTERED_DEGREE`]).
+    filtered: bool,
 }
 
 impl Options {
@@ -1366,6 +1395,7 @@ impl Options {
         rationals: true,
         windows: true,
         limbs: true,
+        filtered: true,
     };
     #[cfg(test)]
     const REFERENCE: Options = Options {
@@ -1373,6 +1403,7 @@ impl Options {
         rationals: false,
         windows: false,
         limbs: false,
+        filtered: false,
     };
 }
 
