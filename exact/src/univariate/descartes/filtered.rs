@@ -172,9 +172,9 @@ fn subdivide(
             // Out of precision: restart from the node's exact coefficients, whose fresh error
             // bound `2^-52 M` passes this test.
             run.stats.anchors += 1;
-            let exact = run.exact_coefficients(&node.c, node.j).to_bigints();
+            let exact = run.exact_coefficients(&node.c, node.j);
             blocks.truncate(base);
-            node.e = f64_coefficients(&exact, &mut blocks);
+            node.e = f64_coefficients_limbs(&exact, &mut blocks);
             m = max_abs(&blocks[base..]);
             assert!(
                 node.e <= m * FALLBACK_RATIO,
@@ -299,29 +299,41 @@ impl Run<'_> {
 /// Pushes `g_i = B_i 2^-k` for the exact coefficients `B_i` of a node (module documentation)
 /// onto `blocks` and returns their error bound `E_0`.
 fn f64_coefficients(b: &[BigInt], blocks: &mut Vec<f64>) -> f64 {
+    let bits = b.iter().map(|x| {
+        let shift = x.bits().saturating_sub(64);
+        let top = (x.magnitude() >> shift)
+            .to_u64()
+            .expect("at most 64 bits remain");
+        (x.is_negative(), top, shift)
+    });
+    f64_of_leading_bits(bits.collect::<Vec<_>>(), blocks)
+}
+
+/// [`f64_coefficients`] of exact coefficients on limbs.
+fn f64_coefficients_limbs(b: &Limbs, blocks: &mut Vec<f64>) -> f64 {
+    let mut bits = Vec::with_capacity(b.len());
+    b.leading_bits(|neg, top, shift| bits.push((neg, top, shift)));
+    f64_of_leading_bits(bits, blocks)
+}
+
+/// The conversion of [`f64_coefficients`] from each number's sign, 64 leading bits `t` and
+/// their position `s` (`|B| = t 2^s + r`, `0 <= r < 2^s`, `t >= 2^63` when `s > 0`).
+fn f64_of_leading_bits(bits: Vec<(bool, u64, u64)>, blocks: &mut Vec<f64>) -> f64 {
     let start = blocks.len();
-    let k = b.iter().map(BigInt::bits).max().unwrap_or(0);
+    // The bit length k of the largest number.
+    let k = bits
+        .iter()
+        .map(|&(_, top, shift)| shift + u64::from(64 - top.leading_zeros()))
+        .max()
+        .unwrap_or(0);
+    let k = i64::try_from(k).expect("a bit count");
     let top_scale = pow2f(-64);
-    for x in b {
-        let bits = x.bits();
-        let g = if bits == 0 {
-            0.0
-        } else {
-            let shift = bits.saturating_sub(64);
-            let top = (x.magnitude() >> shift)
-                .to_u64()
-                .expect("at most 64 bits remain") as f64;
-            // |x| 2^-k ~ top 2^(shift - k) = (top 2^-64) 2^(shift + 64 - k), the exponent at
-            // most 64 (when k < 64) and at least about -k.
-            let exp = i64::try_from(shift + 64).expect("a bit count") - k as i64;
-            let v = top * top_scale * pow2f(exp);
-            if x.is_negative() {
-                -v
-            } else {
-                v
-            }
-        };
-        blocks.push(g);
+    for (neg, top, shift) in bits {
+        // |B| 2^-k ~ (t 2^-64) 2^(s + 64 - k): t rounded once, the rest exact powers of two
+        // (the exponent at most 64, when k < 64).
+        let exp = i64::try_from(shift).expect("a bit count") + 64 - k;
+        let v = top as f64 * top_scale * pow2f(exp);
+        blocks.push(if neg { -v } else { v });
     }
     let m = max_abs(&blocks[start..]);
     f64::EPSILON * m * SAFETY
@@ -362,8 +374,9 @@ fn de_casteljau_half(work: &mut [f64], left: &mut [f64], right: &mut [f64]) {
     left[0] = work[0];
     right[n] = work[n];
     for k in 1..=n {
-        for i in 0..=n - k {
-            work[i] = 0.5 * (work[i] + work[i + 1]);
+        let row = &mut work[..=n - k + 1];
+        for i in 0..row.len() - 1 {
+            row[i] = 0.5 * (row[i] + row[i + 1]);
         }
         left[k] = work[0];
         right[n - k] = work[n - k];
@@ -391,6 +404,34 @@ fn renormalise(g: &mut [f64], e: f64) -> f64 {
 /// (`+`, `-`, `0`) of the entries `x` of `mid` with `|x| <= e`, the others having their own:
 /// one pass keeping, per last non-zero sign (none, `+`, `-`), the largest count reaching it.
 fn max_variations(lo: Sign, mid: &[f64], e: f64, hi: Sign) -> usize {
+    // Every sign certain (the common case): a plain count.
+    let code = |s: Sign| match s {
+        Sign::Negative => -1i8,
+        Sign::Zero => 0,
+        Sign::Positive => 1,
+    };
+    let (mut last, mut v) = (code(lo), 0usize);
+    let mut certain = true;
+    for &x in mid {
+        let s = if x > e {
+            1
+        } else if x < -e {
+            -1
+        } else {
+            certain = false;
+            break;
+        };
+        v += usize::from(last == -s);
+        last = s;
+    }
+    if certain {
+        return v + usize::from(last * code(hi) < 0);
+    }
+    max_variations_uncertain(lo, mid, e, hi)
+}
+
+/// [`max_variations`] when some entry is uncertain.
+fn max_variations_uncertain(lo: Sign, mid: &[f64], e: f64, hi: Sign) -> usize {
     /// Index 0: no non-zero sign yet, 1: last `+`, 2: last `-`; `None`: unreachable.
     type State = [Option<usize>; 3];
     fn feed(st: State, s: Sign) -> State {

@@ -316,6 +316,10 @@ fn root_conversion_is_within_its_bound() {
             .collect();
         let mut g = Vec::new();
         let e = f64_coefficients(&b, &mut g);
+        // The same numbers from limbs (their leading bits read off the two's complement).
+        let mut g2 = vec![7.0];
+        let e2 = f64_coefficients_limbs(&Limbs::from_bigints(&b), &mut g2);
+        assert_eq!((&g[..], e), (&g2[1..], e2), "{b:?}");
         let k = b.iter().map(BigInt::bits).max().unwrap_or(0);
         let m = max_abs(&g);
         if m == 0.0 {
