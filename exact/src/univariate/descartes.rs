@@ -381,11 +381,12 @@ fn unit_roots(p: &[BigInt], opts: Options) -> Vec<UnitRoot> {
     if p.len() < 2 {
         return Vec::new();
     }
+    if opts.filtered && p.len() - 1 <= filtered::MAX_FILTERED_DEGREE {
+        return filtered::unit_roots_filtered(p, opts.pairs).0;
+    }
     let b = to_bernstein_integer(p);
     let root = (BigInt::zero(), 0);
-    if opts.filtered && p.len() - 1 <= filtered::MAX_FILTERED_DEGREE {
-        filtered::unit_roots_filtered(&b, p, opts.pairs).0
-    } else if opts.limbs {
+    if opts.limbs {
         unit_roots_from(Limbs::from_bigints(&b), p, opts.pairs, root)
     } else {
         unit_roots_from(b, p, opts.pairs, root)

@@ -13,13 +13,23 @@
 //!   reported as exact.
 //!
 //! # Error analysis (`u = 2^-53`)
-//! * **Root node.** The integer Bernstein coefficients `B_i` (times `L`, module `descartes`),
-//!   `k` the largest bit length, are converted to `g_i = B_i 2^-k` (so `max |B_i 2^-k|` is in
-//!   `[1/2, 1)`): the top 64 bits of `|B_i|` (truncation, relative error below `2^-63`), rounded
-//!   to `f64` (relative `u`), times `2^-64` (exact) and an exact power of two (exact unless the
-//!   result is subnormal: absolute `2^-1075`, or below `2^-1074` when it underflows to zero).
-//!   With `M = max |g_i| >= 1/2 - 2^-53`, `|g_i - B_i 2^-k| <= (u + 2^-63)(1 + 2^-51) M + 2^-1074
-//!   <= 2^-52 M =: E_0`.
+//! * **Root node.** The Bernstein coefficients on `[0, 1]` are `b_i = c_(n-i) / C(n, i)`, `c`
+//!   the coefficients of `(1 + y)^n p(1 / (1 + y))` (module `descartes`), computed exactly (one
+//!   Taylor shift on [`Limbs`]) and divided in `f64`, without the big-integer multipliers of the
+//!   exact integer form: `c_k 2^-K` (`K` the largest bit length) from the top 64 bits of `|c_k|`
+//!   (truncation: relative error below `2^-63`), rounded to `f64` (relative `u`), times exact
+//!   powers of two (exact unless subnormal: absolute `2^-1074`); `C(n, i)` by the recurrence
+//!   `C(n, i+1) = C(n, i) (n - i) / (i + 1)` in `f64` (`2i` roundings: relative `2.01 n u` for
+//!   `n <= 1000`, and no overflow: `C(1000, 500) < 2^996`); the division one more rounding.
+//!   So each value has a relative error below `rho = (3n + 8) u` and an absolute one below
+//!   `2^-1073`. All are then multiplied by the power of two `2^t` (exact, `t >= 0`) that brings
+//!   the largest into `[1/2, 1)`, and with `M` the largest computed value (`|true| <= (1 + 2
+//!   rho) M`), `E_0 = rho (1 + 2 rho) M + 2^(t - 1072)`. The end signs are the exact signs of
+//!   `c_n` and `c_0`.
+//! * **Re-anchored node.** Exact integer coefficients `B_i` (times a positive constant) are
+//!   converted to `B_i 2^-k`, `k` the largest bit length, as the `c_k` above: relative error
+//!   below `u + 2^-63`, absolute `2^-1074`, so with `M >= 1/2 - 2^-53` the largest computed
+//!   value, `E_0 = 2^-52 M` bounds the error.
 //! * **Split at 1/2.** de Casteljau with the halvings, `w = fl(fl(x + y) / 2)`: the true
 //!   triangle is `T^(k)_i = (T^(k-1)_i + T^(k-1)_(i+1)) / 2`, the left child `T^(k)_0`, the right
 //!   one `T^(n-k)_k` (the Bernstein coefficients of `p` on the halves, no `2^n` factor in this
@@ -118,29 +128,19 @@ struct Node {
     hi: Sign,
 }
 
-/// The roots in `(0, 1)` of the square-free integer polynomial `p` (degree at most
-/// [`MAX_FILTERED_DEGREE`]), `b` its integer Bernstein coefficients ([`to_bernstein_integer`]):
-/// the same contract as [`unit_roots_from`] from the whole interval, and what was done.
-pub(super) fn unit_roots_filtered(
-    b: &[BigInt],
-    p: &[BigInt],
-    pairs: bool,
-) -> (Vec<UnitRoot>, FilterStats) {
-    subdivide(b, p, pairs, MAX_FILTERED_DEPTH)
+/// The roots in `(0, 1)` of the square-free integer polynomial `p` (degree from 1 to
+/// [`MAX_FILTERED_DEGREE`]): the same contract as [`unit_roots_from`] from the whole
+/// interval, and what was done.
+pub(super) fn unit_roots_filtered(p: &[BigInt], pairs: bool) -> (Vec<UnitRoot>, FilterStats) {
+    subdivide(p, pairs, MAX_FILTERED_DEPTH)
 }
 
 /// [`unit_roots_filtered`] with nodes deeper than `max_depth` handed to the exact subdivision.
-fn subdivide(
-    b: &[BigInt],
-    p: &[BigInt],
-    pairs: bool,
-    max_depth: u64,
-) -> (Vec<UnitRoot>, FilterStats) {
-    let n = b.len() - 1;
+fn subdivide(p: &[BigInt], pairs: bool, max_depth: u64) -> (Vec<UnitRoot>, FilterStats) {
+    let n = p.len() - 1;
     debug_assert!((1..=MAX_FILTERED_DEGREE).contains(&n));
     let mut run = Run {
         p,
-        b,
         pairs,
         out: Vec::new(),
         stats: FilterStats::default(),
@@ -149,14 +149,14 @@ fn subdivide(
     };
     let w = n + 1;
     let mut blocks: Vec<f64> = Vec::with_capacity(w * 32);
-    let e0 = f64_coefficients(b, &mut blocks);
+    let root = root_f64_coefficients(p, &mut blocks);
     let mut work = vec![0.0f64; w];
     let mut stack = vec![Node {
         c: BigInt::zero(),
         j: 0,
-        e: e0,
-        lo: sign_of(&b[0]),
-        hi: sign_of(&b[n]),
+        e: root.e,
+        lo: root.lo,
+        hi: root.hi,
     }];
     while let Some(mut node) = stack.pop() {
         let base = stack.len() * w;
@@ -243,7 +243,6 @@ fn subdivide(
 /// The state of one filtered subdivision beside its node stack.
 struct Run<'a> {
     p: &'a [BigInt],
-    b: &'a [BigInt],
     pairs: bool,
     out: Vec<UnitRoot>,
     stats: FilterStats,
@@ -262,11 +261,11 @@ impl Run<'_> {
             .rev()
             .find(|&d| d == 0 || self.exact_nodes.contains_key(&(d, c >> (j - d))))
             .expect("d = 0 is always found");
-        let b = self.b;
+        let p = self.p;
         let mut limbs = self
             .exact_nodes
             .entry((start, c >> (j - start)))
-            .or_insert_with(|| Limbs::from_bigints(b))
+            .or_insert_with(|| Limbs::from_bigints(&to_bernstein_integer(p)))
             .clone();
         for d in start + 1..=j {
             let (left, right) = limbs.split_half();
@@ -316,11 +315,72 @@ fn f64_coefficients_limbs(b: &Limbs, blocks: &mut Vec<f64>) -> f64 {
     f64_of_leading_bits(bits, blocks)
 }
 
-/// The conversion of [`f64_coefficients`] from each number's sign, 64 leading bits `t` and
-/// their position `s` (`|B| = t 2^s + r`, `0 <= r < 2^s`, `t >= 2^63` when `s > 0`).
-fn f64_of_leading_bits(bits: Vec<(bool, u64, u64)>, blocks: &mut Vec<f64>) -> f64 {
+/// The root node in `f64` ([`root_f64_coefficients`]).
+struct Root {
+    /// The error bound `E_0`.
+    e: f64,
+    /// The exact signs of `p(0)` and `p(1)`.
+    lo: Sign,
+    hi: Sign,
+    /// `g_i ~ 2^scale c_(n-i) / C(n, i)`.
+    scale: i64,
+}
+
+/// Pushes the root node's coefficients onto `blocks`: `g_i ~ 2^scale c_(n-i) / C(n, i)`, `c`
+/// the exact coefficients of `(1 + y)^n p(1 / (1 + y))` (module documentation of `descartes`,
+/// one Taylor shift on limbs) and the binomials in `f64`, with no big-integer multiplier (the
+/// exact integer form is computed only when a node needs its exact coefficients).
+fn root_f64_coefficients(p: &[BigInt], blocks: &mut Vec<f64>) -> Root {
+    let n = p.len() - 1;
     let start = blocks.len();
-    // The bit length k of the largest number.
+    let rev: Vec<BigInt> = p.iter().rev().cloned().collect();
+    let mut shifted = Limbs::from_bigints_with_room(&rev, n + 1);
+    shifted.taylor_shift_1();
+    let mut bits = Vec::with_capacity(n + 1);
+    shifted.leading_bits(|neg, top, shift| bits.push((neg, top, shift)));
+    let sign = |(neg, top, _): (bool, u64, u64)| match (top, neg) {
+        (0, _) => Sign::Zero,
+        (_, true) => Sign::Negative,
+        (_, false) => Sign::Positive,
+    };
+    let (lo, hi) = (sign(bits[n]), sign(bits[0]));
+    bits.reverse();
+    // c_(n-i) 2^-k, k the largest bit length, divided by C(n, i) (recurrence in f64).
+    let k = push_scaled(bits, blocks);
+    let mut binom = 1.0f64;
+    for (i, g) in blocks[start..].iter_mut().enumerate() {
+        *g /= binom;
+        binom = binom * (n - i) as f64 / (i + 1) as f64;
+    }
+    // Into [1/2, 1): the largest value is at least 2^-1 / C(n, i) > 2^-1002.
+    let m = max_abs(&blocks[start..]);
+    assert!(m > 0.0, "a non-zero polynomial has a non-zero coefficient");
+    assert!(
+        m >= f64::MIN_POSITIVE,
+        "the largest value is above 2^-1002 (degree at most 1000)"
+    );
+    let biased = ((m.to_bits() >> 52) & 0x7ff) as i64;
+    let t = (1022 - biased).max(0);
+    let f = pow2f(t);
+    for g in blocks[start..].iter_mut() {
+        *g *= f;
+    }
+    let m = max_abs(&blocks[start..]);
+    let rho = (3 * n + 8) as f64 * (f64::EPSILON / 2.0);
+    let e = (rho * (1.0 + 2.0 * rho) * m + pow2f(t - 1072)) * SAFETY;
+    Root {
+        e,
+        lo,
+        hi,
+        scale: t - k,
+    }
+}
+
+/// Pushes `B 2^-k` for numbers `B` given by their sign, 64 leading bits `t` and their position
+/// `s` (`|B| = t 2^s + r`, `0 <= r < 2^s`, `t >= 2^63` when `s > 0`), `k` the largest bit
+/// length, and returns `k`. Each value has a relative error below `2^-53 + 2^-63` (the
+/// truncation and one rounding of `t`) and an absolute one below `2^-1074` (underflow).
+fn push_scaled(bits: Vec<(bool, u64, u64)>, blocks: &mut Vec<f64>) -> i64 {
     let k = bits
         .iter()
         .map(|&(_, top, shift)| shift + u64::from(64 - top.leading_zeros()))
@@ -335,6 +395,14 @@ fn f64_of_leading_bits(bits: Vec<(bool, u64, u64)>, blocks: &mut Vec<f64>) -> f6
         let v = top as f64 * top_scale * pow2f(exp);
         blocks.push(if neg { -v } else { v });
     }
+    k
+}
+
+/// The conversion of [`f64_coefficients`] from each number's sign, 64 leading bits `t` and
+/// their position `s` (`|B| = t 2^s + r`, `0 <= r < 2^s`, `t >= 2^63` when `s > 0`).
+fn f64_of_leading_bits(bits: Vec<(bool, u64, u64)>, blocks: &mut Vec<f64>) -> f64 {
+    let start = blocks.len();
+    push_scaled(bits, blocks);
     let m = max_abs(&blocks[start..]);
     f64::EPSILON * m * SAFETY
 }

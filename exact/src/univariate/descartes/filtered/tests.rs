@@ -106,7 +106,7 @@ fn exact_unit_roots(p: &[BigInt], pairs: bool) -> Vec<UnitRoot> {
 }
 
 fn filtered_unit_roots(p: &[BigInt], pairs: bool) -> (Vec<UnitRoot>, FilterStats) {
-    unit_roots_filtered(&to_bernstein_integer(p), p, pairs)
+    unit_roots_filtered(p, pairs)
 }
 
 /// Runs the filtered and the exact subdivision on every unit problem of `c` (with and without
@@ -252,8 +252,7 @@ fn the_exact_fallback_is_taken_below_the_depth_cap_and_is_correct() {
     let den = BigInt::one() << 200u32;
     let c = product(&[(a, den.clone()), (b, den)], &[1, 0, 1]);
     let p = &unit_problems(&c)[0];
-    let b = to_bernstein_integer(p);
-    let (found, stats) = subdivide(&b, p, false, 20);
+    let (found, stats) = subdivide(p, false, 20);
     assert!(stats.fallbacks > 0, "{stats:?}");
     check_unit(p, &found, 2);
     // The default cap: f64 (re-anchored) separates the pair.
@@ -263,8 +262,7 @@ fn the_exact_fallback_is_taken_below_the_depth_cap_and_is_correct() {
     // Mignotte 40 (pair 1.4e-21 apart) without pairs: the same, both caps.
     let p = &unit_problems(&w4::mignotte(40))[0];
     let count = exact_unit_roots(p, false).len();
-    let b = to_bernstein_integer(p);
-    let (found, stats) = subdivide(&b, p, false, 20);
+    let (found, stats) = subdivide(p, false, 20);
     assert!(stats.fallbacks > 0, "{stats:?}");
     check_unit(p, &found, count);
     let (found, _) = filtered_unit_roots(p, false);
@@ -332,6 +330,60 @@ fn root_conversion_is_within_its_bound() {
             let err = (rational_of_f64(*gi).expect("finite") - exact).abs();
             assert!(err <= e, "{x} -> {gi}");
         }
+    }
+}
+
+#[test]
+fn root_node_is_within_its_bound() {
+    let mut rng = Rng::new(53);
+    let mut cases: Vec<Vec<BigInt>> = vec![
+        w4::wilkinson(40),
+        w4::mignotte(60),
+        w4::random(120),
+        product(&small(&[(1, 3), (2, 3)]), &[1]),
+    ];
+    for n in [1usize, 2, 5, 13, 40] {
+        for bits in [3u32, 64, 300, 1200] {
+            cases.push(
+                (0..=n)
+                    .map(|_| {
+                        let mut x = BigInt::from(rng.below(3) as i64 - 1);
+                        for _ in 0..bits.div_ceil(16) {
+                            x = (x << 16u32) + BigInt::from(rng.below(1 << 16));
+                        }
+                        x
+                    })
+                    .collect(),
+            );
+        }
+    }
+    for p in cases {
+        if p.iter().skip(1).all(Zero::is_zero) {
+            continue;
+        }
+        let n = p.len() - 1;
+        let mut g = Vec::new();
+        let root = root_f64_coefficients(&p, &mut g);
+        // The exact values 2^scale c_(n-i) / C(n, i), c by the BigInt Taylor shift.
+        let mut c: Vec<BigInt> = p.iter().rev().cloned().collect();
+        taylor_shift_1(&mut c);
+        let e = rational_of_f64(root.e).expect("finite");
+        let two_scale = if root.scale >= 0 {
+            pow2(root.scale as u64)
+        } else {
+            Rational::ONE / pow2((-root.scale) as u64)
+        };
+        let mut binom = BigInt::one();
+        for i in 0..=n {
+            let exact = Rational::from(c[n - i].clone()) * two_scale.clone()
+                / Rational::from(binom.clone());
+            let err = (rational_of_f64(g[i]).expect("finite") - exact).abs();
+            assert!(err <= e, "coefficient {i} of {p:?}");
+            binom = binom * BigInt::from(n - i) / BigInt::from(i + 1);
+        }
+        assert!((0.5..1.0 + 1e-12).contains(&max_abs(&g)));
+        assert_eq!(root.lo, sign_of(&c[n]));
+        assert_eq!(root.hi, sign_of(&c[0]));
     }
 }
 
