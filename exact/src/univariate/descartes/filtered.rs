@@ -68,7 +68,8 @@
 //! Bernstein coefficients of a polynomial can be many orders of magnitude above its values on a
 //! subinterval (Wilkinson's product of degree 40: `2^50` and more between the ends and the
 //! middle of `[0, 1]`), so after a few renormalised levels `E` may approach `M`. When `E > M /
-//! 256` (also when `M` is zero or a value is not finite) the node is **re-anchored**: its exact
+//! 256` (also when `M` is zero or a value is not finite) and the node is neither empty nor a
+//! leaf by the rule above (those decisions hold at any precision), it is **re-anchored**: its exact
 //! integer Bernstein coefficients are computed (on [`Limbs`], one exact split per level from
 //! its deepest ancestor whose exact coefficients are known, keeping the half on the path along
 //! the bits of `c`; both halves of every exact split are kept, so no exact split is done twice)
@@ -167,10 +168,17 @@ fn subdivide(p: &[BigInt], pairs: bool, max_depth: u64) -> (Vec<UnitRoot>, Filte
             continue;
         }
         let mut m = max_abs(&blocks[base..]);
-        // `!(a <= b)` also catches a NaN.
-        if !(node.e <= m * FALLBACK_RATIO) {
+        let ends = node.lo != Sign::Zero && node.hi != Sign::Zero;
+        let v_max = loop {
+            let g = &blocks[base..];
+            let v_max = max_variations(node.lo, &g[1..n], node.e, node.hi);
+            // A decision without a split stands whatever the precision; `!(a <= b)` also
+            // catches a NaN.
+            if v_max == 0 || (v_max == 1 && ends) || node.e <= m * FALLBACK_RATIO {
+                break v_max;
+            }
             // Out of precision: restart from the node's exact coefficients, whose fresh error
-            // bound `2^-52 M` passes this test.
+            // bound `2^-52 M` passes the test.
             run.stats.anchors += 1;
             let exact = run.exact_coefficients(&node.c, node.j);
             blocks.truncate(base);
@@ -180,10 +188,8 @@ fn subdivide(p: &[BigInt], pairs: bool, max_depth: u64) -> (Vec<UnitRoot>, Filte
                 node.e <= m * FALLBACK_RATIO,
                 "exact coefficients of a non-zero polynomial are not all zero"
             );
-        }
+        };
         let g = &blocks[base..];
-        let v_max = max_variations(node.lo, &g[1..n], node.e, node.hi);
-        let ends = node.lo != Sign::Zero && node.hi != Sign::Zero;
         if v_max == 0 {
             blocks.truncate(base);
             continue;
