@@ -58,6 +58,15 @@
 //!    separate in a few levels). Mignotte's `x^40 - 2 (10 x - 1)^2`, whose pair at `1/10` is
 //!    `1.4e-21` apart, is separated at depth 2 instead of about 70 levels. The same estimate
 //!    `c -/+ delta` starts the refinement of the two halves.
+//! 7. **Filtered subdivision.** Up to degree 1000 the subdivision runs on `f64` Bernstein
+//!    coefficients with one rigorous error bound per node (module `filtered`): Descartes' rule is
+//!    decided in `f64` when every sign it needs is certain (`|g_i| > E`, the largest variation
+//!    count over the uncertain signs deciding), an uncertain split point by an exact dyadic
+//!    evaluation, and a node that runs out of precision gets its exact integer coefficients back
+//!    (exact splits on limbs, cached) and continues from them; beyond a depth cap the exact
+//!    subdivision above takes over. A split costs `n(n+1)/2` `f64` additions instead of as many
+//!    carry chains on growing limbs; the results are the same kind of intervals (not
+//!    necessarily the same ones) and the tests compare both with Sturm counts.
 //!
 //! # Rational roots
 //! A rational root `u / v` (lowest terms) of the primitive `q` has `v | lc(q)` and `u | a_k`,
@@ -394,7 +403,7 @@ fn unit_roots(p: &[BigInt], opts: Options) -> Vec<UnitRoot> {
 }
 
 /// The integer Bernstein coefficients of a subdivision node: `BigInt`s (the reference) or
-/// fixed-width limbs ([`Limbs`]).
+/// fixed-width limbs ([`Limbs`]); the filtered subdivision keeps `f64` ones ([`filtered`]).
 trait NodeCoeffs: Sized {
     fn degree(&self) -> usize;
     fn sign_at(&self, i: usize) -> Sign;

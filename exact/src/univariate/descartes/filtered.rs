@@ -150,7 +150,7 @@ fn subdivide(p: &[BigInt], pairs: bool, max_depth: u64) -> (Vec<UnitRoot>, Filte
     };
     let w = n + 1;
     let mut blocks: Vec<f64> = Vec::with_capacity(w * 32);
-    let root = root_f64_coefficients(p, &mut blocks);
+    let (root, _) = root_f64_coefficients(p, &mut blocks);
     let mut work = vec![0.0f64; w];
     let mut stack = vec![Node {
         c: BigInt::zero(),
@@ -301,20 +301,8 @@ impl Run<'_> {
     }
 }
 
-/// Pushes `g_i = B_i 2^-k` for the exact coefficients `B_i` of a node (module documentation)
-/// onto `blocks` and returns their error bound `E_0`.
-fn f64_coefficients(b: &[BigInt], blocks: &mut Vec<f64>) -> f64 {
-    let bits = b.iter().map(|x| {
-        let shift = x.bits().saturating_sub(64);
-        let top = (x.magnitude() >> shift)
-            .to_u64()
-            .expect("at most 64 bits remain");
-        (x.is_negative(), top, shift)
-    });
-    f64_of_leading_bits(bits.collect::<Vec<_>>(), blocks)
-}
-
-/// [`f64_coefficients`] of exact coefficients on limbs.
+/// Pushes `g_i = B_i 2^-k` for the exact coefficients `B_i` of a node (module documentation,
+/// "Re-anchored node") onto `blocks` and returns their error bound `E_0`.
 fn f64_coefficients_limbs(b: &Limbs, blocks: &mut Vec<f64>) -> f64 {
     let mut bits = Vec::with_capacity(b.len());
     b.leading_bits(|neg, top, shift| bits.push((neg, top, shift)));
@@ -328,15 +316,13 @@ struct Root {
     /// The exact signs of `p(0)` and `p(1)`.
     lo: Sign,
     hi: Sign,
-    /// `g_i ~ 2^scale c_(n-i) / C(n, i)`.
-    scale: i64,
 }
 
 /// Pushes the root node's coefficients onto `blocks`: `g_i ~ 2^scale c_(n-i) / C(n, i)`, `c`
 /// the exact coefficients of `(1 + y)^n p(1 / (1 + y))` (module documentation of `descartes`,
 /// one Taylor shift on limbs) and the binomials in `f64`, with no big-integer multiplier (the
-/// exact integer form is computed only when a node needs its exact coefficients).
-fn root_f64_coefficients(p: &[BigInt], blocks: &mut Vec<f64>) -> Root {
+/// exact integer form is computed only when a node needs its exact coefficients); also `scale`.
+fn root_f64_coefficients(p: &[BigInt], blocks: &mut Vec<f64>) -> (Root, i64) {
     let n = p.len() - 1;
     let start = blocks.len();
     let rev: Vec<BigInt> = p.iter().rev().cloned().collect();
@@ -374,12 +360,7 @@ fn root_f64_coefficients(p: &[BigInt], blocks: &mut Vec<f64>) -> Root {
     let m = max_abs(&blocks[start..]);
     let rho = (3 * n + 8) as f64 * (f64::EPSILON / 2.0);
     let e = (rho * (1.0 + 2.0 * rho) * m + pow2f(t - 1072)) * SAFETY;
-    Root {
-        e,
-        lo,
-        hi,
-        scale: t - k,
-    }
+    (Root { e, lo, hi }, t - k)
 }
 
 /// Pushes `B 2^-k` for numbers `B` given by their sign, 64 leading bits `t` and their position
@@ -404,7 +385,7 @@ fn push_scaled(bits: Vec<(bool, u64, u64)>, blocks: &mut Vec<f64>) -> i64 {
     k
 }
 
-/// The conversion of [`f64_coefficients`] from each number's sign, 64 leading bits `t` and
+/// The conversion of [`f64_coefficients_limbs`] from each number's sign, 64 leading bits `t` and
 /// their position `s` (`|B| = t 2^s + r`, `0 <= r < 2^s`, `t >= 2^63` when `s > 0`).
 fn f64_of_leading_bits(bits: Vec<(bool, u64, u64)>, blocks: &mut Vec<f64>) -> f64 {
     let start = blocks.len();
