@@ -58,6 +58,15 @@
 //!    separate in a few levels). Mignotte's `x^40 - 2 (10 x - 1)^2`, whose pair at `1/10` is
 //!    `1.4e-21` apart, is separated at depth 2 instead of about 70 levels. The same estimate
 //!    `c -/+ delta` starts the refinement of the two halves.
+//! 7. **Filtered subdivision.** Up to degree 1000 the subdivision runs on `f64` Bernstein
+//!    coefficients with one rigorous error bound per node (module `filtered`): Descartes' rule is
+//!    decided in `f64` when every sign it needs is certain (`|g_i| > E`, the largest variation
+//!    count over the uncertain signs deciding), an uncertain split point by an exact dyadic
+//!    evaluation, and a node that runs out of precision gets its exact integer coefficients back
+//!    (exact splits on limbs, cached) and continues from them; beyond a depth cap the exact
+//!    subdivision above takes over. A split costs `n(n+1)/2` `f64` additions instead of as many
+//!    carry chains on growing limbs; the results are the same kind of intervals (not
+//!    necessarily the same ones) and the tests compare both with Sturm counts.
 //!
 //! # Rational roots
 //! A rational root `u / v` (lowest terms) of the primitive `q` has `v | lc(q)` and `u | a_k`,
@@ -119,6 +128,8 @@
 //! Hand-written because the workspace has no arbitrary-precision interval arithmetic or
 //! polynomial library beyond num-bigint; the kernels (Taylor shift, de Casteljau, Horner) are a
 //! few lines each.
+
+mod filtered;
 
 use super::limbs::Limbs;
 use super::*;
@@ -380,16 +391,20 @@ fn unit_roots(p: &[BigInt], opts: Options) -> Vec<UnitRoot> {
     if p.len() < 2 {
         return Vec::new();
     }
+    if opts.filtered && p.len() - 1 <= filtered::MAX_FILTERED_DEGREE {
+        return filtered::unit_roots_filtered(p, opts.pairs).0;
+    }
     let b = to_bernstein_integer(p);
+    let root = (BigInt::zero(), 0);
     if opts.limbs {
-        unit_roots_from(Limbs::from_bigints(&b), p, opts.pairs)
+        unit_roots_from(Limbs::from_bigints(&b), p, opts.pairs, root)
     } else {
-        unit_roots_from(b, p, opts.pairs)
+        unit_roots_from(b, p, opts.pairs, root)
     }
 }
 
 /// The integer Bernstein coefficients of a subdivision node: `BigInt`s (the reference) or
-/// fixed-width limbs ([`Limbs`]).
+/// fixed-width limbs ([`Limbs`]); the filtered subdivision keeps `f64` ones ([`filtered`]).
 trait NodeCoeffs: Sized {
     fn degree(&self) -> usize;
     fn sign_at(&self, i: usize) -> Sign;
@@ -439,11 +454,18 @@ impl NodeCoeffs for Limbs {
     }
 }
 
-/// The subdivision of [`unit_roots`] from the root node's coefficients `b`.
-fn unit_roots_from<C: NodeCoeffs>(b: C, p: &[BigInt], pairs: bool) -> Vec<UnitRoot> {
+/// The subdivision of [`unit_roots`] below the node `start = (c, j)`, the interval
+/// `(c / 2^j, (c + 1) / 2^j)`, from that node's coefficients `b` (the whole unit interval is
+/// `(0, 0)`; the filtered subdivision hands nodes over with their own `(c, j)`).
+fn unit_roots_from<C: NodeCoeffs>(
+    b: C,
+    p: &[BigInt],
+    pairs: bool,
+    start: (BigInt, u64),
+) -> Vec<UnitRoot> {
     let mut out = Vec::new();
     let mut pair_splitter: Option<PairSplitter> = None;
-    let mut stack = vec![(b, BigInt::zero(), 0u64)];
+    let mut stack = vec![(b, start.0, start.1)];
     while let Some((b, c, j)) = stack.pop() {
         let v = b.variations();
         if v == 0 {
@@ -452,31 +474,13 @@ fn unit_roots_from<C: NodeCoeffs>(b: C, p: &[BigInt], pairs: bool) -> Vec<UnitRo
         let n = b.degree();
         let (s0, sn) = (b.sign_at(0), b.sign_at(n));
         if v == 1 && s0 != Sign::Zero && sn != Sign::Zero {
-            let estimate = bernstein_root_estimate(b.scaled_f64s())
-                .and_then(rational_of_f64)
-                .map(|t| (Rational::from(c.clone()) + t) / pow2(j));
-            out.push(UnitRoot::Open {
-                a: dyadic(&c, j),
-                b: dyadic(&(&c + 1), j),
-                estimate,
-            });
+            out.push(leaf_root(&c, j, b.scaled_f64s()));
             continue;
         }
         if pairs && v == 2 && j >= 2 && s0 != Sign::Zero && s0 == sn {
             let splitter = pair_splitter.get_or_insert_with(|| PairSplitter::new(p));
-            if let Some((x, delta)) = splitter.split(&c, j, s0) {
-                let (a, m, e) = (dyadic(&c, j), x.to_rational(), dyadic(&(&c + 1), j));
-                let d = delta.and_then(rational_of_f64);
-                out.push(UnitRoot::Open {
-                    a,
-                    b: m.clone(),
-                    estimate: d.as_ref().map(|d| m.sub_ref(d)),
-                });
-                out.push(UnitRoot::Open {
-                    estimate: d.as_ref().map(|d| m.add_ref(d)),
-                    a: m,
-                    b: e,
-                });
+            if let Some(split) = splitter.split(&c, j, s0) {
+                out.extend(pair_roots(&c, j, split));
                 continue;
             }
         }
@@ -489,6 +493,38 @@ fn unit_roots_from<C: NodeCoeffs>(b: C, p: &[BigInt], pairs: bool) -> Vec<UnitRo
         stack.push((left, c2, j + 1));
     }
     out
+}
+
+/// The isolating leaf `(c / 2^j, (c + 1) / 2^j)` with the estimate of its root from the node's
+/// Bernstein coefficients `g` in `f64` (any common positive scale).
+fn leaf_root(c: &BigInt, j: u64, g: Vec<f64>) -> UnitRoot {
+    let estimate = bernstein_root_estimate(g)
+        .and_then(rational_of_f64)
+        .map(|t| (Rational::from(c.clone()) + t) / pow2(j));
+    UnitRoot::Open {
+        a: dyadic(c, j),
+        b: dyadic(&(c + 1), j),
+        estimate,
+    }
+}
+
+/// The two isolating halves of the node `(c, j)` split at the point `x` of a close pair, with
+/// the estimates `x -/+ delta` ([`PairSplitter::split`]).
+fn pair_roots(c: &BigInt, j: u64, (x, delta): (Dyadic, Option<f64>)) -> [UnitRoot; 2] {
+    let (a, m, e) = (dyadic(c, j), x.to_rational(), dyadic(&(c + 1), j));
+    let d = delta.and_then(rational_of_f64);
+    [
+        UnitRoot::Open {
+            a,
+            b: m.clone(),
+            estimate: d.as_ref().map(|d| m.sub_ref(d)),
+        },
+        UnitRoot::Open {
+            estimate: d.as_ref().map(|d| m.add_ref(d)),
+            a: m,
+            b: e,
+        },
+    ]
 }
 
 /// The finite `f64` `x` as an exact rational.
@@ -1398,6 +1434,9 @@ struct Options {
     windows: bool,
     /// The subdivision on fixed-width limbs ([`Limbs`]) instead of `BigInt`s.
     limbs: bool,
+    /// The subdivision on `f64` with a rigorous error bound, exact where that cannot decide
+    /// ([`filtered`]; degrees up to [`filtered::MAX_FILTERED_DEGREE`]).
+    filtered: bool,
 }
 
 impl Options {
@@ -1406,6 +1445,7 @@ impl Options {
         rationals: true,
         windows: true,
         limbs: true,
+        filtered: true,
     };
     #[cfg(test)]
     const REFERENCE: Options = Options {
@@ -1413,6 +1453,7 @@ impl Options {
         rationals: false,
         windows: false,
         limbs: false,
+        filtered: false,
     };
 }
 

@@ -235,6 +235,42 @@ impl Limbs {
 }
 
 impl Limbs {
+    /// For every number `x` (in order): its sign (`true` when negative), the 64 leading bits
+    /// `t` of `|x|` and their position `s`, so that `|x| = t 2^s + r` with `0 <= r < 2^s`, and
+    /// `t >= 2^63` whenever `s > 0` (`t = |x|`, `s = 0` when `|x| < 2^64`). The exact input of a
+    /// correctly bounded conversion to `f64` (`descartes::filtered`).
+    pub(super) fn leading_bits(&self, mut f: impl FnMut(bool, u64, u64)) {
+        let w = self.w;
+        let mut scratch = vec![0u64; w];
+        for x in self.d.chunks(w) {
+            let neg = (x[w - 1] as i64) < 0;
+            let m: &[u64] = if neg {
+                let mut carry = true;
+                for (d, &l) in scratch.iter_mut().zip(x) {
+                    let (v, c) = (!l).overflowing_add(carry as u64);
+                    *d = v;
+                    carry = c;
+                }
+                &scratch
+            } else {
+                x
+            };
+            match m.iter().rposition(|&l| l != 0) {
+                None => f(false, 0, 0),
+                Some(0) => f(neg, m[0], 0),
+                Some(t) => {
+                    let z = m[t].leading_zeros();
+                    let top = if z == 0 {
+                        m[t]
+                    } else {
+                        (m[t] << z) | (m[t - 1] >> (64 - z))
+                    };
+                    f(neg, top, 64 * t as u64 - u64::from(z))
+                }
+            }
+        }
+    }
+
     /// The numbers times `2^-s` in `f64`, `s` common (the largest lands near `2^64`), from the
     /// two leading limbs of each magnitude: a relative error below `2^-52` each; for estimates
     /// only (nothing is decided on them).

@@ -1,0 +1,538 @@
+//! The Descartes subdivision of a unit problem on `f64` Bernstein coefficients with one rigorous
+//! error bound per node, exact where `f64` cannot decide (floating-point filtering in the sense
+//! of exact geometric computation: nothing is decided on an unverified float).
+//!
+//! # Nodes
+//! A node `(c, j)` is the interval `(c / 2^j, (c + 1) / 2^j)` of the unit problem `p`. It
+//! carries
+//! * `g_0, ..., g_n` in `f64`: approximations of `2^s` times the Bernstein coefficients `b_i` of
+//!   `p` on the node, `2^s > 0` a scale of the node's own (so the signs are the `b_i`'s);
+//! * one bound `E` with `|g_i - 2^s b_i| <= E` for every `i`;
+//! * the **exact** signs `s_lo`, `s_hi` of `p` at the two ends (the end coefficients are the
+//!   end values, `b_0 = p(c / 2^j)`, `b_n = p((c + 1) / 2^j)`); `Zero` is a root already
+//!   reported as exact.
+//!
+//! # Error analysis (`u = 2^-53`)
+//! * **Root node.** The Bernstein coefficients on `[0, 1]` are `b_i = c_(n-i) / C(n, i)`, `c`
+//!   the coefficients of `(1 + y)^n p(1 / (1 + y))` (module `descartes`), computed exactly (one
+//!   Taylor shift on [`Limbs`]) and divided in `f64`, without the big-integer multipliers of the
+//!   exact integer form: `c_k 2^-K` (`K` the largest bit length) from the top 64 bits of `|c_k|`
+//!   (truncation: relative error below `2^-63`), rounded to `f64` (relative `u`), times exact
+//!   powers of two (exact unless subnormal: absolute `2^-1074`); `C(n, i)` by the recurrence
+//!   `C(n, i+1) = C(n, i) (n - i) / (i + 1)` in `f64` (`2i` roundings: relative `2.01 n u` for
+//!   `n <= 1000`, and no overflow: `C(1000, 500) < 2^996`); the division one more rounding.
+//!   So each value has a relative error below `rho = (3n + 8) u` and an absolute one below
+//!   `2^-1073`. All are then multiplied by the power of two `2^t` (exact, `t >= 0`) that brings
+//!   the largest into `[1/2, 1)`, and with `M` the largest computed value (`|true| <= (1 + 2
+//!   rho) M`), `E_0 = rho (1 + 2 rho) M + 2^(t - 1072)`. The end signs are the exact signs of
+//!   `c_n` and `c_0`.
+//! * **Re-anchored node.** Exact integer coefficients `B_i` (times a positive constant) are
+//!   converted to `B_i 2^-k`, `k` the largest bit length, as the `c_k` above: relative error
+//!   below `u + 2^-63`, absolute `2^-1074`, so with `M >= 1/2 - 2^-53` the largest computed
+//!   value, `E_0 = 2^-52 M` bounds the error.
+//! * **Split at 1/2.** de Casteljau with the halvings, `w = fl(fl(x + y) / 2)`: the true
+//!   triangle is `T^(k)_i = (T^(k-1)_i + T^(k-1)_(i+1)) / 2`, the left child `T^(k)_0`, the right
+//!   one `T^(n-k)_k` (the Bernstein coefficients of `p` on the halves, no `2^n` factor in this
+//!   form). With `A_k` the largest computed value of level `k` (`A_0 = M`, the parent's largest
+//!   `|g_i|`) the sum rounds by at most `u |x + y| <= 2 u A_(k-1)` and the halving is exact
+//!   barring underflow (`2^-1075`), so the error grows per level by at most
+//!   `u A_(k-1) + 2^-1075`, and `A_k <= (1 + u) A_(k-1) + 2^-1075`. Over `n` levels, with
+//!   `(1 + u)^n <= 2` (`n <= ` [`MAX_FILTERED_DEGREE`]):
+//!   `E_child <= E + 2 n u M + n 2^-1074 <= E + (n + 1) 2^-52 M + (n + 1) 2^-1074`. The bound is
+//!   evaluated in `f64` in at most four roundings to nearest of non-negative terms (each at
+//!   worst a factor `1 - u`) and multiplied by `1 + 2^-40`, which more than makes up for them:
+//!   the computed `E_child` is not below the true bound.
+//! * **Renormalisation.** A child whose largest `|g_i|` is below `1/2` is multiplied, `E` with
+//!   it, by the power of two `2^t` that brings it into `[1/2, 1)` (exact: `t >= 0` and no value
+//!   reaches 1), so the values never drift into the subnormal range on the way down.
+//!
+//! # Decisions
+//! A coefficient's sign is **certain** when `|g_i| > E` (then `2^s b_i` lies on the same side of
+//! zero). Descartes' bound `V` (sign changes of `s_lo, b_1, ..., b_(n-1), s_hi`, zeros skipped)
+//! is at most `V_max`, the largest number of changes over every choice `+`, `-`, `0` for the
+//! uncertain coefficients (one pass over the sequence keeping the largest count per last
+//! non-zero sign). With non-zero ends every choice, the true one included, has the parity of
+//! `s_lo != s_hi`, so:
+//! * `V_max = 0`: no root in the node;
+//! * `V_max = 1`, non-zero ends: `V = 1`, an isolating leaf (its root estimate from the node's
+//!   `g` directly, [`bernstein_root_estimate`]);
+//! * `V_max = 2`, equal non-zero ends, depth at least 2: the close-pair attempt (exact,
+//!   [`PairSplitter`]; it needs only `V <= 2`);
+//! * otherwise a split. The split's middle value `g` (the children's shared end) is its exact
+//!   sign when `|g| > E_child`; otherwise `p` is evaluated exactly at the dyadic midpoint
+//!   `m / 2^(j+1)`, `m = 2c + 1` (the sign of `sum a_i m^i 2^((j+1)(n-i))`), and a zero is an
+//!   exact root, reported as the exact subdivision reports it.
+//!
+//! # Re-anchoring and fallback
+//! The root conversion's error is relative to the largest coefficient on `[0, 1]`, and the
+//! Bernstein coefficients of a polynomial can be many orders of magnitude above its values on a
+//! subinterval (Wilkinson's product of degree 40: `2^50` and more between the ends and the
+//! middle of `[0, 1]`), so after a few renormalised levels `E` may approach `M`. When `E > M /
+//! 256` (also when `M` is zero or a value is not finite) and the node is neither empty nor a
+//! leaf by the rule above (those decisions hold at any precision), it is **re-anchored**: its exact
+//! integer Bernstein coefficients are computed (on [`Limbs`], one exact split per level from
+//! its deepest ancestor whose exact coefficients are known, keeping the half on the path along
+//! the bits of `c`; both halves of every exact split are kept, so no exact split is done twice)
+//! and converted afresh, `E = 2^-52 M` again, which passes the test: every node makes progress.
+//! A node deeper than [`MAX_FILTERED_DEPTH`] is handed, with its exact coefficients, to the
+//! exact subdivision (`unit_roots_from`) in its own coordinates `(c, j)`. Splitting is always
+//! correct, so the float path only decides earlier where it can prove the exact decision;
+//! termination comes from the depth cap and the exact subdivision (square-free input, module
+//! `descartes`). Degrees above [`MAX_FILTERED_DEGREE`] run the exact subdivision alone.
+//!
+//! A split costs `n(n+1)/2` `f64` additions and no allocation (the nodes' coefficients live in
+//! one flat stack of blocks of `n + 1`, the triangle in one scratch row), against `n(n+1)/2`
+//! carry chains over limbs growing by `n` bits per level on the exact path.
+//!
+//! Hand-written because the workspace has no interval or filtered arithmetic; the kernels are
+//! the few lines of de Casteljau and a sign count.
+
+use super::*;
+use std::collections::HashMap;
+
+/// The largest degree of the filtered subdivision (the leaf estimate's limit; it also keeps
+/// `(1 + u)^n <= 2` in the error bound).
+pub(super) const MAX_FILTERED_DEGREE: usize = 1000;
+
+/// Nodes deeper than this are handed to the exact subdivision (a bound on the float tree; the
+/// exact subdivision separates a close pair without it by [`PairSplitter`] or by depth).
+const MAX_FILTERED_DEPTH: u64 = 200;
+
+/// A node with `E > M * FALLBACK_RATIO` is handed to the exact subdivision.
+const FALLBACK_RATIO: f64 = 1.0 / 256.0;
+
+/// `2^-1074`, the least positive subnormal (`2^-1022 * 2^-52`, exact).
+const TINY: f64 = f64::MIN_POSITIVE * f64::EPSILON;
+
+/// `1 + 2^-40`, the safety factor on the evaluated error bounds.
+const SAFETY: f64 = 1.0 + 1.0 / (1u64 << 40) as f64;
+
+/// What the filtered subdivision did (CGAL's filter-failure counters): for the tests.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub(super) struct FilterStats {
+    /// `f64` splits.
+    pub(super) splits: usize,
+    /// Split midpoints whose sign was decided by an exact evaluation.
+    pub(super) exact_midpoints: usize,
+    /// Nodes whose `f64` coefficients were recomputed from their exact ones.
+    pub(super) anchors: usize,
+    /// Nodes handed to the exact subdivision.
+    pub(super) fallbacks: usize,
+}
+
+/// A node waiting on the stack; its coefficients are the block of the same index.
+struct Node {
+    c: BigInt,
+    j: u64,
+    e: f64,
+    lo: Sign,
+    hi: Sign,
+}
+
+/// The roots in `(0, 1)` of the square-free integer polynomial `p` (degree from 1 to
+/// [`MAX_FILTERED_DEGREE`]): the same contract as [`unit_roots_from`] from the whole
+/// interval, and what was done.
+pub(super) fn unit_roots_filtered(p: &[BigInt], pairs: bool) -> (Vec<UnitRoot>, FilterStats) {
+    subdivide(p, pairs, MAX_FILTERED_DEPTH)
+}
+
+/// [`unit_roots_filtered`] with nodes deeper than `max_depth` handed to the exact subdivision.
+fn subdivide(p: &[BigInt], pairs: bool, max_depth: u64) -> (Vec<UnitRoot>, FilterStats) {
+    let n = p.len() - 1;
+    debug_assert!((1..=MAX_FILTERED_DEGREE).contains(&n));
+    let mut run = Run {
+        p,
+        pairs,
+        out: Vec::new(),
+        stats: FilterStats::default(),
+        splitter: None,
+        exact_nodes: HashMap::new(),
+    };
+    let w = n + 1;
+    let mut blocks: Vec<f64> = Vec::with_capacity(w * 32);
+    let (root, _) = root_f64_coefficients(p, &mut blocks);
+    let mut work = vec![0.0f64; w];
+    let mut stack = vec![Node {
+        c: BigInt::zero(),
+        j: 0,
+        e: root.e,
+        lo: root.lo,
+        hi: root.hi,
+    }];
+    while let Some(mut node) = stack.pop() {
+        let base = stack.len() * w;
+        debug_assert_eq!(blocks.len(), base + w);
+        if node.j > max_depth {
+            blocks.truncate(base);
+            run.exact_subtree(&node);
+            continue;
+        }
+        let mut m = max_abs(&blocks[base..]);
+        let ends = node.lo != Sign::Zero && node.hi != Sign::Zero;
+        let v_max = loop {
+            let g = &blocks[base..];
+            let v_max = max_variations(node.lo, &g[1..n], node.e, node.hi);
+            // A decision without a split stands whatever the precision; `!(a <= b)` also
+            // catches a NaN.
+            if v_max == 0 || (v_max == 1 && ends) || node.e <= m * FALLBACK_RATIO {
+                break v_max;
+            }
+            // Out of precision: restart from the node's exact coefficients, whose fresh error
+            // bound `2^-52 M` passes the test.
+            run.stats.anchors += 1;
+            let exact = run.exact_coefficients(&node.c, node.j);
+            blocks.truncate(base);
+            node.e = f64_coefficients_limbs(&exact, &mut blocks);
+            m = max_abs(&blocks[base..]);
+            assert!(
+                node.e <= m * FALLBACK_RATIO,
+                "exact coefficients of a non-zero polynomial are not all zero"
+            );
+        };
+        let g = &blocks[base..];
+        if v_max == 0 {
+            blocks.truncate(base);
+            continue;
+        }
+        if v_max == 1 && ends {
+            run.out.push(leaf_root(&node.c, node.j, g.to_vec()));
+            blocks.truncate(base);
+            continue;
+        }
+        if run.pairs && v_max == 2 && node.j >= 2 && ends && node.lo == node.hi {
+            let splitter = run.splitter.get_or_insert_with(|| PairSplitter::new(p));
+            if let Some(split) = splitter.split(&node.c, node.j, node.lo) {
+                run.out.extend(pair_roots(&node.c, node.j, split));
+                blocks.truncate(base);
+                continue;
+            }
+        }
+        // Split: the right child in the parent's block, the left one in a new block above.
+        run.stats.splits += 1;
+        work.copy_from_slice(&blocks[base..]);
+        blocks.resize(base + 2 * w, 0.0);
+        let (right, left) = blocks[base..].split_at_mut(w);
+        de_casteljau_half(&mut work, left, right);
+        let nf = w as f64;
+        let e = (node.e + nf * f64::EPSILON * m + nf * TINY) * SAFETY;
+        let c2: BigInt = &node.c << 1;
+        let mid = &c2 + 1u32;
+        let s_mid = if left[n].abs() > e {
+            sign_f64(left[n])
+        } else {
+            run.stats.exact_midpoints += 1;
+            sign_at_dyadic(p, &mid, node.j + 1)
+        };
+        if s_mid == Sign::Zero {
+            run.out.push(UnitRoot::Exact(mid.clone(), node.j + 1));
+        }
+        let e_right = renormalise(right, e);
+        let e_left = renormalise(left, e);
+        stack.push(Node {
+            c: mid,
+            j: node.j + 1,
+            e: e_right,
+            lo: s_mid,
+            hi: node.hi,
+        });
+        stack.push(Node {
+            c: c2,
+            j: node.j + 1,
+            e: e_left,
+            lo: node.lo,
+            hi: s_mid,
+        });
+    }
+    (run.out, run.stats)
+}
+
+/// The state of one filtered subdivision beside its node stack.
+struct Run<'a> {
+    p: &'a [BigInt],
+    pairs: bool,
+    out: Vec<UnitRoot>,
+    stats: FilterStats,
+    splitter: Option<PairSplitter>,
+    /// The exact integer Bernstein coefficients of the nodes `(j, c)` computed so far (both
+    /// halves of every exact split), so that no exact split is done twice.
+    exact_nodes: HashMap<(u64, BigInt), Limbs>,
+}
+
+impl Run<'_> {
+    /// The exact coefficients of the node `(c, j)`: one exact split per level from its deepest
+    /// ancestor with known exact coefficients (the root node when none), keeping the half on
+    /// the path along the bits of `c`; every node computed on the way is kept.
+    fn exact_coefficients(&mut self, c: &BigInt, j: u64) -> Limbs {
+        let start = (0..=j)
+            .rev()
+            .find(|&d| d == 0 || self.exact_nodes.contains_key(&(d, c >> (j - d))))
+            .expect("d = 0 is always found");
+        let p = self.p;
+        let mut limbs = self
+            .exact_nodes
+            .entry((start, c >> (j - start)))
+            .or_insert_with(|| Limbs::from_bigints(&to_bernstein_integer(p)))
+            .clone();
+        for d in start + 1..=j {
+            let (left, right) = limbs.split_half();
+            let here: BigInt = c >> (j - d);
+            let (next, other) = if here.bit(0) {
+                (right, left)
+            } else {
+                (left, right)
+            };
+            self.exact_nodes.insert((d, &here ^ BigInt::one()), other);
+            self.exact_nodes.insert((d, here), next.clone());
+            limbs = next;
+        }
+        limbs
+    }
+
+    /// The exact subdivision of `node` in its coordinates ([`unit_roots_from`]).
+    fn exact_subtree(&mut self, node: &Node) {
+        self.stats.fallbacks += 1;
+        let limbs = self.exact_coefficients(&node.c, node.j);
+        self.out.extend(unit_roots_from(
+            limbs,
+            self.p,
+            self.pairs,
+            (node.c.clone(), node.j),
+        ));
+    }
+}
+
+/// Pushes `g_i = B_i 2^-k` for the exact coefficients `B_i` of a node (module documentation,
+/// "Re-anchored node") onto `blocks` and returns their error bound `E_0`.
+fn f64_coefficients_limbs(b: &Limbs, blocks: &mut Vec<f64>) -> f64 {
+    let mut bits = Vec::with_capacity(b.len());
+    b.leading_bits(|neg, top, shift| bits.push((neg, top, shift)));
+    f64_of_leading_bits(bits, blocks)
+}
+
+/// The root node in `f64` ([`root_f64_coefficients`]).
+struct Root {
+    /// The error bound `E_0`.
+    e: f64,
+    /// The exact signs of `p(0)` and `p(1)`.
+    lo: Sign,
+    hi: Sign,
+}
+
+/// Pushes the root node's coefficients onto `blocks`: `g_i ~ 2^scale c_(n-i) / C(n, i)`, `c`
+/// the exact coefficients of `(1 + y)^n p(1 / (1 + y))` (module documentation of `descartes`,
+/// one Taylor shift on limbs) and the binomials in `f64`, with no big-integer multiplier (the
+/// exact integer form is computed only when a node needs its exact coefficients); also `scale`.
+fn root_f64_coefficients(p: &[BigInt], blocks: &mut Vec<f64>) -> (Root, i64) {
+    let n = p.len() - 1;
+    let start = blocks.len();
+    let rev: Vec<BigInt> = p.iter().rev().cloned().collect();
+    let mut shifted = Limbs::from_bigints_with_room(&rev, n + 1);
+    shifted.taylor_shift_1();
+    let mut bits = Vec::with_capacity(n + 1);
+    shifted.leading_bits(|neg, top, shift| bits.push((neg, top, shift)));
+    let sign = |(neg, top, _): (bool, u64, u64)| match (top, neg) {
+        (0, _) => Sign::Zero,
+        (_, true) => Sign::Negative,
+        (_, false) => Sign::Positive,
+    };
+    let (lo, hi) = (sign(bits[n]), sign(bits[0]));
+    bits.reverse();
+    // c_(n-i) 2^-k, k the largest bit length, divided by C(n, i) (recurrence in f64).
+    let k = push_scaled(bits, blocks);
+    let mut binom = 1.0f64;
+    for (i, g) in blocks[start..].iter_mut().enumerate() {
+        *g /= binom;
+        binom = binom * (n - i) as f64 / (i + 1) as f64;
+    }
+    // Into [1/2, 1): the largest value is at least 2^-1 / C(n, i) > 2^-1002.
+    let m = max_abs(&blocks[start..]);
+    assert!(m > 0.0, "a non-zero polynomial has a non-zero coefficient");
+    assert!(
+        m >= f64::MIN_POSITIVE,
+        "the largest value is above 2^-1002 (degree at most 1000)"
+    );
+    let biased = ((m.to_bits() >> 52) & 0x7ff) as i64;
+    let t = (1022 - biased).max(0);
+    let f = pow2f(t);
+    for g in blocks[start..].iter_mut() {
+        *g *= f;
+    }
+    let m = max_abs(&blocks[start..]);
+    let rho = (3 * n + 8) as f64 * (f64::EPSILON / 2.0);
+    let e = (rho * (1.0 + 2.0 * rho) * m + pow2f(t - 1072)) * SAFETY;
+    (Root { e, lo, hi }, t - k)
+}
+
+/// Pushes `B 2^-k` for numbers `B` given by their sign, 64 leading bits `t` and their position
+/// `s` (`|B| = t 2^s + r`, `0 <= r < 2^s`, `t >= 2^63` when `s > 0`), `k` the largest bit
+/// length, and returns `k`. Each value has a relative error below `2^-53 + 2^-63` (the
+/// truncation and one rounding of `t`) and an absolute one below `2^-1074` (underflow).
+fn push_scaled(bits: Vec<(bool, u64, u64)>, blocks: &mut Vec<f64>) -> i64 {
+    let k = bits
+        .iter()
+        .map(|&(_, top, shift)| shift + u64::from(64 - top.leading_zeros()))
+        .max()
+        .unwrap_or(0);
+    let k = i64::try_from(k).expect("a bit count");
+    let top_scale = pow2f(-64);
+    for (neg, top, shift) in bits {
+        // |B| 2^-k ~ (t 2^-64) 2^(s + 64 - k): t rounded once, the rest exact powers of two
+        // (the exponent at most 64, when k < 64).
+        let exp = i64::try_from(shift).expect("a bit count") + 64 - k;
+        let v = top as f64 * top_scale * pow2f(exp);
+        blocks.push(if neg { -v } else { v });
+    }
+    k
+}
+
+/// The conversion of [`f64_coefficients_limbs`] from each number's sign, 64 leading bits `t` and
+/// their position `s` (`|B| = t 2^s + r`, `0 <= r < 2^s`, `t >= 2^63` when `s > 0`).
+fn f64_of_leading_bits(bits: Vec<(bool, u64, u64)>, blocks: &mut Vec<f64>) -> f64 {
+    let start = blocks.len();
+    push_scaled(bits, blocks);
+    let m = max_abs(&blocks[start..]);
+    f64::EPSILON * m * SAFETY
+}
+
+/// The exact `2^k` in `f64`: subnormal below `2^-1022`, zero below `2^-1074`, infinite above
+/// `2^1023`.
+fn pow2f(k: i64) -> f64 {
+    if k > 1023 {
+        f64::INFINITY
+    } else if k >= -1022 {
+        f64::from_bits(((k + 1023) as u64) << 52)
+    } else if k >= -1074 {
+        f64::from_bits(1u64 << (k + 1074))
+    } else {
+        0.0
+    }
+}
+
+fn max_abs(g: &[f64]) -> f64 {
+    g.iter().fold(0.0f64, |acc, x| acc.max(x.abs()))
+}
+
+fn sign_f64(x: f64) -> Sign {
+    if x > 0.0 {
+        Sign::Positive
+    } else if x < 0.0 {
+        Sign::Negative
+    } else {
+        Sign::Zero
+    }
+}
+
+/// de Casteljau at `1/2` with the halvings on `work` (destroyed): `left_k = T^(k)_0`,
+/// `right_(n-k) = T^(k)_(n-k)`.
+fn de_casteljau_half(work: &mut [f64], left: &mut [f64], right: &mut [f64]) {
+    let n = work.len() - 1;
+    left[0] = work[0];
+    right[n] = work[n];
+    for k in 1..=n {
+        let row = &mut work[..=n - k + 1];
+        for i in 0..row.len() - 1 {
+            row[i] = 0.5 * (row[i] + row[i + 1]);
+        }
+        left[k] = work[0];
+        right[n - k] = work[n - k];
+    }
+}
+
+/// Scales `g` by the power of two that brings its largest magnitude into `[1/2, 1)` when it
+/// is below `1/2` (and not so small that the node falls back anyway), and returns `e` scaled
+/// alike. Exact: the factor is at least 1 and no value reaches 1.
+fn renormalise(g: &mut [f64], e: f64) -> f64 {
+    let m = max_abs(g);
+    if !(m < 0.5 && m >= pow2f(-600)) {
+        return e;
+    }
+    let biased = ((m.to_bits() >> 52) & 0x7ff) as i64;
+    // m in [2^(biased - 1023), 2^(biased - 1022)): times 2^(1022 - biased) in [1/2, 1).
+    let f = pow2f(1022 - biased);
+    for x in g.iter_mut() {
+        *x *= f;
+    }
+    e * f
+}
+
+/// The largest number of sign changes of `lo, mid..., hi` (zeros skipped) over every sign
+/// (`+`, `-`, `0`) of the entries `x` of `mid` with `|x| <= e`, the others having their own:
+/// one pass keeping, per last non-zero sign (none, `+`, `-`), the largest count reaching it.
+fn max_variations(lo: Sign, mid: &[f64], e: f64, hi: Sign) -> usize {
+    // Every sign certain (the common case): a plain count.
+    let code = |s: Sign| match s {
+        Sign::Negative => -1i8,
+        Sign::Zero => 0,
+        Sign::Positive => 1,
+    };
+    let (mut last, mut v) = (code(lo), 0usize);
+    let mut certain = true;
+    for &x in mid {
+        let s = if x > e {
+            1
+        } else if x < -e {
+            -1
+        } else {
+            certain = false;
+            break;
+        };
+        v += usize::from(last == -s);
+        last = s;
+    }
+    if certain {
+        return v + usize::from(last * code(hi) < 0);
+    }
+    max_variations_uncertain(lo, mid, e, hi)
+}
+
+/// [`max_variations`] when some entry is uncertain.
+fn max_variations_uncertain(lo: Sign, mid: &[f64], e: f64, hi: Sign) -> usize {
+    /// Index 0: no non-zero sign yet, 1: last `+`, 2: last `-`; `None`: unreachable.
+    type State = [Option<usize>; 3];
+    fn feed(st: State, s: Sign) -> State {
+        let k = match s {
+            Sign::Zero => return st,
+            Sign::Positive => 1,
+            Sign::Negative => 2,
+        };
+        let best = st
+            .iter()
+            .enumerate()
+            .filter_map(|(from, v)| v.map(|v| v + usize::from(from != 0 && from != k)))
+            .max();
+        let mut out = [None; 3];
+        out[k] = best;
+        out
+    }
+    let mut st = feed([Some(0), None, None], lo);
+    for &x in mid {
+        st = if x > e {
+            feed(st, Sign::Positive)
+        } else if x < -e {
+            feed(st, Sign::Negative)
+        } else {
+            // Zero keeps the state; + and - move it.
+            let (p, q) = (feed(st, Sign::Positive), feed(st, Sign::Negative));
+            [0, 1, 2].map(|i| st[i].max(p[i]).max(q[i]))
+        };
+    }
+    feed(st, hi)
+        .into_iter()
+        .flatten()
+        .max()
+        .expect("a state is always reachable")
+}
+
+/// The exact sign of `p(m / 2^k)`: the sign of `sum a_i m^i 2^(k(n-i))` (Horner on big
+/// integers).
+fn sign_at_dyadic(p: &[BigInt], m: &BigInt, k: u64) -> Sign {
+    let n = p.len() - 1;
+    let mut v = p[n].clone();
+    for (i, a) in p[..n].iter().enumerate().rev() {
+        v = v * m + (a << (k * (n - i) as u64));
+    }
+    sign_of(&v)
+}
+
+#[cfg(test)]
+mod tests;
