@@ -77,6 +77,21 @@ impl Rational {
         Ok(Self::reduce_small(num as i128, den as i128))
     }
 
+    /// `num / 2^exp` in lowest terms (the common factors of two cancelled; no gcd).
+    pub fn from_dyadic(num: &BigInt, exp: u64) -> Rational {
+        let Some(tz) = num.trailing_zeros() else {
+            return Rational::ZERO;
+        };
+        let shift = tz.min(exp);
+        let e = exp - shift;
+        if e <= 125 {
+            if let Some(n) = num.to_i128() {
+                return Rational(Repr::Small(n >> shift, 1i128 << e));
+            }
+        }
+        Rational::from_coprime(num >> shift, BigUint::one() << e)
+    }
+
     /// `num / den` for `i128` parts, canonicalised.
     ///
     /// # Errors
@@ -785,6 +800,24 @@ mod tests {
 
     fn q(n: i64, d: i64) -> Rational {
         Rational::new(n, d).unwrap()
+    }
+
+    /// `from_dyadic` against the division, inline and boxed, odd and even numerators.
+    #[test]
+    fn from_dyadic_is_the_quotient() {
+        let nums = [0i64, 1, -1, 6, -12, 1 << 40, -(3 << 50), i64::MAX, i64::MIN];
+        for &n in &nums {
+            for big in [0u32, 70, 200] {
+                let num = BigInt::from(n) << big;
+                for exp in [0u64, 1, 3, 64, 125, 126, 127, 300] {
+                    let expected =
+                        Rational::from(num.clone()) / Rational::from(BigInt::from(1) << exp);
+                    let got = Rational::from_dyadic(&num, exp);
+                    assert_eq!(got, expected, "{num} / 2^{exp}");
+                    assert_eq!(got.is_inline(), expected.is_inline(), "{num} / 2^{exp}");
+                }
+            }
+        }
     }
 
     #[test]

@@ -380,7 +380,7 @@ enum UnitRoot {
     Open {
         a: Rational,
         b: Rational,
-        estimate: Option<Rational>,
+        estimate: Option<UnitEstimate>,
     },
 }
 
@@ -498,9 +498,11 @@ fn unit_roots_from<C: NodeCoeffs>(
 /// The isolating leaf `(c / 2^j, (c + 1) / 2^j)` with the estimate of its root from the node's
 /// Bernstein coefficients `g` in `f64` (any common positive scale).
 fn leaf_root(c: &BigInt, j: u64, g: Vec<f64>) -> UnitRoot {
-    let estimate = bernstein_root_estimate(g)
-        .and_then(rational_of_f64)
-        .map(|t| (Rational::from(c.clone()) + t) / pow2(j));
+    let estimate = bernstein_root_estimate(g).map(|t| UnitEstimate {
+        num: c.clone(),
+        exp: j,
+        off: t * pow2f(-(j.min(2000) as i64)),
+    });
     UnitRoot::Open {
         a: dyadic(c, j),
         b: dyadic(&(c + 1), j),
@@ -512,19 +514,105 @@ fn leaf_root(c: &BigInt, j: u64, g: Vec<f64>) -> UnitRoot {
 /// the estimates `x -/+ delta` ([`PairSplitter::split`]).
 fn pair_roots(c: &BigInt, j: u64, (x, delta): (Dyadic, Option<f64>)) -> [UnitRoot; 2] {
     let (a, m, e) = (dyadic(c, j), x.to_rational(), dyadic(&(c + 1), j));
-    let d = delta.and_then(rational_of_f64);
+    let d = delta.filter(|d| d.is_finite());
+    let estimate = |off: f64| UnitEstimate {
+        num: x.num.clone(),
+        exp: x.exp,
+        off,
+    };
     [
         UnitRoot::Open {
             a,
             b: m.clone(),
-            estimate: d.as_ref().map(|d| m.sub_ref(d)),
+            estimate: d.map(|d| estimate(-d)),
         },
         UnitRoot::Open {
-            estimate: d.as_ref().map(|d| m.add_ref(d)),
+            estimate: d.map(estimate),
             a: m,
             b: e,
         },
     ]
+}
+
+/// `2^k` as an `f64`, exactly (`inf` above the range, subnormals below `2^-1022`, `0` below
+/// `2^-1074`).
+fn pow2f(k: i64) -> f64 {
+    if k > 1023 {
+        f64::INFINITY
+    } else if k >= -1022 {
+        f64::from_bits(((k + 1023) as u64) << 52)
+    } else if k >= -1074 {
+        f64::from_bits(1u64 << (k + 1074))
+    } else {
+        0.0
+    }
+}
+
+/// An estimate `num / 2^exp + off` of a root of a unit problem: an exact dyadic (a node's end,
+/// or a pair's split point) and an `f64` offset (the leaf's estimate within its node, or the
+/// pair's half-distance), kept apart so that a root recognised as rational never pays for the
+/// exact rational ([`UnitEstimate::to_rational`] is called only by the refinement).
+#[derive(Clone, Debug)]
+struct UnitEstimate {
+    num: BigInt,
+    exp: u64,
+    off: f64,
+}
+
+impl UnitEstimate {
+    /// The value in `f64` (approximately).
+    fn to_f64(&self) -> f64 {
+        let base = match approx(&self.num) {
+            None => 0.0,
+            Some((m, e)) => m * pow2f(e.saturating_sub(self.exp as i64)),
+        };
+        base + self.off
+    }
+
+    /// The exact value (`None` when the offset is not finite).
+    fn to_rational(&self) -> Option<Rational> {
+        let base = Rational::from_dyadic(&self.num, self.exp);
+        Some(if self.off == 0.0 {
+            base
+        } else {
+            base + rational_of_f64(self.off)?
+        })
+    }
+}
+
+/// A [`UnitEstimate`] of a root of unit problem `which` of [`isolate_square_free`], read as
+/// an estimate of the root of `q`: `x`, `1/x`, `-x`, `-1/x`.
+#[derive(Clone, Debug)]
+struct Estimate {
+    unit: UnitEstimate,
+    which: usize,
+}
+
+impl Estimate {
+    fn map_f64(&self, x: f64) -> f64 {
+        match self.which {
+            0 => x,
+            1 => 1.0 / x,
+            2 => -x,
+            _ => -1.0 / x,
+        }
+    }
+
+    /// The estimate in `f64` (for the rational-root candidates).
+    fn to_f64(&self) -> f64 {
+        self.map_f64(self.unit.to_f64())
+    }
+
+    /// The exact estimate (for the refinement's first window); `None` at zero.
+    fn to_rational(&self) -> Option<Rational> {
+        let x = self.unit.to_rational().filter(|x| !x.is_zero())?;
+        Some(match self.which {
+            0 => x,
+            1 => x.recip().expect("non-zero"),
+            2 => -x,
+            _ => -x.recip().expect("non-zero"),
+        })
+    }
 }
 
 /// The finite `f64` `x` as an exact rational.
@@ -936,7 +1024,7 @@ fn pow2(k: u64) -> Rational {
 }
 
 fn dyadic(c: &BigInt, j: u64) -> Rational {
-    Rational::from(c.clone()) / pow2(j)
+    Rational::from_dyadic(c, j)
 }
 
 /// A power of two `B` strictly above Cauchy's bound `1 + max |a_i / a_n|`.
@@ -951,7 +1039,7 @@ fn root_bound(q: &[BigInt]) -> Rational {
 /// [`recognise_rational`] and the first window of the refinement).
 struct Isolated {
     ri: RootInterval,
-    estimate: Option<Rational>,
+    estimate: Option<Estimate>,
 }
 
 /// Isolating intervals of all real roots of the primitive square-free `q` (degree >= 1,
@@ -1027,12 +1115,7 @@ fn isolate_square_free(q: &[BigInt], opts: Options) -> Vec<Isolated> {
                             hi: -inv(&b),
                         },
                     };
-                    let estimate = estimate.filter(|x| !x.is_zero()).map(|x| match which {
-                        0 => x,
-                        1 => x.recip().expect("non-zero"),
-                        2 => -x,
-                        _ => -x.recip().expect("non-zero"),
-                    });
+                    let estimate = estimate.map(|unit| Estimate { unit, which });
                     Isolated { ri, estimate }
                 }
             };
@@ -1492,7 +1575,10 @@ fn real_roots_to_with(
             Sign::Negative
         };
         let s_lo = sign_neg(s_right);
-        let r = refiner.refine(ri.lo, ri.hi, s_lo, width, estimate.filter(|_| opts.windows));
+        let estimate = estimate
+            .filter(|_| opts.windows)
+            .and_then(|e| e.to_rational());
+        let r = refiner.refine(ri.lo, ri.hi, s_lo, width, estimate);
         // Isolating intervals may share an end (a subdivision point); the closed refined
         // intervals must not: narrow the left one until its upper end moves (its root is
         // strictly below the shared end).

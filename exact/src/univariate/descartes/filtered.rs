@@ -396,18 +396,6 @@ fn f64_of_leading_bits(bits: Vec<(bool, u64, u64)>, blocks: &mut Vec<f64>) -> f6
 
 /// The exact `2^k` in `f64`: subnormal below `2^-1022`, zero below `2^-1074`, infinite above
 /// `2^1023`.
-fn pow2f(k: i64) -> f64 {
-    if k > 1023 {
-        f64::INFINITY
-    } else if k >= -1022 {
-        f64::from_bits(((k + 1023) as u64) << 52)
-    } else if k >= -1074 {
-        f64::from_bits(1u64 << (k + 1074))
-    } else {
-        0.0
-    }
-}
-
 fn max_abs(g: &[f64]) -> f64 {
     g.iter().fold(0.0f64, |acc, x| acc.max(x.abs()))
 }
