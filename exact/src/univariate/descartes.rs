@@ -875,47 +875,64 @@ impl RationalRoots {
 /// signs are both `s`, a point strictly inside at which `p` has the sign `-s`, found by Newton's
 /// method on `p'` (in `f64`, then exact dyadic steps doubling the precision) and verified by an
 /// exact sign. `None` when none was found (the node is then subdivided).
-struct PairSplitter {
-    p: Vec<BigInt>,
+struct PairSplitter<'a> {
+    p: &'a [BigInt],
     pf: Vec<f64>,
-    d1: Vec<BigInt>,
-    d2: Vec<BigInt>,
     d1f: Vec<f64>,
     d2f: Vec<f64>,
+    /// `p'` and `p''` exactly, built on the first exact Newton step.
+    exact: std::cell::OnceCell<(Vec<BigInt>, Vec<BigInt>)>,
 }
 
 /// The precision cap (bits after the binary point) of the exact Newton steps.
 const PAIR_MAX_BITS: u64 = 4096;
 
-impl PairSplitter {
-    fn new(p: &[BigInt]) -> PairSplitter {
-        let deriv = |a: &[BigInt]| -> Vec<BigInt> {
-            a.iter()
-                .enumerate()
-                .skip(1)
-                .map(|(i, c)| c * BigInt::from(i))
-                .collect()
-        };
-        let mut d1 = deriv(p);
-        if d1.is_empty() {
-            d1.push(BigInt::zero());
-        }
-        let mut d2 = deriv(&d1);
-        if d2.is_empty() {
-            d2.push(BigInt::zero());
-        }
+impl<'a> PairSplitter<'a> {
+    /// The `f64` images of `p`, `p'`, `p''` (one common scaling); the exact derivatives wait
+    /// for the first pair that passes the `f64` test.
+    fn new(p: &'a [BigInt]) -> PairSplitter<'a> {
         let shift = f64_shift(p);
-        let pf = p.iter().map(|c| scaled_f64(c, shift)).collect();
-        let d1f = d1.iter().map(|c| scaled_f64(c, shift)).collect();
-        let d2f = d2.iter().map(|c| scaled_f64(c, shift)).collect();
+        let pf: Vec<f64> = p.iter().map(|c| scaled_f64(c, shift)).collect();
+        let d1f = pf
+            .iter()
+            .enumerate()
+            .skip(1)
+            .map(|(i, c)| c * i as f64)
+            .collect();
+        let d2f = pf
+            .iter()
+            .enumerate()
+            .skip(2)
+            .map(|(i, c)| c * (i * (i - 1)) as f64)
+            .collect();
         PairSplitter {
-            p: p.to_vec(),
+            p,
             pf,
-            d1,
-            d2,
             d1f,
             d2f,
+            exact: std::cell::OnceCell::new(),
         }
+    }
+
+    /// `(p', p'')` exactly (each at least the zero constant).
+    fn derivatives(&self) -> &(Vec<BigInt>, Vec<BigInt>) {
+        self.exact.get_or_init(|| {
+            let deriv = |a: &[BigInt]| -> Vec<BigInt> {
+                let mut d: Vec<BigInt> = a
+                    .iter()
+                    .enumerate()
+                    .skip(1)
+                    .map(|(i, c)| c * BigInt::from(i))
+                    .collect();
+                if d.is_empty() {
+                    d.push(BigInt::zero());
+                }
+                d
+            };
+            let d1 = deriv(self.p);
+            let d2 = deriv(&d1);
+            (d1, d2)
+        })
     }
 
     /// `a(x) 2^(k deg)` for `x = m / 2^k` (`deg = a.len() - 1`).
@@ -967,10 +984,10 @@ impl PairSplitter {
         }
         let mut last_step: Option<BigInt> = None;
         loop {
-            let pv = Self::eval(&self.p, &xd);
+            let pv = Self::eval(self.p, &xd);
             let v = sign_of(&pv);
             if v == sign_neg(s) {
-                let p2 = Self::eval(&self.d2, &xd);
+                let p2 = Self::eval(&self.derivatives().1, &xd);
                 let delta = match (approx(&pv), approx(&p2)) {
                     (Some((m0, e0)), Some((m2, e2))) => {
                         // p / p'' = (m0 / m2) 2^(e0 - e2 - 2k).
@@ -990,8 +1007,8 @@ impl PairSplitter {
                 return None;
             }
             // Newton on p': x - p'(x) / p''(x) at precision 2k.
-            let p1 = Self::eval(&self.d1, &xd); // p'(x) 2^(k (n-1))
-            let p2 = Self::eval(&self.d2, &xd); // p''(x) 2^(k (n-2))
+            let p1 = Self::eval(&self.derivatives().0, &xd); // p'(x) 2^(k (n-1))
+            let p2 = Self::eval(&self.derivatives().1, &xd); // p''(x) 2^(k (n-2))
             if p2.is_zero() {
                 return None;
             }

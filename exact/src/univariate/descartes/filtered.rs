@@ -252,7 +252,7 @@ struct Run<'a> {
     pairs: bool,
     out: Vec<UnitRoot>,
     stats: FilterStats,
-    splitter: Option<PairSplitter>,
+    splitter: Option<PairSplitter<'a>>,
     /// The exact integer Bernstein coefficients of the nodes `(j, c)` computed so far (both
     /// halves of every exact split), so that no exact split is done twice.
     exact_nodes: HashMap<(u64, BigInt), Limbs>,
