@@ -162,6 +162,9 @@ fn mul_mod(a: u64, b: u64, p: u64) -> u64 {
 
 /// `x mod p` for an integer `x` (non-negative result).
 fn big_mod(x: &BigInt, p: u64) -> u64 {
+    if p == crate::modp::P {
+        return crate::modp::ModP::from_bigint(x).value();
+    }
     let r = rem_small(x, p);
     if x.is_negative() && r != 0 {
         p - r
