@@ -9,7 +9,9 @@
 //!    that divides neither the leading coefficient of `q` nor that of `q'`: then the resultant
 //!    `Res(q, q')` (which reduces modulo `p` to the resultant of the reductions, the degrees being
 //!    kept) is non-zero modulo `p`, hence non-zero, hence `gcd(q, q') = 1` over `Q`. Three 61/62-bit
-//!    primes are tried ([`is_square_free_mod_p`], `O(n^2)` word operations); only when all fail
+//!    primes are tried ([`is_square_free_mod_p`], `O(n^2)` word operations: Euclid without
+//!    inverses, `a <- lc(b) a - lc(a) x^k b`, and Mersenne folding modulo the first prime
+//!    `2^61 - 1`, which almost always decides); only when all fail
 //!    (a repeated root, or a resultant divisible by all three) is the exact square-free part
 //!    computed by the primitive remainder sequence ([`UPoly::square_free_part`]).
 //! 2. **Four unit problems.** The real line minus `{-1, 0, 1}` is covered by `(0, 1)`, `(1, inf)`,
@@ -72,12 +74,18 @@
 //! A rational root `u / v` (lowest terms) of the primitive `q` has `v | lc(q)` and `u | a_k`,
 //! `a_k` the lowest non-zero coefficient (rational root theorem). For every subdivision leaf an
 //! `f64` estimate of its root is computed from the leaf's Bernstein coefficients (locally well
-//! conditioned, unlike the power basis: Illinois regula falsi on `B(t) / (1 - t)^n` and
-//! `B(t) / t^n`, every power at most 1; degree at most 1000). Its continued-fraction convergents
-//! `u / v` are the candidates (Legendre: a rational within `1 / (2 v^2)` of the estimate is one
-//! of them): a candidate inside the isolating interval that passes the two divisibility tests
-//! (word remainders) is a root exactly when `v x - u` divides `q`, decided by synthetic
-//! division (exact word divisions, stopping at the first remainder). A root found is returned
+//! conditioned, unlike the power basis: safeguarded Newton from the control polygon's crossing
+//! on `B(t) / (1 - t)^n` and `B(t) / t^n`, every power at most 1; degree at most 1000). Its
+//! continued-fraction convergents `u / v` are the candidates (Legendre: a rational within
+//! `1 / (2 v^2)` of the estimate is one of them): a candidate inside the isolating interval that
+//! passes the two divisibility tests (word remainders) is a root exactly when `v x - u` divides
+//! `q`, decided by synthetic division on fixed-width limbs ([`Limbs::divide_by_linear`]): in
+//! the ring `Z / 2^(64 w)`, dividing by whichever of `u`, `v` is odd (a Hensel division per
+//! step), and accepted only when the remainder vanishes there and every quotient coefficient is
+//! small enough that the congruence `(v x - u) s = q` is an equality over `Z`; the width `w`
+//! comes from Mignotte's bound on the factors of `q`, so no true factor is refused. The
+//! estimate stays a dyadic plus an `f64` offset until the refinement needs it exactly, so a
+//! recognised root costs no rational arithmetic beyond its own value. A root found is returned
 //! as the exact point `[u/v, u/v]`, like the Sturm isolator's, and divided out of the
 //! polynomial the later candidates are tested against. Nothing is decided on the estimate: an
 //! irrational root fails the tests (almost always at the divisibility, without an exact
@@ -318,8 +326,16 @@ fn to_bernstein_integer(p: &[BigInt]) -> Vec<BigInt> {
     } else {
         taylor_shift_1(&mut c);
     }
-    // L = lcm_i C(n, i) = lcm(1, ..., n + 1) / (n + 1), and the multipliers m_i = L / C(n, i)
-    // by m_{i+1} = m_i (i + 1) / (n - i) (exact: both are integers), word divisions only.
+    bernstein_multipliers(n)
+        .iter()
+        .enumerate()
+        .map(|(i, m)| &c[n - i] * m)
+        .collect()
+}
+
+/// The multipliers `m_i = L / C(n, i)`, `L = lcm_i C(n, i) = lcm(1, ..., n + 1) / (n + 1)`, by
+/// `m_{i+1} = m_i (i + 1) / (n - i)` (exact: both are integers), word divisions only.
+fn bernstein_multipliers(n: usize) -> Vec<BigInt> {
     let mut l = BigInt::one();
     for k in 2..=(n as u64 + 1) {
         let g = num_integer::Integer::gcd(&rem_small(&l, k), &k);
@@ -329,13 +345,35 @@ fn to_bernstein_integer(p: &[BigInt]) -> Vec<BigInt> {
     let mut m = l;
     let mut out = Vec::with_capacity(n + 1);
     for i in 0..=n {
-        out.push(&c[n - i] * &m);
+        out.push(m.clone());
         if i < n {
             m *= i as u64 + 1;
             m /= (n - i) as u64;
         }
     }
     out
+}
+
+/// [`to_bernstein_integer`] on limbs from the Taylor-shifted reversal `shifted` (the
+/// coefficients `c` of `(1 + y)^n p(1 / (1 + y))`, constant term first): `L b_i = c_(n-i) m_i`,
+/// by word multiplications when every multiplier fits a word (degree at most 44), else through
+/// `BigInt`s.
+fn bernstein_from_shifted(shifted: &Limbs) -> Limbs {
+    let n = shifted.len() - 1;
+    let m = bernstein_multipliers(n);
+    let words: Option<Vec<u64>> = m.iter().map(ToPrimitive::to_u64).collect();
+    match words {
+        Some(words) => shifted.reversed_times_words(&words),
+        None => {
+            let c = shifted.to_bigints();
+            Limbs::from_bigints(
+                &m.iter()
+                    .enumerate()
+                    .map(|(i, m)| &c[n - i] * m)
+                    .collect::<Vec<_>>(),
+            )
+        }
+    }
 }
 
 /// Divides all coefficients by their common power of two.
@@ -2001,6 +2039,26 @@ mod unit_tests {
         assert!(linear_factor_divides(&c, 1, 1));
         assert!(!linear_factor_divides(&c, 1, 3));
         assert_eq!(convergents(0.75), vec![(0, 1), (1, 1), (3, 4)]);
+    }
+
+    /// The Bernstein form from the shifted limbs equals the `BigInt` one, with word
+    /// multipliers (degree up to 44) and with big ones (above).
+    #[test]
+    fn bernstein_from_shifted_limbs_agrees() {
+        let mut rng = Rng::new(77);
+        for n in [1usize, 2, 8, 20, 44, 45, 60, 90] {
+            let p: Vec<BigInt> = (0..=n)
+                .map(|_| BigInt::from(rng.next_u64() as i64) << (rng.below(90) as u32))
+                .collect();
+            let rev: Vec<BigInt> = p.iter().rev().cloned().collect();
+            let mut shifted = Limbs::from_bigints_with_room(&rev, n + 1);
+            shifted.taylor_shift_1();
+            assert_eq!(
+                bernstein_from_shifted(&shifted).to_bigints(),
+                to_bernstein_integer(&p),
+                "degree {n}"
+            );
+        }
     }
 
     /// `BigInt`s through limbs and back: signs, zero, `-2^(64k)`, `2^(64k) - 1`, with room.

@@ -314,6 +314,21 @@ impl Limbs {
     }
 }
 
+impl Limbs {
+    /// The numbers `x_(n-i) m_i` for `i = 0..=n` (reversed, each times its word), one limb
+    /// wider.
+    pub(super) fn reversed_times_words(&self, m: &[u64]) -> Limbs {
+        let (w, len) = (self.w, self.len());
+        assert_eq!(m.len(), len, "one multiplier per number");
+        let wide = self.resized(w + 1);
+        let mut d = vec![0u64; len * (w + 1)];
+        for (i, out) in d.chunks_mut(w + 1).enumerate() {
+            crate::bigint::mul_1_add_in_place(out, wide.get(len - 1 - i), m[i], false);
+        }
+        Limbs { w: w + 1, d }
+    }
+}
+
 // ------------------------------------------------------------------------ linear factors
 
 /// The limb count with which [`Limbs::divide_by_linear`] can certify every linear factor of

@@ -147,10 +147,21 @@ fn subdivide(p: &[BigInt], pairs: bool, max_depth: u64) -> (Vec<UnitRoot>, Filte
         stats: FilterStats::default(),
         splitter: None,
         exact_nodes: HashMap::new(),
+        shifted: None,
     };
     let w = n + 1;
     let mut blocks: Vec<f64> = Vec::with_capacity(w * 32);
     let (root, _) = root_f64_coefficients(p, &mut blocks);
+    // The root's signs are exact (those of the shifted coefficients): no variation, no root;
+    // one, with non-zero ends, one root.
+    if root.v == 0 {
+        return (run.out, run.stats);
+    }
+    if root.v == 1 && root.lo != Sign::Zero && root.hi != Sign::Zero {
+        run.out.push(leaf_root(&BigInt::zero(), 0, blocks));
+        return (run.out, run.stats);
+    }
+    run.shifted = Some(root.shifted);
     let mut work = vec![0.0f64; w];
     let mut stack = vec![Node {
         c: BigInt::zero(),
@@ -256,6 +267,8 @@ struct Run<'a> {
     /// The exact integer Bernstein coefficients of the nodes `(j, c)` computed so far (both
     /// halves of every exact split), so that no exact split is done twice.
     exact_nodes: HashMap<(u64, BigInt), Limbs>,
+    /// The root's Taylor-shifted reversal, from which its exact coefficients are made.
+    shifted: Option<Limbs>,
 }
 
 impl Run<'_> {
@@ -267,11 +280,14 @@ impl Run<'_> {
             .rev()
             .find(|&d| d == 0 || self.exact_nodes.contains_key(&(d, c >> (j - d))))
             .expect("d = 0 is always found");
-        let p = self.p;
+        let (p, shifted) = (self.p, &self.shifted);
         let mut limbs = self
             .exact_nodes
             .entry((start, c >> (j - start)))
-            .or_insert_with(|| Limbs::from_bigints(&to_bernstein_integer(p)))
+            .or_insert_with(|| match shifted {
+                Some(s) => bernstein_from_shifted(s),
+                None => Limbs::from_bigints(&to_bernstein_integer(p)),
+            })
             .clone();
         for d in start + 1..=j {
             let (left, right) = limbs.split_half();
@@ -316,6 +332,10 @@ struct Root {
     /// The exact signs of `p(0)` and `p(1)`.
     lo: Sign,
     hi: Sign,
+    /// The exact number of sign variations of the coefficients.
+    v: usize,
+    /// The Taylor-shifted reversal (exact), for the exact coefficients when needed.
+    shifted: Limbs,
 }
 
 /// Pushes the root node's coefficients onto `blocks`: `g_i ~ 2^scale c_(n-i) / C(n, i)`, `c`
@@ -336,6 +356,8 @@ fn root_f64_coefficients(p: &[BigInt], blocks: &mut Vec<f64>) -> (Root, i64) {
         (_, false) => Sign::Positive,
     };
     let (lo, hi) = (sign(bits[n]), sign(bits[0]));
+    // The Bernstein coefficients are these times positive multipliers: the same signs.
+    let v = isolate::count_variations(bits.iter().map(|&b| sign(b)));
     bits.reverse();
     // c_(n-i) 2^-k, k the largest bit length, divided by C(n, i) (recurrence in f64).
     let k = push_scaled(bits, blocks);
@@ -360,7 +382,16 @@ fn root_f64_coefficients(p: &[BigInt], blocks: &mut Vec<f64>) -> (Root, i64) {
     let m = max_abs(&blocks[start..]);
     let rho = (3 * n + 8) as f64 * (f64::EPSILON / 2.0);
     let e = (rho * (1.0 + 2.0 * rho) * m + pow2f(t - 1072)) * SAFETY;
-    (Root { e, lo, hi }, t - k)
+    (
+        Root {
+            e,
+            lo,
+            hi,
+            v,
+            shifted,
+        },
+        t - k,
+    )
 }
 
 /// Pushes `B 2^-k` for numbers `B` given by their sign, 64 leading bits `t` and their position
