@@ -329,6 +329,43 @@ impl Limbs {
     }
 }
 
+impl Limbs {
+    /// The sign (-1, 0, 1) of `sum_i a_i m^i 2^(k (n - i))` for the polynomial `a` with these
+    /// coefficients (`n = len - 1`) and a word `0 < m < 2^k`: `2^(k n) a(m / 2^k)`, the sign of
+    /// `a` at the dyadic point `m / 2^k`. Horner's scheme in a fixed width that holds every
+    /// partial sum: `|sum_(l >= i) a_l m^(l - i) 2^(k (n - l))| < (n + 1) 2^(A + k (n - i))`,
+    /// `A` the coefficients' bit length, so `A + k n + log2(n + 1) + 2` bits suffice.
+    pub(super) fn sign_at_dyadic(&self, m: u64, k: u64) -> i8 {
+        let len = self.len();
+        let n = len - 1;
+        debug_assert!(m > 0 && (k >= 64 || m < 1u64 << k));
+        let a_bits = self.d.chunks(self.w).map(signed_bits).max().unwrap_or(1);
+        let bits = a_bits + (k as usize) * n + (usize::BITS - len.leading_zeros()) as usize + 2;
+        let w = bits.div_ceil(64);
+        let wide = self.resized(w);
+        let mut acc = vec![0u64; w];
+        let mut term = vec![0u64; w];
+        for i in (0..=n).rev() {
+            // acc = acc m + a_i 2^(k (n - i))
+            let mut carry = 0u64;
+            for x in acc.iter_mut() {
+                let p = u128::from(*x) * u128::from(m) + u128::from(carry);
+                *x = p as u64;
+                carry = (p >> 64) as u64;
+            }
+            shl_into(&mut term, wide.get(i), (k as usize) * (n - i));
+            add_assign(&mut acc, &term);
+        }
+        if (acc[w - 1] as i64) < 0 {
+            -1
+        } else if acc.iter().all(|&l| l == 0) {
+            0
+        } else {
+            1
+        }
+    }
+}
+
 // ------------------------------------------------------------------------ linear factors
 
 /// The limb count with which [`Limbs::divide_by_linear`] can certify every linear factor of

@@ -148,6 +148,7 @@ fn subdivide(p: &[BigInt], pairs: bool, max_depth: u64) -> (Vec<UnitRoot>, Filte
         splitter: None,
         exact_nodes: HashMap::new(),
         shifted: None,
+        p_limbs: None,
     };
     let w = n + 1;
     let mut blocks: Vec<f64> = Vec::with_capacity(w * 32);
@@ -232,7 +233,7 @@ fn subdivide(p: &[BigInt], pairs: bool, max_depth: u64) -> (Vec<UnitRoot>, Filte
             sign_f64(left[n])
         } else {
             run.stats.exact_midpoints += 1;
-            sign_at_dyadic(p, &mid, node.j + 1)
+            run.sign_at(&mid, node.j + 1)
         };
         if s_mid == Sign::Zero {
             run.out.push(UnitRoot::Exact(mid.clone(), node.j + 1));
@@ -269,9 +270,28 @@ struct Run<'a> {
     exact_nodes: HashMap<(u64, BigInt), Limbs>,
     /// The root's Taylor-shifted reversal, from which its exact coefficients are made.
     shifted: Option<Limbs>,
+    /// `p` on limbs, for the exact signs at split points.
+    p_limbs: Option<Limbs>,
 }
 
 impl Run<'_> {
+    /// The exact sign of `p` at `m / 2^k` (`0 < m < 2^k`): on limbs when `m` fits a word
+    /// ([`Limbs::sign_at_dyadic`]), by `BigInt` Horner otherwise.
+    fn sign_at(&mut self, m: &BigInt, k: u64) -> Sign {
+        match m.to_u64() {
+            Some(word) if k < 64 => {
+                let p = self.p;
+                let limbs = self.p_limbs.get_or_insert_with(|| Limbs::from_bigints(p));
+                match limbs.sign_at_dyadic(word, k) {
+                    -1 => Sign::Negative,
+                    0 => Sign::Zero,
+                    _ => Sign::Positive,
+                }
+            }
+            _ => sign_at_dyadic(self.p, m, k),
+        }
+    }
+
     /// The exact coefficients of the node `(c, j)`: one exact split per level from its deepest
     /// ancestor with known exact coefficients (the root node when none), keeping the half on
     /// the path along the bits of `c`; every node computed on the way is kept.

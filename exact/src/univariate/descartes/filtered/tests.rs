@@ -552,3 +552,42 @@ proptest! {
         compare(&c, false);
     }
 }
+
+/// The exact sign at a dyadic point on limbs equals the `BigInt` Horner's, on random
+/// polynomials (coefficients up to 300 bits, both signs), at roots (`(2^k x - m) g`) and at
+/// every odd numerator of small depths.
+#[test]
+fn sign_at_dyadic_on_limbs_agrees_with_bigint() {
+    let mut rng = exactcheck_core::Rng::new(3141);
+    for round in 0..300 {
+        let n = 1 + rng.below(30) as usize;
+        let mut p: Vec<BigInt> = (0..=n)
+            .map(|_| {
+                let x = BigInt::from(rng.next_u64() as i64) << (rng.below(240) as u32);
+                x
+            })
+            .collect();
+        let k = 1 + rng.below(63);
+        let m = (rng.next_u64() >> (64 - k)) | 1;
+        if round % 3 == 0 {
+            // A root at m / 2^k: p (2^k x - m).
+            let mut q = vec![BigInt::zero(); n + 2];
+            for (i, c) in p.iter().enumerate() {
+                q[i + 1] += c << k;
+                q[i] -= c * BigInt::from(m);
+            }
+            p = q;
+        }
+        let limbs = Limbs::from_bigints(&p);
+        let expected = sign_at_dyadic(&p, &BigInt::from(m), k);
+        let got = match limbs.sign_at_dyadic(m, k) {
+            -1 => Sign::Negative,
+            0 => Sign::Zero,
+            _ => Sign::Positive,
+        };
+        assert_eq!(got, expected, "round {round}: degree {n}, {m} / 2^{k}");
+        if round % 3 == 0 {
+            assert_eq!(got, Sign::Zero);
+        }
+    }
+}
