@@ -562,10 +562,7 @@ fn sign_at_dyadic_on_limbs_agrees_with_bigint() {
     for round in 0..300 {
         let n = 1 + rng.below(30) as usize;
         let mut p: Vec<BigInt> = (0..=n)
-            .map(|_| {
-                let x = BigInt::from(rng.next_u64() as i64) << (rng.below(240) as u32);
-                x
-            })
+            .map(|_| BigInt::from(rng.next_u64() as i64) << (rng.below(240) as u32))
             .collect();
         let k = 1 + rng.below(63);
         let m = (rng.next_u64() >> (64 - k)) | 1;
