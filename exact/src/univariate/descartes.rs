@@ -1114,27 +1114,38 @@ fn isolate_square_free(q: &[BigInt], opts: Options) -> Vec<Isolated> {
     if q[0].is_zero() {
         out.push(exact(Rational::ZERO));
     }
-    let sum: BigInt = q.iter().sum();
-    if sum.is_zero() {
-        out.push(exact(Rational::ONE));
-    }
-    let neg: Vec<BigInt> = q
-        .iter()
-        .enumerate()
-        .map(|(i, c)| if i % 2 == 1 { -c } else { c.clone() })
-        .collect();
-    let alt: BigInt = neg.iter().sum();
-    if alt.is_zero() {
-        out.push(exact(-Rational::ONE));
-    }
-    let rev: Vec<BigInt> = q.iter().rev().cloned().collect();
-    let rev_neg: Vec<BigInt> = neg.iter().rev().cloned().collect();
-    debug_assert_eq!(rev.len(), n + 1);
     // Descartes' rule of signs on the power basis: no sign variation among the coefficients of
     // q(x) (of q(-x)) means no positive (negative) root, and both unit problems of that side
-    // are skipped.
+    // are skipped, with the test of 1 (of -1). The signs of q(-x) are read off q's.
     let positive = variations(q) > 0;
-    let negative = variations(&neg) > 0;
+    let negative = isolate::count_variations(q.iter().enumerate().map(|(i, c)| {
+        let s = sign_of(c);
+        if i % 2 == 1 {
+            sign_neg(s)
+        } else {
+            s
+        }
+    })) > 0;
+    if positive && q.iter().sum::<BigInt>().is_zero() {
+        out.push(exact(Rational::ONE));
+    }
+    let neg: Vec<BigInt> = if negative {
+        q.iter()
+            .enumerate()
+            .map(|(i, c)| if i % 2 == 1 { -c } else { c.clone() })
+            .collect()
+    } else {
+        Vec::new()
+    };
+    if negative && neg.iter().sum::<BigInt>().is_zero() {
+        out.push(exact(-Rational::ONE));
+    }
+    let rev: Vec<BigInt> = if positive {
+        q.iter().rev().cloned().collect()
+    } else {
+        Vec::new()
+    };
+    let rev_neg: Vec<BigInt> = neg.iter().rev().cloned().collect();
     for (which, p) in [q, &rev[..], &neg[..], &rev_neg[..]]
         .into_iter()
         .enumerate()
@@ -1142,6 +1153,7 @@ fn isolate_square_free(q: &[BigInt], opts: Options) -> Vec<Isolated> {
         if (which < 2 && !positive) || (which >= 2 && !negative) {
             continue;
         }
+        debug_assert_eq!(p.len(), n + 1);
         for r in unit_roots(p, opts) {
             let item = match r {
                 UnitRoot::Exact(c, j) => {
