@@ -70,6 +70,18 @@ fn sar_in_place(x: &mut [u64], s: usize) {
     }
 }
 
+/// The sign of the two's complement number `x` and its magnitude (`x` itself, or its negation
+/// in `scratch`, of the same length).
+fn magnitude<'a>(x: &'a [u64], scratch: &'a mut [u64]) -> (bool, &'a [u64]) {
+    if (x[x.len() - 1] as i64) < 0 {
+        scratch.copy_from_slice(x);
+        crate::bigint::negate_twos_complement(scratch);
+        (true, scratch)
+    } else {
+        (false, x)
+    }
+}
+
 /// The number of bits of `x` as a two's complement number without its redundant sign bits
 /// (the sign bit included): `x` fits in this many bits.
 fn signed_bits(x: &[u64]) -> usize {
@@ -243,18 +255,7 @@ impl Limbs {
         let w = self.w;
         let mut scratch = vec![0u64; w];
         for x in self.d.chunks(w) {
-            let neg = (x[w - 1] as i64) < 0;
-            let m: &[u64] = if neg {
-                let mut carry = true;
-                for (d, &l) in scratch.iter_mut().zip(x) {
-                    let (v, c) = (!l).overflowing_add(carry as u64);
-                    *d = v;
-                    carry = c;
-                }
-                &scratch
-            } else {
-                x
-            };
+            let (neg, m) = magnitude(x, &mut scratch);
             match m.iter().rposition(|&l| l != 0) {
                 None => f(false, 0, 0),
                 Some(0) => f(neg, m[0], 0),
@@ -279,18 +280,7 @@ impl Limbs {
         let mut scratch = vec![0u64; w];
         let mut mags: Vec<(bool, f64, usize)> = Vec::with_capacity(self.len());
         for x in self.d.chunks(w) {
-            let neg = (x[w - 1] as i64) < 0;
-            let m: &[u64] = if neg {
-                let mut carry = true;
-                for (d, &l) in scratch.iter_mut().zip(x) {
-                    let (v, c) = (!l).overflowing_add(carry as u64);
-                    *d = v;
-                    carry = c;
-                }
-                &scratch
-            } else {
-                x
-            };
+            let (neg, m) = magnitude(x, &mut scratch);
             match m.iter().rposition(|&l| l != 0) {
                 None => mags.push((false, 0.0, 0)),
                 Some(t) => {
