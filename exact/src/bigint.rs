@@ -54,6 +54,13 @@ pub fn rem_1(x: &[u64], d: u64) -> u64 {
     if d == 1 {
         return 0;
     }
+    // One or two limbs: a single `u128` remainder (the folding constants would cost more).
+    match *x {
+        [] => return 0,
+        [lo] => return lo % d,
+        [lo, hi] => return ((u128::from(hi) << 64 | u128::from(lo)) % u128::from(d)) as u64,
+        _ => {}
+    }
     if d < FOLD_MAX {
         rem_1_fold(x, d)
     } else {

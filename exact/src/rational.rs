@@ -174,7 +174,10 @@ impl Rational {
     pub fn to_f64(&self) -> f64 {
         const EXACT: i128 = 1 << 53;
         match &self.0 {
-            Repr::Small(n, d) if n.abs() <= EXACT && *d <= EXACT => *n as f64 / *d as f64,
+            // Both exact in f64 (converted from i64: one instruction each, not the i128 routine).
+            Repr::Small(n, d) if n.abs() <= EXACT && *d <= EXACT => {
+                (*n as i64) as f64 / (*d as i64) as f64
+            }
             _ => crate::to_f64::rational_to_f64(&self.to_big_rational()),
         }
     }
@@ -378,6 +381,11 @@ impl Rational {
             return sa.cmp(&sb);
         }
         if let (Repr::Small(a, b), Repr::Small(c, d)) = (&self.0, &rhs.0) {
+            // Word-sized parts (the common case): the products fit `i128` without a check.
+            let word = |x: i128| i128::from(x as i64) == x;
+            if word(*a) && word(*b) && word(*c) && word(*d) {
+                return (a * d).cmp(&(c * b));
+            }
             if let (Some(l), Some(r)) = (a.checked_mul(*d), c.checked_mul(*b)) {
                 return l.cmp(&r);
             }

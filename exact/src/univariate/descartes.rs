@@ -260,8 +260,30 @@ fn square_free_integer(coeffs: &[BigInt]) -> Vec<BigInt> {
     let mut q: Vec<BigInt> = coeffs.to_vec();
     let g = content(&q);
     if !g.is_one() {
-        for c in &mut q {
-            *c /= &g;
+        match g.to_u64() {
+            // A word content (the usual case): exact division by a word, on `i128` when the
+            // coefficient fits, by Jebelean's exact division on its limbs otherwise.
+            Some(w) => {
+                for c in &mut q {
+                    *c = match c.to_i128() {
+                        Some(v) => BigInt::from(v / i128::from(w)),
+                        None => {
+                            let m = crate::bigint::divexact_1(&c.magnitude().to_u64_digits(), w);
+                            let m = BigInt::from(crate::bigint::biguint_from_limbs(&m));
+                            if c.is_negative() {
+                                -m
+                            } else {
+                                m
+                            }
+                        }
+                    };
+                }
+            }
+            None => {
+                for c in &mut q {
+                    *c /= &g;
+                }
+            }
         }
     }
     if q.last().is_some_and(|c| c.is_negative()) {
@@ -506,6 +528,7 @@ fn unit_roots_from<C: NodeCoeffs>(
 ) -> Vec<UnitRoot> {
     let mut out = Vec::new();
     let mut pair_splitter: Option<PairSplitter> = None;
+    let binoms = binomials_f64(b.degree());
     let mut stack = vec![(b, start.0, start.1)];
     while let Some((b, c, j)) = stack.pop() {
         let v = b.variations();
@@ -515,7 +538,7 @@ fn unit_roots_from<C: NodeCoeffs>(
         let n = b.degree();
         let (s0, sn) = (b.sign_at(0), b.sign_at(n));
         if v == 1 && s0 != Sign::Zero && sn != Sign::Zero {
-            out.push(leaf_root(&c, j, b.scaled_f64s()));
+            out.push(leaf_root(&c, j, b.scaled_f64s(), &binoms));
             continue;
         }
         if pairs && v == 2 && j >= 2 && s0 != Sign::Zero && s0 == sn {
@@ -538,8 +561,8 @@ fn unit_roots_from<C: NodeCoeffs>(
 
 /// The isolating leaf `(c / 2^j, (c + 1) / 2^j)` with the estimate of its root from the node's
 /// Bernstein coefficients `g` in `f64` (any common positive scale).
-fn leaf_root(c: &BigInt, j: u64, g: Vec<f64>) -> UnitRoot {
-    let estimate = bernstein_root_estimate(g).map(|t| UnitEstimate {
+fn leaf_root(c: &BigInt, j: u64, g: Vec<f64>, binoms: &[f64]) -> UnitRoot {
+    let estimate = bernstein_root_estimate(g, binoms).map(|t| UnitEstimate {
         num: c.clone(),
         exp: j,
         off: t * pow2f(-(j.min(2000) as i64)),
@@ -699,6 +722,20 @@ fn scaled_f64(x: &BigInt, shift: u64) -> f64 {
     }
 }
 
+/// `C(n, i)` for `i = 0..=n` in `f64` by the recurrence `C(n, i + 1) = C(n, i) (n - i) /
+/// (i + 1)` (`2i` roundings: a relative error below `2.01 n 2^-53` for `n <= 1000`, and no
+/// overflow there: `C(1000, 500) < 2^996`), computed once per unit problem: the chain of
+/// dependent divisions is the slow part of the leaf estimate otherwise.
+fn binomials_f64(n: usize) -> Vec<f64> {
+    let mut out = Vec::with_capacity(n + 1);
+    let mut binom = 1f64;
+    for i in 0..=n {
+        out.push(binom);
+        binom = binom * (n - i) as f64 / (i + 1) as f64;
+    }
+    out
+}
+
 /// An `f64` estimate of the root in `(0, 1)` of the Bernstein polynomial with these
 /// coefficients (one sign variation, non-zero ends): safeguarded Newton (Newton inside a
 /// bracket, bisection when a step leaves it or does not halve the step before last) on
@@ -707,11 +744,12 @@ fn scaled_f64(x: &BigInt, shift: u64) -> f64 {
 /// evaluated with every power at most 1, from the control polygon's crossing of the axis.
 /// Only a candidate generator for [`recognise_rational`] and the refinement's first window
 /// (nothing is decided on it); `None` beyond degree 1000 (the binomials leave the `f64` range).
-fn bernstein_root_estimate(mut g: Vec<f64>) -> Option<f64> {
+fn bernstein_root_estimate(mut g: Vec<f64>, binoms: &[f64]) -> Option<f64> {
     let n = g.len().checked_sub(1)?;
     if n > 1000 || n == 0 {
         return None;
     }
+    debug_assert_eq!(binoms.len(), n + 1);
     let (mut a, fa0, mut c, fc0) = (0.0f64, g[0], 1.0f64, g[n]);
     if !(fa0.is_finite() && fc0.is_finite())
         || fa0 == 0.0
@@ -728,10 +766,8 @@ fn bernstein_root_estimate(mut g: Vec<f64>) -> Option<f64> {
             x = cross;
         }
     }
-    let mut binom = 1f64;
-    for (i, v) in g.iter_mut().enumerate() {
-        *v *= binom;
-        binom = binom * (n - i) as f64 / (i + 1) as f64;
+    for (v, b) in g.iter_mut().zip(binoms) {
+        *v *= b;
     }
     if !g.iter().all(|v| v.is_finite()) {
         return None;
@@ -801,14 +837,17 @@ fn convergents(x: f64) -> Vec<(i64, i64)> {
     let mut y = x;
     for _ in 0..64 {
         let a = y.floor();
-        let ai = a as i128;
+        // Saturating; |h1|, k1 <= 2^62 keep the products inside i128.
+        let ai = i128::from(a as i64);
         let (h, k) = (ai * h1 + h2, ai * k1 + k2);
         if k > 1 << 40 || h.abs() > 1 << 62 {
             break;
         }
-        out.push((h as i64, k as i64));
+        // Word-sized now: the conversions to f64 are single instructions.
+        let (h64, k64) = (h as i64, k as i64);
+        out.push((h64, k64));
         let frac = y - a;
-        if frac <= 0.0 || (h as f64 / k as f64 - x).abs() <= 2.0 * f64::EPSILON * x.abs() {
+        if frac <= 0.0 || (h64 as f64 / k64 as f64 - x).abs() <= 2.0 * f64::EPSILON * x.abs() {
             break;
         }
         y = 1.0 / frac;
@@ -892,8 +931,17 @@ impl RationalRoots {
         if self.deflated.len() < 2 {
             return None;
         }
+        // A candidate clearly outside `(lo, hi)` is skipped before its divisibility tests:
+        // `p / q` in `f64` (p rounded, one division) and the converted ends are each within a
+        // relative `2^-52` of the true values, so `p / q < lo_f - delta` proves `p / q < lo`
+        // (and symmetrically); a comparison with an infinity or a NaN never skips.
+        let (lo_f, hi_f) = (lo.to_f64(), hi.to_f64());
+        let delta = (lo_f.abs() + hi_f.abs()) * pow2f(-48);
         for (p, q) in convergents(est) {
+            let pq = p as f64 / q as f64;
             if p == 0
+                || pq < lo_f - delta
+                || pq > hi_f + delta
                 || crate::bigint::rem_1(&self.lc, q as u64) != 0
                 || crate::bigint::rem_1(&self.low, p.unsigned_abs()) != 0
             {
@@ -996,11 +1044,18 @@ impl<'a> PairSplitter<'a> {
         let scale = (-(j as f64)).exp2();
         let (lo_f, hi_f) = (c.to_f64()? * scale, (c.to_f64()? + 1.0) * scale);
         let mut x = 0.5 * (lo_f + hi_f);
+        let mut last = f64::INFINITY;
         for _ in 0..60 {
             let step = horner(&self.d1f, x) / horner(&self.d2f, x);
             if !step.is_finite() {
                 return None;
             }
+            // Newton's corrections shrink until rounding noise takes over (the power-basis
+            // values cancel near the roots): a correction that does not shrink ends it.
+            if step.abs() >= last.abs() {
+                break;
+            }
+            last = step;
             let next = x - step;
             if !(next > lo_f && next < hi_f) {
                 return None;
@@ -1106,14 +1161,10 @@ struct Isolated {
 fn isolate_square_free(q: &[BigInt], opts: Options) -> Vec<Isolated> {
     let n = q.len() - 1;
     let bound = root_bound(q);
-    let mut out: Vec<Isolated> = Vec::new();
     let exact = |x: Rational| Isolated {
         ri: RootInterval::exact(x),
         estimate: None,
     };
-    if q[0].is_zero() {
-        out.push(exact(Rational::ZERO));
-    }
     // Descartes' rule of signs on the power basis: no sign variation among the coefficients of
     // q(x) (of q(-x)) means no positive (negative) root, and both unit problems of that side
     // are skipped, with the test of 1 (of -1). The signs of q(-x) are read off q's.
@@ -1126,9 +1177,7 @@ fn isolate_square_free(q: &[BigInt], opts: Options) -> Vec<Isolated> {
             s
         }
     })) > 0;
-    if positive && q.iter().sum::<BigInt>().is_zero() {
-        out.push(exact(Rational::ONE));
-    }
+    let one = positive && q.iter().sum::<BigInt>().is_zero();
     let neg: Vec<BigInt> = if negative {
         q.iter()
             .enumerate()
@@ -1137,15 +1186,15 @@ fn isolate_square_free(q: &[BigInt], opts: Options) -> Vec<Isolated> {
     } else {
         Vec::new()
     };
-    if negative && neg.iter().sum::<BigInt>().is_zero() {
-        out.push(exact(-Rational::ONE));
-    }
+    let minus_one = negative && neg.iter().sum::<BigInt>().is_zero();
     let rev: Vec<BigInt> = if positive {
         q.iter().rev().cloned().collect()
     } else {
         Vec::new()
     };
     let rev_neg: Vec<BigInt> = neg.iter().rev().cloned().collect();
+    // The four unit problems: x = t, 1/t, -t, -1/t for t in (0, 1).
+    let mut sides: [Vec<Isolated>; 4] = Default::default();
     for (which, p) in [q, &rev[..], &neg[..], &rev_neg[..]]
         .into_iter()
         .enumerate()
@@ -1189,10 +1238,33 @@ fn isolate_square_free(q: &[BigInt], opts: Options) -> Vec<Isolated> {
                     Isolated { ri, estimate }
                 }
             };
-            out.push(item);
+            sides[which].push(item);
         }
     }
-    out.sort_by(|x, y| x.ri.lo.cmp(&y.ri.lo));
+    // In increasing order when every unit problem lists its roots in increasing `t` (the
+    // subdivisions do): -1/t and t keep the order, 1/t and -t reverse it.
+    let [pos, inv_pos, negs, inv_negs] = sides;
+    let mut out: Vec<Isolated> = Vec::with_capacity(n + 3);
+    out.extend(inv_negs);
+    if minus_one {
+        out.push(exact(-Rational::ONE));
+    }
+    out.extend(negs.into_iter().rev());
+    if q[0].is_zero() {
+        out.push(exact(Rational::ZERO));
+    }
+    out.extend(pos);
+    if one {
+        out.push(exact(Rational::ONE));
+    }
+    out.extend(inv_pos.into_iter().rev());
+    // Disjoint intervals and points: by the lower end, an exact root before the open interval
+    // it bounds.
+    let key =
+        |x: &Isolated, y: &Isolated| x.ri.lo.cmp(&y.ri.lo).then_with(|| x.ri.hi.cmp(&y.ri.hi));
+    if !out.is_sorted_by(|x, y| key(x, y) != std::cmp::Ordering::Greater) {
+        out.sort_by(key);
+    }
     out
 }
 
@@ -1239,10 +1311,15 @@ fn approx(x: &BigInt) -> Option<(f64, i64)> {
     if bits == 0 {
         return None;
     }
+    // The top 64 bits straight from the limbs (no shifted copy).
     let shift = bits.saturating_sub(64);
-    let top = (x.magnitude() >> shift)
-        .to_u64()
-        .expect("at most 64 bits remain");
+    let (q, r) = ((shift / 64) as usize, shift % 64);
+    let mut limbs = x.magnitude().iter_u64_digits().skip(q);
+    let lo = limbs.next().expect("a limb holds the top bits");
+    let top = match (r, limbs.next()) {
+        (0, _) | (_, None) => lo >> r,
+        (_, Some(hi)) => (lo >> r) | (hi << (64 - r)),
+    };
     let m = top as f64;
     Some((if x.is_negative() { -m } else { m }, shift as i64))
 }
@@ -1857,6 +1934,30 @@ mod unit_tests {
             let expect: Vec<BigInt> = (0..=n).map(|i| &c[n - i] * (&l / &binom[i])).collect();
             assert_eq!(to_bernstein_integer(&p), expect);
         }
+    }
+
+    #[test]
+    fn approx_is_the_top_64_bits() {
+        let mut rng = Rng::new(7);
+        for bits in [1u64, 2, 63, 64, 65, 127, 128, 129, 191, 192, 193, 500] {
+            for _ in 0..20 {
+                let x: BigInt = (0..bits.div_ceil(64)).fold(BigInt::zero(), |acc, _| {
+                    (acc << 64) + BigInt::from(rng.next_u64())
+                }) >> (bits.div_ceil(64) * 64 - bits);
+                let x = x | (BigInt::one() << (bits - 1));
+                for v in [x.clone(), -x.clone()] {
+                    let shift = v.bits().saturating_sub(64);
+                    let top = (v.magnitude() >> shift).to_u64().expect("64 bits");
+                    let m = if v.is_negative() {
+                        -(top as f64)
+                    } else {
+                        top as f64
+                    };
+                    assert_eq!(approx(&v), Some((m, shift as i64)), "{v}");
+                }
+            }
+        }
+        assert_eq!(approx(&BigInt::zero()), None);
     }
 
     #[test]

@@ -151,15 +151,16 @@ fn subdivide(p: &[BigInt], pairs: bool, max_depth: u64) -> (Vec<UnitRoot>, Filte
         p_limbs: None,
     };
     let w = n + 1;
+    let binoms = binomials_f64(n);
     let mut blocks: Vec<f64> = Vec::with_capacity(w * 32);
-    let (root, _) = root_f64_coefficients(p, &mut blocks);
+    let (root, _) = root_f64_coefficients(p, &binoms, &mut blocks);
     // The root's signs are exact (those of the shifted coefficients): no variation, no root;
     // one, with non-zero ends, one root.
     if root.v == 0 {
         return (run.out, run.stats);
     }
     if root.v == 1 && root.lo != Sign::Zero && root.hi != Sign::Zero {
-        run.out.push(leaf_root(&BigInt::zero(), 0, blocks));
+        run.out.push(leaf_root(&BigInt::zero(), 0, blocks, &binoms));
         return (run.out, run.stats);
     }
     run.shifted = Some(root.shifted);
@@ -174,6 +175,11 @@ fn subdivide(p: &[BigInt], pairs: bool, max_depth: u64) -> (Vec<UnitRoot>, Filte
     while let Some(mut node) = stack.pop() {
         let base = stack.len() * w;
         debug_assert_eq!(blocks.len(), base + w);
+        // A right child (odd `c`) whose left end is a root: reported here, after the roots of
+        // its left sibling's subtree, so the roots come out in increasing order.
+        if node.lo == Sign::Zero && node.c.bit(0) {
+            run.out.push(UnitRoot::Exact(node.c.clone(), node.j));
+        }
         if node.j > max_depth {
             blocks.truncate(base);
             run.exact_subtree(&node);
@@ -207,7 +213,8 @@ fn subdivide(p: &[BigInt], pairs: bool, max_depth: u64) -> (Vec<UnitRoot>, Filte
             continue;
         }
         if v_max == 1 && ends {
-            run.out.push(leaf_root(&node.c, node.j, g.to_vec()));
+            run.out
+                .push(leaf_root(&node.c, node.j, g.to_vec(), &binoms));
             blocks.truncate(base);
             continue;
         }
@@ -235,9 +242,6 @@ fn subdivide(p: &[BigInt], pairs: bool, max_depth: u64) -> (Vec<UnitRoot>, Filte
             run.stats.exact_midpoints += 1;
             run.sign_at(&mid, node.j + 1)
         };
-        if s_mid == Sign::Zero {
-            run.out.push(UnitRoot::Exact(mid.clone(), node.j + 1));
-        }
         let e_right = renormalise(right, e);
         let e_left = renormalise(left, e);
         stack.push(Node {
@@ -362,7 +366,7 @@ struct Root {
 /// the exact coefficients of `(1 + y)^n p(1 / (1 + y))` (module documentation of `descartes`,
 /// one Taylor shift on limbs) and the binomials in `f64`, with no big-integer multiplier (the
 /// exact integer form is computed only when a node needs its exact coefficients); also `scale`.
-fn root_f64_coefficients(p: &[BigInt], blocks: &mut Vec<f64>) -> (Root, i64) {
+fn root_f64_coefficients(p: &[BigInt], binoms: &[f64], blocks: &mut Vec<f64>) -> (Root, i64) {
     let n = p.len() - 1;
     let start = blocks.len();
     let rev: Vec<BigInt> = p.iter().rev().cloned().collect();
@@ -381,10 +385,8 @@ fn root_f64_coefficients(p: &[BigInt], blocks: &mut Vec<f64>) -> (Root, i64) {
     bits.reverse();
     // c_(n-i) 2^-k, k the largest bit length, divided by C(n, i) (recurrence in f64).
     let k = push_scaled(bits, blocks);
-    let mut binom = 1.0f64;
-    for (i, g) in blocks[start..].iter_mut().enumerate() {
-        *g /= binom;
-        binom = binom * (n - i) as f64 / (i + 1) as f64;
+    for (g, b) in blocks[start..].iter_mut().zip(binoms) {
+        *g /= b;
     }
     // Into [1/2, 1): the largest value is at least 2^-1 / C(n, i) > 2^-1002.
     let m = max_abs(&blocks[start..]);

@@ -361,7 +361,7 @@ fn root_node_is_within_its_bound() {
         }
         let n = p.len() - 1;
         let mut g = Vec::new();
-        let (root, scale) = root_f64_coefficients(&p, &mut g);
+        let (root, scale) = root_f64_coefficients(&p, &binomials_f64(n), &mut g);
         // The exact values 2^scale c_(n-i) / C(n, i), c by the BigInt Taylor shift.
         let mut c: Vec<BigInt> = p.iter().rev().cloned().collect();
         taylor_shift_1(&mut c);
