@@ -1961,6 +1961,19 @@ mod unit_tests {
     }
 
     #[test]
+    fn word_contents_divide_out_of_big_coefficients() {
+        // 3 (x - 2^100) (x + 5): coefficients beyond i128 and a word content of 3 and 6.
+        let big: BigInt = BigInt::one() << 100u32;
+        for k in [3i64, -6] {
+            let k = BigInt::from(k);
+            let five = BigInt::from(5);
+            let p = [-(&big * &five) * &k, (&five - &big) * &k, k.clone()];
+            let q = square_free_integer(&p);
+            assert_eq!(q, vec![-(&big * &five), &five - &big, BigInt::one()]);
+        }
+    }
+
+    #[test]
     fn content_is_the_gcd() {
         let mut rng = Rng::new(99);
         for _ in 0..50 {
