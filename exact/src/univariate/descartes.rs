@@ -598,20 +598,6 @@ fn pair_roots(c: &BigInt, j: u64, (x, delta): (Dyadic, Option<f64>)) -> [UnitRoo
     ]
 }
 
-/// `2^k` as an `f64`, exactly (`inf` above the range, subnormals below `2^-1022`, `0` below
-/// `2^-1074`).
-fn pow2f(k: i64) -> f64 {
-    if k > 1023 {
-        f64::INFINITY
-    } else if k >= -1022 {
-        f64::from_bits(((k + 1023) as u64) << 52)
-    } else if k >= -1074 {
-        f64::from_bits(1u64 << (k + 1074))
-    } else {
-        0.0
-    }
-}
-
 /// An estimate `num / 2^exp + off` of a root of a unit problem: an exact dyadic (a node's end,
 /// or a pair's split point) and an `f64` offset (the leaf's estimate within its node, or the
 /// pair's half-distance), kept apart so that a root recognised as rational never pays for the
@@ -718,7 +704,7 @@ fn f64_shift(cs: &[BigInt]) -> u64 {
 fn scaled_f64(x: &BigInt, shift: u64) -> f64 {
     match approx(x) {
         None => 0.0,
-        Some((m, e)) => m * ((e - shift as i64) as f64).exp2(),
+        Some((m, e)) => m * pow2f(e - shift as i64),
     }
 }
 
@@ -1041,7 +1027,7 @@ impl<'a> PairSplitter<'a> {
     /// subdivision would not separate in a few levels).
     fn split(&self, c: &BigInt, j: u64, s: Sign) -> Option<(Dyadic, Option<f64>)> {
         let horner = |a: &[f64], x: f64| a.iter().rev().fold(0.0, |acc, &ai| acc * x + ai);
-        let scale = (-(j as f64)).exp2();
+        let scale = pow2f(-(j.min(2000) as i64));
         let (lo_f, hi_f) = (c.to_f64()? * scale, (c.to_f64()? + 1.0) * scale);
         let mut x = 0.5 * (lo_f + hi_f);
         let mut last = f64::INFINITY;
@@ -1072,7 +1058,7 @@ impl<'a> PairSplitter<'a> {
         // x as an exact dyadic, then exact Newton steps.
         let mut k: u64 = 60u64.max(j + 8);
         let mut xd = Dyadic {
-            num: BigInt::from((x * (k as f64).exp2()).round() as i128),
+            num: BigInt::from((x * pow2f(k as i64)).round() as i128),
             exp: k,
         };
         if !(xd.num > (c << (k - j)) && xd.num < ((c + 1) << (k - j))) {
@@ -1089,9 +1075,8 @@ impl<'a> PairSplitter<'a> {
                         // p / p'' = (m0 / m2) 2^(e0 - e2 - 2k).
                         let ex = e0 - e2 - 2 * k as i64;
                         let half_ex = ex.div_euclid(2);
-                        let odd = ex.rem_euclid(2) as f64;
-                        let d =
-                            (2.0 * (m0 / m2).abs() * odd.exp2()).sqrt() * (half_ex as f64).exp2();
+                        let odd = ex.rem_euclid(2);
+                        let d = (2.0 * (m0 / m2).abs() * pow2f(odd)).sqrt() * pow2f(half_ex);
                         (d.is_finite() && d > 0.0).then_some(d)
                     }
                     _ => None,
@@ -1193,17 +1178,30 @@ fn isolate_square_free(q: &[BigInt], opts: Options) -> Vec<Isolated> {
         Vec::new()
     };
     let rev_neg: Vec<BigInt> = neg.iter().rev().cloned().collect();
-    // The four unit problems: x = t, 1/t, -t, -1/t for t in (0, 1).
-    let mut sides: [Vec<Isolated>; 4] = Default::default();
-    for (which, p) in [q, &rev[..], &neg[..], &rev_neg[..]]
-        .into_iter()
-        .enumerate()
-    {
+    // The four unit problems x = t, 1/t, -t, -1/t for t in (0, 1), taken in increasing order of
+    // x: every subdivision lists its roots in increasing t, which -1/t and t keep and 1/t and
+    // -t reverse; the exact roots -1, 0 and 1 between them.
+    let mut out: Vec<Isolated> = Vec::with_capacity(n);
+    for which in [3, 2, 0, 1] {
+        let p: &[BigInt] = [q, &rev[..], &neg[..], &rev_neg[..]][which];
+        if which == 2 && minus_one {
+            out.push(exact(-Rational::ONE));
+        }
+        if which == 0 && q[0].is_zero() {
+            out.push(exact(Rational::ZERO));
+        }
+        if which == 1 && one {
+            out.push(exact(Rational::ONE));
+        }
         if (which < 2 && !positive) || (which >= 2 && !negative) {
             continue;
         }
         debug_assert_eq!(p.len(), n + 1);
-        for r in unit_roots(p, opts) {
+        let mut roots = unit_roots(p, opts);
+        if which == 1 || which == 2 {
+            roots.reverse();
+        }
+        for r in roots {
             let item = match r {
                 UnitRoot::Exact(c, j) => {
                     let x = dyadic(&c, j);
@@ -1238,26 +1236,9 @@ fn isolate_square_free(q: &[BigInt], opts: Options) -> Vec<Isolated> {
                     Isolated { ri, estimate }
                 }
             };
-            sides[which].push(item);
+            out.push(item);
         }
     }
-    // In increasing order when every unit problem lists its roots in increasing `t` (the
-    // subdivisions do): -1/t and t keep the order, 1/t and -t reverse it.
-    let [pos, inv_pos, negs, inv_negs] = sides;
-    let mut out: Vec<Isolated> = Vec::with_capacity(n + 3);
-    out.extend(inv_negs);
-    if minus_one {
-        out.push(exact(-Rational::ONE));
-    }
-    out.extend(negs.into_iter().rev());
-    if q[0].is_zero() {
-        out.push(exact(Rational::ZERO));
-    }
-    out.extend(pos);
-    if one {
-        out.push(exact(Rational::ONE));
-    }
-    out.extend(inv_pos.into_iter().rev());
     // Disjoint intervals and points: by the lower end, an exact root before the open interval
     // it bounds.
     let key =
@@ -1295,7 +1276,7 @@ impl Dyadic {
         if self.exp > 1000 || self.num.bits() > 1000 {
             return None;
         }
-        Some(self.num.to_f64()? * (-(self.exp as f64)).exp2())
+        Some(self.num.to_f64()? * pow2f(-(self.exp.min(2000) as i64)))
     }
 }
 
@@ -1349,7 +1330,7 @@ impl Refiner<'_> {
         if !s.is_finite() {
             return None;
         }
-        let bound = (3 * n + 6) as f64 * f64::EPSILON * s + (-1000f64).exp2();
+        let bound = (3 * n + 6) as f64 * f64::EPSILON * s + pow2f(-1000);
         if r > bound {
             Some(Sign::Positive)
         } else if r < -bound {
@@ -1459,7 +1440,7 @@ impl Refiner<'_> {
             }
         }
         // h = 2^-kk, the largest power of two with 4h <= w (h = 1 when w >= 4).
-        let scale = (kk as f64).exp2();
+        let scale = pow2f(kk as i64);
         let s_hi = sign_neg(s_lo);
         // The last exact evaluation (x, q(x) 2^(k n), q'(x) 2^(k (n-1))).
         let mut newton: Option<(Dyadic, BigInt, BigInt)> = None;
@@ -1479,7 +1460,7 @@ impl Refiner<'_> {
                 if let (Some((pm, pe)), Some((dm, de))) = (approx(&p), approx(&d)) {
                     let e = pe - de + kk as i64 - x.exp as i64;
                     if e < 62 {
-                        let t = (pm / dm) * (e as f64).exp2();
+                        let t = (pm / dm) * pow2f(e);
                         if t.abs() < 4.0e18 {
                             let g = (&x.num << (kk - x.exp)) - (t.round() as i64);
                             proposal = Some((t.abs(), g));

@@ -293,7 +293,7 @@ impl Limbs {
         let top = mags.iter().map(|&(_, _, t)| t).max().unwrap_or(0);
         mags.into_iter()
             .map(|(neg, v, t)| {
-                let x = v * (64.0 * (t as f64 - top as f64) - 64.0).exp2();
+                let x = v * super::pow2f(64 * (t as i64 - top as i64) - 64);
                 if neg {
                     -x
                 } else {

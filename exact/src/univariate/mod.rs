@@ -175,3 +175,17 @@ fn sign_neg(s: Sign) -> Sign {
         Sign::Positive => Sign::Negative,
     }
 }
+
+/// `2^k` as an `f64`, exactly (`inf` above the range, subnormals below `2^-1022`, `0` below
+/// `2^-1074`).
+pub(crate) fn pow2f(k: i64) -> f64 {
+    if k > 1023 {
+        f64::INFINITY
+    } else if k >= -1022 {
+        f64::from_bits(((k + 1023) as u64) << 52)
+    } else if k >= -1074 {
+        f64::from_bits(1u64 << (k + 1074))
+    } else {
+        0.0
+    }
+}

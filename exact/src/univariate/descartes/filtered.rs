@@ -143,7 +143,8 @@ fn subdivide(p: &[BigInt], pairs: bool, max_depth: u64) -> (Vec<UnitRoot>, Filte
     let mut run = Run {
         p,
         pairs,
-        out: Vec::new(),
+        // At most n roots: one allocation, no regrowth (the entries are large).
+        out: Vec::with_capacity(n),
         stats: FilterStats::default(),
         splitter: None,
         exact_nodes: HashMap::new(),
@@ -152,7 +153,8 @@ fn subdivide(p: &[BigInt], pairs: bool, max_depth: u64) -> (Vec<UnitRoot>, Filte
     };
     let w = n + 1;
     let binoms = binomials_f64(n);
-    let mut blocks: Vec<f64> = Vec::with_capacity(w * 32);
+    // Room for the blocks of a path of depth 7 (grown on demand below).
+    let mut blocks: Vec<f64> = Vec::with_capacity(w * 8);
     let (root, _) = root_f64_coefficients(p, &binoms, &mut blocks);
     // The root's signs are exact (those of the shifted coefficients): no variation, no root;
     // one, with non-zero ends, one root.
