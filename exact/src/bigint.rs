@@ -253,6 +253,37 @@ pub fn mul_1_add_in_place(acc: &mut [u64], x: &[u64], m: u64, sub: bool) {
     }
 }
 
+/// `(acc + x m) d^(-1)` (or `(acc - x m) d^(-1)` with `sub`) modulo `2^(64 len)`, in place, in
+/// one pass: [`mul_1_add_in_place`] then [`hensel_div_1_in_place`] fused, each limb of the sum
+/// divided as soon as it is final (both go from the least significant limb up). The step of
+/// synthetic division by a linear factor on fixed-width limbs.
+#[inline]
+pub fn mul_1_add_hensel_in_place(acc: &mut [u64], x: &[u64], m: u64, sub: bool, d: u64, inv: u64) {
+    debug_assert_eq!(acc.len(), x.len());
+    debug_assert!(d & 1 == 1 && d.wrapping_mul(inv) == 1);
+    let (mut carry, mut borrow, mut c) = (0u64, false, 0u64);
+    for (a, &w) in acc.iter_mut().zip(x) {
+        let p = u128::from(w) * u128::from(m) + u128::from(carry);
+        carry = (p >> 64) as u64;
+        let lo = p as u64;
+        let t = if sub {
+            let (d1, b1) = a.overflowing_sub(lo);
+            let (d2, b2) = d1.overflowing_sub(u64::from(borrow));
+            borrow = b1 | b2;
+            d2
+        } else {
+            let (s1, c1) = a.overflowing_add(lo);
+            let (s2, c2) = s1.overflowing_add(u64::from(borrow));
+            borrow = c1 | c2;
+            s2
+        };
+        let (l, b) = t.overflowing_sub(c);
+        let q = l.wrapping_mul(inv);
+        *a = q;
+        c = ((u128::from(q) * u128::from(d)) >> 64) as u64 + u64::from(b);
+    }
+}
+
 /// The fused pass of adding a word-sized rational to a big one (see
 /// [`crate::rational`]): for `g | b` and `g | d`, returns `t = ±A (d/g) ± (b/g) cm` (signs
 /// `an`, `cn`, as `(magnitude, negative)`) and `den = B (d/g)`, reading `A` and `B` once. The
@@ -464,6 +495,28 @@ mod tests {
             let mut got = acc.clone();
             mul_1_add_in_place(&mut got, &x, m, sub);
             prop_assert_eq!(signed(&got, false), expected);
+        }
+    }
+
+    proptest! {
+        /// The fused kernel is the composition of the two it fuses.
+        #[test]
+        fn prop_mul_1_add_hensel(
+            acc in prop::collection::vec(any::<u64>(), 1..8),
+            seed in any::<u64>(),
+            m in any::<u64>(),
+            sub in any::<bool>(),
+            d in arb_divisor(),
+        ) {
+            let d = d | 1;
+            let inv = inverse_mod_2_64(d);
+            let x: Vec<u64> = acc.iter().map(|&a| a.rotate_left(29) ^ seed).collect();
+            let mut expected = acc.clone();
+            mul_1_add_in_place(&mut expected, &x, m, sub);
+            hensel_div_1_in_place(&mut expected, d, inv);
+            let mut got = acc.clone();
+            mul_1_add_hensel_in_place(&mut got, &x, m, sub, d, inv);
+            prop_assert_eq!(got, expected);
         }
     }
 

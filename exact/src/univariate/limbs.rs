@@ -404,7 +404,10 @@ impl Limbs {
     /// element is unique), which fits when `w` is at least [`linear_factor_width`]`(a)`: no
     /// divisor is missed at that width.
     pub(super) fn divide_by_linear(&self, p: i64, q: i64) -> Option<Limbs> {
-        use crate::bigint::{hensel_div_1_in_place, inverse_mod_2_64, mul_1_add_in_place};
+        use crate::bigint::{
+            hensel_div_1_in_place, inverse_mod_2_64, mul_1_add_hensel_in_place, mul_1_add_in_place,
+            negate_twos_complement,
+        };
         let (w, len) = (self.w, self.len());
         assert!(
             q > 0 && p != 0 && len >= 2,
@@ -412,18 +415,16 @@ impl Limbs {
         );
         let n = len - 1;
         let (pm, qm) = (p.unsigned_abs(), q as u64);
-        let mut s = vec![0u64; n * w];
+        // The quotient's coefficients, each step one fused multiply-add and Hensel division.
+        let mut s;
         if qm & 1 == 1 {
             let inv = inverse_mod_2_64(qm);
-            // s_(k-1) = (a_k + p s_k) / q, s_n = 0.
-            for k in (1..=n).rev() {
+            // s_(k-1) = (a_k + p s_k) / q, s_n = 0 (s_(k-1) starts as a_k).
+            s = self.d[w..].to_vec();
+            hensel_div_1_in_place(&mut s[(n - 1) * w..], qm, inv);
+            for k in (1..n).rev() {
                 let (lo, hi) = s.split_at_mut(k * w);
-                let t = &mut lo[(k - 1) * w..];
-                t.copy_from_slice(self.get(k));
-                if k < n {
-                    mul_1_add_in_place(t, &hi[..w], pm, p < 0);
-                }
-                hensel_div_1_in_place(t, qm, inv);
+                mul_1_add_hensel_in_place(&mut lo[(k - 1) * w..], &hi[..w], pm, p < 0, qm, inv);
             }
             let mut r = self.get(0).to_vec();
             mul_1_add_in_place(&mut r, &s[..w], pm, p < 0);
@@ -433,19 +434,18 @@ impl Limbs {
         } else {
             debug_assert!(pm & 1 == 1, "p and q are coprime");
             let inv = inverse_mod_2_64(pm);
-            // s_k = (q s_(k-1) - a_k) / p, s_(-1) = 0.
-            for k in 0..n {
+            s = self.d[..n * w].to_vec();
+            // s_k = (q s_(k-1) - a_k) / p, s_(-1) = 0: for p > 0 as (-a_k + q s_(k-1)) / p,
+            // for p < 0 as (a_k - q s_(k-1)) / |p| (s_k starts as a_k, negated when p > 0).
+            if p > 0 {
+                for x in s.chunks_mut(w) {
+                    negate_twos_complement(x);
+                }
+            }
+            hensel_div_1_in_place(&mut s[..w], pm, inv);
+            for k in 1..n {
                 let (lo, hi) = s.split_at_mut(k * w);
-                let t = &mut hi[..w];
-                t.fill(0);
-                if k > 0 {
-                    mul_1_add_in_place(t, &lo[(k - 1) * w..], qm, false);
-                }
-                mul_1_add_in_place(t, self.get(k), 1, true);
-                hensel_div_1_in_place(t, pm, inv);
-                if p < 0 {
-                    super::super::bigint::negate_twos_complement(t);
-                }
+                mul_1_add_hensel_in_place(&mut hi[..w], &lo[(k - 1) * w..], qm, p < 0, pm, inv);
             }
             let mut r = self.get(n).to_vec();
             mul_1_add_in_place(&mut r, &s[(n - 1) * w..], qm, true);
