@@ -1888,17 +1888,22 @@ mod unit_tests {
                 );
             }
         }
-        // The Taylor shift on limbs is the BigInt one.
-        for n in [8usize, 20, 57] {
+        // The Taylor shift on limbs is the BigInt one (widths 1, 2, 3, 4 and 6 limbs: the
+        // fixed-width kernels and the general loop).
+        let mut widths = Vec::new();
+        for n in [8usize, 20, 40, 57, 90] {
             let c: Vec<BigInt> = (0..=n)
                 .map(|i| (BigInt::from(i as i64 * 977 - 20_000) << (i * 3)) - 5)
                 .collect();
             let mut reference = c.clone();
             taylor_shift_1(&mut reference);
             let mut l = Limbs::from_bigints_with_room(&c, n + 1);
+            let w = l.width();
             l.taylor_shift_1();
-            assert_eq!(l.to_bigints(), reference);
+            assert_eq!(l.to_bigints(), reference, "width {w}");
+            widths.push(w);
         }
+        assert_eq!(widths, [1, 2, 3, 4, 6]);
         // The multipliers L / C(n, i) by the recurrence equal the lcm of the binomials over
         // each binomial.
         for n in [1usize, 6, 30, 61] {

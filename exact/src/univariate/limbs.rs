@@ -36,6 +36,34 @@ fn add_assign(a: &mut [u64], b: &[u64]) {
     }
 }
 
+/// [`Limbs::taylor_shift_1`] on numbers of exactly `W` limbs.
+fn taylor_shift_fixed<const W: usize>(d: &mut [u64]) {
+    debug_assert_eq!(d.len() % W, 0);
+    // On a copy as W-limb arrays (values, so the loop indexes without aliasing questions).
+    let mut a: Vec<[u64; W]> = d
+        .chunks_exact(W)
+        .map(|c| c.try_into().expect("W limbs"))
+        .collect();
+    let n = a.len() - 1;
+    for i in 0..n {
+        // a_j += a_(j+1) from the top down: the new a_(j+1) is the previous step's x.
+        let mut y = a[n];
+        for x in a[i..n].iter_mut().rev() {
+            let mut carry = false;
+            for t in 0..W {
+                let (s1, c1) = x[t].overflowing_add(y[t]);
+                let (s2, c2) = s1.overflowing_add(u64::from(carry));
+                x[t] = s2;
+                carry = c1 | c2;
+            }
+            y = *x;
+        }
+    }
+    for (c, x) in d.chunks_exact_mut(W).zip(&a) {
+        c.copy_from_slice(x);
+    }
+}
+
 /// `dst = src << s` (same length, the bits above dropped).
 #[inline]
 fn shl_into(dst: &mut [u64], src: &[u64], s: usize) {
@@ -138,6 +166,12 @@ impl Limbs {
             .collect()
     }
 
+    /// The limbs per number.
+    #[cfg(test)]
+    pub(super) fn width(&self) -> usize {
+        self.w
+    }
+
     /// How many numbers.
     pub(super) fn len(&self) -> usize {
         self.d.len() / self.w
@@ -205,12 +239,20 @@ impl Limbs {
     /// `n(n+1)/2` additions; the caller leaves room for `n` more bits
     /// ([`Limbs::from_bigints_with_room`]).
     pub(super) fn taylor_shift_1(&mut self) {
-        let w = self.w;
-        let n = self.len() - 1;
-        for i in 0..n {
-            for j in (i..n).rev() {
-                let (lo, hi) = self.d.split_at_mut((j + 1) * w);
-                add_assign(&mut lo[j * w..], &hi[..w]);
+        // The usual widths with the limb count known to the compiler (carry chains unrolled).
+        match self.w {
+            1 => taylor_shift_fixed::<1>(&mut self.d),
+            2 => taylor_shift_fixed::<2>(&mut self.d),
+            3 => taylor_shift_fixed::<3>(&mut self.d),
+            4 => taylor_shift_fixed::<4>(&mut self.d),
+            w => {
+                let n = self.len() - 1;
+                for i in 0..n {
+                    for j in (i..n).rev() {
+                        let (lo, hi) = self.d.split_at_mut((j + 1) * w);
+                        add_assign(&mut lo[j * w..], &hi[..w]);
+                    }
+                }
             }
         }
     }
