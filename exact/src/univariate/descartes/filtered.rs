@@ -166,7 +166,8 @@ fn subdivide(p: &[BigInt], pairs: bool, max_depth: u64) -> (Vec<UnitRoot>, Filte
         return (run.out, run.stats);
     }
     run.shifted = Some(root.shifted);
-    let mut work = vec![0.0f64; w];
+    // The parent's coefficients and a second row for de Casteljau's triangle.
+    let mut work = vec![0.0f64; 2 * w];
     let mut stack = vec![Node {
         c: BigInt::zero(),
         j: 0,
@@ -230,7 +231,7 @@ fn subdivide(p: &[BigInt], pairs: bool, max_depth: u64) -> (Vec<UnitRoot>, Filte
         }
         // Split: the right child in the parent's block, the left one in a new block above.
         run.stats.splits += 1;
-        work.copy_from_slice(&blocks[base..]);
+        work[..w].copy_from_slice(&blocks[base..]);
         blocks.resize(base + 2 * w, 0.0);
         let (right, left) = blocks[base..].split_at_mut(w);
         de_casteljau_half(&mut work, left, right);
@@ -465,19 +466,24 @@ fn sign_f64(x: f64) -> Sign {
     }
 }
 
-/// de Casteljau at `1/2` with the halvings on `work` (destroyed): `left_k = T^(k)_0`,
-/// `right_(n-k) = T^(k)_(n-k)`.
+/// de Casteljau at `1/2` with the halvings, from the coefficients in the first half of `work`
+/// (both halves destroyed: each level of the triangle is written to the other half, a loop
+/// without aliasing that the compiler vectorizes): `left_k = T^(k)_0`, `right_(n-k) =
+/// T^(k)_(n-k)`.
 fn de_casteljau_half(work: &mut [f64], left: &mut [f64], right: &mut [f64]) {
-    let n = work.len() - 1;
-    left[0] = work[0];
-    right[n] = work[n];
+    let w = work.len() / 2;
+    let n = w - 1;
+    let (mut cur, mut next) = work.split_at_mut(w);
+    left[0] = cur[0];
+    right[n] = cur[n];
     for k in 1..=n {
-        let row = &mut work[..=n - k + 1];
-        for i in 0..row.len() - 1 {
-            row[i] = 0.5 * (row[i] + row[i + 1]);
+        let m = n - k + 1;
+        for (t, pair) in next[..m].iter_mut().zip(cur[..=m].windows(2)) {
+            *t = 0.5 * (pair[0] + pair[1]);
         }
-        left[k] = work[0];
-        right[n - k] = work[n - k];
+        left[k] = next[0];
+        right[n - k] = next[n - k];
+        std::mem::swap(&mut cur, &mut next);
     }
 }
 

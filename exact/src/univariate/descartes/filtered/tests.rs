@@ -424,6 +424,7 @@ fn a_split_stays_within_its_bound() {
             .collect();
         let m = max_abs(&g);
         let mut work = g.clone();
+        work.resize(2 * (n + 1), 0.0);
         let (mut left, mut right) = (vec![0.0; n + 1], vec![0.0; n + 1]);
         de_casteljau_half(&mut work, &mut left, &mut right);
         let nf = (n + 1) as f64;
