@@ -813,33 +813,39 @@ fn bernstein_root_estimate(mut g: Vec<f64>, binoms: &[f64]) -> Option<f64> {
     Some(0.5 * (a + c))
 }
 
-/// The continued-fraction convergents `p / q` of `x` with `0 < q <= 2^40` (at most 64).
-fn convergents(x: f64) -> Vec<(i64, i64)> {
-    let mut out = Vec::new();
-    if !x.is_finite() || x.abs() > 1e15 {
-        return out;
-    }
+/// The continued-fraction convergents `p / q` of `x` with `0 < q <= 2^40` (at most 64), lazily
+/// (the caller usually stops at the first that passes its tests; no allocation).
+fn convergents(x: f64) -> impl Iterator<Item = (i64, i64)> {
     let (mut h1, mut h2, mut k1, mut k2) = (1i128, 0i128, 0i128, 1i128);
     let mut y = x;
-    for _ in 0..64 {
+    let mut left = if !x.is_finite() || x.abs() > 1e15 {
+        0
+    } else {
+        64
+    };
+    std::iter::from_fn(move || {
+        if left == 0 {
+            return None;
+        }
+        left -= 1;
         let a = y.floor();
         // Saturating; |h1|, k1 <= 2^62 keep the products inside i128.
         let ai = i128::from(a as i64);
         let (h, k) = (ai * h1 + h2, ai * k1 + k2);
         if k > 1 << 40 || h.abs() > 1 << 62 {
-            break;
+            left = 0;
+            return None;
         }
         // Word-sized now: the conversions to f64 are single instructions.
         let (h64, k64) = (h as i64, k as i64);
-        out.push((h64, k64));
         let frac = y - a;
         if frac <= 0.0 || (h64 as f64 / k64 as f64 - x).abs() <= 2.0 * f64::EPSILON * x.abs() {
-            break;
+            left = 0;
         }
         y = 1.0 / frac;
         (h2, h1, k2, k1) = (h1, h, k1, k);
-    }
-    out
+        Some((h64, k64))
+    })
 }
 
 /// `x mod m` for `m > 0` (non-negative).
@@ -2150,7 +2156,12 @@ mod unit_tests {
         assert!(linear_factor_divides(&c, -1, 3));
         assert!(linear_factor_divides(&c, 1, 1));
         assert!(!linear_factor_divides(&c, 1, 3));
-        assert_eq!(convergents(0.75), vec![(0, 1), (1, 1), (3, 4)]);
+        assert_eq!(
+            convergents(0.75).collect::<Vec<_>>(),
+            vec![(0, 1), (1, 1), (3, 4)]
+        );
+        assert_eq!(convergents(f64::NAN).count(), 0);
+        assert_eq!(convergents(2.0).collect::<Vec<_>>(), vec![(2, 1)]);
     }
 
     /// The Bernstein form from the shifted limbs equals the `BigInt` one, with word
