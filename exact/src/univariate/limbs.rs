@@ -202,7 +202,9 @@ impl Limbs {
             } else {
                 0
             };
-            d.extend(x.iter().copied().chain(std::iter::repeat(fill)).take(w));
+            let keep = w.min(self.w);
+            d.extend_from_slice(&x[..keep]);
+            d.resize(d.len() + (w - keep), fill);
         }
         Limbs { w, d }
     }
