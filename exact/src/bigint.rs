@@ -233,23 +233,29 @@ pub fn hensel_div_1_in_place(x: &mut [u64], d: u64, inv: u64) {
 #[inline]
 pub fn mul_1_add_in_place(acc: &mut [u64], x: &[u64], m: u64, sub: bool) {
     debug_assert_eq!(acc.len(), x.len());
-    let mut carry = 0u64;
-    let mut borrow = false;
+    let (mut carry, mut borrow) = (0u64, false);
     for (a, &w) in acc.iter_mut().zip(x) {
-        let p = u128::from(w) * u128::from(m) + u128::from(carry);
-        carry = (p >> 64) as u64;
-        let lo = p as u64;
-        if sub {
-            let (d1, b1) = a.overflowing_sub(lo);
-            let (d2, b2) = d1.overflowing_sub(u64::from(borrow));
-            *a = d2;
-            borrow = b1 | b2;
-        } else {
-            let (s1, c1) = a.overflowing_add(lo);
-            let (s2, c2) = s1.overflowing_add(u64::from(borrow));
-            *a = s2;
-            borrow = c1 | c2;
-        }
+        *a = mul_add_limb(*a, w, m, sub, &mut carry, &mut borrow);
+    }
+}
+
+/// One limb of `acc ± x m`: `a ± (w m + carry mod 2^64) ± borrow`, the multiplication's carry
+/// and the addition's (subtraction's) carry (borrow) updated for the next limb.
+#[inline(always)]
+fn mul_add_limb(a: u64, w: u64, m: u64, sub: bool, carry: &mut u64, borrow: &mut bool) -> u64 {
+    let p = u128::from(w) * u128::from(m) + u128::from(*carry);
+    *carry = (p >> 64) as u64;
+    let lo = p as u64;
+    if sub {
+        let (d1, b1) = a.overflowing_sub(lo);
+        let (d2, b2) = d1.overflowing_sub(u64::from(*borrow));
+        *borrow = b1 | b2;
+        d2
+    } else {
+        let (s1, c1) = a.overflowing_add(lo);
+        let (s2, c2) = s1.overflowing_add(u64::from(*borrow));
+        *borrow = c1 | c2;
+        s2
     }
 }
 
@@ -263,20 +269,7 @@ pub fn mul_1_add_hensel_in_place(acc: &mut [u64], x: &[u64], m: u64, sub: bool, 
     debug_assert!(d & 1 == 1 && d.wrapping_mul(inv) == 1);
     let (mut carry, mut borrow, mut c) = (0u64, false, 0u64);
     for (a, &w) in acc.iter_mut().zip(x) {
-        let p = u128::from(w) * u128::from(m) + u128::from(carry);
-        carry = (p >> 64) as u64;
-        let lo = p as u64;
-        let t = if sub {
-            let (d1, b1) = a.overflowing_sub(lo);
-            let (d2, b2) = d1.overflowing_sub(u64::from(borrow));
-            borrow = b1 | b2;
-            d2
-        } else {
-            let (s1, c1) = a.overflowing_add(lo);
-            let (s2, c2) = s1.overflowing_add(u64::from(borrow));
-            borrow = c1 | c2;
-            s2
-        };
+        let t = mul_add_limb(*a, w, m, sub, &mut carry, &mut borrow);
         let (l, b) = t.overflowing_sub(c);
         let q = l.wrapping_mul(inv);
         *a = q;
