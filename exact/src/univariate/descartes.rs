@@ -257,38 +257,31 @@ fn content(q: &[BigInt]) -> BigInt {
 
 /// The primitive square-free part with a positive leading coefficient, as integers.
 fn square_free_integer(coeffs: &[BigInt]) -> Vec<BigInt> {
-    let mut q: Vec<BigInt> = coeffs.to_vec();
-    let g = content(&q);
-    if !g.is_one() {
-        match g.to_u64() {
-            // A word content (the usual case): exact division by a word, on `i128` when the
-            // coefficient fits, by Jebelean's exact division on its limbs otherwise.
-            Some(w) => {
-                for c in &mut q {
-                    *c = match c.to_i128() {
-                        Some(v) => BigInt::from(v / i128::from(w)),
-                        None => {
-                            let m = crate::bigint::divexact_1(&c.magnitude().to_u64_digits(), w);
-                            let m = BigInt::from(crate::bigint::biguint_from_limbs(&m));
-                            if c.is_negative() {
-                                -m
-                            } else {
-                                m
-                            }
-                        }
-                    };
+    let g = content(coeffs);
+    let mut q: Vec<BigInt> = match g.to_u64() {
+        Some(1) => coeffs.to_vec(),
+        // A word content (the usual case): exact division by a word, on `i128` when the
+        // coefficient fits, by Jebelean's exact division on its limbs otherwise.
+        Some(w) => coeffs
+            .iter()
+            .map(|c| match c.to_i128() {
+                Some(v) => BigInt::from(v / i128::from(w)),
+                None => {
+                    let m = crate::bigint::divexact_1(&c.magnitude().to_u64_digits(), w);
+                    let m = BigInt::from(crate::bigint::biguint_from_limbs(&m));
+                    if c.is_negative() {
+                        -m
+                    } else {
+                        m
+                    }
                 }
-            }
-            None => {
-                for c in &mut q {
-                    *c /= &g;
-                }
-            }
-        }
-    }
+            })
+            .collect(),
+        None => coeffs.iter().map(|c| c / &g).collect(),
+    };
     if q.last().is_some_and(|c| c.is_negative()) {
         for c in &mut q {
-            *c = -&*c;
+            *c = -std::mem::take(c);
         }
     }
     if q.len() <= 2 || is_square_free_mod_p(&q) {
@@ -850,6 +843,10 @@ fn convergents(x: f64) -> impl Iterator<Item = (i64, i64)> {
 
 /// `x mod m` for `m > 0` (non-negative).
 fn rem_small(x: &BigInt, m: u64) -> u64 {
+    // Up to 128 bits without copying the limbs.
+    if let Some(v) = x.magnitude().to_u128() {
+        return (v % u128::from(m)) as u64;
+    }
     crate::bigint::rem_1(&x.magnitude().to_u64_digits(), m)
 }
 
