@@ -125,6 +125,8 @@ struct Node {
     c: BigInt,
     j: u64,
     e: f64,
+    /// The largest magnitude of the block (known from the split that made it).
+    m: f64,
     lo: Sign,
     hi: Sign,
 }
@@ -172,6 +174,7 @@ fn subdivide(p: &[BigInt], pairs: bool, max_depth: u64) -> (Vec<UnitRoot>, Filte
         c: BigInt::zero(),
         j: 0,
         e: root.e,
+        m: max_abs(&blocks),
         lo: root.lo,
         hi: root.hi,
     }];
@@ -188,7 +191,8 @@ fn subdivide(p: &[BigInt], pairs: bool, max_depth: u64) -> (Vec<UnitRoot>, Filte
             run.exact_subtree(&node);
             continue;
         }
-        let mut m = max_abs(&blocks[base..]);
+        let mut m = node.m;
+        debug_assert_eq!(m.to_bits(), max_abs(&blocks[base..]).to_bits());
         let ends = node.lo != Sign::Zero && node.hi != Sign::Zero;
         let v_max = loop {
             let g = &blocks[base..];
@@ -245,12 +249,13 @@ fn subdivide(p: &[BigInt], pairs: bool, max_depth: u64) -> (Vec<UnitRoot>, Filte
             run.stats.exact_midpoints += 1;
             run.sign_at(&mid, node.j + 1)
         };
-        let e_right = renormalise(right, e);
-        let e_left = renormalise(left, e);
+        let (e_right, m_right) = renormalise(right, e);
+        let (e_left, m_left) = renormalise(left, e);
         stack.push(Node {
             c: mid,
             j: node.j + 1,
             e: e_right,
+            m: m_right,
             lo: s_mid,
             hi: node.hi,
         });
@@ -258,6 +263,7 @@ fn subdivide(p: &[BigInt], pairs: bool, max_depth: u64) -> (Vec<UnitRoot>, Filte
             c: c2,
             j: node.j + 1,
             e: e_left,
+            m: m_left,
             lo: node.lo,
             hi: s_mid,
         });
@@ -489,11 +495,12 @@ fn de_casteljau_half(work: &mut [f64], left: &mut [f64], right: &mut [f64]) {
 
 /// Scales `g` by the power of two that brings its largest magnitude into `[1/2, 1)` when it
 /// is below `1/2` (and not so small that the node falls back anyway), and returns `e` scaled
-/// alike. Exact: the factor is at least 1 and no value reaches 1.
-fn renormalise(g: &mut [f64], e: f64) -> f64 {
+/// alike and the largest magnitude after the scaling. Exact: the factor is at least 1 and no
+/// value reaches 1.
+fn renormalise(g: &mut [f64], e: f64) -> (f64, f64) {
     let m = max_abs(g);
     if !(m < 0.5 && m >= pow2f(-600)) {
-        return e;
+        return (e, m);
     }
     let biased = ((m.to_bits() >> 52) & 0x7ff) as i64;
     // m in [2^(biased - 1023), 2^(biased - 1022)): times 2^(1022 - biased) in [1/2, 1).
@@ -501,7 +508,7 @@ fn renormalise(g: &mut [f64], e: f64) -> f64 {
     for x in g.iter_mut() {
         *x *= f;
     }
-    e * f
+    (e * f, m * f)
 }
 
 /// The largest number of sign changes of `lo, mid..., hi` (zeros skipped) over every sign

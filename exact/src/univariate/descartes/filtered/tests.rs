@@ -440,7 +440,8 @@ fn a_split_stays_within_its_bound() {
             // Renormalisation scales values and bound by one power of two, at least 1, and
             // leaves the largest value below 1.
             let mut scaled = half.clone();
-            let es = renormalise(&mut scaled, e);
+            let (es, ms) = renormalise(&mut scaled, e);
+            assert_eq!(ms, max_abs(&scaled));
             let Some(i) = half.iter().position(|&x| x != 0.0) else {
                 continue;
             };
