@@ -56,8 +56,9 @@
 //! * `V_max = 0`: no root in the node;
 //! * `V_max = 1`, non-zero ends: `V = 1`, an isolating leaf (its root estimate from the node's
 //!   `g` directly, [`bernstein_root_estimate`]);
-//! * `V_max = 2`, equal non-zero ends, depth at least 2: the close-pair attempt (exact,
-//!   [`PairSplitter`]; it needs only `V <= 2`);
+//! * `V_max = 2`, equal non-zero ends, depth at least 2, and the parent's `V_max` was 2 as
+//!   well (both variations survived a split: a pair that one split separates never pays for
+//!   the attempt): the close-pair attempt (exact, [`PairSplitter`]; it needs only `V <= 2`);
 //! * otherwise a split. The split's middle value `g` (the children's shared end) is its exact
 //!   sign when `|g| > E_child`; otherwise `p` is evaluated exactly at the dyadic midpoint
 //!   `m / 2^(j+1)`, `m = 2c + 1` (the sign of `sum a_i m^i 2^((j+1)(n-i))`), and a zero is an
@@ -127,6 +128,8 @@ struct Node {
     e: f64,
     /// The largest magnitude of the block (known from the split that made it).
     m: f64,
+    /// The parent's `V_max` was 2.
+    parent_v2: bool,
     lo: Sign,
     hi: Sign,
 }
@@ -175,6 +178,7 @@ fn subdivide(p: &[BigInt], pairs: bool, max_depth: u64) -> (Vec<UnitRoot>, Filte
         j: 0,
         e: root.e,
         m: max_abs(&blocks),
+        parent_v2: false,
         lo: root.lo,
         hi: root.hi,
     }];
@@ -225,7 +229,7 @@ fn subdivide(p: &[BigInt], pairs: bool, max_depth: u64) -> (Vec<UnitRoot>, Filte
             blocks.truncate(base);
             continue;
         }
-        if run.pairs && v_max == 2 && node.j >= 2 && ends && node.lo == node.hi {
+        if run.pairs && v_max == 2 && node.parent_v2 && node.j >= 2 && ends && node.lo == node.hi {
             let splitter = run.splitter.get_or_insert_with(|| PairSplitter::new(p));
             if let Some(split) = splitter.split(&node.c, node.j, node.lo) {
                 run.out.extend(pair_roots(&node.c, node.j, split));
@@ -256,6 +260,7 @@ fn subdivide(p: &[BigInt], pairs: bool, max_depth: u64) -> (Vec<UnitRoot>, Filte
             j: node.j + 1,
             e: e_right,
             m: m_right,
+            parent_v2: v_max == 2,
             lo: s_mid,
             hi: node.hi,
         });
@@ -264,6 +269,7 @@ fn subdivide(p: &[BigInt], pairs: bool, max_depth: u64) -> (Vec<UnitRoot>, Filte
             j: node.j + 1,
             e: e_left,
             m: m_left,
+            parent_v2: v_max == 2,
             lo: node.lo,
             hi: s_mid,
         });
