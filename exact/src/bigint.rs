@@ -28,10 +28,11 @@
 //!   `mpn_divexact_1`: the quotient is produced from the least significant limb upwards as
 //!   `q_i = (x_i - borrow) * d^(-1) mod 2^64` — multiplications only; the factor `2^s` of an
 //!   even divisor is shifted out on the fly.
-//! * **Fixed-width ring operations** ([`hensel_div_1_in_place`], [`mul_1_add_in_place`]):
-//!   the same Jebelean step and a multiply-accumulate by a word, modulo `2^(64 len)` on two's
-//!   complement numbers, for the synthetic division of `univariate::limbs` (exactness is
-//!   certified there by a size argument, not by the kernels).
+//! * **Fixed-width ring operations** ([`hensel_div_1_in_place`], [`mul_1_add_in_place`], and
+//!   the two fused in one pass, [`mul_1_add_hensel_in_place`]): the same Jebelean step and a
+//!   multiply-accumulate by a word, modulo `2^(64 len)` on two's complement numbers, for the
+//!   synthetic division of `univariate::limbs` (exactness is certified there by a size
+//!   argument, not by the kernels).
 //! * **The fused addition pass** ([`add_word_pass`]): one pass over both big operands computes
 //!   the exact quotient `b/g` limb by limb, the linear combination `a (d/g) ± c (b/g)` with a
 //!   signed two-limb carry (negated by a two's-complement pass when the result is negative),
@@ -189,11 +190,7 @@ pub fn divexact_1(x: &[u64], d: u64) -> Vec<u64> {
     let inv = inverse_mod_2_64(odd);
     let mut out = vec![0u64; x.len()];
     let mut c = 0u64;
-    let mut step = |y: u64, q: &mut u64| {
-        let (l, borrow) = y.overflowing_sub(c);
-        *q = l.wrapping_mul(inv);
-        c = ((u128::from(*q) * u128::from(odd)) >> 64) as u64 + u64::from(borrow);
-    };
+    let mut step = |y: u64, q: &mut u64| *q = hensel_limb(y, &mut c, odd, inv);
     if s == 0 {
         for (q, &w) in out.iter_mut().zip(x) {
             step(w, q);
@@ -221,11 +218,19 @@ pub fn hensel_div_1_in_place(x: &mut [u64], d: u64, inv: u64) {
     debug_assert!(d & 1 == 1 && d.wrapping_mul(inv) == 1);
     let mut c = 0u64;
     for w in x.iter_mut() {
-        let (l, borrow) = w.overflowing_sub(c);
-        let q = l.wrapping_mul(inv);
-        *w = q;
-        c = ((u128::from(q) * u128::from(d)) >> 64) as u64 + u64::from(borrow);
+        *w = hensel_limb(*w, &mut c, d, inv);
     }
+}
+
+/// One limb of Jebelean's exact (Hensel) division by the odd `d` (`inv = d^(-1) mod 2^64`):
+/// the quotient limb `q = (y - c) inv mod 2^64` of the limb `y` less the running borrow `c`,
+/// and the borrow into the next limb, `floor(q d / 2^64)` plus the subtraction's own.
+#[inline(always)]
+fn hensel_limb(y: u64, c: &mut u64, d: u64, inv: u64) -> u64 {
+    let (l, borrow) = y.overflowing_sub(*c);
+    let q = l.wrapping_mul(inv);
+    *c = ((u128::from(q) * u128::from(d)) >> 64) as u64 + u64::from(borrow);
+    q
 }
 
 /// `acc + x m` (or `acc - x m` with `sub`) modulo `2^(64 len)`, in place, for equal-length
@@ -270,10 +275,7 @@ pub fn mul_1_add_hensel_in_place(acc: &mut [u64], x: &[u64], m: u64, sub: bool, 
     let (mut carry, mut borrow, mut c) = (0u64, false, 0u64);
     for (a, &w) in acc.iter_mut().zip(x) {
         let t = mul_add_limb(*a, w, m, sub, &mut carry, &mut borrow);
-        let (l, b) = t.overflowing_sub(c);
-        let q = l.wrapping_mul(inv);
-        *a = q;
-        c = ((u128::from(q) * u128::from(d)) >> 64) as u64 + u64::from(b);
+        *a = hensel_limb(t, &mut c, d, inv);
     }
 }
 

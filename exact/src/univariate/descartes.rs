@@ -47,7 +47,8 @@
 //!    n + 1` bits, which no entry of the triangle can exceed (module `limbs`). The `BigInt`
 //!    kernels are kept ([`split_half`], `taylor_shift_1`) and the tests assert equality.
 //! 6. **Close pairs.** On a node with `V = 2` whose end values have the same sign `s` (depth at
-//!    least 2), a point `c` strictly inside with `sgn q(c) = -s` separates the node: each half
+//!    least 2, and its parent's `V` was 2 as well: both variations survived a split, so a pair
+//!    that one split separates never pays for the attempt), a point `c` strictly inside with `sgn q(c) = -s` separates the node: each half
 //!    has a sign change at its ends, hence a root, and the node has at most `V = 2` roots, so
 //!    each half holds exactly one and is an isolating interval. `c` is sought as the critical
 //!    point between the pair: Newton's method on `q'` in `f64` from the middle (abandoned when
@@ -522,8 +523,14 @@ fn unit_roots_from<C: NodeCoeffs>(
     let mut out = Vec::new();
     let mut pair_splitter: Option<PairSplitter> = None;
     let binoms = binomials_f64(b.degree());
-    let mut stack = vec![(b, start.0, start.1)];
-    while let Some((b, c, j)) = stack.pop() {
+    // (node, c, j, the parent's V was 2, the left end is a split point that is a root).
+    let mut stack = vec![(b, start.0, start.1, false, false)];
+    while let Some((b, c, j, parent_v2, left_root)) = stack.pop() {
+        // Reported after the roots of the left sibling's subtree: the roots come out in
+        // increasing order.
+        if left_root {
+            out.push(UnitRoot::Exact(c.clone(), j));
+        }
         let v = b.variations();
         if v == 0 {
             continue;
@@ -534,7 +541,7 @@ fn unit_roots_from<C: NodeCoeffs>(
             out.push(leaf_root(&c, j, b.scaled_f64s(), &binoms));
             continue;
         }
-        if pairs && v == 2 && j >= 2 && s0 != Sign::Zero && s0 == sn {
+        if pairs && v == 2 && parent_v2 && j >= 2 && s0 != Sign::Zero && s0 == sn {
             let splitter = pair_splitter.get_or_insert_with(|| PairSplitter::new(p));
             if let Some(split) = splitter.split(&c, j, s0) {
                 out.extend(pair_roots(&c, j, split));
@@ -543,11 +550,9 @@ fn unit_roots_from<C: NodeCoeffs>(
         }
         let (left, right) = b.halves();
         let c2: BigInt = &c << 1;
-        if right.sign_at(0) == Sign::Zero {
-            out.push(UnitRoot::Exact(&c2 + 1, j + 1));
-        }
-        stack.push((right, &c2 + 1, j + 1));
-        stack.push((left, c2, j + 1));
+        let mid_root = right.sign_at(0) == Sign::Zero;
+        stack.push((right, &c2 + 1, j + 1, v == 2, mid_root));
+        stack.push((left, c2, j + 1, v == 2, false));
     }
     out
 }
@@ -721,7 +726,7 @@ fn binomials_f64(n: usize) -> Vec<f64> {
 /// `B(t) / (1 - t)^n = sum b_i C(n, i) s^i`, `s = t / (1 - t)`, for `t <= 1/2` and on
 /// `B(t) / t^n` (Horner in `(1 - t) / t`) above, a smooth function with the sign of `B`
 /// evaluated with every power at most 1, from the control polygon's crossing of the axis.
-/// Only a candidate generator for [`recognise_rational`] and the refinement's first window
+/// Only a candidate generator for [`RationalRoots::recognise`] and the refinement's first window
 /// (nothing is decided on it); `None` beyond degree 1000 (the binomials leave the `f64` range).
 fn bernstein_root_estimate(mut g: Vec<f64>, binoms: &[f64]) -> Option<f64> {
     let n = g.len().checked_sub(1)?;
@@ -1137,7 +1142,7 @@ fn root_bound(q: &[BigInt]) -> Rational {
 }
 
 /// An isolating interval with an estimate of its root when there is one (for
-/// [`recognise_rational`] and the first window of the refinement).
+/// [`RationalRoots::recognise`] and the first window of the refinement).
 struct Isolated {
     ri: RootInterval,
     estimate: Option<Estimate>,
@@ -1642,7 +1647,7 @@ pub fn integer_real_roots_to(
 struct Options {
     /// Close pairs split at a point of opposite sign ([`PairSplitter`]).
     pairs: bool,
-    /// Rational roots recognised from the leaf estimates ([`recognise_rational`]).
+    /// Rational roots recognised from the leaf estimates ([`RationalRoots`]).
     rationals: bool,
     /// The refinement starts with a window of the target width around the estimate.
     windows: bool,

@@ -49,13 +49,7 @@ fn taylor_shift_fixed<const W: usize>(d: &mut [u64]) {
         // a_j += a_(j+1) from the top down: the new a_(j+1) is the previous step's x.
         let mut y = a[n];
         for x in a[i..n].iter_mut().rev() {
-            let mut carry = false;
-            for t in 0..W {
-                let (s1, c1) = x[t].overflowing_add(y[t]);
-                let (s2, c2) = s1.overflowing_add(u64::from(carry));
-                x[t] = s2;
-                carry = c1 | c2;
-            }
+            add_assign(x, &y);
             y = *x;
         }
     }
@@ -435,7 +429,8 @@ impl Limbs {
     /// width.
     ///
     /// Synthetic division in the ring `Z / 2^(64 w)`, where every step is a multiply-add by a
-    /// word and a Hensel division ([`crate::bigint::hensel_div_1_in_place`]): by `q` from the
+    /// word and a Hensel division, fused in one pass
+    /// ([`crate::bigint::mul_1_add_hensel_in_place`]): by `q` from the
     /// top (`s_(n-1) = a_n / q`, `s_(k-1) = (a_k + p s_k) / q`, then `a_0 + p s_0 = 0` checked)
     /// when `q` is odd, else by `-p` from the bottom (`s_0 = a_0 / (-p)`,
     /// `s_k = (q s_(k-1) - a_k) / p`, then `q s_(n-1) = a_n` checked); `p` and `q` are coprime,

@@ -177,15 +177,7 @@ fn sign_neg(s: Sign) -> Sign {
 }
 
 /// `2^k` as an `f64`, exactly (`inf` above the range, subnormals below `2^-1022`, `0` below
-/// `2^-1074`).
-pub(crate) fn pow2f(k: i64) -> f64 {
-    if k > 1023 {
-        f64::INFINITY
-    } else if k >= -1022 {
-        f64::from_bits(((k + 1023) as u64) << 52)
-    } else if k >= -1074 {
-        f64::from_bits(1u64 << (k + 1074))
-    } else {
-        0.0
-    }
+/// `2^-1074`): [`crate::to_f64::pow2`] for the `i64` exponents of the isolation.
+fn pow2f(k: i64) -> f64 {
+    crate::to_f64::pow2(k.clamp(-2000, 2000) as i32)
 }

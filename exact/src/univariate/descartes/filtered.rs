@@ -462,8 +462,7 @@ fn f64_of_leading_bits(bits: Vec<(bool, u64, u64)>, blocks: &mut Vec<f64>) -> f6
     f64::EPSILON * m * SAFETY
 }
 
-/// The exact `2^k` in `f64`: subnormal below `2^-1022`, zero below `2^-1074`, infinite above
-/// `2^1023`.
+/// The largest magnitude among `g` (NaNs ignored: `f64::max`).
 fn max_abs(g: &[f64]) -> f64 {
     g.iter().fold(0.0f64, |acc, x| acc.max(x.abs()))
 }

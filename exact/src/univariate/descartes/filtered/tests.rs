@@ -590,3 +590,35 @@ fn sign_at_dyadic_on_limbs_agrees_with_bigint() {
         }
     }
 }
+
+/// Both subdivisions list a unit problem's roots in increasing order, split points that are
+/// roots included (so `isolate_square_free` needs no sort): dyadic roots at several depths,
+/// Wilkinson's products, a random polynomial, a close pair.
+#[test]
+fn unit_roots_come_out_in_increasing_order() {
+    let cases = [
+        product(
+            &small(&[(1, 2), (1, 4), (3, 4), (3, 8), (5, 16), (1, 3), (2, 3)]),
+            &[1],
+        ),
+        w4::wilkinson(20),
+        w4::wilkinson(24),
+        w4::random(30),
+        w4::mignotte(20),
+    ];
+    for c in &cases {
+        for p in unit_problems(c) {
+            let (filtered, _) = filtered_unit_roots(&p, true);
+            for (name, found) in [
+                ("filtered", filtered),
+                ("exact", exact_unit_roots(&p, true)),
+            ] {
+                let e: Vec<(Rational, Rational)> = found.iter().map(ends).collect();
+                assert!(
+                    e.windows(2).all(|w| w[0].1 <= w[1].0 && w[0] < w[1]),
+                    "{name}: {e:?}"
+                );
+            }
+        }
+    }
+}
