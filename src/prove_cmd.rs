@@ -16,7 +16,8 @@ use clap::Args;
 use exactcheck_exact::expr::{parse_expr, Coefficient, Expr};
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
-    decide_in, DecideError, Decision, Domain, PointField, HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
+    counter_example, decide_in, DecideError, Decision, Domain, PointField, HOLDS_THRESHOLD_LOG2,
+    MAX_RANDOM_TRIALS,
 };
 use exactcheck_exact::{Radical, Rational};
 use serde_json::json;
@@ -43,7 +44,9 @@ pub struct ProveArgs {
     /// must be unit circles `c^2 + s^2 = 1`; no domains, no sqrt.
     #[arg(long, value_name = "K")]
     pub random: Option<u64>,
-    /// Seed of `--random` (default: a fresh random seed, printed, per run).
+    /// Seed of `--random` (default: a fresh random seed, printed, per run). The prime is drawn
+    /// from the seed and the identity; a chosen seed reproduces a run but gives no error bound:
+    /// all-zero is then `holds (reproduced)`.
     #[arg(long)]
     pub seed: Option<u64>,
     /// Print one JSON object instead of text.
@@ -180,7 +183,7 @@ fn random_test(
     relations: &[(Expr, Expr)],
     has_domains: bool,
 ) -> Result<ExitCode, Error> {
-    use exactcheck_exact::prove::{random_identity_test, unit_circle_pairs, RandomDecision};
+    use exactcheck_exact::prove::{random_identity_test, unit_circle_pairs, RandomDecision, Seed};
     let trials = match u32::try_from(trials) {
         Ok(k) if (1..=MAX_RANDOM_TRIALS).contains(&k) => k,
         _ => {
@@ -216,17 +219,21 @@ fn random_test(
     let mut names = Vec::new();
     lhs.collect_variables(&mut names);
     rhs.collect_variables(&mut names);
-    let seed = args.seed.unwrap_or_else(fresh_seed);
-    let decision =
-        random_identity_test(lhs, rhs, &names, &circles, trials, seed).map_err(Error::Input)?;
+    let chosen = args.seed.map(Seed::Chosen);
+    let seed_of_run = chosen.unwrap_or_else(|| Seed::Fresh(fresh_seed()));
+    let seed = seed_of_run.value();
+    let decision = random_identity_test(lhs, rhs, &names, &circles, trials, seed_of_run)
+        .map_err(Error::Input)?;
     let report = match &decision {
         RandomDecision::Holds { report, .. }
+        | RandomDecision::Reproduced { report }
         | RandomDecision::Undecided { report, .. }
         | RandomDecision::Fails { report, .. } => report,
     };
     let method = format!(
-        "evaluation at {trials} random points modulo the random prime p = {} (seed {seed}{})",
+        "evaluation at {trials} random points modulo the random prime p = {} (seed {seed}{}{})",
         report.prime,
+        if chosen.is_some() { ", chosen" } else { "" },
         if report.redrawn > 0 {
             format!(", {} primes dividing a divisor redrawn", report.redrawn)
         } else {
@@ -254,6 +261,13 @@ fn random_test(
                 ExitCode::SUCCESS,
             )
         }
+        RandomDecision::Reproduced { .. } => (
+            "holds (reproduced)",
+            format!(
+                "LHS - RHS vanishes at all {trials} points modulo the prime drawn from the chosen seed {seed} and the identity; a chosen seed gives no probability bound (it need not be independent of the identity): run without --seed for a fresh seed and the proved bound"
+            ),
+            ExitCode::SUCCESS,
+        ),
         RandomDecision::Undecided { bound, log2_bound, .. } => {
             log2 = Some(*log2_bound);
             let why = match bound {
@@ -407,7 +421,7 @@ fn prove_over<C: PointField + Display>(
             .expect("the engine reports only variables of the table")
             .to_string()
     };
-    let residual = l - r;
+    let residual = l.clone() - &r;
     let conditions: Vec<&str> = args.relations.iter().map(String::as_str).collect();
     let modulo = if relations.is_empty() {
         String::new()
@@ -442,14 +456,9 @@ fn prove_over<C: PointField + Display>(
         Decision::Undecided { .. } => ("undecided", ExitCode::from(1)),
     };
     let terms = residual.len();
-    // The variables a counter-example shows: those of the residual, the relations and the
-    // domains (computed once: per variable it was quadratic in 10,000 variables).
-    let mut shown_vars: std::collections::HashSet<Var> = residual.variables().into_iter().collect();
-    for r in &rels {
-        shown_vars.extend(r.variables());
-    }
-    shown_vars.extend(doms.iter().map(|(w, _)| *w));
-    let shown = |v: &Var| shown_vars.contains(v);
+    // A counter-example gives every variable of both sides and the relations (domains name
+    // only those), also those that cancel from the residual.
+    let statement: Vec<&Poly<C>> = [&l, &r].into_iter().chain(&rels).collect();
     let evidence = match &decision {
         Decision::Proved { expanded_terms } if *expanded_terms == 0 => {
             "LHS - RHS expands to 0".to_string()
@@ -462,9 +471,8 @@ fn prove_over<C: PointField + Display>(
             point,
             value,
         } => {
-            let at: Vec<String> = point
+            let at: Vec<String> = counter_example(point, &statement)
                 .iter()
-                .filter(|(v, _)| shown(v))
                 .map(|(v, q)| format!("{} = {q}", name(*v)))
                 .collect();
             let value = abbreviate(value.to_string());
@@ -505,9 +513,8 @@ fn prove_over<C: PointField + Display>(
             normal_form,
         } = &decision
         {
-            obj["point"] = point
+            obj["point"] = counter_example(point, &statement)
                 .iter()
-                .filter(|(v, _)| shown(v))
                 .map(|(v, q)| (name(*v), json!(q.to_string())))
                 .collect::<serde_json::Map<_, _>>()
                 .into();

@@ -142,3 +142,18 @@ fn readme_table_is_the_checks_output() {
     );
     assert!(readme.contains(&format!("`chiang.example4` (verdict: **{verdict}**)")));
 }
+
+#[test]
+fn theorem_evidence_states_the_symbolic_range_it_ran() {
+    // The statement is for every m, n; the evidence used to cite a bound "the claim states".
+    let (_, e) = verdict_of("chiang.theorem");
+    assert!(!e.contains("claim states"), "{e}");
+    let covered = format!(
+        "The symbolic proof covers m <= {}, n <= {} and ({}, {}) only",
+        SYMBOLIC_MAX.0,
+        SYMBOLIC_MAX.1,
+        SYMBOLIC_MAX.0 + 1,
+        SYMBOLIC_MAX.1 + 1
+    );
+    assert!(e.contains(&covered), "{e}");
+}

@@ -327,3 +327,42 @@ fn claims_file_rows_do_not_depend_on_the_number_of_threads() {
     assert!(one.len() >= 9);
     assert_eq!(one, rows(4));
 }
+
+#[test]
+fn a_chosen_seed_gives_no_bound_and_cannot_be_aimed_at_its_prime() {
+    let file = claimfile::load(&root().join("tests/claims_file/chosen_seed.toml")).unwrap();
+    let rows = claimfile::check(&file, None).unwrap();
+    let outcome = |id: &str| {
+        rows.iter()
+            .find(|r| r.id == id)
+            .and_then(|r| r.outcome.as_ref().ok())
+            .unwrap_or_else(|| panic!("{id}"))
+    };
+    // Seed 7 alone gave the prime 7294315414320791317, which divides the coefficient: the old
+    // answer was `holds` with "probability <= 2^-55.9".
+    let crafted = outcome("seed.crafted");
+    assert_eq!(crafted.verdict, Verdict::Fails, "{}", crafted.evidence);
+    assert!(
+        !crafted.method.contains("7294315414320791317"),
+        "{}",
+        crafted.method
+    );
+    // A true identity with a chosen seed: zero at every point, no probability bound claimed.
+    let binomial = outcome("seed.binomial");
+    assert_eq!(binomial.verdict, Verdict::Holds, "{}", binomial.evidence);
+    assert!(
+        binomial.evidence.contains("no probability bound"),
+        "{}",
+        binomial.evidence
+    );
+    assert!(
+        !binomial.evidence.contains("probability <="),
+        "{}",
+        binomial.evidence
+    );
+    assert!(
+        binomial.method.contains("seed 7, chosen"),
+        "{}",
+        binomial.method
+    );
+}

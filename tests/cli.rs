@@ -418,7 +418,8 @@ fn prove_random_is_sound_for_multiples_of_the_old_prime() {
         let p = v["prime"].as_u64().unwrap();
         assert!(p >= 1 << 62, "{v}");
     }
-    // A true identity holds, with the bound, the seed and the prime printed; a seed reproduces.
+    // A true identity with a chosen seed is reproduced (same prime, same answer) but carries no
+    // bound; with a fresh seed it holds with the bound, the seed and the prime printed.
     let args = [
         "(x+y)^3",
         "x^3 + 3*x^2*y + 3*x*y^2 + y^3",
@@ -430,14 +431,67 @@ fn prove_random_is_sound_for_multiples_of_the_old_prime() {
     let (code, v) = prove_json(&args);
     assert_eq!(
         (code, v["verdict"].as_str()),
-        (Some(0), Some("holds")),
+        (Some(0), Some("holds (reproduced)")),
         "{v}"
     );
     assert_eq!(v["seed"], 11);
-    assert!(v["log2_error_bound"].as_f64().unwrap() < -30.0);
+    assert!(v.get("log2_error_bound").is_none(), "{v}");
     assert_eq!(prove_json(&args).1, v);
+    let (code, v) = prove_json(&args[..4]);
+    assert_eq!(
+        (code, v["verdict"].as_str()),
+        (Some(0), Some("holds")),
+        "{v}"
+    );
+    assert!(v["log2_error_bound"].as_f64().unwrap() < -30.0);
     let text = stdout(&exactcheck(&["prove", "x", "x", "--random", "2"]));
     assert!(text.starts_with("holds") && text.contains("seed") && text.contains("prime"));
+}
+
+#[test]
+fn prove_random_with_a_chosen_seed_cannot_be_aimed_at_its_prime() {
+    // `x = 0` with seed 7 fails and prints its prime p. `p x = 0` with the same seed was then
+    // evaluated modulo that same p and answered `holds` with "probability <= 2^-55.9". The
+    // prime now depends on the identity too: p x = 0 fails, modulo another prime.
+    let (code, v) = prove_json(&["x", "0", "--random", "5", "--seed", "7"]);
+    assert_eq!(
+        (code, v["verdict"].as_str()),
+        (Some(1), Some("fails")),
+        "{v}"
+    );
+    let p = v["prime"].as_u64().unwrap();
+    let crafted = format!("{p}*x");
+    let (code, w) = prove_json(&[&crafted, "0", "--random", "5", "--seed", "7"]);
+    assert_eq!(
+        (code, w["verdict"].as_str()),
+        (Some(1), Some("fails")),
+        "{w}"
+    );
+    let q = w["prime"].as_u64().unwrap();
+    assert_ne!(p, q);
+    assert_ne!(p % q, 0, "the prime used divides the coefficient");
+}
+
+#[test]
+fn prove_counter_examples_give_every_variable_of_both_sides() {
+    // `a` cancels from the residual b^3; the point used to be `b = 3/2` alone.
+    let (code, v) = prove_json(&["(a+b)^3", "a^3 + 3a^2 b + 3 a b^2"]);
+    assert_eq!(
+        (code, v["verdict"].as_str()),
+        (Some(1), Some("fails")),
+        "{v}"
+    );
+    let point = v["point"].as_object().unwrap();
+    assert!(point.contains_key("a") && point.contains_key("b"), "{v}");
+    let text = stdout(&exactcheck(&["prove", "(a+b)^3", "a^3 + 3a^2 b + 3 a b^2"]));
+    assert!(text.starts_with("fails: at a = "), "{text}");
+    // A variable only in a relation is given too, as before.
+    let (_, v) = prove_json(&["x + y", "y", "--where", "x = 2 z"]);
+    let point = v["point"].as_object().unwrap();
+    assert!(
+        ["x", "y", "z"].iter().all(|n| point.contains_key(*n)),
+        "{v}"
+    );
 }
 
 #[test]

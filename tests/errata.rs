@@ -134,3 +134,49 @@ fn latex_document_lines() {
         }
     }
 }
+
+#[test]
+fn ph_radius_erratum_names_the_false_cusp_counts_not_the_radius() {
+    // 12.6 is a correct rounding of the smallest radius 101/8; what is false are the cusp
+    // counts at r = 63/5 (none, not one) and just above it (none, not two). The erratum used to
+    // present 12.6 as a misprinted radius with residual 1/40.
+    let row = check("chiang.ph_radius");
+    let e = row.outcome.as_ref().unwrap().erratum.as_ref().unwrap();
+    let text = |eqs: &[claims::Equation]| eqs.iter().map(|q| q.text()).collect::<Vec<_>>();
+    let (printed, corrected) = (text(&e.printed), text(&e.corrected));
+    let (counter, residual) = (text(&e.counter_example), text(&e.residual));
+    assert!(
+        printed
+            .iter()
+            .chain(&corrected)
+            .all(|t| !t.contains("rho_min")),
+        "{printed:?} {corrected:?}"
+    );
+    assert_eq!(printed.len(), 2, "{printed:?}");
+    assert!(
+        printed[0].starts_with("n_cusps(")
+            && printed[0].contains("63/5")
+            && printed[0].ends_with(" = 1"),
+        "{printed:?}"
+    );
+    assert!(
+        printed[1].contains("1009/80") && printed[1].ends_with(" = 2"),
+        "{printed:?}"
+    );
+    assert!(
+        counter[0].contains("63/5") && counter[0].ends_with(" = 0"),
+        "{counter:?}"
+    );
+    assert!(
+        counter[1].contains("1009/80") && counter[1].ends_with(" = 0"),
+        "{counter:?}"
+    );
+    assert!(
+        residual[0].ends_with(" = -1") && residual[1].ends_with(" = -2"),
+        "{residual:?}"
+    );
+    assert!(
+        corrected[0].contains("101/8") && corrected[0].ends_with(" = 1"),
+        "{corrected:?}"
+    );
+}

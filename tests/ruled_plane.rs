@@ -394,6 +394,28 @@ fn rulings_parallel_to_the_plane_are_an_outcome_not_a_division_by_zero() {
 }
 
 #[test]
+fn zero_directions_are_no_rulings_not_parallel_rulings() {
+    // V = 0: no rulings, the surface is the base curve (z from -1 to 1), which meets z = 0 at
+    // t = 1/2 only. It used to be called `parallel_rulings` with a ruling in the plane.
+    let p = problem("[[0,0,-1],[1,0,1]]", "[[0,0,0],[0,0,0]]", "[0,0,1,0]");
+    for mode in [Mode::Exact, Mode::Float] {
+        let a = solve(&p, mode).unwrap();
+        assert_eq!(a["outcome"], "degenerate_no_rulings", "{a}");
+        assert!(a.get("rulings_in_plane").is_none() && a.get("poles").is_none());
+        assert_eq!(a["base_curve_in_plane"], false);
+        let points = a["base_points_in_plane"].as_array().unwrap();
+        assert_eq!(points.len(), 1);
+        assert_eq!(points[0]["approx"], 0.5);
+    }
+    // A base curve in the plane (it used to be `surface_in_plane`): the whole curve, no list.
+    let p = problem("[[0,0,0],[1,2,0]]", "[[0,0,0]]", "[0,0,1,0]");
+    let a = solve(&p, Mode::Exact).unwrap();
+    assert_eq!(a["outcome"], "degenerate_no_rulings");
+    assert_eq!(a["base_curve_in_plane"], true);
+    assert!(a.get("base_points_in_plane").is_none());
+}
+
+#[test]
 fn a_surface_in_the_plane_is_an_outcome() {
     let p = problem(
         "[[0,0,0],[1,2,0]]",

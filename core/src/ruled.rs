@@ -34,7 +34,9 @@
 //!
 //! # Degenerate cases (ignored by the paper, decided here)
 //! [`RuledSurface::classify_plane`] tells them apart exactly (it needs exact zero tests, so it
-//! means what it says only for exact scalars): the weight polynomial `N.V` identically zero (every
+//! means what it says only for exact scalars): a direction field `V` identically zero has no
+//! rulings at all — the "surface" is the base curve `B`, and the section is the points of `B` at
+//! the zeros of `N.B + d` (or all of `B`); else the weight polynomial `N.V` identically zero (every
 //! ruling parallel to the plane) splits into *the whole surface in the plane* (`N.B + d` is zero
 //! too) and *no curve* (then the section is the rulings at the zeros of `N.B + d`, each lying in
 //! the plane); otherwise the section is a curve, whose poles are the zeros of `N.V` in `[0, 1]`
@@ -106,6 +108,13 @@ pub enum PlaneSection<T> {
     },
     /// `N.V` and `N.B + d` both vanish identically: the whole surface lies in the plane.
     SurfaceInPlane,
+    /// `V = 0` identically: there are no rulings, the surface is the base curve `B`, and the
+    /// section is the points of `B` at the zeros of `offset` (`N.B + d`), or all of `B` when
+    /// `offset` is zero.
+    NoRulings {
+        /// `N.B(t) + d`, degree `n` (zero when the base curve lies in the plane).
+        offset: Bernstein<T>,
+    },
 }
 
 impl<T> RuledSurface<T> {
@@ -295,6 +304,9 @@ impl<T: Field> RuledSurface<T> {
             return PlaneSection::Curve(self.plane_section(plane));
         }
         let offset = self.offset(plane);
+        if self.directions.control_points().iter().all(Vec3::is_zero) {
+            return PlaneSection::NoRulings { offset };
+        }
         if offset.is_zero() {
             PlaneSection::SurfaceInPlane
         } else {
@@ -435,5 +447,15 @@ mod tests {
             inplane.classify_plane(&Plane::z0()),
             PlaneSection::SurfaceInPlane
         );
+        // No rulings at all (V = 0): the section is the base curve's points in the plane.
+        let curve_only = RuledSurface::from_control(
+            vec![Vec3::new(0.0, 0.0, -1.0), Vec3::new(1.0, 0.0, 1.0)],
+            vec![Vec3::new(0.0, 0.0, 0.0), Vec3::new(0.0, 0.0, 0.0)],
+        )
+        .unwrap();
+        match curve_only.classify_plane(&Plane::z0()) {
+            PlaneSection::NoRulings { offset } => assert_eq!(offset.coeffs(), &[-1.0, 1.0]),
+            other => panic!("{other:?}"),
+        }
     }
 }

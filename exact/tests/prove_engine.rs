@@ -7,7 +7,7 @@ use exactcheck_exact::expr::{parse_expr, parse_poly};
 use exactcheck_exact::modp::{is_prime_u64, ModP, PrimeField};
 use exactcheck_exact::poly::{Poly, Vars};
 use exactcheck_exact::prove::{
-    decide, decide_in, random_identity_test, DecideError, Decision, Domain, RandomDecision,
+    decide, decide_in, random_identity_test, DecideError, Decision, Domain, RandomDecision, Seed,
     MAX_RANDOM_TRIALS,
 };
 use exactcheck_exact::{Radical, Rational};
@@ -22,7 +22,7 @@ fn random(lhs: &str, rhs: &str, trials: u32, seed: u64) -> RandomDecision {
             names.push(n.to_string());
         }
     }
-    random_identity_test(&l, &r, &names, &[], trials, seed).unwrap()
+    random_identity_test(&l, &r, &names, &[], trials, Seed::Fresh(seed)).unwrap()
 }
 
 #[test]
@@ -90,7 +90,7 @@ fn true_identities_hold_with_a_bound_below_the_threshold() {
         } => {
             assert!(log2_bound < -30.0);
             assert!(report.prime >= 1 << 62 && is_prime_u64(report.prime));
-            assert_eq!(report.seed, 9);
+            assert_eq!(report.seed, Seed::Fresh(9));
         }
         other => panic!("{other:?}"),
     }
@@ -122,11 +122,48 @@ fn huge_degrees_and_overflow_are_undecided_not_holds() {
 fn random_mode_refuses_what_it_cannot_bound() {
     let e = |t: &str| parse_expr(t).unwrap();
     let vars = ["x".to_string()];
-    assert!(random_identity_test(&e("sqrt(2) x"), &e("0"), &vars, &[], 3, 1).is_err());
-    assert!(random_identity_test(&e("x"), &e("x"), &vars, &[], 0, 1).is_err());
-    assert!(random_identity_test(&e("x"), &e("x"), &vars, &[], MAX_RANDOM_TRIALS + 1, 1).is_err());
+    let one = Seed::Fresh(1);
+    assert!(random_identity_test(&e("sqrt(2) x"), &e("0"), &vars, &[], 3, one).is_err());
+    assert!(random_identity_test(&e("x"), &e("x"), &vars, &[], 0, one).is_err());
+    assert!(
+        random_identity_test(&e("x"), &e("x"), &vars, &[], MAX_RANDOM_TRIALS + 1, one).is_err()
+    );
     // A divisor that is zero is an error (redrawing the prime cannot help), not a verdict.
-    assert!(random_identity_test(&e("x/(2-2)"), &e("0"), &vars, &[], 3, 1).is_err());
+    assert!(random_identity_test(&e("x/(2-2)"), &e("0"), &vars, &[], 3, one).is_err());
+}
+
+#[test]
+fn a_chosen_seed_reveals_no_prime_of_another_identity_and_gives_no_bound() {
+    // With a chosen seed, `x = 0` fails at a point and prints its prime p. The identity
+    // `p x = 0` under the same seed is evaluated modulo another prime (the prime depends on the
+    // identity too), so it fails as well; with the prime of the seed alone it passed every
+    // point and was reported `holds` with a bound of 2^-55.9.
+    let e = |t: &str| parse_expr(t).unwrap();
+    let vars = ["x".to_string()];
+    let seed = Seed::Chosen(7);
+    let first = match random_identity_test(&e("x"), &e("0"), &vars, &[], 5, seed).unwrap() {
+        RandomDecision::Fails { report, .. } => report.prime,
+        other => panic!("{other:?}"),
+    };
+    let crafted = e(&format!("{first}*x"));
+    match random_identity_test(&crafted, &e("0"), &vars, &[], 5, seed).unwrap() {
+        RandomDecision::Fails { report, .. } => {
+            assert_ne!(report.prime, first);
+            assert_eq!(report.seed, seed);
+        }
+        other => panic!("{other:?}"),
+    }
+    // A true identity under a chosen seed is reproduced, never `Holds` with a bound; the same
+    // seed drawn fresh gives the bound, with the same prime (the run is reproduced exactly).
+    let (l, r) = (e("(x + 1)^2"), e("x^2 + 2 x + 1"));
+    let chosen = random_identity_test(&l, &r, &vars, &[], 5, seed).unwrap();
+    let fresh = random_identity_test(&l, &r, &vars, &[], 5, Seed::Fresh(7)).unwrap();
+    match (chosen, fresh) {
+        (RandomDecision::Reproduced { report: a }, RandomDecision::Holds { report: b, .. }) => {
+            assert_eq!(a.prime, b.prime)
+        }
+        other => panic!("{other:?}"),
+    }
 }
 
 #[test]

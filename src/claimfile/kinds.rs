@@ -13,8 +13,8 @@ use exactcheck_core::Ring;
 use exactcheck_exact::expr::{parse_expr, AddOp, Coefficient, Expr, ExprKind};
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
-    decide_in, random_identity_test, unit_circle_pairs, DecideError, Decision, Domain, PointField,
-    RandomDecision, HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
+    counter_example, decide_in, random_identity_test, unit_circle_pairs, DecideError, Decision,
+    Domain, PointField, RandomDecision, Seed, HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
 };
 use exactcheck_exact::{Radical, Rational};
 use rayon::prelude::*;
@@ -423,11 +423,13 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<Outcome, Fault> {
     };
     let mut vars = Vars::new();
     let mut residuals = Vec::new();
+    let mut lhs_polys = Vec::new();
     let mut rhs_polys = Vec::new();
     for (l, r) in lhs.iter().zip(rhs) {
         let l = to_poly::<C>(l, &mut vars, "lhs")?;
         let r = to_poly::<C>(r, &mut vars, "rhs")?;
-        residuals.push(l - &r);
+        residuals.push(l.clone() - &r);
+        lhs_polys.push(l);
         rhs_polys.push(r);
     }
     let corrected_polys = match corrected {
@@ -525,14 +527,12 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<Outcome, Fault> {
                 point,
                 value,
             } => {
-                let shown = |v: &Var| {
-                    res.variables().contains(v)
-                        || rels.iter().any(|r| r.variables().contains(v))
-                        || doms.iter().any(|(w, _)| w == v)
-                };
-                let point: Vec<(String, Radical)> = point
+                // Every variable of the sides (all coordinates) and the relations; domains name
+                // only those.
+                let statement: Vec<&Poly<C>> =
+                    lhs_polys.iter().chain(&rhs_polys).chain(&rels).collect();
+                let point: Vec<(String, Radical)> = counter_example(&point, &statement)
                     .into_iter()
-                    .filter(|(v, _)| shown(v))
                     .map(|(v, q)| (name(v), q))
                     .collect();
                 let at: Vec<String> = point.iter().map(|(v, q)| format!("{v} = {q}")).collect();
@@ -890,7 +890,16 @@ fn instances(check: &Check) -> Result<Outcome, Fault> {
             .to_string()
     };
     let circles: Vec<(String, String)> = pairs.iter().map(|&(c, s)| (vname(c), vname(s))).collect();
-    let seed = seed.unwrap_or_else(crate::prove_cmd::fresh_seed);
+    let seed_of_run = match seed {
+        Some(s) => Seed::Chosen(*s),
+        None => Seed::Fresh(crate::prove_cmd::fresh_seed()),
+    };
+    let seed = seed_of_run.value();
+    let chosen = if matches!(seed_of_run, Seed::Chosen(_)) {
+        ", chosen"
+    } else {
+        ""
+    };
     let show = |l: f64| {
         if l == f64::NEG_INFINITY {
             "0".to_string()
@@ -899,13 +908,15 @@ fn instances(check: &Check) -> Result<Outcome, Fault> {
         }
     };
     let mut worst = f64::NEG_INFINITY;
-    let mut prime = 0;
+    let mut primes = Vec::new();
     let mut undecided = None;
-    // The coordinates are tested in parallel and read in order.
+    let mut reproduced = false;
+    // The coordinates are tested in parallel and read in order; each has its own prime (drawn
+    // from the seed and the coordinate's identity).
     let decisions: Vec<Result<RandomDecision, String>> = lhs
         .par_iter()
         .zip(rhs.par_iter())
-        .map(|(l, r)| random_identity_test(l, r, &names, &circles, trials, seed))
+        .map(|(l, r)| random_identity_test(l, r, &names, &circles, trials, seed_of_run))
         .collect();
     for (c, ((l, r), d)) in lhs.iter().zip(rhs).zip(decisions).enumerate() {
         let d = d.map_err(|e| Fault::Input("lhs", e))?;
@@ -918,13 +929,17 @@ fn instances(check: &Check) -> Result<Outcome, Fault> {
             RandomDecision::Holds {
                 report, log2_bound, ..
             } => {
-                prime = report.prime;
+                primes.push(report.prime);
                 worst = worst.max(log2_bound);
+            }
+            RandomDecision::Reproduced { report } => {
+                primes.push(report.prime);
+                reproduced = true;
             }
             RandomDecision::Undecided {
                 report, log2_bound, ..
             } => {
-                prime = report.prime;
+                primes.push(report.prime);
                 worst = worst.max(log2_bound);
                 undecided.get_or_insert(coords);
             }
@@ -949,7 +964,7 @@ fn instances(check: &Check) -> Result<Outcome, Fault> {
                 return Ok(Outcome {
                     verdict: Verdict::Fails,
                     method: format!(
-                        "evaluation at {trials} random points modulo the random prime p = {} (seed {seed})",
+                        "evaluation at {trials} random points modulo the random prime p = {} (seed {seed}{chosen})",
                         report.prime
                     ),
                     evidence: format!(
@@ -962,10 +977,23 @@ fn instances(check: &Check) -> Result<Outcome, Fault> {
             }
         }
     }
-    let method =
-        format!(
-        "evaluation at {trials} random points modulo the random prime p = {prime} (seed {seed}){}",
-        if at.is_empty() { "" } else { " and exact instances" }
+    let primes = match primes.as_slice() {
+        [p] => format!("the random prime p = {p}"),
+        many => format!(
+            "random primes ({}, one per coordinate)",
+            many.iter()
+                .map(ToString::to_string)
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
+    };
+    let method = format!(
+        "evaluation at {trials} random points modulo {primes} (seed {seed}{chosen}){}",
+        if at.is_empty() {
+            ""
+        } else {
+            " and exact instances"
+        }
     );
     let extra = if exact_note.is_empty() {
         String::new()
@@ -973,6 +1001,14 @@ fn instances(check: &Check) -> Result<Outcome, Fault> {
         format!("; {exact_note}")
     };
     Ok(match undecided {
+        None if reproduced => Outcome {
+            verdict: Verdict::Holds,
+            method,
+            evidence: format!(
+                "LHS - RHS vanishes at all {trials} points modulo the prime drawn from the chosen seed {seed} and the identity (a reproduced run); a chosen seed gives no probability bound (it need not be independent of the identity): remove `seed` for a fresh seed and the proved bound{extra}"
+            ),
+            erratum: None,
+        },
         None => Outcome {
             verdict: Verdict::Holds,
             method,

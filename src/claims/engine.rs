@@ -5,7 +5,7 @@ use super::{Equation, Erratum, Outcome, Verdict};
 use exactcheck_core::{Hom4, Ring};
 use exactcheck_exact::expr::{parse_poly, Coefficient, Expr};
 use exactcheck_exact::poly::{CoeffExpr, Poly, Var, Vars};
-use exactcheck_exact::prove::{decide_in, Decision, Domain, PointField};
+use exactcheck_exact::prove::{counter_example, decide_in, Decision, Domain, PointField};
 use exactcheck_exact::Rational;
 use std::fmt::Display;
 
@@ -63,18 +63,21 @@ pub fn prove_all<C: PointField + Display + CoeffExpr>(
 where
     C::Value: CoeffExpr,
 {
-    prove_all_in(sym, residuals, relations, &[], method)
+    prove_all_in(sym, residuals, &[], relations, &[], method)
 }
 
 /// [`prove_all`] for the variables' values in `domains` (e.g. radii `> 0`): counter-examples are
 /// searched inside the domains only.
 ///
 /// On `fails` the outcome carries an [`Erratum`] with the exact counter-example (`name = value`
-/// for every variable of the residual and the relations) and the residual there (its normal form
+/// for every variable of the residuals, of `sides` and of the relations: `sides` are the
+/// statement's two sides when the caller has them, so that a variable that cancels from every
+/// residual is given too) and the residual there (its normal form
 /// modulo the relations `= value`); the caller adds the printed and the corrected forms.
 pub fn prove_all_in<C: PointField + Display + CoeffExpr>(
     sym: &Symbols,
     residuals: &[(&str, Poly<C>)],
+    sides: &[&Poly<C>],
     relations: &[Poly<C>],
     domains: &[(Var, Domain)],
     method: &str,
@@ -93,6 +96,14 @@ where
         evidence,
         erratum: None,
     };
+    // A counter-example gives every variable of the claim's residuals, sides and relations, also
+    // those that cancel from the failing residual.
+    let statement: Vec<&Poly<C>> = residuals
+        .iter()
+        .map(|(_, r)| r)
+        .chain(sides.iter().copied())
+        .chain(relations)
+        .collect();
     let mut terms = 0;
     for (what, r) in residuals {
         let decision = match decide_in(r, relations, domains, sym.vars.len()) {
@@ -106,13 +117,7 @@ where
                 point,
                 value,
             } => {
-                let shown: Vec<&(Var, _)> = point
-                    .iter()
-                    .filter(|(v, _)| {
-                        r.variables().contains(v)
-                            || relations.iter().any(|q| q.variables().contains(v))
-                    })
-                    .collect();
+                let shown = counter_example(&point, &statement);
                 let at: Vec<String> = shown
                     .iter()
                     .map(|(v, q)| format!("{} = {q}", name(*v)))

@@ -212,12 +212,21 @@ fn residuals_of(label: &str, a: &[P], b: &[P]) -> Vec<(String, P)> {
 
 /// Decides the residuals; a counter-example lies in the declared domains (the radii are
 /// positive) as well as on the unit circles.
-fn run(s: &Setup, residuals: &[(String, P)]) -> Result<Outcome, String> {
+/// `sides`: the polynomials the residuals are differences of (a counter-example gives each of
+/// their variables).
+fn run(s: &Setup, residuals: &[(String, P)], sides: &[&P]) -> Result<Outcome, String> {
     let r: Vec<(&str, P)> = residuals
         .iter()
         .map(|(w, p)| (w.as_str(), p.clone()))
         .collect();
-    Ok(prove_all_in(&s.sym, &r, &s.relations, &s.domains, METHOD))
+    Ok(prove_all_in(
+        &s.sym,
+        &r,
+        sides,
+        &s.relations,
+        &s.domains,
+        METHOD,
+    ))
 }
 
 /// A printed or corrected formula of an erratum: the name it defines and its text.
@@ -232,10 +241,11 @@ fn with_correction(
     corrected: &[(String, P)],
     correction: &str,
     forms: (&[Form], &[Form]),
+    sides: &[&P],
 ) -> Result<Outcome, String> {
-    let mut out = run(s, printed)?;
+    let mut out = run(s, printed, sides)?;
     if out.verdict == Verdict::Fails {
-        let fixed = run(s, corrected)?;
+        let fixed = run(s, corrected, &[])?;
         let equations = |f: &[Form]| {
             f.iter()
                 .map(|(lhs, rhs)| Equation::parse(lhs, rhs))
@@ -286,17 +296,20 @@ fn eq5() -> Result<Outcome, String> {
     let corrected_res = residuals_of("corrected (5) - Ry(beta) Rx(gamma) v", &corrected, &product);
     let names = ["x", "y", "z"];
     let forms = |f: [&'static str; 3]| -> Vec<Form<'static>> { names.into_iter().zip(f).collect() };
+    let sides: Vec<&P> = printed.iter().chain(&product).collect();
     let mut out = with_correction(
         &s,
         &printed_res,
         &corrected_res,
         "(5) is (4) multiplied out in the order printed in (4), Ry(beta) Rx(gamma) v",
         (&forms(EQ5), &forms(EQ5_CORRECTED)),
+        &sides,
     )?;
     // What (5) is instead: the product in the other order.
     let other = run(
         &s,
         &residuals_of("(5) - Rx(gamma) Ry(beta) v", &printed, &reversed),
+        &[],
     )?;
     if out.verdict == Verdict::Fails && other.verdict == Verdict::Proved {
         out.evidence += ". The printed (5) is exactly Rx(gamma) Ry(beta) v (proved): the matrices of (4) are multiplied in the opposite order; (7)-(11) follow (5)";
@@ -316,12 +329,11 @@ fn eq7() -> Result<Outcome, String> {
         .collect::<Result<_, _>>()?;
     let x = Vec3::new(x[0].clone(), x[1].clone(), x[2].clone());
     let substituted = (&x - &s.cs.center).norm_squared() - s.cs.radius.square();
+    let residual = printed_f.clone() - &substituted;
     run(
         &s,
-        &[(
-            "(7) as printed - |(5) - (d,e,f)|^2 + R^2".into(),
-            printed_f - substituted,
-        )],
+        &[("(7) as printed - |(5) - (d,e,f)|^2 + R^2".into(), residual)],
+        &[&printed_f, &substituted],
     )
 }
 
@@ -329,9 +341,11 @@ fn eq8() -> Result<Outcome, String> {
     let mut s = setup()?;
     let f = s.sym.parse(EQ7)?;
     let (f2, _, _) = coefficients_in_u(&mut s, &f)?;
+    let residual = f2.clone() - P::one();
     run(
         &s,
-        &[("coefficient of u^2 in (7), minus 1".into(), f2 - P::one())],
+        &[("coefficient of u^2 in (7), minus 1".into(), residual)],
+        &[&f2],
     )
 }
 
@@ -344,11 +358,12 @@ fn eq9() -> Result<Outcome, String> {
     let printed = s.sym.parse(EQ9)?;
     let corrected = s.sym.parse(EQ9_CORRECTED)?;
     let core_a = s.cs.coefficients_at(&s.ct, &s.st).0;
+    let residual = printed.clone() - &a_derived;
     with_correction(
         &s,
         &[(
             "(9) as printed - (half the u-coefficient of (7))".into(),
-            printed - &a_derived,
+            residual,
         )],
         &[
             (
@@ -362,6 +377,7 @@ fn eq9() -> Result<Outcome, String> {
         ],
         "the last term's sign is -",
         (&[("A", EQ9)], &[("A", EQ9_CORRECTED)]),
+        &[&printed, &a_derived],
     )
 }
 
@@ -372,11 +388,12 @@ fn eq10() -> Result<Outcome, String> {
     let printed = s.sym.parse(EQ10)?;
     let corrected = s.sym.parse(EQ10_CORRECTED)?;
     let core_b = s.cs.coefficients_at(&s.ct, &s.st).1;
+    let residual = printed.clone() - &f0;
     with_correction(
         &s,
         &[(
             "(10) as printed - (the u-free term of (7))".into(),
-            printed - &f0,
+            residual,
         )],
         &[
             (
@@ -387,6 +404,7 @@ fn eq10() -> Result<Outcome, String> {
         ],
         "the printed (10) lacks - R^2, which (8) needs",
         (&[("B", EQ10)], &[("B", EQ10_CORRECTED)]),
+        &[&printed, &f0],
     )
 }
 

@@ -18,6 +18,11 @@
 //!   plane; the section is the set of rulings at the zeros of `N.B + d` in `[0, 1]`
 //!   (`rulings_in_plane`, each with `s` free), possibly none.
 //! * `surface_in_plane`: both vanish identically.
+//! * `degenerate_no_rulings`: every direction vector is zero (`V = 0`), so there are no rulings
+//!   and the "surface" is the base curve `B` (checked before the two cases above, which it would
+//!   otherwise be called): `base_curve_in_plane` says whether `N.B + d` vanishes identically,
+//!   and if not, `base_points_in_plane` gives the zeros of `N.B + d` in `[0, 1]` (the parameters
+//!   of the points where `B` meets the plane), possibly none.
 //!
 //! `ruling_parameter` gives `s(t) = -(N.B(t) + d) / (N.V(t))` as Bernstein coefficients of its
 //! numerator (degree `n`) and denominator (degree `m`): the section point at `t` is `S(s(t), t)`.
@@ -172,6 +177,8 @@ struct Section<T> {
     offset: Bernstein<T>,
     poles: Option<Vec<PoleData<T>>>,
     rulings: Option<Vec<IsolatedRoot<T>>>,
+    /// With no rulings: whether the base curve lies in the plane, else its points there.
+    base: Option<(bool, Vec<IsolatedRoot<T>>)>,
 }
 
 fn compute<T: SectionScalar>(surface: &RuledSurface<T>, plane: &Plane<T>, width: &T) -> Section<T> {
@@ -179,6 +186,7 @@ fn compute<T: SectionScalar>(surface: &RuledSurface<T>, plane: &Plane<T>, width:
     let weight = surface.normal_component(plane);
     let offset = surface.offset(plane);
     let curve = surface.plane_section(plane);
+    let mut base = None;
     let (outcome, poles, rulings) = match surface.classify_plane(plane) {
         PlaneSection::Curve(_) => {
             let coords: Vec<Bernstein<T>> = (1..4).map(|a| curve.hom_coordinate(a)).collect();
@@ -202,6 +210,14 @@ fn compute<T: SectionScalar>(surface: &RuledSurface<T>, plane: &Plane<T>, width:
             ("parallel_rulings", None, Some(unit_zeros(&offset, width)))
         }
         PlaneSection::SurfaceInPlane => ("surface_in_plane", None, None),
+        PlaneSection::NoRulings { offset } => {
+            base = Some(if offset.is_zero() {
+                (true, Vec::new())
+            } else {
+                (false, unit_zeros(&offset, width))
+            });
+            ("degenerate_no_rulings", None, None)
+        }
     };
     Section {
         m,
@@ -212,6 +228,7 @@ fn compute<T: SectionScalar>(surface: &RuledSurface<T>, plane: &Plane<T>, width:
         offset,
         poles,
         rulings,
+        base,
     }
 }
 
@@ -271,6 +288,10 @@ struct Answer<V> {
     poles: Option<Vec<Pole<V>>>,
     #[serde(skip_serializing_if = "Option::is_none")]
     rulings_in_plane: Option<Vec<Parameter<V>>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    base_curve_in_plane: Option<bool>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    base_points_in_plane: Option<Vec<Parameter<V>>>,
     ruling_parameter: RulingParameter<V>,
     #[serde(skip_serializing_if = "Option::is_none")]
     approx: Option<Approx>,
@@ -349,6 +370,12 @@ fn render<T: SectionScalar, V>(
             .rulings
             .as_ref()
             .map(|r| r.iter().map(|z| parameter(z, &v)).collect()),
+        base_curve_in_plane: s.base.as_ref().map(|(all, _)| *all),
+        base_points_in_plane: s
+            .base
+            .as_ref()
+            .filter(|(all, _)| !all)
+            .map(|(_, zs)| zs.iter().map(|z| parameter(z, &v)).collect()),
         ruling_parameter: RulingParameter {
             formula: "s(t) = -(N.B(t) + d) / (N.V(t)) = numerator(t) / denominator(t)",
             basis: "Bernstein on [0, 1]: numerator of degree n, denominator of degree m",

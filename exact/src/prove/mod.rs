@@ -42,7 +42,7 @@
 pub mod random;
 
 pub use random::{
-    random_identity_test, size_bound, RandomDecision, RandomReport, SizeBound,
+    random_identity_test, size_bound, RandomDecision, RandomReport, Seed, SizeBound,
     HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
 };
 
@@ -414,6 +414,25 @@ pub fn decide_in<C: PointField>(
 
 /// A point: a value for every variable (by index).
 pub type RadicalPoint = Vec<(Var, Radical)>;
+
+/// The counter-example to report from a [`Decision::Fails`] point: the values of the variables
+/// that occur in `statement` (the identity's sides and its relations), in index order.
+///
+/// The search gives every variable in use a value (in its domain), including those that cancel
+/// from the residual: `(a + b)^3 = a^3 + 3 a^2 b + 3 a b^2` fails at `a = .., b = 3/2`, and a
+/// report of `b = 3/2` alone is not a point of the statement. Restricting to `statement` leaves
+/// out only variables a caller's table holds for other statements.
+pub fn counter_example<C: Field>(point: &RadicalPoint, statement: &[&Poly<C>]) -> RadicalPoint {
+    let mut used = std::collections::HashSet::new();
+    for p in statement {
+        used.extend(p.variables());
+    }
+    point
+        .iter()
+        .filter(|(v, _)| used.contains(v))
+        .cloned()
+        .collect()
+}
 
 /// The counter-example search of the module documentation: a verified point and the residual's
 /// value there, or `None`.

@@ -9,6 +9,21 @@
 //! Fermat reduces (`x^p = x` modulo `p`). Here `p` is drawn uniformly from the primes in
 //! `[2^62, 2^63)` ([`PrimeField::random_62`]) from the run's seed.
 //!
+//! # Where the seed comes from
+//! The generator of the prime and the points is [`Rng::for_input`]`(seed, text)`, with `text` the
+//! printed expression trees of both sides, the variables and the circles: the prime depends on
+//! the seed *and* on the identity. The bound below is a probability over the prime, so it holds
+//! only when the seed is independent of the identity:
+//! * [`Seed::Fresh`] (drawn from the operating system for this run): the seed is uniform and
+//!   independent of the input, hence so is the generator's seed `for_sample(seed, h)` for every
+//!   input hash `h`, and the bound holds for every input;
+//! * [`Seed::Chosen`] (given to reproduce a run): nothing makes it independent of the identity.
+//!   A user who learns the prime of one run could otherwise write an identity whose coefficients
+//!   it divides; since the prime now changes with the identity, the prime learnt is not the one
+//!   used, but the derivation is not a cryptographic hash, so no probability is claimed: a
+//!   chosen-seed run that finds zero at every point is [`RandomDecision::Reproduced`], never
+//!   `Holds`, and carries no bound.
+//!
 //! # The bound
 //! Write `LHS - RHS = F / D` with `F` in `Z[x]` and `D` a positive integer. [`size_bound`]
 //! computes from the expression tree, without expanding, numbers `L`, `L_D`, `d` with
@@ -68,8 +83,9 @@
 //!
 //! A non-zero value at a point is a proof that the identity is false (over Q, and modulo the
 //! circles: a multiple of `c^2 + s^2 - 1` with integer coefficients vanishes at every circle point
-//! modulo every `p`). The verdict `holds` is given only when the bound is below
-//! `2^HOLDS_THRESHOLD_LOG2` ([`HOLDS_THRESHOLD_LOG2`] `= -30`); otherwise `undecided` with the bound.
+//! modulo every `p`). The verdict `holds` is given only when the seed is fresh and the bound is
+//! below `2^HOLDS_THRESHOLD_LOG2` ([`HOLDS_THRESHOLD_LOG2`] `= -30`); otherwise `undecided` with
+//! the bound (or, with a chosen seed, `Reproduced` without one).
 
 use crate::expr::{AddOp, Expr, ExprKind, MulOp};
 use crate::modp::PrimeField;
@@ -280,11 +296,30 @@ fn eval(e: &Expr, f: &PrimeField, point: &HashMap<String, u64>) -> Result<u64, E
     })
 }
 
+/// The seed of a run and where it came from (module documentation, "Where the seed comes
+/// from").
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Seed {
+    /// Drawn for this run independently of the identity: the error bound holds.
+    Fresh(u64),
+    /// Given by the user (to reproduce a run): no error bound is claimed.
+    Chosen(u64),
+}
+
+impl Seed {
+    /// The seed's value.
+    pub fn value(self) -> u64 {
+        match self {
+            Seed::Fresh(s) | Seed::Chosen(s) => s,
+        }
+    }
+}
+
 /// What a random test did, for the evidence.
 #[derive(Clone, Debug, PartialEq)]
 pub struct RandomReport {
     /// The seed of the run.
-    pub seed: u64,
+    pub seed: Seed,
     /// The prime used.
     pub prime: u64,
     /// Primes discarded because they divide a constant divisor.
@@ -296,7 +331,7 @@ pub struct RandomReport {
 /// The outcome of a randomized identity test.
 #[derive(Clone, Debug, PartialEq)]
 pub enum RandomDecision {
-    /// Zero at every point, and the error bound is below the threshold.
+    /// Zero at every point, the seed was fresh and the error bound is below the threshold.
     Holds {
         /// The run.
         report: RandomReport,
@@ -304,6 +339,12 @@ pub enum RandomDecision {
         bound: SizeBound,
         /// log2 of the error probability bound (below [`HOLDS_THRESHOLD_LOG2`]).
         log2_bound: f64,
+    },
+    /// Zero at every point with a [`Seed::Chosen`], where a fresh seed's bound would be below
+    /// the threshold: the run is reproduced, but no probability bound is claimed.
+    Reproduced {
+        /// The run.
+        report: RandomReport,
     },
     /// Zero at every point, but the bound is not small enough (or could not be computed).
     Undecided {
@@ -359,7 +400,8 @@ pub fn log2_error_bound(bound: &SizeBound, circles: usize, trials: u32) -> f64 {
 }
 
 /// Tests `lhs = rhs` at `trials` random points modulo a random prime (see the module
-/// documentation); variables on unit circles `(c, s)` are drawn on the circle.
+/// documentation); variables on unit circles `(c, s)` are drawn on the circle. The prime and
+/// the points come from `seed` and the identity (`Rng::for_input`).
 ///
 /// # Errors
 /// A message for `trials` outside `1..=MAX_RANDOM_TRIALS`, a square root, a non-polynomial
@@ -370,7 +412,7 @@ pub fn random_identity_test(
     variables: &[String],
     circles: &[(String, String)],
     trials: u32,
-    seed: u64,
+    seed: Seed,
 ) -> Result<RandomDecision, String> {
     if !(1..=MAX_RANDOM_TRIALS).contains(&trials) {
         return Err(format!(
@@ -393,7 +435,8 @@ pub fn random_identity_test(
         })(),
         _ => None,
     };
-    let mut rng = Rng::new(seed);
+    let input = format!("{lhs}\n{rhs}\n{variables:?}\n{circles:?}");
+    let mut rng = Rng::for_input(seed.value(), input.as_bytes());
     let mut redrawn = 0;
     'prime: loop {
         let field = PrimeField::random_62(&mut rng);
@@ -448,7 +491,9 @@ pub fn random_identity_test(
         return Ok(match bound {
             Some(b) => {
                 let log2_bound = log2_error_bound(&b, circles.len(), trials);
-                if log2_bound < HOLDS_THRESHOLD_LOG2 {
+                if log2_bound < HOLDS_THRESHOLD_LOG2 && matches!(seed, Seed::Chosen(_)) {
+                    RandomDecision::Reproduced { report }
+                } else if log2_bound < HOLDS_THRESHOLD_LOG2 {
                     RandomDecision::Holds {
                         report,
                         bound: b,

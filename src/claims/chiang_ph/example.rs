@@ -585,6 +585,8 @@ pub(super) fn radius_check() -> Result<Outcome, String> {
     };
     let at_printed = cusps_at(&printed);
     let mut failures = Vec::new();
+    // The printed cusp counts found false: (r, printed count, computed count).
+    let mut wrong_counts: Vec<(Rational, usize, usize)> = Vec::new();
     if !rounded {
         failures.push(format!(
             "the smallest radius is {rho}, not {PRINTED_MIN_RADIUS}"
@@ -592,6 +594,7 @@ pub(super) fn radius_check() -> Result<Outcome, String> {
     }
     let one_cusp = at_printed.len() == 1;
     if !one_cusp {
+        wrong_counts.push((printed.clone(), 1, at_printed.len()));
         failures.push(format!(
             "\"r = {PRINTED_MIN_RADIUS}: exactly one cusp\" fails: at r = {printed} exactly there is {}",
             cusps_text(&at_printed)
@@ -600,6 +603,7 @@ pub(super) fn radius_check() -> Result<Outcome, String> {
     if between != rho {
         let c = cusps_at(&between);
         if c.len() != 2 {
+            wrong_counts.push((between.clone(), 2, c.len()));
             failures.push(format!(
                 "\"r > {PRINTED_MIN_RADIUS}: two cusps\" fails: at r = {between} > {PRINTED_MIN_RADIUS} there is {}",
                 cusps_text(&c)
@@ -656,31 +660,75 @@ pub(super) fn radius_check() -> Result<Outcome, String> {
         },
         method: "exact: smallest radius by PhCurve::min_radius (candidate certified by root isolation of sigma^2 - 2 m w); cusps = zeros of sigma^2 - 2 r w with multiplicity, cross-checked by the gcd of the rational offset's derivative numerators".into(),
         erratum: (!failures.is_empty()).then(|| {
-            let int = |k: usize| Expr::number(Rational::from_integer(k as i64));
-            Box::new(Erratum {
-                printed: vec![Equation::named("rho_min", printed.to_expr())],
-                corrected: vec![Equation::named("rho_min", rho.to_expr())],
-                correction: corrected
-                    .strip_prefix("Corrected: ")
-                    .unwrap_or(&corrected)
-                    .to_string(),
-                counter_example: vec![
-                    Equation::named("r", printed.to_expr()),
-                    Equation::named("n_cusps", int(at_printed.len())),
-                    Equation::named("n_crossings", int(at_printed_crossings)),
-                ],
-                residual: vec![Equation::new(
-                    Expr::new(ExprKind::Sum(vec![
-                        (AddOp::Plus, Expr::var("rho_min")),
-                        (AddOp::Minus, Expr::var("r")),
-                    ])),
-                    rho.sub_ref(&printed).to_expr(),
-                )],
-                notation: vec![("rho_min".into(), "\\rho_{min}".into())],
-            })
+            radius_erratum(
+                &printed,
+                (!rounded).then_some(&rho),
+                &wrong_counts,
+                (&rho, cusps_at(&rho).len()),
+                at_printed_crossings,
+                &corrected,
+            )
         }),
         evidence,
     })
+}
+
+/// The erratum of `chiang.ph_radius`, from what the check found false: the smallest radius
+/// (`wrong_radius`: the exact one, when the printed value is not its correct rounding) and the
+/// cusp counts (`wrong_counts`: `r`, the printed count, the computed count); `at_minimum` is the
+/// count at the exact minimum radius, `crossings` the self-intersections at the printed radius.
+fn radius_erratum(
+    printed: &Rational,
+    wrong_radius: Option<&Rational>,
+    wrong_counts: &[(Rational, usize, usize)],
+    at_minimum: (&Rational, usize),
+    crossings: usize,
+    corrected: &str,
+) -> Box<Erratum> {
+    let int = |k: usize| Expr::number(Rational::from_integer(k as i64));
+    let call = |f: &str, r: &Rational| Expr::new(ExprKind::Call(f.into(), vec![r.to_expr()]));
+    let minus =
+        |a: Expr, b: Expr| Expr::new(ExprKind::Sum(vec![(AddOp::Plus, a), (AddOp::Minus, b)]));
+    let mut e = Erratum {
+        correction: corrected
+            .strip_prefix("Corrected: ")
+            .unwrap_or(corrected)
+            .to_string(),
+        notation: vec![
+            ("rho_min".into(), "\\rho_{min}".into()),
+            ("n_cusps".into(), "n_{cusps}".into()),
+            ("n_crossings".into(), "n_{crossings}".into()),
+        ],
+        ..Erratum::default()
+    };
+    if let Some(rho) = wrong_radius {
+        e.printed
+            .push(Equation::named("rho_min", printed.to_expr()));
+        e.corrected.push(Equation::named("rho_min", rho.to_expr()));
+        e.residual.push(Equation::new(
+            minus(Expr::var("rho_min"), printed.to_expr()),
+            rho.sub_ref(printed).to_expr(),
+        ));
+    }
+    for (r, said, found) in wrong_counts {
+        e.printed
+            .push(Equation::new(call("n_cusps", r), int(*said)));
+        e.counter_example
+            .push(Equation::new(call("n_cusps", r), int(*found)));
+        e.residual.push(Equation::new(
+            minus(call("n_cusps", r), int(*said)),
+            Expr::number(Rational::from_integer(*found as i64 - *said as i64)),
+        ));
+    }
+    if !wrong_counts.is_empty() {
+        e.counter_example
+            .push(Equation::new(call("n_crossings", printed), int(crossings)));
+        e.corrected.push(Equation::new(
+            call("n_cusps", at_minimum.0),
+            int(at_minimum.1),
+        ));
+    }
+    Box::new(e)
 }
 
 // ------------------------------------------------------------------------------ ph_offsets
