@@ -272,7 +272,8 @@ fn random_test(
             log2 = Some(*log2_bound);
             let why = match bound {
                 Some(b) => format!(
-                    "with LHS - RHS = F/D ({b}) the error bound is {}, not below the threshold 2^{HOLDS_THRESHOLD_LOG2}",
+                    "with LHS - RHS = F/D ({b}) the error bound{} is {}, not below the threshold 2^{HOLDS_THRESHOLD_LOG2}",
+                    if chosen.is_some() { " a fresh seed would give" } else { "" },
                     show(*log2_bound)
                 ),
                 None => "the size and degree bounds of LHS - RHS do not fit in 64 bits, so no error bound can be given".to_string(),

@@ -470,6 +470,25 @@ fn prove_random_with_a_chosen_seed_cannot_be_aimed_at_its_prime() {
     let q = w["prime"].as_u64().unwrap();
     assert_ne!(p, q);
     assert_ne!(p % q, 0, "the prime used divides the coefficient");
+    // A weak bound under a chosen seed is named as what a fresh seed would give.
+    let (code, v) = prove_json(&[
+        "0*x^2305843009213693951",
+        "0",
+        "--random",
+        "10",
+        "--seed",
+        "3",
+    ]);
+    assert_eq!(
+        (code, v["verdict"].as_str()),
+        (Some(1), Some("undecided")),
+        "{v}"
+    );
+    let evidence = v["evidence"].as_str().unwrap();
+    assert!(
+        evidence.contains("the error bound a fresh seed would give is"),
+        "{v}"
+    );
 }
 
 #[test]

@@ -1022,7 +1022,8 @@ fn instances(check: &Check) -> Result<Outcome, Fault> {
             verdict: Verdict::Undecided,
             method,
             evidence: format!(
-                "LHS - RHS vanishes at all {trials} points, but the error bound{coords} is {}, not below 2^{HOLDS_THRESHOLD_LOG2}; use more points (random up to {MAX_RANDOM_TRIALS}){extra}",
+                "LHS - RHS vanishes at all {trials} points, but the error bound{coords}{} is {}, not below 2^{HOLDS_THRESHOLD_LOG2}; use more points (random up to {MAX_RANDOM_TRIALS}){extra}",
+                if chosen.is_empty() { "" } else { " a fresh seed would give" },
                 show(worst)
             ),
             erratum: None,
