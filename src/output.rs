@@ -18,8 +18,8 @@
 //! makes the write fail with `EFBIG` instead of killing the process), a kill or a second writer
 //! never leave a truncated file under the name, and the file that was there stays as it was
 //! until the new one is complete. A symbolic link at the path is replaced, not followed. An
-//! existing device or pipe (`/dev/null`, `/dev/stdout`) is written directly: there is nothing
-//! to replace. Output directories are checked before the work ([`check_output_dir`]) and
+//! existing device or pipe (`/dev/null`) and the names in `/dev` and `/proc` (`/dev/stdout`)
+//! are written directly: there is nothing to replace. Output directories are checked before the work ([`check_output_dir`]) and
 //! created only once there is something to write ([`create_dirs`]).
 
 use crate::Error;
@@ -312,9 +312,11 @@ pub fn write_file(path: &str, contents: &[u8], inputs: &[&Path]) -> Result<(), E
         path: path.to_string(),
         source,
     };
-    if fs::metadata(target).is_ok_and(|m| is_special(&m)) {
+    if in_place(target) {
         return fs::OpenOptions::new()
             .write(true)
+            .create(true)
+            .truncate(true)
             .open(target)
             .and_then(|mut f| f.write_all(contents).and_then(|()| f.flush()))
             .map_err(fail);
@@ -343,9 +345,18 @@ pub fn write_file(path: &str, contents: &[u8], inputs: &[&Path]) -> Result<(), E
     Ok(())
 }
 
-/// A device, pipe or socket: written in place, since it cannot be replaced by a rename.
-fn is_special(m: &fs::Metadata) -> bool {
-    !m.is_file() && !m.is_dir()
+/// Whether `target` is written in place rather than replaced: a device, pipe or socket (it
+/// cannot be replaced by a rename), or a name in `/dev` or `/proc` (`/dev/stdout`,
+/// `/dev/fd/1`: links to this process's open files, which a rename would destroy, not write).
+fn in_place(target: &Path) -> bool {
+    if fs::metadata(target).is_ok_and(|m| !m.is_file() && !m.is_dir()) {
+        return true;
+    }
+    let dir = match target.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    };
+    fs::canonicalize(dir).is_ok_and(|d| d.starts_with("/dev") || d.starts_with("/proc"))
 }
 
 /// Creates a new temporary file for `target` ([`temp_path`]), never opening an existing one.

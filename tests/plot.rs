@@ -407,3 +407,22 @@ fn replacing_a_figure_keeps_its_permissions_and_leaves_no_temporary_file() {
     }
     assert!(temp_files(&dir.path("")).is_empty());
 }
+
+#[cfg(target_os = "linux")]
+#[test]
+fn a_name_in_dev_is_written_in_place() {
+    // `/dev/fd/1` is this process's standard output (here a file): written through, not
+    // replaced by a rename (which cannot create a file in /proc and would destroy the link).
+    let dir = TempDir::new("devfd");
+    let out = dir.path("out.txt");
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+        .args(["plot", "spaeth", "--example", "1", "-o", "/dev/fd/1"])
+        .stdout(std::fs::File::create(&out).unwrap())
+        .output()
+        .expect("run exactcheck");
+    assert!(o.status.success(), "{o:?}");
+    // The summary line goes to the same file at the descriptor's own offset (as with any
+    // second opening of a redirected standard output); the figure is there.
+    let text = std::fs::read_to_string(&out).unwrap();
+    assert!(text.contains("</svg>"), "{}", &text[..text.len().min(80)]);
+}
