@@ -26,7 +26,10 @@ fuzz_target!(|data: &[u8]| {
                 assert!(!shown.contains('\n'), "{shown:?}");
             }
             Ok(()) => {
-                assert!(!text.is_empty() && text != "-" && !text.contains('\0'), "{text:?}");
+                assert!(
+                    !text.is_empty() && text != "-" && !text.contains('\0'),
+                    "{text:?}"
+                );
                 if target == Target::Dir {
                     continue;
                 }
