@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # Regenerates the seed corpus fuzz/seeds/<target>/ from the repository: the README's `prove`
 # examples, tests/solve_golden, the claims files of examples/ and tests/claims_file, the FPCore
-# suite of tests/regress, and a few hand-made elements of the radical field. Run from anywhere;
-# the seeds are small and committed, the corpus the fuzzer grows (fuzz/corpus) is not.
+# suite of tests/regress, a few hand-made elements of the radical field and output paths. Run
+# from anywhere; the seeds are small and committed, the corpus the fuzzer grows (fuzz/corpus) is
+# not.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 rm -rf fuzz/seeds
-mkdir -p fuzz/seeds/{expr_roundtrip,solve_json,prove,radical,fpcore,claims_file}
+mkdir -p fuzz/seeds/{expr_roundtrip,solve_json,prove,radical,fpcore,claims_file,output_path}
 
 python3 - <<'PY'
 import glob, hashlib, os, re, shlex
@@ -86,7 +87,12 @@ for seed in [
     bytes([12, 16, 3, 0, 1, 9, 0, 15, 128, 15, 2, 127, 1, 14, 4, 2, 7, 100, 5, 9, 1, 1, 3, 33, 7]),
 ]:
     put("radical", seed)
+
+# Output paths: plain, hidden, nested, directories, standard output, long and multi-byte names.
+for seed in ["out.svg", "./-", "-", "", "out/", "out.svg/.", "a/..", "/dev/stdout",
+             "a//b/./c.svg", ".hidden", "x" * 300, "\u00e9" * 120, "a\nb.svg"]:
+    put("output_path", seed)
 PY
-for t in expr_roundtrip solve_json prove radical fpcore claims_file; do
+for t in expr_roundtrip solve_json prove radical fpcore claims_file output_path; do
   echo "$t: $(ls fuzz/seeds/$t | wc -l) seeds"
 done

@@ -183,9 +183,11 @@ impl std::fmt::Write for StackText {
 static ENDING: AtomicBool = AtomicBool::new(false);
 
 /// Writes one line to standard error and ends the process with exit status 2, running no
-/// destructors and allocating nothing. Only the first caller writes: with claims checked on
-/// several threads, two of them can pass the memory cap at once (or the watchdog fire while a
-/// thread passes it), and the contract is one line. The others wait for the exit.
+/// destructors and allocating nothing (the temporary file of an output file being written is
+/// removed first, [`crate::output::remove_temp_file`]). Only the first caller writes: with
+/// claims checked on several threads, two of them can pass the memory cap at once (or the
+/// watchdog fire while a thread passes it), and the contract is one line. The others wait for
+/// the exit.
 fn die(args: std::fmt::Arguments<'_>) -> ! {
     if ENDING.swap(true, Ordering::SeqCst) {
         wait_for_exit()
@@ -195,6 +197,7 @@ fn die(args: std::fmt::Arguments<'_>) -> ! {
         len: 0,
     };
     let _ = std::fmt::write(&mut text, args);
+    crate::output::remove_temp_file();
     exit_with(&text.buf[..text.len])
 }
 

@@ -26,6 +26,15 @@ pub enum Error {
     /// Writing standard output failed (see [`crate::output`]).
     #[error("cannot write standard output: {}", io_message(.0))]
     Output(std::io::Error),
+    /// Writing an output file failed (see [`crate::output::write_file`]); the file that was
+    /// there before is left as it was.
+    #[error("cannot write {}: {}", one_line(.path), io_message(.source))]
+    Write {
+        /// The output path as the user gave it.
+        path: String,
+        /// The underlying error.
+        source: std::io::Error,
+    },
 }
 
 impl Error {

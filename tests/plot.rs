@@ -286,3 +286,143 @@ fn subnormal_sphere_radius_draws_without_overflow() {
         ));
     }
 }
+
+/// A copy of the golden problem of Spaeth's example 1 in `dir`.
+fn problem_copy(dir: &TempDir, name: &str) -> std::path::PathBuf {
+    let golden = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/solve_golden/cs_example1.json"
+    );
+    let p = dir.path(name);
+    std::fs::copy(golden, &p).expect("copy the problem");
+    p
+}
+
+/// The files of `dir` whose names end in `.tmp` (what an interrupted write would leave).
+fn temp_files(dir: &Path) -> Vec<String> {
+    std::fs::read_dir(dir)
+        .expect("list the directory")
+        .map(|e| e.expect("entry").file_name().to_string_lossy().into_owned())
+        .filter(|n| n.ends_with(".tmp"))
+        .collect()
+}
+
+#[test]
+fn the_problem_file_is_never_the_output() {
+    // Old: `plot p.json -o p.json` replaced the problem with its SVG figure (exit 0).
+    let dir = TempDir::new("self");
+    let p = problem_copy(&dir, "p.json");
+    let before = std::fs::read(&p).unwrap();
+    let p_str = p.to_str().unwrap();
+    let dotted = format!("{}/./p.json", dir.path("").display());
+    std::fs::hard_link(&p, dir.path("hard.json")).unwrap();
+    let hard = dir.path("hard.json");
+    for out in [p_str, dotted.as_str(), hard.to_str().unwrap()] {
+        let o = exactcheck(&["plot", p_str, "-o", out]);
+        assert_eq!(o.status.code(), Some(2), "-o {out}: {o:?}");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(
+            err.contains("is the input") && err.contains("would replace the input"),
+            "{err}"
+        );
+        assert!(o.stdout.is_empty());
+        assert_eq!(
+            std::fs::read(&p).unwrap(),
+            before,
+            "the problem file is intact"
+        );
+    }
+    // A different file next to it is written as before.
+    check_svg(&plot(&[p_str], &dir.path("p.svg")));
+    assert_eq!(std::fs::read(&p).unwrap(), before);
+}
+
+#[cfg(unix)]
+#[test]
+fn a_symlink_at_the_output_is_replaced_not_followed() {
+    // Old: the SVG was written through the link into the file it points to.
+    let dir = TempDir::new("link");
+    let p = problem_copy(&dir, "p.json");
+    let target = dir.path("elsewhere.txt");
+    std::fs::write(&target, "keep me").unwrap();
+    let link = dir.path("fig.svg");
+    std::os::unix::fs::symlink(&target, &link).unwrap();
+    check_svg(&plot(&[p.to_str().unwrap()], &link));
+    assert_eq!(std::fs::read_to_string(&target).unwrap(), "keep me");
+    let meta = std::fs::symlink_metadata(&link).unwrap();
+    assert!(
+        meta.file_type().is_file(),
+        "the link was replaced by the figure"
+    );
+    // A link to the problem file itself: the link is replaced, the problem stays.
+    let to_problem = dir.path("to_problem.svg");
+    std::os::unix::fs::symlink(&p, &to_problem).unwrap();
+    let before = std::fs::read(&p).unwrap();
+    check_svg(&plot(&[p.to_str().unwrap()], &to_problem));
+    assert_eq!(std::fs::read(&p).unwrap(), before);
+    assert!(temp_files(&dir.path("")).is_empty());
+}
+
+#[test]
+fn an_output_path_that_names_no_file_is_refused_before_drawing() {
+    let dir = TempDir::new("names");
+    let d = dir.path("");
+    let d = d.to_str().unwrap().trim_end_matches('/');
+    let slash = format!("{d}/x.svg/");
+    let dot = format!("{d}/.");
+    for (out, needle) in [
+        ("", "the output path is empty"),
+        (d, "is a directory, not a file"),
+        (slash.as_str(), "names a directory, not a file"),
+        (dot.as_str(), "names a directory, not a file"),
+    ] {
+        let o = exactcheck(&["plot", "spaeth", "--example", "1", "-o", out]);
+        assert_eq!(o.status.code(), Some(2), "-o {out:?}: {o:?}");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(err.contains(needle), "-o {out:?}: {err}");
+    }
+    assert!(!dir.path("x.svg").exists());
+    let o = exactcheck(&["plot", "spaeth", "--example", "1", "-o", "/dev/null"]);
+    assert!(o.status.success(), "a device is written in place: {o:?}");
+}
+
+#[test]
+fn replacing_a_figure_keeps_its_permissions_and_leaves_no_temporary_file() {
+    let dir = TempDir::new("replace");
+    let out = dir.path("fig.svg");
+    std::fs::write(&out, "old figure").unwrap();
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt as _;
+        std::fs::set_permissions(&out, std::fs::Permissions::from_mode(0o640)).unwrap();
+    }
+    check_svg(&plot(&["spaeth", "--example", "2"], &out));
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt as _;
+        let mode = std::fs::metadata(&out).unwrap().permissions().mode();
+        assert_eq!(mode & 0o777, 0o640);
+    }
+    assert!(temp_files(&dir.path("")).is_empty());
+}
+
+#[cfg(target_os = "linux")]
+#[test]
+fn a_name_in_dev_is_written_in_place() {
+    // `/dev/fd/1` is this process's standard output (here a file): written through, not
+    // replaced by a rename (which cannot create a file in /proc and would destroy the link).
+    let dir = TempDir::new("devfd");
+    let out = dir.path("out.txt");
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+        .args(["plot", "spaeth", "--example", "1", "-o", "/dev/fd/1"])
+        .stdout(std::fs::File::create(&out).unwrap())
+        .output()
+        .expect("run exactcheck");
+    assert!(o.status.success(), "{o:?}");
+    // The summary line goes to the same file at the descriptor's own offset (as with any
+    // second opening of a redirected standard output); the figure is there.
+    let text = std::fs::read_to_string(&out).unwrap();
+    assert!(text.contains("</svg>"), "{}", &text[..text.len().min(80)]);
+}

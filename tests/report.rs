@@ -246,3 +246,86 @@ fn bad_outputs_and_counts_are_one_line_errors() {
     assert!(err.contains("--samples must be between 1 and"), "{err}");
     assert!(!dir.join("index.html").exists());
 }
+
+/// Runs `exactcheck ARGS` in the directory `cwd`.
+fn exactcheck_in(cwd: &Path, args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+        .args(args)
+        .current_dir(cwd)
+        .output()
+        .expect("the binary runs")
+}
+
+/// The one line of a run that must fail with exit status 2 and print nothing.
+fn one_error_line(o: &Output) -> String {
+    assert_eq!(o.status.code(), Some(2), "{o:?}");
+    assert!(o.stdout.is_empty(), "{o:?}");
+    let err = String::from_utf8_lossy(&o.stderr).into_owned();
+    assert_eq!(err.lines().count(), 1, "{err}");
+    err.trim_end().to_string()
+}
+
+const PAPER: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/mypaper.toml");
+
+#[test]
+fn an_empty_or_dash_output_is_refused() {
+    // Old: `-o ''` wrote ./index.html over the one in the working directory, `-o -` made a
+    // directory named `-`.
+    let dir = scratch("report-empty-dash");
+    std::fs::write(dir.join("index.html"), "mine").unwrap();
+    let e = one_error_line(&exactcheck_in(&dir, &["report", PAPER, "-o", ""]));
+    assert!(e.contains("the output path is empty"), "{e}");
+    assert_eq!(
+        std::fs::read_to_string(dir.join("index.html")).unwrap(),
+        "mine"
+    );
+    let e = one_error_line(&exactcheck_in(&dir, &["report", PAPER, "-o", "-"]));
+    assert!(
+        e.contains("`-` means standard output") && e.contains("./-"),
+        "{e}"
+    );
+    assert!(!dir.join("-").exists());
+    // `./-` names a directory called `-`.
+    let o = exactcheck_in(&dir, &["report", PAPER, "-o", "./-", "--quiet"]);
+    assert!(o.status.success(), "{o:?}");
+    assert!(dir.join("-/index.html").is_file());
+}
+
+#[test]
+fn the_input_is_read_before_the_directory_is_created() {
+    // Old: the directory was created first and left empty when the claims file was missing.
+    let dir = scratch("report-input-first");
+    let out = dir.join("new/out");
+    let e = one_error_line(&exactcheck(&[
+        "report",
+        "no/such/paper.toml",
+        "-o",
+        out.to_str().unwrap(),
+    ]));
+    assert!(e.contains("no/such/paper.toml"), "{e}");
+    assert!(!dir.join("new").exists(), "no directory on an error");
+}
+
+#[cfg(unix)]
+#[test]
+fn a_symlink_at_index_html_is_replaced_not_followed() {
+    // Old: the page was written through the link, outside the output directory.
+    let dir = scratch("report-symlink");
+    let outside = dir.join("outside.html");
+    std::fs::write(&outside, "not the report's").unwrap();
+    let out = dir.join("out");
+    std::fs::create_dir(&out).unwrap();
+    std::os::unix::fs::symlink(&outside, out.join("index.html")).unwrap();
+    let o = exactcheck(&["report", PAPER, "-o", out.to_str().unwrap(), "--quiet"]);
+    assert!(o.status.success(), "{o:?}");
+    assert_eq!(
+        std::fs::read_to_string(&outside).unwrap(),
+        "not the report's"
+    );
+    let index = out.join("index.html");
+    assert!(std::fs::symlink_metadata(&index)
+        .unwrap()
+        .file_type()
+        .is_file());
+    assert!(std::fs::read_to_string(&index).unwrap().contains("<html"));
+}

@@ -506,3 +506,122 @@ fn deep_input_at_the_largest_depth_limit_answers_instead_of_overflowing_the_stac
         format!("exactcheck: error: --limit depth: at most {max} levels (found {}): every level needs stack", max + 1)
     );
 }
+
+/// Runs `exactcheck ARGS` under `ulimit -f BLOCKS` (512-byte blocks in POSIX `sh`) in `dir`,
+/// with standard output to the file `stdout_file` there when given.
+#[cfg(unix)]
+fn under_file_size_limit(
+    blocks: u32,
+    dir: &std::path::Path,
+    stdout_file: Option<&str>,
+    args: &[&str],
+) -> Output {
+    let redirect = stdout_file.map_or(String::new(), |f| format!(" > '{f}'"));
+    Command::new("sh")
+        .arg("-c")
+        .arg(format!(
+            "ulimit -f {blocks} && exec \"$0\" \"$@\"{redirect}"
+        ))
+        .arg(env!("CARGO_BIN_EXE_exactcheck"))
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .expect("run sh")
+}
+
+#[cfg(unix)]
+#[test]
+fn the_file_size_limit_keeps_the_old_output_and_is_one_line() {
+    // Old: SIGXFSZ killed the process (no message, no exit status) after truncating the old
+    // file and writing its first bytes.
+    let dir = TempDir::new("ulimit");
+    let old = "<svg>the old figure</svg>\n";
+    std::fs::write(dir.0.join("fig.svg"), old).unwrap();
+    let o = under_file_size_limit(
+        2,
+        &dir.0,
+        None,
+        &["plot", "spaeth", "--example", "1", "-o", "fig.svg"],
+    );
+    assert_eq!(
+        one_error_line(&o),
+        "exactcheck: error: cannot write fig.svg: File too large"
+    );
+    assert_eq!(std::fs::read_to_string(dir.0.join("fig.svg")).unwrap(), old);
+
+    let paper = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/mypaper.toml");
+    std::fs::create_dir(dir.0.join("out")).unwrap();
+    std::fs::write(dir.0.join("out/index.html"), "the old page").unwrap();
+    let o = under_file_size_limit(4, &dir.0, None, &["report", paper, "-o", "out", "--quiet"]);
+    assert_eq!(
+        one_error_line(&o),
+        "exactcheck: error: cannot write out/index.html: File too large"
+    );
+    assert_eq!(
+        std::fs::read_to_string(dir.0.join("out/index.html")).unwrap(),
+        "the old page"
+    );
+    // A directory the report created for a page it could not write is removed again.
+    let o = under_file_size_limit(4, &dir.0, None, &["report", paper, "-o", "new/dir"]);
+    one_error_line(&o);
+    assert!(!dir.0.join("new").exists());
+
+    // Standard output redirected to a file: one line too.
+    let o = under_file_size_limit(
+        1,
+        &dir.0,
+        Some("r.txt"),
+        &["regress", "cylinder-sphere", "--samples", "20", "--quiet"],
+    );
+    assert_eq!(
+        one_error_line(&o),
+        "exactcheck: error: cannot write standard output: File too large"
+    );
+    let left: Vec<String> = std::fs::read_dir(&dir.0)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.ends_with(".tmp"))
+        .collect();
+    assert!(left.is_empty(), "temporary files left: {left:?}");
+}
+
+#[test]
+fn a_timeout_leaves_no_partial_text_report() {
+    // Old: the first part of the cylinder-sphere report was printed before the root and sign
+    // sweeps ran, so a timeout during them left a report that looked complete but was not.
+    let args = [
+        "regress",
+        "cylinder-sphere",
+        "--samples",
+        "10000",
+        "--quiet",
+    ];
+    let start = Instant::now();
+    let full = exactcheck(&args);
+    let whole = start.elapsed().as_secs_f64();
+    assert!(full.status.success(), "{full:?}");
+    let text = String::from_utf8_lossy(&full.stdout);
+    assert!(text.contains("signs of A^2 - B near tangency"), "{text}");
+    // The first part used to appear at about a third of the run: stop the run at 60% of it.
+    let timeout = format!("{:.3}", whole * 0.6);
+    let mut all = vec!["--timeout", timeout.as_str()];
+    all.extend_from_slice(&args);
+    let o = exactcheck(&all);
+    match o.status.code() {
+        Some(2) => {
+            let e = one_error_line(&o);
+            assert!(
+                e.starts_with("exactcheck: error: the command did not finish within --timeout"),
+                "{e}"
+            );
+            assert!(
+                o.stdout.is_empty(),
+                "part of a report: {}",
+                String::from_utf8_lossy(&o.stdout)
+            );
+        }
+        // The second run was faster than 60% of the first: then the report is whole.
+        Some(0) => assert!(String::from_utf8_lossy(&o.stdout).contains("near tangency")),
+        _ => panic!("{o:?}"),
+    }
+}

@@ -27,6 +27,7 @@ use exactcheck_exact::Rational;
 use exactcheck_float::sampler::DiscSampler;
 use std::f64::consts::TAU;
 use std::io::Write as _;
+use std::path::Path;
 use std::process::ExitCode;
 
 pub mod chiang;
@@ -82,10 +83,14 @@ pub enum View {
 /// path that cannot be written; [`Error::Io`] / [`Error::Input`] for an unreadable or malformed
 /// problem file or one of another kind; [`Error::Output`] when standard output fails.
 pub fn run(args: &PlotArgs) -> Result<ExitCode, Error> {
+    let input = input_file(args);
+    if args.output != "-" {
+        crate::output::check_output_file(&args.output, input.as_slice())?;
+    }
     if args.source == "chiang" {
         let svg = chiang::figure(args.example)?;
         return emit(
-            &args.output,
+            args,
             &svg,
             "Chiang Example 4 (ruled surface, plane z = 0, exact section curve, control polygon)",
         );
@@ -93,7 +98,7 @@ pub fn run(args: &PlotArgs) -> Result<ExitCode, Error> {
     if args.source == "ph" {
         let svg = ph::figure(args.example)?;
         return emit(
-            &args.output,
+            args,
             &svg,
             "Chiang's PH curve with its offsets at r = 3, 12.6, 15 and their cusps",
         );
@@ -107,7 +112,7 @@ pub fn run(args: &PlotArgs) -> Result<ExitCode, Error> {
         }
         let (svg, _) = conics::table1();
         return emit(
-            &args.output,
+            args,
             &svg,
             "Chiang Table 1 (four cone sections, control polygons, poles)",
         );
@@ -116,11 +121,7 @@ pub fn run(args: &PlotArgs) -> Result<ExitCode, Error> {
         let text = crate::solve::read_problem(Some(&args.source))?;
         if crate::solve::problem_kind(&text).is_ok_and(|k| k == "conic") {
             let (svg, _) = conics::file(&args.source, &text)?;
-            return emit(
-                &args.output,
-                &svg,
-                &format!("cone section of {}", args.source),
-            );
+            return emit(args, &svg, &format!("cone section of {}", args.source));
         }
     }
     let scene = match (args.source.as_str(), args.example) {
@@ -135,7 +136,7 @@ pub fn run(args: &PlotArgs) -> Result<ExitCode, Error> {
             )))
         }
         (path, None) => match ph::file_figure(path)? {
-            Some((svg, what)) => return emit(&args.output, &svg, &what),
+            Some((svg, what)) => return emit(args, &svg, &what),
             None => file_scene(path)?,
         },
     };
@@ -151,7 +152,13 @@ pub fn run(args: &PlotArgs) -> Result<ExitCode, Error> {
             _ => String::new(),
         }
     );
-    emit(&args.output, &svg, &what)
+    emit(args, &svg, &what)
+}
+
+/// The problem file `plot` reads, when its source is one (not a built-in figure's name).
+fn input_file(args: &PlotArgs) -> Option<&Path> {
+    let built_in = ["spaeth", "chiang", "ph", "conics"].contains(&args.source.as_str());
+    (!built_in).then(|| Path::new(&args.source))
 }
 
 /// A figure of the built-in catalogue, as the report shows it.
@@ -214,14 +221,15 @@ pub fn catalogue_figures() -> Result<Vec<Figure>, Error> {
     Ok(out)
 }
 
-/// Writes `svg` to `output` (`-`: standard output) and prints the summary line "wrote ...".
-fn emit(output: &str, svg: &str, what: &str) -> Result<ExitCode, Error> {
+/// Writes `svg` to `-o` (`-`: standard output; a file never over the problem file read) and
+/// prints the summary line "wrote ...".
+fn emit(args: &PlotArgs, svg: &str, what: &str) -> Result<ExitCode, Error> {
+    let output = args.output.as_str();
     let to_stdout = output == "-";
     if to_stdout {
         crate::output::print(svg)?;
     } else {
-        std::fs::write(output, svg)
-            .map_err(|e| Error::Usage(format!("cannot write {output}: {e}")))?;
+        crate::output::write_file(output, svg.as_bytes(), input_file(args).as_slice())?;
     }
     let summary = format!(
         "wrote {}: {what} ({} bytes of SVG)",

@@ -400,11 +400,15 @@ pub fn run(args: &RegressArgs) -> Result<ExitCode, Error> {
         crate::output::println(format_args!("{doc:#}"))?;
         return Ok(ExitCode::SUCCESS);
     }
-    crate::output::println(report)?;
+    // Printed once every part is computed: an error or `--timeout` in the root or sign sweep
+    // must not leave the first part on standard output as if it were the whole report.
+    let mut text = crate::output::Text::new();
+    text.line(report);
     if kernel == Kernel::CylinderSphere {
-        crate::output::println(root_errors(&gen, args.samples, args.seed).text())?;
-        crate::output::println(sign_errors_near_tangency(args.samples, args.seed))?;
+        text.line(root_errors(&gen, args.samples, args.seed).text());
+        text.line(sign_errors_near_tangency(args.samples, args.seed));
     }
+    text.print()?;
     Ok(ExitCode::SUCCESS)
 }
 

@@ -184,21 +184,23 @@ pub fn table(entries: &[Entry]) -> String {
     out
 }
 
-/// Prints the entries: the JSON document, or each report (one) / the table then each report.
+/// Prints the entries: the JSON document, or each report (one) / the table then each report,
+/// in one write.
 pub fn print(entries: &[Entry], as_json: bool) -> Result<(), Error> {
     if as_json {
         return crate::output::println(format_args!("{:#}", document(entries)));
     }
+    let mut text = crate::output::Text::new();
     if entries.len() > 1 {
-        crate::output::println(table(entries))?;
+        text.line(table(entries));
     }
     for e in entries {
         match &e.outcome {
-            Ok(r) => crate::output::println(r)?,
-            Err(why) => crate::output::println(format_args!("{}: {why}\n", e.name))?,
+            Ok(r) => text.line(r),
+            Err(why) => text.line(format_args!("{}: {why}\n", e.name)),
         }
     }
-    Ok(())
+    text.print()
 }
 
 /// A progress bar on standard error for a sweep: drawn only when standard error is a terminal,

@@ -39,7 +39,8 @@ pub const MAX_REPORT_SAMPLES: usize = 200_000;
 pub struct ReportArgs {
     /// A claims file (TOML or JSON) to check instead of the built-in catalogue.
     pub file: Option<String>,
-    /// The directory to write `index.html` into (created when missing).
+    /// The directory to write `index.html` into (created when missing, once the page is
+    /// complete; not empty and not `-`: the page is a file in a directory, not standard output).
     #[arg(short = 'o', long = "output", value_name = "DIR")]
     pub output: String,
     /// Samples of each float-vs-exact regression (of each shape and regime for ruled-plane),
@@ -69,31 +70,19 @@ pub fn checked_claims(file: Option<&str>) -> Result<Vec<Checked>, Error> {
     }
 }
 
-/// Prepares the output directory `dir`: creates it when missing.
-///
-/// # Errors
-/// [`Error::Usage`] when `dir` exists and is not a directory, or cannot be created.
-pub fn prepare_dir(dir: &str) -> Result<(), Error> {
-    let path = Path::new(dir);
-    if path.exists() && !path.is_dir() {
-        return Err(Error::Usage(format!(
-            "-o {dir}: is a file, not a directory (the report writes DIR/index.html)"
-        )));
-    }
-    std::fs::create_dir_all(path)
-        .map_err(|e| Error::Usage(format!("cannot create the directory {dir}: {e}")))
-}
-
 /// Runs `exactcheck report`: checks the claims, draws the figures, runs the regressions,
 /// writes `DIR/index.html` and prints one summary line. Exit status 0 once the page is written
-/// (the page itself says which verdicts are not the expected ones).
+/// (the page itself says which verdicts are not the expected ones). The output directory is
+/// checked first and created last, once the page is complete; the page replaces
+/// `DIR/index.html` whole ([`crate::output::write_file`]).
 ///
 /// # Errors
-/// [`Error::Usage`] for `--samples` out of range or an output directory that is a file or
-/// cannot be written; the claims file's errors; [`Error::Output`] when standard output fails.
+/// [`Error::Usage`] for `--samples` out of range or an output directory that is empty, `-` or
+/// a file; the claims file's errors; [`Error::Write`] when the directory or the page cannot be
+/// written; [`Error::Output`] when standard output fails.
 pub fn run(args: &ReportArgs) -> Result<ExitCode, Error> {
     crate::args::check_count("--samples", args.samples, MAX_REPORT_SAMPLES, "")?;
-    prepare_dir(&args.output)?;
+    crate::output::check_output_dir(&args.output)?;
     let argv: Vec<std::ffi::OsString> = std::env::args_os().collect();
     let meta = meta::Meta::now(&argv);
     let catalogue = args.file.is_none();
@@ -164,8 +153,13 @@ pub fn run(args: &ReportArgs) -> Result<ExitCode, Error> {
         note,
     })?;
     let index = Path::new(&args.output).join("index.html");
-    std::fs::write(&index, page)
-        .map_err(|e| Error::Usage(format!("cannot write {}: {e}", index.display())))?;
+    let inputs: Vec<&Path> = args.file.iter().map(Path::new).collect();
+    let created = crate::output::create_dirs(&args.output)?;
+    let written = crate::output::write_file(&index.to_string_lossy(), page.as_bytes(), &inputs);
+    if written.is_err() {
+        crate::output::remove_created_dirs(&created);
+    }
+    written?;
     let errata = rows.iter().filter(|r| html::is_erratum(r)).count();
     crate::output::println(format_args!(
         "wrote {}: {} claims ({errata} errata), {} figures, {} regression summaries",
@@ -180,24 +174,6 @@ pub fn run(args: &ReportArgs) -> Result<ExitCode, Error> {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn an_output_that_is_a_file_is_refused() {
-        let dir =
-            std::env::temp_dir().join(format!("exactcheck-report-unit-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
-        let file = dir.join("plain");
-        std::fs::write(&file, "x").unwrap();
-        let e = prepare_dir(file.to_str().unwrap()).unwrap_err().to_string();
-        assert!(
-            e.contains("is a file, not a directory") && !e.contains('\n'),
-            "{e}"
-        );
-        let sub = dir.join("a/b");
-        prepare_dir(sub.to_str().unwrap()).unwrap();
-        assert!(sub.is_dir());
-        std::fs::remove_dir_all(&dir).unwrap();
-    }
 
     #[test]
     fn a_claims_file_is_checked_by_the_claims_file_reader() {
