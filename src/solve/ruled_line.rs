@@ -42,10 +42,10 @@ use super::number::{Coords, ExactNumber, FloatNumber};
 use super::{by_mode, parse, Kind, Mode, Printable};
 use crate::Error;
 use exactcheck_core::roots::{
-    gcd, multiplicity, refine, square_free, unit_roots, IsolatedRoot, ZeroPolynomial,
+    multiplicity, refine, unit_roots, vanishes_at_root, IsolatedRoot, ZeroPolynomial,
 };
 use exactcheck_core::ruled::RuledSurface;
-use exactcheck_core::{Bernstein, Field, OrderedField, Ring, Sign, Vec3};
+use exactcheck_core::{Bernstein, Field, OrderedField, Ring, Vec3};
 use exactcheck_exact::univariate::UPoly;
 use exactcheck_exact::{Radical, Rational};
 use schemars::JsonSchema;
@@ -219,31 +219,6 @@ fn dot3<T: Ring>(a: &[Bernstein<T>; 3], d: &Vec3<T>) -> [Bernstein<T>; 3] {
     ]
 }
 
-/// Whether every polynomial of `others` vanishes at the root `root` of `p` (`p` not zero).
-fn vanishes_at<T: OrderedField>(
-    p: &Bernstein<T>,
-    others: &[Bernstein<T>],
-    root: &IsolatedRoot<T>,
-) -> bool {
-    if others.iter().all(Bernstein::is_zero) {
-        return true;
-    }
-    match root {
-        IsolatedRoot::Exact(t) => others.iter().all(|q| q.eval(t).is_zero()),
-        IsolatedRoot::Between(lo, hi) => {
-            let mut all = vec![p.clone()];
-            all.extend(others.iter().cloned());
-            let g = gcd(&all).expect("p is not identically zero");
-            if g.degree() == 0 {
-                return false;
-            }
-            let q = square_free(&g).expect("a gcd of non-zero polynomials is not zero");
-            let (a, b) = (q.eval(lo).sign(), q.eval(hi).sign());
-            a != b && a != Sign::Zero && b != Sign::Zero
-        }
-    }
-}
-
 fn analyse<T: Scalar>(
     surface: &RuledSurface<T>,
     point: &Vec3<T>,
@@ -281,9 +256,9 @@ fn analyse<T: Scalar>(
             let mut reports = Vec::new();
             for root in roots {
                 let root = refine(&f, &root, &width);
-                let parallel = vanishes_at(&f, &w, &root);
-                let zero_v = parallel && vanishes_at(&f, &v, &root);
-                let on_line = parallel && vanishes_at(&f, &u, &root);
+                let parallel = vanishes_at_root(&f, &w, &root);
+                let zero_v = parallel && vanishes_at_root(&f, &v, &root);
+                let on_line = parallel && vanishes_at_root(&f, &u, &root);
                 let status = match (parallel, zero_v, on_line) {
                     (false, _, _) => Status::Point,
                     (true, false, true) => Status::RulingOnLine,
