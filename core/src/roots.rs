@@ -517,6 +517,24 @@ pub fn vanishes_at_root<T: OrderedField>(
     }
 }
 
+/// The quotient `a / b` of a polynomial by a non-zero divisor of it (for example a gcd
+/// from [`gcd`]), in Bernstein form of its exact degree; the remainder is dropped.
+///
+/// # Panics
+/// When `b` is identically zero.
+pub fn exact_quotient<T: Field>(a: &Bernstein<T>, b: &Bernstein<T>) -> Bernstein<T> {
+    let d = trim(b.to_power());
+    assert!(
+        !d.is_empty(),
+        "exact_quotient: division by the zero polynomial"
+    );
+    let (q, _) = div_rem(&trim(a.to_power()), &d);
+    if q.is_empty() {
+        return Bernstein::constant(T::zero(), 0);
+    }
+    Bernstein::from_power(&q).expect("a non-empty coefficient list")
+}
+
 /// The coefficients of `p` restricted to `[lo, hi]` (`0 <= lo < hi <= 1`): the Bernstein form
 /// of `p(lo + (hi - lo) s)`, `s` in `[0, 1]`, by two de Casteljau splits. Their least and
 /// largest values bound `p` on the interval.

@@ -40,8 +40,8 @@ pub fn refused(problem: &str, extra: &[&str], needles: &[&str]) -> String {
 
 /// Whether the JSON holds a `null` inside an array that has numbers: a NaN or infinity that
 /// serde_json wrote as `null` (answers are refused before that; see `solve::finite`).
-/// `ruled_line`'s `lambda_at_ends` is exempt: there `null` is the contract's "this end's ruling is
-/// parallel to the line" beside a number for the other end (found by `solve_props` on
+/// `ruled_line`'s `lambda_at_ends` is exempt: there `null` is the contract's unbounded end of
+/// the covered part of the line beside the other end (found by `solve_props` on
 /// `base [[-1,-3,2]]`, directions `[[-2,-1,-1],[2,-1,1]]`, line direction `(-2,-1,-1)`).
 /// The `approx` paths an exact answer lists in `approx_out_of_range` (f64 twins of exact values
 /// beyond f64's range, written as `null` on purpose) are exempt as well; a listed path that is
