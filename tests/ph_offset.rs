@@ -11,7 +11,7 @@
 
 mod common;
 
-use common::{refused, solve_stdin};
+use common::{bernstein_upoly as upoly, binom, refused, solve_stdin};
 use exactcheck::solve::{solve, Mode};
 use exactcheck_core::ph::{PhCurve, Side};
 use exactcheck_core::{Bernstein, OrderedField, Ring, Rng, Sign, Vec3};
@@ -36,14 +36,6 @@ fn nums(v: &Value) -> Vec<Rational> {
     v.as_array().expect("an array").iter().map(num).collect()
 }
 
-fn binom(n: usize, k: usize) -> Rational {
-    let mut c = Rational::ONE;
-    for i in 0..k {
-        c = c * Rational::from((n - i) as i64) / Rational::from((i + 1) as i64);
-    }
-    c
-}
-
 /// sum c_i C(n, i) t^i (1 - t)^(n - i), evaluated directly.
 fn bern_eval(c: &[Rational], t: &Rational) -> Rational {
     let n = c.len() - 1;
@@ -58,25 +50,6 @@ fn bern_eval(c: &[Rational], t: &Rational) -> Rational {
             term *= s.clone();
         }
         acc += term;
-    }
-    acc
-}
-
-/// The Bernstein polynomial as a power-basis polynomial, built from (1 - t) and t.
-fn upoly(c: &[Rational]) -> UPoly {
-    let n = c.len() - 1;
-    let t = UPoly::x();
-    let s = UPoly::one().sub_ref(&t);
-    let mut acc = UPoly::zero();
-    for (i, ci) in c.iter().enumerate() {
-        let mut term = UPoly::constant(ci.clone() * binom(n, i));
-        for _ in 0..i {
-            term = term.mul_ref(&t);
-        }
-        for _ in 0..n - i {
-            term = term.mul_ref(&s);
-        }
-        acc = acc.add_ref(&term);
     }
     acc
 }
@@ -865,7 +838,8 @@ proptest::proptest! {
         let overall = &a["min_radius_of_curvature"];
         if overall["interval"].is_array() && overall["side"] != "left_or_right" {
             let side = if overall["side"] == "left" { Side::Left } else { Side::Right };
-            check_minimisers(&problem, &sigma, &w, side, &nums(&overall["interval"]), &overall["at"]);
+            let interval = nums(&overall["interval"]);
+            check_minimisers(&problem, &sigma, &w, side, &interval, &overall["at"]);
         }
     }
 }

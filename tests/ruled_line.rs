@@ -335,31 +335,10 @@ mod families {
         a.iter().all(|x| x.is_zero())
     }
 
-    fn binom(n: usize, k: usize) -> Rational {
-        let mut c = Rational::ONE;
-        for i in 0..k {
-            c = c * Rational::from((n - i) as i64) / Rational::from((i + 1) as i64);
-        }
-        c
-    }
-
-    /// One coordinate of a Bezier curve as a power-basis polynomial, from (1 - t) and t.
+    /// One coordinate of a Bezier curve as a power-basis polynomial.
     fn coordinate(ctrl: &[V3], axis: usize) -> UPoly {
-        let n = ctrl.len() - 1;
-        let t = UPoly::x();
-        let s = UPoly::one().sub_ref(&t);
-        let mut acc = UPoly::zero();
-        for (i, c) in ctrl.iter().enumerate() {
-            let mut term = UPoly::constant(c[axis].clone() * binom(n, i));
-            for _ in 0..i {
-                term = term.mul_ref(&t);
-            }
-            for _ in 0..n - i {
-                term = term.mul_ref(&s);
-            }
-            acc = acc.add_ref(&term);
-        }
-        acc
+        let c: Vec<Rational> = ctrl.iter().map(|p| p[axis].clone()).collect();
+        crate::common::bernstein_upoly(&c)
     }
 
     fn curve(ctrl: &[V3]) -> [UPoly; 3] {
@@ -670,7 +649,12 @@ mod families {
 
         /// A cone whose apex lies on the line: every ruling meets the line at the apex.
         #[test]
-        fn cone_apex_on_the_line(apex in vec3(), dirs in prop::collection::vec(vec3(), 1..4), d in vec3(), k in small()) {
+        fn cone_apex_on_the_line(
+            apex in vec3(),
+            dirs in prop::collection::vec(vec3(), 1..4),
+            d in vec3(),
+            k in small(),
+        ) {
             prop_assume!(!zero(&d) && dirs.iter().any(|v| !zero(v)));
             check(&Case { base: vec![apex.clone()], p: add_scaled(&apex, &k, &d), dirs, d });
         }
@@ -678,7 +662,12 @@ mod families {
         /// The base curve lies on the line (B(t) = P + beta(t) D): lambda = beta(t) off the
         /// rulings parallel to the line.
         #[test]
-        fn base_curve_on_the_line(beta in prop::collection::vec(small(), 1..5), dirs in prop::collection::vec(vec3(), 1..3), p in vec3(), d in vec3()) {
+        fn base_curve_on_the_line(
+            beta in prop::collection::vec(small(), 1..5),
+            dirs in prop::collection::vec(vec3(), 1..3),
+            p in vec3(),
+            d in vec3(),
+        ) {
             prop_assume!(!zero(&d) && dirs.iter().any(|v| !zero(v)));
             let base = beta.iter().map(|b| add_scaled(&p, b, &d)).collect();
             check(&Case { base, dirs, p, d });
@@ -686,7 +675,13 @@ mod families {
 
         /// A base point on the line, otherwise random.
         #[test]
-        fn a_base_point_on_the_line(base in prop::collection::vec(vec3(), 1..4), dirs in prop::collection::vec(vec3(), 1..3), t in t0(), d in vec3(), k in small()) {
+        fn a_base_point_on_the_line(
+            base in prop::collection::vec(vec3(), 1..4),
+            dirs in prop::collection::vec(vec3(), 1..3),
+            t in t0(),
+            d in vec3(),
+            k in small(),
+        ) {
             prop_assume!(!zero(&d) && dirs.iter().any(|v| !zero(v)));
             let bt = eval(&curve(&base), &t);
             check(&Case { p: add_scaled(&bt, &k, &d), base, dirs, d });
@@ -694,7 +689,14 @@ mod families {
 
         /// The line is the ruling t0, or parallel to it (shifted off it by e).
         #[test]
-        fn line_equal_or_parallel_to_a_ruling(base in prop::collection::vec(vec3(), 1..4), dirs in prop::collection::vec(vec3(), 1..3), t in t0(), s in small(), e in vec3(), shift in any::<bool>()) {
+        fn line_equal_or_parallel_to_a_ruling(
+            base in prop::collection::vec(vec3(), 1..4),
+            dirs in prop::collection::vec(vec3(), 1..3),
+            t in t0(),
+            s in small(),
+            e in vec3(),
+            shift in any::<bool>(),
+        ) {
             let b = eval(&curve(&base), &t);
             let v = eval(&curve(&dirs), &t);
             prop_assume!(!zero(&v));
@@ -706,13 +708,26 @@ mod families {
         /// V vanishes at t0 (a degenerate ruling), the line through B(t0) or not; with
         /// E0 = E1 = D every ruling is parallel to the line.
         #[test]
-        fn degenerate_rulings(base in prop::collection::vec(vec3(), 1..3), t in t0(), e0 in vec3(), e1 in vec3(), d in vec3(), k in small(), through in any::<bool>(), parallel in any::<bool>()) {
+        fn degenerate_rulings(
+            base in prop::collection::vec(vec3(), 1..3),
+            t in t0(),
+            e0 in vec3(),
+            e1 in vec3(),
+            d in vec3(),
+            k in small(),
+            through in any::<bool>(),
+            parallel in any::<bool>(),
+        ) {
             prop_assume!(!zero(&d));
             let (e0, e1) = if parallel { (d.clone(), scale(&k, &d)) } else { (e0, e1) };
             let dirs = vanishing_at(&t, &e0, &e1);
             prop_assume!(dirs.iter().any(|v| !zero(v)));
             let bt = eval(&curve(&base), &t);
-            let p = if through { add_scaled(&bt, &k, &d) } else { add_scaled(&bt, &Rational::ONE, &e0) };
+            let p = if through {
+                add_scaled(&bt, &k, &d)
+            } else {
+                add_scaled(&bt, &Rational::ONE, &e0)
+            };
             check(&Case { base, dirs, p, d });
         }
     }

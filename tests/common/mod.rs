@@ -91,3 +91,37 @@ fn null_beside_number(v: &serde_json::Value) -> bool {
         _ => false,
     }
 }
+
+/// `C(n, k)` as an exact rational.
+#[allow(dead_code)] // not every test crate that includes this module uses it
+pub fn binom(n: usize, k: usize) -> exactcheck_exact::Rational {
+    use exactcheck_exact::Rational;
+    let mut c = Rational::ONE;
+    for i in 0..k {
+        c = c * Rational::from((n - i) as i64) / Rational::from((i + 1) as i64);
+    }
+    c
+}
+
+/// The Bernstein polynomial `sum c_i C(n, i) t^i (1 - t)^(n - i)` as a power-basis polynomial,
+/// built from `(1 - t)` and `t` (independently of the workspace's basis conversions).
+#[allow(dead_code)]
+pub fn bernstein_upoly(c: &[exactcheck_exact::Rational]) -> exactcheck_exact::univariate::UPoly {
+    use exactcheck_core::Ring;
+    use exactcheck_exact::univariate::UPoly;
+    let n = c.len() - 1;
+    let t = UPoly::x();
+    let s = UPoly::one().sub_ref(&t);
+    let mut acc = UPoly::zero();
+    for (i, ci) in c.iter().enumerate() {
+        let mut term = UPoly::constant(ci.clone() * binom(n, i));
+        for _ in 0..i {
+            term = term.mul_ref(&t);
+        }
+        for _ in 0..n - i {
+            term = term.mul_ref(&s);
+        }
+        acc = acc.add_ref(&term);
+    }
+    acc
+}
