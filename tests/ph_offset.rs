@@ -11,7 +11,7 @@
 
 mod common;
 
-use common::{refused, solve_stdin};
+use common::{bernstein_upoly as upoly, binom, refused, solve_stdin};
 use exactcheck::solve::{solve, Mode};
 use exactcheck_core::ph::{PhCurve, Side};
 use exactcheck_core::{Bernstein, OrderedField, Ring, Rng, Sign, Vec3};
@@ -36,14 +36,6 @@ fn nums(v: &Value) -> Vec<Rational> {
     v.as_array().expect("an array").iter().map(num).collect()
 }
 
-fn binom(n: usize, k: usize) -> Rational {
-    let mut c = Rational::ONE;
-    for i in 0..k {
-        c = c * Rational::from((n - i) as i64) / Rational::from((i + 1) as i64);
-    }
-    c
-}
-
 /// sum c_i C(n, i) t^i (1 - t)^(n - i), evaluated directly.
 fn bern_eval(c: &[Rational], t: &Rational) -> Rational {
     let n = c.len() - 1;
@@ -58,25 +50,6 @@ fn bern_eval(c: &[Rational], t: &Rational) -> Rational {
             term *= s.clone();
         }
         acc += term;
-    }
-    acc
-}
-
-/// The Bernstein polynomial as a power-basis polynomial, built from (1 - t) and t.
-fn upoly(c: &[Rational]) -> UPoly {
-    let n = c.len() - 1;
-    let t = UPoly::x();
-    let s = UPoly::one().sub_ref(&t);
-    let mut acc = UPoly::zero();
-    for (i, ci) in c.iter().enumerate() {
-        let mut term = UPoly::constant(ci.clone() * binom(n, i));
-        for _ in 0..i {
-            term = term.mul_ref(&t);
-        }
-        for _ in 0..n - i {
-            term = term.mul_ref(&s);
-        }
-        acc = acc.add_ref(&term);
     }
     acc
 }
@@ -96,6 +69,77 @@ fn small(rng: &mut Rng, m: u64) -> Rational {
 fn text(v: &[Rational]) -> String {
     let items: Vec<String> = v.iter().map(|x| format!("\"{x}\"")).collect();
     format!("[{}]", items.join(","))
+}
+
+/// The signed radius of curvature `sigma^2 / (2 w)` of `side` at `t` (`None` where that side
+/// does not bend).
+fn side_radius(sigma: &UPoly, w: &UPoly, side: Side, t: &Rational) -> Option<Rational> {
+    let wt = match side {
+        Side::Left => w.eval(t),
+        Side::Right => -w.eval(t),
+    };
+    (wt.sign() == Sign::Positive).then(|| {
+        let s = sigma.eval(t);
+        s.clone() * s / (Rational::from(2) * wt)
+    })
+}
+
+/// An enclosed smallest radius `(lo, hi]`: every listed parameter interval holds a minimiser of
+/// the radius, checked independently of the answer's own polynomials: the derivative of the
+/// radius (sign of `(2 sigma' w - sigma w')`, negated on the right) goes from negative to
+/// positive across it (so the radius inside is below the radius at the interval's ends), and the
+/// radius at its midpoint is above `lo`, at most the radius at `t = 0` and `t = 1`, and within
+/// the enclosure's width of `hi`.
+fn check_minimisers(
+    problem: &str,
+    sigma: &UPoly,
+    w: &UPoly,
+    side: Side,
+    enclosure: &[Rational],
+    at: &Value,
+) {
+    let (lo, hi) = (&enclosure[0], &enclosure[1]);
+    let crit = UPoly::constant(Rational::from(2))
+        .mul_ref(&sigma.derivative())
+        .mul_ref(w)
+        .sub_ref(&sigma.mul_ref(&w.derivative()));
+    let slope = |t: &Rational| match side {
+        Side::Left => crit.eval(t).sign(),
+        Side::Right => (-crit.eval(t)).sign(),
+    };
+    let at = at.as_array().expect("at is a list");
+    assert!(!at.is_empty(), "{problem}: no minimiser listed");
+    for entry in at {
+        let iv = nums(&entry["interval"]);
+        assert!(
+            iv[0] < iv[1],
+            "{problem}: an irrational minimiser is an interval"
+        );
+        assert_eq!(
+            slope(&iv[0]),
+            Sign::Negative,
+            "{problem}: rho' at {}",
+            iv[0]
+        );
+        assert_eq!(
+            slope(&iv[1]),
+            Sign::Positive,
+            "{problem}: rho' at {}",
+            iv[1]
+        );
+        let mid = (iv[0].clone() + iv[1].clone()) / Rational::from(2);
+        let at_mid = side_radius(sigma, w, side, &mid).expect("the side bends at its minimum");
+        assert!(at_mid > *lo, "{problem}: rho({mid}) <= lo");
+        assert!(
+            at_mid.clone() - hi.clone() <= hi.clone() - lo.clone(),
+            "{problem}: rho({mid}) far above hi"
+        );
+        for t in [&Rational::ZERO, &Rational::ONE] {
+            if let Some(r) = side_radius(sigma, w, side, t) {
+                assert!(at_mid <= r, "{problem}: rho({mid}) > rho({t})");
+            }
+        }
+    }
 }
 
 struct Checked {
@@ -394,6 +438,7 @@ fn check_curve(
             );
             assert!(cusp_count(&iv[1]) > 0, "{problem}: a cusp at its top");
             assert!(iv[1].clone() - iv[0].clone() <= q("1/1048576"));
+            check_minimisers(&problem, &sigma_p, &w_p, side, &iv, &m["at"]);
             c.enclosed_radius += 1;
         }
     }
@@ -753,4 +798,76 @@ fn self_intersections_are_decided_exactly_for_low_degrees() {
     )
     .unwrap();
     assert!(radical.get("self_intersections").is_none());
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig {
+        cases: 48,
+        failure_persistence: None,
+        ..proptest::prelude::ProptestConfig::default()
+    })]
+
+    /// Quintic and septic PH curves whose smallest radius is irrational (an enclosure): every
+    /// listed parameter holds a minimiser of the radius ([`check_minimisers`]), on both sides.
+    #[test]
+    fn irrational_minimum_radius_is_attained_inside_the_listed_intervals(
+        uv in proptest::collection::vec((-4i64..=4, -4i64..=4, 1i64..=3), 3..5),
+    ) {
+        let u: Vec<Rational> = uv.iter().map(|(a, _, d)| Rational::new(*a, *d).unwrap()).collect();
+        let v: Vec<Rational> = uv.iter().map(|(_, b, d)| Rational::new(*b, *d).unwrap()).collect();
+        let (up, vp) = (upoly(&u), upoly(&v));
+        let sigma = up.mul_ref(&up).add_ref(&vp.mul_ref(&vp));
+        proptest::prop_assume!(!sigma.is_zero() && zeros_in_unit(&sigma) == 0);
+        let w = up.mul_ref(&vp.derivative()).sub_ref(&up.derivative().mul_ref(&vp));
+        let problem = format!(
+            r#"{{"kind":"ph_offset","u":{},"v":{},"start":[0,0],"r":1}}"#,
+            text(&u),
+            text(&v)
+        );
+        let a = solve(&problem, Mode::Exact).unwrap_or_else(|e| panic!("{problem}: {e}"));
+        let by_side = &a["min_radius_by_side"];
+        let mut enclosed = false;
+        for (name, side) in [("left", Side::Left), ("right", Side::Right)] {
+            let m = &by_side[name];
+            if m["interval"].is_array() {
+                enclosed = true;
+                check_minimisers(&problem, &sigma, &w, side, &nums(&m["interval"]), &m["at"]);
+            }
+        }
+        proptest::prop_assume!(enclosed);
+        let overall = &a["min_radius_of_curvature"];
+        if overall["interval"].is_array() && overall["side"] != "left_or_right" {
+            let side = if overall["side"] == "left" { Side::Left } else { Side::Right };
+            let interval = nums(&overall["interval"]);
+            check_minimisers(&problem, &sigma, &w, side, &interval, &overall["at"]);
+        }
+    }
+}
+
+/// The committed quintic example has an irrational smallest radius: its `at` is the one
+/// minimiser, not the two zeros of `sigma^2 - 2 hi w` on either side of it.
+#[test]
+fn the_quintic_example_lists_its_minimiser() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/solve_golden");
+    let problem = std::fs::read_to_string(dir.join("ph_quintic.json")).unwrap();
+    let a = solve(&problem, Mode::Exact).unwrap();
+    let (up, vp) = (
+        upoly(&[q("1"), q("1/2"), q("-1")]),
+        upoly(&[q("0"), q("1"), q("2/3")]),
+    );
+    let sigma = up.mul_ref(&up).add_ref(&vp.mul_ref(&vp));
+    let w = up
+        .mul_ref(&vp.derivative())
+        .sub_ref(&up.derivative().mul_ref(&vp));
+    let m = &a["min_radius_of_curvature"];
+    assert_eq!(m["side"], "left");
+    assert_eq!(m["at"].as_array().unwrap().len(), 1);
+    check_minimisers(
+        &problem,
+        &sigma,
+        &w,
+        Side::Left,
+        &nums(&m["interval"]),
+        &m["at"],
+    );
 }

@@ -267,20 +267,21 @@ fn float_ph_offset_with_a_missed_singular_end_is_an_input_error() {
     run(text, |_, _| {});
 }
 
-/// Found by the `ruled_line` property: the line lies on the surface and the ruling at t = 0 is
-/// parallel to it, so `lambda_at_ends` is `[null, 3]` in both modes — a defined "nowhere or
-/// everywhere", not a NaN written as `null` (the property's null check now knows the field).
+/// Found by the `ruled_line` property: a cone (apex off the line) whose rulings all meet the
+/// line, the ruling at t = 0 parallel to it: the covered part is the half-line `lambda <= 3`,
+/// so `lambda_at_ends` is `[null, 3]` in both modes — `null` is the unbounded end, not a NaN
+/// written as `null`.
 #[test]
 fn ruled_line_on_the_surface_with_a_parallel_end_ruling() {
     let text = r#"{"kind":"ruled_line","base":[[-1,-3,2]],"directions":[[-2,-1,-1],[2,-1,1]],"line":{"point":[1,2,3],"direction":[-2,-1,-1]}}"#;
     for mode in [Mode::Exact, Mode::Float] {
         let v = solve(text, mode).expect("answers");
-        assert_eq!(v["outcome"], "line_on_surface", "{mode:?}");
+        assert_eq!(v["outcome"], "line_segment_on_surface", "{mode:?}");
         assert!(v["lambda_at_ends"][0].is_null(), "{mode:?}");
+        let end = &v["lambda_at_ends"][1]["value"];
         assert_eq!(
-            v["lambda_at_ends"][1]
-                .as_f64()
-                .or_else(|| v["lambda_at_ends"][1].as_str().and_then(|s| s.parse().ok())),
+            end.as_f64()
+                .or_else(|| end.as_str().and_then(|s| s.parse().ok())),
             Some(3.0),
             "{mode:?}"
         );

@@ -485,6 +485,106 @@ pub fn square_free<T: OrderedField>(p: &Bernstein<T>) -> Result<Bernstein<T>, Ze
     Ok(Bernstein::from_power(&q).expect("a non-zero polynomial has a coefficient"))
 }
 
+/// Whether every polynomial of `others` vanishes at the root `root` of `p` (`p` not identically
+/// zero; `root` exact or an isolating interval of `p`'s distinct roots).
+///
+/// At an interval root this is decided exactly: `g = gcd(p, others)` divides `p`, so it can
+/// vanish in the interval only at `p`'s one root there, and it does iff its square-free part
+/// changes sign across the interval.
+pub fn vanishes_at_root<T: OrderedField>(
+    p: &Bernstein<T>,
+    others: &[Bernstein<T>],
+    root: &IsolatedRoot<T>,
+) -> bool {
+    if others.iter().all(Bernstein::is_zero) {
+        return true;
+    }
+    match root {
+        IsolatedRoot::Exact(t) => others.iter().all(|q| q.eval(t).is_zero()),
+        IsolatedRoot::Between(lo, hi) => {
+            let mut all = vec![p.clone()];
+            all.extend(others.iter().cloned());
+            let Ok(g) = gcd(&all) else {
+                return true;
+            };
+            if g.degree() == 0 {
+                return false;
+            }
+            let q = square_free(&g).expect("a gcd of non-zero polynomials is not zero");
+            let (a, b) = (q.eval(lo).sign(), q.eval(hi).sign());
+            a != b && a != Sign::Zero && b != Sign::Zero
+        }
+    }
+}
+
+/// The quotient `a / b` of a polynomial by a non-zero divisor of it (for example a gcd
+/// from [`gcd`]), in Bernstein form of its exact degree; the remainder is dropped.
+///
+/// # Panics
+/// When `b` is identically zero.
+pub fn exact_quotient<T: Field>(a: &Bernstein<T>, b: &Bernstein<T>) -> Bernstein<T> {
+    let d = trim(b.to_power());
+    assert!(
+        !d.is_empty(),
+        "exact_quotient: division by the zero polynomial"
+    );
+    let (q, _) = div_rem(&trim(a.to_power()), &d);
+    if q.is_empty() {
+        return Bernstein::constant(T::zero(), 0);
+    }
+    Bernstein::from_power(&q).expect("a non-empty coefficient list")
+}
+
+/// The coefficients of `p` restricted to `[lo, hi]` (`0 <= lo < hi <= 1`): the Bernstein form
+/// of `p(lo + (hi - lo) s)`, `s` in `[0, 1]`, by two de Casteljau splits. Their least and
+/// largest values bound `p` on the interval.
+pub fn restrict<T: OrderedField>(p: &Bernstein<T>, lo: &T, hi: &T) -> Bernstein<T> {
+    let (left, _) = p.split(hi);
+    let (_, piece) = left.split(&(lo.clone() / hi.clone()));
+    piece
+}
+
+/// The sign of `g` at the root `root` of `p` (`p` not identically zero; `root` exact or an
+/// isolating interval of `p`'s distinct roots), decided exactly: zero when `gcd(p, g)` vanishes
+/// at the root ([`vanishes_at_root`]); otherwise the interval is refined as a root of `p`
+/// until the coefficients of `g` restricted to it ([`restrict`]) all have one strict sign,
+/// which ends because they tend to `g`'s non-zero value at the root. For `f64` the refinement
+/// stops where the interval no longer shrinks and the sign at its midpoint is taken.
+pub fn sign_at_root<T: OrderedField>(
+    g: &Bernstein<T>,
+    p: &Bernstein<T>,
+    root: &IsolatedRoot<T>,
+) -> Sign {
+    let (mut lo, mut hi) = match root {
+        IsolatedRoot::Exact(t) => return g.eval(t).sign(),
+        IsolatedRoot::Between(lo, hi) => (lo.clone(), hi.clone()),
+    };
+    if g.is_zero() || vanishes_at_root(p, std::slice::from_ref(g), root) {
+        return Sign::Zero;
+    }
+    let refiner = Refiner::new(p);
+    let two = T::one() + T::one();
+    loop {
+        let piece = restrict(g, &lo, &hi);
+        let first = piece.coeffs()[0].sign();
+        if first != Sign::Zero && piece.coeffs().iter().all(|c| c.sign() == first) {
+            return first;
+        }
+        let half = hi.sub_ref(&lo) / two.clone();
+        match refiner.refine(&IsolatedRoot::Between(lo.clone(), hi.clone()), &half) {
+            IsolatedRoot::Exact(t) => return g.eval(&t).sign(),
+            IsolatedRoot::Between(a, b) => {
+                if a == lo && b == hi {
+                    // No progress: only an inexact scalar stops halving.
+                    return g.eval(&(lo.add_ref(&hi) / two)).sign();
+                }
+                lo = a;
+                hi = b;
+            }
+        }
+    }
+}
+
 /// Multiplicity of an isolated root of p.
 ///
 /// For `Exact(x)` the number of derivatives `p, p', p'', ...` vanishing at `x`; for

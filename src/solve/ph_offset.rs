@@ -31,7 +31,9 @@
 //! is decided by `is_min_radius` and by whether the other side's offset at that distance has a
 //! cusp; two overlapping enclosures are reported as their joint enclosure, side
 //! `left_or_right`. A curve with `w = 0` identically (a straight line) has no finite radius:
-//! `min_radius_of_curvature` is `null`.
+//! `min_radius_of_curvature` is `null`. Where it is attained (`at`): for an exact minimum `m`
+//! the zeros of `sigma^2 - 2 m w`; for an enclosure the minimisers themselves, isolated as zeros
+//! of the critical polynomial ([`minimisers`]).
 //!
 //! # Degenerate input
 //! `u = v = 0` and unequal lengths are refused (one line naming the field). Where `sigma`
@@ -301,14 +303,59 @@ fn side_radius<T: SectionScalar>(
         }
         other => other,
     };
-    let attained_at = match &value {
-        RadiusBound::Exact(m) | RadiusBound::Within(_, m) => signed(side, m),
+    let at = match &value {
+        RadiusBound::Exact(m) => cusp_zeros(curve, &signed(side, m), width),
+        RadiusBound::Within(_, hi) => minimisers(curve, side, hi, width),
     };
     Some(Radius {
-        at: cusp_zeros(curve, &attained_at, width),
+        at,
         value,
         sides: Sides::of(side),
     })
+}
+
+/// Where `side`'s radius `rho` attains its minimum when only an enclosure `(lo, hi]` of the
+/// minimum is known (module doc): the zeros in `[0, 1]` of the critical polynomial
+/// `2 sigma' w - sigma w'` (isolated by [`unit_zeros`], rational ones exact, the others refined
+/// to `width`) that are local minima of `rho` with `rho <= hi` there. The minimum is attained
+/// at an interior critical point, so it is attained among them. A local minimum is a zero
+/// where the critical polynomial, signed for the side, changes sign from negative to positive
+/// (`rho'` has the sign of `sigma (2 sigma' w - sigma w')` on the left, the opposite on the
+/// right); `rho <= hi` is the sign of `sigma^2 - 2 hi w` there, decided exactly
+/// ([`roots::sign_at_root`]). An exact zero is kept when [`PhCurve::is_min_radius`] proves
+/// its radius the minimum.
+fn minimisers<T: SectionScalar>(
+    curve: &PhCurve<T>,
+    side: Side,
+    hi: &T,
+    width: &T,
+) -> Vec<IsolatedRoot<T>> {
+    let crit = curve.radius_critical_polynomial();
+    if crit.is_zero() {
+        return Vec::new();
+    }
+    let crit_side = match side {
+        Side::Left => crit.clone(),
+        Side::Right => crit.map(Ring::neg_ref),
+    };
+    let below = curve.cusp_polynomial(&signed(side, hi));
+    unit_zeros(&crit, width)
+        .into_iter()
+        .filter(|c| match c {
+            IsolatedRoot::Exact(t) => curve.radius_at(t).is_some_and(|r| {
+                let m = signed(side, &r);
+                m.sign() == Sign::Positive
+                    && curve
+                        .is_min_radius(&m, side)
+                        .expect("sigma has no zero in [0, 1]")
+            }),
+            IsolatedRoot::Between(a, b) => {
+                crit_side.eval(a).sign() == Sign::Negative
+                    && crit_side.eval(b).sign() == Sign::Positive
+                    && roots::sign_at_root(&below, &crit, c) != Sign::Positive
+            }
+        })
+        .collect()
 }
 
 /// Whether the offset at `side`'s distance `m > 0` has a cusp: `m >= rho_min(side)`.
@@ -537,8 +584,8 @@ struct RadiusOut<V> {
     interval: Option<[V; 2]>,
     approx: f64,
     side: &'static str,
-    /// Where it is attained (exact value), or the zeros of `sigma^2 - 2 hi w` bracketing where
-    /// it is attained (enclosure).
+    /// Where it is attained: the zeros of `sigma^2 - 2 m w` (exact value `m`), or the local
+    /// minima of the radius at most `hi` (enclosure `(lo, hi]`), isolated exactly.
     at: Vec<Parameter<V>>,
 }
 

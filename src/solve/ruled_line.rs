@@ -22,11 +22,38 @@
 //! square-free part changes sign across the interval. Nothing divides by a quantity that may be
 //! zero.
 //!
-//! When `f` is identically zero every ruling meets or is parallel to the line: if `W` is
-//! identically zero too, every ruling is parallel to the line (`parallel_to_every_ruling`; the
-//! line is itself the ruling at the common roots of `U`, listed), otherwise all but finitely many
-//! rulings cross the line, so a segment of the line lies on the surface (`line_on_surface`, with
-//! `lambda` at the ends `t = 0, 1` where defined).
+//! A root with status `ruling_on_line` puts the whole line on the surface: the outcome is then
+//! `line_on_surface`; otherwise `points` when some root gives a point, else `no_points`.
+//!
+//! # The covered part (when `f` is identically zero)
+//! Then every ruling meets the line or is parallel to it, possibly all at one point (a cone
+//! whose apex is on the line). The answer is the set of `lambda` covered by the rulings
+//! `t` in `[0, 1]` (`covered`: disjoint intervals, increasing, each end exact or enclosed at an
+//! irrational parameter, `closed` when covered itself, `null` when unbounded; `lambda_at_ends`
+//! its least and largest end), decided exactly:
+//! * If `W` is identically zero too, every ruling is parallel to the line
+//!   (`parallel_to_every_ruling`): at a common zero `z` of `U` the ruling is the line when
+//!   `V(z) != 0` (listed in `rulings_on_line`; the whole line is covered), and only the point
+//!   `B(z)` when `V(z) = 0`.
+//! * Otherwise, off the zeros of `W`, the ruling `t` meets the line at
+//!   `lambda(t) = N / Q`, `N = -((B - P) x V) . W`, `Q = |W|^2`, reduced by `gcd(N, Q)` to
+//!   `N1 / Q1`. At a zero `z` of `W` the ruling is the line (`V(z) != 0`, `U(z) = 0`: the whole
+//!   line), the point `B(z)` (`V(z) = 0`, `U(z) = 0`), or nothing. The breakpoints are the
+//!   zeros in `[0, 1]` of `c1 = N1' Q1 - N1 Q1'` and of `W` (one polynomial, isolated exactly),
+//!   and `0`, `1`; between two of them `lambda` is continuous and strictly monotone (the sign of
+//!   `c1` at a point between them), so each stretch covers the interval between its end values:
+//!   `lambda` itself at a breakpoint off the zeros of `W` (covered), its limit `N1 / Q1` at a
+//!   zero of `W` (not covered by that stretch), unbounded at a pole (`Q1 = 0`). If `c1` is zero,
+//!   `lambda` is one constant. The stretches and the points `B(z)` are merged into disjoint
+//!   intervals; end values are compared exactly (equal at one breakpoint; at one zero of `W` by
+//!   the sign of the cross-multiplied difference there; otherwise by enclosures from the
+//!   Bernstein coefficients of `N1`, `Q1` on the parameter's interval, narrowed until they
+//!   separate). Two irrational end values still not ordered after [`COMPARE_STEPS`] halvings
+//!   give the outcome `undecided` with a note.
+//!
+//! The outcome then names the covered part: `line_on_surface` (all of the line),
+//! `line_segment_on_surface` (an interval of positive length, possibly unbounded, possibly
+//! several), `single_point`, `isolated_points`.
 //!
 //! # Limits and modes
 //! `m + n <= 60` ([`MAX_DEGREE`]): the Bernstein conversions use binomials `C(m+n, k)` as `u64`,
@@ -42,7 +69,8 @@ use super::number::{Coords, ExactNumber, FloatNumber};
 use super::{by_mode, parse, Kind, Mode, Printable};
 use crate::Error;
 use exactcheck_core::roots::{
-    gcd, multiplicity, refine, square_free, unit_roots, IsolatedRoot, ZeroPolynomial,
+    self, exact_quotient, gcd, multiplicity, refine, restrict, square_free, unit_roots,
+    vanishes_at_root, IsolatedRoot, ZeroPolynomial,
 };
 use exactcheck_core::ruled::RuledSurface;
 use exactcheck_core::{Bernstein, Field, OrderedField, Ring, Sign, Vec3};
@@ -51,6 +79,7 @@ use exactcheck_exact::{Radical, Rational};
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
+use std::cmp::Ordering;
 
 /// The largest `m + n` answered (module doc, "Limits").
 pub const MAX_DEGREE: usize = 60;
@@ -61,7 +90,7 @@ pub const MAX_DEGREE: usize = 60;
 #[serde(deny_unknown_fields)]
 #[schemars(
     title = "ruled_line",
-    description = "A ruled surface S(s,t) = B(t) + s V(t) (Bezier base curve B of degree n, Bezier direction field V of degree m) and a line P + lambda D (Chiang, SPEC §4): the parameters t in [0,1] whose ruling meets the line (roots of det(B(t) - P, V(t), D), degree m+n <= 60), with s, lambda and the point; degenerate cases as typed outcomes."
+    description = "A ruled surface S(s,t) = B(t) + s V(t) (Bezier base curve B of degree n, Bezier direction field V of degree m) and a line P + lambda D (Chiang, SPEC §4): the parameters t in [0,1] whose ruling meets the line (roots of det(B(t) - P, V(t), D), degree m+n <= 60), with s, lambda and the point. Outcomes: points, no_points, line_on_surface (a ruling is the line, or the rulings cover all of it), line_segment_on_surface / single_point / isolated_points (det vanishes identically: the covered part of the line, decided exactly, in `covered` and `lambda_at_ends`), parallel_to_every_ruling, undecided (with a note)."
 )]
 pub struct Input<N> {
     /// `"ruled_line"`.
@@ -88,6 +117,8 @@ pub struct LineInput<N> {
 /// A scalar the answer is computed in: exact (`Rational`, `Radical`) or `f64`, with its root
 /// isolation in `[0, 1]`.
 trait Scalar: OrderedField {
+    /// Whether zero tests and comparisons are exact.
+    const EXACT: bool = true;
     fn text(&self) -> String;
     fn approx(&self) -> f64;
     /// The distinct roots of `p` in `[0, 1]`.
@@ -136,6 +167,7 @@ impl Scalar for Rational {
 }
 
 impl Scalar for f64 {
+    const EXACT: bool = false;
     fn text(&self) -> String {
         format!("{self:?}")
     }
@@ -188,10 +220,10 @@ enum Outcome<T> {
     Roots(Vec<RootReport<T>>),
     /// `f = 0` and `W = 0`: every ruling is parallel to the line; the line is the ruling at
     /// these roots of `U` (all `t` when `U = 0` too, `None`).
-    ParallelToEveryRuling(Option<Vec<IsolatedRoot<T>>>),
-    /// `f = 0`, `W != 0`: a segment of the line lies on the surface; `lambda` at `t = 0, 1`
-    /// (`None` where the ruling there is parallel to the line).
-    LineOnSurface([Option<T>; 2]),
+    ParallelToEveryRuling(Option<Vec<IsolatedRoot<T>>>, Covered<T>),
+    /// `f = 0`, `W != 0`: every ruling meets the line or is parallel to it; the part of the
+    /// line they cover.
+    Covered(Covered<T>),
 }
 
 struct Analysis<T> {
@@ -217,31 +249,6 @@ fn dot3<T: Ring>(a: &[Bernstein<T>; 3], d: &Vec3<T>) -> [Bernstein<T>; 3] {
         comb(&a[2], &d.x, &a[0], &d.z),
         comb(&a[0], &d.y, &a[1], &d.x),
     ]
-}
-
-/// Whether every polynomial of `others` vanishes at the root `root` of `p` (`p` not zero).
-fn vanishes_at<T: OrderedField>(
-    p: &Bernstein<T>,
-    others: &[Bernstein<T>],
-    root: &IsolatedRoot<T>,
-) -> bool {
-    if others.iter().all(Bernstein::is_zero) {
-        return true;
-    }
-    match root {
-        IsolatedRoot::Exact(t) => others.iter().all(|q| q.eval(t).is_zero()),
-        IsolatedRoot::Between(lo, hi) => {
-            let mut all = vec![p.clone()];
-            all.extend(others.iter().cloned());
-            let g = gcd(&all).expect("p is not identically zero");
-            if g.degree() == 0 {
-                return false;
-            }
-            let q = square_free(&g).expect("a gcd of non-zero polynomials is not zero");
-            let (a, b) = (q.eval(lo).sign(), q.eval(hi).sign());
-            a != b && a != Sign::Zero && b != Sign::Zero
-        }
-    }
 }
 
 fn analyse<T: Scalar>(
@@ -270,10 +277,9 @@ fn analyse<T: Scalar>(
     let outcome = match T::roots(&f) {
         Err(_) => {
             if w.iter().all(Bernstein::is_zero) {
-                Outcome::ParallelToEveryRuling(exactcheck_core::roots::common_unit_roots(&u).ok())
+                parallel_to_every_ruling(direction, &shifted, &v, &u)
             } else {
-                let at = |t: T| meeting(surface, point, direction, &t).map(|x| lambda_of(&x));
-                Outcome::LineOnSurface([at(T::zero()), at(T::one())])
+                Outcome::Covered(covered(surface, direction, &shifted, &w, &u))
             }
         }
         Ok(roots) => {
@@ -281,9 +287,9 @@ fn analyse<T: Scalar>(
             let mut reports = Vec::new();
             for root in roots {
                 let root = refine(&f, &root, &width);
-                let parallel = vanishes_at(&f, &w, &root);
-                let zero_v = parallel && vanishes_at(&f, &v, &root);
-                let on_line = parallel && vanishes_at(&f, &u, &root);
+                let parallel = vanishes_at_root(&f, &w, &root);
+                let zero_v = parallel && vanishes_at_root(&f, &v, &root);
+                let on_line = parallel && vanishes_at_root(&f, &u, &root);
                 let status = match (parallel, zero_v, on_line) {
                     (false, _, _) => Status::Point,
                     (true, false, true) => Status::RulingOnLine,
@@ -352,14 +358,507 @@ fn ruling_parameter<T: Field>(
     u.dot(&w).neg_ref().checked_div(&w.norm_squared()).ok()
 }
 
-/// The meeting point of ruling `t` with the line (when not parallel).
-fn meeting<T: Field>(
-    surface: &RuledSurface<T>,
-    point: &Vec3<T>,
+// ------------------------------------------------------------------ the covered part of the line
+
+/// Halvings of a parameter interval tried when two values of `lambda` are compared (module doc,
+/// "The covered part"); two irrational values still not separated after them are reported as
+/// undecided.
+const COMPARE_STEPS: usize = 48;
+
+/// A value of `lambda`: `num(t) / den(t)` at the root `t` of `root_of` (exact, or an isolating
+/// interval refined on demand): the meeting point of the ruling `t` when `closed`, otherwise the
+/// limit of the meeting points as the parameter tends to `t` (not itself covered).
+#[derive(Clone)]
+struct LambdaAt<T> {
+    t: IsolatedRoot<T>,
+    root_of: Bernstein<T>,
+    num: Bernstein<T>,
+    den: Bernstein<T>,
+    /// Values with one key are equal (one breakpoint).
+    key: usize,
+    /// The index of the parameter in the zeros of `W` (where a limit and a degenerate ruling's
+    /// point sit at one parameter), if it is one.
+    zero_of_w: Option<usize>,
+    closed: bool,
+}
+
+impl<T: Scalar> LambdaAt<T> {
+    fn exact(&self) -> Option<T> {
+        let t = self.t.exact()?;
+        self.num.eval(t).checked_div(&self.den.eval(t)).ok()
+    }
+
+    /// `lo <= lambda <= hi`, from the coefficients of `num` and `den` restricted to the
+    /// parameter's interval; `None` while `den` has no strict sign there.
+    fn enclosure(&self) -> Option<(T, T)> {
+        let (lo, hi) = match &self.t {
+            IsolatedRoot::Exact(_) => {
+                let x = self.exact()?;
+                return Some((x.clone(), x));
+            }
+            IsolatedRoot::Between(lo, hi) => (lo, hi),
+        };
+        let n = restrict(&self.num, lo, hi);
+        let d = restrict(&self.den, lo, hi);
+        let sign = d.coeffs()[0].sign();
+        if sign == Sign::Zero || d.coeffs().iter().any(|c| c.sign() != sign) {
+            return None;
+        }
+        let (nmin, nmax) = min_max(n.coeffs());
+        let (dmin, dmax) = min_max(d.coeffs());
+        let ratios = [
+            nmin.clone() / dmin.clone(),
+            nmin / dmax.clone(),
+            nmax.clone() / dmin,
+            nmax / dmax,
+        ];
+        Some(min_max(&ratios))
+    }
+
+    /// Halves the parameter interval; false when it cannot (exact, or f64 resolution).
+    fn narrow(&mut self) -> bool {
+        let IsolatedRoot::Between(lo, hi) = &self.t else {
+            return false;
+        };
+        let half = hi.sub_ref(lo) / T::from_i64(2);
+        if half.sign() != Sign::Positive {
+            return false;
+        }
+        let next = refine(&self.root_of, &self.t, &half);
+        let progressed = next != self.t;
+        self.t = next;
+        progressed
+    }
+
+    /// The value at the midpoint of the parameter's interval (exact at an exact parameter).
+    fn approx_value(&self) -> Option<T> {
+        let t = self.t.midpoint();
+        self.num.eval(&t).checked_div(&self.den.eval(&t)).ok()
+    }
+}
+
+fn min_max<T: OrderedField>(xs: &[T]) -> (T, T) {
+    let mut lo = xs[0].clone();
+    let mut hi = xs[0].clone();
+    for x in &xs[1..] {
+        if *x < lo {
+            lo = x.clone();
+        }
+        if *x > hi {
+            hi = x.clone();
+        }
+    }
+    (lo, hi)
+}
+
+/// Compares two values of `lambda` exactly: equal keys are equal; two values at one zero of `W`
+/// are compared by the sign of `num_a den_b - num_b den_a` there
+/// ([`roots::sign_at_root`]); otherwise enclosures are narrowed until they separate.
+/// `None`: two different irrational values not separated within [`COMPARE_STEPS`] halvings.
+fn compare<T: Scalar>(
+    a: &mut LambdaAt<T>,
+    b: &mut LambdaAt<T>,
+    zeros_of_w: &Bernstein<T>,
+) -> Option<Ordering> {
+    if a.key == b.key {
+        return Some(Ordering::Equal);
+    }
+    if let (Some(i), Some(j)) = (a.zero_of_w, b.zero_of_w) {
+        if i == j {
+            // The same parameter z: sign of (num_a den_b - num_b den_a)(z) / (den_a den_b)(z).
+            let (t, p) = if a.root_of == *zeros_of_w {
+                (&a.t, &a.root_of)
+            } else {
+                (&b.t, &b.root_of)
+            };
+            if p == zeros_of_w {
+                let diff = sub_poly(&a.num.mul(&b.den), &b.num.mul(&a.den));
+                let dens = a.den.mul(&b.den);
+                let s = roots::sign_at_root(&diff, p, t) * roots::sign_at_root(&dens, p, t);
+                return Some(match s {
+                    Sign::Negative => Ordering::Less,
+                    Sign::Zero => Ordering::Equal,
+                    Sign::Positive => Ordering::Greater,
+                });
+            }
+        }
+    }
+    for _ in 0..COMPARE_STEPS {
+        if let (Some(x), Some(y)) = (a.exact(), b.exact()) {
+            return x.partial_cmp(&y);
+        }
+        if let (Some((al, ah)), Some((bl, bh))) = (a.enclosure(), b.enclosure()) {
+            if ah < bl {
+                return Some(Ordering::Less);
+            }
+            if bh < al {
+                return Some(Ordering::Greater);
+            }
+        }
+        let moved_a = a.narrow();
+        let moved_b = b.narrow();
+        if !moved_a && !moved_b {
+            if T::EXACT {
+                return None;
+            }
+            // f64: the intervals cannot shrink; compare the values at their midpoints.
+            return a.approx_value()?.partial_cmp(&b.approx_value()?);
+        }
+    }
+    None
+}
+
+/// One end of a covered interval: `None` is unbounded.
+type End<T> = Option<LambdaAt<T>>;
+
+/// A covered interval of the line, `from <= to` (in `lambda`).
+#[derive(Clone)]
+struct Piece<T> {
+    from: End<T>,
+    to: End<T>,
+}
+
+/// The covered part of the line (module doc, "The covered part").
+enum Covered<T> {
+    /// Every point of the line (a ruling is the line).
+    WholeLine,
+    /// Disjoint intervals, increasing (a point is an interval with equal closed ends).
+    Pieces(Vec<Piece<T>>),
+    /// Two irrational end values could not be ordered.
+    Undecided,
+}
+
+fn sub_poly<T: Field>(a: &Bernstein<T>, b: &Bernstein<T>) -> Bernstein<T> {
+    let d = a.degree().max(b.degree());
+    a.elevate_by(d - a.degree())
+        .checked_sub(&b.elevate_by(d - b.degree()))
+        .expect("elevated to one degree")
+}
+
+fn add_poly<T: Field>(a: &Bernstein<T>, b: &Bernstein<T>) -> Bernstein<T> {
+    let d = a.degree().max(b.degree());
+    a.elevate_by(d - a.degree())
+        .checked_add(&b.elevate_by(d - b.degree()))
+        .expect("elevated to one degree")
+}
+
+/// `a x b` for polynomial vectors.
+fn cross_poly<T: Field>(a: &[Bernstein<T>; 3], b: &[Bernstein<T>; 3]) -> [Bernstein<T>; 3] {
+    [
+        sub_poly(&a[1].mul(&b[2]), &a[2].mul(&b[1])),
+        sub_poly(&a[2].mul(&b[0]), &a[0].mul(&b[2])),
+        sub_poly(&a[0].mul(&b[1]), &a[1].mul(&b[0])),
+    ]
+}
+
+fn dot_poly<T: Field>(a: &[Bernstein<T>; 3], b: &[Bernstein<T>; 3]) -> Bernstein<T> {
+    add_poly(
+        &add_poly(&a[0].mul(&b[0]), &a[1].mul(&b[1])),
+        &a[2].mul(&b[2]),
+    )
+}
+
+/// The single covered point `B(z)` of a degenerate ruling (`V(z) = 0`) on the line, at the
+/// root `z` of `root_of`: `lambda = (B(z) - P) . D / |D|^2`.
+fn base_point<T: Scalar>(
     direction: &Vec3<T>,
-    t: &T,
-) -> Option<Vec3<T>> {
-    ruling_parameter(surface, point, direction, t).map(|s| surface.eval(&s, t))
+    shifted: &[Bernstein<T>; 3],
+    root_of: &Bernstein<T>,
+    z: &IsolatedRoot<T>,
+    key: usize,
+    zero_of_w: Option<usize>,
+) -> Piece<T> {
+    let num = add_poly(
+        &add_poly(
+            &shifted[0].scale(&direction.x),
+            &shifted[1].scale(&direction.y),
+        ),
+        &shifted[2].scale(&direction.z),
+    );
+    let at = LambdaAt {
+        t: z.clone(),
+        root_of: root_of.clone(),
+        num,
+        den: Bernstein::constant(direction.norm_squared(), 0),
+        key,
+        zero_of_w,
+        closed: true,
+    };
+    Piece {
+        from: Some(at.clone()),
+        to: Some(at),
+    }
+}
+
+/// `det(B - P, V, D)` and `W = V x D` vanish identically: every ruling is parallel to the line
+/// or degenerates to the point `B(t)` (`V(t) = 0`). At the common zeros `z` of `U = (B - P) x D`
+/// the ruling is the line (`V(z) != 0`) or its point `B(z)` lies on it (`V(z) = 0`).
+fn parallel_to_every_ruling<T: Scalar>(
+    direction: &Vec3<T>,
+    shifted: &[Bernstein<T>; 3],
+    v: &[Bernstein<T>; 3],
+    u: &[Bernstein<T>; 3],
+) -> Outcome<T> {
+    let Ok(zeros_of_u) = gcd(u) else {
+        // U = 0: every ruling is the line or a point of it; V is not identically zero.
+        return Outcome::ParallelToEveryRuling(None, Covered::WholeLine);
+    };
+    let zs = if zeros_of_u.degree() == 0 {
+        Vec::new()
+    } else {
+        T::roots(&zeros_of_u).expect("a gcd is not zero")
+    };
+    let mut on_line = Vec::new();
+    let mut pieces = Vec::new();
+    for (i, z) in zs.into_iter().enumerate() {
+        if vanishes_at_root(&zeros_of_u, v, &z) {
+            pieces.push(base_point(direction, shifted, &zeros_of_u, &z, i, None));
+        } else {
+            on_line.push(z);
+        }
+    }
+    let covered = if !on_line.is_empty() {
+        Covered::WholeLine
+    } else {
+        match merge(pieces, &zeros_of_u) {
+            Some(p) => Covered::Pieces(p),
+            None => Covered::Undecided,
+        }
+    };
+    Outcome::ParallelToEveryRuling(Some(on_line), covered)
+}
+
+/// The covered part of the line when `det(B - P, V, D)` vanishes identically and `W = V x D`
+/// does not (module doc, "The covered part").
+fn covered<T: Scalar>(
+    surface: &RuledSurface<T>,
+    direction: &Vec3<T>,
+    shifted: &[Bernstein<T>; 3],
+    w: &[Bernstein<T>; 3],
+    u: &[Bernstein<T>; 3],
+) -> Covered<T> {
+    let v = surface.directions().coordinates();
+    let zeros_of_w = gcd(w).expect("W is not identically zero");
+    let zs = if zeros_of_w.degree() == 0 {
+        Vec::new()
+    } else {
+        T::roots(&zeros_of_w).expect("a gcd is not zero")
+    };
+    let mut key = 0;
+    let mut next_key = || {
+        key += 1;
+        key
+    };
+    let mut pieces: Vec<Piece<T>> = Vec::new();
+    // The rulings at the zeros of W: parallel to the line (its whole line when on it) or, where
+    // V = 0, the single point B(z) (covered when on the line).
+    for (i, z) in zs.iter().enumerate() {
+        if !vanishes_at_root(&zeros_of_w, u, z) {
+            continue;
+        }
+        if !vanishes_at_root(&zeros_of_w, &v, z) {
+            return Covered::WholeLine;
+        }
+        pieces.push(base_point(
+            direction,
+            shifted,
+            &zeros_of_w,
+            z,
+            next_key(),
+            Some(i),
+        ));
+    }
+    // Elsewhere the ruling t meets the line at lambda = N / Q, N = -((B - P) x V) . W,
+    // Q = |W|^2, reduced by their gcd to N1 / Q1 (continuous where Q1 != 0).
+    let a = cross_poly(shifted, &v);
+    let n = dot_poly(&a, w).scale(&T::from_i64(-1));
+    let q = dot_poly(w, w);
+    let g = gcd(&[n.clone(), q.clone()]).expect("Q is not identically zero");
+    let (n1, q1) = (exact_quotient(&n, &g), exact_quotient(&q, &g));
+    let c1 = sub_poly(&n1.derivative().mul(&q1), &n1.mul(&q1.derivative()));
+    let value =
+        |t: IsolatedRoot<T>, root_of: &Bernstein<T>, key: usize, z: Option<usize>| LambdaAt {
+            t,
+            root_of: root_of.clone(),
+            num: n1.clone(),
+            den: q1.clone(),
+            key,
+            zero_of_w: z,
+            closed: z.is_none(),
+        };
+    if c1.is_zero() {
+        // lambda is constant off the zeros of W: any parameter where Q1 != 0 gives it.
+        let d = q1.degree() + 1;
+        let t0 = (0..=d as i64)
+            .map(|k| T::from_i64(k) / T::from_i64(d as i64))
+            .find(|t| !q1.eval(t).is_zero())
+            .expect("Q1 has at most deg Q1 zeros");
+        let at = value(IsolatedRoot::Exact(t0), &q1, next_key(), None);
+        pieces.push(Piece {
+            from: Some(at.clone()),
+            to: Some(at),
+        });
+    } else {
+        // Breakpoints: the zeros of c1 (critical points of lambda) and of W, and 0 and 1.
+        // Between two of them lambda is continuous and strictly monotone.
+        let bp = c1.mul(&zeros_of_w);
+        let mut marks: Vec<End<T>> = Vec::new();
+        let mut params: Vec<IsolatedRoot<T>> = Vec::new();
+        let mut found = T::roots(&bp).expect("c1 and W's gcd are not zero");
+        if found.first().and_then(IsolatedRoot::exact) != Some(&T::zero()) {
+            found.insert(0, IsolatedRoot::Exact(T::zero()));
+        }
+        if found.last().and_then(IsolatedRoot::exact) != Some(&T::one()) {
+            found.push(IsolatedRoot::Exact(T::one()));
+        }
+        for r in found {
+            let z = zs.iter().position(|z| same_root(&zeros_of_w, z, &bp, &r));
+            let pole = z.is_some()
+                && q1.degree() > 0
+                && vanishes_at_root(&bp, std::slice::from_ref(&q1), &r);
+            marks.push((!pole).then(|| value(r.clone(), &bp, next_key(), z)));
+            params.push(r);
+        }
+        for k in 0..params.len() - 1 {
+            let inside = upper(&params[k]).add_ref(lower(&params[k + 1])) / T::from_i64(2);
+            let increasing = c1.eval(&inside).sign() == Sign::Positive;
+            let (left, right) = (marks[k].clone(), marks[k + 1].clone());
+            pieces.push(if increasing {
+                Piece {
+                    from: left,
+                    to: right,
+                }
+            } else {
+                Piece {
+                    from: right,
+                    to: left,
+                }
+            });
+        }
+    }
+    match merge(pieces, &zeros_of_w) {
+        Some(p) => Covered::Pieces(p),
+        None => Covered::Undecided,
+    }
+}
+
+/// Whether the root `a` of `p` and the root `b` of `q` are one number.
+fn same_root<T: Scalar>(
+    p: &Bernstein<T>,
+    a: &IsolatedRoot<T>,
+    q: &Bernstein<T>,
+    b: &IsolatedRoot<T>,
+) -> bool {
+    match (a, b) {
+        (IsolatedRoot::Exact(x), IsolatedRoot::Exact(y)) => x == y,
+        (IsolatedRoot::Exact(x), _) => q.eval(x).is_zero() && lower(b) < x && x < upper(b),
+        (_, IsolatedRoot::Exact(y)) => p.eval(y).is_zero() && lower(a) < y && y < upper(a),
+        _ => {
+            // Both isolate a root of gcd(p, q) in their intersection, or neither does.
+            upper(a) > lower(b) && upper(b) > lower(a) && {
+                let lo = if lower(a) > lower(b) {
+                    lower(a)
+                } else {
+                    lower(b)
+                };
+                let hi = if upper(a) < upper(b) {
+                    upper(a)
+                } else {
+                    upper(b)
+                };
+                let common = gcd(&[p.clone(), q.clone()]).expect("p, q are not zero");
+                common.degree() > 0 && {
+                    let sq = square_free(&common).expect("not zero");
+                    // One root of sq in [lo, hi] at most (it divides q, isolated by b);
+                    // a sign change or a zero at an end shows it.
+                    let (x, y) = (sq.eval(lo).sign(), sq.eval(hi).sign());
+                    x != y || x == Sign::Zero
+                }
+            }
+        }
+    }
+}
+
+fn lower<T: OrderedField>(r: &IsolatedRoot<T>) -> &T {
+    r.lo()
+}
+
+fn upper<T: OrderedField>(r: &IsolatedRoot<T>) -> &T {
+    r.hi()
+}
+
+/// Compares two lower (or two upper) ends; unbounded is below every lower end and above every
+/// upper end.
+fn compare_ends<T: Scalar>(
+    a: &mut End<T>,
+    b: &mut End<T>,
+    lower_ends: bool,
+    zeros_of_w: &Bernstein<T>,
+) -> Option<Ordering> {
+    let unbounded = if lower_ends {
+        Ordering::Less
+    } else {
+        Ordering::Greater
+    };
+    match (a, b) {
+        (None, None) => Some(Ordering::Equal),
+        (None, Some(_)) => Some(unbounded),
+        (Some(_), None) => Some(unbounded.reverse()),
+        (Some(x), Some(y)) => compare(x, y, zeros_of_w),
+    }
+}
+
+/// The union of the pieces as disjoint increasing intervals; `None` when two ends could not be
+/// ordered.
+fn merge<T: Scalar>(mut pieces: Vec<Piece<T>>, zeros_of_w: &Bernstein<T>) -> Option<Vec<Piece<T>>> {
+    // Insertion sort by the lower end (a fallible comparison).
+    for i in 1..pieces.len() {
+        let mut j = i;
+        while j > 0 {
+            let (head, tail) = pieces.split_at_mut(j);
+            let ord = compare_ends(&mut head[j - 1].from, &mut tail[0].from, true, zeros_of_w)?;
+            if ord != Ordering::Greater {
+                break;
+            }
+            pieces.swap(j - 1, j);
+            j -= 1;
+        }
+    }
+    let mut out: Vec<Piece<T>> = Vec::new();
+    for mut p in pieces {
+        let Some(cur) = out.last_mut() else {
+            out.push(p);
+            continue;
+        };
+        // Does p start inside cur (or touch it at a covered point)?
+        let joins = match (&mut cur.to, &mut p.from) {
+            (None, _) | (_, None) => true,
+            (Some(x), Some(y)) => match compare(y, x, zeros_of_w)? {
+                Ordering::Less => true,
+                Ordering::Equal => x.closed || y.closed,
+                Ordering::Greater => false,
+            },
+        };
+        if !joins {
+            out.push(p);
+            continue;
+        }
+        if let (Some(x), Some(y)) = (&mut cur.from, &mut p.from) {
+            if compare(x, y, zeros_of_w)? == Ordering::Equal && y.closed {
+                x.closed = true;
+            }
+        }
+        match compare_ends(&mut p.to, &mut cur.to, false, zeros_of_w)? {
+            Ordering::Greater => cur.to = p.to,
+            Ordering::Equal => {
+                if let (Some(x), Some(y)) = (&mut cur.to, &p.to) {
+                    x.closed |= y.closed;
+                }
+            }
+            Ordering::Less => {}
+        }
+    }
+    Some(out)
 }
 
 // ------------------------------------------------------------------ input checks
@@ -465,12 +964,125 @@ struct AnswerOut<S> {
     /// `parallel_to_every_ruling`: the roots `t` whose ruling is the line (`null`: every ruling).
     #[serde(skip_serializing_if = "Option::is_none")]
     rulings_on_line: Option<Option<Vec<ParamOut<S>>>>,
-    /// `line_on_surface`: `lambda` of the meeting points of the rulings `t = 0` and `t = 1`
-    /// (`null` at an end whose ruling is parallel to the line, so meets it nowhere or everywhere).
+    /// The covered part of the line when every ruling meets the line or a ruling is the line:
+    /// disjoint intervals of `lambda`, increasing (`null` ends are unbounded).
     #[serde(skip_serializing_if = "Option::is_none")]
-    lambda_at_ends: Option<[Option<S>; 2]>,
+    covered: Option<Vec<PieceOut<S>>>,
+    /// The least and the largest `lambda` of `covered` (`null`: unbounded).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    lambda_at_ends: Option<[Option<EndOut<S>>; 2]>,
+    /// `undecided`: what was tried.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    note: Option<String>,
     #[serde(skip_serializing_if = "Option::is_none")]
     float: Option<Box<AnswerOut<f64>>>,
+}
+
+/// An end of a covered interval: `lambda` exactly (`value`) or enclosed (`interval`, at an
+/// irrational parameter), whether it is covered itself (`closed`), and the parameter `t` of the
+/// ruling through it or whose neighbours' meeting points tend to it.
+#[derive(Debug, Serialize)]
+struct EndOut<S> {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    value: Option<S>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    interval: Option<[S; 2]>,
+    approx: f64,
+    closed: bool,
+    t: ParamOut<S>,
+}
+
+#[derive(Debug, Serialize)]
+struct PieceOut<S> {
+    from: Option<EndOut<S>>,
+    to: Option<EndOut<S>>,
+}
+
+fn end_out<T: Scalar, S>(end: &End<T>, out: &impl Fn(&T) -> S) -> Option<EndOut<S>> {
+    let mut e = end.clone()?;
+    let exact = e.exact();
+    let (value, interval) = match exact {
+        Some(x) => (Some(x), None),
+        None => {
+            // Narrow the parameter until lambda is enclosed to 2^-50 (relative to 1 + |lambda|).
+            let mut enclosure = e.enclosure();
+            for _ in 0..200 {
+                if let Some((lo, hi)) = &enclosure {
+                    let scale = T::one() + lo.abs() + hi.abs();
+                    if hi.sub_ref(lo) <= scale / T::from_ratio(1 << 50, 1).expect("not zero") {
+                        break;
+                    }
+                }
+                if !e.narrow() {
+                    break;
+                }
+                enclosure = e.enclosure();
+            }
+            (None, enclosure)
+        }
+    };
+    let approx = match (&value, &interval) {
+        (Some(x), _) => x.approx(),
+        (None, Some((lo, hi))) => (lo.add_ref(hi) / T::from_i64(2)).approx(),
+        (None, None) => e.approx_value().map_or(0.0, |x| x.approx()),
+    };
+    Some(EndOut {
+        value: value.map(|x| out(&x)),
+        interval: interval.map(|(lo, hi)| [out(&lo), out(&hi)]),
+        approx,
+        closed: e.closed,
+        t: param(&e.t, out),
+    })
+}
+
+/// Sets `outcome`, `covered`, `lambda_at_ends` (and `note`) from the covered part of the line.
+fn describe<T: Scalar, S>(answer: &mut AnswerOut<S>, covered: &Covered<T>, out: &impl Fn(&T) -> S) {
+    match covered {
+        Covered::WholeLine => {
+            answer.outcome = "line_on_surface";
+            answer.covered = Some(vec![PieceOut {
+                from: None,
+                to: None,
+            }]);
+            answer.lambda_at_ends = Some([None, None]);
+        }
+        Covered::Undecided => {
+            answer.outcome = "undecided";
+            answer.note = Some(format!(
+                "the rulings meet the line in a set of parameters or limits whose end values were compared exactly where possible; two irrational end values were still not ordered after {COMPARE_STEPS} halvings of their parameters (they may be equal)"
+            ));
+        }
+        Covered::Pieces(pieces) => {
+            let points = pieces.iter().all(|p| match (&p.from, &p.to) {
+                (Some(a), Some(b)) => a.key == b.key,
+                _ => false,
+            });
+            answer.outcome =
+                if pieces.len() == 1 && pieces[0].from.is_none() && pieces[0].to.is_none() {
+                    "line_on_surface"
+                } else if pieces.is_empty() {
+                    "no_points"
+                } else if !points {
+                    "line_segment_on_surface"
+                } else if pieces.len() == 1 {
+                    "single_point"
+                } else {
+                    "isolated_points"
+                };
+            let first = pieces.first().and_then(|p| end_out(&p.from, out));
+            let last = pieces.last().and_then(|p| end_out(&p.to, out));
+            answer.lambda_at_ends = Some([first, last]);
+            answer.covered = Some(
+                pieces
+                    .iter()
+                    .map(|p| PieceOut {
+                        from: end_out(&p.from, out),
+                        to: end_out(&p.to, out),
+                    })
+                    .collect(),
+            );
+        }
+    }
 }
 
 fn param<T: Scalar, S>(r: &IsolatedRoot<T>, out: &impl Fn(&T) -> S) -> ParamOut<S> {
@@ -505,12 +1117,18 @@ fn render<T: Scalar, S>(
         outcome: "",
         points: Vec::new(),
         rulings_on_line: None,
+        covered: None,
         lambda_at_ends: None,
+        note: None,
         float: None,
     };
     match &a.outcome {
         Outcome::Roots(reports) => {
-            answer.outcome = if reports.iter().any(|r| r.point.is_some()) {
+            answer.outcome = if reports.iter().any(|r| r.status == Status::RulingOnLine) {
+                // A ruling is the line: the whole line lies on the surface.
+                describe(&mut answer, &Covered::<T>::WholeLine, &out);
+                answer.outcome
+            } else if reports.iter().any(|r| r.point.is_some()) {
                 "points"
             } else {
                 "no_points"
@@ -533,18 +1151,16 @@ fn render<T: Scalar, S>(
                 })
                 .collect();
         }
-        Outcome::ParallelToEveryRuling(roots) => {
-            answer.outcome = "parallel_to_every_ruling";
+        Outcome::ParallelToEveryRuling(roots, covered) => {
             answer.rulings_on_line = Some(
                 roots
                     .as_ref()
                     .map(|rs| rs.iter().map(|r| param(r, &out)).collect()),
             );
+            describe(&mut answer, covered, &out);
+            answer.outcome = "parallel_to_every_ruling";
         }
-        Outcome::LineOnSurface(ends) => {
-            answer.outcome = "line_on_surface";
-            answer.lambda_at_ends = Some([ends[0].as_ref().map(&out), ends[1].as_ref().map(&out)]);
-        }
+        Outcome::Covered(covered) => describe(&mut answer, covered, &out),
     }
     answer
 }

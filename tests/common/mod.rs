@@ -40,8 +40,8 @@ pub fn refused(problem: &str, extra: &[&str], needles: &[&str]) -> String {
 
 /// Whether the JSON holds a `null` inside an array that has numbers: a NaN or infinity that
 /// serde_json wrote as `null` (answers are refused before that; see `solve::finite`).
-/// `ruled_line`'s `lambda_at_ends` is exempt: there `null` is the contract's "this end's ruling is
-/// parallel to the line" beside a number for the other end (found by `solve_props` on
+/// `ruled_line`'s `lambda_at_ends` is exempt: there `null` is the contract's unbounded end of
+/// the covered part of the line beside the other end (found by `solve_props` on
 /// `base [[-1,-3,2]]`, directions `[[-2,-1,-1],[2,-1,1]]`, line direction `(-2,-1,-1)`).
 /// The `approx` paths an exact answer lists in `approx_out_of_range` (f64 twins of exact values
 /// beyond f64's range, written as `null` on purpose) are exempt as well; a listed path that is
@@ -90,4 +90,38 @@ fn null_beside_number(v: &serde_json::Value) -> bool {
             .any(|(k, x)| k != "lambda_at_ends" && null_beside_number(x)),
         _ => false,
     }
+}
+
+/// `C(n, k)` as an exact rational.
+#[allow(dead_code)] // not every test crate that includes this module uses it
+pub fn binom(n: usize, k: usize) -> exactcheck_exact::Rational {
+    use exactcheck_exact::Rational;
+    let mut c = Rational::ONE;
+    for i in 0..k {
+        c = c * Rational::from((n - i) as i64) / Rational::from((i + 1) as i64);
+    }
+    c
+}
+
+/// The Bernstein polynomial `sum c_i C(n, i) t^i (1 - t)^(n - i)` as a power-basis polynomial,
+/// built from `(1 - t)` and `t` (independently of the workspace's basis conversions).
+#[allow(dead_code)]
+pub fn bernstein_upoly(c: &[exactcheck_exact::Rational]) -> exactcheck_exact::univariate::UPoly {
+    use exactcheck_core::Ring;
+    use exactcheck_exact::univariate::UPoly;
+    let n = c.len() - 1;
+    let t = UPoly::x();
+    let s = UPoly::one().sub_ref(&t);
+    let mut acc = UPoly::zero();
+    for (i, ci) in c.iter().enumerate() {
+        let mut term = UPoly::constant(ci.clone() * binom(n, i));
+        for _ in 0..i {
+            term = term.mul_ref(&t);
+        }
+        for _ in 0..n - i {
+            term = term.mul_ref(&s);
+        }
+        acc = acc.add_ref(&term);
+    }
+    acc
 }
