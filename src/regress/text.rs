@@ -66,6 +66,17 @@ impl Subject for TextSubject<'_> {
     fn arity(&self) -> usize {
         self.program.inputs.len()
     }
+    fn float_side(&self) -> String {
+        match &self.runner {
+            None => format!("formula {}", self.program.name),
+            Some(r) => format!(
+                "program {}",
+                r.lock()
+                    .unwrap_or_else(std::sync::PoisonError::into_inner)
+                    .command()
+            ),
+        }
+    }
     fn exact(&self, x: &[f64]) -> Result<Vec<ExactValue>, CaseError> {
         let exact_in: Vec<Rational> = x
             .iter()

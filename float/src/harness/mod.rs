@@ -56,7 +56,7 @@
 mod merge;
 mod shrink;
 
-pub use merge::{merge, MergeError};
+pub use merge::{check_consistent, merge, MergeError};
 
 use crate::convert::{rel_error, ulps_error_rounded};
 use crate::gen::InputGen;
@@ -255,6 +255,9 @@ pub trait Subject: Sync {
     fn name(&self) -> String;
     /// The number of inputs.
     fn arity(&self) -> usize;
+    /// What computes the float results, for reports: shards of a sweep merge only when it is
+    /// the same (the built-in code's name, a formula's text, an external program's command).
+    fn float_side(&self) -> String;
     /// The exact outputs at `x` (one `ExactValue` per output).
     ///
     /// # Errors
@@ -307,6 +310,9 @@ impl<F: Formula + Sync + ?Sized, E: ExactScalar> Subject for Generic<'_, F, E> {
     }
     fn arity(&self) -> usize {
         self.formula.arity()
+    }
+    fn float_side(&self) -> String {
+        format!("built-in {}", self.formula.name())
     }
     fn exact(&self, x: &[f64]) -> Result<Vec<ExactValue>, CaseError> {
         if x.len() != self.formula.arity() {
@@ -709,6 +715,7 @@ pub fn run(
         .collect::<Result<Vec<_>, RegressError>>()?;
     Ok(acc.report(
         subject.name(),
+        subject.float_side(),
         gen.describe(),
         subject.arity(),
         sweep,
@@ -809,6 +816,7 @@ impl Accumulator {
     fn report(
         self,
         formula: String,
+        float_side: String,
         generator: String,
         arity: usize,
         sweep: Sweep,
@@ -820,6 +828,7 @@ impl Accumulator {
             .map_or(0..sweep.samples, |s| s.range(sweep.samples));
         let mut r = Report {
             formula,
+            float_side,
             generator,
             arity,
             samples: sweep.samples,
