@@ -15,6 +15,9 @@
 //!   allocator cannot call back into itself).
 //! - **Time.** `--timeout SECONDS` starts a watchdog thread ([`start_timeout`]) that ends the
 //!   process with one line and exit status 2 when the command has not finished in time.
+//!
+//! Either way the process groups of running `--program` float sides are killed first
+//! ([`exactcheck_float::program::stop_all`]).
 //! - **Progress.** A long `prove` or `solve` shows the seconds spent on standard error when that
 //!   is a terminal ([`start_progress`]); [`crate::output`] clears the line before writing.
 //!
@@ -195,6 +198,8 @@ fn die(args: std::fmt::Arguments<'_>) -> ! {
         len: 0,
     };
     let _ = std::fmt::write(&mut text, args);
+    // A `--program` float side (and anything it started) does not outlive exactcheck.
+    exactcheck_float::program::stop_all();
     exit_with(&text.buf[..text.len])
 }
 

@@ -285,6 +285,14 @@ pub trait Subject: Sync {
             .map(|(k, x)| self.float(first + k, x))
             .collect()
     }
+    /// Called once when the sweep (worst cases shrunk) is done; by default nothing. An external
+    /// program is told its input has ended and checked to have kept the protocol to the end.
+    ///
+    /// # Errors
+    /// As [`Subject::float`]: the sweep's report is not given.
+    fn finish(&self) -> Result<(), FloatSideError> {
+        Ok(())
+    }
 }
 
 /// A [`Formula`] as a [`Subject`]: its generic `eval` in the exact scalar `E` against its
@@ -713,6 +721,7 @@ pub fn run(
             })
         })
         .collect::<Result<Vec<_>, RegressError>>()?;
+    subject.finish().map_err(|e| RegressError::FloatSide(e.0))?;
     Ok(acc.report(
         subject.name(),
         subject.float_side(),
