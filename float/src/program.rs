@@ -720,36 +720,26 @@ impl ProgramRunner {
 
         let (events, answers) = mpsc::channel();
         let (to_stdin, chunks) = mpsc::channel::<(Vec<u8>, usize)>();
-        {
-            let events = events.clone();
-            thread::spawn(move || write_chunks(stdin, chunks, &events));
-        }
-        thread::spawn(move || {
-            let mut r = BufReader::with_capacity(1 << 16, stdout);
-            loop {
-                match read_capped_line(&mut r) {
-                    Ok(Some(line)) => {
-                        if events.send(Event::Line(line)).is_err() {
-                            return;
-                        }
-                    }
-                    Ok(None) => {
-                        let _ = events.send(Event::Eof);
-                        return;
-                    }
-                    Err(e) => {
-                        let _ = events.send(Event::Failed(e.to_string()));
-                        return;
-                    }
-                }
-            }
-        });
-
         let tail = Arc::new(Mutex::new(Tail::default()));
         let (done, stderr_done) = mpsc::channel();
-        {
+        let started = {
+            let to_events = events.clone();
             let tail = Arc::clone(&tail);
-            thread::spawn(move || drain_stderr(stderr, &tail, &done));
+            helper("writer", move || write_chunks(stdin, chunks, &to_events))
+                .and_then(|()| helper("reader", move || read_lines(stdout, &events)))
+                .and_then(|()| helper("stderr", move || drain_stderr(stderr, &tail, &done)))
+        };
+        if let Err(e) = started {
+            #[cfg(unix)]
+            groups::kill(child.id());
+            let _ = child.kill();
+            let _ = child.wait();
+            #[cfg(unix)]
+            groups::unregister(child.id());
+            return Err(ProgramError::Start {
+                command: command.to_string(),
+                reason: format!("cannot start a thread to talk to it: {e}"),
+            });
         }
 
         Ok(ProgramRunner {
@@ -1253,6 +1243,36 @@ fn write_chunks(mut stdin: ChildStdin, chunks: Receiver<(Vec<u8>, usize)>, event
             return;
         }
         written += lines;
+    }
+}
+
+/// Starts one of the threads that talk to the program.
+fn helper(name: &str, f: impl FnOnce() + Send + 'static) -> io::Result<()> {
+    thread::Builder::new()
+        .name(format!("program {name}"))
+        .spawn(f)
+        .map(drop)
+}
+
+/// The reader thread: sends each line of the program's stdout, then the end or a read error.
+fn read_lines(stdout: impl Read, events: &Sender<Event>) {
+    let mut r = BufReader::with_capacity(1 << 16, stdout);
+    loop {
+        match read_capped_line(&mut r) {
+            Ok(Some(line)) => {
+                if events.send(Event::Line(line)).is_err() {
+                    return;
+                }
+            }
+            Ok(None) => {
+                let _ = events.send(Event::Eof);
+                return;
+            }
+            Err(e) => {
+                let _ = events.send(Event::Failed(e.to_string()));
+                return;
+            }
+        }
     }
 }
 
