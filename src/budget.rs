@@ -438,6 +438,21 @@ mod tests {
     }
 
     #[test]
+    fn rayon_num_threads_is_read_as_rayon_reads_it_within_the_limit() {
+        let cores = std::thread::available_parallelism().map_or(1, std::num::NonZeroUsize::get);
+        for default in [None, Some(""), Some("0"), Some("many")] {
+            assert_eq!(worker_threads(default).unwrap(), cores, "{default:?}");
+        }
+        assert_eq!(worker_threads(Some(" 3 ")).unwrap(), 3);
+        assert_eq!(worker_threads(Some("1024")).unwrap(), 1024);
+        let e = worker_threads(Some("1025")).unwrap_err().to_string();
+        assert!(
+            e.contains("exceeds the limit threads = 1024 (found 1025"),
+            "{e}"
+        );
+    }
+
+    #[test]
     fn timeouts_must_be_positive_and_finite() {
         for bad in [0.0, -1.0, f64::NAN, f64::INFINITY, 2e9] {
             assert!(start_timeout(bad).is_err(), "{bad}");

@@ -389,10 +389,8 @@ fn dead(pid: u32) -> bool {
 fn read_pid(path: &std::path::Path) -> u32 {
     let t = std::time::Instant::now();
     loop {
-        if let Ok(pid) = std::fs::read_to_string(path).map(|t| t.trim().parse()) {
-            if let Ok(pid) = pid {
-                return pid;
-            }
+        if let Ok(Ok(pid)) = std::fs::read_to_string(path).map(|t| t.trim().parse()) {
+            return pid;
         }
         assert!(t.elapsed().as_secs() < 20, "no pid in {path:?}");
         std::thread::sleep(std::time::Duration::from_millis(20));

@@ -722,15 +722,7 @@ pub fn run(
         })
         .collect::<Result<Vec<_>, RegressError>>()?;
     subject.finish().map_err(|e| RegressError::FloatSide(e.0))?;
-    Ok(acc.report(
-        subject.name(),
-        subject.float_side(),
-        gen.describe(),
-        subject.arity(),
-        sweep,
-        options,
-        worst,
-    ))
+    Ok(acc.report(subject, gen.describe(), sweep, options, worst))
 }
 
 /// Inserts a case into the K worst, keeping them worst first.
@@ -824,10 +816,8 @@ impl Accumulator {
 
     fn report(
         self,
-        formula: String,
-        float_side: String,
+        subject: &(impl Subject + ?Sized),
         generator: String,
-        arity: usize,
         sweep: Sweep,
         options: &Options,
         worst: Vec<WorstCase>,
@@ -836,10 +826,10 @@ impl Accumulator {
             .shard
             .map_or(0..sweep.samples, |s| s.range(sweep.samples));
         let mut r = Report {
-            formula,
-            float_side,
+            formula: subject.name(),
+            float_side: subject.float_side(),
             generator,
-            arity,
+            arity: subject.arity(),
             samples: sweep.samples,
             seed: sweep.seed,
             shard: sweep.shard,
