@@ -214,8 +214,9 @@ fn program_matches_builtin(cmd: &str) {
     assert_eq!(external, builtin, "{cmd}");
 }
 
-/// `regress --formula 'sqrt(x + 1) - sqrt(x)' --domain 'x in [1, 1e15]' --json` with `samples`.
-fn cancel_run(samples: &str, extra: &[&str]) -> Value {
+/// `regress --formula 'sqrt(x + 1) - sqrt(x)' --domain 'x in [1, 1e15]'` with `samples` and
+/// `extra` arguments.
+fn cancel_args(samples: &str, extra: &[&str]) -> Vec<String> {
     let base = [
         "regress",
         "--formula",
@@ -224,9 +225,16 @@ fn cancel_run(samples: &str, extra: &[&str]) -> Value {
         "x in [1, 1e15]",
         "--samples",
         samples,
-        "--json",
     ];
-    json_of(&exactcheck(&[&base[..], extra].concat()))
+    base.iter().chain(extra).map(|s| s.to_string()).collect()
+}
+
+/// [`cancel_args`] with `--json`: the document.
+fn cancel_run(samples: &str, extra: &[&str]) -> Value {
+    let args = cancel_args(samples, &[&["--json"], extra].concat());
+    json_of(&exactcheck(
+        &args.iter().map(String::as_str).collect::<Vec<_>>(),
+    ))
 }
 
 fn compiled_c() -> String {
@@ -299,19 +307,7 @@ fn failing_programs_are_one_line_errors() {
 
 /// `regress --formula CANCEL` over 100 samples with `--program CMD` and `extra` arguments.
 fn program_args(cmd: &str, extra: &[&str]) -> Vec<String> {
-    let base = [
-        "regress",
-        "--formula",
-        CANCEL,
-        "--domain",
-        "x in [1, 1e15]",
-        "--samples",
-        "100",
-        "--quiet",
-        "--program",
-        cmd,
-    ];
-    base.iter().chain(extra).map(|s| s.to_string()).collect()
+    cancel_args("100", &[&["--quiet", "--program", cmd], extra].concat())
 }
 
 /// A program that breaks the protocol ends the run with one line (exit status 2), never with an
