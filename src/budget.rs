@@ -15,6 +15,9 @@
 //!   allocator cannot call back into itself).
 //! - **Time.** `--timeout SECONDS` starts a watchdog thread ([`start_timeout`]) that ends the
 //!   process with one line and exit status 2 when the command has not finished in time.
+//!
+//! Either way the process groups of running `--program` float sides are killed first
+//! ([`exactcheck_float::program::stop_all`]).
 //! - **Progress.** A long `prove` or `solve` shows the seconds spent on standard error when that
 //!   is a terminal ([`start_progress`]); [`crate::output`] clears the line before writing.
 //!
@@ -198,6 +201,8 @@ fn die(args: std::fmt::Arguments<'_>) -> ! {
     };
     let _ = std::fmt::write(&mut text, args);
     crate::output::remove_temp_file();
+    // A `--program` float side (and anything it started) does not outlive exactcheck.
+    exactcheck_float::program::stop_all();
     exit_with(&text.buf[..text.len])
 }
 
@@ -272,6 +277,105 @@ pub fn start_timeout(seconds: f64) -> Result<(), crate::Error> {
     Ok(())
 }
 
+/// Starts rayon's global pool of worker threads for the command, on the thread that runs it:
+/// `RAYON_NUM_THREADS` threads (at most the `threads` limit; unset, 0 or not a number: one per
+/// core) with `stack` bytes of stack each (rayon's default when `None`).
+///
+/// Rayon builds its global pool once per process; if that build fails (the system refuses a
+/// thread: `ulimit -u`, `ulimit -v`), every later parallel loop panics. So the threads are first
+/// started in a trial pool; when that fails the command runs on one thread, its own (one line on
+/// standard error says so), which needs no new thread. A pool built before (a process running
+/// several commands) is kept.
+///
+/// # Errors
+/// [`crate::Error::Limit`] when `RAYON_NUM_THREADS` is past the `threads` limit;
+/// [`crate::Error::Usage`] when the trial pool started but the global one then could not.
+pub fn start_thread_pool(stack: Option<usize>) -> Result<(), crate::Error> {
+    let threads = worker_threads(std::env::var("RAYON_NUM_THREADS").ok().as_deref())?;
+    start_pool_of(threads, stack)
+}
+
+/// The number of worker threads `RAYON_NUM_THREADS` asks for, as rayon reads it (unset, 0 or not
+/// a number: one per core), within the `threads` limit.
+///
+/// # Errors
+/// [`crate::Error::Limit`] past the limit.
+pub fn worker_threads(env: Option<&str>) -> Result<usize, crate::Error> {
+    let asked = env
+        .and_then(|v| v.trim().parse::<u64>().ok())
+        .filter(|&n| n > 0);
+    let Some(n) = asked else {
+        return Ok(std::thread::available_parallelism().map_or(1, std::num::NonZeroUsize::get));
+    };
+    limits::THREADS.check(n).map_err(crate::Error::Limit)?;
+    Ok(usize::try_from(n).unwrap_or(usize::MAX))
+}
+
+/// [`start_thread_pool`] with the number of threads given.
+///
+/// # Errors
+/// As [`start_thread_pool`].
+pub fn start_pool_of(threads: usize, stack: Option<usize>) -> Result<(), crate::Error> {
+    use std::error::Error as _;
+    static STARTED: std::sync::OnceLock<()> = std::sync::OnceLock::new();
+    if STARTED.get().is_some() {
+        return Ok(());
+    }
+    let builder = |n: usize| {
+        let b = rayon::ThreadPoolBuilder::new().num_threads(n);
+        match stack {
+            Some(bytes) => b.stack_size(bytes),
+            None => b,
+        }
+    };
+    match trial_pool(threads, builder(threads)) {
+        Ok(()) => {
+            // An error without a source: the global pool exists already, which is as good.
+            if let Err(e) = builder(threads).build_global() {
+                if e.source().is_some() {
+                    return Err(crate::Error::Usage(format!(
+                        "cannot start {threads} worker threads: {e} (set RAYON_NUM_THREADS lower)"
+                    )));
+                }
+            }
+        }
+        Err(e) => {
+            eprintln!(
+                "exactcheck: warning: cannot start {threads} worker threads ({e}); running on one thread"
+            );
+            // The calling thread is the pool's one worker: no thread to start, so no failure
+            // beyond a pool that exists already.
+            let _ = rayon::ThreadPoolBuilder::new()
+                .num_threads(1)
+                .use_current_thread()
+                .build_global();
+        }
+    }
+    let _ = STARTED.set(());
+    Ok(())
+}
+
+/// Starts `threads` threads in a pool of their own and stops them again, waiting (a bounded
+/// while) for them to end, so that the global pool built next finds their resources free.
+fn trial_pool(
+    threads: usize,
+    builder: rayon::ThreadPoolBuilder,
+) -> Result<(), rayon::ThreadPoolBuildError> {
+    let ended = std::sync::Arc::new(AtomicUsize::new(0));
+    let counter = std::sync::Arc::clone(&ended);
+    let pool = builder
+        .exit_handler(move |_| {
+            counter.fetch_add(1, Ordering::SeqCst);
+        })
+        .build()?;
+    drop(pool);
+    let start = Instant::now();
+    while ended.load(Ordering::SeqCst) < threads && start.elapsed() < Duration::from_secs(2) {
+        std::thread::sleep(Duration::from_millis(1));
+    }
+    Ok(())
+}
+
 /// Whether the progress line is on screen (guarded so that it is cleared exactly once).
 static PROGRESS: Mutex<bool> = Mutex::new(false);
 /// Set when the command's output begins: no progress line after that.
@@ -334,6 +438,21 @@ mod tests {
         let long = "x".repeat(300);
         let _ = std::fmt::write(&mut t, format_args!("{long}"));
         assert_eq!(t.len, 256);
+    }
+
+    #[test]
+    fn rayon_num_threads_is_read_as_rayon_reads_it_within_the_limit() {
+        let cores = std::thread::available_parallelism().map_or(1, std::num::NonZeroUsize::get);
+        for default in [None, Some(""), Some("0"), Some("many")] {
+            assert_eq!(worker_threads(default).unwrap(), cores, "{default:?}");
+        }
+        assert_eq!(worker_threads(Some(" 3 ")).unwrap(), 3);
+        assert_eq!(worker_threads(Some("1024")).unwrap(), 1024);
+        let e = worker_threads(Some("1025")).unwrap_err().to_string();
+        assert!(
+            e.contains("exceeds the limit threads = 1024 (found 1025"),
+            "{e}"
+        );
     }
 
     #[test]

@@ -324,20 +324,15 @@ pub fn run(cli: Cli) -> Result<ExitCode, crate::Error> {
     }
     let Some(stack) = stack_for_depth()? else {
         // The default depth: the main thread's stack and rayon's defaults are enough, so the
-        // command stays on the main thread and the pool is built lazily, as without a raised
-        // limit it always was.
-        return run_command(cli);
+        // command stays on the main thread.
+        return run_command(cli, None);
     };
-    // Rayon's workers check claims and samples, which walk expressions too. Built once per
-    // process: a second build (tests calling `run` again) keeps the first pool, so it fails,
-    // which is harmless.
-    let _ = rayon::ThreadPoolBuilder::new()
-        .stack_size(stack)
-        .build_global();
+    // Rayon's workers check claims and samples, which walk expressions too: they get the
+    // command thread's stack.
     let worker = std::thread::Builder::new()
         .name("exactcheck".into())
         .stack_size(stack)
-        .spawn(move || run_command(cli))
+        .spawn(move || run_command(cli, Some(stack)))
         .map_err(|e| {
             crate::Error::Usage(format!(
                 "cannot reserve {} MiB of stack for --limit depth={} ({e}); lower the depth limit",
@@ -389,9 +384,11 @@ fn stack_for_depth() -> Result<Option<usize>, crate::Error> {
     Ok(Some(BASE_STACK + depth as usize * STACK_PER_LEVEL))
 }
 
-/// The command itself, on the thread [`run`] gives it.
-fn run_command(cli: Cli) -> Result<ExitCode, crate::Error> {
+/// The command itself, on the thread [`run`] gives it; rayon's workers get `stack` bytes of
+/// stack (their default when `None`).
+fn run_command(cli: Cli, stack: Option<usize>) -> Result<ExitCode, crate::Error> {
     crate::budget::enforce_memory_limit();
+    crate::budget::start_thread_pool(stack)?;
     if let Some(seconds) = cli.timeout {
         crate::budget::start_timeout(seconds)?;
     }

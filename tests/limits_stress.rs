@@ -9,6 +9,7 @@
 //! [[case]]
 //! args = ["prove", "(x+1)^99", "0"]  # paths are relative to the repository root
 //! # stdin = "..."                    # optional standard input
+//! # env = { RAYON_NUM_THREADS = "4" } # optional environment variables
 //! outcome = "within"                 # exit status 0 or 1, no "panicked", no "exceeds the limit"
 //! [[case]]
 //! args = ["prove", "(x+1)^100", "0"]
@@ -25,7 +26,7 @@ mod timed;
 use serde::Deserialize;
 use std::collections::BTreeSet;
 use std::ffi::OsString;
-use timed::{parallel_map, root, run, Run};
+use timed::{parallel_map, root, run, run_with_env, Run};
 
 /// The stress directory, relative to the repository root.
 const DIR: &str = "tests/stress";
@@ -47,6 +48,9 @@ struct StressCase {
     args: Vec<String>,
     /// Standard input, if any.
     stdin: Option<String>,
+    /// Environment variables of the run.
+    #[serde(default)]
+    env: std::collections::BTreeMap<String, String>,
     /// `within` or `past`.
     outcome: Outcome,
 }
@@ -182,7 +186,8 @@ fn every_limit_holds_at_its_value_and_refuses_just_past_it() {
     let results = parallel_map(&runs, |(name, value, _, case)| {
         let mut args: Vec<OsString> = vec!["--limit".into(), format!("{name}={value}").into()];
         args.extend(case.args.iter().map(OsString::from));
-        let r = run(&args, case.stdin.as_deref().map(str::as_bytes));
+        let env: Vec<(String, String)> = case.env.clone().into_iter().collect();
+        let r = run_with_env(&args, case.stdin.as_deref().map(str::as_bytes), &env);
         judge(name, *value, case.outcome, &r)
     });
     for ((name, _, i, case), result) in runs.iter().zip(results) {

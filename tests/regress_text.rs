@@ -205,13 +205,18 @@ fn fpcore_suites_print_one_table() {
 /// The user's program as the float side computes what the formula's f64 side computes, so the
 /// two reports are the same.
 fn program_matches_builtin(cmd: &str) {
-    let builtin = cancel_run("1500", &[]);
-    let external = cancel_run("1500", &["--program", cmd]);
+    let mut builtin = cancel_run("1500", &[]);
+    let mut external = cancel_run("1500", &["--program", cmd]);
+    // Only the float side each report records differs.
+    let side = |doc: &mut Value| doc["entries"][0]["float_side"].take();
+    assert_eq!(side(&mut builtin), format!("formula {CANCEL}").as_str());
+    assert_eq!(side(&mut external), format!("program {cmd}").as_str());
     assert_eq!(external, builtin, "{cmd}");
 }
 
-/// `regress --formula 'sqrt(x + 1) - sqrt(x)' --domain 'x in [1, 1e15]' --json` with `samples`.
-fn cancel_run(samples: &str, extra: &[&str]) -> Value {
+/// `regress --formula 'sqrt(x + 1) - sqrt(x)' --domain 'x in [1, 1e15]'` with `samples` and
+/// `extra` arguments.
+fn cancel_args(samples: &str, extra: &[&str]) -> Vec<String> {
     let base = [
         "regress",
         "--formula",
@@ -220,9 +225,16 @@ fn cancel_run(samples: &str, extra: &[&str]) -> Value {
         "x in [1, 1e15]",
         "--samples",
         samples,
-        "--json",
     ];
-    json_of(&exactcheck(&[&base[..], extra].concat()))
+    base.iter().chain(extra).map(|s| s.to_string()).collect()
+}
+
+/// [`cancel_args`] with `--json`: the document.
+fn cancel_run(samples: &str, extra: &[&str]) -> Value {
+    let args = cancel_args(samples, &[&["--json"], extra].concat());
+    json_of(&exactcheck(
+        &args.iter().map(String::as_str).collect::<Vec<_>>(),
+    ))
 }
 
 fn compiled_c() -> String {
@@ -291,6 +303,149 @@ fn failing_programs_are_one_line_errors() {
         &["sample 0", "2"],
     );
     run("/no/such/program", &["/no/such/program"]);
+}
+
+/// `regress --formula CANCEL` over 100 samples with `--program CMD` and `extra` arguments.
+fn program_args(cmd: &str, extra: &[&str]) -> Vec<String> {
+    cancel_args("100", &[&["--quiet", "--program", cmd], extra].concat())
+}
+
+/// A program that breaks the protocol ends the run with one line (exit status 2), never with an
+/// accuracy figure; one that keeps it gives the same report as the formula's own f64 side.
+#[test]
+fn protocol_errors_are_one_line_errors() {
+    let echo = |times: usize, numbered: bool, after: &str| {
+        let (read, answer) = if numbered {
+            ("read -r i x", "echo \"$i $x\"; ")
+        } else {
+            ("read -r x", "echo \"$x\"; ")
+        };
+        format!(
+            "sh -c 'while {read}; do x=${{x#[}}; x=${{x%]}}; x=$(awk \"BEGIN {{ printf \\\"%.17g\\\", sqrt($x + 1) - sqrt($x) }}\"); {}done; {after}'",
+            answer.repeat(times)
+        )
+    };
+    let run = |cmd: &str, extra: &[&str], needles: &[&str]| {
+        let a = program_args(cmd, extra);
+        let a: Vec<&str> = a.iter().map(String::as_str).collect();
+        refused(&a, needles)
+    };
+    run(&echo(2, false, ""), &[], &["protocol error"]);
+    run(
+        &echo(2, true, ""),
+        &["--program-echo-index"],
+        &[
+            "sample 1",
+            "does not start with the index 1",
+            "--program-echo-index",
+        ],
+    );
+    run(
+        &echo(1, false, "echo done"),
+        &[],
+        &["after its answer to sample", "\"done\""],
+    );
+    run(
+        &echo(1, false, "exit 3"),
+        &[],
+        &["exit status 3 after its last answer"],
+    );
+    run(
+        "sh -c 'echo ready; while read -r x; do echo 1; done'",
+        &[],
+        &["sample 0", "\"ready\""],
+    );
+    // The same loop keeping the protocol, numbered too, runs to its report.
+    for extra in [&[][..], &["--program-echo-index"][..]] {
+        let o = exactcheck(
+            &program_args(&echo(1, !extra.is_empty(), ""), extra)
+                .iter()
+                .map(String::as_str)
+                .collect::<Vec<_>>(),
+        );
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        assert!(String::from_utf8_lossy(&o.stdout).contains("100 compared"));
+    }
+}
+
+/// Whether process `pid` is gone: no such process, or a zombie (killed, waiting to be reaped by
+/// whichever process adopted it).
+#[cfg(target_os = "linux")]
+fn dead(pid: u32) -> bool {
+    match std::fs::read_to_string(format!("/proc/{pid}/stat")) {
+        Err(_) => true,
+        Ok(stat) => stat
+            .rsplit_once(") ")
+            .is_some_and(|(_, rest)| rest.starts_with('Z') || rest.starts_with('X')),
+    }
+}
+
+/// Waits up to 20 s for a file to hold a pid.
+#[cfg(target_os = "linux")]
+fn read_pid(path: &std::path::Path) -> u32 {
+    let t = std::time::Instant::now();
+    loop {
+        if let Ok(Ok(pid)) = std::fs::read_to_string(path).map(|t| t.trim().parse()) {
+            return pid;
+        }
+        assert!(t.elapsed().as_secs() < 20, "no pid in {path:?}");
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+}
+
+/// Waits up to 5 s for `pid` to be gone.
+#[cfg(target_os = "linux")]
+fn assert_dies(pid: u32, what: &str) {
+    let t = std::time::Instant::now();
+    while !dead(pid) && t.elapsed().as_secs() < 5 {
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    assert!(
+        dead(pid),
+        "{what}: the program's child {pid} outlived exactcheck"
+    );
+}
+
+/// A program that starts `sleep 1000` (its pid written to `pid_file`) and never answers.
+#[cfg(target_os = "linux")]
+fn hanging_parent(pid_file: &std::path::Path) -> String {
+    let _ = std::fs::remove_file(pid_file);
+    format!(
+        "sh -c 'sleep 1000 & echo $! > \"{}\"; while read -r x; do :; done'",
+        pid_file.display()
+    )
+}
+
+/// exactcheck's `--timeout` and SIGTERM end it with the program's whole process group.
+#[cfg(target_os = "linux")]
+#[test]
+fn timeout_and_sigterm_stop_what_the_program_started() {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("program_group");
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let pid_file = dir.join("sleep.pid");
+    let cmd = hanging_parent(&pid_file);
+    let mut args = vec!["--timeout".to_string(), "2".into()];
+    args.extend(program_args(&cmd, &["--program-timeout", "600"]));
+    let args: Vec<&str> = args.iter().map(String::as_str).collect();
+    refused(&args, &["did not finish within --timeout 2 s"]);
+    assert_dies(read_pid(&pid_file), "--timeout");
+
+    let args = program_args(&hanging_parent(&pid_file), &["--program-timeout", "600"]);
+    let mut child = Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+        .args(&args)
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .expect("the binary runs");
+    let grandchild = read_pid(&pid_file);
+    // SAFETY: `kill` takes plain integers.
+    unsafe {
+        libc::kill(child.id() as i32, libc::SIGTERM);
+    }
+    let status = child.wait().expect("exactcheck ends");
+    use std::os::unix::process::ExitStatusExt;
+    assert_eq!(status.signal(), Some(libc::SIGTERM), "{status:?}");
+    assert_dies(grandchild, "SIGTERM");
 }
 
 #[test]

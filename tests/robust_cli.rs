@@ -625,3 +625,53 @@ fn a_timeout_leaves_no_partial_text_report() {
         _ => panic!("{o:?}"),
     }
 }
+
+/// `RAYON_NUM_THREADS=100000` used to start (or try to start) 100,000 threads, for minutes; it is
+/// past the `threads` limit now, refused with one line before any thread starts.
+#[test]
+fn a_huge_rayon_num_threads_is_refused_with_one_line() {
+    let o = bin()
+        .args(["regress", "--formula", "x*x", "--samples", "10", "--quiet"])
+        .env("RAYON_NUM_THREADS", "100000")
+        .output()
+        .expect("run exactcheck");
+    let e = one_error_line(&o);
+    assert_eq!(
+        e,
+        "exactcheck: error: worker threads (RAYON_NUM_THREADS) exceeds the limit threads = 1024 (found 100000; raise it with --limit threads=N)"
+    );
+    assert!(o.stdout.is_empty());
+}
+
+/// When the system refuses rayon's worker threads, the command runs on one thread with one
+/// warning line, instead of panicking ("The global thread pool has not been initialized") or
+/// refusing. The threads are refused here by an address-space limit (`ulimit -v`, which binds
+/// root too, unlike `ulimit -u`): eight workers of a gigabyte of stack each at the largest depth
+/// limit do not fit in 3 GB.
+#[cfg(target_os = "linux")]
+#[test]
+fn a_thread_pool_that_cannot_start_falls_back_to_one_thread() {
+    let exe = env!("CARGO_BIN_EXE_exactcheck");
+    let depth = format!("depth={}", exactcheck::cli::MAX_DEPTH);
+    let script = format!(
+        "ulimit -v 3000000 && exec \"{exe}\" --limit {depth} regress --formula 'x*x' --samples 600 --quiet"
+    );
+    let o = Command::new("sh")
+        .args(["-c", &script])
+        .env("RAYON_NUM_THREADS", "8")
+        .output()
+        .expect("run sh");
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success(), "{err}");
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        err.starts_with("exactcheck: warning: cannot start 8 worker threads (")
+            && err.ends_with("); running on one thread\n"),
+        "{err}"
+    );
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(out.contains("600 compared"), "{out}");
+    // The same run with threads it can start prints the same report.
+    let o = exactcheck(&["regress", "--formula", "x*x", "--samples", "600", "--quiet"]);
+    assert_eq!(String::from_utf8_lossy(&o.stdout), out);
+}

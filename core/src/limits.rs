@@ -203,6 +203,9 @@ limits! {
     POINTS = ("points", "number of interpolation points", "", 30);
     /// Heap memory of the whole process, in MB (enforced by the command-line tool's allocator).
     MEMORY = ("memory", "memory in use", "MB", 1_536);
+    /// Worker threads of the parallel pool (`RAYON_NUM_THREADS` asks for a number; each thread
+    /// reserves a stack).
+    THREADS = ("threads", "worker threads (RAYON_NUM_THREADS)", "", 1_024);
 }
 
 /// The limit called `name`.

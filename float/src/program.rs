@@ -24,7 +24,26 @@
 //!   sitting in the program's buffer is never seen (the run then stops at the timeout). It must
 //!   answer each line as it comes, not after reading all of stdin (stdin stays open for the whole
 //!   run). Every stdout line is an answer, so diagnostics go to stderr.
-//! * At the end exactcheck closes stdin and stops the program.
+//! * The program answers **exactly once** per input line, in order, and prints nothing else: a
+//!   banner, an answer printed twice, or a line after the last answer is a protocol error (the
+//!   run stops with one line naming what happened; no accuracy figure is reported). So is closing
+//!   stdin while samples are still being sent.
+//! * At the end exactcheck closes stdin; the program then exits with status 0 without printing
+//!   more. A non-zero exit status (or a signal) after the last answer is a protocol error; a
+//!   program still running after the timeout is stopped.
+//! * Numbered protocol ([`ProgramRunner::echo_index`], `--program-echo-index`): each input line
+//!   starts with the sample index and a space (`17 [0.5, 1e-300]`), and the program starts its
+//!   answer with the same index (`17 0.25`). An answer to another sample than the one expected is
+//!   then caught at once, where the plain protocol notices a duplicated line only by the extra
+//!   line it leaves.
+//!
+//! # The program's processes
+//! On Unix the program runs in a process group of its own, and exactcheck stops the whole group
+//! (the program and whatever it started) when it stops the program: after an error or a timeout,
+//! at the end of the run, when exactcheck's `--timeout` or memory backstop ends the process
+//! ([`stop_all`]), and on `SIGINT`, `SIGTERM` or `SIGHUP` (a handler installed with the first
+//! program, where the signal's action is the default, stops the groups and then ends exactcheck
+//! as the signal would have).
 //!
 //! # Streaming
 //! [`ProgramRunner::eval_batch`] pipelines: a writer thread feeds stdin while a reader thread
@@ -187,6 +206,46 @@ pub enum ProgramError {
         /// The operating system's reason.
         reason: String,
     },
+    /// The program printed a line where no answer was due: after its answer to the last sample
+    /// sent (a banner, an answer printed twice, trailing output).
+    Extra {
+        /// The command as given.
+        command: String,
+        /// The last sample answered (`None`: before any).
+        after: Option<usize>,
+        /// The line (cut at 1 MiB).
+        line: String,
+    },
+    /// The program closed its standard input while samples were still to be sent to it.
+    ClosedStdin {
+        /// The command as given.
+        command: String,
+        /// The first sample it could not have read.
+        index: usize,
+        /// Its inputs.
+        inputs: Vec<f64>,
+    },
+    /// After its last answer, once its stdin was closed, the program exited with a non-zero
+    /// status or was killed by a signal.
+    ExitedAfter {
+        /// The command as given.
+        command: String,
+        /// `exit status N` or `killed by signal N (SIGNAME)`.
+        status: String,
+        /// The last non-empty line the program wrote to stderr, if any.
+        stderr: Option<String>,
+    },
+    /// In the numbered protocol, an answer that does not start with the expected sample index.
+    WrongIndex {
+        /// The command as given.
+        command: String,
+        /// The sample expected.
+        index: usize,
+        /// Its inputs.
+        inputs: Vec<f64>,
+        /// The answer line (cut at 1 MiB).
+        line: String,
+    },
     /// An earlier error stopped the program; the runner takes no more samples.
     Stopped {
         /// The command as given.
@@ -205,7 +264,9 @@ impl ProgramError {
             | ProgramError::Timeout { index, .. }
             | ProgramError::NotNumbers { index, .. }
             | ProgramError::Count { index, .. }
-            | ProgramError::Io { index, .. } => Some(*index),
+            | ProgramError::Io { index, .. }
+            | ProgramError::ClosedStdin { index, .. }
+            | ProgramError::WrongIndex { index, .. } => Some(*index),
             _ => None,
         }
     }
@@ -335,6 +396,56 @@ impl fmt::Display for ProgramError {
                 quote(command),
                 show_inputs(inputs)
             ),
+            ProgramError::Extra {
+                command,
+                after,
+                line,
+            } => write!(
+                f,
+                "program {} printed a line {} (protocol error: one answer line per input line, \
+                 nothing else on stdout): {}",
+                quote(command),
+                match after {
+                    Some(i) => format!("after its answer to sample {i}, the last one sent"),
+                    None => "before any sample was sent".to_string(),
+                },
+                quote(line)
+            ),
+            ProgramError::ClosedStdin {
+                command,
+                index,
+                inputs,
+            } => write!(
+                f,
+                "program {} closed its standard input before reading sample {index} {} \
+                 (protocol error: it must read every line)",
+                quote(command),
+                show_inputs(inputs)
+            ),
+            ProgramError::ExitedAfter {
+                command,
+                status,
+                stderr,
+            } => write!(
+                f,
+                "program {} ended with {status} after its last answer (protocol error: it must \
+                 exit with status 0 when its input ends){}",
+                quote(command),
+                stderr_suffix(stderr)
+            ),
+            ProgramError::WrongIndex {
+                command,
+                index,
+                inputs,
+                line,
+            } => write!(
+                f,
+                "answer of program {} to sample {index} {} does not start with the index {index} \
+                 (protocol error; --program-echo-index): {}",
+                quote(command),
+                show_inputs(inputs),
+                quote(line)
+            ),
             ProgramError::Stopped { command, first } => write!(
                 f,
                 "program {} was stopped by an earlier error: {first}",
@@ -404,11 +515,14 @@ pub fn parse_answer(line: &str) -> Result<Vec<f64>, String> {
         .collect()
 }
 
-/// What the reader thread sends: a line of stdout (and whether it was cut), or a read error.
-/// The channel closing means end of file.
+/// What the reader and writer threads send: a line of stdout, a read error, the end of stdout,
+/// or that writing to stdin failed after `written` complete lines (the program closed it, or
+/// exited).
 enum Event {
     Line(String),
     Failed(String),
+    Eof,
+    StdinClosed { written: usize },
 }
 
 /// The last [`STDERR_TAIL`] bytes of the program's stderr.
@@ -514,9 +628,21 @@ pub struct ProgramRunner {
     outputs: usize,
     timeout: Duration,
     child: Child,
-    /// Chunks of input lines for the writer thread; `None` once the runner has stopped.
-    to_stdin: Option<Sender<Vec<u8>>>,
+    /// Chunks of input lines (and how many lines each holds) for the writer thread; `None` once
+    /// stdin is closed.
+    to_stdin: Option<Sender<(Vec<u8>, usize)>>,
     answers: Receiver<Event>,
+    /// Whether input lines carry the sample index, to be echoed ([`ProgramRunner::echo_index`]).
+    numbered: bool,
+    /// Input lines queued for the program, and answers read, over the runner's life.
+    sent: usize,
+    answered: usize,
+    /// The sample label of the last answer read.
+    last_index: Option<usize>,
+    /// How many complete lines reached stdin before writing to it failed.
+    stdin_closed: Option<usize>,
+    /// Whether stdout has ended.
+    eof: bool,
     stderr: Arc<Mutex<Tail>>,
     stderr_done: Receiver<()>,
     /// The message of the error that stopped the program.
@@ -565,16 +691,23 @@ impl ProgramRunner {
         if timeout.is_zero() {
             return Err(setup("the timeout must be positive"));
         }
-        let mut child = Command::new(program)
-            .args(args)
+        let mut cmd = Command::new(program);
+        cmd.args(args)
             .stdin(Stdio::piped())
             .stdout(Stdio::piped())
-            .stderr(Stdio::piped())
-            .spawn()
-            .map_err(|e| ProgramError::Start {
-                command: command.to_string(),
-                reason: e.to_string(),
-            })?;
+            .stderr(Stdio::piped());
+        #[cfg(unix)]
+        {
+            use std::os::unix::process::CommandExt;
+            groups::install_signal_handlers();
+            cmd.process_group(0);
+        }
+        let mut child = cmd.spawn().map_err(|e| ProgramError::Start {
+            command: command.to_string(),
+            reason: e.to_string(),
+        })?;
+        #[cfg(unix)]
+        groups::register(child.id());
         let stdin = child.stdin.take().expect("stdin was configured as a pipe");
         let stdout = child
             .stdout
@@ -585,33 +718,28 @@ impl ProgramRunner {
             .take()
             .expect("stderr was configured as a pipe");
 
-        let (to_stdin, chunks) = mpsc::channel::<Vec<u8>>();
-        thread::spawn(move || write_chunks(stdin, chunks));
-
         let (events, answers) = mpsc::channel();
-        thread::spawn(move || {
-            let mut r = BufReader::with_capacity(1 << 16, stdout);
-            loop {
-                match read_capped_line(&mut r) {
-                    Ok(Some(line)) => {
-                        if events.send(Event::Line(line)).is_err() {
-                            return;
-                        }
-                    }
-                    Ok(None) => return,
-                    Err(e) => {
-                        let _ = events.send(Event::Failed(e.to_string()));
-                        return;
-                    }
-                }
-            }
-        });
-
+        let (to_stdin, chunks) = mpsc::channel::<(Vec<u8>, usize)>();
         let tail = Arc::new(Mutex::new(Tail::default()));
         let (done, stderr_done) = mpsc::channel();
-        {
+        let started = {
+            let to_events = events.clone();
             let tail = Arc::clone(&tail);
-            thread::spawn(move || drain_stderr(stderr, &tail, &done));
+            helper("writer", move || write_chunks(stdin, chunks, &to_events))
+                .and_then(|()| helper("reader", move || read_lines(stdout, &events)))
+                .and_then(|()| helper("stderr", move || drain_stderr(stderr, &tail, &done)))
+        };
+        if let Err(e) = started {
+            #[cfg(unix)]
+            groups::kill(child.id());
+            let _ = child.kill();
+            let _ = child.wait();
+            #[cfg(unix)]
+            groups::unregister(child.id());
+            return Err(ProgramError::Start {
+                command: command.to_string(),
+                reason: format!("cannot start a thread to talk to it: {e}"),
+            });
         }
 
         Ok(ProgramRunner {
@@ -622,6 +750,12 @@ impl ProgramRunner {
             child,
             to_stdin: Some(to_stdin),
             answers,
+            numbered: false,
+            sent: 0,
+            answered: 0,
+            last_index: None,
+            stdin_closed: None,
+            eof: false,
             stderr: tail,
             stderr_done,
             failed: None,
@@ -641,6 +775,15 @@ impl ProgramRunner {
     /// The number of outputs of an answer.
     pub fn outputs(&self) -> usize {
         self.outputs
+    }
+
+    /// Switches to the numbered protocol (see the module documentation): each input line starts
+    /// with the sample index, and each answer must start with it too. Call before the first
+    /// sample.
+    #[must_use]
+    pub fn echo_index(mut self) -> ProgramRunner {
+        self.numbered = true;
+        self
     }
 
     /// The program's answers to `inputs`, sample `k` of which is labelled `first_index + k` in
@@ -692,75 +835,241 @@ impl ProgramRunner {
         while out.len() < n {
             while sent < n && sent - out.len() < WINDOW {
                 let end = n.min(sent + CHUNK).min(out.len() + WINDOW);
-                let mut chunk = String::with_capacity((end - sent) * (4 + 24 * self.arity));
-                for x in &inputs[sent..end] {
+                let mut chunk = String::with_capacity((end - sent) * (24 + 24 * self.arity));
+                for (k, x) in inputs[sent..end].iter().enumerate() {
+                    if self.numbered {
+                        let _ = write!(chunk, "{} ", first_index + sent + k);
+                    }
                     push_line(&mut chunk, x.as_ref());
                 }
-                // A closed channel means the writer met a broken pipe: the program has exited,
-                // which the answers' end of file reports with its exit status below.
+                // A closed channel means the writer met a broken pipe, which it has reported
+                // on the answers' channel (the receiving below names it).
                 if let Some(tx) = &self.to_stdin {
-                    let _ = tx.send(chunk.into_bytes());
+                    let _ = tx.send((chunk.into_bytes(), end - sent));
                 }
+                self.sent += end - sent;
                 sent = end;
             }
             let k = out.len();
             match self.receive(first_index + k, inputs[k].as_ref()) {
-                Ok(y) => out.push(y),
-                Err(e) => {
-                    self.failed = Some(e.to_string());
-                    self.stop();
-                    return Err(e);
+                Ok(y) => {
+                    out.push(y);
+                    self.answered += 1;
+                    self.last_index = Some(first_index + k);
                 }
+                Err(e) => return Err(self.fail(e)),
             }
+        }
+        // Every line sent is answered: a line already waiting is one too many.
+        if let Err(e) = self.no_pending_line() {
+            return Err(self.fail(e));
         }
         Ok(out)
     }
 
+    /// Records the error that stops the program, and stops it.
+    fn fail(&mut self, e: ProgramError) -> ProgramError {
+        self.failed = Some(e.to_string());
+        self.stop();
+        e
+    }
+
+    /// Takes what the threads have sent without waiting: an error for a line (no answer is due),
+    /// and notes of the end of stdout or of a closed stdin.
+    fn no_pending_line(&mut self) -> Result<(), ProgramError> {
+        loop {
+            match self.answers.try_recv() {
+                Ok(Event::Line(line)) => {
+                    return Err(ProgramError::Extra {
+                        command: self.command.clone(),
+                        after: self.last_index,
+                        line,
+                    })
+                }
+                Ok(Event::StdinClosed { written }) => self.stdin_closed = Some(written),
+                Ok(Event::Eof) | Err(mpsc::TryRecvError::Disconnected) => {
+                    self.eof = true;
+                    return Ok(());
+                }
+                Ok(Event::Failed(_)) | Err(mpsc::TryRecvError::Empty) => return Ok(()),
+            }
+        }
+    }
+
+    /// Ends the run: closes stdin, waits at most the timeout for stdout to end and the program
+    /// to exit, and stops its process group. The program has kept the protocol if it printed
+    /// nothing more and exited with status 0 (or was still running at the timeout).
+    ///
+    /// # Errors
+    /// [`ProgramError::Extra`] for a line printed after the last answer,
+    /// [`ProgramError::ExitedAfter`] for a non-zero exit status or a signal, or the error that
+    /// stopped the program earlier ([`ProgramError::Stopped`]).
+    pub fn finish(&mut self) -> Result<(), ProgramError> {
+        if let Some(first) = &self.failed {
+            return Err(ProgramError::Stopped {
+                command: self.command.clone(),
+                first: first.clone(),
+            });
+        }
+        self.to_stdin = None;
+        let deadline = Instant::now() + self.timeout;
+        while !self.eof {
+            let left = deadline.saturating_duration_since(Instant::now());
+            match self.answers.recv_timeout(left) {
+                Ok(Event::Line(line)) => {
+                    let e = ProgramError::Extra {
+                        command: self.command.clone(),
+                        after: self.last_index,
+                        line,
+                    };
+                    return Err(self.fail(e));
+                }
+                Ok(Event::Eof) | Err(RecvTimeoutError::Disconnected) => self.eof = true,
+                Ok(Event::StdinClosed { .. } | Event::Failed(_)) => {}
+                // Still running with stdout open after the timeout: nothing more was printed.
+                Err(RecvTimeoutError::Timeout) => break,
+            }
+        }
+        let mut pause = Duration::from_millis(1);
+        let status = loop {
+            match self.child.try_wait() {
+                Ok(Some(status)) => break Some(status),
+                Ok(None) if Instant::now() < deadline => {
+                    thread::sleep(pause);
+                    pause = (pause * 2).min(Duration::from_millis(50));
+                }
+                _ => break None,
+            }
+        };
+        let error = status
+            .filter(|s| !s.success())
+            .map(|s| ProgramError::ExitedAfter {
+                command: self.command.clone(),
+                status: describe_status(s),
+                stderr: self.last_stderr_line(),
+            });
+        self.failed = Some(match &error {
+            Some(e) => e.to_string(),
+            None => "the run had ended".into(),
+        });
+        self.stop();
+        error.map_or(Ok(()), Err)
+    }
+
     /// Waits for the next answer line and reads it as the answer to sample `index`.
     fn receive(&mut self, index: usize, x: &[f64]) -> Result<Vec<f64>, ProgramError> {
-        match self.answers.recv_timeout(self.timeout) {
-            Ok(Event::Line(line)) => match parse_answer(&line) {
-                Ok(y) if y.len() == self.outputs => Ok(y),
-                Ok(y) => Err(ProgramError::Count {
+        loop {
+            if self
+                .stdin_closed
+                .is_some_and(|written| self.answered >= written)
+            {
+                // This sample's line never reached the program: it closed stdin, or exited.
+                return Err(self.closed_stdin(index, x));
+            }
+            match self.answers.recv_timeout(self.timeout) {
+                Ok(Event::StdinClosed { written }) => self.stdin_closed = Some(written),
+                Ok(Event::Line(line)) if self.numbered => {
+                    let rest = line
+                        .trim_start()
+                        .strip_prefix(&index.to_string())
+                        .filter(|r| r.starts_with(char::is_whitespace));
+                    return match rest {
+                        Some(rest) => self.read_answer(index, x, rest.to_string()),
+                        None => Err(ProgramError::WrongIndex {
+                            command: self.command.clone(),
+                            index,
+                            inputs: x.to_vec(),
+                            line,
+                        }),
+                    };
+                }
+                Ok(Event::Line(line)) => return self.read_answer(index, x, line),
+                other => return Err(self.no_answer(index, x, other)),
+            }
+        }
+    }
+
+    /// Sample `index` could not be sent: how the program ended, if it did (a crash is named as
+    /// one), else that it closed stdin.
+    fn closed_stdin(&mut self, index: usize, x: &[f64]) -> ProgramError {
+        let deadline = Instant::now() + STDERR_GRACE;
+        while Instant::now() < deadline {
+            if let Ok(Some(status)) = self.child.try_wait() {
+                return ProgramError::Exited {
                     command: self.command.clone(),
                     index,
                     inputs: x.to_vec(),
-                    got: y.len(),
-                    expected: self.outputs,
-                }),
-                Err(reason) => Err(ProgramError::NotNumbers {
-                    command: self.command.clone(),
-                    index,
-                    inputs: x.to_vec(),
-                    line,
-                    reason,
-                }),
-            },
-            Ok(Event::Failed(reason)) => Err(ProgramError::Io {
+                    status: describe_status(status),
+                    stderr: self.last_stderr_line(),
+                };
+            }
+            thread::sleep(Duration::from_millis(5));
+        }
+        ProgramError::ClosedStdin {
+            command: self.command.clone(),
+            index,
+            inputs: x.to_vec(),
+        }
+    }
+
+    /// Reads `line` as the answer to sample `index`.
+    fn read_answer(&self, index: usize, x: &[f64], line: String) -> Result<Vec<f64>, ProgramError> {
+        match parse_answer(&line) {
+            Ok(y) if y.len() == self.outputs => Ok(y),
+            Ok(y) => Err(ProgramError::Count {
+                command: self.command.clone(),
+                index,
+                inputs: x.to_vec(),
+                got: y.len(),
+                expected: self.outputs,
+            }),
+            Err(reason) => Err(ProgramError::NotNumbers {
+                command: self.command.clone(),
+                index,
+                inputs: x.to_vec(),
+                line,
+                reason,
+            }),
+        }
+    }
+
+    /// The error for sample `index` when something other than an answer line came.
+    fn no_answer(
+        &mut self,
+        index: usize,
+        x: &[f64],
+        event: Result<Event, RecvTimeoutError>,
+    ) -> ProgramError {
+        match event {
+            Ok(Event::Line(_) | Event::StdinClosed { .. }) => {
+                unreachable!("answer lines and a closed stdin are handled by the caller")
+            }
+            Ok(Event::Failed(reason)) => ProgramError::Io {
                 command: self.command.clone(),
                 index,
                 inputs: x.to_vec(),
                 reason,
-            }),
+            },
             Err(RecvTimeoutError::Timeout) => {
                 self.stop();
-                Err(ProgramError::Timeout {
+                ProgramError::Timeout {
                     command: self.command.clone(),
                     index,
                     inputs: x.to_vec(),
                     timeout: self.timeout,
                     stderr: self.last_stderr_line(),
-                })
+                }
             }
-            Err(RecvTimeoutError::Disconnected) => {
+            Ok(Event::Eof) | Err(RecvTimeoutError::Disconnected) => {
+                self.eof = true;
                 let status = self.status_after_eof();
-                Err(ProgramError::Exited {
+                ProgramError::Exited {
                     command: self.command.clone(),
                     index,
                     inputs: x.to_vec(),
                     status,
                     stderr: self.last_stderr_line(),
-                })
+                }
             }
         }
     }
@@ -796,13 +1105,119 @@ impl ProgramRunner {
             .last_line()
     }
 
-    /// Closes stdin, kills the program and reaps it.
+    /// Closes stdin, kills the program (on Unix its whole process group) and reaps it.
     fn stop(&mut self) {
         self.to_stdin = None;
+        #[cfg(unix)]
+        groups::kill(self.child.id());
         // `kill` fails only when the process has already been reaped; `wait` then returns the
         // status it already has. Neither failure leaves anything to clean up.
         let _ = self.child.kill();
         let _ = self.child.wait();
+        #[cfg(unix)]
+        groups::unregister(self.child.id());
+    }
+}
+
+/// Kills the process groups of every program running as a float side, allocating nothing and
+/// taking no lock (safe in a signal handler, and where the process is about to `_exit`).
+pub fn stop_all() {
+    #[cfg(unix)]
+    groups::kill_all();
+}
+
+/// The process groups of the running programs, for [`stop_all`] and the signal handler.
+#[cfg(unix)]
+mod groups {
+    use std::sync::atomic::{AtomicI32, Ordering};
+    use std::sync::Once;
+
+    /// Room for this many programs running at once; a group that finds no slot is still
+    /// stopped with its runner, only not by [`kill_all`].
+    const SLOTS: usize = 64;
+
+    /// Process group ids (the programs' pids) in use; 0 marks a free slot.
+    static LIVE: [AtomicI32; SLOTS] = [const { AtomicI32::new(0) }; SLOTS];
+
+    fn pgid(pid: u32) -> i32 {
+        i32::try_from(pid).unwrap_or(0)
+    }
+
+    pub(super) fn register(pid: u32) {
+        let g = pgid(pid);
+        for slot in &LIVE {
+            if slot
+                .compare_exchange(0, g, Ordering::SeqCst, Ordering::SeqCst)
+                .is_ok()
+            {
+                return;
+            }
+        }
+    }
+
+    pub(super) fn unregister(pid: u32) {
+        let g = pgid(pid);
+        for slot in &LIVE {
+            let _ = slot.compare_exchange(g, 0, Ordering::SeqCst, Ordering::SeqCst);
+        }
+    }
+
+    /// Kills the group led by `pid`.
+    pub(super) fn kill(pid: u32) {
+        let g = pgid(pid);
+        if g > 0 {
+            // SAFETY: `kill` takes plain integers; a group that is gone gives ESRCH, harmless.
+            unsafe {
+                libc::kill(-g, libc::SIGKILL);
+            }
+        }
+    }
+
+    pub(super) fn kill_all() {
+        for slot in &LIVE {
+            let g = slot.load(Ordering::SeqCst);
+            if g > 0 {
+                // SAFETY: as in `kill`; `kill` is async-signal-safe.
+                unsafe {
+                    libc::kill(-g, libc::SIGKILL);
+                }
+            }
+        }
+    }
+
+    extern "C" fn on_signal(sig: libc::c_int) {
+        kill_all();
+        // SAFETY: `signal` and `raise` are async-signal-safe; with the default action restored,
+        // the signal ends the process as it would have without the handler.
+        unsafe {
+            libc::signal(sig, libc::SIG_DFL);
+            libc::raise(sig);
+        }
+    }
+
+    /// Installs [`on_signal`] for SIGINT, SIGTERM and SIGHUP where their action is the default
+    /// (an ignored signal stays ignored), once per process.
+    pub(super) fn install_signal_handlers() {
+        static ONCE: Once = Once::new();
+        ONCE.call_once(|| {
+            for sig in [libc::SIGINT, libc::SIGTERM, libc::SIGHUP] {
+                // SAFETY: `sigaction` reads and writes the structs given; a zeroed `sigaction`
+                // is a valid value (no flags, empty mask), then filled in.
+                unsafe {
+                    let mut old: libc::sigaction = std::mem::zeroed();
+                    if libc::sigaction(sig, std::ptr::null(), &mut old) != 0
+                        || old.sa_sigaction != libc::SIG_DFL
+                    {
+                        continue;
+                    }
+                    let mut new: libc::sigaction = std::mem::zeroed();
+                    new.sa_sigaction = on_signal as extern "C" fn(libc::c_int) as usize;
+                    libc::sigemptyset(&mut new.sa_mask);
+                    new.sa_flags = libc::SA_RESTART;
+                    libc::sigaction(sig, &new, std::ptr::null_mut());
+                }
+            }
+        });
     }
 }
 
@@ -813,15 +1228,50 @@ impl Drop for ProgramRunner {
 }
 
 /// The writer thread: copies chunks of input lines to the program's stdin until the runner
-/// hangs up or the pipe breaks (the program exited; the reader side reports it).
-fn write_chunks(mut stdin: ChildStdin, chunks: Receiver<Vec<u8>>) {
-    for chunk in chunks {
-        if stdin.write_all(&chunk).is_err() {
+/// hangs up, or the pipe breaks (the program closed stdin or exited), which it reports with the
+/// number of lines written whole before.
+fn write_chunks(mut stdin: ChildStdin, chunks: Receiver<(Vec<u8>, usize)>, events: &Sender<Event>) {
+    let mut written = 0;
+    for (chunk, lines) in chunks {
+        // ChildStdin is unbuffered: each chunk is already on its way; flush is for form.
+        if stdin
+            .write_all(&chunk)
+            .and_then(|()| stdin.flush())
+            .is_err()
+        {
+            let _ = events.send(Event::StdinClosed { written });
             return;
         }
-        // ChildStdin is unbuffered: each chunk is already on its way; flush is for form.
-        if stdin.flush().is_err() {
-            return;
+        written += lines;
+    }
+}
+
+/// Starts one of the threads that talk to the program.
+fn helper(name: &str, f: impl FnOnce() + Send + 'static) -> io::Result<()> {
+    thread::Builder::new()
+        .name(format!("program {name}"))
+        .spawn(f)
+        .map(drop)
+}
+
+/// The reader thread: sends each line of the program's stdout, then the end or a read error.
+fn read_lines(stdout: impl Read, events: &Sender<Event>) {
+    let mut r = BufReader::with_capacity(1 << 16, stdout);
+    loop {
+        match read_capped_line(&mut r) {
+            Ok(Some(line)) => {
+                if events.send(Event::Line(line)).is_err() {
+                    return;
+                }
+            }
+            Ok(None) => {
+                let _ = events.send(Event::Eof);
+                return;
+            }
+            Err(e) => {
+                let _ = events.send(Event::Failed(e.to_string()));
+                return;
+            }
         }
     }
 }

@@ -98,6 +98,9 @@ pub struct Summary {
 pub struct Report {
     /// The formula's name.
     pub formula: String,
+    /// What computed the float results ([`crate::Subject::float_side`]): shards of one sweep
+    /// share it, and `merge` refuses shards whose float sides differ.
+    pub float_side: String,
     /// The generator's description.
     pub generator: String,
     /// The number of inputs.

@@ -153,22 +153,69 @@ impl Distribution {
             .collect()
     }
 
+    /// The largest value (its bucket edge when collapsed); 0 when empty, as a sweep's maximum
+    /// starts at 0.
+    pub fn largest(&self) -> f64 {
+        self.counts
+            .last_key_value()
+            .map_or(0.0, |(&bits, _)| f64::from_bits(bits))
+    }
+
+    /// Whether `v` is the largest value: equal to it, or in its bucket when collapsed (the
+    /// maximum of the empty distribution is 0). False for a NaN or negative `v`.
+    pub fn largest_is(&self, v: f64) -> bool {
+        if v.is_nan() || v < 0.0 {
+            return false;
+        }
+        let bits = (v + 0.0).to_bits();
+        let key = if self.collapsed { bucket(bits) } else { bits };
+        key == self.largest().to_bits()
+    }
+
+    /// How many values are infinite.
+    pub fn infinite(&self) -> u64 {
+        self.counts
+            .get(&f64::INFINITY.to_bits())
+            .copied()
+            .unwrap_or(0)
+    }
+
+    /// Bounds on how many values exceed `t`: exact (both equal) unless collapsed, where the
+    /// values of the bucket holding `t` may lie on either side of it.
+    pub fn count_above(&self, t: f64) -> (u64, u64) {
+        let (mut surely, mut maybe) = (0u64, 0u64);
+        for (&bits, &n) in &self.counts {
+            let v = f64::from_bits(bits);
+            if v > t {
+                surely += n;
+            } else if self.collapsed && t >= 0.0 && bucket((t + 0.0).to_bits()) == bits {
+                maybe += n;
+            }
+        }
+        (surely, surely + maybe)
+    }
+
     /// Rebuilds a distribution from [`Distribution::entries`] and [`Distribution::is_collapsed`].
     ///
     /// # Errors
-    /// A value that is NaN or negative, a zero count, or a collapsed summary with a value that
-    /// is not a bucket edge (not something this module wrote).
+    /// A value that is NaN or negative, a zero count, counts whose total exceeds `u64::MAX`, or
+    /// a collapsed summary with a value that is not a bucket edge (not something this module
+    /// wrote).
     pub fn from_entries(collapsed: bool, entries: &[(f64, u64)]) -> Result<Distribution, String> {
         let mut d = Distribution {
             collapsed,
             counts: BTreeMap::new(),
         };
+        let mut total = 0u64;
         for &(v, n) in entries {
             if v.is_nan() || v < 0.0 || n == 0 {
                 return Err(format!(
                     "summary entry ({v}, {n}) is not a value with a count"
                 ));
             }
+            total = total
+                .checked_add(n)
+                .ok_or_else(|| format!("summary counts add up to more than {}", u64::MAX))?;
             let bits = (v + 0.0).to_bits();
             if collapsed && bucket(bits) != bits {
                 return Err(format!("collapsed summary value {v} is not a bucket edge"));
@@ -225,6 +272,13 @@ impl BitsSum {
     pub fn merge(&mut self, other: &BitsSum) {
         self.units += other.units;
         self.count += other.count;
+    }
+
+    /// Whether every value summed can have been at most `max_bits` (each was rounded to a
+    /// multiple of `2^-40` alone, so the sum is at most `count` times the rounded maximum).
+    pub fn within(&self, max_bits: f64) -> bool {
+        let top = (max_bits.clamp(0.0, 64.0) * Self::SCALE).round() as u128;
+        self.units <= top * u128::from(self.count)
     }
 
     /// The mean (0 when empty).
@@ -298,6 +352,31 @@ mod tests {
         assert!((m - 50001.0).abs() / 50001.0 < 1.0 / 256.0, "{m}");
         assert!(Distribution::from_entries(true, &[(1.1, 1)]).is_err());
         assert!(Distribution::from_entries(false, &[(f64::NAN, 1)]).is_err());
+    }
+
+    /// What a shard's consistency check reads from a summary, and counts that cannot add up.
+    #[test]
+    fn largest_infinite_and_counts_above() {
+        let mut d = Distribution::new();
+        assert!(d.largest_is(0.0) && !d.largest_is(f64::NAN));
+        for v in [0.5, 3.0, f64::INFINITY, 3.0] {
+            d.push(v);
+        }
+        assert!(d.largest_is(f64::INFINITY) && !d.largest_is(3.0));
+        assert_eq!(d.infinite(), 1);
+        assert_eq!(d.count_above(1.0), (3, 3));
+        assert_eq!(d.count_above(3.0), (1, 1));
+        let c = Distribution::from_entries(true, &[(1.0, 2), (2.0, 5)]).unwrap();
+        // 2.0 is a bucket edge: values in [2, 2 + 2^-7) may lie on either side of 2.001.
+        assert_eq!(c.count_above(2.001), (0, 5));
+        assert_eq!(c.count_above(1.5), (5, 5));
+        assert!(c.largest_is(2.001) && !c.largest_is(2.1));
+        let e = Distribution::from_entries(false, &[(1.0, u64::MAX), (2.0, 1)]).unwrap_err();
+        assert!(e.contains("add up to more than"), "{e}");
+        let mut b = BitsSum::default();
+        b.push(3.0);
+        b.push(5.0);
+        assert!(b.within(5.0) && !b.within(3.9));
     }
 
     #[test]

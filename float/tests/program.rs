@@ -489,3 +489,197 @@ fn c_program_throughput_through_eval_batch() {
         n as f64 / secs
     );
 }
+
+/// `sh -c SCRIPT` as a command line (the scripts hold no `'`).
+fn sh(script: &str) -> String {
+    assert!(!script.contains('\''));
+    format!("sh -c '{script}'")
+}
+
+/// A shell loop answering each input line `[x]` (or `INDEX [x]` in the numbered protocol) with
+/// `x` (`INDEX x`), `times` times; `after` runs once stdin has ended.
+fn echo_program(times: usize, numbered: bool, after: &str) -> String {
+    let answer = if numbered {
+        "echo \"$i $x\"; "
+    } else {
+        "echo \"$x\"; "
+    };
+    let read = if numbered { "read -r i x" } else { "read -r x" };
+    sh(&format!(
+        "while {read}; do x=${{x#[}}; x=${{x%]}}; {}done; {after}",
+        answer.repeat(times)
+    ))
+}
+
+fn samples(n: usize) -> Vec<Vec<f64>> {
+    (0..n).map(|i| vec![f64::from(i as u32) + 0.5]).collect()
+}
+
+/// The batch and then the end of the run, as the harness does them: the first error.
+fn run_to_the_end(
+    p: &mut ProgramRunner,
+    inputs: &[Vec<f64>],
+) -> Result<Vec<Vec<f64>>, ProgramError> {
+    let out = p.eval_batch(0, inputs)?;
+    p.finish()?;
+    Ok(out)
+}
+
+#[test]
+fn a_program_keeping_the_protocol_ends_cleanly() {
+    for numbered in [false, true] {
+        let mut p = ProgramRunner::spawn(&echo_program(1, numbered, ""), 1, 1, PATIENT).unwrap();
+        if numbered {
+            p = p.echo_index();
+        }
+        let inputs = samples(300);
+        assert_eq!(run_to_the_end(&mut p, &inputs).unwrap(), inputs);
+        // Once finished, the runner takes no more samples.
+        let e = p.eval_one(300, &[1.0]).unwrap_err();
+        assert!(matches!(e, ProgramError::Stopped { .. }), "{e}");
+    }
+}
+
+#[test]
+fn each_answer_printed_twice_is_a_protocol_error() {
+    let mut p = ProgramRunner::spawn(&echo_program(2, false, ""), 1, 1, PATIENT).unwrap();
+    let e = run_to_the_end(&mut p, &samples(5)).unwrap_err();
+    let s = one_line(&e);
+    assert!(matches!(e, ProgramError::Extra { .. }), "{s}");
+    assert!(s.contains("protocol error"), "{s}");
+    // Numbered: the duplicate is caught at the very next sample.
+    let mut p = ProgramRunner::spawn(&echo_program(2, true, ""), 1, 1, PATIENT)
+        .unwrap()
+        .echo_index();
+    let e = run_to_the_end(&mut p, &samples(5)).unwrap_err();
+    let s = one_line(&e);
+    assert!(
+        matches!(e, ProgramError::WrongIndex { index: 1, .. }),
+        "{s}"
+    );
+    assert!(
+        s.contains("sample 1 [1.5] does not start with the index 1") && s.contains("\"0 0.5\""),
+        "{s}"
+    );
+}
+
+#[test]
+fn a_banner_line_is_a_protocol_error() {
+    // A banner that is not a number is not an answer.
+    let cmd = sh("echo ready; while read -r x; do echo 1; done");
+    let mut p = ProgramRunner::spawn(&cmd, 1, 1, PATIENT).unwrap();
+    let s = one_line(&run_to_the_end(&mut p, &samples(3)).unwrap_err());
+    assert!(
+        s.contains("sample 0 [0.5]") && s.contains("\"ready\""),
+        "{s}"
+    );
+    // A banner that reads as a number shifts every answer by one: the last one is left over.
+    let cmd = sh("echo 2.5; while read -r x; do x=${x#[}; echo \"${x%]}\"; done");
+    let mut p = ProgramRunner::spawn(&cmd, 1, 1, PATIENT).unwrap();
+    let e = run_to_the_end(&mut p, &samples(3)).unwrap_err();
+    let s = one_line(&e);
+    assert!(matches!(e, ProgramError::Extra { .. }), "{s}");
+    assert!(s.contains("\"2.5\""), "{s}");
+}
+
+#[test]
+fn a_line_after_the_last_answer_is_a_protocol_error() {
+    let mut p = ProgramRunner::spawn(&echo_program(1, false, "echo 0"), 1, 1, PATIENT).unwrap();
+    let e = run_to_the_end(&mut p, &samples(4)).unwrap_err();
+    let s = one_line(&e);
+    assert!(
+        s.contains("printed a line after its answer to sample 3, the last one sent"),
+        "{s}"
+    );
+    assert!(s.contains("protocol error") && s.ends_with("\"0\""), "{s}");
+}
+
+#[test]
+fn a_nonzero_exit_after_the_last_answer_is_a_protocol_error() {
+    let cmd = echo_program(1, false, "echo giving up >&2; exit 3");
+    let mut p = ProgramRunner::spawn(&cmd, 1, 1, PATIENT).unwrap();
+    let e = run_to_the_end(&mut p, &samples(4)).unwrap_err();
+    let s = one_line(&e);
+    assert!(matches!(e, ProgramError::ExitedAfter { .. }), "{s}");
+    assert!(
+        s.contains("ended with exit status 3 after its last answer (protocol error"),
+        "{s}"
+    );
+    assert!(s.contains("\"giving up\""), "{s}");
+    let cmd = echo_program(1, false, "kill -9 $$");
+    let mut p = ProgramRunner::spawn(&cmd, 1, 1, PATIENT).unwrap();
+    let s = one_line(&run_to_the_end(&mut p, &samples(2)).unwrap_err());
+    assert!(
+        s.contains("killed by signal 9 (SIGKILL) after its last answer"),
+        "{s}"
+    );
+}
+
+#[test]
+fn closing_stdin_while_answering_is_a_protocol_error() {
+    // Reads one line, closes stdin, and answers on without reading: answers to samples it never
+    // saw. More samples than fit in the pipe and the in-flight window, so some are written after
+    // the close.
+    let cmd = sh("read -r x; exec 0<&-; while :; do echo 1; done");
+    let mut p = ProgramRunner::spawn(&cmd, 1, 1, PATIENT).unwrap();
+    let e = run_to_the_end(&mut p, &samples(20_000)).unwrap_err();
+    let s = one_line(&e);
+    assert!(matches!(e, ProgramError::ClosedStdin { .. }), "{s}");
+    assert!(
+        s.contains("closed its standard input before reading sample"),
+        "{s}"
+    );
+}
+
+/// Whether process `pid` is gone: no such process, or a zombie (killed, waiting to be reaped by
+/// whichever process adopted it).
+#[cfg(target_os = "linux")]
+fn dead(pid: u32) -> bool {
+    match fs::read_to_string(format!("/proc/{pid}/stat")) {
+        Err(_) => true,
+        // The state follows the command name in parentheses.
+        Ok(stat) => stat
+            .rsplit_once(") ")
+            .is_some_and(|(_, rest)| rest.starts_with('Z') || rest.starts_with('X')),
+    }
+}
+
+/// Waits up to 20 s for a file to hold a pid.
+fn read_pid(path: &Path) -> u32 {
+    let t = Instant::now();
+    loop {
+        if let Ok(text) = fs::read_to_string(path) {
+            if let Ok(pid) = text.trim().parse() {
+                return pid;
+            }
+        }
+        assert!(t.elapsed() < Duration::from_secs(20), "no pid in {path:?}");
+        std::thread::sleep(Duration::from_millis(20));
+    }
+}
+
+#[cfg(target_os = "linux")]
+#[test]
+fn a_timeout_stops_the_program_and_what_it_started() {
+    let dir = scratch("grandchild");
+    let pid_file = dir.join("sleep.pid");
+    let _ = fs::remove_file(&pid_file);
+    let script = format!(
+        "sleep 1000 & echo $! > {}; while read -r x; do :; done",
+        q(&pid_file)
+    );
+    let script = script.replace('\'', "\"");
+    let mut p = ProgramRunner::spawn(&sh(&script), 1, 1, Duration::from_secs(1)).unwrap();
+    let grandchild = read_pid(&pid_file);
+    assert!(!dead(grandchild));
+    let e = p.eval_one(0, &[1.0]).unwrap_err();
+    assert!(matches!(e, ProgramError::Timeout { .. }), "{e}");
+    let t = Instant::now();
+    while !dead(grandchild) && t.elapsed() < Duration::from_secs(5) {
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    assert!(
+        dead(grandchild),
+        "the program's child {grandchild} outlived the timeout"
+    );
+}

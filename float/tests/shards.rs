@@ -1,10 +1,14 @@
 //! A sweep run as shards and merged is the single run: same counts, maxima, worst cases (shrunk
 //! the same way), medians and bits of error, whatever the order of the shard reports; and the
-//! JSON form of a shard report reads back to the same report.
+//! JSON form of a shard report reads back to the same report. A shard that disagrees with itself
+//! (an edited count, a summary emptied, a maximum out of its summary) or that measured another
+//! float side is refused.
 
 use exactcheck_core::{OrderedField, ZeroDivisor};
 use exactcheck_exact::Rational;
-use exactcheck_float::{merge, run, Formula, Options, Report, Shard, Sweep, UniformBox};
+use exactcheck_float::{
+    check_consistent, merge, run, Formula, Options, Report, Shard, Subject, Sweep, UniformBox,
+};
 
 /// `(x + y) - x` (cancellation) and `x / (y - x)` (outside the domain where `y == x`).
 struct Mixed;
@@ -102,4 +106,157 @@ fn shard_syntax() {
     let s = Shard { index: 3, count: 3 };
     assert_eq!(s.range(10), 6..10);
     assert_eq!(Shard { index: 1, count: 3 }.range(10), 0..3);
+}
+
+/// `x * y`, whose float side fails (a zero divisor) where `x < -900`: float failures, infinite
+/// errors and 64 bits in the summaries.
+struct Failing;
+
+impl Formula for Failing {
+    fn name(&self) -> String {
+        "x * y, failing below -900".into()
+    }
+    fn arity(&self) -> usize {
+        2
+    }
+    fn eval<T: OrderedField>(&self, x: &[T]) -> Result<Vec<T>, ZeroDivisor> {
+        Ok(vec![x[0].mul_ref(&x[1])])
+    }
+    fn eval_f64(&self, x: &[f64]) -> Result<Vec<f64>, ZeroDivisor> {
+        if x[0] < -900.0 {
+            return Err(ZeroDivisor);
+        }
+        Ok(vec![x[0] * x[1] * (1.0 + f64::EPSILON)])
+    }
+}
+
+fn failing_sweep(samples: usize, shard: Option<Shard>) -> Report {
+    let gen = UniformBox::cube(2, -1e3, 1e3).expect("valid box");
+    let sweep = Sweep {
+        samples,
+        seed: 5,
+        shard,
+    };
+    run(
+        &exactcheck_float::Generic::<_, Rational>::new(&Failing),
+        &gen,
+        sweep,
+        &Options::default(),
+        &|_| {},
+    )
+    .expect("runs")
+}
+
+/// What `run` writes passes the check: float failures, and summaries past the exact size that
+/// collapse to buckets.
+#[test]
+fn shards_as_written_are_consistent() {
+    let samples = 140_000;
+    let shards: Vec<Report> = (1..=2)
+        .map(|index| failing_sweep(samples, Some(Shard { index, count: 2 })))
+        .collect();
+    for s in &shards {
+        assert!(s.float_failures > 0 && s.summary.ulps.is_collapsed(), "{s}");
+        assert_eq!(check_consistent(s), Ok(()));
+    }
+    let merged = merge(&shards).expect("merges");
+    assert_eq!(merged, failing_sweep(samples, None));
+    assert_eq!(check_consistent(&merged), Ok(()));
+}
+
+/// The second shard of a 1000-sample sweep, edited by `edit`, merged with the first: the
+/// refusal's message.
+fn refusal(edit: impl FnOnce(&mut Report)) -> String {
+    let a = sweep(1000, Some(Shard { index: 1, count: 2 }));
+    let mut b = sweep(1000, Some(Shard { index: 2, count: 2 }));
+    assert!(merge(&[a.clone(), b.clone()]).is_ok());
+    edit(&mut b);
+    let e = merge(&[a, b]).expect_err("a tampered shard is refused").0;
+    assert!(!e.contains('\n'), "{e}");
+    e
+}
+
+#[test]
+fn tampered_counts_are_refused() {
+    let e = refusal(|b| b.compared = 1_000_000_000_000_000_000);
+    assert!(
+        e.starts_with("shard 2/2 is inconsistent: compared 1000000000000000000 + "),
+        "{e}"
+    );
+    assert!(e.contains("is not the 500 samples it covers"), "{e}");
+    let e = refusal(|b| b.undecided = usize::MAX);
+    assert!(e.contains("is not the 500 samples it covers"), "{e}");
+    // The outcomes still add up, but the summaries hold one sample fewer than `compared`.
+    let e = refusal(|b| {
+        b.compared -= 1;
+        b.undecided += 1;
+    });
+    assert!(e.contains("ulps summary holds"), "{e}");
+    let e = refusal(|b| b.float_failures = b.compared + 1);
+    assert!(e.contains("float failures"), "{e}");
+    let e = refusal(|b| b.float_failures += 1);
+    assert!(e.contains("fewer infinite errors"), "{e}");
+    let e = refusal(|b| b.above[0].count += 1);
+    assert!(
+        e.contains("samples above 1.0 ulps, but its summary has"),
+        "{e}"
+    );
+}
+
+#[test]
+fn emptied_or_edited_summaries_are_refused() {
+    let e = refusal(|b| b.summary = Default::default());
+    assert!(e.contains("summary holds 0 samples"), "{e}");
+    let e = refusal(|b| b.summary.bits.count += 1);
+    assert!(e.contains("bits of error summary holds"), "{e}");
+    let e = refusal(|b| b.median_ulps *= 2.0);
+    assert!(e.contains("median_ulps"), "{e}");
+    let e = refusal(|b| b.bits_of_error = 3.0);
+    assert!(e.contains("bits_of_error 3.0 is not"), "{e}");
+    let e = refusal(|b| b.max_bits = 70.0);
+    assert!(e.contains("max_bits 70.0 does not"), "{e}");
+}
+
+#[test]
+fn maxima_out_of_their_summary_are_refused() {
+    let e = refusal(|b| b.max_ulps = 1e308);
+    assert!(e.contains("max_ulps 1e308 is not the largest value"), "{e}");
+    let e = refusal(|b| b.max_rel = f64::NAN);
+    assert!(e.contains("max_rel NaN"), "{e}");
+    let e = refusal(|b| b.max_ulps_per_output[0] = 1e308);
+    assert!(e.contains("max_ulps_per_output holds 1e308"), "{e}");
+}
+
+#[test]
+fn missing_or_edited_worst_cases_are_refused() {
+    let e = refusal(|b| b.worst.clear());
+    assert!(e.contains("0 worst cases, not 4"), "{e}");
+    let e = refusal(|b| b.worst.swap(0, 1));
+    assert!(e.contains("is not worse than the next"), "{e}");
+    let e = refusal(|b| b.worst[1].index = 3);
+    assert!(e.contains("is sample 3, outside 500..1000"), "{e}");
+    // A case's float output edited: its recorded error no longer follows from its outputs.
+    let e = refusal(|b| {
+        let y = &mut b.worst[1]
+            .original
+            .float_outputs
+            .as_mut()
+            .expect("compared")[0];
+        *y = f64::from_bits(y.to_bits() + 1);
+    });
+    assert!(e.contains("ulps from its exact value, not the"), "{e}");
+}
+
+/// The float side of a shard is recorded, and shards of different float sides do not merge.
+#[test]
+fn shards_of_another_float_side_are_refused() {
+    let subject = exactcheck_float::Generic::<_, Rational>::new(&Mixed);
+    assert_eq!(subject.float_side(), "built-in (x + y) - x, x / (y - x)");
+    let b = sweep(1000, Some(Shard { index: 2, count: 2 }));
+    assert_eq!(b.float_side, subject.float_side());
+    let e = refusal(|b| b.float_side = "program ./mine".into());
+    assert_eq!(
+        e,
+        "report 2 is of another sweep: float side program ./mine (report 1: built-in (x + y) - x, x / (y - x))"
+    );
 }

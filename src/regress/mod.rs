@@ -71,6 +71,10 @@ pub struct RegressArgs {
     /// of outputs back per sample (see the README).
     #[arg(long, value_name = "CMD")]
     pub program: Option<String>,
+    /// The numbered protocol of --program: each input line starts with the sample index,
+    /// which the program echoes before its answer.
+    #[arg(long, requires = "program")]
+    pub program_echo_index: bool,
     /// Seconds to wait for each answer of --program.
     #[arg(long, default_value_t = 10.0, value_name = "SECONDS")]
     pub program_timeout: f64,

@@ -44,14 +44,18 @@ impl<'a> TextSubject<'a> {
         program: &'a Program,
         command: &str,
         timeout: Duration,
+        echo_index: bool,
     ) -> Result<TextSubject<'a>, Error> {
-        let runner = ProgramRunner::spawn(
+        let mut runner = ProgramRunner::spawn(
             command,
             program.inputs.len(),
             program.outputs.len(),
             timeout,
         )
         .map_err(|e| Error::Input(e.to_string()))?;
+        if echo_index {
+            runner = runner.echo_index();
+        }
         Ok(TextSubject {
             program,
             runner: Some(Mutex::new(runner)),
@@ -65,6 +69,17 @@ impl Subject for TextSubject<'_> {
     }
     fn arity(&self) -> usize {
         self.program.inputs.len()
+    }
+    fn float_side(&self) -> String {
+        match &self.runner {
+            None => format!("formula {}", self.program.name),
+            Some(r) => format!(
+                "program {}",
+                r.lock()
+                    .unwrap_or_else(std::sync::PoisonError::into_inner)
+                    .command()
+            ),
+        }
     }
     fn exact(&self, x: &[f64]) -> Result<Vec<ExactValue>, CaseError> {
         let exact_in: Vec<Rational> = x
@@ -94,6 +109,16 @@ impl Subject for TextSubject<'_> {
                 .expect("the runner is used from the sweep's thread only")
                 .eval_one(index, x)
                 .map(Some)
+                .map_err(|e| FloatSideError(e.to_string())),
+        }
+    }
+    fn finish(&self) -> Result<(), FloatSideError> {
+        match &self.runner {
+            None => Ok(()),
+            Some(r) => r
+                .lock()
+                .expect("the runner is used from the sweep's thread only")
+                .finish()
                 .map_err(|e| FloatSideError(e.to_string())),
         }
     }
@@ -133,9 +158,12 @@ fn sweep_entry(
 ) -> Result<Entry, Error> {
     let subject = match &args.program {
         None => TextSubject::new(program),
-        Some(cmd) => {
-            TextSubject::with_program(program, cmd, Duration::from_secs_f64(args.program_timeout))?
-        }
+        Some(cmd) => TextSubject::with_program(
+            program,
+            cmd,
+            Duration::from_secs_f64(args.program_timeout),
+            args.program_echo_index,
+        )?,
     };
     let progress = args.progress(&program.name);
     let report = exactcheck_float::run(&subject, gen, args.sweep(), &options(args), &|done| {

@@ -92,8 +92,14 @@ pub fn root() -> &'static Path {
 /// Runs `exactcheck ARGS...` in the repository root with `stdin` on standard input (empty when
 /// `None`), killing it after [`KILL_AFTER`].
 pub fn run(args: &[OsString], stdin: Option<&[u8]>) -> Run {
+    run_with_env(args, stdin, &[])
+}
+
+/// [`run`] with environment variables set for the run.
+pub fn run_with_env(args: &[OsString], stdin: Option<&[u8]>, env: &[(String, String)]) -> Run {
     let mut child = Command::new(env!("CARGO_BIN_EXE_exactcheck"))
         .args(args)
+        .envs(env.iter().map(|(k, v)| (k, v)))
         .current_dir(root())
         .stdin(Stdio::piped())
         .stdout(Stdio::piped())

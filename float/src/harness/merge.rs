@@ -9,7 +9,9 @@
 //! ([`crate::summary`]), as a single run reads them from its own.
 
 use super::worse;
-use crate::report::Report;
+use crate::convert::ulps_error;
+use crate::report::{Case, Report, WorstCase};
+use num_rational::BigRational;
 
 /// Why shard reports do not merge.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -23,13 +25,223 @@ impl std::fmt::Display for MergeError {
 
 impl std::error::Error for MergeError {}
 
+/// Checks that a report agrees with itself: every sample of its range counted once; the
+/// counts of its summaries recounted against `compared`; maxima, threshold counts, medians,
+/// means and bits of error read back from the summaries; the worst cases present, in order,
+/// inside the range, the first of them the maximum, and each one's error recomputed from its
+/// outputs where its exact value is exact. A report `run` wrote passes; an edited one, or one
+/// cut short, does not.
+///
+/// # Errors
+/// The first disagreement, one line.
+pub fn check_consistent(r: &Report) -> Result<(), String> {
+    let covered = r.end_sample.checked_sub(r.first_sample).ok_or_else(|| {
+        format!(
+            "its sample range {}..{} is empty backwards",
+            r.first_sample, r.end_sample
+        )
+    })?;
+    let outcomes = [r.compared, r.domain_errors, r.invalid_inputs, r.undecided]
+        .iter()
+        .try_fold(0usize, |a, &b| a.checked_add(b));
+    if outcomes != Some(covered) {
+        return Err(format!(
+            "compared {} + outside the domain {} + invalid {} + undecided {} is not the {covered} samples it covers",
+            r.compared, r.domain_errors, r.invalid_inputs, r.undecided
+        ));
+    }
+    for (what, n) in [("refined", r.refined), ("float failures", r.float_failures)] {
+        if n > r.compared {
+            return Err(format!("{what} {n} exceed compared {}", r.compared));
+        }
+    }
+    let compared = r.compared as u64;
+    let recount = [
+        ("ulps", r.summary.ulps.len()),
+        ("relative error", r.summary.rel.len()),
+        ("bits of error", r.summary.bits.count),
+    ];
+    for (what, n) in recount {
+        if n != compared {
+            return Err(format!(
+                "its {what} summary holds {n} samples, not the {compared} compared"
+            ));
+        }
+    }
+    for (what, v, d) in [
+        ("max_ulps", r.max_ulps, &r.summary.ulps),
+        ("max_rel", r.max_rel, &r.summary.rel),
+    ] {
+        if !d.largest_is(v) {
+            return Err(format!(
+                "{what} {v:?} is not the largest value of its summary ({:?})",
+                d.largest()
+            ));
+        }
+    }
+    let failures = r.float_failures as u64;
+    if failures > r.summary.ulps.infinite() || failures > r.summary.rel.infinite() {
+        return Err(format!(
+            "{} float failures but fewer infinite errors in its summaries",
+            r.float_failures
+        ));
+    }
+    if !(0.0..=64.0).contains(&r.max_bits)
+        || (r.compared == 0 && r.max_bits != 0.0)
+        || (r.float_failures > 0 && r.max_bits != 64.0)
+        || !r.summary.bits.within(r.max_bits)
+    {
+        return Err(format!(
+            "max_bits {:?} does not bound its bits of error (at most 64, 64 with a float failure)",
+            r.max_bits
+        ));
+    }
+    if r.compared == 0 && !r.max_ulps_per_output.is_empty() {
+        return Err("max_ulps_per_output is not empty with nothing compared".into());
+    }
+    if let Some(u) = r
+        .max_ulps_per_output
+        .iter()
+        .find(|u| u.is_nan() || **u < 0.0 || **u > r.max_ulps)
+    {
+        return Err(format!(
+            "max_ulps_per_output holds {u:?}, not within 0..=max_ulps {:?}",
+            r.max_ulps
+        ));
+    }
+    for t in &r.above {
+        let (lo, hi) = r.summary.ulps.count_above(t.ulps);
+        let n = t.count as u64;
+        if t.ulps.is_nan() || n < lo || n > hi {
+            return Err(format!(
+                "{} samples above {:?} ulps, but its summary has {}",
+                t.count,
+                t.ulps,
+                if lo == hi {
+                    lo.to_string()
+                } else {
+                    format!("{lo} to {hi}")
+                }
+            ));
+        }
+    }
+    let mut reread = r.clone();
+    reread.refresh_statistics();
+    for (what, have, want) in [
+        ("median_ulps", r.median_ulps, reread.median_ulps),
+        ("mean_ulps", r.mean_ulps, reread.mean_ulps),
+        ("median_rel", r.median_rel, reread.median_rel),
+        ("bits_of_error", r.bits_of_error, reread.bits_of_error),
+    ] {
+        if have.to_bits() != want.to_bits() {
+            return Err(format!("{what} {have:?} is not its summary's {want:?}"));
+        }
+    }
+    check_worst(r)
+}
+
+/// The worst-case part of [`check_consistent`].
+fn check_worst(r: &Report) -> Result<(), String> {
+    let wanted = r.keep.min(r.compared);
+    if r.worst.len() != wanted {
+        return Err(format!(
+            "{} worst cases, not {wanted} (keep {}, compared {})",
+            r.worst.len(),
+            r.keep,
+            r.compared
+        ));
+    }
+    let key = |w: &WorstCase| (w.original.ulps, w.original.rel, w.index);
+    for (k, w) in r.worst.iter().enumerate() {
+        if !(r.first_sample..r.end_sample).contains(&w.index) {
+            return Err(format!(
+                "worst case {} is sample {}, outside {}..{}",
+                k + 1,
+                w.index,
+                r.first_sample,
+                r.end_sample
+            ));
+        }
+        if k > 0 && worse(key(&r.worst[k - 1]), key(w)) != std::cmp::Ordering::Less {
+            return Err(format!(
+                "worst case {} (sample {}) is not worse than the next",
+                k,
+                r.worst[k - 1].index
+            ));
+        }
+        check_case(&w.original, r)
+            .map_err(|why| format!("worst case sample {}: {why}", w.index))?;
+    }
+    if let Some(w) = r.worst.first() {
+        if w.original.ulps.to_bits() != r.max_ulps.to_bits() {
+            return Err(format!(
+                "the worst case (sample {}) has {:?} ulps, not max_ulps {:?}",
+                w.index, w.original.ulps, r.max_ulps
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// One kept case against its report: its measures within the report's maxima and its error
+/// recomputed from its outputs.
+fn check_case(c: &Case, r: &Report) -> Result<(), String> {
+    let n = c.exact_outputs.len();
+    if c.ulps_per_output.len() != n || c.rel_per_output.len() != n {
+        return Err(format!(
+            "{n} exact outputs but {} ulps and {} relative errors",
+            c.ulps_per_output.len(),
+            c.rel_per_output.len()
+        ));
+    }
+    let max = |v: &[f64]| v.iter().copied().fold(0.0, f64::max);
+    let (ulps, rel) = if c.float_failure {
+        (f64::INFINITY, f64::INFINITY)
+    } else {
+        (max(&c.ulps_per_output), max(&c.rel_per_output))
+    };
+    if c.ulps.to_bits() != ulps.to_bits() || c.rel.to_bits() != rel.to_bits() {
+        return Err(format!(
+            "its error {:?} ulps, relative {:?}, is not the largest of its outputs' ({ulps:?}, {rel:?})",
+            c.ulps, c.rel
+        ));
+    }
+    if !(c.rel <= r.max_rel && c.bits <= r.max_bits) {
+        return Err(format!(
+            "relative error {:?} or bits {:?} above the report's maxima",
+            c.rel, c.bits
+        ));
+    }
+    if let (false, Some(float)) = (c.float_failure, &c.float_outputs) {
+        for (i, (text, &a)) in c.exact_outputs.iter().zip(float).enumerate() {
+            // `~` marks a refined approximation of an irrational value: nothing to recompute.
+            if text.starts_with('~') {
+                continue;
+            }
+            let q: BigRational = text
+                .parse()
+                .map_err(|_| format!("exact output {} {text:?} is not a rational", i + 1))?;
+            let u = ulps_error(a, &q);
+            if u.to_bits() != c.ulps_per_output[i].to_bits() {
+                return Err(format!(
+                    "output {} is {u:?} ulps from its exact value, not the {:?} recorded",
+                    i + 1,
+                    c.ulps_per_output[i]
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
 /// Merges the reports of all `N` shards of one sweep (in any order) into the report a single
 /// run of the sweep gives.
 ///
 /// # Errors
 /// No report; reports of different sweeps (formula, inputs, arity, samples, seed, kept worst
 /// cases, thresholds or shard count differ); a report that is not a shard, a shard given twice,
-/// a shard missing, or a shard whose sample range is not its part of the sweep.
+/// a shard missing, a shard whose sample range is not its part of the sweep, or a shard that
+/// disagrees with itself ([`check_consistent`]).
 pub fn merge(reports: &[Report]) -> Result<Report, MergeError> {
     let err = |s: String| Err(MergeError(s));
     let Some(first) = reports.first() else {
@@ -51,6 +263,7 @@ pub fn merge(reports: &[Report]) -> Result<Report, MergeError> {
             }
         };
         same("formula", first.formula.clone(), r.formula.clone())?;
+        same("float side", first.float_side.clone(), r.float_side.clone())?;
         same("inputs", first.generator.clone(), r.generator.clone())?;
         same("arity", first.arity.to_string(), r.arity.to_string())?;
         same("samples", first.samples.to_string(), r.samples.to_string())?;
@@ -77,6 +290,8 @@ pub fn merge(reports: &[Report]) -> Result<Report, MergeError> {
                 r.first_sample, r.end_sample, range.start, range.end
             ));
         }
+        check_consistent(r)
+            .map_err(|why| MergeError(format!("shard {s} is inconsistent: {why}")))?;
     }
     let missing: Vec<String> = seen
         .iter()

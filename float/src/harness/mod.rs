@@ -56,7 +56,7 @@
 mod merge;
 mod shrink;
 
-pub use merge::{merge, MergeError};
+pub use merge::{check_consistent, merge, MergeError};
 
 use crate::convert::{rel_error, ulps_error_rounded};
 use crate::gen::InputGen;
@@ -255,6 +255,9 @@ pub trait Subject: Sync {
     fn name(&self) -> String;
     /// The number of inputs.
     fn arity(&self) -> usize;
+    /// What computes the float results, for reports: shards of a sweep merge only when it is
+    /// the same (the built-in code's name, a formula's text, an external program's command).
+    fn float_side(&self) -> String;
     /// The exact outputs at `x` (one `ExactValue` per output).
     ///
     /// # Errors
@@ -282,6 +285,14 @@ pub trait Subject: Sync {
             .map(|(k, x)| self.float(first + k, x))
             .collect()
     }
+    /// Called once when the sweep (worst cases shrunk) is done; by default nothing. An external
+    /// program is told its input has ended and checked to have kept the protocol to the end.
+    ///
+    /// # Errors
+    /// As [`Subject::float`]: the sweep's report is not given.
+    fn finish(&self) -> Result<(), FloatSideError> {
+        Ok(())
+    }
 }
 
 /// A [`Formula`] as a [`Subject`]: its generic `eval` in the exact scalar `E` against its
@@ -307,6 +318,9 @@ impl<F: Formula + Sync + ?Sized, E: ExactScalar> Subject for Generic<'_, F, E> {
     }
     fn arity(&self) -> usize {
         self.formula.arity()
+    }
+    fn float_side(&self) -> String {
+        format!("built-in {}", self.formula.name())
     }
     fn exact(&self, x: &[f64]) -> Result<Vec<ExactValue>, CaseError> {
         if x.len() != self.formula.arity() {
@@ -707,14 +721,8 @@ pub fn run(
             })
         })
         .collect::<Result<Vec<_>, RegressError>>()?;
-    Ok(acc.report(
-        subject.name(),
-        gen.describe(),
-        subject.arity(),
-        sweep,
-        options,
-        worst,
-    ))
+    subject.finish().map_err(|e| RegressError::FloatSide(e.0))?;
+    Ok(acc.report(subject, gen.describe(), sweep, options, worst))
 }
 
 /// Inserts a case into the K worst, keeping them worst first.
@@ -808,9 +816,8 @@ impl Accumulator {
 
     fn report(
         self,
-        formula: String,
+        subject: &(impl Subject + ?Sized),
         generator: String,
-        arity: usize,
         sweep: Sweep,
         options: &Options,
         worst: Vec<WorstCase>,
@@ -819,9 +826,10 @@ impl Accumulator {
             .shard
             .map_or(0..sweep.samples, |s| s.range(sweep.samples));
         let mut r = Report {
-            formula,
+            formula: subject.name(),
+            float_side: subject.float_side(),
             generator,
-            arity,
+            arity: subject.arity(),
             samples: sweep.samples,
             seed: sweep.seed,
             shard: sweep.shard,
