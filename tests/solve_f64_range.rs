@@ -108,6 +108,24 @@ fn ph_offset_with_u_of_10_to_200_is_answered() {
     assert!(v["offsets"][0]["cusps"][0]["point_approx"][0].is_null());
 }
 
+#[test]
+fn conic_rulings_with_a_normal_of_10_to_400_are_answered() {
+    // A plane through the apex: the rulings' twins were computed in f64 from the twins of the
+    // normal (`-a c + b sqrt(D)` = `-inf + inf`, NaN); they come from the exact directions now.
+    let v = exact_answer(r#"{"kind":"conic","plane":["10^400",1,1,0]}"#);
+    assert_eq!(v["type"], "line_pair");
+    let paths = listed(&v);
+    // The first ruling is (0, -10^800, 10^800 + 1): its first twin is 0, the others listed.
+    assert!(
+        paths.contains(&"degenerate.rulings[0].approx[1]"),
+        "{paths:?}"
+    );
+    assert_eq!(v["degenerate"]["rulings"][0]["approx"][0], json!(0.0));
+    for r in v["degenerate"]["rulings"].as_array().expect("rulings") {
+        assert!(r["direction"].is_array(), "{r}");
+    }
+}
+
 /// Refused in one line naming f64's range, exit status 2, nothing on standard output.
 fn assert_f64_refusal(o: &std::process::Output, what: &str) {
     let err = String::from_utf8_lossy(&o.stderr);

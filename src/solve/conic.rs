@@ -312,16 +312,24 @@ fn rulings<T: ConicScalar>(
                 .iter()
                 .map(|&e| {
                     let d = exact_root.as_ref().map(|r| base(r, e));
-                    let h = h.approx();
-                    let (a, b, c) = (a.approx(), b.approx(), c.approx());
-                    let e = e as f64;
+                    // The twins of an exact direction are converted from it; only a direction
+                    // outside the field is approximated in f64.
+                    let approx = match &d {
+                        Some(d) => three_approx(d),
+                        None => {
+                            let h = h.approx();
+                            let (a, b, c) = (a.approx(), b.approx(), c.approx());
+                            let e = e as f64;
+                            [
+                                -a * c + e * b * approx_root + 0.0,
+                                -b * c - e * a * approx_root + 0.0,
+                                h,
+                            ]
+                        }
+                    };
                     RulingData {
                         direction: d,
-                        approx: [
-                            -a * c + e * b * approx_root + 0.0,
-                            -b * c - e * a * approx_root + 0.0,
-                            h,
-                        ],
+                        approx,
                         poles: Vec::new(),
                     }
                 })
