@@ -136,7 +136,8 @@ impl fmt::Display for SectionType {
     }
 }
 
-/// The plane's normal is the zero vector.
+/// The plane's normal is the zero vector (for a scalar whose squares can vanish, one whose
+/// `a^2 + b^2` and `c^2` are both zero).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct ZeroNormal;
 
@@ -312,9 +313,10 @@ impl<T: OrderedField> ConeSection<T> {
     /// # Errors
     /// [`ZeroNormal`].
     pub fn new(plane: Plane<T>, inv_sqrt2: &T) -> Result<Self, ZeroNormal> {
-        if plane.normal.x.is_zero() && plane.normal.y.is_zero() && plane.normal.z.is_zero() {
-            return Err(ZeroNormal);
-        }
+        // The angle rule's own test (`a^2 + b^2` and `c^2` both zero), so that `check_types`
+        // cannot meet a zero normal: in a field the same as a zero vector, and in a scalar whose
+        // squares can vanish for non-zero numbers, the refusal of such a normal.
+        angle_rule(&plane)?;
         let piece = |piece: ConePiece| {
             let curve = cone_surface(piece, inv_sqrt2).plane_section(&plane);
             let weight: Bernstein<T> = curve.weight_polynomial();

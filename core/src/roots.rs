@@ -42,6 +42,17 @@
 //! (Mahler), so the subdivision terminates. Without the square-free step a double root would
 //! keep `V >= 2` forever, which is why step 1 is not optional.
 //!
+//! A quadratic with a close pair of roots, real or complex (`q` nearly a square, as the weight
+//! of a conic section near a parabola), would need `log2(1 / sep)` levels: thousands for a
+//! separation of `10^-1000`, each on numbers that grow with the depth. Past
+//! [`QUADRATIC_SHORTCUT_DEPTH`] levels an interval whose `q` is a quadratic is therefore decided
+//! by its discriminant: `c_1^2 - c_0 c_2 < 0` (Bernstein coefficients over the interval) means no
+//! real root; otherwise the interval is split at the vertex `(c_0 - c_1) / (c_0 - 2 c_1 + c_2)`
+//! when it lies inside (where `q != 0`, the discriminant being non-zero), and on an interval
+//! without the vertex `q` is monotone, so it has a root exactly when its end values have
+//! opposite signs. The intervals of ordinary polynomials are decided before that depth, so
+//! their isolating intervals do not change.
+//!
 //! # Refinement (quadratic interval refinement)
 //!
 //! An isolating interval `(a, b)` of a simple root of `q` (opposite signs at the ends) is
@@ -641,9 +652,14 @@ fn midpoint<T: Field>(a: &T, b: &T) -> T {
     a.add_ref(b) / two
 }
 
+/// The depth from which a quadratic's close pair of roots is decided by its discriminant and
+/// vertex instead of further halvings (module documentation): `2^-64` is below the separation
+/// of the roots of every quadratic with moderate coefficients.
+pub const QUADRATIC_SHORTCUT_DEPTH: u32 = 64;
+
 enum Work<T> {
-    /// The coefficients of `q` over `[a, b]`.
-    Interval(T, T, Bernstein<T>),
+    /// The coefficients of `q` over `[a, b]`, and the number of splits that made the interval.
+    Interval(T, T, Bernstein<T>, u32),
     /// A root to report once everything to its left has been.
     Emit(IsolatedRoot<T>),
 }
@@ -661,20 +677,48 @@ fn isolate_square_free<T: OrderedField>(q: &Bernstein<T>) -> Vec<IsolatedRoot<T>
         out.push(IsolatedRoot::Exact(T::zero()));
     }
     let half = midpoint(&T::zero(), &T::one());
-    let mut stack = vec![Work::Interval(T::zero(), T::one(), q.clone())];
+    let mut stack = vec![Work::Interval(T::zero(), T::one(), q.clone(), 0)];
     while let Some(w) = stack.pop() {
-        let (a, b, poly) = match w {
+        let (a, b, poly, depth) = match w {
             Work::Emit(r) => {
                 out.push(r);
                 continue;
             }
-            Work::Interval(a, b, poly) => (a, b, poly),
+            Work::Interval(a, b, poly, depth) => (a, b, poly, depth),
         };
         let v = poly.sign_changes();
         if v == 0 {
             continue;
         }
         let pc = poly.coeffs();
+        if v >= 2 && depth >= QUADRATIC_SHORTCUT_DEPTH && poly.degree() == 2 {
+            // A close pair of roots of a quadratic (module documentation).
+            let (c0, c1, c2) = (&pc[0], &pc[1], &pc[2]);
+            let lead = c0.sub_ref(&c1.add_ref(c1)).add_ref(c2);
+            let disc = c1.square().sub_ref(&c0.mul_ref(c2)).sign();
+            if disc == Sign::Negative {
+                continue;
+            }
+            if disc == Sign::Positive && !lead.is_zero() {
+                let s = c0.sub_ref(c1) / lead;
+                if s.sign() == Sign::Positive && s < T::one() {
+                    let m = a.add_ref(&b.sub_ref(&a).mul_ref(&s));
+                    if a < m && m < b {
+                        let (left, right) = poly.split(&s);
+                        stack.push(Work::Interval(m.clone(), b, right, depth + 1));
+                        stack.push(Work::Interval(a, m, left, depth + 1));
+                        continue;
+                    }
+                } else {
+                    // Monotone on [a, b]: a root inside exactly when the ends' signs differ (an
+                    // end that is a root was reported where the interval was cut).
+                    if c0.sign() * c2.sign() == Sign::Negative {
+                        out.push(IsolatedRoot::Between(a, b));
+                    }
+                    continue;
+                }
+            }
+        }
         if v == 1 && poly.degree() == 1 {
             // A line: the root a + (b - a) c_0 / (c_0 - c_1) is exact.
             let frac = pc[0].clone() / pc[0].sub_ref(&pc[1]);
@@ -695,11 +739,11 @@ fn isolate_square_free<T: OrderedField>(q: &Bernstein<T>) -> Vec<IsolatedRoot<T>
         }
         let (left, right) = poly.split(&half);
         let root_at_m = left.coeffs()[left.degree()].is_zero();
-        stack.push(Work::Interval(m.clone(), b, right));
+        stack.push(Work::Interval(m.clone(), b, right, depth + 1));
         if root_at_m {
             stack.push(Work::Emit(IsolatedRoot::Exact(m.clone())));
         }
-        stack.push(Work::Interval(a, m, left));
+        stack.push(Work::Interval(a, m, left, depth + 1));
     }
     if zero_at_1 {
         out.push(IsolatedRoot::Exact(T::one()));

@@ -95,3 +95,64 @@ fn positive_ratio_to_f64(n: &BigUint, d: &BigUint) -> f64 {
     // The product is exact (m ≤ 2^53, weight ≥ 2^-1074) unless it overflows to inf.
     m as f64 * pow2(u as i32)
 }
+
+/// `sum_i c_i sqrt(d_i)` (`d_i >= 0`) as an `f64`, for display: never NaN, whatever the size of
+/// the `c_i` and `d_i`. Where every `c_i` and `d_i` is a normal double and the sum is finite, it
+/// is `sum_i f64(c_i) * sqrt(f64(d_i))`; otherwise term `c sqrt(d)` is taken as
+/// `(c 2^-a)(sqrt(d 2^-2b)) 2^(a+b)` with both factors near 1 (each correctly rounded), the
+/// terms are summed scaled by the largest power of two, and the sum is scaled back, saturating
+/// to `±inf` or `0` beyond f64's range. Terms that cancel are not resolved (the sum of rounded
+/// terms can be far from the value, even of the wrong sign).
+pub fn sum_of_roots_to_f64(terms: &[(BigRational, BigRational)]) -> f64 {
+    let terms: Vec<&(BigRational, BigRational)> = terms
+        .iter()
+        .filter(|(c, d)| !c.numer().is_zero() && !d.numer().is_zero())
+        .collect();
+    let quick: Option<f64> = terms
+        .iter()
+        .map(|(c, d)| {
+            let (cf, df) = (rational_to_f64(c), rational_to_f64(d));
+            (cf.is_normal() && df.is_normal()).then(|| cf * df.sqrt())
+        })
+        .sum();
+    if let Some(x) = quick.filter(|x| x.is_finite()) {
+        return x;
+    }
+    let log2 = |q: &BigRational| q.numer().bits() as i64 - q.denom().bits() as i64;
+    let scaled: Vec<(f64, i64)> = terms
+        .iter()
+        .map(|(c, d)| {
+            let a = log2(c);
+            let b = log2(d) / 2;
+            let cf = rational_to_f64(&shifted(c.numer(), c.denom(), -a));
+            let df = rational_to_f64(&shifted(d.numer(), d.denom(), -2 * b));
+            (cf * df.sqrt(), a + b)
+        })
+        .collect();
+    let Some(top) = scaled.iter().map(|&(_, e)| e).max() else {
+        return 0.0;
+    };
+    let sum: f64 = scaled
+        .iter()
+        .map(|&(t, e)| t * pow2(i32::try_from(e - top).unwrap_or(i32::MIN)))
+        .sum();
+    // `sum * 2^top` in steps that are exact powers of two: `top` may be far beyond f64's
+    // exponent range, where the product saturates.
+    let (mut x, mut e) = (sum, top);
+    while e != 0 && x != 0.0 && x.is_finite() {
+        let step = e.clamp(-1000, 1000);
+        x *= pow2(step as i32);
+        e -= step;
+    }
+    x
+}
+
+/// `num / den * 2^shift` (`den > 0`).
+fn shifted(num: &BigInt, den: &BigInt, shift: i64) -> BigRational {
+    let k = shift.unsigned_abs() as usize;
+    if shift >= 0 {
+        BigRational::new_raw(num << k, den.clone())
+    } else {
+        BigRational::new_raw(num.clone(), den << k)
+    }
+}

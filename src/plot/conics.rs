@@ -338,6 +338,32 @@ fn view_box(data: &PanelData, curves: &[Vec<Vec<(f64, f64)>>; 2], aspect: f64) -
     (x0, x1, y0, y1)
 }
 
+/// Whether the f64 drawing data of a panel is usable: every number finite, and the view box
+/// finite with positive extent. A plane whose numbers leave f64's range (a normal of
+/// `10^400`, or of `10^-200` whose squares vanish) gives `inf` or NaN here, which the drawing
+/// cannot place.
+fn drawable(data: &PanelData) -> bool {
+    let numbers = data
+        .frame
+        .iter()
+        .flatten()
+        .chain(
+            data.pieces
+                .iter()
+                .flat_map(|p| p.w.iter().chain(p.wp.iter().flatten())),
+        )
+        .chain(
+            data.pieces
+                .iter()
+                .flat_map(|p| p.poles.iter().map(|(t, _)| t)),
+        );
+    if !numbers.into_iter().all(|x| x.is_finite()) {
+        return false;
+    }
+    let (x0, x1, y0, y1) = view_box(data, &curves(data), 1.0);
+    [x0, x1, y0, y1].iter().all(|x| x.is_finite()) && x0 < x1 && y0 < y1
+}
+
 /// Draws one panel on `area`; returns the number of pole markers.
 fn panel(area: &Area<'_>, data: &PanelData) -> Result<usize, DrawErr> {
     let (pw, ph) = area.dim_in_pixel();
@@ -622,6 +648,12 @@ pub fn file(path: &str, text_in: &str) -> Result<(String, usize), Error> {
         .file_name()
         .map_or_else(|| path.to_string(), |f| f.to_string_lossy().into_owned());
     let panels = [panel_data(&c, describe_type(&c), [sub, weights_line(&c)])];
+    if !panels.iter().all(drawable) {
+        return Err(Error::Input(format!(
+            "{path}: {}",
+            crate::solve::F64_OUT_OF_RANGE
+        )));
+    }
     Ok(draw(
         &panels,
         1,

@@ -312,16 +312,24 @@ fn rulings<T: ConicScalar>(
                 .iter()
                 .map(|&e| {
                     let d = exact_root.as_ref().map(|r| base(r, e));
-                    let h = h.approx();
-                    let (a, b, c) = (a.approx(), b.approx(), c.approx());
-                    let e = e as f64;
+                    // The twins of an exact direction are converted from it; only a direction
+                    // outside the field is approximated in f64.
+                    let approx = match &d {
+                        Some(d) => three_approx(d),
+                        None => {
+                            let h = h.approx();
+                            let (a, b, c) = (a.approx(), b.approx(), c.approx());
+                            let e = e as f64;
+                            [
+                                -a * c + e * b * approx_root + 0.0,
+                                -b * c - e * a * approx_root + 0.0,
+                                h,
+                            ]
+                        }
+                    };
                     RulingData {
                         direction: d,
-                        approx: [
-                            -a * c + e * b * approx_root + 0.0,
-                            -b * c - e * a * approx_root + 0.0,
-                            h,
-                        ],
+                        approx,
                         poles: Vec::new(),
                     }
                 })
@@ -362,8 +370,15 @@ fn rulings<T: ConicScalar>(
 
 /// The section by `plane`, computed in `T`, poles refined to `width`.
 pub(crate) fn compute<T: ConicScalar>(plane: Plane<T>, width: &T) -> Result<Computed<T>, Error> {
-    let section = ConeSection::new(plane, &T::inv_sqrt2())
-        .map_err(|e| Error::Input(format!("normal: {e}")))?;
+    let section = ConeSection::new(plane, &T::inv_sqrt2()).map_err(|e| {
+        // `problem` refuses a zero normal, so in f64 this is a non-zero normal whose squares
+        // underflow to zero.
+        Error::Input(if T::EXACT {
+            format!("normal: {e}")
+        } else {
+            format!("normal: {}", super::F64_OUT_OF_RANGE)
+        })
+    })?;
     let check = section.check_types();
     let ConeSection { plane, pieces } = section;
     let piece = |k: usize, p: &exactcheck_core::conic::SectionPiece<T>| {
@@ -629,6 +644,11 @@ fn exact(text: &str) -> Result<Answer<String>, Error> {
 fn float_answer(text: &str) -> Result<Answer<f64>, Error> {
     let input: Input<FloatNumber> = parse(text)?;
     let (plane, width) = problem(&input, |x| x.0)?;
+    // The classification compares `c^2` with `a^2 + b^2`: beyond f64's range (`inf - inf`) or
+    // below it (both `0`) the comparison means nothing.
+    if !plane.normal.norm_squared().is_finite() {
+        return Err(Error::Input(format!("normal: {}", super::F64_OUT_OF_RANGE)));
+    }
     let c = compute(plane, &width)?;
     let mut answer = render(&c, "float", |x: &f64| *x + 0.0);
     let finite = answer.plane.iter().all(|x| x.is_finite())

@@ -21,6 +21,8 @@ use exactcheck_core::{OrderedField, Ring, Sign, Vec3};
 use exactcheck_exact::cylinder_sphere::analyze;
 use exactcheck_exact::univariate::{Bound, RootInterval};
 use exactcheck_exact::{Radical, Rational};
+use num_rational::BigRational;
+use num_traits::One;
 use schemars::{json_schema, JsonSchema, Schema, SchemaGenerator};
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
@@ -779,7 +781,6 @@ fn quadratic_points(
     let relation = [w.square() - k(disc)];
     let pcs = cs.map(k);
     let (axis_q, axis_d) = pcs.axis_polynomial();
-    let sqrt_d = disc.to_f64().sqrt();
     let mut ok = true;
     let mut pts = Vec::new();
     for sign in [-1i64, 1] {
@@ -796,7 +797,13 @@ fn quadratic_points(
             } else {
                 format!("{p0} + {p1}*sqrt({disc})")
             };
-            (text, p0.to_f64() + p1.to_f64() * sqrt_d)
+            // The one conversion of sums of roots: finite and NaN-free where the terms alone
+            // leave f64's range.
+            let approx = exactcheck_exact::to_f64::sum_of_roots_to_f64(&[
+                (p0.to_big_rational(), BigRational::one()),
+                (p1.to_big_rational(), disc.to_big_rational()),
+            ]);
+            (text, approx + 0.0)
         };
         let (cx, cy, cz) = (coord(&x.x), coord(&x.y), coord(&x.z));
         pts.push(([cx.0, cy.0, cz.0], [cx.1, cy.1, cz.1]));

@@ -9,11 +9,13 @@
 //! (exit 2) instead of a confident answer holding `null`.
 //!
 //! One exception, when the caller allows it ([`Approx::Listed`], exact answers): an infinite
-//! number under a field named `approx` is the f64 twin of an exact value beyond f64's range
-//! (`"-10^400"`). The exact value is the answer, so it is not refused: the infinity is
-//! collected (its path returned by [`check`]), written as `null`, and the answer lists every
-//! such path in `approx_out_of_range`, so the `null` is not silent. A NaN is never accepted.
-//!
+//! number under a field named `approx` or `*_approx` (`point_approx`) is the f64 twin of an
+//! exact value beyond f64's range (`"-10^400"`). The exact value is the answer, so it is not
+//! refused: the infinity is collected (its path returned by [`check`]), written as `null`, and
+//! the answer lists every such path in `approx_out_of_range`, so the `null` is not silent. A NaN
+//! is never accepted (the twins are converted by `Radical::to_f64`/`Rational::to_f64`, which
+//! give `±inf` beyond f64's range, never NaN).
+
 //! Hand-written: serde has no "visit every float" hook, and `serde_json`'s own serializers
 //! turn non-finite numbers into `null` without an error.
 
@@ -68,6 +70,13 @@ pub fn check<T: Serialize + ?Sized>(value: &T, approx: Approx) -> Result<Vec<Str
     Ok(listed.into_inner())
 }
 
+/// Whether a path segment is a field of f64 twins: `approx`, `approx[2]`, or a name ending in
+/// `_approx` (`point_approx`, `base_approx[0]`).
+fn is_twin_field(segment: &str) -> bool {
+    let name = segment.split('[').next().unwrap_or(segment);
+    name == "approx" || name.ends_with("_approx")
+}
+
 fn join(prefix: &str, name: &str) -> String {
     if prefix.is_empty() {
         name.to_string()
@@ -98,7 +107,7 @@ impl<'a> Checker<'a> {
         if v.is_finite() {
             return Ok(());
         }
-        let under_approx = self.path.split('.').any(|s| s.starts_with("approx"));
+        let under_approx = self.path.split('.').any(is_twin_field);
         if v.is_infinite()
             && under_approx
             && self.approx == Approx::Listed

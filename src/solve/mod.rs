@@ -29,6 +29,10 @@ use serde::de::{Deserialize, DeserializeOwned};
 use serde::Serialize;
 use serde_json::Value;
 
+/// The refusal of f64 computation whose numbers leave f64's range (squares that vanish or
+/// overflow), after the field or command it concerns.
+pub(crate) const F64_OUT_OF_RANGE: &str = "f64 underflows/overflows here; use exact mode";
+
 /// How numbers are read and computed.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Mode {

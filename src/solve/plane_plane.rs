@@ -20,10 +20,10 @@
 //! A zero normal is an input error naming the field (`planes[1].normal: zero vector`).
 
 use super::number::{Coords, ExactNumber, FloatNumber};
-use super::{by_mode, parse, Kind, Mode};
+use super::{by_mode, finite, parse, to_json, Kind, Mode};
 use crate::Error;
 use exactcheck_core::planes::{intersect, Plane, PlanePair};
-use exactcheck_core::{Ring, Sqrt, Vec3};
+use exactcheck_core::{Field, OrderedField, Ring, Sign, Sqrt, Vec3};
 use exactcheck_exact::Radical;
 use exactcheck_float::wabis::{interction_line_of_2_areas, length, scale, V3};
 use schemars::{json_schema, JsonSchema, Schema, SchemaGenerator};
@@ -130,8 +130,30 @@ struct ExactAnswer {
     /// Exact check: `point . direction = 0`, so the point is the one nearest the origin.
     nearest_to_origin: Option<bool>,
     approx: Option<Approx>,
+    /// `--both`: the float answer, or why the float computation gave none.
     #[serde(skip_serializing_if = "Option::is_none")]
-    float: Option<FloatAnswer>,
+    float: Option<FloatPart>,
+    /// `--both`: whether the float outcome is the exact one (`parallel` counts for
+    /// `coincident`, which the published function does not tell apart); absent when the float
+    /// computation failed.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    float_agrees: Option<bool>,
+    /// `--both`: the disagreement, or the float failure, in words.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    float_note: Option<String>,
+}
+
+/// The float part of `--both`: an answer, or the failure of the float computation (input f64
+/// cannot hold, a non-finite result), which does not take the exact answer with it.
+#[derive(Debug, Serialize)]
+#[serde(untagged)]
+enum FloatPart {
+    Answer(FloatAnswer),
+    Failed {
+        mode: &'static str,
+        method: &'static str,
+        error: String,
+    },
 }
 
 #[derive(Debug, Serialize)]
@@ -181,6 +203,8 @@ fn exact(text: &str) -> Result<ExactAnswer, Error> {
         nearest_to_origin: None,
         approx: None,
         float: None,
+        float_agrees: None,
+        float_note: None,
     };
     match intersect(&p1, &p2) {
         PlanePair::Parallel => Ok(none("parallel")),
@@ -191,12 +215,15 @@ fn exact(text: &str) -> Result<ExactAnswer, Error> {
         ))),
         PlanePair::Line { point, direction } => {
             let k = direction.norm_squared();
-            let (unit, in_field) = match k.sqrt() {
+            // The unit direction's twins come from exact values, not `direction / |direction|`
+            // in f64 (which is `inf / inf` once `|direction|` is beyond f64's range): the exact
+            // unit vector when it is in the field, else `sign(c) sqrt(c^2 / k)`, `c^2 / k <= 1`.
+            let (unit, in_field, unit_f) = match k.sqrt() {
                 Some(root) => {
                     let u = direction
                         .div_scalar(&root)
                         .expect("sqrt(|q|^2) != 0 for the non-zero direction of a line");
-                    (strings(&u), true)
+                    (strings(&u), true, approx(&u))
                 }
                 None => (
                     direction
@@ -209,10 +236,23 @@ fn exact(text: &str) -> Result<ExactAnswer, Error> {
                         })
                         .into_array(),
                     false,
+                    direction
+                        .map(|c| {
+                            let magnitude = c
+                                .square()
+                                .checked_div(&k)
+                                .expect("|q|^2 != 0 for the non-zero direction of a line")
+                                .to_f64()
+                                .sqrt();
+                            if c.sign() == Sign::Negative {
+                                -magnitude
+                            } else {
+                                magnitude + 0.0
+                            }
+                        })
+                        .into_array(),
                 ),
             };
-            let norm = k.to_f64().sqrt();
-            let dir_f = approx(&direction);
             Ok(ExactAnswer {
                 point: Some(strings(&point)),
                 direction: Some(strings(&direction)),
@@ -224,8 +264,8 @@ fn exact(text: &str) -> Result<ExactAnswer, Error> {
                 nearest_to_origin: Some(point.dot(&direction).is_zero()),
                 approx: Some(Approx {
                     point: approx(&point),
-                    direction: dir_f,
-                    unit_direction: dir_f.map(|c| c / norm + 0.0),
+                    direction: approx(&direction),
+                    unit_direction: unit_f,
                 }),
                 ..none("line")
             })
@@ -263,6 +303,55 @@ fn float_answer(text: &str) -> Result<FloatAnswer, Error> {
     })
 }
 
+/// `--both`: the exact answer (its errors are the answer's), with the float answer and whether
+/// its outcome agrees, or with the float computation's failure as a note. Near-parallel
+/// rounding makes the published function return a finite `line` for some exactly parallel or
+/// coincident planes, and NaN for others (`1 - r^2 = 0` with `n2 x n1` not rounded to zero).
+fn both(text: &str) -> Result<ExactAnswer, Error> {
+    let mut answer = exact(text)?;
+    let float = float_answer(text).and_then(|f| {
+        finite::check(&f, finite::Approx::Refused)
+            .map(|_| f)
+            .map_err(|e| Error::Input(e.to_string()))
+    });
+    match float {
+        Ok(f) => {
+            let agrees = matches!(
+                (answer.outcome, f.outcome),
+                ("line", "line") | ("parallel" | "coincident", "parallel")
+            );
+            if !agrees {
+                answer.float_note = Some(format!(
+                    "disagreement: the planes are exactly {}, the f64 computation says {}{}",
+                    if answer.outcome == "line" {
+                        "not parallel (they meet in a line)"
+                    } else {
+                        answer.outcome
+                    },
+                    f.outcome,
+                    if f.outcome == "line" {
+                        " (rounding left n2 x n1 non-zero)"
+                    } else {
+                        " (n2 x n1 rounded to zero)"
+                    }
+                ));
+            }
+            answer.float_agrees = Some(agrees);
+            answer.float = Some(FloatPart::Answer(f));
+        }
+        Err(Error::Input(e)) => {
+            answer.float_note = Some(format!("the f64 computation gave no answer: {e}"));
+            answer.float = Some(FloatPart::Failed {
+                mode: "float",
+                method: FLOAT_METHOD,
+                error: e,
+            });
+        }
+        Err(e) => return Err(e),
+    }
+    Ok(answer)
+}
+
 /// The kind.
 pub struct PlanePlaneKind;
 
@@ -271,7 +360,10 @@ impl Kind for PlanePlaneKind {
     type Input = Input<ExactNumber>;
 
     fn answer(text: &str, mode: Mode) -> Result<Value, Error> {
-        by_mode(text, mode, exact, float_answer, |e, f| e.float = Some(f))
+        match mode {
+            Mode::Exact | Mode::Float => by_mode(text, mode, exact, float_answer, |_, _| {}),
+            Mode::Both => to_json(&both(text)?, mode),
+        }
     }
 }
 

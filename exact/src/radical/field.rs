@@ -131,18 +131,23 @@ impl Radical {
     /// An `f64` approximation, for display only: each term is rounded and the rounded terms are
     /// summed, so the result may be far from correctly rounded (and even of the wrong sign) when
     /// terms cancel. Use [`OrderedField::sign`] and comparisons for decisions.
+    ///
+    /// Never NaN: a rational is correctly rounded ([`Rational::to_f64`]); otherwise the terms go
+    /// through [`crate::to_f64::sum_of_roots_to_f64`], so a value beyond f64's range is `±inf`
+    /// with its sign and one below it rounds towards `0` (instead of `inf - inf` or `0 * inf`).
     pub fn to_f64(&self) -> f64 {
-        self.terms
+        if let Some(q) = self.to_rational() {
+            return q.to_f64();
+        }
+        let terms: Vec<(BigRational, BigRational)> = self
+            .terms
             .iter()
             .map(|(m, c)| {
-                let cf = c.to_f64();
-                if m.is_one() {
-                    cf
-                } else {
-                    cf * m.to_f64_checked().unwrap_or(f64::INFINITY).sqrt()
-                }
+                let m = BigInt::from_biguint(BigSign::Plus, m.to_biguint());
+                (c.to_big_rational(), BigRational::from_integer(m))
             })
-            .sum()
+            .collect();
+        crate::to_f64::sum_of_roots_to_f64(&terms)
     }
 
     /// `c · self` for a rational `c`.

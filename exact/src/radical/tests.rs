@@ -260,3 +260,28 @@ fn the_sqrt_message_says_why() {
         Radical::sqrt_of(3).scale(&Rational::from(BigInt::from(2).pow(5000)))
     );
 }
+
+#[test]
+fn to_f64_beyond_f64s_range_is_signed_infinity_or_zero_never_nan() {
+    // Terms of opposite signs that each overflow: the difference of the rounded terms was
+    // `inf - inf`, NaN; the value is `10^400 (sqrt(2) - 1)`, beyond f64's range, positive.
+    assert_eq!(r("10^400*sqrt(2) - 10^400").to_f64(), f64::INFINITY);
+    assert_eq!(r("10^400 - 10^400*sqrt(2)").to_f64(), f64::NEG_INFINITY);
+    // The product P of the primes below 1000 (about 10^416, square-free) as a radicand beyond
+    // 2^1000: with a coefficient that underflows f64 the term was `0 * inf`, NaN; with one in
+    // range it was `inf`. The values are 10^-350 sqrt(P) and 10^-300 sqrt(P).
+    let primes: Vec<u64> = (2..1000).filter(|&n| is_prime_u64(n)).collect();
+    let product = primes.iter().fold(BigUint::one(), |acc, &p| acc * p);
+    let root = Radical::sqrt_rational(&Rational::from(BigInt::from(product))).expect("square-free");
+    let half_log10: f64 = primes.iter().map(|&p| (p as f64).log10()).sum::<f64>() / 2.0;
+    for k in [350u32, 300] {
+        let tiny = r(&format!("1/10^{k}")).to_rational().expect("rational");
+        let got = root.scale(&tiny).to_f64();
+        let want = 10f64.powf(half_log10 - f64::from(k));
+        assert!((got / want - 1.0).abs() < 1e-9, "10^-{k}: {got} vs {want}");
+    }
+    // Tiny values round towards zero with their sign, in-range values as before.
+    assert_eq!(r("10^-400*sqrt(2) - 10^-400").to_f64(), 0.0);
+    assert_eq!(r("sqrt(2)").to_f64(), std::f64::consts::SQRT_2);
+    assert_eq!(r("3/4").to_f64(), 0.75);
+}
