@@ -201,6 +201,10 @@ limits! {
     /// Points of one `sphere_interpolation` problem (an exact linear system of about 2N x 2N
     /// with growing rationals: about N^4 work).
     POINTS = ("points", "number of interpolation points", "", 30);
+    /// Degree of one Bernstein polynomial or Bezier curve of a claims file (`bernstein(i, n, t)`:
+    /// `n`; `bezier(t, p0, ..., pn)`: `n`, one less than the points): its expansion grows about
+    /// as the cube of the degree.
+    BERNSTEIN_DEGREE = ("bernstein-degree", "degree of a Bernstein polynomial or Bezier curve", "", 1_000);
     /// Heap memory of the whole process, in MB (enforced by the command-line tool's allocator).
     MEMORY = ("memory", "memory in use", "MB", 1_536);
 }

@@ -527,6 +527,14 @@ impl Defs {
                 args.len()
             ));
         }
+        if name == "bezier" {
+            limits::BERNSTEIN_DEGREE
+                .check_usize(args.len() - 2)
+                .map_err(|e| ResolveError {
+                    def: None,
+                    message: format!("bezier at {pos}: {e}"),
+                })?;
+        }
         let mut vals = Vec::new();
         for a in args {
             vals.push((self.resolve(a, stack)?, a.pos));
@@ -558,9 +566,9 @@ impl Defs {
                 .ok()
                 .filter(|q| q.is_integer());
             match q.and_then(|q| q.to_string().parse::<u32>().ok()) {
-                Some(k) if k <= 1000 => Ok(k),
+                Some(k) => Ok(k),
                 _ => err(format!(
-                    "{what} of {name} at {} must be an integer constant from 0 to 1000",
+                    "{what} of {name} at {} must be a non-negative integer constant",
                     v.1
                 )),
             }
@@ -650,6 +658,12 @@ impl Defs {
             "bernstein" => {
                 let i = int(&vals[0], "i")?;
                 let n = int(&vals[1], "n")?;
+                limits::BERNSTEIN_DEGREE
+                    .check(u64::from(n))
+                    .map_err(|e| ResolveError {
+                        def: None,
+                        message: format!("bernstein at {pos}: {e}"),
+                    })?;
                 if i > n {
                     return err(format!("bernstein at {pos}: i = {i} > n = {n}"));
                 }
