@@ -182,7 +182,8 @@ fn address_space() -> Option<usize> {
     };
     // SAFETY: `getrlimit` writes one `rlimit` into the live, writable `r`.
     let ok = unsafe { libc::getrlimit(libc::RLIMIT_AS, &mut r) } == 0;
-    (ok && r.rlim_cur != libc::RLIM_INFINITY).then(|| usize::try_from(r.rlim_cur).unwrap_or(usize::MAX))
+    (ok && r.rlim_cur != libc::RLIM_INFINITY)
+        .then(|| usize::try_from(r.rlim_cur).unwrap_or(usize::MAX))
 }
 
 #[cfg(not(unix))]

@@ -331,10 +331,7 @@ fn claims_file_rows_do_not_depend_on_the_number_of_threads() {
 /// Writes `text` to a fresh file `name` under the system temp dir and runs `verify` on it with
 /// `extra` arguments; returns the output.
 fn verify_generated(name: &str, text: &str, extra: &[&str]) -> Output {
-    let dir = std::env::temp_dir().join(format!(
-        "exactcheck-claims-{}-{name}",
-        std::process::id()
-    ));
+    let dir = std::env::temp_dir().join(format!("exactcheck-claims-{}-{name}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("create temp dir");
     let path = dir.join(name);
     std::fs::write(&path, text).expect("write the claims file");
@@ -376,8 +373,7 @@ fn a_long_chain_of_definitions_is_refused_at_the_depth_limit() {
         let out = verify_generated("chain.toml", &chain_file(3000, reversed), &[]);
         let err = refusal(&out);
         assert!(
-            err.contains("exceeds the limit depth = 256 levels")
-                && err.contains("--limit depth=N"),
+            err.contains("exceeds the limit depth = 256 levels") && err.contains("--limit depth=N"),
             "{err}"
         );
     }
@@ -398,7 +394,8 @@ fn a_long_cycle_of_definitions_is_named_not_a_stack_overflow() {
     let defs: String = (0..n)
         .map(|k| format!("a{k} = \"a{} + 1\"\n", (k + 1) % n))
         .collect();
-    let text = format!("[define]\n{defs}[[claim]]\nid = \"cycle\"\nkind = \"identity\"\nlhs = \"a0\"\n");
+    let text =
+        format!("[define]\n{defs}[[claim]]\nid = \"cycle\"\nkind = \"identity\"\nlhs = \"a0\"\n");
     let err = refusal(&verify_generated("cycle.toml", &text, &[]));
     assert!(
         err.contains("define: key a0: the definitions refer to themselves: a0 -> a1 -> ")
@@ -425,11 +422,18 @@ fn twenty_thousand_claims_are_read_in_linear_time() {
     assert_eq!(file.claims.len(), n);
     assert_eq!(file.claims[n - 1].line, 5 * (n - 1) + 2);
     // A duplicate id at the end is still found, with the line of the first.
-    let dup = format!("{text}[[claim]]\nid = \"c7\"\nkind = \"identity\"\nlhs = \"x\"\nrhs = \"x\"\n");
-    let e = claimfile::parse(&dup, "many.toml", "many").err().unwrap().to_string();
+    let dup =
+        format!("{text}[[claim]]\nid = \"c7\"\nkind = \"identity\"\nlhs = \"x\"\nrhs = \"x\"\n");
+    let e = claimfile::parse(&dup, "many.toml", "many")
+        .err()
+        .unwrap()
+        .to_string();
     assert!(e.contains("duplicate id (first at line 37)"), "{e}");
     let out = verify_generated("many.toml", &text, &[]);
     let table = String::from_utf8_lossy(&out.stdout);
     assert_eq!(out.status.code(), Some(0), "{table}");
-    assert!(table.contains(&format!("{n} claims, {n} as expected")), "{table}");
+    assert!(
+        table.contains(&format!("{n} claims, {n} as expected")),
+        "{table}"
+    );
 }

@@ -409,7 +409,15 @@ fn a_memory_limit_above_the_address_space_is_one_line_not_an_allocation_abort() 
     for memory in ["memory=100000", "memory=1536"] {
         let out = with_address_space(
             300_000,
-            &["prove", &lhs, "0", "--limit", memory, "--limit", "terms=100000000"],
+            &[
+                "prove",
+                &lhs,
+                "0",
+                "--limit",
+                memory,
+                "--limit",
+                "terms=100000000",
+            ],
         );
         let e = one_error_line(&out);
         assert!(

@@ -205,6 +205,11 @@ limits! {
     /// `n`; `bezier(t, p0, ..., pn)`: `n`, one less than the points): its expansion grows about
     /// as the cube of the degree.
     BERNSTEIN_DEGREE = ("bernstein-degree", "degree of a Bernstein polynomial or Bezier curve", "", 1_000);
+    /// Work of one exact `ruled_line` problem: its degree `m + n` times the dimension `2^k` of
+    /// the square-root field of its numbers (`k` independent square roots). The exact
+    /// subdivision's cost grows about as the sixth power of the degree and several-fold per
+    /// square root.
+    RULED_WORK = ("ruled-work", "degree times field dimension of a ruled_line problem", "", 32);
     /// Heap memory of the whole process, in MB (enforced by the command-line tool's allocator).
     MEMORY = ("memory", "memory in use", "MB", 1_536);
 }

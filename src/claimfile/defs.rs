@@ -29,8 +29,8 @@
 //! Hand-written: the rewriting is a small recursion over the expression grammar of
 //! `exactcheck_exact::expr`; no crate knows that grammar.
 
-use exactcheck_exact::expr::{parse_expr_with_calls, AddOp, Expr, ExprKind, MulOp};
 use exactcheck_core::limits;
+use exactcheck_exact::expr::{parse_expr_with_calls, AddOp, Expr, ExprKind, MulOp};
 use exactcheck_exact::Rational;
 use std::collections::{HashMap, HashSet};
 

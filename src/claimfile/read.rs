@@ -399,10 +399,7 @@ fn read_json(text: &str) -> Result<(RawFile, Index), ReadError> {
         at: HashMap::new(),
     };
     scanner.value("")?;
-    Ok((
-        raw,
-        Index::new(text, scanner.at),
-    ))
+    Ok((raw, Index::new(text, scanner.at)))
 }
 
 /// Positions of the keys of JSON text that `serde_json` has already accepted.

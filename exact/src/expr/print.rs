@@ -32,16 +32,12 @@ impl Expr {
     /// parentheses. So a tree built by substitution can be held to the `depth` limit the parser
     /// applies without refusing any tree the parser accepts.
     pub fn nesting(&self) -> usize {
-        let wrapped = |x: &Expr, min: u8| {
-            x.nesting() + if precedence(x) < min { 2 } else { 0 }
-        };
+        let wrapped = |x: &Expr, min: u8| x.nesting() + if precedence(x) < min { 2 } else { 0 };
         match &self.kind {
             ExprKind::Number(_) | ExprKind::Var(_) => 0,
             ExprKind::Neg(x) => 1 + wrapped(x, 3),
             ExprKind::Sum(items) => items.iter().map(|(_, x)| wrapped(x, 2)).max().unwrap_or(0),
-            ExprKind::Product(items) => {
-                items.iter().map(|(_, x)| wrapped(x, 3)).max().unwrap_or(0)
-            }
+            ExprKind::Product(items) => items.iter().map(|(_, x)| wrapped(x, 3)).max().unwrap_or(0),
             ExprKind::Pow(base, exp) => {
                 let e = match exp.kind {
                     ExprKind::Pow(..) => exp.nesting(),

@@ -85,7 +85,10 @@ fn sums_and_products_chain_from_the_left_in_the_order_written() {
         p.outputs[0],
         Node::Chain(
             b(Node::Input(0)),
-            vec![(ChainOp::Sub, Node::Input(1)), (ChainOp::Add, Node::Input(2))]
+            vec![
+                (ChainOp::Sub, Node::Input(1)),
+                (ChainOp::Add, Node::Input(2))
+            ]
         )
     );
     let p = Program::parse("x / y * z", None).unwrap();
@@ -93,7 +96,10 @@ fn sums_and_products_chain_from_the_left_in_the_order_written() {
         p.outputs[0],
         Node::Chain(
             b(Node::Input(0)),
-            vec![(ChainOp::Div, Node::Input(1)), (ChainOp::Mul, Node::Input(2))]
+            vec![
+                (ChainOp::Div, Node::Input(1)),
+                (ChainOp::Mul, Node::Input(2))
+            ]
         )
     );
     // Division by a non-constant is allowed; juxtaposition multiplies; -x^2 = -(x^2).
@@ -177,7 +183,10 @@ fn variables_in_order_of_appearance_or_as_listed() {
         p.outputs[0],
         Node::Chain(
             b(Node::Mul(b(Node::Input(1)), b(Node::Input(0)))),
-            vec![(ChainOp::Add, Node::Input(2)), (ChainOp::Sub, Node::Input(0))]
+            vec![
+                (ChainOp::Add, Node::Input(2)),
+                (ChainOp::Sub, Node::Input(0))
+            ]
         )
     );
     assert_eq!(

@@ -849,7 +849,9 @@ fn subst_node(n: &Node, map: &[(usize, Node)]) -> Node {
         Node::Div(x, y) => Node::Div(b(x), b(y)),
         Node::Chain(x, rest) => Node::Chain(
             b(x),
-            rest.iter().map(|(op, y)| (*op, subst_node(y, map))).collect(),
+            rest.iter()
+                .map(|(op, y)| (*op, subst_node(y, map)))
+                .collect(),
         ),
         Node::Sqrt(a) => Node::Sqrt(b(a)),
         Node::Abs(a) => Node::Abs(b(a)),

@@ -290,7 +290,13 @@ fn parse_number(atom: &str) -> Result<Option<Rational>, String> {
         }
         for part in [n, d] {
             let written = part.len() as u64;
-            check_literal_size(&format!("the literal `{atom}`"), written * 3, Some(written), 10, 0)?;
+            check_literal_size(
+                &format!("the literal `{atom}`"),
+                written * 3,
+                Some(written),
+                10,
+                0,
+            )?;
         }
         let d: BigInt = d.parse().expect("checked digits");
         if d.is_zero() {
