@@ -280,27 +280,24 @@ fn a_high_degree_over_square_roots_is_refused_before_the_work() {
     let point = |i: usize| format!("[{},{},{}]", i % 5, (i * 3) % 7, (i * 5) % 11);
     let base: Vec<String> = (0..31).map(point).collect();
     let mut dirs: Vec<String> = (0..30).map(|i| point(i + 40)).collect();
+    let problem = |dirs: &[String]| {
+        format!(
+            r#"{{"kind":"ruled_line","base":[{}],"directions":[{}],{line}}}"#,
+            base.join(","),
+            dirs.join(",")
+        )
+    };
     dirs[0] = r#"["sqrt(2)",1,1]"#.into();
-    let problem = format!(
-        r#"{{"kind":"ruled_line","base":[{}],"directions":[{}],{line}}}"#,
-        base.join(","),
-        dirs.join(",")
-    );
     refused(
-        &problem,
+        &problem(&dirs),
         &[
             "m + n = 59 with 1 independent square roots",
             "exceeds the limit ruled-work = 32",
         ],
     );
     dirs[0] = "[1,1,1]".into();
-    let problem = format!(
-        r#"{{"kind":"ruled_line","base":[{}],"directions":[{}],{line}}}"#,
-        base.join(","),
-        dirs.join(",")
-    );
     refused(
-        &problem,
+        &problem(&dirs),
         &["m + n = 59 with 0 independent", "ruled-work = 32"],
     );
 }

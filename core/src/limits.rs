@@ -210,6 +210,9 @@ limits! {
     /// subdivision's cost grows about as the sixth power of the degree and several-fold per
     /// square root.
     RULED_WORK = ("ruled-work", "degree times field dimension of a ruled_line problem", "", 32);
+    /// Size in bits of the Bernstein coefficients `u` and `v` of one exact `ph_offset` problem,
+    /// all together: every exact polynomial of the answer is built from their products.
+    PH_BITS = ("ph-bits", "size of the coefficients of a ph_offset problem", "bits", 2_048);
     /// Heap memory of the whole process, in MB (enforced by the command-line tool's allocator).
     MEMORY = ("memory", "memory in use", "MB", 1_536);
 }

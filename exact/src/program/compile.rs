@@ -172,48 +172,55 @@ fn compile(e: &Expr, vars: &mut Vars) -> Result<Node, CompileError> {
             }))
         }
         ExprKind::Sum(items) => {
-            let Some(((op, t), rest)) = items.split_first() else {
-                return Ok(Node::Const(Rational::ZERO));
+            let op = |op: &AddOp| match op {
+                AddOp::Plus => ChainOp::Add,
+                AddOp::Minus => ChainOp::Sub,
             };
-            let t = compile(t, vars)?;
-            let first = match op {
+            // A leading `-` is a negation.
+            let first = |op: &AddOp, t: Node| match op {
                 AddOp::Plus => t,
                 AddOp::Minus => Node::Neg(Box::new(t)),
             };
-            let mut ops = Vec::with_capacity(rest.len());
-            for (op, t) in rest {
-                let op = match op {
-                    AddOp::Plus => ChainOp::Add,
-                    AddOp::Minus => ChainOp::Sub,
-                };
-                ops.push((op, compile(t, vars)?));
-            }
-            chain(first, ops)
+            compile_chain(items, vars, Rational::ZERO, first, op)?
         }
         ExprKind::Product(items) => {
-            let Some(((op, f), rest)) = items.split_first() else {
-                return Ok(Node::Const(Rational::ONE));
+            let op = |op: &MulOp| match op {
+                MulOp::Times => ChainOp::Mul,
+                MulOp::Divide => ChainOp::Div,
             };
-            let f = compile(f, vars)?;
-            let first = match op {
+            // A leading `/` is a reciprocal.
+            let first = |op: &MulOp, f: Node| match op {
                 MulOp::Times => f,
                 MulOp::Divide => Node::Div(Box::new(Node::Const(Rational::ONE)), Box::new(f)),
             };
-            let mut ops = Vec::with_capacity(rest.len());
-            for (op, f) in rest {
-                let op = match op {
-                    MulOp::Times => ChainOp::Mul,
-                    MulOp::Divide => ChainOp::Div,
-                };
-                ops.push((op, compile(f, vars)?));
-            }
-            chain(first, ops)
+            compile_chain(items, vars, Rational::ONE, first, op)?
         }
         ExprKind::Pow(base, exp) => {
             let b = compile(base, vars)?;
             Node::Pow(Box::new(b), exponent(exp)?, PowStyle::Multiply)
         }
     })
+}
+
+/// The left-to-right chain of a sum's terms or a product's factors (`empty` when there are
+/// none): `first` makes the node of the first item from its operator, `op` the operation of each
+/// later one.
+fn compile_chain<O>(
+    items: &[(O, Expr)],
+    vars: &mut Vars,
+    empty: Rational,
+    first: impl Fn(&O, Node) -> Node,
+    op: impl Fn(&O) -> ChainOp,
+) -> Result<Node, CompileError> {
+    let Some(((o, x), rest)) = items.split_first() else {
+        return Ok(Node::Const(empty));
+    };
+    let head = first(o, compile(x, vars)?);
+    let mut ops = Vec::with_capacity(rest.len());
+    for (o, x) in rest {
+        ops.push((op(o), compile(x, vars)?));
+    }
+    Ok(chain(head, ops))
 }
 
 /// `first op1 b1 op2 b2 ...` from the left: `first` alone, one binary node, or a
