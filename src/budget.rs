@@ -9,7 +9,10 @@
 //!   count of the bytes in use. An allocation that would take the count past the `memory` limit
 //!   (1,536 MB by default) ends the process at once with one line naming the limit and exit
 //!   status 2, instead of the runtime's "memory allocation of N bytes failed" abort (or the
-//!   kernel's OOM killer). Each thread keeps its own balance and adds it to the shared count
+//!   kernel's OOM killer). Where the address space is smaller (`ulimit -v`, `RLIMIT_AS`), the
+//!   cap is three quarters of it (the rest is code, stacks and the allocator's own slack), and
+//!   an allocation the system refuses all the same ends the process with one line too, never
+//!   with the runtime's abort. Each thread keeps its own balance and adds it to the shared count
 //!   once it exceeds 256 kB either way (so the cores do not contend for one counter; the cap
 //!   holds to within 256 kB per thread); the message is written without allocating (the
 //!   allocator cannot call back into itself).
@@ -41,6 +44,8 @@ static IN_USE: AtomicIsize = AtomicIsize::new(0);
 /// The most bytes [`Accounting`] lets be in use; `usize::MAX` (no cap) until
 /// [`enforce_memory_limit`] sets it.
 static CAP: AtomicUsize = AtomicUsize::new(usize::MAX);
+/// Whether [`CAP`] is the address space's bound rather than the `memory` limit's.
+static CAP_IS_ADDRESS_SPACE: AtomicBool = AtomicBool::new(false);
 
 /// How far a thread's own balance may drift before it is added to [`IN_USE`] (and checked
 /// against the cap). Counting every allocation in the one shared atomic made all cores write the
@@ -114,7 +119,7 @@ unsafe impl GlobalAlloc for Accounting {
         // SAFETY: the caller's contract for `alloc` is `System`'s.
         let p = unsafe { System.alloc(layout) };
         if p.is_null() {
-            Accounting::shrink(layout.size());
+            refused(layout.size());
         }
         p
     }
@@ -124,7 +129,7 @@ unsafe impl GlobalAlloc for Accounting {
         // SAFETY: as for `alloc`.
         let p = unsafe { System.alloc_zeroed(layout) };
         if p.is_null() {
-            Accounting::shrink(layout.size());
+            refused(layout.size());
         }
         p
     }
@@ -143,9 +148,7 @@ unsafe impl GlobalAlloc for Accounting {
         // SAFETY: as for `dealloc`; `new_size` satisfies `realloc`'s contract by the caller's.
         let p = unsafe { System.realloc(ptr, layout, new_size) };
         if p.is_null() {
-            if new_size > old {
-                Accounting::shrink(new_size - old);
-            }
+            refused(new_size);
         } else if new_size < old {
             Accounting::shrink(old - new_size);
         }
@@ -155,10 +158,40 @@ unsafe impl GlobalAlloc for Accounting {
 
 /// Caps the bytes in use at the `memory` limit (in MB). Called once by the CLI after the
 /// `--limit` flags are read.
+/// Where the address space is bounded (`RLIMIT_AS`) below the limit, the cap is three quarters
+/// of that bound instead, so that the count reaches the cap before the system refuses memory.
 pub fn enforce_memory_limit() {
     let mb = limits::MEMORY.get();
     let bytes = usize::try_from(mb.saturating_mul(1 << 20)).unwrap_or(usize::MAX);
-    CAP.store(bytes, Ordering::Relaxed);
+    let room = address_space().map(|b| b / 4 * 3);
+    match room {
+        Some(room) if room < bytes => {
+            CAP.store(room, Ordering::Relaxed);
+            CAP_IS_ADDRESS_SPACE.store(true, Ordering::Relaxed);
+        }
+        _ => {
+            CAP.store(bytes, Ordering::Relaxed);
+            CAP_IS_ADDRESS_SPACE.store(false, Ordering::Relaxed);
+        }
+    }
+}
+
+/// The process's bound on its address space in bytes (`RLIMIT_AS`), if it has one.
+#[cfg(unix)]
+fn address_space() -> Option<usize> {
+    let mut r = libc::rlimit {
+        rlim_cur: 0,
+        rlim_max: 0,
+    };
+    // SAFETY: `getrlimit` writes one `rlimit` into the live, writable `r`.
+    let ok = unsafe { libc::getrlimit(libc::RLIMIT_AS, &mut r) } == 0;
+    (ok && r.rlim_cur != libc::RLIM_INFINITY)
+        .then(|| usize::try_from(r.rlim_cur).unwrap_or(usize::MAX))
+}
+
+#[cfg(not(unix))]
+fn address_space() -> Option<usize> {
+    None
 }
 
 /// Bytes in use now (counted only when [`Accounting`] is the global allocator).
@@ -243,9 +276,36 @@ fn exit_with(line: &[u8]) -> ! {
 #[cold]
 fn out_of_memory() -> ! {
     let l = &limits::MEMORY;
+    if CAP_IS_ADDRESS_SPACE.load(Ordering::Relaxed) {
+        die(format_args!(
+            "exactcheck: error: {} exceeds {} MB, three quarters of the address space this process may use (ulimit -v), below the limit {} = {} {}\n",
+            l.what(),
+            CAP.load(Ordering::Relaxed) >> 20,
+            l.name(),
+            l.get(),
+            l.unit()
+        ))
+    }
     die(format_args!(
         "exactcheck: error: {} exceeds the limit {} = {} {} (raise it with --limit {}=N)\n",
         l.what(),
+        l.name(),
+        l.get(),
+        l.unit(),
+        l.name()
+    ))
+}
+
+/// Ends the process with one line when the system refuses an allocation of `size` bytes that
+/// the cap allowed (an address space smaller than the limit, or memory exhausted): the runtime
+/// would abort instead.
+#[cold]
+fn refused(size: usize) -> ! {
+    let l = &limits::MEMORY;
+    die(format_args!(
+        "exactcheck: error: the system refused {} MB more memory with {} MB in use, below the limit {} = {} {} (lower it with --limit {}=N)\n",
+        size.div_ceil(1 << 20),
+        bytes_in_use() >> 20,
         l.name(),
         l.get(),
         l.unit(),

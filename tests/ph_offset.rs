@@ -871,3 +871,16 @@ fn the_quintic_example_lists_its_minimiser() {
         &m["at"],
     );
 }
+
+#[test]
+fn coefficients_of_thousands_of_digits_are_refused_before_the_work() {
+    // Linear u, v with 9,999-digit coefficients ran for 144 s.
+    let big = format!("1{}", "3".repeat(9998));
+    let problem =
+        format!(r#"{{"kind":"ph_offset","u":["{big}",-1],"v":[1,"{big}"],"start":[0,0],"r":3}}"#);
+    common::refused(
+        &problem,
+        &[],
+        &["u, v: ", "exceeds the limit ph-bits = 2048 bits"],
+    );
+}

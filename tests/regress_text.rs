@@ -550,3 +550,23 @@ fn readme_program_examples_are_the_tested_files() {
         assert!(readme.contains(&text), "README lacks {file} verbatim");
     }
 }
+
+#[test]
+fn a_sum_of_thousands_of_terms_regresses_instead_of_overflowing_a_workers_stack() {
+    // A left-deep tree of 5,000 additions overflowed a rayon worker's stack (exit status 134).
+    let n = 5000;
+    let sum = vec!["x"; n].join("+");
+    let doc = json_of(&exactcheck(&[
+        "regress",
+        "--formula",
+        &sum,
+        "--domain",
+        "x in [1, 2]",
+        "--samples",
+        "20",
+        "--json",
+    ]));
+    let r = report(&doc);
+    assert_eq!(r["compared"], 20, "{r}");
+    assert_eq!(r["domain_errors"], 0, "{r}");
+}

@@ -387,6 +387,46 @@ fn the_memory_limit_ends_the_run_with_one_line_instead_of_an_abort() {
     );
 }
 
+/// Runs `exactcheck ARGS...` with its address space bounded to `kib` KiB (`ulimit -v`).
+#[cfg(target_os = "linux")]
+fn with_address_space(kib: u64, args: &[&str]) -> Output {
+    Command::new("sh")
+        .arg("-c")
+        .arg(format!("ulimit -v {kib} && exec \"$0\" \"$@\""))
+        .arg(env!("CARGO_BIN_EXE_exactcheck"))
+        .args(args)
+        .output()
+        .expect("run sh")
+}
+
+#[cfg(target_os = "linux")]
+#[test]
+fn a_memory_limit_above_the_address_space_is_one_line_not_an_allocation_abort() {
+    // (x0 + ... + x29)^6 needs far more than 300 MB; the system refused an allocation before
+    // the count reached the limit, and the runtime aborted (exit status 134).
+    let vars: Vec<String> = (0..30).map(|i| format!("x{i}")).collect();
+    let lhs = format!("({})^6", vars.join("+"));
+    for memory in ["memory=100000", "memory=1536"] {
+        let out = with_address_space(
+            300_000,
+            &[
+                "prove",
+                &lhs,
+                "0",
+                "--limit",
+                memory,
+                "--limit",
+                "terms=100000000",
+            ],
+        );
+        let e = one_error_line(&out);
+        assert!(
+            e.starts_with("exactcheck: error: ") && e.contains("memory"),
+            "{memory}: {e}"
+        );
+    }
+}
+
 #[test]
 fn timeout_ends_a_long_run_with_one_line_and_leaves_a_short_one_alone() {
     let start = Instant::now();

@@ -779,3 +779,32 @@ mod families {
         assert_eq!(a["covered"][0]["to"]["value"], "0");
     }
 }
+
+#[test]
+fn a_high_degree_over_square_roots_is_refused_before_the_work() {
+    // m + n = 60 with square roots ran past 150 s and 1.1 GB; over Q it ran past a minute.
+    let line = r#""line":{"point":["1/3",0,0],"direction":[1,2,3]}"#;
+    let point = |i: usize| format!("[{},{},{}]", i % 5, (i * 3) % 7, (i * 5) % 11);
+    let base: Vec<String> = (0..31).map(point).collect();
+    let mut dirs: Vec<String> = (0..30).map(|i| point(i + 40)).collect();
+    let problem = |dirs: &[String]| {
+        format!(
+            r#"{{"kind":"ruled_line","base":[{}],"directions":[{}],{line}}}"#,
+            base.join(","),
+            dirs.join(",")
+        )
+    };
+    dirs[0] = r#"["sqrt(2)",1,1]"#.into();
+    refused(
+        &problem(&dirs),
+        &[
+            "m + n = 59 with 1 independent square roots",
+            "exceeds the limit ruled-work = 32",
+        ],
+    );
+    dirs[0] = "[1,1,1]".into();
+    refused(
+        &problem(&dirs),
+        &["m + n = 59 with 0 independent", "ruled-work = 32"],
+    );
+}

@@ -201,6 +201,18 @@ limits! {
     /// Points of one `sphere_interpolation` problem (an exact linear system of about 2N x 2N
     /// with growing rationals: about N^4 work).
     POINTS = ("points", "number of interpolation points", "", 30);
+    /// Degree of one Bernstein polynomial or Bezier curve of a claims file (`bernstein(i, n, t)`:
+    /// `n`; `bezier(t, p0, ..., pn)`: `n`, one less than the points): its expansion grows about
+    /// as the cube of the degree.
+    BERNSTEIN_DEGREE = ("bernstein-degree", "degree of a Bernstein polynomial or Bezier curve", "", 1_000);
+    /// Work of one exact `ruled_line` problem: its degree `m + n` times the dimension `2^k` of
+    /// the square-root field of its numbers (`k` independent square roots). The exact
+    /// subdivision's cost grows about as the sixth power of the degree and several-fold per
+    /// square root.
+    RULED_WORK = ("ruled-work", "degree times field dimension of a ruled_line problem", "", 32);
+    /// Size in bits of the Bernstein coefficients `u` and `v` of one exact `ph_offset` problem,
+    /// all together: every exact polynomial of the answer is built from their products.
+    PH_BITS = ("ph-bits", "size of the coefficients of a ph_offset problem", "bits", 2_048);
     /// Heap memory of the whole process, in MB (enforced by the command-line tool's allocator).
     MEMORY = ("memory", "memory in use", "MB", 1_536);
     /// Worker threads of the parallel pool (`RAYON_NUM_THREADS` asks for a number; each thread

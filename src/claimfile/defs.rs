@@ -22,14 +22,17 @@
 //! cycle is an error naming it (`A -> B -> A`). A substituted value takes the position of the
 //! name it replaces, so a later error (division by a non-constant, ...) points into the text the
 //! user typed. The size of a resolved tree is bounded ([`MAX_NODES`]): definitions that double
-//! at each level cannot expand without limit.
+//! at each level cannot expand without limit. Its nesting (parentheses, signs and calls of its
+//! printed form) is bounded by the `depth` limit, as a typed formula's is, and so is the number of definitions resolved inside one another: a long chain or cycle of definitions
+//! is an error naming the limit or the cycle, not a stack overflow.
 //!
 //! Hand-written: the rewriting is a small recursion over the expression grammar of
 //! `exactcheck_exact::expr`; no crate knows that grammar.
 
+use exactcheck_core::limits;
 use exactcheck_exact::expr::{parse_expr_with_calls, AddOp, Expr, ExprKind, MulOp};
 use exactcheck_exact::Rational;
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 
 /// The largest number of nodes of a resolved expression.
 pub const MAX_NODES: usize = 500_000;
@@ -79,6 +82,8 @@ impl Val {
 pub struct Defs {
     /// `(name, text(s))` in file order; a vector has one text per coordinate.
     entries: Vec<(String, DefText)>,
+    /// The position in `entries` of each name.
+    index: HashMap<String, usize>,
     resolved: HashMap<String, Val>,
 }
 
@@ -127,8 +132,14 @@ impl Defs {
                 ));
             }
         }
+        let index = entries
+            .iter()
+            .enumerate()
+            .map(|(i, (n, _))| (n.clone(), i))
+            .collect();
         Ok(Defs {
             entries,
+            index,
             resolved: HashMap::new(),
         })
     }
@@ -188,12 +199,13 @@ impl Defs {
                 ),
             });
         }
+        if stack.len() >= limits::DEPTH.get_usize() {
+            return Err(self.too_deep(stack));
+        }
         let text = self
-            .entries
-            .iter()
-            .find(|(n, _)| n == name)
-            .map(|(_, t)| t.clone())
-            .expect("definition() is called for defined names only");
+            .text(name)
+            .expect("definition() is called for defined names only")
+            .clone();
         stack.push(name.to_string());
         let in_def = |e: ResolveError| ResolveError {
             def: Some(e.def.unwrap_or_else(|| name.to_string())),
@@ -240,16 +252,112 @@ impl Defs {
 
     /// Whether `name` is defined.
     pub fn is_defined(&self, name: &str) -> bool {
-        self.entries.iter().any(|(n, _)| n == name)
+        self.index.contains_key(name)
+    }
+
+    /// The text of the definition `name`.
+    fn text(&self, name: &str) -> Option<&DefText> {
+        self.index.get(name).map(|&i| &self.entries[i].1)
+    }
+
+    /// The definitions `name`'s text refers to (none when it does not parse: resolving it
+    /// reports that).
+    fn references(&self, name: &str) -> Vec<String> {
+        let texts = match self.text(name) {
+            Some(DefText::Scalar(t)) => std::slice::from_ref(t),
+            Some(DefText::Vector(ts)) => ts.as_slice(),
+            None => &[],
+        };
+        let mut vars = Vec::new();
+        for t in texts {
+            if let Ok(e) = parse_expr_with_calls(t) {
+                e.collect_variables(&mut vars);
+            }
+        }
+        vars.retain(|v| self.is_defined(v));
+        vars
+    }
+
+    /// The error for definitions resolved inside one another deeper than the `depth` limit
+    /// (`stack` holds them, outermost first): the cycle they lead into when there is one,
+    /// otherwise the limit.
+    fn too_deep(&self, stack: &[String]) -> ResolveError {
+        let outer = stack[0].clone();
+        let message = match self.find_cycle(&outer) {
+            Some(cycle) => {
+                let n = cycle.len();
+                let shown = if n <= 12 {
+                    cycle.join(" -> ")
+                } else {
+                    format!(
+                        "{} -> ... -> {}",
+                        cycle[..6].join(" -> "),
+                        cycle[n - 3..].join(" -> ")
+                    )
+                };
+                format!(
+                    "the definitions refer to themselves: {shown} -> {} (a cycle of {n} definitions)",
+                    cycle[0]
+                )
+            }
+            None => format!(
+                "definitions used inside one another ({outer} -> ...): {}",
+                limits::DEPTH.exceeded(format!("more than {}", stack.len()))
+            ),
+        };
+        ResolveError {
+            def: Some(outer),
+            message,
+        }
+    }
+
+    /// A cycle of definitions reachable from `start`, in order: a depth-first walk with its own
+    /// stack, so that a long chain cannot overflow the thread's.
+    fn find_cycle(&self, start: &str) -> Option<Vec<String>> {
+        let mut done: HashSet<String> = HashSet::new();
+        let mut on_path: HashMap<String, usize> = HashMap::new();
+        // (name, its references, the next one to follow)
+        let mut path: Vec<(String, Vec<String>, usize)> = Vec::new();
+        on_path.insert(start.to_string(), 0);
+        path.push((start.to_string(), self.references(start), 0));
+        while let Some((_, refs, next)) = path.last_mut() {
+            let Some(r) = refs.get(*next).cloned() else {
+                let (name, _, _) = path.pop().expect("the path is not empty");
+                on_path.remove(&name);
+                done.insert(name);
+                continue;
+            };
+            *next += 1;
+            if let Some(&i) = on_path.get(&r) {
+                return Some(path[i..].iter().map(|(n, _, _)| n.clone()).collect());
+            }
+            if !done.contains(&r) {
+                on_path.insert(r.clone(), path.len());
+                let refs = self.references(&r);
+                path.push((r, refs, 0));
+            }
+        }
+        None
     }
 
     /// Resolves a parsed expression.
     fn resolve(&mut self, e: &Expr, stack: &mut Vec<String>) -> R<Val> {
         let v = self.resolve_inner(e, stack)?;
-        let n: usize = v.components().iter().map(count_nodes).sum();
+        let components = match &v {
+            Val::Scalar(x) => std::slice::from_ref(x),
+            Val::Vector(xs) => xs.as_slice(),
+        };
+        let n: usize = components.iter().map(count_nodes).sum();
         if n > MAX_NODES {
             return err(format!(
                 "the expression at {} expands to more than {MAX_NODES} nodes (MAX_NODES) after substituting the definitions",
+                e.pos
+            ));
+        }
+        let depth = components.iter().map(Expr::nesting).max().unwrap_or(0);
+        if let Err(error) = limits::DEPTH.check_usize(depth) {
+            return err(format!(
+                "the expression at {} after substituting the definitions: {error}",
                 e.pos
             ));
         }
@@ -419,6 +527,14 @@ impl Defs {
                 args.len()
             ));
         }
+        if name == "bezier" {
+            limits::BERNSTEIN_DEGREE
+                .check_usize(args.len() - 2)
+                .map_err(|e| ResolveError {
+                    def: None,
+                    message: format!("bezier at {pos}: {e}"),
+                })?;
+        }
         let mut vals = Vec::new();
         for a in args {
             vals.push((self.resolve(a, stack)?, a.pos));
@@ -450,9 +566,9 @@ impl Defs {
                 .ok()
                 .filter(|q| q.is_integer());
             match q.and_then(|q| q.to_string().parse::<u32>().ok()) {
-                Some(k) if k <= 1000 => Ok(k),
+                Some(k) => Ok(k),
                 _ => err(format!(
-                    "{what} of {name} at {} must be an integer constant from 0 to 1000",
+                    "{what} of {name} at {} must be a non-negative integer constant",
                     v.1
                 )),
             }
@@ -542,6 +658,12 @@ impl Defs {
             "bernstein" => {
                 let i = int(&vals[0], "i")?;
                 let n = int(&vals[1], "n")?;
+                limits::BERNSTEIN_DEGREE
+                    .check(u64::from(n))
+                    .map_err(|e| ResolveError {
+                        def: None,
+                        message: format!("bernstein at {pos}: {e}"),
+                    })?;
                 if i > n {
                     return err(format!("bernstein at {pos}: i = {i} > n = {n}"));
                 }

@@ -231,15 +231,17 @@ pub fn parse(text: &str, file: &str, default_name: &str) -> Result<ClaimsFile, E
     })?;
     let defs = RefCell::new(defs);
     let mut claims: Vec<FileClaim> = Vec::new();
+    // Each id and the line of its claim, to find a duplicate without a scan per claim.
+    let mut first_line: HashMap<&str, usize> = HashMap::new();
     for (i, c) in raw.claim.iter().enumerate() {
         let base = format!("claim.{i}");
         if c.id.trim().is_empty() {
             return Err(fail(&format!("{base}.id"), "the id is empty".into()));
         }
-        if let Some(first) = claims.iter().find(|o| o.id == c.id) {
+        if let Some(first) = first_line.get(c.id.as_str()) {
             return Err(fail(
                 &format!("{base}.id"),
-                format!("duplicate id (first at line {})", first.line),
+                format!("duplicate id (first at line {first})"),
             ));
         }
         let key_fail = |key: &str, m: String| fail(&format!("{base}.{key}"), m);
@@ -271,13 +273,15 @@ pub fn parse(text: &str, file: &str, default_name: &str) -> Result<ClaimsFile, E
         for key in read::present_keys(c) {
             key_lines.insert(key.to_string(), index.line(&format!("{base}.{key}")));
         }
+        let line = index.line(&format!("{base}.id"));
+        first_line.insert(&c.id, line);
         claims.push(FileClaim {
             id: c.id.clone(),
             statement: c.statement.clone().unwrap_or_default(),
             kind: c.kind.clone(),
             expect,
             notation: claim_notation,
-            line: index.line(&format!("{base}.id")),
+            line,
             key_lines,
             check,
         });

@@ -11,7 +11,7 @@
 
 use serde::Deserialize;
 use serde_json::{Map, Value};
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 
 /// The top level of a claims file.
 #[derive(Debug, Deserialize)]
@@ -135,17 +135,26 @@ pub fn format_of(path: &str, text: &str) -> Format {
 
 /// Where the keys of a file are: path (`claim.2.lhs`, `define.A`) to byte offset.
 pub struct Index {
-    text: String,
+    /// The byte offset of every newline of the text, in order.
+    newlines: Vec<usize>,
     at: HashMap<String, usize>,
 }
 
 impl Index {
-    /// The line (from 1) of a byte offset.
+    fn new(text: &str, at: HashMap<String, usize>) -> Index {
+        let newlines = text
+            .bytes()
+            .enumerate()
+            .filter(|&(_, b)| b == b'\n')
+            .map(|(i, _)| i)
+            .collect();
+        Index { newlines, at }
+    }
+
+    /// The line (from 1) of a byte offset: a binary search in the newlines, so that looking up
+    /// every key of a large file stays linear in its size.
     pub fn line_of(&self, offset: usize) -> usize {
-        1 + self.text.as_bytes()[..offset.min(self.text.len())]
-            .iter()
-            .filter(|&&b| b == b'\n')
-            .count()
+        1 + self.newlines.partition_point(|&n| n < offset)
     }
 
     /// The line of a path, or of its nearest ancestor that is in the index (1 if none).
@@ -285,10 +294,7 @@ fn read_toml(text: &str) -> Result<(RawFile, Index), ReadError> {
     let tree = toml::de::DeTable::parse(text).map_err(syntax)?;
     let mut at = HashMap::new();
     index_toml_table(tree.get_ref(), "", &mut at);
-    let index = Index {
-        text: text.to_string(),
-        at,
-    };
+    let index = Index::new(text, at);
     let de = toml::Deserializer::parse(text).map_err(syntax)?;
     let raw: RawFile = serde_path_to_error::deserialize(de).map_err(|e| {
         let ids = loose_ids(toml::from_str::<Value>(text).ok());
@@ -393,13 +399,7 @@ fn read_json(text: &str) -> Result<(RawFile, Index), ReadError> {
         at: HashMap::new(),
     };
     scanner.value("")?;
-    Ok((
-        raw,
-        Index {
-            text: text.to_string(),
-            at: scanner.at,
-        },
-    ))
+    Ok((raw, Index::new(text, scanner.at)))
 }
 
 /// Positions of the keys of JSON text that `serde_json` has already accepted.
@@ -436,7 +436,7 @@ impl JsonScanner<'_> {
         match self.s.get(self.i) {
             Some(b'{') => {
                 self.i += 1;
-                let mut seen: Vec<String> = Vec::new();
+                let mut seen: HashSet<String> = HashSet::new();
                 loop {
                     self.ws();
                     match self.s.get(self.i) {
@@ -459,7 +459,7 @@ impl JsonScanner<'_> {
                                     ),
                                 });
                             }
-                            seen.push(key);
+                            seen.insert(key);
                             self.at.insert(p.clone(), pos);
                             self.ws();
                             self.i += 1; // ':'

@@ -52,7 +52,8 @@
 //!
 //! # Limits
 //! At most [`MAX_COEFFICIENTS`] coefficients in `u` and `v` (degree `4k <= 60` of the cusp
-//! polynomial, whose Bernstein products use binomial coefficients in 64-bit integers).
+//! polynomial, whose Bernstein products use binomial coefficients in 64-bit integers). In exact
+//! mode their sizes in bits together are held to the `ph-bits` limit before any work.
 
 use super::number::{
     rational_zeros, unit_zeros, Coords, ExactNumber, FloatNumber, SectionScalar, DEFAULT_WIDTH_LOG2,
@@ -879,6 +880,16 @@ fn self_intersections(curve: &PhCurve<Rational>, r: &Rational) -> Value {
 
 fn exact(text: &str) -> Result<Answer<String>, Error> {
     let input: Input<ExactNumber> = parse(text)?;
+    // Checked before any work: the exact curve's coefficients grow from these.
+    let bits = input
+        .u
+        .iter()
+        .chain(&input.v)
+        .map(|x| exactcheck_exact::expr::Coefficient::size_bits(&x.0))
+        .fold(0u64, u64::saturating_add);
+    exactcheck_core::limits::PH_BITS
+        .check(bits)
+        .map_err(|e| Error::Input(format!("u, v: {e}")))?;
     // Rational input runs over the (faster) rationals; radicals over the radical field.
     if numbers(&input).all(|x| x.0.is_rational()) {
         let mut answer = exact_answer(&input, |x| {

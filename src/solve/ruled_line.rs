@@ -58,6 +58,9 @@
 //! # Limits and modes
 //! `m + n <= 60` ([`MAX_DEGREE`]): the Bernstein conversions use binomials `C(m+n, k)` as `u64`,
 //! exact only up to `C(67, 33)`, and the exact subdivision grows quickly beyond that degree.
+//! Exact mode is further held to the `ruled-work` limit, checked before any work: `m + n` times
+//! the dimension `2^k` of the square-root field of the input's numbers (the subdivision's cost
+//! grows about as the sixth power of the degree and several-fold per square root).
 //! Exact mode reads [`ExactNumber`]s and runs over `Q` when every number is rational, over the
 //! radical field otherwise. `--float` runs the same generic code over `f64`; there the zero
 //! tests and the root isolation are heuristics (f64 rounding), and the answer says `mode: float`.
@@ -1173,6 +1176,26 @@ fn exact_answer(text: &str) -> Result<AnswerOut<String>, Error> {
         .chain(&input.directions)
         .chain([&input.line.point, &input.line.direction])
         .all(|c| c.0.iter().all(|x| x.0.is_rational()));
+    let k = Radical::independent_radicals_together(
+        input
+            .base
+            .iter()
+            .chain(&input.directions)
+            .chain([&input.line.point, &input.line.direction])
+            .flat_map(|c| c.0.iter().map(|x| &x.0)),
+    );
+    // Checked before the work; an empty list or a degree past MAX_DEGREE is refused by `build`.
+    let degree = (input.base.len() + input.directions.len()).saturating_sub(2);
+    if !input.base.is_empty() && !input.directions.is_empty() && degree <= MAX_DEGREE {
+        let work = (degree as u64).saturating_mul(1u64 << k.min(62));
+        exactcheck_core::limits::RULED_WORK
+            .check(work)
+            .map_err(|e| {
+                Error::Input(format!(
+                    "base, directions: m + n = {degree} with {k} independent square roots: {e}"
+                ))
+            })?;
+    }
     if all_rational {
         let p = build(&input, |x: &ExactNumber| {
             x.0.to_rational().expect("is_rational was checked")

@@ -25,6 +25,32 @@ fn write_at(f: &mut fmt::Formatter<'_>, e: &Expr, min: u8) -> fmt::Result {
     }
 }
 
+impl Expr {
+    /// A lower bound on the nesting depth the parser counts for any text that parses to this
+    /// tree (each parenthesised group counts two levels: the group and its first factor; each
+    /// sign, exponent and call one), taken on the printed form, which has the fewest
+    /// parentheses. So a tree built by substitution can be held to the `depth` limit the parser
+    /// applies without refusing any tree the parser accepts.
+    pub fn nesting(&self) -> usize {
+        let wrapped = |x: &Expr, min: u8| x.nesting() + if precedence(x) < min { 2 } else { 0 };
+        match &self.kind {
+            ExprKind::Number(_) | ExprKind::Var(_) => 0,
+            ExprKind::Neg(x) => 1 + wrapped(x, 3),
+            ExprKind::Sum(items) => items.iter().map(|(_, x)| wrapped(x, 2)).max().unwrap_or(0),
+            ExprKind::Product(items) => items.iter().map(|(_, x)| wrapped(x, 3)).max().unwrap_or(0),
+            ExprKind::Pow(base, exp) => {
+                let e = match exp.kind {
+                    ExprKind::Pow(..) => exp.nesting(),
+                    _ => wrapped(exp, 5),
+                };
+                wrapped(base, 5).max(1 + e)
+            }
+            ExprKind::Sqrt(x) => 1 + x.nesting(),
+            ExprKind::Call(_, args) => 1 + args.iter().map(Expr::nesting).max().unwrap_or(0),
+        }
+    }
+}
+
 impl fmt::Display for Expr {
     /// The expression in the syntax of the module documentation, with the parentheses it needs;
     /// the output parses back to an expression with the same value.

@@ -5,7 +5,8 @@
 //! * a sum `t0 ± t1 ± t2` is the left-to-right chain `(t0 ± t1) ± t2` (a leading `-` on the
 //!   first term, which the parser never produces, is a negation);
 //! * a product `f0 op f1 op f2` is the left-to-right chain of `*` and `/` (a leading `/` means
-//!   `1 / f0`); juxtaposition is `*`. Unlike [`Expr::to_poly`](crate::expr::Expr::to_poly),
+//!   `1 / f0`); juxtaposition is `*`. One operation is a binary node, more are one flat
+//!   [`Node::Chain`], so that a sum of thousands of terms costs no stack per term. Unlike [`Expr::to_poly`](crate::expr::Expr::to_poly),
 //!   division by a non-constant is allowed: a zero divisor is a matter of the sample (outside the
 //!   domain on the exact side, `inf`/NaN on the float side);
 //! * `a^k`: the exponent must evaluate to an integer constant (exactly, in [`Rational`]) with
@@ -18,7 +19,7 @@
 //!   appearance, reading left to right.
 //!
 //! No constant folding: `1/3` is the double division `1.0 / 3.0`, as in the source.
-use super::{Node, PowStyle, Program};
+use super::{ChainOp, Node, PowStyle, Program};
 use crate::expr::{parse_expr, AddOp, Expr, ExprError, ExprKind, MulOp};
 use crate::rational::Rational;
 use num_traits::ToPrimitive;
@@ -171,38 +172,75 @@ fn compile(e: &Expr, vars: &mut Vars) -> Result<Node, CompileError> {
             }))
         }
         ExprKind::Sum(items) => {
-            let mut acc: Option<Node> = None;
-            for (op, t) in items {
-                let t = compile(t, vars)?;
-                acc = Some(match (acc, op) {
-                    (None, AddOp::Plus) => t,
-                    (None, AddOp::Minus) => Node::Neg(Box::new(t)),
-                    (Some(a), AddOp::Plus) => Node::Add(Box::new(a), Box::new(t)),
-                    (Some(a), AddOp::Minus) => Node::Sub(Box::new(a), Box::new(t)),
-                });
-            }
-            acc.unwrap_or(Node::Const(Rational::ZERO))
+            let op = |op: &AddOp| match op {
+                AddOp::Plus => ChainOp::Add,
+                AddOp::Minus => ChainOp::Sub,
+            };
+            // A leading `-` is a negation.
+            let first = |op: &AddOp, t: Node| match op {
+                AddOp::Plus => t,
+                AddOp::Minus => Node::Neg(Box::new(t)),
+            };
+            compile_chain(items, vars, Rational::ZERO, first, op)?
         }
         ExprKind::Product(items) => {
-            let mut acc: Option<Node> = None;
-            for (op, f) in items {
-                let f = compile(f, vars)?;
-                acc = Some(match (acc, op) {
-                    (None, MulOp::Times) => f,
-                    (None, MulOp::Divide) => {
-                        Node::Div(Box::new(Node::Const(Rational::ONE)), Box::new(f))
-                    }
-                    (Some(a), MulOp::Times) => Node::Mul(Box::new(a), Box::new(f)),
-                    (Some(a), MulOp::Divide) => Node::Div(Box::new(a), Box::new(f)),
-                });
-            }
-            acc.unwrap_or(Node::Const(Rational::ONE))
+            let op = |op: &MulOp| match op {
+                MulOp::Times => ChainOp::Mul,
+                MulOp::Divide => ChainOp::Div,
+            };
+            // A leading `/` is a reciprocal.
+            let first = |op: &MulOp, f: Node| match op {
+                MulOp::Times => f,
+                MulOp::Divide => Node::Div(Box::new(Node::Const(Rational::ONE)), Box::new(f)),
+            };
+            compile_chain(items, vars, Rational::ONE, first, op)?
         }
         ExprKind::Pow(base, exp) => {
             let b = compile(base, vars)?;
             Node::Pow(Box::new(b), exponent(exp)?, PowStyle::Multiply)
         }
     })
+}
+
+/// The left-to-right chain of a sum's terms or a product's factors (`empty` when there are
+/// none): `first` makes the node of the first item from its operator, `op` the operation of each
+/// later one.
+fn compile_chain<O>(
+    items: &[(O, Expr)],
+    vars: &mut Vars,
+    empty: Rational,
+    first: impl Fn(&O, Node) -> Node,
+    op: impl Fn(&O) -> ChainOp,
+) -> Result<Node, CompileError> {
+    let Some(((o, x), rest)) = items.split_first() else {
+        return Ok(Node::Const(empty));
+    };
+    let head = first(o, compile(x, vars)?);
+    let mut ops = Vec::with_capacity(rest.len());
+    for (o, x) in rest {
+        ops.push((op(o), compile(x, vars)?));
+    }
+    Ok(chain(head, ops))
+}
+
+/// `first op1 b1 op2 b2 ...` from the left: `first` alone, one binary node, or a
+/// [`Node::Chain`] for two operations or more.
+fn chain(first: Node, mut ops: Vec<(ChainOp, Node)>) -> Node {
+    if ops.len() != 1 {
+        return if ops.is_empty() {
+            first
+        } else {
+            Node::Chain(Box::new(first), ops)
+        };
+    }
+    let (op, b) = ops.pop().expect("one operation");
+    let (a, b) = (Box::new(first), Box::new(b));
+    match op {
+        ChainOp::Add => Node::Add(a, b),
+        ChainOp::Sub => Node::Sub(a, b),
+        ChainOp::Mul => Node::Mul(a, b),
+        ChainOp::Div => Node::Div(a, b),
+    }
 }
 
 /// The value of an exponent: an integer constant with `|k| <= MAX_POW_EXPONENT`.

@@ -62,6 +62,19 @@ pub enum CmpOp {
     Ne,
 }
 
+/// An operation of a [`Node::Chain`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ChainOp {
+    /// `+`
+    Add,
+    /// `-`
+    Sub,
+    /// `*`
+    Mul,
+    /// `/`
+    Div,
+}
+
 /// A node of a float program.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Node {
@@ -81,6 +94,10 @@ pub enum Node {
     Mul(Box<Node>, Box<Node>),
     /// `a / b`; exact division by zero puts the sample outside the domain.
     Div(Box<Node>, Box<Node>),
+    /// `a op1 b1 op2 b2 ...` from the left, `((a op1 b1) op2 b2) ...`: the same operations as
+    /// the nested binary nodes, kept flat so that a sum or product of thousands of terms is
+    /// walked, cloned and dropped without a level of recursion per term.
+    Chain(Box<Node>, Vec<(ChainOp, Node)>),
     /// `sqrt(a)`; the exact root of a negative value puts the sample outside the domain.
     Sqrt(Box<Node>),
     /// `|a|`.
@@ -160,6 +177,9 @@ fn node_ops(n: &Node) -> usize {
         | Node::Min(a, b)
         | Node::Max(a, b) => 1 + node_ops(a) + node_ops(b),
         Node::Fma(a, b, c) => 1 + node_ops(a) + node_ops(b) + node_ops(c),
+        Node::Chain(a, rest) => {
+            node_ops(a) + rest.iter().map(|(_, b)| 1 + node_ops(b)).sum::<usize>()
+        }
         Node::Let(bindings, body) => {
             bindings.iter().map(|(_, v)| node_ops(v)).sum::<usize>() + node_ops(body)
         }

@@ -83,17 +83,23 @@ fn sums_and_products_chain_from_the_left_in_the_order_written() {
     let p = Program::parse("x - y + z", None).unwrap();
     assert_eq!(
         p.outputs[0],
-        Node::Add(
-            b(Node::Sub(b(Node::Input(0)), b(Node::Input(1)))),
-            b(Node::Input(2))
+        Node::Chain(
+            b(Node::Input(0)),
+            vec![
+                (ChainOp::Sub, Node::Input(1)),
+                (ChainOp::Add, Node::Input(2))
+            ]
         )
     );
     let p = Program::parse("x / y * z", None).unwrap();
     assert_eq!(
         p.outputs[0],
-        Node::Mul(
-            b(Node::Div(b(Node::Input(0)), b(Node::Input(1)))),
-            b(Node::Input(2))
+        Node::Chain(
+            b(Node::Input(0)),
+            vec![
+                (ChainOp::Div, Node::Input(1)),
+                (ChainOp::Mul, Node::Input(2))
+            ]
         )
     );
     // Division by a non-constant is allowed; juxtaposition multiplies; -x^2 = -(x^2).
@@ -101,9 +107,12 @@ fn sums_and_products_chain_from_the_left_in_the_order_written() {
     assert_eq!(
         p.outputs[0],
         Node::Sub(
-            b(Node::Div(
-                b(Node::Mul(b(c(2)), b(Node::Input(0)))),
-                b(Node::Sub(b(Node::Input(1)), b(c(1))))
+            b(Node::Chain(
+                b(c(2)),
+                vec![
+                    (ChainOp::Mul, Node::Input(0)),
+                    (ChainOp::Div, Node::Sub(b(Node::Input(1)), b(c(1))))
+                ]
             )),
             b(Node::Pow(b(Node::Input(2)), 2, PowStyle::Multiply))
         )
@@ -119,6 +128,34 @@ fn sums_and_products_chain_from_the_left_in_the_order_written() {
     );
     assert_eq!(p.name, "-sqrt(x)^-3");
     assert_eq!((p.slots, p.pre.clone(), p.outputs.len()), (0, None, 1));
+}
+
+#[test]
+fn long_sums_and_products_are_flat_chains_evaluated_without_deep_recursion() {
+    // On a thread with a small stack: a left-deep tree of binary nodes recursed once per term
+    // in the walk, the clone and the drop, and overflowed the stack of a rayon worker at a few
+    // thousand terms.
+    let run = || {
+        let n = 20_000;
+        let sum = vec!["x"; n].join(" + ");
+        let p = Program::parse(&format!("{sum} - x"), None).unwrap();
+        assert!(matches!(&p.outputs[0], Node::Chain(_, ops) if ops.len() == n));
+        assert_eq!(p.operation_count(), n);
+        let q = p.clone();
+        assert_eq!(q.eval_f64(&[0.5]), vec![0.5 * (n - 1) as f64]);
+        let exact = exact_value(&q, &[Rational::from_integer(3)]);
+        assert_eq!(exact, BigRational::from_integer(BigInt::from(3 * (n - 1))));
+        let prod = vec!["y"; n].join(" * ");
+        let p = Program::parse(&format!("{prod} / y"), None).unwrap();
+        assert_eq!(p.eval_f64(&[1.0]), vec![1.0]);
+        assert_eq!(exact_value(&p, &[Rational::ONE]), BigRational::one());
+    };
+    std::thread::Builder::new()
+        .stack_size(256 << 10)
+        .spawn(run)
+        .unwrap()
+        .join()
+        .unwrap();
 }
 
 #[test]
@@ -144,12 +181,12 @@ fn variables_in_order_of_appearance_or_as_listed() {
     assert_eq!(p.inputs, vars(&["a", "b", "c", "d"]));
     assert_eq!(
         p.outputs[0],
-        Node::Sub(
-            b(Node::Add(
-                b(Node::Mul(b(Node::Input(1)), b(Node::Input(0)))),
-                b(Node::Input(2))
-            )),
-            b(Node::Input(0))
+        Node::Chain(
+            b(Node::Mul(b(Node::Input(1)), b(Node::Input(0)))),
+            vec![
+                (ChainOp::Add, Node::Input(2)),
+                (ChainOp::Sub, Node::Input(0))
+            ]
         )
     );
     assert_eq!(

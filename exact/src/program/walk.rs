@@ -8,7 +8,7 @@
 //! decision of a comparison. Values are moved, not borrowed, so a domain of `Copy` numbers
 //! (`f64`) compiles to straight-line float code with no allocation, and `Result<_, Infallible>`
 //! costs nothing.
-use super::{CmpOp, Cond, Node, PowStyle};
+use super::{ChainOp, CmpOp, Cond, Node, PowStyle};
 use crate::rational::Rational;
 
 /// The arithmetic a program is evaluated in.
@@ -83,6 +83,19 @@ pub(crate) fn eval_node<D: Domain>(
             let a = eval_node(d, a, slots)?;
             let b = eval_node(d, b, slots)?;
             d.div(a, b)?
+        }
+        Node::Chain(first, rest) => {
+            let mut acc = eval_node(d, first, slots)?;
+            for (op, b) in rest {
+                let b = eval_node(d, b, slots)?;
+                acc = match op {
+                    ChainOp::Add => d.add(acc, b)?,
+                    ChainOp::Sub => d.sub(acc, b)?,
+                    ChainOp::Mul => d.mul(acc, b)?,
+                    ChainOp::Div => d.div(acc, b)?,
+                };
+            }
+            acc
         }
         Node::Sqrt(a) => {
             let a = eval_node(d, a, slots)?;

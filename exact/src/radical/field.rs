@@ -206,17 +206,19 @@ impl Radical {
     pub fn check_radicands_together<'a>(
         values: impl IntoIterator<Item = &'a Radical>,
     ) -> Result<(), LimitError> {
-        let mut all: Vec<&Radicand> = values
-            .into_iter()
-            .flat_map(|v| v.terms.iter().map(|(m, _)| m))
-            .filter(|m| !m.is_one())
-            .collect();
-        all.sort();
-        all.dedup();
+        let all = distinct_irrational(values);
         if all.len() <= limits::RADICANDS.get_usize() {
             return Ok(());
         }
         limits::RADICANDS.check_usize(independent_count(all.into_iter()))
+    }
+
+    /// The number `k` of independent square roots of all of `values` together: a computation
+    /// combining them works in a field of dimension `2^k` over Q.
+    pub fn independent_radicals_together<'a>(
+        values: impl IntoIterator<Item = &'a Radical>,
+    ) -> usize {
+        independent_count(distinct_irrational(values).into_iter())
     }
 
     /// The sign, decided exactly without the floating-point filter (for tests and benchmarks;
@@ -707,4 +709,16 @@ impl fmt::Debug for Radical {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         fmt::Display::fmt(self, f)
     }
+}
+
+/// The distinct irrational radicands of the terms of `values`, sorted.
+fn distinct_irrational<'a>(values: impl IntoIterator<Item = &'a Radical>) -> Vec<&'a Radicand> {
+    let mut all: Vec<&Radicand> = values
+        .into_iter()
+        .flat_map(|v| v.terms.iter().map(|(m, _)| m))
+        .filter(|m| !m.is_one())
+        .collect();
+    all.sort();
+    all.dedup();
+    all
 }

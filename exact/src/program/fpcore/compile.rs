@@ -1,7 +1,7 @@
 //! From s-expressions to [`Benchmark`]s: the benchmark's frame (identifier, arguments,
 //! properties, body), the domain extracted from `:pre`, and the expression compiler with its
 //! scopes (see the parent module for the supported subset).
-use super::sexpr::{pow_rational, Pos, SExpr, MAX_LITERAL_EXPONENT};
+use super::sexpr::{check_literal_size, pow_rational, Pos, SExpr, MAX_LITERAL_EXPONENT};
 use super::{Benchmark, Bound, FpCoreError, Interval, Unsupported};
 use crate::program::{CmpOp, Cond, Node, PowStyle, Program};
 use crate::rational::Rational;
@@ -181,9 +181,13 @@ fn digits(args: &[SExpr], pos: Pos) -> Result<Rational, FpCoreError> {
         .filter(|e| e.abs() <= MAX_LITERAL_EXPONENT);
     let base = u32::try_from(&ints[2]).ok().filter(|&b| b >= 2);
     match (exp, base) {
-        (Some(e), Some(b)) => Ok(Rational::from(
-            num_rational::BigRational::from_integer(ints[0].clone()) * pow_rational(b, e),
-        )),
+        (Some(e), Some(b)) => {
+            check_literal_size("`(digits m e b)`", ints[0].bits(), None, b, e)
+                .map_err(|m| err(pos, m))?;
+            Ok(Rational::from(
+                num_rational::BigRational::from_integer(ints[0].clone()) * pow_rational(b, e),
+            ))
+        }
         (None, _) => Err(err(
             pos,
             format!("the exponent of `(digits ...)` is beyond ±{MAX_LITERAL_EXPONENT}"),
@@ -843,6 +847,12 @@ fn subst_node(n: &Node, map: &[(usize, Node)]) -> Node {
         Node::Sub(x, y) => Node::Sub(b(x), b(y)),
         Node::Mul(x, y) => Node::Mul(b(x), b(y)),
         Node::Div(x, y) => Node::Div(b(x), b(y)),
+        Node::Chain(x, rest) => Node::Chain(
+            b(x),
+            rest.iter()
+                .map(|(op, y)| (*op, subst_node(y, map)))
+                .collect(),
+        ),
         Node::Sqrt(a) => Node::Sqrt(b(a)),
         Node::Abs(a) => Node::Abs(b(a)),
         Node::Fma(x, y, z) => Node::Fma(b(x), b(y), b(z)),

@@ -288,6 +288,16 @@ fn parse_number(atom: &str) -> Result<Option<Rational>, String> {
         if !all_digits(n, 10) || !all_digits(d, 10) {
             return Ok(None);
         }
+        for part in [n, d] {
+            let written = part.len() as u64;
+            check_literal_size(
+                &format!("the literal `{atom}`"),
+                written * 3,
+                Some(written),
+                10,
+                0,
+            )?;
+        }
         let d: BigInt = d.parse().expect("checked digits");
         if d.is_zero() {
             return Ok(None);
@@ -344,6 +354,14 @@ fn parse_positional(
             }
         }
     };
+    let written = (int_part.len() + frac_part.len()) as u64;
+    check_literal_size(
+        &format!("the literal `{s}`"),
+        written.saturating_mul(u64::from(radix.ilog2())),
+        Some(written).filter(|_| radix == 10),
+        exp_base,
+        exp,
+    )?;
     let all: String = format!("{int_part}{frac_part}");
     let m = BigInt::parse_bytes(all.as_bytes(), radix).expect("checked digits");
     let frac_len = frac_part.len() as i64;
@@ -352,6 +370,35 @@ fn parse_positional(
     let mut q = BigRational::new(m, radix_pow);
     q *= pow_rational(exp_base, exp);
     Ok(Some(q))
+}
+
+/// Checks the size of the literal `m·base^e` (`m` of `m_bits` bits) before it is built: its
+/// bits against the `constant-bits` limit, as every exact constant of the prove syntax is, and
+/// for a decimal literal (`base` 10, `m` written in `m_digits` decimal digits) its digits plus
+/// `|e|` against the `digits` limit, as the prove syntax counts them (`1e5000` has 5001).
+///
+/// # Errors
+/// The limit's one-line message, naming the literal `what`.
+pub(crate) fn check_literal_size(
+    what: &str,
+    m_bits: u64,
+    m_digits: Option<u64>,
+    base: u32,
+    e: i64,
+) -> Result<(), String> {
+    use exactcheck_core::limits;
+    let at = |error: exactcheck_core::limits::LimitError| format!("{what}: {error}");
+    if let (Some(d), 10) = (m_digits, base) {
+        limits::DIGITS
+            .check(d.saturating_add(e.unsigned_abs()))
+            .map_err(at)?;
+    }
+    // |e| times floor(log2(base)) bits at least: a lower bound, so no literal within the limit
+    // is refused.
+    let per = u64::from(base.ilog2());
+    limits::CONSTANT_BITS
+        .check(m_bits.saturating_add(e.unsigned_abs().saturating_mul(per)))
+        .map_err(at)
 }
 
 /// `base^e` exactly, for `|e| <= MAX_LITERAL_EXPONENT` (checked by the callers).
