@@ -6,7 +6,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 rm -rf fuzz/seeds
-mkdir -p fuzz/seeds/{expr_roundtrip,solve_json,prove,radical,fpcore,claims_file}
+mkdir -p fuzz/seeds/{expr_roundtrip,solve_json,prove,radical,fpcore,claims_file,printed}
 
 python3 - <<'PY'
 import glob, hashlib, os, re, shlex
@@ -86,7 +86,22 @@ for seed in [
     bytes([12, 16, 3, 0, 1, 9, 0, 15, 128, 15, 2, 127, 1, 14, 4, 2, 7, 100, 5, 9, 1, 1, 3, 33, 7]),
 ]:
     put("radical", seed)
+
+# Printed decimals: an exact value, a newline, a printed decimal (long ones, ties, misprints).
+for seed in [
+    "1/3\n0." + "3" * 40,
+    "1/3\n0.33333333333333333334",
+    "1/200\n0.00500000000000001",
+    "sqrt(2)\n1.414213562373095",
+    "10^19\n10000000000000000000",
+    "(2*sqrt(2) + sqrt(6))/3\n1.76",
+    "-sqrt(2)/2\n-0.705",
+    "101/8\n12.62",
+    "sqrt(2)+sqrt(3)-sqrt(5)\n0.910",
+    "0\n0.000",
+]:
+    put("printed", seed)
 PY
-for t in expr_roundtrip solve_json prove radical fpcore claims_file; do
+for t in expr_roundtrip solve_json prove radical fpcore claims_file printed; do
   echo "$t: $(ls fuzz/seeds/$t | wc -l) seeds"
 done
