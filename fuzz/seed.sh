@@ -7,7 +7,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 rm -rf fuzz/seeds
-mkdir -p fuzz/seeds/{expr_roundtrip,solve_json,prove,radical,fpcore,claims_file,output_path}
+mkdir -p fuzz/seeds/{expr_roundtrip,solve_json,prove,radical,fpcore,claims_file,output_path,printed}
 
 python3 - <<'PY'
 import glob, hashlib, os, re, shlex
@@ -92,7 +92,21 @@ for seed in [
 for seed in ["out.svg", "./-", "-", "", "out/", "out.svg/.", "a/..", "/dev/stdout",
              "a//b/./c.svg", ".hidden", "x" * 300, "\u00e9" * 120, "a\nb.svg"]:
     put("output_path", seed)
+# Printed decimals: an exact value, a newline, a printed decimal (long ones, ties, misprints).
+for seed in [
+    "1/3\n0." + "3" * 40,
+    "1/3\n0.33333333333333333334",
+    "1/200\n0.00500000000000001",
+    "sqrt(2)\n1.414213562373095",
+    "10^19\n10000000000000000000",
+    "(2*sqrt(2) + sqrt(6))/3\n1.76",
+    "-sqrt(2)/2\n-0.705",
+    "101/8\n12.62",
+    "sqrt(2)+sqrt(3)-sqrt(5)\n0.910",
+    "0\n0.000",
+]:
+    put("printed", seed)
 PY
-for t in expr_roundtrip solve_json prove radical fpcore claims_file output_path; do
+for t in expr_roundtrip solve_json prove radical fpcore claims_file output_path printed; do
   echo "$t: $(ls fuzz/seeds/$t | wc -l) seeds"
 done

@@ -313,14 +313,17 @@ fn refused(size: usize) -> ! {
     ))
 }
 
+/// The shortest `--timeout`, in seconds: a shorter one would end every run before it starts.
+pub const MIN_TIMEOUT: f64 = 0.001;
+
 /// Ends the process with one line and exit status 2 when `seconds` have passed.
 ///
 /// # Errors
-/// A `seconds` that is not a positive finite number.
+/// A `seconds` that is not a finite number between [`MIN_TIMEOUT`] (a millisecond) and 1e9.
 pub fn start_timeout(seconds: f64) -> Result<(), crate::Error> {
-    if !(seconds.is_finite() && seconds > 0.0 && seconds <= 1e9) {
+    if !(seconds.is_finite() && (MIN_TIMEOUT..=1e9).contains(&seconds)) {
         return Err(crate::Error::Usage(format!(
-            "--timeout must be a number of seconds between 0 and 1e9 (got {seconds})"
+            "--timeout must be a number of seconds between {MIN_TIMEOUT} and 1e9 (got {seconds:?})"
         )));
     }
     let budget = Duration::from_secs_f64(seconds);
@@ -517,7 +520,7 @@ mod tests {
 
     #[test]
     fn timeouts_must_be_positive_and_finite() {
-        for bad in [0.0, -1.0, f64::NAN, f64::INFINITY, 2e9] {
+        for bad in [0.0, -1.0, f64::NAN, f64::INFINITY, 2e9, 1e-300, 0.0009] {
             assert!(start_timeout(bad).is_err(), "{bad}");
         }
     }

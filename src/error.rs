@@ -20,8 +20,9 @@ pub enum Error {
         source: std::io::Error,
     },
     /// A size, depth or count went past a named limit of [`exactcheck_core::limits`]; the
-    /// message names the limit, its value and the flag that raises it.
-    #[error("{0}")]
+    /// message names the limit, its value and the flag that raises it (and may quote a file
+    /// name, escaped like every other quoted input).
+    #[error("{}", one_line(&.0.to_string()))]
     Limit(#[from] exactcheck_core::limits::LimitError),
     /// Writing standard output failed (see [`crate::output`]).
     #[error("cannot write standard output: {}", io_message(.0))]
@@ -49,28 +50,41 @@ impl Error {
 /// quote what the user wrote (a JSON key, a file name), which may contain any character, and an
 /// error stays one line.
 fn one_line(text: &str) -> std::borrow::Cow<'_, str> {
-    let breaks = |c: char| c.is_control() || c == '\u{2028}' || c == '\u{2029}';
     let long = text
         .split(' ')
         .any(|w| w.chars().count() > MAX_ECHOED_CHARS);
-    if !long && !text.chars().any(breaks) {
+    if !long && !text.chars().any(is_break) {
         return text.into();
     }
-    let escaped: String = text
-        .chars()
+    escape_breaks(text)
+        .split(' ')
+        .map(shorten_word)
+        .collect::<Vec<_>>()
+        .join(" ")
+        .into()
+}
+
+/// Whether `c` would break a line of output: a control character, U+2028 or U+2029.
+fn is_break(c: char) -> bool {
+    c.is_control() || c == '\u{2028}' || c == '\u{2029}'
+}
+
+/// `text` with every character that would break a line ([`is_break`]) escaped as Rust does
+/// (`\n`, `\u{1b}`): the one escaping of user-supplied names shown in errors, tables and
+/// report headings.
+pub fn escape_breaks(text: &str) -> std::borrow::Cow<'_, str> {
+    if !text.chars().any(is_break) {
+        return text.into();
+    }
+    text.chars()
         .map(|c| {
-            if breaks(c) {
+            if is_break(c) {
                 c.escape_default().to_string()
             } else {
                 c.to_string()
             }
         })
-        .collect();
-    escaped
-        .split(' ')
-        .map(shorten_word)
-        .collect::<Vec<_>>()
-        .join(" ")
+        .collect::<String>()
         .into()
 }
 

@@ -70,7 +70,8 @@ fn cancellation_is_found_and_the_rationalized_form_is_accurate() {
 
 #[test]
 fn division_by_zero_is_outside_the_domain() {
-    let doc = json_of(&exactcheck(&[
+    // Every sample outside the domain: nothing compared, exit status 1.
+    let o = exactcheck(&[
         "regress",
         "--formula",
         "1/(x - y) + 1/x",
@@ -81,7 +82,9 @@ fn division_by_zero_is_outside_the_domain() {
         "--samples",
         "50",
         "--json",
-    ]));
+    ]);
+    assert_eq!(o.status.code(), Some(1), "{o:?}");
+    let doc: Value = serde_json::from_slice(&o.stdout).expect("JSON on stdout");
     let r = report(&doc);
     assert_eq!(r["domain_errors"], 50, "{r}");
     assert_eq!(r["compared"], 0, "{r}");

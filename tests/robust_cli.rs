@@ -715,3 +715,144 @@ fn a_thread_pool_that_cannot_start_falls_back_to_one_thread() {
     let o = exactcheck(&["regress", "--formula", "x*x", "--samples", "600", "--quiet"]);
     assert_eq!(String::from_utf8_lossy(&o.stdout), out);
 }
+
+#[test]
+fn a_limit_error_quoting_a_file_name_with_a_newline_stays_one_line() {
+    let dir = TempDir::new("newline-name");
+    let path = dir.0.join("big\nname.json");
+    std::fs::write(&path, vec![b' '; 5000]).expect("write");
+    let p = path.to_str().expect("UTF-8 temp path");
+    let e = one_error_line(&exactcheck(&["solve", p, "--limit", "file-size=4096"]));
+    assert!(
+        e.contains("big\\nname.json: more than 4096 bytes") && e.contains("file-size = 4096"),
+        "{e}"
+    );
+}
+
+#[test]
+fn sub_millisecond_timeouts_are_refused_in_one_short_line() {
+    let start = Instant::now();
+    for bad in ["1e-300", "0.0009"] {
+        let flag = format!("--timeout={bad}");
+        let e = one_error_line(&exactcheck(&["prove", "x", "x", &flag]));
+        assert_eq!(
+            e,
+            format!(
+                "exactcheck: error: --timeout must be a number of seconds between 0.001 and 1e9 (got {bad})"
+            )
+        );
+    }
+    assert!(start.elapsed() < Duration::from_secs(30));
+    let o = exactcheck(&["prove", "x", "x", "--timeout", "0.001"]);
+    // A millisecond is accepted: the run answers or the timer ends it, in one line either way.
+    assert!(matches!(o.status.code(), Some(0 | 2)), "{o:?}");
+}
+
+#[test]
+fn formula_variable_lists_and_subject_options_are_checked() {
+    let e = one_error_line(&exactcheck(&[
+        "regress",
+        "--formula",
+        "x + y",
+        "--vars",
+        "x,,y",
+        "--samples",
+        "5",
+    ]));
+    assert_eq!(
+        e,
+        "exactcheck: error: --formula: \"\" in the variable list is not a variable name"
+    );
+    let o = exactcheck(&[
+        "regress",
+        "cylinder-sphere",
+        "--name",
+        "foo",
+        "--samples",
+        "5",
+    ]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{o:?}");
+    assert!(o.stdout.is_empty(), "{o:?}");
+    assert!(
+        err.lines().next().is_some_and(|l| l
+            == "exactcheck: error: --name applies to --fpcore FILE only; give --fpcore FILE or leave --name out"),
+        "{err}"
+    );
+    // The exponent cap of a regressed formula is the limit formula-exponent.
+    let e = one_error_line(&exactcheck(&[
+        "regress",
+        "--formula",
+        "x^1025",
+        "--samples",
+        "5",
+    ]));
+    assert!(
+        e.contains("exceeds the limit formula-exponent = 1024 (found 1025; raise it with --limit formula-exponent=N)"),
+        "{e}"
+    );
+}
+
+#[test]
+fn a_deeply_nested_shard_names_the_depth_limit() {
+    let dir = TempDir::new("deep-shard");
+    let path = dir.0.join("shard.json");
+    let deep = format!(
+        "{{\"exactcheck\": {}{}}}",
+        "[".repeat(100_000),
+        "]".repeat(100_000)
+    );
+    std::fs::write(&path, deep).expect("write");
+    let p = path.to_str().expect("UTF-8 temp path");
+    let e = one_error_line(&exactcheck(&["merge", p, p]));
+    assert!(
+        e.contains("nesting depth exceeds the limit depth = 256 levels")
+            && e.contains("shard.json")
+            && !e.contains("recursion limit"),
+        "{e}"
+    );
+}
+
+#[test]
+fn fpcore_names_with_newlines_and_runs_without_samples() {
+    let dir = TempDir::new("fpcore");
+    let path = dir.0.join("names.fpcore");
+    std::fs::write(
+        &path,
+        "(FPCore (x) :name \"two\nlines\" (+ x 1))\n(FPCore (x) :name \"never\" :pre (< x x) x)\n",
+    )
+    .expect("write");
+    let p = path.to_str().expect("UTF-8 temp path");
+    let o = exactcheck(&["regress", "--fpcore", p, "--samples", "20"]);
+    let out = String::from_utf8_lossy(&o.stdout);
+    // The name is escaped in the table and the report: no line starts with its second half.
+    assert!(out.contains("two\\nlines"), "{out}");
+    assert!(!out.lines().any(|l| l.starts_with("lines")), "{out}");
+    // `never` compares no sample: said so, no "max 0 ulps", exit status 1.
+    assert!(out.contains("no sample was compared"), "{out}");
+    assert!(
+        !out.contains("error in ulps: max 0,"),
+        "a run without samples reports an error of 0:\n{out}"
+    );
+    assert_eq!(o.status.code(), Some(1), "{o:?}");
+    let o = exactcheck(&[
+        "regress",
+        "--fpcore",
+        p,
+        "--name",
+        "never",
+        "--samples",
+        "20",
+    ]);
+    assert_eq!(o.status.code(), Some(1), "{o:?}");
+    let o = exactcheck(&[
+        "regress",
+        "--fpcore",
+        p,
+        "--name",
+        "two\nlines",
+        "--samples",
+        "20",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{o:?}");
+}

@@ -174,6 +174,10 @@ limits! {
     DIGITS = ("digits", "digits of a number", "digits", 10_000);
     /// Absolute value of an exponent after `^`.
     EXPONENT = ("exponent", "exponent", "", 10_000);
+    /// Absolute value of an exponent `k` of `a^k` in a regressed formula (`regress --formula`,
+    /// `--fpcore`): its float side does `|k| - 1` multiplications per sample, and `2^1024`
+    /// already overflows a double.
+    FORMULA_EXPONENT = ("formula-exponent", "exponent of a power in a regressed formula", "", 1_024);
     /// Size in bits of any exact constant: a folded constant expression, a polynomial
     /// coefficient, an exact intermediate.
     CONSTANT_BITS = ("constant-bits", "size of a constant", "bits", 1_000_000);

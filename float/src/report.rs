@@ -363,46 +363,51 @@ impl fmt::Display for Report {
                 self.refined
             )?;
         }
-        writeln!(
-            f,
-            "  error in ulps: max {}, median {}, mean {} (finite errors)",
-            fmt_measure(self.max_ulps),
-            fmt_measure(self.median_ulps),
-            fmt_measure(self.mean_ulps)
-        )?;
-        if self.max_ulps_per_output.len() > 1 {
+        if self.compared == 0 {
+            // No measure is an error of 0: say that nothing was measured.
+            writeln!(f, "  no sample was compared: no error was measured")?;
+        } else {
             writeln!(
                 f,
-                "  max ulps per output: {}",
-                list(self.max_ulps_per_output.iter().map(|&u| fmt_measure(u)))
+                "  error in ulps: max {}, median {}, mean {} (finite errors)",
+                fmt_measure(self.max_ulps),
+                fmt_measure(self.median_ulps),
+                fmt_measure(self.mean_ulps)
             )?;
-        }
-        writeln!(
-            f,
-            "  relative error: max {}, median {}",
-            fmt_measure(self.max_rel),
-            fmt_measure(self.median_rel)
-        )?;
-        writeln!(
-            f,
-            "  bits of error (Herbie's measure): mean {}, max {}",
-            fmt_measure(self.bits_of_error),
-            fmt_measure(self.max_bits)
-        )?;
-        if !self.above.is_empty() {
-            let parts: Vec<String> = self
-                .above
-                .iter()
-                .map(|t| {
-                    let pct = if self.compared == 0 {
-                        0.0
-                    } else {
-                        100.0 * t.count as f64 / self.compared as f64
-                    };
-                    format!("> {} ulps: {} ({pct:.1}%)", fmt_measure(t.ulps), t.count)
-                })
-                .collect();
-            writeln!(f, "  {}", parts.join(", "))?;
+            if self.max_ulps_per_output.len() > 1 {
+                writeln!(
+                    f,
+                    "  max ulps per output: {}",
+                    list(self.max_ulps_per_output.iter().map(|&u| fmt_measure(u)))
+                )?;
+            }
+            writeln!(
+                f,
+                "  relative error: max {}, median {}",
+                fmt_measure(self.max_rel),
+                fmt_measure(self.median_rel)
+            )?;
+            writeln!(
+                f,
+                "  bits of error (Herbie's measure): mean {}, max {}",
+                fmt_measure(self.bits_of_error),
+                fmt_measure(self.max_bits)
+            )?;
+            if !self.above.is_empty() {
+                let parts: Vec<String> = self
+                    .above
+                    .iter()
+                    .map(|t| {
+                        let pct = if self.compared == 0 {
+                            0.0
+                        } else {
+                            100.0 * t.count as f64 / self.compared as f64
+                        };
+                        format!("> {} ulps: {} ({pct:.1}%)", fmt_measure(t.ulps), t.count)
+                    })
+                    .collect();
+                writeln!(f, "  {}", parts.join(", "))?;
+            }
         }
         if !self.worst.is_empty() {
             writeln!(

@@ -271,6 +271,34 @@ fn run_kernel<E: ExactScalar>(
 /// formula or FPCore; with `--shard`, `MAX_SWEEP_SAMPLES` in all and the per-run limit per shard); [`Error::Output`] when standard
 /// output fails.
 pub fn run(args: &RegressArgs) -> Result<ExitCode, Error> {
+    // Options of one subject given without it would be ignored: refused instead.
+    let needs = [
+        (
+            "--name",
+            args.name.is_some(),
+            "--fpcore FILE",
+            args.fpcore.is_some(),
+        ),
+        (
+            "--vars",
+            args.vars.is_some(),
+            "--formula EXPR",
+            args.formula.is_some(),
+        ),
+        (
+            "--domain",
+            args.domain.is_some(),
+            "--formula EXPR",
+            args.formula.is_some(),
+        ),
+    ];
+    for (flag, given, subject, present) in needs {
+        if given && !present {
+            return Err(Error::Usage(format!(
+                "{flag} applies to {subject} only; give {subject} or leave {flag} out"
+            )));
+        }
+    }
     let text = args.formula.is_some() || args.fpcore.is_some();
     if !text && args.shard.is_none() && args.samples > max_samples() {
         return Err(Error::Limit(
@@ -429,7 +457,11 @@ fn text_run(args: &RegressArgs, source: &str, fpcore: bool) -> Result<ExitCode, 
         text::formula_entries(args, source)?
     };
     sweep::print(&entries, args.json || args.shard.is_some())?;
-    Ok(ExitCode::SUCCESS)
+    // A shard is a part of a sweep: `merge` judges the whole.
+    if args.shard.is_some() {
+        return Ok(ExitCode::SUCCESS);
+    }
+    Ok(sweep::exit_code(&entries))
 }
 
 /// Errors of the f64 roots `u = -A +- sqrt(A^2 - B)` against the exact roots.

@@ -90,21 +90,27 @@ pub fn document(entries: &[Entry]) -> Value {
 }
 
 /// Reads a document written by [`document`] (`what` names it in errors).
-pub fn read_document(text: &str, what: &str) -> Result<Vec<Entry>, String> {
-    let v: Value = serde_json::from_str(text).map_err(|e| format!("{what}: not JSON: {e}"))?;
+pub fn read_document(text: &str, what: &str) -> Result<Vec<Entry>, Error> {
+    let v: Value = crate::solve::depth::parse_json(text)
+        .map_err(|(pos, mut e)| {
+            e.actual = format!("{what}: {} at byte {pos}", e.actual);
+            Error::Limit(e)
+        })?
+        .map_err(|e| Error::Input(format!("{what}: not JSON: {e}")))?;
     if v.get("exactcheck") != Some(&json!("regress")) {
-        return Err(format!(
+        return Err(Error::Input(format!(
             "{what} is not a regress report (no \"exactcheck\": \"regress\"; write shards with regress --shard I/N)"
-        ));
+        )));
     }
     let Some(Value::Array(entries)) = v.get("entries") else {
-        return Err(format!("{what} has no \"entries\" list"));
+        return Err(Error::Input(format!("{what} has no \"entries\" list")));
     };
     entries
         .iter()
         .enumerate()
         .map(|(k, e)| Entry::from_json(e.clone(), &format!("{what}, entry {}", k + 1)))
-        .collect()
+        .collect::<Result<_, String>>()
+        .map_err(Error::Input)
 }
 
 /// Shortest round-trip text of a double.
@@ -126,6 +132,15 @@ pub fn table(entries: &[Entry]) -> String {
     ]];
     for e in entries {
         match &e.outcome {
+            Ok(r) if r.compared == 0 => rows.push([
+                e.name.clone(),
+                (r.end_sample - r.first_sample).to_string(),
+                "0".into(),
+                "-".into(),
+                "-".into(),
+                "-".into(),
+                "no sample compared".into(),
+            ]),
             Ok(r) => rows.push([
                 e.name.clone(),
                 (r.end_sample - r.first_sample).to_string(),
@@ -273,7 +288,7 @@ pub fn merge_cmd(args: &MergeArgs) -> Result<std::process::ExitCode, Error> {
     let mut docs = Vec::new();
     for path in &args.files {
         let text = crate::solve::read_problem(Some(path))?;
-        docs.push(read_document(&text, path).map_err(Error::Input)?);
+        docs.push(read_document(&text, path)?);
     }
     let first = &docs[0];
     for (doc, path) in docs.iter().zip(&args.files) {
@@ -324,5 +339,18 @@ pub fn merge_cmd(args: &MergeArgs) -> Result<std::process::ExitCode, Error> {
         });
     }
     print(&merged, args.json)?;
-    Ok(std::process::ExitCode::SUCCESS)
+    Ok(exit_code(&merged))
+}
+
+/// The exit status of a finished sweep: 1 when an entry compared no sample (a precondition never
+/// true, a domain the exact side refuses: nothing was measured, as an undecided verdict), else 0.
+pub fn exit_code(entries: &[Entry]) -> std::process::ExitCode {
+    if entries
+        .iter()
+        .any(|e| matches!(&e.outcome, Ok(r) if r.compared == 0))
+    {
+        std::process::ExitCode::from(1)
+    } else {
+        std::process::ExitCode::SUCCESS
+    }
 }

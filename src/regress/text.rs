@@ -200,7 +200,8 @@ pub fn formula_entries(args: &RegressArgs, text: &str) -> Result<Vec<Entry>, Err
 pub fn fpcore_entries(args: &RegressArgs, path: &str) -> Result<Vec<Entry>, Error> {
     let text = crate::solve::read_problem(Some(path))?;
     let all = fpcore::parse_file(&text).map_err(|e| Error::Input(format!("{path}: {e}")))?;
-    let label = |b: &fpcore::Benchmark| b.display_name();
+    // A `:name` may hold any character: escaped, so a name stays on its line of the table.
+    let label = |b: &fpcore::Benchmark| crate::error::escape_breaks(&b.display_name()).into_owned();
     let chosen: Vec<&fpcore::Benchmark> = match &args.name {
         None => all.iter().collect(),
         Some(n) => {

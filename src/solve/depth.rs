@@ -33,6 +33,21 @@ pub fn check_json(text: &str) -> Result<(), (usize, LimitError)> {
     Ok(())
 }
 
+/// Parses a JSON text (one value, nothing after it) within the `depth` limit: [`check_json`]
+/// first, then serde_json with its own fixed recursion limit off (the scan has bounded it).
+///
+/// # Errors
+/// The depth check's error (outer), or serde_json's (inner).
+#[allow(clippy::type_complexity)]
+pub fn parse_json<T: serde::de::DeserializeOwned>(
+    text: &str,
+) -> Result<Result<T, serde_json::Error>, (usize, LimitError)> {
+    check_json(text)?;
+    let mut de = serde_json::Deserializer::from_str(text);
+    de.disable_recursion_limit();
+    Ok(T::deserialize(&mut de).and_then(|v| de.end().map(|()| v)))
+}
+
 /// Checks the nesting depth of a TOML text (arrays, inline tables) against the `depth` limit;
 /// basic, literal and multi-line strings and comments are skipped.
 ///

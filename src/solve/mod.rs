@@ -183,12 +183,8 @@ fn without_bom(text: &str) -> &str {
 /// [`Error::Limit`] of `depth` for arrays and objects nested deeper than the limit.
 pub fn problem_kind(text: &str) -> Result<String, Error> {
     let text = without_bom(text);
-    depth::check_json(text).map_err(|(_, e)| Error::Limit(e))?;
-    let mut de = serde_json::Deserializer::from_str(text);
-    // The depth was bounded by the scan above (module `depth`).
-    de.disable_recursion_limit();
-    let v = Value::deserialize(&mut de)
-        .and_then(|v| de.end().map(|()| v))
+    let v: Value = depth::parse_json(text)
+        .map_err(|(_, e)| Error::Limit(e))?
         .map_err(|e| Error::Input(format!("malformed JSON: {e}")))?;
     let obj = v
         .as_object()

@@ -10,7 +10,7 @@
 //!   division by a non-constant is allowed: a zero divisor is a matter of the sample (outside the
 //!   domain on the exact side, `inf`/NaN on the float side);
 //! * `a^k`: the exponent must evaluate to an integer constant (exactly, in [`Rational`]) with
-//!   `|k| <=` [`MAX_POW_EXPONENT`]; it becomes [`Node::Pow`] with [`PowStyle::Multiply`] (the
+//!   `|k| <=` the `formula-exponent` limit; it becomes [`Node::Pow`] with [`PowStyle::Multiply`] (the
 //!   float side multiplies, it does not call `pow`);
 //! * numbers are exact literals ([`Node::Const`]; the float side rounds them once);
 //!   `sqrt(...)` of any subexpression is [`Node::Sqrt`]; unary minus is [`Node::Neg`];
@@ -22,13 +22,8 @@
 use super::{ChainOp, Node, PowStyle, Program};
 use crate::expr::{parse_expr, AddOp, Expr, ExprError, ExprKind, MulOp};
 use crate::rational::Rational;
+use exactcheck_core::limits::{self, LimitError};
 use num_traits::ToPrimitive;
-
-/// The largest absolute value of an exponent `k` in `a^k` of a formula. The float side does
-/// `|k| - 1` multiplications and the exact side's rationals grow `|k|`-fold, so the limit keeps
-/// one evaluation bounded; 1024 covers every power met in practice (and `2^1024` already
-/// overflows a double).
-pub const MAX_POW_EXPONENT: u32 = 1024;
 
 /// An error of compiling a formula: a syntax error of the one grammar, or one of the rules
 /// above, with the byte position it refers to.
@@ -47,6 +42,13 @@ pub enum CompileError {
         /// The given variables, comma-separated (`(none)` for an empty list).
         list: String,
     },
+    /// An entry of the given variable list that is not a variable name of the grammar (an empty
+    /// entry, as in `x,,y`, or `2x`).
+    #[error("{name:?} in the variable list is not a variable name")]
+    BadVariable {
+        /// The entry.
+        name: String,
+    },
     /// A name that appears twice in the given variable list.
     #[error("variable '{name}' is listed twice")]
     DuplicateVariable {
@@ -61,18 +63,13 @@ pub enum CompileError {
         /// The exponent (its expression, or its value).
         found: String,
     },
-    /// An exponent beyond [`MAX_POW_EXPONENT`].
-    #[error(
-        "exponent {exponent} at {pos} is too large (absolute value at most {max}, \
-         MAX_POW_EXPONENT)"
-    )]
+    /// An exponent beyond the `formula-exponent` limit ([`limits::FORMULA_EXPONENT`]).
+    #[error("exponent at {pos}: {error}")]
     ExponentTooLarge {
         /// Byte position of the exponent.
         pos: usize,
-        /// Its value.
-        exponent: String,
-        /// The limit, [`MAX_POW_EXPONENT`].
-        max: u32,
+        /// The limit exceeded, with the exponent found.
+        error: LimitError,
     },
 }
 
@@ -84,7 +81,7 @@ impl CompileError {
             CompileError::UnknownVariable { pos, .. }
             | CompileError::BadExponent { pos, .. }
             | CompileError::ExponentTooLarge { pos, .. } => *pos,
-            CompileError::DuplicateVariable { .. } => 0,
+            CompileError::DuplicateVariable { .. } | CompileError::BadVariable { .. } => 0,
         }
     }
 }
@@ -123,14 +120,19 @@ impl Program {
     /// overwrite it).
     ///
     /// # Errors
-    /// An unknown or duplicate variable, an exponent that is not an integer constant or exceeds
-    /// [`MAX_POW_EXPONENT`], or an error evaluating a constant exponent.
+    /// An unknown, duplicate or malformed variable, an exponent that is not an integer constant or exceeds
+    /// the `formula-exponent` limit, or an error evaluating a constant exponent.
     pub fn from_expr(expr: &Expr, vars: Option<&[String]>) -> Result<Program, CompileError> {
         let mut table = Vars {
             names: Vec::new(),
             fixed: vars.is_some(),
         };
         for name in vars.unwrap_or_default() {
+            let is_name =
+                parse_expr(name).is_ok_and(|e| matches!(&e.kind, ExprKind::Var(v) if v == name));
+            if !is_name {
+                return Err(CompileError::BadVariable { name: name.clone() });
+            }
             if table.names.contains(name) {
                 return Err(CompileError::DuplicateVariable { name: name.clone() });
             }
@@ -243,7 +245,7 @@ fn chain(first: Node, mut ops: Vec<(ChainOp, Node)>) -> Node {
     }
 }
 
-/// The value of an exponent: an integer constant with `|k| <= MAX_POW_EXPONENT`.
+/// The value of an exponent: an integer constant with `|k|` within the `formula-exponent` limit.
 fn exponent(e: &Expr) -> Result<i32, CompileError> {
     let bad = |found: String| CompileError::BadExponent { pos: e.pos, found };
     let q: Rational = match e.eval_constant() {
@@ -254,14 +256,13 @@ fn exponent(e: &Expr) -> Result<i32, CompileError> {
     if !q.is_integer() {
         return Err(bad(q.to_string()));
     }
-    match q.numer().to_i64() {
-        Some(k) if k.unsigned_abs() <= u64::from(MAX_POW_EXPONENT) => {
-            Ok(i32::try_from(k).expect("|k| <= MAX_POW_EXPONENT fits in i32"))
-        }
-        _ => Err(CompileError::ExponentTooLarge {
+    let limit = &limits::FORMULA_EXPONENT;
+    q.numer()
+        .to_i64()
+        .filter(|k| limit.check(k.unsigned_abs()).is_ok())
+        .and_then(|k| i32::try_from(k).ok())
+        .ok_or_else(|| CompileError::ExponentTooLarge {
             pos: e.pos,
-            exponent: q.to_string(),
-            max: MAX_POW_EXPONENT,
-        }),
-    }
+            error: limit.exceeded(q.to_string()),
+        })
 }

@@ -30,7 +30,7 @@ mod real;
 mod tests;
 mod walk;
 
-pub use compile::{CompileError, MAX_POW_EXPONENT};
+pub use compile::CompileError;
 pub use float::{pow_f64, STACK_SLOTS};
 pub use real::{ExactStop, Reference, ABS_BITS, MAX_PRECISION, REL_BITS, START_PRECISION};
 

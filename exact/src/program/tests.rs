@@ -213,12 +213,31 @@ fn unknown_variable_names_it_and_the_list() {
 }
 
 #[test]
+fn variable_lists_hold_variable_names_only() {
+    // `--vars 'x,,y'` splits into an empty name, which no formula can use.
+    let e = Program::parse("x + y", Some(&vars(&["x", "", "y"]))).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "\"\" in the variable list is not a variable name"
+    );
+    for bad in ["2x", " x", "x y", "x+1", "sqrt(x)"] {
+        let e = Program::parse("x", Some(&vars(&["x", bad]))).unwrap_err();
+        assert!(
+            matches!(e, CompileError::BadVariable { .. }),
+            "{bad:?}: {e}"
+        );
+    }
+    assert!(Program::parse("x_1 + y", Some(&vars(&["y", "x_1"]))).is_ok());
+}
+
+#[test]
 fn exponents_are_bounded_integer_constants() {
     assert!(Program::parse("x^1024 + x^-1024 + x^(2*512)", None).is_ok());
     let e = Program::parse("x^1025", None).unwrap_err();
     assert_eq!(
         e.to_string(),
-        "exponent 1025 at 2 is too large (absolute value at most 1024, MAX_POW_EXPONENT)"
+        "exponent at 2: exponent of a power in a regressed formula exceeds the limit \
+         formula-exponent = 1024 (found 1025; raise it with --limit formula-exponent=N)"
     );
     let e = Program::parse("1 + x^-(2^11)", None).unwrap_err();
     assert!(
