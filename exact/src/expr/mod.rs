@@ -94,6 +94,7 @@ use num_bigint::BigInt;
 use num_traits::Signed;
 
 mod eval;
+mod fraction;
 mod latex;
 mod mathml;
 mod parse;
@@ -106,6 +107,10 @@ pub use latex::{equation_to_latex, to_latex, Notation};
 pub use mathml::{equation_to_mathml, to_mathml};
 pub use parse::{parse_expr, parse_expr_with_calls, parse_poly};
 pub use w1::w1_text;
+
+/// The functions written `name(arg, ...)` in every grammar (besides `sqrt`): `diff(E, t)` and
+/// `diff(E, t, k)`, the exact derivative of `E` in the variable `t` (`k` times).
+pub const FUNCTIONS: &[&str] = &["diff"];
 
 // ------------------------------------------------------------------------------ coefficients
 
@@ -215,7 +220,7 @@ pub enum AddOp {
 pub enum MulOp {
     /// Multiplication.
     Times,
-    /// Division (by a non-zero constant).
+    /// Division (by a non-zero constant, or by a non-zero polynomial in [`Expr::to_ratfun`]).
     Divide,
 }
 
@@ -247,8 +252,9 @@ pub enum ExprKind {
     Pow(Box<Expr>, Box<Expr>),
     /// `sqrt(arg)`.
     Sqrt(Box<Expr>),
-    /// `name(arg, ...)`: a function call, produced only by [`parse_expr_with_calls`] and
-    /// resolved by its caller; the conversions to polynomials and constants refuse it
+    /// `name(arg, ...)`: a function call. The functions of the language ([`FUNCTIONS`]: `diff`)
+    /// are converted; any other name is produced only by [`parse_expr_with_calls`] and resolved
+    /// by its caller, and the conversions to polynomials and constants refuse it
     /// ([`ExprError::UnknownFunction`]). With the empty name it is a tuple `(a, b, ...)`
     /// ([`Expr::tuple`]: a vector in an erratum), printed but never parsed.
     Call(String, Vec<Expr>),
@@ -329,6 +335,24 @@ pub enum ExprError {
         /// Byte position of the divisor.
         pos: usize,
     },
+    /// Division by a polynomial expression that is identically zero (`1/(x-x)`).
+    #[error("division by zero at {pos}: the divisor {divisor} is identically zero")]
+    ZeroDivisor {
+        /// Byte position of the divisor.
+        pos: usize,
+        /// The divisor, printed.
+        divisor: String,
+    },
+    /// A call of a function of the language ([`FUNCTIONS`]) with wrong arguments.
+    #[error("{name} at {pos}: {why}")]
+    BadCall {
+        /// Byte position of the argument at fault (or of the call).
+        pos: usize,
+        /// The function.
+        name: String,
+        /// What is wrong, in words.
+        why: String,
+    },
     /// An exponent that is not a non-negative integer constant.
     #[error("exponent at {pos} must be a non-negative integer constant, found {found}")]
     BadExponent {
@@ -347,8 +371,8 @@ pub enum ExprError {
     },
     /// A name followed by `(` that is not a known function.
     #[error(
-        "unknown function '{name}' at {pos}: the only function is sqrt (write '{name}*(...)' \
-         for a product)"
+        "unknown function '{name}' at {pos}: the functions are sqrt and diff (write \
+         '{name}*(...)' for a product)"
     )]
     UnknownFunction {
         /// Byte position of the name.
@@ -418,6 +442,8 @@ impl ExprError {
             ExprError::Unexpected { pos, .. }
             | ExprError::NonConstantDivisor { pos }
             | ExprError::DivisionByZero { pos }
+            | ExprError::ZeroDivisor { pos, .. }
+            | ExprError::BadCall { pos, .. }
             | ExprError::BadExponent { pos, .. }
             | ExprError::ExponentOverflow { pos }
             | ExprError::NegativeExponent { pos }
