@@ -56,6 +56,11 @@ impl<C: Field> RatFun<C> {
         &self.conditions
     }
 
+    /// The numerator, consuming the fraction.
+    pub fn into_numerator(self) -> Poly<C> {
+        self.num
+    }
+
     /// Whether the denominator is 1 and no divisor was met.
     pub fn is_polynomial(&self) -> bool {
         self.den.is_one() && self.conditions.is_empty()
@@ -170,14 +175,39 @@ impl<C: Field> RatFun<C> {
     }
 }
 
-/// Adds the monic form of a non-constant `p` to `conditions` unless it is there already.
-fn push_condition<C: Field>(conditions: &mut Vec<Poly<C>>, p: &Poly<C>) {
+/// Adds the condition `p != 0` to `conditions` (monic polynomials whose zeros are excluded)
+/// without repeating a zero already excluded: `p` is reduced to its square-free part
+/// `p / gcd(p, dp/dx_1, ..., dp/dx_n)` (exact over a field of characteristic 0), and the common
+/// factor with every condition already listed is divided out; what remains, if not constant,
+/// is added. `(t + 1)^2` after `t + 1` adds nothing, `x^2 - 1` after `x - 1` adds `x + 1`. When
+/// a gcd exceeds a limit, `p` is added as it is (the same zeros, less tidy).
+pub fn push_condition<C: Field>(conditions: &mut Vec<Poly<C>>, p: &Poly<C>) {
     if p.is_constant() {
         return;
     }
-    let m = p.make_monic();
-    if !conditions.contains(&m) {
-        conditions.push(m);
+    let tidy = || -> Result<Poly<C>, SizeError> {
+        let mut g = p.clone();
+        for v in p.variables() {
+            g = poly_gcd(&g, &poly_derivative(p, v))?;
+        }
+        let mut q = div_exact(p, &g).expect("the gcd divides the polynomial");
+        for c in conditions.iter() {
+            let common = poly_gcd(&q, c)?;
+            if !common.is_constant() {
+                q = div_exact(&q, &common).expect("the gcd divides the polynomial");
+            }
+        }
+        Ok(q.make_monic())
+    };
+    match tidy() {
+        Ok(q) if q.is_constant() => {}
+        Ok(q) => conditions.push(q),
+        Err(_) => {
+            let m = p.make_monic();
+            if !conditions.contains(&m) {
+                conditions.push(m);
+            }
+        }
     }
 }
 
