@@ -19,7 +19,8 @@
 //! unary    := ('-' | '+') unary | power
 //! power    := atom ('^' exponent)?
 //! exponent := ('-' | '+') exponent | atom ('^' exponent)?   (right-associative)
-//! atom     := number | variable | 'sqrt' '(' sum ')' | '(' sum ')'
+//! atom     := number | variable | 'sqrt' '(' sum ')' | call | '(' sum ')'
+//! call     := 'diff' '(' sum ',' variable (',' sum)? ')'
 //! number   := [0-9]+ ('.' [0-9]+)? ([eE] [+-]? [0-9]+)?
 //! variable := [A-Za-z_][A-Za-z0-9_]*          (not followed by '('; not the word sqrt)
 //! ```
@@ -33,14 +34,20 @@
 //! * **Juxtaposition multiplies**, binding like `*`: `2x`, `2 sqrt(2)`, `x y`, `(a+b)(a-b)`,
 //!   `c^2 x^3`. A juxtaposed factor takes no sign of its own (`x -y` is a difference) and may not
 //!   start with a number (`2 3` and `x 2` are errors: write `*`).
-//! * **Functions**: the only function is `sqrt`. A name followed by `(` is a function call, so
-//!   `sin(x)` is the error `unknown function 'sin'` rather than the product `sin*(x)`; write the
-//!   `*` for a product (`x*(y+1)`).
+//! * **Functions**: `sqrt` and `diff` ([`FUNCTIONS`]). A name followed by `(` is a function
+//!   call, so `sin(x)` is the error `unknown function 'sin'` rather than the product `sin*(x)`;
+//!   write the `*` for a product (`x*(y+1)`). `diff(E, t)` is the exact derivative of `E` in the
+//!   variable `t` (the second argument must be a variable name), `diff(E, t, k)` the `k`-th, `k`
+//!   a non-negative integer constant within the `diff-order` limit ([`limits::DIFF_ORDER`]); of a
+//!   fraction by the quotient rule ([`crate::ratfun::RatFun::derivative`]).
 //! * `^` binds tighter than unary minus (`-x^2 = -(x^2)`) and is right-associative
 //!   (`x^2^3 = x^8`). Its exponent must evaluate to an integer constant with absolute value at
 //!   most the `exponent` limit ([`limits::EXPONENT`]); it may carry a sign (`2^-3 = 1/8`), but a negative exponent needs a
-//!   non-zero constant base. Likewise a division is allowed only by an expression that evaluates
-//!   to a non-zero constant (`3/4*x`).
+//!   non-zero constant base in [`Expr::to_poly`]. Likewise [`Expr::to_poly`] divides only by an
+//!   expression that evaluates to a non-zero constant (`3/4*x`). [`Expr::to_ratfun`] divides by
+//!   (and takes negative powers of) any expression that is not identically zero: the result is
+//!   a rational function ([`crate::ratfun::RatFun`]) in lowest terms with the divisors met, and
+//!   an expression without such a division converts by [`Expr::to_poly`] alone.
 //! * `sqrt(...)` takes a constant and needs a coefficient type that has the root (over
 //!   [`Rational`], only of perfect squares; [`crate::Radical`] denests; [`crate::ComplexRadical`]
 //!   takes the principal root).
@@ -81,7 +88,7 @@
 //! # Layout
 //! Here: the limits, the [`Coefficient`] trait, the AST and the errors; `parse`: the lexer and
 //! the parser; `eval`: the conversion to polynomials and the constant evaluator with the size
-//! limits; `print`: the printer; `latex`: LaTeX ([`to_latex`]) with a [`Notation`] for names, from
+//! limits; `fraction`: the conversion to rational functions and the arguments of `diff`; `print`: the printer; `latex`: LaTeX ([`to_latex`]) with a [`Notation`] for names, from
 //! a layout shared with `mathml` ([`to_mathml`]); `w1`: the text of workload W1.
 //!
 //! # Errors
