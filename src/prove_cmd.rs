@@ -411,8 +411,8 @@ fn prove_over<C: PointField + Display>(
         if a.is_polynomial() && b.is_polynomial() {
             rels.push(a.into_numerator() - b.into_numerator());
         } else {
-            let cleared = FractionIdentity::new(&a, &b)
-                .map_err(|e| Error::Input(format!("{what}: {e}")))?;
+            let cleared =
+                FractionIdentity::new(&a, &b).map_err(|e| Error::Input(format!("{what}: {e}")))?;
             rels.push(cleared.residual);
             hypotheses.extend(cleared.conditions);
         }

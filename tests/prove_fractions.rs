@@ -6,14 +6,7 @@
 #[path = "common/timed.rs"]
 mod timed;
 
-/// Exit status, standard output and standard error of `exactcheck ARGS`, under the shared
-/// kill-timeout.
-fn run(args: &[&str]) -> (i32, String, String) {
-    let os: Vec<std::ffi::OsString> = args.iter().map(Into::into).collect();
-    let r = timed::run(&os, None);
-    assert!(!r.timed_out, "exactcheck {args:?}: {}", r.describe());
-    (r.status.unwrap_or(-1), r.stdout_text(), r.stderr_text())
-}
+use timed::run_text as run;
 
 /// `prove ARGS --json` as a JSON object, with its exit status.
 fn prove_json(args: &[&str]) -> (i32, serde_json::Value) {
@@ -27,11 +20,7 @@ fn prove_json(args: &[&str]) -> (i32, serde_json::Value) {
 
 #[test]
 fn the_rational_unit_circle_is_proved_for_every_real_t() {
-    let (code, out, _) = run(&[
-        "prove",
-        "((1-t^2)/(1+t^2))^2 + (2*t/(1+t^2))^2",
-        "1",
-    ]);
+    let (code, out, _) = run(&["prove", "((1-t^2)/(1+t^2))^2 + (2*t/(1+t^2))^2", "1"]);
     assert_eq!(code, 0, "{out}");
     assert!(out.starts_with("proved: "), "{out}");
     assert!(
@@ -67,7 +56,10 @@ fn derivatives_of_fractions_are_exact() {
     let (code, out, _) = run(&["prove", "diff(1/(1+t^2), t, 2)", "(6*t^2-2)/(1+t^2)^3"]);
     assert_eq!(code, 0, "{out}");
     let (code, out, _) = run(&["prove", "diff(x^5*y, x, 3)", "60*x^2*y"]);
-    assert_eq!((code, out.trim_end()), (0, "proved: LHS - RHS expands to 0"));
+    assert_eq!(
+        (code, out.trim_end()),
+        (0, "proved: LHS - RHS expands to 0")
+    );
     // A wrong derivative (the quotient rule with the wrong sign) fails.
     let (code, out, _) = run(&["prove", "diff(t/(1+t), t)", "(1+2*t)/(1+t)^2"]);
     assert_eq!(code, 1, "{out}");
@@ -82,7 +74,10 @@ fn a_counter_example_avoids_the_poles() {
         assert_eq!(j["verdict"], "fails");
         let x: exactcheck_exact::Rational = j["point"]["x"].as_str().unwrap().parse().unwrap();
         let y: exactcheck_exact::Rational = j["point"]["y"].as_str().unwrap().parse().unwrap();
-        assert!(x != exactcheck_exact::Rational::ZERO && y != exactcheck_exact::Rational::ZERO, "{j}");
+        assert!(
+            x != exactcheck_exact::Rational::ZERO && y != exactcheck_exact::Rational::ZERO,
+            "{j}"
+        );
         // The value is that of the fractions, 1/x - 1/y, not of the cleared numerator y - x.
         let v: exactcheck_exact::Rational = j["value"].as_str().unwrap().parse().unwrap();
         assert_eq!(v, &x.recip().unwrap() - &y.recip().unwrap(), "{j}");
@@ -110,12 +105,18 @@ fn relations_with_fractions_are_cleared_into_hypotheses() {
 #[test]
 fn polynomial_identities_keep_their_path_and_wording() {
     let (code, out, _) = run(&["prove", "(a+b)^2", "a^2 + 2 a b + b^2"]);
-    assert_eq!((code, out.trim_end()), (0, "proved: LHS - RHS expands to 0"));
+    assert_eq!(
+        (code, out.trim_end()),
+        (0, "proved: LHS - RHS expands to 0")
+    );
     let (_, j) = prove_json(&["(a+b)^2", "a^2 + 2 a b + b^2"]);
     assert!(j.get("conditions").is_none(), "{j}");
     // Division by a constant stays polynomial.
     let (code, out, _) = run(&["prove", "x/2 + x/2", "x"]);
-    assert_eq!((code, out.trim_end()), (0, "proved: LHS - RHS expands to 0"));
+    assert_eq!(
+        (code, out.trim_end()),
+        (0, "proved: LHS - RHS expands to 0")
+    );
 }
 
 #[test]
@@ -130,9 +131,15 @@ fn bad_fractions_and_calls_are_one_line() {
             &["prove", "diff(x^2, 2)", "1"][..],
             "the second argument must be a variable name, not 2",
         ),
-        (&["prove", "diff(x^2, x^2)", "1"][..], "must be a variable name"),
+        (
+            &["prove", "diff(x^2, x^2)", "1"][..],
+            "must be a variable name",
+        ),
         (&["prove", "diff(x^2)", "1"][..], "takes 2 or 3 arguments"),
-        (&["prove", "diff(x^2, x, -1)", "1"][..], "non-negative integer"),
+        (
+            &["prove", "diff(x^2, x, -1)", "1"][..],
+            "non-negative integer",
+        ),
         (&["prove", "diff(x^2, x, 101)", "1"][..], "diff-order = 100"),
     ] {
         let (code, out, err) = run(args);
@@ -142,6 +149,12 @@ fn bad_fractions_and_calls_are_one_line() {
         assert!(err.contains(needle), "{args:?}: {err}");
     }
     // The limit can be raised.
-    let (code, out, _) = run(&["prove", "diff(x^200, x, 101)", "0", "--limit", "diff-order=200"]);
+    let (code, out, _) = run(&[
+        "prove",
+        "diff(x^200, x, 101)",
+        "0",
+        "--limit",
+        "diff-order=200",
+    ]);
     assert_eq!(code, 1, "{out}");
 }

@@ -104,7 +104,12 @@ impl<C: Field> RatFun<C> {
 
     /// `self * o`.
     pub fn mul(&self, o: &Self) -> Result<Self, SizeError> {
-        Self::reduced(self.num.try_mul(&o.num)?, self.den.try_mul(&o.den)?, self, o)
+        Self::reduced(
+            self.num.try_mul(&o.num)?,
+            self.den.try_mul(&o.den)?,
+            self,
+            o,
+        )
     }
 
     /// `self / o`, recording the numerator of `o` as a condition; `None` when `o` is
@@ -162,9 +167,7 @@ impl<C: Field> RatFun<C> {
             });
         }
         let dd = poly_derivative(&self.den, v);
-        let num = dn
-            .try_mul(&self.den)?
-            .sub_ref(&self.num.try_mul(&dd)?);
+        let num = dn.try_mul(&self.den)?.sub_ref(&self.num.try_mul(&dd)?);
         let den = self.den.try_mul(&self.den)?;
         let (num, den) = lowest_terms(num, den)?;
         Ok(RatFun {
@@ -309,7 +312,9 @@ fn content_in<C: Field>(p: &Poly<C>, v: Var) -> Result<Poly<C>, SizeError> {
 /// The pseudo-remainder of `f` by `g` in `v`: `lc(g)^k f - q g` of degree in `v` below `g`'s.
 fn pseudo_remainder<C: Field>(f: &Poly<C>, g: &Poly<C>, v: Var) -> Result<Poly<C>, SizeError> {
     let dg = g.degree_in(v);
-    let lc_g = coefficients_in(g, v).pop().expect("a polynomial has a coefficient");
+    let lc_g = coefficients_in(g, v)
+        .pop()
+        .expect("a polynomial has a coefficient");
     let mut r = f.clone();
     while !r.is_zero() && r.degree_in(v) >= dg {
         let dr = r.degree_in(v);
@@ -396,7 +401,9 @@ mod tests {
         let mut vars = Vars::from_names(["x", "y", "z"]);
         let common = p("x*y - z^2 + 3", &mut vars);
         let a = common.mul_ref(&p("x + y + 1", &mut vars));
-        let b = common.mul_ref(&p("x - 2*z", &mut vars)).scale(&Rational::from(7));
+        let b = common
+            .mul_ref(&p("x - 2*z", &mut vars))
+            .scale(&Rational::from(7));
         assert_eq!(poly_gcd(&a, &b).unwrap(), common.make_monic());
         let one = poly_gcd(&p("x + 1", &mut vars), &p("x - 1", &mut vars)).unwrap();
         assert!(one.is_one());

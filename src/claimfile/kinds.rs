@@ -14,8 +14,8 @@ use exactcheck_exact::expr::{parse_expr, AddOp, Coefficient, Expr, ExprKind};
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
     decide_fraction, decide_in, describe_conditions, random_identity_test, real_zero_free,
-    unit_circle_pairs, DecideError, Decision, Domain, FractionIdentity, PointField,
-    RandomDecision, HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
+    unit_circle_pairs, DecideError, Decision, Domain, FractionIdentity, PointField, RandomDecision,
+    HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
 };
 use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::{Radical, Rational};
@@ -472,14 +472,15 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<Outcome, Fault> {
         }
     }
     // `l = r`: a polynomial residual, or (with a fraction anywhere) the cleared identity.
-    let pair = |l: &RatFun<C>, r: &RatFun<C>| -> Result<(Poly<C>, Option<FractionIdentity<C>>), Fault> {
-        if l.is_polynomial() && r.is_polynomial() && hypotheses.is_empty() {
-            Ok((l.numerator().clone() - r.numerator(), None))
-        } else {
-            let f = clear(l, r, "lhs")?;
-            Ok((f.residual.clone(), Some(f)))
-        }
-    };
+    let pair =
+        |l: &RatFun<C>, r: &RatFun<C>| -> Result<(Poly<C>, Option<FractionIdentity<C>>), Fault> {
+            if l.is_polynomial() && r.is_polynomial() && hypotheses.is_empty() {
+                Ok((l.numerator().clone() - r.numerator(), None))
+            } else {
+                let f = clear(l, r, "lhs")?;
+                Ok((f.residual.clone(), Some(f)))
+            }
+        };
     let mut residuals = Vec::new();
     let mut fractions = Vec::new();
     for (l, r) in &sides {
@@ -488,7 +489,12 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<Outcome, Fault> {
         fractions.push(f);
     }
     let mut excluded: Vec<Poly<C>> = Vec::new();
-    for p in fractions.iter().flatten().flat_map(|f| &f.conditions).chain(&hypotheses) {
+    for p in fractions
+        .iter()
+        .flatten()
+        .flat_map(|f| &f.conditions)
+        .chain(&hypotheses)
+    {
         if !excluded.contains(p) {
             excluded.push(p.clone());
         }

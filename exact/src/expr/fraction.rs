@@ -24,7 +24,9 @@ impl Expr {
             ExprKind::Pow(b, e) => {
                 b.has_fractions() || (b.has_variable() && exponent_value(e).is_ok_and(|k| k < 0))
             }
-            ExprKind::Call(name, args) => name == "diff" && args.first().is_some_and(Expr::has_fractions),
+            ExprKind::Call(name, args) => {
+                name == "diff" && args.first().is_some_and(Expr::has_fractions)
+            }
         }
     }
 
@@ -89,7 +91,9 @@ impl Expr {
                     let f = x.to_ratfun::<C>(vars)?;
                     acc = match op {
                         MulOp::Times => acc.mul(&f).map_err(size)?,
-                        MulOp::Divide => acc.div(&f).map_err(size)?.ok_or_else(|| zero_divisor(x))?,
+                        MulOp::Divide => {
+                            acc.div(&f).map_err(size)?.ok_or_else(|| zero_divisor(x))?
+                        }
                     };
                 }
                 acc
@@ -188,9 +192,7 @@ pub(super) fn diff_arguments<'a>(
             let not_order = || {
                 bad(
                     order.pos,
-                    format!(
-                        "the order must be a non-negative integer constant, not {order}"
-                    ),
+                    format!("the order must be a non-negative integer constant, not {order}"),
                 )
             };
             let q: Rational = order.eval_constant().map_err(|_| not_order())?;

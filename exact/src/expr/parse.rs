@@ -301,8 +301,7 @@ impl<'a> Parser<'a> {
             }
             Tok::Ident => {
                 self.bump();
-                if self.cur.tok == Tok::LParen
-                    && (self.calls || FUNCTIONS.contains(&self.text(t)))
+                if self.cur.tok == Tok::LParen && (self.calls || FUNCTIONS.contains(&self.text(t)))
                 {
                     let args = self.parse_arguments()?;
                     return Ok(Expr {

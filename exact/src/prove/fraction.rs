@@ -32,7 +32,12 @@ impl<C: Field> FractionIdentity<C> {
         let (c, d) = (rhs.numerator(), rhs.denominator());
         let residual = a.try_mul(d)?.sub_ref(&c.try_mul(b)?);
         let mut conditions: Vec<Poly<C>> = Vec::new();
-        for p in lhs.conditions().iter().chain(rhs.conditions()).chain([b, d]) {
+        for p in lhs
+            .conditions()
+            .iter()
+            .chain(rhs.conditions())
+            .chain([b, d])
+        {
             push_condition(&mut conditions, p);
         }
         Ok(FractionIdentity {
@@ -130,7 +135,10 @@ pub fn describe_conditions<C: PointField + Display>(conditions: &[Poly<C>], vars
             match p.variables().as_slice() {
                 [v] if p.degree_in(*v) == 1 && p.coefficient(&[(*v, 1)]).is_one() => {
                     let name = vars.name(*v).unwrap_or("?");
-                    format!("{name} != {}", Poly::constant(p.coefficient(&[]).neg_ref()).display(vars))
+                    format!(
+                        "{name} != {}",
+                        Poly::constant(p.coefficient(&[]).neg_ref()).display(vars)
+                    )
                 }
                 _ => format!("{} != 0{note}", p.display(vars)),
             }
