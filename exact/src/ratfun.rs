@@ -285,10 +285,13 @@ pub fn div_exact<C: Field>(a: &Poly<C>, b: &Poly<C>) -> Option<Poly<C>> {
     Some(Poly::from_terms(quotient))
 }
 
+/// A term: its exponents and its coefficient.
+type Term<C> = (Vec<(Var, u32)>, C);
+
 /// The coefficients of `p` as a polynomial in `v`: entry `i` is the coefficient of `v^i` (a
 /// polynomial in the other variables).
 fn coefficients_in<C: Ring>(p: &Poly<C>, v: Var) -> Vec<Poly<C>> {
-    let mut buckets: Vec<Vec<(Vec<(Var, u32)>, C)>> = vec![Vec::new(); p.degree_in(v) as usize + 1];
+    let mut buckets: Vec<Vec<Term<C>>> = vec![Vec::new(); p.degree_in(v) as usize + 1];
     for (m, c) in p.terms() {
         let e = m.exponent(v) as usize;
         let rest: Vec<(Var, u32)> = m.exponents().into_iter().filter(|&(w, _)| w != v).collect();
