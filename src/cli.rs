@@ -46,9 +46,12 @@ pub enum Command {
     /// the expected one.
     #[command(after_help = VERIFY_EXAMPLES)]
     Verify(crate::verify_cmd::VerifyArgs),
-    /// Prove a polynomial identity LHS = RHS, for all values, modulo relations or inside
-    /// domains (`--where`): `proved`; `fails` with an exact counter-example and what the sides
-    /// differ by; or `undecided` when neither is found. `--random K`: `holds`/`fails`/`undecided`
+    /// Prove an identity LHS = RHS of polynomials or rational functions, for all values, modulo
+    /// relations or inside domains (`--where`): `proved` (with the divisors that must not
+    /// vanish); `fails` with an exact counter-example and what the sides differ by; or
+    /// `undecided` when neither is found. Expressions: numbers, variables, + - * / ^,
+    /// parentheses, and the functions sqrt(c) of a constant, diff(E, t) and diff(E, t, k) (the
+    /// exact derivative in the variable t, k times). `--random K`: `holds`/`fails`/`undecided`
     /// with a proved error bound.
     #[command(after_help = PROVE_EXAMPLES)]
     Prove(crate::prove_cmd::ProveArgs),
@@ -115,6 +118,8 @@ const PROVE_EXAMPLES: &str = "Examples:
   exactcheck prove '(a+b)^2' 'a^2 + 2 a b + b^2'
   exactcheck prove 'c^2 x^3 + s^2 x^3 - x' 'x^3 - x' --where 'c^2 + s^2 = 1'
   exactcheck prove 'x^2 + 1' '2 x' --where 'x >= 0'
+  exactcheck prove '((1-t^2)/(1+t^2))^2 + (2*t/(1+t^2))^2' 1
+  exactcheck prove 'diff(t^3/(1+t), t)' '(2*t^3+3*t^2)/(1+t)^2'
   exactcheck prove '(x+y)^20' '(y+x)^20' --random 20 --seed 7";
 const SOLVE_EXAMPLES: &str = "Examples:
   exactcheck solve tests/solve_golden/cs_example1.json

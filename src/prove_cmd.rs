@@ -2,9 +2,11 @@
 //! user's own polynomial identities.
 //!
 //! Both sides (and each relation) are parsed in the expression syntax (numbers, `sqrt(k)`,
-//! variables, `+ - * / ^`, parentheses), expanded, and `LHS - RHS` is reduced modulo the
-//! relations (unit circles `c^2 + s^2 = 1` in closed form, others by a Gröbner basis); see
-//! `exactcheck_exact::prove`. A `--where` with `<`, `<=`, `>` or `>=` is a domain (`r > 0`,
+//! `diff(E, t[, k])`, variables, `+ - * / ^`, parentheses), expanded, and `LHS - RHS` is reduced
+//! modulo the relations (unit circles `c^2 + s^2 = 1` in closed form, others by a Gröbner
+//! basis); see `exactcheck_exact::prove`. With a division by a non-constant anywhere, the sides
+//! are rational functions (`Expr::to_ratfun`): the identity is decided with the denominators
+//! cleared (`prove::decide_fraction`), and the divisors met are reported as side conditions. A `--where` with `<`, `<=`, `>` or `>=` is a domain (`r > 0`,
 //! `0 <= t <= 1`, constant bounds only): counter-examples are searched inside the domains.
 //! Inconsistent relations (`1 = 2`; `x = 1` and `x = 2`) are an input error. `--random K`
 //! evaluates instead at K random points modulo a prime drawn at random per run
@@ -16,9 +18,10 @@ use clap::Args;
 use exactcheck_exact::expr::{parse_expr, Coefficient, Expr};
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
-    counter_example, decide_in, DecideError, Decision, Domain, PointField, HOLDS_THRESHOLD_LOG2,
-    MAX_RANDOM_TRIALS,
+    counter_example, decide_fraction, decide_in, describe_conditions, real_zero_free, DecideError, Decision, Domain,
+    FractionIdentity, PointField, HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
 };
+use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::{Radical, Rational};
 use serde_json::json;
 use std::fmt::Display;
@@ -384,6 +387,15 @@ pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
     }
 }
 
+fn to_ratfun<C: Coefficient + exactcheck_core::Field>(
+    e: &Expr,
+    vars: &mut Vars,
+    what: &str,
+) -> Result<RatFun<C>, Error> {
+    e.to_ratfun::<C>(vars)
+        .map_err(|err| Error::Input(format!("{what}: {err}")))
+}
+
 fn to_poly<C: Coefficient>(e: &Expr, vars: &mut Vars, what: &str) -> Result<Poly<C>, Error> {
     e.to_poly::<C>(vars)
         .map_err(|err| Error::Input(format!("{what}: {err}")))
@@ -397,17 +409,34 @@ fn prove_over<C: PointField + Display>(
     domains: &[(String, Domain, String)],
 ) -> Result<ExitCode, Error> {
     let mut vars = Vars::new();
-    let l = to_poly::<C>(lhs, &mut vars, "LHS")?;
+    let l = to_ratfun::<C>(lhs, &mut vars, "LHS")?;
     let r = match rhs {
-        Some(e) => to_poly::<C>(e, &mut vars, "RHS")?,
-        None => Poly::zero(),
+        Some(e) => to_ratfun::<C>(e, &mut vars, "RHS")?,
+        None => RatFun::from_poly(Poly::zero()),
     };
+    // Relations between fractions are cleared of their denominators, which become
+    // hypotheses (non-zero).
     let mut rels = Vec::new();
+    let mut hypotheses: Vec<Poly<C>> = Vec::new();
     for (i, (a, b)) in relations.iter().enumerate() {
-        let a = to_poly::<C>(a, &mut vars, &format!("--where #{}", i + 1))?;
-        let b = to_poly::<C>(b, &mut vars, &format!("--where #{}", i + 1))?;
-        rels.push(a - b);
+        let what = format!("--where #{}", i + 1);
+        let a = to_ratfun::<C>(a, &mut vars, &what)?;
+        let b = to_ratfun::<C>(b, &mut vars, &what)?;
+        if a.is_polynomial() && b.is_polynomial() {
+            rels.push(a.into_numerator() - b.into_numerator());
+        } else {
+            let cleared =
+                FractionIdentity::new(&a, &b).map_err(|e| Error::Input(format!("{what}: {e}")))?;
+            rels.push(cleared.residual);
+            hypotheses.extend(cleared.conditions);
+        }
     }
+    // A polynomial identity takes the polynomial path; fractions are cleared.
+    let fraction = if l.is_polynomial() && r.is_polynomial() && hypotheses.is_empty() {
+        None
+    } else {
+        Some(FractionIdentity::new(&l, &r).map_err(|e| Error::Input(format!("LHS - RHS: {e}")))?)
+    };
     let mut doms: Vec<(Var, Domain)> = Vec::new();
     for (v, d, text) in domains {
         let var = vars.get(v).ok_or_else(|| {
@@ -422,7 +451,30 @@ fn prove_over<C: PointField + Display>(
             .expect("the engine reports only variables of the table")
             .to_string()
     };
-    let residual = l.clone() - &r;
+    let residual = match &fraction {
+        None => l.numerator().clone() - r.numerator(),
+        Some(f) => f.residual.clone(),
+    };
+    // The points excluded: the divisors of the sides and of the relations.
+    let mut excluded: Vec<Poly<C>> = fraction.iter().flat_map(|f| f.conditions.clone()).collect();
+    for h in &hypotheses {
+        if !excluded.contains(h) {
+            excluded.push(h.clone());
+        }
+    }
+    let (cleared, where_nonzero) = match &fraction {
+        None => ("", String::new()),
+        Some(_) => {
+            let mut w = String::new();
+            if !excluded.is_empty() {
+                w = format!(", where {}", describe_conditions(&excluded, &vars));
+                if excluded.iter().all(|p| real_zero_free(p) == Some(true)) {
+                    w.push_str(": no real point is excluded");
+                }
+            }
+            (" with the denominators cleared", w)
+        }
+    };
     let conditions: Vec<&str> = args.relations.iter().map(String::as_str).collect();
     let modulo = if relations.is_empty() {
         String::new()
@@ -440,7 +492,11 @@ fn prove_over<C: PointField + Display>(
         let d: Vec<&str> = domains.iter().map(|(_, _, t)| t.as_str()).collect();
         format!(" for {}", d.join(", "))
     };
-    let decision = decide_in(&residual, &rels, &doms, vars.len()).map_err(|e| match e {
+    let decision = match &fraction {
+        None => decide_in(&residual, &rels, &doms, vars.len()),
+        Some(f) => decide_fraction(f, &rels, &hypotheses, &doms, vars.len()),
+    }
+    .map_err(|e| match e {
         DecideError::Inconsistent => Error::Input(format!(
             "--where: the relations {} are inconsistent (their Groebner basis contains a non-zero constant): no point satisfies them, so nothing can be proved from them",
             modulo.trim_start_matches(" modulo ")
@@ -457,15 +513,19 @@ fn prove_over<C: PointField + Display>(
         Decision::Undecided { .. } => ("undecided", ExitCode::from(1)),
     };
     let terms = residual.len();
-    // A counter-example gives every variable of both sides and the relations (domains name
-    // only those), also those that cancel from the residual.
-    let statement: Vec<&Poly<C>> = [&l, &r].into_iter().chain(&rels).collect();
+    // A counter-example gives every variable of both sides, the relations and the excluded
+    // denominators (domains name only those), also those that cancel from the residual.
+    let statement: Vec<&Poly<C>> = [l.numerator(), l.denominator(), r.numerator(), r.denominator()]
+        .into_iter()
+        .chain(&rels)
+        .chain(&excluded)
+        .collect();
     let evidence = match &decision {
         Decision::Proved { expanded_terms } if *expanded_terms == 0 => {
-            "LHS - RHS expands to 0".to_string()
+            format!("LHS - RHS{cleared} expands to 0{where_nonzero}")
         }
         Decision::Proved { expanded_terms } => {
-            format!("LHS - RHS expands to {expanded_terms} terms, which reduce to 0{modulo}")
+            format!("LHS - RHS{cleared} expands to {expanded_terms} terms, which reduce to 0{modulo}{where_nonzero}")
         }
         Decision::Fails {
             normal_form,
@@ -478,7 +538,14 @@ fn prove_over<C: PointField + Display>(
                 .collect();
             let value = abbreviate(value.to_string());
             let nf = abbreviate(normal_form.display(&vars).to_string());
-            if at.is_empty() {
+            if fraction.is_some() {
+                // `LHS - RHS` is the normal form over the cleared denominator.
+                format!(
+                    "at {}{} LHS - RHS = {value}; LHS - RHS{cleared} reduces{modulo} to {nf}, not zero{where_nonzero}",
+                    abbreviate(at.join(", ")),
+                    if relations.is_empty() { "" } else { " (where the relations hold)" },
+                )
+            } else if at.is_empty() {
                 // No variable: the identity is between constants, and their difference is the
                 // counter-example (old: "at  LHS - RHS = ...", an empty point).
                 format!(
@@ -497,7 +564,7 @@ fn prove_over<C: PointField + Display>(
             normal_form,
             searched,
         } => format!(
-            "LHS - RHS reduces{modulo} to {} (not zero), but no point{within} where it is non-zero was found: {searched}",
+            "LHS - RHS{cleared} reduces{modulo} to {} (not zero), but no point{within} where it is non-zero was found{where_nonzero}: {searched}",
             abbreviate(normal_form.display(&vars).to_string())
         ),
     };
@@ -508,6 +575,13 @@ fn prove_over<C: PointField + Display>(
             "evidence": evidence,
             "residual_terms": terms,
         });
+        if fraction.is_some() {
+            obj["conditions"] = excluded
+                .iter()
+                .map(|p| json!({"nonzero": p.display(&vars).to_string(), "real_zero_free": real_zero_free(p) == Some(true)}))
+                .collect::<Vec<_>>()
+                .into();
+        }
         if let Decision::Fails {
             point,
             value,

@@ -97,6 +97,51 @@ fn the_small_examples_hold() {
 }
 
 #[test]
+fn fractions_and_derivatives_as_printed_are_decided() {
+    // Old: every claim of this file was refused ("division by a non-constant expression",
+    // "unknown function 'diff'").
+    let out = exactcheck(&["verify", "tests/claims_file/fractions.toml", "--json"]);
+    assert_eq!(out.status.code(), Some(0), "{out:?}");
+    let rows: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let rows = rows.as_array().unwrap();
+    let row = |id: &str| {
+        rows.iter()
+            .find(|r| r["id"] == id)
+            .unwrap_or_else(|| panic!("{id} in {rows:?}"))
+    };
+    for r in rows {
+        assert_eq!(r["as_expected"], true, "{r}");
+    }
+    for id in ["fractions.circle", "fractions.tangent"] {
+        assert_eq!(row(id)["verdict"], "proved");
+        assert!(
+            row(id)["evidence"]
+                .as_str()
+                .unwrap()
+                .ends_with("where t^2 + 1 != 0 (no real zero): no real point is excluded"),
+            "{}",
+            row(id)
+        );
+    }
+    let slope = row("fractions.slope");
+    assert_eq!(slope["verdict"], "proved");
+    assert!(
+        slope["evidence"]
+            .as_str()
+            .unwrap()
+            .ends_with("modulo m = y/x, where x != 0"),
+        "{slope}"
+    );
+    let misprint = row("fractions.misprint");
+    assert_eq!(misprint["verdict"], "fails");
+    let evidence = misprint["evidence"].as_str().unwrap();
+    // The counter-example is off the poles x = 1 and x = -1.
+    assert!(evidence.starts_with("at x = "), "{evidence}");
+    assert!(!evidence.starts_with("at x = 1 ") && !evidence.starts_with("at x = -1 "));
+    assert!(evidence.ends_with("where x^2 - 1 != 0"), "{evidence}");
+}
+
+#[test]
 fn a_misprint_fails_with_a_counter_example_and_an_erratum() {
     let example = std::fs::read_to_string(root().join("examples/spaeth.toml")).unwrap();
     let fixture =

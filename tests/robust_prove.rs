@@ -10,10 +10,7 @@ mod timed;
 /// Exit status, standard output and standard error of `exactcheck ARGS`, under the shared
 /// kill-timeout (a hang fails the test; no time is asserted).
 fn run(args: &[&str]) -> (i32, String, String) {
-    let os: Vec<std::ffi::OsString> = args.iter().map(Into::into).collect();
-    let r = timed::run(&os, None);
-    assert!(!r.timed_out, "exactcheck {args:?}: {}", r.describe());
-    (r.status.unwrap_or(-1), r.stdout_text(), r.stderr_text())
+    timed::run_text(args)
 }
 
 /// Asserts exit status 2 and exactly one line on standard error containing `needle`.

@@ -189,6 +189,9 @@ limits! {
     TERMS = ("terms", "number of polynomial terms", "", 1_000_000);
     /// Total degree of one polynomial during expansion.
     DEGREE = ("degree", "polynomial degree", "", 100_000);
+    /// Order `k` of a derivative `diff(E, t, k)` (every order squares a denominator before its
+    /// common factor cancels).
+    DIFF_ORDER = ("diff-order", "order of a derivative", "", 100);
     /// S-polynomial reductions of one Groebner basis computation.
     GROEBNER_STEPS = ("groebner-steps", "Groebner basis steps", "", 150);
     /// Elements of one Groebner basis.

@@ -21,6 +21,7 @@ pub mod poly;
 pub mod program;
 pub mod prove;
 pub mod radical;
+pub mod ratfun;
 pub mod rational;
 pub mod symbolic;
 pub mod to_f64;

@@ -511,9 +511,22 @@ impl Defs {
                 }
             });
         }
+        if exactcheck_exact::expr::FUNCTIONS.contains(&name) {
+            // A function of the expression language (`diff`): its arguments resolved, the call
+            // kept for the conversion, which checks them.
+            let mut resolved = Vec::new();
+            for a in args {
+                resolved.push(self.scalar(a, stack, &format!("an argument of {name}"))?);
+            }
+            return Ok(Val::Scalar(Expr {
+                kind: ExprKind::Call(name.to_string(), resolved),
+                pos,
+            }));
+        }
         let Some(&(_, arity, variadic)) = FUNCTIONS.iter().find(|(n, _, _)| *n == name) else {
             let mut names: Vec<&str> = FUNCTIONS.iter().map(|(n, _, _)| *n).collect();
             names.extend(["subs", "sqrt"]);
+            names.extend(exactcheck_exact::expr::FUNCTIONS);
             return err(format!(
                 "unknown function '{name}' at {pos} (functions: {}; write '{name}*(...)' for a product)",
                 names.join(", ")

@@ -13,9 +13,11 @@ use exactcheck_core::Ring;
 use exactcheck_exact::expr::{parse_expr, AddOp, Coefficient, Expr, ExprKind};
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
-    counter_example, decide_in, random_identity_test, unit_circle_pairs, DecideError, Decision,
-    Domain, PointField, RandomDecision, Seed, HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
+    counter_example, decide_fraction, decide_in, describe_conditions, random_identity_test,
+    real_zero_free, unit_circle_pairs, DecideError, Decision, Domain, FractionIdentity,
+    PointField, RandomDecision, Seed, HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
 };
+use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::{Radical, Rational};
 use rayon::prelude::*;
 use serde_json::Value;
@@ -404,6 +406,24 @@ fn value_expr(v: &impl Display) -> Result<Expr, Fault> {
         .map_err(|e| Fault::Internal(format!("the exact value {text} does not read back: {e}")))
 }
 
+fn to_ratfun<C: Coefficient + exactcheck_core::Field>(
+    e: &Expr,
+    vars: &mut Vars,
+    key: &'static str,
+) -> Result<RatFun<C>, Fault> {
+    e.to_ratfun::<C>(vars)
+        .map_err(|err| Fault::Input(key, err.to_string()))
+}
+
+/// `a = b` with the denominators cleared (a product past a limit is the fault of `key`).
+fn clear<C: exactcheck_core::Field>(
+    a: &RatFun<C>,
+    b: &RatFun<C>,
+    key: &'static str,
+) -> Result<FractionIdentity<C>, Fault> {
+    FractionIdentity::new(a, b).map_err(|e| Fault::Input(key, e.to_string()))
+}
+
 fn to_poly<C: Coefficient>(e: &Expr, vars: &mut Vars, key: &'static str) -> Result<Poly<C>, Fault> {
     e.to_poly::<C>(vars)
         .map_err(|err| Fault::Input(key, err.to_string()))
@@ -422,28 +442,72 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<Outcome, Fault> {
         unreachable!("identity() is called for identity claims")
     };
     let mut vars = Vars::new();
-    let mut residuals = Vec::new();
-    let mut lhs_polys = Vec::new();
-    let mut rhs_polys = Vec::new();
+    let mut sides = Vec::new();
     for (l, r) in lhs.iter().zip(rhs) {
-        let l = to_poly::<C>(l, &mut vars, "lhs")?;
-        let r = to_poly::<C>(r, &mut vars, "rhs")?;
-        residuals.push(l.clone() - &r);
-        lhs_polys.push(l);
-        rhs_polys.push(r);
+        let l = to_ratfun::<C>(l, &mut vars, "lhs")?;
+        let r = to_ratfun::<C>(r, &mut vars, "rhs")?;
+        sides.push((l, r));
     }
-    let corrected_polys = match corrected {
+    let corrected_fns = match corrected {
         Some(xs) => Some(
             xs.iter()
-                .map(|x| to_poly::<C>(x, &mut vars, "corrected"))
+                .map(|x| to_ratfun::<C>(x, &mut vars, "corrected"))
                 .collect::<Result<Vec<_>, _>>()?,
         ),
         None => None,
     };
+    // Relations between fractions are cleared of their denominators, which become hypotheses
+    // (non-zero).
     let mut rels = Vec::new();
+    let mut hypotheses: Vec<Poly<C>> = Vec::new();
     for (a, b) in &conditions.relations {
-        rels.push(to_poly::<C>(a, &mut vars, "where")? - to_poly::<C>(b, &mut vars, "where")?);
+        let a = to_ratfun::<C>(a, &mut vars, "where")?;
+        let b = to_ratfun::<C>(b, &mut vars, "where")?;
+        if a.is_polynomial() && b.is_polynomial() {
+            rels.push(a.into_numerator() - b.into_numerator());
+        } else {
+            let cleared = clear(&a, &b, "where")?;
+            rels.push(cleared.residual);
+            hypotheses.extend(cleared.conditions);
+        }
     }
+    // `l = r`: a polynomial residual, or (with a fraction anywhere) the cleared identity.
+    let pair =
+        |l: &RatFun<C>, r: &RatFun<C>| -> Result<(Poly<C>, Option<FractionIdentity<C>>), Fault> {
+            if l.is_polynomial() && r.is_polynomial() && hypotheses.is_empty() {
+                Ok((l.numerator().clone() - r.numerator(), None))
+            } else {
+                let f = clear(l, r, "lhs")?;
+                Ok((f.residual.clone(), Some(f)))
+            }
+        };
+    let mut residuals = Vec::new();
+    let mut fractions = Vec::new();
+    for (l, r) in &sides {
+        let (res, f) = pair(l, r)?;
+        residuals.push(res);
+        fractions.push(f);
+    }
+    let mut excluded: Vec<Poly<C>> = Vec::new();
+    for p in fractions
+        .iter()
+        .flatten()
+        .flat_map(|f| &f.conditions)
+        .chain(&hypotheses)
+    {
+        if !excluded.contains(p) {
+            excluded.push(p.clone());
+        }
+    }
+    let where_nonzero = if excluded.is_empty() {
+        String::new()
+    } else {
+        let mut w = format!(", where {}", describe_conditions(&excluded, &vars));
+        if excluded.iter().all(|p| real_zero_free(p) == Some(true)) {
+            w.push_str(": no real point is excluded");
+        }
+        w
+    };
     let mut doms: Vec<(Var, Domain)> = Vec::new();
     for (v, d, text) in &conditions.domains {
         let var = vars.get(v).ok_or_else(|| {
@@ -478,8 +542,12 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<Outcome, Fault> {
         "symbolic expansion over {field}[{}]{modulo}{within}",
         vars.names().join(",")
     );
-    let decide = |p: &Poly<C>| -> Result<Decision<C>, Fault> {
-        decide_in(p, &rels, &doms, vars.len()).map_err(|e| {
+    let decide = |p: &Poly<C>, f: Option<&FractionIdentity<C>>| -> Result<Decision<C>, Fault> {
+        match f {
+            None => decide_in(p, &rels, &doms, vars.len()),
+            Some(f) => decide_fraction(f, &rels, &hypotheses, &doms, vars.len()),
+        }
+        .map_err(|e| {
             Fault::Input(
                 "where",
                 match e {
@@ -496,6 +564,18 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<Outcome, Fault> {
             .expect("the engine reports only variables of the table")
             .to_string()
     };
+    let cleared = |k: usize| {
+        if fractions.get(k).is_some_and(Option::is_some) {
+            " with the denominators cleared"
+        } else {
+            ""
+        }
+    };
+    let cleared_any = if fractions.iter().any(Option::is_some) {
+        " with the denominators cleared"
+    } else {
+        ""
+    };
     let coordinate = |k: usize| {
         if lhs.len() == 1 {
             String::new()
@@ -505,7 +585,7 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<Outcome, Fault> {
     };
     let mut terms = 0;
     for (k, res) in residuals.iter().enumerate() {
-        match decide(res)? {
+        match decide(res, fractions[k].as_ref())? {
             Decision::Proved { expanded_terms } => terms += expanded_terms,
             Decision::Undecided {
                 normal_form,
@@ -515,8 +595,9 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<Outcome, Fault> {
                     verdict: Verdict::Undecided,
                     method,
                     evidence: format!(
-                        "{}LHS - RHS reduces{modulo} to {} (not zero), but no point{within} where it is non-zero was found: {searched}",
+                        "{}LHS - RHS{} reduces{modulo} to {} (not zero), but no point{within} where it is non-zero was found{where_nonzero}: {searched}",
                         coordinate(k),
+                        cleared(k),
                         normal_form.display(&vars)
                     ),
                     erratum: None,
@@ -527,10 +608,16 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<Outcome, Fault> {
                 point,
                 value,
             } => {
-                // Every variable of the sides (all coordinates) and the relations; domains name
-                // only those.
-                let statement: Vec<&Poly<C>> =
-                    lhs_polys.iter().chain(&rhs_polys).chain(&rels).collect();
+                // Every variable of the sides (all coordinates, numerators and denominators),
+                // the relations and the excluded denominators; domains name only those.
+                let statement: Vec<&Poly<C>> = sides
+                    .iter()
+                    .flat_map(|(l, r)| {
+                        [l.numerator(), l.denominator(), r.numerator(), r.denominator()]
+                    })
+                    .chain(&rels)
+                    .chain(&excluded)
+                    .collect();
                 let point: Vec<(String, Radical)> = counter_example(&point, &statement)
                     .into_iter()
                     .map(|(v, q)| (name(v), q))
@@ -538,7 +625,7 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<Outcome, Fault> {
                 let at: Vec<String> = point.iter().map(|(v, q)| format!("{v} = {q}")).collect();
                 let nf = normal_form.display(&vars).to_string();
                 let mut evidence = format!(
-                    "{}{}{} LHS - RHS = {value}; LHS - RHS reduces{modulo} to {nf}",
+                    "{}{}{} LHS - RHS = {value}; LHS - RHS{} reduces{modulo} to {nf}{}",
                     coordinate(k),
                     if at.is_empty() {
                         "everywhere".to_string()
@@ -546,6 +633,8 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<Outcome, Fault> {
                         format!("at {}", at.join(", "))
                     },
                     if rels.is_empty() { "" } else { " (where the relations hold)" },
+                    cleared(k),
+                    where_nonzero,
                 );
                 let mut counter_example = Vec::new();
                 for (v, q) in &point {
@@ -574,7 +663,11 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<Outcome, Fault> {
                 };
                 let mut erratum = Erratum {
                     printed,
-                    correction: format!("LHS - RHS reduces{modulo} to {nf}, so LHS = RHS + ({nf})"),
+                    correction: if fractions[k].is_some() {
+                        format!("LHS - RHS{} reduces{modulo} to {nf}", cleared(k))
+                    } else {
+                        format!("LHS - RHS reduces{modulo} to {nf}, so LHS = RHS + ({nf})")
+                    },
                     counter_example,
                     residual: vec![Equation {
                         lhs: difference(&lhs[k], &rhs[k]),
@@ -582,10 +675,11 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<Outcome, Fault> {
                     }],
                     ..Erratum::default()
                 };
-                if let (Some(cp), Some(cx)) = (&corrected_polys, corrected) {
+                if let (Some(cp), Some(cx)) = (&corrected_fns, corrected) {
                     let mut failed = None;
-                    for (j, (c, r)) in cp.iter().zip(&rhs_polys).enumerate() {
-                        match decide(&(c.clone() - r))? {
+                    for (j, (c, (_, r))) in cp.iter().zip(&sides).enumerate() {
+                        let (res, f) = pair(c, r)?;
+                        match decide(&res, f.as_ref())? {
                             Decision::Proved { .. } => {}
                             Decision::Fails { value, .. } => {
                                 failed = Some(format!("{}it differs from RHS by {value} at a point", coordinate(j)));
@@ -646,11 +740,18 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<Outcome, Fault> {
         verdict: Verdict::Proved,
         method,
         evidence: match (terms, n) {
-            (0, 1) => "LHS - RHS expands to 0".to_string(),
-            (0, n) => format!("LHS - RHS expands to 0 in each of the {n} coordinates"),
-            (t, 1) => format!("LHS - RHS expands to {t} terms, which reduce to 0{modulo}"),
+            (0, 1) => format!("LHS - RHS{} expands to 0{where_nonzero}", cleared_any),
+            (0, n) => format!(
+                "LHS - RHS{} expands to 0 in each of the {n} coordinates{where_nonzero}",
+                cleared_any
+            ),
+            (t, 1) => format!(
+                "LHS - RHS{} expands to {t} terms, which reduce to 0{modulo}{where_nonzero}",
+                cleared_any
+            ),
             (t, n) => format!(
-                "LHS - RHS expands to {t} terms in the {n} coordinates, which reduce to 0{modulo}"
+                "LHS - RHS{} expands to {t} terms in the {n} coordinates, which reduce to 0{modulo}{where_nonzero}",
+                cleared_any
             ),
         },
         erratum: None,

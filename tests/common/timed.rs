@@ -146,6 +146,15 @@ pub fn run_with_env(args: &[OsString], stdin: Option<&[u8]>, env: &[(String, Str
     }
 }
 
+/// Exit status, standard output and standard error of `exactcheck ARGS` under the
+/// kill-timeout: a hang fails the calling test (no time is asserted).
+pub fn run_text(args: &[&str]) -> (i32, String, String) {
+    let os: Vec<OsString> = args.iter().map(Into::into).collect();
+    let r = run(&os, None);
+    assert!(!r.timed_out, "exactcheck {args:?}: {}", r.describe());
+    (r.status.unwrap_or(-1), r.stdout_text(), r.stderr_text())
+}
+
 /// `f` applied to every item on a few threads (the runs are mostly separate processes); the
 /// results in the order of `items`.
 pub fn parallel_map<T: Sync, R: Send>(items: &[T], f: impl Fn(&T) -> R + Sync) -> Vec<R> {

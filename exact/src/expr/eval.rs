@@ -90,10 +90,7 @@ impl Expr {
                     .ok_or(ExprError::NonConstantSqrt { pos: arg.pos })?;
                 sqrt_of(c, self.pos, arg).map(Poly::constant)
             }
-            ExprKind::Call(name, _) => Err(ExprError::UnknownFunction {
-                pos: self.pos,
-                name: name.clone(),
-            }),
+            ExprKind::Call(_, args) => super::fraction::diff_poly(self, args, vars),
         }
     }
 
@@ -165,10 +162,12 @@ impl Expr {
                 constant_power(b, k, self.pos, exp.pos)
             }
             ExprKind::Sqrt(arg) => sqrt_of(arg.eval_constant::<C>()?, self.pos, arg),
-            ExprKind::Call(name, _) => Err(ExprError::UnknownFunction {
-                pos: self.pos,
-                name: name.clone(),
-            }),
+            // The derivative of a constant is 0.
+            ExprKind::Call(_, args) => {
+                let (e, _, k) = super::fraction::diff_arguments(self, args)?;
+                let c = e.eval_constant::<C>()?;
+                Ok(if k == 0 { c } else { C::zero() })
+            }
         }
     }
 }
@@ -332,7 +331,7 @@ fn product_pair<C: Coefficient>(
 }
 
 /// The value of an exponent expression: an integer constant within the `exponent` limit.
-fn exponent_value(e: &Expr) -> Result<i64, ExprError> {
+pub(super) fn exponent_value(e: &Expr) -> Result<i64, ExprError> {
     let bad = |found: String| ExprError::BadExponent { pos: e.pos, found };
     let q: Rational = match e.eval_constant() {
         Ok(q) => q,
@@ -380,7 +379,7 @@ fn check_terms<C: Coefficient>(p: &Poly<C>, pos: usize) -> Result<(), ExprError>
 }
 
 /// A refused product or power as an error at `pos`.
-fn size_error(e: SizeError, pos: usize) -> ExprError {
+pub(super) fn size_error(e: SizeError, pos: usize) -> ExprError {
     match e {
         SizeError::ExponentOverflow => ExprError::ExponentOverflow { pos },
         SizeError::Limit(error) => ExprError::Limit { pos, error },

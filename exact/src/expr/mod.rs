@@ -19,7 +19,8 @@
 //! unary    := ('-' | '+') unary | power
 //! power    := atom ('^' exponent)?
 //! exponent := ('-' | '+') exponent | atom ('^' exponent)?   (right-associative)
-//! atom     := number | variable | 'sqrt' '(' sum ')' | '(' sum ')'
+//! atom     := number | variable | 'sqrt' '(' sum ')' | call | '(' sum ')'
+//! call     := 'diff' '(' sum ',' variable (',' sum)? ')'
 //! number   := [0-9]+ ('.' [0-9]+)? ([eE] [+-]? [0-9]+)?
 //! variable := [A-Za-z_][A-Za-z0-9_]*          (not followed by '('; not the word sqrt)
 //! ```
@@ -33,14 +34,20 @@
 //! * **Juxtaposition multiplies**, binding like `*`: `2x`, `2 sqrt(2)`, `x y`, `(a+b)(a-b)`,
 //!   `c^2 x^3`. A juxtaposed factor takes no sign of its own (`x -y` is a difference) and may not
 //!   start with a number (`2 3` and `x 2` are errors: write `*`).
-//! * **Functions**: the only function is `sqrt`. A name followed by `(` is a function call, so
-//!   `sin(x)` is the error `unknown function 'sin'` rather than the product `sin*(x)`; write the
-//!   `*` for a product (`x*(y+1)`).
+//! * **Functions**: `sqrt` and `diff` ([`FUNCTIONS`]). A name followed by `(` is a function
+//!   call, so `sin(x)` is the error `unknown function 'sin'` rather than the product `sin*(x)`;
+//!   write the `*` for a product (`x*(y+1)`). `diff(E, t)` is the exact derivative of `E` in the
+//!   variable `t` (the second argument must be a variable name), `diff(E, t, k)` the `k`-th, `k`
+//!   a non-negative integer constant within the `diff-order` limit ([`limits::DIFF_ORDER`]); of a
+//!   fraction by the quotient rule ([`crate::ratfun::RatFun::derivative`]).
 //! * `^` binds tighter than unary minus (`-x^2 = -(x^2)`) and is right-associative
 //!   (`x^2^3 = x^8`). Its exponent must evaluate to an integer constant with absolute value at
 //!   most the `exponent` limit ([`limits::EXPONENT`]); it may carry a sign (`2^-3 = 1/8`), but a negative exponent needs a
-//!   non-zero constant base. Likewise a division is allowed only by an expression that evaluates
-//!   to a non-zero constant (`3/4*x`).
+//!   non-zero constant base in [`Expr::to_poly`]. Likewise [`Expr::to_poly`] divides only by an
+//!   expression that evaluates to a non-zero constant (`3/4*x`). [`Expr::to_ratfun`] divides by
+//!   (and takes negative powers of) any expression that is not identically zero: the result is
+//!   a rational function ([`crate::ratfun::RatFun`]) in lowest terms with the divisors met, and
+//!   an expression without such a division converts by [`Expr::to_poly`] alone.
 //! * `sqrt(...)` takes a constant and needs a coefficient type that has the root (over
 //!   [`Rational`], only of perfect squares; [`crate::Radical`] denests; [`crate::ComplexRadical`]
 //!   takes the principal root).
@@ -81,7 +88,7 @@
 //! # Layout
 //! Here: the limits, the [`Coefficient`] trait, the AST and the errors; `parse`: the lexer and
 //! the parser; `eval`: the conversion to polynomials and the constant evaluator with the size
-//! limits; `print`: the printer; `latex`: LaTeX ([`to_latex`]) with a [`Notation`] for names, from
+//! limits; `fraction`: the conversion to rational functions and the arguments of `diff`; `print`: the printer; `latex`: LaTeX ([`to_latex`]) with a [`Notation`] for names, from
 //! a layout shared with `mathml` ([`to_mathml`]); `w1`: the text of workload W1.
 //!
 //! # Errors
@@ -94,6 +101,7 @@ use num_bigint::BigInt;
 use num_traits::Signed;
 
 mod eval;
+mod fraction;
 mod latex;
 mod mathml;
 mod parse;
@@ -106,6 +114,10 @@ pub use latex::{equation_to_latex, to_latex, Notation};
 pub use mathml::{equation_to_mathml, to_mathml};
 pub use parse::{parse_expr, parse_expr_with_calls, parse_poly};
 pub use w1::w1_text;
+
+/// The functions written `name(arg, ...)` in every grammar (besides `sqrt`): `diff(E, t)` and
+/// `diff(E, t, k)`, the exact derivative of `E` in the variable `t` (`k` times).
+pub const FUNCTIONS: &[&str] = &["diff"];
 
 // ------------------------------------------------------------------------------ coefficients
 
@@ -215,7 +227,7 @@ pub enum AddOp {
 pub enum MulOp {
     /// Multiplication.
     Times,
-    /// Division (by a non-zero constant).
+    /// Division (by a non-zero constant, or by a non-zero polynomial in [`Expr::to_ratfun`]).
     Divide,
 }
 
@@ -247,8 +259,9 @@ pub enum ExprKind {
     Pow(Box<Expr>, Box<Expr>),
     /// `sqrt(arg)`.
     Sqrt(Box<Expr>),
-    /// `name(arg, ...)`: a function call, produced only by [`parse_expr_with_calls`] and
-    /// resolved by its caller; the conversions to polynomials and constants refuse it
+    /// `name(arg, ...)`: a function call. The functions of the language ([`FUNCTIONS`]: `diff`)
+    /// are converted; any other name is produced only by [`parse_expr_with_calls`] and resolved
+    /// by its caller, and the conversions to polynomials and constants refuse it
     /// ([`ExprError::UnknownFunction`]). With the empty name it is a tuple `(a, b, ...)`
     /// ([`Expr::tuple`]: a vector in an erratum), printed but never parsed.
     Call(String, Vec<Expr>),
@@ -329,6 +342,24 @@ pub enum ExprError {
         /// Byte position of the divisor.
         pos: usize,
     },
+    /// Division by a polynomial expression that is identically zero (`1/(x-x)`).
+    #[error("division by zero at {pos}: the divisor {divisor} is identically zero")]
+    ZeroDivisor {
+        /// Byte position of the divisor.
+        pos: usize,
+        /// The divisor, printed.
+        divisor: String,
+    },
+    /// A call of a function of the language ([`FUNCTIONS`]) with wrong arguments.
+    #[error("{name} at {pos}: {why}")]
+    BadCall {
+        /// Byte position of the argument at fault (or of the call).
+        pos: usize,
+        /// The function.
+        name: String,
+        /// What is wrong, in words.
+        why: String,
+    },
     /// An exponent that is not a non-negative integer constant.
     #[error("exponent at {pos} must be a non-negative integer constant, found {found}")]
     BadExponent {
@@ -347,8 +378,8 @@ pub enum ExprError {
     },
     /// A name followed by `(` that is not a known function.
     #[error(
-        "unknown function '{name}' at {pos}: the only function is sqrt (write '{name}*(...)' \
-         for a product)"
+        "unknown function '{name}' at {pos}: the functions are sqrt and diff (write \
+         '{name}*(...)' for a product)"
     )]
     UnknownFunction {
         /// Byte position of the name.
@@ -418,6 +449,8 @@ impl ExprError {
             ExprError::Unexpected { pos, .. }
             | ExprError::NonConstantDivisor { pos }
             | ExprError::DivisionByZero { pos }
+            | ExprError::ZeroDivisor { pos, .. }
+            | ExprError::BadCall { pos, .. }
             | ExprError::BadExponent { pos, .. }
             | ExprError::ExponentOverflow { pos }
             | ExprError::NegativeExponent { pos }

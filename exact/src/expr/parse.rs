@@ -301,7 +301,8 @@ impl<'a> Parser<'a> {
             }
             Tok::Ident => {
                 self.bump();
-                if self.cur.tok == Tok::LParen && self.calls {
+                if self.cur.tok == Tok::LParen && (self.calls || FUNCTIONS.contains(&self.text(t)))
+                {
                     let args = self.parse_arguments()?;
                     return Ok(Expr {
                         kind: ExprKind::Call(self.text(t).to_string(), args),

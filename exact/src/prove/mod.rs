@@ -39,7 +39,10 @@
 //! The search is deterministic (fixed seed) so that verdicts are reproducible; it makes
 //! [`SEARCH_ATTEMPTS`] attempts.
 
+mod fraction;
 pub mod random;
+
+pub use fraction::{decide_fraction, describe_conditions, real_zero_free, FractionIdentity};
 
 pub use random::{
     random_identity_test, size_bound, RandomDecision, RandomReport, Seed, SizeBound,
@@ -353,6 +356,22 @@ pub fn decide_in<C: PointField>(
     domains: &[(Var, Domain)],
     nvars: usize,
 ) -> Result<Decision<C>, DecideError> {
+    decide_where(residual, relations, &[], domains, nvars)
+}
+
+/// [`decide_in`] where the polynomials `nonzero` do not vanish (the denominators of an
+/// identity between fractions, [`decide_fraction`]): the proof does not use them, and a
+/// counter-example must make every one of them non-zero.
+///
+/// # Errors
+/// As [`decide_in`].
+pub fn decide_where<C: PointField>(
+    residual: &Poly<C>,
+    relations: &[Poly<C>],
+    nonzero: &[Poly<C>],
+    domains: &[(Var, Domain)],
+    nvars: usize,
+) -> Result<Decision<C>, DecideError> {
     let mut dom = vec![Domain::all(); nvars];
     let mut seen = vec![false; nvars];
     for (v, d) in domains {
@@ -391,7 +410,7 @@ pub fn decide_in<C: PointField>(
     if nf.is_zero() {
         return Ok(Decision::Proved { expanded_terms });
     }
-    Ok(search(residual, relations, &pairs, &others, &dom, nvars)
+    Ok(search(residual, relations, nonzero, &pairs, &others, &dom, nvars)
         .map(|(point, value)| Decision::Fails {
             normal_form: nf.clone(),
             point,
@@ -399,7 +418,7 @@ pub fn decide_in<C: PointField>(
         })
         .unwrap_or_else(|| Decision::Undecided {
             searched: format!(
-                "{SEARCH_ATTEMPTS} exact candidate points (small rationals, inside the domains if any{}{}) were checked, none satisfies the relations{} with a non-zero residual",
+                "{SEARCH_ATTEMPTS} exact candidate points (small rationals, inside the domains if any{}{}) were checked, none satisfies the relations{}{} with a non-zero residual",
                 if pairs.is_empty() { "" } else { ", rational points of the unit circles" },
                 if others.is_empty() && pairs.is_empty() {
                     ""
@@ -407,6 +426,7 @@ pub fn decide_in<C: PointField>(
                     ", relations solved one variable at a time: rational roots and real roots of quadratics"
                 },
                 if dom.iter().any(|d| *d != Domain::all()) { " in the domains" } else { "" },
+                if nonzero.is_empty() { "" } else { " off the zeros of the denominators" },
             ),
             normal_form: nf,
         }))
@@ -439,6 +459,7 @@ pub fn counter_example<C: Field>(point: &RadicalPoint, statement: &[&Poly<C>]) -
 fn search<C: PointField>(
     residual: &Poly<C>,
     relations: &[Poly<C>],
+    nonzero: &[Poly<C>],
     pairs: &[(Var, Var)],
     others: &[Poly<C>],
     dom: &[Domain],
@@ -486,6 +507,10 @@ fn search<C: PointField>(
         }
         let lifted: Vec<C::Value> = values.iter().map(C::lift_radical).collect();
         if !relations.iter().all(|r| r.eval(&lifted, C::lift).is_zero()) {
+            continue;
+        }
+        // Never a pole: every denominator is non-zero at the point.
+        if nonzero.iter().any(|d| d.eval(&lifted, C::lift).is_zero()) {
             continue;
         }
         let value = residual.eval(&lifted, C::lift);

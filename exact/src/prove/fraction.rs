@@ -1,0 +1,148 @@
+//! Identities between rational functions: `L = R` with `L = a/b`, `R = c/d` is decided as the
+//! polynomial identity `a d - c b = 0` (the denominators cleared) wherever the denominators and
+//! every divisor met in `L` and `R` are non-zero; the counter-example search avoids those zeros.
+
+use super::{decide_where, DecideError, Decision, Domain, PointField};
+use crate::poly::{Poly, SizeError, Var, Vars};
+use crate::ratfun::{push_condition, RatFun};
+use crate::univariate::UPoly;
+use crate::Rational;
+use exactcheck_core::{Field, Ring, Sign};
+use std::fmt::Display;
+
+/// `L = R` with the denominators cleared.
+#[derive(Clone, Debug)]
+pub struct FractionIdentity<C: Ring> {
+    /// `num(L) den(R) - num(R) den(L)`: zero exactly where `L = R` (off the conditions).
+    pub residual: Poly<C>,
+    /// `den(L) den(R)`, by which `residual` is `L - R` multiplied.
+    pub denominator: Poly<C>,
+    /// The divisors met in `L` and `R` and their denominators (monic, non-constant, each
+    /// once): `L = R` is meant where none vanishes.
+    pub conditions: Vec<Poly<C>>,
+}
+
+impl<C: Field> FractionIdentity<C> {
+    /// `lhs = rhs` with the denominators cleared.
+    ///
+    /// # Errors
+    /// [`SizeError`] when a product exceeds the `degree` or `terms` limit.
+    pub fn new(lhs: &RatFun<C>, rhs: &RatFun<C>) -> Result<Self, SizeError> {
+        let (a, b) = (lhs.numerator(), lhs.denominator());
+        let (c, d) = (rhs.numerator(), rhs.denominator());
+        let residual = a.try_mul(d)?.sub_ref(&c.try_mul(b)?);
+        let mut conditions: Vec<Poly<C>> = Vec::new();
+        for p in lhs
+            .conditions()
+            .iter()
+            .chain(rhs.conditions())
+            .chain([b, d])
+        {
+            push_condition(&mut conditions, p);
+        }
+        Ok(FractionIdentity {
+            residual,
+            denominator: b.try_mul(d)?,
+            conditions,
+        })
+    }
+}
+
+/// Decides `L = R` (cleared into `identity`) modulo `relations`, for the values in `domains`
+/// where every condition of `identity` and every polynomial of `hypotheses` (the conditions of
+/// relations between fractions) is non-zero: [`decide_where`] on the cleared residual. A
+/// counter-example's value is that of `L - R` (the residual divided by the denominator there).
+///
+/// # Errors
+/// As [`super::decide_in`].
+pub fn decide_fraction<C: PointField>(
+    identity: &FractionIdentity<C>,
+    relations: &[Poly<C>],
+    hypotheses: &[Poly<C>],
+    domains: &[(Var, Domain)],
+    nvars: usize,
+) -> Result<Decision<C>, DecideError> {
+    let mut nonzero = identity.conditions.clone();
+    nonzero.extend(hypotheses.iter().cloned());
+    let decision = decide_where(&identity.residual, relations, &nonzero, domains, nvars)?;
+    Ok(match decision {
+        Decision::Fails {
+            normal_form,
+            point,
+            value,
+        } => {
+            let mut at = vec![C::Value::zero(); nvars];
+            for (v, x) in &point {
+                at[*v as usize] = C::lift_radical(x);
+            }
+            let den = identity.denominator.eval(&at, C::lift);
+            let value = den
+                .inv()
+                .map(|inv| value.mul_ref(&inv))
+                .expect("the search avoids the zeros of the denominators");
+            Decision::Fails {
+                normal_form,
+                point,
+                value,
+            }
+        }
+        other => other,
+    })
+}
+
+/// Whether `p` has no real zero: `Some(true)` when shown, `Some(false)` when it has one,
+/// `None` when not decided. A polynomial in one variable with rational coefficients is decided
+/// exactly by isolating its real roots ([`crate::univariate`]); in several variables the
+/// sufficient test is that every exponent is even, every coefficient has the same sign and
+/// the constant term is not zero (a sum of even powers with a positive constant, up to sign).
+pub fn real_zero_free<C: PointField>(p: &Poly<C>) -> Option<bool> {
+    if let Some(c) = p.constant_value() {
+        return Some(!c.is_zero());
+    }
+    let rational: Vec<Rational> = p
+        .coefficients()
+        .iter()
+        .map(|c| c.to_radical().and_then(|r| r.to_rational()))
+        .collect::<Option<_>>()?;
+    let vars = p.variables();
+    if let [v] = vars.as_slice() {
+        let mut coeffs = vec![Rational::ZERO; p.degree_in(*v) as usize + 1];
+        for ((m, _), c) in p.terms().zip(&rational) {
+            coeffs[m.exponent(*v) as usize] = c.clone();
+        }
+        return Some(UPoly::from_coeffs(coeffs).roots().is_empty());
+    }
+    let even = p
+        .terms()
+        .all(|(m, _)| m.exponents().iter().all(|&(_, e)| e % 2 == 0));
+    let first = rational.first().map(Rational::signum);
+    let same_sign = rational.iter().all(|c| Some(c.signum()) == first);
+    let constant = p.terms().any(|(m, _)| m.exponents().is_empty());
+    (even && same_sign && constant && first != Some(Sign::Zero)).then_some(true)
+}
+
+/// The conditions in words: `t^2 + 1 != 0 (no real zero), x != 1`, each polynomial with what
+/// [`real_zero_free`] shows of it; a monic linear polynomial in one variable `v - c` is written
+/// `v != c`.
+pub fn describe_conditions<C: PointField + Display>(conditions: &[Poly<C>], vars: &Vars) -> String {
+    conditions
+        .iter()
+        .map(|p| {
+            let note = match real_zero_free(p) {
+                Some(true) => " (no real zero)",
+                _ => "",
+            };
+            match p.variables().as_slice() {
+                [v] if p.degree_in(*v) == 1 && p.coefficient(&[(*v, 1)]).is_one() => {
+                    let name = vars.name(*v).unwrap_or("?");
+                    format!(
+                        "{name} != {}",
+                        Poly::constant(p.coefficient(&[]).neg_ref()).display(vars)
+                    )
+                }
+                _ => format!("{} != 0{note}", p.display(vars)),
+            }
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
+}
