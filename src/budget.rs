@@ -322,8 +322,16 @@ pub const MIN_TIMEOUT: f64 = 0.001;
 /// A `seconds` that is not a finite number between [`MIN_TIMEOUT`] (a millisecond) and 1e9.
 pub fn start_timeout(seconds: f64) -> Result<(), crate::Error> {
     if !(seconds.is_finite() && (MIN_TIMEOUT..=1e9).contains(&seconds)) {
+        // The value as written when it is short (`-1`, `0`, `inf`), else in scientific notation
+        // (`1e-300`), so the line stays short.
+        let plain = format!("{seconds}");
+        let got = if plain.len() > 24 {
+            format!("{seconds:e}")
+        } else {
+            plain
+        };
         return Err(crate::Error::Usage(format!(
-            "--timeout must be a number of seconds between {MIN_TIMEOUT} and 1e9 (got {seconds:?})"
+            "--timeout must be a number of seconds between {MIN_TIMEOUT} and 1e9 (got {got})"
         )));
     }
     let budget = Duration::from_secs_f64(seconds);

@@ -18,8 +18,8 @@ use clap::Args;
 use exactcheck_exact::expr::{parse_expr, Coefficient, Expr};
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
-    counter_example, decide_fraction, decide_in, describe_conditions, real_zero_free, DecideError, Decision, Domain,
-    FractionIdentity, PointField, HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
+    counter_example, decide_fraction, decide_in, describe_conditions, real_zero_free, DecideError,
+    Decision, Domain, FractionIdentity, PointField, HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
 };
 use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::{Radical, Rational};
@@ -515,11 +515,16 @@ fn prove_over<C: PointField + Display>(
     let terms = residual.len();
     // A counter-example gives every variable of both sides, the relations and the excluded
     // denominators (domains name only those), also those that cancel from the residual.
-    let statement: Vec<&Poly<C>> = [l.numerator(), l.denominator(), r.numerator(), r.denominator()]
-        .into_iter()
-        .chain(&rels)
-        .chain(&excluded)
-        .collect();
+    let statement: Vec<&Poly<C>> = [
+        l.numerator(),
+        l.denominator(),
+        r.numerator(),
+        r.denominator(),
+    ]
+    .into_iter()
+    .chain(&rels)
+    .chain(&excluded)
+    .collect();
     let evidence = match &decision {
         Decision::Proved { expanded_terms } if *expanded_terms == 0 => {
             format!("LHS - RHS{cleared} expands to 0{where_nonzero}")

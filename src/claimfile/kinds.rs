@@ -14,8 +14,8 @@ use exactcheck_exact::expr::{parse_expr, AddOp, Coefficient, Expr, ExprKind};
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
     counter_example, decide_fraction, decide_in, describe_conditions, random_identity_test,
-    real_zero_free, unit_circle_pairs, DecideError, Decision, Domain, FractionIdentity,
-    PointField, RandomDecision, Seed, HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
+    real_zero_free, unit_circle_pairs, DecideError, Decision, Domain, FractionIdentity, PointField,
+    RandomDecision, Seed, HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
 };
 use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::{Radical, Rational};

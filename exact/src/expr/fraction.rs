@@ -49,6 +49,7 @@ impl Expr {
     /// [`Expr::to_poly`] alone, so a polynomial costs what it costs there.
     ///
     /// ```
+    /// use exactcheck_core::Ring;
     /// use exactcheck_exact::{expr::parse_expr, poly::Vars, Rational};
     ///
     /// let mut vars = Vars::new();
