@@ -4,7 +4,7 @@
 //! polynomials (coefficients in [-100, 100], few roots in [0, 1]). The faster method is the
 //! default of `UPoly::unit_roots`; the measured table is in README_roots.md.
 //!
-//! The group `w4` times issue 14's W4 at the six comparison sizes (`w4::solve`: all real roots
+//! The group `w4` times W4 at the six comparison sizes (`w4::solve`: all real roots
 //! isolated by Descartes' rule and refined to width 2^-53), each root count asserted first.
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};

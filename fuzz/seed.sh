@@ -60,7 +60,7 @@ for e in sorted(expressions):
 put("prove", "e\nsqrt(2)*sqrt(8)\n4")
 put("prove", "e\n(x+y)^3\nx^3+3x^2y+3x y^2+y^3\n0 <= x <= 1")
 put("prove", "r\nc^4 - s^4\nc^2 - s^2\nc^2 + s^2 = 1")
-# Inputs the fuzzer found slow, kept as seeds (issue 14: a 74th power of a 4-term base that
+# Inputs the fuzzer found slow, kept as seeds (a 74th power of a 4-term base that
 # took 8.4 s by binary powering, now the power recurrence).
 put("prove", b"?m\n+16(t+ 1x^2+y+3x y_x)^74\xec3\xff\x9d\xa1+3N")
 

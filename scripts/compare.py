@@ -17,7 +17,7 @@ longer than 5 s is not repeated), and:
   `total_s`: the workload without interpreter start-up and imports) and the ratio
   exactcheck / tool (below 1: exactcheck is faster); exactcheck's whole-process medians are kept
   in the JSON results beside them.
-* the targets of issue 14 are evaluated from the same medians and printed as met / not met.
+* the speed targets are evaluated from the same medians and printed as met / not met.
 
 A tool that exceeds --max-seconds (default 120) on one run is stopped and shown as `> S s` at
 that size and skipped at the larger sizes of the same series (W1, W1d, each W2 mode; not in W4).
@@ -361,7 +361,7 @@ if verify_walls:
     lines.append("")
     lines.append(f"`exactcheck verify` (the whole built-in catalogue, whole process): median {fmt_time(median(verify_walls))}.")
 
-# ------------------------------------------------------------------------- targets (issue 14)
+# ------------------------------------------------------------------------- targets
 targets = []
 
 
@@ -414,7 +414,7 @@ if verify_walls:
 
 if targets:
     lines.append("")
-    lines.append("| target (issue 14) | measured | met |")
+    lines.append("| target | measured | met |")
     lines.append("| --- | --- | --- |")
     for desc, ok, measured in targets:
         lines.append(f"| {desc} | {measured} | {'yes' if ok else '**no**'} |")

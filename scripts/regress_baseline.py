@@ -112,7 +112,7 @@ def sample(seed, i):
 # --- the formula -------------------------------------------------------------------------------
 # F = ((x + y) * (z - w) - x * z / (y + 2)) * (w + 1) + x*y, in the order written:
 #   x + y, z - w, (x+y)*(z-w), x*z, y + 2, x*z/(y+2), difference, w + 1, product, x*y, sum:
-#   11 operations (6 additions/subtractions, 4 multiplications, 1 division; issue 11 calls it
+#   11 operations (6 additions/subtractions, 4 multiplications, 1 division; one count calls it
 #   "a 10-operation formula"). y + 2 >= 1 on [-1, 1]: no sample is outside the domain.
 def make_f(two, one):
     def f(x, y, z, w):

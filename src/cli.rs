@@ -41,7 +41,7 @@ pub struct Cli {
 /// The subcommands.
 #[derive(Debug, Subcommand)]
 pub enum Command {
-    /// Check the built-in claim catalogue (every claim of SPEC §6: juttler.*, spaeth.*, planes.*,
+    /// Check the built-in claim catalogue (every claim of the claim list: juttler.*, spaeth.*, planes.*,
     /// chiang.*) and print each verdict with its method and evidence. Exit 0 when every verdict is
     /// the expected one.
     #[command(after_help = VERIFY_EXAMPLES)]

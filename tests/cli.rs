@@ -631,7 +631,7 @@ fn prove_accepts_a_leading_minus() {
     assert!(stdout(&o).starts_with("fails"), "{}", stdout(&o));
 }
 
-/// Regression (issue 15): input outside the grammar was misread as variables and juxtaposition
+/// Regression: input outside the grammar was misread as variables and juxtaposition
 /// (`1e3` as the variable `e3`, `sin(2x)` as `sin*(2x)`) and answered `fails`. Scientific
 /// notation is now read exactly; an unknown function is a one-line error, exit 2.
 #[test]

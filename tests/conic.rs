@@ -1,7 +1,7 @@
 //! `solve conic` on 560 random planes (rational, radical, and the boundary families
 //! `c^2 = a^2 + b^2`, `a = b = 0`, `d = 0`, `a + b + c = 0`) through the library entry, every
 //! answer checked **independently of `core::conic`**: the cone's control vectors are the ones
-//! SPEC §4 prints, the weights are `N . q_k` of the printed vectors, the curve points at 13
+//! the claim list prints, the weights are `N . q_k` of the printed vectors, the curve points at 13
 //! rational parameters lie on the plane and on the cone exactly, the `type` equals the angle
 //! rule computed here from the normal AND the weight-discriminant rule computed here from the
 //! answered weights, the poles are zeros / sign changes of the answered weight polynomial and
@@ -43,7 +43,7 @@ fn on_cone(p: &Vec3<Radical>) -> bool {
     p.x.square() + p.y.square() == p.z.square()
 }
 
-/// SPEC §4's control vectors of V+ and V-.
+/// the claim list's control vectors of V+ and V-.
 fn spec_cone(piece: usize) -> Vec<Vec3<Radical>> {
     let s = r("1/sqrt(2)");
     let v =
@@ -489,7 +489,7 @@ fn random_planes_give_points_on_plane_and_cone_and_the_same_type_both_ways() {
 
 #[test]
 fn table1_columns_are_reproduced() {
-    // SPEC §4 Table 1 (square roots restored): the + weights and the C- poles.
+    // the claim list Table 1 (square roots restored): the + weights and the C- poles.
     let cases = [
         ("[0,0,1]", "circle", ["1", "1/sqrt(2)", "1"], 0),
         ("[1,1,3]", "ellipse", ["4", "5/sqrt(2)", "4"], 0),

@@ -4,7 +4,7 @@
 
 use exactcheck::claims::{self, latex, Checked, Verdict};
 
-/// The failing claims of the catalogue (issue 12).
+/// The failing claims of the catalogue.
 const FAILING: [&str; 10] = [
     "juttler.interpolation_degree",
     "spaeth.eq5",

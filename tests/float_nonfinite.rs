@@ -1,4 +1,4 @@
-//! Float mode on extreme but finite input (issue 13: "NaN / infinity / subnormal inputs give a
+//! Float mode on extreme but finite input("NaN / infinity / subnormal inputs give a
 //! clear error or a flagged result, never a silent NaN"): numbers near f64's largest (1e300),
 //! numbers whose squares overflow (1e154), subnormals (1e-320), for every kind that has a float
 //! mode, in `--float` and `--both`. Each run answers with valid JSON holding only finite

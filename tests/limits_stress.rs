@@ -1,4 +1,4 @@
-//! The limits stress test (issue 13: "a stress test in the test suite runs every limit at and
+//! The limits stress test("a stress test in the test suite runs every limit at and
 //! just past its value").
 //!
 //! Every limit of the registry (`exactcheck_core::limits::all()`) has a file

@@ -1,4 +1,4 @@
-//! The malformed-input corpus (issue 13): every file of `tests/malformed/` is fed to the command
+//! The malformed-input corpus: every file of `tests/malformed/` is fed to the command
 //! that reads it, and the answer must be a refusal — exit status 2, exactly one line on standard
 //! error (plus clap's hint line for usage errors), equal to the case's `.expect` file, nothing on
 //! standard output, no "panicked" anywhere, within the kill-timeout, not the memory backstop, and
@@ -223,7 +223,7 @@ fn run_case(case: &Case, hang: bool) -> (Run, String) {
 }
 
 /// The one line of a refusal: `Some(error line)` when standard error is one newline-terminated
-/// line, optionally followed by clap's `exactcheck: hint: ...` line (issue 16 asks for usage
+/// line, optionally followed by clap's `exactcheck: hint: ...` line (the contract asks for usage
 /// errors as one line plus a hint); `None` for anything else.
 fn error_line(stderr: &str) -> Option<&str> {
     let body = stderr.strip_suffix('\n')?;
@@ -265,7 +265,7 @@ fn judge(
             shorten(&r.stdout_text())
         ));
     }
-    // The allocator's memory cap is a backstop (contract of issue 13): an input that reaches it
+    // The allocator's memory cap is a backstop (the limits contract): an input that reaches it
     // has escaped the named limits, unless the case lowers the cap on purpose.
     let sets_memory = case
         .args
@@ -425,7 +425,7 @@ fn the_corpus_covers_every_solve_kind_and_every_reading_command() {
     let cases = corpus();
     assert!(
         cases.len() >= 40,
-        "the corpus has {} cases; issue 13 asks for at least 40",
+        "the corpus has {} cases; the corpus needs at least 40",
         cases.len()
     );
     let readers: BTreeSet<&str> = cases

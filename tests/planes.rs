@@ -1,4 +1,4 @@
-//! The two-plane intersection end to end (issue 9, the `planes` half): `solve plane_plane` on
+//! The two-plane intersection end to end (the `planes` half): `solve plane_plane` on
 //! random exact input (rational and radical coordinates) checked by exact substitution, the
 //! degenerate and malformed inputs, the published JavaScript port against the exact construction
 //! on well-conditioned input (proptest, stated bound), and the regression report finding a

@@ -1,4 +1,4 @@
-//! The command line under hostile use (issue 16): a closed or full standard output, counts far
+//! The command line under hostile use: a closed or full standard output, counts far
 //! out of range, usage errors, invalid UTF-8 in arguments, `plot -o -`. Each case pins the old
 //! failure (a panic, an abort, minutes of silence, a 3-16 line message, a file named `-`).
 

@@ -106,7 +106,7 @@ fn answer(problem: &str, extra: &[&str]) -> serde_json::Value {
 
 #[test]
 fn unknown_and_repeated_fields_are_refused_by_name() {
-    // Issue 16: a misspelt field was silently ignored.
+    // a misspelt field was silently ignored.
     refused(
         &cylinder_sphere(ZERO, "[1,0,0]", "7", r#","sampels":8"#),
         &[],
@@ -131,7 +131,7 @@ fn unknown_and_repeated_fields_are_refused_by_name() {
 
 #[test]
 fn conflicting_angle_keys_are_refused() {
-    // Issue 16: {cos, sin, radians} together was accepted (radians won silently).
+    // {cos, sin, radians} together was accepted (radians won silently).
     for mode in [&[][..], &["--float"][..]] {
         refused(
             &cylinder_sphere(r#"{"cos":1,"sin":0,"radians":1}"#, "[1,0,0]", "7", ""),
@@ -148,7 +148,7 @@ fn conflicting_angle_keys_are_refused() {
 
 #[test]
 fn big_json_integers_are_read_exactly() {
-    // Issue 16: 10^23 was called a floating-point literal, a 400-digit integer "out of range".
+    // 10^23 was called a floating-point literal, a 400-digit integer "out of range".
     let big = format!("1{}", "0".repeat(23));
     let a = answer(
         &cylinder_sphere(ZERO, &format!("[{big},0,0]"), &big, ""),
@@ -219,7 +219,7 @@ fn float_literals_are_refused_with_a_suggestion_that_parses() {
 
 #[test]
 fn float_mode_refuses_non_finite_values() {
-    // Issue 16: these printed null coefficients and a confident verdict, exit 0.
+    // these printed null coefficients and a confident verdict, exit 0.
     refused(
         &cylinder_sphere(r#"{"radians":"10^400"}"#, "[1,0,0]", "7", ""),
         &["--float"],
@@ -276,7 +276,7 @@ fn errors_name_the_field_path() {
 
 #[test]
 fn on_the_axis_with_equal_radii_the_surfaces_touch_along_a_circle() {
-    // Issue 15's example: the old answer was contact_by_axis_distance "crossing",
+    // The reported example: the old answer was contact_by_axis_distance "crossing",
     // methods_agree false, and no touching reported.
     let a = answer(
         r#"{"kind":"cylinder_sphere","cylinder":{"axis_point":[0,0],"radius":5,"beta":{"cos":1,"sin":0},"gamma":{"cos":1,"sin":0}},"sphere":{"center":[0,0,3],"radius":5}}"#,
@@ -297,7 +297,7 @@ fn on_the_axis_with_equal_radii_the_surfaces_touch_along_a_circle() {
 
 #[test]
 fn the_figure_eight_reports_its_touching_point() {
-    // Issue 15: centre (2,0,0), R = 7 = r + delta; tangent_points was empty.
+    // centre (2,0,0), R = 7 = r + delta; tangent_points was empty.
     let a = answer(&cylinder_sphere(ZERO, "[2,0,0]", "7", ""), &[]);
     assert_eq!(a["contact"], "crossing");
     assert_eq!(a["methods_agree"], true);

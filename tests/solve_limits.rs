@@ -1,4 +1,4 @@
-//! The `solve` cases of issue 16 and the limits of issue 13 that `solve` enforces, pinned: each
+//! The hostile `solve` cases and the limits that `solve` enforces, pinned: each
 //! answers correctly or refuses with one line naming the limit (exit 2). Before the fixes these
 //! ran for tens of seconds (refinement by bisection, isolation of roots of polynomials with
 //! thousand-digit coefficients, sphere interpolation of many points), printed `null` for

@@ -1,4 +1,4 @@
-//! W4 (exact real root isolation, issue 14): the Descartes isolator and its refinement against
+//! W4 (exact real root isolation): the Descartes isolator and its refinement against
 //! the Sturm isolator (`UPoly::isolate_roots`, the reference), on random integer polynomials with
 //! repeated and rational roots, on the W4 families at small degrees and on known roots; the
 //! check values (root counts) of the comparison sizes; the `bench w4` command's contract.

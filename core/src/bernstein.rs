@@ -1,7 +1,7 @@
-//! Polynomials in Bernstein form (SPEC §0), written once and generic over the scalar.
+//! Polynomials in Bernstein form, written once and generic over the scalar.
 //!
 //! A [`Bernstein`] polynomial of degree `n` is `p(t) = sum_i c_i B_i^n(t)` with the Bernstein
-//! polynomials `B_i^n(t) = C(n,i) t^i (1-t)^(n-i)` (SPEC §0). Everything that needs only `+ - *`
+//! polynomials `B_i^n(t) = C(n,i) t^i (1-t)^(n-i)`. Everything that needs only `+ - *`
 //! (evaluation by de Casteljau, subdivision, the derivative, the power-basis coefficients, the
 //! product rule in scaled form) asks for a [`Ring`]; what divides by integers (degree elevation,
 //! the product rule `B_i^m B_j^n = phi(m,n,i,j) B_{i+j}^{m+n}` with `phi` a fraction, conversion
@@ -320,7 +320,7 @@ pub(crate) fn elevate_by<T: Field, V: Linear<T>>(ctrl: &[V], r: usize) -> Vec<V>
 }
 
 /// The product-rule factor `phi(m,n,i,j) = C(m,i) C(n,j) / C(m+n,i+j)` of
-/// `B_i^m B_j^n = phi(m,n,i,j) B_{i+j}^{m+n}` (SPEC §0), as a reduced fraction
+/// `B_i^m B_j^n = phi(m,n,i,j) B_{i+j}^{m+n}`, as a reduced fraction
 /// `(numerator, denominator)`; `(0, 1)` when `i > m` or `j > n`.
 ///
 /// By Vandermonde's identity `phi <= 1`, so both parts fit in a `u64`.
@@ -354,7 +354,7 @@ fn gcd_u128(mut a: u128, mut b: u128) -> u128 {
     a
 }
 
-/// A polynomial `p(t) = sum_{i=0}^n c_i B_i^n(t)` in Bernstein form of degree `n` (SPEC §0).
+/// A polynomial `p(t) = sum_{i=0}^n c_i B_i^n(t)` in Bernstein form of degree `n`.
 ///
 /// The degree is that of the representation (the number of coefficients minus one), not
 /// necessarily the exact degree of the polynomial: `elevate` raises it without changing `p`.
@@ -571,7 +571,7 @@ impl<T: Field> Bernstein<T> {
         }
     }
 
-    /// The product `p q` in degree `m + n` by the product rule (SPEC §0):
+    /// The product `p q` in degree `m + n` by the product rule:
     /// `d_k = sum_{i+j=k} phi(m,n,i,j) a_i b_j`.
     pub fn mul(&self, other: &Self) -> Self {
         Bernstein {

@@ -1,4 +1,4 @@
-//! Bezier curves and tensor-product patches with vector control points (SPEC §0), generic over
+//! Bezier curves and tensor-product patches with vector control points, generic over
 //! the scalar.
 //!
 //! * [`BezierCurve`]: `x(t) = sum_i B_i^n(t) b_i` with points `b_i` in [`Vec3`].
@@ -133,7 +133,7 @@ impl<T: Ring> BezierCurve<T> {
         [self.coordinate(0), self.coordinate(1), self.coordinate(2)]
     }
 
-    /// The scalar polynomial `a . x(t)` (coefficients `a . b_i`), e.g. `N . V(t)` in SPEC §4.
+    /// The scalar polynomial `a . x(t)` (coefficients `a . b_i`), e.g. `N . V(t)` in the claim list.
     pub fn dot(&self, a: &Vec3<T>) -> Bernstein<T> {
         Bernstein::new(self.points.iter().map(|p| a.dot(p)).collect())
     }
@@ -166,7 +166,7 @@ impl<T: Field> BezierCurve<T> {
 
 /// A rational Bezier curve in homogeneous form: control vectors `(w_k, w_k r_k)` in [`Hom4`], the
 /// curve `t -> sum_k B_k^n(t) (w_k, w_k r_k)` of projective 3-space, whose Cartesian form is
-/// `C(t) = sum B_k w_k r_k / sum B_k w_k` (SPEC §0).
+/// `C(t) = sum B_k w_k r_k / sum B_k w_k`.
 ///
 /// A control vector with `w_k = 0` is a point at infinity (a direction), allowed.
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
@@ -368,7 +368,7 @@ impl<T: Field> RationalBezierCurve<T> {
     }
 
     /// The homogeneous curve multiplied by the scalar polynomial `p` (degree m), of degree `m + n`
-    /// by the product rule (SPEC §0): control vectors
+    /// by the product rule: control vectors
     /// `sum_{i+j=k} phi(m,n,i,j) p_i (w_j, w_j r_j)`. Where `p(t) != 0` it is the same
     /// projective point; the zeros of `p` become common zeros of all coordinates (base points).
     pub fn mul_bernstein(&self, p: &Bernstein<T>) -> Self {

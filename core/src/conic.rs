@@ -1,4 +1,4 @@
-//! Conics as plane sections of the cone `x^2 + y^2 = z^2` (Chiang, seed 004, SPEC §4 "Conic
+//! Conics as plane sections of the cone `x^2 + y^2 = z^2` (Chiang, seed 004, "Conic
 //! table"), written once and generic over the scalar.
 //!
 //! # The cone as two ruled surfaces

@@ -1,4 +1,4 @@
-//! Cylinder / sphere intersection (Spaeth 2003, seeds 000 and 001; SPEC §2).
+//! Cylinder / sphere intersection (Spaeth 2003, seeds 000 and 001).
 //!
 //! A cylinder of radius `r` about the z axis through `(a, b, 0)` is rotated by `beta` in the x-z
 //! plane and then by `gamma` in the y-z plane: its points are
@@ -63,7 +63,7 @@ pub fn unit_circle_point<T: Field>(tau: &T) -> Result<Angle<T>, ZeroDivisor> {
 }
 
 /// A cylinder (axis point `(a, b)` before rotation, radius `r`, rotations `beta`, `gamma`) and a
-/// sphere (centre, radius), SPEC §2.
+/// sphere (centre, radius), the claim list.
 #[derive(Clone, Debug, PartialEq)]
 pub struct CylinderSphere<T> {
     /// x of the axis point before rotation.
@@ -528,7 +528,7 @@ mod tests {
 
     #[test]
     fn on_the_axis_with_equal_radii_the_surfaces_touch_along_a_circle() {
-        // Issue 15: centre (0,0,3) on the axis of the r = 5 cylinder, R = 5. The old decision
+        // centre (0,0,3) on the axis of the r = 5 cylinder, R = 5. The old decision
         // answered Crossing (it took r - R <= 0 as "the cylinder passes through the sphere").
         let on_axis = cs((0.0, 0.0, 3.0), 5.0);
         assert_ne!(on_axis.contact_by_distance(), Contact::Crossing);

@@ -2,7 +2,7 @@
 //! solve, determinant, and the inertia of a symmetric matrix over an [`OrderedField`] (Sylvester's
 //! law: the numbers of positive, negative and zero eigenvalues, found by congruence, without
 //! eigenvalues). Used for the interpolation system on the sphere and the classification of
-//! preimage quadrics (SPEC §1).
+//! preimage quadrics.
 //!
 //! Pivoting picks the first non-zero entry: exact arithmetic needs no numerical pivoting.
 

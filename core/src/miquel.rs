@@ -1,4 +1,4 @@
-//! Miquel's configuration of a biquadratic patch on the unit sphere K (Satz 7, SPEC §1).
+//! Miquel's configuration of a biquadratic patch on the unit sphere K (Satz 7).
 //!
 //! Every biquadratic rational patch on K is the delta-image (Lebesgue's map (7)) of a bilinear
 //! patch of projective 3-space (Satz 1). Its four boundary curves are conics on K, i.e. circles:

@@ -1,5 +1,5 @@
 //! Planar Pythagorean-hodograph (PH) curves, their rotated normal field and their offsets as
-//! exact rational Bezier curves (Chiang, seed 004, SPEC §4 "PH curves"), written once and generic
+//! exact rational Bezier curves (Chiang, seed 004, "PH curves"), written once and generic
 //! over the scalar.
 //!
 //! # The construction
@@ -611,7 +611,7 @@ impl<T: OrderedField> PhCurve<T> {
     }
 }
 
-/// Chiang's worked example (SPEC §4): `u = (10, -1)`, `v = (1, 10)` in Bernstein form, start at
+/// Chiang's worked example: `u = (10, -1)`, `v = (1, 10)` in Bernstein form, start at
 /// the origin.
 pub fn chiang_example<T: QAlgebra>() -> PhCurve<T> {
     let c = |k: i64| T::from_i64(k);

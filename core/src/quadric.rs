@@ -1,6 +1,6 @@
-//! Rational curves and surfaces on quadrics (Juettler; seed 002, SPEC §1).
+//! Rational curves and surfaces on quadrics (Juettler; seed 002).
 //!
-//! Homogeneous coordinates throughout (SPEC §0). The unit sphere K is `k0^2 = k1^2 + k2^2 + k3^2`
+//! Homogeneous coordinates throughout. The unit sphere K is `k0^2 = k1^2 + k2^2 + k3^2`
 //! (5), the hyperbolic paraboloid H is `h0 h3 = h1 h2` (6). Every map here is division-free, so
 //! it runs over any [`Ring`] — over polynomials it proves the identities by expansion.
 
@@ -61,7 +61,7 @@ pub fn sigma<T: Ring>(p: &Hom4<T>) -> Hom4<T> {
     )
 }
 
-/// The inverse of sigma as printed: `sigma^-1(k) = (k0 - k3, k1, k2, 0)` (SPEC §1).
+/// The inverse of sigma as printed: `sigma^-1(k) = (k0 - k3, k1, k2, 0)`.
 pub fn sigma_inverse<T: Ring>(k: &Hom4<T>) -> Hom4<T> {
     let [k0, k1, k2, k3] = &k.0;
     Hom4::new(k0.sub_ref(k3), k1.clone(), k2.clone(), T::zero())

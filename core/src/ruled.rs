@@ -1,5 +1,5 @@
 //! Ruled surfaces `S(s,t) = B(t) + s V(t)` and their intersections with a plane, a line and a
-//! point (Chiang, seed 004; SPEC §4), written once and generic over the scalar.
+//! point (Chiang, seed 004), written once and generic over the scalar.
 //!
 //! `B` is a Bezier curve of degree `n` (control points `p_j`), `V` a Bezier *direction field* of
 //! degree `m` (control vectors `q_i`). The plane is `N . x + d = 0`, `N = (a, b, c)`.
@@ -343,7 +343,7 @@ fn from_scaled_poly<T: Field>(p: &[T]) -> Bernstein<T> {
     Bernstein::from_scaled(p).expect("m + n + 1 >= 1 coefficients")
 }
 
-/// Chiang's Example 4 (SPEC §4, square roots restored from the text): `m = 1`, `n = 2`,
+/// Chiang's Example 4 (the claim list, square roots restored from the text): `m = 1`, `n = 2`,
 /// `p0 = (0,0,-1), p1 = (1,1,-1), p2 = (0,2,-1)`, `q0 = (-1, 1, sqrt 2)`, `q1 = (-1, -1, sqrt 6)`,
 /// and the plane `z = 0`. The square roots are arguments, so any scalar that has them (an exact
 /// square-root field, `f64`) instantiates the example; the one home of its data.

@@ -1,5 +1,5 @@
 //! Generic vectors: Cartesian 3-vectors with dot and cross products, and homogeneous 4-vectors
-//! (points of projective 3-space, SPEC §0) with projective equality.
+//! (points of projective 3-space) with projective equality.
 
 use crate::scalar::{Field, Ring};
 use core::ops::{Add, Index, Neg, Sub};
@@ -137,7 +137,7 @@ impl<T> Index<usize> for Vec3<T> {
 }
 
 /// A homogeneous 4-vector `(p0, p1, p2, p3)`: the point `(p1, p2, p3) / p0` of projective 3-space
-/// when `p0 != 0`, a point at infinity when `p0 = 0` (SPEC §0).
+/// when `p0 != 0`, a point at infinity when `p0 = 0`.
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct Hom4<T>(pub [T; 4]);
 
@@ -164,7 +164,7 @@ impl<T: Ring> Hom4<T> {
         let m = |i: usize, j: usize| a[i].mul_ref(&b[j]) - a[j].mul_ref(&b[i]);
         [m(0, 1), m(0, 2), m(0, 3), m(1, 2), m(1, 3), m(2, 3)]
     }
-    /// Projective equality: all 2x2 minors vanish and neither vector is zero (SPEC §0).
+    /// Projective equality: all 2x2 minors vanish and neither vector is zero.
     pub fn proj_eq(&self, rhs: &Self) -> bool {
         !self.is_zero() && !rhs.is_zero() && self.minors(rhs).iter().all(Ring::is_zero)
     }

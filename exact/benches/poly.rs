@@ -1,9 +1,9 @@
-//! Workload W1 (Chiang's ruled-surface / plane theorem, SPEC §4, as a polynomial identity) at
+//! Workload W1 (Chiang's ruled-surface / plane theorem, the claim list, as a polynomial identity) at
 //! `(m, n) = (2, 3), (4, 6), (8, 13), (13, 21)`:
 //!
-//! * `w1_text`: parse both sides of `w1_text(m, n)` (the text of `shared/anchors/w1_text.py`),
+//! * `w1_text`: parse both sides of `w1_text(m, n)` (the text of `scripts/anchors/w1_text.py`),
 //!   expand them and compare — the whole `exactcheck prove` path;
-//! * `w1_ring`: the identity built with the `Ring` API as `shared/anchors/w1_identity.py`'s flint
+//! * `w1_ring`: the identity built with the `Ring` API as `scripts/anchors/w1_identity.py`'s flint
 //!   backend builds it (x component and weight, `exactcheck_exact::w1::ring_residuals`),
 //!   residuals checked for zero;
 //! * `fateman`: a generic dense multiplication, `f * (f + 1)` with `f = (1 + x + y + z + w)^k`

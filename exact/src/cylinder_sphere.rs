@@ -1,4 +1,4 @@
-//! Exact analysis of a cylinder/sphere intersection (Spaeth, SPEC §2) for exact input.
+//! Exact analysis of a cylinder/sphere intersection (Spaeth) for exact input.
 //!
 //! Angles are rational points of the unit circle; the curve parameter is the rational circle
 //! parameter `tau` (`cos t = (1 - tau^2)/(1 + tau^2)`, `sin t = 2 tau/(1 + tau^2)`, `tau = infinity`
@@ -200,7 +200,7 @@ mod tests {
 
     #[test]
     fn touching_is_reported_completely() {
-        // Issue 15: centre (0,0,3) on the axis, R = r = 5. The discriminant vanishes identically:
+        // centre (0,0,3) on the axis, R = r = 5. The discriminant vanishes identically:
         // the surfaces touch along the circle u = 3 (the old answer listed no touching at all).
         let circle = analyze(&axis_aligned((0, 0, 3), 5));
         assert_eq!(circle.contact, Contact::Tangent);

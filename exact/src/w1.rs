@@ -1,4 +1,4 @@
-//! Workload W1 (SPEC §4, Chiang's ruled-surface / plane theorem as a polynomial identity), in
+//! Workload W1 (the claim list, Chiang's ruled-surface / plane theorem as a polynomial identity), in
 //! both of its forms: the text pair [`w1_text`] (re-exported from [`crate::expr`], where the
 //! expression syntax lives) and the identity built with the [`Ring`] API, [`ring_residuals`].
 //!
@@ -13,7 +13,7 @@
 //!
 //! with `phi(i, j) = C(m, i) C(n, j) / C(m + n, k)`: the x component and the weight of the
 //! rational Bézier form of the intersection. [`ring_residuals`] builds both sides exactly as
-//! `shared/anchors/w1_identity.py`'s flint backend does (Bernstein forms expanded, products
+//! `scripts/anchors/w1_identity.py`'s flint backend does (Bernstein forms expanded, products
 //! over the ring) and returns `LHS - RHS` of each; both are zero. With `negative`, `phi(0, 0)`
 //! becomes `1 + 1/7` (as `w1_identity.py --negative`), and both residuals are non-zero.
 
@@ -34,7 +34,7 @@ pub fn ring_residuals(m: u32, n: u32, negative: bool) -> (Poly<Rational>, Poly<R
 }
 
 /// W1 built with the [`Ring`] API: both residuals and the size of the expanded left-hand side
-/// (the `lhs_x_terms` check value of `shared/anchors/w1_identity.py`).
+/// (the `lhs_x_terms` check value of `scripts/anchors/w1_identity.py`).
 #[derive(Clone, Debug)]
 pub struct RingIdentity {
     /// `LHS - RHS` of the x component (zero unless `negative`).

@@ -1,4 +1,4 @@
-//! Self-intersections of the offsets of Chiang's PH example (SPEC §4, issue 10). By the paper,
+//! Self-intersections of the offsets of Chiang's PH example (the claim list). By the paper,
 //! r = 3 gives none and r = 15 a self-intersection with two cusps; the smallest radius of
 //! curvature is exactly 101/8 (at t = 1/2), so 63/5 (12.6 as printed) is still below it and
 //! 101/8 itself has a single degenerate cusp and no crossing.

@@ -1,8 +1,8 @@
 //! Sparse polynomials and polynomial expressions: arithmetic cross-checked against evaluation at
 //! random rational points and against a naive product, ring laws, canonical form after every
 //! operation, parser/printer round trips, parser robustness on random input; and the identities
-//! the workspace proves with them (SPEC §1 Lebesgue (7) and Dietz (8), SPEC §2 unit-circle
-//! reduction, SPEC §4 Chiang's theorem as workload W1).
+//! the workspace proves with them (the claim list Lebesgue (7) and Dietz (8), the claim list unit-circle
+//! reduction, the claim list Chiang's theorem as workload W1).
 
 use exactcheck_core::{Ring, Rng};
 use exactcheck_exact::expr::{parse_expr, parse_poly, w1_text, AddOp, Expr, ExprKind, MulOp};
@@ -368,7 +368,7 @@ proptest! {
 
 // ------------------------------------------------------------------------ identities
 
-/// Lebesgue's representation (SPEC §1 (7)), written once over any ring.
+/// Lebesgue's representation (the claim list (7)), written once over any ring.
 fn lebesgue<T: Ring>(p: &[T; 4]) -> [T; 4] {
     let two = T::from_i64(2);
     let [p0, p1, p2, p3] = p;

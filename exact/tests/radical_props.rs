@@ -146,7 +146,7 @@ proptest! {
         prop_assert_eq!(x == b, d.sign() == Sign::Zero);
     }
 
-    /// sqrt(x^2) = |x| for x = a + b sqrt(p): the denesting of SPEC §4's quadratics.
+    /// sqrt(x^2) = |x| for x = a + b sqrt(p): the denesting of the claim list's quadratics.
     #[test]
     fn sqrt_of_square_two_terms(a in small_rational(), b in small_rational(), k in 1..RADICANDS.len()) {
         let x = Radical::from(a) + Radical::sqrt_of(RADICANDS[k]).scale(&b);
@@ -207,7 +207,7 @@ proptest! {
 
 #[test]
 fn printed_examples() {
-    // SPEC §4, Table 1: 1/sqrt 2 and its rationalized form.
+    // the claim list, Table 1: 1/sqrt 2 and its rationalized form.
     assert_eq!(r("1/sqrt(2)"), r("sqrt(2)/2"));
     // Chiang's Example 4 mixes sqrt 2 and sqrt 6: their product lies in Q(sqrt 3).
     assert_eq!(r("sqrt(2)*sqrt(6)"), r("2*sqrt(3)"));
@@ -280,7 +280,7 @@ fn complex_examples() {
     let z: ComplexRadical = "1 + i".parse().unwrap();
     assert_eq!(z.inv().unwrap(), "(1 - i)/2".parse().unwrap());
     assert_eq!("sqrt(2*i)".parse::<ComplexRadical>().unwrap(), z);
-    // SPEC §1, Satz 5 / (14): the focal line points (1,0,0,i) and (0,1,-i,0) lie on the
+    // the claim list, Satz 5 / (14): the focal line points (1,0,0,i) and (0,1,-i,0) lie on the
     // absolute quadric x0^2 + x1^2 + x2^2 + x3^2 = 0, and so does every combination of them.
     let one = ComplexRadical::one();
     let zero = ComplexRadical::zero();

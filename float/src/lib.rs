@@ -18,7 +18,7 @@
 //!
 //! * [`program`] — [`ProgramRunner`]: the user's own executable (any language) as the float
 //!   side, fed one JSON line of inputs per sample and answering one line of outputs.
-//! * [`wabis`] — the published JavaScript `InterctionLineOf2Areas` (SPEC §3) ported to `f64`
+//! * [`wabis`] — the published JavaScript `InterctionLineOf2Areas` ported to `f64`
 //!   operation for operation: the float code under test of `regress plane-plane`.
 //!
 //! Tolerances live here and only here: the exact crates decide, this crate measures how far

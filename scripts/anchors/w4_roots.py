@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""W4 (issue 14): all real roots of an integer polynomial, each isolated in an interval of width
+"""W4: all real roots of an integer polynomial, each isolated in an interval of width
 at most 2^-53, in SymPy or python-flint. The same polynomials as `exactcheck bench w4`:
 
   wilkinson n : prod_{j=1..n} (n x - j)

@@ -48,11 +48,11 @@ pub struct BenchArgs {
     pub workload: Workload,
 }
 
-/// The benchmark workloads (see `../shared/anchors` for the same workloads in other tools).
+/// The benchmark workloads (see `scripts/anchors` for the same workloads in other tools).
 #[derive(Debug, Subcommand)]
 pub enum Workload {
     /// W1: Chiang's ruled-surface/plane theorem at degrees (m, n), built and expanded as
-    /// `shared/anchors/w1_identity.py` does, both residuals tested for zero.
+    /// `scripts/anchors/w1_identity.py` does, both residuals tested for zero.
     W1 {
         /// Degree of the directrix curve V (at least 1; m + n at most 48).
         #[arg(long, default_value_t = 8)]

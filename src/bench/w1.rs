@@ -1,7 +1,7 @@
 //! `exactcheck bench w1` and `exactcheck bench dense`: polynomial expansion.
 //!
 //! * **W1** is Chiang's ruled-surface/plane theorem proved by expansion, built with the `Ring`
-//!   API exactly as `shared/anchors/w1_identity.py` builds it for every tool (Bernstein forms,
+//!   API exactly as `scripts/anchors/w1_identity.py` builds it for every tool (Bernstein forms,
 //!   products and sums over `Poly<Rational>`; [`exactcheck_exact::w1::ring_identity`]); the
 //!   timed region is build plus expansion plus the zero test, the anchors' `total_s`.
 //! * **dense** is Fateman's dense product `f (f + 1)` with `f = (1 + x_1 + ... + x_v)^k`, the

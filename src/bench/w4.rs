@@ -1,4 +1,4 @@
-//! `exactcheck bench w4`: exact real root isolation (issue 14's W4). All real roots of one of
+//! `exactcheck bench w4`: exact real root isolation (W4). All real roots of one of
 //! the W4 polynomials ([`exactcheck_exact::univariate::w4`]: Wilkinson products, SplitMix64
 //! random polynomials, Mignotte polynomials), each in an interval of width at most `2^-53`, by
 //! Descartes' rule with Newton refinement ([`exactcheck_exact::univariate::integer_real_roots_to`]).

@@ -1,4 +1,4 @@
-//! The conic claims of Chiang (seed 004, SPEC §4 "Conic table"): `chiang.conic_table` (Table 1,
+//! The conic claims of Chiang (seed 004, "Conic table"): `chiang.conic_table` (Table 1,
 //! every printed entry against the exact derivation) and `chiang.conic_type` (the paper's angle
 //! rule against the conic's own invariants, on Table 1 and on thousands of random planes).
 //!
@@ -108,7 +108,7 @@ pub struct PrintedColumn {
     pub poles_minus: &'static [&'static str],
 }
 
-/// Table 1 as SPEC §4 restores it (plane equations as the OCR reads them).
+/// Table 1 as the claim list restores it (plane equations as the OCR reads them).
 pub const TABLE1: [PrintedColumn; 4] = [
     PrintedColumn {
         name: "circle",
@@ -741,7 +741,7 @@ pub fn check_table(table: &[PrintedColumn]) -> Result<Outcome, String> {
             _ => None,
         })
         .collect();
-    // The plane equations are the OCR's reading only (SPEC §4 restores normals, weights, points
+    // The plane equations are the OCR's reading only (the claim list restores normals, weights, points
     // and poles, not the equations): a mismatch there is reported, but the verdict is decided by
     // the restored entries.
     let describe = |r: &&TableRow| {

@@ -1,4 +1,4 @@
-//! Chiang (seed 004, SPEC §4), section II.B "The intersection with a line" and II.C "The vicinity
+//! Chiang (seed 004), section II.B "The intersection with a line" and II.C "The vicinity
 //! problem": `chiang.line` and `chiang.vicinity`.
 //!
 //! # The line

@@ -1,13 +1,13 @@
 //! The claim catalogue: statements of the source papers with their printed form (as data), the
 //! check that decides each, and the verdict the catalogue expects.
 //!
-//! Coverage of `../shared/SPEC.md` §6: every `juttler.*` id (seed 002) and every `spaeth.*` id
+//! Coverage of the papers' claim list: every `juttler.*` id (seed 002) and every `spaeth.*` id
 //! (seeds 000, 001) is implemented, plus `juttler.interpolation_degree`, the degree comparison
-//! split off from the sentence of `juttler.interpolation` (it is not an id of §6), the `planes.*`
+//! split off from the sentence of `juttler.interpolation` (it is not an id of the list), the `planes.*`
 //! id (seed 003) and the `chiang.*` ids of the ruled-surface half of seed 004 (`chiang.theorem`,
 //! `chiang.corollary1/2/5`, `chiang.example4`, `chiang.line`, `chiang.vicinity`), the conic ids
 //! `chiang.conic_table`, `chiang.conic_type` ([`chiang_conic`]) and the offset and PH ids
-//! (`chiang.offset`, `chiang.ph_*`, [`chiang_ph`]): every id of §6.
+//! (`chiang.offset`, `chiang.ph_*`, [`chiang_ph`]): every id of the list.
 //!
 //! A verdict is only ever the result of a computation:
 //! * **proved** — the residual expanded to zero over polynomials (modulo the declared relations);
@@ -197,7 +197,7 @@ impl Erratum {
 
 /// A claim of the catalogue.
 pub struct Claim {
-    /// The stable identifier of SPEC §6.
+    /// The stable identifier of the claim list.
     pub id: &'static str,
     /// The statement as printed in the source (data, never "fixed" silently).
     pub statement: &'static str,

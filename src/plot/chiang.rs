@@ -1,4 +1,4 @@
-//! `exactcheck plot chiang --example 4`: Chiang's Example 4 (SPEC §4) as a 3D figure — the ruled
+//! `exactcheck plot chiang --example 4`: Chiang's Example 4 as a 3D figure — the ruled
 //! surface patch `S(s,t) = B(t) + s V(t)`, the plane `z = 0` as a translucent rectangle, the
 //! section curve and its control polygon with the weights as labels.
 //!

@@ -1,5 +1,5 @@
 //! `exactcheck plot conics`: the four sections of the cone `x^2 + y^2 = z^2` of Chiang's
-//! Table 1 (SPEC §4), one panel each; `exactcheck plot FILE.json` draws one `conic` problem the
+//! Table 1, one panel each; `exactcheck plot FILE.json` draws one `conic` problem the
 //! same way.
 //!
 //! # What is exact and what is f64

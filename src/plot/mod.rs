@@ -1,6 +1,6 @@
 //! `exactcheck plot`: the SVG figures of the catalogue's papers and of problem files, drawn
 //! with `plotters` (its SVG backend, `SVGBackend::with_string`), one module per paper:
-//! * `spaeth` — Spaeth's cylinder/sphere intersection (SPEC §2): the t-u diagram (the paper's
+//! * `spaeth` — Spaeth's cylinder/sphere intersection: the t-u diagram (the paper's
 //!   Fig. 2 and 3; a 2D chart) and a 3D view (a `plotters` 3D chart, drawn back to front);
 //! * [`chiang`] — Chiang's Example 4: the ruled surface, the plane z = 0 and the exact section
 //!   curve with its control polygon (a 3D chart);

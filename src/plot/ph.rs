@@ -1,4 +1,4 @@
-//! `exactcheck plot ph` (Chiang's worked PH example, SPEC §4) and `exactcheck plot FILE.json` for
+//! `exactcheck plot ph` (Chiang's worked PH example) and `exactcheck plot FILE.json` for
 //! a `ph_offset` problem: the PH curve, its control polygon, its offsets at the problem's
 //! distances, and the offsets' cusps, in one planar figure.
 //!

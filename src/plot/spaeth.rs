@@ -1,4 +1,4 @@
-//! Spaeth's cylinder/sphere figures (SPEC §2): the t-u diagram and the 3D view of one
+//! Spaeth's cylinder/sphere figures: the t-u diagram and the 3D view of one
 //! configuration (a [`Scene`]: one of the paper's examples or a `cylinder_sphere` problem file).
 //!
 //! * The **t-u diagram** (the paper's Fig. 2 and 3, which the seeds do not contain): the branches

@@ -124,18 +124,18 @@ impl RegressArgs {
 /// The built-in kernels.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum Kernel {
-    /// Spaeth's cylinder/sphere coefficients A(t), B(t) and the discriminant A^2 - B (SPEC §2),
+    /// Spaeth's cylinder/sphere coefficients A(t), B(t) and the discriminant A^2 - B,
     /// plus the signs of the discriminant near tangency.
     #[value(alias = "cylinder_sphere")]
     CylinderSphere,
-    /// De Casteljau evaluation of a cubic Bezier curve in space (SPEC §0).
+    /// De Casteljau evaluation of a cubic Bezier curve in space.
     #[value(alias = "bezier_cubic")]
     BezierCubic,
-    /// The published JavaScript `InterctionLineOf2Areas` (SPEC §3) against the exact two-plane
+    /// The published JavaScript `InterctionLineOf2Areas` against the exact two-plane
     /// construction, binned by the angle between the normals (90 degrees down to 1e-12 rad).
     #[value(alias = "plane_plane")]
     PlanePlane,
-    /// Chiang's plane section of a ruled surface (weights and control points, SPEC §4) for
+    /// Chiang's plane section of a ruled surface (weights and control points) for
     /// (m, n) = (1, 2), (2, 3), (3, 5), on random and near-degenerate surfaces
     /// ([`ruled`]).
     #[value(alias = "ruled_plane")]

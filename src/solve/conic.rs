@@ -1,4 +1,4 @@
-//! `solve` kind `conic` (Chiang, SPEC §4 "Conic table"): the section of the cone
+//! `solve` kind `conic` (Chiang, "Conic table"): the section of the cone
 //! `x^2 + y^2 = z^2` by any plane, as the two rational quadratic Bezier pieces of the cone's
 //! ruled surfaces `V+` / `V-`, with the section type decided two independent ways.
 //!
@@ -68,7 +68,7 @@ use serde_json::Value;
 #[serde(deny_unknown_fields)]
 #[schemars(
     title = "conic",
-    description = "The section of the cone x^2 + y^2 = z^2 (Chiang's two ruled surfaces V+ and V-, SPEC §4) by a plane, given either as `normal` and `point` (the plane through the point) or as `plane` [a, b, c, d] (a x + b y + c z + d = 0) — exactly one of the two forms: both pieces as rational quadratic Bezier curves (weights, points, poles in [0,1]), the type (circle, ellipse, parabola, hyperbola; point, double_line, line_pair for a plane through the apex) decided by the paper's angle rule and by the pieces' weights, and the rulings in the plane for a plane through the apex. Exact mode reads exact numbers (sqrt allowed); --float any finite number.",
+    description = "The section of the cone x^2 + y^2 = z^2 (Chiang's two ruled surfaces V+ and V-) by a plane, given either as `normal` and `point` (the plane through the point) or as `plane` [a, b, c, d] (a x + b y + c z + d = 0) — exactly one of the two forms: both pieces as rational quadratic Bezier curves (weights, points, poles in [0,1]), the type (circle, ellipse, parabola, hyperbola; point, double_line, line_pair for a plane through the apex) decided by the paper's angle rule and by the pieces' weights, and the rulings in the plane for a plane through the apex. Exact mode reads exact numbers (sqrt allowed); --float any finite number.",
     extend("oneOf" = [{"required": ["normal", "point"]}, {"required": ["plane"]}])
 )]
 pub struct Input<N> {

@@ -1,4 +1,4 @@
-//! `solve` kind `cylinder_sphere` (Spaeth, SPEC §2): decision, touching points or circle,
+//! `solve` kind `cylinder_sphere` (Spaeth): decision, touching points or circle,
 //! coefficients of A and B, parametrization and sample points of the intersection curve.
 //!
 //! Exact mode works over Q with rational angles `{cos, sin}` (checked on the unit circle;
@@ -36,7 +36,7 @@ use std::borrow::Cow;
 #[serde(deny_unknown_fields)]
 #[schemars(
     title = "cylinder_sphere",
-    description = "A cylinder and a sphere (Spaeth, SPEC §2): decide whether and how they meet, the touching points or circle, A(t) and B(t), the parametrization and sample points of the intersection curve. Exact mode needs rational numbers; --float reads any finite number."
+    description = "A cylinder and a sphere (Spaeth): decide whether and how they meet, the touching points or circle, A(t) and B(t), the parametrization and sample points of the intersection curve. Exact mode needs rational numbers; --float reads any finite number."
 )]
 pub struct Input<N> {
     /// `"cylinder_sphere"`.
@@ -823,7 +823,7 @@ mod tests {
 
     #[test]
     fn the_touching_circle_is_reported_and_checked() {
-        // Issue 15's example: centre (0,0,3) on the axis, R = r = 5.
+        // The reported example: centre (0,0,3) on the axis, R = r = 5.
         let a = exact(&problem("[0,0,3]", "5")).unwrap();
         assert_eq!(a.contact, "tangent");
         assert_eq!(a.contact_by_axis_distance, "tangent");
@@ -839,7 +839,7 @@ mod tests {
 
     #[test]
     fn the_figure_eight_touches_at_its_crossing_point() {
-        // Issue 15: centre (2,0,0), R = 7 = r + delta: touching at (-5, 0, 0), t = pi.
+        // centre (2,0,0), R = 7 = r + delta: touching at (-5, 0, 0), t = pi.
         let a = exact(&problem("[2,0,0]", "7")).unwrap();
         assert_eq!(a.contact, "crossing");
         assert!(a.methods_agree);

@@ -1,4 +1,4 @@
-//! `solve` kind `ph_offset` (Chiang, SPEC §4 "PH curves"): a planar Pythagorean-hodograph curve
+//! `solve` kind `ph_offset` (Chiang, "PH curves"): a planar Pythagorean-hodograph curve
 //! from its preimage `u(t), v(t)` (Bernstein coefficients) and start point, its offsets at one
 //! or several signed distances `r` as exact rational Bezier curves, the smallest radius of
 //! curvature and the cusps of every offset, all decided exactly.

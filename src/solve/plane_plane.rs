@@ -1,4 +1,4 @@
-//! `solve` kind `plane_plane` (SPEC §3, seed 003): the intersection line of two planes given in
+//! `solve` kind `plane_plane` (seed 003): the intersection line of two planes given in
 //! normal form `{normal, point}`.
 //!
 //! Exact mode reads the numbers into the radical field (so `"sqrt(2)/2"` is exact) and runs the
@@ -40,7 +40,7 @@ use std::borrow::Cow;
 #[serde(deny_unknown_fields)]
 #[schemars(
     title = "plane_plane",
-    description = "Two planes in normal form {normal, point} (SPEC §3): how they meet (line, parallel, coincident), the point of the line nearest the origin, the direction n1 x n2 and the unit direction. Normals need not be unit vectors. Exact mode reads exact numbers (radicals allowed); --float runs the published JavaScript InterctionLineOf2Areas ported to f64."
+    description = "Two planes in normal form {normal, point}: how they meet (line, parallel, coincident), the point of the line nearest the origin, the direction n1 x n2 and the unit direction. Normals need not be unit vectors. Exact mode reads exact numbers (radicals allowed); --float runs the published JavaScript InterctionLineOf2Areas ported to f64."
 )]
 pub struct Input<N> {
     /// `"plane_plane"`.

@@ -1,5 +1,5 @@
 //! `solve` kind `ruled_line`: where a line `P + lambda D` meets the ruled surface
-//! `S(s,t) = B(t) + s V(t)` (Chiang, seed 004, section II.B; SPEC §4).
+//! `S(s,t) = B(t) + s V(t)` (Chiang, seed 004, section II.B).
 //!
 //! # Method
 //! The ruling `t` meets the line iff `B(t) - P`, `V(t)` and `D` are linearly dependent:
@@ -93,7 +93,7 @@ pub const MAX_DEGREE: usize = 60;
 #[serde(deny_unknown_fields)]
 #[schemars(
     title = "ruled_line",
-    description = "A ruled surface S(s,t) = B(t) + s V(t) (Bezier base curve B of degree n, Bezier direction field V of degree m) and a line P + lambda D (Chiang, SPEC §4): the parameters t in [0,1] whose ruling meets the line (roots of det(B(t) - P, V(t), D), degree m+n <= 60), with s, lambda and the point. Outcomes: points, no_points, line_on_surface (a ruling is the line, or the rulings cover all of it), line_segment_on_surface / single_point / isolated_points (det vanishes identically: the covered part of the line, decided exactly, in `covered` and `lambda_at_ends`), parallel_to_every_ruling, undecided (with a note)."
+    description = "A ruled surface S(s,t) = B(t) + s V(t) (Bezier base curve B of degree n, Bezier direction field V of degree m) and a line P + lambda D (Chiang): the parameters t in [0,1] whose ruling meets the line (roots of det(B(t) - P, V(t), D), degree m+n <= 60), with s, lambda and the point. Outcomes: points, no_points, line_on_surface (a ruling is the line, or the rulings cover all of it), line_segment_on_surface / single_point / isolated_points (det vanishes identically: the covered part of the line, decided exactly, in `covered` and `lambda_at_ends`), parallel_to_every_ruling, undecided (with a note)."
 )]
 pub struct Input<N> {
     /// `"ruled_line"`.

@@ -1,4 +1,4 @@
-//! `solve` kind `ruled_plane` (Chiang's Theorem 1, SPEC §4): the section of the ruled surface
+//! `solve` kind `ruled_plane` (Chiang's Theorem 1): the section of the ruled surface
 //! `S(s,t) = B(t) + s V(t)` by the plane `N.x + d = 0` as a rational Bezier curve of degree
 //! `m + n`, with its degenerate cases as typed outcomes and its poles isolated exactly.
 //!

@@ -1,12 +1,12 @@
-//! Workload W1 as text (SPEC §4).
+//! Workload W1 as text.
 
 use exactcheck_core::binomial;
 
 // ------------------------------------------------------------------------------ workload W1
 
-/// Workload W1 as text: Chiang's ruled-surface / plane theorem (SPEC §4), x component, as the two
+/// Workload W1 as text: Chiang's ruled-surface / plane theorem, x component, as the two
 /// sides of a polynomial identity in `t, a, b, c, d, px0.., py0.., pz0.., qx0.., qy0.., qz0..`,
-/// exactly as `shared/anchors/w1_text.py M N` prints them:
+/// exactly as `scripts/anchors/w1_text.py M N` prints them:
 ///
 /// * LHS `(N.V(t)) Bx(t) - (N.B(t) + d) Vx(t)` with the Bernstein forms written unexpanded,
 ///   `C(n,j)*t^j*(1-t)^(n-j)`;

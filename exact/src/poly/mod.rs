@@ -87,7 +87,7 @@
 //!   against it is a canonical normal form.
 //!
 //! # Performance
-//! W1 (SPEC §4 at `(m, n) = (8, 13)`: a 9.5 kB expression pair over 74 variables, 5,841 terms)
+//! W1 (the claim list at `(m, n) = (8, 13)`: a 9.5 kB expression pair over 74 variables, 5,841 terms)
 //! parses, expands and compares in about 5 ms on the project machine, python-flint's
 //! `fmpq_mpoly` takes 7.4 ms, SymPy 3.3 s (`exact/benches/poly.rs`). A large share of the time
 //! is coefficient arithmetic in [`crate::Rational`].

@@ -597,7 +597,7 @@ mod tests {
             .collect()
     }
 
-    /// Issue 16: three dense cubics in x, y, z did not finish in 300 s (the coefficients of the
+    /// three dense cubics in x, y, z did not finish in 300 s (the coefficients of the
     /// lex basis grow past 200,000 digits); now the coefficient-size limit stops the run.
     #[test]
     fn dense_cubics_stop_on_the_coefficient_limit() {
@@ -608,7 +608,7 @@ mod tests {
         assert!(e.to_string().contains("groebner-bits = 10000 bits"), "{e}");
     }
 
-    /// Issue 16: 200 relations `vI = I` took more than 20 s (every pair re-ranked at every
+    /// 200 relations `vI = I` took more than 20 s (every pair re-ranked at every
     /// step); with the pair queue they are immediate, and the basis is the relations.
     #[test]
     fn two_hundred_linear_relations() {

@@ -216,7 +216,7 @@ fn independent_radicals_is_the_rank_modulo_squares() {
     assert_eq!(big.independent_radicals(), 2);
 }
 
-/// Issue 16: `(sqrt(2) + ... + sqrt(97))^8` (25 primes) aborted allocating 5.4 GB and its
+/// `(sqrt(2) + ... + sqrt(97))^8` (25 primes) aborted allocating 5.4 GB and its
 /// inverse asked for 2.2 TB; the sum is now refused, naming the limit, before any product.
 #[test]
 fn many_radicands_are_refused_with_the_limit() {
@@ -234,7 +234,7 @@ fn many_radicands_are_refused_with_the_limit() {
     assert_eq!(inv.independent_radicals(), 10);
 }
 
-/// Issue 16: `sqrt((S10)^2)` took 3.4-14 s (the trial division of every perfect-square norm ran
+/// `sqrt((S10)^2)` took 3.4-14 s (the trial division of every perfect-square norm ran
 /// to its bound); the denesting now finds the root at once.
 #[test]
 fn denesting_a_square_of_ten_roots() {
@@ -244,7 +244,7 @@ fn denesting_a_square_of_ten_roots() {
 }
 
 /// A cofactor out of reach of the trial division is named as such, not as negative or not
-/// denestable (issue 16).
+/// denestable.
 #[test]
 fn the_sqrt_message_says_why() {
     let msg = |s: &str| s.parse::<Radical>().unwrap_err().to_string();

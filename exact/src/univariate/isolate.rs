@@ -400,7 +400,7 @@ impl UPoly {
     }
 
     /// The touching points: roots where `self <= 0` on both sides (necessarily of even
-    /// multiplicity), i.e. the isolated points of [`UPoly::nonnegative_set`]. For SPEC §2's
+    /// multiplicity), i.e. the isolated points of [`UPoly::nonnegative_set`]. For the claim list's
     /// discriminant they are the tangencies of the two surfaces.
     pub fn touching_points(&self) -> Vec<Root> {
         let SignChart { roots, gaps } = self.sign_chart();

@@ -1,6 +1,6 @@
 //! Dense univariate polynomials over [`Rational`] and exact real root isolation.
 //!
-//! The question this module answers for the rest of the workspace is SPEC §2's: with the rational
+//! The question this module answers for the rest of the workspace is the claim list's: with the rational
 //! circle parameter `tau`, the discriminant `A(t)^2 - B(t)` of Spaeth's cylinder/sphere
 //! intersection, times `(1 + tau^2)^2`, is a polynomial `D(tau)` with rational coefficients, and the
 //! surfaces meet exactly where `D >= 0`. [`UPoly::nonnegative_set`] describes that set exactly, as a
@@ -8,7 +8,7 @@
 //! [`RootInterval`] with rational endpoints (or given exactly, when the root is rational).
 //! Nothing here uses floating point for a decision.
 //!
-//! A caveat for SPEC §2's callers: `tau = tan(t/2)` misses `t = pi`. The sign there is the sign
+//! A caveat for the claim list's callers: `tau = tan(t/2)` misses `t = pi`. The sign there is the sign
 //! of the limit of `D(tau) / (1 + tau^2)^2` as `tau -> inf`, i.e. of the coefficient of `tau^4`
 //! (zero if the degree dropped below 4); check it separately.
 //!

@@ -225,7 +225,7 @@ fn refine_rejects_non_isolating_intervals() {
     );
 }
 
-/// The discriminant `D(tau)` of SPEC §2 for the unit-parameter cylinder `x = 5 cos t`,
+/// The discriminant `D(tau)` of the claim list for the unit-parameter cylinder `x = 5 cos t`,
 /// `y = 5 sin t`, `z = u` and the sphere with centre `(d, e, f)` and radius `rr`:
 /// `u^2 - 2 f u + f^2 + (5c - d)^2 + (5s - e)^2 - rr^2 = 0`, so
 /// `A^2 - B = rr^2 - (5c - d)^2 - (5s - e)^2`, times `(1 + tau^2)^2`.

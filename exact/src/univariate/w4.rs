@@ -1,4 +1,4 @@
-//! The W4 benchmark workload (issue 14): all real roots of an integer polynomial, each isolated
+//! The W4 benchmark workload: all real roots of an integer polynomial, each isolated
 //! in an interval of width at most `2^-53`, on three families (defined in the shared contract
 //! and reproduced by `scripts/anchors/w4_roots.py`):
 //!

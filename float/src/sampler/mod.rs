@@ -1,4 +1,4 @@
-//! The fast f64 sampler of the cylinder/sphere discriminant (Spaeth, SPEC §2; workload W3).
+//! The fast f64 sampler of the cylinder/sphere discriminant (Spaeth,; workload W3).
 //!
 //! `A(t)` and `B(t)` are reduced once per configuration to fixed trigonometric-polynomial
 //! coefficients ([`TrigCoefficients`], derived by the same generic code that the exact side runs),

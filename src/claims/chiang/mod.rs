@@ -1,4 +1,4 @@
-//! Claims of Chiang's ruled-surface / plane paper (seed 004, SPEC §4): the Theorem, Corollaries
+//! Claims of Chiang's ruled-surface / plane paper (seed 004): the Theorem, Corollaries
 //! 1, 2 and 5, and Example 4.
 //!
 //! The construction itself lives in `exactcheck_core::ruled` (generic over the scalar); here it is
@@ -45,7 +45,7 @@ use exactcheck_exact::Rational;
 
 type P = Poly<Rational>;
 
-/// The `chiang.*` claims of this module (SPEC §6), statements as printed.
+/// The `chiang.*` claims of this module, statements as printed.
 pub fn claims() -> Vec<Claim> {
     vec![
         claim!("chiang.theorem", Proved, "Theorem (intersection with aX+bY+cZ+d=0): S(s,t) = B(t) + s V(t) meets the plane in a rational Bezier curve of degree m+n with w_k = (a b c) . (sum_{i=0}^{k} phi(m,n,i,k-i) q_i), r_k = (1/w_k) sum_{i=0}^{k} phi(m,n,i,k-i) ((a b c d).(q_i 0) p_{k-i} - (a b c d).(p_{k-i} 1) q_i), k = 0..m+n, phi(m,n,i,j) = C(m,i) C(n,j) / C(m+n,i+j)", theorem_claim),

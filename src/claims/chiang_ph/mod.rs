@@ -1,4 +1,4 @@
-//! Chiang (seed 004, SPEC §4 "Cyclographic maps / offsets" and "PH curves"): the offset theorem,
+//! Chiang (seed 004, "Cyclographic maps / offsets" and "PH curves"): the offset theorem,
 //! the corollary's degrees and the worked example of a cubic PH curve, printed number by printed
 //! number — `chiang.offset`, `chiang.ph_degree`, `chiang.ph_points`, `chiang.ph_normals`,
 //! `chiang.ph_radius`, `chiang.ph_offsets`.
@@ -40,7 +40,7 @@ use super::{Claim, Outcome, Verdict};
 use exactcheck_core::ph::PhCurve;
 use exactcheck_exact::Rational;
 
-/// The `chiang.offset` and `chiang.ph_*` claims (SPEC §6), statements as printed.
+/// The `chiang.offset` and `chiang.ph_*` claims, statements as printed.
 pub fn claims() -> Vec<Claim> {
     vec![
         claim!("chiang.offset", Proved, "restrictions (1) base curve in a plane z = const, (2) ruling perpendicular to the xy-projection of the tangent B'(t), (3) ruling at 45 degrees to z = 0: a surface obeying all three, with base curve in z = -r, meets z = 0 in the r-offset of B", offset_claim),

@@ -54,9 +54,9 @@ type P = Poly<Rational>;
 /// Where the base curve lies and which plane cuts.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum BaseForm {
-    /// Base curve in `z = -r`, cut by `z = 0` (SPEC §4).
+    /// Base curve in `z = -r`, cut by `z = 0`.
     BelowCutAtZero,
-    /// Base curve in `z = 0`, cut by `z = r` (issue 10).
+    /// Base curve in `z = 0`, cut by `z = r`.
     AtZeroCutAtR,
 }
 
