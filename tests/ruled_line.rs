@@ -808,3 +808,15 @@ fn a_high_degree_over_square_roots_is_refused_before_the_work() {
         &["m + n = 59 with 0 independent", "ruled-work = 32"],
     );
 }
+
+/// A line that is the ruling at a double root of det: in f64 the two end values of the root's
+/// interval rounded to the same number, and the secant step divided by their zero difference
+/// (a panic). It bisects there now, and float mode answers.
+#[test]
+fn float_mode_refines_a_double_root_whose_end_values_round_equal() {
+    let problem = r#"{"kind":"ruled_line","base":[[0,1,-1],[0,0,1]],"directions":[[-1,0,0],[0,-2,-1]],"line":{"point":[0,"2/3","-1/3"],"direction":["-2/3","-2/3","-1/3"]}}"#;
+    let exact = solve(problem, Mode::Exact).unwrap();
+    assert_eq!(exact["outcome"], "line_on_surface");
+    let float = solve(problem, Mode::Float).unwrap();
+    assert!(float["outcome"].is_string(), "{float}");
+}

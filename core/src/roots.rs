@@ -349,10 +349,12 @@ pub fn refine_isolating_with<T: OrderedField>(
         let step = w.checked_div(&n).expect("N > 0");
         // The secant's zero is lo + w * f_lo / (f_lo - f_hi), in (lo, hi); its part index,
         // rounded, is i = round(N * f_lo / (f_lo - f_hi)) in [0, N].
+        // Exactly, the end values have opposite signs, so their difference is not zero; a
+        // rounding scalar can make them equal (f64 at a double root): then bisect.
         let ratio = f_lo
             .mul_ref(&n)
             .checked_div(&f_lo.sub_ref(&f_hi))
-            .expect("the end values have opposite signs");
+            .unwrap_or_else(|_| n.checked_div(&two).expect("2 != 0"));
         let i = match round(&ratio) {
             Some(i) if i < T::zero() => T::zero(),
             Some(i) if i > n => n.clone(),
