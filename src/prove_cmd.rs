@@ -18,7 +18,7 @@ use clap::Args;
 use exactcheck_exact::expr::{parse_expr, Coefficient, Expr};
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
-    counter_example, decide_fraction, decide_in, describe_conditions, real_zero_free, DecideError,
+    counter_example, decide_fraction, decide_in, real_zero_free, where_clause, DecideError,
     Decision, Domain, FractionIdentity, PointField, HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
 };
 use exactcheck_exact::ratfun::RatFun;
@@ -464,16 +464,10 @@ fn prove_over<C: PointField + Display>(
     }
     let (cleared, where_nonzero) = match &fraction {
         None => ("", String::new()),
-        Some(_) => {
-            let mut w = String::new();
-            if !excluded.is_empty() {
-                w = format!(", where {}", describe_conditions(&excluded, &vars));
-                if excluded.iter().all(|p| real_zero_free(p) == Some(true)) {
-                    w.push_str(": no real point is excluded");
-                }
-            }
-            (" with the denominators cleared", w)
-        }
+        Some(_) => (
+            " with the denominators cleared",
+            where_clause(&excluded, &vars),
+        ),
     };
     let conditions: Vec<&str> = args.relations.iter().map(String::as_str).collect();
     let modulo = if relations.is_empty() {

@@ -13,9 +13,9 @@ use exactcheck_core::Ring;
 use exactcheck_exact::expr::{parse_expr, AddOp, Coefficient, Expr, ExprKind};
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
-    counter_example, decide_fraction, decide_in, describe_conditions, random_identity_test,
-    real_zero_free, unit_circle_pairs, DecideError, Decision, Domain, FractionIdentity, PointField,
-    RandomDecision, Seed, HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
+    counter_example, decide_fraction, decide_in, random_identity_test, unit_circle_pairs,
+    where_clause, DecideError, Decision, Domain, FractionIdentity, PointField, RandomDecision,
+    Seed, HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
 };
 use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::{Radical, Rational};
@@ -499,15 +499,7 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<Outcome, Fault> {
             excluded.push(p.clone());
         }
     }
-    let where_nonzero = if excluded.is_empty() {
-        String::new()
-    } else {
-        let mut w = format!(", where {}", describe_conditions(&excluded, &vars));
-        if excluded.iter().all(|p| real_zero_free(p) == Some(true)) {
-            w.push_str(": no real point is excluded");
-        }
-        w
-    };
+    let where_nonzero = where_clause(&excluded, &vars);
     let mut doms: Vec<(Var, Domain)> = Vec::new();
     for (v, d, text) in &conditions.domains {
         let var = vars.get(v).ok_or_else(|| {

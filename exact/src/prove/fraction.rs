@@ -121,17 +121,20 @@ pub fn real_zero_free<C: PointField>(p: &Poly<C>) -> Option<bool> {
     (even && same_sign && constant && first != Some(Sign::Zero)).then_some(true)
 }
 
-/// The conditions in words: `t^2 + 1 != 0 (no real zero), x != 1`, each polynomial with what
-/// [`real_zero_free`] shows of it; a monic linear polynomial in one variable `v - c` is written
-/// `v != c`.
-pub fn describe_conditions<C: PointField + Display>(conditions: &[Poly<C>], vars: &Vars) -> String {
-    conditions
+/// The side conditions as a clause of a verdict: `""` when there are none, else
+/// `", where x != 1, t^2 + 1 != 0 (no real zero)"`, followed by `": no real point is excluded"`
+/// when no condition has a real zero. [`real_zero_free`] is decided once per condition.
+pub fn where_clause<C: PointField + Display>(conditions: &[Poly<C>], vars: &Vars) -> String {
+    if conditions.is_empty() {
+        return String::new();
+    }
+    let mut all_free = true;
+    let parts: Vec<String> = conditions
         .iter()
         .map(|p| {
-            let note = match real_zero_free(p) {
-                Some(true) => " (no real zero)",
-                _ => "",
-            };
+            let free = real_zero_free(p) == Some(true);
+            all_free &= free;
+            let note = if free { " (no real zero)" } else { "" };
             match p.variables().as_slice() {
                 [v] if p.degree_in(*v) == 1 && p.coefficient(&[(*v, 1)]).is_one() => {
                     let name = vars.name(*v).unwrap_or("?");
@@ -143,6 +146,10 @@ pub fn describe_conditions<C: PointField + Display>(conditions: &[Poly<C>], vars
                 _ => format!("{} != 0{note}", p.display(vars)),
             }
         })
-        .collect::<Vec<_>>()
-        .join(", ")
+        .collect();
+    let mut w = format!(", where {}", parts.join(", "));
+    if all_free {
+        w.push_str(": no real point is excluded");
+    }
+    w
 }

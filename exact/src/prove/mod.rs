@@ -42,7 +42,7 @@
 mod fraction;
 pub mod random;
 
-pub use fraction::{decide_fraction, describe_conditions, real_zero_free, FractionIdentity};
+pub use fraction::{decide_fraction, real_zero_free, where_clause, FractionIdentity};
 
 pub use random::{
     random_identity_test, size_bound, RandomDecision, RandomReport, Seed, SizeBound,
