@@ -44,7 +44,9 @@
 
 use crate::bernstein::{binom, Bernstein};
 use crate::bezier::{BezierCurve, RationalBezierCurve};
-use crate::roots::{common_unit_roots, multiplicity, unit_roots, IsolatedRoot, Refiner};
+use crate::roots::{
+    common_unit_roots, multiplicity, restrict, sign_at_root, unit_roots, IsolatedRoot, Refiner,
+};
 use crate::ruled::{Plane, RuledSurface};
 use crate::scalar::{Field, OrderedField, QAlgebra, Ring, Sign};
 use crate::vector::{Hom4, Vec3};
@@ -420,6 +422,36 @@ fn nonpositive_somewhere<T: OrderedField>(p: &Bernstein<T>) -> Option<bool> {
     Some(false)
 }
 
+/// The enclosure `[min a / 2 max b, max a / 2 min b]` of `a / 2b` on the interval where `a`
+/// and `b` are given by Bernstein coefficients of one degree (`a >= 0` there), `None` unless
+/// every coefficient of `b` is positive.
+fn hull_ratio<T: OrderedField>(a: &Bernstein<T>, b: &Bernstein<T>) -> Option<(T, T)> {
+    let extremes = |p: &Bernstein<T>| -> (T, T) {
+        let c = p.coeffs();
+        let (mut lo, mut hi) = (c[0].clone(), c[0].clone());
+        for x in &c[1..] {
+            if *x < lo {
+                lo = x.clone();
+            }
+            if *x > hi {
+                hi = x.clone();
+            }
+        }
+        (lo, hi)
+    };
+    let (b_lo, b_hi) = extremes(b);
+    if b_lo.sign() != Sign::Positive {
+        return None;
+    }
+    let (a_lo, a_hi) = extremes(a);
+    let a_lo = if a_lo.sign() == Sign::Negative {
+        T::zero()
+    } else {
+        a_lo
+    };
+    Some((a_lo / b_hi.add_ref(&b_hi), a_hi / b_lo.add_ref(&b_lo)))
+}
+
 impl<T: OrderedField> PhCurve<T> {
     /// The parameters of `[0, 1]` where the speed `sigma` vanishes (common zeros of `u` and `v`).
     pub fn speed_zeros(&self) -> Vec<IsolatedRoot<T>> {
@@ -547,7 +579,7 @@ impl<T: OrderedField> PhCurve<T> {
                 take(m);
             }
         }
-        let Some(mut hi) = hi else {
+        let Some(hi) = hi else {
             return Ok(None);
         };
         if self.is_min_radius(&hi, side)? {
@@ -558,42 +590,103 @@ impl<T: OrderedField> PhCurve<T> {
                 attained,
             }));
         }
-        // The minimum is at an irrational critical point. rho is flat there (rho' = 0), so rho
-        // at a parameter near the critical point is an upper bound `near_min` (f_m vanishes
-        // there) very close to the minimum: bracketing it by dyadic bisection needs comparisons
-        // only, and one exact test of the bracket's lower end usually finishes the enclosure
-        // (each exact test is a subdivision or a root isolation; plain bisection needs ~50).
-        let mut near_min: Option<T> = None;
+        // The minimum is not at an end point or an exact critical point, so it is at an
+        // irrational critical point `c` of rho with `w(c) > 0` (rho -> infinity at the zeros of
+        // w, and sigma has no zero). Each such `c` is enclosed by an isolating interval of the
+        // critical polynomial, and rho(c) by the convex hulls of the Bernstein coefficients of
+        // sigma^2 and w restricted to that interval: `[min sigma^2 / 2 max w, max sigma^2 / 2 min
+        // w]`. Refining the interval (quadratic refinement of a simple root) shrinks the
+        // enclosure to width <= tolerance / 4 after a few rounds, whatever the size of rho'':
+        // no test on the near-double zeros of sigma^2 - 2 m w is needed.
+        let two = T::from_i64(2);
+        let sigma2 = self.cusp_polynomial(&T::zero());
+        let w_up = elevate_to(&w, sigma2.degree());
+        let quarter_tol = tolerance.clone() / T::from_i64(4);
         let refiner = Refiner::new(&crit);
+        let mut enclosures: Vec<(T, T, IsolatedRoot<T>)> = Vec::new();
         for c in crit_roots.iter().filter(|c| c.exact().is_none()) {
-            let near = refiner.refine(c, tolerance).midpoint();
-            if let Some(m) = rho(&near) {
-                if near_min.as_ref().is_none_or(|b| m < *b) {
-                    near_min = Some(m);
+            if sign_at_root(&w, &crit, c) != Sign::Positive {
+                continue;
+            }
+            let mut root = c.clone();
+            loop {
+                let (a, b) = (root.lo().clone(), root.hi().clone());
+                if let IsolatedRoot::Exact(t) = &root {
+                    let m = rho(t).expect("w > 0 at the critical point");
+                    enclosures.push((m.clone(), m, root));
+                    break;
                 }
+                if let Some((l, h)) =
+                    hull_ratio(&restrict(&sigma2, &a, &b), &restrict(&w_up, &a, &b))
+                {
+                    if h.sub_ref(&l) <= quarter_tol {
+                        enclosures.push((l, h, root));
+                        break;
+                    }
+                }
+                let width = root.width() / T::from_i64(1 << 16);
+                let next = refiner.refine(&root, &width);
+                if next == root {
+                    // No progress (only an inexact scalar stops shrinking): rho at the midpoint.
+                    let m = rho(&root.midpoint()).unwrap_or_else(|| hi.clone());
+                    enclosures.push((m.clone(), m, root));
+                    break;
+                }
+                root = next;
             }
         }
+        let least_lo = enclosures
+            .iter()
+            .map(|(l, _, _)| l)
+            .min_by(|x, y| x.partial_cmp(y).unwrap_or(std::cmp::Ordering::Equal));
+        let Some(least_lo) = least_lo.cloned() else {
+            // Not reached for exact scalars (the candidates cover every minimum); an inexact
+            // scalar falls back to deciding `rho_min <= m` by bisection on m.
+            return Ok(Some(self.min_radius_by_bisection(side, tolerance, hi)));
+        };
+        let mut least_hi = hi.clone();
+        for (_, h, _) in &enclosures {
+            if *h < least_hi {
+                least_hi = h.clone();
+            }
+        }
+        // Round outwards to the dyadic grid of `[0, hi]` with a step of at most tolerance / 4
+        // (short numbers): `lo < least_lo <= rho_min <= least_hi <= hi`, and the width is at
+        // most 3/4 of the tolerance (`least_hi - least_lo <= tolerance / 4`).
+        let grid = |target: &T, strict: bool| -> (T, T) {
+            let (mut a, mut c) = (T::zero(), hi.clone());
+            while c.sub_ref(&a) > quarter_tol {
+                let mid = a.add_ref(&c) / two.clone();
+                if mid < *target || (!strict && mid == *target) {
+                    a = mid;
+                } else {
+                    c = mid;
+                }
+            }
+            (a, c)
+        };
+        let lo = grid(&least_lo, true).0;
+        let hi = if least_hi < hi {
+            grid(&least_hi, false).1
+        } else {
+            hi
+        };
+        let attained = enclosures
+            .into_iter()
+            .filter(|(l, _, _)| *l <= hi)
+            .map(|(_, _, root)| root)
+            .collect();
+        Ok(Some(MinRadius {
+            value: RadiusBound::Within(lo, hi),
+            attained,
+        }))
+    }
+
+    /// The enclosure `(lo, hi]` of the smallest radius on `side` by bisection on `m` with the
+    /// exact test [`PhCurve::reaches`], from the upper bound `hi`.
+    fn min_radius_by_bisection(&self, side: Side, tolerance: &T, mut hi: T) -> MinRadius<T> {
         let two = T::from_i64(2);
         let mut lo = T::zero();
-        if let Some(b) = &near_min {
-            // Bracket near_min by dyadic bisection (comparisons only), then one exact test of
-            // the lower end: almost always it is below the minimum and the enclosure is done.
-            let (mut a, mut c) = (lo.clone(), hi.clone());
-            while c.sub_ref(&a) > *tolerance {
-                let mid = a.add_ref(&c) / two.clone();
-                if mid >= *b {
-                    c = mid;
-                } else {
-                    a = mid;
-                }
-            }
-            hi = c;
-            if self.reaches(&a, side) {
-                hi = a;
-            } else {
-                lo = a;
-            }
-        }
         while hi.sub_ref(&lo) > *tolerance {
             let mid = lo.add_ref(&hi) / two.clone();
             if self.reaches(&mid, side) {
@@ -604,10 +697,10 @@ impl<T: OrderedField> PhCurve<T> {
         }
         let f = self.cusp_polynomial(&side_sign(side, hi.clone()));
         let attained = unit_roots(&f).expect("not zero");
-        Ok(Some(MinRadius {
+        MinRadius {
             value: RadiusBound::Within(lo, hi),
             attained,
-        }))
+        }
     }
 }
 

@@ -577,14 +577,22 @@ pub fn sign_at_root<T: OrderedField>(
     }
     let refiner = Refiner::new(p);
     let two = T::one() + T::one();
+    // The interval shrinks by a factor that squares after every undecided round (2, 4, 16,
+    // 256, 65536, then 2^32 each round): a sign decided early costs few refinements, a value
+    // close to zero needs few rounds however small it is.
+    let mut factor = two.clone();
+    let cap = T::from_i64(1 << 32);
     loop {
         let piece = restrict(g, &lo, &hi);
         let first = piece.coeffs()[0].sign();
         if first != Sign::Zero && piece.coeffs().iter().all(|c| c.sign() == first) {
             return first;
         }
-        let half = hi.sub_ref(&lo) / two.clone();
-        match refiner.refine(&IsolatedRoot::Between(lo.clone(), hi.clone()), &half) {
+        let target = hi.sub_ref(&lo) / factor.clone();
+        if factor < cap {
+            factor = factor.mul_ref(&factor);
+        }
+        match refiner.refine(&IsolatedRoot::Between(lo.clone(), hi.clone()), &target) {
             IsolatedRoot::Exact(t) => return g.eval(&t).sign(),
             IsolatedRoot::Between(a, b) => {
                 if a == lo && b == hi {

@@ -23,10 +23,11 @@
 //! `R(t) = Res_s(F, G)`, the Sylvester resultant with respect to `s` (formal degrees), vanishes at
 //! every `t` for which `F(., t)` and `G(., t)` have a common root, so the `t` of every solution is
 //! a root of `R`, and by the symmetry of `F` and `G` so is its `s`. `R` is computed exactly by
-//! evaluation and interpolation: `F` and `G` scaled to integer coefficients, the Sylvester
-//! determinant at the `N + 1` integers `t` centred on 0 (Bareiss' fraction-free elimination),
-//! `N` the degree bound `deg_s(G) deg_t(F) + deg_s(F) deg_t(G)` of the determinant, then Newton
-//! interpolation and the scale divided out. If `R` vanishes identically, `F` and `G` share a
+//! evaluation and interpolation modulo word-size primes and the Chinese remainder theorem
+//! (`resultant`): `F` and `G` scaled to integer coefficients, the Sylvester determinant at
+//! `N + 1` points, `N` the degree bound `deg_s(G) deg_t(F) + deg_s(F) deg_t(G)` of the
+//! determinant, interpolated modulo each prime until the product of the primes exceeds twice a
+//! bound on the coefficients, then the scale divided out. If `R` vanishes identically, `F` and `G` share a
 //! factor of positive degree in `s` (the curve lies on a line, or the parametrization is not
 //! proper, or it retraces itself): the solution set may be a curve, and the error
 //! [`PlanarError::CommonComponent`] says so rather than deciding.
@@ -102,8 +103,11 @@ use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Zero};
 
+mod resultant;
 #[cfg(test)]
 mod tests;
+
+use resultant::resultant_s;
 
 /// How much work [`self_intersections`] may spend on one candidate pair before it gives up.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -885,111 +889,6 @@ fn edge_sign(p: &UPoly, lo: &Rational, hi: &Rational) -> Option<Sign> {
 }
 
 // ------------------------------------------------------------------------------ resultant
-
-/// `Res_s(f, g)` as a polynomial in `t`, by evaluation of the Sylvester determinant at the
-/// integers `t` in `[-N/2, N - N/2]` (centred, to keep the values small) and Newton
-/// interpolation (module documentation). The polynomials are scaled to integer coefficients
-/// first (`c_f f`, `c_g g`), so every determinant is of an integer matrix and is computed
-/// fraction-free (Bareiss); the result is divided by `c_f^n c_g^m` at the end.
-fn resultant_s(f: &Dense, g: &Dense) -> UPoly {
-    if f.is_zero() || g.is_zero() {
-        return UPoly::zero();
-    }
-    let (m, n) = (f.deg_s(), g.deg_s());
-    let bound = n * f.deg_t() + m * g.deg_t();
-    let (cf, fi) = f.to_integer();
-    let (cg, gi) = g.to_integer();
-    let low = -((bound / 2) as i64);
-    let nodes: Vec<BigInt> = (0..=bound as i64).map(|k| BigInt::from(low + k)).collect();
-    let values: Vec<Rational> = nodes
-        .iter()
-        .map(|t0| {
-            let at = |p: &[Vec<BigInt>]| -> Vec<BigInt> {
-                p.iter()
-                    .map(|row| row.iter().rev().fold(BigInt::zero(), |acc, a| acc * t0 + a))
-                    .collect()
-            };
-            Rational::from(sylvester_det(&at(&fi), &at(&gi)))
-        })
-        .collect();
-    let nodes: Vec<Rational> = nodes.into_iter().map(Rational::from).collect();
-    let scale = (0..n).fold(Rational::ONE, |acc, _| acc * &cf)
-        * (0..m).fold(Rational::ONE, |acc, _| acc * &cg);
-    newton_interpolate(&nodes, values).scale(&scale.recip().expect("scales are not zero"))
-}
-
-/// The determinant of the Sylvester matrix of `sum f_i s^i` and `sum g_i s^i` with the formal
-/// degrees `f.len() - 1`, `g.len() - 1` (integer entries).
-fn sylvester_det(f: &[BigInt], g: &[BigInt]) -> BigInt {
-    let (m, n) = (f.len() - 1, g.len() - 1);
-    let size = m + n;
-    let mut a = vec![vec![BigInt::zero(); size]; size];
-    for r in 0..n {
-        for (k, c) in f.iter().rev().enumerate() {
-            a[r][r + k] = c.clone();
-        }
-    }
-    for r in 0..m {
-        for (k, c) in g.iter().rev().enumerate() {
-            a[n + r][r + k] = c.clone();
-        }
-    }
-    bareiss(a)
-}
-
-/// The determinant of an integer matrix by Bareiss' fraction-free elimination: after step `k`
-/// every entry is a `(k+1) x (k+1)` minor, so the division by the previous pivot is exact.
-fn bareiss(mut a: Vec<Vec<BigInt>>) -> BigInt {
-    let size = a.len();
-    if size == 0 {
-        return BigInt::one();
-    }
-    let mut negate = false;
-    let mut prev = BigInt::one();
-    for k in 0..size - 1 {
-        if a[k][k].is_zero() {
-            let Some(p) = (k + 1..size).find(|&r| !a[r][k].is_zero()) else {
-                return BigInt::zero();
-            };
-            a.swap(p, k);
-            negate = !negate;
-        }
-        let (top, bottom) = a.split_at_mut(k + 1);
-        let pivot_row = &top[k];
-        for row in bottom.iter_mut() {
-            for j in k + 1..size {
-                let v = &row[j] * &pivot_row[k] - &row[k] * &pivot_row[j];
-                row[j] = v / &prev;
-            }
-            row[k] = BigInt::zero();
-        }
-        prev = pivot_row[k].clone();
-    }
-    let det = a[size - 1][size - 1].clone();
-    if negate {
-        -det
-    } else {
-        det
-    }
-}
-
-/// The polynomial of degree `< nodes.len()` through `(nodes[k], values[k])`.
-fn newton_interpolate(nodes: &[Rational], mut dd: Vec<Rational>) -> UPoly {
-    let n = nodes.len();
-    for level in 1..n {
-        for k in (level..n).rev() {
-            let num = dd[k].sub_ref(&dd[k - 1]);
-            let den = nodes[k].sub_ref(&nodes[k - level]);
-            dd[k] = num / &den;
-        }
-    }
-    let mut acc = UPoly::zero();
-    for k in (0..n).rev() {
-        acc = acc * UPoly::from_coeffs(vec![-nodes[k].clone(), Rational::ONE])
-            + UPoly::constant(dd[k].clone());
-    }
-    acc
-}
 
 // ------------------------------------------------------------------------------ the search
 

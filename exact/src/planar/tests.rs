@@ -308,6 +308,7 @@ fn integer_descartes_isolation_agrees_with_the_rational_counts() {
 
 #[test]
 fn bareiss_determinants() {
+    use super::resultant::bareiss;
     let m = |rows: &[&[i64]]| -> Vec<Vec<BigInt>> {
         rows.iter()
             .map(|r| r.iter().map(|&v| BigInt::from(v)).collect())
@@ -321,4 +322,34 @@ fn bareiss_determinants() {
     assert_eq!(bareiss(m(&[&[2, 4], &[1, 2]])), BigInt::zero());
     assert_eq!(bareiss(m(&[&[5]])), BigInt::from(5));
     assert_eq!(bareiss(Vec::new()), BigInt::one());
+}
+
+#[test]
+fn modular_resultant_agrees_with_bareiss_on_random_offsets() {
+    use super::resultant::resultant_s_bareiss;
+    let mut rng = exactcheck_core::Rng::new(7);
+    for round in 0..12 {
+        let deg = 1 + round % 4;
+        let digits = 1 + 10 * (round % 3) as u32;
+        let big = BigInt::from(10).pow(digits);
+        let mut r = |n: usize| -> UPoly {
+            UPoly::from_coeffs(
+                (0..=n)
+                    .map(|_| {
+                        let x = BigInt::from(rng.below(2_000_001) as i64 - 1_000_000) * &big
+                            + BigInt::from(rng.below(2001) as i64 - 1000);
+                        Rational::from(x) / Rational::from(BigInt::from(1 + rng.below(7)))
+                    })
+                    .collect(),
+            )
+        };
+        let (x, y, w) = (r(deg + 1), r(deg + 1), r(deg));
+        let f = Dense::divided_difference(&x, &w);
+        let g = Dense::divided_difference(&y, &w);
+        assert_eq!(
+            resultant_s(&f, &g),
+            resultant_s_bareiss(&f, &g),
+            "round {round}"
+        );
+    }
 }
