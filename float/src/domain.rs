@@ -200,6 +200,14 @@ impl InputGen for Domain {
             .collect()
     }
 
+    fn contains(&self, x: &[f64]) -> bool {
+        x.len() == self.draws.len()
+            && x.iter().zip(&self.draws).all(|(&v, d)| match *d {
+                Draw::Uniform { lo, hi } => lo <= v && v <= hi,
+                Draw::Ordinal { lo, hi } => v.is_finite() && (lo..=hi).contains(&ordinal(v)),
+            })
+    }
+
     fn describe(&self) -> String {
         let parts: Vec<String> = self
             .intervals

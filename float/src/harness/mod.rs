@@ -45,8 +45,10 @@
 //! when the inputs become strictly simpler — fewer significant bits in total, then binary
 //! exponents closer to 0, then fewer negative signs — and the case stays bad: its error is at
 //! least [`Options::shrink_fraction`] of the original error (or stays infinite when that was
-//! infinite), with the exact side still defined. Passes repeat until nothing changes or the
-//! evaluation budget ([`Options::shrink_budget`]) is spent.
+//! infinite), with the exact side still defined and the inputs still inside the set the
+//! generator samples ([`InputGen::contains`]: the box, the `--domain`, the interval bounds of an
+//! FPCore `:pre`; the rest of a `:pre` is the exact side's domain). Passes repeat until nothing
+//! changes or the evaluation budget ([`Options::shrink_budget`]) is spent.
 //!
 //! # Formulas must not panic
 //! The exact scalars' `/` operator panics on a zero divisor (as `BigRational`'s does). Formulas
@@ -706,7 +708,7 @@ pub fn run(
         .map(|(index, inputs, ev)| {
             let original = ev.to_case(&inputs);
             let (shrunk, steps, evaluations) = if options.shrink && ev.max_ulps > 0.0 {
-                let s = shrink::shrink(subject, index, &inputs, &ev, options)
+                let s = shrink::shrink(subject, gen, index, &inputs, &ev, options)
                     .map_err(|e| RegressError::FloatSide(e.0))?;
                 (Some(s.ev.to_case(&s.inputs)), s.steps, s.evaluations)
             } else {
