@@ -33,8 +33,12 @@
 //! medians.
 //!
 //! Each sample's error is also measured as Herbie does: `log2(1 + n)` bits for `n` doubles
-//! between the float result and the correctly rounded exact one (64 for a float failure), the
-//! largest over the outputs; the report gives the mean and the maximum.
+//! between the float result and the correctly rounded exact one, the largest over the outputs;
+//! the report gives the mean and the maximum. As in Herbie, the infinities are the doubles just
+//! past `±f64::MAX` in this count: an overflow to `+inf` where the exact value rounds to `+inf`
+//! is 0 bits (though a float failure in ulps, see above), `+inf` where it rounds to a finite
+//! double is the ordinal distance between them. A NaN, a zero divisor or a missing output is 64
+//! bits.
 //!
 //! # Shrinking
 //! A kept worst case is simplified greedily and deterministically: passes over the inputs try,
@@ -411,7 +415,10 @@ fn compare(exact: Vec<ExactValue>, float: Option<Vec<f64>>) -> Evaluated {
     };
     let mut ulps = Vec::with_capacity(exact.len());
     let mut rel = Vec::with_capacity(exact.len());
-    let mut bits: f64 = 0.0;
+    let mut bits: f64 = match &float {
+        Some(f) if f.len() == exact.len() => 0.0,
+        _ => 64.0,
+    };
     for (i, q) in exact.iter().enumerate() {
         match float.as_ref().and_then(|f| f.get(i)) {
             Some(&a) => {
@@ -432,7 +439,7 @@ fn compare(exact: Vec<ExactValue>, float: Option<Vec<f64>>) -> Evaluated {
     Evaluated {
         max_ulps: if failure { f64::INFINITY } else { max_ulps },
         max_rel: if failure { f64::INFINITY } else { max_rel },
-        bits: if failure { 64.0 } else { bits },
+        bits,
         exact,
         float,
         ulps,
