@@ -13,6 +13,10 @@
 //!   median sample has a binary exponent near the middle of the exponent range (about 2^0),
 //!   not near 1e308 as uniform-on-the-reals sampling would give.
 //!
+//! [`Domain::with_sampling`] makes one rule apply to every coordinate ([`Sampling`]): all
+//! uniform over the doubles of their ranges, bounded ones too (as Herbie samples every input),
+//! or all uniform on the reals (every range then needs both bounds).
+//!
 //! # Exact bounds
 //! Bounds are rationals. The sampled range of a coordinate is from the smallest double that
 //! satisfies the lower bound (rounding `1/3` up; for an open bound, strictly above it) to the
@@ -82,6 +86,18 @@ fn highest_double(b: &Bound) -> Option<f64> {
         Bound::Open(q) => Bound::Open(-q.clone()),
     };
     lowest_double(&neg(b)).map(|d| -d)
+}
+
+/// Which distribution the coordinates are drawn from (see the module doc).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Sampling {
+    /// Uniform on the reals where both bounds are given, over the doubles otherwise.
+    #[default]
+    Mixed,
+    /// Every coordinate uniform on the reals of its range (both bounds needed).
+    Reals,
+    /// Every coordinate uniform over the doubles of its range, as Herbie samples.
+    Floats,
 }
 
 /// How one coordinate is drawn.
@@ -174,6 +190,37 @@ impl Domain {
         Ok(self)
     }
 
+    /// The same domain drawn by `sampling` ([`Sampling::Mixed`] is how [`Domain::named`]
+    /// draws).
+    ///
+    /// # Errors
+    /// [`Sampling::Reals`] with a range that lacks a bound, naming the input.
+    pub fn with_sampling(mut self, sampling: Sampling) -> Result<Domain, GenError> {
+        for (i, (iv, draw)) in self.intervals.iter().zip(&mut self.draws).enumerate() {
+            let bounded = iv.lo != Bound::Unbounded && iv.hi != Bound::Unbounded;
+            let (lo, hi) = match *draw {
+                Draw::Uniform { lo, hi } => (lo, hi),
+                Draw::Ordinal { lo, hi } => (from_ordinal(lo), from_ordinal(hi)),
+            };
+            *draw = match sampling {
+                Sampling::Mixed if bounded => Draw::Uniform { lo, hi },
+                Sampling::Reals if bounded => Draw::Uniform { lo, hi },
+                Sampling::Reals => {
+                    return Err(GenError(format!(
+                        "input {i} ({}) in {} has no uniform distribution on the reals: give both bounds, or sample the doubles",
+                        self.names[i],
+                        show_interval(iv)
+                    )))
+                }
+                Sampling::Mixed | Sampling::Floats => Draw::Ordinal {
+                    lo: ordinal(lo),
+                    hi: ordinal(hi),
+                },
+            };
+        }
+        Ok(self)
+    }
+
     /// The intervals, one per input.
     pub fn intervals(&self) -> &[Interval] {
         &self.intervals
@@ -200,12 +247,21 @@ impl InputGen for Domain {
             .collect()
     }
 
+    fn contains(&self, x: &[f64]) -> bool {
+        x.len() == self.draws.len()
+            && x.iter().zip(&self.draws).all(|(&v, d)| match *d {
+                Draw::Uniform { lo, hi } => lo <= v && v <= hi,
+                Draw::Ordinal { lo, hi } => v.is_finite() && (lo..=hi).contains(&ordinal(v)),
+            })
+    }
+
     fn describe(&self) -> String {
         let parts: Vec<String> = self
             .intervals
             .iter()
             .zip(&self.names)
-            .map(|(iv, name)| match (&iv.lo, &iv.hi) {
+            .zip(&self.draws)
+            .map(|((iv, name), draw)| match (&iv.lo, &iv.hi) {
                 (Bound::Unbounded, Bound::Unbounded) => format!("{name} in all finite doubles"),
                 (lo, Bound::Unbounded) => format!(
                     "{name} in doubles {} {}",
@@ -225,7 +281,12 @@ impl InputGen for Domain {
                     },
                     show_value(hi.value().expect("bounded"))
                 ),
-                _ => format!("{name} in {} (uniform)", show_interval(iv)),
+                _ => match draw {
+                    Draw::Uniform { .. } => format!("{name} in {} (uniform)", show_interval(iv)),
+                    Draw::Ordinal { .. } => {
+                        format!("{name} in {} (uniform over the doubles)", show_interval(iv))
+                    }
+                },
             })
             .collect();
         if parts.is_empty() {
@@ -690,5 +751,53 @@ mod tests {
             assert!(e.contains(want), "{text}: {e}");
             assert!(!e.contains('\n'));
         }
+    }
+
+    #[test]
+    fn sampling_floats_or_reals_applies_to_every_coordinate() {
+        let names = names(&["x", "y"]);
+        let base = || {
+            Domain::named(
+                vec![iv(cl(1), cl(1 << 20)), iv(cl(0), Bound::Unbounded)],
+                &names,
+            )
+            .expect("non-empty")
+        };
+        let below_2_10 = |d: &Domain| {
+            let mut rng = Rng::new(9);
+            let n = 20_000;
+            let k = (0..n)
+                .filter(|_| {
+                    let s = d.sample(&mut rng);
+                    assert!(d.contains(&s), "{s:?}");
+                    s[0] < 1024.0
+                })
+                .count();
+            k as f64 / n as f64
+        };
+        // Over the doubles each binade of [1, 2^20] is as likely: half the samples below 2^10;
+        // on the reals about 2^-10 of them.
+        let floats = base().with_sampling(Sampling::Floats).expect("valid");
+        assert!((below_2_10(&floats) - 0.5).abs() < 0.02);
+        assert!(below_2_10(&base()) < 0.01);
+        assert_eq!(
+            floats.describe(),
+            "x in [1, 1.048576e6] (uniform over the doubles), y in doubles >= 0"
+        );
+        assert_eq!(
+            base().with_sampling(Sampling::Mixed).expect("valid"),
+            base()
+        );
+        let e = base()
+            .with_sampling(Sampling::Reals)
+            .expect_err("y has no upper bound");
+        assert!(e.to_string().contains("input 1 (y)"), "{e}");
+        let reals = Domain::named(vec![iv(cl(1), cl(2)), iv(cl(-3), cl(3))], &names)
+            .and_then(|d| d.with_sampling(Sampling::Reals))
+            .expect("both bounded");
+        assert_eq!(
+            reals.describe(),
+            "x in [1, 2] (uniform), y in [-3, 3] (uniform)"
+        );
     }
 }

@@ -41,7 +41,7 @@ pub use convert::{
     binary_exponent, f64_to_rational, pow2, rational_to_f64, rel_error, round_to_bits,
     significant_bits, ulp, ulps_error,
 };
-pub use domain::{parse_domain, Bound, Domain, Interval};
+pub use domain::{parse_domain, Bound, Domain, Interval, Sampling};
 pub use exactcheck_core::rng::{self, Rng};
 pub use gen::{Diagonal, Fixed, GenError, InputGen, LogUniform, NearDegenerate, UniformBox};
 pub use harness::{

@@ -43,7 +43,8 @@ pub struct Case {
     /// The largest relative error over the outputs (infinite for a float failure).
     #[serde(with = "measure")]
     pub rel: f64,
-    /// Herbie's bits of error, the largest over the outputs (64 for a float failure).
+    /// Herbie's bits of error, the largest over the outputs (an infinity counted by its ordinal
+    /// distance as in Herbie; 64 for a NaN, a zero divisor or a missing output).
     #[serde(with = "measure")]
     pub bits: f64,
     /// Whether the float side failed: a zero divisor, a NaN or infinite output, or a different
@@ -147,8 +148,9 @@ pub struct Report {
     #[serde(with = "measure")]
     pub median_rel: f64,
     /// The mean of Herbie's bits of error (`log2(1 + n)`, `n` the doubles between the float
-    /// result and the correctly rounded exact value; 64 for a float failure), as Herbie reports
-    /// a benchmark's error.
+    /// result and the correctly rounded exact value, the infinities counted as the doubles past
+    /// `±f64::MAX`; 64 for a NaN, a zero divisor or a missing output), as Herbie reports a
+    /// benchmark's error.
     #[serde(with = "measure")]
     pub bits_of_error: f64,
     /// The largest bits of error.

@@ -309,3 +309,101 @@ fn fixed_point_regression() {
     assert_eq!(report.worst[0].original.float_outputs, Some(vec![0.0]));
     assert_eq!(report.max_rel, 1.0);
 }
+
+/// A shrunk worst case stays inside the sampled domain: `(x + y) - x` on
+/// `x in [1000, 1010], y in [1e-3, 2e-3]` loses the most bits at the largest `x`, and the
+/// simpler `x = 512` (or `y = 2^-9`) would be as bad, but outside the domain.
+#[test]
+fn shrunk_cases_stay_in_the_domain() {
+    let names = vec!["x".to_string(), "y".to_string()];
+    let dom = exactcheck_float::Domain::named(
+        exactcheck_float::parse_domain("x in [1000, 1010], y in [1e-3, 2e-3]", &names)
+            .expect("valid"),
+        &names,
+    )
+    .expect("valid");
+    let report =
+        regress::<PlainRational>(&AddSub, &dom, 3000, 1, &Options::default()).expect("runs");
+    assert!(report.max_ulps > 1e3, "{report}");
+    assert_eq!(report.worst.len(), 5);
+    let mut shrunk_some = false;
+    for w in &report.worst {
+        let s = w.shrunk.as_ref().expect("shrunk");
+        let [x, y] = s.inputs[..] else {
+            panic!("two inputs: {w}")
+        };
+        assert!((1000.0..=1010.0).contains(&x), "{w}");
+        assert!((1e-3..=2e-3).contains(&y), "{w}");
+        assert!(dom.contains(&s.inputs));
+        shrunk_some |= w.shrink_steps > 0;
+    }
+    // Shrinking still simplifies within the domain.
+    assert!(shrunk_some, "{report}");
+}
+
+#[test]
+fn generators_contain_what_they_sample() {
+    let mut rng = Rng::new(5);
+    let gens: Vec<Box<dyn InputGen>> = vec![
+        Box::new(UniformBox::new(vec![-1.0, 3.0], vec![1.0, 4.0]).expect("valid")),
+        Box::new(LogUniform::new(2, -20, 20).expect("valid")),
+        Box::new(LogUniform::new(2, -1074, 1023).expect("valid").positive()),
+        Box::new(Diagonal::new(2, -5.0, 5.0).expect("valid")),
+        Box::new(Fixed::new(vec![1.5, -2.0]).expect("valid")),
+    ];
+    for g in &gens {
+        for _ in 0..2000 {
+            let x = g.sample(&mut rng);
+            assert!(g.contains(&x), "{}: {x:?}", g.describe());
+        }
+        // Not the wrong arity, and not something far away.
+        assert!(!g.contains(&[1.5]), "{}", g.describe());
+        assert!(!g.contains(&[1e300, -1e-300]), "{}", g.describe());
+    }
+    assert!(!gens[1].contains(&[0.0, 1.0]));
+    assert!(!gens[2].contains(&[-1.0, 1.0]));
+    assert!(!gens[3].contains(&[1.0, 2.0]));
+}
+
+/// `x * y`, with a float side that answers `+inf` for `x * y` at or above `f64::MAX` and NaN
+/// for `x = 0`.
+struct Overflowing;
+
+impl Formula for Overflowing {
+    fn name(&self) -> String {
+        "x * y".into()
+    }
+    fn arity(&self) -> usize {
+        2
+    }
+    fn eval<T: OrderedField>(&self, x: &[T]) -> Result<Vec<T>, ZeroDivisor> {
+        Ok(vec![x[0].mul_ref(&x[1])])
+    }
+    fn eval_f64(&self, x: &[f64]) -> Result<Vec<f64>, ZeroDivisor> {
+        let p = x[0] * x[1];
+        Ok(vec![if x[0] == 0.0 {
+            f64::NAN
+        } else if p >= f64::MAX {
+            f64::INFINITY
+        } else {
+            p
+        }])
+    }
+}
+
+/// Herbie's bits count the infinities as the doubles past `±f64::MAX`: a correctly rounded
+/// overflow is 0 bits, `+inf` for `f64::MAX` is one double off; a NaN is 64. In ulps both
+/// infinities stay float failures.
+#[test]
+fn infinities_count_by_ordinal_distance_in_bits() {
+    let case = check::<PlainRational>(&Overflowing, &[1e200, 1e200]).expect("defined");
+    assert!(case.float_failure && case.ulps.is_infinite());
+    assert_eq!(case.bits, 0.0, "{case:?}");
+    let case = check::<PlainRational>(&Overflowing, &[f64::MAX, 1.0]).expect("defined");
+    assert!(case.float_failure);
+    assert_eq!(case.bits, 1.0, "{case:?}");
+    let case = check::<PlainRational>(&Overflowing, &[0.0, 1.0]).expect("defined");
+    assert_eq!(case.bits, 64.0, "{case:?}");
+    let case = check::<PlainRational>(&Overflowing, &[3.0, 0.5]).expect("defined");
+    assert_eq!((case.bits, case.float_failure), (0.0, false));
+}

@@ -61,6 +61,11 @@ pub struct RegressArgs {
     /// finite: uniform on the reals; a missing or infinite bound: uniform over the doubles.
     #[arg(long, requires = "formula")]
     pub domain: Option<String>,
+    /// How --formula and --fpcore inputs are drawn: `floats` uniform over the doubles of every
+    /// range (as Herbie samples), `reals` uniform on the reals (every range bounded). Default:
+    /// uniform on the reals where both bounds are finite, over the doubles otherwise.
+    #[arg(long, value_enum, value_name = "reals|floats")]
+    pub sample: Option<SampleChoice>,
     /// An FPCore file: every benchmark in it (or the one --name chooses) is regressed.
     #[arg(long, value_name = "FILE", conflicts_with = "kernel")]
     pub fpcore: Option<String>,
@@ -118,6 +123,25 @@ impl RegressArgs {
             .shard
             .map_or(self.samples, |s| s.range(self.samples).len());
         sweep::Progress::new(total, label, self.quiet || self.json)
+    }
+}
+
+/// `--sample`: the distribution of the inputs of --formula and --fpcore.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum SampleChoice {
+    /// Uniform on the reals of each range (both bounds needed).
+    Reals,
+    /// Uniform over the doubles of each range, as Herbie samples.
+    Floats,
+}
+
+impl SampleChoice {
+    /// The generator's rule.
+    pub fn sampling(self) -> exactcheck_float::Sampling {
+        match self {
+            SampleChoice::Reals => exactcheck_float::Sampling::Reals,
+            SampleChoice::Floats => exactcheck_float::Sampling::Floats,
+        }
     }
 }
 
@@ -357,6 +381,12 @@ pub fn run(args: &RegressArgs) -> Result<ExitCode, Error> {
     if args.program.is_some() {
         return Err(Error::Usage(
             "--program is the float side of --formula or --fpcore, not of a built-in kernel".into(),
+        ));
+    }
+    if args.sample.is_some() {
+        return Err(Error::Usage(
+            "--sample applies to --formula and --fpcore; a built-in kernel has its own generator"
+                .into(),
         ));
     }
     if args.shard.is_some() && matches!(kernel, Kernel::PlanePlane | Kernel::RuledPlane) {

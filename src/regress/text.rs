@@ -13,7 +13,7 @@ use crate::Error;
 use exactcheck_exact::program::fpcore;
 use exactcheck_exact::program::{ExactStop, Program};
 use exactcheck_exact::Rational;
-use exactcheck_float::domain::{parse_domain, Domain};
+use exactcheck_float::domain::{parse_domain, Domain, Sampling};
 use exactcheck_float::program::ProgramRunner;
 use exactcheck_float::{
     CaseError, ExactScalar, ExactValue, FloatSideError, InputGen, Options, Subject,
@@ -141,6 +141,12 @@ impl Subject for TextSubject<'_> {
     }
 }
 
+/// The sampling rule of `--sample` (the mixed default without it).
+fn sampling(args: &RegressArgs) -> Sampling {
+    args.sample
+        .map_or(Sampling::Mixed, super::SampleChoice::sampling)
+}
+
 /// The harness options of a run.
 fn options(args: &RegressArgs) -> Options {
     Options {
@@ -188,6 +194,7 @@ pub fn formula_entries(args: &RegressArgs, text: &str) -> Result<Vec<Entry>, Err
     let domain = parse_domain(args.domain.as_deref().unwrap_or(""), &program.inputs)
         .map_err(|e| Error::Input(format!("--domain: {e}")))?;
     let gen = Domain::named(domain, &program.inputs)
+        .and_then(|d| d.with_sampling(sampling(args)))
         .map_err(|e| Error::Input(format!("--domain: {e}")))?;
     Ok(vec![sweep_entry(args, &program, &gen, None)?])
 }
@@ -240,7 +247,9 @@ pub fn fpcore_entries(args: &RegressArgs, path: &str) -> Result<Vec<Entry>, Erro
             Ok(program) => {
                 let mut program = program.clone();
                 program.name = name.clone();
-                match Domain::named(b.domain.clone(), &b.args) {
+                match Domain::named(b.domain.clone(), &b.args)
+                    .and_then(|d| d.with_sampling(sampling(args)))
+                {
                     Err(e) => Entry {
                         name,
                         line: Some(b.line),

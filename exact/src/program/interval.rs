@@ -382,12 +382,13 @@ impl Iv {
         Dy::cmp(&self.lo, &self.hi) == Ordering::Equal
     }
 
-    /// Whether the midpoint meets the accuracy contract: its distance to any point of the
-    /// enclosure is at most `2^-rel` times the smallest magnitude in it (for an enclosure of one
-    /// sign), or at most `2^-abs`. Checked with an upper bound of the width, so "true" is sure.
-    pub(crate) fn narrow(&self, rel: u32, abs: u32) -> bool {
+    /// Whether the midpoint meets the relative accuracy contract: the enclosure has one sign
+    /// and the midpoint's distance to any point of it is at most `2^-rel` times the smallest
+    /// magnitude in it (a point always does). Checked with an upper bound of the width, so
+    /// "true" is sure.
+    pub(crate) fn narrow(&self, rel: u32) -> bool {
         let w = Dy::add(&self.hi, &self.lo.neg(), 64, Dir::Up);
-        if w.is_zero() || w.top() <= -i64::from(abs) {
+        if w.is_zero() {
             return true;
         }
         let smallest = match self.sign() {

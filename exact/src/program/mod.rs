@@ -17,7 +17,7 @@
 //! * `walk`: the one tree walk, generic over the arithmetic (a `Domain`);
 //! * `float`: the IEEE double side ([`Program::eval_f64`], [`Program::eval_f64_into`]);
 //! * `real`: the exact side ([`Program::eval_exact`], [`Reference`], [`ExactStop`], the accuracy
-//!   contract [`REL_BITS`]/[`ABS_BITS`] and the precision schedule [`START_PRECISION`] to
+//!   contract [`REL_BITS`] and the precision schedule [`START_PRECISION`] to
 //!   [`MAX_PRECISION`]), with `interval`, its dyadic interval arithmetic.
 use crate::rational::Rational;
 
@@ -32,7 +32,7 @@ mod walk;
 
 pub use compile::CompileError;
 pub use float::{pow_f64, STACK_SLOTS};
-pub use real::{ExactStop, Reference, ABS_BITS, MAX_PRECISION, REL_BITS, START_PRECISION};
+pub use real::{ExactStop, Reference, MAX_PRECISION, REL_BITS, START_PRECISION};
 
 /// How an integer power is evaluated on the float side.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

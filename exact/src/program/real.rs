@@ -3,10 +3,15 @@
 //!
 //! # Contract
 //! * `exact == true`: `value` **is** the true value.
-//! * `exact == false`: `|value - true| <= 2^-REL_BITS * |true|` or
-//!   `|value - true| <= 2^-ABS_BITS` ([`REL_BITS`] = 80, [`ABS_BITS`] = 1280). That is enough to
-//!   give the error of a double in ulps to far better than `2^-10` ulps and the correctly rounded
-//!   double of the true value, subnormals included (the smallest subnormal is `2^-1074`).
+//! * `exact == false`: the true value is not zero, `|value - true| <= 2^-REL_BITS * |true|`
+//!   ([`REL_BITS`] = 80) and `value` rounds to the same double as the true value (round to
+//!   nearest, ties to even). That gives the error of a double in ulps to far better than
+//!   `2^-10` ulps, the relative error to `2^-80` of itself, and the correctly rounded double of
+//!   the true value, at any magnitude: a value of `1e-463` is refined relatively like one of 1.
+//!   The correct rounding is decided, never assumed: an enclosure that contains the midpoint of
+//!   two doubles (a tie: a dyadic number, which an irrational value never is) is refined until
+//!   it lies on one side, and a value exactly at the midpoint is recognised by the exact zero
+//!   test below (then it is rational and exact).
 //! * [`ExactStop::OutsideDomain`]: exact division by zero, the exact square root of a negative
 //!   number, exact `0^n` with `n < 0`, or a precondition that is exactly false.
 //! * [`ExactStop::Undecided`]: a decision (a comparison of an `if` or of the precondition, the
@@ -29,11 +34,13 @@
 //!    rational operands join it as enclosures of themselves. An operation that needs a decision
 //!    the enclosure cannot give (a divisor or a root's argument straddling zero, a comparison of
 //!    overlapping enclosures) stops the pass, as does an output enclosure not narrow enough for
-//!    the contract; the sample is then evaluated again from the start at `2p` bits, from
-//!    [`START_PRECISION`] up to [`MAX_PRECISION`].
+//!    the contract (not of one sign, not within `2^-REL_BITS` relative, or its ends rounding to
+//!    different doubles); the sample is then evaluated again from the start at `2p` bits, from
+//!    [`START_PRECISION`] up to [`MAX_PRECISION`] (the bound on the work of one sample: a value
+//!    that cancels more than about `MAX_PRECISION` bits is `Undecided`).
 //! 3. **Exact zero test**: intervals can never prove that a quantity is zero. The first time a
-//!    pass is stopped by an undecidable decision (or by an output enclosure around zero), the
-//!    whole program is evaluated in the multi-quadratic field [`crate::Radical`] (exact sums of
+//!    pass is stopped by an undecidable decision (or by an output enclosure around zero or
+//!    around a rounding boundary of the doubles), the whole program is evaluated in the multi-quadratic field [`crate::Radical`] (exact sums of
 //!    `c sqrt(m)`, whose sign is decidable and whose square roots denest or fail): if every
 //!    root is representable there, every decision is exact and each output is either rational
 //!    (exact) or an irrational radical, refined with intervals until it meets the contract.
@@ -53,12 +60,8 @@ use num_bigint::BigInt;
 use num_rational::BigRational;
 use std::cmp::Ordering;
 
-/// Relative accuracy of an inexact [`Reference`]: `|value - true| <= 2^-REL_BITS |true|` (or the
-/// absolute bound [`ABS_BITS`]).
+/// Relative accuracy of an inexact [`Reference`]: `|value - true| <= 2^-REL_BITS |true|`.
 pub const REL_BITS: u32 = 80;
-/// Absolute accuracy of an inexact [`Reference`]: `|value - true| <= 2^-ABS_BITS` (or the
-/// relative bound [`REL_BITS`]).
-pub const ABS_BITS: u32 = 1280;
 /// The working precision (bits) of the first interval pass.
 pub const START_PRECISION: u64 = 128;
 /// The largest working precision (bits); beyond it an undecided sample is [`ExactStop::Undecided`].
@@ -67,7 +70,8 @@ pub const MAX_PRECISION: u64 = 1 << 14;
 /// The exact value of an output, or an approximation meeting the contract of `program::real`.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Reference {
-    /// The value (exact, or within `2^-REL_BITS` relative or `2^-ABS_BITS` absolute).
+    /// The value (exact, or within `2^-REL_BITS` relative and rounding to the true value's
+    /// double).
     pub value: BigRational,
     /// Whether `value` is the true value.
     pub exact: bool,
@@ -299,6 +303,23 @@ fn holds(op: CmpOp, ord: Ordering) -> bool {
     }
 }
 
+/// The double nearest to `d` (ties to even; beyond the range, an infinity).
+fn nearest_double(d: &super::interval::Dy) -> f64 {
+    crate::to_f64::rational_to_f64(&d.to_big_rational())
+}
+
+/// Whether both ends of `iv` round to the same double: then so does every point of it (rounding
+/// is monotone), the true value and the midpoint included.
+fn rounding_decided(iv: &Iv) -> bool {
+    nearest_double(&iv.lo).to_bits() == nearest_double(&iv.hi).to_bits()
+}
+
+/// Whether the midpoint of an output enclosure meets the contract: one sign, `2^-REL_BITS`
+/// relative accuracy, the correct rounding decided.
+fn settled(iv: &Iv) -> bool {
+    iv.narrow(REL_BITS) && rounding_decided(iv)
+}
+
 // ------------------------------------------------------------------ the radical fallback
 
 /// Why the radical evaluation stops.
@@ -387,8 +408,8 @@ impl Domain for Rad<'_> {
     }
 }
 
-/// An inexact reference to an irrational radical, by interval refinement (the value is not
-/// zero, so the relative contract is reached).
+/// An inexact reference to an irrational radical, by interval refinement (the value is neither
+/// zero nor dyadic, so refinement reaches the relative contract and decides the rounding).
 fn radical_reference(r: &Radical) -> Result<Reference, ExactStop> {
     if let Some(q) = r.to_rational() {
         return Ok(Reference {
@@ -411,7 +432,7 @@ fn radical_reference(r: &Radical) -> Result<Reference, ExactStop> {
             });
         }
         let iv = sum.expect("an irrational radical has terms");
-        if iv.narrow(REL_BITS, ABS_BITS) {
+        if settled(&iv) {
             return Ok(Reference {
                 value: iv.midpoint(),
                 exact: false,
@@ -434,7 +455,8 @@ enum Pass {
 
 impl Program {
     /// The true values of the outputs at the exact inputs `x` (one per input), exact where
-    /// rational and otherwise to the contract of `program::real` ([`REL_BITS`], [`ABS_BITS`]).
+    /// rational and otherwise to the contract of `program::real` ([`REL_BITS`], the rounding
+    /// to a double decided).
     ///
     /// # Errors
     /// [`ExactStop::OutsideDomain`], [`ExactStop::Undecided`], [`ExactStop::TooLarge`] as
@@ -497,15 +519,19 @@ impl Program {
                             value: iv.lo.to_big_rational(),
                             exact: true,
                         });
-                    } else if iv.narrow(REL_BITS, ABS_BITS) {
+                    } else if settled(&iv) {
                         refs.push(Reference {
                             value: iv.midpoint(),
                             exact: false,
                         });
                     } else {
-                        return Ok(Pass::Refine {
-                            ambiguous: iv.sign().is_none(),
-                        });
+                        // Around zero, or narrow but around a rounding boundary (perhaps
+                        // exactly at a tie): only the exact test can tell.
+                        let ambiguous = match iv.sign() {
+                            None => true,
+                            Some(_) => iv.narrow(REL_BITS),
+                        };
+                        return Ok(Pass::Refine { ambiguous });
                     }
                 }
             }

@@ -88,11 +88,10 @@ pub fn check_consistent(r: &Report) -> Result<(), String> {
     }
     if !(0.0..=64.0).contains(&r.max_bits)
         || (r.compared == 0 && r.max_bits != 0.0)
-        || (r.float_failures > 0 && r.max_bits != 64.0)
         || !r.summary.bits.within(r.max_bits)
     {
         return Err(format!(
-            "max_bits {:?} does not bound its bits of error (at most 64, 64 with a float failure)",
+            "max_bits {:?} does not bound its bits of error (at most 64)",
             r.max_bits
         ));
     }

@@ -33,8 +33,12 @@
 //! medians.
 //!
 //! Each sample's error is also measured as Herbie does: `log2(1 + n)` bits for `n` doubles
-//! between the float result and the correctly rounded exact one (64 for a float failure), the
-//! largest over the outputs; the report gives the mean and the maximum.
+//! between the float result and the correctly rounded exact one, the largest over the outputs;
+//! the report gives the mean and the maximum. As in Herbie, the infinities are the doubles just
+//! past `±f64::MAX` in this count: an overflow to `+inf` where the exact value rounds to `+inf`
+//! is 0 bits (though a float failure in ulps, see above), `+inf` where it rounds to a finite
+//! double is the ordinal distance between them. A NaN, a zero divisor or a missing output is 64
+//! bits.
 //!
 //! # Shrinking
 //! A kept worst case is simplified greedily and deterministically: passes over the inputs try,
@@ -45,8 +49,10 @@
 //! when the inputs become strictly simpler — fewer significant bits in total, then binary
 //! exponents closer to 0, then fewer negative signs — and the case stays bad: its error is at
 //! least [`Options::shrink_fraction`] of the original error (or stays infinite when that was
-//! infinite), with the exact side still defined. Passes repeat until nothing changes or the
-//! evaluation budget ([`Options::shrink_budget`]) is spent.
+//! infinite), with the exact side still defined and the inputs still inside the set the
+//! generator samples ([`InputGen::contains`]: the box, the `--domain`, the interval bounds of an
+//! FPCore `:pre`; the rest of a `:pre` is the exact side's domain). Passes repeat until nothing
+//! changes or the evaluation budget ([`Options::shrink_budget`]) is spent.
 //!
 //! # Formulas must not panic
 //! The exact scalars' `/` operator panics on a zero divisor (as `BigRational`'s does). Formulas
@@ -409,7 +415,10 @@ fn compare(exact: Vec<ExactValue>, float: Option<Vec<f64>>) -> Evaluated {
     };
     let mut ulps = Vec::with_capacity(exact.len());
     let mut rel = Vec::with_capacity(exact.len());
-    let mut bits: f64 = 0.0;
+    let mut bits: f64 = match &float {
+        Some(f) if f.len() == exact.len() => 0.0,
+        _ => 64.0,
+    };
     for (i, q) in exact.iter().enumerate() {
         match float.as_ref().and_then(|f| f.get(i)) {
             Some(&a) => {
@@ -430,7 +439,7 @@ fn compare(exact: Vec<ExactValue>, float: Option<Vec<f64>>) -> Evaluated {
     Evaluated {
         max_ulps: if failure { f64::INFINITY } else { max_ulps },
         max_rel: if failure { f64::INFINITY } else { max_rel },
-        bits: if failure { 64.0 } else { bits },
+        bits,
         exact,
         float,
         ulps,
@@ -706,7 +715,7 @@ pub fn run(
         .map(|(index, inputs, ev)| {
             let original = ev.to_case(&inputs);
             let (shrunk, steps, evaluations) = if options.shrink && ev.max_ulps > 0.0 {
-                let s = shrink::shrink(subject, index, &inputs, &ev, options)
+                let s = shrink::shrink(subject, gen, index, &inputs, &ev, options)
                     .map_err(|e| RegressError::FloatSide(e.0))?;
                 (Some(s.ev.to_case(&s.inputs)), s.steps, s.evaluations)
             } else {

@@ -2,6 +2,7 @@
 
 use super::{evaluate_one, Evaluated, FloatSideError, Subject};
 use crate::convert::{binary_exponent, pow2, round_to_bits, significant_bits, truncate_to_bits};
+use crate::gen::InputGen;
 use crate::harness::Options;
 
 /// The result of shrinking one case.
@@ -116,12 +117,16 @@ pub(super) fn global_candidates(x: &[f64]) -> Vec<Vec<f64>> {
     c
 }
 
-/// Shrinks the case of sample `index` (its inputs `start`, its evaluation `start_ev`).
+/// Shrinks the case of sample `index` (its inputs `start`, its evaluation `start_ev`) within
+/// the set `gen` samples ([`InputGen::contains`]): a candidate outside it is never evaluated.
+/// (A precondition beyond the sampled set is the exact side's: a candidate outside it is
+/// outside the domain and rejected like any undefined one.)
 ///
 /// # Errors
 /// A fatal error of the float side (an external program that failed).
 pub(super) fn shrink(
     subject: &(impl Subject + ?Sized),
+    gen: &(impl InputGen + ?Sized),
     index: usize,
     start: &[f64],
     start_ev: &Evaluated,
@@ -143,7 +148,10 @@ pub(super) fn shrink(
     };
     // Tries one candidate; `None` when the budget is spent, else whether it was taken.
     let attempt = |cur: &mut Shrunk, cand: Vec<f64>| -> Result<Option<bool>, FloatSideError> {
-        if cand == cur.inputs || complexity(&cand) >= complexity(&cur.inputs) {
+        if cand == cur.inputs
+            || complexity(&cand) >= complexity(&cur.inputs)
+            || !gen.contains(&cand)
+        {
             return Ok(Some(false));
         }
         if cur.evaluations >= options.shrink_budget {

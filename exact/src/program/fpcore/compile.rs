@@ -281,6 +281,10 @@ pub(super) fn benchmark(tree: &SExpr) -> Result<Benchmark, FpCoreError> {
         }
     }
 
+    // A `:pre` written with `let`s of literals and names reads as the same condition written
+    // directly: its interval bounds become the sampling domain either way.
+    let pre = pre.map(inline_lets);
+    let pre = pre.as_ref();
     let domain = match pre {
         Some(p) => domain(p, &args)?,
         None => vec![Interval::UNBOUNDED; args.len()],
@@ -367,6 +371,138 @@ fn argument(a: &SExpr) -> Result<(String, Option<String>), FpCoreError> {
             other.pos(),
             format!("expected an argument name, found {}", other.describe()),
         )),
+    }
+}
+
+/// Whether `e` may be substituted for a name bound to it without changing any meaning: a
+/// literal or a symbol (FPCore expressions have no side effects; these cost nothing twice).
+fn inlinable(e: &SExpr) -> bool {
+    match e {
+        SExpr::Sym(s, _) => !s.starts_with(':'),
+        _ => matches!(literal(e), Ok(Some(_))),
+    }
+}
+
+/// `e` with every `let` / `let*` whose bound values are all literals or names replaced by its
+/// body with those values substituted, innermost first (a `let` binding anything else stays).
+/// Used on `:pre` only, so that interval bounds written through a `let` are seen as bounds.
+fn inline_lets(e: &SExpr) -> SExpr {
+    let SExpr::List(items, pos) = e else {
+        return e.clone();
+    };
+    let items: Vec<SExpr> = items.iter().map(inline_lets).collect();
+    let head = items.first().and_then(SExpr::sym);
+    if let (Some(kind @ ("let" | "let*")), [_, bindings, body]) = (head, &items[..]) {
+        let pairs: Option<Vec<(&str, &SExpr)>> = list_items(bindings).and_then(|bs| {
+            bs.iter()
+                .map(|b| match list_items(b) {
+                    Some([SExpr::Sym(n, _), v]) if inlinable(v) => Some((n.as_str(), v)),
+                    _ => None,
+                })
+                .collect()
+        });
+        if let Some(pairs) = pairs {
+            let sequential = kind == "let*";
+            let distinct = sequential
+                || pairs
+                    .iter()
+                    .enumerate()
+                    .all(|(i, (n, _))| pairs[..i].iter().all(|(m, _)| m != n));
+            if distinct {
+                // `let*`: each value sees the bindings before it; `let`: none of them.
+                let mut map: Vec<(&str, SExpr)> = Vec::new();
+                for (n, v) in pairs {
+                    let v = if sequential {
+                        substitute(v, &map)
+                    } else {
+                        Some(v.clone())
+                    };
+                    let Some(v) = v else { break };
+                    map.push((n, v));
+                }
+                if map.len() == list_items(bindings).map_or(0, <[SExpr]>::len) {
+                    if let Some(inlined) = substitute(body, &map) {
+                        return inlined;
+                    }
+                }
+            }
+        }
+    }
+    SExpr::List(items, *pos)
+}
+
+/// `e` with the names of `map` (innermost binding last) replaced by their values; `None` when a
+/// binding form inside would capture a substituted name, or is one this does not scope (loops,
+/// tensors): the caller then keeps its `let`.
+fn substitute(e: &SExpr, map: &[(&str, SExpr)]) -> Option<SExpr> {
+    match e {
+        SExpr::Sym(s, _) => Some(
+            map.iter()
+                .rev()
+                .find(|(n, _)| n == s)
+                .map_or_else(|| e.clone(), |(_, v)| v.clone()),
+        ),
+        SExpr::Num(..) | SExpr::Str(..) => Some(e.clone()),
+        SExpr::List(items, pos) => {
+            let head = items.first().and_then(SExpr::sym);
+            match (head, &items[..]) {
+                (Some(kind @ ("let" | "let*")), [h, bindings, body]) => {
+                    let bs = list_items(bindings)?;
+                    let mut inner: Vec<(&str, SExpr)> = map.to_vec();
+                    let mut new_bs = Vec::with_capacity(bs.len());
+                    let mut bound: Vec<&str> = Vec::new();
+                    for b in bs {
+                        let [SExpr::Sym(n, npos), v] = list_items(b)? else {
+                            return None;
+                        };
+                        let scope = if kind == "let*" { &inner[..] } else { map };
+                        new_bs.push(SExpr::List(
+                            vec![SExpr::Sym(n.clone(), *npos), substitute(v, scope)?],
+                            b.pos(),
+                        ));
+                        bound.push(n);
+                        if kind == "let*" {
+                            inner.retain(|(m, _)| m != n);
+                        }
+                    }
+                    // A substituted value naming a variable this form rebinds would be captured.
+                    let captures = map
+                        .iter()
+                        .any(|(_, v)| v.sym().is_some_and(|s| bound.contains(&s)));
+                    if captures {
+                        return None;
+                    }
+                    inner.retain(|(m, _)| !bound.contains(m));
+                    Some(SExpr::List(
+                        vec![
+                            h.clone(),
+                            SExpr::List(new_bs, bindings.pos()),
+                            substitute(body, &inner)?,
+                        ],
+                        *pos,
+                    ))
+                }
+                (Some(h), _)
+                    if h.starts_with("while")
+                        || h.starts_with("for")
+                        || h.starts_with("tensor") =>
+                {
+                    None
+                }
+                _ => {
+                    // The operator in head position is not a variable.
+                    let mut out = Vec::with_capacity(items.len());
+                    for (i, it) in items.iter().enumerate() {
+                        out.push(if i == 0 && it.sym().is_some() {
+                            it.clone()
+                        } else {
+                            substitute(it, map)?
+                        });
+                    }
+                    Some(SExpr::List(out, *pos))
+                }
+            }
+        }
     }
 }
 

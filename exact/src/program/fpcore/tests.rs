@@ -570,3 +570,33 @@ fn every_supported_operation_evaluates_both_ways() {
     let other = p.eval_exact(&[r(3.0), r(0.5), r(2.0)]).expect("defined");
     assert_eq!(other[0].value, q(3, 100).to_big_rational());
 }
+
+#[test]
+fn a_pre_written_with_let_reads_as_written_directly() {
+    let direct = one("(FPCore (x y) :pre (and (<= 1/2 x 3) (< y x) (> y -1)) (+ x y))");
+    for with_let in [
+        "(FPCore (x y) :pre (let ([lo 1/2] [hi 3]) (and (<= lo x hi) (< y x) (> y -1))) (+ x y))",
+        "(FPCore (x y) :pre (let* ([a x] [lo 1/2] [hi 3]) (and (<= lo a hi) (< y a) (> y (- 1)))) (+ x y))",
+        "(FPCore (x y) :pre (let ([t x]) (let ([x y]) (and (<= 1/2 t 3) (< x t) (> x -1)))) (+ x y))",
+    ] {
+        let bm = one(with_let);
+        assert_eq!(bm.domain[0], direct.domain[0], "{with_let}");
+        assert_eq!(bm.domain[1], direct.domain[1], "{with_let}");
+        assert_eq!(
+            bm.program.as_ref().expect("supported").pre,
+            direct.program.as_ref().expect("supported").pre,
+            "{with_let}"
+        );
+    }
+    // A binding that is not a literal or a name stays a `let` (its bounds are conditions), and
+    // a substitution that an inner `let` would capture is not made.
+    let kept = one("(FPCore (x) :pre (let ([s (* x x)]) (<= s 4)) x)");
+    assert_eq!(kept.domain, vec![Interval::UNBOUNDED]);
+    assert!(kept.program.expect("supported").pre.is_some());
+    let captured = one("(FPCore (x y) :pre (let ([a x]) (let ([x (+ y 1)]) (< a x))) x)");
+    assert_eq!(captured.domain, vec![Interval::UNBOUNDED; 2]);
+    assert_eq!(
+        captured.program.expect("supported").pre,
+        Some(Cond::Cmp(CmpOp::Lt, x(0), Node::Add(b(x(1)), b(c(1)))))
+    );
+}
