@@ -83,7 +83,6 @@ use serde_json::Value;
 use std::cell::RefCell;
 use std::collections::HashMap;
 use std::path::Path;
-use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
 
 /// A claims file, read and resolved: every formula is parsed and its definitions substituted.
@@ -125,7 +124,9 @@ pub struct FileClaim {
     pub line: usize,
     /// The line of each key of the claim.
     key_lines: HashMap<String, usize>,
-    check: Check,
+    /// The check, or the one-line error (`FILE:LINE: claim "ID": key KEY: WHAT`) of a claim
+    /// that cannot be built: that claim gets the verdict `error`, the others are decided.
+    check: Result<Check, String>,
 }
 
 impl FileClaim {
@@ -264,11 +265,20 @@ pub fn parse(text: &str, file: &str, default_name: &str) -> Result<ClaimsFile, E
             }
         };
         let mut claim_notation = notation.clone();
-        for (k, v) in notation_of(c.latex.as_ref(), &format!("{base}.latex"), &fail)? {
-            claim_notation.retain(|(n, _)| *n != k);
-            claim_notation.push((k, v));
-        }
-        let check = kinds::build(c, &defs).map_err(|(key, m)| key_fail(key, m))?;
+        // A claim that cannot be built (bad notation, formula, key) keeps its error; the rest
+        // of the file is still decided.
+        let check = notation_of(c.latex.as_ref(), &format!("{base}.latex"), &fail)
+            .and_then(|own| {
+                for (k, v) in own {
+                    claim_notation.retain(|(n, _)| *n != k);
+                    claim_notation.push((k, v));
+                }
+                kinds::build(c, &defs).map_err(|(key, m)| key_fail(key, m))
+            })
+            .map_err(|e| match e {
+                Error::Input(m) => m,
+                other => other.to_string(),
+            });
         let mut key_lines = HashMap::new();
         for key in read::present_keys(c) {
             key_lines.insert(key.to_string(), index.line(&format!("{base}.{key}")));
@@ -323,8 +333,10 @@ fn notation_of(
 ///
 /// # Errors
 /// [`Error::Usage`] when no id starts with `only`; [`Error::Input`] (one line with file, line,
-/// claim and key) for what only checking finds wrong in the file: inconsistent relations, an
-/// instance off the relations or missing a variable, a `solve` problem the solver refuses.
+/// claim and key) when no chosen claim can be built or decided (a bad formula; inconsistent
+/// relations, an instance off the relations or missing a variable, a `solve` problem the solver
+/// refuses). When some can, the others are rows with the verdict `error` and
+/// [`Checked::bad_input`] set.
 pub fn check(file: &ClaimsFile, only: Option<&str>) -> Result<Vec<Checked>, Error> {
     check_with(file, only, true)
 }
@@ -355,42 +367,48 @@ pub fn check_with(
     }
     let steps = crate::output::Steps::new(chosen.len() as u64, quiet);
     // The claims are independent: checked in parallel on rayon's pool, then read in file order.
-    // A fault of the file found while checking is reported for the first such claim in file
-    // order (as when the claims ran one after another): once claim `i` has found one, claims
-    // after `i` that have not started are skipped (their rows are never read), claims before
-    // `i` still run.
-    let first_fault = AtomicUsize::new(usize::MAX);
-    let runs: Vec<Option<(Result<Outcome, Fault>, f64)>> = chosen
+    // A claim that cannot be built or decided (a bad formula; inconsistent relations, an
+    // instance off its relations, a problem the solver refuses) gets the verdict `error` with
+    // its one-line message, and the others are decided.
+    // The error of a run: its message, and whether it is the claim's bad input (not a failure
+    // of the check itself).
+    type Run = Result<(Outcome, Option<String>), (String, bool)>;
+    let runs: Vec<(Run, f64)> = chosen
         .par_iter()
-        .enumerate()
         .with_max_len(1)
-        .map(|(i, c)| {
-            if i > first_fault.load(Ordering::Relaxed) {
-                return None;
-            }
+        .map(|c| {
             steps.start(&c.id);
             let start = Instant::now();
-            let run = kinds::run(&c.check, &c.notation);
+            let run = match &c.check {
+                Err(m) => Err((m.clone(), true)),
+                Ok(check) => kinds::run(check, &c.notation).map_err(|f| match f {
+                    Fault::Internal(m) => (m, false),
+                    Fault::Input(key, m) => {
+                        let line = c.key_lines.get(key).copied().unwrap_or(c.line);
+                        (
+                            format!("{}:{line}: claim {:?}: key {key}: {m}", file.path, c.id),
+                            true,
+                        )
+                    }
+                }),
+            };
             steps.done();
-            if matches!(run, Err(Fault::Input(..))) {
-                first_fault.fetch_min(i, Ordering::Relaxed);
-            }
-            Some((run, start.elapsed().as_secs_f64()))
+            (run, start.elapsed().as_secs_f64())
         })
         .collect();
+    // Nothing decidable at all: the file is bad input, reported as one line (the first claim's
+    // error).
+    if runs.iter().all(|(r, _)| matches!(r, Err((_, true)))) {
+        if let Some((Err((m, _)), _)) = runs.into_iter().next() {
+            return Err(Error::Input(m));
+        }
+        unreachable!("at least one claim was chosen");
+    }
     let mut rows = Vec::new();
-    for (c, run) in chosen.iter().zip(runs) {
-        let (run, seconds) = run.expect("every claim before the first fault was checked");
-        let outcome = match run {
-            Ok(o) => Ok(o),
-            Err(Fault::Internal(m)) => Err(m),
-            Err(Fault::Input(key, m)) => {
-                let line = c.key_lines.get(key).copied().unwrap_or(c.line);
-                return Err(Error::Input(format!(
-                    "{}:{line}: claim {:?}: key {key}: {m}",
-                    file.path, c.id
-                )));
-            }
+    for (c, (run, seconds)) in chosen.iter().zip(runs) {
+        let (outcome, problem, bad_input) = match run {
+            Ok((o, p)) => (Ok(o), p, false),
+            Err((m, bad)) => (Err(m), None, bad),
         };
         let verdict = outcome.as_ref().ok().map(|o| o.verdict);
         rows.push(Checked {
@@ -400,6 +418,8 @@ pub fn check_with(
             expected: c.expected(verdict),
             outcome,
             seconds,
+            problem,
+            bad_input,
         });
     }
     Ok(rows)
