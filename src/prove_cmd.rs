@@ -15,7 +15,7 @@
 
 use crate::Error;
 use clap::Args;
-use exactcheck_exact::expr::{parse_expr, Coefficient, Expr};
+use exactcheck_exact::expr::{first_reserved, parse_expr, Coefficient, Expr};
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
     decide_identity, real_zero_free, Domain, EngineError, IdentitySpec, IdentityVerdict, Part,
@@ -309,8 +309,14 @@ fn random_test(
     Ok(code)
 }
 
+/// Parses `text` (named `what` in messages); a free variable `pi`, `e` or `i` is refused
+/// ([`reserved_constant`](exactcheck_exact::expr::reserved_constant)).
 fn parse(text: &str, what: &str) -> Result<Expr, Error> {
-    parse_expr(text).map_err(|e| Error::Input(format!("{what}: {e}")))
+    let e = parse_expr(text).map_err(|e| Error::Input(format!("{what}: {e}")))?;
+    match first_reserved([&e]) {
+        Some(why) => Err(Error::Input(format!("{what}: {why}"))),
+        None => Ok(e),
+    }
 }
 
 /// Runs `exactcheck prove`.

@@ -43,7 +43,12 @@ pub fn run(args: &VerifyArgs) -> Result<ExitCode, Error> {
         None => crate::claims::verify_with(args.only.as_deref(), false)?,
         Some(path) => {
             let file = crate::claimfile::load(path)?;
-            crate::claimfile::check_with(&file, args.only.as_deref(), false)?
+            let rows = crate::claimfile::check_with(&file, args.only.as_deref(), false)?;
+            // Warnings about names go with a report, not with a refusal (one line).
+            for w in &file.warnings {
+                eprintln!("exactcheck: warning: {w}");
+            }
+            rows
         }
     };
     if args.json {

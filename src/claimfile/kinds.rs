@@ -10,7 +10,7 @@ use crate::claims::{printed, Equation, Erratum, Outcome, Verdict};
 use crate::prove_cmd::{parse_where_with, Where};
 use crate::Error;
 use exactcheck_core::Ring;
-use exactcheck_exact::expr::{parse_expr, AddOp, Coefficient, Expr, ExprKind};
+use exactcheck_exact::expr::{first_reserved, parse_expr, AddOp, Coefficient, Expr, ExprKind};
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
     decide_identity, random_identity_test, unit_circle_pairs, CorrectionVerdict, Domain,
@@ -75,6 +75,38 @@ pub enum Check {
     },
 }
 
+impl Check {
+    /// The formulas of the claim after definitions are substituted (sides, corrected form,
+    /// relations, value, instance values): what its free variables are read from.
+    pub fn formulas(&self) -> Vec<&Expr> {
+        fn relations(c: &Conditions) -> Vec<&Expr> {
+            c.relations.iter().flat_map(|(a, b)| [a, b]).collect()
+        }
+        match self {
+            Check::Identity {
+                lhs,
+                rhs,
+                conditions,
+                corrected,
+                ..
+            } => lhs
+                .iter()
+                .chain(rhs)
+                .chain(corrected.iter().flatten())
+                .chain(relations(conditions))
+                .collect(),
+            Check::Value { expr, .. } => vec![expr],
+            Check::Instances {
+                lhs,
+                rhs,
+                conditions,
+                ..
+            } => lhs.iter().chain(rhs).chain(relations(conditions)).collect(),
+            Check::Solve { .. } => Vec::new(),
+        }
+    }
+}
+
 const IDENTITY_KEYS: [&str; 7] = [
     "name",
     "lhs",
@@ -125,10 +157,13 @@ pub fn build(c: &RawClaim, defs: &RefCell<Defs>) -> Built<Check> {
         ));
     }
     let resolve = |key: &'static str, text: &str| -> Built<Vec<Expr>> {
-        defs.borrow_mut()
+        let v = defs
+            .borrow_mut()
             .resolve_text(text)
             .map(|v| v.components())
-            .map_err(|e| (key, e.message))
+            .map_err(|e| (key, e.message))?;
+        no_reserved(key, &v)?;
+        Ok(v)
     };
     let required = |key: &'static str, v: &Option<String>| -> Built<String> {
         v.clone()
@@ -272,6 +307,7 @@ pub fn build(c: &RawClaim, defs: &RefCell<Defs>) -> Built<Check> {
                 .borrow_mut()
                 .resolve_scalar(&required("expr", &c.expr)?)
                 .map_err(|e| ("expr", e.message))?;
+            no_reserved("expr", std::slice::from_ref(&expr))?;
             let printed = c
                 .printed
                 .as_ref()
@@ -321,13 +357,27 @@ pub fn build(c: &RawClaim, defs: &RefCell<Defs>) -> Built<Check> {
     })
 }
 
+/// Refuses a free variable `pi`, `e` or `i` in the resolved formulas of `key`
+/// ([`reserved_constant`](exactcheck_exact::expr::reserved_constant)).
+fn no_reserved(key: &'static str, exprs: &[Expr]) -> Built<()> {
+    match first_reserved(exprs) {
+        Some(why) => Err((key, why.to_string())),
+        None => Ok(()),
+    }
+}
+
 /// `where` and `domains`, parsed as `prove --where` parses them.
 fn conditions(c: &RawClaim, defs: &RefCell<Defs>) -> Built<Conditions> {
     let mut out = Conditions::default();
     let parse = |text: &str, what: &str| -> Result<Expr, Error> {
-        defs.borrow_mut()
+        let e = defs
+            .borrow_mut()
             .resolve_scalar(text)
-            .map_err(|e| Error::Input(format!("{what}: {}", e.message)))
+            .map_err(|e| Error::Input(format!("{what}: {}", e.message)))?;
+        match first_reserved([&e]) {
+            Some(why) => Err(Error::Input(format!("{what}: {why}"))),
+            None => Ok(e),
+        }
     };
     let lists: [(&'static str, &Option<Vec<String>>); 2] =
         [("where", &c.where_), ("domains", &c.domains)];

@@ -11,7 +11,7 @@
 //! [define]                       # optional: the paper's notation, typed once
 //! X = "a + r*ct"                 # a scalar
 //! v = ["X", "b + r*st", "u"]     # a vector (one formula per coordinate)
-//! F = "norm2(v - vec(d, e, f)) - R^2"
+//! F = "norm2(v - vec(d, h, f)) - R^2"
 //!
 //! [latex]                        # optional: LaTeX of names for the report (`ct = '\cos t'`)
 //!
@@ -66,10 +66,26 @@
 //!   mismatch.
 //!
 //! Without `expect`, proved and holds count as expected and fails and undecided do not; with
-//! it, the verdict must equal it. `verify FILE` exits 0 iff every claim is as expected.
+//! it, the verdict must equal it. An `identity` whose `corrected` form is not proved equal to
+//! its `rhs` is not as expected, whatever its verdict. `verify FILE` exits 0 iff every claim is
+//! as expected.
+//!
+//! # Bad claims and names
+//! A claim that cannot be built (a bad formula or key) or decided (inconsistent relations, an
+//! instance off its relations) gets the verdict `error` with its one-line message; the other
+//! claims are decided and reported, and `verify` exits with status 2. A file with no claim that
+//! can be decided is refused with the first claim's message (one line, status 2).
+//!
+//! `pi`, `e` and `i` are constants, never free variables: a formula using one as a variable is
+//! a bad claim. `variables = ["x", "t"]` (at the top of the file, for every claim, and in a
+//! claim, for that claim) declares the variables; any other free name then gets a warning on
+//! standard error, with its near misses (`Aa` for the defined `A`, see [`names`]). Without a
+//! declaration, a name used by one claim only that is a near miss of a defined name or of
+//! another claim's variable gets that warning.
 
 pub mod defs;
 mod kinds;
+mod names;
 mod read;
 
 use crate::claims::{Checked, Outcome, Verdict};
@@ -95,6 +111,8 @@ pub struct ClaimsFile {
     pub notation: Vec<(String, String)>,
     /// The claims in file order.
     pub claims: Vec<FileClaim>,
+    /// Warnings about names (a free variable that may be a typo, see [`names`]), one line each.
+    pub warnings: Vec<String>,
 }
 
 /// `[paper]`.
@@ -230,6 +248,24 @@ pub fn parse(text: &str, file: &str, default_name: &str) -> Result<ClaimsFile, E
             e.message,
         )
     })?;
+    // Declared variables: names of the syntax, not defined, not a constant.
+    let declared_ok = |list: &[String], defs: &Defs| -> Result<(), String> {
+        for v in list {
+            if !names::is_name(v) {
+                return Err(format!("{v:?} is not a variable name"));
+            }
+            if let Some(why) = exactcheck_exact::expr::reserved_constant(v) {
+                return Err(why.to_string());
+            }
+            if defs.is_defined(v) {
+                return Err(format!("{v} is a defined name, not a variable"));
+            }
+        }
+        Ok(())
+    };
+    if let Some(list) = &raw.variables {
+        declared_ok(list, &defs).map_err(|m| fail("variables", m))?;
+    }
     let defs = RefCell::new(defs);
     let mut claims: Vec<FileClaim> = Vec::new();
     // Each id and the line of its claim, to find a duplicate without a scan per claim.
@@ -273,6 +309,9 @@ pub fn parse(text: &str, file: &str, default_name: &str) -> Result<ClaimsFile, E
                     claim_notation.retain(|(n, _)| *n != k);
                     claim_notation.push((k, v));
                 }
+                if let Some(list) = &c.variables {
+                    declared_ok(list, &defs.borrow()).map_err(|m| key_fail("variables", m))?;
+                }
                 kinds::build(c, &defs).map_err(|(key, m)| key_fail(key, m))
             })
             .map_err(|e| match e {
@@ -296,11 +335,29 @@ pub fn parse(text: &str, file: &str, default_name: &str) -> Result<ClaimsFile, E
             check,
         });
     }
+    let named: Vec<names::ClaimNames<'_>> = claims
+        .iter()
+        .zip(&raw.claim)
+        .filter_map(|(c, r)| {
+            let check = c.check.as_ref().ok()?;
+            let mut free = Vec::new();
+            for e in check.formulas() {
+                e.collect_variables(&mut free);
+            }
+            Some(names::ClaimNames {
+                label: format!("{file}:{}: claim {:?}", c.line, c.id),
+                free,
+                declared: r.variables.as_deref(),
+            })
+        })
+        .collect();
+    let warnings = names::warnings(&named, &defs.borrow().names(), raw.variables.as_deref());
     Ok(ClaimsFile {
         path: file.to_string(),
         paper,
         notation,
         claims,
+        warnings,
     })
 }
 
@@ -434,8 +491,11 @@ fn name_expr(text: &str) -> Result<Expr, String> {
 mod tests {
     use super::*;
 
+    /// Reads and checks a file: a file whose every claim is broken is refused as one line.
     fn load_str(text: &str, file: &str) -> Result<ClaimsFile, String> {
-        parse(text, file, "t").map_err(|e| e.to_string())
+        let f = parse(text, file, "t").map_err(|e| e.to_string())?;
+        check(&f, None).map_err(|e| e.to_string())?;
+        Ok(f)
     }
 
     #[test]
