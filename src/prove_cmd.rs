@@ -4,9 +4,11 @@
 //! Both sides (and each relation) are parsed in the expression syntax (numbers, `sqrt(k)`,
 //! `diff(E, t[, k])`, variables, `+ - * / ^`, parentheses), expanded, and `LHS - RHS` is reduced
 //! modulo the relations (unit circles `c^2 + s^2 = 1` in closed form, others by a Gröbner
-//! basis); see `exactcheck_exact::prove`. With a division by a non-constant anywhere, the sides
-//! are rational functions (`Expr::to_ratfun`): the identity is decided with the denominators
-//! cleared (`prove::decide_fraction`), and the divisors met are reported as side conditions. A `--where` with `<`, `<=`, `>` or `>=` is a domain (`r > 0`,
+//! basis) by the identity engine `exactcheck_exact::prove::decide_identity`, and the verdict is
+//! phrased by `prove::phrase` in the `prove` voice. With a division by a non-constant anywhere,
+//! the sides are rational functions (`Expr::to_ratfun`): the identity is decided with the
+//! denominators cleared, and the divisors met are reported as side conditions. `pi`, `e` and `i`
+//! are refused as variables. A `--where` with `<`, `<=`, `>` or `>=` is a domain (`r > 0`,
 //! `0 <= t <= 1`, constant bounds only): counter-examples are searched inside the domains.
 //! Inconsistent relations (`1 = 2`; `x = 1` and `x = 2`) are an input error. `--random K`
 //! evaluates instead at K random points modulo a prime drawn at random per run

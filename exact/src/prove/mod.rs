@@ -38,6 +38,12 @@
 //!
 //! The search is deterministic (fixed seed) so that verdicts are reproducible; it makes
 //! [`SEARCH_ATTEMPTS`] attempts.
+//!
+//! # One engine for every front end
+//! [`identity::decide_identity`] takes an identity as a spec (sides or residuals, relations,
+//! domains, hypotheses, a corrected form, the variable names) and returns a typed report;
+//! [`phrase::Phrasing`] words it. `prove`, claims files and the built-in catalogue all go
+//! through the two, so that they share one counter-example rule and one way of speaking.
 
 mod fraction;
 pub mod identity;
