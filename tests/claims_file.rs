@@ -365,7 +365,9 @@ at = [{ c = 1, s = 1 }]
             );
             assert_eq!(shown[2].0, "proved", "{threads} threads");
             assert_eq!(shown[3].0, "error", "{threads} threads");
-            assert!(shown[3].1.contains("claim \"d\": key at: instance 1 does not satisfy"));
+            assert!(shown[3]
+                .1
+                .contains("claim \"d\": key at: instance 1 does not satisfy"));
         }
     }
     // Only d: nothing can be decided, so the file is refused with d's message.
@@ -427,7 +429,10 @@ fn a_wrong_correction_makes_the_claim_not_as_expected() {
         .contains("(The given correction does not match RHS either: it differs from RHS by"));
     let out = exactcheck(&["verify", "tests/claims_file/corrected_wrong.toml"]);
     let table = String::from_utf8_lossy(&out.stdout);
-    assert!(table.contains("<< not as expected: it differs from RHS by"), "{table}");
+    assert!(
+        table.contains("<< not as expected: it differs from RHS by"),
+        "{table}"
+    );
 }
 
 /// Near misses of defined and declared names are warned about (standard error), the claims

@@ -168,7 +168,10 @@ mod tests {
     fn near_misses() {
         assert!(near("Aa", "A") && near("a", "A") && near("rho", "rh0"));
         assert!(near("ab", "ba") && near("theta", "thetaa"));
-        assert!(!near("x", "y"), "single letters are not typos of each other");
+        assert!(
+            !near("x", "y"),
+            "single letters are not typos of each other"
+        );
         assert!(!near("x0", "x1"), "an index is not a typo");
         assert!(!near("ab", "xy") && !near("A", "A"));
         assert!(is_name("A_1") && !is_name("1a") && !is_name("a-b") && !is_name(""));
@@ -177,7 +180,11 @@ mod tests {
     #[test]
     fn an_undeclared_near_miss_of_a_definition_is_warned_about() {
         let defined = vec!["A".to_string()];
-        let w = warnings(&[claim("p.toml:3: claim \"c\"", &["Aa", "t"], None)], &defined, None);
+        let w = warnings(
+            &[claim("p.toml:3: claim \"c\"", &["Aa", "t"], None)],
+            &defined,
+            None,
+        );
         assert_eq!(
             w,
             ["p.toml:3: claim \"c\": Aa is not defined, not declared and used by no other claim; did you mean A (defined)?"]
@@ -194,11 +201,7 @@ mod tests {
     #[test]
     fn declared_variables_make_every_other_name_a_warning() {
         let vars = vec!["x".to_string(), "theta".to_string()];
-        let w = warnings(
-            &[claim("c", &["x", "thetaa", "q"], None)],
-            &[],
-            Some(&vars),
-        );
+        let w = warnings(&[claim("c", &["x", "thetaa", "q"], None)], &[], Some(&vars));
         assert_eq!(
             w,
             [

@@ -99,7 +99,12 @@ where
     let spec = IdentitySpec {
         relations: relations
             .iter()
-            .map(|r| (RatFun::from_poly(r.clone()), RatFun::from_poly(Poly::zero())))
+            .map(|r| {
+                (
+                    RatFun::from_poly(r.clone()),
+                    RatFun::from_poly(Poly::zero()),
+                )
+            })
             .collect(),
         domains: domains.to_vec(),
         context: sides.iter().map(|p| (*p).clone()).collect(),

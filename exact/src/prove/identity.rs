@@ -208,7 +208,9 @@ pub fn decide_identity<C: PointField>(
                 residual: p.clone(),
                 fraction: None,
             }),
-            Statement::Sides(l, r) if l.is_polynomial() && r.is_polynomial() && hypotheses.is_empty() => {
+            Statement::Sides(l, r)
+                if l.is_polynomial() && r.is_polynomial() && hypotheses.is_empty() =>
+            {
                 Ok(Prepared {
                     residual: l.numerator().clone() - r.numerator(),
                     fraction: None,
@@ -254,9 +256,12 @@ pub fn decide_identity<C: PointField>(
     let mut statement: Vec<&Poly<C>> = Vec::new();
     for st in &spec.coordinates {
         match st {
-            Statement::Sides(l, r) => {
-                statement.extend([l.numerator(), l.denominator(), r.numerator(), r.denominator()])
-            }
+            Statement::Sides(l, r) => statement.extend([
+                l.numerator(),
+                l.denominator(),
+                r.numerator(),
+                r.denominator(),
+            ]),
             Statement::Residual(p) => statement.push(p),
         }
     }
@@ -365,7 +370,10 @@ mod tests {
     #[test]
     fn polynomial_identity_is_proved_without_conditions() {
         let r = decide_identity(&spec(&[("(x+1)^2", "x^2 + 2*x + 1")], &[])).unwrap();
-        assert!(matches!(r.verdict, IdentityVerdict::Proved { expanded_terms: 0 }));
+        assert!(matches!(
+            r.verdict,
+            IdentityVerdict::Proved { expanded_terms: 0 }
+        ));
         assert_eq!(r.cleared, [false]);
         assert!(r.conditions.is_empty() && r.correction.is_none() && !r.has_relations);
     }
@@ -441,8 +449,14 @@ mod tests {
     #[test]
     fn residuals_and_hypotheses() {
         let mut vars = Vars::new();
-        let p = parse_expr("x^2 - x").unwrap().to_poly::<Rational>(&mut vars).unwrap();
-        let h = parse_expr("x").unwrap().to_poly::<Rational>(&mut vars).unwrap();
+        let p = parse_expr("x^2 - x")
+            .unwrap()
+            .to_poly::<Rational>(&mut vars)
+            .unwrap();
+        let h = parse_expr("x")
+            .unwrap()
+            .to_poly::<Rational>(&mut vars)
+            .unwrap();
         let mut s = IdentitySpec::new(vars, vec![Statement::Residual(p)]);
         s.hypotheses = vec![h];
         let r = decide_identity(&s).unwrap();

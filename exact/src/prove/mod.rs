@@ -52,8 +52,8 @@ pub mod random;
 
 pub use fraction::{decide_fraction, real_zero_free, where_clause, FractionIdentity};
 pub use identity::{
-    decide_identity, CorrectionVerdict, EngineError, IdentityReport, IdentitySpec,
-    IdentityVerdict, Part, Statement,
+    decide_identity, CorrectionVerdict, EngineError, IdentityReport, IdentitySpec, IdentityVerdict,
+    Part, Statement,
 };
 pub use phrase::{Phrasing, Voice};
 

@@ -121,7 +121,13 @@ impl Phrasing<'_> {
         let modulo = self.modulo();
         let within = self.within();
         let where_nonzero = where_clause(&r.conditions, self.vars);
-        let cleared = |k: usize| if r.cleared.get(k) == Some(&true) { CLEARED } else { "" };
+        let cleared = |k: usize| {
+            if r.cleared.get(k) == Some(&true) {
+                CLEARED
+            } else {
+                ""
+            }
+        };
         let cleared_any = if r.cleared_any() { CLEARED } else { "" };
         let rel = if r.has_relations {
             " (where the relations hold)"
@@ -321,4 +327,3 @@ impl Phrasing<'_> {
         }
     }
 }
-
