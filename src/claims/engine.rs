@@ -107,7 +107,7 @@ where
             })
             .collect(),
         domains: domains.to_vec(),
-        context: sides.iter().map(|p| (*p).clone()).collect(),
+        context: sides.iter().copied().cloned().collect(),
         ..IdentitySpec::new(
             sym.vars.clone(),
             residuals

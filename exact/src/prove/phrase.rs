@@ -327,3 +327,68 @@ impl Phrasing<'_> {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::expr::parse_expr;
+    use crate::prove::{decide_identity, IdentitySpec, Statement};
+    use crate::Rational;
+
+    fn report(l: &str, r: &str) -> (IdentityReport<Rational>, Vars) {
+        let mut vars = Vars::new();
+        let l = parse_expr(l).unwrap().to_ratfun(&mut vars).unwrap();
+        let r = parse_expr(r).unwrap().to_ratfun(&mut vars).unwrap();
+        let spec = IdentitySpec::new(vars, vec![Statement::Sides(l, r)]);
+        (decide_identity(&spec).unwrap(), spec.vars)
+    }
+
+    fn phrasing(voice: Voice, vars: &Vars) -> Phrasing<'_> {
+        Phrasing {
+            voice,
+            vars,
+            relations: Vec::new(),
+            domains: Vec::new(),
+            labels: vec!["the residual".into()],
+            corrected: Vec::new(),
+        }
+    }
+
+    #[test]
+    fn each_voice_phrases_the_same_report() {
+        let (r, vars) = report("(a+b)^3", "a^3 + 3*a^2*b + 3*a*b^2");
+        assert_eq!(
+            phrasing(Voice::Prove, &vars).evidence(&r),
+            "at a = 1/2, b = 3/2 LHS - RHS = 27/8; LHS - RHS reduces to b^3, so LHS = RHS + (b^3)"
+        );
+        assert_eq!(
+            phrasing(Voice::ClaimsFile, &vars).evidence(&r),
+            "at a = 1/2, b = 3/2 LHS - RHS = 27/8; LHS - RHS reduces to b^3"
+        );
+        assert_eq!(
+            phrasing(Voice::Catalogue, &vars).evidence(&r),
+            "the residual is not zero: at a = 1/2, b = 3/2 it is 27/8; it reduces to b^3"
+        );
+        assert_eq!(
+            phrasing(Voice::Prove, &vars).method::<Rational>(),
+            "symbolic expansion over Q[a,b]"
+        );
+    }
+
+    #[test]
+    fn fractions_carry_their_side_conditions() {
+        let (r, vars) = report("(x^2-1)/(x-1)", "x+1");
+        assert_eq!(
+            phrasing(Voice::Prove, &vars).evidence(&r),
+            "LHS - RHS with the denominators cleared expands to 0, where x != 1"
+        );
+    }
+
+    #[test]
+    fn long_texts_are_shortened_in_the_prove_voice_only() {
+        let long = "7".repeat(3 * SHOWN_CHARS);
+        let short = abbreviate(long.clone());
+        assert!(short.len() < long.len() && short.ends_with("--json shows it in full]"));
+        assert_eq!(abbreviate("x".into()), "x");
+    }
+}
