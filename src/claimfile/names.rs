@@ -102,7 +102,7 @@ pub fn warnings(
             .collect();
         let strict = file_declared.is_some() || c.declared.is_some();
         for n in &c.free {
-            if declared.iter().any(|d| *d == n) {
+            if declared.contains(&n) {
                 continue;
             }
             // Candidates: defined names, declared variables, variables of other claims.
