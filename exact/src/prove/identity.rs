@@ -410,7 +410,7 @@ mod tests {
             panic!("expected fails, got {:?}", r.verdict)
         };
         assert_eq!(coordinate, 1);
-        assert_eq!(normal_form.display(&s.vars).to_string(), "2 a b");
+        assert_eq!(normal_form.display(&s.vars).to_string(), "2*a*b");
         // The value is 2ab at the reported point, recomputed independently.
         let at = |name: &str| {
             let v = s.vars.get(name).unwrap();
