@@ -4,9 +4,11 @@
 //! Both sides (and each relation) are parsed in the expression syntax (numbers, `sqrt(k)`,
 //! `diff(E, t[, k])`, variables, `+ - * / ^`, parentheses), expanded, and `LHS - RHS` is reduced
 //! modulo the relations (unit circles `c^2 + s^2 = 1` in closed form, others by a Gröbner
-//! basis); see `exactcheck_exact::prove`. With a division by a non-constant anywhere, the sides
-//! are rational functions (`Expr::to_ratfun`): the identity is decided with the denominators
-//! cleared (`prove::decide_fraction`), and the divisors met are reported as side conditions. A `--where` with `<`, `<=`, `>` or `>=` is a domain (`r > 0`,
+//! basis) by the identity engine `exactcheck_exact::prove::decide_identity`, and the verdict is
+//! phrased by `prove::phrase` in the `prove` voice. With a division by a non-constant anywhere,
+//! the sides are rational functions (`Expr::to_ratfun`): the identity is decided with the
+//! denominators cleared, and the divisors met are reported as side conditions. `pi`, `e` and `i`
+//! are refused as variables. A `--where` with `<`, `<=`, `>` or `>=` is a domain (`r > 0`,
 //! `0 <= t <= 1`, constant bounds only): counter-examples are searched inside the domains.
 //! Inconsistent relations (`1 = 2`; `x = 1` and `x = 2`) are an input error. `--random K`
 //! evaluates instead at K random points modulo a prime drawn at random per run
@@ -15,11 +17,11 @@
 
 use crate::Error;
 use clap::Args;
-use exactcheck_exact::expr::{parse_expr, Coefficient, Expr};
+use exactcheck_exact::expr::{first_reserved, parse_expr, Coefficient, Expr};
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
-    counter_example, decide_fraction, decide_in, real_zero_free, where_clause, DecideError,
-    Decision, Domain, FractionIdentity, PointField, HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
+    decide_identity, real_zero_free, Domain, EngineError, IdentitySpec, IdentityVerdict, Part,
+    Phrasing, PointField, Statement, Voice, HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
 };
 use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::{Radical, Rational};
@@ -309,29 +311,14 @@ fn random_test(
     Ok(code)
 }
 
-/// The longest value or polynomial the text verdict prints in full.
-const SHOWN_CHARS: usize = 2_000;
-
-/// `text` for the one-line text verdict: in full up to [`SHOWN_CHARS`] characters, else its
-/// beginning and its length (a counter-example of `(x+y)^5000` is a number of 3,500 digits and
-/// a polynomial of 7 MB); `--json` always has the exact text in full.
-fn abbreviate(text: String) -> String {
-    if text.len() <= SHOWN_CHARS {
-        return text;
-    }
-    let mut cut = SHOWN_CHARS / 2;
-    while !text.is_char_boundary(cut) {
-        cut -= 1;
-    }
-    format!(
-        "{}... [{} characters in all; --json shows it in full]",
-        &text[..cut],
-        text.len()
-    )
-}
-
+/// Parses `text` (named `what` in messages); a free variable `pi`, `e` or `i` is refused
+/// ([`reserved_constant`](exactcheck_exact::expr::reserved_constant)).
 fn parse(text: &str, what: &str) -> Result<Expr, Error> {
-    parse_expr(text).map_err(|e| Error::Input(format!("{what}: {e}")))
+    let e = parse_expr(text).map_err(|e| Error::Input(format!("{what}: {e}")))?;
+    match first_reserved([&e]) {
+        Some(why) => Err(Error::Input(format!("{what}: {why}"))),
+        None => Ok(e),
+    }
 }
 
 /// Runs `exactcheck prove`.
@@ -414,29 +401,14 @@ fn prove_over<C: PointField + Display>(
         Some(e) => to_ratfun::<C>(e, &mut vars, "RHS")?,
         None => RatFun::from_poly(Poly::zero()),
     };
-    // Relations between fractions are cleared of their denominators, which become
-    // hypotheses (non-zero).
     let mut rels = Vec::new();
-    let mut hypotheses: Vec<Poly<C>> = Vec::new();
     for (i, (a, b)) in relations.iter().enumerate() {
         let what = format!("--where #{}", i + 1);
-        let a = to_ratfun::<C>(a, &mut vars, &what)?;
-        let b = to_ratfun::<C>(b, &mut vars, &what)?;
-        if a.is_polynomial() && b.is_polynomial() {
-            rels.push(a.into_numerator() - b.into_numerator());
-        } else {
-            let cleared =
-                FractionIdentity::new(&a, &b).map_err(|e| Error::Input(format!("{what}: {e}")))?;
-            rels.push(cleared.residual);
-            hypotheses.extend(cleared.conditions);
-        }
+        rels.push((
+            to_ratfun::<C>(a, &mut vars, &what)?,
+            to_ratfun::<C>(b, &mut vars, &what)?,
+        ));
     }
-    // A polynomial identity takes the polynomial path; fractions are cleared.
-    let fraction = if l.is_polynomial() && r.is_polynomial() && hypotheses.is_empty() {
-        None
-    } else {
-        Some(FractionIdentity::new(&l, &r).map_err(|e| Error::Input(format!("LHS - RHS: {e}")))?)
-    };
     let mut doms: Vec<(Var, Domain)> = Vec::new();
     for (v, d, text) in domains {
         let var = vars.get(v).ok_or_else(|| {
@@ -446,154 +418,75 @@ fn prove_over<C: PointField + Display>(
         })?;
         doms.push((var, d.clone()));
     }
-    let name = |v: Var| {
-        vars.name(v)
-            .expect("the engine reports only variables of the table")
-            .to_string()
+    let spec = IdentitySpec {
+        relations: rels,
+        domains: doms,
+        ..IdentitySpec::new(vars, vec![Statement::Sides(l, r)])
     };
-    let residual = match &fraction {
-        None => l.numerator().clone() - r.numerator(),
-        Some(f) => f.residual.clone(),
-    };
-    // The points excluded: the divisors of the sides and of the relations.
-    let mut excluded: Vec<Poly<C>> = fraction.iter().flat_map(|f| f.conditions.clone()).collect();
-    for h in &hypotheses {
-        if !excluded.contains(h) {
-            excluded.push(h.clone());
-        }
-    }
-    let (cleared, where_nonzero) = match &fraction {
-        None => ("", String::new()),
-        Some(_) => (
-            " with the denominators cleared",
-            where_clause(&excluded, &vars),
-        ),
-    };
-    let conditions: Vec<&str> = args.relations.iter().map(String::as_str).collect();
-    let modulo = if relations.is_empty() {
-        String::new()
-    } else {
-        let rel_texts: Vec<&str> = conditions
+    let phrasing = Phrasing {
+        voice: Voice::Prove,
+        vars: &spec.vars,
+        relations: args
+            .relations
             .iter()
-            .copied()
             .filter(|t| !t.contains(['<', '>']))
-            .collect();
-        format!(" modulo {}", rel_texts.join(", "))
+            .cloned()
+            .collect(),
+        domains: domains.iter().map(|(_, _, t)| t.clone()).collect(),
+        labels: Vec::new(),
+        corrected: Vec::new(),
     };
-    let within = if domains.is_empty() {
-        String::new()
-    } else {
-        let d: Vec<&str> = domains.iter().map(|(_, _, t)| t.as_str()).collect();
-        format!(" for {}", d.join(", "))
-    };
-    let decision = match &fraction {
-        None => decide_in(&residual, &rels, &doms, vars.len()),
-        Some(f) => decide_fraction(f, &rels, &hypotheses, &doms, vars.len()),
-    }
-    .map_err(|e| match e {
-        DecideError::Inconsistent => Error::Input(format!(
-            "--where: the relations {} are inconsistent (their Groebner basis contains a non-zero constant): no point satisfies them, so nothing can be proved from them",
-            modulo.trim_start_matches(" modulo ")
-        )),
-        DecideError::EmptyDomain(v) => Error::Input(format!("--where: the domain of {} is empty", name(v))),
-        DecideError::DuplicateDomain(v) => Error::Input(format!("--where: {} has two domains", name(v))),
-        DecideError::UnknownVariable(v) => Error::Input(format!("--where: a domain names variable #{v}, which is not in use")),
-        // The limits of a Groebner basis of the relations: say which part of the command.
-        DecideError::Limit(e) => Error::Input(format!("--where: {e}")),
+    let report = decide_identity(&spec).map_err(|e| {
+        let part = match &e {
+            EngineError::Decide(..) => "--where".to_string(),
+            EngineError::Size(Part::Relation(i), _) => format!("--where #{}", i + 1),
+            EngineError::Size(..) => "LHS - RHS".to_string(),
+        };
+        Error::Input(format!("{part}: {}", phrasing.error(&e)))
     })?;
-    let (verdict, code) = match &decision {
-        Decision::Proved { .. } => ("proved", ExitCode::SUCCESS),
-        Decision::Fails { .. } => ("fails", ExitCode::from(1)),
-        Decision::Undecided { .. } => ("undecided", ExitCode::from(1)),
+    let (verdict, code) = match &report.verdict {
+        IdentityVerdict::Proved { .. } => ("proved", ExitCode::SUCCESS),
+        IdentityVerdict::Fails { .. } => ("fails", ExitCode::from(1)),
+        IdentityVerdict::Undecided { .. } => ("undecided", ExitCode::from(1)),
     };
-    let terms = residual.len();
-    // A counter-example gives every variable of both sides, the relations and the excluded
-    // denominators (domains name only those), also those that cancel from the residual.
-    let statement: Vec<&Poly<C>> = [
-        l.numerator(),
-        l.denominator(),
-        r.numerator(),
-        r.denominator(),
-    ]
-    .into_iter()
-    .chain(&rels)
-    .chain(&excluded)
-    .collect();
-    let evidence = match &decision {
-        Decision::Proved { expanded_terms } if *expanded_terms == 0 => {
-            format!("LHS - RHS{cleared} expands to 0{where_nonzero}")
-        }
-        Decision::Proved { expanded_terms } => {
-            format!("LHS - RHS{cleared} expands to {expanded_terms} terms, which reduce to 0{modulo}{where_nonzero}")
-        }
-        Decision::Fails {
-            normal_form,
-            point,
-            value,
-        } => {
-            let at: Vec<String> = counter_example(point, &statement)
-                .iter()
-                .map(|(v, q)| format!("{} = {q}", name(*v)))
-                .collect();
-            let value = abbreviate(value.to_string());
-            let nf = abbreviate(normal_form.display(&vars).to_string());
-            if fraction.is_some() {
-                // `LHS - RHS` is the normal form over the cleared denominator.
-                format!(
-                    "at {}{} LHS - RHS = {value}; LHS - RHS{cleared} reduces{modulo} to {nf}, not zero{where_nonzero}",
-                    abbreviate(at.join(", ")),
-                    if relations.is_empty() { "" } else { " (where the relations hold)" },
-                )
-            } else if at.is_empty() {
-                // No variable: the identity is between constants, and their difference is the
-                // counter-example (old: "at  LHS - RHS = ...", an empty point).
-                format!(
-                    "LHS - RHS = {value}, a non-zero constant{}, so LHS = RHS + ({nf})",
-                    if relations.is_empty() { "" } else { " (where the relations hold)" },
-                )
-            } else {
-                format!(
-                    "at {}{} LHS - RHS = {value}; LHS - RHS reduces{modulo} to {nf}, so LHS = RHS + ({nf})",
-                    abbreviate(at.join(", ")),
-                    if relations.is_empty() { "" } else { " (where the relations hold)" },
-                )
-            }
-        }
-        Decision::Undecided {
-            normal_form,
-            searched,
-        } => format!(
-            "LHS - RHS{cleared} reduces{modulo} to {} (not zero), but no point{within} where it is non-zero was found{where_nonzero}: {searched}",
-            abbreviate(normal_form.display(&vars).to_string())
-        ),
-    };
+    let evidence = phrasing.evidence(&report);
     if args.json {
+        let vars = &spec.vars;
         let mut obj = json!({
             "verdict": verdict,
-            "method": format!("symbolic expansion over {}[{}]{modulo}{within}", if std::any::type_name::<C>().contains("Radical") { "Q(sqrt)" } else { "Q" }, vars.names().join(",")),
+            "method": phrasing.method::<C>(),
             "evidence": evidence,
-            "residual_terms": terms,
+            "residual_terms": report.residual_terms[0],
         });
-        if fraction.is_some() {
-            obj["conditions"] = excluded
+        if report.cleared_any() {
+            obj["conditions"] = report
+                .conditions
                 .iter()
-                .map(|p| json!({"nonzero": p.display(&vars).to_string(), "real_zero_free": real_zero_free(p) == Some(true)}))
+                .map(|p| json!({"nonzero": p.display(vars).to_string(), "real_zero_free": real_zero_free(p) == Some(true)}))
                 .collect::<Vec<_>>()
                 .into();
         }
-        if let Decision::Fails {
+        if let IdentityVerdict::Fails {
             point,
             value,
             normal_form,
-        } = &decision
+            ..
+        } = &report.verdict
         {
-            obj["point"] = counter_example(point, &statement)
+            obj["point"] = point
                 .iter()
-                .map(|(v, q)| (name(*v), json!(q.to_string())))
+                .map(|(v, q)| {
+                    (
+                        vars.name(*v)
+                            .expect("the engine reports only variables of the table")
+                            .to_string(),
+                        json!(q.to_string()),
+                    )
+                })
                 .collect::<serde_json::Map<_, _>>()
                 .into();
             obj["value"] = json!(value.to_string());
-            obj["normal_form"] = json!(normal_form.display(&vars).to_string());
+            obj["normal_form"] = json!(normal_form.display(vars).to_string());
         }
         crate::output::println(&obj)?;
     } else {

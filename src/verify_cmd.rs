@@ -13,7 +13,9 @@ use std::process::ExitCode;
   exactcheck verify --only spaeth --json     Spaeth's claims as JSON
   exactcheck verify examples/spaeth.toml     the claims of a file (TOML or JSON; see the README)
 
-Exit status: 0 when every claim has its expected verdict, 1 otherwise, 2 for a bad file or argument.")]
+Exit status: 0 when every claim has its expected verdict, 1 otherwise, 2 for a bad file or argument
+(a claims file with a claim that cannot be built or decided: that claim's verdict is `error`, the
+others are decided and reported, and the status is 2).")]
 pub struct VerifyArgs {
     /// A claims file (`.toml` or `.json`): check its claims instead of the built-in catalogue.
     pub file: Option<PathBuf>,
@@ -29,7 +31,8 @@ pub struct VerifyArgs {
     pub only: Option<String>,
 }
 
-/// Runs `exactcheck verify`: exit status 0 when every verdict is the expected one, else 1.
+/// Runs `exactcheck verify`: exit status 0 when every verdict is the expected one, 2 when a
+/// claim of the file is bad input (verdict `error`), else 1.
 ///
 /// # Errors
 /// [`Error::Usage`] for a prefix no claim has; [`Error::Io`] / [`Error::Input`] for a claims
@@ -40,7 +43,12 @@ pub fn run(args: &VerifyArgs) -> Result<ExitCode, Error> {
         None => crate::claims::verify_with(args.only.as_deref(), false)?,
         Some(path) => {
             let file = crate::claimfile::load(path)?;
-            crate::claimfile::check_with(&file, args.only.as_deref(), false)?
+            let rows = crate::claimfile::check_with(&file, args.only.as_deref(), false)?;
+            // Warnings about names go with a report, not with a refusal (one line).
+            for w in &file.warnings {
+                eprintln!("exactcheck: warning: {w}");
+            }
+            rows
         }
     };
     if args.json {
@@ -51,7 +59,11 @@ pub fn run(args: &VerifyArgs) -> Result<ExitCode, Error> {
     } else {
         crate::output::println(crate::claims::table(&rows))?;
     }
-    Ok(if rows.iter().all(|r| r.as_expected()) {
+    Ok(if rows.iter().any(|r| r.bad_input) {
+        // A claim of the file cannot be built or decided: bad input, though the others were
+        // decided and reported.
+        ExitCode::from(2)
+    } else if rows.iter().all(|r| r.as_expected()) {
         ExitCode::SUCCESS
     } else {
         ExitCode::from(1)

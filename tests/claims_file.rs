@@ -266,6 +266,11 @@ fn bad_files_are_one_line_with_file_line_and_key() {
         ),
         ("json_syntax.json", 4, "claim #1: JSON: expected `,` or `}`"),
         (
+            "pi_variable.toml",
+            4,
+            "claim \"area\": key lhs: pi is the constant pi, not a variable",
+        ),
+        (
             "bad_latex.toml",
             7,
             "claim \"bad.latex\": key latex.s: notation s = \"\\\\input{/etc/passwd}\": the command \\input is not accepted",
@@ -299,11 +304,12 @@ fn on_threads<R: Send>(threads: usize, f: impl FnOnce() -> R + Send) -> R {
         .install(f)
 }
 
-/// Claims are checked in parallel, but a fault of the file found while checking is reported
-/// for the first faulty claim in file order, whatever the number of threads; within a claim,
-/// the first faulty instance is the one named.
+/// Claims are checked in parallel; a claim with a fault found while checking is a row with the
+/// verdict `error` and its one-line message (the first faulty instance of the claim named),
+/// the others are decided, whatever the number of threads. When no chosen claim can be
+/// decided, the file is refused with the first claim's message.
 #[test]
-fn the_first_fault_in_file_order_is_reported_on_any_number_of_threads() {
+fn faults_found_while_checking_are_error_rows_on_any_number_of_threads() {
     let text = r#"
 [[claim]]
 id = "a"
@@ -333,16 +339,38 @@ where = ["c^2 + s^2 = 1"]
 at = [{ c = 1, s = 1 }]
 "#;
     let file = claimfile::parse(text, "p.toml", "p").expect("the file loads");
-    let expected = "p.toml:13: claim \"b\": key at: instance 2 gives no value to y";
     for threads in [1, 2, 4, 8] {
-        for _ in 0..5 {
-            let e = on_threads(threads, || claimfile::check(&file, None))
-                .err()
-                .expect("a fault of the file");
-            assert_eq!(e.to_string(), expected, "{threads} threads");
+        for _ in 0..3 {
+            let rows = on_threads(threads, || claimfile::check(&file, None)).expect("rows");
+            let shown: Vec<(String, String, bool)> = rows
+                .iter()
+                .map(|r| {
+                    let j = r.to_json();
+                    (
+                        j["verdict"].as_str().unwrap().to_string(),
+                        j["evidence"].as_str().unwrap().to_string(),
+                        r.bad_input,
+                    )
+                })
+                .collect();
+            assert_eq!(shown[0].0, "proved", "{threads} threads");
+            assert_eq!(
+                (shown[1].0.as_str(), shown[1].1.as_str(), shown[1].2),
+                (
+                    "error",
+                    "p.toml:13: claim \"b\": key at: instance 2 gives no value to y",
+                    true
+                ),
+                "{threads} threads"
+            );
+            assert_eq!(shown[2].0, "proved", "{threads} threads");
+            assert_eq!(shown[3].0, "error", "{threads} threads");
+            assert!(shown[3]
+                .1
+                .contains("claim \"d\": key at: instance 1 does not satisfy"));
         }
     }
-    // Without b, d's fault is the first.
+    // Only d: nothing can be decided, so the file is refused with d's message.
     let e = on_threads(4, || claimfile::check(&file, Some("d")))
         .err()
         .expect("a fault of the file");
@@ -350,6 +378,77 @@ at = [{ c = 1, s = 1 }]
         e.to_string()
             .contains("claim \"d\": key at: instance 1 does not satisfy"),
         "{e}"
+    );
+}
+
+/// A claim that cannot be built does not sink the file: it is the row `error` with its
+/// one-line message, the other claims are decided, and the exit status is 2.
+#[test]
+fn one_bad_claim_does_not_sink_the_file() {
+    let out = exactcheck(&["verify", "tests/claims_file/one_broken.toml", "--json"]);
+    assert_eq!(out.status.code(), Some(2), "{out:?}");
+    let rows: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON rows");
+    let verdicts: Vec<&str> = rows
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|r| r["verdict"].as_str().unwrap())
+        .collect();
+    assert_eq!(verdicts, ["proved", "error", "holds"]);
+    let message = rows[1]["evidence"].as_str().unwrap();
+    assert!(
+        message.starts_with(
+            "tests/claims_file/one_broken.toml:16: claim \"bad.formula\": key lhs: unexpected ')' at 11"
+        ),
+        "{message}"
+    );
+    assert_eq!(rows[1]["as_expected"], false);
+    let out = exactcheck(&["verify", "tests/claims_file/one_broken.toml"]);
+    assert_eq!(out.status.code(), Some(2));
+    let table = String::from_utf8_lossy(&out.stdout);
+    assert!(table.contains("bad.formula  error"), "{table}");
+    assert!(table.contains("3 claims, 2 as expected"), "{table}");
+}
+
+/// A corrected form that is not proved equal to `rhs` makes the claim not as expected, even
+/// when its verdict is the expected one.
+#[test]
+fn a_wrong_correction_makes_the_claim_not_as_expected() {
+    let out = exactcheck(&["verify", "tests/claims_file/corrected_wrong.toml", "--json"]);
+    assert_eq!(out.status.code(), Some(1), "{out:?}");
+    let rows: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON rows");
+    let row = &rows[0];
+    assert_eq!(row["verdict"], "fails");
+    assert_eq!(row["expected"], "fails");
+    assert_eq!(row["as_expected"], false);
+    let problem = row["problem"].as_str().expect("a problem");
+    assert!(problem.starts_with("it differs from RHS by "), "{problem}");
+    assert!(row["evidence"]
+        .as_str()
+        .unwrap()
+        .contains("(The given correction does not match RHS either: it differs from RHS by"));
+    let out = exactcheck(&["verify", "tests/claims_file/corrected_wrong.toml"]);
+    let table = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        table.contains("<< not as expected: it differs from RHS by"),
+        "{table}"
+    );
+}
+
+/// Near misses of defined and declared names are warned about (standard error), the claims
+/// are still decided.
+#[test]
+fn near_miss_names_are_warned_about() {
+    let out = exactcheck(&["verify", "tests/claims_file/near_miss.toml"]);
+    assert_eq!(out.status.code(), Some(0), "{out:?}");
+    let err = String::from_utf8_lossy(&out.stderr);
+    let warnings: Vec<&str> = err.lines().filter(|l| l.contains("warning")).collect();
+    assert_eq!(
+        warnings,
+        [
+            "exactcheck: warning: tests/claims_file/near_miss.toml:9: claim \"typo.define\": Aa is neither defined nor a declared variable; did you mean A (defined)?",
+            "exactcheck: warning: tests/claims_file/near_miss.toml:15: claim \"typo.declared\": thetaa is neither defined nor a declared variable; did you mean theta (a declared variable)?",
+        ]
     );
 }
 

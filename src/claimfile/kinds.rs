@@ -10,12 +10,12 @@ use crate::claims::{printed, Equation, Erratum, Outcome, Verdict};
 use crate::prove_cmd::{parse_where_with, Where};
 use crate::Error;
 use exactcheck_core::Ring;
-use exactcheck_exact::expr::{parse_expr, AddOp, Coefficient, Expr, ExprKind};
+use exactcheck_exact::expr::{first_reserved, parse_expr, AddOp, Coefficient, Expr, ExprKind};
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
-    counter_example, decide_fraction, decide_in, random_identity_test, unit_circle_pairs,
-    where_clause, DecideError, Decision, Domain, FractionIdentity, PointField, RandomDecision,
-    Seed, HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
+    decide_identity, random_identity_test, unit_circle_pairs, CorrectionVerdict, Domain,
+    EngineError, IdentitySpec, IdentityVerdict, Part, Phrasing, PointField, RandomDecision, Seed,
+    Statement, Voice, HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
 };
 use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::{Radical, Rational};
@@ -75,6 +75,38 @@ pub enum Check {
     },
 }
 
+impl Check {
+    /// The formulas of the claim after definitions are substituted (sides, corrected form,
+    /// relations, value, instance values): what its free variables are read from.
+    pub fn formulas(&self) -> Vec<&Expr> {
+        fn relations(c: &Conditions) -> Vec<&Expr> {
+            c.relations.iter().flat_map(|(a, b)| [a, b]).collect()
+        }
+        match self {
+            Check::Identity {
+                lhs,
+                rhs,
+                conditions,
+                corrected,
+                ..
+            } => lhs
+                .iter()
+                .chain(rhs)
+                .chain(corrected.iter().flatten())
+                .chain(relations(conditions))
+                .collect(),
+            Check::Value { expr, .. } => vec![expr],
+            Check::Instances {
+                lhs,
+                rhs,
+                conditions,
+                ..
+            } => lhs.iter().chain(rhs).chain(relations(conditions)).collect(),
+            Check::Solve { .. } => Vec::new(),
+        }
+    }
+}
+
 const IDENTITY_KEYS: [&str; 7] = [
     "name",
     "lhs",
@@ -125,10 +157,13 @@ pub fn build(c: &RawClaim, defs: &RefCell<Defs>) -> Built<Check> {
         ));
     }
     let resolve = |key: &'static str, text: &str| -> Built<Vec<Expr>> {
-        defs.borrow_mut()
+        let v = defs
+            .borrow_mut()
             .resolve_text(text)
             .map(|v| v.components())
-            .map_err(|e| (key, e.message))
+            .map_err(|e| (key, e.message))?;
+        no_reserved(key, &v)?;
+        Ok(v)
     };
     let required = |key: &'static str, v: &Option<String>| -> Built<String> {
         v.clone()
@@ -272,6 +307,7 @@ pub fn build(c: &RawClaim, defs: &RefCell<Defs>) -> Built<Check> {
                 .borrow_mut()
                 .resolve_scalar(&required("expr", &c.expr)?)
                 .map_err(|e| ("expr", e.message))?;
+            no_reserved("expr", std::slice::from_ref(&expr))?;
             let printed = c
                 .printed
                 .as_ref()
@@ -321,13 +357,27 @@ pub fn build(c: &RawClaim, defs: &RefCell<Defs>) -> Built<Check> {
     })
 }
 
+/// Refuses a free variable `pi`, `e` or `i` in the resolved formulas of `key`
+/// ([`reserved_constant`](exactcheck_exact::expr::reserved_constant)).
+fn no_reserved(key: &'static str, exprs: &[Expr]) -> Built<()> {
+    match first_reserved(exprs) {
+        Some(why) => Err((key, why.to_string())),
+        None => Ok(()),
+    }
+}
+
 /// `where` and `domains`, parsed as `prove --where` parses them.
 fn conditions(c: &RawClaim, defs: &RefCell<Defs>) -> Built<Conditions> {
     let mut out = Conditions::default();
     let parse = |text: &str, what: &str| -> Result<Expr, Error> {
-        defs.borrow_mut()
+        let e = defs
+            .borrow_mut()
             .resolve_scalar(text)
-            .map_err(|e| Error::Input(format!("{what}: {}", e.message)))
+            .map_err(|e| Error::Input(format!("{what}: {}", e.message)))?;
+        match first_reserved([&e]) {
+            Some(why) => Err(Error::Input(format!("{what}: {why}"))),
+            None => Ok(e),
+        }
     };
     let lists: [(&'static str, &Option<Vec<String>>); 2] =
         [("where", &c.where_), ("domains", &c.domains)];
@@ -365,23 +415,27 @@ fn conditions(c: &RawClaim, defs: &RefCell<Defs>) -> Built<Conditions> {
     Ok(out)
 }
 
-/// Decides a claim.
-pub fn run(check: &Check, notation: &[(String, String)]) -> Result<Outcome, Fault> {
-    let mut out = match check {
+/// Decides a claim: its outcome and, for an identity with a `corrected` form not proved equal
+/// to its `rhs`, why (the claim is then not as expected, whatever its verdict).
+pub fn run(
+    check: &Check,
+    notation: &[(String, String)],
+) -> Result<(Outcome, Option<String>), Fault> {
+    let (mut out, problem) = match check {
         Check::Identity { radical: true, .. } => identity::<Radical>(check)?,
         Check::Identity { .. } => identity::<Rational>(check)?,
         Check::Value {
             expr,
             name,
             printed,
-        } => value(expr, name.as_ref(), printed)?,
-        Check::Instances { .. } => instances(check)?,
-        Check::Solve { problem, fields } => solve(problem, fields)?,
+        } => (value(expr, name.as_ref(), printed)?, None),
+        Check::Instances { .. } => (instances(check)?, None),
+        Check::Solve { problem, fields } => (solve(problem, fields)?, None),
     };
     if let Some(e) = out.erratum.as_mut() {
         e.notation = notation.to_vec();
     }
-    Ok(out)
+    Ok((out, problem))
 }
 
 fn num(q: Rational) -> Expr {
@@ -415,21 +469,14 @@ fn to_ratfun<C: Coefficient + exactcheck_core::Field>(
         .map_err(|err| Fault::Input(key, err.to_string()))
 }
 
-/// `a = b` with the denominators cleared (a product past a limit is the fault of `key`).
-fn clear<C: exactcheck_core::Field>(
-    a: &RatFun<C>,
-    b: &RatFun<C>,
-    key: &'static str,
-) -> Result<FractionIdentity<C>, Fault> {
-    FractionIdentity::new(a, b).map_err(|e| Fault::Input(key, e.to_string()))
-}
-
 fn to_poly<C: Coefficient>(e: &Expr, vars: &mut Vars, key: &'static str) -> Result<Poly<C>, Fault> {
     e.to_poly::<C>(vars)
         .map_err(|err| Fault::Input(key, err.to_string()))
 }
 
-fn identity<C: PointField + Display>(check: &Check) -> Result<Outcome, Fault> {
+/// An identity claim through the identity engine; with the outcome, why the claim's corrected
+/// form is not proved equal to its `rhs` (if it is not).
+fn identity<C: PointField + Display>(check: &Check) -> Result<(Outcome, Option<String>), Fault> {
     let Check::Identity {
         lhs,
         rhs,
@@ -442,11 +489,11 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<Outcome, Fault> {
         unreachable!("identity() is called for identity claims")
     };
     let mut vars = Vars::new();
-    let mut sides = Vec::new();
+    let mut coordinates = Vec::new();
     for (l, r) in lhs.iter().zip(rhs) {
         let l = to_ratfun::<C>(l, &mut vars, "lhs")?;
         let r = to_ratfun::<C>(r, &mut vars, "rhs")?;
-        sides.push((l, r));
+        coordinates.push(Statement::Sides(l, r));
     }
     let corrected_fns = match corrected {
         Some(xs) => Some(
@@ -456,51 +503,14 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<Outcome, Fault> {
         ),
         None => None,
     };
-    // Relations between fractions are cleared of their denominators, which become hypotheses
-    // (non-zero).
-    let mut rels = Vec::new();
-    let mut hypotheses: Vec<Poly<C>> = Vec::new();
+    let mut relations = Vec::new();
     for (a, b) in &conditions.relations {
-        let a = to_ratfun::<C>(a, &mut vars, "where")?;
-        let b = to_ratfun::<C>(b, &mut vars, "where")?;
-        if a.is_polynomial() && b.is_polynomial() {
-            rels.push(a.into_numerator() - b.into_numerator());
-        } else {
-            let cleared = clear(&a, &b, "where")?;
-            rels.push(cleared.residual);
-            hypotheses.extend(cleared.conditions);
-        }
+        relations.push((
+            to_ratfun::<C>(a, &mut vars, "where")?,
+            to_ratfun::<C>(b, &mut vars, "where")?,
+        ));
     }
-    // `l = r`: a polynomial residual, or (with a fraction anywhere) the cleared identity.
-    let pair =
-        |l: &RatFun<C>, r: &RatFun<C>| -> Result<(Poly<C>, Option<FractionIdentity<C>>), Fault> {
-            if l.is_polynomial() && r.is_polynomial() && hypotheses.is_empty() {
-                Ok((l.numerator().clone() - r.numerator(), None))
-            } else {
-                let f = clear(l, r, "lhs")?;
-                Ok((f.residual.clone(), Some(f)))
-            }
-        };
-    let mut residuals = Vec::new();
-    let mut fractions = Vec::new();
-    for (l, r) in &sides {
-        let (res, f) = pair(l, r)?;
-        residuals.push(res);
-        fractions.push(f);
-    }
-    let mut excluded: Vec<Poly<C>> = Vec::new();
-    for p in fractions
-        .iter()
-        .flatten()
-        .flat_map(|f| &f.conditions)
-        .chain(&hypotheses)
-    {
-        if !excluded.contains(p) {
-            excluded.push(p.clone());
-        }
-    }
-    let where_nonzero = where_clause(&excluded, &vars);
-    let mut doms: Vec<(Var, Domain)> = Vec::new();
+    let mut domains: Vec<(Var, Domain)> = Vec::new();
     for (v, d, text) in &conditions.domains {
         let var = vars.get(v).ok_or_else(|| {
             Fault::Input(
@@ -508,246 +518,116 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<Outcome, Fault> {
                 format!("{text:?}: {v} does not occur in the identity or its relations"),
             )
         })?;
-        doms.push((var, d.clone()));
+        domains.push((var, d.clone()));
     }
-    let modulo = if conditions.relation_texts.is_empty() {
-        String::new()
-    } else {
-        format!(" modulo {}", conditions.relation_texts.join(", "))
+    let spec = IdentitySpec {
+        relations,
+        domains,
+        corrected: corrected_fns,
+        ..IdentitySpec::new(vars, coordinates)
     };
-    let within = if conditions.domains.is_empty() {
-        String::new()
-    } else {
-        let d: Vec<&str> = conditions
+    let phrasing = Phrasing {
+        voice: Voice::ClaimsFile,
+        vars: &spec.vars,
+        relations: conditions.relation_texts.clone(),
+        domains: conditions
             .domains
             .iter()
-            .map(|(_, _, t)| t.as_str())
-            .collect();
-        format!(" for {}", d.join(", "))
+            .map(|(_, _, t)| t.clone())
+            .collect(),
+        labels: Vec::new(),
+        corrected: corrected
+            .iter()
+            .flatten()
+            .map(ToString::to_string)
+            .collect(),
     };
-    let field = if std::any::type_name::<C>().contains("Radical") {
-        "Q(sqrt)"
-    } else {
-        "Q"
-    };
-    let method = format!(
-        "symbolic expansion over {field}[{}]{modulo}{within}",
-        vars.names().join(",")
-    );
-    let decide = |p: &Poly<C>, f: Option<&FractionIdentity<C>>| -> Result<Decision<C>, Fault> {
-        match f {
-            None => decide_in(p, &rels, &doms, vars.len()),
-            Some(f) => decide_fraction(f, &rels, &hypotheses, &doms, vars.len()),
-        }
-        .map_err(|e| {
-            Fault::Input(
-                "where",
-                match e {
-                    DecideError::Inconsistent => format!(
-                        "the relations{modulo} are inconsistent (no point satisfies them, so nothing can be proved from them)"
-                    ),
-                    other => other.to_string(),
-                },
-            )
-        })
-    };
-    let name = |v: Var| {
-        vars.name(v)
-            .expect("the engine reports only variables of the table")
-            .to_string()
-    };
-    let cleared = |k: usize| {
-        if fractions.get(k).is_some_and(Option::is_some) {
-            " with the denominators cleared"
-        } else {
-            ""
-        }
-    };
-    let cleared_any = if fractions.iter().any(Option::is_some) {
-        " with the denominators cleared"
-    } else {
-        ""
-    };
-    let coordinate = |k: usize| {
-        if lhs.len() == 1 {
-            String::new()
-        } else {
-            format!("coordinate {}: ", k + 1)
-        }
-    };
-    let mut terms = 0;
-    for (k, res) in residuals.iter().enumerate() {
-        match decide(res, fractions[k].as_ref())? {
-            Decision::Proved { expanded_terms } => terms += expanded_terms,
-            Decision::Undecided {
-                normal_form,
-                searched,
-            } => {
-                return Ok(Outcome {
-                    verdict: Verdict::Undecided,
-                    method,
-                    evidence: format!(
-                        "{}LHS - RHS{} reduces{modulo} to {} (not zero), but no point{within} where it is non-zero was found{where_nonzero}: {searched}",
-                        coordinate(k),
-                        cleared(k),
-                        normal_form.display(&vars)
-                    ),
-                    erratum: None,
-                })
-            }
-            Decision::Fails {
-                normal_form,
-                point,
-                value,
-            } => {
-                // Every variable of the sides (all coordinates, numerators and denominators),
-                // the relations and the excluded denominators; domains name only those.
-                let statement: Vec<&Poly<C>> = sides
-                    .iter()
-                    .flat_map(|(l, r)| {
-                        [l.numerator(), l.denominator(), r.numerator(), r.denominator()]
-                    })
-                    .chain(&rels)
-                    .chain(&excluded)
-                    .collect();
-                let point: Vec<(String, Radical)> = counter_example(&point, &statement)
-                    .into_iter()
-                    .map(|(v, q)| (name(v), q))
-                    .collect();
-                let at: Vec<String> = point.iter().map(|(v, q)| format!("{v} = {q}")).collect();
-                let nf = normal_form.display(&vars).to_string();
-                let mut evidence = format!(
-                    "{}{}{} LHS - RHS = {value}; LHS - RHS{} reduces{modulo} to {nf}{}",
-                    coordinate(k),
-                    if at.is_empty() {
-                        "everywhere".to_string()
-                    } else {
-                        format!("at {}", at.join(", "))
-                    },
-                    if rels.is_empty() { "" } else { " (where the relations hold)" },
-                    cleared(k),
-                    where_nonzero,
-                );
-                let mut counter_example = Vec::new();
-                for (v, q) in &point {
-                    counter_example.push(Equation {
-                        lhs: var(v),
-                        rhs: value_expr(q)?,
-                    });
-                }
-                let printed: Vec<Equation> = if names.is_empty() {
-                    lhs.iter()
-                        .zip(rhs)
-                        .map(|(l, r)| Equation {
-                            lhs: l.clone(),
-                            rhs: r.clone(),
-                        })
-                        .collect()
-                } else {
-                    names
-                        .iter()
-                        .zip(lhs)
-                        .map(|(n, l)| Equation {
-                            lhs: n.clone(),
-                            rhs: l.clone(),
-                        })
-                        .collect()
-                };
-                let mut erratum = Erratum {
-                    printed,
-                    correction: if fractions[k].is_some() {
-                        format!("LHS - RHS{} reduces{modulo} to {nf}", cleared(k))
-                    } else {
-                        format!("LHS - RHS reduces{modulo} to {nf}, so LHS = RHS + ({nf})")
-                    },
-                    counter_example,
-                    residual: vec![Equation {
-                        lhs: difference(&lhs[k], &rhs[k]),
-                        rhs: value_expr(&value)?,
-                    }],
-                    ..Erratum::default()
-                };
-                if let (Some(cp), Some(cx)) = (&corrected_fns, corrected) {
-                    let mut failed = None;
-                    for (j, (c, (_, r))) in cp.iter().zip(&sides).enumerate() {
-                        let (res, f) = pair(c, r)?;
-                        match decide(&res, f.as_ref())? {
-                            Decision::Proved { .. } => {}
-                            Decision::Fails { value, .. } => {
-                                failed = Some(format!("{}it differs from RHS by {value} at a point", coordinate(j)));
-                                break;
-                            }
-                            Decision::Undecided { normal_form, .. } => {
-                                failed = Some(format!(
-                                    "{}corrected - RHS reduces to {} (undecided)",
-                                    coordinate(j),
-                                    normal_form.display(&vars)
-                                ));
-                                break;
-                            }
-                        }
-                    }
-                    match failed {
-                        None => {
-                            let shown: Vec<String> = cx.iter().map(ToString::to_string).collect();
-                            evidence += &format!(
-                                ". Corrected form (proved equal to RHS{modulo}{within}): {}",
-                                shown.join(", ")
-                            );
-                            erratum.corrected = cx
-                                .iter()
-                                .enumerate()
-                                .map(|(j, x)| match names.get(j) {
-                                    Some(n) => Equation {
-                                        lhs: n.clone(),
-                                        rhs: x.clone(),
-                                    },
-                                    None => Equation {
-                                        lhs: x.clone(),
-                                        rhs: rhs[j].clone(),
-                                    },
-                                })
-                                .collect();
-                            erratum.correction = format!(
-                                "the corrected form is proved equal to RHS{modulo}; the printed LHS differs from RHS by {nf}"
-                            );
-                        }
-                        Some(why) => {
-                            evidence +=
-                                &format!(". (The given correction does not match RHS either: {why})");
-                        }
-                    }
-                }
-                return Ok(Outcome {
-                    verdict: Verdict::Fails,
-                    method,
-                    evidence,
-                    erratum: Some(Box::new(erratum)),
+    let report = decide_identity(&spec).map_err(|e| {
+        let key = match &e {
+            EngineError::Size(Part::Relation(_), _) | EngineError::Decide(..) => "where",
+            EngineError::Size(..) => "lhs",
+        };
+        Fault::Input(key, phrasing.error(&e))
+    })?;
+    let method = phrasing.method::<C>();
+    let evidence = phrasing.evidence(&report);
+    let correction_problem = phrasing.correction_problem(&report);
+    let (verdict, erratum) = match &report.verdict {
+        IdentityVerdict::Proved { .. } => (Verdict::Proved, None),
+        IdentityVerdict::Undecided { .. } => (Verdict::Undecided, None),
+        IdentityVerdict::Fails {
+            coordinate: k,
+            point,
+            value,
+            ..
+        } => {
+            let mut counter_example = Vec::new();
+            for (v, q) in point {
+                let name = spec
+                    .vars
+                    .name(*v)
+                    .expect("the engine reports only variables of the table");
+                counter_example.push(Equation {
+                    lhs: var(name),
+                    rhs: value_expr(q)?,
                 });
             }
+            let printed: Vec<Equation> = if names.is_empty() {
+                lhs.iter()
+                    .zip(rhs)
+                    .map(|(l, r)| Equation {
+                        lhs: l.clone(),
+                        rhs: r.clone(),
+                    })
+                    .collect()
+            } else {
+                names
+                    .iter()
+                    .zip(lhs)
+                    .map(|(n, l)| Equation {
+                        lhs: n.clone(),
+                        rhs: l.clone(),
+                    })
+                    .collect()
+            };
+            let mut erratum = Erratum {
+                printed,
+                correction: phrasing.erratum_correction(&report),
+                counter_example,
+                residual: vec![Equation {
+                    lhs: difference(&lhs[*k], &rhs[*k]),
+                    rhs: value_expr(value)?,
+                }],
+                ..Erratum::default()
+            };
+            if let (Some(CorrectionVerdict::Proved), Some(cx)) = (&report.correction, corrected) {
+                erratum.corrected = cx
+                    .iter()
+                    .enumerate()
+                    .map(|(j, x)| match names.get(j) {
+                        Some(n) => Equation {
+                            lhs: n.clone(),
+                            rhs: x.clone(),
+                        },
+                        None => Equation {
+                            lhs: x.clone(),
+                            rhs: rhs[j].clone(),
+                        },
+                    })
+                    .collect();
+            }
+            (Verdict::Fails, Some(Box::new(erratum)))
         }
-    }
-    let n = residuals.len();
-    Ok(Outcome {
-        verdict: Verdict::Proved,
-        method,
-        evidence: match (terms, n) {
-            (0, 1) => format!("LHS - RHS{} expands to 0{where_nonzero}", cleared_any),
-            (0, n) => format!(
-                "LHS - RHS{} expands to 0 in each of the {n} coordinates{where_nonzero}",
-                cleared_any
-            ),
-            (t, 1) => format!(
-                "LHS - RHS{} expands to {t} terms, which reduce to 0{modulo}{where_nonzero}",
-                cleared_any
-            ),
-            (t, n) => format!(
-                "LHS - RHS{} expands to {t} terms in the {n} coordinates, which reduce to 0{modulo}{where_nonzero}",
-                cleared_any
-            ),
+    };
+    Ok((
+        Outcome {
+            verdict,
+            method,
+            evidence,
+            erratum,
         },
-        erratum: None,
-    })
+        correction_problem,
+    ))
 }
 
 fn value(expr: &Expr, name: Option<&Expr>, printed_list: &[String]) -> Result<Outcome, Fault> {

@@ -11,7 +11,7 @@
 //! [define]                       # optional: the paper's notation, typed once
 //! X = "a + r*ct"                 # a scalar
 //! v = ["X", "b + r*st", "u"]     # a vector (one formula per coordinate)
-//! F = "norm2(v - vec(d, e, f)) - R^2"
+//! F = "norm2(v - vec(d, h, f)) - R^2"
 //!
 //! [latex]                        # optional: LaTeX of names for the report (`ct = '\cos t'`)
 //!
@@ -66,10 +66,26 @@
 //!   mismatch.
 //!
 //! Without `expect`, proved and holds count as expected and fails and undecided do not; with
-//! it, the verdict must equal it. `verify FILE` exits 0 iff every claim is as expected.
+//! it, the verdict must equal it. An `identity` whose `corrected` form is not proved equal to
+//! its `rhs` is not as expected, whatever its verdict. `verify FILE` exits 0 iff every claim is
+//! as expected.
+//!
+//! # Bad claims and names
+//! A claim that cannot be built (a bad formula or key) or decided (inconsistent relations, an
+//! instance off its relations) gets the verdict `error` with its one-line message; the other
+//! claims are decided and reported, and `verify` exits with status 2. A file with no claim that
+//! can be decided is refused with the first claim's message (one line, status 2).
+//!
+//! `pi`, `e` and `i` are constants, never free variables: a formula using one as a variable is
+//! a bad claim. `variables = ["x", "t"]` (at the top of the file, for every claim, and in a
+//! claim, for that claim) declares the variables; any other free name then gets a warning on
+//! standard error, with its near misses (`Aa` for the defined `A`, see [`names`]). Without a
+//! declaration, a name used by one claim only that is a near miss of a defined name or of
+//! another claim's variable gets that warning.
 
 pub mod defs;
 mod kinds;
+mod names;
 mod read;
 
 use crate::claims::{Checked, Outcome, Verdict};
@@ -83,7 +99,6 @@ use serde_json::Value;
 use std::cell::RefCell;
 use std::collections::HashMap;
 use std::path::Path;
-use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
 
 /// A claims file, read and resolved: every formula is parsed and its definitions substituted.
@@ -96,6 +111,8 @@ pub struct ClaimsFile {
     pub notation: Vec<(String, String)>,
     /// The claims in file order.
     pub claims: Vec<FileClaim>,
+    /// Warnings about names (a free variable that may be a typo, see [`names`]), one line each.
+    pub warnings: Vec<String>,
 }
 
 /// `[paper]`.
@@ -125,7 +142,9 @@ pub struct FileClaim {
     pub line: usize,
     /// The line of each key of the claim.
     key_lines: HashMap<String, usize>,
-    check: Check,
+    /// The check, or the one-line error (`FILE:LINE: claim "ID": key KEY: WHAT`) of a claim
+    /// that cannot be built: that claim gets the verdict `error`, the others are decided.
+    check: Result<Check, String>,
 }
 
 impl FileClaim {
@@ -229,6 +248,24 @@ pub fn parse(text: &str, file: &str, default_name: &str) -> Result<ClaimsFile, E
             e.message,
         )
     })?;
+    // Declared variables: names of the syntax, not defined, not a constant.
+    let declared_ok = |list: &[String], defs: &Defs| -> Result<(), String> {
+        for v in list {
+            if !names::is_name(v) {
+                return Err(format!("{v:?} is not a variable name"));
+            }
+            if let Some(why) = exactcheck_exact::expr::reserved_constant(v) {
+                return Err(why.to_string());
+            }
+            if defs.is_defined(v) {
+                return Err(format!("{v} is a defined name, not a variable"));
+            }
+        }
+        Ok(())
+    };
+    if let Some(list) = &raw.variables {
+        declared_ok(list, &defs).map_err(|m| fail("variables", m))?;
+    }
     let defs = RefCell::new(defs);
     let mut claims: Vec<FileClaim> = Vec::new();
     // Each id and the line of its claim, to find a duplicate without a scan per claim.
@@ -264,11 +301,23 @@ pub fn parse(text: &str, file: &str, default_name: &str) -> Result<ClaimsFile, E
             }
         };
         let mut claim_notation = notation.clone();
-        for (k, v) in notation_of(c.latex.as_ref(), &format!("{base}.latex"), &fail)? {
-            claim_notation.retain(|(n, _)| *n != k);
-            claim_notation.push((k, v));
-        }
-        let check = kinds::build(c, &defs).map_err(|(key, m)| key_fail(key, m))?;
+        // A claim that cannot be built (bad notation, formula, key) keeps its error; the rest
+        // of the file is still decided.
+        let check = notation_of(c.latex.as_ref(), &format!("{base}.latex"), &fail)
+            .and_then(|own| {
+                for (k, v) in own {
+                    claim_notation.retain(|(n, _)| *n != k);
+                    claim_notation.push((k, v));
+                }
+                if let Some(list) = &c.variables {
+                    declared_ok(list, &defs.borrow()).map_err(|m| key_fail("variables", m))?;
+                }
+                kinds::build(c, &defs).map_err(|(key, m)| key_fail(key, m))
+            })
+            .map_err(|e| match e {
+                Error::Input(m) => m,
+                other => other.to_string(),
+            });
         let mut key_lines = HashMap::new();
         for key in read::present_keys(c) {
             key_lines.insert(key.to_string(), index.line(&format!("{base}.{key}")));
@@ -286,11 +335,29 @@ pub fn parse(text: &str, file: &str, default_name: &str) -> Result<ClaimsFile, E
             check,
         });
     }
+    let named: Vec<names::ClaimNames<'_>> = claims
+        .iter()
+        .zip(&raw.claim)
+        .filter_map(|(c, r)| {
+            let check = c.check.as_ref().ok()?;
+            let mut free = Vec::new();
+            for e in check.formulas() {
+                e.collect_variables(&mut free);
+            }
+            Some(names::ClaimNames {
+                label: format!("{file}:{}: claim {:?}", c.line, c.id),
+                free,
+                declared: r.variables.as_deref(),
+            })
+        })
+        .collect();
+    let warnings = names::warnings(&named, &defs.borrow().names(), raw.variables.as_deref());
     Ok(ClaimsFile {
         path: file.to_string(),
         paper,
         notation,
         claims,
+        warnings,
     })
 }
 
@@ -323,8 +390,10 @@ fn notation_of(
 ///
 /// # Errors
 /// [`Error::Usage`] when no id starts with `only`; [`Error::Input`] (one line with file, line,
-/// claim and key) for what only checking finds wrong in the file: inconsistent relations, an
-/// instance off the relations or missing a variable, a `solve` problem the solver refuses.
+/// claim and key) when no chosen claim can be built or decided (a bad formula; inconsistent
+/// relations, an instance off the relations or missing a variable, a `solve` problem the solver
+/// refuses). When some can, the others are rows with the verdict `error` and
+/// [`Checked::bad_input`] set.
 pub fn check(file: &ClaimsFile, only: Option<&str>) -> Result<Vec<Checked>, Error> {
     check_with(file, only, true)
 }
@@ -355,42 +424,48 @@ pub fn check_with(
     }
     let steps = crate::output::Steps::new(chosen.len() as u64, quiet);
     // The claims are independent: checked in parallel on rayon's pool, then read in file order.
-    // A fault of the file found while checking is reported for the first such claim in file
-    // order (as when the claims ran one after another): once claim `i` has found one, claims
-    // after `i` that have not started are skipped (their rows are never read), claims before
-    // `i` still run.
-    let first_fault = AtomicUsize::new(usize::MAX);
-    let runs: Vec<Option<(Result<Outcome, Fault>, f64)>> = chosen
+    // A claim that cannot be built or decided (a bad formula; inconsistent relations, an
+    // instance off its relations, a problem the solver refuses) gets the verdict `error` with
+    // its one-line message, and the others are decided.
+    // The error of a run: its message, and whether it is the claim's bad input (not a failure
+    // of the check itself).
+    type Run = Result<(Outcome, Option<String>), (String, bool)>;
+    let runs: Vec<(Run, f64)> = chosen
         .par_iter()
-        .enumerate()
         .with_max_len(1)
-        .map(|(i, c)| {
-            if i > first_fault.load(Ordering::Relaxed) {
-                return None;
-            }
+        .map(|c| {
             steps.start(&c.id);
             let start = Instant::now();
-            let run = kinds::run(&c.check, &c.notation);
+            let run = match &c.check {
+                Err(m) => Err((m.clone(), true)),
+                Ok(check) => kinds::run(check, &c.notation).map_err(|f| match f {
+                    Fault::Internal(m) => (m, false),
+                    Fault::Input(key, m) => {
+                        let line = c.key_lines.get(key).copied().unwrap_or(c.line);
+                        (
+                            format!("{}:{line}: claim {:?}: key {key}: {m}", file.path, c.id),
+                            true,
+                        )
+                    }
+                }),
+            };
             steps.done();
-            if matches!(run, Err(Fault::Input(..))) {
-                first_fault.fetch_min(i, Ordering::Relaxed);
-            }
-            Some((run, start.elapsed().as_secs_f64()))
+            (run, start.elapsed().as_secs_f64())
         })
         .collect();
+    // Nothing decidable at all: the file is bad input, reported as one line (the first claim's
+    // error).
+    if runs.iter().all(|(r, _)| matches!(r, Err((_, true)))) {
+        if let Some((Err((m, _)), _)) = runs.into_iter().next() {
+            return Err(Error::Input(m));
+        }
+        unreachable!("at least one claim was chosen");
+    }
     let mut rows = Vec::new();
-    for (c, run) in chosen.iter().zip(runs) {
-        let (run, seconds) = run.expect("every claim before the first fault was checked");
-        let outcome = match run {
-            Ok(o) => Ok(o),
-            Err(Fault::Internal(m)) => Err(m),
-            Err(Fault::Input(key, m)) => {
-                let line = c.key_lines.get(key).copied().unwrap_or(c.line);
-                return Err(Error::Input(format!(
-                    "{}:{line}: claim {:?}: key {key}: {m}",
-                    file.path, c.id
-                )));
-            }
+    for (c, (run, seconds)) in chosen.iter().zip(runs) {
+        let (outcome, problem, bad_input) = match run {
+            Ok((o, p)) => (Ok(o), p, false),
+            Err((m, bad)) => (Err(m), None, bad),
         };
         let verdict = outcome.as_ref().ok().map(|o| o.verdict);
         rows.push(Checked {
@@ -400,6 +475,8 @@ pub fn check_with(
             expected: c.expected(verdict),
             outcome,
             seconds,
+            problem,
+            bad_input,
         });
     }
     Ok(rows)
@@ -414,8 +491,11 @@ fn name_expr(text: &str) -> Result<Expr, String> {
 mod tests {
     use super::*;
 
+    /// Reads and checks a file: a file whose every claim is broken is refused as one line.
     fn load_str(text: &str, file: &str) -> Result<ClaimsFile, String> {
-        parse(text, file, "t").map_err(|e| e.to_string())
+        let f = parse(text, file, "t").map_err(|e| e.to_string())?;
+        check(&f, None).map_err(|e| e.to_string())?;
+        Ok(f)
     }
 
     #[test]

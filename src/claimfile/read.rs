@@ -23,6 +23,8 @@ pub struct RawFile {
     pub define: Option<Map<String, Value>>,
     /// `[latex]`: the file's notation, name -> LaTeX.
     pub latex: Option<Map<String, Value>>,
+    /// The variables of every claim (optional): any other free name is warned about.
+    pub variables: Option<Vec<String>>,
     /// `[[claim]]`.
     #[serde(default)]
     pub claim: Vec<RawClaim>,
@@ -85,6 +87,8 @@ pub struct RawClaim {
     pub at: Option<Vec<Map<String, Value>>>,
     pub problem: Option<Value>,
     pub expect_fields: Option<Map<String, Value>>,
+    /// The claim's variables (with the file's): any other free name is warned about.
+    pub variables: Option<Vec<String>>,
 }
 
 /// The keys of [`RawClaim`] that are set (for "key X does not belong to kind Y").

@@ -1,11 +1,16 @@
 //! Helpers shared by the claim modules: printed formulas (kept as text, as printed) turned into
-//! polynomials, and identities decided by the proof engine of `exactcheck-exact`.
+//! polynomials, and identities decided by the identity engine of `exactcheck-exact`
+//! (`prove::decide_identity`, phrased by `prove::phrase` in the catalogue's voice).
 
 use super::{Equation, Erratum, Outcome, Verdict};
 use exactcheck_core::{Hom4, Ring};
 use exactcheck_exact::expr::{parse_poly, Coefficient, Expr};
 use exactcheck_exact::poly::{CoeffExpr, Poly, Var, Vars};
-use exactcheck_exact::prove::{counter_example, decide_in, Decision, Domain, PointField};
+use exactcheck_exact::prove::{
+    decide_identity, Domain, EngineError, IdentitySpec, IdentityVerdict, Part, Phrasing,
+    PointField, Statement, Voice,
+};
+use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::Rational;
 use std::fmt::Display;
 
@@ -85,93 +90,88 @@ pub fn prove_all_in<C: PointField + Display + CoeffExpr>(
 where
     C::Value: CoeffExpr,
 {
-    let name = |v: Var| {
-        sym.vars
-            .name(v)
-            .expect("the engine reports only variables of the context")
-    };
     let undecided = |evidence: String| Outcome {
         verdict: Verdict::Undecided,
         method: method.into(),
         evidence,
         erratum: None,
     };
-    // A counter-example gives every variable of the claim's residuals, sides and relations, also
-    // those that cancel from the failing residual.
-    let statement: Vec<&Poly<C>> = residuals
-        .iter()
-        .map(|(_, r)| r)
-        .chain(sides.iter().copied())
-        .chain(relations)
-        .collect();
-    let mut terms = 0;
-    for (what, r) in residuals {
-        let decision = match decide_in(r, relations, domains, sym.vars.len()) {
-            Ok(d) => d,
-            Err(e) => return undecided(format!("{what}: {e}")),
-        };
-        match decision {
-            Decision::Proved { expanded_terms } => terms += expanded_terms,
-            Decision::Fails {
-                normal_form,
-                point,
-                value,
-            } => {
-                let shown = counter_example(&point, &statement);
-                let at: Vec<String> = shown
+    let spec = IdentitySpec {
+        relations: relations
+            .iter()
+            .map(|r| {
+                (
+                    RatFun::from_poly(r.clone()),
+                    RatFun::from_poly(Poly::zero()),
+                )
+            })
+            .collect(),
+        domains: domains.to_vec(),
+        context: sides.iter().copied().cloned().collect(),
+        ..IdentitySpec::new(
+            sym.vars.clone(),
+            residuals
+                .iter()
+                .map(|(_, r)| Statement::Residual(r.clone()))
+                .collect(),
+        )
+    };
+    let phrasing = Phrasing {
+        voice: Voice::Catalogue,
+        vars: &sym.vars,
+        relations: Vec::new(),
+        domains: Vec::new(),
+        labels: residuals.iter().map(|(w, _)| w.to_string()).collect(),
+        corrected: Vec::new(),
+    };
+    let report = match decide_identity(&spec) {
+        Ok(r) => r,
+        Err(e) => {
+            let k = match &e {
+                EngineError::Decide(Part::Coordinate(k), _) => *k,
+                _ => 0,
+            };
+            return undecided(format!("{}: {}", residuals[k].0, phrasing.error(&e)));
+        }
+    };
+    let evidence = phrasing.evidence(&report);
+    match &report.verdict {
+        IdentityVerdict::Proved { .. } => Outcome {
+            verdict: Verdict::Proved,
+            method: method.into(),
+            evidence,
+            erratum: None,
+        },
+        IdentityVerdict::Undecided { .. } => undecided(evidence),
+        IdentityVerdict::Fails {
+            normal_form,
+            point,
+            value,
+            ..
+        } => {
+            let name = |v: Var| {
+                sym.vars
+                    .name(v)
+                    .expect("the engine reports only variables of the context")
+            };
+            let erratum = Erratum {
+                counter_example: point
                     .iter()
-                    .map(|(v, q)| format!("{} = {q}", name(*v)))
-                    .collect();
-                let erratum = Erratum {
-                    counter_example: shown
-                        .iter()
-                        .map(|(v, q)| Equation::new(Expr::var(name(*v)), q.to_expr()))
-                        .collect(),
-                    residual: vec![Equation::new(
-                        normal_form.to_expr(&sym.vars),
-                        value.to_expr(),
-                    )],
-                    ..Erratum::default()
-                };
-                return Outcome {
-                    verdict: Verdict::Fails,
-                    method: method.into(),
-                    evidence: format!(
-                        "{what} is not zero: at {} it is {value}; it reduces to {}",
-                        at.join(", "),
-                        normal_form.display(&sym.vars)
-                    ),
-                    erratum: Some(Box::new(erratum)),
-                };
-            }
-            Decision::Undecided {
-                normal_form,
-                searched,
-            } => {
-                return undecided(format!(
-                    "{what} reduces to {} (not in the ideal of the relations), but no real counter-example was found: {searched}",
-                    normal_form.display(&sym.vars)
-                ))
+                    .map(|(v, q)| Equation::new(Expr::var(name(*v)), q.to_expr()))
+                    .collect(),
+                residual: vec![Equation::new(
+                    normal_form.to_expr(&sym.vars),
+                    value.to_expr(),
+                )],
+                ..Erratum::default()
+            };
+            Outcome {
+                verdict: Verdict::Fails,
+                method: method.into(),
+                evidence,
+                erratum: Some(Box::new(erratum)),
             }
         }
-    }
-    let extra = if residuals.len() > 1 {
-        format!(" ({} residuals in all)", residuals.len())
-    } else {
-        String::new()
-    };
-    Outcome {
-        verdict: Verdict::Proved,
-        method: method.into(),
-        evidence: if terms == 0 {
-            format!("{} expands to 0{extra}", residuals[0].0)
-        } else {
-            format!(
-                "{} reduces to 0 ({terms} terms before reduction){extra}",
-                residuals[0].0
-            )
-        },
-        erratum: None,
     }
 }
 

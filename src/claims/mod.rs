@@ -236,12 +236,20 @@ pub struct Checked {
     pub outcome: Result<Outcome, String>,
     /// Seconds the check took.
     pub seconds: f64,
+    /// Why the claim is not as expected whatever its verdict (a claims file's `corrected` form
+    /// not proved equal to its `rhs`), if so.
+    pub problem: Option<String>,
+    /// Whether the error of `outcome` is the claim's bad input (a formula that cannot be parsed
+    /// or built), not a failure of the check: `verify` then exits with status 2.
+    pub bad_input: bool,
 }
 
 impl Checked {
-    /// Whether the verdict is the one the catalogue expects.
+    /// Whether the verdict is the one the catalogue expects (and nothing else is wrong with
+    /// the claim, see [`Checked::problem`]).
     pub fn as_expected(&self) -> bool {
-        matches!(&self.outcome, Ok(o) if o.verdict == self.expected && o.verdict != Verdict::Undecided)
+        self.problem.is_none()
+            && matches!(&self.outcome, Ok(o) if o.verdict == self.expected && o.verdict != Verdict::Undecided)
     }
 
     /// The JSON object of DESIGN.md (`id`, `verdict`, `method`, `evidence`, plus more), with
@@ -261,6 +269,9 @@ impl Checked {
                 });
                 if let Some(e) = &o.erratum {
                     v["erratum"] = e.to_json();
+                }
+                if let Some(p) = &self.problem {
+                    v["problem"] = json!(p);
                 }
                 v
             }
@@ -328,6 +339,8 @@ pub fn verify_with(prefix: Option<&str>, quiet: bool) -> Result<Vec<Checked>, cr
                 expected: c.expected,
                 outcome,
                 seconds: start.elapsed().as_secs_f64(),
+                problem: None,
+                bad_input: false,
             }
         })
         .collect())
@@ -345,24 +358,18 @@ pub fn table(rows: &[Checked]) -> String {
             Ok(o) => (o.verdict.to_string(), o.method.clone(), o.evidence.clone()),
             Err(e) => ("error".to_string(), String::new(), e.clone()),
         };
-        let mark = if r.as_expected() {
-            ""
-        } else {
-            "  << expected "
+        let mark = match &r.problem {
+            Some(p) => format!("  << not as expected: {p}"),
+            None if r.as_expected() => String::new(),
+            None => format!("  << expected {}", r.expected),
         };
         let mut lines = evidence.lines();
         s += &format!(
-            "{:idw$}  {:8}  {:38}  {}{}{}\n",
+            "{:idw$}  {:8}  {:38}  {}{mark}\n",
             r.id,
             verdict,
             method,
             lines.next().unwrap_or(""),
-            mark,
-            if r.as_expected() {
-                String::new()
-            } else {
-                r.expected.to_string()
-            }
         );
         for l in lines {
             s += &format!("{:idw$}  {:8}  {:38}  {}\n", "", "", "", l);
@@ -408,6 +415,8 @@ mod verdict_tests {
             expected: Verdict::Undecided,
             outcome: Ok(o),
             seconds: 0.0,
+            problem: None,
+            bad_input: false,
         };
         assert!(!checked.as_expected());
         assert_eq!(checked.to_json()["verdict"], "undecided");

@@ -479,6 +479,8 @@ mod tests {
                 erratum: erratum.map(Box::new),
             }),
             seconds: 0.5,
+            problem: None,
+            bad_input: false,
         }
     }
 

@@ -119,6 +119,35 @@ pub use w1::w1_text;
 /// `diff(E, t, k)`, the exact derivative of `E` in the variable `t` (`k` times).
 pub const FUNCTIONS: &[&str] = &["diff"];
 
+/// Whether `name` is a constant of mathematics that a formula may never use as a free variable
+/// (`pi`, `e`, `i`): the one-line reason, or `None` for any other name. `prove` and claims files
+/// refuse such a variable rather than treat `2*pi*r` as a polynomial in a variable `pi`; a name
+/// that the expression language itself gives a value never reaches this check (it is not a
+/// variable of the tree), so giving `pi` its meaning there lifts the refusal for it.
+pub fn reserved_constant(name: &str) -> Option<&'static str> {
+    match name {
+        "pi" => Some(
+            "pi is the constant pi, not a variable; exact formulas cannot use it yet (name a variable differently, e.g. p)",
+        ),
+        "e" => Some(
+            "e is the constant e (Euler's number), not a variable; name the variable differently (e.g. e1)",
+        ),
+        "i" => Some(
+            "i is the imaginary unit, not a variable; name the variable differently (e.g. k)",
+        ),
+        _ => None,
+    }
+}
+
+/// The first free variable of `exprs` that is a [`reserved_constant`], with its reason.
+pub fn first_reserved<'a>(exprs: impl IntoIterator<Item = &'a Expr>) -> Option<&'static str> {
+    let mut names = Vec::new();
+    for e in exprs {
+        e.collect_variables(&mut names);
+    }
+    names.iter().find_map(|n| reserved_constant(n))
+}
+
 // ------------------------------------------------------------------------------ coefficients
 
 /// What the conversion needs of a coefficient type: the image of a rational number, inverses (for

@@ -38,11 +38,24 @@
 //!
 //! The search is deterministic (fixed seed) so that verdicts are reproducible; it makes
 //! [`SEARCH_ATTEMPTS`] attempts.
+//!
+//! # One engine for every front end
+//! [`identity::decide_identity`] takes an identity as a spec (sides or residuals, relations,
+//! domains, hypotheses, a corrected form, the variable names) and returns a typed report;
+//! [`phrase::Phrasing`] words it. `prove`, claims files and the built-in catalogue all go
+//! through the two, so that they share one counter-example rule and one way of speaking.
 
 mod fraction;
+pub mod identity;
+pub mod phrase;
 pub mod random;
 
 pub use fraction::{decide_fraction, real_zero_free, where_clause, FractionIdentity};
+pub use identity::{
+    decide_identity, CorrectionVerdict, EngineError, IdentityReport, IdentitySpec, IdentityVerdict,
+    Part, Statement,
+};
+pub use phrase::{Phrasing, Voice};
 
 pub use random::{
     random_identity_test, size_bound, RandomDecision, RandomReport, Seed, SizeBound,
@@ -71,6 +84,8 @@ pub trait PointField: Field + Coefficient {
     /// The coefficient as a real radical, `None` when it is not real (then relations with it are
     /// not solved, only checked).
     fn to_radical(&self) -> Option<Radical>;
+    /// The field's name in a method (`Q`, `Q(sqrt)`).
+    fn field_name() -> &'static str;
 }
 
 impl PointField for Rational {
@@ -83,6 +98,9 @@ impl PointField for Rational {
     }
     fn to_radical(&self) -> Option<Radical> {
         Some(Radical::from(self))
+    }
+    fn field_name() -> &'static str {
+        "Q"
     }
 }
 
@@ -97,6 +115,9 @@ impl PointField for Radical {
     fn to_radical(&self) -> Option<Radical> {
         Some(self.clone())
     }
+    fn field_name() -> &'static str {
+        "Q(sqrt)"
+    }
 }
 
 impl PointField for ComplexRadical {
@@ -109,6 +130,9 @@ impl PointField for ComplexRadical {
     }
     fn to_radical(&self) -> Option<Radical> {
         self.is_real().then(|| self.re.clone())
+    }
+    fn field_name() -> &'static str {
+        "Q(sqrt, i)"
     }
 }
 
