@@ -18,8 +18,9 @@ use clap::Args;
 use exactcheck_exact::expr::{parse_expr, Coefficient, Expr};
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
-    counter_example, decide_fraction, decide_in, real_zero_free, where_clause, DecideError,
-    Decision, Domain, FractionIdentity, PointField, HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
+    counter_example, decide_fraction, decide_in, factored, real_zero_free, where_clause,
+    DecideError, Decision, Domain, FractionIdentity, PointField, HOLDS_THRESHOLD_LOG2,
+    MAX_RANDOM_TRIALS,
 };
 use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::{Radical, Rational};
@@ -536,7 +537,7 @@ fn prove_over<C: PointField + Display>(
                 .map(|(v, q)| format!("{} = {q}", name(*v)))
                 .collect();
             let value = abbreviate(value.to_string());
-            let nf = abbreviate(normal_form.display(&vars).to_string());
+            let nf = abbreviate(factored(normal_form, &vars));
             if fraction.is_some() {
                 // `LHS - RHS` is the normal form over the cleared denominator.
                 format!(
@@ -564,7 +565,7 @@ fn prove_over<C: PointField + Display>(
             searched,
         } => format!(
             "LHS - RHS{cleared} reduces{modulo} to {} (not zero), but no point{within} where it is non-zero was found{where_nonzero}: {searched}",
-            abbreviate(normal_form.display(&vars).to_string())
+            abbreviate(factored(normal_form, &vars))
         ),
     };
     if args.json {

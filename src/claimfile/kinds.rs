@@ -13,7 +13,7 @@ use exactcheck_core::Ring;
 use exactcheck_exact::expr::{parse_expr, AddOp, Coefficient, Expr, ExprKind};
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
-    counter_example, decide_fraction, decide_in, random_identity_test, unit_circle_pairs,
+    counter_example, decide_fraction, decide_in, factored, random_identity_test, unit_circle_pairs,
     where_clause, DecideError, Decision, Domain, FractionIdentity, PointField, RandomDecision,
     Seed, HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
 };
@@ -590,7 +590,7 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<Outcome, Fault> {
                         "{}LHS - RHS{} reduces{modulo} to {} (not zero), but no point{within} where it is non-zero was found{where_nonzero}: {searched}",
                         coordinate(k),
                         cleared(k),
-                        normal_form.display(&vars)
+                        factored(&normal_form, &vars)
                     ),
                     erratum: None,
                 })
@@ -615,7 +615,7 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<Outcome, Fault> {
                     .map(|(v, q)| (name(v), q))
                     .collect();
                 let at: Vec<String> = point.iter().map(|(v, q)| format!("{v} = {q}")).collect();
-                let nf = normal_form.display(&vars).to_string();
+                let nf = factored(&normal_form, &vars);
                 let mut evidence = format!(
                     "{}{}{} LHS - RHS = {value}; LHS - RHS{} reduces{modulo} to {nf}{}",
                     coordinate(k),
@@ -681,7 +681,7 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<Outcome, Fault> {
                                 failed = Some(format!(
                                     "{}corrected - RHS reduces to {} (undecided)",
                                     coordinate(j),
-                                    normal_form.display(&vars)
+                                    factored(&normal_form, &vars)
                                 ));
                                 break;
                             }

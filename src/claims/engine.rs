@@ -3,9 +3,9 @@
 
 use super::{Equation, Erratum, Outcome, Verdict};
 use exactcheck_core::{Hom4, Ring};
-use exactcheck_exact::expr::{parse_poly, Coefficient, Expr};
+use exactcheck_exact::expr::{parse_expr, parse_poly, Coefficient, Expr};
 use exactcheck_exact::poly::{CoeffExpr, Poly, Var, Vars};
-use exactcheck_exact::prove::{counter_example, decide_in, Decision, Domain, PointField};
+use exactcheck_exact::prove::{counter_example, decide_in, factored, Decision, Domain, PointField};
 use exactcheck_exact::Rational;
 use std::fmt::Display;
 
@@ -128,7 +128,10 @@ where
                         .map(|(v, q)| Equation::new(Expr::var(name(*v)), q.to_expr()))
                         .collect(),
                     residual: vec![Equation::new(
-                        normal_form.to_expr(&sym.vars),
+                        // Factored when that is shorter; the text is the engine's own
+                        // printing, so it parses back.
+                        parse_expr(&factored(&normal_form, &sym.vars))
+                            .unwrap_or_else(|_| normal_form.to_expr(&sym.vars)),
                         value.to_expr(),
                     )],
                     ..Erratum::default()
@@ -139,7 +142,7 @@ where
                     evidence: format!(
                         "{what} is not zero: at {} it is {value}; it reduces to {}",
                         at.join(", "),
-                        normal_form.display(&sym.vars)
+                        factored(&normal_form, &sym.vars)
                     ),
                     erratum: Some(Box::new(erratum)),
                 };
@@ -150,7 +153,7 @@ where
             } => {
                 return undecided(format!(
                     "{what} reduces to {} (not in the ideal of the relations), but no real counter-example was found: {searched}",
-                    normal_form.display(&sym.vars)
+                    factored(&normal_form, &sym.vars)
                 ))
             }
         }
