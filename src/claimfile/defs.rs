@@ -714,7 +714,7 @@ impl Defs {
                                     }
                                 };
                                 // The weight of a degree-0 curve is 1: the point alone.
-                                if matches!(&w.kind, ExprKind::Number(q) if q.is_one()) {
+                                if matches!(&w.kind, ExprKind::Number(q) if *q == Rational::ONE) {
                                     c
                                 } else {
                                     times(w.clone(), c)
@@ -751,7 +751,7 @@ fn bernstein(i: u32, n: u32, t: &Expr, pos: usize) -> Expr {
     // Factors 1, t^0 and (1 - t)^0 are left out and exponents 1 not written, so the tree
     // prints as a formula would be written (`3 t (1 - t)^2`, `t^3`).
     let mut factors = Vec::new();
-    if !c.is_one() {
+    if c != Rational::ONE {
         factors.push(num(c));
     }
     for (base, k) in [(t.clone(), i), (one_minus_t, n - i)] {
