@@ -82,6 +82,37 @@ fn long_printed_decimals_get_exact_verdicts_quickly() {
     );
 }
 
+/// The erratum of a wrong printed decimal quotes the decimal as printed (digits and trailing
+/// zeros), not the fraction it denotes, in text and LaTeX.
+#[test]
+fn errata_show_the_decimals_as_printed() {
+    let all = outcomes();
+    let o = outcome(&all, "printed.third_wrong_at_20");
+    let e = o
+        .erratum
+        .as_ref()
+        .expect("a failing value claim has an erratum");
+    let printed = "0.3333333333333333333400000000000000000";
+    assert_eq!(e.printed[0].rhs.to_string(), printed);
+    assert_eq!(
+        e.corrected[0].rhs.to_string(),
+        "0.3333333333333333333333333333333333333"
+    );
+    assert!(e.residual[0].lhs.to_string().starts_with(printed));
+    let tex = e.printed[0].latex(&e.notation());
+    assert!(tex.ends_with(&format!("= {printed}")), "{tex}");
+    // The text parses back to the number it denotes.
+    let back: exactcheck_exact::Rational = printed.parse().unwrap();
+    assert_eq!(
+        e.printed[0]
+            .rhs
+            .to_string()
+            .parse::<exactcheck_exact::Rational>()
+            .unwrap(),
+        back
+    );
+}
+
 #[test]
 fn the_command_line_reports_the_long_printed_file_as_expected() {
     let out = Command::new(env!("CARGO_BIN_EXE_exactcheck"))

@@ -290,7 +290,7 @@ type Term<C> = (Vec<(Var, u32)>, C);
 
 /// The coefficients of `p` as a polynomial in `v`: entry `i` is the coefficient of `v^i` (a
 /// polynomial in the other variables).
-fn coefficients_in<C: Ring>(p: &Poly<C>, v: Var) -> Vec<Poly<C>> {
+pub(crate) fn coefficients_in<C: Ring>(p: &Poly<C>, v: Var) -> Vec<Poly<C>> {
     let mut buckets: Vec<Vec<Term<C>>> = vec![Vec::new(); p.degree_in(v) as usize + 1];
     for (m, c) in p.terms() {
         let e = m.exponent(v) as usize;
@@ -300,11 +300,31 @@ fn coefficients_in<C: Ring>(p: &Poly<C>, v: Var) -> Vec<Poly<C>> {
     buckets.into_iter().map(Poly::from_terms).collect()
 }
 
-/// The gcd of the coefficients of `p` in `v` (monic).
-fn content_in<C: Field>(p: &Poly<C>, v: Var) -> Result<Poly<C>, SizeError> {
+/// Why a gcd computation with a budget of terms stopped.
+#[derive(Debug)]
+pub(crate) enum GcdError {
+    /// A product exceeded a named limit.
+    Size(SizeError),
+    /// The remainders together had more terms than the budget.
+    Capped,
+}
+
+impl From<SizeError> for GcdError {
+    fn from(e: SizeError) -> GcdError {
+        GcdError::Size(e)
+    }
+}
+
+/// The gcd of the coefficients of `p` in `v` (monic), the terms of all remainders taken from
+/// `budget`.
+pub(crate) fn content_in<C: Field>(
+    p: &Poly<C>,
+    v: Var,
+    budget: &mut usize,
+) -> Result<Poly<C>, GcdError> {
     let mut g = Poly::zero();
     for c in coefficients_in(p, v) {
-        g = poly_gcd(&g, &c)?;
+        g = gcd_capped(&g, &c, budget)?;
         if g.is_constant() && !g.is_zero() {
             break;
         }
@@ -313,7 +333,12 @@ fn content_in<C: Field>(p: &Poly<C>, v: Var) -> Result<Poly<C>, SizeError> {
 }
 
 /// The pseudo-remainder of `f` by `g` in `v`: `lc(g)^k f - q g` of degree in `v` below `g`'s.
-fn pseudo_remainder<C: Field>(f: &Poly<C>, g: &Poly<C>, v: Var) -> Result<Poly<C>, SizeError> {
+fn pseudo_remainder<C: Field>(
+    f: &Poly<C>,
+    g: &Poly<C>,
+    v: Var,
+    budget: &mut usize,
+) -> Result<Poly<C>, GcdError> {
     let dg = g.degree_in(v);
     let lc_g = coefficients_in(g, v)
         .pop()
@@ -328,6 +353,7 @@ fn pseudo_remainder<C: Field>(f: &Poly<C>, g: &Poly<C>, v: Var) -> Result<Poly<C
         r = lc_g
             .try_mul(&r)?
             .sub_ref(&lc_r.try_mul(&shift)?.try_mul(g)?);
+        *budget = budget.checked_sub(r.len()).ok_or(GcdError::Capped)?;
     }
     Ok(r)
 }
@@ -339,6 +365,20 @@ fn pseudo_remainder<C: Field>(f: &Poly<C>, g: &Poly<C>, v: Var) -> Result<Poly<C
 /// [`SizeError`] when a product of the remainder sequence exceeds the `degree` or `terms`
 /// limit.
 pub fn poly_gcd<C: Field>(a: &Poly<C>, b: &Poly<C>) -> Result<Poly<C>, SizeError> {
+    gcd_capped(a, b, &mut usize::MAX.clone()).map_err(|e| match e {
+        GcdError::Size(e) => e,
+        GcdError::Capped => unreachable!("no computation produces usize::MAX terms"),
+    })
+}
+
+/// [`poly_gcd`], taking the terms of every pseudo-remainder from `budget` and stopping with
+/// [`GcdError::Capped`] when it runs out (a bound on the work for callers that can do without
+/// the gcd).
+pub(crate) fn gcd_capped<C: Field>(
+    a: &Poly<C>,
+    b: &Poly<C>,
+    budget: &mut usize,
+) -> Result<Poly<C>, GcdError> {
     if a.is_zero() {
         return Ok(b.make_monic());
     }
@@ -355,13 +395,13 @@ pub fn poly_gcd<C: Field>(a: &Poly<C>, b: &Poly<C>) -> Result<Poly<C>, SizeError
         .max()
         .expect("non-constant polynomials have variables");
     if !vb.contains(&v) {
-        return poly_gcd(&content_in(a, v)?, b);
+        return gcd_capped(&content_in(a, v, budget)?, b, budget);
     }
     if !va.contains(&v) {
-        return poly_gcd(a, &content_in(b, v)?);
+        return gcd_capped(a, &content_in(b, v, budget)?, budget);
     }
-    let (ca, cb) = (content_in(a, v)?, content_in(b, v)?);
-    let content = poly_gcd(&ca, &cb)?;
+    let (ca, cb) = (content_in(a, v, budget)?, content_in(b, v, budget)?);
+    let content = gcd_capped(&ca, &cb, budget)?;
     let pa = div_exact(a, &ca).expect("the content divides the polynomial");
     let pb = div_exact(b, &cb).expect("the content divides the polynomial");
     let (mut f, mut g) = if pa.degree_in(v) >= pb.degree_in(v) {
@@ -370,7 +410,7 @@ pub fn poly_gcd<C: Field>(a: &Poly<C>, b: &Poly<C>) -> Result<Poly<C>, SizeError
         (pb, pa)
     };
     loop {
-        let r = pseudo_remainder(&f, &g, v)?;
+        let r = pseudo_remainder(&f, &g, v, budget)?;
         if r.is_zero() {
             break;
         }
@@ -378,7 +418,7 @@ pub fn poly_gcd<C: Field>(a: &Poly<C>, b: &Poly<C>) -> Result<Poly<C>, SizeError
             g = Poly::one();
             break;
         }
-        let cr = content_in(&r, v)?;
+        let cr = content_in(&r, v, budget)?;
         let r = div_exact(&r, &cr)
             .expect("the content divides the polynomial")
             .make_monic();

@@ -713,7 +713,12 @@ impl Defs {
                                         unreachable!("all control points have one shape")
                                     }
                                 };
-                                times(w.clone(), c)
+                                // The weight of a degree-0 curve is 1: the point alone.
+                                if matches!(&w.kind, ExprKind::Number(q) if *q == Rational::ONE) {
+                                    c
+                                } else {
+                                    times(w.clone(), c)
+                                }
                             })
                             .collect(),
                     )
@@ -743,12 +748,29 @@ fn bernstein(i: u32, n: u32, t: &Expr, pos: usize) -> Expr {
         (AddOp::Plus, int(1)),
         (AddOp::Minus, t.clone()),
     ]));
-    let pow = |b: Expr, k: u32| node(ExprKind::Pow(Box::new(b), Box::new(int(u64::from(k)))));
-    node(ExprKind::Product(vec![
-        (MulOp::Times, num(c)),
-        (MulOp::Times, pow(t.clone(), i)),
-        (MulOp::Times, pow(one_minus_t, n - i)),
-    ]))
+    // Factors 1, t^0 and (1 - t)^0 are left out and exponents 1 not written, so the tree
+    // prints as a formula would be written (`3 t (1 - t)^2`, `t^3`).
+    let mut factors = Vec::new();
+    if c != Rational::ONE {
+        factors.push(num(c));
+    }
+    for (base, k) in [(t.clone(), i), (one_minus_t, n - i)] {
+        match k {
+            0 => {}
+            1 => factors.push(base),
+            k => factors.push(node(ExprKind::Pow(
+                Box::new(base),
+                Box::new(int(u64::from(k))),
+            ))),
+        }
+    }
+    match factors.len() {
+        0 => int(1),
+        1 => factors.pop().expect("one factor"),
+        _ => node(ExprKind::Product(
+            factors.into_iter().map(|f| (MulOp::Times, f)).collect(),
+        )),
+    }
 }
 
 /// `e` with every position set to `pos`.

@@ -10,7 +10,9 @@ use crate::claims::{printed, Equation, Erratum, Outcome, Verdict};
 use crate::prove_cmd::{parse_where_with, Where};
 use crate::Error;
 use exactcheck_core::Ring;
-use exactcheck_exact::expr::{first_reserved, parse_expr, AddOp, Coefficient, Expr, ExprKind};
+use exactcheck_exact::expr::{
+    first_reserved, is_decimal_name, parse_expr, AddOp, Coefficient, Expr, ExprKind,
+};
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
     decide_identity, random_identity_test, unit_circle_pairs, CorrectionVerdict, Domain,
@@ -438,8 +440,15 @@ pub fn run(
     Ok((out, problem))
 }
 
-fn num(q: Rational) -> Expr {
-    Expr::new(ExprKind::Number(q))
+/// A printed number as written when it is a plain decimal (`0.3330`, `-2.5`: [`Expr::decimal`]),
+/// else (`1e-3`, `1/3`) the number `q` it denotes.
+fn as_printed(text: &str, q: &Rational) -> Expr {
+    let t = text.trim();
+    if is_decimal_name(t.strip_prefix('-').unwrap_or(t)) {
+        Expr::decimal(t)
+    } else {
+        Expr::number(q.clone())
+    }
 }
 
 fn difference(a: &Expr, b: &Expr) -> Expr {
@@ -689,18 +698,19 @@ fn value(expr: &Expr, name: Option<&Expr>, printed_list: &[String]) -> Result<Ou
             correction: format!("the exact value is {v} = {shown}..."),
             ..Erratum::default()
         };
-        for (_, q, correct, dev) in &wrong {
+        // The decimals as printed (digits and trailing zeros kept), not as fractions.
+        for (p, q, correct, dev) in &wrong {
+            let c = printed::rational(correct).map_err(Fault::Internal)?;
             e.printed.push(Equation {
                 lhs: label.clone(),
-                rhs: num(q.clone()),
+                rhs: as_printed(p, q),
             });
-            let c = printed::rational(correct).map_err(Fault::Internal)?;
             e.corrected.push(Equation {
                 lhs: label.clone(),
-                rhs: num(c),
+                rhs: as_printed(correct, &c),
             });
             e.residual.push(Equation {
-                lhs: difference(&num(q.clone()), &label),
+                lhs: difference(&as_printed(p, q), &label),
                 rhs: value_expr(dev)?,
             });
         }

@@ -4,11 +4,11 @@
 
 use super::{Equation, Erratum, Outcome, Verdict};
 use exactcheck_core::{Hom4, Ring};
-use exactcheck_exact::expr::{parse_poly, Coefficient, Expr};
+use exactcheck_exact::expr::{parse_expr, parse_poly, Coefficient, Expr};
 use exactcheck_exact::poly::{CoeffExpr, Poly, Var, Vars};
 use exactcheck_exact::prove::{
-    decide_identity, Domain, EngineError, IdentitySpec, IdentityVerdict, Part, Phrasing,
-    PointField, Statement, Voice,
+    decide_identity, factored, Domain, EngineError, IdentitySpec, IdentityVerdict, Part,
+    Phrasing, PointField, Statement, Voice,
 };
 use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::Rational;
@@ -160,7 +160,10 @@ where
                     .map(|(v, q)| Equation::new(Expr::var(name(*v)), q.to_expr()))
                     .collect(),
                 residual: vec![Equation::new(
-                    normal_form.to_expr(&sym.vars),
+                    // Factored when that is shorter; the text is the engine's own printing,
+                    // so it parses back.
+                    parse_expr(&factored(normal_form, &sym.vars))
+                        .unwrap_or_else(|_| normal_form.to_expr(&sym.vars)),
                     value.to_expr(),
                 )],
                 ..Erratum::default()

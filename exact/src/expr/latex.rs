@@ -33,7 +33,7 @@
 //! Hand-written: the two output languages are tiny and fixed, and the layout decisions above are
 //! the point of the module; a general typesetting crate would not know the notation of the papers.
 
-use super::{AddOp, Expr, ExprKind, MulOp};
+use super::{is_decimal_name, AddOp, Expr, ExprKind, MulOp};
 use crate::rational::Rational;
 use exactcheck_core::Sign;
 use std::collections::HashMap;
@@ -561,6 +561,9 @@ pub(super) fn layout(e: &Expr, n: &Notation) -> Layout {
             Layout::Sup(Box::new(if simple { b } else { fenced(b) }), Box::new(e))
         }
         ExprKind::Sqrt(x) => Layout::Sqrt(Box::new(layout(x, n))),
+        ExprKind::Call(name, args) if args.is_empty() && is_decimal_name(name) => {
+            Layout::Num(name.clone())
+        }
         ExprKind::Call(name, args) => {
             let mut inner = Vec::new();
             for (k, a) in args.iter().enumerate() {

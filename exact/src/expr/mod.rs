@@ -342,6 +342,25 @@ impl Expr {
     pub fn tuple(items: Vec<Expr>) -> Self {
         Expr::new(ExprKind::Call(String::new(), items))
     }
+
+    /// A decimal shown as printed (`0.3330`, `-1.5`: the digits kept, trailing zeros too), for
+    /// errata that quote a paper's decimals: a call without arguments whose name is the digits
+    /// ([`is_decimal_name`]), printed as the digits in every notation (a negative one is the
+    /// negation of its magnitude). Like a tuple it is printed, never converted; the text parses
+    /// back to the number it denotes.
+    pub fn decimal(text: &str) -> Self {
+        match text.strip_prefix('-') {
+            Some(magnitude) => Expr::new(ExprKind::Neg(Box::new(Expr::decimal(magnitude)))),
+            None => Expr::new(ExprKind::Call(text.to_string(), Vec::new())),
+        }
+    }
+}
+
+/// Whether a call's name is the digits of an [`Expr::decimal`] (`[0-9]+(.[0-9]+)?`).
+pub fn is_decimal_name(name: &str) -> bool {
+    let mut parts = name.splitn(2, '.');
+    let digits = |s: &str| !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit());
+    parts.next().is_some_and(digits) && parts.next().is_none_or(digits)
 }
 
 // ------------------------------------------------------------------------------ errors

@@ -102,6 +102,9 @@ impl fmt::Display for Expr {
                 }
             }
             ExprKind::Sqrt(x) => write!(f, "sqrt({x})"),
+            ExprKind::Call(name, args) if args.is_empty() && is_decimal_name(name) => {
+                f.write_str(name)
+            }
             ExprKind::Call(name, args) => {
                 write!(f, "{name}(")?;
                 for (k, a) in args.iter().enumerate() {

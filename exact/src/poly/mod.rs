@@ -93,6 +93,7 @@
 //! is coefficient arithmetic in [`crate::Rational`].
 
 mod display;
+pub mod factor;
 mod kernels;
 mod layout;
 mod power;
@@ -106,6 +107,7 @@ mod word_tests;
 mod words;
 
 pub use display::PolyDisplay;
+pub use factor::{square_free, Factorization};
 pub use reduce::{groebner, unit_circle_relation};
 pub use ring::{Monomial, Poly, SizeError, Terms};
 pub use to_expr::CoeffExpr;

@@ -19,12 +19,20 @@
 //! from them, so nothing is decided.
 //!
 //! # The counter-example search
-//! Each attempt builds a point variable by variable, every value exact:
-//! 1. every variable gets a small rational drawn from its domain (`n/d`, `|n| <= 9`, `d <= 4`,
-//!    without a domain; else from the box, see [`Domain`]);
+//! First come [`SMALL_ATTEMPTS`] points of small height, so that the counter-example reported is
+//! a simple one (`t = 1/2, w = 1` rather than `t = 11/16, w = 7/4`): every variable of the
+//! statement runs through the rationals of its domain by increasing height `max(|n|, d)`
+//! (`0, 1, -1, 1/2, 2, -1/2, -2, 1/3, ...`, [`small_height_rationals`]), the points ordered by
+//! the largest position any coordinate takes in its list, then by the sum of the positions.
+//! Then come [`SEARCH_ATTEMPTS`] attempts at random points. Each attempt builds a point variable
+//! by variable, every value exact:
+//! 1. every variable gets its small-height value, or in the random attempts a small rational
+//!    drawn from its domain (`n/d`, `|n| <= 9`, `d <= 4`, without a domain; else from the box,
+//!    see [`Domain`]);
 //! 2. on even attempts (and always when all relations are unit circles), each unit circle
 //!    `c^2 + s^2 = 1` is given the rational point `((1 - tau^2)/(1 + tau^2), 2 tau/(1 + tau^2))`
-//!    for a small rational `tau`; on odd attempts the circles are treated like other relations;
+//!    for a small rational `tau` (in the small-height attempts, the value of `c`); on odd
+//!    attempts the circles are treated like other relations;
 //! 3. the remaining relations are solved one variable at a time: a relation whose only
 //!    unassigned variable is `v`, after substituting the values fixed so far, is a univariate
 //!    polynomial; its roots are taken exactly — linear roots, real roots of quadratics
@@ -36,6 +44,8 @@
 //!    in its domain, and the residual (not the normal form) is non-zero. Only a verified point is
 //!    reported.
 //!
+//! The search is deterministic (fixed seeds) so that verdicts are reproducible; it makes at most
+//! [`SMALL_ATTEMPTS`] + [`SEARCH_ATTEMPTS`] attempts.
 //! The search is deterministic (fixed seed) so that verdicts are reproducible; it makes
 //! [`SEARCH_ATTEMPTS`] attempts.
 //!
@@ -45,11 +55,13 @@
 //! [`phrase::Phrasing`] words it. `prove`, claims files and the built-in catalogue all go
 //! through the two, so that they share one counter-example rule and one way of speaking.
 
+mod factored;
 mod fraction;
 pub mod identity;
 pub mod phrase;
 pub mod random;
 
+pub use factored::factored;
 pub use fraction::{decide_fraction, real_zero_free, where_clause, FractionIdentity};
 pub use identity::{
     decide_identity, CorrectionVerdict, EngineError, IdentityReport, IdentitySpec, IdentityVerdict,
@@ -69,8 +81,17 @@ use crate::{ComplexRadical, Radical, Rational};
 use exactcheck_core::{Field, Ring, Rng};
 use std::fmt;
 
-/// Attempts of the counter-example search.
+/// Random attempts of the counter-example search.
 pub const SEARCH_ATTEMPTS: usize = 200;
+
+/// Attempts at points of small height, before the random ones.
+pub const SMALL_ATTEMPTS: usize = 100;
+
+/// The largest height of the small-height values of one variable.
+const SMALL_HEIGHT: i64 = 12;
+
+/// The most small-height values of one variable (those in its domain, by increasing height).
+const SMALL_VALUES: usize = 24;
 
 /// A coefficient field the counter-example search can evaluate at real points with coordinates
 /// in [`Radical`]: the values of its polynomials there lie in [`PointField::Value`].
@@ -442,7 +463,8 @@ pub fn decide_where<C: PointField>(
         })
         .unwrap_or_else(|| Decision::Undecided {
             searched: format!(
-                "{SEARCH_ATTEMPTS} exact candidate points (small rationals, inside the domains if any{}{}) were checked, none satisfies the relations{}{} with a non-zero residual",
+                "{} exact candidate points (small rationals by increasing height, then random ones, inside the domains if any{}{}) were checked, none satisfies the relations{}{} with a non-zero residual",
+                SMALL_ATTEMPTS + SEARCH_ATTEMPTS,
                 if pairs.is_empty() { "" } else { ", rational points of the unit circles" },
                 if others.is_empty() && pairs.is_empty() {
                     ""
@@ -499,14 +521,15 @@ fn search<C: PointField>(
     };
     let all_real: Vec<Poly<Radical>> = relations.iter().filter_map(real).collect();
     let others_real: Vec<Poly<Radical>> = others.iter().filter_map(real).collect();
-    let mut rng = Rng::new(0x5EED);
-    for attempt in 0..SEARCH_ATTEMPTS {
-        let base: Vec<Rational> = (0..nvars).map(|v| dom[v].sample(&mut rng)).collect();
+    // One attempt from the drawn values `base`; `taus`, when given, are the parameters of the
+    // unit circles (one per pair), else the circles are solved like the other relations.
+    let attempt = |base: Vec<Rational>,
+                   taus: Option<Vec<Rational>>,
+                   rng: &mut Rng|
+     -> Option<(RadicalPoint, C::Value)> {
         let mut point: Vec<Option<Radical>> = vec![None; nvars];
-        let use_tau = attempt % 2 == 0 || others.is_empty();
-        let to_solve = if use_tau {
-            for &(c, s) in pairs {
-                let tau = small_rational(&mut rng);
+        let to_solve = if let Some(taus) = taus {
+            for (&(c, s), tau) in pairs.iter().zip(taus) {
                 let t2 = tau.square();
                 let den = (Rational::ONE + &t2)
                     .recip()
@@ -518,8 +541,8 @@ fn search<C: PointField>(
         } else {
             &all_real
         };
-        if !solve_relations(to_solve, &base, dom, &mut point, &mut rng) {
-            continue;
+        if !solve_relations(to_solve, &base, dom, &mut point, rng) {
+            return None;
         }
         let values: Vec<Radical> = point
             .into_iter()
@@ -527,27 +550,171 @@ fn search<C: PointField>(
             .map(|(p, b)| p.unwrap_or_else(|| Radical::from(b)))
             .collect();
         if !values.iter().zip(dom).all(|(x, d)| d.contains(x)) {
-            continue;
+            return None;
         }
         let lifted: Vec<C::Value> = values.iter().map(C::lift_radical).collect();
         if !relations.iter().all(|r| r.eval(&lifted, C::lift).is_zero()) {
-            continue;
+            return None;
         }
         // Never a pole: every denominator is non-zero at the point.
         if nonzero.iter().any(|d| d.eval(&lifted, C::lift).is_zero()) {
-            continue;
+            return None;
         }
         let value = residual.eval(&lifted, C::lift);
-        if !value.is_zero() {
+        (!value.is_zero()).then(|| {
             let point = values
                 .into_iter()
                 .enumerate()
                 .map(|(i, q)| (i as Var, q))
                 .collect();
-            return Some((point, value));
+            (point, value)
+        })
+    };
+    // Small heights first (their own generator for the choice among roots, so that the random
+    // attempts after them are those of a search without them).
+    let mut active = vec![false; nvars];
+    for p in std::iter::once(residual).chain(relations).chain(nonzero) {
+        for v in p.variables() {
+            active[v as usize] = true;
+        }
+    }
+    let mut small_rng = Rng::new(0x5EED_0001);
+    for (k, base) in small_points(dom, &active, SMALL_ATTEMPTS)
+        .into_iter()
+        .enumerate()
+    {
+        let taus = (k % 2 == 0 || others.is_empty()).then(|| {
+            pairs
+                .iter()
+                .map(|&(c, _)| base[c as usize].clone())
+                .collect()
+        });
+        if let Some(found) = attempt(base, taus, &mut small_rng) {
+            return Some(found);
+        }
+    }
+    let mut rng = Rng::new(0x5EED);
+    for k in 0..SEARCH_ATTEMPTS {
+        let base: Vec<Rational> = (0..nvars).map(|v| dom[v].sample(&mut rng)).collect();
+        let taus = (k % 2 == 0 || others.is_empty())
+            .then(|| pairs.iter().map(|_| small_rational(&mut rng)).collect());
+        if let Some(found) = attempt(base, taus, &mut rng) {
+            return Some(found);
         }
     }
     None
+}
+
+/// The rationals `n/d` of height `max(|n|, d)` at most `max_height`, in the order of the
+/// counter-example search: by height, the non-negative ones first, then by absolute value
+/// (`0, 1, -1, 1/2, 2, -1/2, -2, 1/3, 2/3, 3/2, 3, ...`).
+pub fn small_height_rationals(max_height: i64) -> Vec<Rational> {
+    // (height, negative, |q|) and the sign applied after sorting.
+    let mut out: Vec<(i64, bool, Rational)> = Vec::new();
+    for h in 1..=max_height {
+        for d in 1..=h {
+            for n in 0..=h {
+                if n.max(d) != h || num_integer::gcd(n, d) != 1 {
+                    continue;
+                }
+                let q = Rational::new(n, d).expect("d >= 1");
+                if n > 0 {
+                    out.push((h, true, q.clone()));
+                }
+                out.push((h, false, q));
+            }
+        }
+    }
+    out.sort();
+    out.into_iter()
+        .map(|(_, negative, q)| if negative { q.neg_ref() } else { q })
+        .collect()
+}
+
+/// The points of the small-height phase of the search, at most `budget` of them: each active
+/// variable runs through the first [`SMALL_VALUES`] small-height rationals of its domain (an
+/// inactive one keeps its first), the tuples of positions ordered by their largest position, then
+/// by their sum, then lexicographically. A variable whose domain holds no rational of height up
+/// to [`SMALL_HEIGHT`] takes the domain's own samples (seeded).
+fn small_points(dom: &[Domain], active: &[bool], budget: usize) -> Vec<Vec<Rational>> {
+    let heights = small_height_rationals(SMALL_HEIGHT);
+    let mut rng = Rng::new(0x5EED_0002);
+    let lists: Vec<Vec<Rational>> = dom
+        .iter()
+        .enumerate()
+        .map(|(v, d)| {
+            let mut l: Vec<Rational> = heights
+                .iter()
+                .filter(|q| d.contains(&Radical::from(*q)))
+                .take(if active[v] { SMALL_VALUES } else { 1 })
+                .cloned()
+                .collect();
+            if l.is_empty() {
+                let k = if active[v] { SMALL_VALUES } else { 1 };
+                for _ in 0..k {
+                    let x = d.sample(&mut rng);
+                    if !l.contains(&x) {
+                        l.push(x);
+                    }
+                }
+            }
+            l
+        })
+        .collect();
+    let lens: Vec<usize> = lists.iter().map(Vec::len).collect();
+    let mut out = Vec::new();
+    let top = lens.iter().copied().max().unwrap_or(1).max(1) - 1;
+    let n = lens.len();
+    'levels: for level in 0..=top {
+        for sum in level..=level * n.max(1) {
+            let mut tuple = vec![0usize; n];
+            tuples(&lens, level, sum, 0, &mut tuple, &mut |t| {
+                if out.len() < budget {
+                    out.push(t.iter().zip(&lists).map(|(&i, l)| l[i].clone()).collect());
+                }
+                out.len() < budget
+            });
+            if out.len() >= budget {
+                break 'levels;
+            }
+        }
+    }
+    out
+}
+
+/// Calls `emit` with every tuple `t` (`t[i] < lens[i]`, `t[i] <= level`) of largest entry
+/// `level` and entry sum `sum`, positions `from..` still free, in lexicographic order; stops when
+/// `emit` answers `false` (and answers `false` then).
+fn tuples(
+    lens: &[usize],
+    level: usize,
+    sum: usize,
+    from: usize,
+    t: &mut Vec<usize>,
+    emit: &mut dyn FnMut(&[usize]) -> bool,
+) -> bool {
+    if from == lens.len() {
+        if sum == 0 && (t.is_empty() || t.contains(&level)) {
+            return emit(t);
+        }
+        return true;
+    }
+    let room: usize = lens[from + 1..]
+        .iter()
+        .map(|&l| l.min(level + 1).saturating_sub(1))
+        .sum();
+    let hi = (lens[from].min(level + 1)).saturating_sub(1).min(sum);
+    for x in 0..=hi {
+        if sum - x > room {
+            continue;
+        }
+        t[from] = x;
+        if !tuples(lens, level, sum - x, from + 1, t, emit) {
+            return false;
+        }
+    }
+    t[from] = 0;
+    true
 }
 
 /// Step 3 of the search: fixes variables of `rels` one at a time (solving univariate relations,
@@ -688,6 +855,88 @@ mod tests {
             real_roots(&cubic, 0),
             vec![Radical::from(Rational::new(1, 2).unwrap())]
         );
+    }
+
+    #[test]
+    fn small_heights_are_ordered_by_height() {
+        let r = |n: i64, d: i64| Rational::new(n, d).unwrap();
+        let q = small_height_rationals(3);
+        assert_eq!(
+            q[..7],
+            [
+                r(0, 1),
+                r(1, 1),
+                r(-1, 1),
+                r(1, 2),
+                r(2, 1),
+                r(-1, 2),
+                r(-2, 1)
+            ]
+        );
+        // Every rational of height at most 3 once: 0, +-1, +-1/2, +-2, +-1/3, +-2/3, +-3/2, +-3.
+        assert_eq!(q.len(), 15);
+        let mut sorted = q.clone();
+        sorted.sort();
+        sorted.dedup();
+        assert_eq!(sorted.len(), 15);
+    }
+
+    fn failing_point(
+        text: &str,
+        names: &[&str],
+        domains: &[(Var, Domain)],
+    ) -> Vec<(String, String)> {
+        let mut vars = Vars::from_names(names);
+        let residual = p(text, &mut vars);
+        match decide_in(&residual, &[], domains, vars.len()).unwrap() {
+            Decision::Fails { point, .. } => point
+                .iter()
+                .map(|(v, x)| (vars.name(*v).unwrap().to_string(), x.to_string()))
+                .collect(),
+            other => panic!("{text}: {other:?}"),
+        }
+    }
+
+    #[test]
+    fn the_counter_example_has_small_height() {
+        let names = ["t", "w0", "w1", "w2"];
+        let residual = "-3 w0 w1^2 w2 t^2 (1-t)^2";
+        let at = |pairs: &[(&str, &str)]| -> Vec<(String, String)> {
+            pairs
+                .iter()
+                .map(|(a, b)| (a.to_string(), b.to_string()))
+                .collect()
+        };
+        // Without domains: t = 0 and t = 1 are zeros, so t = -1 with every weight 1.
+        assert_eq!(
+            failing_point(residual, &names, &[]),
+            at(&[("t", "-1"), ("w0", "1"), ("w1", "1"), ("w2", "1")])
+        );
+        // 0 < t < 1 and positive weights: t = 1/2, w = 1.
+        let open = |lo: i64, hi: Option<i64>| Domain {
+            lower: Some((Rational::from(lo), true)),
+            upper: hi.map(|h| (Rational::from(h), true)),
+        };
+        let domains = [
+            (0, open(0, Some(1))),
+            (1, open(0, None)),
+            (2, open(0, None)),
+            (3, open(0, None)),
+        ];
+        assert_eq!(
+            failing_point(residual, &names, &domains),
+            at(&[("t", "1/2"), ("w0", "1"), ("w1", "1"), ("w2", "1")])
+        );
+        // A domain without small rationals still gets points (its own samples).
+        let far = [(
+            0,
+            Domain {
+                lower: Some((Rational::new(1000001, 1000).unwrap(), true)),
+                upper: Some((Rational::new(1000002, 1000).unwrap(), true)),
+            },
+        )];
+        let pt = failing_point("t - 1000", &["t"], &far);
+        assert_eq!(pt.len(), 1);
     }
 
     #[test]

@@ -174,7 +174,7 @@ impl Phrasing<'_> {
                     .collect();
                 let at = at.join(", ");
                 let value = self.shown(value.to_string());
-                let nf = self.shown(normal_form.display(self.vars).to_string());
+                let nf = self.shown(super::factored(normal_form, self.vars));
                 match self.voice {
                     Voice::Catalogue => format!(
                         "{} is not zero: at {at} it is {value}; it reduces to {nf}",
@@ -210,7 +210,7 @@ impl Phrasing<'_> {
                 normal_form,
                 searched,
             } => {
-                let nf = self.shown(normal_form.display(self.vars).to_string());
+                let nf = self.shown(super::factored(normal_form, self.vars));
                 match self.voice {
                     Voice::Catalogue => format!(
                         "{} reduces to {nf} (not in the ideal of the relations), but no real counter-example was found: {searched}",
@@ -292,7 +292,7 @@ impl Phrasing<'_> {
             return String::new();
         };
         let modulo = self.modulo();
-        let nf = normal_form.display(self.vars).to_string();
+        let nf = super::factored(normal_form, self.vars);
         if matches!(r.correction, Some(CorrectionVerdict::Proved)) {
             format!("the corrected form is proved equal to RHS{modulo}; the printed LHS differs from RHS by {nf}")
         } else if r.cleared[*coordinate] {
