@@ -15,11 +15,13 @@
 
 use crate::Error;
 use clap::Args;
+use exactcheck_core::Ring;
 use exactcheck_exact::expr::{parse_expr, Coefficient, Expr};
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
-    counter_example, decide_fraction, decide_in, real_zero_free, where_clause, DecideError,
-    Decision, Domain, FractionIdentity, PointField, HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
+    counter_example, decide_fraction, decide_where, real_zero_free, square_roots, where_clause,
+    DecideError, Decision, Domain, FractionIdentity, Hypothesis, PointField, SquareRoot,
+    HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
 };
 use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::{Radical, Rational};
@@ -63,6 +65,8 @@ pub enum Where {
     Relation(Expr, Expr),
     /// A variable's bounds.
     Domain(String, Domain),
+    /// `A != B`: a hypothesis the proof may use (and the counter-example search respects).
+    NonZero(Expr, Expr),
 }
 
 /// Parses `--where #i` (`what` names it): `A = B`, or a chain `a < v`, `v >= a`, `a <= v < b`
@@ -81,6 +85,17 @@ pub fn parse_where_with(
     what: &str,
     parse: &dyn Fn(&str, &str) -> Result<Expr, Error>,
 ) -> Result<Where, Error> {
+    if let Some((a, b)) = text.split_once("!=") {
+        if b.contains(['=', '<', '>', '!']) || a.contains(['=', '<', '>']) {
+            return Err(Error::Input(format!(
+                "{what}: {text:?} must have the form 'A != B' (one '!=', no other comparison)"
+            )));
+        }
+        return Ok(Where::NonZero(
+            parse(a, &format!("{what} left side"))?,
+            parse(b, &format!("{what} right side"))?,
+        ));
+    }
     // Split at the comparison operators.
     let mut parts = Vec::new();
     let mut ops = Vec::new();
@@ -197,7 +212,7 @@ fn random_test(
     };
     if has_domains {
         return Err(Error::Usage(
-            "--random does not take domains ('r > 0'); run without --random".into(),
+            "--random does not take domains ('r > 0') or hypotheses ('w != 0'); run without --random".into(),
         ));
     }
     let mut vars = Vars::new();
@@ -346,11 +361,13 @@ pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
         None => None,
     };
     let mut relations = Vec::new();
+    let mut nonzero = Vec::new();
     let mut domains: Vec<(String, Domain, String)> = Vec::new();
     for (i, r) in args.relations.iter().enumerate() {
         let what = format!("--where #{}", i + 1);
         match parse_where(r, &what)? {
             Where::Relation(a, b) => relations.push((a, b)),
+            Where::NonZero(a, b) => nonzero.push((a, b, r.trim().to_string())),
             Where::Domain(v, d) => {
                 if d.is_empty() {
                     return Err(Error::Input(format!("{what}: the domain {r:?} is empty")));
@@ -372,7 +389,7 @@ pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
             &lhs,
             rhs.as_ref().unwrap_or(&zero),
             &relations,
-            !domains.is_empty(),
+            !domains.is_empty() || !nonzero.is_empty(),
         );
     }
     // Radicals need the radical coefficient field; everything else runs over Q.
@@ -381,9 +398,9 @@ pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
         .chain(&args.relations)
         .any(|s| s.contains("sqrt"));
     if radical {
-        prove_over::<Radical>(args, &lhs, rhs.as_ref(), &relations, &domains)
+        prove_over::<Radical>(args, &lhs, rhs.as_ref(), &relations, &nonzero, &domains)
     } else {
-        prove_over::<Rational>(args, &lhs, rhs.as_ref(), &relations, &domains)
+        prove_over::<Rational>(args, &lhs, rhs.as_ref(), &relations, &nonzero, &domains)
     }
 }
 
@@ -406,9 +423,12 @@ fn prove_over<C: PointField + Display>(
     lhs: &Expr,
     rhs: Option<&Expr>,
     relations: &[(Expr, Expr)],
+    nonzero: &[(Expr, Expr, String)],
     domains: &[(String, Domain, String)],
 ) -> Result<ExitCode, Error> {
     let mut vars = Vars::new();
+    // `sqrt` of a non-constant becomes a variable with its relation and sign condition.
+    vars.allow_roots();
     let l = to_ratfun::<C>(lhs, &mut vars, "LHS")?;
     let r = match rhs {
         Some(e) => to_ratfun::<C>(e, &mut vars, "RHS")?,
@@ -431,6 +451,28 @@ fn prove_over<C: PointField + Display>(
             hypotheses.extend(cleared.conditions);
         }
     }
+    // Hypotheses `A != B` (cleared of denominators, which become hypotheses too).
+    let mut assumed: Vec<(Poly<C>, String)> = Vec::new();
+    for (i, (a, b, text)) in nonzero.iter().enumerate() {
+        let what = format!("--where {text:?}");
+        let a = to_ratfun::<C>(a, &mut vars, &what)?;
+        let b = to_ratfun::<C>(b, &mut vars, &what)?;
+        let cleared =
+            FractionIdentity::new(&a, &b).map_err(|e| Error::Input(format!("{what}: {e}")))?;
+        if cleared.residual.is_zero() {
+            return Err(Error::Input(format!(
+                "--where #{}: {text:?} is false everywhere (both sides are the same)",
+                i + 1
+            )));
+        }
+        assumed.push((cleared.residual, text.clone()));
+        hypotheses.extend(cleared.conditions);
+    }
+    let roots = square_roots::<C>(&mut vars)
+        .map_err(|e| Error::Input(format!("square root: {e}")))?;
+    for root in &roots {
+        rels.push(root.relation());
+    }
     // A polynomial identity takes the polynomial path; fractions are cleared.
     let fraction = if l.is_polynomial() && r.is_polynomial() && hypotheses.is_empty() {
         None
@@ -446,6 +488,7 @@ fn prove_over<C: PointField + Display>(
         })?;
         doms.push((var, d.clone()));
     }
+    doms.extend(roots.iter().map(|r| (r.var, SquareRoot::<C>::domain())));
     let name = |v: Var| {
         vars.name(v)
             .expect("the engine reports only variables of the table")
@@ -476,7 +519,7 @@ fn prove_over<C: PointField + Display>(
         let rel_texts: Vec<&str> = conditions
             .iter()
             .copied()
-            .filter(|t| !t.contains(['<', '>']))
+            .filter(|t| !t.contains(['<', '>', '!']))
             .collect();
         format!(" modulo {}", rel_texts.join(", "))
     };
@@ -486,9 +529,30 @@ fn prove_over<C: PointField + Display>(
         let d: Vec<&str> = domains.iter().map(|(_, _, t)| t.as_str()).collect();
         format!(" for {}", d.join(", "))
     };
+    // The polynomials declared non-zero, in the order the engine numbers them, and their texts.
+    let mut declared: Vec<Poly<C>> = Vec::new();
+    let mut declared_texts: Vec<String> = Vec::new();
+    if let Some(f) = &fraction {
+        declared.extend(f.conditions.iter().cloned());
+        declared.extend(hypotheses.iter().cloned());
+    }
+    for p in &declared {
+        declared_texts.push(format!("{} != 0", p.display(&vars)));
+    }
+    let user_start = declared.len();
+    for (p, text) in &assumed {
+        declared.push(p.clone());
+        declared_texts.push(text.clone());
+    }
     let decision = match &fraction {
-        None => decide_in(&residual, &rels, &doms, vars.len()),
-        Some(f) => decide_fraction(f, &rels, &hypotheses, &doms, vars.len()),
+        None => decide_where(&residual, &rels, &declared, &doms, vars.len()),
+        Some(f) => decide_fraction(
+            f,
+            &rels,
+            &[&hypotheses[..], &declared[user_start..]].concat(),
+            &doms,
+            vars.len(),
+        ),
     }
     .map_err(|e| match e {
         DecideError::Inconsistent => Error::Input(format!(
@@ -519,12 +583,49 @@ fn prove_over<C: PointField + Display>(
     .chain(&rels)
     .chain(&excluded)
     .collect();
-    let evidence = match &decision {
-        Decision::Proved { expanded_terms } if *expanded_terms == 0 => {
-            format!("LHS - RHS{cleared} expands to 0{where_nonzero}")
+    // The side conditions of the square roots, and the hypotheses a proof used.
+    let defined = if roots.is_empty() {
+        String::new()
+    } else {
+        let c: Vec<String> = roots
+            .iter()
+            .filter(|r| !r.defined_everywhere())
+            .map(SquareRoot::condition)
+            .collect();
+        if c.is_empty() {
+            " (the square roots are defined everywhere)".to_string()
+        } else {
+            format!(" (the square roots are defined where {})", c.join(", "))
         }
-        Decision::Proved { expanded_terms } => {
-            format!("LHS - RHS{cleared} expands to {expanded_terms} terms, which reduce to 0{modulo}{where_nonzero}")
+    };
+    let hypothesis_text = |h: &Hypothesis| match *h {
+        Hypothesis::NonZero(i) => declared_texts[i].clone(),
+        Hypothesis::Domain(v) => match roots.iter().find(|r| r.var == v) {
+            Some(_) => format!("{} >= 0", name(v)),
+            None => domains
+                .iter()
+                .find(|(n, _, _)| vars.get(n) == Some(v))
+                .map_or_else(|| name(v), |(_, _, t)| t.trim().to_string()),
+        },
+    };
+    let used: Vec<String> = match &decision {
+        Decision::Proved { hypotheses, .. } => hypotheses.iter().map(hypothesis_text).collect(),
+        _ => Vec::new(),
+    };
+    let using = if used.is_empty() {
+        String::new()
+    } else {
+        format!(", using the hypotheses {}", used.join(", "))
+    };
+    let evidence = match &decision {
+        Decision::Proved { expanded_terms, .. } if *expanded_terms == 0 => {
+            format!("LHS - RHS{cleared} expands to 0{where_nonzero}{defined}")
+        }
+        Decision::Proved { expanded_terms, .. } if !used.is_empty() => {
+            format!("LHS - RHS{cleared} expands to {expanded_terms} terms, which vanish{modulo}{using}{where_nonzero}{defined}")
+        }
+        Decision::Proved { expanded_terms, .. } => {
+            format!("LHS - RHS{cleared} expands to {expanded_terms} terms, which reduce to 0{modulo}{where_nonzero}{defined}")
         }
         Decision::Fails {
             normal_form,
@@ -540,7 +641,7 @@ fn prove_over<C: PointField + Display>(
             if fraction.is_some() {
                 // `LHS - RHS` is the normal form over the cleared denominator.
                 format!(
-                    "at {}{} LHS - RHS = {value}; LHS - RHS{cleared} reduces{modulo} to {nf}, not zero{where_nonzero}",
+                    "at {}{} LHS - RHS = {value}; LHS - RHS{cleared} reduces{modulo} to {nf}, not zero{where_nonzero}{defined}",
                     abbreviate(at.join(", ")),
                     if relations.is_empty() { "" } else { " (where the relations hold)" },
                 )
@@ -553,7 +654,7 @@ fn prove_over<C: PointField + Display>(
                 )
             } else {
                 format!(
-                    "at {}{} LHS - RHS = {value}; LHS - RHS reduces{modulo} to {nf}, so LHS = RHS + ({nf})",
+                    "at {}{} LHS - RHS = {value}; LHS - RHS reduces{modulo} to {nf}, so LHS = RHS + ({nf}){defined}",
                     abbreviate(at.join(", ")),
                     if relations.is_empty() { "" } else { " (where the relations hold)" },
                 )
@@ -563,7 +664,7 @@ fn prove_over<C: PointField + Display>(
             normal_form,
             searched,
         } => format!(
-            "LHS - RHS{cleared} reduces{modulo} to {} (not zero), but no point{within} where it is non-zero was found{where_nonzero}: {searched}",
+            "LHS - RHS{cleared} reduces{modulo} to {} (not zero), but no point{within} where it is non-zero was found{where_nonzero}{defined}: {searched}",
             abbreviate(normal_form.display(&vars).to_string())
         ),
     };
@@ -574,6 +675,16 @@ fn prove_over<C: PointField + Display>(
             "evidence": evidence,
             "residual_terms": terms,
         });
+        if !used.is_empty() {
+            obj["hypotheses_used"] = json!(used);
+        }
+        if !roots.is_empty() {
+            obj["square_roots"] = roots
+                .iter()
+                .map(|r| json!({"root": name(r.var), "defined_where": r.condition()}))
+                .collect::<Vec<_>>()
+                .into();
+        }
         if fraction.is_some() {
             obj["conditions"] = excluded
                 .iter()

@@ -14,8 +14,8 @@ use exactcheck_exact::expr::{parse_expr, AddOp, Coefficient, Expr, ExprKind};
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
     counter_example, decide_fraction, decide_in, random_identity_test, unit_circle_pairs,
-    where_clause, DecideError, Decision, Domain, FractionIdentity, PointField, RandomDecision,
-    Seed, HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
+    square_roots, where_clause, DecideError, Decision, Domain, FractionIdentity, Hypothesis,
+    PointField, RandomDecision, Seed, SquareRoot, HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
 };
 use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::{Radical, Rational};
@@ -40,6 +40,8 @@ pub struct Conditions {
     relations: Vec<(Expr, Expr)>,
     relation_texts: Vec<String>,
     domains: Vec<(String, Domain, String)>,
+    /// Hypotheses `A != B` and their texts.
+    nonzero: Vec<(Expr, Expr, String)>,
 }
 
 /// A claim ready to be decided.
@@ -347,6 +349,15 @@ fn conditions(c: &RawClaim, defs: &RefCell<Defs>) -> Built<Conditions> {
                     out.relations.push((a, b));
                     out.relation_texts.push(text.clone());
                 }
+                Where::NonZero(a, b) => {
+                    if key == "domains" {
+                        return Err((
+                            key,
+                            format!("{what}: {text:?} is a hypothesis, not a domain (put it under where)"),
+                        ));
+                    }
+                    out.nonzero.push((a, b, text.trim().to_string()));
+                }
                 Where::Domain(v, d) => {
                     if d.is_empty() {
                         return Err((key, format!("{what}: the domain {text:?} is empty")));
@@ -442,6 +453,8 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<Outcome, Fault> {
         unreachable!("identity() is called for identity claims")
     };
     let mut vars = Vars::new();
+    // `sqrt` of a non-constant becomes a variable with its relation and sign condition.
+    vars.allow_roots();
     let mut sides = Vec::new();
     for (l, r) in lhs.iter().zip(rhs) {
         let l = to_ratfun::<C>(l, &mut vars, "lhs")?;
@@ -471,6 +484,25 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<Outcome, Fault> {
             hypotheses.extend(cleared.conditions);
         }
     }
+    // Hypotheses `A != B`, cleared of denominators, after the divisors of the relations: the
+    // engine numbers the non-zero polynomials in this order.
+    let mut nonzero_texts: Vec<(Poly<C>, String)> = Vec::new();
+    for (a, b, text) in &conditions.nonzero {
+        let a = to_ratfun::<C>(a, &mut vars, "where")?;
+        let b = to_ratfun::<C>(b, &mut vars, "where")?;
+        let cleared = clear(&a, &b, "where")?;
+        if cleared.residual.is_zero() {
+            return Err(Fault::Input(
+                "where",
+                format!("{text:?} is false everywhere (both sides are the same)"),
+            ));
+        }
+        hypotheses.extend(cleared.conditions);
+        nonzero_texts.push((cleared.residual, text.clone()));
+    }
+    hypotheses.extend(nonzero_texts.iter().map(|(p, _)| p.clone()));
+    let roots = square_roots::<C>(&mut vars).map_err(|e| Fault::Input("lhs", e.to_string()))?;
+    rels.extend(roots.iter().map(SquareRoot::relation));
     // `l = r`: a polynomial residual, or (with a fraction anywhere) the cleared identity.
     let pair =
         |l: &RatFun<C>, r: &RatFun<C>| -> Result<(Poly<C>, Option<FractionIdentity<C>>), Fault> {
@@ -510,6 +542,7 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<Outcome, Fault> {
         })?;
         doms.push((var, d.clone()));
     }
+    doms.extend(roots.iter().map(|r| (r.var, SquareRoot::<C>::domain())));
     let modulo = if conditions.relation_texts.is_empty() {
         String::new()
     } else {
@@ -576,9 +609,40 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<Outcome, Fault> {
         }
     };
     let mut terms = 0;
+    // The hypotheses the proofs used, as written.
+    let mut used: Vec<String> = Vec::new();
     for (k, res) in residuals.iter().enumerate() {
         match decide(res, fractions[k].as_ref())? {
-            Decision::Proved { expanded_terms } => terms += expanded_terms,
+            Decision::Proved {
+                expanded_terms,
+                hypotheses: proof_used,
+            } => {
+                terms += expanded_terms;
+                let ncond = fractions[k].as_ref().map_or(0, |f| f.conditions.len());
+                for h in proof_used {
+                    let text = match h {
+                        Hypothesis::NonZero(i) if i < ncond => {
+                            let f = fractions[k].as_ref().expect("there are conditions");
+                            format!("{} != 0", f.conditions[i].display(&vars))
+                        }
+                        Hypothesis::NonZero(i) => {
+                            let p = &hypotheses[i - ncond];
+                            nonzero_texts
+                                .iter()
+                                .find(|(q, _)| q == p)
+                                .map_or_else(|| format!("{} != 0", p.display(&vars)), |(_, t)| t.clone())
+                        }
+                        Hypothesis::Domain(v) => conditions
+                            .domains
+                            .iter()
+                            .find(|(n, _, _)| vars.get(n) == Some(v))
+                            .map_or_else(|| format!("{} >= 0", name(v)), |(_, _, t)| t.trim().to_string()),
+                    };
+                    if !used.contains(&text) {
+                        used.push(text);
+                    }
+                }
+            }
             Decision::Undecided {
                 normal_form,
                 searched,
@@ -728,6 +792,28 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<Outcome, Fault> {
         }
     }
     let n = residuals.len();
+    let where_nonzero = if used.is_empty() {
+        where_nonzero
+    } else {
+        format!(", using the hypotheses {}{where_nonzero}", used.join(", "))
+    };
+    let where_nonzero = if roots.is_empty() {
+        where_nonzero
+    } else {
+        let c: Vec<String> = roots
+            .iter()
+            .filter(|r| !r.defined_everywhere())
+            .map(SquareRoot::condition)
+            .collect();
+        if c.is_empty() {
+            format!("{where_nonzero} (the square roots are defined everywhere)")
+        } else {
+            format!(
+                "{where_nonzero} (the square roots are defined where {})",
+                c.join(", ")
+            )
+        }
+    };
     Ok(Outcome {
         verdict: Verdict::Proved,
         method,

@@ -111,7 +111,7 @@ where
             Err(e) => return undecided(format!("{what}: {e}")),
         };
         match decision {
-            Decision::Proved { expanded_terms } => terms += expanded_terms,
+            Decision::Proved { expanded_terms, .. } => terms += expanded_terms,
             Decision::Fails {
                 normal_form,
                 point,

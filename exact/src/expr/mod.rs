@@ -106,6 +106,7 @@ mod latex;
 mod mathml;
 mod parse;
 mod print;
+mod roots;
 #[cfg(test)]
 mod tests;
 mod w1;
@@ -403,7 +404,8 @@ pub enum ExprError {
         /// Byte position of the power or product.
         pos: usize,
     },
-    /// `sqrt` of an expression that is not constant.
+    /// `sqrt` of an expression that is not constant, where the conversion does not allow
+    /// such roots ([`crate::poly::Vars::allow_roots`]).
     #[error("sqrt of a non-constant expression at {pos}")]
     NonConstantSqrt {
         /// Byte position of the argument.
@@ -418,6 +420,15 @@ pub enum ExprError {
         arg: String,
         /// The coefficient type's hint ([`Coefficient::sqrt_hint`]).
         hint: &'static str,
+    },
+    /// `sqrt(E)` of a non-constant `E` that is negative at every real point: the root is
+    /// nowhere defined.
+    #[error("sqrt({arg}) at {pos}: the radicand is negative for all real values, so the square root is defined nowhere")]
+    NegativeRadicand {
+        /// Byte position of the argument.
+        pos: usize,
+        /// The argument, printed.
+        arg: String,
     },
     /// A number with no image in the coefficient ring.
     #[error("the number {number} at {pos} has no image in the coefficient ring")]
@@ -457,6 +468,7 @@ impl ExprError {
             | ExprError::UnknownFunction { pos, .. }
             | ExprError::NotConstant { pos, .. }
             | ExprError::NonConstantSqrt { pos }
+            | ExprError::NegativeRadicand { pos, .. }
             | ExprError::NoSqrt { pos, .. }
             | ExprError::Unrepresentable { pos, .. }
             | ExprError::Limit { pos, .. } => *pos,

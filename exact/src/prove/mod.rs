@@ -40,9 +40,13 @@
 //! [`SEARCH_ATTEMPTS`] attempts.
 
 mod fraction;
+mod hypotheses;
 pub mod random;
+mod roots;
 
 pub use fraction::{decide_fraction, real_zero_free, where_clause, FractionIdentity};
+pub use hypotheses::{Hypothesis, MAX_HYPOTHESIS_DROPS};
+pub use roots::{square_roots, SquareRoot};
 
 pub use random::{
     random_identity_test, size_bound, RandomDecision, RandomReport, Seed, SizeBound,
@@ -119,6 +123,9 @@ pub enum Decision<C: PointField> {
     Proved {
         /// Terms of the expanded residual before reduction (0 when it expanded to zero outright).
         expanded_terms: usize,
+        /// The hypotheses the proof used (empty when the residual is zero modulo the relations
+        /// alone); see [`decide_where`].
+        hypotheses: Vec<Hypothesis>,
     },
     /// A counter-example: the point lies in the domains, the relations hold, the residual does
     /// not vanish (all verified exactly).
@@ -359,9 +366,13 @@ pub fn decide_in<C: PointField>(
     decide_where(residual, relations, &[], domains, nvars)
 }
 
-/// [`decide_in`] where the polynomials `nonzero` do not vanish (the denominators of an
-/// identity between fractions, [`decide_fraction`]): the proof does not use them, and a
-/// counter-example must make every one of them non-zero.
+/// [`decide_in`] where the polynomials `nonzero` do not vanish (hypotheses `w != 0`, the
+/// denominators of an identity between fractions, [`decide_fraction`]): a counter-example must
+/// make every one of them non-zero. When the residual does not reduce to zero modulo the
+/// relations alone, the proof uses the hypotheses: each non-zero polynomial (by a Rabinowitsch
+/// variable), the non-zero values and the signs the domains imply, and the sign conditions of
+/// square roots (a variable `y >= 0` with a relation `a y^2 - E`); [`Decision::Proved`] then lists
+/// a minimal set of hypotheses that still proves it (see the `hypotheses` module).
 ///
 /// # Errors
 /// As [`decide_in`].
@@ -401,15 +412,30 @@ pub fn decide_where<C: PointField>(
     };
     let expanded_terms = residual.len();
     if residual.is_zero() {
-        return Ok(Decision::Proved { expanded_terms: 0 });
+        return Ok(Decision::Proved {
+            expanded_terms: 0,
+            hypotheses: Vec::new(),
+        });
     }
     let mut nf = residual.try_reduce_unit_circle(&pairs)?;
     if !basis.is_empty() && !nf.is_zero() {
         nf = nf.reduce(&basis);
     }
     if nf.is_zero() {
-        return Ok(Decision::Proved { expanded_terms });
+        return Ok(Decision::Proved {
+            expanded_terms,
+            hypotheses: Vec::new(),
+        });
     }
+    let tried = match hypotheses::prove_under_hypotheses(residual, relations, nonzero, &dom) {
+        hypotheses::Outcome::Proved(used) => {
+            return Ok(Decision::Proved {
+                expanded_terms,
+                hypotheses: used,
+            })
+        }
+        hypotheses::Outcome::NotProved(tried) => tried,
+    };
     Ok(search(residual, relations, nonzero, &pairs, &others, &dom, nvars)
         .map(|(point, value)| Decision::Fails {
             normal_form: nf.clone(),
@@ -418,7 +444,7 @@ pub fn decide_where<C: PointField>(
         })
         .unwrap_or_else(|| Decision::Undecided {
             searched: format!(
-                "{SEARCH_ATTEMPTS} exact candidate points (small rationals, inside the domains if any{}{}) were checked, none satisfies the relations{}{} with a non-zero residual",
+                "{SEARCH_ATTEMPTS} exact candidate points (small rationals, inside the domains if any{}{}) were checked, none satisfies the relations{}{} with a non-zero residual{tried}",
                 if pairs.is_empty() { "" } else { ", rational points of the unit circles" },
                 if others.is_empty() && pairs.is_empty() {
                     ""
