@@ -212,7 +212,7 @@ fn random_test(
     };
     if has_domains {
         return Err(Error::Usage(
-            "--random does not take domains ('r > 0') or hypotheses ('w != 0'); run without --random".into(),
+            "--random does not take domains ('r > 0'); run without --random".into(),
         ));
     }
     let mut vars = Vars::new();
@@ -381,6 +381,11 @@ pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
             }
         }
     }
+    if args.random.is_some() && !nonzero.is_empty() {
+        return Err(Error::Usage(
+            "--random does not take hypotheses ('w != 0'); run without --random".into(),
+        ));
+    }
     if let Some(k) = args.random {
         let zero = parse("0", "RHS")?;
         return random_test(
@@ -389,7 +394,7 @@ pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
             &lhs,
             rhs.as_ref().unwrap_or(&zero),
             &relations,
-            !domains.is_empty() || !nonzero.is_empty(),
+            !domains.is_empty(),
         );
     }
     // Radicals need the radical coefficient field; everything else runs over Q.

@@ -202,7 +202,7 @@ fn the_claims_file_uses_its_hypotheses() {
 fn bad_roots_and_hypotheses_are_one_line_errors() {
     for (args, needle) in [
         (vec!["prove", "sqrt(-1 - x^2)", "1"], "the radicand is negative for all real values"),
-        (vec!["prove", "sqrt(-2)", "1"], "sqrt(2)"),
+        (vec!["prove", "sqrt(-2)", "1"], "it is negative"),
         (vec!["prove", "x", "x", "--where", "x != x"], "is false everywhere"),
         (vec!["prove", "x", "x", "--where", "x != 1 = 2"], "'A != B'"),
         (vec!["prove", "sqrt(x)", "1", "--random", "10"], "--random"),
