@@ -473,8 +473,8 @@ fn prove_over<C: PointField + Display>(
         assumed.push((cleared.residual, text.clone()));
         hypotheses.extend(cleared.conditions);
     }
-    let roots = square_roots::<C>(&mut vars)
-        .map_err(|e| Error::Input(format!("square root: {e}")))?;
+    let roots =
+        square_roots::<C>(&mut vars).map_err(|e| Error::Input(format!("square root: {e}")))?;
     for root in &roots {
         rels.push(root.relation());
     }

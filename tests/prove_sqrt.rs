@@ -57,7 +57,11 @@ fn what_holds_for_both_roots_is_proved_by_ideal_membership() {
         ("sqrt(x + 1)", "sqrt(1 + x)"),
     ] {
         let (code, j) = prove_json(&[l, r]);
-        assert_eq!((code, j["verdict"].as_str()), (0, Some("proved")), "{l} = {r}: {j}");
+        assert_eq!(
+            (code, j["verdict"].as_str()),
+            (0, Some("proved")),
+            "{l} = {r}: {j}"
+        );
         assert!(j.get("hypotheses_used").is_none(), "{l} = {r}: {j}");
     }
     let (code, out, _) = run(&["prove", "sqrt(x)^2", "x"]);
@@ -81,7 +85,11 @@ fn what_holds_for_both_roots_is_proved_by_ideal_membership() {
         ("sqrt(x)", "-sqrt(x)"),
     ] {
         let (code, j) = prove_json(&[l, r]);
-        assert_eq!((code, j["verdict"].as_str()), (1, Some("fails")), "{l} = {r}: {j}");
+        assert_eq!(
+            (code, j["verdict"].as_str()),
+            (1, Some("fails")),
+            "{l} = {r}: {j}"
+        );
     }
 }
 
@@ -102,8 +110,14 @@ fn a_root_defined_at_one_point_only_is_undecided() {
     let (code, out, err) = run(&["prove", "sqrt(-x^2)", "0"]);
     assert_eq!(code, 1, "{out}{err}");
     assert!(out.starts_with("undecided: "), "{out}");
-    assert!(out.contains("(the square roots are defined where -x^2 >= 0)"), "{out}");
-    assert!(out.contains("the hypotheses (each non-zero one by a Rabinowitsch variable"), "{out}");
+    assert!(
+        out.contains("(the square roots are defined where -x^2 >= 0)"),
+        "{out}"
+    );
+    assert!(
+        out.contains("the hypotheses (each non-zero one by a Rabinowitsch variable"),
+        "{out}"
+    );
     // A false identity with the same root is rejected at x = 0.
     let (code, j) = prove_json(&["sqrt(-x^2)", "1"]);
     assert_eq!((code, j["verdict"].as_str()), (1, Some("fails")), "{j}");
@@ -117,7 +131,12 @@ fn a_root_defined_at_one_point_only_is_undecided() {
 fn a_claim_that_needs_a_non_zero_hypothesis_says_so() {
     // The tangent of a rational quadratic Bezier curve at t = 0, cleared by hand: w0^2 X0 =
     // 2 w0 w1 (x1 - x0). Dividing by w0 needs w0 != 0; the residual is not in the ideal.
-    let claim = ["w0*X0", "2*w1*(x1 - x0)", "--where", "w0^2*X0 = 2*w0*w1*(x1 - x0)"];
+    let claim = [
+        "w0*X0",
+        "2*w1*(x1 - x0)",
+        "--where",
+        "w0^2*X0 = 2*w0*w1*(x1 - x0)",
+    ];
     let mut with = claim.to_vec();
     with.extend(["--where", "w0 != 0"]);
     let (code, j) = prove_json(&with);
@@ -201,17 +220,30 @@ fn the_claims_file_uses_its_hypotheses() {
 #[test]
 fn bad_roots_and_hypotheses_are_one_line_errors() {
     for (args, needle) in [
-        (vec!["prove", "sqrt(-1 - x^2)", "1"], "the radicand is negative for all real values"),
+        (
+            vec!["prove", "sqrt(-1 - x^2)", "1"],
+            "the radicand is negative for all real values",
+        ),
         (vec!["prove", "sqrt(-2)", "1"], "it is negative"),
-        (vec!["prove", "x", "x", "--where", "x != x"], "is false everywhere"),
+        (
+            vec!["prove", "x", "x", "--where", "x != x"],
+            "is false everywhere",
+        ),
         (vec!["prove", "x", "x", "--where", "x != 1 = 2"], "'A != B'"),
         (vec!["prove", "sqrt(x)", "1", "--random", "10"], "--random"),
-        (vec!["prove", "x", "1", "--where", "x != 0", "--random", "10"], "--random"),
+        (
+            vec!["prove", "x", "1", "--where", "x != 0", "--random", "10"],
+            "--random",
+        ),
     ] {
         let (code, out, err) = run(&args);
         assert_eq!(code, 2, "{args:?}: {out}{err}");
         assert!(out.is_empty(), "{args:?}: {out}");
-        assert_eq!(err.lines().filter(|l| !l.contains("hint:")).count(), 1, "{args:?}: {err}");
+        assert_eq!(
+            err.lines().filter(|l| !l.contains("hint:")).count(),
+            1,
+            "{args:?}: {err}"
+        );
         assert!(err.contains(needle), "{args:?}: {err}");
     }
 }

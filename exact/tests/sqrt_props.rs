@@ -7,7 +7,9 @@
 use exactcheck_core::Ring;
 use exactcheck_exact::expr::parse_expr;
 use exactcheck_exact::poly::{Poly, Vars};
-use exactcheck_exact::prove::{decide_where, square_roots, Decision, Domain, Hypothesis, SquareRoot};
+use exactcheck_exact::prove::{
+    decide_where, square_roots, Decision, Domain, Hypothesis, SquareRoot,
+};
 use exactcheck_exact::Rational;
 use proptest::prelude::*;
 
@@ -40,7 +42,11 @@ fn decide(lhs: &str, rhs: &str, domains: &[(&str, Domain)]) -> Decision<Rational
         .iter()
         .map(|(n, d)| (vars.get(n).unwrap(), d.clone()))
         .collect();
-    doms.extend(roots.iter().map(|r| (r.var, SquareRoot::<Rational>::domain())));
+    doms.extend(
+        roots
+            .iter()
+            .map(|r| (r.var, SquareRoot::<Rational>::domain())),
+    );
     decide_where(&(l - r), &rels, &[], &doms, vars.len()).unwrap()
 }
 

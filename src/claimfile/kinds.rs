@@ -13,8 +13,8 @@ use exactcheck_core::Ring;
 use exactcheck_exact::expr::{parse_expr, AddOp, Coefficient, Expr, ExprKind};
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
-    counter_example, decide_fraction, decide_in, random_identity_test, unit_circle_pairs,
-    square_roots, where_clause, DecideError, Decision, Domain, FractionIdentity, Hypothesis,
+    counter_example, decide_fraction, decide_in, random_identity_test, square_roots,
+    unit_circle_pairs, where_clause, DecideError, Decision, Domain, FractionIdentity, Hypothesis,
     PointField, RandomDecision, Seed, SquareRoot, HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
 };
 use exactcheck_exact::ratfun::RatFun;

@@ -9,8 +9,8 @@
 use super::{real_zero_free, Domain, PointField};
 use crate::expr::ExprError;
 use crate::poly::{Poly, Var, Vars};
-use crate::Rational;
 use crate::Radical;
+use crate::Rational;
 use exactcheck_core::Ring;
 
 /// The square root `sqrt(E)` named by the variable `var`.
@@ -87,8 +87,6 @@ pub fn square_roots<C: PointField>(vars: &mut Vars) -> Result<Vec<SquareRoot<C>>
 /// polynomial with a negative value at the origin is negative everywhere).
 fn surely_negative<C: PointField>(p: &Poly<C>) -> bool {
     let constant = p.coefficient(&[]);
-    let negative_at_origin = constant
-        .to_radical()
-        .is_some_and(|c| c < Radical::zero());
+    let negative_at_origin = constant.to_radical().is_some_and(|c| c < Radical::zero());
     negative_at_origin && real_zero_free(p) == Some(true)
 }
