@@ -7,7 +7,10 @@
 //! basis); see `exactcheck_exact::prove`. With a division by a non-constant anywhere, the sides
 //! are rational functions (`Expr::to_ratfun`): the identity is decided with the denominators
 //! cleared (`prove::decide_fraction`), and the divisors met are reported as side conditions. A `--where` with `<`, `<=`, `>` or `>=` is a domain (`r > 0`,
-//! `0 <= t <= 1`, constant bounds only): counter-examples are searched inside the domains.
+//! `0 <= t <= 1`, constant bounds only): counter-examples are searched inside the domains. A
+//! `--where 'w != 0'` is a hypothesis. Square roots of expressions become variables with their
+//! relations and sign conditions (`prove::square_roots`), and a proof that needs hypotheses
+//! names the ones it used.
 //! Inconsistent relations (`1 = 2`; `x = 1` and `x = 2`) are an input error. `--random K`
 //! evaluates instead at K random points modulo a prime drawn at random per run
 //! (`exactcheck_exact::prove::random`, which proves the printed error bound). Exit status:

@@ -48,7 +48,11 @@
 //!   (and takes negative powers of) any expression that is not identically zero: the result is
 //!   a rational function ([`crate::ratfun::RatFun`]) in lowest terms with the divisors met, and
 //!   an expression without such a division converts by [`Expr::to_poly`] alone.
-//! * `sqrt(...)` takes a constant and needs a coefficient type that has the root (over
+//! * `sqrt(E)` of a non-constant `E` is a variable standing for the non-negative root, one per
+//!   distinct expanded radicand, when the variable table allows it
+//!   ([`crate::poly::Vars::allow_roots`]; its relation and sign condition come from
+//!   [`crate::prove::square_roots`]), else [`ExprError::NonConstantSqrt`].
+//! * `sqrt(...)` of a constant needs a coefficient type that has the root (over
 //!   [`Rational`], only of perfect squares; [`crate::Radical`] denests; [`crate::ComplexRadical`]
 //!   takes the principal root).
 //! * A variable in a constant context ([`Expr::eval_constant`]) is an error naming it, except

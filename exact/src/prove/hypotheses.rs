@@ -259,11 +259,14 @@ fn branch_zero<C: PointField>(
         || (!basis.is_empty() && non_negative(&minus_ab.reduce(basis), signs))
 }
 
+/// A term: its exponents and its coefficient.
+type Term<C> = (Vec<(Var, u32)>, C);
+
 /// `p = A + B y` with `y^2` replaced by the root's square; `None` past a size limit.
 fn split<C: PointField>(p: &Poly<C>, root: &Root<C>) -> Option<(Poly<C>, Poly<C>)> {
     let y = root.var;
     let deg = p.degree_in(y) as usize;
-    let mut parts: Vec<Vec<(Vec<(Var, u32)>, C)>> = vec![Vec::new(); deg + 1];
+    let mut parts: Vec<Vec<Term<C>>> = vec![Vec::new(); deg + 1];
     for (m, c) in p.terms() {
         let k = m.exponent(y) as usize;
         let e: Vec<(Var, u32)> = m.exponents().into_iter().filter(|&(v, _)| v != y).collect();

@@ -3,7 +3,9 @@
 //!
 //! * **proved** — the residual expands to the zero polynomial, or its normal form modulo a
 //!   Gröbner basis of the relations is zero (then it vanishes wherever the relations hold, in
-//!   particular inside any domains);
+//!   particular inside any domains), or it vanishes under the hypotheses (the non-zero
+//!   polynomials and the domains, including the signs of square roots; see [`decide_where`]),
+//!   which are then reported;
 //! * **fails** — the normal form is non-zero and an exact real point is found that lies in the
 //!   domains, where every relation vanishes and the residual does not; the point (rational, or in
 //!   the square-root field [`Radical`]), the residual there and the normal form (what the two
