@@ -9,7 +9,10 @@
 //! the sides are rational functions (`Expr::to_ratfun`): the identity is decided with the
 //! denominators cleared, and the divisors met are reported as side conditions. `pi`, `e` and `i`
 //! are refused as variables. A `--where` with `<`, `<=`, `>` or `>=` is a domain (`r > 0`,
-//! `0 <= t <= 1`, constant bounds only): counter-examples are searched inside the domains.
+//! `0 <= t <= 1`, constant bounds only): counter-examples are searched inside the domains. A
+//! `--where 'w != 0'` is a hypothesis. Square roots of expressions become variables with their
+//! relations and sign conditions (`prove::square_roots`), and a proof that needs hypotheses
+//! names the ones it used.
 //! Inconsistent relations (`1 = 2`; `x = 1` and `x = 2`) are an input error. `--random K`
 //! evaluates instead at K random points modulo a prime drawn at random per run
 //! (`exactcheck_exact::prove::random`, which proves the printed error bound). Exit status:
@@ -17,11 +20,13 @@
 
 use crate::Error;
 use clap::Args;
+use exactcheck_core::Ring;
 use exactcheck_exact::expr::{first_reserved, parse_expr, Coefficient, Expr};
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
-    decide_identity, real_zero_free, Domain, EngineError, IdentitySpec, IdentityVerdict, Part,
-    Phrasing, PointField, Statement, Voice, HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
+    decide_identity, real_zero_free, square_roots, Domain, EngineError, FractionIdentity,
+    IdentitySpec, IdentityVerdict, Part, Phrasing, PointField, SquareRoot, Statement, Voice,
+    HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
 };
 use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::{Radical, Rational};
@@ -65,6 +70,8 @@ pub enum Where {
     Relation(Expr, Expr),
     /// A variable's bounds.
     Domain(String, Domain),
+    /// `A != B`: a hypothesis the proof may use (and the counter-example search respects).
+    NonZero(Expr, Expr),
 }
 
 /// Parses `--where #i` (`what` names it): `A = B`, or a chain `a < v`, `v >= a`, `a <= v < b`
@@ -83,6 +90,17 @@ pub fn parse_where_with(
     what: &str,
     parse: &dyn Fn(&str, &str) -> Result<Expr, Error>,
 ) -> Result<Where, Error> {
+    if let Some((a, b)) = text.split_once("!=") {
+        if b.contains(['=', '<', '>', '!']) || a.contains(['=', '<', '>']) {
+            return Err(Error::Input(format!(
+                "{what}: {text:?} must have the form 'A != B' (one '!=', no other comparison)"
+            )));
+        }
+        return Ok(Where::NonZero(
+            parse(a, &format!("{what} left side"))?,
+            parse(b, &format!("{what} right side"))?,
+        ));
+    }
     // Split at the comparison operators.
     let mut parts = Vec::new();
     let mut ops = Vec::new();
@@ -333,11 +351,13 @@ pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
         None => None,
     };
     let mut relations = Vec::new();
+    let mut nonzero = Vec::new();
     let mut domains: Vec<(String, Domain, String)> = Vec::new();
     for (i, r) in args.relations.iter().enumerate() {
         let what = format!("--where #{}", i + 1);
         match parse_where(r, &what)? {
             Where::Relation(a, b) => relations.push((a, b)),
+            Where::NonZero(a, b) => nonzero.push((a, b, r.trim().to_string())),
             Where::Domain(v, d) => {
                 if d.is_empty() {
                     return Err(Error::Input(format!("{what}: the domain {r:?} is empty")));
@@ -350,6 +370,11 @@ pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
                 domains.push((v, d, r.clone()));
             }
         }
+    }
+    if args.random.is_some() && !nonzero.is_empty() {
+        return Err(Error::Usage(
+            "--random does not take hypotheses ('w != 0'); run without --random".into(),
+        ));
     }
     if let Some(k) = args.random {
         let zero = parse("0", "RHS")?;
@@ -368,9 +393,9 @@ pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
         .chain(&args.relations)
         .any(|s| s.contains("sqrt"));
     if radical {
-        prove_over::<Radical>(args, &lhs, rhs.as_ref(), &relations, &domains)
+        prove_over::<Radical>(args, &lhs, rhs.as_ref(), &relations, &nonzero, &domains)
     } else {
-        prove_over::<Rational>(args, &lhs, rhs.as_ref(), &relations, &domains)
+        prove_over::<Rational>(args, &lhs, rhs.as_ref(), &relations, &nonzero, &domains)
     }
 }
 
@@ -393,9 +418,12 @@ fn prove_over<C: PointField + Display>(
     lhs: &Expr,
     rhs: Option<&Expr>,
     relations: &[(Expr, Expr)],
+    nonzero: &[(Expr, Expr, String)],
     domains: &[(String, Domain, String)],
 ) -> Result<ExitCode, Error> {
     let mut vars = Vars::new();
+    // `sqrt` of a non-constant becomes a variable with its relation and sign condition.
+    vars.allow_roots();
     let l = to_ratfun::<C>(lhs, &mut vars, "LHS")?;
     let r = match rhs {
         Some(e) => to_ratfun::<C>(e, &mut vars, "RHS")?,
@@ -409,6 +437,33 @@ fn prove_over<C: PointField + Display>(
             to_ratfun::<C>(b, &mut vars, &what)?,
         ));
     }
+    // Hypotheses `A != B`, cleared of denominators (which become hypotheses too).
+    let mut hypotheses: Vec<Poly<C>> = Vec::new();
+    let mut nonzero_texts: Vec<(String, String)> = Vec::new();
+    for (i, (a, b, text)) in nonzero.iter().enumerate() {
+        let what = format!("--where {text:?}");
+        let a = to_ratfun::<C>(a, &mut vars, &what)?;
+        let b = to_ratfun::<C>(b, &mut vars, &what)?;
+        let cleared =
+            FractionIdentity::new(&a, &b).map_err(|e| Error::Input(format!("{what}: {e}")))?;
+        if cleared.residual.is_zero() {
+            return Err(Error::Input(format!(
+                "--where #{}: {text:?} is false everywhere (both sides are the same)",
+                i + 1
+            )));
+        }
+        nonzero_texts.push((cleared.residual.display(&vars).to_string(), text.clone()));
+        hypotheses.push(cleared.residual);
+        hypotheses.extend(cleared.conditions);
+    }
+    let roots =
+        square_roots::<C>(&mut vars).map_err(|e| Error::Input(format!("square root: {e}")))?;
+    for root in &roots {
+        rels.push((
+            RatFun::from_poly(root.relation()),
+            RatFun::from_poly(Poly::zero()),
+        ));
+    }
     let mut doms: Vec<(Var, Domain)> = Vec::new();
     for (v, d, text) in domains {
         let var = vars.get(v).ok_or_else(|| {
@@ -418,9 +473,33 @@ fn prove_over<C: PointField + Display>(
         })?;
         doms.push((var, d.clone()));
     }
+    doms.extend(roots.iter().map(|r| (r.var, SquareRoot::<C>::domain())));
+    // Where the square roots are defined.
+    let suffix = if roots.is_empty() {
+        String::new()
+    } else {
+        let c: Vec<String> = roots
+            .iter()
+            .filter(|r| !r.defined_everywhere())
+            .map(SquareRoot::condition)
+            .collect();
+        if c.is_empty() {
+            " (the square roots are defined everywhere)".to_string()
+        } else {
+            format!(" (the square roots are defined where {})", c.join(", "))
+        }
+    };
+    let root_names: Vec<(String, String)> = roots
+        .iter()
+        .map(|r| {
+            let name = vars.name(r.var).unwrap_or("?").to_string();
+            (name, r.condition())
+        })
+        .collect();
     let spec = IdentitySpec {
         relations: rels,
         domains: doms,
+        hypotheses,
         ..IdentitySpec::new(vars, vec![Statement::Sides(l, r)])
     };
     let phrasing = Phrasing {
@@ -429,12 +508,18 @@ fn prove_over<C: PointField + Display>(
         relations: args
             .relations
             .iter()
-            .filter(|t| !t.contains(['<', '>']))
+            .filter(|t| !t.contains(['<', '>', '!']))
             .cloned()
             .collect(),
         domains: domains.iter().map(|(_, _, t)| t.clone()).collect(),
         labels: Vec::new(),
         corrected: Vec::new(),
+        nonzero_texts,
+        domain_texts: domains
+            .iter()
+            .map(|(n, _, t)| (n.clone(), t.trim().to_string()))
+            .collect(),
+        suffix,
     };
     let report = decide_identity(&spec).map_err(|e| {
         let part = match &e {
@@ -458,6 +543,21 @@ fn prove_over<C: PointField + Display>(
             "evidence": evidence,
             "residual_terms": report.residual_terms[0],
         });
+        if let IdentityVerdict::Proved { used, .. } = &report.verdict {
+            if !used.is_empty() {
+                obj["hypotheses_used"] = json!(used
+                    .iter()
+                    .map(|u| phrasing.used_text(u))
+                    .collect::<Vec<_>>());
+            }
+        }
+        if !root_names.is_empty() {
+            obj["square_roots"] = root_names
+                .iter()
+                .map(|(n, c)| json!({"root": n, "defined_where": c}))
+                .collect::<Vec<_>>()
+                .into();
+        }
         if report.cleared_any() {
             obj["conditions"] = report
                 .conditions

@@ -7,8 +7,8 @@ use exactcheck_exact::expr::{parse_expr, parse_poly};
 use exactcheck_exact::modp::{is_prime_u64, ModP, PrimeField};
 use exactcheck_exact::poly::{Poly, Vars};
 use exactcheck_exact::prove::{
-    decide, decide_in, random_identity_test, DecideError, Decision, Domain, RandomDecision, Seed,
-    MAX_RANDOM_TRIALS,
+    decide, decide_in, random_identity_test, DecideError, Decision, Domain, Hypothesis,
+    RandomDecision, Seed, MAX_RANDOM_TRIALS,
 };
 use exactcheck_exact::{Radical, Rational};
 
@@ -291,11 +291,18 @@ fn counter_examples_stay_in_the_domains() {
     };
     let d = decide_in(&res, &rels, &[(0, neg)], 1).unwrap();
     assert_eq!(check_point(&res, &rels, &d), vec![Radical::from(-2)]);
-    // x^2 = 4 with x > 3 has no point: undecided.
+    // x^2 = 4 with x > 3 has no point. x = 2 follows from the sign (the non-negative root of
+    // x^2 = 4 is 2), so it is proved using the domain; x = -2 does not, and no point is found:
+    // undecided.
     let big = Domain {
         lower: Some((Rational::from_integer(3), true)),
         upper: None,
     };
+    assert!(matches!(
+        decide_in(&res, &rels, &[(0, big.clone())], 1).unwrap(),
+        Decision::Proved { hypotheses, .. } if hypotheses == vec![Hypothesis::Domain(0)]
+    ));
+    let res = parse_poly::<Rational>("x + 2", &mut vars).unwrap();
     assert!(matches!(
         decide_in(&res, &rels, &[(0, big)], 1).unwrap(),
         Decision::Undecided { .. }

@@ -15,9 +15,10 @@ use exactcheck_exact::expr::{
 };
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
-    decide_identity, random_identity_test, unit_circle_pairs, CorrectionVerdict, Domain,
-    EngineError, IdentitySpec, IdentityVerdict, Part, Phrasing, PointField, RandomDecision, Seed,
-    Statement, Voice, HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
+    decide_identity, random_identity_test, square_roots, unit_circle_pairs, CorrectionVerdict,
+    Domain, EngineError, FractionIdentity, IdentitySpec, IdentityVerdict, Part, Phrasing,
+    PointField, RandomDecision, Seed, SquareRoot, Statement, Voice, HOLDS_THRESHOLD_LOG2,
+    MAX_RANDOM_TRIALS,
 };
 use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::{Radical, Rational};
@@ -42,6 +43,8 @@ pub struct Conditions {
     relations: Vec<(Expr, Expr)>,
     relation_texts: Vec<String>,
     domains: Vec<(String, Domain, String)>,
+    /// Hypotheses `A != B` and their texts.
+    nonzero: Vec<(Expr, Expr, String)>,
 }
 
 /// A claim ready to be decided.
@@ -399,6 +402,15 @@ fn conditions(c: &RawClaim, defs: &RefCell<Defs>) -> Built<Conditions> {
                     out.relations.push((a, b));
                     out.relation_texts.push(text.clone());
                 }
+                Where::NonZero(a, b) => {
+                    if key == "domains" {
+                        return Err((
+                            key,
+                            format!("{what}: {text:?} is a hypothesis, not a domain (put it under where)"),
+                        ));
+                    }
+                    out.nonzero.push((a, b, text.trim().to_string()));
+                }
                 Where::Domain(v, d) => {
                     if d.is_empty() {
                         return Err((key, format!("{what}: the domain {text:?} is empty")));
@@ -498,6 +510,8 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<(Outcome, Option<S
         unreachable!("identity() is called for identity claims")
     };
     let mut vars = Vars::new();
+    // `sqrt` of a non-constant becomes a variable with its relation and sign condition.
+    vars.allow_roots();
     let mut coordinates = Vec::new();
     for (l, r) in lhs.iter().zip(rhs) {
         let l = to_ratfun::<C>(l, &mut vars, "lhs")?;
@@ -519,6 +533,45 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<(Outcome, Option<S
             to_ratfun::<C>(b, &mut vars, "where")?,
         ));
     }
+    // Hypotheses `A != B`, cleared of denominators (which become hypotheses too).
+    let mut hypotheses: Vec<Poly<C>> = Vec::new();
+    let mut nonzero_texts: Vec<(String, String)> = Vec::new();
+    for (a, b, text) in &conditions.nonzero {
+        let a = to_ratfun::<C>(a, &mut vars, "where")?;
+        let b = to_ratfun::<C>(b, &mut vars, "where")?;
+        let cleared =
+            FractionIdentity::new(&a, &b).map_err(|e| Fault::Input("where", e.to_string()))?;
+        if cleared.residual.is_zero() {
+            return Err(Fault::Input(
+                "where",
+                format!("{text:?} is false everywhere (both sides are the same)"),
+            ));
+        }
+        nonzero_texts.push((cleared.residual.display(&vars).to_string(), text.clone()));
+        hypotheses.push(cleared.residual);
+        hypotheses.extend(cleared.conditions);
+    }
+    let roots = square_roots::<C>(&mut vars).map_err(|e| Fault::Input("lhs", e.to_string()))?;
+    for root in &roots {
+        relations.push((
+            RatFun::from_poly(root.relation()),
+            RatFun::from_poly(Poly::zero()),
+        ));
+    }
+    let suffix = if roots.is_empty() {
+        String::new()
+    } else {
+        let c: Vec<String> = roots
+            .iter()
+            .filter(|r| !r.defined_everywhere())
+            .map(SquareRoot::condition)
+            .collect();
+        if c.is_empty() {
+            " (the square roots are defined everywhere)".to_string()
+        } else {
+            format!(" (the square roots are defined where {})", c.join(", "))
+        }
+    };
     let mut domains: Vec<(Var, Domain)> = Vec::new();
     for (v, d, text) in &conditions.domains {
         let var = vars.get(v).ok_or_else(|| {
@@ -529,9 +582,11 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<(Outcome, Option<S
         })?;
         domains.push((var, d.clone()));
     }
+    domains.extend(roots.iter().map(|r| (r.var, SquareRoot::<C>::domain())));
     let spec = IdentitySpec {
         relations,
         domains,
+        hypotheses,
         corrected: corrected_fns,
         ..IdentitySpec::new(vars, coordinates)
     };
@@ -550,6 +605,13 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<(Outcome, Option<S
             .flatten()
             .map(ToString::to_string)
             .collect(),
+        nonzero_texts,
+        domain_texts: conditions
+            .domains
+            .iter()
+            .map(|(n, _, t)| (n.clone(), t.trim().to_string()))
+            .collect(),
+        suffix,
     };
     let report = decide_identity(&spec).map_err(|e| {
         let key = match &e {

@@ -7,8 +7,8 @@ use exactcheck_core::{Hom4, Ring};
 use exactcheck_exact::expr::{parse_expr, parse_poly, Coefficient, Expr};
 use exactcheck_exact::poly::{CoeffExpr, Poly, Var, Vars};
 use exactcheck_exact::prove::{
-    decide_identity, factored, Domain, EngineError, IdentitySpec, IdentityVerdict, Part,
-    Phrasing, PointField, Statement, Voice,
+    decide_identity, factored, Domain, EngineError, IdentitySpec, IdentityVerdict, Part, Phrasing,
+    PointField, Statement, Voice,
 };
 use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::Rational;
@@ -123,6 +123,9 @@ where
         domains: Vec::new(),
         labels: residuals.iter().map(|(w, _)| w.to_string()).collect(),
         corrected: Vec::new(),
+        nonzero_texts: Vec::new(),
+        domain_texts: Vec::new(),
+        suffix: String::new(),
     };
     let report = match decide_identity(&spec) {
         Ok(r) => r,

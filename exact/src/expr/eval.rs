@@ -85,10 +85,10 @@ impl Expr {
             }
             ExprKind::Sqrt(arg) => {
                 let p = arg.to_poly::<C>(vars)?;
-                let c = p
-                    .constant_value()
-                    .ok_or(ExprError::NonConstantSqrt { pos: arg.pos })?;
-                sqrt_of(c, self.pos, arg).map(Poly::constant)
+                match p.constant_value() {
+                    Some(c) => sqrt_of(c, self.pos, arg).map(Poly::constant),
+                    None => super::roots::root_variable(&p, arg, vars).map(Poly::var),
+                }
             }
             ExprKind::Call(_, args) => super::fraction::diff_poly(self, args, vars),
         }

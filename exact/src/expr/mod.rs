@@ -48,7 +48,11 @@
 //!   (and takes negative powers of) any expression that is not identically zero: the result is
 //!   a rational function ([`crate::ratfun::RatFun`]) in lowest terms with the divisors met, and
 //!   an expression without such a division converts by [`Expr::to_poly`] alone.
-//! * `sqrt(...)` takes a constant and needs a coefficient type that has the root (over
+//! * `sqrt(E)` of a non-constant `E` is a variable standing for the non-negative root, one per
+//!   distinct expanded radicand, when the variable table allows it
+//!   ([`crate::poly::Vars::allow_roots`]; its relation and sign condition come from
+//!   [`crate::prove::square_roots`]), else [`ExprError::NonConstantSqrt`].
+//! * `sqrt(...)` of a constant needs a coefficient type that has the root (over
 //!   [`Rational`], only of perfect squares; [`crate::Radical`] denests; [`crate::ComplexRadical`]
 //!   takes the principal root).
 //! * A variable in a constant context ([`Expr::eval_constant`]) is an error naming it, except
@@ -106,6 +110,7 @@ mod latex;
 mod mathml;
 mod parse;
 mod print;
+mod roots;
 #[cfg(test)]
 mod tests;
 mod w1;
@@ -451,7 +456,8 @@ pub enum ExprError {
         /// Byte position of the power or product.
         pos: usize,
     },
-    /// `sqrt` of an expression that is not constant.
+    /// `sqrt` of an expression that is not constant, where the conversion does not allow
+    /// such roots ([`crate::poly::Vars::allow_roots`]).
     #[error("sqrt of a non-constant expression at {pos}")]
     NonConstantSqrt {
         /// Byte position of the argument.
@@ -466,6 +472,15 @@ pub enum ExprError {
         arg: String,
         /// The coefficient type's hint ([`Coefficient::sqrt_hint`]).
         hint: &'static str,
+    },
+    /// `sqrt(E)` of a non-constant `E` that is negative at every real point: the root is
+    /// nowhere defined.
+    #[error("sqrt({arg}) at {pos}: the radicand is negative for all real values, so the square root is defined nowhere")]
+    NegativeRadicand {
+        /// Byte position of the argument.
+        pos: usize,
+        /// The argument, printed.
+        arg: String,
     },
     /// A number with no image in the coefficient ring.
     #[error("the number {number} at {pos} has no image in the coefficient ring")]
@@ -505,6 +520,7 @@ impl ExprError {
             | ExprError::UnknownFunction { pos, .. }
             | ExprError::NotConstant { pos, .. }
             | ExprError::NonConstantSqrt { pos }
+            | ExprError::NegativeRadicand { pos, .. }
             | ExprError::NoSqrt { pos, .. }
             | ExprError::Unrepresentable { pos, .. }
             | ExprError::Limit { pos, .. } => *pos,

@@ -135,6 +135,21 @@ const MAX_EXP: u64 = u32::MAX as u64;
 pub struct Vars {
     names: Vec<String>,
     index: HashMap<String, Var>,
+    /// The square roots of non-constant expressions met so far, when they are allowed
+    /// ([`Vars::allow_roots`]); `None` (the default) refuses them.
+    roots: Option<Vec<RootEntry>>,
+}
+
+/// A square root `sqrt(E)` of a non-constant expression, named by a variable of the table
+/// ([`crate::expr`] introduces one variable per distinct radicand).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct RootEntry {
+    /// The variable standing for the root.
+    pub var: Var,
+    /// The radicand as written (converted again by [`crate::prove::square_roots`]).
+    pub radicand: crate::expr::Expr,
+    /// The expanded radicand, printed in a canonical form: equal radicands share a variable.
+    pub key: String,
 }
 
 impl Vars {
@@ -194,5 +209,41 @@ impl Vars {
     /// Whether the table is empty.
     pub fn is_empty(&self) -> bool {
         self.names.is_empty()
+    }
+
+    /// Lets conversions turn `sqrt(E)` of a non-constant `E` into a variable of this table
+    /// (recorded in [`Vars::roots`]); without this call such a root is an error.
+    pub fn allow_roots(&mut self) {
+        self.roots.get_or_insert_with(Vec::new);
+    }
+
+    /// Whether [`Vars::allow_roots`] was called.
+    pub fn roots_allowed(&self) -> bool {
+        self.roots.is_some()
+    }
+
+    /// The square roots of non-constant expressions met, in order of appearance (an inner
+    /// root before the roots whose radicands contain it).
+    pub fn roots(&self) -> &[RootEntry] {
+        self.roots.as_deref().unwrap_or_default()
+    }
+
+    /// The variable of the root with canonical radicand `key`, if one was recorded.
+    pub fn root_by_key(&self, key: &str) -> Option<Var> {
+        self.roots().iter().find(|r| r.key == key).map(|r| r.var)
+    }
+
+    /// Records the root `sqrt(radicand)` under a new variable named `name` (roots must be
+    /// allowed, [`Vars::allow_roots`]) and returns the variable.
+    ///
+    /// # Panics
+    /// When roots are not allowed, or the table already holds `u32::MAX` names.
+    pub fn add_root(&mut self, name: &str, radicand: crate::expr::Expr, key: String) -> Var {
+        let var = self.var(name);
+        self.roots
+            .as_mut()
+            .expect("roots are allowed (checked by the caller)")
+            .push(RootEntry { var, radicand, key });
+        var
     }
 }

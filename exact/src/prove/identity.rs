@@ -13,7 +13,7 @@
 
 use super::{
     counter_example, decide_fraction, decide_in, decide_where, DecideError, Decision, Domain,
-    FractionIdentity, PointField, RadicalPoint,
+    FractionIdentity, Hypothesis, PointField, RadicalPoint,
 };
 use crate::poly::{Poly, SizeError, Var, Vars};
 use crate::ratfun::RatFun;
@@ -67,6 +67,16 @@ impl<C: PointField> IdentitySpec<C> {
     }
 }
 
+/// A hypothesis a proof used: a polynomial declared non-zero (by the user, or a denominator),
+/// or the domain of a variable (its sign, or the sign condition of a square root).
+#[derive(Clone, Debug, PartialEq)]
+pub enum UsedHypothesis<C: exactcheck_core::Ring> {
+    /// `p != 0`.
+    NonZero(Poly<C>),
+    /// The domain of the variable.
+    Domain(Var),
+}
+
 /// The verdict of the engine.
 #[derive(Clone, Debug)]
 pub enum IdentityVerdict<C: PointField> {
@@ -75,6 +85,8 @@ pub enum IdentityVerdict<C: PointField> {
         /// Terms of the expanded residuals before reduction, summed over the coordinates (0 when
         /// each expanded to zero outright).
         expanded_terms: usize,
+        /// The hypotheses the proof used (empty when the relations alone prove it).
+        used: Vec<UsedHypothesis<C>>,
     },
     /// A verified exact counter-example to coordinate `coordinate`.
     Fails {
@@ -272,10 +284,31 @@ pub fn decide_identity<C: PointField>(
     statement.extend(&conditions);
     statement.extend(&spec.context);
     let mut expanded = 0;
+    let mut used = Vec::new();
     let mut verdict = None;
     for (k, p) in prepared.iter().enumerate() {
         match decide(p, Part::Coordinate(k))? {
-            Decision::Proved { expanded_terms } => expanded += expanded_terms,
+            Decision::Proved {
+                expanded_terms,
+                hypotheses: indices,
+            } => {
+                expanded += expanded_terms;
+                // The indices count the fraction's own conditions first, then the hypotheses,
+                // as the decision was given them.
+                let nonzero: Vec<&Poly<C>> = match &p.fraction {
+                    None => hypotheses.iter().collect(),
+                    Some(f) => f.conditions.iter().chain(&hypotheses).collect(),
+                };
+                for h in indices {
+                    let u = match h {
+                        Hypothesis::NonZero(i) => UsedHypothesis::NonZero(nonzero[i].clone()),
+                        Hypothesis::Domain(v) => UsedHypothesis::Domain(v),
+                    };
+                    if !used.contains(&u) {
+                        used.push(u);
+                    }
+                }
+            }
             Decision::Fails {
                 normal_form,
                 point,
@@ -334,6 +367,7 @@ pub fn decide_identity<C: PointField>(
     };
     Ok(IdentityReport {
         verdict: verdict.unwrap_or(IdentityVerdict::Proved {
+            used,
             expanded_terms: expanded,
         }),
         cleared: prepared.iter().map(|p| p.fraction.is_some()).collect(),
@@ -376,7 +410,10 @@ mod tests {
         let r = decide_identity(&spec(&[("(x+1)^2", "x^2 + 2*x + 1")], &[])).unwrap();
         assert!(matches!(
             r.verdict,
-            IdentityVerdict::Proved { expanded_terms: 0 }
+            IdentityVerdict::Proved {
+                expanded_terms: 0,
+                ..
+            }
         ));
         assert_eq!(r.cleared, [false]);
         assert!(r.conditions.is_empty() && r.correction.is_none() && !r.has_relations);

@@ -3,7 +3,9 @@
 //!
 //! * **proved** — the residual expands to the zero polynomial, or its normal form modulo a
 //!   Gröbner basis of the relations is zero (then it vanishes wherever the relations hold, in
-//!   particular inside any domains);
+//!   particular inside any domains), or it vanishes under the hypotheses (the non-zero
+//!   polynomials and the domains, including the signs of square roots; see [`decide_where`]),
+//!   which are then reported;
 //! * **fails** — the normal form is non-zero and an exact real point is found that lies in the
 //!   domains, where every relation vanishes and the residual does not; the point (rational, or in
 //!   the square-root field [`Radical`]), the residual there and the normal form (what the two
@@ -46,8 +48,6 @@
 //!
 //! The search is deterministic (fixed seeds) so that verdicts are reproducible; it makes at most
 //! [`SMALL_ATTEMPTS`] + [`SEARCH_ATTEMPTS`] attempts.
-//! The search is deterministic (fixed seed) so that verdicts are reproducible; it makes
-//! [`SEARCH_ATTEMPTS`] attempts.
 //!
 //! # One engine for every front end
 //! [`identity::decide_identity`] takes an identity as a spec (sides or residuals, relations,
@@ -57,17 +57,21 @@
 
 mod factored;
 mod fraction;
+mod hypotheses;
 pub mod identity;
 pub mod phrase;
 pub mod random;
+mod roots;
 
 pub use factored::factored;
 pub use fraction::{decide_fraction, real_zero_free, where_clause, FractionIdentity};
+pub use hypotheses::{Hypothesis, MAX_HYPOTHESIS_DROPS};
 pub use identity::{
     decide_identity, CorrectionVerdict, EngineError, IdentityReport, IdentitySpec, IdentityVerdict,
-    Part, Statement,
+    Part, Statement, UsedHypothesis,
 };
 pub use phrase::{Phrasing, Voice};
+pub use roots::{square_roots, SquareRoot};
 
 pub use random::{
     random_identity_test, size_bound, RandomDecision, RandomReport, Seed, SizeBound,
@@ -164,6 +168,9 @@ pub enum Decision<C: PointField> {
     Proved {
         /// Terms of the expanded residual before reduction (0 when it expanded to zero outright).
         expanded_terms: usize,
+        /// The hypotheses the proof used (empty when the residual is zero modulo the relations
+        /// alone); see [`decide_where`].
+        hypotheses: Vec<Hypothesis>,
     },
     /// A counter-example: the point lies in the domains, the relations hold, the residual does
     /// not vanish (all verified exactly).
@@ -404,9 +411,13 @@ pub fn decide_in<C: PointField>(
     decide_where(residual, relations, &[], domains, nvars)
 }
 
-/// [`decide_in`] where the polynomials `nonzero` do not vanish (the denominators of an
-/// identity between fractions, [`decide_fraction`]): the proof does not use them, and a
-/// counter-example must make every one of them non-zero.
+/// [`decide_in`] where the polynomials `nonzero` do not vanish (hypotheses `w != 0`, the
+/// denominators of an identity between fractions, [`decide_fraction`]): a counter-example must
+/// make every one of them non-zero. When the residual does not reduce to zero modulo the
+/// relations alone, the proof uses the hypotheses: each non-zero polynomial (by a Rabinowitsch
+/// variable), the non-zero values and the signs the domains imply, and the sign conditions of
+/// square roots (a variable `y >= 0` with a relation `a y^2 - E`); [`Decision::Proved`] then lists
+/// a minimal set of hypotheses that still proves it (see the `hypotheses` module).
 ///
 /// # Errors
 /// As [`decide_in`].
@@ -446,15 +457,30 @@ pub fn decide_where<C: PointField>(
     };
     let expanded_terms = residual.len();
     if residual.is_zero() {
-        return Ok(Decision::Proved { expanded_terms: 0 });
+        return Ok(Decision::Proved {
+            expanded_terms: 0,
+            hypotheses: Vec::new(),
+        });
     }
     let mut nf = residual.try_reduce_unit_circle(&pairs)?;
     if !basis.is_empty() && !nf.is_zero() {
         nf = nf.reduce(&basis);
     }
     if nf.is_zero() {
-        return Ok(Decision::Proved { expanded_terms });
+        return Ok(Decision::Proved {
+            expanded_terms,
+            hypotheses: Vec::new(),
+        });
     }
+    let tried = match hypotheses::prove_under_hypotheses(residual, relations, nonzero, &dom) {
+        hypotheses::Outcome::Proved(used) => {
+            return Ok(Decision::Proved {
+                expanded_terms,
+                hypotheses: used,
+            })
+        }
+        hypotheses::Outcome::NotProved(tried) => tried,
+    };
     Ok(search(residual, relations, nonzero, &pairs, &others, &dom, nvars)
         .map(|(point, value)| Decision::Fails {
             normal_form: nf.clone(),
@@ -463,7 +489,7 @@ pub fn decide_where<C: PointField>(
         })
         .unwrap_or_else(|| Decision::Undecided {
             searched: format!(
-                "{} exact candidate points (small rationals by increasing height, then random ones, inside the domains if any{}{}) were checked, none satisfies the relations{}{} with a non-zero residual",
+                "{} exact candidate points (small rationals by increasing height, then random ones, inside the domains if any{}{}) were checked, none satisfies the relations{}{} with a non-zero residual{tried}",
                 SMALL_ATTEMPTS + SEARCH_ATTEMPTS,
                 if pairs.is_empty() { "" } else { ", rational points of the unit circles" },
                 if others.is_empty() && pairs.is_empty() {

@@ -4,7 +4,9 @@
 //! one identity and shortens huge values, a claims file numbers the coordinates of a vector
 //! identity and names its corrected form, the catalogue names each residual by its label.
 
-use super::identity::{CorrectionVerdict, EngineError, IdentityReport, IdentityVerdict};
+use super::identity::{
+    CorrectionVerdict, EngineError, IdentityReport, IdentityVerdict, UsedHypothesis,
+};
 use super::{where_clause, DecideError, PointField};
 use crate::poly::{Var, Vars};
 use std::fmt::Display;
@@ -54,11 +56,40 @@ pub struct Phrasing<'a> {
     pub labels: Vec<String>,
     /// The corrected form as written, one per coordinate (claims files).
     pub corrected: Vec<String>,
+    /// The hypotheses `!= 0` as the user wrote them, keyed by the polynomial printed with
+    /// `vars` (a used hypothesis not found here is printed as `p != 0`).
+    pub nonzero_texts: Vec<(String, String)>,
+    /// The domains as the user wrote them, keyed by the variable's name (a used domain not
+    /// found here is a square root's sign condition, printed `y >= 0`).
+    pub domain_texts: Vec<(String, String)>,
+    /// Appended to the evidence of `prove` and claims files (e.g. where square roots are
+    /// defined); empty for none.
+    pub suffix: String,
 }
 
 const CLEARED: &str = " with the denominators cleared";
 
 impl Phrasing<'_> {
+    /// A used hypothesis as the user wrote it.
+    pub fn used_text<C: PointField + Display>(&self, u: &UsedHypothesis<C>) -> String {
+        match u {
+            UsedHypothesis::NonZero(p) => {
+                let shown = p.display(self.vars).to_string();
+                self.nonzero_texts
+                    .iter()
+                    .find(|(k, _)| *k == shown)
+                    .map_or_else(|| format!("{shown} != 0"), |(_, t)| t.clone())
+            }
+            UsedHypothesis::Domain(v) => {
+                let name = self.vars.name(*v).unwrap_or("?").to_string();
+                self.domain_texts
+                    .iter()
+                    .find(|(k, _)| *k == name)
+                    .map_or_else(|| format!("{name} >= 0"), |(_, t)| t.clone())
+            }
+        }
+    }
+
     /// `" modulo A = B, C = D"`, or `""` without relations.
     pub fn modulo(&self) -> String {
         if self.relations.is_empty() {
@@ -135,7 +166,7 @@ impl Phrasing<'_> {
             ""
         };
         let mut text = match &r.verdict {
-            IdentityVerdict::Proved { expanded_terms } if self.voice == Voice::Catalogue => {
+            IdentityVerdict::Proved { expanded_terms, .. } if self.voice == Voice::Catalogue => {
                 let extra = if n > 1 {
                     format!(" ({n} residuals in all)")
                 } else {
@@ -150,7 +181,22 @@ impl Phrasing<'_> {
                     )
                 }
             }
-            IdentityVerdict::Proved { expanded_terms } => match (*expanded_terms, n) {
+            IdentityVerdict::Proved {
+                expanded_terms,
+                used,
+            } if !used.is_empty() => {
+                let texts: Vec<String> = used.iter().map(|u| self.used_text(u)).collect();
+                let coords = if n > 1 {
+                    format!(" in the {n} coordinates")
+                } else {
+                    String::new()
+                };
+                format!(
+                    "LHS - RHS{cleared_any} expands to {expanded_terms} terms{coords}, which vanish{modulo}, using the hypotheses {}{where_nonzero}",
+                    texts.join(", ")
+                )
+            }
+            IdentityVerdict::Proved { expanded_terms, .. } => match (*expanded_terms, n) {
                 (0, 1) => format!("LHS - RHS{cleared_any} expands to 0{where_nonzero}"),
                 (0, n) => format!(
                     "LHS - RHS{cleared_any} expands to 0 in each of the {n} coordinates{where_nonzero}"
@@ -224,6 +270,9 @@ impl Phrasing<'_> {
                 }
             }
         };
+        if self.voice != Voice::Catalogue {
+            text += &self.suffix;
+        }
         let fails = matches!(r.verdict, IdentityVerdict::Fails { .. });
         match &r.correction {
             None => {}
@@ -351,6 +400,9 @@ mod tests {
             domains: Vec::new(),
             labels: vec!["the residual".into()],
             corrected: Vec::new(),
+            nonzero_texts: Vec::new(),
+            domain_texts: Vec::new(),
+            suffix: String::new(),
         }
     }
 

@@ -1,0 +1,328 @@
+//! Proofs that use the hypotheses: the polynomials declared non-zero (the `nonzero` of
+//! [`super::decide_where`]: `w != 0` in a `where`, the denominators of a fraction identity) and
+//! the domains (`w > 0`, `t >= 0`, the sign condition `y >= 0` of a square root).
+//!
+//! * **Non-zero hypotheses** (Rabinowitsch): `h != 0` adds the relation `1 - h z` with a fresh
+//!   variable `z`. The residual reduces to zero modulo a Gröbner basis of the relations and these
+//!   exactly when `h^k residual` lies in the ideal of the relations for some `k` (the saturation),
+//!   so the residual vanishes wherever the relations hold and `h` does not. A domain that excludes
+//!   0 (`w > 0`) gives `w != 0`, and a strict bound `c` (`t < 1`) gives `t - c != 0`.
+//! * **Sign conditions** (the branch of a square root): a variable `y` with `y >= 0` in its
+//!   domain and a relation `a y^2 - E` (`a` a constant, `E` free of `y`) is the non-negative root
+//!   of `E / a`. With `y^2` replaced by `E / a` the residual is `A + B y` (`A`, `B` free of `y`);
+//!   if `A^2 - B^2 E / a` vanishes (decided the same way, recursively for the other roots) and
+//!   `-A B >= 0` on the domains, then `A + B y = 0` at every point: `B = 0` forces `A = 0`, else
+//!   `y = |A / B| = -A / B`. The sign of `-A B` is shown by a sufficient test: shifted so every
+//!   bounded variable is non-negative (`v = lo + u` or `v = hi - u`), every coefficient is
+//!   non-negative and every unbounded variable has even exponents.
+//!
+//! When the identity holds under all the hypotheses, a smaller set that still proves it is found
+//! greedily (drop one hypothesis, decide again, keep it dropped if the proof survives), with at
+//! most [`MAX_HYPOTHESIS_DROPS`] extra decisions; the set reported is the one the proof used.
+
+use super::{Domain, PointField};
+use crate::poly::{groebner, Poly, Var};
+use crate::{Radical, Rational};
+use exactcheck_core::Ring;
+
+/// The most hypotheses the minimization tries to drop (each try is one more Gröbner basis);
+/// past it the remaining hypotheses are reported as used.
+pub const MAX_HYPOTHESIS_DROPS: usize = 16;
+
+/// A hypothesis a proof used.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Hypothesis {
+    /// `nonzero[i] != 0` (an index into the polynomials declared non-zero).
+    NonZero(usize),
+    /// The domain of the variable: the non-zero polynomials it implies and its sign.
+    Domain(Var),
+}
+
+/// The outcome of [`prove_under_hypotheses`].
+pub(super) enum Outcome {
+    /// The identity holds where the hypotheses do; the hypotheses the proof used.
+    Proved(Vec<Hypothesis>),
+    /// Not shown; what was tried (empty when there is no hypothesis to use).
+    NotProved(String),
+}
+
+/// The data of one decision.
+struct Problem<'a, C: PointField> {
+    residual: &'a Poly<C>,
+    relations: &'a [Poly<C>],
+    nonzero: &'a [Poly<C>],
+    dom: &'a [Domain],
+}
+
+/// A root: the variable `y`, and `E / a` from its relation `a y^2 - E`.
+struct Root<C: Ring> {
+    var: Var,
+    square: Poly<C>,
+}
+
+/// Decides whether `residual` vanishes wherever `relations` hold, `nonzero` does not vanish and
+/// the variables lie in `dom` (see the module documentation).
+pub(super) fn prove_under_hypotheses<C: PointField>(
+    residual: &Poly<C>,
+    relations: &[Poly<C>],
+    nonzero: &[Poly<C>],
+    dom: &[Domain],
+) -> Outcome {
+    let problem = Problem {
+        residual,
+        relations,
+        nonzero,
+        dom,
+    };
+    let mut all: Vec<Hypothesis> = (0..nonzero.len())
+        .filter(|&i| !nonzero[i].is_constant())
+        .map(Hypothesis::NonZero)
+        .collect();
+    all.extend(
+        (0..dom.len())
+            .filter(|&v| dom[v] != Domain::all())
+            .map(|v| Hypothesis::Domain(v as Var)),
+    );
+    if all.is_empty() {
+        return Outcome::NotProved(String::new());
+    }
+    let tried = "; the hypotheses (each non-zero one by a Rabinowitsch variable, the signs of the domains and of the square roots) were used too";
+    match problem.attempt(&all) {
+        Ok(true) => {}
+        Ok(false) => return Outcome::NotProved(format!("{tried}, without a proof")),
+        Err(e) => return Outcome::NotProved(format!("{tried}: {e}")),
+    }
+    let mut used = all.clone();
+    for h in all.iter().take(MAX_HYPOTHESIS_DROPS) {
+        let without: Vec<Hypothesis> = used.iter().copied().filter(|u| u != h).collect();
+        if problem.attempt(&without) == Ok(true) {
+            used = without;
+        }
+    }
+    Outcome::Proved(used)
+}
+
+impl<C: PointField> Problem<'_, C> {
+    /// The polynomials hypothesis `h` declares non-zero.
+    fn nonzero_of(&self, h: Hypothesis) -> Vec<Poly<C>> {
+        match h {
+            Hypothesis::NonZero(i) => vec![self.nonzero[i].clone()],
+            Hypothesis::Domain(v) => {
+                let d = &self.dom[v as usize];
+                let x = Poly::<C>::var(v);
+                let shifted = |c: &Rational| {
+                    let c = C::from_rational(c).expect("a field holds the rationals");
+                    x.sub_ref(&Poly::constant(c))
+                };
+                let mut out = Vec::new();
+                if !d.contains(&Radical::zero()) {
+                    out.push(x.clone());
+                }
+                for (c, strict) in [&d.lower, &d.upper].into_iter().flatten() {
+                    if *strict && !c.is_zero() {
+                        out.push(shifted(c));
+                    }
+                }
+                out
+            }
+        }
+    }
+
+    /// Whether the residual is shown zero under the hypotheses `set`.
+    fn attempt(&self, set: &[Hypothesis]) -> Result<bool, exactcheck_core::limits::LimitError> {
+        let nvars = self.dom.len();
+        let mut gens = self.relations.to_vec();
+        let mut z = nvars as Var;
+        for &h in set {
+            for p in self.nonzero_of(h) {
+                gens.push(Poly::one().sub_ref(&p.mul_ref(&Poly::var(z))));
+                z += 1;
+            }
+        }
+        let basis = if gens.is_empty() {
+            Vec::new()
+        } else {
+            groebner(&gens)?
+        };
+        // The hypotheses contradict the relations: nothing is claimed from that.
+        if basis.iter().any(|b| b.is_constant() && !b.is_zero()) {
+            return Ok(false);
+        }
+        let mut signs = vec![Domain::all(); nvars];
+        for &h in set {
+            if let Hypothesis::Domain(v) = h {
+                signs[v as usize] = self.dom[v as usize].clone();
+            }
+        }
+        let roots: Vec<Root<C>> = (0..nvars)
+            .filter(|&y| {
+                signs[y]
+                    .lower
+                    .as_ref()
+                    .is_some_and(|(lo, _)| lo.signum() != exactcheck_core::Sign::Negative)
+            })
+            .filter_map(|y| self.root(y as Var))
+            .collect();
+        Ok(branch_zero(self.residual, &roots, &basis, &signs, &mut 0))
+    }
+
+    /// `y` as a root: a relation `a y^2 - E` with `a` constant and `E` free of `y`.
+    fn root(&self, y: Var) -> Option<Root<C>> {
+        self.relations.iter().find_map(|r| {
+            if r.degree_in(y) != 2 {
+                return None;
+            }
+            let mut a = None;
+            let mut rest = Vec::new();
+            for (m, c) in r.terms() {
+                let e = m.exponents();
+                match m.exponent(y) {
+                    0 => rest.push((e, c.clone())),
+                    2 if e.len() == 1 => a = Some(c.clone()),
+                    _ => return None,
+                }
+            }
+            let inv = a?.inv().ok()?;
+            let e: Poly<C> = Poly::from_terms(rest);
+            Some(Root {
+                var: y,
+                square: e.scale(&inv.neg_ref()),
+            })
+        })
+    }
+}
+
+/// The most polynomials [`branch_zero`] squares in one decision (each squaring can double the
+/// degree).
+const MAX_BRANCH_STEPS: usize = 64;
+
+/// Whether `p` vanishes at every point of the variety of `basis` inside `signs`, by reduction
+/// and, for the roots, the sign argument of the module documentation.
+fn branch_zero<C: PointField>(
+    p: &Poly<C>,
+    roots: &[Root<C>],
+    basis: &[Poly<C>],
+    signs: &[Domain],
+    steps: &mut usize,
+) -> bool {
+    let p = if basis.is_empty() {
+        p.clone()
+    } else {
+        p.reduce(basis)
+    };
+    if p.is_zero() {
+        return true;
+    }
+    *steps += 1;
+    if *steps > MAX_BRANCH_STEPS {
+        return false;
+    }
+    // The root of highest index first: an inner root has a lower index than the roots whose
+    // radicands contain it, so `A`, `B` and `E` hold only roots still to be eliminated.
+    let Some(k) = (0..roots.len())
+        .filter(|&k| p.degree_in(roots[k].var) > 0)
+        .max_by_key(|&k| roots[k].var)
+    else {
+        return false;
+    };
+    let root = &roots[k];
+    let rest: Vec<Root<C>> = roots
+        .iter()
+        .enumerate()
+        .filter(|&(j, _)| j != k)
+        .map(|(_, r)| Root {
+            var: r.var,
+            square: r.square.clone(),
+        })
+        .collect();
+    let Some((a, b)) = split(&p, root) else {
+        return false;
+    };
+    if b.is_zero() {
+        return branch_zero(&a, &rest, basis, signs, steps);
+    }
+    let Some(n) = (|| {
+        let a2 = a.try_mul(&a).ok()?;
+        let b2 = b.try_mul(&b).ok()?.try_mul(&root.square).ok()?;
+        Some(a2.sub_ref(&b2))
+    })() else {
+        return false;
+    };
+    if !branch_zero(&n, &rest, basis, signs, steps) {
+        return false;
+    }
+    let Ok(ab) = a.try_mul(&b) else {
+        return false;
+    };
+    let minus_ab = ab.neg_ref();
+    non_negative(&minus_ab, signs)
+        || (!basis.is_empty() && non_negative(&minus_ab.reduce(basis), signs))
+}
+
+/// A term: its exponents and its coefficient.
+type Term<C> = (Vec<(Var, u32)>, C);
+
+/// `p = A + B y` with `y^2` replaced by the root's square; `None` past a size limit.
+fn split<C: PointField>(p: &Poly<C>, root: &Root<C>) -> Option<(Poly<C>, Poly<C>)> {
+    let y = root.var;
+    let deg = p.degree_in(y) as usize;
+    let mut parts: Vec<Vec<Term<C>>> = vec![Vec::new(); deg + 1];
+    for (m, c) in p.terms() {
+        let k = m.exponent(y) as usize;
+        let e: Vec<(Var, u32)> = m.exponents().into_iter().filter(|&(v, _)| v != y).collect();
+        parts[k].push((e, c.clone()));
+    }
+    let mut a = Poly::zero();
+    let mut b = Poly::zero();
+    let mut power = Poly::one();
+    for (k, terms) in parts.into_iter().enumerate() {
+        if k >= 2 && k % 2 == 0 {
+            power = power.try_mul(&root.square).ok()?;
+        }
+        if terms.is_empty() {
+            continue;
+        }
+        let part = Poly::from_terms(terms).try_mul(&power).ok()?;
+        if k % 2 == 0 {
+            a = a.add_ref(&part);
+        } else {
+            b = b.add_ref(&part);
+        }
+    }
+    Some((a, b))
+}
+
+/// The sufficient test of the module documentation for `p >= 0` on `signs`.
+pub(super) fn non_negative<C: PointField>(p: &Poly<C>, signs: &[Domain]) -> bool {
+    if p.is_zero() {
+        return true;
+    }
+    let Some(mut q) = p
+        .coefficients()
+        .iter()
+        .all(|c| c.to_radical().is_some())
+        .then(|| p.map_coeffs(|c| c.to_radical().expect("checked to be real above")))
+    else {
+        return false;
+    };
+    let mut bounded = vec![false; signs.len()];
+    for v in q.variables() {
+        let Some(d) = signs.get(v as usize) else {
+            continue;
+        };
+        let x = Poly::<Radical>::var(v);
+        let shifted = match (&d.lower, &d.upper) {
+            (Some((lo, _)), _) => x.add_ref(&Poly::constant(Radical::from(lo))),
+            (None, Some((hi, _))) => Poly::constant(Radical::from(hi)).sub_ref(&x),
+            (None, None) => continue,
+        };
+        q = q.substitute(v, &shifted);
+        bounded[v as usize] = true;
+    }
+    q.terms().all(|(m, c)| {
+        *c >= Radical::zero()
+            && m.exponents()
+                .iter()
+                .all(|&(v, e)| e % 2 == 0 || bounded.get(v as usize).copied().unwrap_or(false))
+    })
+}
