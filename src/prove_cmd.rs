@@ -2,7 +2,9 @@
 //! user's own polynomial identities.
 //!
 //! Both sides (and each relation) are parsed in the expression syntax (numbers, `sqrt(k)`,
-//! `diff(E, t[, k])`, variables, `+ - * / ^`, parentheses), expanded, and `LHS - RHS` is reduced
+//! `diff(E, t[, k])`, variables, `+ - * / ^`, parentheses) with the function library of
+//! `exactcheck_exact::expr::library` (`dot`, `cross`, `norm2`, `det` of `[[a, b], [c, d]]`,
+//! `bezier`, `subs`, ...) resolved to a scalar, expanded, and `LHS - RHS` is reduced
 //! modulo the relations (unit circles `c^2 + s^2 = 1` in closed form, others by a Gröbner
 //! basis); see `exactcheck_exact::prove`. With a division by a non-constant anywhere, the sides
 //! are rational functions (`Expr::to_ratfun`): the identity is decided with the denominators
@@ -15,7 +17,7 @@
 
 use crate::Error;
 use clap::Args;
-use exactcheck_exact::expr::{parse_expr, Coefficient, Expr};
+use exactcheck_exact::expr::{library, Coefficient, Expr};
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
     counter_example, decide_fraction, decide_in, real_zero_free, where_clause, DecideError,
@@ -330,8 +332,12 @@ fn abbreviate(text: String) -> String {
     )
 }
 
+/// Parses a side or a relation's side, resolving the library functions (`dot`, `det`,
+/// `bezier`, matrices, ...) to a scalar expression.
 fn parse(text: &str, what: &str) -> Result<Expr, Error> {
-    parse_expr(text).map_err(|e| Error::Input(format!("{what}: {e}")))
+    library::Defs::default()
+        .resolve_scalar(text)
+        .map_err(|e| Error::Input(format!("{what}: {e}")))
 }
 
 /// Runs `exactcheck prove`.

@@ -103,14 +103,20 @@ impl fmt::Display for Expr {
             }
             ExprKind::Sqrt(x) => write!(f, "sqrt({x})"),
             ExprKind::Call(name, args) => {
-                write!(f, "{name}(")?;
+                // A list `[a, b]` is printed as written.
+                let list = name == super::parse::LIST;
+                if list {
+                    f.write_str("[")?;
+                } else {
+                    write!(f, "{name}(")?;
+                }
                 for (k, a) in args.iter().enumerate() {
                     if k > 0 {
                         f.write_str(", ")?;
                     }
                     write!(f, "{a}")?;
                 }
-                f.write_str(")")
+                f.write_str(if list { "]" } else { ")" })
             }
         }
     }
