@@ -32,7 +32,9 @@ use std::process::ExitCode;
 /// Arguments of `exactcheck prove`.
 #[derive(Debug, Args)]
 pub struct ProveArgs {
-    /// The left-hand side (a leading minus is part of the expression: '-x^2').
+    /// The left-hand side (a leading minus is part of the expression: '-x^2'). Besides sqrt and
+    /// diff, the sides may use vec, dot, cross, norm2, x, y, z, at, det, transpose, bernstein,
+    /// bezier, subs, lists [a, b] and matrices [[a, b], [c, d]] (docs/formulas.md).
     #[arg(allow_hyphen_values = true)]
     pub lhs: String,
     /// The right-hand side (default 0).

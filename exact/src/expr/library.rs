@@ -712,8 +712,9 @@ impl Defs {
             let mut names = function_names();
             names.push("sqrt");
             names.extend(super::FUNCTIONS);
+            let last = names.pop().unwrap_or("sqrt");
             return err(format!(
-                "unknown function '{name}' at {pos} (functions: {}; write '{name}*(...)' for a product)",
+                "unknown function '{name}' at {pos}: the functions are {} and {last} (write '{name}*(...)' for a product)",
                 names.join(", ")
             ));
         };
