@@ -156,6 +156,8 @@ pub enum DefText {
 /// A definition: its parameters (empty for a plain name) and text.
 #[derive(Clone, Debug)]
 struct Def {
+    /// The key as written (`f(t)`), for the caller to locate the definition.
+    head: String,
     name: String,
     params: Vec<String>,
     text: DefText,
@@ -273,7 +275,12 @@ impl Defs {
                 return Err((head, format!("{name} is defined twice")));
             }
             defs.index.insert(name.clone(), defs.entries.len());
-            defs.entries.push(Def { name, params, text });
+            defs.entries.push(Def {
+                head,
+                name,
+                params,
+                text,
+            });
         }
         Ok(defs)
     }
@@ -334,6 +341,11 @@ impl Defs {
             Val::Scalar(e) => Ok(e),
             v => err(format!("{} where a scalar is expected", v.shape())),
         }
+    }
+
+    /// The key a definition was given with (`f(t)` for the function `f`).
+    pub fn head(&self, name: &str) -> Option<&str> {
+        self.def(name).map(|d| d.head.as_str())
     }
 
     /// Whether `name` is defined (with or without parameters).
@@ -663,7 +675,17 @@ impl Defs {
         let scope = std::mem::take(&mut self.scope);
         let r = self.body(name, &vals, stack);
         self.scope = scope;
-        Ok(r?.map(|x| at_pos(&x, pos)))
+        // An error inside the body names the function and the call (its position is in the
+        // body's text).
+        let r = r.map_err(|e| ResolveError {
+            message: format!(
+                "in {} (called at {pos}): {}",
+                e.def.as_deref().unwrap_or(name),
+                e.message
+            ),
+            def: e.def,
+        })?;
+        Ok(r.map(|x| at_pos(&x, pos)))
     }
 
     fn call(&mut self, name: &str, args: &[Expr], pos: usize, stack: &mut Vec<String>) -> R<Val> {

@@ -180,7 +180,11 @@ fn function_errors() {
     assert!(e.message.contains("loop -> back -> loop"), "{}", e.message);
     let e = d.resolve_text("h([1, 2])").unwrap_err();
     assert_eq!(e.def.as_deref(), Some("h"));
-    assert!(e.message.contains("a vector of 2"), "{}", e.message);
+    assert!(
+        e.message.starts_with("in h (called at 0): a vector of 2"),
+        "{}",
+        e.message
+    );
     let bad = |head: &str| {
         Defs::new(vec![(head.to_string(), DefText::Scalar("1".into()))])
             .err()
