@@ -21,10 +21,7 @@ fn vector_functions_are_resolved() {
         "(1 - t^2)^2 + (2*t - t^2)^2",
     );
     proved("cross([a, b], [c, d])", "a*d - b*c");
-    proved(
-        "dot(cross([a1, a2, a3], [b1, b2, b3]), [a1, a2, a3])",
-        "0",
-    );
+    proved("dot(cross([a1, a2, a3], [b1, b2, b3]), [a1, a2, a3])", "0");
     proved("subs(bernstein(1, 2, t), t, 1/2)", "1/2");
 }
 
@@ -56,7 +53,10 @@ fn a_wrong_matrix_identity_fails_with_a_counter_example() {
 #[test]
 fn shapes_that_do_not_fit_are_one_line_errors() {
     for (lhs, want) in [
-        ("det([[1, 2, 3], [4, 5, 6]])", "det at 0 takes a square matrix, not a 2x3 matrix"),
+        (
+            "det([[1, 2, 3], [4, 5, 6]])",
+            "det at 0 takes a square matrix, not a 2x3 matrix",
+        ),
         (
             "det([[1, 2], [3, 4]] * [[1, 2, 3]])",
             "a product of a 2x2 matrix at 4 and a 1x3 matrix at 23: the sizes do not match",

@@ -254,7 +254,10 @@ impl Defs {
         for (head, text) in entries {
             let (name, params) = split_head(&head).map_err(|m| (head.clone(), m))?;
             if name == "sqrt" {
-                return Err((head, format!("{name:?} is the square root, not a name to define")));
+                return Err((
+                    head,
+                    format!("{name:?} is the square root, not a name to define"),
+                ));
             }
             let builtin = function_names().contains(&name.as_str())
                 || super::FUNCTIONS.contains(&name.as_str());
@@ -392,7 +395,12 @@ impl Defs {
             .def(name)
             .expect("body() is called for defined names only")
             .clone();
-        self.scope = def.params.iter().cloned().zip(args.iter().cloned()).collect();
+        self.scope = def
+            .params
+            .iter()
+            .cloned()
+            .zip(args.iter().cloned())
+            .collect();
         stack.push(name.to_string());
         let in_def = |e: ResolveError| ResolveError {
             def: Some(e.def.unwrap_or_else(|| name.to_string())),
@@ -524,7 +532,9 @@ impl Defs {
         let v = self.resolve_inner(e, stack)?;
         let components = v.parts();
         let n: usize = components.iter().map(|x| count_nodes(x)).sum();
-        if n > MAX_NODES {
+        // Only an expansion is refused: a formula typed at this size is the conversion's to
+        // bound (its `terms`, `degree`, ... limits).
+        if n > MAX_NODES && n > count_nodes(e) {
             return err(too_many_nodes(e.pos));
         }
         let depth = components.iter().map(|x| x.nesting()).max().unwrap_or(0);
@@ -1021,9 +1031,8 @@ fn library_call(name: &str, vals: &[(Val, usize)], pos: usize) -> R<Val> {
         "cross" => {
             let u = vector(&vals[0], "the first argument")?;
             let v = vector(&vals[1], "the second argument")?;
-            let minus = |a: Expr, b: Expr| {
-                node(ExprKind::Sum(vec![(AddOp::Plus, a), (AddOp::Minus, b)]))
-            };
+            let minus =
+                |a: Expr, b: Expr| node(ExprKind::Sum(vec![(AddOp::Plus, a), (AddOp::Minus, b)]));
             let c = |i: usize, j: usize| {
                 minus(
                     times(u[i].clone(), v[j].clone(), pos),

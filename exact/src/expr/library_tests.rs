@@ -92,11 +92,17 @@ fn matrices() {
     assert!(same(&mut d, "at(M*[1, 0], 2)", "c"));
     assert!(same(&mut d, "det(M + N - N)", "det(M)"));
     assert!(same(&mut d, "det(M/2)", "det(M)/4"));
-    assert!(same(&mut d, "det([[1, 2, 3], [4, 5, 6], [7, 8, 10]])", "-3"));
+    assert!(same(
+        &mut d,
+        "det([[1, 2, 3], [4, 5, 6], [7, 8, 10]])",
+        "-3"
+    ));
     assert!(same(&mut d, "det([[0, 0], [0, 0]])", "0"));
     let mt = d.resolve_text("transpose([[1, 2, 3], [4, 5, 6]])").unwrap();
     assert_eq!(mt.shape(), "a 3x2 matrix");
-    let p = d.resolve_text("[[1, 2, 3], [4, 5, 6]] * [[1], [2], [3]]").unwrap();
+    let p = d
+        .resolve_text("[[1, 2, 3], [4, 5, 6]] * [[1], [2], [3]]")
+        .unwrap();
     assert_eq!(p.shape(), "a 2x1 matrix");
     assert_eq!(
         d.resolve_text("[[1, 2], [3, 4]] * [x, y]").unwrap().shape(),
@@ -108,18 +114,25 @@ fn matrices() {
 fn shape_errors_name_both_shapes() {
     let mut d = Defs::default();
     let m = |t: &str| message(&mut Defs::default(), t);
-    assert!(m("det([[1, 2, 3], [4, 5, 6]])").contains("det at 0 takes a square matrix, not a 2x3 matrix"));
-    assert!(m("[[1, 2], [3, 4]] * [1, 2, 3]")
-        .contains("a product of a 2x2 matrix at 0 and a vector of 3 at 19: the sizes do not match"));
+    assert!(m("det([[1, 2, 3], [4, 5, 6]])")
+        .contains("det at 0 takes a square matrix, not a 2x3 matrix"));
+    assert!(m("[[1, 2], [3, 4]] * [1, 2, 3]").contains(
+        "a product of a 2x2 matrix at 0 and a vector of 3 at 19: the sizes do not match"
+    ));
     assert!(m("[[1, 2], [3, 4]] + [[1, 2, 3], [4, 5, 6]]")
         .contains("a 2x3 matrix at 19 added to a 2x2 matrix"));
-    assert!(m("[[1, 2], [3]]").contains("row 2 of the matrix at 0 (at 9) is a vector of 1, row 1 a vector of 2"));
+    assert!(m("[[1, 2], [3]]")
+        .contains("row 2 of the matrix at 0 (at 9) is a vector of 1, row 1 a vector of 2"));
     assert!(m("[1, [2, 3]]").contains("a vector of 2 at 4 in a list of scalars"));
     assert!(m("det([1, 2])").contains("a vector of 2 at 4 where a matrix is expected"));
     assert!(m("cross([1, 2], [1, 2, 3])").contains("not vectors of 2 and 3"));
     assert!(m("[1, 2] * [[1, 2], [3, 4]]").contains("write transpose(M)*v"));
     assert!(m("1 / [[1, 2], [3, 4]]").contains("division by a 2x2 matrix at 4"));
-    assert!(d.resolve_scalar("[[1]]").unwrap_err().message.contains("a 1x1 matrix where a scalar is expected"));
+    assert!(d
+        .resolve_scalar("[[1]]")
+        .unwrap_err()
+        .message
+        .contains("a 1x1 matrix where a scalar is expected"));
     assert!(m("[1, 2").contains("unexpected end of input at 5: expected an operator, ',' or ']'"));
     // The grammar without calls has no lists.
     assert!(crate::expr::parse_expr("[1]").is_err());
@@ -136,7 +149,10 @@ fn a_huge_determinant_is_refused_before_it_is_built() {
         .collect();
     let text = format!("det([{}])", rows.join(", "));
     let e = message(&mut Defs::default(), &text);
-    assert!(e.contains("det at 0 of a 12x12 matrix") && e.contains("MAX_NODES"), "{e}");
+    assert!(
+        e.contains("det at 0 of a 12x12 matrix") && e.contains("MAX_NODES"),
+        "{e}"
+    );
 }
 
 #[test]
@@ -283,9 +299,8 @@ fn matrix_text(m: &[Vec<i64>]) -> String {
 }
 
 fn square(max_n: usize) -> impl Strategy<Value = Vec<Vec<i64>>> {
-    (1..=max_n).prop_flat_map(|n| {
-        proptest::collection::vec(proptest::collection::vec(-9i64..=9, n), n)
-    })
+    (1..=max_n)
+        .prop_flat_map(|n| proptest::collection::vec(proptest::collection::vec(-9i64..=9, n), n))
 }
 
 proptest! {
