@@ -275,12 +275,12 @@ fn det_by_elimination(m: &[Vec<i64>]) -> Rational {
             det = -det;
         }
         let pivot = a[k][k].clone();
-        det = det * pivot.clone();
-        for i in k + 1..n {
-            let f = a[i][k].clone() / pivot.clone();
-            for j in k..n {
-                let x = a[k][j].clone() * f.clone();
-                a[i][j] = a[i][j].clone() - x;
+        det *= pivot.clone();
+        let row_k = a[k].clone();
+        for row in a.iter_mut().skip(k + 1) {
+            let f = row[k].clone() / pivot.clone();
+            for (x, y) in row.iter_mut().zip(&row_k).skip(k) {
+                *x = x.clone() - y.clone() * f.clone();
             }
         }
     }
