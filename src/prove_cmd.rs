@@ -2,7 +2,9 @@
 //! user's own polynomial identities.
 //!
 //! Both sides (and each relation) are parsed in the expression syntax (numbers, `sqrt(k)`,
-//! `diff(E, t[, k])`, variables, `+ - * / ^`, parentheses), expanded, and `LHS - RHS` is reduced
+//! `diff(E, t[, k])`, variables, `+ - * / ^`, parentheses) with the function library of
+//! `exactcheck_exact::expr::library` (`dot`, `cross`, `norm2`, `det` of `[[a, b], [c, d]]`,
+//! `bezier`, `subs`, ...) resolved to a scalar, expanded, and `LHS - RHS` is reduced
 //! modulo the relations (unit circles `c^2 + s^2 = 1` in closed form, others by a Gröbner
 //! basis) by the identity engine `exactcheck_exact::prove::decide_identity`, and the verdict is
 //! phrased by `prove::phrase` in the `prove` voice. With a division by a non-constant anywhere,
@@ -21,7 +23,7 @@
 use crate::Error;
 use clap::Args;
 use exactcheck_core::Ring;
-use exactcheck_exact::expr::{first_reserved, parse_expr, Coefficient, Expr};
+use exactcheck_exact::expr::{first_reserved, library, Coefficient, Expr};
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
     decide_identity, real_zero_free, square_roots, Domain, EngineError, FractionIdentity,
@@ -37,7 +39,9 @@ use std::process::ExitCode;
 /// Arguments of `exactcheck prove`.
 #[derive(Debug, Args)]
 pub struct ProveArgs {
-    /// The left-hand side (a leading minus is part of the expression: '-x^2').
+    /// The left-hand side (a leading minus is part of the expression: '-x^2'). Besides sqrt and
+    /// diff, the sides may use vec, dot, cross, norm2, x, y, z, at, det, transpose, bernstein,
+    /// bezier, subs, lists [a, b] and matrices [[a, b], [c, d]] (docs/formulas.md).
     #[arg(allow_hyphen_values = true)]
     pub lhs: String,
     /// The right-hand side (default 0).
@@ -329,10 +333,13 @@ fn random_test(
     Ok(code)
 }
 
-/// Parses `text` (named `what` in messages); a free variable `pi`, `e` or `i` is refused
+/// Parses `text` (named `what` in messages), resolving the library functions (`dot`, `det`,
+/// `bezier`, matrices, ...) to a scalar expression; a free variable `pi`, `e` or `i` is refused
 /// ([`reserved_constant`](exactcheck_exact::expr::reserved_constant)).
 fn parse(text: &str, what: &str) -> Result<Expr, Error> {
-    let e = parse_expr(text).map_err(|e| Error::Input(format!("{what}: {e}")))?;
+    let e = library::Defs::default()
+        .resolve_scalar(text)
+        .map_err(|e| Error::Input(format!("{what}: {e}")))?;
     match first_reserved([&e]) {
         Some(why) => Err(Error::Input(format!("{what}: {why}"))),
         None => Ok(e),

@@ -142,6 +142,39 @@ fn fractions_and_derivatives_as_printed_are_decided() {
 }
 
 #[test]
+fn functions_matrices_and_vector_values_are_decided() {
+    let v = verdicts("tests/claims_file/functions.toml");
+    let want = [
+        ("functions.even", Verdict::Proved),
+        ("functions.area", Verdict::Proved),
+        ("functions.hodograph", Verdict::Proved),
+        ("functions.rotation", Verdict::Proved),
+        ("functions.rotation_det", Verdict::Proved),
+        ("functions.midpoint", Verdict::Proved),
+        ("functions.unit_vector", Verdict::Holds),
+        ("functions.misprinted_point", Verdict::Fails),
+    ];
+    assert_eq!(v.len(), want.len());
+    for ((id, got), (wid, wv)) in v.iter().zip(want) {
+        assert_eq!(id, wid);
+        assert_eq!(*got, Some(wv), "{id}");
+    }
+    let out = exactcheck(&["verify", "tests/claims_file/functions.toml", "--json"]);
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert_eq!(out.status.code(), Some(0), "{text}");
+    // The misprinted point: the first coordinate is wrong, the second correctly rounded.
+    assert!(
+        text.contains("component 1: exact value 9/16") && text.contains("0.63: wrong"),
+        "{text}"
+    );
+    assert!(
+        text.contains("component 2: exact value 13/16")
+            && text.contains("0.81: correctly rounded to 2 places"),
+        "{text}"
+    );
+}
+
+#[test]
 fn a_misprint_fails_with_a_counter_example_and_an_erratum() {
     let example = std::fs::read_to_string(root().join("examples/spaeth.toml")).unwrap();
     let fixture =
@@ -241,8 +274,13 @@ fn bad_files_are_one_line_with_file_line_and_key() {
         ),
         (
             "vector_for_scalar.toml",
-            7,
-            "claim \"bad.vector\": key expr: a vector of 3 where a scalar is expected",
+            8,
+            "claim \"bad.vector\": key printed: 1 printed value for a vector of 3",
+        ),
+        (
+            "function_arity.toml",
+            11,
+            "claim \"bad.function_arity\": key lhs: cross2 at 0 takes 2 arguments, not 3",
         ),
         (
             "cycle.toml",

@@ -58,11 +58,13 @@ pub enum Check {
         radical: bool,
         corrected: Option<Vec<Expr>>,
     },
-    /// `value`.
+    /// `value`: one expression per component (one for a scalar; a vector's coordinates; a
+    /// matrix's entries by rows), their names (none, or one per component) and the printed
+    /// decimals of each.
     Value {
-        expr: Expr,
-        name: Option<Expr>,
-        printed: Vec<String>,
+        exprs: Vec<Expr>,
+        names: Vec<Expr>,
+        printed: Vec<Vec<String>>,
     },
     /// `instances`.
     Instances {
@@ -100,7 +102,7 @@ impl Check {
                 .chain(corrected.iter().flatten())
                 .chain(relations(conditions))
                 .collect(),
-            Check::Value { expr, .. } => vec![expr],
+            Check::Value { exprs, .. } => exprs.iter().collect(),
             Check::Instances {
                 lhs,
                 rhs,
@@ -308,25 +310,49 @@ pub fn build(c: &RawClaim, defs: &RefCell<Defs>) -> Built<Check> {
             }
         }
         "value" => {
-            let expr = defs
+            let val = defs
                 .borrow_mut()
-                .resolve_scalar(&required("expr", &c.expr)?)
+                .resolve_text(&required("expr", &c.expr)?)
                 .map_err(|e| ("expr", e.message))?;
-            no_reserved("expr", std::slice::from_ref(&expr))?;
-            let printed = c
+            let given = c
                 .printed
                 .as_ref()
                 .ok_or(("printed", "missing (kind value needs it)".to_string()))?
                 .list();
-            if printed.is_empty() {
+            if given.is_empty() {
                 return Err(("printed", "give at least one printed decimal".into()));
             }
-            for p in &printed {
+            let exprs = val.components();
+            no_reserved("expr", &exprs)?;
+            // A scalar may be printed several times (each judged); a vector or matrix is
+            // printed once, as a tuple or row ("(1/2, 0.7071)") or an array of its components.
+            let printed: Vec<Vec<String>> = if matches!(val, defs::Val::Scalar(_)) {
+                vec![given]
+            } else {
+                let items = if given.len() == 1 {
+                    printed_tuple(&given[0])
+                } else {
+                    given
+                };
+                if items.len() != exprs.len() {
+                    return Err((
+                        "printed",
+                        format!(
+                            "{} printed value{} for {} (give one per component, e.g. \"(1/2, 0.7071)\")",
+                            items.len(),
+                            if items.len() == 1 { "" } else { "s" },
+                            val.shape()
+                        ),
+                    ));
+                }
+                items.into_iter().map(|p| vec![p]).collect()
+            };
+            for p in printed.iter().flatten() {
                 printed::rational(p).map_err(|e| ("printed", e))?;
             }
             Check::Value {
-                expr,
-                name: names(1)?.pop(),
+                names: names(exprs.len())?,
+                exprs,
                 printed,
             }
         }
@@ -439,10 +465,10 @@ pub fn run(
         Check::Identity { radical: true, .. } => identity::<Radical>(check)?,
         Check::Identity { .. } => identity::<Rational>(check)?,
         Check::Value {
-            expr,
-            name,
+            exprs,
+            names,
             printed,
-        } => (value(expr, name.as_ref(), printed)?, None),
+        } => (values(exprs, names, printed)?, None),
         Check::Instances { .. } => (instances(check)?, None),
         Check::Solve { problem, fields } => (solve(problem, fields)?, None),
     };
@@ -781,6 +807,60 @@ fn value(expr: &Expr, name: Option<&Expr>, printed_list: &[String]) -> Result<Ou
     Ok(Outcome {
         verdict,
         method: "exact evaluation in Q(sqrt); printed decimals judged exactly".into(),
+        evidence,
+        erratum,
+    })
+}
+
+/// The components of a printed tuple, row or matrix (`"(1/2, 0.7071)"`, `"[1, 2]"`,
+/// `"[[1, 2], [3, 4]]"`), by rows; a single decimal is one component.
+fn printed_tuple(text: &str) -> Vec<String> {
+    text.replace(['(', ')', '[', ']'], "")
+        .split(',')
+        .map(|p| p.trim().to_string())
+        .collect()
+}
+
+/// A value claim: each component judged as a scalar is ([`value`]); a vector's verdict is the
+/// worst of its components', the evidence and erratum name each component.
+fn values(exprs: &[Expr], names: &[Expr], printed: &[Vec<String>]) -> Result<Outcome, Fault> {
+    if exprs.len() == 1 {
+        return value(&exprs[0], names.first(), &printed[0]);
+    }
+    let mut outs = Vec::new();
+    for (k, (e, p)) in exprs.iter().zip(printed).enumerate() {
+        outs.push((k + 1, value(e, names.get(k), p)?));
+    }
+    let verdict = if outs.iter().any(|(_, o)| o.verdict == Verdict::Fails) {
+        Verdict::Fails
+    } else if outs.iter().all(|(_, o)| o.verdict == Verdict::Proved) {
+        Verdict::Proved
+    } else {
+        Verdict::Holds
+    };
+    let evidence = outs
+        .iter()
+        .map(|(k, o)| format!("component {k}: {}", o.evidence))
+        .collect::<Vec<_>>()
+        .join("; ");
+    let mut erratum: Option<Box<Erratum>> = None;
+    for (k, o) in &outs {
+        if let Some(e) = &o.erratum {
+            let all = erratum.get_or_insert_with(Default::default);
+            if !all.correction.is_empty() {
+                all.correction.push_str("; ");
+            }
+            all.correction
+                .push_str(&format!("component {k}: {}", e.correction));
+            all.printed.extend(e.printed.iter().cloned());
+            all.corrected.extend(e.corrected.iter().cloned());
+            all.residual.extend(e.residual.iter().cloned());
+        }
+    }
+    Ok(Outcome {
+        verdict,
+        method: "exact evaluation in Q(sqrt) of each component; printed decimals judged exactly"
+            .into(),
         evidence,
         erratum,
     })

@@ -90,7 +90,6 @@ mod read;
 
 use crate::claims::{Checked, Outcome, Verdict};
 use crate::Error;
-use defs::{DefText, Defs};
 use exactcheck_exact::expr::{parse_expr_with_calls, Expr};
 use kinds::{Check, Fault};
 use rayon::prelude::*;
@@ -213,43 +212,14 @@ pub fn parse(text: &str, file: &str, default_name: &str) -> Result<ClaimsFile, E
     };
     let notation = notation_of(raw.latex.as_ref(), "latex", &fail)?;
     // Definitions.
-    let mut entries = Vec::new();
-    for (name, v) in raw.define.iter().flatten() {
-        let path = format!("define.{name}");
-        let scalar = |v: &Value| match v {
-            Value::String(s) => Some(s.clone()),
-            Value::Number(n) => Some(n.to_string()),
-            _ => None,
-        };
-        let text = match v {
-            Value::Array(xs) => DefText::Vector(
-                xs.iter()
-                    .map(|x| {
-                        scalar(x).ok_or_else(|| {
-                            fail(&path, "a coordinate must be a formula (a string) or an integer".into())
-                        })
-                    })
-                    .collect::<Result<_, _>>()?,
-            ),
-            v => DefText::Scalar(scalar(v).ok_or_else(|| {
-                fail(
-                    &path,
-                    "a definition is a formula (a string), a number or a vector (an array of formulas)"
-                        .into(),
-                )
-            })?),
-        };
-        entries.push((name.clone(), text));
-    }
-    let mut defs = Defs::new(entries).map_err(|(name, m)| fail(&format!("define.{name}"), m))?;
+    let mut defs = defs::read(raw.define.as_ref()).map_err(|(path, m)| fail(&path, m))?;
     defs.resolve_all().map_err(|e| {
-        fail(
-            &format!("define.{}", e.def.clone().unwrap_or_default()),
-            e.message,
-        )
+        let name = e.def.clone().unwrap_or_default();
+        let head = defs.head(&name).unwrap_or(&name);
+        fail(&format!("define.{head}"), e.message)
     })?;
     // Declared variables: names of the syntax, not defined, not a constant.
-    let declared_ok = |list: &[String], defs: &Defs| -> Result<(), String> {
+    let declared_ok = |list: &[String], defs: &defs::Defs| -> Result<(), String> {
         for v in list {
             if !names::is_name(v) {
                 return Err(format!("{v:?} is not a variable name"));

@@ -19,7 +19,8 @@
 //! unary    := ('-' | '+') unary | power
 //! power    := atom ('^' exponent)?
 //! exponent := ('-' | '+') exponent | atom ('^' exponent)?   (right-associative)
-//! atom     := number | variable | 'sqrt' '(' sum ')' | call | '(' sum ')'
+//! atom     := number | variable | 'sqrt' '(' sum ')' | call | '(' sum ')' | list
+//! list     := '[' sum (',' sum)* ']'           (with calls only: vectors and matrices, see [`library`])
 //! call     := 'diff' '(' sum ',' variable (',' sum)? ')'
 //! number   := [0-9]+ ('.' [0-9]+)? ([eE] [+-]? [0-9]+)?
 //! variable := [A-Za-z_][A-Za-z0-9_]*          (not followed by '('; not the word sqrt)
@@ -92,7 +93,7 @@
 //! # Layout
 //! Here: the limits, the [`Coefficient`] trait, the AST and the errors; `parse`: the lexer and
 //! the parser; `eval`: the conversion to polynomials and the constant evaluator with the size
-//! limits; `fraction`: the conversion to rational functions and the arguments of `diff`; `print`: the printer; `latex`: LaTeX ([`to_latex`]) with a [`Notation`] for names, from
+//! limits; `fraction`: the conversion to rational functions and the arguments of `diff`; [`library`]: definitions, functions with parameters, vectors, matrices and the vector/Bezier functions, resolved to core trees; `print`: the printer; `latex`: LaTeX ([`to_latex`]) with a [`Notation`] for names, from
 //! a layout shared with `mathml` ([`to_mathml`]); `w1`: the text of workload W1.
 //!
 //! # Errors
@@ -107,6 +108,7 @@ use num_traits::Signed;
 mod eval;
 mod fraction;
 mod latex;
+pub mod library;
 mod mathml;
 mod parse;
 mod print;
@@ -117,7 +119,7 @@ mod w1;
 
 pub use latex::{equation_to_latex, to_latex, Notation};
 pub use mathml::{equation_to_mathml, to_mathml};
-pub use parse::{parse_expr, parse_expr_with_calls, parse_poly};
+pub use parse::{parse_expr, parse_expr_with_calls, parse_poly, LIST};
 pub use w1::w1_text;
 
 /// The functions written `name(arg, ...)` in every grammar (besides `sqrt`): `diff(E, t)` and

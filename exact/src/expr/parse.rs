@@ -7,6 +7,10 @@ use crate::poly::{Poly, Vars};
 use num_bigint::BigUint;
 use std::str::FromStr;
 
+/// The name of the call a list `[a, b, ...]` parses to (only with calls,
+/// [`parse_expr_with_calls`]): a vector, or a matrix when the items are rows.
+pub const LIST: &str = "[]";
+
 // ------------------------------------------------------------------------------ lexer
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -20,6 +24,8 @@ enum Tok {
     Caret,
     LParen,
     RParen,
+    LBracket,
+    RBracket,
     Comma,
     End,
     Bad(char),
@@ -107,6 +113,8 @@ impl<'a> Parser<'a> {
             '^' => (Tok::Caret, start + 1),
             '(' => (Tok::LParen, start + 1),
             ')' => (Tok::RParen, start + 1),
+            '[' => (Tok::LBracket, start + 1),
+            ']' => (Tok::RBracket, start + 1),
             ',' => (Tok::Comma, start + 1),
             c => (Tok::Bad(c), start + c.len_utf8()),
         };
@@ -321,6 +329,7 @@ impl<'a> Parser<'a> {
                 })
             }
             Tok::LParen => self.parse_parenthesized(),
+            Tok::LBracket if self.calls => self.parse_list(),
             _ => Err(self.unexpected(expected)),
         }
     }
@@ -349,6 +358,35 @@ impl<'a> Parser<'a> {
                 _ => return Err(self.unexpected("an operator, ',' or ')'")),
             }
         }
+    }
+
+    /// `'[' sum (',' sum)* ']'`, the current token being `[`: a list (a vector, or a matrix of
+    /// rows), the call [`LIST`] for the library to resolve.
+    fn parse_list(&mut self) -> Result<Expr, ExprError> {
+        self.enter()?;
+        let open = self.cur.start;
+        self.bump();
+        let mut items = Vec::new();
+        let r = loop {
+            match self.parse_sum() {
+                Ok(e) => items.push(e),
+                Err(e) => break Err(e),
+            }
+            match self.cur.tok {
+                Tok::Comma => self.bump(),
+                Tok::RBracket => {
+                    self.bump();
+                    break Ok(());
+                }
+                _ => break Err(self.unexpected("an operator, ',' or ']'")),
+            }
+        };
+        self.leave();
+        r?;
+        Ok(Expr {
+            kind: ExprKind::Call(LIST.to_string(), items),
+            pos: open,
+        })
     }
 
     /// `'(' sum ')'`, the current token being `(`.

@@ -106,14 +106,20 @@ impl fmt::Display for Expr {
                 f.write_str(name)
             }
             ExprKind::Call(name, args) => {
-                write!(f, "{name}(")?;
+                // A list `[a, b]` is printed as written.
+                let list = name == super::parse::LIST;
+                if list {
+                    f.write_str("[")?;
+                } else {
+                    write!(f, "{name}(")?;
+                }
                 for (k, a) in args.iter().enumerate() {
                     if k > 0 {
                         f.write_str(", ")?;
                     }
                     write!(f, "{a}")?;
                 }
-                f.write_str(")")
+                f.write_str(if list { "]" } else { ")" })
             }
         }
     }
