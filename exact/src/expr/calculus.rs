@@ -289,12 +289,10 @@ fn sum_terms<T>(
     let level = SumLevel::enter();
     level.take(s.count, call.pos)?;
     let mut out = Vec::new();
-    let mut i = s.from.clone();
-    for _ in 0..s.count {
-        let value = Rational::from(i.clone());
+    for j in 0..s.count {
+        let value = Rational::from(&s.from + BigInt::from(j));
         let term = substitute(s.body, s.index, &value, call)?;
         out.push(convert(&term)?);
-        i += 1u32;
     }
     Ok(out)
 }
@@ -422,6 +420,9 @@ pub(super) fn rename<C: Ring>(p: &Poly<C>, map: &dyn Fn(Var) -> Var) -> Poly<C> 
     }))
 }
 
+/// A term as its exponents and coefficient.
+type Term<C> = (Vec<(Var, u32)>, C);
+
 /// The antiderivative of `p` in `v` as its coefficients in `v`: `F = sum_k F[k] v^k`.
 fn antiderivative_parts<C: Coefficient>(
     call: &Expr,
@@ -435,7 +436,7 @@ fn antiderivative_parts<C: Coefficient>(
             pos: call.pos,
             error,
         })?;
-    let mut by_power: Vec<Vec<(Vec<(Var, u32)>, C)>> = vec![Vec::new(); degree as usize + 2];
+    let mut by_power: Vec<Vec<Term<C>>> = vec![Vec::new(); degree as usize + 2];
     for (m, c) in p.terms() {
         let e = m.exponent(v);
         let inv = C::from_rational(&Rational::from(BigInt::from(e) + 1u32))
