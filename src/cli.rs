@@ -51,8 +51,10 @@ pub enum Command {
     /// vanish); `fails` with an exact counter-example and what the sides differ by; or
     /// `undecided` when neither is found. Expressions: numbers, variables, + - * / ^,
     /// parentheses, and the functions sqrt(c) of a constant, diff(E, t) and diff(E, t, k) (the
-    /// exact derivative in the variable t, k times). `--random K`: `holds`/`fails`/`undecided`
-    /// with a proved error bound.
+    /// exact derivative in the variable t, k times), integrate(E, t, a, b) (the definite
+    /// integral of a polynomial in t), sum(k, a, b, E) (over the integers k from a to b),
+    /// binomial(n, k) and factorial(n) (integer constants). `--random K`:
+    /// `holds`/`fails`/`undecided` with a proved error bound (without these functions).
     #[command(after_help = PROVE_EXAMPLES)]
     Prove(crate::prove_cmd::ProveArgs),
     /// Solve one problem given in JSON (a file, or `-` / nothing for standard input) and print
@@ -120,6 +122,8 @@ const PROVE_EXAMPLES: &str = "Examples:
   exactcheck prove 'x^2 + 1' '2 x' --where 'x >= 0'
   exactcheck prove '((1-t^2)/(1+t^2))^2 + (2*t/(1+t^2))^2' 1
   exactcheck prove 'diff(t^3/(1+t), t)' '(2*t^3+3*t^2)/(1+t)^2'
+  exactcheck prove 'sum(i, 0, 3, binomial(3, i) t^i (1-t)^(3-i))' 1
+  exactcheck prove 'integrate((1+t)^2 + t^2, t, 0, 1)' 8/3
   exactcheck prove '(x+y)^20' '(y+x)^20' --random 20 --seed 7";
 const SOLVE_EXAMPLES: &str = "Examples:
   exactcheck solve tests/solve_golden/cs_example1.json

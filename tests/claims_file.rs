@@ -658,3 +658,15 @@ fn twenty_thousand_claims_are_read_in_linear_time() {
         "{table}"
     );
 }
+
+#[test]
+fn integrals_sums_and_binomials_as_printed_are_decided() {
+    let out = exactcheck(&["verify", "tests/claims_file/calculus.toml", "--json"]);
+    assert_eq!(out.status.code(), Some(0), "{out:?}");
+    let rows: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let rows = rows.as_array().unwrap();
+    assert_eq!(rows.len(), 2);
+    for r in rows {
+        assert_eq!(r["verdict"], "proved", "{r}");
+    }
+}

@@ -192,6 +192,9 @@ limits! {
     /// Order `k` of a derivative `diff(E, t, k)` (every order squares a denominator before its
     /// common factor cancels).
     DIFF_ORDER = ("diff-order", "order of a derivative", "", 100);
+    /// Terms of a `sum(k, a, b, E)`, each an expansion of `E`; the terms of nested sums count
+    /// together (an inner sum's terms for every term of the outer one).
+    SUM_TERMS = ("sum-terms", "terms of a sum", "", 100_000);
     /// S-polynomial reductions of one Groebner basis computation.
     GROEBNER_STEPS = ("groebner-steps", "Groebner basis steps", "", 150);
     /// Elements of one Groebner basis.

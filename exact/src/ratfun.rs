@@ -61,6 +61,28 @@ impl<C: Field> RatFun<C> {
         self.num
     }
 
+    /// `1 / denominator`, with the conditions of `self` (the denominator is monic and coprime
+    /// to 1, so this is in lowest terms).
+    pub fn denominator_reciprocal(&self) -> Self {
+        RatFun {
+            num: Poly::one(),
+            den: self.den.clone(),
+            conditions: self.conditions.clone(),
+        }
+    }
+
+    /// The fraction with every polynomial (numerator, denominator, conditions) mapped by `f`,
+    /// which must preserve sums, products and coprimality (a renaming of the variables); the
+    /// denominator and the conditions are made monic again in the new monomial order.
+    pub fn map_polys(&self, f: impl Fn(&Poly<C>) -> Poly<C>) -> Self {
+        let (num, den) = monic_den(f(&self.num), f(&self.den));
+        RatFun {
+            num,
+            den,
+            conditions: self.conditions.iter().map(|c| f(c).make_monic()).collect(),
+        }
+    }
+
     /// Whether the denominator is 1 and no divisor was met.
     pub fn is_polynomial(&self) -> bool {
         self.den.is_one() && self.conditions.is_empty()

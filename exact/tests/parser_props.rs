@@ -64,8 +64,8 @@ fn juxtaposition_is_read_by_every_entry_point() {
 #[test]
 fn unknown_functions_are_errors_everywhere() {
     // Old: `prove 'sin(x)' 'x'` multiplied a variable `sin` by x and answered `fails`.
-    let msg = "unknown function 'sin' at 0: the functions are sqrt and diff (write 'sin*(...)' \
-               for a product)";
+    let msg = "unknown function 'sin' at 0: the functions are sqrt, diff, integrate, sum, \
+               binomial and factorial (write 'sin*(...)' for a product)";
     assert_eq!(
         parse_poly::<Rational>("sin(x)", &mut Vars::new())
             .unwrap_err()

@@ -90,6 +90,9 @@ impl Expr {
                     None => super::roots::root_variable(&p, arg, vars).map(Poly::var),
                 }
             }
+            ExprKind::Call(name, args) if super::calculus::CALCULUS.contains(&name.as_str()) => {
+                super::calculus::call_poly(self, name, args, vars)
+            }
             ExprKind::Call(_, args) => super::fraction::diff_poly(self, args, vars),
         }
     }
@@ -162,6 +165,9 @@ impl Expr {
                 constant_power(b, k, self.pos, exp.pos)
             }
             ExprKind::Sqrt(arg) => sqrt_of(arg.eval_constant::<C>()?, self.pos, arg),
+            ExprKind::Call(name, args) if super::calculus::CALCULUS.contains(&name.as_str()) => {
+                super::calculus::call_constant(self, name, args)
+            }
             // The derivative of a constant is 0.
             ExprKind::Call(_, args) => {
                 let (e, _, k) = super::fraction::diff_arguments(self, args)?;

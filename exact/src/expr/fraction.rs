@@ -10,7 +10,8 @@ use num_traits::ToPrimitive;
 
 impl Expr {
     /// Whether the expression divides by something with a variable: a division by a
-    /// non-constant expression, a negative power of one, or a `diff` of such an expression.
+    /// non-constant expression, a negative power of one, or a `diff`, `integrate` or `sum` of
+    /// such an expression (or with such bounds).
     /// Without one it is a polynomial, which [`Expr::to_ratfun`] converts by [`Expr::to_poly`]
     /// alone.
     pub fn has_fractions(&self) -> bool {
@@ -24,9 +25,11 @@ impl Expr {
             ExprKind::Pow(b, e) => {
                 b.has_fractions() || (b.has_variable() && exponent_value(e).is_ok_and(|k| k < 0))
             }
-            ExprKind::Call(name, args) => {
-                name == "diff" && args.first().is_some_and(Expr::has_fractions)
-            }
+            ExprKind::Call(name, args) => match name.as_str() {
+                "diff" => args.first().is_some_and(Expr::has_fractions),
+                "integrate" | "sum" => args.iter().any(Expr::has_fractions),
+                _ => false,
+            },
         }
     }
 
@@ -105,6 +108,9 @@ impl Expr {
                     .pow(k)
                     .map_err(size)?
                     .ok_or_else(|| zero_divisor(base))?
+            }
+            ExprKind::Call(name, args) if super::calculus::CALCULUS.contains(&name.as_str()) => {
+                super::calculus::call_ratfun(self, name, args, vars)?
             }
             ExprKind::Call(_, args) => {
                 let (e, t, k) = diff_arguments(self, args)?;

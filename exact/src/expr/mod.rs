@@ -22,6 +22,9 @@
 //! atom     := number | variable | 'sqrt' '(' sum ')' | call | '(' sum ')' | list
 //! list     := '[' sum (',' sum)* ']'           (with calls only: vectors and matrices, see [`library`])
 //! call     := 'diff' '(' sum ',' variable (',' sum)? ')'
+//!           | 'integrate' '(' sum ',' variable ',' sum ',' sum ')'
+//!           | 'sum' '(' variable ',' sum ',' sum ',' sum ')'
+//!           | 'binomial' '(' sum ',' sum ')' | 'factorial' '(' sum ')'
 //! number   := [0-9]+ ('.' [0-9]+)? ([eE] [+-]? [0-9]+)?
 //! variable := [A-Za-z_][A-Za-z0-9_]*          (not followed by '('; not the word sqrt)
 //! ```
@@ -35,12 +38,20 @@
 //! * **Juxtaposition multiplies**, binding like `*`: `2x`, `2 sqrt(2)`, `x y`, `(a+b)(a-b)`,
 //!   `c^2 x^3`. A juxtaposed factor takes no sign of its own (`x -y` is a difference) and may not
 //!   start with a number (`2 3` and `x 2` are errors: write `*`).
-//! * **Functions**: `sqrt` and `diff` ([`FUNCTIONS`]). A name followed by `(` is a function
+//! * **Functions**: `sqrt`, `diff`, `integrate`, `sum`, `binomial`, `factorial` ([`FUNCTIONS`]). A name followed by `(` is a function
 //!   call, so `sin(x)` is the error `unknown function 'sin'` rather than the product `sin*(x)`;
 //!   write the `*` for a product (`x*(y+1)`). `diff(E, t)` is the exact derivative of `E` in the
 //!   variable `t` (the second argument must be a variable name), `diff(E, t, k)` the `k`-th, `k`
 //!   a non-negative integer constant within the `diff-order` limit ([`limits::DIFF_ORDER`]); of a
 //!   fraction by the quotient rule ([`crate::ratfun::RatFun::derivative`]).
+//!   `integrate(E, t, a, b)` is the definite integral of a polynomial in `t` (coefficients may
+//!   be fractions free of `t`; the bounds any expressions), `sum(k, a, b, E)` the sum over the
+//!   integers `k` from `a` to `b` (integer constants; at most `sum-terms` terms,
+//!   [`limits::SUM_TERMS`]), `binomial(n, k)` and `factorial(n)` exact integers of integer
+//!   constants (held to `constant-bits`). The index of a sum and the variable of an integral
+//!   are bound ([`Expr::collect_variables`] skips them). In an exponent, a name that is not a
+//!   function followed by `(` is the exponent, and the `(` starts the next juxtaposed factor
+//!   (`t^i (1-t)^(3-i)`).
 //! * `^` binds tighter than unary minus (`-x^2 = -(x^2)`) and is right-associative
 //!   (`x^2^3 = x^8`). Its exponent must evaluate to an integer constant with absolute value at
 //!   most the `exponent` limit ([`limits::EXPONENT`]); it may carry a sign (`2^-3 = 1/8`), but a negative exponent needs a
@@ -93,7 +104,10 @@
 //! # Layout
 //! Here: the limits, the [`Coefficient`] trait, the AST and the errors; `parse`: the lexer and
 //! the parser; `eval`: the conversion to polynomials and the constant evaluator with the size
-//! limits; `fraction`: the conversion to rational functions and the arguments of `diff`; [`library`]: definitions, functions with parameters, vectors, matrices and the vector/Bezier functions, resolved to core trees; `print`: the printer; `latex`: LaTeX ([`to_latex`]) with a [`Notation`] for names, from
+//! limits; `fraction`: the conversion to rational functions and the arguments of `diff`;
+//! `calculus`: `integrate`, `sum`, `binomial` and `factorial`; [`library`]: definitions,
+//! functions with parameters, vectors, matrices and the vector/Bezier functions, resolved to
+//! core trees; `print`: the printer; `latex`: LaTeX ([`to_latex`]) with a [`Notation`] for names, from
 //! a layout shared with `mathml` ([`to_mathml`]); `w1`: the text of workload W1.
 //!
 //! # Errors
@@ -105,6 +119,9 @@ use exactcheck_core::Ring;
 use num_bigint::BigInt;
 use num_traits::Signed;
 
+mod calculus;
+#[cfg(test)]
+mod calculus_tests;
 mod eval;
 mod fraction;
 mod latex;
@@ -123,8 +140,11 @@ pub use parse::{parse_expr, parse_expr_with_calls, parse_poly, LIST};
 pub use w1::w1_text;
 
 /// The functions written `name(arg, ...)` in every grammar (besides `sqrt`): `diff(E, t)` and
-/// `diff(E, t, k)`, the exact derivative of `E` in the variable `t` (`k` times).
-pub const FUNCTIONS: &[&str] = &["diff"];
+/// `diff(E, t, k)`, the exact derivative of `E` in the variable `t` (`k` times);
+/// `integrate(E, t, a, b)`, the definite integral of a polynomial in `t`; `sum(k, a, b, E)`,
+/// the sum of `E` over the integers `k` from `a` to `b`; `binomial(n, k)` and `factorial(n)`
+/// of integer constants.
+pub const FUNCTIONS: &[&str] = &["diff", "integrate", "sum", "binomial", "factorial"];
 
 /// Whether `name` is a constant of mathematics that a formula may never use as a free variable
 /// (`pi`, `e`, `i`): the one-line reason, or `None` for any other name. `prove` and claims files
@@ -311,7 +331,8 @@ impl Expr {
 
     /// Appends the variables of the tree to `out`, in order of first appearance, each once
     /// (names already in `out` are not repeated): the one walk `prove` and the claims files use
-    /// to name the variables of their sides.
+    /// to name the variables of their sides. The index of a `sum` and the variable of an
+    /// `integrate` are bound in their body and not collected from it.
     pub fn collect_variables(&self, out: &mut Vec<String>) {
         match &self.kind {
             ExprKind::Number(_) => {}
@@ -327,7 +348,7 @@ impl Expr {
             }
             ExprKind::Sum(ts) => ts.iter().for_each(|(_, t)| t.collect_variables(out)),
             ExprKind::Product(fs) => fs.iter().for_each(|(_, f)| f.collect_variables(out)),
-            ExprKind::Call(_, args) => args.iter().for_each(|a| a.collect_variables(out)),
+            ExprKind::Call(name, args) => calculus::collect_call_variables(name, args, out),
         }
     }
 
@@ -433,8 +454,8 @@ pub enum ExprError {
     },
     /// A name followed by `(` that is not a known function.
     #[error(
-        "unknown function '{name}' at {pos}: the functions are sqrt and diff (write \
-         '{name}*(...)' for a product)"
+        "unknown function '{name}' at {pos}: the functions are sqrt, diff, integrate, sum, \
+         binomial and factorial (write '{name}*(...)' for a product)"
     )]
     UnknownFunction {
         /// Byte position of the name.

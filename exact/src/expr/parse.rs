@@ -317,7 +317,9 @@ impl<'a> Parser<'a> {
                         pos: t.start,
                     });
                 }
-                if self.cur.tok == Tok::LParen {
+                // In an exponent, a name that is not a function is the exponent, and a `(`
+                // after it starts the next juxtaposed factor: `t^i (1-t)^(3-i)`.
+                if self.cur.tok == Tok::LParen && (self.calls || expected != EXPECT_EXPONENT) {
                     return Err(ExprError::UnknownFunction {
                         pos: t.start,
                         name: self.text(t).to_string(),

@@ -189,13 +189,13 @@ fn unknown_functions_are_errors() {
     // Regression: `sin(x)` was the product sin*x of a variable sin.
     assert_eq!(
         err("sin(x)"),
-        "unknown function 'sin' at 0: the functions are sqrt and diff (write 'sin*(...)' \
-         for a product)"
+        "unknown function 'sin' at 0: the functions are sqrt, diff, integrate, sum, \
+         binomial and factorial (write 'sin*(...)' for a product)"
     );
     assert_eq!(
         err("2 sin(2x)"),
-        "unknown function 'sin' at 2: the functions are sqrt and diff (write 'sin*(...)' \
-         for a product)"
+        "unknown function 'sin' at 2: the functions are sqrt, diff, integrate, sum, \
+         binomial and factorial (write 'sin*(...)' for a product)"
     );
     assert!(err("x (y+1)").starts_with("unknown function 'x' at 0"));
     let mut v = Vars::new();

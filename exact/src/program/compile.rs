@@ -18,7 +18,10 @@
 //!   name is an error naming it and the list), otherwise the variables in order of first
 //!   appearance, reading left to right.
 //!
-//! No constant folding: `1/3` is the double division `1.0 / 3.0`, as in the source.
+//! No constant folding: `1/3` is the double division `1.0 / 3.0`, as in the source. For the
+//! same reason the functions of the language (`diff`, `integrate`, `sum`, `binomial`,
+//! `factorial`) are refused: they have no operation-by-operation float evaluation that is the
+//! formula as written, and an expansion chosen here would regress a different formula.
 use super::{ChainOp, Node, PowStyle, Program};
 use crate::expr::{parse_expr, AddOp, Expr, ExprError, ExprKind, MulOp};
 use crate::rational::Rational;
@@ -167,6 +170,16 @@ fn compile(e: &Expr, vars: &mut Vars) -> Result<Node, CompileError> {
         ExprKind::Var(name) => Node::Input(vars.index(name, e.pos)?),
         ExprKind::Neg(a) => Node::Neg(Box::new(compile(a, vars)?)),
         ExprKind::Sqrt(a) => Node::Sqrt(Box::new(compile(a, vars)?)),
+        ExprKind::Call(name, _) if crate::expr::FUNCTIONS.contains(&name.as_str()) => {
+            return Err(CompileError::Expr(ExprError::BadCall {
+                pos: e.pos,
+                name: name.clone(),
+                why: "a regressed formula is evaluated as written, operation by operation, in \
+                      f64 and exactly; expand the call first (its exact value is what prove \
+                      computes)"
+                    .into(),
+            }))
+        }
         ExprKind::Call(name, _) => {
             return Err(CompileError::Expr(ExprError::UnknownFunction {
                 pos: e.pos,

@@ -45,7 +45,9 @@
 //! (it never wraps). Square roots are refused in random mode (`sqrt(k)` has no canonical image
 //! modulo `p` — either root could be taken, and `k` need not be a square at all — and this
 //! module does not prove a bound for it): run without `--random`, which expands over the exact
-//! square-root field.
+//! square-root field. The functions `diff`, `integrate`, `sum`, `binomial` and `factorial` are
+//! refused likewise: their value at a point needs their expansion, whose size this module does
+//! not bound from the tree.
 //!
 //! A unit circle `c^2 + s^2 = 1` is sampled as `c = (1 - t^2)/(1 + t^2)`, `s = 2t/(1 + t^2)`
 //! with `t` uniform among the residues where `1 + t^2 != 0`. Then
@@ -227,17 +229,29 @@ pub fn size_bound(e: &Expr) -> Result<SizeBound, BoundError> {
                 degree: b.degree.checked_mul(k).ok_or(of)?,
             }
         }
-        ExprKind::Call(name, _) => {
-            return Err(BoundError::Input(format!(
-                "unknown function '{name}': the only function is sqrt"
-            )))
-        }
+        ExprKind::Call(name, _) => return Err(BoundError::Input(unsupported_call(name))),
         ExprKind::Sqrt(_) => {
             return Err(BoundError::Input(
                 "sqrt is not supported by --random (no error bound is proved for square roots modulo p); run without --random for the exact square-root field".into(),
             ))
         }
     })
+}
+
+/// The refusal of a function call in random mode. The functions of the language (`diff`,
+/// `integrate`, `sum`, `binomial`, `factorial`) are exact operations on whole polynomials or
+/// rational functions: evaluating them at a point modulo `p` needs their expansion, and no
+/// degree or size bound of that expansion is derived from the tree here, so they are refused
+/// rather than bounded wrongly.
+fn unsupported_call(name: &str) -> String {
+    if crate::expr::FUNCTIONS.contains(&name) {
+        format!(
+            "{name}(...) is not supported by --random (no error bound is proved for it modulo \
+             p); run without --random, which expands it exactly"
+        )
+    } else {
+        format!("unknown function '{name}'")
+    }
 }
 
 /// Why an evaluation modulo `p` stopped.
@@ -283,11 +297,7 @@ fn eval(e: &Expr, f: &PrimeField, point: &HashMap<String, u64>) -> Result<u64, E
             })?;
             f.pow(eval(b, f, point)?, k)
         }
-        ExprKind::Call(name, _) => {
-            return Err(EvalError::Input(format!(
-                "unknown function '{name}': the only function is sqrt"
-            )))
-        }
+        ExprKind::Call(name, _) => return Err(EvalError::Input(unsupported_call(name))),
         ExprKind::Sqrt(_) => {
             return Err(EvalError::Input(
                 "sqrt is not supported by --random; run without --random".into(),
