@@ -15,11 +15,12 @@
 
 use crate::Error;
 use clap::Args;
-use exactcheck_exact::expr::{parse_expr, Coefficient, Expr};
+use exactcheck_exact::expr::{angles, describe_point, has_trig, parse_expr, Coefficient, Expr, PI};
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
     counter_example, decide_fraction, decide_in, real_zero_free, where_clause, DecideError,
-    Decision, Domain, FractionIdentity, PointField, HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
+    Decision, Domain, FractionIdentity, PointField, RadicalPoint, HOLDS_THRESHOLD_LOG2,
+    MAX_RANDOM_TRIALS,
 };
 use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::{Radical, Rational};
@@ -375,11 +376,16 @@ pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
             !domains.is_empty(),
         );
     }
-    // Radicals need the radical coefficient field; everything else runs over Q.
+    // Radicals (also those of sin and cos at multiples of pi) need the radical coefficient
+    // field; everything else runs over Q.
     let radical = std::iter::once(&args.lhs)
         .chain(&args.rhs)
         .chain(&args.relations)
-        .any(|s| s.contains("sqrt"));
+        .any(|s| s.contains("sqrt"))
+        || std::iter::once(&lhs)
+            .chain(rhs.as_ref())
+            .chain(relations.iter().flat_map(|(a, b)| [a, b]))
+            .any(has_trig);
     if radical {
         prove_over::<Radical>(args, &lhs, rhs.as_ref(), &relations, &domains)
     } else {
@@ -431,6 +437,27 @@ fn prove_over<C: PointField + Display>(
             hypotheses.extend(cleared.conditions);
         }
     }
+    // Every angle `x` of sin, cos, tan: its cosine and sine lie on the unit circle.
+    let angle_list = angles(&vars);
+    let user_relations = rels.len();
+    for a in &angle_list {
+        rels.push(a.relation());
+    }
+    let circle_texts: Vec<String> = angle_list
+        .iter()
+        .map(|a| format!("cos({0})^2 + sin({0})^2 = 1", a.name))
+        .collect();
+    // pi is the constant: an indeterminate while deciding (it is transcendental, so a
+    // polynomial identity in it holds iff it holds with pi indeterminate).
+    let pi = vars.get(PI);
+    // A counter-example fixes pi and the angles' cosines and sines independently of the
+    // variables; it is a real one only where that is sound.
+    let pi_in_relations = pi.is_some_and(|p| rels[..user_relations].iter().any(|r| r.degree_in(p) > 0));
+    let mixed: Vec<&str> = angle_list
+        .iter()
+        .filter(|a| vars.get(&a.name).is_some())
+        .map(|a| a.name.as_str())
+        .collect();
     // A polynomial identity takes the polynomial path; fractions are cleared.
     let fraction = if l.is_polynomial() && r.is_polynomial() && hypotheses.is_empty() {
         None
@@ -439,6 +466,11 @@ fn prove_over<C: PointField + Display>(
     };
     let mut doms: Vec<(Var, Domain)> = Vec::new();
     for (v, d, text) in domains {
+        if v == PI {
+            return Err(Error::Input(format!(
+                "--where {text:?}: pi is a constant, not a variable: it takes no domain"
+            )));
+        }
         let var = vars.get(v).ok_or_else(|| {
             Error::Input(format!(
                 "--where {text:?}: {v} does not occur in the identity or its relations"
@@ -470,13 +502,14 @@ fn prove_over<C: PointField + Display>(
         ),
     };
     let conditions: Vec<&str> = args.relations.iter().map(String::as_str).collect();
-    let modulo = if relations.is_empty() {
+    let modulo = if rels.is_empty() {
         String::new()
     } else {
         let rel_texts: Vec<&str> = conditions
             .iter()
             .copied()
             .filter(|t| !t.contains(['<', '>']))
+            .chain(circle_texts.iter().map(String::as_str))
             .collect();
         format!(" modulo {}", rel_texts.join(", "))
     };
@@ -501,6 +534,7 @@ fn prove_over<C: PointField + Display>(
         // The limits of a Groebner basis of the relations: say which part of the command.
         DecideError::Limit(e) => Error::Input(format!("--where: {e}")),
     })?;
+    let decision = sound_counter_example(decision, pi_in_relations, &mixed);
     let (verdict, code) = match &decision {
         Decision::Proved { .. } => ("proved", ExitCode::SUCCESS),
         Decision::Fails { .. } => ("fails", ExitCode::from(1)),
@@ -519,6 +553,19 @@ fn prove_over<C: PointField + Display>(
     .chain(&rels)
     .chain(&excluded)
     .collect();
+    // The counter-example's values by name, pi left out (it is the constant), each angle's
+    // cosine and sine written as one angle.
+    let shown_point = |point: &RadicalPoint| -> Vec<String> {
+        let named: Vec<(String, String)> = counter_example(point, &statement)
+            .iter()
+            .filter(|(v, _)| Some(*v) != pi)
+            .map(|(v, q)| (name(*v), q.to_string()))
+            .collect();
+        describe_point(&named)
+    };
+    // The angles' circles hold at every point shown as angles; only relations of the user's
+    // are worth the remark.
+    let rels_hold = if user_relations == 0 { "" } else { " (where the relations hold)" };
     let evidence = match &decision {
         Decision::Proved { expanded_terms } if *expanded_terms == 0 => {
             format!("LHS - RHS{cleared} expands to 0{where_nonzero}")
@@ -529,12 +576,23 @@ fn prove_over<C: PointField + Display>(
         Decision::Fails {
             normal_form,
             point,
+            ..
+        } if pi.is_some() => {
+            let p = pi.expect("matched on pi");
+            let at = shown_point(point);
+            let in_pi = abbreviate(in_pi::<C>(&residual, point, p).display(&vars).to_string());
+            let nf = abbreviate(normal_form.display(&vars).to_string());
+            format!(
+                "{}LHS - RHS{cleared} = {in_pi}, a non-zero polynomial in pi, and pi is transcendental, so it is not zero; LHS - RHS{cleared} reduces{modulo} to {nf}{where_nonzero}",
+                if at.is_empty() { String::new() } else { format!("at {}{rels_hold} ", abbreviate(at.join(", "))) },
+            )
+        }
+        Decision::Fails {
+            normal_form,
+            point,
             value,
         } => {
-            let at: Vec<String> = counter_example(point, &statement)
-                .iter()
-                .map(|(v, q)| format!("{} = {q}", name(*v)))
-                .collect();
+            let at = shown_point(point);
             let value = abbreviate(value.to_string());
             let nf = abbreviate(normal_form.display(&vars).to_string());
             if fraction.is_some() {
@@ -542,20 +600,18 @@ fn prove_over<C: PointField + Display>(
                 format!(
                     "at {}{} LHS - RHS = {value}; LHS - RHS{cleared} reduces{modulo} to {nf}, not zero{where_nonzero}",
                     abbreviate(at.join(", ")),
-                    if relations.is_empty() { "" } else { " (where the relations hold)" },
+                    rels_hold,
                 )
             } else if at.is_empty() {
                 // No variable: the identity is between constants, and their difference is the
                 // counter-example (old: "at  LHS - RHS = ...", an empty point).
                 format!(
-                    "LHS - RHS = {value}, a non-zero constant{}, so LHS = RHS + ({nf})",
-                    if relations.is_empty() { "" } else { " (where the relations hold)" },
+                    "LHS - RHS = {value}, a non-zero constant{rels_hold}, so LHS = RHS + ({nf})",
                 )
             } else {
                 format!(
-                    "at {}{} LHS - RHS = {value}; LHS - RHS reduces{modulo} to {nf}, so LHS = RHS + ({nf})",
+                    "at {}{rels_hold} LHS - RHS = {value}; LHS - RHS reduces{modulo} to {nf}, so LHS = RHS + ({nf})",
                     abbreviate(at.join(", ")),
-                    if relations.is_empty() { "" } else { " (where the relations hold)" },
                 )
             }
         }
@@ -570,7 +626,7 @@ fn prove_over<C: PointField + Display>(
     if args.json {
         let mut obj = json!({
             "verdict": verdict,
-            "method": format!("symbolic expansion over {}[{}]{modulo}{within}", if std::any::type_name::<C>().contains("Radical") { "Q(sqrt)" } else { "Q" }, vars.names().join(",")),
+            "method": format!("symbolic expansion over {}[{}]{modulo}{within}{}", if std::any::type_name::<C>().contains("Radical") { "Q(sqrt)" } else { "Q" }, vars.names().join(","), if pi.is_some() { " (pi an indeterminate: it is transcendental)" } else { "" }),
             "evidence": evidence,
             "residual_terms": terms,
         });
@@ -589,10 +645,14 @@ fn prove_over<C: PointField + Display>(
         {
             obj["point"] = counter_example(point, &statement)
                 .iter()
+                .filter(|(v, _)| Some(*v) != pi)
                 .map(|(v, q)| (name(*v), json!(q.to_string())))
                 .collect::<serde_json::Map<_, _>>()
                 .into();
-            obj["value"] = json!(value.to_string());
+            obj["value"] = match pi {
+                Some(p) => json!(in_pi::<C>(&residual, point, p).display(&vars).to_string()),
+                None => json!(value.to_string()),
+            };
             obj["normal_form"] = json!(normal_form.display(&vars).to_string());
         }
         crate::output::println(&obj)?;
@@ -600,4 +660,46 @@ fn prove_over<C: PointField + Display>(
         crate::output::println(format_args!("{verdict}: {evidence}"))?;
     }
     Ok(code)
+}
+
+/// The residual at a counter-example with every variable but pi fixed: a polynomial in pi, not
+/// zero (it is not zero at the value the search gave pi), so not zero at pi, which is
+/// transcendental over the algebraic numbers of the point.
+fn in_pi<C: PointField>(residual: &Poly<C>, point: &RadicalPoint, pi: Var) -> Poly<C::Value> {
+    let mut q = residual.map_coeffs(C::lift);
+    for (v, x) in point {
+        if *v != pi {
+            q = q.substitute(*v, &Poly::constant(C::lift_radical(x)));
+        }
+    }
+    q
+}
+
+/// A [`Decision::Fails`] whose point is not a real counter-example becomes
+/// [`Decision::Undecided`]: when a relation involves pi (the point satisfies it with pi at a
+/// rational value, not at pi), or when a variable is also an angle (the point gives the
+/// variable and the cosine and sine of the angle independent values).
+fn sound_counter_example<C: PointField>(
+    decision: Decision<C>,
+    pi_in_relations: bool,
+    mixed: &[&str],
+) -> Decision<C> {
+    let why = if pi_in_relations {
+        "a relation involves pi, and the counter-example search satisfies it with pi a rational value, not at pi".to_string()
+    } else if !mixed.is_empty() {
+        format!(
+            "{} {} both as a number and as an angle of sin, cos or tan, and the counter-example search gives a number and the angle's cosine and sine independent values",
+            mixed.join(", "),
+            if mixed.len() == 1 { "occurs" } else { "occur" }
+        )
+    } else {
+        return decision;
+    };
+    match decision {
+        Decision::Fails { normal_form, .. } => Decision::Undecided {
+            normal_form,
+            searched: format!("a point was found, but it is not a counter-example: {why}"),
+        },
+        other => other,
+    }
 }

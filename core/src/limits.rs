@@ -192,6 +192,9 @@ limits! {
     /// Order `k` of a derivative `diff(E, t, k)` (every order squares a denominator before its
     /// common factor cancels).
     DIFF_ORDER = ("diff-order", "order of a derivative", "", 100);
+    /// Absolute value of the integer multiple `k` of an angle variable in `sin`, `cos`, `tan`
+    /// (`sin(k x)` expands to a Chebyshev polynomial of degree `k` with `k`-bit coefficients).
+    ANGLE_MULTIPLE = ("angle-multiple", "multiple of an angle variable", "", 1_000);
     /// S-polynomial reductions of one Groebner basis computation.
     GROEBNER_STEPS = ("groebner-steps", "Groebner basis steps", "", 150);
     /// Elements of one Groebner basis.

@@ -90,7 +90,10 @@ impl Expr {
                     .ok_or(ExprError::NonConstantSqrt { pos: arg.pos })?;
                 sqrt_of(c, self.pos, arg).map(Poly::constant)
             }
-            ExprKind::Call(_, args) => super::fraction::diff_poly(self, args, vars),
+            ExprKind::Call(name, args) => match super::trig::Trig::from_name(name) {
+                Some(which) => super::trig::trig_poly(self, which, args, vars),
+                None => super::fraction::diff_poly(self, args, vars),
+            },
         }
     }
 
@@ -124,6 +127,9 @@ impl Expr {
                 name: name.clone(),
                 hint: if name == "i" {
                     " (the imaginary unit i exists only for complex numbers)"
+                } else if name == PI {
+                    " (pi is transcendental, so it has no exact value here; sin, cos and tan of \
+                     rational multiples of pi do)"
                 } else {
                     ""
                 },
@@ -162,6 +168,10 @@ impl Expr {
                 constant_power(b, k, self.pos, exp.pos)
             }
             ExprKind::Sqrt(arg) => sqrt_of(arg.eval_constant::<C>()?, self.pos, arg),
+            ExprKind::Call(name, args) if super::trig::Trig::from_name(name).is_some() => {
+                let which = super::trig::Trig::from_name(name).expect("matched above");
+                super::trig::trig_value(self, which, args)
+            }
             // The derivative of a constant is 0.
             ExprKind::Call(_, args) => {
                 let (e, _, k) = super::fraction::diff_arguments(self, args)?;

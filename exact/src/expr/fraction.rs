@@ -4,7 +4,8 @@
 use super::eval::{check_constant, exponent_value, size_error};
 use super::*;
 use crate::poly::{Poly, Vars};
-use crate::ratfun::{poly_derivative, RatFun};
+use super::trig::{total_derivative, total_derivative_ratfun, Trig};
+use crate::ratfun::RatFun;
 use exactcheck_core::Field;
 use num_traits::ToPrimitive;
 
@@ -25,7 +26,8 @@ impl Expr {
                 b.has_fractions() || (b.has_variable() && exponent_value(e).is_ok_and(|k| k < 0))
             }
             ExprKind::Call(name, args) => {
-                name == "diff" && args.first().is_some_and(Expr::has_fractions)
+                (name == "diff" && args.first().is_some_and(Expr::has_fractions))
+                    || (name == "tan" && args.iter().any(Expr::has_variable))
             }
         }
     }
@@ -106,18 +108,17 @@ impl Expr {
                     .map_err(size)?
                     .ok_or_else(|| zero_divisor(base))?
             }
+            ExprKind::Call(name, args) if Trig::from_name(name).is_some() => {
+                let which = Trig::from_name(name).expect("matched above");
+                super::trig::trig_ratfun(self, which, args, vars)?
+            }
             ExprKind::Call(_, args) => {
                 let (e, t, k) = diff_arguments(self, args)?;
                 let mut f = e.to_ratfun::<C>(vars)?;
-                match vars.get(t) {
-                    Some(v) => {
-                        for _ in 0..k {
-                            f = f.derivative(v).map_err(size)?;
-                        }
-                    }
-                    // `t` does not occur in `e` (all of whose variables are in the table now).
-                    None if k > 0 => f = f.mul(&RatFun::from_poly(Poly::zero())).map_err(size)?,
-                    None => {}
+                // In `t` and, by the chain rule, in the cosine and sine of the angle `t`; zero
+                // when `t` occurs in neither (all of `e`'s variables are in the table now).
+                for _ in 0..k {
+                    f = total_derivative_ratfun(&f, vars, t).map_err(size)?;
                 }
                 f
             }
@@ -187,6 +188,12 @@ pub(super) fn diff_arguments<'a>(
             ),
         ));
     };
+    if t == PI {
+        return Err(bad(
+            args[1].pos,
+            "pi is a constant, not a variable to differentiate in".into(),
+        ));
+    }
     let k = match args.get(2) {
         None => 1,
         Some(order) => {
@@ -224,14 +231,8 @@ pub(super) fn diff_poly<C: Coefficient>(
 ) -> Result<Poly<C>, ExprError> {
     let (e, t, k) = diff_arguments(call, args)?;
     let mut p = e.to_poly::<C>(vars)?;
-    match vars.get(t) {
-        Some(v) => {
-            for _ in 0..k {
-                p = poly_derivative(&p, v);
-            }
-        }
-        None if k > 0 => p = Poly::zero(),
-        None => {}
+    for _ in 0..k {
+        p = total_derivative(&p, vars, t);
     }
     Ok(p)
 }

@@ -108,16 +108,32 @@ mod parse;
 mod print;
 #[cfg(test)]
 mod tests;
+mod trig;
 mod w1;
 
 pub use latex::{equation_to_latex, to_latex, Notation};
 pub use mathml::{equation_to_mathml, to_mathml};
 pub use parse::{parse_expr, parse_expr_with_calls, parse_poly};
+pub use trig::{
+    angle_of, angles, cos_name, describe_point, has_trig, sin_name, trig_constant, Angle, Trig,
+    TRIG_DENOMINATORS,
+};
 pub use w1::w1_text;
 
 /// The functions written `name(arg, ...)` in every grammar (besides `sqrt`): `diff(E, t)` and
-/// `diff(E, t, k)`, the exact derivative of `E` in the variable `t` (`k` times).
-pub const FUNCTIONS: &[&str] = &["diff"];
+/// `diff(E, t, k)`, the exact derivative of `E` in the variable `t` (`k` times), and the
+/// trigonometric functions [`TRIG_FUNCTIONS`].
+pub const FUNCTIONS: &[&str] = &["diff", "sin", "cos", "tan"];
+
+/// The trigonometric functions (`sin`, `cos`, `tan` of an angle: an integer combination of angle
+/// variables plus a rational multiple of [`PI`]); see [`Trig`].
+pub const TRIG_FUNCTIONS: &[&str] = &["sin", "cos", "tan"];
+
+/// The name of the constant pi. It is never a free variable: in a constant it has no exact
+/// value (it is transcendental) except inside [`TRIG_FUNCTIONS`]; a polynomial conversion keeps
+/// it as an indeterminate of that name, which a caller deciding an identity treats as the
+/// transcendental constant (an identity in pi holds iff it holds with pi indeterminate).
+pub const PI: &str = "pi";
 
 // ------------------------------------------------------------------------------ coefficients
 
@@ -378,8 +394,9 @@ pub enum ExprError {
     },
     /// A name followed by `(` that is not a known function.
     #[error(
-        "unknown function '{name}' at {pos}: the functions are sqrt and diff (write \
-         '{name}*(...)' for a product)"
+        "unknown function '{name}' at {pos}: the functions are sqrt, {list} (write \
+         '{name}*(...)' for a product)",
+        list = FUNCTIONS.join(", ")
     )]
     UnknownFunction {
         /// Byte position of the name.
