@@ -665,7 +665,7 @@ fn prove_over<C: PointField + Display>(
 /// The residual at a counter-example with every variable but pi fixed: a polynomial in pi, not
 /// zero (it is not zero at the value the search gave pi), so not zero at pi, which is
 /// transcendental over the algebraic numbers of the point.
-fn in_pi<C: PointField>(residual: &Poly<C>, point: &RadicalPoint, pi: Var) -> Poly<C::Value> {
+pub fn in_pi<C: PointField>(residual: &Poly<C>, point: &RadicalPoint, pi: Var) -> Poly<C::Value> {
     let mut q = residual.map_coeffs(C::lift);
     for (v, x) in point {
         if *v != pi {
@@ -679,7 +679,7 @@ fn in_pi<C: PointField>(residual: &Poly<C>, point: &RadicalPoint, pi: Var) -> Po
 /// [`Decision::Undecided`]: when a relation involves pi (the point satisfies it with pi at a
 /// rational value, not at pi), or when a variable is also an angle (the point gives the
 /// variable and the cosine and sine of the angle independent values).
-fn sound_counter_example<C: PointField>(
+pub fn sound_counter_example<C: PointField>(
     decision: Decision<C>,
     pi_in_relations: bool,
     mixed: &[&str],

@@ -183,7 +183,7 @@ pub fn build(c: &RawClaim, defs: &RefCell<Defs>) -> Built<Check> {
                         .chain(&rhs)
                         .chain(corrected.iter().flatten())
                         .chain(conditions.relations.iter().flat_map(|(a, b)| [a, b]))
-                        .any(defs::has_sqrt),
+                        .any(|e| defs::has_sqrt(e) || exactcheck_exact::expr::has_trig(e)),
                     Some(o) => {
                         return Err(("field", format!("unknown field {o:?} (rational, radical)")))
                     }
@@ -471,6 +471,21 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<Outcome, Fault> {
             hypotheses.extend(cleared.conditions);
         }
     }
+    // Every angle `x` of sin, cos, tan: its cosine and sine lie on the unit circle. pi is the
+    // transcendental constant: an indeterminate while deciding.
+    let angle_list = exactcheck_exact::expr::angles(&vars);
+    let user_relations = rels.len();
+    for a in &angle_list {
+        rels.push(a.relation());
+    }
+    let pi = vars.get(exactcheck_exact::expr::PI);
+    let pi_in_relations =
+        pi.is_some_and(|p| rels[..user_relations].iter().any(|r| r.degree_in(p) > 0));
+    let mixed: Vec<&str> = angle_list
+        .iter()
+        .filter(|a| vars.get(&a.name).is_some())
+        .map(|a| a.name.as_str())
+        .collect();
     // `l = r`: a polynomial residual, or (with a fraction anywhere) the cleared identity.
     let pair =
         |l: &RatFun<C>, r: &RatFun<C>| -> Result<(Poly<C>, Option<FractionIdentity<C>>), Fault> {
@@ -510,10 +525,14 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<Outcome, Fault> {
         })?;
         doms.push((var, d.clone()));
     }
-    let modulo = if conditions.relation_texts.is_empty() {
+    let modulo = if rels.is_empty() {
         String::new()
     } else {
-        format!(" modulo {}", conditions.relation_texts.join(", "))
+        let circles = angle_list
+            .iter()
+            .map(|a| format!("cos({0})^2 + sin({0})^2 = 1", a.name));
+        let texts: Vec<String> = conditions.relation_texts.iter().cloned().chain(circles).collect();
+        format!(" modulo {}", texts.join(", "))
     };
     let within = if conditions.domains.is_empty() {
         String::new()
@@ -539,6 +558,7 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<Outcome, Fault> {
             None => decide_in(p, &rels, &doms, vars.len()),
             Some(f) => decide_fraction(f, &rels, &hypotheses, &doms, vars.len()),
         }
+        .map(|d| crate::prove_cmd::sound_counter_example(d, pi_in_relations, &mixed))
         .map_err(|e| {
             Fault::Input(
                 "where",
@@ -610,21 +630,34 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<Outcome, Fault> {
                     .chain(&rels)
                     .chain(&excluded)
                     .collect();
+                // pi is the constant: the value is a polynomial in it, the point leaves it out.
+                let (value, note) = match pi {
+                    Some(p) => (
+                        crate::prove_cmd::in_pi::<C>(res, &point, p)
+                            .display(&vars)
+                            .to_string(),
+                        ", a non-zero polynomial in pi, and pi is transcendental, so it is not zero",
+                    ),
+                    None => (value.to_string(), ""),
+                };
                 let point: Vec<(String, Radical)> = counter_example(&point, &statement)
                     .into_iter()
+                    .filter(|(v, _)| Some(*v) != pi)
                     .map(|(v, q)| (name(v), q))
                     .collect();
-                let at: Vec<String> = point.iter().map(|(v, q)| format!("{v} = {q}")).collect();
+                let named: Vec<(String, String)> =
+                    point.iter().map(|(v, q)| (v.clone(), q.to_string())).collect();
+                let at = exactcheck_exact::expr::describe_point(&named);
                 let nf = normal_form.display(&vars).to_string();
                 let mut evidence = format!(
-                    "{}{}{} LHS - RHS = {value}; LHS - RHS{} reduces{modulo} to {nf}{}",
+                    "{}{}{} LHS - RHS = {value}{note}; LHS - RHS{} reduces{modulo} to {nf}{}",
                     coordinate(k),
                     if at.is_empty() {
                         "everywhere".to_string()
                     } else {
                         format!("at {}", at.join(", "))
                     },
-                    if rels.is_empty() { "" } else { " (where the relations hold)" },
+                    if user_relations == 0 { "" } else { " (where the relations hold)" },
                     cleared(k),
                     where_nonzero,
                 );
