@@ -338,7 +338,7 @@ pub(super) fn linear_angle(call: &Expr, name: &str, args: &[Expr]) -> Result<Lin
                 limits::ANGLE_MULTIPLE
                     .check(k.unsigned_abs())
                     .map_err(|_| limit(k.unsigned_abs().to_string()))?;
-                terms.push((var.to_string(), k));
+                terms.push((*v, var.to_string(), k));
             }
             _ => {
                 return Err(bad(
@@ -348,7 +348,13 @@ pub(super) fn linear_angle(call: &Expr, name: &str, args: &[Expr]) -> Result<Lin
             }
         }
     }
-    Ok(LinearAngle { terms, pi })
+    // In order of appearance (the scratch table's order), so angles enter the caller's table
+    // as they are written.
+    terms.sort_by_key(|t| t.0);
+    Ok(LinearAngle {
+        terms: terms.into_iter().map(|(_, x, k)| (x, k)).collect(),
+        pi,
+    })
 }
 
 // ------------------------------------------------------------------------------ expansion
@@ -565,6 +571,241 @@ pub fn has_trig(e: &Expr) -> bool {
         ExprKind::Product(fs) => fs.iter().any(|(_, f)| has_trig(f)),
         ExprKind::Call(name, args) => {
             Trig::from_name(name).is_some() || args.iter().any(has_trig)
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::expr::parse_expr;
+    use crate::prove::{decide, Decision};
+    use crate::Radical;
+    use proptest::prelude::*;
+
+    fn radical_poly(text: &str, vars: &mut Vars) -> Poly<Radical> {
+        parse_expr(text).unwrap().to_poly(vars).unwrap()
+    }
+
+    /// Decides `lhs = rhs` with the circles of the angles.
+    fn decide_trig(lhs: &str, rhs: &str) -> Decision<Radical> {
+        let mut vars = Vars::new();
+        let l: RatFun<Radical> = parse_expr(lhs).unwrap().to_ratfun(&mut vars).unwrap();
+        let r: RatFun<Radical> = parse_expr(rhs).unwrap().to_ratfun(&mut vars).unwrap();
+        let res = l
+            .numerator()
+            .try_mul(r.denominator())
+            .unwrap()
+            .sub_ref(&r.numerator().try_mul(l.denominator()).unwrap());
+        let rels: Vec<Poly<Radical>> = angles(&vars).iter().map(Angle::relation).collect();
+        decide(&res, &rels, vars.len()).unwrap()
+    }
+
+    fn proved(lhs: &str, rhs: &str) -> bool {
+        matches!(decide_trig(lhs, rhs), Decision::Proved { .. })
+    }
+
+    #[test]
+    fn constants_agree_with_libm() {
+        // An independent check of the table: every twelfth of pi against the floating-point
+        // sine and cosine.
+        for n in -30i64..30 {
+            let r = Rational::new(n, 12).unwrap();
+            let x = n as f64 * std::f64::consts::PI / 12.0;
+            let c: Radical = trig_constant(&r, Trig::Cos).unwrap();
+            let s: Radical = trig_constant(&r, Trig::Sin).unwrap();
+            assert!((c.to_f64() - x.cos()).abs() < 1e-12, "cos({n} pi/12)");
+            assert!((s.to_f64() - x.sin()).abs() < 1e-12, "sin({n} pi/12)");
+            assert!((c.square() + s.square()).is_one());
+            match trig_constant::<Radical>(&r, Trig::Tan) {
+                Ok(t) => assert!((t.to_f64() - x.tan()).abs() < 1e-9, "tan({n} pi/12)"),
+                Err(why) => {
+                    assert!(c.is_zero() && why.contains("undefined"), "{why}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn constants_refused_outside_the_field() {
+        let e = trig_constant::<Radical>(&Rational::new(2, 5).unwrap(), Trig::Sin).unwrap_err();
+        assert!(e.contains("q = 5"), "{e}");
+        let e = trig_constant::<Rational>(&Rational::new(1, 4).unwrap(), Trig::Cos).unwrap_err();
+        assert!(e.contains("sqrt(2)"), "{e}");
+        let half: Rational = trig_constant(&Rational::new(1, 6).unwrap(), Trig::Sin).unwrap();
+        assert_eq!(half, Rational::new(1, 2).unwrap());
+    }
+
+    #[test]
+    fn chebyshev_polynomials() {
+        let (t, u) = chebyshev(3);
+        let ints = |v: &[i64]| v.iter().map(|&k| BigInt::from(k)).collect::<Vec<_>>();
+        assert_eq!(t, ints(&[0, -3, 0, 4]));
+        assert_eq!(u, ints(&[-1, 0, 4]));
+        let (t, u) = chebyshev(1);
+        assert_eq!((t, u), (ints(&[0, 1]), ints(&[1])));
+    }
+
+    #[test]
+    fn identities_proved_and_false_ones_rejected() {
+        assert!(proved("sin(x)^2 + cos(x)^2", "1"));
+        assert!(proved("sin(3x)", "3 sin(x) - 4 sin(x)^3"));
+        assert!(proved("cos(x + y)", "cos(x) cos(y) - sin(x) sin(y)"));
+        assert!(proved("sin(x - y)", "sin(x) cos(y) - cos(x) sin(y)"));
+        assert!(proved("cos(-5x)", "cos(5x)"));
+        assert!(proved("sin(x + pi)", "-sin(x)"));
+        assert!(proved("cos(x + pi/2)", "-sin(x)"));
+        assert!(proved("sin(x + pi/4)", "sqrt(2)/2 (sin(x) + cos(x))"));
+        assert!(proved("tan(x + pi/4)", "(1 + tan(x))/(1 - tan(x))"));
+        assert!(proved("tan(2x)", "2 tan(x)/(1 - tan(x)^2)"));
+        assert!(proved("cos(pi/12)", "(sqrt(6) + sqrt(2))/4"));
+        // Every path has a false identity it rejects: the multiple angle, the sum, the
+        // constant, the fraction.
+        for (l, r) in [
+            ("sin(3x)", "3 sin(x) - 3 sin(x)^3"),
+            ("cos(x + y)", "cos(x) cos(y) + sin(x) sin(y)"),
+            ("sin(x + pi/3)", "sin(x)/2 + cos(x)/2"),
+            ("tan(2x)", "2 tan(x)/(1 + tan(x)^2)"),
+            ("cos(2x)", "1"),
+        ] {
+            match decide_trig(l, r) {
+                Decision::Fails { point, value, .. } => {
+                    assert!(!value.is_zero());
+                    assert!(!point.is_empty());
+                }
+                other => panic!("{l} = {r}: {other:?}"),
+            }
+        }
+        assert!(matches!(
+            decide_trig("cos(pi/3)", "sqrt(3)/2"),
+            Decision::Fails { .. }
+        ));
+    }
+
+    #[test]
+    fn constant_values_and_errors() {
+        let v = |t: &str| parse_expr(t).unwrap().eval_constant::<Radical>();
+        assert_eq!(v("cos(pi/4)").unwrap(), v("sqrt(2)/2").unwrap());
+        assert_eq!(v("tan(pi/12)").unwrap(), v("2 - sqrt(3)").unwrap());
+        assert_eq!(v("sin(-7pi/6)").unwrap(), v("1/2").unwrap());
+        assert_eq!(v("cos(2*pi/3/2)").unwrap(), v("1/2").unwrap());
+        let err = |t: &str| v(t).unwrap_err().to_string();
+        assert!(err("tan(pi/2)").contains("undefined"), "{}", err("tan(pi/2)"));
+        assert!(err("sin(x)").contains("'x'"), "{}", err("sin(x)"));
+        assert!(err("sin(1)").contains("not a rational multiple of pi"));
+        assert!(err("cos(pi/5)").contains("not supported"));
+        assert!(err("pi").contains("transcendental"), "{}", err("pi"));
+        let mut vars = Vars::new();
+        let conv = |t: &str, vars: &mut Vars| {
+            parse_expr(t)
+                .unwrap()
+                .to_poly::<Radical>(vars)
+                .unwrap_err()
+                .to_string()
+        };
+        assert!(conv("sin(x^2)", &mut vars).contains("not linear"));
+        assert!(conv("sin(x/2)", &mut vars).contains("not an integer"));
+        assert!(conv("sin(x y)", &mut vars).contains("not linear"));
+        assert!(conv("sin(sin(x))", &mut vars).contains("contains sin or cos"));
+        assert!(conv("sin(x, y)", &mut vars).contains("one argument"));
+        assert!(conv("sin(100000 x)", &mut vars).contains("angle-multiple"));
+        assert!(conv("tan(x)", &mut vars).contains("non-constant"));
+        assert!(conv("diff(x, pi)", &mut vars).contains("pi is a constant"));
+    }
+
+    #[test]
+    fn derivatives_by_the_chain_rule() {
+        assert!(proved("diff(sin(x), x)", "cos(x)"));
+        assert!(proved("diff(cos(3x), x)", "-3 sin(3x)"));
+        assert!(proved("diff(x sin(x), x)", "sin(x) + x cos(x)"));
+        assert!(proved("diff(tan(x), x)", "1/cos(x)^2"));
+        assert!(proved("diff(sin(x), x, 4)", "sin(x)"));
+        assert!(proved("diff(sin(y), x)", "0"));
+        assert!(!proved("diff(sin(2x), x)", "cos(2x)"));
+    }
+
+    #[test]
+    fn angles_of_a_table_and_points() {
+        let mut vars = Vars::new();
+        radical_poly("sin(2a + b) + x", &mut vars);
+        let names: Vec<String> = angles(&vars).into_iter().map(|a| a.name).collect();
+        assert_eq!(names, ["a", "b"]);
+        let point = [
+            ("cos(a)".to_string(), "3/5".to_string()),
+            ("x".to_string(), "2".to_string()),
+            ("sin(a)".to_string(), "4/5".to_string()),
+        ];
+        assert_eq!(
+            describe_point(&point),
+            ["a = angle with cos a = 3/5, sin a = 4/5", "x = 2"]
+        );
+    }
+
+    /// `(cos, sin)` of `k` times the angle at the circle point of `u`, by repeated complex
+    /// multiplication of the rational point (independent of the Chebyshev expansion).
+    fn power_of_point(u: &Rational, k: i64) -> (Rational, Rational) {
+        let den = (Rational::ONE + u.square()).inv().unwrap();
+        let c = (Rational::ONE - u.square()) * &den;
+        let s = u.scale_i64(2) * &den;
+        let (mut pc, mut ps) = (Rational::ONE, Rational::ZERO);
+        for _ in 0..k.unsigned_abs() {
+            (pc, ps) = (&pc * &c - &ps * &s, &pc * &s + &ps * &c);
+        }
+        if k < 0 {
+            ps = -ps;
+        }
+        (pc, ps)
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+        /// `sin` and `cos` of `a x + b y + (n/12) pi`, expanded, agree with the angle evaluated
+        /// exactly at rational points of the two circles.
+        #[test]
+        fn expansion_matches_evaluation_at_circle_points(
+            a in -12i64..=12, b in -12i64..=12, n in -24i64..=24,
+            un in -9i64..=9, ud in 1i64..=5, vn in -9i64..=9, vd in 1i64..=5,
+        ) {
+            let text = format!("{a}*x + {b}*y + {n}*pi/12");
+            let mut vars = Vars::new();
+            let cp = radical_poly(&format!("cos({text})"), &mut vars);
+            let sp = radical_poly(&format!("sin({text})"), &mut vars);
+            let (u, v) = (Rational::new(un, ud).unwrap(), Rational::new(vn, vd).unwrap());
+            let (xc, xs) = power_of_point(&u, 1);
+            let (yc, ys) = power_of_point(&v, 1);
+            let mut point = vec![Radical::zero(); vars.len()];
+            for (name, val) in [("cos(x)", &xc), ("sin(x)", &xs), ("cos(y)", &yc), ("sin(y)", &ys)] {
+                if let Some(i) = vars.get(name) {
+                    point[i as usize] = Radical::from(val.clone());
+                }
+            }
+            let got_c = cp.eval(&point, Radical::clone);
+            let got_s = sp.eval(&point, Radical::clone);
+            // cos and sin of the whole angle: (a x) (b y) (n pi/12) as complex products.
+            let (ac, as_) = power_of_point(&u, a);
+            let (bc, bs) = power_of_point(&v, b);
+            let (c1, s1) = (&ac * &bc - &as_ * &bs, &ac * &bs + &as_ * &bc);
+            let r = Rational::new(n, 12).unwrap();
+            let k0: Radical = trig_constant(&r, Trig::Cos).unwrap();
+            let s0: Radical = trig_constant(&r, Trig::Sin).unwrap();
+            let (c1, s1) = (Radical::from(c1), Radical::from(s1));
+            let want_c = &c1 * &k0 - &s1 * &s0;
+            let want_s = &s1 * &k0 + &c1 * &s0;
+            prop_assert_eq!(got_c, want_c);
+            prop_assert_eq!(got_s, want_s);
+        }
+
+        /// The false identity `sin(a x) = a sin(x)` (for `|a| >= 2`) is rejected with a
+        /// counter-example, the true `sin(a x)^2 + cos(a x)^2 = 1` proved.
+        #[test]
+        fn multiple_angles_decided(a in 2i64..=9) {
+            let identity = format!("sin({a} x)^2 + cos({a} x)^2");
+            prop_assert!(proved(&identity, "1"));
+            let is_fails = matches!(
+                decide_trig(&format!("sin({a} x)"), &format!("{a} sin(x)")),
+                Decision::Fails { .. }
+            );
+            prop_assert!(is_fails);
         }
     }
 }
