@@ -51,8 +51,10 @@ pub enum Command {
     /// vanish); `fails` with an exact counter-example and what the sides differ by; or
     /// `undecided` when neither is found. Expressions: numbers, variables, + - * / ^,
     /// parentheses, and the functions sqrt(c) of a constant, diff(E, t) and diff(E, t, k) (the
-    /// exact derivative in the variable t, k times). `--random K`: `holds`/`fails`/`undecided`
-    /// with a proved error bound.
+    /// exact derivative in the variable t, k times), sin, cos and tan of angles (integer
+    /// combinations of angle variables plus rational multiples of the constant pi, decided
+    /// modulo cos(x)^2 + sin(x)^2 = 1). `--random K`: `holds`/`fails`/`undecided` with a proved
+    /// error bound.
     #[command(after_help = PROVE_EXAMPLES)]
     Prove(crate::prove_cmd::ProveArgs),
     /// Solve one problem given in JSON (a file, or `-` / nothing for standard input) and print
@@ -120,6 +122,8 @@ const PROVE_EXAMPLES: &str = "Examples:
   exactcheck prove 'x^2 + 1' '2 x' --where 'x >= 0'
   exactcheck prove '((1-t^2)/(1+t^2))^2 + (2*t/(1+t^2))^2' 1
   exactcheck prove 'diff(t^3/(1+t), t)' '(2*t^3+3*t^2)/(1+t)^2'
+  exactcheck prove 'sin(3x)' '3 sin(x) - 4 sin(x)^3'
+  exactcheck prove 'tan(x + pi/4)' '(1 + tan(x))/(1 - tan(x))'
   exactcheck prove '(x+y)^20' '(y+x)^20' --random 20 --seed 7";
 const SOLVE_EXAMPLES: &str = "Examples:
   exactcheck solve tests/solve_golden/cs_example1.json

@@ -452,7 +452,8 @@ fn prove_over<C: PointField + Display>(
     let pi = vars.get(PI);
     // A counter-example fixes pi and the angles' cosines and sines independently of the
     // variables; it is a real one only where that is sound.
-    let pi_in_relations = pi.is_some_and(|p| rels[..user_relations].iter().any(|r| r.degree_in(p) > 0));
+    let pi_in_relations =
+        pi.is_some_and(|p| rels[..user_relations].iter().any(|r| r.degree_in(p) > 0));
     let mixed: Vec<&str> = angle_list
         .iter()
         .filter(|a| vars.get(&a.name).is_some())
@@ -565,7 +566,11 @@ fn prove_over<C: PointField + Display>(
     };
     // The angles' circles hold at every point shown as angles; only relations of the user's
     // are worth the remark.
-    let rels_hold = if user_relations == 0 { "" } else { " (where the relations hold)" };
+    let rels_hold = if user_relations == 0 {
+        ""
+    } else {
+        " (where the relations hold)"
+    };
     let evidence = match &decision {
         Decision::Proved { expanded_terms } if *expanded_terms == 0 => {
             format!("LHS - RHS{cleared} expands to 0{where_nonzero}")

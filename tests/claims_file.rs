@@ -232,7 +232,7 @@ fn bad_files_are_one_line_with_file_line_and_key() {
         (
             "unknown_function.toml",
             4,
-            "claim \"bad.function\": key lhs: unknown function 'sin' at 0",
+            "claim \"bad.function\": key lhs: unknown function 'exp' at 0",
         ),
         (
             "wrong_arity.toml",
@@ -520,4 +520,33 @@ fn twenty_thousand_claims_are_read_in_linear_time() {
         table.contains(&format!("{n} claims, {n} as expected")),
         "{table}"
     );
+}
+
+#[test]
+fn angles_and_pi_as_printed_are_decided() {
+    // The weight cos(theta/2) of a circle arc's rational Bezier form at theta = 90, 120 and 60
+    // degrees (theta a rational multiple of pi), a double-angle identity and its misprint, pi.
+    let out = exactcheck(&["verify", "tests/claims_file/angles.toml", "--json"]);
+    assert_eq!(out.status.code(), Some(0), "{out:?}");
+    let rows: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let rows = rows.as_array().unwrap();
+    let row = |id: &str| {
+        rows.iter()
+            .find(|r| r["id"] == id)
+            .unwrap_or_else(|| panic!("{id} in {rows:?}"))
+    };
+    for r in rows {
+        assert_eq!(r["as_expected"], true, "{r}");
+    }
+    let evidence = |id: &str| row(id)["evidence"].as_str().unwrap().to_string();
+    assert_eq!(row("angles.w90")["verdict"], "holds");
+    assert!(evidence("angles.w90").starts_with("exact value sqrt(2)/2"));
+    assert_eq!(row("angles.w120")["verdict"], "proved");
+    assert_eq!(row("angles.w60")["verdict"], "fails");
+    assert!(evidence("angles.w60").contains("it is 0.8660"));
+    assert_eq!(row("angles.half")["verdict"], "proved");
+    assert_eq!(row("angles.misprint")["verdict"], "fails");
+    assert!(evidence("angles.misprint").starts_with("at t = angle with cos t = "));
+    assert_eq!(row("angles.pi")["verdict"], "fails");
+    assert!(evidence("angles.pi").contains("pi is transcendental"));
 }

@@ -531,7 +531,12 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<Outcome, Fault> {
         let circles = angle_list
             .iter()
             .map(|a| format!("cos({0})^2 + sin({0})^2 = 1", a.name));
-        let texts: Vec<String> = conditions.relation_texts.iter().cloned().chain(circles).collect();
+        let texts: Vec<String> = conditions
+            .relation_texts
+            .iter()
+            .cloned()
+            .chain(circles)
+            .collect();
         format!(" modulo {}", texts.join(", "))
     };
     let within = if conditions.domains.is_empty() {

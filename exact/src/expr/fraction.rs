@@ -2,9 +2,9 @@
 //! `diff`.
 
 use super::eval::{check_constant, exponent_value, size_error};
+use super::trig::{total_derivative, total_derivative_ratfun, Trig};
 use super::*;
 use crate::poly::{Poly, Vars};
-use super::trig::{total_derivative, total_derivative_ratfun, Trig};
 use crate::ratfun::RatFun;
 use exactcheck_core::Field;
 use num_traits::ToPrimitive;

@@ -202,7 +202,9 @@ pub fn trig_constant<C: Coefficient>(r: &Rational, which: Trig) -> Result<C, Str
             r.denom()
         ));
     }
-    let n = (twelfths.numer() % 24i32).to_i64().expect("reduced modulo 24") as i32;
+    let n = (twelfths.numer() % 24i32)
+        .to_i64()
+        .expect("reduced modulo 24") as i32;
     let n = n.rem_euclid(24);
     let cos_at = |n: i32| -> Result<C, String> {
         let n = n.rem_euclid(24);
@@ -234,9 +236,9 @@ pub fn trig_constant<C: Coefficient>(r: &Rational, which: Trig) -> Result<C, Str
         Trig::Sin => cos_at(6 - n),
         Trig::Tan => {
             let c = cos_at(n)?;
-            let inv = c.try_inverse().ok_or_else(|| {
-                format!("tan({shown}) is undefined: cos({shown}) = 0")
-            })?;
+            let inv = c
+                .try_inverse()
+                .ok_or_else(|| format!("tan({shown}) is undefined: cos({shown}) = 0"))?;
             Ok(cos_at(6 - n)?.mul_ref(&inv))
         }
     }
@@ -271,7 +273,11 @@ pub(super) struct LinearAngle {
 }
 
 /// The argument of the call `call` (`name(arg)`) as an angle, or why it is not one.
-pub(super) fn linear_angle(call: &Expr, name: &str, args: &[Expr]) -> Result<LinearAngle, ExprError> {
+pub(super) fn linear_angle(
+    call: &Expr,
+    name: &str,
+    args: &[Expr],
+) -> Result<LinearAngle, ExprError> {
     let bad = |pos: usize, why: String| ExprError::BadCall {
         pos,
         name: name.to_string(),
@@ -569,9 +575,7 @@ pub fn has_trig(e: &Expr) -> bool {
         ExprKind::Pow(a, b) => has_trig(a) || has_trig(b),
         ExprKind::Sum(ts) => ts.iter().any(|(_, t)| has_trig(t)),
         ExprKind::Product(fs) => fs.iter().any(|(_, f)| has_trig(f)),
-        ExprKind::Call(name, args) => {
-            Trig::from_name(name).is_some() || args.iter().any(has_trig)
-        }
+        ExprKind::Call(name, args) => Trig::from_name(name).is_some() || args.iter().any(has_trig),
     }
 }
 
@@ -690,7 +694,11 @@ mod tests {
         assert_eq!(v("sin(-7pi/6)").unwrap(), v("1/2").unwrap());
         assert_eq!(v("cos(2*pi/3/2)").unwrap(), v("1/2").unwrap());
         let err = |t: &str| v(t).unwrap_err().to_string();
-        assert!(err("tan(pi/2)").contains("undefined"), "{}", err("tan(pi/2)"));
+        assert!(
+            err("tan(pi/2)").contains("undefined"),
+            "{}",
+            err("tan(pi/2)")
+        );
         assert!(err("sin(x)").contains("'x'"), "{}", err("sin(x)"));
         assert!(err("sin(1)").contains("not a rational multiple of pi"));
         assert!(err("cos(pi/5)").contains("not supported"));

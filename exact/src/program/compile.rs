@@ -167,6 +167,15 @@ fn compile(e: &Expr, vars: &mut Vars) -> Result<Node, CompileError> {
         ExprKind::Var(name) => Node::Input(vars.index(name, e.pos)?),
         ExprKind::Neg(a) => Node::Neg(Box::new(compile(a, vars)?)),
         ExprKind::Sqrt(a) => Node::Sqrt(Box::new(compile(a, vars)?)),
+        ExprKind::Call(name, _) if crate::expr::FUNCTIONS.contains(&name.as_str()) => {
+            return Err(CompileError::Expr(ExprError::BadCall {
+                pos: e.pos,
+                name: name.clone(),
+                why: "not supported in a compiled formula, which evaluates numbers, variables, \
+                      + - * / ^ and sqrt"
+                    .into(),
+            }))
+        }
         ExprKind::Call(name, _) => {
             return Err(CompileError::Expr(ExprError::UnknownFunction {
                 pos: e.pos,
