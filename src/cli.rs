@@ -53,8 +53,10 @@ pub enum Command {
     /// parentheses, and the functions sqrt(c) of a constant, diff(E, t) and diff(E, t, k) (the
     /// exact derivative in the variable t, k times), integrate(E, t, a, b) (the definite
     /// integral of a polynomial in t), sum(k, a, b, E) (over the integers k from a to b),
-    /// binomial(n, k) and factorial(n) (integer constants). `--random K`:
-    /// `holds`/`fails`/`undecided` with a proved error bound (without these functions).
+    /// binomial(n, k) and factorial(n) (integer constants), sin, cos and tan of angles (integer
+    /// combinations of angle variables plus rational multiples of the constant pi, decided
+    /// modulo cos(x)^2 + sin(x)^2 = 1). `--random K`: `holds`/`fails`/`undecided` with a proved
+    /// error bound (without these functions).
     #[command(after_help = PROVE_EXAMPLES)]
     Prove(crate::prove_cmd::ProveArgs),
     /// Solve one problem given in JSON (a file, or `-` / nothing for standard input) and print
@@ -124,6 +126,8 @@ const PROVE_EXAMPLES: &str = "Examples:
   exactcheck prove 'diff(t^3/(1+t), t)' '(2*t^3+3*t^2)/(1+t)^2'
   exactcheck prove 'sum(i, 0, 3, binomial(3, i) t^i (1-t)^(3-i))' 1
   exactcheck prove 'integrate((1+t)^2 + t^2, t, 0, 1)' 8/3
+  exactcheck prove 'sin(3x)' '3 sin(x) - 4 sin(x)^3'
+  exactcheck prove 'tan(x + pi/4)' '(1 + tan(x))/(1 - tan(x))'
   exactcheck prove '(x+y)^20' '(y+x)^20' --random 20 --seed 7";
 const SOLVE_EXAMPLES: &str = "Examples:
   exactcheck solve tests/solve_golden/cs_example1.json

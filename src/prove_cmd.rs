@@ -23,12 +23,14 @@
 use crate::Error;
 use clap::Args;
 use exactcheck_core::Ring;
-use exactcheck_exact::expr::{first_reserved, library, Coefficient, Expr};
+use exactcheck_exact::expr::{
+    angles, describe_point, first_reserved, has_trig, library, Coefficient, Expr, PI,
+};
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
-    decide_identity, real_zero_free, square_roots, Domain, EngineError, FractionIdentity,
-    IdentitySpec, IdentityVerdict, Part, Phrasing, PointField, SquareRoot, Statement, Voice,
-    HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
+    decide_identity, factored, real_zero_free, square_roots, Domain, EngineError, FractionIdentity,
+    IdentityReport, IdentitySpec, IdentityVerdict, Part, Phrasing, PointField, RadicalPoint,
+    SquareRoot, Statement, Voice, HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
 };
 use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::{Radical, Rational};
@@ -394,11 +396,16 @@ pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
             !domains.is_empty(),
         );
     }
-    // Radicals need the radical coefficient field; everything else runs over Q.
+    // Radicals (also those of sin and cos at multiples of pi) need the radical coefficient
+    // field; everything else runs over Q.
     let radical = std::iter::once(&args.lhs)
         .chain(&args.rhs)
         .chain(&args.relations)
-        .any(|s| s.contains("sqrt"));
+        .any(|s| s.contains("sqrt"))
+        || std::iter::once(&lhs)
+            .chain(rhs.as_ref())
+            .chain(relations.iter().flat_map(|(a, b)| [a, b]))
+            .any(has_trig);
     if radical {
         prove_over::<Radical>(args, &lhs, rhs.as_ref(), &relations, &nonzero, &domains)
     } else {
@@ -471,8 +478,52 @@ fn prove_over<C: PointField + Display>(
             RatFun::from_poly(Poly::zero()),
         ));
     }
+    // Every angle `x` of sin, cos, tan: its cosine and sine lie on the unit circle.
+    let angle_list = angles(&vars);
+    let user_relations = rels.len();
+    for a in &angle_list {
+        rels.push((
+            RatFun::from_poly(a.relation()),
+            RatFun::from_poly(Poly::zero()),
+        ));
+    }
+    let circle_texts: Vec<String> = angle_list
+        .iter()
+        .map(|a| format!("cos({0})^2 + sin({0})^2 = 1", a.name))
+        .collect();
+    // pi is the constant: an indeterminate while deciding (it is transcendental, so a
+    // polynomial identity in it holds iff it holds with pi indeterminate).
+    let pi = vars.get(PI);
+    // A counter-example fixes pi and the angles' cosines and sines independently of the
+    // variables; it is a real one only where that is sound.
+    let pi_in_relations = pi.is_some_and(|p| {
+        rels[..user_relations].iter().any(|(a, b)| {
+            [a, b]
+                .iter()
+                .any(|f| f.numerator().degree_in(p) > 0 || f.denominator().degree_in(p) > 0)
+        })
+    });
+    let mixed: Vec<String> = angle_list
+        .iter()
+        .filter(|a| vars.get(&a.name).is_some())
+        .map(|a| a.name.clone())
+        .collect();
+    // `LHS - RHS` (cleared of denominators where the engine clears them), for the value of a
+    // counter-example as a polynomial in pi.
+    let residual_for_pi = match pi {
+        Some(_) if l.is_polynomial() && r.is_polynomial() => {
+            Some(l.numerator().clone() - r.numerator())
+        }
+        Some(_) => FractionIdentity::new(&l, &r).ok().map(|f| f.residual),
+        None => None,
+    };
     let mut doms: Vec<(Var, Domain)> = Vec::new();
     for (v, d, text) in domains {
+        if v == PI {
+            return Err(Error::Input(format!(
+                "--where {text:?}: pi is a constant, not a variable: it takes no domain"
+            )));
+        }
         let var = vars.get(v).ok_or_else(|| {
             Error::Input(format!(
                 "--where {text:?}: {v} does not occur in the identity or its relations"
@@ -517,6 +568,7 @@ fn prove_over<C: PointField + Display>(
             .iter()
             .filter(|t| !t.contains(['<', '>', '!']))
             .cloned()
+            .chain(circle_texts)
             .collect(),
         domains: domains.iter().map(|(_, _, t)| t.clone()).collect(),
         labels: Vec::new(),
@@ -541,12 +593,70 @@ fn prove_over<C: PointField + Display>(
         IdentityVerdict::Fails { .. } => ("fails", ExitCode::from(1)),
         IdentityVerdict::Undecided { .. } => ("undecided", ExitCode::from(1)),
     };
-    let evidence = phrasing.evidence(&report);
+    let mut report = report;
+    sound_counter_example(&mut report, pi_in_relations, &mixed);
+    // The counter-example's values by name, pi left out (it is the constant), each angle's
+    // cosine and sine written as one angle.
+    let shown_point = |point: &RadicalPoint| -> Vec<String> {
+        let named: Vec<(String, String)> = point
+            .iter()
+            .filter(|(v, _)| Some(*v) != pi)
+            .map(|(v, q)| (spec.vars.name(*v).unwrap_or("?").to_string(), q.to_string()))
+            .collect();
+        describe_point(&named)
+    };
+    let rels_hold = if user_relations == 0 {
+        ""
+    } else {
+        " (where the relations hold)"
+    };
+    let cleared = if report.cleared_any() {
+        " with the denominators cleared"
+    } else {
+        ""
+    };
+    let modulo = phrasing.modulo();
+    let evidence = match (&report.verdict, pi, &residual_for_pi) {
+        (
+            IdentityVerdict::Fails {
+                normal_form, point, ..
+            },
+            Some(p),
+            Some(res),
+        ) => {
+            let at = shown_point(point);
+            let in_pi = in_pi::<C>(res, point, p).display(&spec.vars).to_string();
+            let nf = factored(normal_form, &spec.vars);
+            format!(
+                "{}LHS - RHS{cleared} = {in_pi}, a non-zero polynomial in pi, and pi is transcendental, so it is not zero; LHS - RHS{cleared} reduces{modulo} to {nf}",
+                if at.is_empty() { String::new() } else { format!("at {}{rels_hold} ", at.join(", ")) },
+            )
+        }
+        (
+            IdentityVerdict::Fails {
+                normal_form,
+                point,
+                value,
+                ..
+            },
+            _,
+            _,
+        ) if !angle_list.is_empty() => {
+            let at = shown_point(point).join(", ");
+            let nf = factored(normal_form, &spec.vars);
+            if report.cleared_any() {
+                format!("at {at}{rels_hold} LHS - RHS = {value}; LHS - RHS{cleared} reduces{modulo} to {nf}, not zero")
+            } else {
+                format!("at {at}{rels_hold} LHS - RHS = {value}; LHS - RHS reduces{modulo} to {nf}, so LHS = RHS + ({nf})")
+            }
+        }
+        _ => phrasing.evidence(&report),
+    };
     if args.json {
         let vars = &spec.vars;
         let mut obj = json!({
             "verdict": verdict,
-            "method": phrasing.method::<C>(),
+            "method": format!("{}{}", phrasing.method::<C>(), if pi.is_some() { " (pi an indeterminate: it is transcendental)" } else { "" }),
             "evidence": evidence,
             "residual_terms": report.residual_terms[0],
         });
@@ -582,6 +692,7 @@ fn prove_over<C: PointField + Display>(
         {
             obj["point"] = point
                 .iter()
+                .filter(|(v, _)| Some(*v) != pi)
                 .map(|(v, q)| {
                     (
                         vars.name(*v)
@@ -592,7 +703,10 @@ fn prove_over<C: PointField + Display>(
                 })
                 .collect::<serde_json::Map<_, _>>()
                 .into();
-            obj["value"] = json!(value.to_string());
+            obj["value"] = match (pi, &residual_for_pi) {
+                (Some(p), Some(res)) => json!(in_pi::<C>(res, point, p).display(vars).to_string()),
+                _ => json!(value.to_string()),
+            };
             obj["normal_form"] = json!(normal_form.display(vars).to_string());
         }
         crate::output::println(&obj)?;
@@ -600,4 +714,51 @@ fn prove_over<C: PointField + Display>(
         crate::output::println(format_args!("{verdict}: {evidence}"))?;
     }
     Ok(code)
+}
+
+/// The residual at a counter-example with every variable but pi fixed: a polynomial in pi, not
+/// zero (it is not zero at the value the search gave pi), so not zero at pi, which is
+/// transcendental over the algebraic numbers of the point.
+pub fn in_pi<C: PointField>(residual: &Poly<C>, point: &RadicalPoint, pi: Var) -> Poly<C::Value> {
+    let mut q = residual.map_coeffs(C::lift);
+    for (v, x) in point {
+        if *v != pi {
+            q = q.substitute(*v, &Poly::constant(C::lift_radical(x)));
+        }
+    }
+    q
+}
+
+/// A failure whose point is not a real counter-example becomes undecided: when a relation
+/// involves pi (the point satisfies it with pi at a rational value, not at pi), or when a
+/// variable is also an angle (the point gives the variable and the cosine and sine of the angle
+/// independent values).
+pub fn sound_counter_example<C: PointField>(
+    report: &mut IdentityReport<C>,
+    pi_in_relations: bool,
+    mixed: &[String],
+) {
+    let why = if pi_in_relations {
+        "a relation involves pi, and the counter-example search satisfies it with pi a rational value, not at pi".to_string()
+    } else if !mixed.is_empty() {
+        format!(
+            "{} {} both as a number and as an angle of sin, cos or tan, and the counter-example search gives a number and the angle's cosine and sine independent values",
+            mixed.join(", "),
+            if mixed.len() == 1 { "occurs" } else { "occur" }
+        )
+    } else {
+        return;
+    };
+    if let IdentityVerdict::Fails {
+        coordinate,
+        normal_form,
+        ..
+    } = &report.verdict
+    {
+        report.verdict = IdentityVerdict::Undecided {
+            coordinate: *coordinate,
+            normal_form: normal_form.clone(),
+            searched: format!("a point was found, but it is not a counter-example: {why}"),
+        };
+    }
 }

@@ -265,7 +265,7 @@ fn bad_files_are_one_line_with_file_line_and_key() {
         (
             "unknown_function.toml",
             4,
-            "claim \"bad.function\": key lhs: unknown function 'sin' at 0",
+            "claim \"bad.function\": key lhs: unknown function 'exp' at 0",
         ),
         (
             "wrong_arity.toml",
@@ -304,9 +304,9 @@ fn bad_files_are_one_line_with_file_line_and_key() {
         ),
         ("json_syntax.json", 4, "claim #1: JSON: expected `,` or `}`"),
         (
-            "pi_variable.toml",
+            "e_variable.toml",
             4,
-            "claim \"area\": key lhs: pi is the constant pi, not a variable",
+            "claim \"growth\": key lhs: e is the constant e (Euler's number), not a variable",
         ),
         (
             "bad_latex.toml",
@@ -669,4 +669,33 @@ fn integrals_sums_and_binomials_as_printed_are_decided() {
     for r in rows {
         assert_eq!(r["verdict"], "proved", "{r}");
     }
+}
+
+#[test]
+fn angles_and_pi_as_printed_are_decided() {
+    // The weight cos(theta/2) of a circle arc's rational Bezier form at theta = 90, 120 and 60
+    // degrees (theta a rational multiple of pi), a double-angle identity and its misprint, pi.
+    let out = exactcheck(&["verify", "tests/claims_file/angles.toml", "--json"]);
+    assert_eq!(out.status.code(), Some(0), "{out:?}");
+    let rows: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let rows = rows.as_array().unwrap();
+    let row = |id: &str| {
+        rows.iter()
+            .find(|r| r["id"] == id)
+            .unwrap_or_else(|| panic!("{id} in {rows:?}"))
+    };
+    for r in rows {
+        assert_eq!(r["as_expected"], true, "{r}");
+    }
+    let evidence = |id: &str| row(id)["evidence"].as_str().unwrap().to_string();
+    assert_eq!(row("angles.w90")["verdict"], "holds");
+    assert!(evidence("angles.w90").starts_with("exact value sqrt(2)/2"));
+    assert_eq!(row("angles.w120")["verdict"], "proved");
+    assert_eq!(row("angles.w60")["verdict"], "fails");
+    assert!(evidence("angles.w60").contains("it is 0.8660"));
+    assert_eq!(row("angles.half")["verdict"], "proved");
+    assert_eq!(row("angles.misprint")["verdict"], "fails");
+    assert!(evidence("angles.misprint").starts_with("at t = angle with cos t = "));
+    assert_eq!(row("angles.pi")["verdict"], "fails");
+    assert!(evidence("angles.pi").contains("pi is transcendental"));
 }

@@ -195,6 +195,9 @@ limits! {
     /// Terms of a `sum(k, a, b, E)`, each an expansion of `E`; the terms of nested sums count
     /// together (an inner sum's terms for every term of the outer one).
     SUM_TERMS = ("sum-terms", "terms of a sum", "", 100_000);
+    /// Absolute value of the integer multiple `k` of an angle variable in `sin`, `cos`, `tan`
+    /// (`sin(k x)` expands to a Chebyshev polynomial of degree `k` with `k`-bit coefficients).
+    ANGLE_MULTIPLE = ("angle-multiple", "multiple of an angle variable", "", 1_000);
     /// S-polynomial reductions of one Groebner basis computation.
     GROEBNER_STEPS = ("groebner-steps", "Groebner basis steps", "", 150);
     /// Elements of one Groebner basis.

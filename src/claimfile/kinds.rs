@@ -225,7 +225,7 @@ pub fn build(c: &RawClaim, defs: &RefCell<Defs>) -> Built<Check> {
                         .chain(&rhs)
                         .chain(corrected.iter().flatten())
                         .chain(conditions.relations.iter().flat_map(|(a, b)| [a, b]))
-                        .any(defs::has_sqrt),
+                        .any(|e| defs::has_sqrt(e) || exactcheck_exact::expr::has_trig(e)),
                     Some(o) => {
                         return Err(("field", format!("unknown field {o:?} (rational, radical)")))
                     }
@@ -598,6 +598,29 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<(Outcome, Option<S
             format!(" (the square roots are defined where {})", c.join(", "))
         }
     };
+    // Every angle `x` of sin, cos, tan: its cosine and sine lie on the unit circle. pi is the
+    // transcendental constant: an indeterminate while deciding.
+    let angle_list = exactcheck_exact::expr::angles(&vars);
+    let user_relations = relations.len();
+    for a in &angle_list {
+        relations.push((
+            RatFun::from_poly(a.relation()),
+            RatFun::from_poly(Poly::zero()),
+        ));
+    }
+    let pi = vars.get(exactcheck_exact::expr::PI);
+    let pi_in_relations = pi.is_some_and(|p| {
+        relations[..user_relations].iter().any(|(a, b)| {
+            [a, b]
+                .iter()
+                .any(|f| f.numerator().degree_in(p) > 0 || f.denominator().degree_in(p) > 0)
+        })
+    });
+    let mixed: Vec<String> = angle_list
+        .iter()
+        .filter(|a| vars.get(&a.name).is_some())
+        .map(|a| a.name.clone())
+        .collect();
     let mut domains: Vec<(Var, Domain)> = Vec::new();
     for (v, d, text) in &conditions.domains {
         let var = vars.get(v).ok_or_else(|| {
@@ -619,7 +642,16 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<(Outcome, Option<S
     let phrasing = Phrasing {
         voice: Voice::ClaimsFile,
         vars: &spec.vars,
-        relations: conditions.relation_texts.clone(),
+        relations: conditions
+            .relation_texts
+            .iter()
+            .cloned()
+            .chain(
+                angle_list
+                    .iter()
+                    .map(|a| format!("cos({0})^2 + sin({0})^2 = 1", a.name)),
+            )
+            .collect(),
         domains: conditions
             .domains
             .iter()
@@ -646,8 +678,70 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<(Outcome, Option<S
         };
         Fault::Input(key, phrasing.error(&e))
     })?;
+    let mut report = report;
+    crate::prove_cmd::sound_counter_example(&mut report, pi_in_relations, &mixed);
     let method = phrasing.method::<C>();
-    let evidence = phrasing.evidence(&report);
+    let evidence = match &report.verdict {
+        IdentityVerdict::Fails {
+            coordinate: k,
+            point,
+            value,
+            normal_form,
+        } if pi.is_some() || !angle_list.is_empty() => {
+            // pi is the constant: the value is a polynomial in it, the point leaves it out; an
+            // angle's cosine and sine are shown as the angle.
+            let (value, note) = match (pi, &spec.coordinates[*k]) {
+                (Some(p), Statement::Sides(l, r)) => {
+                    let res = if l.is_polynomial() && r.is_polynomial() {
+                        l.numerator().clone() - r.numerator()
+                    } else {
+                        FractionIdentity::new(l, r)
+                            .map(|f| f.residual)
+                            .unwrap_or_else(|_| normal_form.clone())
+                    };
+                    (
+                        crate::prove_cmd::in_pi::<C>(&res, point, p)
+                            .display(&spec.vars)
+                            .to_string(),
+                        ", a non-zero polynomial in pi, and pi is transcendental, so it is not zero",
+                    )
+                }
+                _ => (value.to_string(), ""),
+            };
+            let named: Vec<(String, String)> = point
+                .iter()
+                .filter(|(v, _)| Some(*v) != pi)
+                .map(|(v, q)| (spec.vars.name(*v).unwrap_or("?").to_string(), q.to_string()))
+                .collect();
+            let at = exactcheck_exact::expr::describe_point(&named);
+            format!(
+                "{}{}{} LHS - RHS = {value}{note}; LHS - RHS{} reduces{} to {}",
+                if lhs.len() == 1 {
+                    String::new()
+                } else {
+                    format!("coordinate {}: ", k + 1)
+                },
+                if at.is_empty() {
+                    "everywhere".to_string()
+                } else {
+                    format!("at {}", at.join(", "))
+                },
+                if user_relations == 0 {
+                    ""
+                } else {
+                    " (where the relations hold)"
+                },
+                if report.cleared[*k] {
+                    " with the denominators cleared"
+                } else {
+                    ""
+                },
+                phrasing.modulo(),
+                exactcheck_exact::prove::factored(normal_form, &spec.vars),
+            )
+        }
+        _ => phrasing.evidence(&report),
+    };
     let correction_problem = phrasing.correction_problem(&report);
     let (verdict, erratum) = match &report.verdict {
         IdentityVerdict::Proved { .. } => (Verdict::Proved, None),
@@ -659,7 +753,7 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<(Outcome, Option<S
             ..
         } => {
             let mut counter_example = Vec::new();
-            for (v, q) in point {
+            for (v, q) in point.iter().filter(|(v, _)| Some(*v) != pi) {
                 let name = spec
                     .vars
                     .name(*v)

@@ -93,7 +93,10 @@ impl Expr {
             ExprKind::Call(name, args) if super::calculus::CALCULUS.contains(&name.as_str()) => {
                 super::calculus::call_poly(self, name, args, vars)
             }
-            ExprKind::Call(_, args) => super::fraction::diff_poly(self, args, vars),
+            ExprKind::Call(name, args) => match super::trig::Trig::from_name(name) {
+                Some(which) => super::trig::trig_poly(self, which, args, vars),
+                None => super::fraction::diff_poly(self, args, vars),
+            },
         }
     }
 
@@ -127,6 +130,9 @@ impl Expr {
                 name: name.clone(),
                 hint: if name == "i" {
                     " (the imaginary unit i exists only for complex numbers)"
+                } else if name == PI {
+                    " (pi is transcendental, so it has no exact value here; sin, cos and tan of \
+                     rational multiples of pi do)"
                 } else {
                     ""
                 },
@@ -167,6 +173,10 @@ impl Expr {
             ExprKind::Sqrt(arg) => sqrt_of(arg.eval_constant::<C>()?, self.pos, arg),
             ExprKind::Call(name, args) if super::calculus::CALCULUS.contains(&name.as_str()) => {
                 super::calculus::call_constant(self, name, args)
+            }
+            ExprKind::Call(name, args) if super::trig::Trig::from_name(name).is_some() => {
+                let which = super::trig::Trig::from_name(name).expect("matched above");
+                super::trig::trig_value(self, which, args)
             }
             // The derivative of a constant is 0.
             ExprKind::Call(_, args) => {

@@ -2,9 +2,10 @@
 //! `diff`.
 
 use super::eval::{check_constant, exponent_value, size_error};
+use super::trig::{total_derivative, total_derivative_ratfun, Trig};
 use super::*;
 use crate::poly::{Poly, Vars};
-use crate::ratfun::{poly_derivative, RatFun};
+use crate::ratfun::RatFun;
 use exactcheck_core::Field;
 use num_traits::ToPrimitive;
 
@@ -28,6 +29,7 @@ impl Expr {
             ExprKind::Call(name, args) => match name.as_str() {
                 "diff" => args.first().is_some_and(Expr::has_fractions),
                 "integrate" | "sum" => args.iter().any(Expr::has_fractions),
+                "tan" => args.iter().any(Expr::has_variable),
                 _ => false,
             },
         }
@@ -112,18 +114,17 @@ impl Expr {
             ExprKind::Call(name, args) if super::calculus::CALCULUS.contains(&name.as_str()) => {
                 super::calculus::call_ratfun(self, name, args, vars)?
             }
+            ExprKind::Call(name, args) if Trig::from_name(name).is_some() => {
+                let which = Trig::from_name(name).expect("matched above");
+                super::trig::trig_ratfun(self, which, args, vars)?
+            }
             ExprKind::Call(_, args) => {
                 let (e, t, k) = diff_arguments(self, args)?;
                 let mut f = e.to_ratfun::<C>(vars)?;
-                match vars.get(t) {
-                    Some(v) => {
-                        for _ in 0..k {
-                            f = f.derivative(v).map_err(size)?;
-                        }
-                    }
-                    // `t` does not occur in `e` (all of whose variables are in the table now).
-                    None if k > 0 => f = f.mul(&RatFun::from_poly(Poly::zero())).map_err(size)?,
-                    None => {}
+                // In `t` and, by the chain rule, in the cosine and sine of the angle `t`; zero
+                // when `t` occurs in neither (all of `e`'s variables are in the table now).
+                for _ in 0..k {
+                    f = total_derivative_ratfun(&f, vars, t).map_err(size)?;
                 }
                 f
             }
@@ -193,6 +194,12 @@ pub(super) fn diff_arguments<'a>(
             ),
         ));
     };
+    if t == PI {
+        return Err(bad(
+            args[1].pos,
+            "pi is a constant, not a variable to differentiate in".into(),
+        ));
+    }
     let k = match args.get(2) {
         None => 1,
         Some(order) => {
@@ -230,14 +237,8 @@ pub(super) fn diff_poly<C: Coefficient>(
 ) -> Result<Poly<C>, ExprError> {
     let (e, t, k) = diff_arguments(call, args)?;
     let mut p = e.to_poly::<C>(vars)?;
-    match vars.get(t) {
-        Some(v) => {
-            for _ in 0..k {
-                p = poly_derivative(&p, v);
-            }
-        }
-        None if k > 0 => p = Poly::zero(),
-        None => {}
+    for _ in 0..k {
+        p = total_derivative(&p, vars, t);
     }
     Ok(p)
 }

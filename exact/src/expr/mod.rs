@@ -132,6 +132,7 @@ mod print;
 mod roots;
 #[cfg(test)]
 mod tests;
+mod trig;
 mod w1;
 
 pub use latex::{equation_to_latex, to_latex, Notation};
@@ -143,19 +144,25 @@ pub use w1::w1_text;
 /// `diff(E, t, k)`, the exact derivative of `E` in the variable `t` (`k` times);
 /// `integrate(E, t, a, b)`, the definite integral of a polynomial in `t`; `sum(k, a, b, E)`,
 /// the sum of `E` over the integers `k` from `a` to `b`; `binomial(n, k)` and `factorial(n)`
-/// of integer constants.
-pub const FUNCTIONS: &[&str] = &["diff", "integrate", "sum", "binomial", "factorial"];
+/// of integer constants; the trigonometric functions [`TRIG_FUNCTIONS`].
+pub const FUNCTIONS: &[&str] = &[
+    "diff",
+    "integrate",
+    "sum",
+    "binomial",
+    "factorial",
+    "sin",
+    "cos",
+    "tan",
+];
 
 /// Whether `name` is a constant of mathematics that a formula may never use as a free variable
-/// (`pi`, `e`, `i`): the one-line reason, or `None` for any other name. `prove` and claims files
-/// refuse such a variable rather than treat `2*pi*r` as a polynomial in a variable `pi`; a name
-/// that the expression language itself gives a value never reaches this check (it is not a
-/// variable of the tree), so giving `pi` its meaning there lifts the refusal for it.
+/// (`e`, `i`): the one-line reason, or `None` for any other name. `prove` and claims files
+/// refuse such a variable rather than treat `e*r` as a polynomial in a variable `e`. `pi` is not
+/// refused here: the expression language gives it its meaning ([`PI`]), and the callers decide
+/// identities in it as the transcendental constant.
 pub fn reserved_constant(name: &str) -> Option<&'static str> {
     match name {
-        "pi" => Some(
-            "pi is the constant pi, not a variable; exact formulas cannot use it yet (name a variable differently, e.g. p)",
-        ),
         "e" => Some(
             "e is the constant e (Euler's number), not a variable; name the variable differently (e.g. e1)",
         ),
@@ -174,6 +181,20 @@ pub fn first_reserved<'a>(exprs: impl IntoIterator<Item = &'a Expr>) -> Option<&
     }
     names.iter().find_map(|n| reserved_constant(n))
 }
+pub use trig::{
+    angle_of, angles, cos_name, describe_point, has_trig, sin_name, trig_constant, Angle, Trig,
+    TRIG_DENOMINATORS,
+};
+
+/// The trigonometric functions (`sin`, `cos`, `tan` of an angle: an integer combination of angle
+/// variables plus a rational multiple of [`PI`]); see [`Trig`].
+pub const TRIG_FUNCTIONS: &[&str] = &["sin", "cos", "tan"];
+
+/// The name of the constant pi. It is never a free variable: in a constant it has no exact
+/// value (it is transcendental) except inside [`TRIG_FUNCTIONS`]; a polynomial conversion keeps
+/// it as an indeterminate of that name, which a caller deciding an identity treats as the
+/// transcendental constant (an identity in pi holds iff it holds with pi indeterminate).
+pub const PI: &str = "pi";
 
 // ------------------------------------------------------------------------------ coefficients
 
@@ -454,8 +475,9 @@ pub enum ExprError {
     },
     /// A name followed by `(` that is not a known function.
     #[error(
-        "unknown function '{name}' at {pos}: the functions are sqrt, diff, integrate, sum, \
-         binomial and factorial (write '{name}*(...)' for a product)"
+        "unknown function '{name}' at {pos}: the functions are sqrt, {list} (write \
+         '{name}*(...)' for a product)",
+        list = FUNCTIONS.join(", ")
     )]
     UnknownFunction {
         /// Byte position of the name.

@@ -229,6 +229,11 @@ pub fn size_bound(e: &Expr) -> Result<SizeBound, BoundError> {
                 degree: b.degree.checked_mul(k).ok_or(of)?,
             }
         }
+        ExprKind::Call(name, _) if crate::expr::TRIG_FUNCTIONS.contains(&name.as_str()) => {
+            return Err(BoundError::Input(format!(
+                "{name} is not supported by --random (no error bound is proved for angles modulo p); run without --random for the exact decision"
+            )))
+        }
         ExprKind::Call(name, _) => return Err(BoundError::Input(unsupported_call(name))),
         ExprKind::Sqrt(_) => {
             return Err(BoundError::Input(

@@ -1,0 +1,819 @@
+//! Angles: `sin`, `cos` and `tan` of an integer combination of angle variables plus a rational
+//! multiple of `pi`, converted exactly to polynomials in the cosine and sine of each angle.
+//!
+//! An angle variable `x` becomes two variables of the table, named `cos(x)` and `sin(x)` (names
+//! no identifier can take, so they never collide with a user's variable, and a printed
+//! polynomial in them reads back to the same polynomial). The caller adds the relation
+//! `cos(x)^2 + sin(x)^2 = 1` for every angle of the table ([`angles`]); modulo these relations
+//! the normal form that is linear in each `sin(x)` is unique, so a trigonometric polynomial is
+//! identically zero exactly when its normal form is.
+//!
+//! * `k x` expands by the multiple-angle formulas: `cos(k x) = T_k(cos x)`,
+//!   `sin(k x) = sin x U_{k-1}(cos x)` with the Chebyshev polynomials `T`, `U` (already reduced:
+//!   linear in `sin x`); `|k|` is bounded by the `angle-multiple` limit
+//!   ([`limits::ANGLE_MULTIPLE`]) before anything is expanded;
+//! * sums expand by the addition formulas, as the product of the complex numbers
+//!   `cos a + i sin a`;
+//! * the constant part `(p/q) pi` takes its exact value from [`trig_constant`];
+//! * `tan = sin/cos`, a fraction whose denominator is a side condition (converted by
+//!   [`Expr::to_ratfun`]).
+//!
+//! Written here rather than taken from a computer-algebra crate: the formulas are a few lines
+//! over the workspace's own polynomial type, which the proof engine and its limits already use.
+
+use super::eval::size_error;
+use super::*;
+use crate::poly::{Poly, Var, Vars};
+use crate::ratfun::{poly_derivative, RatFun};
+use exactcheck_core::Field;
+use num_traits::{ToPrimitive, Zero};
+
+/// A trigonometric function of the language.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Trig {
+    /// `sin`.
+    Sin,
+    /// `cos`.
+    Cos,
+    /// `tan = sin/cos`.
+    Tan,
+}
+
+impl Trig {
+    /// The function of this name ([`TRIG_FUNCTIONS`]).
+    pub fn from_name(name: &str) -> Option<Trig> {
+        match name {
+            "sin" => Some(Trig::Sin),
+            "cos" => Some(Trig::Cos),
+            "tan" => Some(Trig::Tan),
+            _ => None,
+        }
+    }
+
+    /// The name, as written.
+    pub fn name(self) -> &'static str {
+        match self {
+            Trig::Sin => "sin",
+            Trig::Cos => "cos",
+            Trig::Tan => "tan",
+        }
+    }
+}
+
+/// The name of the variable standing for the cosine of the angle `angle`: `cos(x)`.
+pub fn cos_name(angle: &str) -> String {
+    format!("cos({angle})")
+}
+
+/// The name of the variable standing for the sine of the angle `angle`: `sin(x)`.
+pub fn sin_name(angle: &str) -> String {
+    format!("sin({angle})")
+}
+
+/// An angle variable of a table: its name and the variables of its cosine and sine.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Angle {
+    /// The angle's name (`x`).
+    pub name: String,
+    /// The variable `cos(x)`.
+    pub cos: Var,
+    /// The variable `sin(x)`.
+    pub sin: Var,
+}
+
+impl Angle {
+    /// The relation `cos(x)^2 + sin(x)^2 - 1` (zero on the unit circle).
+    pub fn relation<C: Ring>(&self) -> Poly<C> {
+        Poly::from_terms([
+            (vec![(self.cos, 2)], C::one()),
+            (vec![(self.sin, 2)], C::one()),
+            (vec![], C::one().neg_ref()),
+        ])
+    }
+}
+
+/// Every angle of the table (each `cos(x)` with its `sin(x)`, both made together by the
+/// conversion), in the order of the table.
+pub fn angles(vars: &Vars) -> Vec<Angle> {
+    vars.names()
+        .iter()
+        .enumerate()
+        .filter_map(|(i, n)| {
+            let name = n.strip_prefix("cos(")?.strip_suffix(')')?;
+            let sin = vars.get(&sin_name(name))?;
+            Some(Angle {
+                name: name.to_string(),
+                cos: i as Var,
+                sin,
+            })
+        })
+        .collect()
+}
+
+/// The angle whose cosine or sine the variable named `var` is: `x` for `cos(x)` and `sin(x)`.
+pub fn angle_of(var: &str) -> Option<(&str, Trig)> {
+    let (f, rest) = var.split_once('(')?;
+    let which = Trig::from_name(f).filter(|t| *t != Trig::Tan)?;
+    Some((rest.strip_suffix(')')?, which))
+}
+
+/// A counter-example's values, `name = value`, with every angle's cosine and sine written as one
+/// angle: `cos(x) = 3/5, sin(x) = 4/5` becomes `x = angle with cos x = 3/5, sin x = 4/5`, in the
+/// place of its first variable.
+pub fn describe_point(point: &[(String, String)]) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut done = Vec::new();
+    for (v, q) in point {
+        match angle_of(v) {
+            Some((a, _)) => {
+                if done.contains(&a) {
+                    continue;
+                }
+                done.push(a);
+                let find = |n: String| point.iter().find(|(w, _)| *w == n).map(|(_, x)| x);
+                match (find(cos_name(a)), find(sin_name(a))) {
+                    (Some(c), Some(s)) => {
+                        out.push(format!("{a} = angle with cos {a} = {c}, sin {a} = {s}"))
+                    }
+                    _ => out.push(format!("{v} = {q}")),
+                }
+            }
+            None => out.push(format!("{v} = {q}")),
+        }
+    }
+    out
+}
+
+// ------------------------------------------------------------------------------ constants
+
+/// `cos(n pi/12)` for `n = 0..=12`: sums of `num/den sqrt(radicand)`.
+const COS_TWELFTHS: [&[(i64, i64, u32)]; 13] = [
+    &[(1, 1, 1)],
+    &[(1, 4, 6), (1, 4, 2)],
+    &[(1, 2, 3)],
+    &[(1, 2, 2)],
+    &[(1, 2, 1)],
+    &[(1, 4, 6), (-1, 4, 2)],
+    &[],
+    &[(-1, 4, 6), (1, 4, 2)],
+    &[(-1, 2, 1)],
+    &[(-1, 2, 2)],
+    &[(-1, 2, 3)],
+    &[(-1, 4, 6), (-1, 4, 2)],
+    &[(-1, 1, 1)],
+];
+
+/// The denominators `q` of the angles `(p/q) pi` whose sine and cosine [`trig_constant`] gives.
+pub const TRIG_DENOMINATORS: &[u32] = &[1, 2, 3, 4, 6, 12];
+
+/// The exact value of `sin`, `cos` or `tan` at the angle `r pi` (`r` rational), in `C`: for `r`
+/// with a denominator in [`TRIG_DENOMINATORS`] the value lies in `Q(sqrt 2, sqrt 3)` (`cos(pi/4)
+/// = sqrt(2)/2`, `cos(pi/12) = (sqrt 6 + sqrt 2)/4`); other denominators are refused with the
+/// reason, as is `tan` where the cosine is zero.
+///
+/// ```
+/// use exactcheck_exact::expr::{trig_constant, Trig};
+/// use exactcheck_exact::{Radical, Rational};
+///
+/// let c: Radical = trig_constant(&Rational::new(1, 4).unwrap(), Trig::Cos).unwrap();
+/// assert_eq!(c.to_string(), "1/2*sqrt(2)");
+/// let t: Radical = trig_constant(&Rational::new(1, 12).unwrap(), Trig::Tan).unwrap();
+/// assert_eq!(t, "2 - sqrt(3)".parse().unwrap());
+/// assert!(trig_constant::<Radical>(&Rational::new(1, 2).unwrap(), Trig::Tan).is_err());
+/// assert!(trig_constant::<Radical>(&Rational::new(1, 5).unwrap(), Trig::Cos).is_err());
+/// ```
+///
+/// # Errors
+/// The reason in words: a denominator outside [`TRIG_DENOMINATORS`], `tan` at a zero of the
+/// cosine, a square root `C` does not have (over [`Rational`], `cos(pi/4)`).
+pub fn trig_constant<C: Coefficient>(r: &Rational, which: Trig) -> Result<C, String> {
+    let shown = angle_text(r);
+    let twelfths = r * &Rational::from_integer(12);
+    if !twelfths.is_integer() {
+        return Err(format!(
+            "{}({shown}) is not supported: exact values are built in for angles (p/q)*pi with q \
+             in {}, not q = {}",
+            which.name(),
+            TRIG_DENOMINATORS
+                .iter()
+                .map(u32::to_string)
+                .collect::<Vec<_>>()
+                .join(", "),
+            r.denom()
+        ));
+    }
+    let n = (twelfths.numer() % 24i32)
+        .to_i64()
+        .expect("reduced modulo 24") as i32;
+    let n = n.rem_euclid(24);
+    let cos_at = |n: i32| -> Result<C, String> {
+        let n = n.rem_euclid(24);
+        let k = if n > 12 { 24 - n } else { n } as usize;
+        let mut acc = C::zero();
+        for &(num, den, d) in COS_TWELFTHS[k] {
+            let q = Rational::new(num, den).expect("the table's denominators are not zero");
+            let mut term = C::from_rational(&q)
+                .ok_or_else(|| format!("{q} has no image in the coefficient ring"))?;
+            if d != 1 {
+                let root = C::from_rational(&Rational::from_integer(i64::from(d)))
+                    .and_then(|x| x.try_sqrt())
+                    .ok_or_else(|| {
+                        format!(
+                            "the value of {}({shown}) has sqrt({d}), which does not lie in the \
+                             coefficient field{}",
+                            which.name(),
+                            C::sqrt_hint()
+                        )
+                    })?;
+                term = term.mul_ref(&root);
+            }
+            acc += term;
+        }
+        Ok(acc)
+    };
+    match which {
+        Trig::Cos => cos_at(n),
+        Trig::Sin => cos_at(6 - n),
+        Trig::Tan => {
+            let c = cos_at(n)?;
+            let inv = c
+                .try_inverse()
+                .ok_or_else(|| format!("tan({shown}) is undefined: cos({shown}) = 0"))?;
+            Ok(cos_at(6 - n)?.mul_ref(&inv))
+        }
+    }
+}
+
+/// `r pi` as written: `pi`, `-pi/2`, `3*pi/4`, `0`.
+fn angle_text(r: &Rational) -> String {
+    let (n, d) = (r.numer(), r.denom());
+    let num = match n.to_i64() {
+        Some(0) => return "0".into(),
+        Some(1) => "pi".to_string(),
+        Some(-1) => "-pi".to_string(),
+        _ => format!("{n}*pi"),
+    };
+    if d == BigInt::from(1) {
+        num
+    } else {
+        format!("{num}/{d}")
+    }
+}
+
+// ------------------------------------------------------------------------------ arguments
+
+/// An angle `sum k_i x_i + r pi`: integer multiples of angle variables and a rational multiple
+/// of pi.
+#[derive(Clone, Debug, PartialEq)]
+pub(super) struct LinearAngle {
+    /// The angle variables and their integer multiples (non-zero), in order of appearance.
+    pub terms: Vec<(String, i64)>,
+    /// The multiple of pi.
+    pub pi: Rational,
+}
+
+/// The argument of the call `call` (`name(arg)`) as an angle, or why it is not one.
+pub(super) fn linear_angle(
+    call: &Expr,
+    name: &str,
+    args: &[Expr],
+) -> Result<LinearAngle, ExprError> {
+    let bad = |pos: usize, why: String| ExprError::BadCall {
+        pos,
+        name: name.to_string(),
+        why,
+    };
+    let [arg] = args else {
+        return Err(bad(
+            call.pos,
+            format!("takes one argument (an angle), not {}", args.len()),
+        ));
+    };
+    let form = "angles are integer combinations of angle variables plus a rational multiple of \
+                pi, such as 2*x - y + pi/3";
+    let mut scratch = Vars::new();
+    let p: Poly<Rational> = arg.to_poly(&mut scratch)?;
+    if scratch.names().iter().any(|n| angle_of(n).is_some()) {
+        return Err(bad(
+            arg.pos,
+            format!("the angle {arg} contains sin or cos; {form}"),
+        ));
+    }
+    let mut terms = Vec::new();
+    let mut pi = Rational::ZERO;
+    for (m, c) in p.terms() {
+        match m.exponents().as_slice() {
+            [] => {
+                let what = if p.len() == 1 {
+                    format!("the angle {arg}")
+                } else {
+                    format!("the constant part {c} of the angle {arg}")
+                };
+                return Err(bad(
+                    arg.pos,
+                    format!(
+                        "{what} is not a rational multiple of pi (its sine is transcendental); \
+                         {form}"
+                    ),
+                ));
+            }
+            [(v, 1)] => {
+                let var = scratch.name(*v).expect("a variable of the scratch table");
+                if var == PI {
+                    pi = c.clone();
+                    continue;
+                }
+                if !c.is_integer() {
+                    return Err(bad(
+                        arg.pos,
+                        format!(
+                            "the coefficient {c} of {var} in {arg} is not an integer; {form} \
+                             (write {var} = 2*y for a half angle y)"
+                        ),
+                    ));
+                }
+                let k = c.numer();
+                let limit = |found: String| ExprError::Limit {
+                    pos: arg.pos,
+                    error: limits::ANGLE_MULTIPLE.exceeded(found),
+                };
+                let k = match k.to_i64() {
+                    Some(k) => k,
+                    None => return Err(limit(format!("an integer of {} bits", k.bits()))),
+                };
+                limits::ANGLE_MULTIPLE
+                    .check(k.unsigned_abs())
+                    .map_err(|_| limit(k.unsigned_abs().to_string()))?;
+                terms.push((*v, var.to_string(), k));
+            }
+            _ => {
+                return Err(bad(
+                    arg.pos,
+                    format!("the angle {arg} is not linear in its variables; {form}"),
+                ))
+            }
+        }
+    }
+    // In order of appearance (the scratch table's order), so angles enter the caller's table
+    // as they are written.
+    terms.sort_by_key(|t| t.0);
+    Ok(LinearAngle {
+        terms: terms.into_iter().map(|(_, x, k)| (x, k)).collect(),
+        pi,
+    })
+}
+
+// ------------------------------------------------------------------------------ expansion
+
+/// The Chebyshev polynomials `T_k` and `U_{k-1}` (`k >= 1`) as integer coefficient vectors
+/// (index = power of the cosine): `cos(k x) = T_k(cos x)`, `sin(k x) = sin x U_{k-1}(cos x)`.
+fn chebyshev(k: usize) -> (Vec<BigInt>, Vec<BigInt>) {
+    // t = [T_{n-1}, T_n], u = [U_{n-2}, U_{n-1}], from n = 1.
+    let step = |prev: &[BigInt], cur: &[BigInt]| -> Vec<BigInt> {
+        let mut next = vec![BigInt::zero(); cur.len() + 1];
+        for (i, c) in cur.iter().enumerate() {
+            next[i + 1] += c * 2;
+        }
+        for (i, c) in prev.iter().enumerate() {
+            next[i] -= c;
+        }
+        next
+    };
+    let one = || vec![BigInt::from(1)];
+    let (mut t0, mut t1) = (one(), vec![BigInt::zero(), BigInt::from(1)]);
+    let (mut u0, mut u1) = (vec![BigInt::zero()], one());
+    for _ in 1..k {
+        let t2 = step(&t0, &t1);
+        let u2 = step(&u0, &u1);
+        (t0, t1) = (t1, t2);
+        (u0, u1) = (u1, u2);
+    }
+    (t1, u1)
+}
+
+/// `(cos, sin)` of the angle of `call` as polynomials over `C` in the variables `cos(x)`, `sin(x)`
+/// of its angle variables (added to `vars`, always in pairs).
+pub(super) fn cos_sin<C: Coefficient>(
+    call: &Expr,
+    name: &str,
+    args: &[Expr],
+    vars: &mut Vars,
+) -> Result<(Poly<C>, Poly<C>), ExprError> {
+    let angle = linear_angle(call, name, args)?;
+    let constant = |which| {
+        trig_constant::<C>(&angle.pi, which).map_err(|why| ExprError::BadCall {
+            pos: call.pos,
+            name: name.to_string(),
+            why,
+        })
+    };
+    let (c0, s0) = (constant(Trig::Cos)?, constant(Trig::Sin)?);
+    let mut acc: Option<(Poly<C>, Poly<C>)> = None;
+    let size = |e| size_error(e, call.pos);
+    let int = |b: &BigInt| {
+        C::from_rational(&Rational::from(b.clone())).ok_or_else(|| ExprError::Unrepresentable {
+            pos: call.pos,
+            number: b.to_string(),
+        })
+    };
+    for (x, k) in &angle.terms {
+        let (cv, sv) = (vars.var(&cos_name(x)), vars.var(&sin_name(x)));
+        limits::VARIABLES
+            .check(u64::from(cv.max(sv)) + 1)
+            .map_err(|error| ExprError::Limit {
+                pos: call.pos,
+                error,
+            })?;
+        let (t, u) = chebyshev(k.unsigned_abs() as usize);
+        let mut cos_terms = Vec::new();
+        for (i, a) in t.iter().enumerate().filter(|(_, a)| !a.is_zero()) {
+            cos_terms.push((vec![(cv, i as u32)], int(a)?));
+        }
+        let mut sin_terms = Vec::new();
+        for (i, a) in u.iter().enumerate().filter(|(_, a)| !a.is_zero()) {
+            let a = if *k < 0 { -a } else { a.clone() };
+            sin_terms.push((vec![(cv, i as u32), (sv, 1)], int(&a)?));
+        }
+        let pair = (Poly::from_terms(cos_terms), Poly::from_terms(sin_terms));
+        acc = Some(match acc {
+            None => pair,
+            Some((c, s)) => (
+                c.try_mul(&pair.0)
+                    .map_err(size)?
+                    .sub_ref(&s.try_mul(&pair.1).map_err(size)?),
+                c.try_mul(&pair.1)
+                    .map_err(size)?
+                    .add_ref(&s.try_mul(&pair.0).map_err(size)?),
+            ),
+        });
+    }
+    Ok(match acc {
+        None => (Poly::constant(c0), Poly::constant(s0)),
+        Some((c, s)) => (
+            c.scale(&c0).sub_ref(&s.scale(&s0)),
+            s.scale(&c0).add_ref(&c.scale(&s0)),
+        ),
+    })
+}
+
+/// `sin`, `cos` (or, when the cosine is a non-zero constant, `tan`) of the angle of `call` as a
+/// polynomial over `C`. `tan` of a variable angle is a fraction: [`ExprError::NonConstantDivisor`]
+/// here, converted by [`Expr::to_ratfun`].
+pub(super) fn trig_poly<C: Coefficient>(
+    call: &Expr,
+    which: Trig,
+    args: &[Expr],
+    vars: &mut Vars,
+) -> Result<Poly<C>, ExprError> {
+    let (c, s) = cos_sin::<C>(call, which.name(), args, vars)?;
+    match which {
+        Trig::Cos => Ok(c),
+        Trig::Sin => Ok(s),
+        Trig::Tan => match c.constant_value() {
+            Some(k) => match k.try_inverse() {
+                Some(inv) => Ok(s.scale(&inv)),
+                None => Err(undefined_tan(call, args)),
+            },
+            None => Err(ExprError::NonConstantDivisor { pos: call.pos }),
+        },
+    }
+}
+
+/// `sin`, `cos` or `tan` of the angle of `call` as a rational function over `C` (`tan = sin/cos`,
+/// the cosine a condition).
+pub(super) fn trig_ratfun<C: Coefficient + Field>(
+    call: &Expr,
+    which: Trig,
+    args: &[Expr],
+    vars: &mut Vars,
+) -> Result<RatFun<C>, ExprError> {
+    let (c, s) = cos_sin::<C>(call, which.name(), args, vars)?;
+    match which {
+        Trig::Cos => Ok(RatFun::from_poly(c)),
+        Trig::Sin => Ok(RatFun::from_poly(s)),
+        Trig::Tan => RatFun::from_poly(s)
+            .div(&RatFun::from_poly(c))
+            .map_err(|e| size_error(e, call.pos))?
+            .ok_or_else(|| undefined_tan(call, args)),
+    }
+}
+
+/// `tan` of an angle whose cosine is identically zero.
+fn undefined_tan(call: &Expr, args: &[Expr]) -> ExprError {
+    let arg = args.first().map(ToString::to_string).unwrap_or_default();
+    ExprError::BadCall {
+        pos: call.pos,
+        name: "tan".into(),
+        why: format!("tan({arg}) is undefined: cos({arg}) = 0"),
+    }
+}
+
+/// The value of `sin`, `cos` or `tan` of a constant angle (`(p/q) pi`) in `C`.
+pub(super) fn trig_value<C: Coefficient>(
+    call: &Expr,
+    which: Trig,
+    args: &[Expr],
+) -> Result<C, ExprError> {
+    let angle = linear_angle(call, which.name(), args)?;
+    if let Some((x, _)) = angle.terms.first() {
+        return Err(ExprError::NotConstant {
+            pos: args[0].pos,
+            name: x.clone(),
+            hint: "",
+        });
+    }
+    trig_constant::<C>(&angle.pi, which).map_err(|why| ExprError::BadCall {
+        pos: call.pos,
+        name: which.name().to_string(),
+        why,
+    })
+}
+
+// ------------------------------------------------------------------------------ derivatives
+
+/// `d/dt` of a polynomial in `t` and in the cosine and sine of the angle `t`: the partial
+/// derivative in `t` plus the chain rule `d cos t/dt = -sin t`, `d sin t/dt = cos t`.
+pub(super) fn total_derivative<C: Ring>(p: &Poly<C>, vars: &Vars, t: &str) -> Poly<C> {
+    let mut d = match vars.get(t) {
+        Some(v) => poly_derivative(p, v),
+        None => Poly::zero(),
+    };
+    if let (Some(c), Some(s)) = (vars.get(&cos_name(t)), vars.get(&sin_name(t))) {
+        let (cp, sp) = (Poly::<C>::var(c), Poly::<C>::var(s));
+        d = d.sub_ref(&(poly_derivative(p, c) * sp)) + poly_derivative(p, s) * cp;
+    }
+    d
+}
+
+/// [`total_derivative`] of a rational function.
+pub(super) fn total_derivative_ratfun<C: Field>(
+    f: &RatFun<C>,
+    vars: &Vars,
+    t: &str,
+) -> Result<RatFun<C>, crate::poly::SizeError> {
+    let mut d = match vars.get(t) {
+        Some(v) => f.derivative(v)?,
+        None => f.mul(&RatFun::from_poly(Poly::zero()))?,
+    };
+    if let (Some(c), Some(s)) = (vars.get(&cos_name(t)), vars.get(&sin_name(t))) {
+        let by_c = f
+            .derivative(c)?
+            .mul(&RatFun::from_poly(Poly::<C>::var(s)))?;
+        let by_s = f
+            .derivative(s)?
+            .mul(&RatFun::from_poly(Poly::<C>::var(c)))?;
+        d = d.add(&by_c, true)?.add(&by_s, false)?;
+    }
+    Ok(d)
+}
+
+/// Whether the tree calls `sin`, `cos` or `tan`.
+pub fn has_trig(e: &Expr) -> bool {
+    match &e.kind {
+        ExprKind::Number(_) | ExprKind::Var(_) => false,
+        ExprKind::Neg(x) | ExprKind::Sqrt(x) => has_trig(x),
+        ExprKind::Pow(a, b) => has_trig(a) || has_trig(b),
+        ExprKind::Sum(ts) => ts.iter().any(|(_, t)| has_trig(t)),
+        ExprKind::Product(fs) => fs.iter().any(|(_, f)| has_trig(f)),
+        ExprKind::Call(name, args) => Trig::from_name(name).is_some() || args.iter().any(has_trig),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::expr::parse_expr;
+    use crate::prove::{decide, Decision};
+    use crate::Radical;
+    use proptest::prelude::*;
+
+    fn radical_poly(text: &str, vars: &mut Vars) -> Poly<Radical> {
+        parse_expr(text).unwrap().to_poly(vars).unwrap()
+    }
+
+    /// Decides `lhs = rhs` with the circles of the angles.
+    fn decide_trig(lhs: &str, rhs: &str) -> Decision<Radical> {
+        let mut vars = Vars::new();
+        let l: RatFun<Radical> = parse_expr(lhs).unwrap().to_ratfun(&mut vars).unwrap();
+        let r: RatFun<Radical> = parse_expr(rhs).unwrap().to_ratfun(&mut vars).unwrap();
+        let res = l
+            .numerator()
+            .try_mul(r.denominator())
+            .unwrap()
+            .sub_ref(&r.numerator().try_mul(l.denominator()).unwrap());
+        let rels: Vec<Poly<Radical>> = angles(&vars).iter().map(Angle::relation).collect();
+        decide(&res, &rels, vars.len()).unwrap()
+    }
+
+    fn proved(lhs: &str, rhs: &str) -> bool {
+        matches!(decide_trig(lhs, rhs), Decision::Proved { .. })
+    }
+
+    #[test]
+    fn constants_agree_with_libm() {
+        // An independent check of the table: every twelfth of pi against the floating-point
+        // sine and cosine.
+        for n in -30i64..30 {
+            let r = Rational::new(n, 12).unwrap();
+            let x = n as f64 * std::f64::consts::PI / 12.0;
+            let c: Radical = trig_constant(&r, Trig::Cos).unwrap();
+            let s: Radical = trig_constant(&r, Trig::Sin).unwrap();
+            assert!((c.to_f64() - x.cos()).abs() < 1e-12, "cos({n} pi/12)");
+            assert!((s.to_f64() - x.sin()).abs() < 1e-12, "sin({n} pi/12)");
+            assert!((c.square() + s.square()).is_one());
+            match trig_constant::<Radical>(&r, Trig::Tan) {
+                Ok(t) => assert!((t.to_f64() - x.tan()).abs() < 1e-9, "tan({n} pi/12)"),
+                Err(why) => {
+                    assert!(c.is_zero() && why.contains("undefined"), "{why}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn constants_refused_outside_the_field() {
+        let e = trig_constant::<Radical>(&Rational::new(2, 5).unwrap(), Trig::Sin).unwrap_err();
+        assert!(e.contains("q = 5"), "{e}");
+        let e = trig_constant::<Rational>(&Rational::new(1, 4).unwrap(), Trig::Cos).unwrap_err();
+        assert!(e.contains("sqrt(2)"), "{e}");
+        let half: Rational = trig_constant(&Rational::new(1, 6).unwrap(), Trig::Sin).unwrap();
+        assert_eq!(half, Rational::new(1, 2).unwrap());
+    }
+
+    #[test]
+    fn chebyshev_polynomials() {
+        let (t, u) = chebyshev(3);
+        let ints = |v: &[i64]| v.iter().map(|&k| BigInt::from(k)).collect::<Vec<_>>();
+        assert_eq!(t, ints(&[0, -3, 0, 4]));
+        assert_eq!(u, ints(&[-1, 0, 4]));
+        let (t, u) = chebyshev(1);
+        assert_eq!((t, u), (ints(&[0, 1]), ints(&[1])));
+    }
+
+    #[test]
+    fn identities_proved_and_false_ones_rejected() {
+        assert!(proved("sin(x)^2 + cos(x)^2", "1"));
+        assert!(proved("sin(3x)", "3 sin(x) - 4 sin(x)^3"));
+        assert!(proved("cos(x + y)", "cos(x) cos(y) - sin(x) sin(y)"));
+        assert!(proved("sin(x - y)", "sin(x) cos(y) - cos(x) sin(y)"));
+        assert!(proved("cos(-5x)", "cos(5x)"));
+        assert!(proved("sin(x + pi)", "-sin(x)"));
+        assert!(proved("cos(x + pi/2)", "-sin(x)"));
+        assert!(proved("sin(x + pi/4)", "sqrt(2)/2 (sin(x) + cos(x))"));
+        assert!(proved("tan(x + pi/4)", "(1 + tan(x))/(1 - tan(x))"));
+        assert!(proved("tan(2x)", "2 tan(x)/(1 - tan(x)^2)"));
+        assert!(proved("cos(pi/12)", "(sqrt(6) + sqrt(2))/4"));
+        // Every path has a false identity it rejects: the multiple angle, the sum, the
+        // constant, the fraction.
+        for (l, r) in [
+            ("sin(3x)", "3 sin(x) - 3 sin(x)^3"),
+            ("cos(x + y)", "cos(x) cos(y) + sin(x) sin(y)"),
+            ("sin(x + pi/3)", "sin(x)/2 + cos(x)/2"),
+            ("tan(2x)", "2 tan(x)/(1 + tan(x)^2)"),
+            ("cos(2x)", "1"),
+        ] {
+            match decide_trig(l, r) {
+                Decision::Fails { point, value, .. } => {
+                    assert!(!value.is_zero());
+                    assert!(!point.is_empty());
+                }
+                other => panic!("{l} = {r}: {other:?}"),
+            }
+        }
+        assert!(matches!(
+            decide_trig("cos(pi/3)", "sqrt(3)/2"),
+            Decision::Fails { .. }
+        ));
+    }
+
+    #[test]
+    fn constant_values_and_errors() {
+        let v = |t: &str| parse_expr(t).unwrap().eval_constant::<Radical>();
+        assert_eq!(v("cos(pi/4)").unwrap(), v("sqrt(2)/2").unwrap());
+        assert_eq!(v("tan(pi/12)").unwrap(), v("2 - sqrt(3)").unwrap());
+        assert_eq!(v("sin(-7pi/6)").unwrap(), v("1/2").unwrap());
+        assert_eq!(v("cos(2*pi/3/2)").unwrap(), v("1/2").unwrap());
+        let err = |t: &str| v(t).unwrap_err().to_string();
+        assert!(
+            err("tan(pi/2)").contains("undefined"),
+            "{}",
+            err("tan(pi/2)")
+        );
+        assert!(err("sin(x)").contains("'x'"), "{}", err("sin(x)"));
+        assert!(err("sin(1)").contains("not a rational multiple of pi"));
+        assert!(err("cos(pi/5)").contains("not supported"));
+        assert!(err("pi").contains("transcendental"), "{}", err("pi"));
+        let mut vars = Vars::new();
+        let conv = |t: &str, vars: &mut Vars| {
+            parse_expr(t)
+                .unwrap()
+                .to_poly::<Radical>(vars)
+                .unwrap_err()
+                .to_string()
+        };
+        assert!(conv("sin(x^2)", &mut vars).contains("not linear"));
+        assert!(conv("sin(x/2)", &mut vars).contains("not an integer"));
+        assert!(conv("sin(x y)", &mut vars).contains("not linear"));
+        assert!(conv("sin(sin(x))", &mut vars).contains("contains sin or cos"));
+        assert!(conv("sin(x, y)", &mut vars).contains("one argument"));
+        assert!(conv("sin(100000 x)", &mut vars).contains("angle-multiple"));
+        assert!(conv("tan(x)", &mut vars).contains("non-constant"));
+        assert!(conv("diff(x, pi)", &mut vars).contains("pi is a constant"));
+    }
+
+    #[test]
+    fn derivatives_by_the_chain_rule() {
+        assert!(proved("diff(sin(x), x)", "cos(x)"));
+        assert!(proved("diff(cos(3x), x)", "-3 sin(3x)"));
+        assert!(proved("diff(x sin(x), x)", "sin(x) + x cos(x)"));
+        assert!(proved("diff(tan(x), x)", "1/cos(x)^2"));
+        assert!(proved("diff(sin(x), x, 4)", "sin(x)"));
+        assert!(proved("diff(sin(y), x)", "0"));
+        assert!(!proved("diff(sin(2x), x)", "cos(2x)"));
+    }
+
+    #[test]
+    fn angles_of_a_table_and_points() {
+        let mut vars = Vars::new();
+        radical_poly("sin(2a + b) + x", &mut vars);
+        let names: Vec<String> = angles(&vars).into_iter().map(|a| a.name).collect();
+        assert_eq!(names, ["a", "b"]);
+        let point = [
+            ("cos(a)".to_string(), "3/5".to_string()),
+            ("x".to_string(), "2".to_string()),
+            ("sin(a)".to_string(), "4/5".to_string()),
+        ];
+        assert_eq!(
+            describe_point(&point),
+            ["a = angle with cos a = 3/5, sin a = 4/5", "x = 2"]
+        );
+    }
+
+    /// `(cos, sin)` of `k` times the angle at the circle point of `u`, by repeated complex
+    /// multiplication of the rational point (independent of the Chebyshev expansion).
+    fn power_of_point(u: &Rational, k: i64) -> (Rational, Rational) {
+        let den = (Rational::ONE + u.square()).inv().unwrap();
+        let c = (Rational::ONE - u.square()) * &den;
+        let s = u.scale_i64(2) * &den;
+        let (mut pc, mut ps) = (Rational::ONE, Rational::ZERO);
+        for _ in 0..k.unsigned_abs() {
+            (pc, ps) = (&pc * &c - &ps * &s, &pc * &s + &ps * &c);
+        }
+        if k < 0 {
+            ps = -ps;
+        }
+        (pc, ps)
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+        /// `sin` and `cos` of `a x + b y + (n/12) pi`, expanded, agree with the angle evaluated
+        /// exactly at rational points of the two circles.
+        #[test]
+        fn expansion_matches_evaluation_at_circle_points(
+            a in -12i64..=12, b in -12i64..=12, n in -24i64..=24,
+            un in -9i64..=9, ud in 1i64..=5, vn in -9i64..=9, vd in 1i64..=5,
+        ) {
+            let text = format!("{a}*x + {b}*y + {n}*pi/12");
+            let mut vars = Vars::new();
+            let cp = radical_poly(&format!("cos({text})"), &mut vars);
+            let sp = radical_poly(&format!("sin({text})"), &mut vars);
+            let (u, v) = (Rational::new(un, ud).unwrap(), Rational::new(vn, vd).unwrap());
+            let (xc, xs) = power_of_point(&u, 1);
+            let (yc, ys) = power_of_point(&v, 1);
+            let mut point = vec![Radical::zero(); vars.len()];
+            for (name, val) in [("cos(x)", &xc), ("sin(x)", &xs), ("cos(y)", &yc), ("sin(y)", &ys)] {
+                if let Some(i) = vars.get(name) {
+                    point[i as usize] = Radical::from(val.clone());
+                }
+            }
+            let got_c = cp.eval(&point, Radical::clone);
+            let got_s = sp.eval(&point, Radical::clone);
+            // cos and sin of the whole angle: (a x) (b y) (n pi/12) as complex products.
+            let (ac, as_) = power_of_point(&u, a);
+            let (bc, bs) = power_of_point(&v, b);
+            let (c1, s1) = (&ac * &bc - &as_ * &bs, &ac * &bs + &as_ * &bc);
+            let r = Rational::new(n, 12).unwrap();
+            let k0: Radical = trig_constant(&r, Trig::Cos).unwrap();
+            let s0: Radical = trig_constant(&r, Trig::Sin).unwrap();
+            let (c1, s1) = (Radical::from(c1), Radical::from(s1));
+            let want_c = &c1 * &k0 - &s1 * &s0;
+            let want_s = &s1 * &k0 + &c1 * &s0;
+            prop_assert_eq!(got_c, want_c);
+            prop_assert_eq!(got_s, want_s);
+        }
+
+        /// The false identity `sin(a x) = a sin(x)` (for `|a| >= 2`) is rejected with a
+        /// counter-example, the true `sin(a x)^2 + cos(a x)^2 = 1` proved.
+        #[test]
+        fn multiple_angles_decided(a in 2i64..=9) {
+            let identity = format!("sin({a} x)^2 + cos({a} x)^2");
+            prop_assert!(proved(&identity, "1"));
+            let is_fails = matches!(
+                decide_trig(&format!("sin({a} x)"), &format!("{a} sin(x)")),
+                Decision::Fails { .. }
+            );
+            prop_assert!(is_fails);
+        }
+    }
+}
