@@ -588,13 +588,13 @@ fn prove_over<C: PointField + Display>(
         };
         Error::Input(format!("{part}: {}", phrasing.error(&e)))
     })?;
+    let mut report = report;
+    sound_counter_example(&mut report, pi_in_relations, &mixed);
     let (verdict, code) = match &report.verdict {
         IdentityVerdict::Proved { .. } => ("proved", ExitCode::SUCCESS),
         IdentityVerdict::Fails { .. } => ("fails", ExitCode::from(1)),
         IdentityVerdict::Undecided { .. } => ("undecided", ExitCode::from(1)),
     };
-    let mut report = report;
-    sound_counter_example(&mut report, pi_in_relations, &mixed);
     // The counter-example's values by name, pi left out (it is the constant), each angle's
     // cosine and sine written as one angle.
     let shown_point = |point: &RadicalPoint| -> Vec<String> {
