@@ -58,6 +58,7 @@ mod isolate;
 mod limbs;
 #[cfg(test)]
 mod tests;
+mod resultant;
 mod upoly;
 pub mod w4;
 
