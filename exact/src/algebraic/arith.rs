@@ -114,6 +114,34 @@ fn split_even_quartic(f: &UPoly) -> Option<(UPoly, UPoly)> {
     None
 }
 
+/// For an even `f(x) = g(x^2)` without rational roots: the factors `x^2 - r` for the rational
+/// roots `r` of `g` split off; the factor `x^2 - r` itself when it has the root isolated by `ri`.
+fn reduce_even(f: UPoly, ri: &RootInterval) -> UPoly {
+    if f.degree() < 4 || f.coeffs().iter().skip(1).step_by(2).any(|c| !c.is_zero()) {
+        return f;
+    }
+    let g = UPoly::from_coeffs(f.coeffs().iter().step_by(2).cloned().collect());
+    let mut rest = f;
+    for r in g.square_free_part().isolate_roots() {
+        if let Some(r) = r.exact_value() {
+            let quad = UPoly::from_coeffs(vec![-r.clone(), Rational::ZERO, Rational::ONE]);
+            if quad.count_roots(&ri.lo, &ri.hi) == 1 {
+                return normalise(&quad);
+            }
+            rest = rest.div_rem(&quad).0;
+        }
+    }
+    normalise(&rest)
+}
+
+/// The polynomial whose roots are the squares of the roots of `f` (Graeffe's step:
+/// `f(x) f(-x) = h(x^2)`).
+fn graeffe(f: &UPoly) -> UPoly {
+    let minus_x = UPoly::from_coeffs(vec![Rational::ZERO, -Rational::ONE]);
+    let prod = f.mul_ref(&f.compose(&minus_x));
+    UPoly::from_coeffs(prod.coeffs().iter().step_by(2).cloned().collect())
+}
+
 /// The non-negative rational square root of `q`, if `q` is the square of a rational.
 pub(super) fn rational_sqrt(q: &Rational) -> Option<Rational> {
     crate::expr::Coefficient::try_sqrt(q)
@@ -133,6 +161,9 @@ impl Algebraic {
             return Algebraic::from_rational(ri.lo);
         }
         let mut f = normalise(&without_rational_roots(&f, roots));
+        if !minimal {
+            f = reduce_even(f, &ri);
+        }
         let mut minimal = minimal || f.degree() <= 3;
         if !minimal && f.degree() == 4 {
             match split_even_quartic(&f) {
@@ -255,6 +286,10 @@ impl Algebraic {
             (Some(p), Some(q)) => return Algebraic::from_rational(p.add_ref(q)),
             (Some(q), None) => return rhs.mobius(&one, q, &zero, &one),
             (None, Some(q)) => return self.mobius(&one, q, &zero, &one),
+            (None, None) if self.poly == rhs.poly && self.iv == rhs.iv => {
+                let two = Rational::from_integer(2);
+                return self.mobius(&two, &zero, &zero, &one);
+            }
             (None, None) => {}
         }
         let n = self.poly.degree() * rhs.poly.degree();
@@ -283,6 +318,9 @@ impl Algebraic {
             (Some(q), None) | (None, Some(q)) if q.is_zero() => return Algebraic::zero(),
             (Some(q), None) => return rhs.mobius(q, &zero, &zero, &one),
             (None, Some(q)) => return self.mobius(q, &zero, &zero, &one),
+            (None, None) if self.poly == rhs.poly && self.iv == rhs.iv => {
+                return self.square_impl()
+            }
             (None, None) => {}
         }
         let m = rhs.poly.degree();
@@ -303,6 +341,24 @@ impl Algebraic {
         let r = UPoly::interpolate(&points);
         Algebraic::select(&r, false, |bits| {
             Some(iv_mul(&self.enclosure(bits), &rhs.enclosure(bits)))
+        })
+    }
+
+    /// `self^2` by Graeffe's step (the degree does not grow, unlike a product by resultant).
+    pub(super) fn square_impl(&self) -> Algebraic {
+        if let Some(q) = self.to_rational() {
+            return Algebraic::from_rational(q.mul_ref(q));
+        }
+        Algebraic::select(&graeffe(&self.poly), false, |bits| {
+            let (lo, hi) = self.enclosure(bits);
+            let (l2, h2) = (lo.mul_ref(&lo), hi.mul_ref(&hi));
+            Some(if lo.signum() == Sign::Positive {
+                (l2, h2)
+            } else if hi.signum() == Sign::Negative {
+                (h2, l2)
+            } else {
+                (Rational::ZERO, l2.max(h2))
+            })
         })
     }
 

@@ -11,7 +11,8 @@
 
 use super::Algebraic;
 use crate::univariate::UPoly;
-use crate::Rational;
+use exactcheck_core::Sqrt;
+use crate::{Radical, Rational};
 use exactcheck_core::{Ring, Sign};
 use num_bigint::BigInt;
 use num_integer::Integer;
@@ -73,8 +74,9 @@ fn int_coeffs(f: &UPoly) -> Vec<BigInt> {
 }
 
 impl Algebraic {
-    /// The radical form of a quadratic irrational (defining polynomial of degree 2).
-    fn quadratic_form(&self) -> Option<String> {
+    /// `(p, q, r, d)` with the number `(p + q sqrt(r)) / d`, for a quadratic irrational
+    /// (defining polynomial of degree 2).
+    fn quadratic_parts(&self) -> Option<(BigInt, BigInt, BigInt, BigInt)> {
         if self.poly.degree() != 2 {
             return None;
         }
@@ -91,10 +93,20 @@ impl Algebraic {
             Ordering::Greater => s,
             _ => -s,
         };
-        Some(fmt_quadratic(&-b.clone(), &q, &r, &two_a))
+        let p = -b.clone();
+        let g = p.gcd(&q).gcd(&two_a);
+        Some((p / &g, q / &g, r, two_a / &g))
     }
 
-    /// `±sqrt(b)` for a root of an even quartic `g(x^2)` with `g` quadratic.
+    /// The radical form of a quadratic irrational.
+    fn quadratic_form(&self) -> Option<String> {
+        let (p, q, r, d) = self.quadratic_parts()?;
+        Some(fmt_quadratic(&p, &q, &r, &d))
+    }
+
+    /// `±sqrt(b)` for a root of an even quartic `g(x^2)` with `g` quadratic, denested by the
+    /// square-root field ([`Radical`]) when the root is a sum of square roots of rationals
+    /// (`sqrt(5 - 2*sqrt(6)) = -sqrt(2) + sqrt(3)`).
     fn nested_form(&self) -> Option<String> {
         let f = &self.poly;
         if f.degree() != 4 || !f.coeff(1).is_zero() || !f.coeff(3).is_zero() {
@@ -112,22 +124,32 @@ impl Algebraic {
                 (Rational::ZERO, l2.max(h2))
             })
         });
-        let inner = square.quadratic_form()?;
-        let minus = if self.sign() == Sign::Negative { "-" } else { "" };
-        // inner is `(p + q*sqrt(r))/d`, `p + q*sqrt(r)` or `q*sqrt(r)/d`: pull a square d out.
-        if let Some((num, den)) = inner.rsplit_once('/') {
-            if let Ok(d) = den.parse::<BigInt>() {
-                let s = d.sqrt();
-                if &s * &s == d {
-                    let num = num
-                        .strip_prefix('(')
-                        .and_then(|n| n.strip_suffix(')'))
-                        .unwrap_or(num);
-                    return Some(format!("{minus}sqrt({num})/{s}"));
-                }
+        let (p, q, r, d) = square.quadratic_parts()?;
+        let negative = self.sign() == Sign::Negative;
+        let inv_d = Rational::from(d.clone()).recip().ok()?;
+        if let Some(root) = Radical::sqrt_rational(&Rational::from(r.clone())).and_then(|sr| {
+            let beta = Radical::from(Rational::from(p.clone()) * &inv_d)
+                + sr * Radical::from(Rational::from(q.clone()) * &inv_d);
+            Sqrt::sqrt(&beta)
+        }) {
+            let root = if negative { -root } else { root };
+            return Some(root.to_string_over_common_denominator());
+        }
+        let minus = if negative { "-" } else { "" };
+        let s = d.sqrt();
+        if &s * &s == d {
+            // sqrt((p + q sqrt r)/s^2) = sqrt(p + q sqrt r)/s
+            let num = fmt_quadratic(&p, &q, &r, &BigInt::one());
+            let g = p.gcd(&q).gcd(&d);
+            if g.is_one() {
+                return Some(if s.is_one() {
+                    format!("{minus}sqrt({num})")
+                } else {
+                    format!("{minus}sqrt({num})/{s}")
+                });
             }
         }
-        Some(format!("{minus}sqrt({inner})"))
+        Some(format!("{minus}sqrt({})", fmt_quadratic(&p, &q, &r, &d)))
     }
 
     /// The value to `digits` decimals, rounded (an approximation for display only).

@@ -349,6 +349,9 @@ impl Ring for Algebraic {
     fn neg_ref(&self) -> Self {
         self.neg_impl()
     }
+    fn square(&self) -> Self {
+        self.square_impl()
+    }
 }
 
 impl Field for Algebraic {
