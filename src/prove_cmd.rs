@@ -17,6 +17,7 @@
 
 use crate::Error;
 use clap::Args;
+use exactcheck_core::Ring;
 use exactcheck_exact::expr::{parse_expr, Coefficient, Expr, ExprError};
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
@@ -24,7 +25,6 @@ use exactcheck_exact::prove::{
     Decision, Domain, FractionIdentity, PointField, HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
 };
 use exactcheck_exact::ratfun::RatFun;
-use exactcheck_core::Ring;
 use exactcheck_exact::{Algebraic, Radical, Rational};
 use serde_json::json;
 use std::fmt::Display;

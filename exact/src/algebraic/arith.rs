@@ -264,16 +264,20 @@ impl Algebraic {
             den_pows.push(next);
         }
         for k in 0..=n {
-            g = g.add_ref(
-                &(num_pow.mul_ref(&den_pows[n - k]) * &self.poly.coeff(k)),
-            );
+            g = g.add_ref(&(num_pow.mul_ref(&den_pows[n - k]) * &self.poly.coeff(k)));
             num_pow = num_pow.mul_ref(&num);
         }
         let (a, b, c, d) = (a.clone(), b.clone(), c.clone(), d.clone());
         Algebraic::select(&g, self.minimal, |bits| {
             let x = self.enclosure(bits);
-            let numer = iv_add(&iv_mul(&(a.clone(), a.clone()), &x), &(b.clone(), b.clone()));
-            let denom = iv_add(&iv_mul(&(c.clone(), c.clone()), &x), &(d.clone(), d.clone()));
+            let numer = iv_add(
+                &iv_mul(&(a.clone(), a.clone()), &x),
+                &(b.clone(), b.clone()),
+            );
+            let denom = iv_add(
+                &iv_mul(&(c.clone(), c.clone()), &x),
+                &(d.clone(), d.clone()),
+            );
             Some(iv_mul(&numer, &iv_inv(&denom)?))
         })
     }

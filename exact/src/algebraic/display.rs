@@ -11,8 +11,8 @@
 
 use super::Algebraic;
 use crate::univariate::UPoly;
-use exactcheck_core::Sqrt;
 use crate::{Radical, Rational};
+use exactcheck_core::Sqrt;
 use exactcheck_core::{Ring, Sign};
 use num_bigint::BigInt;
 use num_integer::Integer;
@@ -160,10 +160,7 @@ impl Algebraic {
             .expect("4 * 10^digits is not zero");
         let mid = match self.to_rational() {
             Some(q) => q.clone(),
-            None => self
-                .poly
-                .refine(&self.iv, &width)
-                .midpoint(),
+            None => self.poly.refine(&self.iv, &width).midpoint(),
         };
         let scaled = mid * Rational::from(scale.clone());
         // round half away from zero

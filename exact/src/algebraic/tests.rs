@@ -73,7 +73,10 @@ fn cubic_root_by_index_and_errors() {
     let r: Vec<Algebraic> = (0..3).map(|i| Algebraic::root_of(&f, i).unwrap()).collect();
     assert!(r[0] < r[1] && r[1] < r[2]);
     assert_eq!(r[2], Algebraic::cos_pi(2, 9).unwrap().scale_i64(2));
-    assert_eq!(r.iter().fold(Algebraic::zero(), |a, b| a + b), Algebraic::zero());
+    assert_eq!(
+        r.iter().fold(Algebraic::zero(), |a, b| a + b),
+        Algebraic::zero()
+    );
     assert_eq!(
         Algebraic::root_of(&f, 3).unwrap_err(),
         RootError::IndexOutOfRange { index: 3, count: 3 }
@@ -83,12 +86,18 @@ fn cubic_root_by_index_and_errors() {
         RootError::ZeroPolynomial
     );
     // A repeated and a rational root: x = 1/2 exactly.
-    let g = upoly(&[1, -2]).mul_ref(&upoly(&[1, -2])).mul_ref(&upoly(&[-2, 0, 1]));
+    let g = upoly(&[1, -2])
+        .mul_ref(&upoly(&[1, -2]))
+        .mul_ref(&upoly(&[-2, 0, 1]));
     assert_eq!(
         Algebraic::root_of(&g, 1).unwrap().to_rational(),
         Some(&Rational::new(1, 2).unwrap())
     );
-    assert!(r[0].to_string().starts_with("Root(x^3 - 3*x + 1, "), "{}", r[0]);
+    assert!(
+        r[0].to_string().starts_with("Root(x^3 - 3*x + 1, "),
+        "{}",
+        r[0]
+    );
     assert!(r[0].to_string().ends_with("≈ -1.8793852416"), "{}", r[0]);
 }
 
@@ -97,15 +106,25 @@ fn nested_radicals_denest_and_print() {
     assert_eq!(alg("sqrt(3 + 2 sqrt(2))").to_string(), "1 + sqrt(2)");
     assert_eq!(alg("sqrt(3 + 2 sqrt(2))"), alg("1 + sqrt(2)"));
     assert_eq!(alg("sqrt(5 - 2 sqrt(6))").to_string(), "-sqrt(2) + sqrt(3)");
-    assert_eq!(alg("sqrt(2 + sqrt(3))").to_string(), "(sqrt(2) + sqrt(6))/2");
+    assert_eq!(
+        alg("sqrt(2 + sqrt(3))").to_string(),
+        "(sqrt(2) + sqrt(6))/2"
+    );
     let c = alg("sqrt(2 + sqrt(2))/2");
     assert_eq!(c, Algebraic::cos_pi(1, 8).unwrap());
     assert_eq!(c.to_string(), "sqrt(2 + sqrt(2))/2");
     assert_eq!(c.minimal_polynomial(), Some(&upoly(&[1, 0, -8, 0, 8])));
-    assert_eq!(alg("-sqrt(2 + sqrt(3))").to_string(), "(-sqrt(2) - sqrt(6))/2");
+    assert_eq!(
+        alg("-sqrt(2 + sqrt(3))").to_string(),
+        "(-sqrt(2) - sqrt(6))/2"
+    );
     assert_eq!(alg("sqrt(7 - sqrt(5))").to_string(), "sqrt(7 - sqrt(5))");
     // Round trip of the printed form.
-    for s in ["sqrt(2 + sqrt(2))", "(1 - 3*sqrt(5))/7", "sqrt(7 - sqrt(5))/3"] {
+    for s in [
+        "sqrt(2 + sqrt(2))",
+        "(1 - 3*sqrt(5))/7",
+        "sqrt(7 - sqrt(5))/3",
+    ] {
         let x = alg(s);
         assert_eq!(alg(&x.to_string()), x, "{s} printed {x}");
     }
@@ -239,7 +258,10 @@ fn cos_two_pi_over_n_degrees_and_fifty_digits() {
         assert!(c.minimal_polynomial().is_some());
         let approx = Rational::from(cos_fixed(n)) / &scale;
         let (lo, hi) = c.enclosure(200);
-        assert!(lo.sub_ref(&tol) < approx && approx < hi.add_ref(&tol), "n = {n}");
+        assert!(
+            lo.sub_ref(&tol) < approx && approx < hi.add_ref(&tol),
+            "n = {n}"
+        );
         // The defining polynomial vanishes on the value (via the 50-digit value's sign change).
         let f = c.defining_polynomial();
         if !c.is_rational() {

@@ -56,9 +56,9 @@ mod bernstein_roots;
 mod descartes;
 mod isolate;
 mod limbs;
+mod resultant;
 #[cfg(test)]
 mod tests;
-mod resultant;
 mod upoly;
 pub mod w4;
 

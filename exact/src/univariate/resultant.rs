@@ -32,7 +32,11 @@ impl UPoly {
                 return Rational::ZERO;
             }
             let lb = b.leading_coefficient().pow((m - r.degree()) as u32);
-            acc = if (m * n) % 2 == 1 { -(acc * lb) } else { acc * lb };
+            acc = if (m * n) % 2 == 1 {
+                -(acc * lb)
+            } else {
+                acc * lb
+            };
             a = b;
             b = r;
         }
@@ -58,7 +62,9 @@ impl UPoly {
         let mut acc = UPoly::zero();
         for i in (0..n).rev() {
             let factor = UPoly::from_coeffs(vec![-points[i].0.clone(), Rational::ONE]);
-            acc = acc.mul_impl(&factor).add_impl(&UPoly::constant(dd[i].clone()));
+            acc = acc
+                .mul_impl(&factor)
+                .add_impl(&UPoly::constant(dd[i].clone()));
         }
         acc
     }
