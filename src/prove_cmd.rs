@@ -438,7 +438,7 @@ fn prove_algebraic_constants(
     };
     let method = "exact arithmetic of real algebraic numbers (resultants, isolating intervals)";
     if args.json {
-        crate::output::println(&json!({
+        crate::output::println(json!({
             "verdict": verdict,
             "method": method,
             "evidence": evidence,

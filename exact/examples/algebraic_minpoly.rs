@@ -38,7 +38,7 @@ fn main() {
         "sum" => {
             let mut acc = Algebraic::from_integer(0);
             for s in SUM {
-                acc = acc + s.parse::<Algebraic>().expect("a constant expression");
+                acc += s.parse::<Algebraic>().expect("a constant expression");
             }
             format!(
                 "\"poly\":{},\"decimal\":\"{}\"",

@@ -290,7 +290,7 @@ impl Eq for Algebraic {}
 
 impl PartialOrd for Algebraic {
     fn partial_cmp(&self, other: &Algebraic) -> Option<Ordering> {
-        Some(self.compare(other))
+        Some(self.cmp(other))
     }
 }
 
