@@ -18,13 +18,15 @@
 //! Inconsistent relations (`1 = 2`; `x = 1` and `x = 2`) are an input error. `--random K`
 //! evaluates instead at K random points modulo a prime drawn at random per run
 //! (`exactcheck_exact::prove::random`, which proves the printed error bound). Exit status:
-//! 0 proved or holds, 1 fails or undecided, 2 bad input.
+//! 0 proved or holds, 1 fails or undecided, 2 bad input. An identity between constants whose
+//! nested square roots do not denest (`sqrt(2 + sqrt(2))`) is decided in the real algebraic
+//! numbers (`exactcheck_exact::algebraic`).
 
 use crate::Error;
 use clap::Args;
 use exactcheck_core::Ring;
 use exactcheck_exact::expr::{
-    angles, describe_point, first_reserved, has_trig, library, Coefficient, Expr, PI,
+    angles, describe_point, first_reserved, has_trig, library, Coefficient, Expr, ExprError, PI,
 };
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
@@ -33,7 +35,7 @@ use exactcheck_exact::prove::{
     SquareRoot, Statement, Voice, HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
 };
 use exactcheck_exact::ratfun::RatFun;
-use exactcheck_exact::{Radical, Rational};
+use exactcheck_exact::{Algebraic, Radical, Rational};
 use serde_json::json;
 use std::fmt::Display;
 use std::process::ExitCode;
@@ -407,10 +409,70 @@ pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
             .chain(relations.iter().flat_map(|(a, b)| [a, b]))
             .any(has_trig);
     if radical {
+        if relations.is_empty() && domains.is_empty() && nonzero.is_empty() {
+            if let Some(code) = prove_algebraic_constants(args, &lhs, rhs.as_ref())? {
+                return Ok(code);
+            }
+        }
         prove_over::<Radical>(args, &lhs, rhs.as_ref(), &relations, &nonzero, &domains)
     } else {
         prove_over::<Rational>(args, &lhs, rhs.as_ref(), &relations, &nonzero, &domains)
     }
+}
+
+/// An identity between constants with a square root the square-root field [`Radical`] refuses
+/// (a nested radical that does not denest, such as `sqrt(2 + sqrt(2))`), decided exactly in the
+/// real algebraic numbers ([`Algebraic`]). `None` when a side has a variable or both sides lie
+/// in the square-root field, which then decides the identity as before.
+fn prove_algebraic_constants(
+    args: &ProveArgs,
+    lhs: &Expr,
+    rhs: Option<&Expr>,
+) -> Result<Option<ExitCode>, Error> {
+    let mut names = Vec::new();
+    lhs.collect_variables(&mut names);
+    if let Some(r) = rhs {
+        r.collect_variables(&mut names);
+    }
+    let refused = |e: &Expr| matches!(e.eval_constant::<Radical>(), Err(ExprError::NoSqrt { .. }));
+    if !names.is_empty() || !(refused(lhs) || rhs.is_some_and(refused)) {
+        return Ok(None);
+    }
+    let eval = |e: &Expr, what: &str| {
+        e.eval_constant::<Algebraic>()
+            .map_err(|err| Error::Input(format!("{what}: {err}")))
+    };
+    let l = eval(lhs, "LHS")?;
+    let r = match rhs {
+        Some(e) => eval(e, "RHS")?,
+        None => Algebraic::zero(),
+    };
+    let difference = l.clone() - r.clone();
+    let (verdict, code, evidence) = if difference.is_zero() {
+        (
+            "proved",
+            ExitCode::SUCCESS,
+            format!("LHS - RHS = 0 exactly: both sides are {l}"),
+        )
+    } else {
+        (
+            "fails",
+            ExitCode::from(1),
+            format!("LHS - RHS = {difference}, a non-zero constant (LHS = {l}, RHS = {r})"),
+        )
+    };
+    let method = "exact arithmetic of real algebraic numbers (resultants, isolating intervals)";
+    if args.json {
+        crate::output::println(json!({
+            "verdict": verdict,
+            "method": method,
+            "evidence": evidence,
+            "residual_terms": usize::from(!difference.is_zero()),
+        }))?;
+    } else {
+        crate::output::println(format_args!("{verdict}: {evidence}"))?;
+    }
+    Ok(Some(code))
 }
 
 fn to_ratfun<C: Coefficient + exactcheck_core::Field>(

@@ -183,6 +183,9 @@ limits! {
     CONSTANT_BITS = ("constant-bits", "size of a constant", "bits", 1_000_000);
     /// Distinct square-free radicands in one square-root field (its dimension over Q is 2^k).
     RADICANDS = ("radicands", "number of distinct square roots", "", 10);
+    /// Degree of the defining polynomial of one real algebraic number (an operation on two
+    /// numbers of degree `d` computes a resultant of degree up to `d^2`).
+    ALGEBRAIC_DEGREE = ("algebraic-degree", "degree of an algebraic number", "", 64);
     /// Distinct variables of one polynomial.
     VARIABLES = ("variables", "number of variables", "", 1_000);
     /// Terms of one polynomial during expansion.

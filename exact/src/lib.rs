@@ -10,6 +10,7 @@
 //! * sparse multivariate polynomials ([`poly`]) and their expression syntax ([`expr`]).
 #![warn(missing_docs)]
 
+pub mod algebraic;
 pub mod bigint;
 pub mod cylinder_sphere;
 pub mod expr;
@@ -29,6 +30,7 @@ pub mod traits;
 pub mod univariate;
 pub mod w1;
 
+pub use algebraic::Algebraic;
 pub use modp::ModP;
 pub use plain::PlainRational;
 pub use radical::{ComplexRadical, ParseRadicalError, Radical, Radicand};

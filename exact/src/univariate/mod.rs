@@ -56,6 +56,7 @@ mod bernstein_roots;
 mod descartes;
 mod isolate;
 mod limbs;
+mod resultant;
 #[cfg(test)]
 mod tests;
 mod upoly;

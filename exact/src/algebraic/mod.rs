@@ -1,0 +1,395 @@
+//! Real algebraic numbers: exact arithmetic, comparison and printing of numbers such as
+//! `sqrt(2 + sqrt(2))`, `cos(2 pi / 7)` or the middle real root of `x^3 - 3x + 1`.
+//!
+//! # Representation
+//! An [`Algebraic`] is a *defining polynomial* `f`, primitive with integer coefficients, a
+//! positive leading coefficient and no repeated factor, together with an isolating interval of
+//! one real root of `f` (a [`RootInterval`] with rational, in practice dyadic, endpoints):
+//! * a rational number is always given exactly: `f` is linear and the interval is the point;
+//! * an irrational number has an open interval `(lo, hi)` containing exactly one root of `f`,
+//!   neither endpoint a root; `f` has no rational root at all (rational roots are divided out
+//!   whenever a polynomial is formed), so it has degree at least 2.
+//!
+//! # Minimal and defining polynomials
+//! The defining polynomial is the **minimal polynomial** whenever
+//! [`Algebraic::minimal_polynomial`] returns it: for rationals, for every polynomial of degree
+//! 2 or 3 (no rational root, hence irreducible), for even quartics `x^4 + p x^2 + q` whose
+//! factorisation test fails (an even quartic factors over Q only in the two shapes that test
+//! tries), for roots of cyclotomic-derived polynomials ([`Algebraic::cos_pi`],
+//! [`Algebraic::sin_pi`]) and for their images under Moebius maps `(a x + b)/(c x + d)`,
+//! which preserve irreducibility. Otherwise the defining polynomial is square-free but possibly
+//! reducible: the workspace has no factoriser over Z (Zassenhaus or van Hoeij), so the
+//! resultant of a sum or product is only reduced by its square-free part, its rational roots,
+//! the quartic splitting above and, when two numbers are compared equal, by the gcd of their
+//! polynomials. **Every decision stays exact** regardless: a root is selected by a Sturm count
+//! on an interval, zero and equality tests reduce to gcds and interval inclusion, and no
+//! floating-point number is ever consulted.
+//!
+//! # Operations
+//! * `-x`, `1/x`, `x + q`, `q x` ([`Algebraic::mobius`]): substitution in the polynomial, which
+//!   keeps it minimal;
+//! * `x + y`, `x * y`: the resultants `Res_t(f(t), g(x - t))` and `Res_t(f(t), t^n g(x/t))`
+//!   ([`UPoly::resultant`], evaluated at integer points and interpolated), reduced as above;
+//!   the root is selected by interval arithmetic on refined operand intervals until only one
+//!   isolating interval of the result polynomial meets the enclosure;
+//! * `sqrt(x)` for `x >= 0`: `f(t^2)` and the positive root;
+//! * comparison: equal numbers are detected by `gcd(f, g)` having the root in both intervals,
+//!   different ones by refining both intervals until they separate.
+//!
+//! The anchors are FLINT's `qqbar` (which factors every polynomial and so always has minimal
+//! polynomials), Sage's `QQbar` and Mathematica's `Root`. The arithmetic here is hand-written
+//! because no crate of the dependency set offers exact real algebraic numbers.
+//!
+//! # Limits
+//! The degree of the defining polynomial is checked by [`Coefficient::check_limits`] against
+//! the `algebraic-degree` limit ([`limits::ALGEBRAIC_DEGREE`]) after every operation of the
+//! expression evaluator; an operation on two numbers within the limit `d` computes a resultant
+//! of degree at most `d^2`.
+//!
+//! # Layout
+//! Here: the type, construction, comparison and the trait implementations; `arith`: the
+//! arithmetic and the root selection; `trig`: cosines, sines and tangents of rational multiples
+//! of pi; `display`: printing as radicals or as `Root(...)`.
+
+mod arith;
+mod display;
+#[cfg(test)]
+mod tests;
+mod trig;
+
+pub use trig::TrigError;
+
+use crate::expr::Coefficient;
+use crate::univariate::{RootInterval, UPoly};
+use crate::Rational;
+use exactcheck_core::limits::{self, LimitError};
+use exactcheck_core::{Field, Ring, Sign, ZeroDivisor};
+use std::cmp::Ordering;
+
+/// A real algebraic number, exactly: see the [module documentation](self).
+#[derive(Clone)]
+pub struct Algebraic {
+    /// Primitive, integer coefficients, positive leading coefficient, square-free, no rational
+    /// root unless linear.
+    poly: UPoly,
+    /// Exact iff the number is rational; otherwise isolates the number among the roots of `poly`.
+    iv: RootInterval,
+    /// Whether `poly` is known to be irreducible (hence the minimal polynomial).
+    minimal: bool,
+}
+
+/// The error of [`Algebraic::root_of`].
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum RootError {
+    /// The polynomial is zero (every number is a root).
+    #[error("the zero polynomial has no isolated roots")]
+    ZeroPolynomial,
+    /// The index is not below the number of distinct real roots.
+    #[error("root index {index} is out of range: the polynomial has {count} distinct real roots")]
+    IndexOutOfRange {
+        /// The index asked for.
+        index: usize,
+        /// The number of distinct real roots.
+        count: usize,
+    },
+}
+
+impl Algebraic {
+    /// The rational number `q`.
+    pub fn from_rational(q: Rational) -> Algebraic {
+        let poly = UPoly::from_coeffs(vec![-q.clone(), Rational::ONE]).primitive_part();
+        Algebraic {
+            poly,
+            iv: RootInterval::exact(q),
+            minimal: true,
+        }
+    }
+
+    /// The integer `n`.
+    pub fn from_integer(n: i64) -> Algebraic {
+        Algebraic::from_rational(Rational::from_integer(n))
+    }
+
+    /// The real root number `index` (from 0, in increasing order, counting each distinct root
+    /// once) of the non-zero polynomial `poly`.
+    ///
+    /// # Errors
+    /// [`RootError::ZeroPolynomial`], or [`RootError::IndexOutOfRange`] with the number of
+    /// distinct real roots.
+    pub fn root_of(poly: &UPoly, index: usize) -> Result<Algebraic, RootError> {
+        if poly.is_zero() {
+            return Err(RootError::ZeroPolynomial);
+        }
+        let f = poly.square_free_part().primitive_part();
+        let roots = f.isolate_roots();
+        match roots.get(index) {
+            Some(ri) => Ok(Algebraic::from_isolated(f, ri.clone(), &roots, false)),
+            None => Err(RootError::IndexOutOfRange {
+                index,
+                count: roots.len(),
+            }),
+        }
+    }
+
+    /// The defining polynomial (integer coefficients, primitive, square-free; see the
+    /// [module documentation](self) for when it is minimal).
+    pub fn defining_polynomial(&self) -> &UPoly {
+        &self.poly
+    }
+
+    /// The minimal polynomial over Q (primitive, integer coefficients, positive leading
+    /// coefficient) when the defining polynomial is known to be irreducible, `None` otherwise.
+    pub fn minimal_polynomial(&self) -> Option<&UPoly> {
+        self.minimal.then_some(&self.poly)
+    }
+
+    /// The current isolating interval (a point for a rational number).
+    pub fn interval(&self) -> &RootInterval {
+        &self.iv
+    }
+
+    /// The value, if it is rational.
+    pub fn to_rational(&self) -> Option<&Rational> {
+        self.iv.exact_value()
+    }
+
+    /// Whether the number is rational.
+    pub fn is_rational(&self) -> bool {
+        self.iv.is_exact()
+    }
+
+    /// An interval `[lo, hi]` containing the number, of width at most `2^-bits` (a point for a
+    /// rational number).
+    pub fn enclosure(&self, bits: u32) -> (Rational, Rational) {
+        if self.iv.is_exact() {
+            return (self.iv.lo.clone(), self.iv.lo.clone());
+        }
+        let width = Rational::from_dyadic(&num_bigint::BigInt::from(1), u64::from(bits));
+        if self.iv.width() <= width {
+            return (self.iv.lo.clone(), self.iv.hi.clone());
+        }
+        let ri = self.poly.refine(&self.iv, &width);
+        (ri.lo, ri.hi)
+    }
+
+    /// The sign, exactly.
+    pub fn sign(&self) -> Sign {
+        if let Some(q) = self.to_rational() {
+            return q.signum();
+        }
+        // An irrational number is not 0, so refinement separates the interval from 0.
+        let mut bits = 8;
+        loop {
+            let (lo, hi) = self.enclosure(bits);
+            if lo.signum() == Sign::Positive {
+                return Sign::Positive;
+            }
+            if hi.signum() == Sign::Negative {
+                return Sign::Negative;
+            }
+            bits *= 2;
+        }
+    }
+
+    /// Exact equality of two irrational numbers: the gcd of the defining polynomials must vanish
+    /// at `self`, which is then a root of `other`'s polynomial, and equal to `other` exactly when
+    /// it lies in `other`'s isolating interval (whose ends are not roots).
+    fn equal_irrational(&self, other: &Algebraic) -> bool {
+        if self.iv.hi <= other.iv.lo || other.iv.hi <= self.iv.lo {
+            return false;
+        }
+        if self.poly == other.poly {
+            // Same polynomial: the same root iff the isolating intervals overlap, and they do.
+            return self.poly.count_roots(
+                &self.iv.lo.clone().max(other.iv.lo.clone()),
+                &self.iv.hi.clone().min(other.iv.hi.clone()),
+            ) == 1;
+        }
+        let h = self.poly.gcd(&other.poly);
+        if h.degree() == 0 || h.count_roots(&self.iv.lo, &self.iv.hi) == 0 {
+            return false;
+        }
+        let mut bits = 8;
+        loop {
+            let (lo, hi) = self.enclosure(bits);
+            if other.iv.lo < lo && hi < other.iv.hi {
+                return true;
+            }
+            if hi <= other.iv.lo || other.iv.hi <= lo {
+                return false;
+            }
+            bits *= 2;
+        }
+    }
+
+    /// The order of two numbers, exactly.
+    pub fn compare(&self, other: &Algebraic) -> Ordering {
+        match (self.to_rational(), other.to_rational()) {
+            (Some(a), Some(b)) => return a.cmp(b),
+            (None, None) if self.equal_irrational(other) => return Ordering::Equal,
+            _ => {}
+        }
+        // Different numbers: refine both until the enclosures separate.
+        let mut bits = 8;
+        loop {
+            let (alo, ahi) = self.enclosure(bits);
+            let (blo, bhi) = other.enclosure(bits);
+            if ahi < blo {
+                return Ordering::Less;
+            }
+            if bhi < alo {
+                return Ordering::Greater;
+            }
+            bits *= 2;
+        }
+    }
+
+    /// The degree of the defining polynomial.
+    pub fn degree(&self) -> usize {
+        self.poly.degree()
+    }
+
+    /// The absolute value.
+    pub fn abs(&self) -> Algebraic {
+        if self.sign() == Sign::Negative {
+            self.neg_ref()
+        } else {
+            self.clone()
+        }
+    }
+
+    /// The non-negative square root, `None` for a negative number.
+    pub fn sqrt(&self) -> Option<Algebraic> {
+        match self.sign() {
+            Sign::Negative => None,
+            Sign::Zero => Some(Algebraic::zero()),
+            Sign::Positive => Some(self.sqrt_positive()),
+        }
+    }
+
+    /// The multiplicative inverse, or [`ZeroDivisor`] for zero.
+    pub fn inverse(&self) -> Result<Algebraic, ZeroDivisor> {
+        if self.is_zero() {
+            return Err(ZeroDivisor);
+        }
+        let zero = Rational::ZERO;
+        let one = Rational::ONE;
+        Ok(self.mobius(&zero, &one, &one, &zero))
+    }
+}
+
+// ------------------------------------------------------------------------------ traits
+
+impl PartialEq for Algebraic {
+    fn eq(&self, other: &Algebraic) -> bool {
+        self.compare(other) == Ordering::Equal
+    }
+}
+
+impl Eq for Algebraic {}
+
+impl PartialOrd for Algebraic {
+    fn partial_cmp(&self, other: &Algebraic) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl Ord for Algebraic {
+    fn cmp(&self, other: &Algebraic) -> Ordering {
+        self.compare(other)
+    }
+}
+
+impl Default for Algebraic {
+    fn default() -> Algebraic {
+        Algebraic::zero()
+    }
+}
+
+impl From<Rational> for Algebraic {
+    fn from(q: Rational) -> Algebraic {
+        Algebraic::from_rational(q)
+    }
+}
+
+impl From<i64> for Algebraic {
+    fn from(n: i64) -> Algebraic {
+        Algebraic::from_integer(n)
+    }
+}
+
+exactcheck_core::ring_ops! {
+    impl[] Algebraic;
+    Neg::neg: |a| a.neg_impl();
+    Add::add, AddAssign::add_assign: |a, b| a.add_impl(b);
+    Sub::sub, SubAssign::sub_assign: |a, b| a.add_impl(&b.neg_impl());
+    Mul::mul, MulAssign::mul_assign: |a, b| a.mul_impl(b);
+    Div::div, DivAssign::div_assign: |a, b| a.mul_impl(&b.inverse().expect("division of an algebraic number by zero"));
+}
+
+impl Ring for Algebraic {
+    fn zero() -> Self {
+        Algebraic::from_integer(0)
+    }
+    fn one() -> Self {
+        Algebraic::from_integer(1)
+    }
+    fn from_i64(n: i64) -> Self {
+        Algebraic::from_integer(n)
+    }
+    fn is_zero(&self) -> bool {
+        self.to_rational().is_some_and(|q| q.is_zero())
+    }
+    fn add_ref(&self, rhs: &Self) -> Self {
+        self.add_impl(rhs)
+    }
+    fn mul_ref(&self, rhs: &Self) -> Self {
+        self.mul_impl(rhs)
+    }
+    fn neg_ref(&self) -> Self {
+        self.neg_impl()
+    }
+    fn square(&self) -> Self {
+        self.square_impl()
+    }
+}
+
+impl Field for Algebraic {
+    fn inv(&self) -> Result<Self, ZeroDivisor> {
+        self.inverse()
+    }
+}
+
+impl Coefficient for Algebraic {
+    fn from_rational(q: &Rational) -> Option<Self> {
+        Some(Algebraic::from_rational(q.clone()))
+    }
+    fn try_inverse(&self) -> Option<Self> {
+        self.inverse().ok()
+    }
+    /// The non-negative root of a non-negative number.
+    fn try_sqrt(&self) -> Option<Self> {
+        self.sqrt()
+    }
+    fn sqrt_hint() -> &'static str {
+        " (it is negative: no real square root)"
+    }
+    /// The size of a rational value; 0 for an irrational one, whose size is bounded by the
+    /// `algebraic-degree` limit instead (the coefficients of the defining polynomial of `x^k`
+    /// need not grow linearly in `k`, so they give no lower bound).
+    fn size_bits(&self) -> u64 {
+        self.to_rational().map_or(0, Coefficient::size_bits)
+    }
+    fn check_limits(&self) -> Result<(), LimitError> {
+        limits::ALGEBRAIC_DEGREE.check_usize(self.degree())
+    }
+}
+
+impl std::str::FromStr for Algebraic {
+    type Err = crate::expr::ExprError;
+    /// A constant expression of the one grammar ([`crate::expr`]), evaluated exactly:
+    /// `"sqrt(2 + sqrt(2))/2"`.
+    fn from_str(s: &str) -> Result<Algebraic, Self::Err> {
+        crate::expr::parse_expr(s)?.eval_constant()
+    }
+}

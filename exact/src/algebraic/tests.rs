@@ -1,0 +1,320 @@
+use super::*;
+use crate::Radical;
+use exactcheck_core::OrderedField;
+use num_bigint::BigInt;
+use proptest::prelude::*;
+
+fn alg(s: &str) -> Algebraic {
+    s.parse().unwrap_or_else(|e| panic!("{s}: {e}"))
+}
+
+fn upoly(c: &[i64]) -> UPoly {
+    UPoly::from_i64_coeffs(c)
+}
+
+fn sqrt_int(n: i64) -> Algebraic {
+    Algebraic::from_integer(n).sqrt().expect("non-negative")
+}
+
+#[test]
+fn resultant_matches_known_values() {
+    // Res(x^2 - 2, x^2 - 3) = prod over +-sqrt 2 of (2 - 3) = 1.
+    assert_eq!(
+        upoly(&[-2, 0, 1]).resultant(&upoly(&[-3, 0, 1])),
+        Rational::ONE
+    );
+    // Res(x - a, g) = g(a).
+    let g = upoly(&[5, -1, 3]);
+    assert_eq!(
+        upoly(&[-7, 1]).resultant(&g),
+        g.eval(&Rational::from_integer(7))
+    );
+    // Res(A, B) = (-1)^(mn) Res(B, A) with m = 3, n = 2; a common root gives 0.
+    let a = upoly(&[1, 2, 0, 1]);
+    assert_eq!(a.resultant(&g), g.resultant(&a));
+    assert!(upoly(&[-1, 0, 1]).resultant(&upoly(&[-1, 1])).is_zero());
+    // Sylvester determinant by hand: Res(x^2 + 1, 2x + 3) = 4 * ((-3/2)^2 + 1) = 13.
+    assert_eq!(
+        upoly(&[1, 0, 1]).resultant(&upoly(&[3, 2])),
+        Rational::from_integer(13)
+    );
+}
+
+#[test]
+fn interpolation_recovers_a_polynomial() {
+    let p = upoly(&[3, -1, 0, 2, 5]);
+    let pts: Vec<_> = (-2..3)
+        .map(|x| {
+            let x = Rational::from_integer(x);
+            (x.clone(), p.eval(&x))
+        })
+        .collect();
+    assert_eq!(UPoly::interpolate(&pts), p);
+    assert_eq!(upoly(&[1, 2, 3]).reversed(), upoly(&[3, 2, 1]));
+}
+
+#[test]
+fn sum_of_square_roots_has_the_known_minimal_polynomial() {
+    let s = sqrt_int(2) + sqrt_int(3);
+    assert_eq!(s.minimal_polynomial(), Some(&upoly(&[1, 0, -10, 0, 1])));
+    let p = sqrt_int(2) * sqrt_int(3);
+    assert_eq!(p.defining_polynomial(), &upoly(&[-6, 0, 1]));
+    assert_eq!(p.to_string(), "sqrt(6)");
+    // The difference of conjugates and a cancellation back to a rational.
+    assert_eq!((s.clone() - sqrt_int(3)).to_string(), "sqrt(2)");
+    let back = s.clone() - sqrt_int(2) - sqrt_int(3);
+    assert!(back.is_zero());
+    assert_eq!((s.clone() * s).to_string(), "5 + 2*sqrt(6)");
+}
+
+#[test]
+fn cubic_root_by_index_and_errors() {
+    let f = upoly(&[1, -3, 0, 1]); // x^3 - 3x + 1: roots 2 cos(2 pi k / 9)
+    let r: Vec<Algebraic> = (0..3).map(|i| Algebraic::root_of(&f, i).unwrap()).collect();
+    assert!(r[0] < r[1] && r[1] < r[2]);
+    assert_eq!(r[2], Algebraic::cos_pi(2, 9).unwrap().scale_i64(2));
+    assert_eq!(
+        r.iter().fold(Algebraic::zero(), |a, b| a + b),
+        Algebraic::zero()
+    );
+    assert_eq!(
+        Algebraic::root_of(&f, 3).unwrap_err(),
+        RootError::IndexOutOfRange { index: 3, count: 3 }
+    );
+    assert_eq!(
+        Algebraic::root_of(&UPoly::zero(), 0).unwrap_err(),
+        RootError::ZeroPolynomial
+    );
+    // A repeated and a rational root: x = 1/2 exactly.
+    let g = upoly(&[1, -2])
+        .mul_ref(&upoly(&[1, -2]))
+        .mul_ref(&upoly(&[-2, 0, 1]));
+    assert_eq!(
+        Algebraic::root_of(&g, 1).unwrap().to_rational(),
+        Some(&Rational::new(1, 2).unwrap())
+    );
+    assert!(
+        r[0].to_string().starts_with("Root(x^3 - 3*x + 1, "),
+        "{}",
+        r[0]
+    );
+    assert!(r[0].to_string().ends_with("≈ -1.8793852416"), "{}", r[0]);
+}
+
+#[test]
+fn nested_radicals_denest_and_print() {
+    assert_eq!(alg("sqrt(3 + 2 sqrt(2))").to_string(), "1 + sqrt(2)");
+    assert_eq!(alg("sqrt(3 + 2 sqrt(2))"), alg("1 + sqrt(2)"));
+    assert_eq!(alg("sqrt(5 - 2 sqrt(6))").to_string(), "-sqrt(2) + sqrt(3)");
+    assert_eq!(
+        alg("sqrt(2 + sqrt(3))").to_string(),
+        "(sqrt(2) + sqrt(6))/2"
+    );
+    let c = alg("sqrt(2 + sqrt(2))/2");
+    assert_eq!(c, Algebraic::cos_pi(1, 8).unwrap());
+    assert_eq!(c.to_string(), "sqrt(2 + sqrt(2))/2");
+    assert_eq!(c.minimal_polynomial(), Some(&upoly(&[1, 0, -8, 0, 8])));
+    assert_eq!(
+        alg("-sqrt(2 + sqrt(3))").to_string(),
+        "(-sqrt(2) - sqrt(6))/2"
+    );
+    assert_eq!(alg("sqrt(7 - sqrt(5))").to_string(), "sqrt(7 - sqrt(5))");
+    // Round trip of the printed form.
+    for s in [
+        "sqrt(2 + sqrt(2))",
+        "(1 - 3*sqrt(5))/7",
+        "sqrt(7 - sqrt(5))/3",
+    ] {
+        let x = alg(s);
+        assert_eq!(alg(&x.to_string()), x, "{s} printed {x}");
+    }
+}
+
+#[test]
+fn signs_zero_tests_and_comparison() {
+    let x = alg("sqrt(2) + sqrt(3)");
+    let y = alg("sqrt(10)");
+    // (sqrt 2 + sqrt 3)^2 = 5 + 2 sqrt 6 < 10 since 2 sqrt 6 < 5.
+    assert!(x < y);
+    assert_eq!((x.clone() - y.clone()).sign(), Sign::Negative);
+    let z = x.clone() * x.clone() - alg("5 + 2 sqrt(6)");
+    assert!(z.is_zero());
+    assert_eq!(z.sign(), Sign::Zero);
+    // Close but different: sqrt(2) vs 1.41421356237 and vs 99/70.
+    assert!(alg("sqrt(2)") > alg("1.41421356237"));
+    assert!(alg("sqrt(2)") < alg("99/70"));
+    assert_eq!(alg("sqrt(2)").inverse().unwrap(), alg("sqrt(2)/2"));
+    assert!(Algebraic::zero().inverse().is_err());
+    assert!(alg("1 - sqrt(2)").sqrt().is_none());
+    assert_eq!(alg("(1 + sqrt(2))^2").sqrt().unwrap(), alg("1 + sqrt(2)"));
+}
+
+#[test]
+fn cosines_of_small_angles_print_as_radicals() {
+    let c = |p, q| Algebraic::cos_pi(p, q).unwrap().to_string();
+    assert_eq!(c(1, 5), "(1 + sqrt(5))/4");
+    assert_eq!(c(2, 5), "(-1 + sqrt(5))/4");
+    assert_eq!(c(1, 3), "1/2");
+    assert_eq!(c(1, 2), "0");
+    assert_eq!(c(1, 1), "-1");
+    assert_eq!(c(0, 7), "1");
+    assert_eq!(c(1, 6), "sqrt(3)/2");
+    assert_eq!(c(-1, 4), "sqrt(2)/2");
+    assert_eq!(c(3, 4), "-sqrt(2)/2");
+    assert_eq!(c(7, 4), "sqrt(2)/2");
+    assert_eq!(c(1, -3), "1/2");
+    let s = |p, q| Algebraic::sin_pi(p, q).unwrap().to_string();
+    assert_eq!(s(1, 6), "1/2");
+    assert_eq!(s(1, 4), "sqrt(2)/2");
+    assert_eq!(s(-1, 2), "-1");
+    assert_eq!(s(1, 1), "0");
+    assert_eq!(s(1, 10), "(-1 + sqrt(5))/4");
+    let t = |p, q| Algebraic::tan_pi(p, q).unwrap().to_string();
+    assert_eq!(t(1, 4), "1");
+    assert_eq!(t(1, 8), "-1 + sqrt(2)");
+    assert_eq!(t(1, 3), "sqrt(3)");
+    assert_eq!(t(-1, 6), "-sqrt(3)/3");
+    assert_eq!(t(3, 4), "-1");
+    assert_eq!(
+        Algebraic::tan_pi(1, 2).unwrap_err(),
+        TrigError::TanUndefined { p: 1, q: 2 }
+    );
+    assert_eq!(
+        Algebraic::cos_pi(1, 0).unwrap_err(),
+        TrigError::ZeroDenominator
+    );
+    assert!(matches!(
+        Algebraic::cos_pi(1, i64::MAX),
+        Err(TrigError::Limit(_))
+    ));
+    // cos(2 pi/7): the cubic 8x^3 + 4x^2 - 4x - 1.
+    let c7 = Algebraic::cos_pi(2, 7).unwrap();
+    assert_eq!(c7.minimal_polynomial(), Some(&upoly(&[-1, -4, 4, 8])));
+    // sin^2 + cos^2 = 1 and tan = sin/cos, through the resultant arithmetic.
+    for (p, q) in [(1, 7), (3, 11), (5, 12), (-2, 9)] {
+        let (s, c) = (
+            Algebraic::sin_pi(p, q).unwrap(),
+            Algebraic::cos_pi(p, q).unwrap(),
+        );
+        assert_eq!(s.square() + c.square(), Algebraic::one(), "{p}/{q}");
+        assert_eq!(Algebraic::tan_pi(p, q).unwrap(), s / c, "{p}/{q}");
+    }
+}
+
+// ------------------------------------------------------------------------------ 50 digits
+
+/// `floor(atan(1/x) * scale)` up to a few units, by the alternating series.
+fn atan_inv(x: u64, scale: &BigInt) -> BigInt {
+    let x2 = BigInt::from(x * x);
+    let mut power = scale / BigInt::from(x); // scale / x^(2k+1)
+    let mut sum = BigInt::from(0);
+    let mut k = 0u64;
+    while power != BigInt::from(0) {
+        let term = &power / BigInt::from(2 * k + 1);
+        if k % 2 == 0 {
+            sum += term;
+        } else {
+            sum -= term;
+        }
+        power /= &x2;
+        k += 1;
+    }
+    sum
+}
+
+/// `cos(2 pi / n) * 10^60` to within a few units, by Machin's formula and the Taylor series in
+/// fixed point: an evaluation independent of the algebraic machinery.
+fn cos_fixed(n: u64) -> BigInt {
+    let scale = BigInt::from(10).pow(60);
+    let pi = atan_inv(5, &scale) * 16 - atan_inv(239, &scale) * 4;
+    let theta = pi * 2 / BigInt::from(n);
+    let theta2 = &theta * &theta / &scale;
+    let mut term = scale.clone();
+    let mut sum = scale.clone();
+    let mut k = 1u64;
+    while term != BigInt::from(0) {
+        let t: BigInt = &term * &theta2 / &scale;
+        term = -t / BigInt::from((2 * k - 1) * (2 * k));
+        sum += &term;
+        k += 1;
+    }
+    sum
+}
+
+fn totient_naive(n: u64) -> usize {
+    (1..=n)
+        .filter(|k| num_integer::Integer::gcd(k, &n) == 1)
+        .count()
+}
+
+#[test]
+fn cos_two_pi_over_n_degrees_and_fifty_digits() {
+    let tol = Rational::from(BigInt::from(10).pow(50)).recip().unwrap();
+    let scale = Rational::from(BigInt::from(10).pow(60));
+    for n in 1..=60u64 {
+        let c = Algebraic::cos_pi(2, n as i64).unwrap();
+        let expected = if n <= 2 { 1 } else { totient_naive(n) / 2 };
+        assert_eq!(c.degree(), expected, "n = {n}");
+        assert!(c.minimal_polynomial().is_some());
+        let approx = Rational::from(cos_fixed(n)) / &scale;
+        let (lo, hi) = c.enclosure(200);
+        assert!(
+            lo.sub_ref(&tol) < approx && approx < hi.add_ref(&tol),
+            "n = {n}"
+        );
+        // The defining polynomial vanishes on the value (via the 50-digit value's sign change).
+        let f = c.defining_polynomial();
+        if !c.is_rational() {
+            assert_ne!(f.sign_at(&lo.sub_ref(&tol)), f.sign_at(&hi.add_ref(&tol)));
+        }
+    }
+}
+
+// ------------------------------------------------------------------------------ vs Radical
+
+/// `a + b sqrt(c)` in both types.
+fn both(a: i64, b: i64, c: u64) -> (Algebraic, Radical) {
+    let alg = Algebraic::from_integer(a)
+        + Algebraic::from_integer(b) * Algebraic::from_integer(c as i64).sqrt().unwrap();
+    let rad = Radical::from_i64(a) + Radical::from_i64(b) * Radical::sqrt_of(c);
+    (alg, rad)
+}
+
+fn from_radical(r: &Radical) -> Algebraic {
+    alg(&r.to_string())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    #[test]
+    fn radical_arithmetic_agrees(
+        a in -9i64..10, b in -9i64..10, c in 2u64..12,
+        d in -9i64..10, e in -9i64..10, f in 2u64..12,
+    ) {
+        let (x, rx) = both(a, b, c);
+        let (y, ry) = both(d, e, f);
+        prop_assert_eq!(x.sign(), rx.sign());
+        prop_assert_eq!(x.compare(&y), rx.clone().sub_ref(&ry).sign().cmp(&Sign::Zero));
+        prop_assert_eq!(x.add_ref(&y), from_radical(&rx.add_ref(&ry)));
+        prop_assert_eq!(x.mul_ref(&y), from_radical(&rx.mul_ref(&ry)));
+        prop_assert_eq!((x.clone() - y.clone()).is_zero(), rx == ry);
+        if !ry.is_zero() {
+            prop_assert_eq!(x.clone() / y.clone(), from_radical(&(rx.clone() / ry.clone())));
+        }
+        // A quadratic irrational prints as the Radical field's number.
+        prop_assert_eq!(alg(&x.to_string()), x.clone());
+        if let Some(s) = crate::expr::Coefficient::try_sqrt(&rx) {
+            prop_assert_eq!(x.sqrt().unwrap(), from_radical(&s));
+        }
+    }
+}
+
+#[test]
+fn degree_limit_and_parse_errors() {
+    let x = alg("sqrt(2) + sqrt(3) + sqrt(5)");
+    assert_eq!(x.degree(), 8);
+    assert!(x.check_limits().is_ok());
+    assert!("sqrt(-2)".parse::<Algebraic>().is_err());
+    assert!("x + 1".parse::<Algebraic>().is_err());
+}
