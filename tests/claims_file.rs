@@ -699,3 +699,23 @@ fn angles_and_pi_as_printed_are_decided() {
     assert_eq!(row("angles.pi")["verdict"], "fails");
     assert!(evidence("angles.pi").contains("pi is transcendental"));
 }
+
+#[test]
+fn the_curvature_of_a_rational_quadratic_from_derivatives_of_fractions_is_proved() {
+    let out = exactcheck(&[
+        "verify",
+        "tests/claims_file/rational_curvature.toml",
+        "--json",
+    ]);
+    assert_eq!(out.status.code(), Some(0), "{out:?}");
+    let rows: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let row = &rows.as_array().unwrap()[0];
+    assert_eq!(row["verdict"], "proved", "{row}");
+    assert!(
+        row["evidence"]
+            .as_str()
+            .unwrap()
+            .contains("with the denominators cleared"),
+        "{row}"
+    );
+}

@@ -312,7 +312,7 @@ fn errors_are_typed() {
         Err(ParseRadicalError::NoSqrt { pos: 4, .. })
     ));
     assert!(matches!(
-        "cos(1)".parse::<Radical>(),
+        "log(1)".parse::<Radical>(),
         Err(ParseRadicalError::UnknownFunction { pos: 0, .. })
     ));
     let e = "2 * * 3".parse::<Radical>().unwrap_err();

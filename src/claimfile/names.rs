@@ -60,6 +60,12 @@ pub fn near(a: &str, b: &str) -> bool {
     if x.len().max(y.len()) < 2 || distance(&x, &y) != 1 {
         return false;
     }
+    // Single letters with one index (`w0`, `B0`): different letters are different symbols, as
+    // `x` and `y` are.
+    let stem = |c: &[char]| -> usize { c.iter().take_while(|ch| !ch.is_ascii_digit()).count() };
+    if stem(&x) <= 1 && stem(&y) <= 1 && x.first() != y.first() {
+        return false;
+    }
     // One digit for another at the same place: an index, not a typo.
     let digit_swap = x.len() == y.len()
         && x.iter()
@@ -173,6 +179,10 @@ mod tests {
             "single letters are not typos of each other"
         );
         assert!(!near("x0", "x1"), "an index is not a typo");
+        assert!(
+            !near("w0", "B0"),
+            "indexed single letters are different symbols"
+        );
         assert!(!near("ab", "xy") && !near("A", "A"));
         assert!(is_name("A_1") && !is_name("1a") && !is_name("a-b") && !is_name(""));
     }

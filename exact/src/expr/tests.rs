@@ -188,14 +188,14 @@ fn scientific_notation_and_juxtaposition() {
 fn unknown_functions_are_errors() {
     // Regression: `sin(x)` was the product sin*x of a variable sin.
     assert_eq!(
-        err("sin(x)"),
-        "unknown function 'sin' at 0: the functions are sqrt, diff, integrate, sum, \
-         binomial and factorial (write 'sin*(...)' for a product)"
+        err("exp(x)"),
+        "unknown function 'exp' at 0: the functions are sqrt, diff, integrate, sum, \
+         binomial, factorial, sin, cos, tan (write 'exp*(...)' for a product)"
     );
     assert_eq!(
-        err("2 sin(2x)"),
-        "unknown function 'sin' at 2: the functions are sqrt, diff, integrate, sum, \
-         binomial and factorial (write 'sin*(...)' for a product)"
+        err("2 exp(2x)"),
+        "unknown function 'exp' at 2: the functions are sqrt, diff, integrate, sum, \
+         binomial, factorial, sin, cos, tan (write 'exp*(...)' for a product)"
     );
     assert!(err("x (y+1)").starts_with("unknown function 'x' at 0"));
     let mut v = Vars::new();

@@ -176,7 +176,7 @@ pub const TRIG_DENOMINATORS: &[u32] = &[1, 2, 3, 4, 6, 12];
 /// use exactcheck_exact::{Radical, Rational};
 ///
 /// let c: Radical = trig_constant(&Rational::new(1, 4).unwrap(), Trig::Cos).unwrap();
-/// assert_eq!(c.to_string(), "1/2*sqrt(2)");
+/// assert_eq!(c.to_string(), "sqrt(2)/2");
 /// let t: Radical = trig_constant(&Rational::new(1, 12).unwrap(), Trig::Tan).unwrap();
 /// assert_eq!(t, "2 - sqrt(3)".parse().unwrap());
 /// assert!(trig_constant::<Radical>(&Rational::new(1, 2).unwrap(), Trig::Tan).is_err());

@@ -411,15 +411,15 @@ mod tests {
         let (r, vars) = report("(a+b)^3", "a^3 + 3*a^2*b + 3*a*b^2");
         assert_eq!(
             phrasing(Voice::Prove, &vars).evidence(&r),
-            "at a = 1/2, b = 3/2 LHS - RHS = 27/8; LHS - RHS reduces to b^3, so LHS = RHS + (b^3)"
+            "at a = 0, b = 1 LHS - RHS = 1; LHS - RHS reduces to b^3, so LHS = RHS + (b^3)"
         );
         assert_eq!(
             phrasing(Voice::ClaimsFile, &vars).evidence(&r),
-            "at a = 1/2, b = 3/2 LHS - RHS = 27/8; LHS - RHS reduces to b^3"
+            "at a = 0, b = 1 LHS - RHS = 1; LHS - RHS reduces to b^3"
         );
         assert_eq!(
             phrasing(Voice::Catalogue, &vars).evidence(&r),
-            "the residual is not zero: at a = 1/2, b = 3/2 it is 27/8; it reduces to b^3"
+            "the residual is not zero: at a = 0, b = 1 it is 1; it reduces to b^3"
         );
         assert_eq!(
             phrasing(Voice::Prove, &vars).method::<Rational>(),

@@ -117,7 +117,7 @@ exactcheck_core::ring_ops! {
 ///
 /// let parse = |s: &str| s.parse::<Radical>().unwrap_err();
 /// assert!(matches!(parse("2 * * 3"), E::Unexpected { pos: 4, .. }));
-/// assert!(matches!(parse("cos(1)"), E::UnknownFunction { pos: 0, .. }));
+/// assert!(matches!(parse("log(1)"), E::UnknownFunction { pos: 0, .. }));
 /// assert!(matches!(parse("1/(2 - 2)"), E::DivisionByZero { pos: 2 }));
 /// assert!(matches!(parse("sqrt(-2)"), E::NoSqrt { pos: 0, .. }));
 /// assert_eq!(
