@@ -104,7 +104,8 @@ pub enum Side {
 pub enum RadiusBound<T> {
     /// The exact value.
     Exact(T),
-    /// `lo < rho_min <= hi` (certified by exact root isolation).
+    /// `lo < rho_min <= hi` (certified exactly: Bernstein enclosures of the radius at isolated
+    /// critical points, or exact root isolation).
     Within(T, T),
 }
 
@@ -114,8 +115,11 @@ pub struct MinRadius<T> {
     /// The value.
     pub value: RadiusBound<T>,
     /// For an exact value: the parameters in `[0, 1]` where `rho = rho_min` (the zeros of
-    /// `sigma^2 - 2 rho_min w`). For an enclosure `(lo, hi]`: the zeros of `sigma^2 - 2 hi w`,
-    /// which bracket every parameter where the minimum is attained.
+    /// `sigma^2 - 2 rho_min w`). For an enclosure `(lo, hi]`: isolating intervals of the
+    /// critical points of `rho` (zeros of `2 sigma' w - sigma w'` with `w > 0`) whose enclosure
+    /// of `rho` reaches down to `hi`; the minimum is attained at one of them (or, for an
+    /// inexact scalar that falls back to bisection on the radius, the zeros of
+    /// `sigma^2 - 2 hi w`).
     pub attained: Vec<IsolatedRoot<T>>,
 }
 
