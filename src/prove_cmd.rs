@@ -540,35 +540,16 @@ fn prove_over<C: PointField + Display>(
             RatFun::from_poly(Poly::zero()),
         ));
     }
-    // Every angle `x` of sin, cos, tan: its cosine and sine lie on the unit circle.
-    let angle_list = angles(&vars);
-    let user_relations = rels.len();
-    for a in &angle_list {
-        rels.push((
-            RatFun::from_poly(a.relation()),
-            RatFun::from_poly(Poly::zero()),
-        ));
-    }
+    let Angles {
+        list: angle_list,
+        pi,
+        pi_in_relations,
+        mixed,
+        user_relations,
+    } = add_angles(&vars, &mut rels);
     let circle_texts: Vec<String> = angle_list
         .iter()
         .map(|a| format!("cos({0})^2 + sin({0})^2 = 1", a.name))
-        .collect();
-    // pi is the constant: an indeterminate while deciding (it is transcendental, so a
-    // polynomial identity in it holds iff it holds with pi indeterminate).
-    let pi = vars.get(PI);
-    // A counter-example fixes pi and the angles' cosines and sines independently of the
-    // variables; it is a real one only where that is sound.
-    let pi_in_relations = pi.is_some_and(|p| {
-        rels[..user_relations].iter().any(|(a, b)| {
-            [a, b]
-                .iter()
-                .any(|f| f.numerator().degree_in(p) > 0 || f.denominator().degree_in(p) > 0)
-        })
-    });
-    let mixed: Vec<String> = angle_list
-        .iter()
-        .filter(|a| vars.get(&a.name).is_some())
-        .map(|a| a.name.clone())
         .collect();
     // `LHS - RHS` (cleared of denominators where the engine clears them), for the value of a
     // counter-example as a polynomial in pi.
@@ -822,5 +803,57 @@ pub fn sound_counter_example<C: PointField>(
             normal_form: normal_form.clone(),
             searched: format!("a point was found, but it is not a counter-example: {why}"),
         };
+    }
+}
+
+/// The angles of sin, cos and tan in a statement, and what decides whether its counter-examples
+/// are sound ([`sound_counter_example`]).
+pub struct Angles {
+    /// The angles.
+    pub list: Vec<exactcheck_exact::expr::Angle>,
+    /// The constant pi, when the statement has it (an indeterminate while deciding: it is
+    /// transcendental, so a polynomial identity in it holds iff it holds with pi indeterminate).
+    pub pi: Option<Var>,
+    /// Whether a relation of the user's involves pi.
+    pub pi_in_relations: bool,
+    /// The angles that are also used as numbers.
+    pub mixed: Vec<String>,
+    /// The relations before the circles were appended.
+    pub user_relations: usize,
+}
+
+/// Appends the unit circle `cos(x)^2 + sin(x)^2 = 1` of every angle `x` to `relations` and
+/// reports the angles ([`Angles`]); the one setup of `prove` and claims files.
+pub fn add_angles<C: PointField>(
+    vars: &Vars,
+    relations: &mut Vec<(RatFun<C>, RatFun<C>)>,
+) -> Angles {
+    let list = angles(vars);
+    let user_relations = relations.len();
+    for a in &list {
+        relations.push((
+            RatFun::from_poly(a.relation()),
+            RatFun::from_poly(Poly::zero()),
+        ));
+    }
+    let pi = vars.get(PI);
+    let pi_in_relations = pi.is_some_and(|p| {
+        relations[..user_relations].iter().any(|(a, b)| {
+            [a, b]
+                .iter()
+                .any(|f| f.numerator().degree_in(p) > 0 || f.denominator().degree_in(p) > 0)
+        })
+    });
+    let mixed = list
+        .iter()
+        .filter(|a| vars.get(&a.name).is_some())
+        .map(|a| a.name.clone())
+        .collect();
+    Angles {
+        list,
+        pi,
+        pi_in_relations,
+        mixed,
+        user_relations,
     }
 }

@@ -600,27 +600,13 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<(Outcome, Option<S
     };
     // Every angle `x` of sin, cos, tan: its cosine and sine lie on the unit circle. pi is the
     // transcendental constant: an indeterminate while deciding.
-    let angle_list = exactcheck_exact::expr::angles(&vars);
-    let user_relations = relations.len();
-    for a in &angle_list {
-        relations.push((
-            RatFun::from_poly(a.relation()),
-            RatFun::from_poly(Poly::zero()),
-        ));
-    }
-    let pi = vars.get(exactcheck_exact::expr::PI);
-    let pi_in_relations = pi.is_some_and(|p| {
-        relations[..user_relations].iter().any(|(a, b)| {
-            [a, b]
-                .iter()
-                .any(|f| f.numerator().degree_in(p) > 0 || f.denominator().degree_in(p) > 0)
-        })
-    });
-    let mixed: Vec<String> = angle_list
-        .iter()
-        .filter(|a| vars.get(&a.name).is_some())
-        .map(|a| a.name.clone())
-        .collect();
+    let crate::prove_cmd::Angles {
+        list: angle_list,
+        pi,
+        pi_in_relations,
+        mixed,
+        user_relations,
+    } = crate::prove_cmd::add_angles(&vars, &mut relations);
     let mut domains: Vec<(Var, Domain)> = Vec::new();
     for (v, d, text) in &conditions.domains {
         let var = vars.get(v).ok_or_else(|| {
