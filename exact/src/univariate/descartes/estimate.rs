@@ -1,0 +1,368 @@
+//! Root estimates of subdivision leaves and the recognition of rational roots (the parent
+//! module's documentation, "Rational roots"): `f64` estimates from a leaf's Bernstein
+//! coefficients, their continued-fraction convergents as candidates, and the exact test that
+//! a linear factor divides the polynomial.
+
+use super::*;
+
+/// An estimate `num / 2^exp + off` of a root of a unit problem: an exact dyadic (a node's end,
+/// or a pair's split point) and an `f64` offset (the leaf's estimate within its node, or the
+/// pair's half-distance), kept apart so that a root recognised as rational never pays for the
+/// exact rational ([`UnitEstimate::to_rational`] is called only by the refinement).
+#[derive(Clone, Debug)]
+pub(super) struct UnitEstimate {
+    pub(super) num: BigInt,
+    pub(super) exp: u64,
+    pub(super) off: f64,
+}
+
+impl UnitEstimate {
+    /// The value in `f64` (approximately).
+    pub(super) fn to_f64(&self) -> f64 {
+        let base = match approx(&self.num) {
+            None => 0.0,
+            Some((m, e)) => m * pow2f(e.saturating_sub(self.exp as i64)),
+        };
+        base + self.off
+    }
+
+    /// The exact value (`None` when the offset is not finite).
+    pub(super) fn to_rational(&self) -> Option<Rational> {
+        let base = Rational::from_dyadic(&self.num, self.exp);
+        Some(if self.off == 0.0 {
+            base
+        } else {
+            base + rational_of_f64(self.off)?
+        })
+    }
+}
+
+/// A [`UnitEstimate`] of a root of unit problem `which` of [`isolate_square_free`], read as
+/// an estimate of the root of `q`: `x`, `1/x`, `-x`, `-1/x`.
+#[derive(Clone, Debug)]
+pub(super) struct Estimate {
+    pub(super) unit: UnitEstimate,
+    pub(super) which: usize,
+}
+
+impl Estimate {
+    pub(super) fn map_f64(&self, x: f64) -> f64 {
+        match self.which {
+            0 => x,
+            1 => 1.0 / x,
+            2 => -x,
+            _ => -1.0 / x,
+        }
+    }
+
+    /// The estimate in `f64` (for the rational-root candidates).
+    pub(super) fn to_f64(&self) -> f64 {
+        self.map_f64(self.unit.to_f64())
+    }
+
+    /// The exact estimate (for the refinement's first window); `None` at zero.
+    pub(super) fn to_rational(&self) -> Option<Rational> {
+        let x = self.unit.to_rational().filter(|x| !x.is_zero())?;
+        Some(match self.which {
+            0 => x,
+            1 => x.recip().expect("non-zero"),
+            2 => -x,
+            _ => -x.recip().expect("non-zero"),
+        })
+    }
+}
+
+/// The finite `f64` `x` as an exact rational.
+pub(super) fn rational_of_f64(x: f64) -> Option<Rational> {
+    if !x.is_finite() {
+        return None;
+    }
+    if x == 0.0 {
+        return Some(Rational::ZERO);
+    }
+    let bits = x.to_bits();
+    let exp = ((bits >> 52) & 0x7ff) as i64;
+    let frac = bits & ((1u64 << 52) - 1);
+    let (m, e) = if exp == 0 {
+        (frac, -1074)
+    } else {
+        (frac | (1u64 << 52), exp - 1075)
+    };
+    let m = Rational::from(BigInt::from(m));
+    let r = if e >= 0 {
+        m * pow2(e as u64)
+    } else {
+        m / pow2((-e) as u64)
+    };
+    Some(if x < 0.0 { -r } else { r })
+}
+
+/// `x 2^-shift` in `f64` for an integer `x` (approximately; `0` on underflow).
+/// The common shift that brings the largest of `cs` to about 60 bits before [`scaled_f64`],
+/// so that the scaled values stay in `f64`'s range whatever the coefficients' size.
+pub(super) fn f64_shift(cs: &[BigInt]) -> u64 {
+    cs.iter()
+        .map(BigInt::bits)
+        .max()
+        .unwrap_or(0)
+        .saturating_sub(60)
+}
+
+pub(super) fn scaled_f64(x: &BigInt, shift: u64) -> f64 {
+    match approx(x) {
+        None => 0.0,
+        Some((m, e)) => m * pow2f(e - shift as i64),
+    }
+}
+
+/// `C(n, i)` for `i = 0..=n` in `f64` by the recurrence `C(n, i + 1) = C(n, i) (n - i) /
+/// (i + 1)` (`2i` roundings: a relative error below `2.01 n 2^-53` for `n <= 1000`, and no
+/// overflow there: `C(1000, 500) < 2^996`), computed once per unit problem: the chain of
+/// dependent divisions is the slow part of the leaf estimate otherwise.
+pub(super) fn binomials_f64(n: usize) -> Vec<f64> {
+    let mut out = Vec::with_capacity(n + 1);
+    let mut binom = 1f64;
+    for i in 0..=n {
+        out.push(binom);
+        binom = binom * (n - i) as f64 / (i + 1) as f64;
+    }
+    out
+}
+
+/// An `f64` estimate of the root in `(0, 1)` of the Bernstein polynomial with these
+/// coefficients (one sign variation, non-zero ends): safeguarded Newton (Newton inside a
+/// bracket, bisection when a step leaves it or does not halve the step before last) on
+/// `B(t) / (1 - t)^n = sum b_i C(n, i) s^i`, `s = t / (1 - t)`, for `t <= 1/2` and on
+/// `B(t) / t^n` (Horner in `(1 - t) / t`) above, a smooth function with the sign of `B`
+/// evaluated with every power at most 1, from the control polygon's crossing of the axis.
+/// Only a candidate generator for [`RationalRoots::recognise`] and the refinement's first window
+/// (nothing is decided on it); `None` beyond degree 1000 (the binomials leave the `f64` range).
+pub(super) fn bernstein_root_estimate(mut g: Vec<f64>, binoms: &[f64]) -> Option<f64> {
+    let n = g.len().checked_sub(1)?;
+    if n > 1000 || n == 0 {
+        return None;
+    }
+    debug_assert_eq!(binoms.len(), n + 1);
+    let (mut a, fa0, mut c, fc0) = (0.0f64, g[0], 1.0f64, g[n]);
+    if !(fa0.is_finite() && fc0.is_finite())
+        || fa0 == 0.0
+        || fc0 == 0.0
+        || (fa0 > 0.0) == (fc0 > 0.0)
+    {
+        return None;
+    }
+    // The control polygon (i / n, b_i) crosses the axis once (one sign variation).
+    let mut x = 0.5;
+    if let Some(k) = (0..n).find(|&k| g[k] != 0.0 && (g[k] > 0.0) != (g[k + 1] > 0.0)) {
+        let cross = (k as f64 + g[k] / (g[k] - g[k + 1])) / n as f64;
+        if cross > 0.0 && cross < 1.0 {
+            x = cross;
+        }
+    }
+    for (v, b) in g.iter_mut().zip(binoms) {
+        *v *= b;
+    }
+    if !g.iter().all(|v| v.is_finite()) {
+        return None;
+    }
+    // The function and its derivative in t.
+    let eval = |t: f64| -> (f64, f64) {
+        if t <= 0.5 {
+            let w = 1.0 - t;
+            let s = t / w;
+            let (mut p, mut dp) = (0.0, 0.0);
+            for &gi in g.iter().rev() {
+                dp = dp * s + p;
+                p = p * s + gi;
+            }
+            (p, dp / (w * w))
+        } else {
+            let u = (1.0 - t) / t;
+            let (mut q, mut dq) = (0.0, 0.0);
+            for &gi in &g {
+                dq = dq * u + q;
+                q = q * u + gi;
+            }
+            (q, -dq / (t * t))
+        }
+    };
+    let negative_left = fa0 < 0.0;
+    let (mut step, mut step_before) = (c - a, c - a);
+    for _ in 0..200 {
+        let (f, df) = eval(x);
+        if f == 0.0 {
+            return Some(x);
+        }
+        if !f.is_finite() {
+            return None;
+        }
+        if (f < 0.0) == negative_left {
+            a = x;
+        } else {
+            c = x;
+        }
+        if c - a <= 16.0 * f64::EPSILON * c {
+            return Some(0.5 * (a + c));
+        }
+        let newton = x - f / df;
+        if (newton - x).abs() <= 4.0 * f64::EPSILON * x.abs() {
+            return Some(newton);
+        }
+        let next = if newton > a && newton < c && (newton - x).abs() < 0.5 * step_before {
+            newton
+        } else {
+            0.5 * (a + c)
+        };
+        step_before = step;
+        step = (next - x).abs();
+        x = next;
+    }
+    Some(0.5 * (a + c))
+}
+
+/// The continued-fraction convergents `p / q` of `x` with `0 < q <= 2^40` (at most 64), lazily
+/// (the caller usually stops at the first that passes its tests; no allocation).
+pub(super) fn convergents(x: f64) -> impl Iterator<Item = (i64, i64)> {
+    let (mut h1, mut h2, mut k1, mut k2) = (1i128, 0i128, 0i128, 1i128);
+    let mut y = x;
+    let mut left = if !x.is_finite() || x.abs() > 1e15 {
+        0
+    } else {
+        64
+    };
+    std::iter::from_fn(move || {
+        if left == 0 {
+            return None;
+        }
+        left -= 1;
+        let a = y.floor();
+        // Saturating; |h1|, k1 <= 2^62 keep the products inside i128.
+        let ai = i128::from(a as i64);
+        let (h, k) = (ai * h1 + h2, ai * k1 + k2);
+        if k > 1 << 40 || h.abs() > 1 << 62 {
+            left = 0;
+            return None;
+        }
+        // Word-sized now: the conversions to f64 are single instructions.
+        let (h64, k64) = (h as i64, k as i64);
+        let frac = y - a;
+        if frac <= 0.0 || (h64 as f64 / k64 as f64 - x).abs() <= 2.0 * f64::EPSILON * x.abs() {
+            left = 0;
+        }
+        y = 1.0 / frac;
+        (h2, h1, k2, k1) = (h1, h, k1, k);
+        Some((h64, k64))
+    })
+}
+
+/// `x mod m` for `m > 0` (non-negative).
+pub(super) fn rem_small(x: &BigInt, m: u64) -> u64 {
+    // Up to 128 bits without copying the limbs.
+    if let Some(v) = x.magnitude().to_u128() {
+        return (v % u128::from(m)) as u64;
+    }
+    crate::bigint::rem_1(&x.magnitude().to_u64_digits(), m)
+}
+
+/// The quotient `a / (q x - p)` when `q x - p` divides the integer polynomial `a` (`q > 0`):
+/// synthetic division with every quotient coefficient an exact integer division by the word
+/// `q`, stopping at the first non-zero remainder. The reference of the tests for the limb
+/// kernel [`Limbs::divide_by_linear`].
+#[cfg(test)]
+pub(super) fn divide_by_linear_factor(a: &[BigInt], p: i64, q: i64) -> Option<Vec<BigInt>> {
+    let n = a.len() - 1;
+    let qu = q as u64;
+    // a = (q x - p) s: a_n = q s_{n-1}, a_k = q s_{k-1} - p s_k, a_0 = -p s_0.
+    let mut quotient = vec![BigInt::zero(); n];
+    let mut s = BigInt::zero();
+    for k in (1..=n).rev() {
+        s *= p;
+        s += &a[k];
+        if rem_small(&s, qu) != 0 {
+            return None;
+        }
+        s /= qu;
+        quotient[k - 1] = s.clone();
+    }
+    s *= p;
+    s += &a[0];
+    s.is_zero().then_some(quotient)
+}
+
+/// Whether `q x - p` divides `a` ([`divide_by_linear_factor`]).
+#[cfg(test)]
+pub(super) fn linear_factor_divides(a: &[BigInt], p: i64, q: i64) -> bool {
+    divide_by_linear_factor(a, p, q).is_some()
+}
+
+/// The rational root in the open interval `(lo, hi)` of the primitive square-free `q`, found
+/// among the continued-fraction convergents `p / q` of the estimate `est` (module
+/// documentation, "Rational roots"): a convergent is tried when it lies in the interval and
+/// passes the rational root theorem's tests `q | lc`, `p | a_k` (`a_k` the lowest non-zero
+/// coefficient); it is a root exactly when `q x - p` divides the polynomial.
+#[cfg(test)]
+pub(super) fn recognise_rational(
+    poly: &[BigInt],
+    est: f64,
+    lo: &Rational,
+    hi: &Rational,
+) -> Option<Rational> {
+    let mut r = RationalRoots::new(poly);
+    r.recognise(est, lo, hi)
+}
+
+/// The rational-root recognition of one polynomial (module documentation, "Rational roots"):
+/// the polynomial with the roots found so far divided out, in fixed-width limbs wide enough
+/// for every factor ([`super::limbs::linear_factor_width`]), and the magnitudes of the
+/// original leading and lowest non-zero coefficients for the rational root theorem's filters.
+pub(super) struct RationalRoots {
+    pub(super) deflated: Limbs,
+    pub(super) lc: Vec<u64>,
+    pub(super) low: Vec<u64>,
+}
+
+impl RationalRoots {
+    /// For the primitive square-free `q` (degree >= 1).
+    pub(super) fn new(q: &[BigInt]) -> RationalRoots {
+        let w = super::limbs::linear_factor_width(q);
+        let low = q.iter().find(|c| !c.is_zero()).expect("q is not zero");
+        RationalRoots {
+            deflated: Limbs::from_bigints_width(q, w),
+            lc: q[q.len() - 1].magnitude().to_u64_digits(),
+            low: low.magnitude().to_u64_digits(),
+        }
+    }
+
+    /// The rational root in `(lo, hi)` among the convergents of `est`, divided out of the
+    /// polynomial when found.
+    pub(super) fn recognise(&mut self, est: f64, lo: &Rational, hi: &Rational) -> Option<Rational> {
+        if self.deflated.len() < 2 {
+            return None;
+        }
+        // A candidate clearly outside `(lo, hi)` is skipped before its divisibility tests:
+        // `p / q` in `f64` (p rounded, one division) and the converted ends are each within a
+        // relative `2^-52` of the true values, so `p / q < lo_f - delta` proves `p / q < lo`
+        // (and symmetrically); a comparison with an infinity or a NaN never skips.
+        let (lo_f, hi_f) = (lo.to_f64(), hi.to_f64());
+        let delta = (lo_f.abs() + hi_f.abs()) * pow2f(-48);
+        for (p, q) in convergents(est) {
+            let pq = p as f64 / q as f64;
+            if p == 0
+                || pq < lo_f - delta
+                || pq > hi_f + delta
+                || crate::bigint::rem_1(&self.lc, q as u64) != 0
+                || crate::bigint::rem_1(&self.low, p.unsigned_abs()) != 0
+            {
+                continue;
+            }
+            let r = Rational::new(p, q).expect("q > 0");
+            if r > *lo && r < *hi {
+                if let Some(quotient) = self.deflated.divide_by_linear(p, q) {
+                    self.deflated = quotient;
+                    return Some(r);
+                }
+            }
+        }
+        None
+    }
+}

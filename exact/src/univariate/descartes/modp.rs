@@ -1,0 +1,160 @@
+//! The square-free part of an integer polynomial: the modular certificate (three word-size
+//! primes, Euclid without inverses) and the exact fallback by the primitive remainder sequence
+//! (step 1 of the parent module's documentation).
+
+use super::*;
+
+/// Three primes below `2^62` for the modular square-freeness test.
+pub(super) const PRIMES: [u64; 3] = [
+    (1 << 61) - 1,
+    4_611_686_018_427_387_847,
+    4_611_686_018_427_387_817,
+];
+
+/// Multiplication modulo one of the [`PRIMES`]: Mersenne folding for `2^61 - 1`
+/// ([`ModP`](crate::modp::ModP)), a `u128` remainder for the others.
+#[inline]
+pub(super) fn mul_mod(a: u64, b: u64, p: u64) -> u64 {
+    if p == crate::modp::P {
+        crate::modp::ModP::from_u128(u128::from(a) * u128::from(b)).value()
+    } else {
+        (u128::from(a) * u128::from(b) % u128::from(p)) as u64
+    }
+}
+
+/// `x mod p` for an integer `x` (non-negative result).
+pub(super) fn big_mod(x: &BigInt, p: u64) -> u64 {
+    if p == crate::modp::P {
+        return crate::modp::ModP::from_bigint(x).value();
+    }
+    let r = rem_small(x, p);
+    if x.is_negative() && r != 0 {
+        p - r
+    } else {
+        r
+    }
+}
+
+/// The degree of `gcd(a, b)` over `F_p` (both non-zero, trailing zeros trimmed). Euclid's
+/// algorithm without inverses: `a <- lc(b) a - lc(a) x^k b` cancels the leading term of `a`
+/// and multiplies the gcd by the unit `lc(b)` only, so the degrees are those of the monic
+/// remainder sequence.
+pub(super) fn gcd_degree_mod_p(mut a: Vec<u64>, mut b: Vec<u64>, p: u64) -> usize {
+    fn trim(v: &mut Vec<u64>) {
+        while v.last() == Some(&0) {
+            v.pop();
+        }
+    }
+    trim(&mut a);
+    trim(&mut b);
+    if a.len() < b.len() {
+        std::mem::swap(&mut a, &mut b);
+    }
+    while !b.is_empty() {
+        // a <- a mod b (up to a unit factor)
+        let db = b.len() - 1;
+        let lb = b[db];
+        while a.len() > db {
+            let top = a.len() - 1;
+            let f = a[top];
+            let shift = top - db;
+            for x in &mut a[..shift] {
+                *x = mul_mod(*x, lb, p);
+            }
+            for (x, &bj) in a[shift..].iter_mut().zip(&b) {
+                let (u, t) = (mul_mod(*x, lb, p), mul_mod(f, bj, p));
+                *x = if u >= t { u - t } else { u + p - t };
+            }
+            debug_assert_eq!(a[top], 0);
+            a.pop();
+            trim(&mut a);
+        }
+        std::mem::swap(&mut a, &mut b);
+    }
+    a.len().saturating_sub(1)
+}
+
+/// Whether `gcd(q mod p, q' mod p) = 1` over `F_p` for one of three primes keeping the degrees of
+/// `q` and `q'`: a proof that the integer polynomial `q` (degree >= 1) is square-free (see the
+/// module documentation). `false` means "not proved", not "not square-free".
+pub(super) fn is_square_free_mod_p(q: &[BigInt]) -> bool {
+    let n = q.len() - 1;
+    PRIMES.iter().any(|&p| {
+        let a: Vec<u64> = q.iter().map(|c| big_mod(c, p)).collect();
+        let d: Vec<u64> = (1..=n).map(|i| mul_mod(a[i], i as u64 % p, p)).collect();
+        if a[n] == 0 || d[n - 1] == 0 {
+            return false;
+        }
+        gcd_degree_mod_p(a, d, p) == 0
+    })
+}
+
+/// The gcd of the integers `q` (non-negative): each step reduces the next number modulo the
+/// running gcd first (a word remainder while the gcd fits in a word), and stops at 1.
+pub(super) fn content(q: &[BigInt]) -> BigInt {
+    let mut g = BigInt::zero();
+    for c in q {
+        if g.is_one() {
+            break;
+        }
+        if c.is_zero() {
+            continue;
+        }
+        g = match g.to_u64() {
+            Some(0) => c.abs(),
+            Some(w) => BigInt::from(num_integer::Integer::gcd(&w, &rem_small(c, w))),
+            None => num_integer::Integer::gcd(&g, &(c % &g)),
+        };
+    }
+    g
+}
+
+/// The primitive square-free part with a positive leading coefficient, as integers.
+pub(super) fn square_free_integer(coeffs: &[BigInt]) -> Vec<BigInt> {
+    let g = content(coeffs);
+    let mut q: Vec<BigInt> = match g.to_u64() {
+        Some(1) => coeffs.to_vec(),
+        // A word content (the usual case): exact division by a word, on `i128` when the
+        // coefficient fits, by Jebelean's exact division on its limbs otherwise.
+        Some(w) => coeffs
+            .iter()
+            .map(|c| match c.to_i128() {
+                Some(v) => BigInt::from(v / i128::from(w)),
+                None => {
+                    let m = crate::bigint::divexact_1(&c.magnitude().to_u64_digits(), w);
+                    let m = BigInt::from(crate::bigint::biguint_from_limbs(&m));
+                    if c.is_negative() {
+                        -m
+                    } else {
+                        m
+                    }
+                }
+            })
+            .collect(),
+        None => coeffs.iter().map(|c| c / &g).collect(),
+    };
+    if q.last().is_some_and(|c| c.is_negative()) {
+        for c in &mut q {
+            *c = -std::mem::take(c);
+        }
+    }
+    if q.len() <= 2 || is_square_free_mod_p(&q) {
+        return q;
+    }
+    let u = UPoly::from_coeffs(q.iter().cloned().map(Rational::from).collect());
+    let s = u.square_free_part().primitive_part();
+    let mut out: Vec<BigInt> = s
+        .coeffs()
+        .iter()
+        .map(|c| {
+            debug_assert!(c.is_integer());
+            c.numer()
+        })
+        .collect();
+    if out.last().is_some_and(|c| c.is_negative()) {
+        for c in &mut out {
+            *c = -&*c;
+        }
+    }
+    out
+}
