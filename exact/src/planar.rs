@@ -37,12 +37,12 @@
 //! of `S = gcd(x' w - x w', y' w - y w')` (stationary points). These are divided out and `S` put
 //! back once (`candidate_polynomial`), which leaves the roots in `[0, 1]` unchanged and cuts the
 //! degree about in half before the expensive step, the root isolation (for the offsets of
-//! quintic PH curves, 88 to 44). The distinct roots `rho_1 < ... < rho_m` in `[0, 1]` are then
-//! isolated by bisection of `[0, 1]`, each by a rational interval `I_k` (open, ends not roots)
-//! or exactly when a bisection point hits it. The bisection is driven by Descartes' rule of
-//! signs when the candidate polynomial is certified square-free modulo a prime (the usual case,
-//! no remainder sequence needed), else by Sturm sequences of its square-free part
-//! (`isolate_candidates` explains the certificate).
+//! quintic PH curves, 88 to 44). Its square-free part (certified square-free modulo word-size
+//! primes in the usual case, so no remainder sequence is needed:
+//! [`UPoly::primitive_square_free_part`]) has the distinct roots `rho_1 < ... < rho_m` in
+//! `[0, 1]`, isolated by the workspace's real-root isolator ([`isolate_real_roots_in`], Descartes'
+//! rule of signs), each by a rational interval `I_k` (open, ends not roots), or exactly when it is
+//! rational.
 //! Every self-intersection `s < t` is `(rho_i, rho_j)` for some `i < j`, and, conversely, the box
 //! `I_i x I_j` contains no solution but possibly `(rho_i, rho_j)`: any solution in it has both
 //! coordinates roots of `R`, and `I_i`, `I_j` hold one each. So each pair `i < j` is decided on
@@ -60,7 +60,7 @@
 //!   - *certification* (Poincare-Miranda): with `c` the midpoints and `d` the widths of `I_i`,
 //!     `I_j`, take the box `P = [c_i - d_i, c_i + d_i] x [c_j - d_j, c_j + d_j]`, which contains
 //!     `(rho_i, rho_j)` at distance at least `d/2` from its sides; check by root counts
-//!     (Descartes or Sturm, as for the isolation) that each side of `P` holds no root of `R`
+//!     (Descartes' bound for the candidates, Sturm for `w`) that each side of `P` holds no root of `R`
 //!     but `rho_i` (resp. `rho_j`) and that its ends are not roots (`P` may reach outside
 //!     `[0, 1]`, so the count is of the candidate polynomial and of `w`, whose roots together
 //!     are those of `R`). Precondition with `A = J^{-1}`, `J` the exact Jacobian of `(F, G)` at
@@ -94,8 +94,10 @@
 //! module keeps a small dense `(deg_s + 1) x (deg_t + 1)` coefficient array instead of the
 //! sparse [`crate::poly::Poly`].
 
-use crate::univariate::{sign_variations, RootInterval, UPoly};
-use crate::{ModP, Rational};
+use crate::univariate::{
+    descartes_bound, isolate_real_roots_in, sign_variations, RootInterval, UPoly,
+};
+use crate::Rational;
 use exactcheck_core::bernstein::Bernstein;
 use exactcheck_core::bezier::RationalBezierCurve;
 use exactcheck_core::{Field, Ring, Sign};
@@ -235,7 +237,7 @@ pub fn self_intersections(
     if w.is_zero() {
         return Err(PlanarError::ZeroWeight);
     }
-    if let Some(root) = unit_roots_exact(w).into_iter().next() {
+    if let Some(root) = unit_roots(w).into_iter().next() {
         return Err(PlanarError::WeightVanishes(root));
     }
     // A common factor of x, y, w does not change the curve on [0, 1] (it does not vanish there,
@@ -260,14 +262,14 @@ pub fn self_intersections(
     }
     let (stationary_poly, stationary) = stationary_points(x, y, w);
     let candidates = candidate_polynomial(&resultant, w, &stationary_poly);
-    let (sqf, counter, roots) = isolate_candidates(&candidates);
+    let sqf = candidates.primitive_square_free_part();
+    let roots = unit_roots(&sqf);
     let w_free = w.square_free_part();
     let mut search = Search {
         f,
         g,
         w_sturm: w_free.sturm_sequence(),
         w_free,
-        counter,
         sqf,
         roots,
     };
@@ -350,7 +352,7 @@ fn stationary_points(x: &UPoly, y: &UPoly, w: &UPoly) -> (UPoly, Vec<RootInterva
         !g.is_zero(),
         "a constant curve is rejected as a common component first"
     );
-    let roots = unit_roots_exact(&g);
+    let roots = unit_roots(&g);
     (g.primitive_part(), roots)
 }
 
@@ -361,7 +363,7 @@ fn stationary_points(x: &UPoly, y: &UPoly, w: &UPoly) -> (UPoly, Vec<RootInterva
 /// infinity) makes `F(., t0)` and `G(., t0)` both multiples of `w(s) / (s - t0)`, and a zero of
 /// `C'` is a multiple root of `R`, so `R = A w^a S^b` with large `a`, `b` (for the offsets of
 /// cubic PH curves, `deg R = 20` with `w^4` and `S^2`; of quintic ones 88, with `w^9` and
-/// `S^2`). Dividing them out before the Sturm sequence, whose cost grows steeply with the
+/// `S^2`). Dividing them out before the root isolation, whose cost grows steeply with the
 /// degree, makes the isolation several times faster. Nothing is lost in `[0, 1]`: `w` has no
 /// root there, and the roots of `S` are kept. The roots of `w` outside `[0, 1]` are still roots
 /// of `R`, which the Poincare-Miranda step accounts for ([`Search::isolates_one`]).
@@ -386,302 +388,16 @@ fn candidate_polynomial(resultant: &UPoly, w: &UPoly, stationary: &UPoly) -> UPo
     }
 }
 
-/// How root counts of the square-free candidate polynomial are certified.
-enum Counter {
-    /// By its Sturm sequence.
-    Sturm(Vec<UPoly>),
-    /// By Descartes' rule of signs on its Bernstein coefficients over the interval.
-    Descartes,
-}
-
-/// The square-free part of the candidate polynomial `p`, how to count its roots, and its roots
-/// in `[0, 1]`.
-///
-/// The usual case is a square-free `p`, which is certified cheaply modulo the prime
-/// `2^61 - 1`: if the prime divides neither a denominator nor the leading coefficient, then
-/// `deg gcd(p, p') <= deg gcd(p mod q, p' mod q)`, so a constant gcd modulo the prime proves `p`
-/// square-free over Q. Then the roots are isolated by bisection with Descartes' rule
-/// ([`descartes_count`]) and counted the same way, with no Sturm sequence (whose remainder sequence dominated the run time for offsets of degree 13:
-/// 30 of 40 seconds). Otherwise the square-free part comes from the primitive remainder sequence,
-/// and roots are isolated and counted by Sturm sequences.
-fn isolate_candidates(p: &UPoly) -> (UPoly, Counter, Vec<RootInterval>) {
-    if p.is_constant() {
-        return (p.clone(), Counter::Descartes, Vec::new());
-    }
-    if square_free_mod_prime(p) {
-        let sqf = p.primitive_part();
-        let roots = unit_roots_descartes(&sqf);
-        return (sqf, Counter::Descartes, roots);
-    }
-    // The Sturm sequence of p ends in gcd(p, p').
-    let chain = p.sturm_sequence();
-    let repeated = chain.last().expect("p is not zero");
-    let (sqf, sturm) = if repeated.is_constant() {
-        (p.primitive_part(), chain)
-    } else {
-        let (quotient, rest) = p.div_rem(repeated);
-        debug_assert!(rest.is_zero(), "gcd(p, p') divides p");
-        let sqf = quotient.primitive_part();
-        let sturm = sqf.sturm_sequence();
-        (sqf, sturm)
-    };
-    let roots = unit_roots_sturm(&sqf, &sturm);
-    (sqf, Counter::Sturm(sturm), roots)
-}
-
-/// Whether `p` (not constant) is certified square-free by a constant `gcd(p, p')` modulo
-/// `2^61 - 1` (see [`isolate_candidates`]); `false` also when the prime is unlucky.
-fn square_free_mod_prime(p: &UPoly) -> bool {
-    let Ok(mut a) = p
-        .coeffs()
-        .iter()
-        .map(ModP::from_rational)
-        .collect::<Result<Vec<ModP>, _>>()
-    else {
-        return false;
-    };
-    if a.last().is_none_or(|lc| lc.is_zero()) {
-        return false;
-    }
-    let mut b: Vec<ModP> = a
-        .iter()
-        .enumerate()
-        .skip(1)
-        .map(|(k, c)| *c * ModP::from_i64(k as i64))
-        .collect();
-    trim_mod(&mut b);
-    // Euclid over the field of residues.
-    while !b.is_empty() {
-        let inv = b
-            .last()
-            .expect("not empty")
-            .inv()
-            .expect("trimmed: not zero");
-        while a.len() >= b.len() {
-            let factor = *a.last().expect("not shorter than b") * inv;
-            let shift = a.len() - b.len();
-            for (k, c) in b.iter().enumerate() {
-                a[shift + k] -= factor * *c;
-            }
-            a.pop();
-            trim_mod(&mut a);
-            if a.len() < b.len() {
-                break;
-            }
-        }
-        std::mem::swap(&mut a, &mut b);
-    }
-    a.len() == 1
-}
-
-fn trim_mod(v: &mut Vec<ModP>) {
-    while v.last().is_some_and(|c| c.is_zero()) {
-        v.pop();
-    }
-}
-
-/// Descartes' bound for the open interval `(lo, hi)`, `lo < hi`: the sign variations of the
-/// coefficients of `(x + 1)^n p((lo x + hi) / (x + 1))` (the same, up to positive factors, as
-/// the Bernstein coefficients of `p` on `[lo, hi]`, but computed by two compositions, with no
-/// binomial coefficients, so for any degree). It bounds the number of roots in `(lo, hi)`
-/// counted with multiplicity and has the same parity; 0 or 1 is exact.
-fn descartes_count(p: &UPoly, lo: &Rational, hi: &Rational) -> usize {
-    let n = p.degree();
-    // Roots in (lo, hi) -> roots of q in (0, 1).
-    let q = p.compose(&UPoly::from_coeffs(vec![lo.clone(), hi.sub_ref(lo)]));
-    // y^n q(1/y): roots in (1, inf); then x = y - 1: roots in (0, inf).
-    let mut reversed = padded(&q, n);
-    reversed.reverse();
-    let shifted = UPoly::from_coeffs(reversed).compose(&poly_x_plus_one());
-    let signs: Vec<Sign> = shifted
-        .coeffs()
-        .iter()
-        .map(Rational::signum)
-        .filter(|s| *s != Sign::Zero)
-        .collect();
-    signs.windows(2).filter(|w| w[0] != w[1]).count()
-}
-
-fn poly_x_plus_one() -> UPoly {
-    UPoly::from_coeffs(vec![Rational::ONE, Rational::ONE])
-}
-
-/// Whether the square-free `p` has exactly one root in `[lo, hi]`, none at the ends
-/// ([`descartes_count`]).
-fn descartes_one(p: &UPoly, lo: &Rational, hi: &Rational) -> bool {
-    p.sign_at(lo) != Sign::Zero && p.sign_at(hi) != Sign::Zero && descartes_count(p, lo, hi) == 1
-}
-
-/// The distinct roots in `[0, 1]` of the square-free, primitive (integer) `sqf`, increasing:
-/// bisection driven by Descartes' rule (which reaches 0 or 1 on small enough intervals around
-/// simple roots, so the bisection ends), a bisection point that is a root recorded exactly.
-///
-/// The classical integer form of the method (Collins-Akritas): the interval
-/// `[c / 2^k, (c + 1) / 2^k]` carries an integer polynomial `q` with the roots of `sqf` there
-/// mapped to `(0, 1)`; its halves carry `2^n q(x / 2)` and that shifted by 1, and Descartes'
-/// bound is the sign variations of `(x + 1)^n q(1 / (x + 1))` (reversal, shift by 1). Only
-/// integer additions and shifts, no rational normalisation: several times faster than
-/// [`descartes_count`] on the high-degree candidate polynomials.
-fn unit_roots_descartes(sqf: &UPoly) -> Vec<RootInterval> {
-    let n = sqf.degree();
-    let p: Vec<BigInt> = sqf
-        .coeffs()
-        .iter()
-        .map(|c| {
-            assert!(
-                c.is_integer(),
-                "a primitive polynomial has integer coefficients"
-            );
-            c.numer()
-        })
-        .collect();
-    let dyadic = |c: &BigInt, k: u32| {
-        Rational::from(c.clone()) * Rational::from(BigInt::one() << k).recip().expect("2^k")
-    };
-    let (zero, one) = (Rational::ZERO, Rational::ONE);
-    let mut out: Vec<RootInterval> = [&zero, &one]
-        .into_iter()
-        .filter(|x| sqf.sign_at(x) == Sign::Zero)
-        .map(|x| RootInterval::exact(x.clone()))
-        .collect();
-    let mut stack = vec![(BigInt::zero(), 0u32, p)];
-    while let Some((c, k, q)) = stack.pop() {
-        let mut rev = q.clone();
-        rev.reverse();
-        taylor_shift_one(&mut rev);
-        let count = variations(&rev);
-        if count == 0 {
-            continue;
-        }
-        let ends_not_roots = !q[0].is_zero() && !q.iter().sum::<BigInt>().is_zero();
-        if count == 1 && ends_not_roots {
-            out.push(RootInterval {
-                lo: dyadic(&c, k),
-                hi: dyadic(&(&c + 1), k),
-            });
-            continue;
-        }
-        // 2^n q(x / 2), without the common power of two.
-        let mut left: Vec<BigInt> = q.iter().enumerate().map(|(i, a)| a << (n - i)).collect();
-        let twos = left
-            .iter()
-            .filter_map(BigInt::trailing_zeros)
-            .min()
-            .unwrap_or(0);
-        for a in &mut left {
-            *a >>= twos;
-        }
-        let mut right = left.clone();
-        taylor_shift_one(&mut right);
-        let mid = BigInt::from(2) * &c + 1;
-        if right[0].is_zero() {
-            out.push(RootInterval::exact(dyadic(&mid, k + 1)));
-        }
-        stack.push((mid, k + 1, right));
-        stack.push((BigInt::from(2) * c, k + 1, left));
-    }
-    out.sort_by(|x, y| x.lo.cmp(&y.lo));
-    out
-}
-
-/// `a(x) <- a(x + 1)` in place (coefficients from the constant term up).
-fn taylor_shift_one(a: &mut [BigInt]) {
-    let n = a.len();
-    for i in 0..n.saturating_sub(1) {
-        for j in (i..n - 1).rev() {
-            let next = a[j + 1].clone();
-            a[j] += next;
-        }
-    }
-}
-
-/// The sign variations of a coefficient sequence (zeros skipped).
-fn variations(a: &[BigInt]) -> usize {
-    let signs: Vec<bool> = a
-        .iter()
-        .filter(|c| !c.is_zero())
-        .map(|c| c.sign() == num_bigint::Sign::Minus)
-        .collect();
-    signs.windows(2).filter(|w| w[0] != w[1]).count()
-}
-
-/// The distinct roots in `[0, 1]` of the square-free `sqf` with the Sturm sequence `sturm`,
-/// increasing: bisection of `[0, 1]` driven by Sturm counts (`V(a) - V(b)` distinct roots in
-/// `(a, b]`), a bisection point that is a root recorded exactly (so roots are exact when a
-/// dyadic bisection point or an end hits them, not whenever they are rational).
-fn unit_roots_sturm(sqf: &UPoly, sturm: &[UPoly]) -> Vec<RootInterval> {
-    let (zero, one) = (Rational::ZERO, Rational::ONE);
-    if sqf.is_constant() {
-        return Vec::new();
-    }
-    let is_root = |x: &Rational| sqf.sign_at(x) == Sign::Zero;
-    let var = |x: &Rational| sign_variations(sturm, x);
-    // The number of roots in the open interval (a, b).
-    let open_count = |b: &Rational, va: usize, vb: usize| va - vb - usize::from(is_root(b));
-    let mut out = Vec::new();
-    if is_root(&zero) {
-        out.push(RootInterval::exact(zero.clone()));
-    }
-    if is_root(&one) {
-        out.push(RootInterval::exact(one.clone()));
-    }
-    let (v0, v1) = (var(&zero), var(&one));
-    let count = open_count(&one, v0, v1);
-    let mut stack = vec![(zero, one, v0, v1, count)];
-    let half = Rational::new(1, 2).expect("2 is not zero");
-    while let Some((a, b, va, vb, count)) = stack.pop() {
-        if count == 0 {
-            continue;
-        }
-        if count == 1 && !is_root(&a) && !is_root(&b) {
-            out.push(RootInterval { lo: a, hi: b });
-            continue;
-        }
-        let m = a.add_ref(&b) * &half;
-        let vm = var(&m);
-        if is_root(&m) {
-            out.push(RootInterval::exact(m.clone()));
-        }
-        let right = open_count(&b, vm, vb);
-        let left = open_count(&m, va, vm);
-        stack.push((m.clone(), b, vm, vb, right));
-        stack.push((a, m, va, vm, left));
-    }
-    out.sort_by(|x, y| x.lo.cmp(&y.lo));
-    out
-}
-
 /// The distinct roots of the non-zero `p` in `[0, 1]`, increasing, isolated with the
-/// [`RootInterval`] contract and exact **exactly when rational** ([`UPoly::isolate_roots`] on the
-/// line, clipped to `[0, 1]`: an interval reaching past an end holds an irrational root, which
-/// is compared with that end).
-fn unit_roots_exact(p: &UPoly) -> Vec<RootInterval> {
-    let (zero, one) = (Rational::ZERO, Rational::ONE);
-    p.isolate_roots()
-        .into_iter()
-        .filter_map(|mut ri| {
-            if ri.is_exact() {
-                return (zero <= ri.lo && ri.lo <= one).then_some(ri);
-            }
-            if ri.hi <= zero || ri.lo >= one {
-                return None;
-            }
-            if ri.lo < zero {
-                // The root is irrational, so not 0: it is in [0, 1] iff 0 is below it.
-                if p.compare_with_root(&ri, &zero) != std::cmp::Ordering::Less {
-                    return None;
-                }
-                ri.lo = zero.clone();
-            }
-            if ri.hi > one {
-                if p.compare_with_root(&ri, &one) != std::cmp::Ordering::Greater {
-                    return None;
-                }
-                ri.hi = one.clone();
-            }
-            Some(ri)
-        })
-        .collect()
+/// [`RootInterval`] contract and exact exactly when rational ([`isolate_real_roots_in`]).
+fn unit_roots(p: &UPoly) -> Vec<RootInterval> {
+    isolate_real_roots_in(p, &Rational::ZERO, &Rational::ONE)
+}
+
+/// Whether the square-free `p` has exactly one root in `[lo, hi]`, none at the ends: both ends
+/// are not roots and Descartes' bound ([`descartes_bound`]) is 1.
+fn descartes_one(p: &UPoly, lo: &Rational, hi: &Rational) -> bool {
+    p.sign_at(lo) != Sign::Zero && p.sign_at(hi) != Sign::Zero && descartes_bound(p, lo, hi) == 1
 }
 
 // ------------------------------------------------------------------------------ dense bivariate
@@ -893,7 +609,7 @@ fn edge_sign(p: &UPoly, lo: &Rational, hi: &Rational) -> Option<Sign> {
 // ------------------------------------------------------------------------------ the search
 
 /// The state of the pair-by-pair decision: the equations, the square-free part of the
-/// resultant with its Sturm sequence, and the current isolating intervals of its roots in
+/// resultant, and the current isolating intervals of its roots in
 /// `[0, 1]` (shared by all pairs, so a bisection made for one pair helps the others).
 struct Search {
     f: Dense,
@@ -903,7 +619,6 @@ struct Search {
     w_free: UPoly,
     w_sturm: Vec<UPoly>,
     sqf: UPoly,
-    counter: Counter,
     roots: Vec<RootInterval>,
 }
 
@@ -1014,11 +729,7 @@ impl Search {
             (p.sign_at(lo) != Sign::Zero && p.sign_at(hi) != Sign::Zero)
                 .then(|| sign_variations(chain, lo) - sign_variations(chain, hi))
         };
-        let one = match &self.counter {
-            Counter::Sturm(sturm) => count(&self.sqf, sturm) == Some(1),
-            Counter::Descartes => descartes_one(&self.sqf, lo, hi),
-        };
-        one && (self.w_free.is_constant() || count(&self.w_free, &self.w_sturm) == Some(0))
+ descartes_one(&self.sqf, lo, hi) && (self.w_free.is_constant() || count(&self.w_free, &self.w_sturm) == Some(0))
     }
 
     /// Halves the interval of root `k` (exact when the midpoint is the root).

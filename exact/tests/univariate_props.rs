@@ -326,3 +326,180 @@ proptest! {
         prop_assert_eq!(UPoly::from_poly(&parsed, var).unwrap(), a);
     }
 }
+
+// ------------------------------------------------------------------------------ the real-root API
+
+use exactcheck_exact::univariate::{
+    isolate_real_roots, isolate_real_roots_in, isolate_real_roots_sturm,
+    isolate_real_roots_sturm_in, refine_real_root, sign_at_real_root,
+};
+
+/// The fast isolator's answer checked against the Sturm reference for the same polynomial: the
+/// same number of roots, the same exact (rational) roots, every other interval isolating with
+/// non-root ends at which the square-free part changes sign, and the i-th intervals of both
+/// overlapping (they hold the same root).
+fn agrees_with_sturm(p: &UPoly, fast: &[RootInterval], sturm: &[RootInterval]) -> Result<(), String> {
+    if fast.len() != sturm.len() {
+        return Err(format!("{} roots, Sturm {} for {p}", fast.len(), sturm.len()));
+    }
+    let sqf = p.square_free_part();
+    for (f, s) in fast.iter().zip(sturm) {
+        if f.exact_value() != s.exact_value() {
+            return Err(format!("{f:?} vs Sturm {s:?} for {p}"));
+        }
+        if !f.is_exact() {
+            if sqf.sign_at(&f.lo) * sqf.sign_at(&f.hi) != Sign::Negative {
+                return Err(format!("{f:?} does not isolate a root of {p}"));
+            }
+            if f.hi <= s.lo || s.hi <= f.lo {
+                return Err(format!("{f:?} and Sturm {s:?} hold different roots of {p}"));
+            }
+        }
+    }
+    for pair in fast.windows(2) {
+        if pair[0].hi > pair[1].lo || pair[0].lo >= pair[1].hi {
+            return Err(format!("not sorted and disjoint: {:?}", pair));
+        }
+    }
+    Ok(())
+}
+
+/// Random integer polynomials with repeated factors: products of up to three random factors of
+/// degree 1 to 4, each to a power 1 to 3.
+fn arb_repeated() -> impl Strategy<Value = UPoly> {
+    prop::collection::vec(
+        (prop::collection::vec(-20i64..=20, 2..=5), 1u32..=3),
+        1..=3,
+    )
+    .prop_map(|factors| {
+        let mut p = UPoly::one();
+        for (c, m) in factors {
+            let f = UPoly::from_i64_coeffs(&c);
+            if !f.is_zero() {
+                p *= Ring::pow(&f, m);
+            }
+        }
+        p
+    })
+}
+
+/// Clustered roots: `c + k / 2^e` for a few `k` (rational, denominators up to `2^40`), times
+/// `(x - c)^2 - 2^-(2e+1)` (an irrational pair in the same cluster) and a random quadratic.
+fn arb_clustered() -> impl Strategy<Value = UPoly> {
+    (
+        -3i64..=3,
+        8u32..=40,
+        prop::collection::btree_set(1i64..=6, 1..=3),
+        prop::collection::vec(-9i64..=9, 3),
+    )
+        .prop_map(|(c, e, ks, quad)| {
+            let c = Rational::from_integer(c);
+            let step = Rational::ONE.checked_div(&two().pow(e)).unwrap();
+            let roots: Vec<Rational> = ks
+                .into_iter()
+                .map(|k| &c + &(Rational::from_integer(k) * &step))
+                .collect();
+            let pair = UPoly::from_coeffs(vec![
+                c.square() - step.square() * q(1, 2),
+                -(&c + &c),
+                Rational::ONE,
+            ]);
+            let mut p = UPoly::from_roots(&roots) * pair;
+            let quad = UPoly::from_i64_coeffs(&quad);
+            if !quad.is_zero() {
+                p *= quad;
+            }
+            p
+        })
+}
+
+/// The sign of `a + b sqrt 2`, exactly.
+fn sign_with_sqrt2(a: &Rational, b: &Rational) -> Sign {
+    let (sa, sb) = (a.signum(), b.signum());
+    if sa == sb || sb == Sign::Zero {
+        return sa;
+    }
+    if sa == Sign::Zero {
+        return sb;
+    }
+    // Opposite signs: the larger of a^2 and 2 b^2 decides.
+    match a.square().cmp(&(two() * b.square())) {
+        Ordering::Greater => sa,
+        Ordering::Less => sb,
+        Ordering::Equal => Sign::Zero,
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 96, ..ProptestConfig::default() })]
+
+    #[test]
+    fn fast_isolator_holds_the_known_roots(case in arb_case()) {
+        let p = &case.poly;
+        let fast = isolate_real_roots(p);
+        prop_assert_eq!(fast.len(), case.roots.len());
+        for (ri, (k, _)) in fast.iter().zip(&case.roots) {
+            prop_assert!(holds(ri, k), "{:?} does not hold {:?} in {}", ri, k, p);
+        }
+        let sturm = isolate_real_roots_sturm(p);
+        prop_assert_eq!(agrees_with_sturm(p, &fast, &sturm), Ok(()));
+    }
+
+    #[test]
+    fn fast_isolator_agrees_with_sturm_on_repeated_factors(p in arb_repeated()) {
+        let fast = isolate_real_roots(&p);
+        prop_assert_eq!(agrees_with_sturm(&p, &fast, &isolate_real_roots_sturm(&p)), Ok(()));
+    }
+
+    #[test]
+    fn fast_isolator_agrees_with_sturm_on_clustered_roots(p in arb_clustered()) {
+        let fast = isolate_real_roots(&p);
+        prop_assert_eq!(agrees_with_sturm(&p, &fast, &isolate_real_roots_sturm(&p)), Ok(()));
+    }
+
+    #[test]
+    fn roots_in_an_interval_are_the_global_roots_filtered(
+        p in prop_oneof![arb_repeated(), arb_clustered(), arb_case().prop_map(|c| c.poly)],
+        a in arb_point(),
+        b in arb_point(),
+    ) {
+        let (lo, hi) = if a <= b { (a, b) } else { (b, a) };
+        let inside = isolate_real_roots_in(&p, &lo, &hi);
+        let reference = isolate_real_roots_sturm_in(&p, &lo, &hi);
+        prop_assert_eq!(agrees_with_sturm(&p, &inside, &reference), Ok(()));
+        // The count from the Sturm sequence: roots in (lo, hi], plus lo itself.
+        let at_lo = usize::from(!p.is_zero() && p.sign_at(&lo) == Sign::Zero);
+        prop_assert_eq!(inside.len(), p.count_roots(&lo, &hi) + at_lo);
+        for ri in &inside {
+            prop_assert!(lo <= ri.lo && ri.hi <= hi, "{:?} outside [{}, {}]", ri, lo, hi);
+        }
+        // The unit interval, the Bezier parameter range.
+        let unit = isolate_real_roots_in(&p, &Rational::ZERO, &Rational::ONE);
+        let unit_ref = isolate_real_roots_sturm_in(&p, &Rational::ZERO, &Rational::ONE);
+        prop_assert_eq!(agrees_with_sturm(&p, &unit, &unit_ref), Ok(()));
+    }
+
+    #[test]
+    fn refinement_and_signs_at_roots(case in arb_case(), other in arb_poly(), k in 1u32..60) {
+        let p = &case.poly;
+        let width = Rational::ONE.checked_div(&two().pow(k)).unwrap();
+        let sqrt2_poly = UPoly::from_i64_coeffs(&[-2, 0, 1]);
+        // `other` reduced modulo x^2 - 2 is a + b x: its sign at +-sqrt 2 is decided exactly.
+        let reduced = other.rem(&sqrt2_poly);
+        let (a, b) = (reduced.coeff(0), reduced.coeff(1));
+        for (ri, (known, _)) in isolate_real_roots(p).iter().zip(&case.roots) {
+            let r = refine_real_root(p, ri, &width);
+            prop_assert!(r.is_exact() || r.width() <= width);
+            prop_assert!(holds(&r, known));
+            let expected = match known {
+                Known::Rat(x) => other.sign_at(x),
+                Known::Sqrt2(false) => sign_with_sqrt2(&a, &b),
+                Known::Sqrt2(true) => sign_with_sqrt2(&a, &b.neg_ref()),
+            };
+            prop_assert_eq!(sign_at_real_root(&other, p, ri), expected);
+            // A multiple of the root's own factor vanishes there.
+            let vanishing = other.clone() * case.square_free.clone();
+            prop_assert_eq!(sign_at_real_root(&vanishing, p, ri), Sign::Zero);
+        }
+    }
+}

@@ -247,63 +247,27 @@ fn hom_and_bezier_constructors_agree_with_the_power_form() {
 }
 
 #[test]
-fn square_freeness_is_certified_modulo_the_prime_or_not_at_all() {
-    let simple = UPoly::from_roots(&[q(1, 3), q(1, 2), q(-4, 7)]);
-    assert!(square_free_mod_prime(&simple));
-    let double = UPoly::from_roots(&[q(1, 3), q(1, 3), q(1, 2)]);
-    assert!(!square_free_mod_prime(&double));
-    // The prime dividing a denominator: no image, so no certificate (not a wrong one).
-    let p61 = (1i64 << 61) - 1;
-    let unlucky = UPoly::from_coeffs(vec![q(1, p61), q(1, 1), q(1, 1)]);
-    assert!(!square_free_mod_prime(&unlucky));
-}
-
-#[test]
-fn both_isolation_paths_find_the_same_roots() {
+fn candidate_roots_are_those_of_the_square_free_part_in_the_unit_interval() {
     // (x - 1/3)^2 (x^2 - 1/2) (x - 3/4)^3 (x - 2): roots 1/3, sqrt(1/2), 3/4 in [0, 1].
     let base = UPoly::from_roots(&[q(1, 3), q(3, 4), q(2, 1)]) * poly(&[-1, 0, 2]);
     let repeated = base.clone() * UPoly::from_roots(&[q(1, 3), q(3, 4), q(3, 4)]);
-    let (_, counter, via_sturm) = isolate_candidates(&repeated);
-    assert!(matches!(counter, Counter::Sturm(_)));
-    let (_, counter, via_descartes) = isolate_candidates(&base);
-    assert!(matches!(counter, Counter::Descartes));
-    assert_eq!(via_sturm.len(), 3);
-    assert_eq!(via_descartes.len(), 3);
-    for (a, b) in via_sturm.iter().zip(&via_descartes) {
-        // The same root: the intervals overlap.
-        assert!(a.lo <= b.hi && b.lo <= a.hi, "{a:?} vs {b:?}");
-    }
-    let root =
-        |ri: &RootInterval| poly(&[-1, 0, 2]).sign_at(&ri.lo) * poly(&[-1, 0, 2]).sign_at(&ri.hi);
-    assert_eq!(root(&via_sturm[1]), Sign::Negative);
-    // Counting one root on an interval, both ways.
-    let sqf = base.primitive_part();
-    let (lo, hi) = (q(2, 3), q(72, 100));
-    assert!(descartes_one(&sqf, &lo, &hi));
+    let sqf = repeated.primitive_square_free_part();
+    assert_eq!(sqf, base.primitive_part());
+    let roots = unit_roots(&sqf);
+    assert_eq!(roots.len(), 3);
+    assert_eq!(roots[0].exact_value(), Some(&q(1, 3)));
+    assert_eq!(roots[2].exact_value(), Some(&q(3, 4)));
+    let half = poly(&[-1, 0, 2]);
+    assert_eq!(
+        half.sign_at(&roots[1].lo) * half.sign_at(&roots[1].hi),
+        Sign::Negative
+    );
+    assert!(descartes_one(&sqf, &roots[1].lo, &roots[1].hi));
+    // Counting one root on an interval: sqrt(1/2) alone in [2/3, 0.72]; three roots in [0, 1].
+    assert!(descartes_one(&sqf, &q(2, 3), &q(72, 100)));
     assert!(!descartes_one(&sqf, &q(0, 1), &q(1, 1)));
-}
-
-#[test]
-fn integer_descartes_isolation_agrees_with_the_rational_counts() {
-    let cases = [
-        UPoly::from_roots(&[q(1, 3), q(3, 4), q(2, 1), q(0, 1), q(1, 1), q(1, 2)])
-            * poly(&[-1, 0, 2]),
-        UPoly::from_roots(&[q(1, 1000), q(2, 1000), q(-1, 5)])
-            * poly(&[-1, 0, 0, 3])
-            * poly(&[1, 0, 1]),
-    ];
-    for p in cases {
-        let p = p.primitive_part();
-        let roots = unit_roots_descartes(&p);
-        let expected = p.unit_roots().expect("not zero");
-        assert_eq!(roots.len(), expected.len(), "{p:?}");
-        for (a, b) in roots.iter().zip(&expected) {
-            assert!(a.lo <= b.hi && b.lo <= a.hi, "{a:?} vs {b:?}");
-            if !a.is_exact() {
-                assert!(descartes_one(&p, &a.lo, &a.hi), "{a:?}");
-            }
-        }
-    }
+    // An end that is a root is refused.
+    assert!(!descartes_one(&sqf, &q(1, 3), &q(1, 2)));
 }
 
 #[test]

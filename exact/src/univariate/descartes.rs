@@ -346,6 +346,76 @@ pub fn integer_real_roots_to(
     real_roots_to_with(coeffs, width, Options::FAST)
 }
 
+/// [`integer_real_roots`] with every rational root exact: an interval that is not recognised by
+/// the leaf estimates (module documentation, "Rational roots") is narrowed below `1 / (2 l)`,
+/// `l` the leading coefficient of the primitive square-free part, where at most one candidate
+/// `k / l` of the rational root theorem remains, and that candidate is evaluated exactly. An
+/// irrational root keeps the narrowed interval. The intervals are disjoint as closed intervals.
+///
+/// # Errors
+/// [`ZeroPolynomial`] for the zero polynomial.
+///
+/// # Panics
+/// Beyond [`MAX_DESCARTES_DEGREE`].
+pub(super) fn integer_real_roots_rational_exact(
+    coeffs: &[BigInt],
+) -> Result<Vec<RootInterval>, ZeroPolynomial> {
+    let Some(q) = prepare(coeffs)? else {
+        return Ok(Vec::new());
+    };
+    let roots = isolate_square_free(&q, Options::FAST);
+    let refiner = Refiner::new(&q);
+    let mut rationals = RationalRoots::new(&q);
+    let l = Rational::from(q[q.len() - 1].clone());
+    let width = Rational::ONE / l.mul_ref(&Rational::from_integer(2));
+    let k = roots.len();
+    let mut out: Vec<RootInterval> = Vec::with_capacity(k);
+    for (i, Isolated { ri, estimate }) in roots.into_iter().enumerate() {
+        if ri.is_exact() {
+            out.push(ri);
+            continue;
+        }
+        if let Some(est) = &estimate {
+            if let Some(r) = rationals.recognise(est.to_f64(), &ri.lo, &ri.hi) {
+                out.push(RootInterval::exact(r));
+                continue;
+            }
+        }
+        // The sign right of root i is (-1)^(k-1-i) (positive leading coefficient).
+        let s_lo = if (k - 1 - i) % 2 == 0 {
+            Sign::Negative
+        } else {
+            Sign::Positive
+        };
+        let narrow = refiner.refine(ri.lo, ri.hi, s_lo, &width, None);
+        if narrow.is_exact() {
+            out.push(narrow);
+            continue;
+        }
+        // At most one integer m with lo * l < m < hi * l.
+        let m = floor(&narrow.lo.mul_ref(&l)) + 1;
+        let candidate = Rational::from(m) / &l;
+        if candidate < narrow.hi && sign_at_rational(&q, &candidate) == Sign::Zero {
+            out.push(RootInterval::exact(candidate));
+        } else {
+            out.push(narrow);
+        }
+    }
+    Ok(out)
+}
+
+/// Descartes' bound for the open interval `(0, 1)` of the integer polynomial with these
+/// coefficients (constant term first, degree `n`): the sign variations of
+/// `(1 + x)^n p(1 / (1 + x))`, whose coefficients are positive multiples of the Bernstein
+/// coefficients of `p` on `[0, 1]` in reverse order. It bounds the number of roots in `(0, 1)`
+/// counted with multiplicity and has the same parity; 0 and 1 are exact.
+pub(super) fn unit_descartes_bound(coeffs: &[BigInt]) -> usize {
+    let mut a = coeffs.to_vec();
+    a.reverse();
+    taylor_shift_1(&mut a);
+    variations(&a)
+}
+
 /// Which of the accelerations of the module documentation run; [`Options::FAST`] is the public
 /// behaviour, the others are the references of the tests.
 #[derive(Clone, Copy, Debug)]
@@ -463,6 +533,18 @@ impl UPoly {
                 c.numer()
             })
             .collect()
+    }
+
+    /// The primitive square-free part with a positive leading coefficient (a positive multiple
+    /// of [`UPoly::square_free_part`]): certified square-free modulo word-size primes when it is
+    /// (module documentation, step 1), so the usual case needs no remainder sequence. The zero
+    /// polynomial and constants are returned as their primitive parts.
+    pub fn primitive_square_free_part(&self) -> UPoly {
+        if self.is_constant() {
+            return self.primitive_part();
+        }
+        let q = square_free_integer(&self.integer_coefficients());
+        UPoly::from_coeffs(q.into_iter().map(Rational::from).collect())
     }
 
     /// Isolating intervals of all distinct real roots by Descartes' rule of signs (the

@@ -56,6 +56,7 @@ mod bernstein_roots;
 mod descartes;
 mod isolate;
 mod limbs;
+mod real_roots;
 mod resultant;
 #[cfg(test)]
 mod tests;
@@ -66,6 +67,10 @@ pub use bernstein_roots::UnitRootMethod;
 pub use descartes::{integer_real_roots, integer_real_roots_to, MAX_DESCARTES_DEGREE};
 pub use exactcheck_core::roots::{IsolatedRoot, ZeroPolynomial};
 pub use isolate::sign_variations;
+pub use real_roots::{
+    compare_with_real_root, descartes_bound, isolate_real_roots, isolate_real_roots_in,
+    isolate_real_roots_sturm, isolate_real_roots_sturm_in, refine_real_root, sign_at_real_root,
+};
 pub use upoly::UPolyDisplay;
 
 use crate::poly::Var;

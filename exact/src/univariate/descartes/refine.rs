@@ -324,7 +324,6 @@ pub(super) fn floor_log2(x: &Rational) -> i64 {
 
 /// The exact sign of the integer polynomial `q` at the rational `x = u / v` (`v > 0`): the sign
 /// of `sum q_i u^i v^(n-i)`.
-#[cfg(test)]
 pub(super) fn sign_at_rational(q: &[BigInt], x: &Rational) -> Sign {
     let (u, v) = (x.numer(), x.denom());
     let n = q.len() - 1;
