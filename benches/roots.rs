@@ -1,8 +1,8 @@
-//! Criterion benchmark of exact root isolation in [0, 1] (`UPoly::unit_roots_with`): Sturm
-//! bisection against Bernstein–Descartes subdivision, at degrees 10, 20 and 40, on products of
-//! `(t - k/(d+1))` (d roots in [0, 1], close together at degree 40) and on seeded random integer
-//! polynomials (coefficients in [-100, 100], few roots in [0, 1]). The faster method is the
-//! default of `UPoly::unit_roots`; the measured table is in README_roots.md.
+//! Criterion benchmark of exact root isolation in [0, 1] (`isolate_real_roots_in`, Descartes'
+//! rule with every rational root exact, against the Sturm reference `isolate_real_roots_sturm_in`),
+//! at degrees 10, 20 and 40, on products of `(t - k/(d+1))` (d rational roots in [0, 1], close
+//! together at degree 40) and on seeded random integer polynomials (coefficients in [-100, 100],
+//! few roots in [0, 1]).
 //!
 //! The group `w4` times W4 at the six comparison sizes (`w4::solve`: all real roots
 //! isolated by Descartes' rule and refined to width 2^-53), each root count asserted first.
@@ -10,7 +10,9 @@
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use exactcheck_core::Rng;
 use exactcheck_exact::univariate::w4;
-use exactcheck_exact::univariate::{UPoly, UnitRootMethod};
+use exactcheck_exact::univariate::{
+    isolate_real_roots_in, isolate_real_roots_sturm_in, RootInterval, UPoly,
+};
 use exactcheck_exact::Rational;
 use std::time::Duration;
 
@@ -30,6 +32,14 @@ fn random(d: usize, seed: u64) -> UPoly {
     UPoly::from_i64_coeffs(&c)
 }
 
+/// An isolator of the roots in `[lo, hi]`.
+type Method = fn(&UPoly, &Rational, &Rational) -> Vec<RootInterval>;
+
+/// The roots of `p` in `[0, 1]` by `m`.
+fn unit(p: &UPoly, m: Method) -> Vec<RootInterval> {
+    m(p, &Rational::ZERO, &Rational::ONE)
+}
+
 fn bench(c: &mut Criterion) {
     let mut g = c.benchmark_group("unit_roots");
     g.sample_size(10);
@@ -41,19 +51,15 @@ fn bench(c: &mut Criterion) {
             ("random", random(d, 0x5eed + d as u64)),
         ];
         for (name, p) in &cases {
-            for (label, m) in [
-                ("sturm", UnitRootMethod::Sturm),
-                ("bernstein", UnitRootMethod::BernsteinDescartes),
-            ] {
-                // Both methods must agree on the number of roots before being timed.
-                assert_eq!(
-                    p.unit_roots_with(m).expect("non-zero").len(),
-                    p.unit_roots_with(UnitRootMethod::Sturm)
-                        .expect("non-zero")
-                        .len()
-                );
+            let methods: [(&str, Method); 2] = [
+                ("descartes", isolate_real_roots_in),
+                ("sturm", isolate_real_roots_sturm_in),
+            ];
+            for (label, m) in methods {
+                // Both isolators must agree on the number of roots before being timed.
+                assert_eq!(unit(p, m).len(), unit(p, isolate_real_roots_sturm_in).len());
                 g.bench_with_input(BenchmarkId::new(format!("{name}/{label}"), d), p, |b, p| {
-                    b.iter(|| p.unit_roots_with(m).expect("non-zero"))
+                    b.iter(|| unit(p, m))
                 });
             }
         }

@@ -103,7 +103,7 @@ use exactcheck_core::bezier::RationalBezierCurve;
 use exactcheck_core::{Field, Ring, Sign};
 use num_bigint::BigInt;
 use num_integer::Integer;
-use num_traits::{One, Zero};
+use num_traits::One;
 
 mod resultant;
 #[cfg(test)]
@@ -729,7 +729,8 @@ impl Search {
             (p.sign_at(lo) != Sign::Zero && p.sign_at(hi) != Sign::Zero)
                 .then(|| sign_variations(chain, lo) - sign_variations(chain, hi))
         };
- descartes_one(&self.sqf, lo, hi) && (self.w_free.is_constant() || count(&self.w_free, &self.w_sturm) == Some(0))
+        descartes_one(&self.sqf, lo, hi)
+            && (self.w_free.is_constant() || count(&self.w_free, &self.w_sturm) == Some(0))
     }
 
     /// Halves the interval of root `k` (exact when the midpoint is the root).

@@ -338,9 +338,17 @@ use exactcheck_exact::univariate::{
 /// same number of roots, the same exact (rational) roots, every other interval isolating with
 /// non-root ends at which the square-free part changes sign, and the i-th intervals of both
 /// overlapping (they hold the same root).
-fn agrees_with_sturm(p: &UPoly, fast: &[RootInterval], sturm: &[RootInterval]) -> Result<(), String> {
+fn agrees_with_sturm(
+    p: &UPoly,
+    fast: &[RootInterval],
+    sturm: &[RootInterval],
+) -> Result<(), String> {
     if fast.len() != sturm.len() {
-        return Err(format!("{} roots, Sturm {} for {p}", fast.len(), sturm.len()));
+        return Err(format!(
+            "{} roots, Sturm {} for {p}",
+            fast.len(),
+            sturm.len()
+        ));
     }
     let sqf = p.square_free_part();
     for (f, s) in fast.iter().zip(sturm) {
@@ -367,20 +375,18 @@ fn agrees_with_sturm(p: &UPoly, fast: &[RootInterval], sturm: &[RootInterval]) -
 /// Random integer polynomials with repeated factors: products of up to three random factors of
 /// degree 1 to 4, each to a power 1 to 3.
 fn arb_repeated() -> impl Strategy<Value = UPoly> {
-    prop::collection::vec(
-        (prop::collection::vec(-20i64..=20, 2..=5), 1u32..=3),
-        1..=3,
-    )
-    .prop_map(|factors| {
-        let mut p = UPoly::one();
-        for (c, m) in factors {
-            let f = UPoly::from_i64_coeffs(&c);
-            if !f.is_zero() {
-                p *= Ring::pow(&f, m);
+    prop::collection::vec((prop::collection::vec(-20i64..=20, 2..=5), 1u32..=3), 1..=3).prop_map(
+        |factors| {
+            let mut p = UPoly::one();
+            for (c, m) in factors {
+                let f = UPoly::from_i64_coeffs(&c);
+                if !f.is_zero() {
+                    p *= Ring::pow(&f, m);
+                }
             }
-        }
-        p
-    })
+            p
+        },
+    )
 }
 
 /// Clustered roots: `c + k / 2^e` for a few `k` (rational, denominators up to `2^40`), times

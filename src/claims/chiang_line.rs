@@ -49,7 +49,7 @@ use exactcheck_core::{binomial, Bernstein, Field, Ring, Vec3};
 use exactcheck_exact::expr::Expr;
 use exactcheck_exact::poly::CoeffExpr;
 use exactcheck_exact::poly::{Poly, Var};
-use exactcheck_exact::univariate::{RootInterval, UPoly};
+use exactcheck_exact::univariate::{common_real_roots_in, isolate_real_roots_in, UPoly};
 use exactcheck_exact::Rational;
 
 type P = Poly<Rational>;
@@ -138,19 +138,6 @@ fn printed_in_t(sym: &mut Symbols, printed: &str, b: &[P; 3], v: &[P; 3]) -> Res
 /// The Bernstein polynomial over Q as a power-basis `UPoly`.
 fn upoly(p: &Bernstein<Rational>) -> UPoly {
     UPoly::from_coeffs(p.to_power())
-}
-
-/// The distinct real roots of `p` in `[0, 1]`, exact when rational (Sturm isolation; a root
-/// interval is kept when 0 is not above its root and 1 not below it).
-fn unit_roots(p: &UPoly) -> Vec<RootInterval> {
-    use std::cmp::Ordering;
-    p.isolate_roots()
-        .into_iter()
-        .filter(|ri| {
-            p.compare_with_root(ri, &Rational::ZERO) != Ordering::Greater
-                && p.compare_with_root(ri, &Rational::ONE) != Ordering::Less
-        })
-        .collect()
 }
 
 fn rational_surface(base: &[[Rational; 3]], dirs: &[[Rational; 3]]) -> RuledSurface<Rational> {
@@ -260,7 +247,7 @@ fn degree_attained(m: usize, n: usize) -> Result<usize, String> {
             poly.degree()
         ));
     }
-    let roots = unit_roots(&upoly(&poly));
+    let roots = isolate_real_roots_in(&upoly(&poly), &Rational::ZERO, &Rational::ONE);
     for ri in &roots {
         let t = ri.exact_value().ok_or_else(|| {
             format!("(m,n)=({m},{n}): a root {ri:?} of the construction is not rational")
@@ -305,7 +292,7 @@ fn line_instances(seed: u64, count: usize) -> Result<(usize, usize), String> {
             continue; // the line lies on the surface or every ruling is parallel to it
         }
         let u = upoly(&poly);
-        let roots = unit_roots(&u);
+        let roots = isolate_real_roots_in(&u, &Rational::ZERO, &Rational::ONE);
         for t in [&t1, &t2] {
             if !roots.iter().any(|ri| ri.exact_value() == Some(t)) {
                 return Err(format!(
@@ -406,10 +393,10 @@ fn line() -> Result<Outcome, String> {
     }
     Ok(Outcome {
         verdict: Verdict::Proved,
-        method: "symbolic expansion + exact Sturm isolation".into(),
+        method: "symbolic expansion + exact root isolation (Descartes)".into(),
         evidence: format!(
             "{}; printed By Vz - Bz Vy = det(B - P, V, D) at P = 0, D = e_x and the general det = core line polynomial, symbolic control points for all {cases} (m,n) with m <= {SYMBOLIC_M}, n <= {SYMBOLIC_N} (general P, D for m, n <= 2)\n\
-             degree m+n attained: B = (0,g,0), V = (0,1,f), g, f with distinct rational roots; distinct intersection parameters in [0,1] found (Sturm, exact) {}\n\
+             degree m+n attained: B = (0,g,0), V = (0,1,f), g, f with distinct rational roots; distinct intersection parameters in [0,1] found (Descartes, exact) {}\n\
              {instances} random exact lines through two chosen surface points S(s_i,t_i), (m,n) in [0,3]x[1,4]: both t_i recovered exactly, every rational root's point on line and surface ({roots} roots in all)\n\
              bound 3 max(n, m+1): valid but never attained; the sharp bound is m+n (attained above): {}\n\
              the paper's reason ('the degree of each equation is max{{n, m+1}}', summed over 3 equations) is not a Bezout bound; the bound holds because the reduction gives one polynomial of degree m+n (finitely many solutions only when it is not identically zero and no root's ruling is the line itself)",
@@ -444,17 +431,6 @@ fn vicinity_counterexamples() -> [VicinityCase; 2] {
     ]
 }
 
-/// Common roots in [0, 1] of polynomials over Q (their gcd), exact when rational.
-fn common_roots(ps: &[UPoly]) -> Option<Vec<RootInterval>> {
-    let nonzero: Vec<&UPoly> = ps.iter().filter(|p| !p.is_zero()).collect();
-    let first = nonzero.first()?;
-    let g = nonzero
-        .iter()
-        .skip(1)
-        .fold((*first).clone(), |g, p| g.gcd(p));
-    Some(unit_roots(&g))
-}
-
 /// The corrected test for the origin: a common root `t` in [0, 1] of all three components of
 /// `B x V` with `V(t) != 0`, or `B(t) = 0`. (Rational common roots only: an irrational one is
 /// reported as an error, never guessed; the counter-examples have rational data and roots.)
@@ -464,14 +440,16 @@ fn origin_on_surface(s: &RuledSurface<Rational>) -> Result<bool, String> {
         .iter()
         .map(upoly)
         .collect();
-    let Some(roots) = common_roots(&comps) else {
+    let Some(roots) = common_real_roots_in(&comps, &Rational::ZERO, &Rational::ONE) else {
         // B x V = 0 identically: every ruling with V(t) != 0 passes through the origin; if
         // V = 0 identically, S is the curve B, and the origin is on it iff B has a root.
         if !s.directions().control_points().iter().all(Vec3::is_zero) {
             return Ok(true);
         }
         let b: Vec<UPoly> = s.base().coordinates().iter().map(upoly).collect();
-        return Ok(common_roots(&b).is_none_or(|r| !r.is_empty()));
+        return Ok(
+            common_real_roots_in(&b, &Rational::ZERO, &Rational::ONE).is_none_or(|r| !r.is_empty())
+        );
     };
     for ri in roots {
         let t = ri
@@ -528,8 +506,12 @@ fn vicinity() -> Result<Outcome, String> {
         let x = s0.eval(&sv, &t);
         let comps: Vec<UPoly> = s0.vicinity_polynomials(&x).iter().map(upoly).collect();
         // printed E1 = -(c_y), E2 = c_x: their common roots must contain t.
-        let printed = common_roots(&[comps[1].clone(), comps[0].clone()]);
-        let full = common_roots(&comps);
+        let printed = common_real_roots_in(
+            &[comps[1].clone(), comps[0].clone()],
+            &Rational::ZERO,
+            &Rational::ONE,
+        );
+        let full = common_real_roots_in(&comps, &Rational::ZERO, &Rational::ONE);
         for (what, roots) in [("printed", printed), ("corrected", full)] {
             match roots {
                 Some(rs) if rs.iter().any(|ri| ri.exact_value() == Some(&t)) => {}
@@ -548,8 +530,8 @@ fn vicinity() -> Result<Outcome, String> {
         // E1 = Bx Vz - Bz Vx = -(B x V)_y, E2 = By Vz - Bz Vy = (B x V)_x.
         let e1b = Bernstein::new(cy.coeffs().iter().map(Ring::neg_ref).collect());
         let (e1, e2) = (upoly(&e1b), upoly(&cx));
-        let printed =
-            common_roots(&[e1, e2]).ok_or("the printed polynomials are identically zero")?;
+        let printed = common_real_roots_in(&[e1, e2], &Rational::ZERO, &Rational::ONE)
+            .ok_or("the printed polynomials are identically zero")?;
         let Some(t) = printed.iter().find_map(|ri| ri.exact_value().cloned()) else {
             continue;
         };
@@ -588,7 +570,7 @@ fn vicinity() -> Result<Outcome, String> {
     }
     Ok(Outcome {
         verdict: Verdict::Fails,
-        method: "exact counter-example (Sturm/gcd over Q)".into(),
+        method: "exact counter-example (gcd over Q, Descartes isolation)".into(),
         evidence: format!(
             "counter-example: {}\n\
              necessary: {} (both printed equations are components of B x V, zero when B + sV = 0); on {instances} random exact surfaces through the origin at a chosen (s,t) both the printed and the corrected test find t\n\
@@ -679,7 +661,9 @@ mod tests {
         // the corrected test says no.
         let [case, zero_direction] = vicinity_counterexamples();
         let [cx, cy, _] = case.surface.vicinity_polynomials(&Vec3::zero());
-        let roots = common_roots(&[upoly(&cy), upoly(&cx)]).unwrap();
+        let roots =
+            common_real_roots_in(&[upoly(&cy), upoly(&cx)], &Rational::ZERO, &Rational::ONE)
+                .unwrap();
         assert_eq!(roots.len(), 1);
         assert_eq!(roots[0].exact_value(), Some(&Rational::ZERO));
         assert!(!origin_on_surface(&case.surface).unwrap());

@@ -31,7 +31,7 @@
 
 use exactcheck_core::roots::{self, IsolatedRoot};
 use exactcheck_core::{Bernstein, OrderedField, Sign};
-use exactcheck_exact::univariate::UPoly;
+use exactcheck_exact::univariate::{isolate_real_roots_in, UPoly};
 use exactcheck_exact::{Radical, Radicand, Rational};
 use schemars::{json_schema, JsonSchema, Schema, SchemaGenerator};
 use serde::de::{Deserialize, Deserializer, Error as _};
@@ -417,8 +417,8 @@ impl SectionScalar for f64 {
 /// The rational zeros in `[0, 1]` of `p` (power coefficients), exactly: writing the coefficients
 /// in the basis `sqrt(k)` of the radical field, `p = sum_k sqrt(k) p_k(t)` with rational `p_k`, a
 /// rational `t0` is a zero of `p` iff it is a common zero of all `p_k`, i.e. a zero of the
-/// rational polynomial `G = gcd_k p_k`, whose rational zeros Sturm isolation
-/// (`UPoly::isolate_roots`) returns exactly. Empty for `f64` (no exact decomposition). Used by
+/// rational polynomial `G = gcd_k p_k`, whose rational zeros in `[0, 1]` the real-root isolator
+/// (`isolate_real_roots_in`) returns exactly. Empty for `f64` (no exact decomposition). Used by
 /// `ruled_plane` (exact poles) and `ph_offset` (exact cusps and critical points of the radius).
 pub(crate) fn rational_zeros<T: SectionScalar>(p: &[T]) -> Vec<T> {
     let Some(parts) = T::rational_components(p) else {
@@ -428,10 +428,9 @@ pub(crate) fn rational_zeros<T: SectionScalar>(p: &[T]) -> Vec<T> {
     for part in parts {
         g = g.gcd(&UPoly::from_coeffs(part));
     }
-    g.isolate_roots()
+    isolate_real_roots_in(&g, &Rational::ZERO, &Rational::ONE)
         .into_iter()
-        .filter(|ri| ri.is_exact() && ri.lo >= Rational::ZERO && ri.lo <= Rational::ONE)
-        .map(|ri| T::from_rational(&ri.lo))
+        .filter_map(|ri| ri.exact_value().map(T::from_rational))
         .collect()
 }
 

@@ -77,7 +77,7 @@ use exactcheck_core::roots::{
 };
 use exactcheck_core::ruled::RuledSurface;
 use exactcheck_core::{Bernstein, Field, OrderedField, Ring, Sign, Vec3};
-use exactcheck_exact::univariate::UPoly;
+use exactcheck_exact::univariate::{isolate_real_roots_in, UPoly};
 use exactcheck_exact::{Radical, Rational};
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
@@ -139,7 +139,7 @@ impl Scalar for Radical {
     }
 }
 
-/// Over `Q` the Sturm isolation of `exactcheck_exact::univariate` is used: it returns every
+/// Over `Q` the real-root isolator of `exactcheck_exact::univariate` is used: it returns every
 /// rational root exactly (Bernstein subdivision finds exactly only the dyadic ones), so a line
 /// through `S(s, t)` with rational `t` gets its point exactly.
 impl Scalar for Rational {
@@ -150,17 +150,12 @@ impl Scalar for Rational {
         Printable::approx(self)
     }
     fn roots(p: &Bernstein<Self>) -> Result<Vec<IsolatedRoot<Self>>, ZeroPolynomial> {
-        use std::cmp::Ordering;
         let u = UPoly::from_coeffs(p.to_power());
         if u.is_zero() {
             return Err(ZeroPolynomial);
         }
-        Ok(u.isolate_roots()
+        Ok(isolate_real_roots_in(&u, &Rational::ZERO, &Rational::ONE)
             .into_iter()
-            .filter(|ri| {
-                u.compare_with_root(ri, &Rational::ZERO) != Ordering::Greater
-                    && u.compare_with_root(ri, &Rational::ONE) != Ordering::Less
-            })
             .map(|ri| match ri.exact_value() {
                 Some(t) => IsolatedRoot::Exact(t.clone()),
                 None => IsolatedRoot::Between(ri.lo, ri.hi),

@@ -33,8 +33,8 @@
 //! coefficients too), refined to `precision`. Rational zeros are then made exact: writing the
 //! coefficients in the basis `sqrt(k)` of the radical field, `p = sum_k sqrt(k) p_k(t)` with
 //! rational `p_k`, a rational `t0` is a zero of `p` iff it is a common zero of all `p_k`, i.e. a
-//! zero of the rational polynomial `G = gcd_k p_k`, whose rational zeros Sturm isolation
-//! (`UPoly::isolate_roots`) returns exactly; each is placed in the one isolating interval that
+//! zero of the rational polynomial `G = gcd_k p_k`, whose rational zeros the real-root isolator
+//! (`isolate_real_roots_in`) returns exactly; each is placed in the one isolating interval that
 //! contains it. "How often does `f` vanish at the zero `t0` of `p` isolated by `(lo, hi)`" is
 //! decided exactly on `g = gcd(p, f)`: its zeros are zeros of `p`, so `(lo, hi)` isolates at most
 //! `t0` among them, and the multiplicity of `t0` in `g` is `min(mult_p, mult_f)`

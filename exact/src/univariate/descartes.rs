@@ -121,15 +121,16 @@
 //!   value is an exact root.
 //!
 //! # Which isolator where
-//! [`UPoly::isolate_roots`] (Sturm bisection over `Rational`) stays the workspace's default: it
-//! promises an exact interval **exactly when the root is rational**, which callers
-//! (`planar`, `solve`) rely on, and the workspace's polynomials are of degree at most a few
-//! dozen, where Sturm sequences are cheap. The Descartes isolator is for large degrees
-//! ([`UPoly::real_roots_descartes`], [`UPoly::isolate_real_roots_to`], the W4 benchmark): an
-//! isolating interval is exact when a split point hits the root; the refined intervals
-//! ([`integer_real_roots_to`]) are exact also for the rational roots recognised above (in
-//! practice every rational root with a denominator below about `2^26`, degree at most 1000),
-//! which is not a promise for every rational root.
+//! This isolator serves the workspace's real-root API ([`super::isolate_real_roots`],
+//! [`super::isolate_real_roots_in`]): there every interval that the leaf estimates did not
+//! resolve is narrowed below `1 / (2 l)` and its one candidate `k / l` of the rational root
+//! theorem is evaluated exactly, so a root is exact **exactly when it is rational**, as with the
+//! Sturm isolator ([`UPoly::isolate_roots`], the tests' reference). On its own
+//! ([`integer_real_roots`], [`UPoly::real_roots_descartes`]) an isolating interval is exact when
+//! a split point hits the root; the refined intervals ([`integer_real_roots_to`], the W4
+//! benchmark) are exact also for the rational roots recognised above (in practice every rational
+//! root with a denominator below about `2^26`, degree at most 1000), which is not a promise for
+//! every rational root.
 //!
 //! The accelerations (limbs, close pairs, rational roots, estimate windows) can be switched off
 //! one by one (`Options`); the tests run both and compare them with the Sturm isolator.

@@ -17,6 +17,14 @@
 //! zeros (the zero polynomial is the empty vector), so the representation is canonical and `==`
 //! is equality of polynomials. [`UPoly`] implements [`Ring`].
 //!
+//! # Real roots
+//! The workspace's real-root API is in `real_roots` ([`isolate_real_roots`],
+//! [`isolate_real_roots_sturm`], [`isolate_real_roots_in`], [`refine_real_root`],
+//! [`sign_at_real_root`], [`common_real_roots_in`], [`descartes_bound`]): one result type,
+//! [`RootInterval`], exact exactly when the root is rational. Production isolates by Descartes'
+//! rule (module `descartes`); the Sturm bisection below is the reference and the engine of the
+//! sign charts.
+//!
 //! # Algorithms
 //! * Division with remainder over Q; gcds by Euclid's algorithm in which every remainder is
 //!   replaced by its primitive part (integer coefficients with gcd 1, see [`UPoly::content`]):
@@ -52,7 +60,7 @@
 //! operations. Isolation bisects about `log2(2^k / sep)` times, `sep` the root separation; the
 //! test for a rational root then refines quadratically to `1/(2l)`, `l` as above.
 
-mod bernstein_roots;
+mod bernstein;
 mod descartes;
 mod isolate;
 mod limbs;
@@ -63,13 +71,13 @@ mod tests;
 mod upoly;
 pub mod w4;
 
-pub use bernstein_roots::UnitRootMethod;
 pub use descartes::{integer_real_roots, integer_real_roots_to, MAX_DESCARTES_DEGREE};
 pub use exactcheck_core::roots::{IsolatedRoot, ZeroPolynomial};
 pub use isolate::sign_variations;
 pub use real_roots::{
-    compare_with_real_root, descartes_bound, isolate_real_roots, isolate_real_roots_in,
-    isolate_real_roots_sturm, isolate_real_roots_sturm_in, refine_real_root, sign_at_real_root,
+    common_real_roots_in, compare_with_real_root, descartes_bound, isolate_real_roots,
+    isolate_real_roots_in, isolate_real_roots_sturm, isolate_real_roots_sturm_in, refine_real_root,
+    sign_at_real_root,
 };
 pub use upoly::UPolyDisplay;
 

@@ -57,6 +57,23 @@ pub fn isolate_real_roots_in(p: &UPoly, lo: &Rational, hi: &Rational) -> Vec<Roo
     clip_roots(p, roots, lo, hi)
 }
 
+/// The common real roots of `ps` in `[lo, hi]`: the roots of their gcd there
+/// ([`isolate_real_roots_in`]), zero polynomials ignored. `None` when every polynomial is zero
+/// (every point is a common root).
+///
+/// # Panics
+/// When `lo > hi`.
+pub fn common_real_roots_in(
+    ps: &[UPoly],
+    lo: &Rational,
+    hi: &Rational,
+) -> Option<Vec<RootInterval>> {
+    let mut nonzero = ps.iter().filter(|p| !p.is_zero());
+    let first = nonzero.next()?.clone();
+    let g = nonzero.fold(first, |g, p| g.gcd(p));
+    Some(isolate_real_roots_in(&g, lo, hi))
+}
+
 /// [`isolate_real_roots_in`] on the Sturm path ([`isolate_real_roots_sturm`]), the reference
 /// of the tests.
 ///

@@ -1,50 +1,14 @@
-//! Real roots in `[0, 1]`: the Bernstein form of a [`UPoly`] on the unit interval, and two exact
-//! isolation methods with one default, [`UPoly::unit_roots`].
+//! The Bernstein form of a [`UPoly`] on `[0, 1]`, and the conversions between the exact
+//! [`RootInterval`] and the generic [`IsolatedRoot`] of `exactcheck_core::roots` (which isolates
+//! roots in `[0, 1]` over any ordered field, e.g. the radical field; over `Q` the workspace uses
+//! [`super::isolate_real_roots_in`]).
 //!
-//! # The two methods
-//! * [`UnitRootMethod::Sturm`]: bisection of `[0, 1]` driven by Sturm counts, as
-//!   [`UPoly::isolate_roots`] does on the whole line. The number of distinct roots in the open
-//!   interval `(a, b)` is `V(a) - V(b)`, minus one when `b` itself is a root (`V` ignores the
-//!   zero at a root, so `V(a) - V(b)` counts `(a, b]`). Every count evaluates the whole Sturm
-//!   chain, `O(n)` polynomials of degree up to `n`.
-//! * [`UnitRootMethod::BernsteinDescartes`]: the square-free part (primitive remainder
-//!   sequence, [`UPoly::square_free_part`]) in Bernstein form on `[0, 1]`, then Descartes' rule
-//!   of signs on the Bernstein coefficients with de Casteljau subdivision at `1/2`
-//!   ([`exactcheck_core::roots`], which documents the algorithm and its termination). One
-//!   subdivision costs `O(n^2)` additions and halvings, and the sign count is free.
-//!
-//! Both return isolating intervals with the [`RootInterval`] contract (an exact root, or an open
-//! interval holding exactly one root whose ends are not roots); a root is exact when a
-//! bisection point or an end point hits it, not necessarily whenever it is rational (unlike
-//! [`UPoly::isolate_roots`], which tests every interval for a rational root; refine with
-//! [`UPoly::refine`] if needed). The default is the faster of the two as measured by the
-//! criterion bench `benches/roots.rs` (table in the README): Sturm. Bernstein–Descartes over
-//! `Rational` is faster on random polynomials with few roots in `[0, 1]` but up to 3x slower on
-//! many clustered roots (degree 40), where the denominators of the halved de Casteljau
-//! coefficients grow by `2^n` per level.
-//!
-//! # Conversions
 //! [`UPoly::to_bernstein`] and [`UPoly::from_bernstein`] convert between the power basis and
 //! the Bernstein basis on `[0, 1]` ([`Bernstein::from_power`], [`Bernstein::to_power`]).
 
-use super::isolate::SquareFree;
 use super::*;
 use exactcheck_core::bernstein::Bernstein;
-use exactcheck_core::roots::{unit_roots_square_free, IsolatedRoot, ZeroPolynomial};
-
-/// The isolation method of [`UPoly::unit_roots_with`].
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum UnitRootMethod {
-    /// Bisection driven by Sturm sequences.
-    Sturm,
-    /// Descartes' rule of signs on Bernstein coefficients with de Casteljau subdivision.
-    BernsteinDescartes,
-}
-
-impl UnitRootMethod {
-    /// The default of [`UPoly::unit_roots`]: the faster method in `benches/roots.rs`.
-    pub const DEFAULT: UnitRootMethod = UnitRootMethod::Sturm;
-}
+use exactcheck_core::roots::IsolatedRoot;
 
 impl From<IsolatedRoot<Rational>> for RootInterval {
     fn from(r: IsolatedRoot<Rational>) -> RootInterval {
@@ -79,89 +43,6 @@ impl UPoly {
     pub fn from_bernstein(b: &Bernstein<Rational>) -> UPoly {
         UPoly::from_coeffs(b.to_power())
     }
-
-    /// The distinct real roots in the closed interval `[0, 1]`, increasing, isolated by the
-    /// default method ([`UnitRootMethod::DEFAULT`]; see the module documentation).
-    ///
-    /// # Errors
-    /// [`ZeroPolynomial`] for the zero polynomial (every `t` is a root).
-    ///
-    /// ```
-    /// use exactcheck_exact::univariate::{RootInterval, UPoly};
-    /// use exactcheck_exact::Rational;
-    /// let r = |n, d| Rational::new(n, d).unwrap();
-    /// let p = UPoly::from_roots(&[r(-1, 3), r(1, 2), r(1, 2), r(1, 1), r(3, 2)]);
-    /// let roots = p.unit_roots().unwrap();
-    /// assert_eq!(roots, vec![RootInterval::exact(r(1, 2)), RootInterval::exact(r(1, 1))]);
-    /// ```
-    pub fn unit_roots(&self) -> Result<Vec<RootInterval>, ZeroPolynomial> {
-        self.unit_roots_with(UnitRootMethod::DEFAULT)
-    }
-
-    /// [`UPoly::unit_roots`] by the given method.
-    ///
-    /// # Errors
-    /// [`ZeroPolynomial`] for the zero polynomial.
-    pub fn unit_roots_with(
-        &self,
-        method: UnitRootMethod,
-    ) -> Result<Vec<RootInterval>, ZeroPolynomial> {
-        if self.is_zero() {
-            return Err(ZeroPolynomial);
-        }
-        if self.is_constant() {
-            return Ok(Vec::new());
-        }
-        Ok(match method {
-            UnitRootMethod::Sturm => sturm_unit_roots(&SquareFree::new(self)),
-            UnitRootMethod::BernsteinDescartes => {
-                let sqf = self.square_free_part().primitive_part();
-                unit_roots_square_free(&sqf.to_bernstein())
-                    .into_iter()
-                    .map(RootInterval::from)
-                    .collect()
-            }
-        })
-    }
-}
-
-/// Sturm bisection of `[0, 1]` for a non-constant square-free polynomial.
-fn sturm_unit_roots(sf: &SquareFree) -> Vec<RootInterval> {
-    let p = sf.poly();
-    let (zero, one) = (Rational::ZERO, Rational::ONE);
-    let is_root = |x: &Rational| p.sign_at(x) == Sign::Zero;
-    // The number of roots in the open interval (a, b), from V(a), V(b).
-    let open_count = |b: &Rational, va: usize, vb: usize| va - vb - usize::from(is_root(b));
-    let mut out = Vec::new();
-    if is_root(&zero) {
-        out.push(RootInterval::exact(zero.clone()));
-    }
-    let (v0, v1) = (sf.var_at(&zero), sf.var_at(&one));
-    let c = open_count(&one, v0, v1);
-    let mut stack = vec![(zero, one.clone(), v0, v1, c)];
-    while let Some((a, b, va, vb, count)) = stack.pop() {
-        if count == 0 {
-            continue;
-        }
-        if count == 1 && !is_root(&a) && !is_root(&b) {
-            out.push(RootInterval { lo: a, hi: b });
-            continue;
-        }
-        let m = midpoint(&a, &b);
-        let vm = sf.var_at(&m);
-        if is_root(&m) {
-            out.push(RootInterval::exact(m.clone()));
-        }
-        let right_count = open_count(&b, vm, vb);
-        let left_count = open_count(&m, va, vm);
-        stack.push((m.clone(), b, vm, vb, right_count));
-        stack.push((a, m, va, vm, left_count));
-    }
-    if is_root(&one) {
-        out.push(RootInterval::exact(one));
-    }
-    out.sort_by(|x, y| x.lo.cmp(&y.lo).then_with(|| x.hi.cmp(&y.hi)));
-    out
 }
 
 #[cfg(test)]
@@ -176,8 +57,14 @@ mod tests {
         Rational::new(n, d).unwrap()
     }
 
-    const METHODS: [UnitRootMethod; 2] =
-        [UnitRootMethod::Sturm, UnitRootMethod::BernsteinDescartes];
+    /// The fast isolator and the Sturm reference, on `[lo, hi]`.
+    type Method = fn(&UPoly, &Rational, &Rational) -> Vec<RootInterval>;
+    const METHODS: [Method; 2] = [isolate_real_roots_in, isolate_real_roots_sturm_in];
+
+    /// The roots in `[0, 1]` by `m`.
+    fn unit(p: &UPoly, m: Method) -> Vec<RootInterval> {
+        m(p, &Rational::ZERO, &Rational::ONE)
+    }
 
     /// Whether the isolated root is `x` (equal when exact, strictly inside otherwise).
     fn holds(ri: &RootInterval, x: &Rational) -> bool {
@@ -226,7 +113,7 @@ mod tests {
             let expected: Vec<Rational> = (1..=d).map(|k| r(k, d + 1)).collect();
             let p = UPoly::from_roots(&expected);
             for m in METHODS {
-                check(&p, &p.unit_roots_with(m).unwrap(), &expected);
+                check(&p, &unit(&p, m), &expected);
             }
         }
     }
@@ -250,12 +137,11 @@ mod tests {
         let p = UPoly::from_roots(&all);
         let expected = [r(0, 1), r(1, 3), r(1, 2), r(99, 100), r(1, 1)];
         for m in METHODS {
-            let found = p.unit_roots_with(m).unwrap();
+            let found = unit(&p, m);
             check(&p, &found, &expected);
             let mult: Vec<u32> = found.iter().map(|ri| p.multiplicity(ri)).collect();
             assert_eq!(mult, vec![1, 2, 1, 1, 3]);
         }
-        assert_eq!(p.unit_roots(), p.unit_roots_with(UnitRootMethod::DEFAULT));
     }
 
     #[test]
@@ -266,7 +152,7 @@ mod tests {
         let s = 0.6f64.sqrt();
         let expected = [(1.0 - s) / 2.0, 0.5f64.sqrt(), (1.0 + s) / 2.0];
         for m in METHODS {
-            let found = p.unit_roots_with(m).unwrap();
+            let found = unit(&p, m);
             assert_eq!(found.len(), 3, "{found:?}");
             for (ri, x) in found.iter().zip(expected) {
                 assert!(!ri.is_exact());
@@ -280,8 +166,8 @@ mod tests {
     #[test]
     fn zero_and_constant() {
         for m in METHODS {
-            assert_eq!(UPoly::zero().unit_roots_with(m), Err(ZeroPolynomial));
-            assert_eq!(UPoly::constant(r(-3, 1)).unit_roots_with(m), Ok(vec![]));
+            assert_eq!(unit(&UPoly::zero(), m), vec![]);
+            assert_eq!(unit(&UPoly::constant(r(-3, 1)), m), vec![]);
         }
     }
 
@@ -342,7 +228,7 @@ mod tests {
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(64))]
         /// Products of linear factors with rational roots in and out of [0, 1]: exactly the
-        /// ones in [0, 1] are found, in order, by both methods, and the number agrees with
+        /// ones in [0, 1] are found, in order, by both isolators, and the number agrees with
         /// Sturm's count.
         #[test]
         fn finds_exactly_the_roots_in_unit_interval(
@@ -363,7 +249,7 @@ mod tests {
                 + usize::from(p.sign_at(&zero) == Sign::Zero);
             prop_assert_eq!(sturm, inside.len());
             for m in METHODS {
-                let found = p.unit_roots_with(m).unwrap();
+                let found = unit(&p, m);
                 prop_assert_eq!(found.len(), inside.len());
                 for (ri, x) in found.iter().zip(&inside) {
                     prop_assert!(holds(ri, x), "{:?} should hold {}", ri, x);
