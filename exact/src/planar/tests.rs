@@ -1,4 +1,5 @@
 use super::*;
+use num_traits::Zero;
 
 fn q(n: i64, d: i64) -> Rational {
     Rational::new(n, d).expect("non-zero denominator")
