@@ -188,6 +188,7 @@ if "W2" in ONLY:
         id="W2", title="W2: exact Spaeth discriminant at N rational parameters (evaluation, and the sums)",
         time="seconds", check=CHECK2,
         sizes=[(f"{mode}, N = {n:,}", [("exactcheck", ec("w2", "--mode", mode, "--n", n))]
+                + [("gmp-c", anchor("w2_gmp.py", mode, n))]
                 + [(t, anchor("w2_rational.py", t, mode, n)) for t in ("gmpy2", "flint")]
                 + ([("fraction", anchor("w2_rational.py", "fraction", mode, n))] if n <= 10000 else []))
                for mode, n in W2_RUNS]))
@@ -440,6 +441,7 @@ if "W2" in ONLY:
     for mode in ("eval", "tree", "seq"):
         check_ratio(f"W2 {mode} N = 2,000 <= 1.0x gmpy2", "W2", f"{mode}, N = 2,000", "gmpy2", "<=", 1.0)
     check_ratio("W2 seq N = 10,000 <= 1.2x gmpy2", "W2", "seq, N = 10,000", "gmpy2", "<=", 1.2)
+    check_ratio("W2 seq N = 100,000 <= 1.0x GMP mpq_t from C", "W2", "seq, N = 100,000", "gmp-c", "<=", 1.0)
 if "W3" in ONLY:
     check_ratio("W3 >= 10x numpy running the same algorithm (angle addition), one thread each",
                 "W3", "N = 10,000,000", "numpy addition", ">=", 10)
