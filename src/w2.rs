@@ -6,6 +6,7 @@
 //! `k = 0..N-1`, the angle is the rational circle point of `T_k` and the value is
 //! `disc = A^2 - B` ([`exactcheck_core::cylinder_sphere`]).
 
+use crate::bench::Stopwatch;
 use exactcheck_core::cylinder_sphere::{unit_circle_point, Angle, CylinderSphere};
 use exactcheck_core::{pairwise_sum, Field, Sign, Vec3};
 use exactcheck_exact::RationalScalar;
@@ -13,7 +14,6 @@ use num_bigint::BigInt;
 use num_integer::Integer;
 use num_rational::BigRational;
 use num_traits::{Signed, ToPrimitive};
-use crate::bench::Stopwatch;
 
 /// How the discriminants are consumed.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]

@@ -11,13 +11,13 @@
 //!
 //! Both print their check values as text or as one JSON line with the anchors' field names.
 
+use super::{Elapsed, Stopwatch};
 use crate::args::check_count;
 use crate::Error;
 use exactcheck_core::Ring;
 use exactcheck_exact::poly::{Poly, Vars};
 use exactcheck_exact::w1::ring_identity;
 use exactcheck_exact::Rational;
-use super::{Elapsed, Stopwatch};
 
 /// The largest `m + n` of `bench w1` (binomials stay far inside `i64`; (13, 21) takes well under
 /// a second, and the expansion grows about as `(m + n)^3`).

@@ -8,6 +8,7 @@
 //! caches and first-touch page faults, would otherwise cost as much as the isolation). The JSON
 //! line carries the intervals as exact rationals.
 
+use super::{Elapsed, Stopwatch};
 use crate::args::check_count;
 use crate::Error;
 use clap::ValueEnum;
@@ -18,7 +19,6 @@ use exactcheck_exact::Rational;
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Zero};
-use super::{Elapsed, Stopwatch};
 
 /// The W4 families on the command line.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
