@@ -6,6 +6,7 @@
 //! `k = 0..N-1`, the angle is the rational circle point of `T_k` and the value is
 //! `disc = A^2 - B` ([`exactcheck_core::cylinder_sphere`]).
 
+use crate::bench::Stopwatch;
 use exactcheck_core::cylinder_sphere::{unit_circle_point, Angle, CylinderSphere};
 use exactcheck_core::{pairwise_sum, Field, Sign, Vec3};
 use exactcheck_exact::RationalScalar;
@@ -13,7 +14,6 @@ use num_bigint::BigInt;
 use num_integer::Integer;
 use num_rational::BigRational;
 use num_traits::{Signed, ToPrimitive};
-use std::time::Instant;
 
 /// How the discriminants are consumed.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -69,13 +69,15 @@ pub struct Outcome<T> {
     pub sum: Option<T>,
     /// Seconds spent in the timed region (evaluation and summation).
     pub seconds: f64,
+    /// Process CPU seconds in the same region.
+    pub cpu_seconds: f64,
 }
 
 /// Runs W2 with `n` parameters in the given mode over the scalar `T`, timing the same region as
 /// the anchor scripts (evaluation and summation, not the check values).
 pub fn run<T: Field + exactcheck_core::OrderedField>(n: usize, mode: Mode) -> Outcome<T> {
     let cs = problem::<T>();
-    let start = Instant::now();
+    let watch = Stopwatch::start();
     let mut count_nonneg = 0;
     let mut count = |d: &T| {
         if d.sign() != Sign::Negative {
@@ -108,11 +110,12 @@ pub fn run<T: Field + exactcheck_core::OrderedField>(n: usize, mode: Mode) -> Ou
             Some(pairwise_sum(values))
         }
     };
-    let seconds = start.elapsed().as_secs_f64();
+    let elapsed = watch.elapsed();
     Outcome {
         count_nonneg,
         sum,
-        seconds,
+        seconds: elapsed.wall,
+        cpu_seconds: elapsed.cpu,
     }
 }
 

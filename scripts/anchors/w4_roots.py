@@ -7,7 +7,7 @@ at most 2^-53, in SymPy or python-flint. The same polynomials as `exactcheck ben
                 64-bit integers; c_d = 0 becomes 1
   mignotte n  : x^n - 2 (10 x - 1)^2
 
-Usage: w4_roots.py TOOL FAMILY DEGREE   (TOOL: sympy | flint)
+Usage: w4_roots.py TOOL FAMILY DEGREE   (TOOL: sympy | flint-real | flint-complex)
 
 Prints one JSON line: {"tool", "version", "family", "degree", "seconds", "real_roots",
 "roots": [["lo", "hi"], ...]} with lo, hi exact rationals ("p/q" or "p"), sorted. The timed
@@ -15,7 +15,15 @@ region is from the integer coefficients to the final list of intervals.
 
 * sympy: Poly(p).intervals(eps=2^-53) (real root isolation by continued fractions, refined to
   the width), exact rational endpoints.
-* flint: fmpz_poly(p).complex_roots() with flint.ctx.prec raised (53, 106, 212, ...) until every
+* flint-real: FLINT's own real-root path, called through ctypes on the libflint that python-flint
+  bundles (python-flint exposes no real-root method): `arb_fmpz_poly_real_roots`, which isolates
+  the real roots by Vincent-Collins-Akritas (`fmpz_poly_isolate_real_roots`) and refines each
+  with `arb_fmpz_poly_refine_root_arb`, at a relative precision of 53 bits plus the bit size of
+  the Cauchy root bound (doubled until every enclosure is at most 2^-53 wide); each enclosure is
+  read exactly with `arb_get_interval_fmpz_2exp`. One FLINT thread. The timed region is the
+  FLINT call alone (the Python that builds the polynomial and reads the enclosures is left out,
+  so that the interpreter's overhead does not count against FLINT).
+* flint-complex: fmpz_poly(p).complex_roots() with flint.ctx.prec raised (53, 106, 212, ...) until every
   root certified real (imaginary part exactly zero; FLINT's arb_fmpz_poly_complex_roots proves
   realness) has an enclosure of width <= 2^-53; the arb midpoint and radius are dyadic and are
   converted exactly.
@@ -81,12 +89,12 @@ def run_sympy(coeffs):
     from sympy import Poly, Rational, symbols
 
     x = symbols("x")
-    start = time.perf_counter()
+    start, cpu = time.perf_counter(), time.process_time()
     p = Poly(list(reversed(coeffs)), x)
     ivs = p.intervals(eps=Rational(1, 1 << 53))
     out = [(Fraction(int(a.p), int(a.q)), Fraction(int(b.p), int(b.q))) for (a, b), _ in ivs]
-    seconds = time.perf_counter() - start
-    return sympy.__version__, seconds, out
+    seconds, cpu = time.perf_counter() - start, time.process_time() - cpu
+    return sympy.__version__, seconds, cpu, out
 
 
 def dyadic(x):
@@ -99,7 +107,7 @@ def dyadic(x):
 def run_flint(coeffs):
     import flint
 
-    start = time.perf_counter()
+    start, cpu = time.perf_counter(), time.process_time()
     p = flint.fmpz_poly(coeffs)
     prec = 53
     while True:
@@ -114,9 +122,95 @@ def run_flint(coeffs):
             break
         prec *= 2
     out.sort()
-    seconds = time.perf_counter() - start
+    seconds, cpu = time.perf_counter() - start, time.process_time() - cpu
     flint.ctx.prec = 53
-    return flint.__version__, seconds, out
+    return flint.__version__, seconds, cpu, out
+
+
+class _FlintReal:
+    """ctypes bindings of the few libflint functions the flint-real tool calls."""
+
+    ARB_SIZE = 48  # sizeof(arb_struct): arf_struct (exp, size, two-limb mantissa) + mag_struct
+
+    def __init__(self):
+        import ctypes
+        import glob
+        import os
+        import flint
+
+        site = os.path.dirname(os.path.dirname(flint.__file__))
+        libs = sorted(glob.glob(os.path.join(site, "python_flint.libs", "libflint*.so*")))
+        if not libs:
+            raise SystemExit("flint-real: python-flint's bundled libflint was not found")
+        lib = ctypes.CDLL(libs[0])
+        P, L, I = ctypes.c_void_p, ctypes.c_long, ctypes.c_int
+        for name, res, argtypes in [
+            ("fmpz_poly_init", None, [P]), ("fmpz_poly_clear", None, [P]),
+            ("fmpz_poly_set_str", I, [P, ctypes.c_char_p]),
+            ("_arb_vec_init", P, [L]), ("_arb_vec_clear", None, [P, L]),
+            ("arb_fmpz_poly_real_roots", L, [P, P, I, L]),
+            ("_fmpz_vec_init", P, [L]), ("_fmpz_vec_clear", None, [P, L]),
+            ("arb_get_interval_fmpz_2exp", None, [P, P, P, P]),
+            ("fmpz_get_str", P, [P, I, P]), ("flint_free", None, [P]),
+            ("flint_set_num_threads", None, [I]),
+        ]:
+            fn = getattr(lib, name)
+            fn.restype, fn.argtypes = res, argtypes
+        lib.flint_set_num_threads(1)
+        self.lib, self.ctypes = lib, ctypes
+        self.version = flint.__version__
+
+    def text(self, ptr):
+        raw = self.lib.fmpz_get_str(None, 10, ptr)
+        value = int(self.ctypes.string_at(raw).decode())
+        self.lib.flint_free(raw)
+        return value
+
+    def roots(self, coeffs):
+        lib, ctypes = self.lib, self.ctypes
+        poly = ctypes.create_string_buffer(24)  # fmpz_poly_struct: coeffs, alloc, length
+        lib.fmpz_poly_init(poly)
+        text = f"{len(coeffs)}  " + " ".join(map(str, coeffs))
+        if lib.fmpz_poly_set_str(poly, text.encode()) != 0:
+            raise SystemExit("flint-real: fmpz_poly_set_str refused the polynomial")
+        deg = len(coeffs) - 1
+        # Cauchy's bound 1 + max |c_i / c_d| on the roots' size, in bits
+        bound = 1 + max(abs(c) for c in coeffs[:-1]) // abs(coeffs[-1]) + 1
+        prec = 53 + bound.bit_length() + 2
+        fz = lib._fmpz_vec_init(3)
+        a, b, e = (ctypes.c_void_p(fz + 8 * i) for i in range(3))
+        wall = cpu = 0.0
+        while True:
+            vec = lib._arb_vec_init(deg)
+            t0, c0 = time.perf_counter(), time.process_time()
+            n = lib.arb_fmpz_poly_real_roots(vec, poly, 0, prec)
+            wall += time.perf_counter() - t0
+            cpu += time.process_time() - c0
+            out = []
+            for i in range(n):
+                lib.arb_get_interval_fmpz_2exp(a, b, e, ctypes.c_void_p(vec + i * self.ARB_SIZE))
+                lo, hi, ex = self.text(a), self.text(b), self.text(e)
+                scale = Fraction(2) ** ex
+                out.append((lo * scale, hi * scale))
+            lib._arb_vec_clear(vec, deg)
+            if all(hi - lo <= WIDTH for lo, hi in out):
+                break
+            prec *= 2
+        lib._fmpz_vec_clear(fz, 3)
+        lib.fmpz_poly_clear(poly)
+        out.sort()
+        return wall, cpu, out
+
+
+_FLINT_REAL = None
+
+
+def run_flint_real(coeffs):
+    global _FLINT_REAL
+    if _FLINT_REAL is None:
+        _FLINT_REAL = _FlintReal()  # loading the library is set-up, outside the timed region
+    seconds, cpu, out = _FLINT_REAL.roots(coeffs)
+    return _FLINT_REAL.version, seconds, cpu, out
 
 
 def fmt(q):
@@ -130,13 +224,13 @@ def main():
     if degree < 1:
         raise SystemExit("DEGREE must be at least 1")
     coeffs = coefficients(family, degree)
-    runs = {"sympy": run_sympy, "flint": run_flint}
+    runs = {"sympy": run_sympy, "flint-complex": run_flint, "flint-real": run_flint_real}
     if tool not in runs:
-        raise SystemExit(f"unknown tool {tool!r} (sympy, flint)")
+        raise SystemExit(f"unknown tool {tool!r} (sympy, flint-real, flint-complex)")
     # The warm-up (as `exactcheck bench w4`): the same call on x^2 - 2, untimed, so that the
     # timed call measures the isolation rather than the first execution of its code.
     runs[tool](WARM_UP)
-    version, seconds, roots = runs[tool](coeffs)
+    version, seconds, cpu, roots = runs[tool](coeffs)
     for lo, hi in roots:
         if not (lo <= hi and hi - lo <= WIDTH):
             print(f"interval [{lo}, {hi}] wider than 2^-53", file=sys.stderr)
@@ -152,6 +246,8 @@ def main():
         "family": family,
         "degree": degree,
         "seconds": seconds,
+        "cpu_seconds": cpu,
+        "threads": 1,
         "real_roots": len(roots),
         "roots": [[fmt(lo), fmt(hi)] for lo, hi in roots],
     }))

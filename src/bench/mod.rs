@@ -20,10 +20,12 @@ use clap::{Args, Subcommand, ValueEnum};
 use exactcheck_exact::{PlainRational, Rational, RationalScalar};
 use exactcheck_float::sampler::{sweep_direct, DiscSampler};
 use std::process::ExitCode;
-use std::time::Instant;
 
+mod stopwatch;
 pub mod w1;
 pub mod w4;
+
+pub use stopwatch::{process_cpu_seconds, Elapsed, Stopwatch};
 
 /// The largest `bench w2 --n` in mode `eval` (about a minute).
 pub const MAX_W2_EVAL_N: usize = 10_000_000;
@@ -215,7 +217,7 @@ pub fn run(args: &BenchArgs) -> Result<ExitCode, Error> {
 pub fn bench_w3(n: usize, variant: W3Variant, json: bool) -> String {
     let cs = w2::problem::<f64>();
     rayon::broadcast(|_| ());
-    let start = Instant::now();
+    let watch = Stopwatch::start();
     let summary = match variant {
         W3Variant::Addition => DiscSampler::new(&cs).sweep_addition(n),
         W3Variant::AdditionSerial => DiscSampler::new(&cs).sweep_addition_serial(n),
@@ -223,18 +225,21 @@ pub fn bench_w3(n: usize, variant: W3Variant, json: bool) -> String {
         W3Variant::CoefSerial => DiscSampler::new(&cs).sweep_serial(n),
         W3Variant::Direct => sweep_direct(&cs, n),
     };
-    let seconds = start.elapsed().as_secs_f64();
+    let Elapsed { wall: seconds, cpu } = watch.elapsed();
     let value = variant
         .to_possible_value()
         .expect("no W3 variant is skipped");
     let name = value.get_name();
     if json {
         format!(
-            "{{\"tool\": \"exactcheck\", \"variant\": \"{name}\", \"N\": {n}, \"seconds\": {seconds}, \"samples_per_s\": {}, \"count_nonneg\": {}, \"sum_sqrt\": \"{:?}\", \"threads\": {}}}",
+            "{{\"tool\": \"exactcheck\", \"variant\": \"{name}\", \"N\": {n}, \"seconds\": {seconds}, \"cpu_seconds\": {cpu}, \"samples_per_s\": {}, \"count_nonneg\": {}, \"sum_sqrt\": \"{:?}\", \"threads\": {}}}",
             n as f64 / seconds,
             summary.count_nonneg,
             summary.sum_sqrt,
-            rayon::current_num_threads()
+            match variant {
+                W3Variant::Addition | W3Variant::Coef => rayon::current_num_threads(),
+                _ => 1,
+            }
         )
     } else {
         format!(
@@ -254,8 +259,9 @@ pub fn bench_w2<T: RationalScalar>(n: usize, mode: w2::Mode, scalar: &str, json:
     let mode_name = format!("{mode:?}").to_lowercase();
     if json {
         let mut s = format!(
-            "{{\"tool\": \"exactcheck\", \"scalar\": \"{scalar}\", \"mode\": \"{mode_name}\", \"N\": {n}, \"seconds\": {}, \"samples_per_s\": {}, \"count_nonneg\": {}",
+            "{{\"tool\": \"exactcheck\", \"scalar\": \"{scalar}\", \"mode\": \"{mode_name}\", \"N\": {n}, \"seconds\": {}, \"cpu_seconds\": {}, \"samples_per_s\": {}, \"count_nonneg\": {}",
             out.seconds,
+            out.cpu_seconds,
             n as f64 / out.seconds,
             out.count_nonneg
         );
@@ -314,13 +320,13 @@ pub fn bench_formula(n: usize, seed: u64, serial: bool) -> String {
             .ok()
             .and_then(|r| r.into_iter().next())
     };
-    let start = Instant::now();
+    let watch = Stopwatch::start();
     let values: Vec<_> = if serial {
         inputs.iter().map(eval).collect()
     } else {
         inputs.par_iter().map(eval).collect()
     };
-    let seconds = start.elapsed().as_secs_f64();
+    let Elapsed { wall: seconds, cpu } = watch.elapsed();
     let p = BigInt::from((1u64 << 61) - 1);
     let (mut num, mut den) = (BigInt::zero(), BigInt::zero());
     let mut doubles = Vec::with_capacity(n);
@@ -333,7 +339,7 @@ pub fn bench_formula(n: usize, seed: u64, serial: bool) -> String {
     }
     let modp = |x: BigInt| ((x % &p + &p) % &p).to_u64().expect("below p");
     format!(
-        "formula {BASELINE_FORMULA}: {n} samples ({defined} defined) in {seconds:.3} s = {:.0} samples/s on {} thread(s); sum_num_mod_p {}, sum_den_mod_p {}, fsum {:?}",
+        "formula {BASELINE_FORMULA}: {n} samples ({defined} defined) in {seconds:.3} s = {:.0} samples/s on {} thread(s), {cpu:.3} s CPU; sum_num_mod_p {}, sum_den_mod_p {}, fsum {:?}",
         n as f64 / seconds,
         if serial { 1 } else { rayon::current_num_threads() },
         modp(num),

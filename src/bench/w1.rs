@@ -11,13 +11,13 @@
 //!
 //! Both print their check values as text or as one JSON line with the anchors' field names.
 
+use super::{Elapsed, Stopwatch};
 use crate::args::check_count;
 use crate::Error;
 use exactcheck_core::Ring;
 use exactcheck_exact::poly::{Poly, Vars};
 use exactcheck_exact::w1::ring_identity;
 use exactcheck_exact::Rational;
-use std::time::Instant;
 
 /// The largest `m + n` of `bench w1` (binomials stay far inside `i64`; (13, 21) takes well under
 /// a second, and the expansion grows about as `(m + n)^3`).
@@ -40,13 +40,13 @@ pub fn bench_w1(m: u32, n: u32, negative: bool, json: bool) -> Result<String, Er
             "--m {m} and --n {n}: m + n must be at most {MAX_W1_DEGREE}"
         )));
     }
-    let start = Instant::now();
+    let watch = Stopwatch::start();
     let w = ring_identity(m, n, negative);
     let (x_zero, weight_zero) = (w.x_residual.is_zero(), w.weight_residual.is_zero());
-    let seconds = start.elapsed().as_secs_f64();
+    let Elapsed { wall: seconds, cpu } = watch.elapsed();
     Ok(if json {
         format!(
-            "{{\"tool\": \"exactcheck\", \"m\": {m}, \"n\": {n}, \"negative\": {negative}, \"nvars\": {}, \"lhs_x_terms\": {}, \"total_s\": {seconds}, \"x_identity_zero\": {x_zero}, \"weight_identity_zero\": {weight_zero}}}",
+            "{{\"tool\": \"exactcheck\", \"m\": {m}, \"n\": {n}, \"negative\": {negative}, \"nvars\": {}, \"lhs_x_terms\": {}, \"total_s\": {seconds}, \"cpu_seconds\": {cpu}, \"x_identity_zero\": {x_zero}, \"weight_identity_zero\": {weight_zero}}}",
             w.variables, w.lhs_x_terms
         )
     } else {
@@ -76,7 +76,7 @@ pub struct DenseChecks {
 }
 
 /// `f (f + 1)` with `f = (1 + x_1 + ... + x_v)^k`, timed (the product only), with its checks.
-pub fn dense_product(k: u32, v: usize) -> (f64, DenseChecks) {
+pub fn dense_product(k: u32, v: usize) -> (Elapsed, DenseChecks) {
     type P = Poly<Rational>;
     let mut vars = Vars::new();
     let mut f = P::one();
@@ -85,9 +85,9 @@ pub fn dense_product(k: u32, v: usize) -> (f64, DenseChecks) {
     }
     let f = f.pow(k);
     let g = &f + &P::one();
-    let start = Instant::now();
+    let watch = Stopwatch::start();
     let h = &f * &g;
-    let seconds = start.elapsed().as_secs_f64();
+    let elapsed = watch.elapsed();
     let mut sum = Rational::zero();
     let mut max: Option<&Rational> = None;
     for c in h.coefficients() {
@@ -101,7 +101,7 @@ pub fn dense_product(k: u32, v: usize) -> (f64, DenseChecks) {
         coeff_sum: sum.to_string(),
         max_coeff: max.map_or_else(|| "0".into(), ToString::to_string),
     };
-    (seconds, checks)
+    (elapsed, checks)
 }
 
 /// Runs `bench dense`.
@@ -111,10 +111,10 @@ pub fn dense_product(k: u32, v: usize) -> (f64, DenseChecks) {
 pub fn bench_dense(k: usize, v: usize, json: bool) -> Result<String, Error> {
     let k = check_count("--k", k, MAX_DENSE_K, "")? as u32;
     let v = check_count("--vars", v, MAX_DENSE_VARS, "")?;
-    let (seconds, c) = dense_product(k, v);
+    let (Elapsed { wall: seconds, cpu }, c) = dense_product(k, v);
     Ok(if json {
         format!(
-            "{{\"tool\": \"exactcheck\", \"k\": {k}, \"vars\": {v}, \"seconds\": {seconds}, \"terms\": {}, \"coeff_sum\": \"{}\", \"max_coeff\": \"{}\"}}",
+            "{{\"tool\": \"exactcheck\", \"k\": {k}, \"vars\": {v}, \"seconds\": {seconds}, \"cpu_seconds\": {cpu}, \"terms\": {}, \"coeff_sum\": \"{}\", \"max_coeff\": \"{}\"}}",
             c.terms, c.coeff_sum, c.max_coeff
         )
     } else {

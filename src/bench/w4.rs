@@ -8,6 +8,7 @@
 //! caches and first-touch page faults, would otherwise cost as much as the isolation). The JSON
 //! line carries the intervals as exact rationals.
 
+use super::{Elapsed, Stopwatch};
 use crate::args::check_count;
 use crate::Error;
 use clap::ValueEnum;
@@ -18,7 +19,6 @@ use exactcheck_exact::Rational;
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Zero};
-use std::time::Instant;
 
 /// The W4 families on the command line.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -51,9 +51,9 @@ pub fn bench_w4(family: W4Family, degree: usize, json: bool) -> Result<String, E
     let coeffs = family.polynomial(degree);
     let warm_up = w4::solve(&[BigInt::from(-2), BigInt::zero(), BigInt::one()]);
     debug_assert_eq!(warm_up.len(), 2);
-    let start = Instant::now();
+    let watch = Stopwatch::start();
     let roots = w4::solve(&coeffs);
-    let seconds = start.elapsed().as_secs_f64();
+    let Elapsed { wall: seconds, cpu } = watch.elapsed();
     let name = family.name();
     Ok(if json {
         let list: Vec<String> = roots
@@ -61,7 +61,7 @@ pub fn bench_w4(family: W4Family, degree: usize, json: bool) -> Result<String, E
             .map(|r| format!("[\"{}\", \"{}\"]", r.lo, r.hi))
             .collect();
         format!(
-            "{{\"tool\": \"exactcheck\", \"version\": \"{}\", \"family\": \"{name}\", \"degree\": {degree}, \"seconds\": {seconds}, \"real_roots\": {}, \"roots\": [{}]}}",
+            "{{\"tool\": \"exactcheck\", \"version\": \"{}\", \"family\": \"{name}\", \"degree\": {degree}, \"seconds\": {seconds}, \"cpu_seconds\": {cpu}, \"real_roots\": {}, \"roots\": [{}]}}",
             env!("CARGO_PKG_VERSION"),
             roots.len(),
             list.join(", ")

@@ -389,6 +389,11 @@ pub fn table(rows: &[Checked]) -> String {
             .count();
         s += &format!(", {n} {v}");
     }
+    // claims that could not be built or decided (verdict `error`), named only when present
+    let errors = rows.iter().filter(|r| r.outcome.is_err()).count();
+    if errors > 0 {
+        s += &format!(", {errors} error");
+    }
     s
 }
 

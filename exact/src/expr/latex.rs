@@ -17,6 +17,11 @@
 //! * `\sqrt{..}`, `x^{k}`; `\left( .. \right)` only where precedence needs it: a sum as a factor
 //!   or operand, a negative term after `+`/`-` or as a later factor, any compound base of a
 //!   power;
+//! * the calculus functions print as in a paper: `sum(k, a, b, E)` is `\sum_{k=a}^{b} E`,
+//!   `integrate(E, t, a, b)` is `\int_{a}^{b} E\,\mathrm{d}t`, `diff(E, t)` is
+//!   `\frac{\mathrm{d}}{\mathrm{d}t} E` (`diff(E, t, k)` with `\mathrm{d}^{k}` and `t^{k}`),
+//!   `binomial(n, k)` is `\binom{n}{k}`, `factorial(n)` is `n!` (with other numbers of
+//!   arguments they print as any call);
 //! * a function call `f(a, b)` ([`ExprKind::Call`]) is `\operatorname{f}\left(a, b\right)` (or,
 //!   when the notation lists `f`, its entry: `r_{0}\left(3\right)`), and a call with the empty
 //!   name is a tuple, `\left(a, b\right)` (a vector in an erratum);
@@ -312,6 +317,17 @@ pub(super) enum Op {
     Comma,
     /// A comma inside a name (`q_{0,x}`).
     TightComma,
+    /// The factorial sign after its operand.
+    Bang,
+}
+
+/// A large operator with limits.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum BigOp {
+    /// `\sum`, limits under and over.
+    Sum,
+    /// `\int`, limits as sub- and superscript.
+    Integral,
 }
 
 /// The layout tree both printers spell (module documentation).
@@ -326,6 +342,12 @@ pub(super) enum Layout {
     Greek(String),
     /// An upright function name.
     Func(String),
+    /// An upright letter that is not a function (the `d` of a differential).
+    Upright(String),
+    /// A large operator with its lower and upper limit.
+    Big(BigOp, Box<Layout>, Box<Layout>),
+    /// A binomial coefficient.
+    Binom(Box<Layout>, Box<Layout>),
     Op(Op),
     Frac(Box<Layout>, Box<Layout>),
     Sqrt(Box<Layout>),
@@ -564,6 +586,9 @@ pub(super) fn layout(e: &Expr, n: &Notation) -> Layout {
         ExprKind::Call(name, args) if args.is_empty() && is_decimal_name(name) => {
             Layout::Num(name.clone())
         }
+        ExprKind::Call(name, args) if calculus_layout(name, args, n).is_some() => {
+            calculus_layout(name, args, n).expect("checked by the guard")
+        }
         ExprKind::Call(name, args) => {
             let mut inner = Vec::new();
             for (k, a) in args.iter().enumerate() {
@@ -586,6 +611,77 @@ pub(super) fn layout(e: &Expr, n: &Notation) -> Layout {
             }
         }
     }
+}
+
+/// The operand of a large operator, a derivative or a factorial, in parentheses when it is a
+/// sum (or, after `!`, anything but a name, a natural number or a call).
+fn operand(e: &Expr, n: &Notation, tight: bool) -> Layout {
+    let l = layout(e, n);
+    let plain = if tight {
+        matches!(&e.kind, ExprKind::Var(_) | ExprKind::Call(..))
+            || matches!(&e.kind, ExprKind::Number(q) if q.is_integer() && q.signum() != Sign::Negative)
+    } else {
+        !matches!(e.kind, ExprKind::Sum(_)) && !starts_with_minus(e)
+    };
+    if plain {
+        l
+    } else {
+        fenced(l)
+    }
+}
+
+/// `sum`, `integrate`, `diff`, `binomial` and `factorial` in a paper's notation (module
+/// documentation); `None` for other calls and other numbers of arguments.
+fn calculus_layout(name: &str, args: &[Expr], n: &Notation) -> Option<Layout> {
+    let d = || Layout::Upright("d".into());
+    Some(match (name, args) {
+        ("sum", [k, a, b, e]) => Layout::Row(vec![
+            Layout::Big(
+                BigOp::Sum,
+                Box::new(Layout::Row(vec![
+                    layout(k, n),
+                    Layout::Op(Op::Equals),
+                    layout(a, n),
+                ])),
+                Box::new(layout(b, n)),
+            ),
+            operand(e, n, false),
+        ]),
+        ("integrate", [e, t, a, b]) => Layout::Row(vec![
+            Layout::Big(
+                BigOp::Integral,
+                Box::new(layout(a, n)),
+                Box::new(layout(b, n)),
+            ),
+            operand(e, n, false),
+            Layout::Op(Op::Juxtapose),
+            d(),
+            layout(t, n),
+        ]),
+        ("diff", [e, t]) => Layout::Row(vec![
+            Layout::Frac(
+                Box::new(d()),
+                Box::new(Layout::Row(vec![d(), layout(t, n)])),
+            ),
+            operand(e, n, false),
+        ]),
+        ("diff", [e, t, k]) => {
+            let k = layout(k, n);
+            Layout::Row(vec![
+                Layout::Frac(
+                    Box::new(Layout::Sup(Box::new(d()), Box::new(k.clone()))),
+                    Box::new(Layout::Row(vec![
+                        d(),
+                        Layout::Sup(Box::new(layout(t, n)), Box::new(k)),
+                    ])),
+                ),
+                operand(e, n, false),
+            ])
+        }
+        ("binomial", [a, b]) => Layout::Binom(Box::new(layout(a, n)), Box::new(layout(b, n))),
+        ("factorial", [a]) => Layout::Row(vec![operand(a, n, true), Layout::Op(Op::Bang)]),
+        _ => return None,
+    })
 }
 
 fn is_one(e: &Expr) -> bool {
@@ -644,7 +740,30 @@ fn write_latex(l: &Layout, out: &mut String) {
             Op::Equals => " = ",
             Op::Comma => ", ",
             Op::TightComma => ",",
+            Op::Bang => "!",
         }),
+        Layout::Upright(s) => push_tex(out, &format!("\\mathrm{{{}}}", escape_word(s))),
+        Layout::Big(op, lo, hi) => {
+            push_tex(
+                out,
+                match op {
+                    BigOp::Sum => "\\sum",
+                    BigOp::Integral => "\\int",
+                },
+            );
+            out.push_str("_{");
+            write_latex(lo, out);
+            out.push_str("}^{");
+            write_latex(hi, out);
+            out.push_str("} ");
+        }
+        Layout::Binom(a, b) => {
+            out.push_str("\\binom{");
+            write_latex(a, out);
+            out.push_str("}{");
+            write_latex(b, out);
+            out.push('}');
+        }
         Layout::Frac(a, b) => {
             out.push_str("\\frac{");
             write_latex(a, out);
@@ -777,6 +896,27 @@ mod tests {
         assert_eq!(tex("sqrt(2)"), "\\sqrt{2}");
         assert_eq!(tex("3 sqrt(2)/2"), "\\frac{3\\,\\sqrt{2}}{2}");
         assert_eq!(tex("f(x, y)"), "\\operatorname{f}\\left(x, y\\right)");
+        assert_eq!(tex("sum(k, 0, n, k^2)"), "\\sum_{k = 0}^{n} k^{2}");
+        assert_eq!(
+            tex("integrate(1 + t, t, 0, 1)"),
+            "\\int_{0}^{1} \\left(1 + t\\right)\\,\\mathrm{d}t"
+        );
+        assert_eq!(
+            tex("diff(x^3, x)"),
+            "\\frac{\\mathrm{d}}{\\mathrm{d}x}x^{3}"
+        );
+        assert_eq!(
+            tex("diff(f(t), t, 2)"),
+            "\\frac{\\mathrm{d}^{2}}{\\mathrm{d}t^{2}}\\operatorname{f}\\left(t\\right)"
+        );
+        assert_eq!(tex("binomial(n, k)"), "\\binom{n}{k}");
+        assert_eq!(tex("factorial(n)"), "n!");
+        assert_eq!(tex("factorial(n + 1)"), "\\left(n + 1\\right)!");
+        // other numbers of arguments print as any call
+        assert_eq!(
+            tex("binomial(n)"),
+            "\\operatorname{binomial}\\left(n\\right)"
+        );
         let r0 = Notation::from_pairs([("r0", "r_0")]).unwrap();
         let call = parse_expr_with_calls("r0(3)").unwrap();
         assert_eq!(to_latex(&call, &r0), "r_{0}\\left(3\\right)");

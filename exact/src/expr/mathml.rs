@@ -1,6 +1,6 @@
 //! MathML from expression trees: the layout of [`super::latex`] (one set of decisions for both
 //! printers) spelled in MathML Core (`math`, `mrow`, `mi`, `mn`, `mo`, `mfrac`, `msqrt`, `msup`,
-//! `msub`), which Chromium renders natively (no scripts, no fonts).
+//! `msub`, `msubsup`, `munderover`), which Chromium renders natively (no scripts, no fonts).
 //!
 //! Greek letters are written as their Unicode characters, a function name as an upright `mi`
 //! followed by the invisible function application `U+2061`, juxtaposition as the invisible
@@ -8,7 +8,7 @@
 //! `mi` with `font-style: italic` (MathML Core draws multi-letter `mi` upright).
 //! Hand-written for the same reason as the LaTeX printer: the output language is small and fixed.
 
-use super::latex::{equation_layout, greek_char, layout, Layout, Notation, Op};
+use super::latex::{equation_layout, greek_char, layout, BigOp, Layout, Notation, Op};
 use super::Expr;
 
 fn escape(s: &str) -> String {
@@ -49,7 +49,27 @@ fn write(l: &Layout, out: &mut String) {
             Op::Apply => "<mo rspace=\"0.1667em\">\u{2061}</mo>",
             Op::Equals => "<mo>=</mo>",
             Op::Comma | Op::TightComma => "<mo>,</mo>",
+            Op::Bang => "<mo>!</mo>",
         }),
+        Layout::Upright(s) => {
+            out.push_str(&format!("<mi mathvariant=\"normal\">{}</mi>", escape(s)))
+        }
+        Layout::Big(op, lo, hi) => {
+            let (tag, sign) = match op {
+                BigOp::Sum => ("munderover", "\u{2211}"),
+                BigOp::Integral => ("msubsup", "\u{222b}"),
+            };
+            out.push_str(&format!("<{tag}><mo>{sign}</mo>"));
+            write(lo, out);
+            write(hi, out);
+            out.push_str(&format!("</{tag}>"));
+        }
+        Layout::Binom(a, b) => {
+            out.push_str("<mrow><mo>(</mo><mfrac linethickness=\"0\">");
+            write(a, out);
+            write(b, out);
+            out.push_str("</mfrac><mo>)</mo></mrow>");
+        }
         Layout::Frac(a, b) => {
             out.push_str("<mfrac>");
             write(a, out);
@@ -105,6 +125,26 @@ mod tests {
 
     fn ml(s: &str, n: &Notation) -> String {
         to_mathml(&parse_expr_with_calls(s).expect("parses"), n)
+    }
+
+    #[test]
+    fn calculus_functions() {
+        let n = Notation::new();
+        assert_eq!(
+            ml("sum(k, 1, n, k)", &n),
+            "<math display=\"block\"><mrow><munderover><mo>\u{2211}</mo><mrow><mi>k</mi><mo>=</mo>\
+             <mn>1</mn></mrow><mi>n</mi></munderover><mi>k</mi></mrow></math>"
+        );
+        assert_eq!(
+            ml("integrate(t, t, 0, 1)", &n),
+            "<math display=\"block\"><mrow><msubsup><mo>\u{222b}</mo><mn>0</mn><mn>1</mn></msubsup>\
+             <mi>t</mi><mo>\u{2062}</mo><mi mathvariant=\"normal\">d</mi><mi>t</mi></mrow></math>"
+        );
+        assert_eq!(
+            ml("binomial(n, 2)", &n),
+            "<math display=\"block\"><mrow><mo>(</mo><mfrac linethickness=\"0\"><mi>n</mi><mn>2</mn>\
+             </mfrac><mo>)</mo></mrow></math>"
+        );
     }
 
     #[test]
