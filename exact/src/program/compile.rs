@@ -40,6 +40,14 @@ pub enum CompileError {
     /// A syntax error (or a constant exponent that cannot be evaluated) of [`crate::expr`].
     #[error(transparent)]
     Expr(#[from] ExprError),
+    /// A call of a function that a regressed formula does not have.
+    #[error("unknown function '{name}' at {pos}: a regressed formula calls sqrt, {list} (write '{name}*(...)' for a product)", list = formula_functions())]
+    UnknownFunction {
+        /// Byte position of the call.
+        pos: usize,
+        /// The name.
+        name: String,
+    },
     /// A variable not in the given list.
     #[error("unknown variable '{name}' at {pos}: the variables are {list}")]
     UnknownVariable {
@@ -87,6 +95,7 @@ impl CompileError {
         match self {
             CompileError::Expr(e) => e.position(),
             CompileError::UnknownVariable { pos, .. }
+            | CompileError::UnknownFunction { pos, .. }
             | CompileError::BadExponent { pos, .. }
             | CompileError::ExponentTooLarge { pos, .. } => *pos,
             CompileError::DuplicateVariable { .. } | CompileError::BadVariable { .. } => 0,
@@ -207,10 +216,10 @@ fn compile(e: &Expr, vars: &mut Vars) -> Result<Node, CompileError> {
             }))
         }
         ExprKind::Call(name, _) => {
-            return Err(CompileError::Expr(ExprError::UnknownFunction {
+            return Err(CompileError::UnknownFunction {
                 pos: e.pos,
                 name: name.clone(),
-            }))
+            })
         }
         ExprKind::Sum(items) => {
             let op = |op: &AddOp| match op {
@@ -248,6 +257,17 @@ fn compile(e: &Expr, vars: &mut Vars) -> Result<Node, CompileError> {
 fn formula_function(name: &str) -> Option<Func> {
     let name = if name == "ln" { "log" } else { name };
     Func::from_name(name).filter(|f| f.arity() > 0)
+}
+
+/// The names [`formula_function`] accepts, comma-separated (for error messages).
+fn formula_functions() -> String {
+    let mut names: Vec<&str> = Func::ALL
+        .iter()
+        .filter(|f| f.arity() > 0)
+        .map(|f| f.name())
+        .collect();
+    names.push("ln");
+    names.join(", ")
 }
 
 /// The left-to-right chain of a sum's terms or a product's factors (`empty` when there are

@@ -273,3 +273,50 @@ proptest! {
         prop_assert!(contains(&cube, &exact(x).to_big_rational()));
     }
 }
+
+#[test]
+fn formulas_call_the_functions_and_pi_is_the_constant() {
+    let p = Program::parse("sin(x) + pi * ln(y)", None).unwrap();
+    assert_eq!(p.inputs, vec!["x", "y"]);
+    assert_eq!(
+        p.outputs,
+        vec![Node::Add(
+            Box::new(Node::Fun(Func::Sin, vec![Node::Input(0)])),
+            Box::new(Node::Mul(
+                Box::new(Node::Fun(Func::Pi, vec![])),
+                Box::new(Node::Fun(Func::Log, vec![Node::Input(1)]))
+            ))
+        )]
+    );
+    // The float side is libm, the exact side certified.
+    let f = p.eval_f64(&[0.5, 3.0])[0];
+    assert_eq!(f, 0.5f64.sin() + std::f64::consts::PI * 3f64.ln());
+    let r = p.eval_exact(&[exact(0.5), exact(3.0)]).unwrap();
+    assert!(!r[0].exact);
+    let rounded = crate::to_f64::rational_to_f64(&r[0].value);
+    assert!(ulps(rounded, f) <= 2, "{rounded:e} vs {f:e}");
+    // sin(x) on [0, 1]: the reference rounds to libm's value within an ulp.
+    let s = Program::parse("sin(x)", Some(&["x".to_string()])).unwrap();
+    for i in 1..50 {
+        let x = f64::from(i) / 50.0;
+        let r = s.eval_exact(&[exact(x)]).unwrap();
+        assert!(ulps(crate::to_f64::rational_to_f64(&r[0].value), x.sin()) <= 1);
+    }
+    // Exact zero: sin(x - x) is decided exactly.
+    let z = Program::parse("sin(x - x)", None).unwrap();
+    let r = z.eval_exact(&[exact(0.3)]).unwrap();
+    assert!(r[0].exact && r[0].value == BigRational::from_integer(0.into()));
+}
+
+#[test]
+fn formula_calls_are_checked() {
+    let err = |t: &str, vars: Option<&[String]>| Program::parse(t, vars).unwrap_err().to_string();
+    let e = err("erf(x)", None);
+    assert!(e.starts_with("unknown function 'erf' at 0: a regressed formula calls sqrt, exp"), "{e}");
+    let e = err("atan2(x)", None);
+    assert!(e.contains("it takes 2 arguments, found 1"), "{e}");
+    let e = err("x + pi", Some(&["x".to_string(), "pi".to_string()]));
+    assert!(e.contains("\"pi\" in the variable list is not a variable name"), "{e}");
+    // The language's own functions stay refused.
+    assert!(err("diff(x^2, x)", None).contains("expand the call first"));
+}
