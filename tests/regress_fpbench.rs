@@ -21,8 +21,120 @@ const FILES: &[&str] = &[
     "salsa.fpcore",
 ];
 
-/// The refused benchmarks (file, name) and why.
-const REFUSED: &[(&str, &str, &str)] = &[];
+/// The refused benchmarks (file, name) and why: loops, binary32 and integer precision. Every
+/// benchmark with an elementary function (`exp`, `log`, `sin`, `pow`, `atan2`, ...) runs.
+const REFUSED: &[(&str, &str, &str)] = &[
+    ("apron.fpcore", "Arrow-Hurwicz", "not supported: while*"),
+    ("apron.fpcore", "Euler Oscillator", "not supported: while"),
+    ("apron.fpcore", "Filter", "not supported: while*"),
+    (
+        "apron.fpcore",
+        "Symplectic Oscillator",
+        "not supported: while*",
+    ),
+    ("apron.fpcore", "Circle", "not supported: while*"),
+    ("apron.fpcore", "Flower", "not supported: while"),
+    (
+        "fptaylor-extra.fpcore",
+        "intro-example-mixed",
+        "not supported: precision binary32",
+    ),
+    (
+        "fptaylor-extra.fpcore",
+        "exp1x_32",
+        "not supported: precision binary32",
+    ),
+    (
+        "fptaylor-extra.fpcore",
+        "x_by_xy",
+        "not supported: precision binary32",
+    ),
+    (
+        "fptaylor-extra.fpcore",
+        "hypot32",
+        "not supported: precision binary32",
+    ),
+    (
+        "fptaylor-extra.fpcore",
+        "i4",
+        "not supported: precision binary32",
+    ),
+    (
+        "fptaylor-extra.fpcore",
+        "i6",
+        "not supported: precision binary32",
+    ),
+    (
+        "fptaylor-tests.fpcore",
+        "test01_sum3",
+        "not supported: precision binary32",
+    ),
+    (
+        "fptaylor-tests.fpcore",
+        "test06_sums4, sum1",
+        "not supported: precision binary32",
+    ),
+    (
+        "fptaylor-tests.fpcore",
+        "test06_sums4, sum2",
+        "not supported: precision binary32",
+    ),
+    (
+        "precimonious.fpcore",
+        "arclength of a wiggly function",
+        "not supported: precision integer",
+    ),
+    (
+        "precimonious.fpcore",
+        "arclength of a wiggly function (old version)",
+        "not supported: while",
+    ),
+    ("rosa.fpcore", "N Body Simulation", "not supported: while"),
+    ("rosa.fpcore", "Pendulum", "not supported: while"),
+    ("rosa.fpcore", "Sine Newton", "not supported: while"),
+    (
+        "salsa.fpcore",
+        "Odometry",
+        "not supported: precision binary32",
+    ),
+    ("salsa.fpcore", "PID", "not supported: while*"),
+    (
+        "salsa.fpcore",
+        "Runge-Kutta 4",
+        "not supported: precision binary32",
+    ),
+    (
+        "salsa.fpcore",
+        "Lead-lag System",
+        "not supported: precision binary32",
+    ),
+    ("salsa.fpcore", "Trapeze", "not supported: while*"),
+    (
+        "salsa.fpcore",
+        "Rocket Trajectory",
+        "not supported: precision binary32",
+    ),
+    (
+        "salsa.fpcore",
+        "Jacobi's Method",
+        "not supported: precision binary32",
+    ),
+    (
+        "salsa.fpcore",
+        "Newton-Raphson's Method",
+        "not supported: precision binary32",
+    ),
+    (
+        "salsa.fpcore",
+        "Eigenvalue Computation",
+        "not supported: precision binary32",
+    ),
+    (
+        "salsa.fpcore",
+        "Iterative Gram-Schmidt Method",
+        "not supported: precision binary32",
+    ),
+];
 
 #[test]
 fn every_fpbench_benchmark_runs_or_is_refused_with_its_reason() {
@@ -30,9 +142,24 @@ fn every_fpbench_benchmark_runs_or_is_refused_with_its_reason() {
     let mut total = 0;
     let mut compared = 0;
     for file in FILES {
-        let path = format!("{}/tests/regress/fpbench/{file}", env!("CARGO_MANIFEST_DIR"));
+        let path = format!(
+            "{}/tests/regress/fpbench/{file}",
+            env!("CARGO_MANIFEST_DIR")
+        );
         let o = Command::new(env!("CARGO_BIN_EXE_exactcheck"))
-            .args(["regress", "--fpcore", &path, "--samples", "8", "--json"])
+            // No shrinking of worst cases: a candidate input where two transcendental terms
+            // cancel exactly (`sin(x + eps) - sin(x)` at `eps = 0`) is refined to the precision
+            // cap before it counts as undecided, which makes shrinking slow.
+            .args([
+                "regress",
+                "--fpcore",
+                &path,
+                "--samples",
+                "8",
+                "--worst",
+                "0",
+                "--json",
+            ])
             .output()
             .expect("the binary runs");
         assert!(
@@ -63,7 +190,10 @@ fn every_fpbench_benchmark_runs_or_is_refused_with_its_reason() {
         .map(|(f, n, w)| ((f.to_string(), n.to_string()), w.to_string()))
         .collect();
     assert_eq!(refused, want);
-    // Every accepted benchmark but a few whose samples all leave the domain or stay undecided
-    // compares samples.
-    assert!(compared + refused.len() + 8 >= total, "{compared} of {total} compared");
+    // Every accepted benchmark compares samples against its exact reference.
+    assert_eq!(
+        compared + refused.len(),
+        total,
+        "{compared} of {total} compared"
+    );
 }

@@ -26,11 +26,11 @@ mod float;
 pub mod fpcore;
 mod interval;
 mod real;
+#[cfg(test)]
+mod tests;
 mod transc;
 #[cfg(test)]
 mod transc_tests;
-#[cfg(test)]
-mod tests;
 mod walk;
 
 pub use compile::CompileError;

@@ -249,8 +249,9 @@ fn exact_pow(x: &Rational, y: &Rational) -> Option<Result<Rational, TStop>> {
     };
     let n = y.numer();
     let n = match n.to_i32() {
-        Some(n) if base.size_bits().saturating_mul(u64::from(n.unsigned_abs()))
-            <= limits::CONSTANT_BITS.get() =>
+        Some(n)
+            if base.size_bits().saturating_mul(u64::from(n.unsigned_abs()))
+                <= limits::CONSTANT_BITS.get() =>
         {
             n
         }
@@ -340,7 +341,10 @@ fn below(a: &Iv, k: i64) -> bool {
 fn square(a: &Iv, p: u64) -> Iv {
     let s = Iv::mul(a, a, p);
     if s.lo.sign() == Ordering::Less {
-        Iv { lo: Dy::zero(), hi: s.hi }
+        Iv {
+            lo: Dy::zero(),
+            hi: s.hi,
+        }
     } else {
         s
     }
@@ -434,8 +438,17 @@ thread_local! {
     static PI: RefCell<Option<(u64, Iv)>> = const { RefCell::new(None) };
 }
 
-fn cached(cell: &'static std::thread::LocalKey<RefCell<Option<(u64, Iv)>>>, p: u64, f: impl Fn(u64) -> Iv) -> Iv {
-    if let Some(iv) = cell.with(|c| c.borrow().as_ref().filter(|(q, _)| *q >= p).map(|(_, iv)| iv.clone())) {
+fn cached(
+    cell: &'static std::thread::LocalKey<RefCell<Option<(u64, Iv)>>>,
+    p: u64,
+    f: impl Fn(u64) -> Iv,
+) -> Iv {
+    if let Some(iv) = cell.with(|c| {
+        c.borrow()
+            .as_ref()
+            .filter(|(q, _)| *q >= p)
+            .map(|(_, iv)| iv.clone())
+    }) {
         return iv;
     }
     let iv = f(p);

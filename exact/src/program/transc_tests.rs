@@ -25,10 +25,7 @@ fn reference(f: Func, args: &[f64]) -> Result<Reference, ExactStop> {
         inputs: names[..args.len()].iter().map(|s| s.to_string()).collect(),
         slots: 0,
         pre: None,
-        outputs: vec![Node::Fun(
-            f,
-            (0..args.len()).map(Node::Input).collect(),
-        )],
+        outputs: vec![Node::Fun(f, (0..args.len()).map(Node::Input).collect())],
     };
     let x: Vec<Rational> = args.iter().map(|&v| exact(v)).collect();
     p.eval_exact(&x).map(|mut r| r.remove(0))
@@ -91,7 +88,10 @@ fn exact_decimal(s: &str) -> BigRational {
 
 #[test]
 fn constants_round_to_the_libm_constants() {
-    for (f, c) in [(Func::Pi, std::f64::consts::PI), (Func::E, std::f64::consts::E)] {
+    for (f, c) in [
+        (Func::Pi, std::f64::consts::PI),
+        (Func::E, std::f64::consts::E),
+    ] {
         let r = reference(f, &[]).unwrap();
         assert!(!r.exact);
         assert_eq!(crate::to_f64::rational_to_f64(&r.value), c, "{f:?}");
@@ -126,7 +126,11 @@ fn exact_values_are_exact() {
     for (f, args, want) in cases {
         let r = reference(*f, args).unwrap();
         assert!(r.exact, "{f:?}{args:?}");
-        assert_eq!(r.value, BigRational::from_float(*want).unwrap(), "{f:?}{args:?}");
+        assert_eq!(
+            r.value,
+            BigRational::from_float(*want).unwrap(),
+            "{f:?}{args:?}"
+        );
     }
 }
 
@@ -146,7 +150,11 @@ fn outside_the_domain() {
         (Func::Pow, &[0.0, -1.5]),
     ];
     for (f, args) in cases {
-        assert_eq!(reference(*f, args), Err(ExactStop::OutsideDomain), "{f:?}{args:?}");
+        assert_eq!(
+            reference(*f, args),
+            Err(ExactStop::OutsideDomain),
+            "{f:?}{args:?}"
+        );
     }
     // A domain decided on an enclosure: log of a surely negative irrational.
     let neg = Iv::from_rational(&exact(-2.0), 64);
@@ -169,10 +177,18 @@ fn outside_the_domain() {
 #[test]
 fn special_is_none_for_irrational_values() {
     for f in [Func::Exp, Func::Sin, Func::Log, Func::Atan, Func::Cbrt] {
-        assert_eq!(special(f, Some(&Rational::from_integer(2)), None), None, "{f:?}");
+        assert_eq!(
+            special(f, Some(&Rational::from_integer(2)), None),
+            None,
+            "{f:?}"
+        );
     }
     assert_eq!(
-        special(Func::Pow, Some(&Rational::from_integer(2)), Some(&exact(0.5))),
+        special(
+            Func::Pow,
+            Some(&Rational::from_integer(2)),
+            Some(&exact(0.5))
+        ),
         None
     );
 }
@@ -190,7 +206,12 @@ fn large_and_tiny_arguments() {
     agrees(Func::Expm1, &[1e-300], 1e-300f64.exp_m1()).unwrap();
     agrees(Func::Log1p, &[1e-300], 1e-300f64.ln_1p()).unwrap();
     agrees(Func::Log, &[1.0 + f64::EPSILON], (1.0 + f64::EPSILON).ln()).unwrap();
-    agrees(Func::Acos, &[1.0 - f64::EPSILON], (1.0 - f64::EPSILON).acos()).unwrap();
+    agrees(
+        Func::Acos,
+        &[1.0 - f64::EPSILON],
+        (1.0 - f64::EPSILON).acos(),
+    )
+    .unwrap();
     // Beyond every size limit.
     assert_eq!(reference(Func::Exp, &[1e300]), Err(ExactStop::TooLarge));
 }
@@ -312,11 +333,17 @@ fn formulas_call_the_functions_and_pi_is_the_constant() {
 fn formula_calls_are_checked() {
     let err = |t: &str, vars: Option<&[String]>| Program::parse(t, vars).unwrap_err().to_string();
     let e = err("erf(x)", None);
-    assert!(e.starts_with("unknown function 'erf' at 0: a regressed formula calls sqrt, exp"), "{e}");
+    assert!(
+        e.starts_with("unknown function 'erf' at 0: a regressed formula calls sqrt, exp"),
+        "{e}"
+    );
     let e = err("atan2(x)", None);
     assert!(e.contains("it takes 2 arguments, found 1"), "{e}");
     let e = err("x + pi", Some(&["x".to_string(), "pi".to_string()]));
-    assert!(e.contains("\"pi\" in the variable list is not a variable name"), "{e}");
+    assert!(
+        e.contains("\"pi\" in the variable list is not a variable name"),
+        "{e}"
+    );
     // The language's own functions stay refused.
     assert!(err("diff(x^2, x)", None).contains("expand the call first"));
 }

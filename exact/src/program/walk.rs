@@ -44,7 +44,12 @@ pub(crate) trait Domain {
     /// `a^n`.
     fn pow(&mut self, a: Self::V, n: i32, style: PowStyle) -> Result<Self::V, Self::Stop>;
     /// The function `f` at its arguments (`a` and `b` present as [`Func::arity`] says).
-    fn call(&mut self, f: Func, a: Option<Self::V>, b: Option<Self::V>) -> Result<Self::V, Self::Stop>;
+    fn call(
+        &mut self,
+        f: Func,
+        a: Option<Self::V>,
+        b: Option<Self::V>,
+    ) -> Result<Self::V, Self::Stop>;
     /// The truth of `a op b`.
     fn compare(&mut self, op: CmpOp, a: &Self::V, b: &Self::V) -> Result<bool, Self::Stop>;
 }

@@ -292,7 +292,13 @@ fn functions_and_constants_compile_to_calls() {
         ("(cbrt x)", call(Func::Cbrt, vec![x(0)])),
         ("(hypot x y)", call(Func::Hypot, vec![x(0), x(1)])),
         ("(atan2 y x)", call(Func::Atan2, vec![x(1), x(0)])),
-        ("(pow x 0.5)", call(Func::Pow, vec![x(0), Node::Const(Rational::new(1, 2).unwrap())])),
+        (
+            "(pow x 0.5)",
+            call(
+                Func::Pow,
+                vec![x(0), Node::Const(Rational::new(1, 2).unwrap())],
+            ),
+        ),
         ("(pow x y)", call(Func::Pow, vec![x(0), x(1)])),
         ("(pow x 3)", Node::Pow(b(x(0)), 3, PowStyle::Libm)),
     ];
@@ -302,13 +308,19 @@ fn functions_and_constants_compile_to_calls() {
     }
     // A wrong number of arguments is a syntax error of the file.
     let e = syntax_error("(FPCore (x) (atan2 x))");
-    assert!(e.message.contains("`atan2` takes 2 arguments, found 1"), "{e}");
+    assert!(
+        e.message.contains("`atan2` takes 2 arguments, found 1"),
+        "{e}"
+    );
     // The float side is the C library, the exact side the certified value.
     let p = program("(FPCore (x) (- (exp x) 1))");
     let r = p.eval_exact(&[Rational::new(1, 1 << 20).unwrap()]).unwrap();
     let want = (1.0f64 / 1048576.0).exp_m1();
     assert_eq!(crate::to_f64::rational_to_f64(&r[0].value), want);
-    assert_eq!(p.eval_f64(&[1.0 / 1048576.0])[0], (1.0f64 / 1048576.0).exp() - 1.0);
+    assert_eq!(
+        p.eval_f64(&[1.0 / 1048576.0])[0],
+        (1.0f64 / 1048576.0).exp() - 1.0
+    );
 }
 
 #[test]
