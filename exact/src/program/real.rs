@@ -317,17 +317,16 @@ impl Domain for Real<'_> {
                     Ordering::Greater => {}
                 }
             }
-            (Func::Atan2, Some(y), Some(x)) => {
-                if self.sign(x)? == Ordering::Equal {
-                    let half_pi = transc::enclose(Func::Pi, None, None, self.p)
-                        .map_err(halt)?
-                        .half();
-                    return match self.sign(y)? {
-                        Ordering::Greater => approx(half_pi),
-                        Ordering::Less => approx(half_pi.neg()),
-                        Ordering::Equal => Err(Halt::Outside),
-                    };
-                }
+            // atan2(y, 0): pi/2 times the sign of y; undefined at the origin.
+            (Func::Atan2, Some(y), Some(x)) if self.sign(x)? == Ordering::Equal => {
+                let half_pi = transc::enclose(Func::Pi, None, None, self.p)
+                    .map_err(halt)?
+                    .half();
+                return match self.sign(y)? {
+                    Ordering::Greater => approx(half_pi),
+                    Ordering::Less => approx(half_pi.neg()),
+                    Ordering::Equal => Err(Halt::Outside),
+                };
             }
             _ => {}
         }

@@ -107,7 +107,7 @@ pub(crate) fn special(
                 return outside;
             }
             let base = match f {
-                Func::Log => return (x == &one).then(|| Ok(zero)),
+                Func::Log => return (x == &one).then_some(Ok(zero)),
                 Func::Log2 => 2u32,
                 _ => 10,
             };
@@ -125,9 +125,7 @@ pub(crate) fn special(
         Func::Asin | Func::Acos => {
             if !abs_le_one() {
                 outside
-            } else if f == Func::Asin && x.is_zero() {
-                out(zero)
-            } else if f == Func::Acos && x == &one {
+            } else if (f == Func::Asin && x.is_zero()) || (f == Func::Acos && x == &one) {
                 out(zero)
             } else {
                 None
