@@ -12,6 +12,11 @@
 //! * `a^k`: the exponent must evaluate to an integer constant (exactly, in [`Rational`]) with
 //!   `|k| <=` the `formula-exponent` limit; it becomes [`Node::Pow`] with [`PowStyle::Multiply`] (the
 //!   float side multiplies, it does not call `pow`);
+//! * the C library's functions `sin`, `cos`, `tan`, `exp`, `log` (also `ln`), `asin`, `acos`,
+//!   `atan`, `atan2`, `sinh`, `cosh`, `tanh`, `asinh`, `acosh`, `atanh`, `exp2`, `expm1`,
+//!   `log2`, `log10`, `log1p`, `pow`, `hypot`, `cbrt` are [`Node::Fun`] (libm on the float side,
+//!   a certified enclosure on the exact side), and the name `pi` is the constant, never a
+//!   variable;
 //! * numbers are exact literals ([`Node::Const`]; the float side rounds them once);
 //!   `sqrt(...)` of any subexpression is [`Node::Sqrt`]; unary minus is [`Node::Neg`];
 //! * a variable is [`Node::Input`]: with an explicit variable list its index there (an unknown
@@ -22,8 +27,8 @@
 //! same reason the functions of the language (`diff`, `integrate`, `sum`, `binomial`,
 //! `factorial`) are refused: they have no operation-by-operation float evaluation that is the
 //! formula as written, and an expansion chosen here would regress a different formula.
-use super::{ChainOp, Node, PowStyle, Program};
-use crate::expr::{parse_expr, AddOp, Expr, ExprError, ExprKind, MulOp};
+use super::{ChainOp, Func, Node, PowStyle, Program};
+use crate::expr::{parse_expr, parse_expr_with_calls, AddOp, Expr, ExprError, ExprKind, MulOp, PI};
 use crate::rational::Rational;
 use exactcheck_core::limits::{self, LimitError};
 use num_traits::ToPrimitive;
@@ -35,6 +40,14 @@ pub enum CompileError {
     /// A syntax error (or a constant exponent that cannot be evaluated) of [`crate::expr`].
     #[error(transparent)]
     Expr(#[from] ExprError),
+    /// A call of a function that a regressed formula does not have.
+    #[error("unknown function '{name}' at {pos}: a regressed formula calls sqrt, {list} (write '{name}*(...)' for a product)", list = formula_functions())]
+    UnknownFunction {
+        /// Byte position of the call.
+        pos: usize,
+        /// The name.
+        name: String,
+    },
     /// A variable not in the given list.
     #[error("unknown variable '{name}' at {pos}: the variables are {list}")]
     UnknownVariable {
@@ -82,6 +95,7 @@ impl CompileError {
         match self {
             CompileError::Expr(e) => e.position(),
             CompileError::UnknownVariable { pos, .. }
+            | CompileError::UnknownFunction { pos, .. }
             | CompileError::BadExponent { pos, .. }
             | CompileError::ExponentTooLarge { pos, .. } => *pos,
             CompileError::DuplicateVariable { .. } | CompileError::BadVariable { .. } => 0,
@@ -133,7 +147,7 @@ impl Program {
         for name in vars.unwrap_or_default() {
             let is_name =
                 parse_expr(name).is_ok_and(|e| matches!(&e.kind, ExprKind::Var(v) if v == name));
-            if !is_name {
+            if !is_name || name == PI {
                 return Err(CompileError::BadVariable { name: name.clone() });
             }
             if table.names.contains(name) {
@@ -157,7 +171,7 @@ impl Program {
     /// # Errors
     /// A syntax error, or an error of [`Program::from_expr`].
     pub fn parse(text: &str, vars: Option<&[String]>) -> Result<Program, CompileError> {
-        let expr = parse_expr(text)?;
+        let expr = parse_expr_with_calls(text)?;
         let mut p = Program::from_expr(&expr, vars)?;
         p.name = text.trim().to_string();
         Ok(p)
@@ -167,9 +181,30 @@ impl Program {
 fn compile(e: &Expr, vars: &mut Vars) -> Result<Node, CompileError> {
     Ok(match &e.kind {
         ExprKind::Number(q) => Node::Const(q.clone()),
+        ExprKind::Var(name) if name == PI => Node::Fun(Func::Pi, Vec::new()),
         ExprKind::Var(name) => Node::Input(vars.index(name, e.pos)?),
         ExprKind::Neg(a) => Node::Neg(Box::new(compile(a, vars)?)),
         ExprKind::Sqrt(a) => Node::Sqrt(Box::new(compile(a, vars)?)),
+        ExprKind::Call(name, args) if formula_function(name).is_some() => {
+            let f = formula_function(name).expect("a function");
+            if args.len() != f.arity() {
+                return Err(CompileError::Expr(ExprError::BadCall {
+                    pos: e.pos,
+                    name: name.clone(),
+                    why: format!(
+                        "it takes {} argument{}, found {}",
+                        f.arity(),
+                        if f.arity() == 1 { "" } else { "s" },
+                        args.len()
+                    ),
+                }));
+            }
+            let args = args
+                .iter()
+                .map(|a| compile(a, vars))
+                .collect::<Result<Vec<_>, _>>()?;
+            Node::Fun(f, args)
+        }
         ExprKind::Call(name, _) if crate::expr::FUNCTIONS.contains(&name.as_str()) => {
             return Err(CompileError::Expr(ExprError::BadCall {
                 pos: e.pos,
@@ -181,10 +216,10 @@ fn compile(e: &Expr, vars: &mut Vars) -> Result<Node, CompileError> {
             }))
         }
         ExprKind::Call(name, _) => {
-            return Err(CompileError::Expr(ExprError::UnknownFunction {
+            return Err(CompileError::UnknownFunction {
                 pos: e.pos,
                 name: name.clone(),
-            }))
+            })
         }
         ExprKind::Sum(items) => {
             let op = |op: &AddOp| match op {
@@ -215,6 +250,24 @@ fn compile(e: &Expr, vars: &mut Vars) -> Result<Node, CompileError> {
             Node::Pow(Box::new(b), exponent(exp)?, PowStyle::Multiply)
         }
     })
+}
+
+/// The function of a formula call `name(...)`: the C library's functions by their C names
+/// ([`Func::name`]; `ln` is `log`), the constants excluded (`pi` is a name, not a call).
+fn formula_function(name: &str) -> Option<Func> {
+    let name = if name == "ln" { "log" } else { name };
+    Func::from_name(name).filter(|f| f.arity() > 0)
+}
+
+/// The names [`formula_function`] accepts, comma-separated (for error messages).
+fn formula_functions() -> String {
+    let mut names: Vec<&str> = Func::ALL
+        .iter()
+        .filter(|f| f.arity() > 0)
+        .map(|f| f.name())
+        .collect();
+    names.push("ln");
+    names.join(", ")
 }
 
 /// The left-to-right chain of a sum's terms or a product's factors (`empty` when there are

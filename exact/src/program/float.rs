@@ -9,6 +9,7 @@
 //! * `x^n` follows its [`PowStyle`]: `Multiply` is `n - 1` multiplications from the left and for
 //!   `n < 0` one division `1 / x^|n|` after them; `Libm` is the C library's `pow(x, n)`
 //!   (`f64::powf`).
+//! * The functions of [`Func`] are the C library's ([`call_f64`]: Rust's `f64` methods).
 //! * A comparison involving NaN is false, except `!=`, which is true (IEEE 754).
 //! * The precondition is **not** evaluated here: it is a property of the exact inputs, decided by
 //!   the exact side.
@@ -17,7 +18,7 @@
 //! over the `Copy` type `f64`, with the `let` slots in a stack array (a heap vector only for
 //! programs with more than [`STACK_SLOTS`] slots).
 use super::walk::{eval_node, Domain};
-use super::{CmpOp, PowStyle, Program};
+use super::{CmpOp, Func, PowStyle, Program};
 use crate::rational::Rational;
 use std::convert::Infallible;
 
@@ -86,6 +87,10 @@ impl Domain for F64<'_> {
         Ok(pow_f64(a, n, style))
     }
     #[inline]
+    fn call(&mut self, f: Func, a: Option<f64>, b: Option<f64>) -> Result<f64, Infallible> {
+        Ok(call_f64(f, a.unwrap_or(f64::NAN), b.unwrap_or(f64::NAN)))
+    }
+    #[inline]
     fn compare(&mut self, op: CmpOp, a: &f64, b: &f64) -> Result<bool, Infallible> {
         Ok(match op {
             CmpOp::Lt => a < b,
@@ -116,6 +121,67 @@ pub fn pow_f64(a: f64, n: i32, style: PowStyle) -> f64 {
                 acc
             }
         }
+    }
+}
+
+/// The inverse hyperbolic functions of the platform's C library. Rust's `f64::asinh`, `acosh`
+/// and `atanh` are formulas in Rust (not the C functions) that lose several ulps near `|x| = 1`
+/// and `x = 1`; a compiled C program calls these.
+mod cmath {
+    extern "C" {
+        #[link_name = "asinh"]
+        fn c_asinh(x: f64) -> f64;
+        #[link_name = "acosh"]
+        fn c_acosh(x: f64) -> f64;
+        #[link_name = "atanh"]
+        fn c_atanh(x: f64) -> f64;
+    }
+
+    pub(super) fn asinh(x: f64) -> f64 {
+        // SAFETY: a pure C function of one double, defined for every double.
+        unsafe { c_asinh(x) }
+    }
+    pub(super) fn acosh(x: f64) -> f64 {
+        // SAFETY: as above.
+        unsafe { c_acosh(x) }
+    }
+    pub(super) fn atanh(x: f64) -> f64 {
+        // SAFETY: as above.
+        unsafe { c_atanh(x) }
+    }
+}
+
+/// The function `f` in doubles: the platform's C library (Rust's `f64` methods call it for
+/// `exp`, `log`, `sin`, `pow`, `hypot`, `cbrt`, ...; the inverse hyperbolic functions are
+/// declared directly); `b` is the second argument of the two-argument functions
+/// (`atan2(a, b)` is `atan2(y = a, x = b)`), ignored otherwise.
+pub fn call_f64(f: Func, a: f64, b: f64) -> f64 {
+    match f {
+        Func::Pi => std::f64::consts::PI,
+        Func::E => std::f64::consts::E,
+        Func::Exp => a.exp(),
+        Func::Exp2 => a.exp2(),
+        Func::Expm1 => a.exp_m1(),
+        Func::Log => a.ln(),
+        Func::Log2 => a.log2(),
+        Func::Log10 => a.log10(),
+        Func::Log1p => a.ln_1p(),
+        Func::Sin => a.sin(),
+        Func::Cos => a.cos(),
+        Func::Tan => a.tan(),
+        Func::Asin => a.asin(),
+        Func::Acos => a.acos(),
+        Func::Atan => a.atan(),
+        Func::Atan2 => a.atan2(b),
+        Func::Sinh => a.sinh(),
+        Func::Cosh => a.cosh(),
+        Func::Tanh => a.tanh(),
+        Func::Asinh => cmath::asinh(a),
+        Func::Acosh => cmath::acosh(a),
+        Func::Atanh => cmath::atanh(a),
+        Func::Pow => a.powf(b),
+        Func::Hypot => a.hypot(b),
+        Func::Cbrt => a.cbrt(),
     }
 }
 

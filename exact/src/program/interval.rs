@@ -88,7 +88,7 @@ impl Dy {
     }
 
     /// `m * 2^e` rounded in `dir` to at most `p` significant bits.
-    fn rounded(m: BigInt, e: i64, p: u64, dir: Dir) -> Dy {
+    pub(crate) fn rounded(m: BigInt, e: i64, p: u64, dir: Dir) -> Dy {
         let bits = m.bits();
         if bits > p {
             let s = bits - p;
@@ -162,7 +162,7 @@ impl Dy {
     }
 
     /// `a * b`, exact.
-    fn mul_exact(a: &Dy, b: &Dy) -> Dy {
+    pub(crate) fn mul_exact(a: &Dy, b: &Dy) -> Dy {
         Dy {
             m: &a.m * &b.m,
             e: a.e + b.e,
@@ -374,6 +374,20 @@ impl Iv {
         Iv {
             lo: max_dy(a.lo.clone(), b.lo.clone()),
             hi: max_dy(a.hi.clone(), b.hi.clone()),
+        }
+    }
+
+    /// `a / 2`, exact.
+    pub(crate) fn half(&self) -> Iv {
+        Iv {
+            lo: Dy {
+                m: self.lo.m.clone(),
+                e: self.lo.e - 1,
+            },
+            hi: Dy {
+                m: self.hi.m.clone(),
+                e: self.hi.e - 1,
+            },
         }
     }
 

@@ -28,10 +28,13 @@ mod interval;
 mod real;
 #[cfg(test)]
 mod tests;
+mod transc;
+#[cfg(test)]
+mod transc_tests;
 mod walk;
 
 pub use compile::CompileError;
-pub use float::{pow_f64, STACK_SLOTS};
+pub use float::{call_f64, pow_f64, STACK_SLOTS};
 pub use real::{ExactStop, Reference, MAX_PRECISION, REL_BITS, START_PRECISION};
 
 /// How an integer power is evaluated on the float side.
@@ -116,6 +119,142 @@ pub enum Node {
     Let(Vec<(usize, Node)>, Box<Node>),
     /// `if cond then a else b`; the exact side decides `cond` exactly.
     If(Box<Cond>, Box<Node>, Box<Node>),
+    /// A mathematical function or constant applied to [`Func::arity`] arguments: the C library
+    /// function on the float side, a certified enclosure on the exact side (`transc`).
+    Fun(Func, Vec<Node>),
+}
+
+/// The functions and constants of [`Node::Fun`]. Outside its domain (`log` of a non-positive
+/// number, `asin` beyond `[-1, 1]`, `pow` of a negative number to a non-integer power, ...) the
+/// exact side puts the sample outside the domain, as for a division by zero.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Func {
+    /// The constant pi.
+    Pi,
+    /// The constant e.
+    E,
+    /// `e^x`.
+    Exp,
+    /// `2^x`.
+    Exp2,
+    /// `e^x - 1`.
+    Expm1,
+    /// The natural logarithm.
+    Log,
+    /// The base-2 logarithm.
+    Log2,
+    /// The base-10 logarithm.
+    Log10,
+    /// `log(1 + x)`.
+    Log1p,
+    /// Sine (radians).
+    Sin,
+    /// Cosine.
+    Cos,
+    /// Tangent.
+    Tan,
+    /// Arcsine, in `[-pi/2, pi/2]`.
+    Asin,
+    /// Arccosine, in `[0, pi]`.
+    Acos,
+    /// Arctangent, in `(-pi/2, pi/2)`.
+    Atan,
+    /// `atan2(y, x)`: the angle of the point `(x, y)`, in `(-pi, pi]`; undefined at the origin.
+    Atan2,
+    /// Hyperbolic sine.
+    Sinh,
+    /// Hyperbolic cosine.
+    Cosh,
+    /// Hyperbolic tangent.
+    Tanh,
+    /// Inverse hyperbolic sine.
+    Asinh,
+    /// Inverse hyperbolic cosine (`x >= 1`).
+    Acosh,
+    /// Inverse hyperbolic tangent (`|x| < 1`).
+    Atanh,
+    /// `x^y` for a real exponent (C's `pow`; an integer literal exponent is [`Node::Pow`]).
+    Pow,
+    /// `sqrt(x^2 + y^2)` (C's `hypot` on the float side).
+    Hypot,
+    /// The real cube root.
+    Cbrt,
+}
+
+impl Func {
+    /// Every function, in declaration order.
+    pub const ALL: [Func; 25] = [
+        Func::Pi,
+        Func::E,
+        Func::Exp,
+        Func::Exp2,
+        Func::Expm1,
+        Func::Log,
+        Func::Log2,
+        Func::Log10,
+        Func::Log1p,
+        Func::Sin,
+        Func::Cos,
+        Func::Tan,
+        Func::Asin,
+        Func::Acos,
+        Func::Atan,
+        Func::Atan2,
+        Func::Sinh,
+        Func::Cosh,
+        Func::Tanh,
+        Func::Asinh,
+        Func::Acosh,
+        Func::Atanh,
+        Func::Pow,
+        Func::Hypot,
+        Func::Cbrt,
+    ];
+
+    /// The number of arguments.
+    pub fn arity(self) -> usize {
+        match self {
+            Func::Pi | Func::E => 0,
+            Func::Atan2 | Func::Pow | Func::Hypot => 2,
+            _ => 1,
+        }
+    }
+
+    /// The FPCore (and C) name: `PI` and `E` for the constants, `exp`, `atan2`, ... otherwise.
+    pub fn name(self) -> &'static str {
+        match self {
+            Func::Pi => "PI",
+            Func::E => "E",
+            Func::Exp => "exp",
+            Func::Exp2 => "exp2",
+            Func::Expm1 => "expm1",
+            Func::Log => "log",
+            Func::Log2 => "log2",
+            Func::Log10 => "log10",
+            Func::Log1p => "log1p",
+            Func::Sin => "sin",
+            Func::Cos => "cos",
+            Func::Tan => "tan",
+            Func::Asin => "asin",
+            Func::Acos => "acos",
+            Func::Atan => "atan",
+            Func::Atan2 => "atan2",
+            Func::Sinh => "sinh",
+            Func::Cosh => "cosh",
+            Func::Tanh => "tanh",
+            Func::Asinh => "asinh",
+            Func::Acosh => "acosh",
+            Func::Atanh => "atanh",
+            Func::Pow => "pow",
+            Func::Hypot => "hypot",
+            Func::Cbrt => "cbrt",
+        }
+    }
+
+    /// The function called `name` ([`Func::name`]).
+    pub fn from_name(name: &str) -> Option<Func> {
+        Func::ALL.iter().copied().find(|f| f.name() == name)
+    }
 }
 
 /// A condition of an [`Node::If`] or a precondition.
@@ -184,6 +323,7 @@ fn node_ops(n: &Node) -> usize {
             bindings.iter().map(|(_, v)| node_ops(v)).sum::<usize>() + node_ops(body)
         }
         Node::If(c, a, b) => cond_ops(c) + node_ops(a) + node_ops(b),
+        Node::Fun(f, args) => usize::from(f.arity() > 0) + args.iter().map(node_ops).sum::<usize>(),
     }
 }
 

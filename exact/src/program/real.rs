@@ -49,8 +49,9 @@
 //! The walk itself is the one generic walk (`walk`) shared with the float side and the radical
 //! fallback.
 use super::interval::Iv;
+use super::transc::{self, TStop};
 use super::walk::{eval_cond, eval_node, Domain};
-use super::{CmpOp, PowStyle, Program};
+use super::{CmpOp, Func, PowStyle, Program};
 use crate::expr::Coefficient;
 use crate::radical::Radical;
 use crate::rational::Rational;
@@ -58,6 +59,7 @@ use exactcheck_core::limits;
 use exactcheck_core::{Field, OrderedField, Ring, Sign};
 use num_bigint::BigInt;
 use num_rational::BigRational;
+use num_traits::ToPrimitive;
 use std::cmp::Ordering;
 
 /// Relative accuracy of an inexact [`Reference`]: `|value - true| <= 2^-REL_BITS |true|`.
@@ -280,6 +282,60 @@ impl Domain for Real<'_> {
             }
         }
     }
+    fn call(&mut self, f: Func, a: Option<XV>, b: Option<XV>) -> Result<XV, Halt> {
+        let exact = |v: &Option<XV>| match v {
+            Some(XV::Exact(q)) => Some(q.clone()),
+            _ => None,
+        };
+        let (qa, qb) = (exact(&a), exact(&b));
+        if qa.is_some() == a.is_some() && qb.is_some() == b.is_some() {
+            if let Some(r) = transc::special(f, qa.as_ref(), qb.as_ref()) {
+                return r.map_err(halt).and_then(checked);
+            }
+        }
+        match (f, &a, &b) {
+            (Func::Pow, Some(x), Some(y)) => {
+                if let Some(n) = qb
+                    .as_ref()
+                    .filter(|q| q.is_integer())
+                    .and_then(|q| q.numer().to_i32())
+                {
+                    return self.pow(x.clone(), n, PowStyle::Libm);
+                }
+                match self.sign(x)? {
+                    // A negative base: C's pow is NaN unless the exponent is an integer, which
+                    // only an exact exponent shows.
+                    Ordering::Less if qb.is_some() => return Err(Halt::Outside),
+                    Ordering::Less => return Err(AMBIGUOUS),
+                    Ordering::Equal => {
+                        return match self.sign(y)? {
+                            Ordering::Greater => Ok(XV::Exact(Rational::ZERO)),
+                            Ordering::Less => Err(Halt::Outside),
+                            Ordering::Equal => Ok(XV::Exact(Rational::ONE)),
+                        }
+                    }
+                    Ordering::Greater => {}
+                }
+            }
+            // atan2(y, 0): pi/2 times the sign of y; undefined at the origin.
+            (Func::Atan2, Some(y), Some(x)) if self.sign(x)? == Ordering::Equal => {
+                let half_pi = transc::enclose(Func::Pi, None, None, self.p)
+                    .map_err(halt)?
+                    .half();
+                return match self.sign(y)? {
+                    Ordering::Greater => approx(half_pi),
+                    Ordering::Less => approx(half_pi.neg()),
+                    Ordering::Equal => Err(Halt::Outside),
+                };
+            }
+            _ => {}
+        }
+        let ia = a.as_ref().map(|v| self.iv(v));
+        let ib = b.as_ref().map(|v| self.iv(v));
+        transc::enclose(f, ia.as_ref(), ib.as_ref(), self.p)
+            .map_err(halt)
+            .and_then(approx)
+    }
     fn compare(&mut self, op: CmpOp, a: &XV, b: &XV) -> Result<bool, Halt> {
         let ord = match (a, b) {
             (XV::Exact(x), XV::Exact(y)) => x.cmp(y),
@@ -288,6 +344,15 @@ impl Domain for Real<'_> {
                 .ok_or(AMBIGUOUS)?,
         };
         Ok(holds(op, ord))
+    }
+}
+
+/// The halt of a function's stop.
+fn halt(s: TStop) -> Halt {
+    match s {
+        TStop::Outside => Halt::Outside,
+        TStop::Ambiguous => AMBIGUOUS,
+        TStop::TooLarge => Halt::TooLarge,
     }
 }
 
@@ -401,6 +466,43 @@ impl Domain for Rad<'_> {
             p.inv().map_err(|_| RadStop::Outside)
         } else {
             Ok(p)
+        }
+    }
+    fn call(
+        &mut self,
+        f: Func,
+        a: Option<Radical>,
+        b: Option<Radical>,
+    ) -> Result<Radical, RadStop> {
+        let qb = b.as_ref().and_then(Radical::to_rational);
+        match (f, a, b) {
+            (Func::Pow, Some(x), Some(_)) if qb.as_ref().is_some_and(Rational::is_integer) => {
+                let n = qb
+                    .and_then(|q| q.numer().to_i32())
+                    .ok_or(RadStop::Unrepresentable)?;
+                self.pow(x, n, PowStyle::Libm)
+            }
+            (Func::Hypot, Some(x), Some(y)) => {
+                let xx = self.mul(x.clone(), x)?;
+                let yy = self.mul(y.clone(), y)?;
+                let s = self.add(xx, yy)?;
+                self.sqrt(s)
+            }
+            (f, a, b) => {
+                let qa = match &a {
+                    Some(r) => Some(r.to_rational().ok_or(RadStop::Unrepresentable)?),
+                    None => None,
+                };
+                let qb = match &b {
+                    Some(r) => Some(r.to_rational().ok_or(RadStop::Unrepresentable)?),
+                    None => None,
+                };
+                match transc::special(f, qa.as_ref(), qb.as_ref()) {
+                    Some(Ok(q)) => Ok(Radical::from(&q)),
+                    Some(Err(TStop::Outside)) => Err(RadStop::Outside),
+                    _ => Err(RadStop::Unrepresentable),
+                }
+            }
         }
     }
     fn compare(&mut self, op: CmpOp, a: &Radical, b: &Radical) -> Result<bool, RadStop> {

@@ -8,7 +8,7 @@
 //! decision of a comparison. Values are moved, not borrowed, so a domain of `Copy` numbers
 //! (`f64`) compiles to straight-line float code with no allocation, and `Result<_, Infallible>`
 //! costs nothing.
-use super::{ChainOp, CmpOp, Cond, Node, PowStyle};
+use super::{ChainOp, CmpOp, Cond, Func, Node, PowStyle};
 use crate::rational::Rational;
 
 /// The arithmetic a program is evaluated in.
@@ -43,6 +43,13 @@ pub(crate) trait Domain {
     fn max(&mut self, a: Self::V, b: Self::V) -> Result<Self::V, Self::Stop>;
     /// `a^n`.
     fn pow(&mut self, a: Self::V, n: i32, style: PowStyle) -> Result<Self::V, Self::Stop>;
+    /// The function `f` at its arguments (`a` and `b` present as [`Func::arity`] says).
+    fn call(
+        &mut self,
+        f: Func,
+        a: Option<Self::V>,
+        b: Option<Self::V>,
+    ) -> Result<Self::V, Self::Stop>;
     /// The truth of `a op b`.
     fn compare(&mut self, op: CmpOp, a: &Self::V, b: &Self::V) -> Result<bool, Self::Stop>;
 }
@@ -138,6 +145,17 @@ pub(crate) fn eval_node<D: Domain>(
             } else {
                 eval_node(d, otherwise, slots)?
             }
+        }
+        Node::Fun(f, args) => {
+            let a = match args.first() {
+                Some(n) => Some(eval_node(d, n, slots)?),
+                None => None,
+            };
+            let b = match args.get(1) {
+                Some(n) => Some(eval_node(d, n, slots)?),
+                None => None,
+            };
+            d.call(*f, a, b)?
         }
     })
 }

@@ -3,7 +3,7 @@
 //! scopes (see the parent module for the supported subset).
 use super::sexpr::{check_literal_size, pow_rational, Pos, SExpr, MAX_LITERAL_EXPONENT};
 use super::{Benchmark, Bound, FpCoreError, Interval, Unsupported};
-use crate::program::{CmpOp, Cond, Node, PowStyle, Program};
+use crate::program::{CmpOp, Cond, Func, Node, PowStyle, Program};
 use crate::rational::Rational;
 use num_bigint::BigInt;
 
@@ -46,7 +46,8 @@ enum Value {
     Bool(Cond),
 }
 
-/// The mathematical constants of FPCore 2.0 (all irrational or non-finite: unsupported).
+/// The mathematical constants of FPCore 2.0: `PI` and `E` are [`Func`] constants, the others
+/// (derived constants and the non-finite ones) are unsupported.
 const CONSTANTS: &[&str] = &[
     "E",
     "LOG2E",
@@ -135,30 +136,6 @@ fn literal(e: &SExpr) -> Result<Option<Rational>, FpCoreError> {
         },
         _ => Ok(None),
     }
-}
-
-/// The exact value of a constant expression (literals under `+ - * /`), `None` when `e` is not
-/// one (or divides by zero). Used only to say why a `pow` exponent is unsupported.
-fn constant(e: &SExpr) -> Result<Option<Rational>, FpCoreError> {
-    if let Some(q) = literal(e)? {
-        return Ok(Some(q));
-    }
-    let Some(items) = list_items(e) else {
-        return Ok(None);
-    };
-    let (Some(op), [a, b]) = (items.first().and_then(SExpr::sym), &items[1..]) else {
-        return Ok(None);
-    };
-    let (Some(a), Some(b)) = (constant(a)?, constant(b)?) else {
-        return Ok(None);
-    };
-    Ok(match op {
-        "+" => Some(a + b),
-        "-" => Some(a - b),
-        "*" => Some(a * b),
-        "/" => a.checked_div(&b).ok(),
-        _ => None,
-    })
 }
 
 /// `(digits m e b)` = `m·b^e` exactly.
@@ -717,6 +694,8 @@ impl Compiler {
                 match s.as_str() {
                     "TRUE" => Ok(Value::Bool(Cond::Bool(true))),
                     "FALSE" => Ok(Value::Bool(Cond::Bool(false))),
+                    "PI" => Ok(Value::Num(Node::Fun(Func::Pi, Vec::new()))),
+                    "E" => Ok(Value::Num(Node::Fun(Func::E, Vec::new()))),
                     c if CONSTANTS.contains(&c) => Err(unsupported(c)),
                     _ => Err(syntax(*pos, format!("unbound variable `{s}`"))),
                 }
@@ -834,13 +813,11 @@ impl Compiler {
                         Ok(n) => num(Node::Pow(Box::new(base), n, PowStyle::Libm)),
                         Err(_) => Err(unsupported("pow with an exponent beyond 32 bits")),
                     },
-                    Some(_) => Err(unsupported("pow with a non-integer exponent")),
-                    None => match constant(&args[1])? {
-                        Some(q) if !q.is_integer() => {
-                            Err(unsupported("pow with a non-integer exponent"))
-                        }
-                        _ => Err(unsupported("pow with a non-literal exponent")),
-                    },
+                    // Any other exponent: C's pow of two doubles, `exp(y log x)` exactly.
+                    _ => {
+                        let exp = self.num(&args[1])?;
+                        num(Node::Fun(Func::Pow, vec![base, exp]))
+                    }
                 }
             }
             "<" | "<=" | ">" | ">=" | "==" | "!=" => {
@@ -885,9 +862,19 @@ impl Compiler {
                 arity(1)?;
                 Ok(Value::Bool(Cond::Not(Box::new(self.cond(&args[0])?))))
             }
-            // Everything else — transcendental functions, cbrt, hypot (see the module doc),
-            // loops, tensors, casts, predicates on special values, calls of named FPCores —
-            // is outside the supported subset.
+            // The C library's mathematical functions (the constants are symbols, above).
+            name if Func::from_name(name).is_some_and(|f| f.arity() > 0) => {
+                let f = Func::from_name(name).expect("a function");
+                arity(f.arity())?;
+                let args = args
+                    .iter()
+                    .map(|a| self.num(a))
+                    .collect::<Result<Vec<_>, _>>()?;
+                num(Node::Fun(f, args))
+            }
+            // Everything else — loops, tensors, casts, predicates on special values, the
+            // functions without a certified enclosure (`erf`, `tgamma`, `fmod`, ...), calls of
+            // named FPCores — is outside the supported subset.
             other => Err(unsupported(other)),
         }
     }
@@ -1000,6 +987,7 @@ fn subst_node(n: &Node, map: &[(usize, Node)]) -> Node {
             b(body),
         ),
         Node::If(c, x, y) => Node::If(Box::new(subst_cond(c, map)), b(x), b(y)),
+        Node::Fun(f, args) => Node::Fun(*f, args.iter().map(|a| subst_node(a, map)).collect()),
     }
 }
 

@@ -6,13 +6,18 @@
 //! becomes a [`Benchmark`]: its `:name`, its arguments, its sampling [`Interval`]s (from
 //! `:pre`) and either a [`Program`] or the reason it cannot be one ([`Unsupported`]).
 //!
-//! The supported subset is the algebraic one, where "the exact value" is a rational or a
-//! rational refined through square roots:
+//! The supported subset, where "the exact value" is a rational, a rational refined through
+//! square roots, or a certified enclosure of an elementary function refined until its rounding
+//! is decided:
 //! * numbers — decimal (`1.5e-3`), rational (`1/3`), hexadecimal (`0x1.8p3`) and
 //!   `(digits m e b)` = `m·b^e` — all taken **exactly** into [`Node::Const`] (the float side
 //!   rounds the literal to the nearest double, as FPCore's binary64 context does);
 //! * `+ - * /` (binary; `-` with one argument is negation), `neg`, `sqrt`, `fabs`, `fma`,
 //!   `fmin`, `fmax`, and `pow` with an integer literal exponent ([`PowStyle::Libm`]: C's `pow`);
+//! * the C library's functions `exp`, `exp2`, `expm1`, `log`, `log2`, `log10`, `log1p`, `sin`,
+//!   `cos`, `tan`, `asin`, `acos`, `atan`, `atan2`, `sinh`, `cosh`, `tanh`, `asinh`, `acosh`,
+//!   `atanh`, `pow` with any other exponent, `hypot`, `cbrt`, and the constants `PI` and `E`
+//!   ([`Node::Fun`]: the C function on the float side, a certified enclosure on the exact side);
 //! * `let` (parallel: each bound value sees the outer scope; every binding gets a fresh slot,
 //!   so evaluating the bindings one after another as [`Node::Let`] does is equivalent) and `let*`
 //!   (sequential); boolean bindings are substituted into their uses;
@@ -26,12 +31,10 @@
 //!   metadata and ignored.
 //!
 //! Everything else is reported per benchmark as `not supported: OP`, never approximated:
-//! transcendental functions and constants (`sin`, `exp`, `PI`, ...), `cbrt`, `pow` with a
-//! non-integer or non-literal exponent, `hypot` (the exact side would be `sqrt(x²+y²)`, but the
-//! float side must be the C library's `hypot`, one correctly-rounded-ish operation the IR has no
-//! node for, and evaluating it as three roundings would test different code), loops (`while`,
-//! `for`), tensors, `cast`, the classification predicates (`isnan`, ...), calls of other named
-//! FPCores, and any precision other than binary64 or rounding other than nearestEven.
+//! the functions without a certified enclosure here (`erf`, `tgamma`, `fmod`, ...), the
+//! derived and non-finite constants (`LN2`, `INFINITY`, ...), loops (`while`, `for`), tensors,
+//! `cast`, the classification predicates (`isnan`, ...), calls of other named FPCores, and any
+//! precision other than binary64 or rounding other than nearestEven.
 //!
 //! # `:pre` and the domain
 //! The precondition is split into its conjuncts (`and`, nested). Each ordered comparison chain
@@ -55,7 +58,7 @@ mod sexpr;
 #[cfg(test)]
 mod tests;
 
-pub use crate::program::{CmpOp, Cond, Node, PowStyle};
+pub use crate::program::{CmpOp, Cond, Func, Node, PowStyle};
 
 /// One side of a sampling interval.
 #[derive(Clone, Debug, PartialEq, Eq)]

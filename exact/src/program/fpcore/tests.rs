@@ -71,7 +71,7 @@ fn spec_examples_parse_and_are_classified() {
         ("cast 2", Ok(())),
         ("cast 3", ns("precision binary32")),
         ("cast 4", ns("cast")),
-        ("foo", ns("sin")),
+        ("foo", Ok(())),
         ("inherit 1", ns("round toZero")),
         ("inherit 2", ns("round toPositive")),
         ("identity array", ns("array")),
@@ -283,6 +283,47 @@ fn let_is_parallel_and_let_star_sequential() {
 }
 
 #[test]
+fn functions_and_constants_compile_to_calls() {
+    let call = |f: Func, args: Vec<Node>| Node::Fun(f, args);
+    let cases = [
+        ("(sin x)", call(Func::Sin, vec![x(0)])),
+        ("(+ x PI)", Node::Add(b(x(0)), b(call(Func::Pi, vec![])))),
+        ("(* E x)", Node::Mul(b(call(Func::E, vec![])), b(x(0)))),
+        ("(cbrt x)", call(Func::Cbrt, vec![x(0)])),
+        ("(hypot x y)", call(Func::Hypot, vec![x(0), x(1)])),
+        ("(atan2 y x)", call(Func::Atan2, vec![x(1), x(0)])),
+        (
+            "(pow x 0.5)",
+            call(
+                Func::Pow,
+                vec![x(0), Node::Const(Rational::new(1, 2).unwrap())],
+            ),
+        ),
+        ("(pow x y)", call(Func::Pow, vec![x(0), x(1)])),
+        ("(pow x 3)", Node::Pow(b(x(0)), 3, PowStyle::Libm)),
+    ];
+    for (expr, want) in cases {
+        let p = program(&format!("(FPCore (x y) {expr})"));
+        assert_eq!(p.outputs, vec![want], "{expr}");
+    }
+    // A wrong number of arguments is a syntax error of the file.
+    let e = syntax_error("(FPCore (x) (atan2 x))");
+    assert!(
+        e.message.contains("`atan2` takes 2 arguments, found 1"),
+        "{e}"
+    );
+    // The float side is the C library, the exact side the certified value.
+    let p = program("(FPCore (x) (- (exp x) 1))");
+    let r = p.eval_exact(&[Rational::new(1, 1 << 20).unwrap()]).unwrap();
+    let want = (1.0f64 / 1048576.0).exp_m1();
+    assert_eq!(crate::to_f64::rational_to_f64(&r[0].value), want);
+    assert_eq!(
+        p.eval_f64(&[1.0 / 1048576.0])[0],
+        (1.0f64 / 1048576.0).exp() - 1.0
+    );
+}
+
+#[test]
 fn arrays_give_several_outputs() {
     let p = program("(FPCore (x y) (array (+ x y) (- x y)))");
     assert_eq!(
@@ -293,27 +334,20 @@ fn arrays_give_several_outputs() {
 
 #[test]
 fn unsupported_operations_mark_only_their_benchmark() {
-    let text = "(FPCore (x) :name \"a\" (exp x))\n(FPCore (x) :name \"b\" (+ x 1))\n(FPCore (x) :name \"c\" (while (< x 1) ([x x (* 2 x)]) x))";
+    let text = "(FPCore (x) :name \"a\" (erf x))\n(FPCore (x) :name \"b\" (+ x 1))\n(FPCore (x) :name \"c\" (while (< x 1) ([x x (* 2 x)]) x))";
     let all = parse_file(text).expect("valid syntax");
     assert_eq!(all.len(), 3);
     assert_eq!(
         all[0].program.as_ref().unwrap_err().to_string(),
-        "not supported: exp"
+        "not supported: erf"
     );
     assert!(all[1].program.is_ok());
     assert_eq!(all[2].program.as_ref().unwrap_err().op, "while");
     assert_eq!(all[2].line, 3);
 
     let cases = [
-        ("(sin x)", "sin"),
-        ("(+ x PI)", "PI"),
-        ("(* E x)", "E"),
-        ("(cbrt x)", "cbrt"),
-        ("(hypot x y)", "hypot"),
-        ("(pow x 0.5)", "pow with a non-integer exponent"),
-        ("(pow x y)", "pow with a non-literal exponent"),
-        ("(pow x (/ 1 3))", "pow with a non-integer exponent"),
-        ("(pow x (/ 4 2))", "pow with a non-literal exponent"),
+        ("(tgamma x)", "tgamma"),
+        ("(+ x LN2)", "LN2"),
         ("(pow x 1e10)", "pow with an exponent beyond 32 bits"),
         ("(! :precision binary32 (+ x y))", "precision binary32"),
         ("(! :precision real (+ x y))", "precision real"),
@@ -340,7 +374,7 @@ fn unsupported_operations_mark_only_their_benchmark() {
         unsupported_op("(FPCore ((! :precision binary32 x)) (+ x 1))"),
         "precision binary32"
     );
-    assert_eq!(unsupported_op("(FPCore (x) :pre (< (exp x) 2) x)"), "exp");
+    assert_eq!(unsupported_op("(FPCore (x) :pre (< (erf x) 2) x)"), "erf");
     // An annotated binary64 argument is fine.
     let p = program("(FPCore ((! :precision binary64 x) y) :round nearestEven (+ x y))");
     assert_eq!(p.inputs, vec!["x", "y"]);
