@@ -416,15 +416,15 @@ proptest! {
     }
 }
 
-/// README.md shows `chiang.conic_table`'s own table verbatim.
+/// docs/papers/chiang.md shows `chiang.conic_table`'s own table verbatim.
 #[test]
-fn readme_table_is_the_checks_output() {
+fn paper_page_table_is_the_checks_output() {
     let readme =
-        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/papers/chiang.md")).unwrap();
     let table = conic_table_markdown().unwrap();
     assert!(
         readme.contains(table.trim()),
-        "README.md's Table 1 is stale; the check prints:\n{table}"
+        "docs/papers/chiang.md's Table 1 is stale; the check prints:\n{table}"
     );
     assert!(readme.contains("**Result: `holds`.**"));
 }

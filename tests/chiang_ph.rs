@@ -206,19 +206,19 @@ fn the_offsets_table_has_the_exact_values() {
         .starts_with("3 of 12 printed values are not the exact value correctly rounded"));
 }
 
-/// README.md shows the PH offsets' tables as the checks print them, verbatim.
+/// docs/papers/chiang.md shows the PH offsets' tables as the checks print them, verbatim.
 #[test]
-fn readme_tables_are_the_checks_output() {
+fn paper_page_tables_are_the_checks_output() {
     let readme =
-        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/papers/chiang.md")).unwrap();
     let offsets = ph_offsets_markdown(&ph_offsets_rows().unwrap());
     assert!(
         readme.contains(offsets.trim()),
-        "README.md's PH offsets table is stale; the check prints:\n{offsets}"
+        "docs/papers/chiang.md's PH offsets table is stale; the check prints:\n{offsets}"
     );
     let weights = weights_markdown().unwrap();
     assert!(
         readme.contains(weights.trim()),
-        "README.md's PH weights table is stale; the check prints:\n{weights}"
+        "docs/papers/chiang.md's PH weights table is stale; the check prints:\n{weights}"
     );
 }

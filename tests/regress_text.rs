@@ -525,9 +525,9 @@ fn bad_formulas_and_domains_are_one_line_errors() {
     );
 }
 
-/// The README's FPCore table is this run's output, verbatim.
+/// The FPCore table of docs/regress.md is this run's output, verbatim.
 #[test]
-fn readme_fpcore_table_is_measured() {
+fn guide_fpcore_table_is_measured() {
     let o = exactcheck(&[
         "regress",
         "--fpcore",
@@ -539,18 +539,18 @@ fn readme_fpcore_table_is_measured() {
     let out = String::from_utf8_lossy(&o.stdout);
     let table: String = out.lines().take(7).map(|l| format!("{l}\n")).collect();
     let readme =
-        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).expect("README");
-    assert!(readme.contains(&table), "README lacks\n{table}");
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/regress.md")).expect("docs/regress.md");
+    assert!(readme.contains(&table), "docs/regress.md lacks\n{table}");
 }
 
-/// The README's program examples are the files the tests run, verbatim.
+/// The program examples of docs/regress.md are the files the tests run, verbatim.
 #[test]
-fn readme_program_examples_are_the_tested_files() {
+fn guide_program_examples_are_the_tested_files() {
     let readme =
-        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).expect("README");
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/regress.md")).expect("docs/regress.md");
     for file in ["cancel.c", "cancel.py"] {
         let text = std::fs::read_to_string(data(file)).expect("example");
-        assert!(readme.contains(&text), "README lacks {file} verbatim");
+        assert!(readme.contains(&text), "docs/regress.md lacks {file} verbatim");
     }
 }
 

@@ -451,14 +451,14 @@ fn timeout_ends_a_long_run_with_one_line_and_leaves_a_short_one_alone() {
     }
 }
 
-/// The README's table of limits lists every limit of the registry with its default (so the
+/// The table of limits in docs/limits.md lists every limit of the registry with its default (so the
 /// documentation cannot drift from the code).
 #[test]
-fn the_readme_lists_every_limit_with_its_default() {
-    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md"))
-        .expect("read README.md");
-    let section = readme
-        .split("### Resource limits")
+fn the_limits_page_lists_every_limit_with_its_default() {
+    let page = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/limits.md"))
+        .expect("read docs/limits.md");
+    let section = page
+        .split("## Resource limits")
         .nth(1)
         .expect("a Resource limits section");
     let rows: Vec<(String, u64)> = section

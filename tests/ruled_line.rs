@@ -266,7 +266,7 @@ fn bad_input_is_one_line_naming_the_field() {
     );
 }
 
-/// The committed example answer (tests/solve_golden/ruled_line_two_points.*), also in the README.
+/// The committed example answer (tests/solve_golden/ruled_line_two_points.*), also in docs/solve.md.
 #[test]
 fn golden_answer_is_unchanged() {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/solve_golden");
