@@ -27,7 +27,6 @@ from fractions import Fraction
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 ANCHORS = os.path.join(ROOT, "scripts", "anchors")
-SHARED = os.path.join(ROOT, "..", "shared", "anchors")
 BIN = os.path.join(ROOT, "target", "release", "exactcheck")
 
 p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -56,15 +55,6 @@ if not os.access(BIN, os.X_OK):
     fail(f"{BIN} is missing: run `cargo build --release` (scripts/compare.sh does)")
 if not os.access(args.python, os.X_OK):
     fail(f"{args.python} is missing: run scripts/compare.sh (it creates the virtual environment)")
-
-# The vendored anchors must be the shared ones where those are present.
-if os.path.isdir(SHARED):
-    for name in sorted(os.listdir(SHARED)):
-        if name.endswith(".py"):
-            mine = os.path.join(ANCHORS, name)
-            if not os.path.exists(mine) or open(mine).read() != open(os.path.join(SHARED, name)).read():
-                print(f"compare: warning: scripts/anchors/{name} differs from ../shared/anchors/{name}",
-                      file=sys.stderr)
 
 
 class TimedOut(Exception):

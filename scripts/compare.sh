@@ -3,7 +3,7 @@
 # run: builds exactcheck (release), creates the anchors' virtual environment `.venv-anchors` from
 # scripts/anchors/requirements.txt (PyPI; once), then runs scripts/compare.py, which checks that
 # every tool gives the same check values and prints the tables of medians and ratios and the
-# targets of issue 14. Arguments go to compare.py (e.g. `--quick`, `--only W2,W3`, `--reps 3`,
+# speed targets. Arguments go to compare.py (e.g. `--quick`, `--only W2,W3`, `--reps 3`,
 # `--markdown table.md`). Takes about half an hour in full (SymPy's slow sizes dominate); not
 # part of CI.
 set -euo pipefail

@@ -133,8 +133,11 @@ fn example4_exact_weights_are_the_radical_forms() {
 fn paper_page_table_is_the_checks_output() {
     let rows = example4_table().unwrap();
     let (verdict, _) = verdict_of("chiang.example4");
-    let readme =
-        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/papers/chiang.md")).unwrap();
+    let readme = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/docs/papers/chiang.md"
+    ))
+    .unwrap();
     let table = example4_markdown(&rows);
     assert!(
         readme.contains(&table),

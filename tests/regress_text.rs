@@ -538,19 +538,22 @@ fn guide_fpcore_table_is_measured() {
     assert!(o.status.success());
     let out = String::from_utf8_lossy(&o.stdout);
     let table: String = out.lines().take(7).map(|l| format!("{l}\n")).collect();
-    let readme =
-        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/regress.md")).expect("docs/regress.md");
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/regress.md"))
+        .expect("docs/regress.md");
     assert!(readme.contains(&table), "docs/regress.md lacks\n{table}");
 }
 
 /// The program examples of docs/regress.md are the files the tests run, verbatim.
 #[test]
 fn guide_program_examples_are_the_tested_files() {
-    let readme =
-        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/regress.md")).expect("docs/regress.md");
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/regress.md"))
+        .expect("docs/regress.md");
     for file in ["cancel.c", "cancel.py"] {
         let text = std::fs::read_to_string(data(file)).expect("example");
-        assert!(readme.contains(&text), "docs/regress.md lacks {file} verbatim");
+        assert!(
+            readme.contains(&text),
+            "docs/regress.md lacks {file} verbatim"
+        );
     }
 }
 

@@ -310,7 +310,7 @@ fn the_figure_eight_reports_its_touching_point() {
 }
 
 /// `docs/schema/<kind>.json` is what the types generate (regenerate with
-/// `UPDATE_SCHEMAS=1 cargo test --test solve`); every kind of DESIGN.md has one.
+/// `UPDATE_SCHEMAS=1 cargo test --test solve`); every kind of `solve` has one.
 #[test]
 fn committed_schemas_are_current() {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/schema");

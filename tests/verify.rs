@@ -143,7 +143,7 @@ fn every_implemented_spec_id_is_in_the_catalogue() {
     for id in SPEC_IDS {
         assert!(ids.contains(&id), "{id} missing");
     }
-    // Every juttler/spaeth id is a SPEC id or a documented extra.
+    // Every juttler/spaeth id is an id of the papers' claim list or a documented extra.
     for id in &ids {
         if id.starts_with("juttler.") || id.starts_with("spaeth.") {
             assert!(

@@ -1,4 +1,4 @@
-//! The geometric properties of the net projection theta and of delta (seed 002, the list after
+//! The geometric properties of the net projection theta and of delta (the list after
 //! Satz 5, and Satz 7): preimages of circles and lines of P, images of lines, the
 //! projecting line of a plane, and Miquel's configuration of a biquadratic patch on K.
 //!
