@@ -5,6 +5,8 @@
 //! When one is missing the test prints why and passes, unless `EXACTCHECK_BROWSER=1` (as
 //! `.ci/run` sets after installing them): then a missing piece fails the test.
 
+mod common;
+
 use exactcheck::claims::{catalogue, Verdict};
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -42,7 +44,7 @@ fn the_report_renders_in_chromium() {
     let work = Path::new(env!("CARGO_TARGET_TMPDIR")).join("browser");
     let _ = std::fs::remove_dir_all(&work);
     std::fs::create_dir_all(&work).unwrap();
-    let exe = env!("CARGO_BIN_EXE_exactcheck");
+    let exe = common::EXACTCHECK;
 
     let out_dir = work.join("out");
     let report = Command::new(exe)

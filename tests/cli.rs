@@ -6,7 +6,7 @@ use common::solve_stdin;
 use std::process::{Command, Output};
 
 fn exactcheck(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+    common::exactcheck()
         .args(args)
         .output()
         .expect("the binary runs")

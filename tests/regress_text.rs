@@ -1,12 +1,14 @@
 //! `regress --formula`, `--fpcore`, `--program`, `--shard` and `merge`, end to end through the
 //! binary: the acceptance cases at test size.
 
+mod common;
+
 use serde_json::Value;
 use std::path::PathBuf;
 use std::process::{Command, Output};
 
 fn exactcheck(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+    common::exactcheck()
         .args(args)
         .output()
         .expect("the binary runs")
@@ -434,7 +436,7 @@ fn timeout_and_sigterm_stop_what_the_program_started() {
     assert_dies(read_pid(&pid_file), "--timeout");
 
     let args = program_args(&hanging_parent(&pid_file), &["--program-timeout", "600"]);
-    let mut child = Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+    let mut child = common::exactcheck()
         .args(&args)
         .stdout(std::process::Stdio::null())
         .stderr(std::process::Stdio::null())

@@ -171,7 +171,7 @@ fn plot_of_a_conic_beyond_f64s_range_is_refused() {
             format!(r#"{{"kind":"conic","normal":{normal},"point":[1,1,1]}}"#),
         )
         .expect("write");
-        let o = Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+        let o = common::exactcheck()
             .arg("plot")
             .arg(&input)
             .arg("-o")

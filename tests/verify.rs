@@ -1,5 +1,7 @@
 //! The claim catalogue reproduces its verdicts, and `verify` / `prove` keep their CLI contracts.
 
+mod common;
+
 use exactcheck::claims::{verify, Verdict};
 use std::process::Command;
 
@@ -159,7 +161,7 @@ fn every_implemented_spec_id_is_in_the_catalogue() {
 }
 
 fn exactcheck(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+    common::exactcheck()
         .args(args)
         .output()
         .expect("runs")
@@ -343,7 +345,7 @@ fn prove_random_mod_p() {
 }
 
 fn exactcheck_on_threads(threads: &str, args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+    common::exactcheck()
         .args(args)
         .env("RAYON_NUM_THREADS", threads)
         .output()

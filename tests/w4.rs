@@ -4,6 +4,8 @@
 //! check values (root counts) of the comparison sizes; the `bench w4` command's contract.
 //! No test measures time.
 
+mod common;
+
 use exactcheck_core::Ring;
 use exactcheck_exact::univariate::w4::{self, Family};
 use exactcheck_exact::univariate::{
@@ -231,7 +233,7 @@ proptest! {
 // ------------------------------------------------------------------------------ the command
 
 fn exactcheck(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+    common::exactcheck()
         .args(args)
         .output()
         .expect("the binary runs")

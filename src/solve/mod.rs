@@ -108,7 +108,7 @@ fn answered<K: Kind>() -> KindEntry {
     }
 }
 
-/// The kinds of `solve`, in the order docs/solve.md lists them (every one is answered).
+/// The kinds of `solve`, in their fixed order (every one is answered).
 pub fn kinds() -> [KindEntry; 7] {
     [
         answered::<sphere_interpolation::SphereInterpolation>(),

@@ -9,6 +9,9 @@
 //! feeds its standard input. The working directory is the repository root, so that the paths in
 //! the cases are relative to it.
 
+#[path = "exe.rs"]
+mod exe;
+
 #![allow(dead_code)]
 
 use std::ffi::OsString;
@@ -97,7 +100,7 @@ pub fn run(args: &[OsString], stdin: Option<&[u8]>) -> Run {
 
 /// [`run`] with environment variables set for the run.
 pub fn run_with_env(args: &[OsString], stdin: Option<&[u8]>, env: &[(String, String)]) -> Run {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+    let mut child = exe::exactcheck()
         .args(args)
         .envs(env.iter().map(|(k, v)| (k, v)))
         .current_dir(root())

@@ -221,33 +221,3 @@ mod tests {
         expect(plane_lines(), Verdict::Proved);
     }
 }
-
-#[cfg(test)]
-mod print {
-    use super::*;
-
-    /// `cargo test --release print_outcomes -- --ignored --nocapture` shows what the checks find.
-    #[test]
-    #[ignore]
-    fn print_outcomes() {
-        type Check = fn() -> Result<Outcome, String>;
-        let checks: [(&str, Check); 5] = [
-            ("juttler.circle_preimage", circle_preimage),
-            ("juttler.line_preimage", line_preimage),
-            ("juttler.line_image", line_image),
-            ("juttler.plane_lines", plane_lines),
-            ("juttler.satz7", satz7),
-        ];
-        for (id, f) in checks {
-            let start = std::time::Instant::now();
-            let o = f().expect("runs");
-            println!(
-                "{id}: {} [{:.3} s]\n  method: {}\n  evidence: {}\n",
-                o.verdict,
-                start.elapsed().as_secs_f64(),
-                o.method,
-                o.evidence
-            );
-        }
-    }
-}
