@@ -2,7 +2,7 @@
 //! bisection against Bernstein–Descartes subdivision, at degrees 10, 20 and 40, on products of
 //! `(t - k/(d+1))` (d roots in [0, 1], close together at degree 40) and on seeded random integer
 //! polynomials (coefficients in [-100, 100], few roots in [0, 1]). The faster method is the
-//! default of `UPoly::unit_roots`; the measured table is in README_roots.md.
+//! default of `UPoly::unit_roots`; the measured table is in docs/benchmarks.md.
 //!
 //! The group `w4` times W4 at the six comparison sizes (`w4::solve`: all real roots
 //! isolated by Descartes' rule and refined to width 2^-53), each root count asserted first.

@@ -847,7 +847,7 @@ pub fn check_table(table: &[PrintedColumn]) -> Result<Outcome, String> {
         evidence, erratum: None, })
 }
 
-/// Table 1 as Markdown for the README: printed | derived | judgement, with the computed notes.
+/// Table 1 as Markdown for docs/papers/chiang.md: printed | derived | judgement, with the computed notes.
 ///
 /// # Errors
 /// Data errors of [`table_rows`].

@@ -18,7 +18,7 @@
 //! bisection point or an end point hits it, not necessarily whenever it is rational (unlike
 //! [`UPoly::isolate_roots`], which tests every interval for a rational root; refine with
 //! [`UPoly::refine`] if needed). The default is the faster of the two as measured by the
-//! criterion bench `benches/roots.rs` (table in the README): Sturm. Bernstein–Descartes over
+//! criterion bench `benches/roots.rs` (table in docs/benchmarks.md): Sturm. Bernstein–Descartes over
 //! `Rational` is faster on random polynomials with few roots in `[0, 1]` but up to 3x slower on
 //! many clustered roots (degree 40), where the denominators of the halved de Casteljau
 //! coefficients grow by `2^n` per level.

@@ -821,7 +821,7 @@ fn reading(r: &OffsetRow) -> String {
     }
 }
 
-/// The offsets' table as Markdown (for the README).
+/// The offsets' table as Markdown (for docs/papers/chiang.md).
 pub fn ph_offsets_markdown(rows: &[OffsetRow]) -> String {
     let mut s = String::from(
         "| r | value | printed | exact | exact decimal | deviation (printed - exact) | correctly rounded? |\n| --- | --- | --- | --- | --- | --- | --- |\n",
