@@ -44,10 +44,9 @@ fn the_report_renders_in_chromium() {
     let work = Path::new(env!("CARGO_TARGET_TMPDIR")).join("browser");
     let _ = std::fs::remove_dir_all(&work);
     std::fs::create_dir_all(&work).unwrap();
-    let exe = common::EXACTCHECK;
 
     let out_dir = work.join("out");
-    let report = Command::new(exe)
+    let report = common::exactcheck()
         .args(["report", "-o"])
         .arg(&out_dir)
         .args(["--samples", "200", "--quiet"])
@@ -60,7 +59,7 @@ fn the_report_renders_in_chromium() {
     );
 
     let latex = work.join("verify.tex");
-    let verify = Command::new(exe)
+    let verify = common::exactcheck()
         .args(["verify", "--latex"])
         .output()
         .unwrap();

@@ -9,7 +9,7 @@ use exactcheck::claims::{self, Verdict};
 use exactcheck_exact::Rational;
 use std::collections::HashMap;
 use std::path::Path;
-use std::process::{Command, Output};
+use std::process::Output;
 
 fn root() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))

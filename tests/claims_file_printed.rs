@@ -8,7 +8,6 @@ mod common;
 use exactcheck::claimfile;
 use exactcheck::claims::{Outcome, Verdict};
 use std::path::Path;
-use std::process::Command;
 use std::time::{Duration, Instant};
 
 const FILE: &str = "tests/claims_file/printed_long.toml";

@@ -3,7 +3,7 @@
 mod common;
 
 use common::solve_stdin;
-use std::process::{Command, Output};
+use std::process::Output;
 
 fn exactcheck(args: &[&str]) -> Output {
     common::exactcheck()

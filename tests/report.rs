@@ -5,7 +5,7 @@ mod common;
 
 use exactcheck::claims::{catalogue, Verdict};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::process::Output;
 
 fn exactcheck(args: &[&str]) -> Output {
     common::exactcheck()

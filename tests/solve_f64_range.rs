@@ -10,7 +10,6 @@ use common::{has_null_number, solve_stdin};
 use exactcheck::solve::{solve, Mode};
 use proptest::prelude::*;
 use serde_json::{json, Value};
-use std::process::Command;
 
 /// The exact answer (exit status 0, valid JSON, every `null` number listed).
 fn exact_answer(problem: &str) -> Value {

@@ -3,7 +3,6 @@
 mod common;
 
 use exactcheck::claims::{verify, Verdict};
-use std::process::Command;
 
 /// The ids of the claim list that the catalogue implements (all `juttler.*` and `spaeth.*` ids,
 /// `planes.wabis`, the ruled-surface and conic `chiang.*` ids and the PH ids `chiang.offset`,
@@ -161,10 +160,7 @@ fn every_implemented_spec_id_is_in_the_catalogue() {
 }
 
 fn exactcheck(args: &[&str]) -> std::process::Output {
-    common::exactcheck()
-        .args(args)
-        .output()
-        .expect("runs")
+    common::exactcheck().args(args).output().expect("runs")
 }
 
 #[test]

@@ -14,7 +14,7 @@ use exactcheck_exact::univariate::{
 use exactcheck_exact::Rational;
 use num_bigint::BigInt;
 use proptest::prelude::*;
-use std::process::{Command, Output};
+use std::process::Output;
 
 fn rat(n: i64, d: i64) -> Rational {
     Rational::new(n, d).expect("non-zero denominator")

@@ -18,7 +18,8 @@ pub fn assert_golden(path: &str, want: &str) {
     let full = Path::new(env!("CARGO_MANIFEST_DIR")).join(path);
     if blessing() {
         if let Some(dir) = full.parent() {
-            std::fs::create_dir_all(dir).unwrap_or_else(|e| panic!("create {path}'s directory: {e}"));
+            std::fs::create_dir_all(dir)
+                .unwrap_or_else(|e| panic!("create {path}'s directory: {e}"));
         }
         std::fs::write(&full, want).unwrap_or_else(|e| panic!("write {path}: {e}"));
     }

@@ -9,15 +9,15 @@
 //! feeds its standard input. The working directory is the repository root, so that the paths in
 //! the cases are relative to it.
 
+#![allow(dead_code)]
+
 #[path = "exe.rs"]
 mod exe;
-
-#![allow(dead_code)]
 
 use std::ffi::OsString;
 use std::io::{Read, Write};
 use std::path::Path;
-use std::process::{Command, Stdio};
+use std::process::Stdio;
 use std::sync::Mutex;
 use std::thread;
 use std::time::{Duration, Instant};

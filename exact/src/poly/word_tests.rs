@@ -405,4 +405,3 @@ fn cost_model_keeps_binary_powering_for_wide_squares() {
     assert!(!f.recurrence_is_preferred(2));
     assert!(f.recurrence_is_preferred(30));
 }
-
