@@ -4,9 +4,9 @@
 //!
 //! # The table
 //! Table 1 is kept **as printed data** ([`TABLE1`]): the restoration of the OCR'd scan (square
-//! roots restored, signs as printed), plus the plane equations as the OCR reads them (the restoration does
-//! not restore those) and, in [`OCR_READINGS`], the OCR's literal reading of every entry where it
-//! differs from the restoration. Each column is derived exactly over [`Radical`] (`Q(sqrt 2)`
+//! roots restored, signs as printed), plus the plane equations as the OCR reads them (the
+//! restoration leaves those out) and, in [`OCR_READINGS`], the OCR's literal reading of every
+//! entry where it differs from the restoration. Each column is derived exactly over [`Radical`] (`Q(sqrt 2)`
 //! here): the plane through `(1, 1, 1)` with the printed normal `N` is `N . x = N . (1,1,1)`, and
 //! [`ConeSection::new`] cuts the cone's two ruled surfaces with it (Chiang's theorem with apex
 //! `B = 0`: `w_k = N . q_k`, `w_k r_k = -d q_k`). Entries are judged one by one:
@@ -847,7 +847,8 @@ pub fn check_table(table: &[PrintedColumn]) -> Result<Outcome, String> {
         evidence, erratum: None, })
 }
 
-/// Table 1 as Markdown for docs/papers/chiang.md: printed | derived | judgement, with the computed notes.
+/// Table 1 as Markdown for docs/papers/chiang.md: printed | derived | judgement, with the
+/// computed notes.
 ///
 /// # Errors
 /// Data errors of [`table_rows`].
