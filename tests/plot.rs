@@ -1,8 +1,6 @@
 //! End-to-end tests of `exactcheck plot`: the SVG figures of Spaeth's examples and of problem
 //! files, and the one-line errors (exit status 2).
 
-mod common;
-
 use std::path::Path;
 
 #[path = "common/plot_support.rs"]
@@ -417,7 +415,7 @@ fn a_name_in_dev_is_written_in_place() {
     // replaced by a rename (which cannot create a file in /proc and would destroy the link).
     let dir = TempDir::new("devfd");
     let out = dir.path("out.txt");
-    let o = common::exactcheck()
+    let o = plot_support::exe::exactcheck()
         .args(["plot", "spaeth", "--example", "1", "-o", "/dev/fd/1"])
         .stdout(std::fs::File::create(&out).unwrap())
         .output()

@@ -2,7 +2,7 @@
 //! it): a temporary directory, the binary, the SVG well-formedness check and a polyline counter.
 
 #[path = "exe.rs"]
-mod exe;
+pub mod exe;
 #[path = "golden.rs"]
 pub mod golden;
 
