@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Regenerates the seed corpus fuzz/seeds/<target>/ from the repository: the README's `prove`
-# examples, tests/solve_golden, the claims files of examples/ and tests/claims_file, the FPCore
+# Regenerates the seed corpus fuzz/seeds/<target>/ from the repository: the `prove`
+# examples of README.md and docs/prove.md, tests/solve_golden, the claims files of examples/ and tests/claims_file, the FPCore
 # suite of tests/regress, a few hand-made elements of the radical field and output paths. Run
 # from anywhere; the seeds are small and committed, the corpus the fuzzer grows (fuzz/corpus) is
 # not.
@@ -19,8 +19,8 @@ def put(target, data):
     with open(f"fuzz/seeds/{target}/{name}", "wb") as f:
         f.write(data)
 
-# `exactcheck prove ...` lines of the README (with their continuation lines).
-readme = open("README.md").read().replace("\\\n", " ")
+# `exactcheck prove ...` lines of the README and the prove guide (with their continuation lines).
+readme = "".join(open(p).read() for p in ["README.md", "docs/prove.md"]).replace("\\\n", " ")
 expressions = set()
 for line in readme.splitlines():
     line = line.strip()
@@ -49,7 +49,7 @@ for line in readme.splitlines():
     for e in [lhs, rhs] + [w for r in where for w in re.split(r"[=<>]+", r)]:
         if e.strip():
             expressions.add(e.strip())
-# More expressions: every syntax the README lists.
+# More expressions: every syntax the prove guide lists.
 expressions |= {
     "0.1 + 2.5e-3 - 1E+5", "sqrt(2)*sqrt(3) - sqrt(6)", "(x+1)^3", "2x y^2", "-x^2",
     "-(x^2)", "x/3 - 1/(2*3)", "(sqrt(2)+sqrt(3))^2/5", "((a+b)*(a-b))^2", "1e5",

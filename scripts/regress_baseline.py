@@ -3,7 +3,7 @@
 
 Usage: python3 scripts/regress_baseline.py [--n N] [--seed S] [--reps K] [--tools LIST] [--json]
 
-Evaluates the README's throughput formula
+Evaluates the throughput formula of docs/regress.md
 
     F(x, y, z, w) = ((x + y) * (z - w) - x * z / (y + 2)) * (w + 1) + x*y
 

@@ -60,7 +60,7 @@ pub enum Command {
     #[command(after_help = PROVE_EXAMPLES)]
     Prove(crate::prove_cmd::ProveArgs),
     /// Solve one problem given in JSON (a file, or `-` / nothing for standard input) and print
-    /// the answer in JSON. Kinds and fields: see the README.
+    /// the answer in JSON. Kinds and fields: see docs/solve.md.
     #[command(after_help = SOLVE_EXAMPLES)]
     Solve {
         /// The problem file; `-` or absent: standard input.

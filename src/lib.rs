@@ -27,3 +27,14 @@ pub use error::Error;
 #[cfg(doctest)]
 #[doc = include_str!("../README.md")]
 pub struct ReadmeDoctests;
+
+/// The Rust examples of the library guide, compiled and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../docs/library.md")]
+pub struct LibraryGuideDoctests;
+
+/// The Rust example of the `regress` guide (a `Formula` of your own), compiled and run as a
+/// doctest.
+#[cfg(doctest)]
+#[doc = include_str!("../docs/regress.md")]
+pub struct RegressGuideDoctests;

@@ -1,4 +1,4 @@
-//! `exactcheck`: the command-line tool. See the README for the commands.
+//! `exactcheck`: the command-line tool. See the README and docs/ for the commands.
 
 use std::process::ExitCode;
 

@@ -11,7 +11,7 @@ use std::process::ExitCode;
 #[command(after_help = "Examples:
   exactcheck verify                          the built-in catalogue
   exactcheck verify --only spaeth --json     Spaeth's claims as JSON
-  exactcheck verify examples/spaeth.toml     the claims of a file (TOML or JSON; see the README)
+  exactcheck verify examples/spaeth.toml     the claims of a file (TOML or JSON; see docs/verify.md)
 
 Exit status: 0 when every claim has its expected verdict, 1 otherwise, 2 for a bad file or argument
 (a claims file with a claim that cannot be built or decided: that claim's verdict is `error`, the

@@ -5,6 +5,8 @@
 //! When one is missing the test prints why and passes, unless `EXACTCHECK_BROWSER=1` (as
 //! `.ci/run` sets after installing them): then a missing piece fails the test.
 
+mod common;
+
 use exactcheck::claims::{catalogue, Verdict};
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -42,10 +44,9 @@ fn the_report_renders_in_chromium() {
     let work = Path::new(env!("CARGO_TARGET_TMPDIR")).join("browser");
     let _ = std::fs::remove_dir_all(&work);
     std::fs::create_dir_all(&work).unwrap();
-    let exe = env!("CARGO_BIN_EXE_exactcheck");
 
     let out_dir = work.join("out");
-    let report = Command::new(exe)
+    let report = common::exactcheck()
         .args(["report", "-o"])
         .arg(&out_dir)
         .args(["--samples", "200", "--quiet"])
@@ -58,7 +59,7 @@ fn the_report_renders_in_chromium() {
     );
 
     let latex = work.join("verify.tex");
-    let verify = Command::new(exe)
+    let verify = common::exactcheck()
         .args(["verify", "--latex"])
         .output()
         .unwrap();

@@ -1,4 +1,4 @@
-//! The `chiang.*` claims: verdicts, planted misprints, Example 4's exact values, and the README
+//! The `chiang.*` claims: verdicts, planted misprints, Example 4's exact values, and the paper page
 //! table (generated from the check's own output).
 
 use exactcheck::claims::chiang::{
@@ -128,17 +128,20 @@ fn example4_exact_weights_are_the_radical_forms() {
         .any(|h| h.starts_with("the exact radical form with sqrt 2 = 1.41")));
 }
 
-/// README.md's Example 4 section shows the check's own output: its verdict and its table, verbatim.
+/// docs/papers/chiang.md's Example 4 section shows the check's own output: its verdict and its table, verbatim.
 #[test]
-fn readme_table_is_the_checks_output() {
+fn paper_page_table_is_the_checks_output() {
     let rows = example4_table().unwrap();
     let (verdict, _) = verdict_of("chiang.example4");
-    let readme =
-        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
+    let readme = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/docs/papers/chiang.md"
+    ))
+    .unwrap();
     let table = example4_markdown(&rows);
     assert!(
         readme.contains(&table),
-        "README.md's Example 4 table is stale; the check prints:\n{table}"
+        "docs/papers/chiang.md's Example 4 table is stale; the check prints:\n{table}"
     );
     assert!(readme.contains(&format!("`chiang.example4` (verdict: **{verdict}**)")));
 }

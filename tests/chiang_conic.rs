@@ -26,7 +26,7 @@ fn verdict_of(id: &str) -> (Verdict, String) {
 }
 
 /// Table 1 with the two OCR'd plane equations that miss (1, 1, 1) replaced by the planes through
-/// (1, 1, 1): every other entry is as SPEC restores it.
+/// (1, 1, 1): every other entry is as restored.
 fn table_with_planes_through_111() -> [PrintedColumn; 4] {
     let mut t = TABLE1;
     t[1].plane.text = "x + y + 3z = 5";
@@ -48,13 +48,13 @@ fn row<'a>(
 
 #[test]
 fn conic_table_holds_and_reports_the_two_ocr_plane_equations() {
-    // Every entry SPEC restores is right; the OCR's plane equations (not restored by SPEC) are
+    // Every restored entry is right; the OCR's plane equations (not restored) are
     // reported as misprints-if-printed, without deciding the verdict.
     let (v, e) = verdict_of("chiang.conic_table");
     assert_eq!(v, Verdict::Holds);
     assert!(e.contains("4 columns x 15 judged entries"), "{e}");
     assert!(
-        e.contains("58 equal, none of the entries SPEC restores different"),
+        e.contains("58 equal, none of the restored entries different"),
         "{e}"
     );
     assert!(e.contains("2 of 4 miss the plane through (1,1,1)"), "{e}");
@@ -66,9 +66,11 @@ fn conic_table_holds_and_reports_the_two_ocr_plane_equations() {
         e.contains("parabola plane: printed x + y + sqrt2 z = 2 - sqrt2, derived x + y + sqrt(2) z = 2 + sqrt(2)"),
         "{e}"
     );
-    // The OCR's lost square roots: the derivation sides with SPEC (hyperbola w1- is -2 in the OCR).
+    // The OCR's lost square roots: the derivation sides with the restoration (hyperbola w1- is -2 in the OCR).
     assert!(
-        e.contains("hyperbola w1-: OCR `2−` literally `-2` = -2, the derivation supports SPEC's restoration"),
+        e.contains(
+            "hyperbola w1-: OCR `2−` literally `-2` = -2, the derivation supports the restoration"
+        ),
         "{e}"
     );
     // The poles of C+ are derived and reported (none in [0, 1]).
@@ -82,7 +84,7 @@ fn the_table_with_planes_through_111_holds_entry_by_entry() {
     assert_eq!(o.verdict, Verdict::Holds, "{}", o.evidence);
     assert!(
         o.evidence
-            .contains("60 equal, none of the entries SPEC restores different"),
+            .contains("60 equal, none of the restored entries different"),
         "{}",
         o.evidence
     );
@@ -416,15 +418,18 @@ proptest! {
     }
 }
 
-/// README.md shows `chiang.conic_table`'s own table verbatim.
+/// docs/papers/chiang.md shows `chiang.conic_table`'s own table verbatim.
 #[test]
-fn readme_table_is_the_checks_output() {
-    let readme =
-        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
+fn paper_page_table_is_the_checks_output() {
+    let readme = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/docs/papers/chiang.md"
+    ))
+    .unwrap();
     let table = conic_table_markdown().unwrap();
     assert!(
         readme.contains(table.trim()),
-        "README.md's Table 1 is stale; the check prints:\n{table}"
+        "docs/papers/chiang.md's Table 1 is stale; the check prints:\n{table}"
     );
     assert!(readme.contains("**Result: `holds`.**"));
 }

@@ -1,4 +1,4 @@
-//! The PH-curve claims of Chiang (seed 004): each verdict, and the checks can fail — a planted
+//! The PH-curve claims of Chiang: each verdict, and the checks can fail — a planted
 //! misprint in the printed control points, a planted non-PH hodograph in the offset proof.
 
 use exactcheck::claims::chiang_ph::{
@@ -121,7 +121,7 @@ fn the_printed_normals_lost_their_minus_signs() {
     let o = ph_normals_with(&PRINTED_NORMALS).unwrap();
     assert_eq!(o.verdict, Verdict::Fails);
     assert!(o.evidence.contains(
-        "Left field (-Y', X', sigma) (the SPEC's V): exactly one of the 2^8 sign patterns gives it: a minus sign on q0.x, q1.x, q1.y, q2.y"
+        "Left field (-Y', X', sigma) (the claim's V): exactly one of the 2^8 sign patterns gives it: a minus sign on q0.x, q1.x, q1.y, q2.y"
     ), "{}", o.evidence);
     assert!(o.evidence.contains(
         "Right field (Y', -X', sigma): exactly one of the 2^8 sign patterns gives it: a minus sign on q0.y, q2.x"
@@ -206,19 +206,22 @@ fn the_offsets_table_has_the_exact_values() {
         .starts_with("3 of 12 printed values are not the exact value correctly rounded"));
 }
 
-/// README.md shows the PH offsets' tables as the checks print them, verbatim.
+/// docs/papers/chiang.md shows the PH offsets' tables as the checks print them, verbatim.
 #[test]
-fn readme_tables_are_the_checks_output() {
-    let readme =
-        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
+fn paper_page_tables_are_the_checks_output() {
+    let readme = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/docs/papers/chiang.md"
+    ))
+    .unwrap();
     let offsets = ph_offsets_markdown(&ph_offsets_rows().unwrap());
     assert!(
         readme.contains(offsets.trim()),
-        "README.md's PH offsets table is stale; the check prints:\n{offsets}"
+        "docs/papers/chiang.md's PH offsets table is stale; the check prints:\n{offsets}"
     );
     let weights = weights_markdown().unwrap();
     assert!(
         readme.contains(weights.trim()),
-        "README.md's PH weights table is stale; the check prints:\n{weights}"
+        "docs/papers/chiang.md's PH weights table is stale; the check prints:\n{weights}"
     );
 }

@@ -2,19 +2,21 @@
 //! catalogue's verdicts, a misprinted copy fails with a counter-example and an erratum, and
 //! every class of bad file is one line naming the file, the line and the key (exit status 2).
 
+mod common;
+
 use exactcheck::claimfile;
 use exactcheck::claims::{self, Verdict};
 use exactcheck_exact::Rational;
 use std::collections::HashMap;
 use std::path::Path;
-use std::process::{Command, Output};
+use std::process::Output;
 
 fn root() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
 }
 
 fn exactcheck(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+    common::exactcheck()
         .args(args)
         .current_dir(root())
         .output()

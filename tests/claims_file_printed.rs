@@ -3,10 +3,11 @@
 //! a wrong digit that held, a correct rounding that failed, garbage evidence, a run that never
 //! finished and a panic.
 
+mod common;
+
 use exactcheck::claimfile;
 use exactcheck::claims::{Outcome, Verdict};
 use std::path::Path;
-use std::process::Command;
 use std::time::{Duration, Instant};
 
 const FILE: &str = "tests/claims_file/printed_long.toml";
@@ -115,7 +116,7 @@ fn errata_show_the_decimals_as_printed() {
 
 #[test]
 fn the_command_line_reports_the_long_printed_file_as_expected() {
-    let out = Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+    let out = common::exactcheck()
         .args(["verify", FILE, "--json"])
         .current_dir(root())
         .output()

@@ -3,10 +3,10 @@
 mod common;
 
 use common::solve_stdin;
-use std::process::{Command, Output};
+use std::process::Output;
 
 fn exactcheck(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+    common::exactcheck()
         .args(args)
         .output()
         .expect("the binary runs")

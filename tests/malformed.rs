@@ -11,6 +11,8 @@
 //! deliberate change); the `.expect` files of the other cases (hand-written: the line wanted after
 //! the fix) are kept, and every other check still applies.
 
+#[path = "common/golden.rs"]
+mod golden;
 #[path = "common/timed.rs"]
 mod timed;
 
@@ -353,7 +355,7 @@ fn every_malformed_input_is_refused_with_one_line_and_status_2() {
     let cases = corpus();
     let known = known_failures();
     let limits = limit_cases();
-    let bless = std::env::var_os("EXACTCHECK_BLESS").is_some_and(|v| v == "1");
+    let bless = golden::blessing();
     let names: BTreeSet<&str> = cases.iter().map(|c| c.name.as_str()).collect();
     let mut problems = Vec::new();
     for (file, listed) in [("KNOWN_FAILURES", &known), ("LIMITS", &limits)] {

@@ -415,7 +415,7 @@ fn a_name_in_dev_is_written_in_place() {
     // replaced by a rename (which cannot create a file in /proc and would destroy the link).
     let dir = TempDir::new("devfd");
     let out = dir.path("out.txt");
-    let o = std::process::Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+    let o = plot_support::exe::exactcheck()
         .args(["plot", "spaeth", "--example", "1", "-o", "/dev/fd/1"])
         .stdout(std::fs::File::create(&out).unwrap())
         .output()

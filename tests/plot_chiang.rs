@@ -65,14 +65,8 @@ fn committed_figure_is_current() {
         stderr.starts_with("wrote standard output: Chiang Example 4"),
         "{stderr}"
     );
-    let committed = std::fs::read_to_string(
-        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/chiang_example4.svg"),
-    )
-    .expect("docs/chiang_example4.svg is committed");
-    assert!(
-        committed == svg,
-        "docs/chiang_example4.svg is stale: regenerate it with `exactcheck plot chiang --example 4 -o docs/chiang_example4.svg`"
-    );
+    // Regenerate with `exactcheck plot chiang --example 4 -o docs/chiang_example4.svg` or EXACTCHECK_BLESS=1.
+    plot_support::golden::assert_golden("docs/chiang_example4.svg", &svg);
 }
 
 #[test]

@@ -126,14 +126,8 @@ fn committed_figure_is_current() {
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let svg = String::from_utf8(o.stdout).expect("utf-8 SVG");
     check_svg(&svg);
-    let committed = std::fs::read_to_string(
-        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/conics.svg"),
-    )
-    .expect("docs/conics.svg is committed");
-    assert!(
-        committed == svg,
-        "docs/conics.svg is stale: regenerate it with `exactcheck plot conics -o docs/conics.svg`"
-    );
+    // Regenerate with `exactcheck plot conics -o docs/conics.svg` or EXACTCHECK_BLESS=1.
+    plot_support::golden::assert_golden("docs/conics.svg", &svg);
 }
 
 #[test]

@@ -1,12 +1,14 @@
 //! `regress --formula`, `--fpcore`, `--program`, `--shard` and `merge`, end to end through the
 //! binary: the acceptance cases at test size.
 
+mod common;
+
 use serde_json::Value;
 use std::path::PathBuf;
 use std::process::{Command, Output};
 
 fn exactcheck(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+    common::exactcheck()
         .args(args)
         .output()
         .expect("the binary runs")
@@ -434,7 +436,7 @@ fn timeout_and_sigterm_stop_what_the_program_started() {
     assert_dies(read_pid(&pid_file), "--timeout");
 
     let args = program_args(&hanging_parent(&pid_file), &["--program-timeout", "600"]);
-    let mut child = Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+    let mut child = common::exactcheck()
         .args(&args)
         .stdout(std::process::Stdio::null())
         .stderr(std::process::Stdio::null())
@@ -525,9 +527,9 @@ fn bad_formulas_and_domains_are_one_line_errors() {
     );
 }
 
-/// The README's FPCore table is this run's output, verbatim.
+/// The FPCore table of docs/regress.md is this run's output, verbatim.
 #[test]
-fn readme_fpcore_table_is_measured() {
+fn guide_fpcore_table_is_measured() {
     let o = exactcheck(&[
         "regress",
         "--fpcore",
@@ -538,19 +540,22 @@ fn readme_fpcore_table_is_measured() {
     assert!(o.status.success());
     let out = String::from_utf8_lossy(&o.stdout);
     let table: String = out.lines().take(7).map(|l| format!("{l}\n")).collect();
-    let readme =
-        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).expect("README");
-    assert!(readme.contains(&table), "README lacks\n{table}");
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/regress.md"))
+        .expect("docs/regress.md");
+    assert!(readme.contains(&table), "docs/regress.md lacks\n{table}");
 }
 
-/// The README's program examples are the files the tests run, verbatim.
+/// The program examples of docs/regress.md are the files the tests run, verbatim.
 #[test]
-fn readme_program_examples_are_the_tested_files() {
-    let readme =
-        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).expect("README");
+fn guide_program_examples_are_the_tested_files() {
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/regress.md"))
+        .expect("docs/regress.md");
     for file in ["cancel.c", "cancel.py"] {
         let text = std::fs::read_to_string(data(file)).expect("example");
-        assert!(readme.contains(&text), "README lacks {file} verbatim");
+        assert!(
+            readme.contains(&text),
+            "docs/regress.md lacks {file} verbatim"
+        );
     }
 }
 

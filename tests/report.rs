@@ -1,12 +1,14 @@
 //! `exactcheck report -o DIR`: the page of the built-in catalogue, checked as text (the browser
 //! test, tests/browser.rs, checks it rendered).
 
+mod common;
+
 use exactcheck::claims::{catalogue, Verdict};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::process::Output;
 
 fn exactcheck(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+    common::exactcheck()
         .args(args)
         .output()
         .expect("the binary runs")
@@ -249,7 +251,7 @@ fn bad_outputs_and_counts_are_one_line_errors() {
 
 /// Runs `exactcheck ARGS` in the directory `cwd`.
 fn exactcheck_in(cwd: &Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+    common::exactcheck()
         .args(args)
         .current_dir(cwd)
         .output()

@@ -2,13 +2,15 @@
 //! out of range, usage errors, invalid UTF-8 in arguments, `plot -o -`. Each case pins the old
 //! failure (a panic, an abort, minutes of silence, a 3-16 line message, a file named `-`).
 
+mod common;
+
 use std::io::Write as _;
 use std::path::PathBuf;
 use std::process::{Command, Output, Stdio};
 use std::time::{Duration, Instant};
 
 fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+    common::exactcheck()
 }
 
 fn exactcheck(args: &[&str]) -> Output {
@@ -393,7 +395,7 @@ fn with_address_space(kib: u64, args: &[&str]) -> Output {
     Command::new("sh")
         .arg("-c")
         .arg(format!("ulimit -v {kib} && exec \"$0\" \"$@\""))
-        .arg(env!("CARGO_BIN_EXE_exactcheck"))
+        .arg(common::EXACTCHECK)
         .args(args)
         .output()
         .expect("run sh")
@@ -451,14 +453,14 @@ fn timeout_ends_a_long_run_with_one_line_and_leaves_a_short_one_alone() {
     }
 }
 
-/// The README's table of limits lists every limit of the registry with its default (so the
+/// The table of limits in docs/limits.md lists every limit of the registry with its default (so the
 /// documentation cannot drift from the code).
 #[test]
-fn the_readme_lists_every_limit_with_its_default() {
-    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md"))
-        .expect("read README.md");
-    let section = readme
-        .split("### Resource limits")
+fn the_limits_page_lists_every_limit_with_its_default() {
+    let page = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/limits.md"))
+        .expect("read docs/limits.md");
+    let section = page
+        .split("## Resource limits")
         .nth(1)
         .expect("a Resource limits section");
     let rows: Vec<(String, u64)> = section
@@ -562,7 +564,7 @@ fn under_file_size_limit(
         .arg(format!(
             "ulimit -f {blocks} && exec \"$0\" \"$@\"{redirect}"
         ))
-        .arg(env!("CARGO_BIN_EXE_exactcheck"))
+        .arg(common::EXACTCHECK)
         .args(args)
         .current_dir(dir)
         .output()
@@ -691,7 +693,7 @@ fn a_huge_rayon_num_threads_is_refused_with_one_line() {
 #[cfg(target_os = "linux")]
 #[test]
 fn a_thread_pool_that_cannot_start_falls_back_to_one_thread() {
-    let exe = env!("CARGO_BIN_EXE_exactcheck");
+    let exe = common::EXACTCHECK;
     let depth = format!("depth={}", exactcheck::cli::MAX_DEPTH);
     let script = format!(
         "ulimit -v 3000000 && exec \"{exe}\" --limit {depth} regress --formula 'x*x' --samples 600 --quiet"

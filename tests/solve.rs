@@ -5,6 +5,7 @@
 use std::path::{Path, PathBuf};
 mod common;
 
+use common::golden::blessing;
 use common::refused;
 use common::solve_stdin as solve;
 
@@ -12,38 +13,8 @@ fn golden_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/solve_golden")
 }
 
-/// Fields added to the answers after the golden files were saved (each documented in the
-/// README); everything else must be exactly as before.
-const ADDED_FIELDS: [&str; 4] = [
-    "tangent_circle",
-    "self_intersections",
-    "float_agrees",
-    "float_note",
-];
-
-fn without_added(mut v: serde_json::Value) -> serde_json::Value {
-    if let Some(o) = v.as_object_mut() {
-        for k in ADDED_FIELDS {
-            o.shift_remove(k);
-        }
-        if let Some(f) = o.get_mut("float").and_then(|f| f.as_object_mut()) {
-            for k in ADDED_FIELDS {
-                f.shift_remove(k);
-            }
-        }
-        if let Some(list) = o.get_mut("offsets").and_then(|f| f.as_array_mut()) {
-            for f in list.iter_mut().filter_map(|f| f.as_object_mut()) {
-                for k in ADDED_FIELDS {
-                    f.shift_remove(k);
-                }
-            }
-        }
-    }
-    v
-}
-
-/// The answers saved from the hand-walked implementation (tests/solve_golden/NAME.MODE.out)
-/// are reproduced field for field, in the same order.
+/// The committed answers (tests/solve_golden/NAME.MODE.out) are reproduced field for field, in
+/// the same order; `EXACTCHECK_BLESS=1` rewrites them from this run.
 #[test]
 fn answers_of_the_existing_kinds_are_unchanged() {
     let mut checked = 0;
@@ -70,9 +41,11 @@ fn answers_of_the_existing_kinds_are_unchanged() {
             String::from_utf8_lossy(&o.stderr)
         );
         let got: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON answer");
+        if blessing() {
+            std::fs::write(&out, &o.stdout).expect("bless the golden answer");
+        }
         let want: serde_json::Value =
             serde_json::from_slice(&std::fs::read(&out).expect("golden")).expect("golden JSON");
-        let got = without_added(got);
         assert_eq!(
             got.as_object()
                 .map(|o| o.keys().cloned().collect::<Vec<_>>()),
@@ -310,7 +283,7 @@ fn the_figure_eight_reports_its_touching_point() {
 }
 
 /// `docs/schema/<kind>.json` is what the types generate (regenerate with
-/// `UPDATE_SCHEMAS=1 cargo test --test solve`); every kind of DESIGN.md has one.
+/// `EXACTCHECK_BLESS=1 cargo test --release --test solve`); every kind of `solve` has one.
 #[test]
 fn committed_schemas_are_current() {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/schema");
@@ -322,7 +295,7 @@ fn committed_schemas_are_current() {
         assert_eq!(schema["title"], k.name);
         assert_eq!(schema["properties"]["kind"]["const"], k.name);
         assert_eq!(schema["additionalProperties"], false);
-        if std::env::var_os("UPDATE_SCHEMAS").is_some() {
+        if blessing() {
             std::fs::create_dir_all(&dir).unwrap();
             std::fs::write(&path, &want).unwrap();
         }
@@ -330,7 +303,7 @@ fn committed_schemas_are_current() {
         assert_eq!(
             have,
             want,
-            "{} is stale: run UPDATE_SCHEMAS=1 cargo test --test solve",
+            "{} is stale: run EXACTCHECK_BLESS=1 cargo test --release --test solve",
             path.display()
         );
         n += 1;
@@ -346,7 +319,7 @@ fn committed_schemas_are_current() {
 /// `solve --schema KIND` prints the committed schema file; an unknown kind is a one-line error.
 #[test]
 fn solve_schema_flag_prints_the_committed_schema() {
-    let bin = env!("CARGO_BIN_EXE_exactcheck");
+    let bin = common::EXACTCHECK;
     for kind in ["sphere_interpolation", "cylinder_sphere"] {
         let o = std::process::Command::new(bin)
             .args(["solve", "--schema", kind])

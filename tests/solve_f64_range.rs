@@ -10,7 +10,6 @@ use common::{has_null_number, solve_stdin};
 use exactcheck::solve::{solve, Mode};
 use proptest::prelude::*;
 use serde_json::{json, Value};
-use std::process::Command;
 
 /// The exact answer (exit status 0, valid JSON, every `null` number listed).
 fn exact_answer(problem: &str) -> Value {
@@ -171,7 +170,7 @@ fn plot_of_a_conic_beyond_f64s_range_is_refused() {
             format!(r#"{{"kind":"conic","normal":{normal},"point":[1,1,1]}}"#),
         )
         .expect("write");
-        let o = Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+        let o = common::exactcheck()
             .arg("plot")
             .arg(&input)
             .arg("-o")

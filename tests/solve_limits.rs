@@ -8,12 +8,11 @@ mod common;
 
 use common::{refused, solve_stdin};
 use serde_json::Value;
-use std::process::Command;
 
 const CS_RADIANS: &str = r#"{"kind":"cylinder_sphere","cylinder":{"axis_point":[0,0],"radius":5,"beta":{"radians":1},"gamma":{"radians":-1}},"sphere":{"center":[1,2,4],"radius":5},"samples":2,"precision":PREC}"#;
 
 fn exactcheck(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+    common::exactcheck()
         .args(args)
         .output()
         .expect("the binary runs")

@@ -1,7 +1,8 @@
 //! The claim catalogue reproduces its verdicts, and `verify` / `prove` keep their CLI contracts.
 
+mod common;
+
 use exactcheck::claims::{verify, Verdict};
-use std::process::Command;
 
 /// The ids of the claim list that the catalogue implements (all `juttler.*` and `spaeth.*` ids,
 /// `planes.wabis`, the ruled-surface and conic `chiang.*` ids and the PH ids `chiang.offset`,
@@ -143,7 +144,7 @@ fn every_implemented_spec_id_is_in_the_catalogue() {
     for id in SPEC_IDS {
         assert!(ids.contains(&id), "{id} missing");
     }
-    // Every juttler/spaeth id is a SPEC id or a documented extra.
+    // Every juttler/spaeth id is an id of the papers' claim list or a documented extra.
     for id in &ids {
         if id.starts_with("juttler.") || id.starts_with("spaeth.") {
             assert!(
@@ -159,10 +160,7 @@ fn every_implemented_spec_id_is_in_the_catalogue() {
 }
 
 fn exactcheck(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_exactcheck"))
-        .args(args)
-        .output()
-        .expect("runs")
+    common::exactcheck().args(args).output().expect("runs")
 }
 
 #[test]
@@ -343,7 +341,7 @@ fn prove_random_mod_p() {
 }
 
 fn exactcheck_on_threads(threads: &str, args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+    common::exactcheck()
         .args(args)
         .env("RAYON_NUM_THREADS", threads)
         .output()

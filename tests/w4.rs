@@ -4,6 +4,8 @@
 //! check values (root counts) of the comparison sizes; the `bench w4` command's contract.
 //! No test measures time.
 
+mod common;
+
 use exactcheck_core::Ring;
 use exactcheck_exact::univariate::w4::{self, Family};
 use exactcheck_exact::univariate::{
@@ -12,7 +14,7 @@ use exactcheck_exact::univariate::{
 use exactcheck_exact::Rational;
 use num_bigint::BigInt;
 use proptest::prelude::*;
-use std::process::{Command, Output};
+use std::process::Output;
 
 fn rat(n: i64, d: i64) -> Rational {
     Rational::new(n, d).expect("non-zero denominator")
@@ -231,7 +233,7 @@ proptest! {
 // ------------------------------------------------------------------------------ the command
 
 fn exactcheck(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+    common::exactcheck()
         .args(args)
         .output()
         .expect("the binary runs")

@@ -1,4 +1,4 @@
-//! Conics as plane sections of the cone `x^2 + y^2 = z^2` (Chiang, seed 004, "Conic
+//! Conics as plane sections of the cone `x^2 + y^2 = z^2` (Chiang, "Conic
 //! table"), written once and generic over the scalar.
 //!
 //! # The cone as two ruled surfaces

@@ -1,4 +1,4 @@
-//! Cylinder / sphere intersection (Spaeth 2003, seeds 000 and 001).
+//! Cylinder / sphere intersection (Spaeth 2003; docs/papers/spaeth.md).
 //!
 //! A cylinder of radius `r` about the z axis through `(a, b, 0)` is rotated by `beta` in the x-z
 //! plane and then by `gamma` in the y-z plane: its points are

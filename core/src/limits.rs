@@ -155,7 +155,7 @@ impl std::error::Error for LimitError {}
 macro_rules! limits {
     ($($(#[$doc:meta])* $id:ident = ($name:literal, $what:literal, $unit:literal, $default:expr);)*) => {
         $($(#[$doc])* pub static $id: Limit = Limit::new($name, $what, $unit, $default);)*
-        /// Every limit, in the order of the README's table.
+        /// Every limit, in the order of the table in docs/limits.md.
         pub fn all() -> &'static [&'static Limit] {
             static ALL: &[&Limit] = &[$(&$id),*];
             ALL

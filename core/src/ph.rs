@@ -1,5 +1,5 @@
 //! Planar Pythagorean-hodograph (PH) curves, their rotated normal field and their offsets as
-//! exact rational Bezier curves (Chiang, seed 004, "PH curves"), written once and generic
+//! exact rational Bezier curves (Chiang, "PH curves"), written once and generic
 //! over the scalar.
 //!
 //! # The construction

@@ -1,4 +1,4 @@
-//! The intersection line of two planes, exactly and without unit normals (seed 003).
+//! The intersection line of two planes, exactly and without unit normals.
 //!
 //! # The planes
 //! A plane in normal form is a normal `n != 0` and a point `P`: the points `x` with

@@ -1,4 +1,4 @@
-//! Rational curves and surfaces on quadrics (Juettler; seed 002).
+//! Rational curves and surfaces on quadrics (Juettler).
 //!
 //! Homogeneous coordinates throughout. The unit sphere K is `k0^2 = k1^2 + k2^2 + k3^2`
 //! (5), the hyperbolic paraboloid H is `h0 h3 = h1 h2` (6). Every map here is division-free, so

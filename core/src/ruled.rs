@@ -1,5 +1,5 @@
 //! Ruled surfaces `S(s,t) = B(t) + s V(t)` and their intersections with a plane, a line and a
-//! point (Chiang, seed 004), written once and generic over the scalar.
+//! point (Chiang), written once and generic over the scalar.
 //!
 //! `B` is a Bezier curve of degree `n` (control points `p_j`), `V` a Bezier *direction field* of
 //! degree `m` (control vectors `q_i`). The plane is `N . x + d = 0`, `N = (a, b, c)`.

@@ -1,4 +1,4 @@
-//! Interpolation on the sphere is a linear problem (Juettler §2, seed 002).
+//! Interpolation on the sphere is a linear problem (Juettler §2).
 //!
 //! Given points `k_j` of the unit sphere K (5) and distinct parameters `t_j`, take the preimage
 //! line of each point under the generalized stereographic projection delta — the projecting line

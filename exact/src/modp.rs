@@ -1,8 +1,8 @@
 //! `ModP`: the integers modulo the Mersenne prime `p = 2^61 - 1`, for randomized identity tests.
 //!
 //! # Why
-//! The proof engine's "holds" verdict (DESIGN.md, *Claims and the proof engine*; SPEC.md §5,
-//! method "finite-field random evaluation") evaluates a claim's residual — a polynomial in the
+//! The proof engine's "holds" verdict (method "finite-field random
+//! evaluation") evaluates a claim's residual — a polynomial in the
 //! inputs, written once and generic over [`Ring`] — at random points of `Z/pZ`. By the
 //! Schwartz–Zippel lemma a non-zero polynomial of total degree `d` vanishes at a uniformly random
 //! point with probability at most `d / p`, so `k` independent evaluations that all give zero

@@ -766,7 +766,7 @@ impl From<Rational> for BigRational {
 }
 
 impl fmt::Display for Rational {
-    /// `n` for integers, `n/d` otherwise (the number syntax of DESIGN.md).
+    /// `n` for integers, `n/d` otherwise (the exact number syntax).
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match &self.0 {
             Repr::Small(n, 1) => write!(f, "{n}"),

@@ -1,8 +1,8 @@
 //! Property tests of `Radical` (multi-quadratic numbers) and `ComplexRadical`: the field laws,
 //! the canonical form after every operation, agreement with f64 evaluation where that is
 //! reliable, exact sign decisions where it is not, square roots, and the parse/print round trip.
-//! Fixtures: SPEC.md §4 (Chiang's Example 4 with sqrt 2 and sqrt 6, Table 1 with 1/sqrt 2) and
-//! §1 (Satz 5, the imaginary focal lines).
+//! Fixtures: Chiang's Example 4 with sqrt 2 and sqrt 6, Table 1 with 1/sqrt 2, and Juettler's
+//! Satz 5 (the imaginary focal lines).
 
 use exactcheck_core::{Field, OrderedField, Ring, Sign, Sqrt};
 use exactcheck_exact::radical::{ComplexRadical, ParseRadicalError, Radical};

@@ -1,5 +1,5 @@
 //! The published JavaScript `InterctionLineOf2Areas` (walter.bislins.ch, "Schnittlinie zweier
-//! Ebenen", 2022; seed 003), ported to `f64` operation for operation.
+//! Ebenen", 2022), ported to `f64` operation for operation.
 //!
 //! **This is the code under test and is deliberately not improved.** Every JavaScript operation
 //! has its counterpart here in the same order: `V3.Length` (`Math.sqrt` of `x*x + y*y + z*z`

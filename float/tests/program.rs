@@ -1,5 +1,5 @@
 //! The user's program as the float side ([`ProgramRunner`]), end to end with real processes: a C
-//! program compiled here with `gcc` and Python programs run by `python3`, the two README
+//! program compiled here with `gcc` and Python programs run by `python3`, the two docs/regress.md
 //! examples among them; and every way a program can fail the protocol, each a one-line error
 //! naming the sample, never a hang.
 
@@ -13,11 +13,11 @@ use std::time::{Duration, Instant};
 /// A generous per-answer timeout for programs that do answer (the machine is shared).
 const PATIENT: Duration = Duration::from_secs(30);
 
-/// The README's C example, byte for byte (one file, also regressed end to end through the CLI by
+/// The C example of docs/regress.md, byte for byte (one file, also regressed end to end through the CLI by
 /// `tests/regress_text.rs`).
 const C_SQRTDIFF: &str = include_str!("../../tests/regress/cancel.c");
 
-/// The README's Python example, byte for byte (likewise).
+/// The Python example of docs/regress.md, byte for byte (likewise).
 const PY_SQRTDIFF: &str = include_str!("../../tests/regress/cancel.py");
 
 /// A directory of its own for one test, under cargo's scratch directory for integration tests;

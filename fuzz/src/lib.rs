@@ -1,4 +1,4 @@
-//! Shared set-up of the exactcheck fuzz targets (see `fuzz/README` text in the main README).
+//! Shared set-up of the exactcheck fuzz targets (see docs/testing.md, "Fuzzing").
 //!
 //! Every target first lowers the named limits of `exactcheck_core::limits` so that one input
 //! runs in milliseconds: the fuzzer then explores the error paths of every limit (an input past a

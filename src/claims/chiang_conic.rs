@@ -1,12 +1,12 @@
-//! The conic claims of Chiang (seed 004, "Conic table"): `chiang.conic_table` (Table 1,
+//! The conic claims of Chiang ("Conic table"): `chiang.conic_table` (Table 1,
 //! every printed entry against the exact derivation) and `chiang.conic_type` (the paper's angle
 //! rule against the conic's own invariants, on Table 1 and on thousands of random planes).
 //!
 //! # The table
-//! Table 1 is kept **as printed data** ([`TABLE1`]): SPEC's restoration of the OCR'd seed (square
-//! roots restored, signs as printed), plus the plane equations as the OCR reads them (SPEC does
-//! not restore those) and, in [`OCR_READINGS`], the OCR's literal reading of every entry where it
-//! differs from SPEC's restoration. Each column is derived exactly over [`Radical`] (`Q(sqrt 2)`
+//! Table 1 is kept **as printed data** ([`TABLE1`]): the restoration of the OCR'd scan (square
+//! roots restored, signs as printed), plus the plane equations as the OCR reads them (the
+//! restoration leaves those out) and, in [`OCR_READINGS`], the OCR's literal reading of every
+//! entry where it differs from the restoration. Each column is derived exactly over [`Radical`] (`Q(sqrt 2)`
 //! here): the plane through `(1, 1, 1)` with the printed normal `N` is `N . x = N . (1,1,1)`, and
 //! [`ConeSection::new`] cuts the cone's two ruled surfaces with it (Chiang's theorem with apex
 //! `B = 0`: `w_k = N . q_k`, `w_k r_k = -d q_k`). Entries are judged one by one:
@@ -23,7 +23,7 @@
 //! * the plane equation: it is the plane through `(1, 1, 1)` with the printed normal (the
 //!   coefficient vectors `(a, b, c, rhs)` are proportional).
 //!
-//! Where the OCR's literal reading differs from SPEC's restoration the evidence says, computed,
+//! Where the OCR's literal reading differs from the restoration the evidence says, computed,
 //! which of the two the derivation supports.
 //!
 //! # The type
@@ -94,7 +94,7 @@ pub struct PrintedColumn {
     pub name: &'static str,
     /// The normal of the plane I.
     pub normal: [&'static str; 3],
-    /// The plane equation (OCR'd; SPEC does not restore it).
+    /// The plane equation (OCR'd; the restoration leaves it out).
     pub plane: PrintedPlane,
     /// `w0+ w1+ w2+`.
     pub weights_plus: [&'static str; 3],
@@ -176,7 +176,7 @@ pub const TABLE1: [PrintedColumn; 4] = [
     },
 ];
 
-/// The OCR's literal reading of an entry where it differs from SPEC's restoration.
+/// The OCR's literal reading of an entry where it differs from the restoration.
 #[derive(Clone, Copy, Debug)]
 pub struct OcrReading {
     /// The column (`circle`, ...).
@@ -189,7 +189,7 @@ pub struct OcrReading {
     pub reading: &'static [&'static str],
 }
 
-/// Every entry of the seed's Table 1 whose OCR differs from SPEC's restoration (lost square
+/// Every entry of the scanned Table 1 whose OCR differs from the restoration (lost square
 /// roots: `2 1` is `1/2` literally, restored as `1/sqrt2`).
 pub const OCR_READINGS: [OcrReading; 17] = [
     ocr("circle", "w1+", "2 1", &["1/2"]),
@@ -553,7 +553,7 @@ pub fn table_rows(table: &[PrintedColumn]) -> Result<Vec<TableRow>, String> {
         let derived_plane = [n.x.clone(), n.y.clone(), n.z.clone(), rhs.clone()];
         let plane_ok = pc.iter().any(|c| !c.is_zero()) && proportional(&pc, &derived_plane);
         let mut notes = vec![format!(
-            "the OCR reads `{}` (SPEC does not restore the plane equations)",
+            "the OCR reads `{}` (the restoration leaves out the plane equations)",
             col.plane.ocr
         )];
         if !plane_ok {
@@ -707,10 +707,10 @@ fn attach_ocr_notes(table: &[PrintedColumn], rows: &mut [TableRow]) -> Result<()
             match (ocr_right, spec_right) {
                 (true, true) => "both readings are the derived value",
                 (true, false) => {
-                    "the derivation supports the OCR's literal reading, not SPEC's restoration"
+                    "the derivation supports the OCR's literal reading, not the restoration"
                 }
                 (false, true) => {
-                    "the derivation supports SPEC's restoration, not the OCR's literal reading"
+                    "the derivation supports the restoration, not the OCR's literal reading"
                 }
                 (false, false) => "the derivation supports neither reading",
             }
@@ -782,7 +782,7 @@ pub fn check_table(table: &[PrintedColumn]) -> Result<Outcome, String> {
         );
     }
     if different.is_empty() {
-        evidence.push_str(", none of the entries SPEC restores different.");
+        evidence.push_str(", none of the restored entries different.");
     } else {
         let _ = write!(
             evidence,
@@ -794,7 +794,7 @@ pub fn check_table(table: &[PrintedColumn]) -> Result<Outcome, String> {
     if !ocr_planes.is_empty() {
         let _ = write!(
             evidence,
-            " Plane equations as the OCR reads them (not restored by SPEC, so not part of the verdict; if the paper prints them so, they are misprints): {} of {} miss the plane through (1,1,1): {}.",
+            " Plane equations as the OCR reads them (not restored, so not part of the verdict; if the paper prints them so, they are misprints): {} of {} miss the plane through (1,1,1): {}.",
             ocr_planes.len(),
             table.len(),
             ocr_planes.join("; ")
@@ -808,7 +808,7 @@ pub fn check_table(table: &[PrintedColumn]) -> Result<Outcome, String> {
     if !ocr.is_empty() {
         let _ = write!(
             evidence,
-            " OCR against SPEC's restoration, computed: {}.",
+            " OCR against the restoration, computed: {}.",
             ocr.join("; ")
         );
     }
@@ -847,7 +847,8 @@ pub fn check_table(table: &[PrintedColumn]) -> Result<Outcome, String> {
         evidence, erratum: None, })
 }
 
-/// Table 1 as Markdown for the README: printed | derived | judgement, with the computed notes.
+/// Table 1 as Markdown for docs/papers/chiang.md: printed | derived | judgement, with the
+/// computed notes.
 ///
 /// # Errors
 /// Data errors of [`table_rows`].

@@ -1,4 +1,4 @@
-//! Chiang (seed 004), section II.B "The intersection with a line" and II.C "The vicinity
+//! Chiang, section II.B "The intersection with a line" and II.C "The vicinity
 //! problem": `chiang.line` and `chiang.vicinity`.
 //!
 //! # The line

@@ -1,10 +1,10 @@
 //! The claim catalogue: statements of the source papers with their printed form (as data), the
 //! check that decides each, and the verdict the catalogue expects.
 //!
-//! Coverage of the papers' claim list: every `juttler.*` id (seed 002) and every `spaeth.*` id
-//! (seeds 000, 001) is implemented, plus `juttler.interpolation_degree`, the degree comparison
+//! Coverage of the papers' claim list: every `juttler.*` id and every `spaeth.*` id
+//! is implemented, plus `juttler.interpolation_degree`, the degree comparison
 //! split off from the sentence of `juttler.interpolation` (it is not an id of the list), the `planes.*`
-//! id (seed 003) and the `chiang.*` ids of the ruled-surface half of seed 004 (`chiang.theorem`,
+//! id and the `chiang.*` ids of the ruled-surface half of Chiang's paper (`chiang.theorem`,
 //! `chiang.corollary1/2/5`, `chiang.example4`, `chiang.line`, `chiang.vicinity`), the conic ids
 //! `chiang.conic_table`, `chiang.conic_type` ([`chiang_conic`]) and the offset and PH ids
 //! (`chiang.offset`, `chiang.ph_*`, [`chiang_ph`]): every id of the list.
@@ -208,7 +208,7 @@ pub struct Claim {
 }
 
 /// The whole catalogue (the `juttler.*` and `spaeth.*` claims; see the module documentation), in
-/// SPEC order.
+/// the order of the papers' claim list (docs/papers/README.md).
 pub fn catalogue() -> Vec<Claim> {
     let mut all = juttler::claims();
     all.extend(spaeth::claims());
@@ -252,7 +252,7 @@ impl Checked {
             && matches!(&self.outcome, Ok(o) if o.verdict == self.expected && o.verdict != Verdict::Undecided)
     }
 
-    /// The JSON object of DESIGN.md (`id`, `verdict`, `method`, `evidence`, plus more), with
+    /// The JSON object of a verdict (`id`, `verdict`, `method`, `evidence`, plus more), with
     /// `erratum` ([`Erratum::to_json`]) when the check filled one.
     pub fn to_json(&self) -> Value {
         match &self.outcome {

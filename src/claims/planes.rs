@@ -1,4 +1,4 @@
-//! The claim of the two-plane article (seed 003): `planes.wabis`.
+//! The claim of the two-plane article: `planes.wabis`.
 //!
 //! The published formulas are kept as text, exactly as the JavaScript computes them (`q =
 //! V3.Mult(n2, n1)`, `s1 = (d1 - r*d2) / (1 - r*r)`, `s2 = (d2 - r*d1) / (1 - r*r)`,

@@ -1,4 +1,4 @@
-//! Claims of Spaeth's cylinder/sphere paper (seeds 000 and 001).
+//! Claims of Spaeth's cylinder/sphere paper.
 //!
 //! The printed equations (4), (5), (7), (9), (10), (11) are kept as text (ASCII transliterations
 //! of the printed formulas: `cb, sb` for cos/sin beta, `cg, sg` for gamma, `ct, st` for t) and

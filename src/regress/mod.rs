@@ -73,7 +73,7 @@ pub struct RegressArgs {
     #[arg(long, requires = "fpcore")]
     pub name: Option<String>,
     /// The float side is this executable ('CMD ARGS'): one JSON line of inputs in, one line
-    /// of outputs back per sample (see the README).
+    /// of outputs back per sample (see docs/regress.md).
     #[arg(long, value_name = "CMD")]
     pub program: Option<String>,
     /// The numbered protocol of --program: each input line starts with the sample index,

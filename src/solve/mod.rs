@@ -1,5 +1,5 @@
-//! `exactcheck solve [FILE|-]`: one problem in JSON, the answer in JSON (DESIGN.md, "The solve
-//! contract").
+//! `exactcheck solve [FILE|-]`: one problem in JSON, the answer in JSON (the
+//! contract described in docs/solve.md).
 //!
 //! The contract is a set of types: each kind has an input struct read with serde derive
 //! (`deny_unknown_fields`, so a misspelt or extra field is an error naming it; a repeated field
@@ -80,7 +80,7 @@ pub(crate) fn by_mode<E: Serialize, F: Serialize>(
     }
 }
 
-/// A kind of DESIGN.md and how it is answered.
+/// A kind of `solve` and how it is answered.
 #[derive(Clone, Copy)]
 pub struct KindEntry {
     /// The kind's name.
@@ -108,7 +108,7 @@ fn answered<K: Kind>() -> KindEntry {
     }
 }
 
-/// The kinds of DESIGN.md, in its order (every one is answered).
+/// The kinds of `solve`, in their fixed order (every one is answered).
 pub fn kinds() -> [KindEntry; 7] {
     [
         answered::<sphere_interpolation::SphereInterpolation>(),

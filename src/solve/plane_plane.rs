@@ -1,4 +1,4 @@
-//! `solve` kind `plane_plane` (seed 003): the intersection line of two planes given in
+//! `solve` kind `plane_plane`: the intersection line of two planes given in
 //! normal form `{normal, point}`.
 //!
 //! Exact mode reads the numbers into the radical field (so `"sqrt(2)/2"` is exact) and runs the

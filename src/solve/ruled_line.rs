@@ -1,5 +1,5 @@
 //! `solve` kind `ruled_line`: where a line `P + lambda D` meets the ruled surface
-//! `S(s,t) = B(t) + s V(t)` (Chiang, seed 004, section II.B).
+//! `S(s,t) = B(t) + s V(t)` (Chiang, section II.B).
 //!
 //! # Method
 //! The ruling `t` meets the line iff `B(t) - P`, `V(t)` and `D` are linearly dependent:

@@ -1,12 +1,20 @@
 //! Helpers shared by the CLI end-to-end tests (each `tests/*.rs` file is its own crate and
 //! includes this module with `mod common;`).
 
-use std::process::{Command, Output, Stdio};
+// Each test crate uses a different part of this module.
+#![allow(dead_code)]
+
+use std::process::{Output, Stdio};
+
+mod exe;
+pub mod golden;
+#[allow(unused_imports)]
+pub use exe::{exactcheck, EXACTCHECK};
 
 /// Runs `exactcheck solve EXTRA...` with `problem` on standard input.
 pub fn solve_stdin(problem: impl AsRef<[u8]>, extra: &[&str]) -> Output {
     use std::io::Write;
-    let mut child = Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+    let mut child = exactcheck()
         .arg("solve")
         .args(extra)
         .stdin(Stdio::piped())

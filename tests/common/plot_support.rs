@@ -1,8 +1,13 @@
 //! What the plot tests share (`#[path]`-included, so crates that do not plot do not compile
 //! it): a temporary directory, the binary, the SVG well-formedness check and a polyline counter.
 
+#[path = "exe.rs"]
+pub mod exe;
+#[path = "golden.rs"]
+pub mod golden;
+
 use std::path::PathBuf;
-use std::process::{Command, Output};
+use std::process::Output;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// A fresh directory under the system temp dir, removed when dropped.
@@ -36,7 +41,7 @@ impl Drop for TempDir {
 
 /// Runs the binary with `args`.
 pub fn exactcheck(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+    exe::exactcheck()
         .args(args)
         .output()
         .expect("run exactcheck")

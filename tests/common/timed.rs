@@ -11,10 +11,13 @@
 
 #![allow(dead_code)]
 
+#[path = "exe.rs"]
+mod exe;
+
 use std::ffi::OsString;
 use std::io::{Read, Write};
 use std::path::Path;
-use std::process::{Command, Stdio};
+use std::process::Stdio;
 use std::sync::Mutex;
 use std::thread;
 use std::time::{Duration, Instant};
@@ -97,7 +100,7 @@ pub fn run(args: &[OsString], stdin: Option<&[u8]>) -> Run {
 
 /// [`run`] with environment variables set for the run.
 pub fn run_with_env(args: &[OsString], stdin: Option<&[u8]>, env: &[(String, String)]) -> Run {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+    let mut child = exe::exactcheck()
         .args(args)
         .envs(env.iter().map(|(k, v)| (k, v)))
         .current_dir(root())

@@ -1,8 +1,8 @@
 //! Sparse multivariate polynomials over a coefficient ring: the scalar that turns generic formula
 //! code into a symbolic proof.
 //!
-//! [`Poly<C>`] implements [`Ring`], so every formula written against `Ring` (DESIGN.md, "The scalar
-//! traits") runs over polynomials: instantiate it with `Poly<Rational>` variables and an identity
+//! [`Poly<C>`] implements [`Ring`], so every formula written against `Ring` (the scalar
+//! traits of `exactcheck-core`) runs over polynomials: instantiate it with `Poly<Rational>` variables and an identity
 //! is **proved** when its residual expands to the zero polynomial. Because the representation is
 //! canonical, that test is `residual.is_zero()`.
 //!

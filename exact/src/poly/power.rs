@@ -59,8 +59,8 @@
 //! of `P^k`: the multisets of `k` terms of `P` (`C(t - 1 + k, k)`, exact for a "generic" sparse
 //! base), the exponent box (`prod (k d_v + 1)`), and the monomials of total degree at most
 //! `k deg P`. The prices ([`WORD_NS`] and the others) were measured on this machine by the
-//! calibration test `calibrate_power_choice` (`word_tests.rs`, ignored by default: it prints
-//! both timings for each case and asserts only that both agree). On those cases binary
+//! calibration example `power_calibration` (`cargo run --release -p exactcheck-exact --example
+//! power_calibration`: it prints both timings for each case and asserts only that both agree). On those cases binary
 //! powering wins for dense bases whose powers stay in words (`(1 + x + y + z + w)^k`, `k <= 16`:
 //! 1.5 to 2x) and for many-term bases with small exponents (a 10-term base, `e <= 6`: 2.5 to 7x);
 //! the recurrence wins once the coefficients pass 63 bits (`(1 + 3x + 5x^2 + ... + 19x^9)^40`:
@@ -82,7 +82,7 @@ use exactcheck_core::{Field, Ring};
 use num_bigint::{BigInt, BigUint, Sign};
 
 /// The cost model's prices, in nanoseconds on the project machine (measured with the
-/// calibration in `word_tests.rs`, `calibrate_power_choice`): a product of two coefficients in
+/// calibration example `power_calibration`): a product of two coefficients in
 /// the word kernels, a product of two coefficients beyond 63 bits, each level of a product
 /// heap, and one step of the recurrence (a product of an output coefficient by a word with its
 /// share of the division).
@@ -674,9 +674,10 @@ impl<C: Ring> Poly<C> {
     }
 
     /// `self^e` by the recurrence whatever the cost model says, after splitting off the content
-    /// as the powers do (`None` where it does not apply), for tests.
-    #[cfg(test)]
-    pub(super) fn pow_recurrence_forced(&self, e: u64) -> Option<Self> {
+    /// as the powers do (`None` where it does not apply): for the tests and the calibration
+    /// example `power_calibration`.
+    #[doc(hidden)]
+    pub fn pow_recurrence_forced(&self, e: u64) -> Option<Self> {
         if let Some((c, prim)) = self.split_content() {
             return Some(prim.pow_recurrence_forced(e)?.scale(&pow_coeff(&c, e)));
         }
@@ -687,9 +688,10 @@ impl<C: Ring> Poly<C> {
         run(self, e, usize::MAX).map(|r| r.expect("no cap"))
     }
 
-    /// `self^e` by binary powering on the fast kernels (the content split off), for tests.
-    #[cfg(test)]
-    pub(super) fn pow_binary(&self, mut e: u64) -> Self {
+    /// `self^e` by binary powering on the fast kernels (the content split off): for the tests
+    /// and the calibration example `power_calibration`.
+    #[doc(hidden)]
+    pub fn pow_binary(&self, mut e: u64) -> Self {
         if let Some((c, prim)) = self.split_content() {
             return prim.pow_binary(e).scale(&pow_coeff(&c, e));
         }
@@ -707,9 +709,10 @@ impl<C: Ring> Poly<C> {
         }
     }
 
-    /// Whether the cost model picks the recurrence for `self^e`, for tests.
-    #[cfg(test)]
-    pub(super) fn recurrence_is_preferred(&self, e: u64) -> bool {
+    /// Whether the cost model picks the recurrence for `self^e`: for the tests and the
+    /// calibration example `power_calibration`.
+    #[doc(hidden)]
+    pub fn recurrence_is_preferred(&self, e: u64) -> bool {
         recurrence_preferred(self, e)
     }
 }

@@ -665,7 +665,7 @@ pub(super) fn write_abs_term(
 }
 
 impl fmt::Display for Radical {
-    /// The number syntax of DESIGN.md, terms by increasing radicand:
+    /// The exact number syntax (docs/solve.md), terms by increasing radicand:
     /// `1/2 + 3*sqrt(2) - sqrt(6)/3`; `0` for zero. [`FromStr`](std::str::FromStr) reads it back.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         if self.terms.is_empty() {

@@ -2,14 +2,14 @@
 //! `ComplexRadical`, the same with `i = sqrt(-1)` adjoined.
 //!
 //! # Where they are used
-//! * SPEC.md §4 (Chiang, seed 004): Example 4 has control vectors with `sqrt 2` and `sqrt 6`, and
+//! * Chiang's paper (docs/papers/chiang.md): Example 4 has control vectors with `sqrt 2` and `sqrt 6`, and
 //!   Table 1 (the conic sections of the cone) has weights `1/sqrt 2`, `1 + sqrt 2` and planes with
 //!   normal `(1, 1, sqrt 2)`; the ruled-surface formulas run over [`Radical`] to reproduce them
 //!   exactly. Roots of quadratics (poles, parameters `t = 1/sqrt 2`) are exact [`Radical`]s too,
 //!   through [`Sqrt`].
-//! * SPEC.md §1 (Juttler, Satz 5): the complex focal lines `xi (1,0,0,i) + zeta (0,1,-i,0)` of
+//! * Juettler's Satz 5 (docs/papers/juttler.md): the complex focal lines `xi (1,0,0,i) + zeta (0,1,-i,0)` of
 //!   the elliptic linear congruence need `i`; they are checked over [`ComplexRadical`].
-//! * DESIGN.md, "Numbers in JSON": input strings such as `"1/sqrt(2)"` or `"(2+sqrt(2))/3"` are
+//! * Numbers in JSON (docs/solve.md): input strings such as `"1/sqrt(2)"` or `"(2+sqrt(2))/3"` are
 //!   parsed by [`Radical`]'s `FromStr` (the one grammar of [`crate::expr`], evaluated exactly), and answers are printed by its `Display` in the same syntax
 //!   (the output parses back to the same value).
 //!

@@ -6,7 +6,7 @@
 //! scaled basis: `W_k = den_k / C(m+n, k)` and `r_k = (num_xk, num_yk, num_zk) / den_k`. It does
 //! not use the theorem's sums (those are proved equal to it by `chiang.theorem`).
 //!
-//! The printed texts are ASCII transliterations of seed 004: `×`, `⋅` and juxtaposition become
+//! The printed texts are ASCII transliterations of the paper's text: `×`, `⋅` and juxtaposition become
 //! `*`; a printed dot product of a coefficient tuple with a point tuple, `(c1, c2).(v1, v2)`,
 //! becomes `c1*v1 + c2*v2`; `{X}` stands for the coordinate (`x`, `y`, `z`: each printed vector
 //! formula is three scalar formulas), `{i}`, `{j}`, `{k}` for indices. The printed sums of
@@ -39,7 +39,7 @@ pub struct Corollary5Text {
     pub points: [&'static str; 4],
 }
 
-/// Corollary 5 as printed in seed 004.
+/// Corollary 5 as the paper prints it.
 pub const COROLLARY5: Corollary5Text = Corollary5Text {
     weights: ["q0z", "(1/3)*(2*q0z + q1z)", "(1/3)*(q0z + 2*q1z)", "q1z"],
     points: [

@@ -1,4 +1,4 @@
-//! Claims of Chiang's ruled-surface / plane paper (seed 004): the Theorem, Corollaries
+//! Claims of Chiang's ruled-surface / plane paper: the Theorem, Corollaries
 //! 1, 2 and 5, and Example 4.
 //!
 //! The construction itself lives in `exactcheck_core::ruled` (generic over the scalar); here it is

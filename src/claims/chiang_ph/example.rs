@@ -1,4 +1,4 @@
-//! The worked example (seed 004, section 3): `u = (10, -1)`, `v = (1, 10)`, `p0 = (0, 0, 0)`, a
+//! The worked example (section 3): `u = (10, -1)`, `v = (1, 10)`, `p0 = (0, 0, 0)`, a
 //! cubic PH curve. Every printed number is data (strings as printed) and judged against the
 //! exact value computed by [`exactcheck_core::ph`] over [`Rational`].
 //!
@@ -10,7 +10,7 @@
 //!   `(-h_iy, h_ix, sigma_i)`, perpendicular by construction)?, at 45 degrees (`|xy| = z`; the
 //!   45-degree property is one of `V(t)`, the derived middle vector is horizontal)? Then every
 //!   sign pattern of the printed non-zero entries is tried against the left field
-//!   `(-Y', X', sigma)` (the SPEC's `V`) and the right field `(Y', -X', sigma)`: the patterns
+//!   `(-Y', X', sigma)` (the claim's `V`) and the right field `(Y', -X', sigma)`: the patterns
 //!   that give each are reported.
 //! * `chiang.ph_radius` — the smallest radius of curvature exactly
 //!   ([`PhCurve::min_radius`]: a candidate certified by root isolation), the printed decimal
@@ -38,7 +38,7 @@ use exactcheck_exact::planar::{self_intersections_xy, Budget};
 use exactcheck_exact::poly::CoeffExpr;
 use exactcheck_exact::Rational;
 
-/// The printed control points `p1, p2, p3` (seed 004: "p1 = (33, 20/3, 0), p2 = (79/3, 119/3,
+/// The printed control points `p1, p2, p3` (the paper: "p1 = (33, 20/3, 0), p2 = (79/3, 119/3,
 /// 0), p3 = (-20/3, 33, 0)").
 pub const PRINTED_POINTS: [[&str; 3]; 3] = [
     ["33", "20/3", "0"],
@@ -265,7 +265,7 @@ pub fn ph_normals_with(printed: &[[&str; 3]; 3]) -> Result<Outcome, String> {
     let left_patterns = sign_patterns(&p, &left);
     let right_patterns = sign_patterns(&p, &right);
     let evidence = format!(
-        "{}. V(t) = (-Y', X', sigma) is at 45 degrees at t = j/8: {all45} (a property of V(t), not of each control vector). Magnitudes: {}. Left field (-Y', X', sigma) (the SPEC's V): {}. Right field (Y', -X', sigma): {}.{}",
+        "{}. V(t) = (-Y', X', sigma) is at 45 degrees at t = j/8: {all45} (a property of V(t), not of each control vector). Magnitudes: {}. Left field (-Y', X', sigma) (the claim's V): {}. Right field (Y', -X', sigma): {}.{}",
         per_point.join("; "),
         if magnitudes_equal {
             "every printed entry has the magnitude of the derived one (only signs differ)"
@@ -821,7 +821,7 @@ fn reading(r: &OffsetRow) -> String {
     }
 }
 
-/// The offsets' table as Markdown (for the README).
+/// The offsets' table as Markdown (for docs/papers/chiang.md).
 pub fn ph_offsets_markdown(rows: &[OffsetRow]) -> String {
     let mut s = String::from(
         "| r | value | printed | exact | exact decimal | deviation (printed - exact) | correctly rounded? |\n| --- | --- | --- | --- | --- | --- | --- |\n",

@@ -1,4 +1,4 @@
-//! Chiang (seed 004, "Cyclographic maps / offsets" and "PH curves"): the offset theorem,
+//! Chiang ("Cyclographic maps / offsets" and "PH curves"): the offset theorem,
 //! the corollary's degrees and the worked example of a cubic PH curve, printed number by printed
 //! number — `chiang.offset`, `chiang.ph_degree`, `chiang.ph_points`, `chiang.ph_normals`,
 //! `chiang.ph_radius`, `chiang.ph_offsets`.

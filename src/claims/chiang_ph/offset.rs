@@ -21,7 +21,7 @@
 //!   `V_x^2 + V_y^2 - V_z^2`; and the PH identity `X'^2 + Y'^2 - sigma^2` that the length rests
 //!   on.
 //!
-//! Both forms are proved: base in `z = -r` cut by `z = 0` (the SPEC's statement) and base in
+//! Both forms are proved: base in `z = -r` cut by `z = 0` (the claim's statement) and base in
 //! `z = 0` cut by `z = r` (the issue's). A planted non-PH hodograph `(X' + c, Y')` (same `V`
 //! construction, [`offset_proof`] with `x_shift = c`) makes the length residual fail with a
 //! counter-example, so the proof can fail. Exact random instances over [`Rational`] continue to

@@ -1,4 +1,4 @@
-//! Claims of Juettler's paper on rational curves and surfaces on quadrics (seed 002).
+//! Claims of Juettler's paper on rational curves and surfaces on quadrics.
 //!
 //! Printed formulas are kept as text exactly as the paper prints them and parsed; the maps of
 //! `exactcheck_core::quadric` are the independent derivation they are compared against, and the

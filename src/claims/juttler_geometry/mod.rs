@@ -1,4 +1,4 @@
-//! The geometric properties of the net projection theta and of delta (seed 002, the list after
+//! The geometric properties of the net projection theta and of delta (the list after
 //! Satz 5, and Satz 7): preimages of circles and lines of P, images of lines, the
 //! projecting line of a plane, and Miquel's configuration of a biquadratic patch on K.
 //!
@@ -219,35 +219,5 @@ mod tests {
     #[test]
     fn plane_lines_is_proved() {
         expect(plane_lines(), Verdict::Proved);
-    }
-}
-
-#[cfg(test)]
-mod print {
-    use super::*;
-
-    /// `cargo test --release print_outcomes -- --ignored --nocapture` shows what the checks find.
-    #[test]
-    #[ignore]
-    fn print_outcomes() {
-        type Check = fn() -> Result<Outcome, String>;
-        let checks: [(&str, Check); 5] = [
-            ("juttler.circle_preimage", circle_preimage),
-            ("juttler.line_preimage", line_preimage),
-            ("juttler.line_image", line_image),
-            ("juttler.plane_lines", plane_lines),
-            ("juttler.satz7", satz7),
-        ];
-        for (id, f) in checks {
-            let start = std::time::Instant::now();
-            let o = f().expect("runs");
-            println!(
-                "{id}: {} [{:.3} s]\n  method: {}\n  evidence: {}\n",
-                o.verdict,
-                start.elapsed().as_secs_f64(),
-                o.method,
-                o.evidence
-            );
-        }
     }
 }
