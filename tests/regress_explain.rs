@@ -15,7 +15,8 @@ fn exactcheck(args: &[&str]) -> Output {
 
 /// A fresh scratch directory for one test.
 fn scratch(name: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("exactcheck-explain-{}-{name}", std::process::id()));
+    let dir =
+        std::env::temp_dir().join(format!("exactcheck-explain-{}-{name}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
     dir
@@ -53,8 +54,16 @@ fn the_subtraction_of_sqrt_x_plus_1_minus_sqrt_x_loses_the_bits_of_a_well_condit
     assert!(e["bits"].as_f64().unwrap() > 30.0, "{e}");
 
     let o = exactcheck(&[
-        "regress", "--formula", CANCEL, "--domain", "x in [1, 1e15]", "--samples", "500",
-        "--worst", "1", "--quiet",
+        "regress",
+        "--formula",
+        CANCEL,
+        "--domain",
+        "x in [1, 1e15]",
+        "--samples",
+        "500",
+        "--worst",
+        "1",
+        "--quiet",
     ]);
     let text = String::from_utf8(o.stdout).unwrap();
     assert!(
@@ -98,12 +107,23 @@ fn a_stable_formula_reports_no_dominant_loss() {
     assert_eq!(e["operations"], Value::Array(vec![]), "{e}");
     assert!(e["bits"].as_f64().unwrap() <= 2.0, "{e}");
     let o = exactcheck(&[
-        "regress", "--formula", "1/(sqrt(x + 1) + sqrt(x))", "--domain", "x in [1, 1e15]",
-        "--samples", "300", "--worst", "1", "--quiet",
+        "regress",
+        "--formula",
+        "1/(sqrt(x + 1) + sqrt(x))",
+        "--domain",
+        "x in [1, 1e15]",
+        "--samples",
+        "300",
+        "--worst",
+        "1",
+        "--quiet",
     ]);
     let text = String::from_utf8(o.stdout).unwrap();
     assert!(text.contains("local error: no dominant loss"), "{text}");
-    assert!(text.contains("well-conditioned (cond 0.5) and accurate here"), "{text}");
+    assert!(
+        text.contains("well-conditioned (cond 0.5) and accurate here"),
+        "{text}"
+    );
 }
 
 #[test]
@@ -136,15 +156,30 @@ fn an_external_program_gets_conditioning_but_no_local_error() {
         // No python3 here: nothing to check.
         return;
     }
-    assert!(e["operations_note"].as_str().unwrap().contains("external"), "{e}");
+    assert!(
+        e["operations_note"].as_str().unwrap().contains("external"),
+        "{e}"
+    );
     assert!(e["condition"].as_f64().is_some(), "{e}");
 }
 
 #[test]
 fn bins_count_every_compared_sample() {
     let doc = json_of(&exactcheck(&[
-        "regress", "--formula", QUADRATIC, "--vars", "a,b,c", "--domain", QUADRATIC_DOMAIN,
-        "--samples", "500", "--worst", "1", "--bin", "b*b/(a*c)", "--json",
+        "regress",
+        "--formula",
+        QUADRATIC,
+        "--vars",
+        "a,b,c",
+        "--domain",
+        QUADRATIC_DOMAIN,
+        "--samples",
+        "500",
+        "--worst",
+        "1",
+        "--bin",
+        "b*b/(a*c)",
+        "--json",
     ]));
     let entry = &doc["entries"][0];
     let bins = entry["bins"]["bins"].as_array().unwrap();
@@ -161,11 +196,26 @@ fn bins_count_every_compared_sample() {
     let last = bins.last().unwrap()["mean_bits"].as_f64().unwrap();
     assert!(last > first + 10.0, "{bins:?}");
     let o = exactcheck(&[
-        "regress", "--formula", QUADRATIC, "--vars", "a,b,c", "--domain", QUADRATIC_DOMAIN,
-        "--samples", "200", "--worst", "1", "--bin", "b*b/(a*c)", "--quiet",
+        "regress",
+        "--formula",
+        QUADRATIC,
+        "--vars",
+        "a,b,c",
+        "--domain",
+        QUADRATIC_DOMAIN,
+        "--samples",
+        "200",
+        "--worst",
+        "1",
+        "--bin",
+        "b*b/(a*c)",
+        "--quiet",
     ]);
     let text = String::from_utf8(o.stdout).unwrap();
-    assert!(text.contains("error by the value of --bin b*b/(a*c):"), "{text}");
+    assert!(
+        text.contains("error by the value of --bin b*b/(a*c):"),
+        "{text}"
+    );
 }
 
 #[test]
@@ -174,8 +224,18 @@ fn csv_has_one_checked_row_per_compared_sample() {
     let path = dir.join("samples.csv");
     let path = path.to_str().unwrap();
     let doc = json_of(&exactcheck(&[
-        "regress", "--formula", "x*x - y*y", "--vars", "x,y", "--domain", "x in [1, 2], y in [1, 2]",
-        "--samples", "300", "--csv", path, "--json",
+        "regress",
+        "--formula",
+        "x*x - y*y",
+        "--vars",
+        "x,y",
+        "--domain",
+        "x in [1, 2], y in [1, 2]",
+        "--samples",
+        "300",
+        "--csv",
+        path,
+        "--json",
     ]));
     let text = std::fs::read_to_string(path).unwrap();
     let mut lines = text.lines();
@@ -186,14 +246,21 @@ fn csv_has_one_checked_row_per_compared_sample() {
     let rows: Vec<Vec<f64>> = lines
         .map(|l| l.split(',').map(|c| c.parse().unwrap()).collect())
         .collect();
-    assert_eq!(rows.len() as u64, doc["entries"][0]["compared"].as_u64().unwrap());
+    assert_eq!(
+        rows.len() as u64,
+        doc["entries"][0]["compared"].as_u64().unwrap()
+    );
     for r in &rows {
         let (x, y) = (r[1], r[2]);
         assert_eq!(r[3], x * x - y * y, "{r:?}");
         let xr = exactcheck_float::convert::f64_to_rational(x).unwrap();
         let yr = exactcheck_float::convert::f64_to_rational(y).unwrap();
         let exact = &xr * &xr - &yr * &yr;
-        assert_eq!(r[4], exactcheck_float::convert::rational_to_f64(&exact), "{r:?}");
+        assert_eq!(
+            r[4],
+            exactcheck_float::convert::rational_to_f64(&exact),
+            "{r:?}"
+        );
         assert_eq!(r[5], r[6]);
         assert!((0.0..=64.0).contains(&r[7]), "{r:?}");
     }
@@ -209,8 +276,20 @@ fn html_has_the_explanation_and_one_plot_per_input() {
     let path = dir.join("report.html");
     let path = path.to_str().unwrap();
     let o = exactcheck(&[
-        "regress", "--formula", QUADRATIC, "--vars", "a,b,c", "--domain", QUADRATIC_DOMAIN,
-        "--samples", "300", "--worst", "1", "--quiet", "--html", path,
+        "regress",
+        "--formula",
+        QUADRATIC,
+        "--vars",
+        "a,b,c",
+        "--domain",
+        QUADRATIC_DOMAIN,
+        "--samples",
+        "300",
+        "--worst",
+        "1",
+        "--quiet",
+        "--html",
+        path,
     ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let page = std::fs::read_to_string(path).unwrap();
@@ -224,23 +303,64 @@ fn html_has_the_explanation_and_one_plot_per_input() {
 fn bad_explain_options_are_refused_in_one_line() {
     for (args, needle) in [
         (
-            vec!["regress", "--formula", "x + y", "--samples", "10", "--bin", "1/(x - x)"],
+            vec![
+                "regress",
+                "--formula",
+                "x + y",
+                "--samples",
+                "10",
+                "--bin",
+                "1/(x - x)",
+            ],
             "is undefined (outside its domain) at sample 0",
         ),
         (
-            vec!["regress", "--formula", "x + y", "--samples", "10", "--bin", "z"],
+            vec![
+                "regress",
+                "--formula",
+                "x + y",
+                "--samples",
+                "10",
+                "--bin",
+                "z",
+            ],
             "--bin: unknown variable 'z'",
         ),
         (
-            vec!["regress", "--formula", "x", "--samples", "10", "--csv", "/no/such/dir/a.csv"],
+            vec![
+                "regress",
+                "--formula",
+                "x",
+                "--samples",
+                "10",
+                "--csv",
+                "/no/such/dir/a.csv",
+            ],
             "the directory /no/such/dir does not exist",
         ),
         (
-            vec!["regress", "cylinder-sphere", "--samples", "10", "--bin", "x"],
+            vec![
+                "regress",
+                "cylinder-sphere",
+                "--samples",
+                "10",
+                "--bin",
+                "x",
+            ],
             "--bin applies to --formula and --fpcore",
         ),
         (
-            vec!["regress", "--formula", "x", "--samples", "10", "--shard", "1/2", "--bin", "x"],
+            vec![
+                "regress",
+                "--formula",
+                "x",
+                "--samples",
+                "10",
+                "--shard",
+                "1/2",
+                "--bin",
+                "x",
+            ],
             "--bin needs the whole sweep",
         ),
     ] {
@@ -299,7 +419,11 @@ fn the_explain_page_shows_current_output() {
         let block = &body[..end];
         rest = &body[end + 4..];
         let (command, shown) = block.split_once('\n').unwrap_or((block, ""));
-        let args = words(command.strip_prefix("$ exactcheck ").expect("$ exactcheck ..."));
+        let args = words(
+            command
+                .strip_prefix("$ exactcheck ")
+                .expect("$ exactcheck ..."),
+        );
         let args: Vec<&str> = args.iter().map(String::as_str).collect();
         let o = exactcheck(&args);
         let printed = String::from_utf8(o.stdout).unwrap();

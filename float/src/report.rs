@@ -124,7 +124,10 @@ impl Explanation {
         let lost = self.bits;
         let Some(c) = self.condition else {
             let why = self.condition_note.as_deref().unwrap_or("undefined");
-            return format!("no condition number ({why}); the result loses {} bits", fmt_bits(lost));
+            return format!(
+                "no condition number ({why}); the result loses {} bits",
+                fmt_bits(lost)
+            );
         };
         let expect = self.expected_bits().unwrap_or(0.0);
         // Within a few bits of what the conditioning predicts: the problem's, not the code's.
@@ -169,7 +172,14 @@ impl Explanation {
         let parts: Vec<String> = self
             .operations
             .iter()
-            .map(|o| format!("the {} in {} loses {} bits", o.operation, o.at, fmt_bits(o.bits)))
+            .map(|o| {
+                format!(
+                    "the {} in {} loses {} bits",
+                    o.operation,
+                    o.at,
+                    fmt_bits(o.bits)
+                )
+            })
             .collect();
         parts.join("; ")
     }
@@ -479,7 +489,12 @@ impl fmt::Display for WorstCase {
             } else {
                 String::new()
             };
-            writeln!(f, "  explained at sample {}{which}: {} bits lost", self.index, fmt_bits(e.bits))?;
+            writeln!(
+                f,
+                "  explained at sample {}{which}: {} bits lost",
+                self.index,
+                fmt_bits(e.bits)
+            )?;
             writeln!(f, "    local error: {}", e.local())?;
             writeln!(f, "    conditioning: {}", e.verdict())?;
         }

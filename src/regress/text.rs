@@ -182,7 +182,10 @@ fn sweep_entry(
     let run_samples = args
         .shard
         .map_or(args.samples, |s| s.range(args.samples).len());
-    let mut points = args.html.as_ref().map(|_| explain::Points::new(run_samples));
+    let mut points = args
+        .html
+        .as_ref()
+        .map(|_| explain::Points::new(run_samples));
     let progress = args.progress(&program.name);
     let mut observe = |s: &exactcheck_float::Observed<'_>| {
         if let Some(b) = &mut bins {
@@ -244,7 +247,10 @@ fn check_outputs(args: &RegressArgs, benchmarks: usize) -> Result<(), Error> {
         }
     }
     if args.shard.is_some() {
-        for (flag, given) in [("--bin", args.bin.is_some()), ("--html", args.html.is_some())] {
+        for (flag, given) in [
+            ("--bin", args.bin.is_some()),
+            ("--html", args.html.is_some()),
+        ] {
             if given {
                 return Err(Error::Usage(format!(
                     "{flag} needs the whole sweep; `merge` does not combine it: leave out --shard"

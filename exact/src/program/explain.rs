@@ -16,7 +16,7 @@
 //! expression of the `prove` syntax (FPCore's `let`, `if`, `fmin`...), and forward mode
 //! differentiates exactly what the walk evaluates.
 use super::float::pow_f64;
-use super::real::{nearest_double, rounding_decided, ExactStop, Halt, Real, XV, MAX_PRECISION};
+use super::real::{nearest_double, rounding_decided, ExactStop, Halt, Real, MAX_PRECISION, XV};
 use super::walk::{eval_node, Domain};
 use super::{CmpOp, PowStyle, Program, START_PRECISION};
 use crate::rational::Rational;
@@ -118,12 +118,7 @@ impl Local<'_> {
         Ok(Tracked { x, text, prec })
     }
 
-    fn binary(
-        &mut self,
-        a: Tracked,
-        b: Tracked,
-        op: char,
-    ) -> Result<Tracked, Halt> {
+    fn binary(&mut self, a: Tracked, b: Tracked, op: char) -> Result<Tracked, Halt> {
         let (fa, fb) = (Self::round(&a.x)?, Self::round(&b.x)?);
         let (name, prec, float) = match op {
             '+' => ("addition", 0, fa + fb),
@@ -325,11 +320,10 @@ impl Domain for Dual<'_> {
         })
     }
     fn neg(&mut self, a: DualValue) -> Result<DualValue, DualStop> {
-        let d = a
-            .d
-            .into_iter()
-            .map(|v| self.real.neg(v))
-            .collect::<Result<_, _>>()?;
+        let d =
+            a.d.into_iter()
+                .map(|v| self.real.neg(v))
+                .collect::<Result<_, _>>()?;
         Ok(DualValue {
             x: self.real.neg(a.x)?,
             d,
@@ -382,17 +376,16 @@ impl Domain for Dual<'_> {
         }
         // sqrt(a)' = a' / (2 sqrt(a)).
         let two_x = self.real.add(x.clone(), x.clone())?;
-        let d = a
-            .d
-            .into_iter()
-            .map(|v| {
-                if is_zero(&v) {
-                    Ok(v)
-                } else {
-                    self.real.div(v, two_x.clone())
-                }
-            })
-            .collect::<Result<_, _>>()?;
+        let d =
+            a.d.into_iter()
+                .map(|v| {
+                    if is_zero(&v) {
+                        Ok(v)
+                    } else {
+                        self.real.div(v, two_x.clone())
+                    }
+                })
+                .collect::<Result<_, _>>()?;
         Ok(DualValue { x, d })
     }
     fn abs(&mut self, a: DualValue) -> Result<DualValue, DualStop> {
@@ -432,7 +425,9 @@ impl Domain for Dual<'_> {
         let x = self.real.pow(a.x.clone(), n, style)?;
         // (a^n)' = n a^(n-1) a'.
         let lower = self.real.pow(a.x, n - 1, style)?;
-        let k = self.real.mul(XV::Exact(Rational::from(i64::from(n))), lower)?;
+        let k = self
+            .real
+            .mul(XV::Exact(Rational::from(i64::from(n))), lower)?;
         let d = self.scale(&k, &a.d)?;
         Ok(DualValue { x, d })
     }
@@ -620,9 +615,15 @@ mod tests {
         assert_eq!(c, [Conditioning::Number(3.0)]);
         // x^3: cond 3; x - x is zero.
         let p = Program::parse("x^3", None).unwrap();
-        assert_eq!(p.conditioning(&[q(7.0)]).unwrap(), [Conditioning::Number(3.0)]);
+        assert_eq!(
+            p.conditioning(&[q(7.0)]).unwrap(),
+            [Conditioning::Number(3.0)]
+        );
         let p = Program::parse("x - x", None).unwrap();
-        assert_eq!(p.conditioning(&[q(7.0)]).unwrap(), [Conditioning::ZeroValue]);
+        assert_eq!(
+            p.conditioning(&[q(7.0)]).unwrap(),
+            [Conditioning::ZeroValue]
+        );
         // sqrt at 0 has no derivative.
         let p = Program::parse("sqrt(x)", None).unwrap();
         assert_eq!(
