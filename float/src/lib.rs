@@ -45,10 +45,10 @@ pub use domain::{parse_domain, Bound, Domain, Interval, Sampling};
 pub use exactcheck_core::rng::{self, Rng};
 pub use gen::{Diagonal, Fixed, GenError, InputGen, LogUniform, NearDegenerate, UniformBox};
 pub use harness::{
-    check, check_consistent, check_subject, merge, regress, run, sample_inputs, CaseError,
-    ExactValue, FloatSideError, Formula, Generic, MergeError, Options, RegressError, Shard,
-    Subject, Sweep,
+    check, check_consistent, check_subject, merge, regress, run, run_observed, sample_inputs,
+    CaseError, ExactValue, FloatSideError, Formula, Generic, MergeError, Observed, Options,
+    RegressError, Shard, Subject, Sweep,
 };
 pub use program::{ProgramError, ProgramRunner};
-pub use report::{Case, Report, Summary, ThresholdCount, WorstCase};
+pub use report::{Case, Explanation, OperationError, Report, Summary, ThresholdCount, WorstCase};
 pub use scalar::ExactScalar;

@@ -66,6 +66,159 @@ pub struct WorstCase {
     pub shrink_steps: usize,
     /// How many candidate inputs were evaluated while shrinking.
     pub shrink_evaluations: usize,
+    /// Where the error of the sample comes from (formulas and FPCore programs only).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub explanation: Option<Explanation>,
+}
+
+/// One operation's local error: its bits of error when fed the exact values of its operands
+/// rounded to doubles, against the exact value of the subexpression it computes.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct OperationError {
+    /// The operation (`subtraction`, `square root`, ...).
+    pub operation: String,
+    /// The subexpression it computes.
+    pub at: String,
+    /// Herbie's bits of error of the operation alone.
+    #[serde(with = "measure")]
+    pub bits: f64,
+}
+
+/// Where the error of one sample comes from: the operations that lose bits when fed exact
+/// operands (local error), and the relative condition number of the exact function there.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Explanation {
+    /// The output explained (the one with the largest error), 0-based.
+    pub output: usize,
+    /// Herbie's bits of error of that output at the sample.
+    #[serde(with = "measure")]
+    pub bits: f64,
+    /// The operations losing more than [`Explanation::DOMINANT_BITS`] bits, most first (at most
+    /// three); empty when none does.
+    pub operations: Vec<OperationError>,
+    /// Why the local errors were not computed (an external program as the float side, or an
+    /// undecided exact value), when they were not.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub operations_note: Option<String>,
+    /// The relative condition number `sum_i |x_i df/dx_i / f|` of the output, from the exact
+    /// derivative; `None` when it is undefined (see `condition_note`).
+    #[serde(with = "opt_measure", default)]
+    pub condition: Option<f64>,
+    /// Why there is no condition number, when there is none.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub condition_note: Option<String>,
+}
+
+impl Explanation {
+    /// An operation losing more bits than this is named; a correctly rounded operation loses
+    /// at most 1 (one double away).
+    pub const DOMINANT_BITS: f64 = 2.0;
+
+    /// The bits a result of this conditioning is expected to lose: `log2(cond)`, 0 below 1.
+    pub fn expected_bits(&self) -> Option<f64> {
+        self.condition.map(|c| c.max(1.0).log2())
+    }
+
+    /// The verdict on conditioning against the algorithm, one sentence.
+    pub fn verdict(&self) -> String {
+        let lost = self.bits;
+        let Some(c) = self.condition else {
+            let why = self.condition_note.as_deref().unwrap_or("undefined");
+            return format!(
+                "no condition number ({why}); the result loses {} bits",
+                fmt_bits(lost)
+            );
+        };
+        let expect = self.expected_bits().unwrap_or(0.0);
+        // Within a few bits of what the conditioning predicts: the problem's, not the code's.
+        let margin = 3.0;
+        if expect < margin {
+            if lost <= Self::DOMINANT_BITS {
+                format!("well-conditioned (cond {}) and accurate here", fmt_cond(c))
+            } else {
+                format!(
+                    "well-conditioned (cond {}): the algorithm loses {} bits",
+                    fmt_cond(c),
+                    fmt_bits(lost)
+                )
+            }
+        } else if lost <= expect + margin {
+            format!(
+                "ill-conditioned here (cond ~ {}, expect ~{} bits lost): the loss is the problem's, not the algorithm's",
+                fmt_cond(c),
+                fmt_bits(expect)
+            )
+        } else {
+            format!(
+                "conditioning (cond ~ {}) accounts for ~{} bits: the algorithm loses {} bits more",
+                fmt_cond(c),
+                fmt_bits(expect),
+                fmt_bits(lost - expect)
+            )
+        }
+    }
+
+    /// The local-error sentence.
+    pub fn local(&self) -> String {
+        if let Some(note) = &self.operations_note {
+            return format!("local error not computed: {note}");
+        }
+        if self.operations.is_empty() {
+            return format!(
+                "no dominant loss: no operation fed exact operands loses more than {} bits",
+                fmt_bits(Self::DOMINANT_BITS)
+            );
+        }
+        let parts: Vec<String> = self
+            .operations
+            .iter()
+            .map(|o| {
+                format!(
+                    "the {} in {} loses {} bits",
+                    o.operation,
+                    o.at,
+                    fmt_bits(o.bits)
+                )
+            })
+            .collect();
+        parts.join("; ")
+    }
+}
+
+/// Bits for humans: one decimal, none when whole.
+fn fmt_bits(b: f64) -> String {
+    let s = format!("{b:.1}");
+    s.strip_suffix(".0").map_or(s.clone(), str::to_string)
+}
+
+/// A condition number for humans: 3 significant digits in a middle range, else `1e15`.
+fn fmt_cond(c: f64) -> String {
+    if c == 0.0 {
+        "0".into()
+    } else if (1e-3..1e4).contains(&c) {
+        let s = format!("{c:.3}");
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        format!("{c:.0e}")
+    }
+}
+
+/// `Option<f64>` as a measure or `null`.
+mod opt_measure {
+    use serde::{Deserialize, Deserializer, Serializer};
+
+    pub fn serialize<S: Serializer>(v: &Option<f64>, s: S) -> Result<S::Ok, S::Error> {
+        match v {
+            Some(x) => crate::json::measure::serialize(x, s),
+            None => s.serialize_none(),
+        }
+    }
+
+    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Option<f64>, D::Error> {
+        #[derive(Deserialize)]
+        struct Wrap(#[serde(with = "crate::json::measure")] f64);
+        Ok(Option::<Wrap>::deserialize(d)?.map(|w| w.0))
+    }
 }
 
 /// How many compared samples exceeded an error level.
@@ -329,6 +482,21 @@ impl fmt::Display for WorstCase {
                 if s.float_failure { " (float failure)" } else { "" }
             )?;
             write_case(f, s, "    ")?;
+        }
+        if let Some(e) = &self.explanation {
+            let which = if e.output > 0 || self.original.exact_outputs.len() > 1 {
+                format!(" (output {})", e.output + 1)
+            } else {
+                String::new()
+            };
+            writeln!(
+                f,
+                "  explained at sample {}{which}: {} bits lost",
+                self.index,
+                fmt_bits(e.bits)
+            )?;
+            writeln!(f, "    local error: {}", e.local())?;
+            writeln!(f, "    conditioning: {}", e.verdict())?;
         }
         Ok(())
     }

@@ -11,6 +11,7 @@
 //! Any harness sweep can run as a shard (`--shard I/N`, JSON out) and the shards merge
 //! (`exactcheck merge`, [`sweep`]).
 
+pub mod explain;
 pub mod planes;
 pub mod sweep;
 pub mod text;
@@ -105,6 +106,18 @@ pub struct RegressArgs {
     /// Print the report(s) as one JSON document instead of text.
     #[arg(long)]
     pub json: bool,
+    /// Bin the compared samples of --formula / --fpcore by the exact value of this expression
+    /// over the inputs (e.g. a triangle's area) and show the error in each bin.
+    #[arg(long, value_name = "EXPR")]
+    pub bin: Option<String>,
+    /// Write one CSV row per compared sample of --formula / --fpcore (inputs, float result,
+    /// exact result rounded, ulps, bits) to FILE.
+    #[arg(long, value_name = "FILE")]
+    pub csv: Option<String>,
+    /// Write an HTML page of the --formula / --fpcore report with a plot of the error against
+    /// each input to FILE.
+    #[arg(long, value_name = "FILE")]
+    pub html: Option<String>,
 }
 
 impl RegressArgs {
@@ -383,6 +396,17 @@ pub fn run(args: &RegressArgs) -> Result<ExitCode, Error> {
             "--program is the float side of --formula or --fpcore, not of a built-in kernel".into(),
         ));
     }
+    for (flag, given) in [
+        ("--bin", args.bin.is_some()),
+        ("--csv", args.csv.is_some()),
+        ("--html", args.html.is_some()),
+    ] {
+        if given {
+            return Err(Error::Usage(format!(
+                "{flag} applies to --formula and --fpcore, not to a built-in kernel"
+            )));
+        }
+    }
     if args.sample.is_some() {
         return Err(Error::Usage(
             "--sample applies to --formula and --fpcore; a built-in kernel has its own generator"
@@ -437,6 +461,7 @@ pub fn run(args: &RegressArgs) -> Result<ExitCode, Error> {
             name: report.formula.clone(),
             line: None,
             outcome: Ok(report),
+            bins: None,
         };
         sweep::print(&[entry], true)?;
         return Ok(ExitCode::SUCCESS);

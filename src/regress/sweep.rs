@@ -26,6 +26,8 @@ pub struct Entry {
     pub line: Option<usize>,
     /// The report, or the reason it was not run (`not supported: OP`).
     pub outcome: Result<Report, String>,
+    /// The error binned by `--bin`, when asked.
+    pub bins: Option<super::explain::Bins>,
 }
 
 impl Entry {
@@ -38,6 +40,9 @@ impl Entry {
         let obj = v.as_object_mut().expect("a report is a JSON object");
         obj.insert("name".into(), json!(self.name));
         obj.insert("line".into(), json!(self.line));
+        if let Some(b) = &self.bins {
+            obj.insert("bins".into(), b.to_json());
+        }
         // `name` and `line` first, for readers.
         let mut ordered = serde_json::Map::new();
         for key in ["name", "line"] {
@@ -76,6 +81,7 @@ impl Entry {
             name,
             line,
             outcome,
+            bins: None,
         })
     }
 }
@@ -211,7 +217,12 @@ pub fn print(entries: &[Entry], as_json: bool) -> Result<(), Error> {
     }
     for e in entries {
         match &e.outcome {
-            Ok(r) => text.line(r),
+            Ok(r) => {
+                text.line(r);
+                if let Some(b) = &e.bins {
+                    text.line(b.text());
+                }
+            }
             Err(why) => text.line(format_args!("{}: {why}\n", e.name)),
         }
     }
@@ -336,6 +347,7 @@ pub fn merge_cmd(args: &MergeArgs) -> Result<std::process::ExitCode, Error> {
             name: entry.name.clone(),
             line: entry.line,
             outcome,
+            bins: None,
         });
     }
     print(&merged, args.json)?;

@@ -7,6 +7,7 @@
 //! the order written) or, with `--program`, the user's executable fed through
 //! [`exactcheck_float::program::ProgramRunner`].
 
+use super::explain;
 use super::sweep::Entry;
 use super::RegressArgs;
 use crate::Error;
@@ -155,7 +156,8 @@ fn options(args: &RegressArgs) -> Options {
     }
 }
 
-/// One sweep of a program over a domain, as an entry.
+/// One sweep of a program over a domain, as an entry: the report with its worst cases
+/// explained, the `--bin` table, and the `--csv` and `--html` files written.
 fn sweep_entry(
     args: &RegressArgs,
     program: &Program,
@@ -171,16 +173,95 @@ fn sweep_entry(
             args.program_echo_index,
         )?,
     };
+    let mut bins = args
+        .bin
+        .as_deref()
+        .map(|b| explain::Bins::new(b, program))
+        .transpose()?;
+    let mut csv = args.csv.as_ref().map(|_| explain::Csv::new(program));
+    let run_samples = args
+        .shard
+        .map_or(args.samples, |s| s.range(args.samples).len());
+    let mut points = args
+        .html
+        .as_ref()
+        .map(|_| explain::Points::new(run_samples));
     let progress = args.progress(&program.name);
-    let report = exactcheck_float::run(&subject, gen, args.sweep(), &options(args), &|done| {
-        progress.update(done);
-    })
-    .map_err(|e| Error::Input(e.to_string()))?;
+    let mut observe = |s: &exactcheck_float::Observed<'_>| {
+        if let Some(b) = &mut bins {
+            b.add(s)?;
+        }
+        if let Some(c) = &mut csv {
+            c.add(s);
+        }
+        if let Some(p) = &mut points {
+            p.add(s);
+        }
+        Ok(())
+    };
+    let result = exactcheck_float::run_observed(
+        &subject,
+        gen,
+        args.sweep(),
+        &options(args),
+        &|done| progress.update(done),
+        &mut observe,
+    );
+    let mut report = match result {
+        Ok(r) => r,
+        Err(exactcheck_float::RegressError::Observer(why)) => return Err(Error::Input(why)),
+        Err(e) => return Err(Error::Input(e.to_string())),
+    };
+    explain::explain_report(program, &mut report, args.program.is_some());
+    if let (Some(path), Some(c)) = (&args.csv, &csv) {
+        crate::output::write_file(path, c.contents().as_bytes(), &[])?;
+    }
+    if let (Some(path), Some(p)) = (&args.html, &points) {
+        let mut text = report.to_string();
+        if let Some(b) = &bins {
+            text.push('\n');
+            text.push_str(&b.text());
+        }
+        let page = explain::html(program, &text, p)?;
+        crate::output::write_file(path, page.as_bytes(), &[])?;
+    }
     Ok(Entry {
         name: program.name.clone(),
         line,
         outcome: Ok(report),
+        bins,
     })
+}
+
+/// Checks `--bin`, `--csv` and `--html` before any sweep: the output paths, and options that
+/// a shard or several benchmarks cannot take.
+fn check_outputs(args: &RegressArgs, benchmarks: usize) -> Result<(), Error> {
+    for (flag, path) in [("--csv", &args.csv), ("--html", &args.html)] {
+        if let Some(p) = path {
+            explain::check_output(flag, p)?;
+            if benchmarks > 1 {
+                return Err(Error::Usage(format!(
+                    "{flag} writes one benchmark's file: the FPCore file has {benchmarks}, choose one with --name"
+                )));
+            }
+        }
+    }
+    if args.shard.is_some() {
+        for (flag, given) in [
+            ("--bin", args.bin.is_some()),
+            ("--html", args.html.is_some()),
+        ] {
+            if given {
+                return Err(Error::Usage(format!(
+                    "{flag} needs the whole sweep; `merge` does not combine it: leave out --shard"
+                )));
+            }
+        }
+    }
+    if args.csv.is_some() && args.csv == args.html {
+        return Err(Error::Usage("--csv and --html name the same file".into()));
+    }
+    Ok(())
 }
 
 /// `regress --formula EXPR [--vars ...] [--domain ...]`.
@@ -190,6 +271,10 @@ fn sweep_entry(
 pub fn formula_entries(args: &RegressArgs, text: &str) -> Result<Vec<Entry>, Error> {
     let program = Program::parse(text, args.vars.as_deref())
         .map_err(|e| Error::Input(format!("--formula: {e}")))?;
+    check_outputs(args, 1)?;
+    if let Some(b) = &args.bin {
+        explain::Bins::new(b, &program)?;
+    }
     // No --domain: every input over all finite doubles.
     let domain = parse_domain(args.domain.as_deref().unwrap_or(""), &program.inputs)
         .map_err(|e| Error::Input(format!("--domain: {e}")))?;
@@ -229,6 +314,7 @@ pub fn fpcore_entries(args: &RegressArgs, path: &str) -> Result<Vec<Entry>, Erro
     if chosen.is_empty() {
         return Err(Error::Input(format!("{path} contains no FPCore")));
     }
+    check_outputs(args, chosen.len())?;
     if args.program.is_some() && chosen.len() > 1 {
         return Err(Error::Usage(format!(
             "--program runs one benchmark: {path} has {}, choose one with --name",
@@ -243,6 +329,7 @@ pub fn fpcore_entries(args: &RegressArgs, path: &str) -> Result<Vec<Entry>, Erro
                 name,
                 line: Some(b.line),
                 outcome: Err(unsupported.to_string()),
+                bins: None,
             },
             Ok(program) => {
                 let mut program = program.clone();
@@ -254,6 +341,7 @@ pub fn fpcore_entries(args: &RegressArgs, path: &str) -> Result<Vec<Entry>, Erro
                         name,
                         line: Some(b.line),
                         outcome: Err(format!("no input to sample: {e}")),
+                        bins: None,
                     },
                     Ok(gen) => sweep_entry(args, &program, &gen, Some(b.line))?,
                 }

@@ -18,10 +18,13 @@
 //! * `float`: the IEEE double side ([`Program::eval_f64`], [`Program::eval_f64_into`]);
 //! * `real`: the exact side ([`Program::eval_exact`], [`Reference`], [`ExactStop`], the accuracy
 //!   contract [`REL_BITS`] and the precision schedule [`START_PRECISION`] to
-//!   [`MAX_PRECISION`]), with `interval`, its dyadic interval arithmetic.
+//!   [`MAX_PRECISION`]), with `interval`, its dyadic interval arithmetic;
+//! * `explain`: where the error comes from at one sample ([`Program::local_errors`],
+//!   [`Program::conditioning`]).
 use crate::rational::Rational;
 
 mod compile;
+mod explain;
 mod float;
 pub mod fpcore;
 mod interval;
@@ -34,6 +37,7 @@ mod transc_tests;
 mod walk;
 
 pub use compile::CompileError;
+pub use explain::{Conditioning, LocalError};
 pub use float::{call_f64, pow_f64, STACK_SLOTS};
 pub use real::{ExactStop, Reference, MAX_PRECISION, REL_BITS, START_PRECISION};
 

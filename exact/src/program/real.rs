@@ -96,14 +96,14 @@ pub enum ExactStop {
 
 /// A value of the exact evaluation: a rational, or an enclosure of an irrational number.
 #[derive(Clone, Debug)]
-enum XV {
+pub(super) enum XV {
     Exact(Rational),
     Approx(Box<Iv>),
 }
 
 /// Why an interval pass stops.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Halt {
+pub(super) enum Halt {
     Outside,
     TooLarge,
     /// Try again at a higher precision; `ambiguous`: a decision (not just accuracy) was missing.
@@ -113,9 +113,9 @@ enum Halt {
 }
 
 /// The exact domain at working precision `p`.
-struct Real<'a> {
-    x: &'a [Rational],
-    p: u64,
+pub(super) struct Real<'a> {
+    pub(super) x: &'a [Rational],
+    pub(super) p: u64,
 }
 
 /// `q` if its numerator and denominator have at most `constant-bits` bits together.
@@ -146,7 +146,7 @@ impl Real<'_> {
     }
 
     /// The sign of `v`; `Err(AMBIGUOUS)` if its enclosure straddles zero.
-    fn sign(&self, v: &XV) -> Result<Ordering, Halt> {
+    pub(super) fn sign(&self, v: &XV) -> Result<Ordering, Halt> {
         match v {
             XV::Exact(q) => Ok(q.cmp(&Rational::ZERO)),
             XV::Approx(iv) => iv.sign().ok_or(AMBIGUOUS),
@@ -369,13 +369,13 @@ fn holds(op: CmpOp, ord: Ordering) -> bool {
 }
 
 /// The double nearest to `d` (ties to even; beyond the range, an infinity).
-fn nearest_double(d: &super::interval::Dy) -> f64 {
+pub(super) fn nearest_double(d: &super::interval::Dy) -> f64 {
     crate::to_f64::rational_to_f64(&d.to_big_rational())
 }
 
 /// Whether both ends of `iv` round to the same double: then so does every point of it (rounding
 /// is monotone), the true value and the midpoint included.
-fn rounding_decided(iv: &Iv) -> bool {
+pub(super) fn rounding_decided(iv: &Iv) -> bool {
     nearest_double(&iv.lo).to_bits() == nearest_double(&iv.hi).to_bits()
 }
 

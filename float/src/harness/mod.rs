@@ -173,6 +173,8 @@ pub enum RegressError {
     /// The float side failed for good (an external program crashed, hung or answered garbage);
     /// the message names the sample.
     FloatSide(String),
+    /// The observer of [`run_observed`] stopped the sweep; the message says why.
+    Observer(String),
 }
 
 impl std::fmt::Display for RegressError {
@@ -183,7 +185,7 @@ impl std::fmt::Display for RegressError {
                 "the formula takes {formula} inputs but the generator makes {generator}"
             ),
             RegressError::InvalidOptions(why) => write!(f, "invalid regression options: {why}"),
-            RegressError::FloatSide(why) => f.write_str(why),
+            RegressError::FloatSide(why) | RegressError::Observer(why) => f.write_str(why),
         }
     }
 }
@@ -623,6 +625,41 @@ pub fn run(
     options: &Options,
     progress: &dyn Fn(usize),
 ) -> Result<Report, RegressError> {
+    run_observed(subject, gen, sweep, options, progress, &mut |_| Ok(()))
+}
+
+/// One compared sample as the sweep measured it, for per-sample exports ([`run_observed`]).
+#[derive(Clone, Copy, Debug)]
+pub struct Observed<'a> {
+    /// The sample index.
+    pub index: usize,
+    /// The inputs.
+    pub inputs: &'a [f64],
+    /// The exact outputs.
+    pub exact: &'a [ExactValue],
+    /// The float outputs (`None`: the float side reported a zero divisor).
+    pub float: Option<&'a [f64]>,
+    /// Each output's error in ulps.
+    pub ulps: &'a [f64],
+    /// The sample's error in ulps (infinite for a float failure).
+    pub max_ulps: f64,
+    /// The sample's bits of error (Herbie's measure).
+    pub bits: f64,
+}
+
+/// [`run`], calling `observe` with every compared sample in sample order (from the sweep's
+/// thread); an `Err` from it ends the sweep with [`RegressError::Observer`].
+///
+/// # Errors
+/// As [`run`], and [`RegressError::Observer`].
+pub fn run_observed(
+    subject: &(impl Subject + ?Sized),
+    gen: &(impl InputGen + ?Sized),
+    sweep: Sweep,
+    options: &Options,
+    progress: &dyn Fn(usize),
+    observe: &mut dyn FnMut(&Observed<'_>) -> Result<(), String>,
+) -> Result<Report, RegressError> {
     use rayon::prelude::*;
     if !(options.shrink_fraction > 0.0 && options.shrink_fraction <= 1.0) {
         return Err(RegressError::InvalidOptions(format!(
@@ -701,6 +738,16 @@ pub fn run(
                 Err(e) => acc.skip(e),
                 Ok(ev) => {
                     acc.add(&ev);
+                    observe(&Observed {
+                        index: start + k,
+                        inputs: &x,
+                        exact: &ev.exact,
+                        float: ev.float.as_deref(),
+                        ulps: &ev.ulps,
+                        max_ulps: ev.max_ulps,
+                        bits: ev.bits,
+                    })
+                    .map_err(RegressError::Observer)?;
                     keep(&mut kept, options.worst, start + k, x, ev);
                 }
             }
@@ -727,6 +774,7 @@ pub fn run(
                 shrunk,
                 shrink_steps: steps,
                 shrink_evaluations: evaluations,
+                explanation: None,
             })
         })
         .collect::<Result<Vec<_>, RegressError>>()?;
