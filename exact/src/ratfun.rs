@@ -18,9 +18,28 @@
 //! non-zero pseudo-remainder of the primitive parts, each remainder made primitive (and monic)
 //! before the next step. Every product is taken with [`Poly::try_mul`], so the `degree` and
 //! `terms` limits bound the work.
+//!
+//! # Cheap cancellation
+//! The remainder sequence is expensive on the large numerators that derivatives and products
+//! of fractions build, and almost every gcd met there is 1. So, with rational coefficients,
+//! two polynomials are first tested for coprimality by their images modulo the prime
+//! `2^61 - 1` ([`certified_coprime`]): for each variable `v` they share, the other variables
+//! are replaced by fixed residues and the univariate gcd in `v` is computed modulo `p`; degree
+//! 0 for every `v`, with a leading coefficient that does not vanish, proves the gcd over Q
+//! constant (the image of the true gcd divides the image gcd and keeps its degree). A
+//! fraction is cancelled ([`RatFun`]'s operations) by exact division by the divisors already
+//! met (a denominator `W^5` whose numerator carries `W^2` loses it by two divisions) until the
+//! test proves numerator and denominator coprime; only when neither settles it does the
+//! remainder sequence run. Sums keep the least common denominator (the gcd of the two
+//! denominators, small polynomials), and a sum over coprime denominators is in lowest terms
+//! without any gcd with its numerator. The gcd crates for Rust (none multivariate over Q with
+//! these limits) could not replace this.
 
+use crate::modp::ModP;
 use crate::poly::{Poly, SizeError, Var};
-use exactcheck_core::{Field, Ring};
+use crate::Rational;
+use exactcheck_core::{Field, Ring, Rng};
+use std::any::Any;
 
 /// A fraction of polynomials in lowest terms with a monic denominator, and the divisors met.
 #[derive(Clone, Debug, PartialEq)]
@@ -94,7 +113,7 @@ impl<C: Field> RatFun<C> {
         for c in &b.conditions {
             push_condition(&mut conditions, c);
         }
-        let (num, den) = lowest_terms(num, den)?;
+        let (num, den) = cancel(num, den, &conditions)?;
         Ok(RatFun {
             num,
             den,
@@ -109,11 +128,38 @@ impl<C: Field> RatFun<C> {
             let num = self.num.add_ref(&sign(o.num.clone()));
             return Self::reduced(num, self.den.clone(), self, o);
         }
-        let num = self
-            .num
-            .try_mul(&o.den)?
-            .add_ref(&sign(o.num.try_mul(&self.den)?));
-        Self::reduced(num, self.den.try_mul(&o.den)?, self, o)
+        // Over the least common denominator `b (d / g)`, `g = gcd(b, d)`: with `g = 1` the
+        // sum `(a d + c b) / (b d)` of two fractions in lowest terms is in lowest terms (a
+        // common factor of it and `b` would divide `c b` and so `a d`, but `a` and `d` are prime
+        // to `b`), so no gcd with the numerator is needed.
+        let g = poly_gcd(&self.den, &o.den)?;
+        let (bg, dg) = if g.is_constant() {
+            (self.den.clone(), o.den.clone())
+        } else {
+            (
+                div_exact(&self.den, &g).expect("the gcd divides the denominator"),
+                div_exact(&o.den, &g).expect("the gcd divides the denominator"),
+            )
+        };
+        let num = self.num.try_mul(&dg)?.add_ref(&sign(o.num.try_mul(&bg)?));
+        let den = self.den.try_mul(&dg)?;
+        if g.is_constant() {
+            let mut conditions = self.conditions.clone();
+            for c in &o.conditions {
+                push_condition(&mut conditions, c);
+            }
+            let (num, den) = if num.is_zero() {
+                (num, Poly::one())
+            } else {
+                monic_den(num, den)
+            };
+            return Ok(RatFun {
+                num,
+                den,
+                conditions,
+            });
+        }
+        Self::reduced(num, den, self, o)
     }
 
     /// `-self`.
@@ -191,7 +237,7 @@ impl<C: Field> RatFun<C> {
         let dd = poly_derivative(&self.den, v);
         let num = dn.try_mul(&self.den)?.sub_ref(&self.num.try_mul(&dd)?);
         let den = self.den.try_mul(&self.den)?;
-        let (num, den) = lowest_terms(num, den)?;
+        let (num, den) = cancel(num, den, &self.conditions)?;
         Ok(RatFun {
             num,
             den,
@@ -244,10 +290,32 @@ fn monic_den<C: Field>(num: Poly<C>, den: Poly<C>) -> (Poly<C>, Poly<C>) {
     }
 }
 
-/// `num / den` with their gcd cancelled and `den` monic (`0 / 1` for a zero numerator).
-fn lowest_terms<C: Field>(num: Poly<C>, den: Poly<C>) -> Result<(Poly<C>, Poly<C>), SizeError> {
+/// `num / den` with their gcd cancelled and `den` monic (`0 / 1` for a zero numerator): the
+/// divisors in `hints` that divide both are divided out while [`certified_coprime`] cannot
+/// prove the two coprime; when it still cannot, the remainder sequence ([`poly_gcd`]) cancels
+/// what is left. See the module documentation.
+fn cancel<C: Field>(
+    mut num: Poly<C>,
+    mut den: Poly<C>,
+    hints: &[Poly<C>],
+) -> Result<(Poly<C>, Poly<C>), SizeError> {
     if num.is_zero() {
         return Ok((num, Poly::one()));
+    }
+    while !den.is_constant() {
+        match certified_coprime(&num, &den) {
+            None => break,
+            Some(true) => return Ok(monic_den(num, den)),
+            Some(false) => {}
+        }
+        let divided = hints.iter().filter(|h| !h.is_constant()).find_map(|h| {
+            let d = div_exact(&den, h)?;
+            div_image_possible(&num, h).then(|| div_exact(&num, h).map(|n| (n, d)))?
+        });
+        match divided {
+            Some((n, d)) => (num, den) = (n, d),
+            None => break,
+        }
     }
     if den.is_constant() {
         return Ok(monic_den(num, den));
@@ -259,6 +327,152 @@ fn lowest_terms<C: Field>(num: Poly<C>, den: Poly<C>) -> Result<(Poly<C>, Poly<C
     let num = div_exact(&num, &g).expect("the gcd divides the numerator");
     let den = div_exact(&den, &g).expect("the gcd divides the denominator");
     Ok(monic_den(num, den))
+}
+
+/// The seed of the residues [`certified_coprime`] substitutes (any fixed value: the test is
+/// sound for every choice, and a bad one only costs a fallback).
+const COPRIME_SEED: u64 = 0x6763_645f_6d6f_6470;
+
+/// Both polynomials as polynomials with rational coefficients, `None` for another field.
+fn as_rational<'a, C: Field>(
+    a: &'a Poly<C>,
+    b: &'a Poly<C>,
+) -> Option<(&'a Poly<Rational>, &'a Poly<Rational>)> {
+    let a = (a as &dyn Any).downcast_ref::<Poly<Rational>>()?;
+    let b = (b as &dyn Any).downcast_ref::<Poly<Rational>>()?;
+    Some((a, b))
+}
+
+/// The residues substituted for variables `0..n` (the same for every call).
+fn residues(n: usize) -> Vec<ModP> {
+    let mut rng = Rng::new(COPRIME_SEED);
+    (0..n).map(|_| ModP::random(&mut rng)).collect()
+}
+
+/// The image of `p` modulo `2^61 - 1` as a polynomial in `v` (coefficient `i` of `v^i`), every
+/// other variable `w` replaced by `at[w]`; `None` when a coefficient's denominator is a
+/// multiple of the prime.
+fn image_in(p: &Poly<Rational>, v: Var, at: &[ModP]) -> Option<Vec<ModP>> {
+    let mut out = vec![ModP::ZERO; p.degree_in(v) as usize + 1];
+    for (m, c) in p.terms() {
+        let mut x = ModP::from_rational(c).ok()?;
+        let mut e_v = 0;
+        for (w, e) in m.exponents() {
+            if w == v {
+                e_v = e as usize;
+            } else {
+                x *= at[w as usize].pow_u64(u64::from(e));
+            }
+        }
+        out[e_v] += x;
+    }
+    Some(out)
+}
+
+/// `f` without its zero leading coefficients.
+fn trimmed(mut f: Vec<ModP>) -> Vec<ModP> {
+    while f.last().is_some_and(ModP::is_zero) {
+        f.pop();
+    }
+    f
+}
+
+/// The remainder of `f` by `g` (`g` trimmed, not zero) modulo the prime.
+fn rem_mod_p(mut f: Vec<ModP>, g: &[ModP]) -> Vec<ModP> {
+    let inv = g[g.len() - 1].inv().expect("a trimmed polynomial leads with a unit");
+    while f.len() >= g.len() {
+        let q = f[f.len() - 1] * inv;
+        let shift = f.len() - g.len();
+        for (i, gi) in g.iter().enumerate() {
+            f[shift + i] -= q * *gi;
+        }
+        f.pop();
+        f = trimmed(f);
+    }
+    f
+}
+
+/// The degree of the gcd of `f` and `g` modulo the prime (`None` when both are zero).
+fn gcd_degree_mod_p(f: Vec<ModP>, g: Vec<ModP>) -> Option<usize> {
+    let (mut f, mut g) = (trimmed(f), trimmed(g));
+    while !g.is_empty() {
+        let r = rem_mod_p(f, &g);
+        f = g;
+        g = r;
+    }
+    f.len().checked_sub(1)
+}
+
+/// Whether `a` and `b` are proved coprime by their images modulo `2^61 - 1` (see the module
+/// documentation): `Some(true)` when proved, `Some(false)` when not (they probably share a
+/// factor), `None` when the coefficients are not rational (the test does not apply).
+///
+/// Soundness: let `g` be the gcd over Q and `v` a variable of both. Scaled to be primitive over
+/// the rationals whose denominators are prime to `p`, `g` and `a / g` have such coefficients
+/// (Gauss's lemma), so the substitution `phi` (reduction modulo `p`, then the residues) maps
+/// `g` to a divisor of both images. When the image of `a` keeps its degree in `v`, the leading
+/// coefficient of `g` (a factor of `a`'s) does not vanish under `phi`, so `phi(g)` has the
+/// degree of `g` in `v`, at most that of the image gcd. Degree 0 for every shared `v` leaves
+/// `g` without the shared variables, and `g` divides both, so it is constant.
+pub fn certified_coprime<C: Field>(a: &Poly<C>, b: &Poly<C>) -> Option<bool> {
+    let (a, b) = as_rational(a, b)?;
+    if a.is_zero() || b.is_zero() {
+        return Some(a.is_constant() && b.is_constant() && !(a.is_zero() && b.is_zero()));
+    }
+    let vb = b.variables();
+    let shared: Vec<Var> = a
+        .variables()
+        .into_iter()
+        .filter(|v| vb.contains(v))
+        .collect();
+    let n = shared
+        .iter()
+        .chain(&vb)
+        .chain(&a.variables())
+        .map(|&v| v as usize + 1)
+        .max()
+        .unwrap_or(0);
+    let at = residues(n);
+    for v in shared {
+        let (Some(fa), Some(fb)) = (image_in(a, v, &at), image_in(b, v, &at)) else {
+            return Some(false);
+        };
+        let keeps = |f: &[ModP]| f.last().is_some_and(|c| !c.is_zero());
+        if !keeps(&fa) && !keeps(&fb) {
+            return Some(false);
+        }
+        if gcd_degree_mod_p(fa, fb) != Some(0) {
+            return Some(false);
+        }
+    }
+    Some(true)
+}
+
+/// Whether `h` may divide `p` (rational coefficients): `false` when, in a variable of `h`, the
+/// image of `h` modulo the prime keeps its degree and does not divide the image of `p` (then
+/// `h` does not divide `p`, and the exact division need not be tried); `true` otherwise.
+fn div_image_possible<C: Field>(p: &Poly<C>, h: &Poly<C>) -> bool {
+    let Some((p, h)) = as_rational(p, h) else {
+        return true;
+    };
+    let Some(&v) = h.variables().first() else {
+        return true;
+    };
+    let n = p
+        .variables()
+        .iter()
+        .chain(&h.variables())
+        .map(|&w| w as usize + 1)
+        .max()
+        .unwrap_or(0);
+    let at = residues(n);
+    let (Some(fp), Some(fh)) = (image_in(p, v, &at), image_in(h, v, &at)) else {
+        return true;
+    };
+    if fh.last().is_none_or(ModP::is_zero) {
+        return true;
+    }
+    trimmed(rem_mod_p(fp, &fh)).is_empty()
 }
 
 /// The partial derivative of `p` in `v`.
@@ -407,7 +621,7 @@ pub(crate) fn gcd_capped<C: Field>(
     if b.is_zero() {
         return Ok(a.make_monic());
     }
-    if a.is_constant() || b.is_constant() {
+    if a.is_constant() || b.is_constant() || certified_coprime(a, b) == Some(true) {
         return Ok(Poly::one());
     }
     let (va, vb) = (a.variables(), b.variables());
