@@ -724,9 +724,17 @@ impl Defs {
                 ));
             }
             let value = self.scalar(&args[2], stack, "the value of subs")?;
-            return Ok(self
-                .resolve(&args[0], stack)?
-                .map(|e| substitute(&e, v, &value)));
+            let failed = std::cell::RefCell::new(None);
+            let out = self.resolve(&args[0], stack)?.map(|e| {
+                substitute_free(&e, v, &value).unwrap_or_else(|why| {
+                    failed.borrow_mut().get_or_insert(why);
+                    e
+                })
+            });
+            return match failed.into_inner() {
+                Some(why) => err(format!("subs at {pos}: {why}")),
+                None => Ok(out),
+            };
         }
         if super::FUNCTIONS.contains(&name) {
             // A function of the core language: its arguments resolved, the call kept for the
@@ -1215,6 +1223,147 @@ pub fn substitute(e: &Expr, v: &str, value: &Expr) -> Expr {
         ExprKind::Var(n) if n == v => at_pos(value, x.pos),
         _ => x,
     })
+}
+
+/// `e` with the free occurrences of the variable `v` replaced by `value`, as `subs` means it:
+/// the substitution comes after every construct inside. A `diff` in `v` (or in a variable
+/// `value` mentions) is differentiated first, so `subs(diff(E, t), t, 0)` is `E'(0)`; the
+/// bound variable of `integrate` and `sum` is not replaced (only the bounds are), and is
+/// renamed when `value` mentions it, so that no variable of `value` is captured.
+///
+/// # Errors
+/// The one-line reason when a `diff` to take first cannot be taken exactly.
+pub fn substitute_free(e: &Expr, v: &str, value: &Expr) -> Result<Expr, String> {
+    let sub = |x: &Expr| substitute_free(x, v, value);
+    let boxed = |x: &Expr| sub(x).map(Box::new);
+    let mentions = |name: &str| {
+        let mut found = false;
+        map_tree(value, &mut |x| {
+            found |= matches!(&x.kind, ExprKind::Var(n) if n == name);
+        });
+        found
+    };
+    let kind = match &e.kind {
+        ExprKind::Var(n) if n == v => return Ok(at_pos(value, e.pos)),
+        ExprKind::Number(_) | ExprKind::Var(_) => return Ok(e.clone()),
+        ExprKind::Neg(x) => ExprKind::Neg(boxed(x)?),
+        ExprKind::Sqrt(x) => ExprKind::Sqrt(boxed(x)?),
+        ExprKind::Pow(a, b) => ExprKind::Pow(boxed(a)?, boxed(b)?),
+        ExprKind::Sum(ts) => ExprKind::Sum(
+            ts.iter()
+                .map(|(op, t)| Ok((*op, sub(t)?)))
+                .collect::<Result<_, String>>()?,
+        ),
+        ExprKind::Product(fs) => ExprKind::Product(
+            fs.iter()
+                .map(|(op, f)| Ok((*op, sub(f)?)))
+                .collect::<Result<_, String>>()?,
+        ),
+        ExprKind::Call(name, args) => {
+            let var_at = |i: usize| match args.get(i).map(|a| &a.kind) {
+                Some(ExprKind::Var(n)) => Some(n.as_str()),
+                _ => None,
+            };
+            // (argument index of the variable, indices of the arguments where it is bound).
+            let binder: Option<(usize, &[usize])> = match (name.as_str(), args.len()) {
+                ("diff", 2 | 3) => Some((1, &[0, 1])),
+                ("integrate", 4) => Some((1, &[0, 1])),
+                ("sum", 4) => Some((0, &[0, 3])),
+                _ => None,
+            };
+            match binder.and_then(|(i, bound)| Some((var_at(i)?, bound))) {
+                Some((t, _)) if name == "diff" && (t == v || mentions(t)) => {
+                    return sub(&derivative_first(e)?);
+                }
+                Some((t, bound)) if t == v || mentions(t) => {
+                    // Only the bounds see the substitution; the bound variable is renamed
+                    // apart from `value` (and from `v`) when `value` mentions it.
+                    let args = if t == v || !mentions(t) {
+                        args.clone()
+                    } else {
+                        let fresh = fresh_name(t, e, value);
+                        let renamed = Expr {
+                            kind: ExprKind::Var(fresh),
+                            pos: e.pos,
+                        };
+                        args.iter()
+                            .enumerate()
+                            .map(|(j, a)| {
+                                if bound.contains(&j) {
+                                    substitute(a, t, &renamed)
+                                } else {
+                                    a.clone()
+                                }
+                            })
+                            .collect()
+                    };
+                    let keep_bound = t == v;
+                    ExprKind::Call(
+                        name.clone(),
+                        args.iter()
+                            .enumerate()
+                            .map(|(j, a)| {
+                                if keep_bound && bound.contains(&j) {
+                                    Ok(a.clone())
+                                } else {
+                                    sub(a)
+                                }
+                            })
+                            .collect::<Result<_, String>>()?,
+                    )
+                }
+                Some((_, _)) if name == "diff" => ExprKind::Call(
+                    name.clone(),
+                    args.iter()
+                        .enumerate()
+                        .map(|(j, a)| if j == 1 { Ok(a.clone()) } else { sub(a) })
+                        .collect::<Result<_, String>>()?,
+                ),
+                _ => ExprKind::Call(
+                    name.clone(),
+                    args.iter().map(sub).collect::<Result<_, String>>()?,
+                ),
+            }
+        }
+    };
+    Ok(Expr { kind, pos: e.pos })
+}
+
+/// A variable name based on `base` that occurs in neither `e` nor `value`.
+fn fresh_name(base: &str, e: &Expr, value: &Expr) -> String {
+    let mut taken = HashSet::new();
+    for tree in [e, value] {
+        map_tree(tree, &mut |x| {
+            if let ExprKind::Var(n) = &x.kind {
+                taken.insert(n.clone());
+            }
+        });
+    }
+    (1..)
+        .map(|k| format!("{base}{k}"))
+        .find(|n| !taken.contains(n))
+        .expect("a finite tree leaves some name free")
+}
+
+/// The call `diff(E, t[, k])` taken: the derivative as an expression (numerator over
+/// denominator, with rational coefficients), positioned at the call.
+fn derivative_first(call: &Expr) -> Result<Expr, String> {
+    let mut vars = crate::poly::Vars::new();
+    let f = call
+        .to_ratfun::<Rational>(&mut vars)
+        .map_err(|e| format!("the derivative {call} is taken first, and fails: {e}"))?;
+    let text = if exactcheck_core::Ring::is_one(f.denominator()) {
+        format!("{}", f.numerator().display(&vars))
+    } else {
+        format!(
+            "({})/({})",
+            f.numerator().display(&vars),
+            f.denominator().display(&vars)
+        )
+    };
+    let parsed = super::parse_expr(&text)
+        .map_err(|e| format!("the derivative {call} is taken first, and fails: {e}"))?;
+    Ok(at_pos(&parsed, call.pos))
 }
 
 /// Rebuilds `e` bottom-up, handing every rebuilt node (its children done) to `f`.
