@@ -17,6 +17,7 @@
 //! `(p^2 - q^2)^2 + (2pq)^2 = (p^2 + q^2)^2`.
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
+use exactcheck_exact::expr::library::{resolve, Val};
 use exactcheck_exact::expr::{parse_expr, Expr};
 use exactcheck_exact::poly::Vars;
 use exactcheck_exact::prove::{decide_fraction, decide_in, Decision, FractionIdentity};
@@ -63,6 +64,9 @@ fn polynomial(l: &Expr, r: &Expr) -> bool {
     )
 }
 
+/// The two sides of a rational identity, then those of its cleared numerator.
+type Pair = ((Expr, Expr), (Expr, Expr));
+
 /// `bezier(t, c_0, ..., c_n)` with `c_i = f(i)`.
 fn bezier(n: usize, f: impl Fn(usize) -> String) -> String {
     let pts: Vec<String> = (0..=n).map(f).collect();
@@ -71,7 +75,7 @@ fn bezier(n: usize, f: impl Fn(usize) -> String) -> String {
 
 /// The curvature identity of a rational Bezier curve of degree `n` (rational sides, then the
 /// cleared numerator's polynomial sides).
-fn curvature(n: usize) -> ((Expr, Expr), (Expr, Expr)) {
+fn curvature(n: usize) -> Pair {
     let x = bezier(n, |i| format!("w{i}*x{i}"));
     let y = bezier(n, |i| format!("w{i}*y{i}"));
     let w = bezier(n, |i| format!("w{i}"));
@@ -83,13 +87,7 @@ fn curvature(n: usize) -> ((Expr, Expr), (Expr, Expr)) {
         }
     };
     let (fx, fy) = (format!("({x})/({w})"), format!("({y})/({w})"));
-    let lhs = format!(
-        "{}*{} - {}*{}",
-        d(&fx, 1),
-        d(&fy, 2),
-        d(&fy, 1),
-        d(&fx, 2)
-    );
+    let lhs = format!("{}*{} - {}*{}", d(&fx, 1), d(&fy, 2), d(&fy, 1), d(&fx, 2));
     let det = format!(
         "({w})*({xd}*{yd2} - {yd}*{xd2}) - {wd}*(({x})*{yd2} - ({y})*{xd2}) + {wd2}*(({x})*{yd} - ({y})*{xd})",
         xd = d(&x, 1),
@@ -108,7 +106,10 @@ fn curvature(n: usize) -> ((Expr, Expr), (Expr, Expr)) {
         wd = d(&w, 1),
         wd2 = d(&w, 2),
     );
-    let e = |s: String| parse_expr(&s).unwrap();
+    let e = |s: String| match resolve(&s).unwrap() {
+        Val::Scalar(x) => x,
+        other => panic!("a scalar, not {other:?}"),
+    };
     (
         (e(lhs), e(format!("({det})/({w})^3"))),
         (e(cleared), e(format!("({det})*({w})^2"))),
@@ -116,7 +117,7 @@ fn curvature(n: usize) -> ((Expr, Expr), (Expr, Expr)) {
 }
 
 /// The rational unit circle identity with `p = (t + s + 1)^k`, `q = (t - 2s)^k`.
-fn circle(k: u32) -> ((Expr, Expr), (Expr, Expr)) {
+fn circle(k: u32) -> Pair {
     let (p, q) = (format!("(t + s + 1)^{k}"), format!("(t - 2*s)^{k}"));
     let den = format!("({p}^2 + {q}^2)");
     let e = |s: String| parse_expr(&s).unwrap();
@@ -133,14 +134,17 @@ fn circle(k: u32) -> ((Expr, Expr), (Expr, Expr)) {
 }
 
 /// Benchmarks both sides of each identity of `cases` in group `name`.
-fn pair_group(c: &mut Criterion, name: &str, cases: Vec<(u32, ((Expr, Expr), (Expr, Expr)))>) {
+fn pair_group(c: &mut Criterion, name: &str, cases: Vec<(u32, Pair)>) {
     let mut g = c.benchmark_group(name);
     g.sample_size(10);
     g.warm_up_time(Duration::from_millis(300));
     g.measurement_time(Duration::from_secs(2));
     for (k, ((rl, rr), (pl, pr))) in cases {
         assert!(rational(&rl, &rr), "the rational identity of {name} at {k}");
-        assert!(polynomial(&pl, &pr), "the polynomial identity of {name} at {k}");
+        assert!(
+            polynomial(&pl, &pr),
+            "the polynomial identity of {name} at {k}"
+        );
         g.bench_with_input(BenchmarkId::new("rational", k), &k, |b, _| {
             b.iter(|| rational(&rl, &rr))
         });
@@ -153,7 +157,10 @@ fn pair_group(c: &mut Criterion, name: &str, cases: Vec<(u32, ((Expr, Expr), (Ex
 
 fn realistic(c: &mut Criterion) {
     let degrees = [2u32, 3, 4];
-    let curves = degrees.iter().map(|&n| (n, curvature(n as usize))).collect();
+    let curves = degrees
+        .iter()
+        .map(|&n| (n, curvature(n as usize)))
+        .collect();
     pair_group(c, "curvature_vs_numerator", curves);
     let circles = [2u32, 4, 6].iter().map(|&k| (k, circle(k))).collect();
     pair_group(c, "circle_vs_numerator", circles);

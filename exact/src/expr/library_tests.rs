@@ -355,7 +355,10 @@ fn subs_differentiates_before_substituting() {
         "subs(diff(t^3 + a*t^2 + b*t, t, 2), t, 2)",
         "12 + 2*a"
     ));
-    assert_eq!(fraction(&mut d, "subs(diff(1/(1 + t), t), t, 1)"), "-1/4 / 1");
+    assert_eq!(
+        fraction(&mut d, "subs(diff(1/(1 + t), t), t, 1)"),
+        "-1/4 / 1"
+    );
     // A value that mentions the variable of diff: d/dt (x t^2) = 2 x t, then x = t.
     assert!(same(&mut d, "subs(diff(x*t^2, t), x, t)", "2*t^2"));
     // Another variable: the substitution commutes with diff.
@@ -370,7 +373,11 @@ fn subs_respects_bound_variables() {
     assert!(same(&mut d, "subs(sum(k, 1, 3, k*x), x, k)", "6*k"));
     assert!(same(&mut d, "subs(sum(k, 1, n, k), n, 4)", "10"));
     // The variable of integrate is bound; its bounds are not.
-    assert!(same(&mut d, "subs(integrate(t*x, t, 0, b), t, 7)", "x*b^2/2"));
+    assert!(same(
+        &mut d,
+        "subs(integrate(t*x, t, 0, b), t, 7)",
+        "x*b^2/2"
+    ));
     assert!(same(&mut d, "subs(integrate(t*x, t, 0, b), b, 2)", "2*x"));
     assert!(same(&mut d, "subs(integrate(x, t, 0, 1), x, t)", "t"));
 }

@@ -1,5 +1,6 @@
 //! Identities between rational functions: `L = R` with `L = a/b`, `R = c/d` is decided as the
-//! polynomial identity `a d - c b = 0` (the denominators cleared) wherever the denominators and
+//! polynomial identity `a (d/g) - c (b/g) = 0`, `g = gcd(b, d)` (the denominators cleared by
+//! their least common multiple: `a - c` when they are equal) wherever the denominators and
 //! every divisor met in `L` and `R` are non-zero; the counter-example search avoids those zeros.
 
 use super::{decide_where, DecideError, Decision, Domain, PointField};
