@@ -18,9 +18,28 @@
 //! non-zero pseudo-remainder of the primitive parts, each remainder made primitive (and monic)
 //! before the next step. Every product is taken with [`Poly::try_mul`], so the `degree` and
 //! `terms` limits bound the work.
+//!
+//! # Cheap cancellation
+//! The remainder sequence is expensive on the large numerators that derivatives and products
+//! of fractions build, and almost every gcd met there is 1. So, with rational coefficients,
+//! two polynomials are first tested for coprimality by their images modulo the prime
+//! `2^61 - 1` ([`certified_coprime`]): for each variable `v` they share, the other variables
+//! are replaced by fixed residues and the univariate gcd in `v` is computed modulo `p`; degree
+//! 0 for every `v`, with a leading coefficient that does not vanish, proves the gcd over Q
+//! constant (the image of the true gcd divides the image gcd and keeps its degree). A
+//! fraction is cancelled ([`RatFun`]'s operations) by exact division by the divisors already
+//! met (a denominator `W^5` whose numerator carries `W^2` loses it by two divisions) until the
+//! test proves numerator and denominator coprime; only when neither settles it does the
+//! remainder sequence run. Sums keep the least common denominator (the gcd of the two
+//! denominators, small polynomials), and a sum over coprime denominators is in lowest terms
+//! without any gcd with its numerator. The gcd crates for Rust (none multivariate over Q with
+//! these limits) could not replace this.
 
+use crate::modp::ModP;
 use crate::poly::{Poly, SizeError, Var};
-use exactcheck_core::{Field, Ring};
+use crate::Rational;
+use exactcheck_core::{Field, Ring, Rng};
+use std::any::Any;
 
 /// A fraction of polynomials in lowest terms with a monic denominator, and the divisors met.
 #[derive(Clone, Debug, PartialEq)]
@@ -94,7 +113,7 @@ impl<C: Field> RatFun<C> {
         for c in &b.conditions {
             push_condition(&mut conditions, c);
         }
-        let (num, den) = lowest_terms(num, den)?;
+        let (num, den) = cancel(num, den, &conditions)?;
         Ok(RatFun {
             num,
             den,
@@ -109,11 +128,38 @@ impl<C: Field> RatFun<C> {
             let num = self.num.add_ref(&sign(o.num.clone()));
             return Self::reduced(num, self.den.clone(), self, o);
         }
-        let num = self
-            .num
-            .try_mul(&o.den)?
-            .add_ref(&sign(o.num.try_mul(&self.den)?));
-        Self::reduced(num, self.den.try_mul(&o.den)?, self, o)
+        // Over the least common denominator `b (d / g)`, `g = gcd(b, d)`: with `g = 1` the
+        // sum `(a d + c b) / (b d)` of two fractions in lowest terms is in lowest terms (a
+        // common factor of it and `b` would divide `c b` and so `a d`, but `a` and `d` are prime
+        // to `b`), so no gcd with the numerator is needed.
+        let g = poly_gcd(&self.den, &o.den)?;
+        let (bg, dg) = if g.is_constant() {
+            (self.den.clone(), o.den.clone())
+        } else {
+            (
+                div_exact(&self.den, &g).expect("the gcd divides the denominator"),
+                div_exact(&o.den, &g).expect("the gcd divides the denominator"),
+            )
+        };
+        let num = self.num.try_mul(&dg)?.add_ref(&sign(o.num.try_mul(&bg)?));
+        let den = self.den.try_mul(&dg)?;
+        if g.is_constant() {
+            let mut conditions = self.conditions.clone();
+            for c in &o.conditions {
+                push_condition(&mut conditions, c);
+            }
+            let (num, den) = if num.is_zero() {
+                (num, Poly::one())
+            } else {
+                monic_den(num, den)
+            };
+            return Ok(RatFun {
+                num,
+                den,
+                conditions,
+            });
+        }
+        Self::reduced(num, den, self, o)
     }
 
     /// `-self`.
@@ -191,7 +237,7 @@ impl<C: Field> RatFun<C> {
         let dd = poly_derivative(&self.den, v);
         let num = dn.try_mul(&self.den)?.sub_ref(&self.num.try_mul(&dd)?);
         let den = self.den.try_mul(&self.den)?;
-        let (num, den) = lowest_terms(num, den)?;
+        let (num, den) = cancel(num, den, &self.conditions)?;
         Ok(RatFun {
             num,
             den,
@@ -244,10 +290,32 @@ fn monic_den<C: Field>(num: Poly<C>, den: Poly<C>) -> (Poly<C>, Poly<C>) {
     }
 }
 
-/// `num / den` with their gcd cancelled and `den` monic (`0 / 1` for a zero numerator).
-fn lowest_terms<C: Field>(num: Poly<C>, den: Poly<C>) -> Result<(Poly<C>, Poly<C>), SizeError> {
+/// `num / den` with their gcd cancelled and `den` monic (`0 / 1` for a zero numerator): the
+/// divisors in `hints` that divide both are divided out while [`certified_coprime`] cannot
+/// prove the two coprime; when it still cannot, the remainder sequence ([`poly_gcd`]) cancels
+/// what is left. See the module documentation.
+fn cancel<C: Field>(
+    mut num: Poly<C>,
+    mut den: Poly<C>,
+    hints: &[Poly<C>],
+) -> Result<(Poly<C>, Poly<C>), SizeError> {
     if num.is_zero() {
         return Ok((num, Poly::one()));
+    }
+    while !den.is_constant() {
+        match certified_coprime(&num, &den) {
+            None => break,
+            Some(true) => return Ok(monic_den(num, den)),
+            Some(false) => {}
+        }
+        let divided = hints.iter().filter(|h| !h.is_constant()).find_map(|h| {
+            let d = div_exact(&den, h)?;
+            div_image_possible(&num, h).then(|| div_exact(&num, h).map(|n| (n, d)))?
+        });
+        match divided {
+            Some((n, d)) => (num, den) = (n, d),
+            None => break,
+        }
     }
     if den.is_constant() {
         return Ok(monic_den(num, den));
@@ -259,6 +327,154 @@ fn lowest_terms<C: Field>(num: Poly<C>, den: Poly<C>) -> Result<(Poly<C>, Poly<C
     let num = div_exact(&num, &g).expect("the gcd divides the numerator");
     let den = div_exact(&den, &g).expect("the gcd divides the denominator");
     Ok(monic_den(num, den))
+}
+
+/// The seed of the residues [`certified_coprime`] substitutes (any fixed value: the test is
+/// sound for every choice, and a bad one only costs a fallback).
+const COPRIME_SEED: u64 = 0x6763_645f_6d6f_6470;
+
+/// Both polynomials as polynomials with rational coefficients, `None` for another field.
+fn as_rational<'a, C: Field>(
+    a: &'a Poly<C>,
+    b: &'a Poly<C>,
+) -> Option<(&'a Poly<Rational>, &'a Poly<Rational>)> {
+    let a = (a as &dyn Any).downcast_ref::<Poly<Rational>>()?;
+    let b = (b as &dyn Any).downcast_ref::<Poly<Rational>>()?;
+    Some((a, b))
+}
+
+/// The residues substituted for variables `0..n` (the same for every call).
+fn residues(n: usize) -> Vec<ModP> {
+    let mut rng = Rng::new(COPRIME_SEED);
+    (0..n).map(|_| ModP::random(&mut rng)).collect()
+}
+
+/// The image of `p` modulo `2^61 - 1` as a polynomial in `v` (coefficient `i` of `v^i`), every
+/// other variable `w` replaced by `at[w]`; `None` when a coefficient's denominator is a
+/// multiple of the prime.
+fn image_in(p: &Poly<Rational>, v: Var, at: &[ModP]) -> Option<Vec<ModP>> {
+    let mut out = vec![ModP::ZERO; p.degree_in(v) as usize + 1];
+    for (m, c) in p.terms() {
+        let mut x = ModP::from_rational(c).ok()?;
+        let mut e_v = 0;
+        for (w, e) in m.exponents() {
+            if w == v {
+                e_v = e as usize;
+            } else {
+                x *= at[w as usize].pow_u64(u64::from(e));
+            }
+        }
+        out[e_v] += x;
+    }
+    Some(out)
+}
+
+/// `f` without its zero leading coefficients.
+fn trimmed(mut f: Vec<ModP>) -> Vec<ModP> {
+    while f.last().is_some_and(ModP::is_zero) {
+        f.pop();
+    }
+    f
+}
+
+/// The remainder of `f` by `g` (`g` trimmed, not zero) modulo the prime.
+fn rem_mod_p(mut f: Vec<ModP>, g: &[ModP]) -> Vec<ModP> {
+    let inv = g[g.len() - 1]
+        .inv()
+        .expect("a trimmed polynomial leads with a unit");
+    while f.len() >= g.len() {
+        let q = f[f.len() - 1] * inv;
+        let shift = f.len() - g.len();
+        for (i, gi) in g.iter().enumerate() {
+            f[shift + i] -= q * *gi;
+        }
+        f.pop();
+        f = trimmed(f);
+    }
+    f
+}
+
+/// The degree of the gcd of `f` and `g` modulo the prime (`None` when both are zero).
+fn gcd_degree_mod_p(f: Vec<ModP>, g: Vec<ModP>) -> Option<usize> {
+    let (mut f, mut g) = (trimmed(f), trimmed(g));
+    while !g.is_empty() {
+        let r = rem_mod_p(f, &g);
+        f = g;
+        g = r;
+    }
+    f.len().checked_sub(1)
+}
+
+/// Whether `a` and `b` are proved coprime by their images modulo `2^61 - 1` (see the module
+/// documentation): `Some(true)` when proved, `Some(false)` when not (they probably share a
+/// factor), `None` when the coefficients are not rational (the test does not apply).
+///
+/// Soundness: let `g` be the gcd over Q and `v` a variable of both. Scaled to be primitive over
+/// the rationals whose denominators are prime to `p`, `g` and `a / g` have such coefficients
+/// (Gauss's lemma), so the substitution `phi` (reduction modulo `p`, then the residues) maps
+/// `g` to a divisor of both images. When the image of `a` keeps its degree in `v`, the leading
+/// coefficient of `g` (a factor of `a`'s) does not vanish under `phi`, so `phi(g)` has the
+/// degree of `g` in `v`, at most that of the image gcd. Degree 0 for every shared `v` leaves
+/// `g` without the shared variables, and `g` divides both, so it is constant.
+pub fn certified_coprime<C: Field>(a: &Poly<C>, b: &Poly<C>) -> Option<bool> {
+    let (a, b) = as_rational(a, b)?;
+    if a.is_zero() || b.is_zero() {
+        return Some(a.is_constant() && b.is_constant() && !(a.is_zero() && b.is_zero()));
+    }
+    let vb = b.variables();
+    let shared: Vec<Var> = a
+        .variables()
+        .into_iter()
+        .filter(|v| vb.contains(v))
+        .collect();
+    let n = shared
+        .iter()
+        .chain(&vb)
+        .chain(&a.variables())
+        .map(|&v| v as usize + 1)
+        .max()
+        .unwrap_or(0);
+    let at = residues(n);
+    for v in shared {
+        let (Some(fa), Some(fb)) = (image_in(a, v, &at), image_in(b, v, &at)) else {
+            return Some(false);
+        };
+        let keeps = |f: &[ModP]| f.last().is_some_and(|c| !c.is_zero());
+        if !keeps(&fa) && !keeps(&fb) {
+            return Some(false);
+        }
+        if gcd_degree_mod_p(fa, fb) != Some(0) {
+            return Some(false);
+        }
+    }
+    Some(true)
+}
+
+/// Whether `h` may divide `p` (rational coefficients): `false` when, in a variable of `h`, the
+/// image of `h` modulo the prime keeps its degree and does not divide the image of `p` (then
+/// `h` does not divide `p`, and the exact division need not be tried); `true` otherwise.
+fn div_image_possible<C: Field>(p: &Poly<C>, h: &Poly<C>) -> bool {
+    let Some((p, h)) = as_rational(p, h) else {
+        return true;
+    };
+    let Some(&v) = h.variables().first() else {
+        return true;
+    };
+    let n = p
+        .variables()
+        .iter()
+        .chain(&h.variables())
+        .map(|&w| w as usize + 1)
+        .max()
+        .unwrap_or(0);
+    let at = residues(n);
+    let (Some(fp), Some(fh)) = (image_in(p, v, &at), image_in(h, v, &at)) else {
+        return true;
+    };
+    if fh.last().is_none_or(ModP::is_zero) {
+        return true;
+    }
+    trimmed(rem_mod_p(fp, &fh)).is_empty()
 }
 
 /// The partial derivative of `p` in `v`.
@@ -278,31 +494,67 @@ pub fn poly_derivative<C: Ring>(p: &Poly<C>, v: Var) -> Poly<C> {
 }
 
 /// `a / b` when `b` divides `a` exactly (`None` otherwise, or for `b = 0`): division by the
-/// leading term in the monomial order until nothing is left.
+/// leading term in the monomial order until nothing is left. The remainder is kept in an
+/// ordered map (exponents from the highest variable down, which is the order of
+/// [`crate::poly`]), so each step costs the terms of `b` times a logarithm rather than a pass
+/// over the whole remainder.
 pub fn div_exact<C: Field>(a: &Poly<C>, b: &Poly<C>) -> Option<Poly<C>> {
-    let (bm, bc) = b.leading_term()?;
-    let (bm, binv) = (bm.exponents(), bc.inv().ok()?);
-    let mut rest = a.clone();
+    let (_, bc) = b.leading_term()?;
+    let binv = bc.inv().ok()?;
+    let n = a
+        .variables()
+        .iter()
+        .chain(&b.variables())
+        .map(|&v| v as usize + 1)
+        .max()
+        .unwrap_or(0);
+    let key = |exps: &[(Var, u32)]| {
+        let mut k = vec![0u32; n];
+        for &(v, e) in exps {
+            k[n - 1 - v as usize] = e;
+        }
+        k
+    };
+    let bterms: Vec<(Vec<u32>, C)> = b
+        .terms()
+        .map(|(m, c)| (key(&m.exponents()), c.clone()))
+        .collect();
+    let ((blead, _), brest) = bterms.split_first()?;
+    let mut rest: std::collections::BTreeMap<Vec<u32>, C> = a
+        .terms()
+        .map(|(m, c)| (key(&m.exponents()), c.clone()))
+        .collect();
     let mut quotient = Vec::new();
-    while let Some((m, c)) = rest.leading_term() {
-        let m = m.exponents();
-        let mut q = Vec::with_capacity(m.len());
-        for &(v, e) in &m {
-            let d = bm.iter().find(|(w, _)| *w == v).map_or(0, |&(_, k)| k);
-            if e < d {
-                return None;
-            }
-            if e > d {
-                q.push((v, e - d));
-            }
-        }
-        if bm.iter().any(|(w, _)| !m.iter().any(|(v, _)| v == w)) {
-            return None;
-        }
+    while let Some((m, c)) = rest.pop_last() {
+        let q: Vec<u32> = m
+            .iter()
+            .zip(blead)
+            .map(|(x, y)| x.checked_sub(*y))
+            .collect::<Option<_>>()?;
         let qc = c.mul_ref(&binv);
-        let term = Poly::monomial(qc.clone(), &q);
-        rest = rest.sub_ref(&term.mul_ref(b));
-        quotient.push((q, qc));
+        for (bm, bc) in brest {
+            let k: Vec<u32> = q.iter().zip(bm).map(|(x, y)| x + y).collect();
+            let t = qc.mul_ref(bc);
+            match rest.entry(k) {
+                std::collections::btree_map::Entry::Occupied(mut o) => {
+                    let v = o.get().sub_ref(&t);
+                    if v.is_zero() {
+                        o.remove();
+                    } else {
+                        *o.get_mut() = v;
+                    }
+                }
+                std::collections::btree_map::Entry::Vacant(v) => {
+                    v.insert(t.neg_ref());
+                }
+            }
+        }
+        let exps: Vec<(Var, u32)> = (0..n)
+            .rev()
+            .filter(|&i| q[i] > 0)
+            .map(|i| ((n - 1 - i) as Var, q[i]))
+            .collect();
+        quotient.push((exps, qc));
     }
     Some(Poly::from_terms(quotient))
 }
@@ -407,9 +659,15 @@ pub(crate) fn gcd_capped<C: Field>(
     if b.is_zero() {
         return Ok(a.make_monic());
     }
-    if a.is_constant() || b.is_constant() {
+    if a.is_constant() || b.is_constant() || certified_coprime(a, b) == Some(true) {
         return Ok(Poly::one());
     }
+    prs_gcd(a, b, budget)
+}
+
+/// The remainder sequence of [`gcd_capped`] for two non-zero, non-constant polynomials,
+/// without the coprimality test at the top (the inner gcds of contents still use it).
+fn prs_gcd<C: Field>(a: &Poly<C>, b: &Poly<C>, budget: &mut usize) -> Result<Poly<C>, GcdError> {
     let (va, vb) = (a.variables(), b.variables());
     let v = *va
         .iter()
@@ -508,5 +766,72 @@ mod tests {
         assert_eq!(g.numerator(), &p("-1", &mut vars));
         assert_eq!(g.denominator(), &p("(x - 1)^2", &mut vars));
         assert!(xm1.add(&xm1, true).unwrap().recip().is_none());
+    }
+
+    #[test]
+    fn the_coprimality_certificate_decides_the_clear_cases() {
+        let mut vars = Vars::from_names(["x", "y", "z"]);
+        let a = p("x*y + z + 1", &mut vars);
+        let b = p("x - y^2 + 3*z", &mut vars);
+        assert_eq!(certified_coprime(&a, &b), Some(true));
+        // A planted common factor is never certified away.
+        let c = p("x + z^2 - 2", &mut vars);
+        assert_eq!(
+            certified_coprime(&a.mul_ref(&c), &b.mul_ref(&c)),
+            Some(false)
+        );
+        // Without shared variables the gcd is constant.
+        assert_eq!(
+            certified_coprime(&p("x + 1", &mut vars), &p("y + 2", &mut vars)),
+            Some(true)
+        );
+        // Other coefficient fields: the test does not apply.
+        let r = crate::poly::Poly::<crate::Radical>::one();
+        assert_eq!(certified_coprime(&r, &r), None);
+    }
+
+    #[test]
+    fn cancellation_divides_out_the_divisors_met() {
+        // The curvature pattern: a numerator carrying W^2 over W^5 ends over W^3.
+        let mut vars = Vars::from_names(["t", "w"]);
+        let w = p("w*t^2 + 2*t + 1", &mut vars);
+        let n = p("t^3 - w + 5", &mut vars);
+        let num = n.mul_ref(&w).mul_ref(&w);
+        let den = w.try_pow(5).unwrap();
+        let (got_n, got_d) = cancel(num, den, std::slice::from_ref(&w)).unwrap();
+        assert_eq!(got_d, w.try_pow(3).unwrap().make_monic());
+        assert_eq!(got_n.mul_ref(&w.try_pow(3).unwrap()), n.mul_ref(&got_d));
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+
+        /// Against the remainder sequence: a certified pair has gcd 1 there, and a pair with a
+        /// planted non-constant factor is never certified.
+        #[test]
+        fn certificate_agrees_with_the_remainder_sequence(
+            ca in proptest::collection::vec(-3i64..=3, 6),
+            cb in proptest::collection::vec(-3i64..=3, 6),
+            cc in proptest::collection::vec(-3i64..=3, 3),
+        ) {
+            let mut vars = Vars::from_names(["x", "y"]);
+            let monos = ["1", "x", "y", "x*y", "x^2", "y^2"];
+            let build = |cs: &[i64], vars: &mut Vars| {
+                let text: Vec<String> = cs.iter().zip(monos).map(|(c, m)| format!("({c})*{m}")).collect();
+                p(&text.join(" + "), vars)
+            };
+            let (a, b) = (build(&ca, &mut vars), build(&cb, &mut vars));
+            let c = build(&cc, &mut vars).add_ref(&p("x*y", &mut vars));
+            if certified_coprime(&a, &b) == Some(true) && !a.is_constant() && !b.is_constant() {
+                let mut budget = usize::MAX;
+                proptest::prop_assert!(prs_gcd(&a, &b, &mut budget).unwrap().is_constant());
+            }
+            if !a.is_zero() && !b.is_zero() {
+                proptest::prop_assert_eq!(
+                    certified_coprime(&a.mul_ref(&c), &b.mul_ref(&c)),
+                    Some(false)
+                );
+            }
+        }
     }
 }

@@ -333,3 +333,84 @@ proptest! {
         prop_assert_eq!(q(format!("det(transpose({ta}))")), det_by_elimination(&a));
     }
 }
+
+/// The rational function `text` resolves to, as `numerator / denominator` (named alike).
+fn fraction(d: &mut Defs, text: &str) -> String {
+    let e = d.resolve_scalar(text).unwrap();
+    let mut vars = Vars::new();
+    let f = e.to_ratfun::<Rational>(&mut vars).unwrap();
+    format!(
+        "{} / {}",
+        f.numerator().display(&vars),
+        f.denominator().display(&vars)
+    )
+}
+
+#[test]
+fn subs_differentiates_before_substituting() {
+    let mut d = defs(&[]);
+    assert_eq!(poly(&mut d, "subs(diff(t^3 + a*t^2 + b*t, t), t, 0)"), "b");
+    assert!(same(
+        &mut d,
+        "subs(diff(t^3 + a*t^2 + b*t, t, 2), t, 2)",
+        "12 + 2*a"
+    ));
+    assert_eq!(
+        fraction(&mut d, "subs(diff(1/(1 + t), t), t, 1)"),
+        "-1/4 / 1"
+    );
+    // A value that mentions the variable of diff: d/dt (x t^2) = 2 x t, then x = t.
+    assert!(same(&mut d, "subs(diff(x*t^2, t), x, t)", "2*t^2"));
+    // Another variable: the substitution commutes with diff.
+    assert!(same(&mut d, "subs(diff(x*t^2, t), x, 3)", "6*t"));
+}
+
+#[test]
+fn subs_respects_bound_variables() {
+    let mut d = defs(&[]);
+    // The index of sum is bound: subs(..., k, 5) leaves it; the value k is not captured.
+    assert!(same(&mut d, "subs(sum(k, 1, 3, k*x), k, 5)", "6*x"));
+    assert!(same(&mut d, "subs(sum(k, 1, 3, k*x), x, k)", "6*k"));
+    assert!(same(&mut d, "subs(sum(k, 1, n, k), n, 4)", "10"));
+    // The variable of integrate is bound; its bounds are not.
+    assert!(same(
+        &mut d,
+        "subs(integrate(t*x, t, 0, b), t, 7)",
+        "x*b^2/2"
+    ));
+    assert!(same(&mut d, "subs(integrate(t*x, t, 0, b), b, 2)", "2*x"));
+    assert!(same(&mut d, "subs(integrate(x, t, 0, 1), x, t)", "t"));
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(48))]
+
+    /// `subs(diff(E, t, k), t, a)` against the independent path: `E` converted, differentiated
+    /// `k` times as a polynomial, then evaluated at `t = a`.
+    #[test]
+    fn subs_of_diff_is_the_derivative_at_the_value(
+        coeffs in proptest::collection::vec(-5i64..=5, 9),
+        k in 1u32..=2,
+        (an, ad) in (-6i64..=6, 1i64..=4),
+    ) {
+        let terms: Vec<String> = coeffs
+            .iter()
+            .enumerate()
+            .map(|(i, c)| format!("({c})*t^{}*x^{}", i / 3, i % 3))
+            .collect();
+        let e = terms.join(" + ");
+        let mut d = defs(&[]);
+        let got = d
+            .resolve_scalar(&format!("subs(diff({e}, t, {k}), t, {an}/{ad})"))
+            .unwrap();
+        let mut vars = Vars::from_names(["t", "x"]);
+        let got = got.to_poly::<Rational>(&mut vars).unwrap();
+        let mut p = crate::expr::parse_expr(&e).unwrap().to_poly::<Rational>(&mut vars).unwrap();
+        for _ in 0..k {
+            p = crate::ratfun::poly_derivative(&p, 0);
+        }
+        let a = Rational::new(an, ad).unwrap();
+        let want = p.substitute(0, &crate::poly::Poly::constant(a));
+        prop_assert_eq!(got, want);
+    }
+}

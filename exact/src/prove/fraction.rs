@@ -1,10 +1,11 @@
 //! Identities between rational functions: `L = R` with `L = a/b`, `R = c/d` is decided as the
-//! polynomial identity `a d - c b = 0` (the denominators cleared) wherever the denominators and
+//! polynomial identity `a (d/g) - c (b/g) = 0`, `g = gcd(b, d)` (the denominators cleared by
+//! their least common multiple: `a - c` when they are equal) wherever the denominators and
 //! every divisor met in `L` and `R` are non-zero; the counter-example search avoids those zeros.
 
 use super::{decide_where, DecideError, Decision, Domain, PointField};
 use crate::poly::{Poly, SizeError, Var, Vars};
-use crate::ratfun::{push_condition, RatFun};
+use crate::ratfun::{div_exact, poly_gcd, push_condition, RatFun};
 use crate::univariate::UPoly;
 use crate::Rational;
 use exactcheck_core::{Field, Ring, Sign};
@@ -13,9 +14,10 @@ use std::fmt::Display;
 /// `L = R` with the denominators cleared.
 #[derive(Clone, Debug)]
 pub struct FractionIdentity<C: Ring> {
-    /// `num(L) den(R) - num(R) den(L)`: zero exactly where `L = R` (off the conditions).
+    /// `L - R` times the least common multiple of the denominators, `num(L) den(R)/g -
+    /// num(R) den(L)/g` with `g` their gcd: zero exactly where `L = R` (off the conditions).
     pub residual: Poly<C>,
-    /// `den(L) den(R)`, by which `residual` is `L - R` multiplied.
+    /// `den(L) den(R) / g`, by which `residual` is `L - R` multiplied.
     pub denominator: Poly<C>,
     /// The divisors met in `L` and `R` and their denominators (monic, non-constant, each
     /// once): `L = R` is meant where none vanishes.
@@ -30,7 +32,16 @@ impl<C: Field> FractionIdentity<C> {
     pub fn new(lhs: &RatFun<C>, rhs: &RatFun<C>) -> Result<Self, SizeError> {
         let (a, b) = (lhs.numerator(), lhs.denominator());
         let (c, d) = (rhs.numerator(), rhs.denominator());
-        let residual = a.try_mul(d)?.sub_ref(&c.try_mul(b)?);
+        // Clearing by the lcm rather than the product keeps the residual as small as the
+        // numerators allow: equal denominators (the common case) cost one subtraction.
+        let (residual, denominator) = if b == d {
+            (a.sub_ref(c), b.clone())
+        } else {
+            let g = poly_gcd(b, d)?;
+            let bg = div_exact(b, &g).expect("the gcd divides the denominator");
+            let dg = div_exact(d, &g).expect("the gcd divides the denominator");
+            (a.try_mul(&dg)?.sub_ref(&c.try_mul(&bg)?), b.try_mul(&dg)?)
+        };
         let mut conditions: Vec<Poly<C>> = Vec::new();
         for p in lhs
             .conditions()
@@ -42,7 +53,7 @@ impl<C: Field> FractionIdentity<C> {
         }
         Ok(FractionIdentity {
             residual,
-            denominator: b.try_mul(d)?,
+            denominator,
             conditions,
         })
     }

@@ -46,6 +46,10 @@
 //!
 //! Hand-written: the rewriting is a small recursion over the expression grammar of this
 //! module's parent; no crate knows that grammar.
+//!
+//! The submodules: [`matrix`] builds the trees of sums, products, matrix products and
+//! determinants; [`calls`] computes the library functions (vectors, matrices, Bernstein and
+//! Bezier); [`tree`] walks and rewrites trees (substitution, positions, sizes).
 
 use super::parse::LIST;
 use super::{parse_expr_with_calls, AddOp, Expr, ExprKind, MulOp};
@@ -53,6 +57,15 @@ use crate::rational::Rational;
 use exactcheck_core::limits;
 use std::collections::{HashMap, HashSet};
 use std::fmt;
+
+mod calls;
+mod matrix;
+mod tree;
+
+use calls::*;
+use matrix::*;
+use tree::{at_pos, collect_calls};
+pub use tree::{count_nodes, has_sqrt, substitute, substitute_free};
 
 /// The largest number of nodes of a resolved expression.
 pub const MAX_NODES: usize = 500_000;
@@ -724,9 +737,17 @@ impl Defs {
                 ));
             }
             let value = self.scalar(&args[2], stack, "the value of subs")?;
-            return Ok(self
-                .resolve(&args[0], stack)?
-                .map(|e| substitute(&e, v, &value)));
+            let failed = std::cell::RefCell::new(None);
+            let out = self.resolve(&args[0], stack)?.map(|e| {
+                substitute_free(&e, v, &value).unwrap_or_else(|why| {
+                    failed.borrow_mut().get_or_insert(why);
+                    e
+                })
+            });
+            return match failed.into_inner() {
+                Some(why) => err(format!("subs at {pos}: {why}")),
+                None => Ok(out),
+            };
         }
         if super::FUNCTIONS.contains(&name) {
             // A function of the core language: its arguments resolved, the call kept for the
@@ -816,440 +837,6 @@ impl Defs {
     }
 }
 
-fn too_many_nodes(pos: usize) -> String {
-    format!(
-        "the expression at {pos} expands to more than {MAX_NODES} nodes (MAX_NODES) after substituting the definitions"
-    )
-}
-
-fn times(a: Expr, b: Expr, pos: usize) -> Expr {
-    Expr {
-        kind: ExprKind::Product(vec![(MulOp::Times, a), (MulOp::Times, b)]),
-        pos,
-    }
-}
-
-fn plus(xs: Vec<Expr>, pos: usize) -> Expr {
-    Expr {
-        kind: ExprKind::Sum(xs.into_iter().map(|x| (AddOp::Plus, x)).collect()),
-        pos,
-    }
-}
-
-/// `sum a_i b_i`.
-fn inner(a: &[Expr], b: &[Expr], pos: usize) -> Expr {
-    plus(
-        a.iter()
-            .zip(b)
-            .map(|(x, y)| times(x.clone(), y.clone(), pos))
-            .collect(),
-        pos,
-    )
-}
-
-fn transposed(rows: &[Vec<Expr>]) -> Vec<Vec<Expr>> {
-    (0..rows[0].len())
-        .map(|j| rows.iter().map(|r| r[j].clone()).collect())
-        .collect()
-}
-
-/// The product of two non-scalar values (`left` at `lp`, `right` at `rp`): matrix times
-/// vector or matrix.
-fn multiply(left: Val, right: Val, lp: usize, rp: usize) -> R<Val> {
-    let mismatch = |l: &Val, r: &Val| {
-        err(format!(
-            "a product of {} at {lp} and {} at {rp}: the sizes do not match",
-            l.shape(),
-            r.shape()
-        ))
-    };
-    match (&left, &right) {
-        (Val::Vector(_), Val::Vector(_)) => err(format!(
-            "a product of two vectors at {rp}: write dot(u, v) or cross(u, v)"
-        )),
-        (Val::Vector(_), Val::Matrix(_)) => err(format!(
-            "a product of {} at {lp} and {} at {rp}: a vector multiplies no matrix from the left (write transpose(M)*v)",
-            left.shape(),
-            right.shape()
-        )),
-        (Val::Matrix(m), Val::Vector(v)) => {
-            if m[0].len() != v.len() {
-                return mismatch(&left, &right);
-            }
-            Ok(Val::Vector(m.iter().map(|r| inner(r, v, lp)).collect()))
-        }
-        (Val::Matrix(a), Val::Matrix(b)) => {
-            if a[0].len() != b.len() {
-                return mismatch(&left, &right);
-            }
-            let cols = transposed(b);
-            Ok(Val::Matrix(
-                a.iter()
-                    .map(|r| cols.iter().map(|c| inner(r, c, lp)).collect())
-                    .collect(),
-            ))
-        }
-        _ => unreachable!("multiply() is called for vectors and matrices"),
-    }
-}
-
-/// Whether `e` is the literal number 0.
-fn is_zero(e: &Expr) -> bool {
-    matches!(&e.kind, ExprKind::Number(q) if *q == Rational::ZERO)
-}
-
-/// An upper bound of the nodes of the cofactor expansion of an `n x n` matrix whose entries have
-/// at most `entry` nodes (saturating).
-fn det_nodes(n: usize, entry: usize) -> usize {
-    let mut nodes = entry;
-    for k in 2..=n {
-        // A sum of k signed products of an entry and a minor's expansion.
-        nodes = k
-            .saturating_mul(entry.saturating_add(nodes).saturating_add(2))
-            .saturating_add(1);
-    }
-    nodes
-}
-
-/// The determinant by cofactor expansion along the first row (literal zero entries skipped).
-/// `cols` are the columns of the minor, `row` its first row.
-fn det(m: &[Vec<Expr>], row: usize, cols: &[usize], pos: usize) -> Expr {
-    if cols.len() == 1 {
-        return m[row][cols[0]].clone();
-    }
-    let mut terms = Vec::new();
-    for (k, &c) in cols.iter().enumerate() {
-        let a = &m[row][c];
-        if is_zero(a) {
-            continue;
-        }
-        let rest: Vec<usize> = cols.iter().copied().filter(|&x| x != c).collect();
-        let op = if k % 2 == 0 {
-            AddOp::Plus
-        } else {
-            AddOp::Minus
-        };
-        terms.push((op, times(a.clone(), det(m, row + 1, &rest, pos), pos)));
-    }
-    if terms.is_empty() {
-        return Expr {
-            kind: ExprKind::Number(Rational::ZERO),
-            pos,
-        };
-    }
-    Expr {
-        kind: ExprKind::Sum(terms),
-        pos,
-    }
-}
-
-/// A library function applied to resolved arguments (`vals`: value and position).
-fn library_call(name: &str, vals: &[(Val, usize)], pos: usize) -> R<Val> {
-    let node = |kind: ExprKind| Expr { kind, pos };
-    let vector = |v: &(Val, usize), what: &str| -> R<Vec<Expr>> {
-        match &v.0 {
-            Val::Vector(xs) => Ok(xs.clone()),
-            other => err(format!(
-                "{} at {} where a vector is expected ({what} of {name})",
-                other.shape(),
-                v.1
-            )),
-        }
-    };
-    let matrix = |v: &(Val, usize)| -> R<Vec<Vec<Expr>>> {
-        match &v.0 {
-            Val::Matrix(rows) => Ok(rows.clone()),
-            other => err(format!(
-                "{} at {} where a matrix is expected (the argument of {name}; a matrix is [[a, b], [c, d]])",
-                other.shape(),
-                v.1
-            )),
-        }
-    };
-    let scalar = |v: &(Val, usize), what: &str| -> R<Expr> {
-        match &v.0 {
-            Val::Scalar(x) => Ok(x.clone()),
-            other => err(format!(
-                "{} at {} where a scalar is expected ({what} of {name})",
-                other.shape(),
-                v.1
-            )),
-        }
-    };
-    let int = |v: &(Val, usize), what: &str| -> R<u32> {
-        let x = scalar(v, what)?;
-        let q = x
-            .eval_constant::<Rational>()
-            .ok()
-            .filter(|q| q.is_integer());
-        match q.and_then(|q| q.to_string().parse::<u32>().ok()) {
-            Some(k) => Ok(k),
-            _ => err(format!(
-                "{what} of {name} at {} must be a non-negative integer constant",
-                v.1
-            )),
-        }
-    };
-    let same_length = |u: &[Expr], v: &[Expr]| -> R<()> {
-        if u.len() == v.len() {
-            Ok(())
-        } else {
-            err(format!(
-                "{name} at {pos}: vectors of {} and {} coordinates",
-                u.len(),
-                v.len()
-            ))
-        }
-    };
-    let coordinate = |v: &(Val, usize), i: usize| -> R<Val> {
-        let xs = vector(v, "the argument")?;
-        match xs.get(i) {
-            Some(x) => Ok(Val::Scalar(x.clone())),
-            None => err(format!(
-                "{name} at {pos}: coordinate {} of a vector of {}",
-                i + 1,
-                xs.len()
-            )),
-        }
-    };
-    Ok(match name {
-        "vec" => Val::Vector(
-            vals.iter()
-                .map(|v| scalar(v, "a coordinate"))
-                .collect::<R<_>>()?,
-        ),
-        "dot" => {
-            let u = vector(&vals[0], "the first argument")?;
-            let v = vector(&vals[1], "the second argument")?;
-            same_length(&u, &v)?;
-            Val::Scalar(inner(&u, &v, pos))
-        }
-        "norm2" => {
-            let v = vector(&vals[0], "the argument")?;
-            Val::Scalar(inner(&v, &v, pos))
-        }
-        "cross" => {
-            let u = vector(&vals[0], "the first argument")?;
-            let v = vector(&vals[1], "the second argument")?;
-            let minus =
-                |a: Expr, b: Expr| node(ExprKind::Sum(vec![(AddOp::Plus, a), (AddOp::Minus, b)]));
-            let c = |i: usize, j: usize| {
-                minus(
-                    times(u[i].clone(), v[j].clone(), pos),
-                    times(u[j].clone(), v[i].clone(), pos),
-                )
-            };
-            match (u.len(), v.len()) {
-                (2, 2) => Val::Scalar(c(0, 1)),
-                (3, 3) => Val::Vector(vec![c(1, 2), c(2, 0), c(0, 1)]),
-                (a, b) => {
-                    return err(format!(
-                        "cross at {pos} takes two 2-vectors or two 3-vectors, not vectors of {a} and {b}"
-                    ))
-                }
-            }
-        }
-        "x" => coordinate(&vals[0], 0)?,
-        "y" => coordinate(&vals[0], 1)?,
-        "z" => coordinate(&vals[0], 2)?,
-        "at" => {
-            let i = int(&vals[1], "the index")?;
-            if i == 0 {
-                return err(format!(
-                    "at at {pos}: coordinates count from 1 (at(v, 1) is the first)"
-                ));
-            }
-            coordinate(&vals[0], i as usize - 1)?
-        }
-        "det" => {
-            let m = matrix(&vals[0])?;
-            let (r, c) = (m.len(), m[0].len());
-            if r != c {
-                return err(format!(
-                    "det at {pos} takes a square matrix, not a {r}x{c} matrix"
-                ));
-            }
-            let entry = m.iter().flatten().map(count_nodes).max().unwrap_or(1);
-            if det_nodes(r, entry) > MAX_NODES {
-                return err(format!(
-                    "det at {pos} of a {r}x{r} matrix: {}",
-                    too_many_nodes(pos)
-                ));
-            }
-            let cols: Vec<usize> = (0..c).collect();
-            Val::Scalar(det(&m, 0, &cols, pos))
-        }
-        "transpose" => Val::Matrix(transposed(&matrix(&vals[0])?)),
-        "bernstein" => {
-            let i = int(&vals[0], "i")?;
-            let n = int(&vals[1], "n")?;
-            limits::BERNSTEIN_DEGREE
-                .check(u64::from(n))
-                .map_err(|e| ResolveError {
-                    def: None,
-                    message: format!("bernstein at {pos}: {e}"),
-                })?;
-            if i > n {
-                return err(format!("bernstein at {pos}: i = {i} > n = {n}"));
-            }
-            let t = scalar(&vals[2], "t")?;
-            Val::Scalar(bernstein(i, n, &t, pos))
-        }
-        "bezier" => {
-            let t = scalar(&vals[0], "t")?;
-            let n = (vals.len() - 2) as u32;
-            let points = &vals[1..];
-            if points.iter().any(|(v, _)| matches!(v, Val::Matrix(_)))
-                || points.iter().any(|(v, _)| !v.same_shape(&points[0].0))
-            {
-                return err(format!(
-                    "bezier at {pos}: the control points must all be scalars or all vectors of one length"
-                ));
-            }
-            let weights: Vec<Expr> = (0..=n).map(|i| bernstein(i, n, &t, pos)).collect();
-            let split: Vec<Vec<&Expr>> = points.iter().map(|(v, _)| v.parts()).collect();
-            let comb = |k: usize| {
-                plus(
-                    split
-                        .iter()
-                        .zip(&weights)
-                        .map(|(xs, w)| {
-                            // The weight of a degree-0 curve is 1: the point alone.
-                            if matches!(&w.kind, ExprKind::Number(q) if *q == Rational::ONE) {
-                                xs[k].clone()
-                            } else {
-                                times(w.clone(), xs[k].clone(), pos)
-                            }
-                        })
-                        .collect(),
-                    pos,
-                )
-            };
-            match &points[0].0 {
-                Val::Vector(xs) => Val::Vector((0..xs.len()).map(comb).collect()),
-                _ => Val::Scalar(comb(0)),
-            }
-        }
-        other => unreachable!("{other} is in LIBRARY and handled above"),
-    })
-}
-
-/// `C(n, i) t^i (1 - t)^(n - i)` as a tree.
-fn bernstein(i: u32, n: u32, t: &Expr, pos: usize) -> Expr {
-    let node = |kind: ExprKind| Expr { kind, pos };
-    let num = |q: Rational| node(ExprKind::Number(q));
-    let int = |k: u64| num(Rational::from_integer(k as i64));
-    // C(n, i) exactly: C(n, k + 1) = C(n, k) (n - k) / (k + 1), an exact integer division.
-    let mut c = num_bigint::BigInt::from(1u32);
-    for k in 0..i {
-        c = c * (n - k) / (k + 1);
-    }
-    let c = Rational::from(c);
-    let one_minus_t = node(ExprKind::Sum(vec![
-        (AddOp::Plus, int(1)),
-        (AddOp::Minus, t.clone()),
-    ]));
-    // Factors 1, t^0 and (1 - t)^0 are left out and exponents 1 not written, so the tree
-    // prints as a formula would be written (`3 t (1 - t)^2`, `t^3`).
-    let mut factors = Vec::new();
-    if c != Rational::ONE {
-        factors.push(num(c));
-    }
-    for (base, k) in [(t.clone(), i), (one_minus_t, n - i)] {
-        match k {
-            0 => {}
-            1 => factors.push(base),
-            k => factors.push(node(ExprKind::Pow(
-                Box::new(base),
-                Box::new(int(u64::from(k))),
-            ))),
-        }
-    }
-    match factors.len() {
-        0 => int(1),
-        1 => factors.pop().expect("one factor"),
-        _ => node(ExprKind::Product(
-            factors.into_iter().map(|f| (MulOp::Times, f)).collect(),
-        )),
-    }
-}
-
-/// Appends the names of the calls in `e` to `out` (each once).
-fn collect_calls(e: &Expr, out: &mut Vec<String>) {
-    map_tree(e, &mut |x| {
-        if let ExprKind::Call(n, _) = &x.kind {
-            if !out.contains(n) {
-                out.push(n.clone());
-            }
-        }
-    });
-}
-
-/// Visits every node of `e` (children first).
-fn map_tree(e: &Expr, f: &mut dyn FnMut(&Expr)) {
-    match &e.kind {
-        ExprKind::Number(_) | ExprKind::Var(_) => {}
-        ExprKind::Neg(x) | ExprKind::Sqrt(x) => map_tree(x, f),
-        ExprKind::Pow(x, k) => {
-            map_tree(x, f);
-            map_tree(k, f);
-        }
-        ExprKind::Sum(ts) => ts.iter().for_each(|(_, t)| map_tree(t, f)),
-        ExprKind::Product(fs) => fs.iter().for_each(|(_, t)| map_tree(t, f)),
-        ExprKind::Call(_, args) => args.iter().for_each(|a| map_tree(a, f)),
-    }
-    f(e);
-}
-
-/// `e` with every position set to `pos`.
-fn at_pos(e: &Expr, pos: usize) -> Expr {
-    rebuild(e, &|mut x| {
-        x.pos = pos;
-        x
-    })
-}
-
-/// `e` with the variable `v` replaced by `value`.
-pub fn substitute(e: &Expr, v: &str, value: &Expr) -> Expr {
-    rebuild(e, &|x| match &x.kind {
-        ExprKind::Var(n) if n == v => at_pos(value, x.pos),
-        _ => x,
-    })
-}
-
-/// Rebuilds `e` bottom-up, handing every rebuilt node (its children done) to `f`.
-fn rebuild(e: &Expr, f: &dyn Fn(Expr) -> Expr) -> Expr {
-    let b = |x: &Expr| Box::new(rebuild(x, f));
-    let kind = match &e.kind {
-        ExprKind::Number(_) | ExprKind::Var(_) => e.kind.clone(),
-        ExprKind::Neg(x) => ExprKind::Neg(b(x)),
-        ExprKind::Sqrt(x) => ExprKind::Sqrt(b(x)),
-        ExprKind::Pow(x, k) => ExprKind::Pow(b(x), b(k)),
-        ExprKind::Sum(ts) => ExprKind::Sum(ts.iter().map(|(o, t)| (*o, rebuild(t, f))).collect()),
-        ExprKind::Product(fs) => {
-            ExprKind::Product(fs.iter().map(|(o, t)| (*o, rebuild(t, f))).collect())
-        }
-        ExprKind::Call(n, args) => {
-            ExprKind::Call(n.clone(), args.iter().map(|a| rebuild(a, f)).collect())
-        }
-    };
-    f(Expr { kind, pos: e.pos })
-}
-
-/// The number of nodes of a tree.
-pub fn count_nodes(e: &Expr) -> usize {
-    let mut n = 0;
-    map_tree(e, &mut |_| n += 1);
-    n
-}
-
-/// Whether the tree contains `sqrt` (then the radical coefficient field is needed).
-pub fn has_sqrt(e: &Expr) -> bool {
-    let mut found = false;
-    map_tree(e, &mut |x| found |= matches!(x.kind, ExprKind::Sqrt(_)));
-    found
-}
-
 /// Parses and resolves a formula with the library functions and no definitions (as `prove`
 /// reads its sides).
 ///
@@ -1260,5 +847,5 @@ pub fn resolve(text: &str) -> R<Val> {
 }
 
 #[cfg(test)]
-#[path = "library_tests.rs"]
+#[path = "../library_tests.rs"]
 mod tests;

@@ -1,0 +1,221 @@
+//! Walking and rewriting expression trees: visiting, substituting (with the binders of
+//! `diff`, `integrate` and `sum` respected), positions and sizes.
+
+use super::*;
+
+/// Appends the names of the calls in `e` to `out` (each once).
+pub(super) fn collect_calls(e: &Expr, out: &mut Vec<String>) {
+    map_tree(e, &mut |x| {
+        if let ExprKind::Call(n, _) = &x.kind {
+            if !out.contains(n) {
+                out.push(n.clone());
+            }
+        }
+    });
+}
+
+/// Visits every node of `e` (children first).
+pub(super) fn map_tree(e: &Expr, f: &mut dyn FnMut(&Expr)) {
+    match &e.kind {
+        ExprKind::Number(_) | ExprKind::Var(_) => {}
+        ExprKind::Neg(x) | ExprKind::Sqrt(x) => map_tree(x, f),
+        ExprKind::Pow(x, k) => {
+            map_tree(x, f);
+            map_tree(k, f);
+        }
+        ExprKind::Sum(ts) => ts.iter().for_each(|(_, t)| map_tree(t, f)),
+        ExprKind::Product(fs) => fs.iter().for_each(|(_, t)| map_tree(t, f)),
+        ExprKind::Call(_, args) => args.iter().for_each(|a| map_tree(a, f)),
+    }
+    f(e);
+}
+
+/// `e` with every position set to `pos`.
+pub(super) fn at_pos(e: &Expr, pos: usize) -> Expr {
+    rebuild(e, &|mut x| {
+        x.pos = pos;
+        x
+    })
+}
+
+/// `e` with the variable `v` replaced by `value`.
+pub fn substitute(e: &Expr, v: &str, value: &Expr) -> Expr {
+    rebuild(e, &|x| match &x.kind {
+        ExprKind::Var(n) if n == v => at_pos(value, x.pos),
+        _ => x,
+    })
+}
+
+/// `e` with the free occurrences of the variable `v` replaced by `value`, as `subs` means it:
+/// the substitution comes after every construct inside. A `diff` in `v` (or in a variable
+/// `value` mentions) is differentiated first, so `subs(diff(E, t), t, 0)` is `E'(0)`; the
+/// bound variable of `integrate` and `sum` is not replaced (only the bounds are), and is
+/// renamed when `value` mentions it, so that no variable of `value` is captured.
+///
+/// # Errors
+/// The one-line reason when a `diff` to take first cannot be taken exactly.
+pub fn substitute_free(e: &Expr, v: &str, value: &Expr) -> Result<Expr, String> {
+    let sub = |x: &Expr| substitute_free(x, v, value);
+    let boxed = |x: &Expr| sub(x).map(Box::new);
+    let mentions = |name: &str| {
+        let mut found = false;
+        map_tree(value, &mut |x| {
+            found |= matches!(&x.kind, ExprKind::Var(n) if n == name);
+        });
+        found
+    };
+    let kind = match &e.kind {
+        ExprKind::Var(n) if n == v => return Ok(at_pos(value, e.pos)),
+        ExprKind::Number(_) | ExprKind::Var(_) => return Ok(e.clone()),
+        ExprKind::Neg(x) => ExprKind::Neg(boxed(x)?),
+        ExprKind::Sqrt(x) => ExprKind::Sqrt(boxed(x)?),
+        ExprKind::Pow(a, b) => ExprKind::Pow(boxed(a)?, boxed(b)?),
+        ExprKind::Sum(ts) => ExprKind::Sum(
+            ts.iter()
+                .map(|(op, t)| Ok((*op, sub(t)?)))
+                .collect::<Result<_, String>>()?,
+        ),
+        ExprKind::Product(fs) => ExprKind::Product(
+            fs.iter()
+                .map(|(op, f)| Ok((*op, sub(f)?)))
+                .collect::<Result<_, String>>()?,
+        ),
+        ExprKind::Call(name, args) => {
+            let var_at = |i: usize| match args.get(i).map(|a| &a.kind) {
+                Some(ExprKind::Var(n)) => Some(n.as_str()),
+                _ => None,
+            };
+            // (argument index of the variable, indices of the arguments where it is bound).
+            let binder: Option<(usize, &[usize])> = match (name.as_str(), args.len()) {
+                ("diff", 2 | 3) => Some((1, &[0, 1])),
+                ("integrate", 4) => Some((1, &[0, 1])),
+                ("sum", 4) => Some((0, &[0, 3])),
+                _ => None,
+            };
+            match binder.and_then(|(i, bound)| Some((var_at(i)?, bound))) {
+                Some((t, _)) if name == "diff" && (t == v || mentions(t)) => {
+                    return sub(&derivative_first(e)?);
+                }
+                Some((t, bound)) if t == v || mentions(t) => {
+                    // Only the bounds see the substitution; the bound variable is renamed
+                    // apart from `value` (and from `v`) when `value` mentions it.
+                    let args = if t == v || !mentions(t) {
+                        args.clone()
+                    } else {
+                        let fresh = fresh_name(t, e, value);
+                        let renamed = Expr {
+                            kind: ExprKind::Var(fresh),
+                            pos: e.pos,
+                        };
+                        args.iter()
+                            .enumerate()
+                            .map(|(j, a)| {
+                                if bound.contains(&j) {
+                                    substitute(a, t, &renamed)
+                                } else {
+                                    a.clone()
+                                }
+                            })
+                            .collect()
+                    };
+                    let keep_bound = t == v;
+                    ExprKind::Call(
+                        name.clone(),
+                        args.iter()
+                            .enumerate()
+                            .map(|(j, a)| {
+                                if keep_bound && bound.contains(&j) {
+                                    Ok(a.clone())
+                                } else {
+                                    sub(a)
+                                }
+                            })
+                            .collect::<Result<_, String>>()?,
+                    )
+                }
+                Some((_, _)) if name == "diff" => ExprKind::Call(
+                    name.clone(),
+                    args.iter()
+                        .enumerate()
+                        .map(|(j, a)| if j == 1 { Ok(a.clone()) } else { sub(a) })
+                        .collect::<Result<_, String>>()?,
+                ),
+                _ => ExprKind::Call(
+                    name.clone(),
+                    args.iter().map(sub).collect::<Result<_, String>>()?,
+                ),
+            }
+        }
+    };
+    Ok(Expr { kind, pos: e.pos })
+}
+
+/// A variable name based on `base` that occurs in neither `e` nor `value`.
+pub(super) fn fresh_name(base: &str, e: &Expr, value: &Expr) -> String {
+    let mut taken = HashSet::new();
+    for tree in [e, value] {
+        map_tree(tree, &mut |x| {
+            if let ExprKind::Var(n) = &x.kind {
+                taken.insert(n.clone());
+            }
+        });
+    }
+    (1..)
+        .map(|k| format!("{base}{k}"))
+        .find(|n| !taken.contains(n))
+        .expect("a finite tree leaves some name free")
+}
+
+/// The call `diff(E, t[, k])` taken: the derivative as an expression (numerator over
+/// denominator, with rational coefficients), positioned at the call.
+pub(super) fn derivative_first(call: &Expr) -> Result<Expr, String> {
+    let mut vars = crate::poly::Vars::new();
+    let f = call
+        .to_ratfun::<Rational>(&mut vars)
+        .map_err(|e| format!("the derivative {call} is taken first, and fails: {e}"))?;
+    let text = if exactcheck_core::Ring::is_one(f.denominator()) {
+        format!("{}", f.numerator().display(&vars))
+    } else {
+        format!(
+            "({})/({})",
+            f.numerator().display(&vars),
+            f.denominator().display(&vars)
+        )
+    };
+    let parsed = crate::expr::parse_expr(&text)
+        .map_err(|e| format!("the derivative {call} is taken first, and fails: {e}"))?;
+    Ok(at_pos(&parsed, call.pos))
+}
+
+/// Rebuilds `e` bottom-up, handing every rebuilt node (its children done) to `f`.
+pub(super) fn rebuild(e: &Expr, f: &dyn Fn(Expr) -> Expr) -> Expr {
+    let b = |x: &Expr| Box::new(rebuild(x, f));
+    let kind = match &e.kind {
+        ExprKind::Number(_) | ExprKind::Var(_) => e.kind.clone(),
+        ExprKind::Neg(x) => ExprKind::Neg(b(x)),
+        ExprKind::Sqrt(x) => ExprKind::Sqrt(b(x)),
+        ExprKind::Pow(x, k) => ExprKind::Pow(b(x), b(k)),
+        ExprKind::Sum(ts) => ExprKind::Sum(ts.iter().map(|(o, t)| (*o, rebuild(t, f))).collect()),
+        ExprKind::Product(fs) => {
+            ExprKind::Product(fs.iter().map(|(o, t)| (*o, rebuild(t, f))).collect())
+        }
+        ExprKind::Call(n, args) => {
+            ExprKind::Call(n.clone(), args.iter().map(|a| rebuild(a, f)).collect())
+        }
+    };
+    f(Expr { kind, pos: e.pos })
+}
+
+/// The number of nodes of a tree.
+pub fn count_nodes(e: &Expr) -> usize {
+    let mut n = 0;
+    map_tree(e, &mut |_| n += 1);
+    n
+}
+
+/// Whether the tree contains `sqrt` (then the radical coefficient field is needed).
+pub fn has_sqrt(e: &Expr) -> bool {
+    let mut found = false;
+    map_tree(e, &mut |x| found |= matches!(x.kind, ExprKind::Sqrt(_)));
+    found
+}
