@@ -126,6 +126,7 @@ mod eval;
 mod fraction;
 mod latex;
 pub mod library;
+mod lower;
 mod mathml;
 mod parse;
 mod print;
@@ -136,6 +137,7 @@ mod trig;
 mod w1;
 
 pub use latex::{equation_to_latex, to_latex, Notation};
+pub use lower::lower;
 pub use mathml::{equation_to_mathml, to_mathml};
 pub use parse::{parse_expr, parse_expr_with_calls, parse_poly, LIST};
 pub use w1::w1_text;
