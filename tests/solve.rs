@@ -399,12 +399,18 @@ fn number_strings_are_constant_formulas_of_the_language() {
         big
     );
     assert_eq!(
-        answer(&planes("[-2, 0, 0]", r#"[0, 0, "sum(k, 0, 3, k) + 19"]"#), &[]),
+        answer(
+            &planes("[-2, 0, 0]", r#"[0, 0, "sum(k, 0, 3, k) + 19"]"#),
+            &[]
+        ),
         big
     );
     // The --float reading goes through the same parser.
     assert_eq!(
-        answer(&planes("[-2, 0, 0]", r#"[0, 0, "factorial(4) + 1"]"#), &["--float"]),
+        answer(
+            &planes("[-2, 0, 0]", r#"[0, 0, "factorial(4) + 1"]"#),
+            &["--float"]
+        ),
         answer(&planes("[-2, 0, 0]", "[0, 0, 25]"), &["--float"])
     );
 }
@@ -419,7 +425,10 @@ fn number_strings_that_are_not_constant_scalars_are_refused_by_field() {
     refused(
         &planes(r#"["[1, 2]", 0, 0]"#, "[0, 0, 1]"),
         &[],
-        &["planes[1].normal[0]", "a vector of 2 where a number is expected"],
+        &[
+            "planes[1].normal[0]",
+            "a vector of 2 where a number is expected",
+        ],
     );
     refused(
         &planes(r#"["det([[1, 2, 3]])", 0, 0]"#, "[0, 0, 1]"),

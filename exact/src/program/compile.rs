@@ -163,7 +163,9 @@ impl Vars {
 /// Why `name` is a constant and not a variable of a regressed formula, `None` for a variable.
 fn reserved(name: &str) -> Option<&'static str> {
     if name == PI {
-        return Some("pi is the constant pi, not a variable, and regress --formula has no value for it");
+        return Some(
+            "pi is the constant pi, not a variable, and regress --formula has no value for it",
+        );
     }
     reserved_constant(name)
 }
@@ -188,7 +190,7 @@ impl Program {
         for name in vars.unwrap_or_default() {
             let is_name =
                 parse_expr(name).is_ok_and(|e| matches!(&e.kind, ExprKind::Var(v) if v == name));
-            if !is_name {
+            if !is_name || reserved(name).is_some() {
                 return Err(CompileError::BadVariable { name: name.clone() });
             }
             if table.names.contains(name) {

@@ -503,8 +503,8 @@ pub fn random_identity_test(
                 .max(r.num_bits.checked_add(l.den_bits)?)
                 .checked_add(1)?;
             // LHS - RHS = (F_l D_r - F_r D_l) / (D_l D_r).
-            let degree = (l.degree.checked_add(r.den_degree)?)
-                .max(r.degree.checked_add(l.den_degree)?);
+            let degree =
+                (l.degree.checked_add(r.den_degree)?).max(r.degree.checked_add(l.den_degree)?);
             let den_degree = l.den_degree.checked_add(r.den_degree)?;
             let spread = k.checked_mul(2)?.checked_add(1)?;
             Some(SizeBound {
@@ -654,11 +654,13 @@ mod tests {
             size_bound(&parse_expr("sqrt(2) x").unwrap()),
             Err(BoundError::Input(_))
         ));
-        // 1/x + 2/(y + 3)^2 = ((y + 3)^2 + 2 x) / (x (y + 3)^2): ||F||_1 <= 2 * 4^2, ...
+        // 1/x + 2/(y + 3)^2 = (1 (y + 3)^2 + 2 x) / (x (y + 3)^2): 1/x gives L = bits(1) = 1,
+        // e = 1; 2/(y + 3)^2 gives L = bits(2) = 2, L_D = 2 (bits(3) + 1) = 6, e = 2; the sum
+        // max(1 + 6, 2 + 0) + 1 = 8, L_D = 6, d = max(0 + 2, 0 + 1) = 2, e = 3.
         let b = bound("1/x + 2/(y + 3)^2");
         assert_eq!(
             (b.num_bits, b.den_bits, b.degree, b.den_degree),
-            (2 * 3 + 1, 2 * 3, 2 + 1, 3)
+            (8, 6, 2, 3)
         );
     }
 
