@@ -17,7 +17,10 @@
 //! names the ones it used.
 //! Inconsistent relations (`1 = 2`; `x = 1` and `x = 2`) are an input error. `--random K`
 //! evaluates instead at K random points modulo a prime drawn at random per run
-//! (`exactcheck_exact::prove::random`, which proves the printed error bound). Exit status:
+//! (`exactcheck_exact::prove::random`, which proves the printed error bound), in the same
+//! language: the library's functions resolved, `diff`, `integrate`, `sum`, `binomial` and
+//! `factorial` lowered to arithmetic, divisions evaluated with the points where a divisor
+//! vanishes skipped. Exit status:
 //! 0 proved or holds, 1 fails or undecided, 2 bad input. An identity between constants whose
 //! nested square roots do not denest (`sqrt(2 + sqrt(2))`) is decided in the real algebraic
 //! numbers (`exactcheck_exact::algebraic`).
@@ -262,11 +265,16 @@ fn random_test(
         | RandomDecision::Fails { report, .. } => report,
     };
     let method = format!(
-        "evaluation at {trials} random points modulo the random prime p = {} (seed {seed}{}{})",
+        "evaluation at {trials} random points modulo the random prime p = {} (seed {seed}{}{}{})",
         report.prime,
         if chosen.is_some() { ", chosen" } else { "" },
         if report.redrawn > 0 {
             format!(", {} primes dividing a divisor redrawn", report.redrawn)
+        } else {
+            String::new()
+        },
+        if report.poles > 0 {
+            format!(", {} points where a divisor vanishes skipped", report.poles)
         } else {
             String::new()
         }

@@ -346,3 +346,66 @@ fn solve_schema_flag_prints_the_committed_schema() {
         1
     );
 }
+
+/// A plane-plane problem with the given normal of the second plane and point of the first.
+fn planes(normal: &str, point: &str) -> String {
+    format!(
+        r#"{{"kind":"plane_plane","planes":[{{"normal":[0,0,1],"point":{point}}},{{"normal":{normal},"point":[1,0,0]}}]}}"#
+    )
+}
+
+#[test]
+fn number_strings_are_constant_formulas_of_the_language() {
+    // det([[1, 2], [3, 4]]) = -2, binomial(5, 2)/5 = 2, norm2([3, 4]) = 25, sum = 6.
+    let plain = answer(&planes("[-2, 0, 0]", "[0, 0, 2]"), &[]);
+    let written = answer(
+        &planes(
+            r#"["det([[1, 2], [3, 4]])", "dot([1, 2], [0, 0])", 0]"#,
+            r#"["factorial(0) - 1", 0, "binomial(5, 2)/5"]"#,
+        ),
+        &[],
+    );
+    assert_eq!(written, plain);
+    let big = answer(&planes("[-2, 0, 0]", "[0, 0, 25]"), &[]);
+    assert_eq!(
+        answer(&planes("[-2, 0, 0]", r#"[0, 0, "norm2([3, 4])"]"#), &[]),
+        big
+    );
+    assert_eq!(
+        answer(
+            &planes("[-2, 0, 0]", r#"[0, 0, "sum(k, 0, 3, k) + 19"]"#),
+            &[]
+        ),
+        big
+    );
+    // The --float reading goes through the same parser.
+    assert_eq!(
+        answer(
+            &planes("[-2, 0, 0]", r#"[0, 0, "factorial(4) + 1"]"#),
+            &["--float"]
+        ),
+        answer(&planes("[-2, 0, 0]", "[0, 0, 25]"), &["--float"])
+    );
+}
+
+#[test]
+fn number_strings_that_are_not_constant_scalars_are_refused_by_field() {
+    refused(
+        &planes("[-2, 0, 0]", r#"[0, 0, "2 x"]"#),
+        &[],
+        &["planes[0].point[2]", "\"2 x\"", "variable 'x'"],
+    );
+    refused(
+        &planes(r#"["[1, 2]", 0, 0]"#, "[0, 0, 1]"),
+        &[],
+        &[
+            "planes[1].normal[0]",
+            "a vector of 2 where a number is expected",
+        ],
+    );
+    refused(
+        &planes(r#"["det([[1, 2, 3]])", 0, 0]"#, "[0, 0, 1]"),
+        &[],
+        &["planes[1].normal[0]", "det"],
+    );
+}

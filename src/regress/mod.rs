@@ -52,7 +52,10 @@ pub struct RegressArgs {
     #[arg(value_enum)]
     pub kernel: Option<Kernel>,
     /// A formula in the `prove` syntax plus sqrt of any subexpression, e.g.
-    /// 'sqrt(x + 1) - sqrt(x)': evaluated in f64 in the order written and exactly.
+    /// 'sqrt(x + 1) - sqrt(x)': evaluated in f64 in the order written and exactly. The
+    /// functions of the language (det, dot, cross, norm2, bezier, sum, binomial, diff,
+    /// integrate, ...) are lowered to arithmetic first (diff and integrate to their expanded
+    /// exact result), and both sides evaluate that tree; the value must be a scalar.
     #[arg(long, conflicts_with_all = ["kernel", "fpcore"])]
     pub formula: Option<String>,
     /// The formula's inputs in order, comma-separated (default: in order of appearance).

@@ -220,8 +220,10 @@ fn check_radicands_together(text: &str) -> Result<(), Error> {
     };
     let mut texts = Vec::new();
     strings(&v, &mut texts);
-    let values: Vec<exactcheck_exact::Radical> =
-        texts.iter().filter_map(|s| s.parse().ok()).collect();
+    let values: Vec<exactcheck_exact::Radical> = texts
+        .iter()
+        .filter_map(|s| number::parse_radical(s).ok())
+        .collect();
     exactcheck_exact::Radical::check_radicands_together(&values).map_err(Error::Limit)
 }
 

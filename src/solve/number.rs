@@ -2,8 +2,9 @@
 //!
 //! A number in a problem is a JSON integer (of any size: the workspace enables serde_json's
 //! `arbitrary_precision`, so the digits arrive as written and are parsed exactly, never through
-//! `i64`/`f64`), or a string in the exact syntax, parsed by the workspace's expression parser
-//! (`Radical::from_str`; `"-3/4"`, `"0.1"` = 1/10, `"1/sqrt(2)"`, `"2^-10"`). A JSON floating-point
+//! `i64`/`f64`), or a string in the exact syntax: a constant formula of the one expression
+//! language, resolved by its function library and evaluated exactly ([`parse_radical`]; `"-3/4"`,
+//! `"0.1"` = 1/10, `"1/sqrt(2)"`, `"2^-10"`, `"binomial(5, 2)/3"`, `"det([[1, 2], [3, 4]])"`). A JSON floating-point
 //! literal (`0.1`, `1e+23`) is refused in exact mode, because JSON gives it no exact meaning
 //! most readers agree on; the message suggests the string that means the written decimal
 //! exactly (built from the literal's own digits, so it parses).
@@ -32,6 +33,8 @@
 use exactcheck_core::roots::{self, IsolatedRoot};
 use exactcheck_core::{Bernstein, OrderedField, Sign};
 use exactcheck_exact::univariate::{isolate_real_roots_in, UPoly};
+use exactcheck_exact::expr::library::{self, Val};
+
 use exactcheck_exact::{Radical, Radicand, Rational};
 use schemars::{json_schema, JsonSchema, Schema, SchemaGenerator};
 use serde::de::{Deserialize, Deserializer, Error as _};
@@ -88,9 +91,19 @@ fn kind_of(v: &Value) -> &'static str {
     }
 }
 
-fn parse_radical(text: &str) -> Result<Radical, String> {
-    text.parse::<Radical>()
-        .map_err(|e| format!("{text:?}: {e}"))
+/// The exact value of a number string: a constant formula of the one expression language
+/// (the library's `det`, `dot`, `norm2`, ... included, so `"det([[1, 2], [3, 4]])"` and
+/// `"binomial(5, 2)/3"` are numbers), resolved by [`library::resolve`] and evaluated in the
+/// radical field. A vector or matrix, or a formula with a variable, is a one-line error (the
+/// caller puts the field's path in front of it).
+pub(crate) fn parse_radical(text: &str) -> Result<Radical, String> {
+    let quoted = |m: String| format!("{text:?}: {m}");
+    match library::resolve(text).map_err(|e| quoted(e.to_string()))? {
+        Val::Scalar(e) => e
+            .eval_constant::<Radical>()
+            .map_err(|e| quoted(e.to_string())),
+        v => Err(quoted(format!("{} where a number is expected", v.shape()))),
+    }
 }
 
 /// The exact value of a JSON floating-point literal, written in the exact string syntax: a plain

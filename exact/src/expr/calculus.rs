@@ -280,7 +280,7 @@ fn sum_arguments<'a>(call: &Expr, args: &'a [Expr]) -> Result<SumArgs<'a>, ExprE
 
 /// The terms of `sum(k, a, b, E)` (`E` with `k` replaced by `a`, `a + 1`, ..., `b`), each
 /// converted by `convert`, counted against `sum-terms` before it is built.
-fn sum_terms<T>(
+pub(super) fn sum_terms<T>(
     call: &Expr,
     args: &[Expr],
     mut convert: impl FnMut(&Expr) -> Result<T, ExprError>,

@@ -107,7 +107,8 @@
 //! limits; `fraction`: the conversion to rational functions and the arguments of `diff`;
 //! `calculus`: `integrate`, `sum`, `binomial` and `factorial`; [`library`]: definitions,
 //! functions with parameters, vectors, matrices and the vector/Bezier functions, resolved to
-//! core trees; `print`: the printer; `latex`: LaTeX ([`to_latex`]) with a [`Notation`] for names, from
+//! core trees; [`lower`]: the core calls rewritten as plain arithmetic for the front ends that
+//! evaluate a tree operation by operation; `print`: the printer; `latex`: LaTeX ([`to_latex`]) with a [`Notation`] for names, from
 //! a layout shared with `mathml` ([`to_mathml`]); `w1`: the text of workload W1.
 //!
 //! # Errors
@@ -126,6 +127,7 @@ mod eval;
 mod fraction;
 mod latex;
 pub mod library;
+mod lower;
 mod mathml;
 mod parse;
 mod print;
@@ -136,6 +138,7 @@ mod trig;
 mod w1;
 
 pub use latex::{equation_to_latex, to_latex, Notation};
+pub use lower::lower;
 pub use mathml::{equation_to_mathml, to_mathml};
 pub use parse::{parse_expr, parse_expr_with_calls, parse_poly, LIST};
 pub use w1::w1_text;

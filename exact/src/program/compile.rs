@@ -23,12 +23,27 @@
 //!   name is an error naming it and the list), otherwise the variables in order of first
 //!   appearance, reading left to right.
 //!
-//! No constant folding: `1/3` is the double division `1.0 / 3.0`, as in the source. For the
-//! same reason the functions of the language (`diff`, `integrate`, `sum`, `binomial`,
-//! `factorial`) are refused: they have no operation-by-operation float evaluation that is the
-//! formula as written, and an expansion chosen here would regress a different formula.
+//! No constant folding: `1/3` is the double division `1.0 / 3.0`, as in the source.
+//!
+//! The formula is the one expression language of `prove` and the claims files: it is first
+//! resolved by the function library ([`crate::expr::library`]: vectors, matrices, `det`, `dot`,
+//! `cross`, `norm2`, `bezier`, `bernstein`, `subs`, `at`, ...), which must give a scalar (a
+//! vector or matrix is [`CompileError::NotScalar`]), and then lowered ([`crate::expr::lower`]):
+//! `binomial` and `factorial` become their integer values, `sum` the unrolled sum of its terms,
+//! `diff` and `integrate` their exact result expanded as a rational function. Both sides of the
+//! regression evaluate that one lowered tree, so what is compared for a `diff` is the float
+//! evaluation of the expanded derivative, not a finite difference. The variables are those of
+//! the formula as written (a variable that the lowering removes, as in `diff(x^2, y)`, is still
+//! an input). `pi` is the constant pi (its exact side a certified enclosure, its float side
+//! `std::f64::consts::PI`); `e` and `i` are constants, never variables, and a formula naming one
+//! is refused ([`CompileError::Reserved`]). The elementary functions (`sin`, `exp`, `log`, ...)
+//! are calls of the program.
 use super::{ChainOp, Func, Node, PowStyle, Program};
-use crate::expr::{parse_expr, parse_expr_with_calls, AddOp, Expr, ExprError, ExprKind, MulOp, PI};
+use crate::expr::library::{Defs, Val};
+use crate::expr::{
+    lower, parse_expr, parse_expr_with_calls, reserved_constant, AddOp, Expr, ExprError, ExprKind,
+    MulOp, PI,
+};
 use crate::rational::Rational;
 use exactcheck_core::limits::{self, LimitError};
 use num_traits::ToPrimitive;
@@ -79,6 +94,26 @@ pub enum CompileError {
         /// The exponent (its expression, or its value).
         found: String,
     },
+    /// An error of the function library (an unknown function, a wrong arity, shapes that do not
+    /// fit, ...); the message carries the position.
+    #[error("{0}")]
+    Resolve(String),
+    /// A formula whose value is a vector or a matrix.
+    #[error("the formula is {shape}; a regressed formula has one scalar value (take a coordinate, e.g. x(v) or at(v, 2), or a scalar function such as dot or norm2)")]
+    NotScalar {
+        /// The shape found (`a vector of 2`).
+        shape: String,
+    },
+    /// A constant of mathematics (`pi`, `e`, `i`) used as a variable.
+    #[error("'{name}' at {pos}: {why}")]
+    Reserved {
+        /// Byte position of the name.
+        pos: usize,
+        /// The name.
+        name: String,
+        /// Why it is refused.
+        why: &'static str,
+    },
     /// An exponent beyond the `formula-exponent` limit ([`limits::FORMULA_EXPONENT`]).
     #[error("exponent at {pos}: {error}")]
     ExponentTooLarge {
@@ -96,9 +131,13 @@ impl CompileError {
             CompileError::Expr(e) => e.position(),
             CompileError::UnknownVariable { pos, .. }
             | CompileError::UnknownFunction { pos, .. }
+            | CompileError::Reserved { pos, .. }
             | CompileError::BadExponent { pos, .. }
             | CompileError::ExponentTooLarge { pos, .. } => *pos,
-            CompileError::DuplicateVariable { .. } | CompileError::BadVariable { .. } => 0,
+            CompileError::DuplicateVariable { .. }
+            | CompileError::BadVariable { .. }
+            | CompileError::Resolve(_)
+            | CompileError::NotScalar { .. } => 0,
         }
     }
 }
@@ -111,6 +150,13 @@ struct Vars {
 
 impl Vars {
     fn index(&mut self, name: &str, pos: usize) -> Result<usize, CompileError> {
+        if let Some(why) = reserved(name) {
+            return Err(CompileError::Reserved {
+                pos,
+                name: name.to_string(),
+                why,
+            });
+        }
         if let Some(i) = self.names.iter().position(|n| n == name) {
             return Ok(i);
         }
@@ -130,15 +176,28 @@ impl Vars {
     }
 }
 
+/// Why `name` is a constant and not a variable of a regressed formula, `None` for a variable.
+fn reserved(name: &str) -> Option<&'static str> {
+    if name == PI {
+        return Some(
+            "pi is the constant pi, not a variable",
+        );
+    }
+    reserved_constant(name)
+}
+
 impl Program {
-    /// Compiles a parsed formula (see the module documentation of `program::compile`): inputs
+    /// Compiles a parsed formula (see the module documentation of `program::compile`: resolved
+    /// by the library, lowered, compiled): inputs
     /// `vars` in that order when given, else the variables in order of first appearance; one
     /// output; no slots, no precondition; the name is the printed expression (the caller may
     /// overwrite it).
     ///
     /// # Errors
-    /// An unknown, duplicate or malformed variable, an exponent that is not an integer constant or exceeds
-    /// the `formula-exponent` limit, or an error evaluating a constant exponent.
+    /// An unknown, duplicate or malformed variable, a constant used as a variable, a library
+    /// error or a vector value, an error of the lowering, an exponent that is not an integer
+    /// constant or exceeds the `formula-exponent` limit, or an error evaluating a constant
+    /// exponent.
     pub fn from_expr(expr: &Expr, vars: Option<&[String]>) -> Result<Program, CompileError> {
         let mut table = Vars {
             names: Vec::new(),
@@ -147,7 +206,7 @@ impl Program {
         for name in vars.unwrap_or_default() {
             let is_name =
                 parse_expr(name).is_ok_and(|e| matches!(&e.kind, ExprKind::Var(v) if v == name));
-            if !is_name || name == PI {
+            if !is_name || reserved(name).is_some() {
                 return Err(CompileError::BadVariable { name: name.clone() });
             }
             if table.names.contains(name) {
@@ -155,7 +214,32 @@ impl Program {
             }
             table.names.push(name.clone());
         }
-        let out = compile(expr, &mut table)?;
+        let resolved = match Defs::default()
+            .resolve_expr(expr)
+            .map_err(|e| CompileError::Resolve(e.to_string()))?
+        {
+            Val::Scalar(e) => e,
+            v => return Err(CompileError::NotScalar { shape: v.shape() }),
+        };
+        if !table.fixed {
+            // The inputs are the variables in the order written (`det([[a, b], [c, d]])` has
+            // a, b, c, d, though its expansion starts a*d), even one the lowering removes, but
+            // not a name the library replaces (the variable of `subs`).
+            let mut present = Vec::new();
+            resolved.collect_variables(&mut present);
+            let mut names = Vec::new();
+            expr.collect_variables(&mut names);
+            names.retain(|n| present.contains(n));
+            for n in present {
+                if !names.contains(&n) {
+                    names.push(n);
+                }
+            }
+            table
+                .names
+                .extend(names.into_iter().filter(|n| reserved(n).is_none()));
+        }
+        let out = compile(&lower(&resolved)?, &mut table)?;
         Ok(Program {
             name: expr.to_string(),
             inputs: table.names,
@@ -165,7 +249,8 @@ impl Program {
         })
     }
 
-    /// Parses `text` in the `prove` syntax ([`crate::expr::parse_expr`]) and compiles it with
+    /// Parses `text` in the `prove` syntax with the library's calls
+    /// ([`crate::expr::parse_expr_with_calls`]) and compiles it with
     /// [`Program::from_expr`]; the name is `text`, trimmed.
     ///
     /// # Errors
@@ -332,3 +417,7 @@ fn exponent(e: &Expr) -> Result<i32, CompileError> {
             error: limit.exceeded(q.to_string()),
         })
 }
+
+#[cfg(test)]
+#[path = "language_tests.rs"]
+mod language_tests;

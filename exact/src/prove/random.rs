@@ -25,58 +25,70 @@
 //!   `Holds`, and carries no bound.
 //!
 //! # The bound
-//! Write `LHS - RHS = F / D` with `F` in `Z[x]` and `D` a positive integer. [`size_bound`]
-//! computes from the expression tree, without expanding, numbers `L`, `L_D`, `d` with
-//! `log2 ||F||_1 <= L`, `log2 D <= L_D` and `deg F <= d` (`||F||_1` is the sum of the absolute
-//! values of the coefficients), by structural induction, each rule being the triangle inequality
-//! and `||F G||_1 <= ||F||_1 ||G||_1`:
+//! Write `LHS - RHS = F / D` with `F`, `D` in `Z[x]`, `D != 0`, built from the tree by the rules
+//! below (not reduced). [`size_bound`] computes from the expression tree, without expanding,
+//! numbers `L`, `L_D`, `d`, `e` with `log2 ||F||_1 <= L`, `log2 ||D||_1 <= L_D`, `deg F <= d`
+//! and `deg D <= e` (`||F||_1` is the sum of the absolute values of the coefficients), by
+//! structural induction, each rule being the triangle inequality and
+//! `||F G||_1 <= ||F||_1 ||G||_1`:
 //! * a number `n/d` (lowest terms): `F = n`, `D = d`: `L = bits(|n|)`, `L_D = bits(d)` (0 for
 //!   `d = 1`);
 //!   a variable: `L = L_D = 0`, degree 1; a negation changes nothing;
 //! * a sum of `m` terms `F_i / D_i`: `F = sum_i F_i prod_{j != i} D_j`, `D = prod D_j`, so
 //!   `L = ceil(log2 m) + max_i (L_i + sum_{j != i} L_Dj)` (for two terms
-//!   `max(L_F + L_DG, L_G + L_DF) + 1`), `L_D = sum L_Dj`, degree the maximum;
-//! * a product: `L = sum L_i`, `L_D = sum L_Di`, degree the sum; a division by a constant
-//!   `c = F_c / D_c` (`F_c` an integer, degree 0) multiplies by `D_c / F_c`: `L += L_Dc`,
-//!   `L_D += L_c` (`|F_c| <= 2^L_c`); division by a non-constant is refused;
-//! * a power `b^k` (`k` a non-negative integer literal): `k L_b`, `k L_Db`, `k d_b`.
+//!   `max(L_F + L_DG, L_G + L_DF) + 1`), `L_D = sum L_Dj`, `d = max_i (d_i + sum_{j != i} e_j)`,
+//!   `e = sum e_j`;
+//! * a product: `L = sum L_i`, `L_D = sum L_Di`, degrees the sums; a division by
+//!   `F_c / D_c` multiplies by `D_c / F_c`: `L += L_Dc`, `L_D += L_c`, `d += e_c`, `e += d_c`;
+//! * a power `b^k` (`k` a non-negative integer literal): `k L_b`, `k L_Db`, `k d_b`, `k e_b`.
 //!
 //! All of these are checked `u64` operations; an overflow makes the test report `undecided`
 //! (it never wraps). Square roots are refused in random mode (`sqrt(k)` has no canonical image
 //! modulo `p` — either root could be taken, and `k` need not be a square at all — and this
 //! module does not prove a bound for it): run without `--random`, which expands over the exact
-//! square-root field. The functions `diff`, `integrate`, `sum`, `binomial` and `factorial` are
-//! refused likewise: their value at a point needs their expansion, whose size this module does
-//! not bound from the tree.
+//! square-root field. The functions of the language are lowered first
+//! ([`crate::expr::lower`]): `binomial` and `factorial` become integers, `sum` its unrolled
+//! terms, `diff` and `integrate` their exact value expanded as a rational function (the one
+//! expansion random mode does); the bound is then that of the lowered tree.
+//!
+//! A point where a divisor with a variable vanishes modulo `p` (a pole) is not in the domain of
+//! the identity: it is skipped and another point drawn; [`MAX_POLES`] poles in a row are an
+//! error (the divisor is then, with overwhelming probability, zero).
 //!
 //! A unit circle `c^2 + s^2 = 1` is sampled as `c = (1 - t^2)/(1 + t^2)`, `s = 2t/(1 + t^2)`
 //! with `t` uniform among the residues where `1 + t^2 != 0`. Then
 //! `G(t, x) = F(c(t), s(t), x) prod_i (1 + t_i^2)^d` is a polynomial; a monomial
 //! `c^a s^b m` becomes `(1 - t^2)^a (2t)^b (1 + t^2)^{d - a - b} m`, of 1-norm at most `2^d` and
 //! degree at most `2d + deg m`, so with `k` circles `||G||_1 <= 2^{dk} ||F||_1` and
-//! `deg G <= d (1 + 2k)`. If the identity is false modulo the circles, `G != 0` over Q (its
+//! `deg G <= d (1 + 2k)`. Likewise `H = D(c(t), s(t), x) prod_i (1 + t_i^2)^e` has degree at
+//! most `e' = e (1 + 2k)`. If the identity is false modulo the circles, `G != 0` over Q (its
 //! rational-function image is non-zero).
 //!
 //! **Theorem.** Let the identity be false (modulo the unit circles), `L' = L + dk`,
-//! `d' = d(1 + 2k)`, and `N` the number of primes in `[2^62, 2^63)`. The probability that all
-//! `K` points give zero is at most
+//! `d' = d(1 + 2k)`, `e' = e(1 + 2k)`, and `N` the number of primes in `[2^62, 2^63)`. The
+//! probability that all `K` points give zero is at most
 //!
-//! `floor(L'/62) / (N - floor(L_D/62)) + (d' / (2^62 - 2k))^K`.
+//! `floor(L'/62) / (N - floor(L_D/62)) + (d' / (2^62 - 2k - e'))^K`.
 //!
-//! *Proof.* (1) The prime. Primes `p` that divide `D` are detected: some constant divisor or
-//! denominator has no inverse modulo `p` (the tree is evaluated with exactly the inversions
-//! whose product is `D`); such a prime is discarded and a new one drawn, so the prime used is
-//! uniform over the primes of the range not dividing `D`. `D < 2^{L_D}` has at most
-//! `floor(L_D/62)` prime factors `>= 2^62` (their product is at most `D`), so at least
-//! `N - floor(L_D/62)` primes remain. `G` has a non-zero integer coefficient of absolute value at
-//! most `||G||_1 <= 2^{L'}`, which likewise has at most `floor(L'/62)` prime factors in the
-//! range; only those primes can make `G` vanish identically modulo `p`. (2) The points. For `p`
-//! with `G mod p != 0`, `G` has at most `d' p^{n-1}` zeros among the `p^n` points of `F_p^n`
-//! (Schwartz–Zippel). Each circle parameter avoids at most 2 residues, so the points are uniform
-//! on a set of at least `p^n (1 - 2/p)^k >= p^n (1 - 2k/p)` points, and one of them is a zero of
-//! `G` with probability at most `d' / (p - 2k) <= d' / (2^62 - 2k)`; the `K` points are
-//! independent. At a point, the evaluated value is `G / (D prod (1 + t_i^2)^d)` with an
-//! invertible denominator, so it is zero exactly when `G` is. ∎
+//! *Proof.* (1) The prime. The integer constants the evaluation inverts (denominators of
+//! numbers, constant divisors) multiply to an integer `c` that divides the content of `D`, so
+//! `|c| <= ||D||_1 <= 2^{L_D}`. A prime dividing one of them is detected (the inversion fails)
+//! and discarded, and a new one drawn, so the prime used is uniform over the primes of the
+//! range not dividing `c`, of which at least `N - floor(L_D/62)` remain (`c` has at most
+//! `floor(L_D/62)` prime factors `>= 2^62`). `G` has a non-zero integer coefficient of absolute
+//! value at most `||G||_1 <= 2^{L'}`, which likewise has at most `floor(L'/62)` prime factors
+//! in the range; only those primes can make `G` vanish identically modulo `p`. (2) The points.
+//! By induction over the tree, every inversion of the evaluation succeeds exactly when
+//! `D != 0` at the point (each node's `D` divides its parent's, and a divisor's value is
+//! `F_c / D_c` with `F_c` a factor of `D`), and then the value is `F / D` there. Points are
+//! drawn uniformly until one is not a pole, so each is uniform on the set `S` of circle points
+//! where `H != 0`: `|S| >= p^n (1 - 2k/p) - e' p^{n-1}` (each circle parameter avoids at most 2
+//! residues; `H`, non-zero modulo `p` when a point of `S` exists, has at most `e' p^{n-1}`
+//! zeros, Schwartz–Zippel). For `p` with `G mod p != 0`, `G` has at most `d' p^{n-1}` zeros, so
+//! a point of `S` is a zero of `G` with probability at most `d' / (p - 2k - e') <=
+//! d' / (2^62 - 2k - e')`; the `K` points are independent. At a point of `S`, the evaluated
+//! value is `(G / H) prod (1 + t_i^2)^{e - d}`, so it is zero exactly
+//! when `G` is. ∎
 //!
 //! `N > 2^56`: by Rosser and Schoenfeld (1962), `x / ln x < pi(x) < 1.25506 x / ln x` for
 //! `x >= 17`, so `N = pi(2^63) - pi(2^62) > 2^63 / (63 ln 2) - 1.25506 · 2^62 / (62 ln 2)
@@ -89,7 +101,7 @@
 //! below `2^HOLDS_THRESHOLD_LOG2` ([`HOLDS_THRESHOLD_LOG2`] `= -30`); otherwise `undecided` with
 //! the bound (or, with a chosen seed, `Reproduced` without one).
 
-use crate::expr::{AddOp, Expr, ExprKind, MulOp};
+use crate::expr::{lower, AddOp, Expr, ExprKind, MulOp};
 use crate::modp::PrimeField;
 use exactcheck_core::Rng;
 use std::collections::HashMap;
@@ -105,6 +117,10 @@ pub const MAX_RANDOM_TRIALS: u32 = 100_000;
 /// divisor is (with overwhelming probability) zero, which is an error.
 const MAX_PRIME_REDRAWS: u32 = 64;
 
+/// Points are redrawn at most this often in a row when a divisor vanishes there (a pole); after
+/// that the divisor is (with overwhelming probability) zero, which is an error.
+const MAX_POLES: u32 = 64;
+
 /// `log2 N` for the lower bound `N = 2^56` on the number of primes in `[2^62, 2^63)`.
 const LOG2_PRIMES: u32 = 56;
 
@@ -117,6 +133,8 @@ pub struct SizeBound {
     pub den_bits: u64,
     /// `deg F <= degree`.
     pub degree: u64,
+    /// `deg D <= den_degree` (0 when every divisor is a constant).
+    pub den_degree: u64,
 }
 
 /// Why [`size_bound`] gave no bound.
@@ -159,11 +177,13 @@ pub fn size_bound(e: &Expr) -> Result<SizeBound, BoundError> {
                 bits_of(&q.denom())
             },
             degree: 0,
+            den_degree: 0,
         },
         ExprKind::Var(_) => SizeBound {
             num_bits: 0,
             den_bits: 0,
             degree: 1,
+            den_degree: 0,
         },
         ExprKind::Neg(x) => size_bound(x)?,
         ExprKind::Sum(ts) => {
@@ -175,19 +195,29 @@ pub fn size_bound(e: &Expr) -> Result<SizeBound, BoundError> {
                 .iter()
                 .try_fold(0u64, |a, b| a.checked_add(b.den_bits))
                 .ok_or(of.clone())?;
-            let mut num = 0u64;
+            let den_degree = parts
+                .iter()
+                .try_fold(0u64, |a, b| a.checked_add(b.den_degree))
+                .ok_or(of.clone())?;
+            let (mut num, mut degree) = (0u64, 0u64);
             for b in &parts {
-                // L_i + sum_{j != i} L_Dj = L_i + (L_D - L_Di).
+                // L_i + sum_{j != i} L_Dj = L_i + (L_D - L_Di), and likewise for degrees.
                 let v = b
                     .num_bits
                     .checked_add(den_bits - b.den_bits)
                     .ok_or(of.clone())?;
                 num = num.max(v);
+                let d = b
+                    .degree
+                    .checked_add(den_degree - b.den_degree)
+                    .ok_or(of.clone())?;
+                degree = degree.max(d);
             }
             SizeBound {
                 num_bits: num.checked_add(ceil_log2(parts.len())).ok_or(of)?,
                 den_bits,
-                degree: parts.iter().map(|b| b.degree).max().unwrap_or(0),
+                degree,
+                den_degree,
             }
         }
         ExprKind::Product(fs) => {
@@ -195,23 +225,19 @@ pub fn size_bound(e: &Expr) -> Result<SizeBound, BoundError> {
                 num_bits: 0,
                 den_bits: 0,
                 degree: 0,
+                den_degree: 0,
             };
             for (op, f) in fs {
                 let b = size_bound(f)?;
-                let (num, den) = match op {
-                    MulOp::Times => {
-                        acc.degree = acc.degree.checked_add(b.degree).ok_or(of.clone())?;
-                        (b.num_bits, b.den_bits)
-                    }
-                    MulOp::Divide if b.degree == 0 => (b.den_bits, b.num_bits),
-                    MulOp::Divide => {
-                        return Err(BoundError::Input(
-                            "a division by a non-constant is not a polynomial".into(),
-                        ))
-                    }
+                // Dividing by F_b / D_b multiplies by D_b / F_b.
+                let (num, den, deg, den_deg) = match op {
+                    MulOp::Times => (b.num_bits, b.den_bits, b.degree, b.den_degree),
+                    MulOp::Divide => (b.den_bits, b.num_bits, b.den_degree, b.degree),
                 };
                 acc.num_bits = acc.num_bits.checked_add(num).ok_or(of.clone())?;
                 acc.den_bits = acc.den_bits.checked_add(den).ok_or(of.clone())?;
+                acc.degree = acc.degree.checked_add(deg).ok_or(of.clone())?;
+                acc.den_degree = acc.den_degree.checked_add(den_deg).ok_or(of.clone())?;
             }
             acc
         }
@@ -226,7 +252,8 @@ pub fn size_bound(e: &Expr) -> Result<SizeBound, BoundError> {
             SizeBound {
                 num_bits: b.num_bits.checked_mul(k).ok_or(of.clone())?,
                 den_bits: b.den_bits.checked_mul(k).ok_or(of.clone())?,
-                degree: b.degree.checked_mul(k).ok_or(of)?,
+                degree: b.degree.checked_mul(k).ok_or(of.clone())?,
+                den_degree: b.den_degree.checked_mul(k).ok_or(of)?,
             }
         }
         ExprKind::Call(name, _) if crate::expr::TRIG_FUNCTIONS.contains(&name.as_str()) => {
@@ -263,6 +290,8 @@ fn unsupported_call(name: &str) -> String {
 enum EvalError {
     /// A constant divisor or a denominator is divisible by `p`.
     NotInvertible,
+    /// A divisor with a variable is zero at the point (a pole).
+    Pole,
     /// A malformed expression (message).
     Input(String),
 }
@@ -291,7 +320,16 @@ fn eval(e: &Expr, f: &PrimeField, point: &HashMap<String, u64>) -> Result<u64, E
                 let v = eval(x, f, point)?;
                 acc = match op {
                     MulOp::Times => f.mul(acc, v),
-                    MulOp::Divide => f.mul(acc, f.inv(v).map_err(|_| EvalError::NotInvertible)?),
+                    MulOp::Divide => f.mul(
+                        acc,
+                        f.inv(v).map_err(|_| {
+                            if has_variable(x) {
+                                EvalError::Pole
+                            } else {
+                                EvalError::NotInvertible
+                            }
+                        })?,
+                    ),
                 };
             }
             acc
@@ -309,6 +347,19 @@ fn eval(e: &Expr, f: &PrimeField, point: &HashMap<String, u64>) -> Result<u64, E
             ))
         }
     })
+}
+
+/// Whether a variable occurs in the tree.
+fn has_variable(e: &Expr) -> bool {
+    match &e.kind {
+        ExprKind::Number(_) => false,
+        ExprKind::Var(_) => true,
+        ExprKind::Neg(x) | ExprKind::Sqrt(x) => has_variable(x),
+        ExprKind::Pow(a, b) => has_variable(a) || has_variable(b),
+        ExprKind::Sum(ts) => ts.iter().any(|(_, t)| has_variable(t)),
+        ExprKind::Product(fs) => fs.iter().any(|(_, f)| has_variable(f)),
+        ExprKind::Call(_, args) => args.iter().any(has_variable),
+    }
 }
 
 /// The seed of a run and where it came from (module documentation, "Where the seed comes
@@ -341,6 +392,8 @@ pub struct RandomReport {
     pub redrawn: u32,
     /// Points evaluated.
     pub trials: u32,
+    /// Points drawn and skipped because a divisor vanishes there (poles).
+    pub poles: u32,
 }
 
 /// The outcome of a randomized identity test.
@@ -381,8 +434,8 @@ pub enum RandomDecision {
     },
 }
 
-/// `log2(floor(L'/62) / (2^56 - floor(L_D/62)) + (d'/(2^62 - 2k))^K)`, rounded up (0 when the
-/// bound is not below 1).
+/// `log2(floor(L'/62) / (2^56 - floor(L_D/62)) + (d'/(2^62 - 2k - e'))^K)`, rounded up (0 when
+/// the bound is not below 1).
 pub fn log2_error_bound(bound: &SizeBound, circles: usize, trials: u32) -> f64 {
     let bad_primes = (bound.num_bits / 62) as f64;
     let excluded = (bound.den_bits / 62) as f64;
@@ -391,7 +444,11 @@ pub fn log2_error_bound(bound: &SizeBound, circles: usize, trials: u32) -> f64 {
         return 0.0;
     }
     let prime_term = bad_primes / (n - excluded);
-    let per_point = bound.degree as f64 / (2f64.powi(62) - 2.0 * circles as f64);
+    let per_point =
+        bound.degree as f64 / (2f64.powi(62) - 2.0 * circles as f64 - bound.den_degree as f64);
+    if per_point < 0.0 {
+        return 0.0;
+    }
     if prime_term >= 1.0 || per_point >= 1.0 {
         return 0.0;
     }
@@ -434,6 +491,10 @@ pub fn random_identity_test(
             "--random takes 1 to {MAX_RANDOM_TRIALS} points, not {trials}"
         ));
     }
+    let (lhs, rhs) = (
+        &lower(lhs).map_err(|e| e.to_string())?,
+        &lower(rhs).map_err(|e| e.to_string())?,
+    );
     let k = circles.len() as u64;
     let bound = match (size_bound(lhs), size_bound(rhs)) {
         (Err(BoundError::Input(m)), _) | (_, Err(BoundError::Input(m))) => return Err(m),
@@ -441,11 +502,16 @@ pub fn random_identity_test(
             let num = (l.num_bits.checked_add(r.den_bits)?)
                 .max(r.num_bits.checked_add(l.den_bits)?)
                 .checked_add(1)?;
-            let degree = l.degree.max(r.degree);
+            // LHS - RHS = (F_l D_r - F_r D_l) / (D_l D_r).
+            let degree =
+                (l.degree.checked_add(r.den_degree)?).max(r.degree.checked_add(l.den_degree)?);
+            let den_degree = l.den_degree.checked_add(r.den_degree)?;
+            let spread = k.checked_mul(2)?.checked_add(1)?;
             Some(SizeBound {
                 num_bits: num.checked_add(degree.checked_mul(k)?)?,
                 den_bits: l.den_bits.checked_add(r.den_bits)?,
-                degree: degree.checked_mul(k.checked_mul(2)?.checked_add(1)?)?,
+                degree: degree.checked_mul(spread)?,
+                den_degree: den_degree.checked_mul(spread)?,
             })
         })(),
         _ => None,
@@ -455,13 +521,16 @@ pub fn random_identity_test(
     let mut redrawn = 0;
     'prime: loop {
         let field = PrimeField::random_62(&mut rng);
-        let report = RandomReport {
+        let mut report = RandomReport {
             seed,
             prime: field.modulus(),
             redrawn,
             trials,
+            poles: 0,
         };
-        for _ in 0..trials {
+        let mut poles = 0u32;
+        let mut done = 0u32;
+        while done < trials {
             let mut point: HashMap<String, u64> = variables
                 .iter()
                 .map(|v| (v.clone(), field.random(&mut rng)))
@@ -483,6 +552,19 @@ pub fn random_identity_test(
             let value = match (eval(lhs, &field, &point), eval(rhs, &field, &point)) {
                 (Ok(a), Ok(b)) => field.sub(a, b),
                 (Err(EvalError::Input(m)), _) | (_, Err(EvalError::Input(m))) => return Err(m),
+                (Err(EvalError::Pole), _) | (_, Err(EvalError::Pole)) => {
+                    // A pole: the point is not in the domain; another one is drawn.
+                    poles += 1;
+                    report.poles = report.poles.saturating_add(1);
+                    if poles > MAX_POLES {
+                        return Err(format!(
+                            "a divisor is zero at {MAX_POLES} random points in a row modulo the \
+                             random prime p = {}: it is zero (run without --random to see which)",
+                            field.modulus()
+                        ));
+                    }
+                    continue;
+                }
                 _ => {
                     redrawn += 1;
                     if redrawn > MAX_PRIME_REDRAWS {
@@ -493,6 +575,8 @@ pub fn random_identity_test(
                     continue 'prime;
                 }
             };
+            poles = 0;
+            done += 1;
             if value != 0 {
                 let mut point: Vec<(String, u64)> = point.into_iter().collect();
                 point.sort_by(|a, b| a.0.cmp(&b.0));
@@ -535,8 +619,8 @@ impl fmt::Display for SizeBound {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
-            "log2 ||F||_1 <= {}, log2 D <= {}, degree <= {}",
-            self.num_bits, self.den_bits, self.degree
+            "log2 ||F||_1 <= {}, log2 ||D||_1 <= {}, degree <= {}, degree of D <= {}",
+            self.num_bits, self.den_bits, self.degree, self.den_degree
         )
     }
 }
@@ -557,7 +641,8 @@ mod tests {
             SizeBound {
                 num_bits: 61,
                 den_bits: 0,
-                degree: 1
+                degree: 1,
+                den_degree: 0,
             }
         );
         let b = bound("(x + 3)^4 / 5");
@@ -569,10 +654,14 @@ mod tests {
             size_bound(&parse_expr("sqrt(2) x").unwrap()),
             Err(BoundError::Input(_))
         ));
-        assert!(matches!(
-            size_bound(&parse_expr("1/x").unwrap()),
-            Err(BoundError::Input(_))
-        ));
+        // 1/x + 2/(y + 3)^2 = (1 (y + 3)^2 + 2 x) / (x (y + 3)^2): 1/x gives L = bits(1) = 1,
+        // e = 1; 2/(y + 3)^2 gives L = bits(2) = 2, L_D = 2 (bits(3) + 1) = 6, e = 2; the sum
+        // max(1 + 6, 2 + 0) + 1 = 8, L_D = 6, d = max(0 + 2, 0 + 1) = 2, e = 3.
+        let b = bound("1/x + 2/(y + 3)^2");
+        assert_eq!(
+            (b.num_bits, b.den_bits, b.degree, b.den_degree),
+            (8, 6, 2, 3)
+        );
     }
 
     #[test]
@@ -581,6 +670,7 @@ mod tests {
             num_bits: 62 * 4,
             den_bits: 0,
             degree: 0,
+            den_degree: 0,
         };
         // 4 / 2^56 = 2^-54.
         assert!((log2_error_bound(&b, 0, 5) + 54.0).abs() < 1e-6);
@@ -588,6 +678,7 @@ mod tests {
             num_bits: 10,
             den_bits: 0,
             degree: 1 << 52,
+            den_degree: 0,
         };
         // (2^52 / 2^62)^3 = 2^-30.
         assert!((log2_error_bound(&b, 0, 3) + 30.0).abs() < 1e-6);
@@ -595,6 +686,7 @@ mod tests {
             num_bits: 10,
             den_bits: 0,
             degree: u64::MAX,
+            den_degree: 0,
         };
         assert_eq!(log2_error_bound(&b, 0, 100), 0.0);
     }

@@ -1,0 +1,229 @@
+//! Lowering: the functions of the core language rewritten as plain arithmetic trees, for the
+//! front ends that evaluate a tree operation by operation (`regress --formula` in f64 and
+//! exactly, `prove --random` modulo a prime).
+//!
+//! [`lower`] takes a tree resolved by the [`library`](super::library) (vectors, matrices,
+//! `det`, `dot`, `cross`, `norm2`, `bezier`, definitions and user functions are already
+//! arithmetic there) and replaces every remaining call of the core language:
+//! * `binomial(n, k)` and `factorial(n)` by their exact integer value;
+//! * `sum(k, a, b, E)` by the unrolled sum `E(a) + E(a+1) + ... + E(b)`, each term lowered in
+//!   turn (nested sums share the one `sum-terms` budget, as in the exact conversions);
+//! * `diff(E, t[, k])` by the derivative expanded as a rational function in lowest terms
+//!   (numerator, or numerator `/` denominator), computed exactly by [`Expr::to_ratfun`];
+//! * `integrate(E, t, a, b)` by its exact value expanded the same way; with a bound that holds a
+//!   square root, by `G(b) - G(a)` where `G(u) = integrate(E, t, 0, u)` is expanded and the
+//!   lowered bounds are substituted for `u`.
+//!
+//! Everything else is kept as written (`+ - * /`, powers, `sqrt`, the trigonometric calls with
+//! their arguments lowered), so a division the user wrote stays a division. The derivative and
+//! the integral have no written operation order to keep: the lowered tree is the expanded
+//! result, and a caller evaluating in floating point evaluates that tree (its documentation says
+//! so). `diff` and `integrate` of an expression with a square root or a trigonometric function
+//! are refused with a one-line error: the expansion here is over polynomials in the variables.
+//!
+//! The size of the lowered tree is held to [`library::MAX_NODES`](super::library::MAX_NODES)
+//! nodes, as the library holds its resolved trees. Hand-written: the rewriting is a recursion
+//! over the grammar of this module's parent, which no crate knows.
+
+use super::calculus::sum_terms;
+use super::fraction::diff_arguments;
+use super::library::{count_nodes, has_sqrt, substitute, MAX_NODES};
+use super::trig::has_trig;
+use super::*;
+use crate::poly::Vars;
+use crate::ratfun::RatFun;
+
+/// `e` with every call of `diff`, `integrate`, `sum`, `binomial` and `factorial` replaced by
+/// plain arithmetic (module documentation). A tree without such calls comes back unchanged.
+///
+/// ```
+/// use exactcheck_exact::expr::{lower, parse_expr};
+/// use exactcheck_exact::{poly::Vars, Rational};
+///
+/// let e = parse_expr("diff(t^3, t) + sum(k, 1, 3, k) + binomial(5, 2)").unwrap();
+/// let lowered = lower(&e).unwrap();
+/// assert!(!lowered.to_string().contains("diff") && !lowered.to_string().contains("sum"));
+/// let mut vars = Vars::new();
+/// let value = lowered.to_poly::<Rational>(&mut vars).unwrap();
+/// let expected = parse_expr("3 t^2 + 16").unwrap().to_poly::<Rational>(&mut vars).unwrap();
+/// assert_eq!(value, expected);
+/// ```
+///
+/// # Errors
+/// The errors of the calls' arguments (wrong arity, a bound that is not an integer constant, a
+/// `diff` by a non-variable, ...), of the exact expansion (limits, a division by zero), a `diff`
+/// or `integrate` of an expression with `sqrt` or a trigonometric function, and a lowered tree
+/// beyond [`MAX_NODES`] nodes.
+pub fn lower(e: &Expr) -> Result<Expr, ExprError> {
+    let out = lower_node(e)?;
+    let nodes = count_nodes(&out);
+    if nodes > MAX_NODES {
+        return Err(ExprError::BadCall {
+            pos: e.pos,
+            name: "the formula".into(),
+            why: format!(
+                "its functions expand to {nodes} operations, more than {MAX_NODES}; lower the \
+                 bounds of its sums or the orders of its derivatives"
+            ),
+        });
+    }
+    Ok(out)
+}
+
+fn lower_node(e: &Expr) -> Result<Expr, ExprError> {
+    let boxed = |x: &Expr| lower_node(x).map(Box::new);
+    let kind = match &e.kind {
+        ExprKind::Number(_) | ExprKind::Var(_) => return Ok(e.clone()),
+        ExprKind::Neg(x) => ExprKind::Neg(boxed(x)?),
+        ExprKind::Sqrt(x) => ExprKind::Sqrt(boxed(x)?),
+        ExprKind::Pow(a, k) => ExprKind::Pow(boxed(a)?, boxed(k)?),
+        ExprKind::Sum(ts) => ExprKind::Sum(
+            ts.iter()
+                .map(|(op, t)| Ok((*op, lower_node(t)?)))
+                .collect::<Result<_, ExprError>>()?,
+        ),
+        ExprKind::Product(fs) => ExprKind::Product(
+            fs.iter()
+                .map(|(op, f)| Ok((*op, lower_node(f)?)))
+                .collect::<Result<_, ExprError>>()?,
+        ),
+        ExprKind::Call(name, args) => match name.as_str() {
+            "binomial" | "factorial" => {
+                let q: Rational = e.eval_constant()?;
+                return Ok(at(Expr::number(q), e.pos));
+            }
+            "sum" => {
+                let terms = sum_terms(e, args, lower_node)?;
+                if terms.is_empty() {
+                    return Ok(at(Expr::number(Rational::ZERO), e.pos));
+                }
+                ExprKind::Sum(terms.into_iter().map(|t| (AddOp::Plus, t)).collect())
+            }
+            "diff" => {
+                let (body, _, _) = diff_arguments(e, args)?;
+                refuse_roots_and_angles(e, body)?;
+                return expand(e);
+            }
+            "integrate" => return lower_integral(e, args),
+            _ => ExprKind::Call(
+                name.clone(),
+                args.iter().map(lower_node).collect::<Result<_, _>>()?,
+            ),
+        },
+    };
+    Ok(Expr { kind, pos: e.pos })
+}
+
+/// `x` with every position set to `pos` (a computed value takes the position of its call).
+fn at(x: Expr, pos: usize) -> Expr {
+    let mut x = x;
+    x.pos = pos;
+    if let ExprKind::Neg(inner) = &mut x.kind {
+        inner.pos = pos;
+    }
+    x
+}
+
+/// The refusal of a `diff` or `integrate` (the call `call`) whose expression `body` has a
+/// square root or an angle: [`expand`] works over polynomials in the variables.
+fn refuse_roots_and_angles(call: &Expr, body: &Expr) -> Result<(), ExprError> {
+    let ExprKind::Call(name, _) = &call.kind else {
+        unreachable!("a call")
+    };
+    let what = if has_sqrt(body) {
+        "sqrt"
+    } else if has_trig(body) {
+        "sin, cos or tan"
+    } else {
+        return Ok(());
+    };
+    Err(ExprError::BadCall {
+        pos: body.pos,
+        name: name.clone(),
+        why: format!(
+            "{body} contains {what}; a formula evaluated operation by operation expands {name} \
+             exactly as a rational function, which it cannot do with {what}"
+        ),
+    })
+}
+
+/// The exact value of `e` as an expanded rational function: the numerator, or numerator `/`
+/// denominator, every node at the position of `e`.
+fn expand(e: &Expr) -> Result<Expr, ExprError> {
+    let mut vars = Vars::new();
+    let f: RatFun<Rational> = e.to_ratfun(&mut vars)?;
+    let num = f.numerator().to_expr(&vars);
+    let out = if f.denominator().is_one() {
+        num
+    } else {
+        Expr::new(ExprKind::Product(vec![
+            (MulOp::Times, num),
+            (MulOp::Divide, f.denominator().to_expr(&vars)),
+        ]))
+    };
+    Ok(set_positions(&out, e.pos))
+}
+
+/// `e` with every node at `pos`.
+fn set_positions(e: &Expr, pos: usize) -> Expr {
+    let b = |x: &Expr| Box::new(set_positions(x, pos));
+    let kind = match &e.kind {
+        ExprKind::Number(_) | ExprKind::Var(_) => e.kind.clone(),
+        ExprKind::Neg(x) => ExprKind::Neg(b(x)),
+        ExprKind::Sqrt(x) => ExprKind::Sqrt(b(x)),
+        ExprKind::Pow(x, k) => ExprKind::Pow(b(x), b(k)),
+        ExprKind::Sum(ts) => ExprKind::Sum(
+            ts.iter()
+                .map(|(o, t)| (*o, set_positions(t, pos)))
+                .collect(),
+        ),
+        ExprKind::Product(fs) => ExprKind::Product(
+            fs.iter()
+                .map(|(o, f)| (*o, set_positions(f, pos)))
+                .collect(),
+        ),
+        ExprKind::Call(n, args) => ExprKind::Call(
+            n.clone(),
+            args.iter().map(|a| set_positions(a, pos)).collect(),
+        ),
+    };
+    Expr { kind, pos }
+}
+
+/// `integrate(E, t, a, b)` lowered (module documentation).
+fn lower_integral(call: &Expr, args: &[Expr]) -> Result<Expr, ExprError> {
+    let [body, _, lo, hi] = args else {
+        // The conversion names the arity.
+        return expand(call);
+    };
+    refuse_roots_and_angles(call, body)?;
+    let bounds_plain = [lo, hi].iter().all(|b| !has_sqrt(b) && !has_trig(b));
+    if bounds_plain {
+        return expand(call);
+    }
+    // G(u) = integrate(E, t, 0, u) for a name u free in the call, then G(b) - G(a).
+    let mut names = Vec::new();
+    call.collect_variables(&mut names);
+    for a in args {
+        a.collect_variables(&mut names);
+    }
+    let u = (0u32..)
+        .map(|k| format!("_u{k}"))
+        .find(|n| !names.contains(n))
+        .expect("finitely many names are taken");
+    let mut g_args = args.to_vec();
+    g_args[2] = Expr::number(Rational::ZERO);
+    g_args[3] = Expr::var(&u);
+    let g = expand(&Expr {
+        kind: ExprKind::Call("integrate".into(), g_args),
+        pos: call.pos,
+    })?;
+    let (lo, hi) = (lower_node(lo)?, lower_node(hi)?);
+    Ok(Expr {
+        kind: ExprKind::Sum(vec![
+            (AddOp::Plus, substitute(&g, &u, &hi)),
+            (AddOp::Minus, substitute(&g, &u, &lo)),
+        ]),
+        pos: call.pos,
+    })
+}

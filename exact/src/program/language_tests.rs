@@ -1,0 +1,283 @@
+//! Tests of the formula front end with the whole expression language: the library's functions
+//! and the core calls, lowered before compilation.
+use super::*;
+use crate::expr::library::{self, Val};
+use crate::poly::Vars;
+use crate::program::ExactStop;
+use crate::ratfun::RatFun;
+use proptest::prelude::*;
+
+fn q(n: i64, d: i64) -> Rational {
+    Rational::new(n, d).unwrap()
+}
+
+/// The value of `text` at `point` (by name) through the `prove` path: resolved by the library,
+/// converted to a rational function in lowest terms, numerator and denominator evaluated.
+/// `None` at a pole.
+fn prove_value(text: &str, point: &[(&str, Rational)]) -> Option<Rational> {
+    let Val::Scalar(e) = library::resolve(text).unwrap() else {
+        panic!("{text} is not a scalar")
+    };
+    let mut vars = Vars::new();
+    let f: RatFun<Rational> = e.to_ratfun(&mut vars).unwrap();
+    let values: Vec<Rational> = vars
+        .names()
+        .iter()
+        .map(|n| {
+            point
+                .iter()
+                .find(|(m, _)| m == n)
+                .map(|(_, v)| v.clone())
+                .unwrap_or_else(|| panic!("no value for {n}"))
+        })
+        .collect();
+    let num = f.numerator().eval(&values, Clone::clone);
+    let den = f.denominator().eval(&values, Clone::clone);
+    if den == Rational::ZERO {
+        None
+    } else {
+        Some(num / den)
+    }
+}
+
+/// The exact value of the compiled program at `point` (by name); `None` outside the domain.
+fn program_value(p: &Program, point: &[(&str, Rational)]) -> Option<Rational> {
+    let x: Vec<Rational> = p
+        .inputs
+        .iter()
+        .map(|n| {
+            point
+                .iter()
+                .find(|(m, _)| m == n)
+                .map(|(_, v)| v.clone())
+                .unwrap_or_else(|| panic!("no value for {n}"))
+        })
+        .collect();
+    match p.eval_exact(&x) {
+        Ok(r) => {
+            assert!(r[0].exact, "{}: not exact", p.name);
+            Some(Rational::from(r[0].value.clone()))
+        }
+        Err(ExactStop::OutsideDomain) => None,
+        Err(e) => panic!("{}: {e:?}", p.name),
+    }
+}
+
+const FORMULAS: &[&str] = &[
+    "diff(t^3/(1+t), t)",
+    "diff(x^2 y + y^3, x, 2) - 2 y",
+    "sum(k, 0, 4, binomial(4, k) x^k y^(4 - k))",
+    "factorial(5) / binomial(6, 2) * x",
+    "det([[x, 2], [3, y]])",
+    "det([[x, 1, 0], [1, y, 1], [0, 1, x]])",
+    "dot([x, y], [y, 1]) + norm2([x - 1, y])",
+    "cross([x, y], [1, 2])",
+    "dot(cross([x, y, 1], [2, x, y]), [1, 2, 3])",
+    "bezier(t, 1, 3, x)",
+    "x(bezier(t, [0, 0], [1, 2], [3, x]))",
+    "integrate(x t^2 + 1, t, 0, y)",
+    "((1-t^2)/(1+t^2))^2 + (2*t/(1+t^2))^2",
+    "subs(x^2 + y, x, t + 1)",
+    "at(transpose([[1, x], [y, 2]]) * [1, 1], 2)",
+];
+
+#[test]
+fn library_formulas_compile_to_their_exact_value() {
+    let points = [
+        [("x", q(3, 2)), ("y", q(-2, 3)), ("t", q(5, 4))],
+        [("x", q(-7, 1)), ("y", q(1, 8)), ("t", q(-3, 16))],
+    ];
+    for text in FORMULAS {
+        let p = Program::parse(text, None).unwrap_or_else(|e| panic!("{text}: {e}"));
+        for point in &points {
+            assert_eq!(
+                program_value(&p, point),
+                prove_value(text, point),
+                "{text} at {point:?}"
+            );
+        }
+    }
+}
+
+#[test]
+fn the_lowered_tree_is_what_both_sides_evaluate() {
+    // The derivative is expanded (3 t^2), the sum unrolled, binomial folded.
+    let p = Program::parse("diff(t^3, t) + sum(k, 1, 2, k t) + binomial(4, 2)", None).unwrap();
+    assert_eq!(p.inputs, vec!["t".to_string()]);
+    assert_eq!(p.eval_f64(&[2.0]), vec![12.0 + 6.0 + 6.0]);
+    // A user-written division stays a division (1/3 is not folded).
+    let p = Program::parse("det([[x, 1], [1, 3]]) / 3", None).unwrap();
+    assert_eq!(p.eval_f64(&[1.0]), vec![(1.0 * 3.0 - 1.0) / 3.0]);
+}
+
+#[test]
+fn the_inputs_are_the_variables_as_written() {
+    let p = Program::parse("diff(x^2, y) + z", None).unwrap();
+    assert_eq!(p.inputs, vec!["x", "y", "z"]);
+    assert_eq!(p.eval_f64(&[1.0, 2.0, 3.0]), vec![3.0]);
+    let p = Program::parse("sum(k, 1, 3, k x)", None).unwrap();
+    assert_eq!(p.inputs, vec!["x"]);
+    let p = Program::parse("det([[a, b], [c, d]])", None).unwrap();
+    assert_eq!(p.inputs, vec!["a", "b", "c", "d"]);
+    let p = Program::parse("subs(x^2 + y, x, t + 1)", None).unwrap();
+    assert_eq!(p.inputs, vec!["y", "t"]);
+}
+
+#[test]
+fn an_integral_with_a_root_in_a_bound_is_lowered_by_its_antiderivative() {
+    let p = Program::parse("integrate(t^2, t, 0, sqrt(x))", None).unwrap();
+    assert_eq!(program_value(&p, &[("x", q(4, 1))]), Some(q(8, 3)));
+    let v = p.eval_f64(&[2.0])[0];
+    assert!((v - 2f64.sqrt() * 2.0 / 3.0).abs() < 1e-15, "{v}");
+}
+
+#[test]
+fn a_vector_value_is_one_line_error() {
+    let e = Program::parse("[x, y]", None).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "the formula is a vector of 2; a regressed formula has one scalar value (take a \
+         coordinate, e.g. x(v) or at(v, 2), or a scalar function such as dot or norm2)"
+    );
+    let e = Program::parse("cross([x, y, 1], [1, 2, 3])", None).unwrap_err();
+    assert!(matches!(e, CompileError::NotScalar { .. }), "{e}");
+    let e = Program::parse("transpose([[x]])", None).unwrap_err();
+    assert!(e.to_string().contains("a 1x1 matrix"), "{e}");
+}
+
+#[test]
+fn constants_are_not_variables() {
+    for (text, name, pos) in [("2 pi x", "pi", 2), ("x + e", "e", 4), ("i*x", "i", 0)] {
+        let e = Program::parse(text, None).unwrap_err();
+        assert!(
+            matches!(&e, CompileError::Reserved { name: n, pos: p, .. } if n == name && *p == pos),
+            "{text}: {e}"
+        );
+        assert!(!e.to_string().contains('\n'));
+    }
+    let e = Program::parse("pi", Some(&["pi".to_string()])).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "\"pi\" in the variable list is not a variable name"
+    );
+    let e = Program::parse("pi", None).unwrap_err();
+    assert!(
+        e.to_string()
+            .starts_with("'pi' at 0: pi is the constant pi"),
+        "{e}"
+    );
+    // Inside a derivative the constant survives the expansion and is refused the same way.
+    let e = Program::parse("diff(pi x^2, x)", None).unwrap_err();
+    assert!(matches!(e, CompileError::Reserved { .. }), "{e}");
+}
+
+#[test]
+fn bad_calls_are_one_line_errors() {
+    for (text, needle) in [
+        ("diff(sqrt(x), x)", "contains sqrt"),
+        ("integrate(1/t, t, 1, 2)", "divides by an expression in t"),
+        ("sum(k, 0, 1/2, k)", "must be an integer constant"),
+        ("binomial(x, 2)", "must be an integer constant"),
+        ("diff(x^2, 2)", "must be a variable name"),
+        ("det([[1, 2, 3], [4, 5, 6]])", "det"),
+        ("nosuch(x)", "nosuch"),
+        ("1/(x - x) + diff(1/(y - y), y)", "identically zero"),
+    ] {
+        let e = Program::parse(text, None).unwrap_err().to_string();
+        assert!(e.contains(needle), "{text}: {e}");
+        assert!(!e.contains('\n'), "{text}: {e}");
+    }
+}
+
+#[test]
+fn a_sum_beyond_the_node_bound_is_refused() {
+    let e = Program::parse(
+        "sum(i, 1, 300, sum(j, 1, 300, (x + i)^2 * (y + j)^2))",
+        None,
+    )
+    .unwrap_err()
+    .to_string();
+    assert!(e.contains("more than"), "{e}");
+}
+
+/// A formula of the library with small integer coefficients and no division: its value at a
+/// small integer point is an integer far below 2^53, so every f64 operation is exact.
+fn integer_formula() -> impl Strategy<Value = String> {
+    let c = || -9i64..=9;
+    prop_oneof![
+        (c(), 0u32..5)
+            .prop_map(|(a, n)| format!("sum(k, 0, {n}, binomial({n}, k) x^k * ({a})^({n} - k))")),
+        (c(), c(), c(), c(), c()).prop_map(|(a, b, cc, d, e)| format!(
+            "det([[{a} x + {b}, {cc}], [{d}, x^2 + ({e}) y]])"
+        )),
+        (c(), c(), c())
+            .prop_map(|(a, b, cc)| format!("dot([x, {a}], [y, ({b}) x]) + norm2([x - ({cc}), y])")),
+        (c(), c()).prop_map(|(a, b)| format!(
+            "dot(cross([x, y, {a}], [{b}, x, y]), [1, 2, 3]) + cross([x, 1], [y, {a}])"
+        )),
+        (c(), c(), c()).prop_map(|(a, b, cc)| format!("bezier(x, {a}, {b}, {cc}) * y")),
+        (c(), c(), 0u32..4)
+            .prop_map(|(a, b, k)| format!("diff(({a}) x^4 + ({b}) x^2 y + x y^3, x, {k})")),
+        (c(), c()).prop_map(|(a, b)| format!(
+            "factorial(4) x - binomial(6, 3) ({a}) y + integrate(2 ({b}) t, t, 0, x)"
+        )),
+    ]
+}
+
+/// A formula of the library that may divide by a non-constant.
+fn rational_formula() -> impl Strategy<Value = String> {
+    let c = || -9i64..=9;
+    prop_oneof![
+        integer_formula(),
+        (c(), c(), c()).prop_map(|(a, b, cc)| format!(
+            "diff((({a}) x^3 + ({b}) x y) / (({cc})^2 + 1 + x^2), x)"
+        )),
+        (c(), c())
+            .prop_map(|(a, b)| format!("integrate(({a}) t^2 + ({b}) x t / (1 + y^2), t, x, y)")),
+        (c(), c(), 1u32..4)
+            .prop_map(|(a, b, n)| format!("sum(k, 1, {n}, ({a}) x^k / (k + ({b})^2 + y^2))")),
+        (c(), c()).prop_map(|(a, b)| format!(
+            "det([[1/(x^2 + 1), {a}], [{b}, y]]) - diff(x/(y^2 + 2), y, 2)"
+        )),
+    ]
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// The f64 side evaluates the lowered tree: at integer points where every operation is
+    /// exact in f64 it equals the exact value (computed by the independent `prove` path).
+    #[test]
+    fn float_side_of_integer_formulas_is_exact(
+        text in integer_formula(),
+        x in -5i64..=5,
+        y in -5i64..=5,
+    ) {
+        let p = Program::parse(&text, None).unwrap();
+        let point = [("x", q(x, 1)), ("y", q(y, 1))];
+        let exact = prove_value(&text, &point).unwrap();
+        let args: Vec<f64> = p
+            .inputs
+            .iter()
+            .map(|n| if n == "x" { x as f64 } else { y as f64 })
+            .collect();
+        let float = p.eval_f64(&args)[0];
+        prop_assert!(float.is_finite(), "{}", text);
+        let float = Rational::from(num_rational::BigRational::from_float(float).expect("finite"));
+        prop_assert_eq!(float, exact, "{}", text);
+    }
+
+    /// The exact side of every lowered formula is its value through the `prove` path, at
+    /// dyadic points (the inputs of a regression); a pole is a pole on both.
+    #[test]
+    fn exact_side_is_the_prove_value(
+        text in rational_formula(),
+        x in -1000i64..=1000,
+        y in -1000i64..=1000,
+        shift in 0u32..6,
+    ) {
+        let p = Program::parse(&text, None).unwrap();
+        let point = [("x", q(x, 1 << shift)), ("y", q(y, 1 << (5 - shift)))];
+        prop_assert_eq!(program_value(&p, &point), prove_value(&text, &point), "{}", text);
+    }
+}
