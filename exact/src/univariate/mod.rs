@@ -54,6 +54,7 @@
 
 mod bernstein_roots;
 mod descartes;
+mod factor;
 mod isolate;
 mod limbs;
 mod resultant;
@@ -64,6 +65,7 @@ pub mod w4;
 
 pub use bernstein_roots::UnitRootMethod;
 pub use descartes::{integer_real_roots, integer_real_roots_to, MAX_DESCARTES_DEGREE};
+pub use factor::{Factorisation, RecombinationBudget, RECOMBINATION_SUBSETS};
 pub use exactcheck_core::roots::{IsolatedRoot, ZeroPolynomial};
 pub use isolate::sign_variations;
 pub use upoly::UPolyDisplay;
