@@ -383,6 +383,24 @@ impl Coefficient for Algebraic {
     fn check_limits(&self) -> Result<(), LimitError> {
         limits::ALGEBRAIC_DEGREE.check_usize(self.degree())
     }
+    /// `cos`, `sin`, `tan` of `r pi` by [`Algebraic::cos_pi`], [`Algebraic::sin_pi`],
+    /// [`Algebraic::tan_pi`]; a multiple whose numerator or denominator does not fit an `i64`
+    /// has a degree past every limit.
+    fn trig_of_pi(r: &Rational, which: crate::expr::Trig) -> Option<Result<Self, String>> {
+        use crate::expr::Trig;
+        use num_traits::ToPrimitive;
+        let (Some(p), Some(q)) = (r.numer().to_i64(), r.denom().to_i64()) else {
+            return Some(Err(limits::ALGEBRAIC_DEGREE
+                .exceeded(format!("more than {}", limits::ALGEBRAIC_DEGREE.get()))
+                .to_string()));
+        };
+        let value = match which {
+            Trig::Cos => Algebraic::cos_pi(p, q),
+            Trig::Sin => Algebraic::sin_pi(p, q),
+            Trig::Tan => Algebraic::tan_pi(p, q),
+        };
+        Some(value.map_err(|e| e.to_string()))
+    }
 }
 
 impl std::str::FromStr for Algebraic {
