@@ -348,7 +348,11 @@ fn cos_two_pi_over_n_from_chebyshev_is_minimal() {
         let c = Algebraic::root_of(&f, count - 2).unwrap();
         let expected = Algebraic::cos_pi(2, n as i64).unwrap();
         assert_eq!(c.degree(), totient_naive(n) / 2, "n = {n}");
-        assert_eq!(c.minimal_polynomial(), expected.minimal_polynomial(), "n = {n}");
+        assert_eq!(
+            c.minimal_polynomial(),
+            expected.minimal_polynomial(),
+            "n = {n}"
+        );
         assert_eq!(c, expected, "n = {n}");
     }
     // Known small cases: cos(2 pi/5) = (sqrt 5 - 1)/4, root of 4x^2 + 2x - 1; cos(2 pi/7) of
@@ -381,7 +385,10 @@ fn sums_of_radicals_have_minimal_polynomials() {
     assert_eq!(u.minimal_polynomial(), Some(&upoly(&[8, 0, -8, 0, 1])));
     assert_eq!(u, alg("sqrt(4 + 2*sqrt(2))"));
     // sqrt(2 + sqrt 2) * sqrt(2 - sqrt 2) = sqrt 2.
-    assert_eq!(alg("sqrt(2 + sqrt(2)) * sqrt(2 - sqrt(2))").to_string(), "sqrt(2)");
+    assert_eq!(
+        alg("sqrt(2 + sqrt(2)) * sqrt(2 - sqrt(2))").to_string(),
+        "sqrt(2)"
+    );
     // Four nested radicals: the defining polynomial is irreducible (factoring it again finds
     // itself) and the degree is at most the product of the degrees.
     let v = alg("sqrt(2 + sqrt(2)) + sqrt(2 - sqrt(2)) + sqrt(3 + sqrt(3)) + sqrt(5 + sqrt(5))");

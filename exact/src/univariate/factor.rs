@@ -210,9 +210,7 @@ fn symmetric(a: &[BigInt], m: &BigInt) -> Vec<BigInt> {
 fn sub_z(a: &[BigInt], b: &[BigInt]) -> Vec<BigInt> {
     let n = a.len().max(b.len());
     let mut out: Vec<BigInt> = (0..n)
-        .map(|i| {
-            a.get(i).cloned().unwrap_or_default() - b.get(i).cloned().unwrap_or_default()
-        })
+        .map(|i| a.get(i).cloned().unwrap_or_default() - b.get(i).cloned().unwrap_or_default())
         .collect();
     trim_z(&mut out);
     out
@@ -221,9 +219,7 @@ fn sub_z(a: &[BigInt], b: &[BigInt]) -> Vec<BigInt> {
 fn add_z(a: &[BigInt], b: &[BigInt]) -> Vec<BigInt> {
     let n = a.len().max(b.len());
     let mut out: Vec<BigInt> = (0..n)
-        .map(|i| {
-            a.get(i).cloned().unwrap_or_default() + b.get(i).cloned().unwrap_or_default()
-        })
+        .map(|i| a.get(i).cloned().unwrap_or_default() + b.get(i).cloned().unwrap_or_default())
         .collect();
     trim_z(&mut out);
     out
@@ -329,8 +325,10 @@ impl Fp {
         let n = a.len().max(b.len());
         let mut out: Vec<u64> = (0..n)
             .map(|i| {
-                self.0
-                    .sub(a.get(i).copied().unwrap_or(0), b.get(i).copied().unwrap_or(0))
+                self.0.sub(
+                    a.get(i).copied().unwrap_or(0),
+                    b.get(i).copied().unwrap_or(0),
+                )
             })
             .collect();
         Fp::trim(&mut out);
@@ -561,7 +559,10 @@ fn hensel_lift(
 
 /// The irreducible factors over Z of the square-free, primitive `f` with positive leading
 /// coefficient (each primitive with positive leading coefficient).
-fn factor_square_free(f: &[BigInt], budget: &mut u64) -> Result<Vec<Vec<BigInt>>, RecombinationBudget> {
+fn factor_square_free(
+    f: &[BigInt],
+    budget: &mut u64,
+) -> Result<Vec<Vec<BigInt>>, RecombinationBudget> {
     let n = f.len() - 1;
     if n <= 1 {
         return Ok(vec![f.to_vec()]);
@@ -636,15 +637,15 @@ fn recombine(
             }
             *budget -= 1;
             // Constant terms first: lc * prod u(0) must divide lc * f(0) up to the content.
-            let c0 = subset
-                .iter()
-                .fold(lc.clone(), |acc, &i| (acc * pool[i].first().cloned().unwrap_or_default()).mod_floor(m));
+            let c0 = subset.iter().fold(lc.clone(), |acc, &i| {
+                (acc * pool[i].first().cloned().unwrap_or_default()).mod_floor(m)
+            });
             let c0 = symmetric(&[c0], m).pop().unwrap_or_default();
             let plausible = f[0].is_zero() || c0.is_zero() || (&lc * &f[0]) % &c0 == BigInt::zero();
             if plausible {
-                let g = subset
-                    .iter()
-                    .fold(vec![lc.clone()], |acc, &i| reduce(&mul_z(&acc, &pool[i]), m));
+                let g = subset.iter().fold(vec![lc.clone()], |acc, &i| {
+                    reduce(&mul_z(&acc, &pool[i]), m)
+                });
                 let g = primitive_z(&symmetric(&g, m));
                 if let Some(q) = divide_exact_z(&f, &g) {
                     out.push(g);
@@ -693,7 +694,9 @@ mod tests {
         let mut p = 100;
         while used < 4 {
             p += 1;
-            let Some(field) = PrimeField::new(p) else { continue };
+            let Some(field) = PrimeField::new(p) else {
+                continue;
+            };
             let fp = Fp(field);
             let a = fp.from_z(&f);
             if a.len() != f.len() || fp.gcd(&a, &fp.derivative(&a)).len() != 1 {

@@ -65,8 +65,8 @@ pub mod w4;
 
 pub use bernstein_roots::UnitRootMethod;
 pub use descartes::{integer_real_roots, integer_real_roots_to, MAX_DESCARTES_DEGREE};
-pub use factor::{Factorisation, RecombinationBudget, RECOMBINATION_SUBSETS};
 pub use exactcheck_core::roots::{IsolatedRoot, ZeroPolynomial};
+pub use factor::{Factorisation, RecombinationBudget, RECOMBINATION_SUBSETS};
 pub use isolate::sign_variations;
 pub use upoly::UPolyDisplay;
 
