@@ -24,6 +24,8 @@
 //!   true sizes instead of letting the denominators grow as in the plain rational sequence.
 //! * Square-free parts `p / gcd(p, p')` and Yun's square-free decomposition
 //!   ([`UPoly::square_free_decomposition`]); root multiplicities come from the latter.
+//! * Factorisation into irreducible factors over Z ([`UPoly::factor`], module `factor`:
+//!   Zassenhaus' algorithm on the square-free parts above).
 //! * Sturm sequences, likewise normalised to primitive polynomials (positive factors only, which
 //!   leaves every sign, hence every sign-variation count, unchanged). Counting uses the Sturm
 //!   sequence of the square-free part: the number of distinct roots in `(a, b]` is
