@@ -298,7 +298,7 @@ impl Fp {
         }
     }
 
-    fn from_z(&self, a: &[BigInt]) -> Vec<u64> {
+    fn reduce_z(&self, a: &[BigInt]) -> Vec<u64> {
         let mut out: Vec<u64> = a.iter().map(|c| self.0.from_bigint(c)).collect();
         Fp::trim(&mut out);
         out
@@ -593,7 +593,7 @@ fn factor_square_free(
         if fp.0.from_bigint(&lc) == 0 {
             continue;
         }
-        let a = fp.from_z(&f);
+        let a = fp.reduce_z(&f);
         if fp.gcd(&a, &fp.derivative(&a)).len() != 1 {
             continue;
         }
@@ -698,7 +698,7 @@ mod tests {
                 continue;
             };
             let fp = Fp(field);
-            let a = fp.from_z(&f);
+            let a = fp.reduce_z(&f);
             if a.len() != f.len() || fp.gcd(&a, &fp.derivative(&a)).len() != 1 {
                 continue;
             }
