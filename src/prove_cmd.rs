@@ -429,7 +429,8 @@ pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
 }
 
 /// An identity between constants with a square root the square-root field [`Radical`] refuses
-/// (a nested radical that does not denest, such as `sqrt(2 + sqrt(2))`), decided exactly in the
+/// (a nested radical that does not denest, such as `sqrt(2 + sqrt(2))`) or a sine, cosine or
+/// tangent of a multiple of pi outside it (`cos(2*pi/7)`), decided exactly in the
 /// real algebraic numbers ([`Algebraic`]). `None` when a side has a variable or both sides lie
 /// in the square-root field, which then decides the identity as before.
 fn prove_algebraic_constants(
@@ -442,7 +443,16 @@ fn prove_algebraic_constants(
     if let Some(r) = rhs {
         r.collect_variables(&mut names);
     }
-    let refused = |e: &Expr| matches!(e.eval_constant::<Radical>(), Err(ExprError::NoSqrt { .. }));
+    // `pi` inside `sin`, `cos`, `tan` is an angle, not a variable.
+    names.retain(|n| n != exactcheck_exact::expr::PI);
+    // A square root outside the field, or a sine or cosine of a multiple of pi whose value is
+    // not in it (`cos(2*pi/7)`); the other errors come back the same from `Algebraic`.
+    let refused = |e: &Expr| {
+        matches!(
+            e.eval_constant::<Radical>(),
+            Err(ExprError::NoSqrt { .. } | ExprError::BadCall { .. })
+        )
+    };
     if !names.is_empty() || !(refused(lhs) || rhs.is_some_and(refused)) {
         return Ok(None);
     }

@@ -125,7 +125,7 @@ fn angles_that_cannot_be_decided_are_one_line_errors() {
         ("sin(x/2)", "not an integer"),
         ("tan(pi/2)", "tan(pi/2) is undefined"),
         ("sin(100000 x)", "angle-multiple = 1000"),
-        ("cos(pi/5)", "not supported"),
+        ("x + cos(pi/5)", "not supported next to variables"),
         ("sin(1)", "not a rational multiple of pi"),
         ("diff(x, pi)", "pi is a constant"),
     ] {
@@ -138,4 +138,21 @@ fn angles_that_cannot_be_decided_are_one_line_errors() {
     let (code, _, err) = run(&["prove", "sin(7x)", "0", "--limit", "angle-multiple=6"]);
     assert_eq!(code, 2);
     assert!(err.contains("angle-multiple = 6"), "{err}");
+}
+
+#[test]
+fn every_multiple_of_pi_is_exact_between_constants() {
+    // cos(2 pi/7) is a root of 8c^3 + 4c^2 - 4c - 1.
+    let c = "8*cos(2*pi/7)^3 + 4*cos(2*pi/7)^2 - 4*cos(2*pi/7)";
+    proved(c, "1");
+    fails(c, "2");
+    proved("cos(2*pi/7) + cos(4*pi/7) + cos(6*pi/7)", "-1/2");
+    fails("cos(2*pi/7) + cos(4*pi/7)", "-1/2");
+    proved("cos(pi/5)", "(1 + sqrt(5))/4");
+    proved("sin(pi/7)^2 + cos(pi/7)^2", "1");
+    proved("tan(pi/5)^2", "5 - 2*sqrt(5)");
+    fails("tan(pi/5)^2", "5 - sqrt(5)");
+    let (code, out, err) = run(&["prove", "cos(2*pi/1009)", "0"]);
+    assert_eq!(code, 2, "{out}");
+    assert!(err.contains("algebraic-degree = 64"), "{err}");
 }

@@ -82,58 +82,6 @@ fn normalise(p: &UPoly) -> UPoly {
     }
 }
 
-/// The factorisation of an even quartic `x^4 + p x^2 + q` (monic form of `f`) into two
-/// rational quadratics, if it has one: `(x^2 + c)(x^2 + d)` when `p^2 - 4q` is a square, else
-/// `(x^2 + a x + b)(x^2 - a x + b)` with `b^2 = q`, `a^2 = 2b - p`. `None` when neither shape
-/// exists, which proves `f` irreducible if it has no rational root.
-fn split_even_quartic(f: &UPoly) -> Option<(UPoly, UPoly)> {
-    if f.degree() != 4 || !f.coeff(1).is_zero() || !f.coeff(3).is_zero() {
-        return None;
-    }
-    let m = f.monic();
-    let (p, q) = (m.coeff(2), m.coeff(0));
-    let disc = p.mul_ref(&p) - q.scale_i64(4);
-    if let Some(s) = rational_sqrt(&disc) {
-        let half = Rational::new(1, 2).expect("2 is not zero");
-        let c = (p.add_ref(&s)) * &half;
-        let d = (p.sub_ref(&s)) * &half;
-        return Some((
-            UPoly::from_coeffs(vec![c, Rational::ZERO, Rational::ONE]),
-            UPoly::from_coeffs(vec![d, Rational::ZERO, Rational::ONE]),
-        ));
-    }
-    let s = rational_sqrt(&q)?;
-    for b in [s.clone(), -s] {
-        if let Some(a) = rational_sqrt(&(b.scale_i64(2) - &p)) {
-            return Some((
-                UPoly::from_coeffs(vec![b.clone(), a.clone(), Rational::ONE]),
-                UPoly::from_coeffs(vec![b, -a, Rational::ONE]),
-            ));
-        }
-    }
-    None
-}
-
-/// For an even `f(x) = g(x^2)` without rational roots: the factors `x^2 - r` for the rational
-/// roots `r` of `g` split off; the factor `x^2 - r` itself when it has the root isolated by `ri`.
-fn reduce_even(f: UPoly, ri: &RootInterval) -> UPoly {
-    if f.degree() < 4 || f.coeffs().iter().skip(1).step_by(2).any(|c| !c.is_zero()) {
-        return f;
-    }
-    let g = UPoly::from_coeffs(f.coeffs().iter().step_by(2).cloned().collect());
-    let mut rest = f;
-    for r in g.square_free_part().isolate_roots() {
-        if let Some(r) = r.exact_value() {
-            let quad = UPoly::from_coeffs(vec![-r.clone(), Rational::ZERO, Rational::ONE]);
-            if quad.count_roots(&ri.lo, &ri.hi) == 1 {
-                return normalise(&quad);
-            }
-            rest = rest.div_rem(&quad).0;
-        }
-    }
-    normalise(&rest)
-}
-
 /// The polynomial whose roots are the squares of the roots of `f` (Graeffe's step:
 /// `f(x) f(-x) = h(x^2)`).
 fn graeffe(f: &UPoly) -> UPoly {
@@ -149,8 +97,12 @@ pub(super) fn rational_sqrt(q: &Rational) -> Option<Rational> {
 
 impl Algebraic {
     /// The number isolated by `ri` among the roots of the square-free `f` (whose isolated real
-    /// roots are `roots`, exact exactly for the rational ones), with the reductions of the module
-    /// documentation: rational roots divided out, even quartics split.
+    /// roots are `roots`, exact exactly for the rational ones): rational roots divided out and,
+    /// unless `f` is known to be irreducible, `f` replaced by its one irreducible factor with a
+    /// root in the interval (the interval isolates one root of `f`, so exactly one factor has
+    /// it), which is then the minimal polynomial. When factoring gives up (a recombination past
+    /// its budget, see [`crate::univariate::RECOMBINATION_SUBSETS`]) `f` stays, square-free and
+    /// marked not minimal: every later decision is exact all the same.
     pub(super) fn from_isolated(
         f: UPoly,
         ri: RootInterval,
@@ -161,22 +113,15 @@ impl Algebraic {
             return Algebraic::from_rational(ri.lo);
         }
         let mut f = normalise(&without_rational_roots(&f, roots));
-        if !minimal {
-            f = reduce_even(f, &ri);
-        }
         let mut minimal = minimal || f.degree() <= 3;
-        if !minimal && f.degree() == 4 {
-            match split_even_quartic(&f) {
-                Some((g, h)) => {
-                    // Exactly one of the factors has the root in the interval (f is square-free).
-                    f = if g.count_roots(&ri.lo, &ri.hi) == 1 {
-                        normalise(&g)
-                    } else {
-                        normalise(&h)
-                    };
-                    minimal = true;
-                }
-                None => minimal = f.coeff(1).is_zero() && f.coeff(3).is_zero(),
+        if !minimal {
+            if let Ok(factors) = f.irreducible_factors() {
+                f = factors
+                    .into_iter()
+                    .find(|g| g.count_roots(&ri.lo, &ri.hi) == 1)
+                    .map(|g| normalise(&g))
+                    .expect("one irreducible factor has the isolated root");
+                minimal = true;
             }
         }
         Algebraic {
@@ -354,16 +299,21 @@ impl Algebraic {
             return Algebraic::from_rational(q.mul_ref(q));
         }
         Algebraic::select(&graeffe(&self.poly), false, |bits| {
-            let (lo, hi) = self.enclosure(bits);
-            let (l2, h2) = (lo.mul_ref(&lo), hi.mul_ref(&hi));
-            Some(if lo.signum() == Sign::Positive {
-                (l2, h2)
-            } else if hi.signum() == Sign::Negative {
-                (h2, l2)
-            } else {
-                (Rational::ZERO, l2.max(h2))
-            })
+            Some(self.square_enclosure(bits))
         })
+    }
+
+    /// An interval containing `self^2`, from the enclosure of `self` at `bits`.
+    pub(super) fn square_enclosure(&self, bits: u32) -> Iv {
+        let (lo, hi) = self.enclosure(bits);
+        let (l2, h2) = (lo.mul_ref(&lo), hi.mul_ref(&hi));
+        if lo.signum() == Sign::Positive {
+            (l2, h2)
+        } else if hi.signum() == Sign::Negative {
+            (h2, l2)
+        } else {
+            (Rational::ZERO, l2.max(h2))
+        }
     }
 
     /// The positive square root of the positive `self`: the positive root of `f(x^2)`.

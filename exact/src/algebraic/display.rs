@@ -113,17 +113,7 @@ impl Algebraic {
             return None;
         }
         let g = UPoly::from_coeffs(vec![f.coeff(0), f.coeff(2), f.coeff(4)]);
-        let square = Algebraic::select(&g, true, |bits| {
-            let (lo, hi) = self.enclosure(bits);
-            let (l2, h2) = (lo.mul_ref(&lo), hi.mul_ref(&hi));
-            Some(if lo.signum() == Sign::Positive {
-                (l2, h2)
-            } else if hi.signum() == Sign::Negative {
-                (h2, l2)
-            } else {
-                (Rational::ZERO, l2.max(h2))
-            })
-        });
+        let square = Algebraic::select(&g, true, |bits| Some(self.square_enclosure(bits)));
         let (p, q, r, d) = square.quadratic_parts()?;
         let negative = self.sign() == Sign::Negative;
         let inv_d = Rational::from(d.clone()).recip().ok()?;

@@ -11,20 +11,20 @@
 //!   whenever a polynomial is formed), so it has degree at least 2.
 //!
 //! # Minimal and defining polynomials
-//! The defining polynomial is the **minimal polynomial** whenever
-//! [`Algebraic::minimal_polynomial`] returns it: for rationals, for every polynomial of degree
-//! 2 or 3 (no rational root, hence irreducible), for even quartics `x^4 + p x^2 + q` whose
-//! factorisation test fails (an even quartic factors over Q only in the two shapes that test
-//! tries), for roots of cyclotomic-derived polynomials ([`Algebraic::cos_pi`],
-//! [`Algebraic::sin_pi`]) and for their images under Moebius maps `(a x + b)/(c x + d)`,
-//! which preserve irreducibility. Otherwise the defining polynomial is square-free but possibly
-//! reducible: the workspace has no factoriser over Z (Zassenhaus or van Hoeij), so the
-//! resultant of a sum or product is only reduced by its square-free part, its rational roots,
-//! the quartic splitting above and, when two numbers are compared equal, by the gcd of their
-//! polynomials. **Every decision stays exact** regardless: a root is selected by a Sturm count
-//! on an interval, zero and equality tests reduce to gcds and interval inclusion, and no
-//! floating-point number is ever consulted.
-//!
+//! The defining polynomial is the **minimal polynomial**: every polynomial a result is a root
+//! of (a resultant, a substitution, a Graeffe step) is factored over Z
+//! ([`UPoly::irreducible_factors`], Zassenhaus' algorithm) and only the irreducible factor with
+//! a root in the isolating interval is kept, so degrees stay at the degree of the number
+//! (`sqrt(2 + sqrt 2) + sqrt(2 - sqrt 2)` is a root of the quartic `x^4 - 8 x^2 + 8`, not of the
+//! degree-16 resultant, which has it as a factor). Roots of cyclotomic-derived
+//! polynomials ([`Algebraic::cos_pi`], [`Algebraic::sin_pi`]) and their Moebius images
+//! `(a x + b)/(c x + d)` are known to be irreducible and are not factored again. The one
+//! exception: when factoring gives up (recombination past
+//! [`crate::univariate::RECOMBINATION_SUBSETS`] subsets) the square-free polynomial stays and
+//! [`Algebraic::minimal_polynomial`] answers `None`. **Every decision stays exact**
+//! regardless: a root is selected by a Sturm count on an interval, zero and equality tests
+//! reduce to gcds and interval inclusion, and no floating-point number is ever consulted.
+
 //! # Operations
 //! * `-x`, `1/x`, `x + q`, `q x` ([`Algebraic::mobius`]): substitution in the polynomial, which
 //!   keeps it minimal;
@@ -36,8 +36,7 @@
 //! * comparison: equal numbers are detected by `gcd(f, g)` having the root in both intervals,
 //!   different ones by refining both intervals until they separate.
 //!
-//! The anchors are FLINT's `qqbar` (which factors every polynomial and so always has minimal
-//! polynomials), Sage's `QQbar` and Mathematica's `Root`. The arithmetic here is hand-written
+//! The anchors are FLINT's `qqbar` (which likewise factors every polynomial), Sage's `QQbar` and Mathematica's `Root`. The arithmetic here is hand-written
 //! because no crate of the dependency set offers exact real algebraic numbers.
 //!
 //! # Limits
@@ -74,7 +73,8 @@ pub struct Algebraic {
     poly: UPoly,
     /// Exact iff the number is rational; otherwise isolates the number among the roots of `poly`.
     iv: RootInterval,
-    /// Whether `poly` is known to be irreducible (hence the minimal polynomial).
+    /// Whether `poly` is known to be irreducible (hence the minimal polynomial): false only
+    /// when factoring gave up.
     minimal: bool,
 }
 
@@ -382,6 +382,24 @@ impl Coefficient for Algebraic {
     }
     fn check_limits(&self) -> Result<(), LimitError> {
         limits::ALGEBRAIC_DEGREE.check_usize(self.degree())
+    }
+    /// `cos`, `sin`, `tan` of `r pi` by [`Algebraic::cos_pi`], [`Algebraic::sin_pi`],
+    /// [`Algebraic::tan_pi`]; a multiple whose numerator or denominator does not fit an `i64`
+    /// has a degree past every limit.
+    fn trig_of_pi(r: &Rational, which: crate::expr::Trig) -> Option<Result<Self, String>> {
+        use crate::expr::Trig;
+        use num_traits::ToPrimitive;
+        let (Some(p), Some(q)) = (r.numer().to_i64(), r.denom().to_i64()) else {
+            return Some(Err(limits::ALGEBRAIC_DEGREE
+                .exceeded(format!("more than {}", limits::ALGEBRAIC_DEGREE.get()))
+                .to_string()));
+        };
+        let value = match which {
+            Trig::Cos => Algebraic::cos_pi(p, q),
+            Trig::Sin => Algebraic::sin_pi(p, q),
+            Trig::Tan => Algebraic::tan_pi(p, q),
+        };
+        Some(value.map_err(|e| e.to_string()))
     }
 }
 

@@ -318,3 +318,89 @@ fn degree_limit_and_parse_errors() {
     assert!("sqrt(-2)".parse::<Algebraic>().is_err());
     assert!("x + 1".parse::<Algebraic>().is_err());
 }
+
+// ------------------------------------------------------------------------------ minimality
+
+/// The Chebyshev polynomial `T_n` (`T_0 = 1`, `T_1 = x`, `T_(k+1) = 2x T_k - T_(k-1)`).
+fn chebyshev(n: usize) -> UPoly {
+    let (mut a, mut b) = (UPoly::one(), UPoly::x());
+    if n == 0 {
+        return a;
+    }
+    let two_x = upoly(&[0, 2]);
+    for _ in 1..n {
+        let next = two_x.mul_ref(&b).sub_ref(&a);
+        a = std::mem::replace(&mut b, next);
+    }
+    b
+}
+
+/// `cos(2 pi / n)` as a root of the reducible `T_n(x) - 1` (whose roots are the `cos(2 pi k/n)`):
+/// factoring must reduce it to the minimal polynomial of degree `phi(n)/2`, the same as the
+/// cyclotomic construction of [`Algebraic::cos_pi`], with the same value.
+#[test]
+fn cos_two_pi_over_n_from_chebyshev_is_minimal() {
+    for n in 3..=60u64 {
+        let f = chebyshev(n as usize).sub_ref(&UPoly::one());
+        // Distinct roots cos(2 pi k/n), k = 0..=n/2, increasing as k decreases: cos(2 pi/n) is
+        // the second largest.
+        let count = f.square_free_part().isolate_roots().len();
+        let c = Algebraic::root_of(&f, count - 2).unwrap();
+        let expected = Algebraic::cos_pi(2, n as i64).unwrap();
+        assert_eq!(c.degree(), totient_naive(n) / 2, "n = {n}");
+        assert_eq!(
+            c.minimal_polynomial(),
+            expected.minimal_polynomial(),
+            "n = {n}"
+        );
+        assert_eq!(c, expected, "n = {n}");
+    }
+    // Known small cases: cos(2 pi/5) = (sqrt 5 - 1)/4, root of 4x^2 + 2x - 1; cos(2 pi/7) of
+    // 8x^3 + 4x^2 - 4x - 1; cos(2 pi/9) of 8x^3 - 6x + 1.
+    for (n, p) in [
+        (5usize, vec![-1, 2, 4]),
+        (7, vec![-1, -4, 4, 8]),
+        (9, vec![1, -6, 0, 8]),
+    ] {
+        let f = chebyshev(n).sub_ref(&UPoly::one());
+        let count = f.square_free_part().isolate_roots().len();
+        let c = Algebraic::root_of(&f, count - 2).unwrap();
+        assert_eq!(c.minimal_polynomial(), Some(&upoly(&p)), "n = {n}");
+    }
+}
+
+#[test]
+fn sums_of_radicals_have_minimal_polynomials() {
+    // sqrt 2 + sqrt 3 + sqrt 5 (+ sqrt 7): degrees 8 and 16, the resultants' degrees.
+    let s3 = sqrt_int(2) + sqrt_int(3) + sqrt_int(5);
+    assert_eq!(s3.degree(), 8);
+    let s4 = s3.clone() + sqrt_int(7);
+    assert_eq!(s4.degree(), 16);
+    assert!(s4.minimal_polynomial().is_some());
+    // sqrt 2 + sqrt 8 = 3 sqrt 2: the resultant of degree 4 has the quadratic factor.
+    let t = sqrt_int(2) + sqrt_int(8);
+    assert_eq!(t.minimal_polynomial(), Some(&upoly(&[-18, 0, 1])));
+    // Nested radicals in one field: sqrt(2 + sqrt 2) + sqrt(2 - sqrt 2) = sqrt(4 + 2 sqrt 2).
+    let u = alg("sqrt(2 + sqrt(2)) + sqrt(2 - sqrt(2))");
+    assert_eq!(u.minimal_polynomial(), Some(&upoly(&[8, 0, -8, 0, 1])));
+    assert_eq!(u, alg("sqrt(4 + 2*sqrt(2))"));
+    // sqrt(2 + sqrt 2) * sqrt(2 - sqrt 2) = sqrt 2.
+    assert_eq!(
+        alg("sqrt(2 + sqrt(2)) * sqrt(2 - sqrt(2))").to_string(),
+        "sqrt(2)"
+    );
+    // Four nested radicals: the defining polynomial is irreducible (factoring it again finds
+    // itself) and the degree is at most the product of the degrees.
+    let v = alg("sqrt(2 + sqrt(2)) + sqrt(2 - sqrt(2)) + sqrt(3 + sqrt(3)) + sqrt(5 + sqrt(5))");
+    let m = v.minimal_polynomial().expect("factored").clone();
+    assert_eq!(m.irreducible_factors().unwrap(), vec![m.clone()]);
+    assert!(m.degree() <= 64);
+    // Galois conjugates summing to a rational: cos(2pi/7) + cos(4pi/7) + cos(6pi/7) = -1/2.
+    let w = Algebraic::cos_pi(2, 7).unwrap()
+        + Algebraic::cos_pi(4, 7).unwrap()
+        + Algebraic::cos_pi(6, 7).unwrap();
+    assert_eq!(w.to_rational(), Some(&Rational::new(-1, 2).unwrap()));
+    // A false variant: cos(2pi/7) + cos(4pi/7) is irrational (a cubic).
+    let w2 = Algebraic::cos_pi(2, 7).unwrap() + Algebraic::cos_pi(4, 7).unwrap();
+    assert_eq!(w2.degree(), 3);
+}

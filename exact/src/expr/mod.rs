@@ -242,6 +242,15 @@ pub trait Coefficient: Ring {
     fn named_constant(_name: &str) -> Option<Self> {
         None
     }
+    /// `cos` (`which` [`Trig::Cos`]), `sin` or `tan` of the angle `r pi` for the angles
+    /// outside [`TRIG_DENOMINATORS`] ([`trig_constant`]), `None` for a type without those values
+    /// (the default). [`crate::Algebraic`] gives every rational multiple of pi.
+    ///
+    /// # Errors
+    /// The reason in words (a limit, `tan` at a zero of the cosine).
+    fn trig_of_pi(_r: &Rational, _which: Trig) -> Option<Result<Self, String>> {
+        None
+    }
     /// Checks the value against the named limits of its type (for
     /// [`crate::Radical`], the number of independent square roots,
     /// [`exactcheck_core::limits::RADICANDS`]); called on every folded constant and every

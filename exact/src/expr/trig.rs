@@ -168,12 +168,14 @@ pub const TRIG_DENOMINATORS: &[u32] = &[1, 2, 3, 4, 6, 12];
 
 /// The exact value of `sin`, `cos` or `tan` at the angle `r pi` (`r` rational), in `C`: for `r`
 /// with a denominator in [`TRIG_DENOMINATORS`] the value lies in `Q(sqrt 2, sqrt 3)` (`cos(pi/4)
-/// = sqrt(2)/2`, `cos(pi/12) = (sqrt 6 + sqrt 2)/4`); other denominators are refused with the
-/// reason, as is `tan` where the cosine is zero.
+/// = sqrt(2)/2`, `cos(pi/12) = (sqrt 6 + sqrt 2)/4`) and is built from that table, the fast path
+/// of every coefficient type with those square roots; other denominators take their value from
+/// [`Coefficient::trig_of_pi`] ([`crate::Algebraic`]: `cos(2*pi/7)` is a cubic irrationality)
+/// and are refused with the reason by the other types, as is `tan` where the cosine is zero.
 ///
 /// ```
 /// use exactcheck_exact::expr::{trig_constant, Trig};
-/// use exactcheck_exact::{Radical, Rational};
+/// use exactcheck_exact::{Algebraic, Radical, Rational};
 ///
 /// let c: Radical = trig_constant(&Rational::new(1, 4).unwrap(), Trig::Cos).unwrap();
 /// assert_eq!(c.to_string(), "sqrt(2)/2");
@@ -181,6 +183,8 @@ pub const TRIG_DENOMINATORS: &[u32] = &[1, 2, 3, 4, 6, 12];
 /// assert_eq!(t, "2 - sqrt(3)".parse().unwrap());
 /// assert!(trig_constant::<Radical>(&Rational::new(1, 2).unwrap(), Trig::Tan).is_err());
 /// assert!(trig_constant::<Radical>(&Rational::new(1, 5).unwrap(), Trig::Cos).is_err());
+/// let c: Algebraic = trig_constant(&Rational::new(1, 5).unwrap(), Trig::Cos).unwrap();
+/// assert_eq!(c.to_string(), "(1 + sqrt(5))/4");
 /// ```
 ///
 /// # Errors
@@ -190,9 +194,12 @@ pub fn trig_constant<C: Coefficient>(r: &Rational, which: Trig) -> Result<C, Str
     let shown = angle_text(r);
     let twelfths = r * &Rational::from_integer(12);
     if !twelfths.is_integer() {
+        if let Some(value) = C::trig_of_pi(r, which) {
+            return value;
+        }
         return Err(format!(
-            "{}({shown}) is not supported: exact values are built in for angles (p/q)*pi with q \
-             in {}, not q = {}",
+            "{}({shown}) is not supported next to variables: exact values are built in for angles \
+             (p/q)*pi with q in {}, not q = {} (every q is exact in an identity between constants)",
             which.name(),
             TRIG_DENOMINATORS
                 .iter()

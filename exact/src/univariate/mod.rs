@@ -32,6 +32,8 @@
 //!   true sizes instead of letting the denominators grow as in the plain rational sequence.
 //! * Square-free parts `p / gcd(p, p')` and Yun's square-free decomposition
 //!   ([`UPoly::square_free_decomposition`]); root multiplicities come from the latter.
+//! * Factorisation into irreducible factors over Z ([`UPoly::factor`], module `factor`:
+//!   Zassenhaus' algorithm on the square-free parts above).
 //! * Sturm sequences, likewise normalised to primitive polynomials (positive factors only, which
 //!   leaves every sign, hence every sign-variation count, unchanged). Counting uses the Sturm
 //!   sequence of the square-free part: the number of distinct roots in `(a, b]` is
@@ -62,6 +64,7 @@
 
 mod bernstein;
 mod descartes;
+mod factor;
 mod isolate;
 mod limbs;
 mod real_roots;
@@ -73,6 +76,7 @@ pub mod w4;
 
 pub use descartes::{integer_real_roots, integer_real_roots_to, MAX_DESCARTES_DEGREE};
 pub use exactcheck_core::roots::{IsolatedRoot, ZeroPolynomial};
+pub use factor::{Factorisation, RecombinationBudget, RECOMBINATION_SUBSETS};
 pub use isolate::sign_variations;
 pub use real_roots::{
     common_real_roots_in, compare_with_real_root, descartes_bound, isolate_real_roots,
