@@ -59,11 +59,12 @@ mod trig;
 
 pub use trig::TrigError;
 
-use crate::expr::Coefficient;
+use crate::expr::{Coefficient, Trig};
 use crate::univariate::{RootInterval, UPoly};
 use crate::Rational;
 use exactcheck_core::limits::{self, LimitError};
 use exactcheck_core::{Field, Ring, Sign, ZeroDivisor};
+use num_traits::ToPrimitive;
 use std::cmp::Ordering;
 
 /// A real algebraic number, exactly: see the [module documentation](self).
@@ -382,6 +383,28 @@ impl Coefficient for Algebraic {
     }
     fn check_limits(&self) -> Result<(), LimitError> {
         limits::ALGEBRAIC_DEGREE.check_usize(self.degree())
+    }
+    /// Every rational multiple of pi: [`Algebraic::cos_pi`], [`Algebraic::sin_pi`],
+    /// [`Algebraic::tan_pi`].
+    fn trig_of_pi_multiple(r: &Rational, which: Trig) -> Option<Result<Self, String>> {
+        let (Some(p), Some(q)) = (r.numer().to_i64(), r.denom().to_i64()) else {
+            return Some(Err(format!(
+                "{}({r}*pi) is not supported: the multiple of pi does not fit in 64-bit integers",
+                which.name()
+            )));
+        };
+        let v = match which {
+            Trig::Cos => Algebraic::cos_pi(p, q),
+            Trig::Sin => Algebraic::sin_pi(p, q),
+            Trig::Tan => Algebraic::tan_pi(p, q),
+        };
+        Some(v.map_err(|e| match e {
+            TrigError::TanUndefined { .. } => {
+                let angle = crate::expr::angle_text(r);
+                format!("tan({angle}) is undefined: cos({angle}) = 0")
+            }
+            other => other.to_string(),
+        }))
     }
 }
 

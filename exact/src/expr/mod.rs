@@ -17,7 +17,7 @@
 //! product  := unary (('*' | '/') unary | implicit)*
 //! implicit := power                          (juxtaposition, not starting with a number)
 //! unary    := ('-' | '+') unary | power
-//! power    := atom ('^' exponent)?
+//! power    := atom '°'? ('^' exponent)?        ('°': degrees, `atom * pi/180`)
 //! exponent := ('-' | '+') exponent | atom ('^' exponent)?   (right-associative)
 //! atom     := number | variable | 'sqrt' '(' sum ')' | call | '(' sum ')' | list
 //! list     := '[' sum (',' sum)* ']'           (with calls only: vectors and matrices, see [`library`])
@@ -60,6 +60,8 @@
 //!   (and takes negative powers of) any expression that is not identically zero: the result is
 //!   a rational function ([`crate::ratfun::RatFun`]) in lowest terms with the divisors met, and
 //!   an expression without such a division converts by [`Expr::to_poly`] alone.
+//! * **Degrees**: `°` after an atom multiplies it by `pi/180`, so `cos(45°)` is `cos(pi/4)` and
+//!   `(a + b)°` the angle `a + b` in degrees.
 //! * `sqrt(E)` of a non-constant `E` is a variable standing for the non-negative root, one per
 //!   distinct expanded radicand, when the variable table allows it
 //!   ([`crate::poly::Vars::allow_roots`]; its relation and sign condition come from
@@ -138,6 +140,7 @@ mod w1;
 pub use latex::{equation_to_latex, to_latex, Notation};
 pub use mathml::{equation_to_mathml, to_mathml};
 pub use parse::{parse_expr, parse_expr_with_calls, parse_poly, LIST};
+pub(crate) use trig::angle_text;
 pub use w1::w1_text;
 
 /// The functions written `name(arg, ...)` in every grammar (besides `sqrt`): `diff(E, t)` and
@@ -248,6 +251,12 @@ pub trait Coefficient: Ring {
     /// The [`exactcheck_core::limits::LimitError`] of the limit exceeded.
     fn check_limits(&self) -> Result<(), exactcheck_core::limits::LimitError> {
         Ok(())
+    }
+    /// `cos`, `sin` or `tan` of `r pi` when the type computes it for every rational `r` (the
+    /// real algebraic numbers do); `None`, the default, leaves it to the built-in table of
+    /// [`trig_constant`], whose values lie in `Q(sqrt 2, sqrt 3)`.
+    fn trig_of_pi_multiple(_r: &Rational, _which: Trig) -> Option<Result<Self, String>> {
+        None
     }
 }
 

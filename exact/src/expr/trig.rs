@@ -187,6 +187,9 @@ pub const TRIG_DENOMINATORS: &[u32] = &[1, 2, 3, 4, 6, 12];
 /// The reason in words: a denominator outside [`TRIG_DENOMINATORS`], `tan` at a zero of the
 /// cosine, a square root `C` does not have (over [`Rational`], `cos(pi/4)`).
 pub fn trig_constant<C: Coefficient>(r: &Rational, which: Trig) -> Result<C, String> {
+    if let Some(v) = C::trig_of_pi_multiple(r, which) {
+        return v;
+    }
     let shown = angle_text(r);
     let twelfths = r * &Rational::from_integer(12);
     if !twelfths.is_integer() {
@@ -245,7 +248,7 @@ pub fn trig_constant<C: Coefficient>(r: &Rational, which: Trig) -> Result<C, Str
 }
 
 /// `r pi` as written: `pi`, `-pi/2`, `3*pi/4`, `0`.
-fn angle_text(r: &Rational) -> String {
+pub(crate) fn angle_text(r: &Rational) -> String {
     let (n, d) = (r.numer(), r.denom());
     let num = match n.to_i64() {
         Some(0) => return "0".into(),
