@@ -180,11 +180,7 @@ impl RealConstant {
                     }
                     let max = limits::PI_BITS.get();
                     if u64::from(bits) >= max {
-                        return Err(limits::PI_BITS
-                            .exceeded(format!(
-                                "more than {max} bits to separate the value from {q}"
-                            ))
-                            .into());
+                        return Err(limits::PI_BITS.exceeded(format!("more than {max}")).into());
                     }
                     bits = u32::try_from((u64::from(bits) * 2).min(max)).unwrap_or(u32::MAX);
                 }
@@ -366,6 +362,140 @@ impl fmt::Display for RealConstant {
                 let d_simple = !d.contains([' ', '/', '*']);
                 write!(f, "{}/{}", wrap(n, n_simple), wrap(d, d_simple))
             }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::expr::parse_expr;
+
+    fn value(s: &str) -> Result<RealConstant, RealConstantError> {
+        RealConstant::from_expr(&parse_expr(s).unwrap())
+    }
+
+    fn q(s: &str) -> Rational {
+        s.parse().unwrap()
+    }
+
+    #[test]
+    fn each_value_lands_in_the_smallest_type() {
+        assert!(matches!(
+            value("cos(pi/4)").unwrap(),
+            RealConstant::Radical(_)
+        ));
+        assert!(matches!(
+            value("sqrt(3/4)").unwrap(),
+            RealConstant::Radical(_)
+        ));
+        assert!(matches!(
+            value("cos(pi/8)").unwrap(),
+            RealConstant::Algebraic(_)
+        ));
+        assert!(matches!(
+            value("sqrt(2 + sqrt(2))").unwrap(),
+            RealConstant::Algebraic(_)
+        ));
+        assert!(matches!(
+            value("cos(2*pi/7)").unwrap(),
+            RealConstant::Algebraic(_)
+        ));
+        assert!(value("pi^2 - sqrt(2)").unwrap().is_transcendental());
+        assert!(value("1/(pi - 3)").unwrap().is_transcendental());
+        // pi cancels: an algebraic number after all.
+        assert_eq!(value("2*pi/pi").unwrap().to_rational(), Some(q("2")));
+        assert_eq!(value("cos(45°)").unwrap().to_string(), "sqrt(2)/2");
+        assert_eq!(
+            value("cos(22.5°)").unwrap().to_string(),
+            "sqrt(2 + sqrt(2))/2"
+        );
+        assert_eq!(value("tan(pi/12)").unwrap().to_string(), "2 - sqrt(3)");
+    }
+
+    #[test]
+    fn what_has_no_exact_value_is_refused() {
+        for bad in [
+            "sqrt(pi)",
+            "cos(1)",
+            "cos(pi^2)",
+            "x + 1",
+            "tan(pi/2)",
+            "sqrt(1 - sqrt(2))",
+            "1/(pi - pi)",
+        ] {
+            assert!(value(bad).is_err(), "{bad}");
+        }
+        let e = value("tan(3*pi/2)").unwrap_err().to_string();
+        assert!(e.contains("tan(3*pi/2) is undefined"), "{e}");
+    }
+
+    #[test]
+    fn comparisons_with_rationals_are_exact() {
+        let pi = value("pi").unwrap();
+        assert_eq!(pi.cmp_rational(&q("355/113")).unwrap(), Ordering::Less);
+        assert_eq!(
+            pi.cmp_rational(&q("103993/33102")).unwrap(),
+            Ordering::Greater
+        );
+        let x = value("2*pi/3 - 2").unwrap();
+        assert_eq!(x.cmp_rational(&q("0.0943951")).unwrap(), Ordering::Greater);
+        assert_eq!(x.cmp_rational(&q("0.0943952")).unwrap(), Ordering::Less);
+        // 1/(pi - 3) = 7.0625133...
+        let y = value("1/(pi - 3)").unwrap();
+        assert_eq!(y.cmp_rational(&q("7.0625133")).unwrap(), Ordering::Greater);
+        assert_eq!(y.cmp_rational(&q("7.0625134")).unwrap(), Ordering::Less);
+        // Exact equality in the algebraic numbers.
+        let c = value("cos(pi/3)").unwrap();
+        assert_eq!(c.cmp_rational(&q("1/2")).unwrap(), Ordering::Equal);
+        let d = value("cos(pi/8)^2 - sqrt(2)/4").unwrap();
+        assert_eq!(d.cmp_rational(&q("1/2")).unwrap(), Ordering::Equal);
+        // q - x and q x.
+        let r = pi.rational_minus(&q("3"));
+        assert_eq!(r.sign().unwrap(), Sign::Negative);
+        assert_eq!(pi.scale(&q("-1")).sign().unwrap(), Sign::Negative);
+    }
+
+    proptest::proptest! {
+        /// The table of the square-root field and the algebraic numbers agree on every multiple
+        /// of pi/12, and the enclosures contain the value.
+        #[test]
+        fn field_and_algebraic_trig_agree(p in -30i64..30, which in 0usize..3) {
+            let f = ["cos", "sin", "tan"][which];
+            let text = format!("{f}({p}*pi/12)");
+            let e = parse_expr(&text).unwrap();
+            let r = e.eval_constant::<Radical>();
+            let a = e.eval_constant::<Algebraic>();
+            proptest::prop_assert_eq!(r.is_ok(), a.is_ok(), "{}", text);
+            if let (Ok(r), Ok(a)) = (r, a) {
+                let ra: Algebraic = r.to_string().parse().unwrap();
+                proptest::prop_assert!(ra == a, "{}: {} vs {}", text, r, a);
+                let (lo, hi) = RealConstant::Radical(r.clone()).enclosure(30).unwrap();
+                proptest::prop_assert!(lo <= hi);
+                let v = RealConstant::Algebraic(a);
+                proptest::prop_assert!(v.cmp_rational(&lo).unwrap() != Ordering::Less);
+                proptest::prop_assert!(v.cmp_rational(&hi).unwrap() != Ordering::Greater);
+            }
+        }
+
+        /// `n pi / d` against the fraction `m / k`: the verdict of the enclosure agrees with
+        /// the sign of `n k pi - m d` decided by a rational bracket of pi.
+        #[test]
+        fn multiples_of_pi_compare_like_the_bracket(n in -50i64..50, d in 1i64..50, m in -200i64..200, k in 1i64..50) {
+            proptest::prop_assume!(n != 0);
+            let v = value(&format!("{n}*pi/{d}")).unwrap();
+            let t = Rational::new(m, k).unwrap();
+            let got = v.cmp_rational(&t).unwrap();
+            // n pi/d < m/k  <=>  pi (n k) < m d (k, d > 0), decided when the bracket does.
+            let want = {
+                let (lo, hi) = crate::pi::enclosure(60);
+                let a = Rational::new(n * k, 1).unwrap();
+                let b = Rational::new(m * d, 1).unwrap();
+                let (x, y) = (&a * &lo, &a * &hi);
+                let (x, y) = if x <= y { (x, y) } else { (y, x) };
+                if y < b { Ordering::Less } else if x > b { Ordering::Greater } else { return Ok(()) }
+            };
+            proptest::prop_assert_eq!(got, want);
         }
     }
 }

@@ -301,6 +301,26 @@ mod tests {
     }
 
     #[test]
+    fn misprints_get_the_simplest_closed_form() {
+        let q = |s: &str| s.parse::<Rational>().unwrap();
+        let g = |s: &str| closed_form_guess(&q(s), places(s));
+        assert_eq!(g("0.866").as_deref(), Some("sqrt(3)/2"));
+        assert_eq!(g("0.3333").as_deref(), Some("1/3"));
+        assert_eq!(g("-0.7071").as_deref(), Some("-sqrt(2)/2"));
+        assert_eq!(g("0.2679").as_deref(), Some("2 - sqrt(3)"));
+        assert_eq!(g("1.6180").as_deref(), Some("(1 + sqrt(5))/2"));
+        // The decimal itself is no guess, one place is too few, and most decimals fit nothing.
+        assert_eq!(g("0.25"), None);
+        assert_eq!(g("0.9"), None);
+        assert_eq!(g("0.123456"), None);
+        // Every guess rounds to the printed decimal.
+        for s in ["0.866", "0.3333", "0.2679", "1.6180", "0.57735"] {
+            let x: Radical = g(s).unwrap().parse().unwrap();
+            assert!(rounds_to(&x, &q(s), places(s)), "{s}");
+        }
+    }
+
+    #[test]
     fn certified_decimals() {
         assert_eq!(decimal(&r("sqrt(2)"), 6), "1.414214");
         assert_eq!(decimal(&r("-sqrt(2)/2"), 3), "-0.707");
