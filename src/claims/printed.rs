@@ -203,7 +203,7 @@ pub fn deviation_text_of(x: &RealConstant) -> Result<String, String> {
 /// A simple closed form whose correct rounding to `places` places is `printed`, the simplest
 /// found first: a fraction `n/d` with `2 <= d <= 12` (other than the decimal itself), a square
 /// root `±sqrt(a/b)` with `b <= 12`, or `(a + b sqrt(c))/d` with `c` in 2, 3, 5, 6, 7,
-/// `1 <= d <= 6`, `1 <= |b| <= 3`. Each family is searched exactly: the candidate integers next
+/// `1 <= d <= 6`, `1 <= |b| <= 3` (from three places on). Each family is searched exactly: the candidate integers next
 /// to the printed value are found by exact rounding and every candidate is judged by
 /// [`rounds_to_of`]. `None` for fewer than two places (too many forms round to such a decimal) or
 /// when no form of the families fits.
@@ -247,7 +247,11 @@ pub fn closed_form_guess(printed: &Rational, places: u32) -> Option<String> {
             }
         }
     }
-    // (a + b sqrt(c))/d.
+    // (a + b sqrt(c))/d: from three places on (at two, about one in ten of these forms rounds
+    // to any given decimal, so a fit would say nothing).
+    if places < 3 {
+        return None;
+    }
     for d in 1..=6i64 {
         let dq = Rational::from_integer(d);
         for c in [2u64, 3, 5, 6, 7] {
@@ -308,7 +312,7 @@ mod tests {
         assert_eq!(g("0.3333").as_deref(), Some("1/3"));
         assert_eq!(g("-0.7071").as_deref(), Some("-sqrt(2)/2"));
         assert_eq!(g("0.2679").as_deref(), Some("2 - sqrt(3)"));
-        assert_eq!(g("1.6180").as_deref(), Some("(1 + sqrt(5))/2"));
+        assert_eq!(g("1.6180").as_deref(), Some("1/2 + sqrt(5)/2"));
         // The decimal itself is no guess, one place is too few, and most decimals fit nothing.
         assert_eq!(g("0.25"), None);
         assert_eq!(g("0.9"), None);
