@@ -724,3 +724,39 @@ fn the_curvature_of_a_rational_quadratic_from_derivatives_of_fractions_is_proved
         "{row}"
     );
 }
+
+#[test]
+fn arc_weights_printed_with_angles_pi_and_nested_radicals_get_exact_verdicts() {
+    let v: HashMap<String, Option<Verdict>> = verdicts("tests/claims_file/arc_weights.toml")
+        .into_iter()
+        .collect();
+    let want = [
+        ("arc.w90", Verdict::Holds),
+        ("arc.w45", Verdict::Holds),
+        ("arc.w45_radical", Verdict::Holds),
+        ("arc.w120", Verdict::Fails),
+        ("arc.w120_exact", Verdict::Proved),
+        ("arc.control45", Verdict::Holds),
+        ("arc.control120", Verdict::Holds),
+        ("arc.t60", Verdict::Fails),
+        ("arc.length120", Verdict::Holds),
+    ];
+    assert_eq!(v.len(), want.len());
+    for (id, verdict) in want {
+        assert_eq!(v[id], Some(verdict), "{id}");
+    }
+    let out = exactcheck(&["verify", "tests/claims_file/arc_weights.toml", "--json"]);
+    assert_eq!(out.status.code(), Some(0), "every verdict is as expected");
+    let text = String::from_utf8(out.stdout).unwrap();
+    // The exact value printed as radicals, its correct rounding, the misprint's closed form.
+    for needle in [
+        "exact value 2 - sqrt(3)",
+        "correctly rounded to 4 places it is 0.2679",
+        "exact value sqrt(2 + sqrt(2))/2",
+        "the printed 0.866 is the rounding of sqrt(3)/2",
+        "exact value 2/3*pi",
+        "certified enclosure of pi",
+    ] {
+        assert!(text.contains(needle), "{needle} in {text}");
+    }
+}

@@ -186,6 +186,9 @@ limits! {
     /// Degree of the defining polynomial of one real algebraic number (an operation on two
     /// numbers of degree `d` computes a resultant of degree up to `d^2`).
     ALGEBRAIC_DEGREE = ("algebraic-degree", "degree of an algebraic number", "", 64);
+    /// Bits of pi computed to decide a comparison of a value in pi (`2*pi/3` against a printed
+    /// decimal): a value that close to a rounding boundary needs that many bits.
+    PI_BITS = ("pi-bits", "bits of pi", "bits", 65_536);
     /// Distinct variables of one polynomial.
     VARIABLES = ("variables", "number of variables", "", 1_000);
     /// Terms of one polynomial during expansion.

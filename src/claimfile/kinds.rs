@@ -21,10 +21,12 @@ use exactcheck_exact::prove::{
     MAX_RANDOM_TRIALS,
 };
 use exactcheck_exact::ratfun::RatFun;
+use exactcheck_exact::real_constant::RealConstant;
 use exactcheck_exact::{Radical, Rational};
 use rayon::prelude::*;
 use serde_json::Value;
 use std::cell::RefCell;
+use std::cmp::Ordering;
 use std::fmt::Display;
 
 /// Why a check could not give a verdict.
@@ -807,10 +809,22 @@ fn identity<C: PointField + Display>(check: &Check) -> Result<(Outcome, Option<S
     ))
 }
 
+/// How a value claim's exact value was computed, for the outcome's method.
+fn value_method(v: &RealConstant) -> &'static str {
+    match v {
+        RealConstant::Radical(_) => "exact evaluation in Q(sqrt)",
+        RealConstant::Algebraic(_) => {
+            "exact real algebraic arithmetic (defining polynomial and isolating interval)"
+        }
+        RealConstant::Pi { .. } => {
+            "exact evaluation as a rational function of pi, compared through a certified enclosure of pi (Machin's series with rational error bounds)"
+        }
+    }
+}
+
 fn value(expr: &Expr, name: Option<&Expr>, printed_list: &[String]) -> Result<Outcome, Fault> {
-    let v: Radical = expr
-        .eval_constant::<Radical>()
-        .map_err(|e| Fault::Input("expr", e.to_string()))?;
+    let v = RealConstant::from_expr(expr).map_err(|e| Fault::Input("expr", e.to_string()))?;
+    let judge = |e: String| Fault::Input("expr", e);
     let mut notes = Vec::new();
     let mut all_exact = true;
     let mut wrong = Vec::new();
@@ -822,29 +836,32 @@ fn value(expr: &Expr, name: Option<&Expr>, printed_list: &[String]) -> Result<Ou
     for p in printed_list {
         let q = printed::rational(p).map_err(|e| Fault::Input("printed", e))?;
         let places = printed::places(p);
-        let qr = printed::radical(&q);
-        if qr == v {
+        if v.cmp_rational(&q).map_err(|e| judge(e.to_string()))? == Ordering::Equal {
             notes.push(format!("{p} is the exact value"));
             continue;
         }
         all_exact = false;
-        let correct = printed::decimal(&v, places);
-        if printed::rounds_to(&v, &q, places) {
-            notes.push(if printed::ties(&v, &q, places) {
+        let correct = printed::decimal_of(&v, places).map_err(judge)?;
+        if printed::rounds_to_of(&v, &q, places).map_err(judge)? {
+            notes.push(if printed::ties_of(&v, &q, places).map_err(judge)? {
                 format!("{p}: a correct rounding to {places} places (a tie: both neighbours are)")
             } else {
                 format!("{p}: correctly rounded to {places} places")
             });
         } else {
-            let dev = qr.sub_ref(&v);
-            let how = if printed::truncates_to(&v, &q, places) {
+            let dev = v.rational_minus(&q);
+            let how = if printed::truncates_to_of(&v, &q, places).map_err(judge)? {
                 " (truncated, not rounded)"
             } else {
                 ""
             };
+            let guess = match printed::closed_form_guess(&q, places) {
+                Some(g) => format!("; the printed {p} is the rounding of {g}"),
+                None => String::new(),
+            };
             notes.push(format!(
-                "{p}: wrong{how}; correctly rounded to {places} places it is {correct} (printed - exact = {})",
-                printed::deviation_text(&dev)
+                "{p}: wrong{how}; correctly rounded to {places} places it is {correct} (printed - exact = {}){guess}",
+                printed::deviation_text_of(&dev).map_err(judge)?
             ));
             wrong.push((p.clone(), q, correct, dev));
         }
@@ -856,7 +873,7 @@ fn value(expr: &Expr, name: Option<&Expr>, printed_list: &[String]) -> Result<Ou
     } else {
         Verdict::Holds
     };
-    let shown = printed::decimal(&v, max_places + 4);
+    let shown = printed::decimal_of(&v, max_places + 4).map_err(judge)?;
     let evidence = format!("exact value {v} = {shown}...; {}", notes.join("; "));
     let erratum = if wrong.is_empty() {
         None
@@ -877,16 +894,16 @@ fn value(expr: &Expr, name: Option<&Expr>, printed_list: &[String]) -> Result<Ou
                 lhs: label.clone(),
                 rhs: as_printed(correct, &c),
             });
-            e.residual.push(Equation {
-                lhs: difference(&as_printed(p, q), &label),
-                rhs: value_expr(dev)?,
-            });
+            // A deviation with no radical form (`Root(...)`) is written as the difference.
+            let lhs = difference(&as_printed(p, q), &label);
+            let rhs = value_expr(dev).unwrap_or_else(|_| difference(&as_printed(p, q), expr));
+            e.residual.push(Equation { lhs, rhs });
         }
         Some(Box::new(e))
     };
     Ok(Outcome {
         verdict,
-        method: "exact evaluation in Q(sqrt); printed decimals judged exactly".into(),
+        method: format!("{}; printed decimals judged exactly", value_method(&v)),
         evidence,
         erratum,
     })
@@ -939,8 +956,7 @@ fn values(exprs: &[Expr], names: &[Expr], printed: &[Vec<String>]) -> Result<Out
     }
     Ok(Outcome {
         verdict,
-        method: "exact evaluation in Q(sqrt) of each component; printed decimals judged exactly"
-            .into(),
+        method: "exact evaluation of each component; printed decimals judged exactly".into(),
         evidence,
         erratum,
     })

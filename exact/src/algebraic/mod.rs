@@ -58,11 +58,12 @@ mod trig;
 
 pub use trig::TrigError;
 
-use crate::expr::Coefficient;
+use crate::expr::{Coefficient, Trig};
 use crate::univariate::{RootInterval, UPoly};
 use crate::Rational;
 use exactcheck_core::limits::{self, LimitError};
 use exactcheck_core::{Field, Ring, Sign, ZeroDivisor};
+use num_traits::ToPrimitive;
 use std::cmp::Ordering;
 
 /// A real algebraic number, exactly: see the [module documentation](self).
@@ -383,23 +384,27 @@ impl Coefficient for Algebraic {
     fn check_limits(&self) -> Result<(), LimitError> {
         limits::ALGEBRAIC_DEGREE.check_usize(self.degree())
     }
-    /// `cos`, `sin`, `tan` of `r pi` by [`Algebraic::cos_pi`], [`Algebraic::sin_pi`],
+    /// Every rational multiple of pi: [`Algebraic::cos_pi`], [`Algebraic::sin_pi`],
     /// [`Algebraic::tan_pi`]; a multiple whose numerator or denominator does not fit an `i64`
     /// has a degree past every limit.
-    fn trig_of_pi(r: &Rational, which: crate::expr::Trig) -> Option<Result<Self, String>> {
-        use crate::expr::Trig;
-        use num_traits::ToPrimitive;
+    fn trig_of_pi(r: &Rational, which: Trig) -> Option<Result<Self, String>> {
         let (Some(p), Some(q)) = (r.numer().to_i64(), r.denom().to_i64()) else {
             return Some(Err(limits::ALGEBRAIC_DEGREE
                 .exceeded(format!("more than {}", limits::ALGEBRAIC_DEGREE.get()))
                 .to_string()));
         };
-        let value = match which {
+        let v = match which {
             Trig::Cos => Algebraic::cos_pi(p, q),
             Trig::Sin => Algebraic::sin_pi(p, q),
             Trig::Tan => Algebraic::tan_pi(p, q),
         };
-        Some(value.map_err(|e| e.to_string()))
+        Some(v.map_err(|e| match e {
+            TrigError::TanUndefined { .. } => {
+                let angle = crate::expr::angle_text(r);
+                format!("tan({angle}) is undefined: cos({angle}) = 0")
+            }
+            other => other.to_string(),
+        }))
     }
 }
 

@@ -17,7 +17,7 @@
 //! product  := unary (('*' | '/') unary | implicit)*
 //! implicit := power                          (juxtaposition, not starting with a number)
 //! unary    := ('-' | '+') unary | power
-//! power    := atom ('^' exponent)?
+//! power    := atom '°'? ('^' exponent)?        ('°': degrees, `atom * pi/180`)
 //! exponent := ('-' | '+') exponent | atom ('^' exponent)?   (right-associative)
 //! atom     := number | variable | 'sqrt' '(' sum ')' | call | '(' sum ')' | list
 //! list     := '[' sum (',' sum)* ']'           (with calls only: vectors and matrices, see [`library`])
@@ -60,6 +60,8 @@
 //!   (and takes negative powers of) any expression that is not identically zero: the result is
 //!   a rational function ([`crate::ratfun::RatFun`]) in lowest terms with the divisors met, and
 //!   an expression without such a division converts by [`Expr::to_poly`] alone.
+//! * **Degrees**: `°` after an atom multiplies it by `pi/180`, so `cos(45°)` is `cos(pi/4)` and
+//!   `(a + b)°` the angle `a + b` in degrees.
 //! * `sqrt(E)` of a non-constant `E` is a variable standing for the non-negative root, one per
 //!   distinct expanded radicand, when the variable table allows it
 //!   ([`crate::poly::Vars::allow_roots`]; its relation and sign condition come from
@@ -141,6 +143,7 @@ pub use latex::{equation_to_latex, to_latex, Notation};
 pub use lower::lower;
 pub use mathml::{equation_to_mathml, to_mathml};
 pub use parse::{parse_expr, parse_expr_with_calls, parse_poly, LIST};
+pub(crate) use trig::angle_text;
 pub use w1::w1_text;
 
 /// The functions written `name(arg, ...)` in every grammar (besides `sqrt`): `diff(E, t)` and
@@ -242,9 +245,9 @@ pub trait Coefficient: Ring {
     fn named_constant(_name: &str) -> Option<Self> {
         None
     }
-    /// `cos` (`which` [`Trig::Cos`]), `sin` or `tan` of the angle `r pi` for the angles
-    /// outside [`TRIG_DENOMINATORS`] ([`trig_constant`]), `None` for a type without those values
-    /// (the default). [`crate::Algebraic`] gives every rational multiple of pi.
+    /// `cos` (`which` [`Trig::Cos`]), `sin` or `tan` of the angle `r pi` when the type computes
+    /// it for every rational `r` ([`crate::Algebraic`] does); `None`, the default, leaves it to
+    /// the built-in table of [`trig_constant`], whose values lie in `Q(sqrt 2, sqrt 3)`.
     ///
     /// # Errors
     /// The reason in words (a limit, `tan` at a zero of the cosine).

@@ -27,6 +27,8 @@ enum Tok {
     LBracket,
     RBracket,
     Comma,
+    /// `°`: degrees, a postfix meaning `* pi/180`.
+    Degree,
     End,
     Bad(char),
 }
@@ -116,6 +118,7 @@ impl<'a> Parser<'a> {
             '[' => (Tok::LBracket, start + 1),
             ']' => (Tok::RBracket, start + 1),
             ',' => (Tok::Comma, start + 1),
+            '°' => (Tok::Degree, start + '°'.len_utf8()),
             c => (Tok::Bad(c), start + c.len_utf8()),
         };
         Token { tok, start, end }
@@ -260,7 +263,38 @@ impl<'a> Parser<'a> {
 
     fn parse_power(&mut self) -> Result<Expr, ExprError> {
         let base = self.parse_atom(EXPECT_OPERAND)?;
+        let base = self.parse_degrees(base)?;
         self.parse_power_tail(base)
+    }
+
+    /// `atom '°'`: the angle in degrees as the product `atom * pi / 180`.
+    fn parse_degrees(&mut self, atom: Expr) -> Result<Expr, ExprError> {
+        if self.cur.tok != Tok::Degree {
+            return Ok(atom);
+        }
+        let at = self.cur.start;
+        self.bump();
+        let pos = atom.pos;
+        Ok(Expr {
+            kind: ExprKind::Product(vec![
+                (MulOp::Times, atom),
+                (
+                    MulOp::Times,
+                    Expr {
+                        kind: ExprKind::Var(PI.to_string()),
+                        pos: at,
+                    },
+                ),
+                (
+                    MulOp::Divide,
+                    Expr {
+                        kind: ExprKind::Number(Rational::from_integer(180)),
+                        pos: at,
+                    },
+                ),
+            ]),
+            pos,
+        })
     }
 
     /// `'^' exponent` after `base`, if present.

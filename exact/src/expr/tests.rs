@@ -385,3 +385,17 @@ fn powers_of_binomials_by_the_binomial_theorem() {
     let (x, y) = (v.get("x").unwrap(), v.get("y").unwrap());
     assert_eq!(p.coefficient(&[(x, 2500), (y, 2500)]), Rational::from(mid));
 }
+
+#[test]
+fn degrees_are_a_postfix_times_pi_over_180() {
+    use crate::Radical;
+    let v = |s: &str| parse_expr(s).unwrap().eval_constant::<Radical>().unwrap();
+    assert_eq!(v("cos(45°)"), v("cos(pi/4)"));
+    assert_eq!(v("sin(30°)"), v("1/2"));
+    assert_eq!(v("cos(90°/2)"), v("sqrt(2)/2"));
+    assert_eq!(v("tan((10 + 5)°)"), v("2 - sqrt(3)"));
+    // As a factor: 2*30° is 60°; a ° binds before a power.
+    assert_eq!(v("cos(2*30°)"), v("1/2"));
+    assert!(parse_expr("°").is_err());
+    assert!(parse_expr("45°°").is_err());
+}

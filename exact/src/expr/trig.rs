@@ -169,9 +169,10 @@ pub const TRIG_DENOMINATORS: &[u32] = &[1, 2, 3, 4, 6, 12];
 /// The exact value of `sin`, `cos` or `tan` at the angle `r pi` (`r` rational), in `C`: for `r`
 /// with a denominator in [`TRIG_DENOMINATORS`] the value lies in `Q(sqrt 2, sqrt 3)` (`cos(pi/4)
 /// = sqrt(2)/2`, `cos(pi/12) = (sqrt 6 + sqrt 2)/4`) and is built from that table, the fast path
-/// of every coefficient type with those square roots; other denominators take their value from
-/// [`Coefficient::trig_of_pi`] ([`crate::Algebraic`]: `cos(2*pi/7)` is a cubic irrationality)
-/// and are refused with the reason by the other types, as is `tan` where the cosine is zero.
+/// of every coefficient type with those square roots; a type that computes every multiple,
+/// [`crate::Algebraic`] (`cos(2*pi/7)` is a cubic irrationality), gives its own value through
+/// [`Coefficient::trig_of_pi`], and the other types refuse other denominators with the reason,
+/// as they refuse `tan` where the cosine is zero.
 ///
 /// ```
 /// use exactcheck_exact::expr::{trig_constant, Trig};
@@ -191,12 +192,12 @@ pub const TRIG_DENOMINATORS: &[u32] = &[1, 2, 3, 4, 6, 12];
 /// The reason in words: a denominator outside [`TRIG_DENOMINATORS`], `tan` at a zero of the
 /// cosine, a square root `C` does not have (over [`Rational`], `cos(pi/4)`).
 pub fn trig_constant<C: Coefficient>(r: &Rational, which: Trig) -> Result<C, String> {
+    if let Some(v) = C::trig_of_pi(r, which) {
+        return v;
+    }
     let shown = angle_text(r);
     let twelfths = r * &Rational::from_integer(12);
     if !twelfths.is_integer() {
-        if let Some(value) = C::trig_of_pi(r, which) {
-            return value;
-        }
         return Err(format!(
             "{}({shown}) is not supported next to variables: exact values are built in for angles \
              (p/q)*pi with q in {}, not q = {} (every q is exact in an identity between constants)",
@@ -252,7 +253,7 @@ pub fn trig_constant<C: Coefficient>(r: &Rational, which: Trig) -> Result<C, Str
 }
 
 /// `r pi` as written: `pi`, `-pi/2`, `3*pi/4`, `0`.
-fn angle_text(r: &Rational) -> String {
+pub(crate) fn angle_text(r: &Rational) -> String {
     let (n, d) = (r.numer(), r.denom());
     let num = match n.to_i64() {
         Some(0) => return "0".into(),
