@@ -32,8 +32,8 @@
 
 use exactcheck_core::roots::{self, IsolatedRoot};
 use exactcheck_core::{Bernstein, OrderedField, Sign};
-use exactcheck_exact::univariate::{isolate_real_roots_in, UPoly};
 use exactcheck_exact::expr::library::{self, Val};
+use exactcheck_exact::univariate::{isolate_real_roots_in, UPoly};
 
 use exactcheck_exact::{Radical, Radicand, Rational};
 use schemars::{json_schema, JsonSchema, Schema, SchemaGenerator};

@@ -179,9 +179,7 @@ impl Vars {
 /// Why `name` is a constant and not a variable of a regressed formula, `None` for a variable.
 fn reserved(name: &str) -> Option<&'static str> {
     if name == PI {
-        return Some(
-            "pi is the constant pi, not a variable",
-        );
+        return Some("pi is the constant pi, not a variable");
     }
     reserved_constant(name)
 }

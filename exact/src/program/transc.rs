@@ -8,7 +8,8 @@
 //! Every step is an operation of `interval` (endpoints rounded outward), so an enclosure of
 //! the argument gives an enclosure of each intermediate; the truncation of a series is covered
 //! by widening the sum by a proven bound of its tail. The kernels:
-//! * `ln 2 = 2 atanh(1/3)` and `pi = 16 atan(1/5) - 4 atan(1/239)` (Machin), by the odd series
+//! * `ln 2 = 2 atanh(1/3)` by the odd series below, and pi from [`crate::pi::enclosure`]
+//!   (Machin's `pi = 16 atan(1/5) - 4 atan(1/239)`); the odd series
 //!   `atanh z = sum z^(2k+1)/(2k+1)` and `atan z = sum (-1)^k z^(2k+1)/(2k+1)`: for `|z| <= 1/2`
 //!   the tail after the terms up to `z^(2k-1)` is at most `|z|^(2k+1) / (1 - z^2) <=
 //!   2 |z|^(2k+1)`. Both constants are cached at the largest precision computed so far.
@@ -466,10 +467,13 @@ fn ln2(p: u64) -> Iv {
 /// An enclosure of pi at about `p` bits.
 pub(crate) fn pi(p: u64) -> Iv {
     cached(&PI, p, |p| {
+        // the crate's one certified enclosure of pi (Machin), rounded outward to `p + 8` bits
         let w = p + 8;
-        let a = odd_series(&Iv::div(&int(1), &int(5), w), true, w);
-        let b = odd_series(&Iv::div(&int(1), &int(239), w), true, w);
-        sub(&shift(&a, 4), &shift(&b, 2), w)
+        let (lo, hi) = crate::pi::enclosure(u32::try_from(w).unwrap_or(u32::MAX));
+        Iv {
+            lo: Dy::from_rational(&lo, w, Dir::Down),
+            hi: Dy::from_rational(&hi, w, Dir::Up),
+        }
     })
 }
 
