@@ -81,7 +81,7 @@ fn the_float_side_of_a_derivative_is_the_expanded_derivative() {
 fn vectors_and_constants_are_one_line_errors() {
     refused("[x, y]", &["--formula", "a vector of 2", "scalar"]);
     refused("cross([x, y, 1], [1, 2, 3])", &["a vector of 3"]);
-    refused("2 pi x", &["'pi' at 2", "constant pi"]);
+    refused("2 e x", &["'e' at 2", "constant e"]);
     refused("x + e", &["'e' at 4", "Euler"]);
     refused("diff(sqrt(x), x)", &["diff", "sqrt"]);
     refused("sum(k, 0, 1/2, k x)", &["sum", "integer constant"]);

@@ -213,6 +213,7 @@ impl Program {
             table.names.push(name.clone());
         }
         let resolved = match Defs::default()
+            .with_calls(&formula_function_names())
             .resolve_expr(expr)
             .map_err(|e| CompileError::Resolve(e.to_string()))?
         {
@@ -342,15 +343,20 @@ fn formula_function(name: &str) -> Option<Func> {
     Func::from_name(name).filter(|f| f.arity() > 0)
 }
 
-/// The names [`formula_function`] accepts, comma-separated (for error messages).
-fn formula_functions() -> String {
-    let mut names: Vec<&str> = Func::ALL
+/// The names [`formula_function`] accepts.
+fn formula_function_names() -> Vec<&'static str> {
+    let mut names: Vec<&'static str> = Func::ALL
         .iter()
         .filter(|f| f.arity() > 0)
         .map(|f| f.name())
         .collect();
     names.push("ln");
-    names.join(", ")
+    names
+}
+
+/// The names [`formula_function`] accepts, comma-separated (for error messages).
+fn formula_functions() -> String {
+    formula_function_names().join(", ")
 }
 
 /// The left-to-right chain of a sum's terms or a product's factors (`empty` when there are

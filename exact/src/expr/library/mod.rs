@@ -252,9 +252,19 @@ pub struct Defs {
     resolved: HashMap<String, Val>,
     /// The parameters of the function whose body is being resolved.
     scope: HashMap<String, Val>,
+    /// Further function names kept as calls ([`Defs::with_calls`]).
+    calls: Vec<&'static str>,
 }
 
 impl Defs {
+    /// These definitions, with the functions `names` also accepted and kept as calls (their
+    /// arguments resolved to scalars), for a front end that evaluates more functions than the
+    /// library does (`regress --formula`: `exp`, `log`, `atan2`, ...).
+    pub fn with_calls(mut self, names: &[&'static str]) -> Self {
+        self.calls.extend_from_slice(names);
+        self
+    }
+
     /// Definitions from `(head, text)` pairs in file order; a head is a name (`A`) or a function
     /// with its parameters (`f(t)`, `cross2(u, v)`).
     ///
@@ -749,7 +759,7 @@ impl Defs {
                 None => Ok(out),
             };
         }
-        if super::FUNCTIONS.contains(&name) {
+        if super::FUNCTIONS.contains(&name) || self.calls.contains(&name) {
             // A function of the core language: its arguments resolved, the call kept for the
             // conversion, which checks them.
             let mut resolved = Vec::new();
@@ -765,6 +775,7 @@ impl Defs {
             let mut names = function_names();
             names.push("sqrt");
             names.extend(super::FUNCTIONS);
+            names.extend(self.calls.iter().filter(|n| !super::FUNCTIONS.contains(n)));
             let last = names.pop().unwrap_or("sqrt");
             return err(format!(
                 "unknown function '{name}' at {pos}: the functions are {} and {last} (write '{name}*(...)' for a product)",
