@@ -871,11 +871,11 @@ mod tests {
 
     #[test]
     fn texts_keep_the_needed_parentheses() {
-        let p = Program::parse("(a - b) * (c + d) / e - (f - g)^2", None).unwrap();
+        let p = Program::parse("(a - b) * (c + d) / h - (f - g)^2", None).unwrap();
         let x: Vec<Rational> = [1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0].map(q).to_vec();
         let ops = p.local_errors(&x).unwrap();
         let last = ops.last().unwrap();
-        assert_eq!(last.at, "(a - b) * (c + d) / e - (f - g)^2");
+        assert_eq!(last.at, "(a - b) * (c + d) / h - (f - g)^2");
         assert!(ops.iter().all(|o| bits(o.float, o.exact) <= 1.0), "{ops:?}");
     }
 }
