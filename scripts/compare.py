@@ -79,11 +79,18 @@ class TimedOut(Exception):
     pass
 
 
+# One thread for every tool: numpy's BLAS and OpenMP pools otherwise start threads whose
+# spinning counts as the tool's CPU time (and exactcheck's W3 one-thread column is the target's).
+ONE_THREAD = dict(os.environ, OMP_NUM_THREADS="1", OPENBLAS_NUM_THREADS="1", MKL_NUM_THREADS="1",
+                  NUMEXPR_NUM_THREADS="1")
+
+
 def run(cmd):
     """Runs one command; returns (its JSON line, whole-process seconds)."""
     t0 = time.perf_counter()
     try:
-        out = subprocess.run(cmd, capture_output=True, text=True, timeout=args.max_seconds)
+        out = subprocess.run(cmd, capture_output=True, text=True, timeout=args.max_seconds,
+                             env=ONE_THREAD)
     except subprocess.TimeoutExpired:
         raise TimedOut()
     wall = time.perf_counter() - t0
