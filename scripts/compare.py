@@ -377,8 +377,8 @@ def cpu():
 rustc = subprocess.run(["rustc", "--version"], capture_output=True, text=True).stdout.strip()
 lines = []
 lines.append(f"Measured {datetime.date.today().isoformat()} by `scripts/compare.sh` on {cpu()}, "
-             f"{os.cpu_count()} cores, {platform.system()} {platform.release()}; exactcheck {git_rev()} "
-             f"({rustc}); {args.reps} rounds per size, tools alternated run by run; each cell is the "
+             f"{os.cpu_count()} cores, {platform.system()} {platform.release()}; {rustc}; "
+             f"{args.reps} rounds per size, tools alternated run by run; each cell is the "
              "median process CPU time of the tool's own timed region, ± the largest deviation of a "
              "run from it, and the median wall time; ratio = exactcheck / tool in CPU time (below 1: "
              "exactcheck faster). One thread per tool unless the column says otherwise.")
@@ -475,5 +475,6 @@ if args.markdown:
 if args.json:
     with open(args.json, "w") as f:
         json.dump({"versions": versions, "verify_walls": verify_walls, "uptime_before": UPTIME_BEFORE,
+                   "revision": git_rev(),
                    "results": [dict(workload=k[0], size=k[1], tool=k[2], **v) for k, v in results.items()]},
                   f, indent=1)
