@@ -343,8 +343,18 @@ impl<'a> Parser<'a> {
             }
             Tok::Ident => {
                 self.bump();
-                if self.cur.tok == Tok::LParen && (self.calls || FUNCTIONS.contains(&self.text(t)))
-                {
+                let name = self.text(t);
+                // In an exponent (an integer constant), only a built-in or library function is
+                // called: another name before `(` is the exponent, and the `(` starts the next
+                // factor (`t^i (1-t)^(3-i)`), also with calls.
+                let known = FUNCTIONS.contains(&name)
+                    || (self.calls && super::library::function_names().contains(&name));
+                let call_here = if expected == EXPECT_EXPONENT {
+                    known
+                } else {
+                    self.calls || known
+                };
+                if self.cur.tok == Tok::LParen && call_here {
                     let args = self.parse_arguments()?;
                     return Ok(Expr {
                         kind: ExprKind::Call(self.text(t).to_string(), args),
@@ -353,7 +363,7 @@ impl<'a> Parser<'a> {
                 }
                 // In an exponent, a name that is not a function is the exponent, and a `(`
                 // after it starts the next juxtaposed factor: `t^i (1-t)^(3-i)`.
-                if self.cur.tok == Tok::LParen && (self.calls || expected != EXPECT_EXPONENT) {
+                if self.cur.tok == Tok::LParen && expected != EXPECT_EXPONENT {
                     return Err(ExprError::UnknownFunction {
                         pos: t.start,
                         name: self.text(t).to_string(),

@@ -386,6 +386,20 @@ fn powers_of_binomials_by_the_binomial_theorem() {
     assert_eq!(p.coefficient(&[(x, 2500), (y, 2500)]), Rational::from(mid));
 }
 
+/// With calls, a name in an exponent followed by `(` is a call only when it is a built-in or
+/// library function; otherwise it is the exponent and the parenthesis the next factor.
+#[test]
+fn exponents_call_only_known_functions() {
+    let e = parse_expr_with_calls("t^i (1-t)").unwrap();
+    let want = parse_expr_with_calls("t^i * (1-t)").unwrap();
+    assert_eq!(e.to_string(), want.to_string());
+    let e = parse_expr_with_calls("2^det([[2, 0], [0, 1]])").unwrap();
+    assert!(e.to_string().contains("det("), "{e}");
+    // outside an exponent every name before `(` is a call
+    let e = parse_expr_with_calls("f(x)").unwrap();
+    assert!(matches!(e.kind, ExprKind::Call(ref n, _) if n == "f"));
+}
+
 #[test]
 fn degrees_are_a_postfix_times_pi_over_180() {
     use crate::Radical;
