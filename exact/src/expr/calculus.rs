@@ -297,69 +297,33 @@ pub(super) fn sum_terms<T>(
     Ok(out)
 }
 
-/// `e` with the free occurrences of the variable `name` replaced by the number `value` (a
-/// `sum` or `integrate` that binds the same name keeps its body). `diff` by `name` cannot be
-/// taken after `name` is a number: it is refused, naming `sum` (the call `within`).
+/// `e` with the free occurrences of the variable `name` replaced by the number `value`, by the
+/// library's binder-aware substitution ([`super::library::substitute_free`]: a `sum` or
+/// `integrate` that binds the same name keeps its body). `diff` by `name` cannot be taken after
+/// `name` is a number: it is refused first, naming `sum` (the call `within`).
 fn substitute(e: &Expr, name: &str, value: &Rational, within: &Expr) -> Result<Expr, ExprError> {
-    let sub = |x: &Expr| substitute(x, name, value, within);
-    let boxed = |x: &Expr| sub(x).map(Box::new);
-    let kind = match &e.kind {
-        ExprKind::Var(v) if v == name => {
-            let mut n = Expr::number(value.clone());
-            n.pos = e.pos;
-            if let ExprKind::Neg(inner) = &mut n.kind {
-                inner.pos = e.pos;
+    let mut by_index = None;
+    super::library::map_tree(e, &mut |x| {
+        if let ExprKind::Call(f, args) = &x.kind {
+            if f == "diff"
+                && matches!(args.get(1), Some(Expr { kind: ExprKind::Var(v), .. }) if v == name)
+            {
+                by_index.get_or_insert(args[1].pos);
             }
-            return Ok(n);
         }
-        ExprKind::Number(_) | ExprKind::Var(_) => return Ok(e.clone()),
-        ExprKind::Neg(x) => ExprKind::Neg(boxed(x)?),
-        ExprKind::Sqrt(x) => ExprKind::Sqrt(boxed(x)?),
-        ExprKind::Pow(a, b) => ExprKind::Pow(boxed(a)?, boxed(b)?),
-        ExprKind::Sum(ts) => ExprKind::Sum(
-            ts.iter()
-                .map(|(op, t)| Ok((*op, sub(t)?)))
-                .collect::<Result<_, ExprError>>()?,
-        ),
-        ExprKind::Product(fs) => ExprKind::Product(
-            fs.iter()
-                .map(|(op, f)| Ok((*op, sub(f)?)))
-                .collect::<Result<_, ExprError>>()?,
-        ),
-        ExprKind::Call(f, args) => {
-            let binds = |i: usize| matches!(args.get(i), Some(Expr { kind: ExprKind::Var(v), .. }) if v == name);
-            // The argument positions where `name` is bound (kept as written).
-            let bound: &[usize] = match f.as_str() {
-                "sum" if binds(0) => &[0, 3],
-                "integrate" if binds(1) => &[0, 1],
-                "diff" if binds(1) => {
-                    return Err(bad(
-                        within,
-                        args[1].pos,
-                        format!(
-                            "diff(..., {name}) differentiates by the summation index {name}, \
-                             which is an integer there; take the derivative outside the sum"
-                        ),
-                    ))
-                }
-                _ => &[],
-            };
-            ExprKind::Call(
-                f.clone(),
-                args.iter()
-                    .enumerate()
-                    .map(|(i, a)| {
-                        if bound.contains(&i) {
-                            Ok(a.clone())
-                        } else {
-                            sub(a)
-                        }
-                    })
-                    .collect::<Result<_, ExprError>>()?,
-            )
-        }
-    };
-    Ok(Expr { kind, pos: e.pos })
+    });
+    if let Some(pos) = by_index {
+        return Err(bad(
+            within,
+            pos,
+            format!(
+                "diff(..., {name}) differentiates by the summation index {name}, which is an \
+                 integer there; take the derivative outside the sum"
+            ),
+        ));
+    }
+    super::library::substitute_free(e, name, &Expr::number(value.clone()))
+        .map_err(|why| bad(within, within.pos, why))
 }
 
 // ------------------------------------------------------------------------------ integrals

@@ -64,6 +64,7 @@ mod tree;
 
 use calls::*;
 use matrix::*;
+pub(crate) use tree::map_tree;
 use tree::{at_pos, collect_calls};
 pub use tree::{count_nodes, has_sqrt, substitute, substitute_free};
 

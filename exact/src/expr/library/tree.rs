@@ -15,7 +15,7 @@ pub(super) fn collect_calls(e: &Expr, out: &mut Vec<String>) {
 }
 
 /// Visits every node of `e` (children first).
-pub(super) fn map_tree(e: &Expr, f: &mut dyn FnMut(&Expr)) {
+pub(crate) fn map_tree(e: &Expr, f: &mut dyn FnMut(&Expr)) {
     match &e.kind {
         ExprKind::Number(_) | ExprKind::Var(_) => {}
         ExprKind::Neg(x) | ExprKind::Sqrt(x) => map_tree(x, f),
