@@ -47,18 +47,17 @@
 //! says so in `type_note` instead of failing. Poles come from the same subdivision, which stops
 //! where f64 cannot halve an interval.
 
-use super::number::{unit_zeros, SectionScalar, DEFAULT_WIDTH_LOG2};
 use super::number::{Coords, ExactNumber, FloatNumber};
-use super::{by_mode, parse, Kind, Mode};
+use super::scalar::{unit_zeros, Scalar, DEFAULT_WIDTH_LOG2};
+use super::{parse, FloatKind, Kind};
 use crate::Error;
 use exactcheck_core::conic::{cone_surface, ConeSection, DegenerateConic, SectionType};
 use exactcheck_core::roots::{self, IsolatedRoot};
 use exactcheck_core::ruled::Plane;
-use exactcheck_core::{Bernstein, Field, OrderedField, Sign, Sqrt, Vec3};
-use exactcheck_exact::Radical;
+use exactcheck_core::{Bernstein, OrderedField, Sign, Sqrt, Vec3};
+use exactcheck_exact::{Radical, Rational};
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
-use serde_json::Value;
 
 // ------------------------------------------------------------------ input
 
@@ -88,7 +87,7 @@ pub struct Input<N> {
 }
 
 /// The plane and the width, checked.
-fn problem<N, T: ConicScalar>(
+fn problem<N, T: Scalar + Sqrt>(
     input: &Input<N>,
     num: impl Fn(&N) -> T,
 ) -> Result<(Plane<T>, T), Error> {
@@ -154,22 +153,12 @@ fn problem<N, T: ConicScalar>(
 
 // ------------------------------------------------------------------ scalars
 
-/// A scalar the section is computed in: [`Radical`] (exact; it holds `1/sqrt 2`) or `f64`.
-pub(crate) trait ConicScalar: SectionScalar + Sqrt {
-    /// `1/sqrt 2` in the scalar.
-    fn inv_sqrt2() -> Self;
-}
-
-impl ConicScalar for Radical {
-    fn inv_sqrt2() -> Self {
-        Radical::sqrt_of(2).inv().expect("sqrt 2 is not zero")
-    }
-}
-
-impl ConicScalar for f64 {
-    fn inv_sqrt2() -> Self {
-        0.5f64.sqrt()
-    }
+/// `1/sqrt 2` in a scalar with square roots: `sqrt(1/2)` ([`Radical`] holds it exactly; in f64
+/// it is `0.5f64.sqrt()`).
+fn inv_sqrt2<T: Scalar + Sqrt>() -> T {
+    T::from_rational(&Rational::new(1, 2).expect("2 != 0"))
+        .sqrt()
+        .expect("1/2 has a square root in the scalars with square roots (Radical, f64)")
 }
 
 // ------------------------------------------------------------------ the computation
@@ -216,14 +205,14 @@ pub(crate) struct Computed<T> {
     pub rulings: Option<Vec<RulingData<T>>>,
 }
 
-fn three_approx<T: SectionScalar>(v: &Vec3<T>) -> [f64; 3] {
+fn three_approx<T: Scalar>(v: &Vec3<T>) -> [f64; 3] {
     [v.x.approx(), v.y.approx(), v.z.approx()]
 }
 
 /// The sign of `g` at the zero `root` of `w` (where `g` does not vanish), certified by
 /// refining the interval (module doc). For f64 the refinement stops at f64 resolution and the
 /// sign at the midpoint is taken.
-fn sign_at_root<T: ConicScalar>(
+fn sign_at_root<T: Scalar + Sqrt>(
     g: &Bernstein<T>,
     w: &Bernstein<T>,
     root: &IsolatedRoot<T>,
@@ -269,7 +258,7 @@ impl<T: OrderedField> MaxOf for T {
 }
 
 /// The rulings in a plane through the apex (module doc), each with the poles on it.
-fn rulings<T: ConicScalar>(
+fn rulings<T: Scalar + Sqrt>(
     plane: &Plane<T>,
     pieces: &[PieceData<T>; 2],
 ) -> Result<Vec<RulingData<T>>, Error> {
@@ -342,7 +331,7 @@ fn rulings<T: ConicScalar>(
                     } else {
                         exactcheck_core::conic::ConePiece::Minus
                     },
-                    &T::inv_sqrt2(),
+                    &inv_sqrt2::<T>(),
                 );
                 let g = v
                     .directions()
@@ -369,8 +358,8 @@ fn rulings<T: ConicScalar>(
 }
 
 /// The section by `plane`, computed in `T`, poles refined to `width`.
-pub(crate) fn compute<T: ConicScalar>(plane: Plane<T>, width: &T) -> Result<Computed<T>, Error> {
-    let section = ConeSection::new(plane, &T::inv_sqrt2()).map_err(|e| {
+pub(crate) fn compute<T: Scalar + Sqrt>(plane: Plane<T>, width: &T) -> Result<Computed<T>, Error> {
+    let section = ConeSection::new(plane, &inv_sqrt2::<T>()).map_err(|e| {
         // `problem` refuses a zero normal, so in f64 this is a non-zero normal whose squares
         // underflow to zero.
         Error::Input(if T::EXACT {
@@ -391,7 +380,7 @@ pub(crate) fn compute<T: ConicScalar>(plane: Plane<T>, width: &T) -> Result<Comp
             })
             .collect();
         PieceData {
-            directions: cone_surface(p.piece, &T::inv_sqrt2())
+            directions: cone_surface(p.piece, &inv_sqrt2::<T>())
                 .directions()
                 .control_points()
                 .to_vec(),
@@ -480,7 +469,7 @@ struct Degenerate<V> {
 
 /// The answer, with numbers of type `V` (exact strings, or f64 with `--float`).
 #[derive(Debug, Serialize)]
-struct Answer<V> {
+pub(crate) struct Answer<V> {
     kind: &'static str,
     mode: &'static str,
     plane: [V; 4],
@@ -501,7 +490,7 @@ fn three<T, V>(p: &Vec3<T>, v: &impl Fn(&T) -> V) -> [V; 3] {
     [v(&p.x), v(&p.y), v(&p.z)]
 }
 
-fn pole_t<T: SectionScalar, V>(z: &IsolatedRoot<T>, v: &impl Fn(&T) -> V) -> PoleT<V> {
+fn pole_t<T: Scalar, V>(z: &IsolatedRoot<T>, v: &impl Fn(&T) -> V) -> PoleT<V> {
     match z {
         IsolatedRoot::Exact(t) => PoleT::Exact(v(t)),
         IsolatedRoot::Between(lo, hi) => PoleT::Isolated {
@@ -519,7 +508,7 @@ fn common_bezier(c: &Computed<impl Sized>) -> Option<SectionType> {
     }
 }
 
-fn render<T: ConicScalar, V>(
+fn render<T: Scalar + Sqrt, V>(
     c: &Computed<T>,
     mode: &'static str,
     v: impl Fn(&T) -> V,
@@ -557,7 +546,7 @@ fn render<T: ConicScalar, V>(
                     .collect(),
                 type_by_bezier: p.bezier.map(SectionType::name),
                 approx: T::EXACT.then(|| PieceApprox {
-                    weights: weights.iter().map(SectionScalar::approx).collect(),
+                    weights: weights.iter().map(Scalar::approx).collect(),
                     points: points
                         .iter()
                         .map(|q| q.as_ref().map(three_approx))
@@ -611,8 +600,7 @@ fn render<T: ConicScalar, V>(
     }
 }
 
-fn exact(text: &str) -> Result<Answer<String>, Error> {
-    let input: Input<ExactNumber> = parse(text)?;
+fn exact(input: Input<ExactNumber>) -> Result<Answer<String>, Error> {
     let (plane, width) = problem(&input, |x| x.0.clone())?;
     let c = compute(plane, &width)?;
     let by_angle = c.angle;
@@ -641,8 +629,7 @@ fn exact(text: &str) -> Result<Answer<String>, Error> {
     Ok(render(&c, "exact", ToString::to_string))
 }
 
-fn float_answer(text: &str) -> Result<Answer<f64>, Error> {
-    let input: Input<FloatNumber> = parse(text)?;
+fn float_answer(input: Input<FloatNumber>) -> Result<Answer<f64>, Error> {
     let (plane, width) = problem(&input, |x| x.0)?;
     // The classification compares `c^2` with `a^2 + b^2`: beyond f64's range (`inf - inf`) or
     // below it (both `0`) the comparison means nothing.
@@ -684,11 +671,27 @@ pub struct ConicKind;
 impl Kind for ConicKind {
     const NAME: &'static str = "conic";
     type Input = Input<ExactNumber>;
+    type Answer = Answer<String>;
 
-    fn answer(text: &str, mode: Mode) -> Result<Value, Error> {
-        by_mode(text, mode, exact, float_answer, |e, f| {
-            e.float = Some(Box::new(f))
-        })
+    fn compute(input: Self::Input) -> Result<Self::Answer, Error> {
+        exact(input)
+    }
+}
+
+impl FloatKind for ConicKind {
+    type FloatInput = Input<FloatNumber>;
+    type FloatAnswer = Answer<f64>;
+
+    fn compute_float(input: Self::FloatInput) -> Result<Self::FloatAnswer, Error> {
+        float_answer(input)
+    }
+
+    fn attach(
+        answer: &mut Self::Answer,
+        float: Result<Self::FloatAnswer, Error>,
+    ) -> Result<(), Error> {
+        answer.float = Some(Box::new(float?));
+        Ok(())
     }
 }
 
@@ -706,8 +709,18 @@ pub(crate) fn exact_section(text: &str) -> Result<Computed<Radical>, Error> {
 mod tests {
     use super::*;
 
-    fn answer(text: &str) -> Value {
-        ConicKind::answer(text, Mode::Exact).expect("an answer")
+    fn answer(text: &str) -> serde_json::Value {
+        crate::solve::solve(text, crate::solve::Mode::Exact).expect("an answer")
+    }
+
+    #[test]
+    fn inv_sqrt2_is_the_one_of_each_scalar() {
+        assert_eq!(
+            inv_sqrt2::<Radical>(),
+            Radical::sqrt_of(2).inv().expect("sqrt 2 is not zero")
+        );
+        assert_eq!(inv_sqrt2::<Radical>().to_string(), "sqrt(2)/2");
+        assert_eq!(inv_sqrt2::<f64>().to_bits(), 0.5f64.sqrt().to_bits());
     }
 
     #[test]

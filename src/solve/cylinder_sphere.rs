@@ -12,7 +12,7 @@
 //! refuses non-finite input and overflowing coefficients.
 
 use super::number::{Coords, FloatNumber, Radians, RationalNumber};
-use super::{by_mode, parse, Kind, Mode};
+use super::{parse, FloatKind, Kind};
 use crate::Error;
 use exactcheck_core::cylinder_sphere::{
     unit_circle_point, Angle, Contact, CylinderSphere, TrigCoefficients,
@@ -25,7 +25,6 @@ use num_rational::BigRational;
 use num_traits::One;
 use schemars::{json_schema, JsonSchema, Schema, SchemaGenerator};
 use serde::{Deserialize, Serialize};
-use serde_json::Value;
 use std::borrow::Cow;
 
 // ------------------------------------------------------------------ input
@@ -395,12 +394,12 @@ struct CurvePoint {
 
 /// The exact answer.
 #[derive(Debug, Serialize)]
-struct ExactAnswer {
+pub(crate) struct ExactAnswer {
     kind: &'static str,
     mode: &'static str,
     intersects: bool,
-    contact: String,
-    contact_by_axis_distance: String,
+    contact: &'static str,
+    contact_by_axis_distance: &'static str,
     methods_agree: bool,
     components: usize,
     tangent_points: Vec<TangentPoint>,
@@ -427,11 +426,11 @@ struct FloatSample {
 
 /// The `--float` answer.
 #[derive(Debug, Serialize)]
-struct FloatAnswer {
+pub(crate) struct FloatAnswer {
     kind: &'static str,
     mode: &'static str,
     intersects: bool,
-    contact_by_axis_distance: String,
+    contact_by_axis_distance: &'static str,
     coefficients: Coefficients<f64>,
     samples: Vec<FloatSample>,
 }
@@ -442,14 +441,34 @@ pub struct CylinderSphereKind;
 impl Kind for CylinderSphereKind {
     const NAME: &'static str = "cylinder_sphere";
     type Input = Input<RationalNumber>;
+    type Answer = ExactAnswer;
 
-    fn answer(text: &str, mode: Mode) -> Result<Value, Error> {
-        by_mode(text, mode, exact, float_answer, |e, f| e.float = Some(f))
+    fn compute(input: Self::Input) -> Result<ExactAnswer, Error> {
+        exact(input)
     }
 }
 
-fn contact_name(c: Contact) -> String {
-    format!("{c:?}").to_lowercase()
+impl FloatKind for CylinderSphereKind {
+    type FloatInput = Input<FloatNumber>;
+    type FloatAnswer = FloatAnswer;
+
+    fn compute_float(input: Self::FloatInput) -> Result<FloatAnswer, Error> {
+        float_answer(input)
+    }
+
+    fn attach(answer: &mut ExactAnswer, float: Result<FloatAnswer, Error>) -> Result<(), Error> {
+        answer.float = Some(float?);
+        Ok(())
+    }
+}
+
+/// The name of a contact in the answer.
+fn contact_name(c: Contact) -> &'static str {
+    match c {
+        Contact::Disjoint => "disjoint",
+        Contact::Tangent => "tangent",
+        Contact::Crossing => "crossing",
+    }
 }
 
 fn strings<T: ToString>(v: &Vec3<T>) -> [String; 3] {
@@ -468,8 +487,7 @@ fn on_both<T: OrderedField>(cs: &CylinderSphere<T>, x: &Vec3<T>) -> bool {
     sphere && cyl
 }
 
-fn exact(text: &str) -> Result<ExactAnswer, Error> {
-    let input: Input<RationalNumber> = parse(text)?;
+fn exact(input: Input<RationalNumber>) -> Result<ExactAnswer, Error> {
     let mut notes = Vec::new();
     let (cs, n_samples) = configuration(
         &input,
@@ -711,8 +729,7 @@ fn tangent_circle(cs: &CylinderSphere<Rational>) -> TangentCircle {
     }
 }
 
-fn float_answer(text: &str) -> Result<FloatAnswer, Error> {
-    let input: Input<FloatNumber> = parse(text)?;
+fn float_answer(input: Input<FloatNumber>) -> Result<FloatAnswer, Error> {
     let (cs, n) = configuration(&input, |x| x.0, float_angle)?;
     let coeffs = cs.trig_coefficients();
     if !coeffs
@@ -814,6 +831,10 @@ fn quadratic_points(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn exact(text: &str) -> Result<ExactAnswer, Error> {
+        super::exact(parse(text)?)
+    }
 
     fn problem(center: &str, radius: &str) -> String {
         format!(

@@ -25,17 +25,10 @@
 //!
 //! * [`Radians`]: an angle in radians (approximate by nature: floating literals are accepted in
 //!   every mode), finite.
-//!
-//! The scalars the kinds compute in ([`SectionScalar`]: `Rational`, `Radical`, `f64`) and the
-//! one exact search for rational zeros ([`rational_zeros`], [`unit_zeros`]) live here too, shared by the kinds
-//! that isolate zeros (`ruled_plane`, `ph_offset`).
 
-use exactcheck_core::roots::{self, IsolatedRoot};
-use exactcheck_core::{Bernstein, OrderedField, Sign};
+use exactcheck_core::OrderedField;
 use exactcheck_exact::expr::library::{self, Val};
-use exactcheck_exact::univariate::{isolate_real_roots_in, UPoly};
-
-use exactcheck_exact::{Radical, Radicand, Rational};
+use exactcheck_exact::{Radical, Rational};
 use schemars::{json_schema, JsonSchema, Schema, SchemaGenerator};
 use serde::de::{Deserialize, Deserializer, Error as _};
 use serde_json::Value;
@@ -335,136 +328,6 @@ impl<T: JsonSchema, const N: usize> JsonSchema for Coords<T, N> {
             "maxItems": N
         })
     }
-}
-
-// ------------------------------------------------------------------ scalars and exact zeros
-
-/// Default width of the isolating intervals of irrational zeros (poles, cusps) and of the
-/// enclosure of an irrational smallest radius: `2^-50`, so `approx` is good to about `1e-15`.
-pub(crate) const DEFAULT_WIDTH_LOG2: u32 = 50;
-
-/// A scalar the section is computed in: exact ([`Rational`], [`Radical`]) or `f64`.
-pub(crate) trait SectionScalar: OrderedField + std::fmt::Debug {
-    /// Whether zero tests are exact (decides the depth cut-off and the exact-only fields).
-    const EXACT: bool;
-    /// The nearest f64 (`-0` as `0`).
-    fn approx(&self) -> f64;
-    /// The rational number as a scalar.
-    fn from_rational(q: &Rational) -> Self;
-    /// The rational components `p_k` of `p = sum_k sqrt(k) p_k` (power coefficients), or `None`
-    /// when the scalar has no exact decomposition (f64).
-    fn rational_components(p: &[Self]) -> Option<Vec<Vec<Rational>>>;
-    /// The nearest integer, where the scalar can find it exactly (rationals), for the
-    /// refinement's grid index (`roots::refine_isolating_with`).
-    fn round(&self) -> Option<Self>;
-}
-
-/// The nearest integer to a rational (halves round up).
-fn round_rational(x: &Rational) -> Rational {
-    let y = x.clone() + Rational::new(1, 2).expect("2 != 0");
-    Rational::from(num_integer::Integer::div_floor(&y.numer(), &y.denom()))
-}
-
-impl SectionScalar for Rational {
-    const EXACT: bool = true;
-    fn approx(&self) -> f64 {
-        self.to_f64() + 0.0
-    }
-    fn from_rational(q: &Rational) -> Self {
-        q.clone()
-    }
-    fn rational_components(p: &[Self]) -> Option<Vec<Vec<Rational>>> {
-        Some(vec![p.to_vec()])
-    }
-    fn round(&self) -> Option<Self> {
-        Some(round_rational(self))
-    }
-}
-
-impl SectionScalar for Radical {
-    const EXACT: bool = true;
-    fn approx(&self) -> f64 {
-        self.to_f64() + 0.0
-    }
-    fn from_rational(q: &Rational) -> Self {
-        Radical::from(q)
-    }
-    fn rational_components(p: &[Self]) -> Option<Vec<Vec<Rational>>> {
-        let mut parts: Vec<(Radicand, Vec<Rational>)> = Vec::new();
-        for (i, c) in p.iter().enumerate() {
-            for (radicand, q) in c.terms() {
-                let slot = match parts.iter().position(|(r, _)| r == radicand) {
-                    Some(k) => k,
-                    None => {
-                        parts.push((radicand.clone(), vec![Rational::ZERO; p.len()]));
-                        parts.len() - 1
-                    }
-                };
-                parts[slot].1[i] = q.clone();
-            }
-        }
-        Some(parts.into_iter().map(|(_, v)| v).collect())
-    }
-    fn round(&self) -> Option<Self> {
-        self.to_rational()
-            .map(|q| Radical::from(&round_rational(&q)))
-    }
-}
-
-impl SectionScalar for f64 {
-    const EXACT: bool = false;
-    fn approx(&self) -> f64 {
-        self + 0.0
-    }
-    fn from_rational(q: &Rational) -> Self {
-        q.to_f64()
-    }
-    fn rational_components(_: &[Self]) -> Option<Vec<Vec<Rational>>> {
-        None
-    }
-    fn round(&self) -> Option<Self> {
-        None
-    }
-}
-
-/// The rational zeros in `[0, 1]` of `p` (power coefficients), exactly: writing the coefficients
-/// in the basis `sqrt(k)` of the radical field, `p = sum_k sqrt(k) p_k(t)` with rational `p_k`, a
-/// rational `t0` is a zero of `p` iff it is a common zero of all `p_k`, i.e. a zero of the
-/// rational polynomial `G = gcd_k p_k`, whose rational zeros in `[0, 1]` the real-root isolator
-/// (`isolate_real_roots_in`) returns exactly. Empty for `f64` (no exact decomposition). Used by
-/// `ruled_plane` (exact poles) and `ph_offset` (exact cusps and critical points of the radius).
-pub(crate) fn rational_zeros<T: SectionScalar>(p: &[T]) -> Vec<T> {
-    let Some(parts) = T::rational_components(p) else {
-        return Vec::new();
-    };
-    let mut g = UPoly::zero();
-    for part in parts {
-        g = g.gcd(&UPoly::from_coeffs(part));
-    }
-    isolate_real_roots_in(&g, &Rational::ZERO, &Rational::ONE)
-        .into_iter()
-        .filter_map(|ri| ri.exact_value().map(T::from_rational))
-        .collect()
-}
-
-/// The distinct zeros in `[0, 1]` of `p` (not identically zero), increasing, rational ones
-/// exact ([`rational_zeros`]), irrational ones refined to width `<= width` by bisection.
-pub(crate) fn unit_zeros<T: SectionScalar>(p: &Bernstein<T>, width: &T) -> Vec<IsolatedRoot<T>> {
-    let found = roots::unit_roots(p).expect("unit_zeros: the caller passes a non-zero polynomial");
-    let rational = rational_zeros::<T>(&p.to_power());
-    let refiner = roots::Refiner::new(p);
-    found
-        .into_iter()
-        .map(|z| match &z {
-            IsolatedRoot::Between(lo, hi) => match rational.iter().find(|r| {
-                r.sub_ref(lo).sign() == Sign::Positive && hi.sub_ref(r).sign() == Sign::Positive
-            }) {
-                Some(r) => IsolatedRoot::Exact(r.clone()),
-                None => refiner.refine_with(&z, width, T::round),
-            },
-            IsolatedRoot::Exact(_) => z,
-        })
-        .collect()
 }
 
 #[cfg(test)]

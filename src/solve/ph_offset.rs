@@ -55,10 +55,9 @@
 //! polynomial, whose Bernstein products use binomial coefficients in 64-bit integers). In exact
 //! mode their sizes in bits together are held to the `ph-bits` limit before any work.
 
-use super::number::{
-    rational_zeros, unit_zeros, Coords, ExactNumber, FloatNumber, SectionScalar, DEFAULT_WIDTH_LOG2,
-};
-use super::{by_mode, parse, Kind, Mode};
+use super::number::{Coords, ExactNumber, FloatNumber};
+use super::scalar::{rational_zeros, unit_zeros, Scalar, DEFAULT_WIDTH_LOG2};
+use super::{parse, FloatKind, Kind};
 use crate::Error;
 use exactcheck_core::ph::{MinRadius, PhCurve, RadiusBound, Side};
 use exactcheck_core::roots::{self, IsolatedRoot};
@@ -163,7 +162,7 @@ struct Problem<T> {
     width: T,
 }
 
-fn problem<N, T: SectionScalar>(
+fn problem<N, T: Scalar>(
     input: &Input<N>,
     num: impl Fn(&N) -> T,
 ) -> Result<Problem<T>, Error> {
@@ -267,12 +266,12 @@ fn signed<T: Ring>(side: Side, m: &T) -> T {
 }
 
 /// The parameters where `sigma^2 - 2 r w` vanishes, rational ones exact, the others refined.
-fn cusp_zeros<T: SectionScalar>(curve: &PhCurve<T>, r: &T, width: &T) -> Vec<IsolatedRoot<T>> {
+fn cusp_zeros<T: Scalar>(curve: &PhCurve<T>, r: &T, width: &T) -> Vec<IsolatedRoot<T>> {
     unit_zeros(&curve.cusp_polynomial(r), width)
 }
 
 /// One side's smallest radius, upgraded to exact at a rational critical point (module doc).
-fn side_radius<T: SectionScalar>(
+fn side_radius<T: Scalar>(
     curve: &PhCurve<T>,
     side: Side,
     tolerance: &T,
@@ -325,7 +324,7 @@ fn side_radius<T: SectionScalar>(
 /// right); `rho <= hi` is the sign of `sigma^2 - 2 hi w` there, decided exactly
 /// ([`roots::sign_at_root`]). An exact zero is kept when [`PhCurve::is_min_radius`] proves
 /// its radius the minimum.
-fn minimisers<T: SectionScalar>(
+fn minimisers<T: Scalar>(
     curve: &PhCurve<T>,
     side: Side,
     hi: &T,
@@ -360,7 +359,7 @@ fn minimisers<T: SectionScalar>(
 }
 
 /// Whether the offset at `side`'s distance `m > 0` has a cusp: `m >= rho_min(side)`.
-fn reaches<T: SectionScalar>(curve: &PhCurve<T>, side: Side, m: &T) -> bool {
+fn reaches<T: Scalar>(curve: &PhCurve<T>, side: Side, m: &T) -> bool {
     !curve
         .offset_cusps(&signed(side, m))
         .expect("sigma has no zero in [0, 1]")
@@ -368,7 +367,7 @@ fn reaches<T: SectionScalar>(curve: &PhCurve<T>, side: Side, m: &T) -> bool {
 }
 
 /// The smaller of the two sides' radii, compared exactly (module doc).
-fn overall<T: SectionScalar>(
+fn overall<T: Scalar>(
     curve: &PhCurve<T>,
     left: Option<Radius<T>>,
     right: Option<Radius<T>>,
@@ -459,7 +458,7 @@ struct Computed<T> {
 
 /// The tolerance of the radius bisection: `width` in exact arithmetic; in f64 at least `1e-9`
 /// times the largest radius sampled where the curve bends (module doc, "Float mode").
-fn radius_tolerance<T: SectionScalar>(curve: &PhCurve<T>, width: &T) -> T {
+fn radius_tolerance<T: Scalar>(curve: &PhCurve<T>, width: &T) -> T {
     if T::EXACT {
         return width.clone();
     }
@@ -482,7 +481,7 @@ fn radius_tolerance<T: SectionScalar>(curve: &PhCurve<T>, width: &T) -> T {
     }
 }
 
-fn compute<T: SectionScalar>(p: Problem<T>) -> Computed<T> {
+fn compute<T: Scalar>(p: Problem<T>) -> Computed<T> {
     let Problem {
         curve,
         radii,
@@ -560,7 +559,7 @@ struct Parameter<V> {
     exact: Option<V>,
 }
 
-fn parameter<T: SectionScalar, V>(z: &IsolatedRoot<T>, v: &impl Fn(&T) -> V) -> Parameter<V> {
+fn parameter<T: Scalar, V>(z: &IsolatedRoot<T>, v: &impl Fn(&T) -> V) -> Parameter<V> {
     match z {
         IsolatedRoot::Exact(t) => Parameter {
             interval: [v(t), v(t)],
@@ -639,7 +638,7 @@ struct OffsetOut<V> {
 
 /// The answer, with numbers of type `V` (exact strings, or f64 with `--float`).
 #[derive(Debug, Serialize)]
-struct Answer<V> {
+pub(crate) struct Answer<V> {
     kind: &'static str,
     mode: &'static str,
     /// For an array of distances: `offsets` or `singular_base` (a single distance: the offset's
@@ -671,7 +670,7 @@ struct Answer<V> {
 const SINGULAR_NOTE: &str = "the parametric speed u^2 + v^2 vanishes at the parameters in `poles`: the base curve is singular there and every offset has a pole there; the curvature 2w/sigma^2 and the cusp criterion sigma^2 - 2rw = 0 are undefined at those parameters, so no radius of curvature and no cusps are given";
 const LINE_NOTE: &str = "w = u v' - u' v is identically zero: the curve is a straight line, its radius of curvature is infinite and its offsets have no cusps";
 
-fn radius_out<T: SectionScalar, V>(r: &Radius<T>, v: &impl Fn(&T) -> V) -> RadiusOut<V> {
+fn radius_out<T: Scalar, V>(r: &Radius<T>, v: &impl Fn(&T) -> V) -> RadiusOut<V> {
     let two = T::from_i64(2);
     let (exact, interval, approx) = match &r.value {
         RadiusBound::Exact(m) => (Some(v(m)), None, m.approx()),
@@ -696,10 +695,10 @@ fn three<T, V>(p: &Vec3<T>, v: &impl Fn(&T) -> V) -> [V; 3] {
     [v(&p.x), v(&p.y), v(&p.z)]
 }
 
-fn offset_out<T: SectionScalar, V>(o: &OffsetData<T>, v: &impl Fn(&T) -> V) -> OffsetOut<V> {
+fn offset_out<T: Scalar, V>(o: &OffsetData<T>, v: &impl Fn(&T) -> V) -> OffsetOut<V> {
     let weights = o.curve.weights();
     let points = o.curve.points();
-    let approx3 = |p: &Vec3<T>| three(p, &SectionScalar::approx);
+    let approx3 = |p: &Vec3<T>| three(p, &Scalar::approx);
     let cusps = o.cusps.as_ref().map(|cs| {
         cs.iter()
             .map(|(t, multiplicity)| {
@@ -734,13 +733,13 @@ fn offset_out<T: SectionScalar, V>(o: &OffsetData<T>, v: &impl Fn(&T) -> V) -> O
         cusps,
         self_intersections: None,
         approx: T::EXACT.then(|| OffsetApprox {
-            weights: weights.iter().map(SectionScalar::approx).collect(),
+            weights: weights.iter().map(Scalar::approx).collect(),
             points: points.iter().map(|p| p.as_ref().map(approx3)).collect(),
         }),
     }
 }
 
-fn render<T: SectionScalar, V>(
+fn render<T: Scalar, V>(
     c: &Computed<T>,
     mode: &'static str,
     v: impl Fn(&T) -> V,
@@ -805,14 +804,14 @@ fn render<T: SectionScalar, V>(
         base_approx: T::EXACT.then(|| {
             base.control_points()
                 .iter()
-                .map(|p| xy(p, &SectionScalar::approx))
+                .map(|p| xy(p, &Scalar::approx))
                 .collect()
         }),
         float: None,
     }
 }
 
-fn exact_answer<T: SectionScalar + std::fmt::Display>(
+fn exact_answer<T: Scalar>(
     input: &Input<ExactNumber>,
     lift: impl Fn(&Radical) -> T,
 ) -> Result<Answer<String>, Error> {
@@ -838,6 +837,16 @@ fn numbers(input: &Input<ExactNumber>) -> impl Iterator<Item = &ExactNumber> {
 /// The largest base degree whose offsets get `self_intersections` (the exact resultant behind
 /// it grows fast: a septic's offsets take seconds, see `exactcheck_exact::planar`).
 pub const SELF_INTERSECTION_MAX_DEGREE: usize = 5;
+
+/// The name of a crossing's certificate in the answer.
+fn certificate_name(c: exactcheck_exact::planar::Certificate) -> &'static str {
+    use exactcheck_exact::planar::Certificate;
+    match c {
+        Certificate::Exact => "Exact",
+        Certificate::RationalParameter => "RationalParameter",
+        Certificate::PoincareMiranda => "PoincareMiranda",
+    }
+}
 
 /// The offset's self-intersections for `solve`: decided exactly by
 /// [`exactcheck_exact::planar::self_intersections_xy`] (every crossing certified, or certified
@@ -871,15 +880,14 @@ fn self_intersections(curve: &PhCurve<Rational>, r: &Rational) -> Value {
                 "s": interval(&c.s_interval),
                 "t": interval(&c.t_interval),
                 "point_approx": c.point,
-                "certificate": format!("{:?}", c.certificate),
+                "certificate": certificate_name(c.certificate),
             })).collect::<Vec<_>>(),
         }),
         Err(e) => serde_json::json!({"decided": false, "note": e.to_string()}),
     }
 }
 
-fn exact(text: &str) -> Result<Answer<String>, Error> {
-    let input: Input<ExactNumber> = parse(text)?;
+fn exact(input: Input<ExactNumber>) -> Result<Answer<String>, Error> {
     // Checked before any work: the exact curve's coefficients grow from these.
     let bits = input
         .u
@@ -913,8 +921,7 @@ fn exact(text: &str) -> Result<Answer<String>, Error> {
     }
 }
 
-fn float_answer(text: &str) -> Result<Answer<f64>, Error> {
-    let input: Input<FloatNumber> = parse(text)?;
+fn float_answer(input: Input<FloatNumber>) -> Result<Answer<f64>, Error> {
     let p = problem(&input, |x| x.0)?;
     let overflow = || {
         Error::Input(
@@ -993,11 +1000,27 @@ pub struct PhOffset;
 impl Kind for PhOffset {
     const NAME: &'static str = "ph_offset";
     type Input = Input<ExactNumber>;
+    type Answer = Answer<String>;
 
-    fn answer(text: &str, mode: Mode) -> Result<Value, Error> {
-        by_mode(text, mode, exact, float_answer, |e, f| {
-            e.float = Some(Box::new(f))
-        })
+    fn compute(input: Self::Input) -> Result<Self::Answer, Error> {
+        exact(input)
+    }
+}
+
+impl FloatKind for PhOffset {
+    type FloatInput = Input<FloatNumber>;
+    type FloatAnswer = Answer<f64>;
+
+    fn compute_float(input: Self::FloatInput) -> Result<Self::FloatAnswer, Error> {
+        float_answer(input)
+    }
+
+    fn attach(
+        answer: &mut Self::Answer,
+        float: Result<Self::FloatAnswer, Error>,
+    ) -> Result<(), Error> {
+        answer.float = Some(Box::new(float?));
+        Ok(())
     }
 }
 
@@ -1011,7 +1034,7 @@ mod tests {
     }
 
     fn solve(text: &str) -> Value {
-        PhOffset::answer(text, Mode::Exact).expect("answered")
+        crate::solve::solve(text, crate::solve::Mode::Exact).expect("answered")
     }
 
     #[test]

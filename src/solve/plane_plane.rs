@@ -20,7 +20,7 @@
 //! A zero normal is an input error naming the field (`planes[1].normal: zero vector`).
 
 use super::number::{Coords, ExactNumber, FloatNumber};
-use super::{by_mode, finite, parse, to_json, Kind, Mode};
+use super::{finite, FloatKind, Kind};
 use crate::Error;
 use exactcheck_core::planes::{intersect, Plane, PlanePair};
 use exactcheck_core::{Field, OrderedField, Ring, Sign, Sqrt, Vec3};
@@ -29,7 +29,6 @@ use exactcheck_float::wabis::{interction_line_of_2_areas, length, scale, V3};
 use schemars::{json_schema, JsonSchema, Schema, SchemaGenerator};
 use serde::de::{Deserializer, Error as _};
 use serde::{Deserialize, Serialize};
-use serde_json::Value;
 use std::borrow::Cow;
 
 // ------------------------------------------------------------------ input
@@ -111,7 +110,7 @@ fn planes<N, T: Ring>(input: &Input<N>, num: impl Fn(&N) -> T) -> Result<[Plane<
 
 /// The exact answer.
 #[derive(Debug, Serialize)]
-struct ExactAnswer {
+pub(crate) struct ExactAnswer {
     kind: &'static str,
     mode: &'static str,
     /// `line`, `parallel` or `coincident`.
@@ -165,7 +164,7 @@ struct Approx {
 
 /// The answer of the published JavaScript.
 #[derive(Debug, Serialize)]
-struct FloatAnswer {
+pub(crate) struct FloatAnswer {
     kind: &'static str,
     mode: &'static str,
     /// What was run.
@@ -188,8 +187,7 @@ fn approx(v: &Vec3<Radical>) -> [f64; 3] {
     [v.x.to_f64() + 0.0, v.y.to_f64() + 0.0, v.z.to_f64() + 0.0]
 }
 
-fn exact(text: &str) -> Result<ExactAnswer, Error> {
-    let input: Input<ExactNumber> = parse(text)?;
+fn exact(input: Input<ExactNumber>) -> Result<ExactAnswer, Error> {
     let [p1, p2] = planes(&input, |x| x.0.clone())?;
     let none = |outcome| ExactAnswer {
         kind: "plane_plane",
@@ -287,8 +285,7 @@ fn unit_f64(n: &Vec3<f64>, i: usize) -> Result<V3, Error> {
     Ok(scale(&v, 1.0 / l))
 }
 
-fn float_answer(text: &str) -> Result<FloatAnswer, Error> {
-    let input: Input<FloatNumber> = parse(text)?;
+fn float_answer(input: Input<FloatNumber>) -> Result<FloatAnswer, Error> {
     let [p1, p2] = planes(&input, |x| x.0)?;
     let (n1, n2) = (unit_f64(&p1.normal, 0)?, unit_f64(&p2.normal, 1)?);
     let pt = |p: &Vec3<f64>| [p.x, p.y, p.z];
@@ -303,73 +300,87 @@ fn float_answer(text: &str) -> Result<FloatAnswer, Error> {
     })
 }
 
-/// `--both`: the exact answer (its errors are the answer's), with the float answer and whether
-/// its outcome agrees, or with the float computation's failure as a note. Near-parallel
-/// rounding makes the published function return a finite `line` for some exactly parallel or
-/// coincident planes, and NaN for others (`1 - r^2 = 0` with `n2 x n1` not rounded to zero).
-fn both(text: &str) -> Result<ExactAnswer, Error> {
-    let mut answer = exact(text)?;
-    let float = float_answer(text).and_then(|f| {
-        finite::check(&f, finite::Approx::Refused)
-            .map(|_| f)
-            .map_err(|e| Error::Input(e.to_string()))
-    });
-    match float {
-        Ok(f) => {
-            let agrees = matches!(
-                (answer.outcome, f.outcome),
-                ("line", "line") | ("parallel" | "coincident", "parallel")
-            );
-            if !agrees {
-                answer.float_note = Some(format!(
-                    "disagreement: the planes are exactly {}, the f64 computation says {}{}",
-                    if answer.outcome == "line" {
-                        "not parallel (they meet in a line)"
-                    } else {
-                        answer.outcome
-                    },
-                    f.outcome,
-                    if f.outcome == "line" {
-                        " (rounding left n2 x n1 non-zero)"
-                    } else {
-                        " (n2 x n1 rounded to zero)"
-                    }
-                ));
-            }
-            answer.float_agrees = Some(agrees);
-            answer.float = Some(FloatPart::Answer(f));
-        }
-        Err(Error::Input(e)) => {
-            answer.float_note = Some(format!("the f64 computation gave no answer: {e}"));
-            answer.float = Some(FloatPart::Failed {
-                mode: "float",
-                method: FLOAT_METHOD,
-                error: e,
-            });
-        }
-        Err(e) => return Err(e),
-    }
-    Ok(answer)
-}
-
 /// The kind.
 pub struct PlanePlaneKind;
 
 impl Kind for PlanePlaneKind {
     const NAME: &'static str = "plane_plane";
     type Input = Input<ExactNumber>;
+    type Answer = ExactAnswer;
 
-    fn answer(text: &str, mode: Mode) -> Result<Value, Error> {
-        match mode {
-            Mode::Exact | Mode::Float => by_mode(text, mode, exact, float_answer, |_, _| {}),
-            Mode::Both => to_json(&both(text)?, mode),
+    fn compute(input: Self::Input) -> Result<ExactAnswer, Error> {
+        exact(input)
+    }
+}
+
+impl FloatKind for PlanePlaneKind {
+    type FloatInput = Input<FloatNumber>;
+    type FloatAnswer = FloatAnswer;
+
+    fn compute_float(input: Self::FloatInput) -> Result<FloatAnswer, Error> {
+        float_answer(input)
+    }
+
+    /// `--both`: the float answer and whether its outcome agrees, or the float computation's
+    /// failure as a note (it does not take the exact answer with it). Near-parallel rounding
+    /// makes the published function return a finite `line` for some exactly parallel or
+    /// coincident planes, and NaN for others (`1 - r^2 = 0` with `n2 x n1` not rounded to
+    /// zero).
+    fn attach(
+        answer: &mut ExactAnswer,
+        float: Result<FloatAnswer, Error>,
+    ) -> Result<(), Error> {
+        let float = float.and_then(|f| {
+            finite::check(&f, finite::Approx::Refused)
+                .map(|_| f)
+                .map_err(|e| Error::Input(e.to_string()))
+        });
+        match float {
+            Ok(f) => {
+                let agrees = matches!(
+                    (answer.outcome, f.outcome),
+                    ("line", "line") | ("parallel" | "coincident", "parallel")
+                );
+                if !agrees {
+                    answer.float_note = Some(format!(
+                        "disagreement: the planes are exactly {}, the f64 computation says {}{}",
+                        if answer.outcome == "line" {
+                            "not parallel (they meet in a line)"
+                        } else {
+                            answer.outcome
+                        },
+                        f.outcome,
+                        if f.outcome == "line" {
+                            " (rounding left n2 x n1 non-zero)"
+                        } else {
+                            " (n2 x n1 rounded to zero)"
+                        }
+                    ));
+                }
+                answer.float_agrees = Some(agrees);
+                answer.float = Some(FloatPart::Answer(f));
+            }
+            Err(Error::Input(e)) => {
+                answer.float_note = Some(format!("the f64 computation gave no answer: {e}"));
+                answer.float = Some(FloatPart::Failed {
+                    mode: "float",
+                    method: FLOAT_METHOD,
+                    error: e,
+                });
+            }
+            Err(e) => return Err(e),
         }
+        Ok(())
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn exact(text: &str) -> Result<ExactAnswer, Error> {
+        super::exact(crate::solve::parse(text)?)
+    }
 
     #[test]
     fn radical_unit_direction_and_expression_fallback() {

@@ -69,19 +69,18 @@
 //! generic root isolation); no crate solves it exactly.
 
 use super::number::{Coords, ExactNumber, FloatNumber};
-use super::{by_mode, parse, Kind, Mode, Printable};
+use super::scalar::Scalar;
+use super::{FloatKind, Kind};
 use crate::Error;
 use exactcheck_core::roots::{
-    self, exact_quotient, gcd, multiplicity, refine, restrict, square_free, unit_roots,
-    vanishes_at_root, IsolatedRoot, ZeroPolynomial,
+    self, exact_quotient, gcd, multiplicity, refine, restrict, square_free, vanishes_at_root,
+    IsolatedRoot,
 };
 use exactcheck_core::ruled::RuledSurface;
 use exactcheck_core::{Bernstein, Field, OrderedField, Ring, Sign, Vec3};
-use exactcheck_exact::univariate::{isolate_real_roots_in, UPoly};
 use exactcheck_exact::{Radical, Rational};
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
-use serde_json::Value;
 use std::cmp::Ordering;
 
 /// The largest `m + n` answered (module doc, "Limits").
@@ -115,63 +114,6 @@ pub struct LineInput<N> {
     pub point: Coords<N, 3>,
     /// The direction `D` (not zero).
     pub direction: Coords<N, 3>,
-}
-
-/// A scalar the answer is computed in: exact (`Rational`, `Radical`) or `f64`, with its root
-/// isolation in `[0, 1]`.
-trait Scalar: OrderedField {
-    /// Whether zero tests and comparisons are exact.
-    const EXACT: bool = true;
-    fn text(&self) -> String;
-    fn approx(&self) -> f64;
-    /// The distinct roots of `p` in `[0, 1]`.
-    fn roots(p: &Bernstein<Self>) -> Result<Vec<IsolatedRoot<Self>>, ZeroPolynomial> {
-        unit_roots(p)
-    }
-}
-
-impl Scalar for Radical {
-    fn text(&self) -> String {
-        self.to_string()
-    }
-    fn approx(&self) -> f64 {
-        Printable::approx(self)
-    }
-}
-
-/// Over `Q` the real-root isolator of `exactcheck_exact::univariate` is used: it returns every
-/// rational root exactly (Bernstein subdivision finds exactly only the dyadic ones), so a line
-/// through `S(s, t)` with rational `t` gets its point exactly.
-impl Scalar for Rational {
-    fn text(&self) -> String {
-        self.to_string()
-    }
-    fn approx(&self) -> f64 {
-        Printable::approx(self)
-    }
-    fn roots(p: &Bernstein<Self>) -> Result<Vec<IsolatedRoot<Self>>, ZeroPolynomial> {
-        let u = UPoly::from_coeffs(p.to_power());
-        if u.is_zero() {
-            return Err(ZeroPolynomial);
-        }
-        Ok(isolate_real_roots_in(&u, &Rational::ZERO, &Rational::ONE)
-            .into_iter()
-            .map(|ri| match ri.exact_value() {
-                Some(t) => IsolatedRoot::Exact(t.clone()),
-                None => IsolatedRoot::Between(ri.lo, ri.hi),
-            })
-            .collect())
-    }
-}
-
-impl Scalar for f64 {
-    const EXACT: bool = false;
-    fn text(&self) -> String {
-        format!("{self:?}")
-    }
-    fn approx(&self) -> f64 {
-        *self + 0.0
-    }
 }
 
 /// What happens at one root of the line polynomial.
@@ -272,7 +214,7 @@ fn analyse<T: Scalar>(
             .checked_div(&dd)
             .expect("the direction was checked to be non-zero")
     };
-    let outcome = match T::roots(&f) {
+    let outcome = match T::unit_roots(&f) {
         Err(_) => {
             if w.iter().all(Bernstein::is_zero) {
                 parallel_to_every_ruling(direction, &shifted, &v, &u)
@@ -604,7 +546,7 @@ fn parallel_to_every_ruling<T: Scalar>(
     let zs = if zeros_of_u.degree() == 0 {
         Vec::new()
     } else {
-        T::roots(&zeros_of_u).expect("a gcd is not zero")
+        T::unit_roots(&zeros_of_u).expect("a gcd is not zero")
     };
     let mut on_line = Vec::new();
     let mut pieces = Vec::new();
@@ -640,7 +582,7 @@ fn covered<T: Scalar>(
     let zs = if zeros_of_w.degree() == 0 {
         Vec::new()
     } else {
-        T::roots(&zeros_of_w).expect("a gcd is not zero")
+        T::unit_roots(&zeros_of_w).expect("a gcd is not zero")
     };
     let mut key = 0;
     let mut next_key = || {
@@ -702,7 +644,7 @@ fn covered<T: Scalar>(
         let bp = c1.mul(&zeros_of_w);
         let mut marks: Vec<End<T>> = Vec::new();
         let mut params: Vec<IsolatedRoot<T>> = Vec::new();
-        let mut found = T::roots(&bp).expect("c1 and W's gcd are not zero");
+        let mut found = T::unit_roots(&bp).expect("c1 and W's gcd are not zero");
         if found.first().and_then(IsolatedRoot::exact) != Some(&T::zero()) {
             found.insert(0, IsolatedRoot::Exact(T::zero()));
         }
@@ -949,7 +891,7 @@ struct PointApprox {
 }
 
 #[derive(Debug, Serialize)]
-struct AnswerOut<S> {
+pub(crate) struct AnswerOut<S> {
     kind: &'static str,
     mode: &'static str,
     m: usize,
@@ -1163,8 +1105,7 @@ fn render<T: Scalar, S>(
     answer
 }
 
-fn exact_answer(text: &str) -> Result<AnswerOut<String>, Error> {
-    let input: Input<ExactNumber> = parse(text)?;
+fn exact_answer(input: Input<ExactNumber>) -> Result<AnswerOut<String>, Error> {
     let all_rational = input
         .base
         .iter()
@@ -1196,16 +1137,15 @@ fn exact_answer(text: &str) -> Result<AnswerOut<String>, Error> {
             x.0.to_rational().expect("is_rational was checked")
         })?;
         let a: Analysis<Rational> = analyse(&p.surface, &p.point, &p.direction);
-        Ok(render(&a, "exact", Scalar::text))
+        Ok(render(&a, "exact", ToString::to_string))
     } else {
         let p = build(&input, |x: &ExactNumber| x.0.clone())?;
         let a: Analysis<Radical> = analyse(&p.surface, &p.point, &p.direction);
-        Ok(render(&a, "exact", Scalar::text))
+        Ok(render(&a, "exact", ToString::to_string))
     }
 }
 
-fn float_answer(text: &str) -> Result<AnswerOut<f64>, Error> {
-    let input: Input<FloatNumber> = parse(text)?;
+fn float_answer(input: Input<FloatNumber>) -> Result<AnswerOut<f64>, Error> {
     let p = build(&input, |x: &FloatNumber| x.0)?;
     let a: Analysis<f64> = analyse(&p.surface, &p.point, &p.direction);
     Ok(render(&a, "float", |x: &f64| *x + 0.0))
@@ -1217,10 +1157,26 @@ pub struct RuledLine;
 impl Kind for RuledLine {
     const NAME: &'static str = "ruled_line";
     type Input = Input<ExactNumber>;
+    type Answer = AnswerOut<String>;
 
-    fn answer(text: &str, mode: Mode) -> Result<Value, Error> {
-        by_mode(text, mode, exact_answer, float_answer, |e, f| {
-            e.float = Some(Box::new(f))
-        })
+    fn compute(input: Self::Input) -> Result<Self::Answer, Error> {
+        exact_answer(input)
+    }
+}
+
+impl FloatKind for RuledLine {
+    type FloatInput = Input<FloatNumber>;
+    type FloatAnswer = AnswerOut<f64>;
+
+    fn compute_float(input: Self::FloatInput) -> Result<Self::FloatAnswer, Error> {
+        float_answer(input)
+    }
+
+    fn attach(
+        answer: &mut Self::Answer,
+        float: Result<Self::FloatAnswer, Error>,
+    ) -> Result<(), Error> {
+        answer.float = Some(Box::new(float?));
+        Ok(())
     }
 }

@@ -51,10 +51,9 @@
 //! `m + n <= 60` ([`MAX_DEGREE`]): the product rule uses binomial coefficients `C(m+n, k)` in
 //! 64-bit integers, which overflow beyond `m + n = 67`.
 
-use super::number::{
-    unit_zeros, Coords, ExactNumber, FloatNumber, SectionScalar, DEFAULT_WIDTH_LOG2,
-};
-use super::{by_mode, parse, Kind, Mode};
+use super::number::{Coords, ExactNumber, FloatNumber};
+use super::scalar::{unit_zeros, Scalar, DEFAULT_WIDTH_LOG2};
+use super::{FloatKind, Kind};
 use crate::Error;
 use exactcheck_core::roots::{self, IsolatedRoot};
 use exactcheck_core::ruled::{Plane, PlaneSection, RuledSurface};
@@ -62,7 +61,6 @@ use exactcheck_core::{Bernstein, OrderedField, RationalBezierCurve, Sign, Vec3};
 use exactcheck_exact::Radical;
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
-use serde_json::Value;
 
 /// The largest `m + n` (degree of the section) accepted.
 pub const MAX_DEGREE: usize = 60;
@@ -146,7 +144,7 @@ fn problem<N, T: OrderedField>(
 
 /// The multiplicity of the zero `z` of `p` (isolated for `p`) as a zero of `f`, capped at its
 /// multiplicity in `p`: its multiplicity in `gcd(p, f)` (module doc). Exact scalars only.
-fn common_multiplicity<T: SectionScalar>(
+fn common_multiplicity<T: Scalar>(
     p: &Bernstein<T>,
     f: &Bernstein<T>,
     z: &IsolatedRoot<T>,
@@ -181,7 +179,7 @@ struct Section<T> {
     base: Option<(bool, Vec<IsolatedRoot<T>>)>,
 }
 
-fn compute<T: SectionScalar>(surface: &RuledSurface<T>, plane: &Plane<T>, width: &T) -> Section<T> {
+fn compute<T: Scalar>(surface: &RuledSurface<T>, plane: &Plane<T>, width: &T) -> Section<T> {
     let (m, n) = surface.degrees();
     let weight = surface.normal_component(plane);
     let offset = surface.offset(plane);
@@ -274,7 +272,7 @@ struct Approx {
 
 /// The answer, with numbers of type `V` (exact strings, or f64 with `--float`).
 #[derive(Debug, Serialize)]
-struct Answer<V> {
+pub(crate) struct Answer<V> {
     kind: &'static str,
     mode: &'static str,
     outcome: &'static str,
@@ -299,7 +297,7 @@ struct Answer<V> {
     float: Option<Box<Answer<f64>>>,
 }
 
-fn parameter<T: SectionScalar, V>(z: &IsolatedRoot<T>, v: &impl Fn(&T) -> V) -> Parameter<V> {
+fn parameter<T: Scalar, V>(z: &IsolatedRoot<T>, v: &impl Fn(&T) -> V) -> Parameter<V> {
     match z {
         IsolatedRoot::Exact(t) => Parameter {
             interval: [v(t), v(t)],
@@ -318,7 +316,7 @@ fn three<T, V>(p: &Vec3<T>, v: &impl Fn(&T) -> V) -> [V; 3] {
     [v(&p.x), v(&p.y), v(&p.z)]
 }
 
-fn render<T: SectionScalar, V>(
+fn render<T: Scalar, V>(
     s: &Section<T>,
     mode: &'static str,
     v: impl Fn(&T) -> V,
@@ -332,14 +330,14 @@ fn render<T: SectionScalar, V>(
         .map(|h| Vec3::new(h.0[1].clone(), h.0[2].clone(), h.0[3].clone()))
         .collect();
     let approx = T::EXACT.then(|| Approx {
-        weights: weights.iter().map(SectionScalar::approx).collect(),
+        weights: weights.iter().map(Scalar::approx).collect(),
         points: points
             .iter()
-            .map(|p| p.as_ref().map(|p| three(p, &SectionScalar::approx)))
+            .map(|p| p.as_ref().map(|p| three(p, &Scalar::approx)))
             .collect(),
         weighted_points: weighted
             .iter()
-            .map(|p| three(p, &SectionScalar::approx))
+            .map(|p| three(p, &Scalar::approx))
             .collect(),
     });
     Answer {
@@ -387,7 +385,7 @@ fn render<T: SectionScalar, V>(
     }
 }
 
-fn exact_answer<T: SectionScalar + std::fmt::Display>(
+fn exact_answer<T: Scalar>(
     input: &Input<ExactNumber>,
     lift: impl Fn(&Radical) -> T,
 ) -> Result<Answer<String>, Error> {
@@ -396,8 +394,7 @@ fn exact_answer<T: SectionScalar + std::fmt::Display>(
     Ok(render(&s, "exact", ToString::to_string))
 }
 
-fn exact(text: &str) -> Result<Answer<String>, Error> {
-    let input: Input<ExactNumber> = parse(text)?;
+fn exact(input: Input<ExactNumber>) -> Result<Answer<String>, Error> {
     let all = input
         .base
         .iter()
@@ -416,8 +413,7 @@ fn exact(text: &str) -> Result<Answer<String>, Error> {
     }
 }
 
-fn float_answer(text: &str) -> Result<Answer<f64>, Error> {
-    let input: Input<FloatNumber> = parse(text)?;
+fn float_answer(input: Input<FloatNumber>) -> Result<Answer<f64>, Error> {
     let (surface, plane, width) = problem(&input, |x| x.0)?;
     let s = compute(&surface, &plane, &width);
     let answer = render(&s, "float", |x: &f64| *x + 0.0);
@@ -441,11 +437,27 @@ pub struct RuledPlane;
 impl Kind for RuledPlane {
     const NAME: &'static str = "ruled_plane";
     type Input = Input<ExactNumber>;
+    type Answer = Answer<String>;
 
-    fn answer(text: &str, mode: Mode) -> Result<Value, Error> {
-        by_mode(text, mode, exact, float_answer, |e, f| {
-            e.float = Some(Box::new(f))
-        })
+    fn compute(input: Self::Input) -> Result<Self::Answer, Error> {
+        exact(input)
+    }
+}
+
+impl FloatKind for RuledPlane {
+    type FloatInput = Input<FloatNumber>;
+    type FloatAnswer = Answer<f64>;
+
+    fn compute_float(input: Self::FloatInput) -> Result<Self::FloatAnswer, Error> {
+        float_answer(input)
+    }
+
+    fn attach(
+        answer: &mut Self::Answer,
+        float: Result<Self::FloatAnswer, Error>,
+    ) -> Result<(), Error> {
+        answer.float = Some(Box::new(float?));
+        Ok(())
     }
 }
 

@@ -5,14 +5,14 @@
 //! radical field. The answer checks exactly that the curve passes through every point.
 
 use super::number::{Coords, ExactNumber};
-use super::{parse, to_json, Kind, Mode, Printable};
+use super::scalar::Scalar;
+use super::Kind;
 use crate::Error;
 use exactcheck_core::sphere_interpolation::interpolate;
 use exactcheck_core::{Hom4, Vec3};
 use exactcheck_exact::{Radical, Rational};
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
-use serde_json::Value;
 
 /// The problem.
 #[derive(Debug, Deserialize, JsonSchema)]
@@ -61,14 +61,9 @@ pub struct SphereInterpolation;
 impl Kind for SphereInterpolation {
     const NAME: &'static str = "sphere_interpolation";
     type Input = Input;
+    type Answer = Answer;
 
-    fn answer(text: &str, mode: Mode) -> Result<Value, Error> {
-        if mode != Mode::Exact {
-            return Err(Error::Input(
-                "sphere_interpolation is an exact linear problem: --float and --both are not available for it".into(),
-            ));
-        }
-        let input: Input = parse(text)?;
+    fn compute(input: Input) -> Result<Answer, Error> {
         exactcheck_core::limits::POINTS.check_usize(input.points.len())?;
         let points: Vec<Vec3<Radical>> = input
             .points
@@ -81,22 +76,21 @@ impl Kind for SphereInterpolation {
             .iter()
             .all(|p| p.x.is_rational() && p.y.is_rational() && p.z.is_rational())
             && params.iter().all(Radical::is_rational);
-        let answer = if rational {
+        if rational {
             let r = |x: &Radical| {
                 x.to_rational()
                     .expect("is_rational was checked for every number")
             };
             let points: Vec<Vec3<Rational>> = points.iter().map(|p| p.map(r)).collect();
             let params: Vec<Rational> = params.iter().map(r).collect();
-            solve(&points, &params)?
+            solve(&points, &params)
         } else {
-            solve(&points, &params)?
-        };
-        to_json(&answer, mode)
+            solve(&points, &params)
+        }
     }
 }
 
-fn solve<T: Printable>(points: &[Vec3<T>], params: &[T]) -> Result<Answer, Error> {
+fn solve<T: Scalar>(points: &[Vec3<T>], params: &[T]) -> Result<Answer, Error> {
     let hom: Vec<Hom4<T>> = points.iter().map(Hom4::from_point).collect();
     let r = interpolate(&hom, params).map_err(|e| Error::Input(e.to_string()))?;
     let weights = r.curve.weights();
@@ -122,7 +116,7 @@ fn solve<T: Printable>(points: &[Vec3<T>], params: &[T]) -> Result<Answer, Error
         sigma_degree: r.sigma_degree,
         passes_through_all_points: passes,
         approx: Approx {
-            weights: weights.iter().map(Printable::approx).collect(),
+            weights: weights.iter().map(Scalar::approx).collect(),
             points: pts
                 .iter()
                 .map(|p| {
