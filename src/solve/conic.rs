@@ -715,6 +715,7 @@ mod tests {
 
     #[test]
     fn inv_sqrt2_is_the_one_of_each_scalar() {
+        use exactcheck_core::Field;
         assert_eq!(
             inv_sqrt2::<Radical>(),
             Radical::sqrt_of(2).inv().expect("sqrt 2 is not zero")

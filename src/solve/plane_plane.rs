@@ -326,10 +326,7 @@ impl FloatKind for PlanePlaneKind {
     /// makes the published function return a finite `line` for some exactly parallel or
     /// coincident planes, and NaN for others (`1 - r^2 = 0` with `n2 x n1` not rounded to
     /// zero).
-    fn attach(
-        answer: &mut ExactAnswer,
-        float: Result<FloatAnswer, Error>,
-    ) -> Result<(), Error> {
+    fn attach(answer: &mut ExactAnswer, float: Result<FloatAnswer, Error>) -> Result<(), Error> {
         let float = float.and_then(|f| {
             finite::check(&f, finite::Approx::Refused)
                 .map(|_| f)

@@ -316,11 +316,7 @@ fn three<T, V>(p: &Vec3<T>, v: &impl Fn(&T) -> V) -> [V; 3] {
     [v(&p.x), v(&p.y), v(&p.z)]
 }
 
-fn render<T: Scalar, V>(
-    s: &Section<T>,
-    mode: &'static str,
-    v: impl Fn(&T) -> V,
-) -> Answer<V> {
+fn render<T: Scalar, V>(s: &Section<T>, mode: &'static str, v: impl Fn(&T) -> V) -> Answer<V> {
     let weights = s.curve.weights();
     let points = s.curve.points();
     let weighted: Vec<Vec3<T>> = s
@@ -335,10 +331,7 @@ fn render<T: Scalar, V>(
             .iter()
             .map(|p| p.as_ref().map(|p| three(p, &Scalar::approx)))
             .collect(),
-        weighted_points: weighted
-            .iter()
-            .map(|p| three(p, &Scalar::approx))
-            .collect(),
+        weighted_points: weighted.iter().map(|p| three(p, &Scalar::approx)).collect(),
     });
     Answer {
         kind: "ruled_plane",

@@ -187,7 +187,10 @@ mod tests {
         let over_radicals = Radical::unit_roots(&lift).expect("not zero");
         assert_eq!(over_radicals.len(), 2);
         assert!(matches!(over_radicals[0], IsolatedRoot::Between(..)));
-        assert_eq!(over_radicals[1], IsolatedRoot::Exact(Radical::from(q("1/2"))));
+        assert_eq!(
+            over_radicals[1],
+            IsolatedRoot::Exact(Radical::from(q("1/2")))
+        );
         let zero = Bernstein::new(vec![Rational::ZERO; 3]);
         assert_eq!(Rational::unit_roots(&zero), Err(ZeroPolynomial));
     }
