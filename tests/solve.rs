@@ -409,3 +409,63 @@ fn number_strings_that_are_not_constant_scalars_are_refused_by_field() {
         &["planes[1].normal[0]", "det"],
     );
 }
+
+/// The registry of kinds (`exactcheck::solve::kinds()`) is what the coverage tests read: every
+/// registered kind has its schema file, a golden problem with at least one golden answer, and a
+/// broken problem in the malformed corpus; every golden problem is of a registered kind.
+#[test]
+fn every_registered_kind_has_a_schema_a_golden_answer_and_a_malformed_case() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let names: Vec<&str> = exactcheck::solve::kinds().iter().map(|k| k.name).collect();
+    let kind_of = |path: &Path| -> Option<String> {
+        let text = std::fs::read_to_string(path).ok()?;
+        let v: serde_json::Value = serde_json::from_str(text.trim_start_matches('\u{feff}')).ok()?;
+        v.get("kind")?.as_str().map(String::from)
+    };
+    // Golden problems (NAME.json) and the modes answered (NAME.MODE.out).
+    let files: Vec<String> = std::fs::read_dir(golden_dir())
+        .expect("golden dir")
+        .map(|e| e.expect("entry").file_name().to_string_lossy().into_owned())
+        .collect();
+    let mut golden_kinds = Vec::new();
+    for f in files.iter().filter(|f| f.ends_with(".json")) {
+        let stem = f.trim_end_matches(".json");
+        let kind = kind_of(&golden_dir().join(f)).unwrap_or_else(|| panic!("{f}: no kind"));
+        assert!(names.contains(&kind.as_str()), "{f}: unregistered kind {kind:?}");
+        let answered = files
+            .iter()
+            .any(|o| o.starts_with(&format!("{stem}.")) && o.ends_with(".out"));
+        assert!(answered, "{f}: no golden answer {stem}.MODE.out");
+        golden_kinds.push(kind);
+    }
+    let malformed: Vec<String> = std::fs::read_dir(root.join("tests/malformed"))
+        .expect("malformed dir")
+        .map(|e| e.expect("entry").path())
+        .filter(|p| {
+            let name = p.file_name().unwrap().to_string_lossy().into_owned();
+            name.ends_with(".json")
+                && !name.ends_with(".plot.json")
+                && !name.ends_with(".shard.json")
+                && !name.ends_with(".claims.json")
+        })
+        .filter_map(|p| std::fs::read(p).ok())
+        .map(|b| String::from_utf8_lossy(&b).into_owned())
+        .collect();
+    for name in &names {
+        assert!(
+            root.join(format!("docs/schema/{name}.json")).is_file(),
+            "{name}: no docs/schema/{name}.json"
+        );
+        assert!(
+            golden_kinds.iter().any(|k| k == name),
+            "{name}: no golden problem in tests/solve_golden"
+        );
+        assert!(
+            malformed
+                .iter()
+                .any(|t| t.contains(&format!("\"kind\":\"{name}\""))
+                    || t.contains(&format!("\"kind\": \"{name}\""))),
+            "{name}: no solve case in tests/malformed"
+        );
+    }
+}
