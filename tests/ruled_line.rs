@@ -274,10 +274,10 @@ fn golden_answer_is_unchanged() {
     let got = answer(&problem);
     if common::golden::blessing() {
         let text = serde_json::to_string_pretty(&got).unwrap() + "\n";
-        std::fs::write(dir.join("ruled_line_two_points.exact.expected"), text).unwrap();
+        std::fs::write(dir.join("ruled_line_two_points.exact.out"), text).unwrap();
     }
     let want: Value = serde_json::from_str(
-        &std::fs::read_to_string(dir.join("ruled_line_two_points.exact.expected")).unwrap(),
+        &std::fs::read_to_string(dir.join("ruled_line_two_points.exact.out")).unwrap(),
     )
     .unwrap();
     assert_eq!(got, want);
