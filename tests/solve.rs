@@ -419,7 +419,8 @@ fn every_registered_kind_has_a_schema_a_golden_answer_and_a_malformed_case() {
     let names: Vec<&str> = exactcheck::solve::kinds().iter().map(|k| k.name).collect();
     let kind_of = |path: &Path| -> Option<String> {
         let text = std::fs::read_to_string(path).ok()?;
-        let v: serde_json::Value = serde_json::from_str(text.trim_start_matches('\u{feff}')).ok()?;
+        let v: serde_json::Value =
+            serde_json::from_str(text.trim_start_matches('\u{feff}')).ok()?;
         v.get("kind")?.as_str().map(String::from)
     };
     // Golden problems (NAME.json) and the modes answered (NAME.MODE.out).
@@ -431,7 +432,10 @@ fn every_registered_kind_has_a_schema_a_golden_answer_and_a_malformed_case() {
     for f in files.iter().filter(|f| f.ends_with(".json")) {
         let stem = f.trim_end_matches(".json");
         let kind = kind_of(&golden_dir().join(f)).unwrap_or_else(|| panic!("{f}: no kind"));
-        assert!(names.contains(&kind.as_str()), "{f}: unregistered kind {kind:?}");
+        assert!(
+            names.contains(&kind.as_str()),
+            "{f}: unregistered kind {kind:?}"
+        );
         let answered = files
             .iter()
             .any(|o| o.starts_with(&format!("{stem}.")) && o.ends_with(".out"));
