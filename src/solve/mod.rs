@@ -11,11 +11,11 @@
 //!
 //! One driver answers every kind ([`solve`]): the problem's envelope is read once
 //! ([`input::Problem`]), the kind is looked up in the registry ([`kinds`]), the typed input is
-//! read and computed by the kind, and the answer serialized by [`to_json`]. The kinds compute
-//! generically in the scalars of [`scalar`].
+//! read and computed by the kind, and the answer serialized by `to_json`. The kinds compute
+//! generically in the scalars of `scalar`.
 //!
 //! Adding a kind is a module with an input type, a compute and an answer type (an
-//! implementation of [`Kind`], and of [`FloatKind`] for `--float`), plus its line in
+//! implementation of `Kind`, and of `FloatKind` for `--float`), plus its line in
 //! [`kinds`]; the schema, golden and malformed-corpus tests then require its schema file, a
 //! golden answer and a malformed case.
 

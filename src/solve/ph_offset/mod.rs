@@ -16,7 +16,7 @@
 //! The signed curvature is `2 w / sigma^2` with `w = u v' - u' v`; the offset at distance `r`
 //! has a cusp exactly where `sigma^2 - 2 r w = 0` (`r` equals the signed radius of curvature).
 //! Its zeros in `[0, 1]` are isolated exactly (Bernstein–Descartes subdivision), rational ones
-//! made exact ([`rational_zeros`]), the others refined to `precision`.
+//! made exact (`rational_zeros`), the others refined to `precision`.
 //!
 //! # The smallest radius of curvature
 //! Each side (left: `w > 0`, distances `r > 0`; right: `w < 0`, `r < 0`) is asked of
@@ -24,7 +24,7 @@
 //! or an exactly isolated critical point, and otherwise a certified enclosure `(lo, hi]`. Here
 //! the enclosure is upgraded when the minimum sits at a *rational* critical point that the
 //! subdivision only enclosed: the rational zeros of the critical polynomial
-//! `2 sigma' w - sigma w'` are found exactly ([`rational_zeros`], also for radical coefficients,
+//! `2 sigma' w - sigma w'` are found exactly (`rational_zeros`, also for radical coefficients,
 //! via the rational components), and the radius `m` there is accepted when `lo < m <= hi` and
 //! [`PhCurve::is_min_radius`] proves it (`sigma^2 - 2 m w >= 0` on `[0, 1]` with a zero).
 //! The two sides are then compared exactly: an exact value against an enclosure containing it
@@ -33,7 +33,7 @@
 //! `left_or_right`. A curve with `w = 0` identically (a straight line) has no finite radius:
 //! `min_radius_of_curvature` is `null`. Where it is attained (`at`): for an exact minimum `m`
 //! the zeros of `sigma^2 - 2 m w`; for an enclosure the minimisers themselves, isolated as zeros
-//! of the critical polynomial ([`minimisers`]).
+//! of the critical polynomial (`minimisers`).
 //!
 //! # Degenerate input
 //! `u = v = 0` and unequal lengths are refused (one line naming the field). Where `sigma`
