@@ -490,31 +490,4 @@ mod tests {
         assert_eq!(common_multiplicity(&b, &b.derivative(), &z[0]), 1);
         assert_eq!(common_multiplicity(&b, &b.derivative(), &z[1]), 0);
     }
-
-    #[test]
-    fn zeros_at_the_ends_and_at_bisection_points() {
-        // t (t - 1/2)(t - 1)(t - 3/4)(t - 2)
-        let p = UPoly::from_roots(&[q("0"), q("1/2"), q("1"), q("3/4"), q("2")]);
-        let z = unit_zeros(&p.to_bernstein(), &q("1/1024"));
-        let want: Vec<IsolatedRoot<Rational>> = ["0", "1/2", "3/4", "1"]
-            .iter()
-            .map(|s| IsolatedRoot::Exact(q(s)))
-            .collect();
-        assert_eq!(z, want);
-    }
-
-    #[test]
-    fn radical_coefficients_with_a_rational_zero() {
-        // sqrt(2) (t - 2/5) (t + 1): the zero 2/5 is exact.
-        let s2 = Radical::sqrt_of(2);
-        let p: Vec<Radical> = [q("-2/5"), q("3/5"), q("1")]
-            .iter()
-            .map(|c| Radical::from(c).mul_ref(&s2))
-            .collect();
-        let z = unit_zeros(
-            &Bernstein::from_power(&p).expect("three coefficients"),
-            &Radical::from(q("1/1000")),
-        );
-        assert_eq!(z, vec![IsolatedRoot::Exact(Radical::from(q("2/5")))]);
-    }
 }
