@@ -21,8 +21,7 @@ fn json_of(o: &Output) -> Value {
 
 /// A fresh directory of this test process.
 fn scratch(name: &str) -> std::path::PathBuf {
-    let dir =
-        std::env::temp_dir().join(format!("exactcheck-inputs-{}-{name}", std::process::id()));
+    let dir = std::env::temp_dir().join(format!("exactcheck-inputs-{}-{name}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).expect("a scratch directory");
     dir
@@ -74,7 +73,10 @@ fn orient2d_near_a_line_has_sign_errors() {
     assert_eq!(w[0]["inputs_exact"].as_array().unwrap().len(), 6);
     // The report says how the samples were drawn.
     let gen = e["generator"].as_str().unwrap();
-    assert!(gen.starts_with("near (bx-ax)*(cy-ay) = (by-ay)*(cx-ax): points of"), "{gen}");
+    assert!(
+        gen.starts_with("near (bx-ax)*(cy-ay) = (by-ay)*(cx-ax): points of"),
+        "{gen}"
+    );
     assert!(e["max_ulps"].as_f64().unwrap() > 1e6, "{e}");
 }
 
@@ -102,9 +104,26 @@ fn orient2d_on_well_separated_points_has_none() {
 #[test]
 fn uniform_inputs_rarely_reach_the_line_and_near_ones_do() {
     let uniform = orient(&["--domain", BOX]);
-    let near = orient(&["--domain", BOX, "--near", "(bx-ax)*(cy-ay) = (by-ay)*(cx-ax)"]);
-    let rate = |e: &Value| e["predicate"]["wrong_sign"].as_u64().unwrap();
-    assert!(rate(&near) > 10 * rate(&uniform).max(1), "{uniform} {near}");
+    let near = orient(&[
+        "--domain",
+        BOX,
+        "--near",
+        "(bx-ax)*(cy-ay) = (by-ay)*(cx-ax)",
+    ]);
+    let errors = |e: &Value| {
+        let p = &e["predicate"];
+        [
+            "wrong_sign",
+            "float_zero_exact_nonzero",
+            "float_nonzero_exact_zero",
+        ]
+        .iter()
+        .map(|k| p[k].as_u64().unwrap())
+        .sum::<u64>()
+    };
+    // 2,000 uniform samples: no sign error; 2,000 near the line: dozens.
+    assert_eq!(errors(&uniform), 0, "{uniform}");
+    assert!(errors(&near) >= 20, "{near}");
 }
 
 #[test]
@@ -184,7 +203,10 @@ fn several_outputs_report_each_and_the_worst() {
     let two = run(&["sqrt(x + 1) - sqrt(x)", "x*y"]);
     let per = two["max_ulps_per_output"].as_array().unwrap();
     assert_eq!(per.len(), 2, "{two}");
-    assert!(per[0].as_f64().unwrap() > 1e6 && per[1].as_f64().unwrap() <= 0.5, "{two}");
+    assert!(
+        per[0].as_f64().unwrap() > 1e6 && per[1].as_f64().unwrap() <= 0.5,
+        "{two}"
+    );
     assert_eq!(two["max_ulps"], per[0]);
     assert_eq!(two["name"], "sqrt(x + 1) - sqrt(x); x*y");
     // The same as one vector formula.

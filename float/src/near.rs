@@ -249,16 +249,20 @@ mod tests {
     fn a_set_without_a_crossing_is_reported() {
         let gen = UniformBox::cube(2, -1.0, 1.0).unwrap();
         // x^2 + y^2 + 1 > 0 everywhere: no point, and the message says why.
-        let near = NearSet::new(gen, "x^2 + y^2 + 1 = 0", Box::new(|_: &[f64]| {
-            Some(Ordering::Greater)
-        }));
+        let near = NearSet::new(
+            gen,
+            "x^2 + y^2 + 1 = 0",
+            Box::new(|_: &[f64]| Some(Ordering::Greater)),
+        );
         let e = near.place(&mut Rng::new(1)).unwrap_err();
         assert!(e.starts_with("no input near x^2 + y^2 + 1 = 0 could be placed in 64 tries"));
         assert!(crate::sample_inputs(&near, 1, 0).iter().all(|v| v.is_nan()));
         // Undefined everywhere: the same.
-        let near = NearSet::new(UniformBox::cube(1, 0.0, 1.0).unwrap(), "1/0 = 0", Box::new(
-            |_: &[f64]| None,
-        ));
+        let near = NearSet::new(
+            UniformBox::cube(1, 0.0, 1.0).unwrap(),
+            "1/0 = 0",
+            Box::new(|_: &[f64]| None),
+        );
         assert!(near.place(&mut Rng::new(1)).is_err());
     }
 }

@@ -58,7 +58,10 @@ fn exact_sign(g: &Program, x: &[f64]) -> Option<Ordering> {
         .collect::<Option<_>>()?;
     let r = g.eval_exact(&q).ok()?;
     // An inexact reference has the true value's sign (the contract of `program::real`).
-    Some(r[0].value.cmp(&num_rational::BigRational::from_integer(0.into())))
+    Some(
+        r[0].value
+            .cmp(&num_rational::BigRational::from_integer(0.into())),
+    )
 }
 
 /// The generator of `--near TEXT` around points of `base`, after checking that the set can be
@@ -110,7 +113,9 @@ mod tests {
             (" = 1", "the left side of '= 1' is empty"),
             ("x = z", "right side: unknown variable 'z'"),
         ] {
-            let e = difference(text, &names(&["x", "y"])).unwrap_err().to_string();
+            let e = difference(text, &names(&["x", "y"]))
+                .unwrap_err()
+                .to_string();
             assert!(e.starts_with("--near: ") && e.contains(msg), "{text}: {e}");
         }
     }
@@ -122,7 +127,10 @@ mod tests {
             .err()
             .unwrap()
             .to_string();
-        assert!(e.starts_with("--near: no input near x^2 + y^2 = -1 could be placed"), "{e}");
+        assert!(
+            e.starts_with("--near: no input near x^2 + y^2 = -1 could be placed"),
+            "{e}"
+        );
         let e = generator("1/(x - x) = 0", &names(&["x", "y"]), &base, 1)
             .err()
             .unwrap()

@@ -191,7 +191,9 @@ impl Predicate {
             rate(self.exact_zero)
         ));
         if !self.worst.is_empty() {
-            out.push_str("  worst examples (inputs exactly: doubles, then the rationals they are):\n");
+            out.push_str(
+                "  worst examples (inputs exactly: doubles, then the rationals they are):\n",
+            );
         }
         for e in &self.worst {
             let what = match e.verdict {

@@ -350,11 +350,7 @@ fn regressions(s: &mut String, summaries: &[Summary], note: Option<&str>) {
             .iter()
             .any(|r| r.command.starts_with("exactcheck regress "))
         {
-            let _ = writeln!(
-                s,
-                "<p>{}</p>",
-                escape(super::regress::KERNEL_NOT_EXPLAINED)
-            );
+            let _ = writeln!(s, "<p>{}</p>", escape(super::regress::KERNEL_NOT_EXPLAINED));
         }
     }
     for r in summaries {

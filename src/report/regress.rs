@@ -302,11 +302,7 @@ pub fn saved_summary(entry: &crate::regress::sweep::Entry, file: &str) -> Summar
         .map(|w| {
             let case = w.shrunk.as_ref().unwrap_or(&w.original);
             let (bits, local, conditioning) = match &w.explanation {
-                Some(e) => (
-                    format!("{:.1}", e.bits),
-                    e.local(),
-                    e.verdict(),
-                ),
+                Some(e) => (format!("{:.1}", e.bits), e.local(), e.verdict()),
                 None if built_in => (
                     format!("{:.1}", w.original.bits),
                     "not available: a built-in kernel is compiled code, not a float program".into(),

@@ -27,8 +27,9 @@
 //!
 //! The formula is the one expression language of `prove` and the claims files: it is first
 //! resolved by the function library ([`crate::expr::library`]: vectors, matrices, `det`, `dot`,
-//! `cross`, `norm2`, `bezier`, `bernstein`, `subs`, `at`, ...), which must give a scalar (a
-//! vector or matrix is [`CompileError::NotScalar`]), and then lowered ([`crate::expr::lower`]):
+//! `cross`, `norm2`, `bezier`, `bernstein`, `subs`, `at`, ...), which must give a scalar or a
+//! vector (one output per coordinate; a matrix is [`CompileError::NotScalar`]), and then
+//! lowered ([`crate::expr::lower`]):
 //! `binomial` and `factorial` become their integer values, `sum` the unrolled sum of its terms,
 //! `diff` and `integrate` their exact result expanded as a rational function. Both sides of the
 //! regression evaluate that one lowered tree, so what is compared for a `diff` is the float
@@ -186,14 +187,14 @@ fn reserved(name: &str) -> Option<&'static str> {
 
 impl Program {
     /// Compiles a parsed formula (see the module documentation of `program::compile`: resolved
-    /// by the library, lowered, compiled): inputs
-    /// `vars` in that order when given, else the variables in order of first appearance; one
-    /// output; no slots, no precondition; the name is the printed expression (the caller may
+    /// by the library, lowered, compiled): inputs `vars` in that order when given, else the
+    /// variables in order of first appearance; one output, or one per coordinate of a vector
+    /// value; no slots, no precondition; the name is the printed expression (the caller may
     /// overwrite it).
     ///
     /// # Errors
     /// An unknown, duplicate or malformed variable, a constant used as a variable, a library
-    /// error or a vector value, an error of the lowering, an exponent that is not an integer
+    /// error or a matrix value, an error of the lowering, an exponent that is not an integer
     /// constant or exceeds the `formula-exponent` limit, or an error evaluating a constant
     /// exponent.
     pub fn from_expr(expr: &Expr, vars: Option<&[String]>) -> Result<Program, CompileError> {

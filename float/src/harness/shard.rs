@@ -50,4 +50,3 @@ pub struct Sweep {
     /// The part to run.
     pub shard: Option<Shard>,
 }
-

@@ -78,7 +78,10 @@ pub(super) fn elements<T, E>(
 ) -> Result<Option<Vec<T>>, E> {
     match width(body).map_err(|(pos, m)| bad(pos, m))? {
         None => Ok(None),
-        Some(n) => (0..n).map(|k| num(&project(body, k))).collect::<Result<_, _>>().map(Some),
+        Some(n) => (0..n)
+            .map(|k| num(&project(body, k)))
+            .collect::<Result<_, _>>()
+            .map(Some),
     }
 }
 
@@ -131,7 +134,9 @@ mod tests {
         let p = program("(FPCore (x y) (let ([s (+ x y)]) (array s (* s y))))");
         assert_eq!(p.outputs.len(), 2);
         assert_eq!(p.eval_f64(&[1.0, 2.0]), vec![3.0, 6.0]);
-        let p = program("(FPCore (x) (if (< x 0) (array (- x) 1) (! :precision binary64 (array x 2))))");
+        let p = program(
+            "(FPCore (x) (if (< x 0) (array (- x) 1) (! :precision binary64 (array x 2))))",
+        );
         assert_eq!(p.eval_f64(&[-3.0]), vec![3.0, 1.0]);
         assert_eq!(p.eval_f64(&[5.0]), vec![5.0, 2.0]);
         let p = program("(FPCore (x) (let* ([a x] [b (* a a)]) (array a b (- b a))))");
@@ -141,8 +146,14 @@ mod tests {
     #[test]
     fn branches_of_different_shapes_are_errors() {
         for (text, msg) in [
-            ("(FPCore (x) (if (< x 0) (array x 1) x))", "an array of 2 and a number"),
-            ("(FPCore (x) (if (< x 0) (array x) (array x x)))", "an array of 1 and an array of 2"),
+            (
+                "(FPCore (x) (if (< x 0) (array x 1) x))",
+                "an array of 2 and a number",
+            ),
+            (
+                "(FPCore (x) (if (< x 0) (array x) (array x x)))",
+                "an array of 1 and an array of 2",
+            ),
             ("(FPCore (x) (let ([a x]) (array)))", "an empty (array)"),
         ] {
             let e = parse_file(text).err().expect("refused").to_string();
