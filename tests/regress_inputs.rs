@@ -213,6 +213,22 @@ fn several_outputs_report_each_and_the_worst() {
     let vector = run(&["vec(sqrt(x + 1) - sqrt(x), x*y)"]);
     assert_eq!(vector["max_ulps_per_output"], two["max_ulps_per_output"]);
     assert_eq!(vector["median_ulps"], two["median_ulps"]);
+    // The text says which output loses what.
+    let o = exactcheck(&[
+        "regress",
+        "--formula",
+        "vec(sqrt(x + 1) - sqrt(x), x*y)",
+        "--domain",
+        "x in [1, 1e15], y in [1, 2]",
+        "--samples",
+        "300",
+        "--quiet",
+    ]);
+    let text = String::from_utf8(o.stdout).unwrap();
+    assert!(
+        text.contains("max ulps per output: [1.106e15, 0.499] (a sample's error is the worst over its 2 outputs)"),
+        "{text}"
+    );
 }
 
 #[test]

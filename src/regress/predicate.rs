@@ -273,3 +273,66 @@ impl Ord for OrdF64 {
         self.0.total_cmp(&other.0)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use exactcheck_float::ExactValue;
+    use num_rational::BigRational;
+
+    fn observe(p: &mut Predicate, index: usize, exact: i64, float: Option<f64>) {
+        let e = [ExactValue::exact(BigRational::from_integer(exact.into()))];
+        let f = float.map(|v| vec![v]);
+        p.add(&Observed {
+            index,
+            inputs: &[index as f64],
+            exact: &e,
+            float: f.as_deref(),
+            ulps: &[1.0],
+            max_ulps: index as f64,
+            bits: 0.0,
+        });
+    }
+
+    #[test]
+    fn signs_are_classified_and_the_worst_kept() {
+        let mut p = Predicate::new(2, None);
+        observe(&mut p, 1, 3, Some(2.0)); // right
+        observe(&mut p, 2, -3, Some(0.5)); // wrong sign
+        observe(&mut p, 3, 3, Some(0.0)); // float zero
+        observe(&mut p, 4, 0, Some(-1e-300)); // float nonzero, exact zero
+        observe(&mut p, 5, 0, Some(0.0)); // right, exactly zero
+        observe(&mut p, 6, 1, Some(f64::NAN)); // no float sign
+        observe(&mut p, 7, 1, None); // no float result
+        observe(&mut p, 8, 2, Some(-0.0)); // -0 is zero
+        assert_eq!(
+            (
+                p.compared,
+                p.wrong_sign,
+                p.float_zero,
+                p.float_nonzero,
+                p.failures,
+                p.exact_zero
+            ),
+            (8, 1, 2, 1, 2, 2)
+        );
+        assert_eq!(p.errors(), 6);
+        // Wrong signs first, then zero vs nonzero by the larger error.
+        let kept: Vec<(usize, Verdict)> = p.worst.iter().map(|e| (e.index, e.verdict)).collect();
+        assert_eq!(
+            kept,
+            vec![(2, Verdict::WrongSign), (8, Verdict::ZeroVsNonzero)]
+        );
+        let text = p.text();
+        assert!(
+            text.contains("wrong sign (opposite signs):             1 (12.5000%)"),
+            "{text}"
+        );
+        assert!(
+            text.contains("sample 2: wrong sign: float 0.5, exact negative (-3)"),
+            "{text}"
+        );
+        assert!(text.contains("exactly [2]"), "{text}");
+        assert_eq!(p.to_json()["float_nonzero_exact_zero"], 1);
+    }
+}

@@ -156,7 +156,10 @@ mod tests {
             ),
             ("(FPCore (x) (let ([a x]) (array)))", "an empty (array)"),
         ] {
-            let e = parse_file(text).err().expect("refused").to_string();
+            let Err(e) = parse_file(text) else {
+                panic!("{text} is accepted")
+            };
+            let e = e.to_string();
             assert!(e.contains(msg), "{text}: {e}");
         }
     }
