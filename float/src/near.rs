@@ -227,11 +227,19 @@ mod tests {
         for _ in 0..200 {
             let x = near.place(&mut rng).unwrap();
             assert!(x.iter().all(|v| (-1.0..=1.0).contains(v)), "{x:?}");
-            // Within an ulp of a sign change along one coordinate: the value is tiny compared
-            // with the products it is made of.
-            let scale = (x[2] - x[0]).abs() * (x[5] - x[1]).abs()
-                + (x[3] - x[1]).abs() * (x[4] - x[0]).abs();
-            assert!(orient_f64(&x).abs() <= 1e-14 * scale.max(1e-300), "{x:?}");
+            // Within an ulp of a sign change along one coordinate: at x the sign is zero, or
+            // a neighbouring double of some coordinate has the other sign.
+            let s = orient_sign(&x).unwrap();
+            let crossed = s == Ordering::Equal
+                || (0..6).any(|j| {
+                    [-1, 1].iter().any(|d| {
+                        let mut y = x.clone();
+                        y[j] = from_ordinal(ordinal(x[j]) + d);
+                        orient_sign(&y).is_some_and(|t| t != s)
+                    })
+                });
+            assert!(crossed, "{x:?}");
+            assert!(orient_f64(&x).abs() < 1e-12, "{x:?}");
         }
     }
 
