@@ -78,9 +78,13 @@ fn the_float_side_of_a_derivative_is_the_expanded_derivative() {
 }
 
 #[test]
-fn vectors_and_constants_are_one_line_errors() {
-    refused("[x, y]", &["--formula", "a vector of 2", "scalar"]);
-    refused("cross([x, y, 1], [1, 2, 3])", &["a vector of 3"]);
+fn matrices_and_constants_are_one_line_errors() {
+    // A vector is one output per coordinate; a matrix is refused.
+    refused(
+        "[[x, y]]",
+        &["--formula", "a 1x2 matrix", "vector of outputs"],
+    );
+    refused("transpose([[x, y, 1]])", &["a 3x1 matrix"]);
     refused("2 e x", &["'e' at 2", "constant e"]);
     refused("x + e", &["'e' at 4", "Euler"]);
     refused("diff(sqrt(x), x)", &["diff", "sqrt"]);

@@ -366,7 +366,26 @@ impl<G: InputGen> InputGen for NearDegenerate<G> {
         self.base.arity()
     }
     fn sample(&self, rng: &mut Rng) -> Vec<f64> {
-        let mut x = self.base.sample(rng);
+        let x = self.base.sample(rng);
+        self.perturb(x, rng)
+    }
+    fn describe(&self) -> String {
+        format!(
+            "near-degenerate: {}, perturbed by relative 2^[{}, {}] (kept exact w.p. {})",
+            self.base.describe(),
+            self.min_exp,
+            self.max_exp,
+            self.keep
+        )
+    }
+    // `contains` is the default: the perturbations reach every input near the base set (any
+    // relative size down to `2^min_exp`, exact coordinates kept), which is no simpler set to
+    // test, so shrinking is not restricted.
+}
+
+impl<G> NearDegenerate<G> {
+    /// The perturbation of [`InputGen::sample`] applied to a given point `x`.
+    pub fn perturb(&self, mut x: Vec<f64>, rng: &mut Rng) -> Vec<f64> {
         for b in &mut x {
             // Draw the same number of values whatever the branch, so that coordinates do not
             // shift each other's streams.
@@ -384,18 +403,6 @@ impl<G: InputGen> InputGen for NearDegenerate<G> {
         }
         x
     }
-    fn describe(&self) -> String {
-        format!(
-            "near-degenerate: {}, perturbed by relative 2^[{}, {}] (kept exact w.p. {})",
-            self.base.describe(),
-            self.min_exp,
-            self.max_exp,
-            self.keep
-        )
-    }
-    // `contains` is the default: the perturbations reach every input near the base set (any
-    // relative size down to `2^min_exp`, exact coordinates kept), which is no simpler set to
-    // test, so shrinking is not restricted.
 }
 
 #[cfg(test)]

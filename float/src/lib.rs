@@ -8,6 +8,8 @@
 //!   for [`exactcheck_exact::PlainRational`].
 //! * [`gen`] — the input generators, drawing from the workspace's one generator [`Rng`]
 //!   ([`UniformBox`], [`LogUniform`], [`NearDegenerate`] around [`Fixed`] or [`Diagonal`] points).
+//! * [`near`] — [`NearSet`]: inputs moved onto a degenerate set `g = 0` by exact-sign bisection
+//!   and perturbed by a few ulps.
 //! * [`domain`] — [`Domain`]: inputs sampled inside exact [`Interval`]s (FPCore's `:pre`,
 //!   `--domain` text read by [`parse_domain`]), one-sided ranges uniformly over the doubles.
 //! * [`harness`] — [`regress`]: a [`Formula`] written once generic over the scalar is run in
@@ -30,6 +32,7 @@ pub mod domain;
 pub mod gen;
 pub mod harness;
 pub mod json;
+pub mod near;
 pub mod program;
 pub mod report;
 pub mod sampler;
@@ -49,6 +52,7 @@ pub use harness::{
     CaseError, ExactValue, FloatSideError, Formula, Generic, MergeError, Observed, Options,
     RegressError, Shard, Subject, Sweep,
 };
+pub use near::NearSet;
 pub use program::{ProgramError, ProgramRunner};
 pub use report::{Case, Explanation, OperationError, Report, Summary, ThresholdCount, WorstCase};
 pub use scalar::ExactScalar;

@@ -547,8 +547,9 @@ impl fmt::Display for Report {
             if self.max_ulps_per_output.len() > 1 {
                 writeln!(
                     f,
-                    "  max ulps per output: {}",
-                    list(self.max_ulps_per_output.iter().map(|&u| fmt_measure(u)))
+                    "  max ulps per output: {} (a sample's error is the worst over its {} outputs)",
+                    list(self.max_ulps_per_output.iter().map(|&u| fmt_measure(u))),
+                    self.max_ulps_per_output.len()
                 )?;
             }
             writeln!(

@@ -12,7 +12,9 @@
 //! (`exactcheck merge`, [`sweep`]).
 
 pub mod explain;
+pub mod near;
 pub mod planes;
+pub mod predicate;
 pub mod sweep;
 pub mod text;
 
@@ -55,9 +57,20 @@ pub struct RegressArgs {
     /// 'sqrt(x + 1) - sqrt(x)': evaluated in f64 in the order written and exactly. The
     /// functions of the language (det, dot, cross, norm2, bezier, sum, binomial, diff,
     /// integrate, ...) are lowered to arithmetic first (diff and integrate to their expanded
-    /// exact result), and both sides evaluate that tree; the value must be a scalar.
+    /// exact result), and both sides evaluate that tree. A vector value (`vec(a, b)`, `[a, b]`)
+    /// is one output per coordinate, and --formula may be repeated: the outputs of one program,
+    /// with errors reported per output and the worst over them.
     #[arg(long, conflicts_with_all = ["kernel", "fpcore"])]
-    pub formula: Option<String>,
+    pub formula: Vec<String>,
+    /// Draw the inputs of --formula / --fpcore near the set where this equation holds, e.g.
+    /// '(bx-ax)*(cy-ay) = (by-ay)*(cx-ax)': each sample is moved onto it along one input by
+    /// exact-sign bisection and perturbed by a few ulps.
+    #[arg(long, value_name = "EXPR = EXPR")]
+    pub near: Option<String>,
+    /// Count sign errors of the (single-output) formula: the sign of the float result against
+    /// the exact sign, as a geometric predicate (orient2d, incircle) is used.
+    #[arg(long)]
+    pub predicate: bool,
     /// The formula's inputs in order, comma-separated (default: in order of appearance).
     #[arg(long, value_delimiter = ',', requires = "formula")]
     pub vars: Option<Vec<String>>,
@@ -323,13 +336,13 @@ pub fn run(args: &RegressArgs) -> Result<ExitCode, Error> {
             "--vars",
             args.vars.is_some(),
             "--formula EXPR",
-            args.formula.is_some(),
+            !args.formula.is_empty(),
         ),
         (
             "--domain",
             args.domain.is_some(),
             "--formula EXPR",
-            args.formula.is_some(),
+            !args.formula.is_empty(),
         ),
     ];
     for (flag, given, subject, present) in needs {
@@ -339,7 +352,7 @@ pub fn run(args: &RegressArgs) -> Result<ExitCode, Error> {
             )));
         }
     }
-    let text = args.formula.is_some() || args.fpcore.is_some();
+    let text = !args.formula.is_empty() || args.fpcore.is_some();
     if !text && args.shard.is_none() && args.samples > max_samples() {
         return Err(Error::Limit(
             exactcheck_core::limits::SAMPLES.exceeded(args.samples.to_string()),
@@ -384,10 +397,10 @@ pub fn run(args: &RegressArgs) -> Result<ExitCode, Error> {
             args.program_timeout
         )));
     }
-    let kernel = match (&args.kernel, &args.formula, &args.fpcore) {
-        (Some(k), None, None) => *k,
-        (None, Some(f), None) => return text_run(args, f, false),
-        (None, None, Some(path)) => return text_run(args, path, true),
+    let kernel = match (&args.kernel, args.formula.is_empty(), &args.fpcore) {
+        (Some(k), true, None) => *k,
+        (None, false, None) => return text_run(args, None),
+        (None, true, Some(path)) => return text_run(args, Some(path)),
         _ => {
             return Err(Error::Usage(
                 "regress needs one of: a KERNEL (cylinder-sphere, bezier-cubic, plane-plane, ruled-plane), --formula EXPR, --fpcore FILE".into(),
@@ -400,6 +413,8 @@ pub fn run(args: &RegressArgs) -> Result<ExitCode, Error> {
         ));
     }
     for (flag, given) in [
+        ("--near", args.near.is_some()),
+        ("--predicate", args.predicate),
         ("--bin", args.bin.is_some()),
         ("--csv", args.csv.is_some()),
         ("--html", args.html.is_some()),
@@ -465,6 +480,7 @@ pub fn run(args: &RegressArgs) -> Result<ExitCode, Error> {
             line: None,
             outcome: Ok(report),
             bins: None,
+            predicate: None,
         };
         sweep::print(&[entry], true)?;
         return Ok(ExitCode::SUCCESS);
@@ -502,17 +518,16 @@ pub fn run(args: &RegressArgs) -> Result<ExitCode, Error> {
     Ok(ExitCode::SUCCESS)
 }
 
-/// `regress --formula` / `regress --fpcore`.
-fn text_run(args: &RegressArgs, source: &str, fpcore: bool) -> Result<ExitCode, Error> {
+/// `regress --formula` / `regress --fpcore FILE` (`fpcore`: the file).
+fn text_run(args: &RegressArgs, fpcore: Option<&str>) -> Result<ExitCode, Error> {
     if args.scalar != ScalarChoice::Fast {
         return Err(Error::Usage(
             "--scalar plain applies to the built-in kernels; formulas are evaluated exactly in exactcheck's Rational".into(),
         ));
     }
-    let entries = if fpcore {
-        text::fpcore_entries(args, source)?
-    } else {
-        text::formula_entries(args, source)?
+    let entries = match fpcore {
+        Some(path) => text::fpcore_entries(args, path)?,
+        None => text::formula_entries(args, &args.formula)?,
     };
     sweep::print(&entries, args.json || args.shard.is_some())?;
     // A shard is a part of a sweep: `merge` judges the whole.

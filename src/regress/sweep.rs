@@ -28,6 +28,8 @@ pub struct Entry {
     pub outcome: Result<Report, String>,
     /// The error binned by `--bin`, when asked.
     pub bins: Option<super::explain::Bins>,
+    /// The sign errors of `--predicate`, when asked.
+    pub predicate: Option<super::predicate::Predicate>,
 }
 
 impl Entry {
@@ -42,6 +44,9 @@ impl Entry {
         obj.insert("line".into(), json!(self.line));
         if let Some(b) = &self.bins {
             obj.insert("bins".into(), b.to_json());
+        }
+        if let Some(p) = &self.predicate {
+            obj.insert("predicate".into(), p.to_json());
         }
         // `name` and `line` first, for readers.
         let mut ordered = serde_json::Map::new();
@@ -82,6 +87,7 @@ impl Entry {
             line,
             outcome,
             bins: None,
+            predicate: None,
         })
     }
 }
@@ -222,6 +228,9 @@ pub fn print(entries: &[Entry], as_json: bool) -> Result<(), Error> {
                 if let Some(b) = &e.bins {
                     text.line(b.text());
                 }
+                if let Some(p) = &e.predicate {
+                    text.line(p.text());
+                }
             }
             Err(why) => text.line(format_args!("{}: {why}\n", e.name)),
         }
@@ -348,6 +357,7 @@ pub fn merge_cmd(args: &MergeArgs) -> Result<std::process::ExitCode, Error> {
             line: entry.line,
             outcome,
             bins: None,
+            predicate: None,
         });
     }
     print(&merged, args.json)?;

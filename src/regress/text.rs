@@ -156,9 +156,33 @@ fn options(args: &RegressArgs) -> Options {
     }
 }
 
-/// One sweep of a program over a domain, as an entry: the report with its worst cases
-/// explained, the `--bin` table, and the `--csv` and `--html` files written.
+/// One sweep of a program over a domain (or near the `--near` set inside it), as an entry.
 fn sweep_entry(
+    args: &RegressArgs,
+    program: &Program,
+    gen: &impl InputGen,
+    line: Option<usize>,
+) -> Result<Entry, Error> {
+    if args.predicate && program.outputs.len() != 1 {
+        return Err(Error::Usage(format!(
+            "--predicate judges the sign of one value: {} has {} outputs",
+            program.name,
+            program.outputs.len()
+        )));
+    }
+    match &args.near {
+        None => sweep_on(args, program, gen, line),
+        Some(eq) => {
+            let near = super::near::generator(eq, &program.inputs, gen, args.seed)?;
+            sweep_on(args, program, &near, line)
+        }
+    }
+}
+
+/// One sweep of a program on inputs from `gen`, as an entry: the report with its worst cases
+/// explained, the `--bin` table, the `--predicate` counts, and the `--csv` and `--html` files
+/// written.
+fn sweep_on(
     args: &RegressArgs,
     program: &Program,
     gen: &impl InputGen,
@@ -186,8 +210,14 @@ fn sweep_entry(
         .html
         .as_ref()
         .map(|_| explain::Points::new(run_samples));
+    let mut predicate = args
+        .predicate
+        .then(|| super::predicate::Predicate::new(args.worst, args.near.clone()));
     let progress = args.progress(&program.name);
     let mut observe = |s: &exactcheck_float::Observed<'_>| {
+        if let Some(p) = &mut predicate {
+            p.add(s);
+        }
         if let Some(b) = &mut bins {
             b.add(s)?;
         }
@@ -230,6 +260,7 @@ fn sweep_entry(
         line,
         outcome: Ok(report),
         bins,
+        predicate,
     })
 }
 
@@ -250,6 +281,7 @@ fn check_outputs(args: &RegressArgs, benchmarks: usize) -> Result<(), Error> {
         for (flag, given) in [
             ("--bin", args.bin.is_some()),
             ("--html", args.html.is_some()),
+            ("--predicate", args.predicate),
         ] {
             if given {
                 return Err(Error::Usage(format!(
@@ -264,12 +296,13 @@ fn check_outputs(args: &RegressArgs, benchmarks: usize) -> Result<(), Error> {
     Ok(())
 }
 
-/// `regress --formula EXPR [--vars ...] [--domain ...]`.
+/// `regress --formula EXPR [--formula EXPR ...] [--vars ...] [--domain ...]`: the formulas are
+/// the outputs of one program.
 ///
 /// # Errors
 /// The formula or the domain does not parse, or the sweep fails (an external program).
-pub fn formula_entries(args: &RegressArgs, text: &str) -> Result<Vec<Entry>, Error> {
-    let program = Program::parse(text, args.vars.as_deref())
+pub fn formula_entries(args: &RegressArgs, texts: &[String]) -> Result<Vec<Entry>, Error> {
+    let program = Program::parse_outputs(texts, args.vars.as_deref())
         .map_err(|e| Error::Input(format!("--formula: {e}")))?;
     check_outputs(args, 1)?;
     if let Some(b) = &args.bin {
@@ -315,6 +348,12 @@ pub fn fpcore_entries(args: &RegressArgs, path: &str) -> Result<Vec<Entry>, Erro
         return Err(Error::Input(format!("{path} contains no FPCore")));
     }
     check_outputs(args, chosen.len())?;
+    if args.near.is_some() && chosen.len() > 1 {
+        return Err(Error::Usage(format!(
+            "--near names the inputs of one benchmark: {path} has {}, choose one with --name",
+            chosen.len()
+        )));
+    }
     if args.program.is_some() && chosen.len() > 1 {
         return Err(Error::Usage(format!(
             "--program runs one benchmark: {path} has {}, choose one with --name",
@@ -330,6 +369,7 @@ pub fn fpcore_entries(args: &RegressArgs, path: &str) -> Result<Vec<Entry>, Erro
                 line: Some(b.line),
                 outcome: Err(unsupported.to_string()),
                 bins: None,
+                predicate: None,
             },
             Ok(program) => {
                 let mut program = program.clone();
@@ -342,6 +382,7 @@ pub fn fpcore_entries(args: &RegressArgs, path: &str) -> Result<Vec<Entry>, Erro
                         line: Some(b.line),
                         outcome: Err(format!("no input to sample: {e}")),
                         bins: None,
+                        predicate: None,
                     },
                     Ok(gen) => sweep_entry(args, &program, &gen, Some(b.line))?,
                 }

@@ -345,14 +345,20 @@ fn regressions(s: &mut String, summaries: &[Summary], note: Option<&str>) {
             escape(note.unwrap_or("No regressions were run."))
         );
     } else {
-        s.push_str("<p>The built-in kernels of <code>exactcheck regress</code>, run in f64 and exactly on the same seeded inputs. Errors in ulps of the exact value; bits of error as Herbie measures them (log2 of 1 + the doubles between the f64 result and the correctly rounded exact value).</p>\n");
+        s.push_str("<p>The built-in kernels of <code>exactcheck regress</code> (and the saved runs given with <code>--regress</code>), run in f64 and exactly on the same seeded inputs. Errors in ulps of the exact value; bits of error as Herbie measures them (log2 of 1 + the doubles between the f64 result and the correctly rounded exact value).</p>\n");
+        if summaries
+            .iter()
+            .any(|r| r.command.starts_with("exactcheck regress "))
+        {
+            let _ = writeln!(s, "<p>{}</p>", escape(super::regress::KERNEL_NOT_EXPLAINED));
+        }
     }
     for r in summaries {
         let _ = write!(
             s,
             "<article class=\"regression\" id=\"{}\">\n<h3>{}</h3>\n<p>{} — <code>{}</code> ({:.1} s)</p>\n",
-            escape(&css_id("regress", r.kernel)),
-            escape(r.kernel),
+            escape(&css_id("regress", &r.kernel)),
+            escape(&r.kernel),
             escape(&r.title),
             escape(&r.command),
             r.seconds

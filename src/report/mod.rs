@@ -14,7 +14,9 @@
 //! * for the built-in catalogue, every figure of [`crate::plot::catalogue_figures`] inline as
 //!   SVG, ids and style rules isolated per figure ([`inline_svg`]), and the float-vs-exact
 //!   regression summaries of the four built-in kernels on `--samples` seeded samples
-//!   ([`regress`]).
+//!   ([`regress`]);
+//! * with `--regress FILE`, the saved `regress --json` run: each formula's table and its worst
+//!   samples explained (local error per operation, conditioning), as `regress` printed them.
 //!
 //! Nothing is loaded from the network: the style sheet and the script are inline, the fonts
 //! are the system's, and the page's content security policy forbids every other load.
@@ -50,6 +52,11 @@ pub struct ReportArgs {
     /// Seed of the regressions' inputs.
     #[arg(long, default_value_t = 1)]
     pub seed: u64,
+    /// A saved run of `exactcheck regress --formula/--fpcore ... --json` (or of `merge`) to
+    /// add to the page: each formula's table and its worst samples with the local error of
+    /// each operation and the conditioning there.
+    #[arg(long, value_name = "FILE")]
+    pub regress: Option<String>,
     /// No progress bar (it is shown only when standard error is a terminal).
     #[arg(long)]
     pub quiet: bool,
@@ -143,6 +150,13 @@ pub fn run(args: &ReportArgs) -> Result<ExitCode, Error> {
         )
     };
     drop(steps);
+    let (mut regressions, mut note) = (regressions, note);
+    if let Some(path) = &args.regress {
+        let text = crate::solve::read_problem(Some(path))?;
+        let entries = crate::regress::sweep::read_document(&text, path)?;
+        regressions.extend(entries.iter().map(|e| regress::saved_summary(e, path)));
+        note = None;
+    }
 
     let page = html::page(&html::Page {
         subject,
@@ -153,7 +167,12 @@ pub fn run(args: &ReportArgs) -> Result<ExitCode, Error> {
         note,
     })?;
     let index = Path::new(&args.output).join("index.html");
-    let inputs: Vec<&Path> = args.file.iter().map(Path::new).collect();
+    let inputs: Vec<&Path> = args
+        .file
+        .iter()
+        .chain(args.regress.iter())
+        .map(Path::new)
+        .collect();
     let created = crate::output::create_dirs(&args.output)?;
     let written = crate::output::write_file(&index.to_string_lossy(), page.as_bytes(), &inputs);
     if written.is_err() {

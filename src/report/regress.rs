@@ -33,8 +33,9 @@ pub struct Table {
 /// The summary of one kernel's regression.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Summary {
-    /// The kernel's name as `regress` takes it (`cylinder-sphere`); also the anchor.
-    pub kernel: &'static str,
+    /// The kernel's name as `regress` takes it (`cylinder-sphere`), or the name of a saved
+    /// run's formula or benchmark; also the anchor.
+    pub kernel: String,
     /// What is regressed against what.
     pub title: String,
     /// The command that reproduces it in full.
@@ -205,7 +206,7 @@ pub fn summary(kernel: &'static str, samples: usize, seed: u64) -> Result<Summar
         }
     };
     Ok(Summary {
-        kernel,
+        kernel: kernel.to_string(),
         title,
         command,
         seconds: start.elapsed().as_secs_f64(),
@@ -269,6 +270,87 @@ fn harness_table(caption: &str, reports: &[(&str, &Report)]) -> Table {
                 ]
             })
             .collect(),
+    }
+}
+
+/// Why the worst cases of a built-in kernel are not explained.
+pub const KERNEL_NOT_EXPLAINED: &str = "Local errors per operation and conditioning are not shown for the built-in kernels: they are compiled Rust code, not a float program whose operations can be fed exact operands one by one; a formula or FPCore benchmark (regress --formula, --fpcore, saved with --json and given to report --regress) is explained.";
+
+/// The summary of one entry of a saved `regress --json` run (or of a `merge`d one): the harness
+/// table and its worst cases with where their error comes from (the local error of each
+/// operation and the conditioning, as the run computed them), or why that is not known.
+pub fn saved_summary(entry: &crate::regress::sweep::Entry, file: &str) -> Summary {
+    let command = format!("saved in {file}");
+    let Ok(r) = &entry.outcome else {
+        let why = entry.outcome.as_ref().err().cloned().unwrap_or_default();
+        return Summary {
+            kernel: entry.name.clone(),
+            title: format!("{}: not run", entry.name),
+            command,
+            seconds: 0.0,
+            tables: vec![Table {
+                caption: "why the benchmark was not run".into(),
+                head: vec!["reason".into()],
+                rows: vec![vec![why]],
+            }],
+        };
+    };
+    let built_in = r.float_side.starts_with("built-in ");
+    let rows = r
+        .worst
+        .iter()
+        .map(|w| {
+            let case = w.shrunk.as_ref().unwrap_or(&w.original);
+            let (bits, local, conditioning) = match &w.explanation {
+                Some(e) => (format!("{:.1}", e.bits), e.local(), e.verdict()),
+                None if built_in => (
+                    format!("{:.1}", w.original.bits),
+                    "not available: a built-in kernel is compiled code, not a float program".into(),
+                    "not available (no float program to differentiate)".into(),
+                ),
+                None => (
+                    format!("{:.1}", w.original.bits),
+                    "not available: the saved run carries no explanation of this case".into(),
+                    "not available".into(),
+                ),
+            };
+            vec![
+                w.index.to_string(),
+                inputs(&w.original.inputs),
+                cell(w.original.ulps),
+                inputs(&case.inputs),
+                bits,
+                local,
+                conditioning,
+            ]
+        })
+        .collect();
+    Summary {
+        kernel: entry.name.clone(),
+        title: format!(
+            "saved run: {} against the exact value ({}, seed {})",
+            r.float_side, r.generator, r.seed
+        ),
+        command,
+        seconds: 0.0,
+        tables: vec![
+            harness_table("the saved run", &[("all", r)]),
+            Table {
+                caption: "the worst samples explained: the operations that lose the bits (each fed exact operands) and the conditioning of the exact function there".into(),
+                head: [
+                    "sample",
+                    "inputs",
+                    "ulps",
+                    "shrunk to",
+                    "bits lost",
+                    "local error",
+                    "conditioning",
+                ]
+                .map(String::from)
+                .to_vec(),
+                rows,
+            },
+        ],
     }
 }
 

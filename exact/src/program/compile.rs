@@ -27,8 +27,9 @@
 //!
 //! The formula is the one expression language of `prove` and the claims files: it is first
 //! resolved by the function library ([`crate::expr::library`]: vectors, matrices, `det`, `dot`,
-//! `cross`, `norm2`, `bezier`, `bernstein`, `subs`, `at`, ...), which must give a scalar (a
-//! vector or matrix is [`CompileError::NotScalar`]), and then lowered ([`crate::expr::lower`]):
+//! `cross`, `norm2`, `bezier`, `bernstein`, `subs`, `at`, ...), which must give a scalar or a
+//! vector (one output per coordinate; a matrix is [`CompileError::NotScalar`]), and then
+//! lowered ([`crate::expr::lower`]):
 //! `binomial` and `factorial` become their integer values, `sum` the unrolled sum of its terms,
 //! `diff` and `integrate` their exact result expanded as a rational function. Both sides of the
 //! regression evaluate that one lowered tree, so what is compared for a `diff` is the float
@@ -98,8 +99,8 @@ pub enum CompileError {
     /// fit, ...); the message carries the position.
     #[error("{0}")]
     Resolve(String),
-    /// A formula whose value is a vector or a matrix.
-    #[error("the formula is {shape}; a regressed formula has one scalar value (take a coordinate, e.g. x(v) or at(v, 2), or a scalar function such as dot or norm2)")]
+    /// A formula whose value is a matrix (a vector is one output per coordinate).
+    #[error("the formula is {shape}; a regressed formula has a scalar value or a vector of outputs (take a row, e.g. at(M, 1), or give each output as its own --formula)")]
     NotScalar {
         /// The shape found (`a vector of 2`).
         shape: String,
@@ -186,14 +187,14 @@ fn reserved(name: &str) -> Option<&'static str> {
 
 impl Program {
     /// Compiles a parsed formula (see the module documentation of `program::compile`: resolved
-    /// by the library, lowered, compiled): inputs
-    /// `vars` in that order when given, else the variables in order of first appearance; one
-    /// output; no slots, no precondition; the name is the printed expression (the caller may
+    /// by the library, lowered, compiled): inputs `vars` in that order when given, else the
+    /// variables in order of first appearance; one output, or one per coordinate of a vector
+    /// value; no slots, no precondition; the name is the printed expression (the caller may
     /// overwrite it).
     ///
     /// # Errors
     /// An unknown, duplicate or malformed variable, a constant used as a variable, a library
-    /// error or a vector value, an error of the lowering, an exponent that is not an integer
+    /// error or a matrix value, an error of the lowering, an exponent that is not an integer
     /// constant or exceeds the `formula-exponent` limit, or an error evaluating a constant
     /// exponent.
     pub fn from_expr(expr: &Expr, vars: Option<&[String]>) -> Result<Program, CompileError> {
@@ -212,12 +213,14 @@ impl Program {
             }
             table.names.push(name.clone());
         }
+        // A scalar is one output, a vector one output per coordinate.
         let resolved = match Defs::default()
             .with_calls(&formula_function_names())
             .resolve_expr(expr)
             .map_err(|e| CompileError::Resolve(e.to_string()))?
         {
-            Val::Scalar(e) => e,
+            Val::Scalar(e) => vec![e],
+            Val::Vector(v) => v,
             v => return Err(CompileError::NotScalar { shape: v.shape() }),
         };
         if !table.fixed {
@@ -225,7 +228,9 @@ impl Program {
             // a, b, c, d, though its expansion starts a*d), even one the lowering removes, but
             // not a name the library replaces (the variable of `subs`).
             let mut present = Vec::new();
-            resolved.collect_variables(&mut present);
+            for r in &resolved {
+                r.collect_variables(&mut present);
+            }
             let mut names = Vec::new();
             expr.collect_variables(&mut names);
             names.retain(|n| present.contains(n));
@@ -238,13 +243,61 @@ impl Program {
                 .names
                 .extend(names.into_iter().filter(|n| reserved(n).is_none()));
         }
-        let out = compile(&lower(&resolved)?, &mut table)?;
+        let outputs = resolved
+            .iter()
+            .map(|r| compile(&lower(r)?, &mut table))
+            .collect::<Result<Vec<_>, _>>()?;
         Ok(Program {
             name: expr.to_string(),
             inputs: table.names,
             slots: 0,
             pre: None,
-            outputs: vec![out],
+            outputs,
+        })
+    }
+
+    /// Compiles several formulas as the outputs of one program, in order (each may itself be
+    /// a vector of outputs): the inputs are `vars` when given, else the variables of all of them
+    /// in order of first appearance; the name is the texts joined by `; `.
+    ///
+    /// # Errors
+    /// As [`Program::parse`], with the formula's number (from 1) when there are several.
+    pub fn parse_outputs(texts: &[String], vars: Option<&[String]>) -> Result<Program, String> {
+        let which = |k: usize, e: CompileError| {
+            if texts.len() == 1 {
+                e.to_string()
+            } else {
+                format!("formula {}: {e}", k + 1)
+            }
+        };
+        // Each formula alone first (an error names the one it is in), for its variables.
+        let mut names: Vec<String> = vars.map(<[String]>::to_vec).unwrap_or_default();
+        let mut exprs = Vec::with_capacity(texts.len());
+        for (k, text) in texts.iter().enumerate() {
+            let expr = parse_expr_with_calls(text).map_err(|e| which(k, e.into()))?;
+            let alone = Program::from_expr(&expr, vars).map_err(|e| which(k, e))?;
+            for n in alone.inputs {
+                if !names.contains(&n) {
+                    names.push(n);
+                }
+            }
+            exprs.push(expr);
+        }
+        let mut outputs = Vec::new();
+        for (k, expr) in exprs.iter().enumerate() {
+            let p = Program::from_expr(expr, Some(&names)).map_err(|e| which(k, e))?;
+            outputs.extend(p.outputs);
+        }
+        Ok(Program {
+            name: texts
+                .iter()
+                .map(|t| t.trim())
+                .collect::<Vec<_>>()
+                .join("; "),
+            inputs: names,
+            slots: 0,
+            pre: None,
+            outputs,
         })
     }
 

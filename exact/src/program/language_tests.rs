@@ -132,17 +132,36 @@ fn an_integral_with_a_root_in_a_bound_is_lowered_by_its_antiderivative() {
 }
 
 #[test]
-fn a_vector_value_is_one_line_error() {
-    let e = Program::parse("[x, y]", None).unwrap_err();
+fn a_vector_value_is_one_output_per_coordinate() {
+    let p = Program::parse("[x - y, x*y]", None).unwrap();
+    assert_eq!(p.inputs, ["x", "y"]);
+    assert_eq!(p.outputs.len(), 2);
+    assert_eq!(p.eval_f64(&[3.0, 2.0]), vec![1.0, 6.0]);
+    let p = Program::parse("cross([x, y, 1], [1, 2, 3])", None).unwrap();
+    assert_eq!(p.eval_f64(&[1.0, 1.0]), vec![1.0, -2.0, 1.0]);
+    let e = Program::parse("transpose([[x]])", None).unwrap_err();
     assert_eq!(
         e.to_string(),
-        "the formula is a vector of 2; a regressed formula has one scalar value (take a \
-         coordinate, e.g. x(v) or at(v, 2), or a scalar function such as dot or norm2)"
+        "the formula is a 1x1 matrix; a regressed formula has a scalar value or a vector of \
+         outputs (take a row, e.g. at(M, 1), or give each output as its own --formula)"
     );
-    let e = Program::parse("cross([x, y, 1], [1, 2, 3])", None).unwrap_err();
     assert!(matches!(e, CompileError::NotScalar { .. }), "{e}");
-    let e = Program::parse("transpose([[x]])", None).unwrap_err();
-    assert!(e.to_string().contains("a 1x1 matrix"), "{e}");
+}
+
+#[test]
+fn several_formulas_are_the_outputs_of_one_program() {
+    let texts = ["a*b".to_string(), "vec(b - c, a)".to_string()];
+    let p = Program::parse_outputs(&texts, None).unwrap();
+    assert_eq!(p.inputs, ["a", "b", "c"]);
+    assert_eq!(p.name, "a*b; vec(b - c, a)");
+    assert_eq!(p.eval_f64(&[2.0, 3.0, 5.0]), vec![6.0, -2.0, 2.0]);
+    let vars = ["c".to_string(), "b".to_string(), "a".to_string()];
+    let p = Program::parse_outputs(&texts, Some(&vars)).unwrap();
+    assert_eq!(p.eval_f64(&[5.0, 3.0, 2.0]), vec![6.0, -2.0, 2.0]);
+    // An error names the formula it is in.
+    let bad = ["x".to_string(), "y +".to_string()];
+    let e = Program::parse_outputs(&bad, None).unwrap_err();
+    assert!(e.starts_with("formula 2: "), "{e}");
 }
 
 #[test]

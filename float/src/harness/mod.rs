@@ -59,16 +59,21 @@
 //! divide with [`exactcheck_core::Field::checked_div`] or [`exactcheck_core::Field::inv`] and
 //! propagate the [`ZeroDivisor`] with `?`; the harness then counts the sample instead of crashing.
 
+mod accumulate;
 mod merge;
+mod shard;
 mod shrink;
 
 pub use merge::{check_consistent, merge, MergeError};
+pub use shard::{Shard, Sweep};
+
+use accumulate::Accumulator;
 
 use crate::convert::{rel_error, ulps_error_rounded};
 use crate::gen::InputGen;
-use crate::report::{Case, Report, Summary, ThresholdCount, WorstCase};
+use crate::report::{Case, Report, WorstCase};
 use crate::scalar::ExactScalar;
-use crate::summary::{herbie_bits, BitsSum, Distribution};
+use crate::summary::herbie_bits;
 use exactcheck_core::Rng;
 use exactcheck_core::{OrderedField, ZeroDivisor};
 use num_rational::BigRational;
@@ -505,57 +510,6 @@ pub(crate) fn worse(a: (f64, f64, usize), b: (f64, f64, usize)) -> Ordering {
         .then(a.2.cmp(&b.2))
 }
 
-/// Part `index` (1-based) of `count` equal parts of a sweep, by sample index.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Shard {
-    /// Which part, `1..=count`.
-    pub index: usize,
-    /// How many parts.
-    pub count: usize,
-}
-
-impl Shard {
-    /// The sample indices of this part of a sweep of `samples`: `[(i-1) S / N, i S / N)`.
-    pub fn range(&self, samples: usize) -> std::ops::Range<usize> {
-        let at = |k: usize| (k as u128 * samples as u128 / self.count as u128) as usize;
-        at(self.index - 1)..at(self.index)
-    }
-}
-
-impl std::str::FromStr for Shard {
-    type Err = String;
-    /// `I/N` with `1 <= I <= N`.
-    fn from_str(s: &str) -> Result<Shard, String> {
-        let bad = || format!("shard '{s}' is not I/N with 1 <= I <= N (e.g. 2/4)");
-        let (i, n) = s.split_once('/').ok_or_else(bad)?;
-        let (index, count) = (
-            i.trim().parse::<usize>().map_err(|_| bad())?,
-            n.trim().parse::<usize>().map_err(|_| bad())?,
-        );
-        if index == 0 || index > count {
-            return Err(bad());
-        }
-        Ok(Shard { index, count })
-    }
-}
-
-impl std::fmt::Display for Shard {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{}/{}", self.index, self.count)
-    }
-}
-
-/// A sweep: how many samples, the seed, and which shard of it to run (all when `None`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Sweep {
-    /// The number of samples of the whole sweep.
-    pub samples: usize,
-    /// The seed: sample `i` draws from `Rng::for_sample(seed, i)`.
-    pub seed: u64,
-    /// The part to run.
-    pub shard: Option<Shard>,
-}
-
 /// Samples evaluated between two calls of the progress callback (and the batch of a float
 /// side's [`Subject::float_batch`]).
 pub const CHUNK: usize = 512;
@@ -793,135 +747,6 @@ fn keep(kept: &mut Kept, k: usize, i: usize, x: Vec<f64>, ev: Evaluated) {
     if pos < k {
         kept.insert(pos, (i, x, ev));
         kept.truncate(k);
-    }
-}
-
-/// The mergeable counts and summaries of a sweep.
-struct Accumulator {
-    thresholds: Vec<f64>,
-    above: Vec<usize>,
-    ulps: Distribution,
-    rel: Distribution,
-    bits: BitsSum,
-    max_bits: f64,
-    max_ulps: f64,
-    max_rel: f64,
-    max_per_output: Vec<f64>,
-    compared: usize,
-    domain_errors: usize,
-    invalid_inputs: usize,
-    undecided: usize,
-    refined: usize,
-    float_failures: usize,
-}
-
-impl Accumulator {
-    fn new(options: &Options) -> Accumulator {
-        Accumulator {
-            thresholds: options.thresholds.clone(),
-            above: vec![0; options.thresholds.len()],
-            ulps: Distribution::new(),
-            rel: Distribution::new(),
-            bits: BitsSum::default(),
-            max_bits: 0.0,
-            max_ulps: 0.0,
-            max_rel: 0.0,
-            max_per_output: Vec::new(),
-            compared: 0,
-            domain_errors: 0,
-            invalid_inputs: 0,
-            undecided: 0,
-            refined: 0,
-            float_failures: 0,
-        }
-    }
-
-    fn skip(&mut self, e: CaseError) {
-        match e {
-            CaseError::InvalidInputs => self.invalid_inputs += 1,
-            CaseError::OutsideDomain => self.domain_errors += 1,
-            CaseError::Undecided => self.undecided += 1,
-        }
-    }
-
-    fn add(&mut self, ev: &Evaluated) {
-        self.compared += 1;
-        if ev.failure {
-            self.float_failures += 1;
-        }
-        if ev.exact.iter().any(|v| !v.exact) {
-            self.refined += 1;
-        }
-        if self.max_per_output.len() < ev.ulps.len() {
-            self.max_per_output.resize(ev.ulps.len(), 0.0);
-        }
-        for (m, &u) in self.max_per_output.iter_mut().zip(&ev.ulps) {
-            *m = m.max(u);
-        }
-        for (c, &t) in self.above.iter_mut().zip(&self.thresholds) {
-            if ev.max_ulps > t {
-                *c += 1;
-            }
-        }
-        self.max_ulps = self.max_ulps.max(ev.max_ulps);
-        self.max_rel = self.max_rel.max(ev.max_rel);
-        self.ulps.push(ev.max_ulps);
-        self.rel.push(ev.max_rel);
-        self.bits.push(ev.bits);
-        self.max_bits = self.max_bits.max(ev.bits);
-    }
-
-    fn report(
-        self,
-        subject: &(impl Subject + ?Sized),
-        generator: String,
-        sweep: Sweep,
-        options: &Options,
-        worst: Vec<WorstCase>,
-    ) -> Report {
-        let range = sweep
-            .shard
-            .map_or(0..sweep.samples, |s| s.range(sweep.samples));
-        let mut r = Report {
-            formula: subject.name(),
-            float_side: subject.float_side(),
-            generator,
-            arity: subject.arity(),
-            samples: sweep.samples,
-            seed: sweep.seed,
-            shard: sweep.shard,
-            first_sample: range.start,
-            end_sample: range.end,
-            keep: options.worst,
-            compared: self.compared,
-            domain_errors: self.domain_errors,
-            invalid_inputs: self.invalid_inputs,
-            undecided: self.undecided,
-            refined: self.refined,
-            float_failures: self.float_failures,
-            max_ulps: self.max_ulps,
-            median_ulps: 0.0,
-            mean_ulps: 0.0,
-            max_rel: self.max_rel,
-            median_rel: 0.0,
-            bits_of_error: 0.0,
-            max_bits: self.max_bits,
-            max_ulps_per_output: self.max_per_output,
-            above: self
-                .thresholds
-                .iter()
-                .zip(&self.above)
-                .map(|(&ulps, &count)| ThresholdCount { ulps, count })
-                .collect(),
-            worst,
-            summary: Summary {
-                ulps: self.ulps,
-                rel: self.rel,
-                bits: self.bits,
-            },
-        };
-        r.refresh_statistics();
-        r
     }
 }
 

@@ -641,18 +641,18 @@ impl Compiler {
         })
     }
 
-    /// The outputs of the body: one, or one per element of a top-level `(array ...)`.
+    /// The outputs of the body: one, or one per element of an array it returns (`array`).
     fn outputs(&mut self, body: &SExpr) -> Result<Vec<Node>, Fail> {
-        if let SExpr::List(items, _) = body {
-            match items.first().and_then(SExpr::sym) {
-                Some("array") => return items[1..].iter().map(|e| self.num(e)).collect(),
-                Some("!") => {
-                    let (e, pairs) = annotation(items, body.pos())?;
-                    check_context(&pairs)?;
-                    return self.outputs(e);
-                }
-                _ => {}
+        match body {
+            SExpr::List(items, p) if items.first().and_then(SExpr::sym) == Some("!") => {
+                let (e, pairs) = annotation(items, *p)?;
+                check_context(&pairs)?;
+                return self.outputs(e);
             }
+            _ => {}
+        }
+        if let Some(outs) = super::array::elements(body, |e| self.num(e), syntax)? {
+            return Ok(outs);
         }
         match self.expr(body)? {
             Value::Num(n) => Ok(vec![n]),

@@ -24,7 +24,7 @@
 //! * `if`, the comparisons `< > <= >= == !=` (variadic as the standard says: a chain of
 //!   adjacent pairs for the ordered ones and `==`, all pairs distinct for `!=`), `and`, `or`,
 //!   `not`, `TRUE`, `FALSE`;
-//! * `(array e ...)` as the whole body: one output per element;
+//! * `(array e ...)` as the body's value, also under `let`, `if`, `!`: one output per element;
 //! * rounding contexts: `:precision binary64` (the default when absent) and
 //!   `:round nearestEven`, on the benchmark, in `!` annotations and on arguments
 //!   `(! :precision binary64 x)`. Other properties (`:cite`, `:spec`, `:math-library`, ...) are
@@ -52,6 +52,7 @@
 use crate::program::Program;
 use crate::rational::Rational;
 
+mod array;
 mod compile;
 mod sexpr;
 
