@@ -118,7 +118,8 @@ fn curvature(n: usize) -> Pair {
 
 /// The rational unit circle identity with `p = (t + s + 1)^k`, `q = (t - 2s)^k`.
 fn circle(k: u32) -> Pair {
-    let (p, q) = (format!("(t + s + 1)^{k}"), format!("(t - 2*s)^{k}"));
+    // Parenthesised: `^` is right-associative, so `(t + s + 1)^4^2` would be a 16th power.
+    let (p, q) = (format!("((t + s + 1)^{k})"), format!("((t - 2*s)^{k})"));
     let den = format!("({p}^2 + {q}^2)");
     let e = |s: String| parse_expr(&s).unwrap();
     (

@@ -36,3 +36,27 @@ fn unknown_json_keys_with_control_characters_are_one_line_errors() {
         assert!(message.contains("unknown field"), "{key}: {message:?}");
     }
 }
+
+/// fuzz target `prove`: a failing identity whose cleared residual (a 20th power plus two
+/// fractions, coefficients of dozens of digits) took 28 s, nearly all in printing the residual
+/// factored: the remainder sequences of its square-free factorization swelled in coefficient
+/// size, which the work bound (counting terms only) did not see. The bound now weighs each
+/// product by the sizes of its coefficients, so the factorization gives up early and the
+/// expanded residual is printed; the verdict is the same `fails` with a counter-example.
+#[test]
+fn a_residual_with_swelling_gcds_prints_without_factoring_at_length() {
+    let lhs = "(p ^2+p1^2^2+p3^2p4)^20+ (11+p++p^2*2^2+p3^2p4^2+p^- 2*p2*p4)^2 + (01+p^1/p1^2)^2";
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+        .args(["prove", lhs])
+        .output()
+        .expect("the binary runs");
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(1), "{text}");
+    assert!(text.starts_with("fails: at "), "{text}");
+    assert!(text.contains("where p != 0, p1 != 0"), "{text}");
+    assert!(
+        out.stderr.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}

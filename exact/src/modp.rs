@@ -126,6 +126,17 @@ impl ModP {
     /// # Errors
     /// [`ZeroDivisor`] when `p` divides the denominator (the rational has no image).
     pub fn from_rational(q: &Rational) -> Result<ModP, ZeroDivisor> {
+        if let Some((n, d)) = q.inline_parts() {
+            // The inline tier: no big integers (the denominator is positive).
+            let n = match ModP::from_u128(n.unsigned_abs()) {
+                r if n < 0 => -r,
+                r => r,
+            };
+            if d == 1 {
+                return Ok(n);
+            }
+            return Ok(n * ModP::from_u128(d.unsigned_abs()).inv_impl()?);
+        }
         let n = ModP::from_bigint(&q.numer());
         if q.is_integer() {
             return Ok(n);

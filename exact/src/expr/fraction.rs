@@ -94,6 +94,12 @@ impl Expr {
             ExprKind::Product(items) => {
                 let mut acc = RatFun::from_poly(Poly::one());
                 for (op, x) in items {
+                    if *op == MulOp::Divide {
+                        if let Some(inv) = reciprocal_power::<C>(x, vars) {
+                            acc = acc.mul(&inv).map_err(size)?;
+                            continue;
+                        }
+                    }
                     let f = x.to_ratfun::<C>(vars)?;
                     acc = match op {
                         MulOp::Times => acc.mul(&f).map_err(size)?,
@@ -145,6 +151,25 @@ impl Expr {
         }
         Ok(f)
     }
+}
+
+/// `1 / x` for a divisor `x = B^k` (`k` a positive integer) as `(1 / B)^k`: the same fraction
+/// and the same condition (that of `B`, the square-free part of `B^k`) without computing the
+/// square-free part of `B^k` by gcds. `None` when `x` is not such a power or anything fails
+/// (zero, a limit), so that the caller's general path reports it as before.
+fn reciprocal_power<C: Coefficient + Field>(x: &Expr, vars: &mut Vars) -> Option<RatFun<C>> {
+    let ExprKind::Pow(base, exp) = &x.kind else {
+        return None;
+    };
+    let k = exponent_value(exp).ok().filter(|&k| k > 0)?;
+    let inv = base.to_ratfun::<C>(vars).ok()?.pow(-k).ok()??;
+    let fits = |p: &Poly<C>| {
+        limits::TERMS.check_usize(p.len()).is_ok()
+            && p.coefficients()
+                .iter()
+                .all(|c| check_constant(c, x.pos).is_ok())
+    };
+    (fits(inv.numerator()) && fits(inv.denominator())).then_some(inv)
 }
 
 /// The error of dividing by `divisor`, which is identically zero.

@@ -25,8 +25,10 @@
 //! # Limits
 //! Factoring is for printing, so it must never dominate a run: a polynomial of more than
 //! [`FACTOR_MAX_TERMS`] terms is not factored, and the factorization gives up when the
-//! remainder sequences of its gcds have produced [`FACTOR_WORK`] terms in all (or a product
-//! passes a named limit). Then [`square_free`]
+//! products of the remainder sequences of its gcds have cost [`FACTOR_WORK`] in all (term
+//! products weighted by the sizes of the coefficients multiplied, so that a sequence whose
+//! coefficients swell to thousands of digits stops as early as one whose terms multiply), or a
+//! product passes a named limit. Then [`square_free`]
 //! answers `None` and the caller prints the expanded form. These bounds decide only how a
 //! result is printed, never a result, so they are constants rather than limits of the registry
 //! (which refuse inputs).
@@ -38,8 +40,10 @@ use exactcheck_core::{Field, Ring};
 /// The most terms of a polynomial [`square_free`] factors.
 pub const FACTOR_MAX_TERMS: usize = 2_000;
 
-/// The most terms of all pseudo-remainders together in the gcds of one [`square_free`].
-pub const FACTOR_WORK: usize = 200_000;
+/// The most work of all pseudo-remainder products together in the gcds of one [`square_free`]:
+/// term products, each weighted by the 64-bit words of the two coefficients
+/// (the `product_work` of [`crate::ratfun`]).
+pub const FACTOR_WORK: usize = 10_000_000;
 
 /// `unit * x^monomial * prod f^e` ([`square_free`]).
 #[derive(Clone, Debug)]

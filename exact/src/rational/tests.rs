@@ -1,0 +1,199 @@
+use super::*;
+
+fn q(n: i64, d: i64) -> Rational {
+    Rational::new(n, d).unwrap()
+}
+
+/// `from_dyadic` against the division, inline and boxed, odd and even numerators.
+#[test]
+fn from_dyadic_is_the_quotient() {
+    let nums = [0i64, 1, -1, 6, -12, 1 << 40, -(3 << 50), i64::MAX, i64::MIN];
+    for &n in &nums {
+        for big in [0u32, 70, 200] {
+            let num = BigInt::from(n) << big;
+            for exp in [0u64, 1, 3, 64, 125, 126, 127, 300] {
+                let expected = Rational::from(num.clone()) / Rational::from(BigInt::from(1) << exp);
+                let got = Rational::from_dyadic(&num, exp);
+                assert_eq!(got, expected, "{num} / 2^{exp}");
+                assert_eq!(got.is_inline(), expected.is_inline(), "{num} / 2^{exp}");
+            }
+        }
+    }
+}
+
+#[test]
+fn canonical_construction() {
+    assert_eq!(q(6, -4), q(-3, 2));
+    assert_eq!(q(0, -7), Rational::ZERO);
+    assert!(q(6, -4).is_canonical());
+    assert_eq!(Rational::new(1, 0), Err(ZeroDivisor));
+}
+
+#[test]
+fn inline_parts_are_the_canonical_pair() {
+    assert_eq!(q(6, -4).inline_parts(), Some((-3, 2)));
+    assert_eq!(Rational::ZERO.inline_parts(), Some((0, 1)));
+    let big = Rational::from(BigInt::from(1) << 200u32);
+    assert_eq!(big.inline_parts(), None);
+}
+
+#[test]
+fn small_arithmetic() {
+    assert_eq!(q(1, 3) + q(1, 6), q(1, 2));
+    assert_eq!(q(1, 3) - q(1, 3), Rational::ZERO);
+    assert_eq!(q(2, 3) * q(9, 4), q(3, 2));
+    assert_eq!(q(2, 3) / q(4, 9), q(3, 2));
+    assert_eq!(q(-5, 7).recip(), Ok(q(-7, 5)));
+    assert!(q(-1, 2) < q(1, 3));
+    assert!(q(1, 3) > q(1, 4));
+}
+
+#[test]
+fn overflow_promotes_and_demotes() {
+    let big = Rational::from_i128_ratio(i128::MAX, 3).unwrap();
+    assert!(big.is_inline());
+    let sq = big.square();
+    assert!(!sq.is_inline());
+    assert!(sq.is_canonical());
+    let back = &sq / &big;
+    assert!(back.is_inline());
+    assert_eq!(back, big);
+    let m = Rational::from_i128_ratio(i128::MIN, 1).unwrap();
+    assert!(!m.is_inline());
+    assert!(m.is_canonical());
+    assert_eq!(-(-m.clone()), m);
+}
+
+#[test]
+fn parse_and_print() {
+    for s in ["0", "-12", "3/4", "-7/9"] {
+        assert_eq!(s.parse::<Rational>().unwrap().to_string(), s);
+    }
+    assert_eq!("0.125".parse::<Rational>().unwrap(), q(1, 8));
+    assert_eq!("-0.5".parse::<Rational>().unwrap(), q(-1, 2));
+    assert_eq!("6/-4".parse::<Rational>().unwrap(), q(-3, 2));
+    assert!(matches!(
+        "1/0".parse::<Rational>(),
+        Err(ParseRationalError::DivisionByZero { pos: 2 })
+    ));
+    for bad in ["", "1/", "a", "1.2.3", "1.", "0x10", "2 3", "1e", "sin(1)"] {
+        assert!(bad.parse::<Rational>().is_err(), "{bad:?} parsed");
+    }
+    // The one grammar: signs, products, powers and perfect-square roots are constants too.
+    assert_eq!("--1".parse::<Rational>().unwrap(), q(1, 1));
+    assert_eq!(" 2^-3 ".parse::<Rational>().unwrap(), q(1, 8));
+    assert_eq!("sqrt(9/4)".parse::<Rational>().unwrap(), q(3, 2));
+}
+
+#[test]
+fn scientific_notation_is_exact() {
+    // Regression: the old parser had no exponents ("1e3" was malformed, "5e0" rejected).
+    assert_eq!("1e3".parse::<Rational>().unwrap(), q(1000, 1));
+    assert_eq!("2.5e-3".parse::<Rational>().unwrap(), q(1, 400));
+    assert_eq!("1E+5".parse::<Rational>().unwrap(), q(100_000, 1));
+    assert_eq!("5e0".parse::<Rational>().unwrap(), q(5, 1));
+    assert_eq!("-0.0e7".parse::<Rational>().unwrap(), Rational::ZERO);
+    // The digits limit counts the decimal exponent: 1e10000 has 10,001 digits.
+    assert_eq!(
+        "1e10000".parse::<Rational>().unwrap_err().to_string(),
+        "at 0: digits of a number exceeds the limit digits = 10000 digits (found 10001; \
+         raise it with --limit digits=N)"
+    );
+    assert!("1e-9999".parse::<Rational>().is_ok());
+}
+
+#[test]
+fn big_rational_round_trip() {
+    let x: Rational = "123456789012345678901234567890123456789012345/98765432109876543210987"
+        .parse()
+        .unwrap();
+    assert!(!x.is_inline());
+    let b = x.to_big_rational();
+    assert_eq!(Rational::from(b), x);
+}
+
+/// A big rational `n / (den_factor * m)` from seeded random limbs (canonicalised).
+fn random_big(st: &mut exactcheck_core::Rng, limbs: usize, den_factor: u64) -> BigRational {
+    let mut rnd = |k: usize| {
+        let v: Vec<u64> = (0..k).map(|_| st.next_u64()).collect();
+        crate::bigint::biguint_from_limbs(&v)
+    };
+    let n = BigInt::from(rnd(limbs)) * if limbs % 2 == 0 { 1 } else { -1 };
+    let d = BigInt::from(rnd(limbs)) * den_factor + 1u32;
+    BigRational::new(n, d * den_factor)
+}
+
+#[test]
+fn big_plus_word_matches_reference() {
+    // The limb-kernel path (add_big_word) against add_big and num-rational, with shared
+    // denominator factors so that g = gcd(b, d) and g2 = gcd(t, g) are non-trivial.
+    let mut st = exactcheck_core::Rng::new(0xadd);
+    let words: [(i64, i64); 12] = [
+        (1, 1),
+        (-1, 1),
+        (7, 30),
+        (-11, 60),
+        (1, 2),
+        (5, 4096),
+        (-3, 1 << 40),
+        (i64::MAX, 1),
+        (i64::MIN + 1, 3),
+        (13, 2_147_483_647),
+        (-1, 9_007_199_254_740_881),
+        (1_000_000_007, 999_999_999_999),
+    ];
+    for limbs in [3usize, 4, 5, 40] {
+        for factor in [1u64, 6, 30, 1 << 20, 2_147_483_647] {
+            let x = random_big(&mut st, limbs, factor);
+            let fx = Rational::from(x.clone());
+            assert!(!fx.is_inline());
+            for (n, d) in words {
+                let y = BigRational::new(n.into(), d.into());
+                let fy = q(n, d);
+                let (xb, xd) = fx.big_parts();
+                let (yb, yd) = fy.big_parts();
+                for sub in [false, true] {
+                    let expected = if sub { &x - &y } else { &x + &y };
+                    let got = fx.add_impl(&fy, sub);
+                    assert!(got.is_canonical(), "{x} {y} {sub}");
+                    assert_eq!(got.to_big_rational(), expected, "{x} +- {y}");
+                    let reference = add_big(&xb, &xd, &yb, &yd, sub);
+                    assert_eq!(got, reference);
+                    // Word operand first: y + x and y - x.
+                    let back = fy.add_impl(&fx, sub);
+                    let expected = if sub { &y - &x } else { &y + &x };
+                    assert!(back.is_canonical());
+                    assert_eq!(back.to_big_rational(), expected);
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn big_plus_word_cancels_and_demotes() {
+    // x + w where the sum is zero, an integer, or fits inline again.
+    let big = Rational::from_i128_ratio(i128::MAX, 7).unwrap().square();
+    assert!(!big.is_inline());
+    let w = q(1, 49);
+    let s = &big + &w;
+    assert_eq!(&s - &w, big);
+    assert_eq!(&(&s - &big) - &w, Rational::ZERO);
+    // Big integer minus a word integer, and a big value whose difference is inline.
+    let two64 = Rational::from(BigInt::from(1) << 127u32);
+    assert!(!two64.is_inline());
+    let d = &two64 - &q(1, 1);
+    assert!(d.is_inline());
+    assert_eq!(d.inline_parts(), Some((i128::MAX, 1)));
+    assert_eq!(&q(1, 1) - &two64, -d);
+}
+
+#[test]
+fn pairwise_sum() {
+    let v: Vec<Rational> = (1..=10).map(|k| q(1, k * (k + 1))).collect();
+    assert_eq!(exactcheck_core::pairwise_sum(v), q(10, 11));
+    assert_eq!(
+        exactcheck_core::pairwise_sum(Vec::<Rational>::new()),
+        Rational::ZERO
+    );
+}
