@@ -179,7 +179,7 @@ fn sides_of_different_shapes_are_one_line_errors() {
         ("[a, b]", "a", "LHS is a vector of 2, RHS is a scalar"),
         (
             "[[a, b], [c, d]]",
-            "[[a, b, c], [d, e, f]]",
+            "[[a, b, c], [d, f, g]]",
             "LHS is a 2x2 matrix, RHS is a 2x3 matrix",
         ),
         (

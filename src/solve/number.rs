@@ -507,7 +507,10 @@ mod tests {
         let q = |n: i64, d: i64| Radical::from(Rational::new(n, d).unwrap());
         for (text, want) in [
             ("integrate(t^2, t, 0, 1)", q(1, 3)),
-            ("integrate(t^2, t, 0, sqrt(2))", Radical::sqrt_of(2) * q(2, 3)),
+            (
+                "integrate(t^2, t, 0, sqrt(2))",
+                Radical::sqrt_of(2) * q(2, 3),
+            ),
             ("subs(diff(t^3, t), t, 2)", q(12, 1)),
             ("diff(t^3, t, 3)", q(6, 1)),
             ("sum(k, 1, 4, k^2)/binomial(5, 2)", q(3, 1)),

@@ -447,5 +447,8 @@ fn components_are_named_by_their_shape() {
     assert_eq!(Shape::Matrix(2, 3).component(4), "entry (2, 2)");
     assert_eq!(Shape::Matrix(2, 3).len(), 6);
     assert_eq!(Shape::Matrix(2, 3).to_string(), "a 2x3 matrix");
-    assert_eq!(resolve("[[1, 2], [3, 4]]").unwrap().dims(), Shape::Matrix(2, 2));
+    assert_eq!(
+        resolve("[[1, 2], [3, 4]]").unwrap().dims(),
+        Shape::Matrix(2, 2)
+    );
 }

@@ -427,7 +427,13 @@ mod tests {
             vars,
             relations: Vec::new(),
             domains: Vec::new(),
-            labels: vec!["the residual".into()],
+            // The catalogue names its residuals; a scalar identity of the other voices has no
+            // component names.
+            labels: if voice == Voice::Catalogue {
+                vec!["the residual".into()]
+            } else {
+                Vec::new()
+            },
             corrected: Vec::new(),
             nonzero_texts: Vec::new(),
             domain_texts: Vec::new(),
@@ -454,6 +460,34 @@ mod tests {
             phrasing(Voice::Prove, &vars).method::<Rational>(),
             "symbolic expansion over Q[a,b]"
         );
+    }
+
+    #[test]
+    fn components_are_named_in_the_prove_and_claims_voices() {
+        let mut vars = Vars::new();
+        let mut side = |t: &str| {
+            parse_expr(t)
+                .unwrap()
+                .to_ratfun::<Rational>(&mut vars)
+                .unwrap()
+        };
+        let coordinates = vec![
+            Statement::Sides(side("u"), side("u")),
+            Statement::Sides(side("v"), side("2*v")),
+        ];
+        let spec = IdentitySpec::new(vars, coordinates);
+        let r = decide_identity(&spec).unwrap();
+        let mut p = phrasing(Voice::Prove, &spec.vars);
+        p.labels = vec!["component 1 (x)".into(), "component 2 (y)".into()];
+        assert!(
+            p.evidence(&r).starts_with("in component 2 (y): at "),
+            "{}",
+            p.evidence(&r)
+        );
+        p.voice = Voice::ClaimsFile;
+        assert!(p.evidence(&r).starts_with("in component 2 (y): at "));
+        p.labels.clear();
+        assert!(p.evidence(&r).starts_with("coordinate 2: at "));
     }
 
     #[test]
