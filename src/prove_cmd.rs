@@ -1,6 +1,12 @@
 //! `exactcheck prove 'LHS' ['RHS'] [--where 'A = B' | --where 'r > 0' ...] [--random K]`: the
 //! user's own polynomial identities.
 //!
+//! The sides may be two vectors or two matrices of one shape: the identity is then one statement
+//! per component for the identity engine (and one random test per component), the verdict
+//! `proved` only when every component is, a failure or an undecided result naming its
+//! components (`in component 2 (y)`, `entry (1, 2)`); sides of different shapes are an input
+//! error.
+//!
 //! Both sides (and each relation) are parsed in the expression syntax (numbers, `sqrt(k)`,
 //! `diff(E, t[, k])`, variables, `+ - * / ^`, parentheses) with the function library of
 //! `exactcheck_exact::expr::library` (`dot`, `cross`, `norm2`, `det` of `[[a, b], [c, d]]`,
@@ -25,20 +31,24 @@
 //! nested square roots do not denest (`sqrt(2 + sqrt(2))`) is decided in the real algebraic
 //! numbers (`exactcheck_exact::algebraic`).
 
+mod random;
+
 use crate::Error;
 use clap::Args;
 use exactcheck_core::Ring;
+use exactcheck_exact::expr::library::{self, Shape};
 use exactcheck_exact::expr::{
-    angles, describe_point, first_reserved, has_trig, library, Coefficient, Expr, ExprError, PI,
+    angles, describe_point, first_reserved, has_trig, Coefficient, Expr, ExprError, PI,
 };
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
-    decide_identity, factored, real_zero_free, square_roots, Domain, EngineError, FractionIdentity,
-    IdentityReport, IdentitySpec, IdentityVerdict, Part, Phrasing, PointField, RadicalPoint,
-    SquareRoot, Statement, Voice, HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
+    decide_identity, factored, real_zero_free, square_roots, CoordinateOutcome, Domain,
+    EngineError, FractionIdentity, IdentityReport, IdentitySpec, IdentityVerdict, Part, Phrasing,
+    PointField, RadicalPoint, SquareRoot, Statement, Voice,
 };
 use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::{Algebraic, Radical, Rational};
+use random::random_test;
 use serde_json::json;
 use std::fmt::Display;
 use std::process::ExitCode;
@@ -48,7 +58,8 @@ use std::process::ExitCode;
 pub struct ProveArgs {
     /// The left-hand side (a leading minus is part of the expression: '-x^2'). Besides sqrt and
     /// diff, the sides may use vec, dot, cross, norm2, x, y, z, at, det, transpose, bernstein,
-    /// bezier, subs, lists [a, b] and matrices [[a, b], [c, d]] (docs/formulas.md).
+    /// bezier, subs, lists [a, b] and matrices [[a, b], [c, d]] (docs/formulas.md). Two vectors
+    /// or two matrices of one shape are compared component by component.
     #[arg(allow_hyphen_values = true)]
     pub lhs: String,
     /// The right-hand side (default 0).
@@ -208,143 +219,6 @@ pub fn fresh_seed() -> u64 {
     h.finish()
 }
 
-/// `prove --random K`: randomized identity testing modulo a random prime, no expansion.
-fn random_test(
-    args: &ProveArgs,
-    trials: u64,
-    lhs: &Expr,
-    rhs: &Expr,
-    relations: &[(Expr, Expr)],
-    has_domains: bool,
-) -> Result<ExitCode, Error> {
-    use exactcheck_exact::prove::{random_identity_test, unit_circle_pairs, RandomDecision, Seed};
-    let trials = match u32::try_from(trials) {
-        Ok(k) if (1..=MAX_RANDOM_TRIALS).contains(&k) => k,
-        _ => {
-            return Err(Error::Usage(format!(
-                "--random takes 1 to {MAX_RANDOM_TRIALS} points, not {trials}"
-            )))
-        }
-    };
-    if has_domains {
-        return Err(Error::Usage(
-            "--random does not take domains ('r > 0'); run without --random".into(),
-        ));
-    }
-    let mut vars = Vars::new();
-    let mut rels = Vec::new();
-    for (i, (a, b)) in relations.iter().enumerate() {
-        let a = to_poly::<Rational>(a, &mut vars, &format!("--where #{}", i + 1))?;
-        let b = to_poly::<Rational>(b, &mut vars, &format!("--where #{}", i + 1))?;
-        rels.push(a - b);
-    }
-    let (pairs, others) = unit_circle_pairs(&rels);
-    if !others.is_empty() {
-        return Err(Error::Usage(
-            "--random supports only unit-circle relations 'c^2 + s^2 = 1'".into(),
-        ));
-    }
-    let name = |v: Var| {
-        vars.name(v)
-            .expect("relation variables are in the table")
-            .to_string()
-    };
-    let circles: Vec<(String, String)> = pairs.iter().map(|&(c, s)| (name(c), name(s))).collect();
-    let mut names = Vec::new();
-    lhs.collect_variables(&mut names);
-    rhs.collect_variables(&mut names);
-    let chosen = args.seed.map(Seed::Chosen);
-    let seed_of_run = chosen.unwrap_or_else(|| Seed::Fresh(fresh_seed()));
-    let seed = seed_of_run.value();
-    let decision = random_identity_test(lhs, rhs, &names, &circles, trials, seed_of_run)
-        .map_err(Error::Input)?;
-    let report = match &decision {
-        RandomDecision::Holds { report, .. }
-        | RandomDecision::Reproduced { report }
-        | RandomDecision::Undecided { report, .. }
-        | RandomDecision::Fails { report, .. } => report,
-    };
-    let method = format!(
-        "evaluation at {trials} random points modulo the random prime p = {} (seed {seed}{}{}{})",
-        report.prime,
-        if chosen.is_some() { ", chosen" } else { "" },
-        if report.redrawn > 0 {
-            format!(", {} primes dividing a divisor redrawn", report.redrawn)
-        } else {
-            String::new()
-        },
-        if report.poles > 0 {
-            format!(", {} points where a divisor vanishes skipped", report.poles)
-        } else {
-            String::new()
-        }
-    );
-    let show = |l: f64| {
-        if l == f64::NEG_INFINITY {
-            "0".to_string()
-        } else {
-            // Rounded up, so the printed bound is still a bound.
-            format!("2^{:.1}", (l * 10.0).ceil() / 10.0)
-        }
-    };
-    let mut log2 = None;
-    let (verdict, evidence, code) = match &decision {
-        RandomDecision::Holds { bound, log2_bound, .. } => {
-            log2 = Some(*log2_bound);
-            (
-                "holds",
-                format!(
-                    "LHS - RHS vanishes at all {trials} points; with LHS - RHS = F/D ({bound}), a false identity passes with probability <= {} (below the threshold 2^{HOLDS_THRESHOLD_LOG2})",
-                    show(*log2_bound)
-                ),
-                ExitCode::SUCCESS,
-            )
-        }
-        RandomDecision::Reproduced { .. } => (
-            "holds (reproduced)",
-            format!(
-                "LHS - RHS vanishes at all {trials} points modulo the prime drawn from the chosen seed {seed} and the identity; a chosen seed gives no probability bound (it need not be independent of the identity): run without --seed for a fresh seed and the proved bound"
-            ),
-            ExitCode::SUCCESS,
-        ),
-        RandomDecision::Undecided { bound, log2_bound, .. } => {
-            log2 = Some(*log2_bound);
-            let why = match bound {
-                Some(b) => format!(
-                    "with LHS - RHS = F/D ({b}) the error bound{} is {}, not below the threshold 2^{HOLDS_THRESHOLD_LOG2}",
-                    if chosen.is_some() { " a fresh seed would give" } else { "" },
-                    show(*log2_bound)
-                ),
-                None => "the size and degree bounds of LHS - RHS do not fit in 64 bits, so no error bound can be given".to_string(),
-            };
-            (
-                "undecided",
-                format!("LHS - RHS vanishes at all {trials} points, but {why}; use more points (--random up to {MAX_RANDOM_TRIALS}) or exact mode (no --random)"),
-                ExitCode::from(1),
-            )
-        }
-        RandomDecision::Fails { point, value, .. } => (
-            "fails",
-            format!(
-                "LHS - RHS = {value} (mod p) at {}, so it is not zero; run without --random for an exact counter-example",
-                point.iter().map(|(v, x)| format!("{v} = {x}")).collect::<Vec<_>>().join(", ")
-            ),
-            ExitCode::from(1),
-        ),
-    };
-    if args.json {
-        let mut obj = json!({"verdict": verdict, "method": method, "evidence": evidence,
-            "seed": seed, "prime": report.prime});
-        if let Some(l) = log2 {
-            obj["log2_error_bound"] = if l.is_finite() { json!(l) } else { json!(null) };
-        }
-        crate::output::println(&obj)?;
-    } else {
-        crate::output::println(format_args!("{verdict}: {evidence} [{method}]"))?;
-    }
-    Ok(code)
-}
-
 /// Parses `text` (named `what` in messages), resolving the library functions (`dot`, `det`,
 /// `bezier`, matrices, ...) to a scalar expression; a free variable `pi`, `e` or `i` is refused
 /// ([`reserved_constant`](exactcheck_exact::expr::reserved_constant)).
@@ -358,15 +232,65 @@ fn parse(text: &str, what: &str) -> Result<Expr, Error> {
     }
 }
 
+/// Parses a side of `prove` (named `what` in messages) with the library functions resolved: a
+/// scalar, a vector or a matrix; a free variable `pi`, `e` or `i` in a component is refused.
+fn parse_value(text: &str, what: &str) -> Result<library::Val, Error> {
+    let v = library::Defs::default()
+        .resolve_text(text)
+        .map_err(|e| Error::Input(format!("{what}: {e}")))?;
+    match first_reserved(&v.components()) {
+        Some(why) => Err(Error::Input(format!("{what}: {why}"))),
+        None => Ok(v),
+    }
+}
+
+/// The two sides of `prove`, component by component, and their one shape.
+struct Sides<'a> {
+    lhs: &'a [Expr],
+    /// `None`: the right side is zero in every component.
+    rhs: Option<&'a [Expr]>,
+    shape: Shape,
+}
+
+impl Sides<'_> {
+    /// `in component 2 (y): ` for component `k` of a vector or matrix identity, empty for a
+    /// scalar one.
+    fn prefix(&self, k: usize) -> String {
+        match self.shape {
+            Shape::Scalar => String::new(),
+            s => format!("in {}: ", s.component(k)),
+        }
+    }
+
+    /// The names of the components (empty for a scalar identity), for [`Phrasing::labels`].
+    fn labels(&self) -> Vec<String> {
+        match self.shape {
+            Shape::Scalar => Vec::new(),
+            s => (0..s.len()).map(|k| s.component(k)).collect(),
+        }
+    }
+}
+
 /// Runs `exactcheck prove`.
 ///
 /// # Errors
 /// [`Error::Input`] for a malformed expression, relation or domain, a division by zero or by a
 /// non-constant, inconsistent relations; [`Error::Usage`] for a bad `--random` request.
 pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
-    let lhs = parse(&args.lhs, "LHS")?;
+    let lhs_value = parse_value(&args.lhs, "LHS")?;
+    let shape = lhs_value.dims();
+    let lhs = lhs_value.components();
     let rhs = match &args.rhs {
-        Some(r) => Some(parse(r, "RHS")?),
+        Some(r) => {
+            let v = parse_value(r, "RHS")?;
+            if v.dims() != shape {
+                return Err(Error::Input(format!(
+                    "the sides differ in shape: LHS is {shape}, RHS is {}; an identity compares sides of one shape component by component",
+                    v.dims()
+                )));
+            }
+            Some(v.components())
+        }
         None => None,
     };
     let mut relations = Vec::new();
@@ -396,12 +320,11 @@ pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
         ));
     }
     if let Some(k) = args.random {
-        let zero = parse("0", "RHS")?;
+        let zeros = vec![parse("0", "RHS")?; lhs.len()];
         return random_test(
             args,
             k,
-            &lhs,
-            rhs.as_ref().unwrap_or(&zero),
+            (&lhs, rhs.as_ref().unwrap_or(&zeros), shape),
             &relations,
             !domains.is_empty(),
         );
@@ -412,19 +335,26 @@ pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
         .chain(&args.rhs)
         .chain(&args.relations)
         .any(|s| s.contains("sqrt"))
-        || std::iter::once(&lhs)
-            .chain(rhs.as_ref())
+        || lhs
+            .iter()
+            .chain(rhs.iter().flatten())
             .chain(relations.iter().flat_map(|(a, b)| [a, b]))
             .any(has_trig);
+    let sides = Sides {
+        lhs: &lhs,
+        rhs: rhs.as_deref(),
+        shape,
+    };
     if radical {
-        if relations.is_empty() && domains.is_empty() && nonzero.is_empty() {
-            if let Some(code) = prove_algebraic_constants(args, &lhs, rhs.as_ref())? {
+        if relations.is_empty() && domains.is_empty() && nonzero.is_empty() && lhs.len() == 1 {
+            let rhs = rhs.as_ref().map(|r| &r[0]);
+            if let Some(code) = prove_algebraic_constants(args, &lhs[0], rhs)? {
                 return Ok(code);
             }
         }
-        prove_over::<Radical>(args, &lhs, rhs.as_ref(), &relations, &nonzero, &domains)
+        prove_over::<Radical>(args, &sides, &relations, &nonzero, &domains)
     } else {
-        prove_over::<Rational>(args, &lhs, rhs.as_ref(), &relations, &nonzero, &domains)
+        prove_over::<Rational>(args, &sides, &relations, &nonzero, &domains)
     }
 }
 
@@ -509,8 +439,7 @@ fn to_poly<C: Coefficient>(e: &Expr, vars: &mut Vars, what: &str) -> Result<Poly
 
 fn prove_over<C: PointField + Display>(
     args: &ProveArgs,
-    lhs: &Expr,
-    rhs: Option<&Expr>,
+    sides: &Sides,
     relations: &[(Expr, Expr)],
     nonzero: &[(Expr, Expr, String)],
     domains: &[(String, Domain, String)],
@@ -518,11 +447,19 @@ fn prove_over<C: PointField + Display>(
     let mut vars = Vars::new();
     // `sqrt` of a non-constant becomes a variable with its relation and sign condition.
     vars.allow_roots();
-    let l = to_ratfun::<C>(lhs, &mut vars, "LHS")?;
-    let r = match rhs {
-        Some(e) => to_ratfun::<C>(e, &mut vars, "RHS")?,
-        None => RatFun::from_poly(Poly::zero()),
-    };
+    let mut coordinates = Vec::new();
+    for (k, lhs) in sides.lhs.iter().enumerate() {
+        let what = |side: &str| match sides.shape {
+            Shape::Scalar => side.to_string(),
+            s => format!("{side}, {}", s.component(k)),
+        };
+        let l = to_ratfun::<C>(lhs, &mut vars, &what("LHS"))?;
+        let r = match sides.rhs {
+            Some(r) => to_ratfun::<C>(&r[k], &mut vars, &what("RHS"))?,
+            None => RatFun::from_poly(Poly::zero()),
+        };
+        coordinates.push(Statement::Sides(l, r));
+    }
     let mut rels = Vec::new();
     for (i, (a, b)) in relations.iter().enumerate() {
         let what = format!("--where #{}", i + 1);
@@ -569,15 +506,6 @@ fn prove_over<C: PointField + Display>(
         .iter()
         .map(|a| format!("cos({0})^2 + sin({0})^2 = 1", a.name))
         .collect();
-    // `LHS - RHS` (cleared of denominators where the engine clears them), for the value of a
-    // counter-example as a polynomial in pi.
-    let residual_for_pi = match pi {
-        Some(_) if l.is_polynomial() && r.is_polynomial() => {
-            Some(l.numerator().clone() - r.numerator())
-        }
-        Some(_) => FractionIdentity::new(&l, &r).ok().map(|f| f.residual),
-        None => None,
-    };
     let mut doms: Vec<(Var, Domain)> = Vec::new();
     for (v, d, text) in domains {
         if v == PI {
@@ -619,7 +547,7 @@ fn prove_over<C: PointField + Display>(
         relations: rels,
         domains: doms,
         hypotheses,
-        ..IdentitySpec::new(vars, vec![Statement::Sides(l, r)])
+        ..IdentitySpec::new(vars, coordinates)
     };
     let phrasing = Phrasing {
         voice: Voice::Prove,
@@ -632,7 +560,7 @@ fn prove_over<C: PointField + Display>(
             .chain(circle_texts)
             .collect(),
         domains: domains.iter().map(|(_, _, t)| t.clone()).collect(),
-        labels: Vec::new(),
+        labels: sides.labels(),
         corrected: Vec::new(),
         nonzero_texts,
         domain_texts: domains
@@ -677,10 +605,27 @@ fn prove_over<C: PointField + Display>(
         ""
     };
     let modulo = phrasing.modulo();
+    // `LHS - RHS` of the failing component (cleared of denominators where the engine clears
+    // them), for the value of a counter-example as a polynomial in pi.
+    let residual_for_pi = match (&report.verdict, pi) {
+        (IdentityVerdict::Fails { coordinate, .. }, Some(_)) => {
+            match &spec.coordinates[*coordinate] {
+                Statement::Sides(l, r) if l.is_polynomial() && r.is_polynomial() => {
+                    Some(l.numerator().clone() - r.numerator())
+                }
+                Statement::Sides(l, r) => FractionIdentity::new(l, r).ok().map(|f| f.residual),
+                Statement::Residual(p) => Some(p.clone()),
+            }
+        }
+        _ => None,
+    };
     let evidence = match (&report.verdict, pi, &residual_for_pi) {
         (
             IdentityVerdict::Fails {
-                normal_form, point, ..
+                coordinate,
+                normal_form,
+                point,
+                ..
             },
             Some(p),
             Some(res),
@@ -689,26 +634,28 @@ fn prove_over<C: PointField + Display>(
             let in_pi = in_pi::<C>(res, point, p).display(&spec.vars).to_string();
             let nf = factored(normal_form, &spec.vars);
             format!(
-                "{}LHS - RHS{cleared} = {in_pi}, a non-zero polynomial in pi, and pi is transcendental, so it is not zero; LHS - RHS{cleared} reduces{modulo} to {nf}",
+                "{}{}LHS - RHS{cleared} = {in_pi}, a non-zero polynomial in pi, and pi is transcendental, so it is not zero; LHS - RHS{cleared} reduces{modulo} to {nf}",
+                sides.prefix(*coordinate),
                 if at.is_empty() { String::new() } else { format!("at {}{rels_hold} ", at.join(", ")) },
             )
         }
         (
             IdentityVerdict::Fails {
+                coordinate,
                 normal_form,
                 point,
                 value,
-                ..
             },
             _,
             _,
         ) if !angle_list.is_empty() => {
             let at = shown_point(point).join(", ");
             let nf = factored(normal_form, &spec.vars);
+            let prefix = sides.prefix(*coordinate);
             if report.cleared_any() {
-                format!("at {at}{rels_hold} LHS - RHS = {value}; LHS - RHS{cleared} reduces{modulo} to {nf}, not zero")
+                format!("{prefix}at {at}{rels_hold} LHS - RHS = {value}; LHS - RHS{cleared} reduces{modulo} to {nf}, not zero")
             } else {
-                format!("at {at}{rels_hold} LHS - RHS = {value}; LHS - RHS reduces{modulo} to {nf}, so LHS = RHS + ({nf})")
+                format!("{prefix}at {at}{rels_hold} LHS - RHS = {value}; LHS - RHS reduces{modulo} to {nf}, so LHS = RHS + ({nf})")
             }
         }
         _ => phrasing.evidence(&report),
@@ -719,8 +666,28 @@ fn prove_over<C: PointField + Display>(
             "verdict": verdict,
             "method": format!("{}{}", phrasing.method::<C>(), if pi.is_some() { " (pi an indeterminate: it is transcendental)" } else { "" }),
             "evidence": evidence,
-            "residual_terms": report.residual_terms[0],
+            "residual_terms": report.residual_terms.iter().sum::<usize>(),
         });
+        if sides.shape != Shape::Scalar {
+            obj["shape"] = json!(sides.shape.to_string());
+            obj["components"] = report
+                .outcomes
+                .iter()
+                .enumerate()
+                .map(|(k, o)| {
+                    json!({
+                        "component": sides.shape.component(k),
+                        "verdict": match o {
+                            CoordinateOutcome::Proved => "proved",
+                            CoordinateOutcome::Fails => "fails",
+                            CoordinateOutcome::Undecided => "undecided",
+                        },
+                        "residual_terms": report.residual_terms[k],
+                    })
+                })
+                .collect::<Vec<_>>()
+                .into();
+        }
         if let IdentityVerdict::Proved { used, .. } = &report.verdict {
             if !used.is_empty() {
                 obj["hypotheses_used"] = json!(used
@@ -764,6 +731,11 @@ fn prove_over<C: PointField + Display>(
                 })
                 .collect::<serde_json::Map<_, _>>()
                 .into();
+            if let IdentityVerdict::Fails { coordinate, .. } = &report.verdict {
+                if sides.shape != Shape::Scalar {
+                    obj["failing_component"] = json!(sides.shape.component(*coordinate));
+                }
+            }
             obj["value"] = match (pi, &residual_for_pi) {
                 (Some(p), Some(res)) => json!(in_pi::<C>(res, point, p).display(vars).to_string()),
                 _ => json!(value.to_string()),

@@ -177,6 +177,43 @@ fn functions_matrices_and_vector_values_are_decided() {
 }
 
 #[test]
+fn vector_and_matrix_identities_are_decided_component_by_component() {
+    let out = exactcheck(&["verify", "tests/claims_file/vectors.toml", "--json"]);
+    // The shape mismatch is a bad claim: the file exits 2, every other claim is decided.
+    assert_eq!(out.status.code(), Some(2), "{out:?}");
+    let rows: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON rows");
+    let rows = rows.as_array().unwrap();
+    let verdicts: Vec<(&str, &str)> = rows
+        .iter()
+        .map(|r| (r["id"].as_str().unwrap(), r["verdict"].as_str().unwrap()))
+        .collect();
+    assert_eq!(
+        verdicts,
+        [
+            ("vectors.hodograph", "proved"),
+            ("vectors.orthogonal", "proved"),
+            ("vectors.misprinted_hodograph", "fails"),
+            ("vectors.shapes", "error"),
+            ("vectors.derivative_at_a_point", "holds"),
+            ("vectors.sum_of_squares", "holds"),
+            ("vectors.bound_names", "holds"),
+        ],
+        "{rows:?}"
+    );
+    // The failure names its component and the counter-example inside the domain.
+    let misprint = rows[2]["evidence"].as_str().unwrap();
+    assert!(
+        misprint.starts_with("in component 2 (y): at t = 1/2"),
+        "{misprint}"
+    );
+    let shapes = rows[3]["evidence"].as_str().unwrap();
+    assert!(
+        shapes.contains("key rhs: a 2x2 matrix but lhs is a vector of 4"),
+        "{shapes}"
+    );
+}
+
+#[test]
 fn a_misprint_fails_with_a_counter_example_and_an_erratum() {
     let example = std::fs::read_to_string(root().join("examples/spaeth.toml")).unwrap();
     let fixture =

@@ -3,7 +3,7 @@
 //! vectors, matrices and the library functions (`dot`, `cross`, `det`, `bezier`, ...) for every
 //! formula of the file, as `prove` resolves its sides.
 
-pub use exactcheck_exact::expr::library::{has_sqrt, substitute, DefText, Defs, Val};
+pub use exactcheck_exact::expr::library::{has_sqrt, substitute_free, DefText, Defs, Val};
 
 use serde_json::{Map, Value};
 

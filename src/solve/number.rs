@@ -44,6 +44,10 @@ enum Written {
     Text(String),
 }
 
+/// The number strings of the contract, in one sentence: every schema description of a number
+/// field is built from it, so that the schemas state the language the parser reads.
+pub(crate) const EXACT_STRING: &str = "a string in the exact expression language of prove: integers, fractions \"-3/4\", decimals \"0.1\" (exactly 1/10) and \"2.5e-3\", + - * / ^ and parentheses, sqrt with nested radicals that denest (\"1/sqrt(2)\", \"sqrt(3 + 2*sqrt(2))\"), sin, cos and tan of rational multiples of pi or of angles in degrees (\"cos(pi/6)\", \"sin(45°)\"), and the library functions (binomial, factorial, sum, integrate, diff, det, dot, cross, norm2, ...), whose value is a constant of the square-root field";
+
 /// What a number field expects, for type errors.
 const EXPECTED: &str =
     "a number: a JSON integer or a string in the exact syntax such as \"-3/4\" or \"sqrt(2)/2\"";
@@ -87,14 +91,16 @@ fn kind_of(v: &Value) -> &'static str {
 /// The exact value of a number string: a constant formula of the one expression language
 /// (the library's `det`, `dot`, `norm2`, ... included, so `"det([[1, 2], [3, 4]])"` and
 /// `"binomial(5, 2)/3"` are numbers), resolved by [`library::resolve`] and evaluated in the
-/// radical field. A vector or matrix, or a formula with a variable, is a one-line error (the
+/// radical field; a `diff`, `integrate` or `sum` with a variable of its own inside
+/// (`"integrate(t^2, t, 0, 1)"`) is lowered to arithmetic first
+/// ([`eval_lowered`](exactcheck_exact::expr::eval_lowered)). A vector or matrix, or a formula with a variable, is a one-line error (the
 /// caller puts the field's path in front of it).
 pub(crate) fn parse_radical(text: &str) -> Result<Radical, String> {
     let quoted = |m: String| format!("{text:?}: {m}");
     match library::resolve(text).map_err(|e| quoted(e.to_string()))? {
-        Val::Scalar(e) => e
-            .eval_constant::<Radical>()
-            .map_err(|e| quoted(e.to_string())),
+        Val::Scalar(e) => {
+            exactcheck_exact::expr::eval_lowered::<Radical>(&e).map_err(|e| quoted(e.to_string()))
+        }
         v => Err(quoted(format!("{} where a number is expected", v.shape()))),
     }
 }
@@ -200,7 +206,7 @@ impl JsonSchema for ExactNumber {
 
     fn json_schema(_: &mut SchemaGenerator) -> Schema {
         json_schema!({
-            "description": "An exact number: a JSON integer of any size, or a string in the exact syntax (integers, fractions \"-3/4\", decimals \"0.1\" meaning 1/10, \"sqrt(k)\", + - * / ^, parentheses). JSON floating-point literals are refused in exact mode (accepted with --float).",
+            "description": format!("An exact number: a JSON integer of any size, or {EXACT_STRING}. JSON floating-point literals are refused in exact mode (accepted with --float)."),
             "anyOf": [{"type": "integer"}, {"type": "string"}]
         })
     }
@@ -228,7 +234,7 @@ impl JsonSchema for RationalNumber {
 
     fn json_schema(_: &mut SchemaGenerator) -> Schema {
         json_schema!({
-            "description": "An exact rational number: a JSON integer of any size, or a string in the exact syntax whose value is rational (\"-3/4\", \"0.1\", \"sqrt(4)/3\"). JSON floating-point literals are refused in exact mode (accepted with --float).",
+            "description": format!("An exact rational number: a JSON integer of any size, or {EXACT_STRING}; the value must be rational. JSON floating-point literals are refused in exact mode (accepted with --float)."),
             "anyOf": [{"type": "integer"}, {"type": "string"}]
         })
     }
@@ -268,7 +274,7 @@ impl JsonSchema for FloatNumber {
 
     fn json_schema(_: &mut SchemaGenerator) -> Schema {
         json_schema!({
-            "description": "A number for f64 computation: any JSON number or a string in the exact syntax, rounded to the nearest f64, which must be finite.",
+            "description": format!("A number for f64 computation: any JSON number, or {EXACT_STRING}; rounded to the nearest f64, which must be finite."),
             "anyOf": [{"type": "number"}, {"type": "string"}]
         })
     }
@@ -293,7 +299,7 @@ impl JsonSchema for Radians {
 
     fn json_schema(_: &mut SchemaGenerator) -> Schema {
         json_schema!({
-            "description": "An angle in radians: any JSON number (floating literals accepted in every mode, since radians are approximate) or a string in the exact syntax; it must be finite as an f64.",
+            "description": format!("An angle in radians: any JSON number (floating literals accepted in every mode, since radians are approximate), or {EXACT_STRING}; it must be finite as an f64."),
             "anyOf": [{"type": "number"}, {"type": "string"}]
         })
     }
@@ -357,5 +363,26 @@ mod tests {
             }
         }
         assert_eq!(exact_decimal("1e99999999"), None);
+    }
+
+    #[test]
+    fn number_strings_with_bound_variables_are_lowered_before_evaluation() {
+        let q = |n: i64, d: i64| Radical::from(Rational::new(n, d).unwrap());
+        for (text, want) in [
+            ("integrate(t^2, t, 0, 1)", q(1, 3)),
+            (
+                "integrate(t^2, t, 0, sqrt(2))",
+                Radical::sqrt_of(2) * q(2, 3),
+            ),
+            ("subs(diff(t^3, t), t, 2)", q(12, 1)),
+            ("diff(t^3, t, 3)", q(6, 1)),
+            ("sum(k, 1, 4, k^2)/binomial(5, 2)", q(3, 1)),
+            ("integrate(diff(t^4, t), t, 0, 1/2)", q(1, 16)),
+        ] {
+            assert_eq!(parse_radical(text).unwrap(), want, "{text}");
+        }
+        // A derivative that keeps its variable is no number: the error names the variable.
+        let e = parse_radical("diff(t^3, t)").unwrap_err();
+        assert!(e.contains("variable 't'"), "{e}");
     }
 }

@@ -414,3 +414,41 @@ proptest! {
         prop_assert_eq!(got, want);
     }
 }
+
+#[test]
+fn calculus_of_a_vector_or_matrix_is_taken_per_component() {
+    let texts = |v: &Val| -> Vec<String> { v.components().iter().map(|e| e.to_string()).collect() };
+    let d = resolve("diff([t^2, t^3], t)").unwrap();
+    assert_eq!(d.dims(), Shape::Vector(2));
+    assert_eq!(
+        texts(&d),
+        texts(&resolve("[diff(t^2, t), diff(t^3, t)]").unwrap())
+    );
+    let i = resolve("integrate([[1, t], [t^2, 0]], t, 0, u)").unwrap();
+    assert_eq!(i.dims(), Shape::Matrix(2, 2));
+    assert_eq!(
+        texts(&i)[2],
+        resolve("integrate(t^2, t, 0, u)").unwrap().components()[0].to_string()
+    );
+    let s = resolve("sum(k, 0, 2, [k, k^2, 1])").unwrap();
+    assert_eq!(s.dims(), Shape::Vector(3));
+    // Only the body may be a vector: the variable and the bounds are scalars.
+    let e = resolve("integrate(t, t, 0, [1, 2])").unwrap_err();
+    assert!(e.message.contains("a vector of 2"), "{}", e.message);
+    assert!(resolve("binomial([1, 2], 1)").is_err());
+}
+
+#[test]
+fn components_are_named_by_their_shape() {
+    assert_eq!(Shape::Scalar.component(0), "");
+    assert_eq!(Shape::Vector(2).component(1), "component 2 (y)");
+    assert_eq!(Shape::Vector(3).component(2), "component 3 (z)");
+    assert_eq!(Shape::Vector(4).component(3), "component 4");
+    assert_eq!(Shape::Matrix(2, 3).component(4), "entry (2, 2)");
+    assert_eq!(Shape::Matrix(2, 3).len(), 6);
+    assert_eq!(Shape::Matrix(2, 3).to_string(), "a 2x3 matrix");
+    assert_eq!(
+        resolve("[[1, 2], [3, 4]]").unwrap().dims(),
+        Shape::Matrix(2, 2)
+    );
+}

@@ -70,6 +70,34 @@ pub fn lower(e: &Expr) -> Result<Expr, ExprError> {
     Ok(out)
 }
 
+/// The exact value of a constant formula, also when a `diff`, `integrate` or `sum` inside binds
+/// a variable of its own (`integrate(t^2, t, 0, 1)`, `diff(t^3, t)` at a point after a
+/// substitution): evaluated as written when that succeeds, else lowered first ([`lower`]) and
+/// then evaluated. The front ends that read a constant (the number strings of `solve`, the
+/// instances of a claims file) evaluate through here.
+///
+/// ```
+/// use exactcheck_exact::expr::{eval_lowered, parse_expr};
+/// use exactcheck_exact::Rational;
+///
+/// let e = parse_expr("integrate(t^2, t, 0, 1) + sum(k, 1, 3, k)").unwrap();
+/// assert_eq!(eval_lowered::<Rational>(&e).unwrap(), Rational::new(19, 3).unwrap());
+/// ```
+///
+/// # Errors
+/// The error of the lowered tree's evaluation (a free variable, a division by zero, ...), or of
+/// the evaluation as written when the lowering itself fails.
+pub fn eval_lowered<C: Coefficient>(e: &Expr) -> Result<C, ExprError> {
+    let direct = match e.eval_constant::<C>() {
+        Ok(v) => return Ok(v),
+        Err(err) => err,
+    };
+    match lower(e) {
+        Ok(lowered) => lowered.eval_constant::<C>(),
+        Err(_) => Err(direct),
+    }
+}
+
 fn lower_node(e: &Expr) -> Result<Expr, ExprError> {
     let boxed = |x: &Expr| lower_node(x).map(Box::new);
     let kind = match &e.kind {

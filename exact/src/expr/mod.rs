@@ -140,7 +140,7 @@ mod trig;
 mod w1;
 
 pub use latex::{equation_to_latex, to_latex, Notation};
-pub use lower::lower;
+pub use lower::{eval_lowered, lower};
 pub use mathml::{equation_to_mathml, to_mathml};
 pub use parse::{parse_expr, parse_expr_with_calls, parse_poly, LIST};
 pub(crate) use trig::angle_text;

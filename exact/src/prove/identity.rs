@@ -8,8 +8,9 @@
 //! denominators (which become hypotheses); a coordinate between polynomials (and no hypothesis)
 //! is decided as the polynomial `lhs - rhs` ([`super::decide_in`]), anything else with the
 //! denominators cleared ([`super::decide_fraction`]), a residual given as such with the
-//! hypotheses as non-zero conditions ([`super::decide_where`]). The coordinates are decided in
-//! order; the first that is not proved decides the claim.
+//! hypotheses as non-zero conditions ([`super::decide_where`]). Every coordinate is decided
+//! (the report lists each one's verdict, [`IdentityReport::outcomes`]); the first that fails
+//! decides the claim, else the first undecided one, else it is proved.
 
 use super::{
     counter_example, decide_fraction, decide_in, decide_where, DecideError, Decision, Domain,
@@ -110,6 +111,17 @@ pub enum IdentityVerdict<C: PointField> {
     },
 }
 
+/// The verdict on one coordinate of an identity.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CoordinateOutcome {
+    /// The coordinate's two sides are equal.
+    Proved,
+    /// A verified counter-example to the coordinate was found.
+    Fails,
+    /// Its normal form is not zero, but no counter-example was found.
+    Undecided,
+}
+
 /// The verdict on a corrected form (proved equal to the right side, or not).
 #[derive(Clone, Debug)]
 pub enum CorrectionVerdict<C: PointField> {
@@ -138,6 +150,8 @@ pub struct IdentityReport<C: PointField> {
     pub verdict: IdentityVerdict<C>,
     /// Per coordinate: whether it was decided with the denominators cleared.
     pub cleared: Vec<bool>,
+    /// Per coordinate: its verdict.
+    pub outcomes: Vec<CoordinateOutcome>,
     /// Per coordinate: the terms of its residual (polynomial or cleared) before reduction.
     pub residual_terms: Vec<usize>,
     /// The side conditions: every divisor of the sides, of the relations and every hypothesis,
@@ -153,6 +167,13 @@ impl<C: PointField> IdentityReport<C> {
     /// Whether any coordinate was decided with the denominators cleared.
     pub fn cleared_any(&self) -> bool {
         self.cleared.iter().any(|c| *c)
+    }
+
+    /// The coordinates (0-based) whose verdict is `outcome`.
+    pub fn coordinates_with(&self, outcome: CoordinateOutcome) -> Vec<usize> {
+        (0..self.outcomes.len())
+            .filter(|&k| self.outcomes[k] == outcome)
+            .collect()
     }
 }
 
@@ -286,12 +307,15 @@ pub fn decide_identity<C: PointField>(
     let mut expanded = 0;
     let mut used = Vec::new();
     let mut verdict = None;
+    let mut undecided = None;
+    let mut outcomes = Vec::new();
     for (k, p) in prepared.iter().enumerate() {
         match decide(p, Part::Coordinate(k))? {
             Decision::Proved {
                 expanded_terms,
                 hypotheses: indices,
             } => {
+                outcomes.push(CoordinateOutcome::Proved);
                 expanded += expanded_terms;
                 // The indices count the fraction's own conditions first, then the hypotheses,
                 // as the decision was given them.
@@ -314,24 +338,24 @@ pub fn decide_identity<C: PointField>(
                 point,
                 value,
             } => {
-                verdict = Some(IdentityVerdict::Fails {
+                outcomes.push(CoordinateOutcome::Fails);
+                verdict.get_or_insert(IdentityVerdict::Fails {
                     coordinate: k,
                     normal_form,
                     point: counter_example(&point, &statement),
                     value,
                 });
-                break;
             }
             Decision::Undecided {
                 normal_form,
                 searched,
             } => {
-                verdict = Some(IdentityVerdict::Undecided {
+                outcomes.push(CoordinateOutcome::Undecided);
+                undecided.get_or_insert(IdentityVerdict::Undecided {
                     coordinate: k,
                     normal_form,
                     searched,
                 });
-                break;
             }
         }
     }
@@ -366,10 +390,11 @@ pub fn decide_identity<C: PointField>(
         }
     };
     Ok(IdentityReport {
-        verdict: verdict.unwrap_or(IdentityVerdict::Proved {
+        verdict: verdict.or(undecided).unwrap_or(IdentityVerdict::Proved {
             used,
             expanded_terms: expanded,
         }),
+        outcomes,
         cleared: prepared.iter().map(|p| p.fraction.is_some()).collect(),
         residual_terms: prepared.iter().map(|p| p.residual.len()).collect(),
         conditions,
@@ -447,6 +472,10 @@ mod tests {
             panic!("expected fails, got {:?}", r.verdict)
         };
         assert_eq!(coordinate, 1);
+        assert_eq!(
+            r.outcomes,
+            [CoordinateOutcome::Proved, CoordinateOutcome::Fails]
+        );
         assert_eq!(normal_form.display(&s.vars).to_string(), "2*a*b");
         // The value is 2ab at the reported point, recomputed independently.
         let at = |name: &str| {
@@ -456,6 +485,30 @@ mod tests {
         let two_ab = Radical::from(2) * at("a") * at("b");
         assert_eq!(value, two_ab);
         assert!(!value.is_zero());
+    }
+
+    #[test]
+    fn every_coordinate_is_decided_and_a_failure_outranks_an_undecided_one() {
+        // x^2 + y^2 = 0 has the single real point 0, where x is zero: undecided; a + 1 = a
+        // fails everywhere; the last coordinate is proved after both.
+        let s = spec(
+            &[("x", "0"), ("a + 1", "a"), ("b", "b")],
+            &[("x^2 + y^2", "0")],
+        );
+        let r = decide_identity(&s).unwrap();
+        assert_eq!(
+            r.outcomes,
+            [
+                CoordinateOutcome::Undecided,
+                CoordinateOutcome::Fails,
+                CoordinateOutcome::Proved
+            ]
+        );
+        assert!(matches!(
+            r.verdict,
+            IdentityVerdict::Fails { coordinate: 1, .. }
+        ));
+        assert_eq!(r.coordinates_with(CoordinateOutcome::Undecided), [0]);
     }
 
     #[test]

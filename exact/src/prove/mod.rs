@@ -67,8 +67,8 @@ pub use factored::factored;
 pub use fraction::{decide_fraction, real_zero_free, where_clause, FractionIdentity};
 pub use hypotheses::{Hypothesis, MAX_HYPOTHESIS_DROPS};
 pub use identity::{
-    decide_identity, CorrectionVerdict, EngineError, IdentityReport, IdentitySpec, IdentityVerdict,
-    Part, Statement, UsedHypothesis,
+    decide_identity, CoordinateOutcome, CorrectionVerdict, EngineError, IdentityReport,
+    IdentitySpec, IdentityVerdict, Part, Statement, UsedHypothesis,
 };
 pub use phrase::{Phrasing, Voice};
 pub use roots::{square_roots, SquareRoot};

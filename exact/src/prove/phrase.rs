@@ -5,7 +5,8 @@
 //! identity and names its corrected form, the catalogue names each residual by its label.
 
 use super::identity::{
-    CorrectionVerdict, EngineError, IdentityReport, IdentityVerdict, UsedHypothesis,
+    CoordinateOutcome, CorrectionVerdict, EngineError, IdentityReport, IdentityVerdict,
+    UsedHypothesis,
 };
 use super::{where_clause, DecideError, PointField};
 use crate::poly::{Var, Vars};
@@ -52,7 +53,9 @@ pub struct Phrasing<'a> {
     pub relations: Vec<String>,
     /// The domains as the user wrote them (joined after "for").
     pub domains: Vec<String>,
-    /// The catalogue's label of each residual (the other voices leave it empty).
+    /// The catalogue's label of each residual; in the other voices the name of each component
+    /// of a vector or matrix identity (`component 2 (y)`, `entry (1, 2)`), empty for a scalar
+    /// identity.
     pub labels: Vec<String>,
     /// The corrected form as written, one per coordinate (claims files).
     pub corrected: Vec<String>,
@@ -134,11 +137,33 @@ impl Phrasing<'_> {
         }
     }
 
+    /// `in component 2 (y): ` (the component's name from [`Phrasing::labels`]), or for a
+    /// claims file without names `coordinate 2: `; empty for a scalar identity.
     fn coordinate(&self, k: usize, n: usize) -> String {
-        if self.voice == Voice::ClaimsFile && n > 1 {
-            format!("coordinate {}: ", k + 1)
-        } else {
+        match self.labels.get(k) {
+            Some(label) if self.voice != Voice::Catalogue && !label.is_empty() => {
+                format!("in {label}: ")
+            }
+            _ if self.voice == Voice::ClaimsFile && n > 1 => format!("coordinate {}: ", k + 1),
+            _ => String::new(),
+        }
+    }
+
+    /// `" (also undecided: component 3 (z))"` when coordinates besides `k` are undecided.
+    fn also_undecided<C: PointField>(&self, r: &IdentityReport<C>, k: usize) -> String {
+        let others: Vec<String> = r
+            .coordinates_with(CoordinateOutcome::Undecided)
+            .into_iter()
+            .filter(|&j| j != k)
+            .map(|j| match self.labels.get(j) {
+                Some(l) if self.voice != Voice::Catalogue && !l.is_empty() => l.clone(),
+                _ => format!("coordinate {}", j + 1),
+            })
+            .collect();
+        if others.is_empty() {
             String::new()
+        } else {
+            format!(" (also undecided: {})", others.join(", "))
         }
     }
 
@@ -237,16 +262,19 @@ impl Phrasing<'_> {
                         cleared(*k),
                     ),
                     Voice::Prove if r.cleared[*k] => format!(
-                        "at {}{rel} LHS - RHS = {value}; LHS - RHS{CLEARED} reduces{modulo} to {nf}, not zero{where_nonzero}",
+                        "{}at {}{rel} LHS - RHS = {value}; LHS - RHS{CLEARED} reduces{modulo} to {nf}, not zero{where_nonzero}",
+                        self.coordinate(*k, n),
                         abbreviate(at)
                     ),
                     // No variable: the identity is between constants, and their difference is
                     // the counter-example.
                     Voice::Prove if at.is_empty() => format!(
-                        "LHS - RHS = {value}, a non-zero constant{rel}, so LHS = RHS + ({nf})"
+                        "{}LHS - RHS = {value}, a non-zero constant{rel}, so LHS = RHS + ({nf})",
+                        self.coordinate(*k, n),
                     ),
                     Voice::Prove => format!(
-                        "at {}{rel} LHS - RHS = {value}; LHS - RHS reduces{modulo} to {nf}, so LHS = RHS + ({nf})",
+                        "{}at {}{rel} LHS - RHS = {value}; LHS - RHS reduces{modulo} to {nf}, so LHS = RHS + ({nf})",
+                        self.coordinate(*k, n),
                         abbreviate(at)
                     ),
                 }
@@ -263,9 +291,10 @@ impl Phrasing<'_> {
                         self.label(*k)
                     ),
                     _ => format!(
-                        "{}LHS - RHS{} reduces{modulo} to {nf} (not zero), but no point{within} where it is non-zero was found{where_nonzero}: {searched}",
+                        "{}LHS - RHS{} reduces{modulo} to {nf} (not zero), but no point{within} where it is non-zero was found{where_nonzero}: {searched}{}",
                         self.coordinate(*k, n),
-                        cleared(*k)
+                        cleared(*k),
+                        self.also_undecided(r, *k)
                     ),
                 }
             }
@@ -398,7 +427,13 @@ mod tests {
             vars,
             relations: Vec::new(),
             domains: Vec::new(),
-            labels: vec!["the residual".into()],
+            // The catalogue names its residuals; a scalar identity of the other voices has no
+            // component names.
+            labels: if voice == Voice::Catalogue {
+                vec!["the residual".into()]
+            } else {
+                Vec::new()
+            },
             corrected: Vec::new(),
             nonzero_texts: Vec::new(),
             domain_texts: Vec::new(),
@@ -425,6 +460,34 @@ mod tests {
             phrasing(Voice::Prove, &vars).method::<Rational>(),
             "symbolic expansion over Q[a,b]"
         );
+    }
+
+    #[test]
+    fn components_are_named_in_the_prove_and_claims_voices() {
+        let mut vars = Vars::new();
+        let mut side = |t: &str| {
+            parse_expr(t)
+                .unwrap()
+                .to_ratfun::<Rational>(&mut vars)
+                .unwrap()
+        };
+        let coordinates = vec![
+            Statement::Sides(side("u"), side("u")),
+            Statement::Sides(side("v"), side("2*v")),
+        ];
+        let spec = IdentitySpec::new(vars, coordinates);
+        let r = decide_identity(&spec).unwrap();
+        let mut p = phrasing(Voice::Prove, &spec.vars);
+        p.labels = vec!["component 1 (x)".into(), "component 2 (y)".into()];
+        assert!(
+            p.evidence(&r).starts_with("in component 2 (y): at "),
+            "{}",
+            p.evidence(&r)
+        );
+        p.voice = Voice::ClaimsFile;
+        assert!(p.evidence(&r).starts_with("in component 2 (y): at "));
+        p.labels.clear();
+        assert!(p.evidence(&r).starts_with("coordinate 2: at "));
     }
 
     #[test]

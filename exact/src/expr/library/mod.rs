@@ -65,8 +65,9 @@ mod tree;
 use calls::*;
 use matrix::*;
 pub(crate) use tree::map_tree;
+pub(crate) use tree::substitute;
 use tree::{at_pos, collect_calls};
-pub use tree::{count_nodes, has_sqrt, substitute, substitute_free};
+pub use tree::{count_nodes, has_sqrt, substitute_free};
 
 /// The largest number of nodes of a resolved expression.
 pub const MAX_NODES: usize = 500_000;
@@ -118,10 +119,15 @@ impl Val {
 
     /// `a scalar`, `a vector of n` or `a 2x3 matrix`.
     pub fn shape(&self) -> String {
+        self.dims().to_string()
+    }
+
+    /// The shape as a value (to compare, or to name components by).
+    pub fn dims(&self) -> Shape {
         match self {
-            Val::Scalar(_) => "a scalar".into(),
-            Val::Vector(v) => format!("a vector of {}", v.len()),
-            Val::Matrix(rows) => format!("a {}x{} matrix", rows.len(), rows[0].len()),
+            Val::Scalar(_) => Shape::Scalar,
+            Val::Vector(v) => Shape::Vector(v.len()),
+            Val::Matrix(rows) => Shape::Matrix(rows.len(), rows[0].len()),
         }
     }
 
@@ -154,6 +160,55 @@ impl Val {
             (Val::Vector(a), Val::Vector(b)) => a.len() == b.len(),
             (Val::Matrix(a), Val::Matrix(b)) => a.len() == b.len() && a[0].len() == b[0].len(),
             _ => false,
+        }
+    }
+}
+
+/// The shape of a [`Val`]: what an identity between two values compares component by component.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Shape {
+    /// One expression.
+    Scalar,
+    /// A vector of this many coordinates.
+    Vector(usize),
+    /// A matrix of this many rows and columns.
+    Matrix(usize, usize),
+}
+
+impl Shape {
+    /// The number of components ([`Val::components`] lists them in this order).
+    pub fn len(&self) -> usize {
+        match *self {
+            Shape::Scalar => 1,
+            Shape::Vector(n) => n,
+            Shape::Matrix(r, c) => r * c,
+        }
+    }
+
+    /// Whether the shape has no component (never: a vector or matrix has at least one).
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// The name of component `k` (0-based, in the order of [`Val::components`]):
+    /// `component 2 (y)` of a vector of 2 or 3, `component 5` of a longer one, `entry (1, 2)`
+    /// of a matrix (row, column, from 1); empty for a scalar.
+    pub fn component(&self, k: usize) -> String {
+        match *self {
+            Shape::Scalar => String::new(),
+            Shape::Vector(2 | 3) => format!("component {} ({})", k + 1, ["x", "y", "z"][k]),
+            Shape::Vector(_) => format!("component {}", k + 1),
+            Shape::Matrix(_, c) => format!("entry ({}, {})", k / c + 1, k % c + 1),
+        }
+    }
+}
+
+impl fmt::Display for Shape {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Shape::Scalar => f.write_str("a scalar"),
+            Shape::Vector(n) => write!(f, "a vector of {n}"),
+            Shape::Matrix(r, c) => write!(f, "a {r}x{c} matrix"),
         }
     }
 }
@@ -762,15 +817,41 @@ impl Defs {
         }
         if super::FUNCTIONS.contains(&name) || self.calls.contains(&name) {
             // A function of the core language: its arguments resolved, the call kept for the
-            // conversion, which checks them.
+            // conversion, which checks them. The derivative, integral or sum of a vector or
+            // matrix is taken component by component (the body is the first argument of `diff`
+            // and `integrate`, the fourth of `sum`).
+            let body = match name {
+                "diff" | "integrate" => Some(0),
+                "sum" => Some(3),
+                _ => None,
+            };
             let mut resolved = Vec::new();
-            for a in args {
-                resolved.push(self.scalar(a, stack, &format!("an argument of {name}"))?);
+            let mut componentwise = None;
+            for (i, a) in args.iter().enumerate() {
+                if Some(i) == body {
+                    match self.resolve(a, stack)? {
+                        Val::Scalar(x) => resolved.push(x),
+                        v => {
+                            resolved.push(a.clone());
+                            componentwise = Some((i, v));
+                        }
+                    }
+                } else {
+                    resolved.push(self.scalar(a, stack, &format!("an argument of {name}"))?);
+                }
             }
-            return Ok(Val::Scalar(Expr {
-                kind: ExprKind::Call(name.to_string(), resolved),
+            let call = |args: Vec<Expr>| Expr {
+                kind: ExprKind::Call(name.to_string(), args),
                 pos,
-            }));
+            };
+            return Ok(match componentwise {
+                None => Val::Scalar(call(resolved)),
+                Some((i, v)) => v.map(|x| {
+                    let mut args = resolved.clone();
+                    args[i] = x;
+                    call(args)
+                }),
+            });
         }
         let Some(&(_, arity, variadic)) = LIBRARY.iter().find(|(n, _, _)| *n == name) else {
             let mut names = function_names();

@@ -38,7 +38,9 @@ pub(super) fn at_pos(e: &Expr, pos: usize) -> Expr {
     })
 }
 
-/// `e` with the variable `v` replaced by `value`.
+/// `e` with the variable `v` replaced by `value`, binders ignored: for renaming a bound
+/// variable and for values that cannot be captured (integration bounds); every front end
+/// substitutes with [`substitute_free`].
 pub fn substitute(e: &Expr, v: &str, value: &Expr) -> Expr {
     rebuild(e, &|x| match &x.kind {
         ExprKind::Var(n) if n == v => at_pos(value, x.pos),
