@@ -280,7 +280,7 @@ pub fn miquel_configuration<T: Ring>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::bernstein::test_support::{Rng, Q};
+    use crate::test_support::{Rng, Q};
     use crate::quadric::{lebesgue, lebesgue_curve};
 
     fn h(v: [i64; 4]) -> Hom4<Q> {

@@ -1,6 +1,6 @@
 //! Unit tests of the Bernstein toolkit.
 
-use super::test_support::{ints, rational, Poly, Rng, Q};
+use crate::test_support::{ints, rational, Poly, Rng, Q};
 use super::*;
 
 const CASES: usize = 300;

@@ -1,4 +1,4 @@
-//! Exact test scalars shared by the tests of this module and of [`crate::bezier`]: rationals
+//! Exact test scalars shared by the crate's unit tests: rationals
 //! over `i128` (a field), polynomials over `i128` in one variable (a ring: a symbolic check), and
 //! a deterministic pseudo-random generator.
 
