@@ -1,7 +1,7 @@
 //! Running the `exactcheck` binary under a kill-timeout, many runs in parallel: the engine of
-//! the malformed-input corpus (`tests/malformed.rs`) and of the limits stress test
-//! (`tests/limits_stress.rs`), which include this file with `#[path = "common/timed.rs"] mod
-//! timed;`.
+//! the malformed-input corpus (`tests/corpus/malformed.rs`) and of the limits stress test
+//! (`tests/corpus/limits_stress.rs`) and of the `prove` tests, whose test binaries include this
+//! file with `#[path = "../common/timed.rs"] mod timed;`.
 //!
 //! A hostile input may make the binary hang; a test must still end. So the child is polled
 //! (`try_wait`) until a deadline and killed past it, while two threads drain its standard output
