@@ -1,6 +1,6 @@
 //! Real algebraic numbers: the minimal polynomials of `cos(2 pi / n)` for `n <= 60`, a sum of
 //! nested radicals (resultant, root selection) and an exact comparison of two close numbers.
-//! `scripts/compare_algebraic.py` times the same workloads against python-flint and SymPy.
+//! `bench/scripts/compare_algebraic.py` times the same workloads against python-flint and SymPy.
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use exactcheck_exact::algebraic::Algebraic;

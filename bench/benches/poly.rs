@@ -1,16 +1,16 @@
-//! Workload W1 (Chiang's ruled-surface / plane theorem, the claim list, as a polynomial identity) at
+//! The workload chiang-identity (Chiang's ruled-surface / plane theorem, the claim list, as a polynomial identity) at
 //! `(m, n) = (2, 3), (4, 6), (8, 13), (13, 21)`:
 //!
-//! * `w1_text`: parse both sides of `w1_text(m, n)` (the text of `scripts/anchors/w1_text.py`),
+//! * `identity_text`: parse both sides of `identity_text(m, n)` (the text of `bench/scripts/anchors/chiang_text.py`),
 //!   expand them and compare — the whole `exactcheck prove` path;
-//! * `w1_ring`: the identity built with the `Ring` API as `scripts/anchors/w1_identity.py`'s flint
-//!   backend builds it (x component and weight, `exactcheck_exact::w1::ring_residuals`),
+//! * `identity_ring`: the identity built with the `Ring` API as `bench/scripts/anchors/chiang_identity.py`'s flint
+//!   backend builds it (x component and weight, `exactcheck_bench::chiang_identity::ring_residuals`),
 //!   residuals checked for zero;
 //! * `fateman`: a generic dense multiplication, `f * (f + 1)` with `f = (1 + x + y + z + w)^k`
-//!   for `k = 8, 12, 16` (at `k = 8` 495 terms each, 245,025 term products; `exactcheck bench
-//!   dense` and `scripts/anchors/w1_dense.py` time the same product), checked before timing.
+//!   for `k = 8, 12, 16` (at `k = 8` 495 terms each, 245,025 term products; `exactcheck-bench
+//!   dense` and `bench/scripts/anchors/dense_product.py` time the same product), checked before timing.
 //!
-//! Anchors on the same machine: `w1_identity.py flint 8 13` and `... sympy 8 13`.
+//! Anchors on the same machine: `chiang_identity.py flint 8 13` and `... sympy 8 13`.
 
 use std::hint::black_box;
 use std::time::Duration;
@@ -19,49 +19,49 @@ use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use exactcheck_core::Ring;
 use exactcheck_exact::expr::parse_poly;
 use exactcheck_exact::poly::{Poly, Vars};
-use exactcheck_exact::w1::{ring_residuals, w1_text};
+use exactcheck_bench::chiang_identity::{identity_text, ring_residuals};
 use exactcheck_exact::Rational;
 
 type P = Poly<Rational>;
 
 const SIZES: [(u32, u32); 4] = [(2, 3), (4, 6), (8, 13), (13, 21)];
 
-/// W1 from text: parse, expand, compare.
-fn w1_text_proves(lhs: &str, rhs: &str) -> bool {
+/// The identity from text: parse, expand, compare.
+fn text_proves(lhs: &str, rhs: &str) -> bool {
     let mut vars = Vars::new();
     let l: P = parse_poly(lhs, &mut vars).expect("LHS parses");
     let r: P = parse_poly(rhs, &mut vars).expect("RHS parses");
     l == r
 }
 
-/// W1 with the Ring API: whether the x-component and the weight residuals are both zero.
-fn w1_ring_proves(m: u32, n: u32) -> bool {
+/// The identity with the Ring API: whether the x-component and the weight residuals are both zero.
+fn ring_proves(m: u32, n: u32) -> bool {
     let (dp, dq) = ring_residuals(m, n, false);
     dp.is_zero() && dq.is_zero()
 }
 
-fn bench_w1(c: &mut Criterion) {
-    let mut group = c.benchmark_group("w1_text");
+fn bench_identity(c: &mut Criterion) {
+    let mut group = c.benchmark_group("identity_text");
     group.measurement_time(Duration::from_secs(4));
     for (m, n) in SIZES {
-        let (lhs, rhs) = w1_text(m, n);
-        assert!(w1_text_proves(&lhs, &rhs));
+        let (lhs, rhs) = identity_text(m, n);
+        assert!(text_proves(&lhs, &rhs));
         group.bench_with_input(
             BenchmarkId::from_parameter(format!("{m}x{n}")),
             &(lhs, rhs),
-            |bch, (l, r)| bch.iter(|| black_box(w1_text_proves(black_box(l), black_box(r)))),
+            |bch, (l, r)| bch.iter(|| black_box(text_proves(black_box(l), black_box(r)))),
         );
     }
     group.finish();
 
-    let mut group = c.benchmark_group("w1_ring");
+    let mut group = c.benchmark_group("identity_ring");
     group.measurement_time(Duration::from_secs(4));
     for (m, n) in SIZES {
-        assert!(w1_ring_proves(m, n));
+        assert!(ring_proves(m, n));
         group.bench_with_input(
             BenchmarkId::from_parameter(format!("{m}x{n}")),
             &(m, n),
-            |bch, &(m, n)| bch.iter(|| black_box(w1_ring_proves(black_box(m), black_box(n)))),
+            |bch, &(m, n)| bch.iter(|| black_box(ring_proves(black_box(m), black_box(n)))),
         );
     }
     group.finish();
@@ -101,5 +101,5 @@ fn bench_fateman(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, bench_w1, bench_fateman);
+criterion_group!(benches, bench_identity, bench_fateman);
 criterion_main!(benches);

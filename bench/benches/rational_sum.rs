@@ -1,12 +1,12 @@
-//! Criterion benchmark of workload W2 (exact Spaeth discriminant; see `src/w2.rs`): the fast
+//! Criterion benchmark of workload rational-sum (exact Spaeth discriminant; see `bench/src/rational_sum.rs`): the fast
 //! `Rational` beside num-rational's plain `BigRational`, in the three modes at the anchors'
 //! N = 2,000 and `seq` at N = 10,000 (fast scalar only). Before anything is timed, every
 //! configuration's check values (`count_nonneg`, the sum's digit counts and residues mod
-//! 1e9+7, as `scripts/anchors/w2_rational.py` prints them, identical for gmpy2, FLINT and
-//! Python's `Fraction`) are asserted. Whole-workload figures come from `exactcheck bench w2`.
+//! 1e9+7, as `bench/scripts/anchors/rational_sum.py` prints them, identical for gmpy2, FLINT and
+//! Python's `Fraction`) are asserted. Whole-workload figures come from `exactcheck-bench rational-sum`.
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
-use exactcheck::w2::{self, Mode};
+use exactcheck_bench::rational_sum::{self, Mode};
 use exactcheck_exact::{PlainRational, Rational, RationalScalar};
 
 /// `(count_nonneg, sum_num_digits, sum_den_digits, sum_num_mod_p, sum_den_mod_p)` printed by
@@ -19,15 +19,15 @@ fn expected_sum(n: usize) -> (usize, usize, usize, u64, u64) {
     }
 }
 
-/// Runs W2 once and asserts the anchors' check values.
+/// Runs the workload once and asserts the anchors' check values.
 fn assert_check_values<T: RationalScalar>(n: usize, mode: Mode) {
-    let out = w2::run::<T>(n, mode);
+    let out = rational_sum::run::<T>(n, mode);
     let (count, nd, dd, nm, dm) = expected_sum(n);
     assert_eq!(out.count_nonneg, count, "count_nonneg, {mode:?} N = {n}");
     match (mode, out.sum) {
         (Mode::Eval, None) => {}
         (Mode::Tree | Mode::Seq, Some(sum)) => {
-            let cv = w2::check_values(&sum);
+            let cv = rational_sum::check_values(&sum);
             assert_eq!(
                 (cv.num_digits, cv.den_digits, cv.num_mod_p, cv.den_mod_p),
                 (nd, dd, nm, dm),
@@ -39,7 +39,7 @@ fn assert_check_values<T: RationalScalar>(n: usize, mode: Mode) {
 }
 
 fn bench(c: &mut Criterion) {
-    let mut g = c.benchmark_group("w2");
+    let mut g = c.benchmark_group("rational_sum");
     g.sample_size(10);
     for (mode, n, plain) in [
         (Mode::Eval, 2_000, true),
@@ -53,11 +53,11 @@ fn bench(c: &mut Criterion) {
         }
         let name = format!("{mode:?}").to_lowercase();
         g.bench_with_input(BenchmarkId::new(format!("{name}/fast"), n), &n, |b, &n| {
-            b.iter(|| w2::run::<Rational>(n, mode).count_nonneg)
+            b.iter(|| rational_sum::run::<Rational>(n, mode).count_nonneg)
         });
         if plain {
             g.bench_with_input(BenchmarkId::new(format!("{name}/plain"), n), &n, |b, &n| {
-                b.iter(|| w2::run::<PlainRational>(n, mode).count_nonneg)
+                b.iter(|| rational_sum::run::<PlainRational>(n, mode).count_nonneg)
             });
         }
     }

@@ -1,4 +1,4 @@
-//! Criterion benchmark of workload W3 (f64 sampling of the Spaeth discriminant): the
+//! Criterion benchmark of workload sample-sphere (f64 sampling of the Spaeth discriminant): the
 //! angle-addition kernel (no libm call per sample; all cores and one thread, on the detected path
 //! and on the portable one) beside the sampler with precomputed trigonometric coefficients and
 //! `sin_cos` per sample (all cores and one thread) and a plain per-sample evaluation of the
@@ -10,8 +10,9 @@
 //! `1e-12` relative.
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
-use exactcheck::w2::problem;
-use exactcheck_float::sampler::{sweep_direct, DiscSampler, GridSummary, KernelPath};
+use exactcheck_bench::rational_sum::problem;
+use exactcheck_bench::sample_sphere::{sweep_direct, AdditionSweep, GridSummary, KernelPath, Sweep};
+use exactcheck_float::sampler::DiscSampler;
 
 fn bench(c: &mut Criterion) {
     let n = 1 << 20;
@@ -44,7 +45,7 @@ fn bench(c: &mut Criterion) {
     check("coef", sampler.sweep(n));
     check("coef_serial", sampler.sweep_serial(n));
 
-    let mut g = c.benchmark_group("w3");
+    let mut g = c.benchmark_group("sample_sphere");
     g.sample_size(20);
     g.throughput(Throughput::Elements(n as u64));
     g.bench_function("addition_parallel", |b| {

@@ -1,4 +1,4 @@
-//! The workloads of `scripts/compare_algebraic.py`: the minimal polynomials of `cos(2 pi / n)`
+//! The workloads of `bench/scripts/compare_algebraic.py`: the minimal polynomials of `cos(2 pi / n)`
 //! for `n = 1..=60`, and the defining polynomial of a sum of four nested radicals. Prints one
 //! JSON line with the polynomials (integer coefficients from the constant term up) and the
 //! seconds of the timed region, so the script can check them against python-flint and SymPy.

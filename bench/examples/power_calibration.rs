@@ -6,7 +6,7 @@
 //! it again on another machine to re-derive them:
 //!
 //! ```sh
-//! cargo run --release -p exactcheck-exact --example power_calibration
+//! cargo run --release -p exactcheck-bench --example power_calibration
 //! ```
 //!
 //! It prints timings only; the tests check the results (`poly::word_tests`).

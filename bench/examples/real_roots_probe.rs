@@ -1,17 +1,17 @@
-//! The W4 probe: times successive calls of `w4::solve` on one instance in one process, with
+//! The real-roots probe: times successive calls of `w4::solve` on one instance in one process, with
 //! the minor page faults of each call (Linux), to separate the first execution of the code
 //! from the steady state; and a target for instruction counts of one call:
 //!
 //! ```sh
-//! cargo build --release -p exactcheck-exact --example w4_probe
-//! target/release/examples/w4_probe wilkinson 20 4
+//! cargo build --release -p exactcheck-bench --example real_roots_probe
+//! target/release/examples/real_roots_probe wilkinson 20 4
 //! valgrind --tool=callgrind --toggle-collect='*w4*solve*' \
-//!     target/release/examples/w4_probe wilkinson 20 1 --no-warm-up
+//!     target/release/examples/real_roots_probe wilkinson 20 1 --no-warm-up
 //! ```
 //!
 //! Arguments: `FAMILY` (`wilkinson`, `random`, `mignotte`), `DEGREE` (1 to 2000), `CALLS`
 //! (default 4), and `--no-warm-up` to skip the untimed solve of `x^2 - 2` that
-//! `exactcheck bench w4` and the anchors do first (it is inside the callgrind toggle too).
+//! `exactcheck-bench real-roots` and the anchors do first (it is inside the callgrind toggle too).
 
 use exactcheck_exact::univariate::w4;
 use num_bigint::BigInt;
@@ -34,7 +34,7 @@ fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let warm_up = !args.iter().any(|a| a == "--no-warm-up");
     let plain: Vec<&String> = args.iter().filter(|a| *a != "--no-warm-up").collect();
-    let usage = "usage: w4_probe FAMILY DEGREE [CALLS] [--no-warm-up] \
+    let usage = "usage: real_roots_probe FAMILY DEGREE [CALLS] [--no-warm-up] \
                  (FAMILY: wilkinson, random, mignotte; DEGREE 1 to 2000)";
     let family = match plain.first().map(|s| s.as_str()) {
         Some("wilkinson") => w4::Family::Wilkinson,
@@ -42,14 +42,14 @@ fn main() -> ExitCode {
         Some("mignotte") => w4::Family::Mignotte,
         other => {
             let got = other.unwrap_or("nothing");
-            eprintln!("w4_probe: unknown family `{got}`; {usage}");
+            eprintln!("real_roots_probe: unknown family `{got}`; {usage}");
             return ExitCode::from(2);
         }
     };
     let degree = match plain.get(1).map(|s| s.parse::<usize>()) {
         Some(Ok(d)) if (1..=2000).contains(&d) => d,
         _ => {
-            eprintln!("w4_probe: DEGREE must be an integer from 1 to 2000; {usage}");
+            eprintln!("real_roots_probe: DEGREE must be an integer from 1 to 2000; {usage}");
             return ExitCode::from(2);
         }
     };
@@ -57,12 +57,12 @@ fn main() -> ExitCode {
         None => 4,
         Some(Ok(c)) => c,
         Some(Err(_)) => {
-            eprintln!("w4_probe: CALLS must be a non-negative integer; {usage}");
+            eprintln!("real_roots_probe: CALLS must be a non-negative integer; {usage}");
             return ExitCode::from(2);
         }
     };
     if plain.len() > 3 {
-        eprintln!("w4_probe: too many arguments; {usage}");
+        eprintln!("real_roots_probe: too many arguments; {usage}");
         return ExitCode::from(2);
     }
     let coeffs = family.polynomial(degree);

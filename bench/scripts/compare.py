@@ -1,22 +1,22 @@
 #!/usr/bin/env python3
-"""exactcheck side by side with SymPy, SymEngine, python-flint, gmpy2 and numpy: workloads W1-W4.
+"""exactcheck side by side with SymPy, SymEngine, python-flint, gmpy2 and numpy on the benchmark workloads.
 
-Usage: python3 scripts/compare.py [--reps K] [--only W1,W2,...] [--quick] [--skip-large] [--python PY]
+Usage: python3 bench/scripts/compare.py [--reps K] [--only rational-sum,...] [--quick] [--skip-large] [--python PY]
                                   [--markdown FILE] [--json FILE] [--max-seconds S]
 
-Normally started by `scripts/compare.sh`, which builds exactcheck and the anchors' virtual
-environment first. Every workload runs in exactcheck (`exactcheck bench ... --json`) and in each
-anchor script (`scripts/anchors/*.py`), K rounds per size (default 5; a tool whose run takes longer
+Normally started by `bench/scripts/compare.sh`, which builds exactcheck and the anchors' virtual
+environment first. Every workload runs in exactcheck (`exactcheck-bench WORKLOAD ... --json`) and in each
+anchor script (`bench/scripts/anchors/*.py`), K rounds per size (default 5; a tool whose run takes longer
 than 5 s is not repeated). The tools alternate run by run: round r runs every tool once, starting
 with the r-th (rotating), so that a change in the machine's load during the run spreads over all
 tools instead of falling on one. Every tool times its own region in process CPU time
 (`CLOCK_PROCESS_CPUTIME_ID` in exactcheck, `time.process_time` in Python) and in wall time; the
 ratios are taken from the CPU-time medians. Every tool runs on one thread unless its column says
-otherwise (exactcheck's W3 `addition` runs on all cores and is shown beside its one-thread run).
+otherwise (exactcheck's sample-sphere `addition` runs on all cores and is shown beside its one-thread run).
 The machine's load (`uptime`) is recorded before and after the run.
 
-* the check values of every run must agree with every other tool's (exact fields equal; W3's
-  sum within 1e-12 relative; W4's root counts equal, every interval at most 2^-53 wide, the i-th
+* the check values of every run must agree with every other tool's (exact fields equal;
+  sample-sphere's sum within 1e-12 relative; real-roots' root counts equal, every interval at most 2^-53 wide, the i-th
   intervals of any two tools overlapping). A disagreement is an error (exit 1): a fast wrong
   answer is not a result.
 * the table gives the median CPU time of each tool's own timed region (the workload without
@@ -27,22 +27,23 @@ The machine's load (`uptime`) is recorded before and after the run.
 * the speed targets are evaluated from the same medians and printed as met / not met.
 
 A tool that exceeds --max-seconds (default 120) on one run is stopped and shown as `> S s` at
-that size and skipped at the larger sizes of the same series (W1, W1d, each W2 mode; not in W4).
+that size and skipped at the larger sizes of the same series (chiang-identity, dense-product, each rational-sum mode; not in real-roots).
 """
 import argparse, datetime, json, os, platform, statistics, subprocess, sys, time
 from fractions import Fraction
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-ANCHORS = os.path.join(ROOT, "scripts", "anchors")
-BIN = os.path.join(ROOT, "target", "release", "exactcheck")
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+ANCHORS = os.path.join(ROOT, "bench", "scripts", "anchors")
+BIN = os.path.join(ROOT, "target", "release", "exactcheck-bench")
+APP = os.path.join(ROOT, "target", "release", "exactcheck")
 
 p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
 p.add_argument("--reps", type=int, default=5)
-p.add_argument("--only", default="W1,W1d,W2,W3,W4,verify",
-               help="comma-separated subset of W1, W1d (dense product), W2, W3, W4, verify")
+p.add_argument("--only", default="chiang-identity,dense-product,rational-sum,sample-sphere,real-roots,verify",
+               help="comma-separated subset of chiang-identity, dense-product, rational-sum, sample-sphere, real-roots, verify")
 p.add_argument("--quick", action="store_true", help="2 repetitions, the large sizes left out")
 p.add_argument("--skip-large", action="store_true",
-               help="leave out W2 at N = 100,000 and the dense product at k = 16 (minutes each)")
+               help="leave out rational-sum at N = 100,000 and the dense product at k = 16 (minutes each)")
 p.add_argument("--python", default=os.path.join(ROOT, ".venv-anchors", "bin", "python"))
 p.add_argument("--markdown", help="also write the tables to this file")
 p.add_argument("--json", help="also write every run's results to this file")
@@ -59,9 +60,9 @@ def fail(msg):
 
 
 if not os.access(BIN, os.X_OK):
-    fail(f"{BIN} is missing: run `cargo build --release` (scripts/compare.sh does)")
+    fail(f"{BIN} is missing: run `cargo build --release -p exactcheck -p exactcheck-bench` (bench/scripts/compare.sh does)")
 if not os.access(args.python, os.X_OK):
-    fail(f"{args.python} is missing: run scripts/compare.sh (it creates the virtual environment)")
+    fail(f"{args.python} is missing: run bench/scripts/compare.sh (it creates the virtual environment)")
 
 
 
@@ -80,7 +81,7 @@ class TimedOut(Exception):
 
 
 # One thread for every tool: numpy's BLAS and OpenMP pools otherwise start threads whose
-# spinning counts as the tool's CPU time (and exactcheck's W3 one-thread column is the target's).
+# spinning counts as the tool's CPU time (and exactcheck's sample-sphere one-thread column is the target's).
 ONE_THREAD = dict(os.environ, OMP_NUM_THREADS="1", OPENBLAS_NUM_THREADS="1", MKL_NUM_THREADS="1",
                   NUMEXPR_NUM_THREADS="1")
 
@@ -107,7 +108,7 @@ def anchor(script, *a):
 
 
 def ec(*a):
-    return [BIN, "bench", *map(str, a), "--json"]
+    return [BIN, *map(str, a), "--json"]
 
 
 # ------------------------------------------------------------------------- agreement rules
@@ -121,7 +122,7 @@ def exact_fields(*names):
     return check
 
 
-def w3_check(ref, other):
+def sample_check(ref, other):
     if ref["count_nonneg"] != other["count_nonneg"]:
         return f"count_nonneg: {ref['count_nonneg']} vs {other['count_nonneg']}"
     a, b = float(ref["sum_sqrt"]), float(other["sum_sqrt"])
@@ -130,15 +131,15 @@ def w3_check(ref, other):
     return None
 
 
-W4_WIDTH = Fraction(1, 2 ** 53)
+ROOT_WIDTH = Fraction(1, 2 ** 53)
 
 
-def w4_intervals(r):
+def root_intervals(r):
     ivs = [(Fraction(lo), Fraction(hi)) for lo, hi in r["roots"]]
     if len(ivs) != r["real_roots"]:
         return None, f"{r['tool']}: real_roots {r['real_roots']} but {len(ivs)} intervals"
     for lo, hi in ivs:
-        if not lo <= hi or hi - lo > W4_WIDTH:
+        if not lo <= hi or hi - lo > ROOT_WIDTH:
             return None, f"{r['tool']}: interval [{lo}, {hi}] wider than 2^-53 or reversed"
     for (a, b), (c, d) in zip(ivs, ivs[1:]):
         # closed intervals may share an end point that is not a root (SymPy's do on Mignotte 40)
@@ -147,13 +148,13 @@ def w4_intervals(r):
     return ivs, None
 
 
-def w4_check(ref, other):
+def roots_check(ref, other):
     if ref["real_roots"] != other["real_roots"]:
         return f"real_roots: {ref['real_roots']} vs {other['real_roots']}"
-    x, err = w4_intervals(ref)
+    x, err = root_intervals(ref)
     if err:
         return err
-    y, err = w4_intervals(other)
+    y, err = root_intervals(other)
     if err:
         return err
     for i, ((a, b), (c, d)) in enumerate(zip(x, y)):
@@ -166,54 +167,54 @@ def w4_check(ref, other):
 # Each workload: title, reference tool for the ratios, time field, agreement rule, and sizes,
 # each with the commands of every tool.
 
-W1_SIZES = [(2, 3), (4, 6), (8, 13), (13, 21)]
-W1_TOOLS = ["flint", "symengine", "sympyring", "sympy"]
-W2_RUNS = [("eval", 2000), ("tree", 2000), ("seq", 2000), ("seq", 10000), ("eval", 100000),
+IDENTITY_SIZES = [(2, 3), (4, 6), (8, 13), (13, 21)]
+IDENTITY_TOOLS = ["flint", "symengine", "sympyring", "sympy"]
+SUM_RUNS = [("eval", 2000), ("tree", 2000), ("seq", 2000), ("seq", 10000), ("eval", 100000),
            ("tree", 100000), ("seq", 100000)]
-W4_RUNS = [("wilkinson", 20), ("wilkinson", 40), ("random", 50), ("random", 100),
+ROOT_RUNS = [("wilkinson", 20), ("wilkinson", 40), ("random", 50), ("random", 100),
            ("mignotte", 20), ("mignotte", 40)]
 if args.quick or args.skip_large:
-    W2_RUNS = [r for r in W2_RUNS if r[1] <= 10000]
+    SUM_RUNS = [r for r in SUM_RUNS if r[1] <= 10000]
 
 WORKLOADS = []
-if "W1" in ONLY:
+if "chiang-identity" in ONLY:
     WORKLOADS.append(dict(
-        id="W1", title="W1: Chiang's theorem proved by expansion (build + expand + zero test)",
+        id="chiang-identity", title="chiang-identity: Chiang's theorem proved by expansion (build + expand + zero test)",
         time="total_s", check=exact_fields("lhs_x_terms", "nvars", "x_identity_zero", "weight_identity_zero"),
-        sizes=[(f"(m, n) = ({m}, {n})", [("exactcheck", ec("w1", "--m", m, "--n", n))]
-                + [(t, anchor("w1_identity.py", t, m, n)) for t in W1_TOOLS]) for m, n in W1_SIZES]))
-if "W1d" in ONLY:
+        sizes=[(f"(m, n) = ({m}, {n})", [("exactcheck", ec("chiang-identity", "--m", m, "--n", n))]
+                + [(t, anchor("chiang_identity.py", t, m, n)) for t in IDENTITY_TOOLS]) for m, n in IDENTITY_SIZES]))
+if "dense-product" in ONLY:
     WORKLOADS.append(dict(
-        id="W1d", title="W1 dense: f (f + 1), f = (1 + x1 + x2 + x3 + x4)^k (the product alone)",
+        id="dense-product", title="dense-product: f (f + 1), f = (1 + x1 + x2 + x3 + x4)^k (the product alone)",
         time="seconds", check=exact_fields("terms", "coeff_sum", "max_coeff"),
-        sizes=[(f"k = {k}", [("exactcheck", ec("dense", "--k", k, "--vars", 4))]
-                + [(t, anchor("w1_dense.py", t, k, 4)) for t in ("flint", "flint-z", "symengine", "sympy")])
+        sizes=[(f"k = {k}", [("exactcheck", ec("dense-product", "--k", k, "--vars", 4))]
+                + [(t, anchor("dense_product.py", t, k, 4)) for t in ("flint", "flint-z", "symengine", "sympy")])
                for k in ((8, 12) if args.quick or args.skip_large else (8, 12, 16))]))
-if "W2" in ONLY:
+if "rational-sum" in ONLY:
     CHECK2 = exact_fields("count_nonneg", "sum_num_digits", "sum_den_digits", "sum_num_mod_p", "sum_den_mod_p")
     WORKLOADS.append(dict(
-        id="W2", title="W2: exact Spaeth discriminant at N rational parameters (evaluation, and the sums)",
+        id="rational-sum", title="rational-sum: exact Spaeth discriminant at N rational parameters (evaluation, and the sums)",
         time="seconds", check=CHECK2,
-        sizes=[(f"{mode}, N = {n:,}", [("exactcheck", ec("w2", "--mode", mode, "--n", n))]
-                + [("gmp-c", anchor("w2_gmp.py", mode, n))]
-                + [(t, anchor("w2_rational.py", t, mode, n)) for t in ("gmpy2", "flint")]
-                + ([("fraction", anchor("w2_rational.py", "fraction", mode, n))] if n <= 10000 else []))
-               for mode, n in W2_RUNS]))
-if "W3" in ONLY:
+        sizes=[(f"{mode}, N = {n:,}", [("exactcheck", ec("rational-sum", "--mode", mode, "--n", n))]
+                + [("gmp-c", anchor("rational_sum_gmp.py", mode, n))]
+                + [(t, anchor("rational_sum.py", t, mode, n)) for t in ("gmpy2", "flint")]
+                + ([("fraction", anchor("rational_sum.py", "fraction", mode, n))] if n <= 10000 else []))
+               for mode, n in SUM_RUNS]))
+if "sample-sphere" in ONLY:
     WORKLOADS.append(dict(
-        id="W3", title="W3: f64 sampling of the Spaeth discriminant, N = 10,000,000",
-        time="seconds", check=w3_check,
-        sizes=[("N = 10,000,000", [("exactcheck", ec("w3", "--n", 10_000_000, "--variant", "addition-serial")),
-                                   ("exactcheck 2 threads", ec("w3", "--n", 10_000_000))]
-                + [(f"numpy {v}", anchor("w3_numpy.py", v, 10_000_000))
+        id="sample-sphere", title="sample-sphere: f64 sampling of the Spaeth discriminant, N = 10,000,000",
+        time="seconds", check=sample_check,
+        sizes=[("N = 10,000,000", [("exactcheck", ec("sample-sphere", "--n", 10_000_000, "--variant", "addition-serial")),
+                                   ("exactcheck 2 threads", ec("sample-sphere", "--n", 10_000_000))]
+                + [(f"numpy {v}", anchor("sample_sphere_numpy.py", v, 10_000_000))
                    for v in ("addition", "chunked", "coef", "full")])]))
-if "W4" in ONLY:
+if "real-roots" in ONLY:
     WORKLOADS.append(dict(
-        id="W4", title="W4: all real roots isolated to width 2^-53",
-        time="seconds", check=w4_check,
-        sizes=[(f"{fam} {d}", [("exactcheck", ec("w4", "--family", fam, "--degree", d))]
-                + [(t, anchor("w4_roots.py", t, fam, d)) for t in ("flint-real", "flint-complex", "sympy")])
-               for fam, d in W4_RUNS]))
+        id="real-roots", title="real-roots: all real roots isolated to width 2^-53",
+        time="seconds", check=roots_check,
+        sizes=[(f"{fam} {d}", [("exactcheck", ec("real-roots", "--family", fam, "--degree", d))]
+                + [(t, anchor("real_roots.py", t, fam, d)) for t in ("flint-real", "flint-complex", "sympy")])
+               for fam, d in ROOT_RUNS]))
 
 # ------------------------------------------------------------------------- running
 
@@ -223,12 +224,12 @@ skipped = set()   # (workload id, series, tool) that timed out at a smaller size
 
 
 def series(w, label):
-    """The sizes a timeout carries over to: the same W2 mode, or the whole of W1 and W1d. None
-    in W4, where difficulty is not monotone in the degree (SymPy needs minutes at Mignotte 20
+    """The sizes a timeout carries over to: the same rational-sum mode, or the whole of chiang-identity and dense-product.
+    None in real-roots, where difficulty is not monotone in the degree (SymPy needs minutes at Mignotte 20
     and a tenth of a second at Mignotte 40)."""
-    if w["id"] == "W2":
+    if w["id"] == "rational-sum":
         return label.split(",")[0]
-    if w["id"] == "W4":
+    if w["id"] == "real-roots":
         return label
     return ""
 
@@ -302,7 +303,7 @@ verify_walls = []
 if "verify" in ONLY:
     for _ in range(args.reps):
         t0 = time.perf_counter()
-        out = subprocess.run([BIN, "verify"], capture_output=True, text=True)
+        out = subprocess.run([APP, "verify"], capture_output=True, text=True)
         verify_walls.append(time.perf_counter() - t0)
         if out.returncode != 0:
             fail(f"`exactcheck verify` exited {out.returncode}")
@@ -376,7 +377,7 @@ def cpu():
 
 rustc = subprocess.run(["rustc", "--version"], capture_output=True, text=True).stdout.strip()
 lines = []
-lines.append(f"Measured {datetime.date.today().isoformat()} by `scripts/compare.sh` on {cpu()}, "
+lines.append(f"Measured {datetime.date.today().isoformat()} by `bench/scripts/compare.sh` on {cpu()}, "
              f"{os.cpu_count()} cores, {platform.system()} {platform.release()}; {rustc}; "
              f"{args.reps} rounds per size, tools alternated run by run; each cell is the "
              "median process CPU time of the tool's own timed region, ± the largest deviation of a "
@@ -436,27 +437,27 @@ def check_ratio(desc, wid, label, tool, op, bound):
     target(desc, ok, shown)
 
 
-if "W1" in ONLY:
-    for m, n in W1_SIZES:
-        check_ratio(f"W1 ({m}, {n}) >= 50x SymPy's polynomial ring", "W1", f"(m, n) = ({m}, {n})",
+if "chiang-identity" in ONLY:
+    for m, n in IDENTITY_SIZES:
+        check_ratio(f"chiang-identity ({m}, {n}) >= 50x SymPy's polynomial ring", "chiang-identity", f"(m, n) = ({m}, {n})",
                     "sympyring", ">=", 50)
     for m, n in [(8, 13), (13, 21)]:
-        check_ratio(f"W1 ({m}, {n}) <= 0.85x python-flint", "W1", f"(m, n) = ({m}, {n})", "flint", "<=", 0.85)
-if "W1d" in ONLY:
-    check_ratio("dense product k = 8 <= 1.0x python-flint (fmpq_mpoly)", "W1d", "k = 8", "flint", "<=", 1.0)
-if "W2" in ONLY:
+        check_ratio(f"chiang-identity ({m}, {n}) <= 0.85x python-flint", "chiang-identity", f"(m, n) = ({m}, {n})", "flint", "<=", 0.85)
+if "dense-product" in ONLY:
+    check_ratio("dense product k = 8 <= 1.0x python-flint (fmpq_mpoly)", "dense-product", "k = 8", "flint", "<=", 1.0)
+if "rational-sum" in ONLY:
     for mode in ("eval", "tree", "seq"):
-        check_ratio(f"W2 {mode} N = 2,000 <= 1.0x gmpy2", "W2", f"{mode}, N = 2,000", "gmpy2", "<=", 1.0)
-    check_ratio("W2 seq N = 10,000 <= 1.2x gmpy2", "W2", "seq, N = 10,000", "gmpy2", "<=", 1.2)
-    check_ratio("W2 seq N = 100,000 <= 1.0x GMP mpq_t from C", "W2", "seq, N = 100,000", "gmp-c", "<=", 1.0)
-if "W3" in ONLY:
-    check_ratio("W3 >= 10x numpy running the same algorithm (angle addition), one thread each",
-                "W3", "N = 10,000,000", "numpy addition", ">=", 10)
-if "W4" in ONLY:
-    for fam, d in W4_RUNS:
-        check_ratio(f"W4 {fam} {d} <= 0.15x FLINT's real roots (VCA + refinement)", "W4", f"{fam} {d}",
+        check_ratio(f"rational-sum {mode} N = 2,000 <= 1.0x gmpy2", "rational-sum", f"{mode}, N = 2,000", "gmpy2", "<=", 1.0)
+    check_ratio("rational-sum seq N = 10,000 <= 1.2x gmpy2", "rational-sum", "seq, N = 10,000", "gmpy2", "<=", 1.2)
+    check_ratio("rational-sum seq N = 100,000 <= 1.0x GMP mpq_t from C", "rational-sum", "seq, N = 100,000", "gmp-c", "<=", 1.0)
+if "sample-sphere" in ONLY:
+    check_ratio("sample-sphere >= 10x numpy running the same algorithm (angle addition), one thread each",
+                "sample-sphere", "N = 10,000,000", "numpy addition", ">=", 10)
+if "real-roots" in ONLY:
+    for fam, d in ROOT_RUNS:
+        check_ratio(f"real-roots {fam} {d} <= 0.15x FLINT's real roots (VCA + refinement)", "real-roots", f"{fam} {d}",
                     "flint-real", "<=", 0.15)
-    check_ratio("W4 wilkinson 20 >= 100x SymPy", "W4", "wilkinson 20", "sympy", ">=", 100)
+    check_ratio("real-roots wilkinson 20 >= 100x SymPy", "real-roots", "wilkinson 20", "sympy", ">=", 100)
 if verify_walls:
     target("verify of the whole catalogue < 1 s", median(verify_walls) < 1.0, fmt_time(median(verify_walls)))
 

@@ -2,14 +2,14 @@
 """exactcheck's real algebraic numbers side by side with python-flint's qqbar and SymPy's
 minimal_polynomial.
 
-Usage: python3 scripts/compare_algebraic.py [--reps K] [--python PY]
+Usage: python3 bench/scripts/compare_algebraic.py [--reps K] [--python PY]
 
 Two workloads (python-flint 0.9 has no qqbar type, so FLINT takes part through
 fmpz_poly.cos_minpoly in the first only): (cos) the minimal polynomials of cos(2 pi / n) for n = 1..60; (sum) the polynomial
 of sqrt(2 + sqrt(2)) + sqrt(2 - sqrt(2)) + sqrt(3 + sqrt(3)) + sqrt(5 + sqrt(5)). exactcheck runs
 as `target/release/examples/algebraic_minpoly` (build it with
-`cargo build --release -p exactcheck-exact --example algebraic_minpoly`); the Python tools run in
-the anchors' virtual environment (`.venv-anchors`, see scripts/compare.sh; it needs
+`cargo build --release -p exactcheck-bench --example algebraic_minpoly`); the Python tools run in
+the anchors' virtual environment (`.venv-anchors`, see bench/scripts/compare.sh; it needs
 python-flint and sympy). The tools alternate run by run (K runs each); every run reports CPU time
 (exactcheck: the child's user + system time from getrusage; Python: time.process_time in the
 child) and wall time, and the table shows the medians.
@@ -21,7 +21,7 @@ polynomial, see the algebraic module) and the values must agree to 28 significan
 """
 import argparse, json, os, resource, statistics, subprocess, sys, time
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 BIN = os.path.join(ROOT, "target", "release", "examples", "algebraic_minpoly")
 
 p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -63,9 +63,9 @@ def fail(msg):
 
 
 if not os.access(BIN, os.X_OK):
-    fail(f"{BIN} is missing: cargo build --release -p exactcheck-exact --example algebraic_minpoly")
+    fail(f"{BIN} is missing: cargo build --release -p exactcheck-bench --example algebraic_minpoly")
 if not os.access(args.python, os.X_OK):
-    fail(f"{args.python} is missing: create the venv (scripts/compare.sh) with python-flint and sympy")
+    fail(f"{args.python} is missing: create the venv (bench/scripts/compare.sh) with python-flint and sympy")
 
 
 def run_exactcheck(which):

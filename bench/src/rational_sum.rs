@@ -1,12 +1,13 @@
-//! Workload W2: the exact Spaeth discriminant at many rational parameters (the benchmark of the
-//! exact rational field; `exactcheck bench w2`, `benches/w2.rs`, anchors `w2_rational.py`).
+//! The workload `rational-sum`: the exact Spaeth discriminant at many rational parameters (the
+//! benchmark of the exact rational field; the criterion benchmark `rational_sum`, anchors
+//! `rational_sum.py` and `rational_sum_gmp.py`).
 //!
 //! Cylinder about the axis point `(1/3, -2/7)`, radius 5, rotations `cos b = 3/5, sin b = 4/5`,
 //! `cos g = 5/13, sin g = -12/13`; sphere centre `(1, 2, 4)`, radius 5. At `T_k = k/1000 - 50`,
 //! `k = 0..N-1`, the angle is the rational circle point of `T_k` and the value is
 //! `disc = A^2 - B` ([`exactcheck_core::cylinder_sphere`]).
 
-use crate::bench::Stopwatch;
+use crate::Stopwatch;
 use exactcheck_core::cylinder_sphere::{unit_circle_point, Angle, CylinderSphere};
 use exactcheck_core::{pairwise_sum, Field, Sign, Vec3};
 use exactcheck_exact::RationalScalar;
@@ -27,10 +28,10 @@ pub enum Mode {
 }
 
 fn q<T: Field>(n: i64, d: i64) -> T {
-    T::from_ratio(n, d).expect("W2's constants and parameters have non-zero denominators")
+    T::from_ratio(n, d).expect("the workload's constants and parameters have non-zero denominators")
 }
 
-/// The W2 configuration over any field.
+/// The configuration of the workload over any field.
 pub fn problem<T: Field>() -> CylinderSphere<T> {
     CylinderSphere {
         a: q(1, 3),
@@ -54,13 +55,13 @@ pub fn parameter<T: Field>(k: usize) -> T {
     q::<T>(k as i64, 1000) - T::from_i64(50)
 }
 
-/// `disc(T)` for the W2 configuration.
+/// `disc(T)` for the configuration of the workload.
 pub fn discriminant<T: Field>(cs: &CylinderSphere<T>, tau: &T) -> T {
     let p = unit_circle_point(tau).expect("1 + T^2 > 0 for every rational T");
     cs.discriminant_at(&p.cos, &p.sin)
 }
 
-/// What a W2 run computed.
+/// What a run computed.
 #[derive(Clone, Debug)]
 pub struct Outcome<T> {
     /// Parameters with `disc >= 0`.
@@ -73,7 +74,7 @@ pub struct Outcome<T> {
     pub cpu_seconds: f64,
 }
 
-/// Runs W2 with `n` parameters in the given mode over the scalar `T`, timing the same region as
+/// Runs the workload with `n` parameters in the given mode over the scalar `T`, timing the same region as
 /// the anchor scripts (evaluation and summation, not the check values).
 pub fn run<T: Field + exactcheck_core::OrderedField>(n: usize, mode: Mode) -> Outcome<T> {
     let cs = problem::<T>();
@@ -155,6 +156,46 @@ pub fn check_values<T: RationalScalar>(sum: &T) -> CheckValues {
     }
 }
 
+/// Runs the workload with `n` parameters over the scalar `T` and formats it like
+/// `rational_sum.py` (one JSON line) or as text.
+pub fn report<T: RationalScalar>(n: usize, mode: Mode, scalar: &str, json: bool) -> String {
+    let out = run::<T>(n, mode);
+    let checks = out.sum.as_ref().map(check_values);
+    let mode_name = format!("{mode:?}").to_lowercase();
+    if json {
+        let mut s = format!(
+            "{{\"tool\": \"exactcheck\", \"scalar\": \"{scalar}\", \"mode\": \"{mode_name}\", \"N\": {n}, \"seconds\": {}, \"cpu_seconds\": {}, \"samples_per_s\": {}, \"count_nonneg\": {}",
+            out.seconds,
+            out.cpu_seconds,
+            n as f64 / out.seconds,
+            out.count_nonneg
+        );
+        if let Some(c) = &checks {
+            s += &format!(
+                ", \"sum_num_digits\": {}, \"sum_den_digits\": {}, \"sum_num_mod_p\": {}, \"sum_den_mod_p\": {}, \"sum_approx\": {:?}",
+                c.num_digits, c.den_digits, c.num_mod_p, c.den_mod_p, c.approx
+            );
+        }
+        s + "}"
+    } else {
+        let mut s = format!(
+            "rational-sum (exact Spaeth discriminant), N = {n}, mode {mode_name}, scalar {scalar}\n  parameters with disc >= 0: {}\n",
+            out.count_nonneg
+        );
+        if let Some(c) = &checks {
+            s += &format!(
+                "  exact sum: numerator {} digits, denominator {} digits\n  numerator mod 1e9+7 = {}, denominator mod 1e9+7 = {}\n  value ~ {:?}\n",
+                c.num_digits, c.den_digits, c.num_mod_p, c.den_mod_p, c.approx
+            );
+        }
+        s + &format!(
+            "  time: {:.3} s ({:.0} parameters/s)",
+            out.seconds,
+            n as f64 / out.seconds
+        )
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -177,7 +218,7 @@ mod tests {
     fn seq_sum_matches_the_anchors_at_2000() {
         // The running sum grows to 12,783 digits through the big + word-sized addition kernel;
         // the check values are those printed by gmpy2, FLINT and Fraction
-        // (scripts/anchors/w2_rational.py TOOL seq 2000).
+        // (bench/scripts/anchors/rational_sum.py TOOL seq 2000).
         let out = run::<Rational>(2000, Mode::Seq);
         assert_eq!(out.count_nonneg, 0);
         let cv = check_values(&out.sum.expect("seq mode returns the sum"));

@@ -1,16 +1,16 @@
-//! `exactcheck bench w4`: exact real root isolation (W4). All real roots of one of
-//! the W4 polynomials ([`exactcheck_exact::univariate::w4`]: Wilkinson products, SplitMix64
+//! The workload `real-roots`: exact real root isolation. All real roots of one of the
+//! benchmark's polynomials ([`exactcheck_exact::univariate::w4`]: Wilkinson products, SplitMix64
 //! random polynomials, Mignotte polynomials), each in an interval of width at most `2^-53`, by
 //! Descartes' rule with Newton refinement ([`exactcheck_exact::univariate::integer_real_roots_to`]).
-//! The timed region is the anchors' (`scripts/anchors/w4_roots.py`): from the integer
+//! The timed region is the anchors' (`bench/scripts/anchors/real_roots.py`): from the integer
 //! coefficients to the final sorted list, after the same untimed warm-up as the anchors (the
 //! roots of `x^2 - 2`: at a tenth of a millisecond, the first execution of the code, with cold
 //! caches and first-touch page faults, would otherwise cost as much as the isolation). The JSON
 //! line carries the intervals as exact rationals.
 
-use super::{Elapsed, Stopwatch};
-use crate::args::check_count;
-use crate::Error;
+use crate::{Elapsed, Stopwatch};
+use exactcheck::args::check_count;
+use exactcheck::Error;
 use clap::ValueEnum;
 use exactcheck_core::Ring;
 use exactcheck_exact::univariate::w4::{self, Family, MAX_W4_DEGREE};
@@ -20,9 +20,9 @@ use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{One, Zero};
 
-/// The W4 families on the command line.
+/// The families of polynomials on the command line.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum W4Family {
+pub enum RootFamily {
     /// `prod_{j=1..n} (n x - j)`.
     Wilkinson,
     /// SplitMix64 coefficients from the state `d` as signed 64-bit integers.
@@ -31,21 +31,21 @@ pub enum W4Family {
     Mignotte,
 }
 
-impl From<W4Family> for Family {
-    fn from(f: W4Family) -> Family {
+impl From<RootFamily> for Family {
+    fn from(f: RootFamily) -> Family {
         match f {
-            W4Family::Wilkinson => Family::Wilkinson,
-            W4Family::Random => Family::Random,
-            W4Family::Mignotte => Family::Mignotte,
+            RootFamily::Wilkinson => Family::Wilkinson,
+            RootFamily::Random => Family::Random,
+            RootFamily::Mignotte => Family::Mignotte,
         }
     }
 }
 
-/// Runs `bench w4`.
+/// Runs the workload.
 ///
 /// # Errors
 /// [`Error::Usage`] when the degree is 0 or above [`MAX_W4_DEGREE`].
-pub fn bench_w4(family: W4Family, degree: usize, json: bool) -> Result<String, Error> {
+pub fn run(family: RootFamily, degree: usize, json: bool) -> Result<String, Error> {
     let degree = check_count("--degree", degree, MAX_W4_DEGREE, "")?;
     let family = Family::from(family);
     let coeffs = family.polynomial(degree);
@@ -68,7 +68,7 @@ pub fn bench_w4(family: W4Family, degree: usize, json: bool) -> Result<String, E
         )
     } else {
         let mut s = format!(
-            "W4 (real roots to width 2^-53), family {name}, degree {degree}: {} real roots\n",
+            "real-roots (to width 2^-53), family {name}, degree {degree}: {} real roots\n",
             roots.len()
         );
         for r in &roots {

@@ -1,5 +1,5 @@
 //! The one timer of the benchmark workloads: wall-clock time and the process's CPU time of the
-//! same region, so that `scripts/compare.py` can compare tools by CPU time (the measure that a
+//! same region, so that `bench/scripts/compare.py` can compare tools by CPU time (the measure that a
 //! shared machine disturbs least) and still show wall time beside it.
 
 use std::time::Instant;

@@ -48,8 +48,6 @@ fn commands() -> Vec<(Vec<&'static str>, &'static str)> {
     vec![
         (vec!["verify", "--only", "spaeth"], ""),
         (vec!["verify", "--only", "spaeth", "--json"], ""),
-        (vec!["bench", "w2", "--n", "50"], ""),
-        (vec!["bench", "w3", "--n", "1000", "--json"], ""),
         (vec!["regress", "cylinder-sphere", "--samples", "20"], ""),
         (vec!["plot", "spaeth", "--example", "2", "-o", "-"], ""),
         (vec!["solve", "-"], PROBLEM),
@@ -140,49 +138,6 @@ fn a_full_stdout_is_one_line_and_status_2() {
 #[test]
 fn counts_out_of_range_are_one_line_naming_flag_and_limit() {
     for (args, message) in [
-        // Old: exit 0 (while w3 --n 0 exited 2).
-        (
-            &["bench", "w2", "--n", "0"][..],
-            "--n must be between 1 and 10000000 with --mode eval (got 0)",
-        ),
-        (
-            &["bench", "w3", "--n", "0"][..],
-            "--n must be between 1 and 1000000000 (got 0)",
-        ),
-        // Old: capacity overflow (a panic).
-        (
-            &[
-                "bench",
-                "w2",
-                "--n",
-                "18446744073709551615",
-                "--mode",
-                "tree",
-            ][..],
-            "--n must be between 1 and 1000000 with --mode tree (got 18446744073709551615)",
-        ),
-        // Old: aborted allocating.
-        (
-            &["bench", "w3", "--n", "100000000000000"][..],
-            "--n must be between 1 and 1000000000 (got 100000000000000)",
-        ),
-        (
-            &["bench", "w2", "--n", "100000000", "--mode", "tree"][..],
-            "--n must be between 1 and 1000000 with --mode tree (got 100000000)",
-        ),
-        // Old: ran silently for minutes.
-        (
-            &["bench", "w2", "--n", "1000000000000"][..],
-            "--n must be between 1 and 10000000 with --mode eval (got 1000000000000)",
-        ),
-        (
-            &["bench", "w2", "--n", "100001", "--mode", "seq"][..],
-            "--n must be between 1 and 100000 with --mode seq (got 100001)",
-        ),
-        (
-            &["bench", "w3", "--n", "1000000000000"][..],
-            "--n must be between 1 and 1000000000 (got 1000000000000)",
-        ),
         (
             &["regress", "cylinder-sphere", "--samples", "1000000000000"][..],
             "number of samples exceeds the limit samples = 100000 (found 1000000000000; raise it with --limit samples=N)",
@@ -203,9 +158,6 @@ fn counts_out_of_range_are_one_line_naming_flag_and_limit() {
         );
         assert!(o.stdout.is_empty());
     }
-    // The limits themselves are accepted.
-    let o = exactcheck(&["bench", "w2", "--n", "1", "--mode", "tree"]);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
 }
 
 #[test]
@@ -220,12 +172,8 @@ fn usage_errors_are_one_line_plus_a_hint_for_every_subcommand() {
         &["prove"][..],
         &["solve", "--float", "--both"][..],
         &["solve", "a", "b"][..],
-        &["bench"][..],
-        &["bench", "w4"][..],
-        &["bench", "w2", "--mode", "fastest"][..],
-        &["bench", "w2", "--n", "-3"][..],
-        &["bench", "w2", "--n", "18446744073709551616"][..],
-        &["bench", "w3", "--variant", "gpu"][..],
+        &["regress", "--samples", "-3"][..],
+        &["regress", "--samples", "18446744073709551616"][..],
         &["regress"][..],
         &["regress", "no-such-kernel"][..],
         &["regress", "bezier-cubic", "--seed", "x"][..],
@@ -249,14 +197,14 @@ fn usage_errors_are_one_line_plus_a_hint_for_every_subcommand() {
         assert!(lines[1].contains("--help`"), "{args:?}: {err}");
         assert!(o.stdout.is_empty(), "{args:?}");
     }
-    let o = exactcheck(&["bench", "w2", "--bogus"]);
+    let o = exactcheck(&["regress", "--bogus"]);
     assert_eq!(
         String::from_utf8_lossy(&o.stderr).lines().next(),
         Some("exactcheck: error: unexpected argument '--bogus' found")
     );
-    assert!(String::from_utf8_lossy(&o.stderr).contains("see `exactcheck bench w2 --help`"));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("see `exactcheck regress --help`"));
     // Help is not an error: standard output, status 0.
-    let o = exactcheck(&["bench", "--help"]);
+    let o = exactcheck(&["regress", "--help"]);
     assert_eq!(o.status.code(), Some(0));
     assert!(String::from_utf8_lossy(&o.stdout).contains("Usage:"));
 }

@@ -322,8 +322,15 @@ fn prove_random_mod_p() {
     ]);
     assert_eq!(o.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&o.stdout).starts_with("fails"));
-    // W1 for (m, n) = (4, 6) as text: holds mod p, and proved by expansion.
-    let (lhs, rhs) = exactcheck_exact::expr::w1_text(4, 6);
+    // Chiang's identity for (m, n) = (4, 6) as text (the benchmark chiang-identity's input, as
+    // `bench/scripts/anchors/chiang_text.py 4 6` prints it): holds mod p, and proved by expansion.
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/fixtures/chiang_identity_4_6.txt"
+    ))
+    .expect("the fixture");
+    let (lhs, rhs) = text.trim_end().split_once('\n').expect("two lines");
+    let (lhs, rhs) = (lhs.to_string(), rhs.to_string());
     let o = exactcheck(&["prove", &lhs, &rhs, "--random", "3"]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stdout));
     let o = exactcheck(&["prove", &lhs, &rhs]);

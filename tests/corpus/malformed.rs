@@ -11,7 +11,7 @@
 //! deliberate change); the `.expect` files of the other cases (hand-written: the line wanted after
 //! the fix) are kept, and every other check still applies.
 
-use crate::golden;
+use crate::common::golden;
 use crate::timed;
 
 use std::collections::{BTreeMap, BTreeSet};
@@ -447,7 +447,6 @@ fn the_corpus_covers_every_solve_kind_and_every_reading_command() {
         "prove",
         "prove --where",
         "prove --random",
-        "bench",
         "--limit",
         "--timeout",
     ];

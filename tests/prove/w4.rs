@@ -1,10 +1,9 @@
 //! W4 (exact real root isolation): the Descartes isolator and its refinement against
 //! the Sturm isolator (`UPoly::isolate_roots`, the reference), on random integer polynomials with
 //! repeated and rational roots, on the W4 families at small degrees and on known roots; the
-//! check values (root counts) of the comparison sizes; the `bench w4` command's contract.
+//! check values (root counts) of the comparison sizes (the `real-roots` benchmark's command is
+//! tested in `bench/`).
 //! No test measures time.
-
-use crate::common;
 
 use exactcheck_core::Ring;
 use exactcheck_exact::univariate::w4::{self, Family};
@@ -14,7 +13,6 @@ use exactcheck_exact::univariate::{
 use exactcheck_exact::Rational;
 use num_bigint::BigInt;
 use proptest::prelude::*;
-use std::process::Output;
 
 fn rat(n: i64, d: i64) -> Rational {
     Rational::new(n, d).expect("non-zero denominator")
@@ -231,57 +229,3 @@ proptest! {
 }
 
 // ------------------------------------------------------------------------------ the command
-
-fn exactcheck(args: &[&str]) -> Output {
-    common::exactcheck()
-        .args(args)
-        .output()
-        .expect("the binary runs")
-}
-
-#[test]
-fn bench_w4_json_line() {
-    let o = exactcheck(&[
-        "bench",
-        "w4",
-        "--family",
-        "wilkinson",
-        "--degree",
-        "8",
-        "--json",
-    ]);
-    assert!(o.status.success());
-    let s = String::from_utf8_lossy(&o.stdout);
-    let v: serde_json::Value = serde_json::from_str(s.trim()).expect("one JSON line");
-    assert_eq!(v["tool"], "exactcheck");
-    assert_eq!(v["family"], "wilkinson");
-    assert_eq!(v["degree"], 8);
-    assert_eq!(v["real_roots"], 8);
-    let roots = v["roots"].as_array().expect("a list");
-    assert_eq!(roots.len(), 8);
-    let w = w4::target_width();
-    for (j, r) in roots.iter().enumerate() {
-        let lo: Rational = r[0].as_str().expect("a string").parse().expect("p/q");
-        let hi: Rational = r[1].as_str().expect("a string").parse().expect("p/q");
-        assert!(hi.sub_ref(&lo) <= w);
-        let x = rat(j as i64 + 1, 8);
-        assert!(lo <= x && x <= hi);
-    }
-    assert!(v["seconds"].as_f64().is_some());
-}
-
-#[test]
-fn bench_w4_text_and_bad_degrees() {
-    let o = exactcheck(&["bench", "w4", "--family", "mignotte", "--degree", "20"]);
-    assert!(o.status.success());
-    let s = String::from_utf8_lossy(&o.stdout);
-    assert!(s.contains("4 real roots"), "{s}");
-    assert!(s.contains("0.09999999999"), "{s}");
-    for bad in ["0", "2001"] {
-        let o = exactcheck(&["bench", "w4", "--family", "random", "--degree", bad]);
-        assert_eq!(o.status.code(), Some(2));
-        let e = String::from_utf8_lossy(&o.stderr);
-        assert!(e.contains("--degree must be between 1 and 2000"), "{e}");
-        assert_eq!(e.trim().lines().count(), 1, "{e}");
-    }
-}

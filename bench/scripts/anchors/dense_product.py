@@ -1,13 +1,13 @@
 #!/usr/bin/env python3
-"""W1 dense: Fateman's dense product f (f + 1), f = (1 + x1 + ... + xV)^K.
+"""dense-product: Fateman's dense product f (f + 1), f = (1 + x1 + ... + xV)^K.
 
-Usage: python w1_dense.py TOOL [K=8] [V=4]
+Usage: python dense_product.py TOOL [K=8] [V=4]
   TOOL: flint (fmpq_mpoly, the same coefficient field as exactcheck's Poly<Rational>),
         flint-z (fmpz_mpoly, integer coefficients), sympy (SymPy's sparse ring over QQ),
         symengine (expand of the product)
 Prints one JSON line with `seconds` (the product alone; f is built before) and the check
 values: terms, coeff_sum (the value at (1, ..., 1)) and max_coeff, both as decimal strings.
-Written for exactcheck (scripts/compare.py); the same product is `exactcheck bench dense`.
+Written for exactcheck (bench/scripts/compare.py); the same product is `exactcheck-bench dense-product`.
 """
 import sys, time, json
 

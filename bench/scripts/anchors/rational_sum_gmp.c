@@ -1,11 +1,11 @@
-/* W2 in C on GMP's mpq_t: the same computation as w2_rational.py (see there), without an
+/* rational-sum in C on GMP's mpq_t: the same computation as rational_sum.py (see there), without an
  * interpreter, so that the cost of the Python layer of the gmpy2 and python-flint anchors is
- * visible. Built and run by w2_gmp.py against the libgmp that gmpy2 bundles; the few GMP
+ * visible. Built and run by rational_sum_gmp.py against the libgmp that gmpy2 bundles; the few GMP
  * declarations it needs are written out below because the wheel ships no gmp.h (the layouts are
  * GMP's documented ABI: mpz = {int alloc; int size; limb *d}, mpq = {mpz num; mpz den}).
  *
- * Usage: w2_gmp MODE N      (MODE: seq | eval | tree)
- * Prints one JSON line with seconds, cpu_seconds and the check values of w2_rational.py. */
+ * Usage: rational_sum_gmp MODE N      (MODE: seq | eval | tree)
+ * Prints one JSON line with seconds, cpu_seconds and the check values of rational_sum.py. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -43,7 +43,7 @@ static void set_q(mpq_struct *x, long p, unsigned long q) {
 static mpq_t a, b, r, d, e, f, R2, cb, sb, cg, sg, one, two, fifty, sgsb, cgsb, sgcb, cgcb;
 static mpq_t T2, den, ct, st, X, Y, u, v, w, A, B, t, t1;
 
-/* res = disc(T), the same operations as w2_rational.py's disc */
+/* res = disc(T), the same operations as rational_sum.py's disc */
 static void disc(mpq_struct *res, const mpq_struct *T) {
     __gmpq_mul(T2, T, T);
     __gmpq_add(den, one, T2);
@@ -73,7 +73,7 @@ static size_t digits(const mpz_struct *z) {
 }
 
 int main(int argc, char **argv) {
-    if (argc != 3) { fprintf(stderr, "usage: w2_gmp seq|eval|tree N\n"); return 2; }
+    if (argc != 3) { fprintf(stderr, "usage: rational_sum_gmp seq|eval|tree N\n"); return 2; }
     const char *mode = argv[1];
     long N = atol(argv[2]);
     if (strcmp(mode, "seq") && strcmp(mode, "eval") && strcmp(mode, "tree")) {

@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
-"""W2 in C on GMP's mpq_t (w2_gmp.c): builds the program once against the libgmp that gmpy2
+"""rational-sum in C on GMP's mpq_t (rational_sum_gmp.c): builds the program once against the libgmp that gmpy2
 bundles (a C compiler is needed; the build goes beside this virtual environment's Python) and
 runs it.
 
-Usage: w2_gmp.py MODE [COUNT]     (as w2_rational.py; prints its one JSON line)
+Usage: rational_sum_gmp.py MODE [COUNT]     (as rational_sum.py; prints its one JSON line)
 """
 import glob
 import os
@@ -19,16 +19,16 @@ def build():
     libs = os.path.join(os.path.dirname(os.path.dirname(gmpy2.__file__)), "gmpy2.libs")
     found = sorted(glob.glob(os.path.join(libs, "libgmp*.so*")))
     if not found:
-        raise SystemExit("w2_gmp: gmpy2's bundled libgmp was not found")
-    src = os.path.join(HERE, "w2_gmp.c")
-    exe = os.path.join(os.path.dirname(sys.executable), "w2_gmp")
+        raise SystemExit("rational_sum_gmp: gmpy2's bundled libgmp was not found")
+    src = os.path.join(HERE, "rational_sum_gmp.c")
+    exe = os.path.join(os.path.dirname(sys.executable), "rational_sum_gmp")
     if not os.path.exists(exe) or os.path.getmtime(exe) < os.path.getmtime(src):
         cc = os.environ.get("CC", "cc")
         cmd = [cc, "-O2", "-o", exe, src, "-L", libs, "-l:" + os.path.basename(found[0]),
                "-Wl,-rpath," + libs]
         done = subprocess.run(cmd, capture_output=True, text=True)
         if done.returncode != 0:
-            raise SystemExit(f"w2_gmp: `{' '.join(cmd)}` failed: {done.stderr.strip()[-400:]}")
+            raise SystemExit(f"rational_sum_gmp: `{' '.join(cmd)}` failed: {done.stderr.strip()[-400:]}")
     return exe
 
 

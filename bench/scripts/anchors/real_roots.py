@@ -1,13 +1,13 @@
 #!/usr/bin/env python3
-"""W4: all real roots of an integer polynomial, each isolated in an interval of width
-at most 2^-53, in SymPy or python-flint. The same polynomials as `exactcheck bench w4`:
+"""real-roots: all real roots of an integer polynomial, each isolated in an interval of width
+at most 2^-53, in SymPy or python-flint. The same polynomials as `exactcheck-bench real-roots`:
 
   wilkinson n : prod_{j=1..n} (n x - j)
   random d    : c_0..c_d the first d + 1 outputs of SplitMix64 from the state d, read as signed
                 64-bit integers; c_d = 0 becomes 1
   mignotte n  : x^n - 2 (10 x - 1)^2
 
-Usage: w4_roots.py TOOL FAMILY DEGREE   (TOOL: sympy | flint-real | flint-complex)
+Usage: real_roots.py TOOL FAMILY DEGREE   (TOOL: sympy | flint-real | flint-complex)
 
 Prints one JSON line: {"tool", "version", "family", "degree", "seconds", "real_roots",
 "roots": [["lo", "hi"], ...]} with lo, hi exact rationals ("p/q" or "p"), sorted. The timed
@@ -28,7 +28,7 @@ region is from the integer coefficients to the final list of intervals.
   realness) has an enclosure of width <= 2^-53; the arb midpoint and radius are dyadic and are
   converted exactly.
 
-Before the timed call each tool solves x^2 - 2 untimed (a warm-up, as `exactcheck bench w4`
+Before the timed call each tool solves x^2 - 2 untimed (a warm-up, as `exactcheck-bench real-roots`
 does): at a tenth of a millisecond the first execution of the code (cold caches, first-touch page
 faults) would otherwise weigh as much as the isolation itself. It is a different polynomial, so
 no result cache can serve the timed call.
@@ -227,7 +227,7 @@ def main():
     runs = {"sympy": run_sympy, "flint-complex": run_flint, "flint-real": run_flint_real}
     if tool not in runs:
         raise SystemExit(f"unknown tool {tool!r} (sympy, flint-real, flint-complex)")
-    # The warm-up (as `exactcheck bench w4`): the same call on x^2 - 2, untimed, so that the
+    # The warm-up (as `exactcheck-bench real-roots`): the same call on x^2 - 2, untimed, so that the
     # timed call measures the isolation rather than the first execution of its code.
     runs[tool](WARM_UP)
     version, seconds, cpu, roots = runs[tool](coeffs)

@@ -1,6 +1,5 @@
-//! Workload W1 (the claim list, Chiang's ruled-surface / plane theorem as a polynomial identity), in
-//! both of its forms: the text pair [`w1_text`] (re-exported from [`crate::expr`], where the
-//! expression syntax lives) and the identity built with the [`Ring`] API, [`ring_residuals`].
+//! Chiang's ruled-surface / plane theorem as a polynomial identity, built with the [`Ring`] API
+//! ([`ring_residuals`]).
 //!
 //! With Bézier curves `B(t)` of degree `n` (control points `p_j`) and `V(t)` of degree `m`
 //! (control points `q_i`), a plane `N.x + d = 0` with `N = (a, b, c)`, and Bernstein polynomials
@@ -13,17 +12,15 @@
 //!
 //! with `phi(i, j) = C(m, i) C(n, j) / C(m + n, k)`: the x component and the weight of the
 //! rational Bézier form of the intersection. [`ring_residuals`] builds both sides exactly as
-//! `scripts/anchors/w1_identity.py`'s flint backend does (Bernstein forms expanded, products
+//! `bench/scripts/anchors/chiang_identity.py`'s flint backend does (Bernstein forms expanded, products
 //! over the ring) and returns `LHS - RHS` of each; both are zero. With `negative`, `phi(0, 0)`
-//! becomes `1 + 1/7` (as `w1_identity.py --negative`), and both residuals are non-zero.
+//! becomes `1 + 1/7` (as `chiang_identity.py --negative`), and both residuals are non-zero.
 
-pub use crate::expr::w1_text;
-
-use crate::poly::{Poly, Vars};
-use crate::Rational;
+use exactcheck_exact::poly::{Poly, Vars};
+use exactcheck_exact::Rational;
 use exactcheck_core::{binomial, Ring};
 
-/// The residuals `(x component, weight)` of W1 at degrees `(m, n)`, built with the [`Ring`] API
+/// The residuals `(x component, weight)` of the identity at degrees `(m, n)`, built with the [`Ring`] API
 /// (see the module documentation); both are zero unless `negative`.
 ///
 /// # Panics
@@ -33,8 +30,8 @@ pub fn ring_residuals(m: u32, n: u32, negative: bool) -> (Poly<Rational>, Poly<R
     (w.x_residual, w.weight_residual)
 }
 
-/// W1 built with the [`Ring`] API: both residuals and the size of the expanded left-hand side
-/// (the `lhs_x_terms` check value of `scripts/anchors/w1_identity.py`).
+/// The identity built with the [`Ring`] API: both residuals and the size of the expanded left-hand side
+/// (the `lhs_x_terms` check value of `bench/scripts/anchors/chiang_identity.py`).
 #[derive(Clone, Debug)]
 pub struct RingIdentity {
     /// `LHS - RHS` of the x component (zero unless `negative`).
@@ -109,18 +106,5 @@ pub fn ring_identity(m: u32, n: u32, negative: bool) -> RingIdentity {
         weight_residual: nv - P::sum(q_rhs),
         lhs_x_terms,
         variables: vars.len(),
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn small_w1_holds_and_its_negative_fails() {
-        let (dp, dq) = ring_residuals(2, 3, false);
-        assert!(dp.is_zero() && dq.is_zero());
-        let (dp, dq) = ring_residuals(2, 3, true);
-        assert!(!dp.is_zero() && !dq.is_zero());
     }
 }

@@ -1,12 +1,10 @@
-//! Workload W1 as text.
+//! The identity as text, for the whole `exactcheck prove` path and for other systems.
 
 use exactcheck_core::binomial;
 
-// ------------------------------------------------------------------------------ workload W1
-
-/// Workload W1 as text: Chiang's ruled-surface / plane theorem, x component, as the two
+/// The identity as text: Chiang's ruled-surface / plane theorem, x component, as the two
 /// sides of a polynomial identity in `t, a, b, c, d, px0.., py0.., pz0.., qx0.., qy0.., qz0..`,
-/// exactly as `scripts/anchors/w1_text.py M N` prints them:
+/// exactly as `bench/scripts/anchors/chiang_text.py M N` prints them:
 ///
 /// * LHS `(N.V(t)) Bx(t) - (N.B(t) + d) Vx(t)` with the Bernstein forms written unexpanded,
 ///   `C(n,j)*t^j*(1-t)^(n-j)`;
@@ -18,7 +16,7 @@ use exactcheck_core::binomial;
 ///
 /// # Panics
 /// When `m + n > 67` (binomial coefficients beyond `u64`).
-pub fn w1_text(m: u32, n: u32) -> (String, String) {
+pub fn identity_text(m: u32, n: u32) -> (String, String) {
     let bern = |deg: u32, i: u32| format!("{}*t^{}*(1-t)^{}", binomial(deg, i), i, deg - i);
     let dot_q = |i: u32| format!("(a*qx{i}+b*qy{i}+c*qz{i})");
     let dot_p = |j: u32| format!("(a*px{j}+b*py{j}+c*pz{j}+d)");

@@ -1,9 +1,9 @@
-//! The W3 kernel without a libm call per sample: angle addition per block, lanes that vectorize.
+//! The `sample-sphere` kernel without a libm call per sample: angle addition per block, lanes that vectorize.
 //!
 //! # The kernel
 //!
 //! The grid is `t_i = fl(i dt)`, `dt = fl(2 pi / n)`, `i = 0..n` (exactly the grid of
-//! [`DiscSampler::sweep`], the reference). It is cut into the same fixed chunks of [`CHUNK`]
+//! [`Sweep::sweep`](super::Sweep::sweep), the reference). It is cut into the same fixed chunks of [`CHUNK`]
 //! samples (the unit of the deterministic reduction and of the rayon work split), and each chunk
 //! into blocks of [`BLOCK`] samples starting at multiples of `BLOCK`. Once per sweep an
 //! [`AngleTable`] holds `(cos theta_j, sin theta_j)`, `theta_j = fl(j dt)`, for `j < BLOCK` (libm,
@@ -82,14 +82,14 @@
 //!     |disc_kernel - disc_reference| <= D = 2 alpha M_A E + beta E (1 + E) + 2 R
 //! ```
 //!
-//! (times `1.001` for the `O(u^2)` terms; [`DiscSampler::addition_disc_error`]). As
+//! (times `1.001` for the `O(u^2)` terms; [`AdditionSweep::addition_disc_error`]). As
 //! `2 alpha M_A <= 2 M_A^2` and `beta <= 2 M_B`, this is at most
 //! `(38 + 16) u M_A^2 + (38 + 12) u M_B`: **`A^2 - B` is within 55 ulps (`u`) of the
 //! discriminant's scale `M_A^2 + M_B`** for every configuration (the relative bound of
-//! [`DiscSampler::addition_disc_error_scaled`]). For the W3 configuration (where `A` happens to
+//! [`AdditionSweep::addition_disc_error_scaled`]). For the workload's configuration (where `A` happens to
 //! be constant, `alpha ~ 4e-16`) `D ~ 4.6e-13`, 40 u of its scale `M_A^2 + M_B ~ 105`.
 //! Consequently the count differs from the reference's only through samples whose reference
-//! `|disc| <= D` (none on the W3 grid of `N = 10^7`, asserted by its test), and every counted
+//! `|disc| <= D` (none on the workload's grid of `N = 10^7`, asserted by its test), and every counted
 //! sample's `sqrt` differs by at most `D / sqrt(disc_reference)` (or `sqrt D` when
 //! `|disc_reference| <= D`).
 //!
@@ -99,11 +99,12 @@
 //! `gamma_K` times the sum (plus `u` per `sqrt`, correctly rounded, in kernel and reference): at
 //! `N = 10^7`, `K = 2662`, `gamma_K ~ 3.0e-13`. The sum `S` is thus within
 //! `(gamma_K + 2 u) S + sum_i (D / sqrt disc_i, or sqrt D)` of the exact sum of the reference's
-//! square roots ([`sum_error_bound`]; `3.35e-13 S` for W3 at `N = 10^7`), inside the `1e-12`
+//! square roots ([`sum_error_bound`]; `3.35e-13 S` for the workload at `N = 10^7`), inside the `1e-12`
 //! relative agreement with numpy that the check value asks (numpy sums pairwise, its own error
 //! is smaller).
 
-use super::{combine, DiscSampler, GridSummary, CHUNK};
+use super::{combine, GridSummary, CHUNK};
+use exactcheck_float::sampler::DiscSampler;
 use rayon::prelude::*;
 
 /// Samples per block: one libm `sin_cos` per block, and the length of the [`AngleTable`].
@@ -163,7 +164,7 @@ impl AngleTable {
 
     /// Writes the discriminant `A^2 - B` of `sampler` at the samples `i = i0 .. i0 + d.len()`,
     /// from the angle-addition `cos t_i`, `sin t_i` of [`AngleTable::rotate`] (the kernel's first
-    /// pass; within [`DiscSampler::addition_disc_error`] of [`DiscSampler::discriminant`]).
+    /// pass; within [`AdditionSweep::addition_disc_error`] of [`DiscSampler::discriminant`]).
     ///
     /// # Panics
     /// If `d` is longer than the table.
@@ -311,25 +312,43 @@ fn chunk_generic(s: &DiscSampler, table: &AngleTable, lo: usize, hi: usize) -> G
     lanes.finish()
 }
 
-impl DiscSampler {
+/// The angle-addition sweeps of a sampler and their error bound.
+pub trait AdditionSweep {
     /// Sweeps the grid `t_i = i 2 pi / n` with the angle-addition kernel, on all cores, on the
     /// fastest [`KernelPath`]. Within the bounds of the module doc of the reference
-    /// [`DiscSampler::sweep`]; independent of the number of threads. An empty grid (`n = 0`)
+    /// [`super::Sweep::sweep`]; independent of the number of threads. An empty grid (`n = 0`)
     /// gives the empty summary, as the reference does.
-    pub fn sweep_addition(&self, n: usize) -> GridSummary {
+    fn sweep_addition(&self, n: usize) -> GridSummary;
+
+    /// [`AdditionSweep::sweep_addition`] on the calling thread only (the same result).
+    fn sweep_addition_serial(&self, n: usize) -> GridSummary;
+
+    /// The angle-addition sweep on a given path, on all cores (`parallel`) or on this thread;
+    /// `None` if this CPU does not run `path`.
+    fn sweep_addition_with(&self, n: usize, path: KernelPath, parallel: bool)
+        -> Option<GridSummary>;
+
+    /// The bound `D` on `|disc_kernel - disc_reference|` at every sample (module doc): the
+    /// angle-addition kernel's `A^2 - B` against [`DiscSampler::discriminant`] at the same `t_i`.
+    fn addition_disc_error(&self) -> f64;
+
+    /// [`AdditionSweep::addition_disc_error`] in units of `u (M_A^2 + M_B)`, `u = 2^-53`: the
+    /// number of ulps of the discriminant's scale (its largest possible terms) it amounts to.
+    fn addition_disc_error_scaled(&self) -> f64;
+}
+
+impl AdditionSweep for DiscSampler {
+    fn sweep_addition(&self, n: usize) -> GridSummary {
         self.sweep_addition_with(n, KernelPath::detect(), true)
             .expect("the detected path is available")
     }
 
-    /// [`DiscSampler::sweep_addition`] on the calling thread only (the same result).
-    pub fn sweep_addition_serial(&self, n: usize) -> GridSummary {
+    fn sweep_addition_serial(&self, n: usize) -> GridSummary {
         self.sweep_addition_with(n, KernelPath::detect(), false)
             .expect("the detected path is available")
     }
 
-    /// The angle-addition sweep on a given path, on all cores (`parallel`) or on this thread;
-    /// `None` if this CPU does not run `path`.
-    pub fn sweep_addition_with(
+    fn sweep_addition_with(
         &self,
         n: usize,
         path: KernelPath,
@@ -352,32 +371,30 @@ impl DiscSampler {
         Some(combine(&parts))
     }
 
-    fn magnitudes(&self) -> (f64, f64, f64, f64) {
-        let e = 1.0 + TRIG_ERROR;
-        let [a0, a1, a2] = self.a.map(f64::abs);
-        let [b0, b1, b2, b3, b4, b5] = self.b.map(f64::abs);
-        let alpha = a1 + a2;
-        let beta = b1 + b2 + 2.0 * (b3 + b4 + b5);
-        let ma = a0 + alpha * e;
-        let mb = (b0 + b1 + b2 + b3 + b4 + b5) * e * e;
-        (alpha, beta, ma, mb)
-    }
-
-    /// The bound `D` on `|disc_kernel - disc_reference|` at every sample (module doc): the
-    /// angle-addition kernel's `A^2 - B` against [`DiscSampler::discriminant`] at the same `t_i`.
-    pub fn addition_disc_error(&self) -> f64 {
-        let (alpha, beta, ma, mb) = self.magnitudes();
+    fn addition_disc_error(&self) -> f64 {
+        let (alpha, beta, ma, mb) = magnitudes(self);
         let e = TRIG_ERROR;
         let r = 8.0 * U * ma * ma + 6.0 * U * mb;
         (2.0 * alpha * ma * e + beta * e * (1.0 + e) + 2.0 * r) * 1.001
     }
 
-    /// [`DiscSampler::addition_disc_error`] in units of `u (M_A^2 + M_B)`, `u = 2^-53`: the
-    /// number of ulps of the discriminant's scale (its largest possible terms) it amounts to.
-    pub fn addition_disc_error_scaled(&self) -> f64 {
-        let (_, _, ma, mb) = self.magnitudes();
+    fn addition_disc_error_scaled(&self) -> f64 {
+        let (_, _, ma, mb) = magnitudes(self);
         self.addition_disc_error() / (U * (ma * ma + mb))
     }
+}
+
+/// The magnitudes of the module doc's error bound: `(alpha, beta, M_A, M_B)`.
+fn magnitudes(s: &DiscSampler) -> (f64, f64, f64, f64) {
+    let e = 1.0 + TRIG_ERROR;
+    let (a, b) = s.coefficients();
+    let [a0, a1, a2] = a.map(f64::abs);
+    let [b0, b1, b2, b3, b4, b5] = b.map(f64::abs);
+    let alpha = a1 + a2;
+    let beta = b1 + b2 + 2.0 * (b3 + b4 + b5);
+    let ma = a0 + alpha * e;
+    let mb = (b0 + b1 + b2 + b3 + b4 + b5) * e * e;
+    (alpha, beta, ma, mb)
 }
 
 /// The summation depth `K` of a sweep of `n` samples (lane, pairwise lane sum, chunks in order).
@@ -387,7 +404,7 @@ pub fn sum_depth(n: usize) -> usize {
 
 /// The bound of the module doc on `|kernel sum - exact sum of sqrt(reference disc)|` for a sweep
 /// of `n` samples whose kernel sum is `sum`, given the reference discriminants and the
-/// per-sample bound `d` ([`DiscSampler::addition_disc_error`]):
+/// per-sample bound `d` ([`AdditionSweep::addition_disc_error`]):
 /// `(gamma_K + 2 u) sum + sum_i (d / sqrt(disc_i) if disc_i > d, sqrt(d) if |disc_i| <= d)`
 /// (`2 u`: the kernel's and the reference's correctly rounded `sqrt`).
 pub fn sum_error_bound(n: usize, sum: f64, reference_discs: &[f64], d: f64) -> f64 {
@@ -411,8 +428,9 @@ pub fn sum_error_bound(n: usize, sum: f64, reference_discs: &[f64], d: f64) -> f
 #[cfg(test)]
 mod tests {
     use super::super::tests::w3;
+    use super::super::Sweep;
     use super::*;
-    use crate::convert::fsum;
+    use exactcheck_float::convert::fsum;
     use exactcheck_core::cylinder_sphere::{Angle, CylinderSphere};
     use exactcheck_core::rng::splitmix64;
     use exactcheck_core::Vec3;
@@ -474,7 +492,7 @@ mod tests {
     }
 
     /// Random configurations (axis point, radii, angles from Pythagorean triples, centre) from
-    /// seeded SplitMix64, with the W3 one first.
+    /// seeded SplitMix64, with the workload's first.
     fn configurations() -> Vec<CylinderSphere<f64>> {
         let mut state = 14;
         let mut uniform = |lo: f64, hi: f64| {
@@ -572,7 +590,7 @@ mod tests {
     }
 
     #[test]
-    fn the_w3_discriminant_bound_is_as_stated() {
+    fn the_workloads_discriminant_bound_is_as_stated() {
         let s = DiscSampler::new(&w3());
         let d = s.addition_disc_error();
         assert!(d > 4e-13 && d < 5e-13, "{d:e}");
@@ -641,7 +659,7 @@ mod tests {
         #[cfg(target_arch = "x86_64")]
         if !KernelPath::Avx2.is_available() {
             assert_eq!(
-                w3_sampler().sweep_addition_with(10, KernelPath::Avx2, false),
+                workload_sampler().sweep_addition_with(10, KernelPath::Avx2, false),
                 None
             );
         }
@@ -693,7 +711,7 @@ mod tests {
         }
     }
 
-    fn w3_sampler() -> DiscSampler {
+    fn workload_sampler() -> DiscSampler {
         DiscSampler::new(&w3())
     }
 
@@ -703,13 +721,13 @@ mod tests {
         assert_eq!(sum_depth(1), CHUNK / LANES + 3 + 1);
     }
 
-    /// The check values of `w3_numpy.py` at N = 10^7 on every path: count exactly, sum to 1e-12
+    /// The check values of `sample_sphere_numpy.py` at N = 10^7 on every path: count exactly, sum to 1e-12
     /// relative; and the reference sweep's sum (exact sum of its square roots) within the bound.
     #[test]
     #[cfg_attr(debug_assertions, ignore = "release-mode test: 10^7 samples per path")]
-    fn w3_check_values_at_ten_million() {
+    fn check_values_at_ten_million() {
         let n = 10_000_000;
-        let s = w3_sampler();
+        let s = workload_sampler();
         let numpy = 13229714.773764007;
         for path in [KernelPath::Portable, KernelPath::Avx2] {
             let Some(got) = s.sweep_addition_with(n, path, true) else {
