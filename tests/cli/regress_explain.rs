@@ -2,15 +2,28 @@
 //! operation, conditioning against the algorithm, `--bin`, `--csv`, `--html`, and the page
 //! docs/regress-explain.md, whose shown output must be what the tool prints.
 
+use crate::common;
 use serde_json::Value;
-use std::process::{Command, Output};
+use std::process::Output;
 
 fn exactcheck(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+    common::exactcheck()
         .args(args)
         .current_dir(env!("CARGO_MANIFEST_DIR"))
         .output()
         .expect("the binary runs")
+}
+
+/// `exactcheck regress --formula FORMULA [--vars VARS] --domain DOMAIN --samples SAMPLES
+/// EXTRA...` (`vars` empty: the variables as the formula names them).
+fn regress(formula: &str, vars: &str, domain: &str, samples: &str, extra: &[&str]) -> Output {
+    let mut args = vec!["regress", "--formula", formula];
+    if !vars.is_empty() {
+        args.extend(["--vars", vars]);
+    }
+    args.extend(["--domain", domain, "--samples", samples]);
+    args.extend_from_slice(extra);
+    exactcheck(&args)
 }
 
 /// A fresh scratch directory for one test.
@@ -31,17 +44,16 @@ const CANCEL: &str = "sqrt(x + 1) - sqrt(x)";
 const QUADRATIC: &str = "(-b + sqrt(b*b - 4*a*c)) / (2*a)";
 const QUADRATIC_DOMAIN: &str = "a in [1, 2], b in [1e3, 1e8], c in [1, 2]";
 
-/// The explanation of the worst case of a `--json` run.
-fn explanation(args: &[&str]) -> Value {
-    let mut all = vec!["regress", "--samples", "1000", "--worst", "1", "--json"];
-    all.extend_from_slice(args);
-    let doc = json_of(&exactcheck(&all));
+/// The explanation of the worst case of a `--json` run of 1000 samples.
+fn explanation(formula: &str, vars: &str, domain: &str, extra: &[&str]) -> Value {
+    let extra = [&["--worst", "1", "--json"][..], extra].concat();
+    let doc = json_of(&regress(formula, vars, domain, "1000", &extra));
     doc["entries"][0]["worst"][0]["explanation"].clone()
 }
 
 #[test]
 fn the_subtraction_of_sqrt_x_plus_1_minus_sqrt_x_loses_the_bits_of_a_well_conditioned_problem() {
-    let e = explanation(&["--formula", CANCEL, "--domain", "x in [1, 1e15]"]);
+    let e = explanation(CANCEL, "", "x in [1, 1e15]", &[]);
     let top = &e["operations"][0];
     assert_eq!(top["operation"], "subtraction", "{e}");
     assert_eq!(top["at"], CANCEL, "{e}");
@@ -53,18 +65,7 @@ fn the_subtraction_of_sqrt_x_plus_1_minus_sqrt_x_loses_the_bits_of_a_well_condit
     assert!((cond - 0.5).abs() < 1e-3, "{e}");
     assert!(e["bits"].as_f64().unwrap() > 30.0, "{e}");
 
-    let o = exactcheck(&[
-        "regress",
-        "--formula",
-        CANCEL,
-        "--domain",
-        "x in [1, 1e15]",
-        "--samples",
-        "500",
-        "--worst",
-        "1",
-        "--quiet",
-    ]);
+    let o = regress(CANCEL, "", "x in [1, 1e15]", "500", &["--worst", "1", "--quiet"]);
     let text = String::from_utf8(o.stdout).unwrap();
     assert!(
         text.contains("local error: the subtraction in sqrt(x + 1) - sqrt(x) loses"),
@@ -78,14 +79,7 @@ fn the_subtraction_of_sqrt_x_plus_1_minus_sqrt_x_loses_the_bits_of_a_well_condit
 
 #[test]
 fn the_naive_quadratic_formula_loses_its_bits_in_the_cancelling_addition() {
-    let e = explanation(&[
-        "--formula",
-        QUADRATIC,
-        "--vars",
-        "a,b,c",
-        "--domain",
-        QUADRATIC_DOMAIN,
-    ]);
+    let e = explanation(QUADRATIC, "a,b,c", QUADRATIC_DOMAIN, &[]);
     let top = &e["operations"][0];
     assert_eq!(top["operation"], "addition", "{e}");
     assert_eq!(top["at"], "-b + sqrt(b * b - 4 * a * c)", "{e}");
@@ -98,26 +92,16 @@ fn the_naive_quadratic_formula_loses_its_bits_in_the_cancelling_addition() {
 
 #[test]
 fn a_stable_formula_reports_no_dominant_loss() {
-    let e = explanation(&[
-        "--formula",
-        "1/(sqrt(x + 1) + sqrt(x))",
-        "--domain",
-        "x in [1, 1e15]",
-    ]);
+    let e = explanation("1/(sqrt(x + 1) + sqrt(x))", "", "x in [1, 1e15]", &[]);
     assert_eq!(e["operations"], Value::Array(vec![]), "{e}");
     assert!(e["bits"].as_f64().unwrap() <= 2.0, "{e}");
-    let o = exactcheck(&[
-        "regress",
-        "--formula",
+    let o = regress(
         "1/(sqrt(x + 1) + sqrt(x))",
-        "--domain",
+        "",
         "x in [1, 1e15]",
-        "--samples",
         "300",
-        "--worst",
-        "1",
-        "--quiet",
-    ]);
+        &["--worst", "1", "--quiet"],
+    );
     let text = String::from_utf8(o.stdout).unwrap();
     assert!(text.contains("local error: no dominant loss"), "{text}");
     assert!(
@@ -128,14 +112,7 @@ fn a_stable_formula_reports_no_dominant_loss() {
 
 #[test]
 fn an_ill_conditioned_difference_of_squares_is_the_problems_loss() {
-    let e = explanation(&[
-        "--formula",
-        "x*x - y*y",
-        "--vars",
-        "x,y",
-        "--domain",
-        "x in [1, 2], y in [1, 2]",
-    ]);
+    let e = explanation("x*x - y*y", "x,y", "x in [1, 2], y in [1, 2]", &[]);
     let cond = e["condition"].as_f64().unwrap();
     let bits = e["bits"].as_f64().unwrap();
     assert!(cond > 100.0, "{e}");
@@ -144,14 +121,12 @@ fn an_ill_conditioned_difference_of_squares_is_the_problems_loss() {
 
 #[test]
 fn an_external_program_gets_conditioning_but_no_local_error() {
-    let e = explanation(&[
-        "--formula",
+    let e = explanation(
         CANCEL,
-        "--domain",
+        "",
         "x in [1, 1e6]",
-        "--program",
-        "python3 tests/regress/cancel.py",
-    ]);
+        &["--program", "python3 tests/regress/cancel.py"],
+    );
     if e.is_null() {
         // No python3 here: nothing to check.
         return;
@@ -165,22 +140,13 @@ fn an_external_program_gets_conditioning_but_no_local_error() {
 
 #[test]
 fn bins_count_every_compared_sample() {
-    let doc = json_of(&exactcheck(&[
-        "regress",
-        "--formula",
+    let doc = json_of(&regress(
         QUADRATIC,
-        "--vars",
         "a,b,c",
-        "--domain",
         QUADRATIC_DOMAIN,
-        "--samples",
         "500",
-        "--worst",
-        "1",
-        "--bin",
-        "b*b/(a*c)",
-        "--json",
-    ]));
+        &["--worst", "1", "--bin", "b*b/(a*c)", "--json"],
+    ));
     let entry = &doc["entries"][0];
     let bins = entry["bins"]["bins"].as_array().unwrap();
     let total: u64 = bins.iter().map(|b| b["samples"].as_u64().unwrap()).sum();
@@ -195,22 +161,13 @@ fn bins_count_every_compared_sample() {
     let first = bins.first().unwrap()["mean_bits"].as_f64().unwrap();
     let last = bins.last().unwrap()["mean_bits"].as_f64().unwrap();
     assert!(last > first + 10.0, "{bins:?}");
-    let o = exactcheck(&[
-        "regress",
-        "--formula",
+    let o = regress(
         QUADRATIC,
-        "--vars",
         "a,b,c",
-        "--domain",
         QUADRATIC_DOMAIN,
-        "--samples",
         "200",
-        "--worst",
-        "1",
-        "--bin",
-        "b*b/(a*c)",
-        "--quiet",
-    ]);
+        &["--worst", "1", "--bin", "b*b/(a*c)", "--quiet"],
+    );
     let text = String::from_utf8(o.stdout).unwrap();
     assert!(
         text.contains("error by the value of --bin b*b/(a*c):"),
@@ -223,20 +180,13 @@ fn csv_has_one_checked_row_per_compared_sample() {
     let dir = scratch("csv");
     let path = dir.join("samples.csv");
     let path = path.to_str().unwrap();
-    let doc = json_of(&exactcheck(&[
-        "regress",
-        "--formula",
+    let doc = json_of(&regress(
         "x*x - y*y",
-        "--vars",
         "x,y",
-        "--domain",
         "x in [1, 2], y in [1, 2]",
-        "--samples",
         "300",
-        "--csv",
-        path,
-        "--json",
-    ]));
+        &["--csv", path, "--json"],
+    ));
     let text = std::fs::read_to_string(path).unwrap();
     let mut lines = text.lines();
     assert_eq!(
@@ -275,22 +225,13 @@ fn html_has_the_explanation_and_one_plot_per_input() {
     let dir = scratch("html");
     let path = dir.join("report.html");
     let path = path.to_str().unwrap();
-    let o = exactcheck(&[
-        "regress",
-        "--formula",
+    let o = regress(
         QUADRATIC,
-        "--vars",
         "a,b,c",
-        "--domain",
         QUADRATIC_DOMAIN,
-        "--samples",
         "300",
-        "--worst",
-        "1",
-        "--quiet",
-        "--html",
-        path,
-    ]);
+        &["--worst", "1", "--quiet", "--html", path],
+    );
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let page = std::fs::read_to_string(path).unwrap();
     assert_eq!(page.matches("<svg").count(), 3);
@@ -301,69 +242,30 @@ fn html_has_the_explanation_and_one_plot_per_input() {
 
 #[test]
 fn bad_explain_options_are_refused_in_one_line() {
+    // The arguments after `regress`, separated by `|`.
     for (args, needle) in [
         (
-            vec![
-                "regress",
-                "--formula",
-                "x + y",
-                "--samples",
-                "10",
-                "--bin",
-                "1/(x - x)",
-            ],
+            "--formula|x + y|--samples|10|--bin|1/(x - x)",
             "is undefined (outside its domain) at sample 0",
         ),
         (
-            vec![
-                "regress",
-                "--formula",
-                "x + y",
-                "--samples",
-                "10",
-                "--bin",
-                "z",
-            ],
+            "--formula|x + y|--samples|10|--bin|z",
             "--bin: unknown variable 'z'",
         ),
         (
-            vec![
-                "regress",
-                "--formula",
-                "x",
-                "--samples",
-                "10",
-                "--csv",
-                "/no/such/dir/a.csv",
-            ],
+            "--formula|x|--samples|10|--csv|/no/such/dir/a.csv",
             "the directory /no/such/dir does not exist",
         ),
         (
-            vec![
-                "regress",
-                "cylinder-sphere",
-                "--samples",
-                "10",
-                "--bin",
-                "x",
-            ],
+            "cylinder-sphere|--samples|10|--bin|x",
             "--bin applies to --formula and --fpcore",
         ),
         (
-            vec![
-                "regress",
-                "--formula",
-                "x",
-                "--samples",
-                "10",
-                "--shard",
-                "1/2",
-                "--bin",
-                "x",
-            ],
+            "--formula|x|--samples|10|--shard|1/2|--bin|x",
             "--bin needs the whole sweep",
         ),
     ] {
+        let args: Vec<&str> = std::iter::once("regress").chain(args.split('|')).collect();
         let o = exactcheck(&args);
         let err = String::from_utf8_lossy(&o.stderr);
         assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");

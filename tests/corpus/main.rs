@@ -2,8 +2,8 @@
 //! resource limits (`tests/stress/`), each case a run of the binary under a kill-timeout. One
 //! test binary, apart from the others so that no other test competes with its deadlines.
 
-#[path = "../common/golden.rs"]
-mod golden;
+#[path = "../common/mod.rs"]
+mod common;
 #[path = "../common/timed.rs"]
 mod timed;
 

@@ -5,18 +5,9 @@
 
 use crate::timed;
 
-use timed::run_text as run;
+use timed::{prove_json, run_text as run};
 
 /// `prove ARGS --json` as a JSON object, with its exit status.
-fn prove_json(args: &[&str]) -> (i32, serde_json::Value) {
-    let mut all = vec!["prove"];
-    all.extend_from_slice(args);
-    all.push("--json");
-    let (code, out, err) = run(&all);
-    assert!(err.is_empty(), "{args:?}: {err}");
-    (code, serde_json::from_str(&out).expect("one JSON object"))
-}
-
 #[test]
 fn the_rational_unit_circle_is_proved_for_every_real_t() {
     let (code, out, _) = run(&["prove", "((1-t^2)/(1+t^2))^2 + (2*t/(1+t^2))^2", "1"]);

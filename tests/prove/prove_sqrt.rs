@@ -5,18 +5,9 @@
 
 use crate::timed;
 
-use timed::run_text as run;
+use timed::{prove_json, run_text as run};
 
 /// `prove ARGS --json` as a JSON object, with its exit status.
-fn prove_json(args: &[&str]) -> (i32, serde_json::Value) {
-    let mut all = vec!["prove"];
-    all.extend_from_slice(args);
-    all.push("--json");
-    let (code, out, err) = run(&all);
-    assert!(err.is_empty(), "{args:?}: {err}");
-    (code, serde_json::from_str(&out).expect("one JSON object"))
-}
-
 fn point(j: &serde_json::Value, name: &str) -> String {
     j["point"][name]
         .as_str()
