@@ -16,10 +16,10 @@ use std::hint::black_box;
 use std::time::Duration;
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
+use exactcheck_bench::chiang_identity::{identity_text, ring_residuals};
 use exactcheck_core::Ring;
 use exactcheck_exact::expr::parse_poly;
 use exactcheck_exact::poly::{Poly, Vars};
-use exactcheck_bench::chiang_identity::{identity_text, ring_residuals};
 use exactcheck_exact::Rational;
 
 type P = Poly<Rational>;

@@ -11,7 +11,9 @@
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use exactcheck_bench::rational_sum::problem;
-use exactcheck_bench::sample_sphere::{sweep_direct, AdditionSweep, GridSummary, KernelPath, Sweep};
+use exactcheck_bench::sample_sphere::{
+    sweep_direct, AdditionSweep, GridSummary, KernelPath, Sweep,
+};
 use exactcheck_float::sampler::DiscSampler;
 
 fn bench(c: &mut Criterion) {

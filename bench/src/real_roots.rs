@@ -9,9 +9,9 @@
 //! line carries the intervals as exact rationals.
 
 use crate::{Elapsed, Stopwatch};
+use clap::ValueEnum;
 use exactcheck::args::check_count;
 use exactcheck::Error;
-use clap::ValueEnum;
 use exactcheck_core::Ring;
 use exactcheck_exact::univariate::w4::{self, Family, MAX_W4_DEGREE};
 use exactcheck_exact::univariate::RootInterval;

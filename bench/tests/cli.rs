@@ -56,7 +56,13 @@ fn rational_sum_full_size_check_values() {
 fn fast_and_plain_scalars_print_the_same_check_values() {
     let run = |scalar| {
         let o = bench(&[
-            "rational-sum", "--n", "300", "--mode", "tree", "--scalar", scalar,
+            "rational-sum",
+            "--n",
+            "300",
+            "--mode",
+            "tree",
+            "--scalar",
+            scalar,
         ]);
         assert!(o.status.success());
         stdout(&o)
@@ -241,7 +247,10 @@ fn usage_errors_are_one_line_plus_a_hint() {
         assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
         let lines: Vec<&str> = err.lines().collect();
         assert_eq!(lines.len(), 2, "{args:?}: {err}");
-        assert!(lines[0].starts_with("exactcheck-bench: error: "), "{args:?}: {err}");
+        assert!(
+            lines[0].starts_with("exactcheck-bench: error: "),
+            "{args:?}: {err}"
+        );
         assert!(
             lines[1].starts_with("exactcheck-bench: hint: "),
             "{args:?}: {err}"

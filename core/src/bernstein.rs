@@ -627,6 +627,5 @@ impl<T: OrderedField> Bernstein<T> {
     }
 }
 
-
 #[cfg(test)]
 mod tests;

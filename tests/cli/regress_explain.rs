@@ -65,7 +65,13 @@ fn the_subtraction_of_sqrt_x_plus_1_minus_sqrt_x_loses_the_bits_of_a_well_condit
     assert!((cond - 0.5).abs() < 1e-3, "{e}");
     assert!(e["bits"].as_f64().unwrap() > 30.0, "{e}");
 
-    let o = regress(CANCEL, "", "x in [1, 1e15]", "500", &["--worst", "1", "--quiet"]);
+    let o = regress(
+        CANCEL,
+        "",
+        "x in [1, 1e15]",
+        "500",
+        &["--worst", "1", "--quiet"],
+    );
     let text = String::from_utf8(o.stdout).unwrap();
     assert!(
         text.contains("local error: the subtraction in sqrt(x + 1) - sqrt(x) loses"),

@@ -3,13 +3,13 @@
 //! by exact substitution; the degenerate outcomes are typed; bad input is one line naming the
 //! field, exit status 2.
 
+use crate::common;
 use exactcheck::solve::{solve, Mode};
 use exactcheck_core::ruled::RuledSurface;
 use exactcheck_core::{Ring, Rng, Vec3};
 use exactcheck_exact::Radical;
 use serde_json::Value;
 use std::path::Path;
-use crate::common;
 
 fn rad(s: &str) -> Radical {
     s.parse().unwrap_or_else(|e| panic!("{s}: {e}"))

@@ -2,8 +2,8 @@
 //! before the contract became types (golden files), and every class of bad input is one line
 //! naming the field, exit status 2.
 
-use std::path::{Path, PathBuf};
 use crate::common;
+use std::path::{Path, PathBuf};
 
 use common::golden::blessing;
 use common::refused;

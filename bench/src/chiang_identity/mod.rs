@@ -9,9 +9,9 @@
 //! Prints its check values as text or as one JSON line with the anchors' field names.
 
 mod ring;
-mod text;
 #[cfg(test)]
 mod tests;
+mod text;
 
 pub use ring::{ring_identity, ring_residuals, RingIdentity};
 pub use text::identity_text;

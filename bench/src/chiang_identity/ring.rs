@@ -16,9 +16,9 @@
 //! over the ring) and returns `LHS - RHS` of each; both are zero. With `negative`, `phi(0, 0)`
 //! becomes `1 + 1/7` (as `chiang_identity.py --negative`), and both residuals are non-zero.
 
+use exactcheck_core::{binomial, Ring};
 use exactcheck_exact::poly::{Poly, Vars};
 use exactcheck_exact::Rational;
-use exactcheck_core::{binomial, Ring};
 
 /// The residuals `(x component, weight)` of the identity at degrees `(m, n)`, built with the [`Ring`] API
 /// (see the module documentation); both are zero unless `negative`.

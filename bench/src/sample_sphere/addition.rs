@@ -325,8 +325,12 @@ pub trait AdditionSweep {
 
     /// The angle-addition sweep on a given path, on all cores (`parallel`) or on this thread;
     /// `None` if this CPU does not run `path`.
-    fn sweep_addition_with(&self, n: usize, path: KernelPath, parallel: bool)
-        -> Option<GridSummary>;
+    fn sweep_addition_with(
+        &self,
+        n: usize,
+        path: KernelPath,
+        parallel: bool,
+    ) -> Option<GridSummary>;
 
     /// The bound `D` on `|disc_kernel - disc_reference|` at every sample (module doc): the
     /// angle-addition kernel's `A^2 - B` against [`DiscSampler::discriminant`] at the same `t_i`.
@@ -430,10 +434,10 @@ mod tests {
     use super::super::tests::w3;
     use super::super::Sweep;
     use super::*;
-    use exactcheck_float::convert::fsum;
     use exactcheck_core::cylinder_sphere::{Angle, CylinderSphere};
     use exactcheck_core::rng::splitmix64;
     use exactcheck_core::Vec3;
+    use exactcheck_float::convert::fsum;
     use std::f64::consts::TAU;
 
     /// Grid sizes: tiny, odd, around the lane, block and chunk boundaries, up to 10^6.

@@ -54,7 +54,11 @@ impl Sweep for DiscSampler {
         let dt = std::f64::consts::TAU / n as f64;
         let parts: Vec<GridSummary> = (0..n.div_ceil(CHUNK))
             .into_par_iter()
-            .map(|k| chunk_with(k * CHUNK, ((k + 1) * CHUNK).min(n), dt, |t| self.discriminant(t)))
+            .map(|k| {
+                chunk_with(k * CHUNK, ((k + 1) * CHUNK).min(n), dt, |t| {
+                    self.discriminant(t)
+                })
+            })
             .collect();
         combine(&parts)
     }
@@ -62,7 +66,11 @@ impl Sweep for DiscSampler {
     fn sweep_serial(&self, n: usize) -> GridSummary {
         let dt = std::f64::consts::TAU / n as f64;
         let parts: Vec<GridSummary> = (0..n.div_ceil(CHUNK))
-            .map(|k| chunk_with(k * CHUNK, ((k + 1) * CHUNK).min(n), dt, |t| self.discriminant(t)))
+            .map(|k| {
+                chunk_with(k * CHUNK, ((k + 1) * CHUNK).min(n), dt, |t| {
+                    self.discriminant(t)
+                })
+            })
             .collect();
         combine(&parts)
     }
@@ -113,7 +121,6 @@ pub fn sweep_direct(cs: &CylinderSphere<f64>, n: usize) -> GridSummary {
     combine(&parts)
 }
 
-
 /// How the samples are evaluated.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum Variant {
@@ -144,9 +151,7 @@ pub fn run(n: usize, variant: Variant, json: bool) -> String {
         Variant::Direct => sweep_direct(&cs, n),
     };
     let Elapsed { wall: seconds, cpu } = watch.elapsed();
-    let value = variant
-        .to_possible_value()
-        .expect("no variant is skipped");
+    let value = variant.to_possible_value().expect("no variant is skipped");
     let name = value.get_name();
     if json {
         format!(
