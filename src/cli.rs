@@ -4,7 +4,7 @@
 //!
 //! This module depends on the commands, never the reverse: each command module exposes its
 //! arguments and `run(&Args) -> Result<ExitCode, Error>` ([`crate::verify_cmd`],
-//! [`crate::prove_cmd`], [`crate::bench`], [`crate::regress`], [`crate::plot`]); shared argument
+//! [`crate::prove_cmd`], [`crate::regress`], [`crate::plot`]); shared argument
 //! types live in [`crate::args`], the output writer in [`crate::output`].
 
 use clap::error::ErrorKind;
@@ -14,7 +14,6 @@ use std::io::Write as _;
 use std::process::ExitCode;
 
 pub use crate::args::ScalarChoice;
-pub use crate::bench::{W3Variant, Workload};
 
 /// Verify geometry formulas exactly: prove them, check them on exact instances, and regress float
 /// code against exact results.
@@ -79,9 +78,6 @@ pub enum Command {
         #[arg(long, value_name = "KIND", conflicts_with_all = ["file", "exact", "float", "both"])]
         schema: Option<String>,
     },
-    /// Run a benchmark workload and print its check values and time.
-    #[command(after_help = BENCH_EXAMPLES)]
-    Bench(crate::bench::BenchArgs),
     /// Regress float code against exact results on seeded random inputs: a built-in kernel,
     /// a formula (--formula), FPCore benchmarks (--fpcore), or your own executable (--program).
     #[command(after_help = REGRESS_EXAMPLES)]
@@ -133,12 +129,6 @@ const SOLVE_EXAMPLES: &str = "Examples:
   exactcheck solve tests/solve_golden/cs_example1.json
   exactcheck solve --both tests/solve_golden/conic_table1_ellipse.json
   exactcheck solve --schema cylinder_sphere";
-const BENCH_EXAMPLES: &str = "Examples:
-  exactcheck bench w1 --m 8 --n 13
-  exactcheck bench dense --k 8
-  exactcheck bench w2 --n 2000 --mode seq
-  exactcheck bench w3 --n 10000000
-  exactcheck bench formula --n 100000";
 const REGRESS_EXAMPLES: &str = "Examples:
   exactcheck regress cylinder-sphere --samples 100000
   exactcheck regress --formula 'sqrt(x+1) - sqrt(x)' --domain 'x in [1, 1e15]'
@@ -224,20 +214,7 @@ pub fn try_parse(args: &[OsString]) -> Result<Cli, ParseFailure> {
     let message = if e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
         format!("`exactcheck{}` needs a subcommand", path.concat())
     } else {
-        // clap's first paragraph, on one line (a list such as the missing arguments follows
-        // its heading on the next lines).
-        let first: Vec<&str> = text
-            .lines()
-            .map(str::trim)
-            .skip_while(|l| l.is_empty())
-            .take_while(|l| !l.is_empty())
-            .collect();
-        let first = first.join(" ");
-        match first.strip_prefix("error: ") {
-            Some(rest) => rest.to_string(),
-            None if first.is_empty() => format!("invalid command line ({})", e.kind()),
-            None => first,
-        }
+        one_line(&text, e.kind())
     };
     let hint = text
         .lines()
@@ -245,6 +222,23 @@ pub fn try_parse(args: &[OsString]) -> Result<Cli, ParseFailure> {
         .find_map(|l| l.strip_prefix("tip: "))
         .map_or(help.clone(), |tip| format!("{tip}; {help}"));
     Err(ParseFailure::Usage { message, hint })
+}
+
+/// clap's rendered error `text` on one line: its first paragraph (a list such as the missing
+/// arguments follows its heading on the next lines) without the `error: ` prefix.
+pub fn one_line(text: &str, kind: ErrorKind) -> String {
+    let first: Vec<&str> = text
+        .lines()
+        .map(str::trim)
+        .skip_while(|l| l.is_empty())
+        .take_while(|l| !l.is_empty())
+        .collect();
+    let first = first.join(" ");
+    match first.strip_prefix("error: ") {
+        Some(rest) => rest.to_string(),
+        None if first.is_empty() => format!("invalid command line ({kind})"),
+        None => first,
+    }
 }
 
 /// [`try_parse`], printing help or a usage error; `Err` holds the exit status.
@@ -269,7 +263,7 @@ fn parse(args: &[OsString]) -> Result<Cli, ExitCode> {
     }
 }
 
-/// The subcommands named in `args` (e.g. `[" bench", " w2"]`), each with a leading space.
+/// The subcommands named in `args` (e.g. `[" plot"]`), each with a leading space.
 fn subcommand_path(args: &[OsString]) -> Vec<String> {
     let mut cmd = Cli::command();
     let mut path = Vec::new();
@@ -367,7 +361,7 @@ pub const MAX_DEPTH: u64 = 65_536;
 /// Stack reserved per level of the `depth` limit, on top of [`BASE_STACK`]. Nested parentheses
 /// in `prove` (parse, expand, drop) need at most about 1 KiB per level: the main thread's 8 MiB
 /// held 4,000 of them (8,000 levels) and overflowed at 8,000. This is sixteen times that;
-/// `tests/robust_cli.rs` runs `prove` and a claims file (parentheses and signs) at
+/// `tests/cli/robust_cli.rs` runs `prove` and a claims file (parentheses and signs) at
 /// [`MAX_DEPTH`].
 pub const STACK_PER_LEVEL: usize = 16 << 10;
 
@@ -413,7 +407,6 @@ fn run_command(cli: Cli, stack: Option<usize>) -> Result<ExitCode, crate::Error>
     match cli.command {
         Command::Limits { json } => print_limits(json),
         Command::Verify(args) => crate::verify_cmd::run(&args),
-        Command::Bench(args) => crate::bench::run(&args),
         Command::Solve {
             file,
             exact: _,
@@ -502,16 +495,11 @@ mod tests {
         assert_eq!(message, "unexpected argument '--nope' found");
         assert!(!message.contains('\n') && !hint.contains('\n'));
         assert!(hint.ends_with("see `exactcheck verify --help`"), "{hint}");
-        let Err(ParseFailure::Usage { message, hint }) = try_parse(&args(&["bench"])) else {
-            panic!("a usage error");
-        };
-        assert_eq!(message, "`exactcheck bench` needs a subcommand");
-        assert_eq!(hint, "see `exactcheck bench --help`");
         assert!(matches!(
             try_parse(&args(&["--help"])),
             Err(ParseFailure::Text(t)) if t.contains("Usage:")
         ));
-        assert!(try_parse(&args(&["bench", "w2", "--n", "7"])).is_ok());
+        assert!(try_parse(&args(&["regress", "cylinder-sphere", "--samples", "7"])).is_ok());
         let Err(ParseFailure::Usage { message, .. }) =
             try_parse(&args(&["regress", "cylinder-sphere", "--formula", "x"]))
         else {

@@ -6,7 +6,6 @@
 #![warn(missing_docs)]
 
 pub mod args;
-pub mod bench;
 pub mod budget;
 pub mod claimfile;
 pub mod claims;
@@ -19,7 +18,6 @@ pub mod regress;
 pub mod report;
 pub mod solve;
 pub mod verify_cmd;
-pub mod w2;
 
 pub use error::Error;
 

@@ -26,9 +26,9 @@
 //! The `Field` methods divide by degrees and binomial coefficients. They panic in a field whose
 //! characteristic divides such an integer — never in characteristic 0 (rationals, square-root
 //! extensions, `f64`) nor modulo a prime larger than the degrees involved. Binomial coefficients
-//! are computed by [`binomial`], which limits degrees to 67.
+//! are computed by [`binomial`](crate::scalar::binomial), which limits degrees to 67.
 
-use crate::scalar::{binomial, Field, OrderedField, Ring, Sign};
+use crate::scalar::{binom, from_u64, Field, OrderedField, Ring, Sign};
 use crate::vector::{Hom4, Vec3};
 
 /// A malformed list of coefficients or control points.
@@ -78,24 +78,6 @@ impl core::fmt::Display for ShapeError {
 }
 
 impl std::error::Error for ShapeError {}
-
-/// `C(n, k)` for `usize` arguments (0 when `k > n`).
-pub(crate) fn binom(n: usize, k: usize) -> u64 {
-    if k > n {
-        return 0;
-    }
-    let n = u32::try_from(n).expect("degree does not fit in u32");
-    binomial(n, k as u32)
-}
-
-/// The image of a non-negative integer in the ring (exact for the whole `u64` range).
-pub(crate) fn from_u64<T: Ring>(n: u64) -> T {
-    match i64::try_from(n) {
-        Ok(v) => T::from_i64(v),
-        // n < 2^64, so n >> 1 fits in an i64.
-        Err(_) => T::from_i64((n >> 1) as i64).scale_i64(2) + T::from_i64((n & 1) as i64),
-    }
-}
 
 /// `k * x` for a non-negative integer `k`, with no work when `k == 1`.
 pub(crate) fn scale_u64<T: Ring>(x: &T, k: u64) -> T {
@@ -644,9 +626,6 @@ impl<T: OrderedField> Bernstein<T> {
         changes
     }
 }
-
-#[cfg(test)]
-pub(crate) mod test_support;
 
 #[cfg(test)]
 mod tests;

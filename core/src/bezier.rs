@@ -619,7 +619,7 @@ impl<T: Field> TensorPatch<T> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::bernstein::test_support::{ints, rational, Rng, Q};
+    use crate::test_support::{ints, rational, Rng, Q};
 
     const CASES: usize = 200;
 
@@ -645,7 +645,7 @@ mod tests {
     }
 
     fn basis<T: Ring>(n: usize, i: usize, t: &T) -> T {
-        bernstein::from_u64::<T>(bernstein::binom(n, i))
+        crate::scalar::from_u64::<T>(crate::scalar::binom(n, i))
             * t.pow(i as u32)
             * (T::one() - t).pow((n - i) as u32)
     }

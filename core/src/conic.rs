@@ -39,7 +39,7 @@
 //!
 //! [`ConeSection::check_types`] compares them; the claim `chiang.conic_type` runs it on Table 1
 //! and on thousands of random planes. The cone needs `1/sqrt 2`, so the tests live with an exact
-//! scalar that has it (`tests/conic_core.rs`, over `exactcheck_exact::Radical`).
+//! scalar that has it (`tests/solve/conic_core.rs`, over `exactcheck_exact::Radical`).
 
 use crate::bernstein::Bernstein;
 use crate::bezier::{BezierCurve, RationalBezierCurve};

@@ -3,9 +3,8 @@
 //! Gaussian elimination (`linalg::Matrix::inertia`) is not available because the entries cannot
 //! be divided or compared.
 //!
-//! * [`det_laplace`]: the determinant by Laplace expansion along the first row. It uses only
-//!   ring operations (no division), so it works over polynomial rings; it costs `O(n!)` and is
-//!   meant for the 2x2 .. 4x4 matrices of quadrics.
+//! * [`det`] (from [`crate::linalg`]): the determinant by Laplace expansion along the first
+//!   row, with ring operations only, so it works over polynomial rings.
 //! * [`principal`]: the principal submatrix on an index list (`D_k` of Jacobi's rule is the
 //!   determinant of the leading `k x k` principal submatrix in a chosen order).
 //! * [`jacobi_inertia`]: Jacobi's rule. If the leading principal minors `D_1, ..., D_n` of a
@@ -21,46 +20,10 @@
 //! Hand-written because the symbolic use needs division-free algorithms over our own `Ring`
 //! trait; no linear-algebra crate works over a user-defined polynomial ring.
 
+pub use crate::linalg::det;
 use crate::linalg::Inertia;
-use crate::scalar::{Field, Ring, Sign};
+use crate::scalar::{Field, Sign};
 use crate::vector::Hom4;
-
-/// The determinant of a small square matrix over any ring (Laplace along the first row).
-/// The empty matrix has determinant 1.
-///
-/// # Panics
-/// If a row is shorter than the number of rows (the matrix must be square).
-pub fn det_laplace<T: Ring>(m: &[Vec<T>]) -> T {
-    match m.len() {
-        0 => T::one(),
-        1 => m[0][0].clone(),
-        n => {
-            let mut acc = T::zero();
-            for j in 0..n {
-                if m[0][j].is_zero() {
-                    continue;
-                }
-                let minor: Vec<Vec<T>> = m[1..]
-                    .iter()
-                    .map(|r| {
-                        r.iter()
-                            .enumerate()
-                            .filter(|&(k, _)| k != j)
-                            .map(|(_, x)| x.clone())
-                            .collect()
-                    })
-                    .collect();
-                let t = m[0][j].mul_ref(&det_laplace(&minor));
-                if j % 2 == 0 {
-                    acc += t;
-                } else {
-                    acc -= t;
-                }
-            }
-            acc
-        }
-    }
-}
 
 /// The principal submatrix of `m` on the index list `idx` (rows and columns `idx`, in order).
 pub fn principal<T: Clone>(m: &[Vec<T>], idx: &[usize]) -> Vec<Vec<T>> {
@@ -136,9 +99,9 @@ mod tests {
             &[3.0, 0.0, 2.0, 1.0],
         ]);
         let by_elimination = Matrix::from_rows(a.clone()).unwrap().determinant().unwrap();
-        assert!((det_laplace(&a) - by_elimination).abs() < 1e-9);
-        assert_eq!(det_laplace::<f64>(&[]), 1.0);
-        assert_eq!(det_laplace(&m(&[&[1.0, 2.0], &[3.0, 4.0]])), -2.0);
+        assert!((det(&a) - by_elimination).abs() < 1e-9);
+        assert_eq!(det::<f64>(&[]), 1.0);
+        assert_eq!(det(&m(&[&[1.0, 2.0], &[3.0, 4.0]])), -2.0);
     }
 
     #[test]
@@ -165,7 +128,7 @@ mod tests {
         let a = m(&[&[1.0, 1.0, 0.0], &[1.0, 0.0, 1.0], &[0.0, 1.0, 0.0]]);
         let signs: Vec<Sign> = (1..=3)
             .map(|k| {
-                let d = det_laplace(&principal(&a, &(0..k).collect::<Vec<_>>()));
+                let d = det(&principal(&a, &(0..k).collect::<Vec<_>>()));
                 if d > 0.0 {
                     Pos
                 } else if d < 0.0 {

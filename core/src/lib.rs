@@ -25,6 +25,8 @@ pub mod roots;
 pub mod ruled;
 pub mod scalar;
 pub mod sphere_interpolation;
+#[cfg(test)]
+mod test_support;
 pub mod vector;
 
 pub use bernstein::{Bernstein, ShapeError};

@@ -1,12 +1,12 @@
 //! Exact linear algebra over any [`Field`]: reduced row echelon form, rank, nullspace, linear
-//! solve, determinant, and the inertia of a symmetric matrix over an [`OrderedField`] (Sylvester's
+//! solve, the determinant over any ring ([`det`]), and the inertia of a symmetric matrix over an [`OrderedField`] (Sylvester's
 //! law: the numbers of positive, negative and zero eigenvalues, found by congruence, without
 //! eigenvalues). Used for the interpolation system on the sphere and the classification of
 //! preimage quadrics.
 //!
 //! Pivoting picks the first non-zero entry: exact arithmetic needs no numerical pivoting.
 
-use crate::scalar::{Field, OrderedField, Sign};
+use crate::scalar::{Field, OrderedField, Ring, Sign};
 
 /// A dense matrix, row-major.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -194,11 +194,12 @@ impl<T: Field> Matrix<T> {
         Ok(Some(x))
     }
 
-    /// The determinant (Gaussian elimination).
+    /// The determinant by Gaussian elimination: the tests' independent reference for [`det`].
     ///
     /// # Errors
     /// [`MatrixError::NotSquare`].
-    pub fn determinant(&self) -> Result<T, MatrixError> {
+    #[cfg(test)]
+    pub(crate) fn determinant(&self) -> Result<T, MatrixError> {
         if self.rows != self.cols {
             return Err(MatrixError::NotSquare);
         }
@@ -229,6 +230,45 @@ impl<T: Field> Matrix<T> {
             }
         }
         Ok(det)
+    }
+}
+
+/// The determinant of a small square matrix over any ring: Laplace expansion along the first
+/// row, ring operations only (no division), so it runs over polynomial rings too; it costs
+/// `O(n!)` and is meant for matrices up to 4x4 (quadrics, lines of projective 3-space). The
+/// workspace's one determinant. The empty matrix has determinant 1.
+///
+/// # Panics
+/// If a row is shorter than the number of rows (the matrix must be square).
+pub fn det<T: Ring>(m: &[Vec<T>]) -> T {
+    match m.len() {
+        0 => T::one(),
+        1 => m[0][0].clone(),
+        n => {
+            let mut acc = T::zero();
+            for j in 0..n {
+                if m[0][j].is_zero() {
+                    continue;
+                }
+                let minor: Vec<Vec<T>> = m[1..]
+                    .iter()
+                    .map(|r| {
+                        r.iter()
+                            .enumerate()
+                            .filter(|&(k, _)| k != j)
+                            .map(|(_, x)| x.clone())
+                            .collect()
+                    })
+                    .collect();
+                let t = m[0][j].mul_ref(&det(&minor));
+                if j % 2 == 0 {
+                    acc += t;
+                } else {
+                    acc -= t;
+                }
+            }
+            acc
+        }
     }
 }
 

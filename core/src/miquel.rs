@@ -280,8 +280,8 @@ pub fn miquel_configuration<T: Ring>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::bernstein::test_support::{Rng, Q};
     use crate::quadric::{lebesgue, lebesgue_curve};
+    use crate::test_support::{Rng, Q};
 
     fn h(v: [i64; 4]) -> Hom4<Q> {
         Hom4(v.map(Q::int))

@@ -42,13 +42,13 @@
 //! `sigma` vanishes in `[0, 1]` (the base curve itself is singular) the offset has a pole and
 //! the radius questions are answered with [`PhError::SpeedVanishes`].
 
-use crate::bernstein::{binom, Bernstein};
+use crate::bernstein::Bernstein;
 use crate::bezier::{BezierCurve, RationalBezierCurve};
 use crate::roots::{
     common_unit_roots, multiplicity, restrict, sign_at_root, unit_roots, IsolatedRoot, Refiner,
 };
 use crate::ruled::{Plane, RuledSurface};
-use crate::scalar::{Field, OrderedField, QAlgebra, Ring, Sign};
+use crate::scalar::{binom, Field, OrderedField, QAlgebra, Ring, Sign};
 use crate::vector::{Hom4, Vec3};
 use std::fmt;
 

@@ -51,9 +51,9 @@
 //! are parallel: `(B(t) - P) x V(t) = 0`, three polynomials of degree `m + n`
 //! ([`RuledSurface::vicinity_polynomials`]); Chiang's vicinity test uses two of them.
 
-use crate::bernstein::{binom, from_u64, Bernstein, ShapeError};
+use crate::bernstein::{Bernstein, ShapeError};
 use crate::bezier::{BezierCurve, RationalBezierCurve};
-use crate::scalar::{Field, Ring};
+use crate::scalar::{binom, from_u64, Field, Ring};
 use crate::vector::{Hom4, Vec3};
 
 /// The plane `N . x + d = 0`.

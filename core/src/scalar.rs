@@ -128,7 +128,7 @@ pub trait QAlgebra: Ring {
 
 impl<T: Field> QAlgebra for T {
     fn inv_u64(n: u64) -> Result<Self, ZeroDivisor> {
-        crate::bernstein::from_u64::<T>(n).inv()
+        from_u64::<T>(n).inv()
     }
 }
 
@@ -256,6 +256,24 @@ pub fn binomial(n: u32, k: u32) -> u64 {
         c = c * (n - i) as u128 / (i + 1) as u128;
     }
     u64::try_from(c).expect("binomial coefficient overflows u64")
+}
+
+/// `C(n, k)` for `usize` arguments (0 when `k > n`).
+pub(crate) fn binom(n: usize, k: usize) -> u64 {
+    if k > n {
+        return 0;
+    }
+    let n = u32::try_from(n).expect("degree does not fit in u32");
+    binomial(n, k as u32)
+}
+
+/// The image of a non-negative integer in the ring (exact for the whole `u64` range).
+pub(crate) fn from_u64<T: Ring>(n: u64) -> T {
+    match i64::try_from(n) {
+        Ok(v) => T::from_i64(v),
+        // n < 2^64, so n >> 1 fits in an i64.
+        Err(_) => T::from_i64((n >> 1) as i64).scale_i64(2) + T::from_i64((n & 1) as i64),
+    }
 }
 
 /// Implements [`Ring`], [`Field`] and [`OrderedField`] for a primitive float type.

@@ -361,8 +361,8 @@ pub fn sigma_degree<T: Field>(points: &[Hom4<T>], params: &[T]) -> Option<usize>
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::bernstein::test_support::Q;
     use crate::scalar::Ring;
+    use crate::test_support::Q;
 
     fn q(n: i128) -> Q {
         Q::new(n, 1)

@@ -198,19 +198,11 @@ impl<T: Field> Hom4<T> {
     }
 }
 
-/// The determinant of the 4x4 matrix with these rows, division-free (Laplace expansion along
-/// 2x2 minors of the first two rows), so it runs over any [`Ring`]. Two lines of projective
-/// 3-space spanned by `a, b` and `c, d` meet exactly when `det4(a, b, c, d) = 0`.
+/// The determinant of the 4x4 matrix with these rows ([`crate::linalg::det`]), over any
+/// [`Ring`]. Two lines of projective 3-space spanned by `a, b` and `c, d` meet exactly when
+/// `det4(a, b, c, d) = 0`.
 pub fn det4<T: Ring>(a: &Hom4<T>, b: &Hom4<T>, c: &Hom4<T>, d: &Hom4<T>) -> T {
-    // Minors of rows (a, b) and of rows (c, d) over the column pairs, in the order
-    // (01, 02, 03, 12, 13, 23); the complementary pairs are (23, 13, 12, 03, 02, 01).
-    let top = a.minors(b);
-    let bottom = c.minors(d);
-    top[0].mul_ref(&bottom[5]) - top[1].mul_ref(&bottom[4])
-        + top[2].mul_ref(&bottom[3])
-        + top[3].mul_ref(&bottom[2])
-        - top[4].mul_ref(&bottom[1])
-        + top[5].mul_ref(&bottom[0])
+    crate::linalg::det(&[a, b, c, d].map(|r| r.0.to_vec()))
 }
 
 #[cfg(test)]

@@ -4,7 +4,7 @@
 //!
 //! These are the operations of adding a word-sized rational `c/d` to a big one `a/b` by
 //! Henrici's method ([`crate::rational`]): `b mod d`, `b / g` (exact, `g = gcd(b, d)`),
-//! `a (d/g) + c (b/g)`, and its remainder by `g`. Workload W2 `seq` (the running sum
+//! `a (d/g) + c (b/g)`, and its remainder by `g`. The benchmark rational-sum `seq` (the running sum
 //! `s += disc`, whose denominator grows to tens of thousands of digits while every `disc` fits
 //! in machine words) spends nearly all its time there. num-bigint 0.4 does them with a clone of
 //! the big operand and one hardware (or `u128` library) division per limb, which profiled at

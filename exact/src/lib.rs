@@ -30,7 +30,6 @@ pub mod symbolic;
 pub mod to_f64;
 pub mod traits;
 pub mod univariate;
-pub mod w1;
 
 pub use algebraic::Algebraic;
 pub use modp::ModP;

@@ -2,12 +2,11 @@
 //! random rational points and against a naive product, ring laws, canonical form after every
 //! operation, parser/printer round trips, parser robustness on random input; and the identities
 //! the workspace proves with them (the claim list Lebesgue (7) and Dietz (8), the claim list unit-circle
-//! reduction, the claim list Chiang's theorem as workload W1).
+//! reduction; Chiang's theorem is the benchmark `chiang-identity`, tested in `bench/`).
 
 use exactcheck_core::{Ring, Rng};
-use exactcheck_exact::expr::{parse_expr, parse_poly, w1_text, AddOp, Expr, ExprKind, MulOp};
+use exactcheck_exact::expr::{parse_expr, parse_poly, AddOp, Expr, ExprKind, MulOp};
 use exactcheck_exact::poly::{groebner, unit_circle_relation, Poly, Var, Vars};
-use exactcheck_exact::w1::ring_residuals;
 use exactcheck_exact::Rational;
 use proptest::prelude::*;
 
@@ -448,52 +447,4 @@ fn buchberger_by_hand() {
     assert_eq!(gb, want);
     let y3: P = parse_poly("y^3", &mut vars).unwrap();
     assert_eq!(y3.reduce(&gb).display(&vars).to_string(), "1/2*x");
-}
-
-// ------------------------------------------------------------------------ workload W1
-
-/// W1 from text: `LHS - RHS`.
-fn w1_residual(m: u32, n: u32, negative: bool) -> (P, P, Vars) {
-    let (lhs, mut rhs) = w1_text(m, n);
-    if negative {
-        // As w1_identity.py --negative: phi(0, 0) = 1 becomes 1 + 1/7.
-        assert!(rhs.contains("1/1*("));
-        rhs = rhs.replacen("1/1*(", "8/7*(", 1);
-    }
-    let mut vars = Vars::new();
-    let l: P = parse_poly(&lhs, &mut vars).unwrap();
-    let r: P = parse_poly(&rhs, &mut vars).unwrap();
-    (l, r, vars)
-}
-
-#[test]
-fn w1_identity_from_text() {
-    for (m, n, terms, nvars) in [(2, 3, 174, 26), (4, 6, 855, 41), (8, 13, 5841, 74)] {
-        let (l, r, vars) = w1_residual(m, n, false);
-        assert_eq!(l.len(), terms, "({m},{n})");
-        assert_eq!(vars.len(), nvars);
-        assert!((&l - &r).is_zero(), "({m},{n}) does not prove");
-        assert_eq!(l, r);
-        let (l, r, _) = w1_residual(m, n, true);
-        let residual = &l - &r;
-        assert!(!residual.is_zero(), "({m},{n}) --negative proves");
-    }
-}
-
-#[test]
-fn w1_prints_and_parses_back() {
-    let (l, _, mut vars) = w1_residual(4, 6, false);
-    let text = l.display(&vars).to_string();
-    let back: P = parse_poly(&text, &mut vars).unwrap();
-    assert_eq!(back, l);
-}
-
-#[test]
-fn w1_identity_with_the_ring_api() {
-    for (m, n) in [(2, 3), (4, 6), (8, 13)] {
-        let (dp, dq) = ring_residuals(m, n, false);
-        assert!(dp.is_zero() && dq.is_zero(), "({m},{n})");
-        let (dp, dq) = ring_residuals(m, n, true);
-        assert!(!dp.is_zero() && !dq.is_zero(), "({m},{n}) --negative");
-    }
 }

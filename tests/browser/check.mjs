@@ -1,4 +1,4 @@
-// The report in a real browser (run by tests/browser.rs; see docs/testing.md).
+// The report in a real browser (run by tests/cli/browser.rs; see docs/testing.md).
 //
 //   node check.mjs --report DIR/index.html --latex FILE --screenshot OUT.png
 //                  --claims N --failing id1,id2,... --figures N [--top TOP.png]

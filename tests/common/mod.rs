@@ -1,5 +1,5 @@
-//! Helpers shared by the CLI end-to-end tests (each `tests/*.rs` file is its own crate and
-//! includes this module with `mod common;`).
+//! Helpers shared by the CLI end-to-end tests (each test binary `tests/GROUP/main.rs` includes
+//! this module with `#[path = "../common/mod.rs"] mod common;`, its modules `use crate::common`).
 
 // Each test crate uses a different part of this module.
 #![allow(dead_code)]

@@ -1,7 +1,7 @@
 //! Running the `exactcheck` binary under a kill-timeout, many runs in parallel: the engine of
-//! the malformed-input corpus (`tests/malformed.rs`) and of the limits stress test
-//! (`tests/limits_stress.rs`), which include this file with `#[path = "common/timed.rs"] mod
-//! timed;`.
+//! the malformed-input corpus (`tests/corpus/malformed.rs`) and of the limits stress test
+//! (`tests/corpus/limits_stress.rs`) and of the `prove` tests, whose test binaries include this
+//! file with `#[path = "../common/timed.rs"] mod timed;` beside `tests/common` itself.
 //!
 //! A hostile input may make the binary hang; a test must still end. So the child is polled
 //! (`try_wait`) until a deadline and killed past it, while two threads drain its standard output
@@ -11,8 +11,7 @@
 
 #![allow(dead_code)]
 
-#[path = "exe.rs"]
-mod exe;
+use crate::common::exactcheck;
 
 use std::ffi::OsString;
 use std::io::{Read, Write};
@@ -100,7 +99,7 @@ pub fn run(args: &[OsString], stdin: Option<&[u8]>) -> Run {
 
 /// [`run`] with environment variables set for the run.
 pub fn run_with_env(args: &[OsString], stdin: Option<&[u8]>, env: &[(String, String)]) -> Run {
-    let mut child = exe::exactcheck()
+    let mut child = exactcheck()
         .args(args)
         .envs(env.iter().map(|(k, v)| (k, v)))
         .current_dir(root())
@@ -188,4 +187,15 @@ pub fn parallel_map<T: Sync, R: Send>(items: &[T], f: impl Fn(&T) -> R + Sync) -
         .into_iter()
         .map(|r| r.expect("every item was run"))
         .collect()
+}
+
+/// Runs `exactcheck prove ARGS... --json`, which must print nothing on standard error: its exit
+/// status and the one JSON object it prints.
+pub fn prove_json(args: &[&str]) -> (i32, serde_json::Value) {
+    let mut all = vec!["prove"];
+    all.extend_from_slice(args);
+    all.push("--json");
+    let (code, out, err) = run_text(&all);
+    assert!(err.is_empty(), "{args:?}: {err}");
+    (code, serde_json::from_str(&out).expect("one JSON object"))
 }

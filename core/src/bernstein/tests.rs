@@ -1,7 +1,7 @@
 //! Unit tests of the Bernstein toolkit.
 
-use super::test_support::{ints, rational, Poly, Rng, Q};
 use super::*;
+use crate::test_support::{ints, rational, Poly, Rng, Q};
 
 const CASES: usize = 300;
 

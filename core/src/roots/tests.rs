@@ -1,5 +1,5 @@
 use super::*;
-use crate::bernstein::test_support::Q;
+use crate::test_support::Q;
 
 fn q(n: i128, d: i128) -> Q {
     Q::new(n, d)

@@ -111,7 +111,7 @@
 //! functions with parameters, vectors, matrices and the vector/Bezier functions, resolved to
 //! core trees; [`lower`]: the core calls rewritten as plain arithmetic for the front ends that
 //! evaluate a tree operation by operation; `print`: the printer; `latex`: LaTeX ([`to_latex`]) with a [`Notation`] for names, from
-//! a layout shared with `mathml` ([`to_mathml`]); `w1`: the text of workload W1.
+//! a layout shared with `mathml` ([`to_mathml`]).
 //!
 //! # Errors
 //! Every error is an [`ExprError`] with the byte position of the offending token or
@@ -137,14 +137,12 @@ mod roots;
 #[cfg(test)]
 mod tests;
 mod trig;
-mod w1;
 
 pub use latex::{equation_to_latex, to_latex, Notation};
 pub use lower::{eval_lowered, lower};
 pub use mathml::{equation_to_mathml, to_mathml};
 pub use parse::{parse_expr, parse_expr_with_calls, parse_poly, LIST};
 pub(crate) use trig::angle_text;
-pub use w1::w1_text;
 
 /// The functions written `name(arg, ...)` in every grammar (besides `sqrt`): `diff(E, t)` and
 /// `diff(E, t, k)`, the exact derivative of `E` in the variable `t` (`k` times);

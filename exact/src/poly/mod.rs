@@ -54,7 +54,7 @@
 //!     Pearce ("Sparse polynomial division using a heap", 2011): a heap of at most
 //!     `min(#f, #g)` streams yields the products in decreasing order, equal monomials are
 //!     accumulated as they leave the heap, and the result is born sorted, with no per-term
-//!     allocation. With one-word keys (W1: 74 variables in 10 words become one key word) the
+//!     allocation. With one-word keys (the benchmark chiang-identity: 74 variables in 10 words become one key word) the
 //!     heap holds the keys themselves. Squaring runs the heap over the pairs `i <= j` only.
 //!
 //!   Full monomials are formed once per output term.
@@ -87,7 +87,7 @@
 //!   against it is a canonical normal form.
 //!
 //! # Performance
-//! W1 (the claim list at `(m, n) = (8, 13)`: a 9.5 kB expression pair over 74 variables, 5,841 terms)
+//! The benchmark chiang-identity (the claim list at `(m, n) = (8, 13)`: a 9.5 kB expression pair over 74 variables, 5,841 terms)
 //! parses, expands and compares in about 5 ms on the project machine, python-flint's
 //! `fmpq_mpoly` takes 7.4 ms, SymPy 3.3 s (`exact/benches/poly.rs`). A large share of the time
 //! is coefficient arithmetic in [`crate::Rational`].

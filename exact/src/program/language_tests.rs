@@ -11,6 +11,20 @@ fn q(n: i64, d: i64) -> Rational {
     Rational::new(n, d).unwrap()
 }
 
+/// The values of `names` at `point` (by name), in the order of `names`.
+fn values_at(names: &[String], point: &[(&str, Rational)]) -> Vec<Rational> {
+    names
+        .iter()
+        .map(|n| {
+            point
+                .iter()
+                .find(|(m, _)| m == n)
+                .map(|(_, v)| v.clone())
+                .unwrap_or_else(|| panic!("no value for {n}"))
+        })
+        .collect()
+}
+
 /// The value of `text` at `point` (by name) through the `prove` path: resolved by the library,
 /// converted to a rational function in lowest terms, numerator and denominator evaluated.
 /// `None` at a pole.
@@ -20,17 +34,7 @@ fn prove_value(text: &str, point: &[(&str, Rational)]) -> Option<Rational> {
     };
     let mut vars = Vars::new();
     let f: RatFun<Rational> = e.to_ratfun(&mut vars).unwrap();
-    let values: Vec<Rational> = vars
-        .names()
-        .iter()
-        .map(|n| {
-            point
-                .iter()
-                .find(|(m, _)| m == n)
-                .map(|(_, v)| v.clone())
-                .unwrap_or_else(|| panic!("no value for {n}"))
-        })
-        .collect();
+    let values = values_at(vars.names(), point);
     let num = f.numerator().eval(&values, Clone::clone);
     let den = f.denominator().eval(&values, Clone::clone);
     if den == Rational::ZERO {
@@ -42,17 +46,7 @@ fn prove_value(text: &str, point: &[(&str, Rational)]) -> Option<Rational> {
 
 /// The exact value of the compiled program at `point` (by name); `None` outside the domain.
 fn program_value(p: &Program, point: &[(&str, Rational)]) -> Option<Rational> {
-    let x: Vec<Rational> = p
-        .inputs
-        .iter()
-        .map(|n| {
-            point
-                .iter()
-                .find(|(m, _)| m == n)
-                .map(|(_, v)| v.clone())
-                .unwrap_or_else(|| panic!("no value for {n}"))
-        })
-        .collect();
+    let x = values_at(&p.inputs, point);
     match p.eval_exact(&x) {
         Ok(r) => {
             assert!(r[0].exact, "{}: not exact", p.name);
@@ -112,15 +106,17 @@ fn the_lowered_tree_is_what_both_sides_evaluate() {
 
 #[test]
 fn the_inputs_are_the_variables_as_written() {
+    for (text, inputs) in [
+        ("diff(x^2, y) + z", &["x", "y", "z"][..]),
+        ("sum(k, 1, 3, k x)", &["x"]),
+        ("det([[a, b], [c, d]])", &["a", "b", "c", "d"]),
+        ("subs(x^2 + y, x, t + 1)", &["y", "t"]),
+    ] {
+        let p = Program::parse(text, None).unwrap();
+        assert_eq!(p.inputs, inputs, "{text}");
+    }
     let p = Program::parse("diff(x^2, y) + z", None).unwrap();
-    assert_eq!(p.inputs, vec!["x", "y", "z"]);
     assert_eq!(p.eval_f64(&[1.0, 2.0, 3.0]), vec![3.0]);
-    let p = Program::parse("sum(k, 1, 3, k x)", None).unwrap();
-    assert_eq!(p.inputs, vec!["x"]);
-    let p = Program::parse("det([[a, b], [c, d]])", None).unwrap();
-    assert_eq!(p.inputs, vec!["a", "b", "c", "d"]);
-    let p = Program::parse("subs(x^2 + y, x, t + 1)", None).unwrap();
-    assert_eq!(p.inputs, vec!["y", "t"]);
 }
 
 #[test]

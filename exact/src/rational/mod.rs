@@ -314,7 +314,7 @@ impl Rational {
         if self.is_zero_value() {
             return if sub { rhs.neg_impl() } else { rhs.clone() };
         }
-        // A big operand and a word-sized one (the running sum of W2 `seq`): limb kernels.
+        // A big operand and a word-sized one (the running sum of rational-sum `seq`): limb kernels.
         match (&self.0, &rhs.0) {
             (Repr::Big(x), Repr::Small(c, d)) => {
                 if let Some(r) = add_big_word(&x.num, &x.den, if sub { -*c } else { *c }, *d) {

@@ -21,7 +21,7 @@ use exactcheck_core::rng::splitmix64;
 use num_bigint::BigInt;
 use num_traits::{One, Zero};
 
-/// The largest degree of the W4 families accepted by the `bench w4` command.
+/// The largest degree of the W4 families accepted by the `real-roots` benchmark (`exactcheck-bench real-roots`).
 pub const MAX_W4_DEGREE: usize = 2000;
 
 /// The instances of the side-by-side comparison (`scripts/compare.py`) with their check value,

@@ -217,7 +217,7 @@ pub fn example4_table() -> Result<Vec<Example4Row>, String> {
     Ok(rows)
 }
 
-/// The table as Markdown (what docs/papers/chiang.md shows; `tests/chiang.rs` checks it is there verbatim).
+/// The table as Markdown (what docs/papers/chiang.md shows; `tests/solve/chiang.rs` checks it is there verbatim).
 pub fn example4_markdown(rows: &[Example4Row]) -> String {
     let mut s = String::from(
         "| value | printed | exact | exact decimal | deviation (printed - exact) | correctly rounded? |\n| --- | --- | --- | --- | --- | --- |\n",

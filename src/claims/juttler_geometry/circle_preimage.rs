@@ -96,7 +96,7 @@ fn circle_preimage_inner() -> Result<Outcome, Stop> {
     let mut minors_text = Vec::new();
     let mut symbolic = true;
     for k in 1..=4 {
-        let d = det_laplace(&principal(&m, &order[..k]));
+        let d = det(&principal(&m, &order[..k]));
         minors_text.push(format!("D{k} = {}", d.display(&sym.vars)));
         match definite_sign(&d) {
             Some((s, vars)) if vars.iter().all(|&v| v == r_var) => signs.push(s),

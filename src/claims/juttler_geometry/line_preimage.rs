@@ -47,9 +47,9 @@ fn line_preimage_inner() -> Result<Outcome, Stop> {
         sym.vars.poly::<Rational>("mu"),
     );
     let on_line = theta_preimage_point(&big_p, &lam, &mu);
-    let det = det_laplace(&m);
+    let det_m = det(&m);
     let block = principal(&m, &[1, 2, 3]);
-    let det_block = det_laplace(&block);
+    let det_block = det(&block);
     let residuals = vec![
         (
             "Q(p) - p^T M p for Q = a T1 + b T2 + c T0".to_string(),
@@ -69,14 +69,14 @@ fn line_preimage_inner() -> Result<Outcome, Stop> {
     let (av, bv) = (sym.vars.var("a"), sym.vars.var("b"));
     let only_ab = |vars: &[Var]| vars.iter().all(|&v| v == av || v == bv);
     // det M > 0 unless a = b = 0.
-    let det_ok = matches!(definite_sign(&det), Some((Sign::Positive, ref v)) if only_ab(v));
+    let det_ok = matches!(definite_sign(&det_m), Some((Sign::Positive, ref v)) if only_ab(v));
     // e1 isotropic, not in the radical: M_11 = 0 and M_10^2 + M_12^2 + M_13^2 > 0 unless a = b = 0.
     let row1 = m[1][0].square() + m[1][2].square() + m[1][3].square();
     let iso_ok = m[1][1].is_zero()
         && matches!(definite_sign(&row1), Some((Sign::Positive, ref v)) if only_ab(v));
     // At infinity: principal minors on (p1,p3) and (p2,p3); their sum is negative unless a = b = 0.
-    let minor13 = det_laplace(&principal(&m, &[1, 3]));
-    let minor23 = det_laplace(&principal(&m, &[2, 3]));
+    let minor13 = det(&principal(&m, &[1, 3]));
+    let minor23 = det(&principal(&m, &[2, 3]));
     let sum_minor = minor13.clone() + &minor23;
     let inf_ok = matches!(definite_sign(&sum_minor), Some((Sign::Negative, ref v)) if only_ab(v));
     let symbolic = det_ok && iso_ok && inf_ok;
@@ -110,13 +110,13 @@ fn line_preimage_inner() -> Result<Outcome, Stop> {
     let symbolic_text = if symbolic {
         format!(
             "det M = {} > 0 unless a = b = 0; M_11 = 0 with row 1 non-zero (indefinite), so inertia (2,2,0); at infinity det = 0 and the principal minors (p1,p3), (p2,p3) sum to {} < 0: inertia (1,1,1), the plane at infinity is tangent",
-            det.display(&sym.vars),
+            det_m.display(&sym.vars),
             sum_minor.display(&sym.vars)
         )
     } else {
         format!(
             "the sign argument did not close (det M = {}), so the inertia rests on the instances",
-            det.display(&sym.vars)
+            det_m.display(&sym.vars)
         )
     };
     Ok(Outcome {

@@ -15,7 +15,7 @@
 use super::engine::{prove_all, Rng, Symbols};
 use super::{Outcome, Verdict};
 use exactcheck_core::bernstein::Bernstein;
-use exactcheck_core::inertia::{det_laplace, jacobi_inertia, principal};
+use exactcheck_core::inertia::{det, jacobi_inertia, principal};
 use exactcheck_core::linalg::{Inertia, Matrix};
 use exactcheck_core::miquel::{
     bilinear_patch, cross3, lebesgue_patch, miquel_configuration, MiquelConfiguration,

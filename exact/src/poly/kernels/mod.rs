@@ -577,7 +577,7 @@ pub(super) fn max_exps(shape: Shape, e: &[u64], n: usize, cap: usize) -> Vec<u64
 /// largest exponent in the product needs (`need[v]`, a Kronecker substitution), packed from the
 /// lowest variable up without crossing word boundaries, so that comparing keys as multi-word
 /// integers (most significant word last) is still the monomial order and adding keys never
-/// carries. When the operands have few low-degree variables (W1: 74 variables in 10 words) the
+/// carries. When the operands have few low-degree variables (chiang-identity: 74 variables in 10 words) the
 /// keys take one or two words, and the heap compares those instead of whole monomials.
 ///
 /// Returns the number of key words and the place `(word, shift)` of every variable.

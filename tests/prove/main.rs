@@ -1,0 +1,18 @@
+//! Tests of `prove` and of the exact fields behind it: fractions, the function library, square
+//! roots, trigonometry, robustness against hostile expressions, the scalars' agreement and the
+//! real-root isolation. One test binary; each module is one area, the helpers come from
+//! `tests/common`.
+
+#[path = "../common/mod.rs"]
+mod common;
+#[path = "../common/timed.rs"]
+mod timed;
+
+mod prove_fractions;
+mod prove_library;
+mod prove_sqrt;
+mod prove_trig;
+mod robust_field;
+mod robust_prove;
+mod scalars_agree;
+mod w4;
