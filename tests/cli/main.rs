@@ -14,6 +14,7 @@ mod float_nonfinite;
 mod fuzz_regressions;
 mod regress_explain;
 mod regress_fpbench;
+mod regress_inputs;
 mod regress_language;
 mod regress_text;
 mod report;

@@ -2,7 +2,7 @@
 //! degenerate set), `--predicate` (sign errors), several outputs (`--formula` repeated, a
 //! vector), and a saved run explained by `report --regress`.
 
-mod common;
+use crate::common;
 
 use serde_json::Value;
 use std::process::Output;
