@@ -58,7 +58,7 @@ mod field;
 mod tests;
 mod trig;
 
-pub use field::{primitive_element, FieldError, NumberField};
+pub use field::{primitive_element, FieldError, NumberField, PrimitiveElement};
 pub use trig::TrigError;
 
 use crate::expr::{Coefficient, Trig};

@@ -123,6 +123,7 @@ use num_bigint::BigInt;
 use num_traits::Signed;
 
 mod calculus;
+mod constants;
 #[cfg(test)]
 mod calculus_tests;
 mod eval;
@@ -139,6 +140,9 @@ mod tests;
 mod trig;
 mod w1;
 
+pub use constants::{
+    abstract_constants, fill_constants, needs_algebraic, upoly_expr, ConstantLeaf,
+};
 pub use latex::{equation_to_latex, to_latex, Notation};
 pub use lower::lower;
 pub use mathml::{equation_to_mathml, to_mathml};
