@@ -133,48 +133,41 @@ impl AlgebraicConstants {
         }
     }
 
-    /// What `c` is: `c = cos(pi/5)`, or for several constants the combination and each
-    /// constant in `c` (`c = cos(pi/5) + sin(pi/5), cos(pi/5) = ..., sin(pi/5) = ...`).
-    pub fn definition(&self) -> String {
-        let c = &self.name;
-        let single = self.polys.iter().position(|p| *p == UPoly::x());
-        match single {
-            Some(i) if self.leaves.len() == 1 => format!("{c} = {}", self.leaves[i].text),
-            _ => {
-                let mut theta = String::new();
-                for (l, k) in self.leaves.iter().zip(&self.combination) {
-                    let term = match k.unsigned_abs() {
-                        0 => continue,
-                        1 => l.text.clone(),
-                        n => format!("{n}*{}", l.text),
-                    };
-                    theta += &match (theta.is_empty(), *k < 0) {
-                        (true, false) => term,
-                        (true, true) => format!("-{term}"),
-                        (false, false) => format!(" + {term}"),
-                        (false, true) => format!(" - {term}"),
-                    };
-                }
-                let each: Vec<String> = self
-                    .leaves
-                    .iter()
-                    .zip(&self.polys)
-                    .filter(|(_, p)| **p != UPoly::x())
-                    .map(|(l, p)| format!("{} = {}", l.text, p.display(c)))
-                    .collect();
-                format!("{c} = {theta}, {}", each.join(", "))
-            }
+    /// `theta` as written: the constant, or the integer combination of the constants.
+    fn generator_text(&self) -> String {
+        let mut theta = String::new();
+        for (l, k) in self.leaves.iter().zip(&self.combination) {
+            let term = match k.unsigned_abs() {
+                0 => continue,
+                1 => l.text.clone(),
+                n => format!("{n}*{}", l.text),
+            };
+            theta += &match (theta.is_empty(), *k < 0) {
+                (true, false) => term,
+                (true, true) => format!("-{term}"),
+                (false, false) => format!(" + {term}"),
+                (false, true) => format!(" - {term}"),
+            };
         }
+        theta
     }
 
-    /// `with c = cos(pi/5), 4*c^2 - 2*c - 1 = 0`: the constants introduced, for a verdict.
+    /// `with c = cos(pi/5), 4*c^2 - 2*c - 1 = 0`: the constant introduced and its minimal
+    /// polynomial, then every other constant as a polynomial in `c`
+    /// (`with c = sin(pi/5), 16*c^4 - 20*c^2 + 5 = 0, cos(pi/5) = -2*c^2 + 3/2`).
     pub fn description(&self) -> String {
-        let degree = self.field.degree();
-        format!(
-            "with {}, {} (its minimal polynomial, degree {degree})",
-            self.definition(),
+        let c = &self.name;
+        let mut text = format!(
+            "with {c} = {}, {}",
+            self.generator_text(),
             self.relation_text()
-        )
+        );
+        for (l, p) in self.leaves.iter().zip(&self.polys) {
+            if *p != UPoly::x() {
+                text += &format!(", {} = {}", l.text, p.display(c));
+            }
+        }
+        text
     }
 
     /// An exact counter-example to `lhs = rhs` with `c = theta` (the variable `c`): rational
@@ -323,5 +316,130 @@ impl AlgebraicConstants {
         }
         let inv = self.field.inverse(&self.field.mul(&ld, &rd))?;
         Some(self.field.value(&self.field.mul(&num, &inv)))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::expr::{abstract_constants, angles, parse_expr, Angle};
+    use crate::poly::Vars;
+    use crate::prove::{decide_identity, IdentitySpec, IdentityVerdict, Statement};
+    use proptest::prelude::*;
+
+    /// The outcome of `lhs = rhs` decided as `prove` decides it: proved, or the counter-example.
+    enum Outcome {
+        Proved,
+        Fails(Vars, ConstantPoint),
+        Undecided,
+    }
+
+    fn decide(lhs: &str, rhs: &str) -> (Outcome, AlgebraicConstants) {
+        let mut leaves = Vec::new();
+        let l = abstract_constants(&parse_expr(lhs).unwrap(), &mut leaves).unwrap();
+        let r = abstract_constants(&parse_expr(rhs).unwrap(), &mut leaves).unwrap();
+        let k = AlgebraicConstants::new(leaves, &["x".to_string()])
+            .unwrap()
+            .expect("the statement has constants");
+        let mut vars = Vars::new();
+        let l: RatFun<Rational> = k.fill(&l).to_ratfun(&mut vars).unwrap();
+        let r: RatFun<Rational> = k.fill(&r).to_ratfun(&mut vars).unwrap();
+        let m: Poly<Rational> = k.relation().to_poly(&mut vars).unwrap();
+        let c = vars.get(&k.name).unwrap();
+        let circles: Vec<Poly<Rational>> = angles(&vars).iter().map(Angle::relation).collect();
+        let one = |p: &Poly<Rational>| (RatFun::from_poly(p.clone()), RatFun::from_poly(Poly::zero()));
+        let mut spec = IdentitySpec::new(vars.clone(), vec![Statement::Sides(l.clone(), r.clone())]);
+        spec.relations = circles.iter().chain([&m]).map(one).collect();
+        spec.domains = vec![(c, k.domain())];
+        let report = decide_identity(&spec).unwrap();
+        let outcome = match &report.verdict {
+            IdentityVerdict::Proved { .. } => Outcome::Proved,
+            // The engine's own counter-example (a quadratic m, solved in the square-root
+            // field) or none: the search at c = theta is checked either way.
+            IdentityVerdict::Fails { .. } | IdentityVerdict::Undecided { .. } => {
+                match k.counter_example(c, &l, &r, &circles, &report.conditions, &spec.domains, &[]) {
+                    Ok(p) => Outcome::Fails(vars, p),
+                    Err(_) => Outcome::Undecided,
+                }
+            }
+        };
+        (outcome, k)
+    }
+
+    /// The cosine and sine of `x` at the point, as floats.
+    fn angle_at(vars: &Vars, p: &ConstantPoint) -> f64 {
+        let get = |name: &str| {
+            let v = vars.get(name).unwrap();
+            p.values.iter().find(|(w, _)| *w == v).unwrap().1.to_f64()
+        };
+        get("sin(x)").atan2(get("cos(x)"))
+    }
+
+    #[test]
+    fn constants_next_to_variables() {
+        assert!(matches!(decide("x*cos(2*pi/7)", "x*(2*cos(pi/7)^2 - 1)").0, Outcome::Proved));
+        assert!(matches!(
+            decide("x + cos(pi/5)", "x + (1 + sqrt(5))/4").0,
+            Outcome::Proved
+        ));
+        assert!(matches!(
+            decide("x*sqrt(2 + sqrt(2))", "2*x*cos(pi/8)").0,
+            Outcome::Proved
+        ));
+        let (o, k) = decide("x*cos(2*pi/7)", "x/2");
+        assert_eq!(k.description(), "with c = cos(2*pi/7), 8*c^3 + 4*c^2 - 4*c - 1 = 0");
+        let Outcome::Fails(_, p) = o else { panic!("expected a counter-example") };
+        // At x = 1: cos(2 pi/7) - 1/2, checked against the number computed on its own.
+        let want: Algebraic = "cos(2*pi/7) - 1/2".parse().unwrap();
+        assert_eq!(p.value, want);
+        let (_, k) = decide("x*cos(pi/5)", "x*sqrt(5)");
+        assert_eq!(k.field.degree(), 2);
+        assert!(k.description().contains("sqrt(5) = 4*c - 1"), "{}", k.description());
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(24))]
+        /// The addition formula with a constant angle `(p/q) pi`, `q` in 5, 7, 8, 10, is proved;
+        /// perturbed by a rational it fails with LHS - RHS exactly minus the perturbation; with
+        /// the wrong constant angle it fails with the value the floating-point evaluation of
+        /// the two sides at the counter-example gives.
+        #[test]
+        fn addition_formulas_with_constant_angles(
+            qi in 0usize..4, p in 1i64..10, sine in any::<bool>(), n in -5i64..=5, d in 1i64..=4,
+        ) {
+            let q = [5i64, 7, 8, 10][qi];
+            let p = p % (2 * q);
+            prop_assume!(p % q != 0 && 2 * p % q != 0);
+            let a = format!("{p}*pi/{q}");
+            let (lhs, rhs) = if sine {
+                (format!("sin(x + {a})"), format!("sin(x)*cos({a}) + cos(x)*sin({a})"))
+            } else {
+                (format!("cos(x + {a})"), format!("cos(x)*cos({a}) - sin(x)*sin({a})"))
+            };
+            prop_assert!(matches!(decide(&lhs, &rhs).0, Outcome::Proved));
+            let shift = Rational::new(n, d).unwrap();
+            prop_assume!(!shift.is_zero());
+            let (o, _) = decide(&lhs, &format!("{rhs} + ({shift})"));
+            let Outcome::Fails(_, pt) = o else { panic!("{lhs} = {rhs} + {shift}: no counter-example") };
+            prop_assert_eq!(pt.value, Algebraic::from_rational(-shift));
+            // The wrong angle: (p + 1) pi/q in the right side.
+            let b = format!("{}*pi/{q}", p + 1);
+            let wrong = rhs.replace(&a, &b);
+            let (o, _) = decide(&lhs, &wrong);
+            let Outcome::Fails(vars, pt) = o else { panic!("{lhs} = {wrong}: no counter-example") };
+            let x = angle_at(&vars, &pt);
+            let (ta, tb) = (
+                p as f64 * std::f64::consts::PI / q as f64,
+                (p + 1) as f64 * std::f64::consts::PI / q as f64,
+            );
+            let float = if sine {
+                (x + ta).sin() - (x.sin() * tb.cos() + x.cos() * tb.sin())
+            } else {
+                (x + ta).cos() - (x.cos() * tb.cos() - x.sin() * tb.sin())
+            };
+            let (lo, hi) = pt.value.enclosure(60);
+            prop_assert!(float.abs() > 1e-9);
+            prop_assert!((lo.to_f64() - float).abs() < 1e-9 && (hi.to_f64() - float).abs() < 1e-9);
+        }
     }
 }
