@@ -33,10 +33,10 @@ use exactcheck_exact::expr::{
 };
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
-    decide_identity, factored, real_zero_free, square_roots, Domain, EngineError, FractionIdentity,
-    AlgebraicConstants, IdentityReport, IdentitySpec, IdentityVerdict, Part, Phrasing, PointField,
-    RadicalPoint,
-    SquareRoot, Statement, Voice, HOLDS_THRESHOLD_LOG2, MAX_RANDOM_TRIALS,
+    decide_identity, factored, real_zero_free, square_roots, AlgebraicConstants, Domain,
+    EngineError, FractionIdentity, IdentityReport, IdentitySpec, IdentityVerdict, Part, Phrasing,
+    PointField, RadicalPoint, SquareRoot, Statement, Voice, HOLDS_THRESHOLD_LOG2,
+    MAX_RANDOM_TRIALS,
 };
 use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::{Algebraic, Radical, Rational};
@@ -433,9 +433,25 @@ pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
                 &domains,
             );
         }
-        prove_over::<Radical>(args, &lhs, rhs.as_ref(), &relations, &nonzero, &domains, None)
+        prove_over::<Radical>(
+            args,
+            &lhs,
+            rhs.as_ref(),
+            &relations,
+            &nonzero,
+            &domains,
+            None,
+        )
     } else {
-        prove_over::<Rational>(args, &lhs, rhs.as_ref(), &relations, &nonzero, &domains, None)
+        prove_over::<Rational>(
+            args,
+            &lhs,
+            rhs.as_ref(),
+            &relations,
+            &nonzero,
+            &domains,
+            None,
+        )
     }
 }
 

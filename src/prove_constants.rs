@@ -10,8 +10,7 @@ use crate::Error;
 use exactcheck_exact::expr::{abstract_constants, needs_algebraic, Expr};
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
-    AlgebraicConstants, ConstantPoint, Domain, IdentityReport, IdentitySpec, PointField,
-    Statement,
+    AlgebraicConstants, ConstantPoint, Domain, IdentityReport, IdentitySpec, PointField, Statement,
 };
 use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::{Radical, Rational};
@@ -95,7 +94,7 @@ fn rational<C: PointField>(p: &Poly<C>) -> Option<Poly<Rational>> {
 
 fn rational_ratfun<C: PointField>(f: &RatFun<C>) -> Option<RatFun<Rational>> {
     let (n, d) = (rational(f.numerator())?, rational(f.denominator())?);
-    Some(RatFun::from_poly(n).div(&RatFun::from_poly(d)).ok()??)
+    RatFun::from_poly(n).div(&RatFun::from_poly(d)).ok()?
 }
 
 /// The exact counter-example at `c = theta` for a statement the engine left undecided, or why

@@ -53,7 +53,9 @@ pub enum RealConstantError {
     #[error("{0}")]
     Limit(#[from] limits::LimitError),
     /// A square root of a negative number: the value is not a real number.
-    #[error("sqrt({arg}) at {pos}: square root of a negative number {value}: the value is not real")]
+    #[error(
+        "sqrt({arg}) at {pos}: square root of a negative number {value}: the value is not real"
+    )]
     NotReal {
         /// Byte position of the `sqrt`.
         pos: usize,

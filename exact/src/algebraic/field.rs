@@ -48,7 +48,9 @@ pub enum FieldError {
     #[error("{0}")]
     Limit(LimitError),
     /// A number's minimal polynomial is not known (factoring gave up).
-    #[error("the minimal polynomial of {0} is not known (factoring its defining polynomial gave up)")]
+    #[error(
+        "the minimal polynomial of {0} is not known (factoring its defining polynomial gave up)"
+    )]
     NotMinimal(String),
     /// No `theta + k b` with a small `k` gave a generator (not expected to happen).
     #[error("no primitive element of the form theta + k*b with |k| <= {0} was found")]
@@ -248,16 +250,22 @@ pub fn primitive_element(numbers: &[Algebraic]) -> Result<PrimitiveElement, Fiel
         });
     };
     let mut combination = vec![1];
-    let mut field = NumberField::new(first.clone())
-        .ok_or_else(|| FieldError::NotMinimal(first.to_string()))?;
+    let mut field =
+        NumberField::new(first.clone()).ok_or_else(|| FieldError::NotMinimal(first.to_string()))?;
     let mut polys = vec![UPoly::x()];
     for b in rest {
         let g = minimal(b)?;
         let mut found = None;
         for step in 1..=2 * TRIES {
-            let k_int = if step % 2 == 1 { step / 2 + 1 } else { -(step / 2) };
+            let k_int = if step % 2 == 1 {
+                step / 2 + 1
+            } else {
+                -(step / 2)
+            };
             let k = Rational::from_integer(k_int);
-            let sum = field.generator.add_ref(&(b.clone() * Algebraic::from_rational(k.clone())));
+            let sum = field
+                .generator
+                .add_ref(&(b.clone() * Algebraic::from_rational(k.clone())));
             limits::ALGEBRAIC_DEGREE
                 .check_usize(sum.degree())
                 .map_err(FieldError::Limit)?;
@@ -328,7 +336,8 @@ mod tests {
         assert!(f.mul(&a, &inv).is_one());
         // The value of 1 + 2t + 3t^2 at t = cos(2 pi/7), against Algebraic arithmetic.
         let t = alg("cos(2*pi/7)");
-        let want = Algebraic::from_integer(1) + t.clone() * Algebraic::from_integer(2)
+        let want = Algebraic::from_integer(1)
+            + t.clone() * Algebraic::from_integer(2)
             + t.clone() * t.clone() * Algebraic::from_integer(3);
         assert_eq!(f.value(&a), want);
         assert!(f.inverse(&UPoly::zero()).is_none());
@@ -343,7 +352,7 @@ mod tests {
         // The generator is the combination it claims to be.
         let mut theta = Algebraic::zero();
         for (a, k) in numbers.iter().zip(&pe.combination) {
-            theta = theta + a.clone() * Algebraic::from_integer(*k);
+            theta += a.clone() * Algebraic::from_integer(*k);
         }
         assert_eq!(&theta, field.generator());
         for (a, p) in numbers.iter().zip(polys) {
@@ -365,7 +374,12 @@ mod tests {
 
     #[test]
     fn the_degree_limit_holds() {
-        let numbers = [alg("cos(2*pi/7)"), alg("sin(2*pi/7)"), alg("sqrt(2)"), alg("sqrt(3)")];
+        let numbers = [
+            alg("cos(2*pi/7)"),
+            alg("sin(2*pi/7)"),
+            alg("sqrt(2)"),
+            alg("sqrt(3)"),
+        ];
         let limit = limits::ALGEBRAIC_DEGREE.get();
         let r = primitive_element(&numbers);
         if limit < 24 {

@@ -225,7 +225,14 @@ pub fn upoly_expr(p: &UPoly, name: &str) -> Expr {
         } else {
             AddOp::Plus
         };
-        let mut factors = vec![(MulOp::Times, Expr::new(ExprKind::Number(if op == AddOp::Minus { c.neg_ref() } else { c.clone() })))];
+        let mut factors = vec![(
+            MulOp::Times,
+            Expr::new(ExprKind::Number(if op == AddOp::Minus {
+                c.neg_ref()
+            } else {
+                c.clone()
+            })),
+        )];
         if k > 0 {
             let var = Expr::var(name);
             factors.push((
@@ -235,7 +242,9 @@ pub fn upoly_expr(p: &UPoly, name: &str) -> Expr {
                 } else {
                     Expr::new(ExprKind::Pow(
                         Box::new(var),
-                        Box::new(Expr::new(ExprKind::Number(Rational::from_integer(k as i64)))),
+                        Box::new(Expr::new(ExprKind::Number(Rational::from_integer(
+                            k as i64,
+                        )))),
                     ))
                 },
             ));

@@ -123,9 +123,9 @@ use num_bigint::BigInt;
 use num_traits::Signed;
 
 mod calculus;
-mod constants;
 #[cfg(test)]
 mod calculus_tests;
+mod constants;
 mod eval;
 mod fraction;
 mod latex;

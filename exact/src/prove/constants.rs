@@ -330,7 +330,7 @@ mod tests {
     /// The outcome of `lhs = rhs` decided as `prove` decides it: proved, or the counter-example.
     enum Outcome {
         Proved,
-        Fails(Vars, ConstantPoint),
+        Fails(Box<(Vars, ConstantPoint)>),
         Undecided,
     }
 
@@ -347,8 +347,14 @@ mod tests {
         let m: Poly<Rational> = k.relation().to_poly(&mut vars).unwrap();
         let c = vars.get(&k.name).unwrap();
         let circles: Vec<Poly<Rational>> = angles(&vars).iter().map(Angle::relation).collect();
-        let one = |p: &Poly<Rational>| (RatFun::from_poly(p.clone()), RatFun::from_poly(Poly::zero()));
-        let mut spec = IdentitySpec::new(vars.clone(), vec![Statement::Sides(l.clone(), r.clone())]);
+        let one = |p: &Poly<Rational>| {
+            (
+                RatFun::from_poly(p.clone()),
+                RatFun::from_poly(Poly::zero()),
+            )
+        };
+        let mut spec =
+            IdentitySpec::new(vars.clone(), vec![Statement::Sides(l.clone(), r.clone())]);
         spec.relations = circles.iter().chain([&m]).map(one).collect();
         spec.domains = vec![(c, k.domain())];
         let report = decide_identity(&spec).unwrap();
@@ -357,8 +363,9 @@ mod tests {
             // The engine's own counter-example (a quadratic m, solved in the square-root
             // field) or none: the search at c = theta is checked either way.
             IdentityVerdict::Fails { .. } | IdentityVerdict::Undecided { .. } => {
-                match k.counter_example(c, &l, &r, &circles, &report.conditions, &spec.domains, &[]) {
-                    Ok(p) => Outcome::Fails(vars, p),
+                match k.counter_example(c, &l, &r, &circles, &report.conditions, &spec.domains, &[])
+                {
+                    Ok(p) => Outcome::Fails(Box::new((vars, p))),
                     Err(_) => Outcome::Undecided,
                 }
             }
@@ -377,7 +384,10 @@ mod tests {
 
     #[test]
     fn constants_next_to_variables() {
-        assert!(matches!(decide("x*cos(2*pi/7)", "x*(2*cos(pi/7)^2 - 1)").0, Outcome::Proved));
+        assert!(matches!(
+            decide("x*cos(2*pi/7)", "x*(2*cos(pi/7)^2 - 1)").0,
+            Outcome::Proved
+        ));
         assert!(matches!(
             decide("x + cos(pi/5)", "x + (1 + sqrt(5))/4").0,
             Outcome::Proved
@@ -387,14 +397,24 @@ mod tests {
             Outcome::Proved
         ));
         let (o, k) = decide("x*cos(2*pi/7)", "x/2");
-        assert_eq!(k.description(), "with c = cos(2*pi/7), 8*c^3 + 4*c^2 - 4*c - 1 = 0");
-        let Outcome::Fails(_, p) = o else { panic!("expected a counter-example") };
+        assert_eq!(
+            k.description(),
+            "with c = cos(2*pi/7), 8*c^3 + 4*c^2 - 4*c - 1 = 0"
+        );
+        let Outcome::Fails(found) = o else {
+            panic!("expected a counter-example")
+        };
+        let p = found.1;
         // At x = 1: cos(2 pi/7) - 1/2, checked against the number computed on its own.
         let want: Algebraic = "cos(2*pi/7) - 1/2".parse().unwrap();
         assert_eq!(p.value, want);
         let (_, k) = decide("x*cos(pi/5)", "x*sqrt(5)");
         assert_eq!(k.field.degree(), 2);
-        assert!(k.description().contains("sqrt(5) = 4*c - 1"), "{}", k.description());
+        assert!(
+            k.description().contains("sqrt(5) = 4*c - 1"),
+            "{}",
+            k.description()
+        );
     }
 
     proptest! {
@@ -420,13 +440,15 @@ mod tests {
             let shift = Rational::new(n, d).unwrap();
             prop_assume!(!shift.is_zero());
             let (o, _) = decide(&lhs, &format!("{rhs} + ({shift})"));
-            let Outcome::Fails(_, pt) = o else { panic!("{lhs} = {rhs} + {shift}: no counter-example") };
+            let Outcome::Fails(found) = o else { panic!("{lhs} = {rhs} + {shift}: no counter-example") };
+            let pt = found.1;
             prop_assert_eq!(pt.value, Algebraic::from_rational(-shift));
             // The wrong angle: (p + 1) pi/q in the right side.
             let b = format!("{}*pi/{q}", p + 1);
             let wrong = rhs.replace(&a, &b);
             let (o, _) = decide(&lhs, &wrong);
-            let Outcome::Fails(vars, pt) = o else { panic!("{lhs} = {wrong}: no counter-example") };
+            let Outcome::Fails(found) = o else { panic!("{lhs} = {wrong}: no counter-example") };
+            let (vars, pt) = *found;
             let x = angle_at(&vars, &pt);
             let (ta, tb) = (
                 p as f64 * std::f64::consts::PI / q as f64,
