@@ -14,6 +14,7 @@ pub mod error;
 pub mod output;
 pub mod plot;
 pub mod prove_cmd;
+pub mod prove_constants;
 pub mod regress;
 pub mod report;
 pub mod solve;

@@ -42,9 +42,9 @@ use exactcheck_exact::expr::{
 };
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
-    decide_identity, factored, real_zero_free, square_roots, CoordinateOutcome, Domain,
-    EngineError, FractionIdentity, IdentityReport, IdentitySpec, IdentityVerdict, Part, Phrasing,
-    PointField, RadicalPoint, SquareRoot, Statement, Voice,
+    decide_identity, factored, real_zero_free, square_roots, AlgebraicConstants,
+    CoordinateOutcome, Domain, EngineError, FractionIdentity, IdentityReport, IdentitySpec,
+    IdentityVerdict, Part, Phrasing, PointField, RadicalPoint, SquareRoot, Statement, Voice,
 };
 use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::{Algebraic, Radical, Rational};
@@ -245,11 +245,11 @@ fn parse_value(text: &str, what: &str) -> Result<library::Val, Error> {
 }
 
 /// The two sides of `prove`, component by component, and their one shape.
-struct Sides<'a> {
-    lhs: &'a [Expr],
+pub(crate) struct Sides<'a> {
+    pub(crate) lhs: &'a [Expr],
     /// `None`: the right side is zero in every component.
-    rhs: Option<&'a [Expr]>,
-    shape: Shape,
+    pub(crate) rhs: Option<&'a [Expr]>,
+    pub(crate) shape: Shape,
 }
 
 impl Sides<'_> {
@@ -352,9 +352,14 @@ pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
                 return Ok(code);
             }
         }
-        prove_over::<Radical>(args, &sides, &relations, &nonzero, &domains)
+        if crate::prove_constants::needs_constants(&sides, &relations, &nonzero) {
+            return crate::prove_constants::prove_with_constants(
+                args, &sides, &relations, &nonzero, &domains,
+            );
+        }
+        prove_over::<Radical>(args, &sides, &relations, &nonzero, &domains, None)
     } else {
-        prove_over::<Rational>(args, &sides, &relations, &nonzero, &domains)
+        prove_over::<Rational>(args, &sides, &relations, &nonzero, &domains, None)
     }
 }
 
@@ -437,12 +442,16 @@ fn to_poly<C: Coefficient>(e: &Expr, vars: &mut Vars, what: &str) -> Result<Poly
         .map_err(|err| Error::Input(format!("{what}: {err}")))
 }
 
-fn prove_over<C: PointField + Display>(
+/// Decides `lhs = rhs` over `C` (the core of [`run`]); `constants`, when given, are the
+/// statement's algebraic constants as polynomials in the variable of their primitive element,
+/// whose minimal polynomial joins the relations (`crate::prove_constants`).
+pub(crate) fn prove_over<C: PointField + Display>(
     args: &ProveArgs,
     sides: &Sides,
     relations: &[(Expr, Expr)],
     nonzero: &[(Expr, Expr, String)],
     domains: &[(String, Domain, String)],
+    constants: Option<&AlgebraicConstants>,
 ) -> Result<ExitCode, Error> {
     let mut vars = Vars::new();
     // `sqrt` of a non-constant becomes a variable with its relation and sign condition.
@@ -502,6 +511,16 @@ fn prove_over<C: PointField + Display>(
         mixed,
         user_relations,
     } = add_angles(&vars, &mut rels);
+    // The minimal polynomial of the constants' primitive element (after the angles, so that it
+    // does not count as a relation of the user's).
+    let constant_var = match constants {
+        Some(k) => {
+            let m = to_ratfun::<C>(&k.relation(), &mut vars, "the minimal polynomial")?;
+            rels.push((m, RatFun::from_poly(Poly::zero())));
+            vars.get(&k.name)
+        }
+        None => None,
+    };
     let circle_texts: Vec<String> = angle_list
         .iter()
         .map(|a| format!("cos({0})^2 + sin({0})^2 = 1", a.name))
@@ -521,6 +540,9 @@ fn prove_over<C: PointField + Display>(
         doms.push((var, d.clone()));
     }
     doms.extend(roots.iter().map(|r| (r.var, SquareRoot::<C>::domain())));
+    if let (Some(k), Some(c)) = (constants, constant_var) {
+        doms.push((c, k.domain()));
+    }
     // Where the square roots are defined.
     let suffix = if roots.is_empty() {
         String::new()
@@ -535,6 +557,10 @@ fn prove_over<C: PointField + Display>(
         } else {
             format!(" (the square roots are defined where {})", c.join(", "))
         }
+    };
+    let suffix = match constants {
+        Some(k) => format!("{suffix} ({})", k.description()),
+        None => suffix,
     };
     let root_names: Vec<(String, String)> = roots
         .iter()
@@ -566,6 +592,12 @@ fn prove_over<C: PointField + Display>(
         domain_texts: domains
             .iter()
             .map(|(n, _, t)| (n.clone(), t.trim().to_string()))
+            .chain(constants.map(|k| {
+                (
+                    k.name.clone(),
+                    format!("{} in its isolating interval {}", k.name, k.domain()),
+                )
+            }))
             .collect(),
         suffix,
     };
@@ -579,7 +611,28 @@ fn prove_over<C: PointField + Display>(
     })?;
     let mut report = report;
     sound_counter_example(&mut report, pi_in_relations, &mixed);
+    // With algebraic constants, a non-zero reduction gets its counter-example at c = theta.
+    let mut constant_point = None;
+    if let Some(k) = constants {
+        let excluded: Vec<Var> = pi.into_iter().collect();
+        let found = crate::prove_constants::search(k, &spec, &report, &excluded, &mixed);
+        if let IdentityVerdict::Undecided {
+            searched,
+            coordinate,
+            ..
+        } = &mut report.verdict
+        {
+            match found {
+                Ok(p) => {
+                    report.outcomes[*coordinate] = CoordinateOutcome::Fails;
+                    constant_point = Some(p);
+                }
+                Err(why) => *searched = format!("{searched}; with c = {}: {why}", k.name),
+            }
+        }
+    }
     let (verdict, code) = match &report.verdict {
+        _ if constant_point.is_some() => ("fails", ExitCode::from(1)),
         IdentityVerdict::Proved { .. } => ("proved", ExitCode::SUCCESS),
         IdentityVerdict::Fails { .. } => ("fails", ExitCode::from(1)),
         IdentityVerdict::Undecided { .. } => ("undecided", ExitCode::from(1)),
@@ -620,6 +673,30 @@ fn prove_over<C: PointField + Display>(
         _ => None,
     };
     let evidence = match (&report.verdict, pi, &residual_for_pi) {
+        (
+            IdentityVerdict::Undecided {
+                normal_form,
+                coordinate,
+                ..
+            },
+            _,
+            _,
+        ) if constant_point.is_some() => {
+            let p = constant_point.as_ref().expect("matched");
+            let at = describe_point(&crate::prove_constants::named_point(p, &spec.vars));
+            let nf = factored(normal_form, &spec.vars);
+            let at = if at.is_empty() {
+                String::new()
+            } else {
+                format!("at {}{rels_hold} ", at.join(", "))
+            };
+            format!(
+                "{}{at}LHS - RHS = {}; LHS - RHS{cleared} reduces{modulo} to {nf}, not zero{}",
+                sides.prefix(*coordinate),
+                p.value,
+                phrasing.suffix
+            )
+        }
         (
             IdentityVerdict::Fails {
                 coordinate,
@@ -710,6 +787,29 @@ fn prove_over<C: PointField + Display>(
                 .map(|p| json!({"nonzero": p.display(vars).to_string(), "real_zero_free": real_zero_free(p) == Some(true)}))
                 .collect::<Vec<_>>()
                 .into();
+        }
+        if let (
+            Some(p),
+            IdentityVerdict::Undecided {
+                normal_form,
+                coordinate,
+                ..
+            },
+        ) = (&constant_point, &report.verdict)
+        {
+            if sides.shape != Shape::Scalar {
+                obj["failing_component"] = json!(sides.shape.component(*coordinate));
+            }
+            obj["point"] = crate::prove_constants::named_point(p, vars)
+                .into_iter()
+                .map(|(n, q)| (n, json!(q)))
+                .collect::<serde_json::Map<_, _>>()
+                .into();
+            obj["value"] = json!(p.value.to_string());
+            obj["normal_form"] = json!(normal_form.display(vars).to_string());
+        }
+        if let Some(k) = constants {
+            obj["constants"] = json!(k.description());
         }
         if let IdentityVerdict::Fails {
             point,

@@ -52,6 +52,25 @@ pub enum RealConstantError {
     /// A comparison needed pi to more bits than the `pi-bits` limit allows.
     #[error("{0}")]
     Limit(#[from] limits::LimitError),
+    /// A square root of a negative number: the value is not a real number.
+    #[error(
+        "sqrt({arg}) at {pos}: square root of a negative number {value}: the value is not real"
+    )]
+    NotReal {
+        /// Byte position of the `sqrt`.
+        pos: usize,
+        /// The radicand as written.
+        arg: String,
+        /// The radicand's exact value (negative).
+        value: String,
+    },
+}
+
+/// The exact value of the radicand `arg` (as printed by the expression printer, so it reads
+/// back) when it is negative, printed.
+fn negative_radicand(arg: &str) -> Option<String> {
+    let v: Algebraic = crate::expr::parse_expr(arg).ok()?.eval_constant().ok()?;
+    (v.sign() == exactcheck_core::Sign::Negative).then(|| v.to_string())
 }
 
 impl RealConstant {
@@ -84,6 +103,12 @@ impl RealConstant {
             // A limit of the square-root field (`radicands`) is no reason to refuse a value
             // the algebraic numbers have; any other error is reported as the field found it.
             Err(err @ ExprError::Limit { .. }) => return Err(err.into()),
+            Err(ExprError::NoSqrt { pos, arg, .. }) => {
+                if let Some(value) = negative_radicand(&arg) {
+                    return Err(RealConstantError::NotReal { pos, arg, value });
+                }
+                return Err(radical_error.into());
+            }
             Err(_) => return Err(radical_error.into()),
         }
         let mut names = Vec::new();

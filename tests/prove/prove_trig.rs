@@ -115,7 +115,6 @@ fn angles_that_cannot_be_decided_are_one_line_errors() {
         ("sin(x/2)", "not an integer"),
         ("tan(pi/2)", "tan(pi/2) is undefined"),
         ("sin(100000 x)", "angle-multiple = 1000"),
-        ("x + cos(pi/5)", "not supported next to variables"),
         ("sin(1)", "not a rational multiple of pi"),
         ("diff(x, pi)", "pi is a constant"),
     ] {
@@ -128,6 +127,35 @@ fn angles_that_cannot_be_decided_are_one_line_errors() {
     let (code, _, err) = run(&["prove", "sin(7x)", "0", "--limit", "angle-multiple=6"]);
     assert_eq!(code, 2);
     assert!(err.contains("angle-multiple = 6"), "{err}");
+}
+
+#[test]
+fn algebraic_constants_next_to_variables() {
+    let (code, out, _) = run(&["prove", "x + cos(pi/5)", "x + (1+sqrt(5))/4"]);
+    assert_eq!(code, 0, "{out}");
+    assert!(
+        out.contains("with c = cos(pi/5), 4*c^2 - 2*c - 1 = 0"),
+        "{out}"
+    );
+    proved("sin(x+pi/5)", "sin(x)*cos(pi/5)+cos(x)*sin(pi/5)");
+    proved("x*cos(2*pi/7)", "x*(2*cos(pi/7)^2 - 1)");
+    proved("x*sqrt(2 + sqrt(2))", "2*x*cos(pi/8)");
+    // With a square root of an expression and its sign condition.
+    let (code, out, _) = run(&[
+        "prove",
+        "sqrt(x^2)*cos(pi/7)",
+        "x*cos(pi/7)",
+        "--where",
+        "x >= 0",
+    ]);
+    assert_eq!(code, 0, "{out}");
+    let (code, out, _) = run(&["prove", "x*cos(2*pi/7)", "x/2"]);
+    assert_eq!(code, 1, "{out}");
+    assert!(
+        out.starts_with("fails: at x = 1 LHS - RHS = Root("),
+        "{out}"
+    );
+    fails("sin(x + pi/7)", "sin(x)*cos(pi/7) + cos(x)*sin(pi/7) + 1/5");
 }
 
 #[test]

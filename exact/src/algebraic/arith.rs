@@ -11,13 +11,13 @@ use num_bigint::BigInt;
 // ------------------------------------------------------------------------------ intervals
 
 /// A closed rational interval `[lo, hi]`.
-type Iv = (Rational, Rational);
+pub(super) type Iv = (Rational, Rational);
 
-fn iv_add(a: &Iv, b: &Iv) -> Iv {
+pub(super) fn iv_add(a: &Iv, b: &Iv) -> Iv {
     (a.0.add_ref(&b.0), a.1.add_ref(&b.1))
 }
 
-fn iv_mul(a: &Iv, b: &Iv) -> Iv {
+pub(super) fn iv_mul(a: &Iv, b: &Iv) -> Iv {
     let p = [
         a.0.mul_ref(&b.0),
         a.0.mul_ref(&b.1),

@@ -48,14 +48,17 @@
 //! # Layout
 //! Here: the type, construction, comparison and the trait implementations; `arith`: the
 //! arithmetic and the root selection; `trig`: cosines, sines and tangents of rational multiples
-//! of pi; `display`: printing as radicals or as `Root(...)`.
+//! of pi; `display`: printing as radicals or as `Root(...)`; `field`: number fields `Q(theta)`
+//! and primitive elements of several numbers.
 
 mod arith;
 mod display;
+mod field;
 #[cfg(test)]
 mod tests;
 mod trig;
 
+pub use field::{primitive_element, FieldError, NumberField, PrimitiveElement};
 pub use trig::TrigError;
 
 use crate::expr::{Coefficient, Trig};

@@ -125,6 +125,7 @@ use num_traits::Signed;
 mod calculus;
 #[cfg(test)]
 mod calculus_tests;
+mod constants;
 mod eval;
 mod fraction;
 mod latex;
@@ -138,6 +139,9 @@ mod roots;
 mod tests;
 mod trig;
 
+pub use constants::{
+    abstract_constants, fill_constants, needs_algebraic, upoly_expr, ConstantLeaf,
+};
 pub use latex::{equation_to_latex, to_latex, Notation};
 pub use lower::{eval_lowered, lower};
 pub use mathml::{equation_to_mathml, to_mathml};

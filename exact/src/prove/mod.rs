@@ -55,6 +55,7 @@
 //! [`phrase::Phrasing`] words it. `prove`, claims files and the built-in catalogue all go
 //! through the two, so that they share one counter-example rule and one way of speaking.
 
+mod constants;
 mod factored;
 mod fraction;
 mod hypotheses;
@@ -63,6 +64,7 @@ pub mod phrase;
 pub mod random;
 mod roots;
 
+pub use constants::{AlgebraicConstants, ConstantPoint, CONSTANT_ATTEMPTS};
 pub use factored::factored;
 pub use fraction::{decide_fraction, real_zero_free, where_clause, FractionIdentity};
 pub use hypotheses::{Hypothesis, MAX_HYPOTHESIS_DROPS};

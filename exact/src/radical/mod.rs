@@ -141,8 +141,28 @@ impl FromStr for Radical {
     /// An [`ExprError`] naming the problem and its position: malformed input, a variable
     /// (including `i`: use [`ComplexRadical`]), an unknown function, division by zero, a square
     /// root not in the type (`sqrt(-1)`, `sqrt(sqrt(2))`), a constant beyond the size limit.
+    ///
+    /// A real algebraic number outside the field (`cos(pi/8)`, `sqrt(1 + sqrt(2))`) is refused
+    /// with its exact value and degree ([`ExprError::BadCall`] naming the expression).
     fn from_str(s: &str) -> Result<Self, Self::Err> {
-        parse_expr(s)?.eval_constant()
+        let e = parse_expr(s)?;
+        e.eval_constant().map_err(|err| match err {
+            ExprError::NoSqrt { .. } | ExprError::BadCall { .. } => {
+                match e.eval_constant::<crate::Algebraic>() {
+                    Ok(v) => ExprError::BadCall {
+                        pos: e.pos,
+                        name: e.to_string(),
+                        why: format!(
+                            "its value {v} is a real algebraic number of degree {}, outside the \
+                             field of square roots of rationals that this computation uses",
+                            v.degree()
+                        ),
+                    },
+                    Err(_) => err,
+                }
+            }
+            other => other,
+        })
     }
 }
 

@@ -1,0 +1,328 @@
+//! Algebraic constants next to variables: the rewriting that lets an identity with variables
+//! use any real algebraic constant (`x + cos(pi/5)`, `sin(x + pi/7)`, `sqrt(2 + sqrt(2)) x`),
+//! whose value need not lie in a coefficient field of the conversion.
+//!
+//! * An angle with variables and a part `r pi` is split by the addition formulas,
+//!   `sin(A + r pi) = sin(A) cos(r pi) + cos(A) sin(r pi)` (`cos` and `tan` alike), so that every
+//!   constant is a *leaf*: `sqrt` of a constant, or `sin`, `cos`, `tan` of a constant angle.
+//! * [`abstract_constants`] evaluates each leaf exactly as an [`Algebraic`] number: a rational
+//!   value becomes a number, an irrational one is recorded ([`ConstantLeaf`], equal values once)
+//!   and replaced by a placeholder variable that no identifier can name.
+//! * [`fill_constants`] replaces the placeholders by expressions (the caller's polynomials in a
+//!   primitive element of the field of the leaves, see [`crate::algebraic::primitive_element`]).
+//!
+//! [`needs_algebraic`] tells whether a tree has a leaf that a coefficient type cannot hold, so
+//! that callers take this path only when the fast one refuses.
+
+use super::trig::{linear_angle, Trig};
+use super::*;
+use crate::univariate::UPoly;
+use crate::Algebraic;
+
+/// An irrational constant of an expression: its text and its exact value.
+#[derive(Clone, Debug)]
+pub struct ConstantLeaf {
+    /// The leaf as written (`cos(pi/5)`, `sqrt(2 + sqrt(2))`).
+    pub text: String,
+    /// Its value.
+    pub value: Algebraic,
+}
+
+/// The placeholder variable of leaf `i` (no identifier starts with `#`).
+fn placeholder(i: usize) -> String {
+    format!("#{i}")
+}
+
+/// Whether the tree has no variable but pi (a candidate constant).
+fn only_pi(e: &Expr) -> bool {
+    let mut names = Vec::new();
+    e.collect_variables(&mut names);
+    names.iter().all(|n| n == PI)
+}
+
+/// Whether `e` is a leaf candidate: `sqrt` of a constant or a trigonometric function of a
+/// constant angle.
+fn is_leaf(e: &Expr) -> bool {
+    let shape = match &e.kind {
+        ExprKind::Sqrt(_) => true,
+        ExprKind::Call(name, _) => Trig::from_name(name).is_some(),
+        _ => false,
+    };
+    shape && only_pi(e)
+}
+
+/// `e` with every position set to `pos` (a tree built from text for the node at `pos`).
+fn at(e: Expr, pos: usize) -> Expr {
+    let kind = match e.kind {
+        ExprKind::Neg(x) => ExprKind::Neg(Box::new(at(*x, pos))),
+        ExprKind::Sqrt(x) => ExprKind::Sqrt(Box::new(at(*x, pos))),
+        ExprKind::Pow(a, b) => ExprKind::Pow(Box::new(at(*a, pos)), Box::new(at(*b, pos))),
+        ExprKind::Sum(ts) => ExprKind::Sum(ts.into_iter().map(|(o, t)| (o, at(t, pos))).collect()),
+        ExprKind::Product(fs) => {
+            ExprKind::Product(fs.into_iter().map(|(o, f)| (o, at(f, pos))).collect())
+        }
+        ExprKind::Call(n, args) => {
+            ExprKind::Call(n, args.into_iter().map(|a| at(a, pos)).collect())
+        }
+        k @ (ExprKind::Number(_) | ExprKind::Var(_)) => k,
+    };
+    Expr { kind, pos }
+}
+
+/// The trigonometric call `e` (`which` of `args`) with an angle `A + r pi`, `A` with variables
+/// and `r != 0`, split by the addition formulas; `None` when the angle has no such two parts
+/// (or is malformed: the conversion reports that).
+fn split_angle(e: &Expr, which: Trig, args: &[Expr]) -> Option<Expr> {
+    let angle = linear_angle(e, which.name(), args).ok()?;
+    if angle.terms.is_empty() || angle.pi.is_zero() {
+        return None;
+    }
+    let mut a = String::new();
+    for (i, (x, k)) in angle.terms.iter().enumerate() {
+        let sign = match (i, *k < 0) {
+            (0, false) => "",
+            (0, true) => "-",
+            (_, false) => " + ",
+            (_, true) => " - ",
+        };
+        let times = match k.unsigned_abs() {
+            1 => String::new(),
+            n => format!("{n}*"),
+        };
+        a += &format!("{sign}{times}{x}");
+    }
+    let r = super::trig::angle_text(&angle.pi);
+    let (sa, ca) = (format!("sin({a})"), format!("cos({a})"));
+    let (sr, cr) = (format!("sin({r})"), format!("cos({r})"));
+    let sin = format!("{sa}*{cr} + {ca}*{sr}");
+    let cos = format!("{ca}*{cr} - {sa}*{sr}");
+    let text = match which {
+        Trig::Sin => sin,
+        Trig::Cos => cos,
+        Trig::Tan => format!("({sin})/({cos})"),
+    };
+    let parsed = parse_expr(&text).expect("the split angle is well formed");
+    Some(at(parsed, e.pos))
+}
+
+/// Rebuilds `e` top-down: `leaf` may replace a leaf candidate (`Some`), angles with variables
+/// and a multiple of pi are split first.
+fn walk(
+    e: &Expr,
+    leaf: &mut dyn FnMut(&Expr) -> Result<Option<Expr>, ExprError>,
+) -> Result<Expr, ExprError> {
+    if is_leaf(e) {
+        if let Some(r) = leaf(e)? {
+            return Ok(r);
+        }
+    }
+    let mut go = |x: &Expr| walk(x, leaf);
+    let kind = match &e.kind {
+        ExprKind::Number(_) | ExprKind::Var(_) => return Ok(e.clone()),
+        ExprKind::Call(name, args) => {
+            if let Some(which) = Trig::from_name(name) {
+                if let Some(split) = split_angle(e, which, args) {
+                    return walk(&split, leaf);
+                }
+                // An angle is an integer combination of variables plus a multiple of pi:
+                // nothing in it to rewrite.
+                return Ok(e.clone());
+            }
+            ExprKind::Call(name.clone(), args.iter().map(go).collect::<Result<_, _>>()?)
+        }
+        ExprKind::Neg(x) => ExprKind::Neg(Box::new(go(x)?)),
+        ExprKind::Sqrt(x) => ExprKind::Sqrt(Box::new(go(x)?)),
+        ExprKind::Pow(a, b) => ExprKind::Pow(Box::new(go(a)?), Box::new(go(b)?)),
+        ExprKind::Sum(ts) => ExprKind::Sum(
+            ts.iter()
+                .map(|(o, t)| Ok((*o, go(t)?)))
+                .collect::<Result<_, ExprError>>()?,
+        ),
+        ExprKind::Product(fs) => ExprKind::Product(
+            fs.iter()
+                .map(|(o, f)| Ok((*o, go(f)?)))
+                .collect::<Result<_, ExprError>>()?,
+        ),
+    };
+    Ok(Expr { kind, pos: e.pos })
+}
+
+/// `e` with its angles split and every constant leaf evaluated exactly: a rational one becomes a
+/// number, an irrational one the placeholder of its entry in `leaves` (appended when its value
+/// is new). See the [module documentation](self).
+///
+/// # Errors
+/// The evaluator's errors of a leaf (a negative radicand, `tan(pi/2)`, the `algebraic-degree`
+/// limit); a leaf with pi outside an angle (`sqrt(pi)`) is left as it is.
+pub fn abstract_constants(e: &Expr, leaves: &mut Vec<ConstantLeaf>) -> Result<Expr, ExprError> {
+    walk(e, &mut |x: &Expr| {
+        let value = match x.eval_constant::<Algebraic>() {
+            Ok(v) => v,
+            Err(ExprError::NotConstant { .. }) => return Ok(None),
+            Err(err) => return Err(err),
+        };
+        if let Some(q) = value.to_rational() {
+            return Ok(Some(at(Expr::number(q.clone()), x.pos)));
+        }
+        let i = match leaves.iter().position(|l| l.value == value) {
+            Some(i) => i,
+            None => {
+                leaves.push(ConstantLeaf {
+                    text: x.to_string(),
+                    value,
+                });
+                leaves.len() - 1
+            }
+        };
+        Ok(Some(Expr {
+            kind: ExprKind::Var(placeholder(i)),
+            pos: x.pos,
+        }))
+    })
+}
+
+/// `e` with the placeholder of leaf `i` replaced by `values[i]`.
+pub fn fill_constants(e: &Expr, values: &[Expr]) -> Expr {
+    let kind = match &e.kind {
+        ExprKind::Var(n) => match n.strip_prefix('#').and_then(|i| i.parse::<usize>().ok()) {
+            Some(i) if i < values.len() => return at(values[i].clone(), e.pos),
+            _ => return e.clone(),
+        },
+        ExprKind::Number(_) => return e.clone(),
+        ExprKind::Neg(x) => ExprKind::Neg(Box::new(fill_constants(x, values))),
+        ExprKind::Sqrt(x) => ExprKind::Sqrt(Box::new(fill_constants(x, values))),
+        ExprKind::Pow(a, b) => ExprKind::Pow(
+            Box::new(fill_constants(a, values)),
+            Box::new(fill_constants(b, values)),
+        ),
+        ExprKind::Sum(ts) => ExprKind::Sum(
+            ts.iter()
+                .map(|(o, t)| (*o, fill_constants(t, values)))
+                .collect(),
+        ),
+        ExprKind::Product(fs) => ExprKind::Product(
+            fs.iter()
+                .map(|(o, f)| (*o, fill_constants(f, values)))
+                .collect(),
+        ),
+        ExprKind::Call(n, args) => ExprKind::Call(
+            n.clone(),
+            args.iter().map(|a| fill_constants(a, values)).collect(),
+        ),
+    };
+    Expr { kind, pos: e.pos }
+}
+
+/// The polynomial `p` in the variable `name` as an expression (`2*c^2 - 1/3*c + 5`).
+pub fn upoly_expr(p: &UPoly, name: &str) -> Expr {
+    let mut terms = Vec::new();
+    for (k, c) in p.coeffs().iter().enumerate() {
+        if c.is_zero() {
+            continue;
+        }
+        let op = if c.signum() == exactcheck_core::Sign::Negative {
+            AddOp::Minus
+        } else {
+            AddOp::Plus
+        };
+        let mut factors = vec![(
+            MulOp::Times,
+            Expr::new(ExprKind::Number(if op == AddOp::Minus {
+                c.neg_ref()
+            } else {
+                c.clone()
+            })),
+        )];
+        if k > 0 {
+            let var = Expr::var(name);
+            factors.push((
+                MulOp::Times,
+                if k == 1 {
+                    var
+                } else {
+                    Expr::new(ExprKind::Pow(
+                        Box::new(var),
+                        Box::new(Expr::new(ExprKind::Number(Rational::from_integer(
+                            k as i64,
+                        )))),
+                    ))
+                },
+            ));
+        }
+        terms.push((op, Expr::new(ExprKind::Product(factors))));
+    }
+    if terms.is_empty() {
+        return Expr::number(Rational::ZERO);
+    }
+    Expr::new(ExprKind::Sum(terms))
+}
+
+/// Whether `e` has a constant that `C` cannot hold but a real algebraic number can: a leaf
+/// (`cos(pi/5)`, `sqrt(2 + sqrt(2))`) or the multiple of pi of an angle with variables
+/// (`sin(x + pi/5)`) that `C` refuses and [`Algebraic`] evaluates.
+pub fn needs_algebraic<C: Coefficient>(e: &Expr) -> bool {
+    let mut found = false;
+    let _ = walk(e, &mut |x: &Expr| {
+        if !found && x.eval_constant::<C>().is_err() && x.eval_constant::<Algebraic>().is_ok() {
+            found = true;
+        }
+        // Keep the leaf: only the answer matters.
+        Ok(Some(x.clone()))
+    });
+    found
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Radical;
+
+    fn rewrite(text: &str) -> (String, Vec<String>) {
+        let mut leaves = Vec::new();
+        let e = abstract_constants(&parse_expr(text).unwrap(), &mut leaves).unwrap();
+        (e.to_string(), leaves.into_iter().map(|l| l.text).collect())
+    }
+
+    #[test]
+    fn leaves_are_abstracted_and_angles_split() {
+        let (e, l) = rewrite("x + cos(pi/5)");
+        assert_eq!(e, "x + #0");
+        assert_eq!(l, ["cos(pi/5)"]);
+        let (e, l) = rewrite("sin(x + pi/5)");
+        assert_eq!(e, "sin(x)*#0 + cos(x)*#1");
+        assert_eq!(l, ["cos(pi/5)", "sin(pi/5)"]);
+        // Rational values become numbers, equal values one leaf.
+        let (e, l) = rewrite("cos(x + pi/2) + sqrt(2)*y + sqrt(4/2)*z + cos(pi/3)");
+        assert_eq!(l, ["sqrt(2)"]);
+        assert!(e.contains("1/2") && !e.contains("pi"), "{e}");
+        // A nested radical is one leaf; an angle without pi is untouched.
+        let (e, l) = rewrite("sqrt(2 + sqrt(2))*x + sin(2*x - y)");
+        assert_eq!(l, ["sqrt(2 + sqrt(2))"]);
+        assert_eq!(e, "#0*x + sin(2*x - y)");
+    }
+
+    #[test]
+    fn errors_and_detection() {
+        let mut leaves = Vec::new();
+        let err = abstract_constants(&parse_expr("x + sqrt(-2)").unwrap(), &mut leaves);
+        assert!(err.is_err());
+        let needs = |t: &str| needs_algebraic::<Radical>(&parse_expr(t).unwrap());
+        assert!(needs("x + cos(pi/5)"));
+        assert!(needs("sin(x + pi/7)"));
+        assert!(needs("x*sqrt(2 + sqrt(2))"));
+        assert!(!needs("x + cos(pi/4)"));
+        assert!(!needs("sin(x + pi/3) + sqrt(x)"));
+        assert!(!needs("x + sqrt(-2)"));
+    }
+
+    #[test]
+    fn filled_placeholders_and_polynomials() {
+        let p = UPoly::from_i64_coeffs(&[-1, 0, 2]);
+        let filled = fill_constants(&parse_expr("x + 1").unwrap(), &[]);
+        assert_eq!(filled.to_string(), "x + 1");
+        let mut leaves = Vec::new();
+        let e = abstract_constants(&parse_expr("x*cos(pi/5)").unwrap(), &mut leaves).unwrap();
+        let filled = fill_constants(&e, &[upoly_expr(&p, "c")]);
+        assert_eq!(filled.to_string(), "x*(-1 + 2*c^2)");
+    }
+}
