@@ -21,6 +21,10 @@
 //!
 //! Hand-written: the fraction evaluator (the engine proves polynomial identities; the corollaries
 //! print quotients, and cross-multiplying by hand would mean rewriting the printed text).
+//!
+//! Rust, not an embedded claims file: the theorem and the corollaries are families over the
+//! degrees `(m, n)`, expanded with the Bernstein products of `exactcheck_core::bernstein` and checked
+//! against de Casteljau and exact instances; a claims file states one formula at a time.
 
 mod corollaries;
 mod example4;

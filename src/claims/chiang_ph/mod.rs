@@ -25,6 +25,11 @@
 //! Self-intersections of the offsets are decided exactly by `exactcheck_exact::planar` (the
 //! resultant of the divided differences, each candidate pair excluded by tensor-Bernstein signs
 //! or certified by Poincare-Miranda): [`self_intersections_of`].
+//!
+//! Rust, not an embedded claims file: the printed numbers are judged against the exact values
+//! of `exactcheck_core::ph` (control points, normals under both orientations, the smallest radius
+//! certified by root isolation, cusps counted two ways) and the offset theorem is expanded for
+//! families of degrees; a claims file states one formula at a time.
 
 mod example;
 mod offset;
