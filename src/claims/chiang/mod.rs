@@ -35,7 +35,8 @@ pub use corollaries::{
     COROLLARY1_WEIGHT_TERM, COROLLARY2_POINT, COROLLARY5,
 };
 pub use example4::{
-    example4_markdown, example4_table, Example4Row, PRINTED_POINTS, PRINTED_WEIGHTS,
+    example4_markdown, example4_table, surface_and_plane, Example4Row, PRINTED_POINTS,
+    PRINTED_WEIGHTS,
 };
 pub use theorem::{check_size, SizeReport, RANDOM_SIZES, SYMBOLIC_MAX};
 
