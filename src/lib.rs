@@ -12,6 +12,7 @@ pub mod claims;
 pub mod cli;
 pub mod error;
 pub mod output;
+pub mod papers;
 pub mod plot;
 pub mod prove_cmd;
 pub mod prove_constants;

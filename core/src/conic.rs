@@ -45,7 +45,7 @@ use crate::bernstein::Bernstein;
 use crate::bezier::{BezierCurve, RationalBezierCurve};
 use crate::roots::{unit_roots, IsolatedRoot};
 use crate::ruled::{Plane, RuledSurface};
-use crate::scalar::{Field, OrderedField, Ring, Sign};
+use crate::scalar::{OrderedField, Ring, Sign};
 use crate::vector::Vec3;
 use std::fmt;
 
@@ -342,20 +342,4 @@ impl<T: OrderedField> ConeSection<T> {
             ],
         }
     }
-}
-
-/// Chiang's Table 1: the four planes through `(1, 1, 1)` with normals `(0,0,1)`, `(1,1,3)`,
-/// `(1,1,sqrt2)`, `(1,1,0)`; `sqrt2` is `sqrt 2` in `T`.
-pub fn table1_planes<T: Field>(sqrt2: &T) -> [Plane<T>; 4] {
-    let i = T::from_i64;
-    let through = |a: T, b: T, c: T| {
-        let d = a.add_ref(&b).add_ref(&c).neg_ref();
-        Plane::new(a, b, c, d)
-    };
-    [
-        through(i(0), i(0), i(1)),
-        through(i(1), i(1), i(3)),
-        through(i(1), i(1), sqrt2.clone()),
-        through(i(1), i(1), i(0)),
-    ]
 }

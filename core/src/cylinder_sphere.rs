@@ -376,92 +376,6 @@ pub enum Touching {
     Circle,
 }
 
-/// Spaeth's numeric examples (section 4 of the paper): the cylinder `r = 5` about the z axis
-/// (`a = b = 0`), the sphere's centre and radius, and the rotations as printed, in radians
-/// (Example 2's `beta = 1`, `gamma = -1` have no rational point of the unit circle, so each caller
-/// says how it takes them: `f64` cos/sin, or a nearby rational point).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct SpaethExample {
-    /// 1, 2 or 3.
-    pub number: u32,
-    /// The sphere centre `(d, e, f)`.
-    pub center: [i64; 3],
-    /// The sphere radius `R`.
-    pub radius: i64,
-    /// `beta` in radians as printed.
-    pub beta_radians: f64,
-    /// `gamma` in radians as printed.
-    pub gamma_radians: f64,
-}
-
-/// The cylinder radius of all of Spaeth's examples.
-pub const SPAETH_CYLINDER_RADIUS: i64 = 5;
-
-/// Spaeth's Examples 1, 2 and 3, as printed.
-pub const SPAETH_EXAMPLES: [SpaethExample; 3] = [
-    SpaethExample {
-        number: 1,
-        center: [1, 0, 0],
-        radius: 7,
-        beta_radians: 0.0,
-        gamma_radians: 0.0,
-    },
-    SpaethExample {
-        number: 2,
-        center: [1, 2, 4],
-        radius: 5,
-        beta_radians: 1.0,
-        gamma_radians: -1.0,
-    },
-    SpaethExample {
-        number: 3,
-        center: [6, 7, 8],
-        radius: 1,
-        beta_radians: 0.0,
-        gamma_radians: 0.0,
-    },
-];
-
-impl SpaethExample {
-    /// Example `n` (1, 2 or 3).
-    pub fn get(n: u32) -> Option<&'static SpaethExample> {
-        SPAETH_EXAMPLES.iter().find(|e| e.number == n)
-    }
-
-    /// The configuration over `T`; `angle` turns the printed radians into a point of the unit
-    /// circle (it is called for non-zero angles only: a zero angle is `(1, 0)` exactly).
-    pub fn config<T: Ring>(&self, mut angle: impl FnMut(f64) -> Angle<T>) -> CylinderSphere<T> {
-        let mut rotation = |theta: f64| {
-            if theta == 0.0 {
-                Angle {
-                    cos: T::one(),
-                    sin: T::zero(),
-                }
-            } else {
-                angle(theta)
-            }
-        };
-        let [d, e, f] = self.center;
-        CylinderSphere {
-            a: T::zero(),
-            b: T::zero(),
-            r: T::from_i64(SPAETH_CYLINDER_RADIUS),
-            beta: rotation(self.beta_radians),
-            gamma: rotation(self.gamma_radians),
-            center: Vec3::new(T::from_i64(d), T::from_i64(e), T::from_i64(f)),
-            radius: T::from_i64(self.radius),
-        }
-    }
-
-    /// The configuration in `f64` with the printed radians.
-    pub fn float_config(&self) -> CylinderSphere<f64> {
-        self.config(|theta| Angle {
-            cos: theta.cos(),
-            sin: theta.sin(),
-        })
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -568,21 +482,27 @@ mod tests {
     }
 
     #[test]
-    fn map_converts_every_field_and_the_examples_are_as_printed() {
-        let e2 = SpaethExample::get(2).unwrap().float_config();
-        assert_eq!(e2.center, Vec3::new(1.0, 2.0, 4.0));
-        assert_eq!((e2.r, e2.radius), (5.0, 5.0));
-        assert_eq!(e2.beta.cos, 1f64.cos());
-        assert_eq!(e2.gamma.sin, (-1f64).sin());
-        let doubled = e2.map(|x| 2.0 * x);
+    fn map_converts_every_field() {
+        let cs = CylinderSphere {
+            a: 0.0,
+            b: 0.0,
+            r: 5.0,
+            beta: Angle {
+                cos: 1f64.cos(),
+                sin: 1f64.sin(),
+            },
+            gamma: Angle {
+                cos: (-1f64).cos(),
+                sin: (-1f64).sin(),
+            },
+            center: Vec3::new(1.0, 2.0, 4.0),
+            radius: 5.0,
+        };
+        let doubled = cs.map(|x| 2.0 * x);
         assert_eq!(doubled.center, Vec3::new(2.0, 4.0, 8.0));
         assert_eq!(doubled.gamma.sin, 2.0 * (-1f64).sin());
+        assert_eq!(doubled.beta.cos, 2.0 * 1f64.cos());
         assert_eq!((doubled.a, doubled.r, doubled.radius), (0.0, 10.0, 10.0));
-        let e1 = SpaethExample::get(1)
-            .unwrap()
-            .config::<f64>(|_| unreachable!("no rotation"));
-        assert_eq!(e1.beta, Angle { cos: 1.0, sin: 0.0 });
-        assert!(SpaethExample::get(4).is_none());
     }
 
     #[test]

@@ -35,4 +35,4 @@ pub use rng::Rng;
 pub use scalar::{
     binomial, pairwise_sum, Field, OrderedField, QAlgebra, Ring, Sign, Sqrt, ZeroDivisor,
 };
-pub use vector::{det4, Hom4, Vec3};
+pub use vector::{det4, proportional, Hom4, Vec3};

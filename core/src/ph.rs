@@ -708,17 +708,5 @@ impl<T: OrderedField> PhCurve<T> {
     }
 }
 
-/// Chiang's worked example: `u = (10, -1)`, `v = (1, 10)` in Bernstein form, start at
-/// the origin.
-pub fn chiang_example<T: QAlgebra>() -> PhCurve<T> {
-    let c = |k: i64| T::from_i64(k);
-    PhCurve::new(
-        Bernstein::new(vec![c(10), c(-1)]),
-        Bernstein::new(vec![c(1), c(10)]),
-        Vec3::new(c(0), c(0), c(0)),
-    )
-    .expect("same degree, not zero")
-}
-
 #[cfg(test)]
 mod tests;

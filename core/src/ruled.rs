@@ -343,27 +343,6 @@ fn from_scaled_poly<T: Field>(p: &[T]) -> Bernstein<T> {
     Bernstein::from_scaled(p).expect("m + n + 1 >= 1 coefficients")
 }
 
-/// Chiang's Example 4 (the claim list, square roots restored from the text): `m = 1`, `n = 2`,
-/// `p0 = (0,0,-1), p1 = (1,1,-1), p2 = (0,2,-1)`, `q0 = (-1, 1, sqrt 2)`, `q1 = (-1, -1, sqrt 6)`,
-/// and the plane `z = 0`. The square roots are arguments, so any scalar that has them (an exact
-/// square-root field, `f64`) instantiates the example; the one home of its data.
-pub fn chiang_example4<T: Ring>(sqrt2: T, sqrt6: T) -> (RuledSurface<T>, Plane<T>) {
-    let i = |x: i64| T::from_i64(x);
-    let surface = RuledSurface::from_control(
-        vec![
-            Vec3::new(i(0), i(0), i(-1)),
-            Vec3::new(i(1), i(1), i(-1)),
-            Vec3::new(i(0), i(2), i(-1)),
-        ],
-        vec![
-            Vec3::new(i(-1), i(1), sqrt2),
-            Vec3::new(i(-1), i(-1), sqrt6),
-        ],
-    )
-    .expect("three control points and two control vectors");
-    (surface, Plane::z0())
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

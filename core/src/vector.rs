@@ -205,9 +205,27 @@ pub fn det4<T: Ring>(a: &Hom4<T>, b: &Hom4<T>, c: &Hom4<T>, d: &Hom4<T>) -> T {
     crate::linalg::det(&[a, b, c, d].map(|r| r.0.to_vec()))
 }
 
+/// Whether two coordinate vectors of the same length are proportional: every 2x2 minor
+/// `u_i v_j - u_j v_i` vanishes (so also when either is zero). Vectors of different lengths are
+/// not.
+pub fn proportional<T: Ring>(u: &[T], v: &[T]) -> bool {
+    u.len() == v.len()
+        && (0..u.len())
+            .all(|i| (i + 1..u.len()).all(|j| u[i].mul_ref(&v[j]) == u[j].mul_ref(&v[i])))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn proportional_vectors_by_their_minors() {
+        let v = |xs: &[i32]| xs.iter().map(|&x| f64::from(x)).collect::<Vec<f64>>();
+        assert!(proportional(&v(&[1, 2, 3]), &v(&[-2, -4, -6])));
+        assert!(proportional(&v(&[0, 0, 0]), &v(&[1, 5, 7])));
+        assert!(!proportional(&v(&[1, 2, 3]), &v(&[1, 2, 4])));
+        assert!(!proportional(&v(&[1, 2]), &v(&[1, 2, 0])));
+    }
 
     #[test]
     fn cross_is_orthogonal() {

@@ -23,8 +23,22 @@
 
 use crate::univariate::{Bound, Interval, RootInterval, UPoly};
 use crate::Rational;
-use exactcheck_core::cylinder_sphere::{Contact, CylinderSphere, Touching};
+use exactcheck_core::cylinder_sphere::{Angle, Contact, CylinderSphere, Touching};
 use exactcheck_core::{OrderedField, Ring, Sign};
+
+/// The rational point of the unit circle nearest (by a convergent of `tan(theta/2)` with
+/// denominator at most `max_den`) to an angle in radians, with its parameter `tau` and its
+/// deviation from `theta` in radians: how exact code takes an angle printed in radians. The
+/// fallible generic form is [`exactcheck_core::rational_angle::rational_angle`].
+///
+/// # Panics
+/// When `theta` is not finite or `max_den < 1` (callers pass finite angles, checked where they
+/// come from user input, and constant bounds).
+pub fn rational_angle(theta: f64, max_den: i64) -> (Angle<Rational>, Rational, f64) {
+    let r = exactcheck_core::rational_angle::rational_angle::<Rational>(theta, max_den)
+        .expect("rational_angle needs a finite angle and max_den >= 1");
+    (r.angle, r.tau_value, r.deviation)
+}
 
 /// What the exact analysis found.
 #[derive(Clone, Debug)]
@@ -165,16 +179,23 @@ mod tests {
     }
 
     #[test]
+    fn rational_angle_is_on_the_unit_circle_and_near() {
+        for theta in [1.0, -1.0, 0.3, 2.5f64.to_radians()] {
+            let (angle, tau, deviation) = rational_angle(theta, 1000);
+            assert_eq!(angle.cos.square() + &angle.sin.square(), q(1));
+            assert!(deviation.abs() < 1e-4, "{theta}: {deviation}");
+            let on_circle = exactcheck_core::cylinder_sphere::unit_circle_point(&tau);
+            assert_eq!(on_circle.expect("1 + tau^2 > 0"), angle);
+        }
+    }
+
+    #[test]
     fn spaeth_examples_1_and_3() {
-        let example = |n| {
-            exactcheck_core::cylinder_sphere::SpaethExample::get(n)
-                .expect("examples 1 and 3")
-                .config::<Rational>(|_| unreachable!("examples 1 and 3 are not rotated"))
-        };
-        let e1 = analyze(&example(1));
+        // Spaeth's Examples 1 and 3: the cylinder r = 5 about the z axis, not rotated.
+        let e1 = analyze(&axis_aligned((1, 0, 0), 7));
         assert_eq!(e1.contact, Contact::Crossing);
         assert_eq!(e1.components, 2);
-        let e3 = analyze(&example(3));
+        let e3 = analyze(&axis_aligned((6, 7, 8), 1));
         assert_eq!(e3.contact, Contact::Disjoint);
         assert_eq!(e3.components, 0);
     }

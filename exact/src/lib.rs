@@ -23,6 +23,7 @@ pub mod poly;
 pub mod program;
 pub mod prove;
 pub mod radical;
+pub mod random_plane;
 pub mod ratfun;
 pub mod rational;
 pub mod real_constant;

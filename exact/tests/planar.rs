@@ -3,7 +3,8 @@
 //! curvature is exactly 101/8 (at t = 1/2), so 63/5 (12.6 as printed) is still below it and
 //! 101/8 itself has a single degenerate cusp and no crossing.
 
-use exactcheck_core::ph::chiang_example;
+use exactcheck_core::ph::PhCurve;
+use exactcheck_core::{Bernstein, Vec3};
 use exactcheck_exact::planar::{self_intersections_xy, Budget, Certificate, SelfIntersections};
 use exactcheck_exact::univariate::RootInterval;
 use exactcheck_exact::Rational;
@@ -13,11 +14,22 @@ fn q(n: i64, d: i64) -> Rational {
     Rational::new(n, d).expect("non-zero denominator")
 }
 
+/// Chiang's worked example: `u = (10, -1)`, `v = (1, 10)` in Bernstein form, from the origin.
+fn chiang_example() -> PhCurve<Rational> {
+    let i = |k: i64| q(k, 1);
+    PhCurve::new(
+        Bernstein::new(vec![i(10), i(-1)]),
+        Bernstein::new(vec![i(1), i(10)]),
+        Vec3::new(i(0), i(0), i(0)),
+    )
+    .expect("same degree, not zero")
+}
+
 /// The self-intersections of the r-offset, with the time taken, after checking that the
 /// stationary points found here are as many as the cusps `exactcheck_core::ph` counts (zeros of
 /// `sigma^2 - 2 r w`): two independent computations.
 fn offset_crossings(r: Rational) -> (SelfIntersections, Duration) {
-    let ph = chiang_example::<Rational>();
+    let ph = chiang_example();
     let curve = ph.offset(&r);
     let start = Instant::now();
     let found = self_intersections_xy(&curve, Budget::default()).expect("decided");
@@ -56,7 +68,7 @@ fn chiang_offset_r15_crosses_itself_once_symmetrically() {
     assert!((c.s - 0.208_466_555_295_625_8).abs() < 1e-12, "{}", c.s);
     // The reported point is the offset at both parameters (the exact offset evaluated at the
     // midpoints of the intervals, rounded).
-    let curve = chiang_example::<Rational>().offset(&q(15, 1));
+    let curve = chiang_example().offset(&q(15, 1));
     for t in [&c.s_interval, &c.t_interval] {
         let p = curve.eval(&t.midpoint()).expect("w != 0");
         assert!((p.x.to_f64() - c.point[0]).abs() < 1e-9);

@@ -17,7 +17,13 @@
 //! * **undecided** — neither (e.g. a non-zero normal form modulo relations without a real point
 //!   found): reported as such, never counted as expected.
 //!
-//! One module per source document.
+//! One directory per unit of the paper registry ([`crate::papers`]): the claims of a paper, its
+//! printed data and fixtures. The claims stay Rust, not embedded claims files: each compares
+//! the printed text with an independent derivation of the workspace (`exactcheck_core::quadric`,
+//! `cylinder_sphere`, `ruled`, `conic`, `ph`), or decides on exact instances, seeded random
+//! configurations and root isolation, and names each residual in its evidence — none of which a
+//! claims file expresses (its `identity` kind compares two formulas of its own; see each unit's
+//! module documentation).
 
 /// A catalogue entry: `claim!(id, ExpectedVerdict, "statement as printed", check_fn)`.
 macro_rules! claim {
@@ -37,7 +43,6 @@ pub mod chiang_line;
 pub mod chiang_ph;
 pub mod engine;
 pub mod juttler;
-pub mod juttler_geometry;
 pub mod latex;
 pub mod planes;
 pub mod printed;
@@ -207,18 +212,13 @@ pub struct Claim {
     pub check: fn() -> Result<Outcome, String>,
 }
 
-/// The whole catalogue (the `juttler.*` and `spaeth.*` claims; see the module documentation), in
-/// the order of the papers' claim list (docs/papers/README.md).
+/// The whole catalogue in the order of the papers' claim list (docs/papers/README.md): the
+/// claims of every unit of [`crate::papers::PAPERS`].
 pub fn catalogue() -> Vec<Claim> {
-    let mut all = juttler::claims();
-    all.extend(spaeth::claims());
-    all.extend(spaeth::example_claims());
-    all.extend(planes::claims());
-    all.extend(chiang::claims());
-    all.extend(chiang_conic::claims());
-    all.extend(chiang_line::claims());
-    all.extend(chiang_ph::claims());
-    all
+    crate::papers::PAPERS
+        .iter()
+        .flat_map(|p| (p.claims)())
+        .collect()
 }
 
 /// A checked claim (of the built-in catalogue or of a claims file).

@@ -9,7 +9,7 @@
 //!   approximation far finer than a pixel); the control points `r_k` are the exact quotients
 //!   `(w_k r_k) / w_k`, and the weight labels print the exact radicals.
 //! * The **surface patch** is drawn in f64 from the same generic data
-//!   ([`chiang_example4`] with `f64` square roots): rulings `t = k/10` and the curves
+//!   ([`surface_and_plane`] with `f64` square roots): rulings `t = k/10` and the curves
 //!   `s = const` over `s` in `[0, 1.35 max s(t)]`, where `s(t) = -(N.B + d)/(N.V) =
 //!   1/((1-t) sqrt 2 + t sqrt 6)` is the ruling parameter of the section, so the patch covers
 //!   the section with room on both sides of the plane.
@@ -24,8 +24,9 @@
 
 use super::spaeth::cube;
 use super::style::*;
+use crate::claims::chiang::surface_and_plane;
 use crate::Error;
-use exactcheck_core::ruled::{chiang_example4, RuledSurface};
+use exactcheck_core::ruled::RuledSurface;
 use exactcheck_core::Vec3;
 use exactcheck_exact::{Radical, Rational};
 use plotters::coord::CoordTranslate;
@@ -55,7 +56,7 @@ fn to_f64(v: &Vec3<Radical>) -> Vec3<f64> {
 
 /// Example 4's section computed over `Q(sqrt 2, sqrt 6)`.
 pub fn exact_section() -> ExactSection {
-    let (surface, plane) = chiang_example4(Radical::sqrt_of(2), Radical::sqrt_of(6));
+    let (surface, plane) = surface_and_plane(Radical::sqrt_of(2), Radical::sqrt_of(6));
     let curve = surface.plane_section(&plane);
     let samples = (0..=CURVE_STEPS)
         .map(|k| {
@@ -131,7 +132,7 @@ pub fn figure(example: Option<u32>) -> Result<String, Error> {
 
 fn example4() -> String {
     let exact = exact_section();
-    let (surface, _) = chiang_example4(2f64.sqrt(), 6f64.sqrt());
+    let (surface, _) = surface_and_plane(2f64.sqrt(), 6f64.sqrt());
     let title = "Chiang Example 4: ruled surface ∩ plane z = 0";
     let lines = [
         "S(s,t) = B(t) + s V(t); B: p0 = (0,0,−1), p1 = (1,1,−1), p2 = (0,2,−1); V: q0 = (−1,1,√2), q1 = (−1,−1,√6)".to_string(),
@@ -315,7 +316,7 @@ mod tests {
             assert!(p.as_ref().unwrap().z.is_zero());
         }
         // The sampled curve: z = 0 and on the surface at s(t).
-        let (surface, _) = chiang_example4(2f64.sqrt(), 6f64.sqrt());
+        let (surface, _) = surface_and_plane(2f64.sqrt(), 6f64.sqrt());
         for (k, p) in e.curve.iter().enumerate() {
             let t = k as f64 / CURVE_STEPS as f64;
             assert!(p.z.abs() < 1e-12);

@@ -31,9 +31,10 @@
 //! curve through a pole has points far outside.
 
 use super::style::*;
+use crate::claims::chiang_conic::table1_planes;
 use crate::solve::conic::{compute, exact_section, Computed};
 use crate::Error;
-use exactcheck_core::conic::{table1_planes, SectionType};
+use exactcheck_core::conic::SectionType;
 use exactcheck_core::Vec3;
 use exactcheck_exact::{Radical, Rational};
 use plotters::coord::types::RangedCoordf64;
@@ -604,7 +605,7 @@ fn weights_line(c: &Computed<Radical>) -> String {
 pub fn table1() -> (String, usize) {
     let width = Radical::from(Rational::new(1, 1 << 40).expect("2^40 != 0"));
     let names = ["(0, 0, 1)", "(1, 1, 3)", "(1, 1, √2)", "(1, 1, 0)"];
-    let panels: Vec<PanelData> = table1_planes(&Radical::sqrt_of(2))
+    let panels: Vec<PanelData> = table1_planes()
         .into_iter()
         .zip(names)
         .map(|(plane, name)| {

@@ -17,9 +17,10 @@
 //! Layout: `scene` (Spaeth's configurations, their exact analysis and the f64 sampling),
 //! `style`, and the four figure modules.
 
+use crate::claims::spaeth::SpaethExample;
 use crate::Error;
 use clap::{Args, ValueEnum};
-use exactcheck_core::cylinder_sphere::{Angle, CylinderSphere, SpaethExample};
+use exactcheck_core::cylinder_sphere::{Angle, CylinderSphere};
 use exactcheck_core::Sign;
 use exactcheck_exact::cylinder_sphere::analyze;
 use exactcheck_exact::univariate::{Bound, RootInterval, UPoly};
@@ -157,8 +158,7 @@ pub fn run(args: &PlotArgs) -> Result<ExitCode, Error> {
 
 /// The problem file `plot` reads, when its source is one (not a built-in figure's name).
 fn input_file(args: &PlotArgs) -> Option<&Path> {
-    let built_in = ["spaeth", "chiang", "ph", "conics"].contains(&args.source.as_str());
-    (!built_in).then(|| Path::new(&args.source))
+    (!crate::papers::is_plot_name(&args.source)).then(|| Path::new(&args.source))
 }
 
 /// A figure of the built-in catalogue, as the report shows it.
@@ -174,12 +174,12 @@ pub struct Figure {
     pub svg: String,
 }
 
-/// Every figure of the built-in catalogue, in a fixed order: Spaeth's examples 1-3 (t-u diagram
-/// and 3D view each), Chiang's Example 4, Table 1's four cone sections and the PH curve's offsets.
+/// Spaeth's examples 1-3, the t-u diagram and the 3D view of each (the unit `spaeth` of
+/// [`crate::papers::PAPERS`]).
 ///
 /// # Errors
 /// When a figure cannot be drawn (an internal error of the catalogue's data).
-pub fn catalogue_figures() -> Result<Vec<Figure>, Error> {
+pub fn spaeth_figures() -> Result<Vec<Figure>, Error> {
     let mut out = Vec::new();
     for n in 1..=3 {
         let scene = spaeth_scene(n)?;
@@ -199,26 +199,47 @@ pub fn catalogue_figures() -> Result<Vec<Figure>, Error> {
             svg: view_3d(&scene),
         });
     }
-    out.push(Figure {
+    Ok(out)
+}
+
+/// Chiang's Example 4 (the unit `chiang`).
+///
+/// # Errors
+/// As [`spaeth_figures`].
+pub fn chiang_figures() -> Result<Vec<Figure>, Error> {
+    Ok(vec![Figure {
         id: "chiang.example4".into(),
         source: "chiang",
         title: "Chiang Example 4: ruled surface, plane z = 0, exact section curve, control polygon"
             .into(),
         svg: chiang::figure(Some(4))?,
-    });
-    out.push(Figure {
+    }])
+}
+
+/// Table 1's four cone sections (the unit `chiang_conic`).
+///
+/// # Errors
+/// Never; the signature is the registry's.
+pub fn conic_figures() -> Result<Vec<Figure>, Error> {
+    Ok(vec![Figure {
         id: "chiang.conic_table".into(),
         source: "chiang",
         title: "Chiang Table 1: four cone sections, control polygons, poles".into(),
         svg: conics::table1().0,
-    });
-    out.push(Figure {
+    }])
+}
+
+/// The PH curve's offsets (the unit `chiang_ph`).
+///
+/// # Errors
+/// As [`spaeth_figures`].
+pub fn ph_figures() -> Result<Vec<Figure>, Error> {
+    Ok(vec![Figure {
         id: "chiang.ph_offsets".into(),
         source: "chiang",
         title: "Chiang's PH curve with its offsets at r = 3, 12.6, 15 and their cusps".into(),
         svg: ph::figure(None)?,
-    });
-    Ok(out)
+    }])
 }
 
 /// Writes `svg` to `-o` (`-`: standard output; a file never over the problem file read) and

@@ -18,8 +18,9 @@
 //! scale (a circle stays a circle: the ranges are widened to the plotting area's aspect).
 
 use super::style::*;
+use crate::claims::chiang_ph::example_curve;
 use crate::Error;
-use exactcheck_core::ph::{chiang_example, PhCurve};
+use exactcheck_core::ph::PhCurve;
 use exactcheck_core::roots::{refine, IsolatedRoot};
 use exactcheck_core::Vec3;
 use exactcheck_exact::Rational;
@@ -50,7 +51,7 @@ pub fn figure(example: Option<u32>) -> Result<String, Error> {
             "u = (10, −1), v = (1, 10) in Bernstein form, p0 = (0, 0): a PH cubic; offsets: rational Bezier quintics (z = r sections of B(t) + s V(t))".to_string(),
             "all curves evaluated exactly over Q at t = k/192, then drawn; cusps = exact zeros of σ² − 2 r w (r = 12.6 = 63/5 < ρ_min = 101/8: no cusp)".to_string(),
         ],
-        &chiang_example::<Rational>(),
+        &example_curve(),
         &radii,
     ))
 }
@@ -287,7 +288,7 @@ mod tests {
             .iter()
             .map(|s| s.parse().unwrap())
             .collect();
-        let d = drawing(&chiang_example::<Rational>(), &radii);
+        let d = drawing(&example_curve(), &radii);
         let counts: Vec<usize> = d.offsets.iter().map(|o| o.2.len()).collect();
         assert_eq!(counts, vec![0, 0, 2]);
         assert_eq!(d.base.len(), STEPS as usize + 1);

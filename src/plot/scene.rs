@@ -41,14 +41,14 @@ pub(super) fn to_f64(q: &Rational) -> f64 {
 }
 
 /// Spaeth's examples (r = 5, axis through the origin), rebuilt from the printed values
-/// (`exactcheck_core::cylinder_sphere::SPAETH_EXAMPLES`).
+/// (`crate::claims::spaeth::SPAETH_EXAMPLES`).
 pub(super) fn spaeth_scene(n: u32) -> Result<Scene, Error> {
     let ex = SpaethExample::get(n).ok_or_else(|| {
         Error::Usage(format!(
             "unknown example {n}: Spaeth's examples are 1, 2 and 3"
         ))
     })?;
-    let exact = ex.config(|theta| crate::claims::spaeth::rational_angle(theta, 1000).0);
+    let exact = ex.config(|theta| exactcheck_exact::cylinder_sphere::rational_angle(theta, 1000).0);
     let float = ex.float_config();
     let figure = match n {
         1 => Some("Fig. 2"),
@@ -56,8 +56,8 @@ pub(super) fn spaeth_scene(n: u32) -> Result<Scene, Error> {
         _ => None,
     };
     let note = (n == 2).then(|| {
-        let (_, tb, db) = crate::claims::spaeth::rational_angle(ex.beta_radians, 1000);
-        let (_, tg, dg) = crate::claims::spaeth::rational_angle(ex.gamma_radians, 1000);
+        let (_, tb, db) = exactcheck_exact::cylinder_sphere::rational_angle(ex.beta_radians, 1000);
+        let (_, tg, dg) = exactcheck_exact::cylinder_sphere::rational_angle(ex.gamma_radians, 1000);
         format!("rational rotations τβ = {tb}, τγ = {tg} (off by {db:.1e}, {dg:.1e} rad)")
     });
     Ok(Scene {

@@ -171,7 +171,7 @@ fn runs_are_closed_at_the_boundary() {
 /// paper's example, and an SVG document with a size, a viewBox and the caption as its title.
 #[test]
 fn catalogue_figures_are_documents() {
-    let figs = catalogue_figures().expect("the catalogue draws");
+    let figs = crate::papers::figures().expect("the catalogue draws");
     let ids: Vec<&str> = figs.iter().map(|f| f.id.as_str()).collect();
     assert_eq!(
         ids,

@@ -159,7 +159,7 @@ mod tests {
 
     #[test]
     fn every_catalogue_figure_isolates() {
-        for f in crate::plot::catalogue_figures().unwrap() {
+        for f in crate::papers::figures().unwrap() {
             let s = isolate(&f.svg, "p", "s").unwrap();
             assert!(s.starts_with("<svg") && s.ends_with("</svg>"), "{}", f.id);
         }

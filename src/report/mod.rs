@@ -11,7 +11,7 @@
 //! * the errata (`#errata`): every claim whose check found the printed statement false, with
 //!   the printed and the correct form, the exact counter-example and the residual there from
 //!   the check's [`crate::claims::Erratum`] (or its evidence when the check gives none);
-//! * for the built-in catalogue, every figure of [`crate::plot::catalogue_figures`] inline as
+//! * for the built-in catalogue, every figure of [`crate::papers::figures`] inline as
 //!   SVG, ids and style rules isolated per figure ([`inline_svg`]), and the float-vs-exact
 //!   regression summaries of the four built-in kernels on `--samples` seeded samples
 //!   ([`regress`]);
@@ -111,7 +111,7 @@ pub fn run(args: &ReportArgs) -> Result<ExitCode, Error> {
 
     let (figures, regressions, subject, note) = if catalogue {
         steps.start("drawing the figures");
-        let figures = crate::plot::catalogue_figures()?;
+        let figures = crate::papers::figures()?;
         steps.done();
         let mut summaries = Vec::new();
         for kernel in regress::KERNELS {

@@ -162,7 +162,8 @@ fn exact_angle(
 ) -> Result<Angle<Rational>, Error> {
     match angle_form(a, path)? {
         AngleForm::Radians(theta) => {
-            let (angle, tau, dev) = crate::claims::spaeth::rational_angle(theta, 1_000_000);
+            let (angle, tau, dev) =
+                exactcheck_exact::cylinder_sphere::rational_angle(theta, 1_000_000);
             notes.push(AngleNote {
                 field: path.into(),
                 radians: theta,
@@ -515,7 +516,7 @@ fn exact(input: Input<RationalNumber>) -> Result<ExactAnswer, Error> {
     for k in 0..n_samples {
         let t = std::f64::consts::TAU * k as f64 / n_samples as f64;
         if (t - std::f64::consts::PI).abs() > 1e-9 {
-            let (_, tau, _) = crate::claims::spaeth::rational_angle(t, 1000);
+            let (_, tau, _) = exactcheck_exact::cylinder_sphere::rational_angle(t, 1000);
             taus.push(tau);
         }
     }

@@ -81,7 +81,7 @@ fn the_report_renders_in_chromium() {
         .filter(|c| c.expected == Verdict::Fails)
         .map(|c| c.id)
         .collect();
-    let figures = exactcheck::plot::catalogue_figures().unwrap().len();
+    let figures = exactcheck::papers::figures().unwrap().len();
     let screenshot = work.join("report.png");
     let top = work.join("report-top.png");
     let check = Command::new("node")

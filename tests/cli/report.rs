@@ -128,7 +128,7 @@ fn the_catalogue_report_has_every_part() {
         .filter(|c| c.expected == Verdict::Fails)
         .map(|c| c.id)
         .collect();
-    let figures = exactcheck::plot::catalogue_figures().unwrap();
+    let figures = exactcheck::papers::figures().unwrap();
     let index = out_dir.join("index.html");
     assert_eq!(
         stdout.trim(),

@@ -4,13 +4,13 @@
 //! committed `docs/ph_offsets.svg` is current.
 
 use crate::plot_support;
+use exactcheck::claims::chiang_ph::example_curve;
 use exactcheck::plot::style::{hex, CUSP, GREEN, INK, OFFSETS};
-use exactcheck_core::ph::chiang_example;
 use exactcheck_exact::Rational;
 use plot_support::{check_svg, elements, exactcheck, find, polylines, TempDir};
 
 fn exact_cusp_count(radii: &[&str]) -> usize {
-    let c = chiang_example::<Rational>();
+    let c = example_curve();
     radii
         .iter()
         .map(|r| {

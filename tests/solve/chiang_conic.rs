@@ -5,13 +5,13 @@
 
 use exactcheck::claims::chiang_conic::{
     check_section, check_table, check_types, claims, conic_table_markdown, expected_rulings,
-    random_plane, table_rows, Judgement, PlaneKind, PrintedColumn, SectionReport, TABLE1,
-    TYPE_SEED,
+    table_rows, Judgement, PrintedColumn, SectionReport, TABLE1, TYPE_SEED,
 };
 use exactcheck::claims::Verdict;
 use exactcheck_core::conic::{ConicType, DegenerateConic, SectionType};
 use exactcheck_core::ruled::Plane;
 use exactcheck_core::{Field, Ring, Rng};
+use exactcheck_exact::random_plane::{random_plane, PlaneKind};
 use exactcheck_exact::Radical;
 use proptest::prelude::*;
 

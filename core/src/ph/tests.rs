@@ -9,8 +9,14 @@ fn qi(n: i128) -> Q {
     Q::new(n, 1)
 }
 
+/// Chiang's worked example: `u = (10, -1)`, `v = (1, 10)` in Bernstein form, from the origin.
 fn example() -> PhCurve<Q> {
-    chiang_example::<Q>()
+    PhCurve::new(
+        Bernstein::new(vec![qi(10), qi(-1)]),
+        Bernstein::new(vec![qi(1), qi(10)]),
+        Vec3::new(qi(0), qi(0), qi(0)),
+    )
+    .expect("same degree, not zero")
 }
 
 fn xy(points: &[Vec3<Q>]) -> Vec<(Q, Q)> {

@@ -11,7 +11,7 @@ use std::fmt;
 // ====================================================================== complex radicals
 
 /// A Gaussian multi-quadratic number `re + im i` (`i = sqrt(-1)`), for the conjugate-imaginary
-/// focal lines of Juttler's Satz 5 (docs/papers/juttler.md). A field, not ordered. Canonical whenever its
+/// focal lines of Juettler's Satz 5 (docs/papers/juttler.md). A field, not ordered. Canonical whenever its
 /// parts are, so `==` is equality.
 #[derive(Clone, PartialEq, Eq, Hash, Default)]
 pub struct ComplexRadical {

@@ -1,7 +1,7 @@
 //! `chiang.example4`: every printed decimal of Example 4 against the exact curve in
 //! `Q(sqrt 2, sqrt 6)`.
 //!
-//! The curve is `RuledSurface::plane_section` of `chiang_example4(sqrt 2, sqrt 6)` over
+//! The curve is `RuledSurface::plane_section` of `surface_and_plane(sqrt 2, sqrt 6)` over
 //! [`Radical`] (exact). A printed decimal with `d` digits after the point is *correctly rounded*
 //! when the exact value lies in `[printed - 10^-d / 2, printed + 10^-d / 2]`; the two comparisons
 //! are exact (the ordered field [`Radical`]). The exact decimal shown is itself certified: the
@@ -23,11 +23,32 @@ use crate::claims::printed::{
     decimal, deviation_text, places, radical, rational, rounds_to, truncates_to,
 };
 use crate::claims::{Equation, Erratum};
-use exactcheck_core::ruled::chiang_example4;
+use exactcheck_core::ruled::{Plane, RuledSurface};
 use exactcheck_core::{Field, Ring, Vec3};
 use exactcheck_exact::expr::{AddOp, Expr, ExprKind};
 use exactcheck_exact::poly::CoeffExpr;
 use exactcheck_exact::{Radical, Rational};
+
+/// Chiang's Example 4 (the claim list, square roots restored from the text): `m = 1`, `n = 2`,
+/// `p0 = (0,0,-1), p1 = (1,1,-1), p2 = (0,2,-1)`, `q0 = (-1, 1, sqrt 2)`, `q1 = (-1, -1, sqrt 6)`,
+/// and the plane `z = 0`. The square roots are arguments, so any scalar that has them (an exact
+/// square-root field, `f64`) instantiates the example; the one home of its data (the claim, `plot chiang`).
+pub fn surface_and_plane<T: Ring>(sqrt2: T, sqrt6: T) -> (RuledSurface<T>, Plane<T>) {
+    let i = |x: i64| T::from_i64(x);
+    let surface = RuledSurface::from_control(
+        vec![
+            Vec3::new(i(0), i(0), i(-1)),
+            Vec3::new(i(1), i(1), i(-1)),
+            Vec3::new(i(0), i(2), i(-1)),
+        ],
+        vec![
+            Vec3::new(i(-1), i(1), sqrt2),
+            Vec3::new(i(-1), i(-1), sqrt6),
+        ],
+    )
+    .expect("three control points and two control vectors");
+    (surface, Plane::z0())
+}
 
 /// The printed weights `w0..w3`.
 pub const PRINTED_WEIGHTS: [&str; 4] = ["1.41", "1.76", "2.10", "2.45"];
@@ -98,7 +119,7 @@ struct Hypothesis {
 }
 
 fn with_rounded_roots(s2: &str, s6: &str) -> Result<Hypothesis, String> {
-    let (surface, plane) = chiang_example4(rational(s2)?, rational(s6)?);
+    let (surface, plane) = surface_and_plane(rational(s2)?, rational(s6)?);
     let curve = surface.plane_section(&plane);
     Ok(Hypothesis {
         name: format!("the formulas with sqrt 2 = {s2}, sqrt 6 = {s6}"),
@@ -153,10 +174,10 @@ fn radical_form_rounded(x: &Radical) -> Option<Radical> {
 /// # Errors
 /// A printed decimal that does not parse (data error), a zero weight.
 pub fn example4_table() -> Result<Vec<Example4Row>, String> {
-    let (surface, plane) = chiang_example4(Radical::sqrt_of(2), Radical::sqrt_of(6));
+    let (surface, plane) = surface_and_plane(Radical::sqrt_of(2), Radical::sqrt_of(6));
     let curve = surface.plane_section(&plane);
     let exact = values(&curve.weights(), &curve.points());
-    let (rs, rp) = chiang_example4(rational("1.41")?, rational("2.45")?);
+    let (rs, rp) = surface_and_plane(rational("1.41")?, rational("2.45")?);
     let rounded_control = rs.plane_section(&rp).into_control();
     let hypotheses = vec![
         Hypothesis {
@@ -307,7 +328,7 @@ pub fn check() -> Result<Outcome, String> {
 /// value, the example's data (control points and vectors, exact), and `printed - exact` for each.
 fn example4_erratum(wrong: &[&Example4Row]) -> Erratum {
     let var = |r: &Example4Row| r.name.replace('.', "_");
-    let (surface, _) = chiang_example4(Radical::sqrt_of(2), Radical::sqrt_of(6));
+    let (surface, _) = surface_and_plane(Radical::sqrt_of(2), Radical::sqrt_of(6));
     let tuple = |v: &Vec3<Radical>| Expr::tuple(vec![v.x.to_expr(), v.y.to_expr(), v.z.to_expr()]);
     let mut counter_example: Vec<Equation> = surface
         .base()

@@ -21,6 +21,10 @@
 //!
 //! Hand-written: the fraction evaluator (the engine proves polynomial identities; the corollaries
 //! print quotients, and cross-multiplying by hand would mean rewriting the printed text).
+//!
+//! Rust, not an embedded claims file: the theorem and the corollaries are families over the
+//! degrees `(m, n)`, expanded with the Bernstein products of `exactcheck_core::bernstein` and checked
+//! against de Casteljau and exact instances; a claims file states one formula at a time.
 
 mod corollaries;
 mod example4;
@@ -31,7 +35,8 @@ pub use corollaries::{
     COROLLARY1_WEIGHT_TERM, COROLLARY2_POINT, COROLLARY5,
 };
 pub use example4::{
-    example4_markdown, example4_table, Example4Row, PRINTED_POINTS, PRINTED_WEIGHTS,
+    example4_markdown, example4_table, surface_and_plane, Example4Row, PRINTED_POINTS,
+    PRINTED_WEIGHTS,
 };
 pub use theorem::{check_size, SizeReport, RANDOM_SIZES, SYMBOLIC_MAX};
 

@@ -25,6 +25,11 @@
 //! Self-intersections of the offsets are decided exactly by `exactcheck_exact::planar` (the
 //! resultant of the divided differences, each candidate pair excluded by tensor-Bernstein signs
 //! or certified by Poincare-Miranda): [`self_intersections_of`].
+//!
+//! Rust, not an embedded claims file: the printed numbers are judged against the exact values
+//! of `exactcheck_core::ph` (control points, normals under both orientations, the smallest radius
+//! certified by root isolation, cusps counted two ways) and the offset theorem is expanded for
+//! families of degrees; a claims file states one formula at a time.
 
 mod example;
 mod offset;
@@ -38,6 +43,7 @@ pub use offset::{offset_proof, BaseForm, DEGREE_RANDOM_MAX_K, DEGREE_SYMBOLIC_MA
 
 use super::{Claim, Outcome, Verdict};
 use exactcheck_core::ph::PhCurve;
+use exactcheck_core::{Bernstein, Vec3};
 use exactcheck_exact::Rational;
 
 /// The `chiang.offset` and `chiang.ph_*` claims, statements as printed.
@@ -76,9 +82,16 @@ fn offsets_claim() -> Result<Outcome, String> {
     example::offsets_check()
 }
 
-/// The worked example over the rationals.
-fn example_curve() -> PhCurve<Rational> {
-    exactcheck_core::ph::chiang_example::<Rational>()
+/// The worked example over the rationals: `u = (10, -1)`, `v = (1, 10)` in Bernstein form,
+/// starting at the origin.
+pub fn example_curve() -> PhCurve<Rational> {
+    let c = |k: i64| q(k, 1);
+    PhCurve::new(
+        Bernstein::new(vec![c(10), c(-1)]),
+        Bernstein::new(vec![c(1), c(10)]),
+        Vec3::new(c(0), c(0), c(0)),
+    )
+    .expect("same degree, not zero")
 }
 
 /// `n / d` (`d != 0`).

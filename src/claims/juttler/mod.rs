@@ -1,14 +1,25 @@
 //! Claims of Juettler's paper on rational curves and surfaces on quadrics.
 //!
+//! The paper is in German and numbers its theorems "Satz 1" to "Satz 11" (Satz: theorem) and
+//! its lemmas "Lemma 4" and "Lemma 10" in one sequence; the claim ids keep that numbering
+//! (`juttler.satz3` is the paper's Theorem 3), and so do the functions and modules named after
+//! them (`satz3`, [`geometry::satz7`]).
+//!
 //! Printed formulas are kept as text exactly as the paper prints them and parsed; the maps of
 //! `exactcheck_core::quadric` are the independent derivation they are compared against, and the
 //! properties are proved by expanding residuals over polynomial rings.
+//!
+//! Rust, not an embedded claims file: every claim compares the printed maps with the
+//! independent ones of `exactcheck_core::quadric`, or decides on exact instances drawn by the seeded
+//! generator (converses, interpolation by a nullspace, Miquel's configuration); a claims file
+//! compares formulas of its own.
 
 use super::engine::{prove_all, Rng, Symbols};
-use super::juttler_geometry::{circle_preimage, line_image, line_preimage, plane_lines, satz7};
 use super::{Claim, Outcome, Verdict};
+use geometry::{circle_preimage, line_image, line_preimage, plane_lines, satz7};
 
 mod converse;
+pub mod geometry;
 mod interpolation;
 
 use converse::{converse_h, converse_k};
@@ -89,7 +100,7 @@ where
 }
 
 /// Residuals of projective equality: the six 2x2 minors (and neither side may be zero).
-fn proportional<C: Ring>(
+fn proportional_residuals<C: Ring>(
     label: &str,
     a: &Hom4<Poly<C>>,
     b: &Hom4<Poly<C>>,
@@ -193,13 +204,13 @@ fn sigma_inverse_claim() -> Result<Outcome, String> {
         P::zero(),
     );
     // sigma^-1(sigma(p)) ~ p for p in P, for all p.
-    res.extend(proportional(
+    res.extend(proportional_residuals(
         "sigma^-1(sigma(p)) ~ p",
         &sigma_inverse(&sigma(&p)),
         &p,
     )?);
     // sigma(sigma^-1(k)) ~ k for k on K: modulo k0^2 - k1^2 - k2^2 - k3^2.
-    res.extend(proportional(
+    res.extend(proportional_residuals(
         "sigma(sigma^-1(k)) ~ k on K",
         &sigma(&sigma_inverse(&k)),
         &k,
@@ -221,7 +232,7 @@ fn satz3() -> Result<Outcome, String> {
         &printed,
         &theta(&p),
     );
-    res.extend(proportional(
+    res.extend(proportional_residuals(
         "delta(p) ~ sigma(theta(p))",
         &lebesgue(&p),
         &sigma(&printed),
@@ -266,7 +277,7 @@ fn lemma4() -> Result<Outcome, String> {
         sym.vars.poly::<Rational>("mu"),
     );
     // Every point of (12) maps to p (projectively) ...
-    let mut res = proportional(
+    let mut res = proportional_residuals(
         "theta(lambda A + mu B) ~ p",
         &theta(&theta_preimage_point(&p, &l, &m)),
         &p,
@@ -384,7 +395,7 @@ fn satz9() -> Result<Outcome, String> {
         &printed,
         &alpha(&q),
     );
-    res.extend(proportional(
+    res.extend(proportional_residuals(
         "psi(q) ~ tau(alpha(q))",
         &psi(&q),
         &tau(&printed),
@@ -405,7 +416,7 @@ fn lemma10() -> Result<Outcome, String> {
         sym.vars.poly::<Rational>("mu"),
     );
     // Every point of (18) maps to q (projectively) ...
-    let mut res = proportional(
+    let mut res = proportional_residuals(
         "alpha(lambda A + mu B) ~ q",
         &alpha(&alpha_preimage_point(&q, &l, &m)),
         &q,

@@ -461,7 +461,7 @@ mod tests {
         assert_eq!(m["side"], "left");
         // sigma(t) = 101 (1 - t)^2 + ... ; the minimum is checked with is_min_radius.
         let value: Rational = q(m["exact"].as_str().expect("exact"));
-        let c = exactcheck_core::ph::chiang_example::<Rational>();
+        let c = crate::claims::chiang_ph::example_curve();
         assert!(c.is_min_radius(&value, Side::Left).unwrap());
         assert!(a["cusps"].as_array().unwrap().is_empty());
     }

@@ -23,6 +23,10 @@
 //!
 //! The verdict is `proved` when parts 1 and 2 are proved (the statement is about unit normals);
 //! the evidence states the relations and what part 3 shows.
+//!
+//! Rust, not an embedded claims file: the published abbreviations are replaced by their
+//! definitions inside polynomials, and the check adds an exact instance and a comparison with
+//! `exactcheck_core::planes`, none of which a claims file expresses.
 
 use super::engine::{prove_all, Symbols};
 use super::{Claim, Outcome, Verdict};

@@ -1,5 +1,5 @@
-//! `juttler.satz7`: Miquel's configuration of a biquadratic patch on K (the method is in the
-//! doc of [`satz7`]).
+//! `juttler.satz7`: the paper's Satz 7 (Theorem 7, Dietz), Miquel's configuration of a
+//! biquadratic patch on K (the method is in the doc of [`satz7`]).
 
 use super::*;
 

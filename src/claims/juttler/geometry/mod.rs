@@ -1,5 +1,5 @@
-//! The geometric properties of the net projection theta and of delta (the list after
-//! Satz 5, and Satz 7): preimages of circles and lines of P, images of lines, the
+//! The geometric properties of the net projection theta and of delta in Juettler's paper (the
+//! list after Satz 5 — Theorem 5 in the paper's German numbering — and Satz 7): preimages of circles and lines of P, images of lines, the
 //! projecting line of a plane, and Miquel's configuration of a biquadratic patch on K.
 //!
 //! Each check decides its claim by computation: symbolic identities expanded over polynomial
@@ -12,8 +12,8 @@
 //! polarization) and [`exactcheck_exact::symbolic`] (form matrices of polynomial quadrics,
 //! definite signs, substitutions).
 
-use super::engine::{prove_all, Rng, Symbols};
-use super::{Outcome, Verdict};
+use crate::claims::engine::{prove_all, Rng, Symbols};
+use crate::claims::{Outcome, Verdict};
 use exactcheck_core::bernstein::Bernstein;
 use exactcheck_core::inertia::{det, jacobi_inertia, principal};
 use exactcheck_core::linalg::{Inertia, Matrix};
