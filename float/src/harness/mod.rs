@@ -203,6 +203,14 @@ pub enum CaseError {
     /// zero, behind an irrational root) up to its precision cap, or an exact intermediate
     /// exceeded its size limit: counted, never guessed.
     Undecided,
+    /// The exact evaluation ran past a limit on its work that bounds every sample (the
+    /// `loop-iterations` of a program's loops): counted apart, with the limit named.
+    LimitExceeded {
+        /// The limit's name.
+        limit: &'static str,
+        /// Its value in force.
+        value: u64,
+    },
 }
 
 impl std::fmt::Display for CaseError {
@@ -215,6 +223,10 @@ impl std::fmt::Display for CaseError {
                     "the exact side could not decide a sign up to its precision cap, or exceeded its size limit",
                 )
             }
+            CaseError::LimitExceeded { limit, value } => write!(
+                f,
+                "the exact evaluation exceeds the limit {limit} = {value} (raise it with --limit {limit}=N)"
+            ),
         }
     }
 }
@@ -811,6 +823,8 @@ struct Accumulator {
     domain_errors: usize,
     invalid_inputs: usize,
     undecided: usize,
+    limit_stops: usize,
+    limit_stop: Option<String>,
     refined: usize,
     float_failures: usize,
 }
@@ -831,6 +845,8 @@ impl Accumulator {
             domain_errors: 0,
             invalid_inputs: 0,
             undecided: 0,
+            limit_stops: 0,
+            limit_stop: None,
             refined: 0,
             float_failures: 0,
         }
@@ -841,6 +857,10 @@ impl Accumulator {
             CaseError::InvalidInputs => self.invalid_inputs += 1,
             CaseError::OutsideDomain => self.domain_errors += 1,
             CaseError::Undecided => self.undecided += 1,
+            CaseError::LimitExceeded { limit, value } => {
+                self.limit_stops += 1;
+                self.limit_stop = Some(format!("{limit} = {value}"));
+            }
         }
     }
 
@@ -897,6 +917,8 @@ impl Accumulator {
             domain_errors: self.domain_errors,
             invalid_inputs: self.invalid_inputs,
             undecided: self.undecided,
+            limit_stops: self.limit_stops,
+            limit_stop: self.limit_stop,
             refined: self.refined,
             float_failures: self.float_failures,
             max_ulps: self.max_ulps,
