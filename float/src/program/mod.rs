@@ -116,9 +116,9 @@ mod protocol;
 #[cfg(test)]
 mod tests;
 
+use error::quote;
 pub use error::ProgramError;
 pub use protocol::{input_line, parse_answer};
-use error::quote;
 use protocol::{push_line, push_number};
 
 /// What the reader and writer threads send: a line of stdout, a read error, the end of stdout,

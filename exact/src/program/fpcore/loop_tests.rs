@@ -31,8 +31,7 @@ fn while_updates_in_parallel_and_while_star_in_sequence() {
     // One swap: `while` reads the old values (a, b) = (2, 1); `while*` updates a first, and
     // b then reads the new a: (2, 2).
     let par = program("(FPCore () (while (< i 1) ([a 1 b] [b 2 a] [i 0 (+ i 1)]) (array a b)))");
-    let seq =
-        program("(FPCore () (while* (< i 1) ([a 1 b] [b 2 a] [i 0 (+ i 1)]) (array a b)))");
+    let seq = program("(FPCore () (while* (< i 1) ([a 1 b] [b 2 a] [i 0 (+ i 1)]) (array a b)))");
     assert_eq!(exact_values(&par, &[]), vec![big(2, 1), big(1, 1)]);
     assert_eq!(exact_values(&seq, &[]), vec![big(2, 1), big(2, 1)]);
     assert_eq!(par.eval_f64(&[]), vec![2.0, 1.0]);
@@ -86,7 +85,9 @@ fn a_loop_past_the_iteration_limit_stops_on_both_sides() {
 
 #[test]
 fn arrays_end_a_loop_and_loops_nest_in_lets() {
-    let p = program("(FPCore (x) (let ([h 1/2]) (while* (< i 2) ([y x (* y h)] [i 0 (+ i 1)]) (array y i))))");
+    let p = program(
+        "(FPCore (x) (let ([h 1/2]) (while* (< i 2) ([y x (* y h)] [i 0 (+ i 1)]) (array y i))))",
+    );
     assert_eq!(p.outputs.len(), 2);
     assert_eq!(exact_values(&p, &[3.0]), vec![big(3, 4), big(2, 1)]);
     // Misuse is a syntax error with its position, never a panic.

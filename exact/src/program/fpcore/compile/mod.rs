@@ -356,7 +356,6 @@ fn argument(a: &SExpr) -> Result<(String, Option<String>), FpCoreError> {
     }
 }
 
-
 /// The expression compiler: the slot counter, the scope (innermost binding last) and, while an
 /// output of a body ending in `(array ...)` is compiled, the element taken.
 struct Compiler {
@@ -459,7 +458,27 @@ impl Compiler {
         }
     }
 
+    /// `f` on a subexpression that does not end the body (an operand, a bound value, a
+    /// condition): no `(array ...)` element is taken there.
+    fn inner<T>(&mut self, f: impl FnOnce(&mut Compiler) -> T) -> T {
+        let select = self.select.take();
+        let r = f(self);
+        self.select = select;
+        r
+    }
+
     fn application(&mut self, items: &[SExpr], pos: Pos) -> Result<Value, Fail> {
+        // Only the forms that pass the end of the body on (their body, branches, annotated
+        // expression) keep the element taken; the operands of every other form are inner.
+        let op = items.first().and_then(SExpr::sym);
+        if self.select.is_some()
+            && !matches!(
+                op,
+                Some("let" | "let*" | "while" | "while*" | "if" | "!" | "array")
+            )
+        {
+            return self.inner(|c| c.application(items, pos));
+        }
         let Some(head) = items.first() else {
             return Err(syntax(pos, "expected an operation, found `()`"));
         };
@@ -489,7 +508,7 @@ impl Compiler {
             "digits" => num(Node::Const(digits(args, pos)?)),
             "if" => {
                 arity(3)?;
-                let c = self.cond(&args[0])?;
+                let c = self.inner(|c| c.cond(&args[0]))?;
                 let t = self.expr(&args[1])?;
                 let f = self.expr(&args[2])?;
                 match (t, f) {
@@ -512,11 +531,11 @@ impl Compiler {
             }
             "while" | "while*" => self.while_expr(op == "while*", args, pos),
             "array" => match self.select {
-                Some(i) if i < args.len() => self.expr(&args[i]),
-                Some(_) => Err(syntax(
-                    pos,
-                    "the arrays that end the body differ in length",
-                )),
+                Some(i) if i < args.len() => {
+                    let e = &args[i];
+                    self.inner(|c| c.expr(e))
+                }
+                Some(_) => Err(syntax(pos, "the arrays that end the body differ in length")),
                 None => Err(unsupported("array")),
             },
             "!" => {
@@ -642,7 +661,6 @@ impl Compiler {
             other => Err(unsupported(other)),
         }
     }
-
 }
 
 /// The length of the `(array ...)` that ends `e` through `let`, `let*`, `while`, `while*`,
@@ -666,4 +684,3 @@ fn annotation(items: &[SExpr], pos: Pos) -> Result<(&SExpr, Props<'_>), Fail> {
     };
     Ok((e, property_pairs(props)?))
 }
-

@@ -173,7 +173,10 @@ pub(super) enum PrePair<'a> {
 
 /// The pairs of a comparison-chain conjunct (`None` for any other conjunct, and for `!=`, which
 /// is never an interval bound).
-pub(super) fn pre_pairs<'a>(e: &'a SExpr, args: &[String]) -> Result<Option<Vec<PrePair<'a>>>, FpCoreError> {
+pub(super) fn pre_pairs<'a>(
+    e: &'a SExpr,
+    args: &[String],
+) -> Result<Option<Vec<PrePair<'a>>>, FpCoreError> {
     let Some(items) = list_items(e) else {
         return Ok(None);
     };

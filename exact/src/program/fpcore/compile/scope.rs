@@ -40,7 +40,7 @@ impl Compiler {
                     format!("`{name}` is bound twice in one `let`"),
                 ));
             }
-            let bound = match self.expr(value)? {
+            let bound = match self.inner(|c| c.expr(value))? {
                 Value::Num(n) => {
                     let s = self.slots;
                     self.slots += 1;
@@ -153,7 +153,7 @@ impl Compiler {
                 ));
             }
             names.push(name);
-            let init = match self.expr(init)? {
+            let init = match self.inner(|c| c.expr(init))? {
                 Value::Num(n) => n,
                 Value::Bool(_) => {
                     return Err(unsupported(format!("a boolean loop variable of `{op}`")))
@@ -170,10 +170,10 @@ impl Compiler {
             vars.push((s, init, update));
         }
         self.env.extend(pending);
-        let cond = self.cond(cond)?;
+        let cond = self.inner(|c| c.cond(cond))?;
         let mut out = Vec::with_capacity(vars.len());
         for (s, init, update) in vars {
-            let update = self.num(update)?;
+            let update = self.inner(|c| c.num(update))?;
             out.push((s, init, update));
         }
         let body = self.expr(body)?;
