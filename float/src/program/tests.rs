@@ -1,4 +1,5 @@
 //! The runner against small shell and Python programs, and the protocol's line forms.
+use super::error::show_inputs;
 use super::*;
 
 #[test]
