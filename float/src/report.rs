@@ -608,6 +608,11 @@ impl fmt::Display for Report {
     }
 }
 
+/// Whether a count is zero (a field left out of the JSON when it is).
+fn is_zero(n: &usize) -> bool {
+    *n == 0
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -633,9 +638,4 @@ mod tests {
         assert_eq!(fmt_exact(&format!("1/{d}")), "1/2^100");
         assert_eq!(fmt_exact("1/3"), "1/3");
     }
-}
-
-/// Whether a count is zero (a field left out of the JSON when it is).
-fn is_zero(n: &usize) -> bool {
-    *n == 0
 }
