@@ -178,6 +178,10 @@ limits! {
     /// `--fpcore`): its float side does `|k| - 1` multiplications per sample, and `2^1024`
     /// already overflows a double.
     FORMULA_EXPONENT = ("formula-exponent", "exponent of a power in a regressed formula", "", 1_024);
+    /// Loop iterations of one evaluation of a regressed program (FPCore `while`, `while*`; the
+    /// iterations of all its loops together): every iteration is evaluated exactly, and a loop
+    /// that never ends (`while TRUE`) must stop somewhere.
+    LOOP_ITERATIONS = ("loop-iterations", "loop iterations of one evaluation", "", 10_000);
     /// Size in bits of any exact constant: a folded constant expression, a polynomial
     /// coefficient, an exact intermediate.
     CONSTANT_BITS = ("constant-bits", "size of a constant", "bits", 1_000_000);

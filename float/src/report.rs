@@ -281,6 +281,12 @@ pub struct Report {
     /// Samples skipped because the exact side could not decide a sign up to its precision cap
     /// (or an exact intermediate exceeded its size limit).
     pub undecided: usize,
+    /// Samples whose exact evaluation ran past a limit on its work ([`Report::limit_stop`]).
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub limit_stops: usize,
+    /// The limit that stopped them, `NAME = VALUE` (`loop-iterations = 10000`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub limit_stop: Option<String>,
     /// Compared samples whose exact value was refined (an irrational root) rather than exact.
     pub refined: usize,
     /// Compared samples where the float side failed (infinite error).
@@ -525,6 +531,14 @@ impl fmt::Display for Report {
         if self.undecided > 0 {
             write!(f, ", {} undecided", self.undecided)?;
         }
+        if self.limit_stops > 0 {
+            write!(
+                f,
+                ", {} stopped by the limit {}",
+                self.limit_stops,
+                self.limit_stop.as_deref().unwrap_or("of the exact side")
+            )?;
+        }
         writeln!(f)?;
         if self.refined > 0 {
             writeln!(
@@ -593,6 +607,11 @@ impl fmt::Display for Report {
         }
         Ok(())
     }
+}
+
+/// Whether a count is zero (a field left out of the JSON when it is).
+fn is_zero(n: &usize) -> bool {
+    *n == 0
 }
 
 #[cfg(test)]

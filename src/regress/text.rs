@@ -100,6 +100,13 @@ impl Subject for TextSubject<'_> {
             // Undecided at the precision cap, or an intermediate beyond the constant-bits limit: no
             // reference either way, counted as undecided (never guessed).
             Err(ExactStop::Undecided | ExactStop::TooLarge) => Err(CaseError::Undecided),
+            Err(ExactStop::LoopLimit) => {
+                let limit = &exactcheck_core::limits::LOOP_ITERATIONS;
+                Err(CaseError::LimitExceeded {
+                    limit: limit.name(),
+                    value: limit.get(),
+                })
+            }
         }
     }
     fn float(&self, index: usize, x: &[f64]) -> Result<Option<Vec<f64>>, FloatSideError> {

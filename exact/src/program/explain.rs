@@ -94,8 +94,8 @@ impl Local<'_> {
     fn round(v: &XV) -> Result<f64, Halt> {
         match v {
             XV::Exact(q) => Ok(q.to_f64()),
-            XV::Approx(iv) if rounding_decided(iv) => Ok(nearest_double(&iv.lo)),
-            XV::Approx(_) => Err(Halt::Refine { ambiguous: false }),
+            XV::Approx(iv, _) if rounding_decided(iv) => Ok(nearest_double(&iv.lo)),
+            XV::Approx(..) => Err(Halt::Refine { ambiguous: false }),
         }
     }
 
@@ -249,6 +249,15 @@ impl Domain for Local<'_> {
     }
     fn compare(&mut self, op: CmpOp, a: &Tracked, b: &Tracked) -> Result<bool, Halt> {
         self.real.compare(op, &a.x, &b.x)
+    }
+    fn iterate(&mut self) -> Result<(), Halt> {
+        self.real.iterate()
+    }
+    fn carry(&mut self, v: Tracked) -> Result<Tracked, Halt> {
+        Ok(Tracked {
+            x: self.real.carry(v.x)?,
+            ..v
+        })
     }
 }
 
@@ -633,6 +642,19 @@ impl Domain for Dual<'_> {
     fn compare(&mut self, op: CmpOp, a: &DualValue, b: &DualValue) -> Result<bool, DualStop> {
         Ok(self.real.compare(op, &a.x, &b.x)?)
     }
+    fn iterate(&mut self) -> Result<(), DualStop> {
+        Ok(self.real.iterate()?)
+    }
+    fn carry(&mut self, v: DualValue) -> Result<DualValue, DualStop> {
+        let d =
+            v.d.into_iter()
+                .map(|q| self.real.carry(q))
+                .collect::<Result<_, _>>()?;
+        Ok(DualValue {
+            x: self.real.carry(v.x)?,
+            d,
+        })
+    }
 }
 
 impl Dual<'_> {
@@ -667,10 +689,10 @@ impl Dual<'_> {
         let fx = self.real.abs(f.x.clone())?;
         match self.real.div(num, fx)? {
             XV::Exact(q) => Ok(Conditioning::Number(q.to_f64())),
-            XV::Approx(iv) if iv.narrow(6) => Ok(Conditioning::Number(
+            XV::Approx(iv, _) if iv.narrow(6) => Ok(Conditioning::Number(
                 crate::to_f64::rational_to_f64(&iv.midpoint()),
             )),
-            XV::Approx(_) => Err(Halt::Refine { ambiguous: false }),
+            XV::Approx(..) => Err(Halt::Refine { ambiguous: false }),
         }
     }
 }
@@ -684,6 +706,7 @@ fn refine<T>(mut pass: impl FnMut(u64) -> Result<T, Halt>) -> Result<T, ExactSto
             Ok(v) => return Ok(v),
             Err(Halt::Outside) => return Err(ExactStop::OutsideDomain),
             Err(Halt::TooLarge) => return Err(ExactStop::TooLarge),
+            Err(Halt::LoopLimit) => return Err(ExactStop::LoopLimit),
             Err(Halt::Refine { .. }) if p >= MAX_PRECISION => return Err(ExactStop::Undecided),
             Err(Halt::Refine { .. }) => p *= 2,
         }
@@ -707,7 +730,7 @@ impl Program {
         assert_eq!(x.len(), self.inputs.len(), "Program::local_errors: arity");
         refine(|p| {
             let mut d = Local {
-                real: Real { x, p },
+                real: Real::new(x, p),
                 names: &self.inputs,
                 ops: Vec::new(),
             };
@@ -739,7 +762,7 @@ impl Program {
         assert_eq!(x.len(), self.inputs.len(), "Program::conditioning: arity");
         refine(|p| {
             let mut d = Dual {
-                real: Real { x, p },
+                real: Real::new(x, p),
             };
             let mut slots = vec![
                 DualValue {

@@ -14,84 +14,91 @@
 //! * The precondition is **not** evaluated here: it is a property of the exact inputs, decided by
 //!   the exact side.
 //!
-//! The evaluation never fails and allocates nothing per node: it is the generic walk of `walk`
-//! over the `Copy` type `f64`, with the `let` slots in a stack array (a heap vector only for
+//! * A loop runs as written; past the `loop-iterations` limit (all loops of one evaluation
+//!   together) the evaluation stops and every output is NaN, a float failure (a program whose
+//!   exact loops also run that long is not compared at all).
+//!
+//! The evaluation never fails and allocates nothing per node (a `while` loop's parallel update
+//! excepted): it is the generic walk of `walk` over the `Copy` type `f64`, with the `let` slots in a stack array (a heap vector only for
 //! programs with more than [`STACK_SLOTS`] slots).
-use super::walk::{eval_node, Domain};
+use super::walk::{count_iteration, eval_node, Domain};
 use super::{CmpOp, Func, PowStyle, Program};
 use crate::rational::Rational;
-use std::convert::Infallible;
 
 /// Programs with at most this many `let` slots keep them on the stack during a float evaluation.
 pub const STACK_SLOTS: usize = 32;
 
-/// The IEEE double domain over borrowed inputs.
+/// The IEEE double domain over borrowed inputs, with the loop iterations done so far.
 struct F64<'a> {
     x: &'a [f64],
+    iterations: u64,
 }
+
+/// The float evaluation stopped: its loops ran past the `loop-iterations` limit.
+pub(super) struct LoopStop;
 
 impl Domain for F64<'_> {
     type V = f64;
-    type Stop = Infallible;
+    type Stop = LoopStop;
 
     #[inline]
     fn input(&mut self, i: usize) -> f64 {
         self.x[i]
     }
     #[inline]
-    fn constant(&mut self, q: &Rational) -> Result<f64, Infallible> {
+    fn constant(&mut self, q: &Rational) -> Result<f64, LoopStop> {
         Ok(q.to_f64())
     }
     #[inline]
-    fn neg(&mut self, a: f64) -> Result<f64, Infallible> {
+    fn neg(&mut self, a: f64) -> Result<f64, LoopStop> {
         Ok(-a)
     }
     #[inline]
-    fn add(&mut self, a: f64, b: f64) -> Result<f64, Infallible> {
+    fn add(&mut self, a: f64, b: f64) -> Result<f64, LoopStop> {
         Ok(a + b)
     }
     #[inline]
-    fn sub(&mut self, a: f64, b: f64) -> Result<f64, Infallible> {
+    fn sub(&mut self, a: f64, b: f64) -> Result<f64, LoopStop> {
         Ok(a - b)
     }
     #[inline]
-    fn mul(&mut self, a: f64, b: f64) -> Result<f64, Infallible> {
+    fn mul(&mut self, a: f64, b: f64) -> Result<f64, LoopStop> {
         Ok(a * b)
     }
     #[inline]
-    fn div(&mut self, a: f64, b: f64) -> Result<f64, Infallible> {
+    fn div(&mut self, a: f64, b: f64) -> Result<f64, LoopStop> {
         Ok(a / b)
     }
     #[inline]
-    fn sqrt(&mut self, a: f64) -> Result<f64, Infallible> {
+    fn sqrt(&mut self, a: f64) -> Result<f64, LoopStop> {
         Ok(a.sqrt())
     }
     #[inline]
-    fn abs(&mut self, a: f64) -> Result<f64, Infallible> {
+    fn abs(&mut self, a: f64) -> Result<f64, LoopStop> {
         Ok(a.abs())
     }
     #[inline]
-    fn fma(&mut self, a: f64, b: f64, c: f64) -> Result<f64, Infallible> {
+    fn fma(&mut self, a: f64, b: f64, c: f64) -> Result<f64, LoopStop> {
         Ok(a.mul_add(b, c))
     }
     #[inline]
-    fn min(&mut self, a: f64, b: f64) -> Result<f64, Infallible> {
+    fn min(&mut self, a: f64, b: f64) -> Result<f64, LoopStop> {
         Ok(a.min(b))
     }
     #[inline]
-    fn max(&mut self, a: f64, b: f64) -> Result<f64, Infallible> {
+    fn max(&mut self, a: f64, b: f64) -> Result<f64, LoopStop> {
         Ok(a.max(b))
     }
     #[inline]
-    fn pow(&mut self, a: f64, n: i32, style: PowStyle) -> Result<f64, Infallible> {
+    fn pow(&mut self, a: f64, n: i32, style: PowStyle) -> Result<f64, LoopStop> {
         Ok(pow_f64(a, n, style))
     }
     #[inline]
-    fn call(&mut self, f: Func, a: Option<f64>, b: Option<f64>) -> Result<f64, Infallible> {
+    fn call(&mut self, f: Func, a: Option<f64>, b: Option<f64>) -> Result<f64, LoopStop> {
         Ok(call_f64(f, a.unwrap_or(f64::NAN), b.unwrap_or(f64::NAN)))
     }
     #[inline]
-    fn compare(&mut self, op: CmpOp, a: &f64, b: &f64) -> Result<bool, Infallible> {
+    fn compare(&mut self, op: CmpOp, a: &f64, b: &f64) -> Result<bool, LoopStop> {
         Ok(match op {
             CmpOp::Lt => a < b,
             CmpOp::Le => a <= b,
@@ -100,6 +107,14 @@ impl Domain for F64<'_> {
             CmpOp::Eq => a == b,
             CmpOp::Ne => a != b,
         })
+    }
+    #[inline]
+    fn iterate(&mut self) -> Result<(), LoopStop> {
+        if count_iteration(&mut self.iterations) {
+            Ok(())
+        } else {
+            Err(LoopStop)
+        }
     }
 }
 
@@ -185,13 +200,6 @@ pub fn call_f64(f: Func, a: f64, b: f64) -> f64 {
     }
 }
 
-fn unwrap<T>(r: Result<T, Infallible>) -> T {
-    match r {
-        Ok(v) => v,
-        Err(never) => match never {},
-    }
-}
-
 impl Program {
     /// The outputs evaluated in IEEE doubles at `x` (one value per input), in the order of the
     /// tree; never fails (see the module documentation of `program::float`).
@@ -219,7 +227,7 @@ impl Program {
             self.inputs.len()
         );
         out.clear();
-        let mut d = F64 { x };
+        let mut d = F64 { x, iterations: 0 };
         let mut stack = [0.0f64; STACK_SLOTS];
         let mut heap;
         let slots: &mut [f64] = if self.slots <= STACK_SLOTS {
@@ -229,7 +237,15 @@ impl Program {
             &mut heap
         };
         for node in &self.outputs {
-            out.push(unwrap(eval_node(&mut d, node, slots)));
+            match eval_node(&mut d, node, slots) {
+                Ok(v) => out.push(v),
+                Err(LoopStop) => {
+                    // Loops past the limit: no output has a value.
+                    out.clear();
+                    out.resize(self.outputs.len(), f64::NAN);
+                    return;
+                }
+            }
         }
     }
 }

@@ -126,6 +126,30 @@ pub enum Node {
     /// A mathematical function or constant applied to [`Func::arity`] arguments: the C library
     /// function on the float side, a certified enclosure on the exact side (`transc`).
     Fun(Func, Vec<Node>),
+    /// A loop (FPCore's `while` and `while*`), see [`Loop`].
+    While(Box<Loop>),
+}
+
+/// A loop: bind each variable's slot to its initial value, then, while `cond` holds, give each
+/// variable its updated value; the loop's value is `body` evaluated after the last iteration.
+///
+/// `sequential` (`while*`): the initial values and the updates are evaluated one after
+/// another, each seeing the variables bound (or updated) before it. Otherwise (`while`) every
+/// initial value is evaluated before any variable is bound and every update reads the values of
+/// the previous iteration. Every evaluation of a program counts its iterations (of all its
+/// loops together) against the `loop-iterations` limit
+/// ([`exactcheck_core::limits::LOOP_ITERATIONS`]): past it the evaluation stops, on the exact
+/// side with [`ExactStop::LoopLimit`], on the float side with NaN outputs.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Loop {
+    /// `while*` (true) or `while` (false).
+    pub sequential: bool,
+    /// `(slot, initial value, update)` per loop variable.
+    pub vars: Vec<(usize, Node, Node)>,
+    /// The condition checked before each iteration.
+    pub cond: Cond,
+    /// The value after the loop.
+    pub body: Node,
 }
 
 /// The functions and constants of [`Node::Fun`]. Outside its domain (`log` of a non-positive
@@ -301,9 +325,9 @@ impl Program {
     }
 
     /// The number of operations: every node of the outputs, the `let` values and the
-    /// precondition except inputs, slots, literals and the `let`/`if` nodes themselves, plus one
-    /// per comparison (`and`/`or`/`not` are free). A measure of the work of one evaluation for
-    /// reports.
+    /// precondition except inputs, slots, literals and the `let`/`if`/loop nodes themselves, plus
+    /// one per comparison (`and`/`or`/`not` are free); a loop's condition and updates count once.
+    /// A measure of the size of the program for reports.
     pub fn operation_count(&self) -> usize {
         self.outputs.iter().map(node_ops).sum::<usize>() + self.pre.as_ref().map_or(0, cond_ops)
     }
@@ -328,6 +352,14 @@ fn node_ops(n: &Node) -> usize {
         }
         Node::If(c, a, b) => cond_ops(c) + node_ops(a) + node_ops(b),
         Node::Fun(f, args) => usize::from(f.arity() > 0) + args.iter().map(node_ops).sum::<usize>(),
+        Node::While(l) => {
+            cond_ops(&l.cond)
+                + node_ops(&l.body)
+                + l.vars
+                    .iter()
+                    .map(|(_, init, update)| node_ops(init) + node_ops(update))
+                    .sum::<usize>()
+        }
     }
 }
 

@@ -18,6 +18,10 @@
 //!   sign of a divisor or of a square root's argument) or the output's accuracy could not be
 //!   settled up to [`MAX_PRECISION`] bits, and the exact zero test could not decide. Never a
 //!   guess.
+//! * [`ExactStop::LoopLimit`]: the program's loops ran past the `loop-iterations` limit
+//!   ([`exactcheck_core::limits::LOOP_ITERATIONS`]). A loop's condition is decided on the exact
+//!   values like an `if`'s (refined, never guessed), so the iterations are those of the true
+//!   real computation.
 //! * [`ExactStop::TooLarge`]: an exact intermediate value would exceed
 //!   the `constant-bits` limit ([`exactcheck_core::limits::CONSTANT_BITS`]) in bits (or an
 //!   approximate one a binary exponent of that size), the limit every constant of the workspace
@@ -45,12 +49,18 @@
 //!    root is representable there, every decision is exact and each output is either rational
 //!    (exact) or an irrational radical, refined with intervals until it meets the contract.
 //!    Otherwise refinement goes on, and at the cap the answer is `Undecided`.
+//! 4. **Equal calls**: the enclosure of a function at exact (rational) arguments carries the
+//!    call, the function and those arguments ([`CallKey`]). Two values of the same call are the
+//!    same real number: their difference is exactly 0, their quotient exactly 1 and they
+//!    compare equal, at once (`sin(x + e) - sin(x)` at `e = 0`), where intervals would refine
+//!    to the cap. A value computed from such an enclosure (`-sin(x)`, `2 sin(x)`) carries no
+//!    call.
 //!
 //! The walk itself is the one generic walk (`walk`) shared with the float side and the radical
 //! fallback.
 use super::interval::Iv;
 use super::transc::{self, TStop};
-use super::walk::{eval_cond, eval_node, Domain};
+use super::walk::{count_iteration, eval_cond, eval_node, Domain};
 use super::{CmpOp, Func, PowStyle, Program};
 use crate::expr::Coefficient;
 use crate::radical::Radical;
@@ -61,6 +71,7 @@ use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::ToPrimitive;
 use std::cmp::Ordering;
+use std::rc::Rc;
 
 /// Relative accuracy of an inexact [`Reference`]: `|value - true| <= 2^-REL_BITS |true|`.
 pub const REL_BITS: u32 = 80;
@@ -92,13 +103,28 @@ pub enum ExactStop {
     /// An intermediate value exceeds the `constant-bits` limit.
     #[error("{}", limits::CONSTANT_BITS.exceeded(format!("more than {} in an intermediate value", limits::CONSTANT_BITS.get())))]
     TooLarge,
+    /// The program's loops ran past the `loop-iterations` limit.
+    #[error("{}", limits::LOOP_ITERATIONS.exceeded(format!("more than {}", limits::LOOP_ITERATIONS.get())))]
+    LoopLimit,
 }
 
-/// A value of the exact evaluation: a rational, or an enclosure of an irrational number.
+/// A value of the exact evaluation: a rational, or an enclosure of an irrational number with,
+/// for the value of a function at exact arguments, that call ([`CallKey`]).
 #[derive(Clone, Debug)]
 pub(super) enum XV {
     Exact(Rational),
-    Approx(Box<Iv>),
+    Approx(Box<Iv>, Option<Rc<CallKey>>),
+}
+
+/// A function and its exact arguments: two enclosures with equal keys enclose the same real
+/// number, whatever their widths. So `sin(x + e) - sin(x)` at `e = 0` is exactly 0 at once and
+/// `f(x) == f(x)` is decided true, where intervals alone could never show that a difference is
+/// zero and would refine to the precision cap.
+pub(super) type CallKey = (Func, Option<Rational>, Option<Rational>);
+
+/// The call both `a` and `b` are the value of, if they are the values of one call.
+fn same_call(a: &XV, b: &XV) -> bool {
+    matches!((a, b), (XV::Approx(_, Some(x)), XV::Approx(_, Some(y))) if x == y)
 }
 
 /// Why an interval pass stops.
@@ -106,16 +132,31 @@ pub(super) enum XV {
 pub(super) enum Halt {
     Outside,
     TooLarge,
+    /// Past the `loop-iterations` limit (at any precision: the loop's exact decisions do not
+    /// depend on it).
+    LoopLimit,
     /// Try again at a higher precision; `ambiguous`: a decision (not just accuracy) was missing.
     Refine {
         ambiguous: bool,
     },
 }
 
-/// The exact domain at working precision `p`.
+/// The exact domain at working precision `p`, with the loop iterations done so far.
 pub(super) struct Real<'a> {
     pub(super) x: &'a [Rational],
     pub(super) p: u64,
+    pub(super) iterations: u64,
+}
+
+impl<'a> Real<'a> {
+    /// The domain at inputs `x` and precision `p`, no iteration done.
+    pub(super) fn new(x: &'a [Rational], p: u64) -> Real<'a> {
+        Real {
+            x,
+            p,
+            iterations: 0,
+        }
+    }
 }
 
 /// `q` if its numerator and denominator have at most `constant-bits` bits together.
@@ -131,7 +172,7 @@ fn approx(iv: Iv) -> Result<XV, Halt> {
     if iv.max_exponent() > limits::CONSTANT_BITS.get() {
         Err(Halt::TooLarge)
     } else {
-        Ok(XV::Approx(Box::new(iv)))
+        Ok(XV::Approx(Box::new(iv), None))
     }
 }
 
@@ -141,7 +182,7 @@ impl Real<'_> {
     fn iv(&self, v: &XV) -> Iv {
         match v {
             XV::Exact(q) => Iv::from_rational(q, self.p),
-            XV::Approx(iv) => (**iv).clone(),
+            XV::Approx(iv, _) => (**iv).clone(),
         }
     }
 
@@ -149,7 +190,7 @@ impl Real<'_> {
     pub(super) fn sign(&self, v: &XV) -> Result<Ordering, Halt> {
         match v {
             XV::Exact(q) => Ok(q.cmp(&Rational::ZERO)),
-            XV::Approx(iv) => iv.sign().ok_or(AMBIGUOUS),
+            XV::Approx(iv, _) => iv.sign().ok_or(AMBIGUOUS),
         }
     }
 }
@@ -167,7 +208,7 @@ impl Domain for Real<'_> {
     fn neg(&mut self, a: XV) -> Result<XV, Halt> {
         Ok(match a {
             XV::Exact(q) => XV::Exact(-q),
-            XV::Approx(iv) => XV::Approx(Box::new(iv.neg())),
+            XV::Approx(iv, _) => XV::Approx(Box::new(iv.neg()), None),
         })
     }
     fn add(&mut self, a: XV, b: XV) -> Result<XV, Halt> {
@@ -177,6 +218,9 @@ impl Domain for Real<'_> {
         }
     }
     fn sub(&mut self, a: XV, b: XV) -> Result<XV, Halt> {
+        if same_call(&a, &b) {
+            return Ok(XV::Exact(Rational::ZERO));
+        }
         match (&a, &b) {
             (XV::Exact(x), XV::Exact(y)) => checked(x - y),
             _ => approx(Iv::sub(&self.iv(&a), &self.iv(&b), self.p)),
@@ -193,6 +237,9 @@ impl Domain for Real<'_> {
         match self.sign(&b)? {
             Ordering::Equal => return Err(Halt::Outside),
             Ordering::Less | Ordering::Greater => {}
+        }
+        if same_call(&a, &b) {
+            return Ok(XV::Exact(Rational::ONE));
         }
         match (&a, &b) {
             (XV::Exact(x), XV::Exact(y)) => {
@@ -213,7 +260,7 @@ impl Domain for Real<'_> {
                     None => approx(Iv::sqrt(&Iv::from_rational(&q, self.p), self.p)),
                 }
             }
-            XV::Approx(iv) => {
+            XV::Approx(iv, _) => {
                 if iv.hi.sign() == Ordering::Less {
                     Err(Halt::Outside)
                 } else if iv.lo.sign() == Ordering::Less {
@@ -227,7 +274,7 @@ impl Domain for Real<'_> {
     fn abs(&mut self, a: XV) -> Result<XV, Halt> {
         Ok(match a {
             XV::Exact(q) => XV::Exact(if q.signum() == Sign::Negative { -q } else { q }),
-            XV::Approx(iv) => XV::Approx(Box::new(iv.abs())),
+            XV::Approx(iv, _) => XV::Approx(Box::new(iv.abs()), None),
         })
     }
     fn fma(&mut self, a: XV, b: XV, c: XV) -> Result<XV, Halt> {
@@ -260,11 +307,11 @@ impl Domain for Real<'_> {
                 }
                 checked(q.powi(n).expect("0^n with n < 0 is excluded above"))
             }
-            XV::Approx(iv) => {
+            XV::Approx(iv, _) => {
                 // Binary powering of the enclosure, then one division for n < 0.
                 let mut e = n.unsigned_abs();
                 let mut acc = XV::Exact(Rational::ONE);
-                let mut sq = XV::Approx(iv);
+                let mut sq = XV::Approx(iv, None);
                 while e > 0 {
                     if e & 1 == 1 {
                         acc = self.mul(acc, sq.clone())?;
@@ -332,18 +379,45 @@ impl Domain for Real<'_> {
         }
         let ia = a.as_ref().map(|v| self.iv(v));
         let ib = b.as_ref().map(|v| self.iv(v));
-        transc::enclose(f, ia.as_ref(), ib.as_ref(), self.p)
+        let v = transc::enclose(f, ia.as_ref(), ib.as_ref(), self.p)
             .map_err(halt)
-            .and_then(approx)
+            .and_then(approx)?;
+        // At exact arguments the value is that call's, and says so.
+        Ok(match v {
+            XV::Approx(iv, None) if qa.is_some() == a.is_some() && qb.is_some() == b.is_some() => {
+                XV::Approx(iv, Some(Rc::new((f, qa, qb))))
+            }
+            v => v,
+        })
     }
     fn compare(&mut self, op: CmpOp, a: &XV, b: &XV) -> Result<bool, Halt> {
         let ord = match (a, b) {
             (XV::Exact(x), XV::Exact(y)) => x.cmp(y),
+            _ if same_call(a, b) => Ordering::Equal,
             _ => Iv::sub(&self.iv(a), &self.iv(b), self.p)
                 .sign()
                 .ok_or(AMBIGUOUS)?,
         };
         Ok(holds(op, ord))
+    }
+    fn iterate(&mut self) -> Result<(), Halt> {
+        if count_iteration(&mut self.iterations) {
+            Ok(())
+        } else {
+            Err(Halt::LoopLimit)
+        }
+    }
+    /// A rational loop variable of more than `4p` bits becomes its enclosure at precision `p`:
+    /// a loop's exact rationals can double in size every iteration (`x <- x*x + c`), an
+    /// enclosure's cost stays that of the precision, and the refinement of `p` still reaches
+    /// the contract (the exact rationals come back at the precision where they fit).
+    fn carry(&mut self, v: XV) -> Result<XV, Halt> {
+        match v {
+            XV::Exact(q) if q.bits() > self.p.saturating_mul(4) => {
+                approx(Iv::from_rational(&q, self.p))
+            }
+            v => Ok(v),
+        }
     }
 }
 
@@ -394,11 +468,14 @@ enum RadStop {
     /// A root that is not multi-quadratic (or not certifiable), or a value beyond the size
     /// limit: the radical field cannot decide this sample.
     Unrepresentable,
+    /// Past the `loop-iterations` limit.
+    LoopLimit,
 }
 
-/// The multi-quadratic field [`Radical`] as an exact domain.
+/// The multi-quadratic field [`Radical`] as an exact domain, with the loop iterations done.
 struct Rad<'a> {
     x: &'a [Rational],
+    iterations: u64,
 }
 
 fn rad_checked(r: Radical) -> Result<Radical, RadStop> {
@@ -508,6 +585,13 @@ impl Domain for Rad<'_> {
     fn compare(&mut self, op: CmpOp, a: &Radical, b: &Radical) -> Result<bool, RadStop> {
         Ok(holds(op, a.cmp(b)))
     }
+    fn iterate(&mut self) -> Result<(), RadStop> {
+        if count_iteration(&mut self.iterations) {
+            Ok(())
+        } else {
+            Err(RadStop::LoopLimit)
+        }
+    }
 }
 
 /// An inexact reference to an irrational radical, by interval refinement (the value is neither
@@ -583,12 +667,14 @@ impl Program {
                 Ok(Pass::Refine { ambiguous }) | Err(Halt::Refine { ambiguous }) => ambiguous,
                 Err(Halt::Outside) => return Err(ExactStop::OutsideDomain),
                 Err(Halt::TooLarge) => return Err(ExactStop::TooLarge),
+                Err(Halt::LoopLimit) => return Err(ExactStop::LoopLimit),
             };
             if ambiguous && !radical_tried {
                 radical_tried = true;
                 match self.radical_pass(x) {
                     Ok(values) => return values.iter().map(radical_reference).collect(),
                     Err(RadStop::Outside) => return Err(ExactStop::OutsideDomain),
+                    Err(RadStop::LoopLimit) => return Err(ExactStop::LoopLimit),
                     Err(RadStop::Unrepresentable) => {}
                 }
             }
@@ -601,7 +687,7 @@ impl Program {
 
     /// One evaluation at working precision `p`.
     fn interval_pass(&self, x: &[Rational], p: u64) -> Result<Pass, Halt> {
-        let mut d = Real { x, p };
+        let mut d = Real::new(x, p);
         let mut slots = vec![XV::Exact(Rational::ZERO); self.slots];
         if let Some(pre) = &self.pre {
             if !eval_cond(&mut d, pre, &mut slots)? {
@@ -615,7 +701,7 @@ impl Program {
                     value: q.to_big_rational(),
                     exact: true,
                 }),
-                XV::Approx(iv) => {
+                XV::Approx(iv, _) => {
                     if iv.is_point() {
                         refs.push(Reference {
                             value: iv.lo.to_big_rational(),
@@ -643,7 +729,7 @@ impl Program {
 
     /// The whole program in the radical field: exact values, or why not.
     fn radical_pass(&self, x: &[Rational]) -> Result<Vec<Radical>, RadStop> {
-        let mut d = Rad { x };
+        let mut d = Rad { x, iterations: 0 };
         let mut slots = vec![Radical::default(); self.slots];
         if let Some(pre) = &self.pre {
             if !eval_cond(&mut d, pre, &mut slots)? {

@@ -348,3 +348,38 @@ fn formula_calls_are_checked() {
     let d = Program::parse("diff(x^2, x)", None).unwrap();
     assert_eq!(d.inputs, ["x"]);
 }
+
+#[test]
+fn equal_calls_at_equal_exact_arguments_are_equal_at_once() {
+    let vars = ["x".to_string(), "d".to_string()];
+    let at = |text: &str, x: f64, d: f64| {
+        Program::parse(text, Some(&vars))
+            .expect("compiles")
+            .eval_exact(&[exact(x), exact(d)])
+    };
+    // A difference of one call with itself is exactly 0, a quotient exactly 1: no refinement
+    // to the precision cap (which would answer `Undecided`).
+    for (text, want) in [
+        ("sin(x + d) - sin(x)", 0),
+        ("exp(x) - exp(x + d*x)", 0),
+        ("atan2(x, 2 + d) - atan2(x, 2)", 0),
+        ("pi - pi", 0),
+        ("log(x + d) / log(x)", 1),
+    ] {
+        let r = at(text, 0.75, 0.0).unwrap_or_else(|e| panic!("{text}: {e}"));
+        assert!(r[0].exact, "{text}");
+        assert_eq!(r[0].value, BigRational::from_integer(want.into()), "{text}");
+    }
+    // Different arguments are different calls: the difference is refined as before.
+    let r = at("sin(x + d) - sin(x)", 0.75, 1.0 / 1024.0).expect("defined");
+    assert!(!r[0].exact);
+    let want = (0.75f64 + 1.0 / 1024.0).sin() - 0.75f64.sin();
+    assert!((crate::to_f64::rational_to_f64(&r[0].value) - want).abs() < 1e-15);
+    // A comparison of a call with itself is decided: equal.
+    let bm = fpcore::parse_file("(FPCore (x d) (if (== (cos x) (cos (+ x d))) 1 0))")
+        .expect("parses")
+        .remove(0);
+    let p = bm.program.expect("compiles");
+    let r = p.eval_exact(&[exact(0.5), exact(0.0)]).expect("decided");
+    assert_eq!(r[0].value, BigRational::from_integer(1.into()));
+}

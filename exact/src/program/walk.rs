@@ -2,13 +2,14 @@
 //! ([`Domain`]): IEEE doubles (`float`), the exact reals of `real` (rationals and refined
 //! intervals) and the multi-quadratic field [`crate::Radical`] (the exact zero test of `real`).
 //!
-//! The walk owns the evaluation order (the tree's, left operand first), `let` binding, `if`
+//! The walk owns the evaluation order (the tree's, left operand first), `let` binding, loops
+//! (their binding orders; the domain counts the iterations), `if`
 //! (only the chosen branch is evaluated) and conditions (`and`/`or` short-circuit from the left,
 //! as a compiled C program does); a domain supplies the operations and a possibly failing
 //! decision of a comparison. Values are moved, not borrowed, so a domain of `Copy` numbers
 //! (`f64`) compiles to straight-line float code with no allocation, and `Result<_, Infallible>`
 //! costs nothing.
-use super::{ChainOp, CmpOp, Cond, Func, Node, PowStyle};
+use super::{ChainOp, CmpOp, Cond, Func, Loop, Node, PowStyle};
 use crate::rational::Rational;
 
 /// The arithmetic a program is evaluated in.
@@ -52,6 +53,20 @@ pub(crate) trait Domain {
     ) -> Result<Self::V, Self::Stop>;
     /// The truth of `a op b`.
     fn compare(&mut self, op: CmpOp, a: &Self::V, b: &Self::V) -> Result<bool, Self::Stop>;
+    /// Counts one more loop iteration of this evaluation; the stop once the count exceeds the
+    /// `loop-iterations` limit.
+    fn iterate(&mut self) -> Result<(), Self::Stop>;
+    /// A loop variable's new value as the loop keeps it (by default unchanged; the exact domain
+    /// turns a rational grown too large for its working precision into an enclosure).
+    fn carry(&mut self, v: Self::V) -> Result<Self::V, Self::Stop> {
+        Ok(v)
+    }
+}
+
+/// Counts one iteration into `count`; `false` once it exceeds the `loop-iterations` limit.
+pub(crate) fn count_iteration(count: &mut u64) -> bool {
+    *count += 1;
+    *count <= exactcheck_core::limits::LOOP_ITERATIONS.get()
 }
 
 /// The value of `node`, with `let` slots in `slots`.
@@ -157,7 +172,36 @@ pub(crate) fn eval_node<D: Domain>(
             };
             d.call(*f, a, b)?
         }
+        Node::While(l) => eval_loop(d, l, slots)?,
     })
+}
+
+/// The value of a loop (see [`Loop`] for the two binding orders).
+fn eval_loop<D: Domain>(d: &mut D, l: &Loop, slots: &mut [D::V]) -> Result<D::V, D::Stop> {
+    let step = |d: &mut D, slots: &mut [D::V], initial: bool| -> Result<(), D::Stop> {
+        if l.sequential {
+            for (s, init, update) in &l.vars {
+                let x = eval_node(d, if initial { init } else { update }, slots)?;
+                slots[*s] = d.carry(x)?;
+            }
+        } else {
+            let mut values = Vec::with_capacity(l.vars.len());
+            for (s, init, update) in &l.vars {
+                let x = eval_node(d, if initial { init } else { update }, slots)?;
+                values.push((*s, d.carry(x)?));
+            }
+            for (s, x) in values {
+                slots[s] = x;
+            }
+        }
+        Ok(())
+    };
+    step(d, slots, true)?;
+    while eval_cond(d, &l.cond, slots)? {
+        d.iterate()?;
+        step(d, slots, false)?;
+    }
+    eval_node(d, &l.body, slots)
 }
 
 /// The truth of `cond`.

@@ -21,6 +21,8 @@ pub(super) struct Accumulator {
     domain_errors: usize,
     invalid_inputs: usize,
     undecided: usize,
+    limit_stops: usize,
+    limit_stop: Option<String>,
     refined: usize,
     float_failures: usize,
 }
@@ -41,6 +43,8 @@ impl Accumulator {
             domain_errors: 0,
             invalid_inputs: 0,
             undecided: 0,
+            limit_stops: 0,
+            limit_stop: None,
             refined: 0,
             float_failures: 0,
         }
@@ -51,6 +55,10 @@ impl Accumulator {
             CaseError::InvalidInputs => self.invalid_inputs += 1,
             CaseError::OutsideDomain => self.domain_errors += 1,
             CaseError::Undecided => self.undecided += 1,
+            CaseError::LimitExceeded { limit, value } => {
+                self.limit_stops += 1;
+                self.limit_stop = Some(format!("{limit} = {value}"));
+            }
         }
     }
 
@@ -107,6 +115,8 @@ impl Accumulator {
             domain_errors: self.domain_errors,
             invalid_inputs: self.invalid_inputs,
             undecided: self.undecided,
+            limit_stops: self.limit_stops,
+            limit_stop: self.limit_stop,
             refined: self.refined,
             float_failures: self.float_failures,
             max_ulps: self.max_ulps,

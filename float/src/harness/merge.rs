@@ -41,13 +41,19 @@ pub fn check_consistent(r: &Report) -> Result<(), String> {
             r.first_sample, r.end_sample
         )
     })?;
-    let outcomes = [r.compared, r.domain_errors, r.invalid_inputs, r.undecided]
-        .iter()
-        .try_fold(0usize, |a, &b| a.checked_add(b));
+    let outcomes = [
+        r.compared,
+        r.domain_errors,
+        r.invalid_inputs,
+        r.undecided,
+        r.limit_stops,
+    ]
+    .iter()
+    .try_fold(0usize, |a, &b| a.checked_add(b));
     if outcomes != Some(covered) {
         return Err(format!(
-            "compared {} + outside the domain {} + invalid {} + undecided {} is not the {covered} samples it covers",
-            r.compared, r.domain_errors, r.invalid_inputs, r.undecided
+            "compared {} + outside the domain {} + invalid {} + undecided {} + stopped by a limit {} is not the {covered} samples it covers",
+            r.compared, r.domain_errors, r.invalid_inputs, r.undecided, r.limit_stops
         ));
     }
     for (what, n) in [("refined", r.refined), ("float failures", r.float_failures)] {
@@ -313,6 +319,7 @@ pub fn merge(reports: &[Report]) -> Result<Report, MergeError> {
         &mut out.domain_errors,
         &mut out.invalid_inputs,
         &mut out.undecided,
+        &mut out.limit_stops,
         &mut out.refined,
         &mut out.float_failures,
     ] {
@@ -329,6 +336,10 @@ pub fn merge(reports: &[Report]) -> Result<Report, MergeError> {
         out.domain_errors += r.domain_errors;
         out.invalid_inputs += r.invalid_inputs;
         out.undecided += r.undecided;
+        out.limit_stops += r.limit_stops;
+        if r.limit_stop.is_some() {
+            out.limit_stop.clone_from(&r.limit_stop);
+        }
         out.refined += r.refined;
         out.float_failures += r.float_failures;
         out.max_ulps = out.max_ulps.max(r.max_ulps);

@@ -208,6 +208,14 @@ pub enum CaseError {
     /// zero, behind an irrational root) up to its precision cap, or an exact intermediate
     /// exceeded its size limit: counted, never guessed.
     Undecided,
+    /// The exact evaluation ran past a limit on its work that bounds every sample (the
+    /// `loop-iterations` of a program's loops): counted apart, with the limit named.
+    LimitExceeded {
+        /// The limit's name.
+        limit: &'static str,
+        /// Its value in force.
+        value: u64,
+    },
 }
 
 impl std::fmt::Display for CaseError {
@@ -220,6 +228,10 @@ impl std::fmt::Display for CaseError {
                     "the exact side could not decide a sign up to its precision cap, or exceeded its size limit",
                 )
             }
+            CaseError::LimitExceeded { limit, value } => write!(
+                f,
+                "the exact evaluation exceeds the limit {limit} = {value} (raise it with --limit {limit}=N)"
+            ),
         }
     }
 }

@@ -24,7 +24,12 @@
 //! * `if`, the comparisons `< > <= >= == !=` (variadic as the standard says: a chain of
 //!   adjacent pairs for the ordered ones and `==`, all pairs distinct for `!=`), `and`, `or`,
 //!   `not`, `TRUE`, `FALSE`;
-//! * `(array e ...)` as the body's value, also under `let`, `if`, `!`: one output per element;
+//! * `while` and `while*` loops (FPCore 2.0: `while` binds its variables and updates them in
+//!   parallel, `while*` one after another), [`crate::program::Loop`]; a loop's condition is
+//!   decided exactly, like an `if`'s, and every evaluation counts its iterations against the
+//!   `loop-iterations` limit;
+//! * `(array e ...)` ending the body (as the whole body, or the body of its `let`s, loops and
+//!   `if` branches): one output per element, each the whole body with that element taken;
 //! * rounding contexts: `:precision binary64` (the default when absent) and
 //!   `:round nearestEven`, on the benchmark, in `!` annotations and on arguments
 //!   `(! :precision binary64 x)`. Other properties (`:cite`, `:spec`, `:math-library`, ...) are
@@ -32,7 +37,7 @@
 //!
 //! Everything else is reported per benchmark as `not supported: OP`, never approximated:
 //! the functions without a certified enclosure here (`erf`, `tgamma`, `fmod`, ...), the
-//! derived and non-finite constants (`LN2`, `INFINITY`, ...), loops (`while`, `for`), tensors,
+//! derived and non-finite constants (`LN2`, `INFINITY`, ...), `for` loops, tensors,
 //! `cast`, the classification predicates (`isnan`, ...), calls of other named FPCores, and any
 //! precision other than binary64 or rounding other than nearestEven.
 //!

@@ -334,7 +334,7 @@ fn arrays_give_several_outputs() {
 
 #[test]
 fn unsupported_operations_mark_only_their_benchmark() {
-    let text = "(FPCore (x) :name \"a\" (erf x))\n(FPCore (x) :name \"b\" (+ x 1))\n(FPCore (x) :name \"c\" (while (< x 1) ([x x (* 2 x)]) x))";
+    let text = "(FPCore (x) :name \"a\" (erf x))\n(FPCore (x) :name \"b\" (+ x 1))\n(FPCore (x) :name \"c\" (for ([i 3]) ([y x (* 2 y)]) y))";
     let all = parse_file(text).expect("valid syntax");
     assert_eq!(all.len(), 3);
     assert_eq!(
@@ -342,7 +342,7 @@ fn unsupported_operations_mark_only_their_benchmark() {
         "not supported: erf"
     );
     assert!(all[1].program.is_ok());
-    assert_eq!(all[2].program.as_ref().unwrap_err().op, "while");
+    assert_eq!(all[2].program.as_ref().unwrap_err().op, "for");
     assert_eq!(all[2].line, 3);
 
     let cases = [
@@ -634,3 +634,6 @@ fn a_pre_written_with_let_reads_as_written_directly() {
         Some(Cond::Cmp(CmpOp::Lt, x(0), Node::Add(b(x(1)), b(c(1)))))
     );
 }
+
+#[path = "loop_tests.rs"]
+mod loop_tests;

@@ -1,11 +1,15 @@
 //! From s-expressions to [`Benchmark`]s: the benchmark's frame (identifier, arguments,
-//! properties, body), the domain extracted from `:pre`, and the expression compiler with its
-//! scopes (see the parent module for the supported subset).
+//! properties, body) and the expression compiler, here; the domain extracted from `:pre` in
+//! `pre`; the scopes (`let`, loops) in `scope` (see the parent module for the supported subset).
 use super::sexpr::{check_literal_size, pow_rational, Pos, SExpr, MAX_LITERAL_EXPONENT};
-use super::{Benchmark, Bound, FpCoreError, Interval, Unsupported};
+use super::{Benchmark, FpCoreError, Interval, Unsupported};
 use crate::program::{CmpOp, Cond, Func, Node, PowStyle, Program};
 use crate::rational::Rational;
 use num_bigint::BigInt;
+use pre::{cmp_op, conjuncts, domain, inline_lets, pre_pairs, PrePair};
+
+mod pre;
+mod scope;
 
 /// Why compiling stopped: a malformed benchmark (an error for the whole file) or a construct
 /// outside the supported subset (only this benchmark).
@@ -351,260 +355,6 @@ fn argument(a: &SExpr) -> Result<(String, Option<String>), FpCoreError> {
     }
 }
 
-/// Whether `e` may be substituted for a name bound to it without changing any meaning: a
-/// literal or a symbol (FPCore expressions have no side effects; these cost nothing twice).
-fn inlinable(e: &SExpr) -> bool {
-    match e {
-        SExpr::Sym(s, _) => !s.starts_with(':'),
-        _ => matches!(literal(e), Ok(Some(_))),
-    }
-}
-
-/// `e` with every `let` / `let*` whose bound values are all literals or names replaced by its
-/// body with those values substituted, innermost first (a `let` binding anything else stays).
-/// Used on `:pre` only, so that interval bounds written through a `let` are seen as bounds.
-fn inline_lets(e: &SExpr) -> SExpr {
-    let SExpr::List(items, pos) = e else {
-        return e.clone();
-    };
-    let items: Vec<SExpr> = items.iter().map(inline_lets).collect();
-    let head = items.first().and_then(SExpr::sym);
-    if let (Some(kind @ ("let" | "let*")), [_, bindings, body]) = (head, &items[..]) {
-        let pairs: Option<Vec<(&str, &SExpr)>> = list_items(bindings).and_then(|bs| {
-            bs.iter()
-                .map(|b| match list_items(b) {
-                    Some([SExpr::Sym(n, _), v]) if inlinable(v) => Some((n.as_str(), v)),
-                    _ => None,
-                })
-                .collect()
-        });
-        if let Some(pairs) = pairs {
-            let sequential = kind == "let*";
-            let distinct = sequential
-                || pairs
-                    .iter()
-                    .enumerate()
-                    .all(|(i, (n, _))| pairs[..i].iter().all(|(m, _)| m != n));
-            if distinct {
-                // `let*`: each value sees the bindings before it; `let`: none of them.
-                let mut map: Vec<(&str, SExpr)> = Vec::new();
-                for (n, v) in pairs {
-                    let v = if sequential {
-                        substitute(v, &map)
-                    } else {
-                        Some(v.clone())
-                    };
-                    let Some(v) = v else { break };
-                    map.push((n, v));
-                }
-                if map.len() == list_items(bindings).map_or(0, <[SExpr]>::len) {
-                    if let Some(inlined) = substitute(body, &map) {
-                        return inlined;
-                    }
-                }
-            }
-        }
-    }
-    SExpr::List(items, *pos)
-}
-
-/// `e` with the names of `map` (innermost binding last) replaced by their values; `None` when a
-/// binding form inside would capture a substituted name, or is one this does not scope (loops,
-/// tensors): the caller then keeps its `let`.
-fn substitute(e: &SExpr, map: &[(&str, SExpr)]) -> Option<SExpr> {
-    match e {
-        SExpr::Sym(s, _) => Some(
-            map.iter()
-                .rev()
-                .find(|(n, _)| n == s)
-                .map_or_else(|| e.clone(), |(_, v)| v.clone()),
-        ),
-        SExpr::Num(..) | SExpr::Str(..) => Some(e.clone()),
-        SExpr::List(items, pos) => {
-            let head = items.first().and_then(SExpr::sym);
-            match (head, &items[..]) {
-                (Some(kind @ ("let" | "let*")), [h, bindings, body]) => {
-                    let bs = list_items(bindings)?;
-                    let mut inner: Vec<(&str, SExpr)> = map.to_vec();
-                    let mut new_bs = Vec::with_capacity(bs.len());
-                    let mut bound: Vec<&str> = Vec::new();
-                    for b in bs {
-                        let [SExpr::Sym(n, npos), v] = list_items(b)? else {
-                            return None;
-                        };
-                        let scope = if kind == "let*" { &inner[..] } else { map };
-                        new_bs.push(SExpr::List(
-                            vec![SExpr::Sym(n.clone(), *npos), substitute(v, scope)?],
-                            b.pos(),
-                        ));
-                        bound.push(n);
-                        if kind == "let*" {
-                            inner.retain(|(m, _)| m != n);
-                        }
-                    }
-                    // A substituted value naming a variable this form rebinds would be captured.
-                    let captures = map
-                        .iter()
-                        .any(|(_, v)| v.sym().is_some_and(|s| bound.contains(&s)));
-                    if captures {
-                        return None;
-                    }
-                    inner.retain(|(m, _)| !bound.contains(m));
-                    Some(SExpr::List(
-                        vec![
-                            h.clone(),
-                            SExpr::List(new_bs, bindings.pos()),
-                            substitute(body, &inner)?,
-                        ],
-                        *pos,
-                    ))
-                }
-                (Some(h), _)
-                    if h.starts_with("while")
-                        || h.starts_with("for")
-                        || h.starts_with("tensor") =>
-                {
-                    None
-                }
-                _ => {
-                    // The operator in head position is not a variable.
-                    let mut out = Vec::with_capacity(items.len());
-                    for (i, it) in items.iter().enumerate() {
-                        out.push(if i == 0 && it.sym().is_some() {
-                            it.clone()
-                        } else {
-                            substitute(it, map)?
-                        });
-                    }
-                    Some(SExpr::List(out, *pos))
-                }
-            }
-        }
-    }
-}
-
-/// The conjuncts of a precondition: nested `and`s flattened.
-fn conjuncts<'a>(e: &'a SExpr, out: &mut Vec<&'a SExpr>) {
-    if let SExpr::List(items, _) = e {
-        if items.first().and_then(SExpr::sym) == Some("and") {
-            for c in &items[1..] {
-                conjuncts(c, out);
-            }
-            return;
-        }
-    }
-    out.push(e);
-}
-
-fn cmp_op(s: &str) -> Option<CmpOp> {
-    Some(match s {
-        "<" => CmpOp::Lt,
-        "<=" => CmpOp::Le,
-        ">" => CmpOp::Gt,
-        ">=" => CmpOp::Ge,
-        "==" => CmpOp::Eq,
-        "!=" => CmpOp::Ne,
-        _ => return None,
-    })
-}
-
-/// One adjacent pair of an ordered comparison chain of a `:pre` conjunct.
-enum PrePair<'a> {
-    /// `arg op literal`, normalized with the argument on the left.
-    Bound(usize, CmpOp, Rational),
-    /// Anything else: a condition.
-    Other(CmpOp, &'a SExpr, &'a SExpr),
-}
-
-/// The pairs of a comparison-chain conjunct (`None` for any other conjunct, and for `!=`, which
-/// is never an interval bound).
-fn pre_pairs<'a>(e: &'a SExpr, args: &[String]) -> Result<Option<Vec<PrePair<'a>>>, FpCoreError> {
-    let Some(items) = list_items(e) else {
-        return Ok(None);
-    };
-    let Some(op) = items.first().and_then(SExpr::sym).and_then(cmp_op) else {
-        return Ok(None);
-    };
-    if op == CmpOp::Ne || items.len() < 3 {
-        return Ok(None);
-    }
-    let arg = |x: &SExpr| x.sym().and_then(|s| args.iter().position(|a| a == s));
-    let mut out = Vec::new();
-    for w in items[1..].windows(2) {
-        let (a, b) = (&w[0], &w[1]);
-        let pair = match (arg(a), literal(b)?, literal(a)?, arg(b)) {
-            (Some(i), Some(q), _, _) => PrePair::Bound(i, op, q),
-            (_, _, Some(q), Some(i)) => PrePair::Bound(i, flip(op), q),
-            _ => PrePair::Other(op, a, b),
-        };
-        out.push(pair);
-    }
-    Ok(Some(out))
-}
-
-/// `a op b` <=> `b flip(op) a`.
-fn flip(op: CmpOp) -> CmpOp {
-    match op {
-        CmpOp::Lt => CmpOp::Gt,
-        CmpOp::Le => CmpOp::Ge,
-        CmpOp::Gt => CmpOp::Lt,
-        CmpOp::Ge => CmpOp::Le,
-        CmpOp::Eq => CmpOp::Eq,
-        CmpOp::Ne => CmpOp::Ne,
-    }
-}
-
-/// Is `new` a tighter lower bound than `old`?
-fn tighter_lo(new: &Bound, old: &Bound) -> bool {
-    match (new.value(), old.value()) {
-        (None, _) => false,
-        (Some(_), None) => true,
-        (Some(n), Some(o)) => n > o || (n == o && matches!(new, Bound::Open(_))),
-    }
-}
-
-/// Is `new` a tighter upper bound than `old`?
-fn tighter_hi(new: &Bound, old: &Bound) -> bool {
-    match (new.value(), old.value()) {
-        (None, _) => false,
-        (Some(_), None) => true,
-        (Some(n), Some(o)) => n < o || (n == o && matches!(new, Bound::Open(_))),
-    }
-}
-
-/// The sampling intervals given by the interval bounds of `:pre`.
-fn domain(pre: &SExpr, args: &[String]) -> Result<Vec<Interval>, FpCoreError> {
-    let mut dom = vec![Interval::UNBOUNDED; args.len()];
-    let mut cs = Vec::new();
-    conjuncts(pre, &mut cs);
-    for c in cs {
-        for pair in pre_pairs(c, args)?.unwrap_or_default() {
-            let PrePair::Bound(i, op, q) = pair else {
-                continue;
-            };
-            let (lo, hi) = match op {
-                CmpOp::Lt => (None, Some(Bound::Open(q))),
-                CmpOp::Le => (None, Some(Bound::Closed(q))),
-                CmpOp::Gt => (Some(Bound::Open(q)), None),
-                CmpOp::Ge => (Some(Bound::Closed(q)), None),
-                CmpOp::Eq => (Some(Bound::Closed(q.clone())), Some(Bound::Closed(q))),
-                CmpOp::Ne => unreachable!("`!=` is never split into bounds"),
-            };
-            if let Some(lo) = lo {
-                if tighter_lo(&lo, &dom[i].lo) {
-                    dom[i].lo = lo;
-                }
-            }
-            if let Some(hi) = hi {
-                if tighter_hi(&hi, &dom[i].hi) {
-                    dom[i].hi = hi;
-                }
-            }
-        }
-    }
-    Ok(dom)
-}
-
 /// The expression compiler: the slot counter and the scope (innermost binding last).
 struct Compiler {
     slots: usize,
@@ -755,6 +505,8 @@ impl Compiler {
                 arity(2)?;
                 self.let_expr(op == "let*", &args[0], &args[1])
             }
+            "while" | "while*" => self.while_expr(op == "while*", args, pos),
+            "array" => Err(unsupported("array")),
             "!" => {
                 let (e, pairs) = annotation(items, pos)?;
                 check_context(&pairs)?;
@@ -878,74 +630,6 @@ impl Compiler {
             other => Err(unsupported(other)),
         }
     }
-
-    /// `(let ([x e] ...) body)` and `(let* ...)`.
-    fn let_expr(
-        &mut self,
-        sequential: bool,
-        bindings: &SExpr,
-        body: &SExpr,
-    ) -> Result<Value, Fail> {
-        let Some(list) = list_items(bindings) else {
-            return Err(syntax(
-                bindings.pos(),
-                format!(
-                    "expected the bindings `([x e] ...)`, found {}",
-                    bindings.describe()
-                ),
-            ));
-        };
-        let outer = self.env.len();
-        let mut slots: Vec<(usize, Node)> = Vec::new();
-        let mut pending: Vec<(String, Value)> = Vec::new();
-        for binding in list {
-            let (name, value) = match list_items(binding) {
-                Some([SExpr::Sym(n, _), v]) => (n, v),
-                _ => {
-                    return Err(syntax(
-                        binding.pos(),
-                        format!("expected a binding `[x e]`, found {}", binding.describe()),
-                    ))
-                }
-            };
-            if !sequential && pending.iter().any(|(n, _)| n == name) {
-                return Err(syntax(
-                    binding.pos(),
-                    format!("`{name}` is bound twice in one `let`"),
-                ));
-            }
-            let bound = match self.expr(value)? {
-                Value::Num(n) => {
-                    let s = self.slots;
-                    self.slots += 1;
-                    slots.push((s, n));
-                    Value::Num(Node::Slot(s))
-                }
-                Value::Bool(c) => Value::Bool(c),
-            };
-            if sequential {
-                self.env.push((name.clone(), bound));
-            } else {
-                pending.push((name.clone(), bound));
-            }
-        }
-        self.env.extend(pending);
-        let result = self.expr(body);
-        self.env.truncate(outer);
-        Ok(match result? {
-            Value::Num(n) if slots.is_empty() => Value::Num(n),
-            Value::Num(n) => Value::Num(Node::Let(slots, Box::new(n))),
-            // A condition has no `let`: substitute the bound values into it.
-            Value::Bool(c) => {
-                let mut map: Vec<(usize, Node)> = Vec::new();
-                for (s, n) in slots {
-                    let n = subst_node(&n, &map);
-                    map.push((s, n));
-                }
-                Value::Bool(subst_cond(&c, &map))
-            }
-        })
-    }
 }
 
 /// The expression of `(! props... e)` and its property pairs.
@@ -954,50 +638,4 @@ fn annotation(items: &[SExpr], pos: Pos) -> Result<(&SExpr, Props<'_>), Fail> {
         return Err(syntax(pos, "expected an expression in `(! ...)`"));
     };
     Ok((e, property_pairs(props)?))
-}
-
-/// `n` with every `Slot(s)` of `map` replaced by its node.
-fn subst_node(n: &Node, map: &[(usize, Node)]) -> Node {
-    let b = |x: &Node| Box::new(subst_node(x, map));
-    match n {
-        Node::Slot(s) => map
-            .iter()
-            .find(|(t, _)| t == s)
-            .map_or_else(|| n.clone(), |(_, v)| v.clone()),
-        Node::Input(_) | Node::Const(_) => n.clone(),
-        Node::Neg(a) => Node::Neg(b(a)),
-        Node::Add(x, y) => Node::Add(b(x), b(y)),
-        Node::Sub(x, y) => Node::Sub(b(x), b(y)),
-        Node::Mul(x, y) => Node::Mul(b(x), b(y)),
-        Node::Div(x, y) => Node::Div(b(x), b(y)),
-        Node::Chain(x, rest) => Node::Chain(
-            b(x),
-            rest.iter()
-                .map(|(op, y)| (*op, subst_node(y, map)))
-                .collect(),
-        ),
-        Node::Sqrt(a) => Node::Sqrt(b(a)),
-        Node::Abs(a) => Node::Abs(b(a)),
-        Node::Fma(x, y, z) => Node::Fma(b(x), b(y), b(z)),
-        Node::Min(x, y) => Node::Min(b(x), b(y)),
-        Node::Max(x, y) => Node::Max(b(x), b(y)),
-        Node::Pow(a, k, style) => Node::Pow(b(a), *k, *style),
-        Node::Let(bs, body) => Node::Let(
-            bs.iter().map(|(s, v)| (*s, subst_node(v, map))).collect(),
-            b(body),
-        ),
-        Node::If(c, x, y) => Node::If(Box::new(subst_cond(c, map)), b(x), b(y)),
-        Node::Fun(f, args) => Node::Fun(*f, args.iter().map(|a| subst_node(a, map)).collect()),
-    }
-}
-
-/// `c` with every `Slot(s)` of `map` replaced by its node.
-fn subst_cond(c: &Cond, map: &[(usize, Node)]) -> Cond {
-    match c {
-        Cond::Bool(v) => Cond::Bool(*v),
-        Cond::Cmp(op, x, y) => Cond::Cmp(*op, subst_node(x, map), subst_node(y, map)),
-        Cond::And(cs) => Cond::And(cs.iter().map(|c| subst_cond(c, map)).collect()),
-        Cond::Or(cs) => Cond::Or(cs.iter().map(|c| subst_cond(c, map)).collect()),
-        Cond::Not(c) => Cond::Not(Box::new(subst_cond(c, map))),
-    }
 }

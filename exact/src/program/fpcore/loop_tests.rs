@@ -1,0 +1,178 @@
+//! `while` and `while*`: the binding orders, arrays ending a loop, the iteration limit, and a
+//! benchmark of the vendored suite against an independent exact computation.
+use super::*;
+use crate::program::{ExactStop, REL_BITS};
+use exactcheck_core::limits::LOOP_ITERATIONS;
+use num_rational::BigRational;
+use num_traits::{FromPrimitive, Signed, ToPrimitive};
+
+fn exact_of(v: f64) -> Rational {
+    Rational::from(BigRational::from_f64(v).expect("finite"))
+}
+
+fn exact_values(p: &Program, x: &[f64]) -> Vec<BigRational> {
+    let xs: Vec<Rational> = x.iter().map(|&v| exact_of(v)).collect();
+    p.eval_exact(&xs)
+        .unwrap_or_else(|e| panic!("{e}"))
+        .into_iter()
+        .map(|r| {
+            assert!(r.exact, "a rational loop has an exact value");
+            r.value
+        })
+        .collect()
+}
+
+fn big(n: i64, d: i64) -> BigRational {
+    q(n, d).to_big_rational()
+}
+
+#[test]
+fn while_updates_in_parallel_and_while_star_in_sequence() {
+    // One swap: `while` reads the old values (a, b) = (2, 1); `while*` updates a first, and
+    // b then reads the new a: (2, 2).
+    let par = program("(FPCore () (while (< i 1) ([a 1 b] [b 2 a] [i 0 (+ i 1)]) (array a b)))");
+    let seq = program("(FPCore () (while* (< i 1) ([a 1 b] [b 2 a] [i 0 (+ i 1)]) (array a b)))");
+    assert_eq!(exact_values(&par, &[]), vec![big(2, 1), big(1, 1)]);
+    assert_eq!(exact_values(&seq, &[]), vec![big(2, 1), big(2, 1)]);
+    assert_eq!(par.eval_f64(&[]), vec![2.0, 1.0]);
+    assert_eq!(seq.eval_f64(&[]), vec![2.0, 2.0]);
+    // The initial values: `while` evaluates them in the outer scope (`b` starts from the
+    // argument `a`), `while*` sees the variables before (`b` starts from the loop's `a`).
+    let par = program("(FPCore (a) (while FALSE ([a 5 a] [b a b]) b))");
+    let seq = program("(FPCore (a) (while* FALSE ([a 5 a] [b a b]) b))");
+    assert_eq!(exact_values(&par, &[3.0]), vec![big(3, 1)]);
+    assert_eq!(exact_values(&seq, &[3.0]), vec![big(5, 1)]);
+}
+
+#[test]
+fn a_loop_condition_is_decided_on_the_exact_values() {
+    // 0.1 added ten times: exactly 1 after ten iterations, so the loop runs 10 times exactly;
+    // in doubles the sum is 0.9999999999999999 after ten and it runs an eleventh time.
+    let p = program("(FPCore () (while (< s 1) ([s 0 (+ s 1/10)] [n 0 (+ n 1)]) n))");
+    assert_eq!(exact_values(&p, &[]), vec![big(10, 1)]);
+    assert_eq!(p.eval_f64(&[]), vec![11.0]);
+}
+
+#[test]
+fn a_loop_past_the_iteration_limit_stops_on_both_sides() {
+    let p = program("(FPCore (x) (while TRUE ([x x (+ x 1)]) x))");
+    assert_eq!(
+        p.eval_exact(&[Rational::ONE]).unwrap_err(),
+        ExactStop::LoopLimit
+    );
+    assert!(p.eval_f64(&[1.0])[0].is_nan());
+    let msg = ExactStop::LoopLimit.to_string();
+    assert!(msg.contains("the limit loop-iterations = "), "{msg}");
+    // Exactly at the limit is within it.
+    let at = format!(
+        "(FPCore () (while (< i {}) ([i 0 (+ i 1)]) i))",
+        LOOP_ITERATIONS.get()
+    );
+    let p = program(&at);
+    assert_eq!(
+        exact_values(&p, &[]),
+        vec![BigRational::from_integer(LOOP_ITERATIONS.get().into())]
+    );
+    let past = format!(
+        "(FPCore () (while (<= i {}) ([i 0 (+ i 1)]) i))",
+        LOOP_ITERATIONS.get()
+    );
+    assert_eq!(
+        program(&past).eval_exact(&[]).unwrap_err(),
+        ExactStop::LoopLimit
+    );
+}
+
+#[test]
+fn arrays_end_a_loop_and_loops_nest_in_lets() {
+    let p = program(
+        "(FPCore (x) (let ([h 1/2]) (while* (< i 2) ([y x (* y h)] [i 0 (+ i 1)]) (array y i))))",
+    );
+    assert_eq!(p.outputs.len(), 2);
+    assert_eq!(exact_values(&p, &[3.0]), vec![big(3, 4), big(2, 1)]);
+    // Misuse is a syntax error with its position, never a panic.
+    for bad in [
+        "(FPCore (x) (while (< x 1) ([x x]) x))",
+        "(FPCore (x) (while (< x 1) ([y 0 y] [y 1 y]) x))",
+        "(FPCore (x) (while (< x 1) x))",
+        "(FPCore (x) (while (< x 1) ([y 0 y])))",
+    ] {
+        assert!(parse_file(bad).is_err(), "{bad}");
+    }
+}
+
+/// The reals of a rational, as an f64 (for messages).
+fn show(v: &BigRational) -> f64 {
+    v.to_f64().unwrap_or(f64::NAN)
+}
+
+#[test]
+fn a_nonlinear_loop_is_refined_through_enclosures() {
+    // Newton's iteration for sqrt(2): the exact rationals double in size every step, so the
+    // loop carries them as enclosures; the independent computation here keeps them exact.
+    let p = program("(FPCore (x) (while (< i 12) ([y x (/ (+ y (/ 2 y)) 2)] [i 0 (+ i 1)]) y))");
+    let r = p.eval_exact(&[Rational::ONE]).expect("defined");
+    let mut y = BigRational::from_integer(1.into());
+    let two = BigRational::from_integer(2.into());
+    for _ in 0..12 {
+        y = (&y + &two / &y) / &two;
+    }
+    let rel = ((&r[0].value - &y) / &y).abs();
+    assert!(
+        rel <= BigRational::new(1.into(), num_bigint::BigInt::from(1) << REL_BITS),
+        "{} against {}",
+        show(&r[0].value),
+        show(&y)
+    );
+    assert_eq!(
+        crate::to_f64::rational_to_f64(&r[0].value),
+        crate::to_f64::rational_to_f64(&y)
+    );
+}
+
+#[test]
+fn the_pid_benchmark_matches_an_independent_exact_loop() {
+    let suite = include_str!("../../../../tests/regress/fpbench/salsa.fpcore");
+    let all = parse_file(suite).expect("the suite parses");
+    let pid = all
+        .iter()
+        .find(|b| b.name.as_deref() == Some("PID"))
+        .expect("PID");
+    let p = pid.program.as_ref().expect("PID compiles");
+    let (m, kp, ki, kd, c) = (-5.0, 9.4514, 0.69006, 2.8454, 1.25);
+    let r = p
+        .eval_exact(&[m, kp, ki, kd, c].map(exact_of))
+        .expect("defined");
+    // The loop of the benchmark, written out in exact rationals.
+    let e = |v: f64| exact_of(v).to_big_rational();
+    let (mut m, kp, ki, kd, c) = (e(m), e(kp), e(ki), e(kd), e(c));
+    let dt = big(1, 2);
+    let invdt = big(2, 1);
+    let (mut i, mut eold, mut t) = (big(0, 1), big(0, 1), big(0, 1));
+    let hundredth = big(1, 100);
+    while t < big(100, 1) {
+        let err = &c - &m;
+        let p = &kp * &err;
+        i = &i + &ki * &dt * &err;
+        let d = &kd * &invdt * (&err - &eold);
+        let r = &p + &i + &d;
+        m = &m + &hundredth * &r;
+        eold = err;
+        t = &t + &dt;
+    }
+    let rel = if m == big(0, 1) {
+        r[0].value.abs()
+    } else {
+        ((&r[0].value - &m) / &m).abs()
+    };
+    assert!(
+        rel <= BigRational::new(1.into(), num_bigint::BigInt::from(1) << REL_BITS),
+        "{} against {}",
+        show(&r[0].value),
+        show(&m)
+    );
+    assert_eq!(
+        crate::to_f64::rational_to_f64(&r[0].value),
+        crate::to_f64::rational_to_f64(&m)
+    );
+}
