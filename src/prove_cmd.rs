@@ -42,9 +42,9 @@ use exactcheck_exact::expr::{
 };
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
-    decide_identity, factored, real_zero_free, square_roots, AlgebraicConstants,
-    CoordinateOutcome, Domain, EngineError, FractionIdentity, IdentityReport, IdentitySpec,
-    IdentityVerdict, Part, Phrasing, PointField, RadicalPoint, SquareRoot, Statement, Voice,
+    decide_identity, factored, real_zero_free, square_roots, AlgebraicConstants, CoordinateOutcome,
+    Domain, EngineError, FractionIdentity, IdentityReport, IdentitySpec, IdentityVerdict, Part,
+    Phrasing, PointField, RadicalPoint, SquareRoot, Statement, Voice,
 };
 use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::{Algebraic, Radical, Rational};

@@ -58,7 +58,11 @@ pub(crate) fn prove_with_constants(
         .collect::<Result<Vec<_>, _>>()?;
     let r = sides
         .rhs
-        .map(|r| r.iter().map(|e| abstracted(e, "RHS")).collect::<Result<Vec<_>, _>>())
+        .map(|r| {
+            r.iter()
+                .map(|e| abstracted(e, "RHS"))
+                .collect::<Result<Vec<_>, _>>()
+        })
         .transpose()?;
     let mut rels = Vec::new();
     for (i, (a, b)) in relations.iter().enumerate() {

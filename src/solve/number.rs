@@ -98,9 +98,8 @@ fn kind_of(v: &Value) -> &'static str {
 pub(crate) fn parse_radical(text: &str) -> Result<Radical, String> {
     let quoted = |m: String| format!("{text:?}: {m}");
     match library::resolve(text).map_err(|e| quoted(e.to_string()))? {
-        Val::Scalar(e) => {
-            exactcheck_exact::expr::eval_lowered::<Radical>(&e).map_err(|e| quoted(e.to_string()))
-        }
+        Val::Scalar(e) => exactcheck_exact::expr::eval_lowered::<Radical>(&e)
+            .map_err(|err| quoted(Radical::refusal(&e, err).to_string())),
         v => Err(quoted(format!("{} where a number is expected", v.shape()))),
     }
 }

@@ -71,7 +71,7 @@
 //! * here: the operator plumbing shared by both number types, and parsing (`FromStr`), which
 //!   evaluates an expression of [`crate::expr`] in the number type.
 
-use crate::expr::{parse_expr, Coefficient, ExprError};
+use crate::expr::{parse_expr, Coefficient, Expr, ExprError};
 use crate::rational::Rational;
 use exactcheck_core::limits::LimitError;
 use exactcheck_core::{Field, OrderedField, Sign, Sqrt};
@@ -142,27 +142,37 @@ impl FromStr for Radical {
     /// (including `i`: use [`ComplexRadical`]), an unknown function, division by zero, a square
     /// root not in the type (`sqrt(-1)`, `sqrt(sqrt(2))`), a constant beyond the size limit.
     ///
-    /// A real algebraic number outside the field (`cos(pi/8)`, `sqrt(1 + sqrt(2))`) is refused
-    /// with its exact value and degree ([`ExprError::BadCall`] naming the expression).
+    /// A function value outside the field (`cos(pi/8)`) is refused with its exact value and
+    /// degree ([`ExprError::BadCall`] naming the expression); a square root outside it keeps its
+    /// own reason ([`ExprError::NoSqrt`]).
     fn from_str(s: &str) -> Result<Self, Self::Err> {
         let e = parse_expr(s)?;
-        e.eval_constant().map_err(|err| match err {
-            ExprError::NoSqrt { .. } | ExprError::BadCall { .. } => {
-                match e.eval_constant::<crate::Algebraic>() {
-                    Ok(v) => ExprError::BadCall {
-                        pos: e.pos,
-                        name: e.to_string(),
-                        why: format!(
-                            "its value {v} is a real algebraic number of degree {}, outside the \
-                             field of square roots of rationals that this computation uses",
-                            v.degree()
-                        ),
-                    },
-                    Err(_) => err,
-                }
-            }
+        e.eval_constant().map_err(|err| Radical::refusal(&e, err))
+    }
+}
+
+impl Radical {
+    /// The error of evaluating the constant `e` in this field, made precise: a function value
+    /// outside the field (`cos(pi/8)`, refused by the trigonometric evaluator as a call) is named
+    /// with its exact value and degree; every other error (a square root outside the field
+    /// keeps its own reason) is returned unchanged.
+    #[must_use]
+    pub fn refusal(e: &Expr, err: ExprError) -> ExprError {
+        match err {
+            ExprError::BadCall { .. } => match e.eval_constant::<crate::Algebraic>() {
+                Ok(v) => ExprError::BadCall {
+                    pos: e.pos,
+                    name: e.to_string(),
+                    why: format!(
+                        "its value {v} is a real algebraic number of degree {}, outside the \
+                         field of square roots of rationals that this computation uses",
+                        v.degree()
+                    ),
+                },
+                Err(_) => err,
+            },
             other => other,
-        })
+        }
     }
 }
 
