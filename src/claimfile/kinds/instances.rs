@@ -5,6 +5,7 @@ use super::*;
 
 pub(super) fn instances(check: &Check) -> Result<Outcome, Fault> {
     let Check::Instances {
+        shape,
         lhs,
         rhs,
         conditions,
@@ -74,7 +75,7 @@ pub(super) fn instances(check: &Check) -> Result<Outcome, Fault> {
                 let coords = if lhs.len() == 1 {
                     String::new()
                 } else {
-                    format!(" (coordinate {})", c + 1)
+                    format!(" (in {})", shape.component(c))
                 };
                 let shown: Vec<String> = point.iter().map(|(v, x)| format!("{v} = {x}")).collect();
                 let erratum = Erratum {
@@ -188,7 +189,7 @@ pub(super) fn instances(check: &Check) -> Result<Outcome, Fault> {
         let coords = if lhs.len() == 1 {
             String::new()
         } else {
-            format!(" (coordinate {})", c + 1)
+            format!(" (in {})", shape.component(c))
         };
         match d {
             RandomDecision::Holds {

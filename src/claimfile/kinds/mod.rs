@@ -85,6 +85,8 @@ pub enum Check {
     },
     /// `instances`.
     Instances {
+        /// The one shape of both sides (to name the components).
+        shape: Shape,
         lhs: Vec<Expr>,
         rhs: Vec<Expr>,
         conditions: Conditions,
@@ -315,6 +317,7 @@ pub fn build(c: &RawClaim, defs: &RefCell<Defs>) -> Built<Check> {
                     ));
                 }
                 Check::Instances {
+                    shape,
                     lhs,
                     rhs,
                     conditions,
