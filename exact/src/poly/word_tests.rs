@@ -201,6 +201,11 @@ proptest! {
                 slow[v as usize] = slow[v as usize].max(u64::from(e));
             }
         }
+        // The OR bound: at least the maximum, of the same bit length.
+        let or = or_exps(f.shape, &f.exps, f.len(), cap);
+        for (o, m) in or.iter().zip(&slow) {
+            prop_assert!(o >= m && o.leading_zeros() == m.leading_zeros());
+        }
         prop_assert_eq!(fast, slow);
     }
 
@@ -213,6 +218,70 @@ proptest! {
         check_product(&f, &g)?;
         let h = &f * &(-&g);
         prop_assert_eq!(&h + &(&f * &g), P::zero());
+    }
+}
+
+/// A dense polynomial with holes: every monomial of the box `0..=emax` in `nvars` variables
+/// whose mask bit is set, with coefficients from `coeff` (runs of consecutive exponents of
+/// every length, as the direct dense kernel cuts them).
+fn arb_holey_dense(
+    nvars: u32,
+    emax: u32,
+    coeff: impl Strategy<Value = i64>,
+) -> impl Strategy<Value = P> {
+    let cells = (emax as usize + 1).pow(nvars);
+    prop::collection::vec((any::<bool>(), any::<bool>(), coeff), cells).prop_map(move |cs| {
+        P::from_terms(
+            cs.into_iter()
+                .enumerate()
+                .filter(|(_, (a, b, _))| *a || *b)
+                .map(|(mut k, (_, _, c))| {
+                    let m: Vec<(Var, u32)> = (0..nvars)
+                        .map(|v| {
+                            let e = (k % (emax as usize + 1)) as u32;
+                            k /= emax as usize + 1;
+                            (v as Var, e)
+                        })
+                        .collect();
+                    (m, Rational::from_integer(c))
+                }),
+        )
+    })
+}
+
+/// Coefficients of every word accumulator's range: small, near 2^31, and near 2^62.
+fn arb_word_int() -> impl Strategy<Value = i64> {
+    prop_oneof![
+        -9i64..=9,
+        (-9i64..=9).prop_map(|x| x * ((1 << 31) + 11)),
+        (-(1i64 << 62)..(1i64 << 62)),
+    ]
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 120, ..ProptestConfig::default() })]
+
+    /// The direct dense kernel (runs of consecutive cells, the decode table) against the
+    /// generic kernels, dense factors with holes in one to four variables, coefficients in
+    /// every accumulator's range.
+    #[test]
+    fn run_products_agree(
+        f1 in arb_holey_dense(1, 12, arb_word_int()),
+        g1 in arb_holey_dense(1, 9, arb_word_int()),
+        f2 in arb_holey_dense(2, 5, arb_word_int()),
+        g2 in arb_holey_dense(2, 4, arb_word_int()),
+        f3 in arb_holey_dense(3, 3, -5i64..=5),
+        g3 in arb_holey_dense(3, 2, arb_word_int()),
+        f4 in arb_holey_dense(4, 2, arb_word_int()),
+        g4 in arb_holey_dense(4, 2, -1000i64..=1000),
+    ) {
+        check_product(&f1, &g1)?;
+        check_product(&f2, &g2)?;
+        check_product(&f3, &g3)?;
+        check_product(&f4, &g4)?;
+        // Factors in different variables: runs in one factor only.
+        check_product(&f1, &f2)?;
+        check_product(&g3, &f2)?;
     }
 }
 
@@ -404,4 +473,21 @@ fn cost_model_keeps_binary_powering_for_wide_squares() {
     let f = P::sum((0..12).map(|i| P::var(i) * P::var(i + 1)).collect());
     assert!(!f.recurrence_is_preferred(2));
     assert!(f.recurrence_is_preferred(30));
+}
+
+/// Fateman's dense product at a small size through the direct dense kernel, against the
+/// generic kernels, and its check values (`(1 + x + y + z + w)^6`: 210 terms, the product 1820).
+#[test]
+fn fateman_product_matches_the_reference() {
+    let mut vars = Vars::new();
+    let f: P = parse_poly("1 + x + y + z + w", &mut vars)
+        .expect("parses")
+        .pow(6);
+    let g = &f + &P::one();
+    let h = &f * &g;
+    assert_eq!(f.len(), 210);
+    assert_eq!(h.len(), 1820);
+    assert!(h.is_canonical());
+    assert_eq!(h, f.mul_reference(&g));
+    assert_eq!(f.square(), f.square_reference());
 }

@@ -3,6 +3,7 @@
 
 use super::super::words::*;
 use super::*;
+use std::ops::Range;
 
 /// The largest exponent box a dense product may use (cells of 4 bytes).
 pub(in crate::poly) const DENSE_MAX_CELLS: u64 = 1 << 22;
@@ -84,14 +85,53 @@ pub(in crate::poly) fn mul_dense<A: Arith>(
     Some((out_e, out_c))
 }
 
+/// The terms of one factor of a direct dense product grouped by the top variable's exponent.
+struct Groups {
+    /// Every term's slab-local cell index with its coefficient, in the factor's order.
+    terms: Vec<(usize, i64)>,
+    /// For every top exponent with terms, by decreasing exponent: the exponent, its terms (a
+    /// range of `terms`) and the largest slab-local index among them.
+    groups: Vec<(usize, Range<usize>, usize)>,
+}
+
+impl Groups {
+    /// The groups of a factor with cell indices `idx` (decreasing: the terms are sorted) and
+    /// coefficients `c`, for slabs of `slab` cells: one division per group, none per term.
+    fn new(idx: &[u64], c: &[i64], slab: u64) -> Groups {
+        let mut terms = Vec::with_capacity(idx.len());
+        let mut groups = Vec::new();
+        let mut k = 0;
+        while k < idx.len() {
+            let top = idx[k] / slab;
+            let floor = top * slab;
+            let first = k;
+            let mut high = 0;
+            while k < idx.len() && idx[k] >= floor {
+                let lo = (idx[k] - floor) as usize;
+                high = high.max(lo);
+                terms.push((lo, c[k]));
+                k += 1;
+            }
+            groups.push((top as usize, first..k, high));
+        }
+        Groups { terms, groups }
+    }
+}
+
+/// The packed monomials of the cells of one slab, by slab-local index, when that table is
+/// small (at most this many words); larger slabs decode each output cell by division.
+const DECODE_TABLE_WORDS: usize = 1 << 18;
+
 /// Multiplication in word arithmetic directly in dense arrays of accumulators over the
 /// exponent box (for boxes of at most [`DIRECT_MAX_BYTES`]), one slab at a time: the output is
 /// formed for each exponent `t` of the top variable (the one with the largest stride) from the
 /// highest down, from the pairs of term groups whose top exponents add up to `t` (the factors
-/// are sorted, so each group is a run of terms). Every term product is one multiply-add into
-/// the slab (`stride` cells, small enough to stay in cache), and scanning the slab from the top
-/// yields the result sorted, each monomial decoded from its mixed-radix index (`strides`,
-/// radices `need + 1`). Cells that cancel to zero are skipped like untouched ones.
+/// are sorted, so each group is a stretch of terms). Every term product is one multiply-add
+/// into the slab (`stride` cells, small enough to stay in cache), and scanning the slab from
+/// the top yields the result sorted. Each output monomial is the packed monomial of its
+/// slab-local index (from a table built once by counting in mixed radix, or by division for
+/// slabs too large for the table) with the top exponent `t` set: the inner loops divide
+/// nothing. Cells that cancel to zero are skipped like untouched ones.
 pub(in crate::poly) fn mul_dense_direct<A: WordArith>(
     shape: Shape,
     strides: &[u64],
@@ -110,71 +150,86 @@ where
         .map(|(v, &n)| (v, strides[v], n + 1))
         .collect();
     // The top variable: the largest stride (the last variable in use).
-    let &(_, slab, top_radix) = radices
+    let &(top_var, slab, top_radix) = radices
         .last()
         .expect("a product of two polynomials of two terms or more has a variable");
+    let f = Groups::new(fi, fc, slab);
+    let g = Groups::new(gi, gc, slab);
     let slab = slab as usize;
-    // Runs of equal top exponent: (top exponent, start, end), for f and by exponent for g.
-    let runs = |idx: &[u64]| -> Vec<(usize, usize, usize)> {
-        let mut out: Vec<(usize, usize, usize)> = Vec::new();
-        for (k, &x) in idx.iter().enumerate() {
-            let t = (x / slab as u64) as usize;
-            match out.last_mut() {
-                Some(r) if r.0 == t => r.2 = k + 1,
-                _ => out.push((t, k, k + 1)),
-            }
-        }
-        out
-    };
-    let low =
-        |idx: &[u64]| -> Vec<usize> { idx.iter().map(|&x| (x % slab as u64) as usize).collect() };
-    let (fr, gr) = (runs(fi), runs(gi));
-    let (fl, gl) = (low(fi), low(gi));
-    let mut g_of: Vec<Option<(usize, usize, usize)>> = vec![None; top_radix as usize];
-    for &(t, a, b) in &gr {
-        let top = gl[a..b].iter().copied().max().unwrap_or(0);
-        g_of[t] = Some((a, b, top));
+    let mut g_of: Vec<Option<(Range<usize>, usize)>> = vec![None; top_radix as usize];
+    for (t, r, high) in &g.groups {
+        g_of[*t] = Some((r.clone(), *high));
     }
-    let mut acc = vec![A::ZERO; slab];
     let w = shape.words;
+    let low_radices = &radices[..radices.len() - 1];
+    let table = (slab.saturating_mul(w) <= DECODE_TABLE_WORDS)
+        .then(|| decode_table(shape, low_radices, slab));
+    let mut acc = vec![A::ZERO; slab];
     let mut out_e = Vec::new();
     let mut out_c = Vec::new();
     let mut m = vec![0u64; w];
     for t in (0..top_radix as usize).rev() {
-        let mut touched = false;
-        for &(ta, fa, fb) in &fr {
-            let Some(Some((ga, gb, gtop))) = t.checked_sub(ta).map(|tb| g_of[tb]) else {
+        // One past the highest cell written in this slab (0: none).
+        let mut end = 0;
+        for (ta, fr, fhigh) in &f.groups {
+            let Some(Some((gr, ghigh))) = t.checked_sub(*ta).map(|tb| &g_of[tb]) else {
                 continue;
             };
-            touched = true;
-            let (gcs, gls) = (&gc[ga..gb], &gl[ga..gb]);
-            for (a, &la) in fc[fa..fb].iter().zip(&fl[fa..fb]) {
-                // Every cell of this row is below `la + gtop + 1 <= slab`.
-                let row = &mut acc[la..la + gtop + 1];
-                for (b, &lb) in gcs.iter().zip(gls) {
-                    A::add_mul(&mut row[lb], a, b);
+            end = end.max(fhigh + ghigh + 1);
+            let gterms = &g.terms[gr.clone()];
+            for &(la, a) in &f.terms[fr.clone()] {
+                // Every cell of this row is below `la + ghigh + 1 <= slab`.
+                let row = &mut acc[la..la + ghigh + 1];
+                for &(lb, b) in gterms {
+                    A::add_mul(&mut row[lb], &a, &b);
                 }
             }
         }
-        if !touched {
-            continue;
-        }
-        for (lo, c) in acc.iter_mut().enumerate().rev() {
+        for (lo, c) in acc[..end].iter_mut().enumerate().rev() {
             if A::is_zero(c) {
                 continue;
             }
             if out_c.len() >= max {
                 return None;
             }
-            let idx = (t * slab + lo) as u64;
-            m.fill(0);
-            for &(v, stride, radix) in &radices {
-                shape.set(&mut m, v, (idx / stride) % radix);
+            match &table {
+                Some(table) => m.copy_from_slice(&table[lo * w..(lo + 1) * w]),
+                None => {
+                    m.fill(0);
+                    for &(v, stride, radix) in low_radices {
+                        shape.set(&mut m, v, (lo as u64 / stride) % radix);
+                    }
+                }
             }
+            shape.set(&mut m, top_var, t as u64);
             out_e.extend_from_slice(&m);
             out_c.push(*c);
             *c = A::ZERO;
         }
     }
     Some((out_e, out_c))
+}
+
+/// The packed monomial of every slab-local cell index `0..slab` (`w` words each) for the
+/// variables below the top one (`(variable, stride, radix)`, increasing strides), by counting
+/// in mixed radix instead of dividing.
+fn decode_table(shape: Shape, low: &[(usize, u64, u64)], slab: usize) -> Vec<u64> {
+    let w = shape.words;
+    let mut table = vec![0u64; slab * w];
+    let mut digits = vec![0u64; low.len()];
+    let mut m = vec![0u64; w];
+    for lo in 0..slab {
+        table[lo * w..(lo + 1) * w].copy_from_slice(&m);
+        // The next index: increment the lowest digit, carrying upwards.
+        for (d, &(v, _, radix)) in digits.iter_mut().zip(low) {
+            *d += 1;
+            if *d < radix {
+                shape.set(&mut m, v, *d);
+                break;
+            }
+            *d = 0;
+            shape.set(&mut m, v, 0);
+        }
+    }
+    table
 }

@@ -284,16 +284,37 @@ impl<'a> ProductPlan<'a> {
     /// The plan for `f g` (`ge = Some`, `f` the shorter) or `f^2` (`ge = None`).
     fn new(shape: Shape, fe: &'a [u64], nf: usize, ge: Option<&'a [u64]>, ng: usize) -> Self {
         let cap = shape.words * shape.per_word();
-        let ma = max_exps(shape, fe, nf, cap);
-        let need: Vec<u64> = match ge {
-            Some(ge) => {
-                let mb = max_exps(shape, ge, ng, cap);
-                ma.iter().zip(&mb).map(|(x, y)| x + y).collect()
-            }
-            None => ma.iter().map(|m| 2 * m).collect(),
-        };
         let products = (nf as u64).saturating_mul(ng as u64);
         let limit = DENSE_MAX_CELLS.min(products.saturating_mul(4));
+        // The field-wise OR of the exponents bounds every largest exponent `m` by
+        // `2^(b - 1) <= m <= or` (`b` the bit length of `or`): when even the lower bounds make
+        // the box too large for a dense product, the upper bounds serve for the heap's keys
+        // (they need at most one more bit per variable) and the exact maxima are not needed.
+        let sum_of =
+            |a: &[u64], b: &[u64]| -> Vec<u64> { a.iter().zip(b).map(|(x, y)| x + y).collect() };
+        let oa = or_exps(shape, fe, nf, cap);
+        let ob = ge.map(|ge| or_exps(shape, ge, ng, cap));
+        let low = |v: &[u64]| -> Vec<u64> {
+            v.iter()
+                .map(|&x| {
+                    if x == 0 {
+                        0
+                    } else {
+                        1 << (63 - x.leading_zeros())
+                    }
+                })
+                .collect()
+        };
+        let low_need = sum_of(&low(&oa), &low(ob.as_ref().unwrap_or(&oa)));
+        let need: Vec<u64> = if dense_strides(&low_need, limit).is_none() {
+            sum_of(&oa, ob.as_ref().unwrap_or(&oa))
+        } else {
+            let ma = max_exps(shape, fe, nf, cap);
+            match ge {
+                Some(ge) => sum_of(&ma, &max_exps(shape, ge, ng, cap)),
+                None => ma.iter().map(|m| 2 * m).collect(),
+            }
+        };
         let how = if let Some((cells, strides)) = dense_strides(&need, limit) {
             let fi = dense_indices(shape, fe, nf, &strides);
             let gi = match ge {
@@ -571,6 +592,23 @@ pub(super) fn max_exps(shape: Shape, e: &[u64], n: usize, cap: usize) -> Vec<u64
     let mut m = vec![0u64; cap];
     shape.for_each(&acc, |v, x| m[v] = x);
     m
+}
+
+/// The field-wise OR of the exponents of `n` monomials (`cap` variables): per variable at
+/// least its largest exponent and of the same bit length, one OR per word.
+pub(super) fn or_exps(shape: Shape, e: &[u64], n: usize, cap: usize) -> Vec<u64> {
+    let w = shape.words;
+    let mut acc = vec![0u64; w];
+    if w > 0 {
+        for m in e[..n * w].chunks_exact(w) {
+            for (a, x) in acc.iter_mut().zip(m) {
+                *a |= x;
+            }
+        }
+    }
+    let mut out = vec![0u64; cap];
+    shape.for_each(&acc, |v, x| out[v] = x);
+    out
 }
 
 /// Compact keys for the monomials of a product: every variable gets just the bits that its

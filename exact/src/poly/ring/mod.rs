@@ -614,11 +614,13 @@ impl<C: Ring> Poly<C> {
         };
         let shape = Shape { bits, words };
         let cap = words * shape.per_word();
+        // The keys only need every variable's bit length: the OR of the exponents has the
+        // bit length of their maximum, at one OR per word.
         let mut need = vec![0u64; cap];
         for p in &polys {
             let e = p.exps_in(shape);
-            for (n, m) in need.iter_mut().zip(max_exps(shape, &e, p.len(), cap)) {
-                *n = (*n).max(m);
+            for (n, m) in need.iter_mut().zip(or_exps(shape, &e, p.len(), cap)) {
+                *n |= m;
             }
         }
         let (k, place) = key_layout(&need);
