@@ -15,4 +15,4 @@ mod prove_trig;
 mod robust_field;
 mod robust_prove;
 mod scalars_agree;
-mod w4;
+mod real_roots;

@@ -127,7 +127,7 @@
 //! theorem is evaluated exactly, so a root is exact **exactly when it is rational**, as with the
 //! Sturm isolator ([`UPoly::isolate_roots`], the tests' reference). On its own
 //! ([`integer_real_roots`], [`UPoly::real_roots_descartes`]) an isolating interval is exact when
-//! a split point hits the root; the refined intervals ([`integer_real_roots_to`], the W4
+//! a split point hits the root; the refined intervals ([`integer_real_roots_to`], the real-roots
 //! benchmark) are exact also for the rational roots recognised above (in practice every rational
 //! root with a denominator below about `2^26`, degree at most 1000), which is not a promise for
 //! every rational root.
@@ -141,7 +141,7 @@
 
 mod filtered;
 
-use super::limbs::Limbs;
+use super::limbs::{DyadicHorner, Limbs};
 use super::*;
 use num_bigint::Sign as BigSign;
 use num_traits::{One, Signed, ToPrimitive, Zero};
