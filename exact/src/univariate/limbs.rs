@@ -619,6 +619,47 @@ impl DyadicHorner {
         DyadicHorner { coeffs, a_bits }
     }
 
+    /// The sign (-1, 0, 1) of `a(m / 2^k)` from Horner's scheme with `P` fraction bits,
+    /// truncated (floor) after every multiplication, when the error bound decides it; `None`
+    /// when it does not or `|m| >= 2^64` (the caller evaluates exactly then).
+    ///
+    /// With `x = m / 2^k`, `|x| < 2^e`, the scheme computes `t_i = floor(t_(i+1) x) + a_i 2^P`
+    /// from `t_n = a_n 2^P`; its error against `2^P` times the exact partial sum obeys
+    /// `|err_i| <= 1 + |x| |err_(i+1)|`, so `|err_0| < (n + 1) 2^(e n)`, and a result of at
+    /// least `2^(bits(n + 1) + e n)` in magnitude has the sign of `a(x)`. `P = 128 + e n +
+    /// bits(n + 1)` leaves the filter undecided only where `|a(x)| < 2^-127` or so. The vector
+    /// holds the partial sums (`(n + 1) 2^(A + e (n - i))` times `2^P`, plus the error) and
+    /// the product before the shift (`k + e` bits more), so nothing overflows.
+    pub(super) fn sign_truncated(&self, m: &BigInt, k: u64) -> Option<i8> {
+        if m.bits() > 64 || k > 4096 {
+            return None;
+        }
+        let neg_m = m.sign() == num_bigint::Sign::Minus;
+        let mu = m.magnitude().iter_u64_digits().next().unwrap_or(0);
+        let n = self.coeffs.len() - 1;
+        let k = k as usize;
+        let e = (64 - mu.leading_zeros() as usize).saturating_sub(k);
+        let nb = (usize::BITS - (n + 1).leading_zeros()) as usize;
+        let threshold = nb + e * n;
+        let frac = 128 + threshold;
+        let bits = frac + self.a_bits + e * n + nb + 2 + k + e + 1;
+        let w = bits.div_ceil(64);
+        let neg_at = |i: usize| self.coeffs[i].0 ^ (neg_m && i % 2 == 1);
+        let mut t = vec![0u64; w];
+        add_shifted(&mut t, neg_at(n), &self.coeffs[n].1, frac);
+        for i in (0..n).rev() {
+            mul_word(&mut t, mu);
+            sar_in_place(&mut t, k);
+            add_shifted(&mut t, neg_at(i), &self.coeffs[i].1, frac);
+        }
+        // |t| >= 2^threshold: a magnitude of more than `threshold` bits.
+        if signed_bits(&t) > threshold + 1 {
+            Some(if (t[w - 1] as i64) < 0 { -1 } else { 1 })
+        } else {
+            None
+        }
+    }
+
     /// `2^(k n) a(m / 2^k)` and, when `derivative`, `2^(k (n - 1)) a'(m / 2^k)` (else 0), both
     /// exact; `None` when `|m| >= 2^64` (the caller evaluates on `BigInt`s then).
     ///

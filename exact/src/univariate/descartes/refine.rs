@@ -107,6 +107,16 @@ impl Refiner<'_> {
         }
     }
 
+    /// The sign of `q(x)`, exact: the truncated limb scheme ([`DyadicHorner::sign_truncated`])
+    /// when its error bound decides, else the exact value.
+    pub(super) fn sign_exact(&self, x: &Dyadic) -> Sign {
+        match self.horner.sign_truncated(&x.num, x.exp) {
+            Some(s) if s < 0 => Sign::Negative,
+            Some(_) => Sign::Positive,
+            None => sign_of(&self.value_exact(x)),
+        }
+    }
+
     /// `(q(x) 2^(k n), q'(x) 2^(k (n-1)))` for `x = c / 2^k`.
     pub(super) fn eval_exact(&self, x: &Dyadic) -> (BigInt, BigInt) {
         if let Some(pd) = self.horner.eval(&x.num, x.exp, true) {
@@ -161,7 +171,7 @@ impl Refiner<'_> {
                 let x = at(k);
                 let xr = x.to_rational();
                 if xr > lo && xr < hi {
-                    match sign_of(&self.value_exact(&x)) {
+                    match self.sign_exact(&x) {
                         Sign::Zero => return RootInterval::exact(xr),
                         s if s == s_lo => {
                             lo = xr;
@@ -189,7 +199,7 @@ impl Refiner<'_> {
                 if !(xr > lo && xr < hi) {
                     break;
                 }
-                match sign_of(&self.value_exact(&x)) {
+                match self.sign_exact(&x) {
                     Sign::Zero => return RootInterval::exact(xr),
                     s if s == s_lo => {
                         lo = xr;

@@ -621,6 +621,14 @@ mod dyadic_horner {
     use super::*;
     use proptest::prelude::*;
 
+    fn to_sign(s: i8) -> Sign {
+        match s {
+            -1 => Sign::Negative,
+            0 => Sign::Zero,
+            _ => Sign::Positive,
+        }
+    }
+
     /// The limb evaluation against the `BigInt` Horner schemes of the refinement and the
     /// close-pair splitter; numerators of 65 bits and more are refused.
     fn check(a: &[BigInt], num: BigInt, exp: u64) {
@@ -638,6 +646,39 @@ mod dyadic_horner {
         assert_eq!(v, PairSplitter::eval(a, &x));
         assert_eq!(r.eval_exact(&x), (rv.clone(), rd));
         assert_eq!(r.value_exact(&x), rv);
+        if let Some(s) = DyadicHorner::new(a).sign_truncated(&x.num, exp) {
+            assert_eq!(to_sign(s), sign_of(&rv), "{a:?} at {x:?}");
+        }
+        assert_eq!(r.sign_exact(&x), sign_of(&rv));
+    }
+
+    /// The truncated scheme next to the roots, where it matters: at the ends of the refined
+    /// intervals of the comparison instances (within `2^-53` of a root) it decides, and
+    /// correctly, for the word-sized random and Mignotte coefficients.
+    #[test]
+    fn truncated_signs_next_to_roots() {
+        use super::super::super::bench_instances as inst;
+        let mut decided = 0;
+        for (family, degree, _) in inst::COMPARISON {
+            let a = family.polynomial(degree);
+            let q = square_free_integer(&a);
+            let h = DyadicHorner::new(&q);
+            for ri in inst::solve(&a).iter().filter(|ri| !ri.is_exact()) {
+                for end in [&ri.lo, &ri.hi] {
+                    let exp = end.denom().bits() - 1;
+                    if end.denom() != BigInt::one() << exp {
+                        continue;
+                    }
+                    let x = Dyadic { num: end.numer(), exp };
+                    let exact = sign_of(&PairSplitter::eval(&q, &x));
+                    if let Some(s) = h.sign_truncated(&x.num, exp) {
+                        decided += 1;
+                        assert_eq!(to_sign(s), exact, "{family:?} {degree} at {end}");
+                    }
+                }
+            }
+        }
+        assert!(decided >= 16, "decided only {decided}");
     }
 
     #[test]
@@ -686,6 +727,29 @@ mod dyadic_horner {
                 num = -num;
             }
             check(&a, num, exp);
+        }
+    }
+}
+
+/// The modular gcd degree (fused reduction steps) against the gcd over `Q`, on products with a
+/// planted common factor, for each of the three primes.
+#[test]
+fn gcd_degree_mod_p_matches_rational_gcd() {
+    let mut rng = Rng::new(61);
+    for round in 0..60 {
+        let h = random_poly(&mut rng, round % 7);
+        let f = random_poly(&mut rng, 1 + round % 11);
+        let g = random_poly(&mut rng, 1 + round % 13);
+        let (hu, fu, gu) = (upoly_of(&h), upoly_of(&f), upoly_of(&g));
+        let (a, b) = (fu.mul_impl(&hu), gu.mul_impl(&hu));
+        let expected = a.gcd(&b).degree();
+        let ints = |u: &UPoly| -> Vec<BigInt> { u.coeffs().iter().map(|c| c.numer()).collect() };
+        for &p in &PRIMES {
+            let (am, bm): (Vec<u64>, Vec<u64>) = (
+                ints(&a).iter().map(|c| big_mod(c, p)).collect(),
+                ints(&b).iter().map(|c| big_mod(c, p)).collect(),
+            );
+            assert_eq!(gcd_degree_mod_p(am, bm, p), expected, "{a} and {b} modulo {p}");
         }
     }
 }
