@@ -75,7 +75,11 @@ fn bench_real_roots(c: &mut Criterion) {
     for (family, degree, count) in bench_instances::COMPARISON {
         let coeffs = family.polynomial(degree);
         // The check value (the same count in python-flint and SymPy) before timing.
-        assert_eq!(bench_instances::solve(&coeffs).len(), count, "{family:?} {degree}");
+        assert_eq!(
+            bench_instances::solve(&coeffs).len(),
+            count,
+            "{family:?} {degree}"
+        );
         g.bench_with_input(
             BenchmarkId::new(family.name(), degree),
             &coeffs,

@@ -179,7 +179,12 @@ fn special_points_and_widths() {
     ];
     for p in &cases {
         check_against_sturm(p, &p.real_roots_descartes());
-        for w in [rat(1, 1000), rat(3, 7), rat(5, 1), bench_instances::target_width()] {
+        for w in [
+            rat(1, 1000),
+            rat(3, 7),
+            rat(5, 1),
+            bench_instances::target_width(),
+        ] {
             check_refined(p, &w);
         }
     }

@@ -694,12 +694,7 @@ impl DyadicHorner {
                 add_assign(&mut d, &p);
             }
             mul_word(&mut p, mu);
-            add_shifted(
-                &mut p,
-                neg_at(i),
-                &self.coeffs[i].1,
-                (k as usize) * (n - i),
-            );
+            add_shifted(&mut p, neg_at(i), &self.coeffs[i].1, (k as usize) * (n - i));
         }
         let value = twos_complement_to_bigint(p);
         let slope = if derivative && !d.is_empty() {

@@ -64,6 +64,7 @@
 //! operations. Isolation bisects about `log2(2^k / sep)` times, `sep` the root separation; the
 //! test for a rational root then refines quadratically to `1/(2l)`, `l` as above.
 
+pub mod bench_instances;
 mod bernstein;
 mod descartes;
 mod factor;
@@ -74,7 +75,6 @@ mod resultant;
 #[cfg(test)]
 mod tests;
 mod upoly;
-pub mod bench_instances;
 
 pub use descartes::{integer_real_roots, integer_real_roots_to, MAX_DESCARTES_DEGREE};
 pub use exactcheck_core::roots::{IsolatedRoot, ZeroPolynomial};

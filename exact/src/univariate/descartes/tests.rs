@@ -202,7 +202,9 @@ fn modular_square_free_test() {
     // (x - 1)^2 (x + 2) is not square-free: never "proved".
     assert!(!is_square_free_mod_p(&bigs(&[2, -3, 0, 1])));
     assert!(is_square_free_mod_p(&bigs(&[1, 0, 1])));
-    assert!(is_square_free_mod_p(&super::super::bench_instances::wilkinson(30)));
+    assert!(is_square_free_mod_p(
+        &super::super::bench_instances::wilkinson(30)
+    ));
     // The square-free part of (x - 1)^2 (x + 2) is x^2 + x - 2.
     assert_eq!(
         square_free_integer(&bigs(&[-4, 6, 0, -2])),
@@ -669,7 +671,10 @@ mod dyadic_horner {
                     if end.denom() != BigInt::one() << exp {
                         continue;
                     }
-                    let x = Dyadic { num: end.numer(), exp };
+                    let x = Dyadic {
+                        num: end.numer(),
+                        exp,
+                    };
                     let exact = sign_of(&PairSplitter::eval(&q, &x));
                     if let Some(s) = h.sign_truncated(&x.num, exp) {
                         decided += 1;
@@ -749,7 +754,47 @@ fn gcd_degree_mod_p_matches_rational_gcd() {
                 ints(&a).iter().map(|c| big_mod(c, p)).collect(),
                 ints(&b).iter().map(|c| big_mod(c, p)).collect(),
             );
-            assert_eq!(gcd_degree_mod_p(am, bm, p), expected, "{a} and {b} modulo {p}");
+            assert_eq!(
+                gcd_degree_mod_p(am, bm, p),
+                expected,
+                "{a} and {b} modulo {p}"
+            );
         }
+    }
+}
+
+/// The refinement's window signs (truncated limb scheme, exact limb fallback) against Sturm on
+/// word-sized coefficients, where they decide: random polynomials of higher degree (roots near
+/// and outside the unit circle, so `|x| > 1` at some windows), Mignotte-like pairs
+/// `x^n - 2 (a x - 1)^2`, and clusters `(x - 1/3)(x - 1/3 - 2^-e) g` refined to `2^-53` and
+/// far below it.
+#[test]
+fn word_sized_windows_agree_with_sturm() {
+    let w = super::super::bench_instances::target_width();
+    let fine = Rational::from(BigInt::one()) / Rational::from(BigInt::one() << 200u32);
+    for d in [33usize, 47, 60] {
+        both(&super::super::bench_instances::random(d), &w);
+    }
+    for (n, a) in [(8i64, 3i64), (13, 7), (21, 12), (30, 10)] {
+        let mut c = vec![BigInt::zero(); n as usize + 1];
+        c[n as usize] += 1;
+        c[2] -= 2 * a * a;
+        c[1] += 4 * a;
+        c[0] -= 2;
+        both(&c, &w);
+        both(&c, &fine);
+    }
+    let mut rng = Rng::new(1933);
+    for e in [20u32, 40, 60] {
+        let third = UPoly::from_i64_coeffs(&[-1, 3]);
+        let shifted = UPoly::from_coeffs(vec![
+            -(Rational::new(1, 3).unwrap()
+                + Rational::from(BigInt::one()) / Rational::from(BigInt::one() << e)),
+            Rational::ONE,
+        ]);
+        let g = upoly_of(&random_poly(&mut rng, 9));
+        let c = third.mul_impl(&shifted).mul_impl(&g).integer_coefficients();
+        both(&c, &w);
+        both(&c, &fine);
     }
 }

@@ -1,7 +1,7 @@
 //! The filtered subdivision against the exact one and against Sturm counts.
 
-use super::super::super::isolate::SquareFree;
 use super::super::super::bench_instances;
+use super::super::super::isolate::SquareFree;
 use super::*;
 use exactcheck_core::{OrderedField, Rng};
 use proptest::prelude::*;
