@@ -267,7 +267,7 @@ fn bench_350k_bits(c: &mut Criterion) {
 /// Remainder of a big number by one limb (the step that starts every big-by-word gcd and the
 /// addition of a word-sized rational to a big one): the folding kernel `bigint::rem_1`
 /// against num-bigint's `&BigUint % u64`, at 10^4, 10^5 and 10^6 bits, for a 48-bit divisor
-/// (the size of W2's denominators) and a full 64-bit one.
+/// (the size of the rational-sum workload's denominators) and a full 64-bit one.
 fn bench_rem_1(c: &mut Criterion) {
     let mut group = c.benchmark_group("rem_1");
     group.warm_up_time(Duration::from_millis(300));

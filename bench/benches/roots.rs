@@ -4,12 +4,12 @@
 //! together at degree 40) and on seeded random integer polynomials (coefficients in [-100, 100],
 //! few roots in [0, 1]).
 //!
-//! The group `w4` times W4 at the six comparison sizes (`w4::solve`: all real roots
+//! The group `real_roots` times the real-roots workload at the six comparison sizes (`bench_instances::solve`: all real roots
 //! isolated by Descartes' rule and refined to width 2^-53), each root count asserted first.
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use exactcheck_core::Rng;
-use exactcheck_exact::univariate::w4;
+use exactcheck_exact::univariate::bench_instances;
 use exactcheck_exact::univariate::{
     isolate_real_roots_in, isolate_real_roots_sturm_in, RootInterval, UPoly,
 };
@@ -67,23 +67,27 @@ fn bench(c: &mut Criterion) {
     g.finish();
 }
 
-fn bench_w4(c: &mut Criterion) {
-    let mut g = c.benchmark_group("w4");
+fn bench_real_roots(c: &mut Criterion) {
+    let mut g = c.benchmark_group("real_roots");
     g.sample_size(10);
     g.warm_up_time(Duration::from_millis(300));
     g.measurement_time(Duration::from_secs(2));
-    for (family, degree, count) in w4::COMPARISON {
+    for (family, degree, count) in bench_instances::COMPARISON {
         let coeffs = family.polynomial(degree);
         // The check value (the same count in python-flint and SymPy) before timing.
-        assert_eq!(w4::solve(&coeffs).len(), count, "{family:?} {degree}");
+        assert_eq!(
+            bench_instances::solve(&coeffs).len(),
+            count,
+            "{family:?} {degree}"
+        );
         g.bench_with_input(
             BenchmarkId::new(family.name(), degree),
             &coeffs,
-            |b, coeffs| b.iter(|| w4::solve(coeffs)),
+            |b, coeffs| b.iter(|| bench_instances::solve(coeffs)),
         );
     }
     g.finish();
 }
 
-criterion_group!(benches, bench, bench_w4);
+criterion_group!(benches, bench, bench_real_roots);
 criterion_main!(benches);

@@ -1,11 +1,11 @@
-//! The real-roots probe: times successive calls of `w4::solve` on one instance in one process, with
+//! The real-roots probe: times successive calls of `bench_instances::solve` on one instance in one process, with
 //! the minor page faults of each call (Linux), to separate the first execution of the code
 //! from the steady state; and a target for instruction counts of one call:
 //!
 //! ```sh
 //! cargo build --release -p exactcheck-bench --example real_roots_probe
 //! target/release/examples/real_roots_probe wilkinson 20 4
-//! valgrind --tool=callgrind --toggle-collect='*w4*solve*' \
+//! valgrind --tool=callgrind --toggle-collect='*bench_instances*solve*' \
 //!     target/release/examples/real_roots_probe wilkinson 20 1 --no-warm-up
 //! ```
 //!
@@ -13,7 +13,7 @@
 //! (default 4), and `--no-warm-up` to skip the untimed solve of `x^2 - 2` that
 //! `exactcheck-bench real-roots` and the anchors do first (it is inside the callgrind toggle too).
 
-use exactcheck_exact::univariate::w4;
+use exactcheck_exact::univariate::bench_instances;
 use num_bigint::BigInt;
 use std::process::ExitCode;
 use std::time::Instant;
@@ -37,9 +37,9 @@ fn main() -> ExitCode {
     let usage = "usage: real_roots_probe FAMILY DEGREE [CALLS] [--no-warm-up] \
                  (FAMILY: wilkinson, random, mignotte; DEGREE 1 to 2000)";
     let family = match plain.first().map(|s| s.as_str()) {
-        Some("wilkinson") => w4::Family::Wilkinson,
-        Some("random") => w4::Family::Random,
-        Some("mignotte") => w4::Family::Mignotte,
+        Some("wilkinson") => bench_instances::Family::Wilkinson,
+        Some("random") => bench_instances::Family::Random,
+        Some("mignotte") => bench_instances::Family::Mignotte,
         other => {
             let got = other.unwrap_or("nothing");
             eprintln!("real_roots_probe: unknown family `{got}`; {usage}");
@@ -67,12 +67,12 @@ fn main() -> ExitCode {
     }
     let coeffs = family.polynomial(degree);
     if warm_up {
-        let _ = w4::solve(&[BigInt::from(-2), BigInt::from(0), BigInt::from(1)]);
+        let _ = bench_instances::solve(&[BigInt::from(-2), BigInt::from(0), BigInt::from(1)]);
     }
     for call in 1..=calls {
         let before = minor_faults();
         let start = Instant::now();
-        let roots = w4::solve(&coeffs);
+        let roots = bench_instances::solve(&coeffs);
         let elapsed = start.elapsed();
         let faults = match (before, minor_faults()) {
             (Some(a), Some(b)) => (b - a).to_string(),

@@ -124,7 +124,7 @@ pub enum Workload {
         /// The degree (at least 1, at most 2000).
         #[arg(long)]
         degree: usize,
-        /// Print one JSON line (as `bench/scripts/anchors/w4_roots.py`) instead of text.
+        /// Print one JSON line (as `bench/scripts/anchors/real_roots.py`) instead of text.
         #[arg(long)]
         json: bool,
     },

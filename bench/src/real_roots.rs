@@ -1,5 +1,5 @@
 //! The workload `real-roots`: exact real root isolation. All real roots of one of the
-//! benchmark's polynomials ([`exactcheck_exact::univariate::w4`]: Wilkinson products, SplitMix64
+//! benchmark's polynomials ([`exactcheck_exact::univariate::bench_instances`]: Wilkinson products, SplitMix64
 //! random polynomials, Mignotte polynomials), each in an interval of width at most `2^-53`, by
 //! Descartes' rule with Newton refinement ([`exactcheck_exact::univariate::integer_real_roots_to`]).
 //! The timed region is the anchors' (`bench/scripts/anchors/real_roots.py`): from the integer
@@ -13,7 +13,7 @@ use clap::ValueEnum;
 use exactcheck::args::check_count;
 use exactcheck::Error;
 use exactcheck_core::Ring;
-use exactcheck_exact::univariate::w4::{self, Family, MAX_W4_DEGREE};
+use exactcheck_exact::univariate::bench_instances::{self, Family, MAX_BENCH_DEGREE};
 use exactcheck_exact::univariate::RootInterval;
 use exactcheck_exact::Rational;
 use num_bigint::BigInt;
@@ -44,15 +44,15 @@ impl From<RootFamily> for Family {
 /// Runs the workload.
 ///
 /// # Errors
-/// [`Error::Usage`] when the degree is 0 or above [`MAX_W4_DEGREE`].
+/// [`Error::Usage`] when the degree is 0 or above [`MAX_BENCH_DEGREE`].
 pub fn run(family: RootFamily, degree: usize, json: bool) -> Result<String, Error> {
-    let degree = check_count("--degree", degree, MAX_W4_DEGREE, "")?;
+    let degree = check_count("--degree", degree, MAX_BENCH_DEGREE, "")?;
     let family = Family::from(family);
     let coeffs = family.polynomial(degree);
-    let warm_up = w4::solve(&[BigInt::from(-2), BigInt::zero(), BigInt::one()]);
+    let warm_up = bench_instances::solve(&[BigInt::from(-2), BigInt::zero(), BigInt::one()]);
     debug_assert_eq!(warm_up.len(), 2);
     let watch = Stopwatch::start();
-    let roots = w4::solve(&coeffs);
+    let roots = bench_instances::solve(&coeffs);
     let Elapsed { wall: seconds, cpu } = watch.elapsed();
     let name = family.name();
     Ok(if json {

@@ -2,7 +2,7 @@
 //! its anchors, and bad sizes are one line naming the flag and the limit with exit status 2.
 //! No test measures time.
 
-use exactcheck_exact::univariate::w4;
+use exactcheck_exact::univariate::bench_instances;
 use exactcheck_exact::Rational;
 use std::process::{Command, Output};
 use std::time::{Duration, Instant};
@@ -138,7 +138,7 @@ fn real_roots_json_line() {
     assert_eq!(v["real_roots"], 8);
     let roots = v["roots"].as_array().expect("a list");
     assert_eq!(roots.len(), 8);
-    let w = w4::target_width();
+    let w = bench_instances::target_width();
     for (j, r) in roots.iter().enumerate() {
         let lo: Rational = r[0].as_str().expect("a string").parse().expect("p/q");
         let hi: Rational = r[1].as_str().expect("a string").parse().expect("p/q");

@@ -79,6 +79,19 @@
 //! rounding noise (usually gcd 1, so double roots are not merged), signs of coefficients near a
 //! root may be wrong, and bisection stops at the resolution of `f64` (see [`unit_roots`]).
 //!
+//! # Which isolator where
+//!
+//! This is the workspace's isolator for scalars other than the rationals: the radical field
+//! (`exactcheck_exact::Radical`), `f64`, and the generic geometry of this crate, which cannot
+//! name the exact crate's types. Polynomials over `Q` are isolated by
+//! `exactcheck_exact::univariate::isolate_real_roots` (Descartes' rule on the integer
+//! coefficients, filtered by `f64`, every rational root exact): `solve` routes its rational
+//! scalar there, and `exact::univariate` keeps no Bernstein subdivision of its own over `Q`.
+//! The integer algorithm needs a common denominator and word-size modular arithmetic, which a
+//! generic field does not have; this one needs only field operations and exact signs. The
+//! quadratic interval refinement below ([`refine_isolating_with`]) is the one refinement of
+//! both: the exact crate's `UPoly::refine` calls it.
+//!
 //! # Why hand-written
 //!
 //! No crate isolates roots in the Bernstein basis exactly and generically over a scalar trait

@@ -12,7 +12,7 @@ mod prove_fractions;
 mod prove_library;
 mod prove_sqrt;
 mod prove_trig;
+mod real_roots;
 mod robust_field;
 mod robust_prove;
 mod scalars_agree;
-mod w4;

@@ -119,6 +119,12 @@
 //!   `(sgn(lo), sgn(hi))` certify `[g - 2h, g + 2h]`, of width `4h <= width`. Every bracket
 //!   update is an exact sign, so the result is certified whatever the `f64` steps did; a zero
 //!   value is an exact root.
+//! * **Limb evaluation.** Where `m` has a word numerator, the exact values come from Horner's
+//!   scheme on one two's complement limb vector per value (`limbs::DyadicHorner`), and the
+//!   window signs first from the same scheme truncated to `128 + e n + log2(n + 1)` fraction
+//!   bits (`|m| < 2^e`), whose error stays below `(n + 1) 2^(e n)` units: a larger result has
+//!   the exact sign, a smaller one is evaluated exactly. The `BigInt` schemes are the
+//!   reference of the tests.
 //!
 //! # Which isolator where
 //! This isolator serves the workspace's real-root API ([`super::isolate_real_roots`],
@@ -127,7 +133,7 @@
 //! theorem is evaluated exactly, so a root is exact **exactly when it is rational**, as with the
 //! Sturm isolator ([`UPoly::isolate_roots`], the tests' reference). On its own
 //! ([`integer_real_roots`], [`UPoly::real_roots_descartes`]) an isolating interval is exact when
-//! a split point hits the root; the refined intervals ([`integer_real_roots_to`], the W4
+//! a split point hits the root; the refined intervals ([`integer_real_roots_to`], the real-roots
 //! benchmark) are exact also for the rational roots recognised above (in practice every rational
 //! root with a denominator below about `2^26`, degree at most 1000), which is not a promise for
 //! every rational root.
@@ -141,7 +147,7 @@
 
 mod filtered;
 
-use super::limbs::Limbs;
+use super::limbs::{DyadicHorner, Limbs};
 use super::*;
 use num_bigint::Sign as BigSign;
 use num_traits::{One, Signed, ToPrimitive, Zero};

@@ -1,5 +1,6 @@
-//! Real root isolation: Sturm chains, bisection driven by Sturm counts, exact rational roots,
-//! refinement, sign charts, and the root intervals' comparisons.
+//! Real root isolation by Sturm chains (bisection driven by Sturm counts, exact rational roots:
+//! the reference of the tests), refinement and comparisons of isolating intervals, sign charts
+//! (on the production isolator, [`isolate_real_roots`]), and the root intervals themselves.
 
 use super::*;
 use std::cmp::Ordering;
@@ -182,54 +183,64 @@ impl SquareFree {
         RootInterval { lo, hi }
     }
 
-    /// Refines an isolating interval to width at most `width`.
+    /// Refines an isolating interval to width at most `width` ([`refine_simple`]).
     pub(super) fn refine(&self, ri: &RootInterval, width: &Rational) -> RootInterval {
-        if ri.is_exact() {
-            return ri.clone();
-        }
-        let p = self.poly();
-        let s_lo = p.sign_at(&ri.lo);
-        let s_hi = p.sign_at(&ri.hi);
-        assert!(
-            s_lo != Sign::Zero && s_hi == sign_neg(s_lo),
-            "UPoly::refine: {ri} is not an isolating interval of a root of this polynomial"
-        );
-        if ri.width() <= *width {
-            return ri.clone();
-        }
-        assert!(
-            width.signum() == Sign::Positive,
-            "UPoly::refine: the width must be positive"
-        );
-        match exactcheck_core::roots::refine_isolating_with(
-            |x| p.eval(x),
-            |x| Some(Rational::from(floor(&(x.add_ref(&half()))))),
-            ri.lo.clone(),
-            ri.hi.clone(),
-            width,
-        ) {
-            IsolatedRoot::Exact(r) => RootInterval::exact(r),
-            IsolatedRoot::Between(lo, hi) => RootInterval { lo, hi },
-        }
+        refine_simple(self.poly(), ri, width)
     }
+}
 
-    /// `x` compared with the root isolated by `ri`.
-    pub(super) fn compare(&self, ri: &RootInterval, x: &Rational) -> Ordering {
-        if ri.is_exact() {
-            return x.cmp(&ri.lo);
-        }
-        if *x <= ri.lo {
-            return Ordering::Less;
-        }
-        if *x >= ri.hi {
-            return Ordering::Greater;
-        }
-        let p = self.poly();
-        match p.sign_at(x) {
-            Sign::Zero => Ordering::Equal,
-            s if s == p.sign_at(&ri.lo) => Ordering::Less,
-            _ => Ordering::Greater,
-        }
+/// Refines `ri`, an isolating interval of a root of the square-free `p`, to width at most
+/// `width`: Abbott's quadratic interval refinement on the sign of `p`, which changes across the
+/// root (`exactcheck_core::roots::refine_isolating_with`, rounding to the nearest integer).
+///
+/// # Panics
+/// When `ri` is not exact and `p` has no opposite non-zero signs at its ends, or when
+/// `width <= 0` and the interval is wider than that.
+pub(super) fn refine_simple(p: &UPoly, ri: &RootInterval, width: &Rational) -> RootInterval {
+    if ri.is_exact() {
+        return ri.clone();
+    }
+    let s_lo = p.sign_at(&ri.lo);
+    let s_hi = p.sign_at(&ri.hi);
+    assert!(
+        s_lo != Sign::Zero && s_hi == sign_neg(s_lo),
+        "UPoly::refine: {ri} is not an isolating interval of a root of this polynomial"
+    );
+    if ri.width() <= *width {
+        return ri.clone();
+    }
+    assert!(
+        width.signum() == Sign::Positive,
+        "UPoly::refine: the width must be positive"
+    );
+    match exactcheck_core::roots::refine_isolating_with(
+        |x| p.eval(x),
+        |x| Some(Rational::from(floor(&(x.add_ref(&half()))))),
+        ri.lo.clone(),
+        ri.hi.clone(),
+        width,
+    ) {
+        IsolatedRoot::Exact(r) => RootInterval::exact(r),
+        IsolatedRoot::Between(lo, hi) => RootInterval { lo, hi },
+    }
+}
+
+/// `x` compared with the root of the square-free `p` isolated by `ri`: the sign of `p` changes
+/// across that root only.
+pub(super) fn compare_simple(p: &UPoly, ri: &RootInterval, x: &Rational) -> Ordering {
+    if ri.is_exact() {
+        return x.cmp(&ri.lo);
+    }
+    if *x <= ri.lo {
+        return Ordering::Less;
+    }
+    if *x >= ri.hi {
+        return Ordering::Greater;
+    }
+    match p.sign_at(x) {
+        Sign::Zero => Ordering::Equal,
+        s if s == p.sign_at(&ri.lo) => Ordering::Less,
+        _ => Ordering::Greater,
     }
 }
 
@@ -276,12 +287,14 @@ impl UPoly {
         SquareFree::new(self).isolate()
     }
 
-    /// The distinct real roots with their multiplicities, increasing.
+    /// The distinct real roots with their multiplicities, increasing: the intervals of
+    /// [`isolate_real_roots`] (Descartes' rule; exact exactly when the root is rational), each
+    /// root's multiplicity read off the square-free decomposition.
     pub fn roots(&self) -> Vec<Root> {
         if self.is_constant() {
             return Vec::new();
         }
-        let intervals = SquareFree::new(self).isolate();
+        let intervals = isolate_real_roots(self);
         let factors = self.square_free_decomposition();
         intervals
             .into_iter()
@@ -314,7 +327,7 @@ impl UPoly {
             return ri.clone();
         }
         assert!(!self.is_zero(), "UPoly::refine: the zero polynomial");
-        SquareFree::new(self).refine(ri, width)
+        refine_simple(&self.primitive_square_free_part(), ri, width)
     }
 
     /// [`UPoly::refine`] within the `bisection` limit: the halvings from the width of `ri` down
@@ -342,7 +355,7 @@ impl UPoly {
         if ri.is_exact() || self.is_zero() {
             return x.cmp(&ri.lo);
         }
-        SquareFree::new(self).compare(ri, x)
+        compare_simple(&self.primitive_square_free_part(), ri, x)
     }
 
     /// The roots with multiplicities and the sign on every gap between them (see

@@ -497,3 +497,216 @@ impl Limbs {
             .then_some(Limbs { w, d: s })
     }
 }
+
+// ------------------------------------------------------------------------ dyadic evaluation
+
+/// An integer polynomial prepared for exact evaluation at dyadic points `m / 2^k` whose
+/// numerator is a word (`|m| < 2^64`), the refinement's evaluation points: each coefficient's
+/// sign and magnitude limbs, extracted once.
+///
+/// Horner's scheme runs on one two's complement limb vector per value, in place: a step is a
+/// multiplication by the word `|m|` (one `u128` product per limb) and the addition of the
+/// coefficient at its bit offset `k (n - i)` (a carry chain over its own limbs, propagated only
+/// while it carries), where the `BigInt` scheme (`PairSplitter::eval`, the tests' reference)
+/// allocates a shifted copy of every coefficient and a product per step. The vector grows with
+/// the bound on the partial sums, so early steps touch few limbs.
+pub(super) struct DyadicHorner {
+    /// `(negative, magnitude limbs)` from the constant term up.
+    coeffs: Vec<(bool, Vec<u64>)>,
+    /// The largest coefficient bit length.
+    a_bits: usize,
+}
+
+/// `v *= m` modulo `2^(64 len)` (exact for two's complement values that fit).
+#[inline]
+fn mul_word(v: &mut [u64], m: u64) {
+    let mut carry = 0u64;
+    for x in v.iter_mut() {
+        let p = u128::from(*x) * u128::from(m) + u128::from(carry);
+        *x = p as u64;
+        carry = (p >> 64) as u64;
+    }
+}
+
+/// `v += (-1)^neg mag 2^s` modulo `2^(64 len)`; the carry (borrow) stops as soon as it is 0.
+#[inline]
+fn add_shifted(v: &mut [u64], neg: bool, mag: &[u64], s: usize) {
+    let (q, r) = (s / 64, s % 64);
+    let len = v.len();
+    let mut carry = false;
+    let mut t = 0;
+    while t <= mag.len() {
+        let hi = mag.get(t).copied().unwrap_or(0);
+        let lo = if t > 0 { mag[t - 1] } else { 0 };
+        let limb = if r == 0 {
+            hi
+        } else {
+            (hi << r) | (lo >> (64 - r))
+        };
+        let idx = q + t;
+        if idx >= len {
+            debug_assert!(limb == 0 && !carry, "add_shifted: the value does not fit");
+            return;
+        }
+        if neg {
+            let (d1, b1) = v[idx].overflowing_sub(limb);
+            let (d2, b2) = d1.overflowing_sub(u64::from(carry));
+            v[idx] = d2;
+            carry = b1 | b2;
+        } else {
+            let (s1, c1) = v[idx].overflowing_add(limb);
+            let (s2, c2) = s1.overflowing_add(u64::from(carry));
+            v[idx] = s2;
+            carry = c1 | c2;
+        }
+        t += 1;
+    }
+    let mut idx = q + t;
+    while carry && idx < len {
+        if neg {
+            let (d, b) = v[idx].overflowing_sub(1);
+            v[idx] = d;
+            carry = b;
+        } else {
+            let (s, c) = v[idx].overflowing_add(1);
+            v[idx] = s;
+            carry = c;
+        }
+        idx += 1;
+    }
+}
+
+/// `v` extended to `len` limbs by its sign.
+#[inline]
+fn sign_extend(v: &mut Vec<u64>, len: usize) {
+    if len > v.len() {
+        let fill = if v.last().is_some_and(|&l| (l as i64) < 0) {
+            u64::MAX
+        } else {
+            0
+        };
+        v.resize(len, fill);
+    }
+}
+
+/// The two's complement number `v` as a `BigInt`.
+fn twos_complement_to_bigint(mut v: Vec<u64>) -> BigInt {
+    let neg = v.last().is_some_and(|&l| (l as i64) < 0);
+    if neg {
+        crate::bigint::negate_twos_complement(&mut v);
+    }
+    let m = BigInt::from(crate::bigint::biguint_from_limbs(&v));
+    if neg {
+        -m
+    } else {
+        m
+    }
+}
+
+impl DyadicHorner {
+    /// The polynomial with these coefficients (constant term first, at least one).
+    pub(super) fn new(a: &[BigInt]) -> DyadicHorner {
+        let coeffs = a
+            .iter()
+            .map(|c| {
+                (
+                    c.sign() == num_bigint::Sign::Minus,
+                    c.magnitude().iter_u64_digits().collect(),
+                )
+            })
+            .collect();
+        let a_bits = a.iter().map(|c| c.bits() as usize).max().unwrap_or(0);
+        DyadicHorner { coeffs, a_bits }
+    }
+
+    /// The sign (-1, 0, 1) of `a(m / 2^k)` from Horner's scheme with `P` fraction bits,
+    /// truncated (floor) after every multiplication, when the error bound decides it; `None`
+    /// when it does not or `|m| >= 2^64` (the caller evaluates exactly then).
+    ///
+    /// With `x = m / 2^k`, `|x| < 2^e`, the scheme computes `t_i = floor(t_(i+1) x) + a_i 2^P`
+    /// from `t_n = a_n 2^P`; its error against `2^P` times the exact partial sum obeys
+    /// `|err_i| <= 1 + |x| |err_(i+1)|`, so `|err_0| < (n + 1) 2^(e n)`, and a result of at
+    /// least `2^(bits(n + 1) + e n)` in magnitude has the sign of `a(x)`. `P = 128 + e n +
+    /// bits(n + 1)` leaves the filter undecided only where `|a(x)| < 2^-127` or so. The vector
+    /// holds the partial sums (`(n + 1) 2^(A + e (n - i))` times `2^P`, plus the error) and
+    /// the product before the shift (`k + e` bits more), so nothing overflows.
+    pub(super) fn sign_truncated(&self, m: &BigInt, k: u64) -> Option<i8> {
+        if m.bits() > 64 || k > 4096 {
+            return None;
+        }
+        let neg_m = m.sign() == num_bigint::Sign::Minus;
+        let mu = m.magnitude().iter_u64_digits().next().unwrap_or(0);
+        let n = self.coeffs.len() - 1;
+        let k = k as usize;
+        let e = (64 - mu.leading_zeros() as usize).saturating_sub(k);
+        let nb = (usize::BITS - (n + 1).leading_zeros()) as usize;
+        let threshold = nb + e * n;
+        let frac = 128 + threshold;
+        let bits = frac + self.a_bits + e * n + nb + 2 + k + e + 1;
+        let w = bits.div_ceil(64);
+        let neg_at = |i: usize| self.coeffs[i].0 ^ (neg_m && i % 2 == 1);
+        let mut t = vec![0u64; w];
+        add_shifted(&mut t, neg_at(n), &self.coeffs[n].1, frac);
+        for i in (0..n).rev() {
+            mul_word(&mut t, mu);
+            sar_in_place(&mut t, k);
+            add_shifted(&mut t, neg_at(i), &self.coeffs[i].1, frac);
+        }
+        // |t| >= 2^threshold: a magnitude of more than `threshold` bits.
+        if signed_bits(&t) > threshold + 1 {
+            Some(if (t[w - 1] as i64) < 0 { -1 } else { 1 })
+        } else {
+            None
+        }
+    }
+
+    /// `2^(k n) a(m / 2^k)` and, when `derivative`, `2^(k (n - 1)) a'(m / 2^k)` (else 0), both
+    /// exact; `None` when `|m| >= 2^64` (the caller evaluates on `BigInt`s then).
+    ///
+    /// With `|m| < 2^B` and `2^k <= 2^B`, the partial sums of the value after the coefficient
+    /// of degree `i` are `sum_(l >= i) a_l m^(l - i) 2^(k (n - l))`, below
+    /// `(n + 1) 2^(A + B (n - i))` in magnitude (`A` the coefficients' bit length), and those
+    /// of the derivative below `n (n + 1) 2^(A + B (n - i))`; the vectors hold
+    /// `A + B (n - i) + 2 bits(n + 1) + 2` bits at that step, so nothing overflows. A negative
+    /// `m` is evaluated as `a(-y)` at `y = |m| / 2^k` (odd coefficients negated), the
+    /// derivative negated back.
+    pub(super) fn eval(&self, m: &BigInt, k: u64, derivative: bool) -> Option<(BigInt, BigInt)> {
+        if m.bits() > 64 {
+            return None;
+        }
+        let neg_m = m.sign() == num_bigint::Sign::Minus;
+        let mu = m.magnitude().iter_u64_digits().next().unwrap_or(0);
+        let n = self.coeffs.len() - 1;
+        let b = (64 - mu.leading_zeros() as usize).max(k as usize);
+        let slack = 2 * (usize::BITS - (n + 1).leading_zeros()) as usize + 2;
+        let limbs_at = |i: usize| (self.a_bits + b * (n - i) + slack).div_ceil(64);
+        let neg_at = |i: usize| self.coeffs[i].0 ^ (neg_m && i % 2 == 1);
+        let mut p: Vec<u64> = vec![0; limbs_at(n)];
+        add_shifted(&mut p, neg_at(n), &self.coeffs[n].1, 0);
+        let mut d: Vec<u64> = Vec::new();
+        for i in (0..n).rev() {
+            let len = limbs_at(i);
+            sign_extend(&mut p, len);
+            if derivative {
+                // d = d m + p (before p's step)
+                sign_extend(&mut d, len);
+                mul_word(&mut d, mu);
+                add_assign(&mut d, &p);
+            }
+            mul_word(&mut p, mu);
+            add_shifted(&mut p, neg_at(i), &self.coeffs[i].1, (k as usize) * (n - i));
+        }
+        let value = twos_complement_to_bigint(p);
+        let slope = if derivative && !d.is_empty() {
+            let s = twos_complement_to_bigint(d);
+            if neg_m {
+                -s
+            } else {
+                s
+            }
+        } else {
+            BigInt::from(0)
+        };
+        Some((value, slope))
+    }
+}

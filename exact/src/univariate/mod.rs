@@ -22,8 +22,9 @@
 //! [`isolate_real_roots_sturm`], [`isolate_real_roots_in`], [`refine_real_root`],
 //! [`sign_at_real_root`], [`common_real_roots_in`], [`descartes_bound`]): one result type,
 //! [`RootInterval`], exact exactly when the root is rational. Production isolates by Descartes'
-//! rule (module `descartes`); the Sturm bisection below is the reference and the engine of the
-//! sign charts.
+//! rule (module `descartes`), and so do [`UPoly::roots`], [`UPoly::sign_chart`] and the sets
+//! built on them; the Sturm bisection below ([`UPoly::isolate_roots`], [`UPoly::count_roots`])
+//! is the reference of the tests.
 //!
 //! # Algorithms
 //! * Division with remainder over Q; gcds by Euclid's algorithm in which every remainder is
@@ -47,8 +48,9 @@
 //!   `log2 l` steps, thousands for coefficients of a thousand digits) leaves at most one
 //!   candidate `k / l`, which is evaluated exactly. Hence [`RootInterval::is_exact`] holds **exactly when the root is
 //!   rational**.
-//! * Refinement ([`UPoly::refine`]) narrows the interval on the sign of the square-free part,
-//!   which changes across every isolated root, by Abbott's quadratic interval refinement
+//! * Refinement ([`UPoly::refine`]) narrows the interval on the sign of the primitive
+//!   square-free part ([`UPoly::primitive_square_free_part`], no Sturm chain), which changes
+//!   across every isolated root, by Abbott's quadratic interval refinement
 //!   (`exactcheck_core::roots::refine_isolating`: secant predictions on a grid of `N` parts with
 //!   `N` squared on success, a bisection on failure), so a width of `2^-10240` costs a few dozen
 //!   evaluations, not 10,240 bisections; [`UPoly::try_refine`] checks the `bisection` limit
@@ -62,6 +64,7 @@
 //! operations. Isolation bisects about `log2(2^k / sep)` times, `sep` the root separation; the
 //! test for a rational root then refines quadratically to `1/(2l)`, `l` as above.
 
+pub mod bench_instances;
 mod bernstein;
 mod descartes;
 mod factor;
@@ -72,7 +75,6 @@ mod resultant;
 #[cfg(test)]
 mod tests;
 mod upoly;
-pub mod w4;
 
 pub use descartes::{integer_real_roots, integer_real_roots_to, MAX_DESCARTES_DEGREE};
 pub use exactcheck_core::roots::{IsolatedRoot, ZeroPolynomial};

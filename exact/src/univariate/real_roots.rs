@@ -140,8 +140,11 @@ pub fn refine_real_root(p: &UPoly, root: &RootInterval, width: &Rational) -> Roo
 /// The sign of `q` at the root of `p` isolated by `root` (as returned above), decided exactly:
 /// an exact root is substituted; otherwise `q` vanishes at the root exactly when
 /// `gcd(p, q)` changes sign across `root` (the gcd's square-free part has the root as a simple
-/// root), and else `root` is refined until `q` has no root in its closure, where the sign of `q`
-/// at the midpoint is the answer.
+/// root), and else `root` is halved (quadratic refinement on the primitive square-free part of
+/// `p`) until Descartes' bound of `q` on it is 0 and `q` does not vanish at its lower end, where
+/// the sign of `q` at the midpoint is the answer. The loop ends: `q` has no root at the root of
+/// `p`, so once the interval is narrow enough the disc on it holds no complex root of `q` and
+/// the bound is 0 (the one-circle theorem, see `exactcheck_core::roots`).
 ///
 /// # Panics
 /// When `p` is zero, or `root` is not exact and does not isolate a root of `p`.
@@ -153,17 +156,21 @@ pub fn sign_at_real_root(q: &UPoly, p: &UPoly, root: &RootInterval) -> Sign {
     if q.is_zero() {
         return Sign::Zero;
     }
+    if q.is_constant() {
+        return q.sign_at_pos_inf();
+    }
     let g = p.gcd(q).square_free_part();
     if !g.is_constant() && g.sign_at(&root.lo) * g.sign_at(&root.hi) == Sign::Negative {
         return Sign::Zero;
     }
+    let sqf = p.primitive_square_free_part();
     let mut ri = root.clone();
     loop {
-        if q.count_roots(&ri.lo, &ri.hi) == 0 && q.sign_at(&ri.lo) != Sign::Zero {
+        if q.sign_at(&ri.lo) != Sign::Zero && descartes_bound(q, &ri.lo, &ri.hi) == 0 {
             return q.sign_at(&ri.midpoint());
         }
         let half_width = ri.width() * half();
-        ri = p.refine(&ri, &half_width);
+        ri = isolate::refine_simple(&sqf, &ri, &half_width);
         if let Some(r) = ri.exact_value() {
             return q.sign_at(r);
         }

@@ -15,10 +15,17 @@ pub(super) const PRIMES: [u64; 3] = [
 /// ([`ModP`](crate::modp::ModP)), a `u128` remainder for the others.
 #[inline]
 pub(super) fn mul_mod(a: u64, b: u64, p: u64) -> u64 {
+    reduce_u128(u128::from(a) * u128::from(b), p)
+}
+
+/// `x mod p` for one of the [`PRIMES`]: Mersenne folding for `2^61 - 1`, a `u128` remainder
+/// for the others.
+#[inline]
+fn reduce_u128(x: u128, p: u64) -> u64 {
     if p == crate::modp::P {
-        crate::modp::ModP::from_u128(u128::from(a) * u128::from(b)).value()
+        crate::modp::ModP::from_u128(x).value()
     } else {
-        (u128::from(a) * u128::from(b) % u128::from(p)) as u64
+        (x % u128::from(p)) as u64
     }
 }
 
@@ -61,9 +68,11 @@ pub(super) fn gcd_degree_mod_p(mut a: Vec<u64>, mut b: Vec<u64>, p: u64) -> usiz
             for x in &mut a[..shift] {
                 *x = mul_mod(*x, lb, p);
             }
+            // x lb - f b_j as x lb + (p - f) b_j, one reduction of a sum below 2^125.
+            let nf = u128::from(p - f);
+            let lb = u128::from(lb);
             for (x, &bj) in a[shift..].iter_mut().zip(&b) {
-                let (u, t) = (mul_mod(*x, lb, p), mul_mod(f, bj, p));
-                *x = if u >= t { u - t } else { u + p - t };
+                *x = reduce_u128(u128::from(*x) * lb + nf * u128::from(bj), p);
             }
             debug_assert_eq!(a[top], 0);
             a.pop();

@@ -37,6 +37,8 @@ impl Dyadic {
 pub(super) struct Refiner<'a> {
     pub(super) q: &'a [BigInt],
     pub(super) qf: Option<Vec<f64>>,
+    /// `q` for exact evaluation on limbs at points with a word numerator.
+    horner: DyadicHorner,
 }
 
 /// `(m, e)` with `x ~ m 2^e`, `m` in `[2^63, 2^64)` as `f64` (`None` for zero).
@@ -64,7 +66,11 @@ impl Refiner<'_> {
             .iter()
             .map(|c| c.to_f64().filter(|f| f.is_finite()))
             .collect();
-        Refiner { q, qf }
+        Refiner {
+            q,
+            qf,
+            horner: DyadicHorner::new(q),
+        }
     }
 
     /// The sign of `q(x)` from `f64` arithmetic when the error bound of the module
@@ -95,11 +101,32 @@ impl Refiner<'_> {
 
     /// `q(x) 2^(k n)` for `x = c / 2^k`.
     pub(super) fn value_exact(&self, x: &Dyadic) -> BigInt {
-        PairSplitter::eval(self.q, x)
+        match self.horner.eval(&x.num, x.exp, false) {
+            Some((v, _)) => v,
+            None => PairSplitter::eval(self.q, x),
+        }
+    }
+
+    /// The sign of `q(x)`, exact: the truncated limb scheme ([`DyadicHorner::sign_truncated`])
+    /// when its error bound decides, else the exact value.
+    pub(super) fn sign_exact(&self, x: &Dyadic) -> Sign {
+        match self.horner.sign_truncated(&x.num, x.exp) {
+            Some(s) if s < 0 => Sign::Negative,
+            Some(_) => Sign::Positive,
+            None => sign_of(&self.value_exact(x)),
+        }
     }
 
     /// `(q(x) 2^(k n), q'(x) 2^(k (n-1)))` for `x = c / 2^k`.
     pub(super) fn eval_exact(&self, x: &Dyadic) -> (BigInt, BigInt) {
+        if let Some(pd) = self.horner.eval(&x.num, x.exp, true) {
+            return pd;
+        }
+        self.eval_exact_bigint(x)
+    }
+
+    /// [`Refiner::eval_exact`] on `BigInt`s (any numerator; the tests' reference).
+    pub(super) fn eval_exact_bigint(&self, x: &Dyadic) -> (BigInt, BigInt) {
         let q = self.q;
         let n = q.len() - 1;
         let mut p = q[n].clone();
@@ -144,7 +171,7 @@ impl Refiner<'_> {
                 let x = at(k);
                 let xr = x.to_rational();
                 if xr > lo && xr < hi {
-                    match sign_of(&self.value_exact(&x)) {
+                    match self.sign_exact(&x) {
                         Sign::Zero => return RootInterval::exact(xr),
                         s if s == s_lo => {
                             lo = xr;
@@ -172,7 +199,7 @@ impl Refiner<'_> {
                 if !(xr > lo && xr < hi) {
                     break;
                 }
-                match sign_of(&self.value_exact(&x)) {
+                match self.sign_exact(&x) {
                     Sign::Zero => return RootInterval::exact(xr),
                     s if s == s_lo => {
                         lo = xr;

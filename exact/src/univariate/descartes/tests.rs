@@ -202,7 +202,9 @@ fn modular_square_free_test() {
     // (x - 1)^2 (x + 2) is not square-free: never "proved".
     assert!(!is_square_free_mod_p(&bigs(&[2, -3, 0, 1])));
     assert!(is_square_free_mod_p(&bigs(&[1, 0, 1])));
-    assert!(is_square_free_mod_p(&super::super::w4::wilkinson(30)));
+    assert!(is_square_free_mod_p(
+        &super::super::bench_instances::wilkinson(30)
+    ));
     // The square-free part of (x - 1)^2 (x + 2) is x^2 + x - 2.
     assert_eq!(
         square_free_integer(&bigs(&[-4, 6, 0, -2])),
@@ -214,9 +216,9 @@ fn modular_square_free_test() {
 fn the_filter_never_contradicts_the_exact_sign() {
     let mut rng = Rng::new(53);
     let polys = [
-        super::super::w4::wilkinson(20),
-        super::super::w4::mignotte(30),
-        super::super::w4::random(40),
+        super::super::bench_instances::wilkinson(20),
+        super::super::bench_instances::mignotte(30),
+        super::super::bench_instances::random(40),
         random_poly(&mut rng, 25),
     ];
     let mut decided = 0;
@@ -301,7 +303,7 @@ fn both(c: &[BigInt], w: &Rational) -> Vec<RootInterval> {
 
 #[test]
 fn rational_roots_are_recognised_exactly() {
-    let w = super::super::w4::target_width();
+    let w = super::super::bench_instances::target_width();
     let mut rng = Rng::new(1414);
     for round in 0..24 {
         // Distinct rational roots r / q with denominators up to 60, some dividing a small
@@ -330,7 +332,7 @@ fn rational_roots_are_recognised_exactly() {
     }
     // The Wilkinson products: every root exact.
     for n in [5usize, 20, 40] {
-        let fast = both(&super::super::w4::wilkinson(n), &w);
+        let fast = both(&super::super::bench_instances::wilkinson(n), &w);
         assert!(fast.iter().all(RootInterval::is_exact), "wilkinson({n})");
     }
 }
@@ -481,7 +483,7 @@ fn limb_division_agrees_with_the_bigint_reference() {
 
 #[test]
 fn close_pairs_are_split_and_agree_with_the_reference() {
-    let w = super::super::w4::target_width();
+    let w = super::super::bench_instances::target_width();
     // Mignotte-type x^n - 2 (a x - 1)^2 with other parameters, and (x - a)(x - a - eps) g.
     for (n, a) in [(12usize, 7i64), (25, 10), (33, 3), (40, 13), (50, 10)] {
         let mut c = vec![BigInt::zero(); n + 1];
@@ -508,7 +510,7 @@ fn pair_splitter_verifies_its_point() {
     // x^2 - 2 (4 x - 1)^2 on the node (0, 1/2) at depth 1, ends negative... use the
     // Mignotte polynomial x^30 - 2 (10 x - 1)^2 on (1/16, 1/8): the split point has the
     // opposite sign and lies strictly inside.
-    let p = super::super::w4::mignotte(30);
+    let p = super::super::bench_instances::mignotte(30);
     let s = PairSplitter::new(&p);
     let (x, delta) = s
         .split(&BigInt::from(1), 4, Sign::Negative)
@@ -526,7 +528,7 @@ fn pair_splitter_verifies_its_point() {
 
 #[test]
 fn random_polynomials_agree_with_the_reference() {
-    let w = super::super::w4::target_width();
+    let w = super::super::bench_instances::target_width();
     let mut rng = Rng::new(77);
     for n in [1usize, 2, 3, 7, 15, 31] {
         for _ in 0..4 {
@@ -545,7 +547,7 @@ fn random_polynomials_agree_with_the_reference() {
     for c in &cases {
         both(c, &w);
     }
-    for (family, degree, count) in super::super::w4::COMPARISON {
+    for (family, degree, count) in super::super::bench_instances::COMPARISON {
         let c = family.polynomial(degree);
         let fast = real_roots_to_with(&c, &w, Options::FAST).expect("non-zero");
         assert_eq!(fast.len(), count);
@@ -557,44 +559,44 @@ fn random_polynomials_agree_with_the_reference() {
 
 /// One comparison instance through the fast path: the pinned count, width and order (one
 /// test per instance, so each can be profiled alone: `valgrind --tool=callgrind
-/// target/release/deps/exactcheck_exact-* --exact univariate::descartes::unit_tests::w4_wilkinson_20`).
-fn w4_instance(index: usize) {
-    let (family, degree, count) = super::super::w4::COMPARISON[index];
-    let w = super::super::w4::target_width();
-    let roots = super::super::w4::solve(&family.polynomial(degree));
+/// target/release/deps/exactcheck_exact-* --exact univariate::descartes::unit_tests::instance_wilkinson_20`).
+fn comparison_instance(index: usize) {
+    let (family, degree, count) = super::super::bench_instances::COMPARISON[index];
+    let w = super::super::bench_instances::target_width();
+    let roots = super::super::bench_instances::solve(&family.polynomial(degree));
     assert_eq!(roots.len(), count);
     assert!(roots.iter().all(|r| r.width() <= w));
     assert!(roots.windows(2).all(|p| p[0].hi < p[1].lo));
 }
 
 #[test]
-fn w4_wilkinson_20() {
-    w4_instance(0);
+fn instance_wilkinson_20() {
+    comparison_instance(0);
 }
 
 #[test]
-fn w4_wilkinson_40() {
-    w4_instance(1);
+fn instance_wilkinson_40() {
+    comparison_instance(1);
 }
 
 #[test]
-fn w4_random_50() {
-    w4_instance(2);
+fn instance_random_50() {
+    comparison_instance(2);
 }
 
 #[test]
-fn w4_random_100() {
-    w4_instance(3);
+fn instance_random_100() {
+    comparison_instance(3);
 }
 
 #[test]
-fn w4_mignotte_20() {
-    w4_instance(4);
+fn instance_mignotte_20() {
+    comparison_instance(4);
 }
 
 #[test]
-fn w4_mignotte_40() {
-    w4_instance(5);
+fn instance_mignotte_40() {
+    comparison_instance(5);
 }
 
 #[test]
@@ -606,7 +608,7 @@ fn refinement_brackets_roots_of_close_pairs() {
         Rational::new(1, 3).expect("3")
             + Rational::from(BigInt::one()) / Rational::from(BigInt::one() << 40u32),
     ]);
-    let w = super::super::w4::target_width();
+    let w = super::super::bench_instances::target_width();
     let roots = p.isolate_real_roots_to(&w);
     assert_eq!(roots.len(), 2);
     assert!(roots[0].hi < roots[1].lo);
@@ -615,4 +617,184 @@ fn refinement_brackets_roots_of_close_pairs() {
     }
     assert!(roots[0].lo <= third && third <= roots[0].hi);
     assert!(roots[1].lo > third);
+}
+
+mod dyadic_horner {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn to_sign(s: i8) -> Sign {
+        match s {
+            -1 => Sign::Negative,
+            0 => Sign::Zero,
+            _ => Sign::Positive,
+        }
+    }
+
+    /// The limb evaluation against the `BigInt` Horner schemes of the refinement and the
+    /// close-pair splitter; numerators of 65 bits and more are refused.
+    fn check(a: &[BigInt], num: BigInt, exp: u64) {
+        let x = Dyadic { num, exp };
+        let r = Refiner::new(a);
+        let fast = DyadicHorner::new(a).eval(&x.num, exp, true);
+        if x.num.bits() > 64 {
+            assert!(fast.is_none());
+            return;
+        }
+        let (v, d) = fast.expect("a word numerator");
+        let (rv, rd) = r.eval_exact_bigint(&x);
+        assert_eq!(v, rv, "value of {a:?} at {x:?}");
+        assert_eq!(d, rd, "derivative of {a:?} at {x:?}");
+        assert_eq!(v, PairSplitter::eval(a, &x));
+        assert_eq!(r.eval_exact(&x), (rv.clone(), rd));
+        assert_eq!(r.value_exact(&x), rv);
+        if let Some(s) = DyadicHorner::new(a).sign_truncated(&x.num, exp) {
+            assert_eq!(to_sign(s), sign_of(&rv), "{a:?} at {x:?}");
+        }
+        assert_eq!(r.sign_exact(&x), sign_of(&rv));
+    }
+
+    /// The truncated scheme next to the roots, where it matters: at the ends of the refined
+    /// intervals of the comparison instances (within `2^-53` of a root) it decides, and
+    /// correctly, for the word-sized random and Mignotte coefficients.
+    #[test]
+    fn truncated_signs_next_to_roots() {
+        use super::super::super::bench_instances as inst;
+        let mut decided = 0;
+        for (family, degree, _) in inst::COMPARISON {
+            let a = family.polynomial(degree);
+            let q = square_free_integer(&a);
+            let h = DyadicHorner::new(&q);
+            for ri in inst::solve(&a).iter().filter(|ri| !ri.is_exact()) {
+                for end in [&ri.lo, &ri.hi] {
+                    let exp = end.denom().bits() - 1;
+                    if end.denom() != BigInt::one() << exp {
+                        continue;
+                    }
+                    let x = Dyadic {
+                        num: end.numer(),
+                        exp,
+                    };
+                    let exact = sign_of(&PairSplitter::eval(&q, &x));
+                    if let Some(s) = h.sign_truncated(&x.num, exp) {
+                        decided += 1;
+                        assert_eq!(to_sign(s), exact, "{family:?} {degree} at {end}");
+                    }
+                }
+            }
+        }
+        assert!(decided >= 16, "decided only {decided}");
+    }
+
+    #[test]
+    fn dyadic_horner_edge_cases() {
+        let polys = [
+            bigs(&[5]),
+            bigs(&[0]),
+            bigs(&[-1, 0, 1]),
+            bigs(&[i64::MIN, i64::MAX, i64::MIN, -1]),
+            super::super::super::bench_instances::wilkinson(20),
+            super::super::super::bench_instances::random(50),
+            super::super::super::bench_instances::mignotte(40),
+        ];
+        let nums = [
+            BigInt::zero(),
+            BigInt::one(),
+            -BigInt::one(),
+            BigInt::from(u64::MAX),
+            -BigInt::from(u64::MAX),
+            BigInt::from(i64::MIN),
+            BigInt::one() << 64u32,
+            -(BigInt::one() << 64u32),
+        ];
+        for a in &polys {
+            for num in &nums {
+                for exp in [0u64, 1, 55, 63, 64, 65, 130] {
+                    check(a, num.clone(), exp);
+                }
+            }
+        }
+    }
+
+    proptest! {
+        #[test]
+        fn dyadic_horner_matches_bigint_horner(
+            coeffs in prop::collection::vec((any::<i64>(), 0u32..200), 1..40),
+            m in any::<u64>(),
+            negative in any::<bool>(),
+            extra in 0u32..3,
+            exp in 0u64..140,
+        ) {
+            let a: Vec<BigInt> = coeffs.iter().map(|&(c, s)| BigInt::from(c) << s).collect();
+            // Numerators of 1 to 66 bits, of either sign.
+            let mut num = BigInt::from(m) << extra;
+            if negative {
+                num = -num;
+            }
+            check(&a, num, exp);
+        }
+    }
+}
+
+/// The modular gcd degree (fused reduction steps) against the gcd over `Q`, on products with a
+/// planted common factor, for each of the three primes.
+#[test]
+fn gcd_degree_mod_p_matches_rational_gcd() {
+    let mut rng = Rng::new(61);
+    for round in 0..60 {
+        let h = random_poly(&mut rng, round % 7);
+        let f = random_poly(&mut rng, 1 + round % 11);
+        let g = random_poly(&mut rng, 1 + round % 13);
+        let (hu, fu, gu) = (upoly_of(&h), upoly_of(&f), upoly_of(&g));
+        let (a, b) = (fu.mul_impl(&hu), gu.mul_impl(&hu));
+        let expected = a.gcd(&b).degree();
+        let ints = |u: &UPoly| -> Vec<BigInt> { u.coeffs().iter().map(|c| c.numer()).collect() };
+        for &p in &PRIMES {
+            let (am, bm): (Vec<u64>, Vec<u64>) = (
+                ints(&a).iter().map(|c| big_mod(c, p)).collect(),
+                ints(&b).iter().map(|c| big_mod(c, p)).collect(),
+            );
+            assert_eq!(
+                gcd_degree_mod_p(am, bm, p),
+                expected,
+                "{a} and {b} modulo {p}"
+            );
+        }
+    }
+}
+
+/// The refinement's window signs (truncated limb scheme, exact limb fallback) against Sturm on
+/// word-sized coefficients, where they decide: random polynomials of higher degree (roots near
+/// and outside the unit circle, so `|x| > 1` at some windows), Mignotte-like pairs
+/// `x^n - 2 (a x - 1)^2`, and clusters `(x - 1/3)(x - 1/3 - 2^-e) g` refined to `2^-53` and
+/// far below it.
+#[test]
+fn word_sized_windows_agree_with_sturm() {
+    let w = super::super::bench_instances::target_width();
+    let fine = Rational::from(BigInt::one()) / Rational::from(BigInt::one() << 200u32);
+    for d in [33usize, 47, 60] {
+        both(&super::super::bench_instances::random(d), &w);
+    }
+    for (n, a) in [(8i64, 3i64), (13, 7), (21, 12), (30, 10)] {
+        let mut c = vec![BigInt::zero(); n as usize + 1];
+        c[n as usize] += 1;
+        c[2] -= 2 * a * a;
+        c[1] += 4 * a;
+        c[0] -= 2;
+        both(&c, &w);
+        both(&c, &fine);
+    }
+    let mut rng = Rng::new(1933);
+    for e in [20u32, 40, 60] {
+        let third = UPoly::from_i64_coeffs(&[-1, 3]);
+        let shifted = UPoly::from_coeffs(vec![
+            -(Rational::new(1, 3).unwrap()
+                + Rational::from(BigInt::one()) / Rational::from(BigInt::one() << e)),
+            Rational::ONE,
+        ]);
+        let g = upoly_of(&random_poly(&mut rng, 9));
+        let c = third.mul_impl(&shifted).mul_impl(&g).integer_coefficients();
+        both(&c, &w);
+        both(&c, &fine);
+    }
 }

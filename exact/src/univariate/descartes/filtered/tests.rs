@@ -1,7 +1,7 @@
 //! The filtered subdivision against the exact one and against Sturm counts.
 
+use super::super::super::bench_instances;
 use super::super::super::isolate::SquareFree;
-use super::super::super::w4;
 use super::*;
 use exactcheck_core::{OrderedField, Rng};
 use proptest::prelude::*;
@@ -138,22 +138,22 @@ fn compare(c: &[BigInt], sturm: bool) -> FilterStats {
 #[test]
 fn wilkinson_products_agree_without_the_exact_subdivision() {
     for n in 1..=60 {
-        let stats = compare(&w4::wilkinson(n), n <= 24);
+        let stats = compare(&bench_instances::wilkinson(n), n <= 24);
         assert_eq!(stats.fallbacks, 0, "wilkinson({n}): {stats:?}");
     }
 }
 
 #[test]
-fn random_w4_polynomials_agree() {
+fn random_benchmark_polynomials_agree() {
     for d in 2..=120 {
-        compare(&w4::random(d), d <= 30);
+        compare(&bench_instances::random(d), d <= 30);
     }
 }
 
 #[test]
 fn mignotte_polynomials_agree() {
     for n in 3..=60 {
-        compare(&w4::mignotte(n), n <= 30);
+        compare(&bench_instances::mignotte(n), n <= 30);
     }
 }
 
@@ -234,7 +234,7 @@ fn huge_coefficients_tiny_and_huge_roots() {
 fn anchors_restore_precision_where_the_root_conversion_runs_out() {
     // Wilkinson 40: the Bernstein coefficients on [0, 1] span far more than f64 resolves in
     // the middle of the interval; the f64 coefficients are recomputed from exact ones there.
-    let p = &unit_problems(&w4::wilkinson(40))[0];
+    let p = &unit_problems(&bench_instances::wilkinson(40))[0];
     let count = exact_unit_roots(p, true).len();
     assert_eq!(count, 39);
     let (found, stats) = filtered_unit_roots(p, true);
@@ -260,7 +260,7 @@ fn the_exact_fallback_is_taken_below_the_depth_cap_and_is_correct() {
     assert_eq!(stats.fallbacks, 0, "{stats:?}");
     check_unit(p, &found, 2);
     // Mignotte 40 (pair 1.4e-21 apart) without pairs: the same, both caps.
-    let p = &unit_problems(&w4::mignotte(40))[0];
+    let p = &unit_problems(&bench_instances::mignotte(40))[0];
     let count = exact_unit_roots(p, false).len();
     let (found, stats) = subdivide(p, false, 20);
     assert!(stats.fallbacks > 0, "{stats:?}");
@@ -277,7 +277,7 @@ fn the_exact_fallback_is_taken_below_the_depth_cap_and_is_correct() {
 fn uncertain_midpoints_are_decided_exactly() {
     // Wilkinson 20: the roots 1/4, 1/2, 3/4 are split points; their f64 values are rounding
     // noise, so the exact evaluation decides them (zero: exact roots).
-    let p = &unit_problems(&w4::wilkinson(20))[0];
+    let p = &unit_problems(&bench_instances::wilkinson(20))[0];
     let (found, stats) = filtered_unit_roots(p, true);
     assert!(stats.exact_midpoints >= 3, "{stats:?}");
     let exact: Vec<Rational> = found
@@ -335,9 +335,9 @@ fn root_conversion_is_within_its_bound() {
 fn root_node_is_within_its_bound() {
     let mut rng = Rng::new(53);
     let mut cases: Vec<Vec<BigInt>> = vec![
-        w4::wilkinson(40),
-        w4::mignotte(60),
-        w4::random(120),
+        bench_instances::wilkinson(40),
+        bench_instances::mignotte(60),
+        bench_instances::random(120),
         product(&small(&[(1, 3), (2, 3)]), &[1]),
     ];
     for n in [1usize, 2, 5, 13, 40] {
@@ -601,10 +601,10 @@ fn unit_roots_come_out_in_increasing_order() {
             &small(&[(1, 2), (1, 4), (3, 4), (3, 8), (5, 16), (1, 3), (2, 3)]),
             &[1],
         ),
-        w4::wilkinson(20),
-        w4::wilkinson(24),
-        w4::random(30),
-        w4::mignotte(20),
+        bench_instances::wilkinson(20),
+        bench_instances::wilkinson(24),
+        bench_instances::random(30),
+        bench_instances::mignotte(20),
     ];
     for c in &cases {
         for p in unit_problems(c) {

@@ -1,12 +1,12 @@
-//! W4 (exact real root isolation): the Descartes isolator and its refinement against
+//! Exact real root isolation: the Descartes isolator and its refinement against
 //! the Sturm isolator (`UPoly::isolate_roots`, the reference), on random integer polynomials with
-//! repeated and rational roots, on the W4 families at small degrees and on known roots; the
+//! repeated and rational roots, on the benchmark families at small degrees and on known roots; the
 //! check values (root counts) of the comparison sizes (the `real-roots` benchmark's command is
 //! tested in `bench/`).
 //! No test measures time.
 
 use exactcheck_core::Ring;
-use exactcheck_exact::univariate::w4::{self, Family};
+use exactcheck_exact::univariate::bench_instances::{self, Family};
 use exactcheck_exact::univariate::{
     integer_real_roots, integer_real_roots_to, RootInterval, UPoly,
 };
@@ -91,10 +91,10 @@ fn bigs(c: &[i64]) -> Vec<BigInt> {
 #[test]
 fn comparison_sizes_have_the_pinned_root_counts() {
     // The check values of the comparison: python-flint and SymPy find the same counts.
-    for (family, degree, count) in w4::COMPARISON {
-        let roots = w4::solve(&family.polynomial(degree));
+    for (family, degree, count) in bench_instances::COMPARISON {
+        let roots = bench_instances::solve(&family.polynomial(degree));
         assert_eq!(roots.len(), count, "{family:?} {degree}");
-        let w = w4::target_width();
+        let w = bench_instances::target_width();
         assert!(roots.iter().all(|r| r.width() <= w));
         assert!(roots.windows(2).all(|p| p[0].hi < p[1].lo));
     }
@@ -103,7 +103,7 @@ fn comparison_sizes_have_the_pinned_root_counts() {
 #[test]
 fn wilkinson_roots_lie_in_their_intervals() {
     for n in [20usize, 40] {
-        let roots = w4::solve(&w4::wilkinson(n));
+        let roots = bench_instances::solve(&bench_instances::wilkinson(n));
         assert_eq!(roots.len(), n);
         for (j, r) in roots.iter().enumerate() {
             let x = rat(j as i64 + 1, n as i64);
@@ -119,7 +119,7 @@ fn wilkinson_roots_lie_in_their_intervals() {
 #[test]
 fn mignotte_pair_is_separated() {
     for n in [20usize, 40, 60] {
-        let roots = w4::solve(&w4::mignotte(n));
+        let roots = bench_instances::solve(&bench_instances::mignotte(n));
         let near: Vec<&RootInterval> = roots
             .iter()
             .filter(|r| r.lo > rat(9, 100) && r.hi < rat(11, 100))
@@ -128,7 +128,7 @@ fn mignotte_pair_is_separated() {
         assert!(near[0].hi < near[1].lo);
         // The pair straddles 1/10 (the polynomial is x^n - 2 (10x - 1)^2, positive at 1/10).
         assert!(near[0].lo < rat(1, 10) && rat(1, 10) < near[1].hi);
-        let p = upoly(&w4::mignotte(n));
+        let p = upoly(&bench_instances::mignotte(n));
         check_against_sturm(&p, &roots);
     }
 }
@@ -136,16 +136,16 @@ fn mignotte_pair_is_separated() {
 #[test]
 fn random_family_reproduces_splitmix64() {
     // SplitMix64 from state 1: the first output is 0x910a2dec89025cc1 (as i64, negative).
-    let c = w4::random(1);
+    let c = bench_instances::random(1);
     assert_eq!(c[0], BigInt::from(0x910a_2dec_8902_5cc1u64 as i64));
     assert_eq!(c.len(), 2);
-    assert_eq!(w4::wilkinson(2), bigs(&[2, -6, 4]));
-    assert_eq!(w4::mignotte(3), bigs(&[-2, 40, -200, 1]));
+    assert_eq!(bench_instances::wilkinson(2), bigs(&[2, -6, 4]));
+    assert_eq!(bench_instances::mignotte(3), bigs(&[-2, 40, -200, 1]));
 }
 
 #[test]
 fn families_at_small_degrees_agree_with_sturm() {
-    let w = w4::target_width();
+    let w = bench_instances::target_width();
     for d in 1..=12 {
         for family in [Family::Wilkinson, Family::Random, Family::Mignotte] {
             let c = family.polynomial(d);
@@ -159,8 +159,8 @@ fn families_at_small_degrees_agree_with_sturm() {
         }
     }
     for d in [20usize, 30] {
-        check_refined(&upoly(&w4::random(d)), &w);
-        check_refined(&upoly(&w4::mignotte(d)), &w);
+        check_refined(&upoly(&bench_instances::random(d)), &w);
+        check_refined(&upoly(&bench_instances::mignotte(d)), &w);
     }
 }
 
@@ -179,7 +179,12 @@ fn special_points_and_widths() {
     ];
     for p in &cases {
         check_against_sturm(p, &p.real_roots_descartes());
-        for w in [rat(1, 1000), rat(3, 7), rat(5, 1), w4::target_width()] {
+        for w in [
+            rat(1, 1000),
+            rat(3, 7),
+            rat(5, 1),
+            bench_instances::target_width(),
+        ] {
             check_refined(p, &w);
         }
     }

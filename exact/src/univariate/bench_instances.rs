@@ -1,6 +1,6 @@
-//! The W4 benchmark workload: all real roots of an integer polynomial, each isolated
-//! in an interval of width at most `2^-53`, on three families (defined in the shared contract
-//! and reproduced by `scripts/anchors/w4_roots.py`):
+//! The real-roots benchmark workload: all real roots of an integer polynomial, each isolated
+//! in an interval of width at most `2^-53`, on three families (the anchors in
+//! `bench/scripts/anchors/real_roots.py` build the same polynomials):
 //!
 //! * [`wilkinson`]`(n)` = `prod_{j=1..n} (n x - j)`: `n` simple rational roots `j/n` in `(0, 1]`,
 //!   evenly spaced, with coefficients of about `n log2(2n)` bits (ill-conditioned in the power
@@ -21,8 +21,8 @@ use exactcheck_core::rng::splitmix64;
 use num_bigint::BigInt;
 use num_traits::{One, Zero};
 
-/// The largest degree of the W4 families accepted by the `real-roots` benchmark (`exactcheck-bench real-roots`).
-pub const MAX_W4_DEGREE: usize = 2000;
+/// The largest degree of the benchmark families accepted by the `real-roots` benchmark (`exactcheck-bench real-roots`).
+pub const MAX_BENCH_DEGREE: usize = 2000;
 
 /// The instances of the side-by-side comparison (`scripts/compare.py`) with their check value,
 /// the number of real roots (python-flint and SymPy find the same): `(family, degree, roots)`.
@@ -36,7 +36,7 @@ pub const COMPARISON: [(Family, usize, usize); 6] = [
     (Family::Mignotte, 40, 4),
 ];
 
-/// The three W4 families.
+/// The three benchmark families.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Family {
     /// [`wilkinson`].
@@ -109,7 +109,7 @@ pub fn mignotte(n: usize) -> Vec<BigInt> {
     c
 }
 
-/// `2^-53`, the width of the W4 intervals.
+/// `2^-53`, the width of the benchmark's intervals.
 pub fn target_width() -> Rational {
     Rational::from(BigInt::one()) / Rational::from(BigInt::one() << 53u32)
 }
@@ -118,7 +118,7 @@ pub fn target_width() -> Rational {
 /// `2^-53` (exact when an evaluation point hit it).
 ///
 /// # Panics
-/// For the zero polynomial (every W4 polynomial is non-zero).
+/// For the zero polynomial (every benchmark polynomial is non-zero).
 pub fn solve(coeffs: &[BigInt]) -> Vec<RootInterval> {
-    integer_real_roots_to(coeffs, &target_width()).expect("a W4 polynomial is not zero")
+    integer_real_roots_to(coeffs, &target_width()).expect("a benchmark polynomial is not zero")
 }
