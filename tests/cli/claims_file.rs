@@ -866,6 +866,16 @@ fn algebraic_constants_next_to_variables_are_decided_as_prove_decides_them() {
         "{too_large}"
     );
     // Without the lowered limit the same claim is proved.
-    let out = exactcheck(&["verify", "tests/claims_file/constants.toml", "--only", "k.too"]);
-    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    let out = exactcheck(&[
+        "verify",
+        "tests/claims_file/constants.toml",
+        "--only",
+        "k.too",
+    ]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
 }

@@ -409,7 +409,10 @@ fn sums_of_radicals_have_minimal_polynomials() {
 fn a_root_prints_in_a_variable_apart_from_the_statements() {
     let c = Algebraic::cos_pi(2, 7).unwrap();
     let alone = c.to_string();
-    assert!(alone.starts_with("Root(8*x^3 + 4*x^2 - 4*x - 1, "), "{alone}");
+    assert!(
+        alone.starts_with("Root(8*x^3 + 4*x^2 - 4*x - 1, "),
+        "{alone}"
+    );
     // No variable: x as always; else z, z1, ... whichever the statement leaves free.
     assert_eq!(root_variable::<&str>(&[]), "x");
     assert_eq!(root_variable(&["x", "y"]), "z");
@@ -419,7 +422,10 @@ fn a_root_prints_in_a_variable_apart_from_the_statements() {
     // Radicals and rationals print the same in any variable.
     let r = alg("(1 + sqrt(5))/4");
     assert_eq!(r.display_in("z"), r.to_string());
-    assert_eq!(Algebraic::from_rational(Rational::new(-3, 4).unwrap()).display_in("z"), "-3/4");
+    assert_eq!(
+        Algebraic::from_rational(Rational::new(-3, 4).unwrap()).display_in("z"),
+        "-3/4"
+    );
 }
 
 #[test]

@@ -73,7 +73,6 @@ impl Factorisation {
     }
 }
 
-
 /// Candidate primes tried for one square-free part (the fewest modular factors wins).
 const PRIMES_TRIED: usize = 5;
 
@@ -841,9 +840,15 @@ mod tests {
         for primes in [&[2i64, 3, 5, 7][..], &[2, 3, 5, 7, 11]] {
             let s = swinnerton_dyer(primes);
             assert_eq!(s.degree(), 1 << primes.len());
-            let f = s.factor().expect("within the default factor-combinations limit");
+            let f = s
+                .factor()
+                .expect("within the default factor-combinations limit");
             check(&s, &f);
-            assert_eq!(f.factors, vec![(s.clone(), 1)], "SD{primes:?} is irreducible");
+            assert_eq!(
+                f.factors,
+                vec![(s.clone(), 1)],
+                "SD{primes:?} is irreducible"
+            );
         }
         // With too small a budget the answer is the limit's error, never a partial
         // factorisation.
@@ -851,7 +856,8 @@ mod tests {
         let err = factor_square_free(&integer_coeffs(&s), &mut 20).unwrap_err();
         assert_eq!(err.limit.name(), "factor-combinations");
         assert!(
-            err.to_string().contains("exceeds the limit factor-combinations"),
+            err.to_string()
+                .contains("exceeds the limit factor-combinations"),
             "{err}"
         );
         // A product of two of them is found as the two factors, whatever the budget leaves.

@@ -205,8 +205,8 @@ fn identity<C: PointField + Display>(
     // (after the angles, so that it does not count as a relation of the claim's).
     let constant_domain = match k {
         Some(k) => {
-            let (m, domain) = prove_constants::constant_relation::<C>(k, &mut vars)
-                .map_err(Fault::Internal)?;
+            let (m, domain) =
+                prove_constants::constant_relation::<C>(k, &mut vars).map_err(Fault::Internal)?;
             relations.push(m);
             Some(domain)
         }
