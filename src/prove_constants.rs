@@ -137,6 +137,9 @@ pub(crate) fn prove_with_constants(
     prove_over::<Rational>(args, &filled, &rels, &nz, domains, Some(&k))
 }
 
+/// A relation `A = B` between rational functions, as the engine takes it.
+pub(crate) type Relation<C> = (RatFun<C>, RatFun<C>);
+
 /// The relation `m(c) = 0` of the primitive element over `C`, its variable entered in `vars`,
 /// and the domain of `c` (the isolating interval of `theta`, so that any root of `m` the engine
 /// picks is `theta` itself): what both front ends add to the statement.
@@ -146,7 +149,7 @@ pub(crate) fn prove_with_constants(
 pub(crate) fn constant_relation<C: PointField>(
     k: &AlgebraicConstants,
     vars: &mut Vars,
-) -> Result<((RatFun<C>, RatFun<C>), (Var, Domain)), String> {
+) -> Result<(Relation<C>, (Var, Domain)), String> {
     let m = k
         .relation()
         .to_ratfun::<C>(vars)
