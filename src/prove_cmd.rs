@@ -513,11 +513,12 @@ pub(crate) fn prove_over<C: PointField + Display>(
     } = add_angles(&vars, &mut rels);
     // The minimal polynomial of the constants' primitive element (after the angles, so that it
     // does not count as a relation of the user's).
-    let constant_var = match constants {
+    let constant_domain = match constants {
         Some(k) => {
-            let m = to_ratfun::<C>(&k.relation(), &mut vars, "the minimal polynomial")?;
-            rels.push((m, RatFun::from_poly(Poly::zero())));
-            vars.get(&k.name)
+            let (m, domain) = crate::prove_constants::constant_relation::<C>(k, &mut vars)
+                .map_err(Error::Input)?;
+            rels.push(m);
+            Some(domain)
         }
         None => None,
     };
@@ -540,9 +541,7 @@ pub(crate) fn prove_over<C: PointField + Display>(
         doms.push((var, d.clone()));
     }
     doms.extend(roots.iter().map(|r| (r.var, SquareRoot::<C>::domain())));
-    if let (Some(k), Some(c)) = (constants, constant_var) {
-        doms.push((c, k.domain()));
-    }
+    doms.extend(constant_domain);
     // Where the square roots are defined.
     let suffix = if roots.is_empty() {
         String::new()
@@ -612,25 +611,8 @@ pub(crate) fn prove_over<C: PointField + Display>(
     let mut report = report;
     sound_counter_example(&mut report, pi_in_relations, &mixed);
     // With algebraic constants, a non-zero reduction gets its counter-example at c = theta.
-    let mut constant_point = None;
-    if let Some(k) = constants {
-        let excluded: Vec<Var> = pi.into_iter().collect();
-        let found = crate::prove_constants::search(k, &spec, &report, &excluded, &mixed);
-        if let IdentityVerdict::Undecided {
-            searched,
-            coordinate,
-            ..
-        } = &mut report.verdict
-        {
-            match found {
-                Ok(p) => {
-                    report.outcomes[*coordinate] = CoordinateOutcome::Fails;
-                    constant_point = Some(p);
-                }
-                Err(why) => *searched = format!("{searched}; with c = {}: {why}", k.name),
-            }
-        }
-    }
+    let constant_point =
+        constants.and_then(|k| crate::prove_constants::settle(k, &spec, &mut report, pi, &mixed));
     let (verdict, code) = match &report.verdict {
         _ if constant_point.is_some() => ("fails", ExitCode::from(1)),
         IdentityVerdict::Proved { .. } => ("proved", ExitCode::SUCCESS),
@@ -690,10 +672,14 @@ pub(crate) fn prove_over<C: PointField + Display>(
             } else {
                 format!("at {}{rels_hold} ", at.join(", "))
             };
+            let value = crate::prove_constants::shown_value(
+                constants.expect("a constant point has its constants"),
+                p,
+                &spec.vars,
+            );
             format!(
-                "{}{at}LHS - RHS = {}; LHS - RHS{cleared} reduces{modulo} to {nf}, not zero{}",
+                "{}{at}LHS - RHS = {value}; LHS - RHS{cleared} reduces{modulo} to {nf}, not zero{}",
                 sides.prefix(*coordinate),
-                p.value,
                 phrasing.suffix
             )
         }
@@ -805,7 +791,11 @@ pub(crate) fn prove_over<C: PointField + Display>(
                 .map(|(n, q)| (n, json!(q)))
                 .collect::<serde_json::Map<_, _>>()
                 .into();
-            obj["value"] = json!(p.value.to_string());
+            obj["value"] = json!(crate::prove_constants::shown_value(
+                constants.expect("a constant point has its constants"),
+                p,
+                vars
+            ));
             obj["normal_form"] = json!(normal_form.display(vars).to_string());
         }
         if let Some(k) = constants {

@@ -10,8 +10,8 @@ use crate::Error;
 use exactcheck_exact::expr::{abstract_constants, needs_algebraic, Expr};
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
-    AlgebraicConstants, ConstantPoint, Domain, IdentityReport, IdentitySpec, IdentityVerdict,
-    PointField, Statement,
+    AlgebraicConstants, ConstantPoint, CoordinateOutcome, Domain, IdentityReport, IdentitySpec,
+    IdentityVerdict, PointField, Statement,
 };
 use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::{Radical, Rational};
@@ -23,13 +23,61 @@ pub(crate) fn needs_constants(
     relations: &[(Expr, Expr)],
     nonzero: &[(Expr, Expr, String)],
 ) -> bool {
-    sides
-        .lhs
-        .iter()
-        .chain(sides.rhs.into_iter().flatten())
-        .chain(relations.iter().flat_map(|(a, b)| [a, b]))
-        .chain(nonzero.iter().flat_map(|(a, b, _)| [a, b]))
-        .any(needs_algebraic::<Radical>)
+    any_needs_constants(
+        sides
+            .lhs
+            .iter()
+            .chain(sides.rhs.into_iter().flatten())
+            .chain(relations.iter().flat_map(|(a, b)| [a, b]))
+            .chain(nonzero.iter().flat_map(|(a, b, _)| [a, b])),
+    )
+}
+
+/// Whether one of `exprs` has a constant the square-root field cannot hold (`cos(pi/5)`,
+/// `sqrt(2 + sqrt(2))`).
+pub(crate) fn any_needs_constants<'a>(exprs: impl IntoIterator<Item = &'a Expr>) -> bool {
+    exprs.into_iter().any(needs_algebraic::<Radical>)
+}
+
+/// Why a statement's constants were not put in one field.
+pub(crate) enum ConstantsError {
+    /// The expression at this index has a constant the evaluator refuses: the reason.
+    Expr(usize, String),
+    /// The field of all the constants (past the `algebraic-degree` or `factor-combinations`
+    /// limit): the one-line reason, naming the constants.
+    Field(String),
+}
+
+/// The expressions of one statement (sides, relations, hypotheses, a corrected form: every
+/// expression decided together) with their real algebraic constants in one field: the field's
+/// primitive element as the variable `c` and each expression with every constant replaced by
+/// its polynomial in `c`, in the order given; `None` when no constant is irrational. Both front
+/// ends of the identity engine, `prove` and the claims files, decide such a statement by this
+/// one function followed by [`settle`].
+pub(crate) fn abstract_statement(
+    exprs: &[&Expr],
+) -> Result<Option<(AlgebraicConstants, Vec<Expr>)>, ConstantsError> {
+    let mut leaves = Vec::new();
+    let mut taken = Vec::new();
+    let mut abstracted = Vec::with_capacity(exprs.len());
+    for (i, e) in exprs.iter().enumerate() {
+        e.collect_variables(&mut taken);
+        abstracted.push(
+            abstract_constants(e, &mut leaves)
+                .map_err(|err| ConstantsError::Expr(i, err.to_string()))?,
+        );
+    }
+    let texts: Vec<String> = leaves.iter().map(|l| l.text.clone()).collect();
+    let constants = AlgebraicConstants::new(leaves, &taken).map_err(|e| {
+        ConstantsError::Field(format!(
+            "the field of the constants {}: {e}",
+            texts.join(", ")
+        ))
+    })?;
+    Ok(constants.map(|k| {
+        let filled = abstracted.iter().map(|e| k.fill(e)).collect();
+        (k, filled)
+    }))
 }
 
 /// Decides the statement with its algebraic constants in a primitive element (see the module
@@ -37,7 +85,7 @@ pub(crate) fn needs_constants(
 ///
 /// # Errors
 /// [`Error::Input`] for a constant the evaluator refuses, a field past the `algebraic-degree`
-/// limit, and the errors of [`prove_over`].
+/// or `factor-combinations` limit, and the errors of [`prove_over`].
 pub(crate) fn prove_with_constants(
     args: &ProveArgs,
     sides: &Sides,
@@ -45,51 +93,41 @@ pub(crate) fn prove_with_constants(
     nonzero: &[(Expr, Expr, String)],
     domains: &[(String, Domain, String)],
 ) -> Result<ExitCode, Error> {
-    let mut leaves = Vec::new();
-    let mut taken = Vec::new();
-    let mut abstracted = |e: &Expr, what: &str| {
-        e.collect_variables(&mut taken);
-        abstract_constants(e, &mut leaves).map_err(|err| Error::Input(format!("{what}: {err}")))
-    };
-    let l = sides
-        .lhs
-        .iter()
-        .map(|e| abstracted(e, "LHS"))
-        .collect::<Result<Vec<_>, _>>()?;
-    let r = sides
-        .rhs
-        .map(|r| {
-            r.iter()
-                .map(|e| abstracted(e, "RHS"))
-                .collect::<Result<Vec<_>, _>>()
-        })
-        .transpose()?;
-    let mut rels = Vec::new();
+    // Every expression with the part of the statement it belongs to, for the errors.
+    let mut exprs: Vec<&Expr> = Vec::new();
+    let mut parts: Vec<String> = Vec::new();
+    for e in sides.lhs {
+        exprs.push(e);
+        parts.push("LHS".into());
+    }
+    for e in sides.rhs.into_iter().flatten() {
+        exprs.push(e);
+        parts.push("RHS".into());
+    }
     for (i, (a, b)) in relations.iter().enumerate() {
-        let what = format!("--where #{}", i + 1);
-        rels.push((abstracted(a, &what)?, abstracted(b, &what)?));
+        exprs.extend([a, b]);
+        parts.extend([format!("--where #{}", i + 1), format!("--where #{}", i + 1)]);
     }
-    let mut nz = Vec::new();
     for (a, b, text) in nonzero {
-        let what = format!("--where {text:?}");
-        nz.push((abstracted(a, &what)?, abstracted(b, &what)?, text.clone()));
+        exprs.extend([a, b]);
+        parts.extend([format!("--where {text:?}"), format!("--where {text:?}")]);
     }
-    let texts: Vec<String> = leaves.iter().map(|l| l.text.clone()).collect();
-    let constants = AlgebraicConstants::new(leaves, &taken).map_err(|e| {
-        Error::Input(format!(
-            "the field of the constants {}: {e}",
-            texts.join(", ")
-        ))
-    })?;
-    let Some(k) = constants else {
-        return prove_over::<Radical>(args, sides, relations, nonzero, domains, None);
+    let (k, filled) = match abstract_statement(&exprs) {
+        Ok(Some(found)) => found,
+        Ok(None) => return prove_over::<Radical>(args, sides, relations, nonzero, domains, None),
+        Err(ConstantsError::Expr(i, why)) => {
+            return Err(Error::Input(format!("{}: {why}", parts[i])))
+        }
+        Err(ConstantsError::Field(why)) => return Err(Error::Input(why)),
     };
-    let l: Vec<Expr> = l.iter().map(|e| k.fill(e)).collect();
-    let r: Option<Vec<Expr>> = r.map(|r| r.iter().map(|e| k.fill(e)).collect());
-    let rels: Vec<(Expr, Expr)> = rels.iter().map(|(a, b)| (k.fill(a), k.fill(b))).collect();
-    let nz: Vec<(Expr, Expr, String)> = nz
+    let mut filled = filled.into_iter();
+    let mut next = || filled.next().expect("one filled expression per expression");
+    let l: Vec<Expr> = sides.lhs.iter().map(|_| next()).collect();
+    let r: Option<Vec<Expr>> = sides.rhs.map(|r| r.iter().map(|_| next()).collect());
+    let rels: Vec<(Expr, Expr)> = relations.iter().map(|_| (next(), next())).collect();
+    let nz: Vec<(Expr, Expr, String)> = nonzero
         .iter()
-        .map(|(a, b, t)| (k.fill(a), k.fill(b), t.clone()))
+        .map(|(_, _, t)| (next(), next(), t.clone()))
         .collect();
     let filled = Sides {
         lhs: &l,
@@ -97,6 +135,71 @@ pub(crate) fn prove_with_constants(
         shape: sides.shape,
     };
     prove_over::<Rational>(args, &filled, &rels, &nz, domains, Some(&k))
+}
+
+/// A relation `A = B` between rational functions, as the engine takes it.
+pub(crate) type Relation<C> = (RatFun<C>, RatFun<C>);
+
+/// The relation `m(c) = 0` of the primitive element over `C`, its variable entered in `vars`,
+/// and the domain of `c` (the isolating interval of `theta`, so that any root of `m` the engine
+/// picks is `theta` itself): what both front ends add to the statement.
+///
+/// # Errors
+/// The conversion's error, in words.
+pub(crate) fn constant_relation<C: PointField>(
+    k: &AlgebraicConstants,
+    vars: &mut Vars,
+) -> Result<(Relation<C>, (Var, Domain)), String> {
+    let m = k
+        .relation()
+        .to_ratfun::<C>(vars)
+        .map_err(|e| format!("the minimal polynomial: {e}"))?;
+    let c = vars
+        .get(&k.name)
+        .ok_or("the minimal polynomial has no variable")?;
+    Ok(((m, RatFun::from_poly(Poly::zero())), (c, k.domain())))
+}
+
+/// After the engine has decided a statement with algebraic constants: a component it left
+/// undecided (a non-zero reduction) gets its exact counter-example at `c = theta`
+/// ([`search`]), is marked failing and the point returned; otherwise why no point was found
+/// joins the search's text. `pi` is the variable of pi (no rational value), `mixed` the names
+/// used both as numbers and as angles.
+pub(crate) fn settle<C: PointField>(
+    k: &AlgebraicConstants,
+    spec: &IdentitySpec<C>,
+    report: &mut IdentityReport<C>,
+    pi: Option<Var>,
+    mixed: &[String],
+) -> Option<ConstantPoint> {
+    let excluded: Vec<Var> = pi.into_iter().collect();
+    let found = search(k, spec, report, &excluded, mixed);
+    let IdentityVerdict::Undecided {
+        searched,
+        coordinate,
+        ..
+    } = &mut report.verdict
+    else {
+        return None;
+    };
+    match found {
+        Ok(p) => {
+            report.outcomes[*coordinate] = CoordinateOutcome::Fails;
+            Some(p)
+        }
+        Err(why) => {
+            *searched = format!("{searched}; with c = {}: {why}", k.name);
+            None
+        }
+    }
+}
+
+/// The exact value of `LHS - RHS` at a counter-example, a `Root(...)` written in a variable of
+/// none of the statement's names (`x` when it has none but `c`).
+pub(crate) fn shown_value(k: &AlgebraicConstants, p: &ConstantPoint, vars: &Vars) -> String {
+    let names: Vec<&String> = vars.names().iter().filter(|n| **n != k.name).collect();
+    p.value
+        .display_in(&exactcheck_exact::algebraic::root_variable(&names))
 }
 
 /// The polynomial over Q, for a coefficient field whose values here are rational (the constants'

@@ -190,6 +190,10 @@ limits! {
     /// Degree of the defining polynomial of one real algebraic number (an operation on two
     /// numbers of degree `d` computes a resultant of degree up to `d^2`).
     ALGEBRAIC_DEGREE = ("algebraic-degree", "degree of an algebraic number", "", 64);
+    /// Subsets of modular factors tested while factoring one polynomial over Q (Zassenhaus
+    /// recombination is exponential in the number of modular factors); past it a minimal
+    /// polynomial is not known and a number field over it is refused.
+    FACTOR_COMBINATIONS = ("factor-combinations", "subsets of modular factors tested in factoring", "", 200_000);
     /// Bits of pi computed to decide a comparison of a value in pi (`2*pi/3` against a printed
     /// decimal): a value that close to a rounding boundary needs that many bits.
     PI_BITS = ("pi-bits", "bits of pi", "bits", 65_536);

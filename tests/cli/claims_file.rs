@@ -797,3 +797,85 @@ fn arc_weights_printed_with_angles_pi_and_nested_radicals_get_exact_verdicts() {
         assert!(text.contains(needle), "{needle} in {text}");
     }
 }
+
+#[test]
+fn algebraic_constants_next_to_variables_are_decided_as_prove_decides_them() {
+    let out = exactcheck(&[
+        "--limit",
+        "algebraic-degree=4",
+        "verify",
+        "tests/claims_file/constants.toml",
+        "--json",
+    ]);
+    // The claim past the limit is an error row; the others are decided.
+    assert_eq!(out.status.code(), Some(2));
+    let rows: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON rows");
+    let row = |id: &str| {
+        rows.as_array()
+            .unwrap()
+            .iter()
+            .find(|r| r["id"] == id)
+            .unwrap_or_else(|| panic!("row {id}"))
+            .clone()
+    };
+    for (id, verdict) in [
+        ("k.cos36", "proved"),
+        ("k.nested", "proved"),
+        ("k.heptagon", "fails"),
+        ("k.vector", "fails"),
+        ("k.instances", "holds"),
+        ("k.too_large", "error"),
+    ] {
+        assert_eq!(row(id)["verdict"], verdict, "{id}: {}", row(id));
+    }
+    // The field is named as `prove` names it.
+    let cos36 = row("k.cos36")["evidence"].as_str().unwrap().to_string();
+    assert!(
+        cos36.contains("with c = cos(pi/5), 4*c^2 - 2*c - 1 = 0, sqrt(5) = 4*c - 1"),
+        "{cos36}"
+    );
+    // The exact counter-example, its Root written in a variable that is not the claim's x,
+    // and the same text as `prove` gives.
+    let heptagon = row("k.heptagon");
+    let evidence = heptagon["evidence"].as_str().unwrap();
+    assert!(
+        evidence.starts_with("at x = 1 LHS - RHS = Root(8*z^3 + 16*z^2 + 6*z - 1, 1/16, 1/8)"),
+        "{evidence}"
+    );
+    let prove = exactcheck(&["prove", "x*cos(2*pi/7)", "x/2"]);
+    assert_eq!(prove.status.code(), Some(1));
+    let prove_text = String::from_utf8(prove.stdout).unwrap();
+    assert_eq!(prove_text.trim(), format!("fails: {evidence}"));
+    assert_eq!(heptagon["erratum"]["counter_example"][0]["text"], "x = 1");
+    assert_eq!(
+        heptagon["erratum"]["residual"][0]["text"],
+        "x*cos(2*pi/7) - x/2 = 1*cos(2*pi/7) - 1/2"
+    );
+    // A vector side fails in the component that differs, with a radical value.
+    let vector = row("k.vector")["evidence"].as_str().unwrap().to_string();
+    assert!(
+        vector.starts_with("in component 2 (y): at x = 0, y = 1 LHS - RHS = (-1 + sqrt(5))/4"),
+        "{vector}"
+    );
+    // The limit's one line, naming the constants.
+    let too_large = row("k.too_large")["evidence"].as_str().unwrap().to_string();
+    assert!(
+        too_large.contains(
+            "the field of the constants cos(2*pi/7), sqrt(2): degree of an algebraic number exceeds the limit algebraic-degree = 4"
+        ),
+        "{too_large}"
+    );
+    // Without the lowered limit the same claim is proved.
+    let out = exactcheck(&[
+        "verify",
+        "tests/claims_file/constants.toml",
+        "--only",
+        "k.too",
+    ]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}

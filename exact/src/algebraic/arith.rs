@@ -73,7 +73,7 @@ fn without_rational_roots(f: &UPoly, roots: &[RootInterval]) -> UPoly {
 }
 
 /// `p` made primitive with a positive leading coefficient.
-fn normalise(p: &UPoly) -> UPoly {
+pub(super) fn normalise(p: &UPoly) -> UPoly {
     let p = p.primitive_part();
     if p.leading_coefficient().signum() == Sign::Negative {
         -p
@@ -101,8 +101,9 @@ impl Algebraic {
     /// unless `f` is known to be irreducible, `f` replaced by its one irreducible factor with a
     /// root in the interval (the interval isolates one root of `f`, so exactly one factor has
     /// it), which is then the minimal polynomial. When factoring gives up (a recombination past
-    /// its budget, see [`crate::univariate::RECOMBINATION_SUBSETS`]) `f` stays, square-free and
-    /// marked not minimal: every later decision is exact all the same.
+    /// the `factor-combinations` limit) `f` stays, square-free and marked not minimal: every
+    /// later decision is exact all the same, and a number field over it is refused
+    /// ([`Algebraic::checked_minimal_polynomial`]).
     pub(super) fn from_isolated(
         f: UPoly,
         ri: RootInterval,

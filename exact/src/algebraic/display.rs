@@ -178,23 +178,45 @@ impl Algebraic {
     }
 }
 
-impl fmt::Display for Algebraic {
-    /// See the [module documentation](self).
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+impl Algebraic {
+    /// The printed number with the polynomial of a `Root(...)` written in the variable `var`
+    /// (`Root(8*z^3 + 16*z^2 + 6*z - 1, 1/16, 1/8) ≈ 0.1234898019`): for a number shown next to
+    /// a statement whose variables include `x`. Radicals and rationals print as with
+    /// [`fmt::Display`].
+    pub fn display_in(&self, var: &str) -> String {
         if let Some(q) = self.to_rational() {
-            return write!(f, "{q}");
+            return q.to_string();
         }
         if let Some(s) = self.quadratic_form().or_else(|| self.nested_form()) {
-            return f.write_str(&s);
+            return s;
         }
-        write!(
-            f,
+        format!(
             "Root({}, {}, {}) ≈ {}",
-            self.poly,
+            self.poly.display(var),
             self.iv.lo,
             self.iv.hi,
             self.to_decimal(10)
         )
+    }
+}
+
+/// The variable for the polynomial of a `Root(...)` shown next to a statement: `x` when the
+/// statement has no variable (a value alone prints as it always has), else the first of `z`,
+/// `z1`, `z2`, ... that `taken` (the statement's variable names) does not contain.
+pub fn root_variable<S: AsRef<str>>(taken: &[S]) -> String {
+    if taken.is_empty() {
+        return "x".to_string();
+    }
+    std::iter::once("z".to_string())
+        .chain((1..).map(|i| format!("z{i}")))
+        .find(|n| !taken.iter().any(|t| t.as_ref() == n))
+        .expect("some name is free")
+}
+
+impl fmt::Display for Algebraic {
+    /// See the [module documentation](self).
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.display_in("x"))
     }
 }
 

@@ -47,21 +47,25 @@ pub enum FieldError {
     /// The field's degree exceeds the `algebraic-degree` limit.
     #[error("{0}")]
     Limit(LimitError),
-    /// A number's minimal polynomial is not known (factoring gave up).
-    #[error(
-        "the minimal polynomial of {0} is not known (factoring its defining polynomial gave up)"
-    )]
-    NotMinimal(String),
     /// No `theta + k b` with a small `k` gave a generator (not expected to happen).
     #[error("no primitive element of the form theta + k*b with |k| <= {0} was found")]
     NoGenerator(i64),
 }
 
 impl NumberField {
-    /// `Q(theta)`, `None` when the minimal polynomial of `theta` is not known.
-    pub fn new(theta: Algebraic) -> Option<NumberField> {
-        let modulus = theta.minimal_polynomial()?.monic();
-        Some(NumberField {
+    /// `Q(theta)`.
+    ///
+    /// # Errors
+    /// [`FieldError::Limit`] when the minimal polynomial of `theta` is not known: factoring its
+    /// defining polynomial passed the `factor-combinations` limit (the quotient by a polynomial
+    /// that may be reducible is not a field, and a zero test in it could answer "non-zero" for
+    /// zero).
+    pub fn new(theta: Algebraic) -> Result<NumberField, FieldError> {
+        let modulus = theta
+            .checked_minimal_polynomial()
+            .map_err(FieldError::Limit)?
+            .monic();
+        Ok(NumberField {
             generator: theta,
             modulus,
         })
@@ -231,15 +235,11 @@ pub struct PrimitiveElement {
 /// a polynomial in it. See the [module documentation](self).
 ///
 /// # Errors
-/// [`FieldError::Limit`] when a generator's degree exceeds the `algebraic-degree` limit,
-/// [`FieldError::NotMinimal`] when a minimal polynomial is not known.
+/// [`FieldError::Limit`] when a generator's degree exceeds the `algebraic-degree` limit or a
+/// minimal polynomial is not known (factoring passed the `factor-combinations` limit).
 pub fn primitive_element(numbers: &[Algebraic]) -> Result<PrimitiveElement, FieldError> {
     const TRIES: i64 = 8;
-    let minimal = |a: &Algebraic| {
-        a.minimal_polynomial()
-            .cloned()
-            .ok_or_else(|| FieldError::NotMinimal(a.to_string()))
-    };
+    let minimal = |a: &Algebraic| a.checked_minimal_polynomial().map_err(FieldError::Limit);
     let Some((first, rest)) = numbers.split_first() else {
         let one = Algebraic::one();
         let field = NumberField::new(one).expect("1 has a minimal polynomial");
@@ -250,8 +250,7 @@ pub fn primitive_element(numbers: &[Algebraic]) -> Result<PrimitiveElement, Fiel
         });
     };
     let mut combination = vec![1];
-    let mut field =
-        NumberField::new(first.clone()).ok_or_else(|| FieldError::NotMinimal(first.to_string()))?;
+    let mut field = NumberField::new(first.clone())?;
     let mut polys = vec![UPoly::x()];
     for b in rest {
         let g = minimal(b)?;
@@ -278,8 +277,7 @@ pub fn primitive_element(numbers: &[Algebraic]) -> Result<PrimitiveElement, Fiel
                     break;
                 }
             } else {
-                let wider = NumberField::new(sum.clone())
-                    .ok_or_else(|| FieldError::NotMinimal(sum.to_string()))?;
+                let wider = NumberField::new(sum.clone())?;
                 // In Q(theta'), b is the one common root of g(y) and m(theta' - k y).
                 let h = wider.compose_linear(field.modulus(), &UPoly::x(), &-k.clone());
                 if let Some(bp) = wider.common_root(&g, &h) {

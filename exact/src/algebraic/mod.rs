@@ -19,10 +19,11 @@
 //! degree-16 resultant, which has it as a factor). Roots of cyclotomic-derived
 //! polynomials ([`Algebraic::cos_pi`], [`Algebraic::sin_pi`]) and their Moebius images
 //! `(a x + b)/(c x + d)` are known to be irreducible and are not factored again. The one
-//! exception: when factoring gives up (recombination past
-//! [`crate::univariate::RECOMBINATION_SUBSETS`] subsets) the square-free polynomial stays and
-//! [`Algebraic::minimal_polynomial`] answers `None`. **Every decision stays exact**
-//! regardless: a root is selected by a Sturm count on an interval, zero and equality tests
+//! exception: when factoring gives up (recombination past the `factor-combinations` limit) the
+//! square-free polynomial stays, [`Algebraic::minimal_polynomial`] answers `None` and
+//! [`Algebraic::checked_minimal_polynomial`] the limit's error, which every number field
+//! ([`NumberField`], [`primitive_element`]) passes on rather than compute modulo a polynomial
+//! that may be reducible. **Every other decision stays exact** regardless: a root is selected by a Sturm count on an interval, zero and equality tests
 //! reduce to gcds and interval inclusion, and no floating-point number is ever consulted.
 
 //! # Operations
@@ -58,6 +59,7 @@ mod field;
 mod tests;
 mod trig;
 
+pub use display::root_variable;
 pub use field::{primitive_element, FieldError, NumberField, PrimitiveElement};
 pub use trig::TrigError;
 
@@ -145,6 +147,23 @@ impl Algebraic {
     /// coefficient) when the defining polynomial is known to be irreducible, `None` otherwise.
     pub fn minimal_polynomial(&self) -> Option<&UPoly> {
         self.minimal.then_some(&self.poly)
+    }
+
+    /// The minimal polynomial, factoring the defining polynomial again (with the
+    /// `factor-combinations` limit in force) when it is not known to be irreducible.
+    ///
+    /// # Errors
+    /// The `factor-combinations` [`exactcheck_core::limits::LimitError`] when factoring gives up.
+    pub fn checked_minimal_polynomial(&self) -> Result<UPoly, exactcheck_core::limits::LimitError> {
+        if self.minimal {
+            return Ok(self.poly.clone());
+        }
+        let factors = self.poly.irreducible_factors()?;
+        Ok(factors
+            .into_iter()
+            .find(|g| g.count_roots(&self.iv.lo, &self.iv.hi) == 1)
+            .map(|g| arith::normalise(&g))
+            .expect("one irreducible factor has the isolated root"))
     }
 
     /// The current isolating interval (a point for a rational number).

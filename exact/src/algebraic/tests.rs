@@ -404,3 +404,38 @@ fn sums_of_radicals_have_minimal_polynomials() {
     let w2 = Algebraic::cos_pi(2, 7).unwrap() + Algebraic::cos_pi(4, 7).unwrap();
     assert_eq!(w2.degree(), 3);
 }
+
+#[test]
+fn a_root_prints_in_a_variable_apart_from_the_statements() {
+    let c = Algebraic::cos_pi(2, 7).unwrap();
+    let alone = c.to_string();
+    assert!(
+        alone.starts_with("Root(8*x^3 + 4*x^2 - 4*x - 1, "),
+        "{alone}"
+    );
+    // No variable: x as always; else z, z1, ... whichever the statement leaves free.
+    assert_eq!(root_variable::<&str>(&[]), "x");
+    assert_eq!(root_variable(&["x", "y"]), "z");
+    assert_eq!(root_variable(&["x", "z", "z1"]), "z2");
+    let shown = c.display_in("z");
+    assert_eq!(shown, alone.replace('x', "z"));
+    // Radicals and rationals print the same in any variable.
+    let r = alg("(1 + sqrt(5))/4");
+    assert_eq!(r.display_in("z"), r.to_string());
+    assert_eq!(
+        Algebraic::from_rational(Rational::new(-3, 4).unwrap()).display_in("z"),
+        "-3/4"
+    );
+}
+
+#[test]
+fn a_number_field_takes_the_checked_minimal_polynomial() {
+    // sqrt(2 + sqrt(2)) + sqrt(3): degree 8, reducible modulo every prime, so its minimality
+    // needs recombination (refused past the factor-combinations limit: the corpus case
+    // prove_factor_combinations).
+    let v = alg("sqrt(2 + sqrt(2)) + sqrt(3)");
+    let m = v.checked_minimal_polynomial().unwrap();
+    assert_eq!(m.degree(), 8);
+    assert_eq!(m.irreducible_factors().unwrap(), vec![m.clone()]);
+    assert_eq!(NumberField::new(v).unwrap().degree(), 8);
+}

@@ -17,14 +17,23 @@
 //!    divisibility test of the constant terms first). A factor found leaves the pool; what is
 //!    left at the end is irreducible.
 //!
-//! Recombination is exponential in the number of modular factors in the worst case (polynomials
-//! with many factors modulo every prime, such as those with a Galois group of exponent 2): the
-//! subsets tried in one factorisation are bounded by [`RECOMBINATION_SUBSETS`], past which
-//! [`UPoly::factor`] answers [`RecombinationBudget`] instead of a partial factorisation. The
-//! callers use factoring to keep polynomials small (minimal polynomials of algebraic numbers),
-//! never to decide a verdict, so the bound is a constant rather than a limit of the registry
-//! (which refuses inputs). Degrees up to a few dozen with a handful of modular factors are the
-//! target; van Hoeij's lattice recombination would remove the exponential case.
+//! **Degree pruning.** The degree of a true factor is a sum of degrees of modular factors for
+//! *every* prime, so the distinct-degree patterns of all the primes tried give the set of
+//! possible factor degrees (the intersection of their subset sums). A set with no degree
+//! strictly between 0 and `n` proves irreducibility without recombination (`x^4 + 1` splits
+//! into quadratics or linear factors modulo every prime, but a polynomial whose patterns are
+//! `{1, 3}` and `{2, 2}` is irreducible), and recombination skips every subset whose degree is
+//! not possible before any multiplication.
+//!
+//! Recombination stays exponential in the number of modular factors in the worst case
+//! (polynomials with many factors modulo every prime, such as those with a Galois group of
+//! exponent 2: the Swinnerton-Dyer polynomials). The subsets tested in one factorisation are
+//! bounded by the `factor-combinations` limit ([`limits::FACTOR_COMBINATIONS`]), past which
+//! [`UPoly::factor`] answers the [`LimitError`] instead of any factorisation: a product of
+//! factors that may be reducible is never returned as irreducible, since a non-minimal
+//! "minimal polynomial" would make a number field a ring with zero divisors. Degrees up to a
+//! few dozen with a handful of modular factors are the target; van Hoeij's lattice
+//! recombination would remove the exponential case.
 //!
 //! Hand-written because no maintained Rust crate factors integer polynomials on the
 //! `num-bigint` integers the workspace uses (the FLINT bindings need a C library, and the pure
@@ -34,6 +43,7 @@
 use super::UPoly;
 use crate::modp::{is_prime_u64, PrimeField};
 use crate::Rational;
+use exactcheck_core::limits::{self, LimitError};
 use exactcheck_core::{Ring, Rng};
 use num_bigint::{BigInt, BigUint};
 use num_integer::Integer;
@@ -63,23 +73,6 @@ impl Factorisation {
     }
 }
 
-/// The most subsets of modular factors one factorisation tests in recombination.
-pub const RECOMBINATION_SUBSETS: u64 = 200_000;
-
-/// The error of [`UPoly::factor`]: recombination would test more than
-/// [`RECOMBINATION_SUBSETS`] subsets.
-#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
-#[error(
-    "factoring gave up: recombining {modular} modular factors of a degree-{degree} polynomial \
-     needs more than {RECOMBINATION_SUBSETS} subset tests"
-)]
-pub struct RecombinationBudget {
-    /// The number of modular factors left to recombine.
-    pub modular: usize,
-    /// The degree of the polynomial they are factors of.
-    pub degree: usize,
-}
-
 /// Candidate primes tried for one square-free part (the fewest modular factors wins).
 const PRIMES_TRIED: usize = 5;
 
@@ -98,15 +91,15 @@ impl UPoly {
     /// ```
     ///
     /// # Errors
-    /// [`RecombinationBudget`] when recombination would test more than
-    /// [`RECOMBINATION_SUBSETS`] subsets.
+    /// The `factor-combinations` [`LimitError`] when recombination would test more subsets of
+    /// modular factors than the limit allows.
     ///
     /// # Panics
     /// For the zero polynomial.
-    pub fn factor(&self) -> Result<Factorisation, RecombinationBudget> {
+    pub fn factor(&self) -> Result<Factorisation, LimitError> {
         assert!(!self.is_zero(), "the zero polynomial has no factorisation");
         let mut factors = Vec::new();
-        let mut budget = RECOMBINATION_SUBSETS;
+        let mut budget = limits::FACTOR_COMBINATIONS.get();
         let mut product = UPoly::one();
         for (part, e) in self.square_free_decomposition() {
             for g in factor_square_free(&integer_coeffs(&part), &mut budget)? {
@@ -134,8 +127,8 @@ impl UPoly {
     ///
     /// # Errors
     /// As [`UPoly::factor`].
-    pub fn irreducible_factors(&self) -> Result<Vec<UPoly>, RecombinationBudget> {
-        let mut budget = RECOMBINATION_SUBSETS;
+    pub fn irreducible_factors(&self) -> Result<Vec<UPoly>, LimitError> {
+        let mut budget = limits::FACTOR_COMBINATIONS.get();
         Ok(
             factor_square_free(&integer_coeffs(&self.primitive_part()), &mut budget)?
                 .iter()
@@ -559,10 +552,7 @@ fn hensel_lift(
 
 /// The irreducible factors over Z of the square-free, primitive `f` with positive leading
 /// coefficient (each primitive with positive leading coefficient).
-fn factor_square_free(
-    f: &[BigInt],
-    budget: &mut u64,
-) -> Result<Vec<Vec<BigInt>>, RecombinationBudget> {
+fn factor_square_free(f: &[BigInt], budget: &mut u64) -> Result<Vec<Vec<BigInt>>, LimitError> {
     let n = f.len() - 1;
     if n <= 1 {
         return Ok(vec![f.to_vec()]);
@@ -580,8 +570,10 @@ fn factor_square_free(
     }
     let mut rng = Rng::new(0x5eed_fac7 ^ f.len() as u64);
     let lc = f.last().expect("non-zero").clone();
-    // The prime with the fewest modular factors among a few.
+    // The prime with the fewest modular factors among a few; the factor degrees all of them
+    // allow.
     let mut best: Option<(Fp, Vec<Vec<u64>>)> = None;
+    let mut possible = vec![true; f.len()];
     let mut tried = 0;
     let mut candidate = FIRST_PRIME;
     while tried < PRIMES_TRIED {
@@ -603,6 +595,15 @@ fn factor_square_free(
             out.push(f);
             return Ok(out);
         }
+        let sums = subset_degree_sums(&factors, f.len() - 1);
+        for (p, s) in possible.iter_mut().zip(sums) {
+            *p &= s;
+        }
+        if !possible[1..f.len() - 1].iter().any(|&p| p) {
+            // No proper factor degree is a subset sum for every prime: irreducible.
+            out.push(f);
+            return Ok(out);
+        }
         if best.as_ref().is_none_or(|(_, b)| factors.len() < b.len()) {
             best = Some((fp, factors));
         }
@@ -612,36 +613,54 @@ fn factor_square_free(
     let norm2: BigInt = f.iter().map(|c| c * c).sum::<BigInt>().sqrt() + 1;
     let bound = (lc.abs() * norm2) << n;
     let (lifted, m) = hensel_lift(&fp, &f, &factors, &(bound << 1usize));
-    recombine(f, lifted, &m, budget, &mut out)?;
+    recombine(f, lifted, &m, &possible, budget, &mut out)?;
     Ok(out)
 }
 
-/// Zassenhaus recombination of the lifted factors of `f` modulo `m` (module documentation).
+/// `sums[k]`: some of the modular `factors` have degrees adding up to `k` (`0 <= k <= n`).
+fn subset_degree_sums(factors: &[Vec<u64>], n: usize) -> Vec<bool> {
+    let mut sums = vec![false; n + 1];
+    sums[0] = true;
+    for u in factors {
+        let d = u.len() - 1;
+        for k in (d..=n).rev() {
+            sums[k] |= sums[k - d];
+        }
+    }
+    sums
+}
+
+/// Zassenhaus recombination of the lifted factors of `f` modulo `m` (module documentation);
+/// `possible[k]`: a factor of the original polynomial may have degree `k` (every factor of `f`
+/// is one).
 fn recombine(
     mut f: Vec<BigInt>,
     mut pool: Vec<Vec<BigInt>>,
     m: &BigInt,
+    possible: &[bool],
     budget: &mut u64,
     out: &mut Vec<Vec<BigInt>>,
-) -> Result<(), RecombinationBudget> {
+) -> Result<(), LimitError> {
     let mut size = 1;
     'sizes: while 2 * size <= pool.len() {
         let lc = f.last().expect("non-zero").clone();
         let mut subset: Vec<usize> = (0..size).collect();
         loop {
+            // Every subset enumerated counts, the pruned ones too: the limit bounds the work.
             if *budget == 0 {
-                return Err(RecombinationBudget {
-                    modular: pool.len(),
-                    degree: f.len() - 1,
-                });
+                let limit = &limits::FACTOR_COMBINATIONS;
+                return Err(limit.exceeded(format!("more than {}", limit.get())));
             }
             *budget -= 1;
-            // Constant terms first: lc * prod u(0) must divide lc * f(0) up to the content.
-            let c0 = subset.iter().fold(lc.clone(), |acc, &i| {
-                (acc * pool[i].first().cloned().unwrap_or_default()).mod_floor(m)
-            });
-            let c0 = symmetric(&[c0], m).pop().unwrap_or_default();
-            let plausible = f[0].is_zero() || c0.is_zero() || (&lc * &f[0]) % &c0 == BigInt::zero();
+            let degree: usize = subset.iter().map(|&i| pool[i].len() - 1).sum();
+            let plausible = possible.get(degree).copied().unwrap_or(false) && {
+                // Constant terms first: lc * prod u(0) must divide lc * f(0) up to the content.
+                let c0 = subset.iter().fold(lc.clone(), |acc, &i| {
+                    (acc * pool[i].first().cloned().unwrap_or_default()).mod_floor(m)
+                });
+                let c0 = symmetric(&[c0], m).pop().unwrap_or_default();
+                f[0].is_zero() || c0.is_zero() || (&lc * &f[0]) % &c0 == BigInt::zero()
+            };
             if plausible {
                 let g = subset.iter().fold(vec![lc.clone()], |acc, &i| {
                     reduce(&mul_z(&acc, &pool[i]), m)
@@ -789,6 +808,75 @@ mod tests {
         check(&p, &f);
         let gs: Vec<UPoly> = f.factors.iter().map(|(g, _)| g.clone()).collect();
         assert_eq!(gs, vec![up(&[1, -4, 1]), up(&[1, 4, 1]), s]);
+    }
+
+    /// The Swinnerton-Dyer polynomial of the square roots of `primes`: the product of
+    /// `x - (+-sqrt p1 +- ... +- sqrt pk)` over all signs, built without factoring as
+    /// `s_{k+1}(x) = s_k(x - sqrt p) s_k(x + sqrt p) = A^2 - p B^2` for `s_k(x - sqrt p) = A + sqrt(p) B`.
+    fn swinnerton_dyer(primes: &[i64]) -> UPoly {
+        let mut s = up(&[0, 1]);
+        for &p in primes {
+            let (mut a, mut b) = (UPoly::zero(), UPoly::zero());
+            let (mut pa, mut pb) = (UPoly::one(), UPoly::zero());
+            let pq = UPoly::constant(Rational::from_integer(p));
+            for c in s.coeffs() {
+                a = a.add_ref(&pa.mul_ref(&UPoly::constant(c.clone())));
+                b = b.add_ref(&pb.mul_ref(&UPoly::constant(c.clone())));
+                // (pa + sqrt(p) pb)(x - sqrt(p)) = (x pa - p pb) + sqrt(p)(x pb - pa).
+                let next_a = pa.mul_ref(&UPoly::x()).sub_ref(&pb.mul_ref(&pq));
+                let next_b = pb.mul_ref(&UPoly::x()).sub_ref(&pa);
+                pa = next_a;
+                pb = next_b;
+            }
+            s = a.mul_ref(&a).sub_ref(&pq.mul_ref(&b.mul_ref(&b)));
+        }
+        s
+    }
+
+    #[test]
+    fn swinnerton_dyer_polynomials_are_irreducible_or_refused() {
+        // Degrees 16 and 32: irreducible over Q, products of linear and quadratic factors modulo
+        // every prime (2^8 and 2^16 subsets of modular factors).
+        for primes in [&[2i64, 3, 5, 7][..], &[2, 3, 5, 7, 11]] {
+            let s = swinnerton_dyer(primes);
+            assert_eq!(s.degree(), 1 << primes.len());
+            let f = s
+                .factor()
+                .expect("within the default factor-combinations limit");
+            check(&s, &f);
+            assert_eq!(
+                f.factors,
+                vec![(s.clone(), 1)],
+                "SD{primes:?} is irreducible"
+            );
+        }
+        // With too small a budget the answer is the limit's error, never a partial
+        // factorisation.
+        let s = swinnerton_dyer(&[2, 3, 5, 7]);
+        let err = factor_square_free(&integer_coeffs(&s), &mut 20).unwrap_err();
+        assert_eq!(err.limit.name(), "factor-combinations");
+        assert!(
+            err.to_string()
+                .contains("exceeds the limit factor-combinations"),
+            "{err}"
+        );
+        // A product of two of them is found as the two factors, whatever the budget leaves.
+        let t = swinnerton_dyer(&[2, 3, 5]);
+        let p = s.mul_ref(&t);
+        let f = p.factor().unwrap();
+        check(&p, &f);
+        assert_eq!(f.factors, vec![(t, 1), (s, 1)]);
+    }
+
+    #[test]
+    fn degree_patterns_prove_irreducibility() {
+        // x^4 + x + 1 is irreducible; patterns {1, 3} and {2, 2} of two primes leave no proper
+        // factor degree (1 and 3 are not sums of 2 and 2, and 2 is not a sum of 1 and 3).
+        let g = up(&[1, 1, 0, 0, 1]);
+        let f = g.factor().unwrap();
+        assert_eq!(f.factors, vec![(g.clone(), 1)]);
+        let sums = subset_degree_sums(&[vec![1, 1], vec![1, 0, 0, 1]], 4);
+        assert_eq!(sums, vec![true, true, false, true, true]);
     }
 
     /// A random integer polynomial of degree `d` from drawn coefficients (leading one non-zero).

@@ -78,7 +78,7 @@ mod upoly;
 
 pub use descartes::{integer_real_roots, integer_real_roots_to, MAX_DESCARTES_DEGREE};
 pub use exactcheck_core::roots::{IsolatedRoot, ZeroPolynomial};
-pub use factor::{Factorisation, RecombinationBudget, RECOMBINATION_SUBSETS};
+pub use factor::Factorisation;
 pub use isolate::sign_variations;
 pub use real_roots::{
     common_real_roots_in, compare_with_real_root, descartes_bound, isolate_real_roots,

@@ -1,12 +1,98 @@
 //! `identity` claims: decided by the identity engine as `prove` decides its identities, one
-//! statement per component.
+//! statement per component; real algebraic constants outside the square-root field
+//! (`cos(pi/5)`, `sqrt(2 + sqrt(2))`) next to variables are put in one number field by the
+//! function `prove` uses ([`crate::prove_constants::abstract_statement`]) and a non-zero
+//! reduction gets its exact counter-example at the field's generator
+//! ([`crate::prove_constants::settle`]).
 
 use super::*;
+use crate::prove_constants::{self, ConstantsError};
+use exactcheck_exact::prove::AlgebraicConstants;
 
-/// An identity claim through the identity engine; with the outcome, why the claim's corrected
-/// form is not proved equal to its `rhs` (if it is not).
-pub(super) fn identity<C: PointField + Display>(
+/// The expressions of an identity claim with its algebraic constants as polynomials in the
+/// primitive element `c` of their field, in the places of the claim's own.
+pub(super) struct Filled {
+    k: AlgebraicConstants,
+    lhs: Vec<Expr>,
+    rhs: Vec<Expr>,
+    corrected: Option<Vec<Expr>>,
+    relations: Vec<(Expr, Expr)>,
+    nonzero: Vec<(Expr, Expr, String)>,
+}
+
+/// An identity claim: in the number field of its constants when one lies outside the
+/// square-root field, else over the field the claim asks for (`radical` or Q).
+pub(super) fn identity_claim(check: &Check) -> Result<(Outcome, Option<String>), Fault> {
+    let Check::Identity {
+        lhs,
+        rhs,
+        conditions,
+        corrected,
+        radical,
+        ..
+    } = check
+    else {
+        unreachable!("identity_claim() is called for identity claims")
+    };
+    // Every expression decided, with the key it is read from.
+    let exprs: Vec<(&'static str, &Expr)> = lhs
+        .iter()
+        .map(|e| ("lhs", e))
+        .chain(rhs.iter().map(|e| ("rhs", e)))
+        .chain(corrected.iter().flatten().map(|e| ("corrected", e)))
+        .chain(
+            conditions
+                .relations
+                .iter()
+                .flat_map(|(a, b)| [a, b])
+                .chain(conditions.nonzero.iter().flat_map(|(a, b, _)| [a, b]))
+                .map(|e| ("where", e)),
+        )
+        .collect();
+    let (keys, exprs): (Vec<&'static str>, Vec<&Expr>) = exprs.into_iter().unzip();
+    if prove_constants::any_needs_constants(exprs.iter().copied()) {
+        match prove_constants::abstract_statement(&exprs) {
+            Ok(Some((k, filled))) => {
+                let mut filled = filled.into_iter();
+                let mut next = || filled.next().expect("one filled expression per expression");
+                let filled = Filled {
+                    lhs: lhs.iter().map(|_| next()).collect(),
+                    rhs: rhs.iter().map(|_| next()).collect(),
+                    corrected: corrected
+                        .as_ref()
+                        .map(|xs| xs.iter().map(|_| next()).collect()),
+                    relations: conditions
+                        .relations
+                        .iter()
+                        .map(|_| (next(), next()))
+                        .collect(),
+                    nonzero: conditions
+                        .nonzero
+                        .iter()
+                        .map(|(_, _, t)| (next(), next(), t.clone()))
+                        .collect(),
+                    k,
+                };
+                return identity::<Rational>(check, Some(&filled));
+            }
+            Ok(None) => {}
+            Err(ConstantsError::Expr(i, why)) => return Err(Fault::Input(keys[i], why)),
+            Err(ConstantsError::Field(why)) => return Err(Fault::Input("lhs", why)),
+        }
+    }
+    if *radical {
+        identity::<Radical>(check, None)
+    } else {
+        identity::<Rational>(check, None)
+    }
+}
+
+/// An identity claim through the identity engine (with its constants in a number field when
+/// `constants` is given); with the outcome, why the claim's corrected form is not proved equal
+/// to its `rhs` (if it is not).
+fn identity<C: PointField + Display>(
     check: &Check,
+    constants: Option<&Filled>,
 ) -> Result<(Outcome, Option<String>), Fault> {
     let Check::Identity {
         shape,
@@ -20,11 +106,29 @@ pub(super) fn identity<C: PointField + Display>(
     else {
         unreachable!("identity() is called for identity claims")
     };
+    // The expressions decided: the claim's own, or with the constants in the field.
+    let (lhs_in, rhs_in, corrected_in, relations_in, nonzero_in) = match constants {
+        Some(f) => (
+            &f.lhs,
+            &f.rhs,
+            f.corrected.as_ref(),
+            &f.relations,
+            &f.nonzero,
+        ),
+        None => (
+            lhs,
+            rhs,
+            corrected.as_ref(),
+            &conditions.relations,
+            &conditions.nonzero,
+        ),
+    };
+    let k = constants.map(|f| &f.k);
     let mut vars = Vars::new();
     // `sqrt` of a non-constant becomes a variable with its relation and sign condition.
     vars.allow_roots();
     let mut coordinates = Vec::new();
-    for (l, r) in lhs.iter().zip(rhs) {
+    for (l, r) in lhs_in.iter().zip(rhs_in) {
         let l = to_ratfun::<C>(l, &mut vars, "lhs")?;
         let r = to_ratfun::<C>(r, &mut vars, "rhs")?;
         coordinates.push(Statement::Sides(l, r));
@@ -34,7 +138,7 @@ pub(super) fn identity<C: PointField + Display>(
         Shape::Scalar => Vec::new(),
         s => (0..s.len()).map(|k| s.component(k)).collect(),
     };
-    let corrected_fns = match corrected {
+    let corrected_fns = match corrected_in {
         Some(xs) => Some(
             xs.iter()
                 .map(|x| to_ratfun::<C>(x, &mut vars, "corrected"))
@@ -43,7 +147,7 @@ pub(super) fn identity<C: PointField + Display>(
         None => None,
     };
     let mut relations = Vec::new();
-    for (a, b) in &conditions.relations {
+    for (a, b) in relations_in {
         relations.push((
             to_ratfun::<C>(a, &mut vars, "where")?,
             to_ratfun::<C>(b, &mut vars, "where")?,
@@ -52,7 +156,7 @@ pub(super) fn identity<C: PointField + Display>(
     // Hypotheses `A != B`, cleared of denominators (which become hypotheses too).
     let mut hypotheses: Vec<Poly<C>> = Vec::new();
     let mut nonzero_texts: Vec<(String, String)> = Vec::new();
-    for (a, b, text) in &conditions.nonzero {
+    for (a, b, text) in nonzero_in {
         let a = to_ratfun::<C>(a, &mut vars, "where")?;
         let b = to_ratfun::<C>(b, &mut vars, "where")?;
         let cleared =
@@ -97,6 +201,21 @@ pub(super) fn identity<C: PointField + Display>(
         mixed,
         user_relations,
     } = crate::prove_cmd::add_angles(&vars, &mut relations);
+    // The minimal polynomial of the constants' primitive element and its isolating interval
+    // (after the angles, so that it does not count as a relation of the claim's).
+    let constant_domain = match k {
+        Some(k) => {
+            let (m, domain) =
+                prove_constants::constant_relation::<C>(k, &mut vars).map_err(Fault::Internal)?;
+            relations.push(m);
+            Some(domain)
+        }
+        None => None,
+    };
+    let suffix = match k {
+        Some(k) => format!("{suffix} ({})", k.description()),
+        None => suffix,
+    };
     let mut domains: Vec<(Var, Domain)> = Vec::new();
     for (v, d, text) in &conditions.domains {
         let var = vars.get(v).ok_or_else(|| {
@@ -108,6 +227,7 @@ pub(super) fn identity<C: PointField + Display>(
         domains.push((var, d.clone()));
     }
     domains.extend(roots.iter().map(|r| (r.var, SquareRoot::<C>::domain())));
+    domains.extend(constant_domain);
     let spec = IdentitySpec {
         relations,
         domains,
@@ -144,6 +264,12 @@ pub(super) fn identity<C: PointField + Display>(
             .domains
             .iter()
             .map(|(n, _, t)| (n.clone(), t.trim().to_string()))
+            .chain(k.map(|k| {
+                (
+                    k.name.clone(),
+                    format!("{} in its isolating interval {}", k.name, k.domain()),
+                )
+            }))
             .collect(),
         suffix,
     };
@@ -156,8 +282,49 @@ pub(super) fn identity<C: PointField + Display>(
     })?;
     let mut report = report;
     crate::prove_cmd::sound_counter_example(&mut report, pi_in_relations, &mixed);
+    // With algebraic constants, a non-zero reduction gets its counter-example at c = theta.
+    let constant_point = k.and_then(|k| prove_constants::settle(k, &spec, &mut report, pi, &mixed));
     let method = phrasing.method::<C>();
+    let rels_hold = if user_relations == 0 {
+        ""
+    } else {
+        " (where the relations hold)"
+    };
     let evidence = match &report.verdict {
+        IdentityVerdict::Undecided {
+            normal_form,
+            coordinate,
+            ..
+        } if constant_point.is_some() => {
+            let (k, p) = (
+                k.expect("a constant point has its constants"),
+                constant_point.as_ref().expect("matched"),
+            );
+            let at = exactcheck_exact::expr::describe_point(&prove_constants::named_point(
+                p, &spec.vars,
+            ));
+            format!(
+                "{}{}LHS - RHS = {}; LHS - RHS{} reduces{} to {}, not zero{}",
+                match phrasing.labels.get(*coordinate) {
+                    Some(label) => format!("in {label}: "),
+                    None => String::new(),
+                },
+                if at.is_empty() {
+                    String::new()
+                } else {
+                    format!("at {}{rels_hold} ", at.join(", "))
+                },
+                prove_constants::shown_value(k, p, &spec.vars),
+                if report.cleared[*coordinate] {
+                    " with the denominators cleared"
+                } else {
+                    ""
+                },
+                phrasing.modulo(),
+                exactcheck_exact::prove::factored(normal_form, &spec.vars),
+                phrasing.suffix,
+            )
+        }
         IdentityVerdict::Fails {
             coordinate: k,
             point,
@@ -201,11 +368,7 @@ pub(super) fn identity<C: PointField + Display>(
                 } else {
                     format!("at {}", at.join(", "))
                 },
-                if user_relations == 0 {
-                    ""
-                } else {
-                    " (where the relations hold)"
-                },
+                rels_hold,
                 if report.cleared[*k] {
                     " with the denominators cleared"
                 } else {
@@ -218,7 +381,72 @@ pub(super) fn identity<C: PointField + Display>(
         _ => phrasing.evidence(&report),
     };
     let correction_problem = phrasing.correction_problem(&report);
+    let printed: Vec<Equation> = if names.is_empty() {
+        lhs.iter()
+            .zip(rhs)
+            .map(|(l, r)| Equation {
+                lhs: l.clone(),
+                rhs: r.clone(),
+            })
+            .collect()
+    } else {
+        names
+            .iter()
+            .zip(lhs)
+            .map(|(n, l)| Equation {
+                lhs: n.clone(),
+                rhs: l.clone(),
+            })
+            .collect()
+    };
     let (verdict, erratum) = match &report.verdict {
+        IdentityVerdict::Undecided { coordinate, .. } if constant_point.is_some() => {
+            let p = constant_point.as_ref().expect("matched");
+            let mut counter_example = Vec::new();
+            let mut residual_at = difference(&lhs[*coordinate], &rhs[*coordinate]);
+            let mut plain = true;
+            for (name, q) in prove_constants::named_point(p, &spec.vars) {
+                let value = value_expr(&q)?;
+                if name.contains('(') {
+                    plain = false;
+                } else {
+                    residual_at = defs::substitute_free(&residual_at, &name, &value)
+                        .map_err(Fault::Internal)?;
+                }
+                counter_example.push(Equation {
+                    lhs: var(&name),
+                    rhs: value,
+                });
+            }
+            // The value as a formula: its radical form, else (a `Root`) the difference at the
+            // point when every coordinate is a plain variable.
+            let residual = match value_expr(&p.value) {
+                Ok(v) => vec![Equation {
+                    lhs: difference(&lhs[*coordinate], &rhs[*coordinate]),
+                    rhs: v,
+                }],
+                Err(_) if plain => vec![Equation {
+                    lhs: difference(&lhs[*coordinate], &rhs[*coordinate]),
+                    rhs: residual_at,
+                }],
+                Err(_) => Vec::new(),
+            };
+            let erratum = Erratum {
+                printed,
+                correction: format!(
+                    "LHS - RHS = {} at the counter-example",
+                    prove_constants::shown_value(
+                        k.expect("a constant point has its constants"),
+                        p,
+                        &spec.vars
+                    )
+                ),
+                counter_example,
+                residual,
+                ..Erratum::default()
+            };
+            (Verdict::Fails, Some(Box::new(erratum)))
+        }
         IdentityVerdict::Proved { .. } => (Verdict::Proved, None),
         IdentityVerdict::Undecided { .. } => (Verdict::Undecided, None),
         IdentityVerdict::Fails {
@@ -238,24 +466,6 @@ pub(super) fn identity<C: PointField + Display>(
                     rhs: value_expr(q)?,
                 });
             }
-            let printed: Vec<Equation> = if names.is_empty() {
-                lhs.iter()
-                    .zip(rhs)
-                    .map(|(l, r)| Equation {
-                        lhs: l.clone(),
-                        rhs: r.clone(),
-                    })
-                    .collect()
-            } else {
-                names
-                    .iter()
-                    .zip(lhs)
-                    .map(|(n, l)| Equation {
-                        lhs: n.clone(),
-                        rhs: l.clone(),
-                    })
-                    .collect()
-            };
             let mut erratum = Erratum {
                 printed,
                 correction: phrasing.erratum_correction(&report),

@@ -2,6 +2,7 @@
 //! modulo a random prime (as `prove --random`).
 
 use super::*;
+use exactcheck_exact::Algebraic;
 
 pub(super) fn instances(check: &Check) -> Result<Outcome, Fault> {
     let Check::Instances {
@@ -24,6 +25,15 @@ pub(super) fn instances(check: &Check) -> Result<Outcome, Fault> {
         a.collect_variables(&mut names);
         b.collect_variables(&mut names);
     }
+    // `pi` is the constant, not a variable an instance gives a value to.
+    names.retain(|n| n != exactcheck_exact::expr::PI);
+    // Constants outside the square-root field (`cos(pi/5)`) are evaluated as real algebraic
+    // numbers, as `prove` evaluates an identity between constants.
+    let algebraic = crate::prove_constants::any_needs_constants(
+        lhs.iter()
+            .chain(rhs)
+            .chain(conditions.relations.iter().flat_map(|(a, b)| [a, b])),
+    );
     // Exact instances: independent, so checked in parallel, then read in order (the first
     // instance with a fault of the file or a non-zero residual is the one reported, as when
     // they ran one after another).
@@ -46,19 +56,35 @@ pub(super) fn instances(check: &Check) -> Result<Outcome, Fault> {
                 ),
             ));
         }
-        let eval = |e: &Expr| -> Result<Radical, Fault> {
+        // `a - b` at the instance: `None` when it is zero, else its exact value.
+        let difference_at = |a: &Expr, b: &Expr| -> Result<Option<String>, Fault> {
             // The substitution respects the binders of diff, integrate and sum (a `diff` in a
             // substituted variable is taken first); what remains is lowered and evaluated.
-            let mut x = e.clone();
-            for (v, val) in point {
-                x = defs::substitute_free(&x, v, val)
-                    .map_err(|why| Fault::Input("at", format!("instance {}: {why}", k + 1)))?;
-            }
-            exactcheck_exact::expr::eval_lowered::<Radical>(&x)
-                .map_err(|err| Fault::Input("at", format!("instance {}: {err}", k + 1)))
+            let at = |e: &Expr| -> Result<Expr, Fault> {
+                let mut x = e.clone();
+                for (v, val) in point {
+                    x = defs::substitute_free(&x, v, val)
+                        .map_err(|why| Fault::Input("at", format!("instance {}: {why}", k + 1)))?;
+                }
+                Ok(x)
+            };
+            let bad = |err: exactcheck_exact::expr::ExprError| {
+                Fault::Input("at", format!("instance {}: {err}", k + 1))
+            };
+            let (a, b) = (at(a)?, at(b)?);
+            Ok(if algebraic {
+                let d = exactcheck_exact::expr::eval_lowered::<Algebraic>(&a).map_err(bad)?
+                    - exactcheck_exact::expr::eval_lowered::<Algebraic>(&b).map_err(bad)?;
+                (!d.is_zero()).then(|| d.to_string())
+            } else {
+                let d = exactcheck_exact::expr::eval_lowered::<Radical>(&a)
+                    .map_err(bad)?
+                    .sub_ref(&exactcheck_exact::expr::eval_lowered::<Radical>(&b).map_err(bad)?);
+                (!d.is_zero()).then(|| d.to_string())
+            })
         };
         for (i, (a, b)) in conditions.relations.iter().enumerate() {
-            if eval(a)? != eval(b)? {
+            if difference_at(a, b)?.is_some() {
                 return Err(Fault::Input(
                     "at",
                     format!(
@@ -70,8 +96,7 @@ pub(super) fn instances(check: &Check) -> Result<Outcome, Fault> {
             }
         }
         for (c, (l, r)) in lhs.iter().zip(rhs).enumerate() {
-            let d = eval(l)?.sub_ref(&eval(r)?);
-            if !d.is_zero() {
+            if let Some(d) = difference_at(l, r)? {
                 let coords = if lhs.len() == 1 {
                     String::new()
                 } else {
@@ -91,10 +116,15 @@ pub(super) fn instances(check: &Check) -> Result<Outcome, Fault> {
                             rhs: x.clone(),
                         })
                         .collect(),
-                    residual: vec![Equation {
-                        lhs: difference(l, r),
-                        rhs: value_expr(&d)?,
-                    }],
+                    // A value with no radical form (`Root(...)`) is in the correction only.
+                    residual: value_expr(&d)
+                        .map(|v| {
+                            vec![Equation {
+                                lhs: difference(l, r),
+                                rhs: v,
+                            }]
+                        })
+                        .unwrap_or_default(),
                     ..Erratum::default()
                 };
                 return Ok(Some(Outcome {

@@ -11,7 +11,7 @@ mod instances;
 mod solve;
 mod value;
 
-use identity::identity;
+use identity::identity_claim;
 use instances::instances;
 use solve::solve;
 use value::{printed_tuple, values};
@@ -480,8 +480,7 @@ pub fn run(
     notation: &[(String, String)],
 ) -> Result<(Outcome, Option<String>), Fault> {
     let (mut out, problem) = match check {
-        Check::Identity { radical: true, .. } => identity::<Radical>(check)?,
-        Check::Identity { .. } => identity::<Rational>(check)?,
+        Check::Identity { .. } => identity_claim(check)?,
         Check::Value {
             exprs,
             names,
