@@ -31,6 +31,7 @@
 //! nested square roots do not denest (`sqrt(2 + sqrt(2))`) is decided in the real algebraic
 //! numbers (`exactcheck_exact::algebraic`).
 
+mod constants;
 mod random;
 
 use crate::Error;
@@ -352,10 +353,8 @@ pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
                 return Ok(code);
             }
         }
-        if crate::prove_constants::needs_constants(&sides, &relations, &nonzero) {
-            return crate::prove_constants::prove_with_constants(
-                args, &sides, &relations, &nonzero, &domains,
-            );
+        if constants::needs_constants(&sides, &relations, &nonzero) {
+            return constants::prove_with_constants(args, &sides, &relations, &nonzero, &domains);
         }
         prove_over::<Radical>(args, &sides, &relations, &nonzero, &domains, None)
     } else {
@@ -444,7 +443,7 @@ fn to_poly<C: Coefficient>(e: &Expr, vars: &mut Vars, what: &str) -> Result<Poly
 
 /// Decides `lhs = rhs` over `C` (the core of [`run`]); `constants`, when given, are the
 /// statement's algebraic constants as polynomials in the variable of their primitive element,
-/// whose minimal polynomial joins the relations (`crate::prove_constants`).
+/// whose minimal polynomial joins the relations ([`constants`]).
 pub(crate) fn prove_over<C: PointField + Display>(
     args: &ProveArgs,
     sides: &Sides,
@@ -615,7 +614,7 @@ pub(crate) fn prove_over<C: PointField + Display>(
     let mut constant_point = None;
     if let Some(k) = constants {
         let excluded: Vec<Var> = pi.into_iter().collect();
-        let found = crate::prove_constants::search(k, &spec, &report, &excluded, &mixed);
+        let found = constants::search(k, &spec, &report, &excluded, &mixed);
         if let IdentityVerdict::Undecided {
             searched,
             coordinate,
@@ -683,7 +682,7 @@ pub(crate) fn prove_over<C: PointField + Display>(
             _,
         ) if constant_point.is_some() => {
             let p = constant_point.as_ref().expect("matched");
-            let at = describe_point(&crate::prove_constants::named_point(p, &spec.vars));
+            let at = describe_point(&constants::named_point(p, &spec.vars));
             let nf = factored(normal_form, &spec.vars);
             let at = if at.is_empty() {
                 String::new()
@@ -800,7 +799,7 @@ pub(crate) fn prove_over<C: PointField + Display>(
             if sides.shape != Shape::Scalar {
                 obj["failing_component"] = json!(sides.shape.component(*coordinate));
             }
-            obj["point"] = crate::prove_constants::named_point(p, vars)
+            obj["point"] = constants::named_point(p, vars)
                 .into_iter()
                 .map(|(n, q)| (n, json!(q)))
                 .collect::<serde_json::Map<_, _>>()
