@@ -131,8 +131,8 @@ fn published_unit(s: &mut Setup) -> Result<Outcome, String> {
     );
     let (n1, n2, p1, p2) = (&s.n1, &s.n2, &s.p1, &s.p2);
     let q_num = n1.scale(&s1).add_scaled(&s2, n2);
-    let plane1 = Plane::through(n1.clone(), &p1);
-    let plane2 = Plane::through(n2.clone(), &p2);
+    let plane1 = Plane::through(n1.clone(), p1);
+    let plane2 = Plane::through(n2.clone(), p2);
     let residuals = vec![
         (
             "n1 . (s1 n1 + s2 n2) - d1, times 1 - r^2",
