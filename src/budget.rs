@@ -22,7 +22,8 @@
 //! Either way the process groups of running `--program` float sides are killed first
 //! ([`exactcheck_float::program::stop_all`]).
 //! - **Progress.** A long `prove` or `solve` shows the seconds spent on standard error when that
-//!   is a terminal ([`start_progress`]); [`crate::output`] clears the line before writing.
+//!   is a terminal ([`start_progress`], kept in the leaf module [`crate::progress`] so that
+//!   [`crate::output`] can clear the line before writing without depending on this module).
 //!
 //! Hand-written because no crate does this: allocator-limiting crates (`cap`, `stats_alloc`)
 //! return a null pointer past the cap, which the runtime turns into an abort with exit status 134
@@ -31,10 +32,10 @@
 use exactcheck_core::limits;
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
-use std::io::IsTerminal as _;
 use std::sync::atomic::{AtomicBool, AtomicIsize, AtomicUsize, Ordering};
-use std::sync::Mutex;
 use std::time::{Duration, Instant};
+
+pub use crate::progress::{clear_progress, start_progress};
 
 /// Bytes handed out by the allocator and not yet freed, up to each thread's unflushed balance
 /// (at most [`SLACK`] bytes per thread either way).
@@ -445,55 +446,6 @@ fn trial_pool(
         std::thread::sleep(Duration::from_millis(1));
     }
     Ok(())
-}
-
-/// Whether the progress line is on screen (guarded so that it is cleared exactly once).
-static PROGRESS: Mutex<bool> = Mutex::new(false);
-/// Set when the command's output begins: no progress line after that.
-static PROGRESS_DONE: AtomicBool = AtomicBool::new(false);
-
-/// Shows "working: WHAT (N s)" on standard error, updated every second, once the command has run
-/// for two seconds; only when standard error is a terminal. Cleared by [`clear_progress`].
-pub fn start_progress(what: &'static str) {
-    if !std::io::stderr().is_terminal() {
-        return;
-    }
-    let start = Instant::now();
-    let _ = std::thread::Builder::new()
-        .name("progress".into())
-        .spawn(move || {
-            std::thread::sleep(Duration::from_secs(2));
-            loop {
-                {
-                    let Ok(mut shown) = PROGRESS.lock() else {
-                        return;
-                    };
-                    if PROGRESS_DONE.load(Ordering::Relaxed) {
-                        return;
-                    }
-                    use std::io::Write as _;
-                    let _ = write!(
-                        std::io::stderr(),
-                        "\r\x1b[Kexactcheck: working: {what} ({} s; --timeout bounds it)",
-                        start.elapsed().as_secs()
-                    );
-                    *shown = true;
-                }
-                std::thread::sleep(Duration::from_secs(1));
-            }
-        });
-}
-
-/// Removes the progress line, if shown, and stops it for good (before output is written).
-pub fn clear_progress() {
-    PROGRESS_DONE.store(true, Ordering::Relaxed);
-    if let Ok(mut shown) = PROGRESS.lock() {
-        if *shown {
-            use std::io::Write as _;
-            let _ = write!(std::io::stderr(), "\r\x1b[K");
-            *shown = false;
-        }
-    }
 }
 
 #[cfg(test)]

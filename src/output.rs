@@ -36,7 +36,7 @@ use std::sync::Mutex;
 /// [`Error::Output`] when the write or the flush fails (test it with
 /// [`Error::is_broken_pipe`]).
 pub fn println(text: impl Display) -> Result<(), Error> {
-    crate::budget::clear_progress();
+    crate::progress::clear_progress();
     write_line(&mut io::stdout().lock(), text)
 }
 
@@ -45,7 +45,7 @@ pub fn println(text: impl Display) -> Result<(), Error> {
 /// # Errors
 /// As [`println()`].
 pub fn print(text: impl Display) -> Result<(), Error> {
-    crate::budget::clear_progress();
+    crate::progress::clear_progress();
     let mut out = io::stdout().lock();
     write!(out, "{text}")
         .and_then(|()| out.flush())

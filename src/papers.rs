@@ -1,16 +1,20 @@
 //! The paper registry: every source the built-in catalogue checks, as one unit each — its
 //! claims (`crate::claims::<unit>`) and its figures (drawn by `crate::plot`). `verify`, the
 //! report and `plot` read the papers from here, so adding a paper is one module under
-//! `src/claims/`, its figures (if any) in `src/plot/`, and one entry of [`PAPERS`].
+//! `src/claims/`, its figures (if any) in `src/plot/` (with its name in
+//! [`plot::FIGURE_NAMES`]), and one entry of [`PAPERS`]. The catalogue is run from here
+//! ([`verify`]): the registry sits above the claims and the figures, which never refer back.
 //!
 //! Several units can share one source document and claim-id prefix: Chiang's paper is four
 //! units (`chiang`: ruled surfaces cut by planes; `chiang_conic`: the cone's conics;
 //! `chiang_line`: lines and the vicinity test; `chiang_ph`: offsets of PH curves), all
 //! `chiang.*` ids on one page.
 
-use crate::claims::{self, Claim};
+use crate::claims::{self, Checked, Claim};
 use crate::plot::{self, Figure};
 use crate::Error;
+use rayon::prelude::*;
+use std::time::Instant;
 
 /// One unit of the catalogue.
 pub struct Paper {
@@ -110,9 +114,67 @@ pub fn figures() -> Result<Vec<Figure>, Error> {
     Ok(out)
 }
 
-/// Whether `name` is the `plot` name of a paper's figures (not a problem file).
-pub fn is_plot_name(name: &str) -> bool {
-    PAPERS.iter().any(|p| p.plot == Some(name))
+/// The whole catalogue in the order of the papers' claim list (docs/papers/README.md): the
+/// claims of every unit of [`PAPERS`].
+pub fn catalogue() -> Vec<Claim> {
+    PAPERS.iter().flat_map(|p| (p.claims)()).collect()
+}
+
+/// Checks every claim whose id starts with `prefix` (all when `None`).
+///
+/// # Errors
+/// When a prefix is given and no claim id starts with it.
+pub fn verify(prefix: Option<&str>) -> Result<Vec<Checked>, Error> {
+    verify_with(prefix, true)
+}
+
+/// [`verify`], showing a progress bar on standard error unless `quiet` (or it is not a
+/// terminal).
+///
+/// The claims run in parallel on rayon's global pool (`RAYON_NUM_THREADS` sets its size); the
+/// rows come back in catalogue order whatever the number of threads. The workers read the same
+/// process-wide `--limit` values (atomics of `exactcheck_core::limits`) and allocate through the
+/// same counting allocator as the main thread.
+///
+/// # Errors
+/// As [`verify`].
+pub fn verify_with(prefix: Option<&str>, quiet: bool) -> Result<Vec<Checked>, Error> {
+    let claims: Vec<Claim> = catalogue()
+        .into_iter()
+        .filter(|c| prefix.is_none_or(|p| c.id.starts_with(p)))
+        .collect();
+    if claims.is_empty() {
+        let known: Vec<&str> = catalogue().iter().map(|c| c.id).collect();
+        return Err(Error::Usage(format!(
+            "no claim id starts with {:?} (claims: {})",
+            prefix.unwrap_or(""),
+            known.join(", ")
+        )));
+    }
+    let steps = crate::output::Steps::new(claims.len() as u64, quiet);
+    // The claims are independent: each is a task of rayon's pool (`with_max_len(1)`: one claim
+    // per task, so a long claim never holds a queue of short ones). `collect` keeps catalogue
+    // order, so the rows, and every output made from them, do not depend on the thread count.
+    Ok(claims
+        .par_iter()
+        .with_max_len(1)
+        .map(|c| {
+            steps.start(c.id);
+            let start = Instant::now();
+            let outcome = (c.check)();
+            steps.done();
+            Checked {
+                id: c.id.to_string(),
+                source: c.id.split('.').next().unwrap_or(c.id).to_string(),
+                statement: c.statement.to_string(),
+                expected: c.expected,
+                outcome,
+                seconds: start.elapsed().as_secs_f64(),
+                problem: None,
+                bad_input: false,
+            }
+        })
+        .collect())
 }
 
 #[cfg(test)]
@@ -139,6 +201,18 @@ mod tests {
         let mut unique = names.clone();
         unique.dedup();
         assert_eq!(names, unique);
-        assert!(is_plot_name("conics") && !is_plot_name("problem.json"));
+        // `plot` dispatches on its own list of names: the same set as the registry's.
+        let mut sorted = names.clone();
+        sorted.sort_unstable();
+        let mut drawn = plot::FIGURE_NAMES.to_vec();
+        drawn.sort_unstable();
+        assert_eq!(sorted, drawn);
+    }
+
+    #[test]
+    fn no_claim_expects_undecided() {
+        assert!(catalogue()
+            .iter()
+            .all(|c| c.expected != claims::Verdict::Undecided));
     }
 }

@@ -31,6 +31,7 @@
 //! nested square roots do not denest (`sqrt(2 + sqrt(2))`) is decided in the real algebraic
 //! numbers (`exactcheck_exact::algebraic`).
 
+pub(crate) mod constants;
 mod random;
 
 use crate::Error;
@@ -352,10 +353,8 @@ pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
                 return Ok(code);
             }
         }
-        if crate::prove_constants::needs_constants(&sides, &relations, &nonzero) {
-            return crate::prove_constants::prove_with_constants(
-                args, &sides, &relations, &nonzero, &domains,
-            );
+        if constants::needs_constants(&sides, &relations, &nonzero) {
+            return constants::prove_with_constants(args, &sides, &relations, &nonzero, &domains);
         }
         prove_over::<Radical>(args, &sides, &relations, &nonzero, &domains, None)
     } else {
@@ -444,7 +443,7 @@ fn to_poly<C: Coefficient>(e: &Expr, vars: &mut Vars, what: &str) -> Result<Poly
 
 /// Decides `lhs = rhs` over `C` (the core of [`run`]); `constants`, when given, are the
 /// statement's algebraic constants as polynomials in the variable of their primitive element,
-/// whose minimal polynomial joins the relations (`crate::prove_constants`).
+/// whose minimal polynomial joins the relations ([`constants`]).
 pub(crate) fn prove_over<C: PointField + Display>(
     args: &ProveArgs,
     sides: &Sides,
@@ -515,7 +514,7 @@ pub(crate) fn prove_over<C: PointField + Display>(
     // does not count as a relation of the user's).
     let constant_domain = match constants {
         Some(k) => {
-            let (m, domain) = crate::prove_constants::constant_relation::<C>(k, &mut vars)
+            let (m, domain) = crate::prove_cmd::constants::constant_relation::<C>(k, &mut vars)
                 .map_err(Error::Input)?;
             rels.push(m);
             Some(domain)
@@ -612,7 +611,7 @@ pub(crate) fn prove_over<C: PointField + Display>(
     sound_counter_example(&mut report, pi_in_relations, &mixed);
     // With algebraic constants, a non-zero reduction gets its counter-example at c = theta.
     let constant_point =
-        constants.and_then(|k| crate::prove_constants::settle(k, &spec, &mut report, pi, &mixed));
+        constants.and_then(|k| crate::prove_cmd::constants::settle(k, &spec, &mut report, pi, &mixed));
     let (verdict, code) = match &report.verdict {
         _ if constant_point.is_some() => ("fails", ExitCode::from(1)),
         IdentityVerdict::Proved { .. } => ("proved", ExitCode::SUCCESS),
@@ -665,14 +664,14 @@ pub(crate) fn prove_over<C: PointField + Display>(
             _,
         ) if constant_point.is_some() => {
             let p = constant_point.as_ref().expect("matched");
-            let at = describe_point(&crate::prove_constants::named_point(p, &spec.vars));
+            let at = describe_point(&constants::named_point(p, &spec.vars));
             let nf = factored(normal_form, &spec.vars);
             let at = if at.is_empty() {
                 String::new()
             } else {
                 format!("at {}{rels_hold} ", at.join(", "))
             };
-            let value = crate::prove_constants::shown_value(
+            let value = crate::prove_cmd::constants::shown_value(
                 constants.expect("a constant point has its constants"),
                 p,
                 &spec.vars,
@@ -786,12 +785,12 @@ pub(crate) fn prove_over<C: PointField + Display>(
             if sides.shape != Shape::Scalar {
                 obj["failing_component"] = json!(sides.shape.component(*coordinate));
             }
-            obj["point"] = crate::prove_constants::named_point(p, vars)
+            obj["point"] = constants::named_point(p, vars)
                 .into_iter()
                 .map(|(n, q)| (n, json!(q)))
                 .collect::<serde_json::Map<_, _>>()
                 .into();
-            obj["value"] = json!(crate::prove_constants::shown_value(
+            obj["value"] = json!(crate::prove_cmd::constants::shown_value(
                 constants.expect("a constant point has its constants"),
                 p,
                 vars

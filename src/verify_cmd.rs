@@ -40,7 +40,7 @@ pub struct VerifyArgs {
 /// [`Error::Output`] when standard output fails.
 pub fn run(args: &VerifyArgs) -> Result<ExitCode, Error> {
     let rows = match &args.file {
-        None => crate::claims::verify_with(args.only.as_deref(), false)?,
+        None => crate::papers::verify_with(args.only.as_deref(), false)?,
         Some(path) => {
             let file = crate::claimfile::load(path)?;
             let rows = crate::claimfile::check_with(&file, args.only.as_deref(), false)?;

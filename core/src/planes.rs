@@ -2,7 +2,7 @@
 //!
 //! # The planes
 //! A plane in normal form is a normal `n != 0` and a point `P`: the points `x` with
-//! `n . x = d`, `d = n . P`. The normal need not have length 1; every formula here is a
+//! `n . x = d`, `d = n . P` (stored as [`Plane`]'s `normal . x + d' = 0` with `d' = -d`). The normal need not have length 1; every formula here is a
 //! polynomial (or a quotient of polynomials) in the coordinates, so it runs over the rationals,
 //! the square-root field, polynomials and `f64` alike.
 //!
@@ -46,32 +46,52 @@
 use crate::scalar::{OrderedField, Ring};
 use crate::vector::Vec3;
 
-/// A plane in normal form: the points `x` with `normal . x = normal . point`.
-#[derive(Clone, Debug, PartialEq)]
+/// A plane `normal . x + d = 0`, the one plane type of the workspace: built from its
+/// coefficients ([`Plane::new`], `a x + b y + c z + d = 0`, as the ruled surfaces and cone
+/// sections use it) or from a normal and a point ([`Plane::through`], `d = -normal . point`, as
+/// the plane-plane intersection takes it).
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct Plane<T> {
-    /// A normal vector (any length; zero is rejected by [`intersect`]).
+    /// The normal `N = (a, b, c)` (any length; zero is rejected by [`intersect`]).
     pub normal: Vec3<T>,
-    /// A point of the plane.
-    pub point: Vec3<T>,
+    /// The constant `d`.
+    pub d: T,
 }
 
 impl<T: Ring> Plane<T> {
-    /// The plane through `point` with normal `normal`.
-    pub fn new(normal: Vec3<T>, point: Vec3<T>) -> Self {
-        Plane { normal, point }
+    /// The plane `a x + b y + c z + d = 0`.
+    pub fn new(a: T, b: T, c: T, d: T) -> Self {
+        Plane {
+            normal: Vec3::new(a, b, c),
+            d,
+        }
     }
-    /// The right-hand side `d = normal . point` of the plane equation `normal . x = d`.
+
+    /// The plane through `point` with normal `normal`: `d = -normal . point`.
+    pub fn through(normal: Vec3<T>, point: &Vec3<T>) -> Self {
+        let d = normal.dot(point).neg_ref();
+        Plane { normal, d }
+    }
+
+    /// The plane `z = 0`.
+    pub fn z0() -> Self {
+        Plane::new(T::zero(), T::zero(), T::one(), T::zero())
+    }
+
+    /// The right-hand side `-d` of the plane equation written `normal . x = -d`.
     pub fn offset(&self) -> T {
-        self.normal.dot(&self.point)
+        self.d.neg_ref()
     }
-    /// `normal . x - d`: zero exactly when `x` lies on the plane.
-    pub fn residual(&self, x: &Vec3<T>) -> T {
-        self.normal.dot(x) - self.offset()
+
+    /// `N . x + d`: zero exactly when `x` lies on the plane.
+    pub fn value(&self, x: &Vec3<T>) -> T {
+        self.normal.dot(x) + &self.d
     }
-    /// The residual of a homogeneous point `numerator / denominator`, multiplied by the
-    /// denominator: `normal . numerator - d denominator`.
-    pub fn residual_hom(&self, numerator: &Vec3<T>, denominator: &T) -> T {
-        self.normal.dot(numerator) - self.offset().mul_ref(denominator)
+
+    /// The value at a homogeneous point `numerator / denominator`, multiplied by the
+    /// denominator: `N . numerator + d denominator`.
+    pub fn value_hom(&self, numerator: &Vec3<T>, denominator: &T) -> T {
+        self.normal.dot(numerator) + &self.d.mul_ref(denominator)
     }
 }
 
@@ -138,9 +158,9 @@ pub enum PlanePair<T> {
 
 /// The intersection of two planes, every case decided by exact zero tests (for exact fields).
 ///
-/// Parallel normals give [`PlanePair::Coincident`] when the second plane's point lies on the
-/// first plane (`n1 . P2 = d1`; with `n2 = k n1` the second plane is then `n1 . x = n1 . P2`,
-/// the same plane), else [`PlanePair::Parallel`]. The normals are parallel exactly when the
+/// Parallel normals give [`PlanePair::Coincident`] when the two equations are proportional
+/// (`d2 n1 = d1 n2`: with `n2 = k n1` this is `d2 = k d1`, and the second plane
+/// `k (n1 . x) + d2 = 0` is then the first), else [`PlanePair::Parallel`]. The normals are parallel exactly when the
 /// denominator `G = |n1 x n2|^2` is zero: in an ordered field a sum of squares vanishes only
 /// when every term does. Deciding on `G` itself (rather than on `n1 x n2`) means the division
 /// that follows can never meet a zero divisor, also in `f64` where `G` may underflow to 0 for a
@@ -160,7 +180,7 @@ pub fn intersect<T: OrderedField>(p1: &Plane<T>, p2: &Plane<T>) -> PlanePair<T> 
     }
     let (numerator, g) = nearest_point_hom(p1, p2);
     if g.is_zero() {
-        return if p1.residual(&p2.point).is_zero() {
+        return if p1.normal.scale(&p2.d) == p2.normal.scale(&p1.d) {
             PlanePair::Coincident
         } else {
             PlanePair::Parallel
@@ -180,9 +200,9 @@ mod tests {
     use super::*;
 
     fn plane(n: [i64; 3], p: [i64; 3]) -> Plane<f64> {
-        Plane::new(
+        Plane::through(
             Vec3::from_i64(n[0], n[1], n[2]),
-            Vec3::from_i64(p[0], p[1], p[2]),
+            &Vec3::from_i64(p[0], p[1], p[2]),
         )
     }
 
@@ -205,8 +225,8 @@ mod tests {
         // n1 x n2 = (0, 0, 1e-170) is not zero in f64, but |n1 x n2|^2 = 1e-340 underflows to 0.
         // The old decision on n1 x n2 went on to divide by G = 0 and panicked in `expect`; the
         // decision on G reports the (numerically) parallel planes instead.
-        let a = Plane::new(Vec3::new(1e-170, 0.0, 0.0), Vec3::zero());
-        let b = Plane::new(Vec3::new(0.0, 1.0, 0.0), Vec3::zero());
+        let a = Plane::through(Vec3::new(1e-170, 0.0, 0.0), &Vec3::zero());
+        let b = Plane::through(Vec3::new(0.0, 1.0, 0.0), &Vec3::zero());
         assert!(!direction(&a, &b).is_zero());
         assert_eq!(intersect(&a, &b), PlanePair::Coincident);
     }

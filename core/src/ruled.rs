@@ -56,34 +56,7 @@ use crate::bezier::{BezierCurve, RationalBezierCurve};
 use crate::scalar::{binom, from_u64, Field, Ring};
 use crate::vector::{Hom4, Vec3};
 
-/// The plane `N . x + d = 0`.
-#[derive(Clone, Debug, PartialEq, Eq, Hash)]
-pub struct Plane<T> {
-    /// The normal `N = (a, b, c)`.
-    pub normal: Vec3<T>,
-    /// The constant `d`.
-    pub d: T,
-}
-
-impl<T: Ring> Plane<T> {
-    /// The plane `a x + b y + c z + d = 0`.
-    pub fn new(a: T, b: T, c: T, d: T) -> Self {
-        Plane {
-            normal: Vec3::new(a, b, c),
-            d,
-        }
-    }
-
-    /// The plane `z = 0` of Corollaries 1 and 5.
-    pub fn z0() -> Self {
-        Plane::new(T::zero(), T::zero(), T::one(), T::zero())
-    }
-
-    /// `N . x + d`: zero exactly on the plane.
-    pub fn value(&self, x: &Vec3<T>) -> T {
-        self.normal.dot(x) + &self.d
-    }
-}
+pub use crate::planes::Plane;
 
 /// The ruled surface `S(s,t) = B(t) + s V(t)`: base curve `B` of degree `n`, direction field `V`
 /// of degree `m`.

@@ -12,6 +12,7 @@
 
 pub mod algebraic;
 pub mod bigint;
+pub mod coefficient;
 pub mod cylinder_sphere;
 pub mod expr;
 pub mod gcd;
@@ -33,8 +34,9 @@ pub mod traits;
 pub mod univariate;
 
 pub use algebraic::Algebraic;
+pub use expr::{ParseRadicalError, ParseRationalError};
 pub use modp::ModP;
 pub use plain::PlainRational;
-pub use radical::{ComplexRadical, ParseRadicalError, Radical, Radicand};
-pub use rational::{ParseRationalError, Rational};
+pub use radical::{ComplexRadical, Radical, Radicand};
+pub use rational::Rational;
 pub use traits::RationalScalar;

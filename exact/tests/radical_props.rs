@@ -5,7 +5,8 @@
 //! Satz 5 (the imaginary focal lines).
 
 use exactcheck_core::{Field, OrderedField, Ring, Sign, Sqrt};
-use exactcheck_exact::radical::{ComplexRadical, ParseRadicalError, Radical};
+use exactcheck_exact::radical::{ComplexRadical, Radical};
+use exactcheck_exact::ParseRadicalError;
 use exactcheck_exact::Rational;
 use proptest::prelude::*;
 

@@ -37,6 +37,7 @@ pub mod program;
 pub mod report;
 pub mod sampler;
 pub mod scalar;
+pub mod shard;
 pub mod summary;
 pub mod wabis;
 
@@ -50,9 +51,10 @@ pub use gen::{Diagonal, Fixed, GenError, InputGen, LogUniform, NearDegenerate, U
 pub use harness::{
     check, check_consistent, check_subject, merge, regress, run, run_observed, sample_inputs,
     CaseError, ExactValue, FloatSideError, Formula, Generic, MergeError, Observed, Options,
-    RegressError, Shard, Subject, Sweep,
+    RegressError, Subject,
 };
 pub use near::NearSet;
 pub use program::{ProgramError, ProgramRunner};
 pub use report::{Case, Explanation, OperationError, Report, Summary, ThresholdCount, WorstCase};
 pub use scalar::ExactScalar;
+pub use shard::{Shard, Sweep};

@@ -6,8 +6,8 @@
 //! `Display` abbreviates long exact values (a dyadic `n/d` reads `n/2^k`, very long numerals are
 //! elided); the fields always hold them in full.
 
-use crate::harness::Shard;
 use crate::json::{measure, measures, opt_measures};
+use crate::shard::Shard;
 use crate::summary::{BitsSum, Distribution};
 use serde::{Deserialize, Serialize};
 use std::fmt;

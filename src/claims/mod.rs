@@ -17,8 +17,8 @@
 //! * **undecided** — neither (e.g. a non-zero normal form modulo relations without a real point
 //!   found): reported as such, never counted as expected.
 //!
-//! One directory per unit of the paper registry ([`crate::papers`]): the claims of a paper, its
-//! printed data and fixtures. The claims stay Rust, not embedded claims files: each compares
+//! One directory per unit of the paper registry ([`crate::papers`], which also runs the
+//! catalogue: `papers::verify`): the claims of a paper, its printed data and fixtures. The claims stay Rust, not embedded claims files: each compares
 //! the printed text with an independent derivation of the workspace (`exactcheck_core::quadric`,
 //! `cylinder_sphere`, `ruled`, `conic`, `ph`), or decides on exact instances, seeded random
 //! configurations and root isolation, and names each residual in its evidence — none of which a
@@ -49,10 +49,8 @@ pub mod printed;
 pub mod spaeth;
 
 use exactcheck_exact::expr::{equation_to_latex, parse_expr, Expr, Notation};
-use rayon::prelude::*;
 use serde_json::{json, Value};
 use std::fmt;
-use std::time::Instant;
 
 /// The verdict on a claim.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -212,15 +210,6 @@ pub struct Claim {
     pub check: fn() -> Result<Outcome, String>,
 }
 
-/// The whole catalogue in the order of the papers' claim list (docs/papers/README.md): the
-/// claims of every unit of [`crate::papers::PAPERS`].
-pub fn catalogue() -> Vec<Claim> {
-    crate::papers::PAPERS
-        .iter()
-        .flat_map(|p| (p.claims)())
-        .collect()
-}
-
 /// A checked claim (of the built-in catalogue or of a claims file).
 pub struct Checked {
     /// The claim's id.
@@ -287,63 +276,6 @@ impl Checked {
             }),
         }
     }
-}
-
-/// Checks every claim whose id starts with `prefix` (all when `None`).
-///
-/// # Errors
-/// When a prefix is given and no claim id starts with it.
-pub fn verify(prefix: Option<&str>) -> Result<Vec<Checked>, crate::Error> {
-    verify_with(prefix, true)
-}
-
-/// [`verify`], showing a progress bar on standard error unless `quiet` (or it is not a
-/// terminal).
-///
-/// The claims run in parallel on rayon's global pool (`RAYON_NUM_THREADS` sets its size); the
-/// rows come back in catalogue order whatever the number of threads. The workers read the same
-/// process-wide `--limit` values (atomics of `exactcheck_core::limits`) and allocate through the
-/// same counting allocator as the main thread.
-///
-/// # Errors
-/// As [`verify`].
-pub fn verify_with(prefix: Option<&str>, quiet: bool) -> Result<Vec<Checked>, crate::Error> {
-    let claims: Vec<Claim> = catalogue()
-        .into_iter()
-        .filter(|c| prefix.is_none_or(|p| c.id.starts_with(p)))
-        .collect();
-    if claims.is_empty() {
-        let known: Vec<&str> = catalogue().iter().map(|c| c.id).collect();
-        return Err(crate::Error::Usage(format!(
-            "no claim id starts with {:?} (claims: {})",
-            prefix.unwrap_or(""),
-            known.join(", ")
-        )));
-    }
-    let steps = crate::output::Steps::new(claims.len() as u64, quiet);
-    // The claims are independent: each is a task of rayon's pool (`with_max_len(1)`: one claim
-    // per task, so a long claim never holds a queue of short ones). `collect` keeps catalogue
-    // order, so the rows, and every output made from them, do not depend on the thread count.
-    Ok(claims
-        .par_iter()
-        .with_max_len(1)
-        .map(|c| {
-            steps.start(c.id);
-            let start = Instant::now();
-            let outcome = (c.check)();
-            steps.done();
-            Checked {
-                id: c.id.to_string(),
-                source: c.id.split('.').next().unwrap_or(c.id).to_string(),
-                statement: c.statement.to_string(),
-                expected: c.expected,
-                outcome,
-                seconds: start.elapsed().as_secs_f64(),
-                problem: None,
-                bad_input: false,
-            }
-        })
-        .collect())
 }
 
 /// The readable table of `verify`: id, verdict, method, evidence (wrapped), and a summary line.
@@ -431,10 +363,5 @@ mod verdict_tests {
         let o = prove_all(&sym, &[("x", x)], &[one], "test");
         assert_eq!(o.verdict, Verdict::Undecided);
         assert!(o.evidence.contains("inconsistent"));
-    }
-
-    #[test]
-    fn no_claim_expects_undecided() {
-        assert!(catalogue().iter().all(|c| c.expected != Verdict::Undecided));
     }
 }

@@ -151,7 +151,7 @@ fn exact_vec(v: &V3) -> Option<Vec3<Rational>> {
 /// The published function against the exact construction on one case; `None` when an input is
 /// not finite or the exact planes are not a line (parallel, coincident, zero normal).
 pub fn measure(case: &PlaneCase) -> Option<Measured> {
-    let plane = |n: &V3, p: &V3| Some(Plane::new(exact_vec(n)?, exact_vec(p)?));
+    let plane = |n: &V3, p: &V3| Some(Plane::through(exact_vec(n)?, &exact_vec(p)?));
     let (a, b) = (plane(&case.n1, &case.p1)?, plane(&case.n2, &case.p2)?);
     let PlanePair::Line { point, direction } = intersect(&a, &b) else {
         return None;

@@ -69,7 +69,7 @@ pub struct ReportArgs {
 /// own errors otherwise.
 pub fn checked_claims(file: Option<&str>) -> Result<Vec<Checked>, Error> {
     match file {
-        None => crate::claims::verify(None),
+        None => crate::papers::verify(None),
         Some(path) => {
             let file = crate::claimfile::load(Path::new(path))?;
             crate::claimfile::check(&file, None)

@@ -95,7 +95,7 @@ fn planes<N, T: Ring>(input: &Input<N>, num: impl Fn(&N) -> T) -> Result<[Plane<
     let v = |c: &Coords<N, 3>| Vec3::new(num(&c.0[0]), num(&c.0[1]), num(&c.0[2]));
     let mut out = Vec::with_capacity(2);
     for (i, p) in input.planes.0.iter().enumerate() {
-        let plane = Plane::new(v(&p.normal), v(&p.point));
+        let plane = Plane::through(v(&p.normal), &v(&p.point));
         if plane.normal.is_zero() {
             return Err(Error::Input(format!("planes[{i}].normal: zero vector")));
         }
@@ -256,9 +256,7 @@ fn exact(input: Input<ExactNumber>) -> Result<ExactAnswer, Error> {
                 direction: Some(strings(&direction)),
                 unit_direction: Some(unit),
                 unit_direction_in_field: Some(in_field),
-                on_both_planes: Some(
-                    p1.residual(&point).is_zero() && p2.residual(&point).is_zero(),
-                ),
+                on_both_planes: Some(p1.value(&point).is_zero() && p2.value(&point).is_zero()),
                 nearest_to_origin: Some(point.dot(&direction).is_zero()),
                 approx: Some(Approx {
                     point: approx(&point),
@@ -288,8 +286,9 @@ fn unit_f64(n: &Vec3<f64>, i: usize) -> Result<V3, Error> {
 fn float_answer(input: Input<FloatNumber>) -> Result<FloatAnswer, Error> {
     let [p1, p2] = planes(&input, |x| x.0)?;
     let (n1, n2) = (unit_f64(&p1.normal, 0)?, unit_f64(&p2.normal, 1)?);
-    let pt = |p: &Vec3<f64>| [p.x, p.y, p.z];
-    let result = interction_line_of_2_areas(&pt(&p1.point), &n1, &pt(&p2.point), &n2);
+    // The published function takes each plane's point as given.
+    let pt = |i: usize| input.planes.0[i].point.0.each_ref().map(|x| x.0);
+    let result = interction_line_of_2_areas(&pt(0), &n1, &pt(1), &n2);
     Ok(FloatAnswer {
         kind: "plane_plane",
         mode: "float",

@@ -5,7 +5,7 @@
 use crate::common;
 
 use exactcheck::claimfile;
-use exactcheck::claims::{self, Verdict};
+use exactcheck::claims::Verdict;
 use exactcheck_exact::Rational;
 use std::collections::HashMap;
 use std::path::Path;
@@ -35,7 +35,7 @@ fn verdicts(path: &str) -> Vec<(String, Option<Verdict>)> {
 #[test]
 fn the_spaeth_file_reproduces_the_catalogue() {
     let file = verdicts("examples/spaeth.toml");
-    let catalogue: HashMap<String, Option<Verdict>> = claims::verify(Some("spaeth"))
+    let catalogue: HashMap<String, Option<Verdict>> = exactcheck::papers::verify(Some("spaeth"))
         .unwrap()
         .into_iter()
         .map(|r| (r.id, r.outcome.ok().map(|o| o.verdict)))
@@ -73,12 +73,10 @@ fn the_spaeth_file_reproduces_the_catalogue() {
 #[test]
 fn the_small_examples_hold() {
     for path in ["examples/mypaper.toml", "tests/claims_file/mypaper.json"] {
-        let out = exactcheck(&["verify", path, "--json"]);
-        assert_eq!(out.status.code(), Some(0), "{path}: {out:?}");
+        let out = common::verify_json(path, 0);
         // Standard error is a pipe here: no progress bar, nothing at all.
-        assert!(out.stderr.is_empty(), "{path}: {out:?}");
-        let rows: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-        for r in rows.as_array().unwrap() {
+        assert!(out.stderr.is_empty(), "{path}: {}", out.stderr);
+        for r in &out.rows {
             assert_eq!(r["as_expected"], true, "{r}");
             for key in ["id", "verdict", "method", "evidence"] {
                 assert!(r[key].is_string(), "{key} in {r}");
@@ -102,16 +100,9 @@ fn the_small_examples_hold() {
 fn fractions_and_derivatives_as_printed_are_decided() {
     // Old: every claim of this file was refused ("division by a non-constant expression",
     // "unknown function 'diff'").
-    let out = exactcheck(&["verify", "tests/claims_file/fractions.toml", "--json"]);
-    assert_eq!(out.status.code(), Some(0), "{out:?}");
-    let rows: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    let rows = rows.as_array().unwrap();
-    let row = |id: &str| {
-        rows.iter()
-            .find(|r| r["id"] == id)
-            .unwrap_or_else(|| panic!("{id} in {rows:?}"))
-    };
-    for r in rows {
+    let out = common::verify_json("tests/claims_file/fractions.toml", 0);
+    let row = |id: &str| out.row(id);
+    for r in &out.rows {
         assert_eq!(r["as_expected"], true, "{r}");
     }
     for id in ["fractions.circle", "fractions.tangent"] {
@@ -178,11 +169,9 @@ fn functions_matrices_and_vector_values_are_decided() {
 
 #[test]
 fn vector_and_matrix_identities_are_decided_component_by_component() {
-    let out = exactcheck(&["verify", "tests/claims_file/vectors.toml", "--json"]);
     // The shape mismatch is a bad claim: the file exits 2, every other claim is decided.
-    assert_eq!(out.status.code(), Some(2), "{out:?}");
-    let rows: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON rows");
-    let rows = rows.as_array().unwrap();
+    let out = common::verify_json("tests/claims_file/vectors.toml", 2);
+    let rows = &out.rows;
     let verdicts: Vec<(&str, &str)> = rows
         .iter()
         .map(|r| (r["id"].as_str().unwrap(), r["verdict"].as_str().unwrap()))
@@ -254,15 +243,8 @@ fn a_misprint_fails_with_a_counter_example_and_an_erratum() {
     let value: Rational = e.residual[0].rhs.to_string().parse().unwrap();
     assert_eq!(value, Rational::from_integer(2) * r.clone() * r);
 
-    let out = exactcheck(&["verify", "tests/claims_file/spaeth_misprint.toml", "--json"]);
-    assert_eq!(out.status.code(), Some(1));
-    let rows: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    let eq7 = rows
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|r| r["id"] == "spaeth.eq7")
-        .unwrap();
+    let out = common::verify_json("tests/claims_file/spaeth_misprint.toml", 1);
+    let eq7 = out.row("spaeth.eq7");
     assert_eq!(eq7["verdict"], "fails");
     assert_eq!(eq7["as_expected"], false);
 }
@@ -462,16 +444,9 @@ at = [{ c = 1, s = 1 }]
 /// one-line message, the other claims are decided, and the exit status is 2.
 #[test]
 fn one_bad_claim_does_not_sink_the_file() {
-    let out = exactcheck(&["verify", "tests/claims_file/one_broken.toml", "--json"]);
-    assert_eq!(out.status.code(), Some(2), "{out:?}");
-    let rows: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON rows");
-    let verdicts: Vec<&str> = rows
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|r| r["verdict"].as_str().unwrap())
-        .collect();
-    assert_eq!(verdicts, ["proved", "error", "holds"]);
+    let out = common::verify_json("tests/claims_file/one_broken.toml", 2);
+    let rows = &out.rows;
+    assert_eq!(out.verdicts(), ["proved", "error", "holds"]);
     let message = rows[1]["evidence"].as_str().unwrap();
     assert!(
         message.starts_with(
@@ -494,10 +469,8 @@ fn one_bad_claim_does_not_sink_the_file() {
 /// when its verdict is the expected one.
 #[test]
 fn a_wrong_correction_makes_the_claim_not_as_expected() {
-    let out = exactcheck(&["verify", "tests/claims_file/corrected_wrong.toml", "--json"]);
-    assert_eq!(out.status.code(), Some(1), "{out:?}");
-    let rows: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON rows");
-    let row = &rows[0];
+    let out = common::verify_json("tests/claims_file/corrected_wrong.toml", 1);
+    let row = &out.rows[0];
     assert_eq!(row["verdict"], "fails");
     assert_eq!(row["expected"], "fails");
     assert_eq!(row["as_expected"], false);
@@ -703,12 +676,9 @@ fn twenty_thousand_claims_are_read_in_linear_time() {
 
 #[test]
 fn integrals_sums_and_binomials_as_printed_are_decided() {
-    let out = exactcheck(&["verify", "tests/claims_file/calculus.toml", "--json"]);
-    assert_eq!(out.status.code(), Some(0), "{out:?}");
-    let rows: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    let rows = rows.as_array().unwrap();
-    assert_eq!(rows.len(), 2);
-    for r in rows {
+    let out = common::verify_json("tests/claims_file/calculus.toml", 0);
+    assert_eq!(out.rows.len(), 2);
+    for r in &out.rows {
         assert_eq!(r["verdict"], "proved", "{r}");
     }
 }
@@ -717,19 +687,12 @@ fn integrals_sums_and_binomials_as_printed_are_decided() {
 fn angles_and_pi_as_printed_are_decided() {
     // The weight cos(theta/2) of a circle arc's rational Bezier form at theta = 90, 120 and 60
     // degrees (theta a rational multiple of pi), a double-angle identity and its misprint, pi.
-    let out = exactcheck(&["verify", "tests/claims_file/angles.toml", "--json"]);
-    assert_eq!(out.status.code(), Some(0), "{out:?}");
-    let rows: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    let rows = rows.as_array().unwrap();
-    let row = |id: &str| {
-        rows.iter()
-            .find(|r| r["id"] == id)
-            .unwrap_or_else(|| panic!("{id} in {rows:?}"))
-    };
-    for r in rows {
+    let out = common::verify_json("tests/claims_file/angles.toml", 0);
+    let row = |id: &str| out.row(id);
+    for r in &out.rows {
         assert_eq!(r["as_expected"], true, "{r}");
     }
-    let evidence = |id: &str| row(id)["evidence"].as_str().unwrap().to_string();
+    let evidence = |id: &str| out.evidence(id);
     assert_eq!(row("angles.w90")["verdict"], "holds");
     assert!(evidence("angles.w90").starts_with("exact value sqrt(2)/2"));
     assert_eq!(row("angles.w120")["verdict"], "proved");
@@ -744,14 +707,8 @@ fn angles_and_pi_as_printed_are_decided() {
 
 #[test]
 fn the_curvature_of_a_rational_quadratic_from_derivatives_of_fractions_is_proved() {
-    let out = exactcheck(&[
-        "verify",
-        "tests/claims_file/rational_curvature.toml",
-        "--json",
-    ]);
-    assert_eq!(out.status.code(), Some(0), "{out:?}");
-    let rows: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    let row = &rows.as_array().unwrap()[0];
+    let out = common::verify_json("tests/claims_file/rational_curvature.toml", 0);
+    let row = &out.rows[0];
     assert_eq!(row["verdict"], "proved", "{row}");
     assert!(
         row["evidence"]

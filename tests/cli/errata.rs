@@ -19,7 +19,7 @@ const FAILING: [&str; 10] = [
 ];
 
 fn check(id: &str) -> Checked {
-    let mut rows = claims::verify(Some(id)).expect("a catalogue id");
+    let mut rows = exactcheck::papers::verify(Some(id)).expect("a catalogue id");
     rows.retain(|r| r.id == id);
     rows.pop().expect("the claim")
 }
@@ -76,7 +76,7 @@ fn spaeth_eq5_corrected_x_in_latex() {
 
 #[test]
 fn json_carries_the_erratum_and_proved_claims_have_none() {
-    let rows = claims::verify(Some("spaeth.eq")).unwrap();
+    let rows = exactcheck::papers::verify(Some("spaeth.eq")).unwrap();
     for r in &rows {
         let j = r.to_json();
         let o = r.outcome.as_ref().unwrap();

@@ -12,6 +12,7 @@ mod cli;
 mod errata;
 mod float_nonfinite;
 mod fuzz_regressions;
+mod module_cycles;
 mod regress_explain;
 mod regress_fpbench;
 mod regress_inputs;

@@ -3,7 +3,8 @@
 
 use crate::common;
 
-use exactcheck::claims::{catalogue, Verdict};
+use exactcheck::claims::Verdict;
+use exactcheck::papers::catalogue;
 use std::path::{Path, PathBuf};
 use std::process::Output;
 

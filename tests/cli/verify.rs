@@ -2,7 +2,8 @@
 
 use crate::common;
 
-use exactcheck::claims::{verify, Verdict};
+use exactcheck::claims::Verdict;
+use exactcheck::papers::verify;
 
 /// The ids of the claim list that the catalogue implements (all `juttler.*` and `spaeth.*` ids,
 /// `planes.wabis`, the ruled-surface and conic `chiang.*` ids and the PH ids `chiang.offset`,
@@ -113,7 +114,7 @@ const VERDICTS: [(&str, Verdict); 46] = [
 fn every_claim_gets_its_expected_verdict() {
     let rows = verify(None).expect("the catalogue is not empty");
     // Every claim of the catalogue is checked, once, in catalogue order.
-    let ids: Vec<&str> = exactcheck::claims::catalogue()
+    let ids: Vec<&str> = exactcheck::papers::catalogue()
         .iter()
         .map(|c| c.id)
         .collect();
@@ -137,7 +138,7 @@ fn every_claim_gets_its_expected_verdict() {
 
 #[test]
 fn every_implemented_spec_id_is_in_the_catalogue() {
-    let ids: Vec<&str> = exactcheck::claims::catalogue()
+    let ids: Vec<&str> = exactcheck::papers::catalogue()
         .iter()
         .map(|c| c.id)
         .collect();
@@ -169,7 +170,7 @@ fn verify_json_and_prefix() {
     assert!(o.status.success());
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON array");
     let arr = v.as_array().expect("array");
-    let juttler = exactcheck::claims::catalogue()
+    let juttler = exactcheck::papers::catalogue()
         .iter()
         .filter(|c| c.id.starts_with("juttler"))
         .count();
@@ -402,7 +403,7 @@ fn verify_output_does_not_depend_on_the_number_of_threads() {
     };
     let one = json("1");
     let ids: Vec<&str> = one.iter().map(|c| c["id"].as_str().unwrap()).collect();
-    let catalogue: Vec<&str> = exactcheck::claims::catalogue()
+    let catalogue: Vec<&str> = exactcheck::papers::catalogue()
         .iter()
         .map(|c| c.id)
         .collect();

@@ -133,3 +133,54 @@ pub fn bernstein_upoly(c: &[exactcheck_exact::Rational]) -> exactcheck_exact::un
     }
     acc
 }
+
+/// The rows of `exactcheck verify FILE --json` (a claims file), see [`verify_json`].
+#[allow(dead_code)] // not every test crate that includes this module checks claims files
+pub struct VerifyRows {
+    /// The JSON rows, in file order.
+    pub rows: Vec<serde_json::Value>,
+    /// Standard error.
+    pub stderr: String,
+}
+
+#[allow(dead_code)]
+impl VerifyRows {
+    /// The row of claim `id` (panics naming the id and the rows when there is none).
+    pub fn row(&self, id: &str) -> &serde_json::Value {
+        self.rows
+            .iter()
+            .find(|r| r["id"] == id)
+            .unwrap_or_else(|| panic!("{id} in {:?}", self.rows))
+    }
+
+    /// The verdict of every row, in order.
+    pub fn verdicts(&self) -> Vec<&str> {
+        self.rows
+            .iter()
+            .map(|r| r["verdict"].as_str().expect("a verdict"))
+            .collect()
+    }
+
+    /// The evidence of claim `id`.
+    pub fn evidence(&self, id: &str) -> &str {
+        self.row(id)["evidence"].as_str().expect("evidence")
+    }
+}
+
+/// Runs `exactcheck verify FILE --json` in the workspace root (`file` relative to it), asserts
+/// its exit status and returns its rows.
+#[allow(dead_code)]
+pub fn verify_json(file: &str, status: i32) -> VerifyRows {
+    let out = exactcheck()
+        .args(["verify", file, "--json"])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("the binary runs");
+    assert_eq!(out.status.code(), Some(status), "{file}: {out:?}");
+    let rows: serde_json::Value = serde_json::from_slice(&out.stdout)
+        .unwrap_or_else(|e| panic!("{file}: not JSON rows ({e}): {out:?}"));
+    VerifyRows {
+        rows: rows.as_array().expect("an array of rows").clone(),
+        stderr: String::from_utf8_lossy(&out.stderr).into_owned(),
+    }
+}

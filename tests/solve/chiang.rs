@@ -34,7 +34,7 @@ fn verdicts() {
 
 #[test]
 fn registered_in_the_catalogue() {
-    let ids: Vec<&str> = exactcheck::claims::catalogue()
+    let ids: Vec<&str> = exactcheck::papers::catalogue()
         .iter()
         .map(|c| c.id)
         .collect();

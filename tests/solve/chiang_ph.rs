@@ -5,7 +5,8 @@ use exactcheck::claims::chiang_ph::{
     offset_proof, ph_normals_with, ph_offsets_markdown, ph_offsets_rows, ph_points_with,
     self_intersection_evidence, weights_markdown, BaseForm, PRINTED_NORMALS, PRINTED_POINTS,
 };
-use exactcheck::claims::{catalogue, Outcome, Verdict};
+use exactcheck::claims::{Outcome, Verdict};
+use exactcheck::papers::catalogue;
 use exactcheck_exact::Rational;
 
 fn run(id: &str) -> Outcome {

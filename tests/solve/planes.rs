@@ -270,8 +270,8 @@ proptest! {
             Rational::from_f64_exact(v[1]).unwrap(),
             Rational::from_f64_exact(v[2]).unwrap(),
         );
-        let a = Plane::new(ex(&case.n1), ex(&case.p1));
-        let b = Plane::new(ex(&case.n2), ex(&case.p2));
+        let a = Plane::through(ex(&case.n1), &ex(&case.p1));
+        let b = Plane::through(ex(&case.n2), &ex(&case.p2));
         let PlanePair::Line { point, direction } = intersect(&a, &b) else {
             panic!("not a line: {case:?}");
         };

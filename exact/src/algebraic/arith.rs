@@ -92,7 +92,7 @@ fn graeffe(f: &UPoly) -> UPoly {
 
 /// The non-negative rational square root of `q`, if `q` is the square of a rational.
 pub(super) fn rational_sqrt(q: &Rational) -> Option<Rational> {
-    crate::expr::Coefficient::try_sqrt(q)
+    crate::coefficient::Coefficient::try_sqrt(q)
 }
 
 impl Algebraic {

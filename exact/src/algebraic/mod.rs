@@ -63,7 +63,7 @@ pub use display::root_variable;
 pub use field::{primitive_element, FieldError, NumberField, PrimitiveElement};
 pub use trig::TrigError;
 
-use crate::expr::{Coefficient, Trig};
+use crate::coefficient::{Coefficient, Trig};
 use crate::univariate::{RootInterval, UPoly};
 use crate::Rational;
 use exactcheck_core::limits::{self, LimitError};
@@ -422,19 +422,10 @@ impl Coefficient for Algebraic {
         };
         Some(v.map_err(|e| match e {
             TrigError::TanUndefined { .. } => {
-                let angle = crate::expr::angle_text(r);
+                let angle = crate::coefficient::angle_text(r);
                 format!("tan({angle}) is undefined: cos({angle}) = 0")
             }
             other => other.to_string(),
         }))
-    }
-}
-
-impl std::str::FromStr for Algebraic {
-    type Err = crate::expr::ExprError;
-    /// A constant expression of the one grammar ([`crate::expr`]), evaluated exactly:
-    /// `"sqrt(2 + sqrt(2))/2"`.
-    fn from_str(s: &str) -> Result<Algebraic, Self::Err> {
-        crate::expr::parse_expr(s)?.eval_constant()
     }
 }

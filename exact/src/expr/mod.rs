@@ -104,7 +104,8 @@
 //! evaluates a constant expression in any [`Coefficient`] type with the same rules and limits.
 //!
 //! # Layout
-//! Here: the limits, the [`Coefficient`] trait, the AST and the errors; `parse`: the lexer and
+//! Here: the limits, the AST and the errors (the [`Coefficient`] trait is re-exported from its
+//! leaf module [`crate::coefficient`]); `numbers`: `FromStr` of the exact number types; `parse`: the lexer and
 //! the parser; `eval`: the conversion to polynomials and the constant evaluator with the size
 //! limits; `fraction`: the conversion to rational functions and the arguments of `diff`;
 //! `calculus`: `integrate`, `sum`, `binomial` and `factorial`; [`library`]: definitions,
@@ -132,6 +133,7 @@ mod latex;
 pub mod library;
 mod lower;
 mod mathml;
+mod numbers;
 mod parse;
 mod print;
 mod roots;
@@ -145,8 +147,8 @@ pub use constants::{
 pub use latex::{equation_to_latex, to_latex, Notation};
 pub use lower::{eval_lowered, lower};
 pub use mathml::{equation_to_mathml, to_mathml};
+pub use numbers::{ParseRadicalError, ParseRationalError};
 pub use parse::{parse_expr, parse_expr_with_calls, parse_poly, LIST};
-pub(crate) use trig::angle_text;
 
 /// The functions written `name(arg, ...)` in every grammar (besides `sqrt`): `diff(E, t)` and
 /// `diff(E, t, k)`, the exact derivative of `E` in the variable `t` (`k` times);
@@ -206,104 +208,8 @@ pub const PI: &str = "pi";
 
 // ------------------------------------------------------------------------------ coefficients
 
-/// What the conversion needs of a coefficient type: the image of a rational number, inverses (for
-/// division by constants) and square roots (for `sqrt`).
-///
-/// Implemented here for [`Rational`]; a square-root field or a finite field implements it beside
-/// its definition (`impl exactcheck_exact::expr::Coefficient for ...`).
-pub trait Coefficient: Ring {
-    /// The image of a rational number, `None` if it has none (e.g. a denominator divisible by the
-    /// characteristic).
-    fn from_rational(q: &Rational) -> Option<Self>;
-    /// The inverse, `None` for zero (or any non-invertible element).
-    fn try_inverse(&self) -> Option<Self>;
-    /// A square root in the type, `None` if there is none.
-    fn try_sqrt(&self) -> Option<Self>;
-    /// Appended to the error message when [`Coefficient::try_sqrt`] fails (e.g. which field
-    /// would have the root); empty by default.
-    fn sqrt_hint() -> &'static str {
-        ""
-    }
-    /// The hint for this value's failed [`Coefficient::try_sqrt`] (e.g. that it is negative, or
-    /// out of reach of factoring); [`Coefficient::sqrt_hint`] by default.
-    fn sqrt_hint_for(&self) -> &'static str {
-        Self::sqrt_hint()
-    }
-    /// A lower bound for the size in bits of the value that grows linearly under powers:
-    /// `size_bits(x^k) >= k * size_bits(x)` (for a rational `n/d`,
-    /// `floor(log2 |n|) + floor(log2 d)`; 0 for zero and units such as `±1`). The size limit
-    /// `constant-bits` ([`limits::CONSTANT_BITS`]) predicts powers with it and checks results against it. The default,
-    /// 0, suits types of fixed size (a finite field), which need no limit.
-    fn size_bits(&self) -> u64 {
-        0
-    }
-    /// Whether [`Coefficient::size_bits`] is at most `max`; a type may answer faster than by
-    /// computing the size (every coefficient of every product is checked).
-    fn size_within(&self, max: u64) -> bool {
-        self.size_bits() <= max
-    }
-    /// The value of a name in a constant expression ([`Expr::eval_constant`]), `None` for a name
-    /// the type does not define (the default: every name). [`crate::ComplexRadical`] defines `i`.
-    fn named_constant(_name: &str) -> Option<Self> {
-        None
-    }
-    /// `cos` (`which` [`Trig::Cos`]), `sin` or `tan` of the angle `r pi` when the type computes
-    /// it for every rational `r` ([`crate::Algebraic`] does); `None`, the default, leaves it to
-    /// the built-in table of [`trig_constant`], whose values lie in `Q(sqrt 2, sqrt 3)`.
-    ///
-    /// # Errors
-    /// The reason in words (a limit, `tan` at a zero of the cosine).
-    fn trig_of_pi(_r: &Rational, _which: Trig) -> Option<Result<Self, String>> {
-        None
-    }
-    /// Checks the value against the named limits of its type (for
-    /// [`crate::Radical`], the number of independent square roots,
-    /// [`exactcheck_core::limits::RADICANDS`]); called on every folded constant and every
-    /// coefficient of a sum or product, like [`Coefficient::size_within`]. `Ok` by default.
-    ///
-    /// # Errors
-    /// The [`exactcheck_core::limits::LimitError`] of the limit exceeded.
-    fn check_limits(&self) -> Result<(), exactcheck_core::limits::LimitError> {
-        Ok(())
-    }
-}
-
-/// `floor(log2 |n|)`, 0 for zero.
-pub(crate) fn log2_floor(n: &BigInt) -> u64 {
-    n.bits().saturating_sub(1)
-}
-
-impl Coefficient for Rational {
-    fn from_rational(q: &Rational) -> Option<Self> {
-        Some(q.clone())
-    }
-    fn try_inverse(&self) -> Option<Self> {
-        self.recip().ok()
-    }
-    /// The non-negative root of a rational whose numerator and denominator are perfect squares.
-    fn try_sqrt(&self) -> Option<Self> {
-        let (n, d) = (self.numer(), self.denom());
-        if n.is_negative() {
-            return None;
-        }
-        let (rn, rd) = (n.sqrt(), d.sqrt());
-        if &rn * &rn == n && &rd * &rd == d {
-            Some(Rational::from(num_rational::BigRational::new(rn, rd)))
-        } else {
-            None
-        }
-    }
-    fn sqrt_hint() -> &'static str {
-        " (it is irrational: a radical coefficient field is needed)"
-    }
-    fn size_bits(&self) -> u64 {
-        log2_floor(&self.numer()) + log2_floor(&self.denom())
-    }
-    /// Inline values (two machine words) are far below any limit used here.
-    fn size_within(&self, max: u64) -> bool {
-        (self.is_inline() && max >= 256) || self.size_bits() <= max
-    }
-}
+pub(crate) use crate::coefficient::log2_floor;
+pub use crate::coefficient::Coefficient;
 
 // ------------------------------------------------------------------------------ AST
 

@@ -28,37 +28,7 @@ use crate::ratfun::{poly_derivative, RatFun};
 use exactcheck_core::Field;
 use num_traits::{ToPrimitive, Zero};
 
-/// A trigonometric function of the language.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Trig {
-    /// `sin`.
-    Sin,
-    /// `cos`.
-    Cos,
-    /// `tan = sin/cos`.
-    Tan,
-}
-
-impl Trig {
-    /// The function of this name ([`TRIG_FUNCTIONS`]).
-    pub fn from_name(name: &str) -> Option<Trig> {
-        match name {
-            "sin" => Some(Trig::Sin),
-            "cos" => Some(Trig::Cos),
-            "tan" => Some(Trig::Tan),
-            _ => None,
-        }
-    }
-
-    /// The name, as written.
-    pub fn name(self) -> &'static str {
-        match self {
-            Trig::Sin => "sin",
-            Trig::Cos => "cos",
-            Trig::Tan => "tan",
-        }
-    }
-}
+pub use crate::coefficient::Trig;
 
 /// The name of the variable standing for the cosine of the angle `angle`: `cos(x)`.
 pub fn cos_name(angle: &str) -> String {
@@ -252,21 +222,7 @@ pub fn trig_constant<C: Coefficient>(r: &Rational, which: Trig) -> Result<C, Str
     }
 }
 
-/// `r pi` as written: `pi`, `-pi/2`, `3*pi/4`, `0`.
-pub(crate) fn angle_text(r: &Rational) -> String {
-    let (n, d) = (r.numer(), r.denom());
-    let num = match n.to_i64() {
-        Some(0) => return "0".into(),
-        Some(1) => "pi".to_string(),
-        Some(-1) => "-pi".to_string(),
-        _ => format!("{n}*pi"),
-    };
-    if d == BigInt::from(1) {
-        num
-    } else {
-        format!("{num}/{d}")
-    }
-}
+pub(crate) use crate::coefficient::angle_text;
 
 // ------------------------------------------------------------------------------ arguments
 

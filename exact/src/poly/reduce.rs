@@ -2,7 +2,7 @@
 //! by a list of relations, and reduced Gröbner bases by Buchberger's algorithm.
 
 use super::*;
-use crate::expr::Coefficient;
+use crate::coefficient::Coefficient;
 use exactcheck_core::limits::{self, LimitError};
 use exactcheck_core::{Field, Ring};
 use num_bigint::BigUint;

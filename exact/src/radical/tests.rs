@@ -2,6 +2,7 @@
 
 use super::radicand::{remove_prime_power, square_free_big, square_free_u64};
 use super::*;
+use crate::expr::ExprError;
 use crate::modp::is_prime_u64;
 use crate::radical::radicand::integer_u64;
 use exactcheck_core::{OrderedField, Ring, Sign};

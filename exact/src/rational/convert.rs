@@ -3,7 +3,6 @@
 
 use super::*;
 use std::fmt;
-use std::str::FromStr;
 
 impl From<i64> for Rational {
     fn from(n: i64) -> Self {
@@ -65,24 +64,5 @@ impl fmt::Display for Rational {
 impl fmt::Debug for Rational {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         fmt::Display::fmt(self, f)
-    }
-}
-
-/// The error of parsing a [`Rational`] from text: the expression error of the one grammar
-/// ([`crate::expr`]), with the position of the problem. The name is kept for callers.
-pub type ParseRationalError = crate::expr::ExprError;
-
-impl FromStr for Rational {
-    type Err = ParseRationalError;
-
-    /// Parses a constant expression of the one grammar of [`crate::expr`] and evaluates it
-    /// exactly: `-12`, `3/4`, `-0.125` (a decimal is the exact fraction it denotes), `2.5e-3`
-    /// (`= 1/400`), `2^-3`, `sqrt(9/4)`; white space is allowed between tokens.
-    ///
-    /// # Errors
-    /// A syntax error, a variable (`"a"`), division by zero, an irrational `sqrt`, or a constant
-    /// beyond the limits of [`crate::expr`], each with its position.
-    fn from_str(s: &str) -> Result<Self, Self::Err> {
-        crate::expr::parse_expr(s)?.eval_constant()
     }
 }

@@ -36,8 +36,6 @@ mod convert;
 #[cfg(test)]
 mod tests;
 
-pub use convert::ParseRationalError;
-
 /// An exact rational number, always in canonical form (see the module documentation).
 #[derive(Clone, PartialEq, Eq, Hash)]
 pub struct Rational(Repr);

@@ -1,4 +1,5 @@
 use super::*;
+use crate::ParseRationalError;
 
 fn q(n: i64, d: i64) -> Rational {
     Rational::new(n, d).unwrap()

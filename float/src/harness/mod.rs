@@ -61,11 +61,10 @@
 
 mod accumulate;
 mod merge;
-mod shard;
 mod shrink;
 
+pub use crate::shard::{Shard, Sweep};
 pub use merge::{check_consistent, merge, MergeError};
-pub use shard::{Shard, Sweep};
 
 use accumulate::Accumulator;
 

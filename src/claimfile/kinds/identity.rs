@@ -1,12 +1,12 @@
 //! `identity` claims: decided by the identity engine as `prove` decides its identities, one
 //! statement per component; real algebraic constants outside the square-root field
 //! (`cos(pi/5)`, `sqrt(2 + sqrt(2))`) next to variables are put in one number field by the
-//! function `prove` uses ([`crate::prove_constants::abstract_statement`]) and a non-zero
+//! function `prove` uses ([`crate::prove_cmd::constants::abstract_statement`]) and a non-zero
 //! reduction gets its exact counter-example at the field's generator
-//! ([`crate::prove_constants::settle`]).
+//! ([`crate::prove_cmd::constants::settle`]).
 
 use super::*;
-use crate::prove_constants::{self, ConstantsError};
+use crate::prove_cmd::constants::{self as prove_constants, ConstantsError};
 use exactcheck_exact::prove::AlgebraicConstants;
 
 /// The expressions of an identity claim with its algebraic constants as polynomials in the

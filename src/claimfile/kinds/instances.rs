@@ -29,7 +29,7 @@ pub(super) fn instances(check: &Check) -> Result<Outcome, Fault> {
     names.retain(|n| n != exactcheck_exact::expr::PI);
     // Constants outside the square-root field (`cos(pi/5)`) are evaluated as real algebraic
     // numbers, as `prove` evaluates an identity between constants.
-    let algebraic = crate::prove_constants::any_needs_constants(
+    let algebraic = crate::prove_cmd::constants::any_needs_constants(
         lhs.iter()
             .chain(rhs)
             .chain(conditions.relations.iter().flat_map(|(a, b)| [a, b])),

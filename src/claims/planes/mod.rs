@@ -131,16 +131,16 @@ fn published_unit(s: &mut Setup) -> Result<Outcome, String> {
     );
     let (n1, n2, p1, p2) = (&s.n1, &s.n2, &s.p1, &s.p2);
     let q_num = n1.scale(&s1).add_scaled(&s2, n2);
-    let plane1 = Plane::new(n1.clone(), p1.clone());
-    let plane2 = Plane::new(n2.clone(), p2.clone());
+    let plane1 = Plane::through(n1.clone(), p1);
+    let plane2 = Plane::through(n2.clone(), p2);
     let residuals = vec![
         (
             "n1 . (s1 n1 + s2 n2) - d1, times 1 - r^2",
-            plane1.residual_hom(&q_num, &den),
+            plane1.value_hom(&q_num, &den),
         ),
         (
             "n2 . (s1 n1 + s2 n2) - d2, times 1 - r^2",
-            plane2.residual_hom(&q_num, &den),
+            plane2.value_hom(&q_num, &den),
         ),
         (
             "Q . (n1 x n2), times 1 - r^2 (Q in span(n1, n2))",
@@ -156,18 +156,18 @@ fn published_unit(s: &mut Setup) -> Result<Outcome, String> {
 
 /// Part 2: the exact construction of `core::planes`, without relations.
 fn exact_construction(s: &Setup) -> Outcome {
-    let plane1 = Plane::new(s.n1.clone(), s.p1.clone());
-    let plane2 = Plane::new(s.n2.clone(), s.p2.clone());
+    let plane1 = Plane::through(s.n1.clone(), &s.p1);
+    let plane2 = Plane::through(s.n2.clone(), &s.p2);
     let (num, g) = nearest_point_hom(&plane1, &plane2);
     let dir = exactcheck_core::planes::direction(&plane1, &plane2);
     let residuals = vec![
         (
             "exact construction: n1 . N - d1 G (G = |n1 x n2|^2)",
-            plane1.residual_hom(&num, &g),
+            plane1.value_hom(&num, &g),
         ),
         (
             "exact construction: n2 . N - d2 G",
-            plane2.residual_hom(&num, &g),
+            plane2.value_hom(&num, &g),
         ),
         ("exact construction: N . (n1 x n2)", num.dot(&dir)),
         ("exact construction: (n1 x n2) . n1", dir.dot(&s.n1)),
@@ -213,8 +213,8 @@ fn non_unit_counter_example(s: &mut Setup) -> Result<(bool, String), String> {
     let v = |a: [i64; 3]| Vec3::<Rational>::from_i64(a[0], a[1], a[2]);
     let [(a_n, a_p), (b_n, b_p)] = COUNTER_EXAMPLE;
     let (n1, p1, n2, p2) = (v(a_n), v(a_p), v(b_n), v(b_p));
-    let plane1 = Plane::new(n1.clone(), p1.clone());
-    let plane2 = Plane::new(n2.clone(), p2.clone());
+    let plane1 = Plane::through(n1.clone(), &p1);
+    let plane2 = Plane::through(n2.clone(), &p2);
     let head = format!(
         "at n1 = {}, P1 = {}, n2 = {}, P2 = {} (|n1|^2 = {}, |n2|^2 = {})",
         show(&n1),
@@ -238,7 +238,7 @@ fn non_unit_counter_example(s: &mut Setup) -> Result<(bool, String), String> {
             format!("{head} the published denominator 1 - r^2 is 0 although the planes meet in the line through {}", show(&exact)),
         ));
     };
-    let (e1, e2) = (plane1.residual(&q), plane2.residual(&q));
+    let (e1, e2) = (plane1.value(&q), plane2.value(&q));
     let wrong = !(e1.is_zero() && e2.is_zero());
     // The same planes with unit normals (in the square-root field): the published formula is right.
     let unit = |n: &Vec3<Rational>| -> Result<Vec3<Radical>, String> {
@@ -342,10 +342,10 @@ mod tests {
         let s2 = printed(&mut s, S2_NUM).unwrap();
         let den = printed(&mut s, S_DEN).unwrap();
         let q_num = s.n1.scale(&s1).add_scaled(&s2, &s.n2);
-        let plane1 = Plane::new(s.n1.clone(), s.p1.clone());
+        let plane1 = Plane::through(s.n1.clone(), &s.p1);
         let o = prove_all(
             &s.sym,
-            &[("plane 1", plane1.residual_hom(&q_num, &den))],
+            &[("plane 1", plane1.value_hom(&q_num, &den))],
             &[],
             "test",
         );

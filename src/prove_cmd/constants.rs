@@ -5,7 +5,7 @@
 //! (`exactcheck_exact::prove::AlgebraicConstants`); a non-zero reduction gets an exact
 //! counter-example at `c = theta` from the search over `Q(theta)`.
 
-use crate::prove_cmd::{prove_over, ProveArgs, Sides};
+use super::{prove_over, ProveArgs, Sides};
 use crate::Error;
 use exactcheck_exact::expr::{abstract_constants, needs_algebraic, Expr};
 use exactcheck_exact::poly::{Poly, Var, Vars};

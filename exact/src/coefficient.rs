@@ -1,0 +1,160 @@
+//! The coefficient types of the expression language: what a number type provides so that
+//! formulas ([`crate::expr`]) can be converted into polynomials over it ([`Coefficient`]), and
+//! the trigonometric functions a type may evaluate at rational multiples of pi ([`Trig`]).
+//!
+//! A leaf module below the number types ([`crate::rational`], [`crate::radical`],
+//! [`crate::modp`], [`crate::algebraic`]) and the polynomials ([`crate::poly`]), which implement
+//! or use the trait, and below [`crate::expr`], which converts with it and re-exports it
+//! (`expr::Coefficient`, `expr::Trig`).
+
+use crate::rational::Rational;
+use exactcheck_core::Ring;
+use num_bigint::BigInt;
+use num_traits::{Signed, ToPrimitive};
+
+/// A trigonometric function of the language.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Trig {
+    /// `sin`.
+    Sin,
+    /// `cos`.
+    Cos,
+    /// `tan = sin/cos`.
+    Tan,
+}
+
+impl Trig {
+    /// The function of this name ([`crate::expr::TRIG_FUNCTIONS`]).
+    pub fn from_name(name: &str) -> Option<Trig> {
+        match name {
+            "sin" => Some(Trig::Sin),
+            "cos" => Some(Trig::Cos),
+            "tan" => Some(Trig::Tan),
+            _ => None,
+        }
+    }
+
+    /// The name, as written.
+    pub fn name(self) -> &'static str {
+        match self {
+            Trig::Sin => "sin",
+            Trig::Cos => "cos",
+            Trig::Tan => "tan",
+        }
+    }
+}
+
+/// What the conversion needs of a coefficient type: the image of a rational number, inverses (for
+/// division by constants) and square roots (for `sqrt`).
+///
+/// Implemented here for [`Rational`]; a square-root field or a finite field implements it beside
+/// its definition (`impl exactcheck_exact::expr::Coefficient for ...`).
+pub trait Coefficient: Ring {
+    /// The image of a rational number, `None` if it has none (e.g. a denominator divisible by the
+    /// characteristic).
+    fn from_rational(q: &Rational) -> Option<Self>;
+    /// The inverse, `None` for zero (or any non-invertible element).
+    fn try_inverse(&self) -> Option<Self>;
+    /// A square root in the type, `None` if there is none.
+    fn try_sqrt(&self) -> Option<Self>;
+    /// Appended to the error message when [`Coefficient::try_sqrt`] fails (e.g. which field
+    /// would have the root); empty by default.
+    fn sqrt_hint() -> &'static str {
+        ""
+    }
+    /// The hint for this value's failed [`Coefficient::try_sqrt`] (e.g. that it is negative, or
+    /// out of reach of factoring); [`Coefficient::sqrt_hint`] by default.
+    fn sqrt_hint_for(&self) -> &'static str {
+        Self::sqrt_hint()
+    }
+    /// A lower bound for the size in bits of the value that grows linearly under powers:
+    /// `size_bits(x^k) >= k * size_bits(x)` (for a rational `n/d`,
+    /// `floor(log2 |n|) + floor(log2 d)`; 0 for zero and units such as `±1`). The size limit
+    /// `constant-bits` ([`exactcheck_core::limits::CONSTANT_BITS`]) predicts powers with it and checks results against it. The default,
+    /// 0, suits types of fixed size (a finite field), which need no limit.
+    fn size_bits(&self) -> u64 {
+        0
+    }
+    /// Whether [`Coefficient::size_bits`] is at most `max`; a type may answer faster than by
+    /// computing the size (every coefficient of every product is checked).
+    fn size_within(&self, max: u64) -> bool {
+        self.size_bits() <= max
+    }
+    /// The value of a name in a constant expression ([`crate::expr::Expr::eval_constant`]), `None` for a name
+    /// the type does not define (the default: every name). [`crate::ComplexRadical`] defines `i`.
+    fn named_constant(_name: &str) -> Option<Self> {
+        None
+    }
+    /// `cos` (`which` [`Trig::Cos`]), `sin` or `tan` of the angle `r pi` when the type computes
+    /// it for every rational `r` ([`crate::Algebraic`] does); `None`, the default, leaves it to
+    /// the built-in table of [`crate::expr::trig_constant`], whose values lie in `Q(sqrt 2, sqrt 3)`.
+    ///
+    /// # Errors
+    /// The reason in words (a limit, `tan` at a zero of the cosine).
+    fn trig_of_pi(_r: &Rational, _which: Trig) -> Option<Result<Self, String>> {
+        None
+    }
+    /// Checks the value against the named limits of its type (for
+    /// [`crate::Radical`], the number of independent square roots,
+    /// [`exactcheck_core::limits::RADICANDS`]); called on every folded constant and every
+    /// coefficient of a sum or product, like [`Coefficient::size_within`]. `Ok` by default.
+    ///
+    /// # Errors
+    /// The [`exactcheck_core::limits::LimitError`] of the limit exceeded.
+    fn check_limits(&self) -> Result<(), exactcheck_core::limits::LimitError> {
+        Ok(())
+    }
+}
+
+/// `floor(log2 |n|)`, 0 for zero.
+pub(crate) fn log2_floor(n: &BigInt) -> u64 {
+    n.bits().saturating_sub(1)
+}
+
+impl Coefficient for Rational {
+    fn from_rational(q: &Rational) -> Option<Self> {
+        Some(q.clone())
+    }
+    fn try_inverse(&self) -> Option<Self> {
+        self.recip().ok()
+    }
+    /// The non-negative root of a rational whose numerator and denominator are perfect squares.
+    fn try_sqrt(&self) -> Option<Self> {
+        let (n, d) = (self.numer(), self.denom());
+        if n.is_negative() {
+            return None;
+        }
+        let (rn, rd) = (n.sqrt(), d.sqrt());
+        if &rn * &rn == n && &rd * &rd == d {
+            Some(Rational::from(num_rational::BigRational::new(rn, rd)))
+        } else {
+            None
+        }
+    }
+    fn sqrt_hint() -> &'static str {
+        " (it is irrational: a radical coefficient field is needed)"
+    }
+    fn size_bits(&self) -> u64 {
+        log2_floor(&self.numer()) + log2_floor(&self.denom())
+    }
+    /// Inline values (two machine words) are far below any limit used here.
+    fn size_within(&self, max: u64) -> bool {
+        (self.is_inline() && max >= 256) || self.size_bits() <= max
+    }
+}
+
+/// `r pi` as written: `pi`, `-pi/2`, `3*pi/4`, `0`.
+pub(crate) fn angle_text(r: &Rational) -> String {
+    let (n, d) = (r.numer(), r.denom());
+    let num = match n.to_i64() {
+        Some(0) => return "0".into(),
+        Some(1) => "pi".to_string(),
+        Some(-1) => "-pi".to_string(),
+        _ => format!("{n}*pi"),
+    };
+    if d == BigInt::from(1) {
+        num
+    } else {
+        format!("{num}/{d}")
+    }
+}
