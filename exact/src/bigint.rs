@@ -28,6 +28,13 @@
 //!   `mpn_divexact_1`: the quotient is produced from the least significant limb upwards as
 //!   `q_i = (x_i - borrow) * d^(-1) mod 2^64` — multiplications only; the factor `2^s` of an
 //!   even divisor is shifted out on the fly.
+//! * **Paired exact division** ([`divexact_1_pair_in_place`]): the same step on two numbers in
+//!   one loop (a sum's numerator and denominator divided by the same `g2`), in place: each
+//!   quotient limb waits on two dependent multiplications, so two independent chains run in
+//!   the time of one.
+//! * **Limb copies** ([`limbs_of`], [`rem_1_big`]): the operands are read out of num-bigint
+//!   through a zeroed buffer (a plain copy), not `to_u64_digits` (an iterator collected limb by
+//!   limb, several times slower), and small ones onto the stack.
 //! * **Fixed-width ring operations** ([`hensel_div_1_in_place`], [`mul_1_add_in_place`], and
 //!   the two fused in one pass, [`mul_1_add_hensel_in_place`]): the same Jebelean step and a
 //!   multiply-accumulate by a word, modulo `2^(64 len)` on two's complement numbers, for the
@@ -417,7 +424,10 @@ fn divexact_pair_loop<const SHIFT: bool>(x: &mut [u64], y: &mut [u64], s: u32, o
     let (mut cx, mut cy) = (0u64, 0u64);
     for i in 0..n {
         let (wx, wy) = if SHIFT {
-            (x[i] >> s | x[i + 1] << (64 - s), y[i] >> s | y[i + 1] << (64 - s))
+            (
+                x[i] >> s | x[i + 1] << (64 - s),
+                y[i] >> s | y[i + 1] << (64 - s),
+            )
         } else {
             (x[i], y[i])
         };

@@ -540,6 +540,9 @@ fn mul_signed(x: &BigInt, y: &BigUint) -> BigInt {
 /// Borrows every operand; only the result's parts are allocated.
 fn add_big(a: &BigInt, b: &BigUint, c: &BigInt, d: &BigUint, sub: bool) -> Rational {
     let combine = |x: BigInt, y: BigInt| if sub { x - y } else { x + y };
+    if let Some(r) = add_dyadic(a, b, c, d, sub) {
+        return r;
+    }
     if b == d {
         let s = if sub { a - c } else { a + c };
         if s.is_zero() {
@@ -575,6 +578,40 @@ fn add_big(a: &BigInt, b: &BigUint, c: &BigInt, d: &BigUint, sub: bool) -> Ratio
     }
 }
 
+/// [`add_big`] when `b` or `d` is a power of two (a double, or a value built from doubles by
+/// ring operations, against anything): every gcd of Knuth's method is then a power of two
+/// found from trailing zeros, every division by it a shift, and the multiplication by the
+/// power-of-two cofactor a shift too. `None` when neither denominator is a power of two.
+fn add_dyadic(a: &BigInt, b: &BigUint, c: &BigInt, d: &BigUint, sub: bool) -> Option<Rational> {
+    let (tb, td) = (b.trailing_zeros()?, d.trailing_zeros()?);
+    let (pb, pd) = (b.bits() == tb + 1, d.bits() == td + 1);
+    if !pb && !pd {
+        return None;
+    }
+    // g = gcd(b, d) = 2^m; t = a (d/g) + c (b/g).
+    let m = tb.min(td);
+    let term = |x: &BigInt, y: &BigUint, ty: u64, py: bool| {
+        if py {
+            x << (ty - m)
+        } else {
+            mul_signed(x, &(y >> m))
+        }
+    };
+    let (x, y) = (term(a, d, td, pd), term(c, b, tb, pb));
+    let t = if sub { x - y } else { x + y };
+    let Some(tz) = t.trailing_zeros() else {
+        return Some(Rational::ZERO);
+    };
+    // g2 = gcd(t, g) = 2^s; the result is (t/g2) / ((b/g)(d/g2)).
+    let s = tz.min(m);
+    let den = match (pb, pd) {
+        (true, true) => BigUint::one() << (tb - m + td - s),
+        (true, false) => (d >> s) << (tb - m),
+        (false, _) => (b >> m) << (td - s),
+    };
+    Some(Rational::from_coprime(t >> s, den))
+}
+
 /// `a/b + c/d` for a big `a/b` and a word-sized `c/d` (`|c| < 2^64`, `0 < d < 2^64`, both
 /// canonical) by Henrici's method on the limb kernels of [`crate::bigint`]; `None` when `c/d`
 /// is not word-sized. With `g = gcd(b, d) = gcd(d, b mod d)`:
@@ -593,8 +630,15 @@ fn add_big_word(a: &BigInt, b: &BigUint, c: i128, d: i128) -> Option<Rational> {
     debug_assert!(d > 0);
     let (an, cn) = (a.sign() == BigSign::Minus, c < 0);
     // Copied at the lengths the pass works on (n limbs and n + 1).
-    let n = a.magnitude().iter_u64_digits().len().max(b.iter_u64_digits().len());
-    let (al, bl) = (bigint::limbs_of(a.magnitude(), n), bigint::limbs_of(b, n + 1));
+    let n = a
+        .magnitude()
+        .iter_u64_digits()
+        .len()
+        .max(b.iter_u64_digits().len());
+    let (al, bl) = (
+        bigint::limbs_of(a.magnitude(), n),
+        bigint::limbs_of(b, n + 1),
+    );
     let g = gcd_u64(d, bigint::rem_1(&bl, d));
     let (t, tn, den) = bigint::add_word_pass(al, an, bl, cn, cm, d, g);
     if t.is_empty() {
