@@ -28,6 +28,13 @@
 //!   `mpn_divexact_1`: the quotient is produced from the least significant limb upwards as
 //!   `q_i = (x_i - borrow) * d^(-1) mod 2^64` — multiplications only; the factor `2^s` of an
 //!   even divisor is shifted out on the fly.
+//! * **Paired exact division** ([`divexact_1_pair_in_place`]): the same step on two numbers in
+//!   one loop (a sum's numerator and denominator divided by the same `g2`), in place: each
+//!   quotient limb waits on two dependent multiplications, so two independent chains run in
+//!   the time of one.
+//! * **Limb copies** ([`limbs_of`], [`rem_1_big`]): the operands are read out of num-bigint
+//!   through a zeroed buffer (a plain copy), not `to_u64_digits` (an iterator collected limb by
+//!   limb, several times slower), and small ones onto the stack.
 //! * **Fixed-width ring operations** ([`hensel_div_1_in_place`], [`mul_1_add_in_place`], and
 //!   the two fused in one pass, [`mul_1_add_hensel_in_place`]): the same Jebelean step and a
 //!   multiply-accumulate by a word, modulo `2^(64 len)` on two's complement numbers, for the
@@ -380,6 +387,88 @@ pub fn negate_twos_complement(x: &mut [u64]) {
     }
 }
 
+/// `x / d` and `y / d` in place for a `d` dividing both exactly (`d != 0`): Jebelean's exact
+/// division as in [`divexact_1`], the two quotients computed in one loop. Each quotient limb
+/// waits for the borrow of the one below it (two dependent multiplications), so one chain
+/// alone leaves the multiplier idle; two independent chains interleaved fill it. Both results
+/// are trimmed. The results are meaningless (but the call is safe) when `d` does not divide
+/// them.
+///
+/// # Panics
+/// If `d == 0`.
+pub fn divexact_1_pair_in_place(x: &mut Vec<u64>, y: &mut Vec<u64>, d: u64) {
+    assert!(d != 0, "divexact_1_pair_in_place: division by zero");
+    let n = x.len().max(y.len());
+    // One zero limb on top of both: the stream x / 2^s reads limb i + 1.
+    x.resize(n + 1, 0);
+    y.resize(n + 1, 0);
+    let s = d.trailing_zeros();
+    let odd = d >> s;
+    let inv = inverse_mod_2_64(odd);
+    if s == 0 {
+        divexact_pair_loop::<false>(&mut x[..n + 1], &mut y[..n + 1], 0, odd, inv);
+    } else {
+        divexact_pair_loop::<true>(&mut x[..n + 1], &mut y[..n + 1], s, odd, inv);
+    }
+    trim(x);
+    trim(y);
+}
+
+/// The loop of [`divexact_1_pair_in_place`] over `n + 1` limbs (the top one zero); with
+/// `SHIFT`, limb `i` of the stream `x / 2^s` (`0 < s < 64`) is taken from limbs `i` and
+/// `i + 1`, read before limb `i + 1` is overwritten.
+#[inline(always)]
+fn divexact_pair_loop<const SHIFT: bool>(x: &mut [u64], y: &mut [u64], s: u32, odd: u64, inv: u64) {
+    let n = x.len() - 1;
+    let y = &mut y[..n + 1];
+    let (mut cx, mut cy) = (0u64, 0u64);
+    for i in 0..n {
+        let (wx, wy) = if SHIFT {
+            (
+                x[i] >> s | x[i + 1] << (64 - s),
+                y[i] >> s | y[i + 1] << (64 - s),
+            )
+        } else {
+            (x[i], y[i])
+        };
+        x[i] = hensel_limb(wx, &mut cx, odd, inv);
+        y[i] = hensel_limb(wy, &mut cy, odd, inv);
+    }
+    x[n] = 0;
+    y[n] = 0;
+}
+
+/// The limbs of `x` (least significant first), zero-extended to at least `min_len`. A copy
+/// through a zeroed buffer, several times faster than `BigUint::to_u64_digits` (which collects
+/// an iterator limb by limb).
+pub fn limbs_of(x: &BigUint, min_len: usize) -> Vec<u64> {
+    let digits = x.iter_u64_digits();
+    let mut out = vec![0u64; digits.len().max(min_len)];
+    for (o, w) in out.iter_mut().zip(digits) {
+        *o = w;
+    }
+    out
+}
+
+/// `x mod d` for a [`BigUint`] (`d != 0`) by [`rem_1`], without allocating for operands of up
+/// to eight limbs (copied to the stack) and with the fast copy of [`limbs_of`] above that.
+///
+/// # Panics
+/// If `d == 0`.
+pub fn rem_1_big(x: &BigUint, d: u64) -> u64 {
+    let digits = x.iter_u64_digits();
+    let n = digits.len();
+    if n <= 8 {
+        let mut buf = [0u64; 8];
+        for (b, w) in buf.iter_mut().zip(digits) {
+            *b = w;
+        }
+        rem_1(&buf[..n], d)
+    } else {
+        rem_1(&limbs_of(x, 0), d)
+    }
+}
+
 /// Removes leading (most significant) zero limbs.
 #[inline]
 pub fn trim(x: &mut Vec<u64>) {
@@ -530,6 +619,27 @@ mod tests {
             prop_assert!(!(t.is_empty() && tn));
             prop_assert_eq!(signed(&t, tn), expected);
             prop_assert_eq!(biguint_from_limbs(&den), biguint_from_limbs(&b) * BigUint::from(d1));
+        }
+    }
+
+    proptest! {
+        #[test]
+        fn prop_divexact_1_pair(p in arb_limbs(20), q in arb_limbs(20), d in arb_divisor()) {
+            let (x, y) = (biguint_from_limbs(&p) * BigUint::from(d), biguint_from_limbs(&q) * BigUint::from(d));
+            let (mut xl, mut yl) = (limbs(&x), limbs(&y));
+            divexact_1_pair_in_place(&mut xl, &mut yl, d);
+            prop_assert_eq!(biguint_from_limbs(&xl), &x / BigUint::from(d));
+            prop_assert_eq!(biguint_from_limbs(&yl), &y / BigUint::from(d));
+            prop_assert!(xl.last() != Some(&0) && yl.last() != Some(&0));
+        }
+
+        #[test]
+        fn prop_limbs_of_and_rem_1_big(p in arb_limbs(20), min_len in 0usize..24, d in arb_divisor()) {
+            let x = biguint_from_limbs(&p);
+            let l = limbs_of(&x, min_len);
+            prop_assert!(l.len() >= min_len);
+            prop_assert_eq!(biguint_from_limbs(&l), x.clone());
+            prop_assert_eq!(BigUint::from(rem_1_big(&x, d)), &x % BigUint::from(d));
         }
     }
 

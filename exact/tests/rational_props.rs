@@ -210,3 +210,50 @@ fn tier_boundary() {
     let neg = -&over;
     assert!(!neg.is_inline() && neg.is_canonical());
 }
+
+/// Dyadic rationals `m 2^e` as doubles produce them (53-bit mantissas, exponents far below and
+/// above zero) and wider ones, whose products overflow the inline tier.
+fn dyadic() -> impl Strategy<Value = BigRational> {
+    (
+        prop_oneof![
+            (-(1i64 << 53)..(1i64 << 53)).prop_map(BigInt::from),
+            any::<i128>().prop_map(BigInt::from),
+        ],
+        -300i32..300,
+    )
+        .prop_map(|(m, e)| {
+            let p = BigInt::from(1) << e.unsigned_abs();
+            if e < 0 {
+                BigRational::new(m, p)
+            } else {
+                BigRational::from_integer(m * p)
+            }
+        })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(2000))]
+
+    /// Sums, products and quotients of dyadic values (gcds against powers of two, products
+    /// formed wide) against num-rational, and the regress throughput formula
+    /// `((x + y)(z - w) - x z / (y + 2))(w + 1) + x y` on them.
+    #[test]
+    fn dyadic_operations_match_big_rational(
+        bx in dyadic(), by in dyadic(), bz in dyadic(), bw in dyadic()
+    ) {
+        let [x, y, z, w] = [&bx, &by, &bz, &bw].map(Rational::from);
+        check(&(&x + &y), &(&bx + &by))?;
+        check(&(&x - &y), &(&bx - &by))?;
+        check(&(&x * &y), &(&bx * &by))?;
+        if !by.is_zero() {
+            check(&(&x / &y), &(&bx / &by))?;
+        }
+        let two = Rational::from_integer(2);
+        let b2 = BigRational::from_integer(BigInt::from(2));
+        if !(&by + &b2).is_zero() {
+            let f = &(&(&(&(&x + &y) * &(&z - &w)) - &(&(&x * &z) / &(&y + &two))) * &(&w + &Rational::ONE)) + &(&x * &y);
+            let bf = (((&bx + &by) * (&bz - &bw)) - (&bx * &bz) / (&by + &b2)) * (&bw + BigRational::from_integer(BigInt::from(1))) + &bx * &by;
+            check(&f, &bf)?;
+        }
+    }
+}

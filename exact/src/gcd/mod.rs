@@ -11,7 +11,8 @@
 //! * [`gcd_biguint`], the main entry point: the subquadratic half-gcd algorithm ([`hgcd`],
 //!   [`half_gcd`]) when both operands have at least [`HGCD_GCD_THRESHOLD`] limbs, and below
 //!   that [`gcd_lehmer`];
-//! * [`gcd_lehmer`]: word-sized shortcuts, one division step when the operands differ in size
+//! * [`gcd_lehmer`]: word-sized shortcuts (and a shift when one operand is a power of two, as
+//!   the denominators of doubles are), one division step when the operands differ in size
 //!   by more than a limb, and otherwise Lehmer's algorithm on 64-bit limbs (quadratic; the
 //!   reference the half-gcd path is tested against);
 //! * [`gcd_biguint_u64`] and [`gcd_bigint_abs`], conveniences built on those.
@@ -68,6 +69,11 @@ pub fn gcd_u64(a: u64, b: u64) -> u64 {
     if b == 0 {
         return a;
     }
+    if a.is_power_of_two() || b.is_power_of_two() {
+        // gcd(2^j, x) = 2^min(j, tz(x)): the lower of the two lowest set bits, no loop (the
+        // denominators of doubles and dyadic rationals).
+        return (a & a.wrapping_neg()).min(b & b.wrapping_neg());
+    }
     if b.leading_zeros() - a.leading_zeros() > U64_REM_THRESHOLD {
         a %= b;
         if a == 0 {
@@ -104,6 +110,10 @@ pub fn gcd_u128(a: u128, b: u128) -> u128 {
     }
     if b == 0 {
         return a;
+    }
+    if a.is_power_of_two() || b.is_power_of_two() {
+        // As in gcd_u64: no remainder step, no loop.
+        return (a & a.wrapping_neg()).min(b & b.wrapping_neg());
     }
     if b.leading_zeros() - a.leading_zeros() > U128_REM_THRESHOLD {
         a %= b;
@@ -149,7 +159,7 @@ pub fn gcd_biguint_u64(a: &BigUint, b: u64) -> Option<u64> {
     }
     let r = match fit_u64(a) {
         Some(w) => w,
-        None => crate::bigint::rem_1(&a.to_u64_digits(), b),
+        None => crate::bigint::rem_1_big(a, b),
     };
     Some(gcd_u64(b, r))
 }
@@ -178,6 +188,7 @@ pub fn gcd_biguint(a: &BigUint, b: &BigUint) -> BigUint {
 /// quadratic reference for [`gcd_biguint`], which uses it below [`HGCD_GCD_THRESHOLD`] limbs.
 ///
 /// * a zero operand: the other one is returned;
+/// * an operand that is a power of two `2^j`: `2^min(j, tz)` with `tz` the other's trailing zeros;
 /// * an operand that fits in one 64-bit limb: a single-limb remainder, then [`gcd_u64`];
 /// * both operands fitting in 128 bits: [`gcd_u128`];
 /// * bit lengths differing by more than 64: one division step `a % b` first;
@@ -193,12 +204,15 @@ pub fn gcd_lehmer(a: &BigUint, b: &BigUint) -> BigUint {
     if a.is_one() || b.is_one() {
         return BigUint::one();
     }
+    if let Some(g) = gcd_power_of_two(a, b) {
+        return g;
+    }
     let (a, b) = if a >= b { (a, b) } else { (b, a) };
     // Here a >= b > 0.
     if let Some(bw) = fit_u64(b) {
         let r = match fit_u64(a) {
             Some(aw) => aw % bw,
-            None => crate::bigint::rem_1(&a.to_u64_digits(), bw),
+            None => crate::bigint::rem_1_big(a, bw),
         };
         return BigUint::from(gcd_u64(bw, r));
     }
@@ -215,6 +229,17 @@ pub fn gcd_lehmer(a: &BigUint, b: &BigUint) -> BigUint {
         return lehmer_gcd(b.to_u64_digits(), r.to_u64_digits());
     }
     lehmer_gcd(a.to_u64_digits(), b.to_u64_digits())
+}
+
+/// `gcd(a, b)` for non-zero `a`, `b` of which one is a power of two, `2^min(tz(a), tz(b))` (a
+/// shift, no division); `None` when neither is. The denominators of doubles and of every value
+/// built from them by ring operations are powers of two, so most gcds of normalisation in a
+/// sweep over double inputs end here.
+#[inline]
+fn gcd_power_of_two(a: &BigUint, b: &BigUint) -> Option<BigUint> {
+    let (ta, tb) = (a.trailing_zeros()?, b.trailing_zeros()?);
+    let power = |x: &BigUint, t: u64| x.bits() == t + 1;
+    (power(a, ta) || power(b, tb)).then(|| BigUint::one() << ta.min(tb))
 }
 
 /// `Some(x)` when `x < 2^64`.
@@ -563,6 +588,19 @@ mod tests {
         fn prop_gcd_u128(a in any::<u128>(), b in any::<u128>(), s in 0u32..128, t in 0u32..128) {
             let (a, b) = (a >> s, b >> t);
             prop_assert_eq!(gcd_u128(a, b), naive_gcd_u128(a, b));
+        }
+
+        /// One operand a power of two (the shortcut), the other any value, in both orders.
+        #[test]
+        fn prop_gcd_power_of_two(x in any::<u128>(), s in 0u32..128, j in 0u32..128, t in 0u32..128) {
+            let (x, p) = (x >> s << (t.min(s)), 1u128 << j);
+            prop_assert_eq!(gcd_u128(x, p), naive_gcd_u128(x, p));
+            prop_assert_eq!(gcd_u128(p, x), naive_gcd_u128(x, p));
+            let (x64, p64) = (x as u64, 1u64 << (j % 64));
+            prop_assert_eq!(gcd_u64(x64, p64), naive_gcd_u64(x64, p64));
+            prop_assert_eq!(gcd_u64(p64, x64), naive_gcd_u64(x64, p64));
+            let (xb, pb) = (BigUint::from(x) << (3 * j), BigUint::one() << (2 * j + s));
+            check(&xb, &pb);
         }
 
         #[test]

@@ -337,9 +337,7 @@ impl Rational {
 
     fn mul_impl(&self, rhs: &Rational) -> Rational {
         if let (Repr::Small(a, b), Repr::Small(c, d)) = (&self.0, &rhs.0) {
-            if let Some(r) = mul_small(*a, *b, *c, *d) {
-                return r;
-            }
+            return mul_small(*a, *b, *c, *d);
         }
         if self.is_zero_value() || rhs.is_zero_value() {
             return Rational::ZERO;
@@ -470,11 +468,13 @@ fn add_small(a: i128, b: i128, c: i128, d: i128) -> Option<Rational> {
     fits(den).then_some(Rational(Repr::Small(t / g2, den)))
 }
 
-/// `(a/b) (c/d)` on the inline tier by Henrici's method; `None` on overflow.
+/// `(a/b) (c/d)` for inline operands by Henrici's method: the crossed gcds are cancelled on
+/// the inline parts, and products that overflow `i128` are formed as 256-bit products straight
+/// into the big tier (no second normalisation).
 #[inline]
-fn mul_small(a: i128, b: i128, c: i128, d: i128) -> Option<Rational> {
+fn mul_small(a: i128, b: i128, c: i128, d: i128) -> Rational {
     if a == 0 || c == 0 {
-        return Some(Rational::ZERO);
+        return Rational::ZERO;
     }
     let g1 = if d == 1 {
         1
@@ -489,13 +489,43 @@ fn mul_small(a: i128, b: i128, c: i128, d: i128) -> Option<Rational> {
     // Divide only where a factor cancels: i128 division is the expensive part.
     let (a, d) = if g1 == 1 { (a, d) } else { (a / g1, d / g1) };
     let (c, b) = if g2 == 1 { (c, b) } else { (c / g2, b / g2) };
-    let n = a.checked_mul(c)?;
-    let den = b.checked_mul(d)?;
-    (fits(n) && fits(den)).then_some(Rational(Repr::Small(n, den)))
+    if let (Some(n), Some(den)) = (a.checked_mul(c), b.checked_mul(d)) {
+        if fits(n) && fits(den) {
+            return Rational(Repr::Small(n, den));
+        }
+    }
+    let sign = if (a < 0) == (c < 0) {
+        BigSign::Plus
+    } else {
+        BigSign::Minus
+    };
+    let num = BigInt::from_biguint(sign, wide_mul(a.unsigned_abs(), c.unsigned_abs()));
+    Rational::from_coprime(num, wide_mul(b as u128, d as u128))
 }
 
-fn to_signed(x: BigUint) -> BigInt {
-    BigInt::from_biguint(BigSign::Plus, x)
+/// The full 256-bit product `x y` as a [`BigUint`].
+fn wide_mul(x: u128, y: u128) -> BigUint {
+    let (x0, x1) = (x as u64 as u128, x >> 64);
+    let (y0, y1) = (y as u64 as u128, y >> 64);
+    let (p00, p01, p10, p11) = (x0 * y0, x0 * y1, x1 * y0, x1 * y1);
+    // Middle column: the high half of p00 plus the low halves of p01 and p10 (< 3 * 2^64).
+    let mid = (p00 >> 64) + (p01 as u64 as u128) + (p10 as u64 as u128);
+    let high = p11 + (p01 >> 64) + (p10 >> 64) + (mid >> 64);
+    bigint::biguint_from_limbs(&[p00 as u64, mid as u64, high as u64, (high >> 64) as u64])
+}
+
+/// `x / g` for a `g` dividing `x`: a shift when `g` is a power of two (the denominators of
+/// doubles), otherwise num-bigint's division.
+fn div_exact(x: &BigUint, g: &BigUint) -> BigUint {
+    match g.trailing_zeros() {
+        Some(t) if g.bits() == t + 1 => x >> t,
+        _ => x / g,
+    }
+}
+
+/// `x / g` for a signed `x` and a `g` dividing it ([`div_exact`] on the magnitude).
+fn div_exact_signed(x: &BigInt, g: &BigUint) -> BigInt {
+    BigInt::from_biguint(x.sign(), div_exact(x.magnitude(), g))
 }
 
 /// `x * y` for a signed `x` and an unsigned `y`, without copying `y` into a `BigInt`.
@@ -508,6 +538,9 @@ fn mul_signed(x: &BigInt, y: &BigUint) -> BigInt {
 /// Borrows every operand; only the result's parts are allocated.
 fn add_big(a: &BigInt, b: &BigUint, c: &BigInt, d: &BigUint, sub: bool) -> Rational {
     let combine = |x: BigInt, y: BigInt| if sub { x - y } else { x + y };
+    if let Some(r) = add_dyadic(a, b, c, d, sub) {
+        return r;
+    }
     if b == d {
         let s = if sub { a - c } else { a + c };
         if s.is_zero() {
@@ -517,7 +550,7 @@ fn add_big(a: &BigInt, b: &BigUint, c: &BigInt, d: &BigUint, sub: bool) -> Ratio
         return if g.is_one() {
             Rational::from_coprime(s, b.clone())
         } else {
-            Rational::from_coprime(s / to_signed(g.clone()), b / g)
+            Rational::from_coprime(div_exact_signed(&s, &g), div_exact(b, &g))
         };
     }
     let g = gcd_biguint(b, d);
@@ -528,8 +561,8 @@ fn add_big(a: &BigInt, b: &BigUint, c: &BigInt, d: &BigUint, sub: bool) -> Ratio
         }
         return Rational::from_coprime(n, b * d);
     }
-    let b1 = b / &g;
-    let d1 = d / &g;
+    let b1 = div_exact(b, &g);
+    let d1 = div_exact(d, &g);
     let t = combine(mul_signed(a, &d1), mul_signed(c, &b1));
     if t.is_zero() {
         return Rational::ZERO;
@@ -538,9 +571,43 @@ fn add_big(a: &BigInt, b: &BigUint, c: &BigInt, d: &BigUint, sub: bool) -> Ratio
     if g2.is_one() {
         Rational::from_coprime(t, b1 * d)
     } else {
-        let den = b1 * (d / &g2);
-        Rational::from_coprime(t / to_signed(g2), den)
+        let den = b1 * div_exact(d, &g2);
+        Rational::from_coprime(div_exact_signed(&t, &g2), den)
     }
+}
+
+/// [`add_big`] when `b` or `d` is a power of two (a double, or a value built from doubles by
+/// ring operations, against anything): every gcd of Knuth's method is then a power of two
+/// found from trailing zeros, every division by it a shift, and the multiplication by the
+/// power-of-two cofactor a shift too. `None` when neither denominator is a power of two.
+fn add_dyadic(a: &BigInt, b: &BigUint, c: &BigInt, d: &BigUint, sub: bool) -> Option<Rational> {
+    let (tb, td) = (b.trailing_zeros()?, d.trailing_zeros()?);
+    let (pb, pd) = (b.bits() == tb + 1, d.bits() == td + 1);
+    if !pb && !pd {
+        return None;
+    }
+    // g = gcd(b, d) = 2^m; t = a (d/g) + c (b/g).
+    let m = tb.min(td);
+    let term = |x: &BigInt, y: &BigUint, ty: u64, py: bool| {
+        if py {
+            x << (ty - m)
+        } else {
+            mul_signed(x, &(y >> m))
+        }
+    };
+    let (x, y) = (term(a, d, td, pd), term(c, b, tb, pb));
+    let t = if sub { x - y } else { x + y };
+    let Some(tz) = t.trailing_zeros() else {
+        return Some(Rational::ZERO);
+    };
+    // g2 = gcd(t, g) = 2^s; the result is (t/g2) / ((b/g)(d/g2)).
+    let s = tz.min(m);
+    let den = match (pb, pd) {
+        (true, true) => BigUint::one() << (tb - m + td - s),
+        (true, false) => (d >> s) << (tb - m),
+        (false, _) => (b >> m) << (td - s),
+    };
+    Some(Rational::from_coprime(t >> s, den))
 }
 
 /// `a/b + c/d` for a big `a/b` and a word-sized `c/d` (`|c| < 2^64`, `0 < d < 2^64`, both
@@ -553,14 +620,23 @@ fn add_big(a: &BigInt, b: &BigUint, c: &BigInt, d: &BigUint, sub: bool) -> Ratio
 ///
 /// The big operands are copied out as limbs once; then one folding remainder pass for `g`, one fused
 /// pass ([`bigint::add_word_pass`]) for `t` and `b (d/g)`, one remainder pass over `t` when
-/// `g > 1`, and two exact divisions only when `g2 > 1`. [`add_big`] is the reference it
+/// `g > 1`, and, only when `g2 > 1`, one pass dividing `t` and the denominator by `g2` at once. [`add_big`] is the reference it
 /// replaces (tested against it).
 fn add_big_word(a: &BigInt, b: &BigUint, c: i128, d: i128) -> Option<Rational> {
     let cm = u64::try_from(c.unsigned_abs()).ok()?;
     let d = u64::try_from(d).ok()?;
     debug_assert!(d > 0);
     let (an, cn) = (a.sign() == BigSign::Minus, c < 0);
-    let (al, bl) = (a.magnitude().to_u64_digits(), b.to_u64_digits());
+    // Copied at the lengths the pass works on (n limbs and n + 1).
+    let n = a
+        .magnitude()
+        .iter_u64_digits()
+        .len()
+        .max(b.iter_u64_digits().len());
+    let (al, bl) = (
+        bigint::limbs_of(a.magnitude(), n),
+        bigint::limbs_of(b, n + 1),
+    );
     let g = gcd_u64(d, bigint::rem_1(&bl, d));
     let (t, tn, den) = bigint::add_word_pass(al, an, bl, cn, cm, d, g);
     if t.is_empty() {
@@ -573,11 +649,10 @@ fn add_big_word(a: &BigInt, b: &BigUint, c: i128, d: i128) -> Option<Rational> {
     } else {
         gcd_u64(g, bigint::rem_1(&t, g))
     };
-    let (t, den) = if g2 == 1 {
-        (t, den)
-    } else {
-        (bigint::divexact_1(&t, g2), bigint::divexact_1(&den, g2))
-    };
+    let (mut t, mut den) = (t, den);
+    if g2 != 1 {
+        bigint::divexact_1_pair_in_place(&mut t, &mut den, g2);
+    }
     if t.is_empty() {
         return Some(Rational::ZERO);
     }
@@ -594,7 +669,7 @@ fn div_unless_one<'a>(x: &'a BigUint, g: &BigUint) -> Cow<'a, BigUint> {
     if g.is_one() {
         Cow::Borrowed(x)
     } else {
-        Cow::Owned(x / g)
+        Cow::Owned(div_exact(x, g))
     }
 }
 

@@ -198,3 +198,41 @@ fn pairwise_sum() {
         Rational::ZERO
     );
 }
+
+#[test]
+fn dyadic_sums_match_num_rational() {
+    // add_big's power-of-two path: one or both denominators powers of two, the other with an
+    // odd factor; numerators with and without trailing zeros; results that cancel to zero.
+    let mut st = exactcheck_core::Rng::new(0xd1ad);
+    for _ in 0..300 {
+        let mut big = |bits: u32| {
+            let v: Vec<u64> = (0..3).map(|_| st.next_u64()).collect();
+            BigInt::from(crate::bigint::biguint_from_limbs(&v)) >> (192 - bits)
+        };
+        let (a, c) = (big(150) << 3u32, -big(140));
+        let odd = big(60) | BigInt::one();
+        for (eb, ed, with_odd) in [
+            (130u32, 140u32, false),
+            (200, 5, true),
+            (3, 250, true),
+            (128, 128, false),
+        ] {
+            let b = BigInt::one() << eb;
+            let d = (BigInt::one() << ed) * if with_odd { odd.clone() } else { BigInt::one() };
+            let (x, y) = (
+                BigRational::new(a.clone(), b),
+                BigRational::new(c.clone(), d),
+            );
+            let (fx, fy) = (Rational::from(&x), Rational::from(&y));
+            for (got, expected) in [
+                (&fx + &fy, &x + &y),
+                (&fx - &fy, &x - &y),
+                (&fy - &fx, &y - &x),
+                (&fx - &fx, BigRational::zero()),
+            ] {
+                assert!(got.is_canonical(), "{x} {y}");
+                assert_eq!(got.to_big_rational(), expected, "{x} {y}");
+            }
+        }
+    }
+}
