@@ -22,8 +22,8 @@ pub struct Case {
     pub inputs: Vec<f64>,
     /// The same inputs as exact rationals, `n` or `n/d`.
     pub inputs_exact: Vec<String>,
-    /// The exact outputs, `n` or `n/d`; an irrational value refined to a rational
-    /// approximation reads `~` and 25 significant digits (truncated).
+    /// The exact outputs, `n` or `n/d`; a value known only as an enclosure (not exact) refined
+    /// to a rational approximation reads `~` and 25 significant digits (truncated).
     pub exact_outputs: Vec<String>,
     /// The exact outputs rounded to the nearest doubles.
     #[serde(with = "measures")]
@@ -287,7 +287,9 @@ pub struct Report {
     /// The limit that stopped them, `NAME = VALUE` (`loop-iterations = 10000`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub limit_stop: Option<String>,
-    /// Compared samples whose exact value was refined (an irrational root) rather than exact.
+    /// Compared samples whose reference is not exact: an enclosure of the true value (behind an
+    /// irrational root, a function or a loop carried as an enclosure), refined until its
+    /// rounding is decided.
     pub refined: usize,
     /// Compared samples where the float side failed (infinite error).
     pub float_failures: usize,
@@ -543,7 +545,7 @@ impl fmt::Display for Report {
         if self.refined > 0 {
             writeln!(
                 f,
-                "  {} compared samples have an irrational exact value, refined beyond double precision",
+                "  {} compared samples have a reference that is not exact: an enclosure of the true value, refined until its rounding is decided",
                 self.refined
             )?;
         }
