@@ -25,7 +25,8 @@ pub struct Case {
     /// The exact outputs, `n` or `n/d`; a value known only as an enclosure (not exact) refined
     /// to a rational approximation reads `~` and 25 significant digits (truncated).
     pub exact_outputs: Vec<String>,
-    /// The exact outputs rounded to the nearest doubles.
+    /// The exact outputs rounded to the nearest values of the report's precision (doubles, or
+    /// binary32 values).
     #[serde(with = "measures")]
     pub exact_outputs_f64: Vec<f64>,
     /// The float outputs; `None` when the float evaluation reported a zero divisor.
@@ -257,6 +258,10 @@ pub struct Report {
     pub float_side: String,
     /// The generator's description.
     pub generator: String,
+    /// The format the float side computes in and the errors are measured in: `binary64` or
+    /// `binary32` (ulps and Herbie's bits of that format).
+    #[serde(default = "binary64")]
+    pub precision: String,
     /// The number of inputs.
     pub arity: usize,
     /// The number of samples of the whole sweep.
@@ -510,9 +515,24 @@ impl fmt::Display for WorstCase {
     }
 }
 
+/// The precision of a report read without one: every report before binary32 was binary64.
+fn binary64() -> String {
+    "binary64".into()
+}
+
 impl fmt::Display for Report {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        writeln!(f, "regress `{}` ({} inputs)", self.formula, self.arity)?;
+        if self.precision == "binary64" {
+            writeln!(f, "regress `{}` ({} inputs)", self.formula, self.arity)?;
+        } else {
+            // Only a precision other than the default is named, on the title line, and the
+            // measures below are in its units.
+            writeln!(
+                f,
+                "regress `{}` ({} inputs, in {}: errors in {} ulps and bits)",
+                self.formula, self.arity, self.precision, self.precision
+            )?;
+        }
         writeln!(f, "  inputs: {}", self.generator)?;
         let covered = match self.shard {
             Some(s) => format!(

@@ -211,3 +211,75 @@ fn every_fpbench_benchmark_runs_or_is_refused_with_its_reason() {
         "{compared} of {total} compared"
     );
 }
+
+/// Runs `exactcheck regress ARGS --json` and returns the exit status and the first entry.
+fn first_entry(args: &[&str]) -> (Option<i32>, Value) {
+    let o = Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+        .arg("regress")
+        .args(args)
+        .args(["--json", "--quiet"])
+        .output()
+        .expect("the binary runs");
+    let doc: Value = serde_json::from_slice(&o.stdout)
+        .unwrap_or_else(|e| panic!("{e}: {}", String::from_utf8_lossy(&o.stderr)));
+    (o.status.code(), doc["entries"][0].clone())
+}
+
+#[test]
+fn binary32_benchmarks_measure_binary32_ulps() {
+    // FPTaylor's x / (x + y) on [1, 4]^2 in binary32: two roundings, at most 1.5 binary32 ulps,
+    // every worst input a binary32 value.
+    let path = format!(
+        "{}/tests/regress/fpbench/fptaylor-extra.fpcore",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let (status, e) = first_entry(&["--fpcore", &path, "--name", "x_by_xy", "--samples", "300"]);
+    assert_eq!(status, Some(0), "{e}");
+    assert_eq!(e["precision"], "binary32");
+    assert_eq!(e["compared"], 300);
+    let max = e["max_ulps"].as_f64().expect("max ulps");
+    assert!(max > 0.25 && max <= 1.5, "{max}");
+    for w in e["worst"].as_array().expect("worst") {
+        for x in w["original"]["inputs"].as_array().expect("inputs") {
+            let x = x.as_f64().expect("a number");
+            assert_eq!(f64::from(x as f32), x, "{x} is not a binary32 value");
+            assert!((1.0..=4.0).contains(&x));
+        }
+    }
+
+    // (x + y) - x with y far below half a binary32 ulp of x: in binary32 the sum is x and the
+    // result 0 (relative error exactly 1: y / ulp32(y) in [2^23, 2^24) ulps, 24 bits or more);
+    // in binary64 the sum keeps y to within 2^-53, a relative error below 2^-23.
+    let formula = [
+        "--formula",
+        "(x + y) - x",
+        "--domain",
+        "x in [1, 2], y in [1e-9, 2e-9]",
+        "--samples",
+        "200",
+    ];
+    let (status, e32) = first_entry(&[&formula[..], &["--precision", "binary32"]].concat());
+    assert_eq!(status, Some(0), "{e32}");
+    assert_eq!(e32["precision"], "binary32");
+    assert_eq!(e32["max_rel"], 1.0);
+    assert_eq!(e32["median_rel"], 1.0);
+    let (lo, hi) = (f64::powi(2.0, 23), f64::powi(2.0, 24));
+    for k in ["max_ulps", "median_ulps"] {
+        let u = e32[k].as_f64().expect("ulps");
+        assert!(lo <= u && u < hi, "{k} = {u}");
+    }
+    assert!(e32["bits_of_error"].as_f64().expect("bits") > 23.0);
+    let (status, e64) = first_entry(&formula);
+    assert_eq!(status, Some(0), "{e64}");
+    assert_eq!(e64["precision"], "binary64");
+    assert!(e64["max_rel"].as_f64().expect("rel") < f64::powi(2.0, -23));
+
+    // The text table names the precision with the entry.
+    let o = Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+        .args(["regress", "--fpcore", &path, "--samples", "20", "--quiet"])
+        .output()
+        .expect("the binary runs");
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(text.contains("x_by_xy [binary32]"), "{text}");
+    assert!(text.contains("in binary32: errors in binary32 ulps"), "{text}");
+}

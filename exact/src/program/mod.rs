@@ -22,7 +22,10 @@
 //! * `explain`: where the error comes from at one sample ([`Program::local_errors`],
 //!   [`Program::conditioning`]).
 use crate::rational::Rational;
+pub use crate::to_f64::Format;
 
+#[cfg(test)]
+mod binary32_tests;
 mod compile;
 mod explain;
 mod float;
@@ -38,7 +41,7 @@ mod walk;
 
 pub use compile::CompileError;
 pub use explain::{Conditioning, LocalError};
-pub use float::{call_f64, pow_f64, STACK_SLOTS};
+pub use float::{call_f32, call_f64, pow_f32, pow_f64, STACK_SLOTS};
 pub use real::{ExactStop, Reference, MAX_PRECISION, REL_BITS, START_PRECISION};
 
 /// How an integer power is evaluated on the float side.
@@ -316,6 +319,10 @@ pub struct Program {
     pub pre: Option<Cond>,
     /// The outputs (one or more).
     pub outputs: Vec<Node>,
+    /// The format the float side computes in (every operation, literal and library function
+    /// rounded to it) and the exact reference's rounding is decided in: binary64 unless FPCore's
+    /// `:precision` or `regress --precision` says binary32.
+    pub precision: Format,
 }
 
 impl Program {
