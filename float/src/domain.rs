@@ -616,6 +616,82 @@ mod tests {
         v.iter().map(|s| s.to_string()).collect()
     }
 
+    fn lowest_double(b: &Bound) -> Option<f64> {
+        lowest_value(b, Format::Binary64)
+    }
+
+    fn highest_double(b: &Bound) -> Option<f64> {
+        highest_value(b, Format::Binary64)
+    }
+
+    #[test]
+    fn binary32_domains_sample_binary32_values_inside_the_bounds() {
+        let names = names(&["x", "y"]);
+        let d = Domain::named(
+            vec![iv(Bound::Open(q(1, 3)), cl(2)), iv(cl(0), Bound::Unbounded)],
+            &names,
+        )
+        .and_then(|d| d.with_format(Format::Binary32))
+        .expect("non-empty");
+        // 1/3 is excluded: the lowest binary32 value above it.
+        let third = f64::from(1.0f32 / 3.0);
+        let lo = if third > 1.0 / 3.0 {
+            third
+        } else {
+            f64::from((1.0f32 / 3.0).next_up())
+        };
+        assert_eq!(d.draws[0], Draw::Uniform { lo, hi: 2.0 });
+        assert_eq!(
+            d.draws[1],
+            Draw::Ordinal {
+                lo: 0,
+                hi: i64::from(f32::MAX.to_bits())
+            }
+        );
+        for sampling in [Sampling::Mixed, Sampling::Floats] {
+            let d = d.clone().with_sampling(sampling).expect("valid");
+            let mut rng = Rng::new(3);
+            for _ in 0..2000 {
+                let s = d.sample(&mut rng);
+                assert!(d.contains(&s), "{s:?}");
+                for &v in &s {
+                    assert_eq!(f64::from(v as f32), v);
+                }
+                assert!(lo <= s[0] && s[0] <= 2.0 && s[1] >= 0.0);
+            }
+        }
+        // A double that is not a binary32 value is outside; so is a range without one.
+        assert!(!d.contains(&[0.1, 1.0]));
+        assert!(d.contains(&[f64::from(0.5f32), 1.0]));
+        let empty = Domain::named(vec![iv(cl(1), Bound::Closed(q(1, 1) + Rational::from(
+            num_rational::BigRational::new(1.into(), (1u64 << 40).into()),
+        )))], &names[..1])
+        .and_then(|d| d.with_format(Format::Binary32));
+        assert!(empty.is_ok(), "1 itself is a binary32 value");
+        let none = Domain::named(vec![iv(Bound::Open(q(1, 1)), Bound::Open(q(1, 1) + Rational::from(
+            num_rational::BigRational::new(1.into(), (1u64 << 40).into()),
+        )))], &names[..1])
+        .and_then(|d| d.with_format(Format::Binary32));
+        assert_eq!(
+            none.map(|_| ()).unwrap_err().0,
+            "input 0 (x) has no finite binary32 value in (1, 1.0000000000009095)"
+        );
+        // Uniform over the binary32 values: each binade of [1, 2^20] equally likely.
+        let d = Domain::named(vec![iv(cl(1), cl(1 << 20))], &names[..1])
+            .and_then(|d| d.with_format(Format::Binary32))
+            .and_then(|d| d.with_sampling(Sampling::Floats))
+            .expect("valid");
+        let mut rng = Rng::new(5);
+        let below = (0..10_000)
+            .filter(|_| d.sample(&mut rng)[0] < 1024.0)
+            .count();
+        assert!((below as f64 / 10_000.0 - 0.5).abs() < 0.03, "{below}");
+        assert_eq!(
+            d.describe(),
+            "x in [1, 1.048576e6] (uniform over the binary32 values)"
+        );
+    }
+
     fn iv(lo: Bound, hi: Bound) -> Interval {
         Interval { lo, hi }
     }

@@ -515,6 +515,13 @@ impl fmt::Display for WorstCase {
     }
 }
 
+impl Report {
+    /// The number of samples this report covers (its shard's, or the whole sweep's).
+    fn covered(&self) -> usize {
+        self.end_sample.saturating_sub(self.first_sample)
+    }
+}
+
 /// The precision of a report read without one: every report before binary32 was binary64.
 fn binary64() -> String {
     "binary64".into()
@@ -569,7 +576,16 @@ impl fmt::Display for Report {
                 self.refined
             )?;
         }
-        if self.compared == 0 {
+        if self.compared == 0 && self.undecided > 0 && self.undecided == self.covered() {
+            // Say why: the exact side gave up on every sample at its precision cap (or size
+            // limit), never a guess.
+            writeln!(
+                f,
+                "  no sample was compared: the exact side left every sample undecided, no sign or rounding decided within its precision cap of {} bits (the exact value cancels more bits than that, or may be exactly zero) or an exact intermediate beyond the limit {}",
+                exactcheck_exact::program::MAX_PRECISION,
+                exactcheck_core::limits::CONSTANT_BITS.name()
+            )?;
+        } else if self.compared == 0 {
             // No measure is an error of 0: say that nothing was measured.
             writeln!(f, "  no sample was compared: no error was measured")?;
         } else {

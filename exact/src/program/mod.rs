@@ -2,7 +2,8 @@
 //! `--formula` in the `prove` syntax and an FPCore benchmark — evaluated two ways on the same
 //! inputs:
 //! * **in f64, as written**: each node is one IEEE double operation in the order of the tree
-//!   (literals rounded to the nearest double, `fma` fused, `sqrt` correctly rounded);
+//!   (literals rounded to the nearest double, `fma` fused, `sqrt` correctly rounded), or one
+//!   binary32 operation for a program of [`Format::Binary32`];
 //! * **exactly**: the true real value of the tree at the (exact, dyadic) inputs. Without an
 //!   irrational square root that is a rational computed exactly; with one, it is refined to as
 //!   many bits as the comparison with the double needs (never a float `sqrt`).
