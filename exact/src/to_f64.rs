@@ -388,7 +388,10 @@ mod tests {
         let third = BigRational::new(BigInt::from(1), BigInt::from(3));
         assert_eq!(rational_to_f32(&third), f64::from(1.0f32 / 3.0));
         assert_eq!(rational_to_f32(&-third), f64::from(-1.0f32 / 3.0));
-        assert_eq!(rational_to_f32(&dyadic(1, -149)), f64::from(f32::from_bits(1)));
+        assert_eq!(
+            rational_to_f32(&dyadic(1, -149)),
+            f64::from(f32::from_bits(1))
+        );
         assert_eq!(rational_to_f32(&dyadic(1, -150)), 0.0); // tie with 0: to even
         assert_eq!(
             rational_to_f32(&(dyadic(1, -150) + dyadic(1, -200))),
@@ -401,7 +404,10 @@ mod tests {
             f64::from(f32::MAX)
         );
         assert_eq!(rational_to_f32(&(max + dyadic(1, 103))), f64::INFINITY);
-        assert_eq!(Format::Binary32.round(&dyadic(-(1 << 30), 200)), f64::NEG_INFINITY);
+        assert_eq!(
+            Format::Binary32.round(&dyadic(-(1 << 30), 200)),
+            f64::NEG_INFINITY
+        );
     }
 
     #[test]

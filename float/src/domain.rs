@@ -663,14 +663,34 @@ mod tests {
         // A double that is not a binary32 value is outside; so is a range without one.
         assert!(!d.contains(&[0.1, 1.0]));
         assert!(d.contains(&[f64::from(0.5f32), 1.0]));
-        let empty = Domain::named(vec![iv(cl(1), Bound::Closed(q(1, 1) + Rational::from(
-            num_rational::BigRational::new(1.into(), (1u64 << 40).into()),
-        )))], &names[..1])
+        let empty = Domain::named(
+            vec![iv(
+                cl(1),
+                Bound::Closed(
+                    q(1, 1)
+                        + Rational::from(num_rational::BigRational::new(
+                            1.into(),
+                            (1u64 << 40).into(),
+                        )),
+                ),
+            )],
+            &names[..1],
+        )
         .and_then(|d| d.with_format(Format::Binary32));
         assert!(empty.is_ok(), "1 itself is a binary32 value");
-        let none = Domain::named(vec![iv(Bound::Open(q(1, 1)), Bound::Open(q(1, 1) + Rational::from(
-            num_rational::BigRational::new(1.into(), (1u64 << 40).into()),
-        )))], &names[..1])
+        let none = Domain::named(
+            vec![iv(
+                Bound::Open(q(1, 1)),
+                Bound::Open(
+                    q(1, 1)
+                        + Rational::from(num_rational::BigRational::new(
+                            1.into(),
+                            (1u64 << 40).into(),
+                        )),
+                ),
+            )],
+            &names[..1],
+        )
         .and_then(|d| d.with_format(Format::Binary32));
         assert_eq!(
             none.map(|_| ()).unwrap_err().0,

@@ -82,7 +82,12 @@ pub struct RegressArgs {
     /// `binary32` (every operation, literal and library call in f32; inputs sampled among the
     /// binary32 values; errors in binary32 ulps). An FPCore benchmark's own `:precision` decides
     /// for --fpcore.
-    #[arg(long, value_enum, value_name = "binary64|binary32", requires = "formula")]
+    #[arg(
+        long,
+        value_enum,
+        value_name = "binary64|binary32",
+        requires = "formula"
+    )]
     pub precision: Option<PrecisionChoice>,
     /// How --formula and --fpcore inputs are drawn: `floats` uniform over the doubles of every
     /// range (as Herbie samples), `reals` uniform on the reals (every range bounded). Default:

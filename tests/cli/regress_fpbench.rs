@@ -203,7 +203,10 @@ fn binary32_benchmarks_measure_binary32_ulps() {
         .expect("the binary runs");
     let text = String::from_utf8_lossy(&o.stdout);
     assert!(text.contains("x_by_xy [binary32]"), "{text}");
-    assert!(text.contains("in binary32: errors in binary32 ulps"), "{text}");
+    assert!(
+        text.contains("in binary32: errors in binary32 ulps"),
+        "{text}"
+    );
 }
 
 #[test]
@@ -211,9 +214,20 @@ fn sine_newton_says_why_no_sample_was_compared() {
     // Ten Newton steps on sin's Taylor polynomial converge to 0 cubically: the exact iterate
     // ends at about 2^-34000 from 0.5 (the exponent triples every step), and each step cancels
     // about twice its bits, far beyond the precision cap.
-    let path = format!("{}/tests/regress/fpbench/rosa.fpcore", env!("CARGO_MANIFEST_DIR"));
+    let path = format!(
+        "{}/tests/regress/fpbench/rosa.fpcore",
+        env!("CARGO_MANIFEST_DIR")
+    );
     let o = Command::new(env!("CARGO_BIN_EXE_exactcheck"))
-        .args(["regress", "--fpcore", &path, "--name", "Sine Newton", "--samples", "3"])
+        .args([
+            "regress",
+            "--fpcore",
+            &path,
+            "--name",
+            "Sine Newton",
+            "--samples",
+            "3",
+        ])
         .arg("--quiet")
         .output()
         .expect("the binary runs");

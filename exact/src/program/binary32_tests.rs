@@ -29,7 +29,10 @@ fn the_float_side_rounds_every_operation_and_literal_to_binary32() {
     // A literal is the binary32 value nearest to it.
     assert_eq!(prog32("x * 0.1").eval_f64(&[1.0]), vec![f64::from(0.1f32)]);
     // sqrt and the library functions are the f32 ones.
-    assert_eq!(prog32("sqrt(x)").eval_f64(&[2.0]), vec![f64::from(2.0f32.sqrt())]);
+    assert_eq!(
+        prog32("sqrt(x)").eval_f64(&[2.0]),
+        vec![f64::from(2.0f32.sqrt())]
+    );
     let mut sin = p.clone();
     sin.outputs = vec![Node::Fun(Func::Sin, vec![Node::Input(0)])];
     assert_eq!(sin.eval_f64(&[0.5, 0.0]), vec![f64::from(0.5f32.sin())]);
@@ -48,7 +51,10 @@ fn the_reference_decides_the_binary32_rounding_not_the_double_one() {
         let x = &(&m * &m) + &dyadic(d, -100);
         let r = p.eval_exact(&[x]).unwrap().remove(0);
         assert!(!r.exact);
-        assert_eq!(crate::to_f64::rational_to_f64(&r.value), 1.0 + f64::powi(2.0, -24));
+        assert_eq!(
+            crate::to_f64::rational_to_f64(&r.value),
+            1.0 + f64::powi(2.0, -24)
+        );
         assert_eq!(rational_to_f32(&r.value), want, "d = {d}");
     }
     // Exactly at the tie: a rational, exact, rounded to even.

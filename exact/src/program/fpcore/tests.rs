@@ -67,11 +67,23 @@ fn spec_examples_parse_and_are_classified() {
     let expected: Vec<(&str, Result<(), String>)> = vec![
         ("NMSE example 3.1", Ok(())),
         ("round with addition", Ok(())),
-        ("rounding: lexical scoping", ns("mixed precisions (binary32 inside a binary64 benchmark)")),
-        ("cast 1", ns("mixed precisions (binary32 inside a binary64 benchmark)")),
+        (
+            "rounding: lexical scoping",
+            ns("mixed precisions (binary32 inside a binary64 benchmark)"),
+        ),
+        (
+            "cast 1",
+            ns("mixed precisions (binary32 inside a binary64 benchmark)"),
+        ),
         ("cast 2", Ok(())),
-        ("cast 3", ns("mixed precisions (binary32 inside a binary64 benchmark)")),
-        ("cast 4", ns("mixed precisions (binary32 inside a binary64 benchmark)")),
+        (
+            "cast 3",
+            ns("mixed precisions (binary32 inside a binary64 benchmark)"),
+        ),
+        (
+            "cast 4",
+            ns("mixed precisions (binary32 inside a binary64 benchmark)"),
+        ),
         ("foo", Ok(())),
         ("inherit 1", ns("round toZero")),
         ("inherit 2", ns("round toPositive")),
