@@ -12,7 +12,7 @@
 //! the final quotient is rounded, so a measured error of `0.5` ulp really is half an ulp.
 
 pub use exactcheck_exact::to_f64::{pow2, rational_to_f64};
-use exactcheck_exact::to_f64::{FRACTION_BITS, MIN_EXP};
+use exactcheck_exact::to_f64::{Format, FRACTION_BITS, MIN_EXP};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
@@ -167,13 +167,21 @@ pub fn ulps_error(approx: f64, exact: &BigRational) -> f64 {
 /// [`ulps_error`] given `rounded = rational_to_f64(exact)` (the harness needs the rounded value
 /// for Herbie's bits too, and rounds once).
 pub(crate) fn ulps_error_rounded(approx: f64, exact: &BigRational, rounded: f64) -> f64 {
+    ulps_error_in(Format::Binary64, approx, exact, rounded)
+}
+
+/// [`ulps_error`] in the units of `format`: `|approx - exact| / ulp(rounded)` with `rounded`
+/// the value of `format` nearest to `exact` ([`Format::round`]) and the format's ulp (of its
+/// largest finite value where `rounded` overflows). For binary32, `approx` is any double (a
+/// binary32 result is one).
+pub fn ulps_error_in(format: Format, approx: f64, exact: &BigRational, rounded: f64) -> f64 {
     let Some((an, ad)) = dyadic_parts(approx) else {
         return f64::INFINITY;
     };
     let unit = if rounded.is_finite() {
-        ulp(rounded)
+        format.ulp(rounded)
     } else {
-        ulp(f64::MAX)
+        format.ulp(format.max())
     };
     // `unit` is a power of two `un / ud` with one of them 1.
     let Some((un, ud)) = dyadic_parts(unit) else {

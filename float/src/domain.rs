@@ -17,6 +17,13 @@
 //! uniform over the doubles of their ranges, bounded ones too (as Herbie samples every input),
 //! or all uniform on the reals (every range then needs both bounds).
 //!
+//! # Binary32
+//! [`Domain::with_format`] with [`Format::Binary32`] samples binary32 values (held exactly by the
+//! doubles returned): the ranges are those of the binary32 values inside the bounds (an
+//! unbounded side stops at `±f32::MAX`), "uniform over the doubles" becomes uniform over the
+//! binary32 values (their ordinal indices), and a uniform draw on the reals is rounded to the
+//! nearest binary32 value (which stays in the range: its ends are binary32 values).
+//!
 //! # Exact bounds
 //! Bounds are rationals. The sampled range of a coordinate is from the smallest double that
 //! satisfies the lower bound (rounding `1/3` up; for an open bound, strictly above it) to the
@@ -26,6 +33,7 @@
 use crate::convert::f64_to_rational;
 use crate::gen::{GenError, InputGen};
 use exactcheck_core::Rng;
+use exactcheck_exact::to_f64::Format;
 use exactcheck_exact::Rational;
 
 pub use exactcheck_exact::program::fpcore::{Bound, Interval};
@@ -51,41 +59,89 @@ fn from_ordinal(k: i64) -> f64 {
     }
 }
 
+/// The ordinal index of a value of `format` ([`ordinal`] for doubles; binary32 values numbered
+/// among themselves).
+fn ordinal_in(format: Format, x: f64) -> i64 {
+    match format {
+        Format::Binary64 => ordinal(x),
+        Format::Binary32 => {
+            let bits = i64::from((x.abs() as f32).to_bits());
+            if x.is_sign_negative() {
+                -bits
+            } else {
+                bits
+            }
+        }
+    }
+}
+
+/// The value of `format` of ordinal index `k` (the inverse of [`ordinal_in`]).
+fn from_ordinal_in(format: Format, k: i64) -> f64 {
+    match format {
+        Format::Binary64 => from_ordinal(k),
+        Format::Binary32 => {
+            let mag = f64::from(f32::from_bits(
+                u32::try_from(k.unsigned_abs()).unwrap_or(u32::MAX),
+            ));
+            if k < 0 {
+                -mag
+            } else {
+                mag
+            }
+        }
+    }
+}
+
 fn exact(x: f64) -> Rational {
     Rational::from(f64_to_rational(x).expect("a finite double"))
 }
 
-/// The smallest finite double satisfying the lower bound `b` (`-f64::MAX` when unbounded), or
-/// `None` when no finite double does.
-fn lowest_double(b: &Bound) -> Option<f64> {
+/// The smallest finite value of `format` satisfying the lower bound `b` (`-max` when
+/// unbounded), or `None` when no finite value does.
+fn lowest_value(b: &Bound, format: Format) -> Option<f64> {
     let (q, strict) = match b {
-        Bound::Unbounded => return Some(-f64::MAX),
+        Bound::Unbounded => return Some(-format.max()),
         Bound::Closed(q) => (q, false),
         Bound::Open(q) => (q, true),
     };
-    let d = q.to_f64();
+    let d = match format {
+        Format::Binary64 => q.to_f64(),
+        Format::Binary32 => format.round(&q.to_big_rational()),
+    };
     let d = if d == f64::INFINITY {
         return None;
     } else if d == f64::NEG_INFINITY {
-        -f64::MAX
+        -format.max()
     } else {
         d
     };
     let e = exact(d);
     let ok = if strict { &e > q } else { &e >= q };
-    let d = if ok { d } else { from_ordinal(ordinal(d) + 1) };
+    let d = if ok {
+        d
+    } else {
+        from_ordinal_in(format, ordinal_in(format, d) + 1)
+    };
     d.is_finite().then_some(d)
 }
 
-/// The largest finite double satisfying the upper bound `b` (`f64::MAX` when unbounded), or
-/// `None` when no finite double does.
-fn highest_double(b: &Bound) -> Option<f64> {
+/// The largest finite value of `format` satisfying the upper bound `b` (`max` when
+/// unbounded), or `None` when no finite value does.
+fn highest_value(b: &Bound, format: Format) -> Option<f64> {
     let neg = |b: &Bound| match b {
         Bound::Unbounded => Bound::Unbounded,
         Bound::Closed(q) => Bound::Closed(-q.clone()),
         Bound::Open(q) => Bound::Open(-q.clone()),
     };
-    lowest_double(&neg(b)).map(|d| -d)
+    lowest_value(&neg(b), format).map(|d| -d)
+}
+
+/// What the values of `format` are called in messages and descriptions.
+fn values_word(format: Format) -> &'static str {
+    match format {
+        Format::Binary64 => "doubles",
+        Format::Binary32 => "binary32 values",
+    }
 }
 
 /// Which distribution the coordinates are drawn from (see the module doc).
@@ -115,6 +171,7 @@ pub struct Domain {
     intervals: Vec<Interval>,
     draws: Vec<Draw>,
     names: Vec<String>,
+    format: Format,
 }
 
 impl Domain {
@@ -135,6 +192,23 @@ impl Domain {
     /// When the number of names is not the number of intervals, or when an interval contains
     /// no finite double, naming the input.
     pub fn named(intervals: Vec<Interval>, names: &[String]) -> Result<Domain, GenError> {
+        Domain::named_in(intervals, names, Format::Binary64)
+    }
+
+    /// The same domain sampling the values of `format` (see the module doc; draw rules are
+    /// reset to [`Sampling::Mixed`]: apply [`Domain::with_sampling`] after this).
+    ///
+    /// # Errors
+    /// When an interval contains no finite value of `format`, naming the input.
+    pub fn with_format(self, format: Format) -> Result<Domain, GenError> {
+        Domain::named_in(self.intervals, &self.names, format)
+    }
+
+    fn named_in(
+        intervals: Vec<Interval>,
+        names: &[String],
+        format: Format,
+    ) -> Result<Domain, GenError> {
         if names.len() != intervals.len() {
             return Err(GenError(format!(
                 "{} names for a domain of {} inputs",
@@ -147,13 +221,17 @@ impl Domain {
         for (i, iv) in intervals.iter().enumerate() {
             let empty = || {
                 GenError(format!(
-                    "input {i} ({}) has no finite double in {}",
+                    "input {i} ({}) has no finite {} in {}",
                     names[i],
+                    match format {
+                        Format::Binary64 => "double",
+                        Format::Binary32 => "binary32 value",
+                    },
                     show_interval(iv)
                 ))
             };
-            let lo = lowest_double(&iv.lo).ok_or_else(empty)?;
-            let hi = highest_double(&iv.hi).ok_or_else(empty)?;
+            let lo = lowest_value(&iv.lo, format).ok_or_else(empty)?;
+            let hi = highest_value(&iv.hi, format).ok_or_else(empty)?;
             if ordinal(lo) > ordinal(hi) {
                 return Err(empty());
             }
@@ -162,8 +240,8 @@ impl Domain {
                 Draw::Uniform { lo, hi }
             } else {
                 Draw::Ordinal {
-                    lo: ordinal(lo),
-                    hi: ordinal(hi),
+                    lo: ordinal_in(format, lo),
+                    hi: ordinal_in(format, hi),
                 }
             });
         }
@@ -171,6 +249,7 @@ impl Domain {
             intervals,
             draws,
             names,
+            format,
         })
     }
 
@@ -196,25 +275,29 @@ impl Domain {
     /// # Errors
     /// [`Sampling::Reals`] with a range that lacks a bound, naming the input.
     pub fn with_sampling(mut self, sampling: Sampling) -> Result<Domain, GenError> {
+        let format = self.format;
         for (i, (iv, draw)) in self.intervals.iter().zip(&mut self.draws).enumerate() {
             let bounded = iv.lo != Bound::Unbounded && iv.hi != Bound::Unbounded;
             let (lo, hi) = match *draw {
                 Draw::Uniform { lo, hi } => (lo, hi),
-                Draw::Ordinal { lo, hi } => (from_ordinal(lo), from_ordinal(hi)),
+                Draw::Ordinal { lo, hi } => {
+                    (from_ordinal_in(format, lo), from_ordinal_in(format, hi))
+                }
             };
             *draw = match sampling {
                 Sampling::Mixed if bounded => Draw::Uniform { lo, hi },
                 Sampling::Reals if bounded => Draw::Uniform { lo, hi },
                 Sampling::Reals => {
                     return Err(GenError(format!(
-                        "input {i} ({}) in {} has no uniform distribution on the reals: give both bounds, or sample the doubles",
+                        "input {i} ({}) in {} has no uniform distribution on the reals: give both bounds, or sample the {}",
                         self.names[i],
-                        show_interval(iv)
+                        show_interval(iv),
+                        values_word(format)
                     )))
                 }
                 Sampling::Mixed | Sampling::Floats => Draw::Ordinal {
-                    lo: ordinal(lo),
-                    hi: ordinal(hi),
+                    lo: ordinal_in(format, lo),
+                    hi: ordinal_in(format, hi),
                 },
             };
         }
@@ -233,38 +316,49 @@ impl InputGen for Domain {
     }
 
     fn sample(&self, rng: &mut Rng) -> Vec<f64> {
+        let format = self.format;
         self.draws
             .iter()
             .map(|d| match *d {
-                Draw::Uniform { lo, hi } => rng.uniform(lo, hi),
+                Draw::Uniform { lo, hi } => match format {
+                    Format::Binary64 => rng.uniform(lo, hi),
+                    Format::Binary32 => f64::from(rng.uniform(lo, hi) as f32),
+                },
                 Draw::Ordinal { lo, hi } => {
                     // At most 2 * 0x7FEF_FFFF_FFFF_FFFF + 1 < 2^64 values.
                     let n = hi.abs_diff(lo) + 1;
                     let k = lo.wrapping_add(rng.below(n) as i64);
-                    from_ordinal(k)
+                    from_ordinal_in(format, k)
                 }
             })
             .collect()
     }
 
     fn contains(&self, x: &[f64]) -> bool {
+        let format = self.format;
         x.len() == self.draws.len()
-            && x.iter().zip(&self.draws).all(|(&v, d)| match *d {
-                Draw::Uniform { lo, hi } => lo <= v && v <= hi,
-                Draw::Ordinal { lo, hi } => v.is_finite() && (lo..=hi).contains(&ordinal(v)),
+            && x.iter().zip(&self.draws).all(|(&v, d)| {
+                format.holds(v)
+                    && match *d {
+                        Draw::Uniform { lo, hi } => lo <= v && v <= hi,
+                        Draw::Ordinal { lo, hi } => {
+                            v.is_finite() && (lo..=hi).contains(&ordinal_in(format, v))
+                        }
+                    }
             })
     }
 
     fn describe(&self) -> String {
+        let word = values_word(self.format);
         let parts: Vec<String> = self
             .intervals
             .iter()
             .zip(&self.names)
             .zip(&self.draws)
             .map(|((iv, name), draw)| match (&iv.lo, &iv.hi) {
-                (Bound::Unbounded, Bound::Unbounded) => format!("{name} in all finite doubles"),
+                (Bound::Unbounded, Bound::Unbounded) => format!("{name} in all finite {word}"),
                 (lo, Bound::Unbounded) => format!(
-                    "{name} in doubles {} {}",
+                    "{name} in {word} {} {}",
                     if matches!(lo, Bound::Open(_)) {
                         ">"
                     } else {
@@ -273,7 +367,7 @@ impl InputGen for Domain {
                     show_value(lo.value().expect("bounded"))
                 ),
                 (Bound::Unbounded, hi) => format!(
-                    "{name} in doubles {} {}",
+                    "{name} in {word} {} {}",
                     if matches!(hi, Bound::Open(_)) {
                         "<"
                     } else {
@@ -282,9 +376,15 @@ impl InputGen for Domain {
                     show_value(hi.value().expect("bounded"))
                 ),
                 _ => match draw {
-                    Draw::Uniform { .. } => format!("{name} in {} (uniform)", show_interval(iv)),
+                    Draw::Uniform { .. } => match self.format {
+                        Format::Binary64 => format!("{name} in {} (uniform)", show_interval(iv)),
+                        Format::Binary32 => format!(
+                            "{name} in {} (uniform, rounded to binary32)",
+                            show_interval(iv)
+                        ),
+                    },
                     Draw::Ordinal { .. } => {
-                        format!("{name} in {} (uniform over the doubles)", show_interval(iv))
+                        format!("{name} in {} (uniform over the {word})", show_interval(iv))
                     }
                 },
             })
@@ -514,6 +614,102 @@ mod tests {
 
     fn names(v: &[&str]) -> Vec<String> {
         v.iter().map(|s| s.to_string()).collect()
+    }
+
+    fn lowest_double(b: &Bound) -> Option<f64> {
+        lowest_value(b, Format::Binary64)
+    }
+
+    fn highest_double(b: &Bound) -> Option<f64> {
+        highest_value(b, Format::Binary64)
+    }
+
+    #[test]
+    fn binary32_domains_sample_binary32_values_inside_the_bounds() {
+        let names = names(&["x", "y"]);
+        let d = Domain::named(
+            vec![iv(Bound::Open(q(1, 3)), cl(2)), iv(cl(0), Bound::Unbounded)],
+            &names,
+        )
+        .and_then(|d| d.with_format(Format::Binary32))
+        .expect("non-empty");
+        // 1/3 is excluded: the lowest binary32 value above it.
+        let third = f64::from(1.0f32 / 3.0);
+        let lo = if third > 1.0 / 3.0 {
+            third
+        } else {
+            f64::from((1.0f32 / 3.0).next_up())
+        };
+        assert_eq!(d.draws[0], Draw::Uniform { lo, hi: 2.0 });
+        assert_eq!(
+            d.draws[1],
+            Draw::Ordinal {
+                lo: 0,
+                hi: i64::from(f32::MAX.to_bits())
+            }
+        );
+        for sampling in [Sampling::Mixed, Sampling::Floats] {
+            let d = d.clone().with_sampling(sampling).expect("valid");
+            let mut rng = Rng::new(3);
+            for _ in 0..2000 {
+                let s = d.sample(&mut rng);
+                assert!(d.contains(&s), "{s:?}");
+                for &v in &s {
+                    assert_eq!(f64::from(v as f32), v);
+                }
+                assert!(lo <= s[0] && s[0] <= 2.0 && s[1] >= 0.0);
+            }
+        }
+        // A double that is not a binary32 value is outside; so is a range without one.
+        assert!(!d.contains(&[0.1, 1.0]));
+        assert!(d.contains(&[f64::from(0.5f32), 1.0]));
+        let empty = Domain::named(
+            vec![iv(
+                cl(1),
+                Bound::Closed(
+                    q(1, 1)
+                        + Rational::from(num_rational::BigRational::new(
+                            1.into(),
+                            (1u64 << 40).into(),
+                        )),
+                ),
+            )],
+            &names[..1],
+        )
+        .and_then(|d| d.with_format(Format::Binary32));
+        assert!(empty.is_ok(), "1 itself is a binary32 value");
+        let none = Domain::named(
+            vec![iv(
+                Bound::Open(q(1, 1)),
+                Bound::Open(
+                    q(1, 1)
+                        + Rational::from(num_rational::BigRational::new(
+                            1.into(),
+                            (1u64 << 40).into(),
+                        )),
+                ),
+            )],
+            &names[..1],
+        )
+        .and_then(|d| d.with_format(Format::Binary32));
+        assert_eq!(
+            none.map(|_| ()).unwrap_err().0,
+            "input 0 (x) has no finite binary32 value in (1, 1.0000000000009095)"
+        );
+        // Uniform over the binary32 values: each binade of [1, 2^20] equally likely.
+        let d = Domain::named(vec![iv(cl(1), cl(1 << 20))], &names[..1])
+            .and_then(|d| d.with_format(Format::Binary32))
+            .and_then(|d| d.with_sampling(Sampling::Floats))
+            .expect("valid");
+        let mut rng = Rng::new(5);
+        let below = (0..10_000)
+            .filter(|_| d.sample(&mut rng)[0] < 1024.0)
+            .count();
+        assert!((below as f64 / 10_000.0 - 0.5).abs() < 0.03, "{below}");
+        assert_eq!(
+            d.describe(),
+            "x in [1, 1.048576e6] (uniform over the binary32 values)"
+        );
     }
 
     fn iv(lo: Bound, hi: Bound) -> Interval {

@@ -22,10 +22,11 @@ pub struct Case {
     pub inputs: Vec<f64>,
     /// The same inputs as exact rationals, `n` or `n/d`.
     pub inputs_exact: Vec<String>,
-    /// The exact outputs, `n` or `n/d`; an irrational value refined to a rational
-    /// approximation reads `~` and 25 significant digits (truncated).
+    /// The exact outputs, `n` or `n/d`; a value known only as an enclosure (not exact) refined
+    /// to a rational approximation reads `~` and 25 significant digits (truncated).
     pub exact_outputs: Vec<String>,
-    /// The exact outputs rounded to the nearest doubles.
+    /// The exact outputs rounded to the nearest values of the report's precision (doubles, or
+    /// binary32 values).
     #[serde(with = "measures")]
     pub exact_outputs_f64: Vec<f64>,
     /// The float outputs; `None` when the float evaluation reported a zero divisor.
@@ -257,6 +258,10 @@ pub struct Report {
     pub float_side: String,
     /// The generator's description.
     pub generator: String,
+    /// The format the float side computes in and the errors are measured in: `binary64` or
+    /// `binary32` (ulps and Herbie's bits of that format).
+    #[serde(default = "binary64")]
+    pub precision: String,
     /// The number of inputs.
     pub arity: usize,
     /// The number of samples of the whole sweep.
@@ -287,7 +292,9 @@ pub struct Report {
     /// The limit that stopped them, `NAME = VALUE` (`loop-iterations = 10000`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub limit_stop: Option<String>,
-    /// Compared samples whose exact value was refined (an irrational root) rather than exact.
+    /// Compared samples whose reference is not exact: an enclosure of the true value (behind an
+    /// irrational root, a function or a loop carried as an enclosure), refined until its
+    /// rounding is decided.
     pub refined: usize,
     /// Compared samples where the float side failed (infinite error).
     pub float_failures: usize,
@@ -508,9 +515,31 @@ impl fmt::Display for WorstCase {
     }
 }
 
+impl Report {
+    /// The number of samples this report covers (its shard's, or the whole sweep's).
+    fn covered(&self) -> usize {
+        self.end_sample.saturating_sub(self.first_sample)
+    }
+}
+
+/// The precision of a report read without one: every report before binary32 was binary64.
+fn binary64() -> String {
+    "binary64".into()
+}
+
 impl fmt::Display for Report {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        writeln!(f, "regress `{}` ({} inputs)", self.formula, self.arity)?;
+        if self.precision == "binary64" {
+            writeln!(f, "regress `{}` ({} inputs)", self.formula, self.arity)?;
+        } else {
+            // Only a precision other than the default is named, on the title line, and the
+            // measures below are in its units.
+            writeln!(
+                f,
+                "regress `{}` ({} inputs, in {}: errors in {} ulps and bits)",
+                self.formula, self.arity, self.precision, self.precision
+            )?;
+        }
         writeln!(f, "  inputs: {}", self.generator)?;
         let covered = match self.shard {
             Some(s) => format!(
@@ -543,11 +572,20 @@ impl fmt::Display for Report {
         if self.refined > 0 {
             writeln!(
                 f,
-                "  {} compared samples have an irrational exact value, refined beyond double precision",
+                "  {} compared samples have a reference that is not exact: an enclosure of the true value, refined until its rounding is decided",
                 self.refined
             )?;
         }
-        if self.compared == 0 {
+        if self.compared == 0 && self.undecided > 0 && self.undecided == self.covered() {
+            // Say why: the exact side gave up on every sample at its precision cap (or size
+            // limit), never a guess.
+            writeln!(
+                f,
+                "  no sample was compared: the exact side left every sample undecided, no sign or rounding decided within its precision cap of {} bits (the exact value cancels more bits than that, or may be exactly zero) or an exact intermediate beyond the limit {}",
+                exactcheck_exact::program::MAX_PRECISION,
+                exactcheck_core::limits::CONSTANT_BITS.name()
+            )?;
+        } else if self.compared == 0 {
             // No measure is an error of 0: say that nothing was measured.
             writeln!(f, "  no sample was compared: no error was measured")?;
         } else {

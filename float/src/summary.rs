@@ -21,6 +21,7 @@
 //! Herbie's "bits of error" ([`herbie_bits`]) is averaged with an exact fixed-point accumulator
 //! ([`BitsSum`]) for the same reason: a sum of `f64`s depends on the order of addition.
 
+use exactcheck_exact::to_f64::Format;
 use std::collections::BTreeMap;
 
 /// Distinct values kept exactly before a [`Distribution`] collapses to buckets.
@@ -246,6 +247,22 @@ pub fn herbie_bits(approx: f64, rounded_exact: f64) -> f64 {
     match (ordinal(approx), ordinal(rounded_exact)) {
         (Some(a), Some(b)) => ((a as i128 - b as i128).unsigned_abs() as f64 + 1.0).log2(),
         _ => 64.0,
+    }
+}
+
+/// [`herbie_bits`] over the values of `format`: `log2(1 + n)` with `n` the number of values of
+/// the format between `approx` and `rounded_exact` (both values of it); the format's width (64
+/// or 32) for a NaN on either side.
+pub fn herbie_bits_in(format: Format, approx: f64, rounded_exact: f64) -> f64 {
+    match format {
+        Format::Binary64 => herbie_bits(approx, rounded_exact),
+        Format::Binary32 => {
+            if approx.is_nan() || rounded_exact.is_nan() {
+                return 32.0;
+            }
+            let d = (format.ordinal(approx) - format.ordinal(rounded_exact)).unsigned_abs();
+            (d as f64 + 1.0).log2()
+        }
     }
 }
 

@@ -9,7 +9,7 @@
 use crate::Error;
 use exactcheck_exact::program::{Conditioning, ExactStop, Program};
 use exactcheck_exact::Rational;
-use exactcheck_float::summary::herbie_bits;
+use exactcheck_float::summary::herbie_bits_in;
 use exactcheck_float::{Case, Explanation, Observed, OperationError, Report};
 use serde_json::{json, Value};
 use std::collections::BTreeMap;
@@ -38,7 +38,7 @@ pub fn explain(program: &Program, case: &Case, external: bool) -> Option<Explana
         .as_ref()
         .and_then(|f| f.get(output))
         .zip(case.exact_outputs_f64.get(output))
-        .map_or(64.0, |(&f, &e)| herbie_bits(f, e));
+        .map_or(64.0, |(&f, &e)| herbie_bits_in(program.precision, f, e));
     let (operations, operations_note) = if external {
         (
             Vec::new(),
@@ -52,7 +52,7 @@ pub fn explain(program: &Program, case: &Case, external: bool) -> Option<Explana
                     .map(|o| OperationError {
                         operation: o.operation.to_string(),
                         at: o.at,
-                        bits: herbie_bits(o.float, o.exact),
+                        bits: herbie_bits_in(program.precision, o.float, o.exact),
                     })
                     .filter(|o| o.bits > Explanation::DOMINANT_BITS)
                     .collect();

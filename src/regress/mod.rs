@@ -78,6 +78,17 @@ pub struct RegressArgs {
     /// finite: uniform on the reals; a missing or infinite bound: uniform over the doubles.
     #[arg(long, requires = "formula")]
     pub domain: Option<String>,
+    /// The format the --formula float side computes in: `binary64` (f64, the default) or
+    /// `binary32` (every operation, literal and library call in f32; inputs sampled among the
+    /// binary32 values; errors in binary32 ulps). An FPCore benchmark's own `:precision` decides
+    /// for --fpcore.
+    #[arg(
+        long,
+        value_enum,
+        value_name = "binary64|binary32",
+        requires = "formula"
+    )]
+    pub precision: Option<PrecisionChoice>,
     /// How --formula and --fpcore inputs are drawn: `floats` uniform over the doubles of every
     /// range (as Herbie samples), `reals` uniform on the reals (every range bounded). Default:
     /// uniform on the reals where both bounds are finite, over the doubles otherwise.
@@ -170,6 +181,25 @@ impl SampleChoice {
         match self {
             SampleChoice::Reals => exactcheck_float::Sampling::Reals,
             SampleChoice::Floats => exactcheck_float::Sampling::Floats,
+        }
+    }
+}
+
+/// `--precision`: the format of the --formula float side.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum PrecisionChoice {
+    /// IEEE binary64 (`f64`).
+    Binary64,
+    /// IEEE binary32 (`f32`).
+    Binary32,
+}
+
+impl PrecisionChoice {
+    /// The program's format.
+    pub fn format(self) -> exactcheck_exact::program::Format {
+        match self {
+            PrecisionChoice::Binary64 => exactcheck_exact::program::Format::Binary64,
+            PrecisionChoice::Binary32 => exactcheck_exact::program::Format::Binary32,
         }
     }
 }

@@ -154,7 +154,13 @@ pub fn table(entries: &[Entry]) -> String {
                 "no sample compared".into(),
             ]),
             Ok(r) => rows.push([
-                e.name.clone(),
+                // A precision other than binary64 is named with the entry: its ulps and bits
+                // are that format's.
+                if r.precision == "binary64" {
+                    e.name.clone()
+                } else {
+                    format!("{} [{}]", e.name, r.precision)
+                },
                 (r.end_sample - r.first_sample).to_string(),
                 r.compared.to_string(),
                 super::planes::cell(r.max_ulps),

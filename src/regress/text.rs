@@ -12,7 +12,7 @@ use super::sweep::Entry;
 use super::RegressArgs;
 use crate::Error;
 use exactcheck_exact::program::fpcore;
-use exactcheck_exact::program::{ExactStop, Program};
+use exactcheck_exact::program::{ExactStop, Format, Program};
 use exactcheck_exact::Rational;
 use exactcheck_float::domain::{parse_domain, Domain, Sampling};
 use exactcheck_float::program::ProgramRunner;
@@ -83,6 +83,10 @@ impl Subject for TextSubject<'_> {
         }
     }
     fn exact(&self, x: &[f64]) -> Result<Vec<ExactValue>, CaseError> {
+        // Both sides must take the same inputs: a binary32 float side takes binary32 values.
+        if !x.iter().all(|&v| self.program.precision.holds(v)) {
+            return Err(CaseError::InvalidInputs);
+        }
         let exact_in: Vec<Rational> = x
             .iter()
             .map(|&v| Rational::from_f64_exact(v))
@@ -119,6 +123,9 @@ impl Subject for TextSubject<'_> {
                 .map(Some)
                 .map_err(|e| FloatSideError(e.to_string())),
         }
+    }
+    fn format(&self) -> Format {
+        self.program.precision
     }
     fn finish(&self) -> Result<(), FloatSideError> {
         match &self.runner {
@@ -179,6 +186,11 @@ fn sweep_entry(
     }
     match &args.near {
         None => sweep_on(args, program, gen, line),
+        Some(_) if program.precision != Format::Binary64 => Err(Error::Usage(format!(
+            "--near moves samples by double ulps: not available for {}, a {} program",
+            program.name,
+            program.precision.name()
+        ))),
         Some(eq) => {
             let near = super::near::generator(eq, &program.inputs, gen, args.seed)?;
             sweep_on(args, program, &near, line)
@@ -309,8 +321,11 @@ fn check_outputs(args: &RegressArgs, benchmarks: usize) -> Result<(), Error> {
 /// # Errors
 /// The formula or the domain does not parse, or the sweep fails (an external program).
 pub fn formula_entries(args: &RegressArgs, texts: &[String]) -> Result<Vec<Entry>, Error> {
-    let program = Program::parse_outputs(texts, args.vars.as_deref())
+    let mut program = Program::parse_outputs(texts, args.vars.as_deref())
         .map_err(|e| Error::Input(format!("--formula: {e}")))?;
+    if let Some(p) = args.precision {
+        program.precision = p.format();
+    }
     check_outputs(args, 1)?;
     if let Some(b) = &args.bin {
         explain::Bins::new(b, &program)?;
@@ -319,6 +334,7 @@ pub fn formula_entries(args: &RegressArgs, texts: &[String]) -> Result<Vec<Entry
     let domain = parse_domain(args.domain.as_deref().unwrap_or(""), &program.inputs)
         .map_err(|e| Error::Input(format!("--domain: {e}")))?;
     let gen = Domain::named(domain, &program.inputs)
+        .and_then(|d| d.with_format(program.precision))
         .and_then(|d| d.with_sampling(sampling(args)))
         .map_err(|e| Error::Input(format!("--domain: {e}")))?;
     Ok(vec![sweep_entry(args, &program, &gen, None)?])
@@ -382,6 +398,7 @@ pub fn fpcore_entries(args: &RegressArgs, path: &str) -> Result<Vec<Entry>, Erro
                 let mut program = program.clone();
                 program.name = name.clone();
                 match Domain::named(b.domain.clone(), &b.args)
+                    .and_then(|d| d.with_format(program.precision))
                     .and_then(|d| d.with_sampling(sampling(args)))
                 {
                     Err(e) => Entry {

@@ -327,10 +327,17 @@ pub fn saved_summary(entry: &crate::regress::sweep::Entry, file: &str) -> Summar
         .collect();
     Summary {
         kernel: entry.name.clone(),
-        title: format!(
-            "saved run: {} against the exact value ({}, seed {})",
-            r.float_side, r.generator, r.seed
-        ),
+        title: if r.precision == "binary64" {
+            format!(
+                "saved run: {} against the exact value ({}, seed {})",
+                r.float_side, r.generator, r.seed
+            )
+        } else {
+            format!(
+                "saved run: {} in {} against the exact value ({}, seed {}; errors in {} ulps)",
+                r.float_side, r.precision, r.generator, r.seed, r.precision
+            )
+        },
         command,
         seconds: 0.0,
         tables: vec![

@@ -21,53 +21,15 @@ const FILES: &[&str] = &[
     "salsa.fpcore",
 ];
 
-/// The refused benchmarks (file, name) and why: binary32 and integer precision. Every benchmark
-/// with an elementary function (`exp`, `log`, `sin`, `pow`, `atan2`, ...) or a loop runs.
+/// The refused benchmarks (file, name) and why: precisions mixed inside one benchmark (binary64
+/// into binary32, binary32 and binary80 into binary64) and integer precision. Every benchmark of
+/// one precision, binary64 or binary32, with an elementary function (`exp`, `log`, `sin`, `pow`,
+/// `atan2`, ...) or a loop runs.
 const REFUSED: &[(&str, &str, &str)] = &[
     (
         "fptaylor-extra.fpcore",
         "intro-example-mixed",
-        "not supported: precision binary32",
-    ),
-    (
-        "fptaylor-extra.fpcore",
-        "exp1x_32",
-        "not supported: precision binary32",
-    ),
-    (
-        "fptaylor-extra.fpcore",
-        "x_by_xy",
-        "not supported: precision binary32",
-    ),
-    (
-        "fptaylor-extra.fpcore",
-        "hypot32",
-        "not supported: precision binary32",
-    ),
-    (
-        "fptaylor-extra.fpcore",
-        "i4",
-        "not supported: precision binary32",
-    ),
-    (
-        "fptaylor-extra.fpcore",
-        "i6",
-        "not supported: precision binary32",
-    ),
-    (
-        "fptaylor-tests.fpcore",
-        "test01_sum3",
-        "not supported: precision binary32",
-    ),
-    (
-        "fptaylor-tests.fpcore",
-        "test06_sums4, sum1",
-        "not supported: precision binary32",
-    ),
-    (
-        "fptaylor-tests.fpcore",
-        "test06_sums4, sum2",
-        "not supported: precision binary32",
+        "not supported: mixed precisions (binary64 inside a binary32 benchmark)",
     ),
     (
         "precimonious.fpcore",
@@ -77,47 +39,7 @@ const REFUSED: &[(&str, &str, &str)] = &[
     (
         "precimonious.fpcore",
         "arclength of a wiggly function (old version)",
-        "not supported: precision binary32",
-    ),
-    (
-        "salsa.fpcore",
-        "Odometry",
-        "not supported: precision binary32",
-    ),
-    (
-        "salsa.fpcore",
-        "Runge-Kutta 4",
-        "not supported: precision binary32",
-    ),
-    (
-        "salsa.fpcore",
-        "Lead-lag System",
-        "not supported: precision binary32",
-    ),
-    (
-        "salsa.fpcore",
-        "Rocket Trajectory",
-        "not supported: precision binary32",
-    ),
-    (
-        "salsa.fpcore",
-        "Jacobi's Method",
-        "not supported: precision binary32",
-    ),
-    (
-        "salsa.fpcore",
-        "Newton-Raphson's Method",
-        "not supported: precision binary32",
-    ),
-    (
-        "salsa.fpcore",
-        "Eigenvalue Computation",
-        "not supported: precision binary32",
-    ),
-    (
-        "salsa.fpcore",
-        "Iterative Gram-Schmidt Method",
-        "not supported: precision binary32",
+        "not supported: mixed precisions (binary32 inside a binary64 benchmark)",
     ),
 ];
 
@@ -129,6 +51,12 @@ const NOTHING_COMPARED: &[(&str, &str, &str)] = &[
     ("apron.fpcore", "Filter", "limit_stops"),
     ("apron.fpcore", "Circle", "limit_stops"),
     ("rosa.fpcore", "Sine Newton", "undecided"),
+    // binary32 benchmarks without a `:pre` sampled over all binary32 values: their loops run
+    // past the limit, their exact values are undecided, or the samples leave the domain.
+    ("salsa.fpcore", "Odometry", "other"),
+    ("salsa.fpcore", "Rocket Trajectory", "other"),
+    ("salsa.fpcore", "Eigenvalue Computation", "other"),
+    ("salsa.fpcore", "Iterative Gram-Schmidt Method", "other"),
 ];
 
 /// The exit status of each file's run: 2 where a benchmark stopped at the loop limit in every
@@ -136,7 +64,7 @@ const NOTHING_COMPARED: &[(&str, &str, &str)] = &[
 /// sample otherwise, else 0.
 fn expected_status(file: &str) -> i32 {
     match file {
-        "apron.fpcore" => 2,
+        "apron.fpcore" | "salsa.fpcore" => 2,
         "rosa.fpcore" => 1,
         _ => 0,
     }
@@ -165,9 +93,13 @@ fn every_fpbench_benchmark_runs_or_is_refused_with_its_reason() {
         );
         if expected_status(file) == 2 {
             assert_eq!(stderr.lines().count(), 1, "{stderr}");
+            let first = if *file == "apron.fpcore" {
+                "'Euler Oscillator' and of 2 other entries"
+            } else {
+                "'Rocket Trajectory'"
+            };
             assert!(
-                stderr.contains("the limit loop-iterations = 10000")
-                    && stderr.contains("'Euler Oscillator' and of 2 other entries"),
+                stderr.contains("the limit loop-iterations = 10000") && stderr.contains(first),
                 "{stderr}"
             );
         }
@@ -209,5 +141,112 @@ fn every_fpbench_benchmark_runs_or_is_refused_with_its_reason() {
         compared + refused.len() + nothing.len(),
         total,
         "{compared} of {total} compared"
+    );
+}
+
+/// Runs `exactcheck regress ARGS --json` and returns the exit status and the first entry.
+fn first_entry(args: &[&str]) -> (Option<i32>, Value) {
+    let o = Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+        .arg("regress")
+        .args(args)
+        .args(["--json", "--quiet"])
+        .output()
+        .expect("the binary runs");
+    let doc: Value = serde_json::from_slice(&o.stdout)
+        .unwrap_or_else(|e| panic!("{e}: {}", String::from_utf8_lossy(&o.stderr)));
+    (o.status.code(), doc["entries"][0].clone())
+}
+
+#[test]
+fn binary32_benchmarks_measure_binary32_ulps() {
+    // FPTaylor's x / (x + y) on [1, 4]^2 in binary32: two roundings, at most 1.5 binary32 ulps,
+    // every worst input a binary32 value.
+    let path = format!(
+        "{}/tests/regress/fpbench/fptaylor-extra.fpcore",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let (status, e) = first_entry(&["--fpcore", &path, "--name", "x_by_xy", "--samples", "300"]);
+    assert_eq!(status, Some(0), "{e}");
+    assert_eq!(e["precision"], "binary32");
+    assert_eq!(e["compared"], 300);
+    let max = e["max_ulps"].as_f64().expect("max ulps");
+    assert!(max > 0.25 && max <= 1.5, "{max}");
+    for w in e["worst"].as_array().expect("worst") {
+        for x in w["original"]["inputs"].as_array().expect("inputs") {
+            let x = x.as_f64().expect("a number");
+            assert_eq!(f64::from(x as f32), x, "{x} is not a binary32 value");
+            assert!((1.0..=4.0).contains(&x));
+        }
+    }
+
+    // (x + y) - x with y far below half a binary32 ulp of x: in binary32 the sum is x and the
+    // result 0 (relative error exactly 1: y / ulp32(y) in [2^23, 2^24) ulps, 24 bits or more);
+    // in binary64 the sum keeps y to within 2^-53, a relative error below 2^-23.
+    let formula = [
+        "--formula",
+        "(x + y) - x",
+        "--domain",
+        "x in [1, 2], y in [1e-9, 2e-9]",
+        "--samples",
+        "200",
+    ];
+    let (status, e32) = first_entry(&[&formula[..], &["--precision", "binary32"]].concat());
+    assert_eq!(status, Some(0), "{e32}");
+    assert_eq!(e32["precision"], "binary32");
+    assert_eq!(e32["max_rel"], 1.0);
+    assert_eq!(e32["median_rel"], 1.0);
+    let (lo, hi) = (f64::powi(2.0, 23), f64::powi(2.0, 24));
+    for k in ["max_ulps", "median_ulps"] {
+        let u = e32[k].as_f64().expect("ulps");
+        assert!(lo <= u && u < hi, "{k} = {u}");
+    }
+    assert!(e32["bits_of_error"].as_f64().expect("bits") > 23.0);
+    let (status, e64) = first_entry(&formula);
+    assert_eq!(status, Some(0), "{e64}");
+    assert_eq!(e64["precision"], "binary64");
+    assert!(e64["max_rel"].as_f64().expect("rel") < f64::powi(2.0, -23));
+
+    // The text table names the precision with the entry.
+    let o = Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+        .args(["regress", "--fpcore", &path, "--samples", "20", "--quiet"])
+        .output()
+        .expect("the binary runs");
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(text.contains("x_by_xy [binary32]"), "{text}");
+    assert!(
+        text.contains("in binary32: errors in binary32 ulps"),
+        "{text}"
+    );
+}
+
+#[test]
+fn sine_newton_says_why_no_sample_was_compared() {
+    // Ten Newton steps on sin's Taylor polynomial converge to 0 cubically: the exact iterate
+    // ends at about 2^-34000 from 0.5 (the exponent triples every step), and each step cancels
+    // about twice its bits, far beyond the precision cap.
+    let path = format!(
+        "{}/tests/regress/fpbench/rosa.fpcore",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let o = Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+        .args([
+            "regress",
+            "--fpcore",
+            &path,
+            "--name",
+            "Sine Newton",
+            "--samples",
+            "3",
+        ])
+        .arg("--quiet")
+        .output()
+        .expect("the binary runs");
+    assert_eq!(o.status.code(), Some(1));
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        text.contains(
+            "no sample was compared: the exact side left every sample undecided, no sign or rounding decided within its precision cap of 16384 bits"
+        ),
+        "{text}"
     );
 }

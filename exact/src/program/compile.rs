@@ -39,7 +39,7 @@
 //! `std::f64::consts::PI`); `e` and `i` are constants, never variables, and a formula naming one
 //! is refused ([`CompileError::Reserved`]). The elementary functions (`sin`, `exp`, `log`, ...)
 //! are calls of the program.
-use super::{ChainOp, Func, Node, PowStyle, Program};
+use super::{ChainOp, Format, Func, Node, PowStyle, Program};
 use crate::expr::library::{Defs, Val};
 use crate::expr::{
     lower, parse_expr, parse_expr_with_calls, reserved_constant, AddOp, Expr, ExprError, ExprKind,
@@ -253,6 +253,7 @@ impl Program {
             slots: 0,
             pre: None,
             outputs,
+            precision: Format::Binary64,
         })
     }
 
@@ -298,6 +299,7 @@ impl Program {
             slots: 0,
             pre: None,
             outputs,
+            precision: Format::Binary64,
         })
     }
 

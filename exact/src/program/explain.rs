@@ -3,7 +3,8 @@
 //!   the exact values of its operands rounded to doubles, against the exact value of the
 //!   subexpression it computes, rounded. An operation fed (nearly) exact operands that still
 //!   misses the true value is where the bits are lost: a subtraction of two close rounded
-//!   square roots misses by the operands' rounding errors, amplified by the cancellation;
+//!   square roots misses by the operands' rounding errors, amplified by the cancellation (a
+//!   binary32 program: the operation in binary32 on the operands rounded to binary32);
 //! * **conditioning** ([`Program::conditioning`]): the relative condition number
 //!   `sum_i |x_i * df/dx_i / f|` of each output, the derivatives computed by forward-mode dual
 //!   numbers over the exact reals of `real` (rationals, and enclosures refined like the value
@@ -15,10 +16,10 @@
 //! numbers rather than a symbolic `diff` of the expression because a program is not always an
 //! expression of the `prove` syntax (FPCore's `let`, `if`, `fmin`...), and forward mode
 //! differentiates exactly what the walk evaluates.
-use super::float::{call_f64, pow_f64};
+use super::float::{call_f32, call_f64, pow_f32, pow_f64};
 use super::real::{nearest_double, rounding_decided, ExactStop, Halt, Real, MAX_PRECISION, XV};
 use super::walk::{eval_node, Domain};
-use super::{CmpOp, Func, PowStyle, Program, START_PRECISION};
+use super::{CmpOp, Format, Func, PowStyle, Program, START_PRECISION};
 use crate::rational::Rational;
 use exactcheck_core::Ring;
 use std::cmp::Ordering;
@@ -85,17 +86,40 @@ fn operand(t: &Tracked, min: u8) -> String {
 /// operation.
 struct Local<'a> {
     real: Real<'a>,
+    format: Format,
     names: &'a [String],
     ops: Vec<LocalError>,
 }
 
 impl Local<'_> {
-    /// The double nearest to an exact value; a refinement when an enclosure does not decide it.
-    fn round(v: &XV) -> Result<f64, Halt> {
-        match v {
-            XV::Exact(q) => Ok(q.to_f64()),
-            XV::Approx(iv, _) if rounding_decided(iv) => Ok(nearest_double(&iv.lo)),
-            XV::Approx(..) => Err(Halt::Refine { ambiguous: false }),
+    /// The value of the program's format nearest to an exact value; a refinement when an
+    /// enclosure does not decide it.
+    fn round(&self, v: &XV) -> Result<f64, Halt> {
+        match (v, self.format) {
+            (XV::Exact(q), Format::Binary64) => Ok(q.to_f64()),
+            (XV::Approx(iv, _), Format::Binary64) if rounding_decided(iv) => {
+                Ok(nearest_double(&iv.lo))
+            }
+            (XV::Exact(q), f) => Ok(f.round(&q.to_big_rational())),
+            (XV::Approx(iv, _), f) => {
+                let lo = f.round(&iv.lo.to_big_rational());
+                if lo.to_bits() == f.round(&iv.hi.to_big_rational()).to_bits() {
+                    Ok(lo)
+                } else {
+                    Err(Halt::Refine { ambiguous: false })
+                }
+            }
+        }
+    }
+
+    /// A result of `+ - * /` or `sqrt` computed in doubles on operands of the format, rounded to
+    /// the format: for binary32 operands that is the binary32 operation (a double holds the
+    /// exact result to more than twice binary32's precision plus two bits, so the second
+    /// rounding is innocuous).
+    fn fl(&self, v: f64) -> f64 {
+        match self.format {
+            Format::Binary64 => v,
+            Format::Binary32 => f64::from(v as f32),
         }
     }
 
@@ -107,7 +131,7 @@ impl Local<'_> {
         text: String,
         prec: u8,
     ) -> Result<Tracked, Halt> {
-        let exact = Self::round(&x)?;
+        let exact = self.round(&x)?;
         let text = cut(text);
         self.ops.push(LocalError {
             operation,
@@ -119,13 +143,14 @@ impl Local<'_> {
     }
 
     fn binary(&mut self, a: Tracked, b: Tracked, op: char) -> Result<Tracked, Halt> {
-        let (fa, fb) = (Self::round(&a.x)?, Self::round(&b.x)?);
+        let (fa, fb) = (self.round(&a.x)?, self.round(&b.x)?);
         let (name, prec, float) = match op {
             '+' => ("addition", 0, fa + fb),
             '-' => ("subtraction", 0, fa - fb),
             '*' => ("multiplication", 1, fa * fb),
             _ => ("division", 1, fa / fb),
         };
+        let float = self.fl(float);
         let text = format!("{} {op} {}", operand(&a, prec), operand(&b, prec + 1));
         let x = match op {
             '+' => self.real.add(a.x, b.x)?,
@@ -189,7 +214,7 @@ impl Domain for Local<'_> {
         self.binary(a, b, '/')
     }
     fn sqrt(&mut self, a: Tracked) -> Result<Tracked, Halt> {
-        let float = Self::round(&a.x)?.sqrt();
+        let float = self.fl(self.round(&a.x)?.sqrt());
         let text = Self::call("sqrt", &[&a]);
         let x = self.real.sqrt(a.x)?;
         self.record("square root", x, float, text, 4)
@@ -203,7 +228,11 @@ impl Domain for Local<'_> {
         })
     }
     fn fma(&mut self, a: Tracked, b: Tracked, c: Tracked) -> Result<Tracked, Halt> {
-        let float = Self::round(&a.x)?.mul_add(Self::round(&b.x)?, Self::round(&c.x)?);
+        let (fa, fb, fc) = (self.round(&a.x)?, self.round(&b.x)?, self.round(&c.x)?);
+        let float = match self.format {
+            Format::Binary64 => fa.mul_add(fb, fc),
+            Format::Binary32 => f64::from((fa as f32).mul_add(fb as f32, fc as f32)),
+        };
         let text = Self::call("fma", &[&a, &b, &c]);
         let x = self.real.fma(a.x, b.x, c.x)?;
         self.record("fma", x, float, text, 4)
@@ -225,7 +254,11 @@ impl Domain for Local<'_> {
         })
     }
     fn pow(&mut self, a: Tracked, n: i32, style: PowStyle) -> Result<Tracked, Halt> {
-        let float = pow_f64(Self::round(&a.x)?, n, style);
+        let fa = self.round(&a.x)?;
+        let float = match self.format {
+            Format::Binary64 => pow_f64(fa, n, style),
+            Format::Binary32 => f64::from(pow_f32(fa as f32, n, style)),
+        };
         let text = match style {
             PowStyle::Multiply => format!("{}^{n}", operand(&a, 4)),
             PowStyle::Libm => format!("pow({}, {n})", a.text),
@@ -234,9 +267,13 @@ impl Domain for Local<'_> {
         self.record("power", x, float, text, 3)
     }
     fn call(&mut self, f: Func, a: Option<Tracked>, b: Option<Tracked>) -> Result<Tracked, Halt> {
-        let fa = a.as_ref().map(|t| Self::round(&t.x)).transpose()?;
-        let fb = b.as_ref().map(|t| Self::round(&t.x)).transpose()?;
-        let float = call_f64(f, fa.unwrap_or(0.0), fb.unwrap_or(0.0));
+        let fa = a.as_ref().map(|t| self.round(&t.x)).transpose()?;
+        let fb = b.as_ref().map(|t| self.round(&t.x)).transpose()?;
+        let (fa, fb) = (fa.unwrap_or(0.0), fb.unwrap_or(0.0));
+        let float = match self.format {
+            Format::Binary64 => call_f64(f, fa, fb),
+            Format::Binary32 => f64::from(call_f32(f, fa as f32, fb as f32)),
+        };
         let args: Vec<&Tracked> = a.iter().chain(b.iter()).collect();
         let text = if args.is_empty() {
             f.name().to_string()
@@ -731,6 +768,7 @@ impl Program {
         refine(|p| {
             let mut d = Local {
                 real: Real::new(x, p),
+                format: self.precision,
                 names: &self.inputs,
                 ops: Vec::new(),
             };

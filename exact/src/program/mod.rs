@@ -2,7 +2,8 @@
 //! `--formula` in the `prove` syntax and an FPCore benchmark — evaluated two ways on the same
 //! inputs:
 //! * **in f64, as written**: each node is one IEEE double operation in the order of the tree
-//!   (literals rounded to the nearest double, `fma` fused, `sqrt` correctly rounded);
+//!   (literals rounded to the nearest double, `fma` fused, `sqrt` correctly rounded), or one
+//!   binary32 operation for a program of [`Format::Binary32`];
 //! * **exactly**: the true real value of the tree at the (exact, dyadic) inputs. Without an
 //!   irrational square root that is a rational computed exactly; with one, it is refined to as
 //!   many bits as the comparison with the double needs (never a float `sqrt`).
@@ -22,7 +23,10 @@
 //! * `explain`: where the error comes from at one sample ([`Program::local_errors`],
 //!   [`Program::conditioning`]).
 use crate::rational::Rational;
+pub use crate::to_f64::Format;
 
+#[cfg(test)]
+mod binary32_tests;
 mod compile;
 mod explain;
 mod float;
@@ -38,7 +42,7 @@ mod walk;
 
 pub use compile::CompileError;
 pub use explain::{Conditioning, LocalError};
-pub use float::{call_f64, pow_f64, STACK_SLOTS};
+pub use float::{call_f32, call_f64, pow_f32, pow_f64, STACK_SLOTS};
 pub use real::{ExactStop, Reference, MAX_PRECISION, REL_BITS, START_PRECISION};
 
 /// How an integer power is evaluated on the float side.
@@ -316,6 +320,10 @@ pub struct Program {
     pub pre: Option<Cond>,
     /// The outputs (one or more).
     pub outputs: Vec<Node>,
+    /// The format the float side computes in (every operation, literal and library function
+    /// rounded to it) and the exact reference's rounding is decided in: binary64 unless FPCore's
+    /// `:precision` or `regress --precision` says binary32.
+    pub precision: Format,
 }
 
 impl Program {

@@ -5,7 +5,8 @@
 //! * `exact == true`: `value` **is** the true value.
 //! * `exact == false`: the true value is not zero, `|value - true| <= 2^-REL_BITS * |true|`
 //!   ([`REL_BITS`] = 80) and `value` rounds to the same double as the true value (round to
-//!   nearest, ties to even). That gives the error of a double in ulps to far better than
+//!   nearest, ties to even) and, in a program of [`Format::Binary32`], to the same binary32
+//!   value (decided on its own: a double can be a binary32 tie). That gives the error of a double in ulps to far better than
 //!   `2^-10` ulps, the relative error to `2^-80` of itself, and the correctly rounded double of
 //!   the true value, at any magnitude: a value of `1e-463` is refined relatively like one of 1.
 //!   The correct rounding is decided, never assumed: an enclosure that contains the midpoint of
@@ -61,7 +62,7 @@
 use super::interval::Iv;
 use super::transc::{self, TStop};
 use super::walk::{count_iteration, eval_cond, eval_node, Domain};
-use super::{CmpOp, Func, PowStyle, Program};
+use super::{CmpOp, Format, Func, PowStyle, Program};
 use crate::expr::Coefficient;
 use crate::radical::Radical;
 use crate::rational::Rational;
@@ -454,9 +455,14 @@ pub(super) fn rounding_decided(iv: &Iv) -> bool {
 }
 
 /// Whether the midpoint of an output enclosure meets the contract: one sign, `2^-REL_BITS`
-/// relative accuracy, the correct rounding decided.
-fn settled(iv: &Iv) -> bool {
-    iv.narrow(REL_BITS) && rounding_decided(iv)
+/// relative accuracy, the correct rounding to a double decided and, for a binary32 program, the
+/// rounding to binary32 too (a double can be a binary32 tie: deciding the double is not enough).
+fn settled(iv: &Iv, format: Format) -> bool {
+    iv.narrow(REL_BITS)
+        && rounding_decided(iv)
+        && (format == Format::Binary64
+            || format.round(&iv.lo.to_big_rational()).to_bits()
+                == format.round(&iv.hi.to_big_rational()).to_bits())
 }
 
 // ------------------------------------------------------------------ the radical fallback
@@ -596,7 +602,7 @@ impl Domain for Rad<'_> {
 
 /// An inexact reference to an irrational radical, by interval refinement (the value is neither
 /// zero nor dyadic, so refinement reaches the relative contract and decides the rounding).
-fn radical_reference(r: &Radical) -> Result<Reference, ExactStop> {
+fn radical_reference(r: &Radical, format: Format) -> Result<Reference, ExactStop> {
     if let Some(q) = r.to_rational() {
         return Ok(Reference {
             value: q.to_big_rational(),
@@ -618,7 +624,7 @@ fn radical_reference(r: &Radical) -> Result<Reference, ExactStop> {
             });
         }
         let iv = sum.expect("an irrational radical has terms");
-        if settled(&iv) {
+        if settled(&iv, format) {
             return Ok(Reference {
                 value: iv.midpoint(),
                 exact: false,
@@ -672,7 +678,12 @@ impl Program {
             if ambiguous && !radical_tried {
                 radical_tried = true;
                 match self.radical_pass(x) {
-                    Ok(values) => return values.iter().map(radical_reference).collect(),
+                    Ok(values) => {
+                        return values
+                            .iter()
+                            .map(|r| radical_reference(r, self.precision))
+                            .collect()
+                    }
                     Err(RadStop::Outside) => return Err(ExactStop::OutsideDomain),
                     Err(RadStop::LoopLimit) => return Err(ExactStop::LoopLimit),
                     Err(RadStop::Unrepresentable) => {}
@@ -707,7 +718,7 @@ impl Program {
                             value: iv.lo.to_big_rational(),
                             exact: true,
                         });
-                    } else if settled(&iv) {
+                    } else if settled(&iv, self.precision) {
                         refs.push(Reference {
                             value: iv.midpoint(),
                             exact: false,

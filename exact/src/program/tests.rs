@@ -38,6 +38,7 @@ fn one_output(nodes: Node, inputs: &[&str]) -> Program {
         slots: 0,
         pre: None,
         outputs: vec![nodes],
+        precision: Format::Binary64,
     }
 }
 
@@ -280,6 +281,7 @@ fn operation_count_and_arity() {
                 b(c(0)),
             )),
         )],
+        precision: Format::Binary64,
     };
     // neg, sqrt, two comparisons.
     assert_eq!(p.operation_count(), 4);
@@ -556,6 +558,7 @@ fn let_slots_and_many_slots() {
             ),
             Node::Abs(b(Node::Neg(b(Node::Input(0))))),
         ],
+        precision: Format::Binary64,
     };
     let x = 0.3;
     let s0 = x + 1.0;
@@ -576,6 +579,7 @@ fn let_slots_and_many_slots() {
         slots: n,
         pre: None,
         outputs: vec![Node::Let(bindings, b(Node::Slot(n - 1)))],
+        precision: Format::Binary64,
     };
     assert_eq!(p.eval_f64(&[0.5]), vec![0.5 + (n - 1) as f64]);
     let mut out = Vec::new();

@@ -26,6 +26,7 @@ fn reference(f: Func, args: &[f64]) -> Result<Reference, ExactStop> {
         slots: 0,
         pre: None,
         outputs: vec![Node::Fun(f, (0..args.len()).map(Node::Input).collect())],
+        precision: Format::Binary64,
     };
     let x: Vec<Rational> = args.iter().map(|&v| exact(v)).collect();
     p.eval_exact(&x).map(|mut r| r.remove(0))

@@ -104,6 +104,7 @@ impl Accumulator {
             formula: subject.name(),
             float_side: subject.float_side(),
             generator,
+            precision: subject.format().name().to_string(),
             arity: subject.arity(),
             samples: sweep.samples,
             seed: sweep.seed,

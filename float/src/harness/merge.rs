@@ -269,6 +269,7 @@ pub fn merge(reports: &[Report]) -> Result<Report, MergeError> {
         };
         same("formula", first.formula.clone(), r.formula.clone())?;
         same("float side", first.float_side.clone(), r.float_side.clone())?;
+        same("precision", first.precision.clone(), r.precision.clone())?;
         same("inputs", first.generator.clone(), r.generator.clone())?;
         same("arity", first.arity.to_string(), r.arity.to_string())?;
         same("samples", first.samples.to_string(), r.samples.to_string())?;

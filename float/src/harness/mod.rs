@@ -68,13 +68,14 @@ pub use merge::{check_consistent, merge, MergeError};
 
 use accumulate::Accumulator;
 
-use crate::convert::{rel_error, ulps_error_rounded};
+use crate::convert::{rel_error, ulps_error_in};
 use crate::gen::InputGen;
 use crate::report::{Case, Report, WorstCase};
 use crate::scalar::ExactScalar;
-use crate::summary::herbie_bits;
+use crate::summary::herbie_bits_in;
 use exactcheck_core::Rng;
 use exactcheck_core::{OrderedField, ZeroDivisor};
+pub use exactcheck_exact::to_f64::Format;
 use num_rational::BigRational;
 use std::cmp::Ordering;
 use std::marker::PhantomData;
@@ -317,6 +318,11 @@ pub trait Subject: Sync {
     fn finish(&self) -> Result<(), FloatSideError> {
         Ok(())
     }
+    /// The format the float side computes in: its results, the exact value's correct rounding,
+    /// ulps and Herbie's bits are those of this format (binary64 by default).
+    fn format(&self) -> Format {
+        Format::Binary64
+    }
 }
 
 /// A [`Formula`] as a [`Subject`]: its generic `eval` in the exact scalar `E` against its
@@ -386,6 +392,8 @@ pub(crate) struct Evaluated {
     max_rel: f64,
     bits: f64,
     failure: bool,
+    /// The format the errors are measured in.
+    format: Format,
 }
 
 /// An exact output for reports: `n` or `n/d` when exact, else `~` and 25 significant digits.
@@ -412,7 +420,7 @@ impl Evaluated {
             exact_outputs_f64: self
                 .exact
                 .iter()
-                .map(|v| crate::convert::rational_to_f64(&v.value))
+                .map(|v| self.format.round(&v.value))
                 .collect(),
             float_outputs: self.float.clone(),
             ulps_per_output: self.ulps.clone(),
@@ -426,7 +434,13 @@ impl Evaluated {
 }
 
 /// Compares exact and float outputs of one sample.
-fn compare(exact: Vec<ExactValue>, float: Option<Vec<f64>>) -> Evaluated {
+/// Errors are measured in `format`: ulps of the format's value nearest to the exact value, and
+/// Herbie's bits over the format's ordinal distance (the format's width for a NaN).
+fn compare(exact: Vec<ExactValue>, float: Option<Vec<f64>>, format: Format) -> Evaluated {
+    let width = match format {
+        Format::Binary64 => 64.0,
+        Format::Binary32 => 32.0,
+    };
     let failure = match &float {
         Some(f) => f.len() != exact.len() || f.iter().any(|v| !v.is_finite()),
         None => true,
@@ -435,20 +449,20 @@ fn compare(exact: Vec<ExactValue>, float: Option<Vec<f64>>) -> Evaluated {
     let mut rel = Vec::with_capacity(exact.len());
     let mut bits: f64 = match &float {
         Some(f) if f.len() == exact.len() => 0.0,
-        _ => 64.0,
+        _ => width,
     };
     for (i, q) in exact.iter().enumerate() {
         match float.as_ref().and_then(|f| f.get(i)) {
             Some(&a) => {
-                let rounded = crate::convert::rational_to_f64(&q.value);
-                ulps.push(ulps_error_rounded(a, &q.value, rounded));
+                let rounded = format.round(&q.value);
+                ulps.push(ulps_error_in(format, a, &q.value, rounded));
                 rel.push(rel_error(a, &q.value));
-                bits = bits.max(herbie_bits(a, rounded));
+                bits = bits.max(herbie_bits_in(format, a, rounded));
             }
             None => {
                 ulps.push(f64::INFINITY);
                 rel.push(f64::INFINITY);
-                bits = 64.0;
+                bits = width;
             }
         }
     }
@@ -463,6 +477,7 @@ fn compare(exact: Vec<ExactValue>, float: Option<Vec<f64>>) -> Evaluated {
         ulps,
         rel,
         failure,
+        format,
     }
 }
 
@@ -486,7 +501,7 @@ pub(crate) fn evaluate_one(
         Err(e) => return Ok(Err(e)),
     };
     let float = subject.float(index, x)?;
-    Ok(Ok(compare(exact, float)))
+    Ok(Ok(compare(exact, float, subject.format())))
 }
 
 /// Compares the float and exact evaluations of `formula` at one input vector: the building block
@@ -640,6 +655,7 @@ pub fn run_observed(
             return Err(RegressError::InvalidOptions(format!("shard {s}")));
         }
     }
+    let format = subject.format();
     if subject.arity() != gen.arity() {
         return Err(RegressError::ArityMismatch {
             formula: subject.arity(),
@@ -695,7 +711,13 @@ pub fn run_observed(
             .into_par_iter()
             .zip(floats.into_par_iter())
             .map(|(e, float)| {
-                e.map(|e| compare(e, float.expect("the float side of a defined sample")))
+                e.map(|e| {
+                    compare(
+                        e,
+                        float.expect("the float side of a defined sample"),
+                        format,
+                    )
+                })
             })
             .collect();
         for (k, (x, ev)) in inputs.into_iter().zip(evaluated).enumerate() {

@@ -30,16 +30,18 @@
 //!   `loop-iterations` limit;
 //! * `(array e ...)` ending the body (as the whole body, or the body of its `let`s, loops and
 //!   `if` branches): one output per element, each the whole body with that element taken;
-//! * rounding contexts: `:precision binary64` (the default when absent) and
+//! * rounding contexts: `:precision binary64` (the default when absent) or `binary32` (the
+//!   program's [`crate::program::Format`]: its float side computes in `f32`) and
 //!   `:round nearestEven`, on the benchmark, in `!` annotations and on arguments
-//!   `(! :precision binary64 x)`. Other properties (`:cite`, `:spec`, `:math-library`, ...) are
-//!   metadata and ignored.
+//!   `(! :precision binary64 x)`, as long as one precision holds throughout; `(cast e)` to it
+//!   is `e`. Other properties (`:cite`, `:spec`, `:math-library`, ...) are metadata and ignored.
 //!
 //! Everything else is reported per benchmark as `not supported: OP`, never approximated:
 //! the functions without a certified enclosure here (`erf`, `tgamma`, `fmod`, ...), the
 //! derived and non-finite constants (`LN2`, `INFINITY`, ...), `for` loops, tensors,
-//! `cast`, the classification predicates (`isnan`, ...), calls of other named FPCores, and any
-//! precision other than binary64 or rounding other than nearestEven.
+//! the classification predicates (`isnan`, ...), calls of other named FPCores, any precision
+//! other than binary64 and binary32, two precisions in one benchmark (`mixed precisions
+//! (binary64 inside a binary32 benchmark)`), and rounding other than nearestEven.
 //!
 //! # `:pre` and the domain
 //! The precondition is split into its conjuncts (`and`, nested). Each ordered comparison chain

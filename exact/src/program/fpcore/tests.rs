@@ -1,4 +1,5 @@
 use super::*;
+use crate::program::Format;
 
 fn q(n: i64, d: i64) -> Rational {
     Rational::new(n, d).expect("nonzero denominator")
@@ -66,11 +67,23 @@ fn spec_examples_parse_and_are_classified() {
     let expected: Vec<(&str, Result<(), String>)> = vec![
         ("NMSE example 3.1", Ok(())),
         ("round with addition", Ok(())),
-        ("rounding: lexical scoping", ns("precision binary32")),
-        ("cast 1", ns("precision binary32")),
+        (
+            "rounding: lexical scoping",
+            ns("mixed precisions (binary32 inside a binary64 benchmark)"),
+        ),
+        (
+            "cast 1",
+            ns("mixed precisions (binary32 inside a binary64 benchmark)"),
+        ),
         ("cast 2", Ok(())),
-        ("cast 3", ns("precision binary32")),
-        ("cast 4", ns("cast")),
+        (
+            "cast 3",
+            ns("mixed precisions (binary32 inside a binary64 benchmark)"),
+        ),
+        (
+            "cast 4",
+            ns("mixed precisions (binary32 inside a binary64 benchmark)"),
+        ),
         ("foo", Ok(())),
         ("inherit 1", ns("round toZero")),
         ("inherit 2", ns("round toPositive")),
@@ -349,9 +362,11 @@ fn unsupported_operations_mark_only_their_benchmark() {
         ("(tgamma x)", "tgamma"),
         ("(+ x LN2)", "LN2"),
         ("(pow x 1e10)", "pow with an exponent beyond 32 bits"),
-        ("(! :precision binary32 (+ x y))", "precision binary32"),
+        (
+            "(! :precision binary32 (+ x y))",
+            "mixed precisions (binary32 inside a binary64 benchmark)",
+        ),
         ("(! :precision real (+ x y))", "precision real"),
-        ("(cast x)", "cast"),
         ("(if (isnan x) 0 x)", "isnan"),
         ("(tensor ([i 3]) i)", "tensor"),
         ("(for ([i 3]) ([s 0 (+ s i)]) s)", "for"),
@@ -367,13 +382,30 @@ fn unsupported_operations_mark_only_their_benchmark() {
         );
     }
     assert_eq!(
-        unsupported_op("(FPCore (x) :precision binary32 (+ x 1))"),
-        "precision binary32"
+        unsupported_op("(FPCore ((! :precision binary32 x)) (+ x 1))"),
+        "mixed precisions (binary32 inside a binary64 benchmark)"
     );
     assert_eq!(
-        unsupported_op("(FPCore ((! :precision binary32 x)) (+ x 1))"),
-        "precision binary32"
+        unsupported_op("(FPCore (x) :precision binary32 (! :precision binary64 (+ x 1)))"),
+        "mixed precisions (binary64 inside a binary32 benchmark)"
     );
+    assert_eq!(
+        unsupported_op("(FPCore (x) :precision binary80 (+ x 1))"),
+        "precision binary80"
+    );
+    // One precision throughout, binary32 included: `cast` to it changes nothing.
+    let p = program(
+        "(FPCore ((! :precision binary32 x)) :precision binary32 (cast (! :precision binary32 (+ x 1))))",
+    );
+    assert_eq!(p.precision, Format::Binary32);
+    assert_eq!(
+        p.outputs,
+        vec![Node::Add(
+            Box::new(Node::Input(0)),
+            Box::new(Node::Const(Rational::ONE))
+        )]
+    );
+    assert_eq!(program("(FPCore (x) (cast x))").precision, Format::Binary64);
     assert_eq!(unsupported_op("(FPCore (x) :pre (< (erf x) 2) x)"), "erf");
     // An annotated binary64 argument is fine.
     let p = program("(FPCore ((! :precision binary64 x) y) :round nearestEven (+ x y))");

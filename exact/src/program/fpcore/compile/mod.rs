@@ -3,7 +3,7 @@
 //! `pre`; the scopes (`let`, loops) in `scope` (see the parent module for the supported subset).
 use super::sexpr::{check_literal_size, pow_rational, Pos, SExpr, MAX_LITERAL_EXPONENT};
 use super::{Benchmark, FpCoreError, Interval, Unsupported};
-use crate::program::{CmpOp, Cond, Func, Node, PowStyle, Program};
+use crate::program::{CmpOp, Cond, Format, Func, Node, PowStyle, Program};
 use crate::rational::Rational;
 use num_bigint::BigInt;
 use pre::{cmp_op, conjuncts, domain, inline_lets, pre_pairs, PrePair};
@@ -113,16 +113,40 @@ fn property_pairs(props: &[SExpr]) -> Result<Props<'_>, FpCoreError> {
     Ok(out)
 }
 
-/// Checks the rounding-context properties: binary64 and round-to-nearest-even only.
-fn check_context(pairs: &[(&str, &SExpr)]) -> Result<(), Fail> {
+/// The benchmark's format: its `:precision` (binary64 when absent); a precision other than
+/// binary64 and binary32 is unsupported.
+fn benchmark_format(pairs: &[(&str, &SExpr)]) -> Result<Format, Fail> {
+    let mut format = Format::Binary64;
+    for (key, value) in pairs {
+        if matches!(*key, ":precision" | ":type") {
+            format = value
+                .sym()
+                .and_then(Format::from_name)
+                .ok_or_else(|| unsupported(format!("precision {}", render(value))))?;
+        }
+    }
+    Ok(format)
+}
+
+/// Checks the rounding-context properties against the benchmark's `format`: its own precision
+/// and round-to-nearest-even only. Another supported format inside it is a mixed-precision
+/// program, unsupported as such (one line naming both).
+fn check_context(pairs: &[(&str, &SExpr)], format: Format) -> Result<(), Fail> {
     for (key, value) in pairs {
         let (what, wanted) = match *key {
-            ":precision" | ":type" => ("precision", "binary64"),
+            ":precision" | ":type" => ("precision", format.name()),
             ":round" => ("round", "nearestEven"),
             _ => continue,
         };
-        if value.sym() != Some(wanted) {
-            return Err(unsupported(format!("{what} {}", render(value))));
+        match value.sym() {
+            Some(v) if v == wanted => {}
+            Some(v) if what == "precision" && Format::from_name(v).is_some() => {
+                return Err(unsupported(format!(
+                    "mixed precisions ({v} inside a {} benchmark)",
+                    format.name()
+                )))
+            }
+            _ => return Err(unsupported(format!("{what} {}", render(value)))),
         }
     }
     Ok(())
@@ -232,12 +256,13 @@ pub(super) fn benchmark(tree: &SExpr) -> Result<Benchmark, FpCoreError> {
         ));
     }
     let props = property_pairs(props)?;
+    let format = benchmark_format(&props);
 
     // Arguments: names, plus the first unsupported annotation if any.
     let mut args: Vec<String> = Vec::new();
     let mut arg_unsupported: Option<String> = None;
     for a in arg_list {
-        let (name, problem) = argument(a)?;
+        let (name, problem) = argument(a, *format.as_ref().unwrap_or(&Format::Binary64))?;
         if args.contains(&name) {
             return Err(err(a.pos(), format!("duplicate argument `{name}`")));
         }
@@ -277,8 +302,10 @@ pub(super) fn benchmark(tree: &SExpr) -> Result<Benchmark, FpCoreError> {
         .unwrap_or_else(|| format!("FPCore at line {}", open.line));
     let compiled = match arg_unsupported {
         Some(op) => Err(unsupported(op)),
-        None => check_context(&props).and_then(|()| {
+        None => format.and_then(|format| {
+            check_context(&props, format)?;
             let mut c = Compiler {
+                format,
                 slots: 0,
                 env: args
                     .iter()
@@ -297,6 +324,7 @@ pub(super) fn benchmark(tree: &SExpr) -> Result<Benchmark, FpCoreError> {
                 slots: c.slots,
                 pre,
                 outputs,
+                precision: format,
             })
         }),
     };
@@ -317,7 +345,7 @@ pub(super) fn benchmark(tree: &SExpr) -> Result<Benchmark, FpCoreError> {
 
 /// One argument: `x`, `(! props x)`, or a tensor `(x dims...)` / `(! props x dims...)`.
 /// Returns the name and what is unsupported about it, if anything.
-fn argument(a: &SExpr) -> Result<(String, Option<String>), FpCoreError> {
+fn argument(a: &SExpr, format: Format) -> Result<(String, Option<String>), FpCoreError> {
     match a {
         SExpr::Sym(s, _) => Ok((s.clone(), None)),
         SExpr::List(items, pos) => {
@@ -339,7 +367,7 @@ fn argument(a: &SExpr) -> Result<(String, Option<String>), FpCoreError> {
             let Some(name) = rest.first().and_then(SExpr::sym) else {
                 return Err(err(*pos, "expected an argument name"));
             };
-            let mut problem = match check_context(&props) {
+            let mut problem = match check_context(&props, format) {
                 Err(Fail::Unsupported(op)) => Some(op),
                 _ => None,
             };
@@ -355,8 +383,10 @@ fn argument(a: &SExpr) -> Result<(String, Option<String>), FpCoreError> {
     }
 }
 
-/// The expression compiler: the slot counter and the scope (innermost binding last).
+/// The expression compiler: the benchmark's format, the slot counter and the scope (innermost
+/// binding last).
 struct Compiler {
+    format: Format,
     slots: usize,
     env: Vec<(String, Value)>,
 }
@@ -396,7 +426,7 @@ impl Compiler {
         match body {
             SExpr::List(items, p) if items.first().and_then(SExpr::sym) == Some("!") => {
                 let (e, pairs) = annotation(items, *p)?;
-                check_context(&pairs)?;
+                check_context(&pairs, self.format)?;
                 return self.outputs(e);
             }
             _ => {}
@@ -509,8 +539,14 @@ impl Compiler {
             "array" => Err(unsupported("array")),
             "!" => {
                 let (e, pairs) = annotation(items, pos)?;
-                check_context(&pairs)?;
+                check_context(&pairs, self.format)?;
                 self.expr(e)
+            }
+            // In a program of one format every value already is a value of it: rounding one to
+            // the current format changes nothing.
+            "cast" => {
+                arity(1)?;
+                self.expr(&args[0])
             }
             "+" | "*" | "/" => {
                 arity(2)?;
