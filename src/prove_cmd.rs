@@ -38,7 +38,8 @@ use clap::Args;
 use exactcheck_core::Ring;
 use exactcheck_exact::expr::library::{self, Shape};
 use exactcheck_exact::expr::{
-    angles, describe_point, first_reserved, has_trig, ratfun_sides, Coefficient, Expr, ExprError, PI,
+    angles, describe_point, first_reserved, has_trig, ratfun_sides, Coefficient, Expr, ExprError,
+    PI,
 };
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{

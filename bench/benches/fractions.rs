@@ -22,9 +22,9 @@
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use exactcheck_exact::expr::library::{resolve, Val};
 use exactcheck_exact::expr::{parse_expr, ratfun_sides, Expr};
-use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::poly::Vars;
 use exactcheck_exact::prove::{decide_fraction, decide_in, Decision, FractionIdentity};
+use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::Rational;
 use std::time::Duration;
 

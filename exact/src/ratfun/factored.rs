@@ -157,11 +157,7 @@ impl<C: Field> Fraction<C> {
     /// `self^k` (`k` may be negative: then the numerator is recorded as a condition); `None`
     /// for a negative power of zero.
     pub fn pow(&self, k: i64) -> Option<Self> {
-        let base = if k < 0 {
-            self.recip()?
-        } else {
-            self.clone()
-        };
+        let base = if k < 0 { self.recip()? } else { self.clone() };
         let e = u32::try_from(k.unsigned_abs()).ok()?;
         if e == 0 {
             return Self::build(Poly::one(), Vec::new(), base.conditions);
@@ -217,9 +213,9 @@ impl<C: Field> Fraction<C> {
 
 /// `p prod f^e` over `factors`, within the limits.
 fn times<C: Field>(p: &Poly<C>, factors: &Factors<C>) -> Option<Poly<C>> {
-    factors
-        .iter()
-        .try_fold(p.clone(), |acc, (f, e)| acc.try_mul(&f.try_pow(*e).ok()?).ok())
+    factors.iter().try_fold(p.clone(), |acc, (f, e)| {
+        acc.try_mul(&f.try_pow(*e).ok()?).ok()
+    })
 }
 
 /// The structural least common multiple of two denominators (equal factors with the larger
@@ -275,7 +271,10 @@ mod tests {
     /// and equal conditions.
     fn agree(f: &Fraction<Rational>, r: &RatFun<Rational>) {
         let reduced = Fraction::from_ratfun(r);
-        assert!(f.cross_residual(&reduced).unwrap().is_zero(), "{f:?} vs {r:?}");
+        assert!(
+            f.cross_residual(&reduced).unwrap().is_zero(),
+            "{f:?} vs {r:?}"
+        );
         assert_eq!(f.conditions(), r.conditions(), "{f:?} vs {r:?}");
     }
 
@@ -313,7 +312,9 @@ mod tests {
             acc = acc.mul(&Fraction::from_poly(f).recip().unwrap()).unwrap();
         }
         let last = parse_poly::<Rational>("x - 1", &mut vars).unwrap();
-        assert!(acc.mul(&Fraction::from_poly(last).recip().unwrap()).is_none());
+        assert!(acc
+            .mul(&Fraction::from_poly(last).recip().unwrap())
+            .is_none());
     }
 
     proptest! {

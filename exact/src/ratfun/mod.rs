@@ -53,8 +53,8 @@ mod gcd;
 mod tests;
 
 pub use coprime::certified_coprime;
-pub use factored::{Fraction, MAX_FACTORS};
 use coprime::div_image_possible;
+pub use factored::{Fraction, MAX_FACTORS};
 pub use gcd::poly_gcd;
 pub(crate) use gcd::{content_in, gcd_capped, GcdError};
 
@@ -362,7 +362,11 @@ pub fn push_condition<C: Field>(conditions: &mut Vec<Poly<C>>, p: &Poly<C>) {
             }
             g = poly_gcd(&g, &poly_derivative(rest, v))?;
         }
-        let mut q = div_exact(rest, &g).expect("the gcd divides the polynomial");
+        let mut q = if g.is_constant() {
+            rest.clone()
+        } else {
+            div_exact(rest, &g).expect("the gcd divides the polynomial")
+        };
         for c in conditions.iter() {
             let common = poly_gcd(&q, c)?;
             if !common.is_constant() {

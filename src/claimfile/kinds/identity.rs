@@ -25,9 +25,8 @@ pub(super) fn identity<C: PointField + Display>(
     vars.allow_roots();
     let mut coordinates = Vec::new();
     for (l, r) in lhs.iter().zip(rhs) {
-        let (l, r) = exactcheck_exact::expr::ratfun_sides::<C>(l, r, &mut vars).map_err(|(rhs, err)| {
-            Fault::Input(if rhs { "rhs" } else { "lhs" }, err.to_string())
-        })?;
+        let (l, r) = exactcheck_exact::expr::ratfun_sides::<C>(l, r, &mut vars)
+            .map_err(|(rhs, err)| Fault::Input(if rhs { "rhs" } else { "lhs" }, err.to_string()))?;
         coordinates.push(Statement::Sides(l, r));
     }
     // The names of the components (`component 2 (y)`, `entry (1, 2)`), as `prove` names them.
