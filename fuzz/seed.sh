@@ -63,6 +63,9 @@ put("prove", "r\nc^4 - s^4\nc^2 - s^2\nc^2 + s^2 = 1")
 # Inputs the fuzzer found slow, kept as seeds (a 74th power of a 4-term base that
 # took 8.4 s by binary powering, now the power recurrence).
 put("prove", b"?m\n+16(t+ 1x^2+y+3x y_x)^74\xec3\xff\x9d\xa1+3N")
+# A residual over Q(sqrt) whose square-free factorization for printing swelled its
+# coefficients for minutes (the work bound counted each radical coefficient as one word).
+put("prove", "e\n(p0^2+p1^2+p2^2+p32^2+p2)^3^2\n(2*p*p01 sqrtp2*p3)^2 + (2*p0*p2 + 2*p2*3*p3)^2 + (22+p^2-p3^2)^2")
 
 for path in sorted(glob.glob("tests/solve_golden/*.json")):
     put("solve_json", open(path, "rb").read())

@@ -39,7 +39,8 @@ use clap::Args;
 use exactcheck_core::Ring;
 use exactcheck_exact::expr::library::{self, Shape};
 use exactcheck_exact::expr::{
-    angles, describe_point, first_reserved, has_trig, Coefficient, Expr, ExprError, PI,
+    angles, describe_point, first_reserved, has_trig, ratfun_sides, Coefficient, Expr, ExprError,
+    PI,
 };
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
@@ -461,10 +462,14 @@ pub(crate) fn prove_over<C: PointField + Display>(
             Shape::Scalar => side.to_string(),
             s => format!("{side}, {}", s.component(k)),
         };
-        let l = to_ratfun::<C>(lhs, &mut vars, &what("LHS"))?;
-        let r = match sides.rhs {
-            Some(r) => to_ratfun::<C>(&r[k], &mut vars, &what("RHS"))?,
-            None => RatFun::from_poly(Poly::zero()),
+        let (l, r) = match sides.rhs {
+            Some(r) => ratfun_sides::<C>(lhs, &r[k], &mut vars).map_err(|(rhs, err)| {
+                Error::Input(format!("{}: {err}", what(if rhs { "RHS" } else { "LHS" })))
+            })?,
+            None => (
+                to_ratfun::<C>(lhs, &mut vars, &what("LHS"))?,
+                RatFun::from_poly(Poly::zero()),
+            ),
         };
         coordinates.push(Statement::Sides(l, r));
     }

@@ -1,9 +1,12 @@
 //! Criterion benchmark of deciding an identity between rational functions against deciding its
 //! cleared numerator as a polynomial identity: `P/D = Q/D` with `P = (x + y + z + 1)^k` as
 //! written, `Q` its expansion and `D = 1 + x^2 + y^2`, against `P D = Q D`. Both paths start
-//! from the parsed expressions: the rational one converts each side to a fraction in lowest
-//! terms (gcds with `D`), clears the denominators and decides the cleared numerator off the
-//! zeros of `D`; the polynomial one expands both sides and decides their difference. The
+//! from the parsed expressions: the rational one converts the two sides as `prove` does
+//! (`ratfun_sides`: cross-multiplied once over the factored denominators, then only the smaller
+//! side reduced to lowest terms), clears the denominators and decides the cleared numerator
+//! off the zeros of `D`; the polynomial one expands both sides and decides their difference.
+//! A third line, `reduced`, converts each side to lowest terms on its own (`to_ratfun`, the
+//! route taken when the identity does not hold), for comparison. The
 //! cleared numerator `P D - Q D` has `3 C(k + 3, 3)` terms before it cancels: 105, 495 and
 //! 1,365 at `k = 4, 8, 12`.
 //!
@@ -18,9 +21,10 @@
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use exactcheck_exact::expr::library::{resolve, Val};
-use exactcheck_exact::expr::{parse_expr, Expr};
+use exactcheck_exact::expr::{parse_expr, ratfun_sides, Expr};
 use exactcheck_exact::poly::Vars;
 use exactcheck_exact::prove::{decide_fraction, decide_in, Decision, FractionIdentity};
+use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::Rational;
 use std::time::Duration;
 
@@ -45,11 +49,21 @@ fn sides(k: u32) -> ((Expr, Expr), (Expr, Expr)) {
 
 fn rational(l: &Expr, r: &Expr) -> bool {
     let mut vars = Vars::new();
+    let (l, r) = ratfun_sides::<Rational>(l, r, &mut vars).unwrap();
+    decide_sides(&l, &r, vars.len())
+}
+
+fn reduced(l: &Expr, r: &Expr) -> bool {
+    let mut vars = Vars::new();
     let l = l.to_ratfun::<Rational>(&mut vars).unwrap();
     let r = r.to_ratfun::<Rational>(&mut vars).unwrap();
-    let f = FractionIdentity::new(&l, &r).unwrap();
+    decide_sides(&l, &r, vars.len())
+}
+
+fn decide_sides(l: &RatFun<Rational>, r: &RatFun<Rational>, nvars: usize) -> bool {
+    let f = FractionIdentity::new(l, r).unwrap();
     matches!(
-        decide_fraction(&f, &[], &[], &[], vars.len()).unwrap(),
+        decide_fraction(&f, &[], &[], &[], nvars).unwrap(),
         Decision::Proved { .. }
     )
 }
@@ -142,6 +156,7 @@ fn pair_group(c: &mut Criterion, name: &str, cases: Vec<(u32, Pair)>) {
     g.measurement_time(Duration::from_secs(2));
     for (k, ((rl, rr), (pl, pr))) in cases {
         assert!(rational(&rl, &rr), "the rational identity of {name} at {k}");
+        assert!(reduced(&rl, &rr), "the reduced identity of {name} at {k}");
         assert!(
             polynomial(&pl, &pr),
             "the polynomial identity of {name} at {k}"
@@ -151,6 +166,9 @@ fn pair_group(c: &mut Criterion, name: &str, cases: Vec<(u32, Pair)>) {
         });
         g.bench_with_input(BenchmarkId::new("numerator", k), &k, |b, _| {
             b.iter(|| polynomial(&pl, &pr))
+        });
+        g.bench_with_input(BenchmarkId::new("reduced", k), &k, |b, _| {
+            b.iter(|| reduced(&rl, &rr))
         });
     }
     g.finish();
@@ -176,12 +194,16 @@ fn bench(c: &mut Criterion) {
         let ((rl, rr), (pl, pr)) = sides(k);
         // Both must be proved before they are timed.
         assert!(rational(&rl, &rr), "the rational identity at k = {k}");
+        assert!(reduced(&rl, &rr), "the reduced identity at k = {k}");
         assert!(polynomial(&pl, &pr), "the polynomial identity at k = {k}");
         g.bench_with_input(BenchmarkId::new("rational", k), &k, |b, _| {
             b.iter(|| rational(&rl, &rr))
         });
         g.bench_with_input(BenchmarkId::new("numerator", k), &k, |b, _| {
             b.iter(|| polynomial(&pl, &pr))
+        });
+        g.bench_with_input(BenchmarkId::new("reduced", k), &k, |b, _| {
+            b.iter(|| reduced(&rl, &rr))
         });
     }
     g.finish();

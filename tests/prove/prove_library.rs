@@ -91,7 +91,7 @@ fn vector_and_matrix_identities_are_proved_component_by_component() {
     let (code, out, err) = run(&["prove", "cross([a1, a2, a3], [a1, a2, a3])"]);
     assert_eq!(code, 0, "{out}{err}");
     assert!(
-        out.starts_with("proved: LHS - RHS expands to 0 in each of the 3 coordinates"),
+        out.starts_with("proved: LHS - RHS expands to 0 in each of the 3 components"),
         "{out}"
     );
 }

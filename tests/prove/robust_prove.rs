@@ -197,3 +197,20 @@ fn the_counter_example_search_solves_for_the_variable_of_lowest_degree() {
     assert!(out.starts_with("fails: at "), "{out}");
     assert!(out.contains("(where the relations hold)"), "{out}");
 }
+
+#[test]
+fn a_residual_over_the_square_root_field_is_not_factored_for_minutes() {
+    // Found by the `prove` fuzz target ("sqrt" in a variable name selects the square-root
+    // field): printing the residual factored ran the gcds of its square-free factorization for
+    // minutes, their work bound counting every coefficient as one word while the rational
+    // parts swelled to hundreds of digits. The bound now weighs those parts; the verdict is a
+    // counter-example, with the residual printed expanded.
+    let (code, out, err) = run(&[
+        "prove",
+        "(p0^2+p1^2+p2^2+p32^2+p2)^3^2",
+        "(2*p*p01 sqrtp2*p3)^2 + (2*p0*p2 + 2*p2*3*p3)^2 + (22+p^2-p3^2)^2",
+    ]);
+    assert_eq!(code, 1, "{out:.300}{err}");
+    assert!(out.starts_with("fails: at "), "{out:.300}");
+    assert!(err.is_empty(), "{err}");
+}

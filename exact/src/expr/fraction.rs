@@ -2,10 +2,10 @@
 //! `diff`.
 
 use super::eval::{check_constant, exponent_value, size_error};
-use super::trig::{total_derivative, total_derivative_ratfun, Trig};
+use super::trig::{cos_name, sin_name, total_derivative, total_derivative_ratfun, Trig};
 use super::*;
 use crate::poly::{Poly, Vars};
-use crate::ratfun::RatFun;
+use crate::ratfun::{Fraction, RatFun};
 use exactcheck_core::Field;
 use num_traits::ToPrimitive;
 
@@ -153,6 +153,147 @@ impl Expr {
     }
 }
 
+impl Expr {
+    /// The rational function as a [`Fraction`]: the operations of [`Expr::to_ratfun`] (the same
+    /// divisors recorded in the same order) without any cancellation; calls other than `diff`
+    /// are converted by [`Expr::to_ratfun`]. `None` for anything [`Expr::to_ratfun`] might
+    /// refuse or reduce differently: an error, a limit on a numerator or a factor, a factor list
+    /// past its budget.
+    pub fn to_fraction<C: Coefficient + Field>(&self, vars: &mut Vars) -> Option<Fraction<C>> {
+        if !self.has_fractions() {
+            return self.to_poly(vars).ok().map(Fraction::from_poly);
+        }
+        let f = match &self.kind {
+            ExprKind::Neg(x) => x.to_fraction::<C>(vars)?.neg(),
+            ExprKind::Sum(items) => {
+                let mut acc: Option<Fraction<C>> = None;
+                for (op, x) in items {
+                    let f = x.to_fraction::<C>(vars)?;
+                    let minus = *op == AddOp::Minus;
+                    acc = Some(match acc {
+                        None if minus => f.neg(),
+                        None => f,
+                        Some(a) => a.add(&f, minus)?,
+                    });
+                }
+                acc.unwrap_or_else(|| Fraction::from_poly(Poly::zero()))
+            }
+            ExprKind::Product(items) => {
+                let mut acc = Fraction::from_poly(Poly::one());
+                for (op, x) in items {
+                    let f = match (op, &x.kind) {
+                        // `1 / B^k` as `(1 / B)^k`, as `to_ratfun` takes it.
+                        (MulOp::Divide, ExprKind::Pow(base, exp))
+                            if exponent_value(exp).is_ok_and(|k| k > 0) =>
+                        {
+                            let k = exponent_value(exp).ok()?;
+                            base.to_fraction::<C>(vars)?.pow(-k)?
+                        }
+                        (MulOp::Divide, _) => x.to_fraction::<C>(vars)?.recip()?,
+                        (MulOp::Times, _) => x.to_fraction::<C>(vars)?,
+                    };
+                    acc = acc.mul(&f)?;
+                }
+                acc
+            }
+            ExprKind::Pow(base, exp) => {
+                let k = exponent_value(exp).ok()?;
+                base.to_fraction::<C>(vars)?.pow(k)?
+            }
+            ExprKind::Call(name, args) if name == "diff" => {
+                let (e, t, k) = diff_arguments(self, args).ok()?;
+                let mut f = e.to_fraction::<C>(vars)?;
+                for _ in 0..k {
+                    f = total_derivative_fraction(&f, vars, t)?;
+                }
+                f
+            }
+            ExprKind::Call(..) => Fraction::from_ratfun(&self.to_ratfun::<C>(vars).ok()?),
+            ExprKind::Number(_) | ExprKind::Var(_) | ExprKind::Sqrt(_) => {
+                unreachable!("a number, a variable or a sqrt has no fractions")
+            }
+        };
+        for p in std::iter::once(f.numerator()).chain(f.factors().iter().map(|(p, _)| p)) {
+            limits::TERMS.check_usize(p.len()).ok()?;
+            p.coefficients()
+                .iter()
+                .try_for_each(|c| check_constant(c, self.pos))
+                .ok()?;
+        }
+        Some(f)
+    }
+}
+
+/// The total derivative of [`total_derivative_ratfun`] on a [`Fraction`]: in `t` and, by the
+/// chain rule, in the cosine and sine of the angle `t`.
+fn total_derivative_fraction<C: Field>(
+    f: &Fraction<C>,
+    vars: &Vars,
+    t: &str,
+) -> Option<Fraction<C>> {
+    let mut d = match vars.get(t) {
+        Some(v) => f.derivative(v)?,
+        None => f.mul(&Fraction::from_poly(Poly::zero()))?,
+    };
+    if let (Some(c), Some(s)) = (vars.get(&cos_name(t)), vars.get(&sin_name(t))) {
+        let by_c = f
+            .derivative(c)?
+            .mul(&Fraction::from_poly(Poly::<C>::var(s)))?;
+        let by_s = f
+            .derivative(s)?
+            .mul(&Fraction::from_poly(Poly::<C>::var(c)))?;
+        d = d.add(&by_c, true)?.add(&by_s, false)?;
+    }
+    Some(d)
+}
+
+/// The two sides of an identity `lhs = rhs` as rational functions: what [`Expr::to_ratfun`]
+/// gives for each, computed more cheaply when the identity holds.
+///
+/// Both sides are first converted without cancellation ([`Expr::to_fraction`]) and
+/// cross-multiplied once ([`Fraction::cross_residual`]). When that residual vanishes the two
+/// are the same rational function, so they have the same lowest terms: only the smaller side
+/// is reduced ([`Expr::to_ratfun`]), and the other side is that fraction with its own divisors
+/// ([`RatFun::with_conditions`]). A true identity then costs about what its cleared numerator
+/// costs as a polynomial identity, instead of an exact division of every summed numerator by
+/// the common factors of its denominator. Otherwise (and whenever the cheap conversion gives
+/// up) each side is converted by [`Expr::to_ratfun`], as before.
+///
+/// # Errors
+/// Those of [`Expr::to_ratfun`], with the side they come from: `Err((false, e))` for the left
+/// side, `Err((true, e))` for the right one.
+#[allow(clippy::type_complexity)]
+pub fn ratfun_sides<C: Coefficient + Field>(
+    lhs: &Expr,
+    rhs: &Expr,
+    vars: &mut Vars,
+) -> Result<(RatFun<C>, RatFun<C>), (bool, ExprError)> {
+    if lhs.has_fractions() || rhs.has_fractions() {
+        let mut cheap = || -> Option<(RatFun<C>, RatFun<C>)> {
+            let l = lhs.to_fraction::<C>(vars)?;
+            let r = rhs.to_fraction::<C>(vars)?;
+            if !l.cross_residual(&r)?.is_zero() {
+                return None;
+            }
+            if l.terms() <= r.terms() {
+                let reduced = lhs.to_ratfun::<C>(vars).ok()?;
+                let other = reduced.with_conditions(r.into_conditions());
+                Some((reduced, other))
+            } else {
+                let reduced = rhs.to_ratfun::<C>(vars).ok()?;
+                let other = reduced.with_conditions(l.into_conditions());
+                Some((other, reduced))
+            }
+        };
+        if let Some(sides) = cheap() {
+            return Ok(sides);
+        }
+    }
+    let l = lhs.to_ratfun::<C>(vars).map_err(|e| (false, e))?;
+    let r = rhs.to_ratfun::<C>(vars).map_err(|e| (true, e))?;
+    Ok((l, r))
+}
+
 /// `1 / x` for a divisor `x = B^k` (`k` a positive integer) as `(1 / B)^k`: the same fraction
 /// and the same condition (that of `B`, the square-free part of `B^k`) without computing the
 /// square-free part of `B^k` by gcds. `None` when `x` is not such a power or anything fails
@@ -266,4 +407,91 @@ pub(super) fn diff_poly<C: Coefficient>(
         p = total_derivative(&p, vars, t);
     }
     Ok(p)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Rational;
+    use proptest::prelude::*;
+
+    /// `ratfun_sides` on the texts against each side's own `to_ratfun`: the same fractions, the
+    /// same conditions, the same variables (or the same error, on the same side).
+    fn same_as_each_side(lhs: &str, rhs: &str) {
+        let (l, r) = (parse_expr(lhs).unwrap(), parse_expr(rhs).unwrap());
+        let mut v1 = Vars::new();
+        let fast = ratfun_sides::<Rational>(&l, &r, &mut v1);
+        let mut v2 = Vars::new();
+        let plain = l
+            .to_ratfun::<Rational>(&mut v2)
+            .map_err(|e| (false, e))
+            .and_then(|a| Ok((a, r.to_ratfun::<Rational>(&mut v2).map_err(|e| (true, e))?)));
+        match (fast, plain) {
+            (Ok(a), Ok(b)) => assert_eq!(a, b, "{lhs} = {rhs}"),
+            (Err((s1, e1)), Err((s2, e2))) => {
+                assert_eq!((s1, e1.to_string()), (s2, e2.to_string()), "{lhs} = {rhs}")
+            }
+            (a, b) => panic!("{lhs} = {rhs}: {a:?} vs {b:?}"),
+        }
+        assert_eq!(v1.names(), v2.names(), "{lhs} = {rhs}");
+    }
+
+    #[test]
+    fn true_identities_take_the_cheap_route_to_the_same_sides() {
+        same_as_each_side("(x^2-1)/(x-1)", "x+1");
+        same_as_each_side("((1-t^2)/(1+t^2))^2 + (2*t/(1+t^2))^2", "1");
+        same_as_each_side("diff(t^3/(1+t), t)", "(2*t^3+3*t^2)/(1+t)^2");
+        same_as_each_side("x/(x*y) + 1/(y^2)", "(y + 1)/y^2");
+        // Not identities, or not fractions: each side on its own.
+        same_as_each_side("(x^2-1)/(x-1)", "x");
+        same_as_each_side("x + 1", "1 + x");
+        // Errors keep their side.
+        same_as_each_side("1/(x-x)", "1");
+        same_as_each_side("1/x", "diff(x, 2)");
+    }
+
+    /// An expression in `x, y` from the drawn choices: atoms combined by `+ - * /`, powers and
+    /// derivatives.
+    fn expression(choices: &[u8]) -> String {
+        const ATOMS: [&str; 6] = ["x", "y", "x + 1", "x - y", "x^2 + 1", "2*y"];
+        let mut it = choices.iter();
+        let mut e = ATOMS[usize::from(*it.next().unwrap_or(&0)) % ATOMS.len()].to_string();
+        while let (Some(&op), Some(&a)) = (it.next(), it.next()) {
+            let atom = ATOMS[usize::from(a) % ATOMS.len()];
+            e = match op % 6 {
+                0 => format!("({e}) + ({atom})"),
+                1 => format!("({e}) - ({atom})"),
+                2 => format!("({e}) * ({atom})"),
+                3 => format!("({e}) / ({atom})"),
+                4 => format!("({atom}) / ({e})^2"),
+                _ => format!("diff({e}, x)"),
+            };
+        }
+        e
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+        /// Random rational expressions against their own lowest terms written out (a true
+        /// identity) and against those plus one (a false one): the cheap route gives the sides
+        /// (or the error) that converting each side on its own gives.
+        #[test]
+        fn cheap_sides_equal_each_side_reduced(
+            choices in proptest::collection::vec(0u8..=255, 1..=9),
+        ) {
+            let lhs = expression(&choices);
+            let mut vars = Vars::from_names(["x", "y"]);
+            let Ok(f) = parse_expr(&lhs).unwrap().to_ratfun::<Rational>(&mut vars) else {
+                return Ok(());
+            };
+            let shown = format!(
+                "({}) / ({})",
+                f.numerator().display(&vars),
+                f.denominator().display(&vars)
+            );
+            same_as_each_side(&lhs, &shown);
+            same_as_each_side(&shown, &lhs);
+            same_as_each_side(&lhs, &format!("{shown} + 1"));
+        }
+    }
 }

@@ -144,6 +144,7 @@ mod trig;
 pub use constants::{
     abstract_constants, fill_constants, needs_algebraic, upoly_expr, ConstantLeaf,
 };
+pub use fraction::ratfun_sides;
 pub use latex::{equation_to_latex, to_latex, Notation};
 pub use lower::{eval_lowered, lower};
 pub use mathml::{equation_to_mathml, to_mathml};

@@ -212,7 +212,7 @@ impl Phrasing<'_> {
             } if !used.is_empty() => {
                 let texts: Vec<String> = used.iter().map(|u| self.used_text(u)).collect();
                 let coords = if n > 1 {
-                    format!(" in the {n} coordinates")
+                    format!(" in the {n} components")
                 } else {
                     String::new()
                 };
@@ -224,13 +224,13 @@ impl Phrasing<'_> {
             IdentityVerdict::Proved { expanded_terms, .. } => match (*expanded_terms, n) {
                 (0, 1) => format!("LHS - RHS{cleared_any} expands to 0{where_nonzero}"),
                 (0, n) => format!(
-                    "LHS - RHS{cleared_any} expands to 0 in each of the {n} coordinates{where_nonzero}"
+                    "LHS - RHS{cleared_any} expands to 0 in each of the {n} components{where_nonzero}"
                 ),
                 (t, 1) => format!(
                     "LHS - RHS{cleared_any} expands to {t} terms, which reduce to 0{modulo}{where_nonzero}"
                 ),
                 (t, n) => format!(
-                    "LHS - RHS{cleared_any} expands to {t} terms in the {n} coordinates, which reduce to 0{modulo}{where_nonzero}"
+                    "LHS - RHS{cleared_any} expands to {t} terms in the {n} components, which reduce to 0{modulo}{where_nonzero}"
                 ),
             },
             IdentityVerdict::Fails {

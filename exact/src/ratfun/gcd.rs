@@ -4,7 +4,7 @@
 
 use super::{certified_coprime, div_exact};
 use crate::poly::{Poly, SizeError, Var};
-use crate::Rational;
+use crate::{Radical, Rational};
 use exactcheck_core::{Field, Ring};
 use std::any::Any;
 
@@ -34,22 +34,24 @@ pub(crate) enum GcdError {
 }
 
 /// The size of the largest coefficient of `p` in 64-bit words (at least 1): rational
-/// coefficients by their bits ([`Rational::bits`]), those of other fields count one word.
+/// coefficients by their bits ([`Rational::bits`]), those of the square-root field by the bits
+/// of their rational parts together (a coefficient `a + b sqrt(2)` costs what `a` and `b` do);
+/// those of other fields count one word.
 fn coefficient_words<C: Field>(p: &Poly<C>) -> usize {
-    match (p as &dyn Any).downcast_ref::<Poly<Rational>>() {
-        Some(q) => {
-            let bits = q
-                .coefficients()
-                .iter()
-                .map(Rational::bits)
-                .max()
-                .unwrap_or(0);
-            usize::try_from(bits / 64)
-                .unwrap_or(usize::MAX)
-                .saturating_add(1)
-        }
-        None => 1,
-    }
+    let any = p as &dyn Any;
+    let bits = if let Some(q) = any.downcast_ref::<Poly<Rational>>() {
+        q.coefficients().iter().map(Rational::bits).max()
+    } else if let Some(q) = any.downcast_ref::<Poly<Radical>>() {
+        q.coefficients()
+            .iter()
+            .map(|c| c.terms().iter().map(|(_, r)| r.bits()).sum::<u64>())
+            .max()
+    } else {
+        None
+    };
+    usize::try_from(bits.unwrap_or(0) / 64)
+        .unwrap_or(usize::MAX)
+        .saturating_add(1)
 }
 
 /// The work of the product `a b` charged to a gcd budget: the term products, each weighted by

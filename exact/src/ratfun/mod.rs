@@ -35,17 +35,26 @@
 //! without any gcd with its numerator. The gcd crates for Rust (none multivariate over Q with
 //! these limits) could not replace this. The certificate is in `coprime`, the remainder
 //! sequence in `gcd`.
+//!
+//! # Identities without cancelling
+//! Deciding whether two expressions are equal needs no lowest terms: [`Fraction`] keeps the
+//! denominator as a product of powers of the divisors met, compared by equality, and two
+//! fractions are cross-multiplied once ([`Fraction::cross_residual`]). The identity front ends
+//! take that route first ([`crate::expr::ratfun_sides`]) and reduce only the smaller side when
+//! the residual vanishes. The module is `factored`.
 
 use crate::poly::{Poly, SizeError, Var};
 use exactcheck_core::{Field, Ring};
 
 mod coprime;
+mod factored;
 mod gcd;
 #[cfg(test)]
 mod tests;
 
 pub use coprime::certified_coprime;
 use coprime::div_image_possible;
+pub use factored::{Fraction, MAX_FACTORS};
 pub use gcd::poly_gcd;
 pub(crate) use gcd::{content_in, gcd_capped, GcdError};
 
@@ -107,6 +116,17 @@ impl<C: Field> RatFun<C> {
             num,
             den,
             conditions: self.conditions.iter().map(|c| f(c).make_monic()).collect(),
+        }
+    }
+
+    /// The same fraction with `conditions` as its divisors met: for an expression shown equal
+    /// to this one as rational functions ([`Fraction::cross_residual`]), whose lowest terms are
+    /// therefore these, but whose own divisors are `conditions` (which must exclude the zeros
+    /// of the denominator).
+    pub fn with_conditions(&self, conditions: Vec<Poly<C>>) -> Self {
+        RatFun {
+            conditions,
+            ..self.clone()
         }
     }
 
@@ -342,7 +362,11 @@ pub fn push_condition<C: Field>(conditions: &mut Vec<Poly<C>>, p: &Poly<C>) {
             }
             g = poly_gcd(&g, &poly_derivative(rest, v))?;
         }
-        let mut q = div_exact(rest, &g).expect("the gcd divides the polynomial");
+        let mut q = if g.is_constant() {
+            rest.clone()
+        } else {
+            div_exact(rest, &g).expect("the gcd divides the polynomial")
+        };
         for c in conditions.iter() {
             let common = poly_gcd(&q, c)?;
             if !common.is_constant() {

@@ -129,8 +129,8 @@ fn identity<C: PointField + Display>(
     vars.allow_roots();
     let mut coordinates = Vec::new();
     for (l, r) in lhs_in.iter().zip(rhs_in) {
-        let l = to_ratfun::<C>(l, &mut vars, "lhs")?;
-        let r = to_ratfun::<C>(r, &mut vars, "rhs")?;
+        let (l, r) = exactcheck_exact::expr::ratfun_sides::<C>(l, r, &mut vars)
+            .map_err(|(rhs, err)| Fault::Input(if rhs { "rhs" } else { "lhs" }, err.to_string()))?;
         coordinates.push(Statement::Sides(l, r));
     }
     // The names of the components (`component 2 (y)`, `entry (1, 2)`), as `prove` names them.
