@@ -16,6 +16,9 @@
 //!
 //! * [`ExactNumber`]: any exact number (radical field).
 //! * [`RationalNumber`]: an exact rational (irrational input is refused).
+//! * [`FieldNumber`]: any exact number of a problem whose values leave the radical field
+//!   (`"cos(pi/8)"`, `"cos(2*pi/7)"`), as an element of the problem's number field
+//!   ([`super::field`]).
 //! * [`FloatNumber`]: `--float` input: integers, floating literals and exact strings, converted
 //!   to the nearest `f64`; non-finite results (`"10^400"`, `1e400`) are refused.
 //!
@@ -27,8 +30,10 @@
 //!   every mode), finite.
 
 use exactcheck_core::OrderedField;
+use exactcheck_exact::algebraic::FieldElement;
 use exactcheck_exact::expr::library::{self, Val};
-use exactcheck_exact::{Radical, Rational};
+use exactcheck_exact::expr::ExprError;
+use exactcheck_exact::{Algebraic, Radical, Rational};
 use schemars::{json_schema, JsonSchema, Schema, SchemaGenerator};
 use serde::de::{Deserialize, Deserializer, Error as _};
 use serde_json::Value;
@@ -101,6 +106,39 @@ pub(crate) fn parse_radical(text: &str) -> Result<Radical, String> {
         Val::Scalar(e) => exactcheck_exact::expr::eval_lowered::<Radical>(&e)
             .map_err(|err| quoted(Radical::refusal(&e, err).to_string())),
         v => Err(quoted(format!("{} where a number is expected", v.shape()))),
+    }
+}
+
+/// Why a number string has no real algebraic value.
+#[derive(Debug)]
+pub(crate) enum AlgebraicRefusal {
+    /// A value's degree is past the `algebraic-degree` limit: the message, naming the limit.
+    Limit(String),
+    /// Anything else (not a constant, bad syntax), in one line.
+    Other(String),
+}
+
+/// The exact value of a number string as a real algebraic number (the same reading as
+/// [`parse_radical`], in the field of all real algebraic numbers): used for the values that
+/// leave the radical field.
+pub(crate) fn parse_algebraic(text: &str) -> Result<Algebraic, AlgebraicRefusal> {
+    let other = |m: String| AlgebraicRefusal::Other(format!("{text:?}: {m}"));
+    match library::resolve(text).map_err(|e| other(e.to_string()))? {
+        Val::Scalar(e) => {
+            exactcheck_exact::expr::eval_lowered::<Algebraic>(&e).map_err(|err| {
+                // The degree of cos(2*pi/q) is checked inside the function library, whose
+                // refusal carries the limit's message rather than the limit error itself.
+                let degree = exactcheck_core::limits::ALGEBRAIC_DEGREE.name();
+                match err {
+                    ExprError::Limit { .. } => AlgebraicRefusal::Limit(format!("{text:?}: {err}")),
+                    ExprError::BadCall { ref why, .. } if why.contains(degree) => {
+                        AlgebraicRefusal::Limit(format!("{text:?}: {err}"))
+                    }
+                    err => other(err.to_string()),
+                }
+            })
+        }
+        v => Err(other(format!("{} where a number is expected", v.shape()))),
     }
 }
 
@@ -208,6 +246,27 @@ impl JsonSchema for ExactNumber {
             "description": format!("An exact number: a JSON integer of any size, or {EXACT_STRING}. JSON floating-point literals are refused in exact mode (accepted with --float)."),
             "anyOf": [{"type": "integer"}, {"type": "string"}]
         })
+    }
+}
+
+/// An exact number of a problem whose values leave the radical field: its value as an element
+/// of the problem's number field, built before the typed read ([`super::field`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct FieldNumber(pub FieldElement);
+
+impl<'de> Deserialize<'de> for FieldNumber {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        match written(d)? {
+            Written::Integer(t) | Written::Text(t) => {
+                let value = parse_algebraic(&t).map_err(|e| match e {
+                    AlgebraicRefusal::Limit(m) | AlgebraicRefusal::Other(m) => D::Error::custom(m),
+                })?;
+                super::field::current_element(&value)
+                    .map(FieldNumber)
+                    .map_err(D::Error::custom)
+            }
+            Written::Float(t) => Err(D::Error::custom(float_refused(&t))),
+        }
     }
 }
 

@@ -167,7 +167,8 @@ impl FieldElement {
         match (&self.field, &other.field) {
             (Some(a), Some(b)) => {
                 assert!(
-                    Arc::ptr_eq(a, b) || a.modulus() == b.modulus() && a.generator() == b.generator(),
+                    Arc::ptr_eq(a, b)
+                        || a.modulus() == b.modulus() && a.generator() == b.generator(),
                     "FieldElement: elements of two different number fields"
                 );
                 Some(Arc::clone(a))
@@ -295,12 +296,7 @@ impl fmt::Debug for FieldElement {
     /// The polynomial in `theta` and the field's minimal polynomial.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match &self.field {
-            Some(field) => write!(
-                f,
-                "FieldElement({} mod {})",
-                self.poly,
-                field.modulus()
-            ),
+            Some(field) => write!(f, "FieldElement({} mod {})", self.poly, field.modulus()),
             None => write!(f, "FieldElement({})", self.poly),
         }
     }
@@ -410,7 +406,10 @@ mod tests {
         let f = field("cos(2*pi/7)");
         let t = FieldElement::generator(&f);
         let s = t.to_string();
-        assert!(s.starts_with("Root(8*x^3 + 4*x^2 - 4*x - 1") || s.starts_with("Root("), "{s}");
+        assert!(
+            s.starts_with("Root(8*x^3 + 4*x^2 - 4*x - 1") || s.starts_with("Root("),
+            "{s}"
+        );
         assert!((t.to_f64() - (2.0 * std::f64::consts::PI / 7.0).cos()).abs() < 1e-15);
         assert!(format!("{t:?}").contains("mod"));
         // Rational results of field arithmetic are rational again: 2 cos(2pi/7) + 2 cos(4pi/7)
