@@ -51,7 +51,7 @@ enum Written {
 
 /// The number strings of the contract, in one sentence: every schema description of a number
 /// field is built from it, so that the schemas state the language the parser reads.
-pub(crate) const EXACT_STRING: &str = "a string in the exact expression language of prove: integers, fractions \"-3/4\", decimals \"0.1\" (exactly 1/10) and \"2.5e-3\", + - * / ^ and parentheses, sqrt with nested radicals that denest (\"1/sqrt(2)\", \"sqrt(3 + 2*sqrt(2))\"), sin, cos and tan of rational multiples of pi or of angles in degrees (\"cos(pi/6)\", \"sin(45°)\"), and the library functions (binomial, factorial, sum, integrate, diff, det, dot, cross, norm2, ...), whose value is a constant of the square-root field";
+pub(crate) const EXACT_STRING: &str = "a string in the exact expression language of prove: integers, fractions \"-3/4\", decimals \"0.1\" (exactly 1/10) and \"2.5e-3\", + - * / ^ and parentheses, sqrt with nested radicals that denest (\"1/sqrt(2)\", \"sqrt(3 + 2*sqrt(2))\"), sin, cos and tan of rational multiples of pi or of angles in degrees (\"cos(pi/6)\", \"sin(45°)\"), and the library functions (binomial, factorial, sum, integrate, diff, det, dot, cross, norm2, ...), whose value is a real algebraic number (values outside the square-root field, such as \"cos(pi/8)\" or \"cos(2*pi/7)\", are computed in a number field built for the problem)";
 
 /// What a number field expects, for type errors.
 const EXPECTED: &str =
@@ -298,11 +298,39 @@ impl JsonSchema for RationalNumber {
     }
 }
 
+/// The nearest `f64` of a real algebraic number: the midpoint of an isolating interval narrowed
+/// to a relative width of `2^-60` (an irrational number is not zero, so the interval separates
+/// from 0).
+fn algebraic_f64(a: &Algebraic) -> f64 {
+    if let Some(q) = a.to_rational() {
+        return q.to_f64();
+    }
+    let mut bits = 64;
+    loop {
+        let (lo, hi) = a.enclosure(bits);
+        let scale = lo.abs().min(hi.abs());
+        if lo.signum() == hi.signum()
+            && (hi.clone() - &lo) * Rational::from_integer(1i64 << 60) <= scale
+        {
+            return ((lo + hi) * Rational::new(1, 2).expect("2 != 0")).to_f64();
+        }
+        bits *= 2;
+    }
+}
+
 /// The nearest `f64` of a number written in any form; an error if it is not finite.
 fn finite_f64(w: Written) -> Result<f64, String> {
     let (x, text) = match w {
         Written::Float(t) => (t.parse::<f64>().map_err(|e| format!("{t}: {e}"))?, t),
-        Written::Integer(t) | Written::Text(t) => (parse_radical(&t)?.to_f64(), t),
+        Written::Integer(t) | Written::Text(t) => {
+            let x = match parse_radical(&t) {
+                Ok(r) => r.to_f64(),
+                // A value outside the radical field (`"cos(2*pi/7)"`) is rounded from its
+                // algebraic value; a string that is no number keeps the radical reading's error.
+                Err(e) => algebraic_f64(&parse_algebraic(&t).map_err(|_| e)?),
+            };
+            (x, t)
+        }
     };
     if x.is_finite() {
         Ok(x)

@@ -390,7 +390,7 @@ mod tests {
     use super::*;
 
     fn exact(text: &str) -> Result<ExactAnswer, Error> {
-        super::exact(crate::solve::parse(text)?)
+        super::exact(crate::solve::parse(text)?, |x: &ExactNumber| x.0.clone())
     }
 
     #[test]

@@ -421,4 +421,44 @@ mod tests {
         assert_eq!(sum.to_rational(), Some(Rational::from_integer(-1)));
         assert_eq!(sum.to_string(), "-1");
     }
+
+    use proptest::prelude::*;
+
+    /// A random element `a + b t + c t^2` of the cubic field `Q(cos(2 pi/7))` and the same
+    /// number computed by [`Algebraic`] arithmetic (resultants), an independent path.
+    fn both(f: &Arc<NumberField>, a: i64, b: i64, c: i64, d: i64) -> (FieldElement, Algebraic) {
+        let q = |n: i64| Rational::new(n, d).unwrap();
+        let p = UPoly::from_coeffs(vec![q(a), q(b), q(c)]);
+        let t = f.generator().clone();
+        let want = Algebraic::from_rational(q(a))
+            + t.clone() * Algebraic::from_rational(q(b))
+            + t.clone() * t * Algebraic::from_rational(q(c));
+        (FieldElement::new(f, &p), want)
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(32))]
+
+        #[test]
+        fn field_arithmetic_and_order_agree_with_algebraic_numbers(
+            a in -9i64..10, b in -9i64..10, c in -9i64..10, d in 1i64..6,
+            e in -9i64..10, g in -9i64..10, h in -9i64..10, k in 1i64..6,
+        ) {
+            let f = field("cos(2*pi/7)");
+            let (x, ax) = both(&f, a, b, c, d);
+            let (y, ay) = both(&f, e, g, h, k);
+            prop_assert_eq!(x.to_algebraic(), ax.clone());
+            prop_assert_eq!((x.clone() + &y).to_algebraic(), ax.clone() + ay.clone());
+            prop_assert_eq!((x.clone() * &y).to_algebraic(), ax.clone() * ay.clone());
+            prop_assert_eq!(x.partial_cmp(&y), Some(ax.cmp(&ay)));
+            prop_assert_eq!(x.sign(), ax.sign());
+            prop_assert_eq!(x == y, ax == ay);
+            if !y.is_zero() {
+                prop_assert_eq!((x.clone() / &y).to_algebraic(), ax.clone() / ay.clone());
+            }
+            let (lo, hi) = x.enclosure(40);
+            let v = x.to_f64();
+            prop_assert!(lo.to_f64() <= v && v <= hi.to_f64());
+        }
+    }
 }
