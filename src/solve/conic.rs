@@ -47,9 +47,9 @@
 //! says so in `type_note` instead of failing. Poles come from the same subdivision, which stops
 //! where f64 cannot halve an interval.
 
-use super::number::{Coords, ExactNumber, FloatNumber};
+use super::number::{Coords, ExactNumber, FieldNumber, FloatNumber};
 use super::scalar::{unit_zeros, Scalar, DEFAULT_WIDTH_LOG2};
-use super::{parse, FloatKind, Kind};
+use super::{parse, FloatKind, Kind, Problem};
 use crate::Error;
 use exactcheck_core::conic::{cone_surface, ConeSection, DegenerateConic, SectionType};
 use exactcheck_core::roots::{self, IsolatedRoot};
@@ -155,10 +155,13 @@ fn problem<N, T: Scalar + Sqrt>(
 
 /// `1/sqrt 2` in a scalar with square roots: `sqrt(1/2)` ([`Radical`] holds it exactly; in f64
 /// it is `0.5f64.sqrt()`).
-fn inv_sqrt2<T: Scalar + Sqrt>() -> T {
-    T::from_rational(&Rational::new(1, 2).expect("2 != 0"))
+///
+/// `like` is a number of the computation: in a number field, `1/2` is taken in its field, to
+/// which the problem's reading adjoined `sqrt(2)` ([`ConicKind`]'s `compute_in_field`).
+fn inv_sqrt2<T: Scalar + Sqrt>(like: &T) -> T {
+    like.rational_like(&Rational::new(1, 2).expect("2 != 0"))
         .sqrt()
-        .expect("1/2 has a square root in the scalars with square roots (Radical, f64)")
+        .expect("1/2 has a square root in the scalars with square roots (Radical, f64, a number field with sqrt 2)")
 }
 
 // ------------------------------------------------------------------ the computation
@@ -331,7 +334,7 @@ fn rulings<T: Scalar + Sqrt>(
                     } else {
                         exactcheck_core::conic::ConePiece::Minus
                     },
-                    &inv_sqrt2::<T>(),
+                    &inv_sqrt2(a),
                 );
                 let g = v
                     .directions()
@@ -359,7 +362,8 @@ fn rulings<T: Scalar + Sqrt>(
 
 /// The section by `plane`, computed in `T`, poles refined to `width`.
 pub(crate) fn compute<T: Scalar + Sqrt>(plane: Plane<T>, width: &T) -> Result<Computed<T>, Error> {
-    let section = ConeSection::new(plane, &inv_sqrt2::<T>()).map_err(|e| {
+    let inv_sqrt2 = inv_sqrt2(&plane.normal.x);
+    let section = ConeSection::new(plane, &inv_sqrt2).map_err(|e| {
         // `problem` refuses a zero normal, so in f64 this is a non-zero normal whose squares
         // underflow to zero.
         Error::Input(if T::EXACT {
@@ -380,7 +384,7 @@ pub(crate) fn compute<T: Scalar + Sqrt>(plane: Plane<T>, width: &T) -> Result<Co
             })
             .collect();
         PieceData {
-            directions: cone_surface(p.piece, &inv_sqrt2::<T>())
+            directions: cone_surface(p.piece, &inv_sqrt2)
                 .directions()
                 .control_points()
                 .to_vec(),
@@ -600,8 +604,11 @@ fn render<T: Scalar + Sqrt, V>(
     }
 }
 
-fn exact(input: Input<ExactNumber>) -> Result<Answer<String>, Error> {
-    let (plane, width) = problem(&input, |x| x.0.clone())?;
+fn exact<N, T: Scalar + Sqrt>(
+    input: Input<N>,
+    num: impl Fn(&N) -> T,
+) -> Result<Answer<String>, Error> {
+    let (plane, width) = problem(&input, num)?;
     let c = compute(plane, &width)?;
     let by_angle = c.angle;
     for (p, cone) in c.pieces.iter().zip(["+", "-"]) {
@@ -674,7 +681,13 @@ impl Kind for ConicKind {
     type Answer = Answer<String>;
 
     fn compute(input: Self::Input) -> Result<Self::Answer, Error> {
-        exact(input)
+        exact(input, |x: &ExactNumber| x.0.clone())
+    }
+
+    /// The cone `x^2 + y^2 = z^2` needs `1/sqrt(2)`: `sqrt(2)` is adjoined to the field.
+    fn compute_in_field(problem: &Problem) -> Result<Self::Answer, Error> {
+        let input: Input<FieldNumber> = problem.input_in_field(&["sqrt(2)"])?;
+        exact(input, |x: &FieldNumber| x.0.clone())
     }
 }
 
@@ -685,13 +698,12 @@ impl FloatKind for ConicKind {
     fn compute_float(input: Self::FloatInput) -> Result<Self::FloatAnswer, Error> {
         float_answer(input)
     }
+}
 
-    fn attach(
-        answer: &mut Self::Answer,
-        float: Result<Self::FloatAnswer, Error>,
-    ) -> Result<(), Error> {
-        answer.float = Some(Box::new(float?));
-        Ok(())
+impl super::FloatSlot for Answer<String> {
+    type Float = Answer<f64>;
+    fn float_slot(&mut self) -> &mut Option<Box<Answer<f64>>> {
+        &mut self.float
     }
 }
 
@@ -717,11 +729,14 @@ mod tests {
     fn inv_sqrt2_is_the_one_of_each_scalar() {
         use exactcheck_core::Field;
         assert_eq!(
-            inv_sqrt2::<Radical>(),
+            inv_sqrt2(&Radical::from(&Rational::ONE)),
             Radical::sqrt_of(2).inv().expect("sqrt 2 is not zero")
         );
-        assert_eq!(inv_sqrt2::<Radical>().to_string(), "sqrt(2)/2");
-        assert_eq!(inv_sqrt2::<f64>().to_bits(), 0.5f64.sqrt().to_bits());
+        assert_eq!(
+            inv_sqrt2(&Radical::from(&Rational::ONE)).to_string(),
+            "sqrt(2)/2"
+        );
+        assert_eq!(inv_sqrt2(&1.0f64).to_bits(), 0.5f64.sqrt().to_bits());
     }
 
     #[test]

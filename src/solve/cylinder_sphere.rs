@@ -456,9 +456,11 @@ impl FloatKind for CylinderSphereKind {
     fn compute_float(input: Self::FloatInput) -> Result<FloatAnswer, Error> {
         float_answer(input)
     }
+}
 
-    fn attach(answer: &mut ExactAnswer, float: Result<FloatAnswer, Error>) -> Result<(), Error> {
-        answer.float = Some(float?);
+impl super::Attach<FloatAnswer> for ExactAnswer {
+    fn attach(&mut self, float: Result<FloatAnswer, Error>) -> Result<(), Error> {
+        self.float = Some(float?);
         Ok(())
     }
 }

@@ -1,6 +1,6 @@
 //! Reading a problem: the input file (the one reader of every command's input files), the
 //! problem's envelope (JSON syntax, nesting depth, the `"kind"`, the radicands of all its exact
-//! numbers together), and its typed input.
+//! numbers together, the values that leave the radical field), and its typed input.
 //!
 //! The envelope is read once into a [`Value`] ([`Problem::read`]). The typed input is read from
 //! the text itself, not from that value: a [`Value`] forgets a repeated field (the last one
@@ -86,28 +86,50 @@ pub fn problem_kind(text: &str) -> Result<String, Error> {
     envelope(without_bom(text)).map(|(_, kind)| kind)
 }
 
-/// The `radicands` limit on all the exact numbers of a problem together: each may be within
-/// it while the field the answer is computed in (spanned by all of them) is not. Strings that do
-/// not parse are left to the typed read, which names their field.
+/// The strings of a JSON value, in document order.
+fn strings<'a>(v: &'a Value, out: &mut Vec<&'a str>) {
+    match v {
+        Value::String(s) => out.push(s),
+        Value::Array(items) => items.iter().for_each(|x| strings(x, out)),
+        Value::Object(map) => map.values().for_each(|x| strings(x, out)),
+        _ => {}
+    }
+}
+
+/// The scan of the exact numbers of a problem together: the `radicands` limit on its radicals
+/// (each may be within it while the field the answer is computed in, spanned by all of them, is
+/// not), and, when a value leaves the radical field (`"cos(pi/8)"`), the values of all its
+/// number strings as real algebraic numbers, from which the problem's number field is built.
+/// Strings that do not parse are left to the typed read, which names their field.
 ///
 /// # Errors
-/// [`Error::Limit`] of `radicands`.
-fn check_radicands_together(v: &Value) -> Result<(), Error> {
-    fn strings<'a>(v: &'a Value, out: &mut Vec<&'a str>) {
-        match v {
-            Value::String(s) => out.push(s),
-            Value::Array(items) => items.iter().for_each(|x| strings(x, out)),
-            Value::Object(map) => map.values().for_each(|x| strings(x, out)),
-            _ => {}
-        }
-    }
+/// [`Error::Limit`] of `radicands`, or of `algebraic-degree` for a value past it.
+fn scan_numbers(v: &Value) -> Result<Option<Vec<exactcheck_exact::Algebraic>>, Error> {
     let mut texts = Vec::new();
     strings(v, &mut texts);
-    let values: Vec<exactcheck_exact::Radical> = texts
-        .iter()
-        .filter_map(|s| number::parse_radical(s).ok())
-        .collect();
-    exactcheck_exact::Radical::check_radicands_together(&values).map_err(Error::Limit)
+    let mut radicals = Vec::new();
+    let mut leaves = false;
+    for s in &texts {
+        match number::parse_radical(s) {
+            Ok(r) => radicals.push(r),
+            Err(_) => match number::parse_algebraic(s) {
+                Ok(_) => leaves = true,
+                Err(number::AlgebraicRefusal::Limit(m)) => return Err(Error::Input(m)),
+                Err(number::AlgebraicRefusal::Other(_)) => {}
+            },
+        }
+    }
+    exactcheck_exact::Radical::check_radicands_together(&radicals).map_err(Error::Limit)?;
+    if !leaves {
+        return Ok(None);
+    }
+    Ok(Some(
+        texts
+            .iter()
+            .filter_map(|s| number::parse_algebraic(s).ok())
+            .filter(|a| !a.is_rational())
+            .collect(),
+    ))
 }
 
 /// A problem whose envelope was read and checked: valid JSON within the `depth` limit, an
@@ -116,6 +138,9 @@ pub struct Problem<'a> {
     /// The text, without a byte-order mark.
     text: &'a str,
     kind: String,
+    /// The irrational values of the number strings, when one of them leaves the radical field
+    /// (the problem is then computed in the number field they generate).
+    algebraic: Option<Vec<exactcheck_exact::Algebraic>>,
 }
 
 impl<'a> Problem<'a> {
@@ -126,13 +151,46 @@ impl<'a> Problem<'a> {
     pub fn read(text: &'a str) -> Result<Problem<'a>, Error> {
         let text = without_bom(text);
         let (value, kind) = envelope(text)?;
-        check_radicands_together(&value)?;
-        Ok(Problem { text, kind })
+        let algebraic = scan_numbers(&value)?;
+        Ok(Problem {
+            text,
+            kind,
+            algebraic,
+        })
     }
 
     /// The problem's `"kind"`.
     pub fn kind(&self) -> &str {
         &self.kind
+    }
+
+    /// The irrational values of the problem's number strings when one of them leaves the radical
+    /// field, `None` otherwise.
+    pub(crate) fn algebraic_values(&self) -> Option<&[exactcheck_exact::Algebraic]> {
+        self.algebraic.as_deref()
+    }
+
+    /// The problem read into an input type whose numbers are [`super::number::FieldNumber`]s:
+    /// the number field of the problem's algebraic values and of `constants` (those a kind
+    /// computes with, such as `sqrt(2)`) is built first ([`super::field::ProblemField`]).
+    ///
+    /// # Errors
+    /// As [`Problem::input`]; [`Error::Limit`] of `algebraic-degree` when the field's degree is
+    /// past it.
+    pub(crate) fn input_in_field<T: DeserializeOwned>(
+        &self,
+        constants: &[&str],
+    ) -> Result<T, Error> {
+        let extras: Vec<exactcheck_exact::Algebraic> = constants
+            .iter()
+            .map(|c| {
+                c.parse()
+                    .expect("a kind's field constants are constant formulas")
+            })
+            .collect();
+        let values = self.algebraic.as_deref().unwrap_or(&[]);
+        let field = std::sync::Arc::new(super::field::ProblemField::build(values, &extras)?);
+        super::field::read_in(&field, || typed(self.text))
     }
 
     /// The problem read into an input type; every error is one line naming the field path.

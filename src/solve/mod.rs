@@ -22,6 +22,7 @@
 pub mod conic;
 pub mod cylinder_sphere;
 pub mod depth;
+pub(crate) mod field;
 pub mod finite;
 pub mod input;
 pub mod number;
@@ -69,9 +70,20 @@ pub(crate) trait Kind {
     /// # Errors
     /// [`Error::Input`] naming the field for bad input or degenerate geometry; [`Error::Limit`].
     fn compute(input: Self::Input) -> Result<Self::Answer, Error>;
+    /// Answers a problem whose values leave the radical field (`"cos(pi/8)"`): a kind that
+    /// accepts exact numbers reads them into the problem's number field
+    /// ([`Problem::input_in_field`]) and computes in its scalar. The default, for kinds whose
+    /// exact input is rational, reads [`Kind::Input`], which refuses such a value naming it.
+    ///
+    /// # Errors
+    /// As [`Kind::compute`].
+    fn compute_in_field(problem: &Problem) -> Result<Self::Answer, Error> {
+        Self::compute(problem.input()?)
+    }
 }
 
-/// A kind answered in f64 too (`--float`), and both ways side by side (`--both`).
+/// A kind answered in f64 too (`--float`), and both ways side by side (`--both`, where its
+/// exact answer takes the f64 one by [`Attach`]).
 pub(crate) trait FloatKind: Kind {
     /// The input as `--float` reads it.
     type FloatInput: DeserializeOwned;
@@ -82,14 +94,31 @@ pub(crate) trait FloatKind: Kind {
     /// # Errors
     /// As [`Kind::compute`], and [`Error::Input`] where f64 cannot hold the numbers.
     fn compute_float(input: Self::FloatInput) -> Result<Self::FloatAnswer, Error>;
-    /// `--both`: puts the f64 answer (or the f64 computation's failure) into the exact answer.
+}
+
+/// An exact answer that takes the f64 answer of `--both` (or the f64 computation's failure).
+pub(crate) trait Attach<F> {
+    /// Puts the f64 answer into the exact answer.
     ///
     /// # Errors
-    /// The f64 computation's failure, where the kind does not report it in the answer.
-    fn attach(
-        answer: &mut Self::Answer,
-        float: Result<Self::FloatAnswer, Error>,
-    ) -> Result<(), Error>;
+    /// The f64 computation's failure, where the answer does not report it.
+    fn attach(&mut self, float: Result<F, Error>) -> Result<(), Error>;
+}
+
+/// An exact answer with a slot for the f64 answer of `--both`, which the f64 computation's
+/// failure fails as a whole: [`Attach`] follows.
+pub(crate) trait FloatSlot {
+    /// The f64 answer.
+    type Float;
+    /// The slot (`float` in the JSON answer).
+    fn float_slot(&mut self) -> &mut Option<Box<Self::Float>>;
+}
+
+impl<A: FloatSlot> Attach<A::Float> for A {
+    fn attach(&mut self, float: Result<A::Float, Error>) -> Result<(), Error> {
+        *self.float_slot() = Some(Box::new(float?));
+        Ok(())
+    }
 }
 
 /// A kind of `solve` in the registry ([`kinds`]): its name, how it is answered, its schema.
@@ -107,9 +136,13 @@ fn schema_of<T: JsonSchema>() -> schemars::Schema {
     schemars::schema_for!(T)
 }
 
-/// The exact answer of a problem.
+/// The exact answer of a problem: in the problem's number field when a value leaves the radical
+/// field, else as the kind reads exact numbers (rationals, radicals).
 fn exact_answer<K: Kind>(problem: &Problem) -> Result<K::Answer, Error> {
-    K::compute(problem.input()?)
+    match problem.algebraic_values() {
+        None => K::compute(problem.input()?),
+        Some(_) => K::compute_in_field(problem),
+    }
 }
 
 /// The f64 answer of a problem.
@@ -119,13 +152,16 @@ fn float_answer<K: FloatKind>(problem: &Problem) -> Result<K::FloatAnswer, Error
 
 /// The driver of a kind with both modes: the exact answer, the f64 one, or (`--both`) the
 /// exact answer (computed first: its errors are the answer's) with the f64 one attached.
-fn answer_both_ways<K: FloatKind>(problem: &Problem, mode: Mode) -> Result<Value, Error> {
+fn answer_both_ways<K: FloatKind>(problem: &Problem, mode: Mode) -> Result<Value, Error>
+where
+    K::Answer: Attach<K::FloatAnswer>,
+{
     match mode {
         Mode::Exact => to_json(&exact_answer::<K>(problem)?, mode),
         Mode::Float => to_json(&float_answer::<K>(problem)?, mode),
         Mode::Both => {
             let mut answer = exact_answer::<K>(problem)?;
-            K::attach(&mut answer, float_answer::<K>(problem))?;
+            answer.attach(float_answer::<K>(problem))?;
             to_json(&answer, mode)
         }
     }
@@ -138,7 +174,10 @@ fn answer_exactly<K: Kind>(problem: &Problem, mode: Mode) -> Result<Value, Error
 
 impl KindEntry {
     /// A kind answered exactly and in f64.
-    fn both_ways<K: FloatKind>() -> KindEntry {
+    fn both_ways<K: FloatKind>() -> KindEntry
+    where
+        K::Answer: Attach<K::FloatAnswer>,
+    {
         KindEntry {
             name: K::NAME,
             exact_only: None,

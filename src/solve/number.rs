@@ -16,6 +16,9 @@
 //!
 //! * [`ExactNumber`]: any exact number (radical field).
 //! * [`RationalNumber`]: an exact rational (irrational input is refused).
+//! * [`FieldNumber`]: any exact number of a problem whose values leave the radical field
+//!   (`"cos(pi/8)"`, `"cos(2*pi/7)"`), as an element of the problem's number field
+//!   ([`super::field`]).
 //! * [`FloatNumber`]: `--float` input: integers, floating literals and exact strings, converted
 //!   to the nearest `f64`; non-finite results (`"10^400"`, `1e400`) are refused.
 //!
@@ -27,8 +30,10 @@
 //!   every mode), finite.
 
 use exactcheck_core::OrderedField;
+use exactcheck_exact::algebraic::FieldElement;
 use exactcheck_exact::expr::library::{self, Val};
-use exactcheck_exact::{Radical, Rational};
+use exactcheck_exact::expr::ExprError;
+use exactcheck_exact::{Algebraic, Radical, Rational};
 use schemars::{json_schema, JsonSchema, Schema, SchemaGenerator};
 use serde::de::{Deserialize, Deserializer, Error as _};
 use serde_json::Value;
@@ -46,7 +51,7 @@ enum Written {
 
 /// The number strings of the contract, in one sentence: every schema description of a number
 /// field is built from it, so that the schemas state the language the parser reads.
-pub(crate) const EXACT_STRING: &str = "a string in the exact expression language of prove: integers, fractions \"-3/4\", decimals \"0.1\" (exactly 1/10) and \"2.5e-3\", + - * / ^ and parentheses, sqrt with nested radicals that denest (\"1/sqrt(2)\", \"sqrt(3 + 2*sqrt(2))\"), sin, cos and tan of rational multiples of pi or of angles in degrees (\"cos(pi/6)\", \"sin(45°)\"), and the library functions (binomial, factorial, sum, integrate, diff, det, dot, cross, norm2, ...), whose value is a constant of the square-root field";
+pub(crate) const EXACT_STRING: &str = "a string in the exact expression language of prove: integers, fractions \"-3/4\", decimals \"0.1\" (exactly 1/10) and \"2.5e-3\", + - * / ^ and parentheses, sqrt with nested radicals that denest (\"1/sqrt(2)\", \"sqrt(3 + 2*sqrt(2))\"), sin, cos and tan of rational multiples of pi or of angles in degrees (\"cos(pi/6)\", \"sin(45°)\"), and the library functions (binomial, factorial, sum, integrate, diff, det, dot, cross, norm2, ...), whose value is a real algebraic number (values outside the square-root field, such as \"cos(pi/8)\" or \"cos(2*pi/7)\", are computed in a number field built for the problem)";
 
 /// What a number field expects, for type errors.
 const EXPECTED: &str =
@@ -101,6 +106,39 @@ pub(crate) fn parse_radical(text: &str) -> Result<Radical, String> {
         Val::Scalar(e) => exactcheck_exact::expr::eval_lowered::<Radical>(&e)
             .map_err(|err| quoted(Radical::refusal(&e, err).to_string())),
         v => Err(quoted(format!("{} where a number is expected", v.shape()))),
+    }
+}
+
+/// Why a number string has no real algebraic value.
+#[derive(Debug)]
+pub(crate) enum AlgebraicRefusal {
+    /// A value's degree is past the `algebraic-degree` limit: the message, naming the limit.
+    Limit(String),
+    /// Anything else (not a constant, bad syntax), in one line.
+    Other(String),
+}
+
+/// The exact value of a number string as a real algebraic number (the same reading as
+/// [`parse_radical`], in the field of all real algebraic numbers): used for the values that
+/// leave the radical field.
+pub(crate) fn parse_algebraic(text: &str) -> Result<Algebraic, AlgebraicRefusal> {
+    let other = |m: String| AlgebraicRefusal::Other(format!("{text:?}: {m}"));
+    match library::resolve(text).map_err(|e| other(e.to_string()))? {
+        Val::Scalar(e) => {
+            exactcheck_exact::expr::eval_lowered::<Algebraic>(&e).map_err(|err| {
+                // The degree of cos(2*pi/q) is checked inside the function library, whose
+                // refusal carries the limit's message rather than the limit error itself.
+                let degree = exactcheck_core::limits::ALGEBRAIC_DEGREE.name();
+                match err {
+                    ExprError::Limit { .. } => AlgebraicRefusal::Limit(format!("{text:?}: {err}")),
+                    ExprError::BadCall { ref why, .. } if why.contains(degree) => {
+                        AlgebraicRefusal::Limit(format!("{text:?}: {err}"))
+                    }
+                    err => other(err.to_string()),
+                }
+            })
+        }
+        v => Err(other(format!("{} where a number is expected", v.shape()))),
     }
 }
 
@@ -211,6 +249,27 @@ impl JsonSchema for ExactNumber {
     }
 }
 
+/// An exact number of a problem whose values leave the radical field: its value as an element
+/// of the problem's number field, built before the typed read ([`super::field`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct FieldNumber(pub FieldElement);
+
+impl<'de> Deserialize<'de> for FieldNumber {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        match written(d)? {
+            Written::Integer(t) | Written::Text(t) => {
+                let value = parse_algebraic(&t).map_err(|e| match e {
+                    AlgebraicRefusal::Limit(m) | AlgebraicRefusal::Other(m) => D::Error::custom(m),
+                })?;
+                super::field::current_element(&value)
+                    .map(FieldNumber)
+                    .map_err(D::Error::custom)
+            }
+            Written::Float(t) => Err(D::Error::custom(float_refused(&t))),
+        }
+    }
+}
+
 /// An exact rational number of the problem.
 #[derive(Clone, Debug, PartialEq)]
 pub struct RationalNumber(pub Rational);
@@ -239,11 +298,39 @@ impl JsonSchema for RationalNumber {
     }
 }
 
+/// The nearest `f64` of a real algebraic number: the midpoint of an isolating interval narrowed
+/// to a relative width of `2^-60` (an irrational number is not zero, so the interval separates
+/// from 0).
+fn algebraic_f64(a: &Algebraic) -> f64 {
+    if let Some(q) = a.to_rational() {
+        return q.to_f64();
+    }
+    let mut bits = 64;
+    loop {
+        let (lo, hi) = a.enclosure(bits);
+        let scale = lo.abs().min(hi.abs());
+        if lo.signum() == hi.signum()
+            && (hi.clone() - &lo) * Rational::from_integer(1i64 << 60) <= scale
+        {
+            return ((lo + hi) * Rational::new(1, 2).expect("2 != 0")).to_f64();
+        }
+        bits *= 2;
+    }
+}
+
 /// The nearest `f64` of a number written in any form; an error if it is not finite.
 fn finite_f64(w: Written) -> Result<f64, String> {
     let (x, text) = match w {
         Written::Float(t) => (t.parse::<f64>().map_err(|e| format!("{t}: {e}"))?, t),
-        Written::Integer(t) | Written::Text(t) => (parse_radical(&t)?.to_f64(), t),
+        Written::Integer(t) | Written::Text(t) => {
+            let x = match parse_radical(&t) {
+                Ok(r) => r.to_f64(),
+                // A value outside the radical field (`"cos(2*pi/7)"`) is rounded from its
+                // algebraic value; a string that is no number keeps the radical reading's error.
+                Err(e) => algebraic_f64(&parse_algebraic(&t).map_err(|_| e)?),
+            };
+            (x, t)
+        }
     };
     if x.is_finite() {
         Ok(x)

@@ -1,7 +1,8 @@
 //! `solve` kind `plane_plane`: the intersection line of two planes given in
 //! normal form `{normal, point}`.
 //!
-//! Exact mode reads the numbers into the radical field (so `"sqrt(2)/2"` is exact) and runs the
+//! Exact mode reads the numbers into the radical field (so `"sqrt(2)/2"` is exact), or into the
+//! problem's number field when a value leaves it (`"cos(pi/8)"`), and runs the
 //! construction of `exactcheck_core::planes`, which needs no unit normals: the outcome (`line`,
 //! `parallel`, `coincident`) is decided by exact zero tests, the point is the one nearest the
 //! origin, `Q = [(d1|n2|^2 - d2 n1.n2) n1 + (d2|n1|^2 - d1 n1.n2) n2] / |n1 x n2|^2`, and the
@@ -19,12 +20,12 @@
 //!
 //! A zero normal is an input error naming the field (`planes[1].normal: zero vector`).
 
-use super::number::{Coords, ExactNumber, FloatNumber};
-use super::{finite, FloatKind, Kind};
+use super::number::{Coords, ExactNumber, FieldNumber, FloatNumber};
+use super::scalar::Scalar;
+use super::{finite, FloatKind, Kind, Problem};
 use crate::Error;
 use exactcheck_core::planes::{intersect, Plane, PlanePair};
-use exactcheck_core::{Field, OrderedField, Ring, Sign, Sqrt, Vec3};
-use exactcheck_exact::Radical;
+use exactcheck_core::{Ring, Sign, Sqrt, Vec3};
 use exactcheck_float::wabis::{interction_line_of_2_areas, length, scale, V3};
 use schemars::{json_schema, JsonSchema, Schema, SchemaGenerator};
 use serde::de::{Deserializer, Error as _};
@@ -122,7 +123,8 @@ pub(crate) struct ExactAnswer {
     /// `direction / |direction|`: radicals, or expressions `c/sqrt(k)` (see
     /// `unit_direction_in_field`).
     unit_direction: Option<[String; 3]>,
-    /// Whether `unit_direction` is given as numbers of the radical field.
+    /// Whether `unit_direction` is given as numbers of the field the problem is computed in
+    /// (the radical field, or the problem's number field).
     unit_direction_in_field: Option<bool>,
     /// Exact check: the point satisfies both plane equations.
     on_both_planes: Option<bool>,
@@ -179,16 +181,20 @@ pub(crate) struct FloatAnswer {
 
 const FLOAT_METHOD: &str = "the published JavaScript InterctionLineOf2Areas ported to f64 operation for operation (exactcheck_float::wabis), after normalising each normal in f64 (V3.Scale(n, 1/V3.Length(n))) as it requires; q is n2 x n1 normalised; null (parallel or coincident planes) is outcome parallel";
 
-fn strings(v: &Vec3<Radical>) -> [String; 3] {
+fn strings<T: Scalar>(v: &Vec3<T>) -> [String; 3] {
     [v.x.to_string(), v.y.to_string(), v.z.to_string()]
 }
 
-fn approx(v: &Vec3<Radical>) -> [f64; 3] {
-    [v.x.to_f64() + 0.0, v.y.to_f64() + 0.0, v.z.to_f64() + 0.0]
+fn approx<T: Scalar>(v: &Vec3<T>) -> [f64; 3] {
+    [v.x.approx(), v.y.approx(), v.z.approx()]
 }
 
-fn exact(input: Input<ExactNumber>) -> Result<ExactAnswer, Error> {
-    let [p1, p2] = planes(&input, |x| x.0.clone())?;
+/// The exact answer, in the radical field or in the problem's number field.
+fn exact<N, T: Scalar + Sqrt>(
+    input: Input<N>,
+    num: impl Fn(&N) -> T,
+) -> Result<ExactAnswer, Error> {
+    let [p1, p2] = planes(&input, num)?;
     let none = |outcome| ExactAnswer {
         kind: "plane_plane",
         mode: "exact",
@@ -240,7 +246,7 @@ fn exact(input: Input<ExactNumber>) -> Result<ExactAnswer, Error> {
                                 .square()
                                 .checked_div(&k)
                                 .expect("|q|^2 != 0 for the non-zero direction of a line")
-                                .to_f64()
+                                .approx()
                                 .sqrt();
                             if c.sign() == Sign::Negative {
                                 -magnitude
@@ -308,7 +314,12 @@ impl Kind for PlanePlaneKind {
     type Answer = ExactAnswer;
 
     fn compute(input: Self::Input) -> Result<ExactAnswer, Error> {
-        exact(input)
+        exact(input, |x: &ExactNumber| x.0.clone())
+    }
+
+    fn compute_in_field(problem: &Problem) -> Result<ExactAnswer, Error> {
+        let input: Input<FieldNumber> = problem.input_in_field(&[])?;
+        exact(input, |x: &FieldNumber| x.0.clone())
     }
 }
 
@@ -319,13 +330,16 @@ impl FloatKind for PlanePlaneKind {
     fn compute_float(input: Self::FloatInput) -> Result<FloatAnswer, Error> {
         float_answer(input)
     }
+}
 
-    /// `--both`: the float answer and whether its outcome agrees, or the float computation's
-    /// failure as a note (it does not take the exact answer with it). Near-parallel rounding
-    /// makes the published function return a finite `line` for some exactly parallel or
-    /// coincident planes, and NaN for others (`1 - r^2 = 0` with `n2 x n1` not rounded to
-    /// zero).
-    fn attach(answer: &mut ExactAnswer, float: Result<FloatAnswer, Error>) -> Result<(), Error> {
+/// `--both`: the float answer and whether its outcome agrees, or the float computation's
+/// failure as a note (it does not take the exact answer with it). Near-parallel rounding
+/// makes the published function return a finite `line` for some exactly parallel or
+/// coincident planes, and NaN for others (`1 - r^2 = 0` with `n2 x n1` not rounded to
+/// zero).
+impl super::Attach<FloatAnswer> for ExactAnswer {
+    fn attach(&mut self, float: Result<FloatAnswer, Error>) -> Result<(), Error> {
+        let answer = self;
         let float = float.and_then(|f| {
             finite::check(&f, finite::Approx::Refused)
                 .map(|_| f)
@@ -375,7 +389,7 @@ mod tests {
     use super::*;
 
     fn exact(text: &str) -> Result<ExactAnswer, Error> {
-        super::exact(crate::solve::parse(text)?)
+        super::exact(crate::solve::parse(text)?, |x: &ExactNumber| x.0.clone())
     }
 
     #[test]

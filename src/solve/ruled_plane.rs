@@ -51,14 +51,13 @@
 //! `m + n <= 60` ([`MAX_DEGREE`]): the product rule uses binomial coefficients `C(m+n, k)` in
 //! 64-bit integers, which overflow beyond `m + n = 67`.
 
-use super::number::{Coords, ExactNumber, FloatNumber};
+use super::number::{Coords, ExactNumber, FieldNumber, FloatNumber};
 use super::scalar::{unit_zeros, Scalar, DEFAULT_WIDTH_LOG2};
-use super::{FloatKind, Kind};
+use super::{FloatKind, Kind, Problem};
 use crate::Error;
 use exactcheck_core::roots::{self, IsolatedRoot};
 use exactcheck_core::ruled::{Plane, PlaneSection, RuledSurface};
 use exactcheck_core::{Bernstein, OrderedField, RationalBezierCurve, Sign, Vec3};
-use exactcheck_exact::Radical;
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
 
@@ -378,11 +377,11 @@ fn render<T: Scalar, V>(s: &Section<T>, mode: &'static str, v: impl Fn(&T) -> V)
     }
 }
 
-fn exact_answer<T: Scalar>(
-    input: &Input<ExactNumber>,
-    lift: impl Fn(&Radical) -> T,
+fn exact_answer<N, T: Scalar>(
+    input: &Input<N>,
+    lift: impl Fn(&N) -> T,
 ) -> Result<Answer<String>, Error> {
-    let (surface, plane, width) = problem(input, |x| lift(&x.0))?;
+    let (surface, plane, width) = problem(input, lift)?;
     let s = compute(&surface, &plane, &width);
     Ok(render(&s, "exact", ToString::to_string))
 }
@@ -397,12 +396,12 @@ fn exact(input: Input<ExactNumber>) -> Result<Answer<String>, Error> {
         .chain(input.precision.iter());
     // Rational input runs over the (faster) rationals; radicals over the radical field.
     if all.into_iter().all(|x| x.0.is_rational()) {
-        exact_answer(&input, |x| {
-            x.to_rational()
+        exact_answer(&input, |x: &ExactNumber| {
+            x.0.to_rational()
                 .expect("is_rational was checked for every number")
         })
     } else {
-        exact_answer(&input, Clone::clone)
+        exact_answer(&input, |x: &ExactNumber| x.0.clone())
     }
 }
 
@@ -435,6 +434,11 @@ impl Kind for RuledPlane {
     fn compute(input: Self::Input) -> Result<Self::Answer, Error> {
         exact(input)
     }
+
+    fn compute_in_field(problem: &Problem) -> Result<Self::Answer, Error> {
+        let input: Input<FieldNumber> = problem.input_in_field(&[])?;
+        exact_answer(&input, |x: &FieldNumber| x.0.clone())
+    }
 }
 
 impl FloatKind for RuledPlane {
@@ -444,13 +448,12 @@ impl FloatKind for RuledPlane {
     fn compute_float(input: Self::FloatInput) -> Result<Self::FloatAnswer, Error> {
         float_answer(input)
     }
+}
 
-    fn attach(
-        answer: &mut Self::Answer,
-        float: Result<Self::FloatAnswer, Error>,
-    ) -> Result<(), Error> {
-        answer.float = Some(Box::new(float?));
-        Ok(())
+impl super::FloatSlot for Answer<String> {
+    type Float = Answer<f64>;
+    fn float_slot(&mut self) -> &mut Option<Box<Answer<f64>>> {
+        &mut self.float
     }
 }
 

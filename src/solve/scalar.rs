@@ -1,5 +1,6 @@
-//! The scalars the `solve` kinds compute in: [`Rational`] and [`Radical`] (exact) and `f64`
-//! (`--float`), behind one trait, [`Scalar`], with what the kinds need beyond a field: the
+//! The scalars the `solve` kinds compute in: [`Rational`], [`Radical`] and [`FieldElement`]
+//! (exact; the last for problems whose values leave the square-root field, computed in one
+//! number field `Q(theta)`) and `f64` (`--float`), behind one trait, [`Scalar`], with what the kinds need beyond a field: the
 //! printed and approximate values, the exact decomposition used to find rational zeros exactly,
 //! and root isolation in `[0, 1]`. The exact search for rational zeros ([`rational_zeros`],
 //! [`unit_zeros`]) lives here too, because it is defined by that decomposition.
@@ -10,6 +11,7 @@
 
 use exactcheck_core::roots::{self, IsolatedRoot, ZeroPolynomial};
 use exactcheck_core::{Bernstein, OrderedField, Sign};
+use exactcheck_exact::algebraic::FieldElement;
 use exactcheck_exact::univariate::{isolate_real_roots_in, UPoly};
 use exactcheck_exact::{Radical, Radicand, Rational};
 
@@ -26,6 +28,12 @@ pub(crate) trait Scalar: OrderedField + std::fmt::Debug + std::fmt::Display {
     fn approx(&self) -> f64;
     /// The rational number as a scalar.
     fn from_rational(q: &Rational) -> Self;
+    /// The rational number `q` in the structure `self` lives in: [`Scalar::from_rational`],
+    /// except in a number field, where `q` is taken as an element of `self`'s field (so that,
+    /// say, its square root is looked for there).
+    fn rational_like(&self, q: &Rational) -> Self {
+        Self::from_rational(q)
+    }
     /// The rational components `p_k` of `p = sum_k sqrt(k) p_k` (power coefficients), or `None`
     /// when the scalar has no exact decomposition (f64).
     fn rational_components(p: &[Self]) -> Option<Vec<Vec<Rational>>>;
@@ -105,6 +113,41 @@ impl Scalar for Radical {
     fn round(&self) -> Option<Self> {
         self.to_rational()
             .map(|q| Radical::from(&round_rational(&q)))
+    }
+}
+
+/// Elements of the problem's number field `Q(theta)` of degree `n`. The decomposition is the
+/// power basis `1, theta, ..., theta^(n-1)`, a basis of the field over `Q`: `p = sum_k theta^k
+/// p_k(t)` with rational `p_k`, so a rational `t0` is a zero of `p` iff it is a zero of every
+/// `p_k`. Roots in `[0, 1]` are isolated by the Bernstein subdivision of the trait's default
+/// (`exactcheck_core::roots::unit_roots`), which needs only exact signs: the field decides
+/// them exactly (interval evaluation at `theta`, zero by the reduced polynomial), so every
+/// isolating interval holds exactly one root, as for [`Radical`].
+impl Scalar for FieldElement {
+    const EXACT: bool = true;
+    fn approx(&self) -> f64 {
+        self.to_f64() + 0.0
+    }
+    fn from_rational(q: &Rational) -> Self {
+        FieldElement::rational(q.clone())
+    }
+    fn rational_like(&self, q: &Rational) -> Self {
+        match self.field() {
+            Some(f) => FieldElement::new(f, &UPoly::constant(q.clone())),
+            None => FieldElement::rational(q.clone()),
+        }
+    }
+    fn rational_components(p: &[Self]) -> Option<Vec<Vec<Rational>>> {
+        let n = p.iter().map(|c| c.poly().degree() + 1).max().unwrap_or(1);
+        Some(
+            (0..n)
+                .map(|k| p.iter().map(|c| c.poly().coeff(k)).collect())
+                .collect(),
+        )
+    }
+    fn round(&self) -> Option<Self> {
+        self.to_rational()
+            .map(|q| FieldElement::rational(round_rational(&q)))
     }
 }
 

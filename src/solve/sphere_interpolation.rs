@@ -2,14 +2,15 @@
 //! the unit sphere through given points at given parameters, via the preimage lines (12) of the
 //! points under delta and a curve meeting each line at its parameter (a nullspace of a linear
 //! system), mapped back by delta. Exact only: rational input runs over Q, radical input over the
-//! radical field. The answer checks exactly that the curve passes through every point.
+//! radical field, values outside it (`"cos(pi/8)"`) over the problem's number field. The answer checks exactly that the curve passes through every point.
 
-use super::number::{Coords, ExactNumber};
+use super::number::{Coords, ExactNumber, FieldNumber};
 use super::scalar::Scalar;
-use super::Kind;
+use super::{Kind, Problem};
 use crate::Error;
 use exactcheck_core::sphere_interpolation::interpolate;
 use exactcheck_core::{Hom4, Vec3};
+use exactcheck_exact::algebraic::FieldElement;
 use exactcheck_exact::{Radical, Rational};
 use schemars::JsonSchema;
 use serde::{Deserialize, Serialize};
@@ -21,14 +22,14 @@ use serde::{Deserialize, Serialize};
     title = "sphere_interpolation",
     description = "Juettler's linear problem: a rational curve on the unit sphere through the given points at the given parameters. Exact only."
 )]
-pub struct Input {
+pub struct Input<N = ExactNumber> {
     /// `"sphere_interpolation"`.
     #[schemars(extend("const" = "sphere_interpolation"))]
     pub kind: String,
     /// Points on the unit sphere, Cartesian.
-    pub points: Vec<Coords<ExactNumber, 3>>,
+    pub points: Vec<Coords<N, 3>>,
     /// One distinct parameter per point.
-    pub params: Vec<ExactNumber>,
+    pub params: Vec<N>,
 }
 
 /// The answer.
@@ -62,6 +63,18 @@ impl Kind for SphereInterpolation {
     const NAME: &'static str = "sphere_interpolation";
     type Input = Input;
     type Answer = Answer;
+
+    fn compute_in_field(problem: &Problem) -> Result<Answer, Error> {
+        let input: Input<FieldNumber> = problem.input_in_field(&[])?;
+        exactcheck_core::limits::POINTS.check_usize(input.points.len())?;
+        let points: Vec<Vec3<FieldElement>> = input
+            .points
+            .into_iter()
+            .map(|Coords([x, y, z])| Vec3::new(x.0, y.0, z.0))
+            .collect();
+        let params: Vec<FieldElement> = input.params.into_iter().map(|t| t.0).collect();
+        solve(&points, &params)
+    }
 
     fn compute(input: Input) -> Result<Answer, Error> {
         exactcheck_core::limits::POINTS.check_usize(input.points.len())?;

@@ -56,7 +56,7 @@ fn answers_of_the_existing_kinds_are_unchanged() {
         assert_eq!(got, want, "{stem}");
         checked += 1;
     }
-    assert_eq!(checked, 36, "every golden answer was compared");
+    assert_eq!(checked, 41, "every golden answer was compared");
 }
 
 fn cylinder_sphere(beta: &str, center: &str, radius: &str, extra: &str) -> String {
@@ -471,5 +471,58 @@ fn every_registered_kind_has_a_schema_a_golden_answer_and_a_malformed_case() {
                     || t.contains(&format!("\"kind\": \"{name}\""))),
             "{name}: no solve case in tests/malformed"
         );
+    }
+}
+
+/// A problem computed in a number field gives the answer the radical field gives for the same
+/// numbers: `sqrt(2)/2` written as `2*cos(pi/8)^2 - 1` (which the radical field cannot evaluate,
+/// so the problem is computed in `Q(cos(pi/8))`) against `sqrt(2)/2` itself. The exact values
+/// are compared as real algebraic numbers, the twins as f64.
+#[test]
+fn a_number_field_problem_agrees_with_the_radical_field() {
+    use exactcheck_exact::Algebraic;
+    let problem = |x: &str| {
+        format!(
+            r#"{{"kind":"plane_plane","planes":[{{"normal":["{x}",2,3],"point":[0,0,1]}},{{"normal":[2,4,"{x}"],"point":[3,0,0]}}]}}"#
+        )
+    };
+    let answer = |x: &str| {
+        let o = solve(problem(x).as_bytes(), &[]);
+        assert!(
+            o.status.success(),
+            "{x}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        serde_json::from_slice::<serde_json::Value>(&o.stdout).expect("JSON answer")
+    };
+    let (field, radical) = (answer("2*cos(pi/8)^2 - 1"), answer("sqrt(2)/2"));
+    assert_eq!(field["outcome"], "line");
+    for key in [
+        "outcome",
+        "on_both_planes",
+        "nearest_to_origin",
+        "unit_direction_in_field",
+    ] {
+        assert_eq!(field[key], radical[key], "{key}");
+    }
+    for key in ["point", "direction", "unit_direction"] {
+        for i in 0..3 {
+            let value = |a: &serde_json::Value| -> Algebraic {
+                a[key][i]
+                    .as_str()
+                    .expect("a string")
+                    .parse()
+                    .expect("an exact value")
+            };
+            assert_eq!(value(&field), value(&radical), "{key}[{i}]");
+            let (f, r) = (
+                field["approx"][key][i].as_f64().unwrap(),
+                radical["approx"][key][i].as_f64().unwrap(),
+            );
+            assert!(
+                (f - r).abs() <= 1e-15 * r.abs().max(1.0),
+                "{key}[{i}]: {f} vs {r}"
+            );
+        }
     }
 }

@@ -50,16 +50,19 @@
 //! Here: the type, construction, comparison and the trait implementations; `arith`: the
 //! arithmetic and the root selection; `trig`: cosines, sines and tangents of rational multiples
 //! of pi; `display`: printing as radicals or as `Root(...)`; `field`: number fields `Q(theta)`
-//! and primitive elements of several numbers.
+//! and primitive elements of several numbers; `element`: elements of one number field as an
+//! ordered field ([`FieldElement`]).
 
 mod arith;
 mod display;
+mod element;
 mod field;
 #[cfg(test)]
 mod tests;
 mod trig;
 
 pub use display::root_variable;
+pub use element::FieldElement;
 pub use field::{primitive_element, FieldError, NumberField, PrimitiveElement};
 pub use trig::TrigError;
 

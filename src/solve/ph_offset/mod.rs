@@ -55,13 +55,13 @@
 //! polynomial, whose Bernstein products use binomial coefficients in 64-bit integers). In exact
 //! mode their sizes in bits together are held to the `ph-bits` limit before any work.
 
-use super::number::{Coords, ExactNumber, FloatNumber};
+use super::number::{Coords, ExactNumber, FieldNumber, FloatNumber};
 use super::scalar::{Scalar, DEFAULT_WIDTH_LOG2};
 use super::{parse, FloatKind, Kind};
 use crate::Error;
 use exactcheck_core::ph::PhCurve;
 use exactcheck_core::{Bernstein, Sign, Vec3};
-use exactcheck_exact::{Radical, Rational};
+use exactcheck_exact::Rational;
 use schemars::{json_schema, JsonSchema, Schema, SchemaGenerator};
 use serde::de::{Deserializer, Error as _};
 use serde::Deserialize;
@@ -222,11 +222,11 @@ fn problem<N, T: Scalar>(input: &Input<N>, num: impl Fn(&N) -> T) -> Result<Prob
     })
 }
 
-fn exact_answer<T: Scalar>(
-    input: &Input<ExactNumber>,
-    lift: impl Fn(&Radical) -> T,
+fn exact_answer<N, T: Scalar>(
+    input: &Input<N>,
+    lift: impl Fn(&N) -> T,
 ) -> Result<Answer<String>, Error> {
-    let p = problem(input, |x| lift(&x.0))?;
+    let p = problem(input, lift)?;
     Ok(render(&compute(p), "exact", ToString::to_string))
 }
 
@@ -311,8 +311,8 @@ fn exact(input: Input<ExactNumber>) -> Result<Answer<String>, Error> {
         .map_err(|e| Error::Input(format!("u, v: {e}")))?;
     // Rational input runs over the (faster) rationals; radicals over the radical field.
     if numbers(&input).all(|x| x.0.is_rational()) {
-        let mut answer = exact_answer(&input, |x| {
-            x.to_rational()
+        let mut answer = exact_answer(&input, |x: &ExactNumber| {
+            x.0.to_rational()
                 .expect("is_rational was checked for every number")
         })?;
         let p = problem(&input, |x| {
@@ -328,8 +328,24 @@ fn exact(input: Input<ExactNumber>) -> Result<Answer<String>, Error> {
         }
         Ok(answer)
     } else {
-        exact_answer(&input, Clone::clone)
+        exact_answer(&input, |x: &ExactNumber| x.0.clone())
     }
+}
+
+/// The exact answer in the problem's number field (values outside the radical field); the
+/// size check of [`exact`] applies to the field elements' coefficients.
+fn exact_in_field(input: Input<FieldNumber>) -> Result<Answer<String>, Error> {
+    let bits = input
+        .u
+        .iter()
+        .chain(&input.v)
+        .flat_map(|x| x.0.poly().coeffs().to_vec())
+        .map(|c| exactcheck_exact::expr::Coefficient::size_bits(&c))
+        .fold(0u64, u64::saturating_add);
+    exactcheck_core::limits::PH_BITS
+        .check(bits)
+        .map_err(|e| Error::Input(format!("u, v: {e}")))?;
+    exact_answer(&input, |x: &FieldNumber| x.0.clone())
 }
 
 fn float_answer(input: Input<FloatNumber>) -> Result<Answer<f64>, Error> {
@@ -416,6 +432,10 @@ impl Kind for PhOffset {
     fn compute(input: Self::Input) -> Result<Self::Answer, Error> {
         exact(input)
     }
+
+    fn compute_in_field(problem: &super::Problem) -> Result<Self::Answer, Error> {
+        exact_in_field(problem.input_in_field(&[])?)
+    }
 }
 
 impl FloatKind for PhOffset {
@@ -425,13 +445,12 @@ impl FloatKind for PhOffset {
     fn compute_float(input: Self::FloatInput) -> Result<Self::FloatAnswer, Error> {
         float_answer(input)
     }
+}
 
-    fn attach(
-        answer: &mut Self::Answer,
-        float: Result<Self::FloatAnswer, Error>,
-    ) -> Result<(), Error> {
-        answer.float = Some(Box::new(float?));
-        Ok(())
+impl super::FloatSlot for Answer<String> {
+    type Float = Answer<f64>;
+    fn float_slot(&mut self) -> &mut Option<Box<Answer<f64>>> {
+        &mut self.float
     }
 }
 

@@ -68,11 +68,12 @@
 //! Hand-written because it is the workspace's own construction (the generic surface and the
 //! generic root isolation); no crate solves it exactly.
 
-use super::number::{Coords, ExactNumber, FloatNumber};
+use super::number::{Coords, ExactNumber, FieldNumber, FloatNumber};
 use super::{FloatKind, Kind};
 use crate::Error;
 use exactcheck_core::ruled::RuledSurface;
 use exactcheck_core::{OrderedField, Vec3};
+use exactcheck_exact::algebraic::FieldElement;
 use exactcheck_exact::{Radical, Rational};
 use schemars::JsonSchema;
 use serde::Deserialize;
@@ -230,6 +231,33 @@ impl Kind for RuledLine {
     fn compute(input: Self::Input) -> Result<Self::Answer, Error> {
         exact_answer(input)
     }
+
+    /// In the problem's number field of degree `d`, the work bound is `(m + n) d`, as it is
+    /// `(m + n) 2^k` in the radical field of degree `2^k`.
+    fn compute_in_field(problem: &super::Problem) -> Result<Self::Answer, Error> {
+        let input: Input<FieldNumber> = problem.input_in_field(&[])?;
+        let d = input
+            .base
+            .iter()
+            .chain(&input.directions)
+            .chain([&input.line.point, &input.line.direction])
+            .flat_map(|c| c.0.iter())
+            .find_map(|x| x.0.field().map(|f| f.degree()))
+            .unwrap_or(1);
+        let degree = (input.base.len() + input.directions.len()).saturating_sub(2);
+        if !input.base.is_empty() && !input.directions.is_empty() && degree <= MAX_DEGREE {
+            exactcheck_core::limits::RULED_WORK
+                .check((degree as u64).saturating_mul(d as u64))
+                .map_err(|e| {
+                    Error::Input(format!(
+                        "base, directions: m + n = {degree} in a number field of degree {d}: {e}"
+                    ))
+                })?;
+        }
+        let p = build(&input, |x: &FieldNumber| x.0.clone())?;
+        let a: Analysis<FieldElement> = analyse(&p.surface, &p.point, &p.direction);
+        Ok(render(&a, "exact", ToString::to_string))
+    }
 }
 
 impl FloatKind for RuledLine {
@@ -239,12 +267,11 @@ impl FloatKind for RuledLine {
     fn compute_float(input: Self::FloatInput) -> Result<Self::FloatAnswer, Error> {
         float_answer(input)
     }
+}
 
-    fn attach(
-        answer: &mut Self::Answer,
-        float: Result<Self::FloatAnswer, Error>,
-    ) -> Result<(), Error> {
-        answer.float = Some(Box::new(float?));
-        Ok(())
+impl super::FloatSlot for AnswerOut<String> {
+    type Float = AnswerOut<f64>;
+    fn float_slot(&mut self) -> &mut Option<Box<AnswerOut<f64>>> {
+        &mut self.float
     }
 }
