@@ -615,8 +615,8 @@ pub(crate) fn prove_over<C: PointField + Display>(
     let mut report = report;
     sound_counter_example(&mut report, pi_in_relations, &mixed);
     // With algebraic constants, a non-zero reduction gets its counter-example at c = theta.
-    let constant_point =
-        constants.and_then(|k| crate::prove_cmd::constants::settle(k, &spec, &mut report, pi, &mixed));
+    let constant_point = constants
+        .and_then(|k| crate::prove_cmd::constants::settle(k, &spec, &mut report, pi, &mixed));
     let (verdict, code) = match &report.verdict {
         _ if constant_point.is_some() => ("fails", ExitCode::from(1)),
         IdentityVerdict::Proved { .. } => ("proved", ExitCode::SUCCESS),

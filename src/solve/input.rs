@@ -114,8 +114,14 @@ fn scan_numbers(v: &Value) -> Result<Option<Vec<exactcheck_exact::Algebraic>>, E
             Ok(r) => radicals.push(r),
             Err(_) => match number::parse_algebraic(s) {
                 Ok(_) => leaves = true,
-                Err(number::AlgebraicRefusal::Limit(m)) => return Err(Error::Input(m)),
-                Err(number::AlgebraicRefusal::Other(_)) => {}
+                // A value past the degree limit refuses the problem here; every other refusal
+                // (another limit, bad syntax) is left to the typed read, which names the field.
+                Err(number::AlgebraicRefusal::Limit(m))
+                    if m.contains(exactcheck_core::limits::ALGEBRAIC_DEGREE.name()) =>
+                {
+                    return Err(Error::Input(m))
+                }
+                Err(_) => {}
             },
         }
     }

@@ -56,8 +56,24 @@ const NOTHING_COMPARED: &[(&str, &str, &str)] = &[
     ("salsa.fpcore", "Odometry", "other"),
     ("salsa.fpcore", "Rocket Trajectory", "other"),
     ("salsa.fpcore", "Eigenvalue Computation", "other"),
-    ("salsa.fpcore", "Iterative Gram-Schmidt Method", "other"),
+    (
+        "salsa.fpcore",
+        "Iterative Gram-Schmidt Method",
+        "limit_stops",
+    ),
 ];
+
+/// The `loop-iterations` limit of each file's run: salsa's binary32 loops, sampled over all
+/// binary32 values without a `:pre`, mostly diverge, and their exact values grow with every
+/// iteration, so its run stops them at 300 iterations instead of the default 10,000 (at the
+/// default, Jacobi's Method alone takes minutes per sample).
+fn loop_limit(file: &str) -> u64 {
+    if file == "salsa.fpcore" {
+        300
+    } else {
+        10_000
+    }
+}
 
 /// The exit status of each file's run: 2 where a benchmark stopped at the loop limit in every
 /// sample (after the report; the one stderr line names the limit), 1 where one compared no
@@ -82,6 +98,7 @@ fn every_fpbench_benchmark_runs_or_is_refused_with_its_reason() {
             env!("CARGO_MANIFEST_DIR")
         );
         let o = Command::new(env!("CARGO_BIN_EXE_exactcheck"))
+            .args(["--limit", &format!("loop-iterations={}", loop_limit(file))])
             .args(["regress", "--fpcore", &path, "--samples", "8", "--json"])
             .output()
             .expect("the binary runs");
@@ -99,7 +116,8 @@ fn every_fpbench_benchmark_runs_or_is_refused_with_its_reason() {
                 "'Rocket Trajectory'"
             };
             assert!(
-                stderr.contains("the limit loop-iterations = 10000") && stderr.contains(first),
+                stderr.contains(&format!("the limit loop-iterations = {}", loop_limit(file)))
+                    && stderr.contains(first),
                 "{stderr}"
             );
         }
@@ -120,7 +138,11 @@ fn every_fpbench_benchmark_runs_or_is_refused_with_its_reason() {
                         .find(|k| e[*k].as_u64() == Some(8))
                         .unwrap_or("other");
                     if why == "limit_stops" {
-                        assert_eq!(e["limit_stop"], "loop-iterations = 10000", "{name}");
+                        assert_eq!(
+                            e["limit_stop"].as_str(),
+                            Some(format!("loop-iterations = {}", loop_limit(file)).as_str()),
+                            "{name}"
+                        );
                     }
                     nothing.insert(key, why.to_string());
                 }

@@ -65,7 +65,12 @@ fn describe(a: &Analysis) -> String {
         exactcheck_exact::univariate::Bound::PosInf => "+inf".to_string(),
         exactcheck_exact::univariate::Bound::Root(r) => match r.exact_value() {
             Some(v) => v.to_string(),
-            None => format!("~{:.6}", r.to_f64()),
+            // Six decimals of a root are shown only after its interval is narrowed to 2^-30,
+            // so the digits printed are the root's, not those of a wide isolating interval.
+            None => {
+                let width = Rational::new(1, 1 << 30).expect("2^30 != 0");
+                format!("~{:.6}", a.discriminant.refine(r, &width).to_f64())
+            }
         },
     };
     let set: Vec<String> = a
