@@ -545,7 +545,10 @@ fn add_shifted(v: &mut [u64], neg: bool, mag: &[u64], s: usize) {
         };
         let idx = q + t;
         if idx >= len {
-            debug_assert!(limb == 0 && !carry, "add_shifted: the value does not fit");
+            // A carry (borrow) out of the top limb is the wrap of two's complement arithmetic
+            // modulo 2^(64 len) (a negative addend meeting a positive value), as in the tail
+            // loop below; only a non-zero limb past the end would be an overflow.
+            debug_assert!(limb == 0, "add_shifted: the value does not fit");
             return;
         }
         if neg {
