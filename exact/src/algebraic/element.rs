@@ -124,17 +124,7 @@ impl FieldElement {
         if let Some(q) = self.to_rational() {
             return q.signum();
         }
-        let mut bits = 16;
-        loop {
-            let (lo, hi) = self.enclosure(bits);
-            if lo.signum() == Sign::Positive {
-                return Sign::Positive;
-            }
-            if hi.signum() == Sign::Negative {
-                return Sign::Negative;
-            }
-            bits *= 2;
-        }
+        super::sign_by_refinement(16, |bits| self.enclosure(bits))
     }
 
     /// The nearest f64 (to within a relative `2^-60` before rounding).

@@ -203,18 +203,7 @@ impl Algebraic {
         if let Some(q) = self.to_rational() {
             return q.signum();
         }
-        // An irrational number is not 0, so refinement separates the interval from 0.
-        let mut bits = 8;
-        loop {
-            let (lo, hi) = self.enclosure(bits);
-            if lo.signum() == Sign::Positive {
-                return Sign::Positive;
-            }
-            if hi.signum() == Sign::Negative {
-                return Sign::Negative;
-            }
-            bits *= 2;
-        }
+        sign_by_refinement(8, |bits| self.enclosure(bits))
     }
 
     /// Exact equality of two irrational numbers: the gcd of the defining polynomials must vanish
@@ -430,5 +419,25 @@ impl Coefficient for Algebraic {
             }
             other => other.to_string(),
         }))
+    }
+}
+
+/// The sign of a non-zero real number from its enclosures at `start`, `2 start`, `4 start`, ...
+/// bits: the first enclosure that excludes 0 decides it. The caller guarantees the number is not
+/// 0 (an irrational number, or a non-zero element of a number field), so the loop ends.
+pub(crate) fn sign_by_refinement(
+    start: u32,
+    enclosure: impl Fn(u32) -> (Rational, Rational),
+) -> Sign {
+    let mut bits = start;
+    loop {
+        let (lo, hi) = enclosure(bits);
+        if lo.signum() == Sign::Positive {
+            return Sign::Positive;
+        }
+        if hi.signum() == Sign::Negative {
+            return Sign::Negative;
+        }
+        bits *= 2;
     }
 }
