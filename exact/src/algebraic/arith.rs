@@ -119,7 +119,7 @@ impl Algebraic {
             if let Ok(factors) = f.irreducible_factors() {
                 f = factors
                     .into_iter()
-                    .find(|g| g.count_roots(&ri.lo, &ri.hi) == 1)
+                    .find(|g| super::has_root_in(g, &ri))
                     .map(|g| normalise(&g))
                     .expect("one irreducible factor has the isolated root");
                 minimal = true;

@@ -23,7 +23,7 @@
 //! square-free polynomial stays, [`Algebraic::minimal_polynomial`] answers `None` and
 //! [`Algebraic::checked_minimal_polynomial`] the limit's error, which every number field
 //! ([`NumberField`], [`primitive_element`]) passes on rather than compute modulo a polynomial
-//! that may be reducible. **Every other decision stays exact** regardless: a root is selected by a Sturm count on an interval, zero and equality tests
+//! that may be reducible. **Every other decision stays exact** regardless: a root is selected by a sign change across an isolating interval, zero and equality tests
 //! reduce to gcds and interval inclusion, and no floating-point number is ever consulted.
 
 //! # Operations
@@ -164,7 +164,7 @@ impl Algebraic {
         let factors = self.poly.irreducible_factors()?;
         Ok(factors
             .into_iter()
-            .find(|g| g.count_roots(&self.iv.lo, &self.iv.hi) == 1)
+            .find(|g| has_root_in(g, &self.iv))
             .map(|g| arith::normalise(&g))
             .expect("one irreducible factor has the isolated root"))
     }
@@ -215,13 +215,16 @@ impl Algebraic {
         }
         if self.poly == other.poly {
             // Same polynomial: the same root iff the isolating intervals overlap, and they do.
-            return self.poly.count_roots(
-                &self.iv.lo.clone().max(other.iv.lo.clone()),
-                &self.iv.hi.clone().min(other.iv.hi.clone()),
-            ) == 1;
+            return has_root_in(
+                &self.poly,
+                &RootInterval {
+                    lo: self.iv.lo.clone().max(other.iv.lo.clone()),
+                    hi: self.iv.hi.clone().min(other.iv.hi.clone()),
+                },
+            );
         }
         let h = self.poly.gcd(&other.poly);
-        if h.degree() == 0 || h.count_roots(&self.iv.lo, &self.iv.hi) == 0 {
+        if h.degree() == 0 || !has_root_in(&h, &self.iv) {
             return false;
         }
         let mut bits = 8;
@@ -420,6 +423,13 @@ impl Coefficient for Algebraic {
             other => other.to_string(),
         }))
     }
+}
+
+/// Whether the square-free `g` has a root in the open interval `iv`, whose ends are not roots of
+/// `g` and which holds at most one of its roots (an isolating interval of a root of a multiple of
+/// `g`, or a part of one): exactly when `g` changes sign across it.
+pub(super) fn has_root_in(g: &UPoly, iv: &RootInterval) -> bool {
+    g.sign_at(&iv.lo) * g.sign_at(&iv.hi) == Sign::Negative
 }
 
 /// The sign of a non-zero real number from its enclosures at `start`, `2 start`, `4 start`, ...

@@ -1,30 +1,24 @@
-//! Real root isolation by Sturm chains (bisection driven by Sturm counts, exact rational roots:
-//! the reference of the tests), refinement and comparisons of isolating intervals, sign charts
-//! (on the production isolator, [`isolate_real_roots`]), and the root intervals themselves.
+//! Isolating intervals in the canonical bisection shape (the Descartes isolator's roots laid out
+//! on the dyadic bisection of `(-B, B)`), counts of roots, refinement and comparisons of
+//! isolating intervals, sign charts (on the production isolator, [`isolate_real_roots`]), and
+//! the root intervals themselves.
+//!
+//! # The bisection shape
+//! [`UPoly::isolate_roots`] answers with the intervals the Sturm bisection would find (module
+//! `sturm`, the reference): a node of the bisection of `(-B, B)`, `B` a power of two above
+//! Cauchy's bound, that holds exactly one root, narrowed below `1 / (2 l)` and tested for a
+//! rational root ([`exactify`]). The shape depends only on the polynomial, not on how the roots
+//! were found, so the intervals printed with algebraic numbers (`Root(f, lo, hi)`) stay the same
+//! whichever isolator runs. The roots come from the Descartes isolator; the number of roots in a
+//! node is read off by comparing each root with the midpoint (one sign of `p` at most, and none
+//! once the root's own interval lies on one side), which narrows the root's interval as the
+//! bisection descends. No Sturm chain is computed.
 
 use super::*;
 use std::cmp::Ordering;
 use std::fmt;
 
-// ------------------------------------------------------------------------------ Sturm chains
-
-/// The Sturm sequence of a non-zero polynomial, normalised to primitive parts after `p`.
-pub(super) fn sturm_chain(p: &UPoly) -> Vec<UPoly> {
-    let mut seq = vec![p.clone()];
-    let d = p.derivative();
-    if d.is_zero() {
-        return seq;
-    }
-    seq.push(d.primitive_part());
-    loop {
-        let n = seq.len();
-        let r = seq[n - 2].rem(&seq[n - 1]);
-        if r.is_zero() {
-            return seq;
-        }
-        seq.push(r.neg_impl().primitive_part());
-    }
-}
+// ------------------------------------------------------------------------------ bisection
 
 /// Number of sign changes of a sequence of signs, zeros skipped.
 pub(super) fn count_variations(signs: impl IntoIterator<Item = Sign>) -> usize {
@@ -42,151 +36,172 @@ pub(super) fn count_variations(signs: impl IntoIterator<Item = Sign>) -> usize {
     n
 }
 
-/// The number of sign variations of a Sturm sequence at `x`.
-pub fn sign_variations(seq: &[UPoly], x: &Rational) -> usize {
-    count_variations(seq.iter().map(|p| p.sign_at(x)))
-}
-
-/// The square-free part of a polynomial prepared for root finding: primitive, positive leading
-/// coefficient, with its Sturm chain.
-pub(super) struct SquareFree {
-    pub(super) chain: Vec<UPoly>,
-}
-
-impl SquareFree {
-    /// For a non-zero polynomial.
-    pub(super) fn new(p: &UPoly) -> SquareFree {
-        let sqf = p.square_free_part().primitive_part();
-        SquareFree {
-            chain: sturm_chain(&sqf),
-        }
-    }
-
-    pub(super) fn poly(&self) -> &UPoly {
-        &self.chain[0]
-    }
-
-    pub(super) fn var_at(&self, x: &Rational) -> usize {
-        sign_variations(&self.chain, x)
-    }
-
-    pub(super) fn var_neg_inf(&self) -> usize {
-        count_variations(self.chain.iter().map(UPoly::sign_at_neg_inf))
-    }
-
-    pub(super) fn var_pos_inf(&self) -> usize {
-        count_variations(self.chain.iter().map(UPoly::sign_at_pos_inf))
-    }
-
-    /// A power of two strictly above Cauchy's bound `1 + max |a_i / a_n|`: every real root lies
-    /// strictly inside `(-b, b)`.
-    pub(super) fn root_bound(&self) -> Rational {
-        let p = self.poly();
-        let lc = p.leading_coefficient();
-        let lc_abs = if lc.signum() == Sign::Negative {
-            -lc
+/// A power of two strictly above Cauchy's bound `1 + max |a_i / a_n|` of the non-constant `p`:
+/// every real root lies strictly inside `(-b, b)`.
+pub(super) fn bisection_bound(p: &UPoly) -> Rational {
+    let lc = p.leading_coefficient();
+    let lc_abs = if lc.signum() == Sign::Negative {
+        -lc
+    } else {
+        lc
+    };
+    let mut m = Rational::ZERO;
+    for c in &p.coeffs[..p.coeffs.len() - 1] {
+        let a = if c.signum() == Sign::Negative {
+            c.neg_ref()
         } else {
-            lc
+            c.clone()
         };
-        let mut m = Rational::ZERO;
-        for c in &p.coeffs[..p.coeffs.len() - 1] {
-            let a = if c.signum() == Sign::Negative {
-                c.neg_ref()
-            } else {
-                c.clone()
-            };
-            if a > m {
-                m = a;
-            }
+        if a > m {
+            m = a;
         }
-        let bound = Rational::ONE + m / lc_abs;
-        let mut b = Rational::ONE;
-        let two = Rational::from_integer(2);
-        while b <= bound {
-            b *= &two;
-        }
-        b
     }
+    let bound = Rational::ONE + m / lc_abs;
+    let mut b = Rational::ONE;
+    let two = Rational::from_integer(2);
+    while b <= bound {
+        b *= &two;
+    }
+    b
+}
 
-    /// Isolating intervals of all real roots, sorted; rational roots exact.
-    pub(super) fn isolate(&self) -> Vec<RootInterval> {
-        let p = self.poly();
-        if p.is_constant() {
-            return Vec::new();
-        }
-        let b = self.root_bound();
-        let lo = b.neg_ref();
-        let (vlo, vhi) = (self.var_neg_inf(), self.var_pos_inf());
-        let mut out = Vec::new();
-        // (a, b, V(a), V(b), number of roots in the open interval); endpoints are never roots.
-        let mut stack = vec![(lo, b, vlo, vhi, vlo - vhi)];
-        while let Some((a, c, va, vc, count)) = stack.pop() {
-            match count {
-                0 => {}
-                1 => out.push(RootInterval { lo: a, hi: c }),
-                _ => {
-                    let m = midpoint(&a, &c);
-                    let vm = self.var_at(&m);
-                    if p.sign_at(&m) != Sign::Zero {
-                        stack.push((m.clone(), c, vm, vc, vm - vc));
-                        stack.push((a, m, va, vm, va - vm));
-                        continue;
-                    }
-                    // The midpoint is a root: record it exactly, and split at non-roots `ml < m <
-                    // mr` close enough that `[ml, mr]` holds no other root, so that no interval
-                    // ever has a root as an end. (`V(m)` ignores the zero at `m`, so it counts
-                    // the roots in `(m, +inf)`.)
-                    out.push(RootInterval::exact(m.clone()));
-                    let mut d = c.sub_ref(&m).mul_ref(&half());
-                    let (ml, vml, mr, vmr) = loop {
-                        let (ml, mr) = (m.sub_ref(&d), m.add_ref(&d));
-                        if p.sign_at(&ml) != Sign::Zero && p.sign_at(&mr) != Sign::Zero {
-                            let (vml, vmr) = (self.var_at(&ml), self.var_at(&mr));
-                            if vml - vmr == 1 {
-                                break (ml, vml, mr, vmr);
-                            }
-                        }
-                        d *= half();
-                    };
-                    stack.push((mr, c, vmr, vc, vmr - vc));
-                    stack.push((a, ml, va, vml, va - vml));
+/// `ri`, an isolating interval of a root of `p` (primitive, square-free, positive leading
+/// coefficient `l`), made exact if its root is rational and otherwise narrowed below `1 / (2 l)`:
+/// a rational root `k / l` (rational root theorem) is then the one candidate in the narrowed
+/// interval, evaluated exactly. The narrowing is the quadratic refinement of [`refine_simple`]
+/// (bisection would need `log2 l` steps, thousands for coefficients of a thousand digits).
+pub(super) fn exactify(p: &UPoly, ri: RootInterval) -> RootInterval {
+    if ri.is_exact() {
+        return ri;
+    }
+    let l = p.leading_coefficient();
+    let narrow = refine_simple(
+        p,
+        &ri,
+        &(Rational::ONE / l.mul_ref(&Rational::from_integer(2))),
+    );
+    if narrow.is_exact() {
+        return narrow;
+    }
+    let RootInterval { lo, hi } = narrow;
+    // At most one integer k with lo * l < k < hi * l.
+    let k = floor(&lo.mul_ref(&l)) + 1;
+    let cand = Rational::from(k) / &l;
+    if cand < hi && p.sign_at(&cand) == Sign::Zero {
+        return RootInterval::exact(cand);
+    }
+    RootInterval { lo, hi }
+}
+
+/// The real roots of a primitive square-free polynomial with a positive leading coefficient, as
+/// the Descartes isolator finds them, each interval narrowed in place as the root is compared
+/// with rational points.
+struct Located<'a> {
+    p: &'a UPoly,
+    roots: Vec<RootInterval>,
+    /// The sign of `p` just below each root: all roots are simple and `p` is positive beyond the
+    /// last, so below root `i` of `k` it is `(-1)^(k - i)`.
+    below: Vec<Sign>,
+}
+
+impl<'a> Located<'a> {
+    /// For `p` of degree at least 1 and at most [`MAX_DESCARTES_DEGREE`].
+    fn new(p: &'a UPoly) -> Located<'a> {
+        let roots = p.real_roots_descartes();
+        let k = roots.len();
+        let below = (0..k)
+            .map(|i| {
+                if (k - i) % 2 == 0 {
+                    Sign::Positive
+                } else {
+                    Sign::Negative
                 }
+            })
+            .collect();
+        Located { p, roots, below }
+    }
+
+    /// `x` compared with root `i` (`Less`: `x` is below the root). An open interval is cut at
+    /// `x` to the side holding the root, or made the point `x` when `x` is the root.
+    fn compare(&mut self, i: usize, x: &Rational) -> Ordering {
+        let ri = &mut self.roots[i];
+        if ri.is_exact() {
+            return x.cmp(&ri.lo);
+        }
+        if *x <= ri.lo {
+            return Ordering::Less;
+        }
+        if *x >= ri.hi {
+            return Ordering::Greater;
+        }
+        let s = self.p.sign_at(x);
+        if s == Sign::Zero {
+            *ri = RootInterval::exact(x.clone());
+            Ordering::Equal
+        } else if s == self.below[i] {
+            ri.lo = x.clone();
+            Ordering::Less
+        } else {
+            ri.hi = x.clone();
+            Ordering::Greater
+        }
+    }
+}
+
+/// The isolating intervals of the bisection shape (module documentation) of the roots of `p`,
+/// primitive, square-free, with a positive leading coefficient and of degree at least 1 and at
+/// most [`MAX_DESCARTES_DEGREE`]: the intervals of the Sturm reference, each node's count taken
+/// from the located roots instead of a Sturm chain.
+fn bisection_intervals(p: &UPoly) -> Vec<RootInterval> {
+    let mut roots = Located::new(p);
+    let b = bisection_bound(p);
+    let mut out = Vec::with_capacity(roots.roots.len());
+    // (a, c, the roots in the open interval (a, c)); a and c are never roots.
+    let mut stack = vec![(b.neg_ref(), b, (0..roots.roots.len()).collect::<Vec<_>>())];
+    while let Some((a, c, inside)) = stack.pop() {
+        match inside[..] {
+            [] => {}
+            [i] if roots.roots[i].is_exact() => out.push(roots.roots[i].clone()),
+            [_] => out.push(exactify(p, RootInterval { lo: a, hi: c })),
+            _ => {
+                let m = midpoint(&a, &c);
+                let (mut below, mut above, mut at_m) = (Vec::new(), Vec::new(), false);
+                for i in inside {
+                    match roots.compare(i, &m) {
+                        Ordering::Less => above.push(i),
+                        Ordering::Greater => below.push(i),
+                        Ordering::Equal => at_m = true,
+                    }
+                }
+                if !at_m {
+                    stack.push((m.clone(), c, above));
+                    stack.push((a, m, below));
+                    continue;
+                }
+                // The midpoint is a root: record it exactly, and split at `ml < m < mr` close
+                // enough that `[ml, mr]` holds no other root (the Sturm reference's choice).
+                out.push(RootInterval::exact(m.clone()));
+                let mut d = c.sub_ref(&m).mul_ref(&half());
+                let (ml, mr) = loop {
+                    let (ml, mr) = (m.sub_ref(&d), m.add_ref(&d));
+                    if below
+                        .iter()
+                        .all(|&j| roots.compare(j, &ml) == Ordering::Greater)
+                        && above
+                            .iter()
+                            .all(|&j| roots.compare(j, &mr) == Ordering::Less)
+                    {
+                        break (ml, mr);
+                    }
+                    d *= half();
+                };
+                stack.push((mr, c, above));
+                stack.push((a, ml, below));
             }
         }
-        out.sort_by(|x, y| x.lo.cmp(&y.lo).then_with(|| x.hi.cmp(&y.hi)));
-        out.into_iter().map(|ri| self.exactify(ri)).collect()
     }
-
-    /// Makes the interval exact if its root is rational (see the module documentation).
-    pub(super) fn exactify(&self, ri: RootInterval) -> RootInterval {
-        if ri.is_exact() {
-            return ri;
-        }
-        let p = self.poly();
-        let l = p.leading_coefficient(); // a positive integer
-                                         // Narrow the interval below 1/l by quadratic refinement (`refine`): bisection needed
-                                         // log2(l) steps, thousands for coefficients of a thousand digits.
-        let narrow = self.refine(
-            &ri,
-            &(Rational::ONE / l.mul_ref(&Rational::from_integer(2))),
-        );
-        if narrow.is_exact() {
-            return narrow;
-        }
-        let RootInterval { lo, hi } = narrow;
-        // At most one integer k with lo * l < k < hi * l.
-        let k = floor(&lo.mul_ref(&l)) + 1;
-        let cand = Rational::from(k) / &l;
-        if cand < hi && p.sign_at(&cand) == Sign::Zero {
-            return RootInterval::exact(cand);
-        }
-        RootInterval { lo, hi }
-    }
-
-    /// Refines an isolating interval to width at most `width` ([`refine_simple`]).
-    pub(super) fn refine(&self, ri: &RootInterval, width: &Rational) -> RootInterval {
-        refine_simple(self.poly(), ri, width)
-    }
+    out.sort_by(|x, y| x.lo.cmp(&y.lo).then_with(|| x.hi.cmp(&y.hi)));
+    out
 }
 
 /// Refines `ri`, an isolating interval of a root of the square-free `p`, to width at most
@@ -247,44 +262,50 @@ pub(super) fn compare_simple(p: &UPoly, ri: &RootInterval, x: &Rational) -> Orde
 // ------------------------------------------------------------------------------ root finding
 
 impl UPoly {
-    /// The Sturm sequence of `self`: `self`, its derivative, then the negated remainders of
-    /// Euclid's algorithm, each after the first replaced by its primitive part (a positive
-    /// multiple, so the sign variations are those of the classical sequence). Its last element
-    /// is `gcd(self, self')` up to a constant. Empty for the zero polynomial.
-    pub fn sturm_sequence(&self) -> Vec<UPoly> {
-        if self.is_zero() {
-            return Vec::new();
-        }
-        sturm_chain(self)
-    }
-
     /// The number of **distinct** real roots in the half-open interval `(lo, hi]` (0 when
-    /// `lo >= hi`, and for the zero polynomial, whose roots are not isolated).
+    /// `lo >= hi`, and for the zero polynomial, whose roots are not isolated): the roots of the
+    /// Descartes isolator compared with `lo` and `hi`.
     pub fn count_roots(&self, lo: &Rational, hi: &Rational) -> usize {
-        if self.is_zero() || lo >= hi {
+        if self.is_constant() || lo >= hi {
             return 0;
         }
-        let s = SquareFree::new(self);
-        s.var_at(lo) - s.var_at(hi)
+        if self.degree() > MAX_DESCARTES_DEGREE {
+            return sturm::SquareFree::new(self).count(lo, hi);
+        }
+        let p = self.primitive_square_free_part();
+        let mut roots = Located::new(&p);
+        (0..roots.roots.len())
+            .filter(|&i| {
+                roots.compare(i, lo) == Ordering::Less && roots.compare(i, hi) != Ordering::Less
+            })
+            .count()
     }
 
-    /// The number of distinct real roots (0 for the zero polynomial).
+    /// The number of distinct real roots (0 for constants and for the zero polynomial): the
+    /// Descartes isolator's.
     pub fn count_real_roots(&self) -> usize {
         if self.is_constant() {
             return 0;
         }
-        let s = SquareFree::new(self);
-        s.var_neg_inf() - s.var_pos_inf()
+        if self.degree() > MAX_DESCARTES_DEGREE {
+            return sturm::SquareFree::new(self).count_all();
+        }
+        self.real_roots_descartes().len()
     }
 
-    /// Isolating intervals of all distinct real roots: sorted, pairwise disjoint, each holding
-    /// exactly one root; exact (`lo == hi`) **exactly when the root is rational**. Empty for
-    /// constants and for the zero polynomial.
+    /// Isolating intervals of all distinct real roots in the bisection shape (module
+    /// documentation of `isolate`): sorted, pairwise disjoint, each holding exactly one root;
+    /// exact (`lo == hi`) **exactly when the root is rational**; the same intervals as the
+    /// Sturm reference ([`isolate_real_roots_sturm`]), found by the Descartes isolator. Empty
+    /// for constants and for the zero polynomial.
     pub fn isolate_roots(&self) -> Vec<RootInterval> {
         if self.is_constant() {
             return Vec::new();
         }
-        SquareFree::new(self).isolate()
+        if self.degree() > MAX_DESCARTES_DEGREE {
+            return isolate_real_roots_sturm(self);
+        }
+        bisection_intervals(&self.primitive_square_free_part())
     }
 
     /// The distinct real roots with their multiplicities, increasing: the intervals of
@@ -426,9 +447,9 @@ impl UPoly {
     }
 
     /// Whether `self(x) > 0` for some real `x`: a positive leading coefficient (positive
-    /// constants included) or a real root of odd multiplicity (a sign change). No isolation is
-    /// needed: the odd-multiplicity factors of the square-free decomposition are tested for real
-    /// roots by a Sturm count.
+    /// constants included) or a real root of odd multiplicity (a sign change): the product of the
+    /// odd-multiplicity factors of the square-free decomposition is tested for real roots
+    /// ([`UPoly::count_real_roots`]).
     pub fn positive_somewhere(&self) -> bool {
         if self.sign_at_pos_inf() == Sign::Positive {
             return true;

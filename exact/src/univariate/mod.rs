@@ -21,10 +21,13 @@
 //! The workspace's real-root API is in `real_roots` ([`isolate_real_roots`],
 //! [`isolate_real_roots_sturm`], [`isolate_real_roots_in`], [`refine_real_root`],
 //! [`sign_at_real_root`], [`common_real_roots_in`], [`descartes_bound`]): one result type,
-//! [`RootInterval`], exact exactly when the root is rational. Production isolates by Descartes'
-//! rule (module `descartes`), and so do [`UPoly::roots`], [`UPoly::sign_chart`] and the sets
-//! built on them; the Sturm bisection below ([`UPoly::isolate_roots`], [`UPoly::count_roots`])
-//! is the reference of the tests.
+//! [`RootInterval`], exact exactly when the root is rational. Every root count and isolation
+//! runs on Descartes' rule (module `descartes`): [`UPoly::roots`], [`UPoly::sign_chart`] and the
+//! sets built on them, [`UPoly::count_roots`], [`UPoly::count_real_roots`], and
+//! [`UPoly::isolate_roots`], which lays the roots out in the intervals of the dyadic bisection
+//! (module `isolate`: the shape algebraic numbers are printed with). The Sturm bisection (module
+//! `sturm`, [`isolate_real_roots_sturm`]) is the reference of the tests, and the fallback beyond
+//! [`MAX_DESCARTES_DEGREE`].
 //!
 //! # Algorithms
 //! * Division with remainder over Q; gcds by Euclid's algorithm in which every remainder is
@@ -35,19 +38,20 @@
 //!   ([`UPoly::square_free_decomposition`]); root multiplicities come from the latter.
 //! * Factorisation into irreducible factors over Z ([`UPoly::factor`], module `factor`:
 //!   Zassenhaus' algorithm on the square-free parts above).
-//! * Sturm sequences, likewise normalised to primitive polynomials (positive factors only, which
-//!   leaves every sign, hence every sign-variation count, unchanged). Counting uses the Sturm
-//!   sequence of the square-free part: the number of distinct roots in `(a, b]` is
-//!   `V(a) - V(b)`, also when `a` or `b` is a root.
-//! * Isolation by bisection of `(-2^k, 2^k)`, with `2^k` above Cauchy's root bound, driven by
-//!   Sturm counts; a midpoint that is a root is recorded exactly and the bisection continues
-//!   from non-roots on either side of it (so no interval ever ends at a root). Afterwards every
-//!   interval is tested for a *rational* root: if the primitive square-free part has leading coefficient `l`,
-//!   a rational root `p/q` has `q | l` (rational root theorem), so `l * root` is an integer;
-//!   narrowing the interval below `1/(2l)` (by the quadratic refinement below: bisection took
-//!   `log2 l` steps, thousands for coefficients of a thousand digits) leaves at most one
-//!   candidate `k / l`, which is evaluated exactly. Hence [`RootInterval::is_exact`] holds **exactly when the root is
-//!   rational**.
+//! * Isolation by Descartes' rule of signs on the primitive square-free part (module
+//!   `descartes`). The bisection shape of [`UPoly::isolate_roots`]: bisection of `(-2^k, 2^k)`,
+//!   with `2^k` above Cauchy's root bound, each node's root count read off the isolated roots;
+//!   a midpoint that is a root is recorded exactly and the bisection continues from non-roots on
+//!   either side of it (so no interval ever ends at a root). Afterwards every interval is tested
+//!   for a *rational* root: if the primitive square-free part has leading coefficient `l`, a
+//!   rational root `p/q` has `q | l` (rational root theorem), so `l * root` is an integer;
+//!   narrowing the interval below `1/(2l)` (by the quadratic refinement below) leaves at most
+//!   one candidate `k / l`, which is evaluated exactly. Hence [`RootInterval::is_exact`] holds
+//!   **exactly when the root is rational**.
+//! * Sturm sequences (module `sturm`), normalised to primitive polynomials (positive factors
+//!   only, which leaves every sign, hence every sign-variation count, unchanged): the number of
+//!   distinct roots in `(a, b]` is `V(a) - V(b)`, also when `a` or `b` is a root. They drive
+//!   the reference isolator.
 //! * Refinement ([`UPoly::refine`]) narrows the interval on the sign of the primitive
 //!   square-free part ([`UPoly::primitive_square_free_part`], no Sturm chain), which changes
 //!   across every isolated root, by Abbott's quadratic interval refinement
@@ -60,9 +64,10 @@
 //!
 //! # Limits
 //! Dense representation: fine for the low degrees of the workspace (the discriminants are of
-//! degree at most 4), usable into the tens; Sturm sequences cost `O(n^2)` polynomial
-//! operations. Isolation bisects about `log2(2^k / sep)` times, `sep` the root separation; the
-//! test for a rational root then refines quadratically to `1/(2l)`, `l` as above.
+//! degree at most 4), usable into the hundreds for isolation. The bisection shape costs about
+//! `log2(2^k / sep)` comparisons of a root with a midpoint, `sep` the root separation, each at
+//! most one evaluation; the test for a rational root then refines quadratically to `1/(2l)`,
+//! `l` as above.
 
 pub mod bench_instances;
 mod bernstein;
@@ -72,6 +77,7 @@ mod isolate;
 mod limbs;
 mod real_roots;
 mod resultant;
+mod sturm;
 #[cfg(test)]
 mod tests;
 mod upoly;
@@ -79,7 +85,7 @@ mod upoly;
 pub use descartes::{integer_real_roots, integer_real_roots_to, MAX_DESCARTES_DEGREE};
 pub use exactcheck_core::roots::{IsolatedRoot, ZeroPolynomial};
 pub use factor::Factorisation;
-pub use isolate::sign_variations;
+pub use sturm::sign_variations;
 pub use real_roots::{
     common_real_roots_in, compare_with_real_root, descartes_bound, isolate_real_roots,
     isolate_real_roots_in, isolate_real_roots_sturm, isolate_real_roots_sturm_in, refine_real_root,

@@ -12,7 +12,8 @@
 //!   that is not already exact is tested for a rational root (the rational root theorem on the
 //!   narrowed interval), so an interval is exact **exactly when the root is rational**.
 //! * [`isolate_real_roots_sturm`] is the reference: bisection driven by Sturm counts, with the
-//!   same promise on rational roots ([`UPoly::isolate_roots`]). The tests compare the two.
+//!   same promise on rational roots. The tests compare the two. [`UPoly::isolate_roots`] gives
+//!   the reference's intervals from the Descartes isolator's roots (module `isolate`).
 //! * [`isolate_real_roots_in`] restricts either answer to a closed interval `[lo, hi]` (for
 //!   example `[0, 1]`, the parameter range of Bezier curves): an interval reaching past an end
 //!   holds an irrational root, which is compared with that end exactly.
@@ -38,10 +39,15 @@ pub fn isolate_real_roots(p: &UPoly) -> Vec<RootInterval> {
     integer_real_roots_rational_exact(&p.integer_coefficients()).expect("not the zero polynomial")
 }
 
-/// The reference isolator: [`UPoly::isolate_roots`] (Sturm bisection), with the same contract
-/// as [`isolate_real_roots`] (the intervals themselves may differ).
+/// The reference isolator: bisection driven by Sturm counts (module `sturm`), with the same
+/// contract as [`isolate_real_roots`] (the intervals themselves may differ) and the same
+/// intervals as [`UPoly::isolate_roots`]. Production uses it only beyond
+/// [`MAX_DESCARTES_DEGREE`].
 pub fn isolate_real_roots_sturm(p: &UPoly) -> Vec<RootInterval> {
-    p.isolate_roots()
+    if p.is_constant() {
+        return Vec::new();
+    }
+    sturm::SquareFree::new(p).isolate()
 }
 
 /// The distinct real roots of `p` in the closed interval `[lo, hi]` (`lo <= hi`), increasing,

@@ -379,3 +379,61 @@ fn isolation_with_a_huge_leading_coefficient_makes_rational_roots_exact() {
     assert_eq!(roots[1].exact_value(), Some(&(Rational::ONE / big)));
     assert!(!roots[0].is_exact() && !roots[2].is_exact());
 }
+
+/// The production paths (the bisection shape from the Descartes isolator, the Descartes counts)
+/// against the Sturm reference, on products of small factors with multiplicities up to 3 (so
+/// rational roots, repeated roots and roots at bisection midpoints such as 0 are frequent).
+mod against_sturm {
+    use super::super::sturm::SquareFree;
+    use super::*;
+    use proptest::prelude::*;
+
+    fn arb_poly() -> impl Strategy<Value = UPoly> {
+        proptest::collection::vec(
+            (proptest::collection::vec(-9i64..=9, 2..=4), 1u32..=3),
+            1..=4,
+        )
+        .prop_map(|fs| {
+            fs.iter()
+                .map(|(c, m)| (p(c), *m))
+                .filter(|(f, _)| !f.is_zero())
+                .fold(UPoly::one(), |acc, (f, m)| acc * Ring::pow(&f, m))
+        })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(128))]
+        #[test]
+        fn bisection_shape_and_counts_are_the_sturm_references(
+            f in arb_poly(),
+            a in -64i64..=64,
+            w in 1i64..=64,
+        ) {
+            let sturm = isolate_real_roots_sturm(&f);
+            prop_assert_eq!(f.isolate_roots(), sturm.clone());
+            if f.is_constant() {
+                prop_assert_eq!(f.count_real_roots(), 0);
+                return Ok(());
+            }
+            let sf = SquareFree::new(&f);
+            prop_assert_eq!(f.count_real_roots(), sf.count_all());
+            prop_assert_eq!(f.count_real_roots(), sturm.len());
+            let (lo, hi) = (q(a, 8), q(a + w, 8));
+            prop_assert_eq!(f.count_roots(&lo, &hi), sf.count(&lo, &hi));
+            prop_assert_eq!(f.count_roots(&hi, &lo), 0);
+            // The production isolator's intervals hold the reference's roots, one each.
+            let fast = isolate_real_roots(&f);
+            prop_assert_eq!(fast.len(), sturm.len());
+            for (x, s) in fast.iter().zip(&sturm) {
+                prop_assert_eq!(x.is_exact(), s.is_exact());
+                if x.is_exact() {
+                    prop_assert_eq!(x, s);
+                } else {
+                    let (l, h) = (x.lo.clone().max(s.lo.clone()), x.hi.clone().min(s.hi.clone()));
+                    prop_assert!(l < h, "{x:?} and {s:?} are disjoint");
+                    prop_assert_eq!(sf.count(&l, &h), 1);
+                }
+            }
+        }
+    }
+}

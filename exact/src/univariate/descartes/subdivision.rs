@@ -4,7 +4,7 @@
 
 use super::*;
 
-/// Number of sign changes, zeros skipped (the Sturm code's [`isolate::count_variations`]).
+/// Number of sign changes, zeros skipped ([`isolate::count_variations`]).
 pub(super) fn variations(b: &[BigInt]) -> usize {
     isolate::count_variations(b.iter().map(|c| match c.sign() {
         BigSign::Minus => Sign::Negative,

@@ -1,7 +1,7 @@
 //! The filtered subdivision against the exact one and against Sturm counts.
 
 use super::super::super::bench_instances;
-use super::super::super::isolate::SquareFree;
+use super::super::super::sturm::SquareFree;
 use super::*;
 use exactcheck_core::{OrderedField, Rng};
 use proptest::prelude::*;
@@ -92,7 +92,7 @@ fn check_unit(p: &[BigInt], found: &[UnitRoot], count: usize) {
 /// The number of roots of the square-free `p` in `(0, 1)` by Sturm's theorem.
 fn sturm_unit_count(p: &[BigInt]) -> usize {
     let sf = SquareFree::new(&upoly_of(p));
-    let in_half_open = sf.var_at(&Rational::ZERO) - sf.var_at(&Rational::ONE);
+    let in_half_open = sf.count(&Rational::ZERO, &Rational::ONE);
     in_half_open - usize::from(sign_at_rational(p, &Rational::ONE) == Sign::Zero)
 }
 
