@@ -10,6 +10,46 @@
 //! * sparse multivariate polynomials ([`poly`]) and their expression syntax ([`expr`]).
 #![warn(missing_docs)]
 
+/// `Ring` for a type whose arithmetic is its inherent `add_impl`, `sub_impl`, `mul_impl` and
+/// `neg_impl`: the constants and the zero test as given, the four operations delegated.
+macro_rules! ring_by_impls {
+    (
+        $t:ty;
+        zero: $zero:expr;
+        one: $one:expr;
+        from_i64: |$n:ident| $from:expr;
+        is_zero: |$s:ident| $is_zero:expr;
+    ) => {
+        impl exactcheck_core::Ring for $t {
+            fn zero() -> Self {
+                $zero
+            }
+            fn one() -> Self {
+                $one
+            }
+            fn from_i64($n: i64) -> Self {
+                $from
+            }
+            fn is_zero(&self) -> bool {
+                let $s = self;
+                $is_zero
+            }
+            fn add_ref(&self, rhs: &Self) -> Self {
+                self.add_impl(rhs)
+            }
+            fn sub_ref(&self, rhs: &Self) -> Self {
+                self.sub_impl(rhs)
+            }
+            fn mul_ref(&self, rhs: &Self) -> Self {
+                self.mul_impl(rhs)
+            }
+            fn neg_ref(&self) -> Self {
+                self.neg_impl()
+            }
+        }
+    };
+}
+
 pub mod algebraic;
 pub mod bigint;
 pub mod coefficient;

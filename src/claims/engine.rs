@@ -5,7 +5,8 @@
 use super::{Equation, Erratum, Outcome, Verdict};
 use exactcheck_core::{Hom4, Ring};
 use exactcheck_exact::expr::{parse_expr, parse_poly, Coefficient, Expr};
-use exactcheck_exact::poly::{CoeffExpr, Poly, Var, Vars};
+use exactcheck_exact::expr::CoeffExpr;
+use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
     decide_identity, factored, Domain, EngineError, IdentitySpec, IdentityVerdict, Part, Phrasing,
     PointField, Statement, Voice,

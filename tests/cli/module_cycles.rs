@@ -13,16 +13,8 @@ use std::path::{Path, PathBuf};
 
 /// The cycles that remain, per crate, with the edges that close them. A cycle not contained in
 /// one of these fails the test; an entry that is no longer a cycle fails it too (remove it).
-///
-/// `exact`: `poly` names `expr` (a square root of a formula is a variable whose radicand is kept
-/// as the formula, and polynomials convert back to formulas) and `ratfun` (factoring uses the
-/// polynomial gcd kept with the rational functions), while `expr` converts formulas to
-/// polynomials and rational functions (and evaluates constants in `algebraic`, whose fields use
-/// `univariate`, which is built on `poly`).
-const KNOWN: &[(&str, &[&str])] = &[(
-    "exact",
-    &["algebraic", "expr", "poly", "ratfun", "univariate"],
-)];
+/// None remains.
+const KNOWN: &[(&str, &[&str])] = &[];
 
 /// The library crates: name and source directory (relative to the workspace root).
 const CRATES: &[(&str, &str)] = &[

@@ -301,31 +301,12 @@ exactcheck_core::ring_ops! {
     Div::div, DivAssign::div_assign: |a, b| a.mul_impl(&b.inverse().expect("division of a number-field element by zero"));
 }
 
-impl Ring for FieldElement {
-    fn zero() -> Self {
-        FieldElement::rational(Rational::ZERO)
-    }
-    fn one() -> Self {
-        FieldElement::rational(Rational::ONE)
-    }
-    fn from_i64(n: i64) -> Self {
-        FieldElement::rational(Rational::from_integer(n))
-    }
-    fn is_zero(&self) -> bool {
-        self.poly.is_zero()
-    }
-    fn add_ref(&self, rhs: &Self) -> Self {
-        self.add_impl(rhs)
-    }
-    fn sub_ref(&self, rhs: &Self) -> Self {
-        self.sub_impl(rhs)
-    }
-    fn mul_ref(&self, rhs: &Self) -> Self {
-        self.mul_impl(rhs)
-    }
-    fn neg_ref(&self) -> Self {
-        self.neg_impl()
-    }
+ring_by_impls! {
+    FieldElement;
+    zero: FieldElement::rational(Rational::ZERO);
+    one: FieldElement::rational(Rational::ONE);
+    from_i64: |n| FieldElement::rational(Rational::from_integer(n));
+    is_zero: |e| e.poly.is_zero();
 }
 
 impl Field for FieldElement {

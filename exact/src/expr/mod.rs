@@ -129,6 +129,7 @@ mod calculus_tests;
 mod constants;
 mod eval;
 mod fraction;
+mod from_poly;
 mod latex;
 pub mod library;
 mod lower;
@@ -145,6 +146,7 @@ pub use constants::{
     abstract_constants, fill_constants, needs_algebraic, upoly_expr, ConstantLeaf,
 };
 pub use fraction::ratfun_sides;
+pub use from_poly::CoeffExpr;
 pub use latex::{equation_to_latex, to_latex, Notation};
 pub use lower::{eval_lowered, lower};
 pub use mathml::{equation_to_mathml, to_mathml};

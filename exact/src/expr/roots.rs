@@ -5,12 +5,35 @@
 //! does not add them must not allow roots (the variable alone would be a free unknown).
 
 use super::{Expr, ExprError};
-use crate::poly::{Poly, Var, Vars};
+use crate::poly::{Poly, RootEntry, RootRadicand, Var, Vars};
 use exactcheck_core::limits;
+use std::any::Any;
+use std::sync::Arc;
 
 /// Expressions are compared structurally; the numbers in them are exact, so equality is an
 /// equivalence (the table of roots, [`crate::poly::RootEntry`], needs `Eq`).
 impl Eq for Expr {}
+
+/// The radicand of a square-root variable is the formula as written.
+impl RootRadicand for Expr {
+    fn eq_radicand(&self, other: &dyn RootRadicand) -> bool {
+        other.as_any().downcast_ref::<Expr>() == Some(self)
+    }
+    fn as_any(&self) -> &dyn Any {
+        self
+    }
+}
+
+impl RootEntry {
+    /// The radicand as written: every root of a table is recorded by the conversions of
+    /// formulas ([`root_variable`]), with its formula.
+    pub fn radicand_expr(&self) -> &Expr {
+        self.radicand
+            .as_any()
+            .downcast_ref::<Expr>()
+            .expect("the conversions of formulas record every root with its formula")
+    }
+}
 
 /// The variable of `sqrt(arg)`, `radicand` being `arg` expanded (not a constant): the variable
 /// already recorded for an equal radicand, else a new one named `sqrt(<arg as printed>)`.
@@ -43,5 +66,5 @@ pub(super) fn root_variable<C: super::Coefficient>(
             pos: arg.pos,
             error,
         })?;
-    Ok(vars.add_root(&name, arg.clone(), key))
+    Ok(vars.add_root(&name, Arc::new(arg.clone()), key))
 }

@@ -6,7 +6,7 @@ use exactcheck_core::Ring;
 use std::fmt;
 
 /// The name printed for a variable that has none in the table.
-pub(super) fn fallback_name(v: usize) -> String {
+pub(crate) fn fallback_name(v: usize) -> String {
     format!("_x{v}")
 }
 

@@ -4,7 +4,7 @@
 //! expanded terms.
 //!
 //! Hand-written because it needs the workspace's own polynomial type and gcd
-//! ([`crate::ratfun::poly_gcd`]); the Rust crates that factor polynomials (none multivariate over
+//! ([`super::gcd::poly_gcd`]); the Rust crates that factor polynomials (none multivariate over
 //! Q with this representation) would need a conversion both ways for every call.
 //!
 //! # Algorithm
@@ -34,7 +34,8 @@
 //! (which refuse inputs).
 
 use super::{Poly, Var};
-use crate::ratfun::{content_in, div_exact, gcd_capped, poly_derivative, GcdError};
+use super::gcd::{content_in, gcd_capped, GcdError};
+use super::{div_exact, poly_derivative};
 use exactcheck_core::{Field, Ring};
 
 /// The most terms of a polynomial [`square_free`] factors.
@@ -159,7 +160,7 @@ mod tests {
     use super::*;
     use crate::expr::parse_poly;
     use crate::poly::Vars;
-    use crate::ratfun::poly_gcd;
+    use crate::poly::gcd::poly_gcd;
     use crate::Rational;
     use exactcheck_core::Ring;
     use proptest::prelude::*;

@@ -7,8 +7,10 @@
 //! canonical, that test is `residual.is_zero()`.
 //!
 //! # Expressions
-//! [`Poly::to_expr`] turns a polynomial back into an [`crate::expr::Expr`] (coefficients through
-//! [`CoeffExpr`]), so derived polynomials print as formulas, in LaTeX and MathML too.
+//! `Poly::to_expr` (with the formulas, [`crate::expr::CoeffExpr`]) turns a polynomial back into
+//! a formula, so derived polynomials print in LaTeX and MathML too. Polynomials themselves do
+//! not depend on formulas: the radicand of a square-root variable ([`RootEntry`]) is an opaque
+//! payload ([`RootRadicand`]) that the formulas fill in.
 //!
 //! # Variables
 //! A variable is an index ([`Var`], a `u32`); polynomials store no names. The [`Vars`] table maps
@@ -93,7 +95,9 @@
 //! is coefficient arithmetic in [`crate::Rational`].
 
 mod display;
+mod divide;
 pub mod factor;
+pub mod gcd;
 mod kernels;
 mod layout;
 mod power;
@@ -101,22 +105,25 @@ mod reduce;
 mod ring;
 #[cfg(test)]
 mod tests;
-mod to_expr;
 #[cfg(test)]
 mod word_tests;
 mod words;
 
+pub(crate) use display::fallback_name;
 pub use display::PolyDisplay;
+pub(crate) use divide::variable_span;
+pub use divide::{div_exact, poly_derivative};
 pub use factor::{square_free, Factorization};
 pub use reduce::{groebner, unit_circle_relation};
 pub use ring::{Monomial, Poly, SizeError, Terms};
-pub use to_expr::CoeffExpr;
 pub use words::{WordCoefficients, WordSum};
 
 use exactcheck_core::Ring;
 use kernels::*;
 use layout::*;
+use std::any::Any;
 use std::collections::HashMap;
+use std::sync::Arc;
 
 /// A variable: an index into a [`Vars`] table (or any numbering the caller chooses).
 pub type Var = u32;
@@ -142,14 +149,34 @@ pub struct Vars {
 
 /// A square root `sqrt(E)` of a non-constant expression, named by a variable of the table
 /// ([`crate::expr`] introduces one variable per distinct radicand).
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug)]
 pub struct RootEntry {
     /// The variable standing for the root.
     pub var: Var,
-    /// The radicand as written (converted again by [`crate::prove::square_roots`]).
-    pub radicand: crate::expr::Expr,
+    /// The radicand as written, recorded by the front end that introduced the root (a formula,
+    /// converted again by [`crate::prove::square_roots`]).
+    pub radicand: Arc<dyn RootRadicand>,
     /// The expanded radicand, printed in a canonical form: equal radicands share a variable.
     pub key: String,
+}
+
+impl PartialEq for RootEntry {
+    fn eq(&self, other: &RootEntry) -> bool {
+        self.var == other.var
+            && self.key == other.key
+            && self.radicand.eq_radicand(other.radicand.as_ref())
+    }
+}
+
+impl Eq for RootEntry {}
+
+/// The radicand of a square-root variable as its front end records it (the formula as written,
+/// [`crate::expr`]): opaque to the polynomials, so that they do not depend on formulas.
+pub trait RootRadicand: std::fmt::Debug + Any + Send + Sync {
+    /// Equality with another radicand (false for one of another type).
+    fn eq_radicand(&self, other: &dyn RootRadicand) -> bool;
+    /// The radicand as [`Any`], for its front end to read it back.
+    fn as_any(&self) -> &dyn Any;
 }
 
 impl Vars {
@@ -238,7 +265,7 @@ impl Vars {
     ///
     /// # Panics
     /// When roots are not allowed, or the table already holds `u32::MAX` names.
-    pub fn add_root(&mut self, name: &str, radicand: crate::expr::Expr, key: String) -> Var {
+    pub fn add_root(&mut self, name: &str, radicand: Arc<dyn RootRadicand>, key: String) -> Var {
         let var = self.var(name);
         self.roots
             .as_mut()

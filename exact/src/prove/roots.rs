@@ -66,17 +66,18 @@ pub fn square_roots<C: PointField>(vars: &mut Vars) -> Result<Vec<SquareRoot<C>>
     let entries = vars.roots().to_vec();
     let mut out = Vec::with_capacity(entries.len());
     for entry in entries {
-        let radicand = entry.radicand.to_poly::<C>(vars)?;
+        let written = entry.radicand_expr();
+        let radicand = written.to_poly::<C>(vars)?;
         if surely_negative(&radicand) {
             return Err(ExprError::NegativeRadicand {
-                pos: entry.radicand.pos,
-                arg: entry.radicand.to_string(),
+                pos: written.pos,
+                arg: written.to_string(),
             });
         }
         out.push(SquareRoot {
             var: entry.var,
             radicand,
-            text: entry.radicand.to_string(),
+            text: written.to_string(),
         });
     }
     Ok(out)

@@ -1,4 +1,4 @@
-use super::gcd::prs_gcd;
+use crate::poly::gcd::prs_gcd;
 use super::*;
 use crate::expr::parse_poly;
 use crate::poly::Vars;

@@ -513,29 +513,10 @@ impl From<Rational> for UPoly {
     }
 }
 
-impl Ring for UPoly {
-    fn zero() -> Self {
-        UPoly::zero()
-    }
-    fn one() -> Self {
-        UPoly::one()
-    }
-    fn from_i64(n: i64) -> Self {
-        UPoly::constant(Rational::from_integer(n))
-    }
-    fn is_zero(&self) -> bool {
-        self.coeffs.is_empty()
-    }
-    fn add_ref(&self, rhs: &Self) -> Self {
-        self.add_impl(rhs)
-    }
-    fn sub_ref(&self, rhs: &Self) -> Self {
-        self.sub_impl(rhs)
-    }
-    fn mul_ref(&self, rhs: &Self) -> Self {
-        self.mul_impl(rhs)
-    }
-    fn neg_ref(&self) -> Self {
-        self.neg_impl()
-    }
+ring_by_impls! {
+    UPoly;
+    zero: UPoly::zero();
+    one: UPoly::one();
+    from_i64: |n| UPoly::constant(Rational::from_integer(n));
+    is_zero: |p| p.coeffs.is_empty();
 }

@@ -51,7 +51,7 @@ use super::{Claim, Equation, Erratum, Outcome, Verdict};
 use exactcheck_core::ruled::RuledSurface;
 use exactcheck_core::{binomial, Bernstein, Field, Ring, Vec3};
 use exactcheck_exact::expr::Expr;
-use exactcheck_exact::poly::CoeffExpr;
+use exactcheck_exact::expr::CoeffExpr;
 use exactcheck_exact::poly::{Poly, Var};
 use exactcheck_exact::univariate::{common_real_roots_in, isolate_real_roots_in, UPoly};
 use exactcheck_exact::Rational;

@@ -119,7 +119,7 @@ where
 }
 
 fn decide<
-    C: exactcheck_exact::prove::PointField + std::fmt::Display + exactcheck_exact::poly::CoeffExpr,
+    C: exactcheck_exact::prove::PointField + std::fmt::Display + exactcheck_exact::expr::CoeffExpr,
 >(
     sym: &Symbols,
     residuals: &[(String, Poly<C>)],
@@ -127,7 +127,7 @@ fn decide<
     method: &str,
 ) -> Outcome
 where
-    C::Value: exactcheck_exact::poly::CoeffExpr,
+    C::Value: exactcheck_exact::expr::CoeffExpr,
 {
     let r: Vec<(&str, Poly<C>)> = residuals
         .iter()

@@ -189,21 +189,14 @@ pub fn certified_coprime<C: Field>(a: &Poly<C>, b: &Poly<C>) -> Option<bool> {
 /// Whether `h` may divide `p` (rational coefficients): `false` when, in a variable of `h`, the
 /// image of `h` modulo the prime keeps its degree and does not divide the image of `p` (then
 /// `h` does not divide `p`, and the exact division need not be tried); `true` otherwise.
-pub(super) fn div_image_possible<C: Field>(p: &Poly<C>, h: &Poly<C>) -> bool {
+pub(crate) fn div_image_possible<C: Field>(p: &Poly<C>, h: &Poly<C>) -> bool {
     let Some((p, h)) = as_rational(p, h) else {
         return true;
     };
     let Some(&v) = h.variables().first() else {
         return true;
     };
-    let n = p
-        .variables()
-        .iter()
-        .chain(&h.variables())
-        .map(|&w| w as usize + 1)
-        .max()
-        .unwrap_or(0);
-    let at = residues(n);
+    let at = residues(crate::poly::variable_span(p, h));
     let (Some(fp), Some(fh)) = (image_in(p, v, &at), image_in(h, v, &at)) else {
         return true;
     };

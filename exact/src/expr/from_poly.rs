@@ -1,6 +1,7 @@
 //! Polynomials and coefficients back to expression trees ([`Expr`]), so that derived polynomials
-//! and exact values print as formulas (text, LaTeX, MathML) with the printers of
-//! [`crate::expr`].
+//! and exact values print as formulas (text, LaTeX, MathML) with the printers of this module.
+//! The conversion lives with the formulas, not with the polynomials, so that polynomials do not
+//! depend on formulas.
 //!
 //! A coefficient type says how one value reads as an expression ([`CoeffExpr`]): a
 //! [`Rational`] is a number (a negative one the negation of its magnitude), a [`Radical`] the sum
@@ -10,8 +11,8 @@
 //! variables by increasing index; a coefficient `1` or `-1` is omitted, a negative coefficient
 //! becomes a `-` of the sum, and the zero polynomial is the number 0.
 
-use super::{Poly, Var, Vars};
-use crate::expr::{AddOp, Expr, ExprKind, MulOp};
+use super::{AddOp, Expr, ExprKind, MulOp};
+use crate::poly::{Poly, Var, Vars};
 use crate::radical::{ComplexRadical, Radical};
 use crate::rational::Rational;
 use exactcheck_core::{Ring, Sign};
@@ -131,7 +132,7 @@ impl<C: CoeffExpr> Poly<C> {
     pub fn to_expr(&self, vars: &Vars) -> Expr {
         let name = |v: Var| {
             vars.name(v)
-                .map_or_else(|| super::display::fallback_name(v as usize), str::to_string)
+                .map_or_else(|| crate::poly::fallback_name(v as usize), str::to_string)
         };
         let mut sum = Vec::new();
         for (mono, c) in self.terms() {

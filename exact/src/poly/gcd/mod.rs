@@ -1,9 +1,36 @@
-//! The multivariate gcd by the primitive remainder sequence ([`poly_gcd`]) and its budgeted
-//! form for callers that can do without it ([`gcd_capped`]); see the documentation of the
-//! parent module.
+//! The multivariate gcd of polynomials over a field: the primitive remainder sequence
+//! ([`poly_gcd`]), its budgeted form for callers that can do without it ([`gcd_capped`]), and the
+//! modular certificate of coprimality ([`certified_coprime`], module `coprime`) that settles
+//! most gcds met in practice without a remainder sequence. Rational functions
+//! ([`crate::ratfun`]) cancel with them, and square-free factoring ([`super::factor`]) is built
+//! on them.
+//!
+//! # The remainder sequence
+//! [`poly_gcd`] is the recursive primitive-remainder-sequence algorithm over the field of
+//! coefficients: in the main variable `v` (the highest index present), each polynomial is its
+//! content (the gcd of its coefficients in `v`, polynomials in the other variables, computed
+//! recursively) times a primitive part; the gcd is the gcd of the contents times the last
+//! non-zero pseudo-remainder of the primitive parts, each remainder made primitive (and monic)
+//! before the next step. Every product is taken with [`Poly::try_mul`], so the `degree` and
+//! `terms` limits bound the work.
+//!
+//! # Cheap cancellation
+//! The remainder sequence is expensive on the large numerators that derivatives and products
+//! of fractions build, and almost every gcd met there is 1. So, with rational coefficients,
+//! two polynomials are first tested for coprimality by their images modulo the prime
+//! `2^61 - 1` ([`certified_coprime`]): for each variable `v` they share, the other variables
+//! are replaced by fixed residues and the univariate gcd in `v` is computed modulo `p`; degree
+//! 0 for every `v`, with a leading coefficient that does not vanish, proves the gcd over Q
+//! constant (the image of the true gcd divides the image gcd and keeps its degree). The gcd
+//! crates for Rust (none multivariate over Q with these limits) could not replace this. The
+//! certificate is in `coprime`, the remainder sequence here.
 
-use super::{certified_coprime, div_exact};
-use crate::poly::{Poly, SizeError, Var};
+mod coprime;
+
+pub use coprime::certified_coprime;
+pub(crate) use coprime::div_image_possible;
+
+use super::{div_exact, Poly, SizeError, Var};
 use crate::{Radical, Rational};
 use exactcheck_core::{Field, Ring};
 use std::any::Any;
@@ -152,7 +179,7 @@ pub(crate) fn gcd_capped<C: Field>(
 
 /// The remainder sequence of [`gcd_capped`] for two non-zero, non-constant polynomials,
 /// without the coprimality test at the top (the inner gcds of contents still use it).
-pub(super) fn prs_gcd<C: Field>(
+pub(crate) fn prs_gcd<C: Field>(
     a: &Poly<C>,
     b: &Poly<C>,
     budget: &mut usize,
