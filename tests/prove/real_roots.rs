@@ -1,5 +1,5 @@
 //! Exact real root isolation: the Descartes isolator and its refinement against
-//! the Sturm isolator (`UPoly::isolate_roots`, the reference), on random integer polynomials with
+//! the Sturm isolator (`isolate_real_roots_sturm`, the reference), on random integer polynomials with
 //! repeated and rational roots, on the benchmark families at small degrees and on known roots; the
 //! check values (root counts) of the comparison sizes (the `real-roots` benchmark's command is
 //! tested in `bench/`).
@@ -8,7 +8,7 @@
 use exactcheck_core::Ring;
 use exactcheck_exact::univariate::bench_instances::{self, Family};
 use exactcheck_exact::univariate::{
-    integer_real_roots, integer_real_roots_to, RootInterval, UPoly,
+    integer_real_roots, integer_real_roots_to, isolate_real_roots_sturm, RootInterval, UPoly,
 };
 use exactcheck_exact::Rational;
 use num_bigint::BigInt;
@@ -29,7 +29,7 @@ fn upoly(c: &[BigInt]) -> UPoly {
 /// Sturm ones: a close pair is split at a point that is not dyadic of low order, so one Sturm
 /// interval can meet two found intervals; matching by order is the right test.)
 fn check_against_sturm(p: &UPoly, found: &[RootInterval]) {
-    let sturm = p.isolate_roots();
+    let sturm = isolate_real_roots_sturm(p);
     assert_eq!(
         found.len(),
         sturm.len(),

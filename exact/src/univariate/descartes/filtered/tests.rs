@@ -536,7 +536,7 @@ proptest! {
             c[1] = BigInt::one();
         }
         let p = upoly_of(&c);
-        let sturm = p.isolate_roots();
+        let sturm = isolate_real_roots_sturm(&p);
         let found = integer_real_roots(&c).expect("non-zero");
         prop_assert_eq!(found.len(), sturm.len());
         let sqf = p.square_free_part();
