@@ -386,3 +386,35 @@ fn degrees_are_a_postfix_times_pi_over_180() {
     assert!(parse_expr("°").is_err());
     assert!(parse_expr("45°°").is_err());
 }
+
+/// A square root of a non-constant formula is one variable per expanded radicand, and the table
+/// keeps the radicand's formula as written (an opaque payload of the polynomials' table).
+#[test]
+fn square_root_variables_keep_their_formula() {
+    let mut vars = Vars::new();
+    assert!(parse_expr("sqrt(x^2 + 1)")
+        .unwrap()
+        .to_poly::<Rational>(&mut vars)
+        .is_err());
+    vars.allow_roots();
+    let p: Poly<Rational> = parse_expr("sqrt(x^2 + 1) - sqrt(1 + x*x)")
+        .unwrap()
+        .to_poly(&mut vars)
+        .unwrap();
+    assert!(p.is_zero());
+    let roots = vars.roots();
+    assert_eq!(roots.len(), 1);
+    assert_eq!(roots[0].radicand_expr().to_string(), "x^2 + 1");
+    // The position of the argument (its opening parenthesis) in the source, for messages.
+    assert_eq!(roots[0].radicand_expr().pos, 4);
+    assert_eq!(vars.name(roots[0].var), Some("sqrt(x^2 + 1)"));
+    let copy = vars.clone();
+    assert_eq!(copy, vars);
+    let mut other = Vars::new();
+    other.allow_roots();
+    let _: Poly<Rational> = parse_expr("sqrt(x^2 + 2)")
+        .unwrap()
+        .to_poly(&mut other)
+        .unwrap();
+    assert_ne!(other, vars);
+}
