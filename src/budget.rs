@@ -20,7 +20,7 @@
 //!   process with one line and exit status 2 when the command has not finished in time.
 //!
 //! Either way the process groups of running `--program` float sides are killed first
-//! ([`exactcheck_float::program::stop_all`]).
+//! ([`exactcheck_float::external::stop_all`]).
 //! - **Progress.** A long `prove` or `solve` shows the seconds spent on standard error when that
 //!   is a terminal ([`start_progress`], kept in the leaf module [`crate::progress`] so that
 //!   [`crate::output`] can clear the line before writing without depending on this module).
@@ -236,7 +236,7 @@ fn die(args: std::fmt::Arguments<'_>) -> ! {
     let _ = std::fmt::write(&mut text, args);
     crate::output::remove_temp_file();
     // A `--program` float side (and anything it started) does not outlive exactcheck.
-    exactcheck_float::program::stop_all();
+    exactcheck_float::external::stop_all();
     exit_with(&text.buf[..text.len])
 }
 

@@ -18,7 +18,7 @@
 //!   reproducible cases. This is the model of CGAL's `Kernel_checker`: two kernels, every
 //!   disagreement reported with its inputs.
 //!
-//! * [`program`] — [`ProgramRunner`]: the user's own executable (any language) as the float
+//! * [`external`] — [`ProgramRunner`]: the user's own executable (any language) as the float
 //!   side, fed one JSON line of inputs per sample and answering one line of outputs.
 //! * [`wabis`] — the published JavaScript `InterctionLineOf2Areas` ported to `f64`
 //!   operation for operation: the float code under test of `regress plane-plane`.
@@ -33,7 +33,7 @@ pub mod gen;
 pub mod harness;
 pub mod json;
 pub mod near;
-pub mod program;
+pub mod external;
 pub mod report;
 pub mod sampler;
 pub mod scalar;
@@ -54,7 +54,7 @@ pub use harness::{
     RegressError, Subject,
 };
 pub use near::NearSet;
-pub use program::{ProgramError, ProgramRunner};
+pub use external::{ProgramError, ProgramRunner};
 pub use report::{Case, Explanation, OperationError, Report, Summary, ThresholdCount, WorstCase};
 pub use scalar::ExactScalar;
 pub use shard::{Shard, Sweep};

@@ -5,7 +5,7 @@
 //! The exact side is [`Program::eval_exact`] (the true real value, irrational roots refined far
 //! beyond double precision); the float side is [`Program::eval_f64`] (the operations in f64 in
 //! the order written) or, with `--program`, the user's executable fed through
-//! [`exactcheck_float::program::ProgramRunner`].
+//! [`exactcheck_float::external::ProgramRunner`].
 
 use super::explain;
 use super::sweep::Entry;
@@ -15,7 +15,7 @@ use exactcheck_exact::program::fpcore;
 use exactcheck_exact::program::{ExactStop, Format, Program};
 use exactcheck_exact::Rational;
 use exactcheck_float::domain::{parse_domain, Domain, Sampling};
-use exactcheck_float::program::ProgramRunner;
+use exactcheck_float::external::ProgramRunner;
 use exactcheck_float::{
     CaseError, ExactScalar, ExactValue, FloatSideError, InputGen, Options, Subject,
 };

@@ -3,7 +3,7 @@
 //! examples among them; and every way a program can fail the protocol, each a one-line error
 //! naming the sample, never a hang.
 
-use exactcheck_float::program::{ProgramError, ProgramRunner};
+use exactcheck_float::external::{ProgramError, ProgramRunner};
 use exactcheck_float::Rng;
 use std::fs;
 use std::path::{Path, PathBuf};

@@ -220,13 +220,13 @@ fn describe_status(status: ExitStatus) -> String {
 ///
 /// # Example
 /// ```no_run
-/// use exactcheck_float::program::ProgramRunner;
+/// use exactcheck_float::external::ProgramRunner;
 /// use std::time::Duration;
 ///
 /// let mut p = ProgramRunner::spawn("./sqrtdiff", 1, 1, Duration::from_secs(10))?;
 /// let ys = p.eval_batch(0, &[vec![1.0], vec![1e15]])?;
 /// assert_eq!(ys.len(), 2);
-/// # Ok::<(), exactcheck_float::program::ProgramError>(())
+/// # Ok::<(), exactcheck_float::external::ProgramError>(())
 /// ```
 pub struct ProgramRunner {
     command: String,
