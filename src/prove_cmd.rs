@@ -45,7 +45,7 @@ use exactcheck_exact::expr::{
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
     decide_identity, factored, real_zero_free, square_roots, AlgebraicConstants, CoordinateOutcome,
-    Domain, EngineError, FractionIdentity, IdentityReport, IdentitySpec, IdentityVerdict, Part,
+    VarDomain, EngineError, FractionIdentity, IdentityReport, IdentitySpec, IdentityVerdict, Part,
     Phrasing, PointField, RadicalPoint, SquareRoot, Statement, Voice,
 };
 use exactcheck_exact::ratfun::RatFun;
@@ -93,7 +93,7 @@ pub enum Where {
     /// `A = B`.
     Relation(Expr, Expr),
     /// A variable's bounds.
-    Domain(String, Domain),
+    Domain(String, VarDomain),
     /// `A != B`: a hypothesis the proof may use (and the counter-example search respects).
     NonZero(Expr, Expr),
 }
@@ -193,7 +193,7 @@ pub fn parse_where_with(
         Ok(p.constant_value()
             .expect("a polynomial without variables is a constant"))
     };
-    let mut domain = Domain::all();
+    let mut domain = VarDomain::all();
     for (k, &(less, strict)) in ops.iter().enumerate() {
         // parts[k] op parts[k + 1].
         let (other, var_left) = if k + 1 == vi {
@@ -297,7 +297,7 @@ pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
     };
     let mut relations = Vec::new();
     let mut nonzero = Vec::new();
-    let mut domains: Vec<(String, Domain, String)> = Vec::new();
+    let mut domains: Vec<(String, VarDomain, String)> = Vec::new();
     for (i, r) in args.relations.iter().enumerate() {
         let what = format!("--where #{}", i + 1);
         match parse_where(r, &what)? {
@@ -450,7 +450,7 @@ pub(crate) fn prove_over<C: PointField + Display>(
     sides: &Sides,
     relations: &[(Expr, Expr)],
     nonzero: &[(Expr, Expr, String)],
-    domains: &[(String, Domain, String)],
+    domains: &[(String, VarDomain, String)],
     constants: Option<&AlgebraicConstants>,
 ) -> Result<ExitCode, Error> {
     let mut vars = Vars::new();
@@ -530,7 +530,7 @@ pub(crate) fn prove_over<C: PointField + Display>(
         .iter()
         .map(|a| format!("cos({0})^2 + sin({0})^2 = 1", a.name))
         .collect();
-    let mut doms: Vec<(Var, Domain)> = Vec::new();
+    let mut doms: Vec<(Var, VarDomain)> = Vec::new();
     for (v, d, text) in domains {
         if v == PI {
             return Err(Error::Input(format!(

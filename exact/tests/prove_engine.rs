@@ -7,7 +7,7 @@ use exactcheck_exact::expr::{parse_expr, parse_poly};
 use exactcheck_exact::modp::{is_prime_u64, ModP, PrimeField};
 use exactcheck_exact::poly::{Poly, Vars};
 use exactcheck_exact::prove::{
-    decide, decide_in, random_identity_test, DecideError, Decision, Domain, Hypothesis,
+    decide, decide_in, random_identity_test, DecideError, Decision, VarDomain, Hypothesis,
     RandomDecision, Seed, MAX_RANDOM_TRIALS,
 };
 use exactcheck_exact::{Radical, Rational};
@@ -252,11 +252,11 @@ fn non_zero_normal_forms_fail_at_a_real_point_of_the_relations() {
 
 #[test]
 fn counter_examples_stay_in_the_domains() {
-    let positive = Domain {
+    let positive = VarDomain {
         lower: Some((Rational::ZERO, true)),
         upper: None,
     };
-    let half_up = Domain {
+    let half_up = VarDomain {
         lower: Some((Rational::new(1, 2).unwrap(), false)),
         upper: None,
     };
@@ -274,7 +274,7 @@ fn counter_examples_stay_in_the_domains() {
     let mut vars = Vars::new();
     let res = parse_poly::<Rational>("c - 1", &mut vars).unwrap();
     let rels = polys(&["c^2 + s^2 - 1"], &mut vars);
-    let c_dom = Domain {
+    let c_dom = VarDomain {
         lower: Some((Rational::new(1, 2).unwrap(), true)),
         upper: Some((Rational::ONE, true)),
     };
@@ -285,7 +285,7 @@ fn counter_examples_stay_in_the_domains() {
     let mut vars = Vars::new();
     let res = parse_poly::<Rational>("x - 2", &mut vars).unwrap();
     let rels = polys(&["x^2 - 4"], &mut vars);
-    let neg = Domain {
+    let neg = VarDomain {
         lower: None,
         upper: Some((Rational::ZERO, true)),
     };
@@ -294,7 +294,7 @@ fn counter_examples_stay_in_the_domains() {
     // x^2 = 4 with x > 3 has no point. x = 2 follows from the sign (the non-negative root of
     // x^2 = 4 is 2), so it is proved using the domain; x = -2 does not, and no point is found:
     // undecided.
-    let big = Domain {
+    let big = VarDomain {
         lower: Some((Rational::from_integer(3), true)),
         upper: None,
     };
@@ -313,7 +313,7 @@ fn counter_examples_stay_in_the_domains() {
 fn malformed_domains_are_errors() {
     let mut vars = Vars::new();
     let res = parse_poly::<Rational>("x", &mut vars).unwrap();
-    let empty = Domain {
+    let empty = VarDomain {
         lower: Some((Rational::ONE, false)),
         upper: Some((Rational::ZERO, false)),
     };
@@ -321,7 +321,7 @@ fn malformed_domains_are_errors() {
         decide_in(&res, &[], &[(0, empty)], 1).unwrap_err(),
         DecideError::EmptyDomain(0)
     );
-    let d = Domain::all();
+    let d = VarDomain::all();
     assert_eq!(
         decide_in(&res, &[], &[(0, d.clone()), (0, d.clone())], 1).unwrap_err(),
         DecideError::DuplicateDomain(0)

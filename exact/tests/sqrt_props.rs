@@ -8,7 +8,7 @@ use exactcheck_core::Ring;
 use exactcheck_exact::expr::parse_expr;
 use exactcheck_exact::poly::{Poly, Vars};
 use exactcheck_exact::prove::{
-    decide_where, square_roots, Decision, Domain, Hypothesis, SquareRoot,
+    decide_where, square_roots, Decision, VarDomain, Hypothesis, SquareRoot,
 };
 use exactcheck_exact::Rational;
 use proptest::prelude::*;
@@ -31,14 +31,14 @@ fn text(t: &Terms, x: &str, y: &str) -> String {
 
 /// Decides `lhs = rhs` with the roots given their relations and sign conditions, and `domains`
 /// by variable name.
-fn decide(lhs: &str, rhs: &str, domains: &[(&str, Domain)]) -> Decision<Rational> {
+fn decide(lhs: &str, rhs: &str, domains: &[(&str, VarDomain)]) -> Decision<Rational> {
     let mut vars = Vars::new();
     vars.allow_roots();
     let l: Poly<Rational> = parse_expr(lhs).unwrap().to_poly(&mut vars).unwrap();
     let r: Poly<Rational> = parse_expr(rhs).unwrap().to_poly(&mut vars).unwrap();
     let roots = square_roots::<Rational>(&mut vars).unwrap();
     let rels: Vec<Poly<Rational>> = roots.iter().map(SquareRoot::relation).collect();
-    let mut doms: Vec<(u32, Domain)> = domains
+    let mut doms: Vec<(u32, VarDomain)> = domains
         .iter()
         .map(|(n, d)| (vars.get(n).unwrap(), d.clone()))
         .collect();
@@ -54,8 +54,8 @@ fn value(text: &str) -> Option<Rational> {
     parse_expr(text).unwrap().eval_constant::<Rational>().ok()
 }
 
-fn at_least(lo: i64) -> Domain {
-    Domain {
+fn at_least(lo: i64) -> VarDomain {
+    VarDomain {
         lower: Some((Rational::from_integer(lo), false)),
         upper: None,
     }

@@ -8,7 +8,7 @@ use exactcheck_exact::expr::{parse_expr, parse_poly, Coefficient, Expr};
 use exactcheck_exact::expr::CoeffExpr;
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
-    decide_identity, factored, Domain, EngineError, IdentitySpec, IdentityVerdict, Part, Phrasing,
+    decide_identity, factored, VarDomain, EngineError, IdentitySpec, IdentityVerdict, Part, Phrasing,
     PointField, Statement, Voice,
 };
 use exactcheck_exact::ratfun::RatFun;
@@ -85,7 +85,7 @@ pub fn prove_all_in<C: PointField + Display + CoeffExpr>(
     residuals: &[(&str, Poly<C>)],
     sides: &[&Poly<C>],
     relations: &[Poly<C>],
-    domains: &[(Var, Domain)],
+    domains: &[(Var, VarDomain)],
     method: &str,
 ) -> Outcome
 where

@@ -10,7 +10,7 @@ use crate::Error;
 use exactcheck_exact::expr::{abstract_constants, needs_algebraic, Expr};
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
-    AlgebraicConstants, ConstantPoint, CoordinateOutcome, Domain, IdentityReport, IdentitySpec,
+    AlgebraicConstants, ConstantPoint, CoordinateOutcome, VarDomain, IdentityReport, IdentitySpec,
     IdentityVerdict, PointField, Statement,
 };
 use exactcheck_exact::ratfun::RatFun;
@@ -91,7 +91,7 @@ pub(crate) fn prove_with_constants(
     sides: &Sides,
     relations: &[(Expr, Expr)],
     nonzero: &[(Expr, Expr, String)],
-    domains: &[(String, Domain, String)],
+    domains: &[(String, VarDomain, String)],
 ) -> Result<ExitCode, Error> {
     // Every expression with the part of the statement it belongs to, for the errors.
     let mut exprs: Vec<&Expr> = Vec::new();
@@ -149,7 +149,7 @@ pub(crate) type Relation<C> = (RatFun<C>, RatFun<C>);
 pub(crate) fn constant_relation<C: PointField>(
     k: &AlgebraicConstants,
     vars: &mut Vars,
-) -> Result<(Relation<C>, (Var, Domain)), String> {
+) -> Result<(Relation<C>, (Var, VarDomain)), String> {
     let m = k
         .relation()
         .to_ratfun::<C>(vars)

@@ -21,7 +21,7 @@
 //! separately do not describe their field when they are dependent (`cos(pi/5)` and `sqrt(5)`),
 //! and a non-zero reduction would then prove nothing.
 
-use super::{small_height_rationals, unit_circle_pairs, Domain};
+use super::{small_height_rationals, unit_circle_pairs, VarDomain};
 use crate::algebraic::{primitive_element, FieldError, NumberField};
 use crate::expr::{fill_constants, upoly_expr, ConstantLeaf, Expr};
 use crate::poly::{Poly, Var};
@@ -125,9 +125,9 @@ impl AlgebraicConstants {
     }
 
     /// The isolating interval of `theta` among the real roots of `m`, as the domain of `c`.
-    pub fn domain(&self) -> Domain {
+    pub fn domain(&self) -> VarDomain {
         let iv = self.field.generator().interval();
-        Domain {
+        VarDomain {
             lower: Some((iv.lo.clone(), true)),
             upper: Some((iv.hi.clone(), true)),
         }
@@ -187,7 +187,7 @@ impl AlgebraicConstants {
         rhs: &RatFun<Rational>,
         relations: &[Poly<Rational>],
         conditions: &[Poly<Rational>],
-        domains: &[(Var, Domain)],
+        domains: &[(Var, VarDomain)],
         excluded: &[Var],
     ) -> Result<ConstantPoint, String> {
         let (pairs, others) = unit_circle_pairs(relations);

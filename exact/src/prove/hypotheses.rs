@@ -20,7 +20,7 @@
 //! greedily (drop one hypothesis, decide again, keep it dropped if the proof survives), with at
 //! most [`MAX_HYPOTHESIS_DROPS`] extra decisions; the set reported is the one the proof used.
 
-use super::{Domain, PointField};
+use super::{VarDomain, PointField};
 use crate::poly::{groebner, Poly, Var};
 use crate::{Radical, Rational};
 use exactcheck_core::Ring;
@@ -51,7 +51,7 @@ struct Problem<'a, C: PointField> {
     residual: &'a Poly<C>,
     relations: &'a [Poly<C>],
     nonzero: &'a [Poly<C>],
-    dom: &'a [Domain],
+    dom: &'a [VarDomain],
 }
 
 /// A root: the variable `y`, and `E / a` from its relation `a y^2 - E`.
@@ -66,7 +66,7 @@ pub(super) fn prove_under_hypotheses<C: PointField>(
     residual: &Poly<C>,
     relations: &[Poly<C>],
     nonzero: &[Poly<C>],
-    dom: &[Domain],
+    dom: &[VarDomain],
 ) -> Outcome {
     let problem = Problem {
         residual,
@@ -80,7 +80,7 @@ pub(super) fn prove_under_hypotheses<C: PointField>(
         .collect();
     all.extend(
         (0..dom.len())
-            .filter(|&v| dom[v] != Domain::all())
+            .filter(|&v| dom[v] != VarDomain::all())
             .map(|v| Hypothesis::Domain(v as Var)),
     );
     if all.is_empty() {
@@ -148,7 +148,7 @@ impl<C: PointField> Problem<'_, C> {
         if basis.iter().any(|b| b.is_constant() && !b.is_zero()) {
             return Ok(false);
         }
-        let mut signs = vec![Domain::all(); nvars];
+        let mut signs = vec![VarDomain::all(); nvars];
         for &h in set {
             if let Hypothesis::Domain(v) = h {
                 signs[v as usize] = self.dom[v as usize].clone();
@@ -202,7 +202,7 @@ fn branch_zero<C: PointField>(
     p: &Poly<C>,
     roots: &[Root<C>],
     basis: &[Poly<C>],
-    signs: &[Domain],
+    signs: &[VarDomain],
     steps: &mut usize,
 ) -> bool {
     let p = if basis.is_empty() {
@@ -293,7 +293,7 @@ fn split<C: PointField>(p: &Poly<C>, root: &Root<C>) -> Option<(Poly<C>, Poly<C>
 }
 
 /// The sufficient test of the module documentation for `p >= 0` on `signs`.
-pub(super) fn non_negative<C: PointField>(p: &Poly<C>, signs: &[Domain]) -> bool {
+pub(super) fn non_negative<C: PointField>(p: &Poly<C>, signs: &[VarDomain]) -> bool {
     if p.is_zero() {
         return true;
     }

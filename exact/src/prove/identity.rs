@@ -13,7 +13,7 @@
 //! decides the claim, else the first undecided one, else it is proved.
 
 use super::{
-    counter_example, decide_fraction, decide_in, decide_where, DecideError, Decision, Domain,
+    counter_example, decide_fraction, decide_in, decide_where, DecideError, Decision, VarDomain,
     FractionIdentity, Hypothesis, PointField, RadicalPoint,
 };
 use crate::poly::{Poly, SizeError, Var, Vars};
@@ -41,7 +41,7 @@ pub struct IdentitySpec<C: PointField> {
     /// Relations `a = b` the variables satisfy.
     pub relations: Vec<(RatFun<C>, RatFun<C>)>,
     /// Domains of variables (counter-examples are searched inside them).
-    pub domains: Vec<(Var, Domain)>,
+    pub domains: Vec<(Var, VarDomain)>,
     /// Polynomials assumed non-zero: the proof does not use them, a counter-example avoids their
     /// zeros (the denominators of relations between fractions join them).
     pub hypotheses: Vec<Poly<C>>,

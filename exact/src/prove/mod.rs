@@ -30,7 +30,7 @@
 //! by variable, every value exact:
 //! 1. every variable gets its small-height value, or in the random attempts a small rational
 //!    drawn from its domain (`n/d`, `|n| <= 9`, `d <= 4`, without a domain; else from the box,
-//!    see [`Domain`]);
+//!    see [`VarDomain`]);
 //! 2. on even attempts (and always when all relations are unit circles), each unit circle
 //!    `c^2 + s^2 = 1` is given the rational point `((1 - tau^2)/(1 + tau^2), 2 tau/(1 + tau^2))`
 //!    for a small rational `tau` (in the small-height attempts, the value of `c`); on odd
@@ -196,22 +196,22 @@ pub enum Decision<C: PointField> {
 
 /// The range of a variable: optional lower and upper bounds, each with a flag "strict".
 ///
-/// `Domain { lower: Some((0, true)), upper: None }` is `v > 0`; `lower: Some((0, false)), upper:
+/// `VarDomain { lower: Some((0, true)), upper: None }` is `v > 0`; `lower: Some((0, false)), upper:
 /// Some((1, false))` is `0 <= v <= 1`. Sampling draws from the box: with both bounds
 /// `lo + (hi - lo) k/16` (`k` in `1..16`, the ends too when not strict), with one bound
 /// `lo + n/d` or `hi - n/d` (`n/d` a small positive rational, or 0 when not strict).
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct Domain {
+pub struct VarDomain {
     /// The lower bound and whether it is strict (`>`), if any.
     pub lower: Option<(Rational, bool)>,
     /// The upper bound and whether it is strict (`<`), if any.
     pub upper: Option<(Rational, bool)>,
 }
 
-impl Domain {
+impl VarDomain {
     /// The whole real line.
-    pub fn all() -> Domain {
-        Domain::default()
+    pub fn all() -> VarDomain {
+        VarDomain::default()
     }
 
     /// Whether no real number satisfies the bounds.
@@ -276,7 +276,7 @@ impl Domain {
     }
 }
 
-impl fmt::Display for Domain {
+impl fmt::Display for VarDomain {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let op = |strict: bool| if strict { "<" } else { "<=" };
         match (&self.lower, &self.upper) {
@@ -407,7 +407,7 @@ pub fn decide<C: PointField>(
 pub fn decide_in<C: PointField>(
     residual: &Poly<C>,
     relations: &[Poly<C>],
-    domains: &[(Var, Domain)],
+    domains: &[(Var, VarDomain)],
     nvars: usize,
 ) -> Result<Decision<C>, DecideError> {
     decide_where(residual, relations, &[], domains, nvars)
@@ -427,10 +427,10 @@ pub fn decide_where<C: PointField>(
     residual: &Poly<C>,
     relations: &[Poly<C>],
     nonzero: &[Poly<C>],
-    domains: &[(Var, Domain)],
+    domains: &[(Var, VarDomain)],
     nvars: usize,
 ) -> Result<Decision<C>, DecideError> {
-    let mut dom = vec![Domain::all(); nvars];
+    let mut dom = vec![VarDomain::all(); nvars];
     let mut seen = vec![false; nvars];
     for (v, d) in domains {
         let i = *v as usize;
@@ -499,7 +499,7 @@ pub fn decide_where<C: PointField>(
                 } else {
                     ", relations solved one variable at a time: rational roots and real roots of quadratics"
                 },
-                if dom.iter().any(|d| *d != Domain::all()) { " in the domains" } else { "" },
+                if dom.iter().any(|d| *d != VarDomain::all()) { " in the domains" } else { "" },
                 if nonzero.is_empty() { "" } else { " off the zeros of the denominators" },
             ),
             normal_form: nf,
@@ -536,7 +536,7 @@ fn search<C: PointField>(
     nonzero: &[Poly<C>],
     pairs: &[(Var, Var)],
     others: &[Poly<C>],
-    dom: &[Domain],
+    dom: &[VarDomain],
     nvars: usize,
 ) -> Option<(RadicalPoint, C::Value)> {
     // Relations as real radical polynomials, for solving (those with non-real coefficients are
@@ -664,7 +664,7 @@ pub fn small_height_rationals(max_height: i64) -> Vec<Rational> {
 /// inactive one keeps its first), the tuples of positions ordered by their largest position, then
 /// by their sum, then lexicographically. A variable whose domain holds no rational of height up
 /// to [`SMALL_HEIGHT`] takes the domain's own samples (seeded).
-fn small_points(dom: &[Domain], active: &[bool], budget: usize) -> Vec<Vec<Rational>> {
+fn small_points(dom: &[VarDomain], active: &[bool], budget: usize) -> Vec<Vec<Rational>> {
     let heights = small_height_rationals(SMALL_HEIGHT);
     let mut rng = Rng::new(0x5EED_0002);
     let lists: Vec<Vec<Rational>> = dom
@@ -751,7 +751,7 @@ fn tuples(
 fn solve_relations(
     rels: &[Poly<Radical>],
     base: &[Rational],
-    dom: &[Domain],
+    dom: &[VarDomain],
     point: &mut [Option<Radical>],
     rng: &mut Rng,
 ) -> bool {
@@ -912,7 +912,7 @@ mod tests {
     fn failing_point(
         text: &str,
         names: &[&str],
-        domains: &[(Var, Domain)],
+        domains: &[(Var, VarDomain)],
     ) -> Vec<(String, String)> {
         let mut vars = Vars::from_names(names);
         let residual = p(text, &mut vars);
@@ -941,7 +941,7 @@ mod tests {
             at(&[("t", "-1"), ("w0", "1"), ("w1", "1"), ("w2", "1")])
         );
         // 0 < t < 1 and positive weights: t = 1/2, w = 1.
-        let open = |lo: i64, hi: Option<i64>| Domain {
+        let open = |lo: i64, hi: Option<i64>| VarDomain {
             lower: Some((Rational::from(lo), true)),
             upper: hi.map(|h| (Rational::from(h), true)),
         };
@@ -958,7 +958,7 @@ mod tests {
         // A domain without small rationals still gets points (its own samples).
         let far = [(
             0,
-            Domain {
+            VarDomain {
                 lower: Some((Rational::new(1000001, 1000).unwrap(), true)),
                 upper: Some((Rational::new(1000002, 1000).unwrap(), true)),
             },
@@ -969,7 +969,7 @@ mod tests {
 
     #[test]
     fn domains() {
-        let d = Domain {
+        let d = VarDomain {
             lower: Some((Rational::ZERO, true)),
             upper: Some((Rational::ONE, false)),
         };
@@ -978,7 +978,7 @@ mod tests {
         for _ in 0..100 {
             assert!(d.contains(&Radical::from(d.sample(&mut rng))));
         }
-        let empty = Domain {
+        let empty = VarDomain {
             lower: Some((Rational::ONE, false)),
             upper: Some((Rational::ONE, true)),
         };

@@ -2,11 +2,11 @@
 //! non-negative real root, defined where `E >= 0`. The conversion ([`crate::expr`]) names each
 //! distinct radicand by a variable `y`; here `y` gets its meaning: the relation `y^2 - E = 0`
 //! (passed to the decision with the other relations, so ideal membership proves what holds for
-//! both roots `±sqrt(E)`) and the sign condition `y >= 0` (a [`Domain`], which the counter-example
+//! both roots `±sqrt(E)`) and the sign condition `y >= 0` (a [`VarDomain`], which the counter-example
 //! search respects — it takes the non-negative root — and which the proof uses where the branch
 //! matters, see `hypotheses`).
 
-use super::{real_zero_free, Domain, PointField};
+use super::{real_zero_free, VarDomain, PointField};
 use crate::expr::ExprError;
 use crate::poly::{Poly, Var, Vars};
 use crate::Radical;
@@ -33,8 +33,8 @@ impl<C: Ring> SquareRoot<C> {
     }
 
     /// The sign condition `y >= 0` (the root is the non-negative one).
-    pub fn domain() -> Domain {
-        Domain {
+    pub fn domain() -> VarDomain {
+        VarDomain {
             lower: Some((Rational::ZERO, false)),
             upper: None,
         }

@@ -216,7 +216,7 @@ fn identity<C: PointField + Display>(
         Some(k) => format!("{suffix} ({})", k.description()),
         None => suffix,
     };
-    let mut domains: Vec<(Var, Domain)> = Vec::new();
+    let mut domains: Vec<(Var, VarDomain)> = Vec::new();
     for (v, d, text) in &conditions.domains {
         let var = vars.get(v).ok_or_else(|| {
             Fault::Input(

@@ -30,7 +30,7 @@ use exactcheck_exact::expr::{
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
     decide_identity, random_identity_test, square_roots, unit_circle_pairs, CorrectionVerdict,
-    Domain, EngineError, FractionIdentity, IdentitySpec, IdentityVerdict, Part, Phrasing,
+    VarDomain, EngineError, FractionIdentity, IdentitySpec, IdentityVerdict, Part, Phrasing,
     PointField, RandomDecision, Seed, SquareRoot, Statement, Voice, HOLDS_THRESHOLD_LOG2,
     MAX_RANDOM_TRIALS,
 };
@@ -58,7 +58,7 @@ type Built<T> = Result<T, (&'static str, String)>;
 pub struct Conditions {
     relations: Vec<(Expr, Expr)>,
     relation_texts: Vec<String>,
-    domains: Vec<(String, Domain, String)>,
+    domains: Vec<(String, VarDomain, String)>,
     /// Hypotheses `A != B` and their texts.
     nonzero: Vec<(Expr, Expr, String)>,
 }

@@ -18,7 +18,7 @@ use super::{Claim, Equation, Outcome, Verdict};
 use exactcheck_core::cylinder_sphere::{Angle, CylinderSphere};
 use exactcheck_core::{Ring, Vec3};
 use exactcheck_exact::poly::{unit_circle_relation, Poly, Var};
-use exactcheck_exact::prove::Domain;
+use exactcheck_exact::prove::VarDomain;
 use exactcheck_exact::Rational;
 
 type P = Poly<Rational>;
@@ -75,13 +75,13 @@ pub fn claims() -> Vec<Claim> {
 const METHOD: &str = "symbolic expansion modulo cos^2 + sin^2 = 1 (t, beta, gamma)";
 
 /// The domain of one variable of the printed formulas, as data: the engine's
-/// [`Domain`] (bounds, strict or not) with the variable's name and the geometric reason.
+/// [`VarDomain`] (bounds, strict or not) with the variable's name and the geometric reason.
 #[derive(Clone, Debug, PartialEq)]
 pub struct DomainDecl {
     /// The variable's name (one of the declared variables).
     pub var: &'static str,
     /// The bounds, as the proof engine takes them.
-    pub domain: Domain,
+    pub domain: VarDomain,
     /// Why (the geometry).
     pub why: &'static str,
 }
@@ -113,7 +113,7 @@ impl DomainDecl {
 /// centre `d, e, f` and the height `u` are unrestricted; the paper restricts no parameter to
 /// [0, 1].)
 pub fn domains() -> Vec<DomainDecl> {
-    let positive = || Domain {
+    let positive = || VarDomain {
         lower: Some((Rational::ZERO, true)),
         upper: None,
     };
@@ -135,7 +135,7 @@ struct Setup {
     sym: Symbols,
     relations: Vec<P>,
     /// The declared domains with their variables.
-    domains: Vec<(Var, Domain)>,
+    domains: Vec<(Var, VarDomain)>,
     cs: CylinderSphere<P>,
     ct: P,
     st: P,
