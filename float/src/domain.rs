@@ -1,4 +1,4 @@
-//! Input domains: one exact [`Interval`] per input, and the generator [`Domain`] that samples
+//! Input domains: one exact [`Interval`] per input, and the generator [`SampleDomain`] that samples
 //! doubles inside them — the domain of an FPCore benchmark (from its `:pre`) or of
 //! `regress --formula ... --domain 'x in [-1, 1], y >= 0'` ([`parse_domain`]).
 //!
@@ -13,12 +13,12 @@
 //!   median sample has a binary exponent near the middle of the exponent range (about 2^0),
 //!   not near 1e308 as uniform-on-the-reals sampling would give.
 //!
-//! [`Domain::with_sampling`] makes one rule apply to every coordinate ([`Sampling`]): all
+//! [`SampleDomain::with_sampling`] makes one rule apply to every coordinate ([`Sampling`]): all
 //! uniform over the doubles of their ranges, bounded ones too (as Herbie samples every input),
 //! or all uniform on the reals (every range then needs both bounds).
 //!
 //! # Binary32
-//! [`Domain::with_format`] with [`Format::Binary32`] samples binary32 values (held exactly by the
+//! [`SampleDomain::with_format`] with [`Format::Binary32`] samples binary32 values (held exactly by the
 //! doubles returned): the ranges are those of the binary32 values inside the bounds (an
 //! unbounded side stops at `±f32::MAX`), "uniform over the doubles" becomes uniform over the
 //! binary32 values (their ordinal indices), and a uniform draw on the reals is rounded to the
@@ -167,22 +167,22 @@ enum Draw {
 
 /// A generator sampling each input inside its [`Interval`] (see the module doc).
 #[derive(Clone, Debug, PartialEq)]
-pub struct Domain {
+pub struct SampleDomain {
     intervals: Vec<Interval>,
     draws: Vec<Draw>,
     names: Vec<String>,
     format: Format,
 }
 
-impl Domain {
+impl SampleDomain {
     /// The generator of these intervals, one per input. Inputs are named `x0`, `x1`, ... in
-    /// errors and in [`InputGen::describe`] ([`Domain::named`] names them).
+    /// errors and in [`InputGen::describe`] ([`SampleDomain::named`] names them).
     ///
     /// # Errors
     /// When an interval contains no finite double, naming the coordinate.
-    pub fn new(intervals: Vec<Interval>) -> Result<Domain, GenError> {
+    pub fn new(intervals: Vec<Interval>) -> Result<SampleDomain, GenError> {
         let names: Vec<String> = (0..intervals.len()).map(|i| format!("x{i}")).collect();
-        Domain::named(intervals, &names)
+        SampleDomain::named(intervals, &names)
     }
 
     /// The generator of these intervals, one per input, with the inputs' names (for errors and
@@ -191,24 +191,24 @@ impl Domain {
     /// # Errors
     /// When the number of names is not the number of intervals, or when an interval contains
     /// no finite double, naming the input.
-    pub fn named(intervals: Vec<Interval>, names: &[String]) -> Result<Domain, GenError> {
-        Domain::named_in(intervals, names, Format::Binary64)
+    pub fn named(intervals: Vec<Interval>, names: &[String]) -> Result<SampleDomain, GenError> {
+        SampleDomain::named_in(intervals, names, Format::Binary64)
     }
 
     /// The same domain sampling the values of `format` (see the module doc; draw rules are
-    /// reset to [`Sampling::Mixed`]: apply [`Domain::with_sampling`] after this).
+    /// reset to [`Sampling::Mixed`]: apply [`SampleDomain::with_sampling`] after this).
     ///
     /// # Errors
     /// When an interval contains no finite value of `format`, naming the input.
-    pub fn with_format(self, format: Format) -> Result<Domain, GenError> {
-        Domain::named_in(self.intervals, &self.names, format)
+    pub fn with_format(self, format: Format) -> Result<SampleDomain, GenError> {
+        SampleDomain::named_in(self.intervals, &self.names, format)
     }
 
     fn named_in(
         intervals: Vec<Interval>,
         names: &[String],
         format: Format,
-    ) -> Result<Domain, GenError> {
+    ) -> Result<SampleDomain, GenError> {
         if names.len() != intervals.len() {
             return Err(GenError(format!(
                 "{} names for a domain of {} inputs",
@@ -245,7 +245,7 @@ impl Domain {
                 }
             });
         }
-        Ok(Domain {
+        Ok(SampleDomain {
             intervals,
             draws,
             names,
@@ -257,7 +257,7 @@ impl Domain {
     ///
     /// # Errors
     /// When the number of names is not the number of intervals.
-    pub fn with_names(mut self, names: &[String]) -> Result<Domain, GenError> {
+    pub fn with_names(mut self, names: &[String]) -> Result<SampleDomain, GenError> {
         if names.len() != self.intervals.len() {
             return Err(GenError(format!(
                 "{} names for a domain of {} inputs",
@@ -269,12 +269,12 @@ impl Domain {
         Ok(self)
     }
 
-    /// The same domain drawn by `sampling` ([`Sampling::Mixed`] is how [`Domain::named`]
+    /// The same domain drawn by `sampling` ([`Sampling::Mixed`] is how [`SampleDomain::named`]
     /// draws).
     ///
     /// # Errors
     /// [`Sampling::Reals`] with a range that lacks a bound, naming the input.
-    pub fn with_sampling(mut self, sampling: Sampling) -> Result<Domain, GenError> {
+    pub fn with_sampling(mut self, sampling: Sampling) -> Result<SampleDomain, GenError> {
         let format = self.format;
         for (i, (iv, draw)) in self.intervals.iter().zip(&mut self.draws).enumerate() {
             let bounded = iv.lo != Bound::Unbounded && iv.hi != Bound::Unbounded;
@@ -310,7 +310,7 @@ impl Domain {
     }
 }
 
-impl InputGen for Domain {
+impl InputGen for SampleDomain {
     fn arity(&self) -> usize {
         self.draws.len()
     }
@@ -627,7 +627,7 @@ mod tests {
     #[test]
     fn binary32_domains_sample_binary32_values_inside_the_bounds() {
         let names = names(&["x", "y"]);
-        let d = Domain::named(
+        let d = SampleDomain::named(
             vec![iv(Bound::Open(q(1, 3)), cl(2)), iv(cl(0), Bound::Unbounded)],
             &names,
         )
@@ -663,7 +663,7 @@ mod tests {
         // A double that is not a binary32 value is outside; so is a range without one.
         assert!(!d.contains(&[0.1, 1.0]));
         assert!(d.contains(&[f64::from(0.5f32), 1.0]));
-        let empty = Domain::named(
+        let empty = SampleDomain::named(
             vec![iv(
                 cl(1),
                 Bound::Closed(
@@ -678,7 +678,7 @@ mod tests {
         )
         .and_then(|d| d.with_format(Format::Binary32));
         assert!(empty.is_ok(), "1 itself is a binary32 value");
-        let none = Domain::named(
+        let none = SampleDomain::named(
             vec![iv(
                 Bound::Open(q(1, 1)),
                 Bound::Open(
@@ -697,7 +697,7 @@ mod tests {
             "input 0 (x) has no finite binary32 value in (1, 1.0000000000009095)"
         );
         // Uniform over the binary32 values: each binade of [1, 2^20] equally likely.
-        let d = Domain::named(vec![iv(cl(1), cl(1 << 20))], &names[..1])
+        let d = SampleDomain::named(vec![iv(cl(1), cl(1 << 20))], &names[..1])
             .and_then(|d| d.with_format(Format::Binary32))
             .and_then(|d| d.with_sampling(Sampling::Floats))
             .expect("valid");
@@ -774,7 +774,7 @@ mod tests {
 
     #[test]
     fn samples_stay_inside_their_bounds() {
-        let d = Domain::new(vec![
+        let d = SampleDomain::new(vec![
             iv(Bound::Closed(q(1, 3)), Bound::Closed(q(2, 3))),
             iv(Bound::Open(Rational::ZERO), Bound::Unbounded),
             iv(Bound::Unbounded, Bound::Open(q(-1, 10))),
@@ -798,7 +798,7 @@ mod tests {
 
     #[test]
     fn one_sided_bounds_sample_every_binade_alike() {
-        let d = Domain::new(vec![iv(cl(0), Bound::Unbounded)]).expect("non-empty");
+        let d = SampleDomain::new(vec![iv(cl(0), Bound::Unbounded)]).expect("non-empty");
         let mut rng = Rng::new(9);
         let mut exps: Vec<i32> = (0..4001)
             .map(|_| {
@@ -820,14 +820,14 @@ mod tests {
             "{d1} {d9}"
         );
         // Both signs when unbounded.
-        let all = Domain::new(vec![Interval::UNBOUNDED]).expect("non-empty");
+        let all = SampleDomain::new(vec![Interval::UNBOUNDED]).expect("non-empty");
         let neg = (0..1000).filter(|_| all.sample(&mut rng)[0] < 0.0).count();
         assert!((400..600).contains(&neg), "{neg}");
     }
 
     #[test]
     fn bounded_intervals_sample_uniformly_on_the_reals() {
-        let d = Domain::new(vec![iv(
+        let d = SampleDomain::new(vec![iv(
             cl(1),
             Bound::Closed("1e15".parse().expect("number")),
         )])
@@ -839,13 +839,13 @@ mod tests {
 
     #[test]
     fn empty_ranges_are_errors_naming_the_coordinate() {
-        let e = Domain::new(vec![
+        let e = SampleDomain::new(vec![
             Interval::UNBOUNDED,
             iv(Bound::Closed(q(1, 3)), Bound::Closed(q(1, 3))),
         ])
         .expect_err("1/3 is not a double");
         assert!(e.0.contains("input 1 (x1)"), "{e}");
-        let e = Domain::named(
+        let e = SampleDomain::named(
             vec![Interval::UNBOUNDED, iv(cl(3), cl(2))],
             &names(&["x", "y"]),
         )
@@ -854,25 +854,25 @@ mod tests {
             e.0.contains("input 1 (y) has no finite double in [3, 2]"),
             "{e}"
         );
-        assert!(Domain::named(vec![Interval::UNBOUNDED], &names(&["x", "y"])).is_err());
-        assert!(Domain::new(vec![iv(
+        assert!(SampleDomain::named(vec![Interval::UNBOUNDED], &names(&["x", "y"])).is_err());
+        assert!(SampleDomain::new(vec![iv(
             Bound::Open(Rational::ZERO),
             Bound::Open(Rational::ZERO)
         )])
         .is_err());
-        assert!(Domain::new(vec![iv(cl(2), cl(1))]).is_err());
-        assert!(Domain::new(vec![iv(
+        assert!(SampleDomain::new(vec![iv(cl(2), cl(1))]).is_err());
+        assert!(SampleDomain::new(vec![iv(
             Bound::Closed("10^400".parse().expect("n")),
             Bound::Unbounded
         )])
         .is_err());
-        let d = Domain::new(vec![Interval::UNBOUNDED]).expect("non-empty");
+        let d = SampleDomain::new(vec![Interval::UNBOUNDED]).expect("non-empty");
         assert!(d.with_names(&names(&["a", "b"])).is_err());
     }
 
     #[test]
     fn describe_is_readable() {
-        let d = Domain::new(vec![
+        let d = SampleDomain::new(vec![
             iv(cl(1), Bound::Closed("1e15".parse().expect("number"))),
             iv(cl(0), Bound::Unbounded),
             iv(Bound::Open(q(1, 3)), Bound::Closed(q(1, 2))),
@@ -953,13 +953,13 @@ mod tests {
     fn sampling_floats_or_reals_applies_to_every_coordinate() {
         let names = names(&["x", "y"]);
         let base = || {
-            Domain::named(
+            SampleDomain::named(
                 vec![iv(cl(1), cl(1 << 20)), iv(cl(0), Bound::Unbounded)],
                 &names,
             )
             .expect("non-empty")
         };
-        let below_2_10 = |d: &Domain| {
+        let below_2_10 = |d: &SampleDomain| {
             let mut rng = Rng::new(9);
             let n = 20_000;
             let k = (0..n)
@@ -988,7 +988,7 @@ mod tests {
             .with_sampling(Sampling::Reals)
             .expect_err("y has no upper bound");
         assert!(e.to_string().contains("input 1 (y)"), "{e}");
-        let reals = Domain::named(vec![iv(cl(1), cl(2)), iv(cl(-3), cl(3))], &names)
+        let reals = SampleDomain::named(vec![iv(cl(1), cl(2)), iv(cl(-3), cl(3))], &names)
             .and_then(|d| d.with_sampling(Sampling::Reals))
             .expect("both bounded");
         assert_eq!(

@@ -1,7 +1,7 @@
 //! Inputs near a degenerate set `{x : g(x) = 0}`: where float code decides wrongly (orient2d
 //! near collinear points, a discriminant near tangency), uniform inputs almost never land.
 //!
-//! [`NearSet`] draws a point of a base generator (a [`crate::Domain`], a box), chooses one
+//! [`NearSet`] draws a point of a base generator (a [`crate::SampleDomain`], a box), chooses one
 //! coordinate `j`, and moves `x_j` onto the set by bisection on the doubles between `x_j` and a
 //! value where `g` has the other sign, every sign decided exactly by the caller's `sign`
 //! function; the result is a double within one ulp of a root along `x_j`, or an exact root. That

@@ -1,9 +1,9 @@
 //! FPCore benchmarks to sampling domains: the `:pre` interval bounds read by
-//! `exactcheck_exact::program::fpcore` drive `exactcheck_float::Domain`, and every sample
+//! `exactcheck_exact::program::fpcore` drive `exactcheck_float::SampleDomain`, and every sample
 //! satisfies the benchmark's whole precondition.
 use exactcheck_exact::program::fpcore::parse_file;
 use exactcheck_exact::Rational;
-use exactcheck_float::{f64_to_rational, Bound, Domain, InputGen, Interval, Rng};
+use exactcheck_float::{f64_to_rational, Bound, SampleDomain, InputGen, Interval, Rng};
 
 fn exact(x: f64) -> Rational {
     Rational::from(f64_to_rational(x).expect("finite"))
@@ -41,7 +41,7 @@ fn fpcore_preconditions_drive_the_sampler() {
     for bm in &benches {
         let program = bm.program.as_ref().expect("supported");
         assert_eq!(program.pre, None, "all of :pre is interval bounds");
-        let dom = Domain::named(bm.domain.clone(), &bm.args).expect("non-empty domain");
+        let dom = SampleDomain::named(bm.domain.clone(), &bm.args).expect("non-empty domain");
         assert_eq!(dom.arity(), bm.args.len());
         for _ in 0..5000 {
             let s = dom.sample(&mut rng);
@@ -54,7 +54,7 @@ fn fpcore_preconditions_drive_the_sampler() {
             }
         }
     }
-    let quad = Domain::new(benches[1].domain.clone())
+    let quad = SampleDomain::new(benches[1].domain.clone())
         .and_then(|d| d.with_names(&benches[1].args))
         .expect("non-empty");
     assert_eq!(
@@ -66,6 +66,6 @@ fn fpcore_preconditions_drive_the_sampler() {
 #[test]
 fn an_fpcore_domain_without_doubles_is_an_error() {
     let bm = parse_file("(FPCore (x) :pre (== x 1/3) x)").expect("valid");
-    let e = Domain::new(bm[0].domain.clone()).expect_err("1/3 is no double");
+    let e = SampleDomain::new(bm[0].domain.clone()).expect_err("1/3 is no double");
     assert!(e.to_string().contains("input 0"), "{e}");
 }

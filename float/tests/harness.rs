@@ -316,7 +316,7 @@ fn fixed_point_regression() {
 #[test]
 fn shrunk_cases_stay_in_the_domain() {
     let names = vec!["x".to_string(), "y".to_string()];
-    let dom = exactcheck_float::Domain::named(
+    let dom = exactcheck_float::SampleDomain::named(
         exactcheck_float::parse_domain("x in [1000, 1010], y in [1e-3, 2e-3]", &names)
             .expect("valid"),
         &names,

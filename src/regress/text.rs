@@ -14,7 +14,7 @@ use crate::Error;
 use exactcheck_exact::program::fpcore;
 use exactcheck_exact::program::{ExactStop, Format, Program};
 use exactcheck_exact::Rational;
-use exactcheck_float::domain::{parse_domain, Domain, Sampling};
+use exactcheck_float::domain::{parse_domain, SampleDomain, Sampling};
 use exactcheck_float::external::ProgramRunner;
 use exactcheck_float::{
     CaseError, ExactScalar, ExactValue, FloatSideError, InputGen, Options, Subject,
@@ -333,7 +333,7 @@ pub fn formula_entries(args: &RegressArgs, texts: &[String]) -> Result<Vec<Entry
     // No --domain: every input over all finite doubles.
     let domain = parse_domain(args.domain.as_deref().unwrap_or(""), &program.inputs)
         .map_err(|e| Error::Input(format!("--domain: {e}")))?;
-    let gen = Domain::named(domain, &program.inputs)
+    let gen = SampleDomain::named(domain, &program.inputs)
         .and_then(|d| d.with_format(program.precision))
         .and_then(|d| d.with_sampling(sampling(args)))
         .map_err(|e| Error::Input(format!("--domain: {e}")))?;
@@ -397,7 +397,7 @@ pub fn fpcore_entries(args: &RegressArgs, path: &str) -> Result<Vec<Entry>, Erro
             Ok(program) => {
                 let mut program = program.clone();
                 program.name = name.clone();
-                match Domain::named(b.domain.clone(), &b.args)
+                match SampleDomain::named(b.domain.clone(), &b.args)
                     .and_then(|d| d.with_format(program.precision))
                     .and_then(|d| d.with_sampling(sampling(args)))
                 {
