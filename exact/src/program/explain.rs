@@ -18,7 +18,7 @@
 //! differentiates exactly what the walk evaluates.
 use super::float::{call_f32, call_f64, pow_f32, pow_f64};
 use super::real::{nearest_double, rounding_decided, ExactStop, Halt, Real, MAX_PRECISION, XV};
-use super::walk::{eval_node, Domain};
+use super::walk::{eval_node, Evaluator};
 use super::{CmpOp, Format, Func, PowStyle, Program, START_PRECISION};
 use crate::rational::Rational;
 use exactcheck_core::Ring;
@@ -167,7 +167,7 @@ impl Local<'_> {
     }
 }
 
-impl Domain for Local<'_> {
+impl Evaluator for Local<'_> {
     type V = Tracked;
     type Stop = Halt;
 
@@ -513,7 +513,7 @@ impl Dual<'_> {
     }
 }
 
-impl Domain for Dual<'_> {
+impl Evaluator for Dual<'_> {
     type V = DualValue;
     type Stop = DualStop;
 

@@ -28,7 +28,7 @@
 //! The evaluation never fails and allocates nothing per node (a `while` loop's parallel update
 //! excepted): it is the generic walk of `walk` over the `Copy` type `f64`, with the `let` slots in a stack array (a heap vector only for
 //! programs with more than [`STACK_SLOTS`] slots).
-use super::walk::{count_iteration, eval_node, Domain};
+use super::walk::{count_iteration, eval_node, Evaluator};
 use super::{CmpOp, Format, Func, PowStyle, Program};
 use crate::rational::Rational;
 
@@ -44,7 +44,7 @@ struct F64<'a> {
 /// The float evaluation stopped: its loops ran past the `loop-iterations` limit.
 pub(super) struct LoopStop;
 
-impl Domain for F64<'_> {
+impl Evaluator for F64<'_> {
     type V = f64;
     type Stop = LoopStop;
 
@@ -131,7 +131,7 @@ struct F32<'a> {
     iterations: u64,
 }
 
-impl Domain for F32<'_> {
+impl Evaluator for F32<'_> {
     type V = f32;
     type Stop = LoopStop;
 

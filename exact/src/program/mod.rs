@@ -15,7 +15,7 @@
 //!
 //! # Layout
 //! * `compile`: the `prove` syntax to a [`Program`] ([`Program::from_expr`], [`Program::parse`]);
-//! * `walk`: the one tree walk, generic over the arithmetic (a `Domain`);
+//! * `walk`: the one tree walk, generic over the arithmetic (an `Evaluator`);
 //! * `float`: the IEEE double side ([`Program::eval_f64`], [`Program::eval_f64_into`]);
 //! * `real`: the exact side ([`Program::eval_exact`], [`Reference`], [`ExactStop`], the accuracy
 //!   contract [`REL_BITS`] and the precision schedule [`START_PRECISION`] to

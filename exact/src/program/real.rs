@@ -61,7 +61,7 @@
 //! fallback.
 use super::interval::Iv;
 use super::transc::{self, TStop};
-use super::walk::{count_iteration, eval_cond, eval_node, Domain};
+use super::walk::{count_iteration, eval_cond, eval_node, Evaluator};
 use super::{CmpOp, Format, Func, PowStyle, Program};
 use crate::expr::Coefficient;
 use crate::radical::Radical;
@@ -196,7 +196,7 @@ impl Real<'_> {
     }
 }
 
-impl Domain for Real<'_> {
+impl Evaluator for Real<'_> {
     type V = XV;
     type Stop = Halt;
 
@@ -492,7 +492,7 @@ fn rad_checked(r: Radical) -> Result<Radical, RadStop> {
     }
 }
 
-impl Domain for Rad<'_> {
+impl Evaluator for Rad<'_> {
     type V = Radical;
     type Stop = RadStop;
 

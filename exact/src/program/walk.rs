@@ -1,5 +1,5 @@
 //! The one tree walk of a [`Program`](super::Program), generic over the arithmetic it is done in
-//! ([`Domain`]): IEEE doubles (`float`), the exact reals of `real` (rationals and refined
+//! ([`Evaluator`]): IEEE doubles (`float`), the exact reals of `real` (rationals and refined
 //! intervals) and the multi-quadratic field [`crate::Radical`] (the exact zero test of `real`).
 //!
 //! The walk owns the evaluation order (the tree's, left operand first), `let` binding, loops
@@ -13,7 +13,7 @@ use super::{ChainOp, CmpOp, Cond, Func, Loop, Node, PowStyle};
 use crate::rational::Rational;
 
 /// The arithmetic a program is evaluated in.
-pub(crate) trait Domain {
+pub(crate) trait Evaluator {
     /// A value.
     type V: Clone;
     /// Why an evaluation stops (never for `f64`).
@@ -73,7 +73,7 @@ pub(crate) fn count_iteration(count: &mut u64) -> bool {
 ///
 /// # Panics
 /// On a slot or input index out of range (a malformed program: the compilers never build one).
-pub(crate) fn eval_node<D: Domain>(
+pub(crate) fn eval_node<D: Evaluator>(
     d: &mut D,
     node: &Node,
     slots: &mut [D::V],
@@ -177,7 +177,7 @@ pub(crate) fn eval_node<D: Domain>(
 }
 
 /// The value of a loop (see [`Loop`] for the two binding orders).
-fn eval_loop<D: Domain>(d: &mut D, l: &Loop, slots: &mut [D::V]) -> Result<D::V, D::Stop> {
+fn eval_loop<D: Evaluator>(d: &mut D, l: &Loop, slots: &mut [D::V]) -> Result<D::V, D::Stop> {
     let step = |d: &mut D, slots: &mut [D::V], initial: bool| -> Result<(), D::Stop> {
         if l.sequential {
             for (s, init, update) in &l.vars {
@@ -205,7 +205,7 @@ fn eval_loop<D: Domain>(d: &mut D, l: &Loop, slots: &mut [D::V]) -> Result<D::V,
 }
 
 /// The truth of `cond`.
-pub(crate) fn eval_cond<D: Domain>(
+pub(crate) fn eval_cond<D: Evaluator>(
     d: &mut D,
     cond: &Cond,
     slots: &mut [D::V],
