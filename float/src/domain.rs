@@ -1,4 +1,4 @@
-//! Input domains: one exact [`Interval`] per input, and the generator [`SampleDomain`] that samples
+//! Input domains: one exact [`Range`] per input, and the generator [`SampleDomain`] that samples
 //! doubles inside them — the domain of an FPCore benchmark (from its `:pre`) or of
 //! `regress --formula ... --domain 'x in [-1, 1], y >= 0'` ([`parse_domain`]).
 //!
@@ -36,7 +36,7 @@ use exactcheck_core::Rng;
 use exactcheck_exact::to_f64::Format;
 use exactcheck_exact::Rational;
 
-pub use exactcheck_exact::program::fpcore::{Bound, Interval};
+pub use exactcheck_exact::program::fpcore::{Bound, Range};
 
 /// The ordinal index of a double: order-preserving, consecutive for adjacent doubles, `0` for
 /// both zeros.
@@ -165,10 +165,10 @@ enum Draw {
     Ordinal { lo: i64, hi: i64 },
 }
 
-/// A generator sampling each input inside its [`Interval`] (see the module doc).
+/// A generator sampling each input inside its [`Range`] (see the module doc).
 #[derive(Clone, Debug, PartialEq)]
 pub struct SampleDomain {
-    intervals: Vec<Interval>,
+    intervals: Vec<Range>,
     draws: Vec<Draw>,
     names: Vec<String>,
     format: Format,
@@ -180,7 +180,7 @@ impl SampleDomain {
     ///
     /// # Errors
     /// When an interval contains no finite double, naming the coordinate.
-    pub fn new(intervals: Vec<Interval>) -> Result<SampleDomain, GenError> {
+    pub fn new(intervals: Vec<Range>) -> Result<SampleDomain, GenError> {
         let names: Vec<String> = (0..intervals.len()).map(|i| format!("x{i}")).collect();
         SampleDomain::named(intervals, &names)
     }
@@ -191,7 +191,7 @@ impl SampleDomain {
     /// # Errors
     /// When the number of names is not the number of intervals, or when an interval contains
     /// no finite double, naming the input.
-    pub fn named(intervals: Vec<Interval>, names: &[String]) -> Result<SampleDomain, GenError> {
+    pub fn named(intervals: Vec<Range>, names: &[String]) -> Result<SampleDomain, GenError> {
         SampleDomain::named_in(intervals, names, Format::Binary64)
     }
 
@@ -205,7 +205,7 @@ impl SampleDomain {
     }
 
     fn named_in(
-        intervals: Vec<Interval>,
+        intervals: Vec<Range>,
         names: &[String],
         format: Format,
     ) -> Result<SampleDomain, GenError> {
@@ -305,7 +305,7 @@ impl SampleDomain {
     }
 
     /// The intervals, one per input.
-    pub fn intervals(&self) -> &[Interval] {
+    pub fn intervals(&self) -> &[Range] {
         &self.intervals
     }
 }
@@ -413,7 +413,7 @@ fn show_value(q: &Rational) -> String {
 }
 
 /// `[lo, hi]`, `(lo, inf)`, ...
-fn show_interval(iv: &Interval) -> String {
+fn show_interval(iv: &Range) -> String {
     let lo = match &iv.lo {
         Bound::Unbounded => "(-inf".to_string(),
         Bound::Closed(q) => format!("[{}", show_value(q)),
@@ -434,7 +434,7 @@ struct Seen {
     hi: bool,
 }
 
-/// Parses a domain text into one [`Interval`] per variable of `vars`.
+/// Parses a domain text into one [`Range`] per variable of `vars`.
 ///
 /// The text is a comma-separated list of parts, each `NAME in [a, b]` (brackets: `[`/`]`
 /// closed, `(`/`)` open; `inf`, `+inf`, `-inf` for a missing bound) or a one-sided
@@ -446,8 +446,8 @@ struct Seen {
 /// # Errors
 /// A one-line message naming the part: an unknown variable, a variable bounded twice (on the
 /// same side), an unparsable number, `lo > hi`, or garbage.
-pub fn parse_domain(text: &str, vars: &[String]) -> Result<Vec<Interval>, String> {
-    let mut out = vec![Interval::UNBOUNDED; vars.len()];
+pub fn parse_domain(text: &str, vars: &[String]) -> Result<Vec<Range>, String> {
+    let mut out = vec![Range::UNBOUNDED; vars.len()];
     let mut seen = vec![Seen::default(); vars.len()];
     for part in split_parts(text) {
         let part = part.trim();
@@ -712,8 +712,8 @@ mod tests {
         );
     }
 
-    fn iv(lo: Bound, hi: Bound) -> Interval {
-        Interval { lo, hi }
+    fn iv(lo: Bound, hi: Bound) -> Range {
+        Range { lo, hi }
     }
 
     fn cl(n: i64) -> Bound {
@@ -820,7 +820,7 @@ mod tests {
             "{d1} {d9}"
         );
         // Both signs when unbounded.
-        let all = SampleDomain::new(vec![Interval::UNBOUNDED]).expect("non-empty");
+        let all = SampleDomain::new(vec![Range::UNBOUNDED]).expect("non-empty");
         let neg = (0..1000).filter(|_| all.sample(&mut rng)[0] < 0.0).count();
         assert!((400..600).contains(&neg), "{neg}");
     }
@@ -840,13 +840,13 @@ mod tests {
     #[test]
     fn empty_ranges_are_errors_naming_the_coordinate() {
         let e = SampleDomain::new(vec![
-            Interval::UNBOUNDED,
+            Range::UNBOUNDED,
             iv(Bound::Closed(q(1, 3)), Bound::Closed(q(1, 3))),
         ])
         .expect_err("1/3 is not a double");
         assert!(e.0.contains("input 1 (x1)"), "{e}");
         let e = SampleDomain::named(
-            vec![Interval::UNBOUNDED, iv(cl(3), cl(2))],
+            vec![Range::UNBOUNDED, iv(cl(3), cl(2))],
             &names(&["x", "y"]),
         )
         .expect_err("3 > 2");
@@ -854,7 +854,7 @@ mod tests {
             e.0.contains("input 1 (y) has no finite double in [3, 2]"),
             "{e}"
         );
-        assert!(SampleDomain::named(vec![Interval::UNBOUNDED], &names(&["x", "y"])).is_err());
+        assert!(SampleDomain::named(vec![Range::UNBOUNDED], &names(&["x", "y"])).is_err());
         assert!(SampleDomain::new(vec![iv(
             Bound::Open(Rational::ZERO),
             Bound::Open(Rational::ZERO)
@@ -866,7 +866,7 @@ mod tests {
             Bound::Unbounded
         )])
         .is_err());
-        let d = SampleDomain::new(vec![Interval::UNBOUNDED]).expect("non-empty");
+        let d = SampleDomain::new(vec![Range::UNBOUNDED]).expect("non-empty");
         assert!(d.with_names(&names(&["a", "b"])).is_err());
     }
 
@@ -877,7 +877,7 @@ mod tests {
             iv(cl(0), Bound::Unbounded),
             iv(Bound::Open(q(1, 3)), Bound::Closed(q(1, 2))),
             iv(Bound::Unbounded, Bound::Open(Rational::ONE)),
-            Interval::UNBOUNDED,
+            Range::UNBOUNDED,
         ])
         .expect("non-empty")
         .with_names(&names(&["x", "y", "z", "w", "v"]))
@@ -906,12 +906,12 @@ mod tests {
                 iv(Bound::Open(Rational::ZERO), Bound::Unbounded),
                 iv(Bound::Closed(q(1, 3)), Bound::Open(p2_60.clone())),
                 iv(Bound::Unbounded, Bound::Closed(-p2_60)),
-                Interval::UNBOUNDED,
+                Range::UNBOUNDED,
             ]
         );
         assert_eq!(
             parse_domain("", &vars).expect("empty"),
-            vec![Interval::UNBOUNDED; 6]
+            vec![Range::UNBOUNDED; 6]
         );
         assert_eq!(
             parse_domain(" x in [0.1 , 1/2) ", &vars).expect("valid")[0],

@@ -10,7 +10,7 @@
 //!   ([`UniformBox`], [`LogUniform`], [`NearDegenerate`] around [`Fixed`] or [`Diagonal`] points).
 //! * [`near`] — [`NearSet`]: inputs moved onto a degenerate set `g = 0` by exact-sign bisection
 //!   and perturbed by a few ulps.
-//! * [`domain`] — [`SampleDomain`]: inputs sampled inside exact [`Interval`]s (FPCore's `:pre`,
+//! * [`domain`] — [`SampleDomain`]: inputs sampled inside exact [`Range`]s (FPCore's `:pre`,
 //!   `--domain` text read by [`parse_domain`]), one-sided ranges uniformly over the doubles.
 //! * [`harness`] — [`regress`]: a [`Formula`] written once generic over the scalar is run in
 //!   `f64` and exactly on the same random inputs; the [`Report`] gives max/median/mean errors in
@@ -45,7 +45,7 @@ pub use convert::{
     binary_exponent, f64_to_rational, pow2, rational_to_f64, rel_error, round_to_bits,
     significant_bits, ulp, ulps_error,
 };
-pub use domain::{parse_domain, Bound, SampleDomain, Interval, Sampling};
+pub use domain::{parse_domain, Bound, SampleDomain, Range, Sampling};
 pub use exactcheck_core::rng::{self, Rng};
 pub use gen::{Diagonal, Fixed, GenError, InputGen, LogUniform, NearDegenerate, UniformBox};
 pub use harness::{

@@ -3,13 +3,13 @@
 //! satisfies the benchmark's whole precondition.
 use exactcheck_exact::program::fpcore::parse_file;
 use exactcheck_exact::Rational;
-use exactcheck_float::{f64_to_rational, Bound, SampleDomain, InputGen, Interval, Rng};
+use exactcheck_float::{f64_to_rational, Bound, SampleDomain, InputGen, Range, Rng};
 
 fn exact(x: f64) -> Rational {
     Rational::from(f64_to_rational(x).expect("finite"))
 }
 
-fn satisfies(x: f64, iv: &Interval) -> bool {
+fn satisfies(x: f64, iv: &Range) -> bool {
     let e = exact(x);
     let lo = match &iv.lo {
         Bound::Unbounded => true,

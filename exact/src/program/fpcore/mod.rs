@@ -3,7 +3,7 @@
 //!
 //! # What is read
 //! A file is a sequence of benchmarks `(FPCore name? (arg ...) :prop value ... body)`. Each one
-//! becomes a [`Benchmark`]: its `:name`, its arguments, its sampling [`Interval`]s (from
+//! becomes a [`Benchmark`]: its `:name`, its arguments, its sampling [`Range`]s (from
 //! `:pre`) and either a [`Program`] or the reason it cannot be one ([`Unsupported`]).
 //!
 //! The supported subset, where "the exact value" is a rational, a rational refined through
@@ -91,16 +91,16 @@ impl Bound {
 
 /// The sampling interval of one input: `lo` below, `hi` above.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Interval {
+pub struct Range {
     /// The lower bound.
     pub lo: Bound,
     /// The upper bound.
     pub hi: Bound,
 }
 
-impl Interval {
+impl Range {
     /// All finite doubles.
-    pub const UNBOUNDED: Interval = Interval {
+    pub const UNBOUNDED: Range = Range {
         lo: Bound::Unbounded,
         hi: Bound::Unbounded,
     };
@@ -155,8 +155,8 @@ pub struct Benchmark {
     /// The compiled program (inputs = `args`), or what is not supported.
     pub program: Result<Program, Unsupported>,
     /// The sampling interval of each argument, from the interval bounds of `:pre`
-    /// ([`Interval::UNBOUNDED`] for an argument without any).
-    pub domain: Vec<Interval>,
+    /// ([`Range::UNBOUNDED`] for an argument without any).
+    pub domain: Vec<Range>,
 }
 
 impl Benchmark {

@@ -105,7 +105,7 @@ fn spec_examples_parse_and_are_classified() {
     assert_eq!(nmse.args, vec!["x"]);
     assert_eq!(
         nmse.domain,
-        vec![Interval {
+        vec![Range {
             lo: Bound::Closed(Rational::ZERO),
             hi: Bound::Unbounded
         }]
@@ -528,23 +528,23 @@ fn pre_bounds_become_the_domain_and_the_rest_the_precondition() {
     assert_eq!(
         bm.domain,
         vec![
-            Interval {
+            Range {
                 lo: cl(-1, 1),
                 hi: cl(1, 3)
             },
-            Interval {
+            Range {
                 lo: op(0, 1),
                 hi: Bound::Unbounded
             },
-            Interval {
+            Range {
                 lo: cl(0, 1),
                 hi: op(5, 1)
             },
-            Interval {
+            Range {
                 lo: cl(2, 1),
                 hi: cl(2, 1)
             },
-            Interval::UNBOUNDED,
+            Range::UNBOUNDED,
         ]
     );
     let p = bm.program.expect("supported");
@@ -559,7 +559,7 @@ fn pre_bounds_become_the_domain_and_the_rest_the_precondition() {
     let d = one("(FPCore (x) :pre (and (<= 0 x 2) (< 0 x) (<= x 1) (< x 3)) x)").domain;
     assert_eq!(
         d,
-        vec![Interval {
+        vec![Range {
             lo: op(0, 1),
             hi: cl(1, 1)
         }]
@@ -576,7 +576,7 @@ fn pre_bounds_become_the_domain_and_the_rest_the_precondition() {
     let bm = one("(FPCore (x) :pre (<= 0 x 1 2) x)");
     assert_eq!(
         bm.domain,
-        vec![Interval {
+        vec![Range {
             lo: cl(0, 1),
             hi: cl(1, 1)
         }]
@@ -591,7 +591,7 @@ fn pre_bounds_become_the_domain_and_the_rest_the_precondition() {
     let d = one("(FPCore (x) :pre (<= (- 2) x (digits 3 2 10)) x)").domain;
     assert_eq!(
         d,
-        vec![Interval {
+        vec![Range {
             lo: cl(-2, 1),
             hi: cl(300, 1)
         }]
@@ -657,10 +657,10 @@ fn a_pre_written_with_let_reads_as_written_directly() {
     // A binding that is not a literal or a name stays a `let` (its bounds are conditions), and
     // a substitution that an inner `let` would capture is not made.
     let kept = one("(FPCore (x) :pre (let ([s (* x x)]) (<= s 4)) x)");
-    assert_eq!(kept.domain, vec![Interval::UNBOUNDED]);
+    assert_eq!(kept.domain, vec![Range::UNBOUNDED]);
     assert!(kept.program.expect("supported").pre.is_some());
     let captured = one("(FPCore (x y) :pre (let ([a x]) (let ([x (+ y 1)]) (< a x))) x)");
-    assert_eq!(captured.domain, vec![Interval::UNBOUNDED; 2]);
+    assert_eq!(captured.domain, vec![Range::UNBOUNDED; 2]);
     assert_eq!(
         captured.program.expect("supported").pre,
         Some(Cond::Cmp(CmpOp::Lt, x(0), Node::Add(b(x(1)), b(c(1)))))

@@ -2,7 +2,7 @@
 //! properties, body) and the expression compiler, here; the domain extracted from `:pre` in
 //! `pre`; the scopes (`let`, loops) in `scope` (see the parent module for the supported subset).
 use super::sexpr::{check_literal_size, pow_rational, Pos, SExpr, MAX_LITERAL_EXPONENT};
-use super::{Benchmark, FpCoreError, Interval, Unsupported};
+use super::{Benchmark, FpCoreError, Range, Unsupported};
 use crate::program::{CmpOp, Cond, Format, Func, Node, PowStyle, Program};
 use crate::rational::Rational;
 use num_bigint::BigInt;
@@ -293,7 +293,7 @@ pub(super) fn benchmark(tree: &SExpr) -> Result<Benchmark, FpCoreError> {
     let pre = pre.as_ref();
     let domain = match pre {
         Some(p) => domain(p, &args)?,
-        None => vec![Interval::UNBOUNDED; args.len()],
+        None => vec![Range::UNBOUNDED; args.len()],
     };
 
     let display = name

@@ -1,7 +1,7 @@
 //! `:pre`: the `let`s of a precondition inlined, its conjuncts, and the interval bounds among
 //! them that become the sampling domain (see the parent module's documentation).
 use super::super::sexpr::SExpr;
-use super::super::{Bound, FpCoreError, Interval};
+use super::super::{Bound, FpCoreError, Range};
 use super::{list_items, literal};
 use crate::program::CmpOp;
 use crate::rational::Rational;
@@ -231,8 +231,8 @@ fn tighter_hi(new: &Bound, old: &Bound) -> bool {
 }
 
 /// The sampling intervals given by the interval bounds of `:pre`.
-pub(super) fn domain(pre: &SExpr, args: &[String]) -> Result<Vec<Interval>, FpCoreError> {
-    let mut dom = vec![Interval::UNBOUNDED; args.len()];
+pub(super) fn domain(pre: &SExpr, args: &[String]) -> Result<Vec<Range>, FpCoreError> {
+    let mut dom = vec![Range::UNBOUNDED; args.len()];
     let mut cs = Vec::new();
     conjuncts(pre, &mut cs);
     for c in cs {
