@@ -21,7 +21,7 @@
 //! figure eight are both found. `P = 0` identically means every point of the curve `u = -A(t)`
 //! is a touching point: the touching circle.
 
-use crate::univariate::{Bound, Interval, RootInterval, UPoly};
+use crate::univariate::{Bound, RootBoundedInterval, RootInterval, UPoly};
 use crate::Rational;
 use exactcheck_core::cylinder_sphere::{Angle, Contact, CylinderSphere, Touching};
 use exactcheck_core::{OrderedField, Ring, Sign};
@@ -48,7 +48,7 @@ pub struct Analysis {
     /// The sign of the discriminant at `t = pi` (`tau = infinity`).
     pub sign_at_pi: Sign,
     /// The closed tau-intervals where `P >= 0` (unbounded ends included).
-    pub nonnegative: Vec<Interval>,
+    pub nonnegative: Vec<RootBoundedInterval>,
     /// The decision from the discriminant.
     pub contact: Contact,
     /// Connected components of the intersection curve (a touching point counts as one).
@@ -87,7 +87,7 @@ pub fn analyze(cs: &CylinderSphere<Rational>) -> Analysis {
         return Analysis {
             discriminant: p,
             sign_at_pi,
-            nonnegative: vec![Interval {
+            nonnegative: vec![RootBoundedInterval {
                 lo: Bound::NegInf,
                 hi: Bound::PosInf,
             }],

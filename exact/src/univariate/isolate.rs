@@ -400,11 +400,11 @@ impl UPoly {
     /// the whole line for zero and for positive constants, empty for negative constants;
     /// isolated points (touching points, [`UPoly::touching_points`]) are degenerate intervals
     /// with `lo == hi`.
-    pub fn nonnegative_set(&self) -> Vec<Interval> {
+    pub fn nonnegative_set(&self) -> Vec<RootBoundedInterval> {
         let SignChart { roots, gaps } = self.sign_chart();
         let mut out = Vec::new();
         if self.is_zero() {
-            out.push(Interval {
+            out.push(RootBoundedInterval {
                 lo: Bound::NegInf,
                 hi: Bound::PosInf,
             });
@@ -418,14 +418,14 @@ impl UPoly {
             if gaps[i + 1] == Sign::Positive {
                 start = Some(start_here);
             } else {
-                out.push(Interval {
+                out.push(RootBoundedInterval {
                     lo: start_here,
                     hi: Bound::Root(r.interval),
                 });
             }
         }
         if let Some(lo) = start {
-            out.push(Interval {
+            out.push(RootBoundedInterval {
                 lo,
                 hi: Bound::PosInf,
             });
@@ -568,13 +568,13 @@ impl Bound {
     }
 }
 
-impl fmt::Display for Interval {
+impl fmt::Display for RootBoundedInterval {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "[{}, {}]", self.lo, self.hi)
     }
 }
 
-impl Interval {
+impl RootBoundedInterval {
     /// Whether the interval is a single point (both ends the same root).
     pub fn is_point(&self) -> bool {
         self.lo == self.hi

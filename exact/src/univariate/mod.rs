@@ -158,7 +158,7 @@ pub struct SignChart {
     pub gaps: Vec<Sign>,
 }
 
-/// An end of an [`Interval`]: an infinity or a real root.
+/// An end of a [`RootBoundedInterval`]: an infinity or a real root.
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub enum Bound {
     /// Minus infinity (the interval is unbounded below).
@@ -172,7 +172,7 @@ pub enum Bound {
 /// A closed interval of the real line, possibly unbounded or a single point: the set of `x` with
 /// `lo <= x <= hi` (a finite end is included, an infinite end is not a point).
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
-pub struct Interval {
+pub struct RootBoundedInterval {
     /// The lower end ([`Bound::NegInf`] or a root).
     pub lo: Bound,
     /// The upper end (a root or [`Bound::PosInf`]).

@@ -245,7 +245,7 @@ fn spaeth_examples() {
     assert_eq!(d1, p(&[33, 0, 46, 0, 13]));
     assert_eq!(
         d1.nonnegative_set(),
-        vec![Interval {
+        vec![RootBoundedInterval {
             lo: Bound::NegInf,
             hi: Bound::PosInf
         }]
@@ -264,7 +264,7 @@ fn spaeth_examples() {
     let zero = RootInterval::exact(int(0));
     assert_eq!(
         dt.nonnegative_set(),
-        vec![Interval {
+        vec![RootBoundedInterval {
             lo: Bound::Root(zero.clone()),
             hi: Bound::Root(zero.clone())
         }]
