@@ -45,8 +45,8 @@ use exactcheck_exact::expr::{
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
     decide_identity, factored, real_zero_free, square_roots, AlgebraicConstants, CoordinateOutcome,
-    VarDomain, EngineError, FractionIdentity, IdentityReport, IdentitySpec, IdentityVerdict, Part,
-    Phrasing, PointField, RadicalPoint, SquareRoot, Statement, Voice,
+    EngineError, FractionIdentity, IdentityReport, IdentitySpec, IdentityVerdict, Part, Phrasing,
+    PointField, RadicalPoint, SquareRoot, Statement, VarDomain, Voice,
 };
 use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::{Algebraic, Radical, Rational};

@@ -7,8 +7,8 @@ use exactcheck_exact::expr::{parse_expr, parse_poly};
 use exactcheck_exact::modp::{is_prime_u64, ModP, PrimeField};
 use exactcheck_exact::poly::{Poly, Vars};
 use exactcheck_exact::prove::{
-    decide, decide_in, random_identity_test, DecideError, Decision, VarDomain, Hypothesis,
-    RandomDecision, Seed, MAX_RANDOM_TRIALS,
+    decide, decide_in, random_identity_test, DecideError, Decision, Hypothesis, RandomDecision,
+    Seed, VarDomain, MAX_RANDOM_TRIALS,
 };
 use exactcheck_exact::{Radical, Rational};
 

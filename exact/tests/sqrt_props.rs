@@ -8,7 +8,7 @@ use exactcheck_core::Ring;
 use exactcheck_exact::expr::parse_expr;
 use exactcheck_exact::poly::{Poly, Vars};
 use exactcheck_exact::prove::{
-    decide_where, square_roots, Decision, VarDomain, Hypothesis, SquareRoot,
+    decide_where, square_roots, Decision, Hypothesis, SquareRoot, VarDomain,
 };
 use exactcheck_exact::Rational;
 use proptest::prelude::*;

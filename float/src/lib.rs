@@ -29,11 +29,11 @@
 
 pub mod convert;
 pub mod domain;
+pub mod external;
 pub mod gen;
 pub mod harness;
 pub mod json;
 pub mod near;
-pub mod external;
 pub mod report;
 pub mod sampler;
 pub mod scalar;
@@ -45,8 +45,9 @@ pub use convert::{
     binary_exponent, f64_to_rational, pow2, rational_to_f64, rel_error, round_to_bits,
     significant_bits, ulp, ulps_error,
 };
-pub use domain::{parse_domain, Bound, SampleDomain, Range, Sampling};
+pub use domain::{parse_domain, Bound, Range, SampleDomain, Sampling};
 pub use exactcheck_core::rng::{self, Rng};
+pub use external::{ProgramError, ProgramRunner};
 pub use gen::{Diagonal, Fixed, GenError, InputGen, LogUniform, NearDegenerate, UniformBox};
 pub use harness::{
     check, check_consistent, check_subject, merge, regress, run, run_observed, sample_inputs,
@@ -54,7 +55,6 @@ pub use harness::{
     RegressError, Subject,
 };
 pub use near::NearSet;
-pub use external::{ProgramError, ProgramRunner};
 pub use report::{Case, Explanation, OperationError, Report, Summary, ThresholdCount, WorstCase};
 pub use scalar::ExactScalar;
 pub use shard::{Shard, Sweep};

@@ -3,7 +3,7 @@
 //! satisfies the benchmark's whole precondition.
 use exactcheck_exact::program::fpcore::parse_file;
 use exactcheck_exact::Rational;
-use exactcheck_float::{f64_to_rational, Bound, SampleDomain, InputGen, Range, Rng};
+use exactcheck_float::{f64_to_rational, Bound, InputGen, Range, Rng, SampleDomain};
 
 fn exact(x: f64) -> Rational {
     Rational::from(f64_to_rational(x).expect("finite"))

@@ -4,12 +4,12 @@
 
 use super::{Equation, Erratum, Outcome, Verdict};
 use exactcheck_core::{Hom4, Ring};
-use exactcheck_exact::expr::{parse_expr, parse_poly, Coefficient, Expr};
 use exactcheck_exact::expr::CoeffExpr;
+use exactcheck_exact::expr::{parse_expr, parse_poly, Coefficient, Expr};
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
-    decide_identity, factored, VarDomain, EngineError, IdentitySpec, IdentityVerdict, Part, Phrasing,
-    PointField, Statement, Voice,
+    decide_identity, factored, EngineError, IdentitySpec, IdentityVerdict, Part, Phrasing,
+    PointField, Statement, VarDomain, Voice,
 };
 use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::Rational;

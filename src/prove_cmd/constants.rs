@@ -10,8 +10,8 @@ use crate::Error;
 use exactcheck_exact::expr::{abstract_constants, needs_algebraic, Expr};
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
-    AlgebraicConstants, ConstantPoint, CoordinateOutcome, VarDomain, IdentityReport, IdentitySpec,
-    IdentityVerdict, PointField, Statement,
+    AlgebraicConstants, ConstantPoint, CoordinateOutcome, IdentityReport, IdentitySpec,
+    IdentityVerdict, PointField, Statement, VarDomain,
 };
 use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::{Radical, Rational};

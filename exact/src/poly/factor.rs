@@ -33,9 +33,9 @@
 //! result is printed, never a result, so they are constants rather than limits of the registry
 //! (which refuse inputs).
 
-use super::{Poly, Var};
 use super::gcd::{content_in, gcd_capped, GcdError};
 use super::{div_exact, poly_derivative};
+use super::{Poly, Var};
 use exactcheck_core::{Field, Ring};
 
 /// The most terms of a polynomial [`square_free`] factors.
@@ -159,8 +159,8 @@ fn square_free_into<C: Field>(
 mod tests {
     use super::*;
     use crate::expr::parse_poly;
-    use crate::poly::Vars;
     use crate::poly::gcd::poly_gcd;
+    use crate::poly::Vars;
     use crate::Rational;
     use exactcheck_core::Ring;
     use proptest::prelude::*;

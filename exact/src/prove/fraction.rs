@@ -3,7 +3,7 @@
 //! their least common multiple: `a - c` when they are equal) wherever the denominators and
 //! every divisor met in `L` and `R` are non-zero; the counter-example search avoids those zeros.
 
-use super::{decide_where, DecideError, Decision, VarDomain, PointField};
+use super::{decide_where, DecideError, Decision, PointField, VarDomain};
 use crate::poly::{Poly, SizeError, Var, Vars};
 use crate::ratfun::{div_exact, poly_gcd, push_condition, RatFun};
 use crate::univariate::UPoly;

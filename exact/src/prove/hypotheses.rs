@@ -20,7 +20,7 @@
 //! greedily (drop one hypothesis, decide again, keep it dropped if the proof survives), with at
 //! most [`MAX_HYPOTHESIS_DROPS`] extra decisions; the set reported is the one the proof used.
 
-use super::{VarDomain, PointField};
+use super::{PointField, VarDomain};
 use crate::poly::{groebner, Poly, Var};
 use crate::{Radical, Rational};
 use exactcheck_core::Ring;

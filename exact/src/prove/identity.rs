@@ -13,8 +13,8 @@
 //! decides the claim, else the first undecided one, else it is proved.
 
 use super::{
-    counter_example, decide_fraction, decide_in, decide_where, DecideError, Decision, VarDomain,
-    FractionIdentity, Hypothesis, PointField, RadicalPoint,
+    counter_example, decide_fraction, decide_in, decide_where, DecideError, Decision,
+    FractionIdentity, Hypothesis, PointField, RadicalPoint, VarDomain,
 };
 use crate::poly::{Poly, SizeError, Var, Vars};
 use crate::ratfun::RatFun;

@@ -6,7 +6,7 @@
 //! search respects — it takes the non-negative root — and which the proof uses where the branch
 //! matters, see `hypotheses`).
 
-use super::{real_zero_free, VarDomain, PointField};
+use super::{real_zero_free, PointField, VarDomain};
 use crate::expr::ExprError;
 use crate::poly::{Poly, Var, Vars};
 use crate::Radical;

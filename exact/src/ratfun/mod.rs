@@ -414,5 +414,3 @@ fn cancel<C: Field>(
     let den = div_exact(&den, &g).expect("the gcd divides the denominator");
     Ok(monic_den(num, den))
 }
-
-

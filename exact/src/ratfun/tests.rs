@@ -1,6 +1,6 @@
-use crate::poly::gcd::prs_gcd;
 use super::*;
 use crate::expr::parse_poly;
+use crate::poly::gcd::prs_gcd;
 use crate::poly::Vars;
 use crate::Rational;
 

@@ -30,8 +30,8 @@ use exactcheck_exact::expr::{
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
     decide_identity, random_identity_test, square_roots, unit_circle_pairs, CorrectionVerdict,
-    VarDomain, EngineError, FractionIdentity, IdentitySpec, IdentityVerdict, Part, Phrasing,
-    PointField, RandomDecision, Seed, SquareRoot, Statement, Voice, HOLDS_THRESHOLD_LOG2,
+    EngineError, FractionIdentity, IdentitySpec, IdentityVerdict, Part, Phrasing, PointField,
+    RandomDecision, Seed, SquareRoot, Statement, VarDomain, Voice, HOLDS_THRESHOLD_LOG2,
     MAX_RANDOM_TRIALS,
 };
 use exactcheck_exact::ratfun::RatFun;

@@ -25,8 +25,8 @@ use crate::claims::printed::{
 use crate::claims::{Equation, Erratum};
 use exactcheck_core::ruled::{Plane, RuledSurface};
 use exactcheck_core::{Field, Ring, Vec3};
-use exactcheck_exact::expr::{AddOp, Expr, ExprKind};
 use exactcheck_exact::expr::CoeffExpr;
+use exactcheck_exact::expr::{AddOp, Expr, ExprKind};
 use exactcheck_exact::{Radical, Rational};
 
 /// Chiang's Example 4 (the claim list, square roots restored from the text): `m = 1`, `n = 2`,

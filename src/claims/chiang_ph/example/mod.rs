@@ -33,9 +33,9 @@ use crate::claims::{Equation, Erratum, Outcome, Verdict};
 use exactcheck_core::ph::{Cusp, PhCurve, RadiusBound, Side};
 use exactcheck_core::roots::{common_unit_roots, gcd, refine, IsolatedRoot};
 use exactcheck_core::{Bernstein, OrderedField, Ring, Vec3};
+use exactcheck_exact::expr::CoeffExpr;
 use exactcheck_exact::expr::{AddOp, Expr, ExprKind, MulOp};
 use exactcheck_exact::planar::{self_intersections_xy, Budget};
-use exactcheck_exact::expr::CoeffExpr;
 use exactcheck_exact::Rational;
 
 /// The printed control points `p1, p2, p3` (the paper: "p1 = (33, 20/3, 0), p2 = (79/3, 119/3,
