@@ -42,9 +42,11 @@
 //! # Algorithms
 //! * Addition and subtraction merge the two sorted term lists (monomials of up to 16 words are
 //!   compared and copied as fixed-size arrays). Sums of many large polynomials ([`Poly::sum`])
-//!   are one k-way heap merge.
+//!   are one k-way heap merge on compact keys of one or two words.
 //! * Multiplication by a single term shifts and scales (the order is a monoid order, so the
-//!   result is still sorted). Otherwise the exponents of the two operands are first re-packed
+//!   result is still sorted). Products of at most 32 term products are formed directly (every
+//!   term product, sorted and combined once): planning a kernel would cost more. Otherwise the
+//!   exponents of the two operands are first re-packed
 //!   into **compact keys**: each variable gets just the bits its largest exponent in the product
 //!   needs (a Kronecker substitution that keeps the order). Then:
 //!   - when the box of possible product exponents is small (at most 4 cells per term product,

@@ -208,10 +208,29 @@ pub(super) fn content_of<C: Ring>(coeffs: &[C]) -> Option<(C, Vec<C>)> {
     cast::<ContentSplit<Rational>, ContentSplit<C>>(split)?(coeffs)
 }
 
+/// Whether the rationals are all integers of the inline tier whose gcd is 1 (content 1, the
+/// common case), decided in machine words without building a big integer; `false` also when
+/// the list needs the general computation.
+fn unit_integer_content(q: &[Rational]) -> bool {
+    let mut g = 0u128;
+    for c in q {
+        match c.inline_parts() {
+            // Once the gcd is 1 it stays 1; the rest must still be integers.
+            Some((n, 1)) if g != 1 => g = crate::gcd::gcd_u128(g, n.unsigned_abs()),
+            Some((_, 1)) => {}
+            _ => return false,
+        }
+    }
+    g == 1
+}
+
 fn rational_content_impl(q: &[Rational]) -> Option<(Rational, Vec<Rational>)> {
     use num_integer::Integer;
     use num_traits::{One, Zero};
     if q.is_empty() {
+        return None;
+    }
+    if unit_integer_content(q) {
         return None;
     }
     let mut g = BigInt::zero();
