@@ -64,9 +64,9 @@
 //!   The kernels are generic over their coefficient arithmetic. For `Rational` and `ModP`
 //!   coefficients (the [`WordCoefficients`] hook, `words`) a product first writes both
 //!   coefficient lists as 63-bit integers over a common denominator and, when that succeeds,
-//!   runs the same kernels on `i64` words with `i64`, `i128` or 192-bit accumulators chosen by a
-//!   bound on every partial sum (no overflow checks in the loops), converting back once per
-//!   output term; dense products then accumulate directly in an array over the exponent box and
+//!   runs the same kernels on `i64` words with `i32`, `i64`, `i128` or 192-bit accumulators
+//!   chosen by a bound on every partial sum (no overflow checks in the loops), converting back
+//!   once per output term; dense products then accumulate directly in an array over the exponent box and
 //!   read it back in order (no sort). Other coefficient types, and lists that do not fit, take
 //!   the generic path.
 //! * Powers: a single term is raised directly. A rational polynomial with a content `c != 1` is

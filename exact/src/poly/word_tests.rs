@@ -135,11 +135,15 @@ proptest! {
 }
 
 /// A sum of `n` equal largest products lands in one monomial: the accumulator bound picks
-/// `i128` or 192 bits, and the result is the exact sum.
+/// `i32`, `i64`, `i128` or 192 bits, and the result is the exact sum.
 #[test]
 fn accumulators_hold_extreme_sums() {
     let x = |i: Var| P::var(i);
     for (c, n) in [
+        // n c^2 just below 2^31 (i32 cells) and just above it (i64).
+        (18918, 6),
+        (-18918, 6),
+        (18919, 6),
         (i64::MAX, 10),
         (-i64::MAX, 10),
         (1i64 << 40, 40),

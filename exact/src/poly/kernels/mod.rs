@@ -369,8 +369,9 @@ impl<'a> ProductPlan<'a> {
                 let d = fd as i128 * gd as i128;
                 let back = |x: WordSum| (h.from_word_sum)(x, d);
                 return match accumulator_for(&fw, gw) {
-                    0 => self.run_words::<W64, C>(&fw, gw, max, back),
-                    1 => self.run_words::<W128, C>(&fw, gw, max, back),
+                    0 => self.run_words::<W32, C>(&fw, gw, max, back),
+                    1 => self.run_words::<W64, C>(&fw, gw, max, back),
+                    2 => self.run_words::<W128, C>(&fw, gw, max, back),
                     _ => self.run_words::<W192, C>(&fw, gw, max, back),
                 };
             }
