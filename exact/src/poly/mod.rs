@@ -44,9 +44,11 @@
 //! # Algorithms
 //! * Addition and subtraction merge the two sorted term lists (monomials of up to 16 words are
 //!   compared and copied as fixed-size arrays). Sums of many large polynomials ([`Poly::sum`])
-//!   are one k-way heap merge.
+//!   are one k-way heap merge on compact keys of one or two words.
 //! * Multiplication by a single term shifts and scales (the order is a monoid order, so the
-//!   result is still sorted). Otherwise the exponents of the two operands are first re-packed
+//!   result is still sorted). Products of at most 32 term products are formed directly (every
+//!   term product, sorted and combined once): planning a kernel would cost more. Otherwise the
+//!   exponents of the two operands are first re-packed
 //!   into **compact keys**: each variable gets just the bits its largest exponent in the product
 //!   needs (a Kronecker substitution that keeps the order). Then:
 //!   - when the box of possible product exponents is small (at most 4 cells per term product,
@@ -64,9 +66,9 @@
 //!   The kernels are generic over their coefficient arithmetic. For `Rational` and `ModP`
 //!   coefficients (the [`WordCoefficients`] hook, `words`) a product first writes both
 //!   coefficient lists as 63-bit integers over a common denominator and, when that succeeds,
-//!   runs the same kernels on `i64` words with `i64`, `i128` or 192-bit accumulators chosen by a
-//!   bound on every partial sum (no overflow checks in the loops), converting back once per
-//!   output term; dense products then accumulate directly in an array over the exponent box and
+//!   runs the same kernels on `i64` words with `i32`, `i64`, `i128` or 192-bit accumulators
+//!   chosen by a bound on every partial sum (no overflow checks in the loops), converting back
+//!   once per output term; dense products then accumulate directly in an array over the exponent box and
 //!   read it back in order (no sort). Other coefficient types, and lists that do not fit, take
 //!   the generic path.
 //! * Powers: a single term is raised directly. A rational polynomial with a content `c != 1` is

@@ -135,11 +135,15 @@ proptest! {
 }
 
 /// A sum of `n` equal largest products lands in one monomial: the accumulator bound picks
-/// `i128` or 192 bits, and the result is the exact sum.
+/// `i32`, `i64`, `i128` or 192 bits, and the result is the exact sum.
 #[test]
 fn accumulators_hold_extreme_sums() {
     let x = |i: Var| P::var(i);
     for (c, n) in [
+        // n c^2 just below 2^31 (i32 cells) and just above it (i64).
+        (18918, 6),
+        (-18918, 6),
+        (18919, 6),
         (i64::MAX, 10),
         (-i64::MAX, 10),
         (1i64 << 40, 40),
@@ -490,4 +494,54 @@ fn fateman_product_matches_the_reference() {
     assert!(h.is_canonical());
     assert_eq!(h, f.mul_reference(&g));
     assert_eq!(f.square(), f.square_reference());
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 200, ..ProptestConfig::default() })]
+
+    /// Products of at most `SMALL_PRODUCT` term products (sorted once, no planned kernel)
+    /// against the reference, with the cap exactly at the size and one below it.
+    #[test]
+    fn small_products_agree(f in arb_poly(4, 3, 6), g in arb_poly(4, 3, 6)) {
+        check_product(&f, &g)?;
+        let h = f.mul_reference(&g);
+        prop_assert_eq!(f.mul_capped(&g, |_| h.len()), Some(h.clone()));
+        if !h.is_empty() {
+            prop_assert!(f.mul_capped(&g, |_| h.len() - 1).is_none());
+        }
+    }
+
+    /// Sums of many large summands whose compact keys take two words (twelve variables of
+    /// ten bits) merged by the heap on `u128` keys, against the pairwise sums.
+    #[test]
+    fn two_word_key_sums_agree(
+        polys in prop::collection::vec(arb_poly(12, 600, 60), 9..13),
+        cancel in any::<bool>(),
+    ) {
+        let mut polys = polys;
+        if cancel {
+            // A summand that cancels another one exactly.
+            let neg = -polys[0].clone();
+            polys.push(neg);
+        }
+        let total: usize = polys.iter().map(Poly::len).sum();
+        prop_assume!(total >= 256);
+        let sum = P::sum(polys.clone());
+        prop_assert!(sum.is_canonical());
+        prop_assert_eq!(sum, P::sum_pairwise(polys));
+    }
+}
+
+/// The content split: a list of integers with gcd 1 has content 1 (decided in machine words),
+/// others keep their content, rationals included.
+#[test]
+fn content_of_word_lists() {
+    let q = |n: i64, d: i64| Rational::new(n, d).expect("d >= 1");
+    assert!(super::words::content_of(&[q(1, 1), q(-1, 1)]).is_none());
+    assert!(super::words::content_of(&[q(6, 1), q(-10, 1), q(15, 1)]).is_none());
+    let (c, prim) = super::words::content_of(&[q(4, 1), q(-6, 1)]).expect("content 2");
+    assert_eq!((c, prim), (q(2, 1), vec![q(2, 1), q(-3, 1)]));
+    // gcd 1 among the first integers, then a fraction: the content is 1/2, not 1.
+    let (c, prim) = super::words::content_of(&[q(1, 1), q(3, 1), q(1, 2)]).expect("content 1/2");
+    assert_eq!((c, prim), (q(1, 2), vec![q(2, 1), q(6, 1), q(1, 1)]));
 }

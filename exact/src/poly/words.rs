@@ -15,8 +15,11 @@
 //! polynomials) take the generic path unchanged. The number-type details stay in `exact`.
 //!
 //! # The accumulators
-//! Every output coefficient of `f g` is a sum of at most `min(#f, #g)` term products, so
-//! `B = max|F| max|G| min(#f, #g)` bounds every partial sum. With `B < 2^63` the kernels sum in
+//! Every output coefficient of `f g` is a sum of at most `min(#f, #g)` term products, with at
+//! most one term product per term of either factor, so the smallest of
+//! `max|F| max|G| min(#f, #g)`, `sum|F| max|G|` and `max|F| sum|G|` is a bound `B` on every
+//! partial sum. With `B < 2^31` the kernels sum in `i32` ([`W32`]: half the memory of `i64`
+//! cells, so a dense slab twice as large stays in the first-level cache), with `B < 2^63` in
 //! `i64` ([`W64`]), with `B < 2^127` in `i128` ([`W128`]), and otherwise in a signed 192-bit
 //! `(hi: i64, lo: u128)` pair ([`W192`], the three-limb accumulation of FLINT's `mpoly`
 //! kernels): each product of two 63-bit words is below `2^126`, and at most `2^64` of them sum
@@ -208,10 +211,29 @@ pub(super) fn content_of<C: Ring>(coeffs: &[C]) -> Option<(C, Vec<C>)> {
     cast::<ContentSplit<Rational>, ContentSplit<C>>(split)?(coeffs)
 }
 
+/// Whether the rationals are all integers of the inline tier whose gcd is 1 (content 1, the
+/// common case), decided in machine words without building a big integer; `false` also when
+/// the list needs the general computation.
+fn unit_integer_content(q: &[Rational]) -> bool {
+    let mut g = 0u128;
+    for c in q {
+        match c.inline_parts() {
+            // Once the gcd is 1 it stays 1; the rest must still be integers.
+            Some((n, 1)) if g != 1 => g = crate::gcd::gcd_u128(g, n.unsigned_abs()),
+            Some((_, 1)) => {}
+            _ => return false,
+        }
+    }
+    g == 1
+}
+
 fn rational_content_impl(q: &[Rational]) -> Option<(Rational, Vec<Rational>)> {
     use num_integer::Integer;
     use num_traits::{One, Zero};
     if q.is_empty() {
+        return None;
+    }
+    if unit_integer_content(q) {
         return None;
     }
     let mut g = BigInt::zero();
@@ -283,6 +305,8 @@ pub(super) trait WordArith: Arith<In = i64, Acc: Copy> {
     fn sum(x: Self::Acc) -> WordSum;
 }
 
+/// `i32` accumulators (every partial sum, so every term product, below `2^31`).
+pub(super) struct W32;
 /// `i64` accumulators (every partial sum below `2^63`).
 pub(super) struct W64;
 /// `i128` accumulators (every partial sum below `2^127`).
@@ -335,6 +359,13 @@ macro_rules! word_arith {
     };
 }
 
+// The bound keeps every product and partial sum inside `i32`, so the products are exact in
+// `i64` and the narrowing loses nothing.
+word_arith!(W32, i32, 0,
+    mul: |a, b| a.wrapping_mul(*b) as i32,
+    add_mul: |acc, a, b| *acc = acc.wrapping_add(a.wrapping_mul(*b) as i32),
+    add: |x, y| *x = x.wrapping_add(y),
+    sum: |x| WordSum::from_i128(x as i128));
 word_arith!(W64, i64, 0,
     mul: |a, b| a * b,
     add_mul: |acc, a, b| *acc += a * b,
@@ -352,15 +383,26 @@ word_arith!(W192, WordSum, WordSum { hi: 0, lo: 0 },
     add: |x, y| x.add(y),
     sum: |x| x);
 
-/// Which accumulator a product needs: `B = max|F| max|G| min(#f, #g)` (see the module
-/// documentation); 0 for `i64`, 1 for `i128`, 2 for 192 bits.
+/// Which accumulator a product needs: the bound `B` of the module documentation; 0 for
+/// `i32`, 1 for `i64`, 2 for `i128`, 3 for 192 bits.
 pub(super) fn accumulator_for(f: &[i64], g: &[i64]) -> u8 {
     let max = |v: &[i64]| v.iter().map(|x| x.unsigned_abs()).max().unwrap_or(0) as u128;
+    // At most 2^64 terms of at most 2^63 each: below 2^127.
+    let sum = |v: &[i64]| v.iter().map(|x| x.unsigned_abs() as u128).sum::<u128>();
     let n = f.len().min(g.len()) as u128;
-    let bound = (max(f) * max(g)).checked_mul(n);
+    let (mf, mg) = (max(f), max(g));
+    let bound = [
+        (mf * mg).checked_mul(n),
+        sum(f).checked_mul(mg),
+        mf.checked_mul(sum(g)),
+    ]
+    .into_iter()
+    .flatten()
+    .min();
     match bound {
-        Some(b) if b < 1 << 63 => 0,
-        Some(b) if b < 1 << 127 => 1,
-        _ => 2,
+        Some(b) if b < 1 << 31 => 0,
+        Some(b) if b < 1 << 63 => 1,
+        Some(b) if b < 1 << 127 => 2,
+        _ => 3,
     }
 }

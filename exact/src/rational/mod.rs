@@ -117,6 +117,12 @@ impl Rational {
         if num == 0 {
             return Rational::ZERO;
         }
+        if let (Ok(n), Ok(d)) = (i64::try_from(num), i64::try_from(den)) {
+            // Both in one word (the common case of the polynomial kernels' output terms): a
+            // 64-bit gcd and two 64-bit divisions instead of 128-bit ones. `g <= d < 2^63`.
+            let g = gcd_u64(n.unsigned_abs(), d as u64) as i64;
+            return Rational(Repr::Small((n / g) as i128, (d / g) as i128));
+        }
         let g = gcd_u128(num.unsigned_abs(), den as u128) as i128;
         Rational(Repr::Small(num / g, den / g))
     }

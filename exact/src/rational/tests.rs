@@ -236,3 +236,26 @@ fn dyadic_sums_match_num_rational() {
         }
     }
 }
+
+/// Reduction of one-word numerators and denominators (the 64-bit gcd path) and of values
+/// beyond one word, against num-rational.
+#[test]
+fn reduction_in_one_word_and_beyond() {
+    let cases: [(i128, i128); 9] = [
+        (6, -4),
+        (-6, 4),
+        (i64::MIN as i128, 2),
+        (i64::MIN as i128, -1),
+        (i64::MAX as i128, i64::MAX as i128),
+        (i64::MAX as i128 + 1, 6),
+        (12, i64::MAX as i128 + 1),
+        (-(1i128 << 100), 1 << 90),
+        (0, -5),
+    ];
+    for (n, d) in cases {
+        let got = Rational::from_i128_ratio(n, d).expect("d != 0");
+        let expected = BigRational::new(BigInt::from(n), BigInt::from(d));
+        assert_eq!(got.numer(), *expected.numer(), "{n}/{d}");
+        assert_eq!(got.denom(), *expected.denom(), "{n}/{d}");
+    }
+}

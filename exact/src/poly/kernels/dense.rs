@@ -165,9 +165,19 @@ where
     let table = (slab.saturating_mul(w) <= DECODE_TABLE_WORDS)
         .then(|| decode_table(shape, low_radices, slab));
     let mut acc = vec![A::ZERO; slab];
-    let mut out_e = Vec::new();
-    let mut out_c = Vec::new();
+    let (nf, ng) = (fc.len(), gc.len());
+    let cap = (top_radix as usize * slab)
+        .min(nf.saturating_mul(ng))
+        .min(8 * (nf + ng) + 1024)
+        .min(max.saturating_add(1));
+    let mut out_e = Vec::with_capacity(cap * w);
+    let mut out_c = Vec::with_capacity(cap);
     let mut m = vec![0u64; w];
+    // The top variable's field: its word and shift (clear in every decoded monomial).
+    let (top_word, top_shift) = (
+        top_var / shape.per_word(),
+        (top_var % shape.per_word()) as u32 * shape.bits,
+    );
     for t in (0..top_radix as usize).rev() {
         // One past the highest cell written in this slab (0: none).
         let mut end = 0;
@@ -179,10 +189,7 @@ where
             let gterms = &g.terms[gr.clone()];
             for &(la, a) in &f.terms[fr.clone()] {
                 // Every cell of this row is below `la + ghigh + 1 <= slab`.
-                let row = &mut acc[la..la + ghigh + 1];
-                for &(lb, b) in gterms {
-                    A::add_mul(&mut row[lb], &a, &b);
-                }
+                add_mul_row::<A>(&mut acc[la..la + ghigh + 1], a, gterms);
             }
         }
         for (lo, c) in acc[..end].iter_mut().enumerate().rev() {
@@ -192,17 +199,24 @@ where
             if out_c.len() >= max {
                 return None;
             }
+            let top = (t as u64) << top_shift;
             match &table {
-                Some(table) => m.copy_from_slice(&table[lo * w..(lo + 1) * w]),
+                // One word per monomial (up to 8 variables): no copy loop.
+                Some(table) if w == 1 => out_e.push(table[lo] | top),
+                Some(table) => {
+                    let base = out_e.len();
+                    out_e.extend_from_slice(&table[lo * w..(lo + 1) * w]);
+                    out_e[base + top_word] |= top;
+                }
                 None => {
                     m.fill(0);
                     for &(v, stride, radix) in low_radices {
                         shape.set(&mut m, v, (lo as u64 / stride) % radix);
                     }
+                    m[top_word] |= top;
+                    out_e.extend_from_slice(&m);
                 }
             }
-            shape.set(&mut m, top_var, t as u64);
-            out_e.extend_from_slice(&m);
             out_c.push(*c);
             *c = A::ZERO;
         }
@@ -215,21 +229,51 @@ where
 /// in mixed radix instead of dividing.
 fn decode_table(shape: Shape, low: &[(usize, u64, u64)], slab: usize) -> Vec<u64> {
     let w = shape.words;
+    let pw = shape.per_word();
     let mut table = vec![0u64; slab * w];
+    // Every digit's word and the packed unit of its field: stepping a digit is one addition.
+    let units: Vec<(usize, u64, u64)> = low
+        .iter()
+        .map(|&(v, _, radix)| (v / pw, 1u64 << ((v % pw) as u32 * shape.bits), radix))
+        .collect();
     let mut digits = vec![0u64; low.len()];
     let mut m = vec![0u64; w];
     for lo in 0..slab {
-        table[lo * w..(lo + 1) * w].copy_from_slice(&m);
-        // The next index: increment the lowest digit, carrying upwards.
-        for (d, &(v, _, radix)) in digits.iter_mut().zip(low) {
+        if w == 1 {
+            table[lo] = m[0];
+        } else {
+            table[lo * w..(lo + 1) * w].copy_from_slice(&m);
+        }
+        // The next index: increment the lowest digit, carrying upwards (a digit at its radix
+        // goes back from `radix - 1` to 0).
+        for (d, &(k, unit, radix)) in digits.iter_mut().zip(&units) {
             *d += 1;
             if *d < radix {
-                shape.set(&mut m, v, *d);
+                m[k] += unit;
                 break;
             }
             *d = 0;
-            shape.set(&mut m, v, 0);
+            m[k] -= (radix - 1) * unit;
         }
     }
     table
+}
+
+/// `row[lb] += a * b` for the terms `(lb, b)` of one group (every `lb < row.len()`), unrolled
+/// by four so that the loop's own bookkeeping is shared by four products.
+#[inline(always)]
+fn add_mul_row<A: WordArith>(row: &mut [A::Acc], a: i64, terms: &[(usize, i64)])
+where
+    A::Acc: Copy,
+{
+    let mut quads = terms.chunks_exact(4);
+    for q in &mut quads {
+        A::add_mul(&mut row[q[0].0], &a, &q[0].1);
+        A::add_mul(&mut row[q[1].0], &a, &q[1].1);
+        A::add_mul(&mut row[q[2].0], &a, &q[2].1);
+        A::add_mul(&mut row[q[3].0], &a, &q[3].1);
+    }
+    for &(lb, b) in quads.remainder() {
+        A::add_mul(&mut row[lb], &a, &b);
+    }
 }

@@ -162,6 +162,8 @@ impl<C: Ring> Poly<C> {
             mul_term(w, &be, &rhs.coeffs, &ae, &self.coeffs[0], max)
         } else if rhs.len() == 1 {
             mul_term(w, &ae, &self.coeffs, &be, &rhs.coeffs[0], max)
+        } else if self.len() * rhs.len() <= SMALL_PRODUCT {
+            mul_small(shape, (&ae, &self.coeffs), (&be, &rhs.coeffs), max)
         } else {
             let (small, large) = if self.len() <= rhs.len() {
                 ((&ae[..], self), (&be[..], rhs))
@@ -192,8 +194,12 @@ impl<C: Ring> Poly<C> {
         let shape = self.product_shape(self);
         let max = max(shape.words);
         let e = self.exps_in(shape);
-        let plan = ProductPlan::new(shape, &e, self.len(), None, self.len());
-        let (exps, coeffs) = plan.run_coeffs(&self.coeffs, &self.coeffs, max)?;
+        let (exps, coeffs) = if self.len() * self.len() <= SMALL_PRODUCT {
+            mul_small(shape, (&e, &self.coeffs), (&e, &self.coeffs), max)?
+        } else {
+            let plan = ProductPlan::new(shape, &e, self.len(), None, self.len());
+            plan.run_coeffs(&self.coeffs, &self.coeffs, max)?
+        };
         Some(Poly {
             shape,
             exps,
@@ -363,8 +369,9 @@ impl<'a> ProductPlan<'a> {
                 let d = fd as i128 * gd as i128;
                 let back = |x: WordSum| (h.from_word_sum)(x, d);
                 return match accumulator_for(&fw, gw) {
-                    0 => self.run_words::<W64, C>(&fw, gw, max, back),
-                    1 => self.run_words::<W128, C>(&fw, gw, max, back),
+                    0 => self.run_words::<W32, C>(&fw, gw, max, back),
+                    1 => self.run_words::<W64, C>(&fw, gw, max, back),
+                    2 => self.run_words::<W128, C>(&fw, gw, max, back),
                     _ => self.run_words::<W192, C>(&fw, gw, max, back),
                 };
             }
@@ -548,6 +555,33 @@ pub(super) fn merge_words<C: Ring, const W: usize>(
     (exps, coeffs)
 }
 
+/// Products of at most this many term products are formed by [`mul_small`]: for them, planning
+/// a kernel (exponent bounds, keys or cell indices, word conversions) costs more than the
+/// products themselves.
+const SMALL_PRODUCT: usize = 32;
+
+/// `f g` for small factors: every term product in the coefficients' own arithmetic, sorted and
+/// combined once; `None` past `max` terms.
+pub(super) fn mul_small<C: Ring>(
+    shape: Shape,
+    (fe, fc): (&[u64], &[C]),
+    (ge, gc): (&[u64], &[C]),
+    max: usize,
+) -> Option<(Vec<u64>, Vec<C>)> {
+    let w = shape.words;
+    let n = fc.len() * gc.len();
+    let mut exps = Vec::with_capacity(n * w);
+    let mut coeffs = Vec::with_capacity(n);
+    for (i, a) in fc.iter().enumerate() {
+        for (j, b) in gc.iter().enumerate() {
+            push_sum(&mut exps, &fe[i * w..(i + 1) * w], &ge[j * w..(j + 1) * w]);
+            coeffs.push(a.mul_ref(b));
+        }
+    }
+    let p = Poly::from_unsorted(shape, exps, coeffs);
+    (p.len() <= max).then_some((p.exps, p.coeffs))
+}
+
 /// `g * (m, c)`: a term times a sorted list stays sorted.
 pub(super) fn mul_term<C: Ring>(
     w: usize,
@@ -562,12 +596,10 @@ pub(super) fn mul_term<C: Ring>(
     }
     let mut exps = Vec::with_capacity(ge.len());
     let mut coeffs = Vec::with_capacity(gc.len());
-    let mut buf = vec![0u64; w];
     for (j, g) in gc.iter().enumerate() {
         let p = g.mul_ref(c);
         if !p.is_zero() {
-            add_mono(&mut buf, &ge[j * w..(j + 1) * w], m);
-            exps.extend_from_slice(&buf);
+            push_sum(&mut exps, &ge[j * w..(j + 1) * w], m);
             coeffs.push(p);
         }
     }

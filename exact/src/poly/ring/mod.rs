@@ -595,7 +595,7 @@ impl<C: Ring> Poly<C> {
 
     /// The sum of many polynomials. Few or small summands are added pairwise (balanced, which
     /// keeps the merges of similar sizes); many large ones in one pass, a k-way merge by a heap
-    /// on compact one-word keys (as in multiplication) that writes every term once.
+    /// on compact keys of one or two words (as in multiplication) that writes every term once.
     pub fn sum(polys: Vec<Poly<C>>) -> Poly<C> {
         let mut polys: Vec<Poly<C>> = polys.into_iter().filter(|p| !p.is_empty()).collect();
         match polys.len() {
@@ -624,7 +624,7 @@ impl<C: Ring> Poly<C> {
             }
         }
         let (k, place) = key_layout(&need);
-        if k > 1 {
+        if k > 2 {
             return Poly::sum_pairwise(polys);
         }
         let total: usize = polys.iter().map(Poly::len).sum();
@@ -634,51 +634,28 @@ impl<C: Ring> Poly<C> {
         for p in polys {
             let n = p.len();
             let (e, c) = p.into_parts(shape);
-            keys_of.push(make_keys(shape, &e, n, 1, &place));
+            keys_of.push(make_keys(shape, &e, n, k, &place));
             exps_of.push(e);
             coeffs_of.push(c.into_iter());
         }
-        let w = words;
-        let mut pos = vec![0usize; keys_of.len()];
-        let mut heap: Vec<(u64, u32)> = Vec::with_capacity(keys_of.len());
-        for (p, keys) in keys_of.iter().enumerate() {
-            push1(&mut heap, (keys[0], p as u32));
-        }
-        let mut out_e: Vec<u64> = Vec::with_capacity(total * w);
-        let mut out_c: Vec<C> = Vec::with_capacity(total);
-        // Takes the root's next coefficient and moves its summand on.
-        let mut step = |heap: &mut Vec<(u64, u32)>, pos: &mut Vec<usize>| -> C {
-            let p = heap[0].1 as usize;
-            let c = coeffs_of[p].next().unwrap_or_else(C::zero);
-            pos[p] += 1;
-            match keys_of[p].get(pos[p]) {
-                Some(&key) => heap[0].0 = key,
-                None => {
-                    let last = heap.pop().unwrap_or((0, 0));
-                    if heap.is_empty() {
-                        return c;
-                    }
-                    heap[0] = last;
-                }
-            }
-            sift_down1(heap);
-            c
+        let terms = Summands {
+            exps: exps_of,
+            coeffs: coeffs_of,
+            total,
         };
-        while let Some(&(key, p)) = heap.first() {
-            let (p, i) = (p as usize, pos[p as usize]);
-            let mut acc = step(&mut heap, &mut pos);
-            while heap.first().is_some_and(|t| t.0 == key) {
-                acc += step(&mut heap, &mut pos);
-            }
-            if !acc.is_zero() {
-                out_e.extend_from_slice(&exps_of[p][i * w..(i + 1) * w]);
-                out_c.push(acc);
-            }
-        }
-        Poly {
-            shape,
-            exps: out_e,
-            coeffs: out_c,
+        if k == 1 {
+            sum_heap(shape, keys_of, terms)
+        } else {
+            // Two key words as one u128 (most significant word last), as in the products.
+            let wide = keys_of
+                .iter()
+                .map(|keys| {
+                    keys.chunks_exact(2)
+                        .map(|p| (u128::from(p[1]) << 64) | u128::from(p[0]))
+                        .collect()
+                })
+                .collect();
+            sum_heap(shape, wide, terms)
         }
     }
 
@@ -833,5 +810,70 @@ pub(super) fn binary_power<T: Clone>(
             return acc.unwrap_or(sq);
         }
         sq = square(&sq);
+    }
+}
+
+/// The summands of a k-way merge: every summand's packed monomials and coefficients, and the
+/// total number of terms.
+struct Summands<C> {
+    exps: Vec<Vec<u64>>,
+    coeffs: Vec<std::vec::IntoIter<C>>,
+    total: usize,
+}
+
+/// The k-way merge of [`Poly::sum`] over compact keys of one or two words (`u64`, `u128`):
+/// a heap of `(key, summand)` pairs, equal monomials accumulated as they leave it, every term
+/// written once.
+fn sum_heap<C: Ring, Key: HeapKey>(
+    shape: Shape,
+    keys_of: Vec<Vec<Key>>,
+    s: Summands<C>,
+) -> Poly<C> {
+    let Summands {
+        exps: exps_of,
+        coeffs: mut coeffs_of,
+        total,
+    } = s;
+    let w = shape.words;
+    let mut pos = vec![0usize; keys_of.len()];
+    let mut heap: Vec<(Key, u32)> = Vec::with_capacity(keys_of.len());
+    for (p, keys) in keys_of.iter().enumerate() {
+        push1(&mut heap, (keys[0], p as u32));
+    }
+    let mut out_e: Vec<u64> = Vec::with_capacity(total * w);
+    let mut out_c: Vec<C> = Vec::with_capacity(total);
+    // Takes the root's next coefficient and moves its summand on.
+    let mut step = |heap: &mut Vec<(Key, u32)>, pos: &mut Vec<usize>| -> C {
+        let p = heap[0].1 as usize;
+        let c = coeffs_of[p].next().unwrap_or_else(C::zero);
+        pos[p] += 1;
+        match keys_of[p].get(pos[p]) {
+            Some(&key) => heap[0].0 = key,
+            None => {
+                let last = heap.pop().expect("the root exists");
+                if heap.is_empty() {
+                    return c;
+                }
+                heap[0] = last;
+            }
+        }
+        sift_down1(heap);
+        c
+    };
+    while let Some(&(key, p)) = heap.first() {
+        let (p, i) = (p as usize, pos[p as usize]);
+        let mut acc = step(&mut heap, &mut pos);
+        while heap.first().is_some_and(|t| t.0 == key) {
+            acc += step(&mut heap, &mut pos);
+        }
+        if !acc.is_zero() {
+            out_e.extend_from_slice(&exps_of[p][i * w..(i + 1) * w]);
+            out_c.push(acc);
+        }
+    }
+    Poly {
+        shape,
+        exps: out_e,
+        coeffs: out_c,
     }
 }
