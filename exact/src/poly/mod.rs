@@ -91,10 +91,11 @@
 //!   against it is a canonical normal form.
 //!
 //! # Performance
-//! The benchmark chiang-identity (the claim list at `(m, n) = (8, 13)`: a 9.5 kB expression pair over 74 variables, 5,841 terms)
-//! parses, expands and compares in about 5 ms on the project machine, python-flint's
-//! `fmpq_mpoly` takes 7.4 ms, SymPy 3.3 s (`exact/benches/poly.rs`). A large share of the time
-//! is coefficient arithmetic in [`crate::Rational`].
+//! The benchmark chiang-identity (the claim list at `(m, n) = (8, 13)`: a 9.5 kB expression pair
+//! over 74 variables, 5,841 terms) parses, expands and compares these polynomials; the criterion
+//! bench `bench/benches/poly.rs` and the side-by-side comparison with SymPy and python-flint
+//! (`bench/scripts/compare.py`) measure it, and `docs/benchmarks.md` has the latest figures. A
+//! large share of the time is coefficient arithmetic in [`crate::Rational`].
 
 mod display;
 mod divide;
