@@ -8,7 +8,7 @@
 //! * [`ph`] — Chiang's PH curve with its offsets and their cusps (a 2D chart).
 //!
 //! What a figure shows is computed first, exactly where the paper's statement is exact (the
-//! markers of the t-u diagram by Sturm on the tau-quartic in `scene`, Chiang's sections over
+//! markers of the t-u diagram by exact root isolation on the tau-quartic in `scene`, Chiang's sections over
 //! `Q(sqrt 2, sqrt 6)`, the PH offsets over `Q`), and only converted to f64 to be drawn; the
 //! dense curves of the t-u diagram and the 3D views are f64 samplings. [`style`] holds what the
 //! figures share (palette, caption, legend, markers, fixed-tick axes), so a new figure is a

@@ -214,7 +214,7 @@ pub(super) fn exact_info(cs: &CylinderSphere<Rational>) -> ExactInfo {
         format!("; touching at t = {}", ts.join(", "))
     };
     let summary = format!(
-        "exact (Sturm on the τ-quartic): {}, {} component{}, {set}{touching}",
+        "exact (root isolation on the τ-quartic): {}, {} component{}, {set}{touching}",
         format!("{:?}", a.contact).to_lowercase(),
         a.components,
         if a.components == 1 { "" } else { "s" }

@@ -5,7 +5,7 @@
 //!   `u1(t) <= u2(t)` of `u^2 + 2 A(t) u + B(t) = 0` over `t` in degrees, sampled densely in f64
 //!   ([`runs`]) and broken where the discriminant is negative; the paper's 10-degree samples as
 //!   dots (hollow where no real `u` exists); the real t-ranges (shaded), the ends of the real
-//!   t-intervals (ticks) and the touching points (diamonds) from the **exact** analysis (Sturm
+//!   t-intervals (ticks) and the touching points (diamonds) from the **exact** analysis (root isolation
 //!   on the tau-quartic, [`super::scene::exact_info`]). A `plotters` 2D chart with the axis ticks
 //!   of [`nice_ticks`] (so a subnormal u-range still has a normal step).
 //! * The **3D view**: a `plotters` 3D chart (`build_cartesian_3d`; world `z` is the chart's
@@ -209,7 +209,7 @@ pub(super) fn tu_diagram(scene: &Scene) -> String {
             }
             if e.everywhere || !e.arcs.is_empty() || !e.tangents.is_empty() {
                 notes.push("shading, ends, touching points:".into());
-                notes.push("exact (Sturm on the τ-quartic)".into());
+                notes.push("exact (root isolation on the τ-quartic)".into());
             }
         }
         legend(&side, &rows, &notes)

@@ -15,7 +15,7 @@
 //! * the degree `m + n` is attained: the construction `B = (0, g, 0)`, `V = (0, 1, f)` with
 //!   `g` of degree `n` and `f` of degree `m` having distinct roots in `(0, 1)` gives the
 //!   polynomial `g f` with `m + n` distinct roots in `[0, 1]`, each an intersection point
-//!   (isolated exactly by Sturm sequences, the points checked by substitution);
+//!   (isolated exactly by Descartes' rule, the points checked by substitution);
 //! * exact random instances: a line through two chosen surface points `S(s_i, t_i)`; the roots
 //!   isolated in `[0, 1]` contain `t_1, t_2` exactly and each root's point lies on both;
 //! * the printed bound `3 max{n, m+1}` (derived in the paper from "the degree of each equation is
@@ -39,7 +39,7 @@
 //! `B(t) = P` (a zero direction `V(t) = 0` makes every component vanish although the "ruling"
 //! is the single point `B(t)`; a second counter-example shows it).
 //!
-//! Written by hand on the workspace's own polynomial engine and Sturm root isolation
+//! Written by hand on the workspace's own polynomial engine and exact real-root isolation
 //! (`exactcheck_exact::univariate`), because the check must be exact.
 //!
 //! Rust, not an embedded claims file: the degree bound is attained by constructions, the

@@ -100,7 +100,7 @@ fn covers_everything(a: &Analysis) -> bool {
         && a.sign_at_pi != exactcheck_core::Sign::Negative
 }
 
-const EX_METHOD: &str = "exact decision (Sturm on the tau-quartic) + f64 sampling as printed";
+const EX_METHOD: &str = "exact decision (root isolation on the tau-quartic) + f64 sampling as printed";
 
 fn example1() -> Result<Outcome, String> {
     let cs = example(1);
@@ -217,7 +217,7 @@ fn sampling_erratum(
     let sum = |items: Vec<(AddOp, Expr)>| Expr::new(ExprKind::Sum(items));
     Ok(crate::claims::Erratum {
         correction: format!(
-            "a fixed angular step that finds no root does not prove that there is no intersection: in the counter-example the surfaces cross, yet none of the {n5} samples at 5 degrees and {n10} at 10 degrees is real; decide exactly (the axis distance: |delta - r| <= R, or the sign of the tau-quartic by Sturm), or bound the step by the curve's extent"
+            "a fixed angular step that finds no root does not prove that there is no intersection: in the counter-example the surfaces cross, yet none of the {n5} samples at 5 degrees and {n10} at 10 degrees is real; decide exactly (the axis distance: |delta - r| <= R, or the sign of the tau-quartic by exact root isolation), or bound the step by the curve's extent"
         ),
         counter_example: vec![
             Equation::named("r", value(&cs.r)),
@@ -261,7 +261,7 @@ fn sampling() -> Result<Outcome, String> {
                 verdict: Verdict::Fails,
                 method: "search over exact configurations; exact decision vs f64 sampling".into(),
                 evidence: format!(
-                    "counter-example: cylinder r = 5 about the z axis, sphere R = 2 with centre at distance 7 - {eps} from the axis in the direction tau = {tau0} (centre ({}, {}, {})): the surfaces cross ({}, also by the axis distance), but 0/{n5} samples at 5 degrees and 0/{n10} at 10 degrees are real. Corrected claim: decide exactly (axis distance |delta - r| <= R, or the sign of the tau-quartic by Sturm), or bound the step by the curve's extent",
+                    "counter-example: cylinder r = 5 about the z axis, sphere R = 2 with centre at distance 7 - {eps} from the axis in the direction tau = {tau0} (centre ({}, {}, {})): the surfaces cross ({}, also by the axis distance), but 0/{n5} samples at 5 degrees and 0/{n10} at 10 degrees are real. Corrected claim: decide exactly (axis distance |delta - r| <= R, or the sign of the tau-quartic by exact root isolation), or bound the step by the curve's extent",
                     cs.center.x,
                     cs.center.y,
                     cs.center.z,
