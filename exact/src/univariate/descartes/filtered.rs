@@ -36,9 +36,15 @@
 //!   `E_0`). The end signs are exact: those of `p(0) = p_0` and of
 //!   `p(1)`, the sum of the coefficients. Against the exact shift on limbs this is
 //!   `n(n+1)` `f64` additions in a vectorized loop instead of `n(n+1)/2` carry chains over
-//!   the coefficients' limbs and the conversions; where the shift cancels (the values far below
-//!   `T`, as for Wilkinson's product) `E_0 > M / 256` and the root is re-anchored from the
-//!   exact shift at once.
+//!   the coefficients' limbs and the conversions. Where the shift cancels (the values far below
+//!   `T`, as for Wilkinson's product: `E_0 > 2^-38 M`, which would exhaust the precision a few
+//!   splits down) the root node is made from the exact
+//!   shift on [`Limbs`] instead: each `c_k 2^-K` (`K` the largest bit length) from the top 64
+//!   bits of `|c_k|` (truncation: relative error below `2^-63`), rounded to `f64` (`u`), divided
+//!   by the `f64` binomials, so each value has a relative error below `rho = (3n + 8) u` and an
+//!   absolute one below `2^-1073`; scaled by `2^t` (`t >= 0`) into `[1/2, 1)`, with `M` the
+//!   largest value, `E_0 = rho (1 + 2 rho) M + 2^(t - 1072)`; its end signs are those of `c_n`
+//!   and `c_0`, and the exact shift is kept for the exact coefficients of re-anchored nodes.
 //! * **Re-anchored node.** Exact integer coefficients `B_i` (times a positive constant) are
 //!   converted to `B_i 2^-k`, `k` the largest bit length, as the `c_k` above: relative error
 //!   below `u + 2^-63`, absolute `2^-1074`, so with `M >= 1/2 - 2^-53` the largest computed
@@ -166,14 +172,26 @@ fn subdivide(p: &[BigInt], pairs: bool, max_depth: u64) -> (Vec<UnitRoot>, Filte
         stats: FilterStats::default(),
         splitter: None,
         exact_nodes: HashMap::new(),
+        shifted: None,
         p_limbs: None,
     };
     let w = n + 1;
     let binoms = binomials_f64(n);
     // Room for the blocks of a path of depth 7 (grown on demand below).
     let mut blocks: Vec<f64> = Vec::with_capacity(w * 8);
-    // The root node's decisions (no root, one root, out of precision) are the loop's.
     let (root, _) = root_f64_coefficients(p, &binoms, &mut blocks);
+    // From the exact shift, the root's signs are exact: no variation, no root; one, with
+    // non-zero ends, one root. Otherwise the root node's decisions are the loop's.
+    if let Some(v) = root.v {
+        if v == 0 {
+            return (run.out, run.stats);
+        }
+        if v == 1 && root.lo != Sign::Zero && root.hi != Sign::Zero {
+            run.out.push(leaf_root(&BigInt::zero(), 0, blocks, &binoms));
+            return (run.out, run.stats);
+        }
+    }
+    run.shifted = root.shifted;
     // The parent's coefficients and a second row for de Casteljau's triangle.
     let mut work = vec![0.0f64; 2 * w];
     let mut stack = vec![Node {
@@ -290,6 +308,8 @@ struct Run<'a> {
     /// The exact integer Bernstein coefficients of the nodes `(j, c)` computed so far (both
     /// halves of every exact split), so that no exact split is done twice.
     exact_nodes: HashMap<(u64, BigInt), Limbs>,
+    /// The root's exact Taylor-shifted reversal when the root node was made from it.
+    shifted: Option<Limbs>,
     /// `p` on limbs, for the exact signs at split points.
     p_limbs: Option<Limbs>,
 }
@@ -320,11 +340,14 @@ impl Run<'_> {
             .rev()
             .find(|&d| d == 0 || self.exact_nodes.contains_key(&(d, c >> (j - d))))
             .expect("d = 0 is always found");
-        let p = self.p;
+        let (p, shifted) = (self.p, &self.shifted);
         let mut limbs = self
             .exact_nodes
             .entry((start, c >> (j - start)))
-            .or_insert_with(|| bernstein_from_shifted(&exact_shifted_reversal(p)))
+            .or_insert_with(|| match shifted {
+                Some(s) => bernstein_from_shifted(s),
+                None => bernstein_from_shifted(&exact_shifted_reversal(p)),
+            })
             .clone();
         for d in start + 1..=j {
             let (left, right) = limbs.split_half();
@@ -369,6 +392,10 @@ struct Root {
     /// The exact signs of `p(0)` and `p(1)`.
     lo: Sign,
     hi: Sign,
+    /// The exact Taylor-shifted reversal when the values were made from it.
+    shifted: Option<Limbs>,
+    /// Then also the exact number of sign variations of the coefficients.
+    v: Option<usize>,
 }
 
 /// The coefficients of `(1 + y)^n p(1 / (1 + y))` (the reversal of `p` shifted by 1), exactly
@@ -400,6 +427,11 @@ fn big_leading_bits(x: &BigInt) -> (bool, u64, u64) {
     (x.is_negative(), top, bits - 64)
 }
 
+/// The root node from the `f64` shift is kept when `E_0 <= M * ROOT_ACCEPT` (`2^-38`; the
+/// exact shift's bound is about `2^-45` to `2^-47` at degrees 20 to 100): a larger bound would
+/// send its nodes to exact re-anchoring after a few splits.
+const ROOT_ACCEPT: f64 = 1.0 / (1u64 << 38) as f64;
+
 /// `2^-71`: the absolute error of the root node's values from underflow (module
 /// documentation, "Root node").
 const ROOT_ABSOLUTE: f64 = 1.0 / (1u128 << 71) as f64;
@@ -414,27 +446,28 @@ fn root_f64_coefficients(p: &[BigInt], binoms: &[f64], blocks: &mut Vec<f64>) ->
     let start = blocks.len();
     // x_m = p_(n-m) 2^-k, k the largest bit length.
     let k = push_scaled(p.iter().rev().map(big_leading_bits).collect(), blocks);
-    let x = &mut blocks[start..];
-    let mut t: Vec<f64> = x.iter().map(|v| v.abs()).collect();
+    // Each value beside its absolute value: one two-lane addition per step of the triangle.
+    let mut xt: Vec<[f64; 2]> = blocks[start..].iter().map(|&v| [v, v.abs()]).collect();
     // The Taylor shift's triangle a_j <- a_j + a_(j+1) (pass i for j = n-1 down to i), run by
     // anti-diagonals: step d updates j = n-1-d, ..., n-1, each from the values before the
     // step (the ascending loop reads a_(j+1) before it is overwritten), a loop without a
-    // dependency chain that the compiler vectorizes. The same additions as pass by pass.
+    // dependency chain. The same additions as pass by pass.
     for d in 0..n {
-        for j in n - 1 - d..n {
-            x[j] += x[j + 1];
-            t[j] += t[j + 1];
+        let row = &mut xt[n - 1 - d..];
+        for j in 0..row.len() - 1 {
+            let next = row[j + 1];
+            row[j][0] += next[0];
+            row[j][1] += next[1];
         }
     }
     // g_i = c_(n-i) / C(n, i), and the largest T_(n-i) / C(n, i).
     let mut worst = 0.0f64;
-    for (i, b) in binoms.iter().enumerate() {
-        x[n - i] /= b;
-        worst = worst.max(t[n - i] / b);
+    for ((g, b), &[c, t]) in blocks[start..].iter_mut().zip(binoms).zip(xt.iter().rev()) {
+        *g = c / b;
+        worst = worst.max(t / b);
     }
-    x.reverse();
     let lo = sign_of(&p[0]);
-    let hi = sign_of(&p.iter().sum::<BigInt>());
+    let hi = sign_of_sum(p);
     let u = f64::EPSILON / 2.0;
     let e = ((3 * n + 8) as f64 * u * worst + ROOT_ABSOLUTE) * SAFETY * SAFETY;
     // Into [1/2, 1) by a power of two (the shifted values reach (n + 1) 2^n, so it may be
@@ -452,7 +485,95 @@ fn root_f64_coefficients(p: &[BigInt], binoms: &[f64], blocks: &mut Vec<f64>) ->
         *g *= f;
     }
     let e = e * f + 2.0 * TINY;
-    (Root { e, lo, hi }, t - k)
+    if !(e <= max_abs(&blocks[start..]) * ROOT_ACCEPT) {
+        // The shift cancelled (the values far below the shift of the absolute values): the
+        // exact shift now, rather than nodes re-anchored a few levels down.
+        blocks.truncate(start);
+        return root_from_exact_shift(p, binoms, blocks);
+    }
+    (
+        Root {
+            e,
+            lo,
+            hi,
+            shifted: None,
+            v: None,
+        },
+        t - k,
+    )
+}
+
+/// The sign of `p(1)`, the sum of the coefficients: in `i128` when every coefficient fits a
+/// word (at most `2^14` of them), else on big integers.
+fn sign_of_sum(p: &[BigInt]) -> Sign {
+    let words: Option<i128> = p
+        .iter()
+        .map(|c| c.to_i64().map(i128::from))
+        .sum::<Option<i128>>();
+    match words {
+        Some(s) => match s.cmp(&0) {
+            std::cmp::Ordering::Less => Sign::Negative,
+            std::cmp::Ordering::Equal => Sign::Zero,
+            std::cmp::Ordering::Greater => Sign::Positive,
+        },
+        None => {
+            let mut s = BigInt::zero();
+            for c in p {
+                s += c;
+            }
+            sign_of(&s)
+        }
+    }
+}
+
+/// The root node from the exact Taylor shift on [`Limbs`] (for a shift that cancels in `f64`):
+/// `g_i ~ 2^scale c_(n-i) / C(n, i)` from the leading bits of the exact `c` (relative error
+/// below `rho = (3n + 8) u` each, module documentation, "Root node"), and `scale`.
+fn root_from_exact_shift(p: &[BigInt], binoms: &[f64], blocks: &mut Vec<f64>) -> (Root, i64) {
+    let n = p.len() - 1;
+    let start = blocks.len();
+    let shifted = exact_shifted_reversal(p);
+    let mut bits = Vec::with_capacity(n + 1);
+    shifted.leading_bits(|neg, top, shift| bits.push((neg, top, shift)));
+    let sign = |(neg, top, _): (bool, u64, u64)| match (top, neg) {
+        (0, _) => Sign::Zero,
+        (_, true) => Sign::Negative,
+        (_, false) => Sign::Positive,
+    };
+    let (lo, hi) = (sign(bits[n]), sign(bits[0]));
+    // The Bernstein coefficients are these times positive multipliers: the same signs.
+    let v = isolate::count_variations(bits.iter().map(|&b| sign(b)));
+    bits.reverse();
+    // c_(n-i) 2^-k, k the largest bit length, divided by C(n, i) (recurrence in f64).
+    let k = push_scaled(bits, blocks);
+    for (g, b) in blocks[start..].iter_mut().zip(binoms) {
+        *g /= b;
+    }
+    // Into [1/2, 1): the largest value is at least 2^-1 / C(n, i) > 2^-1002.
+    let m = max_abs(&blocks[start..]);
+    assert!(
+        m >= f64::MIN_POSITIVE,
+        "the largest value is above 2^-1002 (degree at most 1000)"
+    );
+    let biased = ((m.to_bits() >> 52) & 0x7ff) as i64;
+    let t = (1022 - biased).max(0);
+    let f = pow2f(t);
+    for g in blocks[start..].iter_mut() {
+        *g *= f;
+    }
+    let m = max_abs(&blocks[start..]);
+    let rho = (3 * n + 8) as f64 * (f64::EPSILON / 2.0);
+    let e = (rho * (1.0 + 2.0 * rho) * m + pow2f(t - 1072)) * SAFETY;
+    (
+        Root {
+            e,
+            lo,
+            hi,
+            shifted: Some(shifted),
+            v: Some(v),
+        },
+        t - k,
+    )
 }
 
 /// Pushes `B 2^-k` for numbers `B` given by their sign, 64 leading bits `t` and their position

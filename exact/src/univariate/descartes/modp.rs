@@ -59,12 +59,14 @@ pub(super) fn big_mod(x: &BigInt, p: u64) -> u64 {
     }
     if p == P31 {
         // Horner over the 64-bit limbs, most significant first: 2^64 = 2^(2 * 31 + 2) = 4.
-        let r = x
-            .magnitude()
-            .iter_u64_digits()
-            .rev()
-            .fold(0u64, |r, limb| fold31((r << 2) + fold31(limb >> 1) * 2 + (limb & 1)));
-        return if x.is_negative() && r != 0 { P31 - r } else { r };
+        let r = x.magnitude().iter_u64_digits().rev().fold(0u64, |r, limb| {
+            fold31((r << 2) + fold31(limb >> 1) * 2 + (limb & 1))
+        });
+        return if x.is_negative() && r != 0 {
+            P31 - r
+        } else {
+            r
+        };
     }
     let r = rem_small(x, p);
     if x.is_negative() && r != 0 {
@@ -193,9 +195,9 @@ pub(super) fn is_square_free_mod_p(q: &[BigInt]) -> bool {
             return true;
         }
     }
-    PRIMES.iter().any(|&p| {
-        residues(p).is_some_and(|(a, d)| gcd_degree_mod_p(a, d, p) == 0)
-    })
+    PRIMES
+        .iter()
+        .any(|&p| residues(p).is_some_and(|(a, d)| gcd_degree_mod_p(a, d, p) == 0))
 }
 
 /// The gcd of the integers `q` (non-negative): each step reduces the next number modulo the

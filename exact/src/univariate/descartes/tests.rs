@@ -779,7 +779,16 @@ fn gcd_degree_mod_p_matches_rational_gcd() {
 fn big_mod_p31_matches_bigint_remainder() {
     let mut rng = Rng::new(31);
     let p = BigInt::from(P31);
-    let specials = [0u64, 1, P31 - 1, P31, P31 + 1, u64::MAX, u64::MAX - 1, 1 << 63];
+    let specials = [
+        0u64,
+        1,
+        P31 - 1,
+        P31,
+        P31 + 1,
+        u64::MAX,
+        u64::MAX - 1,
+        1 << 63,
+    ];
     for round in 0..400 {
         let len = 1 + round % 5;
         let limbs: Vec<u64> = (0..len)
