@@ -485,7 +485,9 @@ fn root_f64_coefficients(p: &[BigInt], binoms: &[f64], blocks: &mut Vec<f64>) ->
         *g *= f;
     }
     let e = e * f + 2.0 * TINY;
-    if !(e <= max_abs(&blocks[start..]) * ROOT_ACCEPT) {
+    // `false` also for a NaN.
+    let accepted = e <= max_abs(&blocks[start..]) * ROOT_ACCEPT;
+    if !accepted {
         // The shift cancelled (the values far below the shift of the absolute values): the
         // exact shift now, rather than nodes re-anchored a few levels down.
         blocks.truncate(start);
