@@ -35,8 +35,8 @@
 //!   `E_0` made subnormal by it is rounded by at most `2^-1075`, and `2^-1073` is added to
 //!   `E_0`). The end signs are exact: those of `p(0) = p_0` and of
 //!   `p(1)`, the sum of the coefficients. Against the exact shift on limbs this is
-//!   `n(n+1)` `f64` additions in a vectorized loop instead of `n(n+1)/2` carry chains over
-//!   the coefficients' limbs and the conversions. Where the shift cancels (the values far below
+//!   `n(n+1)/2` additions of (value, bound) pairs in a loop without a dependency chain instead
+//!   of `n(n+1)/2` carry chains over the coefficients' limbs and the conversions. Where the shift cancels (the values far below
 //!   `T`, as for Wilkinson's product: `E_0 > 2^-38 M`, which would exhaust the precision a few
 //!   splits down) the root node is made from the exact
 //!   shift on [`Limbs`] instead: each `c_k 2^-K` (`K` the largest bit length) from the top 64
