@@ -124,7 +124,10 @@ impl Rational {
             return Rational(Repr::Small((n / g) as i128, (d / g) as i128));
         }
         let g = gcd_u128(num.unsigned_abs(), den as u128) as i128;
-        Rational(Repr::Small(num / g, den / g))
+        if g == 1 {
+            return Rational(Repr::Small(num, den));
+        }
+        Rational(Repr::Small(div_small(num, g), div_small(den, g)))
     }
 
     /// Canonical form of `num / den` from big parts with `den != 0` (reduces by their gcd).
@@ -441,7 +444,7 @@ fn add_small(a: i128, b: i128, c: i128, d: i128) -> Option<Rational> {
             return None;
         }
         let g = gcd_u128(s.unsigned_abs(), b as u128) as i128;
-        return Some(Rational(Repr::Small(s / g, b / g)));
+        return Some(Rational(Repr::Small(div_small(s, g), div_small(b, g))));
     }
     if d == 1 {
         // a/b + c = (a + c b)/b, already reduced.
@@ -461,7 +464,7 @@ fn add_small(a: i128, b: i128, c: i128, d: i128) -> Option<Rational> {
         }
         return (fits(n) && fits(den)).then_some(Rational(Repr::Small(n, den)));
     }
-    let (b1, d1) = (b / g, d / g);
+    let (b1, d1) = (div_small(b, g), div_small(d, g));
     let t = a.checked_mul(d1)?.checked_add(c.checked_mul(b1)?)?;
     if t == 0 {
         return Some(Rational::ZERO);
@@ -470,8 +473,26 @@ fn add_small(a: i128, b: i128, c: i128, d: i128) -> Option<Rational> {
         return None;
     }
     let g2 = gcd_u128(t.unsigned_abs(), g as u128) as i128;
-    let den = b1.checked_mul(d / g2)?;
-    fits(den).then_some(Rational(Repr::Small(t / g2, den)))
+    let den = b1.checked_mul(div_small(d, g2))?;
+    fits(den).then_some(Rational(Repr::Small(div_small(t, g2), den)))
+}
+
+/// `x / y` (truncated) for `y > 0`: one 64-bit division when `|x|` and `y` fit a word (the
+/// parts of most inline rationals), the `i128` division (a library call) otherwise.
+#[inline]
+fn div_small(x: i128, y: i128) -> i128 {
+    debug_assert!(y > 0);
+    let m = x.unsigned_abs();
+    if (m | y as u128) >> 64 == 0 {
+        let q = i128::from((m as u64) / (y as u64));
+        if x < 0 {
+            -q
+        } else {
+            q
+        }
+    } else {
+        x / y
+    }
 }
 
 /// `(a/b) (c/d)` for inline operands by Henrici's method: the crossed gcds are cancelled on
@@ -493,8 +514,16 @@ fn mul_small(a: i128, b: i128, c: i128, d: i128) -> Rational {
         gcd_u128(c.unsigned_abs(), b as u128) as i128
     };
     // Divide only where a factor cancels: i128 division is the expensive part.
-    let (a, d) = if g1 == 1 { (a, d) } else { (a / g1, d / g1) };
-    let (c, b) = if g2 == 1 { (c, b) } else { (c / g2, b / g2) };
+    let (a, d) = if g1 == 1 {
+        (a, d)
+    } else {
+        (div_small(a, g1), div_small(d, g1))
+    };
+    let (c, b) = if g2 == 1 {
+        (c, b)
+    } else {
+        (div_small(c, g2), div_small(b, g2))
+    };
     if let (Some(n), Some(den)) = (a.checked_mul(c), b.checked_mul(d)) {
         if fits(n) && fits(den) {
             return Rational(Repr::Small(n, den));

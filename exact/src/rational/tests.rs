@@ -259,3 +259,57 @@ fn reduction_in_one_word_and_beyond() {
         assert_eq!(got.denom(), *expected.denom(), "{n}/{d}");
     }
 }
+
+/// The inline tier's divisions (64-bit where both operands fit a word, `i128` otherwise)
+/// against num-rational: construction, sums, differences, products and quotients of parts
+/// around `2^63`, `2^64` and `2^100`, of both signs, with common factors planted.
+#[test]
+fn inline_arithmetic_at_word_boundaries_matches_num_rational() {
+    let mut st = exactcheck_core::Rng::new(0x64);
+    let edges: [i128; 8] = [
+        1,
+        3,
+        i64::MAX as i128,
+        i64::MAX as i128 + 1,
+        u64::MAX as i128,
+        u64::MAX as i128 + 1,
+        1 << 100,
+        (1 << 100) + 7,
+    ];
+    let part = |st: &mut exactcheck_core::Rng| -> i128 {
+        let base = match st.below(3) {
+            0 => edges[st.below(8) as usize] - st.below(3) as i128,
+            1 => (st.next_u64() >> st.below(64)) as i128,
+            _ => (st.next_u64() as i128) << st.below(40),
+        };
+        // A planted factor so that the gcds are not all 1.
+        let f = [1i128, 2, 6, 1 << 20, 1_000_003][st.below(5) as usize];
+        (base.max(1) / f).max(1) * f
+    };
+    for _ in 0..2000 {
+        let (a, b, c, d) = (part(&mut st), part(&mut st), part(&mut st), part(&mut st));
+        let (a, c) = if st.below(2) == 0 { (-a, c) } else { (a, -c) };
+        let x = Rational::from_i128_ratio(a, b).unwrap();
+        let y = Rational::from_i128_ratio(c, d).unwrap();
+        let (rx, ry) = (
+            BigRational::new(BigInt::from(a), BigInt::from(b)),
+            BigRational::new(BigInt::from(c), BigInt::from(d)),
+        );
+        assert_eq!(x.to_big_rational(), rx, "{a}/{b}");
+        for (got, expected) in [
+            (&x + &y, &rx + &ry),
+            (&x - &y, &rx - &ry),
+            (&x * &y, &rx * &ry),
+            (&x / &y, &rx / &ry),
+        ] {
+            assert!(got.is_canonical(), "{a}/{b} and {c}/{d}");
+            assert_eq!(got.to_big_rational(), expected, "{a}/{b} and {c}/{d}");
+        }
+    }
+    // i64::MIN over -1 and its neighbours through the signed constructor.
+    assert_eq!(
+        Rational::new(i64::MIN, -1).unwrap().to_big_rational(),
+        BigRational::from(-BigInt::from(i64::MIN))
+    );
+    assert_eq!(q(i64::MIN, 2), Rational::from_integer(i64::MIN / 2));
+}

@@ -8,10 +8,10 @@
 //!    coefficient. It is square-free when `gcd(q mod p, q' mod p) = 1` over `F_p` for a prime `p`
 //!    that divides neither the leading coefficient of `q` nor that of `q'`: then the resultant
 //!    `Res(q, q')` (which reduces modulo `p` to the resultant of the reductions, the degrees being
-//!    kept) is non-zero modulo `p`, hence non-zero, hence `gcd(q, q') = 1` over `Q`. Three 61/62-bit
-//!    primes are tried ([`is_square_free_mod_p`], `O(n^2)` word operations: Euclid without
-//!    inverses, `a <- lc(b) a - lc(a) x^k b`, and Mersenne folding modulo the first prime
-//!    `2^61 - 1`, which almost always decides); only when all fail
+//!    kept) is non-zero modulo `p`, hence non-zero, hence `gcd(q, q') = 1` over `Q`. Four primes
+//!    are tried ([`is_square_free_mod_p`], `O(n^2)` word operations: Euclid without inverses,
+//!    `a <- lc(b) a - lc(a) x^k b`): first the Mersenne prime `2^31 - 1` on 64-bit products,
+//!    which almost always decides, then `2^61 - 1` and two 62-bit primes; only when all fail
 //!    (a repeated root, or a resultant divisible by all three) is the exact square-free part
 //!    computed by the primitive remainder sequence ([`UPoly::square_free_part`]).
 //! 2. **Four unit problems.** The real line minus `{-1, 0, 1}` is covered by `(0, 1)`, `(1, inf)`,

@@ -14,18 +14,37 @@
 //!
 //! # Error analysis (`u = 2^-53`)
 //! * **Root node.** The Bernstein coefficients on `[0, 1]` are `b_i = c_(n-i) / C(n, i)`, `c`
-//!   the coefficients of `(1 + y)^n p(1 / (1 + y))` (module `descartes`), computed exactly (one
-//!   Taylor shift on [`Limbs`]) and divided in `f64`, without the big-integer multipliers of the
-//!   exact integer form: `c_k 2^-K` (`K` the largest bit length) from the top 64 bits of `|c_k|`
-//!   (truncation: relative error below `2^-63`), rounded to `f64` (relative `u`), times exact
-//!   powers of two (exact unless subnormal: absolute `2^-1074`); `C(n, i)` by the recurrence
-//!   `C(n, i+1) = C(n, i) (n - i) / (i + 1)` in `f64` (`2i` roundings: relative `2.01 n u` for
-//!   `n <= 1000`, and no overflow: `C(1000, 500) < 2^996`); the division one more rounding.
-//!   So each value has a relative error below `rho = (3n + 8) u` and an absolute one below
-//!   `2^-1073`. All are then multiplied by the power of two `2^t` (exact, `t >= 0`) that brings
-//!   the largest into `[1/2, 1)`, and with `M` the largest computed value (`|true| <= (1 + 2
-//!   rho) M`), `E_0 = rho (1 + 2 rho) M + 2^(t - 1072)`. The end signs are the exact signs of
-//!   `c_n` and `c_0`.
+//!   the coefficients of `(1 + y)^n p(1 / (1 + y))` (module `descartes`): the reversal of `p`
+//!   shifted by 1. Everything is computed in `f64`, with no big-integer arithmetic: the inputs
+//!   `x_m = p_(n-m) 2^-k` (`k` the largest bit length) from the top 64 bits of each coefficient
+//!   (truncation: relative error below `2^-63`) rounded to `f64` (relative `u`; absolute
+//!   `2^-1074` when subnormal); the Taylor shift `x(y + 1)` by the triangle of `n(n+1)/2`
+//!   additions, where a term of `x_m` passes through at most `m + 1 <= n + 1` roundings on its
+//!   way to `c_k`, so `|c^_k - c_k| <= (gamma_(n+1) + 2u) T_k` with `T` the same shift of the
+//!   `|x_m|` (computed alongside; its computed value is below the true one by a factor at least
+//!   `(1 - u)^(n+1)`), plus `2^(n+1) 2^-1074 <= 2^-73` from subnormal inputs (additions are
+//!   exact in the subnormal range, and nothing overflows: `T_k < (n + 1) 2^n`); `C(n, i)` by
+//!   the recurrence `C(n, i+1) = C(n, i) (n - i) / (i + 1)` in `f64` (`2i` roundings: relative
+//!   `2.01 n u` for `n <= 1000`, and no overflow: `C(1000, 500) < 2^996`); the division one more
+//!   rounding. With `|c_k| <= T_k` that is an error below `(3n + 4) u T_(n-i) / C(n, i)` (to
+//!   first order; the second-order terms are below `2^-30` of it for `n <= 1000`) plus
+//!   `2^-72`, so `E_0 = ((3n + 8) u max_i T_(n-i) / C(n, i) + 2^-71)` (evaluated in `f64` and
+//!   multiplied by `(1 + 2^-40)^2`, which covers its own roundings) bounds every error. All
+//!   values and `E_0` are then multiplied by the power of two `2^t` that brings the largest
+//!   into `[1/2, 1)` (`t` may be negative: the shifted values reach `(n + 1) 2^n`; a value or
+//!   `E_0` made subnormal by it is rounded by at most `2^-1075`, and `2^-1073` is added to
+//!   `E_0`). The end signs are exact: those of `p(0) = p_0` and of
+//!   `p(1)`, the sum of the coefficients. Against the exact shift on limbs this is
+//!   `n(n+1)/2` additions of (value, bound) pairs in a loop without a dependency chain instead
+//!   of `n(n+1)/2` carry chains over the coefficients' limbs and the conversions. Where the shift cancels (the values far below
+//!   `T`, as for Wilkinson's product: `E_0 > 2^-38 M`, which would exhaust the precision a few
+//!   splits down) the root node is made from the exact
+//!   shift on [`Limbs`] instead: each `c_k 2^-K` (`K` the largest bit length) from the top 64
+//!   bits of `|c_k|` (truncation: relative error below `2^-63`), rounded to `f64` (`u`), divided
+//!   by the `f64` binomials, so each value has a relative error below `rho = (3n + 8) u` and an
+//!   absolute one below `2^-1073`; scaled by `2^t` (`t >= 0`) into `[1/2, 1)`, with `M` the
+//!   largest value, `E_0 = rho (1 + 2 rho) M + 2^(t - 1072)`; its end signs are those of `c_n`
+//!   and `c_0`, and the exact shift is kept for the exact coefficients of re-anchored nodes.
 //! * **Re-anchored node.** Exact integer coefficients `B_i` (times a positive constant) are
 //!   converted to `B_i 2^-k`, `k` the largest bit length, as the `c_k` above: relative error
 //!   below `u + 2^-63`, absolute `2^-1074`, so with `M >= 1/2 - 2^-53` the largest computed
@@ -161,16 +180,18 @@ fn subdivide(p: &[BigInt], pairs: bool, max_depth: u64) -> (Vec<UnitRoot>, Filte
     // Room for the blocks of a path of depth 7 (grown on demand below).
     let mut blocks: Vec<f64> = Vec::with_capacity(w * 8);
     let (root, _) = root_f64_coefficients(p, &binoms, &mut blocks);
-    // The root's signs are exact (those of the shifted coefficients): no variation, no root;
-    // one, with non-zero ends, one root.
-    if root.v == 0 {
-        return (run.out, run.stats);
+    // From the exact shift, the root's signs are exact: no variation, no root; one, with
+    // non-zero ends, one root. Otherwise the root node's decisions are the loop's.
+    if let Some(v) = root.v {
+        if v == 0 {
+            return (run.out, run.stats);
+        }
+        if v == 1 && root.lo != Sign::Zero && root.hi != Sign::Zero {
+            run.out.push(leaf_root(&BigInt::zero(), 0, blocks, &binoms));
+            return (run.out, run.stats);
+        }
     }
-    if root.v == 1 && root.lo != Sign::Zero && root.hi != Sign::Zero {
-        run.out.push(leaf_root(&BigInt::zero(), 0, blocks, &binoms));
-        return (run.out, run.stats);
-    }
-    run.shifted = Some(root.shifted);
+    run.shifted = root.shifted;
     // The parent's coefficients and a second row for de Casteljau's triangle.
     let mut work = vec![0.0f64; 2 * w];
     let mut stack = vec![Node {
@@ -287,7 +308,7 @@ struct Run<'a> {
     /// The exact integer Bernstein coefficients of the nodes `(j, c)` computed so far (both
     /// halves of every exact split), so that no exact split is done twice.
     exact_nodes: HashMap<(u64, BigInt), Limbs>,
-    /// The root's Taylor-shifted reversal, from which its exact coefficients are made.
+    /// The root's exact Taylor-shifted reversal when the root node was made from it.
     shifted: Option<Limbs>,
     /// `p` on limbs, for the exact signs at split points.
     p_limbs: Option<Limbs>,
@@ -325,7 +346,7 @@ impl Run<'_> {
             .entry((start, c >> (j - start)))
             .or_insert_with(|| match shifted {
                 Some(s) => bernstein_from_shifted(s),
-                None => Limbs::from_bigints(&to_bernstein_integer(p)),
+                None => bernstein_from_shifted(&exact_shifted_reversal(p)),
             })
             .clone();
         for d in start + 1..=j {
@@ -371,22 +392,149 @@ struct Root {
     /// The exact signs of `p(0)` and `p(1)`.
     lo: Sign,
     hi: Sign,
-    /// The exact number of sign variations of the coefficients.
-    v: usize,
-    /// The Taylor-shifted reversal (exact), for the exact coefficients when needed.
-    shifted: Limbs,
+    /// The exact Taylor-shifted reversal when the values were made from it.
+    shifted: Option<Limbs>,
+    /// Then also the exact number of sign variations of the coefficients.
+    v: Option<usize>,
 }
 
-/// Pushes the root node's coefficients onto `blocks`: `g_i ~ 2^scale c_(n-i) / C(n, i)`, `c`
-/// the exact coefficients of `(1 + y)^n p(1 / (1 + y))` (module documentation of `descartes`,
-/// one Taylor shift on limbs) and the binomials in `f64`, with no big-integer multiplier (the
-/// exact integer form is computed only when a node needs its exact coefficients); also `scale`.
-fn root_f64_coefficients(p: &[BigInt], binoms: &[f64], blocks: &mut Vec<f64>) -> (Root, i64) {
+/// The coefficients of `(1 + y)^n p(1 / (1 + y))` (the reversal of `p` shifted by 1), exactly
+/// on [`Limbs`], for the root's exact Bernstein coefficients.
+fn exact_shifted_reversal(p: &[BigInt]) -> Limbs {
     let n = p.len() - 1;
-    let start = blocks.len();
     let rev: Vec<BigInt> = p.iter().rev().cloned().collect();
     let mut shifted = Limbs::from_bigints_with_room(&rev, n + 1);
     shifted.taylor_shift_1();
+    shifted
+}
+
+/// The sign, the 64 leading bits `t` and their position `s` of an integer: `|x| = t 2^s + r`,
+/// `0 <= r < 2^s`, `t >= 2^63` when `s > 0` (the form of [`Limbs::leading_bits`]).
+fn big_leading_bits(x: &BigInt) -> (bool, u64, u64) {
+    let bits = x.bits();
+    let mut limbs = x.magnitude().iter_u64_digits().rev();
+    let hi = limbs.next().unwrap_or(0);
+    if bits <= 64 {
+        return (x.is_negative(), hi, 0);
+    }
+    let lo = limbs.next().unwrap_or(0);
+    let lz = hi.leading_zeros();
+    let top = if lz == 0 {
+        hi
+    } else {
+        (hi << lz) | (lo >> (64 - lz))
+    };
+    (x.is_negative(), top, bits - 64)
+}
+
+/// The root node from the `f64` shift is kept when `E_0 <= M * ROOT_ACCEPT` (`2^-38`; the
+/// exact shift's bound is about `2^-45` to `2^-47` at degrees 20 to 100): a larger bound would
+/// send its nodes to exact re-anchoring after a few splits.
+const ROOT_ACCEPT: f64 = 1.0 / (1u64 << 38) as f64;
+
+/// `2^-71`: the absolute error of the root node's values from underflow (module
+/// documentation, "Root node").
+const ROOT_ABSOLUTE: f64 = 1.0 / (1u128 << 71) as f64;
+
+/// Pushes the root node's coefficients onto `blocks`: `g_i ~ 2^scale c_(n-i) / C(n, i)`, `c`
+/// the coefficients of `(1 + y)^n p(1 / (1 + y))` (module documentation of `descartes`) by a
+/// Taylor shift in `f64` alongside the same shift of the absolute values, which bounds its
+/// error, and the binomials in `f64`; no big-integer arithmetic beyond reading the leading
+/// bits of the coefficients and the exact sign of `p(1)`. Also `scale`.
+fn root_f64_coefficients(p: &[BigInt], binoms: &[f64], blocks: &mut Vec<f64>) -> (Root, i64) {
+    let n = p.len() - 1;
+    let start = blocks.len();
+    // x_m = p_(n-m) 2^-k, k the largest bit length.
+    let k = push_scaled(p.iter().rev().map(big_leading_bits).collect(), blocks);
+    // Each value beside its absolute value: one two-lane addition per step of the triangle.
+    let mut xt: Vec<[f64; 2]> = blocks[start..].iter().map(|&v| [v, v.abs()]).collect();
+    // The Taylor shift's triangle a_j <- a_j + a_(j+1) (pass i for j = n-1 down to i), run by
+    // anti-diagonals: step d updates j = n-1-d, ..., n-1, each from the values before the
+    // step (the ascending loop reads a_(j+1) before it is overwritten), a loop without a
+    // dependency chain. The same additions as pass by pass.
+    for d in 0..n {
+        let row = &mut xt[n - 1 - d..];
+        for j in 0..row.len() - 1 {
+            let next = row[j + 1];
+            row[j][0] += next[0];
+            row[j][1] += next[1];
+        }
+    }
+    // g_i = c_(n-i) / C(n, i), and the largest T_(n-i) / C(n, i).
+    let mut worst = 0.0f64;
+    for ((g, b), &[c, t]) in blocks[start..].iter_mut().zip(binoms).zip(xt.iter().rev()) {
+        *g = c / b;
+        worst = worst.max(t / b);
+    }
+    let lo = sign_of(&p[0]);
+    let hi = sign_of_sum(p);
+    let u = f64::EPSILON / 2.0;
+    let e = ((3 * n + 8) as f64 * u * worst + ROOT_ABSOLUTE) * SAFETY * SAFETY;
+    // Into [1/2, 1) by a power of two (the shifted values reach (n + 1) 2^n, so it may be
+    // below 1: then a value that becomes subnormal is rounded, by at most 2^-1075, and so may
+    // be `E` itself; the two `TINY` cover both). Nothing to scale when every value cancelled
+    // to zero (then `E > M / 256` and the node is re-anchored).
+    let m = max_abs(&blocks[start..]);
+    let t = if m >= f64::MIN_POSITIVE {
+        1022 - ((m.to_bits() >> 52) & 0x7ff) as i64
+    } else {
+        0
+    };
+    let f = pow2f(t);
+    for g in blocks[start..].iter_mut() {
+        *g *= f;
+    }
+    let e = e * f + 2.0 * TINY;
+    // `false` also for a NaN.
+    let accepted = e <= max_abs(&blocks[start..]) * ROOT_ACCEPT;
+    if !accepted {
+        // The shift cancelled (the values far below the shift of the absolute values): the
+        // exact shift now, rather than nodes re-anchored a few levels down.
+        blocks.truncate(start);
+        return root_from_exact_shift(p, binoms, blocks);
+    }
+    (
+        Root {
+            e,
+            lo,
+            hi,
+            shifted: None,
+            v: None,
+        },
+        t - k,
+    )
+}
+
+/// The sign of `p(1)`, the sum of the coefficients: in `i128` when every coefficient fits a
+/// word (at most `2^14` of them), else on big integers.
+fn sign_of_sum(p: &[BigInt]) -> Sign {
+    let words: Option<i128> = p
+        .iter()
+        .map(|c| c.to_i64().map(i128::from))
+        .sum::<Option<i128>>();
+    match words {
+        Some(s) => match s.cmp(&0) {
+            std::cmp::Ordering::Less => Sign::Negative,
+            std::cmp::Ordering::Equal => Sign::Zero,
+            std::cmp::Ordering::Greater => Sign::Positive,
+        },
+        None => {
+            let mut s = BigInt::zero();
+            for c in p {
+                s += c;
+            }
+            sign_of(&s)
+        }
+    }
+}
+
+/// The root node from the exact Taylor shift on [`Limbs`] (for a shift that cancels in `f64`):
+/// `g_i ~ 2^scale c_(n-i) / C(n, i)` from the leading bits of the exact `c` (relative error
+/// below `rho = (3n + 8) u` each, module documentation, "Root node"), and `scale`.
+fn root_from_exact_shift(p: &[BigInt], binoms: &[f64], blocks: &mut Vec<f64>) -> (Root, i64) {
+    let n = p.len() - 1;
+    let start = blocks.len();
+    let shifted = exact_shifted_reversal(p);
     let mut bits = Vec::with_capacity(n + 1);
     shifted.leading_bits(|neg, top, shift| bits.push((neg, top, shift)));
     let sign = |(neg, top, _): (bool, u64, u64)| match (top, neg) {
@@ -405,7 +553,6 @@ fn root_f64_coefficients(p: &[BigInt], binoms: &[f64], blocks: &mut Vec<f64>) ->
     }
     // Into [1/2, 1): the largest value is at least 2^-1 / C(n, i) > 2^-1002.
     let m = max_abs(&blocks[start..]);
-    assert!(m > 0.0, "a non-zero polynomial has a non-zero coefficient");
     assert!(
         m >= f64::MIN_POSITIVE,
         "the largest value is above 2^-1002 (degree at most 1000)"
@@ -424,8 +571,8 @@ fn root_f64_coefficients(p: &[BigInt], binoms: &[f64], blocks: &mut Vec<f64>) ->
             e,
             lo,
             hi,
-            v,
-            shifted,
+            shifted: Some(shifted),
+            v: Some(v),
         },
         t - k,
     )

@@ -760,7 +760,70 @@ fn gcd_degree_mod_p_matches_rational_gcd() {
                 "{a} and {b} modulo {p}"
             );
         }
+        // 2^31 - 1 on 64-bit products, against the same gcd and against the u128 kernel.
+        let (am, bm): (Vec<u64>, Vec<u64>) = (
+            ints(&a).iter().map(|c| big_mod(c, P31)).collect(),
+            ints(&b).iter().map(|c| big_mod(c, P31)).collect(),
+        );
+        assert_eq!(
+            gcd_degree_mod_p31(am.clone(), bm.clone()),
+            gcd_degree_mod_p(am, bm, P31),
+            "{a} and {b} modulo 2^31 - 1"
+        );
     }
+}
+
+/// The residues modulo `2^31 - 1` (limb folding, `fold31`) against num-bigint's remainder, on
+/// integers of up to five limbs of both signs, limbs at the extremes included.
+#[test]
+fn big_mod_p31_matches_bigint_remainder() {
+    let mut rng = Rng::new(31);
+    let p = BigInt::from(P31);
+    let specials = [
+        0u64,
+        1,
+        P31 - 1,
+        P31,
+        P31 + 1,
+        u64::MAX,
+        u64::MAX - 1,
+        1 << 63,
+    ];
+    for round in 0..400 {
+        let len = 1 + round % 5;
+        let limbs: Vec<u64> = (0..len)
+            .map(|i| {
+                if (round + i) % 3 == 0 {
+                    specials[(round + 7 * i) % specials.len()]
+                } else {
+                    rng.next_u64()
+                }
+            })
+            .collect();
+        let mut x = BigInt::from(crate::bigint::biguint_from_limbs(&limbs));
+        if round % 2 == 1 {
+            x = -x;
+        }
+        let expected = ((&x % &p) + &p) % &p;
+        assert_eq!(BigInt::from(big_mod(&x, P31)), expected, "{x}");
+    }
+    for x in [0u64, 1, P31 - 1, P31, (1 << 62) + 12345, (1 << 63) - 1] {
+        assert_eq!(fold31(x), x % P31, "{x}");
+    }
+}
+
+/// Square-free polynomials on which `2^31 - 1` fails (it divides the discriminant, or the
+/// leading coefficient) are still proved by the other primes; non-square-free ones never are.
+#[test]
+fn modular_square_free_test_past_p31() {
+    let p = P31 as i64;
+    // x (x - p): the two roots meet modulo p.
+    assert!(is_square_free_mod_p(&bigs(&[0, -p, 1])));
+    // p x^2 - 1: the leading coefficient vanishes modulo p.
+    assert!(is_square_free_mod_p(&bigs(&[-1, 0, p])));
+    // (x - 1)^2 (x - p): repeated over Z.
+    assert!(!is_square_free_mod_p(&bigs(&[-p, 1 + 2 * p, -2 - p, 1])));
+    assert_eq!(square_free_integer(&bigs(&[0, -p, 1])), bigs(&[0, -p, 1]));
 }
 
 /// The refinement's window signs (truncated limb scheme, exact limb fallback) against Sturm on
