@@ -161,17 +161,17 @@ pub fn verify_with(prefix: Option<&str>, quiet: bool) -> Result<Vec<Checked>, Er
         .map(|c| {
             steps.start(c.id);
             let start = Instant::now();
-            let outcome = (c.check)();
+            let decided = c.decide();
             steps.done();
             Checked {
                 id: c.id.to_string(),
                 source: c.id.split('.').next().unwrap_or(c.id).to_string(),
                 statement: c.statement.to_string(),
                 expected: c.expected,
-                outcome,
+                outcome: decided.outcome,
                 seconds: start.elapsed().as_secs_f64(),
-                problem: None,
-                bad_input: false,
+                problem: decided.problem,
+                bad_input: decided.bad_input,
             }
         })
         .collect())

@@ -1,14 +1,16 @@
 //! Helpers shared by the claim modules: printed formulas (kept as text, as printed) turned into
 //! polynomials, and identities decided by the identity engine of `exactcheck-exact`
-//! (`prove::decide_identity`, phrased by `prove::phrase` in the catalogue's voice).
+//! (`prove::decide_identity`), worded by the formatter `prove` and claims files use
+//! ([`crate::phrase`]), each residual named by its label.
 
 use super::{Equation, Erratum, Outcome, Verdict};
+use crate::phrase::Phrasing;
 use exactcheck_core::{Hom4, Ring};
 use exactcheck_exact::expr::{parse_expr, parse_poly, Coefficient, Expr};
 use exactcheck_exact::poly::{CoeffExpr, Poly, Var, Vars};
 use exactcheck_exact::prove::{
-    decide_identity, factored, Domain, EngineError, IdentitySpec, IdentityVerdict, Part, Phrasing,
-    PointField, Statement, Voice,
+    decide_identity, factored, Domain, EngineError, IdentitySpec, IdentityVerdict, Part,
+    PointField, Statement,
 };
 use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::Rational;
@@ -117,15 +119,8 @@ where
         )
     };
     let phrasing = Phrasing {
-        voice: Voice::Catalogue,
-        vars: &sym.vars,
-        relations: Vec::new(),
-        domains: Vec::new(),
-        labels: residuals.iter().map(|(w, _)| w.to_string()).collect(),
-        corrected: Vec::new(),
-        nonzero_texts: Vec::new(),
-        domain_texts: Vec::new(),
-        suffix: String::new(),
+        residuals: residuals.iter().map(|(w, _)| w.to_string()).collect(),
+        ..Phrasing::new(&sym.vars)
     };
     let report = match decide_identity(&spec) {
         Ok(r) => r,
@@ -137,7 +132,7 @@ where
             return undecided(format!("{}: {}", residuals[k].0, phrasing.error(&e)));
         }
     };
-    let evidence = phrasing.evidence(&report);
+    let evidence = phrasing.evidence(&spec, &report);
     match &report.verdict {
         IdentityVerdict::Proved { .. } => Outcome {
             verdict: Verdict::Proved,

@@ -32,7 +32,7 @@ macro_rules! claim {
             id: $id,
             statement: $statement,
             expected: Verdict::$expected,
-            check: $check,
+            check: $crate::claims::Check::Computed($check),
         }
     };
 }
@@ -41,6 +41,7 @@ pub mod chiang;
 pub mod chiang_conic;
 pub mod chiang_line;
 pub mod chiang_ph;
+pub mod embedded;
 pub mod engine;
 pub mod juttler;
 pub mod latex;
@@ -198,6 +199,14 @@ impl Erratum {
     }
 }
 
+/// How a claim of the catalogue is decided.
+pub enum Check {
+    /// By the unit's Rust code (an independent derivation, root isolation, seeded instances).
+    Computed(fn() -> Result<Outcome, String>),
+    /// By the claims-file engine: the claim `id` of the unit's embedded claims file.
+    Printed(&'static embedded::Embedded, &'static str),
+}
+
 /// A claim of the catalogue.
 pub struct Claim {
     /// The stable identifier of the claim list.
@@ -207,7 +216,52 @@ pub struct Claim {
     /// The verdict the catalogue expects (what `verify` compares against).
     pub expected: Verdict,
     /// The computation that decides the claim.
-    pub check: fn() -> Result<Outcome, String>,
+    pub check: Check,
+}
+
+/// A claim decided: the outcome (or why there is none), why it is not as expected whatever its
+/// verdict (a corrected form not proved equal to its `rhs`), and whether the error is bad input
+/// of an embedded claims file.
+pub struct Decided {
+    /// The outcome, or the error.
+    pub outcome: Result<Outcome, String>,
+    /// See [`Checked::problem`].
+    pub problem: Option<String>,
+    /// See [`Checked::bad_input`].
+    pub bad_input: bool,
+}
+
+impl Claim {
+    /// Decides the claim.
+    pub fn decide(&self) -> Decided {
+        match &self.check {
+            Check::Computed(f) => Decided {
+                outcome: f(),
+                problem: None,
+                bad_input: false,
+            },
+            Check::Printed(file, id) => match file.decide(id) {
+                Ok((o, problem)) => Decided {
+                    outcome: Ok(o),
+                    problem,
+                    bad_input: false,
+                },
+                Err((m, bad_input)) => Decided {
+                    outcome: Err(m),
+                    problem: None,
+                    bad_input,
+                },
+            },
+        }
+    }
+
+    /// The outcome of [`Claim::decide`].
+    ///
+    /// # Errors
+    /// Why the claim could not be decided.
+    pub fn run(&self) -> Result<Outcome, String> {
+        self.decide().outcome
+    }
 }
 
 /// A checked claim (of the built-in catalogue or of a claims file).

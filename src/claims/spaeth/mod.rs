@@ -7,13 +7,22 @@
 //! with an exact counter-example (rational angles), and a corrected text — itself proved equal to
 //! the derivation — is reported.
 //!
-//! Rust, not an embedded claims file: each printed formula is compared with the derivation of
-//! `exactcheck_core::cylinder_sphere` (the claims format compares two formulas of its own file),
-//! (9) and (10) also with the core's `A(t)`, `B(t)`, and the evidence names every residual. The
-//! same claims written as a claims file are `examples/spaeth.toml` (decided by the file engine, in
-//! its wording); a test checks that both give the same verdicts.
+//! `spaeth.eq11` (the roots (11) of the quadratic (8)) states printed formulas alone and is
+//! decided by the claims-file engine from the embedded `claims.toml` ([`CLAIMS`]). The others
+//! stay Rust, because the claims format cannot say what they check:
+//! * `eq5`, `eq7`, `eq8`, `eq9`, `eq10` — each printed formula against the derivation of
+//!   `exactcheck_core::cylinder_sphere` ((9) and (10) also against the core's `A(t)`, `B(t)`),
+//!   inside the geometric domains, with the corrected text proved equal to the derivation;
+//! * `sampling` — the f64 sampling rule run on a configuration found by isolating the real
+//!   roots of the discriminant ([`examples`]);
+//! * `example1` to `example3` — the worked examples solved by the core with the roots isolated
+//!   exactly and compared with the printed numbers and figures.
+//!
+//! The same claims written as a claims file are `examples/spaeth.toml` (decided by the file
+//! engine, comparing formulas of its own); a test checks that both give the same verdicts.
 
-use super::engine::{prove_all, prove_all_in, Symbols};
+use super::embedded::Embedded;
+use super::engine::{prove_all_in, Symbols};
 use super::{Claim, Equation, Outcome, Verdict};
 use exactcheck_core::cylinder_sphere::{Angle, CylinderSphere};
 use exactcheck_core::{Ring, Vec3};
@@ -22,6 +31,10 @@ use exactcheck_exact::prove::Domain;
 use exactcheck_exact::Rational;
 
 type P = Poly<Rational>;
+
+/// The claims of the paper that state its printed formulas alone.
+pub static CLAIMS: Embedded =
+    Embedded::new("src/claims/spaeth/claims.toml", include_str!("claims.toml"));
 
 const VARS: [&str; 15] = [
     "a", "b", "r", "d", "e", "f", "R", "u", "ct", "st", "cb", "sb", "cg", "sg", "D",
@@ -68,7 +81,7 @@ pub fn claims() -> Vec<Claim> {
         claim!("spaeth.eq8", Proved, "(8) F(u,t) = u^2 + 2 A(t) u + B(t): F is a monic quadratic in u", eq8),
         claim!("spaeth.eq9", Fails, "(9) A(t) = sin b [cos b (a + r cos t) - d] + sin g cos b [cos g (b + r sin t) - sin g sin b (a + r cos t) - e] + cos g cos b [sin g (b + r sin t) + cos g sin b (a + r cos t) + f]", eq9),
         claim!("spaeth.eq10", Fails, "(10) B(t) = [cos b (a + r cos t) - d]^2 + [cos g (b + r sin t) - sin g sin b (a + r cos t) - e]^2 + [sin g (b + r sin t) + cos g sin b (a + r cos t) + f]^2", eq10),
-        claim!("spaeth.eq11", Proved, "(11) the roots of (8) are u_1,2(t) = -A(t) +- sqrt(A(t)^2 - B(t))", eq11),
+        CLAIMS.claim("spaeth.eq11"),
     ]
 }
 
@@ -412,34 +425,6 @@ fn eq10() -> Result<Outcome, String> {
         (&[("B", EQ10)], &[("B", EQ10_CORRECTED)]),
         &[&printed, &f0],
     )
-}
-
-fn eq11() -> Result<Outcome, String> {
-    // A, B, D atomic: u = -A + s D with D^2 = A^2 - B solves u^2 + 2 A u + B = 0 for s = +-1,
-    // and the two roots have sum -2A and product B (Vieta), so they are all the roots.
-    let mut sym = Symbols::new(&["A", "B", "D"]);
-    let (a, b, d) = (
-        sym.vars.poly::<Rational>("A"),
-        sym.vars.poly::<Rational>("B"),
-        sym.vars.poly::<Rational>("D"),
-    );
-    let relation = d.square() - a.square() + &b;
-    let two = P::from_i64(2);
-    let root = |sign: i64| d.scale_i64(sign) - &a;
-    let (u1, u2) = (root(1), root(-1));
-    let f = |u: &P| u.square() + two.clone() * &a * u + &b;
-    let residuals = vec![
-        ("F(-A + sqrt(A^2 - B))", f(&u1)),
-        ("F(-A - sqrt(A^2 - B))", f(&u2)),
-        ("u1 + u2 + 2A", u1.clone() + &u2 + two.clone() * &a),
-        ("u1 u2 - B", u1 * &u2 - &b),
-    ];
-    Ok(prove_all(
-        &sym,
-        &residuals,
-        &[relation],
-        "symbolic expansion modulo D^2 = A^2 - B",
-    ))
 }
 
 mod examples;
