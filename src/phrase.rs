@@ -1,5 +1,5 @@
-//! The one formatter of identity verdicts: `prove`, claims files (`identity` claims) and the
-//! built-in catalogue decide identities by the identity engine
+//! Verdicts ([`Verdict`]) and the one formatter of identity verdicts: `prove`, claims files
+//! (`identity` claims) and the built-in catalogue decide identities by the identity engine
 //! ([`exactcheck_exact::prove::decide_identity`]) and word its [`IdentityReport`] here — the
 //! verdict, the method, the evidence line, the erratum's correction line, the error messages
 //! and `prove --json`'s object — so that one identity reads the same from each of them.
@@ -23,8 +23,6 @@ pub mod random;
 
 pub use random::{phrase_random, RandomOptions, RandomPhrased};
 
-use crate::claims::Verdict;
-use crate::prove_cmd::constants::{named_point, shown_value};
 use exactcheck_exact::expr::describe_point;
 use exactcheck_exact::expr::library::Shape;
 use exactcheck_exact::poly::{Poly, Var, Vars};
@@ -34,7 +32,7 @@ use exactcheck_exact::prove::{
     IdentityVerdict, PointField, RadicalPoint, Statement, UsedHypothesis,
 };
 use serde_json::{json, Value};
-use std::fmt::Display;
+use std::fmt::{self, Display};
 
 /// The longest value or polynomial an evidence line prints in full.
 pub const SHOWN_CHARS: usize = 2_000;
@@ -54,6 +52,31 @@ pub fn abbreviate(text: String) -> String {
         &text[..cut],
         text.len()
     )
+}
+
+/// The verdict on a claim.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Verdict {
+    /// True for all inputs: the residual expanded to zero.
+    Proved,
+    /// True on every exact instance and random evaluation tried (error bound stated).
+    Holds,
+    /// False: an exact counter-example was found.
+    Fails,
+    /// Not decided: the computation found neither a proof nor a counter-example (the evidence
+    /// says what was tried). Never an expected verdict of the catalogue.
+    Undecided,
+}
+
+impl fmt::Display for Verdict {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Verdict::Proved => "proved",
+            Verdict::Holds => "holds",
+            Verdict::Fails => "fails",
+            Verdict::Undecided => "undecided",
+        })
+    }
 }
 
 const CLEARED: &str = " with the denominators cleared";
@@ -415,7 +438,7 @@ impl<'a> Phrasing<'a> {
                         if r.cleared[k] {
                             format!("{place}{at_rel}{s} = {value}; {s}{CLEARED} reduces{modulo} to {nf}, not zero{where_nonzero}")
                         } else if !sides {
-                            format!("{place}{at_rel}{s} = {value}; {s} reduces{modulo} to {nf}")
+                            format!("{place}{at_rel}{s} = {value}; it reduces{modulo} to {nf}")
                         } else if at.is_empty() {
                             // No variable: the identity is between constants, and their
                             // difference is the counter-example.
@@ -615,59 +638,71 @@ impl<'a> Phrasing<'a> {
                 .collect::<Vec<_>>()
                 .into();
         }
-        match (&self.constant_point, self.constants, &r.verdict) {
-            (
-                Some(p),
-                Some(k),
-                IdentityVerdict::Undecided {
-                    normal_form,
-                    coordinate,
-                    ..
-                },
-            ) => {
-                if shape != Shape::Scalar {
-                    obj["failing_component"] = json!(shape.component(*coordinate));
-                }
-                obj["point"] = named_point(p, vars)
-                    .into_iter()
-                    .map(|(n, q)| (n, json!(q)))
-                    .collect::<serde_json::Map<_, _>>()
-                    .into();
-                obj["value"] = json!(shown_value(k, p, vars));
-                obj["normal_form"] = json!(normal_form.display(vars).to_string());
+        if let (
+            Some(p),
+            Some(k),
+            IdentityVerdict::Undecided {
+                normal_form,
+                coordinate,
+                ..
+            },
+        ) = (&self.constant_point, self.constants, &r.verdict)
+        {
+            if shape != Shape::Scalar {
+                obj["failing_component"] = json!(shape.component(*coordinate));
             }
-            (
-                _,
-                _,
-                IdentityVerdict::Fails {
-                    coordinate,
-                    point,
-                    value,
-                    normal_form,
-                },
-            ) => {
-                obj["point"] = point
-                    .iter()
-                    .filter(|(v, _)| Some(*v) != self.pi)
-                    .map(|(v, q)| (self.name(*v).to_string(), json!(q.to_string())))
-                    .collect::<serde_json::Map<_, _>>()
-                    .into();
-                if shape != Shape::Scalar {
-                    obj["failing_component"] = json!(shape.component(*coordinate));
-                }
-                obj["value"] = match self.value_in_pi(spec, *coordinate, point) {
-                    Some(v) => json!(v),
-                    None => json!(value.to_string()),
-                };
-                obj["normal_form"] = json!(normal_form.display(vars).to_string());
-            }
-            _ => {}
+            obj["point"] = named_point(p, vars)
+                .into_iter()
+                .map(|(n, q)| (n, json!(q)))
+                .collect::<serde_json::Map<_, _>>()
+                .into();
+            obj["value"] = json!(shown_value(k, p, vars));
+            obj["normal_form"] = json!(normal_form.display(vars).to_string());
         }
         if let Some(k) = self.constants {
             obj["constants"] = json!(k.description());
         }
+        if let IdentityVerdict::Fails {
+            coordinate,
+            point,
+            value,
+            normal_form,
+        } = &r.verdict
+        {
+            obj["point"] = point
+                .iter()
+                .filter(|(v, _)| Some(*v) != self.pi)
+                .map(|(v, q)| (self.name(*v).to_string(), json!(q.to_string())))
+                .collect::<serde_json::Map<_, _>>()
+                .into();
+            if shape != Shape::Scalar {
+                obj["failing_component"] = json!(shape.component(*coordinate));
+            }
+            obj["value"] = match self.value_in_pi(spec, *coordinate, point) {
+                Some(v) => json!(v),
+                None => json!(value.to_string()),
+            };
+            obj["normal_form"] = json!(normal_form.display(vars).to_string());
+        }
         obj
     }
+}
+
+/// The exact value of `LHS - RHS` at a counter-example, a `Root(...)` written in a variable of
+/// none of the statement's names (`x` when it has none but `c`).
+pub fn shown_value(k: &AlgebraicConstants, p: &ConstantPoint, vars: &Vars) -> String {
+    let names: Vec<&String> = vars.names().iter().filter(|n| **n != k.name).collect();
+    p.value
+        .display_in(&exactcheck_exact::algebraic::root_variable(&names))
+}
+
+/// The point of a counter-example by name (`c` is the constant, not a coordinate).
+pub fn named_point(point: &ConstantPoint, vars: &Vars) -> Vec<(String, String)> {
+    point
+        .values
+        .iter()
+        .map(|(v, q)| (vars.name(*v).unwrap_or("?").to_string(), q.to_string()))
+        .collect()
 }
 
 /// The residual at a counter-example with every variable but pi fixed: a polynomial in pi, not
@@ -720,7 +755,7 @@ mod tests {
         q.residuals = vec!["the residual".into()];
         assert_eq!(
             q.evidence(&named, &rn),
-            "at a = 0, b = 1 the residual = 1; the residual reduces to b^3"
+            "at a = 0, b = 1 the residual = 1; it reduces to b^3"
         );
         let json = p.json(&s, &r, Shape::Scalar);
         assert_eq!(json["verdict"], "fails");

@@ -4,7 +4,7 @@
 //! component's, else the first undecided one's, else the component with the weakest bound (a
 //! false identity has a false component, which passes with at most its own bound).
 
-use crate::claims::Verdict;
+use super::Verdict;
 use exactcheck_exact::prove::{RandomDecision, RandomReport, Seed, HOLDS_THRESHOLD_LOG2};
 
 /// How a front end names its options in the advice of an evidence line.

@@ -295,7 +295,7 @@ fn identity<C: PointField + Display>(
             let mut counter_example = Vec::new();
             let mut residual_at = difference(&lhs[*coordinate], &rhs[*coordinate]);
             let mut plain = true;
-            for (name, q) in prove_constants::named_point(p, &spec.vars) {
+            for (name, q) in crate::phrase::named_point(p, &spec.vars) {
                 let value = value_expr(&q)?;
                 if name.contains('(') {
                     plain = false;

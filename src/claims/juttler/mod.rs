@@ -10,7 +10,7 @@
 //! properties are proved by expanding residuals over polynomial rings.
 //!
 //! Three claims state printed formulas alone and are decided by the claims-file engine from
-//! the embedded `claims.toml` ([`CLAIMS`]): `juttler.satz5` (the line (12) and the focal lines
+//! the embedded `claims.toml` (`Claim::printed`): `juttler.satz5` (the line (12) and the focal lines
 //! (13) meet at lambda = 1, mu = +-i), `juttler.focal_absolute` ((13) on (14)) and
 //! `juttler.satz11` (the line (18) meets the real focal lines). The others stay Rust, because
 //! the claims format cannot say what they check:
@@ -28,7 +28,6 @@
 //!   instances, and the degree count;
 //! * `satz7` — Miquel's configuration on seeded random patches.
 
-use super::embedded::Embedded;
 use super::engine::{prove_all, Rng, Symbols};
 use super::{Claim, Outcome, Verdict};
 use geometry::{circle_preimage, line_image, line_preimage, plane_lines, satz7};
@@ -48,12 +47,6 @@ use exactcheck_exact::Rational;
 use interpolation::{interpolation, interpolation_degree};
 
 type P = Poly<Rational>;
-
-/// The claims of the paper that state its printed formulas alone.
-pub static CLAIMS: Embedded = Embedded::new(
-    "src/claims/juttler/claims.toml",
-    include_str!("claims.toml"),
-);
 
 /// (7) as printed.
 const LEBESGUE_PRINTED: [&str; 4] = [
@@ -85,8 +78,8 @@ pub fn claims() -> Vec<Claim> {
         claim!("juttler.sigma_inverse", Proved, "sigma^-1(k) = (k0 - k3, k1, k2, 0) inverts sigma (projectively)", sigma_inverse_claim),
         claim!("juttler.satz3", Proved, "Satz 3: delta = sigma o theta with theta (11) = (p0^2+p3^2, p0p1 - p2p3, p0p2 + p1p3, 0)", satz3),
         claim!("juttler.lemma4", Proved, "Lemma 4: the theta-preimage of p = (p0,p1,p2,0) is the line lambda (p0,p1,p2,0) + mu (0,p2,-p1,p0) (12)", lemma4),
-        CLAIMS.claim("juttler.satz5"),
-        CLAIMS.claim("juttler.focal_absolute"),
+        Claim::printed("juttler.satz5"),
+        Claim::printed("juttler.focal_absolute"),
         claim!("juttler.circle_preimage", Proved, "the preimage of a circle of P under theta (so the delta-preimage of a circle of K not through z) is a hyperboloid of one sheet", circle_preimage),
         claim!("juttler.line_preimage", Proved, "the preimage of a line of P under theta (so the delta-preimage of a circle of K through z) is a hyperbolic paraboloid", line_preimage),
         claim!("juttler.line_image", Proved, "the theta-image of a non-projecting line is a circle or a line of P; its delta-image is a circle on K", line_image),
@@ -97,7 +90,7 @@ pub fn claims() -> Vec<Claim> {
         claim!("juttler.interpolation", Holds, "interpolation on K by rational curves reduces to a homogeneous linear system (and works)", interpolation),
         claim!("juttler.interpolation_degree", Fails, "the interpolating curves on K need fewer degrees than with plain stereographic projection", interpolation_degree),
         claim!("juttler.satz7", Holds, "Satz 7 (Dietz): if a biquadratic Bezier patch y(u,v) lies on K, with boundary circles y(0,v), y(u,0), y(1,v), y(u,1) meeting at the corners p_i and second points q_i, then p1, q2, p3, q4 lie on a circle (and q1, p2, q3, p4) — Miquel's theorem", satz7),
-        CLAIMS.claim("juttler.satz11"),
+        Claim::printed("juttler.satz11"),
     ]
 }
 

@@ -7,12 +7,14 @@
 //! with an exact counter-example (rational angles), and a corrected text — itself proved equal to
 //! the derivation — is reported.
 //!
-//! `spaeth.eq11` (the roots (11) of the quadratic (8)) states printed formulas alone and is
-//! decided by the claims-file engine from the embedded `claims.toml` ([`CLAIMS`]). The others
+//! `spaeth.eq7` ((5) substituted into (6) is (7)), `spaeth.eq8` ((7) is monic quadratic in `u`)
+//! and `spaeth.eq11` (the roots (11) of the quadratic (8)) state printed formulas alone and are
+//! decided by the claims-file engine from the embedded `claims.toml` (`Claim::printed`). The others
 //! stay Rust, because the claims format cannot say what they check:
-//! * `eq5`, `eq7`, `eq8`, `eq9`, `eq10` — each printed formula against the derivation of
-//!   `exactcheck_core::cylinder_sphere` ((9) and (10) also against the core's `A(t)`, `B(t)`),
-//!   inside the geometric domains, with the corrected text proved equal to the derivation;
+//! * `eq5`, `eq9`, `eq10` — each printed formula against the derivation of
+//!   `exactcheck_core::cylinder_sphere` (the product of the rotation matrices of (4); (9) and
+//!   (10) also against the core's `A(t)`, `B(t)`), inside the geometric domains, with the
+//!   corrected text proved equal to the derivation and named in the erratum;
 //! * `sampling` — the f64 sampling rule run on a configuration found by isolating the real
 //!   roots of the discriminant ([`examples`]);
 //! * `example1` to `example3` — the worked examples solved by the core with the roots isolated
@@ -21,7 +23,6 @@
 //! The same claims written as a claims file are `examples/spaeth.toml` (decided by the file
 //! engine, comparing formulas of its own); a test checks that both give the same verdicts.
 
-use super::embedded::Embedded;
 use super::engine::{prove_all_in, Symbols};
 use super::{Claim, Equation, Outcome, Verdict};
 use exactcheck_core::cylinder_sphere::{Angle, CylinderSphere};
@@ -31,10 +32,6 @@ use exactcheck_exact::prove::Domain;
 use exactcheck_exact::Rational;
 
 type P = Poly<Rational>;
-
-/// The claims of the paper that state its printed formulas alone.
-pub static CLAIMS: Embedded =
-    Embedded::new("src/claims/spaeth/claims.toml", include_str!("claims.toml"));
 
 const VARS: [&str; 15] = [
     "a", "b", "r", "d", "e", "f", "R", "u", "ct", "st", "cb", "sb", "cg", "sg", "D",
@@ -77,11 +74,11 @@ pub const NOTATION: [(&str, &str); 6] = [
 pub fn claims() -> Vec<Claim> {
     vec![
         claim!("spaeth.eq5", Fails, "(4) (x,y,z) = Ry(beta) Rx(gamma) (a + r cos t, b + r sin t, u), multiplied out, is (5): x = cos b (a + r cos t) + u sin b, y = cos g (b + r sin t) + sin g (-sin b (a + r cos t) + u cos b), z = -sin g (b + r sin t) + cos g (-sin b (a + r cos t) + u cos b)", eq5),
-        claim!("spaeth.eq7", Proved, "(5) substituted into (6) is (7): F(t,u) = [cos b (a + r cos t) + u sin b - d]^2 + [cos g (b + r sin t) + sin g (-sin b (a + r cos t) + u cos b) - e]^2 + [-sin g (b + r sin t) + cos g (-sin b (a + r cos t) + u cos b) - f]^2 - R^2", eq7),
-        claim!("spaeth.eq8", Proved, "(8) F(u,t) = u^2 + 2 A(t) u + B(t): F is a monic quadratic in u", eq8),
+        Claim::printed("spaeth.eq7"),
+        Claim::printed("spaeth.eq8"),
         claim!("spaeth.eq9", Fails, "(9) A(t) = sin b [cos b (a + r cos t) - d] + sin g cos b [cos g (b + r sin t) - sin g sin b (a + r cos t) - e] + cos g cos b [sin g (b + r sin t) + cos g sin b (a + r cos t) + f]", eq9),
         claim!("spaeth.eq10", Fails, "(10) B(t) = [cos b (a + r cos t) - d]^2 + [cos g (b + r sin t) - sin g sin b (a + r cos t) - e]^2 + [sin g (b + r sin t) + cos g sin b (a + r cos t) + f]^2", eq10),
-        CLAIMS.claim("spaeth.eq11"),
+        Claim::printed("spaeth.eq11"),
     ]
 }
 
@@ -337,35 +334,6 @@ fn eq5() -> Result<Outcome, String> {
         }
     }
     Ok(out)
-}
-
-fn eq7() -> Result<Outcome, String> {
-    let mut s = setup()?;
-    let printed_f = s.sym.parse(EQ7)?;
-    let x: Vec<P> = EQ5
-        .iter()
-        .map(|t| s.sym.parse(t))
-        .collect::<Result<_, _>>()?;
-    let x = Vec3::new(x[0].clone(), x[1].clone(), x[2].clone());
-    let substituted = (&x - &s.cs.center).norm_squared() - s.cs.radius.square();
-    let residual = printed_f.clone() - &substituted;
-    run(
-        &s,
-        &[("(7) as printed - |(5) - (d,e,f)|^2 + R^2".into(), residual)],
-        &[&printed_f, &substituted],
-    )
-}
-
-fn eq8() -> Result<Outcome, String> {
-    let mut s = setup()?;
-    let f = s.sym.parse(EQ7)?;
-    let (f2, _, _) = coefficients_in_u(&mut s, &f)?;
-    let residual = f2.clone() - P::one();
-    run(
-        &s,
-        &[("coefficient of u^2 in (7), minus 1".into(), residual)],
-        &[&f2],
-    )
 }
 
 fn eq9() -> Result<Outcome, String> {

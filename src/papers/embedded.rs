@@ -2,15 +2,17 @@
 //! identity of printed formulas, a printed value against its exact value, a worked example's
 //! printed numbers) in the claims-file format, compiled into the binary (`include_str!`) and
 //! decided by the claims-file engine ([`crate::claimfile`]) as `verify FILE` decides them. The
-//! unit's list of claims ([`crate::papers::Paper::claims`]) takes each by its id
-//! ([`Embedded::claim`]), in the order of the papers' claim list, next to the claims its Rust
-//! code computes.
+//! unit's list of claims names each by its id (`Check::Printed`), in the order of the papers'
+//! claim list, next to the claims its Rust code computes; the registry ([`super::Paper`]) gives
+//! them their statement and expected verdict from the file and decides them here. It lives with
+//! the registry, above both the claims and the claims-file engine, which never refer to each
+//! other.
 //!
 //! The file is parsed once per process, on first use; a file that does not parse or lacks an
 //! id makes the claims that need it errors naming the file (a test parses every unit's file).
 
-use super::{Check, Claim, Verdict};
 use crate::claimfile::{self, ClaimsFile, FileClaim, Run};
+use crate::claims::Verdict;
 use std::sync::OnceLock;
 
 /// A claims file compiled into the binary.
@@ -53,18 +55,12 @@ impl Embedded {
             .ok_or_else(|| format!("{}: no claim {id:?}", self.path))
     }
 
-    /// The catalogue's claim `id` of this file: its statement and expected verdict as the file
-    /// gives them, decided by the claims-file engine.
-    pub fn claim(&'static self, id: &'static str) -> Claim {
-        let (statement, expected) = match self.find(id) {
+    /// The statement and the expected verdict of the claim `id` as the file gives them (empty
+    /// and `proved` when the file lacks it: deciding it then says so).
+    pub fn statement_and_expected(&'static self, id: &str) -> (&'static str, Verdict) {
+        match self.find(id) {
             Ok(c) => (c.statement.as_str(), c.expected_before()),
             Err(_) => ("", Verdict::Proved),
-        };
-        Claim {
-            id,
-            statement,
-            expected,
-            check: Check::Printed(self, id),
         }
     }
 
