@@ -592,7 +592,7 @@ pub(crate) fn prove_over<C: PointField + Display>(
         Verdict::Fails | Verdict::Undecided => ExitCode::from(1),
     };
     if args.json {
-        crate::output::println(&phrasing.json(&spec, &report, sides.shape))?;
+        crate::output::println(phrasing.json(&spec, &report, sides.shape))?;
     } else {
         crate::output::println(format_args!(
             "{}: {}",
