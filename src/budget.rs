@@ -1,5 +1,5 @@
 //! The command's budget in memory and time: the backstops behind the named size limits of
-//! [`exactcheck_core::limits`].
+//! [`crate::limits`].
 //!
 //! The size limits stop a computation *before* it grows (a constant of too many bits, too many
 //! terms, too deep a nesting) with an error naming the limit. What they cannot foresee is
@@ -379,7 +379,9 @@ pub fn worker_threads(env: Option<&str>) -> Result<usize, crate::Error> {
     let Some(n) = asked else {
         return Ok(std::thread::available_parallelism().map_or(1, std::num::NonZeroUsize::get));
     };
-    limits::THREADS.check(n).map_err(crate::Error::Limit)?;
+    crate::limits::THREADS
+        .check(n)
+        .map_err(crate::Error::Limit)?;
     Ok(usize::try_from(n).unwrap_or(usize::MAX))
 }
 

@@ -327,7 +327,7 @@ fn option_takes_value(args: &[OsString], opt: &str) -> bool {
 /// The command's error; [`crate::Error::Output`] when standard output fails.
 pub fn run(cli: Cli) -> Result<ExitCode, crate::Error> {
     for arg in &cli.limits {
-        exactcheck_core::limits::set_from_str(arg).map_err(crate::Error::Usage)?;
+        crate::limits::set_from_str(arg).map_err(crate::Error::Usage)?;
     }
     let Some(stack) = stack_for_depth()? else {
         // The default depth: the main thread's stack and rayon's defaults are enough, so the
@@ -442,7 +442,7 @@ fn run_command(cli: Cli, stack: Option<usize>) -> Result<ExitCode, crate::Error>
 
 /// `exactcheck limits`: every limit, its value in force, its default and what it bounds.
 fn print_limits(json: bool) -> Result<ExitCode, crate::Error> {
-    let all = exactcheck_core::limits::all();
+    let all = crate::limits::all();
     if json {
         let list: Vec<serde_json::Value> = all
             .iter()

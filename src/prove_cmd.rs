@@ -13,8 +13,8 @@
 //! `bezier`, `subs`, ...) resolved to a scalar, expanded, and `LHS - RHS` is reduced
 //! modulo the relations (unit circles `c^2 + s^2 = 1` in closed form, others by a Gröbner
 //! basis) by the identity engine `exactcheck_exact::prove::decide_identity`, and the verdict is
-//! phrased by `prove::phrase` in the `prove` voice. With a division by a non-constant anywhere,
-//! the sides are rational functions (`Expr::to_ratfun`): the identity is decided with the
+//! worded by the formatter claims files and the catalogue use too ([`crate::phrase`]). With a
+//! division by a non-constant anywhere, the sides are rational functions (`Expr::to_ratfun`): the identity is decided with the
 //! denominators cleared, and the divisors met are reported as side conditions. `pi`, `e` and `i`
 //! are refused as variables. A `--where` with `<`, `<=`, `>` or `>=` is a domain (`r > 0`,
 //! `0 <= t <= 1`, constant bounds only): counter-examples are searched inside the domains. A
@@ -34,19 +34,19 @@
 pub(crate) mod constants;
 mod random;
 
+use crate::claims::Verdict;
+use crate::phrase::Phrasing;
 use crate::Error;
 use clap::Args;
 use exactcheck_core::Ring;
 use exactcheck_exact::expr::library::{self, Shape};
 use exactcheck_exact::expr::{
-    angles, describe_point, first_reserved, has_trig, ratfun_sides, Coefficient, Expr, ExprError,
-    PI,
+    angles, first_reserved, has_trig, ratfun_sides, Coefficient, Expr, ExprError, PI,
 };
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
-    decide_identity, factored, real_zero_free, square_roots, AlgebraicConstants, CoordinateOutcome,
-    EngineError, FractionIdentity, IdentityReport, IdentitySpec, IdentityVerdict, Part, Phrasing,
-    PointField, RadicalPoint, SquareRoot, Statement, VarDomain, Voice,
+    decide_identity, square_roots, AlgebraicConstants, VarDomain, EngineError, FractionIdentity,
+    IdentityReport, IdentitySpec, IdentityVerdict, Part, PointField, SquareRoot, Statement,
 };
 use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::{Algebraic, Radical, Rational};
@@ -255,15 +255,6 @@ pub(crate) struct Sides<'a> {
 }
 
 impl Sides<'_> {
-    /// `in component 2 (y): ` for component `k` of a vector or matrix identity, empty for a
-    /// scalar one.
-    fn prefix(&self, k: usize) -> String {
-        match self.shape {
-            Shape::Scalar => String::new(),
-            s => format!("in {}: ", s.component(k)),
-        }
-    }
-
     /// The names of the components (empty for a scalar identity), for [`Phrasing::labels`].
     fn labels(&self) -> Vec<String> {
         match self.shape {
@@ -513,7 +504,6 @@ pub(crate) fn prove_over<C: PointField + Display>(
         pi,
         pi_in_relations,
         mixed,
-        user_relations,
     } = add_angles(&vars, &mut rels);
     // The minimal polynomial of the constants' primitive element (after the angles, so that it
     // does not count as a relation of the user's).
@@ -546,51 +536,22 @@ pub(crate) fn prove_over<C: PointField + Display>(
     }
     doms.extend(roots.iter().map(|r| (r.var, SquareRoot::<C>::domain())));
     doms.extend(constant_domain);
-    // Where the square roots are defined.
-    let suffix = if roots.is_empty() {
-        String::new()
-    } else {
-        let c: Vec<String> = roots
-            .iter()
-            .filter(|r| !r.defined_everywhere())
-            .map(SquareRoot::condition)
-            .collect();
-        if c.is_empty() {
-            " (the square roots are defined everywhere)".to_string()
-        } else {
-            format!(" (the square roots are defined where {})", c.join(", "))
-        }
-    };
-    let suffix = match constants {
-        Some(k) => format!("{suffix} ({})", k.description()),
-        None => suffix,
-    };
-    let root_names: Vec<(String, String)> = roots
-        .iter()
-        .map(|r| {
-            let name = vars.name(r.var).unwrap_or("?").to_string();
-            (name, r.condition())
-        })
-        .collect();
     let spec = IdentitySpec {
         relations: rels,
         domains: doms,
         hypotheses,
         ..IdentitySpec::new(vars, coordinates)
     };
-    let phrasing = Phrasing {
-        voice: Voice::Prove,
-        vars: &spec.vars,
+    let mut phrasing = Phrasing {
         relations: args
             .relations
             .iter()
             .filter(|t| !t.contains(['<', '>', '!']))
             .cloned()
-            .chain(circle_texts)
             .collect(),
+        circles: circle_texts,
         domains: domains.iter().map(|(_, _, t)| t.clone()).collect(),
         labels: sides.labels(),
-        corrected: Vec::new(),
         nonzero_texts,
         domain_texts: domains
             .iter()
@@ -602,7 +563,16 @@ pub(crate) fn prove_over<C: PointField + Display>(
                 )
             }))
             .collect(),
-        suffix,
+        roots: roots
+            .iter()
+            .map(|r| {
+                let name = spec.vars.name(r.var).unwrap_or("?").to_string();
+                (name, r.condition(), r.defined_everywhere())
+            })
+            .collect(),
+        pi,
+        constants,
+        ..Phrasing::new(&spec.vars)
     };
     let report = decide_identity(&spec).map_err(|e| {
         let part = match &e {
@@ -615,245 +585,22 @@ pub(crate) fn prove_over<C: PointField + Display>(
     let mut report = report;
     sound_counter_example(&mut report, pi_in_relations, &mixed);
     // With algebraic constants, a non-zero reduction gets its counter-example at c = theta.
-    let constant_point = constants
+    phrasing.constant_point = constants
         .and_then(|k| crate::prove_cmd::constants::settle(k, &spec, &mut report, pi, &mixed));
-    let (verdict, code) = match &report.verdict {
-        _ if constant_point.is_some() => ("fails", ExitCode::from(1)),
-        IdentityVerdict::Proved { .. } => ("proved", ExitCode::SUCCESS),
-        IdentityVerdict::Fails { .. } => ("fails", ExitCode::from(1)),
-        IdentityVerdict::Undecided { .. } => ("undecided", ExitCode::from(1)),
-    };
-    // The counter-example's values by name, pi left out (it is the constant), each angle's
-    // cosine and sine written as one angle.
-    let shown_point = |point: &RadicalPoint| -> Vec<String> {
-        let named: Vec<(String, String)> = point
-            .iter()
-            .filter(|(v, _)| Some(*v) != pi)
-            .map(|(v, q)| (spec.vars.name(*v).unwrap_or("?").to_string(), q.to_string()))
-            .collect();
-        describe_point(&named)
-    };
-    let rels_hold = if user_relations == 0 {
-        ""
-    } else {
-        " (where the relations hold)"
-    };
-    let cleared = if report.cleared_any() {
-        " with the denominators cleared"
-    } else {
-        ""
-    };
-    let modulo = phrasing.modulo();
-    // `LHS - RHS` of the failing component (cleared of denominators where the engine clears
-    // them), for the value of a counter-example as a polynomial in pi.
-    let residual_for_pi = match (&report.verdict, pi) {
-        (IdentityVerdict::Fails { coordinate, .. }, Some(_)) => {
-            match &spec.coordinates[*coordinate] {
-                Statement::Sides(l, r) if l.is_polynomial() && r.is_polynomial() => {
-                    Some(l.numerator().clone() - r.numerator())
-                }
-                Statement::Sides(l, r) => FractionIdentity::new(l, r).ok().map(|f| f.residual),
-                Statement::Residual(p) => Some(p.clone()),
-            }
-        }
-        _ => None,
-    };
-    let evidence = match (&report.verdict, pi, &residual_for_pi) {
-        (
-            IdentityVerdict::Undecided {
-                normal_form,
-                coordinate,
-                ..
-            },
-            _,
-            _,
-        ) if constant_point.is_some() => {
-            let p = constant_point.as_ref().expect("matched");
-            let at = describe_point(&constants::named_point(p, &spec.vars));
-            let nf = factored(normal_form, &spec.vars);
-            let at = if at.is_empty() {
-                String::new()
-            } else {
-                format!("at {}{rels_hold} ", at.join(", "))
-            };
-            let value = crate::prove_cmd::constants::shown_value(
-                constants.expect("a constant point has its constants"),
-                p,
-                &spec.vars,
-            );
-            format!(
-                "{}{at}LHS - RHS = {value}; LHS - RHS{cleared} reduces{modulo} to {nf}, not zero{}",
-                sides.prefix(*coordinate),
-                phrasing.suffix
-            )
-        }
-        (
-            IdentityVerdict::Fails {
-                coordinate,
-                normal_form,
-                point,
-                ..
-            },
-            Some(p),
-            Some(res),
-        ) => {
-            let at = shown_point(point);
-            let in_pi = in_pi::<C>(res, point, p).display(&spec.vars).to_string();
-            let nf = factored(normal_form, &spec.vars);
-            format!(
-                "{}{}LHS - RHS{cleared} = {in_pi}, a non-zero polynomial in pi, and pi is transcendental, so it is not zero; LHS - RHS{cleared} reduces{modulo} to {nf}",
-                sides.prefix(*coordinate),
-                if at.is_empty() { String::new() } else { format!("at {}{rels_hold} ", at.join(", ")) },
-            )
-        }
-        (
-            IdentityVerdict::Fails {
-                coordinate,
-                normal_form,
-                point,
-                value,
-            },
-            _,
-            _,
-        ) if !angle_list.is_empty() => {
-            let at = shown_point(point).join(", ");
-            let nf = factored(normal_form, &spec.vars);
-            let prefix = sides.prefix(*coordinate);
-            if report.cleared_any() {
-                format!("{prefix}at {at}{rels_hold} LHS - RHS = {value}; LHS - RHS{cleared} reduces{modulo} to {nf}, not zero")
-            } else {
-                format!("{prefix}at {at}{rels_hold} LHS - RHS = {value}; LHS - RHS reduces{modulo} to {nf}, so LHS = RHS + ({nf})")
-            }
-        }
-        _ => phrasing.evidence(&report),
+    let code = match phrasing.verdict(&report) {
+        Verdict::Proved | Verdict::Holds => ExitCode::SUCCESS,
+        Verdict::Fails | Verdict::Undecided => ExitCode::from(1),
     };
     if args.json {
-        let vars = &spec.vars;
-        let mut obj = json!({
-            "verdict": verdict,
-            "method": format!("{}{}", phrasing.method::<C>(), if pi.is_some() { " (pi an indeterminate: it is transcendental)" } else { "" }),
-            "evidence": evidence,
-            "residual_terms": report.residual_terms.iter().sum::<usize>(),
-        });
-        if sides.shape != Shape::Scalar {
-            obj["shape"] = json!(sides.shape.to_string());
-            obj["components"] = report
-                .outcomes
-                .iter()
-                .enumerate()
-                .map(|(k, o)| {
-                    json!({
-                        "component": sides.shape.component(k),
-                        "verdict": match o {
-                            CoordinateOutcome::Proved => "proved",
-                            CoordinateOutcome::Fails => "fails",
-                            CoordinateOutcome::Undecided => "undecided",
-                        },
-                        "residual_terms": report.residual_terms[k],
-                    })
-                })
-                .collect::<Vec<_>>()
-                .into();
-        }
-        if let IdentityVerdict::Proved { used, .. } = &report.verdict {
-            if !used.is_empty() {
-                obj["hypotheses_used"] = json!(used
-                    .iter()
-                    .map(|u| phrasing.used_text(u))
-                    .collect::<Vec<_>>());
-            }
-        }
-        if !root_names.is_empty() {
-            obj["square_roots"] = root_names
-                .iter()
-                .map(|(n, c)| json!({"root": n, "defined_where": c}))
-                .collect::<Vec<_>>()
-                .into();
-        }
-        if report.cleared_any() {
-            obj["conditions"] = report
-                .conditions
-                .iter()
-                .map(|p| json!({"nonzero": p.display(vars).to_string(), "real_zero_free": real_zero_free(p) == Some(true)}))
-                .collect::<Vec<_>>()
-                .into();
-        }
-        if let (
-            Some(p),
-            IdentityVerdict::Undecided {
-                normal_form,
-                coordinate,
-                ..
-            },
-        ) = (&constant_point, &report.verdict)
-        {
-            if sides.shape != Shape::Scalar {
-                obj["failing_component"] = json!(sides.shape.component(*coordinate));
-            }
-            obj["point"] = constants::named_point(p, vars)
-                .into_iter()
-                .map(|(n, q)| (n, json!(q)))
-                .collect::<serde_json::Map<_, _>>()
-                .into();
-            obj["value"] = json!(crate::prove_cmd::constants::shown_value(
-                constants.expect("a constant point has its constants"),
-                p,
-                vars
-            ));
-            obj["normal_form"] = json!(normal_form.display(vars).to_string());
-        }
-        if let Some(k) = constants {
-            obj["constants"] = json!(k.description());
-        }
-        if let IdentityVerdict::Fails {
-            point,
-            value,
-            normal_form,
-            ..
-        } = &report.verdict
-        {
-            obj["point"] = point
-                .iter()
-                .filter(|(v, _)| Some(*v) != pi)
-                .map(|(v, q)| {
-                    (
-                        vars.name(*v)
-                            .expect("the engine reports only variables of the table")
-                            .to_string(),
-                        json!(q.to_string()),
-                    )
-                })
-                .collect::<serde_json::Map<_, _>>()
-                .into();
-            if let IdentityVerdict::Fails { coordinate, .. } = &report.verdict {
-                if sides.shape != Shape::Scalar {
-                    obj["failing_component"] = json!(sides.shape.component(*coordinate));
-                }
-            }
-            obj["value"] = match (pi, &residual_for_pi) {
-                (Some(p), Some(res)) => json!(in_pi::<C>(res, point, p).display(vars).to_string()),
-                _ => json!(value.to_string()),
-            };
-            obj["normal_form"] = json!(normal_form.display(vars).to_string());
-        }
-        crate::output::println(&obj)?;
+        crate::output::println(phrasing.json(&spec, &report, sides.shape))?;
     } else {
-        crate::output::println(format_args!("{verdict}: {evidence}"))?;
+        crate::output::println(format_args!(
+            "{}: {}",
+            phrasing.verdict(&report),
+            phrasing.evidence(&spec, &report)
+        ))?;
     }
     Ok(code)
-}
-
-/// The residual at a counter-example with every variable but pi fixed: a polynomial in pi, not
-/// zero (it is not zero at the value the search gave pi), so not zero at pi, which is
-/// transcendental over the algebraic numbers of the point.
-pub fn in_pi<C: PointField>(residual: &Poly<C>, point: &RadicalPoint, pi: Var) -> Poly<C::Value> {
-    let mut q = residual.map_coeffs(C::lift);
-    for (v, x) in point {
-        if *v != pi {
-            q = q.substitute(*v, &Poly::constant(C::lift_radical(x)));
-        }
-    }
-    q
 }
 
 /// A failure whose point is not a real counter-example becomes undecided: when a relation
@@ -902,8 +649,6 @@ pub struct Angles {
     pub pi_in_relations: bool,
     /// The angles that are also used as numbers.
     pub mixed: Vec<String>,
-    /// The relations before the circles were appended.
-    pub user_relations: usize,
 }
 
 /// Appends the unit circle `cos(x)^2 + sin(x)^2 = 1` of every angle `x` to `relations` and
@@ -938,6 +683,5 @@ pub fn add_angles<C: PointField>(
         pi,
         pi_in_relations,
         mixed,
-        user_relations,
     }
 }

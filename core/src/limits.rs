@@ -1,5 +1,7 @@
-//! Resource limits: the one registry of every bound exactcheck puts on what an input may make it
-//! do (sizes, depths, degrees, counts, steps, memory).
+//! Resource limits: every bound the library crates (core, exact, float) put on what an input may
+//! make them do (sizes, depths, degrees, counts, steps, memory), and the declarative form
+//! ([`declare_limits!`]) in which the command-line tool declares its own (input size, samples,
+//! points, threads, ...) and joins them with these into the one registry the user sees.
 //!
 //! Exact arithmetic on user-supplied formulas has no natural ceiling: a short input can ask for a
 //! number of a billion digits, a field of 2^25 dimensions or a Groebner basis that never ends. So
@@ -26,7 +28,8 @@ pub struct Limit {
 }
 
 impl Limit {
-    const fn new(
+    /// A limit (used by [`declare_limits!`]).
+    pub const fn new(
         name: &'static str,
         what: &'static str,
         unit: &'static str,
@@ -152,20 +155,26 @@ impl fmt::Display for LimitError {
 
 impl std::error::Error for LimitError {}
 
-macro_rules! limits {
-    ($($(#[$doc:meta])* $id:ident = ($name:literal, $what:literal, $unit:literal, $default:expr);)*) => {
-        $($(#[$doc])* pub static $id: Limit = Limit::new($name, $what, $unit, $default);)*
-        /// Every limit, in the order of the table in docs/limits.md.
-        pub fn all() -> &'static [&'static Limit] {
-            static ALL: &[&Limit] = &[$(&$id),*];
+/// Declares limits as statics and a function listing them in order:
+/// `declare_limits! { /// doc of the list
+/// fn all; /// doc
+/// NAME = ("cli-name", "what", "unit", default); ... }`.
+#[macro_export]
+macro_rules! declare_limits {
+    ($(#[$listdoc:meta])* fn $all:ident; $($(#[$doc:meta])* $id:ident = ($name:literal, $what:literal, $unit:literal, $default:expr);)*) => {
+        $($(#[$doc])* pub static $id: $crate::limits::Limit = $crate::limits::Limit::new($name, $what, $unit, $default);)*
+        $(#[$listdoc])*
+        pub fn $all() -> &'static [&'static $crate::limits::Limit] {
+            static ALL: &[&$crate::limits::Limit] = &[$(&$id),*];
             ALL
         }
     };
 }
 
-limits! {
-    /// Size of an input file or of standard input, in bytes.
-    FILE_SIZE = ("file-size", "input size", "bytes", 8 << 20);
+declare_limits! {
+    /// Every limit the library crates enforce, in the order of the table in docs/limits.md (the
+    /// command-line tool's registry adds its own between them).
+    fn all;
     /// Nesting depth of an expression (parentheses, signs, powers, calls) and of a JSON or TOML
     /// document (arrays and objects).
     DEPTH = ("depth", "nesting depth", "levels", 256);
@@ -221,49 +230,31 @@ limits! {
     GROEBNER_BITS = ("groebner-bits", "size of a Groebner basis coefficient", "bits", 10_000);
     /// Bisection or refinement steps spent on one real root.
     BISECTION = ("bisection", "refinement steps for one root", "", 100_000);
-    /// Bits of precision asked of an isolated root (`precision` = 2^-bits).
-    PRECISION_BITS = ("precision-bits", "precision asked", "bits", 1_024);
-    /// Samples of one `solve` answer or one built-in regression run.
-    SAMPLES = ("samples", "number of samples", "", 100_000);
-    /// Points of one `sphere_interpolation` problem (an exact linear system of about 2N x 2N
-    /// with growing rationals: about N^4 work).
-    POINTS = ("points", "number of interpolation points", "", 30);
     /// Degree of one Bernstein polynomial or Bezier curve of a claims file (`bernstein(i, n, t)`:
     /// `n`; `bezier(t, p0, ..., pn)`: `n`, one less than the points): its expansion grows about
     /// as the cube of the degree.
     BERNSTEIN_DEGREE = ("bernstein-degree", "degree of a Bernstein polynomial or Bezier curve", "", 1_000);
-    /// Work of one exact `ruled_line` problem: its degree `m + n` times the dimension `2^k` of
-    /// the square-root field of its numbers (`k` independent square roots). The exact
-    /// subdivision's cost grows about as the sixth power of the degree and several-fold per
-    /// square root.
-    RULED_WORK = ("ruled-work", "degree times field dimension of a ruled_line problem", "", 32);
-    /// Size in bits of the Bernstein coefficients `u` and `v` of one exact `ph_offset` problem,
-    /// all together: every exact polynomial of the answer is built from their products.
-    PH_BITS = ("ph-bits", "size of the coefficients of a ph_offset problem", "bits", 2_048);
     /// Heap memory of the whole process, in MB (enforced by the command-line tool's allocator).
     MEMORY = ("memory", "memory in use", "MB", 1_536);
-    /// Worker threads of the parallel pool (`RAYON_NUM_THREADS` asks for a number; each thread
-    /// reserves a stack).
-    THREADS = ("threads", "worker threads (RAYON_NUM_THREADS)", "", 1_024);
 }
 
-/// The limit called `name`.
-pub fn find(name: &str) -> Option<&'static Limit> {
-    all().iter().copied().find(|l| l.name == name)
+/// The limit called `name` in `registry` (a list such as [`all`]).
+pub fn find(registry: &[&'static Limit], name: &str) -> Option<&'static Limit> {
+    registry.iter().copied().find(|l| l.name == name)
 }
 
-/// Sets a limit from `NAME=VALUE` (the argument of `--limit`); the value is a non-negative
-/// integer, `_` allowed between digits.
+/// Sets a limit of `registry` from `NAME=VALUE` (the argument of `--limit`); the value is a
+/// non-negative integer, `_` allowed between digits.
 ///
 /// # Errors
 /// One line naming an unknown limit (with the known names) or a value that is not an integer.
-pub fn set_from_str(arg: &str) -> Result<&'static Limit, String> {
+pub fn set_from_str(registry: &[&'static Limit], arg: &str) -> Result<&'static Limit, String> {
     let (name, value) = arg
         .split_once('=')
         .ok_or_else(|| format!("--limit takes NAME=VALUE, not `{arg}`"))?;
     let name = name.trim();
-    let limit = find(name).ok_or_else(|| {
-        let names: Vec<&str> = all().iter().map(|l| l.name).collect();
+    let limit = find(registry, name).ok_or_else(|| {
+        let names: Vec<&str> = registry.iter().map(|l| l.name).collect();
         format!(
             "--limit: no limit named `{name}` (limits: {})",
             names.join(", ")
@@ -284,10 +275,10 @@ mod tests {
     #[test]
     fn names_are_unique_and_found() {
         for l in all() {
-            assert!(std::ptr::eq(find(l.name()).unwrap(), *l));
+            assert!(std::ptr::eq(find(all(), l.name()).unwrap(), *l));
             assert_eq!(all().iter().filter(|m| m.name() == l.name()).count(), 1);
         }
-        assert!(find("nonsense").is_none());
+        assert!(find(all(), "nonsense").is_none());
     }
 
     #[test]
@@ -308,14 +299,16 @@ mod tests {
 
     #[test]
     fn set_from_str_rejects_unknown_names_and_bad_values() {
-        assert!(set_from_str("depth").unwrap_err().contains("NAME=VALUE"));
-        assert!(set_from_str("nope=3")
+        assert!(set_from_str(all(), "depth")
+            .unwrap_err()
+            .contains("NAME=VALUE"));
+        assert!(set_from_str(all(), "nope=3")
             .unwrap_err()
             .contains("no limit named `nope`"));
-        assert!(set_from_str("depth=-1")
+        assert!(set_from_str(all(), "depth=-1")
             .unwrap_err()
             .contains("not a non-negative integer"));
-        assert!(set_from_str("depth=1x")
+        assert!(set_from_str(all(), "depth=1x")
             .unwrap_err()
             .contains("not a non-negative integer"));
     }

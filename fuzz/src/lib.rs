@@ -13,7 +13,7 @@ pub const MAX_INPUT: usize = 8192;
 
 /// Sets the lowered limits (idempotent; called at the start of every run of a target).
 pub fn small_limits() {
-    limits::FILE_SIZE.set(MAX_INPUT as u64);
+    exactcheck::limits::FILE_SIZE.set(MAX_INPUT as u64);
     limits::DEPTH.set(64);
     limits::DIGITS.set(500);
     limits::EXPONENT.set(200);
@@ -25,8 +25,8 @@ pub fn small_limits() {
     limits::GROEBNER_STEPS.set(200);
     limits::GROEBNER_BASIS.set(50);
     limits::BISECTION.set(2_000);
-    limits::PRECISION_BITS.set(2_000);
-    limits::SAMPLES.set(50);
+    exactcheck::limits::PRECISION_BITS.set(2_000);
+    exactcheck::limits::SAMPLES.set(50);
 }
 
 /// Runs `f` with every lowered limit raised fourfold (depth by 4 levels per level plus 8): for

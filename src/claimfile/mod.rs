@@ -146,7 +146,35 @@ pub struct FileClaim {
     check: Result<Check, String>,
 }
 
+/// The result of deciding one claim: the outcome and why the claim's corrected form is not
+/// proved equal to its `rhs` (if so), or the error's one-line message and whether it is the
+/// claim's bad input (not a failure of the check itself).
+pub type Run = Result<(Outcome, Option<String>), (String, bool)>;
+
 impl FileClaim {
+    /// Decides the claim of the file `path` (named in the messages of bad input).
+    pub fn decide(&self, path: &str) -> Run {
+        match &self.check {
+            Err(m) => Err((m.clone(), true)),
+            Ok(check) => kinds::run(check, &self.notation).map_err(|f| match f {
+                Fault::Internal(m) => (m, false),
+                Fault::Input(key, m) => {
+                    let line = self.key_lines.get(key).copied().unwrap_or(self.line);
+                    (
+                        format!("{path}:{line}: claim {:?}: key {key}: {m}", self.id),
+                        true,
+                    )
+                }
+            }),
+        }
+    }
+
+    /// The verdict the claim is expected to have before it is decided: `expect`, else the
+    /// kind's own (proved for `identity`, holds for the others).
+    pub fn expected_before(&self) -> Verdict {
+        self.expected(None)
+    }
+
     /// The verdict the claim is compared with: `expect`, else the verdict itself when it is
     /// proved or holds, else the kind's own (proved for `identity`, holds for the others).
     fn expected(&self, verdict: Option<Verdict>) -> Verdict {
@@ -397,28 +425,13 @@ pub fn check_with(
     // A claim that cannot be built or decided (a bad formula; inconsistent relations, an
     // instance off its relations, a problem the solver refuses) gets the verdict `error` with
     // its one-line message, and the others are decided.
-    // The error of a run: its message, and whether it is the claim's bad input (not a failure
-    // of the check itself).
-    type Run = Result<(Outcome, Option<String>), (String, bool)>;
     let runs: Vec<(Run, f64)> = chosen
         .par_iter()
         .with_max_len(1)
         .map(|c| {
             steps.start(&c.id);
             let start = Instant::now();
-            let run = match &c.check {
-                Err(m) => Err((m.clone(), true)),
-                Ok(check) => kinds::run(check, &c.notation).map_err(|f| match f {
-                    Fault::Internal(m) => (m, false),
-                    Fault::Input(key, m) => {
-                        let line = c.key_lines.get(key).copied().unwrap_or(c.line);
-                        (
-                            format!("{}:{line}: claim {:?}: key {key}: {m}", file.path, c.id),
-                            true,
-                        )
-                    }
-                }),
-            };
+            let run = c.decide(&file.path);
             steps.done();
             (run, start.elapsed().as_secs_f64())
         })

@@ -1,15 +1,17 @@
 //! Helpers shared by the claim modules: printed formulas (kept as text, as printed) turned into
 //! polynomials, and identities decided by the identity engine of `exactcheck-exact`
-//! (`prove::decide_identity`, phrased by `prove::phrase` in the catalogue's voice).
+//! (`prove::decide_identity`), worded by the formatter `prove` and claims files use
+//! ([`crate::phrase`]), each residual named by its label.
 
 use super::{Equation, Erratum, Outcome, Verdict};
+use crate::phrase::Phrasing;
 use exactcheck_core::{Hom4, Ring};
 use exactcheck_exact::expr::CoeffExpr;
 use exactcheck_exact::expr::{parse_expr, parse_poly, Coefficient, Expr};
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
-    decide_identity, factored, EngineError, IdentitySpec, IdentityVerdict, Part, Phrasing,
-    PointField, Statement, VarDomain, Voice,
+    decide_identity, factored, VarDomain, EngineError, IdentitySpec, IdentityVerdict, Part,
+    PointField, Statement,
 };
 use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::Rational;
@@ -118,15 +120,8 @@ where
         )
     };
     let phrasing = Phrasing {
-        voice: Voice::Catalogue,
-        vars: &sym.vars,
-        relations: Vec::new(),
-        domains: Vec::new(),
-        labels: residuals.iter().map(|(w, _)| w.to_string()).collect(),
-        corrected: Vec::new(),
-        nonzero_texts: Vec::new(),
-        domain_texts: Vec::new(),
-        suffix: String::new(),
+        residuals: residuals.iter().map(|(w, _)| w.to_string()).collect(),
+        ..Phrasing::new(&sym.vars)
     };
     let report = match decide_identity(&spec) {
         Ok(r) => r,
@@ -138,7 +133,7 @@ where
             return undecided(format!("{}: {}", residuals[k].0, phrasing.error(&e)));
         }
     };
-    let evidence = phrasing.evidence(&report);
+    let evidence = phrasing.evidence(&spec, &report);
     match &report.verdict {
         IdentityVerdict::Proved { .. } => Outcome {
             verdict: Verdict::Proved,

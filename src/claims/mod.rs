@@ -18,12 +18,15 @@
 //!   found): reported as such, never counted as expected.
 //!
 //! One directory per unit of the paper registry ([`crate::papers`], which also runs the
-//! catalogue: `papers::verify`): the claims of a paper, its printed data and fixtures. The claims stay Rust, not embedded claims files: each compares
-//! the printed text with an independent derivation of the workspace (`exactcheck_core::quadric`,
-//! `cylinder_sphere`, `ruled`, `conic`, `ph`), or decides on exact instances, seeded random
-//! configurations and root isolation, and names each residual in its evidence — none of which a
-//! claims file expresses (its `identity` kind compares two formulas of its own; see each unit's
-//! module documentation).
+//! catalogue: `papers::verify`): the claims of a paper, its printed data and fixtures. A claim
+//! that states the paper's printed formulas alone (an identity of printed formulas, a printed
+//! value against its exact value) is written in the unit's embedded claims file
+//! (`src/claims/<unit>/claims.toml`, held by the paper registry) and decided by the claims-file engine, as a
+//! user's own file is. The others are Rust, because the claims format cannot say what they
+//! check: they compare the printed text with an independent derivation of the workspace
+//! (`exactcheck_core::quadric`, `cylinder_sphere`, `ruled`, `conic`, `ph`), or decide on exact
+//! instances, seeded random configurations and root isolation, and name each residual in their
+//! evidence; each unit's module documentation says which claims are which and why.
 
 /// A catalogue entry: `claim!(id, ExpectedVerdict, "statement as printed", check_fn)`.
 macro_rules! claim {
@@ -32,7 +35,7 @@ macro_rules! claim {
             id: $id,
             statement: $statement,
             expected: Verdict::$expected,
-            check: $check,
+            check: $crate::claims::Check::Computed($check),
         }
     };
 }
@@ -50,32 +53,8 @@ pub mod spaeth;
 
 use exactcheck_exact::expr::{equation_to_latex, parse_expr, Expr, Notation};
 use serde_json::{json, Value};
-use std::fmt;
 
-/// The verdict on a claim.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Verdict {
-    /// True for all inputs: the residual expanded to zero.
-    Proved,
-    /// True on every exact instance and random evaluation tried (error bound stated).
-    Holds,
-    /// False: an exact counter-example was found.
-    Fails,
-    /// Not decided: the computation found neither a proof nor a counter-example (the evidence
-    /// says what was tried). Never an expected verdict of the catalogue.
-    Undecided,
-}
-
-impl fmt::Display for Verdict {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(match self {
-            Verdict::Proved => "proved",
-            Verdict::Holds => "holds",
-            Verdict::Fails => "fails",
-            Verdict::Undecided => "undecided",
-        })
-    }
-}
+pub use crate::phrase::Verdict;
 
 /// What a check found.
 #[derive(Clone, Debug, PartialEq)]
@@ -198,6 +177,16 @@ impl Erratum {
     }
 }
 
+/// How a claim of the catalogue is decided.
+pub enum Check {
+    /// By the unit's Rust code (an independent derivation, root isolation, seeded instances).
+    Computed(fn() -> Result<Outcome, String>),
+    /// By the claims-file engine: the claim of the same id in the unit's embedded claims file
+    /// (the paper registry, `crate::papers`, holds the file, gives the claim its statement and
+    /// expected verdict from it and decides it).
+    Printed,
+}
+
 /// A claim of the catalogue.
 pub struct Claim {
     /// The stable identifier of the claim list.
@@ -207,7 +196,47 @@ pub struct Claim {
     /// The verdict the catalogue expects (what `verify` compares against).
     pub expected: Verdict,
     /// The computation that decides the claim.
-    pub check: fn() -> Result<Outcome, String>,
+    pub check: Check,
+}
+
+/// A claim decided: the outcome (or why there is none), why it is not as expected whatever its
+/// verdict (a corrected form not proved equal to its `rhs`), and whether the error is bad input
+/// of an embedded claims file.
+pub struct Decided {
+    /// The outcome, or the error.
+    pub outcome: Result<Outcome, String>,
+    /// See [`Checked::problem`].
+    pub problem: Option<String>,
+    /// See [`Checked::bad_input`].
+    pub bad_input: bool,
+}
+
+impl Claim {
+    /// The claim `id` of the unit's embedded claims file (statement and expected verdict filled
+    /// in by the paper registry).
+    pub fn printed(id: &'static str) -> Claim {
+        Claim {
+            id,
+            statement: "",
+            expected: Verdict::Proved,
+            check: Check::Printed,
+        }
+    }
+
+    /// Decides a claim the unit's Rust code computes.
+    ///
+    /// # Errors
+    /// Why the claim could not be decided; for a claim of the embedded claims file, that the
+    /// paper registry decides it (`crate::papers::verify`).
+    pub fn run(&self) -> Result<Outcome, String> {
+        match &self.check {
+            Check::Computed(f) => f(),
+            Check::Printed => Err(format!(
+                "{} is a claim of its paper's embedded claims file, decided by the paper registry",
+                self.id
+            )),
+        }
+    }
 }
 
 /// A checked claim (of the built-in catalogue or of a claims file).

@@ -194,14 +194,6 @@ pub(crate) fn settle<C: PointField>(
     }
 }
 
-/// The exact value of `LHS - RHS` at a counter-example, a `Root(...)` written in a variable of
-/// none of the statement's names (`x` when it has none but `c`).
-pub(crate) fn shown_value(k: &AlgebraicConstants, p: &ConstantPoint, vars: &Vars) -> String {
-    let names: Vec<&String> = vars.names().iter().filter(|n| **n != k.name).collect();
-    p.value
-        .display_in(&exactcheck_exact::algebraic::root_variable(&names))
-}
-
 /// The polynomial over Q, for a coefficient field whose values here are rational (the constants'
 /// statements are over Q).
 fn rational<C: PointField>(p: &Poly<C>) -> Option<Poly<Rational>> {
@@ -265,13 +257,4 @@ pub fn search<C: PointField>(
         .collect::<Option<Vec<_>>>()
         .ok_or_else(unsupported)?;
     k.counter_example(c, &l, &r, &relations, &conditions, &spec.domains, excluded)
-}
-
-/// The point of a counter-example by name (`c` is the constant, not a coordinate).
-pub fn named_point(point: &ConstantPoint, vars: &Vars) -> Vec<(String, String)> {
-    point
-        .values
-        .iter()
-        .map(|(v, q)| (vars.name(*v).unwrap_or("?").to_string(), q.to_string()))
-        .collect()
 }

@@ -29,7 +29,7 @@ pub mod ruled;
 /// exactly, about 0.8 ms on one core for `cylinder_sphere`: the default of 100,000 is about a
 /// minute of work).
 pub fn max_samples() -> usize {
-    exactcheck_core::limits::SAMPLES.get_usize()
+    crate::limits::SAMPLES.get_usize()
 }
 
 /// The largest number of samples one run evaluates of a `--formula` or `--fpcore` sweep (a
@@ -385,7 +385,7 @@ pub fn run(args: &RegressArgs) -> Result<ExitCode, Error> {
     let text = !args.formula.is_empty() || args.fpcore.is_some();
     if !text && args.shard.is_none() && args.samples > max_samples() {
         return Err(Error::Limit(
-            exactcheck_core::limits::SAMPLES.exceeded(args.samples.to_string()),
+            crate::limits::SAMPLES.exceeded(args.samples.to_string()),
         ));
     }
     let per_run = if text {

@@ -235,7 +235,7 @@ fn configuration<N, T: OrderedField>(
         None => 12,
         Some(0) => return Err(Error::Input("samples must be at least 1".into())),
         Some(n) => {
-            exactcheck_core::limits::SAMPLES.check(n)?;
+            crate::limits::SAMPLES.check(n)?;
             usize::try_from(n).expect("within the samples limit, which fits memory")
         }
     };

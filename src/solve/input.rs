@@ -22,7 +22,7 @@ use serde_json::Value;
 /// larger than the `file-size` limit (read no further than the limit).
 pub fn read_problem(path: Option<&str>) -> Result<String, Error> {
     use std::io::Read;
-    let limit = &exactcheck_core::limits::FILE_SIZE;
+    let limit = &crate::limits::FILE_SIZE;
     let shown = path.unwrap_or("-");
     let io = |source| Error::Io {
         path: shown.into(),

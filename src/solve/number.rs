@@ -203,7 +203,7 @@ fn float_refused(literal: &str) -> String {
 /// # Errors
 /// [`Error::Limit`] of `precision-bits` when a finer precision is asked.
 pub(crate) fn check_precision<T: OrderedField>(w: &T) -> Result<(), crate::Error> {
-    let limit = &exactcheck_core::limits::PRECISION_BITS;
+    let limit = &crate::limits::PRECISION_BITS;
     let bits = limit.get();
     let cap = u32::try_from(bits).unwrap_or(u32::MAX);
     let two = T::one() + T::one();

@@ -66,7 +66,7 @@ impl Kind for SphereInterpolation {
 
     fn compute_in_field(problem: &Problem) -> Result<Answer, Error> {
         let input: Input<FieldNumber> = problem.input_in_field(&[])?;
-        exactcheck_core::limits::POINTS.check_usize(input.points.len())?;
+        crate::limits::POINTS.check_usize(input.points.len())?;
         let points: Vec<Vec3<FieldElement>> = input
             .points
             .into_iter()
@@ -77,7 +77,7 @@ impl Kind for SphereInterpolation {
     }
 
     fn compute(input: Input) -> Result<Answer, Error> {
-        exactcheck_core::limits::POINTS.check_usize(input.points.len())?;
+        crate::limits::POINTS.check_usize(input.points.len())?;
         let points: Vec<Vec3<Radical>> = input
             .points
             .into_iter()

@@ -836,3 +836,42 @@ fn algebraic_constants_next_to_variables_are_decided_as_prove_decides_them() {
         String::from_utf8_lossy(&out.stderr)
     );
 }
+
+/// One identity reads the same from `prove` and from a claims file's `identity` claim: both
+/// word the engine's report with one formatter (verdict, method and evidence), failing,
+/// proved with side conditions, modulo relations, with angles, square roots, components.
+#[test]
+fn prove_and_claims_files_word_an_identity_alike() {
+    let cases: &[(&str, &str, &[&str])] = &[
+        ("(a+b)^3", "a^3 + 3*a^2*b + 3*a*b^2", &[]),
+        ("(x^2-1)/(x-1)", "x+1", &[]),
+        ("((1-t^2)/(1+t^2))^2 + (2*t/(1+t^2))^2", "1", &[]),
+        ("x*y", "y", &["x^2 = 1"]),
+        ("c^2", "1 - s^2 + c", &["c^2 + s^2 = 1"]),
+        ("sin(2*x)", "2*sin(x)", &[]),
+        ("sqrt(x^2)", "x", &[]),
+        ("vec(x, y, z)", "vec(x, 2*y, z)", &[]),
+        ("1/w", "2", &["w > 0"]),
+    ];
+    for (lhs, rhs, conditions) in cases {
+        let mut args = vec!["prove", lhs, rhs, "--json"];
+        for c in conditions.iter() {
+            args.extend(["--where", c]);
+        }
+        let out = exactcheck(&args);
+        let prove: serde_json::Value = serde_json::from_slice(&out.stdout)
+            .unwrap_or_else(|e| panic!("{lhs} = {rhs}: {e}: {out:?}"));
+        let quoted: Vec<String> = conditions.iter().map(|c| format!("{c:?}")).collect();
+        let file = format!(
+            "[paper]\nname = \"alike\"\n\n[[claim]]\nid = \"alike.one\"\nkind = \"identity\"\nlhs = {lhs:?}\nrhs = {rhs:?}\nwhere = [{}]\n",
+            quoted.join(", ")
+        );
+        let out = verify_generated("alike.toml", &file, &["--json"]);
+        let rows: serde_json::Value = serde_json::from_slice(&out.stdout)
+            .unwrap_or_else(|e| panic!("{lhs} = {rhs}: {e}: {out:?}"));
+        let row = &rows[0];
+        for key in ["verdict", "method", "evidence"] {
+            assert_eq!(row[key], prove[key], "{lhs} = {rhs}: {key}");
+        }
+    }
+}

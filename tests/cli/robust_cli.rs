@@ -277,8 +277,8 @@ fn limit_flags_are_checked_and_listed() {
     assert!(o.status.success());
     let list: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON");
     let list = list.as_array().expect("an array");
-    assert_eq!(list.len(), exactcheck_core::limits::all().len());
-    for (entry, limit) in list.iter().zip(exactcheck_core::limits::all()) {
+    assert_eq!(list.len(), exactcheck::limits::all().len());
+    for (entry, limit) in list.iter().zip(exactcheck::limits::all()) {
         assert_eq!(entry["name"], limit.name());
         assert_eq!(entry["default"], limit.default_value());
         let value = if limit.name() == "depth" {
@@ -432,7 +432,7 @@ fn the_limits_page_lists_every_limit_with_its_default() {
             Some((name.to_string(), value))
         })
         .collect();
-    let expected: Vec<(String, u64)> = exactcheck_core::limits::all()
+    let expected: Vec<(String, u64)> = exactcheck::limits::all()
         .iter()
         .map(|l| (l.name().to_string(), l.default_value()))
         .collect();

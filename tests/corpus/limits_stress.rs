@@ -1,7 +1,7 @@
 //! The limits stress test("a stress test in the test suite runs every limit at and
 //! just past its value").
 //!
-//! Every limit of the registry (`exactcheck_core::limits::all()`) has a file
+//! Every limit of the registry (`exactcheck::limits::all()`) has a file
 //! `tests/stress/<name>.toml`:
 //!
 //! ```toml
@@ -64,10 +64,7 @@ enum Outcome {
 }
 
 fn registry() -> Vec<&'static str> {
-    exactcheck_core::limits::all()
-        .iter()
-        .map(|l| l.name())
-        .collect()
+    exactcheck::limits::all().iter().map(|l| l.name()).collect()
 }
 
 fn stress_path(name: &str) -> std::path::PathBuf {

@@ -365,10 +365,7 @@ fn every_malformed_input_is_refused_with_one_line_and_status_2() {
             }
         }
     }
-    let registry: BTreeSet<&str> = exactcheck_core::limits::all()
-        .iter()
-        .map(|l| l.name())
-        .collect();
+    let registry: BTreeSet<&str> = exactcheck::limits::all().iter().map(|l| l.name()).collect();
     for (name, limit) in &limits {
         if !limit.split('|').all(|l| registry.contains(l)) {
             problems.push(format!(

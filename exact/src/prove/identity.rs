@@ -2,7 +2,7 @@
 //! residuals, relations, domains, hypotheses `!= 0`, a corrected form, the variable names), one
 //! typed report out ([`IdentityReport`]: verdict, normal form, side conditions, counter-example,
 //! what was tried, the corrected form's own verdict). `prove`, claims files and the catalogue all
-//! decide identities here, and phrase the report with [`super::phrase`].
+//! decide identities here, and the command-line tool words the report with one formatter.
 //!
 //! The steps are those of the module [`super`]: relations between fractions are cleared of their
 //! denominators (which become hypotheses); a coordinate between polynomials (and no hypothesis)

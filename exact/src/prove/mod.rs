@@ -51,16 +51,15 @@
 //!
 //! # One engine for every front end
 //! [`identity::decide_identity`] takes an identity as a spec (sides or residuals, relations,
-//! domains, hypotheses, a corrected form, the variable names) and returns a typed report;
-//! [`phrase::Phrasing`] words it. `prove`, claims files and the built-in catalogue all go
-//! through the two, so that they share one counter-example rule and one way of speaking.
+//! domains, hypotheses, a corrected form, the variable names) and returns a typed report, which
+//! the command-line tool words with one formatter. `prove`, claims files and the built-in
+//! catalogue all go through it, so that they share one counter-example rule.
 
 mod constants;
 mod factored;
 mod fraction;
 mod hypotheses;
 pub mod identity;
-pub mod phrase;
 pub mod random;
 mod roots;
 
@@ -72,7 +71,6 @@ pub use identity::{
     decide_identity, CoordinateOutcome, CorrectionVerdict, EngineError, IdentityReport,
     IdentitySpec, IdentityVerdict, Part, Statement, UsedHypothesis,
 };
-pub use phrase::{Phrasing, Voice};
 pub use roots::{square_roots, SquareRoot};
 
 pub use random::{

@@ -178,20 +178,6 @@ fn identity<C: PointField + Display>(
             RatFun::from_poly(Poly::zero()),
         ));
     }
-    let suffix = if roots.is_empty() {
-        String::new()
-    } else {
-        let c: Vec<String> = roots
-            .iter()
-            .filter(|r| !r.defined_everywhere())
-            .map(SquareRoot::condition)
-            .collect();
-        if c.is_empty() {
-            " (the square roots are defined everywhere)".to_string()
-        } else {
-            format!(" (the square roots are defined where {})", c.join(", "))
-        }
-    };
     // Every angle `x` of sin, cos, tan: its cosine and sine lie on the unit circle. pi is the
     // transcendental constant: an indeterminate while deciding.
     let crate::prove_cmd::Angles {
@@ -199,7 +185,6 @@ fn identity<C: PointField + Display>(
         pi,
         pi_in_relations,
         mixed,
-        user_relations,
     } = crate::prove_cmd::add_angles(&vars, &mut relations);
     // The minimal polynomial of the constants' primitive element and its isolating interval
     // (after the angles, so that it does not count as a relation of the claim's).
@@ -211,10 +196,6 @@ fn identity<C: PointField + Display>(
             Some(domain)
         }
         None => None,
-    };
-    let suffix = match k {
-        Some(k) => format!("{suffix} ({})", k.description()),
-        None => suffix,
     };
     let mut domains: Vec<(Var, VarDomain)> = Vec::new();
     for (v, d, text) in &conditions.domains {
@@ -235,18 +216,11 @@ fn identity<C: PointField + Display>(
         corrected: corrected_fns,
         ..IdentitySpec::new(vars, coordinates)
     };
-    let phrasing = Phrasing {
-        voice: Voice::ClaimsFile,
-        vars: &spec.vars,
-        relations: conditions
-            .relation_texts
+    let mut phrasing = Phrasing {
+        relations: conditions.relation_texts.clone(),
+        circles: angle_list
             .iter()
-            .cloned()
-            .chain(
-                angle_list
-                    .iter()
-                    .map(|a| format!("cos({0})^2 + sin({0})^2 = 1", a.name)),
-            )
+            .map(|a| format!("cos({0})^2 + sin({0})^2 = 1", a.name))
             .collect(),
         domains: conditions
             .domains
@@ -271,7 +245,16 @@ fn identity<C: PointField + Display>(
                 )
             }))
             .collect(),
-        suffix,
+        roots: roots
+            .iter()
+            .map(|r| {
+                let name = spec.vars.name(r.var).unwrap_or("?").to_string();
+                (name, r.condition(), r.defined_everywhere())
+            })
+            .collect(),
+        pi,
+        constants: k,
+        ..Phrasing::new(&spec.vars)
     };
     let report = decide_identity(&spec).map_err(|e| {
         let key = match &e {
@@ -283,103 +266,10 @@ fn identity<C: PointField + Display>(
     let mut report = report;
     crate::prove_cmd::sound_counter_example(&mut report, pi_in_relations, &mixed);
     // With algebraic constants, a non-zero reduction gets its counter-example at c = theta.
-    let constant_point = k.and_then(|k| prove_constants::settle(k, &spec, &mut report, pi, &mixed));
+    phrasing.constant_point =
+        k.and_then(|k| prove_constants::settle(k, &spec, &mut report, pi, &mixed));
     let method = phrasing.method::<C>();
-    let rels_hold = if user_relations == 0 {
-        ""
-    } else {
-        " (where the relations hold)"
-    };
-    let evidence = match &report.verdict {
-        IdentityVerdict::Undecided {
-            normal_form,
-            coordinate,
-            ..
-        } if constant_point.is_some() => {
-            let (k, p) = (
-                k.expect("a constant point has its constants"),
-                constant_point.as_ref().expect("matched"),
-            );
-            let at = exactcheck_exact::expr::describe_point(&prove_constants::named_point(
-                p, &spec.vars,
-            ));
-            format!(
-                "{}{}LHS - RHS = {}; LHS - RHS{} reduces{} to {}, not zero{}",
-                match phrasing.labels.get(*coordinate) {
-                    Some(label) => format!("in {label}: "),
-                    None => String::new(),
-                },
-                if at.is_empty() {
-                    String::new()
-                } else {
-                    format!("at {}{rels_hold} ", at.join(", "))
-                },
-                prove_constants::shown_value(k, p, &spec.vars),
-                if report.cleared[*coordinate] {
-                    " with the denominators cleared"
-                } else {
-                    ""
-                },
-                phrasing.modulo(),
-                exactcheck_exact::prove::factored(normal_form, &spec.vars),
-                phrasing.suffix,
-            )
-        }
-        IdentityVerdict::Fails {
-            coordinate: k,
-            point,
-            value,
-            normal_form,
-        } if pi.is_some() || !angle_list.is_empty() => {
-            // pi is the constant: the value is a polynomial in it, the point leaves it out; an
-            // angle's cosine and sine are shown as the angle.
-            let (value, note) = match (pi, &spec.coordinates[*k]) {
-                (Some(p), Statement::Sides(l, r)) => {
-                    let res = if l.is_polynomial() && r.is_polynomial() {
-                        l.numerator().clone() - r.numerator()
-                    } else {
-                        FractionIdentity::new(l, r)
-                            .map(|f| f.residual)
-                            .unwrap_or_else(|_| normal_form.clone())
-                    };
-                    (
-                        crate::prove_cmd::in_pi::<C>(&res, point, p)
-                            .display(&spec.vars)
-                            .to_string(),
-                        ", a non-zero polynomial in pi, and pi is transcendental, so it is not zero",
-                    )
-                }
-                _ => (value.to_string(), ""),
-            };
-            let named: Vec<(String, String)> = point
-                .iter()
-                .filter(|(v, _)| Some(*v) != pi)
-                .map(|(v, q)| (spec.vars.name(*v).unwrap_or("?").to_string(), q.to_string()))
-                .collect();
-            let at = exactcheck_exact::expr::describe_point(&named);
-            format!(
-                "{}{}{} LHS - RHS = {value}{note}; LHS - RHS{} reduces{} to {}",
-                match phrasing.labels.get(*k) {
-                    Some(label) => format!("in {label}: "),
-                    None => String::new(),
-                },
-                if at.is_empty() {
-                    "everywhere".to_string()
-                } else {
-                    format!("at {}", at.join(", "))
-                },
-                rels_hold,
-                if report.cleared[*k] {
-                    " with the denominators cleared"
-                } else {
-                    ""
-                },
-                phrasing.modulo(),
-                exactcheck_exact::prove::factored(normal_form, &spec.vars),
-            )
-        }
-        _ => phrasing.evidence(&report),
-    };
+    let evidence = phrasing.evidence(&spec, &report);
     let correction_problem = phrasing.correction_problem(&report);
     let printed: Vec<Equation> = if names.is_empty() {
         lhs.iter()
@@ -400,12 +290,12 @@ fn identity<C: PointField + Display>(
             .collect()
     };
     let (verdict, erratum) = match &report.verdict {
-        IdentityVerdict::Undecided { coordinate, .. } if constant_point.is_some() => {
-            let p = constant_point.as_ref().expect("matched");
+        IdentityVerdict::Undecided { coordinate, .. } if phrasing.constant_point.is_some() => {
+            let p = phrasing.constant_point.as_ref().expect("matched");
             let mut counter_example = Vec::new();
             let mut residual_at = difference(&lhs[*coordinate], &rhs[*coordinate]);
             let mut plain = true;
-            for (name, q) in prove_constants::named_point(p, &spec.vars) {
+            for (name, q) in crate::phrase::named_point(p, &spec.vars) {
                 let value = value_expr(&q)?;
                 if name.contains('(') {
                     plain = false;
@@ -433,14 +323,7 @@ fn identity<C: PointField + Display>(
             };
             let erratum = Erratum {
                 printed,
-                correction: format!(
-                    "LHS - RHS = {} at the counter-example",
-                    prove_constants::shown_value(
-                        k.expect("a constant point has its constants"),
-                        p,
-                        &spec.vars
-                    )
-                ),
+                correction: phrasing.erratum_correction(&report),
                 counter_example,
                 residual,
                 ..Erratum::default()

@@ -190,139 +190,71 @@ pub(super) fn instances(check: &Check) -> Result<Outcome, Fault> {
         Some(s) => Seed::Chosen(*s),
         None => Seed::Fresh(crate::prove_cmd::fresh_seed()),
     };
-    let seed = seed_of_run.value();
-    let chosen = if matches!(seed_of_run, Seed::Chosen(_)) {
-        ", chosen"
-    } else {
-        ""
-    };
-    let show = |l: f64| {
-        if l == f64::NEG_INFINITY {
-            "0".to_string()
-        } else {
-            format!("2^{:.1}", (l * 10.0).ceil() / 10.0)
-        }
-    };
-    let mut worst = f64::NEG_INFINITY;
-    let mut primes = Vec::new();
-    let mut undecided = None;
-    let mut reproduced = false;
-    // The coordinates are tested in parallel and read in order; each has its own prime (drawn
-    // from the seed and the coordinate's identity).
-    let decisions: Vec<Result<RandomDecision, String>> = lhs
+    // The coordinates are tested in parallel, each with its own prime (drawn from the seed and
+    // the coordinate's identity), and worded as `prove --random` words them.
+    let decisions: Vec<RandomDecision> = lhs
         .par_iter()
         .zip(rhs.par_iter())
         .map(|(l, r)| random_identity_test(l, r, &names, &circles, trials, seed_of_run))
-        .collect();
-    for (c, ((l, r), d)) in lhs.iter().zip(rhs).zip(decisions).enumerate() {
-        let d = d.map_err(|e| Fault::Input("lhs", e))?;
-        let coords = if lhs.len() == 1 {
-            String::new()
-        } else {
-            format!(" (in {})", shape.component(c))
-        };
-        match d {
-            RandomDecision::Holds {
-                report, log2_bound, ..
-            } => {
-                primes.push(report.prime);
-                worst = worst.max(log2_bound);
-            }
-            RandomDecision::Reproduced { report } => {
-                primes.push(report.prime);
-                reproduced = true;
-            }
-            RandomDecision::Undecided {
-                report, log2_bound, ..
-            } => {
-                primes.push(report.prime);
-                worst = worst.max(log2_bound);
-                undecided.get_or_insert(coords);
-            }
-            RandomDecision::Fails {
-                report,
-                point,
-                value,
-            } => {
-                let at: Vec<String> = point.iter().map(|(v, x)| format!("{v} = {x}")).collect();
-                let erratum = Erratum {
-                    printed: vec![Equation {
-                        lhs: l.clone(),
-                        rhs: r.clone(),
-                    }],
-                    correction: format!(
-                        "LHS - RHS = {value} (mod p = {}) at {}: not zero modulo p, so not zero over Q",
-                        report.prime,
-                        at.join(", ")
-                    ),
-                    ..Erratum::default()
-                };
-                return Ok(Outcome {
-                    verdict: Verdict::Fails,
-                    method: format!(
-                        "evaluation at {trials} random points modulo the random prime p = {} (seed {seed}{chosen})",
-                        report.prime
-                    ),
-                    evidence: format!(
-                        "LHS - RHS = {value} (mod p) at {}{coords}, so it is not zero{}",
-                        at.join(", "),
-                        if exact_note.is_empty() { String::new() } else { format!("; {exact_note}") }
-                    ),
-                    erratum: Some(Box::new(erratum)),
-                });
-            }
-        }
-    }
-    let primes = match primes.as_slice() {
-        [p] => format!("the random prime p = {p}"),
-        many => format!(
-            "random primes ({}, one per coordinate)",
-            many.iter()
-                .map(ToString::to_string)
-                .collect::<Vec<_>>()
-                .join(", ")
-        ),
+        .collect::<Result<_, String>>()
+        .map_err(|e| Fault::Input("lhs", e))?;
+    let labels: Vec<String> = if lhs.len() == 1 {
+        Vec::new()
+    } else {
+        (0..lhs.len()).map(|c| shape.component(c)).collect()
     };
+    let phrased = crate::phrase::phrase_random(
+        &decisions,
+        &labels,
+        trials,
+        seed_of_run,
+        &crate::phrase::RandomOptions {
+            fresh_seed: "remove `seed`",
+            points: "random",
+            otherwise: "",
+            exact_counter_example: "",
+        },
+    );
     let method = format!(
-        "evaluation at {trials} random points modulo {primes} (seed {seed}{chosen}){}",
+        "{}{}",
+        phrased.method,
         if at.is_empty() {
             ""
         } else {
             " and exact instances"
         }
     );
-    let extra = if exact_note.is_empty() {
-        String::new()
+    let evidence = if exact_note.is_empty() {
+        phrased.evidence
     } else {
-        format!("; {exact_note}")
+        format!("{}; {exact_note}", phrased.evidence)
     };
-    Ok(match undecided {
-        None if reproduced => Outcome {
-            verdict: Verdict::Holds,
-            method,
-            evidence: format!(
-                "LHS - RHS vanishes at all {trials} points modulo the prime drawn from the chosen seed {seed} and the identity (a reproduced run); a chosen seed gives no probability bound (it need not be independent of the identity): remove `seed` for a fresh seed and the proved bound{extra}"
-            ),
-            erratum: None,
-        },
-        None => Outcome {
-            verdict: Verdict::Holds,
-            method,
-            evidence: format!(
-                "LHS - RHS vanishes at all {trials} points; a false identity passes with probability <= {} (proved bound, below the threshold 2^{HOLDS_THRESHOLD_LOG2}){extra}",
-                show(worst)
-            ),
-            erratum: None,
-        },
-        Some(coords) => Outcome {
-            verdict: Verdict::Undecided,
-            method,
-            evidence: format!(
-                "LHS - RHS vanishes at all {trials} points, but the error bound{coords}{} is {}, not below 2^{HOLDS_THRESHOLD_LOG2}; use more points (random up to {MAX_RANDOM_TRIALS}){extra}",
-                if chosen.is_empty() { "" } else { " a fresh seed would give" },
-                show(worst)
-            ),
-            erratum: None,
-        },
+    let erratum = match &decisions[phrased.shown] {
+        RandomDecision::Fails {
+            report,
+            point,
+            value,
+        } => {
+            let at: Vec<String> = point.iter().map(|(v, x)| format!("{v} = {x}")).collect();
+            Some(Box::new(Erratum {
+                printed: vec![Equation {
+                    lhs: lhs[phrased.shown].clone(),
+                    rhs: rhs[phrased.shown].clone(),
+                }],
+                correction: format!(
+                    "LHS - RHS = {value} (mod p = {}) at {}: not zero modulo p, so not zero over Q",
+                    report.prime,
+                    at.join(", ")
+                ),
+                ..Erratum::default()
+            }))
+        }
+        _ => None,
+    };
+    Ok(Outcome {
+        verdict: phrased.verdict,
+        method,
+        evidence,
+        erratum,
     })
 }

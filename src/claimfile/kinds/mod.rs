@@ -20,6 +20,7 @@ use super::defs::{self, Defs};
 use super::name_expr;
 use super::read::{present_keys, RawClaim};
 use crate::claims::{printed, Equation, Erratum, Outcome, Verdict};
+use crate::phrase::Phrasing;
 use crate::prove_cmd::{parse_where_with, Where};
 use crate::Error;
 use exactcheck_core::Ring;
@@ -30,9 +31,8 @@ use exactcheck_exact::expr::{
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
     decide_identity, random_identity_test, square_roots, unit_circle_pairs, CorrectionVerdict,
-    EngineError, FractionIdentity, IdentitySpec, IdentityVerdict, Part, Phrasing, PointField,
-    RandomDecision, Seed, SquareRoot, Statement, VarDomain, Voice, HOLDS_THRESHOLD_LOG2,
-    MAX_RANDOM_TRIALS,
+    VarDomain, EngineError, FractionIdentity, IdentitySpec, IdentityVerdict, Part, PointField,
+    RandomDecision, Seed, SquareRoot, Statement, MAX_RANDOM_TRIALS,
 };
 use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::real_constant::RealConstant;

@@ -22,9 +22,13 @@
 //! Hand-written: the fraction evaluator (the engine proves polynomial identities; the corollaries
 //! print quotients, and cross-multiplying by hand would mean rewriting the printed text).
 //!
-//! Rust, not an embedded claims file: the theorem and the corollaries are families over the
-//! degrees `(m, n)`, expanded with the Bernstein products of `exactcheck_core::bernstein` and checked
-//! against de Casteljau and exact instances; a claims file states one formula at a time.
+//! Rust, not an embedded claims file, claim by claim: `chiang.theorem` and
+//! `chiang.corollary1/2/5` are families over the degrees `(m, n)`, expanded with the Bernstein
+//! products of `exactcheck_core::bernstein` and checked against the substitution of the proof,
+//! de Casteljau and exact instances (a claims file states one formula of fixed degree at a
+//! time); `chiang.example4` judges the printed decimals against the curve the core's ruled
+//! surface construction (`exactcheck_core::ruled`) computes in `Q(sqrt 2, sqrt 6)`, an
+//! independent derivation.
 
 mod corollaries;
 mod example4;

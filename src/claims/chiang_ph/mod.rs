@@ -26,10 +26,14 @@
 //! resultant of the divided differences, each candidate pair excluded by tensor-Bernstein signs
 //! or certified by Poincare-Miranda): [`self_intersections_of`].
 //!
-//! Rust, not an embedded claims file: the printed numbers are judged against the exact values
-//! of `exactcheck_core::ph` (control points, normals under both orientations, the smallest radius
-//! certified by root isolation, cusps counted two ways) and the offset theorem is expanded for
-//! families of degrees; a claims file states one formula at a time.
+//! Rust, not an embedded claims file, claim by claim: `chiang.offset` and `chiang.ph_degree`
+//! expand the offset theorem for families of degrees (a claims file states one formula of fixed
+//! degree); `chiang.ph_points` and `chiang.ph_normals` judge the printed numbers against the
+//! control points and normals `exactcheck_core::ph` derives (the normals under every sign
+//! pattern and both orientations); `chiang.ph_radius` certifies the smallest radius by root
+//! isolation and counts cusps two independent ways; `chiang.ph_offsets` judges every printed
+//! decimal against the offsets the core computes, with the readings of a lost sign or a
+//! truncation.
 
 mod example;
 mod offset;

@@ -359,7 +359,8 @@ pub(super) fn offset_check() -> Result<Outcome, String> {
                 2 * k + 1,
                 form.text(),
                 if o.evidence
-                    .contains(&format!("({OFFSET_RESIDUALS} residuals in all)"))
+                    .starts_with(&format!("each of the {OFFSET_RESIDUALS} residuals ("))
+                    && o.evidence.ends_with(" expands to 0")
                 {
                     format!("all {OFFSET_RESIDUALS} residuals expand to 0")
                 } else {

@@ -9,10 +9,24 @@
 //! `exactcheck_core::quadric` are the independent derivation they are compared against, and the
 //! properties are proved by expanding residuals over polynomial rings.
 //!
-//! Rust, not an embedded claims file: every claim compares the printed maps with the
-//! independent ones of `exactcheck_core::quadric`, or decides on exact instances drawn by the seeded
-//! generator (converses, interpolation by a nullspace, Miquel's configuration); a claims file
-//! compares formulas of its own.
+//! Three claims state printed formulas alone and are decided by the claims-file engine from
+//! the embedded `claims.toml` (`Claim::printed`): `juttler.satz5` (the line (12) and the focal lines
+//! (13) meet at lambda = 1, mu = +-i), `juttler.focal_absolute` ((13) on (14)) and
+//! `juttler.satz11` (the line (18) meets the real focal lines). The others stay Rust, because
+//! the claims format cannot say what they check:
+//! * `lebesgue`, `dietz` — the printed maps (7), (8) against `quadric::lebesgue` and
+//!   `quadric::dietz`, and the converses on exact instances drawn by the seeded generator;
+//! * `satz1` — the product rule for control points against `quadric` on Bezier curves and
+//!   patches of every degree tried;
+//! * `satz2`, `sigma_inverse`, `satz3`, `satz8`, `satz9` — the printed sigma, sigma^-1, theta,
+//!   tau, alpha against the `quadric` maps they restrict or factor;
+//! * `lemma4`, `lemma10` — the preimage lines through `quadric::theta_preimage_point` and
+//!   `alpha_preimage_point`;
+//! * `circle_preimage`, `line_preimage`, `line_image`, `plane_lines` ([`geometry`]) — the
+//!   quadrics and circles through the `quadric` maps, with the classification of their forms;
+//! * `interpolation`, `interpolation_degree` — a nullspace of an exact linear system on seeded
+//!   instances, and the degree count;
+//! * `satz7` — Miquel's configuration on seeded random patches.
 
 use super::engine::{prove_all, Rng, Symbols};
 use super::{Claim, Outcome, Verdict};
@@ -27,9 +41,9 @@ use exactcheck_core::quadric::{
     alpha, alpha_preimage_point, dietz, lebesgue, paraboloid_form, psi, sigma, sigma_inverse,
     sphere_form, tau, theta, theta_preimage_point,
 };
-use exactcheck_core::{det4, Hom4, Ring};
+use exactcheck_core::{Hom4, Ring};
 use exactcheck_exact::poly::Poly;
-use exactcheck_exact::{ComplexRadical, Rational};
+use exactcheck_exact::Rational;
 use interpolation::{interpolation, interpolation_degree};
 
 type P = Poly<Rational>;
@@ -64,8 +78,8 @@ pub fn claims() -> Vec<Claim> {
         claim!("juttler.sigma_inverse", Proved, "sigma^-1(k) = (k0 - k3, k1, k2, 0) inverts sigma (projectively)", sigma_inverse_claim),
         claim!("juttler.satz3", Proved, "Satz 3: delta = sigma o theta with theta (11) = (p0^2+p3^2, p0p1 - p2p3, p0p2 + p1p3, 0)", satz3),
         claim!("juttler.lemma4", Proved, "Lemma 4: the theta-preimage of p = (p0,p1,p2,0) is the line lambda (p0,p1,p2,0) + mu (0,p2,-p1,p0) (12)", lemma4),
-        claim!("juttler.satz5", Proved, "Satz 5: every line (12) meets both focal lines xi (1,0,0,i) + zeta (0,1,-i,0) and xi (1,0,0,-i) + zeta (0,1,i,0) (13); lambda = 1, mu = +-i gives the meeting points", satz5),
-        claim!("juttler.focal_absolute", Proved, "the focal lines (13) lie on the absolute quadric x0^2+x1^2+x2^2+x3^2 = 0 (14)", focal_absolute),
+        Claim::printed("juttler.satz5"),
+        Claim::printed("juttler.focal_absolute"),
         claim!("juttler.circle_preimage", Proved, "the preimage of a circle of P under theta (so the delta-preimage of a circle of K not through z) is a hyperboloid of one sheet", circle_preimage),
         claim!("juttler.line_preimage", Proved, "the preimage of a line of P under theta (so the delta-preimage of a circle of K through z) is a hyperbolic paraboloid", line_preimage),
         claim!("juttler.line_image", Proved, "the theta-image of a non-projecting line is a circle or a line of P; its delta-image is a circle on K", line_image),
@@ -76,7 +90,7 @@ pub fn claims() -> Vec<Claim> {
         claim!("juttler.interpolation", Holds, "interpolation on K by rational curves reduces to a homogeneous linear system (and works)", interpolation),
         claim!("juttler.interpolation_degree", Fails, "the interpolating curves on K need fewer degrees than with plain stereographic projection", interpolation_degree),
         claim!("juttler.satz7", Holds, "Satz 7 (Dietz): if a biquadratic Bezier patch y(u,v) lies on K, with boundary circles y(0,v), y(u,0), y(1,v), y(u,1) meeting at the corners p_i and second points q_i, then p1, q2, p3, q4 lie on a circle (and q1, p2, q3, p4) — Miquel's theorem", satz7),
-        claim!("juttler.satz11", Proved, "Satz 11: every line (18) meets both real focal lines (1,lambda,0,0) and (0,0,1,mu)", satz11),
+        Claim::printed("juttler.satz11"),
     ]
 }
 
@@ -296,73 +310,6 @@ fn lemma4() -> Result<Outcome, String> {
     ))
 }
 
-fn satz5() -> Result<Outcome, String> {
-    type C = Poly<ComplexRadical>;
-    let mut sym = Symbols::new(&["p0", "p1", "p2"]);
-    let i = C::constant(ComplexRadical::i());
-    let (p0, p1, p2) = (
-        sym.vars.poly::<ComplexRadical>("p0"),
-        sym.vars.poly("p1"),
-        sym.vars.poly("p2"),
-    );
-    let a = Hom4::new(p0.clone(), p1.clone(), p2.clone(), C::zero());
-    let b = Hom4::new(C::zero(), p2.clone(), -p1.clone(), p0.clone());
-    let (o, z) = (C::one(), C::zero());
-    let mut res = Vec::new();
-    for (sign, label) in [(i.clone(), "+i"), (-i.clone(), "-i")] {
-        // The focal line xi (1,0,0,s) + zeta (0,1,-s,0) with s = +-i.
-        let f1 = Hom4::new(o.clone(), z.clone(), z.clone(), sign.clone());
-        let f2 = Hom4::new(z.clone(), o.clone(), -sign.clone(), z.clone());
-        res.push((
-            format!("det(line (12), focal line {label})"),
-            det4(&a, &b, &f1, &f2),
-        ));
-        // The printed meeting point: lambda = 1, mu = s lies on the focal line.
-        let x = Hom4::new(
-            a.0[0].clone() + sign.clone() * &b.0[0],
-            a.0[1].clone() + sign.clone() * &b.0[1],
-            a.0[2].clone() + sign.clone() * &b.0[2],
-            a.0[3].clone() + sign.clone() * &b.0[3],
-        );
-        let on = x
-            .add(&f1.scale(&p0.neg_ref()))
-            .add(&f2.scale(&(p1.clone() + sign.clone() * &p2).neg_ref()));
-        for (c, r) in on.0.into_iter().enumerate() {
-            res.push((format!("point lambda = 1, mu = {label} minus p0 f1 + (p1 {label} p2) f2, coordinate {c}"), r));
-        }
-    }
-    Ok(decide(
-        &sym,
-        &res,
-        &[],
-        "symbolic expansion over Q(i)[p0,p1,p2]",
-    ))
-}
-
-fn focal_absolute() -> Result<Outcome, String> {
-    type C = Poly<ComplexRadical>;
-    let mut sym = Symbols::new(&["xi", "zeta"]);
-    let i = C::constant(ComplexRadical::i());
-    let (xi, zeta) = (
-        sym.vars.poly::<ComplexRadical>("xi"),
-        sym.vars.poly::<ComplexRadical>("zeta"),
-    );
-    let mut res = Vec::new();
-    for (s, label) in [(i.clone(), "+i"), (-i, "-i")] {
-        let x = Hom4::new(xi.clone(), zeta.clone(), -(s.clone() * &zeta), s * &xi);
-        res.push((
-            format!("x0^2+x1^2+x2^2+x3^2 on the focal line ({label})"),
-            x.dot(&x),
-        ));
-    }
-    Ok(decide(
-        &sym,
-        &res,
-        &[],
-        "symbolic expansion over Q(i)[xi,zeta]",
-    ))
-}
-
 fn satz8() -> Result<Outcome, String> {
     let mut sym = Symbols::new(&["q0", "q1", "q2"]);
     let printed: Hom4<P> = sym.hom4(TAU_PRINTED)?;
@@ -432,38 +379,6 @@ fn lemma10() -> Result<Outcome, String> {
         &res,
         &[],
         "symbolic expansion over Q[q, lambda, mu, x]",
-    ))
-}
-
-fn satz11() -> Result<Outcome, String> {
-    let mut sym = Symbols::new(&["q0", "q1", "q2"]);
-    let (q0, q1, q2) = (
-        sym.vars.poly::<Rational>("q0"),
-        sym.vars.poly("q1"),
-        sym.vars.poly("q2"),
-    );
-    let a = Hom4::new(q0.clone(), q1.clone(), q2, q0.clone());
-    let b = Hom4::new(q0, q1, P::zero(), P::zero());
-    let e = |i: usize| {
-        let mut v = [P::zero(), P::zero(), P::zero(), P::zero()];
-        v[i] = P::one();
-        Hom4(v)
-    };
-    let res = vec![
-        (
-            "det(line (18), focal line (1,lambda,0,0))".to_string(),
-            det4(&a, &b, &e(0), &e(1)),
-        ),
-        (
-            "det(line (18), focal line (0,0,1,mu))".to_string(),
-            det4(&a, &b, &e(2), &e(3)),
-        ),
-    ];
-    Ok(decide(
-        &sym,
-        &res,
-        &[],
-        "symbolic expansion over Q[q0,q1,q2]",
     ))
 }
 

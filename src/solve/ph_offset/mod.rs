@@ -306,7 +306,7 @@ fn exact(input: Input<ExactNumber>) -> Result<Answer<String>, Error> {
         .chain(&input.v)
         .map(|x| exactcheck_exact::expr::Coefficient::size_bits(&x.0))
         .fold(0u64, u64::saturating_add);
-    exactcheck_core::limits::PH_BITS
+    crate::limits::PH_BITS
         .check(bits)
         .map_err(|e| Error::Input(format!("u, v: {e}")))?;
     // Rational input runs over the (faster) rationals; radicals over the radical field.
@@ -342,7 +342,7 @@ fn exact_in_field(input: Input<FieldNumber>) -> Result<Answer<String>, Error> {
         .flat_map(|x| x.0.poly().coeffs().to_vec())
         .map(|c| exactcheck_exact::expr::Coefficient::size_bits(&c))
         .fold(0u64, u64::saturating_add);
-    exactcheck_core::limits::PH_BITS
+    crate::limits::PH_BITS
         .check(bits)
         .map_err(|e| Error::Input(format!("u, v: {e}")))?;
     exact_answer(&input, |x: &FieldNumber| x.0.clone())

@@ -193,13 +193,11 @@ fn exact_answer(input: Input<ExactNumber>) -> Result<AnswerOut<String>, Error> {
     let degree = (input.base.len() + input.directions.len()).saturating_sub(2);
     if !input.base.is_empty() && !input.directions.is_empty() && degree <= MAX_DEGREE {
         let work = (degree as u64).saturating_mul(1u64 << k.min(62));
-        exactcheck_core::limits::RULED_WORK
-            .check(work)
-            .map_err(|e| {
-                Error::Input(format!(
-                    "base, directions: m + n = {degree} with {k} independent square roots: {e}"
-                ))
-            })?;
+        crate::limits::RULED_WORK.check(work).map_err(|e| {
+            Error::Input(format!(
+                "base, directions: m + n = {degree} with {k} independent square roots: {e}"
+            ))
+        })?;
     }
     if all_rational {
         let p = build(&input, |x: &ExactNumber| {
@@ -246,7 +244,7 @@ impl Kind for RuledLine {
             .unwrap_or(1);
         let degree = (input.base.len() + input.directions.len()).saturating_sub(2);
         if !input.base.is_empty() && !input.directions.is_empty() && degree <= MAX_DEGREE {
-            exactcheck_core::limits::RULED_WORK
+            crate::limits::RULED_WORK
                 .check((degree as u64).saturating_mul(d as u64))
                 .map_err(|e| {
                     Error::Input(format!(
