@@ -23,9 +23,10 @@
 //!   as an [`Algebraic`] number, expressed in `theta` when it lies in the field — decided by the
 //!   certified primitive-element step (the generator stays `theta` only when the root is a
 //!   polynomial in it, with a linear gcd as certificate).
-//! * Printing: the value as an [`Algebraic`] number (radicals where its display finds them,
-//!   otherwise `Root(minimal polynomial, isolating interval)`), computed exactly by
-//!   [`NumberField::value`].
+//! * Printing: the value as an [`Algebraic`] number where its display finds radicals, computed
+//!   exactly by [`NumberField::value`]; otherwise a polynomial in the generator the user named
+//!   when the field has one ([`NumberField::with_name`]: `1/2 + 3/4*cos(pi/8)`), and
+//!   `Root(minimal polynomial, isolating interval)` only when no name exists.
 //!
 //! Hand-written for the same reason as the rest of this module: no crate of the dependency set
 //! has number fields.
@@ -273,11 +274,19 @@ impl From<Rational> for FieldElement {
 
 impl fmt::Display for FieldElement {
     /// The value as an [`Algebraic`] number: a rational, a radical where the display of
-    /// [`Algebraic`] finds one, else `Root(f, lo, hi) ≈ decimal`.
+    /// [`Algebraic`] finds one, else a polynomial in the field's named generator when it has
+    /// one ([`NumberField::named`]: `1/2 + 3/4*cos(pi/8)`), else `Root(f, lo, hi) ≈ decimal`.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self.to_rational() {
-            Some(q) => write!(f, "{q}"),
-            None => write!(f, "{}", self.to_algebraic()),
+        if let Some(q) = self.to_rational() {
+            return write!(f, "{q}");
+        }
+        let value = self.to_algebraic();
+        if let Some(text) = value.radical_form() {
+            return f.write_str(&text);
+        }
+        match self.field.as_ref().and_then(|k| k.named(&self.poly)) {
+            Some(text) => f.write_str(&text),
+            None => write!(f, "{value}"),
         }
     }
 }
