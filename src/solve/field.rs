@@ -116,8 +116,7 @@ mod tests {
     #[test]
     fn numbers_are_read_into_the_field_only_within_read_in() {
         let pf = Arc::new(
-            ProblemField::build(&[alg("cos(pi/8)"), alg("sqrt(2)")], &[], &[])
-                .expect("a field"),
+            ProblemField::build(&[alg("cos(pi/8)"), alg("sqrt(2)")], &[], &[]).expect("a field"),
         );
         assert!(current_element(&alg("sqrt(2)")).is_err());
         let s2 = read_in(&pf, || current_element(&alg("sqrt(2)"))).expect("in the field");

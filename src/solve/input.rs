@@ -133,7 +133,11 @@ fn scan_numbers(v: &Value) -> Result<Option<Vec<(exactcheck_exact::Algebraic, St
     Ok(Some(
         texts
             .iter()
-            .filter_map(|s| number::parse_algebraic(s).ok().map(|a| (a, s.trim().to_string())))
+            .filter_map(|s| {
+                number::parse_algebraic(s)
+                    .ok()
+                    .map(|a| (a, s.trim().to_string()))
+            })
             .filter(|(a, _)| !a.is_rational())
             .collect(),
     ))
@@ -206,7 +210,11 @@ impl<'a> Problem<'a> {
             })
             .collect();
         let values = self.algebraic.as_deref().unwrap_or(&[]);
-        let field = std::sync::Arc::new(super::field::ProblemField::build(values, &self.names, &extras)?);
+        let field = std::sync::Arc::new(super::field::ProblemField::build(
+            values,
+            &self.names,
+            &extras,
+        )?);
         super::field::read_in(&field, || typed(self.text))
     }
 

@@ -61,8 +61,7 @@ fn as_factor(text: &str) -> String {
     let t = text.trim();
     let word = |s: &str| {
         !s.is_empty()
-            && s
-                .chars()
+            && s.chars()
                 .all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '.')
     };
     let call = t.find('(').is_some_and(|open| {
@@ -255,7 +254,7 @@ impl NumberField {
     /// polynomial in the generator, when `g` (the minimal polynomial of `b`) and `h` (a
     /// polynomial over the field in `y`, given by its coefficients from the constant up) have
     /// exactly the one common root `b`: the root of their linear gcd. `None` otherwise.
-    fn common_root(&self, g: &UPoly, h: &[UPoly]) -> Option<UPoly> {
+    pub(super) fn common_root(&self, g: &UPoly, h: &[UPoly]) -> Option<UPoly> {
         let g: Vec<UPoly> = g.coeffs().iter().cloned().map(UPoly::constant).collect();
         let d = self.gcd(g, h.to_vec());
         // Monic and linear: y + d0, so the root is -d0.
@@ -485,8 +484,16 @@ mod tests {
         let numbers = [alg("sqrt(2)"), alg("cos(pi/8)")];
         let pe = primitive_element(&numbers).unwrap();
         assert_eq!(pe.field.degree(), 4);
-        assert!(pe.field.clone().with_name("sqrt(2)", &pe.polys[0]).is_none());
-        let k = pe.field.clone().with_name("cos(pi/8)", &pe.polys[1]).unwrap();
+        assert!(pe
+            .field
+            .clone()
+            .with_name("sqrt(2)", &pe.polys[0])
+            .is_none());
+        let k = pe
+            .field
+            .clone()
+            .with_name("cos(pi/8)", &pe.polys[1])
+            .unwrap();
         let c = &pe.polys[1];
         let half = Rational::new(1, 2).unwrap();
         let three_quarters = Rational::new(3, 4).unwrap();

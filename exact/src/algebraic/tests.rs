@@ -450,10 +450,14 @@ fn the_trig_degree_refusal_is_a_typed_limit() {
     let limit = err.limit().expect("a limit error");
     assert!(std::ptr::eq(limit.limit, &limits::ALGEBRAIC_DEGREE));
     assert_eq!(limit.actual, "504");
-    assert!(matches!(err, ExprError::CallLimit { pos: 4, .. }), "{err:?}");
     assert!(
-        err.to_string()
-            .starts_with("cos at 4: degree of an algebraic number exceeds the limit algebraic-degree"),
+        matches!(err, ExprError::CallLimit { pos: 4, .. }),
+        "{err:?}"
+    );
+    assert!(
+        err.to_string().starts_with(
+            "cos at 4: degree of an algebraic number exceeds the limit algebraic-degree"
+        ),
         "{err}"
     );
     // A numerator past i64 is past every degree too; tan at pi/2 is no limit.
@@ -469,6 +473,9 @@ fn the_trig_degree_refusal_is_a_typed_limit() {
         Err(TrigRefusal::Why(w)) if w.contains("undefined")
     ));
     // Other errors carry no limit.
-    let bad = parse_expr("sqrt(-2)").unwrap().eval_constant::<Algebraic>().unwrap_err();
+    let bad = parse_expr("sqrt(-2)")
+        .unwrap()
+        .eval_constant::<Algebraic>()
+        .unwrap_err();
     assert!(bad.limit().is_none(), "{bad}");
 }
