@@ -44,6 +44,33 @@ impl Trig {
     }
 }
 
+/// Why a coefficient type has no value for `sin`, `cos` or `tan` of a rational multiple of pi
+/// ([`Coefficient::trig_of_pi`], [`crate::expr::trig_constant`]).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum TrigRefusal {
+    /// The value exists but is past a named limit (the degree of `cos(2*pi/1009)` past
+    /// `algebraic-degree`): the limit's own error, so callers tell it from bad input by type.
+    Limit(exactcheck_core::limits::LimitError),
+    /// Anything else, in words: the value is undefined (`tan` where the cosine is zero) or not in
+    /// the type (`cos(pi/5)` over the square-root field).
+    Why(String),
+}
+
+impl std::fmt::Display for TrigRefusal {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            TrigRefusal::Limit(e) => e.fmt(f),
+            TrigRefusal::Why(why) => f.write_str(why),
+        }
+    }
+}
+
+impl From<String> for TrigRefusal {
+    fn from(why: String) -> TrigRefusal {
+        TrigRefusal::Why(why)
+    }
+}
+
 /// What the conversion needs of a coefficient type: the image of a rational number, inverses (for
 /// division by constants) and square roots (for `sqrt`).
 ///
@@ -90,8 +117,9 @@ pub trait Coefficient: Ring {
     /// the built-in table of [`crate::expr::trig_constant`], whose values lie in `Q(sqrt 2, sqrt 3)`.
     ///
     /// # Errors
-    /// The reason in words (a limit, `tan` at a zero of the cosine).
-    fn trig_of_pi(_r: &Rational, _which: Trig) -> Option<Result<Self, String>> {
+    /// [`TrigRefusal::Limit`] for a value past a limit, [`TrigRefusal::Why`] with the reason in
+    /// words (`tan` at a zero of the cosine).
+    fn trig_of_pi(_r: &Rational, _which: Trig) -> Option<Result<Self, TrigRefusal>> {
         None
     }
     /// Checks the value against the named limits of its type (for

@@ -102,7 +102,9 @@ impl RealConstant {
             Err(ExprError::NotConstant { name, .. }) if name == PI => {}
             // A limit of the square-root field (`radicands`) is no reason to refuse a value
             // the algebraic numbers have; any other error is reported as the field found it.
-            Err(err @ ExprError::Limit { .. }) => return Err(err.into()),
+            Err(err @ (ExprError::Limit { .. } | ExprError::CallLimit { .. })) => {
+                return Err(err.into())
+            }
             Err(ExprError::NoSqrt { pos, arg, .. }) => {
                 if let Some(value) = negative_radicand(&arg) {
                     return Err(RealConstantError::NotReal { pos, arg, value });

@@ -99,12 +99,13 @@ fn strings<'a>(v: &'a Value, out: &mut Vec<&'a str>) {
 /// The scan of the exact numbers of a problem together: the `radicands` limit on its radicals
 /// (each may be within it while the field the answer is computed in, spanned by all of them, is
 /// not), and, when a value leaves the radical field (`"cos(pi/8)"`), the values of all its
-/// number strings as real algebraic numbers, from which the problem's number field is built.
+/// number strings as real algebraic numbers with the strings, from which the problem's number
+/// field is built (and named).
 /// Strings that do not parse are left to the typed read, which names their field.
 ///
 /// # Errors
 /// [`Error::Limit`] of `radicands`, or of `algebraic-degree` for a value past it.
-fn scan_numbers(v: &Value) -> Result<Option<Vec<exactcheck_exact::Algebraic>>, Error> {
+fn scan_numbers(v: &Value) -> Result<Option<Vec<(exactcheck_exact::Algebraic, String)>>, Error> {
     let mut texts = Vec::new();
     strings(v, &mut texts);
     let mut radicals = Vec::new();
@@ -116,8 +117,8 @@ fn scan_numbers(v: &Value) -> Result<Option<Vec<exactcheck_exact::Algebraic>>, E
                 Ok(_) => leaves = true,
                 // A value past the degree limit refuses the problem here; every other refusal
                 // (another limit, bad syntax) is left to the typed read, which names the field.
-                Err(number::AlgebraicRefusal::Limit(m))
-                    if m.contains(exactcheck_core::limits::ALGEBRAIC_DEGREE.name()) =>
+                Err(number::AlgebraicRefusal::Limit(m, limit))
+                    if std::ptr::eq(limit.limit, &exactcheck_core::limits::ALGEBRAIC_DEGREE) =>
                 {
                     return Err(Error::Input(m))
                 }
@@ -132,8 +133,12 @@ fn scan_numbers(v: &Value) -> Result<Option<Vec<exactcheck_exact::Algebraic>>, E
     Ok(Some(
         texts
             .iter()
-            .filter_map(|s| number::parse_algebraic(s).ok())
-            .filter(|a| !a.is_rational())
+            .filter_map(|s| {
+                number::parse_algebraic(s)
+                    .ok()
+                    .map(|a| (a, s.trim().to_string()))
+            })
+            .filter(|(a, _)| !a.is_rational())
             .collect(),
     ))
 }
@@ -147,6 +152,9 @@ pub struct Problem<'a> {
     /// The irrational values of the number strings, when one of them leaves the radical field
     /// (the problem is then computed in the number field they generate).
     algebraic: Option<Vec<exactcheck_exact::Algebraic>>,
+    /// The strings of those values, in the same order: the names the field's elements are
+    /// printed in ([`super::field::ProblemField::build`]).
+    names: Vec<String>,
 }
 
 impl<'a> Problem<'a> {
@@ -157,11 +165,18 @@ impl<'a> Problem<'a> {
     pub fn read(text: &'a str) -> Result<Problem<'a>, Error> {
         let text = without_bom(text);
         let (value, kind) = envelope(text)?;
-        let algebraic = scan_numbers(&value)?;
+        let (algebraic, names) = match scan_numbers(&value)? {
+            None => (None, Vec::new()),
+            Some(found) => {
+                let (values, names) = found.into_iter().unzip();
+                (Some(values), names)
+            }
+        };
         Ok(Problem {
             text,
             kind,
             algebraic,
+            names,
         })
     }
 
@@ -195,7 +210,11 @@ impl<'a> Problem<'a> {
             })
             .collect();
         let values = self.algebraic.as_deref().unwrap_or(&[]);
-        let field = std::sync::Arc::new(super::field::ProblemField::build(values, &extras)?);
+        let field = std::sync::Arc::new(super::field::ProblemField::build(
+            values,
+            &self.names,
+            &extras,
+        )?);
         super::field::read_in(&field, || typed(self.text))
     }
 

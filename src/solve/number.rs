@@ -32,7 +32,6 @@
 use exactcheck_core::OrderedField;
 use exactcheck_exact::algebraic::FieldElement;
 use exactcheck_exact::expr::library::{self, Val};
-use exactcheck_exact::expr::ExprError;
 use exactcheck_exact::{Algebraic, Radical, Rational};
 use schemars::{json_schema, JsonSchema, Schema, SchemaGenerator};
 use serde::de::{Deserialize, Deserializer, Error as _};
@@ -112,8 +111,9 @@ pub(crate) fn parse_radical(text: &str) -> Result<Radical, String> {
 /// Why a number string has no real algebraic value.
 #[derive(Debug)]
 pub(crate) enum AlgebraicRefusal {
-    /// A value's degree is past the `algebraic-degree` limit: the message, naming the limit.
-    Limit(String),
+    /// A value past a named limit (the degree of `"cos(2*pi/1009)"` past `algebraic-degree`):
+    /// the message, naming the string and the limit, and the limit's own error.
+    Limit(String, exactcheck_core::limits::LimitError),
     /// Anything else (not a constant, bad syntax), in one line.
     Other(String),
 }
@@ -125,17 +125,9 @@ pub(crate) fn parse_algebraic(text: &str) -> Result<Algebraic, AlgebraicRefusal>
     let other = |m: String| AlgebraicRefusal::Other(format!("{text:?}: {m}"));
     match library::resolve(text).map_err(|e| other(e.to_string()))? {
         Val::Scalar(e) => {
-            exactcheck_exact::expr::eval_lowered::<Algebraic>(&e).map_err(|err| {
-                // The degree of cos(2*pi/q) is checked inside the function library, whose
-                // refusal carries the limit's message rather than the limit error itself.
-                let degree = exactcheck_core::limits::ALGEBRAIC_DEGREE.name();
-                match err {
-                    ExprError::Limit { .. } => AlgebraicRefusal::Limit(format!("{text:?}: {err}")),
-                    ExprError::BadCall { ref why, .. } if why.contains(degree) => {
-                        AlgebraicRefusal::Limit(format!("{text:?}: {err}"))
-                    }
-                    err => other(err.to_string()),
-                }
+            exactcheck_exact::expr::eval_lowered::<Algebraic>(&e).map_err(|err| match err.limit() {
+                Some(limit) => AlgebraicRefusal::Limit(format!("{text:?}: {err}"), limit.clone()),
+                None => other(err.to_string()),
             })
         }
         v => Err(other(format!("{} where a number is expected", v.shape()))),
@@ -259,7 +251,9 @@ impl<'de> Deserialize<'de> for FieldNumber {
         match written(d)? {
             Written::Integer(t) | Written::Text(t) => {
                 let value = parse_algebraic(&t).map_err(|e| match e {
-                    AlgebraicRefusal::Limit(m) | AlgebraicRefusal::Other(m) => D::Error::custom(m),
+                    AlgebraicRefusal::Limit(m, _) | AlgebraicRefusal::Other(m) => {
+                        D::Error::custom(m)
+                    }
                 })?;
                 super::field::current_element(&value)
                     .map(FieldNumber)

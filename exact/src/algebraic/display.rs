@@ -179,15 +179,21 @@ impl Algebraic {
 }
 
 impl Algebraic {
+    /// The number as a rational or a radical when the display finds one (the quadratic and
+    /// even-quartic forms above), `None` where it would print `Root(...)`.
+    pub fn radical_form(&self) -> Option<String> {
+        if let Some(q) = self.to_rational() {
+            return Some(q.to_string());
+        }
+        self.quadratic_form().or_else(|| self.nested_form())
+    }
+
     /// The printed number with the polynomial of a `Root(...)` written in the variable `var`
     /// (`Root(8*z^3 + 16*z^2 + 6*z - 1, 1/16, 1/8) ≈ 0.1234898019`): for a number shown next to
     /// a statement whose variables include `x`. Radicals and rationals print as with
     /// [`fmt::Display`].
     pub fn display_in(&self, var: &str) -> String {
-        if let Some(q) = self.to_rational() {
-            return q.to_string();
-        }
-        if let Some(s) = self.quadratic_form().or_else(|| self.nested_form()) {
+        if let Some(s) = self.radical_form() {
             return s;
         }
         format!(

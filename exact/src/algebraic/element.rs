@@ -23,9 +23,10 @@
 //!   as an [`Algebraic`] number, expressed in `theta` when it lies in the field — decided by the
 //!   certified primitive-element step (the generator stays `theta` only when the root is a
 //!   polynomial in it, with a linear gcd as certificate).
-//! * Printing: the value as an [`Algebraic`] number (radicals where its display finds them,
-//!   otherwise `Root(minimal polynomial, isolating interval)`), computed exactly by
-//!   [`NumberField::value`].
+//! * Printing: the value as an [`Algebraic`] number where its display finds radicals, computed
+//!   exactly by [`NumberField::value`]; otherwise a polynomial in the generator the user named
+//!   when the field has one ([`NumberField::with_name`]: `1/2 + 3/4*cos(pi/8)`), and
+//!   `Root(minimal polynomial, isolating interval)` only when no name exists.
 //!
 //! Hand-written for the same reason as the rest of this module: no crate of the dependency set
 //! has number fields.
@@ -224,6 +225,11 @@ impl FieldElement {
             Sign::Zero => return Some(self.clone()),
             Sign::Positive => {}
         }
+        if let (Some(field), None) = (&self.field, self.to_rational()) {
+            if not_a_square_mod_primes(field, &self.poly) {
+                return None;
+            }
+        }
         let root = self.to_algebraic().sqrt()?;
         if let Some(q) = root.to_rational() {
             return Some(FieldElement {
@@ -235,12 +241,83 @@ impl FieldElement {
         if field.degree() % root.degree() != 0 {
             return None;
         }
+        // The gcd over the field of the root's minimal polynomial g and y^2 - self: when it is
+        // linear, y - h, then h is a common root in the field, so h = +root or -root, and as
+        // -root is not a second common root (the gcd would have degree 2), h = root. When it has
+        // degree 2 (it divides y^2 - self) and g(-y) is not +-g(y), -root is no root of g, so
+        // y^2 - self has no linear factor over the field (it would be y - root, making the gcd
+        // linear): the root is outside. Both are decided by one gcd of degree-2 polynomials
+        // over the field, where the primitive element below needs a resultant of degree
+        // deg(field) * deg(root), whose root isolation dominates for fields of degree 12.
+        let g = root.checked_minimal_polynomial().ok()?;
+        let y2 = [self.poly.neg_ref(), UPoly::zero(), UPoly::one()];
+        if let Some(h) = field.common_root(&g, &y2) {
+            return Some(FieldElement::new(field, &h));
+        }
+        let mirrored = g.compose(&UPoly::x().neg_ref());
+        if mirrored != g && mirrored != g.neg_ref() {
+            return None;
+        }
         let pe = primitive_element(&[field.generator().clone(), root]).ok()?;
         // The generator is kept (coefficient 0 for the root) exactly when the root was
         // certified to be a polynomial in it.
         (pe.combination == [1, 0]).then(|| FieldElement::new(field, &pe.polys[1]))
     }
 }
+
+/// Whether a prime certifies that the non-zero element `k` of `field` is no square in it: a
+/// prime `p` (odd, below [`SQUARE_TEST_PRIMES_BELOW`]) at which the minimal polynomial `m` has
+/// `p`-integral coefficients and `deg m` distinct roots `t_j` modulo `p` (so `p` does not divide
+/// its discriminant, and the primes of the field above `p` are the `deg m` primes of degree one
+/// `theta -> t_j`), `k` has `p`-integral coefficients, every `k(t_j)` is non-zero (`k` is a unit
+/// above `p`) and some `k(t_j)` is not a square modulo `p`. Were `k = h^2` in the field, `h`
+/// would be a unit above `p`, hence a polynomial in `theta` with `p`-integral coefficients, and
+/// `h(t_j)^2 = k(t_j)` modulo `p`. `false` when no such prime is found among the first few
+/// that qualify: the question stays open, for the certified test of the caller.
+fn not_a_square_mod_primes(field: &NumberField, k: &UPoly) -> bool {
+    let m = field.modulus();
+    let n = m.degree() as u64;
+    let mut qualified = 0;
+    for p in (3..SQUARE_TEST_PRIMES_BELOW).step_by(2) {
+        if p <= n || !crate::modp::is_prime_u64(p) {
+            continue;
+        }
+        let fp = crate::modp::PrimeField::new(p).expect("p is prime");
+        let reduce = |q: &UPoly| -> Option<Vec<u64>> {
+            q.coeffs()
+                .iter()
+                .map(|c| fp.from_rational(c).ok())
+                .collect()
+        };
+        let (Some(mc), Some(kc)) = (reduce(m), reduce(k)) else {
+            continue;
+        };
+        let at = |c: &[u64], t: u64| c.iter().rev().fold(0, |acc, &x| fp.add(fp.mul(acc, t), x));
+        let roots: Vec<u64> = (0..p).filter(|&t| at(&mc, t) == 0).collect();
+        if roots.len() as u64 != n {
+            continue;
+        }
+        let values: Vec<u64> = roots.iter().map(|&t| at(&kc, t)).collect();
+        if values.contains(&0) {
+            continue;
+        }
+        if values.iter().any(|&v| fp.pow(v, (p - 1) / 2) != 1) {
+            return true;
+        }
+        qualified += 1;
+        if qualified == SQUARE_TEST_PRIMES {
+            return false;
+        }
+    }
+    false
+}
+
+/// The primes searched by [`not_a_square_mod_primes`] lie below this bound (a search of a few
+/// million evaluations of the minimal polynomial at most).
+const SQUARE_TEST_PRIMES_BELOW: u64 = 4000;
+
+/// How many qualifying primes [`not_a_square_mod_primes`] tries before leaving the question open.
+const SQUARE_TEST_PRIMES: usize = 8;
 
 impl PartialEq for FieldElement {
     fn eq(&self, other: &FieldElement) -> bool {
@@ -273,11 +350,19 @@ impl From<Rational> for FieldElement {
 
 impl fmt::Display for FieldElement {
     /// The value as an [`Algebraic`] number: a rational, a radical where the display of
-    /// [`Algebraic`] finds one, else `Root(f, lo, hi) ≈ decimal`.
+    /// [`Algebraic`] finds one, else a polynomial in the field's named generator when it has
+    /// one ([`NumberField::named`]: `1/2 + 3/4*cos(pi/8)`), else `Root(f, lo, hi) ≈ decimal`.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self.to_rational() {
-            Some(q) => write!(f, "{q}"),
-            None => write!(f, "{}", self.to_algebraic()),
+        if let Some(q) = self.to_rational() {
+            return write!(f, "{q}");
+        }
+        let value = self.to_algebraic();
+        if let Some(text) = value.radical_form() {
+            return f.write_str(&text);
+        }
+        match self.field.as_ref().and_then(|k| k.named(&self.poly)) {
+            Some(text) => f.write_str(&text),
+            None => write!(f, "{value}"),
         }
     }
 }
@@ -370,6 +455,36 @@ mod tests {
             FieldElement::from_i64(9).sqrt_in_field(),
             Some(FieldElement::from_i64(3))
         );
+    }
+
+    /// Square roots in the degree-12 field of cos(pi/8) and cos(2 pi/7): the prime test refutes
+    /// non-squares, never a square, and the answers agree with the square roots of the values.
+    #[test]
+    fn square_roots_in_a_field_of_degree_twelve() {
+        let pe = super::super::primitive_element(&[alg("cos(pi/8)"), alg("cos(2*pi/7)")]).unwrap();
+        assert_eq!(pe.field.degree(), 12);
+        let f = Arc::new(pe.field);
+        let c8 = FieldElement::new(&f, &pe.polys[0]);
+        let c7 = FieldElement::new(&f, &pe.polys[1]);
+        // A sum of squares that is no square, as in plane_plane's unit direction.
+        let six_minus = FieldElement::from_i64(6) - c8.clone() * FieldElement::from_i64(7);
+        let k = FieldElement::from_i64(4) + six_minus.square() + c7.square();
+        assert!(not_a_square_mod_primes(&f, &k.poly));
+        assert_eq!(k.sqrt_in_field(), None);
+        assert!(k.to_algebraic().sqrt().unwrap().degree() > 1);
+        // 3 is no square (sqrt 3 is not in the field), 2 is (4 cos(pi/8)^2 - 2 = sqrt 2).
+        let three = FieldElement::new(&f, &UPoly::constant(Rational::from_integer(3)));
+        assert_eq!(three.sqrt_in_field(), None);
+        let two = FieldElement::new(&f, &UPoly::constant(Rational::from_integer(2)));
+        let s2 = c8.square() * FieldElement::from_i64(4) - FieldElement::from_i64(2);
+        assert_eq!(two.sqrt_in_field(), Some(s2));
+        // A square is never refuted, and its root is the positive one.
+        let h = FieldElement::one() + &c8 - c7.clone() * FieldElement::from_i64(3);
+        let h2 = h.square();
+        assert!(!not_a_square_mod_primes(&f, &h2.poly));
+        let root = h2.sqrt_in_field().expect("a square");
+        assert_eq!(root.to_algebraic(), h2.to_algebraic().sqrt().unwrap());
+        assert!(root == h || root == h.neg_ref());
     }
 
     #[test]

@@ -30,6 +30,7 @@ use super::Algebraic;
 use crate::univariate::UPoly;
 use crate::Rational;
 use exactcheck_core::limits::{self, LimitError};
+use exactcheck_core::linalg::Matrix;
 use exactcheck_core::Ring;
 
 /// The field `Q(theta)`: see the [module documentation](self).
@@ -39,6 +40,49 @@ pub struct NumberField {
     generator: Algebraic,
     /// Its minimal polynomial, monic.
     modulus: UPoly,
+    /// A number of the field that generates it, with the name the user wrote for it, in which
+    /// elements are printed ([`NumberField::named`]).
+    name: Option<GeneratorName>,
+}
+
+/// A generator `a = p(theta)` of the field under the name the user wrote for it (`cos(pi/8)`).
+#[derive(Clone, Debug)]
+struct GeneratorName {
+    /// The name, parenthesized unless it is a number or a call (`cos(pi/8)`, `sqrt(2)`).
+    text: String,
+    /// Column `j` holds the coefficients in `theta` of `a^j`, `j < n`: invertible, as `a`
+    /// generates the field.
+    powers: Matrix<Rational>,
+}
+
+/// `text` as a factor of a product: itself when it is a name, a number or one call
+/// (`cos(pi/8)`), else in parentheses (`(1 + sqrt(2))`).
+fn as_factor(text: &str) -> String {
+    let t = text.trim();
+    let word = |s: &str| {
+        !s.is_empty()
+            && s.chars()
+                .all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '.')
+    };
+    let call = t.find('(').is_some_and(|open| {
+        word(&t[..open]) && t.ends_with(')') && {
+            // The parenthesis opened after the name closes at the end.
+            let mut depth = 0i32;
+            t[open..].char_indices().all(|(i, c)| {
+                match c {
+                    '(' => depth += 1,
+                    ')' => depth -= 1,
+                    _ => {}
+                }
+                depth > 0 || open + i == t.len() - 1
+            })
+        }
+    });
+    if word(t) || call {
+        t.to_string()
+    } else {
+        format!("({t})")
+    }
 }
 
 /// Why no primitive element was built.
@@ -68,7 +112,69 @@ impl NumberField {
         Ok(NumberField {
             generator: theta,
             modulus,
+            name: None,
         })
+    }
+
+    /// The field with its elements printed as polynomials in the number `a = p(theta)` under
+    /// the name `text` the user wrote for it ([`NumberField::named`]); `None` when `a` does not
+    /// generate the field (its powers below the degree are linearly dependent).
+    pub fn with_name(mut self, text: &str, p: &UPoly) -> Option<NumberField> {
+        let n = self.degree();
+        if n < 2 {
+            return None;
+        }
+        let mut powers = Matrix::zeros(n, n);
+        let mut power = UPoly::one();
+        for j in 0..n {
+            for i in 0..n {
+                powers.set(i, j, power.coeff(i));
+            }
+            power = self.mul(&power, p);
+        }
+        if powers.rank() < n {
+            return None;
+        }
+        self.name = Some(GeneratorName {
+            text: as_factor(text),
+            powers,
+        });
+        Some(self)
+    }
+
+    /// The element `p(theta)` as a polynomial in the named generator
+    /// ([`NumberField::with_name`]), `1/2 + 3/4*cos(pi/8) - cos(pi/8)^3`, in the expression
+    /// syntax (it reads back as the same number); `None` when the field has no name.
+    pub fn named(&self, p: &UPoly) -> Option<String> {
+        let name = self.name.as_ref()?;
+        let p = self.reduce(p);
+        let c: Vec<Rational> = (0..self.degree()).map(|i| p.coeff(i)).collect();
+        let d = name.powers.solve(&c).ok()??;
+        let mut out = String::new();
+        for (j, dj) in d.iter().enumerate() {
+            if dj.is_zero() {
+                continue;
+            }
+            let negative = dj.signum() == exactcheck_core::Sign::Negative;
+            let magnitude = if negative { dj.neg_ref() } else { dj.clone() };
+            let power = match j {
+                0 => String::new(),
+                1 => name.text.clone(),
+                _ => format!("{}^{j}", name.text),
+            };
+            let term = match (j, magnitude.is_one()) {
+                (0, _) => magnitude.to_string(),
+                (_, true) => power,
+                (_, false) => format!("{magnitude}*{power}"),
+            };
+            match (out.is_empty(), negative) {
+                (true, false) => out.push_str(&term),
+                (true, true) => out.push_str(&format!("-{term}")),
+                (false, false) => out.push_str(&format!(" + {term}")),
+                (false, true) => out.push_str(&format!(" - {term}")),
+            }
+        }
+        Some(if out.is_empty() { "0".to_string() } else { out })
     }
 
     /// The generator `theta`.
@@ -148,7 +254,7 @@ impl NumberField {
     /// polynomial in the generator, when `g` (the minimal polynomial of `b`) and `h` (a
     /// polynomial over the field in `y`, given by its coefficients from the constant up) have
     /// exactly the one common root `b`: the root of their linear gcd. `None` otherwise.
-    fn common_root(&self, g: &UPoly, h: &[UPoly]) -> Option<UPoly> {
+    pub(super) fn common_root(&self, g: &UPoly, h: &[UPoly]) -> Option<UPoly> {
         let g: Vec<UPoly> = g.coeffs().iter().cloned().map(UPoly::constant).collect();
         let d = self.gcd(g, h.to_vec());
         // Monic and linear: y + d0, so the root is -d0.
@@ -368,6 +474,48 @@ mod tests {
         check(&["sqrt(2)", "sqrt(2 + sqrt(2))", "cos(pi/8)"], 4);
         check(&["cos(2*pi/7)", "cos(4*pi/7)"], 3);
         check(&["cos(2*pi/7)", "sqrt(2)"], 6);
+    }
+
+    /// Elements print as polynomials in a named generator, and the text reads back as the
+    /// same number (evaluated by the expression parser, an independent path).
+    #[test]
+    fn elements_print_in_a_named_generator() {
+        // sqrt(2) first: the primitive element is sqrt(2) + k cos(pi/8), not cos(pi/8).
+        let numbers = [alg("sqrt(2)"), alg("cos(pi/8)")];
+        let pe = primitive_element(&numbers).unwrap();
+        assert_eq!(pe.field.degree(), 4);
+        assert!(pe
+            .field
+            .clone()
+            .with_name("sqrt(2)", &pe.polys[0])
+            .is_none());
+        let k = pe
+            .field
+            .clone()
+            .with_name("cos(pi/8)", &pe.polys[1])
+            .unwrap();
+        let c = &pe.polys[1];
+        let half = Rational::new(1, 2).unwrap();
+        let three_quarters = Rational::new(3, 4).unwrap();
+        let e = UPoly::constant(half).add_ref(&(c.clone() * &three_quarters));
+        assert_eq!(k.named(&e).unwrap(), "1/2 + 3/4*cos(pi/8)");
+        let cube = k.mul(&k.mul(c, c), c).neg_ref();
+        assert_eq!(k.named(&cube).unwrap(), "-cos(pi/8)^3");
+        assert_eq!(k.named(&pe.polys[0]).unwrap(), "-2 + 4*cos(pi/8)^2");
+        assert_eq!(k.named(&UPoly::zero()).unwrap(), "0");
+        assert!(pe.field.named(&e).is_none());
+        for p in [e, cube, pe.polys[0].clone(), k.mul(&pe.polys[0], c)] {
+            let text = k.named(&p).unwrap();
+            assert_eq!(alg(&text), k.value(&p), "{text}");
+        }
+        // A name that is not one call is parenthesized.
+        let q = NumberField::new(alg("1 + cos(2*pi/7)")).unwrap();
+        let q = q.with_name("1 + cos(2*pi/7)", &UPoly::x()).unwrap();
+        let sq = q.mul(&UPoly::x(), &UPoly::x());
+        assert_eq!(q.named(&sq).unwrap(), "(1 + cos(2*pi/7))^2");
+        assert_eq!(as_factor("sqrt(2)*sqrt(3)"), "(sqrt(2)*sqrt(3))");
+        assert_eq!(as_factor(" cos(pi/8) "), "cos(pi/8)");
+        assert_eq!(as_factor("(1)+(2)"), "((1)+(2))");
     }
 
     #[test]

@@ -66,7 +66,7 @@ pub use element::FieldElement;
 pub use field::{primitive_element, FieldError, NumberField, PrimitiveElement};
 pub use trig::TrigError;
 
-use crate::coefficient::{Coefficient, Trig};
+use crate::coefficient::{Coefficient, Trig, TrigRefusal};
 use crate::univariate::{RootInterval, UPoly};
 use crate::Rational;
 use exactcheck_core::limits::{self, LimitError};
@@ -404,11 +404,12 @@ impl Coefficient for Algebraic {
     /// Every rational multiple of pi: [`Algebraic::cos_pi`], [`Algebraic::sin_pi`],
     /// [`Algebraic::tan_pi`]; a multiple whose numerator or denominator does not fit an `i64`
     /// has a degree past every limit.
-    fn trig_of_pi(r: &Rational, which: Trig) -> Option<Result<Self, String>> {
+    fn trig_of_pi(r: &Rational, which: Trig) -> Option<Result<Self, TrigRefusal>> {
         let (Some(p), Some(q)) = (r.numer().to_i64(), r.denom().to_i64()) else {
-            return Some(Err(limits::ALGEBRAIC_DEGREE
-                .exceeded(format!("more than {}", limits::ALGEBRAIC_DEGREE.get()))
-                .to_string()));
+            return Some(Err(TrigRefusal::Limit(
+                limits::ALGEBRAIC_DEGREE
+                    .exceeded(format!("more than {}", limits::ALGEBRAIC_DEGREE.get())),
+            )));
         };
         let v = match which {
             Trig::Cos => Algebraic::cos_pi(p, q),
@@ -418,9 +419,10 @@ impl Coefficient for Algebraic {
         Some(v.map_err(|e| match e {
             TrigError::TanUndefined { .. } => {
                 let angle = crate::coefficient::angle_text(r);
-                format!("tan({angle}) is undefined: cos({angle}) = 0")
+                TrigRefusal::Why(format!("tan({angle}) is undefined: cos({angle}) = 0"))
             }
-            other => other.to_string(),
+            TrigError::Limit(l) => TrigRefusal::Limit(l),
+            other => TrigRefusal::Why(other.to_string()),
         }))
     }
 }

@@ -439,3 +439,43 @@ fn a_number_field_takes_the_checked_minimal_polynomial() {
     assert_eq!(m.irreducible_factors().unwrap(), vec![m.clone()]);
     assert_eq!(NumberField::new(v).unwrap().degree(), 8);
 }
+
+/// The degree refusal of `cos(2*pi/q)` is the limit's own error, carried by the expression
+/// error as a limit (not as words), with the call's name and position in its message.
+#[test]
+fn the_trig_degree_refusal_is_a_typed_limit() {
+    use crate::expr::{parse_expr, trig_constant, ExprError, TrigRefusal};
+    let e = parse_expr("1 + cos(2*pi/1009)").unwrap();
+    let err = e.eval_constant::<Algebraic>().unwrap_err();
+    let limit = err.limit().expect("a limit error");
+    assert!(std::ptr::eq(limit.limit, &limits::ALGEBRAIC_DEGREE));
+    assert_eq!(limit.actual, "504");
+    assert!(
+        matches!(err, ExprError::CallLimit { pos: 4, .. }),
+        "{err:?}"
+    );
+    assert!(
+        err.to_string().starts_with(
+            "cos at 4: degree of an algebraic number exceeds the limit algebraic-degree"
+        ),
+        "{err}"
+    );
+    // A numerator past i64 is past every degree too; tan at pi/2 is no limit.
+    let huge = Rational::new(1, 3).unwrap() * Rational::from(BigInt::from(10).pow(30));
+    let r = huge.recip().unwrap();
+    assert!(matches!(
+        trig_constant::<Algebraic>(&r, Trig::Cos),
+        Err(TrigRefusal::Limit(_))
+    ));
+    let half = Rational::new(1, 2).unwrap();
+    assert!(matches!(
+        trig_constant::<Algebraic>(&half, Trig::Tan),
+        Err(TrigRefusal::Why(w)) if w.contains("undefined")
+    ));
+    // Other errors carry no limit.
+    let bad = parse_expr("sqrt(-2)")
+        .unwrap()
+        .eval_constant::<Algebraic>()
+        .unwrap_err();
+    assert!(bad.limit().is_none(), "{bad}");
+}

@@ -196,7 +196,7 @@ pub fn first_reserved<'a>(exprs: impl IntoIterator<Item = &'a Expr>) -> Option<&
 }
 pub use trig::{
     angle_of, angles, cos_name, describe_point, has_trig, sin_name, trig_constant, Angle, Trig,
-    TRIG_DENOMINATORS,
+    TrigRefusal, TRIG_DENOMINATORS,
 };
 
 /// The trigonometric functions (`sin`, `cos`, `tan` of an angle: an integer combination of angle
@@ -474,6 +474,18 @@ pub enum ExprError {
         /// Which limit, its value and what was found.
         error: LimitError,
     },
+    /// A named limit exceeded by the value of a function call: `cos(2*pi/1009)` has degree 504,
+    /// past `algebraic-degree`. One line, e.g. `cos at 0: degree of an algebraic number exceeds
+    /// the limit algebraic-degree = 64 (found 504; raise it with --limit algebraic-degree=N)`.
+    #[error("{name} at {pos}: {error}")]
+    CallLimit {
+        /// Byte position of the call.
+        pos: usize,
+        /// The function.
+        name: String,
+        /// Which limit, its value and what was found.
+        error: LimitError,
+    },
 }
 
 impl ExprError {
@@ -494,7 +506,17 @@ impl ExprError {
             | ExprError::NegativeRadicand { pos, .. }
             | ExprError::NoSqrt { pos, .. }
             | ExprError::Unrepresentable { pos, .. }
-            | ExprError::Limit { pos, .. } => *pos,
+            | ExprError::Limit { pos, .. }
+            | ExprError::CallLimit { pos, .. } => *pos,
+        }
+    }
+
+    /// The limit exceeded, for [`ExprError::Limit`] and [`ExprError::CallLimit`]: callers tell
+    /// a limit from bad input by this, not by the message.
+    pub fn limit(&self) -> Option<&LimitError> {
+        match self {
+            ExprError::Limit { error, .. } | ExprError::CallLimit { error, .. } => Some(error),
+            _ => None,
         }
     }
 }

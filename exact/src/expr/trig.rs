@@ -28,7 +28,7 @@ use crate::ratfun::{poly_derivative, RatFun};
 use exactcheck_core::Field;
 use num_traits::{ToPrimitive, Zero};
 
-pub use crate::coefficient::Trig;
+pub use crate::coefficient::{Trig, TrigRefusal};
 
 /// The name of the variable standing for the cosine of the angle `angle`: `cos(x)`.
 pub fn cos_name(angle: &str) -> String {
@@ -159,12 +159,36 @@ pub const TRIG_DENOMINATORS: &[u32] = &[1, 2, 3, 4, 6, 12];
 /// ```
 ///
 /// # Errors
-/// The reason in words: a denominator outside [`TRIG_DENOMINATORS`], `tan` at a zero of the
-/// cosine, a square root `C` does not have (over [`Rational`], `cos(pi/4)`).
-pub fn trig_constant<C: Coefficient>(r: &Rational, which: Trig) -> Result<C, String> {
+/// [`TrigRefusal::Limit`] for a value past a limit (the degree of `cos(2*pi/1009)`);
+/// [`TrigRefusal::Why`] with the reason in words: a denominator outside [`TRIG_DENOMINATORS`],
+/// `tan` at a zero of the cosine, a square root `C` does not have (over [`Rational`],
+/// `cos(pi/4)`).
+pub fn trig_constant<C: Coefficient>(r: &Rational, which: Trig) -> Result<C, TrigRefusal> {
     if let Some(v) = C::trig_of_pi(r, which) {
         return v;
     }
+    table_constant(r, which).map_err(TrigRefusal::Why)
+}
+
+/// The error of the call `name` at `pos` whose constant angle has no value: a limit stays a
+/// limit ([`ExprError::CallLimit`]), every other reason is a bad call.
+fn refused_call(pos: usize, name: &str, refusal: TrigRefusal) -> ExprError {
+    match refusal {
+        TrigRefusal::Limit(error) => ExprError::CallLimit {
+            pos,
+            name: name.to_string(),
+            error,
+        },
+        TrigRefusal::Why(why) => ExprError::BadCall {
+            pos,
+            name: name.to_string(),
+            why,
+        },
+    }
+}
+
+/// [`trig_constant`] from the built-in table of angles `(p/q) pi`, `q` in [`TRIG_DENOMINATORS`].
+fn table_constant<C: Coefficient>(r: &Rational, which: Trig) -> Result<C, String> {
     let shown = angle_text(r);
     let twelfths = r * &Rational::from_integer(12);
     if !twelfths.is_integer() {
@@ -365,11 +389,7 @@ pub(super) fn cos_sin<C: Coefficient>(
 ) -> Result<(Poly<C>, Poly<C>), ExprError> {
     let angle = linear_angle(call, name, args)?;
     let constant = |which| {
-        trig_constant::<C>(&angle.pi, which).map_err(|why| ExprError::BadCall {
-            pos: call.pos,
-            name: name.to_string(),
-            why,
-        })
+        trig_constant::<C>(&angle.pi, which).map_err(|why| refused_call(call.pos, name, why))
     };
     let (c0, s0) = (constant(Trig::Cos)?, constant(Trig::Sin)?);
     let mut acc: Option<(Poly<C>, Poly<C>)> = None;
@@ -486,11 +506,7 @@ pub(super) fn trig_value<C: Coefficient>(
             hint: "",
         });
     }
-    trig_constant::<C>(&angle.pi, which).map_err(|why| ExprError::BadCall {
-        pos: call.pos,
-        name: which.name().to_string(),
-        why,
-    })
+    trig_constant::<C>(&angle.pi, which).map_err(|why| refused_call(call.pos, which.name(), why))
 }
 
 // ------------------------------------------------------------------------------ derivatives
@@ -588,7 +604,10 @@ mod tests {
             match trig_constant::<Radical>(&r, Trig::Tan) {
                 Ok(t) => assert!((t.to_f64() - x.tan()).abs() < 1e-9, "tan({n} pi/12)"),
                 Err(why) => {
-                    assert!(c.is_zero() && why.contains("undefined"), "{why}");
+                    assert!(
+                        c.is_zero() && why.to_string().contains("undefined"),
+                        "{why}"
+                    );
                 }
             }
         }
@@ -596,9 +615,13 @@ mod tests {
 
     #[test]
     fn constants_refused_outside_the_field() {
-        let e = trig_constant::<Radical>(&Rational::new(2, 5).unwrap(), Trig::Sin).unwrap_err();
+        let e = trig_constant::<Radical>(&Rational::new(2, 5).unwrap(), Trig::Sin)
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("q = 5"), "{e}");
-        let e = trig_constant::<Rational>(&Rational::new(1, 4).unwrap(), Trig::Cos).unwrap_err();
+        let e = trig_constant::<Rational>(&Rational::new(1, 4).unwrap(), Trig::Cos)
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("sqrt(2)"), "{e}");
         let half: Rational = trig_constant(&Rational::new(1, 6).unwrap(), Trig::Sin).unwrap();
         assert_eq!(half, Rational::new(1, 2).unwrap());
