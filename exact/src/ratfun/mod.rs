@@ -53,7 +53,7 @@ mod gcd;
 mod tests;
 
 pub use coprime::certified_coprime;
-use coprime::div_image_possible;
+use coprime::{certified_square_free, div_image_possible};
 pub use factored::{Fraction, MAX_FACTORS};
 pub use gcd::poly_gcd;
 pub(crate) use gcd::{content_in, gcd_capped, GcdError};
@@ -87,7 +87,9 @@ impl<C: Field> RatFun<C> {
     }
 
     /// The divisors met while building the fraction (monic, non-constant, each once): the
-    /// expression is defined where none of them vanishes.
+    /// expression is defined where none of them vanishes. Every zero of the denominator is a
+    /// zero of one of them (each operation records the divisor whose factors it puts in the
+    /// denominator), so they exclude the poles.
     pub fn conditions(&self) -> &[Poly<C>] {
         &self.conditions
     }
@@ -325,7 +327,8 @@ impl<C: Field> RatFun<C> {
 
 /// Adds the condition `p != 0` to `conditions` (monic polynomials whose zeros are excluded)
 /// without repeating a zero already excluded: `p` is reduced to its square-free part
-/// `p / gcd(p, dp/dx_1, ..., dp/dx_n)` (exact over a field of characteristic 0), and the common
+/// `p / gcd(p, dp/dx_1, ..., dp/dx_n)` (exact over a field of characteristic 0; `p` itself,
+/// without any derivative, when its images modulo a prime prove it square-free), and the common
 /// factor with every condition already listed is divided out; what remains, if not constant,
 /// is added. `(t + 1)^2` after `t + 1` adds nothing, `x^2 - 1` after `x - 1` adds `x + 1`. When
 /// a gcd exceeds a limit, `p` is added as it is (the same zeros, less tidy).
@@ -355,7 +358,12 @@ pub fn push_condition<C: Field>(conditions: &mut Vec<Poly<C>>, p: &Poly<C>) {
     }
     let rest = &rest;
     let tidy = || -> Result<Poly<C>, SizeError> {
-        let mut g = rest.clone();
+        // A square-free certificate modulo a prime spares the derivatives and their gcds.
+        let mut g = if certified_square_free(rest) == Some(true) {
+            Poly::one()
+        } else {
+            rest.clone()
+        };
         for v in rest.variables() {
             if g.is_constant() {
                 break;
