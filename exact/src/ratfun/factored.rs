@@ -27,7 +27,7 @@
 //! factor list grows past [`MAX_FACTORS`]: the caller then takes the route through
 //! [`super::RatFun`].
 
-use super::{poly_derivative, push_condition, RatFun};
+use super::{cancel, poly_derivative, push_condition, RatFun};
 use crate::poly::{Poly, Var};
 use exactcheck_core::{Field, Ring};
 
@@ -94,6 +94,22 @@ impl<C: Field> Fraction<C> {
     /// The conditions, consuming the fraction.
     pub fn into_conditions(self) -> Vec<Poly<C>> {
         self.conditions()
+    }
+
+    /// The rational function in lowest terms with the conditions of the divisors met: the
+    /// numerator over the product of the factors, cancelled with the factors as the divisors
+    /// to try first (as [`RatFun`]'s operations cancel). Lowest terms with a monic denominator
+    /// are unique, so this is the [`RatFun`] the same operations build step by step. `None`
+    /// past a limit.
+    pub fn to_ratfun(&self) -> Option<RatFun<C>> {
+        let den = times(&Poly::one(), &self.factors)?;
+        let hints: Vec<Poly<C>> = self.factors.iter().map(|(f, _)| f.clone()).collect();
+        let (num, den) = cancel(self.num.clone(), den, &hints).ok()?;
+        Some(RatFun {
+            num,
+            den,
+            conditions: self.conditions(),
+        })
     }
 
     /// The terms of the numerator and of the factors together: the size that decides which of
@@ -293,8 +309,8 @@ mod tests {
         parse_poly(&text.join(" + "), vars).unwrap()
     }
 
-    /// The two paths agree: equal values (zero cross residual against the reduced fraction)
-    /// and equal conditions.
+    /// The two paths agree: equal values (zero cross residual against the reduced fraction),
+    /// equal conditions, and the fraction reduced at the end is the rational function.
     fn agree(f: &Fraction<Rational>, r: &RatFun<Rational>) {
         let reduced = Fraction::from_ratfun(r);
         assert!(
@@ -302,6 +318,7 @@ mod tests {
             "{f:?} vs {r:?}"
         );
         assert_eq!(f.conditions(), r.conditions(), "{f:?} vs {r:?}");
+        assert_eq!(f.to_ratfun().as_ref(), Some(r), "{f:?} vs {r:?}");
     }
 
     #[test]
@@ -327,6 +344,19 @@ mod tests {
             q.conditions()[0],
             parse_poly::<Rational>("x - 1", &mut vars).unwrap()
         );
+    }
+
+    #[test]
+    fn a_divisor_keeps_its_integer_coefficients_and_repeats_are_reduced_once() {
+        let mut vars = Vars::from_names(["x", "y"]);
+        let d = parse_poly::<Rational>("2 x^2 + 2 y^2 + 4", &mut vars).unwrap();
+        let inv = Fraction::from_poly(d.clone()).recip().unwrap();
+        assert_eq!(inv.factors(), &[(d.clone(), 1)]);
+        // The same denominator in two terms: one factor, one condition, made monic.
+        let x = Fraction::from_poly(parse_poly::<Rational>("x", &mut vars).unwrap());
+        let s = x.mul(&inv).unwrap().add(&inv, false).unwrap();
+        assert_eq!(s.factors().len(), 1);
+        assert_eq!(s.conditions(), vec![d.make_monic()]);
     }
 
     #[test]
