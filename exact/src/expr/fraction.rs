@@ -253,7 +253,8 @@ fn total_derivative_fraction<C: Field>(
 /// Both sides are first converted without cancellation ([`Expr::to_fraction`]) and
 /// cross-multiplied once ([`Fraction::cross_residual`]). When that residual vanishes the two
 /// are the same rational function, so they have the same lowest terms: only the smaller side
-/// is reduced ([`Expr::to_ratfun`]), and the other side is that fraction with its own divisors
+/// is reduced ([`Fraction::to_ratfun`], from the fraction already built, which gives what
+/// [`Expr::to_ratfun`] gives), and the other side is that fraction with its own divisors
 /// ([`RatFun::with_conditions`]). A true identity then costs about what its cleared numerator
 /// costs as a polynomial identity, instead of an exact division of every summed numerator by
 /// the common factors of its denominator. Otherwise (and whenever the cheap conversion gives
@@ -275,12 +276,21 @@ pub fn ratfun_sides<C: Coefficient + Field>(
             if !l.cross_residual(&r)?.is_zero() {
                 return None;
             }
+            // The smaller side reduced as built, held to the limits `to_ratfun` checks.
+            let fits = |f: &RatFun<C>, pos: usize| {
+                [f.numerator(), f.denominator()].iter().all(|p| {
+                    limits::TERMS.check_usize(p.len()).is_ok()
+                        && p.coefficients()
+                            .iter()
+                            .all(|c| check_constant(c, pos).is_ok())
+                })
+            };
             if l.terms() <= r.terms() {
-                let reduced = lhs.to_ratfun::<C>(vars).ok()?;
+                let reduced = l.to_ratfun().filter(|f| fits(f, lhs.pos))?;
                 let other = reduced.with_conditions(r.into_conditions());
                 Some((reduced, other))
             } else {
-                let reduced = rhs.to_ratfun::<C>(vars).ok()?;
+                let reduced = r.to_ratfun().filter(|f| fits(f, rhs.pos))?;
                 let other = reduced.with_conditions(l.into_conditions());
                 Some((other, reduced))
             }

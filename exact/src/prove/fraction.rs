@@ -19,8 +19,8 @@ pub struct FractionIdentity<C: Ring> {
     pub residual: Poly<C>,
     /// `den(L) den(R) / g`, by which `residual` is `L - R` multiplied.
     pub denominator: Poly<C>,
-    /// The divisors met in `L` and `R` and their denominators (monic, non-constant, each
-    /// once): `L = R` is meant where none vanishes.
+    /// The divisors met in `L` and `R` (monic, non-constant, each once; they include the
+    /// zeros of the denominators): `L = R` is meant where none vanishes.
     pub conditions: Vec<Poly<C>>,
 }
 
@@ -42,13 +42,10 @@ impl<C: Field> FractionIdentity<C> {
             let dg = div_exact(d, &g).expect("the gcd divides the denominator");
             (a.try_mul(&dg)?.sub_ref(&c.try_mul(&bg)?), b.try_mul(&dg)?)
         };
-        let mut conditions: Vec<Poly<C>> = Vec::new();
-        for p in lhs
-            .conditions()
-            .iter()
-            .chain(rhs.conditions())
-            .chain([b, d])
-        {
+        // Each side's conditions are already tidy among themselves and cover the zeros of its
+        // denominator ([`RatFun::conditions`]): only those of the right side are merged in.
+        let mut conditions = lhs.conditions().to_vec();
+        for p in rhs.conditions() {
             push_condition(&mut conditions, p);
         }
         Ok(FractionIdentity {

@@ -2,24 +2,32 @@
 //! the cheap way to decide whether two rational expressions are equal.
 //!
 //! `N1/D1 = N2/D2` holds as rational functions exactly when `N1 D2 - N2 D1 = 0`: the verdict
-//! needs no lowest terms. A [`Fraction`] is `num / (f_1^e_1 ... f_k^e_k)` with the `f_i` monic,
-//! non-constant and pairwise different (compared by equality, never by a gcd). A sum takes the
+//! needs no lowest terms. A [`Fraction`] is `num / (f_1^e_1 ... f_k^e_k)` with the `f_i`
+//! non-constant and pairwise different (compared by equality, never by a gcd), each as it was
+//! divided by: not made monic, so the integer coefficients of a written denominator stay
+//! integers (scaling to a monic factor would make every product with it a product of
+//! fractions). A factor met twice with different constant multiples is then kept twice, which
+//! costs a larger product but no wrong result. A sum takes the
 //! least common multiple of the two factor lists structurally (the larger exponent of equal
 //! factors) and multiplies each numerator by the factors it misses; a product adds the
-//! exponents; a power multiplies them; a reciprocal makes the numerator (monic) the one factor
+//! exponents; a power multiplies them; a reciprocal makes the numerator the one factor
 //! and the expanded factors the numerator; a derivative raises the exponent of every factor
 //! that contains the variable by one (the quotient rule for a product of powers). Nothing is
 //! cancelled, so the operations cost products and sums only, where [`super::RatFun`] divides
 //! every numerator by the common factors it finds. [`Fraction::cross_residual`] then
 //! cross-multiplies two fractions once.
 //!
-//! The divisors met are recorded exactly as [`super::RatFun`] records them ([`push_condition`]
-//! in the same order), so a fraction's conditions are those of the rational function the same
-//! operations build. Every operation answers `None` when a product passes a limit or the
+//! The divisors met are kept as met (each once by equality, in order) and turned into
+//! conditions only when asked ([`Fraction::conditions`]): [`push_condition`] on them in that
+//! order, which gives the conditions [`super::RatFun`] records step by step (each is the
+//! square-free part of its divisor without the factors of the ones before, whichever way the
+//! lists were merged), so a fraction's conditions are those of the rational function the same
+//! operations build. A divisor met in several places (the same denominator in two terms, or in
+//! both sides of an identity) is then reduced once, not at every operation. Every operation answers `None` when a product passes a limit or the
 //! factor list grows past [`MAX_FACTORS`]: the caller then takes the route through
 //! [`super::RatFun`].
 
-use super::{poly_derivative, push_condition, RatFun};
+use super::{cancel, poly_derivative, push_condition, RatFun};
 use crate::poly::{Poly, Var};
 use exactcheck_core::{Field, Ring};
 
@@ -32,10 +40,11 @@ pub const MAX_FACTORS: usize = 16;
 pub struct Fraction<C: Ring> {
     num: Poly<C>,
     factors: Vec<(Poly<C>, u32)>,
-    conditions: Vec<Poly<C>>,
+    /// The divisors met: non-constant, pairwise different, in the order met.
+    divisors: Vec<Poly<C>>,
 }
 
-/// A denominator: monic, non-constant, pairwise different factors with exponents at least 1.
+/// A denominator: non-constant, pairwise different factors with exponents at least 1.
 type Factors<C> = [(Poly<C>, u32)];
 
 impl<C: Field> Fraction<C> {
@@ -44,7 +53,7 @@ impl<C: Field> Fraction<C> {
         Fraction {
             num: p,
             factors: Vec::new(),
-            conditions: Vec::new(),
+            divisors: Vec::new(),
         }
     }
 
@@ -58,7 +67,7 @@ impl<C: Field> Fraction<C> {
             } else {
                 vec![(den.clone(), 1)]
             },
-            conditions: r.conditions().to_vec(),
+            divisors: r.conditions().to_vec(),
         }
     }
 
@@ -72,14 +81,35 @@ impl<C: Field> Fraction<C> {
         &self.factors
     }
 
-    /// The divisors met, as [`RatFun::conditions`].
-    pub fn conditions(&self) -> &[Poly<C>] {
-        &self.conditions
+    /// The conditions of the divisors met, as [`RatFun::conditions`] (see the module
+    /// documentation).
+    pub fn conditions(&self) -> Vec<Poly<C>> {
+        let mut conditions = Vec::with_capacity(self.divisors.len());
+        for d in &self.divisors {
+            push_condition(&mut conditions, d);
+        }
+        conditions
     }
 
     /// The conditions, consuming the fraction.
     pub fn into_conditions(self) -> Vec<Poly<C>> {
-        self.conditions
+        self.conditions()
+    }
+
+    /// The rational function in lowest terms with the conditions of the divisors met: the
+    /// numerator over the product of the factors, cancelled with the factors as the divisors
+    /// to try first (as [`RatFun`]'s operations cancel). Lowest terms with a monic denominator
+    /// are unique, so this is the [`RatFun`] the same operations build step by step. `None`
+    /// past a limit.
+    pub fn to_ratfun(&self) -> Option<RatFun<C>> {
+        let den = times(&Poly::one(), &self.factors)?;
+        let hints: Vec<Poly<C>> = self.factors.iter().map(|(f, _)| f.clone()).collect();
+        let (num, den) = cancel(self.num.clone(), den, &hints).ok()?;
+        Some(RatFun {
+            num,
+            den,
+            conditions: self.conditions(),
+        })
     }
 
     /// The terms of the numerator and of the factors together: the size that decides which of
@@ -88,24 +118,27 @@ impl<C: Field> Fraction<C> {
         self.num.len() + self.factors.iter().map(|(f, _)| f.len()).sum::<usize>()
     }
 
-    /// A fraction of `num` over `factors` with `conditions`; zero has no factors, and a list
-    /// longer than [`MAX_FACTORS`] is `None`.
-    fn build(num: Poly<C>, factors: Vec<(Poly<C>, u32)>, conditions: Vec<Poly<C>>) -> Option<Self> {
+    /// A fraction of `num` over `factors` with the divisors `divisors`; zero has no factors,
+    /// and a list longer than [`MAX_FACTORS`] is `None`.
+    fn build(num: Poly<C>, factors: Vec<(Poly<C>, u32)>, divisors: Vec<Poly<C>>) -> Option<Self> {
         let factors = if num.is_zero() { Vec::new() } else { factors };
         (factors.len() <= MAX_FACTORS).then_some(Fraction {
             num,
             factors,
-            conditions,
+            divisors,
         })
     }
 
-    /// The conditions of `self`, then those of `o` added (the order of [`RatFun`]'s operations).
-    fn merged_conditions(&self, o: &Self) -> Vec<Poly<C>> {
-        let mut conditions = self.conditions.clone();
-        for c in &o.conditions {
-            push_condition(&mut conditions, c);
+    /// The divisors of `self`, then those of `o` not among them (the order of [`RatFun`]'s
+    /// operations).
+    fn merged_divisors(&self, o: &Self) -> Vec<Poly<C>> {
+        let mut divisors = self.divisors.clone();
+        for d in &o.divisors {
+            if !divisors.contains(d) {
+                divisors.push(d.clone());
+            }
         }
-        conditions
+        divisors
     }
 
     /// `self + o` (`o` negated when `minus`) over the structural least common multiple of the
@@ -115,7 +148,7 @@ impl<C: Field> Fraction<C> {
         let b = times(&o.num, &miss_b)?;
         let b = if minus { b.neg_ref() } else { b };
         let num = times(&self.num, &miss_a)?.add_ref(&b);
-        Self::build(num, lcm, self.merged_conditions(o))
+        Self::build(num, lcm, self.merged_divisors(o))
     }
 
     /// `-self`.
@@ -136,31 +169,40 @@ impl<C: Field> Fraction<C> {
                 None => factors.push((f.clone(), *e)),
             }
         }
-        Self::build(num, factors, self.merged_conditions(o))
+        Self::build(num, factors, self.merged_divisors(o))
     }
 
-    /// `1 / self`, recording the numerator as a condition; `None` for zero.
+    /// `1 / self`, recording the numerator as a divisor; `None` for zero.
     pub fn recip(&self) -> Option<Self> {
-        let (_, lc) = self.num.leading_term()?;
-        let inv = lc.inv().ok()?;
-        let mut conditions = self.conditions.clone();
-        push_condition(&mut conditions, &self.num);
-        let num = times(&Poly::constant(inv.clone()), &self.factors)?;
-        let factors = if self.num.is_constant() {
-            Vec::new()
-        } else {
-            vec![(self.num.scale(&inv), 1)]
+        if self.num.is_zero() {
+            return None;
+        }
+        let mut divisors = self.divisors.clone();
+        let (num, factors) = match self.num.constant_value() {
+            Some(c) => {
+                let inv = c.inv().ok()?;
+                (times(&Poly::constant(inv), &self.factors)?, Vec::new())
+            }
+            None => {
+                if !divisors.contains(&self.num) {
+                    divisors.push(self.num.clone());
+                }
+                (
+                    times(&Poly::one(), &self.factors)?,
+                    vec![(self.num.clone(), 1)],
+                )
+            }
         };
-        Self::build(num, factors, conditions)
+        Self::build(num, factors, divisors)
     }
 
-    /// `self^k` (`k` may be negative: then the numerator is recorded as a condition); `None`
+    /// `self^k` (`k` may be negative: then the numerator is recorded as a divisor); `None`
     /// for a negative power of zero.
     pub fn pow(&self, k: i64) -> Option<Self> {
         let base = if k < 0 { self.recip()? } else { self.clone() };
         let e = u32::try_from(k.unsigned_abs()).ok()?;
         if e == 0 {
-            return Self::build(Poly::one(), Vec::new(), base.conditions);
+            return Self::build(Poly::one(), Vec::new(), base.divisors);
         }
         let num = base.num.try_pow(e).ok()?;
         let factors = base
@@ -168,11 +210,11 @@ impl<C: Field> Fraction<C> {
             .iter()
             .map(|(f, x)| Some((f.clone(), x.checked_mul(e)?)))
             .collect::<Option<_>>()?;
-        Self::build(num, factors, base.conditions)
+        Self::build(num, factors, base.divisors)
     }
 
     /// The derivative in `v`: with `S` the factors containing `v`, `(N' prod_S h - N sum_S
-    /// e_h h' prod_(S - h) g) / (prod h^e prod_S h)`; the conditions stay.
+    /// e_h h' prod_(S - h) g) / (prod h^e prod_S h)`; the divisors stay.
     pub fn derivative(&self, v: Var) -> Option<Self> {
         let dn = poly_derivative(&self.num, v);
         let moving: Vec<usize> = (0..self.factors.len())
@@ -199,7 +241,7 @@ impl<C: Field> Fraction<C> {
         for &i in &moving {
             factors[i].1 = factors[i].1.checked_add(1)?;
         }
-        Self::build(num, factors, self.conditions.clone())
+        Self::build(num, factors, self.divisors.clone())
     }
 
     /// `self - o` over the structural least common multiple `M` of the denominators, times `M`:
@@ -267,8 +309,8 @@ mod tests {
         parse_poly(&text.join(" + "), vars).unwrap()
     }
 
-    /// The two paths agree: equal values (zero cross residual against the reduced fraction)
-    /// and equal conditions.
+    /// The two paths agree: equal values (zero cross residual against the reduced fraction),
+    /// equal conditions, and the fraction reduced at the end is the rational function.
     fn agree(f: &Fraction<Rational>, r: &RatFun<Rational>) {
         let reduced = Fraction::from_ratfun(r);
         assert!(
@@ -276,6 +318,7 @@ mod tests {
             "{f:?} vs {r:?}"
         );
         assert_eq!(f.conditions(), r.conditions(), "{f:?} vs {r:?}");
+        assert_eq!(f.to_ratfun().as_ref(), Some(r), "{f:?} vs {r:?}");
     }
 
     #[test]
@@ -301,6 +344,19 @@ mod tests {
             q.conditions()[0],
             parse_poly::<Rational>("x - 1", &mut vars).unwrap()
         );
+    }
+
+    #[test]
+    fn a_divisor_keeps_its_integer_coefficients_and_repeats_are_reduced_once() {
+        let mut vars = Vars::from_names(["x", "y"]);
+        let d = parse_poly::<Rational>("2 x^2 + 2 y^2 + 4", &mut vars).unwrap();
+        let inv = Fraction::from_poly(d.clone()).recip().unwrap();
+        assert_eq!(inv.factors(), &[(d.clone(), 1)]);
+        // The same denominator in two terms: one factor, one condition, made monic.
+        let x = Fraction::from_poly(parse_poly::<Rational>("x", &mut vars).unwrap());
+        let s = x.mul(&inv).unwrap().add(&inv, false).unwrap();
+        assert_eq!(s.factors().len(), 1);
+        assert_eq!(s.conditions(), vec![d.make_monic()]);
     }
 
     #[test]

@@ -36,6 +36,7 @@ mod factored;
 mod tests;
 
 pub use crate::poly::gcd::{certified_coprime, poly_gcd};
+use crate::poly::gcd::certified_square_free;
 pub use crate::poly::{div_exact, poly_derivative};
 pub use factored::{Fraction, MAX_FACTORS};
 
@@ -68,7 +69,9 @@ impl<C: Field> RatFun<C> {
     }
 
     /// The divisors met while building the fraction (monic, non-constant, each once): the
-    /// expression is defined where none of them vanishes.
+    /// expression is defined where none of them vanishes. Every zero of the denominator is a
+    /// zero of one of them (each operation records the divisor whose factors it puts in the
+    /// denominator), so they exclude the poles.
     pub fn conditions(&self) -> &[Poly<C>] {
         &self.conditions
     }
@@ -306,7 +309,8 @@ impl<C: Field> RatFun<C> {
 
 /// Adds the condition `p != 0` to `conditions` (monic polynomials whose zeros are excluded)
 /// without repeating a zero already excluded: `p` is reduced to its square-free part
-/// `p / gcd(p, dp/dx_1, ..., dp/dx_n)` (exact over a field of characteristic 0), and the common
+/// `p / gcd(p, dp/dx_1, ..., dp/dx_n)` (exact over a field of characteristic 0; `p` itself,
+/// without any derivative, when its images modulo a prime prove it square-free), and the common
 /// factor with every condition already listed is divided out; what remains, if not constant,
 /// is added. `(t + 1)^2` after `t + 1` adds nothing, `x^2 - 1` after `x - 1` adds `x + 1`. When
 /// a gcd exceeds a limit, `p` is added as it is (the same zeros, less tidy).
@@ -336,7 +340,12 @@ pub fn push_condition<C: Field>(conditions: &mut Vec<Poly<C>>, p: &Poly<C>) {
     }
     let rest = &rest;
     let tidy = || -> Result<Poly<C>, SizeError> {
-        let mut g = rest.clone();
+        // A square-free certificate modulo a prime spares the derivatives and their gcds.
+        let mut g = if certified_square_free(rest) == Some(true) {
+            Poly::one()
+        } else {
+            rest.clone()
+        };
         for v in rest.variables() {
             if g.is_constant() {
                 break;

@@ -283,3 +283,50 @@ proptest::proptest! {
         proptest::prop_assert_eq!(fast, slow);
     }
 }
+
+#[test]
+fn the_square_free_certificate_decides_the_clear_cases() {
+    let mut vars = Vars::from_names(["x", "y", "t"]);
+    assert_eq!(
+        certified_square_free(&p("x^2 + y^2 + 1", &mut vars)),
+        Some(true)
+    );
+    assert_eq!(certified_square_free(&p("t^2 + 1", &mut vars)), Some(true));
+    // A square, also one free of a variable of the polynomial, is never certified.
+    assert_eq!(
+        certified_square_free(&p("(x + y)^2 (x + 1)", &mut vars)),
+        Some(false)
+    );
+    assert_eq!(
+        certified_square_free(&p("y^2 (x + 1)", &mut vars)),
+        Some(false)
+    );
+    let r = crate::poly::Poly::<crate::Radical>::one();
+    assert_eq!(certified_square_free(&r), None);
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+
+    /// Against the derivative gcds: a certified polynomial has a constant gcd with each of its
+    /// partial derivatives, and one with a planted square factor is never certified.
+    #[test]
+    fn square_free_certificate_agrees_with_the_derivative_gcds(
+        ca in proptest::collection::vec(-3i64..=3, 6),
+        cf in proptest::collection::vec(-3i64..=3, 3),
+    ) {
+        let mut vars = Vars::from_names(["x", "y"]);
+        let monos = ["1", "x", "y", "x*y", "x^2", "y^2"];
+        let text: Vec<String> = ca.iter().zip(monos).map(|(c, m)| format!("({c})*{m}")).collect();
+        let a = p(&text.join(" + "), &mut vars);
+        let f = p(&format!("({})*x + ({})*y + ({})", cf[0], cf[1], cf[2]), &mut vars);
+        if certified_square_free(&a) == Some(true) {
+            for v in a.variables() {
+                proptest::prop_assert!(poly_gcd(&a, &poly_derivative(&a, v)).unwrap().is_constant());
+            }
+        }
+        if !a.is_zero() && !f.is_constant() {
+            proptest::prop_assert_eq!(certified_square_free(&a.mul_ref(&f).mul_ref(&f)), Some(false));
+        }
+    }
+}

@@ -186,6 +186,50 @@ pub fn certified_coprime<C: Field>(a: &Poly<C>, b: &Poly<C>) -> Option<bool> {
     Some(true)
 }
 
+/// Whether `p` is proved square-free (no factor of positive degree divides it twice) by its
+/// images modulo `2^61 - 1`: `Some(true)` when proved, `Some(false)` when not (it may have a
+/// repeated factor), `None` when the coefficients are not rational (the test does not apply).
+///
+/// Soundness: let `p = f^2 g` with `f` of positive degree in a variable `v` of `p`. With `phi`
+/// the substitution of [`certified_coprime`] into the image in `v`, `phi(p) = phi(f)^2 phi(g)`
+/// and its derivative in `v` are both multiples of `phi(f)`; when `phi(p)` keeps its degree in
+/// `v`, the leading coefficient of `f` (a factor of `p`'s) does not vanish, so `phi(f)` has
+/// positive degree and the gcd of `phi(p)` and `phi(p)'` is not constant. A gcd of degree 0 in
+/// every variable of `p`, each image keeping its degree, therefore leaves no such `f`. The
+/// derivative is that of the image (differentiation in `v` commutes with the substitution of
+/// the other variables and with the reduction modulo the prime), so no derivative over Q is
+/// computed.
+pub fn certified_square_free<C: Field>(p: &Poly<C>) -> Option<bool> {
+    let p = (p as &dyn Any).downcast_ref::<Poly<Rational>>()?;
+    if p.is_zero() {
+        return Some(false);
+    }
+    let vars = p.variables();
+    let n = vars.iter().map(|&v| v as usize + 1).max().unwrap_or(0);
+    let at = residues(n);
+    let Some(terms) = TermImages::new(p, &at) else {
+        return Some(false);
+    };
+    for v in vars {
+        let Some(f) = terms.image_in(p, v, &at) else {
+            return Some(false);
+        };
+        if f.last().is_none_or(ModP::is_zero) {
+            return Some(false);
+        }
+        let df: Vec<ModP> = f
+            .iter()
+            .enumerate()
+            .skip(1)
+            .map(|(i, c)| *c * ModP::from(i as u64))
+            .collect();
+        if gcd_degree_mod_p(f, df) != Some(0) {
+            return Some(false);
+        }
+    }
+    Some(true)
+}
+
 /// Whether `h` may divide `p` (rational coefficients): `false` when, in a variable of `h`, the
 /// image of `h` modulo the prime keeps its degree and does not divide the image of `p` (then
 /// `h` does not divide `p`, and the exact division need not be tried); `true` otherwise.

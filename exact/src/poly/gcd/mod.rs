@@ -27,7 +27,7 @@
 
 mod coprime;
 
-pub use coprime::certified_coprime;
+pub use coprime::{certified_coprime, certified_square_free};
 pub(crate) use coprime::div_image_possible;
 
 use super::{div_exact, Poly, SizeError, Var};
