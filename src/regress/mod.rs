@@ -585,13 +585,11 @@ fn text_run(args: &RegressArgs, fpcore: Option<&str>) -> Result<ExitCode, Error>
             2 => " and of 1 other entry".to_string(),
             n => format!(" and of {} other entries", n - 1),
         };
-        return Err(Error::Limit(
-            limit.exceeded(format!(
-                "more than {} in every stopped sample of '{}'{others}, which compared no sample",
-                limit.get(),
-                first.name
-            )),
-        ));
+        return Err(Error::Limit(limit.exceeded(format!(
+            "more than {} in every stopped sample of '{}'{others}, which compared no sample",
+            limit.get(),
+            first.name
+        ))));
     }
     Ok(sweep::exit_code(&entries))
 }

@@ -93,12 +93,13 @@ fn a_loop_value_past_its_size_limit_stops_the_exact_test() {
         )
     };
     assert_eq!(exact_values(&program(&text(8)), &[1.5]), vec![big(0, 1)]);
-    let stop = program(&text(20))
-        .eval_exact(&[exact_of(1.5)])
-        .unwrap_err();
+    let stop = program(&text(20)).eval_exact(&[exact_of(1.5)]).unwrap_err();
     assert_eq!(stop, ExactStop::LoopValueLimit);
     assert_eq!(stop.limit().map(|l| l.name()), Some("loop-value-bits"));
-    assert_eq!(ExactStop::LoopLimit.limit().map(|l| l.name()), Some("loop-iterations"));
+    assert_eq!(
+        ExactStop::LoopLimit.limit().map(|l| l.name()),
+        Some("loop-iterations")
+    );
     assert_eq!(ExactStop::Undecided.limit().map(|l| l.name()), None);
     let msg = stop.to_string();
     assert!(msg.contains("the limit loop-value-bits = "), "{msg}");
