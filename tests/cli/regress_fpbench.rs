@@ -39,12 +39,13 @@ const REFUSED: &[(&str, &str, &str)] = &[
 
 /// The accepted benchmarks that compare no sample, and why: FPBench's `while TRUE` loops never
 /// end (every sample stops at the `loop-iterations` limit), and Sine Newton's iterates shrink
-/// doubly exponentially towards 0, cancelling more bits than the precision cap (undecided).
+/// doubly exponentially towards 0, cancelling more bits than the precision cap, so the exact
+/// test decides them, where its exact iterates pass the `loop-value-bits` limit.
 const NOTHING_COMPARED: &[(&str, &str, &str)] = &[
     ("apron.fpcore", "Euler Oscillator", "limit_stops"),
     ("apron.fpcore", "Filter", "limit_stops"),
     ("apron.fpcore", "Circle", "limit_stops"),
-    ("rosa.fpcore", "Sine Newton", "undecided"),
+    ("rosa.fpcore", "Sine Newton", "limit_stops"),
     // binary32 benchmarks without a `:pre` sampled over all binary32 values: their loops run
     // past the limit, their exact values are undecided, or the samples leave the domain.
     ("salsa.fpcore", "Odometry", "other"),
@@ -71,14 +72,22 @@ fn loop_limit(file: &str) -> u64 {
     }
 }
 
-/// The exit status of each file's run: 2 where a benchmark stopped at the loop limit in every
-/// sample (after the report; the one stderr line names the limit), 1 where one compared no
-/// sample otherwise, else 0.
+/// The exit status of each file's run: 2 where a benchmark stopped at a limit in every sample
+/// (after the report; the one stderr line names the limit), 1 where one compared no sample
+/// otherwise, else 0.
 fn expected_status(file: &str) -> i32 {
     match file {
-        "apron.fpcore" | "salsa.fpcore" => 2,
-        "rosa.fpcore" => 1,
+        "apron.fpcore" | "salsa.fpcore" | "rosa.fpcore" => 2,
         _ => 0,
+    }
+}
+
+/// The limit that stopped the samples of a benchmark of `file` that compared none.
+fn stop_limit(file: &str) -> String {
+    if file == "rosa.fpcore" {
+        "loop-value-bits = 16384".to_string()
+    } else {
+        format!("loop-iterations = {}", loop_limit(file))
     }
 }
 
@@ -106,13 +115,13 @@ fn every_fpbench_benchmark_runs_or_is_refused_with_its_reason() {
         );
         if expected_status(file) == 2 {
             assert_eq!(stderr.lines().count(), 1, "{stderr}");
-            let first = if *file == "apron.fpcore" {
-                "'Euler Oscillator' and of 2 other entries"
-            } else {
-                "'Rocket Trajectory'"
+            let first = match *file {
+                "apron.fpcore" => "'Euler Oscillator' and of 2 other entries",
+                "rosa.fpcore" => "'Sine Newton'",
+                _ => "'Rocket Trajectory'",
             };
             assert!(
-                stderr.contains(&format!("the limit loop-iterations = {}", loop_limit(file)))
+                stderr.contains(&format!("the limit {}", stop_limit(file)))
                     && stderr.contains(first),
                 "{stderr}"
             );
@@ -136,7 +145,7 @@ fn every_fpbench_benchmark_runs_or_is_refused_with_its_reason() {
                     if why == "limit_stops" {
                         assert_eq!(
                             e["limit_stop"].as_str(),
-                            Some(format!("loop-iterations = {}", loop_limit(file)).as_str()),
+                            Some(stop_limit(file).as_str()),
                             "{name}"
                         );
                     }
@@ -241,7 +250,8 @@ fn binary32_benchmarks_measure_binary32_ulps() {
 fn sine_newton_says_why_no_sample_was_compared() {
     // Ten Newton steps on sin's Taylor polynomial converge to 0 cubically: the exact iterate
     // ends at about 2^-34000 from 0.5 (the exponent triples every step), and each step cancels
-    // about twice its bits, far beyond the precision cap.
+    // about twice its bits, far beyond the precision cap; the exact test, which keeps the
+    // iterates exact, stops when they pass the `loop-value-bits` limit.
     let path = format!(
         "{}/tests/regress/fpbench/rosa.fpcore",
         env!("CARGO_MANIFEST_DIR")
@@ -259,13 +269,17 @@ fn sine_newton_says_why_no_sample_was_compared() {
         .arg("--quiet")
         .output()
         .expect("the binary runs");
-    assert_eq!(o.status.code(), Some(1));
+    assert_eq!(o.status.code(), Some(2));
     let text = String::from_utf8_lossy(&o.stdout);
     assert!(
-        text.contains(
-            "no sample was compared: the exact side left every sample undecided, no sign or rounding decided within its precision cap of 16384 bits"
-        ),
+        text.contains("3 stopped by the limit loop-value-bits = 16384"),
         "{text}"
+    );
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        stderr.contains("the limit loop-value-bits = 16384 bits")
+            && stderr.contains("'Sine Newton'"),
+        "{stderr}"
     );
 }
 

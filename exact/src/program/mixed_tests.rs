@@ -63,7 +63,7 @@ fn intro_example_mixed_runs_in_both_precisions() {
         assert_eq!(p.eval_f64(&[f64::from(t)]), vec![f64::from(want)], "{t}");
         // The exact value t / (t + 1), its rounding decided in binary32.
         let x = exact(f64::from(t));
-        let r = p.eval_exact(&[x.clone()]).unwrap();
+        let r = p.eval_exact(std::slice::from_ref(&x)).unwrap();
         let q = x.checked_div(&(&x + &Rational::ONE)).unwrap();
         assert_eq!(r[0].value, q.to_big_rational());
     }

@@ -3,7 +3,8 @@
 use super::text::*;
 use super::values::*;
 use super::*;
-use crate::convert::binary_exponent;
+use crate::convert::{binary_exponent, f64_to_rational};
+use exactcheck_exact::Rational;
 
 fn q(n: i64, d: i64) -> Rational {
     Rational::new(n, d).expect("nonzero denominator")
