@@ -33,7 +33,7 @@ const REFUSED: &[(&str, &str, &str)] = &[
     (
         "precimonious.fpcore",
         "arclength of a wiggly function (old version)",
-        "not supported: mixed precisions (binary32 inside a binary64 benchmark)",
+        "not supported: precision binary80",
     ),
 ];
 
