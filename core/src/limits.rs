@@ -191,6 +191,11 @@ declare_limits! {
     /// iterations of all its loops together): every iteration is evaluated exactly, and a loop
     /// that never ends (`while TRUE`) must stop somewhere.
     LOOP_ITERATIONS = ("loop-iterations", "loop iterations of one evaluation", "", 10_000);
+    /// Size in bits of the exact value of one loop variable in the exact zero test of a
+    /// regressed program (which keeps every value exact, where the interval passes carry a grown
+    /// value as an enclosure): a loop whose values grow every iteration, a diverging iteration,
+    /// would otherwise grow them up to `constant-bits`, at minutes per sample.
+    LOOP_VALUE_BITS = ("loop-value-bits", "size of a loop variable's exact value", "bits", 16_384);
     /// Size in bits of any exact constant: a folded constant expression, a polynomial
     /// coefficient, an exact intermediate.
     CONSTANT_BITS = ("constant-bits", "size of a constant", "bits", 1_000_000);

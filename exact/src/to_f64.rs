@@ -37,6 +37,12 @@ pub fn pow2(p: i32) -> f64 {
 /// A ratio with a zero denominator (only constructible with `Ratio::new_raw`) gives NaN. The
 /// arguments need not be in lowest terms.
 pub fn rational_to_f64(q: &BigRational) -> f64 {
+    rational_to_format(q, FRACTION_BITS, MIN_EXP, MAX_EXP)
+}
+
+/// `q` rounded to nearest even in the binary format of [`positive_ratio_to_format`], with its
+/// sign (a zero is `+0.0`; a zero denominator gives NaN).
+fn rational_to_format(q: &BigRational, fraction: u32, min_exp: i32, max_exp: i32) -> f64 {
     let (nsign, n) = split_sign(q.numer());
     let (dsign, d) = split_sign(q.denom());
     if d.is_zero() {
@@ -46,7 +52,7 @@ pub fn rational_to_f64(q: &BigRational) -> f64 {
         return 0.0;
     }
     let neg = (nsign == BigSign::Minus) != (dsign == BigSign::Minus);
-    let mag = positive_ratio_to_f64(&n, &d);
+    let mag = positive_ratio_to_format(&n, &d, fraction, min_exp, max_exp);
     if neg {
         -mag
     } else {
@@ -56,11 +62,6 @@ pub fn rational_to_f64(q: &BigRational) -> f64 {
 
 fn split_sign(x: &BigInt) -> (BigSign, BigUint) {
     (x.sign(), x.magnitude().clone())
-}
-
-/// `n / d` rounded to nearest even, for `n, d > 0`.
-fn positive_ratio_to_f64(n: &BigUint, d: &BigUint) -> f64 {
-    positive_ratio_to_format(n, d, FRACTION_BITS, MIN_EXP, MAX_EXP)
 }
 
 /// `n / d` rounded to nearest even in the binary format with `fraction` explicit fraction bits,
@@ -121,21 +122,7 @@ fn positive_ratio_to_format(
 /// binary32. Rounding `q` to a double first and that double to binary32 is not the same (a
 /// double can lie exactly on a binary32 tie that `q` misses).
 pub fn rational_to_f32(q: &BigRational) -> f64 {
-    let (nsign, n) = split_sign(q.numer());
-    let (dsign, d) = split_sign(q.denom());
-    if d.is_zero() {
-        return f64::NAN;
-    }
-    if n.is_zero() {
-        return 0.0;
-    }
-    let neg = (nsign == BigSign::Minus) != (dsign == BigSign::Minus);
-    let mag = positive_ratio_to_format(&n, &d, 23, -149, 127);
-    if neg {
-        -mag
-    } else {
-        mag
-    }
+    rational_to_format(q, 23, -149, 127)
 }
 
 /// An IEEE 754 binary interchange format a float side computes in.

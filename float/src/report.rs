@@ -289,7 +289,8 @@ pub struct Report {
     /// Samples whose exact evaluation ran past a limit on its work ([`Report::limit_stop`]).
     #[serde(default, skip_serializing_if = "is_zero")]
     pub limit_stops: usize,
-    /// The limit that stopped them, `NAME = VALUE` (`loop-iterations = 10000`).
+    /// The limit that stopped them, `NAME = VALUE` (`loop-iterations = 10000`); the distinct
+    /// limits in the order first met, separated by `, `, when samples stopped at several.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub limit_stop: Option<String>,
     /// Compared samples whose reference is not exact: an enclosure of the true value (behind an
@@ -563,8 +564,13 @@ impl fmt::Display for Report {
         if self.limit_stops > 0 {
             write!(
                 f,
-                ", {} stopped by the limit {}",
+                ", {} stopped by the limit{} {}",
                 self.limit_stops,
+                if self.limit_stop.as_deref().is_some_and(|s| s.contains(", ")) {
+                    "s"
+                } else {
+                    ""
+                },
                 self.limit_stop.as_deref().unwrap_or("of the exact side")
             )?;
         }
@@ -652,6 +658,21 @@ fn is_zero(n: &usize) -> bool {
     *n == 0
 }
 
+/// Adds the limit stops `stops` (`NAME = VALUE`, several separated by `, `) to the distinct
+/// stops of `into`, in the order first met.
+pub(crate) fn note_limit_stop(into: &mut Option<String>, stops: &str) {
+    for stop in stops.split(", ") {
+        match into {
+            None => *into = Some(stop.to_string()),
+            Some(s) if s.split(", ").any(|t| t == stop) => {}
+            Some(s) => {
+                s.push_str(", ");
+                s.push_str(stop);
+            }
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -676,5 +697,18 @@ mod tests {
         let d = num_bigint::BigUint::from(1u8) << 100usize;
         assert_eq!(fmt_exact(&format!("1/{d}")), "1/2^100");
         assert_eq!(fmt_exact("1/3"), "1/3");
+    }
+
+    #[test]
+    fn limit_stops_keep_each_limit_once_in_the_order_met() {
+        let mut stops = None;
+        note_limit_stop(&mut stops, "loop-iterations = 300");
+        note_limit_stop(&mut stops, "loop-iterations = 300");
+        assert_eq!(stops.as_deref(), Some("loop-iterations = 300"));
+        note_limit_stop(&mut stops, "loop-value-bits = 64, loop-iterations = 300");
+        assert_eq!(
+            stops.as_deref(),
+            Some("loop-iterations = 300, loop-value-bits = 64")
+        );
     }
 }

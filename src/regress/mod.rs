@@ -564,25 +564,32 @@ fn text_run(args: &RegressArgs, fpcore: Option<&str>) -> Result<ExitCode, Error>
     if args.shard.is_some() {
         return Ok(ExitCode::SUCCESS);
     }
-    // An entry that compared nothing because its loops ran past the limit measured nothing for
-    // want of a larger limit: after its report, the run is an error naming the limit.
+    // An entry that compared nothing because its loops ran past a limit on the work of one
+    // sample measured nothing for want of a larger limit: after its report, the run is an error
+    // naming the limit (the first one its samples stopped at).
     let stopped: Vec<&sweep::Entry> = entries
         .iter()
         .filter(|e| matches!(&e.outcome, Ok(r) if r.compared == 0 && r.limit_stops > 0))
         .collect();
     if let Some(first) = stopped.first() {
+        let limit = match &first.outcome {
+            Ok(r) => r.limit_stop.as_deref().and_then(|s| {
+                let name = s.split(" = ").next().unwrap_or_default();
+                exactcheck_core::limits::find(name)
+            }),
+            Err(_) => None,
+        }
+        .unwrap_or(&exactcheck_core::limits::LOOP_ITERATIONS);
         let others = match stopped.len() {
             1 => String::new(),
             2 => " and of 1 other entry".to_string(),
             n => format!(" and of {} other entries", n - 1),
         };
-        return Err(Error::Limit(
-            exactcheck_core::limits::LOOP_ITERATIONS.exceeded(format!(
-                "more than {} in every stopped sample of '{}'{others}, which compared no sample",
-                exactcheck_core::limits::LOOP_ITERATIONS.get(),
-                first.name
-            )),
-        ));
+        return Err(Error::Limit(limit.exceeded(format!(
+            "more than {} in every stopped sample of '{}'{others}, which compared no sample",
+            limit.get(),
+            first.name
+        ))));
     }
     Ok(sweep::exit_code(&entries))
 }

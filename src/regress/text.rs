@@ -104,8 +104,8 @@ impl Subject for TextSubject<'_> {
             // Undecided at the precision cap, or an intermediate beyond the constant-bits limit: no
             // reference either way, counted as undecided (never guessed).
             Err(ExactStop::Undecided | ExactStop::TooLarge) => Err(CaseError::Undecided),
-            Err(ExactStop::LoopLimit) => {
-                let limit = &exactcheck_core::limits::LOOP_ITERATIONS;
+            Err(stop @ (ExactStop::LoopLimit | ExactStop::LoopValueLimit)) => {
+                let limit = stop.limit().expect("a stop at a limit");
                 Err(CaseError::LimitExceeded {
                     limit: limit.name(),
                     value: limit.get(),

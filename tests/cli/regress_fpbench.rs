@@ -21,16 +21,10 @@ const FILES: &[&str] = &[
     "salsa.fpcore",
 ];
 
-/// The refused benchmarks (file, name) and why: precisions mixed inside one benchmark (binary64
-/// into binary32, binary32 and binary80 into binary64) and integer precision. Every benchmark of
-/// one precision, binary64 or binary32, with an elementary function (`exp`, `log`, `sin`, `pow`,
-/// `atan2`, ...) or a loop runs.
+/// The refused benchmarks (file, name) and why: the integer and binary80 precisions. Every
+/// benchmark in binary64, binary32 or both (`intro-example-mixed`), with an elementary function
+/// (`exp`, `log`, `sin`, `pow`, `atan2`, ...) or a loop runs.
 const REFUSED: &[(&str, &str, &str)] = &[
-    (
-        "fptaylor-extra.fpcore",
-        "intro-example-mixed",
-        "not supported: mixed precisions (binary64 inside a binary32 benchmark)",
-    ),
     (
         "precimonious.fpcore",
         "arclength of a wiggly function",
@@ -39,18 +33,19 @@ const REFUSED: &[(&str, &str, &str)] = &[
     (
         "precimonious.fpcore",
         "arclength of a wiggly function (old version)",
-        "not supported: mixed precisions (binary32 inside a binary64 benchmark)",
+        "not supported: precision binary80",
     ),
 ];
 
 /// The accepted benchmarks that compare no sample, and why: FPBench's `while TRUE` loops never
 /// end (every sample stops at the `loop-iterations` limit), and Sine Newton's iterates shrink
-/// doubly exponentially towards 0, cancelling more bits than the precision cap (undecided).
+/// doubly exponentially towards 0, cancelling more bits than the precision cap, so the exact
+/// test decides them, where its exact iterates pass the `loop-value-bits` limit.
 const NOTHING_COMPARED: &[(&str, &str, &str)] = &[
     ("apron.fpcore", "Euler Oscillator", "limit_stops"),
     ("apron.fpcore", "Filter", "limit_stops"),
     ("apron.fpcore", "Circle", "limit_stops"),
-    ("rosa.fpcore", "Sine Newton", "undecided"),
+    ("rosa.fpcore", "Sine Newton", "limit_stops"),
     // binary32 benchmarks without a `:pre` sampled over all binary32 values: their loops run
     // past the limit, their exact values are undecided, or the samples leave the domain.
     ("salsa.fpcore", "Odometry", "other"),
@@ -64,9 +59,11 @@ const NOTHING_COMPARED: &[(&str, &str, &str)] = &[
 ];
 
 /// The `loop-iterations` limit of each file's run: salsa's binary32 loops, sampled over all
-/// binary32 values without a `:pre`, mostly diverge, and their exact values grow with every
-/// iteration, so its run stops them at 300 iterations instead of the default 10,000 (at the
-/// default, Jacobi's Method alone takes minutes per sample).
+/// binary32 values without a `:pre`, mostly diverge and run to the limit, so its run stops them
+/// at 300 iterations instead of the default 10,000: at the default the file takes about 16 s of
+/// CPU, 13 s of them Rocket Trajectory's seven diverging samples, each 10,000 iterations of
+/// interval arithmetic (a diverging loop's exact values, which took minutes per sample, stop at
+/// the `loop-value-bits` limit: `jacobi_runs_at_the_default_limits`).
 fn loop_limit(file: &str) -> u64 {
     if file == "salsa.fpcore" {
         300
@@ -75,14 +72,22 @@ fn loop_limit(file: &str) -> u64 {
     }
 }
 
-/// The exit status of each file's run: 2 where a benchmark stopped at the loop limit in every
-/// sample (after the report; the one stderr line names the limit), 1 where one compared no
-/// sample otherwise, else 0.
+/// The exit status of each file's run: 2 where a benchmark stopped at a limit in every sample
+/// (after the report; the one stderr line names the limit), 1 where one compared no sample
+/// otherwise, else 0.
 fn expected_status(file: &str) -> i32 {
     match file {
-        "apron.fpcore" | "salsa.fpcore" => 2,
-        "rosa.fpcore" => 1,
+        "apron.fpcore" | "salsa.fpcore" | "rosa.fpcore" => 2,
         _ => 0,
+    }
+}
+
+/// The limit that stopped the samples of a benchmark of `file` that compared none.
+fn stop_limit(file: &str) -> String {
+    if file == "rosa.fpcore" {
+        "loop-value-bits = 16384".to_string()
+    } else {
+        format!("loop-iterations = {}", loop_limit(file))
     }
 }
 
@@ -110,13 +115,13 @@ fn every_fpbench_benchmark_runs_or_is_refused_with_its_reason() {
         );
         if expected_status(file) == 2 {
             assert_eq!(stderr.lines().count(), 1, "{stderr}");
-            let first = if *file == "apron.fpcore" {
-                "'Euler Oscillator' and of 2 other entries"
-            } else {
-                "'Rocket Trajectory'"
+            let first = match *file {
+                "apron.fpcore" => "'Euler Oscillator' and of 2 other entries",
+                "rosa.fpcore" => "'Sine Newton'",
+                _ => "'Rocket Trajectory'",
             };
             assert!(
-                stderr.contains(&format!("the limit loop-iterations = {}", loop_limit(file)))
+                stderr.contains(&format!("the limit {}", stop_limit(file)))
                     && stderr.contains(first),
                 "{stderr}"
             );
@@ -140,7 +145,7 @@ fn every_fpbench_benchmark_runs_or_is_refused_with_its_reason() {
                     if why == "limit_stops" {
                         assert_eq!(
                             e["limit_stop"].as_str(),
-                            Some(format!("loop-iterations = {}", loop_limit(file)).as_str()),
+                            Some(stop_limit(file).as_str()),
                             "{name}"
                         );
                     }
@@ -245,7 +250,8 @@ fn binary32_benchmarks_measure_binary32_ulps() {
 fn sine_newton_says_why_no_sample_was_compared() {
     // Ten Newton steps on sin's Taylor polynomial converge to 0 cubically: the exact iterate
     // ends at about 2^-34000 from 0.5 (the exponent triples every step), and each step cancels
-    // about twice its bits, far beyond the precision cap.
+    // about twice its bits, far beyond the precision cap; the exact test, which keeps the
+    // iterates exact, stops when they pass the `loop-value-bits` limit.
     let path = format!(
         "{}/tests/regress/fpbench/rosa.fpcore",
         env!("CARGO_MANIFEST_DIR")
@@ -263,12 +269,50 @@ fn sine_newton_says_why_no_sample_was_compared() {
         .arg("--quiet")
         .output()
         .expect("the binary runs");
-    assert_eq!(o.status.code(), Some(1));
+    assert_eq!(o.status.code(), Some(2));
     let text = String::from_utf8_lossy(&o.stdout);
     assert!(
-        text.contains(
-            "no sample was compared: the exact side left every sample undecided, no sign or rounding decided within its precision cap of 16384 bits"
-        ),
+        text.contains("3 stopped by the limit loop-value-bits = 16384"),
         "{text}"
     );
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        stderr.contains("the limit loop-value-bits = 16384 bits")
+            && stderr.contains("'Sine Newton'"),
+        "{stderr}"
+    );
+}
+
+#[test]
+fn jacobi_runs_at_the_default_limits() {
+    // Over all binary32 inputs Jacobi's iteration mostly diverges: its exact values grow every
+    // iteration. The candidates of the shrinking phase that reach the exact zero test stop at the
+    // `loop-value-bits` limit instead of growing rationals up to `constant-bits` for minutes;
+    // the diverging samples stop at the iteration limit and are counted as such.
+    let (status, e) = benchmark_entry("salsa.fpcore", "Jacobi's Method", "8");
+    assert_eq!(status, Some(0), "{e}");
+    assert_eq!(e["compared"], 4, "{e}");
+    assert_eq!(e["limit_stops"], 4, "{e}");
+    assert_eq!(e["limit_stop"], "loop-iterations = 10000", "{e}");
+}
+
+#[test]
+fn intro_example_mixed_is_regressed_in_its_two_precisions() {
+    let (status, e) = benchmark_entry("fptaylor-extra.fpcore", "intro-example-mixed", "200");
+    assert_eq!(status, Some(0), "{e}");
+    assert_eq!(e["precision"], "binary32");
+    assert_eq!(e["compared"], 200, "{e}");
+    // t + 1 rounds in binary32, the quotient in binary64 and its cast to binary32: within 1.5
+    // binary32 ulps of t / (t + 1) (at most half an ulp on 200 samples), and not always exact.
+    let max = e["max_ulps"].as_f64().expect("max ulps");
+    assert!(max > 0.0 && max < 1.51, "{max}");
+}
+
+/// [`first_entry`] of the benchmark `name` of a vendored FPBench file at `samples` samples.
+fn benchmark_entry(file: &str, name: &str, samples: &str) -> (Option<i32>, Value) {
+    let path = format!(
+        "{}/tests/regress/fpbench/{file}",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    first_entry(&["--fpcore", &path, "--name", name, "--samples", samples])
 }

@@ -290,6 +290,11 @@ impl Evaluator for Local<'_> {
     fn iterate(&mut self) -> Result<(), Halt> {
         self.real.iterate()
     }
+    /// In a program that mixes precisions each operation is measured in its own: its operands'
+    /// exact values rounded to it, the operation in it, against its exact value rounded to it.
+    fn set_format(&mut self, f: Format) -> Result<Format, Halt> {
+        Ok(std::mem::replace(&mut self.format, f))
+    }
     fn carry(&mut self, v: Tracked) -> Result<Tracked, Halt> {
         Ok(Tracked {
             x: self.real.carry(v.x)?,

@@ -25,190 +25,426 @@
 //!   `powf`, ...: [`call_f32`]), an input is taken as binary32 (the harness samples binary32
 //!   values) and the outputs are returned as the doubles holding them exactly.
 //!
+//! * A program that mixes precisions (FPCore's `(! :precision binary64 ...)` inside a binary32
+//!   program, or the reverse, and `cast`: [`super::Node::Precision`], [`super::Node::Cast`])
+//!   computes each operation in the precision in scope: its exact result on its operands,
+//!   whatever their precisions, rounded once to that precision (a binary32 operation on binary64
+//!   operands rounds the double result to odd, from its exact error, before rounding it to
+//!   binary32, which is then correctly rounded); a literal is rounded to the precision in scope,
+//!   `cast` rounds its operand's value to it, and the functions are the C library's of that
+//!   precision (on binary64 arguments in binary32: the double function, rounded).
+//!
 //! The evaluation never fails and allocates nothing per node (a `while` loop's parallel update
-//! excepted): it is the generic walk of `walk` over the `Copy` type `f64`, with the `let` slots in a stack array (a heap vector only for
-//! programs with more than [`STACK_SLOTS`] slots).
+//! excepted): it is the generic walk of `walk` over the `Copy` types `f64` and `f32` (one
+//! generic domain, `Ieee`), with the `let` slots in a stack array (a heap vector only for
+//! programs with more than [`STACK_SLOTS`] slots). A program that mixes precisions is noticed at
+//! its first operation of another precision and evaluated again in the mixed domain (values in
+//! doubles, slots in a vector).
 use super::walk::{count_iteration, eval_node, Evaluator};
 use super::{CmpOp, Format, Func, PowStyle, Program};
 use crate::rational::Rational;
+use num_traits::FromPrimitive;
+use std::cmp::Ordering;
 
 /// Programs with at most this many `let` slots keep them on the stack during a float evaluation.
 pub const STACK_SLOTS: usize = 32;
 
-/// The IEEE double domain over borrowed inputs, with the loop iterations done so far.
-struct F64<'a> {
-    x: &'a [f64],
-    iterations: u64,
+/// Why a float evaluation stops.
+pub(super) enum FloatStop {
+    /// The loops ran past the `loop-iterations` limit.
+    Loop,
+    /// A uniform domain met a precision other than its own: the program mixes precisions and
+    /// is evaluated again in [`Mixed`].
+    Mixed,
 }
 
-/// The float evaluation stopped: its loops ran past the `loop-iterations` limit.
-pub(super) struct LoopStop;
+/// An IEEE format as a Rust type: the operations of [`Ieee`] in it.
+trait IeeeFloat:
+    Copy
+    + PartialOrd
+    + std::ops::Neg<Output = Self>
+    + std::ops::Add<Output = Self>
+    + std::ops::Sub<Output = Self>
+    + std::ops::Mul<Output = Self>
+    + std::ops::Div<Output = Self>
+{
+    const FORMAT: Format;
+    const ZERO: Self;
+    /// An input, taken in this format.
+    fn input(x: f64) -> Self;
+    /// The value of this format nearest to `q`.
+    fn constant(q: &Rational) -> Self;
+    /// The double holding the value exactly.
+    fn widen(self) -> f64;
+    fn sqrt(self) -> Self;
+    fn abs(self) -> Self;
+    fn mul_add(self, b: Self, c: Self) -> Self;
+    fn min(self, b: Self) -> Self;
+    fn max(self, b: Self) -> Self;
+    fn pow(self, n: i32, style: PowStyle) -> Self;
+    fn call(f: Func, a: Option<Self>, b: Option<Self>) -> Self;
+}
 
-impl Evaluator for F64<'_> {
-    type V = f64;
-    type Stop = LoopStop;
+macro_rules! ieee_float {
+    ($t:ty, $format:expr, $input:expr, $constant:expr, $pow:ident, $call:ident) => {
+        impl IeeeFloat for $t {
+            const FORMAT: Format = $format;
+            const ZERO: $t = 0.0;
+            #[inline]
+            fn input(x: f64) -> $t {
+                $input(x)
+            }
+            #[inline]
+            fn constant(q: &Rational) -> $t {
+                $constant(q)
+            }
+            #[inline]
+            fn widen(self) -> f64 {
+                f64::from(self)
+            }
+            #[inline]
+            fn sqrt(self) -> $t {
+                <$t>::sqrt(self)
+            }
+            #[inline]
+            fn abs(self) -> $t {
+                <$t>::abs(self)
+            }
+            #[inline]
+            fn mul_add(self, b: $t, c: $t) -> $t {
+                <$t>::mul_add(self, b, c)
+            }
+            #[inline]
+            fn min(self, b: $t) -> $t {
+                <$t>::min(self, b)
+            }
+            #[inline]
+            fn max(self, b: $t) -> $t {
+                <$t>::max(self, b)
+            }
+            #[inline]
+            fn pow(self, n: i32, style: PowStyle) -> $t {
+                $pow(self, n, style)
+            }
+            #[inline]
+            fn call(f: Func, a: Option<$t>, b: Option<$t>) -> $t {
+                $call(f, a.unwrap_or(<$t>::NAN), b.unwrap_or(<$t>::NAN))
+            }
+        }
+    };
+}
+
+ieee_float!(
+    f64,
+    Format::Binary64,
+    |x| x,
+    Rational::to_f64,
+    pow_f64,
+    call_f64
+);
+// A binary32 literal is decided from the exact rational (the double returned holds it exactly).
+ieee_float!(
+    f32,
+    Format::Binary32,
+    |x: f64| x as f32,
+    |q: &Rational| crate::to_f64::rational_to_f32(&q.to_big_rational()) as f32,
+    pow_f32,
+    call_f32
+);
+
+/// The IEEE domain of one format over borrowed inputs, with the loop iterations done so far.
+struct Ieee<'a, T> {
+    x: &'a [f64],
+    iterations: u64,
+    format: std::marker::PhantomData<T>,
+}
+
+/// The truth of `a op b` in IEEE arithmetic (false on NaN, except `!=`).
+#[inline]
+fn ieee_compare<T: PartialOrd>(op: CmpOp, a: &T, b: &T) -> bool {
+    match op {
+        CmpOp::Lt => a < b,
+        CmpOp::Le => a <= b,
+        CmpOp::Gt => a > b,
+        CmpOp::Ge => a >= b,
+        CmpOp::Eq => a == b,
+        CmpOp::Ne => a != b,
+    }
+}
+
+impl<T: IeeeFloat> Evaluator for Ieee<'_, T> {
+    type V = T;
+    type Stop = FloatStop;
 
     #[inline]
+    fn input(&mut self, i: usize) -> T {
+        T::input(self.x[i])
+    }
+    #[inline]
+    fn constant(&mut self, q: &Rational) -> Result<T, FloatStop> {
+        Ok(T::constant(q))
+    }
+    #[inline]
+    fn neg(&mut self, a: T) -> Result<T, FloatStop> {
+        Ok(-a)
+    }
+    #[inline]
+    fn add(&mut self, a: T, b: T) -> Result<T, FloatStop> {
+        Ok(a + b)
+    }
+    #[inline]
+    fn sub(&mut self, a: T, b: T) -> Result<T, FloatStop> {
+        Ok(a - b)
+    }
+    #[inline]
+    fn mul(&mut self, a: T, b: T) -> Result<T, FloatStop> {
+        Ok(a * b)
+    }
+    #[inline]
+    fn div(&mut self, a: T, b: T) -> Result<T, FloatStop> {
+        Ok(a / b)
+    }
+    #[inline]
+    fn sqrt(&mut self, a: T) -> Result<T, FloatStop> {
+        Ok(a.sqrt())
+    }
+    #[inline]
+    fn abs(&mut self, a: T) -> Result<T, FloatStop> {
+        Ok(a.abs())
+    }
+    #[inline]
+    fn fma(&mut self, a: T, b: T, c: T) -> Result<T, FloatStop> {
+        Ok(a.mul_add(b, c))
+    }
+    #[inline]
+    fn min(&mut self, a: T, b: T) -> Result<T, FloatStop> {
+        Ok(a.min(b))
+    }
+    #[inline]
+    fn max(&mut self, a: T, b: T) -> Result<T, FloatStop> {
+        Ok(a.max(b))
+    }
+    #[inline]
+    fn pow(&mut self, a: T, n: i32, style: PowStyle) -> Result<T, FloatStop> {
+        Ok(a.pow(n, style))
+    }
+    #[inline]
+    fn call(&mut self, f: Func, a: Option<T>, b: Option<T>) -> Result<T, FloatStop> {
+        Ok(T::call(f, a, b))
+    }
+    #[inline]
+    fn compare(&mut self, op: CmpOp, a: &T, b: &T) -> Result<bool, FloatStop> {
+        Ok(ieee_compare(op, a, b))
+    }
+    #[inline]
+    fn iterate(&mut self) -> Result<(), FloatStop> {
+        if count_iteration(&mut self.iterations) {
+            Ok(())
+        } else {
+            Err(FloatStop::Loop)
+        }
+    }
+    /// The program's own precision changes nothing; another one is a mixed program.
+    #[inline]
+    fn set_format(&mut self, f: Format) -> Result<Format, FloatStop> {
+        if f == T::FORMAT {
+            Ok(f)
+        } else {
+            Err(FloatStop::Mixed)
+        }
+    }
+    // `cast`: every value of a program of one precision already is a value of it (the default).
+}
+
+/// The mixed-precision domain: a program whose operations round to different precisions
+/// (FPCore's `:precision` on sub-expressions and `cast`). Values are doubles (a binary32 value
+/// is held exactly); every operation rounds its exact result once, to the precision in scope,
+/// whatever the precisions of its operands.
+struct Mixed<'a> {
+    x: &'a [f64],
+    iterations: u64,
+    format: Format,
+}
+
+/// The binary32 value nearest to a real number `t`, given the double `r` nearest to it and the
+/// sign of `t - r` (`Equal`: `r` is `t`). `r` is first made the round-to-odd double of `t` (the
+/// odd neighbour on the side of `t` when `r` is inexact and even), which rounds to binary32 as
+/// `t` itself does: a double has more than binary32's precision plus two bits.
+fn round32(r: f64, rest: Ordering) -> f64 {
+    if !r.is_finite() || r == 0.0 || rest == Ordering::Equal || r.to_bits() & 1 == 1 {
+        return f64::from(r as f32);
+    }
+    let away = (rest == Ordering::Greater) == (r > 0.0);
+    let odd = f64::from_bits(if away {
+        r.to_bits() + 1
+    } else {
+        r.to_bits() - 1
+    });
+    f64::from(odd as f32)
+}
+
+/// The sign of `v` (`Equal` for zero and NaN).
+fn sign(v: f64) -> Ordering {
+    v.partial_cmp(&0.0).unwrap_or(Ordering::Equal)
+}
+
+/// Whether `v` is a binary32 value (or not finite).
+fn is_f32(v: f64) -> bool {
+    !v.is_finite() || f64::from(v as f32) == v
+}
+
+impl Mixed<'_> {
+    /// A result that is exact in doubles (negation, `fabs`, `fmin`, `fmax`, `cast`), rounded to
+    /// the precision in scope.
+    fn exact(&self, v: f64) -> f64 {
+        match self.format {
+            Format::Binary64 => v,
+            Format::Binary32 => f64::from(v as f32),
+        }
+    }
+
+    /// `r`, the double nearest to an operation's exact result `r + e` (`e` the sign of the
+    /// exact remainder), rounded to the precision in scope.
+    fn rounded(&self, r: f64, rest: impl FnOnce() -> Ordering) -> f64 {
+        match self.format {
+            Format::Binary64 => r,
+            Format::Binary32 => round32(
+                r,
+                if r.is_finite() {
+                    rest()
+                } else {
+                    Ordering::Equal
+                },
+            ),
+        }
+    }
+}
+
+impl Evaluator for Mixed<'_> {
+    type V = f64;
+    type Stop = FloatStop;
+
     fn input(&mut self, i: usize) -> f64 {
         self.x[i]
     }
-    #[inline]
-    fn constant(&mut self, q: &Rational) -> Result<f64, LoopStop> {
-        Ok(q.to_f64())
-    }
-    #[inline]
-    fn neg(&mut self, a: f64) -> Result<f64, LoopStop> {
-        Ok(-a)
-    }
-    #[inline]
-    fn add(&mut self, a: f64, b: f64) -> Result<f64, LoopStop> {
-        Ok(a + b)
-    }
-    #[inline]
-    fn sub(&mut self, a: f64, b: f64) -> Result<f64, LoopStop> {
-        Ok(a - b)
-    }
-    #[inline]
-    fn mul(&mut self, a: f64, b: f64) -> Result<f64, LoopStop> {
-        Ok(a * b)
-    }
-    #[inline]
-    fn div(&mut self, a: f64, b: f64) -> Result<f64, LoopStop> {
-        Ok(a / b)
-    }
-    #[inline]
-    fn sqrt(&mut self, a: f64) -> Result<f64, LoopStop> {
-        Ok(a.sqrt())
-    }
-    #[inline]
-    fn abs(&mut self, a: f64) -> Result<f64, LoopStop> {
-        Ok(a.abs())
-    }
-    #[inline]
-    fn fma(&mut self, a: f64, b: f64, c: f64) -> Result<f64, LoopStop> {
-        Ok(a.mul_add(b, c))
-    }
-    #[inline]
-    fn min(&mut self, a: f64, b: f64) -> Result<f64, LoopStop> {
-        Ok(a.min(b))
-    }
-    #[inline]
-    fn max(&mut self, a: f64, b: f64) -> Result<f64, LoopStop> {
-        Ok(a.max(b))
-    }
-    #[inline]
-    fn pow(&mut self, a: f64, n: i32, style: PowStyle) -> Result<f64, LoopStop> {
-        Ok(pow_f64(a, n, style))
-    }
-    #[inline]
-    fn call(&mut self, f: Func, a: Option<f64>, b: Option<f64>) -> Result<f64, LoopStop> {
-        Ok(call_f64(f, a.unwrap_or(f64::NAN), b.unwrap_or(f64::NAN)))
-    }
-    #[inline]
-    fn compare(&mut self, op: CmpOp, a: &f64, b: &f64) -> Result<bool, LoopStop> {
-        Ok(match op {
-            CmpOp::Lt => a < b,
-            CmpOp::Le => a <= b,
-            CmpOp::Gt => a > b,
-            CmpOp::Ge => a >= b,
-            CmpOp::Eq => a == b,
-            CmpOp::Ne => a != b,
+    fn constant(&mut self, q: &Rational) -> Result<f64, FloatStop> {
+        Ok(match self.format {
+            Format::Binary64 => q.to_f64(),
+            Format::Binary32 => crate::to_f64::rational_to_f32(&q.to_big_rational()),
         })
     }
-    #[inline]
-    fn iterate(&mut self) -> Result<(), LoopStop> {
+    fn neg(&mut self, a: f64) -> Result<f64, FloatStop> {
+        Ok(self.exact(-a))
+    }
+    fn add(&mut self, a: f64, b: f64) -> Result<f64, FloatStop> {
+        let r = a + b;
+        // The exact error of the sum (Knuth's TwoSum).
+        Ok(self.rounded(r, || {
+            let bb = r - a;
+            sign((a - (r - bb)) + (b - bb))
+        }))
+    }
+    fn sub(&mut self, a: f64, b: f64) -> Result<f64, FloatStop> {
+        self.add(a, -b)
+    }
+    fn mul(&mut self, a: f64, b: f64) -> Result<f64, FloatStop> {
+        let r = a * b;
+        // The exact error of the product by one fused multiply-add.
+        Ok(self.rounded(r, || sign(a.mul_add(b, -r))))
+    }
+    fn div(&mut self, a: f64, b: f64) -> Result<f64, FloatStop> {
+        let r = a / b;
+        // a/b - r = (a - r b) / b, the remainder exact by one fused multiply-add.
+        Ok(self.rounded(r, || {
+            let rem = sign((-r).mul_add(b, a));
+            if b < 0.0 {
+                rem.reverse()
+            } else {
+                rem
+            }
+        }))
+    }
+    fn sqrt(&mut self, a: f64) -> Result<f64, FloatStop> {
+        let r = a.sqrt();
+        // sqrt(a) - r has the sign of a - r^2.
+        Ok(self.rounded(r, || sign((-r).mul_add(r, a))))
+    }
+    fn abs(&mut self, a: f64) -> Result<f64, FloatStop> {
+        Ok(self.exact(a.abs()))
+    }
+    fn fma(&mut self, a: f64, b: f64, c: f64) -> Result<f64, FloatStop> {
+        Ok(match self.format {
+            Format::Binary64 => a.mul_add(b, c),
+            Format::Binary32 if is_f32(a) && is_f32(b) && is_f32(c) => {
+                f64::from((a as f32).mul_add(b as f32, c as f32))
+            }
+            // Wider operands: the exact `a b + c`, rounded once.
+            Format::Binary32 => match [a, b, c]
+                .map(|v| num_rational::BigRational::from_f64(v).map(Rational::from))
+            {
+                [Some(a), Some(b), Some(c)] => {
+                    crate::to_f64::rational_to_f32(&(&(&a * &b) + &c).to_big_rational())
+                }
+                _ => f64::from(a.mul_add(b, c) as f32),
+            },
+        })
+    }
+    fn min(&mut self, a: f64, b: f64) -> Result<f64, FloatStop> {
+        Ok(self.exact(a.min(b)))
+    }
+    fn max(&mut self, a: f64, b: f64) -> Result<f64, FloatStop> {
+        Ok(self.exact(a.max(b)))
+    }
+    fn pow(&mut self, a: f64, n: i32, style: PowStyle) -> Result<f64, FloatStop> {
+        match (style, self.format) {
+            (PowStyle::Multiply, _) => {
+                if n == 0 {
+                    return Ok(1.0);
+                }
+                let mut acc = a;
+                for _ in 1..n.unsigned_abs() {
+                    acc = self.mul(acc, a)?;
+                }
+                if n < 0 {
+                    self.div(1.0, acc)
+                } else {
+                    Ok(acc)
+                }
+            }
+            (PowStyle::Libm, Format::Binary64) => Ok(pow_f64(a, n, style)),
+            (PowStyle::Libm, Format::Binary32) if is_f32(a) => {
+                Ok(f64::from(pow_f32(a as f32, n, style)))
+            }
+            (PowStyle::Libm, Format::Binary32) => Ok(f64::from(pow_f64(a, n, style) as f32)),
+        }
+    }
+    /// The C library's function of the precision in scope (`sinf` on binary32 arguments); on
+    /// wider arguments in binary32 the double function, rounded.
+    fn call(&mut self, f: Func, a: Option<f64>, b: Option<f64>) -> Result<f64, FloatStop> {
+        let (a, b) = (a.unwrap_or(f64::NAN), b.unwrap_or(f64::NAN));
+        Ok(match self.format {
+            Format::Binary64 => call_f64(f, a, b),
+            Format::Binary32 if is_f32(a) && is_f32(b) => {
+                f64::from(call_f32(f, a as f32, b as f32))
+            }
+            Format::Binary32 => f64::from(call_f64(f, a, b) as f32),
+        })
+    }
+    fn compare(&mut self, op: CmpOp, a: &f64, b: &f64) -> Result<bool, FloatStop> {
+        Ok(ieee_compare(op, a, b))
+    }
+    fn iterate(&mut self) -> Result<(), FloatStop> {
         if count_iteration(&mut self.iterations) {
             Ok(())
         } else {
-            Err(LoopStop)
+            Err(FloatStop::Loop)
         }
     }
-}
-
-/// The binary32 domain over borrowed inputs (each taken as binary32), with the loop iterations.
-struct F32<'a> {
-    x: &'a [f64],
-    iterations: u64,
-}
-
-impl Evaluator for F32<'_> {
-    type V = f32;
-    type Stop = LoopStop;
-
-    #[inline]
-    fn input(&mut self, i: usize) -> f32 {
-        self.x[i] as f32
+    fn set_format(&mut self, f: Format) -> Result<Format, FloatStop> {
+        Ok(std::mem::replace(&mut self.format, f))
     }
-    fn constant(&mut self, q: &Rational) -> Result<f32, LoopStop> {
-        // Exact: the binary32 value is held exactly by the double.
-        Ok(crate::to_f64::rational_to_f32(&q.to_big_rational()) as f32)
-    }
-    #[inline]
-    fn neg(&mut self, a: f32) -> Result<f32, LoopStop> {
-        Ok(-a)
-    }
-    #[inline]
-    fn add(&mut self, a: f32, b: f32) -> Result<f32, LoopStop> {
-        Ok(a + b)
-    }
-    #[inline]
-    fn sub(&mut self, a: f32, b: f32) -> Result<f32, LoopStop> {
-        Ok(a - b)
-    }
-    #[inline]
-    fn mul(&mut self, a: f32, b: f32) -> Result<f32, LoopStop> {
-        Ok(a * b)
-    }
-    #[inline]
-    fn div(&mut self, a: f32, b: f32) -> Result<f32, LoopStop> {
-        Ok(a / b)
-    }
-    #[inline]
-    fn sqrt(&mut self, a: f32) -> Result<f32, LoopStop> {
-        Ok(a.sqrt())
-    }
-    #[inline]
-    fn abs(&mut self, a: f32) -> Result<f32, LoopStop> {
-        Ok(a.abs())
-    }
-    #[inline]
-    fn fma(&mut self, a: f32, b: f32, c: f32) -> Result<f32, LoopStop> {
-        Ok(a.mul_add(b, c))
-    }
-    #[inline]
-    fn min(&mut self, a: f32, b: f32) -> Result<f32, LoopStop> {
-        Ok(a.min(b))
-    }
-    #[inline]
-    fn max(&mut self, a: f32, b: f32) -> Result<f32, LoopStop> {
-        Ok(a.max(b))
-    }
-    #[inline]
-    fn pow(&mut self, a: f32, n: i32, style: PowStyle) -> Result<f32, LoopStop> {
-        Ok(pow_f32(a, n, style))
-    }
-    #[inline]
-    fn call(&mut self, f: Func, a: Option<f32>, b: Option<f32>) -> Result<f32, LoopStop> {
-        Ok(call_f32(f, a.unwrap_or(f32::NAN), b.unwrap_or(f32::NAN)))
-    }
-    #[inline]
-    fn compare(&mut self, op: CmpOp, a: &f32, b: &f32) -> Result<bool, LoopStop> {
-        Ok(match op {
-            CmpOp::Lt => a < b,
-            CmpOp::Le => a <= b,
-            CmpOp::Gt => a > b,
-            CmpOp::Ge => a >= b,
-            CmpOp::Eq => a == b,
-            CmpOp::Ne => a != b,
-        })
-    }
-    #[inline]
-    fn iterate(&mut self) -> Result<(), LoopStop> {
-        if count_iteration(&mut self.iterations) {
-            Ok(())
-        } else {
-            Err(LoopStop)
-        }
+    fn cast(&mut self, a: f64) -> Result<f64, FloatStop> {
+        Ok(self.exact(a))
     }
 }
 
@@ -380,7 +616,7 @@ impl Program {
     }
 
     /// [`Program::eval_f64`] into a reused vector (cleared first): no allocation once `out` has
-    /// the capacity, for programs with at most [`STACK_SLOTS`] slots.
+    /// the capacity, for programs of one precision with at most [`STACK_SLOTS`] slots.
     ///
     /// # Panics
     /// As [`Program::eval_f64`].
@@ -393,52 +629,57 @@ impl Program {
             self.inputs.len()
         );
         out.clear();
-        if self.precision == Format::Binary32 {
-            self.eval_f32_into(x, out);
-            return;
-        }
-        let mut d = F64 { x, iterations: 0 };
-        let mut stack = [0.0f64; STACK_SLOTS];
-        let mut heap;
-        let slots: &mut [f64] = if self.slots <= STACK_SLOTS {
-            &mut stack[..self.slots]
-        } else {
-            heap = vec![0.0; self.slots];
-            &mut heap
+        let uniform = match self.precision {
+            Format::Binary64 => self.eval_ieee::<f64>(x, out),
+            Format::Binary32 => self.eval_ieee::<f32>(x, out),
         };
-        for node in &self.outputs {
-            match eval_node(&mut d, node, slots) {
-                Ok(v) => out.push(v),
-                Err(LoopStop) => {
-                    // Loops past the limit: no output has a value.
-                    out.clear();
-                    out.resize(self.outputs.len(), f64::NAN);
-                    return;
-                }
+        let done = match uniform {
+            Err(FloatStop::Mixed) => {
+                out.clear();
+                self.eval_mixed(x, out)
             }
+            other => other,
+        };
+        if done.is_err() {
+            // Loops past the limit: no output has a value.
+            out.clear();
+            out.resize(self.outputs.len(), f64::NAN);
         }
     }
 
-    /// The binary32 walk of [`Program::eval_f64_into`] (`out` is empty).
-    fn eval_f32_into(&self, x: &[f64], out: &mut Vec<f64>) {
-        let mut d = F32 { x, iterations: 0 };
-        let mut stack = [0.0f32; STACK_SLOTS];
+    /// The walk in the IEEE format `T` (`out` is empty); [`FloatStop::Mixed`] at the first
+    /// operation of another precision.
+    fn eval_ieee<T: IeeeFloat>(&self, x: &[f64], out: &mut Vec<f64>) -> Result<(), FloatStop> {
+        let mut d = Ieee::<T> {
+            x,
+            iterations: 0,
+            format: std::marker::PhantomData,
+        };
+        let mut stack = [T::ZERO; STACK_SLOTS];
         let mut heap;
-        let slots: &mut [f32] = if self.slots <= STACK_SLOTS {
+        let slots: &mut [T] = if self.slots <= STACK_SLOTS {
             &mut stack[..self.slots]
         } else {
-            heap = vec![0.0; self.slots];
+            heap = vec![T::ZERO; self.slots];
             &mut heap
         };
         for node in &self.outputs {
-            match eval_node(&mut d, node, slots) {
-                Ok(v) => out.push(f64::from(v)),
-                Err(LoopStop) => {
-                    out.clear();
-                    out.resize(self.outputs.len(), f64::NAN);
-                    return;
-                }
-            }
+            out.push(eval_node(&mut d, node, slots)?.widen());
         }
+        Ok(())
+    }
+
+    /// The walk of a program that mixes precisions (`out` is empty).
+    fn eval_mixed(&self, x: &[f64], out: &mut Vec<f64>) -> Result<(), FloatStop> {
+        let mut d = Mixed {
+            x,
+            iterations: 0,
+            format: self.precision,
+        };
+        let mut slots = vec![0.0; self.slots];
+        for node in &self.outputs {
+            out.push(eval_node(&mut d, node, &mut slots)?);
+        }
+        Ok(())
     }
 }

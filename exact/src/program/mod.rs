@@ -32,6 +32,8 @@ mod explain;
 mod float;
 pub mod fpcore;
 mod interval;
+#[cfg(test)]
+mod mixed_tests;
 mod real;
 #[cfg(test)]
 mod tests;
@@ -132,6 +134,12 @@ pub enum Node {
     Fun(Func, Vec<Node>),
     /// A loop (FPCore's `while` and `while*`), see [`Loop`].
     While(Box<Loop>),
+    /// The operations of the subtree round to this precision (FPCore's `(! :precision F e)`
+    /// inside a program of another precision); the exact side ignores it.
+    Precision(Format, Box<Node>),
+    /// The value rounded to the precision in scope (FPCore's `cast`, in a program that mixes
+    /// precisions); the exact side ignores it.
+    Cast(Box<Node>),
 }
 
 /// A loop: bind each variable's slot to its initial value, then, while `cond` holds, give each
@@ -321,8 +329,8 @@ pub struct Program {
     /// The outputs (one or more).
     pub outputs: Vec<Node>,
     /// The format the float side computes in (every operation, literal and library function
-    /// rounded to it) and the exact reference's rounding is decided in: binary64 unless FPCore's
-    /// `:precision` or `regress --precision` says binary32.
+    /// rounded to it, except inside a [`Node::Precision`]) and the exact reference's rounding is
+    /// decided in: binary64 unless FPCore's `:precision` or `regress --precision` says binary32.
     pub precision: Format,
 }
 
@@ -344,7 +352,10 @@ impl Program {
 fn node_ops(n: &Node) -> usize {
     match n {
         Node::Input(_) | Node::Slot(_) | Node::Const(_) => 0,
-        Node::Neg(a) | Node::Sqrt(a) | Node::Abs(a) | Node::Pow(a, _, _) => 1 + node_ops(a),
+        Node::Neg(a) | Node::Sqrt(a) | Node::Abs(a) | Node::Pow(a, _, _) | Node::Cast(a) => {
+            1 + node_ops(a)
+        }
+        Node::Precision(_, a) => node_ops(a),
         Node::Add(a, b)
         | Node::Sub(a, b)
         | Node::Mul(a, b)

@@ -23,6 +23,10 @@
 //!   ([`exactcheck_core::limits::LOOP_ITERATIONS`]). A loop's condition is decided on the exact
 //!   values like an `if`'s (refined, never guessed), so the iterations are those of the true
 //!   real computation.
+//! * [`ExactStop::LoopValueLimit`]: in the exact zero test (below), which keeps every value
+//!   exact, a loop variable's value grew past the `loop-value-bits` limit
+//!   ([`exactcheck_core::limits::LOOP_VALUE_BITS`]): a diverging loop's exact values grow every
+//!   iteration, and at thousands of iterations each would cost minutes.
 //! * [`ExactStop::TooLarge`]: an exact intermediate value would exceed
 //!   the `constant-bits` limit ([`exactcheck_core::limits::CONSTANT_BITS`]) in bits (or an
 //!   approximate one a binary exponent of that size), the limit every constant of the workspace
@@ -107,6 +111,21 @@ pub enum ExactStop {
     /// The program's loops ran past the `loop-iterations` limit.
     #[error("{}", limits::LOOP_ITERATIONS.exceeded(format!("more than {}", limits::LOOP_ITERATIONS.get())))]
     LoopLimit,
+    /// A loop variable's exact value grew past the `loop-value-bits` limit.
+    #[error("{}", limits::LOOP_VALUE_BITS.exceeded(format!("more than {} in a loop variable", limits::LOOP_VALUE_BITS.get())))]
+    LoopValueLimit,
+}
+
+impl ExactStop {
+    /// The limit that stopped the evaluation, for the stops at a limit on the work of one
+    /// sample (`loop-iterations`, `loop-value-bits`); `None` otherwise.
+    pub fn limit(self) -> Option<&'static limits::Limit> {
+        match self {
+            ExactStop::LoopLimit => Some(&limits::LOOP_ITERATIONS),
+            ExactStop::LoopValueLimit => Some(&limits::LOOP_VALUE_BITS),
+            ExactStop::OutsideDomain | ExactStop::Undecided | ExactStop::TooLarge => None,
+        }
+    }
 }
 
 /// A value of the exact evaluation: a rational, or an enclosure of an irrational number with,
@@ -476,6 +495,8 @@ enum RadStop {
     Unrepresentable,
     /// Past the `loop-iterations` limit.
     LoopLimit,
+    /// A loop variable past the `loop-value-bits` limit.
+    LoopValueLimit,
 }
 
 /// The multi-quadratic field [`Radical`] as an exact domain, with the loop iterations done.
@@ -598,6 +619,15 @@ impl Evaluator for Rad<'_> {
             Err(RadStop::LoopLimit)
         }
     }
+    /// Every value here is exact: a loop variable past the `loop-value-bits` limit stops the
+    /// sample (a diverging loop would grow its values up to `constant-bits`).
+    fn carry(&mut self, v: Radical) -> Result<Radical, RadStop> {
+        if v.size_within(limits::LOOP_VALUE_BITS.get()) {
+            Ok(v)
+        } else {
+            Err(RadStop::LoopValueLimit)
+        }
+    }
 }
 
 /// An inexact reference to an irrational radical, by interval refinement (the value is neither
@@ -651,8 +681,8 @@ impl Program {
     /// to a double decided).
     ///
     /// # Errors
-    /// [`ExactStop::OutsideDomain`], [`ExactStop::Undecided`], [`ExactStop::TooLarge`] as
-    /// documented on [`ExactStop`].
+    /// [`ExactStop::OutsideDomain`], [`ExactStop::Undecided`], [`ExactStop::TooLarge`],
+    /// [`ExactStop::LoopLimit`], [`ExactStop::LoopValueLimit`] as documented on [`ExactStop`].
     ///
     /// # Panics
     /// When `x.len()` is not [`Program::arity`], or on a malformed program (a slot or input
@@ -686,6 +716,7 @@ impl Program {
                     }
                     Err(RadStop::Outside) => return Err(ExactStop::OutsideDomain),
                     Err(RadStop::LoopLimit) => return Err(ExactStop::LoopLimit),
+                    Err(RadStop::LoopValueLimit) => return Err(ExactStop::LoopValueLimit),
                     Err(RadStop::Unrepresentable) => {}
                 }
             }

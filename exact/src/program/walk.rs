@@ -2,14 +2,15 @@
 //! ([`Evaluator`]): IEEE doubles (`float`), the exact reals of `real` (rationals and refined
 //! intervals) and the multi-quadratic field [`crate::Radical`] (the exact zero test of `real`).
 //!
-//! The walk owns the evaluation order (the tree's, left operand first), `let` binding, loops
+//! The walk owns the evaluation order (the tree's, left operand first), the precision in scope
+//! ([`Node::Precision`], which a float domain rounds to), `let` binding, loops
 //! (their binding orders; the domain counts the iterations), `if`
 //! (only the chosen branch is evaluated) and conditions (`and`/`or` short-circuit from the left,
 //! as a compiled C program does); a domain supplies the operations and a possibly failing
 //! decision of a comparison. Values are moved, not borrowed, so a domain of `Copy` numbers
 //! (`f64`) compiles to straight-line float code with no allocation, and `Result<_, Infallible>`
 //! costs nothing.
-use super::{ChainOp, CmpOp, Cond, Func, Loop, Node, PowStyle};
+use super::{ChainOp, CmpOp, Cond, Format, Func, Loop, Node, PowStyle};
 use crate::rational::Rational;
 
 /// The arithmetic a program is evaluated in.
@@ -59,6 +60,15 @@ pub(crate) trait Evaluator {
     /// A loop variable's new value as the loop keeps it (by default unchanged; the exact domain
     /// turns a rational grown too large for its working precision into an enclosure).
     fn carry(&mut self, v: Self::V) -> Result<Self::V, Self::Stop> {
+        Ok(v)
+    }
+    /// Makes `f` the precision the operations round to, returning the one it replaces (by
+    /// default nothing changes: the exact domains compute real numbers).
+    fn set_format(&mut self, f: Format) -> Result<Format, Self::Stop> {
+        Ok(f)
+    }
+    /// `v` rounded to the precision in scope (by default unchanged).
+    fn cast(&mut self, v: Self::V) -> Result<Self::V, Self::Stop> {
         Ok(v)
     }
 }
@@ -173,6 +183,16 @@ pub(crate) fn eval_node<D: Evaluator>(
             d.call(*f, a, b)?
         }
         Node::While(l) => eval_loop(d, l, slots)?,
+        Node::Precision(f, a) => {
+            let outer = d.set_format(*f)?;
+            let v = eval_node(d, a, slots);
+            d.set_format(outer)?;
+            v?
+        }
+        Node::Cast(a) => {
+            let a = eval_node(d, a, slots)?;
+            d.cast(a)?
+        }
     })
 }
 

@@ -57,7 +57,7 @@ impl Accumulator {
             CaseError::Undecided => self.undecided += 1,
             CaseError::LimitExceeded { limit, value } => {
                 self.limit_stops += 1;
-                self.limit_stop = Some(format!("{limit} = {value}"));
+                crate::report::note_limit_stop(&mut self.limit_stop, &format!("{limit} = {value}"));
             }
         }
     }

@@ -338,8 +338,8 @@ pub fn merge(reports: &[Report]) -> Result<Report, MergeError> {
         out.invalid_inputs += r.invalid_inputs;
         out.undecided += r.undecided;
         out.limit_stops += r.limit_stops;
-        if r.limit_stop.is_some() {
-            out.limit_stop.clone_from(&r.limit_stop);
+        if let Some(stops) = &r.limit_stop {
+            crate::report::note_limit_stop(&mut out.limit_stop, stops);
         }
         out.refined += r.refined;
         out.float_failures += r.float_failures;

@@ -84,6 +84,28 @@ fn a_loop_past_the_iteration_limit_stops_on_both_sides() {
 }
 
 #[test]
+fn a_loop_value_past_its_size_limit_stops_the_exact_test() {
+    // `sqrt(2) y - sqrt(2) y` is an enclosure around zero, so the exact test decides it, with
+    // `y` exact there; squaring 3/2 doubles its size every iteration (3^(2^n) / 2^(2^n)).
+    let text = |n: u64| {
+        format!(
+            "(FPCore (x) (while (< i {n}) ([y x (* y y)] [i 0 (+ i 1)]) (- (* (sqrt 2) y) (* (sqrt 2) y))))"
+        )
+    };
+    assert_eq!(exact_values(&program(&text(8)), &[1.5]), vec![big(0, 1)]);
+    let stop = program(&text(20)).eval_exact(&[exact_of(1.5)]).unwrap_err();
+    assert_eq!(stop, ExactStop::LoopValueLimit);
+    assert_eq!(stop.limit().map(|l| l.name()), Some("loop-value-bits"));
+    assert_eq!(
+        ExactStop::LoopLimit.limit().map(|l| l.name()),
+        Some("loop-iterations")
+    );
+    assert_eq!(ExactStop::Undecided.limit().map(|l| l.name()), None);
+    let msg = stop.to_string();
+    assert!(msg.contains("the limit loop-value-bits = "), "{msg}");
+}
+
+#[test]
 fn arrays_end_a_loop_and_loops_nest_in_lets() {
     let p = program(
         "(FPCore (x) (let ([h 1/2]) (while* (< i 2) ([y x (* y h)] [i 0 (+ i 1)]) (array y i))))",

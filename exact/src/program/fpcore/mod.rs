@@ -33,15 +33,19 @@
 //! * rounding contexts: `:precision binary64` (the default when absent) or `binary32` (the
 //!   program's [`crate::program::Format`]: its float side computes in `f32`) and
 //!   `:round nearestEven`, on the benchmark, in `!` annotations and on arguments
-//!   `(! :precision binary64 x)`, as long as one precision holds throughout; `(cast e)` to it
-//!   is `e`. Other properties (`:cite`, `:spec`, `:math-library`, ...) are metadata and ignored.
+//!   `(! :precision binary64 x)` (an argument of the benchmark's precision). An annotation of
+//!   the other precision inside the body is a [`Node::Precision`] scope: its operations round
+//!   to it (FPCore's lexical scoping); `(cast e)` rounds `e` to the precision in scope
+//!   ([`Node::Cast`], only in a program that mixes precisions: otherwise it is `e`). Other
+//!   properties (`:cite`, `:spec`, `:math-library`, ...) are metadata and ignored.
 //!
 //! Everything else is reported per benchmark as `not supported: OP`, never approximated:
 //! the functions without a certified enclosure here (`erf`, `tgamma`, `fmod`, ...), the
 //! derived and non-finite constants (`LN2`, `INFINITY`, ...), `for` loops, tensors,
 //! the classification predicates (`isnan`, ...), calls of other named FPCores, any precision
-//! other than binary64 and binary32, two precisions in one benchmark (`mixed precisions
-//! (binary64 inside a binary32 benchmark)`), and rounding other than nearestEven.
+//! other than binary64 and binary32, an argument of the other precision (`mixed precisions
+//! (a binary64 argument of a binary32 benchmark)`: its samples would be of another format),
+//! and rounding other than nearestEven.
 //!
 //! # `:pre` and the domain
 //! The precondition is split into its conjuncts (`and`, nested). Each ordered comparison chain

@@ -128,9 +128,51 @@ fn benchmark_format(pairs: &[(&str, &SExpr)]) -> Result<Format, Fail> {
     Ok(format)
 }
 
-/// Checks the rounding-context properties against the benchmark's `format`: its own precision
-/// and round-to-nearest-even only. Another supported format inside it is a mixed-precision
-/// program, unsupported as such (one line naming both).
+/// The precision a `!` annotation with properties `pairs` sets inside the precision `outer`:
+/// binary64 or binary32 (`outer` when it names none), rounding to nearest-even only.
+fn context_format(pairs: &[(&str, &SExpr)], outer: Format) -> Result<Format, Fail> {
+    let mut format = outer;
+    for (key, value) in pairs {
+        match *key {
+            ":precision" | ":type" => {
+                format = value
+                    .sym()
+                    .and_then(Format::from_name)
+                    .ok_or_else(|| unsupported(format!("precision {}", render(value))))?;
+            }
+            ":round" if value.sym() == Some("nearestEven") => {}
+            ":round" => return Err(unsupported(format!("round {}", render(value)))),
+            _ => {}
+        }
+    }
+    Ok(format)
+}
+
+/// Whether `e` has a `!` annotation setting a supported precision other than `format` (the
+/// program then mixes precisions, and its `cast`s round).
+fn mixes_precisions(e: &SExpr, format: Format) -> bool {
+    let SExpr::List(items, _) = e else {
+        return false;
+    };
+    if items.first().and_then(SExpr::sym) == Some("!") {
+        let other = items.windows(2).any(|w| {
+            matches!(w[0].sym(), Some(":precision" | ":type"))
+                && w[1]
+                    .sym()
+                    .and_then(Format::from_name)
+                    .is_some_and(|f| f != format)
+        });
+        if other {
+            return true;
+        }
+    }
+    items.iter().any(|i| mixes_precisions(i, format))
+}
+
+/// Checks the rounding-context properties of a benchmark or an argument against the
+/// benchmark's `format`: its own precision and round-to-nearest-even only. An argument of
+/// another supported format is a mixed-precision input, unsupported as such (one line naming
+/// both).
 fn check_context(pairs: &[(&str, &SExpr)], format: Format) -> Result<(), Fail> {
     for (key, value) in pairs {
         let (what, wanted) = match *key {
@@ -142,7 +184,7 @@ fn check_context(pairs: &[(&str, &SExpr)], format: Format) -> Result<(), Fail> {
             Some(v) if v == wanted => {}
             Some(v) if what == "precision" && Format::from_name(v).is_some() => {
                 return Err(unsupported(format!(
-                    "mixed precisions ({v} inside a {} benchmark)",
+                    "mixed precisions (a {v} argument of a {} benchmark)",
                     format.name()
                 )))
             }
@@ -306,6 +348,7 @@ pub(super) fn benchmark(tree: &SExpr) -> Result<Benchmark, FpCoreError> {
             check_context(&props, format)?;
             let mut c = Compiler {
                 format,
+                mixed: mixes_precisions(body, format),
                 slots: 0,
                 env: args
                     .iter()
@@ -383,10 +426,12 @@ fn argument(a: &SExpr, format: Format) -> Result<(String, Option<String>), FpCor
     }
 }
 
-/// The expression compiler: the benchmark's format, the slot counter and the scope (innermost
-/// binding last).
+/// The expression compiler: the precision in scope (the benchmark's outside every `!`
+/// annotation), whether the program mixes precisions, the slot counter and the scope
+/// (innermost binding last).
 struct Compiler {
     format: Format,
+    mixed: bool,
     slots: usize,
     env: Vec<(String, Value)>,
 }
@@ -426,8 +471,14 @@ impl Compiler {
         match body {
             SExpr::List(items, p) if items.first().and_then(SExpr::sym) == Some("!") => {
                 let (e, pairs) = annotation(items, *p)?;
-                check_context(&pairs, self.format)?;
-                return self.outputs(e);
+                let (outer, inner) = (self.format, context_format(&pairs, self.format)?);
+                self.format = inner;
+                let outs = self.outputs(e);
+                self.format = outer;
+                return Ok(outs?
+                    .into_iter()
+                    .map(|n| in_context(n, inner, outer))
+                    .collect());
             }
             _ => {}
         }
@@ -539,14 +590,25 @@ impl Compiler {
             "array" => Err(unsupported("array")),
             "!" => {
                 let (e, pairs) = annotation(items, pos)?;
-                check_context(&pairs, self.format)?;
-                self.expr(e)
+                let (outer, inner) = (self.format, context_format(&pairs, self.format)?);
+                self.format = inner;
+                let v = self.expr(e);
+                self.format = outer;
+                Ok(match v? {
+                    Value::Num(n) => Value::Num(in_context(n, inner, outer)),
+                    Value::Bool(c) => Value::Bool(cond_in_context(c, inner, outer)),
+                })
             }
-            // In a program of one format every value already is a value of it: rounding one to
-            // the current format changes nothing.
+            // Rounds to the precision in scope; in a program of one precision every value
+            // already is a value of it, and the cast changes nothing.
             "cast" => {
                 arity(1)?;
-                self.expr(&args[0])
+                let a = self.num(&args[0])?;
+                num(if self.mixed {
+                    Node::Cast(Box::new(a))
+                } else {
+                    a
+                })
             }
             "+" | "*" | "/" => {
                 arity(2)?;
@@ -665,6 +727,36 @@ impl Compiler {
             // named FPCores — is outside the supported subset.
             other => Err(unsupported(other)),
         }
+    }
+}
+
+/// `n` computed in the precision `inner` inside `outer`.
+fn in_context(n: Node, inner: Format, outer: Format) -> Node {
+    if inner == outer {
+        n
+    } else {
+        Node::Precision(inner, Box::new(n))
+    }
+}
+
+/// `c` with the operands of its comparisons computed in the precision `inner` inside `outer`.
+fn cond_in_context(c: Cond, inner: Format, outer: Format) -> Cond {
+    match c {
+        Cond::Bool(b) => Cond::Bool(b),
+        Cond::Cmp(op, a, b) => {
+            Cond::Cmp(op, in_context(a, inner, outer), in_context(b, inner, outer))
+        }
+        Cond::And(cs) => Cond::And(
+            cs.into_iter()
+                .map(|c| cond_in_context(c, inner, outer))
+                .collect(),
+        ),
+        Cond::Or(cs) => Cond::Or(
+            cs.into_iter()
+                .map(|c| cond_in_context(c, inner, outer))
+                .collect(),
+        ),
+        Cond::Not(c) => Cond::Not(Box::new(cond_in_context(*c, inner, outer))),
     }
 }
 

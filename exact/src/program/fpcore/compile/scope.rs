@@ -223,6 +223,8 @@ fn subst_node(n: &Node, map: &[(usize, Node)]) -> Node {
             cond: subst_cond(&l.cond, map),
             body: subst_node(&l.body, map),
         })),
+        Node::Precision(f, a) => Node::Precision(*f, b(a)),
+        Node::Cast(a) => Node::Cast(b(a)),
     }
 }
 
