@@ -37,13 +37,14 @@ exactcheck_core::declare_limits! {
 /// Every limit, the library crates' and the tool's, in the order of the table in docs/limits.md.
 pub fn all() -> &'static [&'static Limit] {
     use core_limits as c;
-    static ALL: [&Limit; 29] = [
+    static ALL: [&Limit; 30] = [
         &FILE_SIZE,
         &c::DEPTH,
         &c::DIGITS,
         &c::EXPONENT,
         &c::FORMULA_EXPONENT,
         &c::LOOP_ITERATIONS,
+        &c::LOOP_VALUE_BITS,
         &c::CONSTANT_BITS,
         &c::RADICANDS,
         &c::ALGEBRAIC_DEGREE,

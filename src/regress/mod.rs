@@ -575,7 +575,7 @@ fn text_run(args: &RegressArgs, fpcore: Option<&str>) -> Result<ExitCode, Error>
         let limit = match &first.outcome {
             Ok(r) => r.limit_stop.as_deref().and_then(|s| {
                 let name = s.split(" = ").next().unwrap_or_default();
-                exactcheck_core::limits::find(name)
+                crate::limits::find(name)
             }),
             Err(_) => None,
         }
