@@ -45,8 +45,9 @@ use exactcheck_exact::expr::{
 };
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
-    decide_identity, square_roots, AlgebraicConstants, VarDomain, EngineError, FractionIdentity,
+    decide_identity, square_roots, AlgebraicConstants, EngineError, FractionIdentity,
     IdentityReport, IdentitySpec, IdentityVerdict, Part, PointField, SquareRoot, Statement,
+    VarDomain,
 };
 use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::{Algebraic, Radical, Rational};

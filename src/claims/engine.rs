@@ -10,8 +10,8 @@ use exactcheck_exact::expr::CoeffExpr;
 use exactcheck_exact::expr::{parse_expr, parse_poly, Coefficient, Expr};
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
-    decide_identity, factored, VarDomain, EngineError, IdentitySpec, IdentityVerdict, Part,
-    PointField, Statement,
+    decide_identity, factored, EngineError, IdentitySpec, IdentityVerdict, Part, PointField,
+    Statement, VarDomain,
 };
 use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::Rational;

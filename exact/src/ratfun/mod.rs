@@ -35,8 +35,8 @@ mod factored;
 #[cfg(test)]
 mod tests;
 
-pub use crate::poly::gcd::{certified_coprime, poly_gcd};
 use crate::poly::gcd::certified_square_free;
+pub use crate::poly::gcd::{certified_coprime, poly_gcd};
 pub use crate::poly::{div_exact, poly_derivative};
 pub use factored::{Fraction, MAX_FACTORS};
 

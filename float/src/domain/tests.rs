@@ -68,7 +68,8 @@ fn binary32_domains_sample_binary32_values_inside_the_bounds() {
             (1u64 << 40).into(),
         ));
     let binary32_domain = |lo: Bound, hi: Bound| {
-        SampleDomain::named(vec![iv(lo, hi)], &names[..1]).and_then(|d| d.with_format(Format::Binary32))
+        SampleDomain::named(vec![iv(lo, hi)], &names[..1])
+            .and_then(|d| d.with_format(Format::Binary32))
     };
     let empty = binary32_domain(cl(1), Bound::Closed(near_one.clone()));
     assert!(empty.is_ok(), "1 itself is a binary32 value");

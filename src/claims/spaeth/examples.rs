@@ -100,7 +100,8 @@ fn covers_everything(a: &Analysis) -> bool {
         && a.sign_at_pi != exactcheck_core::Sign::Negative
 }
 
-const EX_METHOD: &str = "exact decision (root isolation on the tau-quartic) + f64 sampling as printed";
+const EX_METHOD: &str =
+    "exact decision (root isolation on the tau-quartic) + f64 sampling as printed";
 
 fn example1() -> Result<Outcome, String> {
     let cs = example(1);

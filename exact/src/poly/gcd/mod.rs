@@ -27,8 +27,8 @@
 
 mod coprime;
 
-pub use coprime::{certified_coprime, certified_square_free};
 pub(crate) use coprime::div_image_possible;
+pub use coprime::{certified_coprime, certified_square_free};
 
 use super::{div_exact, Poly, SizeError, Var};
 use crate::{Radical, Rational};
