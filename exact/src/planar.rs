@@ -95,7 +95,7 @@
 //! sparse [`crate::poly::Poly`].
 
 use crate::univariate::{
-    descartes_bound, isolate_real_roots_in, sign_variations, RootInterval, UPoly,
+    compare_simple, descartes_bound, isolate_real_roots_in, RootInterval, UPoly,
 };
 use crate::Rational;
 use exactcheck_core::bernstein::Bernstein;
@@ -104,6 +104,7 @@ use exactcheck_core::{Field, Ring, Sign};
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::One;
+use std::cmp::Ordering;
 
 mod resultant;
 #[cfg(test)]
@@ -268,7 +269,7 @@ pub fn self_intersections(
     let mut search = Search {
         f,
         g,
-        w_sturm: w_free.sturm_sequence(),
+        w_roots: w_free.isolate_roots(),
         w_free,
         sqf,
         roots,
@@ -614,10 +615,10 @@ fn edge_sign(p: &UPoly, lo: &Rational, hi: &Rational) -> Option<Sign> {
 struct Search {
     f: Dense,
     g: Dense,
-    /// The square-free part of `w` and its Sturm sequence (roots of `w` are roots of `R` that
-    /// [`candidate_polynomial`] removed).
+    /// The square-free part of `w` and its real roots, isolated once (roots of `w` are roots of
+    /// `R` that [`candidate_polynomial`] removed).
     w_free: UPoly,
-    w_sturm: Vec<UPoly>,
+    w_roots: Vec<RootInterval>,
     sqf: UPoly,
     roots: Vec<RootInterval>,
 }
@@ -725,12 +726,18 @@ impl Search {
     /// Whether the closed interval `[lo, hi]` holds exactly one root of `R` and its ends none:
     /// one root of the candidate polynomial, no root of `w` (module documentation).
     fn isolates_one(&self, (lo, hi): &(Rational, Rational)) -> bool {
-        let count = |p: &UPoly, chain: &[UPoly]| {
-            (p.sign_at(lo) != Sign::Zero && p.sign_at(hi) != Sign::Zero)
-                .then(|| sign_variations(chain, lo) - sign_variations(chain, hi))
+        // No root of `w` in `[lo, hi]`: neither end is one, and every isolated root lies below
+        // `lo` or above `hi` (the square-free `w_free` changes sign across each of its roots).
+        let w_free_in = || {
+            let w = &self.w_free;
+            w.sign_at(lo) != Sign::Zero
+                && w.sign_at(hi) != Sign::Zero
+                && self.w_roots.iter().all(|r| {
+                    compare_simple(w, r, lo) == Ordering::Greater
+                        || compare_simple(w, r, hi) == Ordering::Less
+                })
         };
-        descartes_one(&self.sqf, lo, hi)
-            && (self.w_free.is_constant() || count(&self.w_free, &self.w_sturm) == Some(0))
+        descartes_one(&self.sqf, lo, hi) && (self.w_free.is_constant() || w_free_in())
     }
 
     /// Halves the interval of root `k` (exact when the midpoint is the root).

@@ -242,7 +242,7 @@ pub(super) fn refine_simple(p: &UPoly, ri: &RootInterval, width: &Rational) -> R
 
 /// `x` compared with the root of the square-free `p` isolated by `ri`: the sign of `p` changes
 /// across that root only.
-pub(super) fn compare_simple(p: &UPoly, ri: &RootInterval, x: &Rational) -> Ordering {
+pub(crate) fn compare_simple(p: &UPoly, ri: &RootInterval, x: &Rational) -> Ordering {
     if ri.is_exact() {
         return x.cmp(&ri.lo);
     }
