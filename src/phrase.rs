@@ -29,7 +29,7 @@ use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
     factored, real_zero_free, where_clause, AlgebraicConstants, ConstantPoint, CoordinateOutcome,
     CorrectionVerdict, DecideError, EngineError, FractionIdentity, IdentityReport, IdentitySpec,
-    IdentityVerdict, PointField, RadicalPoint, Statement, UsedHypothesis,
+    IdentityVerdict, PointField, RadicalPoint, SquareRoot, Statement, UsedHypothesis,
 };
 use serde_json::{json, Value};
 use std::fmt::{self, Display};
@@ -120,6 +120,48 @@ pub struct Phrasing<'a> {
 }
 
 impl<'a> Phrasing<'a> {
+    /// The texts of the variables' domains (`(name, "x > 0")` from the domain list's name and
+    /// text), then each algebraic constant's isolating interval.
+    pub fn domain_texts<'d>(
+        domains: impl IntoIterator<Item = (&'d String, &'d String)>,
+        constants: Option<&AlgebraicConstants>,
+    ) -> Vec<(String, String)> {
+        domains
+            .into_iter()
+            .map(|(n, t)| (n.clone(), t.trim().to_string()))
+            .chain(constants.map(|k| {
+                (
+                    k.name.clone(),
+                    format!("{} in its isolating interval {}", k.name, k.domain()),
+                )
+            }))
+            .collect()
+    }
+
+    /// Each square root's variable name, its side condition `E >= 0` and whether it holds
+    /// everywhere.
+    pub fn root_texts<C: PointField>(
+        roots: &[SquareRoot<C>],
+        vars: &Vars,
+    ) -> Vec<(String, String, bool)> {
+        roots
+            .iter()
+            .map(|r| {
+                let name = vars.name(r.var).unwrap_or("?").to_string();
+                (name, r.condition(), r.defined_everywhere())
+            })
+            .collect()
+    }
+
+    /// The relations' and circles' texts, in that order.
+    fn all_relations(&self) -> Vec<&str> {
+        self.relations
+            .iter()
+            .chain(&self.circles)
+            .map(String::as_str)
+            .collect()
+    }
+
     /// The phrasing of a statement in `vars` with nothing besides its report.
     pub fn new(vars: &'a Vars) -> Self {
         Phrasing {
@@ -175,13 +217,7 @@ impl<'a> Phrasing<'a> {
         if self.relations.is_empty() && self.circles.is_empty() {
             String::new()
         } else {
-            let all: Vec<&str> = self
-                .relations
-                .iter()
-                .chain(&self.circles)
-                .map(String::as_str)
-                .collect();
-            format!(" modulo {}", all.join(", "))
+            format!(" modulo {}", self.all_relations().join(", "))
         }
     }
 
@@ -554,12 +590,7 @@ impl<'a> Phrasing<'a> {
         match e {
             EngineError::Size(_, e) => e.to_string(),
             EngineError::Decide(_, DecideError::Inconsistent) => {
-                let all: Vec<&str> = self
-                    .relations
-                    .iter()
-                    .chain(&self.circles)
-                    .map(String::as_str)
-                    .collect();
+                let all = self.all_relations();
                 let which = if all.is_empty() {
                     String::new()
                 } else {

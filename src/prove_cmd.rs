@@ -554,23 +554,8 @@ pub(crate) fn prove_over<C: PointField + Display>(
         domains: domains.iter().map(|(_, _, t)| t.clone()).collect(),
         labels: sides.labels(),
         nonzero_texts,
-        domain_texts: domains
-            .iter()
-            .map(|(n, _, t)| (n.clone(), t.trim().to_string()))
-            .chain(constants.map(|k| {
-                (
-                    k.name.clone(),
-                    format!("{} in its isolating interval {}", k.name, k.domain()),
-                )
-            }))
-            .collect(),
-        roots: roots
-            .iter()
-            .map(|r| {
-                let name = spec.vars.name(r.var).unwrap_or("?").to_string();
-                (name, r.condition(), r.defined_everywhere())
-            })
-            .collect(),
+        domain_texts: Phrasing::domain_texts(domains.iter().map(|(n, _, t)| (n, t)), constants),
+        roots: Phrasing::root_texts(&roots, &spec.vars),
         pi,
         constants,
         ..Phrasing::new(&spec.vars)

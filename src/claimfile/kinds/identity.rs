@@ -234,24 +234,8 @@ fn identity<C: PointField + Display>(
             .map(ToString::to_string)
             .collect(),
         nonzero_texts,
-        domain_texts: conditions
-            .domains
-            .iter()
-            .map(|(n, _, t)| (n.clone(), t.trim().to_string()))
-            .chain(k.map(|k| {
-                (
-                    k.name.clone(),
-                    format!("{} in its isolating interval {}", k.name, k.domain()),
-                )
-            }))
-            .collect(),
-        roots: roots
-            .iter()
-            .map(|r| {
-                let name = spec.vars.name(r.var).unwrap_or("?").to_string();
-                (name, r.condition(), r.defined_everywhere())
-            })
-            .collect(),
+        domain_texts: Phrasing::domain_texts(conditions.domains.iter().map(|(n, _, t)| (n, t)), k),
+        roots: Phrasing::root_texts(&roots, &spec.vars),
         pi,
         constants: k,
         ..Phrasing::new(&spec.vars)
