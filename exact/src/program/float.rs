@@ -469,37 +469,49 @@ pub fn pow_f32(a: f32, n: i32, style: PowStyle) -> f32 {
     }
 }
 
-/// The function `f` in binary32: the C library's `f32` functions (Rust's `f32` methods call
-/// `expf`, `logf`, `sinf`, `powf`, `hypotf`, `cbrtf`, ...; the inverse hyperbolic functions are
-/// declared directly), and the binary32 values nearest to pi and e.
-pub fn call_f32(f: Func, a: f32, b: f32) -> f32 {
-    match f {
-        Func::Pi => std::f32::consts::PI,
-        Func::E => std::f32::consts::E,
-        Func::Exp => a.exp(),
-        Func::Exp2 => a.exp2(),
-        Func::Expm1 => a.exp_m1(),
-        Func::Log => a.ln(),
-        Func::Log2 => a.log2(),
-        Func::Log10 => a.log10(),
-        Func::Log1p => a.ln_1p(),
-        Func::Sin => a.sin(),
-        Func::Cos => a.cos(),
-        Func::Tan => a.tan(),
-        Func::Asin => a.asin(),
-        Func::Acos => a.acos(),
-        Func::Atan => a.atan(),
-        Func::Atan2 => a.atan2(b),
-        Func::Sinh => a.sinh(),
-        Func::Cosh => a.cosh(),
-        Func::Tanh => a.tanh(),
-        Func::Asinh => cmath::asinhf(a),
-        Func::Acosh => cmath::acoshf(a),
-        Func::Atanh => cmath::atanhf(a),
-        Func::Pow => a.powf(b),
-        Func::Hypot => a.hypot(b),
-        Func::Cbrt => a.cbrt(),
-    }
+/// The C-library call table of one float type: `$name(f, a, b)` in `$t` (its `consts` for pi
+/// and e, Rust's methods, which call the C library, and the declared inverse hyperbolic
+/// functions `$asinh`, `$acosh`, `$atanh`).
+macro_rules! libm_calls {
+    ($(#[$doc:meta])* $name:ident, $t:ident, $asinh:ident, $acosh:ident, $atanh:ident) => {
+        $(#[$doc])*
+        pub fn $name(f: Func, a: $t, b: $t) -> $t {
+            match f {
+                Func::Pi => std::$t::consts::PI,
+                Func::E => std::$t::consts::E,
+                Func::Exp => a.exp(),
+                Func::Exp2 => a.exp2(),
+                Func::Expm1 => a.exp_m1(),
+                Func::Log => a.ln(),
+                Func::Log2 => a.log2(),
+                Func::Log10 => a.log10(),
+                Func::Log1p => a.ln_1p(),
+                Func::Sin => a.sin(),
+                Func::Cos => a.cos(),
+                Func::Tan => a.tan(),
+                Func::Asin => a.asin(),
+                Func::Acos => a.acos(),
+                Func::Atan => a.atan(),
+                Func::Atan2 => a.atan2(b),
+                Func::Sinh => a.sinh(),
+                Func::Cosh => a.cosh(),
+                Func::Tanh => a.tanh(),
+                Func::Asinh => cmath::$asinh(a),
+                Func::Acosh => cmath::$acosh(a),
+                Func::Atanh => cmath::$atanh(a),
+                Func::Pow => a.powf(b),
+                Func::Hypot => a.hypot(b),
+                Func::Cbrt => a.cbrt(),
+            }
+        }
+    };
+}
+
+libm_calls! {
+    /// The function `f` in binary32: the C library's `f32` functions (Rust's `f32` methods call
+    /// `expf`, `logf`, `sinf`, `powf`, `hypotf`, `cbrtf`, ...; the inverse hyperbolic functions are
+    /// declared directly), and the binary32 values nearest to pi and e.
+    call_f32, f32, asinhf, acoshf, atanhf
 }
 
 /// `a^n` in doubles, per [`PowStyle`].
@@ -568,38 +580,12 @@ mod cmath {
     }
 }
 
-/// The function `f` in doubles: the platform's C library (Rust's `f64` methods call it for
-/// `exp`, `log`, `sin`, `pow`, `hypot`, `cbrt`, ...; the inverse hyperbolic functions are
-/// declared directly); `b` is the second argument of the two-argument functions
-/// (`atan2(a, b)` is `atan2(y = a, x = b)`), ignored otherwise.
-pub fn call_f64(f: Func, a: f64, b: f64) -> f64 {
-    match f {
-        Func::Pi => std::f64::consts::PI,
-        Func::E => std::f64::consts::E,
-        Func::Exp => a.exp(),
-        Func::Exp2 => a.exp2(),
-        Func::Expm1 => a.exp_m1(),
-        Func::Log => a.ln(),
-        Func::Log2 => a.log2(),
-        Func::Log10 => a.log10(),
-        Func::Log1p => a.ln_1p(),
-        Func::Sin => a.sin(),
-        Func::Cos => a.cos(),
-        Func::Tan => a.tan(),
-        Func::Asin => a.asin(),
-        Func::Acos => a.acos(),
-        Func::Atan => a.atan(),
-        Func::Atan2 => a.atan2(b),
-        Func::Sinh => a.sinh(),
-        Func::Cosh => a.cosh(),
-        Func::Tanh => a.tanh(),
-        Func::Asinh => cmath::asinh(a),
-        Func::Acosh => cmath::acosh(a),
-        Func::Atanh => cmath::atanh(a),
-        Func::Pow => a.powf(b),
-        Func::Hypot => a.hypot(b),
-        Func::Cbrt => a.cbrt(),
-    }
+libm_calls! {
+    /// The function `f` in doubles: the platform's C library (Rust's `f64` methods call it for
+    /// `exp`, `log`, `sin`, `pow`, `hypot`, `cbrt`, ...; the inverse hyperbolic functions are
+    /// declared directly); `b` is the second argument of the two-argument functions
+    /// (`atan2(a, b)` is `atan2(y = a, x = b)`), ignored otherwise.
+    call_f64, f64, asinh, acosh, atanh
 }
 
 impl Program {
