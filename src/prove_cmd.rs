@@ -26,7 +26,9 @@
 //! (`exactcheck_exact::prove::random`, which proves the printed error bound), in the same
 //! language: the library's functions resolved, `diff`, `integrate`, `sum`, `binomial` and
 //! `factorial` lowered to arithmetic, divisions evaluated with the points where a divisor
-//! vanishes skipped. Exit status:
+//! vanishes skipped, algebraic constants evaluated modulo p in the quotient ring of their
+//! field's minimal polynomial and angles on their unit circles (a failure then confirmed by an
+//! exact counter-example). Exit status:
 //! 0 proved or holds, 1 fails or undecided, 2 bad input. An identity between constants whose
 //! nested square roots do not denest (`sqrt(2 + sqrt(2))`) is decided in the real algebraic
 //! numbers (`exactcheck_exact::algebraic`).
@@ -76,7 +78,10 @@ pub struct ProveArgs {
     /// Instead of expanding, evaluate both sides at K random points (1 to 100000) modulo a prime
     /// drawn at random from [2^62, 2^63) for this run: `fails` at a non-zero point, `holds`
     /// when the proved error bound is below 2^-30, else `undecided` with the bound. Relations
-    /// must be unit circles `c^2 + s^2 = 1`; no domains, no sqrt.
+    /// must be unit circles `c^2 + s^2 = 1`; no domains, no sqrt of a non-constant. Constants
+    /// (`sqrt(2)`, `cos(pi/8)`) are evaluated in F_p[c]/(m) for the minimal polynomial m of
+    /// their field, angles of sin, cos, tan on their unit circles; a failure is then confirmed
+    /// by an exact counter-example.
     #[arg(long, value_name = "K")]
     pub random: Option<u64>,
     /// Seed of `--random` (default: a fresh random seed, printed, per run). The prime is drawn

@@ -42,7 +42,9 @@ pub fn report_of(d: &RandomDecision) -> &RandomReport {
         RandomDecision::Holds { report, .. }
         | RandomDecision::Reproduced { report }
         | RandomDecision::Undecided { report, .. }
-        | RandomDecision::Fails { report, .. } => report,
+        | RandomDecision::Fails { report, .. }
+        | RandomDecision::Refuted { report, .. }
+        | RandomDecision::Unconfirmed { report, .. } => report,
     }
 }
 
@@ -52,7 +54,8 @@ pub fn component_verdict(d: &RandomDecision) -> (&'static str, Option<f64>) {
         RandomDecision::Holds { log2_bound, .. } => ("holds", Some(*log2_bound)),
         RandomDecision::Reproduced { .. } => ("holds (reproduced)", None),
         RandomDecision::Undecided { log2_bound, .. } => ("undecided", Some(*log2_bound)),
-        RandomDecision::Fails { .. } => ("fails", None),
+        RandomDecision::Fails { .. } | RandomDecision::Refuted { .. } => ("fails", None),
+        RandomDecision::Unconfirmed { .. } => ("undecided", None),
     }
 }
 
@@ -62,6 +65,47 @@ fn show(l: f64) -> String {
         "0".to_string()
     } else {
         format!("2^{:.1}", (l * 10.0).ceil() / 10.0)
+    }
+}
+
+/// What the sides were rewritten with, for the evidence: the constants' field and the angles
+/// (` (with c = sqrt(2), c^2 - 2 = 0 in F_p[c]/(c^2 - 2); angle x on its unit circle)`), empty
+/// for an identity over Q.
+fn notes(report: &RandomReport) -> String {
+    let mut parts = Vec::new();
+    if let Some(k) = &report.constants {
+        parts.push(format!("{k}; values in F_p[c]/(m), m the minimal polynomial of c"));
+    }
+    if !report.angles.is_empty() {
+        let many = report.angles.len() > 1;
+        parts.push(format!(
+            "{} {} on {} unit circle{} (cos^2 + sin^2 = 1){}",
+            if many { "angles" } else { "angle" },
+            report.angles.join(", "),
+            if many { "their" } else { "its" },
+            if many { "s" } else { "" },
+            if report.tan {
+                ", points where the cosine of a tan vanishes skipped"
+            } else {
+                ""
+            }
+        ));
+    }
+    if parts.is_empty() {
+        String::new()
+    } else {
+        format!(" ({})", parts.join("; "))
+    }
+}
+
+/// The field's part of the bound: `, m of degree 2 with log2 ||m||_1 <= 2`.
+fn field_text(report: &RandomReport) -> String {
+    match &report.field {
+        Some(f) => format!(
+            ", m of degree {} with log2 ||m||_1 <= {}",
+            f.degree, f.modulus_bits
+        ),
+        None => String::new(),
     }
 }
 
@@ -75,8 +119,9 @@ pub fn phrase_random(
     options: &RandomOptions,
 ) -> RandomPhrased {
     let rank = |d: &RandomDecision| match d {
-        RandomDecision::Fails { .. } => (3, 0.0),
+        RandomDecision::Fails { .. } | RandomDecision::Refuted { .. } => (3, 0.0),
         RandomDecision::Undecided { log2_bound, .. } => (2, *log2_bound),
+        RandomDecision::Unconfirmed { .. } => (2, 0.0),
         RandomDecision::Holds { log2_bound, .. } => (1, *log2_bound),
         RandomDecision::Reproduced { .. } => (0, 0.0),
     };
@@ -102,7 +147,12 @@ pub fn phrase_random(
             .map(|d| report_of(d).prime.to_string())
             .collect();
         let undecided: Vec<&str> = (0..decisions.len())
-            .filter(|&k| matches!(decisions[k], RandomDecision::Undecided { .. }))
+            .filter(|&k| {
+                matches!(
+                    decisions[k],
+                    RandomDecision::Undecided { .. } | RandomDecision::Unconfirmed { .. }
+                )
+            })
             .map(|k| labels[k].as_str())
             .collect();
         (
@@ -113,8 +163,10 @@ pub fn phrase_random(
                 labels[shown]
             ),
             match decision {
-                RandomDecision::Fails { .. } => format!("in {}: ", labels[shown]),
-                RandomDecision::Undecided { .. } => {
+                RandomDecision::Fails { .. } | RandomDecision::Refuted { .. } => {
+                    format!("in {}: ", labels[shown])
+                }
+                RandomDecision::Undecided { .. } | RandomDecision::Unconfirmed { .. } => {
                     format!("undecided in {}: ", undecided.join(", "))
                 }
                 _ => format!("in each of the {} components: ", labels.len()),
@@ -136,6 +188,7 @@ pub fn phrase_random(
             String::new()
         }
     );
+    let notes = notes(report);
     let (verdict, verdict_text, log2_bound, evidence) = match decision {
         RandomDecision::Holds {
             bound, log2_bound, ..
@@ -144,7 +197,8 @@ pub fn phrase_random(
             "holds",
             Some(*log2_bound),
             format!(
-                "LHS - RHS vanishes at all {trials} points; with LHS - RHS = F/D ({bound}), a false identity passes with probability <= {} (below the threshold 2^{HOLDS_THRESHOLD_LOG2})",
+                "LHS - RHS vanishes at all {trials} points{notes}; with LHS - RHS = F/D ({bound}{}), a false identity passes with probability <= {} (below the threshold 2^{HOLDS_THRESHOLD_LOG2})",
+                field_text(report),
                 show(*log2_bound)
             ),
         ),
@@ -153,7 +207,7 @@ pub fn phrase_random(
             "holds (reproduced)",
             None,
             format!(
-                "LHS - RHS vanishes at all {trials} points modulo the prime drawn from the chosen seed {} and the identity; a chosen seed gives no probability bound (it need not be independent of the identity): {} for a fresh seed and the proved bound",
+                "LHS - RHS vanishes at all {trials} points{notes} modulo the prime drawn from the chosen seed {} and the identity; a chosen seed gives no probability bound (it need not be independent of the identity): {} for a fresh seed and the proved bound",
                 seed.value(),
                 options.fresh_seed
             ),
@@ -163,7 +217,8 @@ pub fn phrase_random(
         } => {
             let why = match bound {
                 Some(b) => format!(
-                    "with LHS - RHS = F/D ({b}) the error bound{} is {}, not below the threshold 2^{HOLDS_THRESHOLD_LOG2}",
+                    "with LHS - RHS = F/D ({b}{}) the error bound{} is {}, not below the threshold 2^{HOLDS_THRESHOLD_LOG2}",
+                    field_text(report),
                     if chosen { " a fresh seed would give" } else { "" },
                     show(*log2_bound)
                 ),
@@ -174,7 +229,7 @@ pub fn phrase_random(
                 "undecided",
                 Some(*log2_bound),
                 format!(
-                    "LHS - RHS vanishes at all {trials} points, but {why}; use more points ({} up to {}){}",
+                    "LHS - RHS vanishes at all {trials} points{notes}, but {why}; use more points ({} up to {}){}",
                     options.points,
                     exactcheck_exact::prove::MAX_RANDOM_TRIALS,
                     options.otherwise
@@ -193,6 +248,29 @@ pub fn phrase_random(
                     .collect::<Vec<_>>()
                     .join(", "),
                 options.exact_counter_example
+            ),
+        ),
+        RandomDecision::Refuted { exact, .. } => (
+            Verdict::Fails,
+            "fails",
+            None,
+            format!(
+                "at {} LHS - RHS = {}, not zero: evaluated exactly after LHS - RHS was non-zero at a random point modulo p{notes}",
+                exact.point.join(", "),
+                exact.value
+            ),
+        ),
+        RandomDecision::Unconfirmed { point, why, .. } => (
+            Verdict::Undecided,
+            "undecided",
+            None,
+            format!(
+                "LHS - RHS is non-zero modulo p at {}{notes}, but no exact counter-example confirms it: {why}",
+                point
+                    .iter()
+                    .map(|(v, x)| format!("{v} = {x}"))
+                    .collect::<Vec<_>>()
+                    .join(", ")
             ),
         ),
     };

@@ -118,6 +118,12 @@ pub(super) fn random_test(
                 .collect::<Vec<_>>()
                 .into();
         }
+        if let exactcheck_exact::prove::RandomDecision::Refuted { exact, .. } =
+            &decisions[phrased.shown]
+        {
+            obj["counter_example"] = json!(exact.point);
+            obj["value"] = json!(exact.value);
+        }
         if let Some(l) = log2 {
             obj["log2_error_bound"] = if l.is_finite() { json!(l) } else { json!(null) };
         }

@@ -10,6 +10,7 @@ mod timed;
 
 mod prove_fractions;
 mod prove_library;
+mod prove_random;
 mod prove_sqrt;
 mod prove_trig;
 mod real_roots;

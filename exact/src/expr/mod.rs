@@ -195,7 +195,8 @@ pub fn first_reserved<'a>(exprs: impl IntoIterator<Item = &'a Expr>) -> Option<&
     names.iter().find_map(|n| reserved_constant(n))
 }
 pub use trig::{
-    angle_of, angles, cos_name, describe_point, has_trig, sin_name, trig_constant, Angle, Trig,
+    angle_of, angles, cos_name, describe_point, expand_angles, has_trig, sin_name, trig_constant,
+    Angle, Trig,
     TrigRefusal, TRIG_DENOMINATORS,
 };
 

@@ -482,6 +482,65 @@ pub(super) fn trig_ratfun<C: Coefficient + Field>(
     }
 }
 
+/// `e` with every `sin`, `cos` and `tan` replaced by its polynomial in the variables `cos(x)`,
+/// `sin(x)` of its angle variables (the expansion of the conversion, [`cos_sin`]) and `tan` by
+/// the quotient `sin/cos`, the rest of the tree kept as written: for evaluators that work on the
+/// tree (the randomized identity test), which then treat `cos(x)`, `sin(x)` as variables on the
+/// unit circle ([`angles`] names them). The constant part of an angle must have a rational
+/// cosine and sine (callers split other multiples of pi off first,
+/// [`super::abstract_constants`]).
+///
+/// ```
+/// use exactcheck_exact::expr::{expand_angles, parse_expr};
+/// let e = expand_angles(&parse_expr("sin(2*x) + tan(y)").unwrap()).unwrap();
+/// assert_eq!(e.to_string(), "2*cos(x)*sin(x) + sin(y)/cos(y)");
+/// ```
+///
+/// # Errors
+/// The conversion's errors of a call: an angle that is not an integer combination of variables
+/// plus a multiple of pi, an angle multiple past the `angle-multiple` limit, a constant part
+/// whose value is irrational, `tan` where the cosine is zero.
+pub fn expand_angles(e: &Expr) -> Result<Expr, ExprError> {
+    let go = |x: &Expr| expand_angles(x);
+    let kind = match &e.kind {
+        ExprKind::Number(_) | ExprKind::Var(_) => return Ok(e.clone()),
+        ExprKind::Call(name, args) => match Trig::from_name(name) {
+            Some(which) => {
+                let mut vars = Vars::new();
+                let (c, s) = cos_sin::<Rational>(e, name, args, &mut vars)?;
+                return Ok(match which {
+                    Trig::Cos => c.to_expr(&vars),
+                    Trig::Sin => s.to_expr(&vars),
+                    Trig::Tan => {
+                        if c.is_zero() {
+                            return Err(undefined_tan(e, args));
+                        }
+                        Expr::new(ExprKind::Product(vec![
+                            (MulOp::Times, s.to_expr(&vars)),
+                            (MulOp::Divide, c.to_expr(&vars)),
+                        ]))
+                    }
+                });
+            }
+            None => ExprKind::Call(name.clone(), args.iter().map(go).collect::<Result<_, _>>()?),
+        },
+        ExprKind::Neg(x) => ExprKind::Neg(Box::new(go(x)?)),
+        ExprKind::Sqrt(x) => ExprKind::Sqrt(Box::new(go(x)?)),
+        ExprKind::Pow(a, b) => ExprKind::Pow(Box::new(go(a)?), Box::new(go(b)?)),
+        ExprKind::Sum(ts) => ExprKind::Sum(
+            ts.iter()
+                .map(|(o, t)| Ok((*o, go(t)?)))
+                .collect::<Result<_, ExprError>>()?,
+        ),
+        ExprKind::Product(fs) => ExprKind::Product(
+            fs.iter()
+                .map(|(o, f)| Ok((*o, go(f)?)))
+                .collect::<Result<_, ExprError>>()?,
+        ),
+    };
+    Ok(Expr { kind, pos: e.pos })
+}
+
 /// `tan` of an angle whose cosine is identically zero.
 fn undefined_tan(call: &Expr, args: &[Expr]) -> ExprError {
     let arg = args.first().map(ToString::to_string).unwrap_or_default();

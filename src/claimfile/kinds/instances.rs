@@ -249,6 +249,18 @@ pub(super) fn instances(check: &Check) -> Result<Outcome, Fault> {
                 ..Erratum::default()
             }))
         }
+        RandomDecision::Refuted { exact, .. } => Some(Box::new(Erratum {
+            printed: vec![Equation {
+                lhs: lhs[phrased.shown].clone(),
+                rhs: rhs[phrased.shown].clone(),
+            }],
+            correction: format!(
+                "LHS - RHS = {} at {}, exactly",
+                exact.value,
+                exact.point.join(", ")
+            ),
+            ..Erratum::default()
+        })),
         _ => None,
     };
     Ok(Outcome {

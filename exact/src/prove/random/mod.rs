@@ -43,10 +43,9 @@
 //! * a power `b^k` (`k` a non-negative integer literal): `k L_b`, `k L_Db`, `k d_b`, `k e_b`.
 //!
 //! All of these are checked `u64` operations; an overflow makes the test report `undecided`
-//! (it never wraps). Square roots are refused in random mode (`sqrt(k)` has no canonical image
-//! modulo `p` — either root could be taken, and `k` need not be a square at all — and this
-//! module does not prove a bound for it): run without `--random`, which expands over the exact
-//! square-root field. The functions of the language are lowered first
+//! (it never wraps). Square roots of non-constants are refused in random mode (no bound is
+//! proved for them here): run without `--random`, which decides them exactly; square roots of
+//! constants and angles are rewritten first (below, "Constants and angles"). The functions of the language are lowered first
 //! ([`crate::expr::lower`]): `binomial` and `factorial` become integers, `sum` its unrolled
 //! terms, `diff` and `integrate` their exact value expanded as a rational function (the one
 //! expansion random mode does); the bound is then that of the lowered tree.
@@ -95,15 +94,77 @@
 //! = 2^62 (2 / 43.6683 - 1.25506 / 42.9752) > 2^62 (0.045800 - 0.029205) = 2^62 · 0.016595
 //! > 2^62 · 2^-5.92 > 2^56`. The bound uses `N = 2^56`.
 //!
+//! # Constants and angles
+//! An identity with `sin`, `cos`, `tan` or square roots of constants is rewritten exactly as the
+//! exact path rewrites it ([`algebraic`]): its irrational constants (`sqrt(2)`, `cos(pi/8)`,
+//! `sqrt(2 + sqrt(3))`, the multiples of pi of angles with variables) are replaced by
+//! polynomials over Q in one primitive element `c` of their field, whose minimal polynomial `m`
+//! (primitive, integer coefficients, degree `n`) gives `m(c) = 0`; each angle `x` by the
+//! variables `cos(x)`, `sin(x)` on their unit circle, through the multiple-angle and addition
+//! formulas ([`crate::expr::expand_angles`]), `tan` as `sin/cos` (the points where a cosine
+//! vanishes are poles, skipped). The bounds `L`, `L_D`, `d`, `e` above are those of the
+//! rewritten tree, with `c` counted as a variable.
+//!
+//! The tree is then evaluated in `R = F_p[c]/(m mod p)`, the image of `Z[c]/(m)` modulo `p`
+//! ([`ring::QuotientRing`]): every variable a residue, `c` its class. `R` exists for every prime
+//! not dividing `lc(m)` (the others are redrawn), whether `m` has a root modulo `p` or not — a
+//! test at a root `r` of `m` modulo `p` would draw `p` among the primes where `m` has a root,
+//! and no unconditional lower bound on their number in `[2^62, 2^63)` is known (the effective
+//! Chebotarev theorems need the Riemann hypothesis or far larger ranges), so no bound could be
+//! proved for it.
+//!
+//! **Theorem.** With `M >= log2 ||m||_1`, `lambda = bits(|lc(m)|)`, the probability that a false
+//! identity passes `K` points is at most
+//!
+//! `floor((d' M + n L')/62) / (N - floor((e' M + n L_D)/62) - floor(lambda/62)) +
+//! (d' / (2^62 - 2k - n e'))^K`,
+//!
+//! which is the bound above for `n = 1`, `M = lambda = 0`.
+//!
+//! *Proof.* Let `G(t, x, c)` be as above (the circles parametrized); `G` has integer
+//! coefficients. (0) A true identity: `F` lies in the ideal of `m` and the circles over Q, so
+//! `m` divides `G` in `Q[t, x, c]` (the circles vanish under the parametrization, and division by
+//! `m` in `c` is unique), hence in `Z[t, x, c]` (Gauss's lemma, `m` primitive), so `G` is zero in
+//! `R[t, x]` and every point evaluates to zero. (1) The prime. For a false identity, `G(t, x,
+//! theta) != 0`, so some coefficient `a(c)` of `G` (in `Z[c]`, `deg a <= d'`,
+//! `||a||_1 <= 2^{L'}`) is not divisible by the irreducible `m`: the resultant `Res(m, a)` is a
+//! non-zero integer, of absolute value at most `||m||_2^{deg a} ||a||_2^n <= 2^{d' M + n L'}`
+//! (Hadamard). If `G` is zero in `R[t, x]`, then `m mod p` divides `a mod p`, so they share a
+//! factor and `p` divides `Res(m, a)` (`p` not dividing `lc(m)`): at most
+//! `floor((d' M + n L')/62)` primes of the range. The primes redrawn divide `lc(m)` or the
+//! resultant with `m` of a constant divisor's numerator `F_c` (a divisor in `c` alone that is
+//! not a unit of `R`); by the structural rules these numerators multiply to at most
+//! `2^{L_D}` in 1-norm and `e` in degree, so they exclude at most
+//! `floor((e' M + n L_D)/62) + floor(lambda/62)` primes. (2) The points. In the basis `1, c,
+//! ..., c^{n-1}` of `R` over `F_p`, `G` is `n` polynomials over `F_p`, one of them non-zero,
+//! with at most `d' p^{N-1}` zeros, and `G` vanishes at a point only where all do. The points
+//! where `H` is not a unit of `R` are the zeros of its norm, a polynomial of degree at most
+//! `n e'` (non-zero when any point is not a pole), so each point is uniform on a set of at least
+//! `p^N (1 - (2k + n e')/p)` points, as above. ∎
+//!
+//! A point where the sides differ modulo `p` shows the identity false, but `fails` is said only
+//! with an exact counter-example: the same rewritten trees are evaluated exactly, in `Q(theta)`
+//! (or Q), at rational values of the variables, rational points of the circles and
+//! `c = theta` ([`algebraic::confirm`]); when none is found, or none can be given (an angle also
+//! used as a number, `pi` outside an angle), the answer is
+//! [`RandomDecision::Unconfirmed`], worded `undecided`.
+//!
 //! A non-zero value at a point is a proof that the identity is false (over Q, and modulo the
 //! circles: a multiple of `c^2 + s^2 - 1` with integer coefficients vanishes at every circle point
 //! modulo every `p`). The verdict `holds` is given only when the seed is fresh and the bound is
 //! below `2^HOLDS_THRESHOLD_LOG2` ([`HOLDS_THRESHOLD_LOG2`] `= -30`); otherwise `undecided` with
 //! the bound (or, with a chosen seed, `Reproduced` without one).
 
-use crate::expr::{lower, AddOp, Expr, ExprKind, MulOp};
+mod algebraic;
+mod ring;
+
+pub use algebraic::{ExactPoint, FieldBound};
+
+use crate::expr::{lower, Expr, ExprKind, MulOp};
 use crate::modp::PrimeField;
+use algebraic::Prepared;
 use exactcheck_core::Rng;
+use ring::{constant_exponent, eval, EvalError, QuotientRing, Values};
 use std::collections::HashMap;
 use std::fmt;
 
@@ -152,13 +213,6 @@ fn bits_of(n: &num_bigint::BigInt) -> u64 {
 
 fn ceil_log2(m: usize) -> u64 {
     (usize::BITS - m.saturating_sub(1).leading_zeros()) as u64
-}
-
-fn constant_exponent(e: &Expr) -> Option<u64> {
-    match &e.kind {
-        ExprKind::Number(q) if q.is_integer() => q.numer().try_into().ok(),
-        _ => None,
-    }
 }
 
 /// The structural bounds of the module documentation for one expression.
@@ -256,15 +310,10 @@ pub fn size_bound(e: &Expr) -> Result<SizeBound, BoundError> {
                 den_degree: b.den_degree.checked_mul(k).ok_or(of)?,
             }
         }
-        ExprKind::Call(name, _) if crate::expr::TRIG_FUNCTIONS.contains(&name.as_str()) => {
-            return Err(BoundError::Input(format!(
-                "{name} is not supported by --random (no error bound is proved for angles modulo p); run without --random for the exact decision"
-            )))
-        }
         ExprKind::Call(name, _) => return Err(BoundError::Input(unsupported_call(name))),
         ExprKind::Sqrt(_) => {
             return Err(BoundError::Input(
-                "sqrt is not supported by --random (no error bound is proved for square roots modulo p); run without --random for the exact square-root field".into(),
+                "sqrt of a non-constant is not supported by --random (no error bound is proved for square roots of expressions modulo p); run without --random, which decides it exactly".into(),
             ))
         }
     })
@@ -283,82 +332,6 @@ fn unsupported_call(name: &str) -> String {
         )
     } else {
         format!("unknown function '{name}'")
-    }
-}
-
-/// Why an evaluation modulo `p` stopped.
-enum EvalError {
-    /// A constant divisor or a denominator is divisible by `p`.
-    NotInvertible,
-    /// A divisor with a variable is zero at the point (a pole).
-    Pole,
-    /// A malformed expression (message).
-    Input(String),
-}
-
-fn eval(e: &Expr, f: &PrimeField, point: &HashMap<String, u64>) -> Result<u64, EvalError> {
-    Ok(match &e.kind {
-        ExprKind::Number(q) => f.from_rational(q).map_err(|_| EvalError::NotInvertible)?,
-        ExprKind::Var(v) => *point
-            .get(v)
-            .ok_or_else(|| EvalError::Input(format!("no value for {v}")))?,
-        ExprKind::Neg(x) => f.neg(eval(x, f, point)?),
-        ExprKind::Sum(ts) => {
-            let mut acc = 0;
-            for (op, t) in ts {
-                let v = eval(t, f, point)?;
-                acc = match op {
-                    AddOp::Plus => f.add(acc, v),
-                    AddOp::Minus => f.sub(acc, v),
-                };
-            }
-            acc
-        }
-        ExprKind::Product(fs) => {
-            let mut acc = 1;
-            for (op, x) in fs {
-                let v = eval(x, f, point)?;
-                acc = match op {
-                    MulOp::Times => f.mul(acc, v),
-                    MulOp::Divide => f.mul(
-                        acc,
-                        f.inv(v).map_err(|_| {
-                            if has_variable(x) {
-                                EvalError::Pole
-                            } else {
-                                EvalError::NotInvertible
-                            }
-                        })?,
-                    ),
-                };
-            }
-            acc
-        }
-        ExprKind::Pow(b, x) => {
-            let k = constant_exponent(x).ok_or_else(|| {
-                EvalError::Input("exponents must be non-negative integer numbers".into())
-            })?;
-            f.pow(eval(b, f, point)?, k)
-        }
-        ExprKind::Call(name, _) => return Err(EvalError::Input(unsupported_call(name))),
-        ExprKind::Sqrt(_) => {
-            return Err(EvalError::Input(
-                "sqrt is not supported by --random; run without --random".into(),
-            ))
-        }
-    })
-}
-
-/// Whether a variable occurs in the tree.
-fn has_variable(e: &Expr) -> bool {
-    match &e.kind {
-        ExprKind::Number(_) => false,
-        ExprKind::Var(_) => true,
-        ExprKind::Neg(x) | ExprKind::Sqrt(x) => has_variable(x),
-        ExprKind::Pow(a, b) => has_variable(a) || has_variable(b),
-        ExprKind::Sum(ts) => ts.iter().any(|(_, t)| has_variable(t)),
-        ExprKind::Product(fs) => fs.iter().any(|(_, f)| has_variable(f)),
-        ExprKind::Call(_, args) => args.iter().any(has_variable),
     }
 }
 
@@ -394,6 +367,15 @@ pub struct RandomReport {
     pub trials: u32,
     /// Points drawn and skipped because a divisor vanishes there (poles).
     pub poles: u32,
+    /// The constants' field as `prove` describes it (`with c = cos(pi/5), 4*c^2 - 2*c - 1 =
+    /// 0`), when the identity has irrational constants.
+    pub constants: Option<String>,
+    /// What the constants' field adds to the error bound.
+    pub field: Option<FieldBound>,
+    /// The angles of `sin`, `cos`, `tan`, tested on their unit circles.
+    pub angles: Vec<String>,
+    /// Whether a side has `tan` (points where its cosine vanishes are skipped as poles).
+    pub tan: bool,
 }
 
 /// The outcome of a randomized identity test.
@@ -432,20 +414,59 @@ pub enum RandomDecision {
         /// The residual there.
         value: u64,
     },
+    /// With constants or angles: non-zero at a point modulo the prime, and an exact
+    /// counter-example found at a rational point.
+    Refuted {
+        /// The run.
+        report: RandomReport,
+        /// The exact counter-example.
+        exact: ExactPoint,
+    },
+    /// With constants or angles: non-zero at a point modulo the prime (which shows the identity
+    /// false), but no exact counter-example was found or can be given.
+    Unconfirmed {
+        /// The run.
+        report: RandomReport,
+        /// The point modulo the prime where the sides differ.
+        point: Vec<(String, u64)>,
+        /// Why no exact counter-example is given.
+        why: String,
+    },
 }
 
 /// `log2(floor(L'/62) / (2^56 - floor(L_D/62)) + (d'/(2^62 - 2k - e'))^K)`, rounded up (0 when
 /// the bound is not below 1).
 pub fn log2_error_bound(bound: &SizeBound, circles: usize, trials: u32) -> f64 {
-    let bad_primes = (bound.num_bits / 62) as f64;
-    let excluded = (bound.den_bits / 62) as f64;
-    let n = 2f64.powi(LOG2_PRIMES as i32);
-    if excluded >= n {
+    log2_error_bound_in(bound, None, circles, trials)
+}
+
+/// [`log2_error_bound`] with the algebraic constants' field (module documentation, "Constants
+/// and angles"): with `n`, `M`, `lambda` of the [`FieldBound`],
+/// `log2(floor((d' M + n L')/62) / (2^56 - floor((e' M + n L_D)/62) - floor(lambda/62))
+/// + (d'/(2^62 - 2k - n e'))^K)`; without a field `n = 1`, `M = lambda = 0`.
+pub fn log2_error_bound_in(
+    bound: &SizeBound,
+    field: Option<&FieldBound>,
+    circles: usize,
+    trials: u32,
+) -> f64 {
+    let (n, m, lead) = field.map_or((1u128, 0u128, 0u128), |f| {
+        (
+            u128::from(f.degree),
+            u128::from(f.modulus_bits),
+            u128::from(f.lead_bits),
+        )
+    });
+    let (d, e) = (u128::from(bound.degree), u128::from(bound.den_degree));
+    let bad_primes = ((d * m + n * u128::from(bound.num_bits)) / 62) as f64;
+    let excluded = ((e * m + n * u128::from(bound.den_bits)) / 62 + lead / 62) as f64;
+    let primes = 2f64.powi(LOG2_PRIMES as i32);
+    if excluded >= primes {
         return 0.0;
     }
-    let prime_term = bad_primes / (n - excluded);
+    let prime_term = bad_primes / (primes - excluded);
     let per_point =
-        bound.degree as f64 / (2f64.powi(62) - 2.0 * circles as f64 - bound.den_degree as f64);
+        d as f64 / (2f64.powi(62) - 2.0 * circles as f64 - (n * e) as f64);
     if per_point < 0.0 {
         return 0.0;
     }
@@ -471,13 +492,34 @@ pub fn log2_error_bound(bound: &SizeBound, circles: usize, trials: u32) -> f64 {
     (sum + 1e-9 * sum.abs().max(1.0)).min(0.0)
 }
 
+/// The bounds of `LHS - RHS` with `k` unit circles (`L'`, `L_D`, `d'`, `e'` of the module
+/// documentation), `None` when one overflows.
+fn difference_bound(l: &SizeBound, r: &SizeBound, k: u64) -> Option<SizeBound> {
+    let num = (l.num_bits.checked_add(r.den_bits)?)
+        .max(r.num_bits.checked_add(l.den_bits)?)
+        .checked_add(1)?;
+    // LHS - RHS = (F_l D_r - F_r D_l) / (D_l D_r).
+    let degree = (l.degree.checked_add(r.den_degree)?).max(r.degree.checked_add(l.den_degree)?);
+    let den_degree = l.den_degree.checked_add(r.den_degree)?;
+    let spread = k.checked_mul(2)?.checked_add(1)?;
+    Some(SizeBound {
+        num_bits: num.checked_add(degree.checked_mul(k)?)?,
+        den_bits: l.den_bits.checked_add(r.den_bits)?,
+        degree: degree.checked_mul(spread)?,
+        den_degree: den_degree.checked_mul(spread)?,
+    })
+}
+
 /// Tests `lhs = rhs` at `trials` random points modulo a random prime (see the module
 /// documentation); variables on unit circles `(c, s)` are drawn on the circle. The prime and
-/// the points come from `seed` and the identity (`Rng::for_input`).
+/// the points come from `seed` and the identity (`Rng::for_input`). Square roots of constants,
+/// `sin`, `cos`, `tan` of angles and the constants of angles are rewritten first (module
+/// documentation, "Constants and angles").
 ///
 /// # Errors
-/// A message for `trials` outside `1..=MAX_RANDOM_TRIALS`, a square root, a non-polynomial
-/// expression, or a constant divisor that is zero (modulo `MAX_PRIME_REDRAWS` random primes).
+/// A message for `trials` outside `1..=MAX_RANDOM_TRIALS`, a square root of a non-constant, a
+/// non-polynomial expression, a constant the evaluator refuses (`tan(pi/2)`), or a constant
+/// divisor that is zero (modulo `MAX_PRIME_REDRAWS` random primes).
 pub fn random_identity_test(
     lhs: &Expr,
     rhs: &Expr,
@@ -495,38 +537,134 @@ pub fn random_identity_test(
         &lower(lhs).map_err(|e| e.to_string())?,
         &lower(rhs).map_err(|e| e.to_string())?,
     );
+    if !(algebraic::needs_preparation(lhs) || algebraic::needs_preparation(rhs)) {
+        return run(lhs, rhs, variables, circles, trials, seed, None);
+    }
+    let mut taken: Vec<String> = variables.to_vec();
+    lhs.collect_variables(&mut taken);
+    rhs.collect_variables(&mut taken);
+    taken.extend(circles.iter().flat_map(|(c, s)| [c.clone(), s.clone()]));
+    let prepared = algebraic::prepare(lhs, rhs, &taken)?;
+    let mut all_circles = circles.to_vec();
+    all_circles.extend(prepared.angle_circles.iter().cloned());
+    let mut names = Vec::new();
+    prepared.lhs.collect_variables(&mut names);
+    prepared.rhs.collect_variables(&mut names);
+    let generator = prepared.constants.as_ref().map(|k| k.name.clone());
+    let free: Vec<String> = names
+        .into_iter()
+        .filter(|n| {
+            Some(n) != generator.as_ref() && !all_circles.iter().any(|(c, s)| c == n || s == n)
+        })
+        .collect();
+    run(
+        &prepared.lhs,
+        &prepared.rhs,
+        &free,
+        &all_circles,
+        trials,
+        seed,
+        Some(&prepared),
+    )
+}
+
+/// The ring of one prime: `Z/pZ`, or the quotient ring of the constants' field.
+enum Modular {
+    Field(PrimeField),
+    Quotient(QuotientRing),
+}
+
+/// The sides at one point (residues of the variables in `values`), evaluated in `ring`:
+/// `LHS - RHS`, zero or not.
+fn difference_at<R: Values>(
+    lhs: &Expr,
+    rhs: &Expr,
+    ring: &R,
+    values: &HashMap<String, u64>,
+    embed: &dyn Fn(u64) -> R::V,
+    generator: Option<(&str, R::V)>,
+) -> Result<bool, EvalError> {
+    let mut point: HashMap<String, R::V> =
+        values.iter().map(|(v, x)| (v.clone(), embed(*x))).collect();
+    if let Some((name, c)) = &generator {
+        point.insert(name.to_string(), c.clone());
+    }
+    let constant = |v: &str| generator.as_ref().is_some_and(|(n, _)| *n == v);
+    let refused = |e: &Expr| match &e.kind {
+        ExprKind::Call(name, _) => unsupported_call(name),
+        _ => "sqrt of a non-constant is not supported by --random; run without --random".into(),
+    };
+    let l = eval(lhs, ring, &point, &constant, &refused);
+    let r = eval(rhs, ring, &point, &constant, &refused);
+    match (l, r) {
+        (Ok(a), Ok(b)) => Ok(!ring.is_zero(&ring.sub(&a, &b))),
+        (Err(EvalError::Input(m)), _) | (_, Err(EvalError::Input(m))) => Err(EvalError::Input(m)),
+        (Err(EvalError::Pole), _) | (_, Err(EvalError::Pole)) => Err(EvalError::Pole),
+        _ => Err(EvalError::NotInvertible),
+    }
+}
+
+/// The test proper, on lowered (and, with `prepared`, rewritten) sides.
+fn run(
+    lhs: &Expr,
+    rhs: &Expr,
+    variables: &[String],
+    circles: &[(String, String)],
+    trials: u32,
+    seed: Seed,
+    prepared: Option<&Prepared>,
+) -> Result<RandomDecision, String> {
     let k = circles.len() as u64;
     let bound = match (size_bound(lhs), size_bound(rhs)) {
         (Err(BoundError::Input(m)), _) | (_, Err(BoundError::Input(m))) => return Err(m),
-        (Ok(l), Ok(r)) => (|| {
-            let num = (l.num_bits.checked_add(r.den_bits)?)
-                .max(r.num_bits.checked_add(l.den_bits)?)
-                .checked_add(1)?;
-            // LHS - RHS = (F_l D_r - F_r D_l) / (D_l D_r).
-            let degree =
-                (l.degree.checked_add(r.den_degree)?).max(r.degree.checked_add(l.den_degree)?);
-            let den_degree = l.den_degree.checked_add(r.den_degree)?;
-            let spread = k.checked_mul(2)?.checked_add(1)?;
-            Some(SizeBound {
-                num_bits: num.checked_add(degree.checked_mul(k)?)?,
-                den_bits: l.den_bits.checked_add(r.den_bits)?,
-                degree: degree.checked_mul(spread)?,
-                den_degree: den_degree.checked_mul(spread)?,
-            })
-        })(),
+        (Ok(l), Ok(r)) => difference_bound(&l, &r, k),
         _ => None,
     };
-    let input = format!("{lhs}\n{rhs}\n{variables:?}\n{circles:?}");
+    let modulus = prepared.and_then(Prepared::modulus);
+    let field_bound = modulus.as_ref().map(|(_, b)| b.clone());
+    let generator = prepared
+        .and_then(|p| p.constants.as_ref())
+        .map(|k| k.name.as_str());
+    let mut input = format!("{lhs}\n{rhs}\n{variables:?}\n{circles:?}");
+    if let Some(k) = prepared.and_then(|p| p.constants.as_ref()) {
+        input += &format!("\n{}", k.relation_text());
+    }
     let mut rng = Rng::for_input(seed.value(), input.as_bytes());
     let mut redrawn = 0;
+    let redraw = |redrawn: &mut u32| {
+        *redrawn += 1;
+        if *redrawn > MAX_PRIME_REDRAWS {
+            return Err(format!(
+                "a divisor is zero modulo {MAX_PRIME_REDRAWS} random primes above 2^62: it is zero"
+            ));
+        }
+        Ok(())
+    };
     'prime: loop {
         let field = PrimeField::random_62(&mut rng);
+        let ring = match &modulus {
+            None => Modular::Field(field),
+            Some((m, _)) => match QuotientRing::new(field, m) {
+                Some(q) => Modular::Quotient(q),
+                None => {
+                    // The prime divides the leading coefficient of m.
+                    redraw(&mut redrawn)?;
+                    continue 'prime;
+                }
+            },
+        };
         let mut report = RandomReport {
             seed,
             prime: field.modulus(),
             redrawn,
             trials,
             poles: 0,
+            constants: prepared
+                .and_then(|p| p.constants.as_ref())
+                .map(|k| k.description()),
+            field: field_bound.clone(),
+            angles: prepared.map(|p| p.angles.clone()).unwrap_or_default(),
+            tan: prepared.is_some_and(|p| p.tan),
         };
         let mut poles = 0u32;
         let mut done = 0u32;
@@ -549,10 +687,25 @@ pub fn random_identity_test(
                 point.insert(c.clone(), cv);
                 point.insert(s.clone(), sv);
             }
-            let value = match (eval(lhs, &field, &point), eval(rhs, &field, &point)) {
-                (Ok(a), Ok(b)) => field.sub(a, b),
-                (Err(EvalError::Input(m)), _) | (_, Err(EvalError::Input(m))) => return Err(m),
-                (Err(EvalError::Pole), _) | (_, Err(EvalError::Pole)) => {
+            let differs = match &ring {
+                Modular::Field(f) => difference_at(lhs, rhs, f, &point, &|x| x, None),
+                Modular::Quotient(q) => difference_at(
+                    lhs,
+                    rhs,
+                    q,
+                    &point,
+                    &|x| {
+                        let mut v = q.number(&crate::Rational::ZERO).expect("0 maps");
+                        v[0] = x;
+                        v
+                    },
+                    generator.map(|g| (g, q.generator())),
+                ),
+            };
+            let differs = match differs {
+                Ok(d) => d,
+                Err(EvalError::Input(m)) => return Err(m),
+                Err(EvalError::Pole) => {
                     // A pole: the point is not in the domain; another one is drawn.
                     poles += 1;
                     report.poles = report.poles.saturating_add(1);
@@ -565,31 +718,43 @@ pub fn random_identity_test(
                     }
                     continue;
                 }
-                _ => {
-                    redrawn += 1;
-                    if redrawn > MAX_PRIME_REDRAWS {
-                        return Err(format!(
-                            "a divisor is zero modulo {MAX_PRIME_REDRAWS} random primes above 2^62: it is zero"
-                        ));
-                    }
+                Err(EvalError::NotInvertible) => {
+                    redraw(&mut redrawn)?;
                     continue 'prime;
                 }
             };
             poles = 0;
             done += 1;
-            if value != 0 {
+            if differs {
                 let mut point: Vec<(String, u64)> = point.into_iter().collect();
                 point.sort_by(|a, b| a.0.cmp(&b.0));
-                return Ok(RandomDecision::Fails {
-                    report,
-                    point,
-                    value,
+                let Some(prepared) = prepared else {
+                    let value = match &ring {
+                        Modular::Field(f) => {
+                            let l = eval(lhs, f, &scalar(&point), &|_| false, &|_| String::new());
+                            let r = eval(rhs, f, &scalar(&point), &|_| false, &|_| String::new());
+                            match (l, r) {
+                                (Ok(a), Ok(b)) => f.sub(a, b),
+                                _ => unreachable!("the point evaluated a moment ago"),
+                            }
+                        }
+                        Modular::Quotient(_) => unreachable!("no constants without preparation"),
+                    };
+                    return Ok(RandomDecision::Fails {
+                        report,
+                        point,
+                        value,
+                    });
+                };
+                return Ok(match algebraic::confirm(prepared, variables, circles) {
+                    Ok(exact) => RandomDecision::Refuted { report, exact },
+                    Err(why) => RandomDecision::Unconfirmed { report, point, why },
                 });
             }
         }
         return Ok(match bound {
             Some(b) => {
-                let log2_bound = log2_error_bound(&b, circles.len(), trials);
+                let log2_bound = log2_error_bound_in(&b, field_bound.as_ref(), circles.len(), trials);
                 if log2_bound < HOLDS_THRESHOLD_LOG2 && matches!(seed, Seed::Chosen(_)) {
                     RandomDecision::Reproduced { report }
                 } else if log2_bound < HOLDS_THRESHOLD_LOG2 {
@@ -613,6 +778,11 @@ pub fn random_identity_test(
             },
         });
     }
+}
+
+/// The residues of a point, by name.
+fn scalar(point: &[(String, u64)]) -> HashMap<String, u64> {
+    point.iter().cloned().collect()
 }
 
 impl fmt::Display for SizeBound {
