@@ -123,7 +123,12 @@ fn random_mode_refuses_what_it_cannot_bound() {
     let e = |t: &str| parse_expr(t).unwrap();
     let vars = ["x".to_string()];
     let one = Seed::Fresh(1);
-    assert!(random_identity_test(&e("sqrt(2) x"), &e("0"), &vars, &[], 3, one).is_err());
+    // Square roots of non-constants have no bound; constants do, but not undefined ones.
+    assert!(random_identity_test(&e("sqrt(x) x"), &e("0"), &vars, &[], 3, one).is_err());
+    assert!(random_identity_test(&e("tan(pi/2) x"), &e("0"), &vars, &[], 3, one).is_err());
+    assert!(random_identity_test(&e("sqrt(2) x"), &e("0"), &vars, &[], 3, one).is_ok());
+    // A divisor that is zero in the constants' field is not a unit modulo any prime.
+    assert!(random_identity_test(&e("x/(sqrt(2)^2 - 2)"), &e("0"), &vars, &[], 3, one).is_err());
     assert!(random_identity_test(&e("x"), &e("x"), &vars, &[], 0, one).is_err());
     assert!(
         random_identity_test(&e("x"), &e("x"), &vars, &[], MAX_RANDOM_TRIALS + 1, one).is_err()

@@ -74,7 +74,9 @@ fn show(l: f64) -> String {
 fn notes(report: &RandomReport) -> String {
     let mut parts = Vec::new();
     if let Some(k) = &report.constants {
-        parts.push(format!("{k}; values in F_p[c]/(m), m the minimal polynomial of c"));
+        parts.push(format!(
+            "{k}; values in F_p[c]/(m), m the minimal polynomial of c"
+        ));
     }
     if !report.angles.is_empty() {
         let many = report.angles.len() > 1;

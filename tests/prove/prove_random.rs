@@ -62,7 +62,12 @@ fn false_identities_fail_with_an_exact_counter_example() {
     assert!(out.contains("Root(") || out.contains("≈"), "{out}");
     fails("sin(3*x)", "3*sin(x) - 3*sin(x)^3");
     // The JSON answer carries the point and the exact value.
-    let (code, v) = prove_json(&["cos(x + y)", "cos(x)*cos(y) + sin(x)*sin(y)", "--random", "5"]);
+    let (code, v) = prove_json(&[
+        "cos(x + y)",
+        "cos(x)*cos(y) + sin(x)*sin(y)",
+        "--random",
+        "5",
+    ]);
     assert_eq!(code, 1);
     assert_eq!(v["verdict"], "fails");
     assert!(v["counter_example"].as_array().unwrap().len() == 2, "{v}");
@@ -149,5 +154,8 @@ random = 10
     std::fs::remove_dir_all(&dir).ok();
     assert_eq!(code, 0, "{out}{err}");
     assert!(out.contains("3 claims, 3 as expected"), "{out}");
-    assert!(out.contains("at x = 1 LHS - RHS = 2*sqrt(2) - 2*sqrt(3)"), "{out}");
+    assert!(
+        out.contains("at x = 1 LHS - RHS = 2*sqrt(2) - 2*sqrt(3)"),
+        "{out}"
+    );
 }

@@ -196,8 +196,7 @@ pub fn first_reserved<'a>(exprs: impl IntoIterator<Item = &'a Expr>) -> Option<&
 }
 pub use trig::{
     angle_of, angles, cos_name, describe_point, expand_angles, has_trig, sin_name, trig_constant,
-    Angle, Trig,
-    TrigRefusal, TRIG_DENOMINATORS,
+    Angle, Trig, TrigRefusal, TRIG_DENOMINATORS,
 };
 
 /// The trigonometric functions (`sin`, `cos`, `tan` of an angle: an integer combination of angle

@@ -72,7 +72,11 @@ impl Prepared {
         let k = self.constants.as_ref()?;
         let m = k.field.modulus().primitive_part();
         let coeffs: Vec<BigInt> = m.coeffs().iter().map(|q| q.numer()).collect();
-        let norm: BigInt = coeffs.iter().map(|a| a.magnitude().clone()).sum::<num_bigint::BigUint>().into();
+        let norm: BigInt = coeffs
+            .iter()
+            .map(|a| a.magnitude().clone())
+            .sum::<num_bigint::BigUint>()
+            .into();
         let lead = coeffs.last().expect("m has a leading coefficient");
         let bound = FieldBound {
             degree: m.degree() as u64,
@@ -105,9 +109,8 @@ pub(crate) fn prepare(lhs: &Expr, rhs: &Expr, taken: &[String]) -> Result<Prepar
     let l = abstract_constants(lhs, &mut leaves).map_err(|e| e.to_string())?;
     let r = abstract_constants(rhs, &mut leaves).map_err(|e| e.to_string())?;
     let texts: Vec<String> = leaves.iter().map(|l| l.text.clone()).collect();
-    let constants = AlgebraicConstants::new(leaves, taken).map_err(|e| {
-        format!("the field of the constants {}: {e}", texts.join(", "))
-    })?;
+    let constants = AlgebraicConstants::new(leaves, taken)
+        .map_err(|e| format!("the field of the constants {}: {e}", texts.join(", ")))?;
     let (l, r) = match &constants {
         Some(k) => (k.fill(&l), k.fill(&r)),
         None => (l, r),
@@ -277,7 +280,12 @@ mod tests {
     use crate::expr::parse_expr;
 
     fn prepared(l: &str, r: &str) -> Prepared {
-        prepare(&parse_expr(l).unwrap(), &parse_expr(r).unwrap(), &["x".into()]).unwrap()
+        prepare(
+            &parse_expr(l).unwrap(),
+            &parse_expr(r).unwrap(),
+            &["x".into()],
+        )
+        .unwrap()
     }
 
     #[test]
@@ -291,13 +299,20 @@ mod tests {
         let p = prepared("sin(3*x)", "3*sin(x) - 4*sin(x)^3");
         assert!(p.constants.is_none());
         assert_eq!(p.angles, ["x"]);
-        assert_eq!(p.angle_circles, [("cos(x)".to_string(), "sin(x)".to_string())]);
+        assert_eq!(
+            p.angle_circles,
+            [("cos(x)".to_string(), "sin(x)".to_string())]
+        );
         let p = prepared("tan(x + y)", "(tan(x) + tan(y))/(1 - tan(x)*tan(y))");
         assert!(p.tan && p.constants.is_none());
         assert_eq!(p.angles, ["x", "y"]);
         let p = prepared("tan(x + pi/4)", "(1 + tan(x))/(1 - tan(x))");
         assert!(p.tan && p.constants.is_some());
-        let err = prepare(&parse_expr("tan(pi/2)").unwrap(), &parse_expr("0").unwrap(), &[]);
+        let err = prepare(
+            &parse_expr("tan(pi/2)").unwrap(),
+            &parse_expr("0").unwrap(),
+            &[],
+        );
         assert!(err.is_err());
     }
 
@@ -311,7 +326,10 @@ mod tests {
         assert_eq!(found.value, want.to_string());
         let p = prepared("cos(x + y)", "cos(x)*cos(y) + sin(x)*sin(y)");
         let found = confirm(&p, &[], &p.angle_circles.clone()).unwrap();
-        assert!(found.point[0].starts_with("x = angle with cos x = "), "{found:?}");
+        assert!(
+            found.point[0].starts_with("x = angle with cos x = "),
+            "{found:?}"
+        );
         let p = prepared("sin(x)^2 + cos(x)^2", "1");
         assert!(confirm(&p, &[], &p.angle_circles.clone()).is_err());
         let p = prepared("x + sin(x)", "x");

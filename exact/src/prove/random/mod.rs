@@ -465,8 +465,7 @@ pub fn log2_error_bound_in(
         return 0.0;
     }
     let prime_term = bad_primes / (primes - excluded);
-    let per_point =
-        d as f64 / (2f64.powi(62) - 2.0 * circles as f64 - (n * e) as f64);
+    let per_point = d as f64 / (2f64.powi(62) - 2.0 * circles as f64 - (n * e) as f64);
     if per_point < 0.0 {
         return 0.0;
     }
@@ -754,7 +753,8 @@ fn run(
         }
         return Ok(match bound {
             Some(b) => {
-                let log2_bound = log2_error_bound_in(&b, field_bound.as_ref(), circles.len(), trials);
+                let log2_bound =
+                    log2_error_bound_in(&b, field_bound.as_ref(), circles.len(), trials);
                 if log2_bound < HOLDS_THRESHOLD_LOG2 && matches!(seed, Seed::Chosen(_)) {
                     RandomDecision::Reproduced { report }
                 } else if log2_bound < HOLDS_THRESHOLD_LOG2 {

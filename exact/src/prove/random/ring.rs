@@ -143,7 +143,9 @@ fn trim(a: &mut Vec<u64>) {
 fn div_rem(f: &PrimeField, a: &[u64], b: &[u64]) -> (Vec<u64>, Vec<u64>) {
     let mut r = a.to_vec();
     trim(&mut r);
-    let lead = f.inv(*b.last().expect("b is not zero")).expect("a non-zero lead");
+    let lead = f
+        .inv(*b.last().expect("b is not zero"))
+        .expect("a non-zero lead");
     let mut q = vec![0; r.len().saturating_sub(b.len() - 1)];
     while r.len() >= b.len() {
         let t = f.mul(*r.last().expect("not empty"), lead);
@@ -178,10 +180,16 @@ impl Values for QuotientRing {
         Some(v)
     }
     fn add(&self, a: &Vec<u64>, b: &Vec<u64>) -> Vec<u64> {
-        a.iter().zip(b).map(|(x, y)| self.field.add(*x, *y)).collect()
+        a.iter()
+            .zip(b)
+            .map(|(x, y)| self.field.add(*x, *y))
+            .collect()
     }
     fn sub(&self, a: &Vec<u64>, b: &Vec<u64>) -> Vec<u64> {
-        a.iter().zip(b).map(|(x, y)| self.field.sub(*x, *y)).collect()
+        a.iter()
+            .zip(b)
+            .map(|(x, y)| self.field.sub(*x, *y))
+            .collect()
     }
     fn mul(&self, a: &Vec<u64>, b: &Vec<u64>) -> Vec<u64> {
         let f = &self.field;
@@ -412,9 +420,15 @@ mod tests {
         // The generator satisfies m.
         let c = ring.generator();
         let c3 = ring.pow(&c, 3);
-        let lhs = ring.add(&ring.mul(&ring.number(&8.into()).unwrap(), &c3), &ring.pow(&c, 0));
+        let lhs = ring.add(
+            &ring.mul(&ring.number(&8.into()).unwrap(), &c3),
+            &ring.pow(&c, 0),
+        );
         let rhs = ring.sub(
-            &ring.add(&ring.mul(&ring.number(&4.into()).unwrap(), &c), &ring.number(&2.into()).unwrap()),
+            &ring.add(
+                &ring.mul(&ring.number(&4.into()).unwrap(), &c),
+                &ring.number(&2.into()).unwrap(),
+            ),
             &ring.mul(&ring.number(&4.into()).unwrap(), &ring.mul(&c, &c)),
         );
         assert_eq!(lhs, rhs);
@@ -427,8 +441,8 @@ mod tests {
     #[test]
     fn zero_divisors_have_no_inverse() {
         let f = PrimeField::new(7).unwrap();
-        let ring = QuotientRing::new(f, &[BigInt::from(-2), BigInt::from(0), BigInt::from(1)])
-            .unwrap();
+        let ring =
+            QuotientRing::new(f, &[BigInt::from(-2), BigInt::from(0), BigInt::from(1)]).unwrap();
         assert_eq!(ring.inv(&vec![4, 1]), None);
         assert!(ring.inv(&vec![1, 1]).is_some());
     }
