@@ -860,4 +860,36 @@ mod tests {
         };
         assert_eq!(log2_error_bound(&b, 0, 100), 0.0);
     }
+
+    #[test]
+    fn error_bound_with_a_field() {
+        // x cos(2 pi/7) = x (2 cos(pi/7)^2 - 1): L' = 16, L_D = 4, d' = 5, m = 8c^3 + 4c^2 - 4c
+        // - 1 (n = 3, M = 5, lambda = 4): floor((5*5 + 3*16)/62) = 1 bad prime among at least
+        // 2^56 - floor((0 + 12)/62) - 0 = 2^56, and (5/2^62)^20 besides.
+        let b = SizeBound {
+            num_bits: 16,
+            den_bits: 4,
+            degree: 5,
+            den_degree: 0,
+        };
+        let field = FieldBound {
+            degree: 3,
+            modulus_bits: 5,
+            lead_bits: 4,
+        };
+        let l = log2_error_bound_in(&b, Some(&field), 0, 20);
+        assert!((l + 56.0).abs() < 1e-6, "{l}");
+        // Without a field it is the bound over Q.
+        assert_eq!(
+            log2_error_bound_in(&b, None, 1, 7),
+            log2_error_bound(&b, 1, 7)
+        );
+        // The field's degree multiplies the points avoided: n e' close to 2^62 leaves no bound.
+        let wide = SizeBound {
+            den_degree: 1 << 61,
+            ..b
+        };
+        let two = FieldBound { degree: 2, ..field };
+        assert_eq!(log2_error_bound_in(&wide, Some(&two), 0, 20), 0.0);
+    }
 }
