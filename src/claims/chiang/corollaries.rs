@@ -21,8 +21,8 @@ use super::{
 };
 use crate::claims::engine::Symbols;
 use crate::claims::Verdict;
-use exactcheck_core::{binomial, Ring};
 use exactcheck_core::ruled::Plane;
+use exactcheck_core::{binomial, Ring};
 use exactcheck_exact::expr::Expr;
 use exactcheck_exact::Rational;
 
