@@ -11,7 +11,7 @@
 //! with the constant `pi` (its value is a polynomial in pi, non-zero because pi is
 //! transcendental), angles of `sin`/`cos`/`tan` (a point gives the angle, not its cosine and
 //! sine apart) and a counter-example found at the generator of a number field of algebraic
-//! constants ([`crate::prove_cmd::constants::settle`]).
+//! constants (`prove_cmd::constants::settle`).
 //!
 //! Randomized tests (`prove --random`, a claims file's `instances` with `random`) are worded
 //! by [`random`].

@@ -79,7 +79,7 @@
 //! `pi`, `e` and `i` are constants, never free variables: a formula using one as a variable is
 //! a bad claim. `variables = ["x", "t"]` (at the top of the file, for every claim, and in a
 //! claim, for that claim) declares the variables; any other free name then gets a warning on
-//! standard error, with its near misses (`Aa` for the defined `A`, see [`names`]). Without a
+//! standard error, with its near misses (`Aa` for the defined `A`, see the module `names`). Without a
 //! declaration, a name used by one claim only that is a near miss of a defined name or of
 //! another claim's variable gets that warning.
 
@@ -110,7 +110,7 @@ pub struct ClaimsFile {
     pub notation: Vec<(String, String)>,
     /// The claims in file order.
     pub claims: Vec<FileClaim>,
-    /// Warnings about names (a free variable that may be a typo, see [`names`]), one line each.
+    /// Warnings about names (a free variable that may be a typo, see the module `names`), one line each.
     pub warnings: Vec<String>,
 }
 
