@@ -119,7 +119,7 @@ pub fn fraction(
     defs: &[(String, Expr)],
 ) -> Result<Fraction, String> {
     let wrap = |e: String| format!("printed formula {text:?}: {e}");
-    let mut e = parse_expr(text).map_err(|e| wrap(e.to_string()))?;
+    let mut e = printed_expr(text)?;
     for (name, value) in defs {
         e = substitute_free(&e, name, value).map_err(wrap)?;
     }
