@@ -358,7 +358,7 @@ pub fn run(cli: Cli) -> Result<ExitCode, crate::Error> {
 /// for the whole limit up front ([`STACK_PER_LEVEL`]).
 pub const MAX_DEPTH: u64 = 65_536;
 
-/// Stack reserved per level of the `depth` limit, on top of [`BASE_STACK`]. Nested parentheses
+/// Stack reserved per level of the `depth` limit, on top of `BASE_STACK`. Nested parentheses
 /// in `prove` (parse, expand, drop) need at most about 1 KiB per level: the main thread's 8 MiB
 /// held 4,000 of them (8,000 levels) and overflowed at 8,000. This is sixteen times that;
 /// `tests/cli/robust_cli.rs` runs `prove` and a claims file (parentheses and signs) at

@@ -69,7 +69,7 @@ fn is_break(c: char) -> bool {
     c.is_control() || c == '\u{2028}' || c == '\u{2029}'
 }
 
-/// `text` with every character that would break a line ([`is_break`]) escaped as Rust does
+/// `text` with every character that would break a line (`is_break`) escaped as Rust does
 /// (`\n`, `\u{1b}`): the one escaping of user-supplied names shown in errors, tables and
 /// report headings.
 pub fn escape_breaks(text: &str) -> std::borrow::Cow<'_, str> {

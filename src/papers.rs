@@ -16,6 +16,7 @@ use crate::plot::{self, Figure};
 use crate::Error;
 use embedded::Embedded;
 use rayon::prelude::*;
+use serde_json::{Map, Value};
 use std::time::Instant;
 
 pub mod embedded;
@@ -157,12 +158,12 @@ impl Paper {
     /// Decides one of its claims: computed by its Rust code, or by the claims-file engine from
     /// its embedded file. The catalogue's claims are not the user's input: an error is the
     /// claim's, never bad input.
-    fn decide(&self, c: &Claim) -> (Result<Outcome, String>, Option<String>) {
+    fn decide(&self, c: &Claim) -> (Result<Outcome, String>, Option<String>, Map<String, Value>) {
         match (&c.check, self.printed) {
-            (Check::Computed(f), _) => (f(), None),
+            (Check::Computed(f), _) => (f(), None, Map::new()),
             (Check::Printed, Some(file)) => match file.decide(c.id) {
-                Ok((o, problem)) => (Ok(o), problem),
-                Err((m, _)) => (Err(m), None),
+                Ok(d) => (Ok(d.outcome), d.problem, d.report),
+                Err((m, _)) => (Err(m), None, Map::new()),
             },
             (Check::Printed, None) => (
                 Err(format!(
@@ -170,6 +171,7 @@ impl Paper {
                     c.id, self.unit
                 )),
                 None,
+                Map::new(),
             ),
         }
     }
@@ -223,7 +225,7 @@ pub fn verify_with(prefix: Option<&str>, quiet: bool) -> Result<Vec<Checked>, Er
         .map(|(paper, c)| {
             steps.start(c.id);
             let start = Instant::now();
-            let (outcome, problem) = paper.decide(c);
+            let (outcome, problem, report) = paper.decide(c);
             steps.done();
             Checked {
                 id: c.id.to_string(),
@@ -234,6 +236,7 @@ pub fn verify_with(prefix: Option<&str>, quiet: bool) -> Result<Vec<Checked>, Er
                 seconds: start.elapsed().as_secs_f64(),
                 problem,
                 bad_input: false,
+                report,
             }
         })
         .collect())

@@ -11,7 +11,7 @@
 //! with the constant `pi` (its value is a polynomial in pi, non-zero because pi is
 //! transcendental), angles of `sin`/`cos`/`tan` (a point gives the angle, not its cosine and
 //! sine apart) and a counter-example found at the generator of a number field of algebraic
-//! constants ([`crate::prove_cmd::constants::settle`]).
+//! constants (`prove_cmd::constants::settle`).
 //!
 //! Randomized tests (`prove --random`, a claims file's `instances` with `random`) are worded
 //! by [`random`].
@@ -620,11 +620,26 @@ impl<'a> Phrasing<'a> {
         r: &IdentityReport<C>,
         shape: Shape,
     ) -> Value {
+        let mut obj = serde_json::Map::new();
+        obj.insert("verdict".into(), json!(self.verdict(r).to_string()));
+        obj.insert("method".into(), json!(self.method::<C>()));
+        obj.insert("evidence".into(), json!(self.evidence(spec, r)));
+        obj.extend(self.fields(spec, r, shape));
+        obj.into()
+    }
+
+    /// The typed fields of [`Phrasing::json`] besides the verdict, the method and the evidence
+    /// (which a front end may word for itself): the number of residual terms, the components,
+    /// the hypotheses used, the square roots, the side conditions, the constants; for a failure
+    /// the point, the value there and the normal form. A claims file's JSON row carries them.
+    pub fn fields<C: PointField + Display>(
+        &self,
+        spec: &IdentitySpec<C>,
+        r: &IdentityReport<C>,
+        shape: Shape,
+    ) -> serde_json::Map<String, Value> {
         let vars = self.vars;
         let mut obj = json!({
-            "verdict": self.verdict(r).to_string(),
-            "method": self.method::<C>(),
-            "evidence": self.evidence(spec, r),
             "residual_terms": r.residual_terms.iter().sum::<usize>(),
         });
         if shape != Shape::Scalar {
@@ -715,7 +730,10 @@ impl<'a> Phrasing<'a> {
             };
             obj["normal_form"] = json!(normal_form.display(vars).to_string());
         }
-        obj
+        match obj {
+            Value::Object(map) => map,
+            _ => unreachable!("built as an object"),
+        }
     }
 }
 

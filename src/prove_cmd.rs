@@ -110,7 +110,7 @@ fn parse_where(text: &str, what: &str) -> Result<Where, Error> {
     parse_where_with(text, what, &parse)
 }
 
-/// [`parse_where`] with the expression parser given (the claims files resolve their
+/// `parse_where` with the expression parser given (the claims files resolve their
 /// definitions and functions in it): `parse(text, what)`.
 ///
 /// # Errors

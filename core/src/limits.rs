@@ -1,6 +1,6 @@
 //! Resource limits: every bound the library crates (core, exact, float) put on what an input may
 //! make them do (sizes, depths, degrees, counts, steps, memory), and the declarative form
-//! ([`declare_limits!`]) in which the command-line tool declares its own (input size, samples,
+//! ([`declare_limits!`](crate::declare_limits!)) in which the command-line tool declares its own (input size, samples,
 //! points, threads, ...) and joins them with these into the one registry the user sees.
 //!
 //! Exact arithmetic on user-supplied formulas has no natural ceiling: a short input can ask for a
@@ -28,7 +28,7 @@ pub struct Limit {
 }
 
 impl Limit {
-    /// A limit (used by [`declare_limits!`]).
+    /// A limit (used by [`declare_limits!`](crate::declare_limits!)).
     pub const fn new(
         name: &'static str,
         what: &'static str,

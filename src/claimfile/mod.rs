@@ -79,7 +79,7 @@
 //! `pi`, `e` and `i` are constants, never free variables: a formula using one as a variable is
 //! a bad claim. `variables = ["x", "t"]` (at the top of the file, for every claim, and in a
 //! claim, for that claim) declares the variables; any other free name then gets a warning on
-//! standard error, with its near misses (`Aa` for the defined `A`, see [`names`]). Without a
+//! standard error, with its near misses (`Aa` for the defined `A`, see the module `names`). Without a
 //! declaration, a name used by one claim only that is a near miss of a defined name or of
 //! another claim's variable gets that warning.
 
@@ -94,7 +94,7 @@ use exactcheck_exact::expr::{parse_expr_with_calls, Expr};
 use kinds::{Check, Fault};
 use rayon::prelude::*;
 use read::Format;
-use serde_json::Value;
+use serde_json::{Map, Value};
 use std::cell::RefCell;
 use std::collections::HashMap;
 use std::path::Path;
@@ -110,7 +110,7 @@ pub struct ClaimsFile {
     pub notation: Vec<(String, String)>,
     /// The claims in file order.
     pub claims: Vec<FileClaim>,
-    /// Warnings about names (a free variable that may be a typo, see [`names`]), one line each.
+    /// Warnings about names (a free variable that may be a typo, see the module `names`), one line each.
     pub warnings: Vec<String>,
 }
 
@@ -146,10 +146,21 @@ pub struct FileClaim {
     check: Result<Check, String>,
 }
 
-/// The result of deciding one claim: the outcome and why the claim's corrected form is not
-/// proved equal to its `rhs` (if so), or the error's one-line message and whether it is the
-/// claim's bad input (not a failure of the check itself).
-pub type Run = Result<(Outcome, Option<String>), (String, bool)>;
+/// A claim decided by the claims-file engine.
+pub struct Decision {
+    /// The outcome.
+    pub outcome: Outcome,
+    /// Why the claim's corrected form is not proved equal to its `rhs` (if so).
+    pub problem: Option<String>,
+    /// The typed fields of the engine's report, as `prove --json` prints them for the same
+    /// identity ([`crate::phrase::Phrasing::fields`], [`crate::phrase::random::random_fields`]):
+    /// for `identity` claims and the random part of `instances` claims; empty for the others.
+    pub report: Map<String, Value>,
+}
+
+/// The result of deciding one claim: the [`Decision`], or the error's one-line message and
+/// whether it is the claim's bad input (not a failure of the check itself).
+pub type Run = Result<Decision, (String, bool)>;
 
 impl FileClaim {
     /// Decides the claim of the file `path` (named in the messages of bad input).
@@ -446,9 +457,9 @@ pub fn check_with(
     }
     let mut rows = Vec::new();
     for (c, (run, seconds)) in chosen.iter().zip(runs) {
-        let (outcome, problem, bad_input) = match run {
-            Ok((o, p)) => (Ok(o), p, false),
-            Err((m, bad)) => (Err(m), None, bad),
+        let (outcome, problem, report, bad_input) = match run {
+            Ok(d) => (Ok(d.outcome), d.problem, d.report, false),
+            Err((m, bad)) => (Err(m), None, Map::new(), bad),
         };
         let verdict = outcome.as_ref().ok().map(|o| o.verdict);
         rows.push(Checked {
@@ -460,6 +471,7 @@ pub fn check_with(
             seconds,
             problem,
             bad_input,
+            report,
         });
     }
     Ok(rows)

@@ -260,6 +260,10 @@ pub struct Checked {
     /// Whether the error of `outcome` is the claim's bad input (a formula that cannot be parsed
     /// or built), not a failure of the check: `verify` then exits with status 2.
     pub bad_input: bool,
+    /// The typed fields of the identity engine's report as `prove --json` prints them (claims
+    /// decided by the claims-file engine: `identity`, and `instances` with `random`), added to
+    /// the JSON row; empty for the others.
+    pub report: serde_json::Map<String, Value>,
 }
 
 impl Checked {
@@ -271,7 +275,8 @@ impl Checked {
     }
 
     /// The JSON object of a verdict (`id`, `verdict`, `method`, `evidence`, plus more), with
-    /// `erratum` ([`Erratum::to_json`]) when the check filled one.
+    /// `erratum` ([`Erratum::to_json`]) when the check filled one, then the fields of
+    /// [`Checked::report`] the row does not have already.
     pub fn to_json(&self) -> Value {
         match &self.outcome {
             Ok(o) => {
@@ -290,6 +295,11 @@ impl Checked {
                 }
                 if let Some(p) = &self.problem {
                     v["problem"] = json!(p);
+                }
+                if let Value::Object(row) = &mut v {
+                    for (key, value) in &self.report {
+                        row.entry(key.clone()).or_insert_with(|| value.clone());
+                    }
                 }
                 v
             }
@@ -383,6 +393,7 @@ mod verdict_tests {
             seconds: 0.0,
             problem: None,
             bad_input: false,
+            report: Default::default(),
         };
         assert!(!checked.as_expected());
         assert_eq!(checked.to_json()["verdict"], "undecided");

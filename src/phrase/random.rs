@@ -5,7 +5,9 @@
 //! false identity has a false component, which passes with at most its own bound).
 
 use super::Verdict;
+use exactcheck_exact::expr::library::Shape;
 use exactcheck_exact::prove::{RandomDecision, RandomReport, Seed, HOLDS_THRESHOLD_LOG2};
+use serde_json::{json, Map, Value};
 
 /// How a front end names its options in the advice of an evidence line.
 pub struct RandomOptions {
@@ -284,4 +286,49 @@ pub fn phrase_random(
         evidence: format!("{prefix}{evidence}"),
         log2_bound,
     }
+}
+
+/// The typed fields of a randomized test as `prove --random --json` prints them after the
+/// verdict, the method and the evidence: the seed, the prime of the shown component, for a
+/// vector or matrix identity (`shape`) each component's verdict and prime, and log2 of the
+/// error bound (`null` for a bound that is not finite). A claims file's `instances` row with
+/// `random` carries them too.
+pub fn random_fields(
+    phrased: &RandomPhrased,
+    decisions: &[RandomDecision],
+    shape: Shape,
+    seed: Seed,
+) -> Map<String, Value> {
+    let bound = |l: f64| if l.is_finite() { json!(l) } else { json!(null) };
+    let mut obj = Map::new();
+    obj.insert("seed".into(), json!(seed.value()));
+    obj.insert(
+        "prime".into(),
+        json!(report_of(&decisions[phrased.shown]).prime),
+    );
+    if shape != Shape::Scalar {
+        obj.insert("shape".into(), json!(shape.to_string()));
+        let components: Vec<Value> = decisions
+            .iter()
+            .enumerate()
+            .map(|(k, d)| {
+                let (verdict, log2) = component_verdict(d);
+                let mut c = json!({"component": shape.component(k), "verdict": verdict,
+                    "prime": report_of(d).prime});
+                if let Some(l) = log2 {
+                    c["log2_error_bound"] = bound(l);
+                }
+                c
+            })
+            .collect();
+        obj.insert("components".into(), components.into());
+    }
+    if let RandomDecision::Refuted { exact, .. } = &decisions[phrased.shown] {
+        obj.insert("counter_example".into(), json!(exact.point));
+        obj.insert("value".into(), json!(exact.value));
+    }
+    if let Some(l) = phrased.log2_bound {
+        obj.insert("log2_error_bound".into(), bound(l));
+    }
+    obj
 }

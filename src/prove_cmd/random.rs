@@ -3,7 +3,7 @@
 
 use super::{fresh_seed, to_poly, ProveArgs};
 use crate::claims::Verdict;
-use crate::phrase::random::{component_verdict, report_of};
+use crate::phrase::random::random_fields;
 use crate::phrase::{phrase_random, RandomOptions};
 use crate::Error;
 use exactcheck_exact::expr::library::Shape;
@@ -61,7 +61,6 @@ pub(super) fn random_test(
     }
     let chosen = args.seed.map(Seed::Chosen);
     let seed_of_run = chosen.unwrap_or_else(|| Seed::Fresh(fresh_seed()));
-    let seed = seed_of_run.value();
     // One test per component, each with its own prime (drawn from the seed and the component's
     // identity); the shown component is chosen by the formatter.
     let mut decisions = Vec::new();
@@ -95,39 +94,13 @@ pub(super) fn random_test(
         Verdict::Fails | Verdict::Undecided => ExitCode::from(1),
     };
     let (verdict, evidence, method) = (phrased.verdict_text, &phrased.evidence, &phrased.method);
-    let log2 = phrased.log2_bound;
-    let primes: Vec<u64> = decisions.iter().map(|d| report_of(d).prime).collect();
-    let report = report_of(&decisions[phrased.shown]);
     if args.json {
-        let mut obj = json!({"verdict": verdict, "method": method, "evidence": evidence,
-            "seed": seed, "prime": report.prime});
-        if shape != Shape::Scalar {
-            obj["shape"] = json!(shape.to_string());
-            obj["components"] = decisions
-                .iter()
-                .enumerate()
-                .map(|(k, d)| {
-                    let (verdict, log2) = component_verdict(d);
-                    let mut c = json!({"component": shape.component(k), "verdict": verdict,
-                        "prime": primes[k]});
-                    if let Some(l) = log2 {
-                        c["log2_error_bound"] = if l.is_finite() { json!(l) } else { json!(null) };
-                    }
-                    c
-                })
-                .collect::<Vec<_>>()
-                .into();
-        }
-        if let exactcheck_exact::prove::RandomDecision::Refuted { exact, .. } =
-            &decisions[phrased.shown]
-        {
-            obj["counter_example"] = json!(exact.point);
-            obj["value"] = json!(exact.value);
-        }
-        if let Some(l) = log2 {
-            obj["log2_error_bound"] = if l.is_finite() { json!(l) } else { json!(null) };
-        }
-        crate::output::println(&obj)?;
+        let mut obj = serde_json::Map::new();
+        obj.insert("verdict".into(), json!(verdict));
+        obj.insert("method".into(), json!(method));
+        obj.insert("evidence".into(), json!(evidence));
+        obj.extend(random_fields(&phrased, &decisions, shape, seed_of_run));
+        crate::output::println(serde_json::Value::Object(obj))?;
     } else {
         crate::output::println(format_args!("{verdict}: {evidence} [{method}]"))?;
     }

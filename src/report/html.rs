@@ -487,6 +487,7 @@ mod tests {
             seconds: 0.5,
             problem: None,
             bad_input: false,
+            report: Default::default(),
         }
     }
 

@@ -2,7 +2,7 @@
 //!
 //! JSON has no NaN or infinity: `serde_json` writes them as `null`, which would put a silent
 //! `null` where the contract promises a number (and other writers emit the invalid tokens `NaN`
-//! and `Infinity`). Answers are serialized in one place ([`super::to_json`]), which first walks
+//! and `Infinity`). Answers are serialized in one place (`solve::to_json`), which first walks
 //! the answer with the serializer of this module: it produces nothing, tracks the field path
 //! (`coefficients.A[0]`, `samples[3].points[1][2]`) and fails at the first non-finite `f64`
 //! with one line naming the field and what went wrong, so `solve` answers with an error

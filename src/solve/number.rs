@@ -3,7 +3,7 @@
 //! A number in a problem is a JSON integer (of any size: the workspace enables serde_json's
 //! `arbitrary_precision`, so the digits arrive as written and are parsed exactly, never through
 //! `i64`/`f64`), or a string in the exact syntax: a constant formula of the one expression
-//! language, resolved by its function library and evaluated exactly ([`parse_radical`]; `"-3/4"`,
+//! language, resolved by its function library and evaluated exactly (`parse_radical`; `"-3/4"`,
 //! `"0.1"` = 1/10, `"1/sqrt(2)"`, `"2^-10"`, `"binomial(5, 2)/3"`, `"det([[1, 2], [3, 4]])"`). A JSON floating-point
 //! literal (`0.1`, `1e+23`) is refused in exact mode, because JSON gives it no exact meaning
 //! most readers agree on; the message suggests the string that means the written decimal
@@ -18,7 +18,7 @@
 //! * [`RationalNumber`]: an exact rational (irrational input is refused).
 //! * [`FieldNumber`]: any exact number of a problem whose values leave the radical field
 //!   (`"cos(pi/8)"`, `"cos(2*pi/7)"`), as an element of the problem's number field
-//!   ([`super::field`]).
+//!   (the module `solve::field`).
 //! * [`FloatNumber`]: `--float` input: integers, floating literals and exact strings, converted
 //!   to the nearest `f64`; non-finite results (`"10^400"`, `1e400`) are refused.
 //!
@@ -242,7 +242,7 @@ impl JsonSchema for ExactNumber {
 }
 
 /// An exact number of a problem whose values leave the radical field: its value as an element
-/// of the problem's number field, built before the typed read ([`super::field`]).
+/// of the problem's number field, built before the typed read (the module `solve::field`).
 #[derive(Clone, Debug, PartialEq)]
 pub struct FieldNumber(pub FieldElement);
 

@@ -838,8 +838,10 @@ fn algebraic_constants_next_to_variables_are_decided_as_prove_decides_them() {
 }
 
 /// One identity reads the same from `prove` and from a claims file's `identity` claim: both
-/// word the engine's report with one formatter (verdict, method and evidence), failing,
-/// proved with side conditions, modulo relations, with angles, square roots, components.
+/// word the engine's report with one formatter, failing, proved with side conditions,
+/// undecided, modulo relations, with angles, square roots, components, constants. The row of
+/// `verify --json` carries every field of `prove --json` with the same value (verdict, method,
+/// evidence, residual terms, point, value, normal form, conditions, components...).
 #[test]
 fn prove_and_claims_files_word_an_identity_alike() {
     let cases: &[(&str, &str, &[&str])] = &[
@@ -852,7 +854,12 @@ fn prove_and_claims_files_word_an_identity_alike() {
         ("sqrt(x^2)", "x", &[]),
         ("vec(x, y, z)", "vec(x, 2*y, z)", &[]),
         ("1/w", "2", &["w > 0"]),
+        ("x", "0", &["x^2 = -1"]),
+        ("x*cos(2*pi/7)", "x/2", &[]),
+        ("x*y/y", "x", &["y > 0"]),
+        ("sqrt(x^2)", "x", &["x >= 0"]),
     ];
+    let mut verdicts = Vec::new();
     for (lhs, rhs, conditions) in cases {
         let mut args = vec!["prove", lhs, rhs, "--json"];
         for c in conditions.iter() {
@@ -870,8 +877,45 @@ fn prove_and_claims_files_word_an_identity_alike() {
         let rows: serde_json::Value = serde_json::from_slice(&out.stdout)
             .unwrap_or_else(|e| panic!("{lhs} = {rhs}: {e}: {out:?}"));
         let row = &rows[0];
-        for key in ["verdict", "method", "evidence"] {
-            assert_eq!(row[key], prove[key], "{lhs} = {rhs}: {key}");
+        let fields = prove.as_object().expect("prove --json prints an object");
+        assert!(fields.contains_key("residual_terms"), "{prove}");
+        for (key, value) in fields {
+            assert_eq!(&row[key], value, "{lhs} = {rhs}: {key}");
+        }
+        verdicts.push(prove["verdict"].as_str().unwrap_or("").to_string());
+    }
+    for verdict in ["proved", "fails", "undecided"] {
+        assert!(verdicts.iter().any(|v| v == verdict), "{verdicts:?}");
+    }
+}
+
+/// A claims file's `instances` claim with `random` and `seed` carries the fields of
+/// `prove --random K --seed S --json` on the same identity: the seed, the prime, each
+/// component's verdict and prime, the error bound.
+#[test]
+fn random_instances_carry_the_fields_of_prove_random() {
+    let cases: &[(&str, &str)] = &[
+        ("(x+y)^3", "(y+x)^3"),
+        ("vec(x+y, x)", "vec(y+x, 2*x)"),
+        ("x+y", "y+x+1/1000000000000"),
+    ];
+    for (lhs, rhs) in cases {
+        let out = exactcheck(&["prove", lhs, rhs, "--random", "20", "--seed", "7", "--json"]);
+        let prove: serde_json::Value = serde_json::from_slice(&out.stdout)
+            .unwrap_or_else(|e| panic!("{lhs} = {rhs}: {e}: {out:?}"));
+        let file = format!(
+            "[paper]\nname = \"alike\"\n\n[[claim]]\nid = \"alike.random\"\nkind = \"instances\"\nlhs = {lhs:?}\nrhs = {rhs:?}\nrandom = 20\nseed = 7\n"
+        );
+        let out = verify_generated("random.toml", &file, &["--json"]);
+        let rows: serde_json::Value = serde_json::from_slice(&out.stdout)
+            .unwrap_or_else(|e| panic!("{lhs} = {rhs}: {e}: {out:?}"));
+        let row = &rows[0];
+        assert_eq!(row["seed"], 7, "{row}");
+        // The verdict and the advice of the evidence are worded for each front end.
+        for (key, value) in prove.as_object().expect("an object") {
+            if !["verdict", "evidence"].contains(&key.as_str()) {
+                assert_eq!(&row[key], value, "{lhs} = {rhs}: {key}");
+            }
         }
     }
 }

@@ -220,7 +220,7 @@ pub fn root_variable<S: AsRef<str>>(taken: &[S]) -> String {
 }
 
 impl fmt::Display for Algebraic {
-    /// See the [module documentation](self).
+    /// See the module documentation of `exact/src/algebraic/display.rs`.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(&self.display_in("x"))
     }

@@ -40,8 +40,8 @@ use std::cmp::Ordering;
 use std::fmt;
 use std::sync::Arc;
 
-/// An element of a number field `Q(theta)`, or a rational number: see the
-/// [module documentation](self).
+/// An element of a number field `Q(theta)`, or a rational number: see the module
+/// documentation of `exact/src/algebraic/element.rs`.
 #[derive(Clone)]
 pub struct FieldElement {
     /// The field; `None` for a rational number (then `poly` is constant).
@@ -120,7 +120,7 @@ impl FieldElement {
         acc
     }
 
-    /// The sign, exactly: see the [module documentation](self).
+    /// The sign, exactly: see the module documentation of `exact/src/algebraic/element.rs`.
     pub fn signum(&self) -> Sign {
         if let Some(q) = self.to_rational() {
             return q.signum();

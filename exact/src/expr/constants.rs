@@ -149,7 +149,7 @@ fn walk(
 
 /// `e` with its angles split and every constant leaf evaluated exactly: a rational one becomes a
 /// number, an irrational one the placeholder of its entry in `leaves` (appended when its value
-/// is new). See the [module documentation](self).
+/// is new). See the module documentation of `exact/src/expr/constants.rs`.
 ///
 /// # Errors
 /// The evaluator's errors of a leaf (a negative radicand, `tan(pi/2)`, the `algebraic-degree`

@@ -224,6 +224,36 @@ impl Expr {
     }
 }
 
+impl Expr {
+    /// The expression as a [`Fraction`] with its reason when there is none: the fraction of
+    /// [`Expr::to_fraction`] (nothing cancelled), else, where that gives up (a factor list past
+    /// its budget), the rational function of [`Expr::to_ratfun`] as a fraction; a division by
+    /// zero, a bad exponent or call, a limit are [`Expr::to_ratfun`]'s errors.
+    ///
+    /// ```
+    /// use exactcheck_exact::{expr::parse_expr, poly::Vars, Rational};
+    ///
+    /// let mut vars = Vars::new();
+    /// let f = parse_expr("(x^2 - 1)/(x - 1)").unwrap().try_to_fraction::<Rational>(&mut vars);
+    /// let f = f.unwrap();
+    /// assert_eq!(f.numerator().display(&vars).to_string(), "x^2 - 1");
+    /// assert_eq!(f.denominator().unwrap().display(&vars).to_string(), "x - 1");
+    /// assert!(parse_expr("1/(x - x)").unwrap().try_to_fraction::<Rational>(&mut vars).is_err());
+    /// ```
+    ///
+    /// # Errors
+    /// Those of [`Expr::to_ratfun`].
+    pub fn try_to_fraction<C: Coefficient + Field>(
+        &self,
+        vars: &mut Vars,
+    ) -> Result<Fraction<C>, ExprError> {
+        match self.to_fraction::<C>(vars) {
+            Some(f) => Ok(f),
+            None => self.to_ratfun::<C>(vars).map(|r| Fraction::from_ratfun(&r)),
+        }
+    }
+}
+
 /// The total derivative of [`total_derivative_ratfun`] on a [`Fraction`]: in `t` and, by the
 /// chain rule, in the cosine and sine of the angle `t`.
 fn total_derivative_fraction<C: Field>(
@@ -480,8 +510,72 @@ mod tests {
         e
     }
 
+    /// `try_to_fraction` against `to_ratfun` on the text: the same rational function (zero
+    /// cross residual with the reduced one) with the same conditions, or the same error.
+    fn fraction_agrees(text: &str) {
+        let e = parse_expr(text).unwrap();
+        let mut v1 = Vars::new();
+        let f = e.try_to_fraction::<Rational>(&mut v1);
+        let mut v2 = Vars::new();
+        let r = e.to_ratfun::<Rational>(&mut v2);
+        match (f, r) {
+            (Ok(f), Ok(r)) => {
+                let reduced = Fraction::from_ratfun(&r);
+                assert!(f.cross_residual(&reduced).unwrap().is_zero(), "{text}");
+                assert_eq!(f.conditions(), r.conditions(), "{text}");
+                let den = f.denominator().unwrap();
+                assert_eq!(
+                    f.numerator().mul_ref(r.denominator()),
+                    r.numerator().mul_ref(&den),
+                    "{text}"
+                );
+            }
+            (Err(a), Err(b)) => assert_eq!(a.to_string(), b.to_string(), "{text}"),
+            (a, b) => panic!("{text}: {a:?} vs {b:?}"),
+        }
+        assert_eq!(v1.names(), v2.names(), "{text}");
+    }
+
+    #[test]
+    fn fractions_with_their_errors() {
+        // Nothing cancelled: the written numerator over the written denominator.
+        let mut vars = Vars::new();
+        let f = parse_expr("(x^2 - 1)/(x - 1) + 1/(x - 1)")
+            .unwrap()
+            .try_to_fraction::<Rational>(&mut vars)
+            .unwrap();
+        assert_eq!(f.numerator().display(&vars).to_string(), "x^2");
+        assert_eq!(f.factors().len(), 1);
+        fraction_agrees("(x^2 - 1)/(x - 1) + 1/(x - 1)");
+        fraction_agrees("(1/3)*(2*x + y)/(x*y)");
+        fraction_agrees("x^3");
+        // Past the factor budget: the reduced rational function, the same conditions.
+        let many: Vec<String> = (1..=crate::ratfun::MAX_FACTORS + 1)
+            .map(|k| format!("1/(x + {k})"))
+            .collect();
+        let text = many.join(" + ");
+        assert!(parse_expr(&text)
+            .unwrap()
+            .to_fraction::<Rational>(&mut Vars::new())
+            .is_none());
+        fraction_agrees(&text);
+        // The errors of to_ratfun.
+        fraction_agrees("1/(x - x)");
+        fraction_agrees("x^(1/2)");
+        fraction_agrees("sqrt(x)");
+    }
+
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(64))]
+        /// Random rational expressions: the fraction (or the error) is the rational function
+        /// `to_ratfun` gives.
+        #[test]
+        fn try_to_fraction_is_the_rational_function(
+            choices in proptest::collection::vec(0u8..=255, 1..=9),
+        ) {
+            fraction_agrees(&expression(&choices));
+        }
+
         /// Random rational expressions against their own lowest terms written out (a true
         /// identity) and against those plus one (a false one): the cheap route gives the sides
         /// (or the error) that converting each side on its own gives.

@@ -26,7 +26,7 @@ impl RootRadicand for Expr {
 
 impl RootEntry {
     /// The radicand as written: every root of a table is recorded by the conversions of
-    /// formulas ([`root_variable`]), with its formula.
+    /// formulas (`root_variable`), with its formula.
     pub fn radicand_expr(&self) -> &Expr {
         self.radicand
             .as_any()

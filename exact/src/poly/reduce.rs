@@ -462,7 +462,7 @@ impl PairKey {
 /// [`limits::GROEBNER_BITS`] (the size [`Coefficient::size_bits`] of every coefficient of a new
 /// element: the cost of the next reductions grows with it).
 ///
-/// The pending pairs are kept in a priority queue (a `BTreeSet` ordered by [`PairKey`]), so
+/// The pending pairs are kept in a priority queue (a `BTreeSet` ordered by `PairKey`), so
 /// selecting the next pair costs `O(log n)`: ranking every pair at every step made 200 linear
 /// relations take more than 20 s.
 ///

@@ -77,3 +77,23 @@ fn local_errors_are_binary32_operations() {
     assert_eq!(ops[1].float, 0.0);
     assert_eq!(ops[1].exact, f64::powi(2.0, -30));
 }
+
+/// The powers of both formats: `Multiply` rounds every product in its own type; `Libm` converts
+/// the exponent to the type first (`(float)n` rounds 2^24 + 1 to 2^24, `(double)n` is exact).
+#[test]
+fn powers_round_in_their_own_format() {
+    use super::float::{pow_f32, pow_f64};
+    assert_eq!(pow_f32(2.0, -3, PowStyle::Multiply), 0.125);
+    assert_eq!(pow_f64(2.0, -3, PowStyle::Multiply), 0.125);
+    assert_eq!(pow_f32(7.0, 0, PowStyle::Multiply), 1.0);
+    // 1.1^3 by two rounded products, in each format.
+    let a32 = 1.1f32;
+    assert_eq!(pow_f32(a32, 3, PowStyle::Multiply), a32 * a32 * a32);
+    assert_eq!(pow_f64(1.1, 3, PowStyle::Multiply), 1.1 * 1.1 * 1.1);
+    let n = (1 << 24) + 1;
+    assert_eq!(
+        pow_f32(-1.0, n, PowStyle::Libm),
+        (-1.0f32).powf(16_777_216.0)
+    );
+    assert_eq!(pow_f64(-1.0, n, PowStyle::Libm), -1.0);
+}

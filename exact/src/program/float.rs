@@ -448,25 +448,42 @@ impl Evaluator for Mixed<'_> {
     }
 }
 
-/// `a^n` in binary32, per [`PowStyle`] (`Libm`: C's `powf(a, (float)n)`).
-pub fn pow_f32(a: f32, n: i32, style: PowStyle) -> f32 {
-    match style {
-        PowStyle::Libm => a.powf(n as f32),
-        PowStyle::Multiply => {
-            if n == 0 {
-                return 1.0;
-            }
-            let mut acc = a;
-            for _ in 1..n.unsigned_abs() {
-                acc *= a;
-            }
-            if n < 0 {
-                1.0 / acc
-            } else {
-                acc
+/// `a^n` in one float type per [`PowStyle`]: `$name(a, n, style)` in `$t` (`Libm`: the C
+/// library's `pow` of the exponent converted to `$t`, as C's `pow(a, (double)n)` and
+/// `powf(a, (float)n)`; `Multiply`: `n - 1` rounded products, then one reciprocal for `n < 0`).
+macro_rules! libm_pow {
+    ($(#[$doc:meta])* $name:ident, $t:ident) => {
+        $(#[$doc])*
+        pub fn $name(a: $t, n: i32, style: PowStyle) -> $t {
+            match style {
+                PowStyle::Libm => a.powf(n as $t),
+                PowStyle::Multiply => {
+                    if n == 0 {
+                        return 1.0;
+                    }
+                    let mut acc = a;
+                    for _ in 1..n.unsigned_abs() {
+                        acc *= a;
+                    }
+                    if n < 0 {
+                        1.0 / acc
+                    } else {
+                        acc
+                    }
+                }
             }
         }
-    }
+    };
+}
+
+libm_pow! {
+    /// `a^n` in binary32, per [`PowStyle`] (`Libm`: C's `powf(a, (float)n)`).
+    pow_f32, f32
+}
+
+libm_pow! {
+    /// `a^n` in doubles, per [`PowStyle`] (`Libm`: C's `pow(a, (double)n)`, the exponent exact).
+    pow_f64, f64
 }
 
 /// The C-library call table of one float type: `$name(f, a, b)` in `$t` (its `consts` for pi
@@ -512,27 +529,6 @@ libm_calls! {
     /// `expf`, `logf`, `sinf`, `powf`, `hypotf`, `cbrtf`, ...; the inverse hyperbolic functions are
     /// declared directly), and the binary32 values nearest to pi and e.
     call_f32, f32, asinhf, acoshf, atanhf
-}
-
-/// `a^n` in doubles, per [`PowStyle`].
-pub fn pow_f64(a: f64, n: i32, style: PowStyle) -> f64 {
-    match style {
-        PowStyle::Libm => a.powf(f64::from(n)),
-        PowStyle::Multiply => {
-            if n == 0 {
-                return 1.0;
-            }
-            let mut acc = a;
-            for _ in 1..n.unsigned_abs() {
-                acc *= a;
-            }
-            if n < 0 {
-                1.0 / acc
-            } else {
-                acc
-            }
-        }
-    }
 }
 
 /// The inverse hyperbolic functions of the platform's C library. Rust's `f64::asinh`, `acosh`

@@ -30,8 +30,8 @@ use crate::univariate::UPoly;
 use crate::{Algebraic, Radical, Rational};
 use exactcheck_core::{Ring, Rng};
 
-/// The constants of a statement as polynomials in one primitive element `c`: see the
-/// [module documentation](self).
+/// The constants of a statement as polynomials in one primitive element `c`: see the module
+/// documentation of `exact/src/prove/constants.rs`.
 #[derive(Clone, Debug)]
 pub struct AlgebraicConstants {
     /// The name of the variable standing for the primitive element (`c`, or the first of `c1`,

@@ -81,6 +81,12 @@ impl<C: Field> Fraction<C> {
         &self.factors
     }
 
+    /// The denominator: the product of the factors expanded (1 without factors); `None` past a
+    /// limit.
+    pub fn denominator(&self) -> Option<Poly<C>> {
+        times(&Poly::one(), &self.factors)
+    }
+
     /// The conditions of the divisors met, as [`RatFun::conditions`] (see the module
     /// documentation).
     pub fn conditions(&self) -> Vec<Poly<C>> {

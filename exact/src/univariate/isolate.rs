@@ -355,7 +355,7 @@ impl UPoly {
     /// to `width` (an upper bound on the refinement steps) are checked before any work.
     ///
     /// # Errors
-    /// A [`LimitError`] of `bisection` when more halvings than the limit would be needed.
+    /// A [`LimitError`](exactcheck_core::limits::LimitError) of `bisection` when more halvings than the limit would be needed.
     ///
     /// # Panics
     /// As [`UPoly::refine`].

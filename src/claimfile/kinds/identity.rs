@@ -22,7 +22,7 @@ pub(super) struct Filled {
 
 /// An identity claim: in the number field of its constants when one lies outside the
 /// square-root field, else over the field the claim asks for (`radical` or Q).
-pub(super) fn identity_claim(check: &Check) -> Result<(Outcome, Option<String>), Fault> {
+pub(super) fn identity_claim(check: &Check) -> Result<Decision, Fault> {
     let Check::Identity {
         lhs,
         rhs,
@@ -89,11 +89,11 @@ pub(super) fn identity_claim(check: &Check) -> Result<(Outcome, Option<String>),
 
 /// An identity claim through the identity engine (with its constants in a number field when
 /// `constants` is given); with the outcome, why the claim's corrected form is not proved equal
-/// to its `rhs` (if it is not).
+/// to its `rhs` (if it is not), and the report's typed fields as `prove --json` prints them.
 fn identity<C: PointField + Display>(
     check: &Check,
     constants: Option<&Filled>,
-) -> Result<(Outcome, Option<String>), Fault> {
+) -> Result<Decision, Fault> {
     let Check::Identity {
         shape,
         lhs,
@@ -255,6 +255,7 @@ fn identity<C: PointField + Display>(
     let method = phrasing.method::<C>();
     let evidence = phrasing.evidence(&spec, &report);
     let correction_problem = phrasing.correction_problem(&report);
+    let fields = phrasing.fields(&spec, &report, *shape);
     let printed: Vec<Equation> = if names.is_empty() {
         lhs.iter()
             .zip(rhs)
@@ -362,13 +363,14 @@ fn identity<C: PointField + Display>(
             (Verdict::Fails, Some(Box::new(erratum)))
         }
     };
-    Ok((
-        Outcome {
+    Ok(Decision {
+        outcome: Outcome {
             verdict,
             method,
             evidence,
             erratum,
         },
-        correction_problem,
-    ))
+        problem: correction_problem,
+        report: fields,
+    })
 }

@@ -4,7 +4,8 @@
 use super::*;
 use exactcheck_exact::Algebraic;
 
-pub(super) fn instances(check: &Check) -> Result<Outcome, Fault> {
+/// The outcome, and for the random part the typed fields `prove --random --json` prints.
+pub(super) fn instances(check: &Check) -> Result<(Outcome, Map<String, Value>), Fault> {
     let Check::Instances {
         shape,
         lhs,
@@ -148,7 +149,7 @@ pub(super) fn instances(check: &Check) -> Result<Outcome, Fault> {
         .collect();
     for f in found {
         if let Some(outcome) = f? {
-            return Ok(outcome);
+            return Ok((outcome, Map::new()));
         }
     }
     let exact_note = if at.is_empty() {
@@ -157,12 +158,15 @@ pub(super) fn instances(check: &Check) -> Result<Outcome, Fault> {
         format!("LHS - RHS is exactly 0 at all {} given instances", at.len())
     };
     let Some(trials) = *random else {
-        return Ok(Outcome {
-            verdict: Verdict::Holds,
-            method: "exact evaluation at the given instances".into(),
-            evidence: exact_note,
-            erratum: None,
-        });
+        return Ok((
+            Outcome {
+                verdict: Verdict::Holds,
+                method: "exact evaluation at the given instances".into(),
+                evidence: exact_note,
+                erratum: None,
+            },
+            Map::new(),
+        ));
     };
     // Random evaluation modulo a random prime (prove --random).
     let mut vars = Vars::new();
@@ -224,6 +228,7 @@ pub(super) fn instances(check: &Check) -> Result<Outcome, Fault> {
             " and exact instances"
         }
     );
+    let fields = crate::phrase::random::random_fields(&phrased, &decisions, *shape, seed_of_run);
     let evidence = if exact_note.is_empty() {
         phrased.evidence
     } else {
@@ -263,10 +268,13 @@ pub(super) fn instances(check: &Check) -> Result<Outcome, Fault> {
         })),
         _ => None,
     };
-    Ok(Outcome {
-        verdict: phrased.verdict,
-        method,
-        evidence,
-        erratum,
-    })
+    Ok((
+        Outcome {
+            verdict: phrased.verdict,
+            method,
+            evidence,
+            erratum,
+        },
+        fields,
+    ))
 }

@@ -17,8 +17,8 @@ use solve::solve;
 use value::{printed_tuple, values};
 
 use super::defs::{self, Defs};
-use super::name_expr;
 use super::read::{present_keys, RawClaim};
+use super::{name_expr, Decision};
 use crate::claims::{printed, Equation, Erratum, Outcome, Verdict};
 use crate::phrase::Phrasing;
 use crate::prove_cmd::{parse_where_with, Where};
@@ -38,7 +38,7 @@ use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::real_constant::RealConstant;
 use exactcheck_exact::{Radical, Rational};
 use rayon::prelude::*;
-use serde_json::Value;
+use serde_json::{Map, Value};
 use std::cell::RefCell;
 use std::cmp::Ordering;
 use std::fmt::Display;
@@ -473,26 +473,41 @@ fn conditions(c: &RawClaim, defs: &RefCell<Defs>) -> Built<Conditions> {
     Ok(out)
 }
 
-/// Decides a claim: its outcome and, for an identity with a `corrected` form not proved equal
-/// to its `rhs`, why (the claim is then not as expected, whatever its verdict).
-pub fn run(
-    check: &Check,
-    notation: &[(String, String)],
-) -> Result<(Outcome, Option<String>), Fault> {
-    let (mut out, problem) = match check {
+/// Decides a claim: its outcome; for an identity with a `corrected` form not proved equal to
+/// its `rhs`, why (the claim is then not as expected, whatever its verdict); the typed fields
+/// of the engine's report (identities, random instances).
+pub fn run(check: &Check, notation: &[(String, String)]) -> Result<Decision, Fault> {
+    let mut decided = match check {
         Check::Identity { .. } => identity_claim(check)?,
         Check::Value {
             exprs,
             names,
             printed,
-        } => (values(exprs, names, printed)?, None),
-        Check::Instances { .. } => (instances(check)?, None),
-        Check::Solve { problem, fields } => (solve(problem, fields)?, None),
+        } => Decision::outcome(values(exprs, names, printed)?),
+        Check::Instances { .. } => {
+            let (outcome, report) = instances(check)?;
+            Decision {
+                report,
+                ..Decision::outcome(outcome)
+            }
+        }
+        Check::Solve { problem, fields } => Decision::outcome(solve(problem, fields)?),
     };
-    if let Some(e) = out.erratum.as_mut() {
+    if let Some(e) = decided.outcome.erratum.as_mut() {
         e.notation = notation.to_vec();
     }
-    Ok((out, problem))
+    Ok(decided)
+}
+
+impl Decision {
+    /// An outcome alone: no problem, no typed fields.
+    fn outcome(outcome: Outcome) -> Self {
+        Decision {
+            outcome,
+            problem: None,
+            report: Map::new(),
+        }
+    }
 }
 
 /// A printed number as written when it is a plain decimal (`0.3330`, `-2.5`: [`Expr::decimal`]),

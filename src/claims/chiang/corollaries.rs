@@ -15,11 +15,15 @@
 //! `phi` has the factor `C(m, i)` or `C(n, k-i)`, zero). A printed `w_k` inside a point formula
 //! stands for the printed weight formula.
 
-use super::{compare, fraction, outcome, symbolic_surface, Comparison, Fraction, Outcome, P};
+use super::{
+    compare, fraction, outcome, printed_expr, quotient, symbolic_surface, Comparison, Fraction,
+    Outcome, P,
+};
 use crate::claims::engine::Symbols;
 use crate::claims::Verdict;
 use exactcheck_core::ruled::Plane;
 use exactcheck_core::{binomial, Ring};
+use exactcheck_exact::expr::Expr;
 use exactcheck_exact::Rational;
 
 /// Corollary 1's printed weight summand: `w_k = sum_{i=0}^{k} phi(m,n,i,k-i) × q_iz`.
@@ -60,7 +64,7 @@ struct Derived {
     points: Vec<[Fraction; 3]>,
 }
 
-fn derive(sym: &mut Symbols, m: usize, n: usize) -> Derived {
+fn derive(sym: &mut Symbols, m: usize, n: usize) -> Result<Derived, String> {
     let surface = symbolic_surface(sym, m, n);
     let [den, x, y, z] = surface.substitution(&Plane::<P>::z0());
     let mut weights = Vec::new();
@@ -68,17 +72,11 @@ fn derive(sym: &mut Symbols, m: usize, n: usize) -> Derived {
     for k in 0..=m + n {
         let c = Rational::new(1, binomial((m + n) as u32, k as u32) as i64)
             .expect("a binomial coefficient is not zero");
-        weights.push(Fraction {
-            num: den[k].scale(&c),
-            den: <P as Ring>::one(),
-        });
-        let point = |num: &P| Fraction {
-            num: num.clone(),
-            den: den[k].clone(),
-        };
-        points.push([point(&x[k]), point(&y[k]), point(&z[k])]);
+        weights.push(Fraction::from_poly(den[k].scale(&c)));
+        let point = |num: &P| quotient(num, &den[k]);
+        points.push([point(&x[k])?, point(&y[k])?, point(&z[k])?]);
     }
-    Derived { weights, points }
+    Ok(Derived { weights, points })
 }
 
 fn phi_text(m: usize, n: usize, i: usize, j: usize) -> String {
@@ -105,16 +103,16 @@ fn printed_sum(term: &str, m: usize, n: usize, k: usize, axis: &str) -> String {
 /// Every printed `r_kz` is identically zero (the side statement `r_kz = 0`).
 fn z_vanishes(
     sym: &mut Symbols,
-    defs: &[(String, Fraction)],
+    defs: &[(String, Expr)],
     texts: &[(String, String)],
 ) -> Result<Option<String>, String> {
     for (label, text) in texts {
         let f = fraction(text, sym, defs)?;
-        if !f.num.is_zero() {
+        if !f.numerator().is_zero() {
             return Ok(Some(format!(
                 "{label} as printed, {text}, is not identically zero: it is ({}) / ({})",
-                f.num.display(&sym.vars),
-                f.den.display(&sym.vars)
+                f.numerator().display(&sym.vars),
+                super::denominator(&f)?.display(&sym.vars)
             )));
         }
     }
@@ -141,7 +139,7 @@ pub fn corollary1_with(weight_term: &str, point_term: &str) -> Result<Outcome, S
     for m in 0..=4 {
         for n in 0..=6 {
             let mut sym = Symbols::new(&[]);
-            let derived = derive(&mut sym, m, n);
+            let derived = derive(&mut sym, m, n)?;
             let mut defs = Vec::new();
             let mut comparisons = Vec::new();
             let mut z_texts = Vec::new();
@@ -152,7 +150,7 @@ pub fn corollary1_with(weight_term: &str, point_term: &str) -> Result<Outcome, S
                     printed: w.clone(),
                     derived: derived.weights[k].clone(),
                 });
-                defs.push((format!("w{k}"), fraction(&w, &mut sym, &[])?));
+                defs.push((format!("w{k}"), printed_expr(&w)?));
             }
             for k in 0..=m + n {
                 for (a, axis) in AXES.iter().enumerate() {
@@ -195,7 +193,7 @@ pub fn corollary2_with(point: &str) -> Result<Outcome, String> {
     let mut terms_total = 0;
     for n in 0..=6 {
         let mut sym = Symbols::new(&[]);
-        let derived = derive(&mut sym, 0, n);
+        let derived = derive(&mut sym, 0, n)?;
         let mut comparisons = Vec::new();
         let mut z_texts = Vec::new();
         for k in 0..=n {
@@ -240,7 +238,7 @@ pub fn corollary2_with(point: &str) -> Result<Outcome, String> {
 pub fn corollary5_with(printed: &Corollary5Text) -> Result<Outcome, String> {
     let (m, n) = (1, 2);
     let mut sym = Symbols::new(&[]);
-    let derived = derive(&mut sym, m, n);
+    let derived = derive(&mut sym, m, n)?;
     let mut defs = Vec::new();
     let mut comparisons = Vec::new();
     let mut z_texts = Vec::new();
@@ -250,7 +248,7 @@ pub fn corollary5_with(printed: &Corollary5Text) -> Result<Outcome, String> {
             printed: (*w).into(),
             derived: derived.weights[k].clone(),
         });
-        defs.push((format!("w{k}"), fraction(w, &mut sym, &[])?));
+        defs.push((format!("w{k}"), printed_expr(w)?));
     }
     for (k, r) in printed.points.iter().enumerate() {
         for (a, axis) in AXES.iter().enumerate() {

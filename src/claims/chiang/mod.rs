@@ -11,16 +11,14 @@
 //!   symbolic `t`, for every `m <= 4, n <= 6`; then random exact instances up to `(12, 20)`.
 //! * `corollaries` — the printed formulas, kept as text (ASCII transliterations) and parsed by the
 //!   engine, against the substitution of the proof for the plane `z = 0`. Printed formulas are
-//!   quotients (`r_k = (1/w_k) [...]`, `p_k - (p_kz / q_0z) q_0`), which the engine's polynomial
-//!   parser refuses, so they are read as *fractions* `N / D` of polynomials (a small evaluator of
-//!   the engine's expression tree, [`fraction`]); a printed `N / D` equals a derived `H / W`
+//!   quotients (`r_k = (1/w_k) [...]`, `p_k - (p_kz / q_0z) q_0`), read as *fractions* `N / D` of
+//!   polynomials by the exact crate's conversion without cancelling
+//!   (`Expr::try_to_fraction`, [`fraction`]), a printed weight `w_k` inside a point formula
+//!   substituted by its printed formula first; a printed `N / D` equals a derived `H / W`
 //!   exactly when the polynomial `N W - H D` is zero (cross-multiplication; both denominators are
 //!   non-zero polynomials). A non-zero residual is turned into an exact rational counter-example
 //!   where both denominators are non-zero and the two values differ ([`compare`]).
 //! * `example4` — the curve in `Q(sqrt 2, sqrt 6)`, every printed decimal judged exactly.
-//!
-//! Hand-written: the fraction evaluator (the engine proves polynomial identities; the corollaries
-//! print quotients, and cross-multiplying by hand would mean rewriting the printed text).
 //!
 //! Rust, not an embedded claims file, claim by claim: `chiang.theorem` and
 //! `chiang.corollary1/2/5` are families over the degrees `(m, n)`, expanded with the Bernstein
@@ -48,8 +46,9 @@ use super::engine::{Rng, Symbols};
 use super::{Claim, Outcome, Verdict};
 use exactcheck_core::ruled::RuledSurface;
 use exactcheck_core::{Ring, Vec3};
-use exactcheck_exact::expr::{parse_expr, AddOp, Expr, ExprKind, MulOp};
-use exactcheck_exact::poly::{Poly, Vars};
+use exactcheck_exact::expr::library::substitute_free;
+use exactcheck_exact::expr::{parse_expr, Expr};
+use exactcheck_exact::poly::Poly;
 use exactcheck_exact::Rational;
 
 type P = Poly<Rational>;
@@ -102,134 +101,51 @@ fn symbolic_surface(sym: &mut Symbols, m: usize, n: usize) -> RuledSurface<P> {
     RuledSurface::from_control(base, directions).expect("n + 1 >= 1 points, m + 1 >= 1 vectors")
 }
 
-/// A rational constant as a polynomial.
-fn constant(q: Rational) -> P {
-    P::constant(q)
-}
-
 // ------------------------------------------------------------------------ printed fractions
 
-/// A quotient `num / den` of polynomials; `den` is never the zero polynomial.
-#[derive(Clone, Debug)]
-pub struct Fraction {
-    /// The numerator.
-    pub num: P,
-    /// The denominator (not the zero polynomial).
-    pub den: P,
-}
-
-impl Fraction {
-    fn poly(p: P) -> Fraction {
-        Fraction {
-            num: p,
-            den: <P as Ring>::one(),
-        }
-    }
-
-    fn add(&self, other: &Fraction, minus: bool) -> Fraction {
-        let rhs = if minus {
-            other.num.neg_ref()
-        } else {
-            other.num.clone()
-        };
-        if self.den == other.den {
-            return Fraction {
-                num: self.num.add_ref(&rhs),
-                den: self.den.clone(),
-            };
-        }
-        Fraction {
-            num: self
-                .num
-                .mul_ref(&other.den)
-                .add_ref(&rhs.mul_ref(&self.den)),
-            den: self.den.mul_ref(&other.den),
-        }
-    }
-
-    fn mul(&self, other: &Fraction) -> Fraction {
-        Fraction {
-            num: self.num.mul_ref(&other.num),
-            den: self.den.mul_ref(&other.den),
-        }
-    }
-
-    fn div(&self, other: &Fraction) -> Result<Fraction, String> {
-        if other.num.is_zero() {
-            return Err("division by an expression that is identically zero".into());
-        }
-        Ok(Fraction {
-            num: self.num.mul_ref(&other.den),
-            den: self.den.mul_ref(&other.num),
-        })
-    }
-}
+/// A quotient of polynomials as the exact crate builds it from an expression (nothing
+/// cancelled; [`Expr::try_to_fraction`]).
+pub type Fraction = exactcheck_exact::ratfun::Fraction<Rational>;
 
 /// The printed formula `text` (the engine's expression syntax) as a [`Fraction`]; a name listed
 /// in `defs` (e.g. `w1`, the printed weight that a printed point divides by) stands for its
-/// fraction, every other name is a variable of `sym`.
+/// printed formula, every other name is a variable of `sym`.
 ///
 /// # Errors
-/// A syntax error, a `sqrt`, a non-integer or negative exponent, a division by zero.
+/// A syntax error, a `sqrt` of a variable, a non-integer exponent, a division by zero.
 pub fn fraction(
     text: &str,
     sym: &mut Symbols,
-    defs: &[(String, Fraction)],
+    defs: &[(String, Expr)],
 ) -> Result<Fraction, String> {
-    let e = parse_expr(text).map_err(|e| format!("printed formula {text:?}: {e}"))?;
-    to_fraction(&e, &mut sym.vars, defs).map_err(|e| format!("printed formula {text:?}: {e}"))
+    let wrap = |e: String| format!("printed formula {text:?}: {e}");
+    let mut e = printed_expr(text)?;
+    for (name, value) in defs {
+        e = substitute_free(&e, name, value).map_err(wrap)?;
+    }
+    e.try_to_fraction::<Rational>(&mut sym.vars)
+        .map_err(|e| wrap(e.to_string()))
 }
 
-fn to_fraction(e: &Expr, vars: &mut Vars, defs: &[(String, Fraction)]) -> Result<Fraction, String> {
-    match &e.kind {
-        ExprKind::Number(q) => Ok(Fraction::poly(constant(q.clone()))),
-        ExprKind::Var(name) => Ok(match defs.iter().find(|(n, _)| n == name) {
-            Some((_, f)) => f.clone(),
-            None => Fraction::poly(P::var(vars.var(name))),
-        }),
-        ExprKind::Neg(x) => {
-            let f = to_fraction(x, vars, defs)?;
-            Ok(Fraction {
-                num: f.num.neg_ref(),
-                den: f.den,
-            })
-        }
-        ExprKind::Sum(items) => {
-            let mut acc = Fraction::poly(P::zero());
-            for (op, x) in items {
-                acc = acc.add(&to_fraction(x, vars, defs)?, *op == AddOp::Minus);
-            }
-            Ok(acc)
-        }
-        ExprKind::Product(items) => {
-            let mut acc = Fraction::poly(<P as Ring>::one());
-            for (op, x) in items {
-                let f = to_fraction(x, vars, defs)?;
-                acc = match op {
-                    MulOp::Times => acc.mul(&f),
-                    MulOp::Divide => acc.div(&f)?,
-                };
-            }
-            Ok(acc)
-        }
-        ExprKind::Pow(base, exp) => {
-            let k: Rational = exp.eval_constant().map_err(|e| e.to_string())?;
-            let k = k
-                .to_string()
-                .parse::<u32>()
-                .map_err(|_| format!("exponent {k} is not a small non-negative integer"))?;
-            let b = to_fraction(base, vars, defs)?;
-            let mut acc = Fraction::poly(<P as Ring>::one());
-            for _ in 0..k {
-                acc = acc.mul(&b);
-            }
-            Ok(acc)
-        }
-        ExprKind::Sqrt(_) => Err("sqrt in a printed formula of the corollaries".into()),
-        ExprKind::Call(name, _) => Err(format!(
-            "function {name} in a printed formula of the corollaries"
-        )),
-    }
+/// The printed formula `text` as an expression, for `defs` of [`fraction`].
+///
+/// # Errors
+/// A syntax error.
+pub fn printed_expr(text: &str) -> Result<Expr, String> {
+    parse_expr(text).map_err(|e| format!("printed formula {text:?}: {e}"))
+}
+
+/// The derived quotient `num / den` (`den` not the zero polynomial).
+fn quotient(num: &P, den: &P) -> Result<Fraction, String> {
+    let over = |f: Option<Fraction>| f.ok_or_else(|| "the derivation passes a limit".to_string());
+    let inv = over(Fraction::from_poly(den.clone()).recip())?;
+    over(Fraction::from_poly(num.clone()).mul(&inv))
+}
+
+/// The expanded denominator of a fraction.
+fn denominator(f: &Fraction) -> Result<P, String> {
+    f.denominator()
+        .ok_or_else(|| "a denominator passes a limit".to_string())
 }
 
 /// One printed formula against its derivation.
@@ -264,14 +180,14 @@ pub enum Compared {
 /// A printed text that does not parse.
 pub fn compare(
     sym: &mut Symbols,
-    defs: &[(String, Fraction)],
+    defs: &[(String, Expr)],
     comparisons: &[Comparison],
 ) -> Result<Compared, String> {
     let mut terms = 0;
     for c in comparisons {
         let printed = fraction(&c.printed, sym, defs)?;
-        let left = printed.num.mul_ref(&c.derived.den);
-        let right = c.derived.num.mul_ref(&printed.den);
+        let left = printed.numerator().mul_ref(&denominator(&c.derived)?);
+        let right = c.derived.numerator().mul_ref(&denominator(&printed)?);
         terms += left.len() + right.len();
         let residual = left.sub_ref(&right);
         if residual.is_zero() {
@@ -279,10 +195,10 @@ pub fn compare(
         }
         let derived_text = format!(
             "({}) / ({})",
-            c.derived.num.display(&sym.vars),
-            c.derived.den.display(&sym.vars)
+            c.derived.numerator().display(&sym.vars),
+            denominator(&c.derived)?.display(&sym.vars)
         );
-        return Ok(match witness(sym, &printed, &c.derived, &residual) {
+        return Ok(match witness(sym, &printed, &c.derived, &residual)? {
             Some((at, p, d)) => Compared::Mismatch(format!(
                 "{} as printed, {}, is not the derivation's: counter-example {at}: printed {p}, derived {d}; derived form: {} = {derived_text}",
                 c.label, c.printed, c.label
@@ -305,8 +221,9 @@ fn witness(
     printed: &Fraction,
     derived: &Fraction,
     residual: &P,
-) -> Option<(String, Rational, Rational)> {
-    let mut used: Vec<_> = [residual, &printed.den, &derived.den]
+) -> Result<Option<(String, Rational, Rational)>, String> {
+    let (printed_den, derived_den) = (denominator(printed)?, denominator(derived)?);
+    let mut used: Vec<_> = [residual, &printed_den, &derived_den]
         .iter()
         .flat_map(|p| p.variables())
         .collect();
@@ -319,12 +236,16 @@ fn witness(
             point[*v as usize] = rng.rational(9, 4);
         }
         let at = |p: &P| p.eval(&point, |c| c.clone());
-        let (pd, dd) = (at(&printed.den), at(&derived.den));
+        let (pd, dd) = (at(&printed_den), at(&derived_den));
         if pd.is_zero() || dd.is_zero() {
             continue;
         }
-        let pv = at(&printed.num).checked_div(&pd).expect("checked non-zero");
-        let dv = at(&derived.num).checked_div(&dd).expect("checked non-zero");
+        let pv = at(printed.numerator())
+            .checked_div(&pd)
+            .expect("checked non-zero");
+        let dv = at(derived.numerator())
+            .checked_div(&dd)
+            .expect("checked non-zero");
         if pv != dv {
             let assignment: Vec<String> = used
                 .iter()
@@ -336,10 +257,10 @@ fn witness(
                     )
                 })
                 .collect();
-            return Some((assignment.join(", "), pv, dv));
+            return Ok(Some((assignment.join(", "), pv, dv)));
         }
     }
-    None
+    Ok(None)
 }
 
 /// An outcome from a [`Compared`] (with the method and the evidence of the equal case).

@@ -9,11 +9,11 @@
 //! (random exact instances and the worked example) and, for printed decimals, the comparisons
 //! of `crate::claims::printed` (exact, in `Radical`).
 //!
-//! * [`offset`] — `chiang.offset` (restrictions (1)-(3) give the `r`-offset, every property as a
+//! * `offset` — `chiang.offset` (restrictions (1)-(3) give the `r`-offset, every property as a
 //!   polynomial identity in a symbolic `t`) and `chiang.ph_degree` (the corollary's degrees
 //!   `n - 1` and `2n - 1`, attained: leading power coefficient and the gcd of the homogeneous
 //!   coordinates).
-//! * [`example`] — `chiang.ph_points`, `chiang.ph_normals` (with the search over sign patterns
+//! * `example` — `chiang.ph_points`, `chiang.ph_normals` (with the search over sign patterns
 //!   of the printed magnitudes), `chiang.ph_radius` (exact smallest radius, exact cusp counts
 //!   two independent ways) and `chiang.ph_offsets` (every printed decimal of the offsets).
 //!

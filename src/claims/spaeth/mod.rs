@@ -16,7 +16,7 @@
 //!   (10) also against the core's `A(t)`, `B(t)`), inside the geometric domains, with the
 //!   corrected text proved equal to the derivation and named in the erratum;
 //! * `sampling` — the f64 sampling rule run on a configuration found by isolating the real
-//!   roots of the discriminant ([`examples`]);
+//!   roots of the discriminant (module `examples`);
 //! * `example1` to `example3` — the worked examples solved by the core with the roots isolated
 //!   exactly and compared with the printed numbers and figures.
 //!

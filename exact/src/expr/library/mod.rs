@@ -47,9 +47,9 @@
 //! Hand-written: the rewriting is a small recursion over the expression grammar of this
 //! module's parent; no crate knows that grammar.
 //!
-//! The submodules: [`matrix`] builds the trees of sums, products, matrix products and
-//! determinants; [`calls`] computes the library functions (vectors, matrices, Bernstein and
-//! Bezier); [`tree`] walks and rewrites trees (substitution, positions, sizes).
+//! The submodules: `matrix` builds the trees of sums, products, matrix products and
+//! determinants; `calls` computes the library functions (vectors, matrices, Bernstein and
+//! Bezier); `tree` walks and rewrites trees (substitution, positions, sizes).
 
 use super::parse::LIST;
 use super::{parse_expr_with_calls, AddOp, Expr, ExprKind, MulOp};

@@ -1,5 +1,5 @@
 //! The multivariate gcd of polynomials over a field: the primitive remainder sequence
-//! ([`poly_gcd`]), its budgeted form for callers that can do without it ([`gcd_capped`]), and the
+//! ([`poly_gcd`]), its budgeted form for callers that can do without it (`gcd_capped`), and the
 //! modular certificate of coprimality ([`certified_coprime`], module `coprime`) that settles
 //! most gcds met in practice without a remainder sequence. Rational functions
 //! ([`crate::ratfun`]) cancel with them, and square-free factoring ([`super::factor`]) is built

@@ -51,7 +51,7 @@
 //! expansion random mode does); the bound is then that of the lowered tree.
 //!
 //! A point where a divisor with a variable vanishes modulo `p` (a pole) is not in the domain of
-//! the identity: it is skipped and another point drawn; [`MAX_POLES`] poles in a row are an
+//! the identity: it is skipped and another point drawn; `MAX_POLES` poles in a row are an
 //! error (the divisor is then, with overwhelming probability, zero).
 //!
 //! A unit circle `c^2 + s^2 = 1` is sampled as `c = (1 - t^2)/(1 + t^2)`, `s = 2t/(1 + t^2)`
