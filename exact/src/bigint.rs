@@ -300,28 +300,46 @@ pub fn add_word_pass(
     d: u64,
     g: u64,
 ) -> (Vec<u64>, bool, Vec<u64>) {
+    let mut out = (Vec::new(), Vec::new());
+    let negative = add_word_pass_into(&mut az, an, &mut bz, (cn, cm, d), g, &mut out);
+    (out.0, negative, out.1)
+}
+
+/// [`add_word_pass`] into reused buffers: the word operand `(cn, cm, d)`, `t` and `den`
+/// written to `out` (cleared first), the operands `az`, `bz` zero-extended in place; returns
+/// whether `t` is negative.
+pub fn add_word_pass_into(
+    az: &mut Vec<u64>,
+    an: bool,
+    bz: &mut Vec<u64>,
+    (cn, cm, d): (bool, u64, u64),
+    g: u64,
+    out: &mut (Vec<u64>, Vec<u64>),
+) -> bool {
     let n = az.len().max(bz.len());
     // Equal length n (b with one more zero limb, read by the shift).
     az.resize(n, 0);
     bz.resize(n + 1, 0);
-    let mut t = Vec::with_capacity(n + 2);
-    let mut den = Vec::with_capacity(n + 1);
+    let (t, den) = (&mut out.0, &mut out.1);
+    t.clear();
+    den.clear();
+    t.reserve(n + 2);
+    den.reserve(n + 1);
     let carry = if an == cn {
-        add_word_loop::<false>(&az, &bz, &mut t, &mut den, cm, d, g)
+        add_word_loop::<false>(az, bz, t, den, cm, d, g)
     } else {
-        add_word_loop::<true>(&az, &bz, &mut t, &mut den, cm, d, g)
+        add_word_loop::<true>(az, bz, t, den, cm, d, g)
     };
-    trim(&mut den);
+    trim(den);
     t.push(carry as u64);
     t.push((carry >> 64) as u64);
     let t_negative = carry < 0;
     if t_negative {
-        negate_twos_complement(&mut t);
+        negate_twos_complement(t);
     }
-    trim(&mut t);
+    trim(t);
     // The sign: an when A d1 dominates (or magnitudes were added), cn otherwise.
-    let negative = !t.is_empty() && if t_negative { cn } else { an };
-    (t, negative, den)
+    !t.is_empty() && if t_negative { cn } else { an }
 }
 
 /// The loop of [`add_word_pass`] on `a` (n limbs), `b` (n + 1 limbs, the last zero), pushing
@@ -450,6 +468,32 @@ pub fn limbs_of(x: &BigUint, min_len: usize) -> Vec<u64> {
     out
 }
 
+/// [`limbs_of`] into a reused buffer (cleared first).
+/// Only the buffer's growth is zeroed before the copy (a reused buffer is mostly overwritten).
+pub fn limbs_into(x: &BigUint, min_len: usize, out: &mut Vec<u64>) {
+    let digits = x.iter_u64_digits();
+    let k = digits.len();
+    out.truncate(k.max(min_len));
+    out.resize(k.max(min_len), 0);
+    for (o, w) in out.iter_mut().zip(digits) {
+        *o = w;
+    }
+    out[k..].fill(0);
+}
+
+/// The 32-bit digits of the number with these limbs (least significant first) into a reused
+/// buffer (cleared first): the form num-bigint's `assign_from_slice` takes, which sets a
+/// number in its own allocation (num-bigint has no constructor from 64-bit limbs).
+pub fn u32_digits_into(limbs: &[u64], out: &mut Vec<u32>) {
+    // Every digit is overwritten: only the growth is zeroed.
+    out.truncate(2 * limbs.len());
+    out.resize(2 * limbs.len(), 0);
+    for (pair, &w) in out.chunks_exact_mut(2).zip(limbs) {
+        pair[0] = w as u32;
+        pair[1] = (w >> 32) as u32;
+    }
+}
+
 /// `x mod d` for a [`BigUint`] (`d != 0`) by [`rem_1`], without allocating for operands of up
 /// to eight limbs (copied to the stack) and with the fast copy of [`limbs_of`] above that.
 ///
@@ -479,11 +523,8 @@ pub fn trim(x: &mut Vec<u64>) {
 
 /// The [`BigUint`] with the given limbs (least significant first).
 pub fn biguint_from_limbs(limbs: &[u64]) -> BigUint {
-    let mut digits = vec![0u32; 2 * limbs.len()];
-    for (pair, &w) in digits.chunks_exact_mut(2).zip(limbs) {
-        pair[0] = w as u32;
-        pair[1] = (w >> 32) as u32;
-    }
+    let mut digits = Vec::new();
+    u32_digits_into(limbs, &mut digits);
     BigUint::new(digits)
 }
 
@@ -640,6 +681,32 @@ mod tests {
             prop_assert!(l.len() >= min_len);
             prop_assert_eq!(biguint_from_limbs(&l), x.clone());
             prop_assert_eq!(BigUint::from(rem_1_big(&x, d)), &x % BigUint::from(d));
+        }
+
+        /// The reused-buffer forms against num-bigint's own digits: `limbs_into` over a dirty
+        /// buffer, `u32_digits_into` against `to_u32_digits`, and `add_word_pass_into` over dirty
+        /// output buffers against `add_word_pass`.
+        #[test]
+        fn prop_reused_buffers(
+            p in arb_limbs(20), min_len in 0usize..24, junk in arb_limbs(30),
+            an in any::<bool>(), cn in any::<bool>(), cm in any::<u64>(), d in arb_divisor(),
+        ) {
+            let x = biguint_from_limbs(&p);
+            let mut buf = junk.clone();
+            limbs_into(&x, min_len, &mut buf);
+            prop_assert_eq!(&buf, &limbs_of(&x, min_len));
+            let mut digits: Vec<u32> = junk.iter().map(|&w| w as u32).collect();
+            u32_digits_into(&p, &mut digits);
+            let mut expected = x.to_u32_digits();
+            expected.resize(2 * p.len(), 0);
+            prop_assert_eq!(&digits, &expected);
+            // b = p d: g = d divides both b and d.
+            let b = limbs(&(&x * BigUint::from(d)));
+            let (t, tn, den) = add_word_pass(junk.clone(), an, b.clone(), cn, cm, d, d);
+            let mut out = (junk.clone(), junk.clone());
+            let (mut az, mut bz) = (junk.clone(), b);
+            let negative = add_word_pass_into(&mut az, an, &mut bz, (cn, cm, d), d, &mut out);
+            prop_assert_eq!((out.0, negative, out.1), (t, tn, den));
         }
     }
 

@@ -16,19 +16,28 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 def build():
     import gmpy2
 
-    libs = os.path.join(os.path.dirname(os.path.dirname(gmpy2.__file__)), "gmpy2.libs")
+    # The real path: a virtual environment reached through a symbolic link must not leave the
+    # link's path in the program's rpath (the link may go away).
+    libs = os.path.realpath(os.path.join(os.path.dirname(os.path.dirname(gmpy2.__file__)), "gmpy2.libs"))
     found = sorted(glob.glob(os.path.join(libs, "libgmp*.so*")))
     if not found:
         raise SystemExit("rational_sum_gmp: gmpy2's bundled libgmp was not found")
     src = os.path.join(HERE, "rational_sum_gmp.c")
     exe = os.path.join(os.path.dirname(sys.executable), "rational_sum_gmp")
-    if not os.path.exists(exe) or os.path.getmtime(exe) < os.path.getmtime(src):
+    # The program finds libgmp through the rpath of the directory it was built against: rebuilt
+    # when that directory changed (a virtual environment reached through another path).
+    stamp = exe + ".libdir"
+    built_for = open(stamp).read() if os.path.exists(stamp) else None
+    if (not os.path.exists(exe) or os.path.getmtime(exe) < os.path.getmtime(src)
+            or built_for != libs):
         cc = os.environ.get("CC", "cc")
         cmd = [cc, "-O2", "-o", exe, src, "-L", libs, "-l:" + os.path.basename(found[0]),
                "-Wl,-rpath," + libs]
         done = subprocess.run(cmd, capture_output=True, text=True)
         if done.returncode != 0:
             raise SystemExit(f"rational_sum_gmp: `{' '.join(cmd)}` failed: {done.stderr.strip()[-400:]}")
+        with open(stamp, "w") as f:
+            f.write(libs)
     return exe
 
 

@@ -344,6 +344,20 @@ impl Rational {
         add_big(&a, &b, &c, &d, sub)
     }
 
+    /// `self + rhs` (`self - rhs` when `sub`) reusing `self`'s storage: a big `self` plus a
+    /// word-sized `rhs` (the running sum `s += x`) is updated in place
+    /// ([`add_big_word_in_place`]); everything else is [`Rational::add_impl`].
+    fn add_owned(mut self, rhs: &Rational, sub: bool) -> Rational {
+        if let (Repr::Big(x), Repr::Small(c, d)) = (&mut self.0, &rhs.0) {
+            match add_big_word_in_place(x, if sub { -*c } else { *c }, *d) {
+                InPlace::Done => return self,
+                InPlace::Replaced(r) => return r,
+                InPlace::NotWords => {}
+            }
+        }
+        self.add_impl(rhs, sub)
+    }
+
     fn mul_impl(&self, rhs: &Rational) -> Rational {
         if let (Repr::Small(a, b), Repr::Small(c, d)) = (&self.0, &rhs.0) {
             return mul_small(*a, *b, *c, *d);
@@ -699,6 +713,93 @@ fn add_big_word(a: &BigInt, b: &BigUint, c: i128, d: i128) -> Option<Rational> {
     ))
 }
 
+/// The outcome of [`add_big_word_in_place`].
+enum InPlace {
+    /// The big value was updated and is still big.
+    Done,
+    /// The result, which is zero or fits the inline tier.
+    Replaced(Rational),
+    /// The word operand does not fit 64 bits: nothing was done.
+    NotWords,
+}
+
+/// The limb buffers of [`add_big_word_in_place`], reused from call to call on each thread so
+/// that a running sum allocates nothing per addition (buffers above [`SCRATCH_KEPT_LIMBS`]
+/// are released after use).
+#[derive(Default)]
+struct AddScratch {
+    a: Vec<u64>,
+    b: Vec<u64>,
+    out: (Vec<u64>, Vec<u64>),
+    digits: Vec<u32>,
+}
+
+/// The largest scratch buffer kept between calls, in limbs (8 MB).
+const SCRATCH_KEPT_LIMBS: usize = 1 << 20;
+
+thread_local! {
+    static ADD_SCRATCH: std::cell::RefCell<AddScratch> = std::cell::RefCell::new(AddScratch::default());
+}
+
+/// `x + c/d` (`c/d` canonical, `d > 0`) written over `x` itself: [`add_big_word`]'s passes on
+/// the thread's reused limb buffers, the result stored back into `x`'s own allocations through
+/// num-bigint's `assign_from_slice`, so no number is allocated or freed per addition.
+fn add_big_word_in_place(x: &mut BigParts, c: i128, d: i128) -> InPlace {
+    let (Ok(cm), Ok(d)) = (u64::try_from(c.unsigned_abs()), u64::try_from(d)) else {
+        return InPlace::NotWords;
+    };
+    if cm == 0 {
+        return InPlace::Done;
+    }
+    ADD_SCRATCH.with(|cell| {
+        let mut guard = cell.borrow_mut();
+        let s = &mut *guard;
+        let an = x.num.sign() == BigSign::Minus;
+        let n = x
+            .num
+            .magnitude()
+            .iter_u64_digits()
+            .len()
+            .max(x.den.iter_u64_digits().len());
+        bigint::limbs_into(x.num.magnitude(), n, &mut s.a);
+        bigint::limbs_into(&x.den, n + 1, &mut s.b);
+        let g = gcd_u64(d, bigint::rem_1(&s.b, d));
+        let tn = bigint::add_word_pass_into(&mut s.a, an, &mut s.b, (c < 0, cm, d), g, &mut s.out);
+        let (t, den) = (&mut s.out.0, &mut s.out.1);
+        let result = if t.is_empty() {
+            InPlace::Replaced(Rational::ZERO)
+        } else {
+            // As in `add_big_word`: the result is (t/g2) / den/g2, g2 = gcd(t, g).
+            let g2 = if g == 1 {
+                1
+            } else {
+                gcd_u64(g, bigint::rem_1(t, g))
+            };
+            if g2 != 1 {
+                bigint::divexact_1_pair_in_place(t, den, g2);
+            }
+            let sign = if tn { BigSign::Minus } else { BigSign::Plus };
+            if t.len() <= 2 && den.len() <= 2 {
+                // Perhaps inline now.
+                InPlace::Replaced(Rational::from_coprime(
+                    BigInt::from_biguint(sign, bigint::biguint_from_limbs(t)),
+                    bigint::biguint_from_limbs(den),
+                ))
+            } else {
+                bigint::u32_digits_into(t, &mut s.digits);
+                x.num.assign_from_slice(sign, &s.digits);
+                bigint::u32_digits_into(den, &mut s.digits);
+                x.den.assign_from_slice(&s.digits);
+                InPlace::Done
+            }
+        };
+        if s.a.capacity() > SCRATCH_KEPT_LIMBS {
+            *s = AddScratch::default();
+        }
+        result
+    })
+}
+
 /// `x / g`, borrowing `x` when `g` is one.
 fn div_unless_one<'a>(x: &'a BigUint, g: &BigUint) -> Cow<'a, BigUint> {
     if g.is_one() {
@@ -732,8 +833,8 @@ exactcheck_core::ring_ops! {
         x.neg_in_place();
         x
     };
-    Add::add, AddAssign::add_assign: |x, y| x.add_impl(y, false);
-    Sub::sub, SubAssign::sub_assign: |x, y| x.add_impl(y, true);
+    Add::add, AddAssign::add_assign: |x, y| x.add_impl(y, false), owned |x, y| x.add_owned(y, false);
+    Sub::sub, SubAssign::sub_assign: |x, y| x.add_impl(y, true), owned |x, y| x.add_owned(y, true);
     Mul::mul, MulAssign::mul_assign: |x, y| x.mul_impl(y);
     Div::div, DivAssign::div_assign: |x, y| match x.checked_div(y) {
         Ok(q) => q,

@@ -313,3 +313,66 @@ fn inline_arithmetic_at_word_boundaries_matches_num_rational() {
     );
     assert_eq!(q(i64::MIN, 2), Rational::from_integer(i64::MIN / 2));
 }
+
+/// `x += w` and `x -= w` on a big `x` and a word-sized `w` (updated in place on reused buffers)
+/// against the by-reference kernel and num-rational, including results that cancel to zero or
+/// fall back to the inline tier, and a running sum whose operands grow past the buffers' sizes.
+#[test]
+fn in_place_big_plus_word_matches_reference() {
+    let mut st = exactcheck_core::Rng::new(0x1a5e);
+    let words: [(i64, i64); 6] = [
+        (1, 1),
+        (-11, 60),
+        (5, 4096),
+        (i64::MIN + 1, 3),
+        (13, 2_147_483_647),
+        (-1, 9_007_199_254_740_881),
+    ];
+    for limbs in [3usize, 4, 9, 40, 300] {
+        for factor in [1u64, 6, 30, 1 << 20] {
+            let x = Rational::from(random_big(&mut st, limbs, factor));
+            for (n, d) in words {
+                let w = q(n, d);
+                for sub in [false, true] {
+                    let expected = x.add_impl(&w, sub);
+                    let mut got = x.clone();
+                    if sub {
+                        got -= &w;
+                    } else {
+                        got += &w;
+                    }
+                    assert!(got.is_canonical(), "{x} {w} {sub}");
+                    assert_eq!(got, expected, "{x} +- {w}");
+                    let big = x.to_big_rational();
+                    let wb = w.to_big_rational();
+                    assert_eq!(
+                        got.to_big_rational(),
+                        if sub { &big - &wb } else { &big + &wb }
+                    );
+                }
+            }
+        }
+    }
+    // Cancellation to zero and to the inline tier.
+    let big = Rational::from_i128_ratio(i128::MAX, 7).unwrap().square();
+    let w = q(1, 49);
+    let mut s = big.clone();
+    s += &w;
+    s -= &w;
+    assert_eq!(s, big);
+    s -= &big.clone();
+    assert!(s.is_zero());
+    let mut two127 = Rational::from(BigInt::from(1) << 127u32);
+    two127 -= q(1, 1);
+    assert_eq!(two127.inline_parts(), Some((i128::MAX, 1)));
+    // A running sum of word-sized terms, each step against num-rational.
+    let mut acc = Rational::from(random_big(&mut st, 5, 30));
+    let mut reference = acc.to_big_rational();
+    for k in 1..400i64 {
+        let w = q(if k % 3 == 0 { -k } else { 7 * k + 1 }, 1 + k * (k % 17));
+        reference += w.to_big_rational();
+        acc += w;
+        assert!(acc.is_canonical());
+    }
+    assert_eq!(acc.to_big_rational(), reference);
+}

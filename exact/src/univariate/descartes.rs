@@ -217,7 +217,7 @@ fn isolate_square_free(q: &[BigInt], opts: Options) -> Vec<Isolated> {
             s
         }
     })) > 0;
-    let one = positive && q.iter().sum::<BigInt>().is_zero();
+    let one = positive && sign_of_sum(q) == Sign::Zero;
     let neg: Vec<BigInt> = if negative {
         q.iter()
             .enumerate()
@@ -226,7 +226,7 @@ fn isolate_square_free(q: &[BigInt], opts: Options) -> Vec<Isolated> {
     } else {
         Vec::new()
     };
-    let minus_one = negative && neg.iter().sum::<BigInt>().is_zero();
+    let minus_one = negative && sign_of_sum_at(q, true) == Sign::Zero;
     let rev: Vec<BigInt> = if positive {
         q.iter().rev().cloned().collect()
     } else {
@@ -304,6 +304,45 @@ fn isolate_square_free(q: &[BigInt], opts: Options) -> Vec<Isolated> {
     out
 }
 
+/// The sign of `p(1)` (`p(-1)` when `alternate`): the sum of the coefficients (with the odd
+/// ones negated), in `i128` while every coefficient and partial sum fits, else on big integers.
+fn sign_of_sum_at(p: &[BigInt], alternate: bool) -> Sign {
+    let mut acc: Option<i128> = Some(0);
+    for (i, c) in p.iter().enumerate() {
+        let Some(s) = acc else { break };
+        acc = c.to_i128().and_then(|v| {
+            if alternate && i % 2 == 1 {
+                s.checked_sub(v)
+            } else {
+                s.checked_add(v)
+            }
+        });
+    }
+    match acc {
+        Some(s) => match s.cmp(&0) {
+            std::cmp::Ordering::Less => Sign::Negative,
+            std::cmp::Ordering::Equal => Sign::Zero,
+            std::cmp::Ordering::Greater => Sign::Positive,
+        },
+        None => {
+            let mut s = BigInt::zero();
+            for (i, c) in p.iter().enumerate() {
+                if alternate && i % 2 == 1 {
+                    s -= c;
+                } else {
+                    s += c;
+                }
+            }
+            sign_of(&s)
+        }
+    }
+}
+
+/// The sign of `p(1)`, the sum of the coefficients ([`sign_of_sum_at`]).
+fn sign_of_sum(p: &[BigInt]) -> Sign {
+    sign_of_sum_at(p, false)
+}
+
 fn sign_of(x: &BigInt) -> Sign {
     match x.sign() {
         BigSign::Minus => Sign::Negative,
@@ -371,7 +410,8 @@ pub(super) fn integer_real_roots_rational_exact(
         return Ok(Vec::new());
     };
     let roots = isolate_square_free(&q, Options::FAST);
-    let refiner = Refiner::new(&q);
+    // Built on the first root that needs refining (none when every root is exact).
+    let refiner_cell = std::cell::OnceCell::new();
     let mut rationals = RationalRoots::new(&q);
     let l = Rational::from(q[q.len() - 1].clone());
     let width = Rational::ONE / l.mul_ref(&Rational::from_integer(2));
@@ -394,6 +434,7 @@ pub(super) fn integer_real_roots_rational_exact(
         } else {
             Sign::Positive
         };
+        let refiner = refiner_cell.get_or_init(|| Refiner::new(&q));
         let narrow = refiner.refine(ri.lo, ri.hi, s_lo, &width, None);
         if narrow.is_exact() {
             out.push(narrow);
@@ -468,7 +509,8 @@ fn real_roots_to_with(
         return Ok(Vec::new());
     };
     let roots = isolate_square_free(&q, opts);
-    let refiner = Refiner::new(&q);
+    // Built on the first root that needs refining (none when every root is exact).
+    let refiner_cell = std::cell::OnceCell::new();
     // The rational roots found so far divided out: the later candidates are tested against a
     // polynomial of lower degree (its roots are the remaining roots of q, all simple).
     let mut rationals = RationalRoots::new(&q);
@@ -496,6 +538,7 @@ fn real_roots_to_with(
         let estimate = estimate
             .filter(|_| opts.windows)
             .and_then(|e| e.to_rational());
+        let refiner = refiner_cell.get_or_init(|| Refiner::new(&q));
         let r = refiner.refine(ri.lo, ri.hi, s_lo, width, estimate);
         // Isolating intervals may share an end (a subdivision point); the closed refined
         // intervals must not: narrow the left one until its upper end moves (its root is

@@ -125,10 +125,22 @@ impl Limbs {
 
     /// The numbers `b` in a common number of limbs with room for `extra` more bits.
     pub(super) fn from_bigints_with_room(b: &[BigInt], extra: usize) -> Limbs {
+        Limbs::from_bigints_ordered(b, extra, false)
+    }
+
+    /// [`Limbs::from_bigints_with_room`] of `b` in reverse order (the reversal of a
+    /// polynomial), without cloning the numbers.
+    pub(super) fn from_bigints_reversed_with_room(b: &[BigInt], extra: usize) -> Limbs {
+        Limbs::from_bigints_ordered(b, extra, true)
+    }
+
+    fn from_bigints_ordered(b: &[BigInt], extra: usize, reversed: bool) -> Limbs {
         let bits = b.iter().map(|c| c.bits() as usize + 1).max().unwrap_or(1) + extra;
         let w = bits.div_ceil(64).max(1);
         let mut d = vec![0u64; w * b.len()];
-        for (c, x) in b.iter().zip(d.chunks_mut(w)) {
+        let last = b.len().saturating_sub(1);
+        for (i, x) in d.chunks_mut(w).enumerate() {
+            let c = &b[if reversed { last - i } else { i }];
             for (limb, digit) in x.iter_mut().zip(c.magnitude().iter_u64_digits()) {
                 *limb = digit;
             }

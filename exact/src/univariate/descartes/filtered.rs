@@ -38,7 +38,8 @@
 //!   `n(n+1)/2` additions of (value, bound) pairs in a loop without a dependency chain instead
 //!   of `n(n+1)/2` carry chains over the coefficients' limbs and the conversions. Where the shift cancels (the values far below
 //!   `T`, as for Wilkinson's product: `E_0 > 2^-38 M`, which would exhaust the precision a few
-//!   splits down) the root node is made from the exact
+//!   splits down; predicted from the coefficients before the `f64` shift is tried, see
+//!   [`shift_predicted_to_cancel`]) the root node is made from the exact
 //!   shift on [`Limbs`] instead: each `c_k 2^-K` (`K` the largest bit length) from the top 64
 //!   bits of `|c_k|` (truncation: relative error below `2^-63`), rounded to `f64` (`u`), divided
 //!   by the `f64` binomials, so each value has a relative error below `rho = (3n + 8) u` and an
@@ -179,7 +180,11 @@ fn subdivide(p: &[BigInt], pairs: bool, max_depth: u64) -> (Vec<UnitRoot>, Filte
     let binoms = binomials_f64(n);
     // Room for the blocks of a path of depth 7 (grown on demand below).
     let mut blocks: Vec<f64> = Vec::with_capacity(w * 8);
-    let (root, _) = root_f64_coefficients(p, &binoms, &mut blocks);
+    let (root, _) = if shift_predicted_to_cancel(p) {
+        root_from_exact_shift(p, &binoms, &mut blocks)
+    } else {
+        root_f64_coefficients(p, &binoms, &mut blocks)
+    };
     // From the exact shift, the root's signs are exact: no variation, no root; one, with
     // non-zero ends, one root. Otherwise the root node's decisions are the loop's.
     if let Some(v) = root.v {
@@ -402,8 +407,7 @@ struct Root {
 /// on [`Limbs`], for the root's exact Bernstein coefficients.
 fn exact_shifted_reversal(p: &[BigInt]) -> Limbs {
     let n = p.len() - 1;
-    let rev: Vec<BigInt> = p.iter().rev().cloned().collect();
-    let mut shifted = Limbs::from_bigints_with_room(&rev, n + 1);
+    let mut shifted = Limbs::from_bigints_reversed_with_room(p, n + 1);
     shifted.taylor_shift_1();
     shifted
 }
@@ -431,6 +435,42 @@ fn big_leading_bits(x: &BigInt) -> (bool, u64, u64) {
 /// exact shift's bound is about `2^-45` to `2^-47` at degrees 20 to 100): a larger bound would
 /// send its nodes to exact re-anchoring after a few splits.
 const ROOT_ACCEPT: f64 = 1.0 / (1u64 << 38) as f64;
+
+/// Whether the root's `f64` Taylor shift ([`root_f64_coefficients`]) is predicted to cancel
+/// beyond [`ROOT_ACCEPT`], so that the exact shift is taken at once instead of after a wasted
+/// `f64` attempt. The prediction compares a lower bound of the shift's error bound,
+/// `(3n + 8) u sum |p_m|` (the shift of the absolute values at `y = 0`, where the largest
+/// `T / C(n, i)` is at least `T_0`), with `ROOT_ACCEPT` times `max(|p_0|, |p_n|)` as the
+/// estimate of the largest Bernstein coefficient (`|p_0|` is the first one; `|p_n|` stands for
+/// the size of the interior ones), and asks for it only when the coefficients have `n` sign
+/// variations: a polynomial whose roots may all be positive, like a product of linear factors
+/// with roots in the unit interval, whose shift cancels (Wilkinson's product loses 28 bits at
+/// degree 20). Random coefficients have about `n / 2` variations and are never predicted to
+/// cancel. A wrong prediction costs time, not correctness: both root nodes carry a rigorous
+/// bound.
+fn shift_predicted_to_cancel(p: &[BigInt]) -> bool {
+    let n = p.len() - 1;
+    if n < 2 || variations(p) < n {
+        return false;
+    }
+    // Every |p_m| 2^-k (k the largest bit length) from its 64 leading bits.
+    let bits: Vec<(bool, u64, u64)> = p.iter().map(big_leading_bits).collect();
+    let k = bits
+        .iter()
+        .map(|&(_, top, shift)| shift + u64::from(64 - top.leading_zeros()))
+        .max()
+        .unwrap_or(0);
+    let scaled = |(_, top, shift): (bool, u64, u64)| {
+        top as f64
+            * pow2f(
+                i64::try_from(shift).expect("a bit count") - i64::try_from(k).expect("a bit count"),
+            )
+    };
+    let sum: f64 = bits.iter().map(|&b| scaled(b)).sum();
+    let ends = scaled(bits[0]).max(scaled(bits[n]));
+    let u = f64::EPSILON / 2.0;
+    (3 * n + 8) as f64 * u * sum > ROOT_ACCEPT * ends
+}
 
 /// `2^-71`: the absolute error of the root node's values from underflow (module
 /// documentation, "Root node").
@@ -466,8 +506,6 @@ fn root_f64_coefficients(p: &[BigInt], binoms: &[f64], blocks: &mut Vec<f64>) ->
         *g = c / b;
         worst = worst.max(t / b);
     }
-    let lo = sign_of(&p[0]);
-    let hi = sign_of_sum(p);
     let u = f64::EPSILON / 2.0;
     let e = ((3 * n + 8) as f64 * u * worst + ROOT_ABSOLUTE) * SAFETY * SAFETY;
     // Into [1/2, 1) by a power of two (the shifted values reach (n + 1) 2^n, so it may be
@@ -493,6 +531,9 @@ fn root_f64_coefficients(p: &[BigInt], binoms: &[f64], blocks: &mut Vec<f64>) ->
         blocks.truncate(start);
         return root_from_exact_shift(p, binoms, blocks);
     }
+    // The exact end signs only now: p(1) is a big-integer sum when a coefficient exceeds
+    // `i128`, wasted on a rejected shift (whose exact shift gives both signs anyway).
+    let (lo, hi) = (sign_of(&p[0]), super::sign_of_sum(p));
     (
         Root {
             e,
@@ -503,29 +544,6 @@ fn root_f64_coefficients(p: &[BigInt], binoms: &[f64], blocks: &mut Vec<f64>) ->
         },
         t - k,
     )
-}
-
-/// The sign of `p(1)`, the sum of the coefficients: in `i128` when every coefficient fits a
-/// word (at most `2^14` of them), else on big integers.
-fn sign_of_sum(p: &[BigInt]) -> Sign {
-    let words: Option<i128> = p
-        .iter()
-        .map(|c| c.to_i64().map(i128::from))
-        .sum::<Option<i128>>();
-    match words {
-        Some(s) => match s.cmp(&0) {
-            std::cmp::Ordering::Less => Sign::Negative,
-            std::cmp::Ordering::Equal => Sign::Zero,
-            std::cmp::Ordering::Greater => Sign::Positive,
-        },
-        None => {
-            let mut s = BigInt::zero();
-            for c in p {
-                s += c;
-            }
-            sign_of(&s)
-        }
-    }
 }
 
 /// The root node from the exact Taylor shift on [`Limbs`] (for a shift that cancels in `f64`):

@@ -861,3 +861,42 @@ fn word_sized_windows_agree_with_sturm() {
         both(&c, &fine);
     }
 }
+
+proptest::proptest! {
+    /// The signs of `p(1)` and `p(-1)` (in `i128` while they fit, else on `BigInt`s) against
+    /// the `BigInt` sums, with coefficients around the `i128` boundary and sums that cancel.
+    #[test]
+    fn signs_of_sums_match_bigint_sums(
+        coeffs in proptest::collection::vec((proptest::prelude::any::<i64>(), 0u32..130), 1..30),
+        cancel in proptest::prelude::any::<bool>(),
+    ) {
+        let mut p: Vec<BigInt> = coeffs.iter().map(|&(c, s)| BigInt::from(c) << s).collect();
+        if cancel {
+            // Make p(1) = 0 exactly.
+            let s: BigInt = p.iter().sum();
+            p.push(-s);
+        }
+        let plus: BigInt = p.iter().sum();
+        let minus: BigInt = p
+            .iter()
+            .enumerate()
+            .map(|(i, c)| if i % 2 == 1 { -c } else { c.clone() })
+            .sum();
+        proptest::prop_assert_eq!(sign_of_sum(&p), sign_of(&plus));
+        proptest::prop_assert_eq!(sign_of_sum_at(&p, true), sign_of(&minus));
+    }
+
+    /// The reversed conversion to limbs equals the conversion of the reversed numbers.
+    #[test]
+    fn reversed_limbs_match_limbs_of_the_reversal(
+        coeffs in proptest::collection::vec((proptest::prelude::any::<i64>(), 0u32..200), 1..20),
+        extra in 0usize..70,
+    ) {
+        let p: Vec<BigInt> = coeffs.iter().map(|&(c, s)| BigInt::from(c) << s).collect();
+        let rev: Vec<BigInt> = p.iter().rev().cloned().collect();
+        proptest::prop_assert_eq!(
+            Limbs::from_bigints_reversed_with_room(&p, extra).to_bigints(),
+            Limbs::from_bigints_with_room(&rev, extra).to_bigints()
+        );
+    }
+}

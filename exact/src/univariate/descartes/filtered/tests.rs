@@ -622,3 +622,49 @@ fn unit_roots_come_out_in_increasing_order() {
         }
     }
 }
+
+/// Whether the root's `f64` shift of `p` is accepted (not replaced by the exact shift).
+fn f64_shift_accepted(p: &[BigInt]) -> bool {
+    let n = p.len() - 1;
+    let mut g = Vec::new();
+    let (root, _) = root_f64_coefficients(p, &binomials_f64(n), &mut g);
+    root.shifted.is_none()
+}
+
+#[test]
+fn cancellation_is_predicted_where_the_f64_shift_is_rejected() {
+    // The benchmark instances: Wilkinson's two positive unit problems cancel, every unit
+    // problem of the random and Mignotte polynomials is accepted.
+    for (family, degree, _) in bench_instances::COMPARISON {
+        let problems = unit_problems(&family.polynomial(degree));
+        for (i, p) in problems.iter().enumerate() {
+            if variations(p) == 0 {
+                continue;
+            }
+            let wilkinson = family == bench_instances::Family::Wilkinson;
+            assert_eq!(
+                shift_predicted_to_cancel(p),
+                wilkinson && i < 2,
+                "{family:?} {degree}, unit problem {i}"
+            );
+            assert_eq!(f64_shift_accepted(p), !(wilkinson && i < 2));
+        }
+    }
+    // Products of linear factors with roots in (0, 1): n sign variations, and from about
+    // degree 30 a cancellation the prediction sees (`sum |p_m| / |p_n|` is the product of the
+    // `1 + r_j`, about `2^(0.56 n)`; the threshold is `2^15 / (3n + 8)`).
+    let mut rng = Rng::new(33);
+    for n in [31usize, 45, 60] {
+        let roots: Vec<(i64, i64)> = (0..n).map(|_| (1 + rng.below(59) as i64, 60)).collect();
+        let p = product(&small(&roots), &[1]);
+        assert!(shift_predicted_to_cancel(&p), "degree {n}");
+        assert!(!f64_shift_accepted(&p), "degree {n}");
+    }
+    // Random word coefficients (about n / 2 sign variations) are never predicted to cancel.
+    for n in [2usize, 5, 20, 50, 100, 200, 400] {
+        let p: Vec<BigInt> = (0..=n)
+            .map(|_| BigInt::from(rng.next_u64() as i64))
+            .collect();
+        assert!(!shift_predicted_to_cancel(&p), "degree {n}");
+    }
+}
