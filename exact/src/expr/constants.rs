@@ -259,12 +259,17 @@ pub fn upoly_expr(p: &UPoly, name: &str) -> Expr {
 
 /// Whether `e` has a constant that `C` cannot hold but a real algebraic number can: a leaf
 /// (`cos(pi/5)`, `sqrt(2 + sqrt(2))`) or the multiple of pi of an angle with variables
-/// (`sin(x + pi/5)`) that `C` refuses and [`Algebraic`] evaluates.
+/// (`sin(x + pi/5)`) that `C` refuses and [`Algebraic`] evaluates, or refuses only by a limit.
 pub fn needs_algebraic<C: Coefficient>(e: &Expr) -> bool {
     let mut found = false;
     let _ = walk(e, &mut |x: &Expr| {
-        if !found && x.eval_constant::<C>().is_err() && x.eval_constant::<Algebraic>().is_ok() {
-            found = true;
+        // A constant that the algebraic numbers refuse by a limit (`cos(2*pi/1009)`) goes the
+        // same way, so that the refusal names the limit.
+        if !found && x.eval_constant::<C>().is_err() {
+            found = match x.eval_constant::<Algebraic>() {
+                Ok(_) => true,
+                Err(e) => e.limit().is_some(),
+            };
         }
         // Keep the leaf: only the answer matters.
         Ok(Some(x.clone()))
