@@ -397,7 +397,7 @@ impl<'a> Phrasing<'a> {
                 let at = if at.is_empty() {
                     String::new()
                 } else {
-                    format!("at {}{rel} ", at.join(", "))
+                    format!("at {}{rel}: ", at.join(", "))
                 };
                 format!(
                     "{}{at}{} = {}; {}{} reduces{modulo} to {}, not zero",
@@ -461,7 +461,7 @@ impl<'a> Phrasing<'a> {
                 let at_rel = if at.is_empty() {
                     String::new()
                 } else {
-                    format!("at {at}{rel} ")
+                    format!("at {at}{rel}: ")
                 };
                 match self.value_in_pi(spec, k, point) {
                     Some(in_pi) => format!(
@@ -791,7 +791,7 @@ mod tests {
         let p = Phrasing::new(&s.vars);
         assert_eq!(
             p.evidence(&s, &r),
-            "at a = 0, b = 1 LHS - RHS = 1; LHS - RHS reduces to b^3, so LHS = RHS + (b^3)"
+            "at a = 0, b = 1: LHS - RHS = 1; LHS - RHS reduces to b^3, so LHS = RHS + (b^3)"
         );
         assert_eq!(p.verdict(&r), Verdict::Fails);
         assert_eq!(p.method::<Rational>(), "symbolic expansion over Q[a,b]");
@@ -805,7 +805,7 @@ mod tests {
         q.residuals = vec!["the residual".into()];
         assert_eq!(
             q.evidence(&named, &rn),
-            "at b = 1 the residual = 1; it reduces to b^3"
+            "at b = 1: the residual = 1; it reduces to b^3"
         );
         let json = p.json(&s, &r, Shape::Scalar);
         assert_eq!(json["verdict"], "fails");

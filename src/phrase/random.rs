@@ -259,7 +259,7 @@ pub fn phrase_random(
             "fails",
             None,
             format!(
-                "at {} LHS - RHS = {}, not zero: evaluated exactly after LHS - RHS was non-zero at a random point modulo p{notes}",
+                "at {}: LHS - RHS = {}, not zero: evaluated exactly after LHS - RHS was non-zero at a random point modulo p{notes}",
                 exact.point.join(", "),
                 exact.value
             ),

@@ -796,7 +796,7 @@ fn algebraic_constants_next_to_variables_are_decided_as_prove_decides_them() {
     let heptagon = row("k.heptagon");
     let evidence = heptagon["evidence"].as_str().unwrap();
     assert!(
-        evidence.starts_with("at x = 1 LHS - RHS = Root(8*z^3 + 16*z^2 + 6*z - 1, 1/16, 1/8)"),
+        evidence.starts_with("at x = 1: LHS - RHS = Root(8*z^3 + 16*z^2 + 6*z - 1, 1/16, 1/8)"),
         "{evidence}"
     );
     let prove = exactcheck(&["prove", "x*cos(2*pi/7)", "x/2"]);
@@ -811,7 +811,7 @@ fn algebraic_constants_next_to_variables_are_decided_as_prove_decides_them() {
     // A vector side fails in the component that differs, with a radical value.
     let vector = row("k.vector")["evidence"].as_str().unwrap().to_string();
     assert!(
-        vector.starts_with("in component 2 (y): at x = 0, y = 1 LHS - RHS = (-1 + sqrt(5))/4"),
+        vector.starts_with("in component 2 (y): at x = 0, y = 1: LHS - RHS = (-1 + sqrt(5))/4"),
         "{vector}"
     );
     // The limit's one line, naming the constants.

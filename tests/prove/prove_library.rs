@@ -107,7 +107,7 @@ fn a_failing_component_is_named_with_its_counter_example() {
     ]);
     assert_eq!(code, 1, "{out}{err}");
     assert!(
-        out.starts_with("fails: in component 2 (y): at t = 1/2 LHS - RHS = -1"),
+        out.starts_with("fails: in component 2 (y): at t = 1/2: LHS - RHS = -1"),
         "{out}"
     );
     let (code, out, _) = run(&["prove", "[[a, b], [c, d]]", "[[a, b], [c, d + 1]]"]);

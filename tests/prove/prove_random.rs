@@ -53,7 +53,7 @@ fn true_identities_with_angles_hold() {
 #[test]
 fn false_identities_fail_with_an_exact_counter_example() {
     let out = fails("(x + sqrt(2))^2", "x^2 + 2*x*sqrt(3) + 2");
-    assert!(out.contains("at x = 1 LHS - RHS = "), "{out}");
+    assert!(out.contains("at x = 1: LHS - RHS = "), "{out}");
     assert!(out.contains("sqrt(2)") && out.contains("sqrt(3)"), "{out}");
     let out = fails("cos(x + y)", "cos(x)*cos(y) + sin(x)*sin(y)");
     assert!(out.contains("x = angle with cos x = "), "{out}");
@@ -155,7 +155,7 @@ random = 10
     assert_eq!(code, 0, "{out}{err}");
     assert!(out.contains("3 claims, 3 as expected"), "{out}");
     assert!(
-        out.contains("at x = 1 LHS - RHS = 2*sqrt(2) - 2*sqrt(3)"),
+        out.contains("at x = 1: LHS - RHS = 2*sqrt(2) - 2*sqrt(3)"),
         "{out}"
     );
 }

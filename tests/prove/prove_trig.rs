@@ -152,7 +152,7 @@ fn algebraic_constants_next_to_variables() {
     let (code, out, _) = run(&["prove", "x*cos(2*pi/7)", "x/2"]);
     assert_eq!(code, 1, "{out}");
     assert!(
-        out.starts_with("fails: at x = 1 LHS - RHS = Root("),
+        out.starts_with("fails: at x = 1: LHS - RHS = Root("),
         "{out}"
     );
     fails("sin(x + pi/7)", "sin(x)*cos(pi/7) + cos(x)*sin(pi/7) + 1/5");

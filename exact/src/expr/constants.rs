@@ -259,16 +259,20 @@ pub fn upoly_expr(p: &UPoly, name: &str) -> Expr {
 
 /// Whether `e` has a constant that `C` cannot hold but a real algebraic number can: a leaf
 /// (`cos(pi/5)`, `sqrt(2 + sqrt(2))`) or the multiple of pi of an angle with variables
-/// (`sin(x + pi/5)`) that `C` refuses and [`Algebraic`] evaluates, or refuses only by a limit.
+/// (`sin(x + pi/5)`) that `C` refuses and [`Algebraic`] evaluates, or (an angle's cosine, sine or tangent) refuses only by a limit.
 pub fn needs_algebraic<C: Coefficient>(e: &Expr) -> bool {
     let mut found = false;
     let _ = walk(e, &mut |x: &Expr| {
-        // A constant that the algebraic numbers refuse by a limit (`cos(2*pi/1009)`) goes the
-        // same way, so that the refusal names the limit.
+        // An angle's cosine that the algebraic numbers refuse by a limit (`cos(2*pi/1009)`)
+        // goes the same way, so that the refusal names the limit rather than `C`'s table of
+        // angles; a square root past the limit stays with `C`, which may still denest it.
         if !found && x.eval_constant::<C>().is_err() {
             found = match x.eval_constant::<Algebraic>() {
                 Ok(_) => true,
-                Err(e) => e.limit().is_some(),
+                Err(e) => {
+                    e.limit().is_some()
+                        && matches!(&x.kind, ExprKind::Call(name, _) if Trig::from_name(name).is_some())
+                }
             };
         }
         // Keep the leaf: only the answer matters.
