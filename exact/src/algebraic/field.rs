@@ -44,7 +44,7 @@ pub struct NumberField {
     modulus: UPoly,
     /// Values of the field under the names the user wrote for them, in which elements are
     /// printed ([`NumberField::named`]).
-    naming: Option<Naming>,
+    pub(super) naming: Option<Naming>,
 }
 
 /// Why no primitive element was built.
@@ -198,7 +198,10 @@ impl NumberField {
     /// denominator divisible by the prime).
     fn powers_independent_mod_p(&self, p: &UPoly, count: usize) -> bool {
         let image = |q: &UPoly| -> Option<Vec<ModP>> {
-            q.coeffs().iter().map(|c| ModP::from_rational(c).ok()).collect()
+            q.coeffs()
+                .iter()
+                .map(|c| ModP::from_rational(c).ok())
+                .collect()
         };
         let (Some(m), Some(a)) = (image(&self.modulus), image(p)) else {
             return false;

@@ -221,3 +221,199 @@ impl Naming {
         self.basis.iter().map(|e| self.monomial(e)).collect()
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::algebraic::{primitive_element, Algebraic, FieldElement};
+    use proptest::prelude::*;
+    use std::sync::Arc;
+
+    /// The expression parser's value of a constant text: the independent path every printed
+    /// element is checked against.
+    fn alg(text: &str) -> Algebraic {
+        text.parse()
+            .unwrap_or_else(|e| panic!("{text} does not read back: {e}"))
+    }
+
+    /// The field of the written values `texts`, named by all of them, and each value's
+    /// polynomial in the generator.
+    fn named_field(texts: &[&str]) -> (Arc<NumberField>, Vec<UPoly>) {
+        let numbers: Vec<Algebraic> = texts.iter().map(|t| alg(t)).collect();
+        let pe = primitive_element(&numbers).unwrap();
+        let names: Vec<(&str, &UPoly)> = texts.iter().copied().zip(&pe.polys).collect();
+        let field = pe
+            .field
+            .clone()
+            .with_names(&names)
+            .expect("the values span");
+        (Arc::new(field), pe.polys)
+    }
+
+    fn basis(field: &NumberField) -> Vec<String> {
+        field.naming.as_ref().unwrap().basis_texts()
+    }
+
+    /// The product of the values `polys[j]` raised to `exps[j]`, in the field.
+    fn monomial(field: &NumberField, polys: &[UPoly], exps: &[u32]) -> UPoly {
+        let mut acc = UPoly::one();
+        for (p, &e) in polys.iter().zip(exps) {
+            for _ in 0..e {
+                acc = field.mul(&acc, p);
+            }
+        }
+        acc
+    }
+
+    /// `named(p)` reads back as the value of `p`.
+    fn reads_back(field: &NumberField, p: &UPoly) -> Result<String, TestCaseError> {
+        let text = field.named(p).unwrap();
+        prop_assert_eq!(alg(&text), field.value(p), "{}", text);
+        Ok(text)
+    }
+
+    #[test]
+    fn bases_of_dependent_and_independent_values() {
+        let (k, _) = named_field(&["sqrt(2)", "sqrt(3)"]);
+        assert_eq!(basis(&k), ["", "sqrt(2)", "sqrt(3)", "sqrt(2)*sqrt(3)"]);
+        // sqrt(8) = 2 sqrt(2) and every product with it are dropped.
+        let (k, _) = named_field(&["sqrt(2)", "sqrt(8)"]);
+        assert_eq!(basis(&k), ["", "sqrt(2)"]);
+        let (k, _) = named_field(&["sqrt(2)", "sqrt(8)", "sqrt(3)"]);
+        assert_eq!(basis(&k), ["", "sqrt(2)", "sqrt(3)", "sqrt(2)*sqrt(3)"]);
+        let (k, _) = named_field(&["sqrt(2)", "sqrt(3)", "sqrt(6)"]);
+        assert_eq!(basis(&k), ["", "sqrt(2)", "sqrt(3)", "sqrt(6)"]);
+        // cos(pi/8) alone generates Q(sqrt 2, cos(pi/8)): the basis is its powers.
+        let (k, _) = named_field(&["sqrt(2)", "cos(pi/8)"]);
+        assert_eq!(basis(&k), ["", "sqrt(2)", "cos(pi/8)", "sqrt(2)*cos(pi/8)"]);
+        let (k, _) = named_field(&["cos(pi/8)", "cos(2*pi/7)"]);
+        assert_eq!(k.degree(), 12);
+        assert_eq!(
+            basis(&k),
+            [
+                "",
+                "cos(pi/8)",
+                "cos(2*pi/7)",
+                "cos(pi/8)^2",
+                "cos(pi/8)*cos(2*pi/7)",
+                "cos(2*pi/7)^2",
+                "cos(pi/8)^3",
+                "cos(pi/8)^2*cos(2*pi/7)",
+                "cos(pi/8)*cos(2*pi/7)^2",
+                "cos(pi/8)^3*cos(2*pi/7)",
+                "cos(pi/8)^2*cos(2*pi/7)^2",
+                "cos(pi/8)^3*cos(2*pi/7)^2",
+            ]
+        );
+    }
+
+    #[test]
+    fn values_that_do_not_generate_the_field_give_no_names() {
+        let pe = primitive_element(&[alg("sqrt(2)"), alg("sqrt(3)")]).unwrap();
+        let k = pe.field.clone();
+        assert!(k.clone().with_names(&[("sqrt(2)", &pe.polys[0])]).is_none());
+        let six = k.mul(&pe.polys[0], &pe.polys[1]);
+        assert!(k.clone().with_names(&[("sqrt(6)", &six)]).is_none());
+        assert!(k.clone().with_names(&[]).is_none());
+        // sqrt(6) with sqrt(2) does generate it: sqrt(3) = sqrt(6)*sqrt(2)/2.
+        let k = k.with_names(&[("sqrt(2)", &pe.polys[0]), ("sqrt(6)", &six)]);
+        let k = k.expect("sqrt(2) and sqrt(6) generate Q(sqrt 2, sqrt 3)");
+        assert_eq!(k.named(&pe.polys[1]).unwrap(), "1/2*sqrt(2)*sqrt(6)");
+    }
+
+    #[test]
+    fn elements_print_with_signs_products_and_powers() {
+        let (k, g) = named_field(&["cos(pi/8)", "cos(2*pi/7)"]);
+        let (c8, c7) = (&g[0], &g[1]);
+        let one = UPoly::one();
+        let e = k
+            .mul(c8, c7)
+            .sub_ref(&(one.clone() * &Rational::from_integer(4)));
+        assert_eq!(k.named(&e).unwrap(), "-4 + cos(pi/8)*cos(2*pi/7)");
+        let sq = k.mul(c7, c7).neg_ref();
+        assert_eq!(k.named(&sq).unwrap(), "-cos(2*pi/7)^2");
+        let m = monomial(&k, &g, &[3, 2]) * &Rational::new(-3, 7).unwrap();
+        assert_eq!(k.named(&m).unwrap(), "-3/7*cos(pi/8)^3*cos(2*pi/7)^2");
+        assert_eq!(k.named(&UPoly::zero()).unwrap(), "0");
+        assert_eq!(k.named(&one).unwrap(), "1");
+        // cos(pi/8)^4 is no basis monomial: 4 c^4 = 4 c^2 - 1/2.
+        let c4 = monomial(&k, &g, &[4, 0]);
+        assert_eq!(k.named(&c4).unwrap(), "-1/8 + cos(pi/8)^2");
+        // The element's printer prefers a radical form: 4 cos(pi/8)^2 - 2 = sqrt(2), then
+        // names, and names are never Root(...).
+        let s2 = FieldElement::new(&k, &monomial(&k, &g, &[2, 0])) * FieldElement::from_i64(4)
+            - FieldElement::from_i64(2);
+        assert_eq!(s2.to_string(), "sqrt(2)");
+        assert_eq!(
+            FieldElement::new(&k, &e).to_string(),
+            "-4 + cos(pi/8)*cos(2*pi/7)"
+        );
+        for p in [e, sq, m, c4] {
+            reads_back(&k, &p).unwrap();
+        }
+    }
+
+    #[test]
+    fn elements_of_quartic_fields_print_as_radicals_or_in_names() {
+        let (k, g) = named_field(&["sqrt(2)", "sqrt(3)"]);
+        let el = |p: &UPoly| FieldElement::new(&k, p).to_string();
+        let one = UPoly::one();
+        let six = k.mul(&g[0], &g[1]);
+        // Quadratic and even quartic values keep their radical forms.
+        assert_eq!(el(&one.add_ref(&six)), "1 + sqrt(6)");
+        assert_eq!(el(&g[0].add_ref(&g[1])), "sqrt(2) + sqrt(3)");
+        // Others print in the names.
+        assert_eq!(
+            el(&one.add_ref(&g[0]).add_ref(&g[1])),
+            "1 + sqrt(2) + sqrt(3)"
+        );
+        let x = g[0].add_ref(&six) * &Rational::new(2, 3).unwrap();
+        assert_eq!(
+            el(&one.add_ref(&x)),
+            "1 + 2/3*sqrt(2) + 2/3*sqrt(2)*sqrt(3)"
+        );
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(24))]
+
+        /// Random elements of quartic fields named by dependent and independent values.
+        #[test]
+        fn printed_elements_read_back_in_quartic_fields(
+            which in 0usize..3,
+            c in proptest::collection::vec(-6i64..7, 4),
+            d in 1i64..5,
+        ) {
+            let texts: &[&str] = match which {
+                0 => &["sqrt(2)", "sqrt(3)"],
+                1 => &["sqrt(2)", "sqrt(8)", "sqrt(3)"],
+                _ => &["sqrt(2)", "sqrt(3)", "sqrt(6)"],
+            };
+            let (k, _) = named_field(texts);
+            let coeffs = c.iter().map(|&x| Rational::new(x, d).unwrap()).collect();
+            let p = UPoly::from_coeffs(coeffs);
+            reads_back(&k, &p)?;
+        }
+    }
+
+    proptest! {
+        // Reading a text back sums numbers of degree 12 by resultants: a few cases.
+        #![proptest_config(ProptestConfig::with_cases(4))]
+
+        /// Random sparse elements of the degree-12 field of cos(pi/8) and cos(2 pi/7): two
+        /// products of powers of the values (the exponents may pass the basis), plus a rational.
+        #[test]
+        fn printed_elements_read_back_in_a_field_of_degree_twelve(
+            a in -5i64..6, b in -5i64..6, c in -5i64..6, d in 1i64..4,
+            e in proptest::collection::vec(0u32..5, 4),
+        ) {
+            let (k, g) = named_field(&["cos(pi/8)", "cos(2*pi/7)"]);
+            let q = |x: i64| Rational::new(x, d).unwrap();
+            let p = UPoly::constant(q(a))
+                .add_ref(&(monomial(&k, &g, &e[..2]) * &q(b)))
+                .add_ref(&(monomial(&k, &g, &e[2..]) * &q(c)));
+            let p = k.reduce(&p);
+            reads_back(&k, &p)?;
+        }
+    }
+}
