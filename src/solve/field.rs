@@ -142,4 +142,19 @@ mod tests {
         assert!(e.contains("not among"), "{e}");
         assert!(current_element(&alg("sqrt(2)")).is_err());
     }
+
+    #[test]
+    fn values_no_one_of_which_generates_the_field_name_it_together() {
+        let names = ["cos(pi/8)".to_string(), "cos(2*pi/7)".to_string()];
+        let values = [alg("cos(pi/8)"), alg("cos(2*pi/7)")];
+        let pf = Arc::new(ProblemField::build(&values, &names, &[]).expect("a field"));
+        let c8 = read_in(&pf, || current_element(&values[0])).unwrap();
+        let c7 = read_in(&pf, || current_element(&values[1])).unwrap();
+        assert_eq!(c8.field().map(|f| f.degree()), Some(12));
+        assert_eq!((c8 * &c7).to_string(), "cos(pi/8)*cos(2*pi/7)");
+        // A constant a kind adds that the written values do not generate: roots, as before.
+        let pf = ProblemField::build(&values[1..], &names[1..], &[alg("sqrt(3)")]).unwrap();
+        let c7 = pf.element(&values[1]).unwrap();
+        assert!(c7.to_string().starts_with("Root("), "{c7}");
+    }
 }

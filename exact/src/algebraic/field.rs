@@ -547,6 +547,34 @@ mod tests {
         assert_eq!(as_factor("(1)+(2)"), "((1)+(2))");
     }
 
+    /// Minimal polynomials of elements by linear algebra, against the exact values.
+    #[test]
+    fn minimal_polynomials_of_elements() {
+        let pe = primitive_element(&[alg("cos(pi/8)"), alg("cos(2*pi/7)")]).unwrap();
+        let k = &pe.field;
+        let (c8, c7) = (&pe.polys[0], &pe.polys[1]);
+        // sqrt(2) = 4 c8^2 - 2: x^2 - 2.
+        let s2 =
+            k.mul(c8, c8) * &Rational::from_integer(4) - UPoly::constant(Rational::from_integer(2));
+        assert_eq!(
+            k.minimal_polynomial_of(&s2, 4),
+            Some(UPoly::from_i64_coeffs(&[-2, 0, 1]))
+        );
+        // cos(2 pi/7): 8x^3 + 4x^2 - 4x - 1, monic.
+        let m7 = k.minimal_polynomial_of(c7, 4).unwrap();
+        assert_eq!(
+            m7 * &Rational::from_integer(8),
+            UPoly::from_i64_coeffs(&[-1, -4, 4, 8])
+        );
+        // c8 + c7 has degree 12: past 4 (certified modulo the prime), found with the cap 12.
+        let sum = c8.add_ref(c7);
+        assert_eq!(k.minimal_polynomial_of(&sum, 4), None);
+        let m = k.minimal_polynomial_of(&sum, 12).unwrap();
+        assert_eq!(m.degree(), 12);
+        assert_eq!(k.value(&sum), alg("cos(pi/8) + cos(2*pi/7)"));
+        assert_eq!(k.value(&sum).defining_polynomial(), &m.primitive_part());
+    }
+
     #[test]
     fn the_degree_limit_holds() {
         let numbers = [
