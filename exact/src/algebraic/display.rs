@@ -109,7 +109,7 @@ impl Algebraic {
     /// (`sqrt(5 - 2*sqrt(6)) = -sqrt(2) + sqrt(3)`).
     fn nested_form(&self) -> Option<String> {
         let f = &self.poly;
-        if f.degree() != 4 || !f.coeff(1).is_zero() || !f.coeff(3).is_zero() {
+        if !is_even_quartic(f) {
             return None;
         }
         let g = UPoly::from_coeffs(vec![f.coeff(0), f.coeff(2), f.coeff(4)]);
@@ -178,9 +178,23 @@ impl Algebraic {
     }
 }
 
+/// Whether an irrational number with minimal polynomial `f` may print as a radical
+/// ([`Algebraic::radical_form`]): `f` is quadratic, or an even quartic. For any other `f` the
+/// radical form is `None`, so a printer that has another form to offer need not build the
+/// number at all.
+pub(super) fn may_print_as_radical(f: &UPoly) -> bool {
+    f.degree() == 2 || is_even_quartic(f)
+}
+
+/// Whether `f` is `g(x^2)` with `g` quadratic.
+fn is_even_quartic(f: &UPoly) -> bool {
+    f.degree() == 4 && f.coeff(1).is_zero() && f.coeff(3).is_zero()
+}
+
 impl Algebraic {
     /// The number as a rational or a radical when the display finds one (the quadratic and
-    /// even-quartic forms above), `None` where it would print `Root(...)`.
+    /// even-quartic forms above), `None` where it would print `Root(...)`: always `None` for an
+    /// irrational number whose polynomial fails [`may_print_as_radical`].
     pub fn radical_form(&self) -> Option<String> {
         if let Some(q) = self.to_rational() {
             return Some(q.to_string());

@@ -24,14 +24,18 @@
 //!   certified primitive-element step (the generator stays `theta` only when the root is a
 //!   polynomial in it, with a linear gcd as certificate).
 //! * Printing: the value as an [`Algebraic`] number where its display finds radicals, computed
-//!   exactly by [`NumberField::value`]; otherwise a polynomial in the generator the user named
-//!   when the field has one ([`NumberField::with_name`]: `1/2 + 3/4*cos(pi/8)`), and
-//!   `Root(minimal polynomial, isolating interval)` only when no name exists.
+//!   exactly by [`NumberField::value`]; otherwise a polynomial in the values the user wrote
+//!   when the field has names ([`NumberField::with_names`]: `1/2 + 3/4*cos(pi/8)`,
+//!   `sqrt(2)*cos(2*pi/7)`), and `Root(minimal polynomial, isolating interval)` only when no
+//!   names exist. The element's minimal polynomial, found by linear algebra in the field,
+//!   decides whether a radical form is possible at all, so a value printed in names is never
+//!   isolated as a root.
 //!
 //! Hand-written for the same reason as the rest of this module: no crate of the dependency set
 //! has number fields.
 
 use super::arith::{iv_add, iv_mul, Iv};
+use super::display::may_print_as_radical;
 use super::{primitive_element, Algebraic, NumberField};
 use crate::univariate::UPoly;
 use crate::Rational;
@@ -350,19 +354,28 @@ impl From<Rational> for FieldElement {
 
 impl fmt::Display for FieldElement {
     /// The value as an [`Algebraic`] number: a rational, a radical where the display of
-    /// [`Algebraic`] finds one, else a polynomial in the field's named generator when it has
-    /// one ([`NumberField::named`]: `1/2 + 3/4*cos(pi/8)`), else `Root(f, lo, hi) ≈ decimal`.
+    /// [`Algebraic`] finds one, else a polynomial in the field's named numbers when it has
+    /// them ([`NumberField::named`]: `1/2 + 3/4*cos(pi/8)`), else `Root(f, lo, hi) ≈ decimal`.
+    ///
+    /// Whether a radical form is possible is decided first, by the element's minimal polynomial
+    /// when its degree is at most 4 ([`NumberField::minimal_polynomial_of`], linear algebra);
+    /// the number itself (a characteristic polynomial and a root isolation) is built only when
+    /// that polynomial may give a radical, or when no name is there to print in.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        if let Some(q) = self.to_rational() {
-            return write!(f, "{q}");
+        let (Some(field), None) = (&self.field, self.to_rational()) else {
+            return write!(f, "{}", self.poly.coeff(0));
+        };
+        if let Some(minimal) = field
+            .minimal_polynomial_of(&self.poly, 4)
+            .filter(may_print_as_radical)
+        {
+            if let Some(text) = field.value_with(&self.poly, &minimal).radical_form() {
+                return f.write_str(&text);
+            }
         }
-        let value = self.to_algebraic();
-        if let Some(text) = value.radical_form() {
-            return f.write_str(&text);
-        }
-        match self.field.as_ref().and_then(|k| k.named(&self.poly)) {
+        match field.named(&self.poly) {
             Some(text) => f.write_str(&text),
-            None => write!(f, "{value}"),
+            None => write!(f, "{}", field.value(&self.poly)),
         }
     }
 }

@@ -26,7 +26,9 @@
 //! fields, and the arithmetic is a few lines over the workspace's univariate polynomials.
 
 use super::arith::{iv_add, iv_mul, Iv};
+use super::names::Naming;
 use super::Algebraic;
+use crate::modp::ModP;
 use crate::univariate::UPoly;
 use crate::Rational;
 use exactcheck_core::limits::{self, LimitError};
@@ -40,49 +42,9 @@ pub struct NumberField {
     generator: Algebraic,
     /// Its minimal polynomial, monic.
     modulus: UPoly,
-    /// A number of the field that generates it, with the name the user wrote for it, in which
-    /// elements are printed ([`NumberField::named`]).
-    name: Option<GeneratorName>,
-}
-
-/// A generator `a = p(theta)` of the field under the name the user wrote for it (`cos(pi/8)`).
-#[derive(Clone, Debug)]
-struct GeneratorName {
-    /// The name, parenthesized unless it is a number or a call (`cos(pi/8)`, `sqrt(2)`).
-    text: String,
-    /// Column `j` holds the coefficients in `theta` of `a^j`, `j < n`: invertible, as `a`
-    /// generates the field.
-    powers: Matrix<Rational>,
-}
-
-/// `text` as a factor of a product: itself when it is a name, a number or one call
-/// (`cos(pi/8)`), else in parentheses (`(1 + sqrt(2))`).
-fn as_factor(text: &str) -> String {
-    let t = text.trim();
-    let word = |s: &str| {
-        !s.is_empty()
-            && s.chars()
-                .all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '.')
-    };
-    let call = t.find('(').is_some_and(|open| {
-        word(&t[..open]) && t.ends_with(')') && {
-            // The parenthesis opened after the name closes at the end.
-            let mut depth = 0i32;
-            t[open..].char_indices().all(|(i, c)| {
-                match c {
-                    '(' => depth += 1,
-                    ')' => depth -= 1,
-                    _ => {}
-                }
-                depth > 0 || open + i == t.len() - 1
-            })
-        }
-    });
-    if word(t) || call {
-        t.to_string()
-    } else {
-        format!("({t})")
-    }
+    /// Values of the field under the names the user wrote for them, in which elements are
+    /// printed ([`NumberField::named`]).
+    pub(super) naming: Option<Naming>,
 }
 
 /// Why no primitive element was built.
@@ -112,69 +74,41 @@ impl NumberField {
         Ok(NumberField {
             generator: theta,
             modulus,
-            name: None,
+            naming: None,
         })
     }
 
     /// The field with its elements printed as polynomials in the number `a = p(theta)` under
     /// the name `text` the user wrote for it ([`NumberField::named`]); `None` when `a` does not
     /// generate the field (its powers below the degree are linearly dependent).
-    pub fn with_name(mut self, text: &str, p: &UPoly) -> Option<NumberField> {
-        let n = self.degree();
-        if n < 2 {
-            return None;
-        }
-        let mut powers = Matrix::zeros(n, n);
-        let mut power = UPoly::one();
-        for j in 0..n {
-            for i in 0..n {
-                powers.set(i, j, power.coeff(i));
-            }
-            power = self.mul(&power, p);
-        }
-        if powers.rank() < n {
-            return None;
-        }
-        self.name = Some(GeneratorName {
-            text: as_factor(text),
-            powers,
-        });
+    pub fn with_name(self, text: &str, p: &UPoly) -> Option<NumberField> {
+        self.with_names(&[(text, p)])
+    }
+
+    /// The field with its elements printed as polynomials in several numbers `g_j = p_j(theta)`
+    /// under the names the user wrote for them (`(text, p_j)`, in the order written): in a
+    /// basis of the field made of monomials in the `g_j`, chosen greedily in graded order
+    /// (`1, sqrt(2), sqrt(3), sqrt(2)*sqrt(3)`). `None` when the monomials do not span the
+    /// field (a number needed to generate it is not among the `g_j`). With one number this is
+    /// [`NumberField::with_name`].
+    pub fn with_names(mut self, names: &[(&str, &UPoly)]) -> Option<NumberField> {
+        self.naming = Some(Naming::new(&self, names)?);
         Some(self)
     }
 
-    /// The element `p(theta)` as a polynomial in the named generator
-    /// ([`NumberField::with_name`]), `1/2 + 3/4*cos(pi/8) - cos(pi/8)^3`, in the expression
-    /// syntax (it reads back as the same number); `None` when the field has no name.
+    /// The element `p(theta)` as a polynomial in the named numbers
+    /// ([`NumberField::with_names`]), `1/2 + 3/4*cos(pi/8) - cos(pi/8)^3`, in the expression
+    /// syntax (it reads back as the same number); `None` when the field has no names.
     pub fn named(&self, p: &UPoly) -> Option<String> {
-        let name = self.name.as_ref()?;
+        let naming = self.naming.as_ref()?;
         let p = self.reduce(p);
         let c: Vec<Rational> = (0..self.degree()).map(|i| p.coeff(i)).collect();
-        let d = name.powers.solve(&c).ok()??;
-        let mut out = String::new();
-        for (j, dj) in d.iter().enumerate() {
-            if dj.is_zero() {
-                continue;
-            }
-            let negative = dj.signum() == exactcheck_core::Sign::Negative;
-            let magnitude = if negative { dj.neg_ref() } else { dj.clone() };
-            let power = match j {
-                0 => String::new(),
-                1 => name.text.clone(),
-                _ => format!("{}^{j}", name.text),
-            };
-            let term = match (j, magnitude.is_one()) {
-                (0, _) => magnitude.to_string(),
-                (_, true) => power,
-                (_, false) => format!("{magnitude}*{power}"),
-            };
-            match (out.is_empty(), negative) {
-                (true, false) => out.push_str(&term),
-                (true, true) => out.push_str(&format!("-{term}")),
-                (false, false) => out.push_str(&format!(" + {term}")),
-                (false, true) => out.push_str(&format!(" - {term}")),
-            }
-        }
-        Some(if out.is_empty() { "0".to_string() } else { out })
+        Some(naming.print(&c))
+    }
+
+    /// Whether the field has names to print its elements in ([`NumberField::with_names`]).
+    pub fn has_names(&self) -> bool {
+        self.naming.is_some()
     }
 
     /// The generator `theta`.
@@ -223,9 +157,94 @@ impl NumberField {
         Some(self.reduce(&(s0 * &c)))
     }
 
+    /// The minimal polynomial over Q of the element `p(theta)`, monic, when its degree is at
+    /// most `max_degree`; `None` when it is higher. It is the first linear dependence among the
+    /// powers `1, a, a^2, ..., a^max_degree` (coordinates in `theta`), found as the nullspace
+    /// vector of the echelon form's first free column: a few products and a small echelon
+    /// form, where the characteristic polynomial ([`NumberField::value`]) takes `n + 1`
+    /// resultants and a square-free part. Meant for small `max_degree`: the coefficients of
+    /// high powers of an element grow.
+    ///
+    /// The powers are first reduced modulo the prime `2^61 - 1` ([`ModP`]): when their images
+    /// are linearly independent there, so are they over Q (a rational relation, scaled to
+    /// integers prime to `p` in one coefficient, would reduce to one modulo `p`), and the
+    /// answer `None` is certified at the cost of word arithmetic.
+    pub fn minimal_polynomial_of(&self, p: &UPoly, max_degree: usize) -> Option<UPoly> {
+        let p = self.reduce(p);
+        let n = self.degree();
+        let cols = max_degree.min(n) + 1;
+        if cols <= n && self.powers_independent_mod_p(&p, cols) {
+            return None;
+        }
+        let mut powers = Matrix::zeros(n, cols);
+        let mut power = UPoly::one();
+        for j in 0..cols {
+            for i in 0..n {
+                powers.set(i, j, power.coeff(i));
+            }
+            if j + 1 < cols {
+                power = self.mul(&power, &p);
+            }
+        }
+        // The first free column d makes the relation a^d = a combination of the lower powers,
+        // of least degree; with max_degree >= n one exists (n + 1 vectors of Q^n).
+        let relation = powers.nullspace().into_iter().next()?;
+        let d = relation.iter().rposition(|c| !c.is_zero())?;
+        Some(UPoly::from_coeffs(relation[..=d].to_vec()).monic())
+    }
+
+    /// Whether `1, a, ..., a^(count-1)` for `a = p(theta)` are certified linearly independent by
+    /// their images modulo [`crate::modp::P`]; `false` also when a coefficient has no image (a
+    /// denominator divisible by the prime).
+    fn powers_independent_mod_p(&self, p: &UPoly, count: usize) -> bool {
+        let image = |q: &UPoly| -> Option<Vec<ModP>> {
+            q.coeffs()
+                .iter()
+                .map(|c| ModP::from_rational(c).ok())
+                .collect()
+        };
+        let (Some(m), Some(a)) = (image(&self.modulus), image(p)) else {
+            return false;
+        };
+        let n = self.degree();
+        // The product of two residues of degree below n, reduced by the monic modulus.
+        let mul = |x: &[ModP], y: &[ModP]| -> Vec<ModP> {
+            let mut prod = vec![ModP::zero(); x.len() + y.len()];
+            for (i, xi) in x.iter().enumerate() {
+                for (j, yj) in y.iter().enumerate() {
+                    prod[i + j] += *xi * *yj;
+                }
+            }
+            for top in (n..prod.len()).rev() {
+                let c = prod[top];
+                if !c.is_zero() {
+                    for (k, mk) in m[..n].iter().enumerate() {
+                        prod[top - n + k] -= c * *mk;
+                    }
+                }
+            }
+            prod.truncate(n);
+            prod
+        };
+        let mut powers = Matrix::zeros(n, count);
+        let mut power = vec![ModP::one()];
+        for j in 0..count {
+            for (i, c) in power.iter().enumerate() {
+                powers.set(i, j, *c);
+            }
+            if j + 1 < count {
+                power = mul(&power, &a);
+            }
+        }
+        powers.rank() == count
+    }
+
     /// The real number `p(theta)`, exactly: a root of the characteristic polynomial
     /// `Res_t(m(t), y - p(t))` (interpolated from its values at integer points), selected by
-    /// interval evaluation of `p` at `theta`.
+    /// interval evaluation of `p` at `theta`. The characteristic polynomial is a power of the
+    /// element's minimal polynomial (the product of `y - p(theta_i)` over the conjugates
+    /// `theta_i`, each value repeated `n / d` times), so its square-free part is that minimal
+    /// polynomial and needs no factoring.
     pub fn value(&self, p: &UPoly) -> Algebraic {
         let p = self.reduce(p);
         if p.degree() == 0 || p.is_zero() {
@@ -240,7 +259,16 @@ impl NumberField {
             })
             .collect();
         let charpoly = UPoly::interpolate(&points);
-        Algebraic::select(&charpoly, false, |bits| {
+        self.value_with(&p, &charpoly)
+    }
+
+    /// The number `p(theta)` for a reduced `p` and a polynomial `f` that is a power of its
+    /// minimal polynomial: the root of `f` selected by interval evaluation of `p` at `theta`.
+    pub(super) fn value_with(&self, p: &UPoly, f: &UPoly) -> Algebraic {
+        if p.degree() == 0 || p.is_zero() {
+            return Algebraic::from_rational(p.coeff(0));
+        }
+        Algebraic::select(f, true, |bits| {
             let x = self.generator.enclosure(bits);
             let mut acc: Iv = (Rational::ZERO, Rational::ZERO);
             for c in p.coeffs().iter().rev() {
@@ -425,6 +453,7 @@ fn compose_in(field: &NumberField, p: &UPoly, q: &UPoly) -> UPoly {
 
 #[cfg(test)]
 mod tests {
+    use super::super::names::as_factor;
     use super::*;
 
     fn alg(text: &str) -> Algebraic {
@@ -516,6 +545,34 @@ mod tests {
         assert_eq!(as_factor("sqrt(2)*sqrt(3)"), "(sqrt(2)*sqrt(3))");
         assert_eq!(as_factor(" cos(pi/8) "), "cos(pi/8)");
         assert_eq!(as_factor("(1)+(2)"), "((1)+(2))");
+    }
+
+    /// Minimal polynomials of elements by linear algebra, against the exact values.
+    #[test]
+    fn minimal_polynomials_of_elements() {
+        let pe = primitive_element(&[alg("cos(pi/8)"), alg("cos(2*pi/7)")]).unwrap();
+        let k = &pe.field;
+        let (c8, c7) = (&pe.polys[0], &pe.polys[1]);
+        // sqrt(2) = 4 c8^2 - 2: x^2 - 2.
+        let s2 =
+            k.mul(c8, c8) * &Rational::from_integer(4) - UPoly::constant(Rational::from_integer(2));
+        assert_eq!(
+            k.minimal_polynomial_of(&s2, 4),
+            Some(UPoly::from_i64_coeffs(&[-2, 0, 1]))
+        );
+        // cos(2 pi/7): 8x^3 + 4x^2 - 4x - 1, monic.
+        let m7 = k.minimal_polynomial_of(c7, 4).unwrap();
+        assert_eq!(
+            m7 * &Rational::from_integer(8),
+            UPoly::from_i64_coeffs(&[-1, -4, 4, 8])
+        );
+        // c8 + c7 has degree 12: past 4 (certified modulo the prime), found with the cap 12.
+        let sum = c8.add_ref(c7);
+        assert_eq!(k.minimal_polynomial_of(&sum, 4), None);
+        let m = k.minimal_polynomial_of(&sum, 12).unwrap();
+        assert_eq!(m.degree(), 12);
+        assert_eq!(k.value(&sum), alg("cos(pi/8) + cos(2*pi/7)"));
+        assert_eq!(k.value(&sum).defining_polynomial(), &m.primitive_part());
     }
 
     #[test]

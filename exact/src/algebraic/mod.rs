@@ -50,13 +50,15 @@
 //! Here: the type, construction, comparison and the trait implementations; `arith`: the
 //! arithmetic and the root selection; `trig`: cosines, sines and tangents of rational multiples
 //! of pi; `display`: printing as radicals or as `Root(...)`; `field`: number fields `Q(theta)`
-//! and primitive elements of several numbers; `element`: elements of one number field as an
-//! ordered field ([`FieldElement`]).
+//! and primitive elements of several numbers; `names`: elements printed as polynomials in the
+//! values the user wrote; `element`: elements of one number field as an ordered field
+//! ([`FieldElement`]).
 
 mod arith;
 mod display;
 mod element;
 mod field;
+mod names;
 #[cfg(test)]
 mod tests;
 mod trig;
