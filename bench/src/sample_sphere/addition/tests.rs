@@ -175,12 +175,6 @@ fn blocks_may_start_anywhere_within_the_bound() {
 }
 
 #[test]
-fn the_angle_bound_is_four_pi_u() {
-    assert!(4.0 * std::f64::consts::PI * U * (1.0 + U) < ANGLE_ERROR);
-    assert!(ANGLE_ERROR < 4.0 * std::f64::consts::PI * U * 1.001);
-}
-
-#[test]
 fn every_samples_discriminant_is_within_the_stated_bound() {
     for cs in configurations() {
         let sampler = DiscSampler::new(&cs);
