@@ -7,8 +7,10 @@
 //! * [`Sweep::sweep`] (and `sweep_serial`), the reference: `f64::sin_cos` per sample, one
 //!   running sum per chunk;
 //! * [`AdditionSweep::sweep_addition`] (and `sweep_addition_serial`), the fast kernel of
-//!   [`addition`]: angle addition per block (one `sin_cos` per 512 samples), discriminants and
-//!   square roots in vectorized lanes, within the error bounds derived there of the reference;
+//!   [`addition`]: the discriminant as a trigonometric polynomial of degree 2, angle addition per
+//!   block (one `sin_cos` per 512 samples), 4 multiplications and 4 additions per sample,
+//!   discriminants and square roots in vectorized lanes, within the error bounds derived there of
+//!   the reference;
 //! * [`sweep_direct`], the baseline: the derived formulas evaluated per sample.
 //!
 //! The timed region of [`run`] covers what the anchor's (`sample_sphere_numpy.py`) does: from
@@ -26,7 +28,8 @@ use rayon::prelude::*;
 pub mod addition;
 
 pub use addition::{
-    sum_depth, sum_error_bound, AdditionSweep, AngleTable, KernelPath, BLOCK, LANES, TRIG_ERROR,
+    sum_depth, sum_error_bound, AdditionSweep, AngleTable, KernelPath, Trig2, ANGLE_ERROR, BLOCK,
+    LANES,
 };
 
 /// Samples per chunk (cache-sized; also the unit of the deterministic reduction).
@@ -124,8 +127,9 @@ pub fn sweep_direct(cs: &CylinderSphere<f64>, n: usize) -> GridSummary {
 /// How the samples are evaluated.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum Variant {
-    /// Angle addition per block of 512 samples (one `sin_cos` per block), the discriminant
-    /// summed in vectorized lanes, all cores (within 19 u of `sin_cos` per sample).
+    /// The discriminant as a degree-2 trigonometric polynomial, angle addition per block of 512
+    /// samples (one `sin_cos` per block), summed in vectorized lanes, all cores (within 66 u of
+    /// the discriminant's scale of the per-sample evaluation).
     Addition,
     /// The angle-addition kernel on one thread (the same result bit for bit).
     AdditionSerial,
