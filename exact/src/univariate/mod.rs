@@ -90,8 +90,8 @@ mod upoly;
 pub use descartes::{integer_real_roots, integer_real_roots_to, MAX_DESCARTES_DEGREE};
 pub use exactcheck_core::roots::{IsolatedRoot, ZeroPolynomial};
 pub use factor::Factorisation;
-pub use over_field::{FieldUPoly, FieldUPolyDisplay};
 pub(crate) use isolate::compare_simple;
+pub use over_field::{FieldUPoly, FieldUPolyDisplay};
 pub use real_roots::{
     common_real_roots_in, compare_with_real_root, descartes_bound, isolate_real_roots,
     isolate_real_roots_in, isolate_real_roots_sturm, isolate_real_roots_sturm_in, refine_real_root,

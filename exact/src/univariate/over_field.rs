@@ -84,7 +84,10 @@ impl FieldUPoly {
 
     /// The coefficient of `t^k` (zero beyond the degree).
     pub fn coeff(&self, k: usize) -> FieldElement {
-        self.coeffs.get(k).cloned().unwrap_or_else(FieldElement::zero)
+        self.coeffs
+            .get(k)
+            .cloned()
+            .unwrap_or_else(FieldElement::zero)
     }
 
     /// The degree (0 for constants and for the zero polynomial).
@@ -262,11 +265,10 @@ impl FieldUPoly {
     fn roots_and_norm(&self) -> &(Vec<Root>, UPoly) {
         self.roots.get_or_init(|| {
             let factors = self.square_free_decomposition();
-            let q = factors
-                .iter()
-                .fold(FieldUPoly::from_coeffs(vec![FieldElement::one()]), |acc, (a, _)| {
-                    acc.mul(a)
-                });
+            let q = factors.iter().fold(
+                FieldUPoly::from_coeffs(vec![FieldElement::one()]),
+                |acc, (a, _)| acc.mul(a),
+            );
             if q.is_constant() {
                 return (Vec::new(), UPoly::one());
             }
@@ -313,7 +315,11 @@ impl FieldUPoly {
     ///
     /// # Errors
     /// A [`LimitError`] of `bisection` when more halvings than the limit would be needed.
-    pub fn try_refine(&self, ri: &RootInterval, width: &Rational) -> Result<RootInterval, LimitError> {
+    pub fn try_refine(
+        &self,
+        ri: &RootInterval,
+        width: &Rational,
+    ) -> Result<RootInterval, LimitError> {
         if ri.is_exact() {
             return Ok(ri.clone());
         }
@@ -351,7 +357,11 @@ impl FieldUPoly {
     /// odd multiplicity.
     pub fn positive_somewhere(&self) -> bool {
         self.sign_at_pos_inf() == Sign::Positive
-            || self.roots_and_norm().0.iter().any(|r| r.multiplicity % 2 == 1)
+            || self
+                .roots_and_norm()
+                .0
+                .iter()
+                .any(|r| r.multiplicity % 2 == 1)
     }
 
     /// The polynomial printed in the variable `var`: its terms from the highest degree down, a

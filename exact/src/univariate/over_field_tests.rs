@@ -28,11 +28,10 @@ fn linear(root: &FieldElement) -> FieldUPoly {
 }
 
 fn product(factors: &[FieldUPoly]) -> FieldUPoly {
-    factors
-        .iter()
-        .fold(FieldUPoly::from_coeffs(vec![FieldElement::one()]), |a, b| {
-            a.mul(b)
-        })
+    factors.iter().fold(
+        FieldUPoly::from_coeffs(vec![FieldElement::one()]),
+        |a, b| a.mul(b),
+    )
 }
 
 /// Whether the known root `x` lies in the isolating interval `ri`, compared exactly in the
@@ -63,13 +62,20 @@ fn a_product_of_known_factors_has_its_roots_isolated_with_multiplicities() {
         linear(&c.neg_ref()),
     ]);
     let roots = p.roots();
-    let want = [-(3f64.sqrt()), -(std::f64::consts::PI / 8.0).cos(), 1.0 / 3.0];
+    let want = [
+        -(3f64.sqrt()),
+        -(std::f64::consts::PI / 8.0).cos(),
+        1.0 / 3.0,
+    ];
     assert_eq!(roots.len(), 5, "{roots:?}");
     let exact: Vec<bool> = roots.iter().map(|r| r.interval.is_exact()).collect();
     assert_eq!(exact, [false, false, true, false, false]);
     let mult: Vec<u32> = roots.iter().map(|r| r.multiplicity).collect();
     assert_eq!(mult, [1, 1, 1, 2, 1]);
-    assert_eq!(roots[2].interval.exact_value(), Some(&Rational::new(1, 3).unwrap()));
+    assert_eq!(
+        roots[2].interval.exact_value(),
+        Some(&Rational::new(1, 3).unwrap())
+    );
     assert!(inside(&c.neg_ref(), &roots[1].interval));
     assert!(inside(&s2, &roots[3].interval));
     let width = Rational::new(1, 1 << 50).unwrap();
@@ -133,7 +139,9 @@ fn constants_and_zero_have_no_roots() {
     assert!(z.is_zero());
     assert_eq!(z.nonnegative_set().len(), 1);
     assert_eq!(
-        FieldUPoly::from_coeffs(vec![q(-1, 2), c]).display("tau").to_string(),
+        FieldUPoly::from_coeffs(vec![q(-1, 2), c])
+            .display("tau")
+            .to_string(),
         "(sqrt(2 + sqrt(2))/2)*tau - 1/2"
     );
 }

@@ -1,8 +1,7 @@
 //! The answer types of `cylinder_sphere` in exact mode.
 
-
-use super::input::AngleNote;
 use super::float::FloatAnswer;
+use super::input::AngleNote;
 use exactcheck_core::cylinder_sphere::TrigCoefficients;
 use serde::Serialize;
 
@@ -143,4 +142,3 @@ pub struct ExactAnswer {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub(super) float: Option<FloatAnswer>,
 }
-

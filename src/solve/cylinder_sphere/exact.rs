@@ -12,7 +12,7 @@ use crate::Error;
 use exactcheck_core::cylinder_sphere::{unit_circle_point, Angle, Contact, CylinderSphere};
 use exactcheck_core::{OrderedField, Ring, Sign, Vec3};
 use exactcheck_exact::cylinder_sphere::analyze;
-use exactcheck_exact::univariate::{Bound, RootInterval};
+use exactcheck_exact::univariate::{Bound, RootBoundedInterval, RootInterval};
 use exactcheck_exact::{Radical, Rational};
 use num_rational::BigRational;
 use num_traits::One;
@@ -38,29 +38,7 @@ pub(super) fn exact(input: Input<RationalNumber>) -> Result<ExactAnswer, Error> 
     let by_distance = cs.contact_by_distance();
     let coeffs = cs.trig_coefficients();
     let p = &analysis.discriminant;
-    let half = Rational::new(1, 2).expect("2 != 0");
-    // Sample parameters: rational tau on a grid of angles, plus one inside every interval, kept
-    // where the discriminant is >= 0.
-    let mut taus: Vec<Rational> = Vec::new();
-    for k in 0..n_samples {
-        let t = std::f64::consts::TAU * k as f64 / n_samples as f64;
-        if (t - std::f64::consts::PI).abs() > 1e-9 {
-            let (_, tau, _) = exactcheck_exact::cylinder_sphere::rational_angle(t, 1000);
-            taus.push(tau);
-        }
-    }
-    for iv in &analysis.nonnegative {
-        let mid = match (&iv.lo, &iv.hi) {
-            (Bound::Root(a), Bound::Root(b)) => (a.midpoint() + b.midpoint()) * &half,
-            (Bound::NegInf, Bound::Root(b)) => b.lo.clone() - Rational::ONE,
-            (Bound::Root(a), Bound::PosInf) => a.hi.clone() + Rational::ONE,
-            // The whole line (an interval never starts at +inf or ends at -inf).
-            _ => Rational::ZERO,
-        };
-        taus.push(mid);
-    }
-    taus.sort();
-    taus.dedup();
+    let taus = sample_taus(n_samples, &analysis.nonnegative);
     let lift = |q: &Rational| Radical::from(q);
     let rcs = cs.map(lift);
     let mut samples = Vec::new();
@@ -166,36 +144,13 @@ pub(super) fn exact(input: Input<RationalNumber>) -> Result<ExactAnswer, Error> 
             on_both_surfaces: ok,
         });
     }
-    let tangent_circle = analysis.touching_circle.then(|| tangent_circle(&cs));
+    let tangent_circle = analysis
+        .touching_circle
+        .then(|| tangent_circle(&cs, Rational::to_f64));
     if let Some(c) = &tangent_circle {
         all_on_both &= c.on_both_surfaces;
     }
-    // Interval ends to the requested precision.
-    let refine = |r: &RootInterval| match &width {
-        Some(w) if !r.is_exact() => p.try_refine(r, w),
-        _ => Ok(r.clone()),
-    };
-    let end = |x: &Bound| -> Result<End, Error> {
-        Ok(match x {
-            Bound::NegInf => End::Exact("-inf".into()),
-            Bound::PosInf => End::Exact("+inf".into()),
-            Bound::Root(r) => match r.exact_value() {
-                Some(v) => End::Exact(v.to_string()),
-                None => {
-                    let r = refine(r)?;
-                    End::Isolated {
-                        interval: [r.lo.to_string(), r.hi.to_string()],
-                        approx: r.to_f64(),
-                    }
-                }
-            },
-        })
-    };
-    let intervals = analysis
-        .nonnegative
-        .iter()
-        .map(|iv| Ok([end(&iv.lo)?, end(&iv.hi)?]))
-        .collect::<Result<_, Error>>()?;
+    let intervals = interval_ends(&analysis.nonnegative, |r, w| p.try_refine(r, w), &width)?;
     Ok(ExactAnswer {
         kind: "cylinder_sphere",
         mode: "exact",
@@ -224,6 +179,71 @@ pub(super) fn exact(input: Input<RationalNumber>) -> Result<ExactAnswer, Error> 
     })
 }
 
+/// Sample parameters: rational tau on a grid of `n_samples` angles (without t = pi), plus one
+/// inside every interval where the discriminant is `>= 0`; sorted, without repetitions.
+pub(super) fn sample_taus(n_samples: usize, nonnegative: &[RootBoundedInterval]) -> Vec<Rational> {
+    let half = Rational::new(1, 2).expect("2 != 0");
+    let mut taus: Vec<Rational> = Vec::new();
+    for k in 0..n_samples {
+        let t = std::f64::consts::TAU * k as f64 / n_samples as f64;
+        if (t - std::f64::consts::PI).abs() > 1e-9 {
+            let (_, tau, _) = exactcheck_exact::cylinder_sphere::rational_angle(t, 1000);
+            taus.push(tau);
+        }
+    }
+    for iv in nonnegative {
+        let mid = match (&iv.lo, &iv.hi) {
+            (Bound::Root(a), Bound::Root(b)) => (a.midpoint() + b.midpoint()) * &half,
+            (Bound::NegInf, Bound::Root(b)) => b.lo.clone() - Rational::ONE,
+            (Bound::Root(a), Bound::PosInf) => a.hi.clone() + Rational::ONE,
+            // The whole line (an interval never starts at +inf or ends at -inf).
+            _ => Rational::ZERO,
+        };
+        taus.push(mid);
+    }
+    taus.sort();
+    taus.dedup();
+    taus
+}
+
+/// The real tau-intervals with their ends: exact, infinite, or isolated (refined by `refine` to
+/// the width `width` when one is asked for).
+pub(super) fn interval_ends<E>(
+    nonnegative: &[RootBoundedInterval],
+    refine: impl Fn(&RootInterval, &Rational) -> Result<RootInterval, E>,
+    width: &Option<Rational>,
+) -> Result<Vec<[End; 2]>, Error>
+where
+    Error: From<E>,
+{
+    let refine = |r: &RootInterval| -> Result<RootInterval, Error> {
+        match width {
+            Some(w) if !r.is_exact() => Ok(refine(r, w)?),
+            _ => Ok(r.clone()),
+        }
+    };
+    let end = |x: &Bound| -> Result<End, Error> {
+        Ok(match x {
+            Bound::NegInf => End::Exact("-inf".into()),
+            Bound::PosInf => End::Exact("+inf".into()),
+            Bound::Root(r) => match r.exact_value() {
+                Some(v) => End::Exact(v.to_string()),
+                None => {
+                    let r = refine(r)?;
+                    End::Isolated {
+                        interval: [r.lo.to_string(), r.hi.to_string()],
+                        approx: r.to_f64(),
+                    }
+                }
+            },
+        })
+    };
+    nonnegative
+        .iter()
+        .map(|iv| Ok([end(&iv.lo)?, end(&iv.hi)?]))
+        .collect()
+}
+
 /// The largest numerator or denominator (in bits) of a sample's discriminant that is factored
 /// to write its square root in the radical field; bigger ones use `Q[w]/(w^2 - D)`.
 const MAX_FACTORED_BITS: u64 = 256;
@@ -231,13 +251,16 @@ const MAX_FACTORED_BITS: u64 = 256;
 /// The touching circle of a configuration whose discriminant vanishes identically: centre and
 /// radius from the geometry (the sphere's centre on the axis, the cylinder's radius), `u` from
 /// `A` at `t = 0`, and the exact check at four of its points.
-fn tangent_circle(cs: &CylinderSphere<Rational>) -> TangentCircle {
+pub(super) fn tangent_circle<T: OrderedField + std::fmt::Display>(
+    cs: &CylinderSphere<T>,
+    to_f64: impl Fn(&T) -> f64,
+) -> TangentCircle {
     let (_, normal) = cs.axis();
-    let (a0, _) = cs.coefficients_at(&Rational::ONE, &Rational::ZERO);
+    let (a0, _) = cs.coefficients_at(&T::one(), &T::zero());
     let u = a0.neg_ref();
     let quarter_turns = [(1, 0), (0, 1), (-1, 0), (0, -1)];
     let ok = quarter_turns.iter().all(|&(c, s)| {
-        let (c, s) = (Rational::from_integer(c), Rational::from_integer(s));
+        let (c, s) = (T::from_i64(c), T::from_i64(s));
         let x = cs.point(&c, &s, &u);
         let rel = &x - &cs.center;
         on_both(cs, &x) && rel.norm_squared() == cs.r.square() && rel.dot(&normal).is_zero()
@@ -250,11 +273,11 @@ fn tangent_circle(cs: &CylinderSphere<Rational>) -> TangentCircle {
         on_both_surfaces: ok,
         approx: CircleApprox {
             center: [
-                cs.center.x.to_f64() + 0.0,
-                cs.center.y.to_f64() + 0.0,
-                cs.center.z.to_f64() + 0.0,
+                to_f64(&cs.center.x) + 0.0,
+                to_f64(&cs.center.y) + 0.0,
+                to_f64(&cs.center.z) + 0.0,
             ],
-            radius: cs.r.to_f64(),
+            radius: to_f64(&cs.r),
         },
     }
 }
@@ -305,4 +328,3 @@ fn quadratic_points(
     }
     (pts, ok)
 }
-

@@ -79,4 +79,3 @@ pub(super) fn float_answer(input: Input<FloatNumber>) -> Result<FloatAnswer, Err
         samples,
     })
 }
-

@@ -1,7 +1,6 @@
 //! The input of `cylinder_sphere`: its types (and their JSON Schema), the angles in their two
 //! forms, and the configuration read from them exactly or in f64.
 
-
 use crate::solve::number::{Coords, FloatNumber, Radians, RationalNumber};
 use crate::solve::parse;
 use crate::Error;

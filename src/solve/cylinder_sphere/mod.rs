@@ -84,4 +84,3 @@ pub(super) fn on_both<T: OrderedField>(cs: &CylinderSphere<T>, x: &Vec3<T>) -> b
     let cyl = (x - &axis_q).cross(&axis_d).norm_squared() == cs.r.square();
     sphere && cyl
 }
-
