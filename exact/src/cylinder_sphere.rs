@@ -1,5 +1,9 @@
 //! Exact analysis of a cylinder/sphere intersection (Spaeth) for exact input.
 //!
+//! The input is rational ([`analyze`]) or lies in one real number field ([`analyze_in_field`]);
+//! the discriminant is then a [`UPoly`] or a [`FieldUPoly`], and one analysis, written over the
+//! [`Discriminant`] trait, serves both.
+//!
 //! Angles are rational points of the unit circle; the curve parameter is the rational circle
 //! parameter `tau` (`cos t = (1 - tau^2)/(1 + tau^2)`, `sin t = 2 tau/(1 + tau^2)`, `tau = infinity`
 //! at `t = pi`). Real points exist where `P(tau) = (1 + tau^2)^2 (A^2 - B) >= 0`
@@ -21,7 +25,8 @@
 //! figure eight are both found. `P = 0` identically means every point of the curve `u = -A(t)`
 //! is a touching point: the touching circle.
 
-use crate::univariate::{Bound, RootBoundedInterval, RootInterval, UPoly};
+use crate::algebraic::FieldElement;
+use crate::univariate::{Bound, FieldUPoly, Root, RootBoundedInterval, RootInterval, UPoly};
 use crate::Rational;
 use exactcheck_core::cylinder_sphere::{Angle, Contact, CylinderSphere, Touching};
 use exactcheck_core::{OrderedField, Ring, Sign};
@@ -40,11 +45,72 @@ pub fn rational_angle(theta: f64, max_den: i64) -> (Angle<Rational>, Rational, f
     (r.angle, r.tau_value, r.deviation)
 }
 
-/// What the exact analysis found.
+/// The discriminant polynomial `P(tau)` as the analysis needs it: its real roots, signs and
+/// low coefficients, for rational coefficients ([`UPoly`]) and for coefficients in a real number
+/// field ([`FieldUPoly`]), both answered by the real-root API of [`crate::univariate`].
+pub trait Discriminant: Clone + std::fmt::Debug {
+    /// Whether `P` is the zero polynomial.
+    fn vanishes(&self) -> bool;
+    /// Whether the coefficient of `tau^k` is zero.
+    fn coefficient_vanishes(&self, k: usize) -> bool;
+    /// The distinct real roots with multiplicities, increasing.
+    fn real_roots(&self) -> Vec<Root>;
+    /// The closed sets where `P >= 0`.
+    fn nonnegative(&self) -> Vec<RootBoundedInterval>;
+    /// Whether `P > 0` somewhere.
+    fn positive_anywhere(&self) -> bool;
+    /// The number of distinct real roots.
+    fn real_root_count(&self) -> usize;
+}
+
+impl Discriminant for UPoly {
+    fn vanishes(&self) -> bool {
+        self.is_zero()
+    }
+    fn coefficient_vanishes(&self, k: usize) -> bool {
+        self.coeff(k).is_zero()
+    }
+    fn real_roots(&self) -> Vec<Root> {
+        self.roots()
+    }
+    fn nonnegative(&self) -> Vec<RootBoundedInterval> {
+        self.nonnegative_set()
+    }
+    fn positive_anywhere(&self) -> bool {
+        self.positive_somewhere()
+    }
+    fn real_root_count(&self) -> usize {
+        self.count_real_roots()
+    }
+}
+
+impl Discriminant for FieldUPoly {
+    fn vanishes(&self) -> bool {
+        self.is_zero()
+    }
+    fn coefficient_vanishes(&self, k: usize) -> bool {
+        self.coeff(k).is_zero()
+    }
+    fn real_roots(&self) -> Vec<Root> {
+        self.roots()
+    }
+    fn nonnegative(&self) -> Vec<RootBoundedInterval> {
+        self.nonnegative_set()
+    }
+    fn positive_anywhere(&self) -> bool {
+        self.positive_somewhere()
+    }
+    fn real_root_count(&self) -> usize {
+        self.count_real_roots()
+    }
+}
+
+/// What the exact analysis found; `P` is the discriminant's polynomial type ([`UPoly`] for
+/// rational input, [`FieldUPoly`] for input in a number field).
 #[derive(Clone, Debug)]
-pub struct Analysis {
+pub struct Analysis<P = UPoly> {
     /// `P(tau) = (1 + tau^2)^2 (A^2 - B)`.
-    pub discriminant: UPoly,
+    pub discriminant: P,
     /// The sign of the discriminant at `t = pi` (`tau = infinity`).
     pub sign_at_pi: Sign,
     /// The closed tau-intervals where `P >= 0` (unbounded ends included).
@@ -62,7 +128,7 @@ pub struct Analysis {
     pub touching_circle: bool,
 }
 
-impl Analysis {
+impl<P> Analysis<P> {
     /// Where the surfaces touch, by this method (to compare with
     /// [`CylinderSphere::touching_by_distance`]): a circle, or as many points as
     /// [`Analysis::tangent_params`] lists (`Point` for one; the geometry allows at most one).
@@ -78,11 +144,27 @@ impl Analysis {
 
 /// Analyzes the intersection exactly.
 pub fn analyze(cs: &CylinderSphere<Rational>) -> Analysis {
+    analyze_with(cs, |c| UPoly::from_coeffs(c.to_vec()))
+}
+
+/// Analyzes the intersection exactly for input in a real number field (the numbers and angles
+/// of `cs` in one field `Q(theta)`): the discriminant has coefficients in the field and its
+/// real roots are isolated by [`FieldUPoly`].
+pub fn analyze_in_field(cs: &CylinderSphere<FieldElement>) -> Analysis<FieldUPoly> {
+    analyze_with(cs, |c| FieldUPoly::from_coeffs(c.to_vec()))
+}
+
+/// The analysis over any exact ordered field, the discriminant built by `make` from its
+/// coefficients.
+fn analyze_with<T: OrderedField, P: Discriminant>(
+    cs: &CylinderSphere<T>,
+    make: impl Fn(&[T; 5]) -> P,
+) -> Analysis<P> {
     let coeffs = cs.trig_coefficients();
-    let p = UPoly::from_coeffs(coeffs.discriminant_in_tau().to_vec());
-    let at_pi = cs.discriminant_at(&Rational::from_integer(-1), &Rational::ZERO);
+    let p = make(&coeffs.discriminant_in_tau());
+    let at_pi = cs.discriminant_at(&T::from_i64(-1), &T::zero());
     let sign_at_pi = at_pi.sign();
-    if p.is_zero() {
+    if p.vanishes() {
         // A^2 = B everywhere: the sphere touches along the whole circle of t (degenerate).
         return Analysis {
             discriminant: p,
@@ -97,19 +179,19 @@ pub fn analyze(cs: &CylinderSphere<Rational>) -> Analysis {
             touching_circle: true,
         };
     }
-    let nonnegative = p.nonnegative_set();
+    let nonnegative = p.nonnegative();
     // Every multiple root of P is a touching point (D = D' = 0), isolated or not.
     let mut tangent_params: Vec<Option<RootInterval>> = p
-        .roots()
+        .real_roots()
         .into_iter()
         .filter(|r| r.multiplicity >= 2)
         .map(|r| Some(r.interval))
         .collect();
     // t = pi is a multiple root when s^4 P(1/s) has a double root at s = 0: p4 = p3 = 0.
-    if p.coeff(4).is_zero() && p.coeff(3).is_zero() {
+    if p.coefficient_vanishes(4) && p.coefficient_vanishes(3) {
         tangent_params.push(None);
     }
-    let positive = p.positive_somewhere() || sign_at_pi == Sign::Positive;
+    let positive = p.positive_anywhere() || sign_at_pi == Sign::Positive;
     let touches = !tangent_params.is_empty() || !nonnegative.is_empty() || sign_at_pi == Sign::Zero;
     let contact = if positive {
         Contact::Crossing
@@ -136,7 +218,7 @@ pub fn analyze(cs: &CylinderSphere<Rational>) -> Analysis {
     }
     // Over an arc the two branches u1 <= u2 close up into one loop; over the whole circle with
     // no zero they are two separate closed curves (Example 1), joined where P touches 0.
-    let components = if whole_line && sign_at_pi == Sign::Positive && p.count_real_roots() == 0 {
+    let components = if whole_line && sign_at_pi == Sign::Positive && p.real_root_count() == 0 {
         2
     } else {
         arcs
@@ -272,5 +354,44 @@ mod tests {
             assert_eq!(a.contact, cs.contact_by_distance(), "{c:?} {r}");
             assert_eq!(a.touching(), Some(cs.touching_by_distance()), "{c:?} {r}");
         }
+    }
+
+    #[test]
+    fn the_field_analysis_agrees_with_the_distance_method() {
+        use crate::algebraic::{Algebraic, NumberField};
+        use exactcheck_core::Field;
+        use std::sync::Arc;
+        let theta: Algebraic = "cos(pi/8)".parse().unwrap();
+        let f = Arc::new(NumberField::new(theta).unwrap());
+        let lift = |x: &Rational| FieldElement::new(&f, &UPoly::constant(x.clone()));
+        for (c, r) in [
+            ((1, 0, 0), 7),
+            ((6, 7, 8), 1),
+            ((8, 0, 3), 3),
+            ((0, 0, 3), 5),
+            ((2, 0, 0), 7),
+        ] {
+            let cs = axis_aligned(c, r).map(lift);
+            let a = analyze_in_field(&cs);
+            assert_eq!(a.contact, cs.contact_by_distance(), "{c:?} {r}");
+            assert_eq!(a.touching(), Some(cs.touching_by_distance()), "{c:?} {r}");
+        }
+        // Centre at distance 6 = r + R in the direction t = pi/8 (cos, sin in the field):
+        // the surfaces touch at the irrational tau = tan(pi/16).
+        let cos = FieldElement::generator(&f);
+        let sqrt2 = cos.square().scale_i64(4) - FieldElement::from_i64(2);
+        let sin = sqrt2 * &cos.scale_i64(4).inv().unwrap();
+        let mut cs = axis_aligned((0, 0, 0), 1).map(lift);
+        cs.center = Vec3::new(cos.scale_i64(6), sin.scale_i64(6), FieldElement::zero());
+        let a = analyze_in_field(&cs);
+        assert_eq!(a.contact, Contact::Tangent);
+        assert_eq!(a.touching(), Some(cs.touching_by_distance()));
+        let tau = a.tangent_params[0].clone().expect("not at t = pi");
+        assert!(!tau.is_exact());
+        let fine = a
+            .discriminant
+            .try_refine(&tau, &Rational::new(1, 1 << 40).unwrap())
+            .unwrap();
+        assert!((fine.to_f64() - (std::f64::consts::PI / 16.0).tan()).abs() < 1e-10);
     }
 }

@@ -401,36 +401,13 @@ impl UPoly {
     /// isolated points (touching points, [`UPoly::touching_points`]) are degenerate intervals
     /// with `lo == hi`.
     pub fn nonnegative_set(&self) -> Vec<RootBoundedInterval> {
-        let SignChart { roots, gaps } = self.sign_chart();
-        let mut out = Vec::new();
         if self.is_zero() {
-            out.push(RootBoundedInterval {
+            return vec![RootBoundedInterval {
                 lo: Bound::NegInf,
                 hi: Bound::PosInf,
-            });
-            return out;
+            }];
         }
-        let mut start = (gaps[0] == Sign::Positive).then_some(Bound::NegInf);
-        for (i, r) in roots.into_iter().enumerate() {
-            let start_here = start
-                .take()
-                .unwrap_or_else(|| Bound::Root(r.interval.clone()));
-            if gaps[i + 1] == Sign::Positive {
-                start = Some(start_here);
-            } else {
-                out.push(RootBoundedInterval {
-                    lo: start_here,
-                    hi: Bound::Root(r.interval),
-                });
-            }
-        }
-        if let Some(lo) = start {
-            out.push(RootBoundedInterval {
-                lo,
-                hi: Bound::PosInf,
-            });
-        }
-        out
+        nonnegative_in_chart(self.sign_chart())
     }
 
     /// The touching points: roots where `self <= 0` on both sides (necessarily of even
@@ -473,6 +450,34 @@ impl UPoly {
         }
         self.count_real_roots() > 0
     }
+}
+
+/// The set where a non-zero polynomial is `>= 0`, from its sign chart (see
+/// [`UPoly::nonnegative_set`]).
+pub(super) fn nonnegative_in_chart(chart: SignChart) -> Vec<RootBoundedInterval> {
+    let SignChart { roots, gaps } = chart;
+    let mut out = Vec::new();
+    let mut start = (gaps[0] == Sign::Positive).then_some(Bound::NegInf);
+    for (i, r) in roots.into_iter().enumerate() {
+        let start_here = start
+            .take()
+            .unwrap_or_else(|| Bound::Root(r.interval.clone()));
+        if gaps[i + 1] == Sign::Positive {
+            start = Some(start_here);
+        } else {
+            out.push(RootBoundedInterval {
+                lo: start_here,
+                hi: Bound::Root(r.interval),
+            });
+        }
+    }
+    if let Some(lo) = start {
+        out.push(RootBoundedInterval {
+            lo,
+            hi: Bound::PosInf,
+        });
+    }
+    out
 }
 
 /// The multiplicity of the root isolated by `ri` from a square-free decomposition.

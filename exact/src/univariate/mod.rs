@@ -21,7 +21,9 @@
 //! The workspace's real-root API is in `real_roots` ([`isolate_real_roots`],
 //! [`isolate_real_roots_sturm`], [`isolate_real_roots_in`], [`refine_real_root`],
 //! [`sign_at_real_root`], [`common_real_roots_in`], [`descartes_bound`]): one result type,
-//! [`RootInterval`], exact exactly when the root is rational. Every root count and isolation
+//! [`RootInterval`], exact exactly when the root is rational. Polynomials with coefficients in a
+//! real number field ([`FieldUPoly`], module `over_field`) have the same root, sign-chart and
+//! refinement answers, found through the rational isolator applied to their norm. Every root count and isolation
 //! runs on Descartes' rule (module `descartes`): [`UPoly::roots`], [`UPoly::sign_chart`] and the
 //! sets built on them, [`UPoly::count_roots`], [`UPoly::count_real_roots`], and
 //! [`UPoly::isolate_roots`], which lays the roots out in the intervals of the dyadic bisection
@@ -75,6 +77,9 @@ mod descartes;
 mod factor;
 mod isolate;
 mod limbs;
+mod over_field;
+#[cfg(test)]
+mod over_field_tests;
 mod real_roots;
 mod resultant;
 mod sturm;
@@ -86,6 +91,7 @@ pub use descartes::{integer_real_roots, integer_real_roots_to, MAX_DESCARTES_DEG
 pub use exactcheck_core::roots::{IsolatedRoot, ZeroPolynomial};
 pub use factor::Factorisation;
 pub(crate) use isolate::compare_simple;
+pub use over_field::{FieldUPoly, FieldUPolyDisplay};
 pub use real_roots::{
     common_real_roots_in, compare_with_real_root, descartes_bound, isolate_real_roots,
     isolate_real_roots_in, isolate_real_roots_sturm, isolate_real_roots_sturm_in, refine_real_root,
