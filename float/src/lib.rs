@@ -55,6 +55,8 @@ pub use harness::{
     RegressError, Subject,
 };
 pub use near::NearSet;
-pub use report::{Case, Explanation, OperationError, Report, Summary, ThresholdCount, WorstCase};
+pub use report::{
+    Case, Explanation, LimitStop, OperationError, Report, Summary, ThresholdCount, WorstCase,
+};
 pub use scalar::ExactScalar;
 pub use shard::{Shard, Sweep};

@@ -289,10 +289,10 @@ pub struct Report {
     /// Samples whose exact evaluation ran past a limit on its work ([`Report::limit_stop`]).
     #[serde(default, skip_serializing_if = "is_zero")]
     pub limit_stops: usize,
-    /// The limit that stopped them, `NAME = VALUE` (`loop-iterations = 10000`); the distinct
-    /// limits in the order first met, separated by `, `, when samples stopped at several.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub limit_stop: Option<String>,
+    /// The limits that stopped them, one per distinct limit, sorted by name; in JSON an array
+    /// of `{"limit": NAME, "value": N}` (left out when empty).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub limit_stop: Vec<LimitStop>,
     /// Compared samples whose reference is not exact: an enclosure of the true value (behind an
     /// irrational root, a function or a loop carried as an enclosure), refined until its
     /// rounding is decided.
@@ -562,16 +562,17 @@ impl fmt::Display for Report {
             write!(f, ", {} undecided", self.undecided)?;
         }
         if self.limit_stops > 0 {
+            let names: Vec<String> = self.limit_stop.iter().map(ToString::to_string).collect();
             write!(
                 f,
                 ", {} stopped by the limit{} {}",
                 self.limit_stops,
-                if self.limit_stop.as_deref().is_some_and(|s| s.contains(", ")) {
-                    "s"
+                if names.len() > 1 { "s" } else { "" },
+                if names.is_empty() {
+                    "of the exact side".to_string()
                 } else {
-                    ""
-                },
-                self.limit_stop.as_deref().unwrap_or("of the exact side")
+                    names.join(", ")
+                }
             )?;
         }
         writeln!(f)?;
@@ -658,18 +659,26 @@ fn is_zero(n: &usize) -> bool {
     *n == 0
 }
 
-/// Adds the limit stops `stops` (`NAME = VALUE`, several separated by `, `) to the distinct
-/// stops of `into`, in the order first met.
-pub(crate) fn note_limit_stop(into: &mut Option<String>, stops: &str) {
-    for stop in stops.split(", ") {
-        match into {
-            None => *into = Some(stop.to_string()),
-            Some(s) if s.split(", ").any(|t| t == stop) => {}
-            Some(s) => {
-                s.push_str(", ");
-                s.push_str(stop);
-            }
-        }
+/// A limit on the work of one sample that stopped samples of a sweep: its name and the value in
+/// force (`loop-iterations = 10000`, as it prints).
+#[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
+pub struct LimitStop {
+    /// The limit's name (`loop-iterations`).
+    pub limit: String,
+    /// Its value in force.
+    pub value: u64,
+}
+
+impl fmt::Display for LimitStop {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{} = {}", self.limit, self.value)
+    }
+}
+
+/// Adds `stop` to the distinct limit stops `into`, kept sorted (by name, then value).
+pub(crate) fn note_limit_stop(into: &mut Vec<LimitStop>, stop: &LimitStop) {
+    if let Err(at) = into.binary_search(stop) {
+        into.insert(at, stop.clone());
     }
 }
 
@@ -700,15 +709,26 @@ mod tests {
     }
 
     #[test]
-    fn limit_stops_keep_each_limit_once_in_the_order_met() {
-        let mut stops = None;
-        note_limit_stop(&mut stops, "loop-iterations = 300");
-        note_limit_stop(&mut stops, "loop-iterations = 300");
-        assert_eq!(stops.as_deref(), Some("loop-iterations = 300"));
-        note_limit_stop(&mut stops, "loop-value-bits = 64, loop-iterations = 300");
+    fn limit_stops_keep_each_limit_once_sorted_by_name() {
+        let stop = |limit: &str, value| LimitStop {
+            limit: limit.to_string(),
+            value,
+        };
+        let mut stops = Vec::new();
+        note_limit_stop(&mut stops, &stop("loop-value-bits", 64));
+        note_limit_stop(&mut stops, &stop("loop-iterations", 300));
+        note_limit_stop(&mut stops, &stop("loop-value-bits", 64));
         assert_eq!(
-            stops.as_deref(),
-            Some("loop-iterations = 300, loop-value-bits = 64")
+            stops,
+            vec![stop("loop-iterations", 300), stop("loop-value-bits", 64)]
+        );
+        assert_eq!(stops[0].to_string(), "loop-iterations = 300");
+        assert_eq!(
+            serde_json::to_value(&stops).expect("JSON"),
+            serde_json::json!([
+                {"limit": "loop-iterations", "value": 300},
+                {"limit": "loop-value-bits", "value": 64}
+            ])
         );
     }
 }

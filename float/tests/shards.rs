@@ -7,7 +7,8 @@
 use exactcheck_core::{OrderedField, ZeroDivisor};
 use exactcheck_exact::Rational;
 use exactcheck_float::{
-    check_consistent, merge, run, Formula, Options, Report, Shard, Subject, Sweep, UniformBox,
+    check_consistent, merge, run, CaseError, FloatSideError, Formula, LimitStop, Options, Report,
+    Shard, Subject, Sweep, UniformBox,
 };
 
 /// `(x + y) - x` (cancellation) and `x / (y - x)` (outside the domain where `y == x`).
@@ -259,4 +260,121 @@ fn shards_of_another_float_side_are_refused() {
         e,
         "report 2 is of another sweep: float side program ./mine (report 1: built-in (x + y) - x, x / (y - x))"
     );
+}
+
+/// `x * y`, whose exact side stops at the limit `limit = value` where `x < 0` (as a loop past
+/// its limit would): a stand-in for shards of one sweep run where different limits were met.
+struct Stopping {
+    limit: &'static str,
+    value: u64,
+}
+
+impl Subject for Stopping {
+    fn name(&self) -> String {
+        "x * y".into()
+    }
+    fn arity(&self) -> usize {
+        2
+    }
+    fn float_side(&self) -> String {
+        "built-in x * y".into()
+    }
+    fn exact(&self, x: &[f64]) -> Result<Vec<exactcheck_float::ExactValue>, CaseError> {
+        if x[0] < 0.0 {
+            return Err(CaseError::LimitExceeded {
+                limit: self.limit,
+                value: self.value,
+            });
+        }
+        let q = |v: f64| num_rational::BigRational::from_float(v).expect("finite");
+        Ok(vec![exactcheck_float::ExactValue::exact(q(x[0]) * q(x[1]))])
+    }
+    fn float(&self, _index: usize, x: &[f64]) -> Result<Option<Vec<f64>>, FloatSideError> {
+        Ok(Some(vec![x[0] * x[1]]))
+    }
+}
+
+fn stopping_shard(limit: &'static str, value: u64, index: usize) -> Report {
+    let gen = UniformBox::cube(2, -1.0, 1.0).expect("valid box");
+    let sweep = Sweep {
+        samples: 400,
+        seed: 3,
+        shard: Some(Shard { index, count: 2 }),
+    };
+    run(
+        &Stopping { limit, value },
+        &gen,
+        sweep,
+        &Options::default(),
+        &|_| {},
+    )
+    .expect("runs")
+}
+
+/// The limits that stopped samples are a list, one per limit sorted by name, in shard and
+/// merged reports alike (JSON: `[{"limit": NAME, "value": N}, ...]`); shards stopped at two values
+/// of one limit do not merge.
+#[test]
+fn shards_stopped_by_different_limits_merge_into_the_list_of_both() {
+    let a = stopping_shard("loop-value-bits", 64, 1);
+    let b = stopping_shard("loop-iterations", 300, 2);
+    let stop = |limit: &str, value| LimitStop {
+        limit: limit.to_string(),
+        value,
+    };
+    assert!(a.limit_stops > 0 && a.compared > 0, "{a}");
+    assert_eq!(a.limit_stop, vec![stop("loop-value-bits", 64)]);
+    let json = serde_json::to_value(&a).expect("JSON");
+    assert_eq!(
+        json["limit_stop"],
+        serde_json::json!([{"limit": "loop-value-bits", "value": 64}])
+    );
+    let back: Report = serde_json::from_value(json).expect("reads back");
+    assert_eq!(back, a);
+    let merged = merge(&[b.clone(), a.clone()]).expect("merges");
+    assert_eq!(merged.limit_stops, a.limit_stops + b.limit_stops);
+    assert_eq!(
+        merged.limit_stop,
+        vec![stop("loop-iterations", 300), stop("loop-value-bits", 64)]
+    );
+    assert_eq!(check_consistent(&merged), Ok(()));
+    assert_eq!(
+        serde_json::to_value(&merged).expect("JSON")["limit_stop"],
+        serde_json::json!([
+            {"limit": "loop-iterations", "value": 300},
+            {"limit": "loop-value-bits", "value": 64}
+        ])
+    );
+    let text = merged.to_string();
+    assert!(
+        text.contains(&format!(
+            ", {} stopped by the limits loop-iterations = 300, loop-value-bits = 64\n",
+            merged.limit_stops
+        )),
+        "{text}"
+    );
+    assert!(a
+        .to_string()
+        .contains("stopped by the limit loop-value-bits = 64\n"));
+
+    // One limit at two values: refused, the values named.
+    let c = stopping_shard("loop-iterations", 10_000, 1);
+    let e = merge(&[c, b.clone()])
+        .expect_err("two values of one limit")
+        .0;
+    assert_eq!(
+        e,
+        "shards stopped at different values of the limit loop-iterations: 10000 and 300 (run every shard with the same --limit)"
+    );
+    // A shard whose stops and their limits disagree is inconsistent.
+    let mut d = a.clone();
+    d.limit_stop.clear();
+    assert!(check_consistent(&d)
+        .expect_err("stops without a limit")
+        .contains("limit_stop lists 0 limits"));
+    let mut d = a;
+    d.limit_stop.push(stop("loop-iterations", 300));
+    assert!(check_consistent(&d)
+        .expect_err("unsorted")
+        .contains("are not distinct limits sorted by name"));
 }

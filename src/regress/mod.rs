@@ -566,17 +566,17 @@ fn text_run(args: &RegressArgs, fpcore: Option<&str>) -> Result<ExitCode, Error>
     }
     // An entry that compared nothing because its loops ran past a limit on the work of one
     // sample measured nothing for want of a larger limit: after its report, the run is an error
-    // naming the limit (the first one its samples stopped at).
+    // naming the limit (the first by name of those its samples stopped at).
     let stopped: Vec<&sweep::Entry> = entries
         .iter()
         .filter(|e| matches!(&e.outcome, Ok(r) if r.compared == 0 && r.limit_stops > 0))
         .collect();
     if let Some(first) = stopped.first() {
         let limit = match &first.outcome {
-            Ok(r) => r.limit_stop.as_deref().and_then(|s| {
-                let name = s.split(" = ").next().unwrap_or_default();
-                crate::limits::find(name)
-            }),
+            Ok(r) => r
+                .limit_stop
+                .first()
+                .and_then(|s| crate::limits::find(&s.limit)),
             Err(_) => None,
         }
         .unwrap_or(&exactcheck_core::limits::LOOP_ITERATIONS);

@@ -22,7 +22,10 @@
 //! * [`ExactStop::LoopLimit`]: the program's loops ran past the `loop-iterations` limit
 //!   ([`exactcheck_core::limits::LOOP_ITERATIONS`]). A loop's condition is decided on the exact
 //!   values like an `if`'s (refined, never guessed), so the iterations are those of the true
-//!   real computation.
+//!   real computation. The variables that decide a loop's condition are run alone first
+//!   (`walk`): when they alone pass the limit, the sample stops there without computing the
+//!   loop's other variables (a loop counting to two million stops at once, not after ten
+//!   thousand iterations of its whole state).
 //! * [`ExactStop::LoopValueLimit`]: in the exact zero test (below), which keeps every value
 //!   exact, a loop variable's value grew past the `loop-value-bits` limit
 //!   ([`exactcheck_core::limits::LOOP_VALUE_BITS`]): a diverging loop's exact values grow every
@@ -427,6 +430,10 @@ impl Evaluator for Real<'_> {
             Err(Halt::LoopLimit)
         }
     }
+    /// An exact iteration can cost thousands of big-number operations: loops count ahead.
+    fn iteration_count(&mut self) -> Option<&mut u64> {
+        Some(&mut self.iterations)
+    }
     /// A rational loop variable of more than `4p` bits becomes its enclosure at precision `p`:
     /// a loop's exact rationals can double in size every iteration (`x <- x*x + c`), an
     /// enclosure's cost stays that of the precision, and the refinement of `p` still reaches
@@ -618,6 +625,10 @@ impl Evaluator for Rad<'_> {
         } else {
             Err(RadStop::LoopLimit)
         }
+    }
+    /// Every value is exact here: loops count ahead.
+    fn iteration_count(&mut self) -> Option<&mut u64> {
+        Some(&mut self.iterations)
     }
     /// Every value here is exact: a loop variable past the `loop-value-bits` limit stops the
     /// sample (a diverging loop would grow its values up to `constant-bits`).

@@ -10,7 +10,7 @@
 //! decision of a comparison. Values are moved, not borrowed, so a domain of `Copy` numbers
 //! (`f64`) compiles to straight-line float code with no allocation, and `Result<_, Infallible>`
 //! costs nothing.
-use super::{ChainOp, CmpOp, Cond, Format, Func, Loop, Node, PowStyle};
+use super::{node_ops, ChainOp, CmpOp, Cond, Format, Func, Loop, Node, PowStyle};
 use crate::rational::Rational;
 
 /// The arithmetic a program is evaluated in.
@@ -70,6 +70,11 @@ pub(crate) trait Evaluator {
     /// `v` rounded to the precision in scope (by default unchanged).
     fn cast(&mut self, v: Self::V) -> Result<Self::V, Self::Stop> {
         Ok(v)
+    }
+    /// The loop iterations counted so far, for a domain that counts a loop's iterations ahead
+    /// (see [`eval_loop`]); `None` (the default) for a domain where an iteration is cheap.
+    fn iteration_count(&mut self) -> Option<&mut u64> {
+        None
     }
 }
 
@@ -197,16 +202,46 @@ pub(crate) fn eval_node<D: Evaluator>(
 }
 
 /// The value of a loop (see [`Loop`] for the two binding orders).
+///
+/// A domain that counts ahead ([`Evaluator::iteration_count`]) first runs the loop's *control*
+/// variables alone ([`control_vars`]: those the condition reads, and those their values read,
+/// when they are not all of them) on a copy of the slots. They are computed exactly as in the
+/// whole loop, so the whole loop runs the same iterations: if they run past the
+/// `loop-iterations` limit, the loop stops there, at the limit's stop, before any other variable
+/// is computed (a loop counting `i` to two million does not compute its state ten thousand
+/// times to learn that). Otherwise (they end within the limit, or stop for another reason) the
+/// count is put back and the whole loop runs as written.
 fn eval_loop<D: Evaluator>(d: &mut D, l: &Loop, slots: &mut [D::V]) -> Result<D::V, D::Stop> {
+    if d.iteration_count().is_some() {
+        if let Some(control) = control_vars(l) {
+            count_ahead(d, l, &control, slots)?;
+        }
+    }
+    run_loop(d, l, None, slots)?;
+    eval_node(d, &l.body, slots)
+}
+
+/// Runs the loop `l` (its initial values, then the updates while its condition holds) on
+/// `slots`, with only the variables `only` lists (indices into `l.vars`, in order) when given.
+fn run_loop<D: Evaluator>(
+    d: &mut D,
+    l: &Loop,
+    only: Option<&[usize]>,
+    slots: &mut [D::V],
+) -> Result<(), D::Stop> {
+    let vars: Vec<&(usize, Node, Node)> = match only {
+        Some(only) => only.iter().map(|&k| &l.vars[k]).collect(),
+        None => l.vars.iter().collect(),
+    };
     let step = |d: &mut D, slots: &mut [D::V], initial: bool| -> Result<(), D::Stop> {
         if l.sequential {
-            for (s, init, update) in &l.vars {
+            for (s, init, update) in vars.iter().copied() {
                 let x = eval_node(d, if initial { init } else { update }, slots)?;
                 slots[*s] = d.carry(x)?;
             }
         } else {
-            let mut values = Vec::with_capacity(l.vars.len());
-            for (s, init, update) in &l.vars {
+            let mut values = Vec::with_capacity(vars.len());
+            for (s, init, update) in vars.iter().copied() {
                 let x = eval_node(d, if initial { init } else { update }, slots)?;
                 values.push((*s, d.carry(x)?));
             }
@@ -221,7 +256,180 @@ fn eval_loop<D: Evaluator>(d: &mut D, l: &Loop, slots: &mut [D::V]) -> Result<D:
         d.iterate()?;
         step(d, slots, false)?;
     }
-    eval_node(d, &l.body, slots)
+    Ok(())
+}
+
+/// Runs the control variables `control` of `l` alone on a copy of `slots`: the stop of the
+/// `loop-iterations` limit if they run past it, `Ok` otherwise (the iteration count as it was).
+/// Every other stop of theirs is left to the whole loop, which meets it too, unless one of the
+/// other variables stops it earlier.
+fn count_ahead<D: Evaluator>(
+    d: &mut D,
+    l: &Loop,
+    control: &[usize],
+    slots: &[D::V],
+) -> Result<(), D::Stop> {
+    let Some(&mut before) = d.iteration_count() else {
+        return Ok(());
+    };
+    let mut copy = slots.to_vec();
+    let outcome = run_loop(d, l, Some(control), &mut copy);
+    let count = d.iteration_count().expect("the domain counts ahead");
+    // Only `iterate` raises the count, and it stops exactly when the count passes the limit.
+    // The count stays past the limit with the stop, as after `iterate`'s own stop.
+    match outcome {
+        Err(stop) if *count > exactcheck_core::limits::LOOP_ITERATIONS.get() => Err(stop),
+        _ => {
+            *count = before;
+            Ok(())
+        }
+    }
+}
+
+/// The control variables of `l` (indices into `l.vars`, in order): every variable whose slot
+/// the condition reads, and, repeatedly, every variable whose initial value or update writes a
+/// slot that a control variable's initial value or update reads. `None` when their initial
+/// values and updates are more than a quarter of the loop's operations (each variable counted
+/// one more): counting ahead would then cost too much of a loop that ends within the limit.
+pub(super) fn control_vars(l: &Loop) -> Option<Vec<usize>> {
+    let mut read = Vec::new();
+    cond_slots(&l.cond, &mut read);
+    let written: Vec<Vec<usize>> = l
+        .vars
+        .iter()
+        .map(|(s, init, update)| {
+            let mut w = vec![*s];
+            written_slots(init, &mut w);
+            written_slots(update, &mut w);
+            w
+        })
+        .collect();
+    let mut control = vec![false; l.vars.len()];
+    loop {
+        let mut grew = false;
+        for (k, w) in written.iter().enumerate() {
+            if !control[k] && w.iter().any(|s| read.contains(s)) {
+                control[k] = true;
+                grew = true;
+                let (_, init, update) = &l.vars[k];
+                node_slots(init, &mut read);
+                node_slots(update, &mut read);
+            }
+        }
+        if !grew {
+            break;
+        }
+    }
+    // Counting ahead pays when the control variables are a small part of the loop's work.
+    let ops = |k: usize| node_ops(&l.vars[k].1) + node_ops(&l.vars[k].2) + 1;
+    let all: usize = (0..l.vars.len()).map(ops).sum();
+    let part: usize = (0..l.vars.len()).filter(|&k| control[k]).map(ops).sum();
+    if part.saturating_mul(4) > all {
+        return None;
+    }
+    Some((0..l.vars.len()).filter(|&k| control[k]).collect())
+}
+
+/// Pushes onto `out` every slot `node` reads.
+fn node_slots(node: &Node, out: &mut Vec<usize>) {
+    visit(node, &mut |n| {
+        if let Node::Slot(s) = n {
+            out.push(*s);
+        }
+    });
+}
+
+/// Pushes onto `out` every slot `cond` reads.
+fn cond_slots(cond: &Cond, out: &mut Vec<usize>) {
+    visit_cond(cond, &mut |n| {
+        if let Node::Slot(s) = n {
+            out.push(*s);
+        }
+    });
+}
+
+/// Pushes onto `out` every slot `node` binds (its `let`s and loops).
+fn written_slots(node: &Node, out: &mut Vec<usize>) {
+    visit(node, &mut |n| match n {
+        Node::Let(bindings, _) => out.extend(bindings.iter().map(|(s, _)| *s)),
+        Node::While(l) => out.extend(l.vars.iter().map(|(s, _, _)| *s)),
+        _ => {}
+    });
+}
+
+/// Calls `f` on `node` and every node below it (conditions included).
+fn visit(node: &Node, f: &mut impl FnMut(&Node)) {
+    f(node);
+    match node {
+        Node::Input(_) | Node::Slot(_) | Node::Const(_) => {}
+        Node::Neg(a)
+        | Node::Sqrt(a)
+        | Node::Abs(a)
+        | Node::Pow(a, _, _)
+        | Node::Precision(_, a)
+        | Node::Cast(a) => visit(a, f),
+        Node::Add(a, b)
+        | Node::Sub(a, b)
+        | Node::Mul(a, b)
+        | Node::Div(a, b)
+        | Node::Min(a, b)
+        | Node::Max(a, b) => {
+            visit(a, f);
+            visit(b, f);
+        }
+        Node::Fma(a, b, c) => {
+            visit(a, f);
+            visit(b, f);
+            visit(c, f);
+        }
+        Node::Chain(a, rest) => {
+            visit(a, f);
+            for (_, b) in rest {
+                visit(b, f);
+            }
+        }
+        Node::Let(bindings, body) => {
+            for (_, v) in bindings {
+                visit(v, f);
+            }
+            visit(body, f);
+        }
+        Node::If(c, a, b) => {
+            visit_cond(c, f);
+            visit(a, f);
+            visit(b, f);
+        }
+        Node::Fun(_, args) => {
+            for a in args {
+                visit(a, f);
+            }
+        }
+        Node::While(l) => {
+            visit_cond(&l.cond, f);
+            for (_, init, update) in &l.vars {
+                visit(init, f);
+                visit(update, f);
+            }
+            visit(&l.body, f);
+        }
+    }
+}
+
+/// Calls `f` on every node of `cond`.
+fn visit_cond(cond: &Cond, f: &mut impl FnMut(&Node)) {
+    match cond {
+        Cond::Bool(_) => {}
+        Cond::Cmp(_, a, b) => {
+            visit(a, f);
+            visit(b, f);
+        }
+        Cond::And(cs) | Cond::Or(cs) => {
+            for c in cs {
+                visit_cond(c, f);
+            }
+        }
+        Cond::Not(c) => visit_cond(c, f),
+    }
 }
 
 /// The truth of `cond`.

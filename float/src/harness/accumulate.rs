@@ -22,7 +22,7 @@ pub(super) struct Accumulator {
     invalid_inputs: usize,
     undecided: usize,
     limit_stops: usize,
-    limit_stop: Option<String>,
+    limit_stop: Vec<crate::report::LimitStop>,
     refined: usize,
     float_failures: usize,
 }
@@ -44,7 +44,7 @@ impl Accumulator {
             invalid_inputs: 0,
             undecided: 0,
             limit_stops: 0,
-            limit_stop: None,
+            limit_stop: Vec::new(),
             refined: 0,
             float_failures: 0,
         }
@@ -57,7 +57,11 @@ impl Accumulator {
             CaseError::Undecided => self.undecided += 1,
             CaseError::LimitExceeded { limit, value } => {
                 self.limit_stops += 1;
-                crate::report::note_limit_stop(&mut self.limit_stop, &format!("{limit} = {value}"));
+                let stop = crate::report::LimitStop {
+                    limit: limit.to_string(),
+                    value,
+                };
+                crate::report::note_limit_stop(&mut self.limit_stop, &stop);
             }
         }
     }

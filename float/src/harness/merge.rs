@@ -56,6 +56,19 @@ pub fn check_consistent(r: &Report) -> Result<(), String> {
             r.compared, r.domain_errors, r.invalid_inputs, r.undecided, r.limit_stops
         ));
     }
+    if (r.limit_stops == 0) != r.limit_stop.is_empty() {
+        return Err(format!(
+            "its limit_stops is {} but its limit_stop lists {} limits",
+            r.limit_stops,
+            r.limit_stop.len()
+        ));
+    }
+    if let Some(w) = r.limit_stop.windows(2).find(|w| w[0].limit >= w[1].limit) {
+        return Err(format!(
+            "its limit stops {} and {} are not distinct limits sorted by name",
+            w[0], w[1]
+        ));
+    }
     for (what, n) in [("refined", r.refined), ("float failures", r.float_failures)] {
         if n > r.compared {
             return Err(format!("{what} {n} exceed compared {}", r.compared));
@@ -330,6 +343,7 @@ pub fn merge(reports: &[Report]) -> Result<Report, MergeError> {
     out.max_rel = 0.0;
     out.max_bits = 0.0;
     out.max_ulps_per_output.clear();
+    out.limit_stop.clear();
     out.above.iter_mut().for_each(|t| t.count = 0);
     let mut worst = Vec::new();
     for r in reports {
@@ -338,8 +352,18 @@ pub fn merge(reports: &[Report]) -> Result<Report, MergeError> {
         out.invalid_inputs += r.invalid_inputs;
         out.undecided += r.undecided;
         out.limit_stops += r.limit_stops;
-        if let Some(stops) = &r.limit_stop {
-            crate::report::note_limit_stop(&mut out.limit_stop, stops);
+        for stop in &r.limit_stop {
+            if let Some(other) = out
+                .limit_stop
+                .iter()
+                .find(|o| o.limit == stop.limit && o.value != stop.value)
+            {
+                return err(format!(
+                    "shards stopped at different values of the limit {}: {} and {} (run every shard with the same --limit)",
+                    stop.limit, other.value, stop.value
+                ));
+            }
+            crate::report::note_limit_stop(&mut out.limit_stop, stop);
         }
         out.refined += r.refined;
         out.float_failures += r.float_failures;

@@ -198,3 +198,129 @@ fn the_pid_benchmark_matches_an_independent_exact_loop() {
         crate::to_f64::rational_to_f64(&m)
     );
 }
+
+/// A loop whose end only its counter `i` decides, run `n` times, with a state cheap in exact
+/// rationals and larger than the counter: `a` alternates between `x` and `1 - x`, `b` between
+/// 1 and -1, `s` sums `a b`, and `d` divides by `i - k`, which is zero at the `k`-th iteration.
+fn counted_loop(n: u64, k: u64) -> Program {
+    program(&format!(
+        "(FPCore (x) (while* (< i {n}) ([i 0 (+ i 1)] [a x (- 1 a)] [b 1 (* b -1)] \
+         [s 0 (+ s (* a b))] [d 1 (/ (* d 1/2) (- i {k}))]) s))"
+    ))
+}
+
+#[test]
+fn the_variables_that_end_a_loop_are_found() {
+    let p = counted_loop(3, 100);
+    let Node::While(l) = &p.outputs[0] else {
+        panic!("a loop: {:?}", p.outputs[0])
+    };
+    assert_eq!(crate::program::walk::control_vars(l), Some(vec![0]));
+    // Newton's loop: the counter is half of the loop's variables and its work is not small.
+    let p = program("(FPCore (x) (while (< i 12) ([y x (/ (+ y (/ 2 y)) 2)] [i 0 (+ i 1)]) y))");
+    let Node::While(l) = &p.outputs[0] else {
+        panic!("a loop")
+    };
+    assert_eq!(crate::program::walk::control_vars(l), None);
+    // A condition on `e`, which reads `y`: both control the loop, `t` does not.
+    let p = program(
+        "(FPCore (x) (while* (> e 0) ([y x (* y 1/2)] [e 1 (- y 1/1024)] [i 0 (+ i 1)] \
+         [t 0 (+ (* t t) (* (* y y) (- (* 3 t) (* y (+ t 1)))))]) t))",
+    );
+    let Node::While(l) = &p.outputs[0] else {
+        panic!("a loop")
+    };
+    assert_eq!(crate::program::walk::control_vars(l), None);
+    let p = program(
+        "(FPCore (x) (while* (> e 0) ([y x (* y 1/2)] [e 1 (- y 1/1024)] [i 0 (+ i 1)] \
+         [t 0 (+ (* t t) (* (* y y) (- (* 3 t) (* y (+ t 1)))))] \
+         [u 0 (+ (* u u) (* (* y y) (- (* 3 u) (* y (+ u 1)))))] \
+         [v 0 (+ (* v v) (* (* y y) (- (* 3 v) (* y (+ v 1)))))]) t))",
+    );
+    let Node::While(l) = &p.outputs[0] else {
+        panic!("a loop")
+    };
+    assert_eq!(crate::program::walk::control_vars(l), Some(vec![0, 1]));
+}
+
+#[test]
+fn a_loop_counted_past_the_limit_stops_before_its_state_is_computed() {
+    let limit = LOOP_ITERATIONS.get();
+    let x = [q(1, 3)];
+    // Exactly at the limit the whole loop runs (the count ahead leaves the count as it was):
+    // s sums a b = x - (1 - x) + x - ... over the limit's iterations.
+    let r = exact_values(&counted_loop(limit, limit + 5), &[1.0 / 4.0]);
+    let half = i64::try_from(limit / 2).expect("small");
+    let want = if limit % 2 == 0 {
+        // Pairs of (1 - x) - x, with x = 1/4: 1/2 each.
+        big(half, 2)
+    } else {
+        big(half, 2) + big(3, 4)
+    };
+    // The first update gives a = 1 - x, b = -1: s = -(1 - x), then + x, ...
+    assert_eq!(r, vec![-want]);
+    // One more: the counter alone passes the limit, so the sample stops there, and `d`'s
+    // division by zero at the fifth iteration is never reached; within the limit it is.
+    assert_eq!(
+        counted_loop(limit + 1, 5).eval_exact(&x).unwrap_err(),
+        ExactStop::LoopLimit
+    );
+    assert_eq!(
+        counted_loop(limit, 5).eval_exact(&x).unwrap_err(),
+        ExactStop::OutsideDomain
+    );
+    // The float side runs as written: the limit's NaN.
+    assert!(counted_loop(limit + 1, 5).eval_f64(&[0.25])[0].is_nan());
+}
+
+#[test]
+fn nested_loops_count_their_iterations_together_when_counting_ahead() {
+    // An outer loop of 2 iterations whose update of `s` runs an inner counted loop of m
+    // iterations: 2 + 2 m iterations in all.
+    let limit = LOOP_ITERATIONS.get();
+    let text = |m: u64| {
+        format!(
+            "(FPCore (x) (while* (< k 2) ([k 0 (+ k 1)] [w x (* w 1/2)] [z x (* z -1)] \
+             [s 0 (while* (< i {m}) ([i 0 (+ i 1)] [a x (- 1 a)] [b 1 (* b -1)] \
+             [c 0 (+ c (* a b))] [d 0 (+ d (* c w))]) (+ s c))]) s))"
+        )
+    };
+    let m = (limit - 2) / 2;
+    // Each inner loop sums m terms a b, -1/2 per pair at x = 1/4 (as in `counted_loop`).
+    let inner = -big(i64::try_from(m / 2).expect("small"), 2) - big(3 * (m % 2) as i64, 4);
+    let r = exact_values(&program(&text(m)), &[0.25]);
+    assert_eq!(r, vec![&inner + &inner]);
+    assert_eq!(
+        program(&text(m + 1)).eval_exact(&[q(1, 4)]).unwrap_err(),
+        ExactStop::LoopLimit
+    );
+}
+
+#[test]
+fn rocket_trajectory_stops_at_the_iteration_limit_at_once() {
+    // Its loop counts `i` from 1 to 2,000,000: past the default limit whatever the inputs, so
+    // the exact side stops at the limit without computing the trajectory (ten thousand steps of
+    // sines and cosines of enclosures) first.
+    let suite = include_str!("../../../../tests/regress/fpbench/salsa.fpcore");
+    let all = parse_file(suite).expect("the suite parses");
+    let rocket = all
+        .iter()
+        .find(|b| b.name.as_deref() == Some("Rocket Trajectory"))
+        .and_then(|b| b.program.as_ref().ok())
+        .expect("Rocket Trajectory compiles");
+    for (mf, a) in [(150_000.0, 140.0), (1.0e30, -3.5), (-2.0e-20, 7.0e12)] {
+        assert_eq!(
+            rocket.eval_exact(&[exact_of(mf), exact_of(a)]).unwrap_err(),
+            ExactStop::LoopLimit
+        );
+    }
+    let Node::Let(_, body) = &rocket.outputs[0] else {
+        panic!("the constants are bound first: {:?}", rocket.outputs[0])
+    };
+    let Node::While(l) = &**body else {
+        panic!("the loop follows the constants")
+    };
+    let control = crate::program::walk::control_vars(l).expect("the counter alone");
+    assert_eq!(control.len(), 1);
+    assert_eq!(l.vars[control[0]].0, l.vars[12].0, "the counter `i`");
+}
