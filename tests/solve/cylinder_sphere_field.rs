@@ -130,3 +130,26 @@ fn field_input_off_the_unit_circle_or_with_an_irrational_precision_is_refused() 
     let precision = problem(PI_8, "[0,0]", "[1,0,0]", "2", r#","precision":"sqrt(2)""#);
     refused(&precision, &[], &["precision must be a rational number"]);
 }
+
+#[test]
+fn square_roots_alone_are_answered_in_their_field() {
+    // |(sqrt(2), sqrt(3), 0)| = sqrt(5) > 1 + 1: disjoint; sqrt(5) - 1 < 2: crossing for R = 2.
+    let far = answer(&problem(ZERO, "[0,0]", r#"["sqrt(2)","sqrt(3)",0]"#, "1", ""));
+    assert_agrees(&far, "disjoint");
+    let near = answer(&problem(ZERO, "[0,0]", r#"["sqrt(2)","sqrt(3)",0]"#, "2", ""));
+    assert_agrees(&near, "crossing");
+    assert!(near["coefficients"].to_string().contains("sqrt("), "{near}");
+    // Touching from outside at t = pi/4: centre (3/sqrt(2), 3/sqrt(2), 0), R = 2.
+    let touch = answer(&problem(
+        ZERO,
+        "[0,0]",
+        r#"["3*sqrt(2)/2","3*sqrt(2)/2",5]"#,
+        "2",
+        "",
+    ));
+    assert_agrees(&touch, "tangent");
+    let tp = &touch["tangent_points"][0];
+    assert!(tp["tau_interval"].is_array(), "{touch}");
+    let tau = tp["approx"]["tau"].as_f64().unwrap();
+    assert!((tau - (std::f64::consts::PI / 8.0).tan()).abs() < 1e-9, "{tau}");
+}

@@ -45,6 +45,8 @@ impl Kind for CylinderSphereKind {
         exact::exact(input)
     }
 
+    const RATIONAL_OR_FIELD: bool = true;
+
     fn compute_in_field(problem: &Problem) -> Result<ExactAnswer, Error> {
         let input: Input<FieldNumber> = problem.input_in_field(&[])?;
         field::exact_in_field(input)
