@@ -230,9 +230,8 @@ impl<'a> Problem<'a> {
             Some(values) => (values.clone(), self.names.clone()),
             None => self.irrational_values()?.into_iter().unzip(),
         };
-        let field = std::sync::Arc::new(super::field::ProblemField::build(
-            &values, &names, &extras,
-        )?);
+        let field =
+            std::sync::Arc::new(super::field::ProblemField::build(&values, &names, &extras)?);
         super::field::read_in(&field, || typed(self.text))
     }
 

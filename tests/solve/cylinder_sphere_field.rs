@@ -80,7 +80,10 @@ fn a_sphere_touching_at_an_irrational_tau_gives_an_isolated_touching_point() {
     let tps = a["tangent_points"].as_array().unwrap();
     assert_eq!(tps.len(), 1, "{a}");
     let tau = tps[0]["approx"]["tau"].as_f64().unwrap();
-    assert!((tau - (std::f64::consts::PI / 16.0).tan()).abs() < 1e-9, "{tau}");
+    assert!(
+        (tau - (std::f64::consts::PI / 16.0).tan()).abs() < 1e-9,
+        "{tau}"
+    );
     let [lo, hi] = [0, 1].map(|i| tps[0]["tau_interval"][i].as_str().unwrap().to_string());
     assert_ne!(lo, hi);
 }
@@ -134,9 +137,21 @@ fn field_input_off_the_unit_circle_or_with_an_irrational_precision_is_refused() 
 #[test]
 fn square_roots_alone_are_answered_in_their_field() {
     // |(sqrt(2), sqrt(3), 0)| = sqrt(5) > 1 + 1: disjoint; sqrt(5) - 1 < 2: crossing for R = 2.
-    let far = answer(&problem(ZERO, "[0,0]", r#"["sqrt(2)","sqrt(3)",0]"#, "1", ""));
+    let far = answer(&problem(
+        ZERO,
+        "[0,0]",
+        r#"["sqrt(2)","sqrt(3)",0]"#,
+        "1",
+        "",
+    ));
     assert_agrees(&far, "disjoint");
-    let near = answer(&problem(ZERO, "[0,0]", r#"["sqrt(2)","sqrt(3)",0]"#, "2", ""));
+    let near = answer(&problem(
+        ZERO,
+        "[0,0]",
+        r#"["sqrt(2)","sqrt(3)",0]"#,
+        "2",
+        "",
+    ));
     assert_agrees(&near, "crossing");
     assert!(near["coefficients"].to_string().contains("sqrt("), "{near}");
     // Touching from outside at t = pi/4: centre (3/sqrt(2), 3/sqrt(2), 0), R = 2.
@@ -151,5 +166,8 @@ fn square_roots_alone_are_answered_in_their_field() {
     let tp = &touch["tangent_points"][0];
     assert!(tp["tau_interval"].is_array(), "{touch}");
     let tau = tp["approx"]["tau"].as_f64().unwrap();
-    assert!((tau - (std::f64::consts::PI / 8.0).tan()).abs() < 1e-9, "{tau}");
+    assert!(
+        (tau - (std::f64::consts::PI / 8.0).tan()).abs() < 1e-9,
+        "{tau}"
+    );
 }

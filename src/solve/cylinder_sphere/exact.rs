@@ -314,7 +314,12 @@ fn quadratic_points(
                 p0.to_string()
             } else {
                 let sign = p1.sign();
-                plus_sqrt_term(&p0.to_string(), sign, &p1.abs().to_string(), &disc.to_string())
+                plus_sqrt_term(
+                    &p0.to_string(),
+                    sign,
+                    &p1.abs().to_string(),
+                    &disc.to_string(),
+                )
             };
             // The one conversion of sums of roots: finite and NaN-free where the terms alone
             // leave f64's range.

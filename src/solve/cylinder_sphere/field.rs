@@ -30,7 +30,15 @@ pub(super) fn exact_in_field(input: Input<FieldNumber>) -> Result<ExactAnswer, E
     let (cs, n_samples) = configuration(
         &input,
         |x| x.0.clone(),
-        |a, p| exact_angle(a, p, &mut notes, |x| x.0.clone(), |q| F::rational(q.clone())),
+        |a, p| {
+            exact_angle(
+                a,
+                p,
+                &mut notes,
+                |x| x.0.clone(),
+                |q| F::rational(q.clone()),
+            )
+        },
     )?;
     let width = match &input.precision {
         None => None,
@@ -60,7 +68,10 @@ pub(super) fn exact_in_field(input: Input<FieldNumber>) -> Result<ExactAnswer, E
             continue;
         }
         let angle = unit_circle_point(tau).expect("1 + tau^2 > 0 for rational tau");
-        let (c, s) = (F::rational(angle.cos.clone()), F::rational(angle.sin.clone()));
+        let (c, s) = (
+            F::rational(angle.cos.clone()),
+            F::rational(angle.sin.clone()),
+        );
         let (a, b) = cs.coefficients_at(&c, &s);
         let disc = a.square() - &b;
         let minus_a = a.neg_ref();
@@ -83,7 +94,10 @@ pub(super) fn exact_in_field(input: Input<FieldNumber>) -> Result<ExactAnswer, E
                 all_on_both &= ok;
                 let d = disc.to_string();
                 let m = minus_a.to_string();
-                (vec![format!("{m} - sqrt({d})"), format!("{m} + sqrt({d})")], pts)
+                (
+                    vec![format!("{m} - sqrt({d})"), format!("{m} + sqrt({d})")],
+                    pts,
+                )
             }
         };
         samples.push(Sample {
@@ -179,7 +193,13 @@ pub(super) fn exact_in_field(input: Input<FieldNumber>) -> Result<ExactAnswer, E
 /// field: the point is affine in `u`, `x = x0 + u d`, so each coordinate is `p0 + p1 w` with
 /// `p0 = x0 - A d` and `p1 = +-d`. Both surface equations are split into their part in the field
 /// and their `w` part (`w^2 = disc`), each checked to be exactly zero.
-fn quadratic_points(cs: &CylinderSphere<F>, c: &F, s: &F, minus_a: &F, disc: &F) -> (Vec<PointText>, bool) {
+pub(super) fn quadratic_points(
+    cs: &CylinderSphere<F>,
+    c: &F,
+    s: &F,
+    minus_a: &F,
+    disc: &F,
+) -> (Vec<PointText>, bool) {
     let x0 = cs.point(c, s, &F::zero());
     let d = &cs.point(c, s, &F::one()) - &x0;
     let p0 = &x0 + &d.scale(minus_a);
@@ -210,7 +230,11 @@ fn quadratic_points(cs: &CylinderSphere<F>, c: &F, s: &F, minus_a: &F, disc: &F)
     let mut pts = Vec::new();
     for sign in [-1i64, 1] {
         let p1 = d.scale(&F::from_i64(sign));
-        let (cx, cy, cz) = (coord(&p0.x, &p1.x), coord(&p0.y, &p1.y), coord(&p0.z, &p1.z));
+        let (cx, cy, cz) = (
+            coord(&p0.x, &p1.x),
+            coord(&p0.y, &p1.y),
+            coord(&p0.z, &p1.z),
+        );
         pts.push(([cx.0, cy.0, cz.0], [cx.1, cy.1, cz.1]));
     }
     (pts, ok)
