@@ -77,7 +77,7 @@ fn field_points_with_a_sqrt_term_are_checked_on_both_surfaces_exactly() {
     // sqrt(D) part: the points of u = -A +- sqrt(A^2 - B) pass (here u^2 = 49 - 1 - 25 at
     // t = pi/2), those of a wrong radicand fail.
     use exactcheck_core::cylinder_sphere::{Angle, CylinderSphere};
-    use exactcheck_core::{OrderedField, Ring, Vec3};
+    use exactcheck_core::{Ring, Vec3};
     use exactcheck_exact::algebraic::FieldElement as F;
     let q = F::from_i64;
     let level = Angle {
