@@ -130,17 +130,20 @@ fn scan_numbers(v: &Value) -> Result<Option<Vec<(exactcheck_exact::Algebraic, St
     if !leaves {
         return Ok(None);
     }
-    Ok(Some(
-        texts
-            .iter()
-            .filter_map(|s| {
-                number::parse_algebraic(s)
-                    .ok()
-                    .map(|a| (a, s.trim().to_string()))
-            })
-            .filter(|(a, _)| !a.is_rational())
-            .collect(),
-    ))
+    Ok(Some(irrational_strings(&texts)))
+}
+
+/// The irrational values of the number strings `texts` (those that parse), with their strings.
+fn irrational_strings(texts: &[&str]) -> Vec<(exactcheck_exact::Algebraic, String)> {
+    texts
+        .iter()
+        .filter_map(|s| {
+            number::parse_algebraic(s)
+                .ok()
+                .map(|a| (a, s.trim().to_string()))
+        })
+        .filter(|(a, _)| !a.is_rational())
+        .collect()
 }
 
 /// A problem whose envelope was read and checked: valid JSON within the `depth` limit, an
@@ -191,6 +194,20 @@ impl<'a> Problem<'a> {
         self.algebraic.as_deref()
     }
 
+    /// The irrational values of the problem's number strings (radicals included), with their
+    /// strings.
+    ///
+    /// # Errors
+    /// None in practice: the text was read as JSON by [`Problem::read`].
+    pub(crate) fn irrational_values(
+        &self,
+    ) -> Result<Vec<(exactcheck_exact::Algebraic, String)>, Error> {
+        let (value, _) = envelope(self.text)?;
+        let mut texts = Vec::new();
+        strings(&value, &mut texts);
+        Ok(irrational_strings(&texts))
+    }
+
     /// The problem read into an input type whose numbers are [`super::number::FieldNumber`]s:
     /// the number field of the problem's algebraic values and of `constants` (those a kind
     /// computes with, such as `sqrt(2)`) is built first ([`super::field::ProblemField`]).
@@ -209,12 +226,12 @@ impl<'a> Problem<'a> {
                     .expect("a kind's field constants are constant formulas")
             })
             .collect();
-        let values = self.algebraic.as_deref().unwrap_or(&[]);
-        let field = std::sync::Arc::new(super::field::ProblemField::build(
-            values,
-            &self.names,
-            &extras,
-        )?);
+        let (values, names) = match &self.algebraic {
+            Some(values) => (values.clone(), self.names.clone()),
+            None => self.irrational_values()?.into_iter().unzip(),
+        };
+        let field =
+            std::sync::Arc::new(super::field::ProblemField::build(&values, &names, &extras)?);
         super::field::read_in(&field, || typed(self.text))
     }
 

@@ -80,6 +80,10 @@ pub(crate) trait Kind {
     fn compute_in_field(problem: &Problem) -> Result<Self::Answer, Error> {
         Self::compute(problem.input()?)
     }
+    /// Whether the kind's exact input is rational and every other exact value (a square root
+    /// such as `"sqrt(2)"` too) is answered in the problem's number field
+    /// ([`Kind::compute_in_field`]).
+    const RATIONAL_OR_FIELD: bool = false;
 }
 
 /// A kind answered in f64 too (`--float`), and both ways side by side (`--both`, where its
@@ -137,11 +141,15 @@ fn schema_of<T: JsonSchema>() -> schemars::Schema {
 }
 
 /// The exact answer of a problem: in the problem's number field when a value leaves the radical
-/// field, else as the kind reads exact numbers (rationals, radicals).
+/// field (or, for a kind whose exact input is rational, when a value is irrational), else as the
+/// kind reads exact numbers (rationals, radicals).
 fn exact_answer<K: Kind>(problem: &Problem) -> Result<K::Answer, Error> {
-    match problem.algebraic_values() {
-        None => K::compute(problem.input()?),
-        Some(_) => K::compute_in_field(problem),
+    let in_field = problem.algebraic_values().is_some()
+        || (K::RATIONAL_OR_FIELD && !problem.irrational_values()?.is_empty());
+    if in_field {
+        K::compute_in_field(problem)
+    } else {
+        K::compute(problem.input()?)
     }
 }
 

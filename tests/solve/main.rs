@@ -11,6 +11,7 @@ mod chiang_conic;
 mod chiang_ph;
 mod conic;
 mod conic_core;
+mod cylinder_sphere_field;
 mod ph_core;
 mod ph_offset;
 mod planes;

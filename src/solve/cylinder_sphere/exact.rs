@@ -22,7 +22,7 @@ pub(super) fn exact(input: Input<RationalNumber>) -> Result<ExactAnswer, Error> 
     let (cs, n_samples) = configuration(
         &input,
         |x| x.0.clone(),
-        |a, p| exact_angle(a, p, &mut notes),
+        |a, p| exact_angle(a, p, &mut notes, |x| x.0.clone(), Rational::clone),
     )?;
     let width = match &input.precision {
         None => None,
@@ -313,7 +313,13 @@ fn quadratic_points(
             let text = if p1.is_zero() {
                 p0.to_string()
             } else {
-                format!("{p0} + {p1}*sqrt({disc})")
+                let sign = p1.sign();
+                plus_sqrt_term(
+                    &p0.to_string(),
+                    sign,
+                    &p1.abs().to_string(),
+                    &disc.to_string(),
+                )
             };
             // The one conversion of sums of roots: finite and NaN-free where the terms alone
             // leave f64's range.
@@ -327,4 +333,17 @@ fn quadratic_points(
         pts.push(([cx.0, cy.0, cz.0], [cx.1, cy.1, cz.1]));
     }
     (pts, ok)
+}
+
+/// `p0 + p1*sqrt(D)` written with the sign of `p1` as the operator (`p0 - 3*sqrt(D)`, never
+/// `p0 + -3*sqrt(D)`), given `p0`, the sign of `p1`, the text of `|p1|` (parenthesized here
+/// when it is a sum) and `D`.
+pub(super) fn plus_sqrt_term(p0: &str, p1_sign: Sign, p1_abs: &str, disc: &str) -> String {
+    let op = if p1_sign == Sign::Negative { '-' } else { '+' };
+    let compound = p1_abs.contains(" + ") || p1_abs.contains(" - ");
+    if compound {
+        format!("{p0} {op} ({p1_abs})*sqrt({disc})")
+    } else {
+        format!("{p0} {op} {p1_abs}*sqrt({disc})")
+    }
 }

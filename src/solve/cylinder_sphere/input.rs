@@ -5,7 +5,7 @@ use crate::solve::number::{Coords, FloatNumber, Radians, RationalNumber};
 use crate::solve::parse;
 use crate::Error;
 use exactcheck_core::cylinder_sphere::{Angle, CylinderSphere};
-use exactcheck_core::{OrderedField, Ring, Sign, Vec3};
+use exactcheck_core::{OrderedField, Sign, Vec3};
 use exactcheck_exact::Rational;
 use schemars::{json_schema, JsonSchema, Schema, SchemaGenerator};
 use serde::{Deserialize, Serialize};
@@ -17,7 +17,7 @@ use std::borrow::Cow;
 #[serde(deny_unknown_fields)]
 #[schemars(
     title = "cylinder_sphere",
-    description = "A cylinder and a sphere (Spaeth): decide whether and how they meet, the touching points or circle, A(t) and B(t), the parametrization and sample points of the intersection curve. Exact mode needs rational numbers; --float reads any finite number."
+    description = "A cylinder and a sphere (Spaeth): decide whether and how they meet, the touching points or circle, A(t) and B(t), the parametrization and sample points of the intersection curve. Exact mode reads exact numbers: rational ones, or algebraic values such as \"cos(pi/8)\" and \"sqrt(2 + sqrt(3))\" when one of the problem's values leaves the square-root field (the problem is then computed in its number field); --float reads any finite number."
 )]
 pub struct Input<N> {
     /// `"cylinder_sphere"`.
@@ -80,7 +80,7 @@ impl<N: JsonSchema> JsonSchema for AngleInput<N> {
         let n = generator.subschema_for::<N>();
         let radians = generator.subschema_for::<Radians>();
         json_schema!({
-            "description": "An angle: a point {cos, sin} of the unit circle (exact mode: rational, cos^2 + sin^2 = 1 exactly), or {radians} (exact mode takes the nearest rational point with tan(theta/2) of denominator <= 10^6 and reports it under approximated_angles); not both.",
+            "description": "An angle: a point {cos, sin} of the unit circle (exact mode: cos^2 + sin^2 = 1 exactly), or {radians} (exact mode takes the nearest rational point with tan(theta/2) of denominator <= 10^6 and reports it under approximated_angles); not both.",
             "oneOf": [
                 {
                     "type": "object",
@@ -137,11 +137,15 @@ pub struct AngleNote {
     pub deviation_radians: f64,
 }
 
-pub(super) fn exact_angle(
-    a: &AngleInput<RationalNumber>,
+/// An angle read exactly: `{cos, sin}` read by `num` and checked on the unit circle exactly;
+/// `{radians}` taken as a nearby rational point (noted in `notes`) and lifted by `lift`.
+pub(super) fn exact_angle<N, T: OrderedField + std::fmt::Display>(
+    a: &AngleInput<N>,
     path: &str,
     notes: &mut Vec<AngleNote>,
-) -> Result<Angle<Rational>, Error> {
+    num: impl Fn(&N) -> T,
+    lift: impl Fn(&Rational) -> T,
+) -> Result<Angle<T>, Error> {
     match angle_form(a, path)? {
         AngleForm::Radians(theta) => {
             let (angle, tau, dev) =
@@ -154,17 +158,18 @@ pub(super) fn exact_angle(
                 sin: angle.sin.to_string(),
                 deviation_radians: dev,
             });
-            Ok(angle)
+            Ok(Angle {
+                cos: lift(&angle.cos),
+                sin: lift(&angle.sin),
+            })
         }
         AngleForm::Point(c, s) => {
-            let norm = c.0.square() + s.0.square();
-            if norm != Rational::ONE {
+            let (c, s) = (num(c), num(s));
+            let norm = c.square() + s.square();
+            if norm != T::one() {
                 return Err(Error::Input(format!("{path}: cos^2 + sin^2 = {norm} != 1")));
             }
-            Ok(Angle {
-                cos: c.0.clone(),
-                sin: s.0.clone(),
-            })
+            Ok(Angle { cos: c, sin: s })
         }
     }
 }
@@ -247,7 +252,7 @@ pub fn configurations(text: &str) -> Result<Configurations, Error> {
         configuration(
             &input,
             |x| x.0.clone(),
-            |a, p| exact_angle(a, p, &mut notes),
+            |a, p| exact_angle(a, p, &mut notes, |x| x.0.clone(), Rational::clone),
         )
         .map(|(cs, _)| cs)
     });

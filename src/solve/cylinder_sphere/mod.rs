@@ -2,8 +2,9 @@
 //! coefficients of A and B, parametrization and sample points of the intersection curve.
 //!
 //! Exact mode works over Q with rational angles `{cos, sin}` (checked on the unit circle;
-//! `{radians}` is approximated by a nearby rational point and the answer says so); sample points
-//! are computed in the square-root field (or in `Q[w]/(w^2 - D)` when the radicand cannot be
+//! `{radians}` is approximated by a nearby rational point and the answer says so), and over the
+//! problem's number field when its values leave the square-root field (`"cos(pi/8)"`, module
+//! `field`); sample points are computed in the square-root field (or in `Q[w]/(w^2 - D)` when the radicand cannot be
 //! certified square-free), so each lies exactly on both surfaces (checked and reported). The
 //! touching points are the multiple roots of the discriminant (module doc of
 //! `exactcheck_core::cylinder_sphere`), each checked exactly on both surfaces; an identically
@@ -11,8 +12,8 @@
 //! exactly at four of its points. Float mode evaluates the same generic formulas in f64 and
 //! refuses non-finite input and overflowing coefficients.
 
-use super::number::{FloatNumber, RationalNumber};
-use super::{FloatKind, Kind};
+use super::number::{FieldNumber, FloatNumber, RationalNumber};
+use super::{FloatKind, Kind, Problem};
 use crate::Error;
 use exactcheck_core::cylinder_sphere::{Contact, CylinderSphere};
 use exactcheck_core::{OrderedField, Vec3};
@@ -26,6 +27,7 @@ pub use input::{
 
 mod answer;
 mod exact;
+mod field;
 mod float;
 mod input;
 #[cfg(test)]
@@ -41,6 +43,13 @@ impl Kind for CylinderSphereKind {
 
     fn compute(input: Self::Input) -> Result<ExactAnswer, Error> {
         exact::exact(input)
+    }
+
+    const RATIONAL_OR_FIELD: bool = true;
+
+    fn compute_in_field(problem: &Problem) -> Result<ExactAnswer, Error> {
+        let input: Input<FieldNumber> = problem.input_in_field(&[])?;
+        field::exact_in_field(input)
     }
 }
 

@@ -52,3 +52,54 @@ fn the_figure_eight_touches_at_its_crossing_point() {
         other => panic!("{other:?}"),
     }
 }
+
+#[test]
+fn a_sqrt_term_is_written_with_its_sign_as_the_operator() {
+    use super::exact::plus_sqrt_term;
+    use exactcheck_core::Sign;
+    assert_eq!(
+        plus_sqrt_term("1/2", Sign::Negative, "3", "5"),
+        "1/2 - 3*sqrt(5)"
+    );
+    assert_eq!(
+        plus_sqrt_term("1/2", Sign::Positive, "3", "5"),
+        "1/2 + 3*sqrt(5)"
+    );
+    assert_eq!(
+        plus_sqrt_term("1", Sign::Negative, "1 + sqrt(2)", "3"),
+        "1 - (1 + sqrt(2))*sqrt(3)"
+    );
+}
+
+#[test]
+fn field_points_with_a_sqrt_term_are_checked_on_both_surfaces_exactly() {
+    // The field path's check splits each surface equation into its field part and its
+    // sqrt(D) part: the points of u = -A +- sqrt(A^2 - B) pass (here u^2 = 49 - 1 - 25 at
+    // t = pi/2), those of a wrong radicand fail.
+    use exactcheck_core::cylinder_sphere::{Angle, CylinderSphere};
+    use exactcheck_core::{Ring, Vec3};
+    use exactcheck_exact::algebraic::FieldElement as F;
+    let q = F::from_i64;
+    let level = Angle {
+        cos: q(1),
+        sin: q(0),
+    };
+    let cs = CylinderSphere {
+        a: q(0),
+        b: q(0),
+        r: q(5),
+        beta: level.clone(),
+        gamma: level,
+        center: Vec3::new(q(1), q(0), q(0)),
+        radius: q(7),
+    };
+    let (c, s) = (q(0), q(1));
+    let (a, b) = cs.coefficients_at(&c, &s);
+    let disc = a.square() - &b;
+    let (pts, ok) = super::field::quadratic_points(&cs, &c, &s, &a.neg_ref(), &disc);
+    assert!(ok);
+    assert_eq!(pts[0].0[2], "0 - 1*sqrt(23)");
+    let wrong = disc.add_ref(&q(1));
+    let (_, ok) = super::field::quadratic_points(&cs, &c, &s, &a.neg_ref(), &wrong);
+    assert!(!ok);
+}
