@@ -26,7 +26,8 @@
 //! is a touching point: the touching circle.
 
 use crate::algebraic::FieldElement;
-use crate::univariate::{Bound, FieldUPoly, Root, RootBoundedInterval, RootInterval, UPoly};
+use crate::algebraic::FieldUPoly;
+use crate::univariate::{Bound, Root, RootBoundedInterval, RootInterval, UPoly};
 use crate::Rational;
 use exactcheck_core::cylinder_sphere::{Angle, Contact, CylinderSphere, Touching};
 use exactcheck_core::{OrderedField, Ring, Sign};
@@ -47,7 +48,7 @@ pub fn rational_angle(theta: f64, max_den: i64) -> (Angle<Rational>, Rational, f
 
 /// The discriminant polynomial `P(tau)` as the analysis needs it: its real roots, signs and
 /// low coefficients, for rational coefficients ([`UPoly`]) and for coefficients in a real number
-/// field ([`FieldUPoly`]), both answered by the real-root API of [`crate::univariate`].
+/// field ([`FieldUPoly`]), both answered by the real-root API of [`crate::univariate`] (the second through its norm).
 pub trait Discriminant: Clone + std::fmt::Debug {
     /// Whether `P` is the zero polynomial.
     fn vanishes(&self) -> bool;

@@ -59,6 +59,9 @@ mod display;
 mod element;
 mod field;
 mod names;
+mod poly_roots;
+#[cfg(test)]
+mod poly_roots_tests;
 #[cfg(test)]
 mod tests;
 mod trig;
@@ -66,6 +69,7 @@ mod trig;
 pub use display::root_variable;
 pub use element::FieldElement;
 pub use field::{primitive_element, FieldError, NumberField, PrimitiveElement};
+pub use poly_roots::{FieldUPoly, FieldUPolyDisplay};
 pub use trig::TrigError;
 
 use crate::coefficient::{Coefficient, Trig, TrigRefusal};

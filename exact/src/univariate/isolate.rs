@@ -454,7 +454,7 @@ impl UPoly {
 
 /// The set where a non-zero polynomial is `>= 0`, from its sign chart (see
 /// [`UPoly::nonnegative_set`]).
-pub(super) fn nonnegative_in_chart(chart: SignChart) -> Vec<RootBoundedInterval> {
+pub(crate) fn nonnegative_in_chart(chart: SignChart) -> Vec<RootBoundedInterval> {
     let SignChart { roots, gaps } = chart;
     let mut out = Vec::new();
     let mut start = (gaps[0] == Sign::Positive).then_some(Bound::NegInf);

@@ -22,8 +22,8 @@
 //! [`isolate_real_roots_sturm`], [`isolate_real_roots_in`], [`refine_real_root`],
 //! [`sign_at_real_root`], [`common_real_roots_in`], [`descartes_bound`]): one result type,
 //! [`RootInterval`], exact exactly when the root is rational. Polynomials with coefficients in a
-//! real number field ([`FieldUPoly`], module `over_field`) have the same root, sign-chart and
-//! refinement answers, found through the rational isolator applied to their norm. Every root count and isolation
+//! real number field (`algebraic::FieldUPoly`, which builds on this module) have the same root,
+//! sign-chart and refinement answers, found through the rational isolator applied to their norm. Every root count and isolation
 //! runs on Descartes' rule (module `descartes`): [`UPoly::roots`], [`UPoly::sign_chart`] and the
 //! sets built on them, [`UPoly::count_roots`], [`UPoly::count_real_roots`], and
 //! [`UPoly::isolate_roots`], which lays the roots out in the intervals of the dyadic bisection
@@ -77,9 +77,6 @@ mod descartes;
 mod factor;
 mod isolate;
 mod limbs;
-mod over_field;
-#[cfg(test)]
-mod over_field_tests;
 mod real_roots;
 mod resultant;
 mod sturm;
@@ -90,8 +87,7 @@ mod upoly;
 pub use descartes::{integer_real_roots, integer_real_roots_to, MAX_DESCARTES_DEGREE};
 pub use exactcheck_core::roots::{IsolatedRoot, ZeroPolynomial};
 pub use factor::Factorisation;
-pub(crate) use isolate::compare_simple;
-pub use over_field::{FieldUPoly, FieldUPolyDisplay};
+pub(crate) use isolate::{compare_simple, nonnegative_in_chart};
 pub use real_roots::{
     common_real_roots_in, compare_with_real_root, descartes_bound, isolate_real_roots,
     isolate_real_roots_in, isolate_real_roots_sturm, isolate_real_roots_sturm_in, refine_real_root,
@@ -201,7 +197,7 @@ fn floor(x: &Rational) -> BigInt {
     x.numer().div_floor(&x.denom())
 }
 
-fn sign_neg(s: Sign) -> Sign {
+pub(crate) fn sign_neg(s: Sign) -> Sign {
     match s {
         Sign::Negative => Sign::Positive,
         Sign::Zero => Sign::Zero,

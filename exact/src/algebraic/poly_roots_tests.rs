@@ -2,8 +2,10 @@
 //! isolator on rational polynomials taken into a field, and against products of linear and
 //! quadratic factors whose roots are known elements of the field.
 
-use super::*;
-use crate::algebraic::{Algebraic, FieldElement, NumberField};
+use super::poly_roots::*;
+use super::{FieldElement, NumberField};
+use crate::univariate::*;
+use crate::Algebraic;
 use exactcheck_core::Ring;
 use std::sync::Arc;
 

@@ -34,10 +34,9 @@
 //!
 //! Hand-written: no crate of the dependency set isolates real roots over number fields.
 
-use super::isolate::nonnegative_in_chart;
-use super::{isolate_real_roots, sign_neg, Root, RootBoundedInterval, RootInterval, SignChart};
-use super::{Bound, UPoly};
-use crate::algebraic::{FieldElement, NumberField};
+use super::{FieldElement, NumberField};
+use crate::univariate::{isolate_real_roots, nonnegative_in_chart, sign_neg};
+use crate::univariate::{Bound, Root, RootBoundedInterval, RootInterval, SignChart, UPoly};
 use crate::Rational;
 use exactcheck_core::limits::LimitError;
 use exactcheck_core::{Field, Ring, Sign};
