@@ -5,8 +5,9 @@
 use super::poly_roots::*;
 use super::{FieldElement, NumberField};
 use crate::univariate::*;
-use crate::Algebraic;
+use crate::{Algebraic, Rational};
 use exactcheck_core::Ring;
+use exactcheck_core::Sign;
 use std::sync::Arc;
 
 fn field() -> Arc<NumberField> {
