@@ -55,7 +55,7 @@ pub enum Command {
     /// binomial(n, k) and factorial(n) (integer constants), sin, cos and tan of angles (integer
     /// combinations of angle variables plus rational multiples of the constant pi, decided
     /// modulo cos(x)^2 + sin(x)^2 = 1). `--random K`: `holds`/`fails`/`undecided` with a proved
-    /// error bound (without these functions).
+    /// error bound (all of these except square roots of non-constants; no domains).
     #[command(after_help = PROVE_EXAMPLES)]
     Prove(crate::prove_cmd::ProveArgs),
     /// Solve one problem given in JSON (a file, or `-` / nothing for standard input) and print
