@@ -10,6 +10,7 @@ use super::{approx3, contact_name, on_both, strings};
 use crate::solve::number::RationalNumber;
 use crate::Error;
 use exactcheck_core::cylinder_sphere::{unit_circle_point, Angle, Contact, CylinderSphere};
+use exactcheck_core::limits::LimitError;
 use exactcheck_core::{OrderedField, Ring, Sign, Vec3};
 use exactcheck_exact::cylinder_sphere::analyze;
 use exactcheck_exact::univariate::{Bound, RootBoundedInterval, RootInterval};
@@ -106,31 +107,12 @@ pub(super) fn exact(input: Input<RationalNumber>) -> Result<ExactAnswer, Error> 
     // Touching points: every multiple root of the discriminant.
     let mut tangent_points = Vec::new();
     for tp in &analysis.tangent_params {
-        let (angle, tau_text) = match tp {
-            None => (
-                Angle {
-                    cos: Rational::from_integer(-1),
-                    sin: Rational::ZERO,
-                },
-                "infinity (t = pi)".to_string(),
-            ),
-            Some(ri) => match ri.exact_value() {
-                Some(v) => (
-                    unit_circle_point(v).expect("1 + tau^2 > 0 for rational tau"),
-                    v.to_string(),
-                ),
-                None => {
-                    let w = Rational::new(1, 1 << 40).expect("2^40 != 0");
-                    let refined = p.try_refine(ri, &w)?;
-                    tangent_points.push(TangentPoint::Isolated {
-                        tau_interval: [refined.lo.to_string(), refined.hi.to_string()],
-                        approx: TauApprox {
-                            tau: refined.to_f64(),
-                        },
-                    });
-                    continue;
-                }
-            },
+        let (angle, tau_text) = match touching_angle(tp.as_ref(), |r, w| p.try_refine(r, w))? {
+            Ok(at) => at,
+            Err(isolated) => {
+                tangent_points.push(isolated);
+                continue;
+            }
         };
         let (a, _) = cs.coefficients_at(&angle.cos, &angle.sin);
         let x = cs.point(&angle.cos, &angle.sin, &a.neg_ref());
@@ -176,6 +158,43 @@ pub(super) fn exact(input: Input<RationalNumber>) -> Result<ExactAnswer, Error> 
         all_points_on_both_surfaces: all_on_both,
         approximated_angles: notes,
         float: None,
+    })
+}
+
+/// The angle of a touching parameter (a multiple root of the discriminant, `None` for
+/// `t = pi`) with its printed `tau`, when the root is rational; otherwise the isolated touching
+/// point, its interval refined by `refine` to width `2^-40`.
+///
+/// # Errors
+/// The refinement's limit error.
+pub(super) fn touching_angle(
+    tp: Option<&RootInterval>,
+    refine: impl FnOnce(&RootInterval, &Rational) -> Result<RootInterval, LimitError>,
+) -> Result<Result<(Angle<Rational>, String), TangentPoint>, Error> {
+    Ok(match tp {
+        None => Ok((
+            Angle {
+                cos: Rational::from_integer(-1),
+                sin: Rational::ZERO,
+            },
+            "infinity (t = pi)".to_string(),
+        )),
+        Some(ri) => match ri.exact_value() {
+            Some(v) => Ok((
+                unit_circle_point(v).expect("1 + tau^2 > 0 for rational tau"),
+                v.to_string(),
+            )),
+            None => {
+                let w = Rational::new(1, 1 << 40).expect("2^40 != 0");
+                let refined = refine(ri, &w)?;
+                Err(TangentPoint::Isolated {
+                    tau_interval: [refined.lo.to_string(), refined.hi.to_string()],
+                    approx: TauApprox {
+                        tau: refined.to_f64(),
+                    },
+                })
+            }
+        },
     })
 }
 

@@ -6,18 +6,16 @@
 
 use super::answer::{
     Coefficients, CurvePoint, ExactAnswer, Parametrization, PointText, Sample, TangentPoint,
-    TauApprox,
 };
-use super::exact::{interval_ends, plus_sqrt_term, sample_taus, tangent_circle};
+use super::exact::{interval_ends, plus_sqrt_term, sample_taus, tangent_circle, touching_angle};
 use super::input::{configuration, exact_angle, Input};
 use super::{contact_name, on_both, strings};
 use crate::solve::number::FieldNumber;
 use crate::Error;
-use exactcheck_core::cylinder_sphere::{unit_circle_point, Angle, Contact, CylinderSphere};
+use exactcheck_core::cylinder_sphere::{unit_circle_point, Contact, CylinderSphere};
 use exactcheck_core::{OrderedField, Ring, Sign, Vec3};
 use exactcheck_exact::algebraic::FieldElement;
 use exactcheck_exact::cylinder_sphere::analyze_in_field;
-use exactcheck_exact::Rational;
 
 type F = FieldElement;
 
@@ -116,31 +114,12 @@ pub(super) fn exact_in_field(input: Input<FieldNumber>) -> Result<ExactAnswer, E
     // Touching points: every multiple root of the discriminant.
     let mut tangent_points = Vec::new();
     for tp in &analysis.tangent_params {
-        let (angle, tau_text) = match tp {
-            None => (
-                Angle {
-                    cos: Rational::from_integer(-1),
-                    sin: Rational::ZERO,
-                },
-                "infinity (t = pi)".to_string(),
-            ),
-            Some(ri) => match ri.exact_value() {
-                Some(v) => (
-                    unit_circle_point(v).expect("1 + tau^2 > 0 for rational tau"),
-                    v.to_string(),
-                ),
-                None => {
-                    let w = Rational::new(1, 1 << 40).expect("2^40 != 0");
-                    let refined = p.try_refine(ri, &w)?;
-                    tangent_points.push(TangentPoint::Isolated {
-                        tau_interval: [refined.lo.to_string(), refined.hi.to_string()],
-                        approx: TauApprox {
-                            tau: refined.to_f64(),
-                        },
-                    });
-                    continue;
-                }
-            },
+        let (angle, tau_text) = match touching_angle(tp.as_ref(), |r, w| p.try_refine(r, w))? {
+            Ok(at) => at,
+            Err(isolated) => {
+                tangent_points.push(isolated);
+                continue;
+            }
         };
         let (c, s) = (F::rational(angle.cos), F::rational(angle.sin));
         let (a, _) = cs.coefficients_at(&c, &s);
