@@ -199,18 +199,6 @@ pub struct Claim {
     pub check: Check,
 }
 
-/// A claim decided: the outcome (or why there is none), why it is not as expected whatever its
-/// verdict (a corrected form not proved equal to its `rhs`), and whether the error is bad input
-/// of an embedded claims file.
-pub struct Decided {
-    /// The outcome, or the error.
-    pub outcome: Result<Outcome, String>,
-    /// See [`Checked::problem`].
-    pub problem: Option<String>,
-    /// See [`Checked::bad_input`].
-    pub bad_input: bool,
-}
-
 impl Claim {
     /// The claim `id` of the unit's embedded claims file (statement and expected verdict filled
     /// in by the paper registry).

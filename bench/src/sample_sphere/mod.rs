@@ -184,16 +184,16 @@ mod tests {
     use super::*;
 
     /// The configuration of the workload, in f64.
-    pub(super) fn w3() -> CylinderSphere<f64> {
+    pub(super) fn workload_configuration() -> CylinderSphere<f64> {
         problem()
     }
 
     #[test]
     fn parallel_and_serial_sweeps_agree_exactly() {
-        let s = DiscSampler::new(&w3());
+        let s = DiscSampler::new(&workload_configuration());
         let n = 3 * CHUNK + 17;
         assert_eq!(s.sweep(n), s.sweep_serial(n));
-        let direct = sweep_direct(&w3(), n);
+        let direct = sweep_direct(&workload_configuration(), n);
         assert_eq!(direct.count_nonneg, s.sweep(n).count_nonneg);
     }
 }

@@ -1,5 +1,5 @@
 use super::*;
-use crate::sample_sphere::tests::w3;
+use crate::sample_sphere::tests::workload_configuration;
 use crate::sample_sphere::Sweep;
 use exactcheck_core::cylinder_sphere::{Angle, CylinderSphere};
 use exactcheck_core::rng::splitmix64;
@@ -37,7 +37,7 @@ const GRIDS: &[usize] = &[
 
 #[test]
 fn an_empty_grid_is_the_empty_summary_as_in_the_reference() {
-    let s = DiscSampler::new(&w3());
+    let s = DiscSampler::new(&workload_configuration());
     assert_eq!(s.sweep_addition(0), s.sweep(0));
     assert_eq!(s.sweep_addition_serial(0), s.sweep(0));
     assert_eq!(s.sweep(0).count_nonneg, 0);
@@ -46,7 +46,7 @@ fn an_empty_grid_is_the_empty_summary_as_in_the_reference() {
 /// Random configurations (axis point, radii, angles from Pythagorean triples, centre) from
 /// seeded SplitMix64, with the workload's first.
 fn configurations() -> Vec<CylinderSphere<f64>> {
-    let mut out = vec![w3()];
+    let mut out = vec![workload_configuration()];
     out.extend((0..4).map(|k| configuration(14 + k, k as usize)));
     out
 }
@@ -204,7 +204,7 @@ fn every_samples_discriminant_is_within_the_stated_bound() {
 
 #[test]
 fn the_workloads_discriminant_bound_is_as_stated() {
-    let s = DiscSampler::new(&w3());
+    let s = DiscSampler::new(&workload_configuration());
     let d = s.addition_disc_error();
     let scaled = s.addition_disc_error_scaled();
     println!("workload: D = {d:e}, {scaled} u of the scale");
@@ -326,7 +326,7 @@ fn the_reduction_is_the_plain_lane_sum_bit_for_bit() {
 }
 
 fn workload_sampler() -> DiscSampler {
-    DiscSampler::new(&w3())
+    DiscSampler::new(&workload_configuration())
 }
 
 #[test]
