@@ -18,6 +18,7 @@
 //! work on the workspace's own polynomial type over every [`Coefficient`] and honour its limits.
 
 use super::eval::{check_constant, size_error};
+use super::trig::{cos_name, sin_name};
 use super::*;
 use crate::poly::{Poly, Var, Vars};
 use crate::ratfun::RatFun;
@@ -338,10 +339,57 @@ fn integrate_arguments<'a>(
     Ok((&args[0], t, &args[2], &args[3]))
 }
 
+/// The variables of `vars` that change with the variable `t`: `t` itself, the cosine and sine
+/// of the angle `t`, and the square roots whose radicand has `t` as a free variable.
+fn moving_with(vars: &Vars, t: &str) -> Vec<Var> {
+    let mut out: Vec<Var> = [t.to_string(), cos_name(t), sin_name(t)]
+        .iter()
+        .filter_map(|name| vars.get(name))
+        .collect();
+    for root in vars.roots() {
+        let mut names = Vec::new();
+        root.radicand_expr().collect_variables(&mut names);
+        if names.iter().any(|n| n == t) {
+            out.push(root.var);
+        }
+    }
+    out
+}
+
+/// The refusal of an integrand that holds a function of the integration variable `t` other
+/// than `t` itself (`sin(t)`, `sqrt(t)`), `involves` telling which variables occur in it.
+fn refuse_functions_of(
+    call: &Expr,
+    integrand: &Expr,
+    t: &str,
+    vars: &Vars,
+    involves: impl Fn(Var) -> bool,
+) -> Result<(), ExprError> {
+    let own = vars.get(t);
+    match moving_with(vars, t)
+        .into_iter()
+        .find(|&w| Some(w) != own && involves(w))
+    {
+        None => Ok(()),
+        Some(w) => Err(bad(
+            call,
+            integrand.pos,
+            format!(
+                "the integrand {integrand} holds {}, which changes with {t}: only integrands \
+                 that are polynomials in {t} (their coefficients free of {t}) are integrated \
+                 exactly",
+                vars.name(w).unwrap_or(t)
+            ),
+        )),
+    }
+}
+
 /// Converts with `convert` in a copy of `vars` when `t` is not in it yet, so that the bound
-/// variable `t` stays out of the caller's table; the results (free of `t`) are mapped back,
-/// the other new variables added to `vars` in order of first appearance.
-fn with_bound<T>(
+/// variable `t` stays out of the caller's table; the results (free of `t` and of everything
+/// that changes with it, [`moving_with`]) are mapped back, the other new variables added to
+/// `vars` in order of first appearance: a square root as a root of `vars` (its radicand
+/// converted there), any other name as a variable.
+fn with_bound<C: Coefficient, T>(
     vars: &mut Vars,
     t: &str,
     convert: impl FnOnce(&mut Vars) -> Result<T, ExprError>,
@@ -356,18 +404,31 @@ fn with_bound<T>(
     if inner.len() == vars.len() {
         return Ok(value);
     }
+    let moving = moving_with(&inner, t);
+    let names = inner.names().to_vec();
     let mut map: Vec<Var> = Vec::with_capacity(inner.len());
-    for name in inner.names() {
-        map.push(if name == t {
-            // Unused: the result does not involve t.
-            Var::MAX
-        } else {
-            let v = vars.var(name);
-            limits::VARIABLES
-                .check(u64::from(v) + 1)
-                .map_err(|error| ExprError::Limit { pos, error })?;
-            v
-        });
+    for (index, name) in names.iter().enumerate() {
+        let inner_var = index as Var;
+        if moving.contains(&inner_var) {
+            // Unused: the result does not involve t or a function of it.
+            map.push(Var::MAX);
+            continue;
+        }
+        let new_root = (index >= vars.len())
+            .then(|| inner.roots().iter().find(|r| r.var == inner_var))
+            .flatten();
+        let v = match new_root {
+            Some(root) => {
+                let written = root.radicand_expr();
+                let radicand = written.to_poly::<C>(vars)?;
+                super::roots::root_variable(&radicand, written, vars)?
+            }
+            _ => vars.var(name),
+        };
+        limits::VARIABLES
+            .check(u64::from(v) + 1)
+            .map_err(|error| ExprError::Limit { pos, error })?;
+        map.push(v);
     }
     Ok(remap(value, &|v| map[v as usize]))
 }
@@ -446,11 +507,12 @@ pub(super) fn integrate_poly<C: Coefficient>(
     // The bounds first: their variables are free (a `t` there is the caller's).
     let lo = a.to_poly::<C>(vars)?;
     let hi = b.to_poly::<C>(vars)?;
-    with_bound(
+    with_bound::<C, _>(
         vars,
         t,
         |vars| {
             let p = e.to_poly::<C>(vars)?;
+            refuse_functions_of(call, e, t, vars, |w| p.degree_in(w) > 0)?;
             let Some(v) = vars.get(t) else {
                 // E does not involve t: E (b - a).
                 return p.try_mul(&(hi.clone() - lo.clone())).map_err(size);
@@ -483,11 +545,17 @@ pub(super) fn integrate_ratfun<C: Coefficient + Field>(
     let size = |err| size_error(err, call.pos);
     let lo = a.to_ratfun::<C>(vars)?;
     let hi = b.to_ratfun::<C>(vars)?;
-    with_bound(
+    with_bound::<C, _>(
         vars,
         t,
         |vars| {
             let f = e.to_ratfun::<C>(vars)?;
+            refuse_functions_of(call, e, t, vars, |w| {
+                [f.numerator(), f.denominator()]
+                    .into_iter()
+                    .chain(f.conditions())
+                    .any(|p| p.degree_in(w) > 0)
+            })?;
             let Some(v) = vars.get(t) else {
                 return f.mul(&hi.add(&lo, true).map_err(size)?).map_err(size);
             };

@@ -1,8 +1,11 @@
 //! The conversion of an [`Expr`] to a rational function ([`RatFun`]), and the arguments of
 //! `diff`.
 
+use super::derivative::{
+    has_variable_root, total_derivative, total_derivative_fraction, total_derivative_ratfun,
+};
 use super::eval::{check_constant, exponent_value, size_error};
-use super::trig::{cos_name, sin_name, total_derivative, total_derivative_ratfun, Trig};
+use super::trig::Trig;
 use super::*;
 use crate::poly::{Poly, Vars};
 use crate::ratfun::{Fraction, RatFun};
@@ -27,7 +30,9 @@ impl Expr {
                 b.has_fractions() || (b.has_variable() && exponent_value(e).is_ok_and(|k| k < 0))
             }
             ExprKind::Call(name, args) => match name.as_str() {
-                "diff" => args.first().is_some_and(Expr::has_fractions),
+                "diff" => args
+                    .first()
+                    .is_some_and(|e| e.has_fractions() || has_variable_root(e)),
                 "integrate" | "sum" => args.iter().any(Expr::has_fractions),
                 "tan" => args.iter().any(Expr::has_variable),
                 _ => false,
@@ -36,7 +41,7 @@ impl Expr {
     }
 
     /// Whether a variable occurs in the tree.
-    fn has_variable(&self) -> bool {
+    pub(super) fn has_variable(&self) -> bool {
         match &self.kind {
             ExprKind::Number(_) => false,
             ExprKind::Var(_) => true,
@@ -130,7 +135,7 @@ impl Expr {
                 // In `t` and, by the chain rule, in the cosine and sine of the angle `t`; zero
                 // when `t` occurs in neither (all of `e`'s variables are in the table now).
                 for _ in 0..k {
-                    f = total_derivative_ratfun(&f, vars, t).map_err(size)?;
+                    f = total_derivative_ratfun(&f, vars, t, self.pos)?;
                 }
                 f
             }
@@ -252,29 +257,6 @@ impl Expr {
             None => self.to_ratfun::<C>(vars).map(|r| Fraction::from_ratfun(&r)),
         }
     }
-}
-
-/// The total derivative of [`total_derivative_ratfun`] on a [`Fraction`]: in `t` and, by the
-/// chain rule, in the cosine and sine of the angle `t`.
-fn total_derivative_fraction<C: Field>(
-    f: &Fraction<C>,
-    vars: &Vars,
-    t: &str,
-) -> Option<Fraction<C>> {
-    let mut d = match vars.get(t) {
-        Some(v) => f.derivative(v)?,
-        None => f.mul(&Fraction::from_poly(Poly::zero()))?,
-    };
-    if let (Some(c), Some(s)) = (vars.get(&cos_name(t)), vars.get(&sin_name(t))) {
-        let by_c = f
-            .derivative(c)?
-            .mul(&Fraction::from_poly(Poly::<C>::var(s)))?;
-        let by_s = f
-            .derivative(s)?
-            .mul(&Fraction::from_poly(Poly::<C>::var(c)))?;
-        d = d.add(&by_c, true)?.add(&by_s, false)?;
-    }
-    Some(d)
 }
 
 /// The two sides of an identity `lhs = rhs` as rational functions: what [`Expr::to_ratfun`]
@@ -444,7 +426,7 @@ pub(super) fn diff_poly<C: Coefficient>(
     let (e, t, k) = diff_arguments(call, args)?;
     let mut p = e.to_poly::<C>(vars)?;
     for _ in 0..k {
-        p = total_derivative(&p, vars, t);
+        p = total_derivative(&p, vars, t, call.pos)?;
     }
     Ok(p)
 }

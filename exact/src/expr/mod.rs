@@ -127,6 +127,7 @@ mod calculus;
 #[cfg(test)]
 mod calculus_tests;
 mod constants;
+mod derivative;
 mod eval;
 mod fraction;
 mod from_poly;

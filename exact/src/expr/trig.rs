@@ -24,7 +24,7 @@
 use super::eval::size_error;
 use super::*;
 use crate::poly::{Poly, Var, Vars};
-use crate::ratfun::{poly_derivative, RatFun};
+use crate::ratfun::RatFun;
 use exactcheck_core::Field;
 use num_traits::{ToPrimitive, Zero};
 
@@ -566,44 +566,6 @@ pub(super) fn trig_value<C: Coefficient>(
         });
     }
     trig_constant::<C>(&angle.pi, which).map_err(|why| refused_call(call.pos, which.name(), why))
-}
-
-// ------------------------------------------------------------------------------ derivatives
-
-/// `d/dt` of a polynomial in `t` and in the cosine and sine of the angle `t`: the partial
-/// derivative in `t` plus the chain rule `d cos t/dt = -sin t`, `d sin t/dt = cos t`.
-pub(super) fn total_derivative<C: Ring>(p: &Poly<C>, vars: &Vars, t: &str) -> Poly<C> {
-    let mut d = match vars.get(t) {
-        Some(v) => poly_derivative(p, v),
-        None => Poly::zero(),
-    };
-    if let (Some(c), Some(s)) = (vars.get(&cos_name(t)), vars.get(&sin_name(t))) {
-        let (cp, sp) = (Poly::<C>::var(c), Poly::<C>::var(s));
-        d = d.sub_ref(&(poly_derivative(p, c) * sp)) + poly_derivative(p, s) * cp;
-    }
-    d
-}
-
-/// [`total_derivative`] of a rational function.
-pub(super) fn total_derivative_ratfun<C: Field>(
-    f: &RatFun<C>,
-    vars: &Vars,
-    t: &str,
-) -> Result<RatFun<C>, crate::poly::SizeError> {
-    let mut d = match vars.get(t) {
-        Some(v) => f.derivative(v)?,
-        None => f.mul(&RatFun::from_poly(Poly::zero()))?,
-    };
-    if let (Some(c), Some(s)) = (vars.get(&cos_name(t)), vars.get(&sin_name(t))) {
-        let by_c = f
-            .derivative(c)?
-            .mul(&RatFun::from_poly(Poly::<C>::var(s)))?;
-        let by_s = f
-            .derivative(s)?
-            .mul(&RatFun::from_poly(Poly::<C>::var(c)))?;
-        d = d.add(&by_c, true)?.add(&by_s, false)?;
-    }
-    Ok(d)
 }
 
 /// Whether the tree calls `sin`, `cos` or `tan`.

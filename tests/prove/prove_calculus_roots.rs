@@ -1,0 +1,101 @@
+//! `exactcheck prove` with `diff` and `integrate` of square roots and angles: the derivative of
+//! `sqrt(R)` follows the chain rule (`R' / (2 sqrt(R))`, a fraction whose divisor becomes a
+//! condition), and an integrand that holds a function of the integration variable other than
+//! the variable itself is refused with one line instead of being taken as a constant.
+
+use crate::timed;
+
+use timed::{prove_json, run_text as run};
+
+fn verdict(l: &str, r: &str) -> (i32, String) {
+    let (code, j) = prove_json(&[l, r]);
+    (
+        code,
+        j["verdict"]
+            .as_str()
+            .unwrap_or_else(|| panic!("{j}"))
+            .to_string(),
+    )
+}
+
+#[test]
+fn derivatives_of_square_roots_follow_the_chain_rule() {
+    for (l, r) in [
+        ("diff(sqrt(x), x)", "1/(2*sqrt(x))"),
+        ("diff(sqrt(x^2 + 1), x)", "x/sqrt(x^2 + 1)"),
+        ("diff(x*sqrt(x), x)", "3*sqrt(x)/2"),
+        ("diff(1/sqrt(x), x)", "-1/(2*x*sqrt(x))"),
+        ("diff(sqrt(x), x, 2)", "-1/(4*x*sqrt(x))"),
+        // A root inside a radicand, and an angle inside one.
+        (
+            "diff(sqrt(1 + sqrt(x)), x)",
+            "1/(4*sqrt(x)*sqrt(1 + sqrt(x)))",
+        ),
+        (
+            "diff(sqrt(1 + sin(x)^2), x)",
+            "sin(x)*cos(x)/sqrt(1 + sin(x)^2)",
+        ),
+        // A root that does not change with the variable is a constant of the derivative.
+        ("diff(sqrt(y)*x^2, x)", "2*x*sqrt(y)"),
+        ("diff(sqrt(2)*x, x)", "sqrt(2)"),
+    ] {
+        assert_eq!(verdict(l, r), (0, "proved".into()), "{l} = {r}");
+    }
+}
+
+#[test]
+fn a_root_is_not_a_constant_of_its_own_variable() {
+    for (l, r) in [
+        ("diff(sqrt(x), x)", "0"),
+        ("diff(1/sqrt(x), x)", "0"),
+        ("diff(sqrt(x^2 + 1), x)", "x"),
+    ] {
+        let (code, j) = prove_json(&[l, r]);
+        assert_eq!(
+            (code, j["verdict"].as_str()),
+            (1, Some("fails")),
+            "{l} = {r}: {j}"
+        );
+    }
+    // The counter-example is checked: at x = 1 the derivative of sqrt(x) is 1/2.
+    let (code, out, _) = run(&["prove", "diff(sqrt(x), x)", "0"]);
+    assert_eq!(code, 1, "{out}");
+    assert!(out.contains("LHS - RHS = 1/2"), "{out}");
+}
+
+#[test]
+fn integrands_with_functions_of_the_variable_are_refused() {
+    for (l, held) in [
+        ("integrate(sin(x), x, 0, pi)", "sin(x)"),
+        ("integrate(cos(t), t, 0, x)", "cos(t)"),
+        ("integrate(sqrt(t), t, 0, 1)", "sqrt(t)"),
+        ("integrate(t*sqrt(1 + t^2), t, 0, 1)", "sqrt(1 + t^2)"),
+        ("diff(integrate(sqrt(t), t, 0, x), x)", "sqrt(t)"),
+    ] {
+        let (code, _, err) = run(&["prove", l, "0"]);
+        assert_eq!(code, 2, "{l}: {err}");
+        assert_eq!(err.lines().count(), 1, "{l}: {err}");
+        assert!(
+            err.contains(&format!("holds {held}, which changes with")),
+            "{l}: {err}"
+        );
+    }
+}
+
+#[test]
+fn roots_and_angles_free_of_the_integration_variable_stay_themselves() {
+    for (l, r) in [
+        ("integrate(sqrt(y)*t, t, 0, 1)", "sqrt(y)/2"),
+        ("integrate(t*sqrt(1 + y^2), t, 0, 2)", "2*sqrt(y^2 + 1)"),
+        ("integrate(t*sin(y), t, 0, 1)", "sin(y)/2"),
+        (
+            "integrate(sqrt(y)/(1 + y^2)*t^2, t, 0, 3)",
+            "9*sqrt(y)/(1 + y^2)",
+        ),
+    ] {
+        assert_eq!(verdict(l, r), (0, "proved".into()), "{l} = {r}");
+    }
+    // The same root on both sides is one root: a false identity fails at a real point.
+    let (code, j) = prove_json(&["integrate(sqrt(y)*t, t, 0, 1)", "sqrt(y)"]);
+    assert_eq!((code, j["verdict"].as_str()), (1, Some("fails")), "{j}");
+}
