@@ -99,3 +99,19 @@ fn roots_and_angles_free_of_the_integration_variable_stay_themselves() {
     let (code, j) = prove_json(&["integrate(sqrt(y)*t, t, 0, 1)", "sqrt(y)"]);
     assert_eq!((code, j["verdict"].as_str()), (1, Some("fails")), "{j}");
 }
+
+#[test]
+fn half_integer_exponents_as_printed_are_square_roots() {
+    for (l, r) in [
+        ("x^(1/2)", "sqrt(x)"),
+        ("(1 + t^2)^(3/2)", "(1 + t^2)*sqrt(1 + t^2)"),
+        ("diff((1 + t^2)^(3/2), t)", "3*t*sqrt(1 + t^2)"),
+        ("8^(-3/2)", "sqrt(2)/32"),
+        ("x^0.5*x^0.5", "x"),
+    ] {
+        assert_eq!(verdict(l, r), (0, "proved".into()), "{l} = {r}");
+    }
+    let (code, _, err) = run(&["prove", "2^(1/3)", "1"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("or half of one"), "{err}");
+}

@@ -385,7 +385,10 @@ pub enum ExprError {
         why: String,
     },
     /// An exponent that is not a non-negative integer constant.
-    #[error("exponent at {pos} must be a non-negative integer constant, found {found}")]
+    #[error(
+        "exponent at {pos} must be a non-negative integer constant (or half of one: x^(1/2) is \
+         sqrt(x)), found {found}"
+    )]
     BadExponent {
         /// Byte position of the exponent.
         pos: usize,

@@ -305,6 +305,28 @@ impl<'a> Parser<'a> {
         self.bump();
         let exp = self.parse_exponent()?;
         let pos = base.pos;
+        // A half-integer constant exponent, as printed (`(1 + t^2)^(3/2)`, `x^0.5`), is a power
+        // of the square root: `sqrt(base)^n` for the exponent n/2.
+        if let Ok(q) = exp.eval_constant::<Rational>() {
+            if q.denom() == BigInt::from(2) {
+                let root = Expr {
+                    kind: ExprKind::Sqrt(Box::new(base)),
+                    pos,
+                };
+                if q.numer() == BigInt::from(1) {
+                    return Ok(root);
+                }
+                let mut n = Expr::number(Rational::from(q.numer()));
+                n.pos = exp.pos;
+                if let ExprKind::Neg(inner) = &mut n.kind {
+                    inner.pos = exp.pos;
+                }
+                return Ok(Expr {
+                    kind: ExprKind::Pow(Box::new(root), Box::new(n)),
+                    pos,
+                });
+            }
+        }
         Ok(Expr {
             kind: ExprKind::Pow(Box::new(base), Box::new(exp)),
             pos,

@@ -68,12 +68,14 @@ fn error_messages() {
     );
     assert_eq!(err("0^-1"), "division by zero at 2");
     assert_eq!(
-        err("x^(1/2)"),
-        "exponent at 2 must be a non-negative integer constant, found 1/2"
+        err("x^(1/3)"),
+        "exponent at 2 must be a non-negative integer constant (or half of one: x^(1/2) is \
+         sqrt(x)), found 1/3"
     );
     assert_eq!(
         err("x^y"),
-        "exponent at 2 must be a non-negative integer constant, found y"
+        "exponent at 2 must be a non-negative integer constant (or half of one: x^(1/2) is \
+         sqrt(x)), found y"
     );
     assert_eq!(
         err("x^10001"),
@@ -269,7 +271,8 @@ fn constant_evaluation() {
     );
     assert_eq!(
         ev("2^x").unwrap_err().to_string(),
-        "exponent at 2 must be a non-negative integer constant, found x"
+        "exponent at 2 must be a non-negative integer constant (or half of one: x^(1/2) is \
+         sqrt(x)), found x"
     );
 }
 
@@ -417,4 +420,26 @@ fn square_root_variables_keep_their_formula() {
         .to_poly(&mut other)
         .unwrap();
     assert_ne!(other, vars);
+}
+
+#[test]
+fn half_integer_exponents_are_powers_of_the_square_root() {
+    for (text, as_root) in [
+        ("x^(1/2)", "sqrt(x)"),
+        ("(1 + t^2)^(3/2)", "sqrt(1 + t^2)^3"),
+        ("x^0.5", "sqrt(x)"),
+        ("x^(-1/2)", "sqrt(x)^-1"),
+        ("2^(5/2)", "sqrt(2)^5"),
+    ] {
+        let parsed = parse_expr(text).unwrap();
+        let expected = parse_expr(as_root).unwrap();
+        assert_eq!(parsed.to_string(), expected.to_string(), "{text}");
+    }
+    // Constants take their exact values: 8^(-3/2) = 1/(16 sqrt(2)) = sqrt(2)/32.
+    let r: crate::Radical = parse_expr("8^(-3/2)").unwrap().eval_constant().unwrap();
+    let expected: crate::Radical = parse_expr("sqrt(2)/32").unwrap().eval_constant().unwrap();
+    assert_eq!(r, expected);
+    // Integer exponents, and exponents that are not constants, stay powers.
+    assert_eq!(parse_expr("x^(4/2)").unwrap().to_string(), "x^(4/2)");
+    assert!(parse_expr("x^y").unwrap().to_string().contains('^'));
 }
