@@ -271,7 +271,10 @@ fn paths_and_thread_counts_give_identical_bits() {
     assert!(KernelPath::Portable.is_available());
     assert!(KernelPath::detect().is_available());
     for path in paths.into_iter().filter(|p| !p.is_available()) {
-        assert_eq!(workload_sampler().sweep_addition_with(10, path, false), None);
+        assert_eq!(
+            workload_sampler().sweep_addition_with(10, path, false),
+            None
+        );
     }
 }
 
