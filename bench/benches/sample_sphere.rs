@@ -1,6 +1,6 @@
 //! Criterion benchmark of workload sample-sphere (f64 sampling of the Spaeth discriminant): the
-//! angle-addition kernel (no libm call per sample; all cores and one thread, on the detected path
-//! and on the portable one) beside the sampler with precomputed trigonometric coefficients and
+//! angle-addition kernel (no libm call per sample; all cores and one thread on the detected path,
+//! and one thread on every path this CPU runs: portable, AVX2, AVX-512) beside the sampler with precomputed trigonometric coefficients and
 //! `sin_cos` per sample (all cores and one thread) and a plain per-sample evaluation of the
 //! derived formulas.
 //!
@@ -36,14 +36,25 @@ fn bench(c: &mut Criterion) {
             reference.sum_sqrt
         );
     };
-    let portable = |parallel| {
+    let paths: Vec<(&str, KernelPath)> = [
+        ("portable", KernelPath::Portable),
+        ("avx2", KernelPath::Avx2),
+        ("avx512", KernelPath::Avx512),
+    ]
+    .into_iter()
+    .filter(|(_, p)| p.is_available())
+    .collect();
+    let on = |path, parallel| {
         sampler
-            .sweep_addition_with(n, KernelPath::Portable, parallel)
-            .expect("the portable path always runs")
+            .sweep_addition_with(n, path, parallel)
+            .expect("only available paths are run")
     };
     check("addition", sampler.sweep_addition(n));
     check("addition_serial", sampler.sweep_addition_serial(n));
-    check("addition_portable", portable(true));
+    for &(name, path) in &paths {
+        check(&format!("addition_{name}"), on(path, true));
+        check(&format!("addition_{name}_serial"), on(path, false));
+    }
     check("coef", sampler.sweep(n));
     check("coef_serial", sampler.sweep_serial(n));
 
@@ -56,7 +67,11 @@ fn bench(c: &mut Criterion) {
     g.bench_function("addition_serial", |b| {
         b.iter(|| sampler.sweep_addition_serial(n))
     });
-    g.bench_function("addition_portable_serial", |b| b.iter(|| portable(false)));
+    for &(name, path) in &paths {
+        g.bench_function(format!("addition_{name}_serial"), |b| {
+            b.iter(|| on(path, false))
+        });
+    }
     g.bench_function("coef_parallel", |b| b.iter(|| sampler.sweep(n)));
     g.bench_function("coef_serial", |b| b.iter(|| sampler.sweep_serial(n)));
     g.bench_function("direct_serial", |b| b.iter(|| sweep_direct(&cs, n)));

@@ -9,8 +9,8 @@
 //! * [`AdditionSweep::sweep_addition`] (and `sweep_addition_serial`), the fast kernel of
 //!   [`addition`]: the discriminant as a trigonometric polynomial of degree 2, angle addition per
 //!   block (one `sin_cos` per 512 samples), 4 multiplications and 4 additions per sample,
-//!   discriminants and square roots in vectorized lanes, within the error bounds derived there of
-//!   the reference;
+//!   discriminants and square roots in vectorized lanes (SSE2, AVX2 or AVX-512, detected at run
+//!   time, identical bits), within the error bounds derived there of the reference;
 //! * [`sweep_direct`], the baseline: the derived formulas evaluated per sample.
 //!
 //! The timed region of [`run`] covers what the anchor's (`sample_sphere_numpy.py`) does: from

@@ -255,7 +255,7 @@ fn count_and_sum_agree_with_the_reference_within_the_stated_bounds() {
 
 #[test]
 fn paths_and_thread_counts_give_identical_bits() {
-    let paths = [KernelPath::Portable, KernelPath::Avx2];
+    let paths = [KernelPath::Portable, KernelPath::Avx2, KernelPath::Avx512];
     for cs in configurations() {
         let s = DiscSampler::new(&cs);
         for &n in GRIDS.iter().filter(|&&n| n <= 300_000) {
@@ -270,11 +270,30 @@ fn paths_and_thread_counts_give_identical_bits() {
     }
     assert!(KernelPath::Portable.is_available());
     assert!(KernelPath::detect().is_available());
-    #[cfg(target_arch = "x86_64")]
-    if !KernelPath::Avx2.is_available() {
+    for path in paths.into_iter().filter(|p| !p.is_available()) {
         assert_eq!(
-            workload_sampler().sweep_addition_with(10, KernelPath::Avx2, false),
+            workload_sampler().sweep_addition_with(10, path, false),
             None
+        );
+    }
+}
+
+#[test]
+fn the_detected_path_is_the_widest_this_cpu_runs() {
+    let widest = [KernelPath::Avx512, KernelPath::Avx2, KernelPath::Portable]
+        .into_iter()
+        .find(|p| p.is_available());
+    assert_eq!(Some(KernelPath::detect()), widest);
+    #[cfg(target_arch = "x86_64")]
+    {
+        assert_eq!(
+            KernelPath::Avx2.is_available(),
+            is_x86_feature_detected!("avx2")
+        );
+        // AVX-512 exactly when the CPU has it and the compiler compiles for it (1.89 and newer).
+        assert_eq!(
+            KernelPath::Avx512.is_available(),
+            rustversion::cfg!(since(1.89)) && is_x86_feature_detected!("avx512f")
         );
     }
 }
@@ -343,7 +362,7 @@ fn check_values_at_ten_million() {
     let n = 10_000_000;
     let s = workload_sampler();
     let numpy = 13229714.773764007;
-    for path in [KernelPath::Portable, KernelPath::Avx2] {
+    for path in [KernelPath::Portable, KernelPath::Avx2, KernelPath::Avx512] {
         let Some(got) = s.sweep_addition_with(n, path, true) else {
             continue;
         };
