@@ -343,14 +343,7 @@ fn triangle1_near_its_degenerate_edge_loses_more() {
     let file = fpbench("rosa.fpcore");
     let run = |extra: &[&str]| {
         let args = [
-            &[
-                "--fpcore",
-                &file,
-                "--name",
-                "triangle1",
-                "--samples",
-                "400",
-            ][..],
+            &["--fpcore", &file, "--name", "triangle1", "--samples", "400"][..],
             extra,
         ]
         .concat();
@@ -405,29 +398,66 @@ fn daisy_polar_to_cartesian_as_an_array_reports_both_outputs() {
 }
 
 /// `--predicate` on Daisy's `matrixDeterminant` (a 3x3 determinant, the orientation test in
-/// three dimensions): every compared sample's float sign judged against the exact one, and on
-/// well-spread entries in [-10, 10] no sign is wrong.
+/// three dimensions): on well-spread entries in [-10, 10] no sign is wrong; drawn near the
+/// singular matrices (`--near det = 0`, its inputs `e` and `i` written `e0` and `i0`, since `e`
+/// and `i` are constants in the formula syntax) float signs are wrong or zero.
 #[test]
 fn the_determinant_benchmark_counts_sign_errors() {
-    let e = entry(&[
-        "--fpcore",
-        &fpbench("daisy.fpcore"),
-        "--name",
-        "matrixDeterminant",
-        "--samples",
-        "500",
-        "--predicate",
-    ]);
-    let p = &e["predicate"];
-    assert_eq!(p["compared"], 500, "{p}");
+    let file = fpbench("daisy.fpcore");
+    let run = |extra: &[&str]| {
+        let args = [
+            &[
+                "--fpcore",
+                &file,
+                "--name",
+                "matrixDeterminant",
+                "--samples",
+                "2000",
+                "--predicate",
+            ][..],
+            extra,
+        ]
+        .concat();
+        entry(&args)["predicate"].clone()
+    };
+    let uniform = run(&[]);
+    assert_eq!(uniform["compared"], 2000, "{uniform}");
     for k in [
         "wrong_sign",
         "float_zero_exact_nonzero",
         "float_nonzero_exact_zero",
         "no_float_sign",
     ] {
-        assert_eq!(p[k], 0, "{k}: {p}");
+        assert_eq!(uniform[k], 0, "{k}: {uniform}");
     }
+    let near = run(&[
+        "--near",
+        "a*e0*i0 + b*f*g + c*d*h = c*e0*g + b*d*i0 + a*f*h",
+    ]);
+    assert!(near["compared"].as_u64().unwrap() > 1000, "{near}");
+    assert!(near["wrong_sign"].as_u64().unwrap() > 0, "{near}");
+    assert!(
+        near["float_zero_exact_nonzero"].as_u64().unwrap() > 0,
+        "{near}"
+    );
+    // Naming the constant e where the benchmark has an input e is refused in one line.
+    let o = exactcheck(&[
+        "regress",
+        "--fpcore",
+        &file,
+        "--name",
+        "matrixDeterminant",
+        "--samples",
+        "10",
+        "--bin",
+        "a*e",
+    ]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert_eq!(
+        err.trim_end(),
+        "exactcheck: error: --bin: 'e' in 'a*e' is a constant in the formula syntax, not the input e of this benchmark: write e0 for that input"
+    );
 }
 
 /// Transcendental references on FPTaylor's `exp1x`, `(exp(x) - 1) / x`: every sample compared
