@@ -128,8 +128,9 @@ impl Bins {
     /// [`Error::Input`]: the expression does not parse or names a variable that is not an
     /// input.
     pub fn new(expr: &str, program: &Program) -> Result<Bins, Error> {
-        let bin = Program::parse(expr, Some(&program.inputs))
-            .map_err(|e| Error::Input(format!("--bin: {e}")))?;
+        let inputs = super::near::expression_inputs("--bin", expr, &program.inputs)?;
+        let bin =
+            Program::parse(expr, Some(&inputs)).map_err(|e| Error::Input(format!("--bin: {e}")))?;
         if bin.outputs.len() != 1 {
             return Err(Error::Input("--bin needs one expression".into()));
         }

@@ -3,7 +3,7 @@
 //! exact evaluation as the reference side ([`Program::eval_exact`]).
 
 use crate::Error;
-use exactcheck_exact::expr::{parse_expr_with_calls, AddOp, Expr, ExprKind};
+use exactcheck_exact::expr::{parse_expr_with_calls, reserved_constant, AddOp, Expr, ExprKind, PI};
 use exactcheck_exact::program::Program;
 use exactcheck_exact::Rational;
 use exactcheck_float::{ExactScalar, InputGen, NearSet, Rng};
@@ -13,9 +13,55 @@ use std::cmp::Ordering;
 /// reported as unreachable instead of sweeping invalid inputs.
 const PROBES: usize = 4;
 
+/// The input names an expression of `option` (`--bin`, `--near`) over a program's inputs is
+/// compiled with. An FPCore input may have a name the formula syntax reads as a constant (`e`,
+/// `i`, `pi`: FPBench's `matrixDeterminant` has an input `e`); such an input gets an alias, its
+/// name followed by zeros (`e0`, or `e00` if `e0` is taken), so that expressions over the other
+/// inputs work and this one can be named too. An expression naming the constant where the
+/// program has an input of that name is refused, since it would not mean the input.
+///
+/// # Errors
+/// `text` names such a constant.
+pub fn expression_inputs(
+    option: &str,
+    text: &str,
+    inputs: &[String],
+) -> Result<Vec<String>, Error> {
+    let constant = |n: &str| n == PI || reserved_constant(n).is_some();
+    if !inputs.iter().any(|n| constant(n)) {
+        return Ok(inputs.to_vec());
+    }
+    let mut out: Vec<String> = inputs.to_vec();
+    for k in 0..out.len() {
+        if !constant(&out[k]) {
+            continue;
+        }
+        let mut alias = format!("{}0", out[k]);
+        while out.contains(&alias) || inputs.contains(&alias) {
+            alias.push('0');
+        }
+        out[k] = alias;
+    }
+    // A syntax error is left to the caller's compilation, which reports it with its position.
+    if let Ok(expr) = parse_expr_with_calls(text) {
+        let mut named = Vec::new();
+        expr.collect_variables(&mut named);
+        if let Some(k) = inputs.iter().position(|n| constant(n) && named.contains(n)) {
+            return Err(Error::Input(format!(
+                "{option}: '{n}' in '{}' is a constant in the formula syntax, not the input {n} of this benchmark: write {} for that input",
+                text.trim(),
+                out[k],
+                n = inputs[k],
+            )));
+        }
+    }
+    Ok(out)
+}
+
 /// The program of `LHS - RHS` over the formula's inputs.
 fn difference(text: &str, inputs: &[String]) -> Result<Program, Error> {
     let bad = |why: String| Error::Input(format!("--near: {why}"));
+    let inputs = &expression_inputs("--near", text, inputs)?;
     let sides: Vec<&str> = text.split('=').collect();
     let [lhs, rhs] = sides[..] else {
         return Err(bad(format!(
@@ -118,6 +164,41 @@ mod tests {
                 .to_string();
             assert!(e.starts_with("--near: ") && e.contains(msg), "{text}: {e}");
         }
+    }
+
+    #[test]
+    fn inputs_named_like_constants_get_an_alias() {
+        let inputs = names(&["a", "e", "e0", "i", "pi"]);
+        assert_eq!(
+            expression_inputs("--bin", "a*e00", &inputs).unwrap(),
+            names(&["a", "e00", "e0", "i0", "pi0"])
+        );
+        let plain = names(&["x", "y"]);
+        assert_eq!(expression_inputs("--bin", "x", &plain).unwrap(), plain);
+        for (text, n, alias) in [
+            ("a*e", "e", "e00"),
+            ("i + 1", "i", "i0"),
+            ("pi", "pi", "pi0"),
+        ] {
+            let e = expression_inputs("--near", text, &inputs)
+                .unwrap_err()
+                .to_string();
+            assert_eq!(
+                e,
+                format!("--near: '{n}' in '{text}' is a constant in the formula syntax, not the input {n} of this benchmark: write {alias} for that input")
+            );
+        }
+        // The aliases compile, in the inputs' order.
+        let g = difference("e00 = a*i0", &inputs).unwrap();
+        assert_eq!(g.inputs, names(&["a", "e00", "e0", "i0", "pi0"]));
+        assert_eq!(
+            exact_sign(&g, &[2.0, 6.0, 0.0, 3.0, 0.0]),
+            Some(Ordering::Equal)
+        );
+        assert_eq!(
+            exact_sign(&g, &[2.0, 7.0, 0.0, 3.0, 0.0]),
+            Some(Ordering::Greater)
+        );
     }
 
     #[test]
