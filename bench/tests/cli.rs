@@ -37,6 +37,33 @@ fn rational_sum_json_gives_the_anchor_check_values() {
 }
 
 #[test]
+fn chiang_identity_json_gives_the_anchor_check_values() {
+    // The values every tool of `chiang_identity.py` prints: variables, terms of the expanded
+    // x-component left side, and both residuals zero (not zero with `--negative`).
+    for (m, n, nvars, terms) in [("2", "3", 26, 174), ("8", "13", 74, 5841)] {
+        for negative in [false, true] {
+            let mut args = vec!["chiang-identity", "--m", m, "--n", n, "--json"];
+            if negative {
+                args.push("--negative");
+            }
+            let o = bench(&args);
+            assert!(o.status.success());
+            let s = stdout(&o);
+            let zero = !negative;
+            for needle in [
+                format!("\"nvars\": {nvars}"),
+                format!("\"lhs_x_terms\": {terms}"),
+                format!("\"x_identity_zero\": {zero}"),
+                format!("\"weight_identity_zero\": {zero}"),
+                format!("\"negative\": {negative}"),
+            ] {
+                assert!(s.contains(&needle), "{needle} not in {s}");
+            }
+        }
+    }
+}
+
+#[test]
 fn rational_sum_full_size_check_values() {
     // The check values at N = 100,000 (tree mode), exact sum of all discriminants.
     let o = bench(&["rational-sum", "--mode", "tree"]);

@@ -213,6 +213,35 @@ proptest! {
         prop_assert_eq!(fast, slow);
     }
 
+    /// Compact keys at every field width (8, 16, 32 and 64 bits) against keys assembled from
+    /// the exponents one variable at a time; and compared as multi-word integers (most
+    /// significant word last) they keep the terms' decreasing order.
+    #[test]
+    fn keys_match_a_scan(
+        f in prop_oneof![
+            arb_poly(12, 3, 12),
+            arb_poly(12, 300, 12),
+            arb_poly(12, 70_000, 12),
+            arb_poly(5, u32::MAX, 8),
+        ],
+    ) {
+        let cap = f.shape.words * f.shape.per_word();
+        let need = max_exps(f.shape, &f.exps, f.len(), cap);
+        let (k, place) = key_layout(&need);
+        let fast = make_keys(f.shape, &f.exps, f.len(), k, &place);
+        let mut slow = vec![0u64; f.len() * k];
+        for (i, (m, _)) in f.terms().enumerate() {
+            for (v, e) in m.exponents() {
+                let (kw, sh) = place[v as usize];
+                slow[i * k + kw] |= u64::from(e) << sh;
+            }
+        }
+        prop_assert_eq!(&fast, &slow);
+        for pair in fast.chunks_exact(k).collect::<Vec<_>>().windows(2) {
+            prop_assert!(pair[0].iter().rev().cmp(pair[1].iter().rev()).is_gt());
+        }
+    }
+
     /// Dense products of several slabs (top exponents up to 7) with cancellation.
     #[test]
     fn slab_products_agree(
