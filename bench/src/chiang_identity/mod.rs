@@ -25,22 +25,6 @@ use exactcheck_core::Ring;
 /// the expansion grows about as `(m + n)^3`).
 pub const MAX_DEGREE: u32 = 48;
 
-/// Tells the C allocator (glibc) to keep freed memory for reuse instead of handing it back to
-/// the system. By default glibc serves every block above 128 KiB by its own `mmap` and trims the
-/// heap top after large frees, so each large intermediate polynomial of the identity is
-/// page-faulted in afresh (at (8, 13) about 1,190 page faults in one run, 460 of them repeated
-/// ones). Only the thresholds change: no memory is reserved or touched in advance, so the timed
-/// region still pays the first touch of every page it uses. Without effect on other C libraries.
-fn keep_freed_memory() {
-    #[cfg(all(target_os = "linux", target_env = "gnu"))]
-    // SAFETY: `mallopt` only changes allocator parameters; it is called before the timed region,
-    // with no allocation in flight on another thread of this process.
-    unsafe {
-        libc::mallopt(libc::M_MMAP_THRESHOLD, 1 << 30);
-        libc::mallopt(libc::M_TRIM_THRESHOLD, 1 << 30);
-    }
-}
-
 /// Runs the workload at degrees `(m, n)`.
 ///
 /// # Errors
@@ -53,7 +37,6 @@ pub fn run(m: u32, n: u32, negative: bool, json: bool) -> Result<String, Error> 
             "--m {m} and --n {n}: m + n must be at most {MAX_DEGREE}"
         )));
     }
-    keep_freed_memory();
     let watch = Stopwatch::start();
     let w = ring_identity(m, n, negative);
     let (x_zero, weight_zero) = (w.x_residual.is_zero(), w.weight_residual.is_zero());
