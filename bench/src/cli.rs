@@ -44,7 +44,7 @@ pub struct Cli {
 #[derive(Debug, Subcommand)]
 pub enum Workload {
     /// Chiang's ruled-surface/plane theorem at degrees (m, n), built and expanded as
-    /// `bench/scripts/anchors/w1_identity.py` does, both residuals tested for zero (a sparse
+    /// `bench/scripts/anchors/chiang_identity.py` does, both residuals tested for zero (a sparse
     /// polynomial identity).
     ChiangIdentity {
         /// Degree of the directrix curve V (at least 1; m + n at most 48).
@@ -53,7 +53,7 @@ pub enum Workload {
         /// Degree of the curve B (at least 1; m + n at most 48).
         #[arg(long, default_value_t = 13)]
         n: u32,
-        /// Perturb phi(0, 0) by 1/7, as `w1_identity.py --negative`: must not prove.
+        /// Perturb phi(0, 0) by 1/7, as `chiang_identity.py --negative`: must not prove.
         #[arg(long)]
         negative: bool,
         /// Print one JSON line (as the anchor scripts do) instead of text.

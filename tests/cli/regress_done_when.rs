@@ -533,3 +533,58 @@ fn newton_raphson_loops_to_a_compared_result() {
         "{e}"
     );
 }
+
+/// The README's regress section shows the explained worst input of `sqrt(x + 1) - sqrt(x)` and
+/// of the naive quadratic formula: each `$ exactcheck ...` command of that block prints every
+/// line the README shows after it (the `...` stands for the lines left out).
+#[test]
+fn the_readme_shows_what_regress_explains() {
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md"))
+        .expect("README.md");
+    let start = readme
+        .find("```console\n$ exactcheck regress --formula 'sqrt(x + 1) - sqrt(x)'")
+        .expect("the README's regress console block");
+    let block = &readme[start + "```console\n".len()..];
+    let block = &block[..block.find("```").expect("the block ends")];
+    let mut commands: Vec<(String, Vec<&str>)> = Vec::new();
+    let mut continued = false;
+    for line in block.lines() {
+        if let Some(command) = line.strip_prefix("$ ") {
+            commands.push((command.trim_end_matches('\\').to_string(), Vec::new()));
+            continued = line.ends_with('\\');
+        } else if continued {
+            let last = commands.last_mut().expect("a command first");
+            last.0.push_str(line.trim_end_matches('\\'));
+            continued = line.ends_with('\\');
+        } else if line != "..." {
+            commands.last_mut().expect("a command first").1.push(line);
+        }
+    }
+    assert_eq!(commands.len(), 2, "{block}");
+    for (command, shown) in &commands {
+        // The commands quote with single quotes only; split the words as a shell would.
+        let mut words = Vec::new();
+        let mut rest = command.trim_start_matches("exactcheck ").trim();
+        while !rest.is_empty() {
+            if let Some(quoted) = rest.strip_prefix('\'') {
+                let end = quoted.find('\'').expect("a closed quote");
+                words.push(quoted[..end].to_string());
+                rest = quoted[end + 1..].trim_start();
+            } else {
+                let end = rest.find(' ').unwrap_or(rest.len());
+                words.push(rest[..end].to_string());
+                rest = rest[end..].trim_start();
+            }
+        }
+        let args: Vec<&str> = words.iter().map(String::as_str).collect();
+        let out = exactcheck(&args);
+        assert!(out.status.success(), "{command}");
+        let text = String::from_utf8_lossy(&out.stdout);
+        for line in shown {
+            assert!(
+                text.lines().any(|l| l == *line),
+                "README: `{command}` does not print {line:?}; it prints\n{text}"
+            );
+        }
+    }
+}
