@@ -370,4 +370,3 @@ fn tangent_circle<T: Scalar>(cs: &CylinderSphere<T>) -> TangentCircle {
         },
     }
 }
-

@@ -4,7 +4,7 @@
 use super::answer::{exact_answer, Curve, ExactAnswer, PointText};
 use super::input::{configuration, exact_angle, Input};
 use super::{approx3, on_both, strings};
-use crate::solve::number::RationalNumber;
+use crate::solve::number::RationalOrFieldNumber;
 use crate::Error;
 use exactcheck_core::cylinder_sphere::{unit_circle_point, Angle, CylinderSphere};
 use exactcheck_core::{OrderedField, Ring, Sign, Vec3};
@@ -14,7 +14,7 @@ use exactcheck_exact::{Radical, Rational};
 use num_rational::BigRational;
 use num_traits::One;
 
-pub(super) fn exact(input: Input<RationalNumber>) -> Result<ExactAnswer, Error> {
+pub(super) fn exact(input: Input<RationalOrFieldNumber>) -> Result<ExactAnswer, Error> {
     let mut notes = Vec::new();
     let (cs, n_samples) = configuration(
         &input,
@@ -23,7 +23,7 @@ pub(super) fn exact(input: Input<RationalNumber>) -> Result<ExactAnswer, Error> 
     )?;
     let width = match &input.precision {
         None => None,
-        Some(RationalNumber(w)) => {
+        Some(RationalOrFieldNumber(w)) => {
             if w.sign() != Sign::Positive {
                 return Err(Error::Input("precision must be positive".into()));
             }
@@ -87,7 +87,6 @@ pub(super) fn exact(input: Input<RationalNumber>) -> Result<ExactAnswer, Error> 
     }
     exact_answer(&cs, analysis, &width, curve, notes)
 }
-
 
 /// Sample parameters: rational tau on a grid of `n_samples` angles (without t = pi), plus one
 /// inside every interval where the discriminant is `>= 0`; sorted, without repetitions.

@@ -93,7 +93,6 @@ pub(super) fn exact_in_field(input: Input<FieldNumber>) -> Result<ExactAnswer, E
     exact_answer(&cs, analysis, &width, curve, notes)
 }
 
-
 /// The two curve points `u = -A +- w`, `w = sqrt(disc)`, where `disc` is not a square in the
 /// field: the point is affine in `u`, `x = x0 + u d`, so each coordinate is `p0 + p1 w` with
 /// `p0 = x0 - A d` and `p1 = +-d`. Both surface equations are split into their part in the field

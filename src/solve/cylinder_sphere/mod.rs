@@ -12,12 +12,12 @@
 //! exactly at four of its points. Float mode evaluates the same generic formulas in f64 and
 //! refuses non-finite input and overflowing coefficients.
 
-use super::number::{FieldNumber, FloatNumber, RationalNumber};
+use super::number::{FieldNumber, FloatNumber, RationalOrFieldNumber};
+use super::scalar::Scalar;
 use super::{FloatKind, Kind, Problem};
 use crate::Error;
 use exactcheck_core::cylinder_sphere::{Contact, CylinderSphere};
 use exactcheck_core::{OrderedField, Vec3};
-use super::scalar::Scalar;
 
 pub use answer::ExactAnswer;
 pub use float::FloatAnswer;
@@ -38,7 +38,7 @@ pub struct CylinderSphereKind;
 
 impl Kind for CylinderSphereKind {
     const NAME: &'static str = "cylinder_sphere";
-    type Input = Input<RationalNumber>;
+    type Input = Input<RationalOrFieldNumber>;
     type Answer = ExactAnswer;
 
     fn compute(input: Self::Input) -> Result<ExactAnswer, Error> {
