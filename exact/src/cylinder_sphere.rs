@@ -30,6 +30,7 @@ use crate::algebraic::FieldUPoly;
 use crate::univariate::{Bound, Root, RootBoundedInterval, RootInterval, UPoly};
 use crate::Rational;
 use exactcheck_core::cylinder_sphere::{Angle, Contact, CylinderSphere, Touching};
+use exactcheck_core::limits::LimitError;
 use exactcheck_core::{OrderedField, Ring, Sign};
 
 /// The rational point of the unit circle nearest (by a convergent of `tan(theta/2)` with
@@ -46,9 +47,11 @@ pub fn rational_angle(theta: f64, max_den: i64) -> (Angle<Rational>, Rational, f
     (r.angle, r.tau_value, r.deviation)
 }
 
-/// The discriminant polynomial `P(tau)` as the analysis needs it: its real roots, signs and
-/// low coefficients, for rational coefficients ([`UPoly`]) and for coefficients in a real number
-/// field ([`FieldUPoly`]), both answered by the real-root API of [`crate::univariate`] (the second through its norm).
+/// The discriminant polynomial `P(tau)` as the analysis and its answer need it: its real roots,
+/// signs and low coefficients, the refinement of its root intervals and its printed form, for
+/// rational coefficients ([`UPoly`]) and for coefficients in a real number field
+/// ([`FieldUPoly`]), both answered by the real-root API of [`crate::univariate`] (the second
+/// through its norm).
 pub trait Discriminant: Clone + std::fmt::Debug {
     /// Whether `P` is the zero polynomial.
     fn vanishes(&self) -> bool;
@@ -62,49 +65,53 @@ pub trait Discriminant: Clone + std::fmt::Debug {
     fn positive_anywhere(&self) -> bool;
     /// The number of distinct real roots.
     fn real_root_count(&self) -> usize;
+    /// The interval `ri` of one of the real roots refined to width at most `width`.
+    ///
+    /// # Errors
+    /// A [`LimitError`] of `bisection` when more halvings than the limit would be needed.
+    fn refine_root(&self, ri: &RootInterval, width: &Rational) -> Result<RootInterval, LimitError>;
+    /// `P` printed as a polynomial in `var`.
+    fn text(&self, var: &str) -> String;
 }
 
-impl Discriminant for UPoly {
-    fn vanishes(&self) -> bool {
-        self.is_zero()
-    }
-    fn coefficient_vanishes(&self, k: usize) -> bool {
-        self.coeff(k).is_zero()
-    }
-    fn real_roots(&self) -> Vec<Root> {
-        self.roots()
-    }
-    fn nonnegative(&self) -> Vec<RootBoundedInterval> {
-        self.nonnegative_set()
-    }
-    fn positive_anywhere(&self) -> bool {
-        self.positive_somewhere()
-    }
-    fn real_root_count(&self) -> usize {
-        self.count_real_roots()
-    }
+/// The [`Discriminant`] impl of a polynomial type: [`UPoly`] and [`FieldUPoly`] share no trait,
+/// but have inherent methods of the same names and meaning, which each trait method calls.
+macro_rules! discriminant_by_inherent_methods {
+    ($($poly:ty),*) => {$(
+        impl Discriminant for $poly {
+            fn vanishes(&self) -> bool {
+                self.is_zero()
+            }
+            fn coefficient_vanishes(&self, k: usize) -> bool {
+                self.coeff(k).is_zero()
+            }
+            fn real_roots(&self) -> Vec<Root> {
+                self.roots()
+            }
+            fn nonnegative(&self) -> Vec<RootBoundedInterval> {
+                self.nonnegative_set()
+            }
+            fn positive_anywhere(&self) -> bool {
+                self.positive_somewhere()
+            }
+            fn real_root_count(&self) -> usize {
+                self.count_real_roots()
+            }
+            fn refine_root(
+                &self,
+                ri: &RootInterval,
+                width: &Rational,
+            ) -> Result<RootInterval, LimitError> {
+                self.try_refine(ri, width)
+            }
+            fn text(&self, var: &str) -> String {
+                self.display(var).to_string()
+            }
+        }
+    )*};
 }
 
-impl Discriminant for FieldUPoly {
-    fn vanishes(&self) -> bool {
-        self.is_zero()
-    }
-    fn coefficient_vanishes(&self, k: usize) -> bool {
-        self.coeff(k).is_zero()
-    }
-    fn real_roots(&self) -> Vec<Root> {
-        self.roots()
-    }
-    fn nonnegative(&self) -> Vec<RootBoundedInterval> {
-        self.nonnegative_set()
-    }
-    fn positive_anywhere(&self) -> bool {
-        self.positive_somewhere()
-    }
-    fn real_root_count(&self) -> usize {
-        self.count_real_roots()
-    }
-}
+discriminant_by_inherent_methods!(UPoly, FieldUPoly);
 
 /// What the exact analysis found; `P` is the discriminant's polynomial type ([`UPoly`] for
 /// rational input, [`FieldUPoly`] for input in a number field).

@@ -16,6 +16,10 @@
 //!
 //! * [`ExactNumber`]: any exact number (radical field).
 //! * [`RationalNumber`]: an exact rational (irrational input is refused).
+//! * [`RationalOrFieldNumber`]: the exact numbers of a kind computed over Q when its problem's
+//!   values are all rational and in their number field otherwise (`Kind::RATIONAL_OR_FIELD`):
+//!   read as [`RationalNumber`] (the driver sends a problem with an irrational value to the
+//!   field path, which reads [`FieldNumber`]), described in the schema as what it accepts.
 //! * [`FieldNumber`]: any exact number of a problem whose values leave the radical field
 //!   (`"cos(pi/8)"`, `"cos(2*pi/7)"`), as an element of the problem's number field
 //!   (the module `solve::field`).
@@ -37,6 +41,26 @@ use schemars::{json_schema, JsonSchema, Schema, SchemaGenerator};
 use serde::de::{Deserialize, Deserializer, Error as _};
 use serde_json::Value;
 use std::borrow::Cow;
+
+/// The `JsonSchema` of a number type: named after the type, a JSON `integer` (exact types) or
+/// any JSON `number` (approximate ones), or a string, with the description given.
+macro_rules! number_schema {
+    ($ty:ident, $json:literal, $description:expr) => {
+        impl JsonSchema for $ty {
+            fn schema_name() -> Cow<'static, str> {
+                stringify!($ty).into()
+            }
+
+            fn json_schema(_: &mut SchemaGenerator) -> Schema {
+                let description: String = $description;
+                json_schema!({
+                    "description": description,
+                    "anyOf": [{"type": $json}, {"type": "string"}]
+                })
+            }
+        }
+    };
+}
 
 /// How a number was written in the problem.
 enum Written {
@@ -228,18 +252,11 @@ impl<'de> Deserialize<'de> for ExactNumber {
     }
 }
 
-impl JsonSchema for ExactNumber {
-    fn schema_name() -> Cow<'static, str> {
-        "ExactNumber".into()
-    }
-
-    fn json_schema(_: &mut SchemaGenerator) -> Schema {
-        json_schema!({
-            "description": format!("An exact number: a JSON integer of any size, or {EXACT_STRING}. JSON floating-point literals are refused in exact mode (accepted with --float)."),
-            "anyOf": [{"type": "integer"}, {"type": "string"}]
-        })
-    }
-}
+number_schema!(
+    ExactNumber,
+    "integer",
+    format!("An exact number: a JSON integer of any size, or {EXACT_STRING}. JSON floating-point literals are refused in exact mode (accepted with --float).")
+);
 
 /// An exact number of a problem whose values leave the radical field: its value as an element
 /// of the problem's number field, built before the typed read (the module `solve::field`).
@@ -279,18 +296,30 @@ impl<'de> Deserialize<'de> for RationalNumber {
     }
 }
 
-impl JsonSchema for RationalNumber {
-    fn schema_name() -> Cow<'static, str> {
-        "RationalNumber".into()
-    }
+number_schema!(
+    RationalNumber,
+    "integer",
+    format!("An exact rational number: a JSON integer of any size, or {EXACT_STRING}; the value must be rational. JSON floating-point literals are refused in exact mode (accepted with --float).")
+);
 
-    fn json_schema(_: &mut SchemaGenerator) -> Schema {
-        json_schema!({
-            "description": format!("An exact rational number: a JSON integer of any size, or {EXACT_STRING}; the value must be rational. JSON floating-point literals are refused in exact mode (accepted with --float)."),
-            "anyOf": [{"type": "integer"}, {"type": "string"}]
-        })
+/// An exact number of a kind computed over Q when every value of its problem is rational and
+/// in the problem's number field otherwise (`Kind::RATIONAL_OR_FIELD`). It is read as a
+/// [`RationalNumber`]: a problem with an irrational value never reaches this type, the driver
+/// reads it with [`FieldNumber`] instead; the schema says so, unlike [`RationalNumber`]'s.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RationalOrFieldNumber(pub Rational);
+
+impl<'de> Deserialize<'de> for RationalOrFieldNumber {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        RationalNumber::deserialize(d).map(|RationalNumber(q)| RationalOrFieldNumber(q))
     }
 }
+
+number_schema!(
+    RationalOrFieldNumber,
+    "integer",
+    format!("An exact number: a JSON integer of any size, or {EXACT_STRING}. A problem whose values are all rational is computed over Q; one with an irrational value (\"sqrt(2)/2\", \"cos(pi/8)\") in the number field of its values. JSON floating-point literals are refused in exact mode (accepted with --float).")
+);
 
 /// The nearest `f64` of a real algebraic number: the midpoint of an isolating interval narrowed
 /// to a relative width of `2^-60` (an irrational number is not zero, so the interval separates
@@ -347,18 +376,11 @@ impl<'de> Deserialize<'de> for FloatNumber {
     }
 }
 
-impl JsonSchema for FloatNumber {
-    fn schema_name() -> Cow<'static, str> {
-        "FloatNumber".into()
-    }
-
-    fn json_schema(_: &mut SchemaGenerator) -> Schema {
-        json_schema!({
-            "description": format!("A number for f64 computation: any JSON number, or {EXACT_STRING}; rounded to the nearest f64, which must be finite."),
-            "anyOf": [{"type": "number"}, {"type": "string"}]
-        })
-    }
-}
+number_schema!(
+    FloatNumber,
+    "number",
+    format!("A number for f64 computation: any JSON number, or {EXACT_STRING}; rounded to the nearest f64, which must be finite.")
+);
 
 /// An angle in radians (any JSON number or an exact string), finite.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -372,18 +394,11 @@ impl<'de> Deserialize<'de> for Radians {
     }
 }
 
-impl JsonSchema for Radians {
-    fn schema_name() -> Cow<'static, str> {
-        "Radians".into()
-    }
-
-    fn json_schema(_: &mut SchemaGenerator) -> Schema {
-        json_schema!({
-            "description": format!("An angle in radians: any JSON number (floating literals accepted in every mode, since radians are approximate), or {EXACT_STRING}; it must be finite as an f64."),
-            "anyOf": [{"type": "number"}, {"type": "string"}]
-        })
-    }
-}
+number_schema!(
+    Radians,
+    "number",
+    format!("An angle in radians: any JSON number (floating literals accepted in every mode, since radians are approximate), or {EXACT_STRING}; it must be finite as an f64.")
+);
 
 /// A fixed number `N` of values of `T`: a JSON array whose wrong length is reported as
 /// "expected N coordinates, found M".

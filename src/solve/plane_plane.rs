@@ -235,7 +235,7 @@ fn exact<N, T: Scalar + Sqrt>(
                             if c.is_zero() {
                                 "0".to_string()
                             } else {
-                                format!("({c})/sqrt({k})")
+                                format!("{}/sqrt({k})", numerator(&c.to_string()))
                             }
                         })
                         .into_array(),
@@ -384,12 +384,63 @@ impl super::Attach<FloatAnswer> for ExactAnswer {
     }
 }
 
+/// The printed number `text` as the numerator of `text/sqrt(k)`: as it is when the quotient
+/// reads back as the same value and plainly so (a number, `-2`, `-cos(2*pi/7)`, a product),
+/// in parentheses when it is a sum or a difference, or has a division of its own, at its top
+/// level (`(-1 - sqrt(2))`, `(-1/2)`). The printers write binary `+` and `-` with a space on
+/// each side and a leading minus without one.
+fn numerator(text: &str) -> String {
+    let mut depth = 0usize;
+    let mut prev = ' ';
+    let mut compound = false;
+    for (i, ch) in text.char_indices() {
+        match ch {
+            '(' => depth += 1,
+            ')' => depth = depth.saturating_sub(1),
+            '/' if depth == 0 => compound = true,
+            '+' | '-' if depth == 0 && i > 0 && prev == ' ' => compound = true,
+            _ => {}
+        }
+        prev = ch;
+    }
+    if compound {
+        format!("({text})")
+    } else {
+        text.to_string()
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
     fn exact(text: &str) -> Result<ExactAnswer, Error> {
         super::exact(crate::solve::parse(text)?, |x: &ExactNumber| x.0.clone())
+    }
+
+    #[test]
+    fn a_numerator_is_parenthesized_only_when_the_quotient_would_read_otherwise() {
+        for (text, want) in [
+            ("-2", "-2"),
+            ("1", "1"),
+            ("-cos(2*pi/7)", "-cos(2*pi/7)"),
+            ("3*sqrt(2)", "3*sqrt(2)"),
+            ("sqrt(2 - sqrt(2))", "sqrt(2 - sqrt(2))"),
+            ("cos(pi/8)^2", "cos(pi/8)^2"),
+            ("-1 - sqrt(2)", "(-1 - sqrt(2))"),
+            ("6 - 7*cos(pi/8)", "(6 - 7*cos(pi/8))"),
+            ("1 + sqrt(5)", "(1 + sqrt(5))"),
+            ("-1/2", "(-1/2)"),
+            ("sqrt(3)/3", "(sqrt(3)/3)"),
+        ] {
+            assert_eq!(numerator(text), want, "{text}");
+            // The quotient reads back as the same value as the parenthesized one.
+            let plain: exactcheck_exact::Algebraic = format!("{}/sqrt(7)", numerator(text))
+                .parse()
+                .unwrap_or_else(|e| panic!("{text}: {e}"));
+            let safe: exactcheck_exact::Algebraic = format!("({text})/sqrt(7)").parse().unwrap();
+            assert_eq!(plain, safe, "{text}");
+        }
     }
 
     #[test]
@@ -413,7 +464,7 @@ mod tests {
             [
                 "0".to_string(),
                 "(-1 - sqrt(2))/sqrt(4 + 2*sqrt(2))".into(),
-                "(1)/sqrt(4 + 2*sqrt(2))".into()
+                "1/sqrt(4 + 2*sqrt(2))".into()
             ]
         );
         let ap = c.approx.unwrap();

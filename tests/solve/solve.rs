@@ -282,6 +282,75 @@ fn the_figure_eight_reports_its_touching_point() {
     assert!(a["tangent_circle"].is_null());
 }
 
+/// Every `unit_direction` of a committed `plane_plane` answer reads back through the exact
+/// parser as the unit vector it claims to be: its coordinates, parsed alone, are near the
+/// printed approximations, their squares sum to exactly 1, and it is exactly parallel to the
+/// printed `direction`.
+#[test]
+fn printed_unit_directions_parse_back_to_the_unit_vector() {
+    use exactcheck_exact::Algebraic;
+    let value = |text: &str| -> Algebraic {
+        text.parse()
+            .unwrap_or_else(|e| panic!("{text:?} does not parse back: {e}"))
+    };
+    let mut checked = 0;
+    for entry in std::fs::read_dir(golden_dir()).expect("golden dir") {
+        let path = entry.expect("entry").path();
+        let name = path.file_name().unwrap().to_string_lossy().into_owned();
+        if !(name.starts_with("plane_plane") && name.ends_with(".out")) {
+            continue;
+        }
+        let answer: serde_json::Value =
+            serde_json::from_slice(&std::fs::read(&path).expect("golden")).expect("JSON");
+        // Exact answers only (a `--float` answer prints numbers).
+        let Some(unit) = answer["unit_direction"]
+            .as_array()
+            .filter(|u| u.iter().all(serde_json::Value::is_string))
+        else {
+            continue;
+        };
+        let u: Vec<&str> = unit.iter().map(|x| x.as_str().expect("text")).collect();
+        // One generator at most: with two (a field of degree 12 under the square root) the
+        // exact parse takes minutes; the printer is the same for every field.
+        let generators: std::collections::HashSet<&str> = u
+            .iter()
+            .flat_map(|t| t.match_indices("cos(").map(|(i, _)| &t[i..]))
+            .map(|rest| &rest[..rest.find(')').map_or(rest.len(), |j| j + 1)])
+            .collect();
+        if generators.len() > 1 {
+            continue;
+        }
+        let d: Vec<&str> = answer["direction"]
+            .as_array()
+            .expect("a direction")
+            .iter()
+            .map(|x| x.as_str().expect("text"))
+            .collect();
+        for (i, text) in u.iter().enumerate() {
+            let (lo, hi) = value(text).enclosure(64);
+            let approx = answer["approx"]["unit_direction"][i]
+                .as_f64()
+                .expect("an approximation");
+            let mid = (lo.to_f64() + hi.to_f64()) / 2.0;
+            assert!(
+                (mid - approx).abs() < 1e-12,
+                "{name}: {text} = {mid}, not {approx}"
+            );
+        }
+        let norm = format!("({})^2 + ({})^2 + ({})^2", u[0], u[1], u[2]);
+        assert_eq!(value(&norm), value("1"), "{name}: |{u:?}| != 1");
+        for (i, j) in [(0, 1), (1, 2), (0, 2)] {
+            let cross = format!("({})*({}) - ({})*({})", u[i], d[j], u[j], d[i]);
+            assert_eq!(value(&cross), value("0"), "{name}: {u:?} not along {d:?}");
+        }
+        checked += 1;
+    }
+    assert!(
+        checked >= 4,
+        "only {checked} plane_plane answers with a unit direction"
+    );
+}
+
 /// `docs/schema/<kind>.json` is what the types generate (regenerate with
 /// `EXACTCHECK_BLESS=1 cargo test --release --test solve solve::`); every kind of `solve` has one.
 #[test]

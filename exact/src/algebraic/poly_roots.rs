@@ -33,9 +33,19 @@
 //! the field's degree is bounded by the `algebraic-degree` limit where a field is built.
 //!
 //! Hand-written: no crate of the dependency set isolates real roots over number fields.
+//!
+//! # Shared with the rational polynomials
+//! What is the same logic is [`crate::univariate`]'s: the root isolation of the norm and its
+//! refinement, the sign chart from the roots and the sign at `+inf` (`sign_chart_from`), the
+//! set where the polynomial is `>= 0` (`nonnegative_in_chart`) and the printed layout
+//! (`write_terms`; here a coefficient that is not rational is written in parentheses). What is
+//! only the same shape over another coefficient type stays here: the division, gcd, Yun's
+//! square-free decomposition and the multiplicity test ([`UPoly`]'s work over Q with primitive
+//! remainder sequences and rational signs; these over the field, with its inverses and exact
+//! field signs).
 
 use super::{FieldElement, NumberField};
-use crate::univariate::{isolate_real_roots, nonnegative_in_chart, sign_neg};
+use crate::univariate::{isolate_real_roots, nonnegative_in_chart, sign_chart_from, write_terms};
 use crate::univariate::{Bound, Root, RootBoundedInterval, RootInterval, SignChart, UPoly};
 use crate::Rational;
 use exactcheck_core::limits::LimitError;
@@ -327,17 +337,7 @@ impl FieldUPoly {
 
     /// The roots with multiplicities and the sign on every gap between them.
     pub fn sign_chart(&self) -> SignChart {
-        let roots = self.roots();
-        let mut gaps = vec![Sign::Zero; roots.len() + 1];
-        let mut s = self.sign_at_pos_inf();
-        gaps[roots.len()] = s;
-        for (i, r) in roots.iter().enumerate().rev() {
-            if r.multiplicity % 2 == 1 {
-                s = sign_neg(s);
-            }
-            gaps[i] = s;
-        }
-        SignChart { roots, gaps }
+        sign_chart_from(self.roots(), self.sign_at_pos_inf())
     }
 
     /// The set `{t : p(t) >= 0}` as disjoint closed intervals, increasing (as
@@ -390,40 +390,18 @@ pub struct FieldUPolyDisplay<'a> {
 
 impl fmt::Display for FieldUPolyDisplay<'_> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        if self.poly.is_zero() {
-            return f.write_str("0");
-        }
-        let mut first = true;
-        for (k, c) in self.poly.coeffs.iter().enumerate().rev() {
-            if c.is_zero() {
-                continue;
-            }
-            let text = c.to_string();
-            let rational = c.is_rational();
-            let (negative, mag) = match (rational, text.strip_prefix('-')) {
-                (true, Some(rest)) => (true, rest.to_string()),
-                (true, None) => (false, text.clone()),
-                (false, _) => (false, format!("({text})")),
-            };
-            match (first, negative) {
-                (true, true) => f.write_str("-")?,
-                (true, false) => {}
-                (false, true) => f.write_str(" - ")?,
-                (false, false) => f.write_str(" + ")?,
-            }
-            first = false;
-            if k == 0 {
-                f.write_str(&mag)?;
-            } else {
-                if mag != "1" {
-                    write!(f, "{mag}*")?;
+        let terms = self.poly.coeffs.iter().enumerate().rev();
+        write_terms(
+            f,
+            self.var,
+            terms.filter(|(_, c)| !c.is_zero()).map(|(k, c)| {
+                let text = c.to_string();
+                match (c.is_rational(), text.strip_prefix('-')) {
+                    (true, Some(rest)) => (k, true, rest.to_string()),
+                    (true, None) => (k, false, text),
+                    (false, _) => (k, false, format!("({text})")),
                 }
-                f.write_str(self.var)?;
-                if k > 1 {
-                    write!(f, "^{k}")?;
-                }
-            }
-        }
-        Ok(())
+            }),
+        )
     }
 }

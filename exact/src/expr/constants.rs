@@ -14,6 +14,7 @@
 //! [`needs_algebraic`] tells whether a tree has a leaf that a coefficient type cannot hold, so
 //! that callers take this path only when the fast one refuses.
 
+use super::map::at_pos;
 use super::trig::{linear_angle, Trig};
 use super::*;
 use crate::univariate::UPoly;
@@ -51,24 +52,6 @@ fn is_leaf(e: &Expr) -> bool {
     shape && only_pi(e)
 }
 
-/// `e` with every position set to `pos` (a tree built from text for the node at `pos`).
-fn at(e: Expr, pos: usize) -> Expr {
-    let kind = match e.kind {
-        ExprKind::Neg(x) => ExprKind::Neg(Box::new(at(*x, pos))),
-        ExprKind::Sqrt(x) => ExprKind::Sqrt(Box::new(at(*x, pos))),
-        ExprKind::Pow(a, b) => ExprKind::Pow(Box::new(at(*a, pos)), Box::new(at(*b, pos))),
-        ExprKind::Sum(ts) => ExprKind::Sum(ts.into_iter().map(|(o, t)| (o, at(t, pos))).collect()),
-        ExprKind::Product(fs) => {
-            ExprKind::Product(fs.into_iter().map(|(o, f)| (o, at(f, pos))).collect())
-        }
-        ExprKind::Call(n, args) => {
-            ExprKind::Call(n, args.into_iter().map(|a| at(a, pos)).collect())
-        }
-        k @ (ExprKind::Number(_) | ExprKind::Var(_)) => k,
-    };
-    Expr { kind, pos }
-}
-
 /// The trigonometric call `e` (`which` of `args`) with an angle `A + r pi`, `A` with variables
 /// and `r != 0`, split by the addition formulas; `None` when the angle has no such two parts
 /// (or is malformed: the conversion reports that).
@@ -102,7 +85,7 @@ fn split_angle(e: &Expr, which: Trig, args: &[Expr]) -> Option<Expr> {
         Trig::Tan => format!("({sin})/({cos})"),
     };
     let parsed = parse_expr(&text).expect("the split angle is well formed");
-    Some(at(parsed, e.pos))
+    Some(at_pos(&parsed, e.pos))
 }
 
 /// Rebuilds `e` top-down: `leaf` may replace a leaf candidate (`Some`), angles with variables
@@ -116,35 +99,17 @@ fn walk(
             return Ok(r);
         }
     }
-    let mut go = |x: &Expr| walk(x, leaf);
-    let kind = match &e.kind {
-        ExprKind::Number(_) | ExprKind::Var(_) => return Ok(e.clone()),
-        ExprKind::Call(name, args) => {
-            if let Some(which) = Trig::from_name(name) {
-                if let Some(split) = split_angle(e, which, args) {
-                    return walk(&split, leaf);
-                }
-                // An angle is an integer combination of variables plus a multiple of pi:
-                // nothing in it to rewrite.
-                return Ok(e.clone());
+    if let ExprKind::Call(name, args) = &e.kind {
+        if let Some(which) = Trig::from_name(name) {
+            if let Some(split) = split_angle(e, which, args) {
+                return walk(&split, leaf);
             }
-            ExprKind::Call(name.clone(), args.iter().map(go).collect::<Result<_, _>>()?)
+            // An angle is an integer combination of variables plus a multiple of pi:
+            // nothing in it to rewrite.
+            return Ok(e.clone());
         }
-        ExprKind::Neg(x) => ExprKind::Neg(Box::new(go(x)?)),
-        ExprKind::Sqrt(x) => ExprKind::Sqrt(Box::new(go(x)?)),
-        ExprKind::Pow(a, b) => ExprKind::Pow(Box::new(go(a)?), Box::new(go(b)?)),
-        ExprKind::Sum(ts) => ExprKind::Sum(
-            ts.iter()
-                .map(|(o, t)| Ok((*o, go(t)?)))
-                .collect::<Result<_, ExprError>>()?,
-        ),
-        ExprKind::Product(fs) => ExprKind::Product(
-            fs.iter()
-                .map(|(o, f)| Ok((*o, go(f)?)))
-                .collect::<Result<_, ExprError>>()?,
-        ),
-    };
-    Ok(Expr { kind, pos: e.pos })
+    }
+    e.try_map_children(|x| walk(x, leaf))
 }
 
 /// `e` with its angles split and every constant leaf evaluated exactly: a rational one becomes a
@@ -162,7 +127,7 @@ pub fn abstract_constants(e: &Expr, leaves: &mut Vec<ConstantLeaf>) -> Result<Ex
             Err(err) => return Err(err),
         };
         if let Some(q) = value.to_rational() {
-            return Ok(Some(at(Expr::number(q.clone()), x.pos)));
+            return Ok(Some(at_pos(&Expr::number(q.clone()), x.pos)));
         }
         let i = match leaves.iter().position(|l| l.value == value) {
             Some(i) => i,
@@ -183,34 +148,13 @@ pub fn abstract_constants(e: &Expr, leaves: &mut Vec<ConstantLeaf>) -> Result<Ex
 
 /// `e` with the placeholder of leaf `i` replaced by `values[i]`.
 pub fn fill_constants(e: &Expr, values: &[Expr]) -> Expr {
-    let kind = match &e.kind {
-        ExprKind::Var(n) => match n.strip_prefix('#').and_then(|i| i.parse::<usize>().ok()) {
-            Some(i) if i < values.len() => return at(values[i].clone(), e.pos),
-            _ => return e.clone(),
-        },
-        ExprKind::Number(_) => return e.clone(),
-        ExprKind::Neg(x) => ExprKind::Neg(Box::new(fill_constants(x, values))),
-        ExprKind::Sqrt(x) => ExprKind::Sqrt(Box::new(fill_constants(x, values))),
-        ExprKind::Pow(a, b) => ExprKind::Pow(
-            Box::new(fill_constants(a, values)),
-            Box::new(fill_constants(b, values)),
-        ),
-        ExprKind::Sum(ts) => ExprKind::Sum(
-            ts.iter()
-                .map(|(o, t)| (*o, fill_constants(t, values)))
-                .collect(),
-        ),
-        ExprKind::Product(fs) => ExprKind::Product(
-            fs.iter()
-                .map(|(o, f)| (*o, fill_constants(f, values)))
-                .collect(),
-        ),
-        ExprKind::Call(n, args) => ExprKind::Call(
-            n.clone(),
-            args.iter().map(|a| fill_constants(a, values)).collect(),
-        ),
-    };
-    Expr { kind, pos: e.pos }
+    if let ExprKind::Var(n) = &e.kind {
+        return match n.strip_prefix('#').and_then(|i| i.parse::<usize>().ok()) {
+            Some(i) if i < values.len() => at_pos(&values[i], e.pos),
+            _ => e.clone(),
+        };
+    }
+    e.map_children(|x| fill_constants(x, values))
 }
 
 /// The polynomial `p` in the variable `name` as an expression (`2*c^2 - 1/3*c + 5`).

@@ -28,6 +28,7 @@
 use super::calculus::sum_terms;
 use super::fraction::diff_arguments;
 use super::library::{count_nodes, has_sqrt, substitute, MAX_NODES};
+use super::map::at_pos;
 use super::trig::has_trig;
 use super::*;
 use crate::poly::Vars;
@@ -99,57 +100,32 @@ pub fn eval_lowered<C: Coefficient>(e: &Expr) -> Result<C, ExprError> {
 }
 
 fn lower_node(e: &Expr) -> Result<Expr, ExprError> {
-    let boxed = |x: &Expr| lower_node(x).map(Box::new);
-    let kind = match &e.kind {
-        ExprKind::Number(_) | ExprKind::Var(_) => return Ok(e.clone()),
-        ExprKind::Neg(x) => ExprKind::Neg(boxed(x)?),
-        ExprKind::Sqrt(x) => ExprKind::Sqrt(boxed(x)?),
-        ExprKind::Pow(a, k) => ExprKind::Pow(boxed(a)?, boxed(k)?),
-        ExprKind::Sum(ts) => ExprKind::Sum(
-            ts.iter()
-                .map(|(op, t)| Ok((*op, lower_node(t)?)))
-                .collect::<Result<_, ExprError>>()?,
-        ),
-        ExprKind::Product(fs) => ExprKind::Product(
-            fs.iter()
-                .map(|(op, f)| Ok((*op, lower_node(f)?)))
-                .collect::<Result<_, ExprError>>()?,
-        ),
-        ExprKind::Call(name, args) => match name.as_str() {
-            "binomial" | "factorial" => {
-                let q: Rational = e.eval_constant()?;
-                return Ok(at(Expr::number(q), e.pos));
-            }
-            "sum" => {
-                let terms = sum_terms(e, args, lower_node)?;
-                if terms.is_empty() {
-                    return Ok(at(Expr::number(Rational::ZERO), e.pos));
-                }
-                ExprKind::Sum(terms.into_iter().map(|t| (AddOp::Plus, t)).collect())
-            }
-            "diff" => {
-                let (body, _, _) = diff_arguments(e, args)?;
-                refuse_roots_and_angles(e, body)?;
-                return expand(e);
-            }
-            "integrate" => return lower_integral(e, args),
-            _ => ExprKind::Call(
-                name.clone(),
-                args.iter().map(lower_node).collect::<Result<_, _>>()?,
-            ),
-        },
+    let ExprKind::Call(name, args) = &e.kind else {
+        return e.try_map_children(lower_node);
     };
-    Ok(Expr { kind, pos: e.pos })
-}
-
-/// `x` with every position set to `pos` (a computed value takes the position of its call).
-fn at(x: Expr, pos: usize) -> Expr {
-    let mut x = x;
-    x.pos = pos;
-    if let ExprKind::Neg(inner) = &mut x.kind {
-        inner.pos = pos;
+    match name.as_str() {
+        "binomial" | "factorial" => {
+            let q: Rational = e.eval_constant()?;
+            Ok(at_pos(&Expr::number(q), e.pos))
+        }
+        "sum" => {
+            let terms = sum_terms(e, args, lower_node)?;
+            if terms.is_empty() {
+                return Ok(at_pos(&Expr::number(Rational::ZERO), e.pos));
+            }
+            Ok(Expr {
+                kind: ExprKind::Sum(terms.into_iter().map(|t| (AddOp::Plus, t)).collect()),
+                pos: e.pos,
+            })
+        }
+        "diff" => {
+            let (body, _, _) = diff_arguments(e, args)?;
+            refuse_roots_and_angles(e, body)?;
+            expand(e)
+        }
+        "integrate" => lower_integral(e, args),
+        _ => e.try_map_children(lower_node),
     }
-    x
 }
 
 /// The refusal of a `diff` or `integrate` (the call `call`) whose expression `body` has a
@@ -189,33 +165,7 @@ fn expand(e: &Expr) -> Result<Expr, ExprError> {
             (MulOp::Divide, f.denominator().to_expr(&vars)),
         ]))
     };
-    Ok(set_positions(&out, e.pos))
-}
-
-/// `e` with every node at `pos`.
-fn set_positions(e: &Expr, pos: usize) -> Expr {
-    let b = |x: &Expr| Box::new(set_positions(x, pos));
-    let kind = match &e.kind {
-        ExprKind::Number(_) | ExprKind::Var(_) => e.kind.clone(),
-        ExprKind::Neg(x) => ExprKind::Neg(b(x)),
-        ExprKind::Sqrt(x) => ExprKind::Sqrt(b(x)),
-        ExprKind::Pow(x, k) => ExprKind::Pow(b(x), b(k)),
-        ExprKind::Sum(ts) => ExprKind::Sum(
-            ts.iter()
-                .map(|(o, t)| (*o, set_positions(t, pos)))
-                .collect(),
-        ),
-        ExprKind::Product(fs) => ExprKind::Product(
-            fs.iter()
-                .map(|(o, f)| (*o, set_positions(f, pos)))
-                .collect(),
-        ),
-        ExprKind::Call(n, args) => ExprKind::Call(
-            n.clone(),
-            args.iter().map(|a| set_positions(a, pos)).collect(),
-        ),
-    };
-    Expr { kind, pos }
+    Ok(at_pos(&out, e.pos))
 }
 
 /// `integrate(E, t, a, b)` lowered (module documentation).

@@ -111,7 +111,7 @@
 //! `calculus`: `integrate`, `sum`, `binomial` and `factorial`; [`library`]: definitions,
 //! functions with parameters, vectors, matrices and the vector/Bezier functions, resolved to
 //! core trees; [`lower`]: the core calls rewritten as plain arithmetic for the front ends that
-//! evaluate a tree operation by operation; `print`: the printer; `latex`: LaTeX ([`to_latex`]) with a [`Notation`] for names, from
+//! evaluate a tree operation by operation; `map`: the one rebuild of a node from its mapped children ([`Expr::map_children`]) and the positions of built trees; `print`: the printer; `latex`: LaTeX ([`to_latex`]) with a [`Notation`] for names, from
 //! a layout shared with `mathml` ([`to_mathml`]).
 //!
 //! # Errors
@@ -134,6 +134,7 @@ mod from_poly;
 mod latex;
 pub mod library;
 mod lower;
+mod map;
 mod mathml;
 mod numbers;
 mod parse;

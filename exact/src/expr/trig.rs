@@ -501,44 +501,26 @@ pub(super) fn trig_ratfun<C: Coefficient + Field>(
 /// plus a multiple of pi, an angle multiple past the `angle-multiple` limit, a constant part
 /// whose value is irrational, `tan` where the cosine is zero.
 pub fn expand_angles(e: &Expr) -> Result<Expr, ExprError> {
-    let go = |x: &Expr| expand_angles(x);
-    let kind = match &e.kind {
-        ExprKind::Number(_) | ExprKind::Var(_) => return Ok(e.clone()),
-        ExprKind::Call(name, args) => match Trig::from_name(name) {
-            Some(which) => {
-                let mut vars = Vars::new();
-                let (c, s) = cos_sin::<Rational>(e, name, args, &mut vars)?;
-                return Ok(match which {
-                    Trig::Cos => c.to_expr(&vars),
-                    Trig::Sin => s.to_expr(&vars),
-                    Trig::Tan => {
-                        if c.is_zero() {
-                            return Err(undefined_tan(e, args));
-                        }
-                        Expr::new(ExprKind::Product(vec![
-                            (MulOp::Times, s.to_expr(&vars)),
-                            (MulOp::Divide, c.to_expr(&vars)),
-                        ]))
+    if let ExprKind::Call(name, args) = &e.kind {
+        if let Some(which) = Trig::from_name(name) {
+            let mut vars = Vars::new();
+            let (c, s) = cos_sin::<Rational>(e, name, args, &mut vars)?;
+            return Ok(match which {
+                Trig::Cos => c.to_expr(&vars),
+                Trig::Sin => s.to_expr(&vars),
+                Trig::Tan => {
+                    if c.is_zero() {
+                        return Err(undefined_tan(e, args));
                     }
-                });
-            }
-            None => ExprKind::Call(name.clone(), args.iter().map(go).collect::<Result<_, _>>()?),
-        },
-        ExprKind::Neg(x) => ExprKind::Neg(Box::new(go(x)?)),
-        ExprKind::Sqrt(x) => ExprKind::Sqrt(Box::new(go(x)?)),
-        ExprKind::Pow(a, b) => ExprKind::Pow(Box::new(go(a)?), Box::new(go(b)?)),
-        ExprKind::Sum(ts) => ExprKind::Sum(
-            ts.iter()
-                .map(|(o, t)| Ok((*o, go(t)?)))
-                .collect::<Result<_, ExprError>>()?,
-        ),
-        ExprKind::Product(fs) => ExprKind::Product(
-            fs.iter()
-                .map(|(o, f)| Ok((*o, go(f)?)))
-                .collect::<Result<_, ExprError>>()?,
-        ),
-    };
-    Ok(Expr { kind, pos: e.pos })
+                    Expr::new(ExprKind::Product(vec![
+                        (MulOp::Times, s.to_expr(&vars)),
+                        (MulOp::Divide, c.to_expr(&vars)),
+                    ]))
+                }
+            });
+        }
+    }
+    e.try_map_children(expand_angles)
 }
 
 /// `tan` of an angle whose cosine is identically zero.

@@ -383,17 +383,7 @@ impl UPoly {
     /// [`SignChart`]). The gap signs follow from the sign at `+inf` and the parity of the
     /// multiplicities.
     pub fn sign_chart(&self) -> SignChart {
-        let roots = self.roots();
-        let mut gaps = vec![Sign::Zero; roots.len() + 1];
-        let mut s = self.sign_at_pos_inf();
-        gaps[roots.len()] = s;
-        for (i, r) in roots.iter().enumerate().rev() {
-            if r.multiplicity % 2 == 1 {
-                s = sign_neg(s);
-            }
-            gaps[i] = s;
-        }
-        SignChart { roots, gaps }
+        sign_chart_from(self.roots(), self.sign_at_pos_inf())
     }
 
     /// The set `{x in R : self(x) >= 0}` as a union of disjoint closed intervals, increasing:
@@ -450,6 +440,23 @@ impl UPoly {
         }
         self.count_real_roots() > 0
     }
+}
+
+/// The sign chart of a non-zero polynomial from its distinct real roots (increasing, with
+/// multiplicities) and its sign at `+inf`: the sign flips across a root of odd multiplicity.
+/// Shared by [`UPoly::sign_chart`] and the polynomials over a number field, whose roots are
+/// found differently but whose chart follows the same way.
+pub(crate) fn sign_chart_from(roots: Vec<Root>, at_pos_inf: Sign) -> SignChart {
+    let mut gaps = vec![Sign::Zero; roots.len() + 1];
+    let mut s = at_pos_inf;
+    gaps[roots.len()] = s;
+    for (i, r) in roots.iter().enumerate().rev() {
+        if r.multiplicity % 2 == 1 {
+            s = sign_neg(s);
+        }
+        gaps[i] = s;
+    }
+    SignChart { roots, gaps }
 }
 
 /// The set where a non-zero polynomial is `>= 0`, from its sign chart (see

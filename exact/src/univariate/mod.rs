@@ -87,13 +87,14 @@ mod upoly;
 pub use descartes::{integer_real_roots, integer_real_roots_to, MAX_DESCARTES_DEGREE};
 pub use exactcheck_core::roots::{IsolatedRoot, ZeroPolynomial};
 pub use factor::Factorisation;
-pub(crate) use isolate::{compare_simple, nonnegative_in_chart};
+pub(crate) use isolate::{compare_simple, nonnegative_in_chart, sign_chart_from};
 pub use real_roots::{
     common_real_roots_in, compare_with_real_root, descartes_bound, isolate_real_roots,
     isolate_real_roots_in, isolate_real_roots_sturm, isolate_real_roots_sturm_in, refine_real_root,
     sign_at_real_root,
 };
 pub use sturm::sign_variations;
+pub(crate) use upoly::write_terms;
 pub use upoly::UPolyDisplay;
 
 use crate::poly::Var;

@@ -424,40 +424,56 @@ pub struct UPolyDisplay<'a> {
 
 impl fmt::Display for UPolyDisplay<'_> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        if self.poly.is_zero() {
-            return f.write_str("0");
-        }
-        let mut first = true;
-        for (k, c) in self.poly.coeffs.iter().enumerate().rev() {
-            if c.is_zero() {
-                continue;
-            }
-            let s = c.to_string();
-            let (negative, mag) = match s.strip_prefix('-') {
-                Some(rest) => (true, rest),
-                None => (false, s.as_str()),
-            };
-            match (first, negative) {
-                (true, true) => f.write_str("-")?,
-                (true, false) => {}
-                (false, true) => f.write_str(" - ")?,
-                (false, false) => f.write_str(" + ")?,
-            }
-            first = false;
-            if k == 0 {
-                f.write_str(mag)?;
-            } else {
-                if mag != "1" {
-                    write!(f, "{mag}*")?;
+        let terms = self.poly.coeffs.iter().enumerate().rev();
+        write_terms(
+            f,
+            self.var,
+            terms.filter(|(_, c)| !c.is_zero()).map(|(k, c)| {
+                let s = c.to_string();
+                match s.strip_prefix('-') {
+                    Some(rest) => (k, true, rest.to_string()),
+                    None => (k, false, s),
                 }
-                f.write_str(self.var)?;
-                if k > 1 {
-                    write!(f, "^{k}")?;
-                }
-            }
-        }
-        Ok(())
+            }),
+        )
     }
+}
+
+/// Writes the polynomial in `var` with the non-zero terms `(degree, negative, magnitude)`,
+/// highest degree first (`magnitude` the text of the coefficient's absolute value), as
+/// `3*x^2 - 1/2*x + 1`, and `0` for no terms: the one layout of [`UPoly::display`] and of the
+/// polynomials with coefficients in a number field (`crate::algebraic::FieldUPoly`), which
+/// differ only in how a coefficient is written.
+pub(crate) fn write_terms(
+    f: &mut fmt::Formatter<'_>,
+    var: &str,
+    terms: impl Iterator<Item = (usize, bool, String)>,
+) -> fmt::Result {
+    let mut first = true;
+    for (k, negative, mag) in terms {
+        match (first, negative) {
+            (true, true) => f.write_str("-")?,
+            (true, false) => {}
+            (false, true) => f.write_str(" - ")?,
+            (false, false) => f.write_str(" + ")?,
+        }
+        first = false;
+        if k == 0 {
+            f.write_str(&mag)?;
+        } else {
+            if mag != "1" {
+                write!(f, "{mag}*")?;
+            }
+            f.write_str(var)?;
+            if k > 1 {
+                write!(f, "^{k}")?;
+            }
+        }
+    }
+    if first {
+        f.write_str("0")?;
+    }
+    Ok(())
 }
 
 impl fmt::Display for UPoly {

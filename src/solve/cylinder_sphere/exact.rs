@@ -1,24 +1,20 @@
 //! The exact answer of `cylinder_sphere` over Q: the analysis of the discriminant, sample
 //! points in the square-root field, the touching points or circle.
 
-use super::answer::{
-    CircleApprox, Coefficients, CurvePoint, End, ExactAnswer, Parametrization, PointText, Sample,
-    TangentCircle, TangentPoint, TauApprox,
-};
+use super::answer::{exact_answer, Curve, ExactAnswer, PointText};
 use super::input::{configuration, exact_angle, Input};
-use super::{approx3, contact_name, on_both, strings};
-use crate::solve::number::RationalNumber;
+use super::{approx3, on_both, strings};
+use crate::solve::number::RationalOrFieldNumber;
 use crate::Error;
-use exactcheck_core::cylinder_sphere::{unit_circle_point, Angle, Contact, CylinderSphere};
-use exactcheck_core::limits::LimitError;
+use exactcheck_core::cylinder_sphere::{unit_circle_point, Angle, CylinderSphere};
 use exactcheck_core::{OrderedField, Ring, Sign, Vec3};
 use exactcheck_exact::cylinder_sphere::analyze;
-use exactcheck_exact::univariate::{Bound, RootBoundedInterval, RootInterval};
+use exactcheck_exact::univariate::{Bound, RootBoundedInterval};
 use exactcheck_exact::{Radical, Rational};
 use num_rational::BigRational;
 use num_traits::One;
 
-pub(super) fn exact(input: Input<RationalNumber>) -> Result<ExactAnswer, Error> {
+pub(super) fn exact(input: Input<RationalOrFieldNumber>) -> Result<ExactAnswer, Error> {
     let mut notes = Vec::new();
     let (cs, n_samples) = configuration(
         &input,
@@ -27,7 +23,7 @@ pub(super) fn exact(input: Input<RationalNumber>) -> Result<ExactAnswer, Error> 
     )?;
     let width = match &input.precision {
         None => None,
-        Some(RationalNumber(w)) => {
+        Some(RationalOrFieldNumber(w)) => {
             if w.sign() != Sign::Positive {
                 return Err(Error::Input("precision must be positive".into()));
             }
@@ -36,15 +32,11 @@ pub(super) fn exact(input: Input<RationalNumber>) -> Result<ExactAnswer, Error> 
         }
     };
     let analysis = analyze(&cs);
-    let by_distance = cs.contact_by_distance();
-    let coeffs = cs.trig_coefficients();
     let p = &analysis.discriminant;
     let taus = sample_taus(n_samples, &analysis.nonnegative);
     let lift = |q: &Rational| Radical::from(q);
     let rcs = cs.map(lift);
-    let mut samples = Vec::new();
-    let mut points = Vec::new();
-    let mut all_on_both = true;
+    let mut curve = Curve::default();
     for tau in &taus {
         if p.sign_at(tau) == Sign::Negative {
             continue;
@@ -65,7 +57,7 @@ pub(super) fn exact(input: Input<RationalNumber>) -> Result<ExactAnswer, Error> 
         let (us, pts): (Vec<String>, Vec<PointText>) = match root {
             None => {
                 let (pts, ok) = quadratic_points(&cs, &angle, &a, &disc);
-                all_on_both &= ok;
+                curve.all_on_both &= ok;
                 let minus_a = a.neg_ref();
                 (
                     vec![
@@ -84,118 +76,16 @@ pub(super) fn exact(input: Input<RationalNumber>) -> Result<ExactAnswer, Error> 
                     vec![minus_a.sub_ref(&root), minus_a.add_ref(&root)]
                 };
                 let pts: Vec<Vec3<Radical>> = us.iter().map(|u| rcs.point(&c, &s, u)).collect();
-                all_on_both &= pts.iter().all(|x| on_both(&rcs, x));
+                curve.all_on_both &= pts.iter().all(|x| on_both(&rcs, x));
                 (
                     us.iter().map(ToString::to_string).collect(),
                     pts.iter().map(|x| (strings(x), approx3(x))).collect(),
                 )
             }
         };
-        samples.push(Sample {
-            tau: tau.to_string(),
-            cos: angle.cos.to_string(),
-            sin: angle.sin.to_string(),
-            t_degrees: 2.0 * tau.to_f64().atan().to_degrees(),
-            u: us,
-            points: pts.iter().map(|p| p.0.clone()).collect(),
-        });
-        points.extend(
-            pts.into_iter()
-                .map(|(exact, approx)| CurvePoint { exact, approx }),
-        );
+        curve.push(tau, &angle, us, pts);
     }
-    // Touching points: every multiple root of the discriminant.
-    let mut tangent_points = Vec::new();
-    for tp in &analysis.tangent_params {
-        let (angle, tau_text) = match touching_angle(tp.as_ref(), |r, w| p.try_refine(r, w))? {
-            Ok(at) => at,
-            Err(isolated) => {
-                tangent_points.push(isolated);
-                continue;
-            }
-        };
-        let (a, _) = cs.coefficients_at(&angle.cos, &angle.sin);
-        let x = cs.point(&angle.cos, &angle.sin, &a.neg_ref());
-        let ok = on_both(&cs, &x);
-        all_on_both &= ok;
-        let xr = x.map(lift);
-        tangent_points.push(TangentPoint::Exact {
-            tau: tau_text,
-            point: strings(&x),
-            approx: approx3(&xr),
-            on_both_surfaces: ok,
-        });
-    }
-    let tangent_circle = analysis
-        .touching_circle
-        .then(|| tangent_circle(&cs, Rational::to_f64));
-    if let Some(c) = &tangent_circle {
-        all_on_both &= c.on_both_surfaces;
-    }
-    let intervals = interval_ends(&analysis.nonnegative, |r, w| p.try_refine(r, w), &width)?;
-    Ok(ExactAnswer {
-        kind: "cylinder_sphere",
-        mode: "exact",
-        intersects: analysis.contact != Contact::Disjoint,
-        contact: contact_name(analysis.contact),
-        contact_by_axis_distance: contact_name(by_distance),
-        methods_agree: analysis.contact == by_distance
-            && analysis.touching() == Some(cs.touching_by_distance()),
-        components: analysis.components,
-        tangent_points,
-        tangent_circle,
-        coefficients: Coefficients::new(&coeffs, ToString::to_string),
-        parametrization: Parametrization {
-            angle: "cos t = (1 - tau^2)/(1 + tau^2), sin t = 2*tau/(1 + tau^2) (tau = infinity at t = pi)",
-            u: "-A(t) +- sqrt(P(tau))/(1 + tau^2)",
-            p: p.display("tau").to_string(),
-            point: "Rx(gamma) Ry(beta) (a + r cos t, b + r sin t, u)",
-            real_for_tau_in: intervals,
-            real_at_t_pi: analysis.sign_at_pi != Sign::Negative,
-        },
-        samples,
-        points,
-        all_points_on_both_surfaces: all_on_both,
-        approximated_angles: notes,
-        float: None,
-    })
-}
-
-/// The angle of a touching parameter (a multiple root of the discriminant, `None` for
-/// `t = pi`) with its printed `tau`, when the root is rational; otherwise the isolated touching
-/// point, its interval refined by `refine` to width `2^-40`.
-///
-/// # Errors
-/// The refinement's limit error.
-pub(super) fn touching_angle(
-    tp: Option<&RootInterval>,
-    refine: impl FnOnce(&RootInterval, &Rational) -> Result<RootInterval, LimitError>,
-) -> Result<Result<(Angle<Rational>, String), TangentPoint>, Error> {
-    Ok(match tp {
-        None => Ok((
-            Angle {
-                cos: Rational::from_integer(-1),
-                sin: Rational::ZERO,
-            },
-            "infinity (t = pi)".to_string(),
-        )),
-        Some(ri) => match ri.exact_value() {
-            Some(v) => Ok((
-                unit_circle_point(v).expect("1 + tau^2 > 0 for rational tau"),
-                v.to_string(),
-            )),
-            None => {
-                let w = Rational::new(1, 1 << 40).expect("2^40 != 0");
-                let refined = refine(ri, &w)?;
-                Err(TangentPoint::Isolated {
-                    tau_interval: [refined.lo.to_string(), refined.hi.to_string()],
-                    approx: TauApprox {
-                        tau: refined.to_f64(),
-                    },
-                })
-            }
-        },
-    })
+    exact_answer(&cs, analysis, &width, curve, notes)
 }
 
 /// Sample parameters: rational tau on a grid of `n_samples` angles (without t = pi), plus one
@@ -225,81 +115,9 @@ pub(super) fn sample_taus(n_samples: usize, nonnegative: &[RootBoundedInterval])
     taus
 }
 
-/// The real tau-intervals with their ends: exact, infinite, or isolated (refined by `refine` to
-/// the width `width` when one is asked for).
-pub(super) fn interval_ends<E>(
-    nonnegative: &[RootBoundedInterval],
-    refine: impl Fn(&RootInterval, &Rational) -> Result<RootInterval, E>,
-    width: &Option<Rational>,
-) -> Result<Vec<[End; 2]>, Error>
-where
-    Error: From<E>,
-{
-    let refine = |r: &RootInterval| -> Result<RootInterval, Error> {
-        match width {
-            Some(w) if !r.is_exact() => Ok(refine(r, w)?),
-            _ => Ok(r.clone()),
-        }
-    };
-    let end = |x: &Bound| -> Result<End, Error> {
-        Ok(match x {
-            Bound::NegInf => End::Exact("-inf".into()),
-            Bound::PosInf => End::Exact("+inf".into()),
-            Bound::Root(r) => match r.exact_value() {
-                Some(v) => End::Exact(v.to_string()),
-                None => {
-                    let r = refine(r)?;
-                    End::Isolated {
-                        interval: [r.lo.to_string(), r.hi.to_string()],
-                        approx: r.to_f64(),
-                    }
-                }
-            },
-        })
-    };
-    nonnegative
-        .iter()
-        .map(|iv| Ok([end(&iv.lo)?, end(&iv.hi)?]))
-        .collect()
-}
-
 /// The largest numerator or denominator (in bits) of a sample's discriminant that is factored
 /// to write its square root in the radical field; bigger ones use `Q[w]/(w^2 - D)`.
 const MAX_FACTORED_BITS: u64 = 256;
-
-/// The touching circle of a configuration whose discriminant vanishes identically: centre and
-/// radius from the geometry (the sphere's centre on the axis, the cylinder's radius), `u` from
-/// `A` at `t = 0`, and the exact check at four of its points.
-pub(super) fn tangent_circle<T: OrderedField + std::fmt::Display>(
-    cs: &CylinderSphere<T>,
-    to_f64: impl Fn(&T) -> f64,
-) -> TangentCircle {
-    let (_, normal) = cs.axis();
-    let (a0, _) = cs.coefficients_at(&T::one(), &T::zero());
-    let u = a0.neg_ref();
-    let quarter_turns = [(1, 0), (0, 1), (-1, 0), (0, -1)];
-    let ok = quarter_turns.iter().all(|&(c, s)| {
-        let (c, s) = (T::from_i64(c), T::from_i64(s));
-        let x = cs.point(&c, &s, &u);
-        let rel = &x - &cs.center;
-        on_both(cs, &x) && rel.norm_squared() == cs.r.square() && rel.dot(&normal).is_zero()
-    });
-    TangentCircle {
-        center: strings(&cs.center),
-        radius: cs.r.to_string(),
-        normal: strings(&normal),
-        u: u.to_string(),
-        on_both_surfaces: ok,
-        approx: CircleApprox {
-            center: [
-                to_f64(&cs.center.x) + 0.0,
-                to_f64(&cs.center.y) + 0.0,
-                to_f64(&cs.center.z) + 0.0,
-            ],
-            radius: to_f64(&cs.r),
-        },
-    }
-}
 
 /// The two curve points at an angle where `u = -A +- sqrt(disc)` and `sqrt(disc)` is not
 /// available in the radical field: coordinates `p + q sqrt(disc)` computed over `Q[w]` modulo

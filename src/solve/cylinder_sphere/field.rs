@@ -4,24 +4,18 @@
 //! sample's discriminant is not a square there, as `p0 + p1*sqrt(D)` with `p0`, `p1`, `D` in
 //! the field, each checked exactly on both surfaces.
 
-use super::answer::{
-    Coefficients, CurvePoint, ExactAnswer, Parametrization, PointText, Sample, TangentPoint,
-};
-use super::exact::{interval_ends, plus_sqrt_term, sample_taus, tangent_circle, touching_angle};
+use super::answer::{exact_answer, Curve, ExactAnswer, PointText};
+use super::exact::{plus_sqrt_term, sample_taus};
 use super::input::{configuration, exact_angle, Input};
-use super::{contact_name, on_both, strings};
+use super::{approx3, on_both, strings};
 use crate::solve::number::FieldNumber;
 use crate::Error;
-use exactcheck_core::cylinder_sphere::{unit_circle_point, Contact, CylinderSphere};
+use exactcheck_core::cylinder_sphere::{unit_circle_point, CylinderSphere};
 use exactcheck_core::{OrderedField, Ring, Sign, Vec3};
 use exactcheck_exact::algebraic::FieldElement;
 use exactcheck_exact::cylinder_sphere::analyze_in_field;
 
 type F = FieldElement;
-
-fn approx(v: &Vec3<F>) -> [f64; 3] {
-    [v.x.to_f64() + 0.0, v.y.to_f64() + 0.0, v.z.to_f64() + 0.0]
-}
 
 pub(super) fn exact_in_field(input: Input<FieldNumber>) -> Result<ExactAnswer, Error> {
     let mut notes = Vec::new();
@@ -54,13 +48,9 @@ pub(super) fn exact_in_field(input: Input<FieldNumber>) -> Result<ExactAnswer, E
         }
     };
     let analysis = analyze_in_field(&cs);
-    let by_distance = cs.contact_by_distance();
-    let coeffs = cs.trig_coefficients();
     let p = &analysis.discriminant;
     let taus = sample_taus(n_samples, &analysis.nonnegative);
-    let mut samples = Vec::new();
-    let mut points = Vec::new();
-    let mut all_on_both = true;
+    let mut curve = Curve::default();
     for tau in &taus {
         if p.sign_at(tau) == Sign::Negative {
             continue;
@@ -81,15 +71,15 @@ pub(super) fn exact_in_field(input: Input<FieldNumber>) -> Result<ExactAnswer, E
                     vec![minus_a.sub_ref(&root), minus_a.add_ref(&root)]
                 };
                 let pts: Vec<Vec3<F>> = us.iter().map(|u| cs.point(&c, &s, u)).collect();
-                all_on_both &= pts.iter().all(|x| on_both(&cs, x));
+                curve.all_on_both &= pts.iter().all(|x| on_both(&cs, x));
                 (
                     us.iter().map(ToString::to_string).collect(),
-                    pts.iter().map(|x| (strings(x), approx(x))).collect(),
+                    pts.iter().map(|x| (strings(x), approx3(x))).collect(),
                 )
             }
             None => {
                 let (pts, ok) = quadratic_points(&cs, &c, &s, &minus_a, &disc);
-                all_on_both &= ok;
+                curve.all_on_both &= ok;
                 let d = disc.to_string();
                 let m = minus_a.to_string();
                 (
@@ -98,74 +88,9 @@ pub(super) fn exact_in_field(input: Input<FieldNumber>) -> Result<ExactAnswer, E
                 )
             }
         };
-        samples.push(Sample {
-            tau: tau.to_string(),
-            cos: angle.cos.to_string(),
-            sin: angle.sin.to_string(),
-            t_degrees: 2.0 * tau.to_f64().atan().to_degrees(),
-            u: us,
-            points: pts.iter().map(|p| p.0.clone()).collect(),
-        });
-        points.extend(
-            pts.into_iter()
-                .map(|(exact, approx)| CurvePoint { exact, approx }),
-        );
+        curve.push(tau, &angle, us, pts);
     }
-    // Touching points: every multiple root of the discriminant.
-    let mut tangent_points = Vec::new();
-    for tp in &analysis.tangent_params {
-        let (angle, tau_text) = match touching_angle(tp.as_ref(), |r, w| p.try_refine(r, w))? {
-            Ok(at) => at,
-            Err(isolated) => {
-                tangent_points.push(isolated);
-                continue;
-            }
-        };
-        let (c, s) = (F::rational(angle.cos), F::rational(angle.sin));
-        let (a, _) = cs.coefficients_at(&c, &s);
-        let x = cs.point(&c, &s, &a.neg_ref());
-        let ok = on_both(&cs, &x);
-        all_on_both &= ok;
-        tangent_points.push(TangentPoint::Exact {
-            tau: tau_text,
-            point: strings(&x),
-            approx: approx(&x),
-            on_both_surfaces: ok,
-        });
-    }
-    let tangent_circle = analysis
-        .touching_circle
-        .then(|| tangent_circle(&cs, F::to_f64));
-    if let Some(c) = &tangent_circle {
-        all_on_both &= c.on_both_surfaces;
-    }
-    let intervals = interval_ends(&analysis.nonnegative, |r, w| p.try_refine(r, w), &width)?;
-    Ok(ExactAnswer {
-        kind: "cylinder_sphere",
-        mode: "exact",
-        intersects: analysis.contact != Contact::Disjoint,
-        contact: contact_name(analysis.contact),
-        contact_by_axis_distance: contact_name(by_distance),
-        methods_agree: analysis.contact == by_distance
-            && analysis.touching() == Some(cs.touching_by_distance()),
-        components: analysis.components,
-        tangent_points,
-        tangent_circle,
-        coefficients: Coefficients::new(&coeffs, ToString::to_string),
-        parametrization: Parametrization {
-            angle: "cos t = (1 - tau^2)/(1 + tau^2), sin t = 2*tau/(1 + tau^2) (tau = infinity at t = pi)",
-            u: "-A(t) +- sqrt(P(tau))/(1 + tau^2)",
-            p: p.display("tau").to_string(),
-            point: "Rx(gamma) Ry(beta) (a + r cos t, b + r sin t, u)",
-            real_for_tau_in: intervals,
-            real_at_t_pi: analysis.sign_at_pi != Sign::Negative,
-        },
-        samples,
-        points,
-        all_points_on_both_surfaces: all_on_both,
-        approximated_angles: notes,
-        float: None,
-    })
+    exact_answer(&cs, analysis, &width, curve, notes)
 }
 
 /// The two curve points `u = -A +- w`, `w = sqrt(disc)`, where `disc` is not a square in the

@@ -11,8 +11,11 @@ use schemars::{json_schema, JsonSchema, Schema, SchemaGenerator};
 use serde::{Deserialize, Serialize};
 use std::borrow::Cow;
 
-/// The problem, with numbers of type `N` ([`RationalNumber`] in exact mode, [`FloatNumber`]
-/// with `--float`).
+/// The problem, with numbers of type `N` (in exact mode
+/// [`RationalOrFieldNumber`](crate::solve::number::RationalOrFieldNumber), or
+/// [`RationalNumber`] where only rational input is wanted, and
+/// [`FieldNumber`](crate::solve::number::FieldNumber) in the number field; [`FloatNumber`] with
+/// `--float`).
 #[derive(Debug, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
 #[schemars(
@@ -30,7 +33,8 @@ pub struct Input<N> {
     /// Number of sample angles (at least 1, at most the `samples` limit; default 12).
     #[schemars(range(min = 1))]
     pub samples: Option<u64>,
-    /// The width to which irrational ends of the real tau-intervals are isolated (positive).
+    /// The width to which irrational ends of the real tau-intervals are isolated (a positive
+    /// rational number).
     pub precision: Option<N>,
 }
 

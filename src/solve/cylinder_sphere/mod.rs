@@ -12,12 +12,12 @@
 //! exactly at four of its points. Float mode evaluates the same generic formulas in f64 and
 //! refuses non-finite input and overflowing coefficients.
 
-use super::number::{FieldNumber, FloatNumber, RationalNumber};
+use super::number::{FieldNumber, FloatNumber, RationalOrFieldNumber};
+use super::scalar::Scalar;
 use super::{FloatKind, Kind, Problem};
 use crate::Error;
 use exactcheck_core::cylinder_sphere::{Contact, CylinderSphere};
 use exactcheck_core::{OrderedField, Vec3};
-use exactcheck_exact::Radical;
 
 pub use answer::ExactAnswer;
 pub use float::FloatAnswer;
@@ -38,7 +38,7 @@ pub struct CylinderSphereKind;
 
 impl Kind for CylinderSphereKind {
     const NAME: &'static str = "cylinder_sphere";
-    type Input = Input<RationalNumber>;
+    type Input = Input<RationalOrFieldNumber>;
     type Answer = ExactAnswer;
 
     fn compute(input: Self::Input) -> Result<ExactAnswer, Error> {
@@ -82,8 +82,9 @@ pub(super) fn strings<T: ToString>(v: &Vec3<T>) -> [String; 3] {
     [v.x.to_string(), v.y.to_string(), v.z.to_string()]
 }
 
-pub(super) fn approx3(v: &Vec3<Radical>) -> [f64; 3] {
-    [v.x.to_f64() + 0.0, v.y.to_f64() + 0.0, v.z.to_f64() + 0.0]
+/// The f64 approximations of a point's coordinates (`-0` as `0`).
+pub(super) fn approx3<T: Scalar>(v: &Vec3<T>) -> [f64; 3] {
+    [v.x.approx(), v.y.approx(), v.z.approx()]
 }
 
 /// Whether `x` lies on the sphere and on the cylinder of `cs`, exactly.

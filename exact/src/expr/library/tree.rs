@@ -2,6 +2,7 @@
 //! `diff`, `integrate` and `sum` respected), positions and sizes.
 
 use super::*;
+pub(super) use crate::expr::map::at_pos;
 
 /// Appends the names of the calls in `e` to `out` (each once).
 pub(super) fn collect_calls(e: &Expr, out: &mut Vec<String>) {
@@ -30,14 +31,6 @@ pub(crate) fn map_tree(e: &Expr, f: &mut dyn FnMut(&Expr)) {
     f(e);
 }
 
-/// `e` with every position set to `pos`.
-pub(super) fn at_pos(e: &Expr, pos: usize) -> Expr {
-    rebuild(e, &|mut x| {
-        x.pos = pos;
-        x
-    })
-}
-
 /// `e` with the variable `v` replaced by `value`, binders ignored: for renaming a bound
 /// variable and for values that cannot be captured (integration bounds); every front end
 /// substitutes with [`substitute_free`].
@@ -58,7 +51,6 @@ pub fn substitute(e: &Expr, v: &str, value: &Expr) -> Expr {
 /// The one-line reason when a `diff` to take first cannot be taken exactly.
 pub fn substitute_free(e: &Expr, v: &str, value: &Expr) -> Result<Expr, String> {
     let sub = |x: &Expr| substitute_free(x, v, value);
-    let boxed = |x: &Expr| sub(x).map(Box::new);
     let mentions = |name: &str| {
         let mut found = false;
         map_tree(value, &mut |x| {
@@ -68,20 +60,6 @@ pub fn substitute_free(e: &Expr, v: &str, value: &Expr) -> Result<Expr, String> 
     };
     let kind = match &e.kind {
         ExprKind::Var(n) if n == v => return Ok(at_pos(value, e.pos)),
-        ExprKind::Number(_) | ExprKind::Var(_) => return Ok(e.clone()),
-        ExprKind::Neg(x) => ExprKind::Neg(boxed(x)?),
-        ExprKind::Sqrt(x) => ExprKind::Sqrt(boxed(x)?),
-        ExprKind::Pow(a, b) => ExprKind::Pow(boxed(a)?, boxed(b)?),
-        ExprKind::Sum(ts) => ExprKind::Sum(
-            ts.iter()
-                .map(|(op, t)| Ok((*op, sub(t)?)))
-                .collect::<Result<_, String>>()?,
-        ),
-        ExprKind::Product(fs) => ExprKind::Product(
-            fs.iter()
-                .map(|(op, f)| Ok((*op, sub(f)?)))
-                .collect::<Result<_, String>>()?,
-        ),
         ExprKind::Call(name, args) => {
             let var_at = |i: usize| match args.get(i).map(|a| &a.kind) {
                 Some(ExprKind::Var(n)) => Some(n.as_str()),
@@ -142,12 +120,10 @@ pub fn substitute_free(e: &Expr, v: &str, value: &Expr) -> Result<Expr, String> 
                         .map(|(j, a)| if j == 1 { Ok(a.clone()) } else { sub(a) })
                         .collect::<Result<_, String>>()?,
                 ),
-                _ => ExprKind::Call(
-                    name.clone(),
-                    args.iter().map(sub).collect::<Result<_, String>>()?,
-                ),
+                _ => return e.try_map_children(sub),
             }
         }
+        _ => return e.try_map_children(sub),
     };
     Ok(Expr { kind, pos: e.pos })
 }
@@ -191,21 +167,7 @@ pub(super) fn derivative_first(call: &Expr) -> Result<Expr, String> {
 
 /// Rebuilds `e` bottom-up, handing every rebuilt node (its children done) to `f`.
 pub(super) fn rebuild(e: &Expr, f: &dyn Fn(Expr) -> Expr) -> Expr {
-    let b = |x: &Expr| Box::new(rebuild(x, f));
-    let kind = match &e.kind {
-        ExprKind::Number(_) | ExprKind::Var(_) => e.kind.clone(),
-        ExprKind::Neg(x) => ExprKind::Neg(b(x)),
-        ExprKind::Sqrt(x) => ExprKind::Sqrt(b(x)),
-        ExprKind::Pow(x, k) => ExprKind::Pow(b(x), b(k)),
-        ExprKind::Sum(ts) => ExprKind::Sum(ts.iter().map(|(o, t)| (*o, rebuild(t, f))).collect()),
-        ExprKind::Product(fs) => {
-            ExprKind::Product(fs.iter().map(|(o, t)| (*o, rebuild(t, f))).collect())
-        }
-        ExprKind::Call(n, args) => {
-            ExprKind::Call(n.clone(), args.iter().map(|a| rebuild(a, f)).collect())
-        }
-    };
-    f(Expr { kind, pos: e.pos })
+    f(e.map_children(|x| rebuild(x, f)))
 }
 
 /// The number of nodes of a tree.
