@@ -405,8 +405,9 @@ pub fn fpcore_entries(args: &RegressArgs, path: &str) -> Result<Vec<Entry>, Erro
             Ok(program) => {
                 let mut program = program.clone();
                 program.name = name.clone();
-                let formats: Vec<Format> =
-                    (0..program.arity()).map(|i| program.input_format(i)).collect();
+                let formats: Vec<Format> = (0..program.arity())
+                    .map(|i| program.input_format(i))
+                    .collect();
                 match SampleDomain::named(b.domain.clone(), &b.args)
                     .and_then(|d| d.with_formats(program.precision, &formats))
                     .and_then(|d| d.with_sampling(sampling(args)))

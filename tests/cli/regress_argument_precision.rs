@@ -19,7 +19,14 @@ fn exactcheck(args: &[&str]) -> Output {
 /// The report of benchmark `name` of [`FILE`], run with `extra` arguments.
 fn entry(name: &str, extra: &[&str]) -> Value {
     let mut args = vec![
-        "regress", "--fpcore", FILE, "--name", name, "--samples", "300", "--json",
+        "regress",
+        "--fpcore",
+        FILE,
+        "--name",
+        name,
+        "--samples",
+        "300",
+        "--json",
     ];
     args.extend_from_slice(extra);
     let o = exactcheck(&args);
@@ -87,7 +94,12 @@ fn sampling_over_the_floats_and_the_csv_columns_follow_the_argument() {
     let csv = dir.join("samples.csv");
     let r = entry(
         "binary32 x of a binary64 benchmark",
-        &["--sample", "floats", "--csv", csv.to_str().expect("UTF-8 path")],
+        &[
+            "--sample",
+            "floats",
+            "--csv",
+            csv.to_str().expect("UTF-8 path"),
+        ],
     );
     assert_eq!(
         r["generator"],
@@ -96,7 +108,10 @@ fn sampling_over_the_floats_and_the_csv_columns_follow_the_argument() {
     let text = std::fs::read_to_string(&csv).expect("the CSV is written");
     let mut lines = text.lines();
     let header = lines.next().expect("a header");
-    assert!(header.starts_with("sample,x [binary32],y,float,"), "{header}");
+    assert!(
+        header.starts_with("sample,x [binary32],y,float,"),
+        "{header}"
+    );
     let mut rows = 0;
     for line in lines {
         let cells: Vec<&str> = line.split(',').collect();

@@ -267,15 +267,18 @@ impl InputGen for SampleDomain {
 
     fn contains(&self, x: &[f64]) -> bool {
         x.len() == self.draws.len()
-            && x.iter().zip(&self.draws).zip(&self.formats).all(|((&v, d), &format)| {
-                format.holds(v)
-                    && match *d {
-                        Draw::Uniform { lo, hi } => lo <= v && v <= hi,
-                        Draw::Ordinal { lo, hi } => {
-                            v.is_finite() && (lo..=hi).contains(&ordinal_in(format, v))
+            && x.iter()
+                .zip(&self.draws)
+                .zip(&self.formats)
+                .all(|((&v, d), &format)| {
+                    format.holds(v)
+                        && match *d {
+                            Draw::Uniform { lo, hi } => lo <= v && v <= hi,
+                            Draw::Ordinal { lo, hi } => {
+                                v.is_finite() && (lo..=hi).contains(&ordinal_in(format, v))
+                            }
                         }
-                    }
-            })
+                })
     }
 
     fn describe(&self) -> String {

@@ -420,7 +420,10 @@ fn inputs_of_their_own_format_are_drawn_and_described_as_such() {
     let e = SampleDomain::named(vec![iv(cl(0), cl(1))], &names(&["x"]))
         .and_then(|d| d.with_formats(Format::Binary64, &[]))
         .expect_err("one format per input");
-    assert!(e.to_string().contains("0 formats for a domain of 1 inputs"), "{e}");
+    assert!(
+        e.to_string().contains("0 formats for a domain of 1 inputs"),
+        "{e}"
+    );
 }
 
 proptest::proptest! {

@@ -71,9 +71,9 @@ mod compile;
 mod sexpr;
 
 #[cfg(test)]
-mod tests;
-#[cfg(test)]
 mod precision_tests;
+#[cfg(test)]
+mod tests;
 
 pub use crate::program::{CmpOp, Cond, Func, Node, PowStyle};
 

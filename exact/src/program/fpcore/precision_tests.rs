@@ -66,9 +66,18 @@ fn a_binary32_argument_of_a_binary64_benchmark_feeds_double_operations() {
 #[test]
 fn argument_precisions_outside_binary64_and_binary32() {
     for (text, op) in [
-        ("(FPCore ((! :precision binary80 x)) (+ x 1))", "precision binary80"),
-        ("(FPCore ((! :precision integer n)) (+ n 1))", "precision integer"),
-        ("(FPCore ((! :precision (float 8 16) x)) x)", "precision (float 8 16)"),
+        (
+            "(FPCore ((! :precision binary80 x)) (+ x 1))",
+            "precision binary80",
+        ),
+        (
+            "(FPCore ((! :precision integer n)) (+ n 1))",
+            "precision integer",
+        ),
+        (
+            "(FPCore ((! :precision (float 8 16) x)) x)",
+            "precision (float 8 16)",
+        ),
         ("(FPCore ((! :round toZero x)) x)", "round toZero"),
     ] {
         let b = parse_file(text).expect("parses");

@@ -392,7 +392,14 @@ pub(super) fn benchmark(tree: &SExpr) -> Result<Benchmark, FpCoreError> {
 /// that uses one is unsupported (not malformed). The parameterised ones are lists
 /// (`(float es nbits)`, `(posit es nbits)`, `(fixed nbits scale)`).
 const OTHER_PRECISIONS: &[&str] = &[
-    "binary16", "binary80", "binary128", "posit8", "posit16", "posit32", "posit64", "real",
+    "binary16",
+    "binary80",
+    "binary128",
+    "posit8",
+    "posit16",
+    "posit32",
+    "posit64",
+    "real",
     "integer",
 ];
 
