@@ -291,7 +291,15 @@ impl Csv {
     /// The header for `program`'s inputs and outputs.
     pub fn new(program: &Program) -> Csv {
         let mut cols = vec!["sample".to_string()];
-        cols.extend(program.inputs.iter().map(|n| field(n)));
+        // An input of another precision than the program's says which.
+        cols.extend(program.inputs.iter().enumerate().map(|(i, n)| {
+            let f = program.input_format(i);
+            if f == program.precision {
+                field(n)
+            } else {
+                field(&format!("{n} [{}]", f.name()))
+            }
+        }));
         let n = program.outputs.len();
         for o in 0..n {
             let suffix = if n > 1 {

@@ -83,8 +83,12 @@ impl Subject for TextSubject<'_> {
         }
     }
     fn exact(&self, x: &[f64]) -> Result<Vec<ExactValue>, CaseError> {
-        // Both sides must take the same inputs: a binary32 float side takes binary32 values.
-        if !x.iter().all(|&v| self.program.precision.holds(v)) {
+        // Both sides must take the same inputs: a binary32 input takes binary32 values.
+        if !x
+            .iter()
+            .enumerate()
+            .all(|(i, &v)| self.program.input_format(i).holds(v))
+        {
             return Err(CaseError::InvalidInputs);
         }
         let exact_in: Vec<Rational> = x
@@ -190,6 +194,10 @@ fn sweep_entry(
             "--near moves samples by double ulps: not available for {}, a {} program",
             program.name,
             program.precision.name()
+        ))),
+        Some(_) if program.mixes_input_precisions() => Err(Error::Usage(format!(
+            "--near moves samples by double ulps: not available for {}, which has inputs of another precision",
+            program.name
         ))),
         Some(eq) => {
             let near = super::near::generator(eq, &program.inputs, gen, args.seed)?;
@@ -397,8 +405,11 @@ pub fn fpcore_entries(args: &RegressArgs, path: &str) -> Result<Vec<Entry>, Erro
             Ok(program) => {
                 let mut program = program.clone();
                 program.name = name.clone();
+                let formats: Vec<Format> = (0..program.arity())
+                    .map(|i| program.input_format(i))
+                    .collect();
                 match SampleDomain::named(b.domain.clone(), &b.args)
-                    .and_then(|d| d.with_format(program.precision))
+                    .and_then(|d| d.with_formats(program.precision, &formats))
                     .and_then(|d| d.with_sampling(sampling(args)))
                 {
                     Err(e) => Entry {

@@ -13,6 +13,7 @@ mod errata;
 mod float_nonfinite;
 mod fuzz_regressions;
 mod module_cycles;
+mod regress_argument_precision;
 mod regress_done_when;
 mod regress_explain;
 mod regress_fpbench;

@@ -254,6 +254,7 @@ impl Program {
             pre: None,
             outputs,
             precision: Format::Binary64,
+            input_precision: Vec::new(),
         })
     }
 
@@ -300,6 +301,7 @@ impl Program {
             pre: None,
             outputs,
             precision: Format::Binary64,
+            input_precision: Vec::new(),
         })
     }
 

@@ -25,6 +25,12 @@
 //!   `powf`, ...: [`call_f32`]), an input is taken as binary32 (the harness samples binary32
 //!   values) and the outputs are returned as the doubles holding them exactly.
 //!
+//! * An input of its own precision ([`Program::input_format`]: FPCore's
+//!   `(! :precision binary32 x)` argument of a binary64 benchmark, or the reverse) is taken as
+//!   the value of that precision it holds; the operations on it round to the precision in scope.
+//!   A binary32 input of a binary64 program is a double like any other; a binary64 input of a
+//!   binary32 program makes the whole evaluation the mixed one below.
+//!
 //! * A program that mixes precisions (FPCore's `(! :precision binary64 ...)` inside a binary32
 //!   program, or the reverse, and `cast`: [`super::Node::Precision`], [`super::Node::Cast`])
 //!   computes each operation in the precision in scope: its exact result on its operands,
@@ -613,6 +619,9 @@ impl Program {
         out.clear();
         let uniform = match self.precision {
             Format::Binary64 => self.eval_ieee::<f64>(x, out),
+            // A binary64 input of a binary32 program is not a binary32 operand: the operations
+            // on it round its exact value once, in the mixed domain.
+            Format::Binary32 if self.mixes_input_precisions() => Err(FloatStop::Mixed),
             Format::Binary32 => self.eval_ieee::<f32>(x, out),
         };
         let done = match uniform {

@@ -332,12 +332,33 @@ pub struct Program {
     /// rounded to it, except inside a [`Node::Precision`]) and the exact reference's rounding is
     /// decided in: binary64 unless FPCore's `:precision` or `regress --precision` says binary32.
     pub precision: Format,
+    /// The precision of each input's values where it is not [`Program::precision`] (FPCore's
+    /// argument `(! :precision binary32 x)` in a binary64 benchmark, or the reverse): `None`, or
+    /// an empty vector, for an input of the program's precision ([`Program::input_format`]).
+    /// Such an input is sampled among the values of its own precision, and the operations on it
+    /// round to the precision in scope.
+    pub input_precision: Vec<Option<Format>>,
 }
 
 impl Program {
     /// The number of inputs.
     pub fn arity(&self) -> usize {
         self.inputs.len()
+    }
+
+    /// The precision of input `i`'s values: its own ([`Program::input_precision`]) or the
+    /// program's.
+    pub fn input_format(&self, i: usize) -> Format {
+        self.input_precision
+            .get(i)
+            .copied()
+            .flatten()
+            .unwrap_or(self.precision)
+    }
+
+    /// Whether some input's values are of another precision than the program's.
+    pub fn mixes_input_precisions(&self) -> bool {
+        (0..self.inputs.len()).any(|i| self.input_format(i) != self.precision)
     }
 
     /// The number of operations: every node of the outputs, the `let` values and the

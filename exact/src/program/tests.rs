@@ -39,6 +39,7 @@ fn one_output(nodes: Node, inputs: &[&str]) -> Program {
         pre: None,
         outputs: vec![nodes],
         precision: Format::Binary64,
+        input_precision: Vec::new(),
     }
 }
 
@@ -282,6 +283,7 @@ fn operation_count_and_arity() {
             )),
         )],
         precision: Format::Binary64,
+        input_precision: Vec::new(),
     };
     // neg, sqrt, two comparisons.
     assert_eq!(p.operation_count(), 4);
@@ -559,6 +561,7 @@ fn let_slots_and_many_slots() {
             Node::Abs(b(Node::Neg(b(Node::Input(0))))),
         ],
         precision: Format::Binary64,
+        input_precision: Vec::new(),
     };
     let x = 0.3;
     let s0 = x + 1.0;
@@ -580,6 +583,7 @@ fn let_slots_and_many_slots() {
         pre: None,
         outputs: vec![Node::Let(bindings, b(Node::Slot(n - 1)))],
         precision: Format::Binary64,
+        input_precision: Vec::new(),
     };
     assert_eq!(p.eval_f64(&[0.5]), vec![0.5 + (n - 1) as f64]);
     let mut out = Vec::new();

@@ -27,6 +27,7 @@ fn reference(f: Func, args: &[f64]) -> Result<Reference, ExactStop> {
         pre: None,
         outputs: vec![Node::Fun(f, (0..args.len()).map(Node::Input).collect())],
         precision: Format::Binary64,
+        input_precision: Vec::new(),
     };
     let x: Vec<Rational> = args.iter().map(|&v| exact(v)).collect();
     p.eval_exact(&x).map(|mut r| r.remove(0))

@@ -23,6 +23,8 @@
 //! unbounded side stops at `±f32::MAX`), "uniform over the doubles" becomes uniform over the
 //! binary32 values (their ordinal indices), and a uniform draw on the reals is rounded to the
 //! nearest binary32 value (which stays in the range: its ends are binary32 values).
+//! [`SampleDomain::with_formats`] gives each input its own format (an FPCore argument of
+//! another precision than its benchmark's): each coordinate is drawn as its format says.
 //!
 //! # Exact bounds
 //! Bounds are rationals. The sampled range of a coordinate is from the smallest double that
@@ -72,7 +74,11 @@ pub struct SampleDomain {
     intervals: Vec<Range>,
     draws: Vec<Draw>,
     names: Vec<String>,
-    format: Format,
+    /// The format of each coordinate's values.
+    formats: Vec<Format>,
+    /// The format the sampled program computes in: a coordinate of another format is named
+    /// as such by [`InputGen::describe`].
+    base: Format,
 }
 
 impl SampleDomain {
@@ -93,7 +99,8 @@ impl SampleDomain {
     /// When the number of names is not the number of intervals, or when an interval contains
     /// no finite double, naming the input.
     pub fn named(intervals: Vec<Range>, names: &[String]) -> Result<SampleDomain, GenError> {
-        SampleDomain::named_in(intervals, names, Format::Binary64)
+        let formats = vec![Format::Binary64; intervals.len()];
+        SampleDomain::named_in(intervals, names, formats, Format::Binary64)
     }
 
     /// The same domain sampling the values of `format` (see the module doc; draw rules are
@@ -102,13 +109,34 @@ impl SampleDomain {
     /// # Errors
     /// When an interval contains no finite value of `format`, naming the input.
     pub fn with_format(self, format: Format) -> Result<SampleDomain, GenError> {
-        SampleDomain::named_in(self.intervals, &self.names, format)
+        let formats = vec![format; self.intervals.len()];
+        SampleDomain::named_in(self.intervals, &self.names, formats, format)
+    }
+
+    /// The same domain with input `i` sampling the values of `formats[i]` (FPCore's arguments
+    /// of their own precision; see the module doc; draw rules are reset to
+    /// [`Sampling::Mixed`]: apply [`SampleDomain::with_sampling`] after this), for a program
+    /// computing in `base` ([`InputGen::describe`] names the format of an input of another).
+    ///
+    /// # Errors
+    /// When the number of formats is not the number of inputs, or an interval contains no
+    /// finite value of its input's format, naming the input.
+    pub fn with_formats(self, base: Format, formats: &[Format]) -> Result<SampleDomain, GenError> {
+        if formats.len() != self.intervals.len() {
+            return Err(GenError(format!(
+                "{} formats for a domain of {} inputs",
+                formats.len(),
+                self.intervals.len()
+            )));
+        }
+        SampleDomain::named_in(self.intervals, &self.names, formats.to_vec(), base)
     }
 
     fn named_in(
         intervals: Vec<Range>,
         names: &[String],
-        format: Format,
+        formats: Vec<Format>,
+        base: Format,
     ) -> Result<SampleDomain, GenError> {
         if names.len() != intervals.len() {
             return Err(GenError(format!(
@@ -120,6 +148,7 @@ impl SampleDomain {
         let names = names.to_vec();
         let mut draws = Vec::with_capacity(intervals.len());
         for (i, iv) in intervals.iter().enumerate() {
+            let format = formats[i];
             let empty = || {
                 GenError(format!(
                     "input {i} ({}) has no finite {} in {}",
@@ -150,7 +179,8 @@ impl SampleDomain {
             intervals,
             draws,
             names,
-            format,
+            formats,
+            base,
         })
     }
 
@@ -176,8 +206,8 @@ impl SampleDomain {
     /// # Errors
     /// [`Sampling::Reals`] with a range that lacks a bound, naming the input.
     pub fn with_sampling(mut self, sampling: Sampling) -> Result<SampleDomain, GenError> {
-        let format = self.format;
         for (i, (iv, draw)) in self.intervals.iter().zip(&mut self.draws).enumerate() {
+            let format = self.formats[i];
             let bounded = iv.lo != Bound::Unbounded && iv.hi != Bound::Unbounded;
             let (lo, hi) = match *draw {
                 Draw::Uniform { lo, hi } => (lo, hi),
@@ -217,10 +247,10 @@ impl InputGen for SampleDomain {
     }
 
     fn sample(&self, rng: &mut Rng) -> Vec<f64> {
-        let format = self.format;
         self.draws
             .iter()
-            .map(|d| match *d {
+            .zip(&self.formats)
+            .map(|(d, &format)| match *d {
                 Draw::Uniform { lo, hi } => match format {
                     Format::Binary64 => rng.uniform(lo, hi),
                     Format::Binary32 => f64::from(rng.uniform(lo, hi) as f32),
@@ -236,41 +266,52 @@ impl InputGen for SampleDomain {
     }
 
     fn contains(&self, x: &[f64]) -> bool {
-        let format = self.format;
         x.len() == self.draws.len()
-            && x.iter().zip(&self.draws).all(|(&v, d)| {
-                format.holds(v)
-                    && match *d {
-                        Draw::Uniform { lo, hi } => lo <= v && v <= hi,
-                        Draw::Ordinal { lo, hi } => {
-                            v.is_finite() && (lo..=hi).contains(&ordinal_in(format, v))
+            && x.iter()
+                .zip(&self.draws)
+                .zip(&self.formats)
+                .all(|((&v, d), &format)| {
+                    format.holds(v)
+                        && match *d {
+                            Draw::Uniform { lo, hi } => lo <= v && v <= hi,
+                            Draw::Ordinal { lo, hi } => {
+                                v.is_finite() && (lo..=hi).contains(&ordinal_in(format, v))
+                            }
                         }
-                    }
-            })
+                })
     }
 
     fn describe(&self) -> String {
-        let word = values_word(self.format);
         let parts: Vec<String> = self
             .intervals
             .iter()
             .zip(&self.names)
             .zip(&self.draws)
-            .map(|((iv, name), draw)| match (&iv.lo, &iv.hi) {
-                (Bound::Unbounded, Bound::Unbounded) => format!("{name} in all finite {word}"),
-                (lo, Bound::Unbounded) => one_sided(name, word, '>', lo),
-                (Bound::Unbounded, hi) => one_sided(name, word, '<', hi),
+            .zip(&self.formats)
+            .map(|(((iv, name), draw), &format)| (iv, name, draw, format))
+            .map(|(iv, name, draw, format)| match (&iv.lo, &iv.hi) {
+                (Bound::Unbounded, Bound::Unbounded) => {
+                    format!("{name} in all finite {}", values_word(format))
+                }
+                (lo, Bound::Unbounded) => one_sided(name, values_word(format), '>', lo),
+                (Bound::Unbounded, hi) => one_sided(name, values_word(format), '<', hi),
                 _ => match draw {
-                    Draw::Uniform { .. } => match self.format {
+                    Draw::Uniform { .. } => match format {
+                        // A binary64 input of a binary32 program.
+                        Format::Binary64 if self.base != format => {
+                            format!("{name} in {} (uniform, binary64)", show_interval(iv))
+                        }
                         Format::Binary64 => format!("{name} in {} (uniform)", show_interval(iv)),
                         Format::Binary32 => format!(
                             "{name} in {} (uniform, rounded to binary32)",
                             show_interval(iv)
                         ),
                     },
-                    Draw::Ordinal { .. } => {
-                        format!("{name} in {} (uniform over the {word})", show_interval(iv))
-                    }
+                    Draw::Ordinal { .. } => format!(
+                        "{name} in {} (uniform over the {})",
+                        show_interval(iv),
+                        values_word(format)
+                    ),
                 },
             })
             .collect();

@@ -378,3 +378,75 @@ fn sampling_floats_or_reals_applies_to_every_coordinate() {
         "x in [1, 2] (uniform), y in [-3, 3] (uniform)"
     );
 }
+
+/// A domain whose `x` is a binary32 argument and `y` a binary64 one, of a program computing in
+/// `base`, drawn by `sampling`.
+fn mixed_formats(base: Format, sampling: Sampling, bounded: bool) -> SampleDomain {
+    let x = if bounded {
+        iv(Bound::Open(q(1, 3)), cl(1000))
+    } else {
+        iv(Bound::Unbounded, Bound::Unbounded)
+    };
+    SampleDomain::named(vec![x, iv(cl(-2), cl(5))], &names(&["x", "y"]))
+        .and_then(|d| d.with_formats(base, &[Format::Binary32, Format::Binary64]))
+        .and_then(|d| d.with_sampling(sampling))
+        .expect("non-empty")
+}
+
+#[test]
+fn inputs_of_their_own_format_are_drawn_and_described_as_such() {
+    let d = mixed_formats(Format::Binary64, Sampling::Mixed, true);
+    assert_eq!(
+        d.describe(),
+        "x in (1/3, 1000] (uniform, rounded to binary32), y in [-2, 5] (uniform)"
+    );
+    // Some y is not a binary32 value: only x is rounded.
+    let mut rng = Rng::new(3);
+    let samples: Vec<Vec<f64>> = (0..200).map(|_| d.sample(&mut rng)).collect();
+    assert!(samples.iter().any(|s| !Format::Binary32.holds(s[1])));
+    // Shrinking stays among the binary32 values of x.
+    assert!(d.contains(&[1.5, 0.1]));
+    assert!(!d.contains(&[0.1, 1.5]));
+    let d = mixed_formats(Format::Binary32, Sampling::Floats, false);
+    assert_eq!(
+        d.describe(),
+        "x in all finite binary32 values, y in [-2, 5] (uniform over the doubles)"
+    );
+    let d = mixed_formats(Format::Binary32, Sampling::Reals, true);
+    assert_eq!(
+        d.describe(),
+        "x in (1/3, 1000] (uniform, rounded to binary32), y in [-2, 5] (uniform, binary64)"
+    );
+    let e = SampleDomain::named(vec![iv(cl(0), cl(1))], &names(&["x"]))
+        .and_then(|d| d.with_formats(Format::Binary64, &[]))
+        .expect_err("one format per input");
+    assert!(
+        e.to_string().contains("0 formats for a domain of 1 inputs"),
+        "{e}"
+    );
+}
+
+proptest::proptest! {
+    /// Every sampled value of a binary32 input is a binary32 value inside its bounds, whatever
+    /// the sampling rule and the other inputs' format.
+    #[test]
+    fn a_binary32_input_samples_binary32_values(
+        seed in 0u64..u64::MAX,
+        base_is_32 in proptest::bool::ANY,
+        rule in 0usize..3,
+        bounded in proptest::bool::ANY,
+    ) {
+        let base = if base_is_32 { Format::Binary32 } else { Format::Binary64 };
+        let sampling = [Sampling::Mixed, Sampling::Floats, Sampling::Reals][rule];
+        let bounded = bounded || sampling == Sampling::Reals;
+        let d = mixed_formats(base, sampling, bounded);
+        let mut rng = Rng::new(seed);
+        for _ in 0..64 {
+            let s = d.sample(&mut rng);
+            proptest::prop_assert!(Format::Binary32.holds(s[0]) && s[0].is_finite(), "{s:?}");
+            proptest::prop_assert!(!bounded || (s[0] > 1.0 / 3.0 && s[0] <= 1000.0), "{s:?}");
+            proptest::prop_assert!((-2.0..=5.0).contains(&s[1]), "{s:?}");
+            proptest::prop_assert!(d.contains(&s), "{s:?}");
+        }
+    }
+}

@@ -3,6 +3,11 @@
 //! element; output `k` is the body with each tail array replaced by its element `k`
 //! ([`project`]), so the bindings and conditions around it are shared by every output (each
 //! output tree evaluates them again: pure expressions, the same values on both sides).
+//!
+//! A body with a loop is not repeated per element: a loop of thousands of iterations would run
+//! once per output and count against `loop-iterations` that many times. Its tail arrays are
+//! marked instead ([`shared`]) and the compiler evaluates the body once, binding the elements
+//! to result slots that the outputs read.
 
 use super::sexpr::{Pos, SExpr};
 
@@ -85,13 +90,64 @@ pub(super) fn elements<T, E>(
     }
 }
 
+/// The head of the form that stands for a tail `(array e0 e1 ...)` in [`shared`]'s body: a
+/// symbol no FPCore text can spell (it holds a space), so only the compiler's own rewriting
+/// produces it.
+pub(super) const RESULTS: &str = "array results";
+
+/// The body of a program with a loop (`while`, `while*`, anywhere in it) that returns an array
+/// of `n` elements, with every tail `(array e0 e1 ...)` replaced by `(RESULTS e0 e1 ...)`: the
+/// compiler evaluates that body once and binds the elements to `n` result slots, so the loop
+/// runs once per evaluation for all outputs. `None` for a body without a loop or without an
+/// array result (each output is then its own tree, [`elements`]).
+///
+/// # Errors
+/// As [`elements`]: a malformed array result.
+pub(super) fn shared<E>(
+    body: &SExpr,
+    bad: impl Fn(Pos, String) -> E,
+) -> Result<Option<(usize, SExpr)>, E> {
+    match width(body).map_err(|(pos, m)| bad(pos, m))? {
+        Some(n) if has_loop(body) => Ok(Some((n, replace_tails(body, &mark)))),
+        _ => Ok(None),
+    }
+}
+
+/// Whether `e` has a `while` or `while*` form anywhere.
+fn has_loop(e: &SExpr) -> bool {
+    match e {
+        SExpr::List(items, _) => {
+            matches!(items.first().and_then(SExpr::sym), Some("while" | "while*"))
+                || items.iter().any(has_loop)
+        }
+        _ => false,
+    }
+}
+
+/// `(array e0 e1 ...)` as `(RESULTS e0 e1 ...)`.
+fn mark(array: &SExpr) -> SExpr {
+    let SExpr::List(items, pos) = array else {
+        unreachable!("an array is a list")
+    };
+    let mut out = items.clone();
+    out[0] = SExpr::Sym(RESULTS.to_string(), items[0].pos());
+    SExpr::List(out, *pos)
+}
+
 /// `body` with every tail `(array e0 e1 ...)` replaced by `ek`.
 fn project(body: &SExpr, k: usize) -> SExpr {
-    if is_array(body).is_some() {
-        let SExpr::List(items, _) = body else {
+    replace_tails(body, &|array: &SExpr| {
+        let SExpr::List(items, _) = array else {
             unreachable!("an array is a list")
         };
-        return items[k + 1].clone();
+        items[k + 1].clone()
+    })
+}
+
+/// `body` with every tail array replaced by `f` of it.
+fn replace_tails(body: &SExpr, f: &dyn Fn(&SExpr) -> SExpr) -> SExpr {
+    if is_array(body).is_some() {
+        return f(body);
     }
     let Some(ts) = tails(body) else {
         return body.clone();
@@ -110,7 +166,7 @@ fn project(body: &SExpr, k: usize) -> SExpr {
         .enumerate()
         .map(|(i, it)| {
             if tail_at.contains(&i) {
-                project(it, k)
+                replace_tails(it, f)
             } else {
                 it.clone()
             }

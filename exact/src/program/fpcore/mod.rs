@@ -32,8 +32,11 @@
 //!   `if` branches): one output per element, each the whole body with that element taken;
 //! * rounding contexts: `:precision binary64` (the default when absent) or `binary32` (the
 //!   program's [`crate::program::Format`]: its float side computes in `f32`) and
-//!   `:round nearestEven`, on the benchmark, in `!` annotations and on arguments
-//!   `(! :precision binary64 x)` (an argument of the benchmark's precision). An annotation of
+//!   `:round nearestEven`, on the benchmark, in `!` annotations and on arguments. An argument
+//!   of the other precision (`(! :precision binary32 x)` in a binary64 benchmark, or the
+//!   reverse) holds values of its own precision: it is sampled among them
+//!   ([`crate::program::Program::input_precision`]) and the operations on it round to the
+//!   precision in scope, as for a value of an annotated sub-expression. An annotation of
 //!   the other precision inside the body is a [`Node::Precision`] scope: its operations round
 //!   to it (FPCore's lexical scoping); `(cast e)` rounds `e` to the precision in scope
 //!   ([`Node::Cast`], only in a program that mixes precisions: otherwise it is `e`). Other
@@ -43,9 +46,9 @@
 //! the functions without a certified enclosure here (`erf`, `tgamma`, `fmod`, ...), the
 //! derived and non-finite constants (`LN2`, `INFINITY`, ...), `for` loops, tensors,
 //! the classification predicates (`isnan`, ...), calls of other named FPCores, any precision
-//! other than binary64 and binary32, an argument of the other precision (`mixed precisions
-//! (a binary64 argument of a binary32 benchmark)`: its samples would be of another format),
-//! and rounding other than nearestEven.
+//! other than binary64 and binary32 (on the benchmark, an annotation or an argument:
+//! `precision integer`), and rounding other than nearestEven. A `:precision` of an argument
+//! that names no FPCore precision at all is an error of the file.
 //!
 //! # `:pre` and the domain
 //! The precondition is split into its conjuncts (`and`, nested). Each ordered comparison chain
@@ -67,6 +70,8 @@ mod array;
 mod compile;
 mod sexpr;
 
+#[cfg(test)]
+mod precision_tests;
 #[cfg(test)]
 mod tests;
 

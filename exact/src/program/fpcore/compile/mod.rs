@@ -169,10 +169,8 @@ fn mixes_precisions(e: &SExpr, format: Format) -> bool {
     items.iter().any(|i| mixes_precisions(i, format))
 }
 
-/// Checks the rounding-context properties of a benchmark or an argument against the
-/// benchmark's `format`: its own precision and round-to-nearest-even only. An argument of
-/// another supported format is a mixed-precision input, unsupported as such (one line naming
-/// both).
+/// Checks the rounding-context properties of a benchmark against its `format`: its own
+/// precision and round-to-nearest-even only.
 fn check_context(pairs: &[(&str, &SExpr)], format: Format) -> Result<(), Fail> {
     for (key, value) in pairs {
         let (what, wanted) = match *key {
@@ -182,12 +180,6 @@ fn check_context(pairs: &[(&str, &SExpr)], format: Format) -> Result<(), Fail> {
         };
         match value.sym() {
             Some(v) if v == wanted => {}
-            Some(v) if what == "precision" && Format::from_name(v).is_some() => {
-                return Err(unsupported(format!(
-                    "mixed precisions (a {v} argument of a {} benchmark)",
-                    format.name()
-                )))
-            }
             _ => return Err(unsupported(format!("{what} {}", render(value)))),
         }
     }
@@ -300,19 +292,23 @@ pub(super) fn benchmark(tree: &SExpr) -> Result<Benchmark, FpCoreError> {
     let props = property_pairs(props)?;
     let format = benchmark_format(&props);
 
-    // Arguments: names, plus the first unsupported annotation if any.
+    // Arguments: names, their own precisions, plus the first unsupported annotation if any.
     let mut args: Vec<String> = Vec::new();
+    let mut arg_formats: Vec<Option<Format>> = Vec::new();
     let mut arg_unsupported: Option<String> = None;
     for a in arg_list {
-        let (name, problem) = argument(a, *format.as_ref().unwrap_or(&Format::Binary64))?;
+        let Argument { name, own, problem } =
+            argument(a, *format.as_ref().unwrap_or(&Format::Binary64))?;
         if args.contains(&name) {
             return Err(err(a.pos(), format!("duplicate argument `{name}`")));
         }
         args.push(name);
+        arg_formats.push(own);
         if arg_unsupported.is_none() {
             arg_unsupported = problem;
         }
     }
+    let mixed_args = arg_formats.iter().any(Option::is_some);
 
     let mut name = None;
     let mut pre = None;
@@ -348,13 +344,14 @@ pub(super) fn benchmark(tree: &SExpr) -> Result<Benchmark, FpCoreError> {
             check_context(&props, format)?;
             let mut c = Compiler {
                 format,
-                mixed: mixes_precisions(body, format),
+                mixed: mixed_args || mixes_precisions(body, format),
                 slots: 0,
                 env: args
                     .iter()
                     .enumerate()
                     .map(|(i, n)| (n.clone(), Value::Num(Node::Input(i))))
                     .collect(),
+                results: None,
             };
             let pre = match pre {
                 Some(p) => c.precondition(p, &args)?,
@@ -368,6 +365,11 @@ pub(super) fn benchmark(tree: &SExpr) -> Result<Benchmark, FpCoreError> {
                 pre,
                 outputs,
                 precision: format,
+                input_precision: if mixed_args {
+                    arg_formats.clone()
+                } else {
+                    Vec::new()
+                },
             })
         }),
     };
@@ -386,11 +388,54 @@ pub(super) fn benchmark(tree: &SExpr) -> Result<Benchmark, FpCoreError> {
     })
 }
 
+/// The precision names of FPCore 2.0 beyond binary64 and binary32: a benchmark or argument
+/// that uses one is unsupported (not malformed). The parameterised ones are lists
+/// (`(float es nbits)`, `(posit es nbits)`, `(fixed nbits scale)`).
+const OTHER_PRECISIONS: &[&str] = &[
+    "binary16",
+    "binary80",
+    "binary128",
+    "posit8",
+    "posit16",
+    "posit32",
+    "posit64",
+    "real",
+    "integer",
+];
+
+/// Whether `v` is an FPCore precision that is not binary64 or binary32.
+fn other_precision(v: &SExpr) -> bool {
+    match v {
+        SExpr::Sym(s, _) => OTHER_PRECISIONS.contains(&s.as_str()),
+        SExpr::List(items, _) => matches!(
+            items.first().and_then(SExpr::sym),
+            Some("float" | "posit" | "fixed")
+        ),
+        _ => false,
+    }
+}
+
+/// One argument of a benchmark of precision `format`.
+struct Argument {
+    name: String,
+    /// The precision of its values when it is not `format` (`(! :precision binary32 x)` in a
+    /// binary64 benchmark, or the reverse).
+    own: Option<Format>,
+    /// What is unsupported about it (another FPCore precision, another rounding, a tensor).
+    problem: Option<String>,
+}
+
 /// One argument: `x`, `(! props x)`, or a tensor `(x dims...)` / `(! props x dims...)`.
-/// Returns the name and what is unsupported about it, if anything.
-fn argument(a: &SExpr, format: Format) -> Result<(String, Option<String>), FpCoreError> {
+///
+/// # Errors
+/// No name, or a `:precision` that names no FPCore precision (one line with its position).
+fn argument(a: &SExpr, format: Format) -> Result<Argument, FpCoreError> {
     match a {
-        SExpr::Sym(s, _) => Ok((s.clone(), None)),
+        SExpr::Sym(s, _) => Ok(Argument {
+            name: s.clone(),
+            own: None,
+            problem: None,
+        }),
         SExpr::List(items, pos) => {
             let (props, rest) = if items.first().and_then(SExpr::sym) == Some("!") {
                 // `(! :p v ... name dims...)`: properties come in pairs before the name.
@@ -410,14 +455,40 @@ fn argument(a: &SExpr, format: Format) -> Result<(String, Option<String>), FpCor
             let Some(name) = rest.first().and_then(SExpr::sym) else {
                 return Err(err(*pos, "expected an argument name"));
             };
-            let mut problem = match check_context(&props, format) {
-                Err(Fail::Unsupported(op)) => Some(op),
-                _ => None,
-            };
+            let mut own = None;
+            let mut problem = None;
+            for (key, value) in &props {
+                match *key {
+                    ":precision" | ":type" => match value.sym().and_then(Format::from_name) {
+                        Some(f) => own = (f != format).then_some(f),
+                        None if other_precision(value) => {
+                            problem.get_or_insert(format!("precision {}", render(value)));
+                        }
+                        None => {
+                            return Err(err(
+                                value.pos(),
+                                format!(
+                                    "unknown precision `{}` of the argument `{name}` (FPCore's are binary16, binary32, binary64, binary80, binary128, posit8 to posit64, real, integer, (float es nbits), (posit es nbits), (fixed nbits scale))",
+                                    render(value)
+                                ),
+                            ))
+                        }
+                    },
+                    ":round" if value.sym() == Some("nearestEven") => {}
+                    ":round" => {
+                        problem.get_or_insert(format!("round {}", render(value)));
+                    }
+                    _ => {}
+                }
+            }
             if rest.len() > 1 && problem.is_none() {
                 problem = Some("tensor".to_string());
             }
-            Ok((name.to_string(), problem))
+            Ok(Argument {
+                name: name.to_string(),
+                own,
+                problem,
+            })
         }
         other => Err(err(
             other.pos(),
@@ -434,6 +505,9 @@ struct Compiler {
     mixed: bool,
     slots: usize,
     env: Vec<(String, Value)>,
+    /// The result slots of the marked tail arrays while a shared body is compiled
+    /// ([`Compiler::shared_outputs`]).
+    results: Option<Vec<usize>>,
 }
 
 impl Compiler {
@@ -482,6 +556,9 @@ impl Compiler {
             }
             _ => {}
         }
+        if let Some((n, marked)) = super::array::shared(body, syntax)? {
+            return self.shared_outputs(n, &marked);
+        }
         if let Some(outs) = super::array::elements(body, |e| self.num(e), syntax)? {
             return Ok(outs);
         }
@@ -489,6 +566,44 @@ impl Compiler {
             Value::Num(n) => Ok(vec![n]),
             Value::Bool(_) => Err(unsupported("boolean result")),
         }
+    }
+
+    /// The `n` outputs of a body with a loop whose tail arrays are marked
+    /// ([`super::array::shared`]): the body is evaluated once, by the first output, each of its
+    /// tail arrays binding its elements to `n` fresh result slots; output `k` reads slot `k`
+    /// (the evaluators run the outputs in order on one set of slots). The loop then runs once
+    /// per evaluation, and its iterations count once against `loop-iterations`.
+    fn shared_outputs(&mut self, n: usize, marked: &SExpr) -> Result<Vec<Node>, Fail> {
+        let first = self.slots;
+        self.slots += n + 1;
+        let results: Vec<usize> = (first..first + n).collect();
+        let body_slot = first + n;
+        let outer = self.results.replace(results.clone());
+        let body = self.num(marked);
+        self.results = outer;
+        let mut outs = vec![Node::Let(
+            vec![(body_slot, body?)],
+            Box::new(Node::Slot(results[0])),
+        )];
+        outs.extend(results[1..].iter().map(|&s| Node::Slot(s)));
+        Ok(outs)
+    }
+
+    /// A marked tail array `(RESULTS e0 e1 ...)` of [`Compiler::shared_outputs`]: its elements
+    /// bound to the result slots; its own value is never read.
+    fn bind_results(&mut self, elements: &[SExpr]) -> Result<Value, Fail> {
+        let results = self
+            .results
+            .clone()
+            .expect("only a shared body has marked arrays");
+        let mut bindings = Vec::with_capacity(elements.len());
+        for (slot, e) in results.into_iter().zip(elements) {
+            bindings.push((slot, self.num(e)?));
+        }
+        Ok(Value::Num(Node::Let(
+            bindings,
+            Box::new(Node::Const(Rational::ZERO)),
+        )))
     }
 
     fn num(&mut self, e: &SExpr) -> Result<Node, Fail> {
@@ -588,6 +703,7 @@ impl Compiler {
             }
             "while" | "while*" => self.while_expr(op == "while*", args, pos),
             "array" => Err(unsupported("array")),
+            super::array::RESULTS => self.bind_results(args),
             "!" => {
                 let (e, pairs) = annotation(items, pos)?;
                 let (outer, inner) = (self.format, context_format(&pairs, self.format)?);
