@@ -249,10 +249,15 @@ fn exponents_are_bounded_integer_constants() {
         e.to_string(),
         "exponent at 2 must be an integer constant, found y"
     );
-    let e = Program::parse("x^(1/2)", None).unwrap_err();
+    let e = Program::parse("x^(1/3)", None).unwrap_err();
     assert_eq!(
         e.to_string(),
-        "exponent at 2 must be an integer constant, found 1/2"
+        "exponent at 2 must be an integer constant, found 1/3"
+    );
+    // A half-integer exponent is read as a power of the square root, as in every formula.
+    assert_eq!(
+        Program::parse("x^(3/2)", None).unwrap().operation_count(),
+        prog("sqrt(x)^3").operation_count()
     );
     // Syntax errors keep their position.
     let e = Program::parse("x + * 2", None).unwrap_err();

@@ -47,11 +47,21 @@ fn ulps(a: f64, b: f64) -> u64 {
 }
 
 /// Asserts that the correctly rounded reference of `f` at `args` is within one ulp of `libm`.
+/// The error allowed to the platform's libm against the correctly rounded value, in ulps: 1,
+/// and 2 for the hyperbolic functions and their inverses, which glibc documents to 2 ulps (its
+/// published maximum known errors; `acosh` near 1 reaches them).
+fn libm_tolerance(f: Func) -> u64 {
+    match f {
+        Func::Sinh | Func::Cosh | Func::Tanh | Func::Asinh | Func::Acosh | Func::Atanh => 2,
+        _ => 1,
+    }
+}
+
 fn agrees(f: Func, args: &[f64], libm: f64) -> Result<(), TestCaseError> {
     let r = reference(f, args).map_err(|e| TestCaseError::fail(format!("{f:?}{args:?}: {e}")))?;
     let rounded = crate::to_f64::rational_to_f64(&r.value);
     prop_assert!(
-        ulps(rounded, libm) <= 1,
+        ulps(rounded, libm) <= libm_tolerance(f),
         "{:?}{:?}: certified {:e}, libm {:e}",
         f,
         args,

@@ -26,18 +26,7 @@ use std::collections::HashMap;
 
 /// Whether a side has a square root or an angle: the identity then takes this path.
 pub(crate) fn needs_preparation(e: &Expr) -> bool {
-    fn has_sqrt(e: &Expr) -> bool {
-        match &e.kind {
-            ExprKind::Number(_) | ExprKind::Var(_) => false,
-            ExprKind::Sqrt(_) => true,
-            ExprKind::Neg(x) => has_sqrt(x),
-            ExprKind::Pow(a, b) => has_sqrt(a) || has_sqrt(b),
-            ExprKind::Sum(ts) => ts.iter().any(|(_, t)| has_sqrt(t)),
-            ExprKind::Product(fs) => fs.iter().any(|(_, f)| has_sqrt(f)),
-            ExprKind::Call(_, args) => args.iter().any(has_sqrt),
-        }
-    }
-    has_trig(e) || has_sqrt(e)
+    has_trig(e) || crate::expr::library::has_sqrt(e)
 }
 
 /// What the field of the constants adds to the error bound.
