@@ -156,6 +156,7 @@ use num_traits::{One, Signed, ToPrimitive, Zero};
 /// subdivision level and every level costs `O(n^2)` big-integer additions).
 pub const MAX_DESCARTES_DEGREE: usize = 1 << 14;
 
+mod deflate;
 mod estimate;
 mod modp;
 mod pairs;
@@ -164,6 +165,7 @@ mod subdivision;
 #[cfg(test)]
 mod tests;
 
+use deflate::*;
 use estimate::*;
 use modp::*;
 use pairs::*;
@@ -422,11 +424,9 @@ pub(super) fn integer_real_roots_rational_exact(
             out.push(ri);
             continue;
         }
-        if let Some(est) = &estimate {
-            if let Some(r) = rationals.recognise(est.to_f64(), &ri.lo, &ri.hi) {
-                out.push(RootInterval::exact(r));
-                continue;
-            }
+        if let Ok(r) = recognise(Some(&mut rationals), estimate, &ri) {
+            out.push(RootInterval::exact(r));
+            continue;
         }
         // The sign right of root i is (-1)^(k-1-i) (positive leading coefficient).
         let s_lo = if (k - 1 - i) % 2 == 0 {
@@ -450,6 +450,39 @@ pub(super) fn integer_real_roots_rational_exact(
         }
     }
     Ok(out)
+}
+
+/// The rational root of the isolating interval `ri` recognised from its estimate
+/// ([`RationalRoots`], when given): from a leaf's coarse point first (denominators up to
+/// [`COARSE_DENOMINATOR`]; the leaf's iteration is not run to its end for a root found there),
+/// then from the final estimate; otherwise the final estimate, for the refinement.
+fn recognise(
+    rationals: Option<&mut RationalRoots>,
+    estimate: Option<Estimate>,
+    ri: &RootInterval,
+) -> Result<Rational, Option<Estimate>> {
+    let Some(rationals) = rationals else {
+        return Err(estimate.and_then(Estimate::sharpened));
+    };
+    let window = Window::new(&ri.lo, &ri.hi);
+    // The convergents tried at the coarse point: the same ones of the final estimate (usually
+    // all its first ones) are not tried again.
+    let mut tried = Vec::new();
+    if let Some(est) = estimate.as_ref().filter(|e| e.is_coarse()) {
+        let coarse = est.to_f64();
+        let found =
+            rationals.recognise_in(coarse, &window, COARSE_DENOMINATOR, &[], Some(&mut tried));
+        if let Some(r) = found {
+            return Ok(r);
+        }
+    }
+    let estimate = estimate.and_then(Estimate::sharpened);
+    if let Some(est) = &estimate {
+        if let Some(r) = rationals.recognise_in(est.to_f64(), &window, i64::MAX, &tried, None) {
+            return Ok(r);
+        }
+    }
+    Err(estimate)
 }
 
 /// Descartes' bound for the open interval `(0, 1)` of the integer polynomial with these
@@ -522,12 +555,13 @@ fn real_roots_to_with(
             out.push(ri);
             continue;
         }
-        if let (true, Some(est)) = (opts.rationals, &estimate) {
-            if let Some(r) = rationals.recognise(est.to_f64(), &ri.lo, &ri.hi) {
+        let estimate = match recognise(opts.rationals.then_some(&mut rationals), estimate, &ri) {
+            Ok(r) => {
                 out.push(RootInterval::exact(r));
                 continue;
             }
-        }
+            Err(estimate) => estimate,
+        };
         // The sign right of root i is (-1)^(k-1-i) (positive leading coefficient).
         let s_right = if (k - 1 - i) % 2 == 0 {
             Sign::Positive
