@@ -84,9 +84,15 @@
 //! the ring `Z / 2^(64 w)`, dividing by whichever of `u`, `v` is odd (a Hensel division per
 //! step), and accepted only when the remainder vanishes there and every quotient coefficient is
 //! small enough that the congruence `(v x - u) s = q` is an equality over `Z`; the width `w`
-//! comes from Mignotte's bound on the factors of `q`, so no true factor is refused. The
-//! estimate stays a dyadic plus an `f64` offset until the refinement needs it exactly, so a
-//! recognised root costs no rational arithmetic beyond its own value. A root found is returned
+//! comes from Mignotte's bound on the factors of `q`, so no true factor is refused. While the
+//! coefficients fit in `i128` the same division runs in `Z / 2^128` with the headroom taken
+//! from the sizes of `u` and `v` (module `deflate`), the limbs deciding only what it cannot.
+//! The estimate stays a dyadic plus an `f64` offset until the refinement needs it exactly, so a
+//! recognised root costs no rational arithmetic beyond its own value. The leaf's Newton
+//! iteration first stops at a coarse point (a correction below `2^-24`, so the point is within
+//! about `2^-48` of the root), whose convergents of denominator up to `2^10` are tried; only
+//! when none is a root does the iteration resume, with the same steps as without the stop, and
+//! the convergents of the final estimate are tried (those already tried skipped). A root found is returned
 //! as the exact point `[u/v, u/v]`, like the Sturm isolator's, and divided out of the
 //! polynomial the later candidates are tested against. Nothing is decided on the estimate: an
 //! irrational root fails the tests (almost always at the divisibility, without an exact
@@ -191,7 +197,7 @@ fn root_bound(q: &[BigInt]) -> Rational {
 }
 
 /// An isolating interval with an estimate of its root when there is one (for
-/// [`RationalRoots::recognise`] and the first window of the refinement).
+/// [`RationalRoots::recognise_in`] and the first window of the refinement).
 struct Isolated {
     ri: RootInterval,
     estimate: Option<Estimate>,
@@ -465,20 +471,18 @@ fn recognise(
         return Err(estimate.and_then(Estimate::sharpened));
     };
     let window = Window::new(&ri.lo, &ri.hi);
-    // The convergents tried at the coarse point: the same ones of the final estimate (usually
-    // all its first ones) are not tried again.
-    let mut tried = Vec::new();
+    // The convergents tried at the coarse point are not tried again at the final estimate
+    // (whose first convergents are usually the same).
+    let mut phase = Phase::Only;
     if let Some(est) = estimate.as_ref().filter(|e| e.is_coarse()) {
-        let coarse = est.to_f64();
-        let found =
-            rationals.recognise_in(coarse, &window, COARSE_DENOMINATOR, &[], Some(&mut tried));
-        if let Some(r) = found {
+        if let Some(r) = rationals.recognise_in(est.to_f64(), &window, Phase::Coarse) {
             return Ok(r);
         }
+        phase = Phase::Final;
     }
     let estimate = estimate.and_then(Estimate::sharpened);
     if let Some(est) = &estimate {
-        if let Some(r) = rationals.recognise_in(est.to_f64(), &window, i64::MAX, &tried, None) {
+        if let Some(r) = rationals.recognise_in(est.to_f64(), &window, phase) {
             return Ok(r);
         }
     }

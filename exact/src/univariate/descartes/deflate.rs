@@ -25,8 +25,8 @@ use super::*;
 /// The deflated polynomial, constant term first.
 #[derive(Clone, Debug)]
 pub(super) enum Deflated {
-    /// Every coefficient is this `i128`.
-    Narrow(Vec<i128>),
+    /// Every coefficient is this `i128` (`a`); `spare` is the buffer of the next quotient.
+    Narrow { a: Vec<i128>, spare: Vec<i128> },
     /// On fixed-width limbs ([`Limbs::divide_by_linear`]).
     Wide(Limbs),
 }
@@ -50,18 +50,20 @@ fn inverse_mod_2_128(d: u128) -> u128 {
 }
 
 /// Synthetic division of `a` (degree `n >= 1`, constant term first) by `q x - p` (`q > 0`,
-/// `p != 0`, coprime) in the ring `Z / 2^128` (module documentation): from the top by `q`
+/// `p != 0`, coprime) in the ring `Z / 2^128` (module documentation), the quotient written to
+/// the buffer `s` (its contents dropped; no allocation once it has room): from the top by `q`
 /// when it is odd (`s_(n-1) = a_n / q`, `s_(k-1) = (a_k + p s_k) / q`, then `a_0 + p s_0 = 0`
 /// checked), else from the bottom by `-p` (`s_0 = -a_0 / p`, `s_k = (q s_(k-1) - a_k) / p`, then
 /// `q s_(n-1) = a_n` checked), as [`Limbs::divide_by_linear`] does on limbs.
-pub(super) fn divide_narrow(a: &[i128], p: i64, q: i64) -> NarrowDivision {
+pub(super) fn divide_narrow(a: &[i128], p: i64, q: i64, mut s: Vec<i128>) -> NarrowDivision {
     assert!(
         q > 0 && p != 0 && a.len() >= 2,
         "divide_narrow: q > 0, p != 0, degree >= 1"
     );
     let n = a.len() - 1;
     let (pw, qw) = (p as i128 as u128, q as u128);
-    let mut s = vec![0i128; n];
+    s.clear();
+    s.resize(n, 0);
     if q & 1 == 1 {
         let inv = inverse_mod_2_128(qw);
         let mut acc = 0u128;
@@ -112,11 +114,16 @@ fn i128_of(x: &BigInt) -> Option<i128> {
 }
 
 impl Deflated {
+    fn narrow(a: Vec<i128>) -> Deflated {
+        let spare = Vec::with_capacity(a.len());
+        Deflated::Narrow { a, spare }
+    }
+
     /// `a` as `i128`s when every coefficient fits, else on `w` limbs (`w` at least
     /// [`super::super::limbs::linear_factor_width`]`(a)`).
     pub(super) fn new(a: &[BigInt], w: usize) -> Deflated {
         match a.iter().map(i128_of).collect() {
-            Some(narrow) => Deflated::Narrow(narrow),
+            Some(narrow) => Deflated::narrow(narrow),
             None => Deflated::Wide(Limbs::from_bigints_width(a, w)),
         }
     }
@@ -124,7 +131,7 @@ impl Deflated {
     /// The number of coefficients.
     pub(super) fn len(&self) -> usize {
         match self {
-            Deflated::Narrow(a) => a.len(),
+            Deflated::Narrow { a, .. } => a.len(),
             Deflated::Wide(l) => l.len(),
         }
     }
@@ -135,9 +142,9 @@ impl Deflated {
     /// are the deflated one's), so no factor is missed.
     pub(super) fn divide(&mut self, p: i64, q: i64, w: usize) -> bool {
         let wide = match self {
-            Deflated::Narrow(a) => match divide_narrow(a, p, q) {
+            Deflated::Narrow { a, spare } => match divide_narrow(a, p, q, std::mem::take(spare)) {
                 NarrowDivision::Quotient(s) => {
-                    *a = s;
+                    *spare = std::mem::replace(a, s);
                     return true;
                 }
                 NarrowDivision::NotAFactor => return false,
@@ -148,11 +155,11 @@ impl Deflated {
         let quotient = wide.divide_by_linear(p, q);
         *self = match &quotient {
             Some(s) => match s.to_i128s() {
-                Some(narrow) => Deflated::Narrow(narrow),
+                Some(narrow) => Deflated::narrow(narrow),
                 None => Deflated::Wide(s.clone()),
             },
             None => match wide.to_i128s() {
-                Some(narrow) => Deflated::Narrow(narrow),
+                Some(narrow) => Deflated::narrow(narrow),
                 None => Deflated::Wide(wide),
             },
         };
@@ -163,7 +170,7 @@ impl Deflated {
     #[cfg(test)]
     pub(super) fn to_bigints(&self) -> Vec<BigInt> {
         match self {
-            Deflated::Narrow(a) => a.iter().map(|&x| BigInt::from(x)).collect(),
+            Deflated::Narrow { a, .. } => a.iter().map(|&x| BigInt::from(x)).collect(),
             Deflated::Wide(l) => l.to_bigints(),
         }
     }
@@ -246,13 +253,16 @@ mod tests {
         let g = vec![BigInt::one() << 124u32, BigInt::from(5)];
         let a = times_linear(&g, 1, 3);
         let na = narrow(&a).expect("fits");
-        assert_eq!(divide_narrow(&na, 1, 3), NarrowDivision::Undecided);
+        assert_eq!(
+            divide_narrow(&na, 1, 3, Vec::new()),
+            NarrowDivision::Undecided
+        );
         let w = super::super::super::limbs::linear_factor_width(&a);
         let mut d = Deflated::new(&a, w);
-        assert!(matches!(d, Deflated::Narrow(_)));
+        assert!(matches!(d, Deflated::Narrow { .. }));
         assert!(d.divide(1, 3, w));
         assert_eq!(d.to_bigints(), g);
-        assert!(matches!(d, Deflated::Narrow(_)));
+        assert!(matches!(d, Deflated::Narrow { .. }));
         // A polynomial past i128 starts wide and turns narrow once its quotient fits.
         let g: Vec<BigInt> = vec![BigInt::from(7), BigInt::from(-3), BigInt::one()];
         let a = times_linear(&times_linear(&g, 1 << 40, 1), -(1 << 50), 1);
@@ -263,7 +273,7 @@ mod tests {
         assert!(matches!(d, Deflated::Wide(_)));
         assert!(!d.divide(3, 1, w));
         assert!(d.divide(-(1 << 50), 1, w));
-        assert!(matches!(d, Deflated::Narrow(_)));
+        assert!(matches!(d, Deflated::Narrow { .. }));
         assert!(d.divide(1 << 40, 1, w));
         let expected: Vec<BigInt> = g.iter().map(|c| c << 40u32).collect();
         assert_eq!(d.to_bigints(), expected);
@@ -316,7 +326,7 @@ mod tests {
                 }
                 let expected = divide_by_linear_factor(&a, p2, q2);
                 if let Some(na) = narrow(&a) {
-                    match divide_narrow(&na, p2, q2) {
+                    match divide_narrow(&na, p2, q2, vec![7; 3]) {
                         NarrowDivision::Quotient(s) => {
                             let s: Vec<BigInt> = s.into_iter().map(BigInt::from).collect();
                             assert_eq!(Some(s), expected, "round {round}: ({q2} x - {p2})");

@@ -187,8 +187,9 @@ pub(super) fn binomials_f64(n: usize) -> Vec<f64> {
 /// `B(t) / (1 - t)^n = sum b_i C(n, i) s^i`, `s = t / (1 - t)`, for `t <= 1/2` and on
 /// `B(t) / t^n` (Horner in `(1 - t) / t`) above, a smooth function with the sign of `B`
 /// evaluated with every power at most 1, from the control polygon's crossing of the axis.
-/// Only a candidate generator for [`RationalRoots::recognise`] and the refinement's first window
-/// (nothing is decided on it); `None` beyond degree 1000 (the binomials leave the `f64` range).
+/// Only a candidate generator for [`RationalRoots::recognise_in`] and the refinement's first
+/// window (nothing is decided on it); `None` beyond degree 1000 (the binomials leave the `f64`
+/// range).
 /// The leaves run it through [`UnitEstimate::of_leaf`] and [`UnitEstimate::sharpened`] (the
 /// same steps, stopped once at a coarse point); this is the uninterrupted reference of the tests.
 #[cfg(test)]
@@ -459,6 +460,8 @@ pub(super) fn recognise_rational(
 /// filters.
 pub(super) struct RationalRoots {
     pub(super) deflated: Deflated,
+    /// The convergents tried at the last coarse estimate ([`RationalRoots::recognise_in`]).
+    tried: Vec<(i64, i64)>,
     pub(super) width: usize,
     pub(super) lc: Vec<u64>,
     pub(super) low: Vec<u64>,
@@ -471,6 +474,7 @@ impl RationalRoots {
         let low = q.iter().find(|c| !c.is_zero()).expect("q is not zero");
         RationalRoots {
             deflated: Deflated::new(q, width),
+            tried: Vec::with_capacity(64),
             width,
             lc: q[q.len() - 1].magnitude().to_u64_digits(),
             low: low.magnitude().to_u64_digits(),
@@ -478,26 +482,35 @@ impl RationalRoots {
     }
 
     /// The rational root in `(lo, hi)` among the convergents of `est`, divided out of the
-    /// polynomial when found.
+    /// polynomial when found (the tests' entry; the isolator goes through
+    /// [`RationalRoots::recognise_in`]).
+    #[cfg(test)]
     pub(super) fn recognise(&mut self, est: f64, lo: &Rational, hi: &Rational) -> Option<Rational> {
-        self.recognise_in(est, &Window::new(lo, hi), i64::MAX, &[], None)
+        self.recognise_in(est, &Window::new(lo, hi), Phase::Only)
     }
 
-    /// [`RationalRoots::recognise`] in `window` among the convergents of denominator at most
-    /// `max_den` (for a coarse estimate, accurate enough for those only). The `i`-th
-    /// convergent is skipped when it is `skip[i]` (a candidate already tried, with the same
-    /// outcome), and every convergent is pushed onto `seen` when given.
+    /// The rational root in `window` among the convergents of `est`: at a coarse estimate
+    /// ([`Phase::Coarse`]) those of denominator up to [`COARSE_DENOMINATOR`] (it is accurate
+    /// enough for those only), each remembered; at the final estimate after a coarse one
+    /// ([`Phase::Final`]) the `i`-th convergent is skipped when it is the coarse one's `i`-th
+    /// (already tried, with the same outcome).
     pub(super) fn recognise_in(
         &mut self,
         est: f64,
         window: &Window<'_>,
-        max_den: i64,
-        skip: &[(i64, i64)],
-        mut seen: Option<&mut Vec<(i64, i64)>>,
+        phase: Phase,
     ) -> Option<Rational> {
+        if phase == Phase::Coarse {
+            self.tried.clear();
+        }
         if self.deflated.len() < 2 {
             return None;
         }
+        let max_den = if phase == Phase::Coarse {
+            COARSE_DENOMINATOR
+        } else {
+            i64::MAX
+        };
         let Window {
             lo,
             hi,
@@ -509,11 +522,11 @@ impl RationalRoots {
             .take_while(|&(_, q)| q <= max_den)
             .enumerate()
         {
-            if let Some(seen) = seen.as_deref_mut() {
-                seen.push((p, q));
+            if phase == Phase::Coarse {
+                self.tried.push((p, q));
             }
             let pq = p as f64 / q as f64;
-            if skip.get(i) == Some(&(p, q))
+            if (phase == Phase::Final && self.tried.get(i) == Some(&(p, q)))
                 || p == 0
                 || pq < lo_f - delta
                 || pq > hi_f + delta
@@ -522,19 +535,38 @@ impl RationalRoots {
             {
                 continue;
             }
-            let r = Rational::new(p, q).expect("q > 0");
-            if r > *lo && r < *hi && self.deflated.divide(p, q, self.width) {
-                return Some(r);
+            // Inside `(lo, hi)`: by the same `f64` margins when clearly so, else exactly.
+            let clearly_inside = pq > lo_f + delta && pq < hi_f - delta;
+            if !clearly_inside {
+                let r = Rational::new(p, q).expect("q > 0");
+                if !(r > *lo && r < *hi) {
+                    continue;
+                }
+            }
+            if self.deflated.divide(p, q, self.width) {
+                return Some(Rational::new(p, q).expect("q > 0"));
             }
         }
         None
     }
 }
 
+/// Which estimate [`RationalRoots::recognise_in`] tries.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Phase {
+    /// A leaf's coarse point.
+    Coarse,
+    /// The final estimate after a coarse point.
+    Final,
+    /// A final estimate with no coarse point before it.
+    Only,
+}
+
 /// An isolating interval `(lo, hi)` with its ends in `f64` for the candidates' quick test: `p
 /// / q` in `f64` (p rounded, one division) and the converted ends are each within a relative
-/// `2^-52` of the true values, so `p / q < lo_f - delta` proves `p / q < lo` (and
-/// symmetrically); a comparison with an infinity or a NaN never skips.
+/// `2^-52` of the true values, so `p / q < lo_f - delta` proves `p / q < lo` and `p / q >
+/// lo_f + delta` proves `p / q > lo` (and symmetrically at `hi`); a comparison with an
+/// infinity or a NaN proves nothing.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Window<'a> {
     lo: &'a Rational,
