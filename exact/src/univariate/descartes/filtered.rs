@@ -698,14 +698,15 @@ fn sign_f64(x: f64) -> Sign {
 /// T^(k-1)_(n-k+1)`, the right half's entry, behind; no second row, no copy of the parent.
 fn de_casteljau_half(b: &mut [f64], left: &mut [f64]) {
     let n = b.len() - 1;
+    debug_assert_eq!(left.len(), n + 1);
     left[0] = b[0];
-    for k in 1..=n {
+    for (k, out) in left.iter_mut().enumerate().skip(1) {
         let m = n - k + 1;
         let row = &mut b[..=m];
         for i in 0..m {
             row[i] = 0.5 * (row[i] + row[i + 1]);
         }
-        left[k] = row[0];
+        *out = row[0];
     }
 }
 
