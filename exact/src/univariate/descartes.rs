@@ -84,9 +84,15 @@
 //! the ring `Z / 2^(64 w)`, dividing by whichever of `u`, `v` is odd (a Hensel division per
 //! step), and accepted only when the remainder vanishes there and every quotient coefficient is
 //! small enough that the congruence `(v x - u) s = q` is an equality over `Z`; the width `w`
-//! comes from Mignotte's bound on the factors of `q`, so no true factor is refused. The
-//! estimate stays a dyadic plus an `f64` offset until the refinement needs it exactly, so a
-//! recognised root costs no rational arithmetic beyond its own value. A root found is returned
+//! comes from Mignotte's bound on the factors of `q`, so no true factor is refused. While the
+//! coefficients fit in `i128` the same division runs in `Z / 2^128` with the headroom taken
+//! from the sizes of `u` and `v` (module `deflate`), the limbs deciding only what it cannot.
+//! The estimate stays a dyadic plus an `f64` offset until the refinement needs it exactly, so a
+//! recognised root costs no rational arithmetic beyond its own value. The leaf's Newton
+//! iteration first stops at a coarse point (a correction below `2^-24`, so the point is within
+//! about `2^-48` of the root), whose convergents of denominator up to `2^10` are tried; only
+//! when none is a root does the iteration resume, with the same steps as without the stop, and
+//! the convergents of the final estimate are tried (those already tried skipped). A root found is returned
 //! as the exact point `[u/v, u/v]`, like the Sturm isolator's, and divided out of the
 //! polynomial the later candidates are tested against. Nothing is decided on the estimate: an
 //! irrational root fails the tests (almost always at the divisibility, without an exact
@@ -156,6 +162,7 @@ use num_traits::{One, Signed, ToPrimitive, Zero};
 /// subdivision level and every level costs `O(n^2)` big-integer additions).
 pub const MAX_DESCARTES_DEGREE: usize = 1 << 14;
 
+mod deflate;
 mod estimate;
 mod modp;
 mod pairs;
@@ -164,6 +171,7 @@ mod subdivision;
 #[cfg(test)]
 mod tests;
 
+use deflate::*;
 use estimate::*;
 use modp::*;
 use pairs::*;
@@ -189,7 +197,7 @@ fn root_bound(q: &[BigInt]) -> Rational {
 }
 
 /// An isolating interval with an estimate of its root when there is one (for
-/// [`RationalRoots::recognise`] and the first window of the refinement).
+/// [`RationalRoots::recognise_in`] and the first window of the refinement).
 struct Isolated {
     ri: RootInterval,
     estimate: Option<Estimate>,
@@ -422,11 +430,9 @@ pub(super) fn integer_real_roots_rational_exact(
             out.push(ri);
             continue;
         }
-        if let Some(est) = &estimate {
-            if let Some(r) = rationals.recognise(est.to_f64(), &ri.lo, &ri.hi) {
-                out.push(RootInterval::exact(r));
-                continue;
-            }
+        if let Ok(r) = recognise(Some(&mut rationals), estimate, &ri) {
+            out.push(RootInterval::exact(r));
+            continue;
         }
         // The sign right of root i is (-1)^(k-1-i) (positive leading coefficient).
         let s_lo = if (k - 1 - i) % 2 == 0 {
@@ -450,6 +456,37 @@ pub(super) fn integer_real_roots_rational_exact(
         }
     }
     Ok(out)
+}
+
+/// The rational root of the isolating interval `ri` recognised from its estimate
+/// ([`RationalRoots`], when given): from a leaf's coarse point first (denominators up to
+/// [`COARSE_DENOMINATOR`]; the leaf's iteration is not run to its end for a root found there),
+/// then from the final estimate; otherwise the final estimate, for the refinement.
+fn recognise(
+    rationals: Option<&mut RationalRoots>,
+    estimate: Option<Estimate>,
+    ri: &RootInterval,
+) -> Result<Rational, Option<Estimate>> {
+    let Some(rationals) = rationals else {
+        return Err(estimate.and_then(Estimate::sharpened));
+    };
+    let window = Window::new(&ri.lo, &ri.hi);
+    // The convergents tried at the coarse point are not tried again at the final estimate
+    // (whose first convergents are usually the same).
+    let mut phase = Phase::Only;
+    if let Some(est) = estimate.as_ref().filter(|e| e.is_coarse()) {
+        if let Some(r) = rationals.recognise_in(est.to_f64(), &window, Phase::Coarse) {
+            return Ok(r);
+        }
+        phase = Phase::Final;
+    }
+    let estimate = estimate.and_then(Estimate::sharpened);
+    if let Some(est) = &estimate {
+        if let Some(r) = rationals.recognise_in(est.to_f64(), &window, phase) {
+            return Ok(r);
+        }
+    }
+    Err(estimate)
 }
 
 /// Descartes' bound for the open interval `(0, 1)` of the integer polynomial with these
@@ -522,12 +559,13 @@ fn real_roots_to_with(
             out.push(ri);
             continue;
         }
-        if let (true, Some(est)) = (opts.rationals, &estimate) {
-            if let Some(r) = rationals.recognise(est.to_f64(), &ri.lo, &ri.hi) {
+        let estimate = match recognise(opts.rationals.then_some(&mut rationals), estimate, &ri) {
+            Ok(r) => {
                 out.push(RootInterval::exact(r));
                 continue;
             }
-        }
+            Err(estimate) => estimate,
+        };
         // The sign right of root i is (-1)^(k-1-i) (positive leading coefficient).
         let s_right = if (k - 1 - i) % 2 == 0 {
             Sign::Positive

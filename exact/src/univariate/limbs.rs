@@ -435,6 +435,39 @@ impl Limbs {
         l.resized(w)
     }
 
+    /// The numbers `v` in exactly `w >= 2` limbs each (two's complement, sign-extended).
+    pub(super) fn from_i128s(v: &[i128], w: usize) -> Limbs {
+        assert!(w >= 2, "from_i128s: an i128 needs two limbs");
+        let mut d = vec![0u64; w * v.len()];
+        for (x, &c) in d.chunks_mut(w).zip(v) {
+            let ext = if c < 0 { u64::MAX } else { 0 };
+            x[0] = c as u64;
+            x[1] = (c >> 64) as u64;
+            x[2..].fill(ext);
+        }
+        Limbs { w, d }
+    }
+
+    /// The numbers as `i128`s, `None` when one of them does not fit.
+    pub(super) fn to_i128s(&self) -> Option<Vec<i128>> {
+        self.d
+            .chunks(self.w)
+            .map(|x| {
+                if signed_bits(x) > 128 {
+                    return None;
+                }
+                let hi = if self.w > 1 {
+                    x[1]
+                } else if (x[0] as i64) < 0 {
+                    u64::MAX
+                } else {
+                    0
+                };
+                Some(((u128::from(hi) << 64) | u128::from(x[0])) as i128)
+            })
+            .collect()
+    }
+
     /// The quotient `a / (q x - p)` of the polynomial `a` with these coefficients (constant
     /// term first, degree `n >= 1`) when `q x - p` divides it over `Z` (`q > 0`, `p != 0`,
     /// `gcd(p, q) = 1`), `None` otherwise; the quotient has `n` coefficients of the same

@@ -14,9 +14,50 @@ pub(super) struct UnitEstimate {
     pub(super) num: BigInt,
     pub(super) exp: u64,
     pub(super) off: f64,
+    /// A leaf's iteration stopped at its coarse point (`off` is `t 2^-exp` for that point's
+    /// `t`), to be resumed by [`UnitEstimate::sharpened`]; `None` when `off` is final.
+    pub(super) newton: Option<Box<LeafNewton>>,
 }
 
 impl UnitEstimate {
+    /// The estimate of the leaf `(c / 2^j, (c + 1) / 2^j)` from its Bernstein coefficients `g`
+    /// in `f64` (any common positive scale): the iteration of [`bernstein_root_estimate`]
+    /// stopped at its coarse point ([`COARSE_CORRECTION`]) when it gets there before the end.
+    pub(super) fn of_leaf(c: &BigInt, j: u64, g: Vec<f64>, binoms: &[f64]) -> Option<UnitEstimate> {
+        let (t, newton) = match LeafNewton::start(g, binoms) {
+            Err(t) => (t?, None),
+            Ok(mut newton) => match newton.run(COARSE_CORRECTION) {
+                NewtonStop::Coarse(t) => (t, Some(Box::new(newton))),
+                NewtonStop::Done(t) => (t?, None),
+            },
+        };
+        Some(UnitEstimate {
+            num: c.clone(),
+            exp: j,
+            off: t * pow2f(-(j.min(2000) as i64)),
+            newton,
+        })
+    }
+
+    /// Whether the estimate is a leaf's coarse point.
+    pub(super) fn is_coarse(&self) -> bool {
+        self.newton.is_some()
+    }
+
+    /// The final estimate: a coarse point's iteration run to its end (`None` when it ends
+    /// without one, as [`bernstein_root_estimate`] would have).
+    pub(super) fn sharpened(mut self) -> Option<UnitEstimate> {
+        if let Some(mut newton) = self.newton.take() {
+            let t = loop {
+                if let NewtonStop::Done(t) = newton.run(0.0) {
+                    break t;
+                }
+            }?;
+            self.off = t * pow2f(-(self.exp.min(2000) as i64));
+        }
+        Some(self)
+    }
+
     /// The value in `f64` (approximately).
     pub(super) fn to_f64(&self) -> f64 {
         let base = match approx(&self.num) {
@@ -53,6 +94,17 @@ impl Estimate {
             2 => -x,
             _ => -1.0 / x,
         }
+    }
+
+    /// Whether the estimate is a leaf's coarse point ([`UnitEstimate::is_coarse`]).
+    pub(super) fn is_coarse(&self) -> bool {
+        self.unit.is_coarse()
+    }
+
+    /// The final estimate ([`UnitEstimate::sharpened`]).
+    pub(super) fn sharpened(self) -> Option<Estimate> {
+        let which = self.which;
+        self.unit.sharpened().map(|unit| Estimate { unit, which })
     }
 
     /// The estimate in `f64` (for the rational-root candidates).
@@ -135,43 +187,115 @@ pub(super) fn binomials_f64(n: usize) -> Vec<f64> {
 /// `B(t) / (1 - t)^n = sum b_i C(n, i) s^i`, `s = t / (1 - t)`, for `t <= 1/2` and on
 /// `B(t) / t^n` (Horner in `(1 - t) / t`) above, a smooth function with the sign of `B`
 /// evaluated with every power at most 1, from the control polygon's crossing of the axis.
-/// Only a candidate generator for [`RationalRoots::recognise`] and the refinement's first window
-/// (nothing is decided on it); `None` beyond degree 1000 (the binomials leave the `f64` range).
-pub(super) fn bernstein_root_estimate(mut g: Vec<f64>, binoms: &[f64]) -> Option<f64> {
-    let n = g.len().checked_sub(1)?;
-    if n > 1000 || n == 0 {
-        return None;
+/// Only a candidate generator for [`RationalRoots::recognise_in`] and the refinement's first
+/// window (nothing is decided on it); `None` beyond degree 1000 (the binomials leave the `f64`
+/// range).
+/// The leaves run it through [`UnitEstimate::of_leaf`] and [`UnitEstimate::sharpened`] (the
+/// same steps, stopped once at a coarse point); this is the uninterrupted reference of the tests.
+#[cfg(test)]
+pub(super) fn bernstein_root_estimate(g: Vec<f64>, binoms: &[f64]) -> Option<f64> {
+    match LeafNewton::start(g, binoms) {
+        Ok(mut newton) => match newton.run(0.0) {
+            NewtonStop::Coarse(_) => unreachable!("no coarse stop was asked for"),
+            NewtonStop::Done(t) => t,
+        },
+        Err(t) => t,
     }
-    debug_assert_eq!(binoms.len(), n + 1);
-    let (mut a, fa0, mut c, fc0) = (0.0f64, g[0], 1.0f64, g[n]);
-    if !(fa0.is_finite() && fc0.is_finite())
-        || fa0 == 0.0
-        || fc0 == 0.0
-        || (fa0 > 0.0) == (fc0 > 0.0)
-    {
-        return None;
-    }
-    // The control polygon (i / n, b_i) crosses the axis once (one sign variation).
-    let mut x = 0.5;
-    if let Some(k) = (0..n).find(|&k| g[k] != 0.0 && (g[k] > 0.0) != (g[k + 1] > 0.0)) {
-        let cross = (k as f64 + g[k] / (g[k] - g[k + 1])) / n as f64;
-        if cross > 0.0 && cross < 1.0 {
-            x = cross;
+}
+
+/// The iteration of [`bernstein_root_estimate`] as a state that can stop at a coarse point and
+/// resume: a rational root with a small denominator is recognised from the coarse point
+/// (a correction below [`COARSE_CORRECTION`], so the Newton point is within about its square
+/// of the root), and the full iteration, whose every step is the same as without the stop, is
+/// run only when it is not (module `descartes`, "Rational roots").
+#[derive(Clone, Debug)]
+pub(super) struct LeafNewton {
+    /// `b_i C(n, i)`.
+    g: Vec<f64>,
+    /// The bracket `(a, c)` and the current point.
+    a: f64,
+    c: f64,
+    x: f64,
+    step: f64,
+    step_before: f64,
+    negative_left: bool,
+    /// Points taken so far.
+    iterations: u32,
+    /// The Newton point from `x`, computed but not yet taken.
+    pending: Option<f64>,
+}
+
+/// Where [`LeafNewton::run`] stopped.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) enum NewtonStop {
+    /// A Newton point whose correction was below the coarse tolerance; the iteration can go on.
+    Coarse(f64),
+    /// The final estimate (`None`: none, as [`bernstein_root_estimate`]).
+    Done(Option<f64>),
+}
+
+/// The Newton correction (in the leaf's coordinate `t`) below which a leaf's estimate is
+/// coarse enough to recognise the rational roots of denominator up to [`COARSE_DENOMINATOR`]:
+/// the Newton point is then within about `2^-48` of the root (quadratic convergence), far
+/// inside Legendre's `1 / (2 q^2)`.
+pub(super) const COARSE_CORRECTION: f64 = 1.0 / (1u64 << 24) as f64;
+
+/// The largest denominator tried at a coarse estimate.
+pub(super) const COARSE_DENOMINATOR: i64 = 1 << 10;
+
+impl LeafNewton {
+    /// The iteration's start from the leaf's coefficients, or its result when there is nothing
+    /// to iterate (`Err(None)`: no estimate).
+    pub(super) fn start(mut g: Vec<f64>, binoms: &[f64]) -> Result<LeafNewton, Option<f64>> {
+        let Some(n) = g.len().checked_sub(1) else {
+            return Err(None);
+        };
+        if n > 1000 || n == 0 {
+            return Err(None);
         }
+        debug_assert_eq!(binoms.len(), n + 1);
+        let (fa0, fc0) = (g[0], g[n]);
+        if !(fa0.is_finite() && fc0.is_finite())
+            || fa0 == 0.0
+            || fc0 == 0.0
+            || (fa0 > 0.0) == (fc0 > 0.0)
+        {
+            return Err(None);
+        }
+        // The control polygon (i / n, b_i) crosses the axis once (one sign variation).
+        let mut x = 0.5;
+        if let Some(k) = (0..n).find(|&k| g[k] != 0.0 && (g[k] > 0.0) != (g[k + 1] > 0.0)) {
+            let cross = (k as f64 + g[k] / (g[k] - g[k + 1])) / n as f64;
+            if cross > 0.0 && cross < 1.0 {
+                x = cross;
+            }
+        }
+        for (v, b) in g.iter_mut().zip(binoms) {
+            *v *= b;
+        }
+        if !g.iter().all(|v| v.is_finite()) {
+            return Err(None);
+        }
+        Ok(LeafNewton {
+            g,
+            a: 0.0,
+            c: 1.0,
+            x,
+            step: 1.0,
+            step_before: 1.0,
+            negative_left: fa0 < 0.0,
+            iterations: 0,
+            pending: None,
+        })
     }
-    for (v, b) in g.iter_mut().zip(binoms) {
-        *v *= b;
-    }
-    if !g.iter().all(|v| v.is_finite()) {
-        return None;
-    }
-    // The function and its derivative in t.
-    let eval = |t: f64| -> (f64, f64) {
+
+    /// The function and its derivative in `t`.
+    fn eval(&self, t: f64) -> (f64, f64) {
         if t <= 0.5 {
             let w = 1.0 - t;
             let s = t / w;
             let (mut p, mut dp) = (0.0, 0.0);
-            for &gi in g.iter().rev() {
+            for &gi in self.g.iter().rev() {
                 dp = dp * s + p;
                 p = p * s + gi;
             }
@@ -179,45 +303,63 @@ pub(super) fn bernstein_root_estimate(mut g: Vec<f64>, binoms: &[f64]) -> Option
         } else {
             let u = (1.0 - t) / t;
             let (mut q, mut dq) = (0.0, 0.0);
-            for &gi in &g {
+            for &gi in &self.g {
                 dq = dq * u + q;
                 q = q * u + gi;
             }
             (q, -dq / (t * t))
         }
-    };
-    let negative_left = fa0 < 0.0;
-    let (mut step, mut step_before) = (c - a, c - a);
-    for _ in 0..200 {
-        let (f, df) = eval(x);
-        if f == 0.0 {
-            return Some(x);
-        }
-        if !f.is_finite() {
-            return None;
-        }
-        if (f < 0.0) == negative_left {
-            a = x;
-        } else {
-            c = x;
-        }
-        if c - a <= 16.0 * f64::EPSILON * c {
-            return Some(0.5 * (a + c));
-        }
-        let newton = x - f / df;
-        if (newton - x).abs() <= 4.0 * f64::EPSILON * x.abs() {
-            return Some(newton);
-        }
-        let next = if newton > a && newton < c && (newton - x).abs() < 0.5 * step_before {
-            newton
-        } else {
-            0.5 * (a + c)
-        };
-        step_before = step;
-        step = (next - x).abs();
-        x = next;
     }
-    Some(0.5 * (a + c))
+
+    /// Runs the iteration until it ends, or until a Newton correction is at most `coarse`
+    /// (`0` never stops early); a later call resumes where this one stopped. Not to be called
+    /// again after [`NewtonStop::Done`].
+    pub(super) fn run(&mut self, coarse: f64) -> NewtonStop {
+        loop {
+            if let Some(newton) = self.pending.take() {
+                let next = if newton > self.a
+                    && newton < self.c
+                    && (newton - self.x).abs() < 0.5 * self.step_before
+                {
+                    newton
+                } else {
+                    0.5 * (self.a + self.c)
+                };
+                self.step_before = self.step;
+                self.step = (next - self.x).abs();
+                self.x = next;
+                self.iterations += 1;
+            }
+            if self.iterations >= 200 {
+                return NewtonStop::Done(Some(0.5 * (self.a + self.c)));
+            }
+            let x = self.x;
+            let (f, df) = self.eval(x);
+            if f == 0.0 {
+                return NewtonStop::Done(Some(x));
+            }
+            if !f.is_finite() {
+                return NewtonStop::Done(None);
+            }
+            if (f < 0.0) == self.negative_left {
+                self.a = x;
+            } else {
+                self.c = x;
+            }
+            if self.c - self.a <= 16.0 * f64::EPSILON * self.c {
+                return NewtonStop::Done(Some(0.5 * (self.a + self.c)));
+            }
+            let newton = x - f / df;
+            let correction = (newton - x).abs();
+            if correction <= 4.0 * f64::EPSILON * x.abs() {
+                return NewtonStop::Done(Some(newton));
+            }
+            self.pending = Some(newton);
+            if correction <= coarse {
+                return NewtonStop::Coarse(newton);
+            }
+        }
+    }
 }
 
 /// The continued-fraction convergents `p / q` of `x` with `0 < q <= 2^40` (at most 64), lazily
@@ -312,11 +454,15 @@ pub(super) fn recognise_rational(
 }
 
 /// The rational-root recognition of one polynomial (module documentation, "Rational roots"):
-/// the polynomial with the roots found so far divided out, in fixed-width limbs wide enough
-/// for every factor ([`super::limbs::linear_factor_width`]), and the magnitudes of the
-/// original leading and lowest non-zero coefficients for the rational root theorem's filters.
+/// the polynomial with the roots found so far divided out ([`Deflated`]), the limb width
+/// wide enough for every factor ([`super::limbs::linear_factor_width`]), and the magnitudes of
+/// the original leading and lowest non-zero coefficients for the rational root theorem's
+/// filters.
 pub(super) struct RationalRoots {
-    pub(super) deflated: Limbs,
+    pub(super) deflated: Deflated,
+    /// The convergents tried at the last coarse estimate ([`RationalRoots::recognise_in`]).
+    tried: Vec<(i64, i64)>,
+    pub(super) width: usize,
     pub(super) lc: Vec<u64>,
     pub(super) low: Vec<u64>,
 }
@@ -324,30 +470,64 @@ pub(super) struct RationalRoots {
 impl RationalRoots {
     /// For the primitive square-free `q` (degree >= 1).
     pub(super) fn new(q: &[BigInt]) -> RationalRoots {
-        let w = super::limbs::linear_factor_width(q);
+        let width = super::limbs::linear_factor_width(q);
         let low = q.iter().find(|c| !c.is_zero()).expect("q is not zero");
         RationalRoots {
-            deflated: Limbs::from_bigints_width(q, w),
+            deflated: Deflated::new(q, width),
+            tried: Vec::with_capacity(64),
+            width,
             lc: q[q.len() - 1].magnitude().to_u64_digits(),
             low: low.magnitude().to_u64_digits(),
         }
     }
 
     /// The rational root in `(lo, hi)` among the convergents of `est`, divided out of the
-    /// polynomial when found.
+    /// polynomial when found (the tests' entry; the isolator goes through
+    /// [`RationalRoots::recognise_in`]).
+    #[cfg(test)]
     pub(super) fn recognise(&mut self, est: f64, lo: &Rational, hi: &Rational) -> Option<Rational> {
+        self.recognise_in(est, &Window::new(lo, hi), Phase::Only)
+    }
+
+    /// The rational root in `window` among the convergents of `est`: at a coarse estimate
+    /// ([`Phase::Coarse`]) those of denominator up to [`COARSE_DENOMINATOR`] (it is accurate
+    /// enough for those only), each remembered; at the final estimate after a coarse one
+    /// ([`Phase::Final`]) the `i`-th convergent is skipped when it is the coarse one's `i`-th
+    /// (already tried, with the same outcome).
+    pub(super) fn recognise_in(
+        &mut self,
+        est: f64,
+        window: &Window<'_>,
+        phase: Phase,
+    ) -> Option<Rational> {
+        if phase == Phase::Coarse {
+            self.tried.clear();
+        }
         if self.deflated.len() < 2 {
             return None;
         }
-        // A candidate clearly outside `(lo, hi)` is skipped before its divisibility tests:
-        // `p / q` in `f64` (p rounded, one division) and the converted ends are each within a
-        // relative `2^-52` of the true values, so `p / q < lo_f - delta` proves `p / q < lo`
-        // (and symmetrically); a comparison with an infinity or a NaN never skips.
-        let (lo_f, hi_f) = (lo.to_f64(), hi.to_f64());
-        let delta = (lo_f.abs() + hi_f.abs()) * pow2f(-48);
-        for (p, q) in convergents(est) {
+        let max_den = if phase == Phase::Coarse {
+            COARSE_DENOMINATOR
+        } else {
+            i64::MAX
+        };
+        let Window {
+            lo,
+            hi,
+            lo_f,
+            hi_f,
+            delta,
+        } = *window;
+        for (i, (p, q)) in convergents(est)
+            .take_while(|&(_, q)| q <= max_den)
+            .enumerate()
+        {
+            if phase == Phase::Coarse {
+                self.tried.push((p, q));
+            }
             let pq = p as f64 / q as f64;
-            if p == 0
+            if (phase == Phase::Final && self.tried.get(i) == Some(&(p, q)))
+                || p == 0
                 || pq < lo_f - delta
                 || pq > hi_f + delta
                 || crate::bigint::rem_1(&self.lc, q as u64) != 0
@@ -355,14 +535,125 @@ impl RationalRoots {
             {
                 continue;
             }
-            let r = Rational::new(p, q).expect("q > 0");
-            if r > *lo && r < *hi {
-                if let Some(quotient) = self.deflated.divide_by_linear(p, q) {
-                    self.deflated = quotient;
-                    return Some(r);
+            // Inside `(lo, hi)`: by the same `f64` margins when clearly so, else exactly.
+            let clearly_inside = pq > lo_f + delta && pq < hi_f - delta;
+            if !clearly_inside {
+                let r = Rational::new(p, q).expect("q > 0");
+                if !(r > *lo && r < *hi) {
+                    continue;
                 }
+            }
+            if self.deflated.divide(p, q, self.width) {
+                return Some(Rational::new(p, q).expect("q > 0"));
             }
         }
         None
+    }
+}
+
+/// Which estimate [`RationalRoots::recognise_in`] tries.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Phase {
+    /// A leaf's coarse point.
+    Coarse,
+    /// The final estimate after a coarse point.
+    Final,
+    /// A final estimate with no coarse point before it.
+    Only,
+}
+
+/// An isolating interval `(lo, hi)` with its ends in `f64` for the candidates' quick test: `p
+/// / q` in `f64` (p rounded, one division) and the converted ends are each within a relative
+/// `2^-52` of the true values, so `p / q < lo_f - delta` proves `p / q < lo` and `p / q >
+/// lo_f + delta` proves `p / q > lo` (and symmetrically at `hi`); a comparison with an
+/// infinity or a NaN proves nothing.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Window<'a> {
+    lo: &'a Rational,
+    hi: &'a Rational,
+    lo_f: f64,
+    hi_f: f64,
+    delta: f64,
+}
+
+impl<'a> Window<'a> {
+    pub(super) fn new(lo: &'a Rational, hi: &'a Rational) -> Window<'a> {
+        let (lo_f, hi_f) = (lo.to_f64(), hi.to_f64());
+        Window {
+            lo,
+            hi,
+            lo_f,
+            hi_f,
+            delta: (lo_f.abs() + hi_f.abs()) * pow2f(-48),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// The Bernstein coefficients on `[0, 1]` of `prod (x - r_i)` times `rest` (as `f64`).
+    fn bernstein_of(roots: &[f64], rest: &[f64]) -> Vec<f64> {
+        let mut p = rest.to_vec();
+        for &r in roots {
+            let mut next = vec![0.0; p.len() + 1];
+            for (i, &c) in p.iter().enumerate() {
+                next[i + 1] += c;
+                next[i] -= c * r;
+            }
+            p = next;
+        }
+        // b_i = sum_{k <= i} C(i, k) / C(n, k) p_k.
+        let n = p.len() - 1;
+        let binom =
+            |n: usize, k: usize| (0..k).fold(1.0f64, |b, j| b * (n - j) as f64 / (j + 1) as f64);
+        (0..=n)
+            .map(|i| (0..=i).map(|k| binom(i, k) / binom(n, k) * p[k]).sum())
+            .collect()
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 400, ..ProptestConfig::default() })]
+        /// Stopping at the coarse point and resuming gives the uninterrupted estimate, bit for
+        /// bit, and the coarse point is near it.
+        #[test]
+        fn a_coarse_stop_resumes_to_the_same_estimate(
+            root in 0.01f64..0.99,
+            others in proptest::collection::vec(-3.0f64..4.0, 0..12),
+            rest in proptest::collection::vec(0.5f64..2.0, 1..3),
+        ) {
+            let others: Vec<f64> = others.into_iter().filter(|r| !(-0.05..=1.05).contains(r)).collect();
+            let mut roots = vec![root];
+            roots.extend(others);
+            let g = bernstein_of(&roots, &rest);
+            let n = g.len() - 1;
+            let binoms = binomials_f64(n);
+            let whole = bernstein_root_estimate(g.clone(), &binoms);
+            let c = BigInt::from(3);
+            let leaf = UnitEstimate::of_leaf(&c, 2, g, &binoms);
+            match (&whole, &leaf) {
+                (None, None) => {}
+                (Some(t), Some(e)) => {
+                    if e.is_coarse() {
+                        prop_assert!((e.off / 0.25 - t).abs() < 1e-6, "{} vs {}", e.off / 0.25, t);
+                    }
+                    let done = leaf.clone().and_then(UnitEstimate::sharpened);
+                    let done = done.expect("the uninterrupted iteration found one");
+                    prop_assert!(!done.is_coarse());
+                    prop_assert_eq!(done.off.to_bits(), (t * 0.25).to_bits());
+                }
+                (Some(_), None) => prop_assert!(false, "the leaf lost the estimate"),
+                (None, Some(e)) => {
+                    // Only a coarse point whose iteration ends without an estimate.
+                    prop_assert!(e.is_coarse());
+                    prop_assert!(leaf.clone().and_then(UnitEstimate::sharpened).is_none());
+                }
+            }
+            if let Some(t) = whole {
+                prop_assert!((t - root).abs() < 1e-6, "{t} vs {root}");
+            }
+        }
     }
 }

@@ -102,8 +102,9 @@
 //! `descartes`). Degrees above [`MAX_FILTERED_DEGREE`] run the exact subdivision alone.
 //!
 //! A split costs `n(n+1)/2` `f64` additions and no allocation (the nodes' coefficients live in
-//! one flat stack of blocks of `n + 1`, the triangle in one scratch row), against `n(n+1)/2`
-//! carry chains over limbs growing by `n` bits per level on the exact path.
+//! one flat stack of blocks of `n + 1`, the triangle in place in the parent's block, which
+//! becomes the right child's; the node indices in four words), against `n(n+1)/2` carry chains
+//! over limbs growing by `n` bits per level on the exact path.
 //!
 //! Hand-written because the workspace has no interval or filtered arithmetic; the kernels are
 //! the few lines of de Casteljau and a sign count.
@@ -141,9 +142,58 @@ pub(super) struct FilterStats {
     pub(super) fallbacks: usize,
 }
 
+/// The index `c` of a node `(c, j)` (`0 <= c < 2^j`) in four words, least significant
+/// first: the filtered nodes are at most [`MAX_FILTERED_DEPTH`]` + 1 < 256` deep, so a split
+/// makes its children's indices without allocating (a `BigInt` only where one is needed: a
+/// leaf, an exact root, an exact evaluation past a word, the exact path).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct NodeIndex([u64; 4]);
+
+const _: () = assert!(MAX_FILTERED_DEPTH < 255, "a node index has 256 bits");
+
+impl NodeIndex {
+    const ZERO: NodeIndex = NodeIndex([0; 4]);
+
+    /// `2 c` (the left child's index).
+    fn doubled(self) -> NodeIndex {
+        let w = self.0;
+        debug_assert!(w[3] >> 63 == 0, "a node index stays below 2^256");
+        NodeIndex([
+            w[0] << 1,
+            w[1] << 1 | w[0] >> 63,
+            w[2] << 1 | w[1] >> 63,
+            w[3] << 1 | w[2] >> 63,
+        ])
+    }
+
+    /// `c + 1` for an even `c` (the right child's index from the left one's).
+    fn odd(self) -> NodeIndex {
+        debug_assert!(!self.is_odd());
+        let mut w = self.0;
+        w[0] |= 1;
+        NodeIndex(w)
+    }
+
+    fn is_odd(self) -> bool {
+        self.0[0] & 1 == 1
+    }
+
+    /// The index as a word, when it is one.
+    fn word(self) -> Option<u64> {
+        (self.0[1..].iter().all(|&x| x == 0)).then_some(self.0[0])
+    }
+
+    fn to_bigint(self) -> BigInt {
+        match self.word() {
+            Some(w) => BigInt::from(w),
+            None => BigInt::from(crate::bigint::biguint_from_limbs(&self.0)),
+        }
+    }
+}
+
 /// A node waiting on the stack; its coefficients are the block of the same index.
 struct Node {
-    c: BigInt,
+    c: NodeIndex,
     j: u64,
     e: f64,
     /// The largest magnitude of the block (known from the split that made it).
@@ -165,6 +215,10 @@ pub(super) fn unit_roots_filtered(p: &[BigInt], pairs: bool) -> (Vec<UnitRoot>, 
 fn subdivide(p: &[BigInt], pairs: bool, max_depth: u64) -> (Vec<UnitRoot>, FilterStats) {
     let n = p.len() - 1;
     debug_assert!((1..=MAX_FILTERED_DEGREE).contains(&n));
+    assert!(
+        max_depth <= MAX_FILTERED_DEPTH,
+        "the node indices have room for this depth"
+    );
     let mut run = Run {
         p,
         pairs,
@@ -197,10 +251,8 @@ fn subdivide(p: &[BigInt], pairs: bool, max_depth: u64) -> (Vec<UnitRoot>, Filte
         }
     }
     run.shifted = root.shifted;
-    // The parent's coefficients and a second row for de Casteljau's triangle.
-    let mut work = vec![0.0f64; 2 * w];
     let mut stack = vec![Node {
-        c: BigInt::zero(),
+        c: NodeIndex::ZERO,
         j: 0,
         e: root.e,
         m: max_abs(&blocks),
@@ -213,8 +265,8 @@ fn subdivide(p: &[BigInt], pairs: bool, max_depth: u64) -> (Vec<UnitRoot>, Filte
         debug_assert_eq!(blocks.len(), base + w);
         // A right child (odd `c`) whose left end is a root: reported here, after the roots of
         // its left sibling's subtree, so the roots come out in increasing order.
-        if node.lo == Sign::Zero && node.c.bit(0) {
-            run.out.push(UnitRoot::Exact(node.c.clone(), node.j));
+        if node.lo == Sign::Zero && node.c.is_odd() {
+            run.out.push(UnitRoot::Exact(node.c.to_bigint(), node.j));
         }
         if node.j > max_depth {
             blocks.truncate(base);
@@ -235,7 +287,7 @@ fn subdivide(p: &[BigInt], pairs: bool, max_depth: u64) -> (Vec<UnitRoot>, Filte
             // Out of precision: restart from the node's exact coefficients, whose fresh error
             // bound `2^-52 M` passes the test.
             run.stats.anchors += 1;
-            let exact = run.exact_coefficients(&node.c, node.j);
+            let exact = run.exact_coefficients(&node.c.to_bigint(), node.j);
             blocks.truncate(base);
             node.e = f64_coefficients_limbs(&exact, &mut blocks);
             m = max_abs(&blocks[base..]);
@@ -251,33 +303,33 @@ fn subdivide(p: &[BigInt], pairs: bool, max_depth: u64) -> (Vec<UnitRoot>, Filte
         }
         if v_max == 1 && ends {
             run.out
-                .push(leaf_root(&node.c, node.j, g.to_vec(), &binoms));
+                .push(leaf_root(&node.c.to_bigint(), node.j, g.to_vec(), &binoms));
             blocks.truncate(base);
             continue;
         }
         if run.pairs && v_max == 2 && node.parent_v2 && node.j >= 2 && ends && node.lo == node.hi {
             let splitter = run.splitter.get_or_insert_with(|| PairSplitter::new(p));
-            if let Some(split) = splitter.split(&node.c, node.j, node.lo) {
-                run.out.extend(pair_roots(&node.c, node.j, split));
+            let c = node.c.to_bigint();
+            if let Some(split) = splitter.split(&c, node.j, node.lo) {
+                run.out.extend(pair_roots(&c, node.j, split));
                 blocks.truncate(base);
                 continue;
             }
         }
         // Split: the right child in the parent's block, the left one in a new block above.
         run.stats.splits += 1;
-        work[..w].copy_from_slice(&blocks[base..]);
         blocks.resize(base + 2 * w, 0.0);
         let (right, left) = blocks[base..].split_at_mut(w);
-        de_casteljau_half(&mut work, left, right);
+        de_casteljau_half(right, left);
         let nf = w as f64;
         let e = (node.e + nf * f64::EPSILON * m + nf * TINY) * SAFETY;
-        let c2: BigInt = &node.c << 1;
-        let mid = &c2 + 1u32;
+        let c2 = node.c.doubled();
+        let mid = c2.odd();
         let s_mid = if left[n].abs() > e {
             sign_f64(left[n])
         } else {
             run.stats.exact_midpoints += 1;
-            run.sign_at(&mid, node.j + 1)
+            run.sign_at(mid, node.j + 1)
         };
         let (e_right, m_right) = renormalise(right, e);
         let (e_left, m_left) = renormalise(left, e);
@@ -322,8 +374,8 @@ struct Run<'a> {
 impl Run<'_> {
     /// The exact sign of `p` at `m / 2^k` (`0 < m < 2^k`): on limbs when `m` fits a word
     /// ([`Limbs::sign_at_dyadic`]), by `BigInt` Horner otherwise.
-    fn sign_at(&mut self, m: &BigInt, k: u64) -> Sign {
-        match m.to_u64() {
+    fn sign_at(&mut self, m: NodeIndex, k: u64) -> Sign {
+        match m.word() {
             Some(word) if k < 64 => {
                 let p = self.p;
                 let limbs = self.p_limbs.get_or_insert_with(|| Limbs::from_bigints(p));
@@ -333,7 +385,7 @@ impl Run<'_> {
                     _ => Sign::Positive,
                 }
             }
-            _ => sign_at_dyadic(self.p, m, k),
+            _ => sign_at_dyadic(self.p, &m.to_bigint(), k),
         }
     }
 
@@ -372,13 +424,10 @@ impl Run<'_> {
     /// The exact subdivision of `node` in its coordinates ([`unit_roots_from`]).
     fn exact_subtree(&mut self, node: &Node) {
         self.stats.fallbacks += 1;
-        let limbs = self.exact_coefficients(&node.c, node.j);
-        self.out.extend(unit_roots_from(
-            limbs,
-            self.p,
-            self.pairs,
-            (node.c.clone(), node.j),
-        ));
+        let c = node.c.to_bigint();
+        let limbs = self.exact_coefficients(&c, node.j);
+        self.out
+            .extend(unit_roots_from(limbs, self.p, self.pairs, (c, node.j)));
     }
 }
 
@@ -642,24 +691,22 @@ fn sign_f64(x: f64) -> Sign {
     }
 }
 
-/// de Casteljau at `1/2` with the halvings, from the coefficients in the first half of `work`
-/// (both halves destroyed: each level of the triangle is written to the other half, a loop
-/// without aliasing that the compiler vectorizes): `left_k = T^(k)_0`, `right_(n-k) =
-/// T^(k)_(n-k)`.
-fn de_casteljau_half(work: &mut [f64], left: &mut [f64], right: &mut [f64]) {
-    let w = work.len() / 2;
-    let n = w - 1;
-    let (mut cur, mut next) = work.split_at_mut(w);
-    left[0] = cur[0];
-    right[n] = cur[n];
-    for k in 1..=n {
+/// de Casteljau at `1/2` with the halvings, in place: `b` holds the node's coefficients and
+/// becomes the right half's, `left` receives the left half's: `left_k = T^(k)_0`, `right_(n-k)
+/// = T^(k)_(n-k)`. Level `k` overwrites `b_0, ..., b_(n-k)` (each entry reads its right
+/// neighbour before that one is overwritten, so the loop vectorizes), leaving `b_(n-k+1) =
+/// T^(k-1)_(n-k+1)`, the right half's entry, behind; no second row, no copy of the parent.
+fn de_casteljau_half(b: &mut [f64], left: &mut [f64]) {
+    let n = b.len() - 1;
+    debug_assert_eq!(left.len(), n + 1);
+    left[0] = b[0];
+    for (k, out) in left.iter_mut().enumerate().skip(1) {
         let m = n - k + 1;
-        for (t, pair) in next[..m].iter_mut().zip(cur[..=m].windows(2)) {
-            *t = 0.5 * (pair[0] + pair[1]);
+        let row = &mut b[..=m];
+        for i in 0..m {
+            row[i] = 0.5 * (row[i] + row[i + 1]);
         }
-        left[k] = next[0];
-        right[n - k] = next[n - k];
-        std::mem::swap(&mut cur, &mut next);
+        *out = row[0];
     }
 }
 
@@ -685,30 +732,28 @@ fn renormalise(g: &mut [f64], e: f64) -> (f64, f64) {
 /// (`+`, `-`, `0`) of the entries `x` of `mid` with `|x| <= e`, the others having their own:
 /// one pass keeping, per last non-zero sign (none, `+`, `-`), the largest count reaching it.
 fn max_variations(lo: Sign, mid: &[f64], e: f64, hi: Sign) -> usize {
-    // Every sign certain (the common case): a plain count.
-    let code = |s: Sign| match s {
-        Sign::Negative => -1i8,
-        Sign::Zero => 0,
-        Sign::Positive => 1,
-    };
-    let (mut last, mut v) = (code(lo), 0usize);
-    let mut certain = true;
-    for &x in mid {
-        let s = if x > e {
-            1
-        } else if x < -e {
-            -1
-        } else {
-            certain = false;
-            break;
-        };
-        v += usize::from(last == -s);
-        last = s;
-    }
-    if certain {
-        return v + usize::from(last * code(hi) < 0);
+    // Every sign certain (the common case; a NaN is not): a plain count, the neighbours'
+    // changes read off their sign bits, in loops without branches.
+    if mid.iter().fold(true, |ok, x| ok & (x.abs() > e)) {
+        return certain_variations(lo, mid, hi);
     }
     max_variations_uncertain(lo, mid, e, hi)
+}
+
+/// The sign changes of `lo, mid..., hi` (zeros skipped) when no entry of `mid` is zero.
+fn certain_variations(lo: Sign, mid: &[f64], hi: Sign) -> usize {
+    let negative = |s: Sign| s == Sign::Negative;
+    let (Some(&first), Some(&last)) = (mid.first(), mid.last()) else {
+        return usize::from(lo != Sign::Zero && hi != Sign::Zero && lo != hi);
+    };
+    let inner: usize = mid
+        .iter()
+        .zip(&mid[1..])
+        .map(|(a, b)| ((a.to_bits() ^ b.to_bits()) >> 63) as usize)
+        .sum();
+    inner
+        + usize::from(lo != Sign::Zero && negative(lo) != (first < 0.0))
+        + usize::from(hi != Sign::Zero && negative(hi) != (last < 0.0))
 }
 
 /// [`max_variations`] when some entry is uncertain.

@@ -254,17 +254,13 @@ pub(super) fn unit_roots_from<C: NodeCoeffs>(
 }
 
 /// The isolating leaf `(c / 2^j, (c + 1) / 2^j)` with the estimate of its root from the node's
-/// Bernstein coefficients `g` in `f64` (any common positive scale).
+/// Bernstein coefficients `g` in `f64` (any common positive scale), at first a coarse one
+/// ([`UnitEstimate::of_leaf`]).
 pub(super) fn leaf_root(c: &BigInt, j: u64, g: Vec<f64>, binoms: &[f64]) -> UnitRoot {
-    let estimate = bernstein_root_estimate(g, binoms).map(|t| UnitEstimate {
-        num: c.clone(),
-        exp: j,
-        off: t * pow2f(-(j.min(2000) as i64)),
-    });
     UnitRoot::Open {
         a: dyadic(c, j),
         b: dyadic(&(c + 1), j),
-        estimate,
+        estimate: UnitEstimate::of_leaf(c, j, g, binoms),
     }
 }
 
@@ -277,6 +273,7 @@ pub(super) fn pair_roots(c: &BigInt, j: u64, (x, delta): (Dyadic, Option<f64>)) 
         num: x.num.clone(),
         exp: x.exp,
         off,
+        newton: None,
     };
     [
         UnitRoot::Open {

@@ -423,10 +423,8 @@ fn a_split_stays_within_its_bound() {
             })
             .collect();
         let m = max_abs(&g);
-        let mut work = g.clone();
-        work.resize(2 * (n + 1), 0.0);
-        let (mut left, mut right) = (vec![0.0; n + 1], vec![0.0; n + 1]);
-        de_casteljau_half(&mut work, &mut left, &mut right);
+        let (mut left, mut right) = (vec![0.0; n + 1], g.clone());
+        de_casteljau_half(&mut right, &mut left);
         let nf = (n + 1) as f64;
         // The parent exact (E = 0): the bound is the split's own error.
         let e = (nf * f64::EPSILON * m + nf * TINY) * SAFETY;
@@ -666,5 +664,48 @@ fn cancellation_is_predicted_where_the_f64_shift_is_rejected() {
             .map(|_| BigInt::from(rng.next_u64() as i64))
             .collect();
         assert!(!shift_predicted_to_cancel(&p), "degree {n}");
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 300, ..ProptestConfig::default() })]
+    /// The node indices' words against `BigInt`: a path of left and right children from the
+    /// root down to depth 201 (one past the depth cap) gives `c` with `2 c` and `2 c + 1`.
+    #[test]
+    fn node_indices_follow_the_bigint_path(bits in proptest::collection::vec(any::<bool>(), 0..=201)) {
+        let (mut c, mut big) = (NodeIndex::ZERO, BigInt::zero());
+        for right in bits {
+            prop_assert_eq!(c.is_odd(), big.bit(0));
+            prop_assert_eq!(c.word(), big.to_u64());
+            prop_assert_eq!(c.to_bigint(), big.clone());
+            c = c.doubled();
+            big <<= 1u32;
+            if right {
+                c = c.odd();
+                big += 1u32;
+            }
+        }
+        prop_assert_eq!(c.to_bigint(), big.clone());
+        prop_assert_eq!(c.word(), big.to_u64());
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 500, ..ProptestConfig::default() })]
+    /// With every entry certain, the branch-free count equals the general one.
+    #[test]
+    fn certain_variations_match_the_general_count(
+        mid in proptest::collection::vec((0.5f64..4.0, any::<bool>()), 0..40),
+        lo in 0usize..3,
+        hi in 0usize..3,
+    ) {
+        let signs = [Sign::Negative, Sign::Zero, Sign::Positive];
+        let mid: Vec<f64> = mid.into_iter().map(|(x, neg)| if neg { -x } else { x }).collect();
+        let (lo, hi) = (signs[lo], signs[hi]);
+        prop_assert_eq!(
+            max_variations(lo, &mid, 0.25, hi),
+            max_variations_uncertain(lo, &mid, 0.25, hi)
+        );
+        prop_assert_eq!(certain_variations(lo, &mid, hi), max_variations_uncertain(lo, &mid, 0.25, hi));
     }
 }
