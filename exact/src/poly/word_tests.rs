@@ -319,6 +319,50 @@ proptest! {
 }
 
 proptest! {
+    #![proptest_config(ProptestConfig { cases: 24, ..ProptestConfig::default() })]
+
+    /// The direct dense kernel on monomials of two words (nine variables at eight bits: the
+    /// top variable in the second word, the rows' variables in the first), against the generic
+    /// kernels.
+    #[test]
+    fn two_word_dense_products_agree(
+        f in arb_holey_dense(9, 1, -9i64..=9),
+        g in arb_holey_dense(9, 1, arb_word_int()),
+    ) {
+        prop_assert_eq!(f.shape.words, 2);
+        check_product(&f, &g)?;
+    }
+}
+
+/// The one-call conversion of word sums back to coefficients agrees with the conversion of
+/// each sum, over the denominators 1 and beyond, for `Rational` and `ModP`.
+#[test]
+fn small_sums_convert_as_word_sums() {
+    let wide: Vec<i64> = vec![0, 1, -1, 6, -35, i64::MAX, -i64::MAX, i64::MIN, 1 << 40];
+    let narrow: Vec<i32> = vec![0, 1, -1, 6, -35, i32::MAX, i32::MIN];
+    let each = |n: &[i64], d: i128| -> Vec<Rational> {
+        n.iter()
+            .map(|&x| Rational::from_word_sum(WordSum::from_i128(i128::from(x)), d))
+            .collect()
+    };
+    for d in [1i128, 6, 35, (1 << 62) + 9, i128::from(i64::MAX) * 5] {
+        assert_eq!(Rational::from_small_sums(&wide, d), each(&wide, d));
+        let n32: Vec<i64> = narrow.iter().map(|&x| i64::from(x)).collect();
+        assert_eq!(Rational::from_small_sums(&narrow, d), each(&n32, d));
+    }
+    assert_eq!(
+        Rational::from_small_sums(&[12i64], 18),
+        vec![Rational::new(2, 3).expect("3 is not zero")]
+    );
+    let modp: Vec<ModP> = wide
+        .iter()
+        .map(|&x| ModP::from_word_sum(WordSum::from_i128(i128::from(x)), 1))
+        .collect();
+    assert_eq!(ModP::from_small_sums(&wide, 1), modp);
+    assert_eq!(ModP::from_small_sums(&[-1i64], 1), vec![ModP::from_i64(-1)]);
+}
+
+proptest! {
     #![proptest_config(ProptestConfig { cases: 100, ..ProptestConfig::default() })]
 
     /// Keys of two words (the `u128` heap) and of three (the slot heap).

@@ -98,6 +98,14 @@ pub trait WordCoefficients: Ring {
     /// The coefficient `n / d` (`d >= 1`, a product of two denominators of
     /// [`WordCoefficients::to_words`]).
     fn from_word_sum(n: WordSum, d: i128) -> Self;
+
+    /// The coefficients `n_i / d` of sums of one word each, as [`WordCoefficients::from_word_sum`]
+    /// on every `n_i` (one loop for a whole product instead of one call per coefficient).
+    fn from_small_sums<T: Copy + Into<i64>>(n: &[T], d: i128) -> Vec<Self> {
+        n.iter()
+            .map(|&x| Self::from_word_sum(WordSum::from_i128(i128::from(x.into())), d))
+            .collect()
+    }
 }
 
 impl WordCoefficients for Rational {
@@ -122,6 +130,21 @@ impl WordCoefficients for Rational {
             out.push(i64::try_from(scaled).ok().filter(|&x| x != i64::MIN)?);
         }
         Some((out, l))
+    }
+
+    fn from_small_sums<T: Copy + Into<i64>>(n: &[T], d: i128) -> Vec<Rational> {
+        if d == 1 {
+            n.iter()
+                .map(|&x| Rational::from_integer(x.into()))
+                .collect()
+        } else {
+            n.iter()
+                .map(|&x| {
+                    Rational::from_i128_ratio(i128::from(x.into()), d)
+                        .expect("word denominators are >= 1")
+                })
+                .collect()
+        }
     }
 
     fn from_word_sum(n: WordSum, d: i128) -> Rational {
@@ -173,6 +196,8 @@ type ContentSplit<C> = fn(&[C]) -> Option<(C, Vec<C>)>;
 pub(super) struct WordHooks<C> {
     pub(super) to_words: ToWords<C>,
     pub(super) from_word_sum: fn(WordSum, i128) -> C,
+    pub(super) from_i32_sums: fn(&[i32], i128) -> Vec<C>,
+    pub(super) from_i64_sums: fn(&[i64], i128) -> Vec<C>,
 }
 
 impl<C> Clone for WordHooks<C> {
@@ -197,6 +222,8 @@ pub(super) fn word_hooks<C: Ring>() -> Option<WordHooks<C>> {
         WordHooks {
             to_words: W::to_words,
             from_word_sum: W::from_word_sum,
+            from_i32_sums: W::from_small_sums::<i32>,
+            from_i64_sums: W::from_small_sums::<i64>,
         }
     }
     cast::<WordHooks<Rational>, WordHooks<C>>(of::<Rational>())
@@ -299,10 +326,18 @@ impl<C: Ring> Arith for Generic<C> {
     }
 }
 
-/// Word arithmetic: `i64` inputs, an accumulator with an exact [`WordSum`] and a zero.
+/// Word arithmetic: `i64` inputs, an accumulator of exact sums (at most a [`WordSum`]) and its zero.
 pub(super) trait WordArith: Arith<In = i64, Acc: Copy> {
     const ZERO: Self::Acc;
-    fn sum(x: Self::Acc) -> WordSum;
+    /// Whether the direct dense kernel multiplies blocks of consecutive cells (`i32` cells:
+    /// a block of four is one vector multiply-add; wider products are not vector operations
+    /// here, and for them the kernel keeps one product per term).
+    const BLOCKS: bool;
+    /// Whether every cell is zero.
+    fn all_zero(cells: &[Self::Acc]) -> bool;
+    /// The coefficients `n_i / d` of the exact sums `n_i`, by the hooks `h`: accumulators of
+    /// one word convert the whole list in one call of the coefficient type's loop.
+    fn to_coeffs<C>(sums: Vec<Self::Acc>, d: i128, h: WordHooks<C>) -> Vec<C>;
 }
 
 /// `i32` accumulators (every partial sum, so every term product, below `2^31`).
@@ -315,14 +350,17 @@ pub(super) struct W128;
 pub(super) struct W192;
 
 /// The [`Arith`] and [`WordArith`] impls of a word accumulator: its type and zero, one
-/// product widened to it, a product added to it, an accumulator added to it, and its exact
-/// value. The three accumulators differ only there.
+/// product widened to it, a product added to it, an accumulator added to it, the zero test of
+/// a row of cells, and the conversion of the sums to coefficients. The four accumulators
+/// differ only there.
 macro_rules! word_arith {
     ($name:ident, $acc:ty, $zero:expr,
      mul: |$a:ident, $b:ident| $mul:expr,
      add_mul: |$u:ident, $c:ident, $d:ident| $add_mul:expr,
      add: |$x:ident, $y:ident| $add:expr,
-     sum: |$s:ident| $sum:expr) => {
+     blocks: $blocks:expr,
+     all_zero: |$z:ident| $all_zero:expr,
+     to_coeffs: |$v:ident, $dd:ident, $h:ident| $to_coeffs:expr) => {
         impl Arith for $name {
             type In = i64;
             type Acc = $acc;
@@ -352,36 +390,49 @@ macro_rules! word_arith {
 
         impl WordArith for $name {
             const ZERO: $acc = $zero;
-            fn sum($s: $acc) -> WordSum {
-                $sum
+            const BLOCKS: bool = $blocks;
+            #[inline(always)]
+            fn all_zero($z: &[$acc]) -> bool {
+                $all_zero
+            }
+            fn to_coeffs<C>($v: Vec<$acc>, $dd: i128, $h: WordHooks<C>) -> Vec<C> {
+                $to_coeffs
             }
         }
     };
 }
 
 // The bound keeps every product and partial sum inside `i32`, so the products are exact in
-// `i64` and the narrowing loses nothing.
+// `i64` and the narrowing loses nothing. Zero tests of a row OR its cells (one vector loop).
 word_arith!(W32, i32, 0,
     mul: |a, b| a.wrapping_mul(*b) as i32,
     add_mul: |acc, a, b| *acc = acc.wrapping_add(a.wrapping_mul(*b) as i32),
     add: |x, y| *x = x.wrapping_add(y),
-    sum: |x| WordSum::from_i128(x as i128));
+    blocks: true,
+    all_zero: |cells| cells.iter().fold(0, |o, &x| o | x) == 0,
+    to_coeffs: |sums, d, h| (h.from_i32_sums)(&sums, d));
 word_arith!(W64, i64, 0,
     mul: |a, b| a * b,
     add_mul: |acc, a, b| *acc += a * b,
     add: |x, y| *x += y,
-    sum: |x| WordSum::from_i128(x as i128));
+    blocks: false,
+    all_zero: |cells| cells.iter().fold(0, |o, &x| o | x) == 0,
+    to_coeffs: |sums, d, h| (h.from_i64_sums)(&sums, d));
 word_arith!(W128, i128, 0,
     mul: |a, b| *a as i128 * *b as i128,
     add_mul: |acc, a, b| *acc += *a as i128 * *b as i128,
     add: |x, y| *x += y,
-    sum: |x| WordSum::from_i128(x));
+    blocks: false,
+    all_zero: |cells| cells.iter().fold(0, |o, &x| o | x) == 0,
+    to_coeffs: |sums, d, h| sums.into_iter().map(|x| (h.from_word_sum)(WordSum::from_i128(x), d)).collect());
 // A product of two 63-bit words is below 2^126: an i128, added with a carry into the top.
 word_arith!(W192, WordSum, WordSum { hi: 0, lo: 0 },
     mul: |a, b| WordSum::from_i128(*a as i128 * *b as i128),
     add_mul: |acc, a, b| acc.add_i128(*a as i128 * *b as i128),
     add: |x, y| x.add(y),
-    sum: |x| x);
+    blocks: false,
+    all_zero: |cells| cells.iter().all(|x| x.hi == 0 && x.lo == 0),
+    to_coeffs: |sums, d, h| sums.into_iter().map(|x| (h.from_word_sum)(x, d)).collect());
 
 /// Which accumulator a product needs: the bound `B` of the module documentation; 0 for
 /// `i32`, 1 for `i64`, 2 for `i128`, 3 for 192 bits.

@@ -367,25 +367,26 @@ impl<'a> ProductPlan<'a> {
                     Some(None) => return self.run::<Generic<C>>(fc, gc, max),
                 };
                 let d = fd as i128 * gd as i128;
-                let back = |x: WordSum| (h.from_word_sum)(x, d);
                 return match accumulator_for(&fw, gw) {
-                    0 => self.run_words::<W32, C>(&fw, gw, max, back),
-                    1 => self.run_words::<W64, C>(&fw, gw, max, back),
-                    2 => self.run_words::<W128, C>(&fw, gw, max, back),
-                    _ => self.run_words::<W192, C>(&fw, gw, max, back),
+                    0 => self.run_words::<W32, C>(&fw, gw, max, d, h),
+                    1 => self.run_words::<W64, C>(&fw, gw, max, d, h),
+                    2 => self.run_words::<W128, C>(&fw, gw, max, d, h),
+                    _ => self.run_words::<W192, C>(&fw, gw, max, d, h),
                 };
             }
         }
         self.run::<Generic<C>>(fc, gc, max)
     }
 
-    /// The product in word arithmetic `A`, converted back by `back`.
+    /// The product in word arithmetic `A`, its sums converted back over the denominator `d`
+    /// by the hooks `h`.
     fn run_words<A: WordArith, C>(
         &self,
         fc: &[i64],
         gc: &[i64],
         max: usize,
-        back: impl Fn(WordSum) -> C,
+        d: i128,
+        h: WordHooks<C>,
     ) -> Option<(Vec<u64>, Vec<C>)>
     where
         A::Acc: Copy,
@@ -404,7 +405,7 @@ impl<'a> ProductPlan<'a> {
             }
             _ => self.run::<A>(fc, gc, max)?,
         };
-        Some((exps, sums.into_iter().map(|x| back(A::sum(x))).collect()))
+        Some((exps, A::to_coeffs(sums, d, h)))
     }
 
     /// The product in arithmetic `A` by the planned kernel.
