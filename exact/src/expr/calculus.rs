@@ -2,11 +2,13 @@
 //! `factorial(n)`: their arguments, and their conversion to polynomials, rational functions and
 //! constants.
 //!
-//! * `integrate` converts `E` to a polynomial in `t` (coefficients: polynomials in the other
-//!   variables, or a rational function whose denominator and divisors do not involve `t`),
-//!   takes the antiderivative term by term and substitutes the bounds by Horner's rule. The
-//!   integration variable is bound: it is converted in a copy of the variable table and the
-//!   result mapped back, so it never enters the caller's table.
+//! * `integrate` converts `E` to a polynomial in `t`, `cos(t)` and `sin(t)` (coefficients:
+//!   polynomials in the other variables, or a rational function whose denominator and divisors
+//!   do not involve them), takes the antiderivative ([`trig_integral`]) and evaluates it at the
+//!   bounds: powers of a bound by Horner's rule, `cos(k b)` and `sin(k b)` converted from their
+//!   trees. The integration variable is bound: the antiderivative is taken in a copy of the
+//!   variable table and mapped back, so it never enters the caller's table, and the bounds are
+//!   converted in the caller's table.
 //! * `sum` substitutes each integer of `[a, b]` for the index in the tree of `E` (so that
 //!   `binomial(n, k)` sees constants) and converts the terms one at a time. Nested sums share
 //!   the one budget `sum-terms` ([`limits::SUM_TERMS`]).

@@ -250,6 +250,101 @@ pub(super) fn wave_at(wave: Wave, bound: &Expr) -> Option<Expr> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::expr::parse_expr;
+    use crate::prove::{decide, Decision};
+    use crate::ratfun::RatFun;
+    use crate::Radical;
+    use proptest::prelude::*;
+
+    /// Decides `lhs = rhs` over the square-root field with the circles of the angles.
+    fn decide_trig(lhs: &str, rhs: &str) -> Decision<Radical> {
+        let mut vars = Vars::new();
+        let l: RatFun<Radical> = parse_expr(lhs).unwrap().to_ratfun(&mut vars).unwrap();
+        let r: RatFun<Radical> = parse_expr(rhs).unwrap().to_ratfun(&mut vars).unwrap();
+        let res = l
+            .numerator()
+            .try_mul(r.denominator())
+            .unwrap()
+            .sub_ref(&r.numerator().try_mul(l.denominator()).unwrap());
+        let rels: Vec<Poly<Radical>> = super::super::trig::angles(&vars)
+            .iter()
+            .map(super::super::trig::Angle::relation)
+            .collect();
+        decide(&res, &rels, vars.len()).unwrap()
+    }
+
+    fn proved(lhs: &str, rhs: &str) -> bool {
+        matches!(decide_trig(lhs, rhs), Decision::Proved { .. })
+    }
+
+    #[test]
+    fn definite_integrals_of_trigonometric_polynomials() {
+        for (l, r) in [
+            ("integrate(sin(x), x, 0, pi)", "2"),
+            ("integrate(cos(t)^2, t, 0, 2*pi)", "pi"),
+            ("integrate(t*sin(t), t, 0, pi)", "pi"),
+            ("integrate(cos(t), t, 0, x)", "sin(x)"),
+            ("integrate(sin(t)^3, t, 0, x)", "2/3 - cos(x) + cos(x)^3/3"),
+            ("integrate(t^2*cos(t), t, 0, pi)", "-2*pi"),
+            ("integrate(sin(3*t)*sin(2*t), t, 0, pi)", "0"),
+            ("integrate(sin(3*t)^2, t, 0, pi)", "pi/2"),
+            (
+                "integrate(cos(2*t + pi/3), t, 0, x)",
+                "sin(2*x + pi/3)/2 - sin(pi/3)/2",
+            ),
+            (
+                "integrate(y*t*cos(t), t, a, b)",
+                "y*(b*sin(b) + cos(b) - a*sin(a) - cos(a))",
+            ),
+            ("integrate(cos(t)/y, t, 0, pi/2)", "1/y"),
+            ("integrate(t, t, 0, sin(t))", "sin(t)^2/2"),
+            ("integrate(cos(t), t, 0, t)", "sin(t)"),
+        ] {
+            assert!(proved(l, r), "{l} = {r}: {:?}", decide_trig(l, r));
+        }
+        assert!(matches!(
+            decide_trig("integrate(sin(x), x, 0, pi)", "1"),
+            Decision::Fails { .. }
+        ));
+        assert!(matches!(
+            decide_trig("integrate(sin(t)^2, t, 0, x)", "x/2"),
+            Decision::Fails { .. }
+        ));
+    }
+
+    #[test]
+    fn refusals_name_the_bound_or_the_integrand() {
+        let err = |text: &str| {
+            let mut vars = Vars::new();
+            parse_expr(text)
+                .unwrap()
+                .to_ratfun::<Radical>(&mut vars)
+                .unwrap_err()
+                .to_string()
+        };
+        for (text, says) in [
+            (
+                "integrate(sin(t), t, 0, x^2)",
+                "the bound x^2, which is not an angle",
+            ),
+            (
+                "integrate(sin(t), t, 0, 1)",
+                "the bound 1, which is not an angle",
+            ),
+            (
+                "integrate(sin(t), t, 0, sqrt(2))",
+                "the bound sqrt(2), which is not an angle",
+            ),
+            (
+                "integrate(tan(t), t, 0, x)",
+                "divides by an expression in t",
+            ),
+            ("integrate(cos(t)^1001, t, 0, x)", "angle-multiple"),
+        ] {
+            let got = err(text);
+            assert!(got.contains(says), "{text}: {got}");
+        }
+    }
 
     fn q(n: i64, d: i64) -> Rational {
         Rational::from(BigInt::from(n)) / Rational::from(BigInt::from(d))
@@ -274,5 +369,46 @@ mod tests {
             vec![(z(), z()), (z(), q(3, 4)), (z(), z()), (z(), q(-1, 4))]
         );
         assert_eq!(fourier(0, 0), vec![(Rational::one(), z())]);
+    }
+
+    /// A random trigonometric polynomial in `t`: terms `c t^m cos(t)^p sin(t)^q`, some with a
+    /// multiple angle `cos(k t)`.
+    fn trig_poly() -> impl Strategy<Value = String> {
+        let term = (
+            -5i64..=5,
+            1i64..=3,
+            0u32..=2,
+            0u32..=3,
+            0u32..=3,
+            1u32..=3,
+            any::<bool>(),
+        )
+            .prop_map(|(n, d, m, p, q, k, multiple)| {
+                let angle = if multiple {
+                    format!("cos({k}*t)")
+                } else {
+                    "1".into()
+                };
+                format!("({n}/{d})*t^{m}*cos(t)^{p}*sin(t)^{q}*{angle}")
+            });
+        proptest::collection::vec(term, 1..=3).prop_map(|ts| ts.join(" + "))
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(48))]
+        /// The fundamental theorem: `diff(integrate(P(t), t, 0, x), x) = P(x)`, checked through
+        /// `diff`'s chain rule on the expanded antiderivative, and a shifted right side fails.
+        #[test]
+        fn derivative_of_the_integral_is_the_integrand(p in trig_poly()) {
+            let px = p.replace('t', "x");
+            let lhs = format!("diff(integrate({p}, t, 0, x), x)");
+            prop_assert!(proved(&lhs, &px), "{} = {}: {:?}", lhs, px, decide_trig(&lhs, &px));
+            let shifted = format!("{px} + cos(x)^2 + sin(x)^2");
+            let fails = matches!(decide_trig(&lhs, &shifted), Decision::Fails { .. });
+            prop_assert!(fails);
+            // The integral from x to x is zero.
+            let empty = format!("integrate({p}, t, x, x)");
+            prop_assert!(proved(&empty, "0"));
+        }
     }
 }
