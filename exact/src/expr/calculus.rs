@@ -533,7 +533,7 @@ pub(super) fn integrate_poly<C: Coefficient>(
                     value.try_mul(&w).map_err(size)?
                 }
             };
-            total = total + value;
+            total = total.add_ref(&value);
         }
         Ok(total)
     };

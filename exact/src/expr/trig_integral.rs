@@ -29,6 +29,9 @@ pub(super) type Wave = (u32, Trig);
 /// `sin(t)`; the waves in increasing order, each once.
 pub(super) type Antiderivative<C> = Vec<(Wave, Vec<Poly<C>>)>;
 
+/// Terms of a polynomial as their exponents and coefficients.
+type TermList<C> = Vec<(Vec<(Var, u32)>, C)>;
+
 /// A Gaussian rational `re + i im`.
 type Gauss = (Rational, Rational);
 
@@ -166,8 +169,7 @@ pub(super) fn antiderivative<C: Coefficient>(
     };
     let mut series: BTreeMap<(u32, u32), Vec<(Rational, Rational)>> = BTreeMap::new();
     // Keyed by (k, is sine) (`Trig` has no order).
-    let mut pieces: BTreeMap<(u32, bool), BTreeMap<u32, Vec<(Vec<(Var, u32)>, C)>>> =
-        BTreeMap::new();
+    let mut pieces: BTreeMap<(u32, bool), BTreeMap<u32, TermList<C>>> = BTreeMap::new();
     for (m, c) in p.terms() {
         let (e_t, e_c, e_s) = (exponent(&m, tv), exponent(&m, cv), exponent(&m, sv));
         let rest: Vec<(Var, u32)> = m
