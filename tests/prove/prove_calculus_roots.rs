@@ -1,7 +1,8 @@
 //! `exactcheck prove` with `diff` and `integrate` of square roots and angles: the derivative of
 //! `sqrt(R)` follows the chain rule (`R' / (2 sqrt(R))`, a fraction whose divisor becomes a
-//! condition), and an integrand that holds a function of the integration variable other than
-//! the variable itself is refused with one line instead of being taken as a constant.
+//! condition), an integrand that is a polynomial in the integration variable, its cosine and
+//! its sine is integrated exactly, and one that holds another function of the variable (a root)
+//! is refused with one line instead of being taken as a constant.
 
 use crate::timed;
 
@@ -66,8 +67,7 @@ fn a_root_is_not_a_constant_of_its_own_variable() {
 #[test]
 fn integrands_with_functions_of_the_variable_are_refused() {
     for (l, held) in [
-        ("integrate(sin(x), x, 0, pi)", "sin(x)"),
-        ("integrate(cos(t), t, 0, x)", "cos(t)"),
+        ("integrate(sqrt(t)*sin(t), t, 0, pi)", "sqrt(t)"),
         ("integrate(sqrt(t), t, 0, 1)", "sqrt(t)"),
         ("integrate(t*sqrt(1 + t^2), t, 0, 1)", "sqrt(1 + t^2)"),
         ("diff(integrate(sqrt(t), t, 0, x), x)", "sqrt(t)"),
@@ -114,4 +114,53 @@ fn half_integer_exponents_as_printed_are_square_roots() {
     let (code, _, err) = run(&["prove", "2^(1/3)", "1"]);
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("or half of one"), "{err}");
+}
+
+#[test]
+fn trigonometric_polynomials_integrate_exactly() {
+    for (l, r) in [
+        ("integrate(sin(x), x, 0, pi)", "2"),
+        ("integrate(cos(t)^2, t, 0, 2*pi)", "pi"),
+        ("integrate(t*sin(t), t, 0, pi)", "pi"),
+        ("integrate(cos(t), t, 0, x)", "sin(x)"),
+        ("integrate(sin(t)^3, t, 0, x)", "2/3 - cos(x) + cos(x)^3/3"),
+        (
+            "diff(integrate(sin(t)^2*cos(t), t, 0, x), x)",
+            "sin(x)^2*cos(x)",
+        ),
+        (
+            "integrate(cos(2*t + pi/3), t, 0, x)",
+            "sin(2*x + pi/3)/2 - sqrt(3)/4",
+        ),
+        ("integrate(cos(t)/y, t, 0, pi/2)", "1/y"),
+    ] {
+        assert_eq!(verdict(l, r), (0, "proved".into()), "{l} = {r}");
+    }
+    // A false value fails with an exact counter-example.
+    let (code, out, _) = run(&["prove", "integrate(sin(x), x, 0, pi)", "1"]);
+    assert_eq!(code, 1, "{out}");
+    assert!(out.contains("LHS - RHS = 1"), "{out}");
+}
+
+#[test]
+fn trigonometric_integrals_refuse_bounds_that_are_not_angles() {
+    for (l, says) in [
+        (
+            "integrate(sin(t), t, 0, x^2)",
+            "the bound x^2, which is not an angle",
+        ),
+        (
+            "integrate(sin(t), t, 0, 1)",
+            "the bound 1, which is not an angle",
+        ),
+        (
+            "integrate(tan(t), t, 0, x)",
+            "divides by an expression in t",
+        ),
+    ] {
+        let (code, _, err) = run(&["prove", l, "0"]);
+        assert_eq!(code, 2, "{l}: {err}");
+        assert_eq!(err.lines().count(), 1, "{l}: {err}");
+        assert!(err.contains(says), "{l}: {err}");
+    }
 }

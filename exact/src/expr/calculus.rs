@@ -2,11 +2,13 @@
 //! `factorial(n)`: their arguments, and their conversion to polynomials, rational functions and
 //! constants.
 //!
-//! * `integrate` converts `E` to a polynomial in `t` (coefficients: polynomials in the other
-//!   variables, or a rational function whose denominator and divisors do not involve `t`),
-//!   takes the antiderivative term by term and substitutes the bounds by Horner's rule. The
-//!   integration variable is bound: it is converted in a copy of the variable table and the
-//!   result mapped back, so it never enters the caller's table.
+//! * `integrate` converts `E` to a polynomial in `t`, `cos(t)` and `sin(t)` (coefficients:
+//!   polynomials in the other variables, or a rational function whose denominator and divisors
+//!   do not involve them), takes the antiderivative ([`trig_integral`]) and evaluates it at the
+//!   bounds: powers of a bound by Horner's rule, `cos(k b)` and `sin(k b)` converted from their
+//!   trees. The integration variable is bound: the antiderivative is taken in a copy of the
+//!   variable table and mapped back, so it never enters the caller's table, and the bounds are
+//!   converted in the caller's table.
 //! * `sum` substitutes each integer of `[a, b]` for the index in the tree of `E` (so that
 //!   `binomial(n, k)` sees constants) and converts the terms one at a time. Nested sums share
 //!   the one budget `sum-terms` ([`limits::SUM_TERMS`]).
@@ -19,6 +21,7 @@
 
 use super::eval::{check_constant, size_error};
 use super::trig::{cos_name, sin_name};
+use super::trig_integral::{self, Antiderivative};
 use super::*;
 use crate::poly::{Poly, Var, Vars};
 use crate::ratfun::RatFun;
@@ -357,7 +360,8 @@ fn moving_with(vars: &Vars, t: &str) -> Vec<Var> {
 }
 
 /// The refusal of an integrand that holds a function of the integration variable `t` other
-/// than `t` itself (`sin(t)`, `sqrt(t)`), `involves` telling which variables occur in it.
+/// than `t`, `cos(t)` and `sin(t)` (a square root such as `sqrt(t)`), `involves` telling which
+/// variables occur in it.
 fn refuse_functions_of(
     call: &Expr,
     integrand: &Expr,
@@ -365,10 +369,10 @@ fn refuse_functions_of(
     vars: &Vars,
     involves: impl Fn(Var) -> bool,
 ) -> Result<(), ExprError> {
-    let own = vars.get(t);
+    let allowed = [t.to_string(), cos_name(t), sin_name(t)].map(|name| vars.get(&name));
     match moving_with(vars, t)
         .into_iter()
-        .find(|&w| Some(w) != own && involves(w))
+        .find(|&w| !allowed.contains(&Some(w)) && involves(w))
     {
         None => Ok(()),
         Some(w) => Err(bad(
@@ -376,8 +380,8 @@ fn refuse_functions_of(
             integrand.pos,
             format!(
                 "the integrand {integrand} holds {}, which changes with {t}: only integrands \
-                 that are polynomials in {t} (their coefficients free of {t}) are integrated \
-                 exactly",
+                 that are polynomials in {t}, cos({t}) and sin({t}) (their coefficients free \
+                 of {t}) are integrated exactly",
                 vars.name(w).unwrap_or(t)
             ),
         )),
@@ -445,43 +449,6 @@ pub(super) fn rename<C: Ring>(p: &Poly<C>, map: &dyn Fn(Var) -> Var) -> Poly<C> 
     }))
 }
 
-/// A term as its exponents and coefficient.
-type Term<C> = (Vec<(Var, u32)>, C);
-
-/// The antiderivative of `p` in `v` as its coefficients in `v`: `F = sum_k F[k] v^k`.
-fn antiderivative_parts<C: Coefficient>(
-    call: &Expr,
-    p: &Poly<C>,
-    v: Var,
-) -> Result<Vec<Poly<C>>, ExprError> {
-    let degree = p.degree_in(v);
-    limits::DEGREE
-        .check(p.total_degree().saturating_add(1))
-        .map_err(|error| ExprError::Limit {
-            pos: call.pos,
-            error,
-        })?;
-    let mut by_power: Vec<Vec<Term<C>>> = vec![Vec::new(); degree as usize + 2];
-    for (m, c) in p.terms() {
-        let e = m.exponent(v);
-        let inv = C::from_rational(&Rational::from(BigInt::from(e) + 1u32))
-            .and_then(|d| d.try_inverse())
-            .ok_or_else(|| {
-                bad(
-                    call,
-                    call.pos,
-                    format!(
-                        "1/{} has no image in the coefficient ring",
-                        u64::from(e) + 1
-                    ),
-                )
-            })?;
-        let exps: Vec<(Var, u32)> = m.exponents().into_iter().filter(|&(w, _)| w != v).collect();
-        by_power[e as usize + 1].push((exps, c.mul_ref(&inv)));
-    }
-    Ok(by_power.into_iter().map(Poly::from_terms).collect())
-}
-
 /// `sum_k parts[k] x^k` by Horner's rule in the ring `T` (`mul_add(acc, part)` is
 /// `acc * x + part`).
 fn horner<T, C: Coefficient>(
@@ -496,7 +463,39 @@ fn horner<T, C: Coefficient>(
     Ok(acc)
 }
 
-/// `integrate(E, t, a, b)` of a polynomial `E` with polynomial bounds.
+/// The antiderivative of the integrand of `call` in its variable `t`
+/// ([`trig_integral::antiderivative`]) of the polynomial `integrand` gives, with the divisor
+/// it may give along (free of `t`), both mapped back to the caller's table.
+fn bound_antiderivative<C: Coefficient, X>(
+    call: &Expr,
+    e: &Expr,
+    t: &str,
+    vars: &mut Vars,
+    integrand: impl FnOnce(&mut Vars) -> Result<(Poly<C>, X), ExprError>,
+    remap_divisor: impl FnOnce(X, &dyn Fn(Var) -> Var) -> X,
+) -> Result<(Antiderivative<C>, X), ExprError> {
+    with_bound::<C, _>(
+        vars,
+        t,
+        |vars| {
+            let (p, divisor) = integrand(vars)?;
+            refuse_functions_of(call, e, t, vars, |w| p.degree_in(w) > 0)?;
+            Ok((trig_integral::antiderivative(call, &p, t, vars)?, divisor))
+        },
+        |(anti, divisor), map| {
+            let anti = anti
+                .into_iter()
+                .map(|(wave, parts)| (wave, parts.iter().map(|p| rename(p, map)).collect()))
+                .collect();
+            (anti, remap_divisor(divisor, map))
+        },
+        call.pos,
+    )
+}
+
+/// `integrate(E, t, a, b)` of a polynomial `E` in `t`, `cos(t)`, `sin(t)` with polynomial
+/// bounds: the antiderivative's value at `b` minus its value at `a`, `cos(k b)` and `sin(k b)`
+/// converted from their trees.
 pub(super) fn integrate_poly<C: Coefficient>(
     call: &Expr,
     args: &[Expr],
@@ -507,35 +506,60 @@ pub(super) fn integrate_poly<C: Coefficient>(
     // The bounds first: their variables are free (a `t` there is the caller's).
     let lo = a.to_poly::<C>(vars)?;
     let hi = b.to_poly::<C>(vars)?;
-    with_bound::<C, _>(
-        vars,
+    let (anti, _) = bound_antiderivative(
+        call,
+        e,
         t,
-        |vars| {
-            let p = e.to_poly::<C>(vars)?;
-            refuse_functions_of(call, e, t, vars, |w| p.degree_in(w) > 0)?;
-            let Some(v) = vars.get(t) else {
-                // E does not involve t: E (b - a).
-                return p.try_mul(&(hi.clone() - lo.clone())).map_err(size);
+        vars,
+        |vars| Ok((e.to_poly::<C>(vars)?, ())),
+        |x, _| x,
+    )?;
+    let mut at = |x: &Poly<C>, bound: &Expr| -> Result<Poly<C>, ExprError> {
+        let mut total = Poly::zero();
+        for (wave, parts) in &anti {
+            let value = horner(parts, Poly::zero(), |acc: Poly<C>, part| {
+                let q = acc.try_mul(x).map_err(size)? + part.clone();
+                q.coefficients()
+                    .iter()
+                    .try_for_each(|c| check_constant(c, call.pos))?;
+                Ok(q)
+            })?;
+            let value = match trig_integral::wave_at(*wave, bound) {
+                None => value,
+                Some(tree) => {
+                    let w = tree
+                        .to_poly::<C>(vars)
+                        .map_err(|why| not_angle(call, bound, why))?;
+                    value.try_mul(&w).map_err(size)?
+                }
             };
-            let parts = antiderivative_parts(call, &p, v)?;
-            let at = |x: &Poly<C>| {
-                horner(&parts, Poly::zero(), |acc: Poly<C>, part| {
-                    let q = acc.try_mul(x).map_err(size)? + part.clone();
-                    q.coefficients()
-                        .iter()
-                        .try_for_each(|c| check_constant(c, call.pos))?;
-                    Ok(q)
-                })
-            };
-            Ok(at(&hi)? - at(&lo)?)
-        },
-        |p, map| rename(&p, map),
-        call.pos,
-    )
+            total = total.add_ref(&value);
+        }
+        Ok(total)
+    };
+    Ok(at(&hi, b)? - at(&lo, a)?)
+}
+
+/// The refusal of a bound whose cosine or sine the conversion refused (`x^2`, `sqrt(2)`, `1`),
+/// naming the bound; limits pass through unchanged.
+fn not_angle(call: &Expr, bound: &Expr, why: ExprError) -> ExprError {
+    match why {
+        ExprError::Limit { .. } => why,
+        ExprError::BadCall { why, .. } => bad(
+            call,
+            bound.pos,
+            format!("the integral takes sin and cos of the bound {bound}, which is not an angle: {why}"),
+        ),
+        other => bad(
+            call,
+            bound.pos,
+            format!("the integral takes sin and cos of the bound {bound}, which is not an angle: {other}"),
+        ),
+    }
 }
 
 /// `integrate(E, t, a, b)` of a rational function `E` whose denominator and divisors do not
-/// involve `t`, with rational-function bounds.
+/// involve `t`, `cos(t)` or `sin(t)`, with rational-function bounds.
 pub(super) fn integrate_ratfun<C: Coefficient + Field>(
     call: &Expr,
     args: &[Expr],
@@ -545,9 +569,13 @@ pub(super) fn integrate_ratfun<C: Coefficient + Field>(
     let size = |err| size_error(err, call.pos);
     let lo = a.to_ratfun::<C>(vars)?;
     let hi = b.to_ratfun::<C>(vars)?;
-    with_bound::<C, _>(
-        vars,
+    // E's denominator, free of t (its reciprocal, with E's conditions), mapped back with the
+    // antiderivative of E's numerator.
+    let (anti, divisor) = bound_antiderivative(
+        call,
+        e,
         t,
+        vars,
         |vars| {
             let f = e.to_ratfun::<C>(vars)?;
             refuse_functions_of(call, e, t, vars, |w| {
@@ -556,36 +584,49 @@ pub(super) fn integrate_ratfun<C: Coefficient + Field>(
                     .chain(f.conditions())
                     .any(|p| p.degree_in(w) > 0)
             })?;
-            let Some(v) = vars.get(t) else {
-                return f.mul(&hi.add(&lo, true).map_err(size)?).map_err(size);
-            };
-            if f.denominator().degree_in(v) > 0 || f.conditions().iter().any(|c| c.degree_in(v) > 0)
-            {
+            let moving = [t.to_string(), cos_name(t), sin_name(t)].map(|name| vars.get(&name));
+            let divides = |p: &Poly<C>| moving.iter().flatten().any(|&w| p.degree_in(w) > 0);
+            if divides(f.denominator()) || f.conditions().iter().any(divides) {
                 return Err(bad(
                     call,
                     e.pos,
                     format!(
-                        "the integrand {e} divides by an expression in {t}: only polynomials \
-                         in {t} are integrated (the integral of a rational function is not in \
-                         general rational)"
+                        "the integrand {e} divides by an expression in {t}: only polynomials in \
+                     {t}, cos({t}) and sin({t}) are integrated (the integral of a rational \
+                     function is not in general rational)"
                     ),
                 ));
             }
-            let parts = antiderivative_parts(call, f.numerator(), v)?;
-            let at = |x: &RatFun<C>| {
-                horner(&parts, RatFun::from_poly(Poly::zero()), |acc, part| {
-                    acc.mul(x)
-                        .and_then(|q| q.add(&RatFun::from_poly(part.clone()), false))
-                        .map_err(size)
-                })
-            };
-            let value = at(&hi)?.add(&at(&lo)?, true).map_err(size)?;
-            // Divide by E's denominator (free of t), keeping E's conditions.
-            value.mul(&f.denominator_reciprocal()).map_err(size)
+            Ok((f.numerator().clone(), f.denominator_reciprocal()))
         },
-        |f, map| f.map_polys(|p| rename(p, map)),
-        call.pos,
-    )
+        |d, map| d.map_polys(|p| rename(p, map)),
+    )?;
+    let at = |x: &RatFun<C>, bound: &Expr, vars: &mut Vars| -> Result<RatFun<C>, ExprError> {
+        let mut total = RatFun::from_poly(Poly::zero());
+        for (wave, parts) in &anti {
+            let value = horner(parts, RatFun::from_poly(Poly::zero()), |acc, part| {
+                acc.mul(x)
+                    .and_then(|q| q.add(&RatFun::from_poly(part.clone()), false))
+                    .map_err(size)
+            })?;
+            let value = match trig_integral::wave_at(*wave, bound) {
+                None => value,
+                Some(tree) => {
+                    let w = tree
+                        .to_ratfun::<C>(vars)
+                        .map_err(|why| not_angle(call, bound, why))?;
+                    value.mul(&w).map_err(size)?
+                }
+            };
+            total = total.add(&value, false).map_err(size)?;
+        }
+        Ok(total)
+    };
+    let value = at(&hi, b, vars)?
+        .add(&at(&lo, a, vars)?, true)
+        .map_err(size)?;
+    // Divide by E's denominator (free of t), keeping E's conditions.
+    value.mul(&divisor).map_err(size)
 }
 
 /// The value of a call of this module as a polynomial.

@@ -143,6 +143,7 @@ mod roots;
 #[cfg(test)]
 mod tests;
 mod trig;
+mod trig_integral;
 
 pub use constants::{
     abstract_constants, fill_constants, needs_algebraic, upoly_expr, ConstantLeaf,
