@@ -563,7 +563,7 @@ pub fn has_trig(e: &Expr) -> bool {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
     use crate::expr::parse_expr;
     use crate::prove::{decide, Decision};
@@ -575,7 +575,7 @@ mod tests {
     }
 
     /// Decides `lhs = rhs` with the circles of the angles.
-    fn decide_trig(lhs: &str, rhs: &str) -> Decision<Radical> {
+    pub(in crate::expr) fn decide_trig(lhs: &str, rhs: &str) -> Decision<Radical> {
         let mut vars = Vars::new();
         let l: RatFun<Radical> = parse_expr(lhs).unwrap().to_ratfun(&mut vars).unwrap();
         let r: RatFun<Radical> = parse_expr(rhs).unwrap().to_ratfun(&mut vars).unwrap();

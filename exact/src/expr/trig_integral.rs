@@ -251,29 +251,12 @@ pub(super) fn wave_at(wave: Wave, bound: &Expr) -> Option<Expr> {
 
 #[cfg(test)]
 mod tests {
+    use super::super::trig::tests::decide_trig;
     use super::*;
     use crate::expr::parse_expr;
-    use crate::prove::{decide, Decision};
-    use crate::ratfun::RatFun;
+    use crate::prove::Decision;
     use crate::Radical;
     use proptest::prelude::*;
-
-    /// Decides `lhs = rhs` over the square-root field with the circles of the angles.
-    fn decide_trig(lhs: &str, rhs: &str) -> Decision<Radical> {
-        let mut vars = Vars::new();
-        let l: RatFun<Radical> = parse_expr(lhs).unwrap().to_ratfun(&mut vars).unwrap();
-        let r: RatFun<Radical> = parse_expr(rhs).unwrap().to_ratfun(&mut vars).unwrap();
-        let res = l
-            .numerator()
-            .try_mul(r.denominator())
-            .unwrap()
-            .sub_ref(&r.numerator().try_mul(l.denominator()).unwrap());
-        let rels: Vec<Poly<Radical>> = super::super::trig::angles(&vars)
-            .iter()
-            .map(super::super::trig::Angle::relation)
-            .collect();
-        decide(&res, &rels, vars.len()).unwrap()
-    }
 
     fn proved(lhs: &str, rhs: &str) -> bool {
         matches!(decide_trig(lhs, rhs), Decision::Proved { .. })
