@@ -164,3 +164,25 @@ fn trigonometric_integrals_refuse_bounds_that_are_not_angles() {
         assert!(err.contains(says), "{l}: {err}");
     }
 }
+
+#[test]
+fn a_derivative_of_a_root_at_a_point() {
+    for (l, r) in [
+        ("subs(diff(sqrt(x), x), x, 4)", "1/4"),
+        ("subs(diff(sqrt(x^2 + 1), x), x, 0)", "0"),
+        (
+            "subs(diff(x*sqrt(1 + x^2), x), x, y)",
+            "sqrt(1 + y^2) + y^2/sqrt(1 + y^2)",
+        ),
+    ] {
+        assert_eq!(verdict(l, r), (0, "proved".into()), "{l} = {r}");
+    }
+    assert_eq!(
+        verdict("subs(diff(sqrt(x), x), x, 4)", "1/2"),
+        (1, "fails".into())
+    );
+    // Where the root's derivative divides by zero there is none: one line, exit 2.
+    let (code, _, err) = run(&["prove", "subs(diff(sqrt(x), x), x, 0)", "0"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("division by zero"), "{err}");
+}
