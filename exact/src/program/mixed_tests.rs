@@ -7,14 +7,16 @@ use crate::to_f64::rational_to_f32;
 use num_traits::FromPrimitive;
 use proptest::prelude::*;
 
-fn fpcore(text: &str) -> Program {
+/// The first benchmark of an FPCore text, compiled.
+pub(super) fn fpcore(text: &str) -> Program {
     parse_file(text).unwrap()[0]
         .program
         .clone()
         .unwrap_or_else(|e| panic!("{e}"))
 }
 
-fn exact(v: f64) -> Rational {
+/// The exact value of a double.
+pub(super) fn exact(v: f64) -> Rational {
     Rational::from(num_rational::BigRational::from_f64(v).expect("finite"))
 }
 

@@ -2,23 +2,13 @@
 //! binary64 benchmark and the reverse), the refused argument precisions, and an array of loop
 //! results computed by one run of the loop.
 use super::parse_file;
-use crate::program::{ExactStop, Format, Program};
+use crate::program::{ExactStop, Format};
 use crate::rational::Rational;
 use crate::to_f64::rational_to_f32;
 use exactcheck_core::limits::LOOP_ITERATIONS;
-use num_traits::FromPrimitive;
 use proptest::prelude::*;
 
-fn program(text: &str) -> Program {
-    parse_file(text).expect("parses")[0]
-        .program
-        .clone()
-        .unwrap_or_else(|e| panic!("{e}"))
-}
-
-fn exact(v: f64) -> Rational {
-    Rational::from(num_rational::BigRational::from_f64(v).expect("finite"))
-}
+use crate::program::mixed_tests::{exact, fpcore as program};
 
 #[test]
 fn arguments_keep_their_own_precision() {

@@ -287,37 +287,13 @@ mod tests {
     #[test]
     fn narrow_division_agrees_with_the_bigint_reference() {
         let mut rng = Rng::new(3303);
-        let word = |rng: &mut Rng| -> i64 {
-            match rng.below(4) {
-                0 => 1 + rng.below(40) as i64,
-                1 => 1 + rng.below(1 << 20) as i64,
-                2 => (rng.next_u64() >> 1) as i64,
-                _ => i64::MAX - rng.below(5) as i64,
-            }
-        };
         for round in 0..600 {
-            let deg = 1 + rng.below(14) as usize;
             let bits = [3u32, 40, 64, 100, 120][round % 5];
-            let g: Vec<BigInt> = (0..=deg)
-                .map(|_| {
-                    let x = (BigInt::from(rng.next_u64()) << 64u32) + BigInt::from(rng.next_u64());
-                    let x = x >> (128 - bits);
-                    if rng.below(2) == 0 {
-                        -x
-                    } else {
-                        x
-                    }
-                })
-                .collect();
-            if g[deg].is_zero() {
+            let Some((g, p, q)) =
+                super::super::tests::random_linear_factor_case(&mut rng, 14, bits, 40)
+            else {
                 continue;
-            }
-            let (mut p, mut q) = (word(&mut rng), word(&mut rng));
-            let gc = num_integer::Integer::gcd(&p, &q);
-            (p, q) = (p / gc, q / gc);
-            if rng.below(2) == 0 {
-                p = -p;
-            }
+            };
             let a = times_linear(&g, p, q);
             let w = super::super::super::limbs::linear_factor_width(&a);
             for (p2, q2) in [(p, q), (p + 1, q), (p, q + 2), (p + q, q), (1, 1), (-1, 2)] {

@@ -420,43 +420,60 @@ fn limbs_round_trip() {
 /// products `(q x - p) g` with random `g` (coefficients up to 200 bits, both parities of
 /// `q` and `p`, signs, words near 2^63) give the quotient `g`, and other linear factors
 /// are refused exactly when the reference refuses them.
-#[test]
-fn limb_division_agrees_with_the_bigint_reference() {
-    let mut rng = Rng::new(2611);
+/// A random case for the divisions by a linear factor `q x - p`: `g` of degree 1 to
+/// `max_degree` with coefficients of `bits` bits and random signs (`None` when its leading
+/// coefficient came out zero), and `p / q` in lowest terms, `q > 0`, with words drawn from small
+/// values (up to `small`), 20-bit ones, full 63-bit ones and words next to `i64::MAX`.
+pub(super) fn random_linear_factor_case(
+    rng: &mut Rng,
+    max_degree: u64,
+    bits: u32,
+    small: u64,
+) -> Option<(Vec<BigInt>, i64, i64)> {
     let word = |rng: &mut Rng| -> i64 {
         match rng.below(4) {
-            0 => 1 + rng.below(7) as i64,
+            0 => 1 + rng.below(small) as i64,
             1 => 1 + rng.below(1 << 20) as i64,
             2 => (rng.next_u64() >> 1) as i64,
             _ => i64::MAX - rng.below(5) as i64,
         }
     };
+    let deg = 1 + rng.below(max_degree) as usize;
+    let g: Vec<BigInt> = (0..=deg)
+        .map(|_| {
+            let mut x = BigInt::from(rng.next_u64());
+            for _ in 0..bits / 64 {
+                x = (x << 64u32) + BigInt::from(rng.next_u64());
+            }
+            x >>= (64 - bits % 64) % 64;
+            if rng.below(2) == 0 {
+                -x
+            } else {
+                x
+            }
+        })
+        .collect();
+    if g[deg].is_zero() {
+        return None;
+    }
+    let (mut p, mut q) = (word(rng), word(rng));
+    let gc = num_integer::Integer::gcd(&p, &q);
+    (p, q) = (p / gc, q / gc);
+    if rng.below(2) == 0 {
+        p = -p;
+    }
+    Some((g, p, q))
+}
+
+#[test]
+fn limb_division_agrees_with_the_bigint_reference() {
+    let mut rng = Rng::new(2611);
     for round in 0..400 {
-        let deg = 1 + rng.below(12) as usize;
-        let bits = [3u64, 64, 200][round % 3];
-        let g: Vec<BigInt> = (0..=deg)
-            .map(|_| {
-                let mut x = BigInt::from(rng.next_u64());
-                for _ in 0..bits / 64 {
-                    x = (x << 64u32) + BigInt::from(rng.next_u64());
-                }
-                x >>= (64 - bits % 64) % 64;
-                if rng.below(2) == 0 {
-                    -x
-                } else {
-                    x
-                }
-            })
-            .collect();
-        if g[deg].is_zero() {
+        let bits = [3u32, 64, 200][round % 3];
+        let Some((g, p, q)) = random_linear_factor_case(&mut rng, 12, bits, 7) else {
             continue;
-        }
-        let (mut p, mut q) = (word(&mut rng), word(&mut rng));
-        let gc = num_integer::Integer::gcd(&p, &q);
-        (p, q) = (p / gc, q / gc);
-        if rng.below(2) == 0 {
-            p = -p;
-        }
+        };
+        let deg = g.len() - 1;
         // a = (q x - p) g.
         let mut a = vec![BigInt::zero(); deg + 2];
         for (i, c) in g.iter().enumerate() {
