@@ -240,6 +240,15 @@ fn die(args: std::fmt::Arguments<'_>) -> ! {
     exit_with(&text.buf[..text.len])
 }
 
+/// Blocks the calling thread when another thread is already ending the process (a `--timeout`
+/// or the memory cap), so that the command's own result, often a failure caused by that ending
+/// (a `--program` killed by it), is not reported in place of the ending's one line.
+pub fn defer_to_ending() {
+    if ENDING.load(Ordering::SeqCst) {
+        wait_for_exit()
+    }
+}
+
 /// Blocks this thread, allocating nothing, while another thread ends the process.
 #[cfg(unix)]
 fn wait_for_exit() -> ! {

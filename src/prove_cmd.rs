@@ -71,7 +71,8 @@ pub struct ProveArgs {
     #[arg(allow_hyphen_values = true)]
     pub rhs: Option<String>,
     /// A relation `A = B` the variables satisfy, e.g. `c^2 + s^2 = 1`, or a domain with constant
-    /// bounds, e.g. `r > 0`, `0 <= t <= 1`, `R >= 1/2` (repeatable; one domain per variable).
+    /// bounds, e.g. `r > 0`, `0 <= t <= 1`, `R >= 1/2` (repeatable, or a comma-separated list:
+    /// `a >= 0, b >= 0`, `a, b > 0`; one domain per variable).
     /// Inconsistent relations are an error.
     #[arg(long = "where", value_name = "RELATION", allow_hyphen_values = true)]
     pub relations: Vec<String>,
@@ -102,6 +103,54 @@ pub enum Where {
     Domain(String, VarDomain),
     /// `A != B`: a hypothesis the proof may use (and the counter-example search respects).
     NonZero(Expr, Expr),
+}
+
+/// The hypotheses of one `--where` text (or claims-file `where` entry): a comma-separated list as a
+/// paper prints it is several, `a >= 0, b >= 0` is `a >= 0` and `b >= 0`, and a list of variables
+/// sharing one comparison, `a, b > 0`, is `a > 0` and `b > 0`. Commas inside parentheses or brackets
+/// (`binomial(4, 2)`, `[1, 2]`) do not split; a text without a top-level comma is itself.
+pub fn split_where(text: &str) -> Vec<String> {
+    let mut parts = Vec::new();
+    let (mut depth, mut start) = (0usize, 0);
+    for (i, ch) in text.char_indices() {
+        match ch {
+            '(' | '[' | '{' => depth += 1,
+            ')' | ']' | '}' => depth = depth.saturating_sub(1),
+            ',' if depth == 0 => {
+                parts.push(text[start..i].trim());
+                start = i + 1;
+            }
+            _ => {}
+        }
+    }
+    parts.push(text[start..].trim());
+    if parts.len() == 1 {
+        return vec![text.to_string()];
+    }
+    let is_name = |p: &str| {
+        let mut cs = p.chars();
+        cs.next()
+            .is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+            && cs.all(|c| c.is_ascii_alphanumeric() || c == '_')
+    };
+    // `a, b, c > 0`: the leading bare names take the last part's comparison.
+    let last = parts[parts.len() - 1];
+    let head = last
+        .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+        .unwrap_or(last.len());
+    let comparison = last[head..].trim_start();
+    let shared = parts[..parts.len() - 1].iter().all(|p| is_name(p))
+        && is_name(&last[..head])
+        && comparison.starts_with(['<', '>', '=', '!']);
+    if shared {
+        let mut texts: Vec<String> = parts[..parts.len() - 1]
+            .iter()
+            .map(|p| format!("{p} {comparison}"))
+            .collect();
+        texts.push(last.to_string());
+        return texts;
+    }
+    parts.into_iter().map(str::to_string).collect()
 }
 
 /// Parses `--where #i` (`what` names it): `A = B`, or a chain `a < v`, `v >= a`, `a <= v < b`
@@ -295,7 +344,13 @@ pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
     let mut relations = Vec::new();
     let mut nonzero = Vec::new();
     let mut domains: Vec<(String, VarDomain, String)> = Vec::new();
-    for (i, r) in args.relations.iter().enumerate() {
+    let texts = args
+        .relations
+        .iter()
+        .enumerate()
+        .flat_map(|(i, r)| split_where(r).into_iter().map(move |t| (i, t)));
+    for (i, r) in texts {
+        let r = &r;
         let what = format!("--where #{}", i + 1);
         match parse_where(r, &what)? {
             Where::Relation(a, b) => relations.push((a, b)),
@@ -674,5 +729,25 @@ pub fn add_angles<C: PointField>(
         pi,
         pi_in_relations,
         mixed,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::split_where;
+
+    #[test]
+    fn where_lists_split_at_top_level_commas() {
+        assert_eq!(split_where("x = 1"), ["x = 1"]);
+        assert_eq!(split_where("a >= 0, b > 1/2"), ["a >= 0", "b > 1/2"]);
+        assert_eq!(split_where("a, b, c != 0"), ["a != 0", "b != 0", "c != 0"]);
+        assert_eq!(
+            split_where("0 <= t <= 1, s = [1, 2]"),
+            ["0 <= t <= 1", "s = [1, 2]"]
+        );
+        assert_eq!(split_where("x = binomial(3, 1)"), ["x = binomial(3, 1)"]);
+        // A bare name without a shared comparison stays as written (and is refused when parsed).
+        assert_eq!(split_where("a, b"), ["a", "b"]);
+        assert_eq!(split_where("a, 2 b > 0"), ["a", "2 b > 0"]);
     }
 }

@@ -237,3 +237,31 @@ fn bad_roots_and_hypotheses_are_one_line_errors() {
         assert!(err.contains(needle), "{args:?}: {err}");
     }
 }
+
+#[test]
+fn hypotheses_as_a_paper_lists_them() {
+    // One `--where` with a comma-separated list is several hypotheses, and `a, b >= 0` gives
+    // both variables the bound; each proves what the two separate arguments prove.
+    for list in ["a >= 0, b >= 0", "a, b >= 0"] {
+        let (code, j) = prove_json(&["sqrt(a^2*b^2)", "a*b", "--where", list]);
+        assert_eq!(
+            (code, j["verdict"].as_str()),
+            (0, Some("proved")),
+            "{list}: {j}"
+        );
+        assert_eq!(
+            j["hypotheses_used"],
+            serde_json::json!(["a >= 0", "b >= 0", "sqrt(a^2*b^2) >= 0"]),
+            "{list}"
+        );
+    }
+    // Only one of the two: fails at an exact point with b < 0.
+    let (code, j) = prove_json(&["sqrt(a^2*b^2)", "a*b", "--where", "a >= 0"]);
+    assert_eq!((code, j["verdict"].as_str()), (1, Some("fails")), "{j}");
+    // Commas inside a call do not split the relation.
+    let (code, j) = prove_json(&["x", "3", "--where", "x = binomial(3, 1)"]);
+    assert_eq!((code, j["verdict"].as_str()), (0, Some("proved")), "{j}");
+    let (code, out, err) = run(&["prove", "x", "0", "--where", "a, b"]);
+    assert_eq!(code, 2, "{out}{err}");
+    assert_eq!(err.lines().count(), 1, "{err}");
+}

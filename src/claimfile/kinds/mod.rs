@@ -21,7 +21,7 @@ use super::read::{present_keys, RawClaim};
 use super::{name_expr, Decision};
 use crate::claims::{printed, Equation, Erratum, Outcome, Verdict};
 use crate::phrase::Phrasing;
-use crate::prove_cmd::{parse_where_with, Where};
+use crate::prove_cmd::{parse_where_with, split_where, Where};
 use crate::Error;
 use exactcheck_core::Ring;
 use exactcheck_exact::expr::library::Shape;
@@ -431,7 +431,13 @@ fn conditions(c: &RawClaim, defs: &RefCell<Defs>) -> Built<Conditions> {
     let lists: [(&'static str, &Option<Vec<String>>); 2] =
         [("where", &c.where_), ("domains", &c.domains)];
     for (key, list) in lists {
-        for (i, text) in list.iter().flatten().enumerate() {
+        let texts = list
+            .iter()
+            .flatten()
+            .enumerate()
+            .flat_map(|(i, t)| split_where(t).into_iter().map(move |t| (i, t)));
+        for (i, text) in texts {
+            let text = &text;
             let what = format!("entry {}", i + 1);
             match parse_where_with(text, &what, &parse).map_err(|e| (key, e.to_string()))? {
                 Where::Relation(a, b) => {
