@@ -385,15 +385,12 @@ pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
     }
     // Radicals (also those of sin and cos at multiples of pi) need the radical coefficient
     // field; everything else runs over Q.
-    let radical = std::iter::once(&args.lhs)
-        .chain(&args.rhs)
-        .chain(&args.relations)
-        .any(|s| s.contains("sqrt"))
-        || lhs
-            .iter()
-            .chain(rhs.iter().flatten())
-            .chain(relations.iter().flat_map(|(a, b)| [a, b]))
-            .any(has_trig);
+    let radical = lhs
+        .iter()
+        .chain(rhs.iter().flatten())
+        .chain(relations.iter().flat_map(|(a, b)| [a, b]))
+        .chain(nonzero.iter().flat_map(|(a, b, _)| [a, b]))
+        .any(|e| has_trig(e) || exactcheck_exact::expr::library::has_sqrt(e));
     let sides = Sides {
         lhs: &lhs,
         rhs: rhs.as_deref(),

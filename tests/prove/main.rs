@@ -14,6 +14,7 @@ mod prove_library;
 mod prove_random;
 mod prove_sqrt;
 mod prove_trig;
+mod prove_typeset;
 mod real_roots;
 mod robust_field;
 mod robust_prove;

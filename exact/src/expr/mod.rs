@@ -30,6 +30,12 @@
 //! ```
 //! White space may appear between tokens.
 //!
+//! The notation of typeset mathematics, as text copied from a paper has it, reads as the ASCII
+//! it stands for: `−` (U+2212) is `-`; `·`, `⋅`, `×`, `∗` are `*`; `÷`, `∕` are `/`; `π` is `pi`
+//! (a token of its own, so `2πr` is `2*pi*r`); superscripts are exponents (`x²` is `x^2`, `x⁻¹`
+//! is `x^-1`); `√` is the square root of the atom after it (`√2`, `√(x² + y²)`, `√2 x` is
+//! `sqrt(2)*x`). `√x²` is refused: it is printed for both `√(x²)` and `(√x)²`.
+//!
 //! * **Numbers are exact**: a decimal is the fraction it denotes (`0.1 = 1/10`), and scientific
 //!   notation is read exactly (`1e3 = 1000`, `2.5e-3 = 1/400`, `1E+5`, `5e0`). The exponent
 //!   belongs to the number only when `e`/`E` follows the digits directly and is followed by an

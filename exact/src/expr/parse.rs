@@ -29,6 +29,12 @@ enum Tok {
     Comma,
     /// `°`: degrees, a postfix meaning `* pi/180`.
     Degree,
+    /// `π`: the constant pi, a token of its own (`2πr` is `2*pi*r`).
+    Pi,
+    /// `√`: the square root of the atom that follows (`√2`, `√(x + 1)`).
+    Root,
+    /// A run of superscript digits with an optional sign (`²`, `⁻¹`): an exponent.
+    Superscript,
     End,
     Bad(char),
 }
@@ -119,6 +125,19 @@ impl<'a> Parser<'a> {
             ']' => (Tok::RBracket, start + 1),
             ',' => (Tok::Comma, start + 1),
             '°' => (Tok::Degree, start + '°'.len_utf8()),
+            // The notation of printed mathematics, as text copied from a typeset page has it.
+            '\u{2212}' => (Tok::Minus, start + ch.len_utf8()),
+            '\u{b7}' | '\u{22c5}' | '\u{d7}' | '\u{2217}' => (Tok::Star, start + ch.len_utf8()),
+            '\u{f7}' | '\u{2215}' => (Tok::Slash, start + ch.len_utf8()),
+            'π' => (Tok::Pi, start + ch.len_utf8()),
+            '√' => (Tok::Root, start + ch.len_utf8()),
+            c if superscript_value(c).is_some() => {
+                let len = rest[off..]
+                    .char_indices()
+                    .find(|&(_, c)| superscript_value(c).is_none())
+                    .map_or(rest.len() - off, |(i, _)| i);
+                (Tok::Superscript, start + len)
+            }
             c => (Tok::Bad(c), start + c.len_utf8()),
         };
         Token { tok, start, end }
@@ -194,7 +213,7 @@ impl<'a> Parser<'a> {
     /// `(a+b)(a-b)`, `c^2 x^3`): implicit multiplication, binding like `*`. A number cannot:
     /// `2 3` or `x 2` is more likely a typo than a product, so it stays an error.
     fn starts_implicit_factor(&self) -> bool {
-        matches!(self.cur.tok, Tok::Ident | Tok::LParen)
+        matches!(self.cur.tok, Tok::Ident | Tok::LParen | Tok::Pi | Tok::Root)
     }
 
     fn parse_product(&mut self) -> Result<Expr, ExprError> {
@@ -297,13 +316,20 @@ impl<'a> Parser<'a> {
         })
     }
 
-    /// `'^' exponent` after `base`, if present.
+    /// `'^' exponent` after `base`, or a superscript exponent (`x²`, `x⁻¹`), if present.
     fn parse_power_tail(&mut self, base: Expr) -> Result<Expr, ExprError> {
-        if self.cur.tok != Tok::Caret {
-            return Ok(base);
-        }
-        self.bump();
-        let exp = self.parse_exponent()?;
+        let exp = match self.cur.tok {
+            Tok::Caret => {
+                self.bump();
+                self.parse_exponent()?
+            }
+            Tok::Superscript => {
+                let t = self.cur;
+                self.bump();
+                superscript_exponent(self.text(t), t.start)?
+            }
+            _ => return Ok(base),
+        };
         let pos = base.pos;
         // A half-integer constant exponent, as printed (`(1 + t^2)^(3/2)`, `x^0.5`), is a power
         // of the square root: `sqrt(base)^n` for the exponent n/2.
@@ -398,6 +424,34 @@ impl<'a> Parser<'a> {
             }
             Tok::LParen => self.parse_parenthesized(),
             Tok::LBracket if self.calls => self.parse_list(),
+            Tok::Pi => {
+                self.bump();
+                Ok(Expr {
+                    kind: ExprKind::Var(PI.to_string()),
+                    pos: t.start,
+                })
+            }
+            Tok::Root => {
+                self.bump();
+                self.enter()?;
+                let grouped = self.cur.tok == Tok::LParen;
+                let arg = self.parse_atom(EXPECT_OPERAND);
+                self.leave();
+                let arg = arg?;
+                // `√x²` is printed for both `√(x²)` and `(√x)²`, which differ for x < 0; after
+                // parentheses, `√(x + 1)²`, the power is the root's.
+                if !grouped && matches!(self.cur.tok, Tok::Caret | Tok::Superscript) {
+                    return Err(ExprError::Unexpected {
+                        pos: self.cur.start,
+                        found: format!("a power after √{arg}"),
+                        expected: "√ of an atom without a power: write √(x²) or (√x)²",
+                    });
+                }
+                Ok(Expr {
+                    kind: ExprKind::Sqrt(Box::new(arg)),
+                    pos: t.start,
+                })
+            }
             _ => Err(self.unexpected(expected)),
         }
     }
@@ -472,6 +526,64 @@ impl<'a> Parser<'a> {
         self.bump();
         Ok(Expr { pos: open, ..inner })
     }
+}
+
+/// The value of a superscript digit, or the sign of a superscript sign (as `-1` and `-2`).
+fn superscript_value(c: char) -> Option<i8> {
+    Some(match c {
+        '⁰' => 0,
+        '¹' => 1,
+        '²' => 2,
+        '³' => 3,
+        '⁴' => 4,
+        '⁵' => 5,
+        '⁶' => 6,
+        '⁷' => 7,
+        '⁸' => 8,
+        '⁹' => 9,
+        '⁻' => -1,
+        '⁺' => -2,
+        _ => return None,
+    })
+}
+
+/// The exponent a run of superscripts denotes (`²` is 2, `⁻¹` is -1): an optional sign, then
+/// digits.
+fn superscript_exponent(text: &str, pos: usize) -> Result<Expr, ExprError> {
+    let mut digits = String::new();
+    let mut negative = false;
+    for (i, c) in text.char_indices() {
+        match superscript_value(c) {
+            Some(d @ 0..=9) => digits.push(char::from(b'0' + d as u8)),
+            Some(sign) if i == 0 && digits.is_empty() => negative = sign == -1,
+            _ => {
+                return Err(ExprError::Unexpected {
+                    pos: pos + i,
+                    found: format!("the superscript {text}"),
+                    expected: "a superscript exponent: digits after an optional sign (x², x⁻¹)",
+                })
+            }
+        }
+    }
+    if digits.is_empty() {
+        return Err(ExprError::Unexpected {
+            pos,
+            found: format!("the superscript {text}"),
+            expected: "a superscript exponent: digits after an optional sign (x², x⁻¹)",
+        });
+    }
+    let n = Expr {
+        kind: ExprKind::Number(number_value(&digits, pos)?),
+        pos,
+    };
+    Ok(if negative {
+        Expr {
+            kind: ExprKind::Neg(Box::new(n)),
+            pos,
+        }
+    } else {
+        n
+    })
 }
 
 /// The exact value of a number token (`12`, `0.25`, `2.5e-3`), within the `digits` limit (the

@@ -443,3 +443,35 @@ fn half_integer_exponents_are_powers_of_the_square_root() {
     assert_eq!(parse_expr("x^(4/2)").unwrap().to_string(), "x^(4/2)");
     assert!(parse_expr("x^y").unwrap().to_string().contains('^'));
 }
+
+#[test]
+fn typeset_notation_reads_as_the_ascii_it_stands_for() {
+    for (typeset, ascii) in [
+        ("x²", "x^2"),
+        ("(1 + t²)⁻¹", "(1 + t^2)^-1"),
+        ("x¹⁰", "x^10"),
+        ("a·b − c", "a*b - c"),
+        ("a ⋅ b × c ∗ d", "a*b*c*d"),
+        ("a ÷ b ∕ c", "a/b/c"),
+        ("2πr", "2*pi*r"),
+        ("π/4", "pi/4"),
+        ("√2", "sqrt(2)"),
+        ("√2 x", "sqrt(2)*x"),
+        ("√(x² + y²)", "sqrt(x^2 + y^2)"),
+        ("√(x + 1)²", "sqrt(x + 1)^2"),
+        ("3√x", "3*sqrt(x)"),
+        ("60°", "60*pi/180"),
+    ] {
+        let parsed = parse_expr(typeset).unwrap_or_else(|e| panic!("{typeset}: {e}"));
+        let expected = parse_expr(ascii).unwrap();
+        assert_eq!(parsed.to_string(), expected.to_string(), "{typeset}");
+    }
+    // `√x²` means `√(x²)` or `(√x)²` depending on the typesetting: refused, naming both.
+    for ambiguous in ["√x²", "√x^2", "√2³"] {
+        let e = parse_expr(ambiguous).unwrap_err().to_string();
+        assert!(e.contains("√(x²) or (√x)²"), "{ambiguous}: {e}");
+    }
+    for bad in ["x⁻", "x²⁻¹", "√", "x ⁺"] {
+        assert!(parse_expr(bad).is_err(), "{bad}");
+    }
+}
