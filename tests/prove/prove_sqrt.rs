@@ -265,3 +265,41 @@ fn hypotheses_as_a_paper_lists_them() {
     assert_eq!(code, 2, "{out}{err}");
     assert_eq!(err.lines().count(), 1, "{err}");
 }
+
+#[test]
+fn the_sign_of_a_polynomial_in_one_variable_is_decided_on_its_interval() {
+    // `sqrt(S^2) = S` needs `S >= 0` where the variable lies: decided exactly from the real roots
+    // of `S` (the coefficient test cannot show `t (1 - t) >= 0` on [0, 1]).
+    for (l, r, w) in [
+        ("sqrt(t^2*(1-t)^2)", "t*(1-t)", "0 <= t <= 1"),
+        ("sqrt((1-t^2)^2)", "1 - t^2", "-1 <= t <= 1"),
+        ("sqrt((t^2 - 2)^2)", "2 - t^2", "-1 < t < 1"),
+    ] {
+        let (code, j) = prove_json(&[l, r, "--where", w]);
+        assert_eq!(
+            (code, j["verdict"].as_str()),
+            (0, Some("proved")),
+            "{l} = {r}, {w}: {j}"
+        );
+    }
+    // Past the interval where the sign holds, an exact counter-example.
+    for (l, r, w) in [
+        ("sqrt(t^2*(1-t)^2)", "t*(1-t)", "0 <= t <= 2"),
+        ("sqrt((t^2 - 2)^2)", "2 - t^2", "-1 < t < 2"),
+    ] {
+        let (code, j) = prove_json(&[l, r, "--where", w]);
+        assert_eq!(
+            (code, j["verdict"].as_str()),
+            (1, Some("fails")),
+            "{l} = {r}, {w}: {j}"
+        );
+    }
+    // A radicand positive on the whole line is defined everywhere, though some coefficients
+    // are negative.
+    let (code, out, _) = run(&["prove", "sqrt(x^2 - 2*x + 2)^2", "x^2 - 2*x + 2"]);
+    assert_eq!(code, 0, "{out}");
+    assert!(
+        out.contains("the square roots are defined everywhere"),
+        "{out}"
+    );
+}

@@ -292,11 +292,82 @@ fn split<C: PointField>(p: &Poly<C>, root: &Root<C>) -> Option<(Poly<C>, Poly<C>
     Some((a, b))
 }
 
-/// The sufficient test of the module documentation for `p >= 0` on `signs`.
+/// The sufficient test of the module documentation for `p >= 0` on `signs`, and for a
+/// polynomial in one variable with rational coefficients the exact one
+/// ([`univariate_non_negative`]).
 pub(super) fn non_negative<C: PointField>(p: &Poly<C>, signs: &[VarDomain]) -> bool {
     if p.is_zero() {
         return true;
     }
+    if shifted_coefficients_non_negative(p, signs) {
+        return true;
+    }
+    univariate_non_negative(p, signs)
+}
+
+/// Whether `p`, a polynomial in one variable `v` with rational coefficients, is `>= 0` on the
+/// domain of `v` (the whole line without one): exactly when no gap of its sign chart (the open
+/// intervals between consecutive real roots, where the sign is constant) on which `p` is
+/// negative meets the domain. The roots are isolated exactly and compared with the domain's
+/// rational ends exactly, so `t (1 - t) >= 0` on `0 <= t <= 1` and `1 - t^4 >= 0` on
+/// `-1 <= t <= 1` are shown, which the coefficient test cannot. `false` for anything else (not
+/// shown, not disproved).
+fn univariate_non_negative<C: PointField>(p: &Poly<C>, signs: &[VarDomain]) -> bool {
+    use crate::univariate::{compare_with_real_root, UPoly};
+    use exactcheck_core::Sign;
+    use std::cmp::Ordering;
+    let vars = p.variables();
+    let [v] = vars.as_slice() else {
+        return false;
+    };
+    let Some(q) = p
+        .coefficients()
+        .iter()
+        .all(|c| c.to_radical().and_then(|r| r.to_rational()).is_some())
+        .then(|| {
+            p.map_coeffs(|c| {
+                c.to_radical()
+                    .and_then(|r| r.to_rational())
+                    .expect("checked to be rational above")
+            })
+        })
+    else {
+        return false;
+    };
+    let Ok(u) = UPoly::from_poly(&q, *v) else {
+        return false;
+    };
+    let domain = signs.get(*v as usize).cloned().unwrap_or_default();
+    let (lower, upper) = (domain.lower.map(|(a, _)| a), domain.upper.map(|(b, _)| b));
+    let point = matches!((&lower, &upper), (Some(a), Some(b)) if a == b);
+    let chart = u.sign_chart();
+    chart.gaps.iter().enumerate().all(|(i, sign)| {
+        if *sign != Sign::Negative {
+            return true;
+        }
+        // The gap (left, right): below the root `i` and above the root `i - 1`.
+        let left = i.checked_sub(1).map(|k| &chart.roots[k].interval);
+        let right = chart.roots.get(i).map(|r| &r.interval);
+        // x above the gap's left end / below its right end.
+        let above_left = |x: &Rational| {
+            left.is_none_or(|r| compare_with_real_root(&u, r, x) == Ordering::Greater)
+        };
+        let below_right =
+            |x: &Rational| right.is_none_or(|r| compare_with_real_root(&u, r, x) == Ordering::Less);
+        let meets = if point {
+            let a = lower.as_ref().expect("a point domain has a lower end");
+            above_left(a) && below_right(a)
+        } else {
+            // An open gap meets an interval of positive length exactly when it starts below
+            // the interval's upper end and ends above its lower end.
+            upper.as_ref().is_none_or(above_left) && lower.as_ref().is_none_or(below_right)
+        };
+        !meets
+    })
+}
+
+/// The coefficient test of the module documentation for `p >= 0` on `signs`.
+fn shifted_coefficients_non_negative<C: PointField>(p: &Poly<C>, signs: &[VarDomain]) -> bool {
     let Some(mut q) = p
         .coefficients()
         .iter()
