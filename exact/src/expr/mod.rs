@@ -44,9 +44,10 @@
 //! * **Juxtaposition multiplies**, binding like `*`: `2x`, `2 sqrt(2)`, `x y`, `(a+b)(a-b)`,
 //!   `c^2 x^3`. A juxtaposed factor takes no sign of its own (`x -y` is a difference) and may not
 //!   start with a number (`2 3` and `x 2` are errors: write `*`).
-//! * **Functions**: `sqrt`, `diff`, `integrate`, `sum`, `binomial`, `factorial` ([`FUNCTIONS`]). A name followed by `(` is a function
-//!   call, so `sin(x)` is the error `unknown function 'sin'` rather than the product `sin*(x)`;
-//!   write the `*` for a product (`x*(y+1)`). `diff(E, t)` is the exact derivative of `E` in the
+//! * **Functions**: `sqrt`, `diff`, `integrate`, `sum`, `binomial`, `factorial` ([`FUNCTIONS`]). A name followed directly by `(` is a function
+//!   call, so `sn(x)` is the error `unknown function 'sn'` rather than the product `sn*(x)`;
+//!   write the `*` for a product (`x*(y+1)`), or a space as printed: `t (1 - t)` is a product
+//!   unless the name is a function (`sqrt (x)` is still `sqrt(x)`). `diff(E, t)` is the exact derivative of `E` in the
 //!   variable `t` (the second argument must be a variable name), `diff(E, t, k)` the `k`-th, `k`
 //!   a non-negative integer constant within the `diff-order` limit ([`limits::DIFF_ORDER`]); of a
 //!   fraction by the quotient rule ([`crate::ratfun::RatFun::derivative`]).

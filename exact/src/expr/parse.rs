@@ -11,6 +11,15 @@ use std::str::FromStr;
 /// [`parse_expr_with_calls`]): a vector, or a matrix when the items are rows.
 pub const LIST: &str = "[]";
 
+/// Names of mathematical functions that the exact grammar does not have: `exp (x)` stays the
+/// error "unknown function" with a space too, never the product of a variable `exp` and `x`.
+const FUNCTION_LIKE_NAMES: &[&str] = &[
+    "abs", "acos", "acosh", "arccos", "arcosh", "arcsin", "arctan", "arsinh", "artanh", "asin",
+    "asinh", "atan", "atan2", "atanh", "cbrt", "ceil", "cosh", "cot", "csc", "erf", "erfc", "exp",
+    "exp2", "expm1", "floor", "gamma", "hypot", "lg", "ln", "log", "log10", "log1p", "log2", "max",
+    "min", "mod", "pow", "sec", "sgn", "sign", "sinh", "tanh",
+];
+
 // ------------------------------------------------------------------------------ lexer
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -397,10 +406,13 @@ impl<'a> Parser<'a> {
                 // factor (`t^i (1-t)^(3-i)`), also with calls.
                 let known = FUNCTIONS.contains(&name)
                     || (self.calls && super::library::function_names().contains(&name));
+                // `t (1 - t)`, with white space before the `(`, is a product as printed, unless
+                // the name is a built-in or library function; `f(x)` is a call.
+                let spaced = self.cur.start > t.end && !FUNCTION_LIKE_NAMES.contains(&name);
                 let call_here = if expected == EXPECT_EXPONENT {
                     known
                 } else {
-                    self.calls || known
+                    (self.calls && !spaced) || known
                 };
                 if self.cur.tok == Tok::LParen && call_here {
                     let args = self.parse_arguments()?;
@@ -411,7 +423,7 @@ impl<'a> Parser<'a> {
                 }
                 // In an exponent, a name that is not a function is the exponent, and a `(`
                 // after it starts the next juxtaposed factor: `t^i (1-t)^(3-i)`.
-                if self.cur.tok == Tok::LParen && expected != EXPECT_EXPONENT {
+                if self.cur.tok == Tok::LParen && expected != EXPECT_EXPONENT && !spaced {
                     return Err(ExprError::UnknownFunction {
                         pos: t.start,
                         name: self.text(t).to_string(),

@@ -199,9 +199,17 @@ fn unknown_functions_are_errors() {
         "unknown function 'exp' at 2: the functions are sqrt, diff, integrate, sum, \
          binomial, factorial, sin, cos, tan (write 'exp*(...)' for a product)"
     );
-    assert!(err("x (y+1)").starts_with("unknown function 'x' at 0"));
+    assert!(err("x(y+1)").starts_with("unknown function 'x' at 0"));
     let mut v = Vars::new();
     assert_eq!(poly("x*(y+1)", &mut v), poly("x y + x", &mut v));
+    // With a space, as printed, a name before `(` multiplies, unless it names a function.
+    assert_eq!(poly("x (y+1)", &mut v), poly("x y + x", &mut v));
+    assert_eq!(
+        poly("t (1 - t) + 2 t^2 (1-t)", &mut v),
+        poly("t - t^2 + 2 t^2 - 2 t^3", &mut v)
+    );
+    assert!(err("exp (x)").starts_with("unknown function 'exp' at 0"));
+    assert!(err("2 log (x)").starts_with("unknown function 'log' at 2"));
 }
 
 #[test]
