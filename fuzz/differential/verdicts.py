@@ -1098,7 +1098,8 @@ def main():
     ap.add_argument("--timeout", type=int, default=20, help="seconds per exactcheck run")
     ap.add_argument("--sympy-seconds", type=int, default=15, help="seconds SymPy may spend on one case")
     ap.add_argument("--no-random", action="store_true", help="skip the --random runs")
-    ap.add_argument("--out", default="differential-findings.jsonl", help="findings, one JSON object a line")
+    ap.add_argument("--out", default=os.path.join(os.path.dirname(__file__), "..", "..", "target", "differential-findings.jsonl"),
+                    help="findings, one JSON object a line, appended (default target/differential-findings.jsonl)")
     ap.add_argument("--verbose", action="store_true", help="print every case")
     opts = ap.parse_args()
     signal.signal(signal.SIGALRM, _alarm)

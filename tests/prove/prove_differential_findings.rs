@@ -2,30 +2,15 @@
 //! true by construction or perturbed, against their values at 50 digits) found wrong or
 //! incomplete, each pinned with what the identity really is.
 
+use crate::prove_trig::{fails, proved};
 use crate::timed;
 
 use timed::{prove_json, run_text as run};
 
-/// `prove LHS RHS` fails, with the text of the verdict.
-fn fails(lhs: &str, rhs: &str) -> String {
-    let (code, out, err) = run(&["prove", lhs, rhs]);
-    assert_eq!(code, 1, "{lhs} = {rhs}: {out}{err}");
-    assert!(out.starts_with("fails: "), "{lhs} = {rhs}: {out}");
-    out
-}
-
-/// `prove LHS RHS` is proved.
-fn proved(lhs: &str, rhs: &str) {
-    let (code, out, err) = run(&["prove", lhs, rhs]);
-    assert_eq!(code, 0, "{lhs} = {rhs}: {out}{err}");
-    assert!(out.starts_with("proved: "), "{lhs} = {rhs}: {out}");
-}
-
 /// Pi next to a constant outside the square-root field (`sin(pi/7)`, a root of a sextic): the
 /// difference is a non-zero polynomial in pi with coefficients in the constants' field, so it is
-/// not zero (pi is transcendental over the algebraic numbers), as with `sqrt(2)` (square-root
-/// field), where it already failed. Before, no rational value could be given to pi and the
-/// verdict was `undecided`, with a reason naming an internal variable number.
+/// not zero (pi is transcendental over the algebraic numbers), as with `sqrt(2)` in the
+/// square-root field: `fails`, with pi kept as pi in the value and no rational value given to it.
 #[test]
 fn pi_next_to_an_algebraic_constant_fails_as_a_polynomial_in_pi() {
     let out = fails("pi + sin(pi/7)", "0");
@@ -86,8 +71,8 @@ fn pi_next_to_an_algebraic_constant_in_json() {
 }
 
 /// A constant identity with pi outside an angle next to a constant outside the square-root
-/// field was refused when the constant came first (`sqrt(2 + sqrt(2))*pi`: the real algebraic
-/// numbers have no pi), and decided when pi came first: pi is now an indeterminate in both.
+/// field is decided whichever comes first (`sqrt(2 + sqrt(2))*pi`, `pi*sqrt(2 + sqrt(2))`): pi is
+/// an indeterminate next to the constants' field, as the real algebraic numbers have no pi.
 #[test]
 fn pi_outside_an_angle_is_decided_in_either_order() {
     proved("sqrt(2 + sqrt(2))*pi", "pi*sqrt(2 + sqrt(2))");
@@ -108,4 +93,74 @@ fn pi_outside_an_angle_is_decided_in_either_order() {
     let (code, out, _) = run(&["prove", "sqrt(2 + sqrt(2))^2", "2 + sqrt(2)"]);
     assert_eq!(code, 0, "{out}");
     assert!(out.contains("LHS - RHS = 0 exactly"), "{out}");
+}
+
+/// Claims files decide the same statements by the same path: the value in pi is the evidence
+/// and the correction; the erratum has no residual line that would only repeat the difference.
+#[test]
+fn claims_files_take_pi_next_to_an_algebraic_constant() {
+    let path =
+        std::env::temp_dir().join(format!("exactcheck-pi-field-{}.toml", std::process::id()));
+    std::fs::write(
+        &path,
+        r#"
+[[claim]]
+id = "sum"
+kind = "identity"
+lhs = "pi + sin(pi/7)"
+rhs = "0"
+expect = "fails"
+
+[[claim]]
+id = "scaled"
+kind = "identity"
+lhs = "x*pi + cos(pi/7)*pi"
+rhs = "x*pi"
+expect = "fails"
+
+[[claim]]
+id = "commuted"
+kind = "identity"
+lhs = "sqrt(2 + sqrt(2))*pi"
+rhs = "pi*sqrt(2 + sqrt(2))"
+"#,
+    )
+    .unwrap();
+    let rows = crate::common::verify_json(path.to_str().unwrap(), 0);
+    std::fs::remove_file(&path).ok();
+    let sum = rows.row("sum");
+    assert_eq!(sum["verdict"], "fails", "{sum}");
+    assert_eq!(sum["value"], "c + pi", "{sum}");
+    assert_eq!(
+        sum["erratum"]["correction"], "LHS - RHS = c + pi at the counter-example",
+        "{sum}"
+    );
+    assert!(
+        sum["erratum"]["residual"]
+            .as_array()
+            .is_none_or(Vec::is_empty),
+        "{sum}"
+    );
+    let scaled = rows.row("scaled");
+    assert_eq!(scaled["verdict"], "fails", "{scaled}");
+    assert_eq!(scaled["value"], "pi*c", "{scaled}");
+    assert_eq!(scaled["point"]["x"], "0", "{scaled}");
+    assert_eq!(rows.row("commuted")["verdict"], "proved");
+}
+
+/// An angle with a sum's index and a multiple of pi outside the square-root field
+/// (`sin(k*x + pi/5)`, as a Fourier sum is written) is split by the addition formula before the
+/// sum is unrolled, so its constants join the field like those of `sin(x + pi/5)`.
+#[test]
+fn angles_with_a_sum_index_take_any_multiple_of_pi() {
+    proved(
+        "sum(k, 1, 2, sin(k*x + pi/10))",
+        "sin(x + pi/10) + sin(2*x + pi/10)",
+    );
+    proved(
+        "sum(k, 1, 3, cos(k*x - 2*pi/7))",
+        "cos(x - 2*pi/7) + cos(2*x - 2*pi/7) + cos(3*x - 2*pi/7)",
+    );
+    let out = fails("sum(k, 1, 2, sin(k*x + pi/5))", "sin(x + pi/5) + sin(2*x)");
+    assert!(out.contains("x = angle with cos x = "), "{out}");
 }

@@ -293,20 +293,24 @@ fn identity<C: PointField + Display>(
                     rhs: value,
                 });
             }
-            // The value as a formula: its radical form, else (a `Root`) the difference at the
-            // point when every coordinate is a plain variable.
-            let number = match &p.value {
-                ConstantValue::Number(a) => value_expr(a),
-                ConstantValue::InPi { .. } => Err(Fault::Internal(
-                    "a value in pi and the field's generator is not a formula".into(),
-                )),
+            // The value as a formula: its radical form, else (a `Root`, or a value in pi) the
+            // difference at the point when every coordinate is a plain variable and there is
+            // one (without coordinates it would only repeat the difference).
+            let (number, in_pi) = match &p.value {
+                ConstantValue::Number(a) => (value_expr(a), false),
+                ConstantValue::InPi { .. } => (
+                    Err(Fault::Internal(
+                        "a value in pi and the field's generator is not a formula".into(),
+                    )),
+                    true,
+                ),
             };
             let residual = match number {
                 Ok(v) => vec![Equation {
                     lhs: difference(&lhs[*coordinate], &rhs[*coordinate]),
                     rhs: v,
                 }],
-                Err(_) if plain => vec![Equation {
+                Err(_) if plain && !(in_pi && counter_example.is_empty()) => vec![Equation {
                     lhs: difference(&lhs[*coordinate], &rhs[*coordinate]),
                     rhs: residual_at,
                 }],
