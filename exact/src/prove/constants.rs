@@ -74,6 +74,9 @@ pub enum ConstantValue {
     },
 }
 
+/// Terms of a polynomial as their exponents and coefficients.
+type TermList = Vec<(Vec<(Var, u32)>, Rational)>;
+
 /// The most points [`AlgebraicConstants::counter_example`] tries.
 pub const CONSTANT_ATTEMPTS: usize = 300;
 
@@ -307,8 +310,7 @@ impl AlgebraicConstants {
             q = q.substitute(*v, &Poly::constant(x.clone()));
         }
         let degree = pi.map_or(0, |pi| q.degree_in(pi));
-        let mut by_power: Vec<Vec<(Vec<(Var, u32)>, Rational)>> =
-            vec![Vec::new(); degree as usize + 1];
+        let mut by_power: Vec<TermList> = vec![Vec::new(); degree as usize + 1];
         for (m, coefficient) in q.terms() {
             let k = pi.map_or(0, |pi| m.exponent(pi));
             let rest: Vec<(Var, u32)> = m
@@ -341,7 +343,7 @@ impl AlgebraicConstants {
                 Some(pi) if k > 0 => Poly::monomial(Rational::ONE, &[(pi, k as u32)]),
                 _ => Poly::constant(Rational::ONE),
             };
-            total = total + u.to_poly(c) * power;
+            total += u.to_poly(c) * power;
         }
         total
     }
