@@ -27,9 +27,10 @@ use exactcheck_exact::expr::describe_point;
 use exactcheck_exact::expr::library::Shape;
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
-    factored, real_zero_free, where_clause, AlgebraicConstants, ConstantPoint, CoordinateOutcome,
-    CorrectionVerdict, DecideError, EngineError, FractionIdentity, IdentityReport, IdentitySpec,
-    IdentityVerdict, PointField, RadicalPoint, SquareRoot, Statement, UsedHypothesis,
+    factored, real_zero_free, where_clause, AlgebraicConstants, ConstantPoint, ConstantValue,
+    CoordinateOutcome, CorrectionVerdict, DecideError, EngineError, FractionIdentity,
+    IdentityReport, IdentitySpec, IdentityVerdict, PointField, RadicalPoint, SquareRoot, Statement,
+    UsedHypothesis,
 };
 use serde_json::{json, Value};
 use std::fmt::{self, Display};
@@ -400,10 +401,11 @@ impl<'a> Phrasing<'a> {
                     format!("at {}{rel}: ", at.join(", "))
                 };
                 format!(
-                    "{}{at}{} = {}; {}{} reduces{modulo} to {}, not zero",
+                    "{}{at}{} = {}{}; {}{} reduces{modulo} to {}, not zero",
                     self.place(*k, n),
                     self.subject(*k),
                     shown_value(constants, p, self.vars),
+                    why_not_zero(p),
                     self.subject(*k),
                     cleared(*k),
                     abbreviate(factored(normal_form, self.vars)),
@@ -737,12 +739,42 @@ impl<'a> Phrasing<'a> {
     }
 }
 
-/// The exact value of `LHS - RHS` at a counter-example, a `Root(...)` written in a variable of
-/// none of the statement's names (`x` when it has none but `c`).
+/// The exact value of `LHS - RHS` at a counter-example: a number, a `Root(...)` written in a
+/// variable of none of the statement's names (`x` when it has none but `c`), or a polynomial in
+/// pi and `c` (a fraction of two when pi divides).
 pub fn shown_value(k: &AlgebraicConstants, p: &ConstantPoint, vars: &Vars) -> String {
-    let names: Vec<&String> = vars.names().iter().filter(|n| **n != k.name).collect();
-    p.value
-        .display_in(&exactcheck_exact::algebraic::root_variable(&names))
+    match &p.value {
+        ConstantValue::Number(a) => {
+            let names: Vec<&String> = vars.names().iter().filter(|n| **n != k.name).collect();
+            a.display_in(&exactcheck_exact::algebraic::root_variable(&names))
+        }
+        ConstantValue::InPi {
+            numerator,
+            denominator,
+        } if exactcheck_core::Ring::is_one(denominator) => numerator.display(vars).to_string(),
+        ConstantValue::InPi {
+            numerator,
+            denominator,
+        } => format!(
+            "({})/({})",
+            numerator.display(vars),
+            denominator.display(vars)
+        ),
+    }
+}
+
+/// `, a non-zero polynomial in pi, ...` after a value in pi at a counter-example (why it is not
+/// zero: pi is transcendental over the algebraic numbers), nothing after a number.
+fn why_not_zero(p: &ConstantPoint) -> &'static str {
+    match &p.value {
+        ConstantValue::Number(_) => "",
+        ConstantValue::InPi { denominator, .. } if exactcheck_core::Ring::is_one(denominator) => {
+            ", a non-zero polynomial in pi with coefficients in the field of the constants, and pi is transcendental, so it is not zero"
+        }
+        ConstantValue::InPi { .. } => {
+            ", a quotient of non-zero polynomials in pi with coefficients in the field of the constants, and pi is transcendental, so it is not zero"
+        }
+    }
 }
 
 /// The point of a counter-example by name (`c` is the constant, not a coordinate).

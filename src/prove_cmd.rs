@@ -440,13 +440,19 @@ fn prove_algebraic_constants(
     if !names.is_empty() || !(refused(lhs) || rhs.is_some_and(refused)) {
         return Ok(None);
     }
-    let eval = |e: &Expr, what: &str| {
-        e.eval_constant::<Algebraic>()
-            .map_err(|err| Error::Input(format!("{what}: {err}")))
+    // Pi outside an angle has no algebraic value: such a side (`pi*sqrt(2 + sqrt(2))`) is a
+    // polynomial in pi, decided with pi an indeterminate next to the constants' field.
+    let eval = |e: &Expr, what: &str| match e.eval_constant::<Algebraic>() {
+        Err(ExprError::NotConstant { name, .. }) if name == PI => Ok(None),
+        Err(err) => Err(Error::Input(format!("{what}: {err}"))),
+        Ok(v) => Ok(Some(v)),
     };
-    let l = eval(lhs, "LHS")?;
-    let r = match rhs {
-        Some(e) => eval(e, "RHS")?,
+    let Some(l) = eval(lhs, "LHS")? else {
+        return Ok(None);
+    };
+    let r = match rhs.map(|e| eval(e, "RHS")).transpose()? {
+        Some(Some(v)) => v,
+        Some(None) => return Ok(None),
         None => Algebraic::zero(),
     };
     let difference = l.clone() - r.clone();

@@ -172,8 +172,7 @@ pub(crate) fn settle<C: PointField>(
     pi: Option<Var>,
     mixed: &[String],
 ) -> Option<ConstantPoint> {
-    let excluded: Vec<Var> = pi.into_iter().collect();
-    let found = search(k, spec, report, &excluded, mixed);
+    let found = search(k, spec, report, pi, mixed);
     let IdentityVerdict::Undecided {
         searched,
         coordinate,
@@ -215,7 +214,7 @@ pub fn search<C: PointField>(
     k: &AlgebraicConstants,
     spec: &IdentitySpec<C>,
     report: &IdentityReport<C>,
-    excluded: &[Var],
+    pi: Option<Var>,
     mixed: &[String],
 ) -> Result<ConstantPoint, String> {
     if !mixed.is_empty() {
@@ -256,5 +255,5 @@ pub fn search<C: PointField>(
         .map(rational)
         .collect::<Option<Vec<_>>>()
         .ok_or_else(unsupported)?;
-    k.counter_example(c, &l, &r, &relations, &conditions, &spec.domains, excluded)
+    k.counter_example(c, &l, &r, &relations, &conditions, &spec.domains, pi)
 }

@@ -9,6 +9,7 @@ mod common;
 mod timed;
 
 mod prove_calculus_roots;
+mod prove_differential_findings;
 mod prove_fractions;
 mod prove_library;
 mod prove_random;

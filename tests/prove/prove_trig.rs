@@ -7,14 +7,15 @@ use crate::timed;
 
 use timed::{prove_json, run_text as run};
 
-/// `prove ARGS --json` as a JSON object, with its exit status.
-fn proved(lhs: &str, rhs: &str) {
+/// `prove LHS RHS` is proved.
+pub(crate) fn proved(lhs: &str, rhs: &str) {
     let (code, out, err) = run(&["prove", lhs, rhs]);
     assert_eq!(code, 0, "{lhs} = {rhs}: {out}{err}");
     assert!(out.starts_with("proved: "), "{lhs} = {rhs}: {out}");
 }
 
-fn fails(lhs: &str, rhs: &str) -> String {
+/// `prove LHS RHS` fails, with the text of the verdict.
+pub(crate) fn fails(lhs: &str, rhs: &str) -> String {
     let (code, out, err) = run(&["prove", lhs, rhs]);
     assert_eq!(code, 1, "{lhs} = {rhs}: {out}{err}");
     assert!(out.starts_with("fails: "), "{lhs} = {rhs}: {out}");

@@ -52,16 +52,56 @@ fn is_leaf(e: &Expr) -> bool {
     shape && only_pi(e)
 }
 
+/// An angle that is not yet an integer combination of variables, as `k*x + pi/5` in a sum over
+/// `k` before the sum is unrolled: its terms with variables and its constant terms with pi, as
+/// texts; `None` unless it is a sum with both.
+fn split_terms(args: &[Expr]) -> Option<(String, String)> {
+    let [arg] = args else { return None };
+    let ExprKind::Sum(terms) = &arg.kind else {
+        return None;
+    };
+    let (constant, varying): (Vec<_>, Vec<_>) =
+        terms.iter().cloned().partition(|(_, t)| only_pi(t));
+    let sum = |terms: Vec<(AddOp, Expr)>| Expr::new(ExprKind::Sum(terms)).to_string();
+    let mut names = Vec::new();
+    constant
+        .iter()
+        .for_each(|(_, t)| t.collect_variables(&mut names));
+    if varying.is_empty() || names.is_empty() {
+        return None;
+    }
+    Some((sum(varying), sum(constant)))
+}
+
 /// The trigonometric call `e` (`which` of `args`) with an angle `A + r pi`, `A` with variables
 /// and `r != 0`, split by the addition formulas; `None` when the angle has no such two parts
 /// (or is malformed: the conversion reports that).
 fn split_angle(e: &Expr, which: Trig, args: &[Expr]) -> Option<Expr> {
-    let angle = linear_angle(e, which.name(), args).ok()?;
-    if angle.terms.is_empty() || angle.pi.is_zero() {
-        return None;
-    }
+    let (a, r) = match linear_angle(e, which.name(), args) {
+        Ok(angle) if angle.terms.is_empty() || angle.pi.is_zero() => return None,
+        Ok(angle) => (
+            linear_text(&angle.terms),
+            super::trig::angle_text(&angle.pi),
+        ),
+        Err(_) => split_terms(args)?,
+    };
+    let (sa, ca) = (format!("sin({a})"), format!("cos({a})"));
+    let (sr, cr) = (format!("sin({r})"), format!("cos({r})"));
+    let sin = format!("{sa}*{cr} + {ca}*{sr}");
+    let cos = format!("{ca}*{cr} - {sa}*{sr}");
+    let text = match which {
+        Trig::Sin => sin,
+        Trig::Cos => cos,
+        Trig::Tan => format!("({sin})/({cos})"),
+    };
+    let parsed = parse_expr(&text).ok()?;
+    Some(at_pos(&parsed, e.pos))
+}
+
+/// An integer combination of variables as text (`2*x - y`).
+fn linear_text(terms: &[(String, i64)]) -> String {
     let mut a = String::new();
-    for (i, (x, k)) in angle.terms.iter().enumerate() {
+    for (i, (x, k)) in terms.iter().enumerate() {
         let sign = match (i, *k < 0) {
             (0, false) => "",
             (0, true) => "-",
@@ -74,18 +114,7 @@ fn split_angle(e: &Expr, which: Trig, args: &[Expr]) -> Option<Expr> {
         };
         a += &format!("{sign}{times}{x}");
     }
-    let r = super::trig::angle_text(&angle.pi);
-    let (sa, ca) = (format!("sin({a})"), format!("cos({a})"));
-    let (sr, cr) = (format!("sin({r})"), format!("cos({r})"));
-    let sin = format!("{sa}*{cr} + {ca}*{sr}");
-    let cos = format!("{ca}*{cr} - {sa}*{sr}");
-    let text = match which {
-        Trig::Sin => sin,
-        Trig::Cos => cos,
-        Trig::Tan => format!("({sin})/({cos})"),
-    };
-    let parsed = parse_expr(&text).expect("the split angle is well formed");
-    Some(at_pos(&parsed, e.pos))
+    a
 }
 
 /// Rebuilds `e` top-down: `leaf` may replace a leaf candidate (`Some`), angles with variables
@@ -252,6 +281,22 @@ mod tests {
         let (e, l) = rewrite("sqrt(2 + sqrt(2))*x + sin(2*x - y)");
         assert_eq!(l, ["sqrt(2 + sqrt(2))"]);
         assert_eq!(e, "#0*x + sin(2*x - y)");
+    }
+
+    #[test]
+    fn angles_with_a_sum_index_are_split_before_the_sum_is_unrolled() {
+        let (e, l) = rewrite("sum(k, 1, 2, sin(k*x + pi/5))");
+        assert_eq!(e, "sum(k, 1, 2, sin(k*x)*#0 + cos(k*x)*#1)");
+        assert_eq!(l, ["cos(pi/5)", "sin(pi/5)"]);
+        let (e, _) = rewrite("sum(k, 1, 2, cos(-k*x - 2*pi/7 + y))");
+        assert_eq!(e, "sum(k, 1, 2, cos(-k*x + y)*#0 - sin(-k*x + y)*#1)");
+        // Without pi in the constant terms there is nothing to split.
+        let (e, l) = rewrite("sum(k, 1, 2, sin(k*x + 1))");
+        assert_eq!(e, "sum(k, 1, 2, sin(k*x + 1))");
+        assert!(l.is_empty());
+        assert!(needs_algebraic::<Radical>(
+            &parse_expr("sum(k, 1, 3, tan(k*x + pi/10))").unwrap()
+        ));
     }
 
     #[test]

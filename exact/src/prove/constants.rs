@@ -50,11 +50,32 @@ pub struct AlgebraicConstants {
 /// A counter-example in rational values of the variables, with `c = theta`.
 #[derive(Clone, Debug)]
 pub struct ConstantPoint {
-    /// The value of every variable of the statement but `c`.
+    /// The value of every variable of the statement but `c` and pi.
     pub values: Vec<(Var, Rational)>,
     /// `LHS - RHS` there, exactly (not zero).
-    pub value: Algebraic,
+    pub value: ConstantValue,
 }
+
+/// The value of `LHS - RHS` at a [`ConstantPoint`].
+#[derive(Clone, Debug, PartialEq)]
+pub enum ConstantValue {
+    /// A non-zero element of `Q(theta)`.
+    Number(Algebraic),
+    /// With pi in the statement: `numerator / denominator`, polynomials in pi and `c` whose
+    /// coefficients (polynomials in `c`) are reduced modulo the minimal polynomial of `theta`,
+    /// the numerator of positive degree in pi or the denominator not constant. Pi is
+    /// transcendental over the algebraic numbers, so a polynomial in pi with coefficients in
+    /// `Q(theta)` is zero at pi only when every coefficient is: the value is not zero.
+    InPi {
+        /// Not zero.
+        numerator: Poly<Rational>,
+        /// Not zero; 1 when free of pi (its inverse in `Q(theta)` is in the numerator).
+        denominator: Poly<Rational>,
+    },
+}
+
+/// Terms of a polynomial as their exponents and coefficients.
+type TermList = Vec<(Vec<(Var, u32)>, Rational)>;
 
 /// The most points [`AlgebraicConstants::counter_example`] tries.
 pub const CONSTANT_ATTEMPTS: usize = 300;
@@ -174,8 +195,10 @@ impl AlgebraicConstants {
     /// values of the other variables (small heights first, inside `domains`; an angle's cosine
     /// and sine at a rational point of its unit circle), where no condition vanishes and
     /// `LHS - RHS` is a non-zero element of `Q(theta)`. `relations` are those besides `m(c)`;
-    /// only unit circles are supported, and `excluded` variables (pi, an indeterminate with no
-    /// rational value) may not occur.
+    /// only unit circles are supported. The variable `pi` (when the statement has pi) gets no
+    /// value: `LHS - RHS` is then a polynomial in pi with coefficients in `Q(theta)`, and it is
+    /// not zero at pi exactly when one of its coefficients is not zero (pi is transcendental);
+    /// a condition vanishes there only when all of its coefficients do.
     ///
     /// # Errors
     /// Why no point was found, in words.
@@ -188,7 +211,7 @@ impl AlgebraicConstants {
         relations: &[Poly<Rational>],
         conditions: &[Poly<Rational>],
         domains: &[(Var, VarDomain)],
-        excluded: &[Var],
+        pi: Option<Var>,
     ) -> Result<ConstantPoint, String> {
         let (pairs, others) = unit_circle_pairs(relations);
         if !others.is_empty() {
@@ -209,17 +232,12 @@ impl AlgebraicConstants {
         let mut vars: Vec<Var> = Vec::new();
         for p in &polys {
             for v in p.variables() {
-                if v != c && !vars.contains(&v) {
+                if v != c && Some(v) != pi && !vars.contains(&v) {
                     vars.push(v);
                 }
             }
         }
         vars.sort_unstable();
-        if let Some(v) = vars.iter().find(|v| excluded.contains(v)) {
-            return Err(format!(
-                "variable #{v} has no rational value to give it (pi is transcendental)"
-            ));
-        }
         let heights = small_height_rationals(12);
         // Each slot: a free variable (its values) or a circle (values of tau).
         let in_circle = |v: Var| pairs.iter().any(|&(a, b)| a == v || b == v);
@@ -268,7 +286,7 @@ impl AlgebraicConstants {
                     _ => values.push((vs[0], q)),
                 }
             }
-            if let Some(value) = self.difference_at(c, lhs, rhs, conditions, &values) {
+            if let Some(value) = self.difference_at(c, pi, lhs, rhs, conditions, &values) {
                 values.sort_by_key(|(v, _)| *v);
                 return Ok(ConstantPoint { values, value });
             }
@@ -278,44 +296,104 @@ impl AlgebraicConstants {
         ))
     }
 
-    /// `p` at the point, as an element of `Q(theta)` (a polynomial in `c`, reduced).
-    fn at(&self, c: Var, p: &Poly<Rational>, values: &[(Var, Rational)]) -> UPoly {
+    /// `p` at the point, by powers of pi (one entry without pi): each coefficient an element of
+    /// `Q(theta)`, a polynomial in `c` reduced modulo the minimal polynomial.
+    fn at(
+        &self,
+        c: Var,
+        pi: Option<Var>,
+        p: &Poly<Rational>,
+        values: &[(Var, Rational)],
+    ) -> Vec<UPoly> {
         let mut q = p.clone();
         for (v, x) in values {
             q = q.substitute(*v, &Poly::constant(x.clone()));
         }
-        let u = UPoly::from_poly(&q, c).expect("every variable but c has a value");
-        self.field.reduce(&u)
+        let degree = pi.map_or(0, |pi| q.degree_in(pi));
+        let mut by_power: Vec<TermList> = vec![Vec::new(); degree as usize + 1];
+        for (m, coefficient) in q.terms() {
+            let k = pi.map_or(0, |pi| m.exponent(pi));
+            let rest: Vec<(Var, u32)> = m
+                .exponents()
+                .into_iter()
+                .filter(|(v, _)| Some(*v) != pi)
+                .collect();
+            by_power[k as usize].push((rest, coefficient.clone()));
+        }
+        let mut out: Vec<UPoly> = by_power
+            .into_iter()
+            .map(|terms| {
+                let u = UPoly::from_poly(&Poly::from_terms(terms), c)
+                    .expect("every variable but c and pi has a value");
+                self.field.reduce(&u)
+            })
+            .collect();
+        while out.len() > 1 && out.last().is_some_and(UPoly::is_zero) {
+            out.pop();
+        }
+        out
+    }
+
+    /// A polynomial in pi with coefficients in `Q(theta)` (by powers of pi) as a polynomial in
+    /// `c` and pi.
+    fn in_pi(c: Var, pi: Option<Var>, coefficients: &[UPoly]) -> Poly<Rational> {
+        let mut total = Poly::zero();
+        for (k, u) in coefficients.iter().enumerate() {
+            let power = match pi {
+                Some(pi) if k > 0 => Poly::monomial(Rational::ONE, &[(pi, k as u32)]),
+                _ => Poly::constant(Rational::ONE),
+            };
+            total += u.to_poly(c) * power;
+        }
+        total
     }
 
     /// `LHS - RHS` at the point when it is defined (no condition vanishes) and not zero.
     fn difference_at(
         &self,
         c: Var,
+        pi: Option<Var>,
         lhs: &RatFun<Rational>,
         rhs: &RatFun<Rational>,
         conditions: &[Poly<Rational>],
         values: &[(Var, Rational)],
-    ) -> Option<Algebraic> {
-        if conditions.iter().any(|p| self.at(c, p, values).is_zero()) {
+    ) -> Option<ConstantValue> {
+        let zero = |p: &[UPoly]| p.iter().all(UPoly::is_zero);
+        if conditions.iter().any(|p| zero(&self.at(c, pi, p, values))) {
             return None;
         }
-        let (ln, ld) = (
-            self.at(c, lhs.numerator(), values),
-            self.at(c, lhs.denominator(), values),
+        let cross = lhs.numerator().clone() * rhs.denominator()
+            - rhs.numerator().clone() * lhs.denominator();
+        let num = self.at(c, pi, &cross, values);
+        let den = self.at(
+            c,
+            pi,
+            &(lhs.denominator().clone() * rhs.denominator()),
+            values,
         );
-        let (rn, rd) = (
-            self.at(c, rhs.numerator(), values),
-            self.at(c, rhs.denominator(), values),
-        );
-        let num = self
-            .field
-            .reduce(&ln.mul_ref(&rd).sub_ref(&rn.mul_ref(&ld)));
-        if num.is_zero() {
+        if zero(&num) || zero(&den) {
             return None;
         }
-        let inv = self.field.inverse(&self.field.mul(&ld, &rd))?;
-        Some(self.field.value(&self.field.mul(&num, &inv)))
+        match (num.as_slice(), den.as_slice()) {
+            ([n], [d]) => {
+                let inv = self.field.inverse(d)?;
+                Some(ConstantValue::Number(
+                    self.field.value(&self.field.mul(n, &inv)),
+                ))
+            }
+            (_, [d]) => {
+                let inv = self.field.inverse(d)?;
+                let scaled: Vec<UPoly> = num.iter().map(|n| self.field.mul(n, &inv)).collect();
+                Some(ConstantValue::InPi {
+                    numerator: Self::in_pi(c, pi, &scaled),
+                    denominator: Poly::constant(Rational::ONE),
+                })
+            }
+            _ => Some(ConstantValue::InPi {
+                numerator: Self::in_pi(c, pi, &num),
+                denominator: Self::in_pi(c, pi, &den),
+            }),
+        }
     }
 }
 
@@ -363,7 +441,8 @@ mod tests {
             // The engine's own counter-example (a quadratic m, solved in the square-root
             // field) or none: the search at c = theta is checked either way.
             IdentityVerdict::Fails { .. } | IdentityVerdict::Undecided { .. } => {
-                match k.counter_example(c, &l, &r, &circles, &report.conditions, &spec.domains, &[])
+                let pi = vars.get(crate::expr::PI);
+                match k.counter_example(c, &l, &r, &circles, &report.conditions, &spec.domains, pi)
                 {
                     Ok(p) => Outcome::Fails(Box::new((vars, p))),
                     Err(_) => Outcome::Undecided,
@@ -407,7 +486,7 @@ mod tests {
         let p = found.1;
         // At x = 1: cos(2 pi/7) - 1/2, checked against the number computed on its own.
         let want: Algebraic = "cos(2*pi/7) - 1/2".parse().unwrap();
-        assert_eq!(p.value, want);
+        assert_eq!(p.value, ConstantValue::Number(want));
         let (_, k) = decide("x*cos(pi/5)", "x*sqrt(5)");
         assert_eq!(k.field.degree(), 2);
         assert!(
@@ -415,6 +494,45 @@ mod tests {
             "{}",
             k.description()
         );
+    }
+
+    #[test]
+    fn pi_stays_pi_in_the_counter_example() {
+        // c + pi: not zero, as pi is transcendental over Q(sin(pi/7)).
+        let (o, _) = decide("x + pi + sin(pi/7)", "x");
+        let Outcome::Fails(found) = o else {
+            panic!("expected a counter-example")
+        };
+        let (vars, p) = *found;
+        let ConstantValue::InPi {
+            numerator,
+            denominator,
+        } = &p.value
+        else {
+            panic!("expected a value in pi, got {:?}", p.value)
+        };
+        assert_eq!(numerator.display(&vars).to_string(), "c + pi");
+        assert!(Ring::is_one(denominator));
+        assert!(p.values.iter().all(|(v, _)| vars.name(*v) == Some("x")));
+        // Pi divides: the value is a fraction of polynomials in pi and c.
+        let (o, _) = decide("x + cos(pi/7)/pi", "x");
+        let Outcome::Fails(found) = o else {
+            panic!("expected a counter-example")
+        };
+        let ConstantValue::InPi { denominator, .. } = &found.1.value else {
+            panic!("expected a value in pi")
+        };
+        assert_eq!(denominator.display(&found.0).to_string(), "pi");
+        // Pi that cancels leaves a number.
+        let (o, _) = decide("x*pi + sin(pi/7)", "pi*x");
+        let Outcome::Fails(found) = o else {
+            panic!("expected a counter-example")
+        };
+        assert!(matches!(found.1.value, ConstantValue::Number(_)));
+        assert!(matches!(
+            decide("pi*sin(pi/7) + x", "x + sin(pi/7)*pi").0,
+            Outcome::Proved
+        ));
     }
 
     proptest! {
@@ -442,7 +560,7 @@ mod tests {
             let (o, _) = decide(&lhs, &format!("{rhs} + ({shift})"));
             let Outcome::Fails(found) = o else { panic!("{lhs} = {rhs} + {shift}: no counter-example") };
             let pt = found.1;
-            prop_assert_eq!(pt.value, Algebraic::from_rational(-shift));
+            prop_assert_eq!(pt.value, ConstantValue::Number(Algebraic::from_rational(-shift)));
             // The wrong angle: (p + 1) pi/q in the right side.
             let b = format!("{}*pi/{q}", p + 1);
             let wrong = rhs.replace(&a, &b);
@@ -459,7 +577,8 @@ mod tests {
             } else {
                 (x + ta).cos() - (x.cos() * tb.cos() - x.sin() * tb.sin())
             };
-            let (lo, hi) = pt.value.enclosure(60);
+            let ConstantValue::Number(value) = &pt.value else { panic!("no pi in {lhs} = {wrong}") };
+            let (lo, hi) = value.enclosure(60);
             prop_assert!(float.abs() > 1e-9);
             prop_assert!((lo.to_f64() - float).abs() < 1e-9 && (hi.to_f64() - float).abs() < 1e-9);
         }

@@ -63,7 +63,7 @@ pub mod identity;
 pub mod random;
 mod roots;
 
-pub use constants::{AlgebraicConstants, ConstantPoint, CONSTANT_ATTEMPTS};
+pub use constants::{AlgebraicConstants, ConstantPoint, ConstantValue, CONSTANT_ATTEMPTS};
 pub use factored::factored;
 pub use fraction::{decide_fraction, real_zero_free, where_clause, FractionIdentity};
 pub use hypotheses::{Hypothesis, MAX_HYPOTHESIS_DROPS};

@@ -7,7 +7,7 @@
 
 use super::*;
 use crate::prove_cmd::constants::{self as prove_constants, ConstantsError};
-use exactcheck_exact::prove::AlgebraicConstants;
+use exactcheck_exact::prove::{AlgebraicConstants, ConstantValue};
 
 /// The expressions of an identity claim with its algebraic constants as polynomials in the
 /// primitive element `c` of their field, in the places of the claim's own.
@@ -293,14 +293,24 @@ fn identity<C: PointField + Display>(
                     rhs: value,
                 });
             }
-            // The value as a formula: its radical form, else (a `Root`) the difference at the
-            // point when every coordinate is a plain variable.
-            let residual = match value_expr(&p.value) {
+            // The value as a formula: its radical form, else (a `Root`, or a value in pi) the
+            // difference at the point when every coordinate is a plain variable and there is
+            // one (without coordinates it would only repeat the difference).
+            let (number, in_pi) = match &p.value {
+                ConstantValue::Number(a) => (value_expr(a), false),
+                ConstantValue::InPi { .. } => (
+                    Err(Fault::Internal(
+                        "a value in pi and the field's generator is not a formula".into(),
+                    )),
+                    true,
+                ),
+            };
+            let residual = match number {
                 Ok(v) => vec![Equation {
                     lhs: difference(&lhs[*coordinate], &rhs[*coordinate]),
                     rhs: v,
                 }],
-                Err(_) if plain => vec![Equation {
+                Err(_) if plain && !(in_pi && counter_example.is_empty()) => vec![Equation {
                     lhs: difference(&lhs[*coordinate], &rhs[*coordinate]),
                     rhs: residual_at,
                 }],
