@@ -143,16 +143,44 @@ pub(super) fn divides(d: &[u64], m: &[u64], guard: u64) -> bool {
         .all(|(&d, &m)| ((m | guard).wrapping_sub(d)) & guard == guard)
 }
 
+/// Appends the monomial `m` padded with zero words to `w` words (`m.len() <= w`), a word at a
+/// time: the monomials are a few words long, where a bulk copy costs more than the words.
+#[inline(always)]
+pub(super) fn push_padded(out: &mut Vec<u64>, m: &[u64], w: usize) {
+    for &x in m {
+        out.push(x);
+    }
+    for _ in m.len()..w {
+        out.push(0);
+    }
+}
+
+/// Appends the product `a b` of two monomials of the same field width, `b` of `w = b.len()`
+/// words and `a` of at most `w` (its missing words are zero).
+#[inline(always)]
+pub(super) fn push_product_padded(out: &mut Vec<u64>, a: &[u64], b: &[u64]) {
+    for (x, y) in a.iter().zip(b) {
+        out.push(x.wrapping_add(*y));
+    }
+    for &y in &b[a.len()..] {
+        out.push(y);
+    }
+}
+
 /// Repacks `n` monomials from one shape to another that has room for all their variables.
 pub(super) fn repack(exps: &[u64], n: usize, from: Shape, to: Shape) -> Vec<u64> {
-    let mut out = vec![0u64; n * to.words];
-    if from.bits == to.bits {
+    if from.bits == to.bits && from.words > 0 {
+        // The same fields: every monomial copied and padded with zero words, written once (no
+        // zeroed buffer first).
         let w = from.words.min(to.words);
-        for i in 0..n {
-            out[i * to.words..i * to.words + w]
-                .copy_from_slice(&exps[i * from.words..i * from.words + w]);
+        let mut out = Vec::with_capacity(n * to.words);
+        for m in exps[..n * from.words].chunks_exact(from.words) {
+            push_padded(&mut out, &m[..w], to.words);
         }
-    } else {
+        return out;
+    }
+    let mut out = vec![0u64; n * to.words];
+    if from.bits != to.bits {
         for i in 0..n {
             let dst = &mut out[i * to.words..(i + 1) * to.words];
             from.for_each(&exps[i * from.words..(i + 1) * from.words], |v, e| {

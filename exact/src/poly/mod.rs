@@ -46,8 +46,10 @@
 //!   compared and copied as fixed-size arrays). Sums of many large polynomials ([`Poly::sum`])
 //!   are one k-way heap merge on compact keys of one or two words.
 //! * Multiplication by a single term shifts and scales (the order is a monoid order, so the
-//!   result is still sorted). Products of at most 32 term products are formed directly (every
-//!   term product, sorted and combined once): planning a kernel would cost more. Otherwise the
+//!   result is still sorted); the other factor is read in its own packing when only zero words
+//!   are missing, not repacked. Products of at most 32 term products are formed directly, as a
+//!   merge of the sorted rows `f_i g` (the shorter factor has at most five terms): planning a
+//!   kernel would cost more. Otherwise the
 //!   exponents of the two operands are first re-packed
 //!   into **compact keys**: each variable gets just the bits its largest exponent in the product
 //!   needs (a Kronecker substitution that keeps the order). Then:

@@ -122,12 +122,15 @@ impl WordCoefficients for Rational {
         let mut out = Vec::with_capacity(coeffs.len());
         for c in coeffs {
             let (n, d) = c.inline_parts()?;
+            // Every denominator divides `l < 2^63`; the scaled numerator must fit a word, so the
+            // product is formed in `i64` (a native multiply; an `i128` one is a library call).
+            let n = i64::try_from(n).ok()?;
             let scaled = if l == 1 {
                 n
             } else {
-                n.checked_mul(l as i128 / d)?
+                n.checked_mul(l / d as i64)?
             };
-            out.push(i64::try_from(scaled).ok().filter(|&x| x != i64::MIN)?);
+            out.push(Some(scaled).filter(|&x| x != i64::MIN)?);
         }
         Some((out, l))
     }

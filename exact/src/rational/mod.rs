@@ -17,7 +17,8 @@
 //! cases (an integer operand, equal denominators, coprime denominators) take no gcd at all, and
 //! the result needs no final reduction. The gcds themselves come from [`crate::gcd`]: word-size
 //! binary gcds inline, and for big operands a division step then Lehmer's algorithm, never
-//! num-integer's bit-by-bit binary gcd.
+//! num-integer's bit-by-bit binary gcd. Inline operands whose four parts all fit an `i64` (the
+//! usual polynomial coefficient) take the kernels of `word`, which need no overflow checks.
 //!
 //! Everything converts to and from num-rational's `BigRational` ([`Rational::to_big_rational`],
 //! `From<BigRational>`), which stays the public big-number base. The conversions, printing and
@@ -35,6 +36,7 @@ use std::cmp::Ordering;
 mod convert;
 #[cfg(test)]
 mod tests;
+mod word;
 
 /// An exact rational number, always in canonical form (see the module documentation).
 #[derive(Clone, PartialEq, Eq, Hash)]
@@ -121,6 +123,9 @@ impl Rational {
             // Both in one word (the common case of the polynomial kernels' output terms): a
             // 64-bit gcd and two 64-bit divisions instead of 128-bit ones. `g <= d < 2^63`.
             let g = gcd_u64(n.unsigned_abs(), d as u64) as i64;
+            if g == 1 {
+                return Rational(Repr::Small(num, den));
+            }
             return Rational(Repr::Small((n / g) as i128, (d / g) as i128));
         }
         let g = gcd_u128(num.unsigned_abs(), den as u128) as i128;
@@ -310,6 +315,12 @@ impl Rational {
     #[inline]
     fn add_impl(&self, rhs: &Rational, sub: bool) -> Rational {
         if let (Repr::Small(a, b), Repr::Small(c, d)) = (&self.0, &rhs.0) {
+            if let Some((a, b, c, d)) = word::words(*a, *b, *c, *d) {
+                // `-c` of a word `c` fits `i64` except for `i64::MIN`, left to the general path.
+                if let Some(c) = if sub { c.checked_neg() } else { Some(c) } {
+                    return word::add_words(a, b, c, d);
+                }
+            }
             // `fits` excludes i128::MIN, so `-c` cannot overflow.
             if let Some(r) = add_small(*a, *b, if sub { -*c } else { *c }, *d) {
                 return r;
@@ -360,6 +371,9 @@ impl Rational {
 
     fn mul_impl(&self, rhs: &Rational) -> Rational {
         if let (Repr::Small(a, b), Repr::Small(c, d)) = (&self.0, &rhs.0) {
+            if let Some((a, b, c, d)) = word::words(*a, *b, *c, *d) {
+                return word::mul_words(a, b, c, d);
+            }
             return mul_small(*a, *b, *c, *d);
         }
         if self.is_zero_value() || rhs.is_zero_value() {
@@ -901,6 +915,11 @@ impl Ring for Rational {
         // (n/d)^2 is already reduced: no gcd at all.
         match &self.0 {
             Repr::Small(n, d) => {
+                if let (Ok(n), Ok(d)) = (i64::try_from(*n), i64::try_from(*d)) {
+                    // Word parts: the squares are below 2^126.
+                    let (n, d) = (i128::from(n), i128::from(d));
+                    return Rational(Repr::Small(n * n, d * d));
+                }
                 if let (Some(nn), Some(dd)) = (n.checked_mul(*n), d.checked_mul(*d)) {
                     if fits(nn) && fits(dd) {
                         return Rational(Repr::Small(nn, dd));

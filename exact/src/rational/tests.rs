@@ -376,3 +376,51 @@ fn in_place_big_plus_word_matches_reference() {
     }
     assert_eq!(acc.to_big_rational(), reference);
 }
+
+/// The one-word kernels (every part of both operands in `i64`: products and sums formed in
+/// `i128` without overflow checks) against num-rational, at the extremes of the word range
+/// (`i64::MIN` numerators, `i64::MAX` denominators, whose negation leaves the word path) and
+/// with planted common factors so that every branch of Henrici's method is taken.
+#[test]
+fn word_parts_match_num_rational_at_the_extremes() {
+    let mut st = exactcheck_core::Rng::new(0x77);
+    let edges: [i64; 7] = [1, 2, 3, i64::MAX, i64::MAX - 1, 1 << 62, 3 << 61];
+    let part = |st: &mut exactcheck_core::Rng| -> i64 {
+        match st.below(3) {
+            0 => edges[st.below(7) as usize],
+            1 => (st.next_u64() >> (1 + st.below(63))) as i64,
+            _ => [6i64, 10, 15, 1 << 20, 1_000_003][st.below(5) as usize],
+        }
+        .max(1)
+    };
+    for _ in 0..4000 {
+        let (a, b, c, d) = (part(&mut st), part(&mut st), part(&mut st), part(&mut st));
+        let a = match st.below(4) {
+            0 => -a,
+            1 => i64::MIN,
+            _ => a,
+        };
+        let c = if st.below(2) == 0 { -c } else { c };
+        // Equal denominators and integer operands are their own branches.
+        let d = match st.below(4) {
+            0 => b,
+            1 => 1,
+            _ => d,
+        };
+        let (x, y) = (q(a, b), q(c, d));
+        let (rx, ry) = (
+            BigRational::new(BigInt::from(a), BigInt::from(b)),
+            BigRational::new(BigInt::from(c), BigInt::from(d)),
+        );
+        for (got, expected) in [
+            (&x + &y, &rx + &ry),
+            (&x - &y, &rx - &ry),
+            (&y - &x, &ry - &rx),
+            (&x * &y, &rx * &ry),
+            (x.square(), &rx * &rx),
+        ] {
+            assert!(got.is_canonical(), "{a}/{b} and {c}/{d}");
+            assert_eq!(got.to_big_rational(), expected, "{a}/{b} and {c}/{d}");
+        }
+    }
+}

@@ -6,6 +6,7 @@
 use super::words::*;
 use super::*;
 use exactcheck_core::Ring;
+use std::borrow::Cow;
 use std::cmp::Ordering;
 
 /// Calls `$f::<C, K>` with the key width as a constant for 1 to 4 words, `K = 0` (run time)
@@ -156,13 +157,39 @@ impl<C: Ring> Poly<C> {
         }
         let shape = self.product_shape(rhs);
         let max = max(shape.words);
+        if self.len() == 1 || rhs.len() == 1 {
+            let (term, p) = if self.len() == 1 {
+                (self, rhs)
+            } else {
+                (rhs, self)
+            };
+            // The many-term factor keeps its packing when only words are missing (they are
+            // zero): no repacked copy of it.
+            let (pe, pw) = if p.shape.bits == shape.bits && p.shape.words <= shape.words {
+                (Cow::Borrowed(&p.exps[..]), p.shape.words)
+            } else {
+                (p.exps_in(shape), shape.words)
+            };
+            // The term's monomial, on the stack when it has the product's field width.
+            let mut one = [0u64; 16];
+            let m = if term.shape.bits == shape.bits
+                && term.shape.words <= shape.words
+                && shape.words <= one.len()
+            {
+                one[..term.shape.words].copy_from_slice(&term.exps);
+                Cow::Borrowed(&one[..shape.words])
+            } else {
+                term.exps_in(shape)
+            };
+            let (exps, coeffs) = mul_term((&pe, pw), &p.coeffs, &m, &term.coeffs[0], max)?;
+            return Some(Poly {
+                shape,
+                exps,
+                coeffs,
+            });
+        }
         let (ae, be) = (self.exps_in(shape), rhs.exps_in(shape));
-        let w = shape.words;
-        let (exps, coeffs) = if self.len() == 1 {
-            mul_term(w, &be, &rhs.coeffs, &ae, &self.coeffs[0], max)
-        } else if rhs.len() == 1 {
-            mul_term(w, &ae, &self.coeffs, &be, &rhs.coeffs[0], max)
-        } else if self.len() * rhs.len() <= SMALL_PRODUCT {
+        let (exps, coeffs) = if self.len() * rhs.len() <= SMALL_PRODUCT {
             mul_small(shape, (&ae, &self.coeffs), (&be, &rhs.coeffs), max)
         } else {
             let (small, large) = if self.len() <= rhs.len() {
@@ -451,6 +478,9 @@ impl<'a> ProductPlan<'a> {
 
 /// `c^e` by binary powering.
 pub(super) fn pow_coeff<C: Ring>(c: &C, mut e: u64) -> C {
+    if c.is_one() {
+        return C::one();
+    }
     let mut acc = C::one();
     let mut base = c.clone();
     while e > 0 {
@@ -507,51 +537,45 @@ pub(super) fn merge_words<C: Ring, const W: usize>(
     let (na, nb) = if w == 0 { (1, 1) } else { (na, nb) };
     let mut exps = Vec::with_capacity(ae.len() + be.len());
     let mut coeffs = Vec::with_capacity(na + nb);
+    // The iterators yield exactly `na` and `nb` coefficients.
+    fn next<C: Ring>(it: &mut impl Iterator<Item = C>) -> C {
+        it.next().unwrap_or_else(C::zero)
+    }
     let (mut i, mut j) = (0, 0);
-    let mut a_next = ac.next();
-    let mut b_next = bc.next();
-    while let (Some(_), Some(_)) = (&a_next, &b_next) {
+    while i < na && j < nb {
         let (ma, mb) = (&ae[i * w..(i + 1) * w], &be[j * w..(j + 1) * w]);
         match cmp_mono(ma, mb) {
             Ordering::Greater => {
                 exps.extend_from_slice(ma);
-                coeffs.extend(a_next.take());
-                a_next = ac.next();
+                coeffs.push(next(&mut ac));
                 i += 1;
             }
             Ordering::Less => {
                 exps.extend_from_slice(mb);
-                let b = b_next.take().unwrap_or_else(C::zero);
+                let b = next(&mut bc);
                 coeffs.push(if negate { -b } else { b });
-                b_next = bc.next();
                 j += 1;
             }
             Ordering::Equal => {
-                let a = a_next.take().unwrap_or_else(C::zero);
-                let b = b_next.take().unwrap_or_else(C::zero);
+                let (a, b) = (next(&mut ac), next(&mut bc));
                 let s = if negate { a - b } else { a + b };
                 if !s.is_zero() {
                     exps.extend_from_slice(ma);
                     coeffs.push(s);
                 }
-                a_next = ac.next();
-                b_next = bc.next();
                 i += 1;
                 j += 1;
             }
         }
     }
-    while let Some(a) = a_next {
-        exps.extend_from_slice(&ae[i * w..(i + 1) * w]);
-        coeffs.push(a);
-        a_next = ac.next();
-        i += 1;
-    }
-    while let Some(b) = b_next {
-        exps.extend_from_slice(&be[j * w..(j + 1) * w]);
-        coeffs.push(if negate { -b } else { b });
-        b_next = bc.next();
-        j += 1;
+    // One list is used up: the rest of the other is copied as it is.
+    exps.extend_from_slice(&ae[i * w..na * w]);
+    coeffs.extend(ac);
+    exps.extend_from_slice(&be[j * w..nb * w]);
+    if negate {
+        coeffs.extend(bc.map(|b| -b));
+    } else {
+        coeffs.extend(bc);
     }
     (exps, coeffs)
 }
@@ -561,32 +585,94 @@ pub(super) fn merge_words<C: Ring, const W: usize>(
 /// products themselves.
 const SMALL_PRODUCT: usize = 32;
 
-/// `f g` for small factors: every term product in the coefficients' own arithmetic, sorted and
-/// combined once; `None` past `max` terms.
+/// `f g` for small factors (`#f #g <= SMALL_PRODUCT`): the rows `f_i g` are sorted, so the
+/// product is their merge, the largest row head found by a scan (the shorter factor has at
+/// most five terms), its equals in the other rows summed in the coefficients' own arithmetic,
+/// and every output monomial written once. The monomials are compared word by word as they are
+/// formed, most significant word first. `None` past `max` terms.
 pub(super) fn mul_small<C: Ring>(
     shape: Shape,
-    (fe, fc): (&[u64], &[C]),
-    (ge, gc): (&[u64], &[C]),
+    f: (&[u64], &[C]),
+    g: (&[u64], &[C]),
     max: usize,
 ) -> Option<(Vec<u64>, Vec<C>)> {
-    let w = shape.words;
-    let n = fc.len() * gc.len();
-    let mut exps = Vec::with_capacity(n * w);
-    let mut coeffs = Vec::with_capacity(n);
-    for (i, a) in fc.iter().enumerate() {
-        for (j, b) in gc.iter().enumerate() {
-            push_sum(&mut exps, &fe[i * w..(i + 1) * w], &ge[j * w..(j + 1) * w]);
-            coeffs.push(a.mul_ref(b));
+    let ((fe, fc), (ge, gc)) = if f.1.len() <= g.1.len() {
+        (f, g)
+    } else {
+        (g, f)
+    };
+    let (w, nf, ng) = (shape.words, fc.len(), gc.len());
+    assert!(
+        nf * ng <= SMALL_PRODUCT && nf <= SMALL_ROWS,
+        "mul_small of {nf} x {ng} terms"
+    );
+    // Words above the highest non-zero word of every monomial of both factors compare equal.
+    let top = |e: &[u64]| {
+        e.chunks_exact(w.max(1))
+            .map(|m| m.iter().rposition(|&x| x != 0).map_or(0, |t| t + 1))
+            .max()
+            .unwrap_or(0)
+    };
+    let used = top(&fe[..nf * w]).max(top(&ge[..ng * w]));
+    let cmp = |(i, j): (usize, usize), (k, l): (usize, usize)| -> Ordering {
+        for t in (0..used).rev() {
+            let x = fe[i * w + t].wrapping_add(ge[j * w + t]);
+            let y = fe[k * w + t].wrapping_add(ge[l * w + t]);
+            match x.cmp(&y) {
+                Ordering::Equal => continue,
+                o => return o,
+            }
+        }
+        Ordering::Equal
+    };
+    // The next term of every row (`ng`: the row is done).
+    let mut heads = [0usize; SMALL_ROWS];
+    let mut exps = Vec::with_capacity(nf * ng * w);
+    let mut coeffs = Vec::with_capacity(nf * ng);
+    loop {
+        let mut top: Option<usize> = None;
+        for i in 0..nf {
+            if heads[i] < ng
+                && top.is_none_or(|b| cmp((i, heads[i]), (b, heads[b])) == Ordering::Greater)
+            {
+                top = Some(i);
+            }
+        }
+        let Some(b) = top else { break };
+        let jb = heads[b];
+        let mut acc = fc[b].mul_ref(&gc[jb]);
+        heads[b] += 1;
+        // A row is strictly decreasing: at most its head equals the top.
+        for i in b + 1..nf {
+            if heads[i] < ng && cmp((i, heads[i]), (b, jb)) == Ordering::Equal {
+                acc += fc[i].mul_ref(&gc[heads[i]]);
+                heads[i] += 1;
+            }
+        }
+        if !acc.is_zero() {
+            push_sum(
+                &mut exps,
+                &fe[b * w..(b + 1) * w],
+                &ge[jb * w..(jb + 1) * w],
+            );
+            coeffs.push(acc);
+            if coeffs.len() > max {
+                return None;
+            }
         }
     }
-    let p = Poly::from_unsorted(shape, exps, coeffs);
-    (p.len() <= max).then_some((p.exps, p.coeffs))
+    Some((exps, coeffs))
 }
 
-/// `g * (m, c)`: a term times a sorted list stays sorted.
+/// The most terms of the shorter factor of a product of at most [`SMALL_PRODUCT`] term
+/// products (`5 * 5 <= 32 < 6 * 6`).
+const SMALL_ROWS: usize = 5;
+
+/// `g * (m, c)`: a term times a sorted list stays sorted. The monomials of `g` take `wg` words
+/// each, at most the `m.len()` words of the product and of the same field width (the missing
+/// words are zero).
 pub(super) fn mul_term<C: Ring>(
-    w: usize,
-    ge: &[u64],
+    (ge, wg): (&[u64], usize),
     gc: &[C],
     m: &[u64],
     c: &C,
@@ -595,12 +681,14 @@ pub(super) fn mul_term<C: Ring>(
     if gc.len() > max {
         return None;
     }
-    let mut exps = Vec::with_capacity(ge.len());
+    let w = m.len();
+    debug_assert!(wg <= w);
+    let mut exps = Vec::with_capacity(gc.len() * w);
     let mut coeffs = Vec::with_capacity(gc.len());
     for (j, g) in gc.iter().enumerate() {
         let p = g.mul_ref(c);
         if !p.is_zero() {
-            push_sum(&mut exps, &ge[j * w..(j + 1) * w], m);
+            push_product_padded(&mut exps, &ge[j * wg..(j + 1) * wg], m);
             coeffs.push(p);
         }
     }

@@ -616,10 +616,11 @@ impl<C: Ring> Poly<C> {
         let cap = words * shape.per_word();
         // The keys only need every variable's bit length: the OR of the exponents has the
         // bit length of their maximum, at one OR per word.
+        // Every summand is read in its own packing (the variables it has room for are below
+        // `cap`); only one of another field width is repacked, for the output.
         let mut need = vec![0u64; cap];
         for p in &polys {
-            let e = p.exps_in(shape);
-            for (n, m) in need.iter_mut().zip(or_exps(shape, &e, p.len(), cap)) {
+            for (n, m) in need.iter_mut().zip(or_exps(p.shape, &p.exps, p.len(), cap)) {
                 *n |= m;
             }
         }
@@ -629,17 +630,25 @@ impl<C: Ring> Poly<C> {
         }
         let total: usize = polys.iter().map(Poly::len).sum();
         let mut exps_of = Vec::with_capacity(polys.len());
+        let mut words_of = Vec::with_capacity(polys.len());
         let mut keys_of = Vec::with_capacity(polys.len());
         let mut coeffs_of = Vec::with_capacity(polys.len());
         for p in polys {
             let n = p.len();
-            let (e, c) = p.into_parts(shape);
-            keys_of.push(make_keys(shape, &e, n, k, &place));
+            keys_of.push(make_keys(p.shape, &p.exps, n, k, &place));
+            let own = p.shape.bits == bits && p.shape.words <= words;
+            words_of.push(if own { p.shape.words } else { words });
+            let (e, c) = if own {
+                (p.exps, p.coeffs)
+            } else {
+                p.into_parts(shape)
+            };
             exps_of.push(e);
             coeffs_of.push(c.into_iter());
         }
         let terms = Summands {
             exps: exps_of,
+            words: words_of,
             coeffs: coeffs_of,
             total,
         };
@@ -755,6 +764,15 @@ impl<C: Ring> Poly<C> {
             return Poly::zero();
         }
         let need = self.exp_bound().saturating_mul(e);
+        if need < 1 << (self.shape.bits - 1) {
+            // Every exponent times `e` stays below the guard bit of its field: the words
+            // multiply without carries between fields.
+            return Poly {
+                shape: self.shape,
+                exps: self.mono(0).iter().map(|w| w * e).collect(),
+                coeffs: vec![c],
+            };
+        }
         let mut exps = Vec::new();
         let shape = if need <= MAX_EXP {
             let sh = self.widened_shape(bits_for(need).unwrap_or(64), 0);
@@ -813,10 +831,12 @@ pub(super) fn binary_power<T: Clone>(
     }
 }
 
-/// The summands of a k-way merge: every summand's packed monomials and coefficients, and the
+/// The summands of a k-way merge: every summand's packed monomials (of the sum's field width,
+/// with at most its words: missing words are zero) and their words, the coefficients, and the
 /// total number of terms.
 struct Summands<C> {
     exps: Vec<Vec<u64>>,
+    words: Vec<usize>,
     coeffs: Vec<std::vec::IntoIter<C>>,
     total: usize,
 }
@@ -831,6 +851,7 @@ fn sum_heap<C: Ring, Key: HeapKey>(
 ) -> Poly<C> {
     let Summands {
         exps: exps_of,
+        words: words_of,
         coeffs: mut coeffs_of,
         total,
     } = s;
@@ -867,7 +888,8 @@ fn sum_heap<C: Ring, Key: HeapKey>(
             acc += step(&mut heap, &mut pos);
         }
         if !acc.is_zero() {
-            out_e.extend_from_slice(&exps_of[p][i * w..(i + 1) * w]);
+            let wp = words_of[p];
+            push_padded(&mut out_e, &exps_of[p][i * wp..(i + 1) * wp], w);
             out_c.push(acc);
         }
     }
