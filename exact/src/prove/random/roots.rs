@@ -193,6 +193,12 @@ pub(crate) fn norm_bound(b: &SizeBound, r: usize) -> Option<SizeBound> {
     })
 }
 
+/// The values of the variables at a point, by name.
+type Point<V> = HashMap<String, V>;
+
+/// A tower with the point lifted into it.
+type Lifted<'a, R> = (Tower<'a, R>, Point<Vec<<R as Values>::V>>);
+
 /// The ring `B[w_1, ..., w_r]/(w_i^2 - R_i)` of one point (module documentation): an element
 /// is `2^r` elements of `B`, the coefficient of `w^S` at the index whose bits are `S`.
 pub(crate) struct Tower<'a, R: Values> {
@@ -211,10 +217,10 @@ impl<'a, R: Values> Tower<'a, R> {
     pub(crate) fn at(
         base: &'a R,
         roots: &[Root],
-        point: &HashMap<String, R::V>,
+        point: &Point<R::V>,
         constant: &dyn Fn(&str) -> bool,
         refused: &dyn Fn(&Expr) -> String,
-    ) -> Result<(Self, HashMap<String, Vec<R::V>>), EvalError> {
+    ) -> Result<Lifted<'a, R>, EvalError> {
         let mut tower = Tower {
             base,
             radicands: Vec::new(),
@@ -230,7 +236,7 @@ impl<'a, R: Values> Tower<'a, R> {
 
     /// The point in the tower as built so far: the values of `B` as constants, the roots
     /// already adjoined as their generators.
-    fn lift(&self, roots: &[Root], point: &HashMap<String, R::V>) -> HashMap<String, Vec<R::V>> {
+    fn lift(&self, roots: &[Root], point: &Point<R::V>) -> Point<Vec<R::V>> {
         let size = 1usize << self.radicands.len();
         let zero = self.base.number(&Rational::ZERO).expect("0 maps");
         let one = self.base.number(&Rational::ONE).expect("1 maps");
