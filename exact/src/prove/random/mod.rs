@@ -573,6 +573,10 @@ pub fn random_identity_test(
     let mut names = Vec::new();
     prepared.lhs.collect_variables(&mut names);
     prepared.rhs.collect_variables(&mut names);
+    // A variable only under a root is one of the point too.
+    for root in &roots {
+        root.radicand.collect_variables(&mut names);
+    }
     let generator = prepared.constants.as_ref().map(|k| k.name.clone());
     let free: Vec<String> = names
         .into_iter()
