@@ -79,10 +79,11 @@ pub struct ProveArgs {
     /// Instead of expanding, evaluate both sides at K random points (1 to 100000) modulo a prime
     /// drawn at random from [2^62, 2^63) for this run: `fails` at a non-zero point, `holds`
     /// when the proved error bound is below 2^-30, else `undecided` with the bound. Relations
-    /// must be unit circles `c^2 + s^2 = 1`; no domains, no sqrt of a non-constant. Constants
-    /// (`sqrt(2)`, `cos(pi/8)`) are evaluated in F_p[c]/(m) for the minimal polynomial m of
-    /// their field, angles of sin, cos, tan on their unit circles; a failure is then confirmed
-    /// by an exact counter-example.
+    /// must be unit circles `c^2 + s^2 = 1`; no domains. Constants (`sqrt(2)`, `cos(pi/8)`) are
+    /// evaluated in F_p[c]/(m) for the minimal polynomial m of their field, angles of sin, cos,
+    /// tan on their unit circles; a failure is then confirmed by an exact counter-example. A
+    /// square root of an expression is a root w with w^2 its radicand, for either sign: a
+    /// difference is then `undecided`.
     #[arg(long, value_name = "K")]
     pub random: Option<u64>,
     /// Seed of `--random` (default: a fresh random seed, printed, per run). The prime is drawn

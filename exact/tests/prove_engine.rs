@@ -123,8 +123,14 @@ fn random_mode_refuses_what_it_cannot_bound() {
     let e = |t: &str| parse_expr(t).unwrap();
     let vars = ["x".to_string()];
     let one = Seed::Fresh(1);
-    // Square roots of non-constants have no bound; constants do, but not undefined ones.
-    assert!(random_identity_test(&e("sqrt(x) x"), &e("0"), &vars, &[], 3, one).is_err());
+    // A square root of an expression is a root w with w^2 = R: a point where the sides differ
+    // does not refute (the roots take either sign). One whose radicand has a root of a constant
+    // is refused; constants have a bound, but not undefined ones.
+    assert!(matches!(
+        random_identity_test(&e("sqrt(x) x"), &e("0"), &vars, &[], 3, one),
+        Ok(RandomDecision::Unconfirmed { .. })
+    ));
+    assert!(random_identity_test(&e("sqrt(x + sqrt(2))"), &e("0"), &vars, &[], 3, one).is_err());
     assert!(random_identity_test(&e("tan(pi/2) x"), &e("0"), &vars, &[], 3, one).is_err());
     assert!(random_identity_test(&e("sqrt(2) x"), &e("0"), &vars, &[], 3, one).is_ok());
     // A divisor that is zero in the constants' field is not a unit modulo any prime.
@@ -335,4 +341,35 @@ fn malformed_domains_are_errors() {
         decide_in(&res, &[], &[(3, d)], 1).unwrap_err(),
         DecideError::UnknownVariable(3)
     );
+}
+
+#[test]
+fn square_roots_of_expressions_hold_by_their_squares_alone() {
+    for (l, r) in [
+        ("diff(sqrt(1 + x^2), x)", "x/sqrt(x^2 + 1)"),
+        ("sqrt(x)^2", "x"),
+        ("1/(sqrt(x) - 1)", "(sqrt(x) + 1)/(x - 1)"),
+        ("sqrt(1 + sqrt(x))^2 - sqrt(x)", "1"),
+        ("sqrt(y/x)*x", "sqrt(y/x)*x"),
+        ("(x + sqrt(2))*sqrt(x*y)", "x*sqrt(x*y) + sqrt(2)*sqrt(y*x)"),
+    ] {
+        let d = random(l, r, 20, 7);
+        let RandomDecision::Holds { log2_bound, .. } = d else {
+            panic!("{l} = {r}: {d:?}")
+        };
+        assert!(log2_bound < -30.0, "{l} = {r}: {log2_bound}");
+    }
+    // False by the squares alone (a wrong sign, a wrong derivative, a sign relation between
+    // roots): a difference, never a refutation.
+    for (l, r) in [
+        ("diff(sqrt(1 + x^2), x)", "-x/sqrt(x^2 + 1)"),
+        ("sqrt(x)^3", "x"),
+        ("sqrt(x)*sqrt(y)", "sqrt(x*y)"),
+    ] {
+        let d = random(l, r, 20, 7);
+        assert!(
+            matches!(&d, RandomDecision::Unconfirmed { why, .. } if why.contains("either sign")),
+            "{l} = {r}: {d:?}"
+        );
+    }
 }

@@ -70,9 +70,10 @@ fn show(l: f64) -> String {
     }
 }
 
-/// What the sides were rewritten with, for the evidence: the constants' field and the angles
-/// (` (with c = sqrt(2), c^2 - 2 = 0 in F_p[c]/(c^2 - 2); angle x on its unit circle)`), empty
-/// for an identity over Q.
+/// What the sides were rewritten with, for the evidence: the constants' field, the angles and
+/// the square roots of expressions (` (with c = sqrt(2), c^2 - 2 = 0 in F_p[c]/(c^2 - 2); angle
+/// x on its unit circle; sqrt(1 + t^2) as w with w^2 = the radicand, either sign)`), empty for
+/// an identity over Q.
 fn notes(report: &RandomReport) -> String {
     let mut parts = Vec::new();
     if let Some(k) = &report.constants {
@@ -93,6 +94,12 @@ fn notes(report: &RandomReport) -> String {
             } else {
                 ""
             }
+        ));
+    }
+    if !report.roots.is_empty() {
+        parts.push(format!(
+            "{} as w with w^2 = the radicand, either sign",
+            report.roots.join(", ")
         ));
     }
     if parts.is_empty() {

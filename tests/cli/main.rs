@@ -14,6 +14,7 @@ mod float_nonfinite;
 mod fuzz_regressions;
 mod module_cycles;
 mod regress_argument_precision;
+mod regress_calculus_as_printed;
 mod regress_done_when;
 mod regress_explain;
 mod regress_fpbench;

@@ -1,7 +1,8 @@
-//! `exactcheck prove --random K` with algebraic constants and angles: constants are evaluated in
-//! `F_p[c]/(m)` for the minimal polynomial `m` of their field, angles on their unit circles; a
-//! true identity holds with the proved bound, a false one fails only with an exact
-//! counter-example, and the bad constants are one-line errors.
+//! `exactcheck prove --random K` with algebraic constants, angles and square roots of
+//! expressions: constants are evaluated in `F_p[c]/(m)` for the minimal polynomial `m` of their
+//! field, angles on their unit circles, roots as `w` with `w^2` the radicand; a true identity
+//! holds with the proved bound, a false one fails only with an exact counter-example, and the
+//! bad constants are one-line errors.
 
 use crate::timed;
 
@@ -22,6 +23,15 @@ fn fails(lhs: &str, rhs: &str) -> String {
     assert_eq!(code, 1, "{lhs} = {rhs}: {out}{err}");
     assert!(out.starts_with("fails: at "), "{lhs} = {rhs}: {out}");
     assert!(out.contains("evaluated exactly"), "{out}");
+    out
+}
+
+/// `prove LHS RHS --random 20` is undecided: the sides differ at a point modulo the prime, which
+/// is no counter-example.
+fn undecided(lhs: &str, rhs: &str) -> String {
+    let (code, out, err) = run(&["prove", lhs, rhs, "--random", "20"]);
+    assert_eq!(code, 1, "{lhs} = {rhs}: {out}{err}");
+    assert!(out.starts_with("undecided: "), "{lhs} = {rhs}: {out}");
     out
 }
 
@@ -79,10 +89,28 @@ fn false_identities_fail_with_an_exact_counter_example() {
 fn without_an_exact_counter_example_the_answer_is_undecided() {
     // x is both a number and an angle: a rational point gives x and its cosine and sine
     // independent values, so it is no counter-example.
-    let (code, out, _) = run(&["prove", "x + sin(x)", "x", "--random", "5"]);
-    assert_eq!(code, 1, "{out}");
-    assert!(out.starts_with("undecided: "), "{out}");
+    let out = undecided("x + sin(x)", "x");
     assert!(out.contains("both as a number and as an angle"), "{out}");
+}
+
+#[test]
+fn calculus_with_roots_and_angles_as_printed() {
+    // Lowered to the derivative or the antiderivative at the bounds with sqrt, sin and cos.
+    holds("integrate(t*sin(t), t, 0, x)", "sin(x) - x*cos(x)");
+    holds("diff(sin(x)^2, x)", "sin(2*x)");
+    holds("diff(tan(x), x)", "1 + tan(x)^2");
+    let out = holds("diff(sqrt(1 + t^2), t)", "t/sqrt(1 + t^2)");
+    assert!(
+        out.contains("sqrt(1 + t^2) as w with w^2 = the radicand"),
+        "{out}"
+    );
+    holds("diff(sqrt(x), x, 2)", "-1/(4*x*sqrt(x))");
+    fails("diff(sin(x)^2, x)", "2*sin(x)");
+    // With a root, a difference at a point is no counter-example: the roots take either sign.
+    let out = undecided("diff(sqrt(1 + t^2), t)", "1/sqrt(1 + t^2)");
+    assert!(out.contains("either sign"), "{out}");
+    let out = undecided("sqrt(x)*sqrt(y)", "sqrt(x*y)");
+    assert!(out.contains("either sign"), "{out}");
 }
 
 #[test]
@@ -108,7 +136,7 @@ fn bad_constants_are_one_line_errors() {
         ("tan(pi/2)*x", "undefined"),
         ("sqrt(-2)*x", "sqrt"),
         ("sin(x^2)", "not linear"),
-        ("sqrt(x)*x", "sqrt of a non-constant"),
+        ("sqrt(x + sqrt(2))*x", "square root of a constant"),
     ] {
         let (code, out, err) = run(&["prove", lhs, "0", "--random", "5"]);
         assert_eq!(code, 2, "{lhs}: {out}{err}");

@@ -11,11 +11,13 @@
 //! variables by increasing index; a coefficient `1` or `-1` is omitted, a negative coefficient
 //! becomes a `-` of the sum, and the zero polynomial is the number 0.
 
+use super::trig::{angles, Angle, Trig};
 use super::{AddOp, Expr, ExprKind, MulOp};
 use crate::poly::{Poly, Var, Vars};
 use crate::radical::{ComplexRadical, Radical};
+use crate::ratfun::RatFun;
 use crate::rational::Rational;
-use exactcheck_core::{Ring, Sign};
+use exactcheck_core::{Field, Ring, Sign};
 use num_bigint::BigInt;
 
 /// A coefficient that reads as an expression tree.
@@ -173,6 +175,54 @@ impl<C: CoeffExpr> Poly<C> {
             _ => Expr::new(ExprKind::Sum(sum)),
         }
     }
+}
+
+/// A rational function as an expression: the numerator, or numerator `/` denominator, each a
+/// polynomial as [`Poly::to_expr`] writes it, and every variable of `vars` that stands for a
+/// function turned back into the call: a square root of an expression ([`Vars::roots`]) into
+/// `sqrt` of its radicand as written, the cosine and sine of an angle variable `x` (named
+/// `cos(x)`, `sin(x)`, [`super::trig::angles`]) into the calls `cos(x)` and `sin(x)`. The tree
+/// then means the same function without the table.
+pub(crate) fn ratfun_to_expr<C: CoeffExpr + Field>(f: &RatFun<C>, vars: &Vars) -> Expr {
+    let num = f.numerator().to_expr(vars);
+    let tree = if f.denominator().is_one() {
+        num
+    } else {
+        Expr::new(ExprKind::Product(vec![
+            (MulOp::Times, num),
+            (MulOp::Divide, f.denominator().to_expr(vars)),
+        ]))
+    };
+    let angles = angles(vars);
+    with_calls(&tree, vars, &angles)
+}
+
+/// `e` with the variables of `vars` that stand for functions replaced by their calls
+/// ([`ratfun_to_expr`]).
+fn with_calls(e: &Expr, vars: &Vars, angles: &[Angle]) -> Expr {
+    let ExprKind::Var(name) = &e.kind else {
+        return e.map_children(|x| with_calls(x, vars, angles));
+    };
+    let Some(v) = vars.get(name) else {
+        return e.clone();
+    };
+    if let Some(root) = vars.roots().iter().find(|r| r.var == v) {
+        return Expr::new(ExprKind::Sqrt(Box::new(root.radicand_expr().clone())));
+    }
+    for a in angles {
+        let which = if a.cos == v {
+            Trig::Cos
+        } else if a.sin == v {
+            Trig::Sin
+        } else {
+            continue;
+        };
+        return Expr::new(ExprKind::Call(
+            which.name().to_string(),
+            vec![Expr::var(&a.name)],
+        ));
+    }
+    e.clone()
 }
 
 #[cfg(test)]

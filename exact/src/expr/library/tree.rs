@@ -146,27 +146,19 @@ pub(super) fn fresh_name(base: &str, e: &Expr, value: &Expr) -> String {
 
 /// The call `diff(E, t[, k])` taken: the derivative as an expression (numerator over
 /// denominator, with rational coefficients), positioned at the call. A square root of an
-/// expression is a variable of the conversion, named by the root itself (`sqrt(x)`), so the
-/// printed derivative reads back with the root as written: `diff(sqrt(x), x)` is
-/// `(1)/(2*sqrt(x))`.
+/// expression is a variable of the conversion, written back as the root itself
+/// ([`ratfun_to_expr`](crate::expr::from_poly::ratfun_to_expr)): `diff(sqrt(x), x)` is
+/// `1/(2*sqrt(x))`.
 pub(super) fn derivative_first(call: &Expr) -> Result<Expr, String> {
     let mut vars = crate::poly::Vars::new();
     vars.allow_roots();
     let f = call
         .to_ratfun::<Rational>(&mut vars)
         .map_err(|e| format!("the derivative {call} is taken first, and fails: {e}"))?;
-    let text = if exactcheck_core::Ring::is_one(f.denominator()) {
-        format!("{}", f.numerator().display(&vars))
-    } else {
-        format!(
-            "({})/({})",
-            f.numerator().display(&vars),
-            f.denominator().display(&vars)
-        )
-    };
-    let parsed = crate::expr::parse_expr(&text)
-        .map_err(|e| format!("the derivative {call} is taken first, and fails: {e}"))?;
-    Ok(at_pos(&parsed, call.pos))
+    Ok(at_pos(
+        &crate::expr::from_poly::ratfun_to_expr(&f, &vars),
+        call.pos,
+    ))
 }
 
 /// Rebuilds `e` bottom-up, handing every rebuilt node (its children done) to `f`.

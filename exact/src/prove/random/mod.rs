@@ -43,12 +43,13 @@
 //! * a power `b^k` (`k` a non-negative integer literal): `k L_b`, `k L_Db`, `k d_b`, `k e_b`.
 //!
 //! All of these are checked `u64` operations; an overflow makes the test report `undecided`
-//! (it never wraps). Square roots of non-constants are refused in random mode (no bound is
-//! proved for them here): run without `--random`, which decides them exactly; square roots of
-//! constants and angles are rewritten first (below, "Constants and angles"). The functions of the language are lowered first
-//! ([`crate::expr::lower`]): `binomial` and `factorial` become integers, `sum` its unrolled
-//! terms, `diff` and `integrate` their exact value expanded as a rational function (the one
-//! expansion random mode does); the bound is then that of the lowered tree.
+//! (it never wraps). Square roots of constants and angles are rewritten first (below,
+//! "Constants and angles"); a square root of an expression is a generator `w` with `w^2` its
+//! radicand, in a ring built at each point, with its own bounds and proof ([`roots`]). The
+//! functions of the language are lowered first ([`crate::expr::lower`]): `binomial` and
+//! `factorial` become integers, `sum` its unrolled terms, `diff` and `integrate` their exact
+//! value expanded (the one expansion random mode does, with the square roots and the cosines
+//! and sines written back as calls); the bound is then that of the lowered tree.
 //!
 //! A point where a divisor with a variable vanishes modulo `p` (a pole) is not in the domain of
 //! the identity: it is skipped and another point drawn; `MAX_POLES` poles in a row are an
@@ -149,14 +150,16 @@
 //! used as a number, `pi` outside an angle), the answer is
 //! [`RandomDecision::Unconfirmed`], worded `undecided`.
 //!
-//! A non-zero value at a point is a proof that the identity is false (over Q, and modulo the
-//! circles: a multiple of `c^2 + s^2 - 1` with integer coefficients vanishes at every circle point
-//! modulo every `p`). The verdict `holds` is given only when the seed is fresh and the bound is
+//! Without square roots of expressions, a non-zero value at a point is a proof that the identity
+//! is false (over Q, and modulo the circles: a multiple of `c^2 + s^2 - 1` with integer
+//! coefficients vanishes at every circle point modulo every `p`); with them it is not (the roots
+//! are tested for either sign), and the answer is [`RandomDecision::Unconfirmed`]. The verdict `holds` is given only when the seed is fresh and the bound is
 //! below `2^HOLDS_THRESHOLD_LOG2` ([`HOLDS_THRESHOLD_LOG2`] `= -30`); otherwise `undecided` with
 //! the bound (or, with a chosen seed, `Reproduced` without one).
 
 mod algebraic;
 mod ring;
+mod roots;
 
 pub use algebraic::{ExactPoint, FieldBound};
 
@@ -221,6 +224,15 @@ fn ceil_log2(m: usize) -> u64 {
 /// [`BoundError::Input`] for a square root, a non-constant divisor or a non-literal exponent;
 /// [`BoundError::Overflow`] when a bound exceeds `u64`.
 pub fn size_bound(e: &Expr) -> Result<SizeBound, BoundError> {
+    size_bound_in(e, &HashMap::new())
+}
+
+/// [`size_bound`] with the variables of `leaves` bounded as given (the square roots of
+/// expressions, [`roots`]) instead of as variables.
+pub(crate) fn size_bound_in(
+    e: &Expr,
+    leaves: &HashMap<String, SizeBound>,
+) -> Result<SizeBound, BoundError> {
     let of = BoundError::Overflow;
     Ok(match &e.kind {
         ExprKind::Number(q) => SizeBound {
@@ -233,17 +245,18 @@ pub fn size_bound(e: &Expr) -> Result<SizeBound, BoundError> {
             degree: 0,
             den_degree: 0,
         },
+        ExprKind::Var(v) if leaves.contains_key(v) => leaves[v],
         ExprKind::Var(_) => SizeBound {
             num_bits: 0,
             den_bits: 0,
             degree: 1,
             den_degree: 0,
         },
-        ExprKind::Neg(x) => size_bound(x)?,
+        ExprKind::Neg(x) => size_bound_in(x, leaves)?,
         ExprKind::Sum(ts) => {
             let parts = ts
                 .iter()
-                .map(|(_, t)| size_bound(t))
+                .map(|(_, t)| size_bound_in(t, leaves))
                 .collect::<Result<Vec<_>, _>>()?;
             let den_bits = parts
                 .iter()
@@ -282,7 +295,7 @@ pub fn size_bound(e: &Expr) -> Result<SizeBound, BoundError> {
                 den_degree: 0,
             };
             for (op, f) in fs {
-                let b = size_bound(f)?;
+                let b = size_bound_in(f, leaves)?;
                 // Dividing by F_b / D_b multiplies by D_b / F_b.
                 let (num, den, deg, den_deg) = match op {
                     MulOp::Times => (b.num_bits, b.den_bits, b.degree, b.den_degree),
@@ -302,7 +315,7 @@ pub fn size_bound(e: &Expr) -> Result<SizeBound, BoundError> {
                         .into(),
                 )
             })?;
-            let b = size_bound(b)?;
+            let b = size_bound_in(b, leaves)?;
             SizeBound {
                 num_bits: b.num_bits.checked_mul(k).ok_or(of.clone())?,
                 den_bits: b.den_bits.checked_mul(k).ok_or(of.clone())?,
@@ -376,6 +389,9 @@ pub struct RandomReport {
     pub angles: Vec<String>,
     /// Whether a side has `tan` (points where its cosine vanishes are skipped as poles).
     pub tan: bool,
+    /// The square roots of expressions, as written, each a generator `w` with `w^2` its
+    /// radicand ([`roots`]).
+    pub roots: Vec<String>,
 }
 
 /// The outcome of a randomized identity test.
@@ -533,38 +549,49 @@ pub fn random_identity_test(
         ));
     }
     let (lhs, rhs) = (
-        &lower(lhs).map_err(|e| e.to_string())?,
-        &lower(rhs).map_err(|e| e.to_string())?,
+        lower(lhs).map_err(|e| e.to_string())?,
+        lower(rhs).map_err(|e| e.to_string())?,
     );
-    if !(algebraic::needs_preparation(lhs) || algebraic::needs_preparation(rhs)) {
-        return run(lhs, rhs, variables, circles, trials, seed, None);
-    }
     let mut taken: Vec<String> = variables.to_vec();
     lhs.collect_variables(&mut taken);
     rhs.collect_variables(&mut taken);
     taken.extend(circles.iter().flat_map(|(c, s)| [c.clone(), s.clone()]));
+    let (lhs, rhs, roots) = roots::abstract_roots(&lhs, &rhs, &taken)?;
+    let (lhs, rhs) = (&lhs, &rhs);
+    let sides = Sides {
+        lhs,
+        rhs,
+        roots: &roots,
+    };
+    if !(algebraic::needs_preparation(lhs) || algebraic::needs_preparation(rhs)) {
+        return run(&sides, variables, circles, trials, seed, None);
+    }
+    taken.extend(roots.iter().map(|r| r.name.clone()));
     let prepared = algebraic::prepare(lhs, rhs, &taken)?;
     let mut all_circles = circles.to_vec();
     all_circles.extend(prepared.angle_circles.iter().cloned());
     let mut names = Vec::new();
     prepared.lhs.collect_variables(&mut names);
     prepared.rhs.collect_variables(&mut names);
+    // A variable only under a root is one of the point too.
+    for root in &roots {
+        root.radicand.collect_variables(&mut names);
+    }
     let generator = prepared.constants.as_ref().map(|k| k.name.clone());
     let free: Vec<String> = names
         .into_iter()
         .filter(|n| {
-            Some(n) != generator.as_ref() && !all_circles.iter().any(|(c, s)| c == n || s == n)
+            Some(n) != generator.as_ref()
+                && !all_circles.iter().any(|(c, s)| c == n || s == n)
+                && !roots.iter().any(|r| r.name == *n)
         })
         .collect();
-    run(
-        &prepared.lhs,
-        &prepared.rhs,
-        &free,
-        &all_circles,
-        trials,
-        seed,
-        Some(&prepared),
-    )
+    let sides = Sides {
+        lhs: &prepared.lhs,
+        rhs: &prepared.rhs,
+        roots: &roots,
+    };
+    run(&sides, &free, &all_circles, trials, seed, Some(&prepared))
 }
 
 /// The ring of one prime: `Z/pZ`, or the quotient ring of the constants' field.
@@ -573,11 +600,17 @@ enum Modular {
     Quotient(QuotientRing),
 }
 
-/// The sides at one point (residues of the variables in `values`), evaluated in `ring`:
-/// `LHS - RHS`, zero or not.
+/// The sides of the test, the square roots of expressions abstracted ([`roots`]).
+struct Sides<'a> {
+    lhs: &'a Expr,
+    rhs: &'a Expr,
+    roots: &'a [roots::Root],
+}
+
+/// The sides at one point (residues of the variables in `values`), evaluated in `ring`, or in
+/// the tower of the square roots over it: `LHS - RHS`, zero or not.
 fn difference_at<R: Values>(
-    lhs: &Expr,
-    rhs: &Expr,
+    sides: &Sides<'_>,
     ring: &R,
     values: &HashMap<String, u64>,
     embed: &dyn Fn(u64) -> R::V,
@@ -593,8 +626,23 @@ fn difference_at<R: Values>(
         ExprKind::Call(name, _) => unsupported_call(name),
         _ => "sqrt of a non-constant is not supported by --random; run without --random".into(),
     };
-    let l = eval(lhs, ring, &point, &constant, &refused);
-    let r = eval(rhs, ring, &point, &constant, &refused);
+    if sides.roots.is_empty() {
+        return differs(sides, ring, &point, &constant, &refused);
+    }
+    let (tower, lifted) = roots::Tower::at(ring, sides.roots, &point, &constant, &refused)?;
+    differs(sides, &tower, &lifted, &constant, &refused)
+}
+
+/// Whether `LHS - RHS` is non-zero in `ring` at `point`.
+fn differs<R: Values>(
+    sides: &Sides<'_>,
+    ring: &R,
+    point: &HashMap<String, R::V>,
+    constant: &dyn Fn(&str) -> bool,
+    refused: &dyn Fn(&Expr) -> String,
+) -> Result<bool, EvalError> {
+    let l = eval(sides.lhs, ring, point, constant, refused);
+    let r = eval(sides.rhs, ring, point, constant, refused);
     match (l, r) {
         (Ok(a), Ok(b)) => Ok(!ring.is_zero(&ring.sub(&a, &b))),
         (Err(EvalError::Input(m)), _) | (_, Err(EvalError::Input(m))) => Err(EvalError::Input(m)),
@@ -605,18 +653,21 @@ fn difference_at<R: Values>(
 
 /// The test proper, on lowered (and, with `prepared`, rewritten) sides.
 fn run(
-    lhs: &Expr,
-    rhs: &Expr,
+    sides: &Sides<'_>,
     variables: &[String],
     circles: &[(String, String)],
     trials: u32,
     seed: Seed,
     prepared: Option<&Prepared>,
 ) -> Result<RandomDecision, String> {
+    let (lhs, rhs) = (sides.lhs, sides.rhs);
     let k = circles.len() as u64;
-    let bound = match (size_bound(lhs), size_bound(rhs)) {
-        (Err(BoundError::Input(m)), _) | (_, Err(BoundError::Input(m))) => return Err(m),
-        (Ok(l), Ok(r)) => difference_bound(&l, &r, k),
+    let bound = match roots::leaf_bounds(sides.roots)
+        .map(|leaves| (size_bound_in(lhs, &leaves), size_bound_in(rhs, &leaves)))
+    {
+        Err(BoundError::Input(m)) => return Err(m),
+        Ok((Err(BoundError::Input(m)), _) | (_, Err(BoundError::Input(m)))) => return Err(m),
+        Ok((Ok(l), Ok(r))) => difference_bound(&l, &r, k),
         _ => None,
     };
     let modulus = prepared.and_then(Prepared::modulus);
@@ -625,6 +676,9 @@ fn run(
         .and_then(|p| p.constants.as_ref())
         .map(|k| k.name.as_str());
     let mut input = format!("{lhs}\n{rhs}\n{variables:?}\n{circles:?}");
+    for root in sides.roots {
+        input += &format!("\n{} = sqrt({})", root.name, root.radicand);
+    }
     if let Some(k) = prepared.and_then(|p| p.constants.as_ref()) {
         input += &format!("\n{}", k.relation_text());
     }
@@ -664,6 +718,7 @@ fn run(
             field: field_bound.clone(),
             angles: prepared.map(|p| p.angles.clone()).unwrap_or_default(),
             tan: prepared.is_some_and(|p| p.tan),
+            roots: sides.roots.iter().map(|r| r.written.clone()).collect(),
         };
         let mut poles = 0u32;
         let mut done = 0u32;
@@ -687,10 +742,9 @@ fn run(
                 point.insert(s.clone(), sv);
             }
             let differs = match &ring {
-                Modular::Field(f) => difference_at(lhs, rhs, f, &point, &|x| x, None),
+                Modular::Field(f) => difference_at(sides, f, &point, &|x| x, None),
                 Modular::Quotient(q) => difference_at(
-                    lhs,
-                    rhs,
+                    sides,
                     q,
                     &point,
                     &|x| {
@@ -727,6 +781,10 @@ fn run(
             if differs {
                 let mut point: Vec<(String, u64)> = point.into_iter().collect();
                 point.sort_by(|a, b| a.0.cmp(&b.0));
+                if !sides.roots.is_empty() {
+                    let why = roots::NOT_A_REFUTATION.to_string();
+                    return Ok(RandomDecision::Unconfirmed { report, point, why });
+                }
                 let Some(prepared) = prepared else {
                     let value = match &ring {
                         Modular::Field(f) => {
@@ -753,8 +811,9 @@ fn run(
         }
         return Ok(match bound {
             Some(b) => {
-                let log2_bound =
-                    log2_error_bound_in(&b, field_bound.as_ref(), circles.len(), trials);
+                let log2_bound = roots::norm_bound(&b, sides.roots.len()).map_or(0.0, |n| {
+                    log2_error_bound_in(&n, field_bound.as_ref(), circles.len(), trials)
+                });
                 if log2_bound < HOLDS_THRESHOLD_LOG2 && matches!(seed, Seed::Chosen(_)) {
                     RandomDecision::Reproduced { report }
                 } else if log2_bound < HOLDS_THRESHOLD_LOG2 {
