@@ -1,9 +1,10 @@
 //! The benchmark lab of exactcheck (the workspace member `bench/`, not published): the timed
 //! workloads behind the binary `exactcheck-bench`, each printing its check values as text or as
 //! the one JSON line that the anchor scripts in `bench/scripts/anchors` print for other tools, so
-//! that `bench/scripts/compare.py` can run them side by side; the criterion benchmarks
-//! (`bench/benches`) and the probes (`bench/examples`) use the same workloads. Nothing here is
-//! part of the product: the mathematics it times lives in the product crates.
+//! that `bench/scripts/compare.py` can run them side by side; the criterion benchmarks (the
+//! package `exactcheck-criterion` in `bench/criterion/`) and the probes (`bench/examples`) use
+//! the same workloads. Nothing here is part of the product: the mathematics it times lives in
+//! the product crates.
 
 pub mod chiang_identity;
 pub mod cli;

@@ -107,7 +107,7 @@ pub struct HgcdTuning {
 /// The measured tuning: `hgcd_base` and `split` from interleaved timing runs at 10^5 and
 /// 3 10^5 bits (`hgcd_base` 20 to 250 limbs, `split` 0 to 2; larger bases and splits 1, 2 were
 /// faster, within noise of each other from 150 limbs on), re-measured by the criterion group
-/// `hgcd_tuning` of `bench/benches/gcd.rs`; `gcd_lehmer_below` is the crossover
+/// `hgcd_tuning` of `bench/criterion/benches/gcd.rs`; `gcd_lehmer_below` is the crossover
 /// [`super::HGCD_GCD_THRESHOLD`] (group `hgcd_crossover`; handing over at 1500 or 3000 limbs
 /// instead made no measurable difference at 10^6 bits).
 pub const HGCD_TUNING: HgcdTuning = HgcdTuning {

@@ -54,7 +54,7 @@ pub mod hgcd;
 pub use hgcd::{gcd_hgcd_tuned, half_gcd, HalfGcd, HgcdTuning, HGCD_TUNING};
 
 /// Limbs (64 bits) that both operands of [`gcd_biguint`] must have for the half-gcd path;
-/// below it Lehmer's algorithm is faster (measured with criterion, `bench/benches/gcd.rs`,
+/// below it Lehmer's algorithm is faster (measured with criterion, `bench/criterion/benches/gcd.rs`,
 /// group `hgcd_vs_lehmer`).
 pub const HGCD_GCD_THRESHOLD: usize = 4700;
 

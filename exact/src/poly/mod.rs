@@ -95,7 +95,7 @@
 //! # Performance
 //! The benchmark chiang-identity (the claim list at `(m, n) = (8, 13)`: a 9.5 kB expression pair
 //! over 74 variables, 5,841 terms) parses, expands and compares these polynomials; the criterion
-//! bench `bench/benches/poly.rs` and the side-by-side comparison with SymPy and python-flint
+//! bench `bench/criterion/benches/poly.rs` and the side-by-side comparison with SymPy and python-flint
 //! (`bench/scripts/compare.py`) measure it, and `docs/benchmarks.md` has the latest figures. A
 //! large share of the time is coefficient arithmetic in [`crate::Rational`].
 

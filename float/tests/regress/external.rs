@@ -15,10 +15,10 @@ const PATIENT: Duration = Duration::from_secs(30);
 
 /// The C example of docs/regress.md, byte for byte (one file, also regressed end to end through the CLI by
 /// `tests/regress_text.rs`).
-const C_SQRTDIFF: &str = include_str!("../../tests/regress/cancel.c");
+const C_SQRTDIFF: &str = include_str!("../../../tests/regress/cancel.c");
 
 /// The Python example of docs/regress.md, byte for byte (likewise).
-const PY_SQRTDIFF: &str = include_str!("../../tests/regress/cancel.py");
+const PY_SQRTDIFF: &str = include_str!("../../../tests/regress/cancel.py");
 
 /// A directory of its own for one test, under cargo's scratch directory for integration tests;
 /// its name has a space so that commands need quoting.
