@@ -369,6 +369,11 @@ pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
             }
         }
     }
+    let sides: Vec<&Expr> = lhs.iter().chain(rhs.iter().flatten()).collect();
+    let tied: Vec<(&Expr, &Expr)> = relations.iter().map(|(a, b)| (a, b)).collect();
+    if let Some(why) = exactcheck_exact::expr::library::diff_against_relations(&sides, &tied) {
+        return Err(Error::Input(format!("--where: {why}")));
+    }
     if args.random.is_some() && !nonzero.is_empty() {
         return Err(Error::Usage(
             "--random does not take hypotheses ('w != 0'); run without --random".into(),

@@ -124,6 +124,11 @@ fn identity<C: PointField + Display>(
         ),
     };
     let k = constants.map(|f| &f.k);
+    let sides: Vec<&Expr> = lhs_in.iter().chain(rhs_in.iter()).collect();
+    let tied: Vec<(&Expr, &Expr)> = relations_in.iter().map(|(a, b)| (a, b)).collect();
+    if let Some(why) = exactcheck_exact::expr::library::diff_against_relations(&sides, &tied) {
+        return Err(Fault::Input("where", why));
+    }
     let mut vars = Vars::new();
     // `sqrt` of a non-constant becomes a variable with its relation and sign condition.
     vars.allow_roots();

@@ -67,7 +67,7 @@ use matrix::*;
 pub(crate) use tree::map_tree;
 pub(crate) use tree::substitute;
 use tree::{at_pos, collect_calls};
-pub use tree::{count_nodes, has_sqrt, substitute_free};
+pub use tree::{count_nodes, diff_against_relations, has_sqrt, substitute_free};
 
 /// The largest number of nodes of a resolved expression.
 pub const MAX_NODES: usize = 500_000;

@@ -179,3 +179,45 @@ pub fn has_sqrt(e: &Expr) -> bool {
     map_tree(e, &mut |x| found |= matches!(x.kind, ExprKind::Sqrt(_)));
     found
 }
+
+/// Why `diff` cannot be read in the presence of `relations`, or `None`: a `diff(E, t)` in
+/// `sides` whose `E` has a variable `y` other than `t` that a relation ties to `t`. A relation
+/// holds at points and does not make `y` a function of `t`: `diff(y, t)` is 0 with `y` and `t`
+/// independent, which is not the derivative the relation `y = t^2` suggests. The caller refuses
+/// such an identity instead of proving a statement about partial derivatives that may not be
+/// the one meant.
+pub fn diff_against_relations(sides: &[&Expr], relations: &[(&Expr, &Expr)]) -> Option<String> {
+    let mut related: Vec<Vec<String>> = Vec::new();
+    for (a, b) in relations {
+        let mut vs = Vec::new();
+        a.collect_variables(&mut vs);
+        b.collect_variables(&mut vs);
+        related.push(vs);
+    }
+    let mut found = None;
+    for side in sides {
+        map_tree(side, &mut |x| {
+            let ExprKind::Call(name, args) = &x.kind else {
+                return;
+            };
+            let (true, Some(body), Some(ExprKind::Var(t))) = (
+                name == "diff" && found.is_none(),
+                args.first(),
+                args.get(1).map(|a| &a.kind),
+            ) else {
+                return;
+            };
+            let mut vs = Vec::new();
+            body.collect_variables(&mut vs);
+            for y in vs.iter().filter(|y| *y != t) {
+                if related.iter().any(|r| r.contains(y) && r.contains(t)) {
+                    found = Some(format!(
+                        "{x} differentiates in {t} an expression with {y}, and a relation ties {y} to {t}: relations hold at points and do not make {y} a function of {t} (diff treats {y} as independent); substitute the relation into the expression first"
+                    ));
+                    return;
+                }
+            }
+        });
+    }
+    found
+}
