@@ -835,7 +835,7 @@ fn reduce_circle<V: exactcheck_core::Ring>(q: &Poly<V>, c: Var, s: Var) -> Poly<
         }
         let mut t = Poly::from_terms([(exps, a.clone())]);
         for _ in 0..e / 2 {
-            t = t * one_minus_c2.clone();
+            t *= one_minus_c2.clone();
         }
         out = out.add_ref(&t);
     }

@@ -69,7 +69,7 @@ pub(super) fn total_derivative<C: Coefficient>(
     if let Some((c, s, unit)) = angle_of::<C>(vars, t, pos)? {
         let (cp, sp) = (Poly::<C>::var(c), Poly::<C>::var(s));
         let chain = (poly_derivative(p, s) * cp).sub_ref(&(poly_derivative(p, c) * sp));
-        d = d + chain.scale(&unit);
+        d += chain.scale(&unit);
     }
     if vars.roots().iter().any(|r| p.degree_in(r.var) > 0) {
         for (y, radicand) in radicands::<C>(vars)? {
