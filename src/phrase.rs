@@ -23,8 +23,8 @@ pub mod random;
 
 pub use random::{phrase_random, RandomOptions, RandomPhrased};
 
-use exactcheck_exact::expr::describe_point;
 use exactcheck_exact::expr::library::Shape;
+use exactcheck_exact::expr::{constant_base, describe_point, lindemann_weierstrass, Angle};
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
     factored, real_zero_free, where_clause, AlgebraicConstants, ConstantPoint, ConstantValue,
@@ -118,6 +118,10 @@ pub struct Phrasing<'a> {
     pub constants: Option<&'a AlgebraicConstants>,
     /// The exact counter-example found at the generator of the constants' field.
     pub constant_point: Option<ConstantPoint>,
+    /// The constant angle (`1` of `sin(1)`), when the statement has one: its cosine and sine are
+    /// no coordinates of a counter-example, and a value in them is non-zero by
+    /// Lindemann–Weierstrass.
+    pub constant_angle: Option<Angle>,
 }
 
 impl<'a> Phrasing<'a> {
@@ -179,6 +183,7 @@ impl<'a> Phrasing<'a> {
             pi: None,
             constants: None,
             constant_point: None,
+            constant_angle: constant_base(vars).map(|(a, _)| a),
         }
     }
 
@@ -350,18 +355,32 @@ impl<'a> Phrasing<'a> {
         point: &RadicalPoint,
     ) -> Option<String> {
         let pi = self.pi?;
-        let residual = match spec.coordinates.get(k)? {
-            Statement::Sides(l, r) if l.is_polynomial() && r.is_polynomial() => {
-                l.numerator().clone() - r.numerator()
-            }
-            Statement::Sides(l, r) => FractionIdentity::new(l, r).ok()?.residual,
-            Statement::Residual(p) => p.clone(),
-        };
+        let residual = residual(spec, k)?;
         Some(
             in_pi::<C>(&residual, point, pi)
                 .display(self.vars)
                 .to_string(),
         )
+    }
+
+    /// The value of a failing component at its counter-example as a polynomial in the cosine
+    /// and sine of the constant angle, reduced modulo their circle, and the sentence that says
+    /// why it is not zero, when the statement has a constant angle.
+    fn value_in_constant_angle<C: PointField + Display>(
+        &self,
+        spec: &IdentitySpec<C>,
+        k: usize,
+        point: &RadicalPoint,
+    ) -> Option<(String, String)> {
+        let angle = self.constant_angle.as_ref()?;
+        let q = in_constant_angle(spec, k, point, angle, self.pi)?;
+        if q.degree_in(angle.cos) == 0 && q.degree_in(angle.sin) == 0 {
+            return None;
+        }
+        Some((
+            q.display(self.vars).to_string(),
+            lindemann_weierstrass(&angle.name),
+        ))
     }
 
     /// The evidence of the verdict (one line).
@@ -465,7 +484,14 @@ impl<'a> Phrasing<'a> {
                 } else {
                     format!("at {at}{rel}: ")
                 };
-                match self.value_in_pi(spec, k, point) {
+                if let Some((in_angle, why)) = self.value_in_constant_angle(spec, k, point) {
+                    format!(
+                        "{place}{at_rel}{s}{} = {in_angle}, {why}; {s}{} reduces{modulo} to {nf}",
+                        cleared(k),
+                        cleared(k)
+                    )
+                } else {
+                    match self.value_in_pi(spec, k, point) {
                     Some(in_pi) => format!(
                         "{place}{at_rel}{s}{} = {in_pi}, a non-zero polynomial in pi, and pi is transcendental, so it is not zero; {s}{} reduces{modulo} to {nf}",
                         cleared(k),
@@ -485,6 +511,7 @@ impl<'a> Phrasing<'a> {
                             format!("{place}{at_rel}{s} = {value}; {s} reduces{modulo} to {nf}, so LHS = RHS + ({nf})")
                         }
                     }
+                }
                 }
             }
             IdentityVerdict::Undecided {
@@ -717,18 +744,23 @@ impl<'a> Phrasing<'a> {
             normal_form,
         } = &r.verdict
         {
+            let angle = self.constant_angle.as_ref();
             obj["point"] = point
                 .iter()
                 .filter(|(v, _)| Some(*v) != self.pi)
+                .filter(|(v, _)| !angle.is_some_and(|a| [a.cos, a.sin].contains(v)))
                 .map(|(v, q)| (self.name(*v).to_string(), json!(q.to_string())))
                 .collect::<serde_json::Map<_, _>>()
                 .into();
             if shape != Shape::Scalar {
                 obj["failing_component"] = json!(shape.component(*coordinate));
             }
-            obj["value"] = match self.value_in_pi(spec, *coordinate, point) {
-                Some(v) => json!(v),
-                None => json!(value.to_string()),
+            obj["value"] = match (
+                self.value_in_constant_angle(spec, *coordinate, point),
+                self.value_in_pi(spec, *coordinate, point),
+            ) {
+                (Some((v, _)), _) | (None, Some(v)) => json!(v),
+                (None, None) => json!(value.to_string()),
             };
             obj["normal_form"] = json!(normal_form.display(vars).to_string());
         }
@@ -784,6 +816,62 @@ pub fn named_point(point: &ConstantPoint, vars: &Vars) -> Vec<(String, String)> 
         .iter()
         .map(|(v, q)| (vars.name(*v).unwrap_or("?").to_string(), q.to_string()))
         .collect()
+}
+
+/// The residual of component `k` (`LHS - RHS` with the denominators cleared).
+pub fn residual<C: PointField>(spec: &IdentitySpec<C>, k: usize) -> Option<Poly<C>> {
+    Some(match spec.coordinates.get(k)? {
+        Statement::Sides(l, r) if l.is_polynomial() && r.is_polynomial() => {
+            l.numerator().clone() - r.numerator()
+        }
+        Statement::Sides(l, r) => FractionIdentity::new(l, r).ok()?.residual,
+        Statement::Residual(p) => p.clone(),
+    })
+}
+
+/// The residual of component `k` at a counter-example with every variable fixed but pi and the
+/// cosine and sine of the constant angle, reduced modulo the angle's circle (`sin(u)^2 = 1 -
+/// cos(u)^2`). It is not zero: its value at the point's rational values of `cos(u)`, `sin(u)`
+/// (on the circle) and pi is the engine's non-zero value; so, without pi, it is a non-zero
+/// polynomial in `cos(u)`, `sin(u)` modulo the circle, non-zero at the angle `u` by
+/// Lindemann–Weierstrass.
+pub fn in_constant_angle<C: PointField>(
+    spec: &IdentitySpec<C>,
+    k: usize,
+    point: &RadicalPoint,
+    angle: &Angle,
+    pi: Option<Var>,
+) -> Option<Poly<C::Value>> {
+    let mut q = residual(spec, k)?.map_coeffs(C::lift);
+    for (v, x) in point {
+        if Some(*v) != pi && *v != angle.cos && *v != angle.sin {
+            q = q.substitute(*v, &Poly::constant(C::lift_radical(x)));
+        }
+    }
+    Some(reduce_circle(&q, angle.cos, angle.sin))
+}
+
+/// `q` modulo `c^2 + s^2 - 1`: every `s^2` replaced by `1 - c^2`, so that `q` is linear in `s`
+/// (the unique normal form of that relation).
+fn reduce_circle<V: exactcheck_core::Ring>(q: &Poly<V>, c: Var, s: Var) -> Poly<V> {
+    use exactcheck_core::Ring;
+    let one_minus_c2 = Poly::from_terms([(vec![], V::one()), (vec![(c, 2)], V::one().neg_ref())]);
+    let mut out = Poly::zero();
+    for (m, a) in q.terms() {
+        let mut exps = m.exponents();
+        let e = exps.iter().find(|(v, _)| *v == s).map_or(0, |x| x.1);
+        exps.retain(|(v, _)| *v != s);
+        if e % 2 == 1 {
+            exps.push((s, 1));
+            exps.sort_unstable();
+        }
+        let mut t = Poly::from_terms([(exps, a.clone())]);
+        for _ in 0..e / 2 {
+            t *= one_minus_c2.clone();
+        }
+        out = out.add_ref(&t);
+    }
+    out
 }
 
 /// The residual at a counter-example with every variable but pi fixed: a polynomial in pi, not

@@ -43,7 +43,8 @@ use clap::Args;
 use exactcheck_core::Ring;
 use exactcheck_exact::expr::library::{self, Shape};
 use exactcheck_exact::expr::{
-    angles, first_reserved, has_trig, ratfun_sides, Coefficient, Expr, ExprError, PI,
+    angle_variable, angles, constant_base, first_reserved, has_constant_angle, has_trig,
+    ratfun_sides, register_angle_bases, Coefficient, Expr, ExprError, PI,
 };
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
@@ -443,7 +444,9 @@ fn prove_algebraic_constants(
             Err(ExprError::NoSqrt { .. } | ExprError::BadCall { .. })
         )
     };
-    if !names.is_empty() || !(refused(lhs) || rhs.is_some_and(refused)) {
+    // `sin(1)` has no algebraic value: such statements are decided with the constant angle.
+    let constant_angle = has_constant_angle(lhs) || rhs.is_some_and(has_constant_angle);
+    if !names.is_empty() || constant_angle || !(refused(lhs) || rhs.is_some_and(refused)) {
         return Ok(None);
     }
     // Pi outside an angle has no algebraic value: such a side (`pi*sqrt(2 + sqrt(2))`) is a
@@ -517,6 +520,15 @@ pub(crate) fn prove_over<C: PointField + Display>(
     let mut vars = Vars::new();
     // `sqrt` of a non-constant becomes a variable with its relation and sign condition.
     vars.allow_roots();
+    // The base angles of everything decided together (`x/2` for `sin(x/2)` and `sin(x)`).
+    let decided: Vec<&Expr> = sides
+        .lhs
+        .iter()
+        .chain(sides.rhs.into_iter().flatten())
+        .chain(relations.iter().flat_map(|(a, b)| [a, b]))
+        .chain(nonzero.iter().flat_map(|(a, b, _)| [a, b]))
+        .collect();
+    register_angle_bases(&decided, &mut vars).map_err(|e| Error::Input(e.to_string()))?;
     let mut coordinates = Vec::new();
     for (k, lhs) in sides.lhs.iter().enumerate() {
         let what = |side: &str| match sides.shape {
@@ -569,12 +581,8 @@ pub(crate) fn prove_over<C: PointField + Display>(
             RatFun::from_poly(Poly::zero()),
         ));
     }
-    let Angles {
-        list: angle_list,
-        pi,
-        pi_in_relations,
-        mixed,
-    } = add_angles(&vars, &mut rels);
+    let angles = add_angles(&vars, &mut rels);
+    let (angle_list, pi) = (&angles.list, angles.pi);
     // The minimal polynomial of the constants' primitive element (after the angles, so that it
     // does not count as a relation of the user's).
     let constant_domain = match constants {
@@ -638,10 +646,14 @@ pub(crate) fn prove_over<C: PointField + Display>(
         Error::Input(format!("{part}: {}", phrasing.error(&e)))
     })?;
     let mut report = report;
-    sound_counter_example(&mut report, pi_in_relations, &mixed);
+    sound_counter_example(&spec, &mut report, &angles);
     // With algebraic constants, a non-zero reduction gets its counter-example at c = theta.
+    // (Not with a constant angle: the search would give its cosine and sine rational values.)
     phrasing.constant_point = constants
-        .and_then(|k| crate::prove_cmd::constants::settle(k, &spec, &mut report, pi, &mixed));
+        .filter(|_| constant_base(&spec.vars).is_none())
+        .and_then(|k| {
+            crate::prove_cmd::constants::settle(k, &spec, &mut report, pi, &angles.mixed)
+        });
     let code = match phrasing.verdict(&report) {
         Verdict::Proved | Verdict::Holds => ExitCode::SUCCESS,
         Verdict::Fails | Verdict::Undecided => ExitCode::from(1),
@@ -663,18 +675,22 @@ pub(crate) fn prove_over<C: PointField + Display>(
 /// variable is also an angle (the point gives the variable and the cosine and sine of the angle
 /// independent values).
 pub fn sound_counter_example<C: PointField>(
+    spec: &IdentitySpec<C>,
     report: &mut IdentityReport<C>,
-    pi_in_relations: bool,
-    mixed: &[String],
+    angles: &Angles,
 ) {
-    let why = if pi_in_relations {
+    let why = if angles.pi_in_relations {
         "a relation involves pi, and the counter-example search satisfies it with pi a rational value, not at pi".to_string()
-    } else if !mixed.is_empty() {
+    } else if let Some(u) = &angles.constant_in_relations {
+        format!("a relation involves cos({u}) or sin({u}), and the counter-example search satisfies it with them at a rational point of their circle, not at the constant angle {u}")
+    } else if !angles.mixed.is_empty() {
         format!(
             "{} {} both as a number and as an angle of sin, cos or tan, and the counter-example search gives a number and the angle's cosine and sine independent values",
-            mixed.join(", "),
-            if mixed.len() == 1 { "occurs" } else { "occur" }
+            angles.mixed.join(", "),
+            if angles.mixed.len() == 1 { "occurs" } else { "occur" }
         )
+    } else if let Some(why) = pi_with_constant_angle(spec, report, angles) {
+        why
     } else {
         return;
     };
@@ -692,6 +708,34 @@ pub fn sound_counter_example<C: PointField>(
     }
 }
 
+/// Why a counter-example of a statement with pi and a constant angle is none: its value there is
+/// a polynomial in pi and the angle's cosine and sine, and whether pi and `e^{iu}` are
+/// algebraically independent is not known.
+fn pi_with_constant_angle<C: PointField>(
+    spec: &IdentitySpec<C>,
+    report: &IdentityReport<C>,
+    angles: &Angles,
+) -> Option<String> {
+    let pi = angles.pi?;
+    let IdentityVerdict::Fails {
+        coordinate, point, ..
+    } = &report.verdict
+    else {
+        return None;
+    };
+    let (angle, _) = constant_base(&spec.vars)?;
+    let q = crate::phrase::in_constant_angle(spec, *coordinate, point, &angle, Some(pi))?;
+    let in_angle = q.degree_in(angle.cos) > 0 || q.degree_in(angle.sin) > 0;
+    (in_angle && q.degree_in(pi) > 0).then(|| {
+        let u = &angle.name;
+        format!(
+            "there it is {}, a non-zero polynomial in pi, cos({u}) and sin({u}), and whether pi \
+             and cos({u}) + i sin({u}) are algebraically independent is not known",
+            q.display(&spec.vars)
+        )
+    })
+}
+
 /// The angles of sin, cos and tan in a statement, and what decides whether its counter-examples
 /// are sound ([`sound_counter_example`]).
 pub struct Angles {
@@ -702,6 +746,9 @@ pub struct Angles {
     pub pi: Option<Var>,
     /// Whether a relation of the user's involves pi.
     pub pi_in_relations: bool,
+    /// The constant angle (`1`), when a relation of the user's or of a square root involves its
+    /// cosine or sine.
+    pub constant_in_relations: Option<String>,
     /// The angles that are also used as numbers.
     pub mixed: Vec<String>,
 }
@@ -730,13 +777,24 @@ pub fn add_angles<C: PointField>(
     });
     let mixed = list
         .iter()
-        .filter(|a| vars.get(&a.name).is_some())
-        .map(|a| a.name.clone())
+        .filter_map(|a| angle_variable(&a.name))
+        .filter(|x| vars.get(x).is_some())
         .collect();
+    let constant_in_relations = constant_base(vars).and_then(|(a, base)| {
+        let involved = relations[..user_relations].iter().any(|(f, g)| {
+            [f, g].iter().any(|f| {
+                [a.cos, a.sin]
+                    .iter()
+                    .any(|&v| f.numerator().degree_in(v) > 0 || f.denominator().degree_in(v) > 0)
+            })
+        });
+        involved.then(|| base.name())
+    });
     Angles {
         list,
         pi,
         pi_in_relations,
+        constant_in_relations,
         mixed,
     }
 }

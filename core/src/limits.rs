@@ -223,8 +223,10 @@ declare_limits! {
     /// Terms of a `sum(k, a, b, E)`, each an expansion of `E`; the terms of nested sums count
     /// together (an inner sum's terms for every term of the outer one).
     SUM_TERMS = ("sum-terms", "terms of a sum", "", 100_000);
-    /// Absolute value of the integer multiple `k` of an angle variable in `sin`, `cos`, `tan`
-    /// (`sin(k x)` expands to a Chebyshev polynomial of degree `k` with `k`-bit coefficients).
+    /// Absolute value of the integer multiple `k` of a base angle in `sin`, `cos`, `tan`: of an
+    /// angle variable `x`, or of `x/L` when `x` has coefficients with denominators (`L` their
+    /// lcm), or of the constant angle (`sin(k x)` expands to a Chebyshev polynomial of degree `k`
+    /// with `k`-bit coefficients).
     ANGLE_MULTIPLE = ("angle-multiple", "multiple of an angle variable", "", 1_000);
     /// S-polynomial reductions of one Groebner basis computation.
     GROEBNER_STEPS = ("groebner-steps", "Groebner basis steps", "", 150);

@@ -266,8 +266,12 @@ pub fn phrase_random(
             "fails",
             None,
             format!(
-                "at {}: LHS - RHS = {}, not zero: evaluated exactly after LHS - RHS was non-zero at a random point modulo p{notes}",
-                exact.point.join(", "),
+                "{}LHS - RHS = {}, not zero: evaluated exactly after LHS - RHS was non-zero at a random point modulo p{notes}",
+                if exact.point.is_empty() {
+                    String::new()
+                } else {
+                    format!("at {}: ", exact.point.join(", "))
+                },
                 exact.value
             ),
         ),

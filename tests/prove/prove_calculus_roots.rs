@@ -143,6 +143,13 @@ fn trigonometric_polynomials_integrate_exactly() {
 }
 
 #[test]
+fn a_constant_bound_of_a_trigonometric_integral_is_an_angle() {
+    let (code, out, err) = run(&["prove", "integrate(sin(t), t, 0, 1)", "1 - cos(1)"]);
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(out.starts_with("proved: "), "{out}");
+}
+
+#[test]
 fn trigonometric_integrals_refuse_bounds_that_are_not_angles() {
     for (l, says) in [
         (
@@ -150,8 +157,8 @@ fn trigonometric_integrals_refuse_bounds_that_are_not_angles() {
             "the bound x^2, which is not an angle",
         ),
         (
-            "integrate(sin(t), t, 0, 1)",
-            "the bound 1, which is not an angle",
+            "integrate(sin(t), t, 0, sqrt(2))",
+            "the bound sqrt(2), which is not an angle",
         ),
         (
             "integrate(tan(t), t, 0, x)",

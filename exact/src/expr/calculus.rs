@@ -343,12 +343,13 @@ fn integrate_arguments<'a>(
 }
 
 /// The variables of `vars` that change with the variable `t`: `t` itself, the cosine and sine
-/// of the angle `t`, and the square roots whose radicand has `t` as a free variable.
+/// of the base angle of `t` (`t`, or `t/L`), and the square roots whose radicand has `t` as a
+/// free variable.
 fn moving_with(vars: &Vars, t: &str) -> Vec<Var> {
-    let mut out: Vec<Var> = [t.to_string(), cos_name(t), sin_name(t)]
-        .iter()
-        .filter_map(|name| vars.get(name))
-        .collect();
+    let mut out: Vec<Var> = vars.get(t).into_iter().collect();
+    if let Some((angle, _)) = super::angle_base::variable_base(vars, t) {
+        out.extend([angle.cos, angle.sin]);
+    }
     for root in vars.roots() {
         let mut names = Vec::new();
         root.radicand_expr().collect_variables(&mut names);

@@ -42,11 +42,14 @@ fn only_pi(e: &Expr) -> bool {
 }
 
 /// Whether `e` is a leaf candidate: `sqrt` of a constant or a trigonometric function of a
-/// constant angle.
+/// constant angle that is a multiple of pi (`sin(1)` has no algebraic value: it stays, the
+/// cosine and sine of the constant base angle).
 fn is_leaf(e: &Expr) -> bool {
     let shape = match &e.kind {
         ExprKind::Sqrt(_) => true,
-        ExprKind::Call(name, _) => Trig::from_name(name).is_some(),
+        ExprKind::Call(name, _) => {
+            Trig::from_name(name).is_some() && !super::trig::is_transcendental_constant(e)
+        }
         _ => false,
     };
     shape && only_pi(e)
@@ -74,15 +77,16 @@ fn split_terms(args: &[Expr]) -> Option<(String, String)> {
 }
 
 /// The trigonometric call `e` (`which` of `args`) with an angle `A + r pi`, `A` with variables
-/// and `r != 0`, split by the addition formulas; `None` when the angle has no such two parts
-/// (or is malformed: the conversion reports that).
+/// or a rational number and `r != 0`, split by the addition formulas; `None` when the angle has
+/// no such two parts (or is malformed: the conversion reports that).
 fn split_angle(e: &Expr, which: Trig, args: &[Expr]) -> Option<Expr> {
     let (a, r) = match linear_angle(e, which.name(), args) {
-        Ok(angle) if angle.terms.is_empty() || angle.pi.is_zero() => return None,
-        Ok(angle) => (
-            linear_text(&angle.terms),
-            super::trig::angle_text(&angle.pi),
-        ),
+        Ok(angle)
+            if (angle.terms.is_empty() && angle.constant.is_zero()) || angle.pi.is_zero() =>
+        {
+            return None
+        }
+        Ok(angle) => (linear_text(&angle), super::trig::angle_text(&angle.pi)),
         Err(_) => split_terms(args)?,
     };
     let (sa, ca) = (format!("sin({a})"), format!("cos({a})"));
@@ -98,21 +102,30 @@ fn split_angle(e: &Expr, which: Trig, args: &[Expr]) -> Option<Expr> {
     Some(at_pos(&parsed, e.pos))
 }
 
-/// An integer combination of variables as text (`2*x - y`).
-fn linear_text(terms: &[(String, i64)]) -> String {
+/// The part of an angle without pi as text: its rational combination of variables and its
+/// rational constant (`(1/2)*x - y + (1)`).
+fn linear_text(angle: &super::trig::LinearAngle) -> String {
     let mut a = String::new();
-    for (i, (x, k)) in terms.iter().enumerate() {
-        let sign = match (i, *k < 0) {
+    let parts = angle
+        .terms
+        .iter()
+        .map(|(x, k)| (Some(x.as_str()), k))
+        .chain((!angle.constant.is_zero()).then_some((None, &angle.constant)));
+    for (i, (x, k)) in parts.enumerate() {
+        let negative = k.signum() == exactcheck_core::Sign::Negative;
+        let sign = match (i, negative) {
             (0, false) => "",
             (0, true) => "-",
             (_, false) => " + ",
             (_, true) => " - ",
         };
-        let times = match k.unsigned_abs() {
-            1 => String::new(),
-            n => format!("{n}*"),
+        let k = if negative { k.neg_ref() } else { k.clone() };
+        let term = match x {
+            Some(x) if k.is_one() => x.to_string(),
+            Some(x) => format!("({k})*{x}"),
+            None => format!("({k})"),
         };
-        a += &format!("{sign}{times}{x}");
+        a += &format!("{sign}{term}");
     }
     a
 }
@@ -133,7 +146,7 @@ fn walk(
             if let Some(split) = split_angle(e, which, args) {
                 return walk(&split, leaf);
             }
-            // An angle is an integer combination of variables plus a multiple of pi:
+            // An angle is a rational combination of variables plus a number, without pi:
             // nothing in it to rewrite.
             return Ok(e.clone());
         }

@@ -1,7 +1,8 @@
 //! Total derivatives of converted expressions: `diff(E, t)` once `E` is a polynomial or a
 //! rational function in the variables of a table. Besides `t` itself, two kinds of variables
 //! of the table change with `t`, and the chain rule takes each into account:
-//! * the cosine and sine of the angle `t`: `d cos t/dt = -sin t`, `d sin t/dt = cos t`;
+//! * the cosine and sine of the base angle `t/L` of `t` (`L = 1`: `t` itself):
+//!   `d cos(t/L)/dt = -sin(t/L)/L`, `d sin(t/L)/dt = cos(t/L)/L`;
 //! * a square root `y = sqrt(R)` (a variable standing for the root, see [`Vars::roots`])
 //!   whose radicand `R` changes with `t`: `dy/dt = (dR/dt) / (2 y)`, a fraction whose divisor
 //!   `y` is recorded as a condition (the derivative exists where `R > 0`). `dR/dt` is itself a
@@ -15,8 +16,8 @@
 //! Written here rather than taken from a computer-algebra crate: it works on the workspace's
 //! own polynomial and rational-function types, whose variables stand for these functions.
 
+use super::angle_base::{variable_base, Base};
 use super::eval::size_error;
-use super::trig::{cos_name, sin_name};
 use super::*;
 use crate::poly::{Poly, Var, Vars};
 use crate::ratfun::{poly_derivative, Fraction, RatFun};
@@ -32,9 +33,25 @@ fn radicands<C: Coefficient>(vars: &Vars) -> Result<Vec<(Var, Poly<C>)>, ExprErr
         .collect()
 }
 
-/// The cosine and sine variables of the angle `t`, when the table has them.
-fn angle_of(vars: &Vars, t: &str) -> Option<(Var, Var)> {
-    Some((vars.get(&cos_name(t))?, vars.get(&sin_name(t))?))
+/// The cosine and sine variables of the base angle `t/L` of `t`, when the table has them, with
+/// the chain rule's factor `1/L` over `C`.
+fn angle_of<C: Coefficient>(
+    vars: &Vars,
+    t: &str,
+    pos: usize,
+) -> Result<Option<(Var, Var, C)>, ExprError> {
+    let Some((angle, base)) = variable_base(vars, t) else {
+        return Ok(None);
+    };
+    let unit = match &base {
+        Base::Variable { unit, .. } => unit.clone(),
+        Base::Constant(_) => return Ok(None),
+    };
+    let factor = C::from_rational(&unit).ok_or_else(|| ExprError::Unrepresentable {
+        pos,
+        number: unit.to_string(),
+    })?;
+    Ok(Some((angle.cos, angle.sin, factor)))
 }
 
 /// `d/dt` of a polynomial (module documentation). A root of the table that changes with `t`
@@ -49,9 +66,10 @@ pub(super) fn total_derivative<C: Coefficient>(
         Some(v) => poly_derivative(p, v),
         None => Poly::zero(),
     };
-    if let Some((c, s)) = angle_of(vars, t) {
+    if let Some((c, s, unit)) = angle_of::<C>(vars, t, pos)? {
         let (cp, sp) = (Poly::<C>::var(c), Poly::<C>::var(s));
-        d = d.sub_ref(&(poly_derivative(p, c) * sp)) + poly_derivative(p, s) * cp;
+        let chain = (poly_derivative(p, s) * cp).sub_ref(&(poly_derivative(p, c) * sp));
+        d += chain.scale(&unit);
     }
     if vars.roots().iter().any(|r| p.degree_in(r.var) > 0) {
         for (y, radicand) in radicands::<C>(vars)? {
@@ -87,14 +105,14 @@ pub(super) fn total_derivative_ratfun<C: Coefficient + Field>(
         Some(v) => f.derivative(v).map_err(size)?,
         None => f.mul(&RatFun::from_poly(Poly::zero())).map_err(size)?,
     };
-    if let Some((c, s)) = angle_of(vars, t) {
+    if let Some((c, s, unit)) = angle_of::<C>(vars, t, pos)? {
         let by_c = f
             .derivative(c)
-            .and_then(|x| x.mul(&RatFun::from_poly(Poly::<C>::var(s))))
+            .and_then(|x| x.mul(&RatFun::from_poly(Poly::<C>::var(s).scale(&unit))))
             .map_err(size)?;
         let by_s = f
             .derivative(s)
-            .and_then(|x| x.mul(&RatFun::from_poly(Poly::<C>::var(c))))
+            .and_then(|x| x.mul(&RatFun::from_poly(Poly::<C>::var(c).scale(&unit))))
             .map_err(size)?;
         d = d
             .add(&by_c, true)
@@ -148,7 +166,12 @@ pub(super) fn total_derivative_fraction<C: Field>(
         Some(v) => f.derivative(v)?,
         None => f.mul(&Fraction::from_poly(Poly::zero()))?,
     };
-    if let Some((c, s)) = angle_of(vars, t) {
+    if let Some((angle, base)) = variable_base(vars, t) {
+        // The chain rule's factor of a base angle `t/L` is left to the rational form.
+        if !base.unit().is_one() {
+            return None;
+        }
+        let (c, s) = (angle.cos, angle.sin);
         let by_c = f
             .derivative(c)?
             .mul(&Fraction::from_poly(Poly::<C>::var(s)))?;

@@ -34,13 +34,14 @@ impl Expr {
                     .first()
                     .is_some_and(|e| e.has_fractions() || has_variable_root(e)),
                 "integrate" | "sum" => args.iter().any(Expr::has_fractions),
-                "tan" => args.iter().any(Expr::has_variable),
+                "tan" => self.has_variable(),
                 _ => false,
             },
         }
     }
 
-    /// Whether a variable occurs in the tree.
+    /// Whether a variable occurs in the tree (or the cosine or sine of a constant angle that is
+    /// no multiple of pi, which the conversion makes variables).
     pub(super) fn has_variable(&self) -> bool {
         match &self.kind {
             ExprKind::Number(_) => false,
@@ -49,7 +50,10 @@ impl Expr {
             ExprKind::Pow(a, b) => a.has_variable() || b.has_variable(),
             ExprKind::Sum(ts) => ts.iter().any(|(_, t)| t.has_variable()),
             ExprKind::Product(fs) => fs.iter().any(|(_, f)| f.has_variable()),
-            ExprKind::Call(_, args) => args.iter().any(Expr::has_variable),
+            // `sin(1)` is the sine of the constant base angle, a variable of the conversion.
+            ExprKind::Call(_, args) => {
+                args.iter().any(Expr::has_variable) || super::trig::is_transcendental_constant(self)
+            }
         }
     }
 

@@ -130,6 +130,7 @@ use exactcheck_core::Ring;
 use num_bigint::BigInt;
 use num_traits::Signed;
 
+mod angle_base;
 mod calculus;
 #[cfg(test)]
 mod calculus_tests;
@@ -204,13 +205,17 @@ pub fn first_reserved<'a>(exprs: impl IntoIterator<Item = &'a Expr>) -> Option<&
     }
     names.iter().find_map(|n| reserved_constant(n))
 }
+pub use angle_base::{
+    angle_variable, constant_base, lindemann_weierstrass, register_angle_bases, variable_base, Base,
+};
 pub use trig::{
-    angle_of, angles, cos_name, describe_point, expand_angles, has_trig, sin_name, trig_constant,
-    Angle, Trig, TrigRefusal, TRIG_DENOMINATORS,
+    angle_of, angles, cos_name, describe_point, expand_angles, expand_angles_in,
+    has_constant_angle, has_trig, sin_name, trig_constant, Angle, Trig, TrigRefusal,
+    TRIG_DENOMINATORS,
 };
 
-/// The trigonometric functions (`sin`, `cos`, `tan` of an angle: an integer combination of angle
-/// variables plus a rational multiple of [`PI`]); see [`Trig`].
+/// The trigonometric functions (`sin`, `cos`, `tan` of an angle: a rational combination of angle
+/// variables plus a rational number and a rational multiple of [`PI`]); see [`Trig`].
 pub const TRIG_FUNCTIONS: &[&str] = &["sin", "cos", "tan"];
 
 /// The name of the constant pi. It is never a free variable: in a constant it has no exact

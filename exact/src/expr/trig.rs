@@ -1,16 +1,21 @@
-//! Angles: `sin`, `cos` and `tan` of an integer combination of angle variables plus a rational
-//! multiple of `pi`, converted exactly to polynomials in the cosine and sine of each angle.
+//! Angles: `sin`, `cos` and `tan` of a rational combination of angle variables plus a rational
+//! number and a rational multiple of `pi`, converted exactly to polynomials in the cosine and
+//! sine of base angles.
 //!
-//! An angle variable `x` becomes two variables of the table, named `cos(x)` and `sin(x)` (names
-//! no identifier can take, so they never collide with a user's variable, and a printed
-//! polynomial in them reads back to the same polynomial). The caller adds the relation
-//! `cos(x)^2 + sin(x)^2 = 1` for every angle of the table ([`angles`]); modulo these relations
-//! the normal form that is linear in each `sin(x)` is unique, so a trigonometric polynomial is
-//! identically zero exactly when its normal form is.
+//! Each part of an angle is an integer multiple of a base angle ([`super::angle_base`]): an
+//! angle variable `x` of `x/L` (`L` the lcm of the denominators of its coefficients in what is
+//! decided together; `x` itself when they are integers), the rational number part of the
+//! constant angle `u`. A base angle `a` becomes two variables of the table, named `cos(a)` and
+//! `sin(a)` (`cos(x)`, `cos(x/2)`, `cos(1)`: names no identifier can take, so they never collide
+//! with a user's variable, and a printed polynomial in them reads back to the same polynomial).
+//! The caller adds the relation `cos(a)^2 + sin(a)^2 = 1` for every angle of the table
+//! ([`angles`]); modulo these relations the normal form that is linear in each `sin(a)` is
+//! unique, so a trigonometric polynomial is identically zero exactly when its normal form is
+//! (for the constant angle by Lindemann–Weierstrass: the circle is its only algebraic relation).
 //!
-//! * `k x` expands by the multiple-angle formulas: `cos(k x) = T_k(cos x)`,
-//!   `sin(k x) = sin x U_{k-1}(cos x)` with the Chebyshev polynomials `T`, `U` (already reduced:
-//!   linear in `sin x`); `|k|` is bounded by the `angle-multiple` limit
+//! * `k a` expands by the multiple-angle formulas: `cos(k a) = T_k(cos a)`,
+//!   `sin(k a) = sin a U_{k-1}(cos a)` with the Chebyshev polynomials `T`, `U` (already reduced:
+//!   linear in `sin a`); `|k|` is bounded by the `angle-multiple` limit
 //!   ([`limits::ANGLE_MULTIPLE`]) before anything is expanded;
 //! * sums expand by the addition formulas, as the product of the complex numbers
 //!   `cos a + i sin a`;
@@ -21,6 +26,7 @@
 //! Written here rather than taken from a computer-algebra crate: the formulas are a few lines
 //! over the workspace's own polynomial type, which the proof engine and its limits already use.
 
+use super::angle_base::{base_multiple, Base, Part};
 use super::eval::size_error;
 use super::*;
 use crate::poly::{Poly, Var, Vars};
@@ -89,7 +95,9 @@ pub fn angle_of(var: &str) -> Option<(&str, Trig)> {
 
 /// A counter-example's values, `name = value`, with every angle's cosine and sine written as one
 /// angle: `cos(x) = 3/5, sin(x) = 4/5` becomes `x = angle with cos x = 3/5, sin x = 4/5`, in the
-/// place of its first variable.
+/// place of its first variable, and `cos(x/2) = 3/5, sin(x/2) = 4/5` becomes
+/// `x = angle with cos(x/2) = 3/5, sin(x/2) = 4/5`. The constant angle (`cos(1)`, `sin(1)`) is
+/// no coordinate of a point: its values are left out.
 pub fn describe_point(point: &[(String, String)]) -> Vec<String> {
     let mut out = Vec::new();
     let mut done = Vec::new();
@@ -100,11 +108,20 @@ pub fn describe_point(point: &[(String, String)]) -> Vec<String> {
                     continue;
                 }
                 done.push(a);
+                let base = Base::of_name(a);
+                let Some(x) = base.variable() else {
+                    continue;
+                };
                 let find = |n: String| point.iter().find(|(w, _)| *w == n).map(|(_, x)| x);
                 match (find(cos_name(a)), find(sin_name(a))) {
-                    (Some(c), Some(s)) => {
+                    (Some(c), Some(s)) if base.unit().is_one() => {
                         out.push(format!("{a} = angle with cos {a} = {c}, sin {a} = {s}"))
                     }
+                    (Some(c), Some(s)) => out.push(format!(
+                        "{x} = angle with {} = {c}, {} = {s}",
+                        cos_name(a),
+                        sin_name(a)
+                    )),
                     _ => out.push(format!("{v} = {q}")),
                 }
             }
@@ -250,15 +267,21 @@ pub(crate) use crate::coefficient::angle_text;
 
 // ------------------------------------------------------------------------------ arguments
 
-/// An angle `sum k_i x_i + r pi`: integer multiples of angle variables and a rational multiple
-/// of pi.
+/// An angle `sum c_i x_i + r + s pi`: rational multiples of angle variables, a rational number
+/// (radians) and a rational multiple of pi.
 #[derive(Clone, Debug, PartialEq)]
 pub(super) struct LinearAngle {
-    /// The angle variables and their integer multiples (non-zero), in order of appearance.
-    pub terms: Vec<(String, i64)>,
+    /// The angle variables and their multiples (non-zero), in order of appearance.
+    pub terms: Vec<(String, Rational)>,
+    /// The rational number part (`1` in `sin(x + 1)`).
+    pub constant: Rational,
     /// The multiple of pi.
     pub pi: Rational,
 }
+
+/// What an angle may be, for the refusals.
+pub(super) const ANGLE_FORM: &str = "angles are rational combinations of angle variables plus a \
+     rational number and a rational multiple of pi, such as x/2 - y + 1 + pi/3";
 
 /// The argument of the call `call` (`name(arg)`) as an angle, or why it is not one.
 pub(super) fn linear_angle(
@@ -277,10 +300,21 @@ pub(super) fn linear_angle(
             format!("takes one argument (an angle), not {}", args.len()),
         ));
     };
-    let form = "angles are integer combinations of angle variables plus a rational multiple of \
-                pi, such as 2*x - y + pi/3";
+    let form = ANGLE_FORM;
     let mut scratch = Vars::new();
-    let p: Poly<Rational> = arg.to_poly(&mut scratch)?;
+    let p: Poly<Rational> = match arg.to_poly(&mut scratch) {
+        Ok(p) => p,
+        Err(ExprError::NoSqrt { .. }) => {
+            return Err(bad(
+                arg.pos,
+                format!(
+                    "the angle {arg} is irrational (its sine has no exact value, and it is not \
+                     an angle variable); {form}"
+                ),
+            ))
+        }
+        Err(e) => return Err(e),
+    };
     if scratch.names().iter().any(|n| angle_of(n).is_some()) {
         return Err(bad(
             arg.pos,
@@ -288,51 +322,18 @@ pub(super) fn linear_angle(
         ));
     }
     let mut terms = Vec::new();
+    let mut constant = Rational::ZERO;
     let mut pi = Rational::ZERO;
     for (m, c) in p.terms() {
         match m.exponents().as_slice() {
-            [] => {
-                let what = if p.len() == 1 {
-                    format!("the angle {arg}")
-                } else {
-                    format!("the constant part {c} of the angle {arg}")
-                };
-                return Err(bad(
-                    arg.pos,
-                    format!(
-                        "{what} is not a rational multiple of pi (its sine is transcendental); \
-                         {form}"
-                    ),
-                ));
-            }
+            [] => constant = c.clone(),
             [(v, 1)] => {
                 let var = scratch.name(*v).expect("a variable of the scratch table");
                 if var == PI {
                     pi = c.clone();
                     continue;
                 }
-                if !c.is_integer() {
-                    return Err(bad(
-                        arg.pos,
-                        format!(
-                            "the coefficient {c} of {var} in {arg} is not an integer; {form} \
-                             (write {var} = 2*y for a half angle y)"
-                        ),
-                    ));
-                }
-                let k = c.numer();
-                let limit = |found: String| ExprError::Limit {
-                    pos: arg.pos,
-                    error: limits::ANGLE_MULTIPLE.exceeded(found),
-                };
-                let k = match k.to_i64() {
-                    Some(k) => k,
-                    None => return Err(limit(format!("an integer of {} bits", k.bits()))),
-                };
-                limits::ANGLE_MULTIPLE
-                    .check(k.unsigned_abs())
-                    .map_err(|_| limit(k.unsigned_abs().to_string()))?;
-                terms.push((*v, var.to_string(), k));
+                terms.push((*v, var.to_string(), c.clone()));
             }
             _ => {
                 return Err(bad(
@@ -347,6 +348,7 @@ pub(super) fn linear_angle(
     terms.sort_by_key(|t| t.0);
     Ok(LinearAngle {
         terms: terms.into_iter().map(|(_, x, k)| (x, k)).collect(),
+        constant,
         pi,
     })
 }
@@ -400,14 +402,23 @@ pub(super) fn cos_sin<C: Coefficient>(
             number: b.to_string(),
         })
     };
-    for (x, k) in &angle.terms {
-        let (cv, sv) = (vars.var(&cos_name(x)), vars.var(&sin_name(x)));
-        limits::VARIABLES
-            .check(u64::from(cv.max(sv)) + 1)
-            .map_err(|error| ExprError::Limit {
-                pos: call.pos,
-                error,
-            })?;
+    // Every part as a multiple of its base angle (`angle_base`): the variables' and the
+    // rational constant's.
+    let mut multiples = Vec::new();
+    for (x, c) in &angle.terms {
+        multiples.push(base_multiple(vars, Part::Variable(x), c, &args[0], name)?);
+    }
+    if !angle.constant.is_zero() {
+        multiples.push(base_multiple(
+            vars,
+            Part::Constant,
+            &angle.constant,
+            &args[0],
+            name,
+        )?);
+    }
+    for (cv, sv, k) in &multiples {
+        let (cv, sv) = (*cv, *sv);
         let (t, u) = chebyshev(k.unsigned_abs() as usize);
         let mut cos_terms = Vec::new();
         for (i, a) in t.iter().enumerate().filter(|(_, a)| !a.is_zero()) {
@@ -483,44 +494,58 @@ pub(super) fn trig_ratfun<C: Coefficient + Field>(
 }
 
 /// `e` with every `sin`, `cos` and `tan` replaced by its polynomial in the variables `cos(x)`,
-/// `sin(x)` of its angle variables (the expansion of the conversion, [`cos_sin`]) and `tan` by
-/// the quotient `sin/cos`, the rest of the tree kept as written: for evaluators that work on the
+/// `sin(x)` of its base angles (the expansion of the conversion, [`cos_sin`]; `cos(x/2)`,
+/// `sin(x/2)` when `x` has a half, `cos(1)`, `sin(1)` for the constant angle) and `tan` by the
+/// quotient `sin/cos`, the rest of the tree kept as written: for evaluators that work on the
 /// tree (the randomized identity test), which then treat `cos(x)`, `sin(x)` as variables on the
-/// unit circle ([`angles`] names them). The constant part of an angle must have a rational
-/// cosine and sine (callers split other multiples of pi off first,
-/// [`super::abstract_constants`]).
+/// unit circle ([`angles`] names them). The bases are `e`'s own
+/// ([`super::register_angle_bases`]); [`expand_angles_in`] expands with a table's. The multiple
+/// of pi of an angle must have a rational cosine and sine (callers split other multiples of pi
+/// off first, [`super::abstract_constants`]).
 ///
 /// ```
 /// use exactcheck_exact::expr::{expand_angles, parse_expr};
 /// let e = expand_angles(&parse_expr("sin(2*x) + tan(y)").unwrap()).unwrap();
 /// assert_eq!(e.to_string(), "2*cos(x)*sin(x) + sin(y)/cos(y)");
+/// let e = expand_angles(&parse_expr("sin(x) + cos(x/2)").unwrap()).unwrap();
+/// assert_eq!(e.to_string(), "2*cos(x/2)*sin(x/2) + cos(x/2)");
 /// ```
 ///
 /// # Errors
-/// The conversion's errors of a call: an angle that is not an integer combination of variables
-/// plus a multiple of pi, an angle multiple past the `angle-multiple` limit, a constant part
-/// whose value is irrational, `tan` where the cosine is zero.
+/// The conversion's errors of a call: an angle that is not a rational combination of variables
+/// plus a constant, an angle multiple past the `angle-multiple` limit, a multiple of pi whose
+/// value is irrational, `tan` where the cosine is zero.
 pub fn expand_angles(e: &Expr) -> Result<Expr, ExprError> {
+    let mut vars = Vars::new();
+    super::register_angle_bases(&[e], &mut vars)?;
+    expand_angles_in(e, &mut vars)
+}
+
+/// [`expand_angles`] with the base angles of `vars` (entered by
+/// [`super::register_angle_bases`] for everything expanded together).
+///
+/// # Errors
+/// Those of [`expand_angles`].
+pub fn expand_angles_in(e: &Expr, vars: &mut Vars) -> Result<Expr, ExprError> {
     if let ExprKind::Call(name, args) = &e.kind {
         if let Some(which) = Trig::from_name(name) {
-            let mut vars = Vars::new();
-            let (c, s) = cos_sin::<Rational>(e, name, args, &mut vars)?;
+            let (c, s) = cos_sin::<Rational>(e, name, args, vars)?;
             return Ok(match which {
-                Trig::Cos => c.to_expr(&vars),
-                Trig::Sin => s.to_expr(&vars),
+                Trig::Cos => c.to_expr(vars),
+                Trig::Sin => s.to_expr(vars),
                 Trig::Tan => {
                     if c.is_zero() {
                         return Err(undefined_tan(e, args));
                     }
                     Expr::new(ExprKind::Product(vec![
-                        (MulOp::Times, s.to_expr(&vars)),
-                        (MulOp::Divide, c.to_expr(&vars)),
+                        (MulOp::Times, s.to_expr(vars)),
+                        (MulOp::Divide, c.to_expr(vars)),
                     ]))
                 }
             });
         }
     }
-    e.try_map_children(expand_angles)
+    e.try_map_children(|x| expand_angles_in(x, vars))
 }
 
 /// `tan` of an angle whose cosine is identically zero.
@@ -547,7 +572,53 @@ pub(super) fn trig_value<C: Coefficient>(
             hint: "",
         });
     }
+    if !angle.constant.is_zero() {
+        return Err(transcendental_value(which.name(), args, &angle));
+    }
     trig_constant::<C>(&angle.pi, which).map_err(|why| refused_call(call.pos, which.name(), why))
+}
+
+/// The refusal of an exact value for an angle with a rational constant part (`sin(1)`): by
+/// Lindemann–Weierstrass its cosine and sine are transcendental.
+fn transcendental_value(name: &str, args: &[Expr], angle: &LinearAngle) -> ExprError {
+    let arg = &args[0];
+    let what = if angle.pi.is_zero() {
+        format!("the angle {arg}")
+    } else {
+        format!("the constant part {} of the angle {arg}", angle.constant)
+    };
+    ExprError::BadCall {
+        pos: arg.pos,
+        name: name.to_string(),
+        why: format!(
+            "{what} is not a rational multiple of pi (its sine is transcendental): it has no \
+             exact value (an identity with it is still decided, by prove or an identity claim)"
+        ),
+    }
+}
+
+/// Whether the call `e` is `sin`, `cos` or `tan` of a constant angle with a rational part
+/// (`sin(1)`, `cos(2 + pi/3)`): a constant without an exact value, decided as the cosine and
+/// sine of the constant base angle ([`super::angle_base`]).
+pub(super) fn is_transcendental_constant(e: &Expr) -> bool {
+    let ExprKind::Call(name, args) = &e.kind else {
+        return false;
+    };
+    Trig::from_name(name).is_some()
+        && linear_angle(e, name, args).is_ok_and(|a| a.terms.is_empty() && !a.constant.is_zero())
+}
+
+/// Whether the tree has an angle with a rational number part (`sin(1)`, `cos(x + 1/2)`): its
+/// statements are decided with the constant base angle ([`super::angle_base`]), not by value.
+pub fn has_constant_angle(e: &Expr) -> bool {
+    let mut found = false;
+    super::library::map_tree(e, &mut |x| {
+        if let ExprKind::Call(name, args) = &x.kind {
+            found |= Trig::from_name(name).is_some()
+                && linear_angle(x, name, args).is_ok_and(|a| !a.constant.is_zero());
+        }
+    });
+    found
 }
 
 /// Whether the tree calls `sin`, `cos` or `tan`.
@@ -577,8 +648,10 @@ pub(super) mod tests {
     /// Decides `lhs = rhs` with the circles of the angles.
     pub(in crate::expr) fn decide_trig(lhs: &str, rhs: &str) -> Decision<Radical> {
         let mut vars = Vars::new();
-        let l: RatFun<Radical> = parse_expr(lhs).unwrap().to_ratfun(&mut vars).unwrap();
-        let r: RatFun<Radical> = parse_expr(rhs).unwrap().to_ratfun(&mut vars).unwrap();
+        let (l, r) = (parse_expr(lhs).unwrap(), parse_expr(rhs).unwrap());
+        crate::expr::register_angle_bases(&[&l, &r], &mut vars).unwrap();
+        let l: RatFun<Radical> = l.to_ratfun(&mut vars).unwrap();
+        let r: RatFun<Radical> = r.to_ratfun(&mut vars).unwrap();
         let res = l
             .numerator()
             .try_mul(r.denominator())
@@ -691,6 +764,7 @@ pub(super) mod tests {
         );
         assert!(err("sin(x)").contains("'x'"), "{}", err("sin(x)"));
         assert!(err("sin(1)").contains("not a rational multiple of pi"));
+        assert!(err("cos(2 + pi/3)").contains("the constant part 2"));
         assert!(err("cos(pi/5)").contains("not supported"));
         assert!(err("pi").contains("transcendental"), "{}", err("pi"));
         let mut vars = Vars::new();
@@ -702,13 +776,94 @@ pub(super) mod tests {
                 .to_string()
         };
         assert!(conv("sin(x^2)", &mut vars).contains("not linear"));
-        assert!(conv("sin(x/2)", &mut vars).contains("not an integer"));
+        // An integrand with a fraction of the integration variable's angle is refused.
+        let half = conv("integrate(sin(t/2), t, 0, x)", &mut Vars::new());
+        assert!(half.contains("t/2"), "{half}");
+        let irrational = conv("sin(sqrt(2))", &mut vars);
+        assert!(irrational.contains("is irrational"), "{irrational}");
         assert!(conv("sin(x y)", &mut vars).contains("not linear"));
         assert!(conv("sin(sin(x))", &mut vars).contains("contains sin or cos"));
         assert!(conv("sin(x, y)", &mut vars).contains("one argument"));
         assert!(conv("sin(100000 x)", &mut vars).contains("angle-multiple"));
         assert!(conv("tan(x)", &mut vars).contains("non-constant"));
         assert!(conv("diff(x, pi)", &mut vars).contains("pi is a constant"));
+    }
+
+    /// `text` parsed, with a table holding its base angles.
+    fn with_bases(text: &str) -> (Expr, Vars) {
+        let e = parse_expr(text).unwrap();
+        let mut vars = Vars::new();
+        crate::expr::register_angle_bases(&[&e], &mut vars).unwrap();
+        (e, vars)
+    }
+
+    fn fails(lhs: &str, rhs: &str) -> bool {
+        matches!(decide_trig(lhs, rhs), Decision::Fails { value, .. } if !value.is_zero())
+    }
+
+    #[test]
+    fn half_angles_and_rational_multiples() {
+        // Weierstrass: t = tan(x/2).
+        assert!(proved("sin(x)", "2 tan(x/2)/(1 + tan(x/2)^2)"));
+        assert!(proved("cos(x)", "(1 - tan(x/2)^2)/(1 + tan(x/2)^2)"));
+        assert!(proved("tan(x)", "2 tan(x/2)/(1 - tan(x/2)^2)"));
+        assert!(proved("cos(x)", "1 - 2 sin(x/2)^2"));
+        assert!(proved("sin(x/2)^2", "(1 - cos(x))/2"));
+        assert!(proved("cos(3x/4)", "4 cos(x/4)^3 - 3 cos(x/4)"));
+        assert!(proved("sin(x/2 + x/3)", "sin(5x/6)"));
+        assert!(proved("cos(x/2 - y)", "cos(x/2) cos(y) + sin(x/2) sin(y)"));
+        assert!(fails("sin(x)", "2 tan(x/2)/(1 - tan(x/2)^2)"));
+        assert!(fails("cos(x)", "1 - 2 cos(x/2)^2"));
+        assert!(fails("sin(x/2)", "sin(x)/2"));
+        // The base angle's variables read back: x/6 for the denominators 2 and 3.
+        let (e, mut vars) = with_bases("sin(x/2) + cos(2x/3)");
+        let p: Poly<Rational> = e.to_poly(&mut vars).unwrap();
+        assert_eq!(vars.names()[..2], ["cos(x/6)", "sin(x/6)"]);
+        let again: Poly<Rational> = parse_expr(&p.display(&vars).to_string())
+            .unwrap()
+            .to_poly(&mut vars)
+            .unwrap();
+        assert_eq!(p, again);
+        // The multiple in the base angle is what the limit bounds.
+        let (e, mut vars) = with_bases("sin(x/1001) + sin(x)");
+        let err = e.to_poly::<Rational>(&mut vars).unwrap_err().to_string();
+        assert!(
+            err.contains("angle-multiple") && err.contains("1001 times"),
+            "{err}"
+        );
+        // Converted apart, the second expression finds a base it is no multiple of.
+        let mut vars = Vars::new();
+        radical_poly("sin(x)", &mut vars);
+        let err = parse_expr("sin(x/2)")
+            .unwrap()
+            .to_poly::<Radical>(&mut vars)
+            .unwrap_err()
+            .to_string();
+        assert!(err.contains("base angle x"), "{err}");
+    }
+
+    #[test]
+    fn constant_angles_decided_by_lindemann_weierstrass() {
+        assert!(proved("sin(2)", "2 sin(1) cos(1)"));
+        assert!(proved("cos(1)^2 + sin(1)^2", "1"));
+        assert!(proved("cos(1/2)^2", "(1 + cos(1))/2"));
+        assert!(proved("sin(2 + pi/3)", "sin(2)/2 + sqrt(3)/2 cos(2)"));
+        assert!(proved("tan(1)", "sin(1)/cos(1)"));
+        assert!(proved("sin(x + 1)", "sin(x) cos(1) + cos(x) sin(1)"));
+        assert!(proved("1/sin(1)", "sin(1)/(1 - cos(1)^2)"));
+        // A constant bound of an integral is an angle too.
+        assert!(proved("integrate(sin(t), t, 0, 1)", "1 - cos(1)"));
+        assert!(fails("sin(1)", "0"));
+        assert!(fails("sin(2)", "2 sin(1)"));
+        assert!(fails("cos(2)", "1 - sin(1)^2"));
+        // The constant angle is the rational gcd of the constant parts: 2/3 for 2 and 4/3.
+        let (_, vars) = with_bases("sin(2) + cos(4/3)");
+        assert_eq!(vars.names(), ["cos(2/3)", "sin(2/3)"]);
+        assert_eq!(
+            crate::expr::constant_base(&vars).map(|(_, b)| b),
+            Some(Base::Constant(Rational::new(2, 3).unwrap()))
+        );
+        assert!(crate::expr::lindemann_weierstrass("2/3").contains("e^(2 i/3)"));
     }
 
     #[test]
@@ -720,6 +875,10 @@ pub(super) mod tests {
         assert!(proved("diff(sin(x), x, 4)", "sin(x)"));
         assert!(proved("diff(sin(y), x)", "0"));
         assert!(!proved("diff(sin(2x), x)", "cos(2x)"));
+        assert!(proved("diff(sin(x/2), x)", "cos(x/2)/2"));
+        assert!(proved("diff(tan(x/2), x)", "(1 + tan(x/2)^2)/2"));
+        assert!(proved("diff(x cos(x/3), x)", "cos(x/3) - x sin(x/3)/3"));
+        assert!(!proved("diff(sin(x/2), x)", "cos(x/2)"));
     }
 
     #[test]
@@ -736,6 +895,16 @@ pub(super) mod tests {
         assert_eq!(
             describe_point(&point),
             ["a = angle with cos a = 3/5, sin a = 4/5", "x = 2"]
+        );
+        let point = [
+            ("cos(1)".to_string(), "0".to_string()),
+            ("sin(1)".to_string(), "1".to_string()),
+            ("cos(a/2)".to_string(), "3/5".to_string()),
+            ("sin(a/2)".to_string(), "4/5".to_string()),
+        ];
+        assert_eq!(
+            describe_point(&point),
+            ["a = angle with cos(a/2) = 3/5, sin(a/2) = 4/5"]
         );
     }
 

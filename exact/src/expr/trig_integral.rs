@@ -313,10 +313,6 @@ mod tests {
                 "the bound x^2, which is not an angle",
             ),
             (
-                "integrate(sin(t), t, 0, 1)",
-                "the bound 1, which is not an angle",
-            ),
-            (
                 "integrate(sin(t), t, 0, sqrt(2))",
                 "the bound sqrt(2), which is not an angle",
             ),

@@ -132,6 +132,16 @@ fn identity<C: PointField + Display>(
     let mut vars = Vars::new();
     // `sqrt` of a non-constant becomes a variable with its relation and sign condition.
     vars.allow_roots();
+    // The base angles of everything decided together (`x/2` for `sin(x/2)` and `sin(x)`).
+    let decided: Vec<&Expr> = lhs_in
+        .iter()
+        .chain(rhs_in.iter())
+        .chain(corrected_in.into_iter().flatten())
+        .chain(relations_in.iter().flat_map(|(a, b)| [a, b]))
+        .chain(nonzero_in.iter().flat_map(|(a, b, _)| [a, b]))
+        .collect();
+    exactcheck_exact::expr::register_angle_bases(&decided, &mut vars)
+        .map_err(|e| Fault::Input("lhs", e.to_string()))?;
     let mut coordinates = Vec::new();
     for (l, r) in lhs_in.iter().zip(rhs_in) {
         let (l, r) = exactcheck_exact::expr::ratfun_sides::<C>(l, r, &mut vars)
@@ -185,12 +195,8 @@ fn identity<C: PointField + Display>(
     }
     // Every angle `x` of sin, cos, tan: its cosine and sine lie on the unit circle. pi is the
     // transcendental constant: an indeterminate while deciding.
-    let crate::prove_cmd::Angles {
-        list: angle_list,
-        pi,
-        pi_in_relations,
-        mixed,
-    } = crate::prove_cmd::add_angles(&vars, &mut relations);
+    let angles = crate::prove_cmd::add_angles(&vars, &mut relations);
+    let (angle_list, pi) = (&angles.list, angles.pi);
     // The minimal polynomial of the constants' primitive element and its isolating interval
     // (after the angles, so that it does not count as a relation of the claim's).
     let constant_domain = match k {
@@ -253,10 +259,12 @@ fn identity<C: PointField + Display>(
         Fault::Input(key, phrasing.error(&e))
     })?;
     let mut report = report;
-    crate::prove_cmd::sound_counter_example(&mut report, pi_in_relations, &mixed);
-    // With algebraic constants, a non-zero reduction gets its counter-example at c = theta.
-    phrasing.constant_point =
-        k.and_then(|k| prove_constants::settle(k, &spec, &mut report, pi, &mixed));
+    crate::prove_cmd::sound_counter_example(&spec, &mut report, &angles);
+    // With algebraic constants, a non-zero reduction gets its counter-example at c = theta (not
+    // with a constant angle: the search would give its cosine and sine rational values).
+    phrasing.constant_point = k
+        .filter(|_| exactcheck_exact::expr::constant_base(&spec.vars).is_none())
+        .and_then(|k| prove_constants::settle(k, &spec, &mut report, pi, &angles.mixed));
     let method = phrasing.method::<C>();
     let evidence = phrasing.evidence(&spec, &report);
     let correction_problem = phrasing.correction_problem(&report);

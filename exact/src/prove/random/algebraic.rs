@@ -14,9 +14,10 @@
 
 use super::ring::{constant_exponent, eval, EvalError, ExactField, Rationals, Values};
 use crate::expr::{
-    abstract_constants, angle_of, cos_name, describe_point, expand_angles, has_trig, sin_name,
-    Expr, ExprKind, PI,
+    abstract_constants, angle_of, angle_variable, cos_name, describe_point, expand_angles_in,
+    has_trig, lindemann_weierstrass, register_angle_bases, sin_name, Expr, ExprKind, PI,
 };
+use crate::poly::Vars;
 use crate::prove::{small_height_rationals, AlgebraicConstants, CONSTANT_ATTEMPTS};
 use crate::Rational;
 use exactcheck_core::limits;
@@ -91,7 +92,7 @@ fn calls_tan(e: &Expr) -> bool {
 ///
 /// # Errors
 /// A constant the evaluator refuses (`tan(pi/2)`, `sqrt(-2)`), the field of the constants past
-/// a limit, an angle that is not an integer combination of variables plus a multiple of pi.
+/// a limit, an angle that is not a rational combination of variables plus constants.
 pub(crate) fn prepare(lhs: &Expr, rhs: &Expr, taken: &[String]) -> Result<Prepared, String> {
     let tan = calls_tan(lhs) || calls_tan(rhs);
     let mut leaves = Vec::new();
@@ -104,9 +105,12 @@ pub(crate) fn prepare(lhs: &Expr, rhs: &Expr, taken: &[String]) -> Result<Prepar
         Some(k) => (k.fill(&l), k.fill(&r)),
         None => (l, r),
     };
+    // Both sides expand in the same base angles (`x/2` for `sin(x/2)` and `sin(x)`).
+    let mut bases = Vars::new();
+    register_angle_bases(&[&l, &r], &mut bases).map_err(|e| e.to_string())?;
     let (l, r) = (
-        expand_angles(&l).map_err(|e| e.to_string())?,
-        expand_angles(&r).map_err(|e| e.to_string())?,
+        expand_angles_in(&l, &mut bases).map_err(|e| e.to_string())?,
+        expand_angles_in(&r, &mut bases).map_err(|e| e.to_string())?,
     );
     let mut names = Vec::new();
     l.collect_variables(&mut names);
@@ -192,7 +196,12 @@ pub(crate) fn confirm(
                 .into(),
         );
     }
-    let mixed: Vec<&String> = p.angles.iter().filter(|a| free.contains(a)).collect();
+    let mixed: Vec<String> = p
+        .angles
+        .iter()
+        .filter_map(|a| angle_variable(a))
+        .filter(|x| free.contains(x))
+        .collect();
     if !mixed.is_empty() {
         return Err(format!(
             "{} {} both as a number and as an angle of sin, cos or tan, and a rational point gives the number and the angle's cosine and sine independent values",
@@ -252,6 +261,26 @@ pub(crate) fn confirm(
                 .iter()
                 .map(|(v, q)| (v.clone(), q.to_string()))
                 .collect();
+            // The constant angle's cosine and sine took a rational point of their circle, not
+            // their values: LHS - RHS, a polynomial in them, is non-zero there, so non-zero
+            // modulo the circle, and at the angle itself by Lindemann–Weierstrass.
+            let value = match p.angles.iter().find(|a| angle_variable(a).is_none()) {
+                Some(u) => {
+                    let at = |n: String| {
+                        shown
+                            .iter()
+                            .find(|(v, _)| *v == n)
+                            .map_or("?", |(_, q)| q.as_str())
+                    };
+                    format!(
+                        "{value} at the point cos({u}) = {}, sin({u}) = {} of their circle, so it is {}",
+                        at(cos_name(u)),
+                        at(sin_name(u)),
+                        lindemann_weierstrass(u)
+                    )
+                }
+                None => value,
+            };
             return Ok(ExactPoint {
                 point: describe_point(&shown),
                 value,
