@@ -70,6 +70,7 @@ impl Rational {
     pub const ONE: Rational = Rational(Repr::Small(1, 1));
 
     /// The integer `n`.
+    #[inline]
     pub fn from_integer(n: i64) -> Rational {
         Rational(Repr::Small(n as i128, 1))
     }
@@ -869,6 +870,7 @@ impl Ord for Rational {
 }
 
 impl Default for Rational {
+    #[inline]
     fn default() -> Self {
         Rational::ZERO
     }
