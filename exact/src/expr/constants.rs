@@ -81,9 +81,7 @@ fn split_terms(args: &[Expr]) -> Option<(String, String)> {
 /// no such two parts (or is malformed: the conversion reports that).
 fn split_angle(e: &Expr, which: Trig, args: &[Expr]) -> Option<Expr> {
     let (a, r) = match linear_angle(e, which.name(), args) {
-        Ok(angle)
-            if (angle.terms.is_empty() && angle.constant.is_zero()) || angle.pi.is_zero() =>
-        {
+        Ok(angle) if (angle.terms.is_empty() && angle.constant.is_zero()) || angle.pi.is_zero() => {
             return None
         }
         Ok(angle) => (linear_text(&angle), super::trig::angle_text(&angle.pi)),
