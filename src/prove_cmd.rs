@@ -129,12 +129,7 @@ pub fn split_where(text: &str) -> Vec<String> {
     if parts.len() == 1 {
         return vec![text.to_string()];
     }
-    let is_name = |p: &str| {
-        let mut cs = p.chars();
-        cs.next()
-            .is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
-            && cs.all(|c| c.is_ascii_alphanumeric() || c == '_')
-    };
+    let is_name = exactcheck_exact::expr::library::is_name;
     // `a, b, c > 0`: the leading bare names take the last part's comparison.
     let last = parts[parts.len() - 1];
     let head = last

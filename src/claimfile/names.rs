@@ -15,14 +15,7 @@
 
 use std::collections::HashMap;
 
-/// Whether `name` is a variable name of the expression syntax (`[A-Za-z_][A-Za-z0-9_]*`).
-pub fn is_name(name: &str) -> bool {
-    let mut chars = name.chars();
-    chars
-        .next()
-        .is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
-        && chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
-}
+pub use exactcheck_exact::expr::library::is_name;
 
 /// The optimal-string-alignment distance (Levenshtein with adjacent swaps) of two short names.
 fn distance(a: &[char], b: &[char]) -> usize {

@@ -259,8 +259,9 @@ fn err<T>(message: String) -> R<T> {
     Err(ResolveError { def: None, message })
 }
 
-/// Whether `s` is a name: letters, digits and `_`, not starting with a digit.
-fn is_name(s: &str) -> bool {
+/// Whether `s` is a name of the expression syntax (`[A-Za-z_][A-Za-z0-9_]*`): letters, digits
+/// and `_`, not starting with a digit.
+pub fn is_name(s: &str) -> bool {
     s.chars()
         .next()
         .is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
