@@ -175,3 +175,23 @@ fn capped_products_stop_past_the_cap() {
         SizeError::Limit(exactcheck_core::limits::DEGREE.exceeded(u32::MAX.to_string()))
     );
 }
+
+#[test]
+fn unit_term_times_polynomial_of_fewer_and_more_words() {
+    // The term's coefficient is 1: the coefficients are copied and the monomials added, also
+    // when the factors have different numbers of words (x20 needs three words at 8 bits).
+    let half = Rational::new(1, 2).unwrap();
+    let p = P::constant(half.clone()) * x(20) + P::constant(q(-3)) * x(1) * x(1) + P::from_i64(7);
+    let expected = P::from_terms([
+        (vec![(0, 1), (20, 1)], half.clone()),
+        (vec![(0, 1), (1, 2)], q(-3)),
+        (vec![(0, 1)], q(7)),
+    ]);
+    assert_eq!(x(0) * p.clone(), expected);
+    assert_eq!(p.clone() * x(0), expected);
+    let big = P::monomial(q(1), &[(30, 2)]);
+    let product = &big * &p;
+    assert!(product.is_canonical());
+    assert_eq!(product.coefficients(), &[half, q(-3), q(7)][..]);
+    assert_eq!(product.degree_in(30), 2);
+}

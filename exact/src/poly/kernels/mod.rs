@@ -684,6 +684,14 @@ pub(super) fn mul_term<C: Ring>(
     let w = m.len();
     debug_assert!(wg <= w);
     let mut exps = Vec::with_capacity(gc.len() * w);
+    if c.is_one() {
+        // A unit coefficient (a variable or a monomial times a polynomial): the coefficients
+        // are copied, none becomes zero, and no coefficient product is formed.
+        for j in 0..gc.len() {
+            push_product_padded(&mut exps, &ge[j * wg..(j + 1) * wg], m);
+        }
+        return Some((exps, gc.to_vec()));
+    }
     let mut coeffs = Vec::with_capacity(gc.len());
     for (j, g) in gc.iter().enumerate() {
         let p = g.mul_ref(c);
