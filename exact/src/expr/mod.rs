@@ -163,13 +163,16 @@ pub use lower::{eval_lowered, lower};
 pub use mathml::{equation_to_mathml, to_mathml};
 pub use numbers::{ParseRadicalError, ParseRationalError};
 pub use parse::{parse_expr, parse_expr_with_calls, parse_poly, LIST};
+pub use roots::{abs_radicand, ABS};
 
 /// The functions written `name(arg, ...)` in every grammar (besides `sqrt`): `diff(E, t)` and
 /// `diff(E, t, k)`, the exact derivative of `E` in the variable `t` (`k` times);
 /// `integrate(E, t, a, b)`, the definite integral of a polynomial in `t`; `sum(k, a, b, E)`,
 /// the sum of `E` over the integers `k` from `a` to `b`; `binomial(n, k)` and `factorial(n)`
-/// of integer constants; the trigonometric functions [`TRIG_FUNCTIONS`].
+/// of integer constants; the trigonometric functions [`TRIG_FUNCTIONS`]; `abs(E)`, the absolute
+/// value `|E| = sqrt(E^2)` ([`ABS`]).
 pub const FUNCTIONS: &[&str] = &[
+    "abs",
     "diff",
     "integrate",
     "sum",
