@@ -78,7 +78,7 @@ fn wrong_roots_of_fractions_fail_at_an_exact_point() {
         let (code, out, err) = run(&args);
         assert_eq!(code, 1, "{l} = {r}: {out}{err}");
         assert!(out.starts_with("fails: at "), "{l} = {r}: {out}");
-        assert!(out.contains(&at), "{l} = {r}: {out}");
+        assert!(out.contains(at), "{l} = {r}: {out}");
     }
 }
 
