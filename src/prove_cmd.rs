@@ -571,10 +571,7 @@ pub(crate) fn prove_over<C: PointField + Display>(
     let roots =
         square_roots::<C>(&mut vars).map_err(|e| Error::Input(format!("square root: {e}")))?;
     for root in &roots {
-        rels.push((
-            RatFun::from_poly(root.relation()),
-            RatFun::from_poly(Poly::zero()),
-        ));
+        rels.push(root.relation());
     }
     let angles = add_angles(&vars, &mut rels);
     let (angle_list, pi) = (&angles.list, angles.pi);

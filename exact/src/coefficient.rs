@@ -84,6 +84,12 @@ pub trait Coefficient: Ring {
     fn try_inverse(&self) -> Option<Self>;
     /// A square root in the type, `None` if there is none.
     fn try_sqrt(&self) -> Option<Self>;
+    /// The absolute value `|c|` in the type, `None` if the type has none (the default: a type
+    /// without an order, such as a finite field). For a real `c` it is `c` or `-c`, the one
+    /// that is not negative; a complex number's is its modulus, when that root is in the type.
+    fn try_abs(&self) -> Option<Self> {
+        None
+    }
     /// Appended to the error message when [`Coefficient::try_sqrt`] fails (e.g. which field
     /// would have the root); empty by default.
     fn sqrt_hint() -> &'static str {
@@ -158,6 +164,13 @@ impl Coefficient for Rational {
         } else {
             None
         }
+    }
+    fn try_abs(&self) -> Option<Self> {
+        Some(if self.signum() == exactcheck_core::Sign::Negative {
+            self.neg_ref()
+        } else {
+            self.clone()
+        })
     }
     fn sqrt_hint() -> &'static str {
         " (it is irrational: a radical coefficient field is needed)"

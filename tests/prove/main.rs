@@ -14,6 +14,7 @@ mod prove_differential_findings;
 mod prove_fractions;
 mod prove_library;
 mod prove_random;
+mod prove_rational_roots;
 mod prove_sqrt;
 mod prove_trig;
 mod prove_typeset;

@@ -395,6 +395,9 @@ impl Coefficient for Algebraic {
     fn try_sqrt(&self) -> Option<Self> {
         self.sqrt()
     }
+    fn try_abs(&self) -> Option<Self> {
+        Some(self.abs())
+    }
     fn sqrt_hint() -> &'static str {
         " (it is negative: no real square root)"
     }

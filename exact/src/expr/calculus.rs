@@ -423,11 +423,7 @@ fn with_bound<C: Coefficient, T>(
             .then(|| inner.roots().iter().find(|r| r.var == inner_var))
             .flatten();
         let v = match new_root {
-            Some(root) => {
-                let written = root.radicand_expr();
-                let radicand = written.to_poly::<C>(vars)?;
-                super::roots::root_variable(&radicand, written, vars)?
-            }
+            Some(root) => super::roots::register_root::<C>(root.radicand_expr(), name, vars)?,
             _ => vars.var(name),
         };
         limits::VARIABLES

@@ -4,7 +4,8 @@
 //!
 //! * An angle with variables and a part `r pi` is split by the addition formulas,
 //!   `sin(A + r pi) = sin(A) cos(r pi) + cos(A) sin(r pi)` (`cos` and `tan` alike), so that every
-//!   constant is a *leaf*: `sqrt` of a constant, or `sin`, `cos`, `tan` of a constant angle.
+//!   constant is a *leaf*: `sqrt` or `abs` of a constant, or `sin`, `cos`, `tan` of a constant
+//!   angle.
 //! * [`abstract_constants`] evaluates each leaf exactly as an [`Algebraic`] number: a rational
 //!   value becomes a number, an irrational one is recorded ([`ConstantLeaf`], equal values once)
 //!   and replaced by a placeholder variable that no identifier can name.
@@ -41,12 +42,13 @@ fn only_pi(e: &Expr) -> bool {
     names.iter().all(|n| n == PI)
 }
 
-/// Whether `e` is a leaf candidate: `sqrt` of a constant or a trigonometric function of a
-/// constant angle that is a multiple of pi (`sin(1)` has no algebraic value: it stays, the
+/// Whether `e` is a leaf candidate: `sqrt` or `abs` of a constant or a trigonometric function
+/// of a constant angle that is a multiple of pi (`sin(1)` has no algebraic value: it stays, the
 /// cosine and sine of the constant base angle).
 fn is_leaf(e: &Expr) -> bool {
     let shape = match &e.kind {
         ExprKind::Sqrt(_) => true,
+        ExprKind::Call(name, _) if name == ABS => true,
         ExprKind::Call(name, _) => {
             Trig::from_name(name).is_some() && !super::trig::is_transcendental_constant(e)
         }

@@ -23,13 +23,19 @@ use crate::poly::{Poly, Var, Vars};
 use crate::ratfun::{poly_derivative, Fraction, RatFun};
 use exactcheck_core::Field;
 
-/// The roots of `vars` with their radicands expanded over `C` (a copy of the table converts
-/// them: every variable of a recorded radicand is in the table already).
-fn radicands<C: Coefficient>(vars: &Vars) -> Result<Vec<(Var, Poly<C>)>, ExprError> {
+/// The roots of `vars` that `involves` selects, with their radicands expanded over `C` as
+/// `convert` gives them (a copy of the table converts them: every variable of a recorded
+/// radicand is in the table already).
+fn radicands<T>(
+    vars: &Vars,
+    involves: impl Fn(Var) -> bool,
+    convert: impl Fn(&Expr, &mut Vars) -> Result<T, ExprError>,
+) -> Result<Vec<(Var, T)>, ExprError> {
     let mut scratch = vars.clone();
     vars.roots()
         .iter()
-        .map(|entry| Ok((entry.var, entry.radicand_expr().to_poly::<C>(&mut scratch)?)))
+        .filter(|entry| involves(entry.var))
+        .map(|entry| Ok((entry.var, convert(entry.radicand_expr(), &mut scratch)?)))
         .collect()
 }
 
@@ -72,11 +78,24 @@ pub(super) fn total_derivative<C: Coefficient>(
         d += chain.scale(&unit);
     }
     if vars.roots().iter().any(|r| p.degree_in(r.var) > 0) {
-        for (y, radicand) in radicands::<C>(vars)? {
-            if p.degree_in(y) == 0 {
-                continue;
-            }
-            if !total_derivative(&radicand, vars, t, pos)?.is_zero() {
+        // A radicand with a division has no polynomial derivative to test: `None`.
+        let involved = radicands(
+            vars,
+            |y| p.degree_in(y) > 0,
+            |e, scratch| {
+                if e.has_fractions() {
+                    Ok(None)
+                } else {
+                    e.to_poly::<C>(scratch).map(Some)
+                }
+            },
+        )?;
+        for (y, radicand) in involved {
+            let moves = match radicand {
+                Some(radicand) => !total_derivative(&radicand, vars, t, pos)?.is_zero(),
+                None => true,
+            };
+            if moves {
                 return Err(ExprError::BadCall {
                     pos,
                     name: "diff".into(),
@@ -125,11 +144,8 @@ pub(super) fn total_derivative_ratfun<C: Coefficient + Field>(
             || f.conditions().iter().any(|p| p.degree_in(y) > 0)
     };
     if vars.roots().iter().any(|r| involves(r.var)) {
-        for (y, radicand) in radicands::<C>(vars)? {
-            if !involves(y) {
-                continue;
-            }
-            let d_radicand = total_derivative_ratfun(&RatFun::from_poly(radicand), vars, t, pos)?;
+        for (y, radicand) in radicands(vars, involves, |e, scratch| e.to_ratfun::<C>(scratch))? {
+            let d_radicand = total_derivative_ratfun(&radicand, vars, t, pos)?;
             if d_radicand.numerator().is_zero() {
                 continue;
             }
@@ -183,12 +199,15 @@ pub(super) fn total_derivative_fraction<C: Field>(
     Some(d)
 }
 
-/// Whether the tree takes the square root of an expression with a variable: a `diff` of it may
-/// divide by that root.
+/// Whether the tree takes the square root (or the absolute value, `sqrt(E^2)`) of an expression
+/// with a variable: a `diff` of it may divide by that root.
 pub(super) fn has_variable_root(e: &Expr) -> bool {
     match &e.kind {
         ExprKind::Number(_) | ExprKind::Var(_) => false,
         ExprKind::Sqrt(x) => x.has_variable() || has_variable_root(x),
+        ExprKind::Call(name, args) if name == ABS => args
+            .iter()
+            .any(|x| x.has_variable() || has_variable_root(x)),
         ExprKind::Neg(x) => has_variable_root(x),
         ExprKind::Pow(a, b) => has_variable_root(a) || has_variable_root(b),
         ExprKind::Sum(ts) => ts.iter().any(|(_, t)| has_variable_root(t)),

@@ -83,12 +83,9 @@ impl Expr {
                 check_coefficients(&p, self.pos)?;
                 Ok(p)
             }
-            ExprKind::Sqrt(arg) => {
-                let p = arg.to_poly::<C>(vars)?;
-                match p.constant_value() {
-                    Some(c) => sqrt_of(c, self.pos, arg).map(Poly::constant),
-                    None => super::roots::root_variable(&p, arg, vars).map(Poly::var),
-                }
+            ExprKind::Sqrt(arg) => super::roots::sqrt_poly(self, arg, vars),
+            ExprKind::Call(name, args) if name == super::ABS => {
+                super::roots::abs_poly(self, args, vars)
             }
             ExprKind::Call(name, args) if super::calculus::CALCULUS.contains(&name.as_str()) => {
                 super::calculus::call_poly(self, name, args, vars)
@@ -171,6 +168,9 @@ impl Expr {
                 constant_power(b, k, self.pos, exp.pos)
             }
             ExprKind::Sqrt(arg) => sqrt_of(arg.eval_constant::<C>()?, self.pos, arg),
+            ExprKind::Call(name, args) if name == super::ABS => {
+                super::roots::abs_constant(self, args)
+            }
             ExprKind::Call(name, args) if super::calculus::CALCULUS.contains(&name.as_str()) => {
                 super::calculus::call_constant(self, name, args)
             }
@@ -252,7 +252,7 @@ fn binomial_power<C: Coefficient>(b: &Poly<C>, k: u32) -> Result<Option<Poly<C>>
 }
 
 /// The square root of the constant `c` (the value of `arg`, in `sqrt` at `pos`).
-fn sqrt_of<C: Coefficient>(c: C, pos: usize, arg: &Expr) -> Result<C, ExprError> {
+pub(super) fn sqrt_of<C: Coefficient>(c: C, pos: usize, arg: &Expr) -> Result<C, ExprError> {
     c.try_sqrt().ok_or_else(|| ExprError::NoSqrt {
         pos,
         arg: arg.to_string(),

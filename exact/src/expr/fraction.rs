@@ -20,8 +20,8 @@ impl Expr {
     /// alone.
     pub fn has_fractions(&self) -> bool {
         match &self.kind {
-            ExprKind::Number(_) | ExprKind::Var(_) | ExprKind::Sqrt(_) => false,
-            ExprKind::Neg(x) => x.has_fractions(),
+            ExprKind::Number(_) | ExprKind::Var(_) => false,
+            ExprKind::Neg(x) | ExprKind::Sqrt(x) => x.has_fractions(),
             ExprKind::Sum(ts) => ts.iter().any(|(_, t)| t.has_fractions()),
             ExprKind::Product(fs) => fs
                 .iter()
@@ -33,7 +33,7 @@ impl Expr {
                 "diff" => args
                     .first()
                     .is_some_and(|e| e.has_fractions() || has_variable_root(e)),
-                "integrate" | "sum" => args.iter().any(Expr::has_fractions),
+                "integrate" | "sum" | super::ABS => args.iter().any(Expr::has_fractions),
                 "tan" => self.has_variable(),
                 _ => false,
             },
@@ -133,6 +133,8 @@ impl Expr {
                 let which = Trig::from_name(name).expect("matched above");
                 super::trig::trig_ratfun(self, which, args, vars)?
             }
+            ExprKind::Sqrt(_) => super::roots::root_ratfun(self, vars)?,
+            ExprKind::Call(name, _) if name == super::ABS => super::roots::root_ratfun(self, vars)?,
             ExprKind::Call(_, args) => {
                 let (e, t, k) = diff_arguments(self, args)?;
                 let mut f = e.to_ratfun::<C>(vars)?;
@@ -143,8 +145,8 @@ impl Expr {
                 }
                 f
             }
-            ExprKind::Number(_) | ExprKind::Var(_) | ExprKind::Sqrt(_) => {
-                unreachable!("a number, a variable or a sqrt has no fractions")
+            ExprKind::Number(_) | ExprKind::Var(_) => {
+                unreachable!("a number or a variable has no fractions")
             }
         };
         for p in [f.numerator(), f.denominator()] {
@@ -217,9 +219,11 @@ impl Expr {
                 }
                 f
             }
-            ExprKind::Call(..) => Fraction::from_ratfun(&self.to_ratfun::<C>(vars).ok()?),
-            ExprKind::Number(_) | ExprKind::Var(_) | ExprKind::Sqrt(_) => {
-                unreachable!("a number, a variable or a sqrt has no fractions")
+            ExprKind::Call(..) | ExprKind::Sqrt(_) => {
+                Fraction::from_ratfun(&self.to_ratfun::<C>(vars).ok()?)
+            }
+            ExprKind::Number(_) | ExprKind::Var(_) => {
+                unreachable!("a number or a variable has no fractions")
             }
         };
         for p in std::iter::once(f.numerator()).chain(f.factors().iter().map(|(p, _)| p)) {

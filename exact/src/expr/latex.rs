@@ -351,6 +351,8 @@ pub(super) enum Layout {
     Op(Op),
     Frac(Box<Layout>, Box<Layout>),
     Sqrt(Box<Layout>),
+    /// Between vertical bars: the absolute value.
+    Abs(Box<Layout>),
     Sup(Box<Layout>, Box<Layout>),
     Sub(Box<Layout>, Box<Layout>),
     /// In parentheses.
@@ -583,6 +585,9 @@ pub(super) fn layout(e: &Expr, n: &Notation) -> Layout {
             Layout::Sup(Box::new(if simple { b } else { fenced(b) }), Box::new(e))
         }
         ExprKind::Sqrt(x) => Layout::Sqrt(Box::new(layout(x, n))),
+        ExprKind::Call(name, args) if name == super::ABS && args.len() == 1 => {
+            Layout::Abs(Box::new(layout(&args[0], n)))
+        }
         ExprKind::Call(name, args) if args.is_empty() && is_decimal_name(name) => {
             Layout::Num(name.clone())
         }
@@ -775,6 +780,11 @@ fn write_latex(l: &Layout, out: &mut String) {
             out.push_str("\\sqrt{");
             write_latex(x, out);
             out.push('}');
+        }
+        Layout::Abs(x) => {
+            out.push_str("\\left|");
+            write_latex(x, out);
+            out.push_str("\\right|");
         }
         Layout::Sup(b, e) => {
             write_latex(b, out);

@@ -81,6 +81,11 @@ fn write(l: &Layout, out: &mut String) {
             write(x, out);
             out.push_str("</msqrt>");
         }
+        Layout::Abs(x) => {
+            out.push_str("<mrow><mo>|</mo>");
+            write(x, out);
+            out.push_str("<mo>|</mo></mrow>");
+        }
         Layout::Sup(b, e) => {
             out.push_str("<msup>");
             write(b, out);

@@ -44,7 +44,8 @@
 //! * **Juxtaposition multiplies**, binding like `*`: `2x`, `2 sqrt(2)`, `x y`, `(a+b)(a-b)`,
 //!   `c^2 x^3`. A juxtaposed factor takes no sign of its own (`x -y` is a difference) and may not
 //!   start with a number (`2 3` and `x 2` are errors: write `*`).
-//! * **Functions**: `sqrt`, `diff`, `integrate`, `sum`, `binomial`, `factorial` ([`FUNCTIONS`]). A name followed directly by `(` is a function
+//! * **Functions**: `sqrt`, `abs`, `diff`, `integrate`, `sum`, `binomial`, `factorial` ([`FUNCTIONS`]).
+//!   `abs(E)` is `|E| = sqrt(E^2)`: the root variable of `E^2`, or the absolute value of a constant. A name followed directly by `(` is a function
 //!   call, so `sn(x)` is the error `unknown function 'sn'` rather than the product `sn*(x)`;
 //!   write the `*` for a product (`x*(y+1)`), or a space as printed: `t (1 - t)` is a product
 //!   unless the name is a function (`sqrt (x)` is still `sqrt(x)`). `diff(E, t)` is the exact derivative of `E` in the
@@ -70,7 +71,8 @@
 //! * **Degrees**: `°` after an atom multiplies it by `pi/180`, so `cos(45°)` is `cos(pi/4)` and
 //!   `(a + b)°` the angle `a + b` in degrees.
 //! * `sqrt(E)` of a non-constant `E` is a variable standing for the non-negative root, one per
-//!   distinct expanded radicand, when the variable table allows it
+//!   distinct expanded radicand (a rational function in [`Expr::to_ratfun`], with the radicand's
+//!   divisors as conditions), when the variable table allows it
 //!   ([`crate::poly::Vars::allow_roots`]; its relation and sign condition come from
 //!   [`crate::prove::square_roots`]), else [`ExprError::NonConstantSqrt`].
 //! * `sqrt(...)` of a constant needs a coefficient type that has the root (over
@@ -163,13 +165,16 @@ pub use lower::{eval_lowered, lower};
 pub use mathml::{equation_to_mathml, to_mathml};
 pub use numbers::{ParseRadicalError, ParseRationalError};
 pub use parse::{parse_expr, parse_expr_with_calls, parse_poly, LIST};
+pub use roots::{abs_radicand, ABS};
 
 /// The functions written `name(arg, ...)` in every grammar (besides `sqrt`): `diff(E, t)` and
 /// `diff(E, t, k)`, the exact derivative of `E` in the variable `t` (`k` times);
 /// `integrate(E, t, a, b)`, the definite integral of a polynomial in `t`; `sum(k, a, b, E)`,
 /// the sum of `E` over the integers `k` from `a` to `b`; `binomial(n, k)` and `factorial(n)`
-/// of integer constants; the trigonometric functions [`TRIG_FUNCTIONS`].
+/// of integer constants; the trigonometric functions [`TRIG_FUNCTIONS`]; `abs(E)`, the absolute
+/// value `|E| = sqrt(E^2)` ([`ABS`]).
 pub const FUNCTIONS: &[&str] = &[
+    "abs",
     "diff",
     "integrate",
     "sum",

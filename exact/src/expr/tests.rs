@@ -191,13 +191,13 @@ fn unknown_functions_are_errors() {
     // Regression: `sin(x)` was the product sin*x of a variable sin.
     assert_eq!(
         err("exp(x)"),
-        "unknown function 'exp' at 0: the functions are sqrt, diff, integrate, sum, \
-         binomial, factorial, sin, cos, tan (write 'exp*(...)' for a product)"
+        "unknown function 'exp' at 0: the functions are sqrt, abs, diff, integrate, \
+         sum, binomial, factorial, sin, cos, tan (write 'exp*(...)' for a product)"
     );
     assert_eq!(
         err("2 exp(2x)"),
-        "unknown function 'exp' at 2: the functions are sqrt, diff, integrate, sum, \
-         binomial, factorial, sin, cos, tan (write 'exp*(...)' for a product)"
+        "unknown function 'exp' at 2: the functions are sqrt, abs, diff, integrate, \
+         sum, binomial, factorial, sin, cos, tan (write 'exp*(...)' for a product)"
     );
     assert!(err("x(y+1)").starts_with("unknown function 'x' at 0"));
     let mut v = Vars::new();

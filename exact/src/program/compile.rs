@@ -326,6 +326,16 @@ fn compile(e: &Expr, vars: &mut Vars) -> Result<Node, CompileError> {
         ExprKind::Var(name) => Node::Input(vars.index(name, e.pos)?),
         ExprKind::Neg(a) => Node::Neg(Box::new(compile(a, vars)?)),
         ExprKind::Sqrt(a) => Node::Sqrt(Box::new(compile(a, vars)?)),
+        ExprKind::Call(name, args) if name == crate::expr::ABS => {
+            let [a] = args.as_slice() else {
+                return Err(CompileError::Expr(ExprError::BadCall {
+                    pos: e.pos,
+                    name: name.clone(),
+                    why: format!("it takes 1 argument, found {}", args.len()),
+                }));
+            };
+            Node::Abs(Box::new(compile(a, vars)?))
+        }
         ExprKind::Call(name, args) if formula_function(name).is_some() => {
             let f = formula_function(name).expect("a function");
             if args.len() != f.arity() {

@@ -8,11 +8,15 @@
 //!   so the residual vanishes wherever the relations hold and `h` does not. A domain that excludes
 //!   0 (`w > 0`) gives `w != 0`, and a strict bound `c` (`t < 1`) gives `t - c != 0`.
 //! * **Sign conditions** (the branch of a square root): a variable `y` with `y >= 0` in its
-//!   domain and a relation `a y^2 - E` (`a` a constant, `E` free of `y`) is the non-negative root
-//!   of `E / a`. With `y^2` replaced by `E / a` the residual is `A + B y` (`A`, `B` free of `y`);
-//!   if `A^2 - B^2 E / a` vanishes (decided the same way, recursively for the other roots) and
-//!   `-A B >= 0` on the domains, then `A + B y = 0` at every point: `B = 0` forces `A = 0`, else
-//!   `y = |A / B| = -A / B`. The sign of `-A B` is shown by a sufficient test: shifted so every
+//!   domain and a relation `D y^2 - N` (`D`, `N` free of `y`) is the non-negative root of
+//!   `N / D`, when `D` has no zero on the points considered (a non-zero constant; a polynomial
+//!   without a real zero; or one the relations and the non-zero hypotheses in use exclude:
+//!   adding `D` to them leaves no common point). With `y^2` replaced by `N / D` and the result
+//!   multiplied by `D^h` (`h` the half degree in `y`), the residual is `A + B y` (`A`, `B` free
+//!   of `y`); if `D A^2 - B^2 N` vanishes (decided the same way, recursively for the other
+//!   roots) and `-A B >= 0` on the domains, then `A + B y = 0` at every point: `(B y)^2 = A^2`,
+//!   so `B = 0` forces `A = 0`, else `y = |A / B| = -A / B`; and the residual, `(A + B y) /
+//!   D^h`, vanishes too. The sign of `-A B` is shown by a sufficient test: shifted so every
 //!   bounded variable is non-negative (`v = lo + u` or `v = hi - u`), every coefficient is
 //!   non-negative and every unbounded variable has even exponents.
 //!
@@ -54,10 +58,13 @@ struct Problem<'a, C: PointField> {
     dom: &'a [VarDomain],
 }
 
-/// A root: the variable `y`, and `E / a` from its relation `a y^2 - E`.
+/// A root: the variable `y`, and `N` and `D` from its relation `D y^2 - N` (a constant `D` is
+/// divided out: `N / D` over 1).
+#[derive(Clone)]
 struct Root<C: Ring> {
     var: Var,
     square: Poly<C>,
+    denominator: Poly<C>,
 }
 
 /// Decides whether `residual` vanishes wherever `relations` hold, `nonzero` does not vanish and
@@ -161,35 +168,57 @@ impl<C: PointField> Problem<'_, C> {
                     .as_ref()
                     .is_some_and(|(lo, _)| lo.signum() != exactcheck_core::Sign::Negative)
             })
-            .filter_map(|y| self.root(y as Var))
+            .filter_map(|y| self.root(y as Var, &basis))
             .collect();
         Ok(branch_zero(self.residual, &roots, &basis, &signs, &mut 0))
     }
 
-    /// `y` as a root: a relation `a y^2 - E` with `a` constant and `E` free of `y`.
-    fn root(&self, y: Var) -> Option<Root<C>> {
+    /// `y` as a root: a relation `D y^2 - N` with `D` and `N` free of `y` and `D` without a
+    /// zero on the variety of `basis` (module documentation).
+    fn root(&self, y: Var, basis: &[Poly<C>]) -> Option<Root<C>> {
         self.relations.iter().find_map(|r| {
             if r.degree_in(y) != 2 {
                 return None;
             }
-            let mut a = None;
+            let mut square = Vec::new();
             let mut rest = Vec::new();
             for (m, c) in r.terms() {
-                let e = m.exponents();
+                let e: Vec<(Var, u32)> =
+                    m.exponents().into_iter().filter(|&(v, _)| v != y).collect();
                 match m.exponent(y) {
-                    0 => rest.push((e, c.clone())),
-                    2 if e.len() == 1 => a = Some(c.clone()),
+                    0 => rest.push((e, c.neg_ref())),
+                    2 => square.push((e, c.clone())),
                     _ => return None,
                 }
             }
-            let inv = a?.inv().ok()?;
-            let e: Poly<C> = Poly::from_terms(rest);
-            Some(Root {
+            let (d, n): (Poly<C>, Poly<C>) = (Poly::from_terms(square), Poly::from_terms(rest));
+            if let Some(a) = d.constant_value() {
+                let inv = a.inv().ok()?;
+                return Some(Root {
+                    var: y,
+                    square: n.scale(&inv),
+                    denominator: Poly::one(),
+                });
+            }
+            nowhere_zero(&d, basis).then_some(Root {
                 var: y,
-                square: e.scale(&inv.neg_ref()),
+                square: n,
+                denominator: d,
             })
         })
     }
+}
+
+/// Whether `d` has no zero on the points of the variety of `basis` considered: no real zero at
+/// all ([`super::real_zero_free`]), or no common complex zero with `basis` (a Gröbner basis of
+/// `basis` and `d` holds a non-zero constant).
+fn nowhere_zero<C: PointField>(d: &Poly<C>, basis: &[Poly<C>]) -> bool {
+    if super::real_zero_free(d) == Some(true) {
+        return true;
+    }
+    let mut gens = basis.to_vec();
+    gens.push(d.clone());
+    groebner(&gens).is_ok_and(|b| b.iter().any(|p| p.is_constant() && !p.is_zero()))
 }
 
 /// The most polynomials [`branch_zero`] squares in one decision (each squaring can double the
@@ -230,10 +259,7 @@ fn branch_zero<C: PointField>(
         .iter()
         .enumerate()
         .filter(|&(j, _)| j != k)
-        .map(|(_, r)| Root {
-            var: r.var,
-            square: r.square.clone(),
-        })
+        .map(|(_, r)| r.clone())
         .collect();
     let Some((a, b)) = split(&p, root) else {
         return false;
@@ -242,7 +268,7 @@ fn branch_zero<C: PointField>(
         return branch_zero(&a, &rest, basis, signs, steps);
     }
     let Some(n) = (|| {
-        let a2 = a.try_mul(&a).ok()?;
+        let a2 = a.try_mul(&a).ok()?.try_mul(&root.denominator).ok()?;
         let b2 = b.try_mul(&b).ok()?.try_mul(&root.square).ok()?;
         Some(a2.sub_ref(&b2))
     })() else {
@@ -262,7 +288,8 @@ fn branch_zero<C: PointField>(
 /// A term: its exponents and its coefficient.
 type Term<C> = (Vec<(Var, u32)>, C);
 
-/// `p = A + B y` with `y^2` replaced by the root's square; `None` past a size limit.
+/// `D^h p = A + B y` with `y^2` replaced by the root's `N / D` (`h` the half degree of `p` in
+/// `y`); `None` past a size limit.
 fn split<C: PointField>(p: &Poly<C>, root: &Root<C>) -> Option<(Poly<C>, Poly<C>)> {
     let y = root.var;
     let deg = p.degree_in(y) as usize;
@@ -272,17 +299,23 @@ fn split<C: PointField>(p: &Poly<C>, root: &Root<C>) -> Option<(Poly<C>, Poly<C>
         let e: Vec<(Var, u32)> = m.exponents().into_iter().filter(|&(v, _)| v != y).collect();
         parts[k].push((e, c.clone()));
     }
+    // The powers N^j D^(h - j) for j = 0..=h.
+    let h = deg / 2;
+    let mut n_powers = vec![Poly::one()];
+    let mut d_powers = vec![Poly::one()];
+    for j in 1..=h {
+        n_powers.push(n_powers[j - 1].try_mul(&root.square).ok()?);
+        d_powers.push(d_powers[j - 1].try_mul(&root.denominator).ok()?);
+    }
     let mut a = Poly::zero();
     let mut b = Poly::zero();
-    let mut power = Poly::one();
     for (k, terms) in parts.into_iter().enumerate() {
-        if k >= 2 && k % 2 == 0 {
-            power = power.try_mul(&root.square).ok()?;
-        }
         if terms.is_empty() {
             continue;
         }
-        let part = Poly::from_terms(terms).try_mul(&power).ok()?;
+        let j = k / 2;
+        let factor = n_powers[j].try_mul(&d_powers[h - j]).ok()?;
+        let part = Poly::from_terms(terms).try_mul(&factor).ok()?;
         if k % 2 == 0 {
             a = a.add_ref(&part);
         } else {
@@ -396,4 +429,85 @@ fn shifted_coefficients_non_negative<C: PointField>(p: &Poly<C>, signs: &[VarDom
                 .iter()
                 .all(|&(v, e)| e % 2 == 0 || bounded.get(v as usize).copied().unwrap_or(false))
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::expr::parse_poly;
+    use crate::poly::Vars;
+
+    fn p(text: &str, vars: &mut Vars) -> Poly<Rational> {
+        parse_poly(text, vars).unwrap()
+    }
+
+    fn non_negative_domain() -> VarDomain {
+        VarDomain {
+            lower: Some((Rational::ZERO, false)),
+            upper: None,
+        }
+    }
+
+    #[test]
+    fn a_root_of_a_fraction_needs_its_denominator_non_zero() {
+        let mut vars = Vars::from_names(["x", "y", "w", "z"]);
+        let rel = p("w^2*y - x", &mut vars);
+        let dom = vec![VarDomain::all(); 4];
+        let problem = Problem {
+            residual: &Poly::zero(),
+            relations: std::slice::from_ref(&rel),
+            nonzero: &[],
+            dom: &dom,
+        };
+        // y vanishes with x on the relation: w is no root of x/y there.
+        let basis = groebner(std::slice::from_ref(&rel)).unwrap();
+        assert!(problem.root(2, &basis).is_none());
+        // With y != 0 (the Rabinowitsch relation 1 - z y) it is.
+        let with = groebner(&[rel.clone(), p("1 - z*y", &mut vars)]).unwrap();
+        let root = problem.root(2, &with).unwrap();
+        assert_eq!(
+            (root.square, root.denominator),
+            (p("x", &mut vars), p("y", &mut vars))
+        );
+        // A denominator without a real zero needs nothing; a constant one is divided out.
+        let rels = [p("w^2*(y^2 + 1) - x", &mut vars), p("2*w^2 - x", &mut vars)];
+        let problem = Problem {
+            relations: &rels[..1],
+            ..problem
+        };
+        assert!(problem.root(2, &[]).is_some());
+        let problem = Problem {
+            relations: &rels[1..],
+            ..problem
+        };
+        let root = problem.root(2, &[]).unwrap();
+        assert_eq!(root.square, p("x/2", &mut vars));
+        assert!(root.denominator.is_one());
+    }
+
+    #[test]
+    fn the_branch_of_a_root_of_a_fraction_decides() {
+        // w = sqrt(1/x), v = sqrt(x): w v = 1 on the non-negative roots, not w v = -1.
+        let mut vars = Vars::from_names(["x", "w", "v"]);
+        let rels = [p("w^2*x - 1", &mut vars), p("v^2 - x", &mut vars)];
+        let mut dom = vec![
+            VarDomain::all(),
+            non_negative_domain(),
+            non_negative_domain(),
+        ];
+        let proved = |residual: &str, vars: &mut Vars, dom: &[VarDomain]| {
+            matches!(
+                prove_under_hypotheses(&p(residual, vars), &rels, &[], dom),
+                Outcome::Proved(_)
+            )
+        };
+        assert!(proved("w*v - 1", &mut vars, &dom));
+        assert!(!proved("w*v + 1", &mut vars, &dom));
+        // w x = v for x >= 0: the sign of x w is shown from the domains.
+        dom[0] = non_negative_domain();
+        assert!(proved("w*x - v", &mut vars, &dom));
+        assert!(!proved("w*x + v", &mut vars, &dom));
+        // A power of the root: w^3 x^2 = w (w^2 x) x = w x, the denominator multiplied in.
+        assert!(proved("w^3*x^2 - v", &mut vars, &dom));
+    }
 }

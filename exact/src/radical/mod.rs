@@ -117,6 +117,13 @@ impl Coefficient for Radical {
     fn try_sqrt(&self) -> Option<Self> {
         Sqrt::sqrt(self)
     }
+    fn try_abs(&self) -> Option<Self> {
+        Some(if self.sign() == Sign::Negative {
+            -self.clone()
+        } else {
+            self.clone()
+        })
+    }
     fn sqrt_hint() -> &'static str {
         " (no square root in the square-root field: negative, or not denestable)"
     }
@@ -164,6 +171,14 @@ impl Coefficient for ComplexRadical {
     }
     fn try_sqrt(&self) -> Option<Self> {
         self.principal_sqrt()
+    }
+    /// `|a + b i| = sqrt(a^2 + b^2)`, the non-negative real root (when it lies in the field).
+    fn try_abs(&self) -> Option<Self> {
+        let square = &self.re * &self.re + &self.im * &self.im;
+        Coefficient::try_abs(&self.re)
+            .filter(|_| self.is_real())
+            .or_else(|| Sqrt::sqrt(&square))
+            .map(ComplexRadical::from)
     }
     fn size_bits(&self) -> u64 {
         self.re.size_bits().max(self.im.size_bits())

@@ -37,7 +37,7 @@ fn decide(lhs: &str, rhs: &str, domains: &[(&str, VarDomain)]) -> Decision<Ratio
     let l: Poly<Rational> = parse_expr(lhs).unwrap().to_poly(&mut vars).unwrap();
     let r: Poly<Rational> = parse_expr(rhs).unwrap().to_poly(&mut vars).unwrap();
     let roots = square_roots::<Rational>(&mut vars).unwrap();
-    let rels: Vec<Poly<Rational>> = roots.iter().map(SquareRoot::relation).collect();
+    let rels: Vec<Poly<Rational>> = roots.iter().map(SquareRoot::cleared_relation).collect();
     let mut doms: Vec<(u32, VarDomain)> = domains
         .iter()
         .map(|(n, d)| (vars.get(n).unwrap(), d.clone()))

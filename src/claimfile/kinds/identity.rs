@@ -188,10 +188,7 @@ fn identity<C: PointField + Display>(
     }
     let roots = square_roots::<C>(&mut vars).map_err(|e| Fault::Input("lhs", e.to_string()))?;
     for root in &roots {
-        relations.push((
-            RatFun::from_poly(root.relation()),
-            RatFun::from_poly(Poly::zero()),
-        ));
+        relations.push(root.relation());
     }
     // Every angle `x` of sin, cos, tan: its cosine and sine lie on the unit circle. pi is the
     // transcendental constant: an indeterminate while deciding.

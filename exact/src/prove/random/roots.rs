@@ -3,7 +3,8 @@
 //! `w^2 = R`, its radicand evaluated at the point.
 //!
 //! # The rewriting
-//! Every `sqrt(R)` whose radicand has a variable is replaced by a fresh variable `w_i`, inner
+//! Every `sqrt(R)` whose radicand has a variable, and every `abs(E)` as the root of `R = E^2`,
+//! is replaced by a fresh variable `w_i`, inner
 //! roots first, so that the radicand `R_i` of `w_i` mentions only the variables and the earlier
 //! `w_j` ([`abstract_roots`]). Two roots share one `w` when their radicands expand to the same
 //! rational function. A radicand with a square root of a constant or a trigonometric call is
@@ -45,7 +46,7 @@
 use super::ring::{eval, EvalError, Values};
 use super::{size_bound_in, BoundError, SizeBound};
 use crate::expr::library::has_sqrt;
-use crate::expr::{has_trig, Expr, ExprKind, PI};
+use crate::expr::{abs_radicand, has_trig, Expr, ExprKind, ABS, PI};
 use crate::poly::Vars;
 use crate::Rational;
 use exactcheck_core::limits;
@@ -94,8 +95,15 @@ struct Roots {
 
 impl Roots {
     fn rewrite(&mut self, e: &Expr) -> Result<Expr, String> {
-        let ExprKind::Sqrt(x) = &e.kind else {
-            return e.try_map_children(|c| self.rewrite(c));
+        // `abs(E)` is the root of `E^2`.
+        let squared;
+        let x = match &e.kind {
+            ExprKind::Sqrt(x) => x.as_ref(),
+            ExprKind::Call(name, args) if name == ABS && args.len() == 1 => {
+                squared = abs_radicand(&args[0]);
+                &squared
+            }
+            _ => return e.try_map_children(|c| self.rewrite(c)),
         };
         let radicand = self.rewrite(x)?;
         let mut names = Vec::new();
