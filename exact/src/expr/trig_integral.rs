@@ -47,7 +47,7 @@ fn minus_i_pow(n: u32) -> Gauss {
 }
 
 /// The binomial coefficients `C(n, 0..=n)`.
-fn binomials(n: u32) -> Vec<BigInt> {
+pub(super) fn binomials(n: u32) -> Vec<BigInt> {
     let mut row = vec![BigInt::one()];
     for k in 0..n {
         let next = row[k as usize].clone() * (n - k) / (k + 1);

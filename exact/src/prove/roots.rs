@@ -37,6 +37,7 @@ impl<C: Ring> SquareRoot<C> {
         VarDomain {
             lower: Some((Rational::ZERO, false)),
             upper: None,
+            integer: false,
         }
     }
 
