@@ -15,6 +15,7 @@ mod prove_fractions;
 mod prove_library;
 mod prove_random;
 mod prove_sqrt;
+mod prove_symbolic_sums;
 mod prove_trig;
 mod prove_typeset;
 mod real_roots;

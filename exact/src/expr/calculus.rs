@@ -631,6 +631,17 @@ pub(super) fn integrate_ratfun<C: Coefficient + Field>(
     value.mul(&divisor).map_err(size)
 }
 
+/// The polynomial value `p` of a sum at `pos`, held to the `terms` and `constant-bits` limits.
+pub(super) fn checked_sum<C: Coefficient>(p: Poly<C>, pos: usize) -> Result<Poly<C>, ExprError> {
+    limits::TERMS
+        .check_usize(p.len())
+        .map_err(|error| ExprError::Limit { pos, error })?;
+    p.coefficients()
+        .iter()
+        .try_for_each(|c| check_constant(c, pos))?;
+    Ok(p)
+}
+
 /// The value of a call of this module as a polynomial.
 pub(super) fn call_poly<C: Coefficient>(
     call: &Expr,
@@ -645,17 +656,7 @@ pub(super) fn call_poly<C: Coefficient>(
         }
         "sum" => {
             let parts = sum_terms(call, args, |term| term.to_poly::<C>(vars))?;
-            let p = Poly::sum(parts);
-            limits::TERMS
-                .check_usize(p.len())
-                .map_err(|error| ExprError::Limit {
-                    pos: call.pos,
-                    error,
-                })?;
-            p.coefficients()
-                .iter()
-                .try_for_each(|c| check_constant(c, call.pos))?;
-            Ok(p)
+            checked_sum(Poly::sum(parts), call.pos)
         }
         _ => {
             let q = integer_call(call, args)?;

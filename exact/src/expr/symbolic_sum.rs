@@ -23,7 +23,7 @@
 //! (`sqrt(k)`, `sin(k)`), a division by an expression in `k`, a bound with a fraction, a square
 //! root or `pi`.
 
-use super::calculus::{bad, horner, moving_with, rename, with_bound};
+use super::calculus::{bad, checked_sum, horner, moving_with, rename, with_bound};
 use super::eval::{check_constant, size_error};
 use super::trig_integral::binomials;
 use super::*;
@@ -371,14 +371,7 @@ fn telescope<C: Coefficient>(
         })
     };
     let below = lo.clone() - Poly::constant(C::one());
-    let p = at(hi)? - at(&below)?;
-    limits::TERMS
-        .check_usize(p.len())
-        .map_err(|error| ExprError::Limit {
-            pos: call.pos,
-            error,
-        })?;
-    Ok(p)
+    checked_sum(at(hi)? - at(&below)?, call.pos)
 }
 
 /// The index, the bounds and the summand of a symbolic sum, checked (module documentation).
