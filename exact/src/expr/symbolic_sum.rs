@@ -25,7 +25,7 @@
 
 use super::calculus::{bad, checked_sum, horner, moving_with, rename, with_bound};
 use super::eval::{check_constant, size_error};
-use super::trig_integral::binomials;
+use super::trig_integral::{binomials, TermList};
 use super::*;
 use crate::poly::{Poly, Var, Vars};
 use crate::ratfun::RatFun;
@@ -305,7 +305,7 @@ fn parts_in<C: Coefficient>(
         return Ok(vec![p.clone()]);
     };
     let top = p.degree_in(kv);
-    let mut terms: Vec<Vec<(Vec<(Var, u32)>, C)>> = vec![Vec::new(); top as usize + 1];
+    let mut terms: Vec<TermList<C>> = vec![Vec::new(); top as usize + 1];
     for (m, c) in p.terms() {
         let rest: Vec<(Var, u32)> = m
             .exponents()

@@ -30,7 +30,7 @@ pub(super) type Wave = (u32, Trig);
 pub(super) type Antiderivative<C> = Vec<(Wave, Vec<Poly<C>>)>;
 
 /// Terms of a polynomial as their exponents and coefficients.
-type TermList<C> = Vec<(Vec<(Var, u32)>, C)>;
+pub(super) type TermList<C> = Vec<(Vec<(Var, u32)>, C)>;
 
 /// A Gaussian rational `re + i im`.
 type Gauss = (Rational, Rational);
