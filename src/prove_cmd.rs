@@ -50,7 +50,7 @@ use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
     decide_identity, square_roots, AlgebraicConstants, EngineError, FractionIdentity,
     IdentityReport, IdentitySpec, IdentityVerdict, Part, PointField, SquareRoot, Statement,
-    VarDomain,
+    SumRanges, VarDomain,
 };
 use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::{Algebraic, Radical, Rational};
@@ -606,6 +606,9 @@ pub(crate) fn prove_over<C: PointField + Display>(
     }
     doms.extend(roots.iter().map(|r| (r.var, SquareRoot::<C>::domain())));
     doms.extend(constant_domain);
+    // The variables of sums' symbolic bounds are integers inside the sums' ranges.
+    let sums = SumRanges::of(decided.iter().copied());
+    sums.add_domains(&vars, &mut doms);
     let spec = IdentitySpec {
         relations: rels,
         domains: doms,
@@ -639,6 +642,7 @@ pub(crate) fn prove_over<C: PointField + Display>(
     })?;
     let mut report = report;
     sound_counter_example(&spec, &mut report, &angles);
+    sums.check(&spec.vars, &mut report);
     // With algebraic constants, a non-zero reduction gets its counter-example at c = theta.
     // (Not with a constant angle: the search would give its cosine and sine rational values.)
     phrasing.constant_point = constants

@@ -16,6 +16,7 @@ mod prove_library;
 mod prove_random;
 mod prove_rational_roots;
 mod prove_sqrt;
+mod prove_symbolic_sums;
 mod prove_trig;
 mod prove_typeset;
 mod real_roots;

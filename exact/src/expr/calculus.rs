@@ -9,9 +9,10 @@
 //!   trees. The integration variable is bound: the antiderivative is taken in a copy of the
 //!   variable table and mapped back, so it never enters the caller's table, and the bounds are
 //!   converted in the caller's table.
-//! * `sum` substitutes each integer of `[a, b]` for the index in the tree of `E` (so that
-//!   `binomial(n, k)` sees constants) and converts the terms one at a time. Nested sums share
-//!   the one budget `sum-terms` ([`limits::SUM_TERMS`]).
+//! * `sum` with integer constant bounds substitutes each integer of `[a, b]` for the index in
+//!   the tree of `E` (so that `binomial(n, k)` sees constants) and converts the terms one at a
+//!   time. Nested sums share the one budget `sum-terms` ([`limits::SUM_TERMS`]). A sum with a
+//!   bound that has a variable (`sum(k, 1, n, k^2)`) is the closed form of [`symbolic_sum`].
 //! * `binomial` and `factorial` are exact integers, their size predicted against
 //!   `constant-bits` ([`limits::CONSTANT_BITS`]) before they are computed, and computed by
 //!   binary splitting (products of halves), which keeps the operands balanced.
@@ -32,7 +33,7 @@ use std::cell::Cell;
 /// The functions of this module.
 pub(super) const CALCULUS: &[&str] = &["integrate", "sum", "binomial", "factorial"];
 
-fn bad(call: &Expr, pos: usize, why: impl Into<String>) -> ExprError {
+pub(super) fn bad(call: &Expr, pos: usize, why: impl Into<String>) -> ExprError {
     let ExprKind::Call(name, _) = &call.kind else {
         unreachable!("bad takes a call")
     };
@@ -345,7 +346,7 @@ fn integrate_arguments<'a>(
 /// The variables of `vars` that change with the variable `t`: `t` itself, the cosine and sine
 /// of the base angle of `t` (`t`, or `t/L`), and the square roots whose radicand has `t` as a
 /// free variable.
-fn moving_with(vars: &Vars, t: &str) -> Vec<Var> {
+pub(super) fn moving_with(vars: &Vars, t: &str) -> Vec<Var> {
     let mut out: Vec<Var> = vars.get(t).into_iter().collect();
     if let Some((angle, _)) = super::angle_base::variable_base(vars, t) {
         out.extend([angle.cos, angle.sin]);
@@ -394,7 +395,7 @@ fn refuse_functions_of(
 /// that changes with it, [`moving_with`]) are mapped back, the other new variables added to
 /// `vars` in order of first appearance: a square root as a root of `vars` (its radicand
 /// converted there), any other name as a variable.
-fn with_bound<C: Coefficient, T>(
+pub(super) fn with_bound<C: Coefficient, T>(
     vars: &mut Vars,
     t: &str,
     convert: impl FnOnce(&mut Vars) -> Result<T, ExprError>,
@@ -448,7 +449,7 @@ pub(super) fn rename<C: Ring>(p: &Poly<C>, map: &dyn Fn(Var) -> Var) -> Poly<C> 
 
 /// `sum_k parts[k] x^k` by Horner's rule in the ring `T` (`mul_add(acc, part)` is
 /// `acc * x + part`).
-fn horner<T, C: Coefficient>(
+pub(super) fn horner<T, C: Coefficient>(
     parts: &[Poly<C>],
     zero: T,
     mut mul_add: impl FnMut(T, &Poly<C>) -> Result<T, ExprError>,
@@ -626,6 +627,17 @@ pub(super) fn integrate_ratfun<C: Coefficient + Field>(
     value.mul(&divisor).map_err(size)
 }
 
+/// The polynomial value `p` of a sum at `pos`, held to the `terms` and `constant-bits` limits.
+pub(super) fn checked_sum<C: Coefficient>(p: Poly<C>, pos: usize) -> Result<Poly<C>, ExprError> {
+    limits::TERMS
+        .check_usize(p.len())
+        .map_err(|error| ExprError::Limit { pos, error })?;
+    p.coefficients()
+        .iter()
+        .try_for_each(|c| check_constant(c, pos))?;
+    Ok(p)
+}
+
 /// The value of a call of this module as a polynomial.
 pub(super) fn call_poly<C: Coefficient>(
     call: &Expr,
@@ -635,19 +647,12 @@ pub(super) fn call_poly<C: Coefficient>(
 ) -> Result<Poly<C>, ExprError> {
     match name {
         "integrate" => integrate_poly(call, args, vars),
+        "sum" if super::symbolic_sum::is_symbolic(args) => {
+            super::symbolic_sum::sum_poly(call, args, vars)
+        }
         "sum" => {
             let parts = sum_terms(call, args, |term| term.to_poly::<C>(vars))?;
-            let p = Poly::sum(parts);
-            limits::TERMS
-                .check_usize(p.len())
-                .map_err(|error| ExprError::Limit {
-                    pos: call.pos,
-                    error,
-                })?;
-            p.coefficients()
-                .iter()
-                .try_for_each(|c| check_constant(c, call.pos))?;
-            Ok(p)
+            checked_sum(Poly::sum(parts), call.pos)
         }
         _ => {
             let q = integer_call(call, args)?;
@@ -670,6 +675,9 @@ pub(super) fn call_ratfun<C: Coefficient + Field>(
 ) -> Result<RatFun<C>, ExprError> {
     match name {
         "integrate" => integrate_ratfun(call, args, vars),
+        "sum" if super::symbolic_sum::is_symbolic(args) => {
+            super::symbolic_sum::sum_ratfun(call, args, vars)
+        }
         "sum" => {
             let size = |err| size_error(err, call.pos);
             let mut acc = RatFun::from_poly(Poly::zero());

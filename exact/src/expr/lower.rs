@@ -7,7 +7,9 @@
 //! arithmetic there) and replaces every remaining call of the core language:
 //! * `binomial(n, k)` and `factorial(n)` by their exact integer value;
 //! * `sum(k, a, b, E)` by the unrolled sum `E(a) + E(a+1) + ... + E(b)`, each term lowered in
-//!   turn (nested sums share the one `sum-terms` budget, as in the exact conversions);
+//!   turn (nested sums share the one `sum-terms` budget, as in the exact conversions); with a
+//!   bound that has a variable (`sum(k, 1, n, k^2)`), by its closed form expanded as `diff`
+//!   below (a polynomial in the bound's variables);
 //! * `diff(E, t[, k])` by the derivative expanded as a rational function in lowest terms
 //!   (numerator, or numerator `/` denominator), computed exactly by [`Expr::to_ratfun`]. When
 //!   `E` has square roots or `sin`, `cos`, `tan`, the expansion is over the square-root field,
@@ -38,6 +40,7 @@ use super::calculus::sum_terms;
 use super::from_poly::ratfun_to_expr;
 use super::library::{count_nodes, has_sqrt, substitute, MAX_NODES};
 use super::map::at_pos;
+use super::symbolic_sum::is_symbolic;
 use super::trig::has_trig;
 use super::*;
 use crate::poly::Vars;
@@ -117,6 +120,8 @@ fn lower_node(e: &Expr) -> Result<Expr, ExprError> {
             let q: Rational = e.eval_constant()?;
             Ok(at_pos(&Expr::number(q), e.pos))
         }
+        // A bound with a variable: the closed form, expanded like a derivative.
+        "sum" if is_symbolic(args) => expand(e),
         "sum" => {
             let terms = sum_terms(e, args, lower_node)?;
             if terms.is_empty() {

@@ -54,8 +54,9 @@
 //!   fraction by the quotient rule ([`crate::ratfun::RatFun::derivative`]).
 //!   `integrate(E, t, a, b)` is the definite integral of a polynomial in `t` (coefficients may
 //!   be fractions free of `t`; the bounds any expressions), `sum(k, a, b, E)` the sum over the
-//!   integers `k` from `a` to `b` (integer constants; at most `sum-terms` terms,
-//!   [`limits::SUM_TERMS`]), `binomial(n, k)` and `factorial(n)` exact integers of integer
+//!   integers `k` from `a` to `b` (integer constants: at most `sum-terms` terms,
+//!   [`limits::SUM_TERMS`]; or polynomials with integer coefficients in other variables, for
+//!   a polynomial `E` in `k`, summed in closed form), `binomial(n, k)` and `factorial(n)` exact integers of integer
 //!   constants (held to `constant-bits`). The index of a sum and the variable of an integral
 //!   are bound ([`Expr::collect_variables`] skips them). In an exponent, a name that is not a
 //!   function followed by `(` is the exponent, and the `(` starts the next juxtaposed factor
@@ -117,7 +118,8 @@
 //! leaf module [`crate::coefficient`]); `numbers`: `FromStr` of the exact number types; `parse`: the lexer and
 //! the parser; `eval`: the conversion to polynomials and the constant evaluator with the size
 //! limits; `fraction`: the conversion to rational functions and the arguments of `diff`;
-//! `calculus`: `integrate`, `sum`, `binomial` and `factorial`; [`library`]: definitions,
+//! `calculus`: `integrate`, `sum`, `binomial` and `factorial`; `symbolic_sum`: the closed form
+//! of a sum whose bound has a variable; [`library`]: definitions,
 //! functions with parameters, vectors, matrices and the vector/Bezier functions, resolved to
 //! core trees; [`lower`]: the core calls rewritten as plain arithmetic for the front ends that
 //! evaluate a tree operation by operation; `map`: the one rebuild of a node from its mapped children ([`Expr::map_children`]) and the positions of built trees; `print`: the printer; `latex`: LaTeX ([`to_latex`]) with a [`Notation`] for names, from
@@ -150,6 +152,7 @@ mod numbers;
 mod parse;
 mod print;
 mod roots;
+mod symbolic_sum;
 #[cfg(test)]
 mod tests;
 mod trig;
@@ -166,6 +169,7 @@ pub use mathml::{equation_to_mathml, to_mathml};
 pub use numbers::{ParseRadicalError, ParseRationalError};
 pub use parse::{parse_expr, parse_expr_with_calls, parse_poly, LIST};
 pub use roots::{abs_radicand, ABS};
+pub use symbolic_sum::symbolic_sum_ranges;
 
 /// The functions written `name(arg, ...)` in every grammar (besides `sqrt`): `diff(E, t)` and
 /// `diff(E, t, k)`, the exact derivative of `E` in the variable `t` (`k` times);

@@ -30,7 +30,7 @@ pub(super) type Wave = (u32, Trig);
 pub(super) type Antiderivative<C> = Vec<(Wave, Vec<Poly<C>>)>;
 
 /// Terms of a polynomial as their exponents and coefficients.
-type TermList<C> = Vec<(Vec<(Var, u32)>, C)>;
+pub(super) type TermList<C> = Vec<(Vec<(Var, u32)>, C)>;
 
 /// A Gaussian rational `re + i im`.
 type Gauss = (Rational, Rational);
@@ -47,7 +47,7 @@ fn minus_i_pow(n: u32) -> Gauss {
 }
 
 /// The binomial coefficients `C(n, 0..=n)`.
-fn binomials(n: u32) -> Vec<BigInt> {
+pub(super) fn binomials(n: u32) -> Vec<BigInt> {
     let mut row = vec![BigInt::one()];
     for k in 0..n {
         let next = row[k as usize].clone() * (n - k) / (k + 1);

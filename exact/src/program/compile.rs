@@ -42,8 +42,8 @@
 use super::{ChainOp, Format, Func, Node, PowStyle, Program};
 use crate::expr::library::{Defs, Val};
 use crate::expr::{
-    lower, parse_expr, parse_expr_with_calls, reserved_constant, AddOp, Expr, ExprError, ExprKind,
-    MulOp, PI,
+    lower, parse_expr, parse_expr_with_calls, reserved_constant, symbolic_sum_ranges, AddOp, Expr,
+    ExprError, ExprKind, MulOp, PI,
 };
 use crate::rational::Rational;
 use exactcheck_core::limits::{self, LimitError};
@@ -242,6 +242,19 @@ impl Program {
             table
                 .names
                 .extend(names.into_iter().filter(|n| reserved(n).is_none()));
+        }
+        // A sum to a symbolic bound has no term-by-term evaluation in floating point.
+        if let Some((a, b)) = resolved.iter().find_map(|r| symbolic_sum_ranges(r).pop()) {
+            return Err(CompileError::Expr(ExprError::BadCall {
+                pos: b.pos,
+                name: "sum".into(),
+                why: format!(
+                    "the range {a}..{b} has a bound that is not an integer constant: a \
+                     regressed formula adds the terms of a sum in floating point, which needs \
+                     integer constant bounds (prove decides a sum with a symbolic bound exactly, \
+                     in closed form)"
+                ),
+            }));
         }
         let outputs = resolved
             .iter()

@@ -151,6 +151,7 @@ impl AlgebraicConstants {
         VarDomain {
             lower: Some((iv.lo.clone(), true)),
             upper: Some((iv.hi.clone(), true)),
+            integer: false,
         }
     }
 

@@ -56,14 +56,17 @@
 //! catalogue all go through it, so that they share one counter-example rule.
 
 mod constants;
+mod domain;
 mod factored;
 mod fraction;
 mod hypotheses;
 pub mod identity;
 pub mod random;
 mod roots;
+mod sum_ranges;
 
 pub use constants::{AlgebraicConstants, ConstantPoint, ConstantValue, CONSTANT_ATTEMPTS};
+pub use domain::VarDomain;
 pub use factored::factored;
 pub use fraction::{decide_fraction, real_zero_free, where_clause, FractionIdentity};
 pub use hypotheses::{Hypothesis, MAX_HYPOTHESIS_DROPS};
@@ -72,6 +75,7 @@ pub use identity::{
     IdentitySpec, IdentityVerdict, Part, Statement, UsedHypothesis,
 };
 pub use roots::{square_roots, SquareRoot};
+pub use sum_ranges::SumRanges;
 
 pub use random::{
     random_identity_test, size_bound, RandomDecision, RandomReport, Seed, SizeBound,
@@ -192,100 +196,6 @@ pub enum Decision<C: PointField> {
     },
 }
 
-/// The range of a variable: optional lower and upper bounds, each with a flag "strict".
-///
-/// `VarDomain { lower: Some((0, true)), upper: None }` is `v > 0`; `lower: Some((0, false)), upper:
-/// Some((1, false))` is `0 <= v <= 1`. Sampling draws from the box: with both bounds
-/// `lo + (hi - lo) k/16` (`k` in `1..16`, the ends too when not strict), with one bound
-/// `lo + n/d` or `hi - n/d` (`n/d` a small positive rational, or 0 when not strict).
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct VarDomain {
-    /// The lower bound and whether it is strict (`>`), if any.
-    pub lower: Option<(Rational, bool)>,
-    /// The upper bound and whether it is strict (`<`), if any.
-    pub upper: Option<(Rational, bool)>,
-}
-
-impl VarDomain {
-    /// The whole real line.
-    pub fn all() -> VarDomain {
-        VarDomain::default()
-    }
-
-    /// Whether no real number satisfies the bounds.
-    pub fn is_empty(&self) -> bool {
-        match (&self.lower, &self.upper) {
-            (Some((lo, ls)), Some((hi, hs))) => lo > hi || (lo == hi && (*ls || *hs)),
-            _ => false,
-        }
-    }
-
-    /// Whether `x` satisfies the bounds (exactly).
-    pub fn contains(&self, x: &Radical) -> bool {
-        let above = match &self.lower {
-            None => true,
-            Some((lo, strict)) => {
-                let lo = Radical::from(lo);
-                if *strict {
-                    *x > lo
-                } else {
-                    *x >= lo
-                }
-            }
-        };
-        let below = match &self.upper {
-            None => true,
-            Some((hi, strict)) => {
-                let hi = Radical::from(hi);
-                if *strict {
-                    *x < hi
-                } else {
-                    *x <= hi
-                }
-            }
-        };
-        above && below
-    }
-
-    /// A value of the domain (see the type's documentation); unbounded: [`small_rational`].
-    fn sample(&self, rng: &mut Rng) -> Rational {
-        let small_positive = |rng: &mut Rng, strict: bool| loop {
-            let n = rng.below(10) as i64;
-            let d = rng.below(4) as i64 + 1;
-            if n > 0 || !strict {
-                return Rational::new(n, d).expect("the denominator is at least 1");
-            }
-        };
-        match (&self.lower, &self.upper) {
-            (None, None) => small_rational(rng),
-            (Some((lo, strict)), None) => lo + &small_positive(rng, *strict),
-            (None, Some((hi, strict))) => hi - &small_positive(rng, *strict),
-            (Some((lo, ls)), Some((hi, hs))) => {
-                let k = loop {
-                    let k = rng.below(17) as i64;
-                    if !((k == 0 && *ls) || (k == 16 && *hs)) {
-                        break k;
-                    }
-                };
-                let frac = Rational::new(k, 16).expect("16 is not zero");
-                lo + &((hi - lo) * &frac)
-            }
-        }
-    }
-}
-
-impl fmt::Display for VarDomain {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let op = |strict: bool| if strict { "<" } else { "<=" };
-        match (&self.lower, &self.upper) {
-            (None, None) => write!(f, "any value"),
-            (Some((lo, s)), None) => write!(f, "{lo} {} v", op(*s)),
-            (None, Some((hi, s))) => write!(f, "v {} {hi}", op(*s)),
-            (Some((lo, ls)), Some((hi, hs))) => write!(f, "{lo} {} v {} {hi}", op(*ls), op(*hs)),
-        }
-    }
-}
-
 /// Why nothing was decided.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum DecideError {
@@ -377,7 +287,7 @@ fn circle_pair<C: Field>(r: &Poly<C>) -> Option<(Var, Var)> {
 }
 
 /// A small rational `n/d`, `|n| <= 9`, `1 <= d <= 4`, for the counter-example search.
-fn small_rational(rng: &mut Rng) -> Rational {
+pub(crate) fn small_rational(rng: &mut Rng) -> Rational {
     let n = (rng.next_u64() % 19) as i64 - 9;
     let d = (rng.next_u64() % 4) as i64 + 1;
     Rational::new(n, d).expect("the denominator is at least 1")
@@ -942,6 +852,7 @@ mod tests {
         let open = |lo: i64, hi: Option<i64>| VarDomain {
             lower: Some((Rational::from(lo), true)),
             upper: hi.map(|h| (Rational::from(h), true)),
+            integer: false,
         };
         let domains = [
             (0, open(0, Some(1))),
@@ -959,6 +870,7 @@ mod tests {
             VarDomain {
                 lower: Some((Rational::new(1000001, 1000).unwrap(), true)),
                 upper: Some((Rational::new(1000002, 1000).unwrap(), true)),
+                integer: false,
             },
         )];
         let pt = failing_point("t - 1000", &["t"], &far);
@@ -970,6 +882,7 @@ mod tests {
         let d = VarDomain {
             lower: Some((Rational::ZERO, true)),
             upper: Some((Rational::ONE, false)),
+            integer: false,
         };
         assert!(!d.contains(&Radical::zero()) && d.contains(&Radical::one()));
         let mut rng = Rng::new(3);
@@ -979,6 +892,7 @@ mod tests {
         let empty = VarDomain {
             lower: Some((Rational::ONE, false)),
             upper: Some((Rational::ONE, true)),
+            integer: false,
         };
         assert!(empty.is_empty());
     }

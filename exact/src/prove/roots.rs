@@ -60,6 +60,7 @@ impl<C: PointField> SquareRoot<C> {
         VarDomain {
             lower: Some((Rational::ZERO, false)),
             upper: None,
+            integer: false,
         }
     }
 

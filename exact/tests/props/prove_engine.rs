@@ -266,10 +266,12 @@ fn counter_examples_stay_in_the_domains() {
     let positive = VarDomain {
         lower: Some((Rational::ZERO, true)),
         upper: None,
+        integer: false,
     };
     let half_up = VarDomain {
         lower: Some((Rational::new(1, 2).unwrap(), false)),
         upper: None,
+        integer: false,
     };
     let mut vars = Vars::new();
     let res = parse_poly::<Rational>("r + R", &mut vars).unwrap();
@@ -288,6 +290,7 @@ fn counter_examples_stay_in_the_domains() {
     let c_dom = VarDomain {
         lower: Some((Rational::new(1, 2).unwrap(), true)),
         upper: Some((Rational::ONE, true)),
+        integer: false,
     };
     let d = decide_in(&res, &rels, &[(0, c_dom.clone())], 2).unwrap();
     let pt = check_point(&res, &rels, &d);
@@ -299,6 +302,7 @@ fn counter_examples_stay_in_the_domains() {
     let neg = VarDomain {
         lower: None,
         upper: Some((Rational::ZERO, true)),
+        integer: false,
     };
     let d = decide_in(&res, &rels, &[(0, neg)], 1).unwrap();
     assert_eq!(check_point(&res, &rels, &d), vec![Radical::from(-2)]);
@@ -308,6 +312,7 @@ fn counter_examples_stay_in_the_domains() {
     let big = VarDomain {
         lower: Some((Rational::from_integer(3), true)),
         upper: None,
+        integer: false,
     };
     assert!(matches!(
         decide_in(&res, &rels, &[(0, big.clone())], 1).unwrap(),
@@ -327,6 +332,7 @@ fn malformed_domains_are_errors() {
     let empty = VarDomain {
         lower: Some((Rational::ONE, false)),
         upper: Some((Rational::ZERO, false)),
+        integer: false,
     };
     assert_eq!(
         decide_in(&res, &[], &[(0, empty)], 1).unwrap_err(),

@@ -58,6 +58,7 @@ fn at_least(lo: i64) -> VarDomain {
     VarDomain {
         lower: Some((Rational::from_integer(lo), false)),
         upper: None,
+        integer: false,
     }
 }
 

@@ -217,6 +217,9 @@ fn identity<C: PointField + Display>(
     }
     domains.extend(roots.iter().map(|r| (r.var, SquareRoot::<C>::domain())));
     domains.extend(constant_domain);
+    // The variables of sums' symbolic bounds are integers inside the sums' ranges.
+    let sums = exactcheck_exact::prove::SumRanges::of(decided.iter().copied());
+    sums.add_domains(&vars, &mut domains);
     let spec = IdentitySpec {
         relations,
         domains,
@@ -257,6 +260,7 @@ fn identity<C: PointField + Display>(
     })?;
     let mut report = report;
     crate::prove_cmd::sound_counter_example(&spec, &mut report, &angles);
+    sums.check(&spec.vars, &mut report);
     // With algebraic constants, a non-zero reduction gets its counter-example at c = theta (not
     // with a constant angle: the search would give its cosine and sine rational values).
     phrasing.constant_point = k

@@ -126,6 +126,7 @@ pub fn domains() -> Vec<DomainDecl> {
     let positive = || VarDomain {
         lower: Some((Rational::ZERO, true)),
         upper: None,
+        integer: false,
     };
     vec![
         DomainDecl {

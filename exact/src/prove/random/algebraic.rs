@@ -190,11 +190,19 @@ pub(crate) fn confirm(
     free: &[String],
     circles: &[(String, String)],
 ) -> Result<ExactPoint, String> {
-    if free.iter().any(|v| v == PI) {
-        return Err(
-            "pi occurs outside an angle, and it has no rational value to give (it is transcendental)"
-                .into(),
-        );
+    // Pi outside an angle is an indeterminate: LHS - RHS non-zero at a rational value of it is
+    // a non-zero rational function of pi over the algebraic numbers, hence not zero at pi
+    // (transcendental), at the same values of the other variables. With a constant angle
+    // (`sin(1)`) that would need pi and the angle's cosine and sine algebraically independent,
+    // which is not known.
+    let pi_free = free.iter().any(|v| v == PI);
+    if pi_free {
+        if let Some(u) = p.angles.iter().find(|a| angle_variable(a).is_none()) {
+            return Err(format!(
+                "pi occurs outside an angle next to the constant angle {u}, and whether pi and \
+                 cos({u}) + i sin({u}) are algebraically independent is not known"
+            ));
+        }
     }
     let mixed: Vec<String> = p
         .angles
@@ -264,6 +272,23 @@ pub(crate) fn confirm(
             // The constant angle's cosine and sine took a rational point of their circle, not
             // their values: LHS - RHS, a polynomial in them, is non-zero there, so non-zero
             // modulo the circle, and at the angle itself by Lindemann–Weierstrass.
+            let pi_value = shown.iter().find(|(v, _)| v == PI).map(|(_, q)| q.clone());
+            let shown: Vec<(String, String)> = shown.into_iter().filter(|(v, _)| v != PI).collect();
+            if let Some(q) = pi_value {
+                return Ok(ExactPoint {
+                    point: describe_point(&shown),
+                    value: format!(
+                        "{value} with pi replaced by {q} (so LHS - RHS{} is a non-zero \
+                         rational function of pi over the algebraic numbers, and pi, which is \
+                         transcendental, is no root of it)",
+                        if shown.is_empty() {
+                            ""
+                        } else {
+                            " at this point"
+                        }
+                    ),
+                });
+            }
             let value = match p.angles.iter().find(|a| angle_variable(a).is_none()) {
                 Some(u) => {
                     let at = |n: String| {

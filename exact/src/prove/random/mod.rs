@@ -40,7 +40,8 @@
 //!   `e = sum e_j`;
 //! * a product: `L = sum L_i`, `L_D = sum L_Di`, degrees the sums; a division by
 //!   `F_c / D_c` multiplies by `D_c / F_c`: `L += L_Dc`, `L_D += L_c`, `d += e_c`, `e += d_c`;
-//! * a power `b^k` (`k` a non-negative integer literal): `k L_b`, `k L_Db`, `k d_b`, `k e_b`.
+//! * a power `b^k` (`k` a non-negative integer literal): `k L_b`, `k L_Db`, `k d_b`, `k e_b`;
+//!   a power with a negative exponent is first written as a division, `b^(-k) = 1/b^k`.
 //!
 //! All of these are checked `u64` operations; an overflow makes the test report `undecided`
 //! (it never wraps). Square roots of constants and angles are rewritten first (below,
@@ -167,7 +168,7 @@ use crate::expr::{lower, Expr, ExprKind, MulOp};
 use crate::modp::PrimeField;
 use algebraic::Prepared;
 use exactcheck_core::Rng;
-use ring::{constant_exponent, eval, EvalError, QuotientRing, Values};
+use ring::{constant_exponent, eval, powers_as_divisions, EvalError, QuotientRing, Values};
 use std::collections::HashMap;
 use std::fmt;
 
@@ -549,8 +550,8 @@ pub fn random_identity_test(
         ));
     }
     let (lhs, rhs) = (
-        lower(lhs).map_err(|e| e.to_string())?,
-        lower(rhs).map_err(|e| e.to_string())?,
+        powers_as_divisions(&lower(lhs).map_err(|e| e.to_string())?),
+        powers_as_divisions(&lower(rhs).map_err(|e| e.to_string())?),
     );
     let mut taken: Vec<String> = variables.to_vec();
     lhs.collect_variables(&mut taken);

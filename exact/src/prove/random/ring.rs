@@ -303,6 +303,49 @@ pub(crate) enum EvalError {
     Input(String),
 }
 
+/// `e` with the exponent of every power written as the integer it evaluates to, and a power
+/// with a negative exponent `b^(-k)` written as the division `1/b^k` (a rational function, as
+/// the exact conversion reads it). An exponent that is not an integer constant is kept, and
+/// refused where the power is evaluated.
+pub(crate) fn powers_as_divisions(e: &Expr) -> Expr {
+    let e = e.map_children(powers_as_divisions);
+    let ExprKind::Pow(base, x) = &e.kind else {
+        return e;
+    };
+    let Ok(k) = x.eval_constant::<Rational>() else {
+        return e;
+    };
+    if !k.is_integer() {
+        return e;
+    }
+    let power = |k: Rational| Expr {
+        kind: ExprKind::Pow(
+            base.clone(),
+            Box::new(Expr {
+                kind: ExprKind::Number(k),
+                pos: x.pos,
+            }),
+        ),
+        pos: e.pos,
+    };
+    if k.signum() != exactcheck_core::Sign::Negative {
+        return power(k);
+    }
+    Expr {
+        kind: ExprKind::Product(vec![
+            (
+                MulOp::Times,
+                Expr {
+                    kind: ExprKind::Number(Rational::ONE),
+                    pos: e.pos,
+                },
+            ),
+            (MulOp::Divide, power(k.neg_ref())),
+        ]),
+        pos: e.pos,
+    }
+}
+
 /// The exponent of a power, a non-negative integer literal.
 pub(crate) fn constant_exponent(e: &Expr) -> Option<u64> {
     match &e.kind {
