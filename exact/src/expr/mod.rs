@@ -162,7 +162,7 @@ pub use latex::{equation_to_latex, to_latex, Notation};
 pub use lower::{eval_lowered, lower};
 pub use mathml::{equation_to_mathml, to_mathml};
 pub use numbers::{ParseRadicalError, ParseRationalError};
-pub use parse::{parse_expr, parse_expr_with_calls, parse_poly, LIST};
+pub use parse::{parse_expr, parse_expr_with_calls, parse_poly, split_equation, LIST};
 
 /// The functions written `name(arg, ...)` in every grammar (besides `sqrt`): `diff(E, t)` and
 /// `diff(E, t, k)`, the exact derivative of `E` in the variable `t` (`k` times);
