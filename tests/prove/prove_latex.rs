@@ -37,7 +37,10 @@ fn formulas_as_typed_in_latex_are_decided() {
         assert!(out.starts_with("proved"), "{args:?}: {out}");
     }
     // A misprint typed the same way fails at an exact point.
-    let (code, out, err) = run(&["prove", "\\sum_{i=0}^{3}\\binom{3}{i}t^{i+1}(1-t)^{3-i} = 1"]);
+    let (code, out, err) = run(&[
+        "prove",
+        "\\sum_{i=0}^{3}\\binom{3}{i}t^{i+1}(1-t)^{3-i} = 1",
+    ]);
     assert_eq!(code, 1, "{out}{err}");
     assert!(out.starts_with("fails: at t = "), "{out}");
 }
