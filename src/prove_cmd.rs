@@ -44,7 +44,7 @@ use exactcheck_core::Ring;
 use exactcheck_exact::expr::library::{self, Shape};
 use exactcheck_exact::expr::{
     angle_variable, angles, constant_base, first_reserved, has_constant_angle, has_trig,
-    ratfun_sides, register_angle_bases, Coefficient, Expr, ExprError, PI,
+    ratfun_sides, register_angle_bases, split_equation, Coefficient, Expr, ExprError, PI,
 };
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
@@ -68,7 +68,8 @@ pub struct ProveArgs {
     /// or two matrices of one shape are compared component by component.
     #[arg(allow_hyphen_values = true)]
     pub lhs: String,
-    /// The right-hand side (default 0).
+    /// The right-hand side (default 0). Without it, a left-hand side with one `=` outside
+    /// parentheses and braces is the whole equation: 'x^2 - 1 = (x - 1)(x + 1)'.
     #[arg(allow_hyphen_values = true)]
     pub rhs: Option<String>,
     /// A relation `A = B` the variables satisfy, e.g. `c^2 + s^2 = 1`, or a domain with constant
@@ -189,15 +190,14 @@ pub fn parse_where_with(
     }
     parts.push(rest);
     if ops.is_empty() {
-        let sides: Vec<&str> = text.split('=').collect();
-        if sides.len() != 2 {
+        let Some((lhs, rhs)) = split_equation(text) else {
             return Err(Error::Input(format!(
                 "{what}: {text:?} must have the form 'A = B' (one '='), or a domain such as 'r > 0' or '0 <= t <= 1'"
             )));
-        }
+        };
         return Ok(Where::Relation(
-            parse(sides[0], &format!("{what} left side"))?,
-            parse(sides[1], &format!("{what} right side"))?,
+            parse(&lhs, &format!("{what} left side"))?,
+            parse(&rhs, &format!("{what} right side"))?,
         ));
     }
     let bad = |why: &str| {
@@ -322,10 +322,19 @@ impl Sides<'_> {
 /// [`Error::Input`] for a malformed expression, relation or domain, a division by zero or by a
 /// non-constant, inconsistent relations; [`Error::Usage`] for a bad `--random` request.
 pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
-    let lhs_value = parse_value(&args.lhs, "LHS")?;
+    // One argument with one `=` outside parentheses and braces is the equation `LHS = RHS`.
+    let split = match args.rhs {
+        None => split_equation(&args.lhs),
+        Some(_) => None,
+    };
+    let (lhs_text, rhs_text) = match &split {
+        Some((l, r)) => (l.as_str(), Some(r)),
+        None => (args.lhs.as_str(), args.rhs.as_ref()),
+    };
+    let lhs_value = parse_value(lhs_text, "LHS")?;
     let shape = lhs_value.dims();
     let lhs = lhs_value.components();
-    let rhs = match &args.rhs {
+    let rhs = match rhs_text {
         Some(r) => {
             let v = parse_value(r, "RHS")?;
             if v.dims() != shape {

@@ -3,7 +3,9 @@
 //! exact evaluation as the reference side ([`Program::eval_exact`]).
 
 use crate::Error;
-use exactcheck_exact::expr::{parse_expr_with_calls, reserved_constant, AddOp, Expr, ExprKind, PI};
+use exactcheck_exact::expr::{
+    parse_expr_with_calls, reserved_constant, split_equation, AddOp, Expr, ExprKind, PI,
+};
 use exactcheck_exact::program::Program;
 use exactcheck_exact::Rational;
 use exactcheck_float::{ExactScalar, InputGen, NearSet, Rng};
@@ -62,15 +64,14 @@ pub fn expression_inputs(
 fn difference(text: &str, inputs: &[String]) -> Result<Program, Error> {
     let bad = |why: String| Error::Input(format!("--near: {why}"));
     let inputs = &expression_inputs("--near", text, inputs)?;
-    let sides: Vec<&str> = text.split('=').collect();
-    let [lhs, rhs] = sides[..] else {
+    let Some((lhs, rhs)) = split_equation(text) else {
         return Err(bad(format!(
             "'{}' is not one equation EXPR = EXPR (e.g. 'x*y = 1' or 'a - b = 0')",
             text.trim()
         )));
     };
     let mut parsed = Vec::new();
-    for (side, t) in [("left side", lhs), ("right side", rhs)] {
+    for (side, t) in [("left side", lhs.as_str()), ("right side", rhs.as_str())] {
         if t.trim().is_empty() {
             return Err(bad(format!("the {side} of '{}' is empty", text.trim())));
         }

@@ -12,6 +12,7 @@ mod prove_angles_as_printed;
 mod prove_calculus_roots;
 mod prove_differential_findings;
 mod prove_fractions;
+mod prove_latex;
 mod prove_library;
 mod prove_random;
 mod prove_rational_roots;

@@ -95,6 +95,16 @@ pub(super) fn greek_char(name: &str) -> Option<char> {
     GREEK.iter().find(|(n, _)| *n == name).map(|(_, c)| *c)
 }
 
+/// The name of a Unicode Greek letter (`θ` is `theta`), for reading: the table's characters,
+/// and `ε` (the common form of epsilon) as `epsilon`. `π` is not a name but the constant pi.
+pub(super) fn greek_name(c: char) -> Option<&'static str> {
+    match c {
+        'π' => None,
+        'ε' => Some("epsilon"),
+        _ => GREEK.iter().find(|(_, g)| *g == c).map(|(n, _)| *n),
+    }
+}
+
 /// One piece of a variable's printed name.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub(super) enum Glyph {

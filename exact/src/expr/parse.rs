@@ -7,6 +7,11 @@ use crate::poly::{Poly, Vars};
 use num_bigint::BigUint;
 use std::str::FromStr;
 
+/// LaTeX math notation read as the ASCII it stands for (`\\frac`, `\\sqrt`, Greek letters,
+/// `\\sum`, `\\int`, ...): the part of this parser that only LaTeX input reaches.
+#[path = "parse_latex.rs"]
+mod latex_input;
+
 /// The name of the call a list `[a, b, ...]` parses to (only with calls,
 /// [`parse_expr_with_calls`]): a vector, or a matrix when the items are rows.
 pub const LIST: &str = "[]";
@@ -44,6 +49,16 @@ enum Tok {
     Root,
     /// A run of superscript digits with an optional sign (`²`, `⁻¹`): an exponent.
     Superscript,
+    /// `=`: only inside the limits of `\\sum_{k=1}` and between the sides of an equation.
+    Equals,
+    /// LaTeX `{`: grouping.
+    LBrace,
+    /// LaTeX `}`.
+    RBrace,
+    /// LaTeX `_` that does not belong to a name (`\\sum_`, `\\int_`).
+    Underscore,
+    /// A LaTeX command other than a name, an operator or a delimiter (`\\frac`, `\\sin`).
+    Command,
     End,
     Bad(char),
 }
@@ -64,13 +79,20 @@ struct Parser<'a> {
     depth: usize,
     /// Whether `name(arg, ...)` is read as an [`ExprKind::Call`] ([`parse_expr_with_calls`]).
     calls: bool,
+    /// Whether the text is LaTeX (it has a `\\`, `{`, `}` or `$`): adjacent letters are a
+    /// product, and commands are read.
+    latex: bool,
+    /// How many integrands are open: inside one, a juxtaposed `d` starts the differential.
+    integrand: usize,
 }
 
 impl<'a> Parser<'a> {
-    fn new(src: &'a str, calls: bool) -> Self {
+    fn new(src: &'a str, calls: bool, latex: bool) -> Self {
         let mut p = Parser {
             src,
             calls,
+            latex,
+            integrand: 0,
             cur: Token {
                 tok: Tok::End,
                 start: 0,
@@ -84,6 +106,11 @@ impl<'a> Parser<'a> {
 
     /// The token starting at or after byte `at` (skipping white space).
     fn lex(&self, at: usize) -> Token {
+        let at = if self.latex {
+            latex_input::skip_spacing(self.src, at)
+        } else {
+            at
+        };
         let rest = &self.src[at..];
         let Some((off, ch)) = rest.char_indices().find(|(_, c)| !c.is_whitespace()) else {
             return Token {
@@ -93,6 +120,11 @@ impl<'a> Parser<'a> {
             };
         };
         let start = at + off;
+        if self.latex {
+            if let Some(t) = self.lex_latex(start) {
+                return t;
+            }
+        }
         let bytes = self.src.as_bytes();
         let run = |mut i: usize, ok: fn(u8) -> bool| {
             while i < bytes.len() && ok(bytes[i]) {
@@ -133,12 +165,14 @@ impl<'a> Parser<'a> {
             '[' => (Tok::LBracket, start + 1),
             ']' => (Tok::RBracket, start + 1),
             ',' => (Tok::Comma, start + 1),
+            '=' => (Tok::Equals, start + 1),
             '°' => (Tok::Degree, start + '°'.len_utf8()),
             // The notation of printed mathematics, as text copied from a typeset page has it.
             '\u{2212}' => (Tok::Minus, start + ch.len_utf8()),
             '\u{b7}' | '\u{22c5}' | '\u{d7}' | '\u{2217}' => (Tok::Star, start + ch.len_utf8()),
             '\u{f7}' | '\u{2215}' => (Tok::Slash, start + ch.len_utf8()),
             'π' => (Tok::Pi, start + ch.len_utf8()),
+            c if super::latex::greek_name(c).is_some() => (Tok::Ident, start + c.len_utf8()),
             '√' => (Tok::Root, start + ch.len_utf8()),
             c if superscript_value(c).is_some() => {
                 let len = rest[off..]
@@ -165,6 +199,7 @@ impl<'a> Parser<'a> {
         let found = match t.tok {
             Tok::End => "end of input".to_string(),
             Tok::Bad(c) => format!("character '{}'", c.escape_debug()),
+            Tok::Equals => "character '='".to_string(),
             _ => format!("'{}'", self.text(t)),
         };
         ExprError::Unexpected {
@@ -222,7 +257,22 @@ impl<'a> Parser<'a> {
     /// `(a+b)(a-b)`, `c^2 x^3`): implicit multiplication, binding like `*`. A number cannot:
     /// `2 3` or `x 2` is more likely a typo than a product, so it stays an error.
     fn starts_implicit_factor(&self) -> bool {
-        matches!(self.cur.tok, Tok::Ident | Tok::LParen | Tok::Pi | Tok::Root)
+        match self.cur.tok {
+            Tok::Ident => !(self.integrand > 0 && self.at_differential()),
+            Tok::LParen | Tok::Pi | Tok::Root | Tok::LBrace | Tok::Command => true,
+            Tok::LBracket => self.latex,
+            _ => false,
+        }
+    }
+
+    /// The name of an identifier token: its text, or in LaTeX the name it spells
+    /// (`\\theta_{1}` is `theta_1`).
+    fn ident_name(&self, t: Token) -> String {
+        if self.latex || !self.text(t).is_ascii() {
+            latex_input::name_of(self.text(t))
+        } else {
+            self.text(t).to_string()
+        }
     }
 
     fn parse_product(&mut self) -> Result<Expr, ExprError> {
@@ -339,33 +389,7 @@ impl<'a> Parser<'a> {
             }
             _ => return Ok(base),
         };
-        let pos = base.pos;
-        // A half-integer constant exponent, as printed (`(1 + t^2)^(3/2)`, `x^0.5`), is a power
-        // of the square root: `sqrt(base)^n` for the exponent n/2.
-        if let Ok(q) = exp.eval_constant::<Rational>() {
-            if q.denom() == BigInt::from(2) {
-                let root = Expr {
-                    kind: ExprKind::Sqrt(Box::new(base)),
-                    pos,
-                };
-                if q.numer() == BigInt::from(1) {
-                    return Ok(root);
-                }
-                let mut n = Expr::number(Rational::from(q.numer()));
-                n.pos = exp.pos;
-                if let ExprKind::Neg(inner) = &mut n.kind {
-                    inner.pos = exp.pos;
-                }
-                return Ok(Expr {
-                    kind: ExprKind::Pow(Box::new(root), Box::new(n)),
-                    pos,
-                });
-            }
-        }
-        Ok(Expr {
-            kind: ExprKind::Pow(Box::new(base), Box::new(exp)),
-            pos,
-        })
+        Ok(power(base, exp))
     }
 
     /// `exponent := ('-' | '+') exponent | atom ('^' exponent)?`.
@@ -387,7 +411,7 @@ impl<'a> Parser<'a> {
                     pos: t.start,
                 })
             }
-            Tok::Ident if self.text(t) == "sqrt" => {
+            Tok::Ident if self.ident_name(t) == "sqrt" => {
                 self.bump();
                 if self.cur.tok != Tok::LParen {
                     return Err(self.unexpected("'(' after sqrt"));
@@ -400,15 +424,21 @@ impl<'a> Parser<'a> {
             }
             Tok::Ident => {
                 self.bump();
-                let name = self.text(t);
+                let name = self.ident_name(t);
+                let name = name.as_str();
                 // In an exponent (an integer constant), only a built-in or library function is
                 // called: another name before `(` is the exponent, and the `(` starts the next
                 // factor (`t^i (1-t)^(3-i)`), also with calls.
-                let known = FUNCTIONS.contains(&name)
-                    || (self.calls && super::library::function_names().contains(&name));
+                // In LaTeX, a letter or Greek letter before `(` is a factor (`n(n+1)`): only a
+                // word (`sqrt(2)`) or `\\operatorname{f}` is called.
+                let latex_factor = self.latex && !latex_input::is_function_word(self.text(t));
+                let known = !latex_factor
+                    && (FUNCTIONS.contains(&name)
+                        || (self.calls && super::library::function_names().contains(&name)));
                 // `t (1 - t)`, with white space before the `(`, is a product as printed, unless
                 // the name is a built-in or library function; `f(x)` is a call.
-                let spaced = self.cur.start > t.end && !FUNCTION_LIKE_NAMES.contains(&name);
+                let spaced = (self.cur.start > t.end || latex_factor)
+                    && !FUNCTION_LIKE_NAMES.contains(&name);
                 let call_here = if expected == EXPECT_EXPONENT {
                     known
                 } else {
@@ -417,7 +447,7 @@ impl<'a> Parser<'a> {
                 if self.cur.tok == Tok::LParen && call_here {
                     let args = self.parse_arguments()?;
                     return Ok(Expr {
-                        kind: ExprKind::Call(self.text(t).to_string(), args),
+                        kind: ExprKind::Call(name.to_string(), args),
                         pos: t.start,
                     });
                 }
@@ -426,15 +456,19 @@ impl<'a> Parser<'a> {
                 if self.cur.tok == Tok::LParen && expected != EXPECT_EXPONENT && !spaced {
                     return Err(ExprError::UnknownFunction {
                         pos: t.start,
-                        name: self.text(t).to_string(),
+                        name: name.to_string(),
                     });
                 }
                 Ok(Expr {
-                    kind: ExprKind::Var(self.text(t).to_string()),
+                    kind: ExprKind::Var(name.to_string()),
                     pos: t.start,
                 })
             }
             Tok::LParen => self.parse_parenthesized(),
+            Tok::LBrace => self.parse_group(),
+            Tok::Command => self.parse_command(),
+            // In LaTeX, brackets group like parentheses (`\\left[ .. \\right]`).
+            Tok::LBracket if self.latex => self.parse_enclosed(Tok::RBracket, "an operator or ']'"),
             Tok::LBracket if self.calls => self.parse_list(),
             Tok::Pi => {
                 self.bump();
@@ -526,17 +560,60 @@ impl<'a> Parser<'a> {
     /// `'(' sum ')'`, the current token being `(`.
     /// The expression's position becomes that of the `(`.
     fn parse_parenthesized(&mut self) -> Result<Expr, ExprError> {
+        self.parse_enclosed(Tok::RParen, "an operator or ')'")
+    }
+
+    /// `'{' sum '}'`, the current token being `{`: a LaTeX group.
+    fn parse_group(&mut self) -> Result<Expr, ExprError> {
+        self.parse_enclosed(Tok::RBrace, "an operator or '}'")
+    }
+
+    /// The opening token, a sum, then `close`; the position of the opening token.
+    fn parse_enclosed(&mut self, close: Tok, expected: &'static str) -> Result<Expr, ExprError> {
         self.enter()?;
         let open = self.cur.start;
         self.bump();
+        // A `d` inside parentheses or braces is a factor, not the differential of an integral.
+        let integrand = std::mem::take(&mut self.integrand);
         let inner = self.parse_sum();
+        self.integrand = integrand;
         self.leave();
         let inner = inner?;
-        if self.cur.tok != Tok::RParen {
-            return Err(self.unexpected("an operator or ')'"));
+        if self.cur.tok != close {
+            return Err(self.unexpected(expected));
         }
         self.bump();
         Ok(Expr { pos: open, ..inner })
+    }
+}
+
+/// `base ^ exp`; a half-integer constant exponent, as printed (`(1 + t^2)^(3/2)`, `x^0.5`), is a
+/// power of the square root: `sqrt(base)^n` for the exponent n/2.
+fn power(base: Expr, exp: Expr) -> Expr {
+    let pos = base.pos;
+    if let Ok(q) = exp.eval_constant::<Rational>() {
+        if q.denom() == BigInt::from(2) {
+            let root = Expr {
+                kind: ExprKind::Sqrt(Box::new(base)),
+                pos,
+            };
+            if q.numer() == BigInt::from(1) {
+                return root;
+            }
+            let mut n = Expr::number(Rational::from(q.numer()));
+            n.pos = exp.pos;
+            if let ExprKind::Neg(inner) = &mut n.kind {
+                inner.pos = exp.pos;
+            }
+            return Expr {
+                kind: ExprKind::Pow(Box::new(root), Box::new(n)),
+                pos,
+            };
+        }
+    }
+    Expr {
+        kind: ExprKind::Pow(Box::new(base), Box::new(exp)),
+        pos,
     }
 }
 
@@ -654,7 +731,8 @@ fn number_value(text: &str, pos: usize) -> Result<Rational, ExprError> {
 /// [`ExprError::Unexpected`] for text that does not fit the grammar, [`ExprError::Limit`]
 /// beyond the `depth` limit of nesting or the `digits` or `constant-bits` limit of a number.
 pub fn parse_expr(text: &str) -> Result<Expr, ExprError> {
-    Parser::new(text, false).parse_all()
+    let (src, latex) = latex_input::prepare(text);
+    Parser::new(&src, false, latex).parse_all()
 }
 
 /// [`parse_expr`] for a grammar with function calls: `name(arg, ...)` (a name directly followed
@@ -666,7 +744,40 @@ pub fn parse_expr(text: &str) -> Result<Expr, ExprError> {
 /// # Errors
 /// As [`parse_expr`].
 pub fn parse_expr_with_calls(text: &str) -> Result<Expr, ExprError> {
-    Parser::new(text, true).parse_all()
+    let (src, latex) = latex_input::prepare(text);
+    Parser::new(&src, true, latex).parse_all()
+}
+
+/// The two sides of an equation written as one text, `LHS = RHS`, when it has exactly one `=`
+/// outside parentheses, brackets and braces (`\\sum_{k=1}^{n} k = \\frac{n(n+1)}{2}`); `None`
+/// otherwise. The sides of a LaTeX text stay LaTeX.
+pub fn split_equation(text: &str) -> Option<(String, String)> {
+    let (src, latex) = latex_input::prepare(text);
+    let mut p = Parser::new(&src, true, latex);
+    let mut depth = 0usize;
+    let mut at = None;
+    loop {
+        match p.cur.tok {
+            Tok::End => break,
+            Tok::LParen | Tok::LBracket | Tok::LBrace => depth += 1,
+            Tok::RParen | Tok::RBracket | Tok::RBrace => depth = depth.saturating_sub(1),
+            Tok::Equals if depth == 0 => {
+                if at.is_some() {
+                    return None;
+                }
+                at = Some(p.cur.start);
+            }
+            _ => {}
+        }
+        p.bump();
+    }
+    let at = at?;
+    // A closing `$` keeps a LaTeX side LaTeX without moving its positions.
+    let mark = if p.latex { "$" } else { "" };
+    Some((
+        format!("{}{mark}", &src[..at]),
+        format!("{}{mark}", &src[at + 1..]),
+    ))
 }
 
 impl FromStr for Expr {

@@ -5,7 +5,9 @@
 //! reduction; Chiang's theorem is the benchmark `chiang-identity`, tested in `bench/`).
 
 use exactcheck_core::{Ring, Rng};
-use exactcheck_exact::expr::{parse_expr, parse_poly, AddOp, Expr, ExprKind, MulOp};
+use exactcheck_exact::expr::{
+    parse_expr, parse_poly, to_latex, AddOp, Expr, ExprKind, MulOp, Notation,
+};
 use exactcheck_exact::poly::{groebner, unit_circle_relation, Poly, Var, Vars};
 use exactcheck_exact::Rational;
 use proptest::prelude::*;
@@ -323,6 +325,20 @@ proptest! {
             TestCaseError::fail(format!("{printed:?}: {err}"))
         })?;
         prop_assert_eq!(again, p, "{}", printed);
+    }
+
+    #[test]
+    fn latex_print_parse_round_trip(e in arb_expr()) {
+        // The LaTeX printer's output, read by the parser's LaTeX input, is the same polynomial.
+        let mut v1 = Vars::from_names(["x", "y", "z", "w"]);
+        let p: P = e.to_poly(&mut v1).unwrap();
+        let text = to_latex(&e, &Notation::new());
+        let mut v2 = v1.clone();
+        let back: P = parse_poly(&text, &mut v2).map_err(|err| {
+            TestCaseError::fail(format!("{text:?}: {err}"))
+        })?;
+        prop_assert_eq!(&back, &p, "{}", text);
+        prop_assert_eq!(v2.len(), v1.len(), "{}", text);
     }
 
     #[test]

@@ -1,0 +1,75 @@
+//! `exactcheck prove` on formulas typed as the LaTeX source of a paper prints them: one
+//! argument `LHS = RHS`, `\frac`, `\sqrt`, `\sum`, `\int`, `\frac{d}{dx}`, Greek letters, functions
+//! without parentheses; the refusals are one line naming what is wrong; a claims file reads
+//! LaTeX in its formula fields.
+
+use crate::timed;
+
+use timed::run_text as run;
+
+#[test]
+fn formulas_as_typed_in_latex_are_decided() {
+    for args in [
+        &["\\frac{1}{2}", "0.5"][..],
+        &["θ", "theta"],
+        &["x^2-1 = (x-1)(x+1)"],
+        &[
+            "$\\sin\\theta = \\frac{2t}{1+t^2}$",
+            "--where",
+            "t = \\tan\\frac{\\theta}{2}",
+        ],
+        &["\\sum_{i=0}^{3}\\binom{3}{i}t^i(1-t)^{3-i} = 1"],
+        &["\\int_0^1 t^2\\,dt = \\frac13"],
+        &["$(a^2+b^2+c^2+d^2)^2 = (a^2+b^2-c^2-d^2)^2 + (2ac+2bd)^2 + (2ad-2bc)^2$"],
+        &["\\sin^2\\theta + \\cos^2\\theta = 1"],
+        &["\\frac{\\mathrm{d}}{\\mathrm{d}x} x^3 = 3x^2"],
+        &["\\frac{\\partial}{\\partial x}\\left(x^2 y\\right) = 2xy"],
+        &["\\frac{n(n+1)}{2} = \\frac{n^2 + n}{2}"],
+        &["\\cos 2\\theta = \\cos^2\\theta - \\sin^2\\theta"],
+        &["\\left(\\frac{1+\\sqrt5}{2}\\right)^2 = \\frac{1+\\sqrt5}{2} + 1"],
+        &["\\int_{0}^{\\pi} \\sin t\\,dt = 2"],
+        &["\\sin 30^\\circ = \\frac12"],
+    ] {
+        let mut all = vec!["prove"];
+        all.extend_from_slice(args);
+        let (code, out, err) = run(&all);
+        assert_eq!(code, 0, "{args:?}: {out}{err}");
+        assert!(out.starts_with("proved"), "{args:?}: {out}");
+    }
+    // A misprint typed the same way fails at an exact point.
+    let (code, out, err) = run(&[
+        "prove",
+        "\\sum_{i=0}^{3}\\binom{3}{i}t^{i+1}(1-t)^{3-i} = 1",
+    ]);
+    assert_eq!(code, 1, "{out}{err}");
+    assert!(out.starts_with("fails: at t = "), "{out}");
+}
+
+#[test]
+fn latex_refusals_are_one_line_naming_the_problem() {
+    for (args, needle) in [
+        (&["\\log x", "1"][..], "\\log"),
+        (&["\\left| x \\right| = x"], "absolute value"),
+        (&["\\sqrt[3]{8} = 2"], "only the square root"),
+        (&["\\sin x^2 = 1"], "ambiguous"),
+        (&["\\sin^{-1} x = 1"], "ambiguous"),
+        (&["\\int_0^1 t^2 = 1"], "differential"),
+        (&["a = b = c"], "unexpected character '='"),
+    ] {
+        let mut all = vec!["prove"];
+        all.extend_from_slice(args);
+        let (code, out, err) = run(&all);
+        assert_eq!(code, 2, "{args:?}: {out}{err}");
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(err.contains(needle), "{args:?}: {err}");
+    }
+}
+
+#[test]
+fn a_claims_file_reads_latex() {
+    let root = env!("CARGO_MANIFEST_DIR");
+    let file = format!("{root}/examples/latex.toml");
+    let (code, out, err) = run(&["verify", &file]);
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(out.contains("3 claims, 3 as expected"), "{out}");
+}
