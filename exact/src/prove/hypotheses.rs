@@ -168,28 +168,31 @@ impl<C: PointField> Problem<'_, C> {
 
     /// `y` as a root: a relation `a y^2 - E` with `a` constant and `E` free of `y`.
     fn root(&self, y: Var) -> Option<Root<C>> {
-        self.relations.iter().find_map(|r| {
-            if r.degree_in(y) != 2 {
-                return None;
-            }
-            let mut a = None;
-            let mut rest = Vec::new();
-            for (m, c) in r.terms() {
-                let e = m.exponents();
-                match m.exponent(y) {
-                    0 => rest.push((e, c.clone())),
-                    2 if e.len() == 1 => a = Some(c.clone()),
-                    _ => return None,
-                }
-            }
-            let inv = a?.inv().ok()?;
-            let e: Poly<C> = Poly::from_terms(rest);
-            Some(Root {
-                var: y,
-                square: e.scale(&inv.neg_ref()),
-            })
-        })
+        square_of(self.relations, y).map(|square| Root { var: y, square })
     }
+}
+
+/// `E / a` for the first relation `a y^2 - E` of `relations` with `a` a constant and `E` free
+/// of `y`: `y` is then a square root of `E / a` (either sign).
+pub(super) fn square_of<C: PointField>(relations: &[Poly<C>], y: Var) -> Option<Poly<C>> {
+    relations.iter().find_map(|r| {
+        if r.degree_in(y) != 2 {
+            return None;
+        }
+        let mut a = None;
+        let mut rest = Vec::new();
+        for (m, c) in r.terms() {
+            let e = m.exponents();
+            match m.exponent(y) {
+                0 => rest.push((e, c.clone())),
+                2 if e.len() == 1 => a = Some(c.clone()),
+                _ => return None,
+            }
+        }
+        let inv = a?.inv().ok()?;
+        let e: Poly<C> = Poly::from_terms(rest);
+        Some(e.scale(&inv.neg_ref()))
+    })
 }
 
 /// The most polynomials [`branch_zero`] squares in one decision (each squaring can double the
@@ -235,7 +238,7 @@ fn branch_zero<C: PointField>(
             square: r.square.clone(),
         })
         .collect();
-    let Some((a, b)) = split(&p, root) else {
+    let Some((a, b)) = split(&p, root.var, &root.square) else {
         return false;
     };
     if b.is_zero() {
@@ -262,9 +265,12 @@ fn branch_zero<C: PointField>(
 /// A term: its exponents and its coefficient.
 type Term<C> = (Vec<(Var, u32)>, C);
 
-/// `p = A + B y` with `y^2` replaced by the root's square; `None` past a size limit.
-fn split<C: PointField>(p: &Poly<C>, root: &Root<C>) -> Option<(Poly<C>, Poly<C>)> {
-    let y = root.var;
+/// `p = A + B y` with `y^2` replaced by `square`; `None` past a size limit.
+pub(super) fn split<C: PointField>(
+    p: &Poly<C>,
+    y: Var,
+    square: &Poly<C>,
+) -> Option<(Poly<C>, Poly<C>)> {
     let deg = p.degree_in(y) as usize;
     let mut parts: Vec<Vec<Term<C>>> = vec![Vec::new(); deg + 1];
     for (m, c) in p.terms() {
@@ -277,7 +283,7 @@ fn split<C: PointField>(p: &Poly<C>, root: &Root<C>) -> Option<(Poly<C>, Poly<C>
     let mut power = Poly::one();
     for (k, terms) in parts.into_iter().enumerate() {
         if k >= 2 && k % 2 == 0 {
-            power = power.try_mul(&root.square).ok()?;
+            power = power.try_mul(square).ok()?;
         }
         if terms.is_empty() {
             continue;
