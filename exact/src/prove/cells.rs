@@ -192,7 +192,7 @@ fn restrict<C: PointField>(
             } else if is_root[w as usize] {
                 return None;
             } else {
-                value = value * &base[w as usize].powi(e as i32).ok()?;
+                value *= &base[w as usize].powi(e as i32).ok()?;
             }
         }
         coeffs[k] = coeffs[k].add_ref(&value);
@@ -444,18 +444,15 @@ mod tests {
         ] {
             let x = open(a.clone(), b.clone());
             assert!(a < x && x < b, "{x}");
+            // The least n/k above a, for every k below x's denominator, is not below b.
             let d = x.denom();
-            for k in 1i64..20 {
-                if num_bigint::BigInt::from(k) >= d {
-                    break;
-                }
-                let lo = (a.clone() * &Rational::from_integer(k)).numer();
-                let m = Rational::from(lo.clone()) / Rational::from_integer(k);
-                let m1 = (Rational::from(lo) + Rational::ONE) / Rational::from_integer(k);
-                assert!(
-                    !(a < m && m < b) && !(a < m1 && m1 < b),
-                    "{x} vs denominator {k}"
-                );
+            let mut k = 1i64;
+            while num_bigint::BigInt::from(k) < d {
+                let ak = &a * &Rational::from_integer(k);
+                let n = Rational::from(ak.numer().div_floor(&ak.denom())) + Rational::ONE;
+                let least = n / Rational::from_integer(k);
+                assert!(least >= b, "{x} against {least}");
+                k += 1;
             }
         }
     }
