@@ -9,6 +9,10 @@
 //! * [`abstract_constants`] evaluates each leaf exactly as an [`Algebraic`] number: a rational
 //!   value becomes a number, an irrational one is recorded ([`ConstantLeaf`], equal values once)
 //!   and replaced by a placeholder variable that no identifier can name.
+//! * A definite integral of a trigonometric integrand with a bound that holds pi
+//!   (`integrate(t cos(t), t, 0, pi/7)`, `integrate(cos(t), t, 0, x + pi/5)`) is replaced by its
+//!   value `G(b) - G(a)` first, whose `cos(pi/7)` or `sin(x + pi/5)` are then leaves or split
+//!   angles like those written by hand.
 //! * [`fill_constants`] replaces the placeholders by expressions (the caller's polynomials in a
 //!   primitive element of the field of the leaves, see [`crate::algebraic::primitive_element`]).
 //!
@@ -130,6 +134,26 @@ fn linear_text(angle: &super::trig::LinearAngle) -> String {
     a
 }
 
+/// `integrate(E, t, a, b)` of a trigonometric integrand with a bound that holds pi
+/// (`pi/7`, `x + pi/5`) as its value `G(b) - G(a)`, the antiderivative's `cos` and `sin` taking
+/// the bounds as written ([`super::lower::lower_integral`]), so that their constants become
+/// leaves and their angles are split like any other (`sin(x + pi/5)`); `None` for any other
+/// call, and when the lowering refuses the integral (the conversion then says why).
+fn integral_at_constant_angle(e: &Expr, name: &str, args: &[Expr]) -> Option<Expr> {
+    let [body, _, lo, hi] = args else {
+        return None;
+    };
+    let with_pi = |b: &Expr| {
+        let mut names = Vec::new();
+        b.collect_variables(&mut names);
+        names.iter().any(|n| n == PI)
+    };
+    if name != "integrate" || !super::trig::has_trig(body) || !(with_pi(lo) || with_pi(hi)) {
+        return None;
+    }
+    super::lower::lower_integral(e, args).ok()
+}
+
 /// Rebuilds `e` top-down: `leaf` may replace a leaf candidate (`Some`), angles with variables
 /// and a multiple of pi are split first.
 fn walk(
@@ -142,6 +166,9 @@ fn walk(
         }
     }
     if let ExprKind::Call(name, args) = &e.kind {
+        if let Some(value) = integral_at_constant_angle(e, name, args) {
+            return walk(&value, leaf);
+        }
         if let Some(which) = Trig::from_name(name) {
             if let Some(split) = split_angle(e, which, args) {
                 return walk(&split, leaf);
@@ -324,6 +351,29 @@ mod tests {
         assert!(!needs("x + cos(pi/4)"));
         assert!(!needs("sin(x + pi/3) + sqrt(x)"));
         assert!(!needs("x + sqrt(-2)"));
+    }
+
+    #[test]
+    fn integrals_to_a_bound_with_pi_give_leaves() {
+        let (e, l) = rewrite("integrate(t*cos(t), t, 0, pi/7)");
+        assert!(!e.contains("integrate") && e.contains("#0"), "{e}");
+        assert_eq!(l.len(), 2, "{l:?}");
+        assert!(l.iter().all(|x| x.contains("pi/7")), "{l:?}");
+        // An angle with a variable is split by the addition formulas.
+        let (e, l) = rewrite("integrate(cos(t), t, 0, x + pi/5)");
+        assert!(e.contains("sin(x)") && e.contains("cos(x)"), "{e}");
+        assert!(!e.contains("integrate") && !e.contains("pi"), "{e}");
+        assert_eq!(l, ["cos(pi/5)", "sin(pi/5)"]);
+        let needs = |t: &str| needs_algebraic::<Radical>(&parse_expr(t).unwrap());
+        assert!(needs("integrate(sin(t)^2, t, 0, pi/7)"));
+        assert!(needs("integrate(cos(t), t, 0, x + pi/5)"));
+        // In the square-root field the fast path keeps the integral.
+        assert!(!needs("integrate(t*cos(t), t, 0, pi/3)"));
+        assert!(!needs("integrate(t^2, t, 0, pi/7)"));
+        let (e, _) = rewrite("integrate(t^2, t, 0, pi/7)");
+        assert!(e.contains("integrate"), "{e}");
+        // A bound that is not an angle does not take this path: the conversion says why.
+        assert!(!needs("integrate(cos(t), t, 0, pi^2)"));
     }
 
     #[test]

@@ -156,7 +156,7 @@ fn expand(e: &Expr) -> Result<Expr, ExprError> {
 }
 
 /// `integrate(E, t, a, b)` lowered (module documentation).
-fn lower_integral(call: &Expr, args: &[Expr]) -> Result<Expr, ExprError> {
+pub(super) fn lower_integral(call: &Expr, args: &[Expr]) -> Result<Expr, ExprError> {
     let [body, _, lo, hi] = args else {
         // The conversion names the arity.
         return expand(call);

@@ -177,21 +177,7 @@ impl<C: PointField> Problem<'_, C> {
     /// zero on the variety of `basis` (module documentation).
     fn root(&self, y: Var, basis: &[Poly<C>]) -> Option<Root<C>> {
         self.relations.iter().find_map(|r| {
-            if r.degree_in(y) != 2 {
-                return None;
-            }
-            let mut square = Vec::new();
-            let mut rest = Vec::new();
-            for (m, c) in r.terms() {
-                let e: Vec<(Var, u32)> =
-                    m.exponents().into_iter().filter(|&(v, _)| v != y).collect();
-                match m.exponent(y) {
-                    0 => rest.push((e, c.neg_ref())),
-                    2 => square.push((e, c.clone())),
-                    _ => return None,
-                }
-            }
-            let (d, n): (Poly<C>, Poly<C>) = (Poly::from_terms(square), Poly::from_terms(rest));
+            let (d, n) = root_parts(r, y)?;
             if let Some(a) = d.constant_value() {
                 let inv = a.inv().ok()?;
                 return Some(Root {
@@ -219,6 +205,34 @@ fn nowhere_zero<C: PointField>(d: &Poly<C>, basis: &[Poly<C>]) -> bool {
     let mut gens = basis.to_vec();
     gens.push(d.clone());
     groebner(&gens).is_ok_and(|b| b.iter().any(|p| p.is_constant() && !p.is_zero()))
+}
+
+/// `(D, N)` when `r = D y^2 - N` with `D` and `N` free of `y`.
+fn root_parts<C: PointField>(r: &Poly<C>, y: Var) -> Option<(Poly<C>, Poly<C>)> {
+    if r.degree_in(y) != 2 {
+        return None;
+    }
+    let mut square = Vec::new();
+    let mut rest = Vec::new();
+    for (m, c) in r.terms() {
+        let e: Vec<(Var, u32)> = m.exponents().into_iter().filter(|&(v, _)| v != y).collect();
+        match m.exponent(y) {
+            0 => rest.push((e, c.neg_ref())),
+            2 => square.push((e, c.clone())),
+            _ => return None,
+        }
+    }
+    Some((Poly::from_terms(square), Poly::from_terms(rest)))
+}
+
+/// `N / a` for the first relation `a y^2 - N` of `relations` with `a` a constant and `N` free
+/// of `y`: `y` is then a square root of `N / a` (either sign).
+pub(super) fn square_of<C: PointField>(relations: &[Poly<C>], y: Var) -> Option<Poly<C>> {
+    relations.iter().find_map(|r| {
+        let (d, n) = root_parts(r, y)?;
+        let inv = d.constant_value()?.inv().ok()?;
+        Some(n.scale(&inv))
+    })
 }
 
 /// The most polynomials [`branch_zero`] squares in one decision (each squaring can double the
@@ -261,7 +275,7 @@ fn branch_zero<C: PointField>(
         .filter(|&(j, _)| j != k)
         .map(|(_, r)| r.clone())
         .collect();
-    let Some((a, b)) = split(&p, root) else {
+    let Some((a, b)) = split(&p, root.var, &root.square, &root.denominator) else {
         return false;
     };
     if b.is_zero() {
@@ -288,10 +302,14 @@ fn branch_zero<C: PointField>(
 /// A term: its exponents and its coefficient.
 type Term<C> = (Vec<(Var, u32)>, C);
 
-/// `D^h p = A + B y` with `y^2` replaced by the root's `N / D` (`h` the half degree of `p` in
-/// `y`); `None` past a size limit.
-fn split<C: PointField>(p: &Poly<C>, root: &Root<C>) -> Option<(Poly<C>, Poly<C>)> {
-    let y = root.var;
+/// `D^h p = A + B y` with `y^2` replaced by `N / D` (`square` / `denominator`, `h` the half
+/// degree of `p` in `y`); `None` past a size limit.
+pub(super) fn split<C: PointField>(
+    p: &Poly<C>,
+    y: Var,
+    square: &Poly<C>,
+    denominator: &Poly<C>,
+) -> Option<(Poly<C>, Poly<C>)> {
     let deg = p.degree_in(y) as usize;
     let mut parts: Vec<Vec<Term<C>>> = vec![Vec::new(); deg + 1];
     for (m, c) in p.terms() {
@@ -304,8 +322,8 @@ fn split<C: PointField>(p: &Poly<C>, root: &Root<C>) -> Option<(Poly<C>, Poly<C>
     let mut n_powers = vec![Poly::one()];
     let mut d_powers = vec![Poly::one()];
     for j in 1..=h {
-        n_powers.push(n_powers[j - 1].try_mul(&root.square).ok()?);
-        d_powers.push(d_powers[j - 1].try_mul(&root.denominator).ok()?);
+        n_powers.push(n_powers[j - 1].try_mul(square).ok()?);
+        d_powers.push(d_powers[j - 1].try_mul(denominator).ok()?);
     }
     let mut a = Poly::zero();
     let mut b = Poly::zero();
@@ -445,6 +463,7 @@ mod tests {
         VarDomain {
             lower: Some((Rational::ZERO, false)),
             upper: None,
+            integer: false,
         }
     }
 

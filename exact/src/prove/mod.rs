@@ -46,8 +46,17 @@
 //!    in its domain, and the residual (not the normal form) is non-zero. Only a verified point is
 //!    reported.
 //!
+//!
+//! Last come at most [`CELL_ATTEMPTS`] *cell points*, for a residual non-zero only on a narrow
+//! region (`sqrt((t^2 - 2)^2) = 2 - t^2` on `-1 < t < 3/2` fails only above `sqrt(2)`): one
+//! variable at a time, the others fixed at the first small-height points, the variable takes the
+//! simplest rational of every gap between the real roots (isolated exactly) of the residual, the
+//! radicands and the denominators with the square roots eliminated, inside its domain; each point
+//! found moves the next variable in turn. Each is an attempt as above, verified the same way
+//! (see the `cells` module).
+//!
 //! The search is deterministic (fixed seeds) so that verdicts are reproducible; it makes at most
-//! [`SMALL_ATTEMPTS`] + [`SEARCH_ATTEMPTS`] attempts.
+//! [`SMALL_ATTEMPTS`] + [`SEARCH_ATTEMPTS`] + [`CELL_ATTEMPTS`] attempts.
 //!
 //! # One engine for every front end
 //! [`identity::decide_identity`] takes an identity as a spec (sides or residuals, relations,
@@ -55,10 +64,12 @@
 //! the command-line tool words with one formatter. `prove`, claims files and the built-in
 //! catalogue all go through it, so that they share one counter-example rule.
 
+mod cells;
 mod constants;
 mod domain;
 mod factored;
 mod fraction;
+mod heights;
 mod hypotheses;
 pub mod identity;
 pub mod random;
@@ -69,6 +80,8 @@ pub use constants::{AlgebraicConstants, ConstantPoint, ConstantValue, CONSTANT_A
 pub use domain::VarDomain;
 pub use factored::factored;
 pub use fraction::{decide_fraction, real_zero_free, where_clause, FractionIdentity};
+pub use heights::small_height_rationals;
+use heights::small_points;
 pub use hypotheses::{Hypothesis, MAX_HYPOTHESIS_DROPS};
 pub use identity::{
     decide_identity, CoordinateOutcome, CorrectionVerdict, EngineError, IdentityReport,
@@ -95,11 +108,11 @@ pub const SEARCH_ATTEMPTS: usize = 200;
 /// Attempts at points of small height, before the random ones.
 pub const SMALL_ATTEMPTS: usize = 100;
 
-/// The largest height of the small-height values of one variable.
-const SMALL_HEIGHT: i64 = 12;
+/// The most points of the cell phase of the search (module `cells`).
+pub const CELL_ATTEMPTS: usize = 300;
 
-/// The most small-height values of one variable (those in its domain, by increasing height).
-const SMALL_VALUES: usize = 24;
+/// The small-height points whose coordinates the cell phase fixes while it moves one variable.
+const CELL_BASES: usize = 8;
 
 /// A coefficient field the counter-example search can evaluate at real points with coordinates
 /// in [`Radical`]: the values of its polynomials there lie in [`PointField::Value`].
@@ -391,16 +404,21 @@ pub fn decide_where<C: PointField>(
         }
         hypotheses::Outcome::NotProved(tried) => tried,
     };
-    Ok(search(residual, relations, nonzero, &pairs, &others, &dom, nvars)
-        .map(|(point, value)| Decision::Fails {
+    Ok(match search(residual, relations, nonzero, &pairs, &others, &dom, nvars) {
+        Ok((point, value)) => Decision::Fails {
             normal_form: nf.clone(),
             point,
             value,
-        })
-        .unwrap_or_else(|| Decision::Undecided {
+        },
+        Err(cell_points) => Decision::Undecided {
             searched: format!(
-                "{} exact candidate points (small rationals by increasing height, then random ones, inside the domains if any{}{}) were checked, none satisfies the relations{}{} with a non-zero residual{tried}",
-                SMALL_ATTEMPTS + SEARCH_ATTEMPTS,
+                "{} exact candidate points (small rationals by increasing height, then random ones{}, inside the domains if any{}{}) were checked, none satisfies the relations{}{} with a non-zero residual{tried}",
+                SMALL_ATTEMPTS + SEARCH_ATTEMPTS + cell_points,
+                if cell_points == 0 {
+                    String::new()
+                } else {
+                    format!(", then {cell_points} between the real roots of the residual, the radicands and the denominators along each variable")
+                },
                 if pairs.is_empty() { "" } else { ", rational points of the unit circles" },
                 if others.is_empty() && pairs.is_empty() {
                     ""
@@ -411,7 +429,8 @@ pub fn decide_where<C: PointField>(
                 if nonzero.is_empty() { "" } else { " off the zeros of the denominators" },
             ),
             normal_form: nf,
-        }))
+        },
+    })
 }
 
 /// A point: a value for every variable (by index).
@@ -437,7 +456,7 @@ pub fn counter_example<C: Field>(point: &RadicalPoint, statement: &[&Poly<C>]) -
 }
 
 /// The counter-example search of the module documentation: a verified point and the residual's
-/// value there, or `None`.
+/// value there, or the number of cell points checked in vain.
 fn search<C: PointField>(
     residual: &Poly<C>,
     relations: &[Poly<C>],
@@ -446,7 +465,7 @@ fn search<C: PointField>(
     others: &[Poly<C>],
     dom: &[VarDomain],
     nvars: usize,
-) -> Option<(RadicalPoint, C::Value)> {
+) -> Result<(RadicalPoint, C::Value), usize> {
     // Relations as real radical polynomials, for solving (those with non-real coefficients are
     // only checked).
     let real = |r: &Poly<C>| -> Option<Poly<Radical>> {
@@ -526,7 +545,7 @@ fn search<C: PointField>(
                 .collect()
         });
         if let Some(found) = attempt(base, taus, &mut small_rng) {
-            return Some(found);
+            return Ok(found);
         }
     }
     let mut rng = Rng::new(0x5EED);
@@ -535,122 +554,30 @@ fn search<C: PointField>(
         let taus = (k % 2 == 0 || others.is_empty())
             .then(|| pairs.iter().map(|_| small_rational(&mut rng)).collect());
         if let Some(found) = attempt(base, taus, &mut rng) {
-            return Some(found);
+            return Ok(found);
         }
     }
-    None
-}
-
-/// The rationals `n/d` of height `max(|n|, d)` at most `max_height`, in the order of the
-/// counter-example search: by height, the non-negative ones first, then by absolute value
-/// (`0, 1, -1, 1/2, 2, -1/2, -2, 1/3, 2/3, 3/2, 3, ...`).
-pub fn small_height_rationals(max_height: i64) -> Vec<Rational> {
-    // (height, negative, |q|) and the sign applied after sorting.
-    let mut out: Vec<(i64, bool, Rational)> = Vec::new();
-    for h in 1..=max_height {
-        for d in 1..=h {
-            for n in 0..=h {
-                if n.max(d) != h || num_integer::gcd(n, d) != 1 {
-                    continue;
-                }
-                let q = Rational::new(n, d).expect("d >= 1");
-                if n > 0 {
-                    out.push((h, true, q.clone()));
-                }
-                out.push((h, false, q));
-            }
-        }
-    }
-    out.sort();
-    out.into_iter()
-        .map(|(_, negative, q)| if negative { q.neg_ref() } else { q })
-        .collect()
-}
-
-/// The points of the small-height phase of the search, at most `budget` of them: each active
-/// variable runs through the first [`SMALL_VALUES`] small-height rationals of its domain (an
-/// inactive one keeps its first), the tuples of positions ordered by their largest position, then
-/// by their sum, then lexicographically. A variable whose domain holds no rational of height up
-/// to [`SMALL_HEIGHT`] takes the domain's own samples (seeded).
-fn small_points(dom: &[VarDomain], active: &[bool], budget: usize) -> Vec<Vec<Rational>> {
-    let heights = small_height_rationals(SMALL_HEIGHT);
-    let mut rng = Rng::new(0x5EED_0002);
-    let lists: Vec<Vec<Rational>> = dom
-        .iter()
-        .enumerate()
-        .map(|(v, d)| {
-            let mut l: Vec<Rational> = heights
+    // The cells of the sign charts along each variable (module `cells`), the others at the
+    // first small-height points, then at the cell values found for one variable.
+    let mut cell_rng = Rng::new(0x5EED_0003);
+    let in_pair = |v: Var| pairs.iter().any(|&(c, s)| c == v || s == v);
+    let cell = cells::Search {
+        residual,
+        relations,
+        nonzero,
+        dom,
+        active: &active,
+        circle: &in_pair,
+    };
+    cell.run(small_points(dom, &active, CELL_BASES), &mut |point| {
+        let taus = others.is_empty().then(|| {
+            pairs
                 .iter()
-                .filter(|q| d.contains(&Radical::from(*q)))
-                .take(if active[v] { SMALL_VALUES } else { 1 })
-                .cloned()
-                .collect();
-            if l.is_empty() {
-                let k = if active[v] { SMALL_VALUES } else { 1 };
-                for _ in 0..k {
-                    let x = d.sample(&mut rng);
-                    if !l.contains(&x) {
-                        l.push(x);
-                    }
-                }
-            }
-            l
-        })
-        .collect();
-    let lens: Vec<usize> = lists.iter().map(Vec::len).collect();
-    let mut out = Vec::new();
-    let top = lens.iter().copied().max().unwrap_or(1).max(1) - 1;
-    let n = lens.len();
-    'levels: for level in 0..=top {
-        for sum in level..=level * n.max(1) {
-            let mut tuple = vec![0usize; n];
-            tuples(&lens, level, sum, 0, &mut tuple, &mut |t| {
-                if out.len() < budget {
-                    out.push(t.iter().zip(&lists).map(|(&i, l)| l[i].clone()).collect());
-                }
-                out.len() < budget
-            });
-            if out.len() >= budget {
-                break 'levels;
-            }
-        }
-    }
-    out
-}
-
-/// Calls `emit` with every tuple `t` (`t[i] < lens[i]`, `t[i] <= level`) of largest entry
-/// `level` and entry sum `sum`, positions `from..` still free, in lexicographic order; stops when
-/// `emit` answers `false` (and answers `false` then).
-fn tuples(
-    lens: &[usize],
-    level: usize,
-    sum: usize,
-    from: usize,
-    t: &mut Vec<usize>,
-    emit: &mut dyn FnMut(&[usize]) -> bool,
-) -> bool {
-    if from == lens.len() {
-        if sum == 0 && (t.is_empty() || t.contains(&level)) {
-            return emit(t);
-        }
-        return true;
-    }
-    let room: usize = lens[from + 1..]
-        .iter()
-        .map(|&l| l.min(level + 1).saturating_sub(1))
-        .sum();
-    let hi = (lens[from].min(level + 1)).saturating_sub(1).min(sum);
-    for x in 0..=hi {
-        if sum - x > room {
-            continue;
-        }
-        t[from] = x;
-        if !tuples(lens, level, sum - x, from + 1, t, emit) {
-            return false;
-        }
-    }
-    t[from] = 0;
-    true
+                .map(|&(c, _)| point[c as usize].clone())
+                .collect()
+        });
+        attempt(point, taus, &mut cell_rng)
+    })
 }
 
 /// Step 3 of the search: fixes variables of `rels` one at a time (solving univariate relations,
@@ -791,30 +718,6 @@ mod tests {
             real_roots(&cubic, 0),
             vec![Radical::from(Rational::new(1, 2).unwrap())]
         );
-    }
-
-    #[test]
-    fn small_heights_are_ordered_by_height() {
-        let r = |n: i64, d: i64| Rational::new(n, d).unwrap();
-        let q = small_height_rationals(3);
-        assert_eq!(
-            q[..7],
-            [
-                r(0, 1),
-                r(1, 1),
-                r(-1, 1),
-                r(1, 2),
-                r(2, 1),
-                r(-1, 2),
-                r(-2, 1)
-            ]
-        );
-        // Every rational of height at most 3 once: 0, +-1, +-1/2, +-2, +-1/3, +-2/3, +-3/2, +-3.
-        assert_eq!(q.len(), 15);
-        let mut sorted = q.clone();
-        sorted.sort();
-        sorted.dedup();
-        assert_eq!(sorted.len(), 15);
     }
 
     fn failing_point(
