@@ -321,6 +321,42 @@ impl Sides<'_> {
 /// # Errors
 /// [`Error::Input`] for a malformed expression, relation or domain, a division by zero or by a
 /// non-constant, inconsistent relations; [`Error::Usage`] for a bad `--random` request.
+/// A hint when a name of several letters is spelled by one-letter variables of the same
+/// formula (`ac` beside `a` and `c`): outside LaTeX, adjacent letters are one name, so `2ac` is 2
+/// times the variable `ac`, which is rarely what a paper means.
+fn joined_names_hint(sides: &[&Expr]) -> Option<String> {
+    let mut names = Vec::new();
+    for e in sides {
+        e.collect_variables(&mut names);
+    }
+    let letters: Vec<char> = names
+        .iter()
+        .filter_map(|n| {
+            let mut c = n.chars();
+            c.next().filter(|_| c.next().is_none())
+        })
+        .collect();
+    let joined: Vec<&String> = names
+        .iter()
+        .filter(|n| n.len() > 1 && n.chars().all(|c| letters.contains(&c)))
+        .collect();
+    let first = joined.first()?;
+    let list = joined
+        .iter()
+        .map(|n| format!("'{n}'"))
+        .collect::<Vec<_>>()
+        .join(", ");
+    let product = first
+        .chars()
+        .map(String::from)
+        .collect::<Vec<_>>()
+        .join("*");
+    Some(format!(
+        "{list} {} one variable, not a product of the one-letter variables beside it: write '{product}' for the product (in LaTeX input, within $...$, adjacent letters multiply)",
+        if joined.len() == 1 { "is" } else { "are each" }
+    ))
+}
+
 pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
     // One argument with one `=` outside parentheses and braces is the equation `LHS = RHS`.
     let split = match args.rhs {
@@ -375,6 +411,9 @@ pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
         }
     }
     let sides: Vec<&Expr> = lhs.iter().chain(rhs.iter().flatten()).collect();
+    if let Some(hint) = joined_names_hint(&sides) {
+        eprintln!("exactcheck: hint: {hint}");
+    }
     let tied: Vec<(&Expr, &Expr)> = relations.iter().map(|(a, b)| (a, b)).collect();
     if let Some(why) = exactcheck_exact::expr::library::diff_against_relations(&sides, &tied) {
         return Err(Error::Input(format!("--where: {why}")));

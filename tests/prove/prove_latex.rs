@@ -29,6 +29,8 @@ fn formulas_as_typed_in_latex_are_decided() {
         &["\\left(\\frac{1+\\sqrt5}{2}\\right)^2 = \\frac{1+\\sqrt5}{2} + 1"],
         &["\\int_{0}^{\\pi} \\sin t\\,dt = 2"],
         &["\\sin 30^\\circ = \\frac12"],
+        &["\\left| a b \\right| = \\lvert a \\rvert \\lvert b \\rvert"],
+        &["\\left| x \\right| = x", "--where", "x >= 0"],
     ] {
         let mut all = vec!["prove"];
         all.extend_from_slice(args);
@@ -49,7 +51,7 @@ fn formulas_as_typed_in_latex_are_decided() {
 fn latex_refusals_are_one_line_naming_the_problem() {
     for (args, needle) in [
         (&["\\log x", "1"][..], "\\log"),
-        (&["\\left| x \\right| = x"], "absolute value"),
+        (&["\\left| x = x"], "not closed"),
         (&["\\sqrt[3]{8} = 2"], "only the square root"),
         (&["\\sin x^2 = 1"], "ambiguous"),
         (&["\\sin^{-1} x = 1"], "ambiguous"),
@@ -72,4 +74,23 @@ fn a_claims_file_reads_latex() {
     let (code, out, err) = run(&["verify", &file]);
     assert_eq!(code, 0, "{out}{err}");
     assert!(out.contains("3 claims, 3 as expected"), "{out}");
+}
+
+#[test]
+fn adjacent_letters_outside_latex_are_one_name_and_a_hint_says_so() {
+    // Plain text: `2ac` is 2 times the variable `ac`, so Lebesgue's identity typed that way fails,
+    // and a hint names the joined names.
+    let (code, out, err) = run(&[
+        "prove",
+        "(a^2+b^2+c^2+d^2)^2 = (a^2+b^2-c^2-d^2)^2 + (2ac+2bd)^2 + (2ad-2bc)^2",
+    ]);
+    assert_eq!(code, 1, "{out}{err}");
+    assert!(
+        err.contains("hint: 'ac', 'bd', 'ad', 'bc' are each one variable") && err.contains("'a*c'"),
+        "{err}"
+    );
+    // No hint where no name is spelled by one-letter variables.
+    let (code, out, err) = run(&["prove", "ab + c = c + ab"]);
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(!err.contains("hint"), "{err}");
 }

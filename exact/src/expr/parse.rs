@@ -259,7 +259,9 @@ impl<'a> Parser<'a> {
     fn starts_implicit_factor(&self) -> bool {
         match self.cur.tok {
             Tok::Ident => !(self.integrand > 0 && self.at_differential()),
-            Tok::LParen | Tok::Pi | Tok::Root | Tok::LBrace | Tok::Command => true,
+            Tok::LParen | Tok::Pi | Tok::Root | Tok::LBrace => true,
+            // A closing bar (`\right|`) ends the absolute value instead.
+            Tok::Command => !self.closes_bar(),
             Tok::LBracket => self.latex,
             _ => false,
         }

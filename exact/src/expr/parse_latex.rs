@@ -212,6 +212,27 @@ pub(super) fn is_function_word(text: &str) -> bool {
         || text.starts_with("\\operatorname")
 }
 
+/// Which side of an absolute value a command is: `\left|`, `\bigl|`, `\lvert` open it,
+/// `\right|`, `\bigr|`, `\rvert` close it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Bar {
+    Open,
+    Close,
+}
+
+/// The side of an absolute value the command `text` stands for, if it is one.
+fn bar(text: &str) -> Option<Bar> {
+    let word = word_at(text, 1);
+    let sized = text.trim_end().ends_with('|') && SIZES.contains(&word);
+    match word {
+        "lvert" => Some(Bar::Open),
+        "rvert" => Some(Bar::Close),
+        "left" | "bigl" | "Bigl" | "biggl" | "Biggl" if sized => Some(Bar::Open),
+        "right" | "bigr" | "Bigr" | "biggr" | "Biggr" if sized => Some(Bar::Close),
+        _ => None,
+    }
+}
+
 impl Parser<'_> {
     /// The LaTeX token at `start` (not white space), or `None` where the ASCII lexer reads on.
     pub(super) fn lex_latex(&self, start: usize) -> Option<Token> {
@@ -280,6 +301,11 @@ impl Parser<'_> {
             }
             _ => None,
         }
+    }
+
+    /// Whether the current token closes an absolute value (`\right|`, `\rvert`).
+    pub(super) fn closes_bar(&self) -> bool {
+        self.cur.tok == Tok::Command && bar(self.text(self.cur)) == Some(Bar::Close)
     }
 
     /// Whether the current token is the `d` of a differential (`dt`, `\mathrm{d}t`).
@@ -357,11 +383,28 @@ impl Parser<'_> {
                 self.bump();
                 self.parse_integral(text, t.start)
             }
+            _ if bar(text) == Some(Bar::Open) => {
+                self.bump();
+                // A `d` inside the bars is a factor, not the differential of an integral.
+                let integrand = std::mem::take(&mut self.integrand);
+                let inner = self.parse_sum();
+                self.integrand = integrand;
+                let inner = inner?;
+                if !self.closes_bar() {
+                    return Err(self.refuse(
+                        t.start,
+                        text,
+                        "the absolute value opened here is not closed by \\right| (or \\rvert)",
+                    ));
+                }
+                self.bump();
+                Ok(call(crate::expr::ABS, vec![inner]))
+            }
             _ if text.contains('|') || matches!(word, "vert" | "lvert" | "rvert" | "mid") => {
                 Err(self.refuse(
                     t.start,
                     text,
-                    "the absolute value |x| is not supported",
+                    "a bar that neither opens nor closes an absolute value: write \\left| x \\right| or \\lvert x \\rvert",
                 ))
             }
             _ => Err(self.refuse(

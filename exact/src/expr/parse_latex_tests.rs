@@ -155,8 +155,16 @@ fn unknown_commands_are_named() {
     refused("\\exp(x)", "\\exp");
     refused("\\lim x", "\\lim");
     refused("\\mathbf{x}", "\\mathbf");
-    refused("\\left| x \\right|", "absolute value");
+    refused("\\left| x", "not closed");
+    refused("\\vert x \\vert", "neither opens nor closes");
     refused("\\{x\\}", "\\{");
+}
+
+#[test]
+fn bars_are_the_absolute_value() {
+    same("\\left| x - y \\right|", "abs(x - y)");
+    same("\\lvert x \\rvert^2", "abs(x)^2");
+    same("\\bigl| \\frac{a}{2} \\bigr| \\cdot 3", "abs(a/2)*3");
 }
 
 #[test]

@@ -64,7 +64,7 @@ fn juxtaposition_is_read_by_every_entry_point() {
 #[test]
 fn unknown_functions_are_errors_everywhere() {
     // Old: `prove 'sin(x)' 'x'` multiplied a variable `sin` by x and answered `fails`.
-    let msg = "unknown function 'exp' at 0: the functions are sqrt, diff, integrate, sum, \
+    let msg = "unknown function 'exp' at 0: the functions are sqrt, abs, diff, integrate, sum, \
                binomial, factorial, sin, cos, tan (write 'exp*(...)' for a product)";
     assert_eq!(
         parse_poly::<Rational>("exp(x)", &mut Vars::new())
