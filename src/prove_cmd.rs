@@ -316,11 +316,6 @@ impl Sides<'_> {
     }
 }
 
-/// Runs `exactcheck prove`.
-///
-/// # Errors
-/// [`Error::Input`] for a malformed expression, relation or domain, a division by zero or by a
-/// non-constant, inconsistent relations; [`Error::Usage`] for a bad `--random` request.
 /// A hint when a name of several letters is spelled by one-letter variables of the same
 /// formula (`ac` beside `a` and `c`): outside LaTeX, adjacent letters are one name, so `2ac` is 2
 /// times the variable `ac`, which is rarely what a paper means.
@@ -357,6 +352,11 @@ fn joined_names_hint(sides: &[&Expr]) -> Option<String> {
     ))
 }
 
+/// Runs `exactcheck prove`.
+///
+/// # Errors
+/// [`Error::Input`] for a malformed expression, relation or domain, a division by zero or by a
+/// non-constant, inconsistent relations; [`Error::Usage`] for a bad `--random` request.
 pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
     // One argument with one `=` outside parentheses and braces is the equation `LHS = RHS`.
     let split = match args.rhs {
