@@ -83,9 +83,10 @@ pub(super) fn prepare(text: &str) -> (Cow<'_, str>, bool) {
     (Cow::Owned(s), true)
 }
 
-/// The letters of a command word starting at `at`.
+/// The letters of a command word starting at `at` (empty at or past the end of `src`, or
+/// inside a character).
 fn word_at(src: &str, at: usize) -> &str {
-    let rest = &src[at..];
+    let rest = src.get(at..).unwrap_or("");
     &rest[..rest
         .find(|c: char| !c.is_ascii_alphabetic())
         .unwrap_or(rest.len())]

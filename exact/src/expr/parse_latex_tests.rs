@@ -202,3 +202,17 @@ fn printed_latex_reads_back() {
         assert_eq!(to_latex(&back, &Notation::new()), latex, "{ascii:?}");
     }
 }
+
+#[test]
+fn truncated_commands_are_errors_not_panics() {
+    // A `^` or `\\` at the very end, or before a character of several bytes.
+    for text in [
+        "$x^",
+        "$x^\u{ff}",
+        "$x\\",
+        "p1\\2+p3^\u{ffff}",
+        "$0.6^\u{fffd}6{3",
+    ] {
+        assert!(parse_expr_with_calls(text).is_err(), "{text:?}");
+    }
+}
