@@ -200,6 +200,41 @@ pub fn bytes_in_use() -> usize {
     usize::try_from(IN_USE.load(Ordering::Relaxed)).unwrap_or(0)
 }
 
+/// The largest block the C allocator takes from its heap rather than from a mapping of its own
+/// (glibc's upper bound for this setting on 64-bit systems).
+#[cfg(all(target_os = "linux", target_env = "gnu"))]
+const HEAP_BLOCKS_UP_TO: libc::c_int = 32 << 20;
+
+/// Free memory at the top of the C allocator's heap beyond this is returned to the system.
+#[cfg(all(target_os = "linux", target_env = "gnu"))]
+const KEEP_FREE_UP_TO: libc::c_int = 64 << 20;
+
+/// Makes the C allocator keep freed memory for reuse: blocks up to 32 MB come from its heap
+/// and free memory up to 64 MB stays there, instead of glibc's default of mapping every block
+/// above 128 kB separately and unmapping it on free. Exact polynomial arithmetic frees and
+/// allocates vectors of hundreds of kilobytes all the time; with the default each one is
+/// mapped afresh and every page of it faults on first touch (about 1.3 us a page on a virtual
+/// machine, a fifth of the time of a mid-sized expansion). Returns whether the settings were
+/// taken (always `false` off glibc, where the allocator's defaults stay).
+///
+/// Called first thing by the binaries; a library does not change the process's allocator.
+pub fn keep_freed_memory() -> bool {
+    #[cfg(all(target_os = "linux", target_env = "gnu"))]
+    {
+        // SAFETY: `mallopt` only changes two parameters of glibc's allocator; it is called
+        // before any other thread exists, and any values are valid (out-of-range ones are
+        // refused with a zero return).
+        unsafe {
+            libc::mallopt(libc::M_MMAP_THRESHOLD, HEAP_BLOCKS_UP_TO) == 1
+                && libc::mallopt(libc::M_TRIM_THRESHOLD, KEEP_FREE_UP_TO) == 1
+        }
+    }
+    #[cfg(not(all(target_os = "linux", target_env = "gnu")))]
+    {
+        false
+    }
+}
+
 /// A fixed buffer for formatting a message without allocating.
 struct StackText {
     buf: [u8; 256],
@@ -472,6 +507,14 @@ mod tests {
         let long = "x".repeat(300);
         let _ = std::fmt::write(&mut t, format_args!("{long}"));
         assert_eq!(t.len, 256);
+    }
+
+    #[test]
+    fn the_allocator_takes_the_settings_on_glibc() {
+        assert_eq!(
+            keep_freed_memory(),
+            cfg!(all(target_os = "linux", target_env = "gnu"))
+        );
     }
 
     #[test]

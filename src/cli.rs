@@ -150,6 +150,7 @@ const PLOT_EXAMPLES: &str = "Examples:
 /// Parses the command line, runs it, and maps errors to exit status 2 (a broken pipe on
 /// standard output to status 0, silently).
 pub fn main() -> ExitCode {
+    crate::budget::keep_freed_memory();
     crate::output::ignore_sigxfsz();
     let args: Vec<OsString> = std::env::args_os().collect();
     let cli = match parse(&args) {

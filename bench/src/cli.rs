@@ -189,6 +189,7 @@ pub fn run(cli: &Cli) -> Result<ExitCode, Error> {
 /// value as one line `exactcheck-bench: error: ...` (plus a hint line for usage errors) on
 /// standard error with exit status 2.
 pub fn main() -> ExitCode {
+    exactcheck::budget::keep_freed_memory();
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
         Err(e) => return usage_error(&e),
