@@ -367,6 +367,12 @@ pub(super) enum Layout {
     Sub(Box<Layout>, Box<Layout>),
     /// In parentheses.
     Fenced(Box<Layout>),
+    /// A matrix by rows (a vector is one column), between parentheses or, for its
+    /// determinant, between bars.
+    Matrix {
+        rows: Vec<Vec<Layout>>,
+        det: bool,
+    },
 }
 
 fn glyph_layout(g: &Glyph) -> Layout {
@@ -598,6 +604,20 @@ pub(super) fn layout(e: &Expr, n: &Notation) -> Layout {
         ExprKind::Call(name, args) if name == super::ABS && args.len() == 1 => {
             Layout::Abs(Box::new(layout(&args[0], n)))
         }
+        ExprKind::Call(name, args) if name == super::LIST && !args.is_empty() => {
+            matrix_layout(args, false, n)
+        }
+        ExprKind::Call(name, args)
+            if name == "det"
+                && matches!(&args[..], [m] if matches!(&m.kind, ExprKind::Call(l, rows)
+                    if l == super::LIST && !rows.is_empty()
+                        && rows.iter().all(|r| matches!(&r.kind, ExprKind::Call(l, _) if l == super::LIST)))) =>
+        {
+            let ExprKind::Call(_, rows) = &args[0].kind else {
+                unreachable!("checked by the guard")
+            };
+            matrix_layout(rows, true, n)
+        }
         ExprKind::Call(name, args) if args.is_empty() && is_decimal_name(name) => {
             Layout::Num(name.clone())
         }
@@ -626,6 +646,21 @@ pub(super) fn layout(e: &Expr, n: &Notation) -> Layout {
             }
         }
     }
+}
+
+/// A list literal's layout: a matrix when every item is a list (its rows), else a vector
+/// printed as one column.
+fn matrix_layout(items: &[Expr], det: bool, n: &Notation) -> Layout {
+    let rows = items
+        .iter()
+        .map(|item| match &item.kind {
+            ExprKind::Call(l, entries) if l == super::LIST => {
+                entries.iter().map(|e| layout(e, n)).collect()
+            }
+            _ => vec![layout(item, n)],
+        })
+        .collect();
+    Layout::Matrix { rows, det }
 }
 
 /// The operand of a large operator, a derivative or a factorial, in parentheses when it is a
@@ -795,6 +830,22 @@ fn write_latex(l: &Layout, out: &mut String) {
             out.push_str("\\left|");
             write_latex(x, out);
             out.push_str("\\right|");
+        }
+        Layout::Matrix { rows, det } => {
+            let env = if *det { "vmatrix" } else { "pmatrix" };
+            out.push_str(&format!("\\begin{{{env}}}"));
+            for (i, row) in rows.iter().enumerate() {
+                if i > 0 {
+                    out.push_str(" \\\\ ");
+                }
+                for (j, entry) in row.iter().enumerate() {
+                    if j > 0 {
+                        out.push_str(" & ");
+                    }
+                    write_latex(entry, out);
+                }
+            }
+            out.push_str(&format!("\\end{{{env}}}"));
         }
         Layout::Sup(b, e) => {
             write_latex(b, out);

@@ -86,6 +86,20 @@ fn write(l: &Layout, out: &mut String) {
             write(x, out);
             out.push_str("<mo>|</mo></mrow>");
         }
+        Layout::Matrix { rows, det } => {
+            let fence = if *det { ("|", "|") } else { ("(", ")") };
+            out.push_str(&format!("<mrow><mo>{}</mo><mtable>", fence.0));
+            for row in rows {
+                out.push_str("<mtr>");
+                for entry in row {
+                    out.push_str("<mtd>");
+                    write(entry, out);
+                    out.push_str("</mtd>");
+                }
+                out.push_str("</mtr>");
+            }
+            out.push_str(&format!("</mtable><mo>{}</mo></mrow>", fence.1));
+        }
         Layout::Sup(b, e) => {
             out.push_str("<msup>");
             write(b, out);

@@ -260,8 +260,9 @@ impl<'a> Parser<'a> {
         match self.cur.tok {
             Tok::Ident => !(self.integrand > 0 && self.at_differential()),
             Tok::LParen | Tok::Pi | Tok::Root | Tok::LBrace => true,
-            // A closing bar (`\right|`) ends the absolute value instead.
-            Tok::Command => !self.closes_bar(),
+            // A closing bar (`\right|`) ends the absolute value instead, and `&`, `\\`,
+            // `\end{..}` end a matrix entry.
+            Tok::Command => !self.closes_bar() && !self.ends_matrix_entry(),
             Tok::LBracket => self.latex,
             _ => false,
         }

@@ -23,11 +23,18 @@
 //!   reaching to its differential; `\frac{d}{dt} E` (`\mathrm{d}`, `\partial`, orders
 //!   `\frac{d^2}{dt^2}`) is `diff(E, t)`, `E` the product term that follows, and
 //!   `\frac{df}{dt}`, `\frac{\partial f}{\partial t}` is `diff(f, t)`;
+//! * matrices (`\begin{pmatrix} a & b \\ c & d \end{pmatrix}` and the other matrix
+//!   environments), determinants (`vmatrix`, bars around a matrix, `\det`): see the child
+//!   module `matrix`;
 //! * any other command is refused, naming it.
 
 use super::*;
 use crate::expr::latex::{greek_char, greek_name};
+use matrix::{environment_end, is_matrix_literal};
 use std::borrow::Cow;
+
+#[path = "parse_latex_matrix.rs"]
+mod matrix;
 
 /// Spacing commands, read as white space (`\limits` places a sum's limits only).
 const SPACING: &[&str] = &[
@@ -80,6 +87,7 @@ pub(super) fn prepare(text: &str) -> (Cow<'_, str>, bool) {
     if s[..end].ends_with(['.', ',']) {
         blank(&mut s, end - 1, 1);
     }
+    matrix::blank_alignment(&mut s);
     (Cow::Owned(s), true)
 }
 
@@ -245,6 +253,8 @@ impl Parser<'_> {
             '{' => token(Tok::LBrace, start + 1),
             '}' => token(Tok::RBrace, start + 1),
             '_' => token(Tok::Underscore, start + 1),
+            // A matrix's entry separator (`a & b`).
+            '&' => token(Tok::Command, start + 1),
             '^' => {
                 let at = skip_spacing(src, start + 1);
                 let r = &src[at..];
@@ -273,6 +283,9 @@ impl Parser<'_> {
                     return token(Tok::Command, start + 1 + len);
                 }
                 match word {
+                    "begin" | "end" => {
+                        token(Tok::Command, environment_end(src, start).unwrap_or(after))
+                    }
                     "cdot" | "times" | "ast" => token(Tok::Star, after),
                     "div" => token(Tok::Slash, after),
                     "pi" => token(Tok::Pi, after),
@@ -384,6 +397,13 @@ impl Parser<'_> {
                 self.bump();
                 self.parse_integral(text, t.start)
             }
+            "det" => self.parse_det(t.start),
+            _ if text.starts_with("\\begin{") => self.parse_environment(),
+            _ if text == "&" || text == "\\\\" || text.starts_with("\\end") => Err(self.refuse(
+                t.start,
+                text,
+                "a matrix's entry or row separator, or \\end, outside a matrix environment",
+            )),
             _ if bar(text) == Some(Bar::Open) => {
                 self.bump();
                 // A `d` inside the bars is a factor, not the differential of an integral.
@@ -399,6 +419,10 @@ impl Parser<'_> {
                     ));
                 }
                 self.bump();
+                // Bars around a matrix are its determinant.
+                if is_matrix_literal(&inner) {
+                    return Ok(matrix::determinant(inner, t.start));
+                }
                 Ok(call(crate::expr::ABS, vec![inner]))
             }
             _ if text.contains('|') || matches!(word, "vert" | "lvert" | "rvert" | "mid") => {
@@ -411,7 +435,7 @@ impl Parser<'_> {
             _ => Err(self.refuse(
                 t.start,
                 text,
-                "this LaTeX command is not read (LaTeX input reads \\frac, \\sqrt, \\binom, \\sin, \\cos, \\tan, \\sum, \\int, \\pi, Greek letters, \\mathrm{..}, \\cdot, \\times, \\left( \\right) and spacing; see docs/formulas.md)",
+                "this LaTeX command is not read (LaTeX input reads \\frac, \\sqrt, \\binom, \\sin, \\cos, \\tan, \\sum, \\int, \\det, \\begin{pmatrix}, \\pi, Greek letters, \\mathrm{..}, \\cdot, \\times, \\left( \\right) and spacing; see docs/formulas.md)",
             )),
         }
     }

@@ -3,14 +3,14 @@
 use crate::expr::{parse_expr, parse_expr_with_calls, split_equation, to_latex, Notation};
 
 /// The LaTeX text and the ASCII text parse to the same tree (compared as printed).
-fn same(latex: &str, ascii: &str) {
+pub(super) fn same(latex: &str, ascii: &str) {
     let l = parse_expr_with_calls(latex).unwrap_or_else(|e| panic!("{latex:?}: {e}"));
     let a = parse_expr_with_calls(ascii).unwrap_or_else(|e| panic!("{ascii:?}: {e}"));
     assert_eq!(l.to_string(), a.to_string(), "{latex:?} against {ascii:?}");
 }
 
 /// The refusal of `latex`, which must name `part`.
-fn refused(latex: &str, part: &str) {
+pub(super) fn refused(latex: &str, part: &str) {
     match parse_expr_with_calls(latex) {
         Ok(e) => panic!("{latex:?} was read as {e}"),
         Err(e) => assert!(e.to_string().contains(part), "{latex:?}: {e}"),
