@@ -319,7 +319,7 @@ impl Sides<'_> {
 /// A hint when a name of several letters is spelled by one-letter variables of the same
 /// formula (`ac` beside `a` and `c`): outside LaTeX, adjacent letters are one name, so `2ac` is 2
 /// times the variable `ac`, which is rarely what a paper means.
-fn joined_names_hint(sides: &[&Expr]) -> Option<String> {
+pub(crate) fn joined_names_hint(sides: &[&Expr]) -> Option<String> {
     let mut names = Vec::new();
     for e in sides {
         e.collect_variables(&mut names);

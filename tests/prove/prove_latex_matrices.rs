@@ -1,6 +1,7 @@
 //! `exactcheck prove` on matrices and determinants typed as LaTeX: `pmatrix` and the other
 //! matrix environments, `vmatrix`, bars around an `array`, `\det`; equations pasted from an
-//! `align` (with `&`); malformed matrices refused in one line.
+//! `align` (with `&`); malformed matrices refused in one line; and a claims file's failing
+//! verdict naming the names of several letters spelled by one-letter variables (`2ac`).
 
 use crate::timed;
 
@@ -57,4 +58,42 @@ fn malformed_matrices_are_one_line_naming_the_problem() {
         assert_eq!(err.lines().count(), 1, "{err}");
         assert!(err.contains(needle), "{text}: {err}");
     }
+}
+
+#[test]
+fn a_claims_file_names_joined_names_in_a_failing_verdict() {
+    let path = std::env::temp_dir().join(format!("exactcheck-joined-{}.toml", std::process::id()));
+    std::fs::write(
+        &path,
+        r#"
+[[claim]]
+id = "plain"
+kind = "identity"
+lhs = "(a^2+b^2+c^2+d^2)^2"
+rhs = "(a^2+b^2-c^2-d^2)^2 + (2ac+2bd)^2 + (2ad-2bc)^2"
+expect = "fails"
+
+[[claim]]
+id = "latex"
+kind = "identity"
+lhs = "$(a^2+b^2+c^2+d^2)^2$"
+rhs = "$(a^2+b^2-c^2-d^2)^2 + (2ac+2bd)^2 + (2ad-2bc)^2$"
+"#,
+    )
+    .unwrap();
+    let rows = crate::common::verify_json(path.to_str().unwrap(), 0);
+    std::fs::remove_file(&path).ok();
+    let plain = rows.row("plain");
+    assert_eq!(plain["verdict"], "fails", "{plain}");
+    let evidence = plain["evidence"].as_str().unwrap();
+    assert!(
+        evidence.contains("hint: 'ac', 'bd', 'ad', 'bc' are each one variable"),
+        "{evidence}"
+    );
+    let latex = rows.row("latex");
+    assert_eq!(latex["verdict"], "proved", "{latex}");
+    assert!(
+        !latex["evidence"].as_str().unwrap().contains("hint"),
+        "{latex}"
+    );
 }

@@ -267,7 +267,15 @@ fn identity<C: PointField + Display>(
         .filter(|_| exactcheck_exact::expr::constant_base(&spec.vars).is_none())
         .and_then(|k| prove_constants::settle(k, &spec, &mut report, pi, &angles.mixed));
     let method = phrasing.method::<C>();
-    let evidence = phrasing.evidence(&spec, &report);
+    let mut evidence = phrasing.evidence(&spec, &report);
+    // A failing identity whose names of several letters are spelled by its one-letter variables
+    // (`2ac` beside `a` and `c`) was most likely meant as a product.
+    if matches!(report.verdict, IdentityVerdict::Fails { .. }) {
+        let sides: Vec<&Expr> = lhs.iter().chain(rhs).collect();
+        if let Some(hint) = crate::prove_cmd::joined_names_hint(&sides) {
+            evidence.push_str(&format!(" (hint: {hint})"));
+        }
+    }
     let correction_problem = phrasing.correction_problem(&report);
     let fields = phrasing.fields(&spec, &report, *shape);
     let printed: Vec<Equation> = if names.is_empty() {
