@@ -209,6 +209,14 @@ fn equations_split_at_their_one_top_level_equals() {
     assert!(err.to_string().contains("at 5"), "{err}");
 }
 
+/// The expression `ascii`, its LaTeX and that LaTeX read back.
+fn latex_read_back(ascii: &str) -> (crate::expr::Expr, String, crate::expr::Expr) {
+    let e = parse_expr_with_calls(ascii).unwrap();
+    let latex = to_latex(&e, &Notation::new());
+    let back = parse_expr_with_calls(&latex).unwrap_or_else(|e| panic!("{latex:?}: {e}"));
+    (e, latex, back)
+}
+
 #[test]
 fn printed_latex_reads_back() {
     for ascii in [
@@ -222,9 +230,7 @@ fn printed_latex_reads_back() {
         "factorial(n)/(factorial(k)*factorial(n - k)) + factorial(factorial(3))^2",
         "abs(x)*abs(y - 1) + integrate(t, t, 0, 1)*c",
     ] {
-        let e = parse_expr_with_calls(ascii).unwrap();
-        let latex = to_latex(&e, &Notation::new());
-        let back = parse_expr_with_calls(&latex).unwrap_or_else(|e| panic!("{latex:?}: {e}"));
+        let (_, latex, back) = latex_read_back(ascii);
         assert_eq!(to_latex(&back, &Notation::new()), latex, "{ascii:?}");
     }
     // The same tree, not only the same LaTeX: a factor after \sum stays outside the sum.
@@ -235,9 +241,7 @@ fn printed_latex_reads_back() {
         "sum(k, 1, n, k)^2",
         "factorial(factorial(n))",
     ] {
-        let e = parse_expr_with_calls(ascii).unwrap();
-        let latex = to_latex(&e, &Notation::new());
-        let back = parse_expr_with_calls(&latex).unwrap_or_else(|e| panic!("{latex:?}: {e}"));
+        let (e, latex, back) = latex_read_back(ascii);
         assert_eq!(back.to_string(), e.to_string(), "{latex:?}");
     }
 }
