@@ -1,7 +1,7 @@
 //! `exactcheck prove` on formulas typed as the LaTeX source of a paper prints them: one
 //! argument `LHS = RHS`, `\frac`, `\sqrt`, `\sum`, `\int`, `\frac{d}{dx}`, Greek letters, functions
-//! without parentheses; the refusals are one line naming what is wrong; a claims file reads
-//! LaTeX in its formula fields.
+//! without parentheses; bars `|x|` and factorials `n!` (in plain text too); the refusals are one
+//! line naming what is wrong; a claims file reads LaTeX in its formula fields.
 
 use crate::timed;
 
@@ -31,6 +31,14 @@ fn formulas_as_typed_in_latex_are_decided() {
         &["\\sin 30^\\circ = \\frac12"],
         &["\\left| a b \\right| = \\lvert a \\rvert \\lvert b \\rvert"],
         &["\\left| x \\right| = x", "--where", "x >= 0"],
+        // Bars and factorials, in plain text as in LaTeX.
+        &["|x|^2", "x^2"],
+        &["|a|*|b|", "|a b|"],
+        &["||x| - 1|^2", "(abs(x) - 1)^2"],
+        &["5!", "120"],
+        &["10!/(3!*7!)", "binomial(10, 3)"],
+        &["$\\frac{6!}{2!\\,(6-2)!}$", "15"],
+        &["sum(k, 0, 4, 4!/(k! (4 - k)!))", "16"],
     ] {
         let mut all = vec!["prove"];
         all.extend_from_slice(args);
@@ -45,6 +53,9 @@ fn formulas_as_typed_in_latex_are_decided() {
     ]);
     assert_eq!(code, 1, "{out}{err}");
     assert!(out.starts_with("fails: at t = "), "{out}");
+    let (code, out, err) = run(&["prove", "|x|", "x"]);
+    assert_eq!(code, 1, "{out}{err}");
+    assert!(out.starts_with("fails: at x = -"), "{out}");
 }
 
 #[test]
@@ -57,6 +68,18 @@ fn latex_refusals_are_one_line_naming_the_problem() {
         (&["\\sin^{-1} x = 1"], "ambiguous"),
         (&["\\int_0^1 t^2 = 1"], "differential"),
         (&["a = b = c"], "unexpected character '='"),
+        (&["|a|b|c|", "1"], "ambiguous"),
+        (&["|x", "1"], "not closed"),
+        (&["3!!", "720"], "double factorial"),
+        (&["n!/(n-1)!", "n"], "integer constant, not n"),
+        (
+            &["diff(sum(k, 1, n, k^2), k)", "0"],
+            "k is not a free variable",
+        ),
+        (
+            &["diff(integrate(t^2, t, 0, x), t)", "0"],
+            "t is not a free variable",
+        ),
     ] {
         let mut all = vec!["prove"];
         all.extend_from_slice(args);

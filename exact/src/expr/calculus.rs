@@ -340,7 +340,51 @@ fn integrate_arguments<'a>(
 ) -> Result<(&'a Expr, &'a str, &'a Expr, &'a Expr), ExprError> {
     arity(call, args, 4, "expression, variable, from, to")?;
     let t = variable_name(call, &args[1], "second")?;
+    refuse_bound_only(call, &args[0], &args[1], t)?;
     Ok((&args[0], t, &args[2], &args[3]))
+}
+
+/// The refusal of `diff(E, t)` or `integrate(E, t, ..)` (the call `call`, its variable argument
+/// `var` naming `t`) when `t` is not a free variable of `E` but only the index of a `sum` or the
+/// variable of an `integrate` inside it: bound there, it is not a variable of `E` to take the
+/// derivative or the integral in.
+pub(super) fn refuse_bound_only(
+    call: &Expr,
+    body: &Expr,
+    var: &Expr,
+    t: &str,
+) -> Result<(), ExprError> {
+    let mut free = Vec::new();
+    body.collect_variables(&mut free);
+    if free.iter().any(|v| v == t) {
+        return Ok(());
+    }
+    let mut binder = None;
+    super::library::map_tree(body, &mut |x| {
+        if let ExprKind::Call(f, args) = &x.kind {
+            let bound = match (f.as_str(), args.as_slice()) {
+                ("sum", [k, _, _, _]) => Some((k, "the index of a sum")),
+                ("integrate", [_, v, _, _]) => Some((v, "the variable of an integral")),
+                _ => None,
+            };
+            if let Some((index, what)) = bound {
+                if matches!(&index.kind, ExprKind::Var(v) if v == t) {
+                    binder.get_or_insert(what);
+                }
+            }
+        }
+    });
+    match binder {
+        None => Ok(()),
+        Some(what) => Err(bad(
+            call,
+            var.pos,
+            format!(
+                "{t} is not a free variable of the expression: it is only {what} inside it, \
+                 bound there; name a variable the expression has"
+            ),
+        )),
+    }
 }
 
 /// The variables of `vars` that change with the variable `t`: `t` itself, the cosine and sine

@@ -319,3 +319,33 @@ fn sums_that_are_not_polynomial_in_the_index_are_refused() {
         assert!(!e.contains('\n'), "{text}: {e}");
     }
 }
+
+#[test]
+fn a_variable_bound_inside_is_no_variable_to_differentiate_or_integrate_in() {
+    for (text, names) in [
+        ("diff(sum(k, 1, n, k^2), k)", "k is not a free variable"),
+        (
+            "diff(integrate(t^2, t, 0, x), t)",
+            "the variable of an integral",
+        ),
+        (
+            "diff(sum(j, 1, n, sum(k, 1, j, k)), k)",
+            "only the index of a sum",
+        ),
+        (
+            "integrate(sum(k, 1, n, k), k, 0, 1)",
+            "k is not a free variable",
+        ),
+        ("diff(sum(k, 1, 3, k*x), k)", "k is not a free variable"),
+    ] {
+        let e = err(text);
+        assert!(e.contains(names) && !e.contains('\n'), "{text}: {e}");
+        assert!(lower(&parse_expr(text).unwrap()).is_err(), "{text}");
+    }
+    // Free as well as bound: the derivative by the free one.
+    let mut v = Vars::new();
+    let d = ratfun("diff(k*sum(k, 1, 3, k), k)", &mut v);
+    assert_eq!(d, ratfun("6", &mut v));
+    // A variable that does not occur at all: the derivative is 0, as before.
+    assert_eq!(ratfun("diff(x^2, y)", &mut v), ratfun("0", &mut v));
+}

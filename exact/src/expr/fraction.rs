@@ -396,6 +396,7 @@ pub(super) fn diff_arguments<'a>(
             "pi is a constant, not a variable to differentiate in".into(),
         ));
     }
+    super::calculus::refuse_bound_only(call, &args[0], &args[1], t)?;
     let k = match args.get(2) {
         None => 1,
         Some(order) => {

@@ -489,13 +489,44 @@ fn fenced(l: Layout) -> Layout {
     Layout::Fenced(Box::new(l))
 }
 
-/// Factors juxtaposed (`\,`, or `\cdot` before a number); sums and later negative factors in
-/// parentheses.
+/// Whether the printed expression ends in the operand of `\sum` or of a derivative
+/// `\frac{d}{dt}`, which reads on over the factors written after it: such a factor is not
+/// followed by another one without parentheses (`\left(\sum_{k=1}^{n} k\right)\,c`).
+fn ends_open(e: &Expr) -> bool {
+    match &e.kind {
+        ExprKind::Call(name, args) => matches!(
+            (name.as_str(), args.len()),
+            ("sum", 4) | ("diff", 2) | ("diff", 3)
+        ),
+        // A negated sum or negative operand is in parentheses (see `layout`).
+        ExprKind::Neg(x) => {
+            !matches!(x.kind, ExprKind::Sum(_)) && !starts_with_minus(x) && ends_open(x)
+        }
+        ExprKind::Product(items) => {
+            items.iter().all(|(op, _)| *op == MulOp::Times)
+                && items.last().is_some_and(|(_, x)| ends_open(x))
+        }
+        _ => false,
+    }
+}
+
+/// Whether a call prints in a paper's notation that a power or a factorial sign after it would
+/// enter (`\sum`, `\int`, a derivative, `n!`).
+fn big_call(e: &Expr) -> bool {
+    matches!(&e.kind, ExprKind::Call(name, args)
+        if matches!((name.as_str(), args.len()),
+            ("sum", 4) | ("integrate", 4) | ("diff", 2 | 3) | ("factorial", 1)))
+}
+
+/// Factors juxtaposed (`\,`, or `\cdot` before a number); sums, later negative factors and
+/// factors ending in an open operand ([`ends_open`]) before another factor in parentheses.
 fn factors_layout(factors: &[&Expr], n: &Notation) -> Layout {
     let mut out = Vec::new();
     for (k, f) in factors.iter().enumerate() {
         let l = layout(f, n);
-        let needs = matches!(f.kind, ExprKind::Sum(_)) || (k > 0 && starts_with_minus(f));
+        let needs = matches!(f.kind, ExprKind::Sum(_))
+            || (k > 0 && starts_with_minus(f))
+            || (k + 1 < factors.len() && ends_open(f));
         if k > 0 {
             out.push(Layout::Op(if starts_with_number(f) && !needs {
                 Op::Dot
@@ -597,7 +628,7 @@ pub(super) fn layout(e: &Expr, n: &Notation) -> Layout {
             }
             let b = layout(base, n);
             let simple = matches!(&base.kind, ExprKind::Number(q) if q.is_integer() && q.signum() != Sign::Negative)
-                || matches!(base.kind, ExprKind::Call(..));
+                || (matches!(base.kind, ExprKind::Call(..)) && !big_call(base));
             Layout::Sup(Box::new(if simple { b } else { fenced(b) }), Box::new(e))
         }
         ExprKind::Sqrt(x) => Layout::Sqrt(Box::new(layout(x, n))),
@@ -664,11 +695,13 @@ fn matrix_layout(items: &[Expr], det: bool, n: &Notation) -> Layout {
 }
 
 /// The operand of a large operator, a derivative or a factorial, in parentheses when it is a
-/// sum (or, after `!`, anything but a name, a natural number or a call).
+/// sum (or, before `!`, anything but a name, a natural number or a call that is not in a
+/// paper's notation).
 fn operand(e: &Expr, n: &Notation, tight: bool) -> Layout {
     let l = layout(e, n);
     let plain = if tight {
-        matches!(&e.kind, ExprKind::Var(_) | ExprKind::Call(..))
+        matches!(&e.kind, ExprKind::Var(_))
+            || (matches!(&e.kind, ExprKind::Call(..)) && !big_call(e))
             || matches!(&e.kind, ExprKind::Number(q) if q.is_integer() && q.signum() != Sign::Negative)
     } else {
         !matches!(e.kind, ExprKind::Sum(_)) && !starts_with_minus(e)

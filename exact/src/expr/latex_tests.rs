@@ -165,3 +165,39 @@ fn names_with_functions() {
     let e = parse_expr_with_calls("w^2").unwrap();
     assert_eq!(to_latex(&e, &two), "\\left(uv\\right)^{2}");
 }
+
+#[test]
+fn calls_that_read_on_are_grouped_before_more_factors() {
+    // The operand of \sum and of a derivative is the product that follows, so a factor after
+    // one of them would join it: the call goes in parentheses.
+    assert_eq!(
+        tex("sum(k, 1, n, k)*c"),
+        "\\left(\\sum_{k = 1}^{n} k\\right)\\,c"
+    );
+    assert_eq!(
+        tex("diff(x^2, x)*y"),
+        "\\left(\\frac{\\mathrm{d}}{\\mathrm{d}x}x^{2}\\right)\\,y"
+    );
+    assert_eq!(
+        tex("-sum(k, 1, n, k)*c"),
+        "\\left(-\\sum_{k = 1}^{n} k\\right)\\,c"
+    );
+    assert_eq!(
+        tex("a*sum(k, 1, n, k)*c/2"),
+        "\\frac{a\\,\\left(\\sum_{k = 1}^{n} k\\right)\\,c}{2}"
+    );
+    // Last in its product it needs none; an integral ends at its differential.
+    assert_eq!(tex("c*sum(k, 1, n, k)"), "c\\,\\sum_{k = 1}^{n} k");
+    assert_eq!(
+        tex("integrate(t, t, 0, 1)*c"),
+        "\\int_{0}^{1} t\\,\\mathrm{d}t\\,c"
+    );
+    // A power or a factorial sign of such a call is outside parentheses.
+    assert_eq!(
+        tex("sum(k, 1, n, k)^2"),
+        "\\left(\\sum_{k = 1}^{n} k\\right)^{2}"
+    );
+    assert_eq!(tex("factorial(n)^2"), "\\left(n!\\right)^{2}");
+    assert_eq!(tex("factorial(factorial(n))"), "\\left(n!\\right)!");
+    assert_eq!(tex("binomial(n, k)^2"), "\\binom{n}{k}^{2}");
+}

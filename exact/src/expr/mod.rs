@@ -17,9 +17,9 @@
 //! product  := unary (('*' | '/') unary | implicit)*
 //! implicit := power                          (juxtaposition, not starting with a number)
 //! unary    := ('-' | '+') unary | power
-//! power    := atom '°'? ('^' exponent)?        ('°': degrees, `atom * pi/180`)
+//! power    := atom '°'? '!'? ('^' exponent)?   ('°': degrees, `atom * pi/180`; '!': factorial)
 //! exponent := ('-' | '+') exponent | atom ('^' exponent)?   (right-associative)
-//! atom     := number | variable | 'sqrt' '(' sum ')' | call | '(' sum ')' | list
+//! atom     := number | variable | 'sqrt' '(' sum ')' | call | '(' sum ')' | '|' sum '|' | list
 //! list     := '[' sum (',' sum)* ']'           (with calls only: vectors and matrices, see [`library`])
 //! call     := 'diff' '(' sum ',' variable (',' sum)? ')'
 //!           | 'integrate' '(' sum ',' variable ',' sum ',' sum ')'
@@ -69,6 +69,15 @@
 //!   (and takes negative powers of) any expression that is not identically zero: the result is
 //!   a rational function ([`crate::ratfun::RatFun`]) in lowest terms with the divisors met, and
 //!   an expression without such a division converts by [`Expr::to_poly`] alone.
+//! * **Absolute value**: `|E|` is `abs(E)`. A `|` where an operand is expected opens an
+//!   absolute value; a `|` after an operand closes the innermost one open at that level of
+//!   parentheses, or, when none is open there, opens one as a juxtaposed factor. So
+//!   `||x| - 1|` nests, `|a|*|b|` and `2|x|` are products, and a bar never closes one opened
+//!   outside the parentheses it is in. A closing bar followed by a factor without an operator,
+//!   with at least two bars after it at that level beyond those the open ones need, is refused
+//!   as ambiguous, naming its position: `|a|b|c|` is both `|a|*b*|c|` and `|a*|b|*c|`.
+//! * **Factorial**: `!` after an atom is `factorial(atom)`: `5!`, `n!`, `(n - k)!`; `n!^2` is
+//!   `(n!)^2`. `n!!` (the double factorial) and a `!` in an exponent (`2^3!`) are refused.
 //! * **Degrees**: `°` after an atom multiplies it by `pi/180`, so `cos(45°)` is `cos(pi/4)` and
 //!   `(a + b)°` the angle `a + b` in degrees.
 //! * `sqrt(E)` of a non-constant `E` is a variable standing for the non-negative root, one per

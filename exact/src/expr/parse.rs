@@ -55,6 +55,10 @@ enum Tok {
     LBrace,
     /// LaTeX `}`.
     RBrace,
+    /// `|`: a bar of an absolute value `|E|`.
+    Bar,
+    /// `!`: the factorial of the atom before it.
+    Bang,
     /// LaTeX `_` that does not belong to a name (`\\sum_`, `\\int_`).
     Underscore,
     /// A LaTeX command other than a name, an operator or a delimiter (`\\frac`, `\\sin`).
@@ -84,6 +88,9 @@ struct Parser<'a> {
     latex: bool,
     /// How many integrands are open: inside one, a juxtaposed `d` starts the differential.
     integrand: usize,
+    /// How many absolute values `|..|` are open at this level of parentheses: inside one, a
+    /// `|` after an operand closes it.
+    bars: usize,
 }
 
 impl<'a> Parser<'a> {
@@ -93,6 +100,7 @@ impl<'a> Parser<'a> {
             calls,
             latex,
             integrand: 0,
+            bars: 0,
             cur: Token {
                 tok: Tok::End,
                 start: 0,
@@ -166,6 +174,8 @@ impl<'a> Parser<'a> {
             ']' => (Tok::RBracket, start + 1),
             ',' => (Tok::Comma, start + 1),
             '=' => (Tok::Equals, start + 1),
+            '|' => (Tok::Bar, start + 1),
+            '!' => (Tok::Bang, start + 1),
             '°' => (Tok::Degree, start + '°'.len_utf8()),
             // The notation of printed mathematics, as text copied from a typeset page has it.
             '\u{2212}' => (Tok::Minus, start + ch.len_utf8()),
@@ -260,6 +270,9 @@ impl<'a> Parser<'a> {
         match self.cur.tok {
             Tok::Ident => !(self.integrand > 0 && self.at_differential()),
             Tok::LParen | Tok::Pi | Tok::Root | Tok::LBrace => true,
+            // Inside an open absolute value, a bar after an operand closes it (`|a b|`);
+            // elsewhere it opens one (`2|x|`).
+            Tok::Bar => self.bars == 0,
             // A closing bar (`\right|`) ends the absolute value instead, and `&`, `\\`,
             // `\end{..}` end a matrix entry.
             Tok::Command => !self.closes_bar() && !self.ends_matrix_entry(),
@@ -345,7 +358,30 @@ impl<'a> Parser<'a> {
     fn parse_power(&mut self) -> Result<Expr, ExprError> {
         let base = self.parse_atom(EXPECT_OPERAND)?;
         let base = self.parse_degrees(base)?;
+        let base = self.parse_factorial(base)?;
         self.parse_power_tail(base)
+    }
+
+    /// `atom '!'`: the call `factorial(atom)`; `n!!` (the double factorial) is refused.
+    fn parse_factorial(&mut self, atom: Expr) -> Result<Expr, ExprError> {
+        if self.cur.tok != Tok::Bang {
+            return Ok(atom);
+        }
+        self.bump();
+        if self.cur.tok == Tok::Bang {
+            return Err(ExprError::BadCall {
+                pos: self.cur.start,
+                name: "'!!'".into(),
+                why: "the double factorial is not supported; the factorial of a factorial is \
+                      written (n!)!"
+                    .into(),
+            });
+        }
+        let pos = atom.pos;
+        Ok(Expr {
+            kind: ExprKind::Call("factorial".into(), vec![atom]),
+            pos,
+        })
     }
 
     /// `atom '°'`: the angle in degrees as the product `atom * pi / 180`.
@@ -399,6 +435,13 @@ impl<'a> Parser<'a> {
     fn parse_exponent(&mut self) -> Result<Expr, ExprError> {
         self.parse_signed(|p| {
             let base = p.parse_atom(EXPECT_EXPONENT)?;
+            if p.cur.tok == Tok::Bang {
+                return Err(ExprError::BadCall {
+                    pos: p.cur.start,
+                    name: "'!'".into(),
+                    why: "a factorial in an exponent is ambiguous: write 2^(n!) or (2^n)!".into(),
+                });
+            }
             p.parse_power_tail(base)
         })
     }
@@ -468,6 +511,7 @@ impl<'a> Parser<'a> {
                 })
             }
             Tok::LParen => self.parse_parenthesized(),
+            Tok::Bar => self.parse_bars(),
             Tok::LBrace => self.parse_group(),
             Tok::Command => self.parse_command(),
             // In LaTeX, brackets group like parentheses (`\\left[ .. \\right]`).
@@ -508,7 +552,7 @@ impl<'a> Parser<'a> {
     /// `'(' sum (',' sum)* ')'`, the current token being `(`: the arguments of a call.
     fn parse_arguments(&mut self) -> Result<Vec<Expr>, ExprError> {
         self.enter()?;
-        let args = self.parse_argument_list();
+        let args = self.inner_level(Self::parse_argument_list);
         self.leave();
         args
     }
@@ -539,7 +583,7 @@ impl<'a> Parser<'a> {
         self.bump();
         let mut items = Vec::new();
         let r = loop {
-            match self.parse_sum() {
+            match self.inner_level(Self::parse_sum) {
                 Ok(e) => items.push(e),
                 Err(e) => break Err(e),
             }
@@ -560,6 +604,71 @@ impl<'a> Parser<'a> {
         })
     }
 
+    /// `parse` at a new level of parentheses, braces, bars or arguments: a `d` there is a factor,
+    /// not the differential of an integral, and a `|` there does not close a bar opened outside.
+    pub(super) fn inner_level<T>(
+        &mut self,
+        parse: impl FnOnce(&mut Self) -> Result<T, ExprError>,
+    ) -> Result<T, ExprError> {
+        let integrand = std::mem::take(&mut self.integrand);
+        let bars = std::mem::take(&mut self.bars);
+        let r = parse(self);
+        self.integrand = integrand;
+        self.bars = bars;
+        r
+    }
+
+    /// `'|' sum '|'`, the current token being the opening bar: `abs(sum)` (module
+    /// documentation of [`super`] for the rule of the bars). A closing bar followed by a factor
+    /// written without an operator, with two or more bars after it at this level than the open
+    /// ones need, is refused: `|a|b|c|` is both `|a|*b*|c|` and `|a*|b|*c|`.
+    fn parse_bars(&mut self) -> Result<Expr, ExprError> {
+        self.enter()?;
+        let open = self.cur.start;
+        self.bump();
+        let outer = self.bars;
+        let inner = self.inner_level(|p| {
+            p.bars = outer + 1;
+            p.parse_sum()
+        });
+        self.leave();
+        let inner = inner?;
+        let bad = |pos: usize, why: &str| ExprError::BadCall {
+            pos,
+            name: "'|'".into(),
+            why: why.into(),
+        };
+        if self.cur.tok != Tok::Bar {
+            return Err(bad(
+                open,
+                "the absolute value opened here is not closed by '|' (or a bar after an operand \
+                 inside parentheses does not close a bar opened outside them)",
+            ));
+        }
+        let close = self.cur.start;
+        self.bump();
+        let juxtaposed =
+            matches!(
+                self.cur.tok,
+                Tok::Ident | Tok::Num | Tok::LParen | Tok::Bar | Tok::Pi | Tok::Root | Tok::LBrace
+            ) || (self.cur.tok == Tok::Command && !self.closes_bar() && !self.ends_matrix_entry());
+        if juxtaposed && bars_ahead(&self.src[close + 1..]) >= self.bars + 2 {
+            return Err(bad(
+                close,
+                "ambiguous bars: |a|b|c| is |a|*b*|c| or |a*|b|*c|; write the operator after \
+                 the closing bar (|a|*b) or use abs(..)",
+            ));
+        }
+        // In LaTeX, bars around a matrix are its determinant.
+        if self.latex && latex_input::is_matrix_literal(&inner) {
+            return Ok(latex_input::determinant(inner, open));
+        }
+        Ok(Expr {
+            kind: ExprKind::Call(ABS.to_string(), vec![inner]),
+            pos: open,
+        })
+    }
+
     /// `'(' sum ')'`, the current token being `(`.
     /// The expression's position becomes that of the `(`.
     fn parse_parenthesized(&mut self) -> Result<Expr, ExprError> {
@@ -576,10 +685,7 @@ impl<'a> Parser<'a> {
         self.enter()?;
         let open = self.cur.start;
         self.bump();
-        // A `d` inside parentheses or braces is a factor, not the differential of an integral.
-        let integrand = std::mem::take(&mut self.integrand);
-        let inner = self.parse_sum();
-        self.integrand = integrand;
+        let inner = self.inner_level(Self::parse_sum);
         self.leave();
         let inner = inner?;
         if self.cur.tok != close {
@@ -588,6 +694,23 @@ impl<'a> Parser<'a> {
         self.bump();
         Ok(Expr { pos: open, ..inner })
     }
+}
+
+/// The number of bars `|` in `rest` at its level of parentheses, brackets and braces (up to
+/// the first unmatched closing one).
+fn bars_ahead(rest: &str) -> usize {
+    let mut depth = 0usize;
+    let mut bars = 0;
+    for c in rest.chars() {
+        match c {
+            '(' | '[' | '{' => depth += 1,
+            ')' | ']' | '}' | ',' if depth == 0 => break,
+            ')' | ']' | '}' => depth -= 1,
+            '|' if depth == 0 => bars += 1,
+            _ => {}
+        }
+    }
+    bars
 }
 
 /// `base ^ exp`; a half-integer constant exponent, as printed (`(1 + t^2)^(3/2)`, `x^0.5`), is a

@@ -30,7 +30,8 @@
 
 use super::*;
 use crate::expr::latex::{greek_char, greek_name};
-use matrix::{environment_end, is_matrix_literal};
+use matrix::environment_end;
+pub(super) use matrix::{determinant, is_matrix_literal};
 use std::borrow::Cow;
 
 #[path = "parse_latex_matrix.rs"]
@@ -54,6 +55,24 @@ const SIZES: &[&str] = &[
 
 /// Commands whose braced word is a name (`\mathrm{d}` is `d`).
 const NAME_WORDS: &[&str] = &["mathit", "mathrm", "operatorname", "mathnormal"];
+
+/// Mathematical commands the formula language has no exact reading of, with what they denote
+/// (their refusal says so instead of only "not read").
+const UNSUPPORTED_MATH: &[(&str, &str)] = &[
+    ("log", "the logarithm"),
+    ("ln", "the logarithm"),
+    ("lg", "the logarithm"),
+    ("exp", "the exponential function"),
+    ("lim", "a limit"),
+    ("infty", "infinity"),
+    ("sinh", "a hyperbolic function"),
+    ("cosh", "a hyperbolic function"),
+    ("tanh", "a hyperbolic function"),
+    ("arcsin", "an inverse trigonometric function"),
+    ("arccos", "an inverse trigonometric function"),
+    ("arctan", "an inverse trigonometric function"),
+    ("prod", "a product with limits"),
+];
 
 const FRACTIONS: &[&str] = &["frac", "dfrac", "tfrac", "cfrac"];
 const BINOMIALS: &[&str] = &["binom", "dbinom", "tbinom"];
@@ -406,11 +425,7 @@ impl Parser<'_> {
             )),
             _ if bar(text) == Some(Bar::Open) => {
                 self.bump();
-                // A `d` inside the bars is a factor, not the differential of an integral.
-                let integrand = std::mem::take(&mut self.integrand);
-                let inner = self.parse_sum();
-                self.integrand = integrand;
-                let inner = inner?;
+                let inner = self.inner_level(Self::parse_sum)?;
                 if !self.closes_bar() {
                     return Err(self.refuse(
                         t.start,
@@ -421,7 +436,7 @@ impl Parser<'_> {
                 self.bump();
                 // Bars around a matrix are its determinant.
                 if is_matrix_literal(&inner) {
-                    return Ok(matrix::determinant(inner, t.start));
+                    return Ok(determinant(inner, t.start));
                 }
                 Ok(call(crate::expr::ABS, vec![inner]))
             }
@@ -430,6 +445,17 @@ impl Parser<'_> {
                     t.start,
                     text,
                     "a bar that neither opens nor closes an absolute value: write \\left| x \\right| or \\lvert x \\rvert",
+                ))
+            }
+            w if UNSUPPORTED_MATH.iter().any(|(c, _)| *c == w) => {
+                let what = UNSUPPORTED_MATH
+                    .iter()
+                    .find(|(c, _)| *c == w)
+                    .map_or("", |(_, what)| what);
+                Err(self.refuse(
+                    t.start,
+                    text,
+                    format!("{what} is not supported: the formula language is exact arithmetic with roots, sin, cos and tan, sums, integrals and derivatives of polynomials (see docs/formulas.md)"),
                 ))
             }
             _ => Err(self.refuse(

@@ -3,8 +3,8 @@
 //! * `\begin{pmatrix} a & b \\ c & d \end{pmatrix}` (also `bmatrix`, `Bmatrix`, `matrix`,
 //!   `smallmatrix`, and `array` with its column specification) is the matrix `[[a, b], [c, d]]`;
 //!   a single column is the vector `[a, c]` (the printed form of a point or a direction);
-//! * `\begin{vmatrix} .. \end{vmatrix}`, and a matrix between absolute-value bars
-//!   (`\left| \begin{array}{cc} .. \end{array} \right|`), is its determinant `det(..)`;
+//! * `\begin{vmatrix} .. \end{vmatrix}`, and a matrix between absolute-value bars (`|..|`,
+//!   `\left| \begin{array}{cc} .. \end{array} \right|`), is its determinant `det(..)`;
 //! * `\det` applies to the atom that follows (`\det\begin{pmatrix}..\end{pmatrix}`,
 //!   `\det(M)`, `\det{M}`).
 //!
@@ -205,7 +205,7 @@ fn entries(n: usize) -> String {
 }
 
 /// `det(m)` at `pos`.
-pub(super) fn determinant(m: Expr, pos: usize) -> Expr {
+pub(in crate::expr::parse) fn determinant(m: Expr, pos: usize) -> Expr {
     Expr {
         kind: ExprKind::Call("det".to_string(), vec![m]),
         pos,
@@ -213,7 +213,7 @@ pub(super) fn determinant(m: Expr, pos: usize) -> Expr {
 }
 
 /// Whether `e` is a matrix literal (a list of lists): between bars it is a determinant.
-pub(super) fn is_matrix_literal(e: &Expr) -> bool {
+pub(in crate::expr::parse) fn is_matrix_literal(e: &Expr) -> bool {
     matches!(&e.kind, ExprKind::Call(n, rows) if n == LIST
         && !rows.is_empty()
         && rows.iter().all(|r| matches!(&r.kind, ExprKind::Call(n, _) if n == LIST)))
@@ -259,6 +259,10 @@ mod tests {
         );
         // A one-by-one determinant is its entry, not a vector.
         same("\\begin{vmatrix} x \\end{vmatrix}", "det([[x]])");
+        same(
+            "|\\begin{matrix} a & |b| \\\\ c & d \\end{matrix}|",
+            "det([[a, abs(b)], [c, d]])",
+        );
         // Bars around anything else are still the absolute value.
         same("\\left| x - 1 \\right|", "abs(x - 1)");
     }

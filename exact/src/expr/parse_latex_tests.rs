@@ -154,6 +154,18 @@ fn unknown_commands_are_named() {
     refused("\\log x", "\\log");
     refused("\\exp(x)", "\\exp");
     refused("\\lim x", "\\lim");
+    for (command, what) in [
+        ("\\log x", "the logarithm is not supported"),
+        ("\\ln(x)", "the logarithm is not supported"),
+        (
+            "e^x + \\exp(x)",
+            "the exponential function is not supported",
+        ),
+        ("\\lim_{x} x", "a limit is not supported"),
+        ("\\sum_{k=1}^{\\infty} k", "infinity is not supported"),
+    ] {
+        refused(command, what);
+    }
     refused("\\mathbf{x}", "\\mathbf");
     refused("\\left| x", "not closed");
     refused("\\vert x \\vert", "neither opens nor closes");
@@ -165,6 +177,17 @@ fn bars_are_the_absolute_value() {
     same("\\left| x - y \\right|", "abs(x - y)");
     same("\\lvert x \\rvert^2", "abs(x)^2");
     same("\\bigl| \\frac{a}{2} \\bigr| \\cdot 3", "abs(a/2)*3");
+}
+
+#[test]
+fn factorials_and_plain_bars() {
+    same(
+        "\\frac{n!}{k!(n-k)!}",
+        "factorial(n)/(factorial(k)*factorial(n - k))",
+    );
+    same("$5! + (n+1)!^2$", "factorial(5) + factorial(n + 1)^2");
+    same("$|x|^2 + |a - b|$", "abs(x)^2 + abs(a - b)");
+    refused("\\frac{n!!}{2}", "double factorial");
 }
 
 #[test]
@@ -186,6 +209,14 @@ fn equations_split_at_their_one_top_level_equals() {
     assert!(err.to_string().contains("at 5"), "{err}");
 }
 
+/// The expression `ascii`, its LaTeX and that LaTeX read back.
+fn latex_read_back(ascii: &str) -> (crate::expr::Expr, String, crate::expr::Expr) {
+    let e = parse_expr_with_calls(ascii).unwrap();
+    let latex = to_latex(&e, &Notation::new());
+    let back = parse_expr_with_calls(&latex).unwrap_or_else(|e| panic!("{latex:?}: {e}"));
+    (e, latex, back)
+}
+
 #[test]
 fn printed_latex_reads_back() {
     for ascii in [
@@ -195,11 +226,23 @@ fn printed_latex_reads_back() {
         "sum(k, 1, n, k^2) + integrate(t^2, t, 0, 1) + diff(t^3, t) + diff(t^3, t, 2)",
         "binomial(n, 2) + sin(theta)^2 + cos(2*x)",
         "theta_1 + alpha*beta + ab",
+        "sum(k, 1, n, k)*c + diff(x^2, x)*y - sum(k, 1, n, k)^2",
+        "factorial(n)/(factorial(k)*factorial(n - k)) + factorial(factorial(3))^2",
+        "abs(x)*abs(y - 1) + integrate(t, t, 0, 1)*c",
     ] {
-        let e = parse_expr_with_calls(ascii).unwrap();
-        let latex = to_latex(&e, &Notation::new());
-        let back = parse_expr_with_calls(&latex).unwrap_or_else(|e| panic!("{latex:?}: {e}"));
+        let (_, latex, back) = latex_read_back(ascii);
         assert_eq!(to_latex(&back, &Notation::new()), latex, "{ascii:?}");
+    }
+    // The same tree, not only the same LaTeX: a factor after \sum stays outside the sum.
+    for ascii in [
+        "sum(k, 1, n, k)*c",
+        "-sum(k, 1, n, k)*c",
+        "diff(x^2, x)*y",
+        "sum(k, 1, n, k)^2",
+        "factorial(factorial(n))",
+    ] {
+        let (e, latex, back) = latex_read_back(ascii);
+        assert_eq!(back.to_string(), e.to_string(), "{latex:?}");
     }
 }
 

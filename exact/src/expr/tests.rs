@@ -483,3 +483,62 @@ fn typeset_notation_reads_as_the_ascii_it_stands_for() {
         assert!(parse_expr(bad).is_err(), "{bad}");
     }
 }
+
+/// `text` with calls, printed.
+fn printed(text: &str) -> String {
+    parse_expr_with_calls(text)
+        .unwrap_or_else(|e| panic!("{text:?}: {e}"))
+        .to_string()
+}
+
+fn call_err(text: &str) -> String {
+    match parse_expr_with_calls(text) {
+        Ok(e) => panic!("{text:?} parsed to {e}"),
+        Err(e) => e.to_string(),
+    }
+}
+
+#[test]
+fn bars_are_the_absolute_value() {
+    assert_eq!(printed("|x|^2"), "abs(x)^2");
+    assert_eq!(printed("|a|*|b|"), "abs(a)*abs(b)");
+    assert_eq!(printed("||x| - 1|"), "abs(abs(x) - 1)");
+    assert_eq!(printed("2|x| + |x - y|/2"), "2*abs(x) + abs(x - y)/2");
+    assert_eq!(printed("|a b|"), "abs(a*b)");
+    assert_eq!(printed("|a| - b|c|"), "abs(a) - b*abs(c)");
+    assert_eq!(printed("|x|(1 + |y|)"), "abs(x)*(1 + abs(y))");
+    assert_eq!(printed("f(|x|, |y|)"), "f(abs(x), abs(y))");
+    assert_eq!(printed("(|x|)"), "abs(x)");
+    // A bar inside parentheses does not close one opened outside them.
+    assert!(parse_expr_with_calls("|x (y|)").is_err());
+    assert!(call_err("|x").contains("'|' at 0"));
+    assert!(parse_expr_with_calls("x|").is_err());
+    // Ambiguous: |a|*b*|c| or |a*|b|*c|; the position of the closing bar.
+    let e = call_err("|a|b|c|");
+    assert!(e.contains("'|' at 2") && e.contains("ambiguous"), "{e}");
+    assert!(call_err("|a||b|").contains("ambiguous"));
+    assert!(!call_err("|a|b|c|").contains('\n'));
+}
+
+#[test]
+fn factorial_is_postfix() {
+    let mut v = Vars::new();
+    assert_eq!(poly("5!", &mut v), P::from_i64(120));
+    assert_eq!(poly("0!", &mut v), P::one());
+    assert_eq!(poly("3!^2", &mut v), P::from_i64(36));
+    assert_eq!(poly("-3!", &mut v), P::from_i64(-6));
+    assert_eq!(poly("(2+1)! x", &mut v), poly("6x", &mut v));
+    assert_eq!(poly("10!/(3!*7!)", &mut v), P::from_i64(120));
+    assert_eq!(poly("(3!)!", &mut v), P::from_i64(720));
+    assert_eq!(
+        printed("n!/(k!(n - k)!)"),
+        "factorial(n)/(factorial(k)*factorial(n - k))"
+    );
+    assert_eq!(printed("|n|!"), "factorial(abs(n))");
+    assert!(err("3!!").contains("double factorial"));
+    assert!(err("2^3!").contains("exponent"));
+    assert!(err("(-1)!").contains("negative"));
+    // A symbolic argument is not a polynomial: refused, naming factorial.
+    let e = err("n!/(n-1)!");
+    assert!(e.contains("factorial"), "{e}");
+}

@@ -266,12 +266,12 @@ proptest! {
 
 // ------------------------------------------------------------------------ parser and printer
 
-/// A random expression tree over x, y, z, w (divisions only by non-zero numbers).
+/// A random expression tree over x, y, z, w (divisions only by non-zero numbers), with calls
+/// of `sum`, `diff` and `integrate`.
 fn arb_expr() -> impl Strategy<Value = Expr> {
     let leaf = prop_oneof![
         (0i64..20, 1i64..4).prop_map(|(n, d)| Expr::new(ExprKind::Number(q(n, d)))),
-        prop::sample::select(vec!["x", "y", "z", "w"])
-            .prop_map(|v| Expr::new(ExprKind::Var(v.to_string()))),
+        arb_var().prop_map(var),
     ];
     leaf.prop_recursive(4, 24, 4, |inner| {
         prop_oneof![
@@ -301,8 +301,54 @@ fn arb_expr() -> impl Strategy<Value = Expr> {
                 Box::new(b),
                 Box::new(Expr::new(ExprKind::Number(int(k))))
             ))),
+            // sum(k, a, b, E k^j) with a symbolic or a constant upper bound.
+            (inner.clone(), 0i64..3, 0i64..2, arb_bound()).prop_map(|(e, j, a, b)| call(
+                "sum",
+                vec![var("k"), Expr::number(int(a)), b, times_power(e, "k", j)]
+            )),
+            (inner.clone(), arb_var()).prop_map(|(e, t)| call("diff", vec![e, var(t)])),
+            // integrate(E t^j, t, 0, b)
+            (inner.clone(), 0i64..3, arb_bound()).prop_map(|(e, j, b)| call(
+                "integrate",
+                vec![times_power(e, "t", j), var("t"), Expr::number(int(0)), b]
+            )),
         ]
     })
+}
+
+fn arb_var() -> impl Strategy<Value = &'static str> {
+    prop::sample::select(vec!["x", "y", "z", "w"])
+}
+
+/// A bound of a sum or an integral: a variable, a variable plus one, or a small integer.
+fn arb_bound() -> impl Strategy<Value = Expr> {
+    prop_oneof![
+        arb_var().prop_map(var),
+        arb_var().prop_map(|v| parse_expr(&format!("{v} + 1")).unwrap()),
+        (0i64..4).prop_map(|n| Expr::number(int(n))),
+    ]
+}
+
+fn var(name: &str) -> Expr {
+    Expr::new(ExprKind::Var(name.to_string()))
+}
+
+fn call(name: &str, args: Vec<Expr>) -> Expr {
+    Expr::new(ExprKind::Call(name.to_string(), args))
+}
+
+/// `e * v^j`: the bound variable `v` occurs in the body.
+fn times_power(e: Expr, v: &str, j: i64) -> Expr {
+    Expr::new(ExprKind::Product(vec![
+        (MulOp::Times, e),
+        (
+            MulOp::Times,
+            Expr::new(ExprKind::Pow(
+                Box::new(var(v)),
+                Box::new(Expr::number(int(j))),
+            )),
+        ),
+    ]))
 }
 
 proptest! {
