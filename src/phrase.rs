@@ -257,9 +257,15 @@ impl<'a> Phrasing<'a> {
     /// constants the statement has; empty for neither.
     fn suffix(&self) -> String {
         let mut text = String::new();
-        if !self.roots.is_empty() {
-            let c: Vec<&str> = self
-                .roots
+        // `abs(E)` is a root the user did not write as one: it is defined everywhere.
+        let abs = format!("{}(", exactcheck_exact::expr::ABS);
+        let written: Vec<&(String, String, bool)> = self
+            .roots
+            .iter()
+            .filter(|(name, _, _)| !name.starts_with(&abs))
+            .collect();
+        if !written.is_empty() {
+            let c: Vec<&str> = written
                 .iter()
                 .filter(|(_, _, everywhere)| !everywhere)
                 .map(|(_, c, _)| c.as_str())
@@ -530,6 +536,9 @@ impl<'a> Phrasing<'a> {
             }
         };
         text += &self.suffix();
+        if r.no_point_found && self.verdict(r) == Verdict::Proved {
+            text += " (no point satisfying the hypotheses was found: the claim may be vacuous)";
+        }
         let fails = self.verdict(r) == Verdict::Fails;
         match &r.correction {
             None => {}
@@ -632,11 +641,48 @@ impl<'a> Phrasing<'a> {
             EngineError::Decide(_, DecideError::EmptyDomain(v)) => {
                 format!("the domain of {} is empty", self.name(*v))
             }
+            EngineError::Decide(_, DecideError::Vacuous(v)) => self.vacuous(*v),
             EngineError::Decide(_, DecideError::DuplicateDomain(v)) => {
                 format!("{} has two domains", self.name(*v))
             }
             EngineError::Decide(_, e) => e.to_string(),
         }
+    }
+
+    /// Why no value of `v` is left ([`DecideError::Vacuous`]), in the user's words: the
+    /// hypotheses that name `v` and the conditions of the square roots that do.
+    fn vacuous(&self, v: Var) -> String {
+        let name = self.name(v);
+        let names_it = |text: &str| {
+            text.split(|c: char| !(c.is_alphanumeric() || c == '_'))
+                .any(|w| w == name)
+        };
+        let given: Vec<&str> = self
+            .domain_texts
+            .iter()
+            .map(|(_, t)| t)
+            .chain(&self.relations)
+            .chain(self.nonzero_texts.iter().map(|(_, t)| t))
+            .map(String::as_str)
+            .filter(|t| names_it(t))
+            .collect();
+        let roots: Vec<&str> = self
+            .roots
+            .iter()
+            .filter(|(_, c, everywhere)| !everywhere && names_it(c))
+            .map(|(_, c, _)| c.as_str())
+            .collect();
+        let hypotheses = if given.is_empty() {
+            String::new()
+        } else {
+            format!(" {}", given.join(", "))
+        };
+        let defined = if roots.is_empty() {
+            " where the sides are defined".to_string()
+        } else {
+            format!(" where the square roots are defined ({})", roots.join(", "))
+        };
+        format!("no {name} satisfies{hypotheses}{defined}: the claim is vacuous")
     }
 
     /// The report as `prove --json` prints it: verdict, method, evidence and the number of
