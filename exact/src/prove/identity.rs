@@ -407,7 +407,10 @@ pub fn decide_identity<C: PointField>(
         used,
         expanded_terms: expanded,
     });
+    // Relations alone are read over the complex numbers: the warning needs a real condition.
+    let real_conditions = !conditions.is_empty() || dom.iter().any(|d| *d != VarDomain::all());
     let no_point_found = matches!(verdict, IdentityVerdict::Proved { .. })
+        && real_conditions
         && found == Points::Unknown
         && !witness(&rels, &conditions, &dom);
     Ok(IdentityReport {

@@ -13,7 +13,9 @@
 //!   domain's ends are isolated, and every root and one rational point between consecutive
 //!   roots is tested (the signs of the polynomials are constant between roots; at an
 //!   irrational root they are decided by [`sign_at_real_root`]). When no candidate satisfies
-//!   them, no `x` does, and so no point satisfies all the conditions.
+//!   them, no `x` does, and so no point satisfies all the conditions. Relations that have no
+//!   real value of `x` by themselves are not counted as empty: they are read over the complex
+//!   numbers, as their consistency is (`s^2 = -1` for the imaginary unit).
 //! * **A point.** When every condition is in one variable and each variable has a value, the
 //!   set is not empty; otherwise nothing is claimed here ([`Points::Unknown`]) and the
 //!   counter-example search may still find a point ([`super::witness`]).
@@ -125,6 +127,9 @@ pub fn points<C: PointField>(
             continue;
         }
         match one_variable(x, &own, d) {
+            // Relations without a real point in `x`, alone, are read over the complex numbers
+            // (`s^2 = -1` for the imaginary unit), as the consistency of relations is.
+            Some(false) if complex_only(x, &own) => found = false,
             Some(false) => return Points::Empty(x),
             Some(true) => found &= own.iter().all(|c| c.exact),
             None => found = false,
@@ -141,6 +146,17 @@ pub fn points<C: PointField>(
     } else {
         Points::Unknown
     }
+}
+
+/// Whether the relations among `conds` (the conditions `= 0`) have no real value of `x` on
+/// the whole line.
+fn complex_only<C: PointField>(x: Var, conds: &[&Condition<C>]) -> bool {
+    let relations: Vec<&Condition<C>> = conds
+        .iter()
+        .copied()
+        .filter(|c| c.kind == Kind::Zero)
+        .collect();
+    !relations.is_empty() && one_variable(x, &relations, &VarDomain::all()) == Some(false)
 }
 
 /// The polynomial with rational coefficients, when it has them.
@@ -340,6 +356,9 @@ mod tests {
         assert_eq!(free(bound(None, Some((0, true))), &[]), Points::Found);
         assert_eq!(free(bound(Some((2, true)), None), &[]), Points::Empty(0));
         assert_eq!(free(VarDomain::all(), &["x^2 - 2"]), Points::Empty(0));
+        // A relation without a real point is read over the complex numbers.
+        let unit = decide(&["s^2 + 1"], &[], &[bound(Some((0, true)), None)], &["s"]);
+        assert_eq!(unit, Points::Unknown);
     }
 
     #[test]
@@ -359,9 +378,14 @@ mod tests {
             ),
             Points::Unknown
         );
-        // x^2 = -1 alone has no real point, whatever y does.
+        // x^2 = 2 has no point above 2, whatever y does.
         assert_eq!(
-            decide(&["x^2 + 1", "x*y - 1"], &[], &[all.clone(), all], &names),
+            decide(
+                &["x^2 - 2", "x*y - 1"],
+                &[],
+                &[bound(Some((2, true)), None), all],
+                &names
+            ),
             Points::Empty(0)
         );
     }
