@@ -19,6 +19,7 @@
 //! The formatter lives in the application, not in `exactcheck-exact`: every caller is here, and
 //! its JSON is the application's.
 
+mod errors;
 pub mod random;
 
 pub use random::{phrase_random, RandomOptions, RandomPhrased};
@@ -28,9 +29,8 @@ use exactcheck_exact::expr::{constant_base, describe_point, lindemann_weierstras
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
     factored, real_zero_free, where_clause, AlgebraicConstants, ConstantPoint, ConstantValue,
-    CoordinateOutcome, CorrectionVerdict, DecideError, EngineError, FractionIdentity,
-    IdentityReport, IdentitySpec, IdentityVerdict, PointField, RadicalPoint, SquareRoot, Statement,
-    UsedHypothesis,
+    CoordinateOutcome, CorrectionVerdict, FractionIdentity, IdentityReport, IdentitySpec,
+    IdentityVerdict, PointField, RadicalPoint, SquareRoot, Statement, UsedHypothesis,
 };
 use serde_json::{json, Value};
 use std::fmt::{self, Display};
@@ -257,9 +257,15 @@ impl<'a> Phrasing<'a> {
     /// constants the statement has; empty for neither.
     fn suffix(&self) -> String {
         let mut text = String::new();
-        if !self.roots.is_empty() {
-            let c: Vec<&str> = self
-                .roots
+        // `abs(E)` is a root the user did not write as one: it is defined everywhere.
+        let abs = format!("{}(", exactcheck_exact::expr::ABS);
+        let written: Vec<&(String, String, bool)> = self
+            .roots
+            .iter()
+            .filter(|(name, _, _)| !name.starts_with(&abs))
+            .collect();
+        if !written.is_empty() {
+            let c: Vec<&str> = written
                 .iter()
                 .filter(|(_, _, everywhere)| !everywhere)
                 .map(|(_, c, _)| c.as_str())
@@ -530,6 +536,9 @@ impl<'a> Phrasing<'a> {
             }
         };
         text += &self.suffix();
+        if r.no_point_found && self.verdict(r) == Verdict::Proved {
+            text += " (no point satisfying the hypotheses was found: the claim may be vacuous)";
+        }
         let fails = self.verdict(r) == Verdict::Fails;
         match &r.correction {
             None => {}
@@ -611,31 +620,6 @@ impl<'a> Phrasing<'a> {
             format!("LHS - RHS{CLEARED} reduces{modulo} to {nf}")
         } else {
             format!("LHS - RHS reduces{modulo} to {nf}, so LHS = RHS + ({nf})")
-        }
-    }
-
-    /// The message of an engine error (without the front end's prefix naming the input).
-    pub fn error(&self, e: &EngineError) -> String {
-        match e {
-            EngineError::Size(_, e) => e.to_string(),
-            EngineError::Decide(_, DecideError::Inconsistent) => {
-                let all = self.all_relations();
-                let which = if all.is_empty() {
-                    String::new()
-                } else {
-                    format!(" {}", all.join(", "))
-                };
-                format!(
-                    "the relations{which} are inconsistent (their Groebner basis contains a non-zero constant): no point satisfies them, so nothing can be proved from them"
-                )
-            }
-            EngineError::Decide(_, DecideError::EmptyDomain(v)) => {
-                format!("the domain of {} is empty", self.name(*v))
-            }
-            EngineError::Decide(_, DecideError::DuplicateDomain(v)) => {
-                format!("{} has two domains", self.name(*v))
-            }
-            EngineError::Decide(_, e) => e.to_string(),
         }
     }
 

@@ -22,6 +22,7 @@ mod prove_sqrt;
 mod prove_symbolic_sums;
 mod prove_trig;
 mod prove_typeset;
+mod prove_vacuous;
 mod prove_witness_cells;
 mod real_roots;
 mod robust_field;

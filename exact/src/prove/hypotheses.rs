@@ -208,7 +208,7 @@ fn nowhere_zero<C: PointField>(d: &Poly<C>, basis: &[Poly<C>]) -> bool {
 }
 
 /// `(D, N)` when `r = D y^2 - N` with `D` and `N` free of `y`.
-fn root_parts<C: PointField>(r: &Poly<C>, y: Var) -> Option<(Poly<C>, Poly<C>)> {
+pub(super) fn root_parts<C: PointField>(r: &Poly<C>, y: Var) -> Option<(Poly<C>, Poly<C>)> {
     if r.degree_in(y) != 2 {
         return None;
     }

@@ -13,8 +13,9 @@
 //! decides the claim, else the first undecided one, else it is proved.
 
 use super::{
-    counter_example, decide_fraction, decide_in, decide_where, DecideError, Decision,
-    FractionIdentity, Hypothesis, PointField, RadicalPoint, VarDomain,
+    consistent_basis, counter_example, decide_fraction, decide_in, decide_where, domain_table,
+    points, unit_circle_pairs, witness, DecideError, Decision, FractionIdentity, Hypothesis,
+    PointField, Points, RadicalPoint, VarDomain,
 };
 use crate::poly::{Poly, SizeError, Var, Vars};
 use crate::ratfun::RatFun;
@@ -161,6 +162,10 @@ pub struct IdentityReport<C: PointField> {
     pub has_relations: bool,
     /// The corrected form's verdict, when the spec has one.
     pub correction: Option<CorrectionVerdict<C>>,
+    /// For a proof under conditions (domains, relations, hypotheses, square roots): `true`
+    /// when no real point satisfying them all was found and their emptiness was not decided
+    /// either, so the claim may be vacuous. `false` otherwise.
+    pub no_point_found: bool,
 }
 
 impl<C: PointField> IdentityReport<C> {
@@ -304,6 +309,15 @@ pub fn decide_identity<C: PointField>(
     statement.extend(&rels);
     statement.extend(&conditions);
     statement.extend(&spec.context);
+    // Conditions without a common real point are refused before anything is decided on them
+    // (after the errors of the domains and the relations, which come first).
+    let vacuous = |e: DecideError| EngineError::Decide(Part::Coordinate(0), e);
+    let dom = domain_table(&spec.domains, nvars).map_err(vacuous)?;
+    let found = points(&rels, &conditions, &dom);
+    if let Points::Empty(v) = found {
+        consistent_basis(&rels, &unit_circle_pairs(&rels).1).map_err(vacuous)?;
+        return Err(vacuous(DecideError::Vacuous(v)));
+    }
     let mut expanded = 0;
     let mut used = Vec::new();
     let mut verdict = None;
@@ -389,11 +403,19 @@ pub fn decide_identity<C: PointField>(
             Some(found)
         }
     };
+    let verdict = verdict.or(undecided).unwrap_or(IdentityVerdict::Proved {
+        used,
+        expanded_terms: expanded,
+    });
+    // Relations alone are read over the complex numbers: the warning needs a real condition.
+    let real_conditions = !conditions.is_empty() || dom.iter().any(|d| *d != VarDomain::all());
+    let no_point_found = matches!(verdict, IdentityVerdict::Proved { .. })
+        && real_conditions
+        && found == Points::Unknown
+        && !witness(&rels, &conditions, &dom);
     Ok(IdentityReport {
-        verdict: verdict.or(undecided).unwrap_or(IdentityVerdict::Proved {
-            used,
-            expanded_terms: expanded,
-        }),
+        verdict,
+        no_point_found,
         outcomes,
         cleared: prepared.iter().map(|p| p.fraction.is_some()).collect(),
         residual_terms: prepared.iter().map(|p| p.residual.len()).collect(),

@@ -18,7 +18,10 @@
 //! Inconsistent relations (the reduced Gröbner basis contains a non-zero constant, i.e. the
 //! relations have no common complex point, e.g. `1 = 2` or `x = 1, x = 2`) and malformed domains
 //! (empty, a variable out of range or given twice) are a [`DecideError`]: anything would follow
-//! from them, so nothing is decided.
+//! from them, so nothing is decided. So are conditions without a common real point
+//! ([`DecideError::Vacuous`]: `sqrt(x)` for `x < 0`), which [`identity::decide_identity`]
+//! decides for the conditions in one variable (module `vacuous`); when it cannot, and no point
+//! satisfying them is found either, a proof says so ([`IdentityReport::no_point_found`]).
 //!
 //! # The counter-example search
 //! First come [`SMALL_ATTEMPTS`] points of small height, so that the counter-example reported is
@@ -75,6 +78,7 @@ pub mod identity;
 pub mod random;
 mod roots;
 mod sum_ranges;
+mod vacuous;
 
 pub use constants::{AlgebraicConstants, ConstantPoint, ConstantValue, CONSTANT_ATTEMPTS};
 pub use domain::VarDomain;
@@ -89,6 +93,7 @@ pub use identity::{
 };
 pub use roots::{square_roots, SquareRoot};
 pub use sum_ranges::SumRanges;
+pub use vacuous::{points, Points};
 
 pub use random::{
     random_identity_test, size_bound, RandomDecision, RandomReport, Seed, SizeBound,
@@ -221,6 +226,10 @@ pub enum DecideError {
     DuplicateDomain(Var),
     /// A domain for a variable index outside `0..nvars`.
     UnknownVariable(Var),
+    /// The conditions leave no real point: no value of the variable satisfies the domains,
+    /// the relations, the non-zero hypotheses and the sign conditions of the square roots that
+    /// are in it alone (module `vacuous`), so a proof would say nothing.
+    Vacuous(Var),
     /// The Gröbner basis of the relations, or the reduction, exceeded a named limit.
     Limit(exactcheck_core::limits::LimitError),
 }
@@ -244,6 +253,10 @@ impl fmt::Display for DecideError {
             DecideError::UnknownVariable(v) => {
                 write!(f, "a domain names variable #{v}, which is not in use")
             }
+            DecideError::Vacuous(v) => write!(
+                f,
+                "no value of variable #{v} satisfies the domains, the relations, the hypotheses and the conditions under which the square roots and the fractions are defined: the claim is vacuous"
+            ),
             DecideError::Limit(e) => write!(f, "{e}"),
         }
     }
@@ -351,33 +364,9 @@ pub fn decide_where<C: PointField>(
     domains: &[(Var, VarDomain)],
     nvars: usize,
 ) -> Result<Decision<C>, DecideError> {
-    let mut dom = vec![VarDomain::all(); nvars];
-    let mut seen = vec![false; nvars];
-    for (v, d) in domains {
-        let i = *v as usize;
-        if i >= nvars {
-            return Err(DecideError::UnknownVariable(*v));
-        }
-        if seen[i] {
-            return Err(DecideError::DuplicateDomain(*v));
-        }
-        if d.is_empty() {
-            return Err(DecideError::EmptyDomain(*v));
-        }
-        seen[i] = true;
-        dom[i] = d.clone();
-    }
+    let dom = domain_table(domains, nvars)?;
     let (pairs, others) = unit_circle_pairs(relations);
-    // Distinct unit circles alone always have common points; anything else is checked.
-    let basis = if others.is_empty() {
-        Vec::new()
-    } else {
-        let basis = groebner(relations)?;
-        if basis.iter().any(|b| b.is_constant() && !b.is_zero()) {
-            return Err(DecideError::Inconsistent);
-        }
-        basis
-    };
+    let basis = consistent_basis(relations, &others)?;
     let expanded_terms = residual.len();
     if residual.is_zero() {
         return Ok(Decision::Proved {
@@ -431,6 +420,74 @@ pub fn decide_where<C: PointField>(
             normal_form: nf,
         },
     })
+}
+
+/// The domain of every variable `0..nvars` (the whole line where `domains` gives none).
+///
+/// # Errors
+/// [`DecideError`] for a domain of a variable outside `0..nvars`, two domains for one
+/// variable, an empty domain.
+pub(crate) fn domain_table(
+    domains: &[(Var, VarDomain)],
+    nvars: usize,
+) -> Result<Vec<VarDomain>, DecideError> {
+    let mut dom = vec![VarDomain::all(); nvars];
+    let mut seen = vec![false; nvars];
+    for (v, d) in domains {
+        let i = *v as usize;
+        if i >= nvars {
+            return Err(DecideError::UnknownVariable(*v));
+        }
+        if seen[i] {
+            return Err(DecideError::DuplicateDomain(*v));
+        }
+        if d.is_empty() {
+            return Err(DecideError::EmptyDomain(*v));
+        }
+        seen[i] = true;
+        dom[i] = d.clone();
+    }
+    Ok(dom)
+}
+
+/// The Gröbner basis of `relations` (empty when `others`, the relations besides the unit
+/// circles, is: distinct unit circles alone always have common points).
+///
+/// # Errors
+/// [`DecideError::Inconsistent`] when the basis holds a non-zero constant, a limit.
+pub(crate) fn consistent_basis<C: PointField>(
+    relations: &[Poly<C>],
+    others: &[Poly<C>],
+) -> Result<Vec<Poly<C>>, DecideError> {
+    if others.is_empty() {
+        return Ok(Vec::new());
+    }
+    let basis = groebner(relations)?;
+    if basis.iter().any(|b| b.is_constant() && !b.is_zero()) {
+        return Err(DecideError::Inconsistent);
+    }
+    Ok(basis)
+}
+
+/// Whether the counter-example search finds a real point where the `relations` hold, the
+/// `nonzero` polynomials do not vanish and every variable lies in `dom`: the search for a
+/// counter-example to `1 = 0`, whose residual is non-zero everywhere.
+pub(crate) fn witness<C: PointField>(
+    relations: &[Poly<C>],
+    nonzero: &[Poly<C>],
+    dom: &[VarDomain],
+) -> bool {
+    let (pairs, others) = unit_circle_pairs(relations);
+    search(
+        &Poly::one(),
+        relations,
+        nonzero,
+        &pairs,
+        &others,
+        dom,
+        dom.len(),
+    )
+    .is_ok()
 }
 
 /// A point: a value for every variable (by index).

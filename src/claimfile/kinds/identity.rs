@@ -251,7 +251,23 @@ fn identity<C: PointField + Display>(
         constants: k,
         ..Phrasing::new(&spec.vars)
     };
-    let report = decide_identity(&spec).map_err(|e| {
+    let report = match decide_identity(&spec) {
+        // Conditions without a common real point: nothing is proved, and the claim says why.
+        Err(e @ EngineError::Decide(_, DecideError::Vacuous(_))) => {
+            return Ok(Decision {
+                outcome: Outcome {
+                    verdict: Verdict::Undecided,
+                    method: phrasing.method::<C>(),
+                    evidence: phrasing.error(&e),
+                    erratum: None,
+                },
+                problem: None,
+                report: Default::default(),
+            })
+        }
+        other => other,
+    };
+    let report = report.map_err(|e| {
         let key = match &e {
             EngineError::Size(Part::Relation(_), _) | EngineError::Decide(..) => "where",
             EngineError::Size(..) => "lhs",

@@ -31,8 +31,8 @@ use exactcheck_exact::expr::{
 use exactcheck_exact::poly::{Poly, Var, Vars};
 use exactcheck_exact::prove::{
     decide_identity, random_identity_test, square_roots, unit_circle_pairs, CorrectionVerdict,
-    EngineError, FractionIdentity, IdentitySpec, IdentityVerdict, Part, PointField, RandomDecision,
-    Seed, SquareRoot, Statement, VarDomain, MAX_RANDOM_TRIALS,
+    DecideError, EngineError, FractionIdentity, IdentitySpec, IdentityVerdict, Part, PointField,
+    RandomDecision, Seed, SquareRoot, Statement, VarDomain, MAX_RANDOM_TRIALS,
 };
 use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::real_constant::RealConstant;
