@@ -17,6 +17,7 @@ mod prove_latex;
 mod prove_library;
 mod prove_random;
 mod prove_rational_roots;
+mod prove_signs;
 mod prove_sqrt;
 mod prove_symbolic_sums;
 mod prove_trig;
