@@ -215,6 +215,19 @@ impl<'a> Phrasing<'a> {
                     .find(|(k, _)| *k == name)
                     .map_or_else(|| format!("{name} >= 0"), |(_, t)| t.clone())
             }
+            UsedHypothesis::Sign(f) => {
+                let on: Vec<String> = f
+                    .vars
+                    .iter()
+                    .map(|&v| self.used_text(&UsedHypothesis::<C>::Domain(v)))
+                    .collect();
+                let on = if on.is_empty() {
+                    String::new()
+                } else {
+                    format!(" on {}", on.join(", "))
+                };
+                format!("{} {}{on}", f.poly.display(self.vars), f.sign.relation())
+            }
         }
     }
 

@@ -18,6 +18,7 @@ mod prove_latex_matrices;
 mod prove_library;
 mod prove_random;
 mod prove_rational_roots;
+mod prove_signs;
 mod prove_sqrt;
 mod prove_symbolic_sums;
 mod prove_trig;

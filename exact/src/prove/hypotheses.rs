@@ -18,12 +18,16 @@
 //!   so `B = 0` forces `A = 0`, else `y = |A / B| = -A / B`; and the residual, `(A + B y) /
 //!   D^h`, vanishes too. The sign of `-A B` is shown by a sufficient test: shifted so every
 //!   bounded variable is non-negative (`v = lo + u` or `v = hi - u`), every coefficient is
-//!   non-negative and every unbounded variable has even exponents.
+//!   non-negative and every unbounded variable has even exponents; else by the sign decision
+//!   of the `signs` module (a factor in one variable by its real roots against its interval, a
+//!   product by the signs of its factors), which also shows a denominator `D` of a strict sign
+//!   on the domains nowhere zero. The sign facts it used are reported with the hypotheses.
 //!
 //! When the identity holds under all the hypotheses, a smaller set that still proves it is found
 //! greedily (drop one hypothesis, decide again, keep it dropped if the proof survives), with at
 //! most [`MAX_HYPOTHESIS_DROPS`] extra decisions; the set reported is the one the proof used.
 
+use super::signs::{self, SignFact, SignOn};
 use super::{PointField, VarDomain};
 use crate::poly::{groebner, Poly, Var};
 use crate::{Radical, Rational};
@@ -43,9 +47,10 @@ pub enum Hypothesis {
 }
 
 /// The outcome of [`prove_under_hypotheses`].
-pub(super) enum Outcome {
-    /// The identity holds where the hypotheses do; the hypotheses the proof used.
-    Proved(Vec<Hypothesis>),
+pub(super) enum Outcome<C: Ring> {
+    /// The identity holds where the hypotheses do; the hypotheses and the sign facts the proof
+    /// used.
+    Proved(Vec<Hypothesis>, Vec<SignFact<C>>),
     /// Not shown; what was tried (empty when there is no hypothesis to use).
     NotProved(String),
 }
@@ -74,7 +79,7 @@ pub(super) fn prove_under_hypotheses<C: PointField>(
     relations: &[Poly<C>],
     nonzero: &[Poly<C>],
     dom: &[VarDomain],
-) -> Outcome {
+) -> Outcome<C> {
     let problem = Problem {
         residual,
         relations,
@@ -94,19 +99,20 @@ pub(super) fn prove_under_hypotheses<C: PointField>(
         return Outcome::NotProved(String::new());
     }
     let tried = "; the hypotheses (each non-zero one by a Rabinowitsch variable, the signs of the domains and of the square roots) were used too";
-    match problem.attempt(&all) {
-        Ok(true) => {}
-        Ok(false) => return Outcome::NotProved(format!("{tried}, without a proof")),
+    let mut facts = match problem.attempt(&all) {
+        Ok(Some(facts)) => facts,
+        Ok(None) => return Outcome::NotProved(format!("{tried}, without a proof")),
         Err(e) => return Outcome::NotProved(format!("{tried}: {e}")),
-    }
+    };
     let mut used = all.clone();
     for h in all.iter().take(MAX_HYPOTHESIS_DROPS) {
         let without: Vec<Hypothesis> = used.iter().copied().filter(|u| u != h).collect();
-        if problem.attempt(&without) == Ok(true) {
+        if let Ok(Some(f)) = problem.attempt(&without) {
             used = without;
+            facts = f;
         }
     }
-    Outcome::Proved(used)
+    Outcome::Proved(used, facts)
 }
 
 impl<C: PointField> Problem<'_, C> {
@@ -135,8 +141,12 @@ impl<C: PointField> Problem<'_, C> {
         }
     }
 
-    /// Whether the residual is shown zero under the hypotheses `set`.
-    fn attempt(&self, set: &[Hypothesis]) -> Result<bool, exactcheck_core::limits::LimitError> {
+    /// Whether the residual is shown zero under the hypotheses `set`: the sign facts the proof
+    /// used when it is.
+    fn attempt(
+        &self,
+        set: &[Hypothesis],
+    ) -> Result<Option<Vec<SignFact<C>>>, exactcheck_core::limits::LimitError> {
         let nvars = self.dom.len();
         let mut gens = self.relations.to_vec();
         let mut z = nvars as Var;
@@ -153,7 +163,7 @@ impl<C: PointField> Problem<'_, C> {
         };
         // The hypotheses contradict the relations: nothing is claimed from that.
         if basis.iter().any(|b| b.is_constant() && !b.is_zero()) {
-            return Ok(false);
+            return Ok(None);
         }
         let mut signs = vec![VarDomain::all(); nvars];
         for &h in set {
@@ -161,6 +171,7 @@ impl<C: PointField> Problem<'_, C> {
                 signs[v as usize] = self.dom[v as usize].clone();
             }
         }
+        let mut facts = Vec::new();
         let roots: Vec<Root<C>> = (0..nvars)
             .filter(|&y| {
                 signs[y]
@@ -168,14 +179,21 @@ impl<C: PointField> Problem<'_, C> {
                     .as_ref()
                     .is_some_and(|(lo, _)| lo.signum() != exactcheck_core::Sign::Negative)
             })
-            .filter_map(|y| self.root(y as Var, &basis))
+            .filter_map(|y| self.root(y as Var, &basis, &signs, &mut facts))
             .collect();
-        Ok(branch_zero(self.residual, &roots, &basis, &signs, &mut 0))
+        Ok(branch_zero(self.residual, &roots, &basis, &signs, &mut 0, &mut facts).then_some(facts))
     }
 
     /// `y` as a root: a relation `D y^2 - N` with `D` and `N` free of `y` and `D` without a
-    /// zero on the variety of `basis` (module documentation).
-    fn root(&self, y: Var, basis: &[Poly<C>]) -> Option<Root<C>> {
+    /// zero on the variety of `basis` (module documentation) or of a strict sign on `signs`
+    /// ([`signs::sign_on`]; its sign facts are added to `facts`).
+    fn root(
+        &self,
+        y: Var,
+        basis: &[Poly<C>],
+        signs: &[VarDomain],
+        facts: &mut Vec<SignFact<C>>,
+    ) -> Option<Root<C>> {
         self.relations.iter().find_map(|r| {
             let (d, n) = root_parts(r, y)?;
             if let Some(a) = d.constant_value() {
@@ -186,7 +204,15 @@ impl<C: PointField> Problem<'_, C> {
                     denominator: Poly::one(),
                 });
             }
-            nowhere_zero(&d, basis).then_some(Root {
+            let zero_free = nowhere_zero(&d, basis) || {
+                let mut found = Vec::new();
+                let strict = signs::sign_on(&d, signs, &mut found).is_some_and(SignOn::strict);
+                if strict {
+                    add_facts(facts, found);
+                }
+                strict
+            };
+            zero_free.then_some(Root {
                 var: y,
                 square: n,
                 denominator: d,
@@ -240,13 +266,15 @@ pub(super) fn square_of<C: PointField>(relations: &[Poly<C>], y: Var) -> Option<
 const MAX_BRANCH_STEPS: usize = 64;
 
 /// Whether `p` vanishes at every point of the variety of `basis` inside `signs`, by reduction
-/// and, for the roots, the sign argument of the module documentation.
+/// and, for the roots, the sign argument of the module documentation; the sign facts used are
+/// added to `facts`.
 fn branch_zero<C: PointField>(
     p: &Poly<C>,
     roots: &[Root<C>],
     basis: &[Poly<C>],
     signs: &[VarDomain],
     steps: &mut usize,
+    facts: &mut Vec<SignFact<C>>,
 ) -> bool {
     let p = if basis.is_empty() {
         p.clone()
@@ -279,7 +307,7 @@ fn branch_zero<C: PointField>(
         return false;
     };
     if b.is_zero() {
-        return branch_zero(&a, &rest, basis, signs, steps);
+        return branch_zero(&a, &rest, basis, signs, steps, facts);
     }
     let Some(n) = (|| {
         let a2 = a.try_mul(&a).ok()?.try_mul(&root.denominator).ok()?;
@@ -288,15 +316,15 @@ fn branch_zero<C: PointField>(
     })() else {
         return false;
     };
-    if !branch_zero(&n, &rest, basis, signs, steps) {
+    if !branch_zero(&n, &rest, basis, signs, steps, facts) {
         return false;
     }
     let Ok(ab) = a.try_mul(&b) else {
         return false;
     };
     let minus_ab = ab.neg_ref();
-    non_negative(&minus_ab, signs)
-        || (!basis.is_empty() && non_negative(&minus_ab.reduce(basis), signs))
+    non_negative_with(&minus_ab, signs, facts)
+        || (!basis.is_empty() && non_negative_with(&minus_ab.reduce(basis), signs, facts))
 }
 
 /// A term: its exponents and its coefficient.
@@ -343,78 +371,37 @@ pub(super) fn split<C: PointField>(
     Some((a, b))
 }
 
-/// The sufficient test of the module documentation for `p >= 0` on `signs`, and for a
-/// polynomial in one variable with rational coefficients the exact one
-/// ([`univariate_non_negative`]).
+/// The sufficient test of the module documentation for `p >= 0` on `signs`, else the sign
+/// decision of [`signs::sign_on`] (exact for a polynomial in one variable with rational
+/// coefficients; a product of factors of known signs).
 pub(super) fn non_negative<C: PointField>(p: &Poly<C>, signs: &[VarDomain]) -> bool {
-    if p.is_zero() {
-        return true;
-    }
-    if shifted_coefficients_non_negative(p, signs) {
-        return true;
-    }
-    univariate_non_negative(p, signs)
+    non_negative_with(p, signs, &mut Vec::new())
 }
 
-/// Whether `p`, a polynomial in one variable `v` with rational coefficients, is `>= 0` on the
-/// domain of `v` (the whole line without one): exactly when no gap of its sign chart (the open
-/// intervals between consecutive real roots, where the sign is constant) on which `p` is
-/// negative meets the domain. The roots are isolated exactly and compared with the domain's
-/// rational ends exactly, so `t (1 - t) >= 0` on `0 <= t <= 1` and `1 - t^4 >= 0` on
-/// `-1 <= t <= 1` are shown, which the coefficient test cannot. `false` for anything else (not
-/// shown, not disproved).
-fn univariate_non_negative<C: PointField>(p: &Poly<C>, signs: &[VarDomain]) -> bool {
-    use crate::univariate::{compare_with_real_root, UPoly};
-    use exactcheck_core::Sign;
-    use std::cmp::Ordering;
-    let vars = p.variables();
-    let [v] = vars.as_slice() else {
-        return false;
-    };
-    let Some(q) = p
-        .coefficients()
-        .iter()
-        .all(|c| c.to_radical().and_then(|r| r.to_rational()).is_some())
-        .then(|| {
-            p.map_coeffs(|c| {
-                c.to_radical()
-                    .and_then(|r| r.to_rational())
-                    .expect("checked to be rational above")
-            })
-        })
-    else {
-        return false;
-    };
-    let Ok(u) = UPoly::from_poly(&q, *v) else {
-        return false;
-    };
-    let domain = signs.get(*v as usize).cloned().unwrap_or_default();
-    let (lower, upper) = (domain.lower.map(|(a, _)| a), domain.upper.map(|(b, _)| b));
-    let point = matches!((&lower, &upper), (Some(a), Some(b)) if a == b);
-    let chart = u.sign_chart();
-    chart.gaps.iter().enumerate().all(|(i, sign)| {
-        if *sign != Sign::Negative {
-            return true;
+/// [`non_negative`], adding to `facts` the sign facts of the domains it used.
+fn non_negative_with<C: PointField>(
+    p: &Poly<C>,
+    signs: &[VarDomain],
+    facts: &mut Vec<SignFact<C>>,
+) -> bool {
+    if p.is_zero() || shifted_coefficients_non_negative(p, signs) {
+        return true;
+    }
+    let mut found = Vec::new();
+    let shown = signs::sign_on(p, signs, &mut found).is_some_and(SignOn::non_negative);
+    if shown {
+        add_facts(facts, found);
+    }
+    shown
+}
+
+/// `found` added to `facts`, each fact once.
+fn add_facts<C: PointField>(facts: &mut Vec<SignFact<C>>, found: Vec<SignFact<C>>) {
+    for f in found {
+        if !facts.contains(&f) {
+            facts.push(f);
         }
-        // The gap (left, right): below the root `i` and above the root `i - 1`.
-        let left = i.checked_sub(1).map(|k| &chart.roots[k].interval);
-        let right = chart.roots.get(i).map(|r| &r.interval);
-        // x above the gap's left end / below its right end.
-        let above_left = |x: &Rational| {
-            left.is_none_or(|r| compare_with_real_root(&u, r, x) == Ordering::Greater)
-        };
-        let below_right =
-            |x: &Rational| right.is_none_or(|r| compare_with_real_root(&u, r, x) == Ordering::Less);
-        let meets = if point {
-            let a = lower.as_ref().expect("a point domain has a lower end");
-            above_left(a) && below_right(a)
-        } else {
-            // An open gap meets an interval of positive length exactly when it starts below
-            // the interval's upper end and ends above its lower end.
-            upper.as_ref().is_none_or(above_left) && lower.as_ref().is_none_or(below_right)
-        };
-        !meets
-    })
+    }
 }
 
 /// The coefficient test of the module documentation for `p >= 0` on `signs`.
@@ -480,10 +467,11 @@ mod tests {
         };
         // y vanishes with x on the relation: w is no root of x/y there.
         let basis = groebner(std::slice::from_ref(&rel)).unwrap();
-        assert!(problem.root(2, &basis).is_none());
+        let all = vec![VarDomain::all(); 4];
+        assert!(problem.root(2, &basis, &all, &mut Vec::new()).is_none());
         // With y != 0 (the Rabinowitsch relation 1 - z y) it is.
         let with = groebner(&[rel.clone(), p("1 - z*y", &mut vars)]).unwrap();
-        let root = problem.root(2, &with).unwrap();
+        let root = problem.root(2, &with, &all, &mut Vec::new()).unwrap();
         assert_eq!(
             (root.square, root.denominator),
             (p("x", &mut vars), p("y", &mut vars))
@@ -494,12 +482,12 @@ mod tests {
             relations: &rels[..1],
             ..problem
         };
-        assert!(problem.root(2, &[]).is_some());
+        assert!(problem.root(2, &[], &all, &mut Vec::new()).is_some());
         let problem = Problem {
             relations: &rels[1..],
             ..problem
         };
-        let root = problem.root(2, &[]).unwrap();
+        let root = problem.root(2, &[], &all, &mut Vec::new()).unwrap();
         assert_eq!(root.square, p("x/2", &mut vars));
         assert!(root.denominator.is_one());
     }
@@ -517,7 +505,7 @@ mod tests {
         let proved = |residual: &str, vars: &mut Vars, dom: &[VarDomain]| {
             matches!(
                 prove_under_hypotheses(&p(residual, vars), &rels, &[], dom),
-                Outcome::Proved(_)
+                Outcome::Proved(..)
             )
         };
         assert!(proved("w*v - 1", &mut vars, &dom));

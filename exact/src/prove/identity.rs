@@ -77,6 +77,8 @@ pub enum UsedHypothesis<C: exactcheck_core::Ring> {
     NonZero(Poly<C>),
     /// The domain of the variable.
     Domain(Var),
+    /// A sign shown on the domains of its variables (`1 - x > 0` on `-1 < x < 1`).
+    Sign(super::SignFact<C>),
 }
 
 /// The verdict of the engine.
@@ -328,6 +330,7 @@ pub fn decide_identity<C: PointField>(
             Decision::Proved {
                 expanded_terms,
                 hypotheses: indices,
+                signs,
             } => {
                 outcomes.push(CoordinateOutcome::Proved);
                 expanded += expanded_terms;
@@ -342,6 +345,12 @@ pub fn decide_identity<C: PointField>(
                         Hypothesis::NonZero(i) => UsedHypothesis::NonZero(nonzero[i].clone()),
                         Hypothesis::Domain(v) => UsedHypothesis::Domain(v),
                     };
+                    if !used.contains(&u) {
+                        used.push(u);
+                    }
+                }
+                for f in signs {
+                    let u = UsedHypothesis::Sign(f);
                     if !used.contains(&u) {
                         used.push(u);
                     }

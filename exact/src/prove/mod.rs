@@ -77,6 +77,7 @@ mod hypotheses;
 pub mod identity;
 pub mod random;
 mod roots;
+mod signs;
 mod sum_ranges;
 mod vacuous;
 
@@ -92,6 +93,7 @@ pub use identity::{
     IdentitySpec, IdentityVerdict, Part, Statement, UsedHypothesis,
 };
 pub use roots::{square_roots, SquareRoot};
+pub use signs::{SignFact, SignOn};
 pub use sum_ranges::SumRanges;
 pub use vacuous::{points, Points};
 
@@ -193,6 +195,8 @@ pub enum Decision<C: PointField> {
         /// The hypotheses the proof used (empty when the residual is zero modulo the relations
         /// alone); see [`decide_where`].
         hypotheses: Vec<Hypothesis>,
+        /// The signs on the domains the proof used (see [`decide_where`]).
+        signs: Vec<SignFact<C>>,
     },
     /// A counter-example: the point lies in the domains, the relations hold, the residual does
     /// not vanish (all verified exactly).
@@ -372,6 +376,7 @@ pub fn decide_where<C: PointField>(
         return Ok(Decision::Proved {
             expanded_terms: 0,
             hypotheses: Vec::new(),
+            signs: Vec::new(),
         });
     }
     let mut nf = residual.try_reduce_unit_circle(&pairs)?;
@@ -382,13 +387,15 @@ pub fn decide_where<C: PointField>(
         return Ok(Decision::Proved {
             expanded_terms,
             hypotheses: Vec::new(),
+            signs: Vec::new(),
         });
     }
     let tried = match hypotheses::prove_under_hypotheses(residual, relations, nonzero, &dom) {
-        hypotheses::Outcome::Proved(used) => {
+        hypotheses::Outcome::Proved(used, signs) => {
             return Ok(Decision::Proved {
                 expanded_terms,
                 hypotheses: used,
+                signs,
             })
         }
         hypotheses::Outcome::NotProved(tried) => tried,
