@@ -124,7 +124,7 @@ pub fn sign_on<C: PointField>(
     let f = square_free(p)?;
     let mut sign = coefficient_sign(&f.unit)?;
     for &(v, e) in &f.monomial {
-        let s = variable_sign(signs.get(v as usize)?);
+        let s = variable_sign(&domain_of(signs, v));
         sign = sign.mul(if e % 2 == 0 {
             s.map_or(SignOn::NonNegative, |s| s.pow(e))
         } else {
@@ -157,7 +157,7 @@ fn factor_sign<C: PointField>(
     }
     let vars = p.variables();
     let sign = match vars.as_slice() {
-        [v] => univariate_sign(p, *v, signs.get(*v as usize)?),
+        [v] => univariate_sign(p, *v, &domain_of(signs, *v)),
         _ => None,
     }
     .or_else(|| term_sum_sign(p, signs))?;
@@ -193,6 +193,11 @@ fn coefficient_sign<C: PointField>(c: &C) -> Option<SignOn> {
     }
 }
 
+/// The domain of `v` in `signs`, the whole line when `signs` gives none.
+fn domain_of(signs: &[VarDomain], v: Var) -> VarDomain {
+    signs.get(v as usize).cloned().unwrap_or_default()
+}
+
 /// The sign a domain gives its variable, if any: `v > 0` from a lower end above 0 (or a strict
 /// 0), `v >= 0` from a lower end 0, and the same below.
 fn variable_sign(d: &VarDomain) -> Option<SignOn> {
@@ -222,7 +227,7 @@ fn term_sum_sign<C: PointField>(p: &Poly<C>, signs: &[VarDomain]) -> Option<Sign
     for (m, c) in p.terms() {
         let mut s = coefficient_sign(c)?;
         for (v, e) in m.exponents() {
-            let d = variable_sign(signs.get(v as usize)?);
+            let d = variable_sign(&domain_of(signs, v));
             s = s.mul(if e % 2 == 0 {
                 d.map_or(SignOn::NonNegative, |d| d.pow(e))
             } else {
@@ -239,7 +244,7 @@ fn term_sum_sign<C: PointField>(p: &Poly<C>, signs: &[VarDomain]) -> Option<Sign
 
 /// The sign of `p`, a polynomial in the one variable `v` with rational coefficients, on the
 /// domain `d` of `v`: from its sign chart, the gaps and roots of `p` that meet the domain.
-pub(super) fn univariate_sign<C: PointField>(p: &Poly<C>, v: Var, d: &VarDomain) -> Option<SignOn> {
+fn univariate_sign<C: PointField>(p: &Poly<C>, v: Var, d: &VarDomain) -> Option<SignOn> {
     let rational = |c: &C| c.to_radical().and_then(|r| r.to_rational());
     if !p.coefficients().iter().all(|c| rational(c).is_some()) {
         return None;
@@ -372,6 +377,9 @@ mod tests {
         // Without a domain only a polynomial of one sign on the whole line has one.
         assert_eq!(sign("1 - x", &dom(&all)).0, None);
         assert_eq!(sign("x^2 + 1", &dom(&all)).0, Some(SignOn::Positive));
+        // No domains given at all: the whole line.
+        assert_eq!(sign("x^2 - 2*x + 2", &[]).0, Some(SignOn::Positive));
+        assert_eq!(sign("x^2 - 2*x + 2", &[]).1, ["x^2 - 2*x + 2 > 0"]);
         // The root sqrt(2) against the end 3/2 exactly: 2 - x^2 > 0 below it only.
         let below = interval(Some((r(0, 1), false)), Some((r(7, 5), false)));
         let past = interval(Some((r(0, 1), false)), Some((r(3, 2), false)));
