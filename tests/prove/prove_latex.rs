@@ -7,9 +7,20 @@ use crate::timed;
 
 use timed::run_text as run;
 
+/// `exactcheck prove ARGS` says "proved" with exit status 0 for each argument list.
+pub(crate) fn each_is_proved(cases: &[&[&str]]) {
+    for args in cases {
+        let mut all = vec!["prove"];
+        all.extend_from_slice(args);
+        let (code, out, err) = run(&all);
+        assert_eq!(code, 0, "{args:?}: {out}{err}");
+        assert!(out.starts_with("proved"), "{args:?}: {out}");
+    }
+}
+
 #[test]
 fn formulas_as_typed_in_latex_are_decided() {
-    for args in [
+    each_is_proved(&[
         &["\\frac{1}{2}", "0.5"][..],
         &["θ", "theta"],
         &["x^2-1 = (x-1)(x+1)"],
@@ -39,13 +50,7 @@ fn formulas_as_typed_in_latex_are_decided() {
         &["10!/(3!*7!)", "binomial(10, 3)"],
         &["$\\frac{6!}{2!\\,(6-2)!}$", "15"],
         &["sum(k, 0, 4, 4!/(k! (4 - k)!))", "16"],
-    ] {
-        let mut all = vec!["prove"];
-        all.extend_from_slice(args);
-        let (code, out, err) = run(&all);
-        assert_eq!(code, 0, "{args:?}: {out}{err}");
-        assert!(out.starts_with("proved"), "{args:?}: {out}");
-    }
+    ]);
     // A misprint typed the same way fails at an exact point.
     let (code, out, err) = run(&[
         "prove",

@@ -5,11 +5,12 @@
 
 use crate::timed;
 
+use crate::prove_latex::each_is_proved;
 use timed::run_text as run;
 
 #[test]
 fn determinants_and_matrix_identities_in_latex_are_decided() {
-    for args in [
+    each_is_proved(&[
         &["\\det\\begin{pmatrix} a & b \\\\ c & d \\end{pmatrix} = ad - bc"][..],
         // The Vandermonde determinant.
         &["\\begin{vmatrix} 1 & a & a^2 \\\\ 1 & b & b^2 \\\\ 1 & c & c^2 \\end{vmatrix} = (b-a)(c-a)(c-b)"],
@@ -19,13 +20,7 @@ fn determinants_and_matrix_identities_in_latex_are_decided() {
         &["\\begin{pmatrix} a & b \\\\ c & d \\end{pmatrix}\\begin{pmatrix} x \\\\ y \\end{pmatrix} = \\begin{bmatrix} ax+by \\\\ cx+dy \\end{bmatrix}"],
         // An equation pasted from an `align` environment.
         &["$\\cos 2\\theta &= \\cos^2\\theta - \\sin^2\\theta$"],
-    ] {
-        let mut all = vec!["prove"];
-        all.extend_from_slice(args);
-        let (code, out, err) = run(&all);
-        assert_eq!(code, 0, "{args:?}: {out}{err}");
-        assert!(out.starts_with("proved"), "{args:?}: {out}");
-    }
+    ]);
     // A misprinted entry fails at an exact point.
     let (code, out, err) = run(&[
         "prove",
