@@ -55,6 +55,28 @@ pub fn abbreviate(text: String) -> String {
     )
 }
 
+/// `text` in parentheses, unless one pair of parentheses already encloses all of it.
+pub fn grouped(text: &str) -> String {
+    let enclosed = text.starts_with('(')
+        && text
+            .char_indices()
+            .scan(0i64, |depth, (i, c)| {
+                match c {
+                    '(' => *depth += 1,
+                    ')' => *depth -= 1,
+                    _ => {}
+                }
+                Some((i, *depth))
+            })
+            .find(|&(_, depth)| depth == 0)
+            .is_some_and(|(i, _)| i + 1 == text.len());
+    if enclosed {
+        text.to_string()
+    } else {
+        format!("({text})")
+    }
+}
+
 /// The verdict on a claim.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Verdict {
@@ -525,9 +547,9 @@ impl<'a> Phrasing<'a> {
                         } else if at.is_empty() {
                             // No variable: the identity is between constants, and their
                             // difference is the counter-example.
-                            format!("{place}{s} = {value}, a non-zero constant{rel}, so LHS = RHS + ({nf})")
+                            format!("{place}{s} = {value}, a non-zero constant{rel}, so LHS = RHS + {}", grouped(&nf))
                         } else {
-                            format!("{place}{at_rel}{s} = {value}; {s} reduces{modulo} to {nf}, so LHS = RHS + ({nf})")
+                            format!("{place}{at_rel}{s} = {value}; {s} reduces{modulo} to {nf}, so LHS = RHS + {}", grouped(&nf))
                         }
                     }
                 }
@@ -632,7 +654,10 @@ impl<'a> Phrasing<'a> {
         } else if r.cleared[*coordinate] {
             format!("LHS - RHS{CLEARED} reduces{modulo} to {nf}")
         } else {
-            format!("LHS - RHS reduces{modulo} to {nf}, so LHS = RHS + ({nf})")
+            format!(
+                "LHS - RHS reduces{modulo} to {nf}, so LHS = RHS + {}",
+                grouped(&nf)
+            )
         }
     }
 
@@ -969,5 +994,13 @@ mod tests {
         let short = abbreviate(long.clone());
         assert!(short.len() < long.len() && short.ends_with("--json shows it in full]"));
         assert_eq!(abbreviate("x".into()), "x");
+    }
+
+    #[test]
+    fn a_difference_is_parenthesized_once() {
+        assert_eq!(grouped("(-sqrt(2) + sqrt(6))"), "(-sqrt(2) + sqrt(6))");
+        assert_eq!(grouped("b^3"), "(b^3)");
+        assert_eq!(grouped("(a + 1)*(b + 1)"), "((a + 1)*(b + 1))");
+        assert_eq!(grouped("(a)"), "(a)");
     }
 }

@@ -43,7 +43,7 @@ use clap::Args;
 use exactcheck_core::Ring;
 use exactcheck_exact::expr::library::{self, Shape};
 use exactcheck_exact::expr::{
-    angle_variable, angles, constant_base, first_reserved, has_constant_angle, has_trig,
+    angle_variable, angles, constant_base, first_reserved, has_constant_angle, has_trig, is_latex,
     ratfun_sides, register_angle_bases, split_equation, Coefficient, Expr, ExprError, PI,
 };
 use exactcheck_exact::poly::{Poly, Var, Vars};
@@ -298,6 +298,57 @@ fn parse_value(text: &str, what: &str) -> Result<library::Val, Error> {
     }
 }
 
+/// The two sides of `prove`, read in one language: a plain side beside a LaTeX side is read
+/// as LaTeX too when that reading is what the LaTeX side suggests: the plain reading has a
+/// name the LaTeX side lacks (`uv` in `2uv`), and the LaTeX reading only adds letters the
+/// LaTeX side has (`u` and `v`). A note on standard error says so. A plain side that LaTeX
+/// does not read (`x1`) stays plain.
+fn read_sides(lhs: &str, rhs: Option<&str>) -> Result<(library::Val, Option<library::Val>), Error> {
+    let mut l = parse_value(lhs, "LHS")?;
+    let Some(rhs) = rhs else {
+        return Ok((l, None));
+    };
+    let mut r = parse_value(rhs, "RHS")?;
+    let names = |v: &library::Val| {
+        let mut out = Vec::new();
+        for e in v.components() {
+            e.collect_variables(&mut out);
+        }
+        out
+    };
+    let reread = |plain: &str, value: &library::Val, latex: &library::Val, what: &str| {
+        let (before, beside) = (names(value), names(latex));
+        if before.iter().all(|n| beside.contains(n)) {
+            return None;
+        }
+        let v = parse_value(&format!("${plain}$"), what).ok()?;
+        let after = names(&v);
+        let fits = after
+            .iter()
+            .all(|n| before.contains(n) || beside.contains(n))
+            && after.iter().any(|n| !before.contains(n));
+        fits.then(|| {
+            let joined: Vec<String> = before
+                .iter()
+                .filter(|n| !after.contains(n))
+                .map(|n| format!("'{n}'"))
+                .collect();
+            eprintln!(
+                "exactcheck: note: {what} is read as LaTeX, like the other side: adjacent letters multiply ({} {} of one-letter variables)",
+                joined.join(", "),
+                if joined.len() == 1 { "is a product" } else { "are products" }
+            );
+            v
+        })
+    };
+    match (is_latex(lhs), is_latex(rhs)) {
+        (true, false) => r = reread(rhs, &r, &l, "RHS").unwrap_or(r),
+        (false, true) => l = reread(lhs, &l, &r, "LHS").unwrap_or(l),
+        _ => {}
+    }
+    Ok((l, Some(r)))
+}
+
 /// The two sides of `prove`, component by component, and their one shape.
 pub(crate) struct Sides<'a> {
     pub(crate) lhs: &'a [Expr],
@@ -367,12 +418,11 @@ pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
         Some((l, r)) => (l.as_str(), Some(r)),
         None => (args.lhs.as_str(), args.rhs.as_ref()),
     };
-    let lhs_value = parse_value(lhs_text, "LHS")?;
+    let (lhs_value, rhs_value) = read_sides(lhs_text, rhs_text.map(String::as_str))?;
     let shape = lhs_value.dims();
     let lhs = lhs_value.components();
-    let rhs = match rhs_text {
-        Some(r) => {
-            let v = parse_value(r, "RHS")?;
+    let rhs = match rhs_value {
+        Some(v) => {
             if v.dims() != shape {
                 return Err(Error::Input(format!(
                     "the sides differ in shape: LHS is {shape}, RHS is {}; an identity compares sides of one shape component by component",

@@ -122,3 +122,36 @@ fn adjacent_letters_outside_latex_are_one_name_and_a_hint_says_so() {
     assert_eq!(code, 0, "{out}{err}");
     assert!(!err.contains("hint"), "{err}");
 }
+
+#[test]
+fn a_plain_side_beside_a_latex_side_is_read_as_latex_when_its_letters_say_so() {
+    // `2uv` beside LaTeX with `u` and `v`: the product, and a note says so.
+    for (lhs, rhs) in [
+        ("\\frac{\\partial}{\\partial u}(u^2 v)", "2uv"),
+        ("2uv", "\\frac{\\partial}{\\partial u}(u^2 v)"),
+        (
+            "\\det\\begin{pmatrix} a & b \\\\ c & d \\end{pmatrix}",
+            "ad-bc",
+        ),
+    ] {
+        let (code, out, err) = run(&["prove", lhs, rhs]);
+        assert_eq!(code, 0, "{lhs} = {rhs}: {out}{err}");
+        assert!(out.starts_with("proved"), "{out}");
+        assert!(
+            err.contains("is read as LaTeX, like the other side"),
+            "{err}"
+        );
+    }
+    // The LaTeX reading is only taken when it adds letters of the LaTeX side: `x1` is not
+    // LaTeX, and `alphabeta` beside `\alpha \beta` reads `a`, `l`, ... that the LaTeX side lacks.
+    for (lhs, rhs) in [("\\frac{a}{2}", "x1/2"), ("\\alpha \\beta", "alphabeta")] {
+        let (code, out, err) = run(&["prove", lhs, rhs]);
+        assert_eq!(code, 1, "{lhs} = {rhs}: {out}{err}");
+        assert!(out.starts_with("fails"), "{out}");
+        assert!(!err.contains("read as LaTeX"), "{err}");
+    }
+    // Both sides plain: names of several letters stay names.
+    let (code, out, err) = run(&["prove", "2uv", "2*u*v"]);
+    assert_eq!(code, 1, "{out}{err}");
+    assert!(!err.contains("read as LaTeX"), "{err}");
+}

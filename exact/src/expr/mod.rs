@@ -176,7 +176,7 @@ pub use latex::{equation_to_latex, to_latex, Notation};
 pub use lower::{eval_lowered, lower};
 pub use mathml::{equation_to_mathml, to_mathml};
 pub use numbers::{ParseRadicalError, ParseRationalError};
-pub use parse::{parse_expr, parse_expr_with_calls, parse_poly, split_equation, LIST};
+pub use parse::{is_latex, parse_expr, parse_expr_with_calls, parse_poly, split_equation, LIST};
 pub use roots::{abs_radicand, ABS};
 pub use symbolic_sum::symbolic_sum_ranges;
 

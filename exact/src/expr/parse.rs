@@ -874,6 +874,11 @@ pub fn parse_expr_with_calls(text: &str) -> Result<Expr, ExprError> {
     Parser::new(&src, true, latex).parse_all()
 }
 
+/// Whether `text` is read as LaTeX: it has a command, a brace or a `$` (plain text has none).
+pub fn is_latex(text: &str) -> bool {
+    latex_input::prepare(text).1
+}
+
 /// The two sides of an equation written as one text, `LHS = RHS`, when it has exactly one `=`
 /// outside parentheses, brackets and braces (`\\sum_{k=1}^{n} k = \\frac{n(n+1)}{2}`); `None`
 /// otherwise. The sides of a LaTeX text stay LaTeX.
