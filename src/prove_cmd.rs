@@ -33,7 +33,11 @@
 //! nested square roots do not denest (`sqrt(2 + sqrt(2))`) is decided in the real algebraic
 //! numbers (`exactcheck_exact::algebraic`).
 
+mod conditions;
 pub(crate) mod constants;
+
+use conditions::parse_where;
+pub use conditions::{parse_where_with, split_where, var_domains, Domain, Where};
 mod random;
 
 use crate::claims::Verdict;
@@ -73,7 +77,8 @@ pub struct ProveArgs {
     #[arg(allow_hyphen_values = true)]
     pub rhs: Option<String>,
     /// A relation `A = B` the variables satisfy, e.g. `c^2 + s^2 = 1`, or a domain with constant
-    /// bounds, e.g. `r > 0`, `0 <= t <= 1`, `R >= 1/2` (repeatable, or a comma-separated list:
+    /// bounds, e.g. `r > 0`, `0 <= t <= 1`, `R >= 1/2`, or for an angle of sin, cos and tan in
+    /// multiples of pi, `0 <= theta <= pi` (repeatable, or a comma-separated list:
     /// `a >= 0, b >= 0`, `a, b > 0`; one domain per variable).
     /// Inconsistent relations are an error.
     #[arg(long = "where", value_name = "RELATION", allow_hyphen_values = true)]
@@ -96,173 +101,6 @@ pub struct ProveArgs {
     /// Print one JSON object instead of text.
     #[arg(long)]
     pub json: bool,
-}
-
-/// A `--where` argument (or a claims file's `where` entry): a relation or a domain.
-pub enum Where {
-    /// `A = B`.
-    Relation(Expr, Expr),
-    /// A variable's bounds.
-    Domain(String, VarDomain),
-    /// `A != B`: a hypothesis the proof may use (and the counter-example search respects).
-    NonZero(Expr, Expr),
-}
-
-/// The hypotheses of one `--where` text (or claims-file `where` entry): a comma-separated list as a
-/// paper prints it is several, `a >= 0, b >= 0` is `a >= 0` and `b >= 0`, and a list of variables
-/// sharing one comparison, `a, b > 0`, is `a > 0` and `b > 0`. Commas inside parentheses or brackets
-/// (`binomial(4, 2)`, `[1, 2]`) do not split; a text without a top-level comma is itself.
-pub fn split_where(text: &str) -> Vec<String> {
-    let mut parts = Vec::new();
-    let (mut depth, mut start) = (0usize, 0);
-    for (i, ch) in text.char_indices() {
-        match ch {
-            '(' | '[' | '{' => depth += 1,
-            ')' | ']' | '}' => depth = depth.saturating_sub(1),
-            ',' if depth == 0 => {
-                parts.push(text[start..i].trim());
-                start = i + 1;
-            }
-            _ => {}
-        }
-    }
-    parts.push(text[start..].trim());
-    if parts.len() == 1 {
-        return vec![text.to_string()];
-    }
-    let is_name = exactcheck_exact::expr::library::is_name;
-    // `a, b, c > 0`: the leading bare names take the last part's comparison.
-    let last = parts[parts.len() - 1];
-    let head = last
-        .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
-        .unwrap_or(last.len());
-    let comparison = last[head..].trim_start();
-    let shared = parts[..parts.len() - 1].iter().all(|p| is_name(p))
-        && is_name(&last[..head])
-        && comparison.starts_with(['<', '>', '=', '!']);
-    if shared {
-        let mut texts: Vec<String> = parts[..parts.len() - 1]
-            .iter()
-            .map(|p| format!("{p} {comparison}"))
-            .collect();
-        texts.push(last.to_string());
-        return texts;
-    }
-    parts.into_iter().map(str::to_string).collect()
-}
-
-/// Parses `--where #i` (`what` names it): `A = B`, or a chain `a < v`, `v >= a`, `a <= v < b`
-/// with a variable `v` and constants `a`, `b`.
-fn parse_where(text: &str, what: &str) -> Result<Where, Error> {
-    parse_where_with(text, what, &parse)
-}
-
-/// `parse_where` with the expression parser given (the claims files resolve their
-/// definitions and functions in it): `parse(text, what)`.
-///
-/// # Errors
-/// [`Error::Input`] naming `what` for a malformed relation or domain.
-pub fn parse_where_with(
-    text: &str,
-    what: &str,
-    parse: &dyn Fn(&str, &str) -> Result<Expr, Error>,
-) -> Result<Where, Error> {
-    if let Some((a, b)) = text.split_once("!=") {
-        if b.contains(['=', '<', '>', '!']) || a.contains(['=', '<', '>']) {
-            return Err(Error::Input(format!(
-                "{what}: {text:?} must have the form 'A != B' (one '!=', no other comparison)"
-            )));
-        }
-        return Ok(Where::NonZero(
-            parse(a, &format!("{what} left side"))?,
-            parse(b, &format!("{what} right side"))?,
-        ));
-    }
-    // Split at the comparison operators.
-    let mut parts = Vec::new();
-    let mut ops = Vec::new();
-    let mut rest = text;
-    while let Some(i) = rest.find(['<', '>']) {
-        parts.push(&rest[..i]);
-        let strict = !rest[i + 1..].starts_with('=');
-        ops.push((rest.as_bytes()[i] == b'<', strict));
-        rest = &rest[i + if strict { 1 } else { 2 }..];
-    }
-    parts.push(rest);
-    if ops.is_empty() {
-        let Some((lhs, rhs)) = split_equation(text) else {
-            return Err(Error::Input(format!(
-                "{what}: {text:?} must have the form 'A = B' (one '='), or a domain such as 'r > 0' or '0 <= t <= 1'"
-            )));
-        };
-        return Ok(Where::Relation(
-            parse(&lhs, &format!("{what} left side"))?,
-            parse(&rhs, &format!("{what} right side"))?,
-        ));
-    }
-    let bad = |why: &str| {
-        Error::Input(format!(
-            "{what}: {text:?} is not a domain ({why}); write e.g. 'r > 0', 'R >= 1/2' or '0 <= t <= 1'"
-        ))
-    };
-    if parts.iter().any(|p| p.contains('=')) {
-        return Err(bad("'=' mixed with '<' or '>'"));
-    }
-    if ops.len() > 2 || (ops.len() == 2 && ops[0].0 != ops[1].0) {
-        return Err(bad("at most two bounds, both '<' or both '>'"));
-    }
-    let exprs = parts
-        .iter()
-        .map(|p| parse(p, what))
-        .collect::<Result<Vec<Expr>, Error>>()?;
-    let var_at: Vec<usize> = exprs
-        .iter()
-        .enumerate()
-        .filter(|(_, e)| matches!(e.kind, exactcheck_exact::expr::ExprKind::Var(_)))
-        .map(|(i, _)| i)
-        .collect();
-    let vi = match (var_at.as_slice(), ops.len()) {
-        ([i], 1) => *i,
-        ([1], 2) => 1,
-        _ => {
-            return Err(bad(
-                "one side must be a single variable, the other(s) constants",
-            ))
-        }
-    };
-    let exactcheck_exact::expr::ExprKind::Var(name) = &exprs[vi].kind else {
-        unreachable!("vi indexes a variable (var_at holds only variables)")
-    };
-    let name = name.clone();
-    let constant = |e: &Expr| -> Result<Rational, Error> {
-        let mut scratch = Vars::new();
-        let p = e
-            .to_poly::<Rational>(&mut scratch)
-            .map_err(|err| Error::Input(format!("{what}: {err}")))?;
-        if !scratch.is_empty() {
-            return Err(bad("bounds must be constants"));
-        }
-        Ok(p.constant_value()
-            .expect("a polynomial without variables is a constant"))
-    };
-    let mut domain = VarDomain::all();
-    for (k, &(less, strict)) in ops.iter().enumerate() {
-        // parts[k] op parts[k + 1].
-        let (other, var_left) = if k + 1 == vi {
-            (k, false)
-        } else {
-            (k + 1, true)
-        };
-        let c = constant(&exprs[other])?;
-        // var_left: v op c; else c op v. `less` with v on the left is an upper bound.
-        let upper = less == var_left;
-        if upper {
-            domain.upper = Some((c, strict));
-        } else {
-            domain.lower = Some((c, strict));
-        }
-    }
-    Ok(Where::Domain(name, domain))
 }
 
 /// A fresh seed from the operating system's randomness (the keys of std's `RandomState`).
@@ -435,7 +273,7 @@ pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
     };
     let mut relations = Vec::new();
     let mut nonzero = Vec::new();
-    let mut domains: Vec<(String, VarDomain, String)> = Vec::new();
+    let mut domains: Vec<Domain> = Vec::new();
     let texts = args
         .relations
         .iter()
@@ -447,16 +285,17 @@ pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
         match parse_where(r, &what)? {
             Where::Relation(a, b) => relations.push((a, b)),
             Where::NonZero(a, b) => nonzero.push((a, b, r.trim().to_string())),
-            Where::Domain(v, d) => {
-                if d.is_empty() {
+            Where::Domain(d) => {
+                let v = &d.name;
+                if d.bounds.is_empty() {
                     return Err(Error::Input(format!("{what}: the domain {r:?} is empty")));
                 }
-                if domains.iter().any(|(w, _, _)| *w == v) {
+                if domains.iter().any(|w| w.name == *v) {
                     return Err(Error::Input(format!(
                         "{what}: {v} already has a domain (give both bounds in one, e.g. '0 <= {v} <= 1')"
                     )));
                 }
-                domains.push((v, d, r.clone()));
+                domains.push(d);
             }
         }
     }
@@ -607,7 +446,7 @@ pub(crate) fn prove_over<C: PointField + Display>(
     sides: &Sides,
     relations: &[(Expr, Expr)],
     nonzero: &[(Expr, Expr, String)],
-    domains: &[(String, VarDomain, String)],
+    domains: &[Domain],
     constants: Option<&AlgebraicConstants>,
 ) -> Result<ExitCode, Error> {
     let mut vars = Vars::new();
@@ -688,20 +527,14 @@ pub(crate) fn prove_over<C: PointField + Display>(
         .iter()
         .map(|a| format!("cos({0})^2 + sin({0})^2 = 1", a.name))
         .collect();
-    let mut doms: Vec<(Var, VarDomain)> = Vec::new();
-    for (v, d, text) in domains {
-        if v == PI {
-            return Err(Error::Input(format!(
-                "--where {text:?}: pi is a constant, not a variable: it takes no domain"
-            )));
-        }
-        let var = vars.get(v).ok_or_else(|| {
-            Error::Input(format!(
-                "--where {text:?}: {v} does not occur in the identity or its relations"
-            ))
-        })?;
-        doms.push((var, d.clone()));
+    if let Some(d) = domains.iter().find(|d| d.name == PI) {
+        return Err(Error::Input(format!(
+            "--where {:?}: pi is a constant, not a variable: it takes no domain",
+            d.text
+        )));
     }
+    let bounds = var_domains(&vars, domains).map_err(|e| Error::Input(format!("--where {e}")))?;
+    let mut doms: Vec<(Var, VarDomain)> = bounds.bounds.clone();
     doms.extend(roots.iter().map(|r| (r.var, SquareRoot::<C>::domain())));
     doms.extend(constant_domain);
     // The variables of sums' symbolic bounds are integers inside the sums' ranges.
@@ -714,17 +547,12 @@ pub(crate) fn prove_over<C: PointField + Display>(
         ..IdentitySpec::new(vars, coordinates)
     };
     let mut phrasing = Phrasing {
-        relations: args
-            .relations
-            .iter()
-            .filter(|t| !t.contains(['<', '>', '!']))
-            .cloned()
-            .collect(),
+        relations: conditions::relation_texts(&args.relations),
         circles: circle_texts,
-        domains: domains.iter().map(|(_, _, t)| t.clone()).collect(),
+        domains: domains.iter().map(|d| d.text.clone()).collect(),
         labels: sides.labels(),
         nonzero_texts,
-        domain_texts: Phrasing::domain_texts(domains.iter().map(|(n, _, t)| (n, t)), constants),
+        domain_texts: Phrasing::domain_texts(bounds.texts.iter().map(|(n, t)| (n, t)), constants),
         roots: Phrasing::root_texts(&roots, &spec.vars),
         pi,
         constants,

@@ -91,7 +91,7 @@ pub(crate) fn prove_with_constants(
     sides: &Sides,
     relations: &[(Expr, Expr)],
     nonzero: &[(Expr, Expr, String)],
-    domains: &[(String, VarDomain, String)],
+    domains: &[super::Domain],
 ) -> Result<ExitCode, Error> {
     // Every expression with the part of the statement it belongs to, for the errors.
     let mut exprs: Vec<&Expr> = Vec::new();

@@ -8,6 +8,7 @@ mod common;
 #[path = "../common/timed.rs"]
 mod timed;
 
+mod prove_angle_domains;
 mod prove_angles_as_printed;
 mod prove_calculus_roots;
 mod prove_differential_findings;

@@ -205,16 +205,9 @@ fn identity<C: PointField + Display>(
         }
         None => None,
     };
-    let mut domains: Vec<(Var, VarDomain)> = Vec::new();
-    for (v, d, text) in &conditions.domains {
-        let var = vars.get(v).ok_or_else(|| {
-            Fault::Input(
-                "where",
-                format!("{text:?}: {v} does not occur in the identity or its relations"),
-            )
-        })?;
-        domains.push((var, d.clone()));
-    }
+    let bounds = crate::prove_cmd::var_domains(&vars, &conditions.domains)
+        .map_err(|e| Fault::Input("where", e))?;
+    let mut domains: Vec<(Var, VarDomain)> = bounds.bounds.clone();
     domains.extend(roots.iter().map(|r| (r.var, SquareRoot::<C>::domain())));
     domains.extend(constant_domain);
     // The variables of sums' symbolic bounds are integers inside the sums' ranges.
@@ -233,11 +226,7 @@ fn identity<C: PointField + Display>(
             .iter()
             .map(|a| format!("cos({0})^2 + sin({0})^2 = 1", a.name))
             .collect(),
-        domains: conditions
-            .domains
-            .iter()
-            .map(|(_, _, t)| t.clone())
-            .collect(),
+        domains: conditions.domains.iter().map(|d| d.text.clone()).collect(),
         labels,
         corrected: corrected
             .iter()
@@ -245,7 +234,7 @@ fn identity<C: PointField + Display>(
             .map(ToString::to_string)
             .collect(),
         nonzero_texts,
-        domain_texts: Phrasing::domain_texts(conditions.domains.iter().map(|(n, _, t)| (n, t)), k),
+        domain_texts: Phrasing::domain_texts(bounds.texts.iter().map(|(n, t)| (n, t)), k),
         roots: Phrasing::root_texts(&roots, &spec.vars),
         pi,
         constants: k,

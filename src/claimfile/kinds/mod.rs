@@ -21,7 +21,7 @@ use super::read::{present_keys, RawClaim};
 use super::{name_expr, Decision};
 use crate::claims::{printed, Equation, Erratum, Outcome, Verdict};
 use crate::phrase::Phrasing;
-use crate::prove_cmd::{parse_where_with, split_where, Where};
+use crate::prove_cmd::{parse_where_with, split_where, Domain, Where};
 use crate::Error;
 use exactcheck_core::Ring;
 use exactcheck_exact::expr::library::Shape;
@@ -58,7 +58,7 @@ type Built<T> = Result<T, (&'static str, String)>;
 pub struct Conditions {
     relations: Vec<(Expr, Expr)>,
     relation_texts: Vec<String>,
-    domains: Vec<(String, VarDomain, String)>,
+    domains: Vec<Domain>,
     /// Hypotheses `A != B` and their texts.
     nonzero: Vec<(Expr, Expr, String)>,
 }
@@ -461,17 +461,18 @@ fn conditions(c: &RawClaim, defs: &RefCell<Defs>) -> Built<Conditions> {
                     }
                     out.nonzero.push((a, b, text.trim().to_string()));
                 }
-                Where::Domain(v, d) => {
-                    if d.is_empty() {
+                Where::Domain(d) => {
+                    let v = d.name.clone();
+                    if d.bounds.is_empty() {
                         return Err((key, format!("{what}: the domain {text:?} is empty")));
                     }
-                    if out.domains.iter().any(|(w, _, _)| *w == v) {
+                    if out.domains.iter().any(|w| w.name == v) {
                         return Err((
                             key,
                             format!("{what}: {v} already has a domain (give both bounds in one, e.g. '0 <= {v} <= 1')"),
                         ));
                     }
-                    out.domains.push((v, d, text.clone()));
+                    out.domains.push(d);
                 }
             }
         }
