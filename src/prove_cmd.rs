@@ -126,8 +126,18 @@ fn parse(text: &str, what: &str) -> Result<Expr, Error> {
 
 /// Parses a side of `prove` (named `what` in messages) with the library functions resolved: a
 /// scalar, a vector or a matrix; a free variable `pi`, `e` or `i` in a component is refused.
-fn parse_value(text: &str, what: &str) -> Result<library::Val, Error> {
-    let v = library::Defs::default()
+fn parse_value(
+    text: &str,
+    what: &str,
+    fixed: &[(String, Rational)],
+) -> Result<library::Val, Error> {
+    let entries = fixed
+        .iter()
+        .map(|(n, v)| (n.clone(), library::DefText::Scalar(format!("({v})"))))
+        .collect();
+    let mut defs = library::Defs::new(entries)
+        .map_err(|(head, e)| Error::Input(format!("{what}: {head}: {e}")))?;
+    let v = defs
         .resolve_text(text)
         .map_err(|e| Error::Input(format!("{what}: {e}")))?;
     match first_reserved(&v.components()) {
@@ -136,17 +146,41 @@ fn parse_value(text: &str, what: &str) -> Result<library::Val, Error> {
     }
 }
 
+/// The variables the relations fix to a rational number (`n = 4`, `1/2 = R`), each once.
+fn fixed_values(relations: &[(Expr, Expr)]) -> Vec<(String, Rational)> {
+    let mut out: Vec<(String, Rational)> = Vec::new();
+    for (a, b) in relations {
+        for (var, value) in [(a, b), (b, a)] {
+            let exactcheck_exact::expr::ExprKind::Var(name) = &var.kind else {
+                continue;
+            };
+            if name == PI || out.iter().any(|(n, _)| n == name) {
+                continue;
+            }
+            if let Ok(q) = value.eval_constant::<Rational>() {
+                out.push((name.clone(), q));
+            }
+        }
+    }
+    out
+}
+
 /// The two sides of `prove`, read in one language: a plain side beside a LaTeX side is read
 /// as LaTeX too when that reading is what the LaTeX side suggests: the plain reading has a
 /// name the LaTeX side lacks (`uv` in `2uv`), and the LaTeX reading only adds letters the
 /// LaTeX side has (`u` and `v`). A note on standard error says so. A plain side that LaTeX
 /// does not read (`x1`) stays plain.
-fn read_sides(lhs: &str, rhs: Option<&str>) -> Result<(library::Val, Option<library::Val>), Error> {
-    let mut l = parse_value(lhs, "LHS")?;
+/// `fixed` are values substituted for variables ([`fixed_values`]).
+fn read_sides(
+    lhs: &str,
+    rhs: Option<&str>,
+    fixed: &[(String, Rational)],
+) -> Result<(library::Val, Option<library::Val>), Error> {
+    let mut l = parse_value(lhs, "LHS", fixed)?;
     let Some(rhs) = rhs else {
         return Ok((l, None));
     };
-    let mut r = parse_value(rhs, "RHS")?;
+    let mut r = parse_value(rhs, "RHS", fixed)?;
     let names = |v: &library::Val| {
         let mut out = Vec::new();
         for e in v.components() {
@@ -159,7 +193,7 @@ fn read_sides(lhs: &str, rhs: Option<&str>) -> Result<(library::Val, Option<libr
         if before.iter().all(|n| beside.contains(n)) {
             return None;
         }
-        let v = parse_value(&format!("${plain}$"), what).ok()?;
+        let v = parse_value(&format!("${plain}$"), what, fixed).ok()?;
         let after = names(&v);
         let fits = after
             .iter()
@@ -171,11 +205,13 @@ fn read_sides(lhs: &str, rhs: Option<&str>) -> Result<(library::Val, Option<libr
                 .filter(|n| !after.contains(n))
                 .map(|n| format!("'{n}'"))
                 .collect();
-            eprintln!(
-                "exactcheck: note: {what} is read as LaTeX, like the other side: adjacent letters multiply ({} {} of one-letter variables)",
-                joined.join(", "),
-                if joined.len() == 1 { "is a product" } else { "are products" }
-            );
+            if fixed.is_empty() {
+                eprintln!(
+                    "exactcheck: note: {what} is read as LaTeX, like the other side: adjacent letters multiply ({} {} of one-letter variables)",
+                    joined.join(", "),
+                    if joined.len() == 1 { "is a product" } else { "are products" }
+                );
+            }
             v
         })
     };
@@ -256,21 +292,6 @@ pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
         Some((l, r)) => (l.as_str(), Some(r)),
         None => (args.lhs.as_str(), args.rhs.as_ref()),
     };
-    let (lhs_value, rhs_value) = read_sides(lhs_text, rhs_text.map(String::as_str))?;
-    let shape = lhs_value.dims();
-    let lhs = lhs_value.components();
-    let rhs = match rhs_value {
-        Some(v) => {
-            if v.dims() != shape {
-                return Err(Error::Input(format!(
-                    "the sides differ in shape: LHS is {shape}, RHS is {}; an identity compares sides of one shape component by component",
-                    v.dims()
-                )));
-            }
-            Some(v.components())
-        }
-        None => None,
-    };
     let mut relations = Vec::new();
     let mut nonzero = Vec::new();
     let mut domains: Vec<Domain> = Vec::new();
@@ -299,8 +320,78 @@ pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
             }
         }
     }
+    // A statement that only reads with a variable fixed by a relation (`binomial(n, k)` or
+    // `2^n` with `--where 'n = 4'`) is decided with it substituted, and a note says so.
+    let decide = |fixed: &[(String, Rational)]| {
+        decide_sides(
+            args,
+            (lhs_text, rhs_text.map(String::as_str)),
+            fixed,
+            (&relations, &nonzero, &domains),
+        )
+    };
+    match decide(&[]) {
+        Err(Error::Input(first)) => {
+            let fixed = fixed_values(&relations);
+            if fixed.is_empty() {
+                return Err(Error::Input(first));
+            }
+            match decide(&fixed) {
+                Ok(code) => {
+                    let mut names = Vec::new();
+                    for text in std::iter::once(lhs_text).chain(rhs_text.map(String::as_str)) {
+                        if let Ok(e) = exactcheck_exact::expr::parse_expr_with_calls(text) {
+                            e.collect_variables(&mut names);
+                        }
+                    }
+                    let list: Vec<String> = fixed
+                        .iter()
+                        .filter(|(n, _)| names.contains(n))
+                        .map(|(n, v)| format!("{n} = {v}"))
+                        .collect();
+                    eprintln!(
+                        "exactcheck: note: decided with {} from --where substituted into the sides, which need {}",
+                        list.join(", "),
+                        if list.len() == 1 { "it as a number" } else { "them as numbers" }
+                    );
+                    Ok(code)
+                }
+                Err(_) => Err(Error::Input(first)),
+            }
+        }
+        other => other,
+    }
+}
+
+/// The conditions of `prove` as parsed: relations, hypotheses `A != B`, domains.
+type Conditions<'a> = (&'a [(Expr, Expr)], &'a [(Expr, Expr, String)], &'a [Domain]);
+
+/// Reads the sides (with the values `fixed` substituted for their variables) and decides
+/// the statement under the conditions; the hints about the sides are printed on the first
+/// reading only (without `fixed`).
+fn decide_sides(
+    args: &ProveArgs,
+    (lhs_text, rhs_text): (&str, Option<&str>),
+    fixed: &[(String, Rational)],
+    (relations, nonzero, domains): Conditions,
+) -> Result<ExitCode, Error> {
+    let (lhs_value, rhs_value) = read_sides(lhs_text, rhs_text, fixed)?;
+    let shape = lhs_value.dims();
+    let lhs = lhs_value.components();
+    let rhs = match rhs_value {
+        Some(v) => {
+            if v.dims() != shape {
+                return Err(Error::Input(format!(
+                    "the sides differ in shape: LHS is {shape}, RHS is {}; an identity compares sides of one shape component by component",
+                    v.dims()
+                )));
+            }
+            Some(v.components())
+        }
+        None => None,
+    };
     let sides: Vec<&Expr> = lhs.iter().chain(rhs.iter().flatten()).collect();
-    if let Some(hint) = joined_names_hint(&sides) {
+    if let Some(hint) = joined_names_hint(&sides).filter(|_| fixed.is_empty()) {
         eprintln!("exactcheck: hint: {hint}");
     }
     let tied: Vec<(&Expr, &Expr)> = relations.iter().map(|(a, b)| (a, b)).collect();

@@ -208,3 +208,57 @@ fn random_mode_takes_negative_exponents_and_pi() {
     assert_eq!(code, 1, "{out}");
     assert!(out.starts_with("undecided: "), "{out}");
 }
+
+#[test]
+fn a_bound_fixed_by_a_relation_is_substituted_where_a_number_is_needed() {
+    // `binomial(n, k)` in a sum to n needs n as a number: `--where 'n = 4'` gives it, and a
+    // note says so.
+    for (lhs, rhs, fixed) in [
+        (
+            "\\sum_{k=0}^{n} \\binom{n}{k} t^k (1-t)^{n-k}",
+            "1",
+            "n = 4",
+        ),
+        ("\\sum_{k=0}^{n} \\binom{n}{k}", "2^n", "n = 5"),
+        ("n!", "120", "n = 5"),
+        ("binomial(n, 2)", "n*(n-1)/2", "n = 7, m = 3"),
+    ] {
+        let (code, out, err) = run(&["prove", lhs, rhs, "--where", fixed]);
+        assert_eq!(code, 0, "{lhs} = {rhs}: {out}{err}");
+        assert!(out.starts_with("proved"), "{out}");
+        assert!(err.contains("substituted into the sides"), "{err}");
+        // Only the variables of the sides are named.
+        assert!(!err.contains("m = 3"), "{err}");
+    }
+    // The false twin fails at the fixed value.
+    let (code, out, err) = run(&[
+        "prove",
+        "\\sum_{k=0}^{n} \\binom{n}{k}",
+        "31",
+        "--where",
+        "n = 5",
+    ]);
+    assert_eq!(code, 1, "{out}{err}");
+    assert!(out.starts_with("fails"), "{out}");
+    // A value that does not make the statement readable leaves the first error, alone.
+    let (code, out, err) = run(&[
+        "prove",
+        "\\sum_{k=0}^{n} \\binom{n}{k}",
+        "2^n",
+        "--where",
+        "n = 1/2",
+    ]);
+    assert_eq!(code, 2, "{out}{err}");
+    assert_eq!(err.trim().lines().count(), 1, "{err}");
+    assert!(
+        err.contains("binomial(n, k) depends on the summation index"),
+        "{err}"
+    );
+    // A relation that the statement does not need stays a relation.
+    let (code, out, err) = run(&["prove", "x^2", "4", "--where", "x = 2"]);
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(
+        out.contains("modulo x = 2") && !err.contains("substituted"),
+        "{out}{err}"
+    );
+}
