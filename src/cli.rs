@@ -49,7 +49,8 @@ pub enum Command {
     /// relations or inside domains (`--where`): `proved` (with the divisors that must not
     /// vanish); `fails` with an exact counter-example and what the sides differ by; or
     /// `undecided` when neither is found. Expressions: numbers, variables, + - * / ^,
-    /// parentheses, and the functions sqrt(E) (the non-negative root, also of a fraction),
+    /// parentheses, and the functions sqrt(E) (the non-negative root, also of a fraction), a
+    /// constant to a rational power (2^(1/3): the real root),
     /// abs(E) (= sqrt(E^2)), diff(E, t) and diff(E, t, k) (the
     /// exact derivative in the variable t, k times), integrate(E, t, a, b) (the definite
     /// integral of a polynomial in t), sum(k, a, b, E) (over the integers k from a to b),

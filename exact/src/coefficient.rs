@@ -8,6 +8,7 @@
 //! (`expr::Coefficient`, `expr::Trig`).
 
 use crate::rational::Rational;
+use exactcheck_core::limits::LimitError;
 use exactcheck_core::Ring;
 use num_bigint::BigInt;
 use num_traits::{Signed, ToPrimitive};
@@ -84,6 +85,21 @@ pub trait Coefficient: Ring {
     fn try_inverse(&self) -> Option<Self>;
     /// A square root in the type, `None` if there is none.
     fn try_sqrt(&self) -> Option<Self>;
+    /// The real root of index `n >= 2` in the type: for an odd `n` the one real root (of the
+    /// sign of `self`), for an even `n` the non-negative root of a non-negative number; `None`
+    /// when the type has none (the default has the square roots of [`Coefficient::try_sqrt`]
+    /// only).
+    ///
+    /// # Errors
+    /// A limit of the type (the `algebraic-degree` of a real algebraic number).
+    fn try_nth_root(&self, n: u32) -> Result<Option<Self>, LimitError> {
+        Ok(if n == 2 { self.try_sqrt() } else { None })
+    }
+    /// Why [`Coefficient::try_nth_root`] found no root of a higher index (appended to the
+    /// error): by default, that such roots are taken in the real algebraic numbers.
+    fn nth_root_hint() -> &'static str {
+        " (roots of index 3 and higher of constants are taken in the real algebraic numbers)"
+    }
     /// The absolute value `|c|` in the type, `None` if the type has none (the default: a type
     /// without an order, such as a finite field). For a real `c` it is `c` or `-c`, the one
     /// that is not negative; a complex number's is its modulus, when that root is in the type.
@@ -164,6 +180,24 @@ impl Coefficient for Rational {
         } else {
             None
         }
+    }
+    /// The rational root of a rational whose numerator and denominator are perfect powers.
+    fn try_nth_root(&self, n: u32) -> Result<Option<Self>, LimitError> {
+        if n < 2 {
+            return Ok((n == 1).then(|| self.clone()));
+        }
+        let (num, den) = (self.numer(), self.denom());
+        if num.is_negative() && n % 2 == 0 {
+            return Ok(None);
+        }
+        let root = |x: &BigInt| {
+            let r = x.nth_root(n);
+            (num_traits::Pow::pow(&r, n) == *x).then_some(r)
+        };
+        Ok(match (root(&num), root(&den)) {
+            (Some(a), Some(b)) => Some(Rational::from(num_rational::BigRational::new(a, b))),
+            _ => None,
+        })
     }
     fn try_abs(&self) -> Option<Self> {
         Some(if self.signum() == exactcheck_core::Sign::Negative {

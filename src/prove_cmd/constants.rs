@@ -187,7 +187,7 @@ pub(crate) fn settle<C: PointField>(
             Some(p)
         }
         Err(why) => {
-            *searched = format!("{searched}; with c = {}: {why}", k.name);
+            *searched = format!("{searched}; at the exact value of {}: {why}", k.name);
             None
         }
     }

@@ -13,6 +13,7 @@ mod prove_angles_as_printed;
 mod prove_calculus_roots;
 mod prove_differential_findings;
 mod prove_fractions;
+mod prove_higher_roots;
 mod prove_integral_constant_angles;
 mod prove_latex;
 mod prove_latex_matrices;

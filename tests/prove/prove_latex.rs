@@ -68,7 +68,7 @@ fn latex_refusals_are_one_line_naming_the_problem() {
     for (args, needle) in [
         (&["\\log x", "1"][..], "\\log"),
         (&["\\left| x = x"], "not closed"),
-        (&["\\sqrt[3]{8} = 2"], "only the square root"),
+        (&["\\sqrt[t]{8} = 2"], "an integer constant of at least 2"),
         (&["\\sin x^2 = 1"], "ambiguous"),
         (&["\\sin^{-1} x = 1"], "ambiguous"),
         (&["\\int_0^1 t^2 = 1"], "differential"),

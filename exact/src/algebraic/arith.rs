@@ -29,6 +29,28 @@ pub(super) fn iv_mul(a: &Iv, b: &Iv) -> Iv {
     (lo, hi)
 }
 
+/// Rational bounds `l <= q^(1/n) <= u` of a non-negative `q` with `u - l <= 2^-bits` (times
+/// the denominator's effect, as [`sqrt_bounds`]); `(0, 0)` for `q <= 0`.
+fn nth_root_bounds(q: &Rational, n: u32, bits: u32) -> Iv {
+    if q.signum() != Sign::Positive {
+        return (Rational::ZERO, Rational::ZERO);
+    }
+    // (a/d)^(1/n) = (a d^(n-1) 2^(n bits))^(1/n) / (d 2^bits)
+    let (a, d) = (q.numer(), q.denom());
+    let scaled: BigInt = (&a * num_traits::Pow::pow(&d, n - 1)) << (n as usize * bits as usize);
+    let r = scaled.nth_root(n);
+    let den = Rational::from(d << bits as usize)
+        .recip()
+        .expect("a denominator is not zero");
+    let lo = Rational::from(r.clone()) * &den;
+    let hi = if num_traits::Pow::pow(&r, n) == scaled {
+        lo.clone()
+    } else {
+        Rational::from(r + 1) * &den
+    };
+    (lo, hi)
+}
+
 /// `1/[lo, hi]`, `None` when the interval contains 0.
 fn iv_inv(a: &Iv) -> Option<Iv> {
     if a.0.signum() == Sign::Positive || a.1.signum() == Sign::Negative {
@@ -315,6 +337,21 @@ impl Algebraic {
         } else {
             (Rational::ZERO, l2.max(h2))
         }
+    }
+
+    /// The positive root of index `n` of the positive irrational (or not perfect-power)
+    /// `self`: the positive root of `f(x^n)`, selected by the bounds of the root of index `n` of
+    /// the enclosure.
+    pub(super) fn nth_root_positive(&self, n: u32) -> Algebraic {
+        let mut coeffs = vec![Rational::ZERO; n as usize + 1];
+        coeffs[n as usize] = Rational::ONE;
+        let g = self.poly.compose(&UPoly::from_coeffs(coeffs));
+        Algebraic::select(&g, false, |bits| {
+            let (lo, hi) = self.enclosure(bits);
+            let l = nth_root_bounds(&lo, n, bits / n + 2).0;
+            let h = nth_root_bounds(&hi, n, bits / n + 2).1;
+            Some((l, h))
+        })
     }
 
     /// The positive square root of the positive `self`: the positive root of `f(x^2)`.

@@ -291,6 +291,33 @@ impl Algebraic {
         }
     }
 
+    /// The real root of index `n >= 2`: for an odd `n` the one real root (of the sign of
+    /// `self`), for an even `n` the non-negative root, `None` for a negative number. A root
+    /// of `f(t^n)`, `f` the minimal polynomial, selected by the root bounds of the enclosure.
+    ///
+    /// # Errors
+    /// The `algebraic-degree` limit when `n` times the degree exceeds it (checked before
+    /// `f(t^n)` is formed).
+    pub fn nth_root(&self, n: u32) -> Result<Option<Algebraic>, LimitError> {
+        if n < 2 {
+            return Ok((n == 1).then(|| self.clone()));
+        }
+        match self.sign() {
+            Sign::Zero => Ok(Some(Algebraic::zero())),
+            Sign::Negative if n % 2 == 0 => Ok(None),
+            Sign::Negative => Ok(self.neg_impl().nth_root(n)?.map(|r| r.neg_impl())),
+            Sign::Positive => {
+                if let Some(q) = self.to_rational() {
+                    if let Ok(Some(r)) = Coefficient::try_nth_root(q, n) {
+                        return Ok(Some(Algebraic::from_rational(r)));
+                    }
+                }
+                limits::ALGEBRAIC_DEGREE.check_usize(self.degree().saturating_mul(n as usize))?;
+                Ok(Some(self.nth_root_positive(n)))
+            }
+        }
+    }
+
     /// The multiplicative inverse, or [`ZeroDivisor`] for zero.
     pub fn inverse(&self) -> Result<Algebraic, ZeroDivisor> {
         if self.is_zero() {
@@ -397,6 +424,12 @@ impl Coefficient for Algebraic {
     }
     fn try_abs(&self) -> Option<Self> {
         Some(self.abs())
+    }
+    fn try_nth_root(&self, n: u32) -> Result<Option<Self>, LimitError> {
+        self.nth_root(n)
+    }
+    fn nth_root_hint() -> &'static str {
+        ": a negative number has no real root of even index"
     }
     fn sqrt_hint() -> &'static str {
         " (it is negative: no real square root)"

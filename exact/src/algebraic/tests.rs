@@ -479,3 +479,60 @@ fn the_trig_degree_refusal_is_a_typed_limit() {
         .unwrap_err();
     assert!(bad.limit().is_none(), "{bad}");
 }
+
+#[test]
+fn roots_of_higher_index_are_real_roots() {
+    // The cube root of 2: a root of x^3 - 2, between 1.25 and 1.26.
+    let c = Algebraic::from_integer(2).nth_root(3).unwrap().unwrap();
+    assert_eq!(c.minimal_polynomial(), Some(&upoly(&[-2, 0, 0, 1])));
+    let (lo, hi) = c.enclosure(20);
+    assert!(lo > Rational::new(125, 100).unwrap() && hi < Rational::new(126, 100).unwrap());
+    assert_eq!(c.pow(3), Algebraic::from_integer(2));
+    // Perfect powers stay rational; an odd index keeps the sign.
+    assert_eq!(
+        Algebraic::from_integer(-8).nth_root(3).unwrap(),
+        Some(Algebraic::from_integer(-2))
+    );
+    assert_eq!(
+        Algebraic::from_rational(Rational::new(16, 81).unwrap())
+            .nth_root(4)
+            .unwrap(),
+        Some(Algebraic::from_rational(Rational::new(2, 3).unwrap()))
+    );
+    // An even index has no real root of a negative number.
+    assert_eq!(Algebraic::from_integer(-2).nth_root(4).unwrap(), None);
+    assert_eq!(
+        Algebraic::from_integer(0).nth_root(5).unwrap(),
+        Some(Algebraic::zero())
+    );
+    // Cardano: the cube roots of 2 +- sqrt(5) are the golden ratio and its conjugate - 1.
+    let s5 = sqrt_int(5);
+    let golden = alg("(1 + sqrt(5))/2");
+    let plus = (Algebraic::from_integer(2) + s5.clone())
+        .nth_root(3)
+        .unwrap()
+        .unwrap();
+    let minus = (Algebraic::from_integer(2) - s5)
+        .nth_root(3)
+        .unwrap()
+        .unwrap();
+    assert_eq!(plus, golden);
+    assert_eq!(plus + minus, Algebraic::from_integer(1));
+    // Parsed as a power with a rational exponent.
+    assert_eq!(alg("2^(1/3)"), c);
+    assert_eq!(alg("4^(1/3)"), c.pow(2));
+    assert_eq!(alg("(-27)^(2/3)"), Algebraic::from_integer(9));
+    // The degree n d is checked before f(t^n) is formed.
+    assert!(Algebraic::from_integer(2).nth_root(1000).is_err());
+}
+
+#[test]
+fn rational_roots_of_higher_index_are_exact() {
+    use crate::coefficient::Coefficient;
+    let q = |n: i64, d: i64| Rational::new(n, d).unwrap();
+    assert_eq!(q(27, 8).try_nth_root(3).unwrap(), Some(q(3, 2)));
+    assert_eq!(q(-27, 8).try_nth_root(3).unwrap(), Some(q(-3, 2)));
+    assert_eq!(q(2, 1).try_nth_root(3).unwrap(), None);
+    assert_eq!(q(-16, 1).try_nth_root(4).unwrap(), None);
+    assert_eq!(q(1, 32).try_nth_root(5).unwrap(), Some(q(1, 2)));
+}

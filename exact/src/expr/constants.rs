@@ -46,12 +46,14 @@ fn only_pi(e: &Expr) -> bool {
     names.iter().all(|n| n == PI)
 }
 
-/// Whether `e` is a leaf candidate: `sqrt` or `abs` of a constant or a trigonometric function
-/// of a constant angle that is a multiple of pi (`sin(1)` has no algebraic value: it stays, the
-/// cosine and sine of the constant base angle).
+/// Whether `e` is a leaf candidate: `sqrt` or `abs` of a constant, a constant to a power that
+/// is not an integer (`2^(1/3)`), or a trigonometric function of a constant angle that is a
+/// multiple of pi (`sin(1)` has no algebraic value: it stays, the cosine and sine of the
+/// constant base angle).
 fn is_leaf(e: &Expr) -> bool {
     let shape = match &e.kind {
         ExprKind::Sqrt(_) => true,
+        ExprKind::Pow(_, exp) => super::eval::fractional_exponent(exp).is_ok_and(|k| k.is_some()),
         ExprKind::Call(name, _) if name == ABS => true,
         ExprKind::Call(name, _) => {
             Trig::from_name(name).is_some() && !super::trig::is_transcendental_constant(e)

@@ -59,6 +59,9 @@ impl Expr {
                 Ok(p)
             }
             ExprKind::Pow(base, exp) => {
+                if let Some(c) = fractional_power(self, exp) {
+                    return Ok(Poly::constant(c?));
+                }
                 let k = exponent_value(exp)?;
                 let b = base.to_poly::<C>(vars)?;
                 if let Some(c) = b.constant_value() {
@@ -163,6 +166,45 @@ impl Expr {
                 Ok(acc)
             }
             ExprKind::Pow(base, exp) => {
+                if let Some((k, n)) = fractional_exponent(exp)? {
+                    let b = base.eval_constant::<C>()?;
+                    // A rational root of a rational (`8^(1/3)`) lies in every field.
+                    let rational = || {
+                        let q = base.eval_constant::<Rational>().ok()?;
+                        let negative = q.signum() == exactcheck_core::Sign::Negative;
+                        match q.try_nth_root(n) {
+                            Ok(Some(r)) => C::from_rational(&r).map(Ok),
+                            _ if negative && n % 2 == 0 => {
+                                Some(Err(": a negative number has no real root of even index"))
+                            }
+                            _ => None,
+                        }
+                    };
+                    let root = match b.try_nth_root(n) {
+                        Ok(Some(r)) => r,
+                        Ok(None) => match rational() {
+                            Some(Ok(r)) => r,
+                            found => {
+                                return Err(ExprError::NoRoot {
+                                    pos: self.pos,
+                                    index: n,
+                                    arg: base.to_string(),
+                                    hint: match found {
+                                        Some(Err(why)) => why,
+                                        _ => C::nth_root_hint(),
+                                    },
+                                })
+                            }
+                        },
+                        Err(error) => {
+                            return Err(ExprError::Limit {
+                                pos: self.pos,
+                                error,
+                            })
+                        }
+                    };
+                    return constant_power(root, k, self.pos, exp.pos);
+                }
                 let k = exponent_value(exp)?;
                 let b = base.eval_constant::<C>()?;
                 constant_power(b, k, self.pos, exp.pos)
@@ -370,6 +412,59 @@ pub(super) fn exponent_value(e: &Expr) -> Result<i64, ExprError> {
         }
         None => Err(limit(format!("an integer of {} bits", q.numer().bits()))),
     }
+}
+
+/// The value of the power `e` when its exponent `exp` is a constant that is not an integer
+/// (`2^(1/3)`): the constant power of [`Expr::eval_constant`], or the error of an exponent
+/// that is not an integer (a non-constant base takes integer exponents only); `None` for an
+/// integer exponent or one that is not constant.
+pub(super) fn fractional_power<C: Coefficient>(
+    e: &Expr,
+    exp: &Expr,
+) -> Option<Result<C, ExprError>> {
+    match fractional_exponent(exp) {
+        Ok(None) => None,
+        Err(err) => Some(Err(err)),
+        Ok(Some((k, n))) => Some(match e.eval_constant::<C>() {
+            Err(ExprError::NotConstant { .. }) => Err(ExprError::BadExponent {
+                pos: exp.pos,
+                found: match &e.kind {
+                    ExprKind::Pow(base, _) => format!("{k}/{n} of the non-constant {base}"),
+                    _ => format!("{k}/{n}"),
+                },
+            }),
+            value => value,
+        }),
+    }
+}
+
+/// A constant exponent `k/n` that is not an integer (`1/3`, `-2/5`) as `(k, n)`, the index
+/// within the `algebraic-degree` limit and `|k|` within the `exponent` limit; `None` for any
+/// other exponent (an integer, or not a constant: [`exponent_value`] judges those).
+///
+/// # Errors
+/// A limit exceeded.
+pub(super) fn fractional_exponent(e: &Expr) -> Result<Option<(i64, u32)>, ExprError> {
+    let Ok(q) = e.eval_constant::<Rational>() else {
+        return Ok(None);
+    };
+    if q.is_integer() {
+        return Ok(None);
+    }
+    let limit = |error| ExprError::Limit { pos: e.pos, error };
+    let n = q.denom();
+    limits::ALGEBRAIC_DEGREE
+        .check_usize(n.to_usize().unwrap_or(usize::MAX))
+        .map_err(limit)?;
+    let k = q.numer();
+    let k = k
+        .to_i64()
+        .filter(|k| limits::EXPONENT.check(k.unsigned_abs()).is_ok())
+        .ok_or_else(|| limit(limits::EXPONENT.exceeded(k.to_string())))?;
+    Ok(Some((
+        k,
+        n.to_u32().expect("within the algebraic-degree limit"),
+    )))
 }
 
 /// The `constant-bits` limit on the constant `c`.

@@ -120,6 +120,9 @@ impl Expr {
                 acc
             }
             ExprKind::Pow(base, exp) => {
+                if let Some(c) = super::eval::fractional_power(self, exp) {
+                    return Ok(RatFun::from_poly(Poly::constant(c?)));
+                }
                 let k = exponent_value(exp)?;
                 base.to_ratfun::<C>(vars)?
                     .pow(k)
@@ -208,6 +211,11 @@ impl Expr {
                 acc
             }
             ExprKind::Pow(base, exp) => {
+                if let Some(c) = super::eval::fractional_power(self, exp) {
+                    return Some(Fraction::from_ratfun(&RatFun::from_poly(Poly::constant(
+                        c.ok()?,
+                    ))));
+                }
                 let k = exponent_value(exp).ok()?;
                 base.to_fraction::<C>(vars)?.pow(k)?
             }

@@ -419,7 +419,7 @@ pub enum ExprError {
     /// An exponent that is not a non-negative integer constant.
     #[error(
         "exponent at {pos} must be a non-negative integer constant (or half of one: x^(1/2) is \
-         sqrt(x)), found {found}"
+         sqrt(x); a constant takes any rational exponent: 2^(1/3)), found {found}"
     )]
     BadExponent {
         /// Byte position of the exponent.
@@ -478,6 +478,21 @@ pub enum ExprError {
         /// The argument, printed.
         arg: String,
         /// The coefficient type's hint ([`Coefficient::sqrt_hint`]).
+        hint: &'static str,
+    },
+    /// A root of index 3 or higher (`2^(1/3)`, `\sqrt[3]{2}`) of a constant that has none in the
+    /// coefficient field.
+    #[error(
+        "the root of index {index} of {arg} at {pos} does not lie in the coefficient field{hint}"
+    )]
+    NoRoot {
+        /// Byte position of the power.
+        pos: usize,
+        /// The index.
+        index: u32,
+        /// The radicand, printed.
+        arg: String,
+        /// The coefficient type's hint ([`Coefficient::nth_root_hint`]).
         hint: &'static str,
     },
     /// `sqrt(E)` of a non-constant `E` that is negative at every real point: the root is
@@ -541,6 +556,7 @@ impl ExprError {
             | ExprError::NonConstantSqrt { pos }
             | ExprError::NegativeRadicand { pos, .. }
             | ExprError::NoSqrt { pos, .. }
+            | ExprError::NoRoot { pos, .. }
             | ExprError::Unrepresentable { pos, .. }
             | ExprError::Limit { pos, .. }
             | ExprError::CallLimit { pos, .. } => *pos,

@@ -381,6 +381,8 @@ impl Parser<'_> {
                 Ok(call("binomial", vec![n, k]))
             }
             "sqrt" => {
+                // `\sqrt[n]{x}`: the square root for n = 2, else `x^(1/n)` (of a constant).
+                let mut index = None;
                 if self.cur.tok == Tok::LBracket {
                     self.bump();
                     let n = self.parse_sum()?;
@@ -388,18 +390,38 @@ impl Parser<'_> {
                         return Err(self.unexpected("an operator or ']'"));
                     }
                     self.bump();
-                    if n.eval_constant::<Rational>() != Ok(Rational::from_integer(2)) {
-                        return Err(self.refuse(
-                            n.pos,
-                            "\\sqrt",
-                            format!("the root of index {n} is not supported, only the square root (\\sqrt{{x}} or \\sqrt[2]{{x}})"),
-                        ));
+                    let k = n
+                        .eval_constant::<Rational>()
+                        .ok()
+                        .filter(|k| k.is_integer() && *k >= Rational::from_integer(2));
+                    match k {
+                        Some(k) if k == Rational::from_integer(2) => {}
+                        Some(k) => index = Some((k, n.pos)),
+                        None => {
+                            return Err(self.refuse(
+                                n.pos,
+                                "\\sqrt",
+                                format!("the index of the root must be an integer constant of at least 2, not {n}"),
+                            ))
+                        }
                     }
                 }
                 let arg = self.tex_arg(text, false)?;
-                Ok(Expr {
-                    kind: ExprKind::Sqrt(Box::new(arg)),
-                    pos: t.start,
+                Ok(match index {
+                    None => Expr {
+                        kind: ExprKind::Sqrt(Box::new(arg)),
+                        pos: t.start,
+                    },
+                    Some((k, pos)) => {
+                        let exponent = Expr {
+                            pos,
+                            ..Expr::number(k.recip().expect("the index is at least 2"))
+                        };
+                        Expr {
+                            kind: ExprKind::Pow(Box::new(arg), Box::new(exponent)),
+                            pos: t.start,
+                        }
+                    }
                 })
             }
             w if TRIG_FUNCTIONS.contains(&w) => {

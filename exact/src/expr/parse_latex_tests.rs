@@ -64,7 +64,9 @@ fn fractions_roots_powers_binomials() {
         "\\binom{n}{2} + \\binom52",
         "binomial(n, 2) + binomial(5, 2)",
     );
-    refused("\\sqrt[3]{x}", "only the square root");
+    same("\\sqrt[3]{x} + \\sqrt[2]{y}", "x^(1/3) + sqrt(y)");
+    refused("\\sqrt[x]{2}", "an integer constant of at least 2");
+    refused("\\sqrt[1]{2}", "an integer constant of at least 2");
     refused("\\sqrt12", "write {12}");
     refused("\\frac123", "write {23}");
 }

@@ -70,12 +70,12 @@ fn error_messages() {
     assert_eq!(
         err("x^(1/3)"),
         "exponent at 2 must be a non-negative integer constant (or half of one: x^(1/2) is \
-         sqrt(x)), found 1/3"
+         sqrt(x); a constant takes any rational exponent: 2^(1/3)), found 1/3 of the non-constant x"
     );
     assert_eq!(
         err("x^y"),
         "exponent at 2 must be a non-negative integer constant (or half of one: x^(1/2) is \
-         sqrt(x)), found y"
+         sqrt(x); a constant takes any rational exponent: 2^(1/3)), found y"
     );
     assert_eq!(
         err("x^10001"),
@@ -280,7 +280,7 @@ fn constant_evaluation() {
     assert_eq!(
         ev("2^x").unwrap_err().to_string(),
         "exponent at 2 must be a non-negative integer constant (or half of one: x^(1/2) is \
-         sqrt(x)), found x"
+         sqrt(x); a constant takes any rational exponent: 2^(1/3)), found x"
     );
 }
 

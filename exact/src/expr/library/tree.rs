@@ -173,10 +173,19 @@ pub fn count_nodes(e: &Expr) -> usize {
     n
 }
 
-/// Whether the tree contains `sqrt` (then the radical coefficient field is needed).
+/// Whether the tree contains `sqrt` or a power that is not an integer (`2^(1/3)`): then the
+/// radical coefficient field, or the algebraic numbers, are needed.
 pub fn has_sqrt(e: &Expr) -> bool {
     let mut found = false;
-    map_tree(e, &mut |x| found |= matches!(x.kind, ExprKind::Sqrt(_)));
+    map_tree(e, &mut |x| {
+        found |= match &x.kind {
+            ExprKind::Sqrt(_) => true,
+            ExprKind::Pow(_, exp) => exp
+                .eval_constant::<crate::Rational>()
+                .is_ok_and(|q| !q.is_integer()),
+            _ => false,
+        }
+    });
     found
 }
 
