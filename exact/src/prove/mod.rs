@@ -68,6 +68,7 @@
 //! catalogue all go through it, so that they share one counter-example rule.
 
 mod cells;
+mod chart;
 mod constants;
 mod domain;
 mod factored;

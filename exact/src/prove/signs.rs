@@ -2,9 +2,9 @@
 //!
 //! * a non-zero constant has its sign;
 //! * a polynomial in one variable `v` with rational coefficients: its real roots are isolated
-//!   exactly and its sign on each open gap between them is known ([`UPoly::sign_chart`]); the
-//!   gaps and roots that meet the domain of `v` (compared with its rational ends exactly) give
-//!   the sign: `1 - x > 0` on `-1 < x < 1`, `t (1 - t) >= 0` on `0 <= t <= 1`;
+//!   exactly and its sign on each open gap between them is known; the gaps and roots that meet
+//!   the domain of `v` (compared with its rational ends exactly, [`super::chart`]) give the
+//!   sign: `1 - x > 0` on `-1 < x < 1`, `t (1 - t) >= 0` on `0 <= t <= 1`;
 //! * a sum of terms `c v1^e1 ... vk^ek`, each of a known sign on the box (an even power is
 //!   `>= 0`, an odd power has the sign of its variable's domain), all of one sign;
 //! * a product: the polynomial factored square-free ([`crate::poly::square_free`]), the sign of
@@ -15,9 +15,9 @@
 //! domain, other than a variable itself, is recorded as a [`SignFact`], so that a proof names
 //! the sign facts it used.
 
+use super::chart::{chart, univariate, Cell};
 use super::{PointField, VarDomain};
 use crate::poly::{square_free, Poly, Var};
-use crate::univariate::{compare_with_real_root, RootInterval, UPoly};
 use crate::{Radical, Rational};
 use exactcheck_core::{Ring, Sign};
 use std::cmp::Ordering;
@@ -243,86 +243,31 @@ fn term_sum_sign<C: PointField>(p: &Poly<C>, signs: &[VarDomain]) -> Option<Sign
 }
 
 /// The sign of `p`, a polynomial in the one variable `v` with rational coefficients, on the
-/// domain `d` of `v`: from its sign chart, the gaps and roots of `p` that meet the domain.
+/// domain `d` of `v`: from its sign chart on the domain ([`chart`]), the gaps and roots of `p`
+/// that meet it.
 fn univariate_sign<C: PointField>(p: &Poly<C>, v: Var, d: &VarDomain) -> Option<SignOn> {
-    let rational = |c: &C| c.to_radical().and_then(|r| r.to_rational());
-    if !p.coefficients().iter().all(|c| rational(c).is_some()) {
-        return None;
-    }
-    let q = p.map_coeffs(|c| rational(c).expect("checked to be rational above"));
-    let u = UPoly::from_poly(&q, v).ok()?;
-    let chart = u.sign_chart();
-    let point = matches!((&d.lower, &d.upper), (Some((a, _)), Some((b, _))) if a == b);
+    let u = univariate(p, v)?;
     let mut direction: Option<bool> = None;
     let mut strict = true;
-    for (i, sign) in chart.gaps.iter().enumerate() {
-        let left = i.checked_sub(1).map(|k| &chart.roots[k].interval);
-        let right = chart.roots.get(i).map(|r| &r.interval);
-        if !gap_meets(&u, left, right, d, point) {
-            continue;
-        }
-        let positive = match sign {
-            Sign::Positive => true,
-            Sign::Negative => false,
-            Sign::Zero => return None,
+    for cell in chart(&u, d) {
+        let positive = match cell {
+            Cell::Root(_) => {
+                strict = false;
+                continue;
+            }
+            Cell::Gap { sign, .. } => match sign {
+                Sign::Positive => true,
+                Sign::Negative => false,
+                Sign::Zero => return None,
+            },
         };
         if direction.is_some_and(|dir| dir != positive) {
             return None;
         }
         direction = Some(positive);
     }
-    if chart.roots.iter().any(|r| root_in(&u, &r.interval, d)) {
-        strict = false;
-    }
     // A point domain at a root: p is 0 there, `>= 0` (and `<= 0`).
     Some(SignOn::from_parts(direction.unwrap_or(true), strict))
-}
-
-/// Whether the open gap between the roots `left` and `right` (an infinity when `None`) meets
-/// the domain `d` (a single point when `point`).
-fn gap_meets(
-    u: &UPoly,
-    left: Option<&RootInterval>,
-    right: Option<&RootInterval>,
-    d: &VarDomain,
-    point: bool,
-) -> bool {
-    let lower = d.lower.as_ref().map(|(a, _)| a);
-    let upper = d.upper.as_ref().map(|(b, _)| b);
-    // x above the gap's left end / below its right end.
-    let above_left =
-        |x: &Rational| left.is_none_or(|r| compare_with_real_root(u, r, x) == Ordering::Greater);
-    let below_right =
-        |x: &Rational| right.is_none_or(|r| compare_with_real_root(u, r, x) == Ordering::Less);
-    if point {
-        let a = lower.expect("a point domain has a lower end");
-        above_left(a) && below_right(a)
-    } else {
-        // An open gap meets an interval of positive length exactly when it starts below the
-        // interval's upper end and ends above its lower end.
-        upper.is_none_or(above_left) && lower.is_none_or(below_right)
-    }
-}
-
-/// Whether the real root in `r` lies in the domain `d` (its ends compared exactly).
-fn root_in(u: &UPoly, r: &RootInterval, d: &VarDomain) -> bool {
-    let above =
-        d.lower
-            .as_ref()
-            .is_none_or(|(lo, strict)| match compare_with_real_root(u, r, lo) {
-                Ordering::Less => true,
-                Ordering::Equal => !strict,
-                Ordering::Greater => false,
-            });
-    let below =
-        d.upper
-            .as_ref()
-            .is_none_or(|(hi, strict)| match compare_with_real_root(u, r, hi) {
-                Ordering::Greater => true,
-                Ordering::Equal => !strict,
-                Ordering::Less => false,
-            });
-    above && below
 }
 
 #[cfg(test)]
@@ -330,6 +275,7 @@ mod tests {
     use super::*;
     use crate::expr::parse_poly;
     use crate::poly::Vars;
+    use crate::prove::chart::tests::dom as interval;
 
     fn p(text: &str, vars: &mut Vars) -> Poly<Rational> {
         parse_poly(text, vars).unwrap()
@@ -337,14 +283,6 @@ mod tests {
 
     fn r(n: i64, d: i64) -> Rational {
         Rational::new(n, d).unwrap()
-    }
-
-    fn interval(lo: Option<(Rational, bool)>, hi: Option<(Rational, bool)>) -> VarDomain {
-        VarDomain {
-            lower: lo,
-            upper: hi,
-            integer: false,
-        }
     }
 
     /// The sign of `text` on `dom` (variables `x`, `y`), and the facts recorded.

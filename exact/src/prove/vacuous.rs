@@ -9,24 +9,24 @@
 //!   `N D >= 0`. For a non-constant `D` that condition also holds where `D = N = 0`: it is
 //!   weaker than the real one, so it shows emptiness but not a point.
 //! * **One variable at a time.** The conditions in the single variable `x`, with its domain,
-//!   are decided exactly: the real roots of the product of their polynomials and of the
-//!   domain's ends are isolated, and every root and one rational point between consecutive
-//!   roots is tested (the signs of the polynomials are constant between roots; at an
-//!   irrational root they are decided by [`sign_at_real_root`]). When no candidate satisfies
-//!   them, no `x` does, and so no point satisfies all the conditions. Relations that have no
+//!   are decided exactly on the sign chart of the product of their polynomials on the domain
+//!   ([`super::chart`]): every root in the domain and one rational point of every gap is
+//!   tested (the signs of the polynomials are constant on a gap; at an irrational root they
+//!   are decided by [`sign_at_real_root`]). When no root or sample satisfies them, no `x`
+//!   does, and so no point satisfies all the conditions. Relations that have no
 //!   real value of `x` by themselves are not counted as empty: they are read over the complex
 //!   numbers, as their consistency is (`s^2 = -1` for the imaginary unit).
 //! * **A point.** When every condition is in one variable and each variable has a value, the
 //!   set is not empty; otherwise nothing is claimed here ([`Points::Unknown`]) and the
 //!   counter-example search may still find a point ([`super::witness`]).
 
+use super::chart::{chart, rational, univariate, Cell};
 use super::hypotheses::root_parts;
 use super::{PointField, VarDomain};
 use crate::poly::{Poly, Var};
-use crate::univariate::{compare_with_real_root, sign_at_real_root, RootInterval, UPoly};
-use crate::{Radical, Rational};
+use crate::univariate::{sign_at_real_root, UPoly};
+use crate::Rational;
 use exactcheck_core::{Ring, Sign};
-use std::cmp::Ordering;
 
 /// The largest degree of the product of a variable's conditions that [`points`] decides
 /// exactly (beyond it nothing is claimed).
@@ -159,17 +159,6 @@ fn complex_only<C: PointField>(x: Var, conds: &[&Condition<C>]) -> bool {
     !relations.is_empty() && one_variable(x, &relations, &VarDomain::all()) == Some(false)
 }
 
-/// The polynomial with rational coefficients, when it has them.
-fn rational<C: PointField>(p: &Poly<C>) -> Option<Poly<Rational>> {
-    let cs: Vec<Rational> = p
-        .coefficients()
-        .iter()
-        .map(|c| c.to_radical().and_then(|r| r.to_rational()))
-        .collect::<Option<_>>()?;
-    let mut it = cs.into_iter();
-    Some(p.map_coeffs(|_| it.next().expect("one coefficient each")))
-}
-
 /// Whether some `x` in `d` satisfies `conds` (each a polynomial in `x` alone); `None` when
 /// not decided (coefficients not rational, an integer domain, a degree past
 /// [`MAX_CONDITION_DEGREE`]).
@@ -179,22 +168,13 @@ fn one_variable<C: PointField>(x: Var, conds: &[&Condition<C>], d: &VarDomain) -
     }
     let mut tests: Vec<(UPoly, Kind)> = Vec::new();
     for c in conds {
-        tests.push((UPoly::from_poly(&rational(&c.poly)?, x).ok()?, c.kind));
+        tests.push((univariate(&c.poly, x)?, c.kind));
     }
-    // The product of the conditions' polynomials and of `x - end` for each end of the domain:
-    // between its consecutive roots every condition and the domain keep one truth value.
+    // The product of the conditions' polynomials: on each gap of its chart on the domain every
+    // condition keeps one truth value.
     let mut product = Poly::<Rational>::one();
-    let xv = Poly::<Rational>::var(x);
-    let ends: Vec<&Rational> = [&d.lower, &d.upper]
-        .into_iter()
-        .flatten()
-        .map(|(c, _)| c)
-        .collect();
     let mut degree = 0;
-    for p in conds.iter().filter_map(|c| rational(&c.poly)).chain(
-        ends.iter()
-            .map(|c| xv.sub_ref(&Poly::constant((*c).clone()))),
-    ) {
+    for p in conds.iter().filter_map(|c| rational(&c.poly)) {
         if p.is_constant() {
             continue;
         }
@@ -205,74 +185,13 @@ fn one_variable<C: PointField>(x: Var, conds: &[&Condition<C>], d: &VarDomain) -
         product = product.mul_ref(&p);
     }
     let prod = UPoly::from_poly(&product, x).ok()?;
-    let at_rational = |t: &Rational| {
-        d.contains(&Radical::from(t)) && tests.iter().all(|(q, k)| k.holds(q.sign_at(t)))
+    let holds = |cell: &Cell| match cell {
+        Cell::Gap { sample, .. } => tests.iter().all(|(q, k)| k.holds(q.sign_at(sample))),
+        Cell::Root(r) => tests
+            .iter()
+            .all(|(q, k)| k.holds(sign_at_real_root(q, &prod, r))),
     };
-    let roots = prod.isolate_roots();
-    if roots.is_empty() {
-        return Some(at_rational(&Rational::ZERO));
-    }
-    let one = Rational::ONE;
-    let mut candidates = vec![&roots[0].lo - &one, &roots[roots.len() - 1].hi + &one];
-    for pair in roots.windows(2) {
-        candidates.push(between(&prod, &pair[0], &pair[1]));
-    }
-    if candidates.iter().any(at_rational) {
-        return Some(true);
-    }
-    let at_root = |r: &RootInterval| {
-        if let Some(t) = r.exact_value() {
-            return at_rational(t);
-        }
-        // An irrational root is no end of the domain (the ends are rational).
-        let above = d
-            .lower
-            .as_ref()
-            .is_none_or(|(lo, _)| compare_with_real_root(&prod, r, lo) == Ordering::Less);
-        let below = d
-            .upper
-            .as_ref()
-            .is_none_or(|(hi, _)| compare_with_real_root(&prod, r, hi) == Ordering::Greater);
-        above
-            && below
-            && tests
-                .iter()
-                .all(|(q, k)| k.holds(sign_at_real_root(q, &prod, r)))
-    };
-    Some(roots.iter().any(at_root))
-}
-
-/// A rational strictly between the consecutive roots of `p` isolated by `left` and `right`.
-fn between(p: &UPoly, left: &RootInterval, right: &RootInterval) -> Rational {
-    let half = Rational::new(1, 2).expect("2 is not zero");
-    let (a, b) = (&left.hi, &right.lo);
-    if a < b {
-        return (a + b) * &half;
-    }
-    // The intervals touch at `a = b`: an open end is no root, an exact one is the root itself.
-    match (left.is_exact(), right.is_exact()) {
-        (false, false) => a.clone(),
-        (true, _) => {
-            let mut r = right.clone();
-            loop {
-                let mid = (a + &r.hi) * &half;
-                if compare_with_real_root(p, &r, &mid) == Ordering::Less {
-                    return mid;
-                }
-                r = p.refine(&r, &(r.width() * &half));
-            }
-        }
-        (false, true) => {
-            let mut l = left.clone();
-            loop {
-                let mid = (&l.lo + b) * &half;
-                if compare_with_real_root(p, &l, &mid) == Ordering::Greater {
-                    return mid;
-                }
-                l = p.refine(&l, &(l.width() * &half));
-            }
-        }
-    }
+    Some(chart(&prod, d).iter().any(holds))
 }
 
 #[cfg(test)]
