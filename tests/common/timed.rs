@@ -189,6 +189,14 @@ pub fn parallel_map<T: Sync, R: Send>(items: &[T], f: impl Fn(&T) -> R + Sync) -
         .collect()
 }
 
+/// [`prove_json`] with the verdict (`"proved"`, `"fails"`, ...) taken out: exit status, verdict
+/// and the JSON.
+pub fn prove_verdict(args: &[&str]) -> (i32, String, serde_json::Value) {
+    let (code, j) = prove_json(args);
+    let v = j["verdict"].as_str().unwrap_or("?").to_string();
+    (code, v, j)
+}
+
 /// Runs `exactcheck prove ARGS... --json`, which must print nothing on standard error: its exit
 /// status and the one JSON object it prints.
 pub fn prove_json(args: &[&str]) -> (i32, serde_json::Value) {

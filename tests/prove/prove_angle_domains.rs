@@ -7,14 +7,7 @@
 
 use crate::timed;
 
-use timed::{prove_json, run_text as run};
-
-/// `prove ARGS --json`: exit status, verdict, and the JSON.
-fn verdict(args: &[&str]) -> (i32, String, serde_json::Value) {
-    let (code, j) = prove_json(args);
-    let v = j["verdict"].as_str().unwrap_or("?").to_string();
-    (code, v, j)
-}
+use timed::{prove_verdict as verdict, run_text as run};
 
 /// The exact value of `name` at the counter-example (`"0"`, `"-1"`, `"sqrt(2)/2"`).
 fn at<'a>(j: &'a serde_json::Value, name: &str) -> &'a str {

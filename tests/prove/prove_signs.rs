@@ -6,14 +6,7 @@
 
 use crate::timed;
 
-use timed::{prove_json, run_text as run};
-
-/// The verdict of `prove ARGS --json` and its exit status.
-fn verdict(args: &[&str]) -> (i32, String, serde_json::Value) {
-    let (code, j) = prove_json(args);
-    let v = j["verdict"].as_str().unwrap_or("?").to_string();
-    (code, v, j)
-}
+use timed::{prove_verdict as verdict, run_text as run};
 
 #[test]
 fn a_root_of_a_fraction_uses_the_sign_of_its_denominator_on_the_interval() {
