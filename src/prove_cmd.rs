@@ -56,6 +56,7 @@ use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::{Algebraic, Radical, Rational};
 use random::random_test;
 use serde_json::json;
+use std::cell::RefCell;
 use std::fmt::Display;
 use std::process::ExitCode;
 
@@ -78,6 +79,12 @@ pub struct ProveArgs {
     /// Inconsistent relations are an error.
     #[arg(long = "where", value_name = "RELATION", allow_hyphen_values = true)]
     pub relations: Vec<String>,
+    /// A definition `NAME = VALUE` the sides and relations may use, as a claims file's
+    /// `[define]` entry (repeatable): a vector `u = [u1, u2, u3]`, a matrix
+    /// `M = [[a, b], [c, d]]`, a scalar, or a function `f(t) = t^2`. A bold name of LaTeX input
+    /// (`\mathbf{u}`, `\vec{u}`) must be defined: it names a vector or a matrix.
+    #[arg(long = "define", value_name = "NAME=VALUE", allow_hyphen_values = true)]
+    pub defines: Vec<String>,
     /// Instead of expanding, evaluate both sides at K random points (1 to 100000) modulo a prime
     /// drawn at random from [2^62, 2^63) for this run: `fails` at a non-zero point, `holds`
     /// when the proved error bound is below 2^-30, else `undecided` with the bound. Relations
@@ -153,8 +160,8 @@ pub fn split_where(text: &str) -> Vec<String> {
 
 /// Parses `--where #i` (`what` names it): `A = B`, or a chain `a < v`, `v >= a`, `a <= v < b`
 /// with a variable `v` and constants `a`, `b`.
-fn parse_where(text: &str, what: &str) -> Result<Where, Error> {
-    parse_where_with(text, what, &parse)
+fn parse_where(text: &str, what: &str, defs: &RefCell<library::Defs>) -> Result<Where, Error> {
+    parse_where_with(text, what, &|t, w| parse_in(defs, t, w))
 }
 
 /// `parse_where` with the expression parser given (the claims files resolve their
@@ -277,7 +284,13 @@ pub fn fresh_seed() -> u64 {
 /// `bezier`, matrices, ...) to a scalar expression; a free variable `pi`, `e` or `i` is refused
 /// ([`reserved_constant`](exactcheck_exact::expr::reserved_constant)).
 fn parse(text: &str, what: &str) -> Result<Expr, Error> {
-    let e = library::Defs::default()
+    parse_in(&RefCell::default(), text, what)
+}
+
+/// `parse` with the definitions of `--define`.
+fn parse_in(defs: &RefCell<library::Defs>, text: &str, what: &str) -> Result<Expr, Error> {
+    let e = defs
+        .borrow_mut()
         .resolve_scalar(text)
         .map_err(|e| Error::Input(format!("{what}: {e}")))?;
     match first_reserved([&e]) {
@@ -288,14 +301,44 @@ fn parse(text: &str, what: &str) -> Result<Expr, Error> {
 
 /// Parses a side of `prove` (named `what` in messages) with the library functions resolved: a
 /// scalar, a vector or a matrix; a free variable `pi`, `e` or `i` in a component is refused.
-fn parse_value(text: &str, what: &str) -> Result<library::Val, Error> {
-    let v = library::Defs::default()
+fn parse_value(
+    text: &str,
+    what: &str,
+    defs: &RefCell<library::Defs>,
+) -> Result<library::Val, Error> {
+    let v = defs
+        .borrow_mut()
         .resolve_text(text)
         .map_err(|e| Error::Input(format!("{what}: {e}")))?;
     match first_reserved(&v.components()) {
         Some(why) => Err(Error::Input(format!("{what}: {why}"))),
         None => Ok(v),
     }
+}
+
+/// The definitions of `--define NAME=VALUE` (in the order given), each checked at once.
+fn definitions(texts: &[String]) -> Result<library::Defs, Error> {
+    let mut entries = Vec::new();
+    for (i, text) in texts.iter().enumerate() {
+        let Some((name, value)) = text
+            .split_once('=')
+            .filter(|(n, v)| !n.trim().is_empty() && !v.trim().is_empty())
+        else {
+            return Err(Error::Input(format!(
+                "--define #{}: {text:?} must have the form NAME = VALUE (e.g. 'u = [u1, u2, u3]')",
+                i + 1
+            )));
+        };
+        entries.push((
+            name.trim().to_string(),
+            library::DefText::Scalar(value.trim().to_string()),
+        ));
+    }
+    let mut defs = library::Defs::new(entries)
+        .map_err(|(name, why)| Error::Input(format!("--define {name}: {why}")))?;
+    defs.resolve_all()
+        .map_err(|e| Error::Input(format!("--define: {e}")))?;
+    Ok(defs)
 }
 
 /// The two sides of `prove`, component by component, and their one shape.
@@ -367,12 +410,13 @@ pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
         Some((l, r)) => (l.as_str(), Some(r)),
         None => (args.lhs.as_str(), args.rhs.as_ref()),
     };
-    let lhs_value = parse_value(lhs_text, "LHS")?;
+    let defs = RefCell::new(definitions(&args.defines)?);
+    let lhs_value = parse_value(lhs_text, "LHS", &defs)?;
     let shape = lhs_value.dims();
     let lhs = lhs_value.components();
     let rhs = match rhs_text {
         Some(r) => {
-            let v = parse_value(r, "RHS")?;
+            let v = parse_value(r, "RHS", &defs)?;
             if v.dims() != shape {
                 return Err(Error::Input(format!(
                     "the sides differ in shape: LHS is {shape}, RHS is {}; an identity compares sides of one shape component by component",
@@ -394,7 +438,7 @@ pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
     for (i, r) in texts {
         let r = &r;
         let what = format!("--where #{}", i + 1);
-        match parse_where(r, &what)? {
+        match parse_where(r, &what, &defs)? {
             Where::Relation(a, b) => relations.push((a, b)),
             Where::NonZero(a, b) => nonzero.push((a, b, r.trim().to_string())),
             Where::Domain(v, d) => {
