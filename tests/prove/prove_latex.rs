@@ -9,12 +9,17 @@ use timed::run_text as run;
 
 /// `exactcheck prove ARGS` says "proved" with exit status 0 for each argument list.
 pub(crate) fn each_is_proved(cases: &[&[&str]]) {
+    each_gives(cases, 0, "proved");
+}
+
+/// Runs `prove` with each list of arguments and checks the exit status and the verdict.
+pub(crate) fn each_gives(cases: &[&[&str]], status: i32, verdict: &str) {
     for args in cases {
         let mut all = vec!["prove"];
         all.extend_from_slice(args);
         let (code, out, err) = run(&all);
-        assert_eq!(code, 0, "{args:?}: {out}{err}");
-        assert!(out.starts_with("proved"), "{args:?}: {out}");
+        assert_eq!(code, status, "{args:?}: {out}{err}");
+        assert!(out.starts_with(verdict), "{args:?}: {out}");
     }
 }
 

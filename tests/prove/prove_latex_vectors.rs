@@ -5,7 +5,7 @@
 
 use crate::timed;
 
-use crate::prove_latex::each_is_proved;
+use crate::prove_latex::{each_gives, each_is_proved};
 use timed::run_text as run;
 
 const U: &str = "u = [u1, u2, u3]";
@@ -86,7 +86,7 @@ fn vector_identities_typed_in_latex_are_proved() {
 
 #[test]
 fn false_twins_fail_at_an_exact_point() {
-    for args in [
+    each_gives(&[
         &[
             "\\mathbf{u}\\times\\mathbf{v} = \\mathbf{v}\\times\\mathbf{u}",
             "--define",
@@ -112,13 +112,7 @@ fn false_twins_fail_at_an_exact_point() {
         ],
         &["M^2", "[[m11^2, m12^2], [m21^2, m22^2]]", "--define", M],
         &["det(M^2)", "2*det(M)", "--define", M],
-    ] {
-        let mut all = vec!["prove"];
-        all.extend_from_slice(args);
-        let (code, out, err) = run(&all);
-        assert_eq!(code, 1, "{args:?}: {out}{err}");
-        assert!(out.starts_with("fails: "), "{args:?}: {out}");
-    }
+    ], 1, "fails: ");
 }
 
 #[test]
