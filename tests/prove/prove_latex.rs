@@ -12,6 +12,19 @@ pub(crate) fn each_is_proved(cases: &[&[&str]]) {
     each_gives(cases, 0, "proved");
 }
 
+/// `exactcheck prove ARGS` is refused with exit status 2 and one line containing the needle,
+/// for each arguments and needle.
+pub(crate) fn each_is_refused(cases: &[(&[&str], &str)]) {
+    for (args, needle) in cases {
+        let mut all = vec!["prove"];
+        all.extend_from_slice(args);
+        let (code, out, err) = run(&all);
+        assert_eq!(code, 2, "{args:?}: {out}{err}");
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(err.contains(needle), "{args:?}: {err}");
+    }
+}
+
 /// Runs `prove` with each list of arguments and checks the exit status and the verdict.
 pub(crate) fn each_gives(cases: &[&[&str]], status: i32, verdict: &str) {
     for args in cases {
@@ -70,7 +83,7 @@ fn formulas_as_typed_in_latex_are_decided() {
 
 #[test]
 fn latex_refusals_are_one_line_naming_the_problem() {
-    for (args, needle) in [
+    each_is_refused(&[
         (&["\\log x", "1"][..], "\\log"),
         (&["\\left| x = x"], "not closed"),
         (&["\\sqrt[3]{8} = 2"], "only the square root"),
@@ -90,14 +103,7 @@ fn latex_refusals_are_one_line_naming_the_problem() {
             &["diff(integrate(t^2, t, 0, x), t)", "0"],
             "t is not a free variable",
         ),
-    ] {
-        let mut all = vec!["prove"];
-        all.extend_from_slice(args);
-        let (code, out, err) = run(&all);
-        assert_eq!(code, 2, "{args:?}: {out}{err}");
-        assert_eq!(err.lines().count(), 1, "{err}");
-        assert!(err.contains(needle), "{args:?}: {err}");
-    }
+    ]);
 }
 
 #[test]
