@@ -58,6 +58,16 @@ expressions |= {
 for e in sorted(expressions):
     put("expr_roundtrip", e)
 put("prove", "e\nsqrt(2)*sqrt(8)\n4")
+# Vectors and matrices as printed in LaTeX, with the definitions of their bold names.
+for seed in [
+    "e\n\\|\\mathbf{u}\\times\\mathbf{v}\\|^2\n\\|\\mathbf{u}\\|^2\\|\\mathbf{v}\\|^2 - (\\mathbf{u}\\cdot\\mathbf{v})^2\ndef u = [u1, u2, u3]\ndef v = [v1, v2, v3]",
+    "e\n\\vec{a}\\times(\\vec{b}\\times\\vec{c})\n\\vec{b}(\\vec{a}\\cdot\\vec{c}) - \\vec{c}(\\vec{a}\\cdot\\vec{b})\ndef a = [a1, a2, a3]\ndef b = [b1, b2, b3]\ndef c = [c1, c2, c3]",
+    "e\n\\det(\\mathbf{M}^2)\n\\det(\\mathbf{M})^2\ndef M = [[a, b], [c, d]]",
+    "e\n\\mathbf{a}\\cdot\\mathbf{b}\\times\\mathbf{c}\n0\ndef a = [1, 2, 3]\ndef b = [x, y, z]\ndef c = [3, 2, 1]",
+    "e\n\\lVert\\vec{x}\\rVert\n\\mathbf{y}\\cdot\\mathbf{y}",
+    "e\nM^0\n[[1, 0], [0, 1]]\ndef M = [[a, b], [c, d]]",
+]:
+    put("prove", seed)
 put("prove", "e\n(x+y)^3\nx^3+3x^2y+3x y^2+y^3\n0 <= x <= 1")
 put("prove", "r\nc^4 - s^4\nc^2 - s^2\nc^2 + s^2 = 1")
 # Inputs the fuzzer found slow, kept as seeds (a 74th power of a 4-term base that

@@ -37,7 +37,7 @@ exactcheck_core::declare_limits! {
 /// Every limit, the library crates' and the tool's, in the order of the table in docs/limits.md.
 pub fn all() -> &'static [&'static Limit] {
     use core_limits as c;
-    static ALL: [&Limit; 30] = [
+    static ALL: [&Limit; 31] = [
         &FILE_SIZE,
         &c::DEPTH,
         &c::DIGITS,
@@ -64,6 +64,7 @@ pub fn all() -> &'static [&'static Limit] {
         &SAMPLES,
         &POINTS,
         &c::BERNSTEIN_DEGREE,
+        &c::MATRIX_POWER,
         &RULED_WORK,
         &PH_BITS,
         &c::MEMORY,

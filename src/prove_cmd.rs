@@ -60,6 +60,7 @@ use exactcheck_exact::ratfun::RatFun;
 use exactcheck_exact::{Algebraic, Radical, Rational};
 use random::random_test;
 use serde_json::json;
+use std::cell::RefCell;
 use std::fmt::Display;
 use std::process::ExitCode;
 
@@ -83,6 +84,12 @@ pub struct ProveArgs {
     /// Inconsistent relations are an error.
     #[arg(long = "where", value_name = "RELATION", allow_hyphen_values = true)]
     pub relations: Vec<String>,
+    /// A definition `NAME = VALUE` the sides and relations may use, as a claims file's
+    /// `[define]` entry (repeatable): a vector `u = [u1, u2, u3]`, a matrix
+    /// `M = [[a, b], [c, d]]`, a scalar, or a function `f(t) = t^2`. A bold name of LaTeX input
+    /// (`\mathbf{u}`, `\vec{u}`) must be defined: it names a vector or a matrix.
+    #[arg(long = "define", value_name = "NAME=VALUE", allow_hyphen_values = true)]
+    pub defines: Vec<String>,
     /// Instead of expanding, evaluate both sides at K random points (1 to 100000) modulo a prime
     /// drawn at random from [2^62, 2^63) for this run: `fails` at a non-zero point, `holds`
     /// when the proved error bound is below 2^-30, else `undecided` with the bound. Relations
@@ -115,7 +122,13 @@ pub fn fresh_seed() -> u64 {
 /// `bezier`, matrices, ...) to a scalar expression; a free variable `pi`, `e` or `i` is refused
 /// ([`reserved_constant`](exactcheck_exact::expr::reserved_constant)).
 fn parse(text: &str, what: &str) -> Result<Expr, Error> {
-    let e = library::Defs::default()
+    parse_in(&RefCell::default(), text, what)
+}
+
+/// `parse` with the definitions of `--define`.
+fn parse_in(defs: &RefCell<library::Defs>, text: &str, what: &str) -> Result<Expr, Error> {
+    let e = defs
+        .borrow_mut()
         .resolve_scalar(text)
         .map_err(|e| Error::Input(format!("{what}: {e}")))?;
     match first_reserved([&e]) {
@@ -129,15 +142,10 @@ fn parse(text: &str, what: &str) -> Result<Expr, Error> {
 fn parse_value(
     text: &str,
     what: &str,
-    fixed: &[(String, Rational)],
+    defs: &RefCell<library::Defs>,
 ) -> Result<library::Val, Error> {
-    let entries = fixed
-        .iter()
-        .map(|(n, v)| (n.clone(), library::DefText::Scalar(format!("({v})"))))
-        .collect();
-    let mut defs = library::Defs::new(entries)
-        .map_err(|(head, e)| Error::Input(format!("{what}: {head}: {e}")))?;
     let v = defs
+        .borrow_mut()
         .resolve_text(text)
         .map_err(|e| Error::Input(format!("{what}: {e}")))?;
     match first_reserved(&v.components()) {
@@ -170,17 +178,18 @@ fn fixed_values(relations: &[(Expr, Expr)]) -> Vec<(String, Rational)> {
 /// name the LaTeX side lacks (`uv` in `2uv`), and the LaTeX reading only adds letters the
 /// LaTeX side has (`u` and `v`). A note on standard error says so. A plain side that LaTeX
 /// does not read (`x1`) stays plain.
-/// `fixed` are values substituted for variables ([`fixed_values`]).
+/// The note is left out when `quiet`.
 fn read_sides(
     lhs: &str,
     rhs: Option<&str>,
-    fixed: &[(String, Rational)],
+    defs: &RefCell<library::Defs>,
+    quiet: bool,
 ) -> Result<(library::Val, Option<library::Val>), Error> {
-    let mut l = parse_value(lhs, "LHS", fixed)?;
+    let mut l = parse_value(lhs, "LHS", defs)?;
     let Some(rhs) = rhs else {
         return Ok((l, None));
     };
-    let mut r = parse_value(rhs, "RHS", fixed)?;
+    let mut r = parse_value(rhs, "RHS", defs)?;
     let names = |v: &library::Val| {
         let mut out = Vec::new();
         for e in v.components() {
@@ -193,7 +202,7 @@ fn read_sides(
         if before.iter().all(|n| beside.contains(n)) {
             return None;
         }
-        let v = parse_value(&format!("${plain}$"), what, fixed).ok()?;
+        let v = parse_value(&format!("${plain}$"), what, defs).ok()?;
         let after = names(&v);
         let fits = after
             .iter()
@@ -205,7 +214,7 @@ fn read_sides(
                 .filter(|n| !after.contains(n))
                 .map(|n| format!("'{n}'"))
                 .collect();
-            if fixed.is_empty() {
+            if !quiet {
                 eprintln!(
                     "exactcheck: note: {what} is read as LaTeX, like the other side: adjacent letters multiply ({} {} of one-letter variables)",
                     joined.join(", "),
@@ -221,6 +230,37 @@ fn read_sides(
         _ => {}
     }
     Ok((l, Some(r)))
+}
+
+/// The definitions of `--define NAME=VALUE` (in the order given), each checked at once, and
+/// the values `fixed` for their variables ([`fixed_values`]).
+fn definitions(texts: &[String], fixed: &[(String, Rational)]) -> Result<library::Defs, Error> {
+    let mut entries = Vec::new();
+    for (i, text) in texts.iter().enumerate() {
+        let Some((name, value)) = text
+            .split_once('=')
+            .filter(|(n, v)| !n.trim().is_empty() && !v.trim().is_empty())
+        else {
+            return Err(Error::Input(format!(
+                "--define #{}: {text:?} must have the form NAME = VALUE (e.g. 'u = [u1, u2, u3]')",
+                i + 1
+            )));
+        };
+        entries.push((
+            name.trim().to_string(),
+            library::DefText::Scalar(value.trim().to_string()),
+        ));
+    }
+    entries.extend(
+        fixed
+            .iter()
+            .map(|(n, v)| (n.clone(), library::DefText::Scalar(format!("({v})")))),
+    );
+    let mut defs = library::Defs::new(entries)
+        .map_err(|(name, why)| Error::Input(format!("--define {name}: {why}")))?;
+    defs.resolve_all()
+        .map_err(|e| Error::Input(format!("--define: {e}")))?;
+    Ok(defs)
 }
 
 /// The two sides of `prove`, component by component, and their one shape.
@@ -292,6 +332,7 @@ pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
         Some((l, r)) => (l.as_str(), Some(r)),
         None => (args.lhs.as_str(), args.rhs.as_ref()),
     };
+    let defs = RefCell::new(definitions(&args.defines, &[])?);
     let mut relations = Vec::new();
     let mut nonzero = Vec::new();
     let mut domains: Vec<Domain> = Vec::new();
@@ -303,7 +344,7 @@ pub fn run(args: &ProveArgs) -> Result<ExitCode, Error> {
     for (i, r) in texts {
         let r = &r;
         let what = format!("--where #{}", i + 1);
-        match parse_where(r, &what)? {
+        match parse_where(r, &what, &defs)? {
             Where::Relation(a, b) => relations.push((a, b)),
             Where::NonZero(a, b) => nonzero.push((a, b, r.trim().to_string())),
             Where::Domain(d) => {
@@ -375,7 +416,8 @@ fn decide_sides(
     fixed: &[(String, Rational)],
     (relations, nonzero, domains): Conditions,
 ) -> Result<ExitCode, Error> {
-    let (lhs_value, rhs_value) = read_sides(lhs_text, rhs_text, fixed)?;
+    let defs = RefCell::new(definitions(&args.defines, fixed)?);
+    let (lhs_value, rhs_value) = read_sides(lhs_text, rhs_text, &defs, !fixed.is_empty())?;
     let shape = lhs_value.dims();
     let lhs = lhs_value.components();
     let rhs = match rhs_value {

@@ -243,6 +243,9 @@ declare_limits! {
     BERNSTEIN_DEGREE = ("bernstein-degree", "degree of a Bernstein polynomial or Bezier curve", "", 1_000);
     /// Heap memory of the whole process, in MB (enforced by the command-line tool's allocator).
     MEMORY = ("memory", "memory in use", "MB", 1_536);
+    /// Exponent `k` of a matrix power `M^k`: each squaring multiplies the size of every entry's
+    /// tree by about twice the dimension before anything is expanded.
+    MATRIX_POWER = ("matrix-power", "exponent of a matrix power", "", 64);
 }
 
 /// The limit called `name` in `registry` (a list such as [`all`]).

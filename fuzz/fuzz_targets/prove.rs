@@ -4,7 +4,8 @@
 //!
 //! Input: lines. The first line chooses the mode (`r...`: `--random 8 --seed 1`, `j...`:
 //! exact with `--json`, anything else: exact), the second is LHS, the third RHS (absent or
-//! empty: none), each further line (at most 4) a `--where` relation or domain. Run it with
+//! empty: none), each further line (at most 4) a `--where` relation or domain, or, after
+//! `def `, a `--define NAME = VALUE` (`def u = [u1, u2, u3]`). Run it with
 //! `-close_fd_mask=1`: the verdicts go to standard output.
 #![no_main]
 use exactcheck::prove_cmd::{run, ProveArgs};
@@ -19,12 +20,17 @@ fuzz_target!(|data: &[u8]| {
         return;
     };
     let rhs = lines.next().filter(|r| !r.is_empty());
-    let relations: Vec<String> = lines.take(4).map(str::to_string).collect();
+    let (defines, relations): (Vec<String>, Vec<String>) = lines
+        .take(4)
+        .map(str::to_string)
+        .partition(|l| l.starts_with("def "));
+    let defines = defines.into_iter().map(|l| l[4..].to_string()).collect();
     let random = mode.starts_with('r');
     let args = ProveArgs {
         lhs: lhs.to_string(),
         rhs: rhs.map(str::to_string),
         relations,
+        defines,
         random: random.then_some(8),
         seed: random.then_some(1),
         json: mode.starts_with('j'),

@@ -3,14 +3,15 @@
 //! table ([`var_domains`]), where the domain of an angle of sin, cos and tan, given in multiples
 //! of pi (`0 <= theta <= pi`), becomes the signs of the cosine and sine of its base angle.
 
-use super::parse;
+use super::parse_in;
 use crate::Error;
 use exactcheck_core::Ring;
-use exactcheck_exact::expr::{parse_expr, split_equation, variable_base, Expr, PI};
+use exactcheck_exact::expr::{library, parse_expr, split_equation, variable_base, Expr, PI};
 use exactcheck_exact::poly::{Var, Vars};
 use exactcheck_exact::prove::VarDomain;
 use exactcheck_exact::Rational;
 use num_traits::ToPrimitive;
+use std::cell::RefCell;
 
 /// A variable's domain, as given: its bounds (numbers, or multiples of pi for an angle) and the
 /// text it was read from.
@@ -81,8 +82,12 @@ pub fn split_where(text: &str) -> Vec<String> {
 
 /// Parses `--where #i` (`what` names it): `A = B`, or a chain `a < v`, `v >= a`, `a <= v < b`
 /// with a variable `v` and constants `a`, `b`.
-pub(super) fn parse_where(text: &str, what: &str) -> Result<Where, Error> {
-    parse_where_with(text, what, &parse)
+pub(super) fn parse_where(
+    text: &str,
+    what: &str,
+    defs: &RefCell<library::Defs>,
+) -> Result<Where, Error> {
+    parse_where_with(text, what, &|t, w| parse_in(defs, t, w))
 }
 
 /// `parse_where` with the expression parser given (the claims files resolve their
@@ -527,14 +532,18 @@ mod tests {
             "\\left(x\\right) \\geqx"
         );
         assert!(matches!(
-            parse_where("0 \\le t \\lt 1", "w"),
+            parse_where("0 \\le t \\lt 1", "w", &RefCell::default()),
             Ok(Where::Domain(Domain { in_pi: false, .. }))
         ));
         assert!(matches!(
-            parse_where("$-\\frac{\\pi}{2} < \\theta < \\frac{\\pi}{2}$", "w"),
+            parse_where(
+                "$-\\frac{\\pi}{2} < \\theta < \\frac{\\pi}{2}$",
+                "w",
+                &RefCell::default()
+            ),
             Ok(Where::Domain(Domain { in_pi: true, .. }))
         ));
-        assert!(parse_where("1 <= theta <= pi", "w").is_err());
+        assert!(parse_where("1 <= theta <= pi", "w", &RefCell::default()).is_err());
     }
 
     #[test]

@@ -17,6 +17,7 @@ mod prove_higher_roots;
 mod prove_integral_constant_angles;
 mod prove_latex;
 mod prove_latex_matrices;
+mod prove_latex_vectors;
 mod prove_library;
 mod prove_random;
 mod prove_rational_roots;

@@ -9,12 +9,30 @@ use timed::run_text as run;
 
 /// `exactcheck prove ARGS` says "proved" with exit status 0 for each argument list.
 pub(crate) fn each_is_proved(cases: &[&[&str]]) {
+    each_gives(cases, 0, "proved");
+}
+
+/// `exactcheck prove ARGS` is refused with exit status 2 and one line containing the needle,
+/// for each arguments and needle.
+pub(crate) fn each_is_refused(cases: &[(&[&str], &str)]) {
+    for (args, needle) in cases {
+        let mut all = vec!["prove"];
+        all.extend_from_slice(args);
+        let (code, out, err) = run(&all);
+        assert_eq!(code, 2, "{args:?}: {out}{err}");
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(err.contains(needle), "{args:?}: {err}");
+    }
+}
+
+/// Runs `prove` with each list of arguments and checks the exit status and the verdict.
+pub(crate) fn each_gives(cases: &[&[&str]], status: i32, verdict: &str) {
     for args in cases {
         let mut all = vec!["prove"];
         all.extend_from_slice(args);
         let (code, out, err) = run(&all);
-        assert_eq!(code, 0, "{args:?}: {out}{err}");
-        assert!(out.starts_with("proved"), "{args:?}: {out}");
+        assert_eq!(code, status, "{args:?}: {out}{err}");
+        assert!(out.starts_with(verdict), "{args:?}: {out}");
     }
 }
 
@@ -65,7 +83,7 @@ fn formulas_as_typed_in_latex_are_decided() {
 
 #[test]
 fn latex_refusals_are_one_line_naming_the_problem() {
-    for (args, needle) in [
+    each_is_refused(&[
         (&["\\log x", "1"][..], "\\log"),
         (&["\\left| x = x"], "not closed"),
         (&["\\sqrt[t]{8} = 2"], "an integer constant of at least 2"),
@@ -85,14 +103,7 @@ fn latex_refusals_are_one_line_naming_the_problem() {
             &["diff(integrate(t^2, t, 0, x), t)", "0"],
             "t is not a free variable",
         ),
-    ] {
-        let mut all = vec!["prove"];
-        all.extend_from_slice(args);
-        let (code, out, err) = run(&all);
-        assert_eq!(code, 2, "{args:?}: {out}{err}");
-        assert_eq!(err.lines().count(), 1, "{err}");
-        assert!(err.contains(needle), "{args:?}: {err}");
-    }
+    ]);
 }
 
 #[test]

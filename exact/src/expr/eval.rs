@@ -155,7 +155,7 @@ impl Expr {
                 for (op, x) in items {
                     let v = x.eval_constant::<C>()?;
                     match op {
-                        MulOp::Times => acc *= v,
+                        MulOp::Times | MulOp::Dot | MulOp::Cross => acc *= v,
                         MulOp::Divide => match v.try_inverse() {
                             Some(inv) => acc *= inv,
                             None => return Err(ExprError::DivisionByZero { pos: x.pos }),
@@ -361,8 +361,8 @@ fn product_pair<C: Coefficient>(
     for (op, x) in items {
         let p = x.to_poly::<C>(vars)?;
         match (op, p.constant_value()) {
-            (MulOp::Times, Some(c)) => scalar *= c,
-            (MulOp::Times, None) => factors.push(p),
+            (MulOp::Times | MulOp::Dot | MulOp::Cross, Some(c)) => scalar *= c,
+            (MulOp::Times | MulOp::Dot | MulOp::Cross, None) => factors.push(p),
             (MulOp::Divide, None) => return Err(ExprError::NonConstantDivisor { pos: x.pos }),
             (MulOp::Divide, Some(c)) => match c.try_inverse() {
                 Some(inv) => scalar *= inv,

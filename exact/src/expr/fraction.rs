@@ -111,7 +111,7 @@ impl Expr {
                     }
                     let f = x.to_ratfun::<C>(vars)?;
                     acc = match op {
-                        MulOp::Times => acc.mul(&f).map_err(size)?,
+                        MulOp::Times | MulOp::Dot | MulOp::Cross => acc.mul(&f).map_err(size)?,
                         MulOp::Divide => {
                             acc.div(&f).map_err(size)?.ok_or_else(|| zero_divisor(x))?
                         }
@@ -204,7 +204,9 @@ impl Expr {
                             base.to_fraction::<C>(vars)?.pow(-k)?
                         }
                         (MulOp::Divide, _) => x.to_fraction::<C>(vars)?.recip()?,
-                        (MulOp::Times, _) => x.to_fraction::<C>(vars)?,
+                        (MulOp::Times | MulOp::Dot | MulOp::Cross, _) => {
+                            x.to_fraction::<C>(vars)?
+                        }
                     };
                     acc = acc.mul(&f)?;
                 }

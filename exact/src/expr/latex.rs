@@ -319,6 +319,8 @@ pub(super) enum Op {
     Minus,
     /// `\cdot` between factors.
     Dot,
+    /// `\times` between factors (a cross product as written).
+    Cross,
     /// Juxtaposition: a thin space in LaTeX, invisible times in MathML.
     Juxtapose,
     /// Function application after a function name (no LaTeX; `&#x2061;` in MathML).
@@ -361,6 +363,8 @@ pub(super) enum Layout {
     Op(Op),
     Frac(Box<Layout>, Box<Layout>),
     Sqrt(Box<Layout>),
+    /// In bold: a name that denotes a vector or matrix (`\mathbf{v}`).
+    Bold(Box<Layout>),
     /// Between vertical bars: the absolute value.
     Abs(Box<Layout>),
     Sup(Box<Layout>, Box<Layout>),
@@ -446,7 +450,7 @@ fn starts_with_minus(e: &Expr) -> bool {
             .is_some_and(|(op, x)| *op == AddOp::Minus || starts_with_minus(x)),
         ExprKind::Product(items) => items
             .first()
-            .is_some_and(|(op, x)| *op == MulOp::Times && starts_with_minus(x)),
+            .is_some_and(|(op, x)| !op.divides() && starts_with_minus(x)),
         _ => false,
     }
 }
@@ -459,7 +463,7 @@ fn starts_with_number(e: &Expr) -> bool {
         ExprKind::Pow(b, _) => starts_with_number(b),
         ExprKind::Product(items) => {
             // A product with divisions is a fraction: it starts with its bar, not a digit.
-            items.iter().all(|(op, _)| *op == MulOp::Times)
+            items.iter().all(|(op, _)| !op.divides())
                 && items.first().is_some_and(|(_, x)| starts_with_number(x))
         }
         _ => false,
@@ -503,7 +507,7 @@ fn ends_open(e: &Expr) -> bool {
             !matches!(x.kind, ExprKind::Sum(_)) && !starts_with_minus(x) && ends_open(x)
         }
         ExprKind::Product(items) => {
-            items.iter().all(|(op, _)| *op == MulOp::Times)
+            items.iter().all(|(op, _)| !op.divides())
                 && items.last().is_some_and(|(_, x)| ends_open(x))
         }
         _ => false,
@@ -518,20 +522,32 @@ fn big_call(e: &Expr) -> bool {
             ("sum", 4) | ("integrate", 4) | ("diff", 2 | 3) | ("factorial", 1)))
 }
 
-/// Factors juxtaposed (`\,`, or `\cdot` before a number); sums, later negative factors and
-/// factors ending in an open operand ([`ends_open`]) before another factor in parentheses.
-fn factors_layout(factors: &[&Expr], n: &Notation) -> Layout {
+/// Whether `e` is a product with a `\cdot` or `\times` written in it ([`MulOp::Dot`],
+/// [`MulOp::Cross`]): as a factor of another product it is in parentheses, since those
+/// products group from the left (`u \times (v \times w)`).
+fn has_vector_product(e: &Expr) -> bool {
+    matches!(&e.kind, ExprKind::Product(items)
+        if items.iter().skip(1).any(|(op, _)| matches!(op, MulOp::Dot | MulOp::Cross)))
+}
+
+/// Factors with their operators: `\cdot` and `\times` as written ([`MulOp::Dot`],
+/// [`MulOp::Cross`]), else juxtaposed (`\,`, or `\cdot` before a number); sums, later
+/// negative factors, factors ending in an open operand ([`ends_open`]) before another factor and
+/// products with a written `\cdot` or `\times` in parentheses.
+fn factors_layout(factors: &[(MulOp, &Expr)], n: &Notation) -> Layout {
     let mut out = Vec::new();
-    for (k, f) in factors.iter().enumerate() {
+    for (k, (op, f)) in factors.iter().enumerate() {
         let l = layout(f, n);
         let needs = matches!(f.kind, ExprKind::Sum(_))
             || (k > 0 && starts_with_minus(f))
-            || (k + 1 < factors.len() && ends_open(f));
+            || (k + 1 < factors.len() && ends_open(f))
+            || has_vector_product(f);
         if k > 0 {
-            out.push(Layout::Op(if starts_with_number(f) && !needs {
-                Op::Dot
-            } else {
-                Op::Juxtapose
+            out.push(Layout::Op(match op {
+                MulOp::Dot => Op::Dot,
+                MulOp::Cross => Op::Cross,
+                _ if starts_with_number(f) && !needs => Op::Dot,
+                _ => Op::Juxtapose,
             }));
         }
         out.push(if needs { fenced(l) } else { l });
@@ -568,15 +584,15 @@ pub(super) fn layout(e: &Expr, n: &Notation) -> Layout {
             row(out)
         }
         ExprKind::Product(items) => {
-            let num: Vec<&Expr> = items
+            let num: Vec<(MulOp, &Expr)> = items
                 .iter()
-                .filter(|(op, _)| *op == MulOp::Times)
-                .map(|(_, x)| x)
+                .filter(|(op, _)| !op.divides())
+                .map(|(op, x)| (*op, x))
                 .collect();
-            let den: Vec<&Expr> = items
+            let den: Vec<(MulOp, &Expr)> = items
                 .iter()
-                .filter(|(op, _)| *op == MulOp::Divide)
-                .map(|(_, x)| x)
+                .filter(|(op, _)| op.divides())
+                .map(|(_, x)| (MulOp::Times, x))
                 .collect();
             if den.is_empty() {
                 return factors_layout(&num, n);
@@ -585,11 +601,11 @@ pub(super) fn layout(e: &Expr, n: &Notation) -> Layout {
             let mut num = num;
             let mut negated = None;
             let mut negative = false;
-            if let Some(first) = num.first() {
+            if let Some((_, first)) = num.first() {
                 match &first.kind {
                     ExprKind::Neg(x) => {
                         negative = true;
-                        num[0] = x;
+                        num[0].1 = x;
                     }
                     ExprKind::Number(q) if q.signum() == Sign::Negative => {
                         negative = true;
@@ -599,18 +615,18 @@ pub(super) fn layout(e: &Expr, n: &Notation) -> Layout {
                 }
             }
             if let Some(abs) = &negated {
-                num[0] = abs;
+                num[0].1 = abs;
             }
             let one = Expr::new(ExprKind::Number(Rational::from_integer(1)));
-            let num_l = if num.is_empty() || (num.len() == 1 && is_one(num[0])) {
+            let num_l = if num.is_empty() || (num.len() == 1 && is_one(num[0].1)) {
                 layout(&one, n)
             } else if num.len() == 1 {
-                layout(num[0], n)
+                layout(num[0].1, n)
             } else {
                 factors_layout(&num, n)
             };
             let den_l = if den.len() == 1 {
-                layout(den[0], n)
+                layout(den[0].1, n)
             } else {
                 factors_layout(&den, n)
             };
@@ -632,6 +648,18 @@ pub(super) fn layout(e: &Expr, n: &Notation) -> Layout {
             Layout::Sup(Box::new(if simple { b } else { fenced(b) }), Box::new(e))
         }
         ExprKind::Sqrt(x) => Layout::Sqrt(Box::new(layout(x, n))),
+        ExprKind::Call(name, args)
+            if name == super::library::BOLD
+                && matches!(
+                    args.as_slice(),
+                    [Expr {
+                        kind: ExprKind::Var(_),
+                        ..
+                    }]
+                ) =>
+        {
+            Layout::Bold(Box::new(layout(&args[0], n)))
+        }
         ExprKind::Call(name, args) if name == super::ABS && args.len() == 1 => {
             Layout::Abs(Box::new(layout(&args[0], n)))
         }
@@ -818,6 +846,7 @@ fn write_latex(l: &Layout, out: &mut String) {
                 }
             }
             Op::Dot => " \\cdot ",
+            Op::Cross => " \\times ",
             Op::Juxtapose => "\\,",
             Op::Apply => "",
             Op::Equals => " = ",
@@ -852,6 +881,11 @@ fn write_latex(l: &Layout, out: &mut String) {
             write_latex(a, out);
             out.push_str("}{");
             write_latex(b, out);
+            out.push('}');
+        }
+        Layout::Bold(x) => {
+            out.push_str("\\mathbf{");
+            write_latex(x, out);
             out.push('}');
         }
         Layout::Sqrt(x) => {

@@ -44,6 +44,7 @@ fn write(l: &Layout, out: &mut String) {
             Op::Plus => "<mo>+</mo>",
             Op::Minus => "<mo>\u{2212}</mo>",
             Op::Dot => "<mo>\u{22c5}</mo>",
+            Op::Cross => "<mo>\u{d7}</mo>",
             Op::Juxtapose => "<mo>\u{2062}</mo>",
             // A thin space after a function name, as LaTeX puts after `\cos` (`cos t`, not `cost`).
             Op::Apply => "<mo rspace=\"0.1667em\">\u{2061}</mo>",
@@ -75,6 +76,11 @@ fn write(l: &Layout, out: &mut String) {
             write(a, out);
             write(b, out);
             out.push_str("</mfrac>");
+        }
+        Layout::Bold(x) => {
+            out.push_str("<mstyle mathvariant=\"bold\">");
+            write(x, out);
+            out.push_str("</mstyle>");
         }
         Layout::Sqrt(x) => {
             out.push_str("<msqrt>");

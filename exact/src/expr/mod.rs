@@ -31,7 +31,8 @@
 //! White space may appear between tokens.
 //!
 //! The notation of typeset mathematics, as text copied from a paper has it, reads as the ASCII
-//! it stands for: `−` (U+2212) is `-`; `·`, `⋅`, `×`, `∗` are `*`; `÷`, `∕` are `/`; `π` is `pi`
+//! it stands for: `−` (U+2212) is `-`; `∗` is `*`; `·`, `⋅` and `×` are the products
+//! [`MulOp::Dot`] and [`MulOp::Cross`] (`*` between scalars); `÷`, `∕` are `/`; `π` is `pi`
 //! (a token of its own, so `2πr` is `2*pi*r`); superscripts are exponents (`x²` is `x^2`, `x⁻¹`
 //! is `x^-1`); `√` is the square root of the atom after it (`√2`, `√(x² + y²)`, `√2 x` is
 //! `sqrt(2)*x`). `√x²` is refused: it is printed for both `√(x²)` and `(√x)²`.
@@ -265,6 +266,19 @@ pub enum MulOp {
     Times,
     /// Division (by a non-zero constant, or by a non-zero polynomial in [`Expr::to_ratfun`]).
     Divide,
+    /// A product written `\cdot` in LaTeX (`·`, `⋅` in text): the dot product between two
+    /// vectors ([`library`] resolves it by shape), else [`MulOp::Times`].
+    Dot,
+    /// A product written `\times` in LaTeX (`×` in text): the cross product between two
+    /// vectors ([`library`]), else [`MulOp::Times`].
+    Cross,
+}
+
+impl MulOp {
+    /// Whether the operator divides (every other one multiplies scalars).
+    pub fn divides(self) -> bool {
+        self == MulOp::Divide
+    }
 }
 
 /// A parsed expression: a node and the byte position where it starts in the source.

@@ -91,6 +91,18 @@ struct Parser<'a> {
     /// How many absolute values `|..|` are open at this level of parentheses: inside one, a
     /// `|` after an operand closes it.
     bars: usize,
+    /// How many LaTeX norms `\|v\|` are open: inside one, `\|` closes it.
+    norms: usize,
+}
+
+/// The product a `*` token spells: `\cdot`, `·`, `⋅` are [`MulOp::Dot`], `\times`, `×`
+/// [`MulOp::Cross`] (the dot and cross products between vectors), anything else `*`.
+fn product_operator(text: &str) -> MulOp {
+    match text {
+        "\\cdot" | "\u{b7}" | "\u{22c5}" => MulOp::Dot,
+        "\\times" | "\u{d7}" => MulOp::Cross,
+        _ => MulOp::Times,
+    }
 }
 
 impl<'a> Parser<'a> {
@@ -101,6 +113,7 @@ impl<'a> Parser<'a> {
             latex,
             integrand: 0,
             bars: 0,
+            norms: 0,
             cur: Token {
                 tok: Tok::End,
                 start: 0,
@@ -302,7 +315,7 @@ impl<'a> Parser<'a> {
             match self.cur.tok {
                 Tok::Star | Tok::Slash => {
                     let op = if self.cur.tok == Tok::Star {
-                        MulOp::Times
+                        product_operator(self.text(self.cur))
                     } else {
                         MulOp::Divide
                     };

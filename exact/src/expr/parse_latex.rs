@@ -4,8 +4,13 @@
 //! * delimiters `$..$`, `$$..$$`, `\(..\)`, `\[..\]` at its ends (and a final `.` or `,`) are
 //!   dropped; spacing (`\,` `\;` `\:` `\!` `\ ` `~` `\quad` `\qquad` `\displaystyle` `\limits`)
 //!   is white space; `{..}` groups; `\left( \right)`, `\bigl[ \bigr]` and the other sizes are
-//!   the parentheses and brackets; `\cdot`, `\times`, `\ast` are `*`, `\div` is `/`; `^\circ`
-//!   is degrees;
+//!   the parentheses and brackets; `\ast` is `*`, `\cdot` and `\times` the products
+//!   [`MulOp::Dot`] and [`MulOp::Cross`] (`*` between scalars, the dot and cross products between
+//!   vectors: [`library`](crate::expr::library)), `\div` is `/`; `^\circ` is degrees;
+//! * a bold name `\mathbf{v}` (`\vec`, `\boldsymbol`, `\bm`; one name) is the call
+//!   [`BOLD`](crate::expr::library::BOLD) of the name, which the library resolves to its
+//!   definition; a norm `\|v\|` (`\lVert v \rVert`) is `sqrt(norm2(v))`, and `\|v\|^2` is
+//!   `norm2(v)`;
 //! * a name is one letter (adjacent letters are a product, `2ab` is `2*a*b`), a Greek letter
 //!   (`\theta`, or `θ`), or `\mathit{word}`, `\mathrm{word}`, `\operatorname{word}`, each with an
 //!   optional subscript of letters, digits and Greek letters: `x_{12}` is the name `x_12`,
@@ -336,9 +341,85 @@ impl Parser<'_> {
         }
     }
 
-    /// Whether the current token closes an absolute value (`\right|`, `\rvert`).
+    /// Whether the current token closes an absolute value (`\right|`, `\rvert`) or a norm
+    /// (`\rVert`, or `\|` inside a norm).
     pub(super) fn closes_bar(&self) -> bool {
-        self.cur.tok == Tok::Command && bar(self.text(self.cur)) == Some(Bar::Close)
+        self.cur.tok == Tok::Command
+            && (bar(self.text(self.cur)) == Some(Bar::Close) || self.closes_norm())
+    }
+
+    fn closes_norm(&self) -> bool {
+        self.cur.tok == Tok::Command
+            && match self.text(self.cur) {
+                "\\rVert" => true,
+                "\\|" | "\\Vert" => self.norms > 0,
+                _ => false,
+            }
+    }
+
+    /// A bold name (`\mathbf{v}`, `\vec{v}`, `\boldsymbol{v}`, `\bm{v}`; the current token
+    /// being the command): the call [`BOLD`](crate::expr::library::BOLD) of the name, which
+    /// the library resolves to the vector or matrix the name is defined as.
+    fn parse_bold(&mut self, command: &str, pos: usize) -> Result<Expr, ExprError> {
+        self.bump();
+        let arg = self.tex_arg(command, false)?;
+        if !matches!(arg.kind, ExprKind::Var(_)) {
+            return Err(self.refuse(
+                arg.pos,
+                command,
+                format!("{command} takes one name ({command}{{v}}, {command}{{v_1}}), not {arg}"),
+            ));
+        }
+        Ok(Expr {
+            kind: ExprKind::Call(crate::expr::library::BOLD.to_string(), vec![arg]),
+            pos,
+        })
+    }
+
+    /// A norm `\|v\|` or `\lVert v \rVert` (the current token opening it): the length
+    /// `sqrt(norm2(v))`, and `\|v\|^2` is `norm2(v)`.
+    fn parse_norm(&mut self, command: &str, pos: usize) -> Result<Expr, ExprError> {
+        self.bump();
+        self.norms += 1;
+        let inner = self.inner_level(Self::parse_sum);
+        let closed = self.closes_norm();
+        self.norms -= 1;
+        let inner = inner?;
+        if !closed {
+            return Err(self.refuse(
+                pos,
+                command,
+                "the norm opened here is not closed by \\| (or \\rVert)",
+            ));
+        }
+        self.bump();
+        let norm2 = Expr {
+            kind: ExprKind::Call("norm2".to_string(), vec![inner]),
+            pos,
+        };
+        // `^2` or `^{2}` directly after the norm: its square.
+        let saved = (self.cur, self.depth);
+        if self.cur.tok == Tok::Caret {
+            self.bump();
+            let braced = self.cur.tok == Tok::LBrace;
+            if braced {
+                self.bump();
+            }
+            if self.cur.tok == Tok::Num && self.text(self.cur) == "2" {
+                self.bump();
+                if !braced || self.cur.tok == Tok::RBrace {
+                    if braced {
+                        self.bump();
+                    }
+                    return Ok(norm2);
+                }
+            }
+        }
+        (self.cur, self.depth) = saved;
+        Ok(Expr {
+            kind: ExprKind::Sqrt(Box::new(norm2)),
+            pos,
+        })
     }
 
     /// Whether the current token is the `d` of a differential (`dt`, `\mathrm{d}t`).
@@ -439,6 +520,8 @@ impl Parser<'_> {
                 self.parse_integral(text, t.start)
             }
             "det" => self.parse_det(t.start),
+            "mathbf" | "vec" | "boldsymbol" | "bm" => self.parse_bold(text, t.start),
+            "|" | "lVert" | "Vert" => self.parse_norm(text, t.start),
             _ if text.starts_with("\\begin{") => self.parse_environment(),
             _ if text == "&" || text == "\\\\" || text.starts_with("\\end") => Err(self.refuse(
                 t.start,
@@ -483,7 +566,7 @@ impl Parser<'_> {
             _ => Err(self.refuse(
                 t.start,
                 text,
-                "this LaTeX command is not read (LaTeX input reads \\frac, \\sqrt, \\binom, \\sin, \\cos, \\tan, \\sum, \\int, \\det, \\begin{pmatrix}, \\pi, Greek letters, \\mathrm{..}, \\cdot, \\times, \\left( \\right) and spacing; see docs/formulas.md)",
+                "this LaTeX command is not read (LaTeX input reads \\frac, \\sqrt, \\binom, \\sin, \\cos, \\tan, \\sum, \\int, \\det, \\begin{pmatrix}, \\pi, Greek letters, \\mathrm{..}, \\mathbf{..}, \\|v\\|, \\cdot, \\times, \\left( \\right) and spacing; see docs/formulas.md)",
             )),
         }
     }

@@ -30,7 +30,10 @@ fn delimiters_spacing_and_groups() {
         "(x + 1)*(y - 1)",
     );
     same("\\bigl(x + 1\\bigr)^2 \\Bigl[y\\Bigr]", "(x + 1)^2*(y)");
-    same("a \\cdot b \\times c \\div d", "a*b*c/d");
+    // `\cdot` and `\times` are kept as written (dot and cross products between vectors),
+    // `\ast` is `*`.
+    same("a \\cdot b \\times c \\div d", "a · b × c/d");
+    same("a \\ast b", "a*b");
     same("30^\\circ + x^{\\circ}", "30° + x°");
 }
 
@@ -168,7 +171,6 @@ fn unknown_commands_are_named() {
     ] {
         refused(command, what);
     }
-    refused("\\mathbf{x}", "\\mathbf");
     refused("\\left| x", "not closed");
     refused("\\vert x \\vert", "neither opens nor closes");
     refused("\\{x\\}", "\\{");
@@ -178,7 +180,7 @@ fn unknown_commands_are_named() {
 fn bars_are_the_absolute_value() {
     same("\\left| x - y \\right|", "abs(x - y)");
     same("\\lvert x \\rvert^2", "abs(x)^2");
-    same("\\bigl| \\frac{a}{2} \\bigr| \\cdot 3", "abs(a/2)*3");
+    same("\\bigl| \\frac{a}{2} \\bigr| \\cdot 3", "abs(a/2) · 3");
 }
 
 #[test]
@@ -260,4 +262,23 @@ fn truncated_commands_are_errors_not_panics() {
     ] {
         assert!(parse_expr_with_calls(text).is_err(), "{text:?}");
     }
+}
+
+#[test]
+fn bold_names_and_norms() {
+    same("\\mathbf{u}", "bold(u)");
+    same(
+        "\\vec{u} + \\boldsymbol{v} - \\bm{w}",
+        "bold(u) + bold(v) - bold(w)",
+    );
+    same("\\vec u \\cdot \\mathbf{v_1}", "bold(u) · bold(v_1)");
+    same("\\|\\mathbf{u}\\|^2", "norm2(bold(u))");
+    same("\\lVert u \\rVert^{2}", "norm2(u)");
+    same("\\|u\\|", "sqrt(norm2(u))");
+    same("\\|u\\|^3", "sqrt(norm2(u))^3");
+    same("2\\|u - v\\| + 1", "2*sqrt(norm2(u - v)) + 1");
+    refused("\\mathbf{2}", "takes one name");
+    refused("\\mathbf{u v}", "takes one name");
+    refused("\\|u", "the norm opened here is not closed");
+    refused("\\rVert", "not read");
 }

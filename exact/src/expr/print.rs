@@ -83,10 +83,14 @@ impl fmt::Display for Expr {
             ExprKind::Product(items) => {
                 for (k, (op, x)) in items.iter().enumerate() {
                     match (k, op) {
-                        (0, MulOp::Times) => {}
+                        (0, MulOp::Times | MulOp::Dot | MulOp::Cross) => {}
                         (0, MulOp::Divide) => f.write_str("1/")?,
                         (_, MulOp::Times) => f.write_str("*")?,
                         (_, MulOp::Divide) => f.write_str("/")?,
+                        // The product as written, which reads back as it (a dot or cross
+                        // product between vectors).
+                        (_, MulOp::Dot) => f.write_str(" \u{b7} ")?,
+                        (_, MulOp::Cross) => f.write_str(" \u{d7} ")?,
                     }
                     write_at(f, x, 3)?;
                 }

@@ -458,8 +458,9 @@ fn typeset_notation_reads_as_the_ascii_it_stands_for() {
         ("x²", "x^2"),
         ("(1 + t²)⁻¹", "(1 + t^2)^-1"),
         ("x¹⁰", "x^10"),
-        ("a·b − c", "a*b - c"),
-        ("a ⋅ b × c ∗ d", "a*b*c*d"),
+        // Dot and cross are kept as written: the products of vectors, of scalars `*`.
+        ("a·b − c", "a · b - c"),
+        ("a ⋅ b × c ∗ d", "a · b × c*d"),
         ("a ÷ b ∕ c", "a/b/c"),
         ("2πr", "2*pi*r"),
         ("π/4", "pi/4"),

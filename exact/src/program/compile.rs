@@ -399,12 +399,12 @@ fn compile(e: &Expr, vars: &mut Vars) -> Result<Node, CompileError> {
         }
         ExprKind::Product(items) => {
             let op = |op: &MulOp| match op {
-                MulOp::Times => ChainOp::Mul,
+                MulOp::Times | MulOp::Dot | MulOp::Cross => ChainOp::Mul,
                 MulOp::Divide => ChainOp::Div,
             };
             // A leading `/` is a reciprocal.
             let first = |op: &MulOp, f: Node| match op {
-                MulOp::Times => f,
+                MulOp::Times | MulOp::Dot | MulOp::Cross => f,
                 MulOp::Divide => Node::Div(Box::new(Node::Const(Rational::ONE)), Box::new(f)),
             };
             compile_chain(items, vars, Rational::ONE, first, op)?

@@ -285,13 +285,19 @@ fn arb_expr() -> impl Strategy<Value = Expr> {
                         .collect(),
                 ))
             }),
+            // Products written with `*`, `\cdot` or `\times` (between scalars all the product).
             (
-                prop::collection::vec(inner.clone(), 1..3),
+                prop::collection::vec(
+                    (
+                        prop::sample::select(vec![MulOp::Times, MulOp::Dot, MulOp::Cross]),
+                        inner.clone()
+                    ),
+                    1..3
+                ),
                 prop::option::of(1i64..5)
             )
                 .prop_map(|(v, div)| {
-                    let mut items: Vec<(MulOp, Expr)> =
-                        v.into_iter().map(|e| (MulOp::Times, e)).collect();
+                    let mut items: Vec<(MulOp, Expr)> = v;
                     if let Some(d) = div {
                         items.push((MulOp::Divide, Expr::new(ExprKind::Number(int(d)))));
                     }

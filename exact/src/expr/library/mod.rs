@@ -11,7 +11,11 @@
 //! A value ([`Val`]) is a scalar (one tree), a vector (one tree per coordinate) or a matrix (one
 //! tree per entry, by rows). Vectors and matrices of one shape add and subtract, everything
 //! scales by scalars, a matrix multiplies a vector or a matrix of matching size
-//! (`M*v`, `M*N`); everything else about them goes through the functions:
+//! (`M*v`, `M*N`), a square matrix has powers `M^k` (a non-negative integer constant `k`, within
+//! the `matrix-power` limit); a product written `\cdot` ([`MulOp::Dot`]) of two vectors is their
+//! dot product, one written `\times` ([`MulOp::Cross`]) their cross product; a bold name
+//! ([`BOLD`]) is the value of its definition (an undefined one is an error), and `|v|` of a
+//! vector its length. Everything else about them goes through the functions:
 //!
 //! | function | value |
 //! | --- | --- |
@@ -48,7 +52,8 @@
 //! module's parent; no crate knows that grammar.
 //!
 //! The submodules: `matrix` builds the trees of sums, products, matrix products and
-//! determinants; `calls` computes the library functions (vectors, matrices, Bernstein and
+//! determinants; `products` resolves products and powers as printed (`\cdot`, `\times`, `M^k`,
+//! bold names, `|v|`); `calls` computes the library functions (vectors, matrices, Bernstein and
 //! Bezier); `tree` walks and rewrites trees (substitution, positions, sizes).
 
 use super::parse::LIST;
@@ -60,14 +65,21 @@ use std::fmt;
 
 mod calls;
 mod matrix;
+mod products;
 mod tree;
 
 use calls::*;
 use matrix::*;
+use products::absolute;
 pub(crate) use tree::map_tree;
 pub(crate) use tree::substitute;
 use tree::{at_pos, collect_calls};
 pub use tree::{count_nodes, diff_against_relations, has_sqrt, substitute_free};
+
+/// The call the LaTeX reader makes of a bold name (`\mathbf{v}`, `\vec{v}`, `\boldsymbol{v}`,
+/// `\bm{v}`): `bold(v)` is the vector or matrix `v` is defined as; an undefined bold name is an
+/// error, never a scalar variable.
+pub const BOLD: &str = "bold";
 
 /// The largest number of nodes of a resolved expression.
 pub const MAX_NODES: usize = 500_000;
@@ -93,6 +105,7 @@ const LIBRARY: [(&str, usize, bool); 12] = [
 pub fn function_names() -> Vec<&'static str> {
     let mut names: Vec<&str> = LIBRARY.iter().map(|(n, _, _)| *n).collect();
     names.push("subs");
+    names.push(BOLD);
     names
 }
 
@@ -666,11 +679,7 @@ impl Defs {
                 let x = self.scalar(x, stack, "the argument of sqrt")?;
                 Val::Scalar(node(ExprKind::Sqrt(Box::new(x))))
             }
-            ExprKind::Pow(b, k) => {
-                let b = self.scalar(b, stack, "a power's base; for |v|^2 write norm2(v)")?;
-                let k = self.scalar(k, stack, "an exponent")?;
-                Val::Scalar(node(ExprKind::Pow(Box::new(b), Box::new(k))))
-            }
+            ExprKind::Pow(b, k) => self.power(b, k, pos, stack)?,
             ExprKind::Sum(terms) => {
                 let mut vals = Vec::new();
                 for (op, t) in terms {
@@ -702,36 +711,7 @@ impl Defs {
                     }
                 }
             }
-            ExprKind::Product(factors) => {
-                let mut scalars = Vec::new();
-                let mut other: Option<(Val, usize)> = None;
-                for (op, f) in factors {
-                    let v = self.resolve(f, stack)?;
-                    if let Val::Scalar(x) = v {
-                        scalars.push((*op, x));
-                        continue;
-                    }
-                    if *op == MulOp::Divide {
-                        return err(format!("division by {} at {}", v.shape(), f.pos));
-                    }
-                    other = Some(match other {
-                        None => (v, f.pos),
-                        Some((left, p)) => (multiply(left, v, p, f.pos)?, p),
-                    });
-                }
-                let with = |x: Option<Expr>| {
-                    let mut fs = scalars.clone();
-                    if let Some(x) = x {
-                        fs.insert(0, (MulOp::Times, x));
-                    }
-                    node(ExprKind::Product(fs))
-                };
-                match other {
-                    None => Val::Scalar(with(None)),
-                    Some((v, _)) if scalars.is_empty() => v,
-                    Some((v, _)) => v.map(|x| with(Some(x))),
-                }
-            }
+            ExprKind::Product(factors) => self.product(factors, pos, stack)?,
             ExprKind::Call(name, args) => self.call(name, args, pos, stack)?,
         })
     }
@@ -779,8 +759,15 @@ impl Defs {
     }
 
     fn call(&mut self, name: &str, args: &[Expr], pos: usize, stack: &mut Vec<String>) -> R<Val> {
+        if name == BOLD {
+            return self.bold(args, pos, stack);
+        }
         if self.is_defined(name) {
             return self.call_defined(name, args, pos, stack);
+        }
+        if name == super::ABS && args.len() == 1 {
+            let v = self.resolve(&args[0], stack)?;
+            return absolute(v, args[0].pos, pos);
         }
         if name == LIST {
             return self.list(args, pos, stack);

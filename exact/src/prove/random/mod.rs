@@ -299,7 +299,7 @@ pub(crate) fn size_bound_in(
                 let b = size_bound_in(f, leaves)?;
                 // Dividing by F_b / D_b multiplies by D_b / F_b.
                 let (num, den, deg, den_deg) = match op {
-                    MulOp::Times => (b.num_bits, b.den_bits, b.degree, b.den_degree),
+                    MulOp::Times | MulOp::Dot | MulOp::Cross => (b.num_bits, b.den_bits, b.degree, b.den_degree),
                     MulOp::Divide => (b.den_bits, b.num_bits, b.den_degree, b.degree),
                 };
                 acc.num_bits = acc.num_bits.checked_add(num).ok_or(of.clone())?;

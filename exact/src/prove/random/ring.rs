@@ -401,7 +401,7 @@ pub(crate) fn eval<R: Values>(
             for (op, x) in fs {
                 let v = go(x)?;
                 acc = match op {
-                    MulOp::Times => ring.mul(&acc, &v),
+                    MulOp::Times | MulOp::Dot | MulOp::Cross => ring.mul(&acc, &v),
                     MulOp::Divide => ring.mul(
                         &acc,
                         &ring.inv(&v).ok_or_else(|| {
