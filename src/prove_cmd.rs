@@ -451,7 +451,7 @@ fn decide_sides(
             args,
             k,
             (&lhs, rhs.as_ref().unwrap_or(&zeros), shape),
-            &relations,
+            relations,
             !domains.is_empty(),
         );
     }
@@ -475,12 +475,12 @@ fn decide_sides(
                 return Ok(code);
             }
         }
-        if constants::needs_constants(&sides, &relations, &nonzero) {
-            return constants::prove_with_constants(args, &sides, &relations, &nonzero, &domains);
+        if constants::needs_constants(&sides, relations, nonzero) {
+            return constants::prove_with_constants(args, &sides, relations, nonzero, domains);
         }
-        prove_over::<Radical>(args, &sides, &relations, &nonzero, &domains, None)
+        prove_over::<Radical>(args, &sides, relations, nonzero, domains, None)
     } else {
-        prove_over::<Rational>(args, &sides, &relations, &nonzero, &domains, None)
+        prove_over::<Rational>(args, &sides, relations, nonzero, domains, None)
     }
 }
 
