@@ -166,6 +166,10 @@ fn huge_constants_and_deep_nesting_are_one_line() {
         &["prove", "x^10001", "0"],
         "the limit exponent = 10000 (found 10001;",
     );
+    // A tower 7^7^...^7 of 40 levels: each level's exponent is evaluated once (twice per level
+    // would be 2^40 evaluations).
+    let tower = vec!["7"; 40].join("^");
+    assert_limit(&["prove", &tower, "0"], "the limit exponent = 10000");
 }
 
 #[test]

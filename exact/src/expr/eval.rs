@@ -166,48 +166,15 @@ impl Expr {
                 Ok(acc)
             }
             ExprKind::Pow(base, exp) => {
-                if let Some((k, n)) = fractional_exponent(exp)? {
-                    let b = base.eval_constant::<C>()?;
-                    // A rational root of a rational (`8^(1/3)`) lies in every field.
-                    let rational = || {
-                        let q = base.eval_constant::<Rational>().ok()?;
-                        let negative = q.signum() == exactcheck_core::Sign::Negative;
-                        match q.try_nth_root(n) {
-                            Ok(Some(r)) => C::from_rational(&r).map(Ok),
-                            _ if negative && n % 2 == 0 => {
-                                Some(Err(": a negative number has no real root of even index"))
-                            }
-                            _ => None,
-                        }
-                    };
-                    let root = match b.try_nth_root(n) {
-                        Ok(Some(r)) => r,
-                        Ok(None) => match rational() {
-                            Some(Ok(r)) => r,
-                            found => {
-                                return Err(ExprError::NoRoot {
-                                    pos: self.pos,
-                                    index: n,
-                                    arg: base.to_string(),
-                                    hint: match found {
-                                        Some(Err(why)) => why,
-                                        _ => C::nth_root_hint(),
-                                    },
-                                })
-                            }
-                        },
-                        Err(error) => {
-                            return Err(ExprError::Limit {
-                                pos: self.pos,
-                                error,
-                            })
-                        }
-                    };
-                    return constant_power(root, k, self.pos, exp.pos);
+                // The exponent is evaluated once: in a tower `a^b^c` every level evaluates
+                // the exponent above it.
+                match exponent_of(exp)? {
+                    Exponent::Integer(k) => {
+                        let b = base.eval_constant::<C>()?;
+                        constant_power(b, k, self.pos, exp.pos)
+                    }
+                    Exponent::Fraction(k, n) => root_power(base, k, n, self.pos, exp.pos),
                 }
-                let k = exponent_value(exp)?;
-                let b = base.eval_constant::<C>()?;
-                constant_power(b, k, self.pos, exp.pos)
             }
             ExprKind::Sqrt(arg) => sqrt_of(arg.eval_constant::<C>()?, self.pos, arg),
             ExprKind::Call(name, args) if name == super::ABS => {
@@ -388,29 +355,106 @@ fn product_pair<C: Coefficient>(
     Ok((a, b))
 }
 
-/// The value of an exponent expression: an integer constant within the `exponent` limit.
-pub(super) fn exponent_value(e: &Expr) -> Result<i64, ExprError> {
-    let bad = |found: String| ExprError::BadExponent { pos: e.pos, found };
+/// `base^(k/n)` for a constant `base` (`self` at `pos`, the exponent at `exp_pos`): the real
+/// root of index `n` in `C` ([`Coefficient::try_nth_root`]; a rational root of a rational,
+/// `8^(1/3)`, in every field), to the power `k`.
+fn root_power<C: Coefficient>(
+    base: &Expr,
+    k: i64,
+    n: u32,
+    pos: usize,
+    exp_pos: usize,
+) -> Result<C, ExprError> {
+    let b = base.eval_constant::<C>()?;
+    let rational = || {
+        let q = base.eval_constant::<Rational>().ok()?;
+        let negative = q.signum() == exactcheck_core::Sign::Negative;
+        match q.try_nth_root(n) {
+            Ok(Some(r)) => C::from_rational(&r).map(Ok),
+            _ if negative && n % 2 == 0 => {
+                Some(Err(": a negative number has no real root of even index"))
+            }
+            _ => None,
+        }
+    };
+    let root = match b.try_nth_root(n) {
+        Ok(Some(r)) => r,
+        Ok(None) => match rational() {
+            Some(Ok(r)) => r,
+            found => {
+                return Err(ExprError::NoRoot {
+                    pos,
+                    index: n,
+                    arg: base.to_string(),
+                    hint: match found {
+                        Some(Err(why)) => why,
+                        _ => C::nth_root_hint(),
+                    },
+                })
+            }
+        },
+        Err(error) => return Err(ExprError::Limit { pos, error }),
+    };
+    constant_power(root, k, pos, exp_pos)
+}
+
+/// The value of a constant exponent: an integer, or a fraction `k/n` that is not one.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Exponent {
+    /// An integer within the `exponent` limit.
+    Integer(i64),
+    /// `k/n` in lowest terms, `n >= 2` within the `algebraic-degree` limit, `|k|` within the
+    /// `exponent` limit.
+    Fraction(i64, u32),
+}
+
+/// The value of an exponent expression, evaluated once ([`Exponent`]).
+///
+/// # Errors
+/// [`ExprError::BadExponent`] for an exponent that is not constant; a limit exceeded.
+pub(super) fn exponent_of(e: &Expr) -> Result<Exponent, ExprError> {
     let q: Rational = match e.eval_constant() {
         Ok(q) => q,
-        Err(ExprError::NotConstant { .. }) => return Err(bad(e.to_string())),
+        Err(ExprError::NotConstant { .. }) => {
+            return Err(ExprError::BadExponent {
+                pos: e.pos,
+                found: e.to_string(),
+            })
+        }
         Err(err) => return Err(err),
     };
-    if !q.is_integer() {
-        return Err(bad(q.to_string()));
+    let limit = |error| ExprError::Limit { pos: e.pos, error };
+    let k = q.numer();
+    let k = k
+        .to_i64()
+        .filter(|k| limits::EXPONENT.check(k.unsigned_abs()).is_ok())
+        .ok_or_else(|| {
+            limit(limits::EXPONENT.exceeded(match k.to_i64() {
+                Some(k) => k.unsigned_abs().to_string(),
+                None => format!("an integer of {} bits", k.bits()),
+            }))
+        })?;
+    if q.is_integer() {
+        return Ok(Exponent::Integer(k));
     }
-    let limit = |found: String| ExprError::Limit {
-        pos: e.pos,
-        error: limits::EXPONENT.exceeded(found),
-    };
-    match q.numer().to_i64() {
-        Some(k) => {
-            limits::EXPONENT
-                .check(k.unsigned_abs())
-                .map_err(|_| limit(k.unsigned_abs().to_string()))?;
-            Ok(k)
-        }
-        None => Err(limit(format!("an integer of {} bits", q.numer().bits()))),
+    let n = q.denom();
+    limits::ALGEBRAIC_DEGREE
+        .check_usize(n.to_usize().unwrap_or(usize::MAX))
+        .map_err(limit)?;
+    Ok(Exponent::Fraction(
+        k,
+        n.to_u32().expect("within the algebraic-degree limit"),
+    ))
+}
+
+/// The value of an exponent expression: an integer constant within the `exponent` limit.
+pub(super) fn exponent_value(e: &Expr) -> Result<i64, ExprError> {
+    match exponent_of(e)? {
+        Exponent::Integer(k) => Ok(k),
+        Exponent::Fraction(k, n) => Err(ExprError::BadExponent {
+            pos: e.pos,
+            found: format!("{k}/{n}"),
+        }),
     }
 }
 
@@ -438,33 +482,17 @@ pub(super) fn fractional_power<C: Coefficient>(
     }
 }
 
-/// A constant exponent `k/n` that is not an integer (`1/3`, `-2/5`) as `(k, n)`, the index
-/// within the `algebraic-degree` limit and `|k|` within the `exponent` limit; `None` for any
+/// A constant exponent `k/n` that is not an integer (`1/3`, `-2/5`) as `(k, n)`; `None` for any
 /// other exponent (an integer, or not a constant: [`exponent_value`] judges those).
 ///
 /// # Errors
 /// A limit exceeded.
 pub(super) fn fractional_exponent(e: &Expr) -> Result<Option<(i64, u32)>, ExprError> {
-    let Ok(q) = e.eval_constant::<Rational>() else {
-        return Ok(None);
-    };
-    if q.is_integer() {
-        return Ok(None);
+    match exponent_of(e) {
+        Ok(Exponent::Fraction(k, n)) => Ok(Some((k, n))),
+        Ok(Exponent::Integer(_)) | Err(ExprError::BadExponent { .. }) => Ok(None),
+        Err(err) => Err(err),
     }
-    let limit = |error| ExprError::Limit { pos: e.pos, error };
-    let n = q.denom();
-    limits::ALGEBRAIC_DEGREE
-        .check_usize(n.to_usize().unwrap_or(usize::MAX))
-        .map_err(limit)?;
-    let k = q.numer();
-    let k = k
-        .to_i64()
-        .filter(|k| limits::EXPONENT.check(k.unsigned_abs()).is_ok())
-        .ok_or_else(|| limit(limits::EXPONENT.exceeded(k.to_string())))?;
-    Ok(Some((
-        k,
-        n.to_u32().expect("within the algebraic-degree limit"),
-    )))
 }
 
 /// The `constant-bits` limit on the constant `c`.
