@@ -17,7 +17,8 @@
 //! division by a non-constant anywhere, the sides are rational functions (`Expr::to_ratfun`): the identity is decided with the
 //! denominators cleared, and the divisors met are reported as side conditions. `pi`, `e` and `i`
 //! are refused as variables. A `--where` with `<`, `<=`, `>` or `>=` is a domain (`r > 0`,
-//! `0 <= t <= 1`, constant bounds only): counter-examples are searched inside the domains. A
+//! `0 <= t <= 1`, constant bounds only; an angle of sin, cos and tan in multiples of pi, which
+//! becomes signs of its cosine and sine: `conditions`): counter-examples are searched inside the domains. A
 //! `--where 'w != 0'` is a hypothesis. Square roots of expressions become variables with their
 //! relations and sign conditions (`prove::square_roots`), and a proof that needs hypotheses
 //! names the ones it used.
