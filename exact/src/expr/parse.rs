@@ -871,7 +871,32 @@ fn number_value(text: &str, pos: usize) -> Result<Rational, ExprError> {
 /// beyond the `depth` limit of nesting or the `digits` or `constant-bits` limit of a number.
 pub fn parse_expr(text: &str) -> Result<Expr, ExprError> {
     let (src, latex) = latex_input::prepare(text);
-    Parser::new(&src, false, latex).parse_all()
+    let e = Parser::new(&src, false, latex).parse_all()?;
+    // LaTeX writes some library functions without their names (`\det`, a matrix
+    // environment, bars around a matrix, a bold name): this grammar has no calls for them.
+    match latex.then(|| library_call(&e)).flatten() {
+        Some((name, pos)) => Err(ExprError::UnknownFunction { pos, name }),
+        None => Ok(e),
+    }
+}
+
+/// The first call in `e` (in reading order) of a function this grammar does not call (not
+/// one of [`FUNCTIONS`]), with its position.
+fn library_call(e: &Expr) -> Option<(String, usize)> {
+    if let ExprKind::Call(name, _) = &e.kind {
+        if !FUNCTIONS.contains(&name.as_str()) {
+            return Some((name.clone(), e.pos));
+        }
+    }
+    let mut found = None;
+    let _ = e.try_map_children(|x| match library_call(x) {
+        Some(hit) => {
+            found = Some(hit);
+            Err(())
+        }
+        None => Ok(x.clone()),
+    });
+    found
 }
 
 /// [`parse_expr`] for a grammar with function calls: `name(arg, ...)` (a name directly followed

@@ -282,3 +282,27 @@ fn bold_names_and_norms() {
     refused("\\|u", "the norm opened here is not closed");
     refused("\\rVert", "not read");
 }
+
+#[test]
+fn library_functions_without_calls_are_refused_by_the_grammar_without_calls() {
+    // `\det`, a matrix, a bold name and a norm are library calls: `parse_expr` (no calls)
+    // refuses them by name instead of printing a call it cannot read back.
+    for (latex, name) in [
+        ("\\det2tl", "det"),
+        ("\\mathbf{u}", "bold"),
+        ("\\|u\\|^2", "norm2"),
+    ] {
+        match parse_expr(latex) {
+            Ok(e) => panic!("{latex:?} was read as {e}"),
+            Err(e) => assert!(
+                e.to_string()
+                    .contains(&format!("unknown function '{name}'")),
+                "{latex:?}: {e}"
+            ),
+        }
+        assert!(parse_expr_with_calls(latex).is_ok(), "{latex:?}");
+    }
+    assert!(parse_expr("\\begin{pmatrix} a & b \\end{pmatrix}").is_err());
+    // The functions of every grammar stay.
+    assert!(parse_expr("\\binom{4}{2} + \\sin x + |x|").is_ok());
+}
